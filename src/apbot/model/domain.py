@@ -1,0 +1,274 @@
+"""The ordered value domain of a variable, and the one function that normalises a value to it.
+
+Every variable (or every case of a programme-dependent one) has a :class:`Domain`: its values
+in button order, the initial one, and whether stepping past an end wraps or clamps.
+"""
+
+from __future__ import annotations
+
+import itertools
+from bisect import bisect_left
+from dataclasses import dataclass, field
+from typing import Any
+
+from apbot.model.schema import (
+    DiscreteCase,
+    DiscreteVariable,
+    NumericCase,
+    NumericVariable,
+    TimeCase,
+    TimeVariable,
+    time_step_seconds,
+)
+from apbot.model.values import (
+    closest_matches,
+    expand_ranges,
+    format_hms,
+    normalise_text,
+    parse_hms,
+    parse_quantity,
+    tidy_number,
+    unit_of,
+)
+
+AnyVariable = DiscreteVariable | NumericVariable | TimeVariable
+
+
+class DomainError(ValueError):
+    """A domain cannot be built (overlapping ranges, an initial value outside it, ...)."""
+
+
+@dataclass(frozen=True)
+class Domain:
+    """Values of one variable in order. ``magnitudes`` are numbers (seconds for time)."""
+
+    kind: str
+    values: tuple[Any, ...]
+    initial: int
+    wrap: bool
+    magnitudes: tuple[float, ...] | None = None
+    index: dict[Any, int] = field(default_factory=dict, compare=False, repr=False)
+
+    def __post_init__(self) -> None:
+        if not self.index:
+            object.__setattr__(self, "index", {v: i for i, v in enumerate(self.values)})
+
+    def __len__(self) -> int:
+        return len(self.values)
+
+    def next_index(self, i: int) -> int:
+        """One step up: wraps to the first value or stays at the last."""
+        if i + 1 < len(self.values):
+            return i + 1
+        return 0 if self.wrap else i
+
+    def prev_index(self, i: int) -> int:
+        """One step down: wraps to the last value or stays at the first."""
+        if i > 0:
+            return i - 1
+        return len(self.values) - 1 if self.wrap else i
+
+    def snap_index(self, magnitude: float) -> int:
+        """The index reached by adding to a number: the next value at or above ``magnitude``.
+
+        Past the top it wraps to the first value or clamps to the last; below the bottom it
+        clamps to the first (or wraps to the last).
+        """
+        assert self.magnitudes is not None
+        if magnitude < self.magnitudes[0] - 1e-9:
+            return len(self.values) - 1 if self.wrap else 0
+        i = bisect_left(self.magnitudes, magnitude - 1e-9)
+        if i < len(self.values):
+            return i
+        return 0 if self.wrap else len(self.values) - 1
+
+
+def _ordered(values: list[float], what: str) -> None:
+    for a, b in itertools.pairwise(values):
+        if b <= a:
+            raise DomainError(f"{what} must increase; {b:g} follows {a:g}")
+
+
+def _check_ranges(ranges: list[tuple[float, float, float]], show: Any) -> None:
+    previous_end: float | None = None
+    for i, (start, stop, step) in enumerate(ranges):
+        if step <= 0:
+            raise DomainError(f"range {i + 1} has step {show(step)}; a step must be positive")
+        if stop < start:
+            raise DomainError(f"range {i + 1} runs backwards ({show(start)} to {show(stop)})")
+        span = (stop - start) / step
+        if abs(span - round(span)) > 1e-9:
+            raise DomainError(
+                f"range {i + 1}: {show(stop)} is not reached from {show(start)} in steps of "
+                f"{show(step)}; make the end a whole number of steps from the start")
+        if previous_end is not None and start < previous_end:
+            raise DomainError(
+                f"range {i + 1} starts at {show(start)}, inside range {i} (which ends at "
+                f"{show(previous_end)}); ranges must not overlap")
+        previous_end = stop
+
+
+def build_domain(var: AnyVariable, case: Any = None) -> Domain:
+    """The domain of a variable, or of one case of a dependent variable."""
+    spec = case if case is not None else var
+    if isinstance(var, DiscreteVariable):
+        if isinstance(spec, list):
+            spec = DiscreteCase(values=spec)
+        values = list(spec.values)
+        duplicates = sorted({v for v in values if values.count(v) > 1})
+        if duplicates:
+            raise DomainError(f"value {duplicates[0]!r} is listed twice")
+        initial = spec.initial if spec.initial is not None else values[0]
+        if initial not in values:
+            raise DomainError(f"initial value {initial!r} is not one of {values}"
+                              + _did_you_mean(initial, values))
+        return Domain("discrete", tuple(values), values.index(initial), var.wrap)
+    if isinstance(var, NumericVariable):
+        assert isinstance(spec, NumericVariable | NumericCase)
+        ranges = [(float(a), float(b), float(c)) for a, b, c in spec.ranges or []]
+        _check_ranges(ranges, lambda x: f"{tidy_number(x)}")
+        numbers = expand_ranges(spec.ranges or [])
+        initial = tidy_number(spec.initial) if spec.initial is not None else numbers[0]
+        if initial not in numbers:
+            raise DomainError(f"initial value {initial} is not in the ranges "
+                              f"({_summary(numbers)})")
+        return Domain("numeric", tuple(numbers), numbers.index(initial), var.wrap,
+                      tuple(float(n) for n in numbers))
+    assert isinstance(spec, TimeVariable | TimeCase)
+    seconds_ranges = [(float(parse_hms(a)), float(parse_hms(b)), float(time_step_seconds(c)))
+                      for a, b, c in spec.ranges or []]
+    _check_ranges(seconds_ranges, lambda s: format_hms(int(s)))
+    seconds = [int(s) for s in expand_ranges(seconds_ranges)]
+    initial_s = parse_hms(spec.initial) if spec.initial is not None else seconds[0]
+    if initial_s not in seconds:
+        raise DomainError(f"initial value {format_hms(initial_s)} is not in the ranges "
+                          f"({_summary([format_hms(s) for s in seconds])})")
+    return Domain("time", tuple(format_hms(s) for s in seconds), seconds.index(initial_s),
+                  var.wrap, tuple(float(s) for s in seconds))
+
+
+def case_domains(var: AnyVariable) -> dict[str, Domain]:
+    """Domains of a dependent variable by parent value (empty for an independent one)."""
+    return {key: build_domain(var, case) for key, case in (var.cases or {}).items()}
+
+
+def all_values(var: AnyVariable) -> list[Any]:
+    """Every value the variable can take in any case, in first-seen order."""
+    if var.depends_on is None:
+        return list(build_domain(var).values)
+    seen: dict[Any, None] = {}
+    for domain in case_domains(var).values():
+        seen.update(dict.fromkeys(domain.values))
+    return list(seen)
+
+
+def _summary(values: list[Any]) -> str:
+    if len(values) <= 8:
+        return ", ".join(str(v) for v in values)
+    return ", ".join(str(v) for v in values[:4]) + ", ..., " + str(values[-1])
+
+
+def _did_you_mean(text: Any, options: list[str]) -> str:
+    close = closest_matches(str(text), [str(o) for o in options])
+    return f"; did you mean {close[0]!r}?" if close else ""
+
+
+class ValueProblem(ValueError):
+    """A value that does not belong to a variable; the message says what would."""
+
+
+def normalise(var: AnyVariable, raw: Any, name: str = "value", domain: Domain | None = None) -> Any:
+    """Canonical form of ``raw`` for ``var``, checked against its domain.
+
+    Accepts what people and LLMs write: "30 min" or 30 for a numeric variable in minutes,
+    "2 hrs" or "1:30" for a time, "Quick-Wash" for "quick wash", "on"/True for a switch.
+    Raises :class:`ValueProblem` naming the closest valid values.
+
+    >>> from apbot.model.schema import NumericVariable
+    >>> normalise(NumericVariable(type="numeric", ranges=[(0, 120, 30)], unit="min"), "2 h")
+    120
+    """
+    values = list(domain.values) if domain is not None else all_values(var)
+    if isinstance(var, DiscreteVariable):
+        return _normalise_discrete(raw, values, name)
+    if isinstance(var, NumericVariable):
+        number = _to_number(raw, var.unit, name)
+        if number not in values:
+            raise ValueProblem(f"{name}: {number:g}{_unit_suffix(var.unit)} is not a value of "
+                               f"this variable ({_summary(values)})")
+        return number
+    seconds = _to_seconds(raw, var.format, name)
+    value = format_hms(seconds)
+    if value not in values:
+        raise ValueProblem(f"{name}: {value} is not a value of this variable "
+                           f"({_summary(values)})")
+    return value
+
+
+def _unit_suffix(unit: str) -> str:
+    return f" {unit}" if unit and unit[0].isalnum() else unit
+
+
+def _normalise_discrete(raw: Any, values: list[str], name: str) -> str:
+    text = str(raw).lower() if isinstance(raw, bool) else str(raw)
+    if text in values:
+        return text
+    key = normalise_text(text)
+    matches = [v for v in values if normalise_text(v) == key]
+    if len(matches) == 1:
+        return matches[0]
+    quantity = parse_quantity(text)
+    if quantity is not None:  # "40 °C" for a value listed as "40"
+        by_number = [v for v in values
+                     if (q := parse_quantity(v)) and abs(q[0] - quantity[0]) < 1e-9
+                     and (q[1] is None or quantity[1] is None or q[1] == quantity[1])]
+        if len(by_number) == 1:
+            return by_number[0]
+    raise ValueProblem(f"{name}: {text!r} is not one of {values}" + _did_you_mean(text, values))
+
+
+def _to_number(raw: Any, unit: str, name: str) -> int | float:
+    if isinstance(raw, bool):
+        raise ValueProblem(f"{name}: expected a number, got {raw!r}")
+    if isinstance(raw, int | float):
+        return tidy_number(raw)
+    quantity = parse_quantity(str(raw))
+    if quantity is None:
+        raise ValueProblem(f"{name}: {raw!r} is not a number"
+                           + (f" of {unit}" if unit else ""))
+    number, dimension, _ = quantity
+    if dimension is not None:
+        target = unit_of(unit) if unit else None
+        if target is None:
+            if unit:
+                raise ValueProblem(f"{name}: cannot convert {raw!r} to {unit!r}")
+        elif target[0] != dimension:
+            raise ValueProblem(f"{name}: {raw!r} is not a quantity in {unit}")
+        else:
+            number = number / target[1]
+    return tidy_number(round(number, 6))
+
+
+def _to_seconds(raw: Any, style: str, name: str) -> int:
+    text = str(raw).strip()
+    if isinstance(raw, int | float) and not isinstance(raw, bool):
+        raise ValueProblem(f"{name}: a bare number {raw!r} is ambiguous for a time; "
+                           "write 00:30:00, '30 min' or '2 h'")
+    parts = text.split(":")
+    if len(parts) == 3 and all(p.isdigit() for p in parts):
+        return parse_hms(text)
+    if len(parts) == 2 and all(p.isdigit() for p in parts):
+        first, second = int(parts[0]), int(parts[1])
+        if second >= 60:
+            raise ValueProblem(f"{name}: {text!r} is not a time")
+        # mm:ss on a display showing minutes and seconds, else h:mm
+        return first * 60 + second if style == "mm:ss" else first * 3600 + second * 60
+    quantity = parse_quantity(text)
+    if quantity is None or quantity[1] not in ("time", None):
+        raise ValueProblem(f"{name}: {text!r} is not a duration (try '90 min' or 01:30:00)")
+    if quantity[1] is None:
+        raise ValueProblem(f"{name}: a bare number {text!r} is ambiguous for a time; give a unit")
+    seconds = quantity[0]
+    if abs(seconds - round(seconds)) > 1e-6:
+        raise ValueProblem(f"{name}: {text!r} is not a whole number of seconds")
+    return round(seconds)

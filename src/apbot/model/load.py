@@ -1,0 +1,209 @@
+"""Load a model from YAML/JSON text into the schema, turning every failure into a :class:`Problem`.
+
+YAML syntax errors, schema errors and semantic errors all come back as one
+:class:`~apbot.model.problems.ModelError` whose problems name a path such as
+``features.set_delay[1].actions`` and, when the text is at hand, its line number.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+from typing import Any
+
+import yaml
+from pydantic import ValidationError
+
+from apbot.model.problems import ModelError, PathPart, Problem
+from apbot.model.schema import ApplianceModel
+from apbot.model.values import closest_matches
+
+try:  # the C loader is ~10x faster; fall back when libyaml is missing
+    from yaml import CSafeDumper as _Dumper
+    from yaml import CSafeLoader as _Loader
+except ImportError:  # pragma: no cover - depends on the platform's wheel
+    from yaml import SafeDumper as _Dumper  # type: ignore[assignment]
+    from yaml import SafeLoader as _Loader  # type: ignore[assignment]
+
+_UNION_TAGS = {"discrete", "numeric", "time", "GoTo", "Add", "DiscreteCase", "NumericCase",
+               "TimeCase", "function-after[_domain_given_once(), DiscreteVariable]"}
+
+
+def read_yaml(text: str, source: str | None = None) -> Any:
+    """Parse YAML, reporting a syntax error as a problem with its line."""
+    try:
+        return yaml.load(text, Loader=_Loader)
+    except yaml.YAMLError as exc:
+        mark = getattr(exc, "problem_mark", None)
+        line = mark.line + 1 if mark is not None else None
+        reason = getattr(exc, "problem", None) or str(exc)
+        raise ModelError([Problem((), f"YAML syntax: {reason}", "yaml", line=line)],
+                         source) from None
+
+
+def dump_yaml(data: Any) -> str:
+    """YAML text in block style with keys in their given order."""
+    return yaml.dump(data, Dumper=_Dumper, sort_keys=False, allow_unicode=True, width=100,
+                     default_flow_style=None)
+
+
+def line_of(text: str | None, path: tuple[PathPart, ...]) -> int | None:
+    """1-based line of the YAML node at ``path`` (the deepest one that exists)."""
+    if not text:
+        return None
+    try:
+        node = yaml.compose(text, Loader=_Loader)
+    except yaml.YAMLError:
+        return None
+    line = node.start_mark.line + 1 if node is not None else None
+    for part in path:
+        if isinstance(node, yaml.MappingNode):
+            found = next(((k, v) for k, v in node.value if k.value == part), None)
+            if found is None:
+                break
+            line, node = found[0].start_mark.line + 1, found[1]
+        elif isinstance(node, yaml.SequenceNode) and isinstance(part, int):
+            if part >= len(node.value):
+                break
+            node = node.value[part]
+            line = node.start_mark.line + 1
+        else:
+            break
+    return line
+
+
+def _clean_loc(loc: tuple[Any, ...]) -> tuple[PathPart, ...]:
+    parts: list[PathPart] = []
+    for part in loc:
+        text = str(part)
+        if text in _UNION_TAGS or text.startswith(("literal[", "function-", "list[", "dict[")):
+            continue
+        if text in ("str", "int", "float", "bool", "tuple"):
+            continue
+        parts.append(part)
+    return tuple(parts)
+
+
+_FIELD_HINTS = {
+    "string_pattern_mismatch": "ids use lowercase letters, digits and underscores, "
+                               "starting with a letter",
+    "missing": "this key is required",
+}
+
+
+def _message(error: Any, model_fields: dict[str, list[str]]) -> str:
+    kind = error["type"]
+    loc = error["loc"]
+    if kind == "extra_forbidden":
+        key = str(loc[-1])
+        return f"unknown key {key!r}" + _hint_for_key(key, loc, model_fields)
+    if kind == "missing":
+        return f"missing required key {str(loc[-1])!r}"
+    if kind == "union_tag_invalid":
+        return "`type` must be discrete, numeric or time"
+    if kind == "union_tag_not_found":
+        return "missing `type` (discrete, numeric or time)"
+    if kind == "string_pattern_mismatch":
+        return f"{error.get('input')!r}: {_FIELD_HINTS[kind]}"
+    message = str(error["msg"])
+    if message.startswith("Value error, "):
+        message = message[len("Value error, "):]
+    return message
+
+
+def _hint_for_key(key: str, loc: tuple[Any, ...], fields: dict[str, list[str]]) -> str:
+    options = [f for names in fields.values() for f in names]
+    close = closest_matches(key, options, limit=1)
+    return f"; did you mean {close[0]!r}?" if close else ""
+
+
+def _known_fields() -> dict[str, list[str]]:
+    from apbot.model import schema
+
+    names: dict[str, list[str]] = {}
+    for cls in (schema.Appliance, schema.Control, schema.Action, schema.Entry,
+                schema.DiscreteVariable, schema.NumericVariable, schema.TimeVariable,
+                schema.Step, schema.Guard, schema.Display, schema.ApplianceModel):
+        names[cls.__name__] = list(cls.model_fields)
+    return names
+
+
+def schema_problems(error: ValidationError, text: str | None = None) -> list[Problem]:
+    """Problems from a pydantic error, one per location, with union noise collapsed."""
+    fields = _known_fields()
+    by_path: dict[tuple[PathPart, ...], list[str]] = {}
+    effect_paths: set[tuple[PathPart, ...]] = set()
+    for item in error.errors():
+        path = _clean_loc(tuple(item["loc"]))
+        if "effect" in path and item["type"] not in ("extra_forbidden",):
+            index = path.index("effect")
+            effect_path = path[: index + 1] + tuple(p for p in path[index + 1:index + 2]
+                                                    if str(p) not in ("to", "add"))
+            effect_paths.add(effect_path)
+            continue
+        by_path.setdefault(path, [])
+        message = _message(item, fields)
+        if message not in by_path[path]:
+            by_path[path].append(message)
+    for path in effect_paths:
+        by_path.setdefault(path, []).append(
+            "an effect is next, prev, toggle, digit, clear, reset, none, {to: VALUE} or "
+            "{add: AMOUNT}; or a map from each action of the step to one of these")
+    problems = []
+    for path, messages in by_path.items():
+        # a union that failed every branch reports each; keep the most specific one
+        message = messages[0] if len(messages) > 2 else "; ".join(messages)
+        problems.append(Problem(path, message, "schema", line=line_of(text, path)))
+    return problems
+
+
+def parse_model(data: Any, source: str | None = None, text: str | None = None,
+                check: bool = True) -> ApplianceModel:
+    """Validate plain data as a model; with ``check``, also run the semantic checks.
+
+    Raises :class:`ModelError` when there is any error (warnings alone do not raise).
+    """
+    if not isinstance(data, dict):
+        raise ModelError([Problem((), "a model is a mapping with keys appliance, controls, "
+                                      "variables, actions, features", "schema", line=1)], source)
+    try:
+        model = ApplianceModel.model_validate(data)
+    except ValidationError as exc:
+        raise ModelError(schema_problems(exc, text), source) from None
+    if check:
+        from apbot.model.validate import check_model
+
+        problems = check_model(model)
+        if any(p.severity == "error" for p in problems):
+            located = [Problem(p.path, p.message, p.check, p.severity, line_of(text, p.path))
+                       for p in problems]
+            raise ModelError(located, source)
+    return model
+
+
+def load_model(source: str | Path, check: bool = True) -> ApplianceModel:
+    """Load a model file (YAML or JSON). See :func:`parse_model`."""
+    path = Path(source)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise ModelError([Problem((), f"cannot read the file: {exc.strerror}", "io")],
+                         str(path)) from None
+    return parse_model(read_yaml(text, str(path)), str(path), text, check=check)
+
+
+def loads_model(text: str, check: bool = True, source: str | None = None) -> ApplianceModel:
+    """Load a model from YAML (or JSON) text."""
+    return parse_model(read_yaml(text, source), source, text, check=check)
+
+
+def model_to_yaml(model: ApplianceModel) -> str:
+    """The model as YAML text, without defaults, ready to be loaded again."""
+    data = model.model_dump(mode="json", exclude_defaults=True)
+    return dump_yaml(data)
+
+
+def slug(text: str) -> str:
+    """An identifier from free text: ``"Start/Pause"`` -> ``start_pause``."""
+    cleaned = re.sub(r"[^a-z0-9]+", "_", text.lower()).strip("_")
+    return cleaned if cleaned and cleaned[0].isalpha() else f"x_{cleaned}"

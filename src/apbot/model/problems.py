@@ -1,0 +1,62 @@
+"""Problems found in a model: where (a path into the model, and a line when known) and what to do.
+
+Both schema errors (pydantic) and semantic checks end up as :class:`Problem` objects, so a CLI,
+a test or an LLM re-ask loop can show them the same way.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+from typing import Literal
+
+Severity = Literal["error", "warning"]
+PathPart = str | int
+
+
+def format_path(parts: Sequence[PathPart]) -> str:
+    """``("features", "set_delay", 1, "actions")`` -> ``features.set_delay[1].actions``."""
+    text = ""
+    for part in parts:
+        if isinstance(part, int):
+            text += f"[{part}]"
+        else:
+            text += f".{part}" if text else str(part)
+    return text or "(model)"
+
+
+@dataclass(frozen=True)
+class Problem:
+    """One thing wrong with a model. ``check`` names the rule that found it."""
+
+    path: tuple[PathPart, ...]
+    message: str
+    check: str
+    severity: Severity = "error"
+    line: int | None = None
+
+    @property
+    def where(self) -> str:
+        return format_path(self.path)
+
+    def render(self, source: str | None = None) -> str:
+        """One line: ``file:line: path: message [check]``."""
+        location = source or ""
+        if self.line is not None:
+            location = f"{location}:{self.line}" if location else f"line {self.line}"
+        prefix = f"{location}: " if location else ""
+        return f"{prefix}{self.severity}: {self.where}: {self.message} [{self.check}]"
+
+
+class ModelError(ValueError):
+    """A model that cannot be used; carries every problem found, errors first."""
+
+    def __init__(self, problems: Iterable[Problem], source: str | None = None) -> None:
+        self.problems = sorted(problems, key=lambda p: (p.severity != "error", p.line or 0))
+        self.source = source
+        super().__init__(self.render())
+
+    def render(self) -> str:
+        errors = [p for p in self.problems if p.severity == "error"]
+        head = f"{len(errors)} error(s) in {self.source or 'the model'}"
+        return "\n".join([head, *(f"  {p.render(self.source)}" for p in self.problems)])

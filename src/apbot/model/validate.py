@@ -1,0 +1,481 @@
+"""Semantic checks of a schema-valid model: the paper's nine, and the ones a real model needs.
+
+Each check returns :class:`Problem` objects with the path of the offending part and what to do
+about it, so that an author (or an LLM being re-asked) can fix the model without guessing.
+
+Check names (the paper's nine first):
+    ``missing-variable``, ``empty-action``, ``unknown-action``, ``action-coverage``,
+    ``variable-coverage``, ``duplicate-sequence``, ``keypad``, ``keypad-buffer``,
+    ``action-variable``, ``goal`` (see :func:`check_goal`);
+    then ``reference``, ``domain``, ``dependent``, ``guard``, ``display``, ``control``,
+    ``unreachable-value``.
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Iterator, Mapping
+from typing import Any
+
+from apbot.model.domain import Domain, DomainError, ValueProblem, build_domain, normalise
+from apbot.model.problems import Problem
+from apbot.model.schema import (
+    TEMPLATE_FIELD,
+    Add,
+    ApplianceModel,
+    DiscreteVariable,
+    GoTo,
+    Step,
+)
+from apbot.model.values import closest_matches
+
+VALUE_EFFECTS = {"next", "prev", "toggle", "reset", "clear"}
+
+
+def _unknown(kind: str, name: str, options: list[str]) -> str:
+    close = closest_matches(name, options, limit=1)
+    hint = f"did you mean {close[0]!r}?" if close else f"declare it under `{kind}s`"
+    return f"unknown {kind} {name!r}; {hint}"
+
+
+def check_model(model: ApplianceModel) -> list[Problem]:
+    """Every problem of the model; errors make it unusable, warnings are advice."""
+    problems = list(_references(model))
+    domains, domain_problems = _domains(model)
+    problems += domain_problems
+    if any(p.severity == "error" for p in problems):
+        return problems  # later checks need resolvable names and buildable domains
+    problems += _steps(model, domains)
+    problems += _coverage(model)
+    problems += _duplicates(model)
+    problems += _guards(model)
+    problems += _controls(model)
+    if not any(p.severity == "error" for p in problems):
+        problems += _reachability(model)
+    return problems
+
+
+# --- references -----------------------------------------------------------------------------
+
+
+def _references(model: ApplianceModel) -> Iterator[Problem]:
+    controls = [c.id for c in model.controls]
+    variables = list(model.variables)
+    actions = list(model.actions)
+    seen: set[str] = set()
+    for i, control in enumerate(model.controls):
+        if control.id in seen:
+            yield Problem(("controls", i, "id"), f"control {control.id!r} is declared twice",
+                          "reference")
+        seen.add(control.id)
+    for name, action in model.actions.items():
+        for cid in action.control_ids:
+            if cid not in controls:
+                key = "control" if action.control else "controls"
+                yield Problem(("actions", name, key), _unknown("control", cid, controls),
+                              "reference")
+    for name, var in model.variables.items():
+        if var.depends_on is not None and var.depends_on not in variables:
+            yield Problem(("variables", name, "depends_on"),
+                          _unknown("variable", var.depends_on, variables), "reference")
+    for feature, steps in model.features.items():
+        if not steps:
+            yield Problem(("features", feature), "a feature needs at least one step",
+                          "empty-action")
+        for s, step in enumerate(steps):
+            path = ("features", feature, s)
+            if not step.actions:
+                yield Problem((*path, "actions"), "a step needs at least one action",
+                              "empty-action")
+            for a, action in enumerate(step.actions):
+                if action not in actions:
+                    yield Problem((*path, "actions", a), _unknown("action", action, actions),
+                                  "unknown-action")
+            if step.variable is not None and step.variable not in variables:
+                yield Problem((*path, "variable"), _unknown("variable", step.variable, variables),
+                              "reference")
+            if isinstance(step.effect, dict):
+                for action in step.effect:
+                    if action not in step.actions:
+                        yield Problem((*path, "effect", action),
+                                      f"{action!r} has an effect here but is not one of the "
+                                      f"step's actions {step.actions}", "action-variable")
+            for target in [*step.set, *step.reset]:
+                if target not in variables:
+                    key = "set" if target in step.set else "reset"
+                    yield Problem((*path, key), _unknown("variable", target, variables),
+                                  "reference")
+    for g, guard in enumerate(model.guards):
+        for name in guard.when:
+            if name not in variables:
+                yield Problem(("guards", g, "when", name), _unknown("variable", name, variables),
+                              "reference")
+        for a, action in enumerate(guard.only):
+            if action not in actions:
+                yield Problem(("guards", g, "only", a), _unknown("action", action, actions),
+                              "unknown-action")
+    for name in model.display.indicators:
+        if name not in variables:
+            yield Problem(("display", "indicators"), _unknown("variable", name, variables),
+                          "reference")
+    for field in TEMPLATE_FIELD.findall(model.display.idle):
+        if field not in variables:
+            yield Problem(("display", "idle"), _unknown("variable", field, variables), "display")
+    for name, var in model.variables.items():
+        shows = var.show.values() if isinstance(var.show, dict) else [var.show or ""]
+        for text in shows:
+            for field in TEMPLATE_FIELD.findall(text):
+                if field not in (*variables, "value", "label"):
+                    yield Problem(("variables", name, "show"),
+                                  f"template field {{{field}}} is not a variable, "
+                                  "{value} or {label}", "display")
+
+
+# --- domains ----------------------------------------------------------------------------------
+
+
+def _domains(model: ApplianceModel) -> tuple[dict[str, list[Domain]], list[Problem]]:
+    """Every domain of every variable (one, or one per case), and the problems building them."""
+    domains: dict[str, list[Domain]] = {}
+    problems: list[Problem] = []
+    for name, var in model.variables.items():
+        path = ("variables", name)
+        if var.depends_on is None:
+            try:
+                domains[name] = [build_domain(var)]
+            except DomainError as exc:
+                problems.append(Problem(path, str(exc), "domain"))
+            continue
+        parent = model.variables.get(var.depends_on)
+        if parent is None:
+            continue
+        if not isinstance(parent, DiscreteVariable) or parent.depends_on is not None:
+            problems.append(Problem((*path, "depends_on"),
+                                    f"{var.depends_on!r} must be an independent discrete variable "
+                                    "(a programme or menu) to select cases", "dependent"))
+            continue
+        parent_values = parent.values or []
+        domains[name] = []
+        for key, case in (var.cases or {}).items():
+            if key not in parent_values:
+                problems.append(Problem((*path, "cases", key),
+                                        f"{key!r} is not a value of {var.depends_on!r} "
+                                        f"({parent_values})" + _close(key, parent_values),
+                                        "dependent"))
+                continue
+            try:
+                domains[name].append(build_domain(var, case))
+            except DomainError as exc:
+                problems.append(Problem((*path, "cases", key), str(exc), "domain"))
+        if not var.cases or not any(k in parent_values for k in var.cases):
+            problems.append(Problem((*path, "cases"), "no case matches a value of "
+                                    f"{var.depends_on!r}", "dependent"))
+    return domains, problems
+
+
+def _close(text: str, options: list[str]) -> str:
+    close = closest_matches(text, options, limit=1)
+    return f"; did you mean {close[0]!r}?" if close else ""
+
+
+# --- steps and effects ---------------------------------------------------------------------
+
+
+def _effects_of(step: Step, model: ApplianceModel) -> dict[str, Any]:
+    from apbot.sim.compiled import default_effect
+
+    return {a: default_effect(step, a, model) for a in step.actions if a in model.actions}
+
+
+def _steps(model: ApplianceModel, domains: Mapping[str, list[Domain]]) -> Iterator[Problem]:
+    has_keypad = any(c.kind == "key" for c in model.controls)
+    for name, action in model.actions.items():
+        control = model.control(action.control_ids[0])
+        if action.digit is not None:
+            if not has_keypad or control is None or control.kind != "key":
+                yield Problem(("actions", name, "digit"),
+                              "a digit action must press a keypad key (a control of kind `key`)"
+                              if has_keypad else "digit actions on a model without a keypad: "
+                              "declare the keypad keys as controls of kind `key`", "keypad")
+            if action.skill != "press":
+                yield Problem(("actions", name, "skill"), "keypad digits are pressed", "keypad")
+        if action.skill in ("turn_cw", "turn_ccw") and control is not None and \
+                control.kind not in ("dial", "knob"):
+            yield Problem(("actions", name, "skill"),
+                          f"{action.skill} needs a dial or knob; {control.id!r} is a "
+                          f"{control.kind}", "control")
+    for feature, steps in model.features.items():
+        changes_something = False
+        for s, step in enumerate(steps):
+            path = ("features", feature, s)
+            effects = _effects_of(step, model)
+            value_effects = {a: e for a, e in effects.items() if e != "none"}
+            if step.set or step.reset:
+                changes_something = True
+            if step.variable is None:
+                if (isinstance(step.effect, dict) and value_effects) or (step.effect not in (
+                        None, "none") and not isinstance(step.effect, dict)):
+                    yield Problem((*path, "effect"), "this step has an effect but no `variable`"
+                                  " to apply it to; name the variable it adjusts",
+                                  "missing-variable")
+                continue
+            changes_something = True
+            var = model.variables[step.variable]
+            doms = domains.get(step.variable, [])
+            if step.effect is None and len(step.actions) > 1 and not all(
+                    model.actions[a].digit is not None for a in step.actions
+                    if a in model.actions):
+                yield Problem((*path, "effect"), f"{len(step.actions)} actions adjust "
+                              f"{step.variable!r} but the step does not say how; give `effect` "
+                              "as a map, e.g. {press_up: next, press_down: prev}",
+                              "action-variable")
+            digit_actions = [a for a, e in effects.items() if e == "digit"]
+            other_value = [a for a, e in value_effects.items() if e not in ("digit", "clear")]
+            if digit_actions:
+                if other_value:
+                    yield Problem((*path, "effect"), "keypad digits and other value changes "
+                                  f"({other_value}) share a step; the input buffer belongs to "
+                                  "one step, so give the others a step of their own",
+                                  "keypad-buffer")
+                entry = getattr(var, "entry", None)
+                if entry is None:
+                    yield Problem(("variables", step.variable, "entry"),
+                                  f"keypad digits set {step.variable!r} in "
+                                  f"features.{feature}[{s}] but it declares no `entry` format "
+                                  "to read the typed digits", "keypad-buffer")
+                for a in digit_actions:
+                    if model.actions[a].digit is None:
+                        yield Problem((*path, "effect", a),
+                                      f"{a!r} types a digit but the action declares no `digit`",
+                                      "keypad")
+            for action, effect in value_effects.items():
+                message = _effect_problem(effect, var, doms)
+                if message:
+                    yield Problem((*path, "effect") if not isinstance(step.effect, dict)
+                                  else (*path, "effect", action), message, "action-variable")
+            for target, value in step.set.items():
+                target_var = model.variables[target]
+                if target == step.variable:
+                    yield Problem((*path, "set", target), "a step cannot both adjust and `set` "
+                                  "the same variable", "action-variable")
+                try:
+                    for dom in domains.get(target, []):
+                        if _in_some(value, target_var, [dom]):
+                            break
+                    else:
+                        normalise(target_var, value, f"set.{target}")
+                except ValueProblem as exc:
+                    yield Problem((*path, "set", target), str(exc), "action-variable")
+        if not changes_something:
+            yield Problem(("features", feature), "no step of this feature adjusts a variable "
+                          "or sets one; name the variable each step adjusts", "missing-variable")
+
+
+def _in_some(value: Any, var: Any, doms: list[Domain]) -> bool:
+    from apbot.sim.compiled import _value_index
+
+    return any(_value_index(d, value) is not None for d in doms)
+
+
+def _effect_problem(effect: Any, var: Any, doms: list[Domain]) -> str | None:
+    sizes = {len(d) for d in doms}
+    if effect == "toggle" and sizes != {2}:
+        return "toggle needs a variable with exactly two values; use next/prev"
+    if effect == "digit" and isinstance(var, DiscreteVariable):
+        return "keypad digits set numbers or times, not a discrete variable"
+    if isinstance(effect, Add):
+        if isinstance(var, DiscreteVariable):
+            return "add applies to numbers and times, not to a discrete variable"
+        if isinstance(effect.add, str) and var.type != "time":
+            return f"add {effect.add!r}: a numeric variable adds a number"
+    if isinstance(effect, GoTo) and not _in_some(effect.to, var, doms):
+        values = [v for d in doms for v in d.values][:8]
+        return f"go-to value {effect.to!r} is not a value of the variable ({values})"
+    return None
+
+
+# --- coverage, duplicates ----------------------------------------------------------------------
+
+
+def _coverage(model: ApplianceModel) -> Iterator[Problem]:
+    used_actions = {a for steps in model.features.values() for s in steps for a in s.actions}
+    for name in model.actions:
+        if name not in used_actions:
+            yield Problem(("actions", name), f"action {name!r} appears in no feature; add it "
+                          "to the step it belongs to or remove it", "action-coverage")
+    changed = {s.variable for steps in model.features.values() for s in steps if s.variable}
+    changed |= {v for steps in model.features.values() for s in steps for v in [*s.set, *s.reset]}
+    for name in model.variables:
+        if name not in changed:
+            yield Problem(("variables", name), f"no feature changes {name!r}; name it as the "
+                          "`variable` of the step that adjusts it", "variable-coverage")
+
+
+def _duplicates(model: ApplianceModel) -> Iterator[Problem]:
+    signatures: dict[str, str] = {}
+    for feature, steps in model.features.items():
+        signature = repr([s.model_dump() for s in steps])
+        if signature in signatures:
+            yield Problem(("features", feature), f"same steps as feature "
+                          f"{signatures[signature]!r}; keep one", "duplicate-sequence")
+        signatures.setdefault(signature, feature)
+        for s, step in enumerate(steps):
+            repeated = sorted({a for a in step.actions if step.actions.count(a) > 1})
+            if repeated:
+                yield Problem(("features", feature, s, "actions"),
+                              f"{repeated[0]!r} is listed twice in one step", "duplicate-sequence")
+        for s, (a, b) in enumerate(itertools.pairwise(steps)):
+            if a.variable and a.variable == b.variable and set(a.actions) & set(b.actions):
+                yield Problem(("features", feature, s + 1),
+                              f"steps {s} and {s + 1} adjust {a.variable!r} with the same "
+                              "actions; merge them into one step", "duplicate-sequence",
+                              severity="warning")
+    claimed: dict[str, str] = {}
+    for feature, steps in model.features.items():
+        if not steps:
+            continue
+        first = [a for a in steps[0].actions if a in model.actions]
+        if first and all(a in claimed for a in first):
+            owners = sorted({claimed[a] for a in first})
+            yield Problem(("features", feature, 0, "actions"),
+                          f"feature {feature!r} can never start: every action of its first step "
+                          f"already starts {owners}; give it a distinct first action or merge "
+                          "the features", "duplicate-sequence")
+        for action in first:
+            claimed.setdefault(action, feature)
+
+
+# --- guards, controls ----------------------------------------------------------------------------
+
+
+def _guards(model: ApplianceModel) -> Iterator[Problem]:
+    from apbot.sim.compiled import _value_index
+
+    for g, guard in enumerate(model.guards):
+        for name, wanted in guard.when.items():
+            var = model.variables[name]
+            if var.depends_on is not None:
+                yield Problem(("guards", g, "when", name), "guard conditions use independent "
+                              "variables (power, child lock, running)", "guard")
+                continue
+            domain = build_domain(var)
+            for value in wanted if isinstance(wanted, list) else [wanted]:
+                if _value_index(domain, value) is None:
+                    yield Problem(("guards", g, "when", name), f"{value!r} is not a value of "
+                                  f"{name!r} ({list(domain.values)[:8]})", "guard")
+        releasing = [s for steps in model.features.values() for s in steps
+                     if any(a in guard.only for a in s.actions)
+                     and (s.variable in guard.when or any(v in guard.when
+                                                          for v in [*s.set, *s.reset]))]
+        if not releasing:
+            yield Problem(("guards", g, "only"), "no allowed action changes "
+                          f"{sorted(guard.when)}, so once the guard holds nothing can lift it; "
+                          "allow the action that releases it", "guard")
+
+
+def _controls(model: ApplianceModel) -> Iterator[Problem]:
+    used = {cid for action in model.actions.values() for cid in action.control_ids}
+    for i, control in enumerate(model.controls):
+        if control.box is not None:
+            x0, y0, x1, y1 = control.box
+            if x1 <= x0 or y1 <= y0:
+                yield Problem(("controls", i, "box"), f"box {list(control.box)} is empty; write "
+                              "[left, top, right, bottom] with right > left and bottom > top",
+                              "control")
+        if control.id not in used:
+            yield Problem(("controls", i), f"control {control.id!r} is used by no action",
+                          "control", severity="warning")
+
+
+# --- reachability ----------------------------------------------------------------------------
+
+
+def _reachability(model: ApplianceModel) -> Iterator[Problem]:
+    """Values no sequence of effects can reach from the initial value (or a case default)."""
+    from apbot.sim.compiled import compiled_model
+
+    compiled = compiled_model(model)
+    for v, var in enumerate(compiled.vars):
+        for case, domain in enumerate(var.domains):
+            if domain is None:
+                continue
+            reached = reachable_indices(compiled, v, case)
+            missing = [domain.values[i] for i in range(len(domain)) if i not in reached]
+            if missing:
+                where = ("variables", var.name) if var.parent < 0 else (
+                    "variables", var.name, "cases",
+                    compiled.vars[var.parent].domains[0].values[case])  # type: ignore[union-attr]
+                shown = ", ".join(str(m) for m in missing[:6])
+                more = f" and {len(missing) - 6} more" if len(missing) > 6 else ""
+                yield Problem(where, f"no action can reach {shown}{more}; fix the ranges or the "
+                              "effects that adjust it", "unreachable-value")
+
+
+def reachable_indices(compiled: Any, v: int, case: int) -> set[int]:
+    """Indices of one domain reachable from its initial value through any effect of the model."""
+    from apbot.sim.compiled import CLEAR, DIGIT, TABLE, entry_digits
+
+    var = compiled.vars[v]
+    domain = var.domains[case]
+    tables: list[tuple[int, ...]] = []
+    typeable: set[int] = set()
+    for step in compiled.steps:
+        if step.variable == v:
+            for effect in step.effects.values():
+                if effect[0] in (TABLE, CLEAR) and effect[1][case] is not None:
+                    tables.append(effect[1][case])
+                elif effect[0] == DIGIT and getattr(var.spec, "entry", None) is not None:
+                    assert domain.magnitudes is not None
+                    typeable |= {i for i, m in enumerate(domain.magnitudes)
+                                 if entry_digits(m, var.spec.entry) is not None}
+        for target, side_tables in step.side:
+            if target == v and side_tables[case] is not None:
+                tables.append(side_tables[case])
+    reached = {domain.initial} | typeable
+    frontier = list(reached)
+    while frontier:
+        index = frontier.pop()
+        for table in tables:
+            nxt = table[index]
+            if nxt not in reached:
+                reached.add(nxt)
+                frontier.append(nxt)
+    return reached
+
+
+# --- goals ---------------------------------------------------------------------------------------
+
+
+def check_goal(model: ApplianceModel, goal: Mapping[str, Any]) -> list[Problem]:
+    """Goal validity (the paper's ninth check): known variables, values in their domains,
+    and a programme-dependent setting valid for the goal's programme when one is given."""
+    problems = []
+    variables = list(model.variables)
+    for name, raw in goal.items():
+        path = ("goal", name)
+        if name not in model.variables:
+            problems.append(Problem(path, _unknown("variable", name, variables), "goal"))
+            continue
+        var = model.variables[name]
+        try:
+            value = normalise(var, raw, name)
+        except ValueProblem as exc:
+            problems.append(Problem(path, str(exc), "goal"))
+            continue
+        if var.depends_on is not None and var.depends_on in goal:
+            parent = model.variables[var.depends_on]
+            try:
+                parent_value = normalise(parent, goal[var.depends_on], var.depends_on)
+            except ValueProblem:
+                continue
+            case = (var.cases or {}).get(parent_value)
+            if case is None:
+                problems.append(Problem(path, f"{name!r} does not exist when {var.depends_on} is "
+                                        f"{parent_value!r}", "goal"))
+            else:
+                try:
+                    normalise(var, value, name, build_domain(var, case))
+                except ValueProblem as exc:
+                    problems.append(Problem(path, f"{exc} when {var.depends_on} is "
+                                            f"{parent_value!r}", "goal"))
+    return problems

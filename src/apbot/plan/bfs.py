@@ -1,0 +1,36 @@
+"""Brute-force breadth-first search over the full simulator: the reference the planner is
+proved against on small models. Exponential; only for tests and tiny models."""
+
+from __future__ import annotations
+
+from collections import deque
+from collections.abc import Mapping
+from typing import Any
+
+from apbot.plan.goals import CompiledGoal
+from apbot.sim.compiled import CompiledModel, State
+
+
+def shortest_plan_length(compiled: CompiledModel, start: State, goal: Mapping[str, Any],
+                         max_states: int = 2_000_000) -> int | None:
+    """Length of the shortest action sequence reaching ``goal`` (canonical values), or None
+    when it is unreachable. Raises RuntimeError if more than ``max_states`` states are seen."""
+    target = CompiledGoal.build(compiled, goal)
+    if target.holds(compiled, start):
+        return 0
+    depth = {start: 0}
+    queue: deque[State] = deque([start])
+    actions = range(len(compiled.action_names))
+    while queue:
+        state = queue.popleft()
+        for action in actions:
+            after = compiled.apply(state, action)
+            if after is None or after in depth:
+                continue
+            depth[after] = depth[state] + 1
+            if target.holds(compiled, after):
+                return depth[after]
+            if len(depth) > max_states:
+                raise RuntimeError(f"BFS gave up after {max_states} states")
+            queue.append(after)
+    return None

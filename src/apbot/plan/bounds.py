@@ -1,0 +1,232 @@
+"""An admissible, consistent lower bound on the actions still needed to reach a goal.
+
+Every action has at most one *main* variable: the one its step adjusts. For each goal variable
+we compute, over a graph of its values, the fewest actions whose main variable it is that can
+bring it to its goal value. Changes it undergoes as a side effect of another step (``set``,
+``reset``, a programme change restoring a setting's default) cost nothing in its graph — they
+are paid for by the other step's variable. Each action is therefore counted at most once across
+variables, and the sum over goal variables never overestimates: A* with it is optimal.
+
+Typing a value on a keypad costs its digit count from a fresh buffer. Only the search's start
+node can continue a half-typed buffer (elsewhere a visit is maximal, so leaving the keypad step
+discards the buffer); there, and only there, one digit may finish the job (``continuing``).
+
+Presses that adjust no goal variable (TIME COOK before the digits) are counted too: when a
+goal variable can only be adjusted in a step reached through such a press, that press is
+unavoidable, and presses entering different features are distinct actions.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from collections.abc import Callable
+from typing import Any
+
+from apbot.plan.goals import CompiledGoal
+from apbot.sim.compiled import CLEAR, DIGIT, TABLE, CompiledModel, State, entry_digits
+
+INF = float("inf")
+_ABSENT = ("absent",)  # a dependent setting that does not exist in the current programme
+
+
+def _value_graph(compiled: CompiledModel, v: int, only_case: int | None = None
+                 ) -> tuple[dict[Any, list[tuple[Any, int]]], list[tuple[Any, int]]]:
+    """Reverse edges ``to -> [(from, cost)]`` over canonical values, and "from anywhere" edges.
+
+    ``only_case`` keeps a programme-dependent setting inside one programme's domain (the goal's).
+    """
+    var = compiled.vars[v]
+
+    def cases() -> list[tuple[int, Any]]:
+        return [(c, d) for c, d in enumerate(var.domains)
+                if d is not None and (only_case is None or c == only_case)]
+
+    reverse: dict[Any, list[tuple[Any, int]]] = {}
+    anywhere: list[tuple[Any, int]] = []
+    entry = getattr(var.spec, "entry", None)
+
+    def edge(a: Any, b: Any, cost: int) -> None:
+        if a != b:
+            reverse.setdefault(b, []).append((a, cost))
+
+    for step in compiled.steps:
+        if step.variable == v:
+            typed = False
+            for effect in step.effects.values():
+                if effect[0] in (TABLE, CLEAR):
+                    for case, domain in cases():
+                        table = effect[1][case]
+                        if table is None:
+                            continue
+                        for i, j in enumerate(table):
+                            edge(domain.values[i], domain.values[j], 1)
+                elif effect[0] == DIGIT and entry is not None and not typed:
+                    typed = True  # every digit key of the step offers the same values
+                    allowed = {value for _, d in cases() for value in d.values}
+                    anywhere.extend(item for item in typeable_values(compiled, v)
+                                    if item[0] in allowed)
+        for target, tables in step.side:
+            if target == v:
+                for case, domain in cases():
+                    table = tables[case]
+                    if table is not None:
+                        anywhere.append((domain.values[table[0]], 0))
+    if var.parent >= 0:  # a programme change restores the new programme's default
+        if only_case is None:
+            anywhere.extend((_ABSENT, 0) if d is None else (d.values[d.initial], 0)
+                            for d in var.domains)
+        else:
+            anywhere.extend((d.values[d.initial], 0) for _, d in cases())
+    return reverse, anywhere
+
+
+def typeable_values(compiled: CompiledModel, v: int) -> list[tuple[Any, int]]:
+    """(value, digits needed from a fresh buffer) for every value a keypad can type."""
+    cache = compiled.cache.setdefault("typeable", {})
+    if v not in cache:
+        var = compiled.vars[v]
+        entry = getattr(var.spec, "entry", None)
+        found: dict[Any, int] = {}
+        for domain in var.domains:
+            if entry is None or domain is None or domain.magnitudes is None:
+                continue
+            for value, magnitude in zip(domain.values, domain.magnitudes, strict=True):
+                digits = entry_digits(magnitude, entry)
+                if digits is not None:
+                    found[value] = len(digits)
+        cache[v] = list(found.items())
+    return cache[v]
+
+
+def distances_to(compiled: CompiledModel, v: int, goal_value: Any,
+                 only_case: int | None = None) -> tuple[dict[Any, float], float]:
+    """Fewest main actions from each value to ``goal_value``, and the cost from anywhere."""
+    reverse, anywhere = _value_graph(compiled, v, only_case)
+    dist: dict[Any, float] = {goal_value: 0}
+    queue: deque[Any] = deque([goal_value])
+    while queue:  # 0-1 BFS backwards from the goal
+        node = queue.popleft()
+        for source, cost in reverse.get(node, []):
+            candidate = dist[node] + cost
+            if candidate < dist.get(source, INF):
+                dist[source] = candidate
+                (queue.appendleft if cost == 0 else queue.append)(source)
+    from_anywhere = min((cost + dist.get(target, INF) for target, cost in anywhere), default=INF)
+    return dist, from_anywhere
+
+
+class LowerBound:
+    """``bound(state)``: an admissible estimate of the actions left to reach the goal."""
+
+    def __init__(self, compiled: CompiledModel, goal: CompiledGoal) -> None:
+        self.compiled = compiled
+        self.goal = goal
+        cache: dict[Any, Any] = compiled.cache.setdefault("bounds", {})
+        self.tables: list[tuple[int, tuple[tuple[float, ...], ...], float]] = []
+        for name, v in zip(goal.names, goal.variables, strict=True):
+            goal_case = self._goal_case(v)
+            key = (v, goal.canonical[name], goal_case)
+            if key not in cache:
+                cache[key] = self._table(v, goal.canonical[name], goal_case)
+            self.tables.append(cache[key])
+        goal_vars = set(goal.variables)
+        # steps where a partly typed buffer may finish a goal variable with one digit
+        self.typing_step = {s: step.variable for s, step in enumerate(compiled.steps)
+                            if step.variable in goal_vars
+                            and any(e[0] == DIGIT for e in step.effects.values())}
+        self.entries = [_entry_requirements(compiled, v, goal_vars) for v in goal.variables]
+
+    def __call__(self, state: State, continuing: bool = False) -> float:
+        values = state.values
+        vars_ = self.compiled.vars
+        total = 0.0
+        typing = self.typing_step.get(state.step, -1) if continuing and state.buffer else -1
+        claimed: set[str] = set()
+        for (v, per_case, absent), entry in zip(self.tables, self.entries, strict=True):
+            index = values[v]
+            if index < 0:
+                bound = absent
+            else:
+                parent = vars_[v].parent
+                bound = per_case[values[parent] if parent >= 0 else 0][index]
+                if v == typing and bound > 1:
+                    bound = 1
+            total += bound
+            if bound >= 1 and entry is not None:
+                needs, features = entry
+                if state.step not in needs and claimed.isdisjoint(features):
+                    total += 1  # an entry press no goal variable pays for
+                    claimed |= features
+        return total
+
+    def _goal_case(self, v: int) -> int | None:
+        """The programme a dependent goal setting must end in, when the goal names it."""
+        parent = self.compiled.vars[v].parent
+        if parent < 0 or parent not in self.goal.variables:
+            return None
+        domain = self.compiled.vars[parent].domains[0]
+        assert domain is not None
+        return domain.index[self.goal.canonical[self.compiled.vars[parent].name]]
+
+    def _table(self, v: int, goal_value: Any, goal_case: int | None
+               ) -> tuple[int, tuple[tuple[float, ...], ...], float]:
+        dist, anywhere = distances_to(self.compiled, v, goal_value, goal_case)
+        per_case = []
+        for case, d in enumerate(self.compiled.vars[v].domains):
+            if d is None:
+                per_case.append(())
+            elif goal_case is not None and case != goal_case:
+                # the programme must still change to the goal's, which restores its default
+                per_case.append((anywhere,) * len(d))
+            else:
+                per_case.append(tuple(min(dist.get(value, INF), anywhere) for value in d.values))
+        absent = anywhere if goal_case is not None else min(dist.get(_ABSENT, INF), anywhere)
+        return (v, tuple(per_case), absent)
+
+    def variable_bound(self, v: int) -> Callable[[State], float]:
+        """The bound's term for one goal variable alone (its own presses, no entries)."""
+        position = self.goal.variables.index(v)
+        _, per_case, absent = self.tables[position]
+        parent = self.compiled.vars[v].parent
+
+        def term(state: State) -> float:
+            index = state.values[v]
+            if index < 0:
+                return absent
+            return per_case[state.values[parent] if parent >= 0 else 0][index]
+
+        return term
+
+    def blocking(self, state: State) -> list[str]:
+        """Goal variables whose goal value no action can ever reach from this state."""
+        values = state.values
+        names = []
+        for name, (v, per_case, absent) in zip(self.goal.names, self.tables, strict=True):
+            index = values[v]
+            parent = self.compiled.vars[v].parent
+            bound = absent if index < 0 else per_case[values[parent] if parent >= 0 else 0][index]
+            if bound == INF:
+                names.append(name)
+        return names
+
+
+def _entry_requirements(compiled: CompiledModel, v: int,
+                        goal_vars: set[int]) -> tuple[frozenset[int], frozenset[str]] | None:
+    """When every step adjusting ``v`` sits behind a step that adjusts no goal variable:
+    the pointer positions from which no such entry press is needed, and the features involved.
+    None when some step adjusting ``v`` can be entered directly."""
+    free: set[int] = set()
+    features: set[str] = set()
+    for sid, step in enumerate(compiled.steps):
+        if step.variable != v:
+            continue
+        if step.index == 0:
+            return None
+        before = sid - 1
+        if compiled.steps[before].variable in goal_vars:
+            return None
+        free.update((sid, before))
+        features.add(step.feature)
+    if not features:
+        return None
+    return frozenset(free), frozenset(features)

@@ -1,0 +1,192 @@
+"""``plan(model, state, goal)``: macro actions in order, each with its exact physical actions.
+
+The plan is the shortest action sequence the model allows (see ``apbot.plan.search``), cut into
+macro actions — one per feature entered — and verified by simulating it on the model before it
+is returned. Each macro action carries the values it should leave on the display, which the
+closed loop compares with what it observes.
+
+>>> from apbot.examples import load_example
+>>> p = plan(load_example("washing_machine"), None, {"power": "on", "programme": "wool"})
+>>> [m.feature for m in p.macro_actions], len(p)
+(['power', 'select_programme'], 4)
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+from apbot.model.goal import GoalError, parse_goal
+from apbot.model.schema import ApplianceModel
+from apbot.plan.goals import CompiledGoal
+from apbot.plan.search import DEFAULT_BUDGET, SearchExhausted, TaskSearch, Visit
+from apbot.sim.compiled import CompiledModel, State, compiled_model
+
+__all__ = ["GoalError", "MacroAction", "Plan", "PlannedAction", "Unreachable", "plan"]
+
+
+class Unreachable(Exception):
+    """The goal cannot be reached from this state; ``reason`` says why, in plain words."""
+
+    def __init__(self, reason: str) -> None:
+        super().__init__(reason)
+        self.reason = reason
+
+
+@dataclass(frozen=True)
+class PlannedAction:
+    """One physical action to perform: which controls, which skill, for how long."""
+
+    name: str
+    skill: str
+    controls: tuple[str, ...]
+    seconds: float | None = None
+
+    def __str__(self) -> str:
+        return f"{self.name} ({self.seconds:g} s)" if self.seconds else self.name
+
+
+@dataclass(frozen=True)
+class MacroAction:
+    """One feature's procedure as executed: the steps visited and the actions in order.
+
+    ``expect`` holds the values the adjusted variables should show afterwards.
+    """
+
+    feature: str
+    steps: tuple[int, ...]
+    actions: tuple[PlannedAction, ...]
+    expect: dict[str, Any] = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class Plan:
+    """The macro actions in order. ``len(plan)`` is the number of physical actions."""
+
+    goal: dict[str, Any]
+    macro_actions: tuple[MacroAction, ...]
+    expanded: int = 0
+    seconds: float = 0.0
+
+    @property
+    def actions(self) -> list[PlannedAction]:
+        return [a for m in self.macro_actions for a in m.actions]
+
+    def __len__(self) -> int:
+        return sum(len(m.actions) for m in self.macro_actions)
+
+
+def plan(model: ApplianceModel | CompiledModel, state: State | None,
+         goal: Mapping[str, Any] | Iterable[str], budget: int = DEFAULT_BUDGET) -> Plan:
+    """The shortest plan from ``state`` (None: the initial state) to ``goal``.
+
+    ``goal`` maps variable names to values in any accepted notation ("30 min", "on"), or is a
+    list of ``NAME=VALUE`` strings. Raises :class:`GoalError` for an invalid goal and
+    :class:`Unreachable` (with the reason) when no action sequence reaches it.
+    """
+    started = time.perf_counter()
+    compiled = compiled_model(model)
+    canonical = parse_goal(compiled.model, goal)
+    start = state if state is not None else compiled.initial_state()
+    target = CompiledGoal.build(compiled, canonical)
+    search = TaskSearch(compiled, target, budget)
+    try:
+        result = search.run(start)
+    except SearchExhausted as exc:
+        raise Unreachable(_explain(compiled, search, start, canonical, exc)) from None
+    macro_actions = _macro_actions(compiled, start, result.visits)
+    found = Plan(canonical, macro_actions, result.expanded, time.perf_counter() - started)
+    _verify(compiled, start, target, found)
+    return found
+
+
+def _planned(compiled: CompiledModel, action: int) -> PlannedAction:
+    name = compiled.action_names[action]
+    spec = compiled.model.actions[name]
+    return PlannedAction(name, spec.skill, tuple(spec.control_ids), spec.seconds)
+
+
+def _macro_actions(compiled: CompiledModel, start: State,
+                   visits: tuple[Visit, ...]) -> tuple[MacroAction, ...]:
+    """Group visits into macro actions: a new one starts whenever a feature is (re)entered."""
+    groups: list[list[Visit]] = []
+    previous = start.step
+    for visit in visits:
+        continues = previous >= 0 and (visit.step == previous or
+                                       compiled.steps[previous].next_step == visit.step)
+        if groups and continues:
+            groups[-1].append(visit)
+        else:
+            groups.append([visit])
+        previous = visit.step
+    macro_actions = []
+    state = start
+    for group in groups:
+        changed: list[int] = []
+        for visit in group:
+            for action in visit.actions:
+                after = compiled.apply(state, action)
+                assert after is not None, "planned action refused while grouping"
+                state = after
+            info = compiled.steps[visit.step]
+            if info.variable >= 0:
+                changed.append(info.variable)
+            changed.extend(v for v, _ in info.side)
+        first = compiled.steps[group[0].step]
+        expect = {compiled.vars[v].name: compiled.value(state, compiled.vars[v].name)
+                  for v in dict.fromkeys(changed)}
+        macro_actions.append(MacroAction(
+            first.feature, tuple(compiled.steps[v.step].index for v in group),
+            tuple(_planned(compiled, a) for v in group for a in v.actions), expect))
+    return tuple(macro_actions)
+
+
+def _verify(compiled: CompiledModel, start: State, goal: CompiledGoal, found: Plan) -> None:
+    """Simulate the plan on the model: every action accepted, the goal holds at the end."""
+    state = start
+    for action in found.actions:
+        after = compiled.apply(state, compiled.action_index[action.name], action.seconds)
+        if after is None:
+            raise AssertionError(f"planner bug: {action.name} is refused by the model")
+        state = after
+    if not goal.holds(compiled, state):
+        raise AssertionError("planner bug: the plan does not reach the goal on the model")
+
+
+def _explain(compiled: CompiledModel, search: TaskSearch, start: State,
+             goal: dict[str, Any], exc: SearchExhausted) -> str:
+    """Why a goal is out of reach, in terms of the model."""
+    if exc.budget_hit:
+        return (f"gave up after expanding {exc.expanded} search states (budget {search.budget});"
+                " the goal may be reachable but is too costly to plan — raise the budget")
+    blocked = search.bound.blocking(start)
+    if blocked:
+        parts = []
+        for name in blocked:
+            current = compiled.value(start, name)
+            reach = _forward_values(compiled, start, compiled.var_index[name])
+            shown = ", ".join(str(v) for v in reach[:8]) + (", ..." if len(reach) > 8 else "")
+            parts.append(f"{name} cannot become {goal[name]!r} from {current!r}: no action of "
+                         f"the model leads there (it can reach {shown})")
+        return "; ".join(parts)
+    names = ", ".join(f"{k}={v}" for k, v in goal.items())
+    return (f"no action sequence makes {names} hold together (searched {exc.expanded} states);"
+            " a guard or a programme restriction keeps them apart")
+
+
+def _forward_values(compiled: CompiledModel, start: State, v: int) -> list[Any]:
+    """Values of variable ``v`` reachable by any sequence of actions from ``start`` (bounded)."""
+    seen = {start}
+    frontier = [start]
+    values: dict[Any, None] = {compiled.value(start, compiled.vars[v].name): None}
+    while frontier and len(seen) < 20_000:
+        state = frontier.pop()
+        for action in range(len(compiled.action_names)):
+            after = compiled.apply(state, action)
+            if after is not None and after not in seen:
+                seen.add(after)
+                frontier.append(after)
+                values[compiled.value(after, compiled.vars[v].name)] = None
+    return list(values)

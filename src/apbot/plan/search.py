@@ -1,0 +1,228 @@
+"""The task policy: A* over visits, from the current state to a goal, on the shortest path.
+
+Search nodes are states projected onto the *relevant* variables — the goal's, those guards read
+(power, lock, running) and the programmes that goal settings depend on — plus the feature
+pointer. Nothing else influences how those variables evolve, so the projection loses nothing.
+Edges are visits (``apbot.plan.visits``); their cost is the number of physical actions.
+The heuristic (``apbot.plan.bounds``) is admissible and consistent, so the first goal node
+popped is optimal: the order of macro actions (power before settings, programme before its
+settings, start last) falls out of the search instead of being hard-coded.
+
+The paper's A* kept a constant path cost; ours counts every press.
+"""
+
+from __future__ import annotations
+
+import heapq
+import itertools
+from collections.abc import Hashable
+from dataclasses import dataclass
+from operator import itemgetter
+
+from apbot.plan.bounds import INF, LowerBound, distances_to, typeable_values
+from apbot.plan.goals import CompiledGoal
+from apbot.plan.visits import SMALL_DOMAIN, Exit, explore_visit, keypad_exits
+from apbot.sim.compiled import DIGIT, CompiledModel, State
+
+DEFAULT_BUDGET = 200_000
+
+
+class SearchExhausted(Exception):
+    """No plan: the reachable space was searched without finding the goal, or the budget ran
+    out. ``expanded`` says how many nodes were expanded."""
+
+    def __init__(self, message: str, expanded: int, budget_hit: bool) -> None:
+        super().__init__(message)
+        self.expanded = expanded
+        self.budget_hit = budget_hit
+
+
+@dataclass(frozen=True)
+class Visit:
+    """One visit of the optimal plan: a step id and the actions spent there."""
+
+    step: int
+    actions: tuple[int, ...]
+
+
+@dataclass(frozen=True)
+class SearchResult:
+    visits: tuple[Visit, ...]
+    final: State
+    expanded: int
+
+
+def relevant_variables(compiled: CompiledModel, goal: CompiledGoal) -> list[int]:
+    """Goal variables, guard variables, and the parents that select their domains."""
+    relevant = set(goal.variables)
+    for guard in compiled.guards:
+        relevant.update(v for v, _ in guard.conditions)
+    frontier = list(relevant)
+    while frontier:
+        parent = compiled.vars[frontier.pop()].parent
+        if parent >= 0 and parent not in relevant:
+            relevant.add(parent)
+            frontier.append(parent)
+    return sorted(relevant)
+
+
+class TaskSearch:
+    """A* from one state to one goal. Build per query; cheap to construct."""
+
+    def __init__(self, compiled: CompiledModel, goal: CompiledGoal,
+                 budget: int = DEFAULT_BUDGET) -> None:
+        self.compiled = compiled
+        self.goal = goal
+        self.budget = budget
+        self.relevant = relevant_variables(compiled, goal)
+        relevant_set = set(self.relevant)
+        getter = itemgetter(*self.relevant) if self.relevant else (lambda values: ())
+        self._project = getter if len(self.relevant) != 1 else (lambda vs: (getter(vs),))
+        # a keypad buffer matters only while typing a relevant variable
+        self.keypad_step = tuple(
+            step.variable in relevant_set and any(e[0] == DIGIT for e in step.effects.values())
+            for step in compiled.steps)
+        self.bound = LowerBound(compiled, goal)
+        self._visit_cache: dict[Hashable, list[Exit]] = {}
+        self._keypad_targets: dict[int, list[float]] = {}
+
+    def key(self, state: State) -> Hashable:
+        buffer = state.buffer if state.step >= 0 and self.keypad_step[state.step] else ""
+        return (self._project(state.values), state.step, buffer)
+
+    def _inner_key(self, state: State) -> Hashable:
+        """Key inside a visit: the pointer is fixed, the buffer always matters."""
+        return (self._project(state.values), state.buffer)
+
+    def run(self, start: State) -> SearchResult:
+        compiled = self.compiled
+        bound = self.bound
+        h0 = bound(start, continuing=True)
+        if h0 == INF:
+            raise SearchExhausted("unreachable", 0, False)
+        start_key = self.key(start)
+        best = {start_key: 0}
+        came_from: dict[Hashable, tuple[Hashable, Visit] | None] = {start_key: None}
+        states = {start_key: start}
+        tie = itertools.count()
+        frontier = [(h0, 0, next(tie), start_key)]
+        expanded = 0
+        while frontier:
+            _, negative_cost, _, node = heapq.heappop(frontier)
+            cost = -negative_cost
+            if cost > best[node]:
+                continue
+            state = states[node]
+            if self.goal.holds(compiled, state):
+                return SearchResult(self._path(came_from, node), state, expanded)
+            expanded += 1
+            if expanded > self.budget:
+                raise SearchExhausted("budget", expanded, True)
+            for after, actions in self._edges(state, node == start_key):
+                new_cost = cost + len(actions)
+                k = self.key(after)
+                if new_cost >= best.get(k, INF):
+                    continue
+                h = bound(after)
+                if h == INF:
+                    continue
+                best[k] = new_cost
+                states[k] = after
+                came_from[k] = (node, Visit(after.step, actions))
+                heapq.heappush(frontier, (new_cost + h, -new_cost, next(tie), k))
+        raise SearchExhausted("exhausted", expanded, False)
+
+    @staticmethod
+    def _path(came_from: dict[Hashable, tuple[Hashable, Visit] | None],
+              node: Hashable) -> tuple[Visit, ...]:
+        visits: list[Visit] = []
+        link = came_from[node]
+        while link is not None:
+            previous, visit = link
+            visits.append(visit)
+            link = came_from[previous]
+        return tuple(reversed(visits))
+
+    def _edges(self, state: State, is_start: bool) -> list[Exit]:
+        compiled = self.compiled
+        row = compiled.targets[state.step + 1]
+        by_step: dict[int, list[int]] = {}
+        for action, target in enumerate(row):
+            if target < 0 or (target == state.step and not is_start):
+                continue
+            if compiled.refusal(state, action) is not None:
+                continue
+            by_step.setdefault(target, []).append(action)
+        edges: list[Exit] = []
+        for step, entry in by_step.items():
+            edges.extend(self._visit(state, step, entry))
+        return edges
+
+    def _visit(self, state: State, step: int, entry: list[int]) -> list[Exit]:
+        info = self.compiled.steps[step]
+        v = info.variable
+        if v < 0 or v not in self.relevant:
+            after = self.compiled.apply(state, entry[0])
+            return [] if after is None else [(after, (entry[0],))]
+        cache_key = (step, tuple(entry), self._inner_key(state), state.step == step)
+        cached = self._visit_cache.get(cache_key)
+        if cached is not None:
+            # exits cached from a node with the same relevant values: their irrelevant values
+            # may differ, which never matters to the search; the final plan is re-simulated
+            return cached
+        if self.keypad_step[step]:
+            exits = keypad_exits(self.compiled, state, step, entry, self._targets_for(v))
+        else:
+            exits = explore_visit(self.compiled, state, step, entry, self._inner_key)
+            domain = self.compiled.vars[v].domain(state.values)
+            if domain is not None and len(domain) > SMALL_DOMAIN:
+                exits = self._useful(exits, v)
+        self._visit_cache[cache_key] = exits
+        return exits
+
+    def _targets_for(self, v: int) -> list[float]:
+        """Values worth typing into a keypad variable: its goal, its current value, and values
+        from which another step reaches the goal cheaply (e.g. type 3:00, then +30 s)."""
+        if v in self._keypad_targets:
+            return self._keypad_targets[v]
+        var = self.compiled.vars[v]
+        magnitudes: dict[float, None] = {}
+        if v in self.goal.variables:
+            name = var.name
+            goal_value = self.goal.canonical[name]
+            dist, _ = distances_to(self.compiled, v, goal_value)
+            typeable = dict(typeable_values(self.compiled, v))
+            direct = typeable.get(goal_value, INF)
+            # typing z and adjusting it in another step pays only if it costs about as much
+            # as typing the goal; the slack covers side effects that visit may bring along
+            slack = 1 + sum(1 for step in self.compiled.steps for target, _ in step.side
+                            if target in self.goal.variables)
+            for domain in var.domains:
+                if domain is None or domain.magnitudes is None:
+                    continue
+                ranked = sorted((cost, i) for i, value in enumerate(domain.values)
+                                if value in typeable
+                                and (cost := typeable[value] + dist.get(value, INF))
+                                <= direct + slack)
+                for _, i in ranked[:SMALL_DOMAIN]:
+                    magnitudes[domain.magnitudes[i]] = None
+        for domain in var.domains:
+            if domain is not None and domain.magnitudes is not None and \
+                    len(domain) <= SMALL_DOMAIN:
+                magnitudes.update(dict.fromkeys(domain.magnitudes))
+        self._keypad_targets[v] = list(magnitudes)
+        return self._keypad_targets[v]
+
+    def _useful(self, exits: list[Exit], v: int) -> list[Exit]:
+        """For a large domain, keep exits whose value is some distance-ranked candidate."""
+        by_cost = sorted(exits, key=lambda e: len(e[1]))
+        if v not in self.goal.variables:
+            return by_cost[:SMALL_DOMAIN]
+        v_bound = self.bound.variable_bound(v)
+        scored = [(len(path) + v_bound(after), len(path), after, path) for after, path in exits]
+        best = min(score for score, *_ in scored)
+        slack = 1 + sum(1 for step in self.compiled.steps for target, _ in step.side
+                        if target in self.goal.variables)
+        keep = sorted(item for item in scored if item[0] <= best + slack)[:SMALL_DOMAIN]
+        kept = [(after, path) for _, _, after, path in keep]
+        return kept if by_cost[0] in kept else [by_cost[0], *kept]

@@ -1,0 +1,514 @@
+"""The semantics of a model, compiled into lookup tables so that one step costs a few microseconds.
+
+State
+    A :class:`State` holds the index of every variable's value in its current domain (``-1``
+    when a programme-dependent setting does not exist in the current programme), the feature
+    pointer (a global step id, ``-1`` before any feature), and the keypad input buffer.
+
+Feature pointer (kept from the paper)
+    An action that belongs to the current step keeps the pointer there; otherwise one that
+    belongs to the next step of the same feature advances to it; otherwise the action enters
+    the first feature (in declaration order) whose first step contains it. An action that fits
+    none of these is refused. The keypad buffer empties whenever the pointer moves to another
+    step, so a digit typed for the timer never leaks into the clock.
+
+Effects
+    Every value-changing effect (next, prev, toggle, go-to, add, reset) compiles to a table
+    ``new_index = table[current_index]`` per case of the variable; a keypad digit appends to the
+    buffer and sets the variable when the buffer parses to one of its values. Side effects
+    (``set``, ``reset``) of a step follow its main effect. When a programme changes, settings
+    that depend on it return to the new programme's default.
+
+Guards
+    Checked before anything else: while a guard's condition holds, only its listed actions are
+    accepted (power off, child lock, running).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, NamedTuple
+
+from apbot.model.domain import Domain, build_domain
+from apbot.model.schema import (
+    Add,
+    ApplianceModel,
+    DiscreteVariable,
+    Entry,
+    GoTo,
+    NumericVariable,
+    TimeVariable,
+    time_step_seconds,
+)
+from apbot.model.values import format_hms, format_time, parse_hms, tidy_number
+
+NONE, TABLE, DIGIT, CLEAR = 0, 1, 2, 3
+
+# rejection reasons (negative codes; a guard's refusal is its index >= 0)
+NOT_HERE = -1
+TOO_SHORT = -2
+
+
+class State(NamedTuple):
+    """An appliance state: value indices, feature-pointer step id, keypad buffer. Hashable."""
+
+    values: tuple[int, ...]
+    step: int
+    buffer: str
+
+
+@dataclass(frozen=True)
+class VarInfo:
+    """A variable with its domains: one, or one per value of the parent (``None`` = absent)."""
+
+    name: str
+    spec: DiscreteVariable | NumericVariable | TimeVariable
+    domains: tuple[Domain | None, ...]
+    parent: int  # index of the variable selecting the case, or -1
+
+    def domain(self, values: tuple[int, ...] | list[int]) -> Domain | None:
+        """The domain in force for these values."""
+        return self.domains[values[self.parent]] if self.parent >= 0 else self.domains[0]
+
+    def case(self, values: tuple[int, ...] | list[int]) -> int:
+        return values[self.parent] if self.parent >= 0 else 0
+
+
+@dataclass(frozen=True)
+class StepInfo:
+    """A compiled feature step."""
+
+    feature: str
+    index: int
+    variable: int  # -1 when the step adjusts no variable
+    actions: frozenset[int]
+    effects: dict[int, tuple[Any, ...]]  # action -> (kind, per-case tables | digit)
+    side: tuple[tuple[int, tuple[tuple[int, ...] | None, ...]], ...]  # (var, per-case tables)
+    next_step: int  # the next step of the same feature, or -1
+
+
+@dataclass(frozen=True)
+class GuardInfo:
+    conditions: tuple[tuple[int, frozenset[int]], ...]
+    allowed: frozenset[int]
+    display: str
+    name: str
+
+
+def _index_table(domain: Domain, target: int) -> tuple[int, ...]:
+    return (target,) * len(domain)
+
+
+def _table_for(effect: Any, domain: Domain, var: Any) -> tuple[int, ...] | None:
+    """``new_index = table[index]`` for one effect on one domain (None: no such table)."""
+    n = len(domain)
+    if effect == "next":
+        return tuple(domain.next_index(i) for i in range(n))
+    if effect == "prev":
+        return tuple(domain.prev_index(i) for i in range(n))
+    if effect == "toggle":
+        return tuple((i + 1) % n for i in range(n))
+    if effect == "reset":
+        return _index_table(domain, domain.initial)
+    if isinstance(effect, GoTo):
+        target = _value_index(domain, effect.to)
+        return None if target is None else _index_table(domain, target)
+    if isinstance(effect, Add):
+        amount = _amount(effect.add, var)
+        assert domain.magnitudes is not None
+        mags = domain.magnitudes
+        return tuple(domain.snap_index(mags[i] + amount) for i in range(n))
+    return tuple(range(n))
+
+
+def _amount(amount: Any, var: Any) -> float:
+    if isinstance(var, TimeVariable):
+        return float(time_step_seconds(amount) if isinstance(amount, str) else amount)
+    return float(amount)
+
+
+def _value_index(domain: Domain, raw: Any) -> int | None:
+    """Index of a model-written value (``to:``, ``set:``, guard values) in a domain."""
+    if domain.kind == "discrete":
+        return domain.index.get(str(raw))
+    if domain.kind == "time":
+        try:
+            seconds = parse_hms(str(raw))
+        except ValueError:
+            return None
+        assert domain.magnitudes is not None
+        return next((i for i, m in enumerate(domain.magnitudes) if m == seconds), None)
+    try:
+        number = float(raw)
+    except (TypeError, ValueError):
+        return None
+    assert domain.magnitudes is not None
+    return next((i for i, m in enumerate(domain.magnitudes) if abs(m - number) < 1e-9), None)
+
+
+def parse_entry(buffer: str, entry: Entry) -> float | None:
+    """The number a keypad buffer stands for (seconds for times), or None if it is not valid.
+
+    >>> parse_entry("130", Entry(format="mm:ss")), parse_entry("190", Entry(format="mm:ss"))
+    (90.0, None)
+    """
+    if not buffer:
+        return None
+    fmt = entry.format
+    if fmt == "number":
+        return float(int(buffer))
+    if fmt == "minutes":
+        return float(int(buffer) * 60)
+    if fmt == "seconds":
+        return float(int(buffer))
+    padded = buffer.zfill(6 if fmt == "hh:mm:ss" else 4)
+    if fmt == "hh:mm:ss":
+        hours, minutes, secs = int(padded[:-4]), int(padded[-4:-2]), int(padded[-2:])
+        if minutes >= 60 or secs >= 60:
+            return None
+        return float(hours * 3600 + minutes * 60 + secs)
+    high, low = int(padded[:-2]), int(padded[-2:])
+    if low >= 60:
+        return None
+    return float(high * 60 + low) if fmt == "mm:ss" else float(high * 3600 + low * 60)
+
+
+def type_digit(buffer: str, digit: str, entry: Entry) -> str:
+    """The buffer after typing one digit (shift out the oldest, or ignore, when full)."""
+    if len(buffer) < entry.digits():
+        return buffer + digit
+    return (buffer + digit)[1:] if entry.overflow == "shift" else buffer
+
+
+class CompiledModel:
+    """Lookup tables for a validated model. Build once, step many times."""
+
+    def __init__(self, model: ApplianceModel) -> None:
+        self.model = model
+        names = list(model.variables)
+        self.var_index = {name: i for i, name in enumerate(names)}
+        self.action_names = list(model.actions)
+        self.action_index = {name: i for i, name in enumerate(self.action_names)}
+        self.vars = tuple(self._compile_variable(name) for name in names)
+        self.dependents: dict[int, tuple[int, ...]] = {}
+        for i, var in enumerate(self.vars):
+            if var.parent >= 0:
+                self.dependents.setdefault(var.parent, ())
+                self.dependents[var.parent] += (i,)
+        self.steps = self._compile_steps()
+        self.first_steps = self._first_steps()
+        self.targets = self._compile_targets()
+        self.guards = self._compile_guards()
+        self.hold_seconds = tuple(model.actions[a].seconds if model.actions[a].skill == "hold"
+                                  else None for a in self.action_names)
+        self.digits = tuple(str(model.actions[a].digit) if model.actions[a].digit is not None
+                            else "" for a in self.action_names)
+        self.feature_names = list(model.features)
+        self.cache: dict[str, Any] = {}  # planner data derived from this model, built lazily
+
+    # --- building ------------------------------------------------------------------------
+
+    def _compile_variable(self, name: str) -> VarInfo:
+        spec = self.model.variables[name]
+        if spec.depends_on is None:
+            return VarInfo(name, spec, (build_domain(spec),), -1)
+        parent_index = self.var_index[spec.depends_on]
+        parent = build_domain(self.model.variables[spec.depends_on])
+        cases = spec.cases or {}
+        domains = tuple(build_domain(spec, cases[value]) if value in cases else None
+                        for value in parent.values)
+        return VarInfo(name, spec, domains, parent_index)
+
+    def _effect(self, effect: Any, var: VarInfo | None, action: int) -> tuple[Any, ...]:
+        if var is None or effect in (None, "none"):
+            return (NONE,)
+        if effect == "digit":
+            return (DIGIT, self.model.actions[self.action_names[action]].digit)
+        if effect == "clear":
+            reset = tuple(None if d is None else _index_table(d, d.initial) for d in var.domains)
+            return (CLEAR, reset)
+        tables = tuple(None if d is None else _table_for(effect, d, var.spec)
+                       for d in var.domains)
+        return (TABLE, tables)
+
+    def _compile_steps(self) -> tuple[StepInfo, ...]:
+        steps: list[StepInfo] = []
+        for feature, feature_steps in self.model.features.items():
+            base = len(steps)
+            for index, step in enumerate(feature_steps):
+                var = self.vars[self.var_index[step.variable]] if step.variable else None
+                action_ids = [self.action_index[a] for a in step.actions]
+                effects = {a: self._effect(default_effect(step, self.action_names[a], self.model),
+                                           var, a) for a in action_ids}
+                side: list[tuple[int, tuple[tuple[int, ...] | None, ...]]] = []
+                for target, value in step.set.items():
+                    info = self.vars[self.var_index[target]]
+                    side.append((self.var_index[target], tuple(
+                        None if d is None else _table_for(GoTo(to=value), d, info.spec)
+                        for d in info.domains)))
+                for target in step.reset:
+                    info = self.vars[self.var_index[target]]
+                    side.append((self.var_index[target], tuple(
+                        None if d is None else _index_table(d, d.initial) for d in info.domains)))
+                next_step = base + index + 1 if index + 1 < len(feature_steps) else -1
+                steps.append(StepInfo(feature, index, self.var_index[step.variable]
+                                      if step.variable else -1, frozenset(action_ids), effects,
+                                      tuple(side), next_step))
+        return tuple(steps)
+
+    def _first_steps(self) -> dict[int, int]:
+        """Action -> the step id of the first feature (in order) whose first step has it."""
+        first: dict[int, int] = {}
+        for sid, step in enumerate(self.steps):
+            if step.index == 0:
+                for action in sorted(step.actions):
+                    first.setdefault(action, sid)
+        return first
+
+    def _compile_targets(self) -> tuple[tuple[int, ...], ...]:
+        """``targets[pointer + 1][action]``: the step an action moves the pointer to, or -1."""
+        rows = []
+        for pointer in range(-1, len(self.steps)):
+            row = []
+            for action in range(len(self.action_names)):
+                target = self.first_steps.get(action, -1)
+                if pointer >= 0:
+                    step = self.steps[pointer]
+                    if action in step.actions:
+                        target = pointer
+                    elif step.next_step >= 0 and action in self.steps[step.next_step].actions:
+                        target = step.next_step
+                row.append(target)
+            rows.append(tuple(row))
+        return tuple(rows)
+
+    def _compile_guards(self) -> tuple[GuardInfo, ...]:
+        guards = []
+        for guard in self.model.guards:
+            conditions = []
+            for name, wanted in guard.when.items():
+                var = self.vars[self.var_index[name]]
+                domain = var.domains[0]
+                assert domain is not None
+                options = wanted if isinstance(wanted, list) else [wanted]
+                indices = frozenset(i for o in options
+                                    if (i := _value_index(domain, o)) is not None)
+                conditions.append((self.var_index[name], indices))
+            allowed = frozenset(self.action_index[a] for a in guard.only)
+            guards.append(GuardInfo(tuple(conditions), allowed, guard.display, guard.name))
+        return tuple(guards)
+
+    # --- running -----------------------------------------------------------------------------
+
+    def initial_state(self) -> State:
+        """Every variable at its initial value; no feature active; empty buffer."""
+        values: list[int] = []
+        for var in self.vars:
+            if var.parent < 0:
+                domain = var.domains[0]
+                assert domain is not None
+                values.append(domain.initial)
+            else:
+                values.append(-1)
+        for i, var in enumerate(self.vars):
+            if var.parent >= 0:
+                domain = var.domain(values)
+                values[i] = -1 if domain is None else domain.initial
+        return State(tuple(values), -1, "")
+
+    def refusal(self, state: State, action: int) -> int | None:
+        """Why ``action`` would be refused in ``state`` (guard index or negative code), or None."""
+        values = state.values
+        for g, guard in enumerate(self.guards):
+            if action not in guard.allowed and all(values[v] in ok for v, ok in guard.conditions):
+                return g
+        if self.targets[state.step + 1][action] < 0:
+            return NOT_HERE
+        return None
+
+    def apply(self, state: State, action: int, seconds: float | None = None) -> State | None:
+        """The state after ``action``, or None when the appliance refuses it."""
+        values = state.values
+        for guard in self.guards:
+            if action not in guard.allowed:
+                for v, ok in guard.conditions:
+                    if values[v] not in ok:
+                        break
+                else:
+                    return None
+        target = self.targets[state.step + 1][action]
+        if target < 0:
+            return None
+        needed = self.hold_seconds[action]
+        if needed is not None and seconds is not None and seconds + 1e-9 < needed:
+            return None
+        step = self.steps[target]
+        buffer = state.buffer if target == state.step else ""
+        effect = step.effects[action]
+        kind = effect[0]
+        new = list(values)
+        v = step.variable
+        if kind == TABLE:
+            var = self.vars[v]
+            current = new[v]
+            if current >= 0:
+                table = effect[1][var.case(new)]
+                if table is not None:
+                    new[v] = table[current]
+        elif kind == DIGIT:
+            new[v], buffer = self._type(new, v, buffer, str(effect[1]))
+        elif kind == CLEAR:
+            buffer = ""
+            var = self.vars[v]
+            if new[v] >= 0:
+                table = effect[1][var.case(new)]
+                if table is not None:
+                    new[v] = table[new[v]]
+        changed_parent = v >= 0 and v in self.dependents and new[v] != values[v]
+        if changed_parent:
+            self._reset_dependents(new, v)
+        for target_var, tables in step.side:
+            before = new[target_var]
+            var = self.vars[target_var]
+            if before >= 0:
+                table = tables[var.case(new)]
+                if table is not None:
+                    new[target_var] = table[before]
+            if target_var in self.dependents and new[target_var] != before:
+                self._reset_dependents(new, target_var)
+        return State(tuple(new), target, buffer)
+
+    def _reset_dependents(self, values: list[int], parent: int) -> None:
+        for d in self.dependents[parent]:
+            domain = self.vars[d].domain(values)
+            values[d] = -1 if domain is None else domain.initial
+
+    def _type(self, values: list[int], v: int, buffer: str, digit: str) -> tuple[int, str]:
+        var = self.vars[v]
+        entry = var.spec.entry if not isinstance(var.spec, DiscreteVariable) else None
+        domain = var.domain(values)
+        if entry is None or domain is None:
+            return values[v], buffer
+        buffer = type_digit(buffer, digit, entry)
+        magnitude = parse_entry(buffer, entry)
+        index = self.magnitude_index(domain, magnitude)
+        return (values[v] if index is None else index), buffer
+
+    @staticmethod
+    def magnitude_index(domain: Domain, magnitude: float | None) -> int | None:
+        if magnitude is None:
+            return None
+        return domain.index.get(_canonical(domain, magnitude))
+
+    # --- reading -----------------------------------------------------------------------------
+
+    def value(self, state: State, name: str) -> Any:
+        """The canonical value of a variable (None when absent in the current programme)."""
+        v = self.var_index[name]
+        index = state.values[v]
+        domain = self.vars[v].domain(state.values)
+        return None if index < 0 or domain is None else domain.values[index]
+
+    def assignment(self, state: State) -> dict[str, Any]:
+        """Every variable's canonical value."""
+        return {var.name: self.value(state, var.name) for var in self.vars}
+
+    def focus(self, state: State) -> int:
+        """The variable the display is showing: the current step's, else the next step's."""
+        if state.step < 0:
+            return -1
+        step = self.steps[state.step]
+        if step.variable >= 0:
+            return step.variable
+        if step.next_step >= 0:
+            return self.steps[step.next_step].variable
+        return -1
+
+    def render_value(self, state: State, v: int) -> str:
+        """A value as the display prints it (unit, time style)."""
+        var = self.vars[v]
+        index = state.values[v]
+        domain = var.domain(state.values)
+        if index < 0 or domain is None:
+            return "--"
+        value = domain.values[index]
+        spec = var.spec
+        if isinstance(spec, TimeVariable):
+            assert domain.magnitudes is not None
+            return format_time(int(domain.magnitudes[index]), spec.format)
+        if isinstance(spec, NumericVariable) and spec.unit:
+            return f"{value}{spec.unit}" if not spec.unit[0].isalnum() else f"{value} {spec.unit}"
+        return str(value)
+
+
+def _canonical(domain: Domain, magnitude: float) -> Any:
+    if domain.kind == "time":
+        return format_hms(int(magnitude))
+    return tidy_number(magnitude)
+
+
+def default_effect(step: Any, action: str, model: ApplianceModel) -> Any:
+    """The effect of ``action`` in ``step``, with the defaults filled in.
+
+    With no ``effect``: a step that adjusts a variable with keypad keys types digits; with a
+    single action it steps to the next value; a step without a variable has no main effect.
+    """
+    if isinstance(step.effect, dict):
+        return step.effect.get(action, "none")
+    if step.effect is not None:
+        return step.effect
+    if step.variable is None:
+        return "none"
+    if model.actions[action].digit is not None:
+        return "digit"
+    return "next"
+
+
+def entry_digits(magnitude: float, entry: Entry) -> str | None:
+    """The shortest digit string whose entry parses to ``magnitude`` (None: not typeable).
+
+    Digits are right-aligned and zero-padded, so leading zeros never help.
+
+    >>> entry_digits(90, Entry(format="mm:ss")), entry_digits(5400, Entry(format="h:mm"))
+    ('130', '130')
+    """
+    if magnitude < 0 or abs(magnitude - round(magnitude)) > 1e-9:
+        return None
+    total = round(magnitude)
+    fmt = entry.format
+    if fmt in ("number", "seconds"):
+        text = str(total)
+    elif fmt == "minutes":
+        if total % 60:
+            return None
+        text = str(total // 60)
+    elif fmt == "mm:ss":
+        text = str((total // 60) * 100 + total % 60)
+    elif fmt in ("hh:mm", "h:mm"):
+        if total % 60:
+            return None
+        text = str((total // 3600) * 100 + (total % 3600) // 60)
+    else:
+        hours, rest = divmod(total, 3600)
+        text = str(hours * 10000 + (rest // 60) * 100 + rest % 60)
+    return text if len(text) <= entry.digits() else None
+
+
+_COMPILED: dict[int, tuple[ApplianceModel, CompiledModel]] = {}
+
+
+def compiled_model(model: ApplianceModel | CompiledModel) -> CompiledModel:
+    """A compiled model, reusing earlier compilations of the same model object.
+
+    Models are immutable, so a compilation (and the planner data cached on it) stays valid.
+    """
+    if isinstance(model, CompiledModel):
+        return model
+    hit = _COMPILED.get(id(model))
+    if hit is not None and hit[0] is model:
+        return hit[1]
+    if len(_COMPILED) >= 256:
+        _COMPILED.pop(next(iter(_COMPILED)))
+    compiled = CompiledModel(model)
+    _COMPILED[id(model)] = (model, compiled)
+    return compiled

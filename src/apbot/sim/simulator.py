@@ -1,0 +1,179 @@
+"""Run a model as a deterministic appliance: press things, read the display.
+
+The same engine runs the benchmark's ground truth and an agent's belief model.
+
+>>> from apbot.examples import load_example
+>>> sim = Simulator(load_example("microwave_keypad"))
+>>> sim.step("press_power").accepted
+True
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+from apbot.model.schema import TEMPLATE_FIELD, ApplianceModel
+from apbot.sim.compiled import NOT_HERE, TOO_SHORT, CompiledModel, State
+
+
+@dataclass(slots=True)
+class Observation:
+    """What an agent sees after one action.
+
+    ``display`` is the text on the appliance's display; ``values`` the variables it shows
+    (the one being adjusted, and indicators such as a lock icon); ``accepted`` says whether
+    the appliance took the action, and ``reason`` why not.
+    """
+
+    display: str
+    values: dict[str, Any] = field(default_factory=dict)
+    accepted: bool = True
+    reason: str = ""
+    focus: str | None = None
+
+
+class UnknownAction(KeyError):
+    """An action name the model does not have."""
+
+    def __str__(self) -> str:
+        return str(self.args[0])
+
+
+class Simulator:
+    """A stateful wrapper around :class:`CompiledModel` with names instead of indices."""
+
+    def __init__(self, model: ApplianceModel | CompiledModel) -> None:
+        self.compiled = model if isinstance(model, CompiledModel) else CompiledModel(model)
+        self.model = self.compiled.model
+        self.state: State = self.compiled.initial_state()
+        self._display_cache: dict[tuple[int, int, int], str] = {}
+        self._plain_show = {v: _is_plain(var.spec.show) for v, var in
+                            enumerate(self.compiled.vars)}
+
+    @property
+    def actions(self) -> list[str]:
+        """Action names, in model order."""
+        return list(self.compiled.action_names)
+
+    def reset(self, state: State | None = None) -> Observation:
+        """Back to the initial state (or to ``state``); returns what the display shows."""
+        self.state = state if state is not None else self.compiled.initial_state()
+        return self.observe()
+
+    def action_id(self, action: str) -> int:
+        try:
+            return self.compiled.action_index[action]
+        except KeyError:
+            from apbot.model.values import closest_matches
+
+            close = closest_matches(action, self.compiled.action_names, limit=1)
+            hint = f"; did you mean {close[0]!r}?" if close else ""
+            raise UnknownAction(f"unknown action {action!r}{hint}") from None
+
+    def step(self, action: str | int, seconds: float | None = None) -> Observation:
+        """Perform one action. ``seconds`` is how long a hold lasts (default: long enough)."""
+        aid = action if isinstance(action, int) else self.action_id(action)
+        compiled = self.compiled
+        new = compiled.apply(self.state, aid, seconds)
+        if new is None:
+            return self._refused(aid, seconds)
+        self.state = new
+        return self.observe()
+
+    def _refused(self, aid: int, seconds: float | None) -> Observation:
+        compiled = self.compiled
+        name = compiled.action_names[aid]
+        code = compiled.refusal(self.state, aid)
+        if code is not None and code >= 0:
+            guard = compiled.guards[code]
+            conditions = ", ".join(f"{compiled.vars[v].name} is "
+                                   f"{compiled.value(self.state, compiled.vars[v].name)}"
+                                   for v, _ in guard.conditions)
+            allowed = [compiled.action_names[a] for a in sorted(guard.allowed)]
+            verb = "works" if len(allowed) == 1 else "work"
+            reason = (f"{guard.name + ': ' if guard.name else ''}{conditions}; only "
+                      f"{', '.join(allowed)} {verb}")
+            observation = self.observe()
+            observation.display = guard.display
+            observation.values = {name: compiled.value(self.state, name)
+                                  for name in compiled.model.display.indicators}
+            observation.focus = None
+        elif code == NOT_HERE:
+            reason = f"{name} does nothing here"
+            observation = self.observe()
+        else:
+            needed = compiled.hold_seconds[aid]
+            code = TOO_SHORT
+            reason = f"{name} must be held for {needed:g} s (held {seconds:g} s)"
+            observation = self.observe()
+        observation.accepted = False
+        observation.reason = reason
+        return observation
+
+    def observe(self) -> Observation:
+        """The display for the current state, without acting."""
+        compiled = self.compiled
+        state = self.state
+        focus = compiled.focus(state)
+        values: dict[str, Any] = {}
+        if focus >= 0:
+            var = compiled.vars[focus]
+            values[var.name] = compiled.value(state, var.name)
+            key = (focus, state.values[focus], state.values[var.parent] if var.parent >= 0 else 0)
+            text = self._display_cache.get(key) if self._plain_show[focus] else None
+            if text is None:
+                text = self._show(state, focus)
+                if self._plain_show[focus]:
+                    self._display_cache[key] = text
+        else:
+            text = self._template(compiled.model.display.idle, state)
+            for name in TEMPLATE_FIELD.findall(compiled.model.display.idle):
+                values[name] = compiled.value(state, name)
+        for name in compiled.model.display.indicators:
+            values[name] = compiled.value(state, name)
+        return Observation(text, values, True, "", compiled.vars[focus].name if focus >= 0
+                           else None)
+
+    def _show(self, state: State, v: int) -> str:
+        var = self.compiled.vars[v]
+        spec = var.spec
+        if not spec.visible:
+            return ""
+        value = self.compiled.render_value(state, v)
+        show = spec.show
+        if isinstance(show, dict):
+            raw = self.compiled.value(state, var.name)
+            show = show.get(str(raw))
+        if show is None:
+            return f"{spec.display_label(var.name)} {value}".strip()
+        return self._template(show, state, value=value, label=spec.display_label(var.name))
+
+    def _template(self, text: str, state: State, **extra: str) -> str:
+        def fill(match: Any) -> str:
+            name = match.group(1)
+            if name in extra:
+                return extra[name]
+            return self.compiled.render_value(state, self.compiled.var_index[name])
+
+        return TEMPLATE_FIELD.sub(fill, text)
+
+    # --- convenience ---------------------------------------------------------------------------
+
+    def value(self, name: str) -> Any:
+        """Canonical value of a variable now."""
+        return self.compiled.value(self.state, name)
+
+    def assignment(self) -> dict[str, Any]:
+        """Every variable's canonical value now."""
+        return self.compiled.assignment(self.state)
+
+    def satisfies(self, goal: dict[str, Any]) -> bool:
+        """Whether every goal variable has its (canonical) goal value now."""
+        return all(self.value(name) == value for name, value in goal.items())
+
+
+def _is_plain(show: Any) -> bool:
+    """Whether a display template depends only on the shown variable (so it can be cached)."""
+    texts = show.values() if isinstance(show, dict) else [show or ""]
+    return all(set(TEMPLATE_FIELD.findall(t)) <= {"value", "label"} for t in texts)
