@@ -177,7 +177,7 @@ class ValueProblem(ValueError):
     """A value that does not belong to a variable; the message says what would."""
 
 
-def normalise(var: AnyVariable, raw: Any, name: str = "value", domain: Domain | None = None) -> Any:
+def normalise(var: AnyVariable, raw: Any, domain: Domain | None = None) -> Any:
     """Canonical form of ``raw`` for ``var``, checked against its domain.
 
     Accepts what people and LLMs write: "30 min" or 30 for a numeric variable in minutes,
@@ -190,18 +190,17 @@ def normalise(var: AnyVariable, raw: Any, name: str = "value", domain: Domain | 
     """
     values = list(domain.values) if domain is not None else all_values(var)
     if isinstance(var, DiscreteVariable):
-        return _normalise_discrete(raw, values, name)
+        return _normalise_discrete(raw, values)
     if isinstance(var, NumericVariable):
-        number = _to_number(raw, var.unit, name)
+        number = _to_number(raw, var.unit)
         if number not in values:
-            raise ValueProblem(f"{name}: {number:g}{_unit_suffix(var.unit)} is not a value of "
-                               f"this variable ({_summary(values)})")
+            raise ValueProblem(f"{number:g}{_unit_suffix(var.unit)} is not one of its values "
+                               f"({_summary(values)})")
         return number
-    seconds = _to_seconds(raw, var.format, name)
+    seconds = _to_seconds(raw, var.format)
     value = format_hms(seconds)
     if value not in values:
-        raise ValueProblem(f"{name}: {value} is not a value of this variable "
-                           f"({_summary(values)})")
+        raise ValueProblem(f"{value} is not one of its values ({_summary(values)})")
     return value
 
 
@@ -209,7 +208,7 @@ def _unit_suffix(unit: str) -> str:
     return f" {unit}" if unit and unit[0].isalnum() else unit
 
 
-def _normalise_discrete(raw: Any, values: list[str], name: str) -> str:
+def _normalise_discrete(raw: Any, values: list[str]) -> str:
     text = str(raw).lower() if isinstance(raw, bool) else str(raw)
     if text in values:
         return text
@@ -224,35 +223,35 @@ def _normalise_discrete(raw: Any, values: list[str], name: str) -> str:
                      and (q[1] is None or quantity[1] is None or q[1] == quantity[1])]
         if len(by_number) == 1:
             return by_number[0]
-    raise ValueProblem(f"{name}: {text!r} is not one of {values}" + _did_you_mean(text, values))
+    raise ValueProblem(f"{text!r} is not one of {values}" + _did_you_mean(text, values))
 
 
-def _to_number(raw: Any, unit: str, name: str) -> int | float:
+def _to_number(raw: Any, unit: str) -> int | float:
     if isinstance(raw, bool):
-        raise ValueProblem(f"{name}: expected a number, got {raw!r}")
+        raise ValueProblem(f"expected a number, got {raw!r}")
     if isinstance(raw, int | float):
         return tidy_number(raw)
     quantity = parse_quantity(str(raw))
     if quantity is None:
-        raise ValueProblem(f"{name}: {raw!r} is not a number"
+        raise ValueProblem(f"{raw!r} is not a number"
                            + (f" of {unit}" if unit else ""))
     number, dimension, _ = quantity
     if dimension is not None:
         target = unit_of(unit) if unit else None
         if target is None:
             if unit:
-                raise ValueProblem(f"{name}: cannot convert {raw!r} to {unit!r}")
+                raise ValueProblem(f"cannot convert {raw!r} to {unit!r}")
         elif target[0] != dimension:
-            raise ValueProblem(f"{name}: {raw!r} is not a quantity in {unit}")
+            raise ValueProblem(f"{raw!r} is not a quantity in {unit}")
         else:
             number = number / target[1]
     return tidy_number(round(number, 6))
 
 
-def _to_seconds(raw: Any, style: str, name: str) -> int:
+def _to_seconds(raw: Any, style: str) -> int:
     text = str(raw).strip()
     if isinstance(raw, int | float) and not isinstance(raw, bool):
-        raise ValueProblem(f"{name}: a bare number {raw!r} is ambiguous for a time; "
+        raise ValueProblem(f"a bare number {raw!r} is ambiguous for a time; "
                            "write 00:30:00, '30 min' or '2 h'")
     parts = text.split(":")
     if len(parts) == 3 and all(p.isdigit() for p in parts):
@@ -260,15 +259,15 @@ def _to_seconds(raw: Any, style: str, name: str) -> int:
     if len(parts) == 2 and all(p.isdigit() for p in parts):
         first, second = int(parts[0]), int(parts[1])
         if second >= 60:
-            raise ValueProblem(f"{name}: {text!r} is not a time")
+            raise ValueProblem(f"{text!r} is not a time")
         # mm:ss on a display showing minutes and seconds, else h:mm
         return first * 60 + second if style == "mm:ss" else first * 3600 + second * 60
     quantity = parse_quantity(text)
     if quantity is None or quantity[1] not in ("time", None):
-        raise ValueProblem(f"{name}: {text!r} is not a duration (try '90 min' or 01:30:00)")
+        raise ValueProblem(f"{text!r} is not a duration (try '90 min' or 01:30:00)")
     if quantity[1] is None:
-        raise ValueProblem(f"{name}: a bare number {text!r} is ambiguous for a time; give a unit")
+        raise ValueProblem(f"a bare number {text!r} is ambiguous for a time; give a unit")
     seconds = quantity[0]
     if abs(seconds - round(seconds)) > 1e-6:
-        raise ValueProblem(f"{name}: {text!r} is not a whole number of seconds")
+        raise ValueProblem(f"{text!r} is not a whole number of seconds")
     return round(seconds)

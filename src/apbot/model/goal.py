@@ -47,4 +47,4 @@ def parse_goal(model: ApplianceModel, goal: Mapping[str, Any] | Iterable[str]) -
     problems = check_goal(model, raw)
     if problems:
         raise GoalError(problems)
-    return {name: normalise(model.variables[name], value, name) for name, value in raw.items()}
+    return {name: normalise(model.variables[name], value) for name, value in raw.items()}

@@ -294,11 +294,14 @@ class Step(_Strict):
 
     ``effect`` is one effect for every action of the step, or a map from action to effect.
     ``set`` and ``reset`` are side effects applied by every accepted action of the step.
+    ``on_entry: show`` makes the action that enters the step only show the current value
+    ("press TEMP to see the setting, press again to change it"); by default it also applies.
     """
 
     actions: list[Ident]
     variable: Ident | None = None
     effect: Effect | dict[Ident, Effect] | None = None
+    on_entry: Literal["apply", "show"] = "apply"
     set: dict[Ident, Scalar] = Field(default_factory=dict)
     reset: list[Ident] = Field(default_factory=list)
     note: str = ""
@@ -316,12 +319,15 @@ class Guard(_Strict):
 
     While every condition in ``when`` holds (a value, or a list meaning any of them), only the
     actions in ``only`` are accepted; the others are refused and the display shows ``display``.
+    With ``hide``, the display shows ``display`` for as long as the guard holds (a switched-off
+    appliance is dark), not only when an action is refused.
     """
 
     name: str = ""
     when: dict[Ident, Scalar | list[Scalar]] = Field(min_length=1)
     only: list[Ident]
     display: str = ""
+    hide: bool = False
 
     @field_validator("when", mode="before")
     @classmethod

@@ -263,7 +263,7 @@ def _steps(model: ApplianceModel, domains: Mapping[str, list[Domain]]) -> Iterat
                         if _in_some(value, target_var, [dom]):
                             break
                     else:
-                        normalise(target_var, value, f"set.{target}")
+                        normalise(target_var, value)
                 except ValueProblem as exc:
                     yield Problem((*path, "set", target), str(exc), "action-variable")
         if not changes_something:
@@ -458,14 +458,14 @@ def check_goal(model: ApplianceModel, goal: Mapping[str, Any]) -> list[Problem]:
             continue
         var = model.variables[name]
         try:
-            value = normalise(var, raw, name)
+            value = normalise(var, raw)
         except ValueProblem as exc:
             problems.append(Problem(path, str(exc), "goal"))
             continue
         if var.depends_on is not None and var.depends_on in goal:
             parent = model.variables[var.depends_on]
             try:
-                parent_value = normalise(parent, goal[var.depends_on], var.depends_on)
+                parent_value = normalise(parent, goal[var.depends_on])
             except ValueProblem:
                 continue
             case = (var.cases or {}).get(parent_value)
@@ -474,7 +474,7 @@ def check_goal(model: ApplianceModel, goal: Mapping[str, Any]) -> list[Problem]:
                                         f"{parent_value!r}", "goal"))
             else:
                 try:
-                    normalise(var, value, name, build_domain(var, case))
+                    normalise(var, value, build_domain(var, case))
                 except ValueProblem as exc:
                     problems.append(Problem(path, f"{exc} when {var.depends_on} is "
                                             f"{parent_value!r}", "goal"))

@@ -13,7 +13,9 @@ Feature pointer (kept from the paper)
     step, so a digit typed for the timer never leaks into the clock.
 
 Effects
-    Every value-changing effect (next, prev, toggle, go-to, add, reset) compiles to a table
+    The action that enters a step applies the step's effect too, unless the step says
+    ``on_entry: show``. Every value-changing effect (next, prev, toggle, go-to, add, reset)
+    compiles to a table
     ``new_index = table[current_index]`` per case of the variable; a keypad digit appends to the
     buffer and sets the variable when the buffer parses to one of its values. Side effects
     (``set``, ``reset``) of a step follow its main effect. When a programme changes, settings
@@ -85,6 +87,7 @@ class StepInfo:
     effects: dict[int, tuple[Any, ...]]  # action -> (kind, per-case tables | digit)
     side: tuple[tuple[int, tuple[tuple[int, ...] | None, ...]], ...]  # (var, per-case tables)
     next_step: int  # the next step of the same feature, or -1
+    show_on_entry: bool = False  # the entering action only shows the value
 
 
 @dataclass(frozen=True)
@@ -93,6 +96,7 @@ class GuardInfo:
     allowed: frozenset[int]
     display: str
     name: str
+    hide: bool = False
 
 
 def _index_table(domain: Domain, target: int) -> tuple[int, ...]:
@@ -253,7 +257,7 @@ class CompiledModel:
                 next_step = base + index + 1 if index + 1 < len(feature_steps) else -1
                 steps.append(StepInfo(feature, index, self.var_index[step.variable]
                                       if step.variable else -1, frozenset(action_ids), effects,
-                                      tuple(side), next_step))
+                                      tuple(side), next_step, step.on_entry == "show"))
         return tuple(steps)
 
     def _first_steps(self) -> dict[int, int]:
@@ -295,7 +299,8 @@ class CompiledModel:
                                     if (i := _value_index(domain, o)) is not None)
                 conditions.append((self.var_index[name], indices))
             allowed = frozenset(self.action_index[a] for a in guard.only)
-            guards.append(GuardInfo(tuple(conditions), allowed, guard.display, guard.name))
+            guards.append(GuardInfo(tuple(conditions), allowed, guard.display, guard.name,
+                                    guard.hide))
         return tuple(guards)
 
     # --- running -----------------------------------------------------------------------------
@@ -315,6 +320,13 @@ class CompiledModel:
                 domain = var.domain(values)
                 values[i] = -1 if domain is None else domain.initial
         return State(tuple(values), -1, "")
+
+    def hiding_guard(self, state: State) -> GuardInfo | None:
+        """A guard with ``hide`` that holds now: the display shows only its text."""
+        for guard in self.guards:
+            if guard.hide and all(state.values[v] in ok for v, ok in guard.conditions):
+                return guard
+        return None
 
     def refusal(self, state: State, action: int) -> int | None:
         """Why ``action`` would be refused in ``state`` (guard index or negative code), or None."""
@@ -345,7 +357,7 @@ class CompiledModel:
         step = self.steps[target]
         buffer = state.buffer if target == state.step else ""
         effect = step.effects[action]
-        kind = effect[0]
+        kind = NONE if step.show_on_entry and target != state.step else effect[0]
         new = list(values)
         v = step.variable
         if kind == TABLE:

@@ -117,6 +117,11 @@ class Simulator:
         state = self.state
         focus = compiled.focus(state)
         values: dict[str, Any] = {}
+        hiding = compiled.hiding_guard(state) if compiled.guards else None
+        if hiding is not None:
+            for name in compiled.model.display.indicators:
+                values[name] = compiled.value(state, name)
+            return Observation(hiding.display, values, True, "", None)
         if focus >= 0:
             var = compiled.vars[focus]
             values[var.name] = compiled.value(state, var.name)

@@ -1,0 +1,1 @@
+"""Benchmark suites, runners, metrics and reports."""

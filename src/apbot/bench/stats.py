@@ -1,0 +1,64 @@
+"""What a suite contains: per category counts and which model features the appliances use."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from apbot.bench.suite import CATEGORIES, Suite, load_suite
+from apbot.model.schema import ApplianceModel
+from apbot.sim.compiled import compiled_model
+
+FEATURES = ("keypad", "dial", "hold", "two_control_hold", "dependent_settings", "piecewise",
+            "time_variables", "guards")
+
+
+def appliance_features(model: ApplianceModel) -> dict[str, bool]:
+    """Which parts of the model format an appliance uses.
+
+    ``guards`` counts child-lock and running guards: guards that do not already hold in the
+    initial state (a power-off guard does; a lock or a running cycle is switched on later).
+    """
+    ranges = []
+    for var in model.variables.values():
+        specs = [var, *list((var.cases or {}).values())]
+        ranges.extend(getattr(s, "ranges", None) or [] for s in specs if not isinstance(s, list))
+    compiled = compiled_model(model)
+    start = compiled.initial_state()
+    later_guards = [g for g in compiled.guards
+                    if not all(start.values[v] in ok for v, ok in g.conditions)]
+    return {
+        "keypad": any(c.kind == "key" for c in model.controls),
+        "dial": any(c.kind in ("dial", "knob") for c in model.controls),
+        "hold": any(a.skill == "hold" for a in model.actions.values()),
+        "two_control_hold": any(a.controls for a in model.actions.values()),
+        "dependent_settings": any(v.depends_on for v in model.variables.values()),
+        "piecewise": any(len(r) > 1 for r in ranges),
+        "time_variables": any(v.type == "time" for v in model.variables.values()),
+        "guards": bool(later_guards),
+    }
+
+
+def suite_statistics(suite: Suite | None = None) -> dict[str, Any]:
+    """Counts for ``apbot suite stats`` (and its ``--json``)."""
+    suite = suite or load_suite()
+    categories: dict[str, dict[str, Any]] = {}
+    totals = dict.fromkeys(FEATURES, 0)
+    order = [c for c in CATEGORIES if any(a.category == c for a in suite.appliances)]
+    order += sorted({a.category for a in suite.appliances} - set(order))
+    for name in order:
+        members = [a for a in suite.appliances if a.category == name]
+        tasks = [t for a in members for t in a.tasks]
+        features = dict.fromkeys(FEATURES, 0)
+        for appliance in members:
+            for key, used in appliance_features(appliance.model).items():
+                features[key] += used
+                totals[key] += used
+        categories[name] = {
+            "appliances": len(members),
+            "tasks": len(tasks),
+            "goal_vars_per_task": round(sum(len(t.goal) for t in tasks) / len(tasks), 2)
+            if tasks else 0,
+            "features": features,
+        }
+    return {"appliances": len(suite.appliances), "tasks": len(suite.tasks),
+            "categories": categories, "features": totals}

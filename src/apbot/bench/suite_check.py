@@ -1,0 +1,135 @@
+"""Checks of a suite appliance beyond its model: panel, manual, tasks, and oracle reachability.
+
+Every task must be reachable: the planner's oracle plan, executed on the ground-truth
+simulator, has to reach the task's goal. The stored ``optimal_steps`` must equal the planner's
+answer, so a changed model cannot silently keep stale optimal counts.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from pathlib import Path
+
+from apbot.bench.suite import GOAL_VARIABLES, SuiteAppliance, Task, TaskFile
+from apbot.model.goal import GoalError, parse_goal
+from apbot.model.load import dump_yaml, read_yaml
+from apbot.model.problems import Problem
+from apbot.model.validate import check_model
+from apbot.plan.plan import Unreachable, plan
+from apbot.sim.simulator import Simulator
+
+MANUAL_WORDS = (600, 3000)
+
+
+def check_appliance(appliance: SuiteAppliance, plan_tasks: bool = True) -> list[Problem]:
+    """Every problem with one appliance; an empty list means it is ready for the benchmark."""
+    problems = check_model(appliance.model)
+    if any(p.severity == "error" for p in problems):
+        return problems
+    problems += list(_panel(appliance))
+    problems += list(_manual(appliance))
+    problems += list(_tasks(appliance, plan_tasks))
+    return problems
+
+
+def _panel(appliance: SuiteAppliance) -> Iterator[Problem]:
+    layout = appliance.layout
+    width, height = layout.canvas
+    model_controls = {c.id: c for c in appliance.model.controls}
+    drawn = {c.id: c for c in layout.controls}
+    for cid in model_controls.keys() - drawn.keys():
+        yield Problem(("panel", "controls"), f"control {cid!r} of the model is not drawn",
+                      "panel")
+    for cid in drawn.keys() - model_controls.keys():
+        yield Problem(("panel", "controls"), f"control {cid!r} is drawn but not in the model",
+                      "panel")
+    boxes = [("display", layout.display)] + [(c.id, c.box) for c in layout.controls]
+    for name, (x0, y0, x1, y1) in boxes:
+        if not (0 <= x0 < x1 <= width and 0 <= y0 < y1 <= height):
+            yield Problem(("panel", name), f"box {[x0, y0, x1, y1]} is not inside the "
+                          f"{width}x{height} canvas with positive size", "panel")
+    for i, (name_a, a) in enumerate(boxes):
+        for name_b, b in boxes[i + 1:]:
+            if a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]:
+                yield Problem(("panel", name_b), f"box overlaps {name_a!r}", "panel")
+    for control in layout.controls:
+        model_control = model_controls.get(control.id)
+        if model_control is not None and model_control.label != control.label:
+            yield Problem(("panel", control.id), f"label {control.label!r} differs from the "
+                          f"model's {model_control.label!r}", "panel")
+
+
+def _manual(appliance: SuiteAppliance) -> Iterator[Problem]:
+    words = appliance.manual_words
+    low, high = MANUAL_WORDS
+    if not low <= words <= high:
+        yield Problem(("manual",), f"{words} words; a manual has {low} to {high}", "manual")
+
+
+def _tasks(appliance: SuiteAppliance, plan_tasks: bool) -> Iterator[Problem]:
+    wanted = GOAL_VARIABLES.get(appliance.category)
+    if wanted is None:
+        yield Problem(("model", "appliance", "category"), f"unknown category "
+                      f"{appliance.category!r}; use one of {sorted(GOAL_VARIABLES)}", "suite")
+    if appliance.id != appliance.directory.name:
+        yield Problem(("model", "appliance", "id"), f"id {appliance.id!r} differs from the "
+                      f"directory name {appliance.directory.name!r}", "suite")
+    seen: set[str] = set()
+    for i, task in enumerate(appliance.tasks):
+        path = ("tasks", i)
+        if task.id in seen:
+            yield Problem((*path, "id"), f"task id {task.id!r} repeats", "suite")
+        seen.add(task.id)
+        if wanted is not None and len(task.goal) != wanted:
+            yield Problem((*path, "goal"), f"{len(task.goal)} goal variables; "
+                          f"{appliance.category} tasks have {wanted}", "suite")
+        try:
+            goal = parse_goal(appliance.model, task.goal)
+        except GoalError as exc:
+            for problem in exc.problems:
+                yield Problem((*path, *problem.path), problem.message, "goal")
+            continue
+        if not plan_tasks:
+            continue
+        try:
+            found = plan(appliance.model, None, goal)
+        except Unreachable as exc:
+            yield Problem((*path, "goal"), f"unreachable: {exc.reason}", "oracle")
+            continue
+        simulator = Simulator(appliance.model)
+        for action in found.actions:
+            simulator.step(action.name, action.seconds)
+        if not simulator.satisfies(goal):
+            yield Problem((*path, "goal"), "the oracle plan does not reach the goal", "oracle")
+        if len(found) == 0:
+            yield Problem((*path, "goal"), "the goal already holds in the initial state",
+                          "suite")
+        if task.optimal_steps != len(found):
+            yield Problem((*path, "optimal_steps"), f"stored {task.optimal_steps}, the planner "
+                          f"finds {len(found)}; run `apbot suite fill-optimal`", "oracle")
+
+
+def optimal_steps(appliance: SuiteAppliance, task: Task) -> int:
+    """The oracle's optimal action count for a task (the planner on the ground truth)."""
+    return len(plan(appliance.model, None, task.goal))
+
+
+def fill_optimal(appliance: SuiteAppliance) -> int:
+    """Rewrite ``tasks.yaml`` with the planner's optimal action counts; returns how many changed.
+
+    The file is rewritten from its parsed form, so comments in it are not kept.
+    """
+    path: Path = appliance.directory / "tasks.yaml"
+    data = TaskFile.model_validate(read_yaml(path.read_text(encoding="utf-8"), str(path)))
+    changed = 0
+    tasks = []
+    for task in data.tasks:
+        best = optimal_steps(appliance, task)
+        changed += best != task.optimal_steps
+        tasks.append(task.model_copy(update={"optimal_steps": best}))
+    if changed:
+        payload = {"appliance": data.appliance,
+                   "tasks": [t.model_dump(mode="json") for t in tasks]}
+        path.write_text(dump_yaml(payload), encoding="utf-8")
+        appliance.tasks = tasks
+    return changed

@@ -1,0 +1,344 @@
+"""``apbot`` on the command line: check models, plan, drive a simulator, inspect the suite.
+
+The commands are thin: each calls library functions that the tests use too.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Annotated
+
+import typer
+from rich.console import Console
+from rich.table import Table
+
+from apbot.model.goal import GoalError
+from apbot.model.problems import ModelError, Problem
+from apbot.model.schema import ApplianceModel
+
+app = typer.Typer(add_completion=False, no_args_is_help=True,
+                  help="Operate home appliances by reading their manuals.")
+suite_app = typer.Typer(no_args_is_help=True, help="The bundled benchmark suite.")
+app.add_typer(suite_app, name="suite")
+console = Console(highlight=False)
+errors = Console(stderr=True, highlight=False)
+
+ModelArg = Annotated[str, typer.Argument(
+    help="A model file, an appliance directory, an example name or a bundled appliance id.")]
+
+
+def _fail(message: str, code: int = 1) -> typer.Exit:
+    errors.print(f"[red]error:[/red] {message}")
+    return typer.Exit(code)
+
+
+def resolve_model(spec: str) -> tuple[ApplianceModel, str]:
+    """Load a model from a path, an example name or a bundled suite id."""
+    from apbot.examples import example_dir, example_names
+    from apbot.model.load import load_model
+
+    path = Path(spec)
+    if path.is_dir() and (path / "model.yaml").exists():
+        path = path / "model.yaml"
+    if path.exists():
+        return load_model(path), str(path)
+    if spec in example_names():
+        source = example_dir() / f"{spec}.yaml"
+        return load_model(source), str(source)
+    from apbot.bench.suite import bundled_suite_dir
+
+    bundled = bundled_suite_dir() / spec / "model.yaml"
+    if bundled.exists():
+        return load_model(bundled), str(bundled)
+    examples = ", ".join(example_names())
+    raise FileNotFoundError(f"{spec!r} is not a model file, an example ({examples}) "
+                            "or a bundled appliance id")
+
+
+def _print_problems(problems: list[Problem], source: str) -> None:
+    for problem in problems:
+        colour = "red" if problem.severity == "error" else "yellow"
+        location = f"{source}:{problem.line}" if problem.line else source
+        console.print(f"[{colour}]{problem.severity}[/{colour}] {location}: "
+                      f"[bold]{problem.where}[/bold]: {problem.message} "
+                      f"[dim]\\[{problem.check}][/dim]")
+
+
+@app.command()
+def check(model: ModelArg,
+          goal: Annotated[list[str] | None, typer.Option("--goal", "-g",
+                                                         help="Also check a goal NAME=VALUE.")]
+          = None) -> None:
+    """Validate a model (or a suite appliance directory); exit 1 if it has errors."""
+    from apbot.model.load import line_of, load_model
+    from apbot.model.validate import check_goal, check_model
+
+    path = Path(model)
+    try:
+        if path.is_dir() and (path / "model.yaml").exists() and (path / "tasks.yaml").exists():
+            problems, source = _check_appliance_dir(path), str(path)
+        else:
+            loaded, source = resolve_model(model) if not path.exists() else (
+                load_model(path, check=False), str(path))
+            text = Path(source).read_text(encoding="utf-8") if Path(source).exists() else None
+            problems = [Problem(p.path, p.message, p.check, p.severity, line_of(text, p.path))
+                        for p in check_model(loaded)]
+            if goal:
+                from apbot.model.goal import split_assignments
+
+                problems += check_goal(loaded, split_assignments(goal))
+    except ModelError as exc:
+        _print_problems(exc.problems, exc.source or model)
+        raise _fail(f"{len([p for p in exc.problems if p.severity == 'error'])} error(s)") from None
+    except (FileNotFoundError, GoalError) as exc:
+        raise _fail(str(exc)) from None
+    _print_problems(problems, source)
+    count = len([p for p in problems if p.severity == "error"])
+    if count:
+        raise _fail(f"{count} error(s) in {source}")
+    warnings = len(problems) - count
+    console.print(f"[green]ok[/green] {source}" + (f" ({warnings} warning(s))" if warnings else ""))
+
+
+def _check_appliance_dir(path: Path) -> list[Problem]:
+    from apbot.bench.suite import load_appliance
+    from apbot.bench.suite_check import check_appliance
+
+    return check_appliance(load_appliance(path, check=False))
+
+
+@app.command("plan")
+def plan_command(model: ModelArg,
+                 goal: Annotated[list[str], typer.Option("--goal", "-g",
+                                                         help="NAME=VALUE, repeatable.")],
+                 as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False
+                 ) -> None:
+    """Plan the shortest action sequence from the initial state to a goal."""
+    from apbot.plan.plan import Unreachable, plan
+
+    try:
+        loaded, _ = resolve_model(model)
+        found = plan(loaded, None, goal)
+    except ModelError as exc:
+        _print_problems(exc.problems, exc.source or model)
+        raise _fail("the model has errors") from None
+    except (FileNotFoundError, GoalError) as exc:
+        raise _fail(str(exc)) from None
+    except Unreachable as exc:
+        raise _fail(f"unreachable: {exc.reason}") from None
+    if as_json:
+        console.print_json(json.dumps({
+            "goal": found.goal, "actions": len(found),
+            "macro_actions": [{"feature": m.feature, "actions": [str(a) for a in m.actions],
+                               "expect": m.expect} for m in found.macro_actions]}))
+        return
+    table = Table(title=f"{len(found.macro_actions)} macro actions, {len(found)} actions "
+                        f"({found.seconds * 1000:.1f} ms)")
+    table.add_column("#", justify="right")
+    table.add_column("macro action")
+    table.add_column("actions")
+    table.add_column("expect")
+    for i, macro in enumerate(found.macro_actions, 1):
+        table.add_row(str(i), macro.feature, _compress([str(a) for a in macro.actions]),
+                      ", ".join(f"{k}={v}" for k, v in macro.expect.items()))
+    console.print(table)
+
+
+def _compress(actions: list[str]) -> str:
+    """``[a, a, a, b]`` -> ``a ×3, b``."""
+    parts: list[str] = []
+    for action in actions:
+        if parts and parts[-1].split(" ×")[0] == action:
+            count = int(parts[-1].split(" ×")[1]) + 1 if " ×" in parts[-1] else 2
+            parts[-1] = f"{action} ×{count}"
+        else:
+            parts.append(action)
+    return ", ".join(parts)
+
+
+@app.command()
+def sim(model: ModelArg,
+        script: Annotated[Path | None, typer.Option(help="Read actions from a file, one per line.")]
+        = None) -> None:
+    """Drive a simulator by hand: type an action, see the display. `help` lists actions."""
+    from apbot.sim.simulator import Simulator, UnknownAction
+
+    try:
+        loaded, _ = resolve_model(model)
+    except ModelError as exc:
+        _print_problems(exc.problems, exc.source or model)
+        raise _fail("the model has errors") from None
+    except FileNotFoundError as exc:
+        raise _fail(str(exc)) from None
+    simulator = Simulator(loaded)
+    console.print(f"[bold]{loaded.appliance.name or loaded.appliance.id}[/bold] — "
+                  "type an action (`help`, `state`, `reset`, `quit`)")
+    console.print(f"display: [cyan]{simulator.observe().display!r}[/cyan]")
+    lines = script.read_text(encoding="utf-8").splitlines() if script else None
+    while True:
+        if lines is not None:
+            if not lines:
+                break
+            line = lines.pop(0).strip()
+            console.print(f"> {line}")
+        else:
+            try:
+                line = console.input("> ").strip()
+            except (EOFError, KeyboardInterrupt):
+                break
+        if not line or line.startswith("#"):
+            continue
+        if line in ("quit", "exit"):
+            break
+        if line == "help":
+            console.print(", ".join(simulator.actions))
+            continue
+        if line == "state":
+            console.print(simulator.assignment())
+            continue
+        if line == "reset":
+            console.print(f"display: [cyan]{simulator.reset().display!r}[/cyan]")
+            continue
+        name, _, seconds = line.partition(" ")
+        try:
+            observation = simulator.step(name, float(seconds) if seconds else None)
+        except UnknownAction as exc:
+            console.print(f"[red]{exc}[/red]")
+            continue
+        except ValueError:
+            console.print(f"[red]{seconds!r} is not a number of seconds[/red]")
+            continue
+        status = "" if observation.accepted else f"  [yellow]refused: {observation.reason}[/yellow]"
+        console.print(f"display: [cyan]{observation.display!r}[/cyan]{status}")
+
+
+# --- suite ------------------------------------------------------------------------------------
+
+
+@suite_app.command("list")
+def suite_list() -> None:
+    """Every bundled appliance: category, controls, tasks."""
+    from apbot.bench.suite import load_suite
+
+    suite = load_suite()
+    table = Table(title=f"{len(suite.appliances)} appliances, {len(suite.tasks)} tasks")
+    for column in ("id", "category", "name", "controls", "variables", "tasks", "manual words"):
+        table.add_column(column)
+    for a in suite.appliances:
+        table.add_row(a.id, a.category, a.model.appliance.name, str(len(a.model.controls)),
+                      str(len(a.model.variables)), str(len(a.tasks)), str(a.manual_words))
+    console.print(table)
+
+
+@suite_app.command("show")
+def suite_show(appliance: str,
+               lines: Annotated[int, typer.Option(help="Manual lines to show.")] = 25) -> None:
+    """One appliance: the start of its manual, a model summary, and its tasks."""
+    from apbot.bench.suite import load_suite
+
+    try:
+        item = load_suite().get(appliance)
+    except KeyError as exc:
+        raise _fail(str(exc.args[0])) from None
+    console.rule(f"{item.id} — {item.model.appliance.name} ({item.category})")
+    manual = item.manual.splitlines()
+    console.print("\n".join(manual[:lines]) + (f"\n[dim]… {len(manual) - lines} more lines, "
+                                               f"{item.manual_words} words[/dim]"
+                                               if len(manual) > lines else ""))
+    console.rule("model")
+    from apbot.bench.stats import appliance_features
+
+    model = item.model
+    console.print(f"controls: {len(model.controls)}, actions: {len(model.actions)}, "
+                  f"features: {', '.join(model.features)}")
+    console.print("uses: " + ", ".join(sorted(k for k, v in appliance_features(model).items()
+                                              if v)))
+    table = Table()
+    for column in ("variable", "type", "values"):
+        table.add_column(column)
+    from apbot.model.domain import all_values
+
+    for name, var in model.variables.items():
+        values = all_values(var)
+        shown = ", ".join(str(v) for v in values[:6]) + (f", … ({len(values)})"
+                                                         if len(values) > 6 else "")
+        kind = var.type + (f" (by {var.depends_on})" if var.depends_on else "")
+        table.add_row(name, kind, shown)
+    console.print(table)
+    console.rule("tasks")
+    tasks = Table()
+    for column in ("id", "instruction", "goal", "optimal"):
+        tasks.add_column(column)
+    for task in item.tasks:
+        tasks.add_row(task.id, task.instruction,
+                      ", ".join(f"{k}={v}" for k, v in task.goal.items()),
+                      str(task.optimal_steps))
+    console.print(tasks)
+
+
+@suite_app.command("stats")
+def suite_stats(as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False
+                ) -> None:
+    """Per category: appliances, tasks, goal variables per task, and model features used."""
+    from apbot.bench.stats import FEATURES, suite_statistics
+
+    stats = suite_statistics()
+    if as_json:
+        print(json.dumps(stats, indent=2))
+        return
+    table = Table(title=f"{stats['appliances']} appliances, {stats['tasks']} tasks")
+    table.add_column("category")
+    for column in ("appliances", "tasks", "goal vars/task", *FEATURES):
+        table.add_column(column.replace("_", " "), justify="right")
+    for name, row in stats["categories"].items():
+        table.add_row(name, str(row["appliances"]), str(row["tasks"]),
+                      f"{row['goal_vars_per_task']:g}",
+                      *(str(row["features"][f]) for f in FEATURES))
+    table.add_row("[bold]all[/bold]", str(stats["appliances"]), str(stats["tasks"]), "",
+                  *(f"[bold]{stats['features'][f]}[/bold]" for f in FEATURES))
+    console.print(table)
+
+
+@suite_app.command("check")
+def suite_check(appliances: Annotated[list[str] | None, typer.Argument(
+        help="Appliance ids (default: all).")] = None) -> None:
+    """Check appliances: model, panel, manual, tasks, oracle plans. Exit 1 on any error."""
+    from apbot.bench.suite import load_suite
+    from apbot.bench.suite_check import check_appliance
+
+    suite = load_suite()
+    chosen = [suite.get(a) for a in appliances] if appliances else suite.appliances
+    failed = 0
+    for item in chosen:
+        problems = check_appliance(item)
+        bad = [p for p in problems if p.severity == "error"]
+        failed += bool(bad)
+        _print_problems(problems, item.id)
+        mark = "[red]✗[/red]" if bad else "[green]✓[/green]"
+        console.print(f"{mark} {item.id}: {len(item.tasks)} tasks, {len(bad)} error(s)")
+    if failed:
+        raise _fail(f"{failed} appliance(s) with errors")
+
+
+@suite_app.command("fill-optimal")
+def suite_fill_optimal(appliances: Annotated[list[str] | None, typer.Argument(
+        help="Appliance ids (default: all).")] = None) -> None:
+    """Store the planner's optimal action count in every task (rewrites tasks.yaml)."""
+    from apbot.bench.suite import load_suite
+    from apbot.bench.suite_check import fill_optimal
+
+    suite = load_suite()
+    chosen = [suite.get(a) for a in appliances] if appliances else suite.appliances
+    for item in chosen:
+        changed = fill_optimal(item)
+        console.print(f"{item.id}: {changed} task(s) updated")
+
+
+def main() -> None:
+    """Console entry point."""
+    app()
+
+
+if __name__ == "__main__":
+    main()
