@@ -21,8 +21,8 @@ app = typer.Typer(add_completion=False, no_args_is_help=True,
                   help="Operate home appliances by reading their manuals.")
 suite_app = typer.Typer(no_args_is_help=True, help="The bundled benchmark suite.")
 app.add_typer(suite_app, name="suite")
-console = Console(highlight=False)
-errors = Console(stderr=True, highlight=False)
+console = Console(highlight=False, soft_wrap=True)
+errors = Console(stderr=True, highlight=False, soft_wrap=True)
 
 ModelArg = Annotated[str, typer.Argument(
     help="A model file, an appliance directory, an example name or a bundled appliance id.")]

@@ -111,7 +111,7 @@ _WORD_NUMBERS = {
     "fourteen": 14, "fifteen": 15, "sixteen": 16, "seventeen": 17, "eighteen": 18,
     "nineteen": 19, "twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "sixty": 60,
     "seventy": 70, "eighty": 80, "ninety": 90, "hundred": 100, "thousand": 1000,
-    "a": 1, "an": 1, "single": 1, "couple": 2, "dozen": 12,
+    "a": 1, "an": 1, "single": 1, "couple": 2,
 }
 _FRACTIONS = {"half": 0.5, "quarter": 0.25}
 _NUMBER_TOKEN = r"\d+(?:[.,]\d+)?"
@@ -135,8 +135,8 @@ def words_to_number(text: str) -> float | None:
         elif token in _FRACTIONS:
             # "half an hour" -> 0.5; "one and a half" -> 1.5
             current += _FRACTIONS[token]
-        elif token == "hundred":
-            current = (current or 1) * 100
+        elif token in ("hundred", "dozen"):
+            current = (current or 1) * (100 if token == "hundred" else 12)
         elif token == "thousand":
             total += (current or 1) * 1000
             current = 0

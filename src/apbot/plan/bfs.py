@@ -34,3 +34,31 @@ def shortest_plan_length(compiled: CompiledModel, start: State, goal: Mapping[st
                 raise RuntimeError(f"BFS gave up after {max_states} states")
             queue.append(after)
     return None
+
+
+def random_walk(compiled: CompiledModel, rng: Any, steps: int) -> State:
+    """A state reached by ``steps`` random accepted actions from the initial state."""
+    state = compiled.initial_state()
+    for _ in range(steps):
+        action = rng.randrange(len(compiled.action_names))
+        state = compiled.apply(state, action) or state
+    return state
+
+
+def compare_with_bfs(model: Any, goal: Mapping[str, Any], start: State | None = None,
+                     max_states: int = 200_000) -> tuple[int | None, int | None]:
+    """(planner length, BFS length) for one goal from ``start`` (default: the initial state);
+    None = unreachable."""
+    from apbot.model.goal import parse_goal
+    from apbot.plan.plan import Unreachable, plan
+    from apbot.sim.compiled import compiled_model
+
+    compiled = compiled_model(model)
+    canonical = parse_goal(compiled.model, goal)
+    start = start if start is not None else compiled.initial_state()
+    reference = shortest_plan_length(compiled, start, canonical, max_states)
+    try:
+        found: int | None = len(plan(compiled, start, canonical))
+    except Unreachable:
+        found = None
+    return found, reference

@@ -189,4 +189,7 @@ def _forward_values(compiled: CompiledModel, start: State, v: int) -> list[Any]:
                 seen.add(after)
                 frontier.append(after)
                 values[compiled.value(after, compiled.vars[v].name)] = None
-    return list(values)
+    from apbot.model.domain import all_values
+
+    order = {value: i for i, value in enumerate(all_values(compiled.vars[v].spec))}
+    return sorted(values, key=lambda value: order.get(value, len(order)))

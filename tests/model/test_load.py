@@ -1,0 +1,102 @@
+"""A malformed model gives an error naming the exact path (and line), never a traceback."""
+
+from __future__ import annotations
+
+import pytest
+
+from apbot.model.load import loads_model, model_to_yaml
+from apbot.model.problems import ModelError
+from tests.conftest import model_from
+
+GOOD = """\
+appliance: {id: fan, category: test}
+controls:
+  - {id: power_button, label: POWER}
+  - {id: speed_button, label: SPEED}
+variables:
+  power: {type: discrete, values: ["off", "on"]}
+  speed: {type: numeric, ranges: [[1, 3, 1]], unit: level}
+actions:
+  press_power: {control: power_button}
+  press_speed: {control: speed_button}
+features:
+  power:
+    - {actions: [press_power], variable: power, effect: toggle}
+  set_speed:
+    - {actions: [press_speed], variable: speed, effect: next}
+"""
+
+
+def errors_of(text: str) -> list[tuple[str, str, int | None]]:
+    with pytest.raises(ModelError) as caught:
+        loads_model(text, source="fan.yaml")
+    return [(p.where, p.message, p.line) for p in caught.value.problems
+            if p.severity == "error"]
+
+
+def test_good_model_loads_and_round_trips() -> None:
+    model = loads_model(GOOD)
+    assert loads_model(model_to_yaml(model)) == model
+
+
+def test_bad_yaml_names_the_line() -> None:
+    broken = GOOD.replace("  speed: {type: numeric", "  speed: {type: numeric,, ")
+    [(where, message, line)] = errors_of(broken)
+    assert message.startswith("YAML syntax")
+    assert line == 7
+
+
+def test_unknown_action_in_a_step() -> None:
+    bad = GOOD.replace("- {actions: [press_speed]", "- {actions: [press_sped]")
+    [(where, message, line)] = errors_of(bad)
+    assert where == "features.set_speed[0].actions[0]"
+    assert "unknown action 'press_sped'; did you mean 'press_speed'?" in message
+    assert line == 15
+
+
+def test_overlapping_ranges() -> None:
+    bad = GOOD.replace("ranges: [[1, 3, 1]]", "ranges: [[1, 3, 1], [2, 5, 1]]")
+    [(where, message, line)] = errors_of(bad)
+    assert where == "variables.speed"
+    assert "range 2 starts at 2, inside range 1" in message
+    assert line == 7
+
+
+def test_initial_value_out_of_domain() -> None:
+    bad = GOOD.replace('values: ["off", "on"]}', 'values: ["off", "on"], initial: standby}')
+    [(where, message, _)] = errors_of(bad)
+    assert where == "variables.power"
+    assert "initial value 'standby' is not one of ['off', 'on']" in message
+
+
+def test_unknown_key_suggests_the_right_one() -> None:
+    bad = GOOD.replace("variable: speed, effect: next", "varable: speed, effect: next")
+    problems = errors_of(bad)
+    assert ("features.set_speed[0].varable", "unknown key 'varable'; did you mean 'variable'?",
+            15) in problems
+
+
+def test_bad_effect_lists_the_vocabulary() -> None:
+    bad = GOOD.replace("effect: next}", "effect: up}")
+    [(where, message, _)] = errors_of(bad)
+    assert where == "features.set_speed[0].effect"
+    assert "next, prev, toggle" in message
+
+
+def test_missing_section_and_wrong_variable_type() -> None:
+    problems = errors_of(GOOD.replace("type: numeric", "type: number"))
+    assert problems[0][0] == "variables.speed"
+    assert "`type` must be discrete, numeric or time" in problems[0][1]
+    problems = errors_of("appliance: {id: x, category: y}\ncontrols: []\n")
+    assert {p[0] for p in problems} >= {"controls", "variables", "actions", "features"}
+
+
+def test_a_model_is_a_mapping() -> None:
+    [(where, message, _)] = errors_of("- just\n- a list\n")
+    assert "a model is a mapping" in message
+
+
+def test_warnings_do_not_stop_loading() -> None:
+    model = model_from(GOOD + "  extra:\n    - {actions: [press_power], variable: power}\n",
+                       check=False)
+    assert "extra" in model.features

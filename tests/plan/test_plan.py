@@ -1,0 +1,136 @@
+"""Realistic tasks on the example models: plan, then execute on the simulator."""
+
+from __future__ import annotations
+
+import pytest
+
+from apbot.model.goal import GoalError
+from apbot.plan.bfs import shortest_plan_length
+from apbot.plan.plan import Unreachable, plan
+from apbot.sim.compiled import compiled_model
+from apbot.sim.simulator import Simulator
+from tests.conftest import model_from
+
+
+def execute(model, found) -> Simulator:  # noqa: ANN001
+    sim = Simulator(model)
+    for action in found.actions:
+        observation = sim.step(action.name, action.seconds)
+        assert observation.accepted, (action, observation.reason)
+    return sim
+
+
+def test_washing_machine_six_variables(washer) -> None:  # noqa: ANN001
+    goal = {"power": "on", "programme": "wool", "temperature": "20", "spin_speed": "600 rpm",
+            "finish_in": "5 h", "running": "on"}
+    found = plan(washer, None, goal)
+    features = [m.feature for m in found.macro_actions]
+    assert features[0] == "power" and features[-1] == "start_pause"
+    assert features.index("select_programme") < min(features.index("set_temperature"),
+                                                    features.index("set_spin"))
+    assert len(found) == 15
+    assert execute(washer, found).satisfies(found.goal)
+    spin = next(m for m in found.macro_actions if m.feature == "set_spin")
+    assert spin.expect == {"spin_speed": 600}
+
+
+def test_lock_comes_after_start(washer) -> None:  # noqa: ANN001
+    found = plan(washer, None, ["power=on", "programme=cotton", "running=on", "child_lock=on"])
+    assert [m.feature for m in found.macro_actions][-2:] == ["start_pause", "child_lock"]
+    assert found.actions[-1].seconds == 3
+
+
+def test_keypad_microwave(microwave) -> None:  # noqa: ANN001
+    found = plan(microwave, None, {"cook_time": "3 min 30 s", "power_level": 5, "running": "on"})
+    names = [a.name for a in found.actions]
+    assert names[-1] == "press_start"
+    assert "press_3" in names and "press_5" in names
+    assert len(found) == 7
+    assert execute(microwave, found).satisfies(found.goal)
+
+
+def test_plus_thirty_seconds_beats_typing(microwave) -> None:  # noqa: ANN001
+    found = plan(microwave, None, {"cook_time": "1:30"})
+    assert [a.name for a in found.actions] == ["press_add30"] * 3
+
+
+def test_plans_continue_from_a_half_typed_value(microwave) -> None:  # noqa: ANN001
+    sim = Simulator(microwave)
+    for action in ("press_time_cook", "press_1", "press_3"):
+        sim.step(action)
+    found = plan(microwave, sim.state, {"cook_time": "00:01:30"})
+    assert [a.name for a in found.actions] == ["press_0"]
+
+
+def test_dial_oven_clamps_and_steps(toaster) -> None:  # noqa: ANN001
+    goal = {"function": "bake", "temperature": "200 °C", "timer": "45 min", "convection": "on"}
+    found = plan(toaster, None, goal)
+    compiled = compiled_model(toaster)
+    canonical = found.goal
+    assert len(found) == shortest_plan_length(compiled, compiled.initial_state(), canonical)
+    assert execute(toaster, found).satisfies(canonical)
+    setting = next(m for m in found.macro_actions if m.feature == "set_timer")
+    assert len(setting.actions) == 17  # 10 one-minute detents, then 7 of five minutes
+
+
+def test_programme_dependent_setting_needs_its_programme(toaster) -> None:  # noqa: ANN001
+    found = plan(toaster, None, {"toast_shade": 6})
+    assert found.macro_actions[0].feature == "select_function"
+    assert execute(toaster, found).value("toast_shade") == 6
+
+
+def test_goal_already_holds(washer) -> None:  # noqa: ANN001
+    assert len(plan(washer, None, {"programme": "cotton"})) == 0
+
+
+def test_invalid_goal_is_a_goal_error(washer) -> None:  # noqa: ANN001
+    with pytest.raises(GoalError, match="did you mean 'wool'"):
+        plan(washer, None, {"programme": "wol"})
+    with pytest.raises(GoalError, match="does not exist when programme is 'rinse and spin'"):
+        plan(washer, None, {"programme": "rinse and spin", "temperature": "40"})
+
+
+ONE_WAY = """
+controls: [{id: b, label: B}, {id: c, label: C}]
+variables:
+  level: {type: numeric, ranges: [[0, 5, 1]], initial: 2}
+  other: {type: discrete, values: [p, q]}
+actions: {press_b: {control: b}, press_c: {control: c}}
+features:
+  up: [{actions: [press_b], variable: level, effect: next}]
+  other: [{actions: [press_c], variable: other, effect: toggle, reset: [level]}]
+"""
+
+
+def test_unreachable_value_gets_a_reason() -> None:
+    model = model_from(ONE_WAY.replace("initial: 2", "initial: 2, wrap: false"), check=False)
+    sim = Simulator(model)
+    for _ in range(3):
+        sim.step("press_b")
+    with pytest.raises(Unreachable, match=r"level cannot become 1 from 5: .*reach 2, 3, 4, 5"):
+        plan(model, sim.state, {"level": 1})
+    assert [a.name for a in plan(model, sim.state, {"level": 2}).actions] == ["press_c"]
+
+
+JOINT = """
+controls: [{id: a, label: A}, {id: b, label: B}]
+variables:
+  door: {type: discrete, values: [closed, open]}
+  heat: {type: discrete, values: ["off", "on"]}
+actions: {press_a: {control: a}, press_b: {control: b}}
+features:
+  door: [{actions: [press_a], variable: door, effect: toggle, set: {heat: "off"}}]
+  heat: [{actions: [press_b], variable: heat, effect: toggle, set: {door: closed}}]
+"""
+
+
+def test_jointly_impossible_goal_gets_a_reason() -> None:
+    model = model_from(JOINT, check=False)
+    with pytest.raises(Unreachable, match="hold together"):
+        plan(model, None, {"door": "open", "heat": "on"})
+
+
+def test_budget_is_reported(washer) -> None:  # noqa: ANN001
+    goal = {"power": "on", "programme": "wool", "temperature": "20", "finish_in": "5 h"}
+    with pytest.raises(Unreachable, match="budget"):
+        plan(washer, None, goal, budget=1)

@@ -1,0 +1,162 @@
+"""The semantics every model relies on: feature pointer, effects, guards, keypad, display."""
+
+from __future__ import annotations
+
+import random
+
+from apbot.sim.simulator import Simulator
+from tests.conftest import model_from
+
+CLOCK = """
+controls:
+  - {id: clock_key, label: CLOCK}
+  - {id: up_key, label: UP}
+  - {id: down_key, label: DOWN}
+  - {id: mode_key, label: MODE}
+variables:
+  hour: {type: numeric, ranges: [[0, 23, 1]], initial: 12}
+  minute: {type: numeric, ranges: [[0, 59, 1]], wrap: true}
+  mode: {type: discrete, values: [auto, eco, boost]}
+actions:
+  press_clock: {control: clock_key}
+  press_up: {control: up_key}
+  press_down: {control: down_key}
+  press_mode: {control: mode_key}
+features:
+  set_clock:
+    - {actions: [press_clock]}
+    - {actions: [press_up, press_down], variable: hour, effect: {press_up: next, press_down: prev}}
+    - {actions: [press_clock]}
+    - {actions: [press_up, press_down], variable: minute, effect: {press_up: next, press_down: prev}}
+  mode:
+    - {actions: [press_mode], variable: mode, effect: next, on_entry: show}
+"""
+
+
+def run(sim: Simulator, *actions: str) -> list[str]:
+    return [sim.step(a).display for a in actions]
+
+
+def test_feature_pointer_walks_a_procedure() -> None:
+    sim = Simulator(model_from(CLOCK))
+    assert not sim.step("press_up").accepted  # up belongs to no first step: nothing to adjust
+    run(sim, "press_clock", "press_up", "press_up")
+    assert sim.value("hour") == 14
+    run(sim, "press_clock", "press_down")  # clock again: advance to the minutes
+    assert (sim.value("hour"), sim.value("minute")) == (14, 59)  # minutes wrap
+    assert sim.step("press_up").display == "MINUTE 0"
+
+
+def test_first_press_can_just_show_the_value() -> None:
+    sim = Simulator(model_from(CLOCK))
+    assert sim.step("press_mode").display == "MODE auto"
+    assert sim.step("press_mode").display == "MODE eco"
+    sim.step("press_clock")
+    assert sim.step("press_mode").display == "MODE eco"  # re-entering shows again
+
+
+def test_guards_refuse_with_the_guard_display(washer) -> None:  # noqa: ANN001
+    sim = Simulator(washer)
+    assert sim.observe().display == ""  # dark while off (hide)
+    refused = sim.step("press_temp")
+    assert not refused.accepted and "power off" in refused.reason
+    sim.step("press_power")
+    assert sim.step("press_start").values["running"] == "on"
+    refused = sim.step("press_spin")
+    assert (refused.accepted, refused.display) == (False, "RUNNING")
+    assert sim.step("hold_temp_and_spin").accepted  # the lock is allowed while running
+    refused = sim.step("press_start")
+    assert (refused.accepted, refused.display) == (False, "LOCK")
+
+
+def test_holds_need_their_duration(washer) -> None:  # noqa: ANN001
+    sim = Simulator(washer)
+    sim.step("press_power")
+    short = sim.step("hold_temp_and_spin", seconds=1)
+    assert not short.accepted and "held for 3 s" in short.reason
+    assert sim.step("hold_temp_and_spin", seconds=3.5).accepted
+    assert sim.value("child_lock") == "on"
+
+
+def test_programme_change_restores_its_defaults(washer) -> None:  # noqa: ANN001
+    sim = Simulator(washer)
+    sim.step("press_power")
+    run(sim, "press_temp", "press_temp")
+    assert sim.value("temperature") == "90"
+    sim.step("turn_programme_cw")  # cotton -> eco 40-60
+    assert (sim.value("temperature"), sim.value("spin_speed")) == ("40", 1400)
+    sim.step("turn_programme_ccw")
+    assert sim.value("temperature") == "40"  # cotton's default, not the 90 set before
+    sim.step("turn_programme_ccw")  # wrap back to rinse and spin: no temperature there
+    assert sim.value("programme") == "rinse and spin"
+    assert sim.value("temperature") is None
+    observation = sim.step("press_temp")
+    assert observation.accepted and observation.display == "TEMP --"
+
+
+def test_keypad_digits_shift_in_and_reset_on_leaving(microwave) -> None:  # noqa: ANN001
+    sim = Simulator(microwave)
+    displays = run(sim, "press_time_cook", "press_1", "press_3", "press_0")
+    assert displays == ["COOK 00:00", "COOK 00:01", "COOK 00:13", "COOK 01:30"]
+    run(sim, "press_4", "press_5")  # shift: 0130 -> 1304 -> 3045
+    assert sim.value("cook_time") == "00:30:45"
+    run(sim, "press_power_level", "press_7")  # a fresh buffer for another variable
+    assert (sim.value("power_level"), sim.value("cook_time")) == (7, "00:30:45")
+    run(sim, "press_clock", "press_9", "press_7", "press_5")  # 9:75 is not a time: unchanged
+    assert sim.value("clock") == "12:00:00"
+
+
+def test_keypad_overflow_ignore() -> None:
+    sim = Simulator(model_from("""
+controls:
+  - {id: key_1, kind: key, label: "1"}
+  - {id: key_2, kind: key, label: "2"}
+  - {id: set_key, label: SET}
+variables:
+  grams: {type: numeric, ranges: [[0, 99, 1]], entry: {format: number, max_digits: 2, overflow: ignore}}
+actions:
+  press_set: {control: set_key}
+  press_1: {control: key_1, digit: 1}
+  press_2: {control: key_2, digit: 2}
+features:
+  weight:
+    - {actions: [press_set]}
+    - {actions: [press_1, press_2], variable: grams}
+"""))
+    run(sim, "press_set", "press_1", "press_2", "press_1")
+    assert sim.value("grams") == 12
+
+
+def test_add_snaps_and_starts(microwave) -> None:  # noqa: ANN001
+    sim = Simulator(microwave)
+    observation = sim.step("press_add30")
+    assert observation.display == "COOK 00:30"
+    assert sim.value("running") == "on"  # a side effect of the +30 s key
+    sim.step("press_add30")
+    assert sim.value("cook_time") == "00:01:00"
+    sim.step("press_stop")  # resets cook time and stops
+    assert (sim.value("cook_time"), sim.value("running")) == ("00:00:00", "off")
+
+
+def test_idle_display_and_indicators(microwave) -> None:  # noqa: ANN001
+    sim = Simulator(microwave)
+    observation = sim.observe()
+    assert observation.display == "12:00"
+    assert observation.values == {"clock": "12:00:00", "child_lock": "off"}
+
+
+def test_states_are_values_restorable_and_deterministic(washer) -> None:  # noqa: ANN001
+    rng = random.Random(7)
+    actions = [rng.choice(Simulator(washer).actions) for _ in range(300)]
+    first, second = Simulator(washer), Simulator(washer)
+    states = []
+    for action in actions:
+        first.step(action)
+        second.step(action)
+        states.append(first.state)
+        assert first.state == second.state
+    assert len(set(states)) > 5  # hashable, and the walk went somewhere
+    middle = states[150]
+    display = Simulator(washer).reset(middle).display
+    first.reset(middle)
+    assert first.state == middle and first.observe().display == display

@@ -1,0 +1,74 @@
+"""The command line: exit codes and messages a user (or a script) relies on."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from typer.testing import CliRunner
+
+from apbot.cli import app
+
+runner = CliRunner()
+
+
+def test_check_a_good_model() -> None:
+    result = runner.invoke(app, ["check", "washing_machine"])
+    assert result.exit_code == 0, result.output
+    assert "ok" in result.output
+
+
+def test_check_a_bad_model_names_path_and_line(tmp_path: Path) -> None:
+    from apbot.examples import example_dir
+
+    text = (example_dir() / "washing_machine.yaml").read_text()
+    bad = tmp_path / "bad.yaml"
+    bad.write_text(text.replace("actions: [press_rinse]", "actions: [press_rinser]"))
+    result = runner.invoke(app, ["check", str(bad)])
+    assert result.exit_code == 1
+    assert "features.extra_rinse[0].actions[0]" in result.output
+    assert "did you mean 'press_rinse'" in result.output
+    assert f"{bad}:" in result.output and "Traceback" not in result.output
+
+
+def test_check_broken_yaml(tmp_path: Path) -> None:
+    bad = tmp_path / "broken.yaml"
+    bad.write_text("appliance: {id: x\ncontrols: [\n")
+    result = runner.invoke(app, ["check", str(bad)])
+    assert result.exit_code == 1
+    assert "YAML syntax" in result.output and "Traceback" not in result.output
+
+
+def test_check_a_goal() -> None:
+    result = runner.invoke(app, ["check", "washing_machine", "-g", "programme=wol"])
+    assert result.exit_code == 1
+    assert "did you mean 'wool'" in result.output
+
+
+def test_plan_prints_a_table() -> None:
+    result = runner.invoke(app, ["plan", "washing_machine", "-g", "power=on",
+                                 "-g", "programme=wool", "-g", "running=on"])
+    assert result.exit_code == 0, result.output
+    assert "select_programme" in result.output and "turn_programme_cw ×4" in result.output
+
+
+def test_plan_json_and_unreachable() -> None:
+    result = runner.invoke(app, ["plan", "microwave_keypad", "-g", "clock=9:45", "--json"])
+    assert result.exit_code == 0 and '"press_9"' in result.output
+    result = runner.invoke(app, ["plan", "microwave_keypad", "-g", "power_level=50"])
+    assert result.exit_code == 1 and "50 is not one of its values" in result.output
+
+
+def test_sim_script(tmp_path: Path) -> None:
+    script = tmp_path / "actions.txt"
+    script.write_text("press_power\nturn_programme_cw\npress_temp\nnonsense\n"
+                      "hold_temp_and_spin 1\nstate\n")
+    result = runner.invoke(app, ["sim", "washing_machine", "--script", str(script)])
+    assert result.exit_code == 0, result.output
+    assert "PRG eco 40-60" in result.output
+    assert "unknown action 'nonsense'" in result.output
+    assert "must be held for 3 s" in result.output
+
+
+def test_unknown_model_is_a_clear_error() -> None:
+    result = runner.invoke(app, ["plan", "no_such_thing", "-g", "a=b"])
+    assert result.exit_code == 1 and "not a model file" in result.output
