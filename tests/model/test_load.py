@@ -6,7 +6,7 @@ import pytest
 
 from apbot.model.load import loads_model, model_to_yaml
 from apbot.model.problems import ModelError
-from tests.conftest import model_from
+from tests.helpers import model_from
 
 GOOD = """\
 appliance: {id: fan, category: test}
@@ -41,7 +41,7 @@ def test_good_model_loads_and_round_trips() -> None:
 
 def test_bad_yaml_names_the_line() -> None:
     broken = GOOD.replace("  speed: {type: numeric", "  speed: {type: numeric,, ")
-    [(where, message, line)] = errors_of(broken)
+    [(_where, message, line)] = errors_of(broken)
     assert message.startswith("YAML syntax")
     assert line == 7
 
@@ -92,7 +92,7 @@ def test_missing_section_and_wrong_variable_type() -> None:
 
 
 def test_a_model_is_a_mapping() -> None:
-    [(where, message, _)] = errors_of("- just\n- a list\n")
+    [(_where, message, _)] = errors_of("- just\n- a list\n")
     assert "a model is a mapping" in message
 
 

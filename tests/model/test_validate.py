@@ -6,7 +6,7 @@ import pytest
 
 from apbot.examples import example_names, load_example
 from apbot.model.validate import check_goal, check_model
-from tests.conftest import model_from
+from tests.helpers import model_from
 
 BASE = """
 controls:
@@ -139,5 +139,5 @@ def test_dependent_cases_name_parent_values() -> None:
 
 def test_turn_needs_a_dial() -> None:
     text = BASE.replace("press_a: {control: b1}", "press_a: {control: b1, skill: turn_cw}")
-    check, where, message = only(text)
+    check, where, _message = only(text)
     assert (check, where) == ("control", "actions.press_a.skill")

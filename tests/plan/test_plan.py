@@ -5,14 +5,15 @@ from __future__ import annotations
 import pytest
 
 from apbot.model.goal import GoalError
+from apbot.model.schema import ApplianceModel
 from apbot.plan.bfs import shortest_plan_length
-from apbot.plan.plan import Unreachable, plan
+from apbot.plan.plan import Plan, Unreachable, plan
 from apbot.sim.compiled import compiled_model
 from apbot.sim.simulator import Simulator
-from tests.conftest import model_from
+from tests.helpers import model_from
 
 
-def execute(model, found) -> Simulator:  # noqa: ANN001
+def execute(model: ApplianceModel, found: Plan) -> Simulator:
     sim = Simulator(model)
     for action in found.actions:
         observation = sim.step(action.name, action.seconds)
@@ -20,7 +21,7 @@ def execute(model, found) -> Simulator:  # noqa: ANN001
     return sim
 
 
-def test_washing_machine_six_variables(washer) -> None:  # noqa: ANN001
+def test_washing_machine_six_variables(washer: ApplianceModel) -> None:
     goal = {"power": "on", "programme": "wool", "temperature": "20", "spin_speed": "600 rpm",
             "finish_in": "5 h", "running": "on"}
     found = plan(washer, None, goal)
@@ -34,13 +35,13 @@ def test_washing_machine_six_variables(washer) -> None:  # noqa: ANN001
     assert spin.expect == {"spin_speed": 600}
 
 
-def test_lock_comes_after_start(washer) -> None:  # noqa: ANN001
+def test_lock_comes_after_start(washer: ApplianceModel) -> None:
     found = plan(washer, None, ["power=on", "programme=cotton", "running=on", "child_lock=on"])
     assert [m.feature for m in found.macro_actions][-2:] == ["start_pause", "child_lock"]
     assert found.actions[-1].seconds == 3
 
 
-def test_keypad_microwave(microwave) -> None:  # noqa: ANN001
+def test_keypad_microwave(microwave: ApplianceModel) -> None:
     found = plan(microwave, None, {"cook_time": "3 min 30 s", "power_level": 5, "running": "on"})
     names = [a.name for a in found.actions]
     assert names[-1] == "press_start"
@@ -49,12 +50,12 @@ def test_keypad_microwave(microwave) -> None:  # noqa: ANN001
     assert execute(microwave, found).satisfies(found.goal)
 
 
-def test_plus_thirty_seconds_beats_typing(microwave) -> None:  # noqa: ANN001
+def test_plus_thirty_seconds_beats_typing(microwave: ApplianceModel) -> None:
     found = plan(microwave, None, {"cook_time": "1:30"})
     assert [a.name for a in found.actions] == ["press_add30"] * 3
 
 
-def test_plans_continue_from_a_half_typed_value(microwave) -> None:  # noqa: ANN001
+def test_plans_continue_from_a_half_typed_value(microwave: ApplianceModel) -> None:
     sim = Simulator(microwave)
     for action in ("press_time_cook", "press_1", "press_3"):
         sim.step(action)
@@ -62,7 +63,7 @@ def test_plans_continue_from_a_half_typed_value(microwave) -> None:  # noqa: ANN
     assert [a.name for a in found.actions] == ["press_0"]
 
 
-def test_dial_oven_clamps_and_steps(toaster) -> None:  # noqa: ANN001
+def test_dial_oven_clamps_and_steps(toaster: ApplianceModel) -> None:
     goal = {"function": "bake", "temperature": "200 °C", "timer": "45 min", "convection": "on"}
     found = plan(toaster, None, goal)
     compiled = compiled_model(toaster)
@@ -73,17 +74,17 @@ def test_dial_oven_clamps_and_steps(toaster) -> None:  # noqa: ANN001
     assert len(setting.actions) == 17  # 10 one-minute detents, then 7 of five minutes
 
 
-def test_programme_dependent_setting_needs_its_programme(toaster) -> None:  # noqa: ANN001
+def test_programme_dependent_setting_needs_its_programme(toaster: ApplianceModel) -> None:
     found = plan(toaster, None, {"toast_shade": 6})
     assert found.macro_actions[0].feature == "select_function"
     assert execute(toaster, found).value("toast_shade") == 6
 
 
-def test_goal_already_holds(washer) -> None:  # noqa: ANN001
+def test_goal_already_holds(washer: ApplianceModel) -> None:
     assert len(plan(washer, None, {"programme": "cotton"})) == 0
 
 
-def test_invalid_goal_is_a_goal_error(washer) -> None:  # noqa: ANN001
+def test_invalid_goal_is_a_goal_error(washer: ApplianceModel) -> None:
     with pytest.raises(GoalError, match="did you mean 'wool'"):
         plan(washer, None, {"programme": "wol"})
     with pytest.raises(GoalError, match="does not exist when programme is 'rinse and spin'"):
@@ -130,7 +131,7 @@ def test_jointly_impossible_goal_gets_a_reason() -> None:
         plan(model, None, {"door": "open", "heat": "on"})
 
 
-def test_budget_is_reported(washer) -> None:  # noqa: ANN001
+def test_budget_is_reported(washer: ApplianceModel) -> None:
     goal = {"power": "on", "programme": "wool", "temperature": "20", "finish_in": "5 h"}
     with pytest.raises(Unreachable, match="budget"):
         plan(washer, None, goal, budget=1)

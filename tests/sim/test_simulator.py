@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import random
 
+from apbot.model.schema import ApplianceModel
 from apbot.sim.simulator import Simulator
-from tests.conftest import model_from
+from tests.helpers import model_from
 
 CLOCK = """
 controls:
@@ -25,9 +26,13 @@ actions:
 features:
   set_clock:
     - {actions: [press_clock]}
-    - {actions: [press_up, press_down], variable: hour, effect: {press_up: next, press_down: prev}}
+    - actions: [press_up, press_down]
+      variable: hour
+      effect: {press_up: next, press_down: prev}
     - {actions: [press_clock]}
-    - {actions: [press_up, press_down], variable: minute, effect: {press_up: next, press_down: prev}}
+    - actions: [press_up, press_down]
+      variable: minute
+      effect: {press_up: next, press_down: prev}
   mode:
     - {actions: [press_mode], variable: mode, effect: next, on_entry: show}
 """
@@ -55,7 +60,7 @@ def test_first_press_can_just_show_the_value() -> None:
     assert sim.step("press_mode").display == "MODE eco"  # re-entering shows again
 
 
-def test_guards_refuse_with_the_guard_display(washer) -> None:  # noqa: ANN001
+def test_guards_refuse_with_the_guard_display(washer: ApplianceModel) -> None:
     sim = Simulator(washer)
     assert sim.observe().display == ""  # dark while off (hide)
     refused = sim.step("press_temp")
@@ -69,7 +74,7 @@ def test_guards_refuse_with_the_guard_display(washer) -> None:  # noqa: ANN001
     assert (refused.accepted, refused.display) == (False, "LOCK")
 
 
-def test_holds_need_their_duration(washer) -> None:  # noqa: ANN001
+def test_holds_need_their_duration(washer: ApplianceModel) -> None:
     sim = Simulator(washer)
     sim.step("press_power")
     short = sim.step("hold_temp_and_spin", seconds=1)
@@ -78,7 +83,7 @@ def test_holds_need_their_duration(washer) -> None:  # noqa: ANN001
     assert sim.value("child_lock") == "on"
 
 
-def test_programme_change_restores_its_defaults(washer) -> None:  # noqa: ANN001
+def test_programme_change_restores_its_defaults(washer: ApplianceModel) -> None:
     sim = Simulator(washer)
     sim.step("press_power")
     run(sim, "press_temp", "press_temp")
@@ -94,7 +99,7 @@ def test_programme_change_restores_its_defaults(washer) -> None:  # noqa: ANN001
     assert observation.accepted and observation.display == "TEMP --"
 
 
-def test_keypad_digits_shift_in_and_reset_on_leaving(microwave) -> None:  # noqa: ANN001
+def test_keypad_digits_shift_in_and_reset_on_leaving(microwave: ApplianceModel) -> None:
     sim = Simulator(microwave)
     displays = run(sim, "press_time_cook", "press_1", "press_3", "press_0")
     assert displays == ["COOK 00:00", "COOK 00:01", "COOK 00:13", "COOK 01:30"]
@@ -113,7 +118,10 @@ controls:
   - {id: key_2, kind: key, label: "2"}
   - {id: set_key, label: SET}
 variables:
-  grams: {type: numeric, ranges: [[0, 99, 1]], entry: {format: number, max_digits: 2, overflow: ignore}}
+  grams:
+    type: numeric
+    ranges: [[0, 99, 1]]
+    entry: {format: number, max_digits: 2, overflow: ignore}
 actions:
   press_set: {control: set_key}
   press_1: {control: key_1, digit: 1}
@@ -127,7 +135,7 @@ features:
     assert sim.value("grams") == 12
 
 
-def test_add_snaps_and_starts(microwave) -> None:  # noqa: ANN001
+def test_add_snaps_and_starts(microwave: ApplianceModel) -> None:
     sim = Simulator(microwave)
     observation = sim.step("press_add30")
     assert observation.display == "COOK 00:30"
@@ -138,14 +146,14 @@ def test_add_snaps_and_starts(microwave) -> None:  # noqa: ANN001
     assert (sim.value("cook_time"), sim.value("running")) == ("00:00:00", "off")
 
 
-def test_idle_display_and_indicators(microwave) -> None:  # noqa: ANN001
+def test_idle_display_and_indicators(microwave: ApplianceModel) -> None:
     sim = Simulator(microwave)
     observation = sim.observe()
     assert observation.display == "12:00"
     assert observation.values == {"clock": "12:00:00", "child_lock": "off"}
 
 
-def test_states_are_values_restorable_and_deterministic(washer) -> None:  # noqa: ANN001
+def test_states_are_values_restorable_and_deterministic(washer: ApplianceModel) -> None:
     rng = random.Random(7)
     actions = [rng.choice(Simulator(washer).actions) for _ in range(300)]
     first, second = Simulator(washer), Simulator(washer)
