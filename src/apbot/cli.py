@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 from rich.console import Console
@@ -16,6 +16,9 @@ from rich.table import Table
 from apbot.model.goal import GoalError
 from apbot.model.problems import ModelError, Problem
 from apbot.model.schema import ApplianceModel
+
+if TYPE_CHECKING:
+    from apbot.bench.suite import SuiteAppliance
 
 app = typer.Typer(add_completion=False, no_args_is_help=True,
                   help="Operate home appliances by reading their manuals.")
@@ -99,6 +102,21 @@ def check(model: ModelArg,
         raise _fail(f"{count} error(s) in {source}")
     warnings = len(problems) - count
     console.print(f"[green]ok[/green] {source}" + (f" ({warnings} warning(s))" if warnings else ""))
+
+
+def _chosen(appliances: list[str] | None) -> list[SuiteAppliance]:
+    """The named bundled appliances (loading only those), or the whole suite."""
+    from apbot.bench.suite import bundled_suite_dir, load_appliance, load_suite
+
+    if not appliances:
+        return load_suite().appliances
+    chosen = []
+    for name in appliances:
+        directory = bundled_suite_dir() / name
+        if not (directory / "model.yaml").exists():
+            load_suite().get(name)  # raises with a did-you-mean
+        chosen.append(load_appliance(directory))
+    return chosen
 
 
 def _check_appliance_dir(path: Path) -> list[Problem]:
@@ -235,10 +253,8 @@ def suite_list() -> None:
 def suite_show(appliance: str,
                lines: Annotated[int, typer.Option(help="Manual lines to show.")] = 25) -> None:
     """One appliance: the start of its manual, a model summary, and its tasks."""
-    from apbot.bench.suite import load_suite
-
     try:
-        item = load_suite().get(appliance)
+        [item] = _chosen([appliance])
     except KeyError as exc:
         raise _fail(str(exc.args[0])) from None
     console.rule(f"{item.id} — {item.model.appliance.name} ({item.category})")
@@ -304,11 +320,12 @@ def suite_stats(as_json: Annotated[bool, typer.Option("--json", help="Print JSON
 def suite_check(appliances: Annotated[list[str] | None, typer.Argument(
         help="Appliance ids (default: all).")] = None) -> None:
     """Check appliances: model, panel, manual, tasks, oracle plans. Exit 1 on any error."""
-    from apbot.bench.suite import load_suite
     from apbot.bench.suite_check import check_appliance
 
-    suite = load_suite()
-    chosen = [suite.get(a) for a in appliances] if appliances else suite.appliances
+    try:
+        chosen = _chosen(appliances)
+    except KeyError as exc:
+        raise _fail(str(exc.args[0])) from None
     failed = 0
     for item in chosen:
         problems = check_appliance(item)
@@ -325,11 +342,12 @@ def suite_check(appliances: Annotated[list[str] | None, typer.Argument(
 def suite_fill_optimal(appliances: Annotated[list[str] | None, typer.Argument(
         help="Appliance ids (default: all).")] = None) -> None:
     """Store the planner's optimal action count in every task (rewrites tasks.yaml)."""
-    from apbot.bench.suite import load_suite
     from apbot.bench.suite_check import fill_optimal
 
-    suite = load_suite()
-    chosen = [suite.get(a) for a in appliances] if appliances else suite.appliances
+    try:
+        chosen = _chosen(appliances)
+    except KeyError as exc:
+        raise _fail(str(exc.args[0])) from None
     for item in chosen:
         changed = fill_optimal(item)
         console.print(f"{item.id}: {changed} task(s) updated")
