@@ -30,14 +30,14 @@ def test_the_gymnasium_checker_passes_on_every_id() -> None:
 @pytest.mark.parametrize("env_id", ENV_IDS[:: max(1, len(ENV_IDS) // 9)])
 def test_oracle_actions_terminate_within_the_budget(env_id: str) -> None:
     env = gym.make(env_id)
-    display, info = env.reset(seed=3)
+    _display, info = env.reset(seed=3)
     appliance = env.unwrapped.appliance
     task = next(t for t in appliance.tasks if t.id == info["task"])
     found = plan(appliance.model, None, task.goal)
     terminated = truncated = False
     steps = 0
     for action in found.actions:
-        display, reward, terminated, truncated, info = env.step(info["actions"].index(action.name))
+        _, reward, terminated, truncated, info = env.step(info["actions"].index(action.name))
         steps += 1
         assert info["accepted"], info["reason"]
     assert terminated and reward == 1.0 and not truncated

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import string
 from functools import cache
-from typing import Any
+from typing import Any, ClassVar
 
 import gymnasium as gym
 from gymnasium import spaces
@@ -51,7 +51,7 @@ class ApplianceEnv(gym.Env[str, int]):
     the environment's seeded random generator.
     """
 
-    metadata = {"render_modes": ["ansi"], "render_fps": 4}
+    metadata: ClassVar[dict[str, Any]] = {"render_modes": ["ansi"], "render_fps": 4}
 
     def __init__(self, appliance_id: str, render_mode: str | None = None) -> None:
         self.appliance = _appliance(appliance_id)
