@@ -338,6 +338,47 @@ def suite_check(appliances: Annotated[list[str] | None, typer.Argument(
         raise _fail(f"{failed} appliance(s) with errors")
 
 
+@suite_app.command("oracle")
+def suite_oracle(appliances: Annotated[list[str] | None, typer.Argument(
+        help="Appliance ids (default: all).")] = None,
+                 as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False
+                 ) -> None:
+    """Run the oracle (planner on the ground truth, executed on the simulator) on every task."""
+    from apbot.bench.oracle import run_task, summarise
+    from apbot.bench.suite import Suite
+
+    try:
+        chosen = _chosen(appliances)
+    except KeyError as exc:
+        raise _fail(str(exc.args[0])) from None
+    suite = Suite("bundled", Path("."), chosen)
+    results = []
+    with console.status("planning and simulating…"):
+        for appliance, task in suite.tasks:
+            results.append(run_task(appliance, task))
+    summary = summarise(results)
+    failures = [r for r in results if not r.success]
+    if as_json:
+        print(json.dumps({"summary": summary,
+                          "failures": [r.__dict__ for r in failures]}, indent=2))
+    else:
+        table = Table(title=f"Oracle on {len(results)} tasks of {len(chosen)} appliances")
+        for column in ("category", "tasks", "success", "actions", "macro actions",
+                       "median plan ms", "worst plan ms"):
+            table.add_column(column, justify="right" if column != "category" else "left")
+        for name, row in summary.items():
+            style = "bold" if name == "all" else ""
+            table.add_row(name, str(row["tasks"]), f"{row['success_rate']:.2f}",
+                          f"{row['mean_actions']:.1f}", f"{row['mean_macro_actions']:.1f}",
+                          f"{row['median_planning_ms']:.1f}", f"{row['worst_planning_ms']:.0f}",
+                          style=style)
+        console.print(table)
+        for failure in failures:
+            console.print(f"[red]✗[/red] {failure.appliance} {failure.task}: {failure.error}")
+    if failures:
+        raise typer.Exit(1)
+
+
 @suite_app.command("fill-optimal")
 def suite_fill_optimal(appliances: Annotated[list[str] | None, typer.Argument(
         help="Appliance ids (default: all).")] = None) -> None:
