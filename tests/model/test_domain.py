@@ -64,3 +64,28 @@ def test_wrap_and_clamp() -> None:
     assert [domain.next_index(2), domain.prev_index(0)] == [2, 0]
     wrapping = build_domain(numeric(ranges=[[0, 20, 10]], wrap=True))
     assert [wrapping.next_index(2), wrapping.prev_index(0)] == [0, 2]
+
+
+def test_adding_to_a_wrapping_clock_counts_round() -> None:
+    from apbot.model.schema import TimeVariable
+
+    clock = build_domain(TimeVariable.model_validate(
+        {"type": "time", "wrap": True, "ranges": [["00:00:00", "23:59:00", 60]]}))
+    assert clock.values[clock.snap_index(23.5 * 3600 + 3600)] == "00:30:00"
+    assert clock.values[clock.snap_index(-60)] == "23:59:00"
+    uneven = build_domain(numeric(ranges=[[0, 10, 5], [10, 30, 10]], wrap=True))
+    assert uneven.values[uneven.snap_index(35)] == 0
+    clamped = build_domain(numeric(ranges=[[0, 10, 5]]))
+    assert clamped.values[clamped.snap_index(15)] == 10
+
+
+def test_values_in_the_variables_own_unit() -> None:
+    loaf = numeric(ranges=[[1.5, 2.5, 0.5]], unit="lb")
+    assert normalise(loaf, "2.5 lb") == 2.5
+    assert normalise(loaf, "2.5 pounds") == 2.5
+    cups = numeric(ranges=[[1, 10, 1]], unit="cups")
+    assert normalise(cups, "3 cups") == 3
+    fahrenheit = numeric(ranges=[[150, 450, 25]], unit="°F")
+    assert normalise(fahrenheit, "350 °F") == 350
+    with pytest.raises(ValueProblem):
+        normalise(fahrenheit, "180 °C")  # never silently converted

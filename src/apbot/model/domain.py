@@ -71,16 +71,25 @@ class Domain:
     def snap_index(self, magnitude: float) -> int:
         """The index reached by adding to a number: the next value at or above ``magnitude``.
 
-        Past the top it wraps to the first value or clamps to the last; below the bottom it
-        clamps to the first (or wraps to the last).
+        Past either end a clamping variable stops at the end. A wrapping variable with evenly
+        spaced values counts round like a clock (23:30 + 1 h = 00:30); with uneven spacing it
+        wraps to the other end.
         """
         assert self.magnitudes is not None
-        if magnitude < self.magnitudes[0] - 1e-9:
-            return len(self.values) - 1 if self.wrap else 0
-        i = bisect_left(self.magnitudes, magnitude - 1e-9)
-        if i < len(self.values):
-            return i
-        return 0 if self.wrap else len(self.values) - 1
+        mags = self.magnitudes
+        outside = magnitude > mags[-1] + 1e-9 or magnitude < mags[0] - 1e-9
+        if self.wrap and outside and len(mags) > 1:
+            steps = {round(b - a, 9) for a, b in zip(mags, mags[1:], strict=False)}
+            if len(steps) == 1:
+                period = mags[-1] - mags[0] + steps.pop()
+                magnitude = mags[0] + (magnitude - mags[0]) % period
+                outside = False
+        if not outside:
+            i = bisect_left(mags, magnitude - 1e-9)
+            return i if i < len(mags) else (0 if self.wrap else len(mags) - 1)
+        if magnitude < mags[0]:
+            return len(mags) - 1 if self.wrap else 0
+        return 0 if self.wrap else len(mags) - 1
 
 
 def _ordered(values: list[float], what: str) -> None:
@@ -231,7 +240,14 @@ def _to_number(raw: Any, unit: str) -> int | float:
         raise ValueProblem(f"expected a number, got {raw!r}")
     if isinstance(raw, int | float):
         return tidy_number(raw)
-    quantity = parse_quantity(str(raw))
+    text = str(raw).strip()
+    if unit and text.casefold().endswith(unit.casefold()):
+        # the variable's own unit, whatever it is ("2.5 lb", "3 cups", "1200 W")
+        bare = text[: len(text) - len(unit)].strip()
+        number = parse_quantity(bare)
+        if number is not None and number[1] is None:
+            return tidy_number(round(number[0], 6))
+    quantity = parse_quantity(text)
     if quantity is None:
         raise ValueProblem(f"{raw!r} is not a number"
                            + (f" of {unit}" if unit else ""))

@@ -164,11 +164,14 @@ _units("time", 60, "min", "mins", "minute", "minutes", "m")
 _units("time", 3600, "h", "hr", "hrs", "hour", "hours")
 _units("mass", 1, "g", "gram", "grams", "gr")
 _units("mass", 1000, "kg", "kilo", "kilos", "kilogram", "kilograms")
+_units("mass", 453.59237, "lb", "lbs", "pound", "pounds")
+_units("mass", 28.349523125, "oz", "ounce", "ounces")
 _units("volume", 1, "ml", "millilitre", "millilitres", "milliliter", "milliliters")
 _units("volume", 1000, "l", "litre", "litres", "liter", "liters")
 _units("power", 1, "w", "watt", "watts")
 _units("power", 1000, "kw", "kilowatt", "kilowatts")
 _units("temperature", 1, "°c", "c", "°", "deg", "degree", "degrees", "celsius", "degc")
+_units("fahrenheit", 1, "°f", "f", "fahrenheit", "degf")  # affine to °C: never converted
 _units("ratio", 1, "%", "percent", "pct", "per cent")
 _units("speed", 1, "rpm")
 _units("count", 1, "cup", "cups", "slice", "slices", "piece", "pieces", "serving", "servings")
@@ -186,7 +189,7 @@ def unit_of(text: str) -> tuple[str, float] | None:
 
 def _split_quantities(text: str) -> list[tuple[float, str]] | None:
     """Split "1 h 30 min", "2hrs", "half an hour", "fifty percent" into (number, unit) pairs."""
-    cleaned = text.strip().lower().replace("°c", " °c").replace("%", " %")
+    cleaned = text.strip().lower().replace("°c", " °c").replace("°f", " °f").replace("%", " %")
     cleaned = re.sub(r"(\d)([a-z°])", r"\1 \2", cleaned)
     tokens = [t for t in re.split(r"[\s,]+", cleaned) if t]
     pairs: list[tuple[float, str]] = []
