@@ -18,7 +18,7 @@ from apbot.model.problems import ModelError, Problem
 from apbot.model.schema import ApplianceModel
 
 if TYPE_CHECKING:
-    from apbot.bench.suite import SuiteAppliance
+    from apbot.bench.suite import Suite, SuiteAppliance
 
 app = typer.Typer(add_completion=False, no_args_is_help=True,
                   help="Operate home appliances by reading their manuals.")
@@ -106,17 +106,32 @@ def check(model: ModelArg,
 
 def _chosen(appliances: list[str] | None) -> list[SuiteAppliance]:
     """The named bundled appliances (loading only those), or the whole suite."""
-    from apbot.bench.suite import bundled_suite_dir, load_appliance, load_suite
+    from apbot.bench.suite import bundled_suite_dir, load_appliance
 
     if not appliances:
-        return load_suite().appliances
+        return _suite().appliances
     chosen = []
     for name in appliances:
         directory = bundled_suite_dir() / name
-        if not (directory / "model.yaml").exists():
-            load_suite().get(name)  # raises with a did-you-mean
-        chosen.append(load_appliance(directory))
+        if not directory.is_dir():
+            _suite().get(name)  # raises KeyError with a did-you-mean
+        try:
+            chosen.append(load_appliance(directory))
+        except ModelError as exc:
+            _print_problems(exc.problems, exc.source or name)
+            raise _fail(f"{name} cannot be loaded") from None
     return chosen
+
+
+def _suite() -> Suite:
+    """The bundled suite, or a clear error naming the broken appliance files."""
+    from apbot.bench.suite import load_suite
+
+    try:
+        return load_suite()
+    except ModelError as exc:
+        _print_problems(exc.problems, exc.source or "suite")
+        raise _fail("the bundled suite cannot be loaded") from None
 
 
 def _check_appliance_dir(path: Path) -> list[Problem]:
@@ -237,9 +252,7 @@ def sim(model: ModelArg,
 @suite_app.command("list")
 def suite_list() -> None:
     """Every bundled appliance: category, controls, tasks."""
-    from apbot.bench.suite import load_suite
-
-    suite = load_suite()
+    suite = _suite()
     table = Table(title=f"{len(suite.appliances)} appliances, {len(suite.tasks)} tasks")
     for column in ("id", "category", "name", "controls", "variables", "tasks", "manual words"):
         table.add_column(column)
@@ -299,7 +312,7 @@ def suite_stats(as_json: Annotated[bool, typer.Option("--json", help="Print JSON
     """Per category: appliances, tasks, goal variables per task, and model features used."""
     from apbot.bench.stats import FEATURES, suite_statistics
 
-    stats = suite_statistics()
+    stats = suite_statistics(_suite())
     if as_json:
         print(json.dumps(stats, indent=2))
         return

@@ -132,8 +132,13 @@ def load_appliance(directory: Path, check: bool = False) -> SuiteAppliance:
     """Load one appliance directory; ``check`` also runs the model's semantic checks."""
     manual_path = next((directory / name for name in ("manual.md", "manual.txt")
                         if (directory / name).exists()), None)
+    missing = [name for name in ("model.yaml", "panel.yaml", "tasks.yaml")
+               if not (directory / name).exists()]
     if manual_path is None:
-        raise ModelError([Problem((), "no manual.md or manual.txt", "suite")], str(directory))
+        missing.insert(0, "manual.md (or manual.txt)")
+    if missing:
+        raise ModelError([Problem((), f"missing {name}", "suite") for name in missing],
+                         str(directory))
     model_path = directory / "model.yaml"
     text = model_path.read_text(encoding="utf-8")
     model = parse_model(read_yaml(text, str(model_path)), str(model_path), text, check=check)

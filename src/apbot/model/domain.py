@@ -79,7 +79,7 @@ class Domain:
         mags = self.magnitudes
         outside = magnitude > mags[-1] + 1e-9 or magnitude < mags[0] - 1e-9
         if self.wrap and outside and len(mags) > 1:
-            steps = {round(b - a, 9) for a, b in zip(mags, mags[1:], strict=False)}
+            steps = {round(b - a, 9) for a, b in itertools.pairwise(mags)}
             if len(steps) == 1:
                 period = mags[-1] - mags[0] + steps.pop()
                 magnitude = mags[0] + (magnitude - mags[0]) % period
@@ -90,12 +90,6 @@ class Domain:
         if magnitude < mags[0]:
             return len(mags) - 1 if self.wrap else 0
         return 0 if self.wrap else len(mags) - 1
-
-
-def _ordered(values: list[float], what: str) -> None:
-    for a, b in itertools.pairwise(values):
-        if b <= a:
-            raise DomainError(f"{what} must increase; {b:g} follows {a:g}")
 
 
 def _check_ranges(ranges: list[tuple[float, float, float]], show: Any) -> None:
