@@ -105,7 +105,10 @@ def check(model: ModelArg,
 
 
 def _chosen(appliances: list[str] | None) -> list[SuiteAppliance]:
-    """The named bundled appliances (loading only those), or the whole suite."""
+    """The named bundled appliances (loading only those), or the whole suite.
+
+    Exits with a clear message for an unknown id or a broken appliance directory.
+    """
     from apbot.bench.suite import bundled_suite_dir, load_appliance
 
     if not appliances:
@@ -114,7 +117,10 @@ def _chosen(appliances: list[str] | None) -> list[SuiteAppliance]:
     for name in appliances:
         directory = bundled_suite_dir() / name
         if not directory.is_dir():
-            _suite().get(name)  # raises KeyError with a did-you-mean
+            try:
+                _suite().get(name)
+            except KeyError as exc:  # names the closest id
+                raise _fail(str(exc.args[0])) from None
         try:
             chosen.append(load_appliance(directory))
         except ModelError as exc:
@@ -266,10 +272,7 @@ def suite_list() -> None:
 def suite_show(appliance: str,
                lines: Annotated[int, typer.Option(help="Manual lines to show.")] = 25) -> None:
     """One appliance: the start of its manual, a model summary, and its tasks."""
-    try:
-        [item] = _chosen([appliance])
-    except KeyError as exc:
-        raise _fail(str(exc.args[0])) from None
+    [item] = _chosen([appliance])
     console.rule(f"{item.id} — {item.model.appliance.name} ({item.category})")
     manual = item.manual.splitlines()
     console.print("\n".join(manual[:lines]) + (f"\n[dim]… {len(manual) - lines} more lines, "
@@ -335,10 +338,7 @@ def suite_check(appliances: Annotated[list[str] | None, typer.Argument(
     """Check appliances: model, panel, manual, tasks, oracle plans. Exit 1 on any error."""
     from apbot.bench.suite_check import check_appliance
 
-    try:
-        chosen = _chosen(appliances)
-    except KeyError as exc:
-        raise _fail(str(exc.args[0])) from None
+    chosen = _chosen(appliances)
     failed = 0
     for item in chosen:
         problems = check_appliance(item)
@@ -360,10 +360,7 @@ def suite_oracle(appliances: Annotated[list[str] | None, typer.Argument(
     from apbot.bench.oracle import run_task, summarise
     from apbot.bench.suite import Suite
 
-    try:
-        chosen = _chosen(appliances)
-    except KeyError as exc:
-        raise _fail(str(exc.args[0])) from None
+    chosen = _chosen(appliances)
     suite = Suite("bundled", Path("."), chosen)
     results = []
     with console.status("planning and simulating…"):
@@ -398,10 +395,7 @@ def suite_fill_optimal(appliances: Annotated[list[str] | None, typer.Argument(
     """Store the planner's optimal action count in every task (rewrites tasks.yaml)."""
     from apbot.bench.suite_check import fill_optimal
 
-    try:
-        chosen = _chosen(appliances)
-    except KeyError as exc:
-        raise _fail(str(exc.args[0])) from None
+    chosen = _chosen(appliances)
     for item in chosen:
         changed = fill_optimal(item)
         console.print(f"{item.id}: {changed} task(s) updated")

@@ -135,3 +135,27 @@ def test_budget_is_reported(washer: ApplianceModel) -> None:
     goal = {"power": "on", "programme": "wool", "temperature": "20", "finish_in": "5 h"}
     with pytest.raises(Unreachable, match="budget"):
         plan(washer, None, goal, budget=1)
+
+
+CLOCK = """
+controls: [{id: clock, label: CLOCK}, {id: hour, label: HOUR}, {id: minute, label: MIN}]
+variables:
+  clock: {type: time, wrap: true, ranges: [["00:00:00", "23:59:00", 60]], initial: "06:00:00"}
+actions: {press_clock: {control: clock}, press_hour: {control: hour},
+          press_min: {control: minute}}
+features:
+  set_clock:
+    - {actions: [press_clock]}
+    - {actions: [press_hour, press_min], variable: clock,
+       effect: {press_hour: {add: 3600}, press_min: {add: 60}}}
+"""
+
+
+@pytest.mark.parametrize("goal", ["07:45", "05:59", "23:59", "12:30"])
+def test_large_domain_visits_keep_the_goal(goal: str) -> None:
+    """A 1440-value clock: pruning a visit's exits must never drop the goal itself."""
+    model = model_from(CLOCK)
+    compiled = compiled_model(model)
+    canonical = {"clock": f"{goal}:00"}
+    shortest = shortest_plan_length(compiled, compiled.initial_state(), canonical)
+    assert len(plan(model, None, canonical)) == shortest

@@ -168,3 +168,29 @@ def test_states_are_values_restorable_and_deterministic(washer: ApplianceModel) 
     display = Simulator(washer).reset(middle).display
     first.reset(middle)
     assert first.state == middle and first.observe().display == display
+
+
+def test_choosing_the_programme_again_restores_its_defaults() -> None:
+    sim = Simulator(model_from("""
+controls: [{id: p, label: POWER}, {id: t, label: TEMP}, {id: c, label: COTTON},
+           {id: w, label: WOOL}]
+variables:
+  power: {type: discrete, values: ["off", "on"]}
+  programme: {type: discrete, values: [cotton, wool]}
+  temperature: {type: discrete, depends_on: programme,
+                cases: {cotton: {values: ["20", "40", "60"], initial: "40"}, wool: ["20", "30"]}}
+actions: {press_power: {control: p}, press_temp: {control: t}, press_cotton: {control: c},
+          press_wool: {control: w}}
+features:
+  power: [{actions: [press_power], variable: power, effect: toggle, reset: [programme]}]
+  temperature: [{actions: [press_temp], variable: temperature}]
+  programme:
+    - {actions: [press_cotton, press_wool], variable: programme,
+       effect: {press_cotton: {to: cotton}, press_wool: {to: wool}}}
+"""))
+    run(sim, "press_power", "press_temp")
+    assert sim.value("temperature") == "60"
+    sim.step("press_cotton")  # cotton again: its defaults come back
+    assert sim.value("temperature") == "40"
+    run(sim, "press_temp", "press_power")  # switching off forgets settings, cotton or not
+    assert sim.value("temperature") == "40"

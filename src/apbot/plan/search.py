@@ -83,16 +83,13 @@ class TaskSearch:
             step.variable in relevant_set and any(e[0] == DIGIT for e in step.effects.values())
             for step in compiled.steps)
         self.bound = LowerBound(compiled, goal)
-        self._visit_cache: dict[Hashable, list[Exit]] = {}
+        self._visit_cache: dict[Hashable, list[tuple[tuple[int, ...], str, tuple[int, ...]]]] = {}
+        self._footprints: dict[int, tuple[tuple[int, ...], tuple[int, ...]]] = {}
         self._keypad_targets: dict[int, list[float]] = {}
 
     def key(self, state: State) -> Hashable:
         buffer = state.buffer if state.step >= 0 and self.keypad_step[state.step] else ""
         return (self._project(state.values), state.step, buffer)
-
-    def _inner_key(self, state: State) -> Hashable:
-        """Key inside a visit: the pointer is fixed, the buffer always matters."""
-        return (self._project(state.values), state.buffer)
 
     def run(self, start: State) -> SearchResult:
         compiled = self.compiled
@@ -164,21 +161,50 @@ class TaskSearch:
         if v < 0 or v not in self.relevant:
             after = self.compiled.apply(state, entry[0])
             return [] if after is None else [(after, (entry[0],))]
-        cache_key = (step, tuple(entry), self._inner_key(state), state.step == step)
-        cached = self._visit_cache.get(cache_key)
-        if cached is not None:
-            # exits cached from a node with the same relevant values: their irrelevant values
-            # may differ, which never matters to the search; the final plan is re-simulated
-            return cached
-        if self.keypad_step[step]:
-            exits = keypad_exits(self.compiled, state, step, entry, self._targets_for(v))
-        else:
-            exits = explore_visit(self.compiled, state, step, entry, self._inner_key)
-            domain = self.compiled.vars[v].domain(state.values)
-            if domain is not None and len(domain) > SMALL_DOMAIN:
-                exits = self._useful(exits, v)
-        self._visit_cache[cache_key] = exits
-        return exits
+        reads, writes = self._footprint(step)
+        continuing = state.step == step
+        values = state.values
+        cache_key = (step, tuple(entry), tuple(values[r] for r in reads),
+                     state.buffer if continuing else "", continuing)
+        outcomes = self._visit_cache.get(cache_key)
+        if outcomes is None:
+            if self.keypad_step[step]:
+                exits = keypad_exits(self.compiled, state, step, entry, self._targets_for(v))
+            else:
+                def inner_key(s: State) -> Hashable:
+                    return (tuple(s.values[w] for w in writes), s.buffer)
+
+                exits = explore_visit(self.compiled, state, step, entry, inner_key)
+                domain = self.compiled.vars[v].domain(values)
+                if domain is not None and len(domain) > SMALL_DOMAIN:
+                    exits = self._useful(exits, v)
+            outcomes = [(tuple(after.values[w] for w in writes), after.buffer, path)
+                        for after, path in exits]
+            self._visit_cache[cache_key] = outcomes
+        rebuilt = []
+        for changed, buffer, path in outcomes:
+            new = list(values)
+            for w, value in zip(writes, changed, strict=True):
+                new[w] = value
+            rebuilt.append((State(tuple(new), step, buffer), path))
+        return rebuilt
+
+    def _footprint(self, step: int) -> tuple[tuple[int, ...], tuple[int, ...]]:
+        """What a visit to ``step`` can change (its variable, side effects, the settings that
+        depend on those) and what its outcome depends on (those, their programmes, guards).
+        Visits are cached on the latter, so other variables never force a re-exploration."""
+        cached = self._footprints.get(step)
+        if cached is None:
+            compiled = self.compiled
+            info = compiled.steps[step]
+            writes = {info.variable} | {target for target, _ in info.side}
+            writes |= {d for w in list(writes) for d in compiled.dependents.get(w, ())}
+            reads = set(writes) | {compiled.vars[w].parent for w in writes
+                                   if compiled.vars[w].parent >= 0}
+            reads |= {v for guard in compiled.guards for v, _ in guard.conditions}
+            cached = (tuple(sorted(reads)), tuple(sorted(writes)))
+            self._footprints[step] = cached
+        return cached
 
     def _targets_for(self, v: int) -> list[float]:
         """Values worth typing into a keypad variable: its goal, its current value, and values
@@ -214,15 +240,24 @@ class TaskSearch:
         return self._keypad_targets[v]
 
     def _useful(self, exits: list[Exit], v: int) -> list[Exit]:
-        """For a large domain, keep exits whose value is some distance-ranked candidate."""
-        by_cost = sorted(exits, key=lambda e: len(e[1]))
+        """For a large domain, keep the exits that can lead to the goal cheaply.
+
+        Always kept: exits at the goal value, and the cheapest way out of the step (a
+        pass-through). Others are scored by cost plus the bound on what remains for ``v`` and
+        kept while they fit: a value halfway along matters when another step finishes the job
+        more cheaply.
+        """
+        by_cost = min(exits, key=lambda e: len(e[1]))
         if v not in self.goal.variables:
-            return by_cost[:SMALL_DOMAIN]
+            return sorted(exits, key=lambda e: len(e[1]))[:SMALL_DOMAIN]
         v_bound = self.bound.variable_bound(v)
-        scored = [(len(path) + v_bound(after), len(path), after, path) for after, path in exits]
-        best = min(score for score, *_ in scored)
+        scored = sorted(((len(path) + (rest := v_bound(after)), rest, len(path)), after, path)
+                        for after, path in exits)
+        best = scored[0][0][0]
         slack = 1 + sum(1 for step in self.compiled.steps for target, _ in step.side
                         if target in self.goal.variables)
-        keep = sorted(item for item in scored if item[0] <= best + slack)[:SMALL_DOMAIN]
-        kept = [(after, path) for _, _, after, path in keep]
-        return kept if by_cost[0] in kept else [by_cost[0], *kept]
+        at_goal = [(after, path) for score, after, path in scored if score[1] == 0]
+        near = [(after, path) for score, after, path in scored[:SMALL_DOMAIN]
+                if score[1] > 0 and score[0] <= best + slack]
+        kept = at_goal + near
+        return kept if by_cost in kept else [by_cost, *kept]

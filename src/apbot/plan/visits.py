@@ -33,25 +33,22 @@ def explore_visit(compiled: CompiledModel, state: State, step: int, entry: Seque
     apply = compiled.apply
     seen: dict[Hashable, Exit] = {}
     queue: deque[Exit] = deque()
-    for action in entry:
-        after = apply(state, action)
-        if after is None:
-            continue
-        k = key(after)
-        if k not in seen:
-            seen[k] = (after, (action,))
-            queue.append(seen[k])
-    own = sorted(compiled.steps[step].actions)
-    while queue:
-        current, path = queue.popleft()
-        for action in own:
-            after = apply(current, action)
+
+    def expand(source: State, path: tuple[int, ...], actions: Sequence[int]) -> None:
+        for action in actions:
+            after = apply(source, action)
             if after is None:
                 continue
             k = key(after)
             if k not in seen:
                 seen[k] = (after, (*path, action))
                 queue.append(seen[k])
+
+    expand(state, (), entry)
+    own = sorted(compiled.steps[step].actions)
+    while queue:
+        current, path = queue.popleft()
+        expand(current, path, own)
     return list(seen.values())
 
 

@@ -18,8 +18,10 @@ Effects
     compiles to a table
     ``new_index = table[current_index]`` per case of the variable; a keypad digit appends to the
     buffer and sets the variable when the buffer parses to one of its values. Side effects
-    (``set``, ``reset``) of a step follow its main effect. When a programme changes, settings
-    that depend on it return to the new programme's default.
+    (``set``, ``reset``) of a step follow its main effect. When a programme is chosen, settings
+    that depend on it return to that programme's defaults: whenever it changes, and also when
+    it is assigned without changing (a go-to key pressed again, a ``reset`` or ``set`` when the
+    appliance is switched off) — a real appliance re-applies the programme's defaults then.
 
 Guards
     Checked before anything else: while a guard's condition holds, only its listed actions are
@@ -233,7 +235,8 @@ class CompiledModel:
             return (CLEAR, reset)
         tables = tuple(None if d is None else _table_for(effect, d, var.spec)
                        for d in var.domains)
-        return (TABLE, tables)
+        assigns = effect == "reset" or isinstance(effect, GoTo)  # choosing, not stepping
+        return (TABLE, tables, assigns)
 
     def _compile_steps(self) -> tuple[StepInfo, ...]:
         steps: list[StepInfo] = []
@@ -376,8 +379,8 @@ class CompiledModel:
                 table = effect[1][var.case(new)]
                 if table is not None:
                     new[v] = table[new[v]]
-        changed_parent = v >= 0 and v in self.dependents and new[v] != values[v]
-        if changed_parent:
+        if v >= 0 and v in self.dependents and (
+                new[v] != values[v] or kind == CLEAR or (kind == TABLE and effect[2])):
             self._reset_dependents(new, v)
         for target_var, tables in step.side:
             before = new[target_var]
@@ -386,7 +389,7 @@ class CompiledModel:
                 table = tables[var.case(new)]
                 if table is not None:
                     new[target_var] = table[before]
-            if target_var in self.dependents and new[target_var] != before:
+            if target_var in self.dependents:  # a side effect always assigns
                 self._reset_dependents(new, target_var)
         return State(tuple(new), target, buffer)
 
