@@ -10,6 +10,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Annotated
 
 import typer
+from rich import box
 from rich.console import Console
 from rich.table import Table
 
@@ -319,10 +320,15 @@ def suite_stats(as_json: Annotated[bool, typer.Option("--json", help="Print JSON
     if as_json:
         print(json.dumps(stats, indent=2))
         return
-    table = Table(title=f"{stats['appliances']} appliances, {stats['tasks']} tasks")
-    table.add_column("category")
-    for column in ("appliances", "tasks", "goal vars/task", *FEATURES):
-        table.add_column(column.replace("_", " "), justify="right")
+    table = Table(title=f"{stats['appliances']} appliances, {stats['tasks']} tasks",
+                  caption="appliances using each model feature (2-key: two-control hold; "
+                          "dep.: programme-dependent settings; guard: child lock or running)",
+                  box=box.SIMPLE_HEAD, padding=(0, 1, 0, 0))
+    table.add_column("category", no_wrap=True, min_width=16)
+    short = {"two_control_hold": "2-key", "dependent_settings": "dep.", "time_variables": "time",
+             "piecewise": "piecew.", "guards": "guard"}
+    for column in ("appl.", "tasks", "vars", *(short.get(f, f) for f in FEATURES)):
+        table.add_column(column, justify="right", no_wrap=True, min_width=len(column))
     for name, row in stats["categories"].items():
         table.add_row(name, str(row["appliances"]), str(row["tasks"]),
                       f"{row['goal_vars_per_task']:g}",

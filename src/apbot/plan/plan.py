@@ -8,7 +8,7 @@ closed loop compares with what it observes.
 >>> from apbot.examples import load_example
 >>> p = plan(load_example("washing_machine"), None, {"power": "on", "programme": "wool"})
 >>> [m.feature for m in p.macro_actions], len(p)
-(['power', 'select_programme'], 4)
+(['power', 'select_programme'], 5)
 """
 
 from __future__ import annotations

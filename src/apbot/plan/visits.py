@@ -59,7 +59,7 @@ def keypad_presses(buffer: str, target: str, entry: Entry, typed: bool = True) -
 
     >>> e = Entry(format="mm:ss")
     >>> keypad_presses("", "130", e), keypad_presses("13", "130", e), keypad_presses("99", "130", e)
-    ('130', '0', '130')
+    ('130', '0', '0130')
     """
     width = entry.digits()
     if not typed:

@@ -4,8 +4,8 @@ The same engine runs the benchmark's ground truth and an agent's belief model.
 
 >>> from apbot.examples import load_example
 >>> sim = Simulator(load_example("microwave_keypad"))
->>> sim.step("press_power").accepted
-True
+>>> [sim.step(a).display for a in ("press_time_cook", "press_1", "press_3", "press_0")]
+['COOK 00:00', 'COOK 00:01', 'COOK 00:13', 'COOK 01:30']
 """
 
 from __future__ import annotations
