@@ -100,3 +100,13 @@ def test_warnings_do_not_stop_loading() -> None:
     model = model_from(GOOD + "  extra:\n    - {actions: [press_power], variable: power}\n",
                        check=False)
     assert "extra" in model.features
+
+
+def test_yaml_booleans_are_explained() -> None:
+    bad = GOOD.replace("label: POWER}", "label: OFF}")
+    bad = bad.replace("  power:\n    - {", "  off:\n    - {")
+    problems = errors_of(bad)
+    assert ("controls[0].label", 'YAML read this as the boolean False (it does so for '
+            'off/no/false); quote it, e.g. "off"', 3) in problems
+    assert any(where == "features.false" and "boolean" in message
+               for where, message, _ in problems)

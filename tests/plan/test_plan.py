@@ -159,3 +159,35 @@ def test_large_domain_visits_keep_the_goal(goal: str) -> None:
     canonical = {"clock": f"{goal}:00"}
     shortest = shortest_plan_length(compiled, compiled.initial_state(), canonical)
     assert len(plan(model, None, canonical)) == shortest
+
+
+PROGRAMME_SHORTCUT = """
+controls: [{id: p, label: PROG}, {id: s, label: SET}, {id: l, label: LEVEL}, {id: o, label: "OFF"}]
+variables:
+  prog: {type: discrete, values: [a, b, c]}
+  setting: {type: discrete, depends_on: prog,
+            cases: {a: {values: [x1, x2, x3, x4, x5], initial: x1},
+                    b: {values: [x1, x2, x3, x4, x5], initial: x5},
+                    c: {values: [x1, x5], initial: x1}}}
+  level: {type: numeric, ranges: [[0, 3, 1]]}
+actions: {press_prog: {control: p}, press_set: {control: s}, press_level: {control: l},
+          press_off: {control: o}}
+features:
+  prog: [{actions: [press_prog], variable: prog, effect: next}]
+  setting: [{actions: [press_set], variable: setting, effect: next}]
+  level: [{actions: [press_level], variable: level, effect: next}]
+  switch_off: [{actions: [press_off], reset: [prog, level]}]
+"""
+
+
+@pytest.mark.parametrize("goal", [{"setting": "x5"}, {"setting": "x5", "level": 3},
+                                  {"setting": "x2", "level": 2}, {"setting": "x1", "level": 1}])
+def test_a_programme_change_as_a_shortcut_to_a_setting(goal: dict[str, object]) -> None:
+    """The setting's goal is some programme's default; the programme is not in the goal."""
+    model = model_from(PROGRAMME_SHORTCUT)
+    compiled = compiled_model(model)
+    start = Simulator(model)
+    start.step("press_set")
+    for state in (compiled.initial_state(), start.state):
+        found = plan(model, state, goal)
+        assert len(found) == shortest_plan_length(compiled, state, found.goal)

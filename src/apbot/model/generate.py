@@ -210,7 +210,8 @@ def random_goal(rng: random.Random, model: ApplianceModel) -> dict[str, Any]:
             chosen = goal.get(parent) or rng.choice(options)
             if chosen not in (var.cases or {}):
                 continue
-            goal.setdefault(parent, chosen)
+            if parent in goal or rng.random() < 0.5:  # else: any programme offering it will do
+                goal.setdefault(parent, chosen)
             domain = build_domain(var, (var.cases or {})[chosen])
         else:
             domain = build_domain(var)

@@ -76,6 +76,8 @@ def _clean_loc(loc: tuple[Any, ...]) -> tuple[PathPart, ...]:
     parts: list[PathPart] = []
     for part in loc:
         text = str(part)
+        if text == "[key]":
+            continue
         if text in _UNION_TAGS or text.startswith(("literal[", "function-", "list[", "dict[")):
             continue
         if text in ("str", "int", "float", "bool", "tuple"):
@@ -105,6 +107,10 @@ def _message(error: Any, model_fields: dict[str, list[str]]) -> str:
         return "missing `type` (discrete, numeric or time)"
     if kind == "string_pattern_mismatch":
         return f"{error.get('input')!r}: {_FIELD_HINTS[kind]}"
+    if kind == "string_type" and isinstance(error.get("input"), bool):
+        word = "on/yes/true" if error["input"] else "off/no/false"
+        return (f"YAML read this as the boolean {error['input']} (it does so for {word}); "
+                'quote it, e.g. "off"')
     message = str(error["msg"])
     if message.startswith("Value error, "):
         message = message[len("Value error, "):]
@@ -134,7 +140,10 @@ def schema_problems(error: ValidationError, text: str | None = None) -> list[Pro
     by_path: dict[tuple[PathPart, ...], list[str]] = {}
     effect_paths: set[tuple[PathPart, ...]] = set()
     for item in error.errors():
-        path = _clean_loc(tuple(item["loc"]))
+        loc = tuple(item["loc"])
+        if loc and loc[-1] == "[key]" and isinstance(item.get("input"), bool):
+            loc = (*loc[:-2], str(item["input"]).lower())  # pydantic shows the key False as 0
+        path = _clean_loc(loc)
         if "effect" in path and item["type"] not in ("extra_forbidden",):
             index = path.index("effect")
             effect_path = path[: index + 1] + tuple(p for p in path[index + 1:index + 2]

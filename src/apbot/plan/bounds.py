@@ -29,11 +29,14 @@ INF = float("inf")
 _ABSENT = ("absent",)  # a dependent setting that does not exist in the current programme
 
 
-def _value_graph(compiled: CompiledModel, v: int, only_case: int | None = None
+def _value_graph(compiled: CompiledModel, v: int, only_case: int | None = None,
+                 reset_cost: int = 0
                  ) -> tuple[dict[Any, list[tuple[Any, int]]], list[tuple[Any, int]]]:
     """Reverse edges ``to -> [(from, cost)]`` over canonical values, and "from anywhere" edges.
 
     ``only_case`` keeps a programme-dependent setting inside one programme's domain (the goal's).
+    ``reset_cost`` is what a programme change restoring the setting's default costs it (1 when
+    this setting is the one charged for its programme's presses, see :class:`LowerBound`).
     """
     var = compiled.vars[v]
 
@@ -73,8 +76,8 @@ def _value_graph(compiled: CompiledModel, v: int, only_case: int | None = None
                         anywhere.append((domain.values[table[0]], 0))
     if var.parent >= 0:  # a programme change restores the new programme's default
         if only_case is None:
-            anywhere.extend((_ABSENT, 0) if d is None else (d.values[d.initial], 0)
-                            for d in var.domains)
+            anywhere.extend((_ABSENT, reset_cost) if d is None
+                            else (d.values[d.initial], reset_cost) for d in var.domains)
         else:
             anywhere.extend((d.values[d.initial], 0) for _, d in cases())
     return reverse, anywhere
@@ -99,9 +102,10 @@ def typeable_values(compiled: CompiledModel, v: int) -> list[tuple[Any, int]]:
 
 
 def distances_to(compiled: CompiledModel, v: int, goal_value: Any,
-                 only_case: int | None = None) -> tuple[dict[Any, float], float]:
+                 only_case: int | None = None, reset_cost: int = 0
+                 ) -> tuple[dict[Any, float], float]:
     """Fewest main actions from each value to ``goal_value``, and the cost from anywhere."""
-    reverse, anywhere = _value_graph(compiled, v, only_case)
+    reverse, anywhere = _value_graph(compiled, v, only_case, reset_cost)
     dist: dict[Any, float] = {goal_value: 0}
     queue: deque[Any] = deque([goal_value])
     while queue:  # 0-1 BFS backwards from the goal
@@ -123,11 +127,13 @@ class LowerBound:
         self.goal = goal
         cache: dict[Any, Any] = compiled.cache.setdefault("bounds", {})
         self.tables: list[tuple[int, tuple[tuple[float, ...], ...], float]] = []
+        charged = self._charged_dependents()
         for name, v in zip(goal.names, goal.variables, strict=True):
             goal_case = self._goal_case(v)
-            key = (v, goal.canonical[name], goal_case)
+            reset_cost = int(v in charged)
+            key = (v, goal.canonical[name], goal_case, reset_cost)
             if key not in cache:
-                cache[key] = self._table(v, goal.canonical[name], goal_case)
+                cache[key] = self._table(v, goal.canonical[name], goal_case, reset_cost)
             self.tables.append(cache[key])
         goal_vars = set(goal.variables)
         # steps where a partly typed buffer may finish a goal variable with one digit
@@ -168,9 +174,39 @@ class LowerBound:
         assert domain is not None
         return domain.index[self.goal.canonical[self.compiled.vars[parent].name]]
 
-    def _table(self, v: int, goal_value: Any, goal_case: int | None
+    def _charged_dependents(self) -> set[int]:
+        """Goal settings that pay for their programme's presses.
+
+        A programme that is not itself a goal variable changes only through presses no goal
+        variable pays for — unless a goal variable's step assigns it as a side effect. Then the
+        first goal setting depending on it is charged one press for reaching a default by a
+        programme change (the others of the same programme ride along for free). Programmes
+        that one step can change together share a single charge.
+        """
+        compiled = self.compiled
+        goal_vars = set(self.goal.variables)
+        assigning: dict[int, set[int]] = {}  # programme -> steps that can change it
+        for sid, step in enumerate(compiled.steps):
+            for target in {step.variable} | {t for t, _ in step.side}:
+                assigning.setdefault(target, set()).add(sid)
+        charged: set[int] = set()
+        used_steps: set[int] = set()
+        seen_parents: set[int] = set()
+        for v in self.goal.variables:
+            parent = compiled.vars[v].parent
+            if parent < 0 or parent in goal_vars or parent in seen_parents:
+                continue
+            seen_parents.add(parent)
+            steps = assigning.get(parent, set())
+            if any(compiled.steps[s].variable in goal_vars for s in steps) or steps & used_steps:
+                continue
+            used_steps |= steps
+            charged.add(v)
+        return charged
+
+    def _table(self, v: int, goal_value: Any, goal_case: int | None, reset_cost: int = 0
                ) -> tuple[int, tuple[tuple[float, ...], ...], float]:
-        dist, anywhere = distances_to(self.compiled, v, goal_value, goal_case)
+        dist, anywhere = distances_to(self.compiled, v, goal_value, goal_case, reset_cost)
         per_case = []
         for case, d in enumerate(self.compiled.vars[v].domains):
             if d is None:
