@@ -72,3 +72,19 @@ def test_sim_script(tmp_path: Path) -> None:
 def test_unknown_model_is_a_clear_error() -> None:
     result = runner.invoke(app, ["plan", "no_such_thing", "-g", "a=b"])
     assert result.exit_code == 1 and "not a model file" in result.output
+
+
+def test_bad_inputs_are_messages_not_tracebacks(tmp_path: Path) -> None:
+    binary = tmp_path / "model.yaml"
+    binary.write_bytes(b"\xff\xfe\x00bad")
+    result = runner.invoke(app, ["check", str(binary)])
+    assert result.exit_code == 1 and "not UTF-8" in result.output
+    result = runner.invoke(app, ["sim", "washing_machine", "--script", str(tmp_path / "none")])
+    assert result.exit_code == 1 and "cannot read the script" in result.output
+    result = runner.invoke(app, ["plan", "washing_machine", "-g", "programme=wool",
+                                 "-g", "programme=cotton"])
+    assert result.exit_code == 1 and "given twice" in result.output
+    result = runner.invoke(app, ["plan", "microwave_keypad", "-g", "cook_time=00:75:00"])
+    assert result.exit_code == 1 and "not a time" in result.output
+    for result in (runner.invoke(app, ["check", str(tmp_path)]),):
+        assert "Traceback" not in result.output

@@ -6,6 +6,7 @@ The commands are thin: each calls library functions that the tests use too.
 from __future__ import annotations
 
 import json
+import math
 from pathlib import Path
 from typing import TYPE_CHECKING, Annotated
 
@@ -83,6 +84,8 @@ def check(model: ModelArg,
         if path.is_dir() and (path / "model.yaml").exists() and (path / "tasks.yaml").exists():
             problems, source = _check_appliance_dir(path), str(path)
         else:
+            if path.is_dir() and (path / "model.yaml").exists():
+                path = path / "model.yaml"  # a directory with a model but no tasks
             loaded, source = resolve_model(model) if not path.exists() else (
                 load_model(path, check=False), str(path))
             text = Path(source).read_text(encoding="utf-8") if Path(source).exists() else None
@@ -123,7 +126,7 @@ def _chosen(appliances: list[str] | None) -> list[SuiteAppliance]:
             except KeyError as exc:  # names the closest id
                 raise _fail(str(exc.args[0])) from None
         try:
-            chosen.append(load_appliance(directory))
+            chosen.append(load_appliance(directory, check=True))
         except ModelError as exc:
             _print_problems(exc.problems, exc.source or name)
             raise _fail(f"{name} cannot be loaded") from None
@@ -135,7 +138,7 @@ def _suite() -> Suite:
     from apbot.bench.suite import load_suite
 
     try:
-        return load_suite()
+        return load_suite(check=True)
     except ModelError as exc:
         _print_problems(exc.problems, exc.source or "suite")
         raise _fail("the bundled suite cannot be loaded") from None
@@ -215,7 +218,10 @@ def sim(model: ModelArg,
     console.print(f"[bold]{loaded.appliance.name or loaded.appliance.id}[/bold] — "
                   "type an action (`help`, `state`, `reset`, `quit`)")
     console.print(f"display: [cyan]{simulator.observe().display!r}[/cyan]")
-    lines = script.read_text(encoding="utf-8").splitlines() if script else None
+    try:
+        lines = script.read_text(encoding="utf-8").splitlines() if script else None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise _fail(f"cannot read the script {script}: {exc}") from None
     while True:
         if lines is not None:
             if not lines:
@@ -242,12 +248,15 @@ def sim(model: ModelArg,
             continue
         name, _, seconds = line.partition(" ")
         try:
-            observation = simulator.step(name, float(seconds) if seconds else None)
+            held = float(seconds) if seconds else None
+            if held is not None and not (math.isfinite(held) and held > 0):
+                raise ValueError(seconds)
+            observation = simulator.step(name, held)
         except UnknownAction as exc:
             console.print(f"[red]{exc}[/red]")
             continue
         except ValueError:
-            console.print(f"[red]{seconds!r} is not a number of seconds[/red]")
+            console.print(f"[red]{seconds!r} is not a positive number of seconds[/red]")
             continue
         status = "" if observation.accepted else f"  [yellow]refused: {observation.reason}[/yellow]"
         console.print(f"display: [cyan]{observation.display!r}[/cyan]{status}")

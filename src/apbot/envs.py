@@ -110,7 +110,7 @@ def _appliance(appliance_id: str) -> SuiteAppliance:
     directory = bundled_suite_dir() / appliance_id
     if not (directory / "model.yaml").exists():
         raise ValueError(f"no bundled appliance {appliance_id!r}")
-    return load_appliance(directory)
+    return load_appliance(directory, check=True)
 
 
 def _charset(appliance: SuiteAppliance) -> str:

@@ -89,3 +89,9 @@ def test_values_in_the_variables_own_unit() -> None:
     assert normalise(fahrenheit, "350 °F") == 350
     with pytest.raises(ValueProblem):
         normalise(fahrenheit, "180 °C")  # never silently converted
+
+
+def test_subtracting_snaps_down() -> None:
+    coarse = build_domain(numeric(ranges=[[0, 10, 1], [10, 60, 10]]))
+    assert coarse.values[coarse.snap_index(20 - 1, down=True)] == 10
+    assert coarse.values[coarse.snap_index(20 - 1)] == 20  # adding snaps up

@@ -110,3 +110,12 @@ def test_yaml_booleans_are_explained() -> None:
             'off/no/false); quote it, e.g. "off"', 3) in problems
     assert any(where == "features.false" and "boolean" in message
                for where, message, _ in problems)
+
+
+def test_repeated_keys_are_errors() -> None:
+    bad = GOOD.replace("  press_speed: {control: speed_button}",
+                       "  press_speed: {control: speed_button}\n"
+                       "  press_power: {control: speed_button}")
+    [(where, message, line)] = errors_of(bad)
+    assert where == "actions.press_power" and line == 11
+    assert "given twice (first on line 9)" in message

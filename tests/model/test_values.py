@@ -53,3 +53,15 @@ def test_quantities_with_units(text: str, expected: tuple[float, str | None]) ->
 def test_mixed_dimensions_are_not_a_quantity() -> None:
     assert parse_quantity("2 h 30 g") is None
     assert parse_quantity("quickly") is None
+
+
+@pytest.mark.parametrize(("text", "number"), [
+    ("-5", -5), ("−0.5", -0.5), ("+3", 3), ("1-2", None), ("twenty-five", 25),
+])
+def test_signs_and_ranges(text: str, number: float | None) -> None:
+    assert words_to_number(text) == number
+
+
+def test_negative_quantities_keep_their_sign() -> None:
+    assert parse_quantity("-5 °C") == (-5, "temperature", 1.0)
+    assert parse_quantity("-18") == (-18, None, 1.0)

@@ -7,7 +7,7 @@ in button order, the initial one, and whether stepping past an end wraps or clam
 from __future__ import annotations
 
 import itertools
-from bisect import bisect_left
+from bisect import bisect_left, bisect_right
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -68,8 +68,9 @@ class Domain:
             return i - 1
         return len(self.values) - 1 if self.wrap else i
 
-    def snap_index(self, magnitude: float) -> int:
-        """The index reached by adding to a number: the next value at or above ``magnitude``.
+    def snap_index(self, magnitude: float, down: bool = False) -> int:
+        """The index reached by adding to a number: the next value at or above ``magnitude``
+        (at or below it when subtracting, ``down``), so a key never fails to move the value.
 
         Past either end a clamping variable stops at the end. A wrapping variable with evenly
         spaced values counts round like a clock (23:30 + 1 h = 00:30); with uneven spacing it
@@ -85,6 +86,9 @@ class Domain:
                 magnitude = mags[0] + (magnitude - mags[0]) % period
                 outside = False
         if not outside:
+            if down:
+                i = bisect_right(mags, magnitude + 1e-9) - 1
+                return i if i >= 0 else (len(mags) - 1 if self.wrap else 0)
             i = bisect_left(mags, magnitude - 1e-9)
             return i if i < len(mags) else (0 if self.wrap else len(mags) - 1)
         if magnitude < mags[0]:
@@ -92,8 +96,15 @@ class Domain:
         return 0 if self.wrap else len(mags) - 1
 
 
+MAX_VALUES = 100_000  # a domain larger than this is a modelling mistake, not an appliance
+
+
 def _check_ranges(ranges: list[tuple[float, float, float]], show: Any) -> None:
     previous_end: float | None = None
+    count = sum(int((b - a) / c) + 1 for a, b, c in ranges if c > 0 and b >= a)
+    if count > MAX_VALUES:
+        raise DomainError(f"the ranges give {count:,} values; at most {MAX_VALUES:,} are "
+                          "allowed (use a coarser step)")
     for i, (start, stop, step) in enumerate(ranges):
         if step <= 0:
             raise DomainError(f"range {i + 1} has step {show(step)}; a step must be positive")
@@ -265,7 +276,11 @@ def _to_seconds(raw: Any, style: str) -> int:
                            "write 00:30:00, '30 min' or '2 h'")
     parts = text.split(":")
     if len(parts) == 3 and all(p.isdigit() for p in parts):
-        return parse_hms(text)
+        try:
+            return parse_hms(text)
+        except ValueError:
+            raise ValueProblem(f"{text!r} is not a time (minutes and seconds go up to 59)"
+                               ) from None
     if len(parts) == 2 and all(p.isdigit() for p in parts):
         first, second = int(parts[0]), int(parts[1])
         if second >= 60:

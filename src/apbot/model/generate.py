@@ -42,7 +42,8 @@ def random_model(rng: random.Random) -> ApplianceModel:
     parent: str | None = None
     for i in range(count):
         name = f"v{i}"
-        kind = rng.choice(["discrete", "discrete", "numeric", "time", "keypad", "dependent"])
+        kind = rng.choice(["discrete", "discrete", "numeric", "time", "keypad", "dependent",
+                           "large"])
         if kind == "dependent" and parent is None:
             kind = "discrete"
         variables[name] = _variable(rng, kind, parent, variables)
@@ -53,6 +54,19 @@ def random_model(rng: random.Random) -> ApplianceModel:
     for name in [v for v in variables if v.startswith("v")]:
         for _ in range(rng.randint(1, 2)):
             features[f"f{len(features)}"] = _feature(rng, name, variables, pool)
+
+    numeric = [v for v, spec in variables.items() if spec["type"] == "numeric"
+               and "depends_on" not in spec]
+    if numeric and rng.random() < 0.25:  # a guard on a number: "set a time before starting"
+        guarded = rng.choice(numeric)
+        low = _ranges(rng)[0][0] if "ranges" not in variables[guarded] else \
+            variables[guarded]["ranges"][0][0]
+        adjusting = [a for steps in features.values() for step in steps
+                     if step.get("variable") == guarded for a in step["actions"]]
+        entering = [a for steps in features.values() if any(
+            st.get("variable") == guarded for st in steps) for a in steps[0]["actions"]]
+        guards.append({"when": {guarded: [low, low + 1, low + 2]},
+                       "only": sorted(set(adjusting + entering))})
 
     if rng.random() < 0.3:  # a child lock on a hold, possibly of two controls
         variables["lock"] = {"type": "discrete", "values": ["off", "on"]}
@@ -105,6 +119,8 @@ def _variable(rng: random.Random, kind: str, parent: str | None,
                 "initial": rng.choice(values)}
     if kind == "numeric":
         return {"type": "numeric", "ranges": _ranges(rng), "wrap": wrap, "unit": "min"}
+    if kind == "large":  # more values than the planner enumerates cheaply (> 64)
+        return {"type": "numeric", "ranges": [[0, rng.choice([70, 100]), 1]], "wrap": wrap}
     if kind == "time":
         return {"type": "time", "wrap": wrap,
                 "ranges": [["00:00:00", "00:02:00", 30], ["00:02:00", "00:04:00", 60]]}
@@ -149,7 +165,10 @@ class _ActionPool:
 def _adjusting_step(rng: random.Random, name: str, var: dict[str, Any],
                     pool: _ActionPool) -> dict[str, Any]:
     if "entry" in var:
-        return {"actions": pool.keypad(), "variable": name}
+        step = {"actions": pool.keypad(), "variable": name}
+        if rng.random() < 0.2:
+            step["on_entry"] = "show"
+        return step
     effects: dict[str, Any] = {}
     if rng.random() < 0.5:
         up, down = pool.arrows_pair()
@@ -158,7 +177,7 @@ def _adjusting_step(rng: random.Random, name: str, var: dict[str, Any],
         hold = {"skill": "hold", "seconds": 1} if rng.random() < 0.15 else {}
         effects[pool.new_action(**hold)] = rng.choice(["next", "next", "prev", "reset"])
     if var["type"] != "discrete" and rng.random() < 0.3:
-        effects[pool.new_action()] = {"add": rng.choice([1, 2, 5, 30, 60, -30])}
+        effects[pool.new_action()] = {"add": rng.choice([1, 2, 5, 10, 30, 60, -30])}
     if var.get("values") and rng.random() < 0.2:
         effects[pool.new_action()] = {"to": rng.choice(var["values"])}
     step: dict[str, Any] = {"actions": list(effects), "variable": name, "effect": effects}

@@ -30,9 +30,13 @@ def split_assignments(items: Iterable[str]) -> dict[str, str]:
     goal: dict[str, str] = {}
     for item in items:
         name, sep, value = item.partition("=")
-        if not sep or not name.strip():
+        name = name.strip()
+        if not sep or not name:
             raise GoalError([Problem(("goal",), f"{item!r} is not NAME=VALUE", "goal")])
-        goal[name.strip()] = value.strip()
+        if name in goal and goal[name] != value.strip():
+            raise GoalError([Problem(("goal", name), f"given twice ({goal[name]!r} and "
+                                     f"{value.strip()!r}); say which one", "goal")])
+        goal[name] = value.strip()
     return goal
 
 

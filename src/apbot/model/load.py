@@ -30,15 +30,41 @@ _UNION_TAGS = {"discrete", "numeric", "time", "GoTo", "Add", "DiscreteCase", "Nu
 
 
 def read_yaml(text: str, source: str | None = None) -> Any:
-    """Parse YAML, reporting a syntax error as a problem with its line."""
+    """Parse YAML, reporting a syntax error or a repeated key as a problem with its line.
+
+    PyYAML silently keeps the last of two equal keys; in a model that hides a whole variable
+    or action, so a repeated key is an error here.
+    """
     try:
-        return yaml.load(text, Loader=_Loader)
+        data = yaml.load(text, Loader=_Loader)
+        repeated = _repeated_keys(yaml.compose(text, Loader=_Loader), ())
     except yaml.YAMLError as exc:
         mark = getattr(exc, "problem_mark", None)
         line = mark.line + 1 if mark is not None else None
         reason = getattr(exc, "problem", None) or str(exc)
         raise ModelError([Problem((), f"YAML syntax: {reason}", "yaml", line=line)],
                          source) from None
+    if repeated:
+        raise ModelError(repeated, source)
+    return data
+
+
+def _repeated_keys(node: Any, path: tuple[PathPart, ...]) -> list[Problem]:
+    problems: list[Problem] = []
+    if isinstance(node, yaml.MappingNode):
+        seen: dict[Any, int] = {}
+        for key, value in node.value:
+            name = key.value
+            if name in seen:
+                problems.append(Problem((*path, name), f"key {name!r} is given twice (first on "
+                                        f"line {seen[name]}); the second would silently replace "
+                                        "the first", "yaml", line=key.start_mark.line + 1))
+            seen.setdefault(name, key.start_mark.line + 1)
+            problems += _repeated_keys(value, (*path, name))
+    elif isinstance(node, yaml.SequenceNode):
+        for i, item in enumerate(node.value):
+            problems += _repeated_keys(item, (*path, i))
+    return problems
 
 
 def dump_yaml(data: Any) -> str:
@@ -197,6 +223,9 @@ def load_model(source: str | Path, check: bool = True) -> ApplianceModel:
         text = path.read_text(encoding="utf-8")
     except OSError as exc:
         raise ModelError([Problem((), f"cannot read the file: {exc.strerror}", "io")],
+                         str(path)) from None
+    except UnicodeDecodeError as exc:
+        raise ModelError([Problem((), f"not UTF-8 text (byte {exc.start})", "io")],
                          str(path)) from None
     return parse_model(read_yaml(text, str(path)), str(path), text, check=check)
 

@@ -123,8 +123,17 @@ TimeRangeSpec = tuple[str, str, int | str]
 
 
 def time_step_seconds(step: int | str) -> int:
-    """A time step given as seconds (60) or as ``HH:MM:SS`` ("00:01:00")."""
-    return step if isinstance(step, int) else parse_hms(step)
+    """A time amount given as seconds (60, -30) or as ``HH:MM:SS`` ("00:01:00", "-00:00:30")."""
+    if isinstance(step, int):
+        return step
+    text = str(step).strip()
+    return -parse_hms(text[1:]) if text.startswith("-") else parse_hms(text)
+
+
+def _check_hms(value: str | None) -> str | None:
+    if value is not None:
+        parse_hms(value)  # raises ValueError with the reason; pydantic reports it at the path
+    return value
 
 
 class DiscreteCase(_Strict):
@@ -140,6 +149,21 @@ class NumericCase(_Strict):
 class TimeCase(_Strict):
     ranges: list[TimeRangeSpec] = Field(min_length=1)
     initial: str | None = None
+
+    @field_validator("ranges")
+    @classmethod
+    def _hms(cls, ranges: list[TimeRangeSpec]) -> list[TimeRangeSpec]:
+        for start, stop, step in ranges:
+            parse_hms(start), parse_hms(stop), time_step_seconds(step)
+        return ranges
+
+    @field_validator("initial")
+    @classmethod
+    def _initial_hms(cls, value: str | None) -> str | None:
+        return _check_hms(value)
+
+
+NonEmptyStrings = Annotated[list[str], Field(min_length=1)]
 
 
 def _stringify(values: Any) -> Any:
@@ -166,10 +190,10 @@ class DiscreteVariable(_Variable):
     """Named values in a fixed order (menus, modes, on/off). Wraps by default, like a mode key."""
 
     type: Literal["discrete"]
-    values: list[str] | None = None
+    values: NonEmptyStrings | None = None
     initial: str | None = None
     wrap: bool = True
-    cases: dict[str, list[str] | DiscreteCase] | None = None
+    cases: dict[str, NonEmptyStrings | DiscreteCase] | None = None
 
     @field_validator("values", mode="before")
     @classmethod
@@ -207,7 +231,7 @@ class NumericVariable(_Variable):
     """A number on piecewise ``[from, to, step]`` ranges with a unit. Clamps by default."""
 
     type: Literal["numeric"]
-    ranges: list[RangeSpec] | None = None
+    ranges: list[RangeSpec] | None = Field(default=None, min_length=1)
     unit: str = ""
     initial: Number | None = None
     wrap: bool = False
@@ -226,7 +250,7 @@ class TimeVariable(_Variable):
     """A duration or clock time, canonical ``HH:MM:SS``, on piecewise ranges of seconds."""
 
     type: Literal["time"]
-    ranges: list[TimeRangeSpec] | None = None
+    ranges: list[TimeRangeSpec] | None = Field(default=None, min_length=1)
     initial: str | None = None
     wrap: bool = False
     format: TimeStyle = "hh:mm:ss"
@@ -239,6 +263,11 @@ class TimeVariable(_Variable):
         for start, stop, step in ranges or []:
             parse_hms(start), parse_hms(stop), time_step_seconds(step)
         return ranges
+
+    @field_validator("initial")
+    @classmethod
+    def _initial_hms(cls, value: str | None) -> str | None:
+        return _check_hms(value)
 
     @model_validator(mode="after")
     def _domain_given_once(self) -> TimeVariable:
@@ -279,8 +308,8 @@ class GoTo(_Strict):
 class Add(_Strict):
     """Add (or with a negative amount, subtract) a fixed amount, e.g. a "+30 SEC" key.
 
-    The result snaps up to the next value in the domain; past the end it wraps or clamps.
-    Time amounts are seconds or ``HH:MM:SS``.
+    The result snaps to the next value of the domain in the direction of the change; past an
+    end it wraps or clamps. Time amounts are seconds or ``HH:MM:SS`` (``-HH:MM:SS`` to subtract).
     """
 
     add: Number | str

@@ -26,6 +26,7 @@ from apbot.model.schema import (
     DiscreteVariable,
     GoTo,
     Step,
+    time_step_seconds,
 )
 from apbot.model.values import closest_matches
 
@@ -266,6 +267,10 @@ def _steps(model: ApplianceModel, domains: Mapping[str, list[Domain]]) -> Iterat
                         normalise(target_var, value)
                 except ValueProblem as exc:
                     yield Problem((*path, "set", target), str(exc), "action-variable")
+            if step.variable in step.reset:
+                yield Problem((*path, "reset"), f"the step adjusts {step.variable!r} and also "
+                              "resets it, which undoes every press; remove it from `reset`",
+                              "action-variable")
         if not changes_something:
             yield Problem(("features", feature), "no step of this feature adjusts a variable "
                           "or sets one; name the variable each step adjusts", "missing-variable")
@@ -288,6 +293,12 @@ def _effect_problem(effect: Any, var: Any, doms: list[Domain]) -> str | None:
             return "add applies to numbers and times, not to a discrete variable"
         if isinstance(effect.add, str) and var.type != "time":
             return f"add {effect.add!r}: a numeric variable adds a number"
+        if isinstance(effect.add, str):
+            try:
+                time_step_seconds(effect.add)
+            except ValueError:
+                return (f"add {effect.add!r}: give seconds (30, -30) or HH:MM:SS "
+                        "(\"00:00:30\", \"-00:00:30\")")
     if isinstance(effect, GoTo) and not _in_some(effect.to, var, doms):
         values = [v for d in doms for v in d.values][:8]
         return f"go-to value {effect.to!r} is not a value of the variable ({values})"

@@ -120,12 +120,18 @@ _NUMBER_TOKEN = r"\d+(?:[.,]\d+)?"
 def words_to_number(text: str) -> float | None:
     """Read a number written in words ("forty five", "one and a half", "two hundred").
 
-    Returns None when the text is not a number.
+    Returns None when the text is not a number. A signed number ("-5", "−0.5") is read as
+    such; a hyphen only joins words ("twenty-five"), so "1-2" is not a number.
 
     >>> words_to_number("forty five"), words_to_number("one and a half"), words_to_number("blue")
     (45.0, 1.5, None)
     """
-    tokens = [t for t in re.split(r"[\s-]+", text.lower().strip()) if t and t != "and"]
+    stripped = text.lower().strip().replace("\u2212", "-")  # a typographic minus sign
+    if re.fullmatch(r"[+-]?" + _NUMBER_TOKEN, stripped):
+        return float(stripped.replace(",", "."))
+    if re.search(r"\d-|-\d", stripped):
+        return None  # a range such as "1-2", or a sign inside a phrase
+    tokens = [t for t in re.split(r"[\s-]+", stripped) if t and t != "and"]
     if not tokens:
         return None
     total, current, seen = 0.0, 0.0, False

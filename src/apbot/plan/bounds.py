@@ -127,6 +127,8 @@ class LowerBound:
         self.goal = goal
         cache: dict[Any, Any] = compiled.cache.setdefault("bounds", {})
         self.tables: list[tuple[int, tuple[tuple[float, ...], ...], float]] = []
+        goal_vars = set(goal.variables)
+        self.entries = [_entry_requirements(compiled, v, goal_vars) for v in goal.variables]
         charged = self._charged_dependents()
         for name, v in zip(goal.names, goal.variables, strict=True):
             goal_case = self._goal_case(v)
@@ -135,12 +137,10 @@ class LowerBound:
             if key not in cache:
                 cache[key] = self._table(v, goal.canonical[name], goal_case, reset_cost)
             self.tables.append(cache[key])
-        goal_vars = set(goal.variables)
         # steps where a partly typed buffer may finish a goal variable with one digit
         self.typing_step = {s: step.variable for s, step in enumerate(compiled.steps)
                             if step.variable in goal_vars
                             and any(e[0] == DIGIT for e in step.effects.values())}
-        self.entries = [_entry_requirements(compiled, v, goal_vars) for v in goal.variables]
 
     def __call__(self, state: State, continuing: bool = False) -> float:
         values = state.values
@@ -181,7 +181,8 @@ class LowerBound:
         variable pays for — unless a goal variable's step assigns it as a side effect. Then the
         first goal setting depending on it is charged one press for reaching a default by a
         programme change (the others of the same programme ride along for free). Programmes
-        that one step can change together share a single charge.
+        that one step can change together share a single charge, and a programme whose steps
+        sit in a feature the entry term already charges for is not charged again.
         """
         compiled = self.compiled
         goal_vars = set(self.goal.variables)
@@ -189,6 +190,7 @@ class LowerBound:
         for sid, step in enumerate(compiled.steps):
             for target in {step.variable} | {t for t, _ in step.side}:
                 assigning.setdefault(target, set()).add(sid)
+        entry_features = {f for entry in self.entries if entry is not None for f in entry[1]}
         charged: set[int] = set()
         used_steps: set[int] = set()
         seen_parents: set[int] = set()
@@ -198,7 +200,9 @@ class LowerBound:
                 continue
             seen_parents.add(parent)
             steps = assigning.get(parent, set())
-            if any(compiled.steps[s].variable in goal_vars for s in steps) or steps & used_steps:
+            if any(compiled.steps[s].variable in goal_vars
+                   or compiled.steps[s].feature in entry_features for s in steps) \
+                    or steps & used_steps:
                 continue
             used_steps |= steps
             charged.add(v)

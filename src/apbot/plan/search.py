@@ -22,7 +22,7 @@ from operator import itemgetter
 from apbot.plan.bounds import INF, LowerBound, distances_to, typeable_values
 from apbot.plan.goals import CompiledGoal
 from apbot.plan.visits import SMALL_DOMAIN, Exit, explore_visit, keypad_exits
-from apbot.sim.compiled import DIGIT, CompiledModel, State
+from apbot.sim.compiled import DIGIT, CompiledModel, State, entry_digits
 
 DEFAULT_BUDGET = 200_000
 
@@ -175,9 +175,6 @@ class TaskSearch:
                     return (tuple(s.values[w] for w in writes), s.buffer)
 
                 exits = explore_visit(self.compiled, state, step, entry, inner_key)
-                domain = self.compiled.vars[v].domain(values)
-                if domain is not None and len(domain) > SMALL_DOMAIN:
-                    exits = self._useful(exits, v)
             outcomes = [(tuple(after.values[w] for w in writes), after.buffer, path)
                         for after, path in exits]
             self._visit_cache[cache_key] = outcomes
@@ -207,8 +204,11 @@ class TaskSearch:
         return cached
 
     def _targets_for(self, v: int) -> list[float]:
-        """Values worth typing into a keypad variable: its goal, its current value, and values
-        from which another step reaches the goal cheaply (e.g. type 3:00, then +30 s)."""
+        """Values worth typing into a keypad variable: its goal; values from which another step
+        reaches the goal about as cheaply (type 3:00, then +30 s) — the one place the planner
+        filters candidates by a cost argument instead of enumerating them; and, for each way
+        the guards can see the variable (inside or outside each guard's values), the value with
+        the fewest digits. Small domains offer every value."""
         if v in self._keypad_targets:
             return self._keypad_targets[v]
         var = self.compiled.vars[v]
@@ -232,32 +232,23 @@ class TaskSearch:
                                 <= direct + slack)
                 for _, i in ranked[:SMALL_DOMAIN]:
                     magnitudes[domain.magnitudes[i]] = None
+        guard_sets = [ok for guard in self.compiled.guards for gv, ok in guard.conditions
+                      if gv == v]
+        entry = getattr(var.spec, "entry", None)
         for domain in var.domains:
-            if domain is not None and domain.magnitudes is not None and \
-                    len(domain) <= SMALL_DOMAIN:
+            if domain is None or domain.magnitudes is None:
+                continue
+            if len(domain) <= SMALL_DOMAIN:
                 magnitudes.update(dict.fromkeys(domain.magnitudes))
+                continue
+            cheapest: dict[tuple[bool, ...], tuple[int, float]] = {}
+            for i, magnitude in enumerate(domain.magnitudes):
+                digits = entry_digits(magnitude, entry) if entry is not None else None
+                if digits is None:
+                    continue
+                seen_by_guards = tuple(i in ok for ok in guard_sets)
+                if seen_by_guards not in cheapest or len(digits) < cheapest[seen_by_guards][0]:
+                    cheapest[seen_by_guards] = (len(digits), magnitude)
+            magnitudes.update(dict.fromkeys(m for _, m in cheapest.values()))
         self._keypad_targets[v] = list(magnitudes)
         return self._keypad_targets[v]
-
-    def _useful(self, exits: list[Exit], v: int) -> list[Exit]:
-        """For a large domain, keep the exits that can lead to the goal cheaply.
-
-        Always kept: exits at the goal value, and the cheapest way out of the step (a
-        pass-through). Others are scored by cost plus the bound on what remains for ``v`` and
-        kept while they fit: a value halfway along matters when another step finishes the job
-        more cheaply.
-        """
-        by_cost = min(exits, key=lambda e: len(e[1]))
-        if v not in self.goal.variables:
-            return sorted(exits, key=lambda e: len(e[1]))[:SMALL_DOMAIN]
-        v_bound = self.bound.variable_bound(v)
-        scored = sorted(((len(path) + (rest := v_bound(after)), rest, len(path)), after, path)
-                        for after, path in exits)
-        best = scored[0][0][0]
-        slack = 1 + sum(1 for step in self.compiled.steps for target, _ in step.side
-                        if target in self.goal.variables)
-        at_goal = [(after, path) for score, after, path in scored if score[1] == 0]
-        near = [(after, path) for score, after, path in scored[:SMALL_DOMAIN]
-                if score[1] > 0 and score[0] <= best + slack]
-        kept = at_goal + near
-        return kept if by_cost in kept else [by_cost, *kept]

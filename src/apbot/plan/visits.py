@@ -114,11 +114,14 @@ def keypad_exits(compiled: CompiledModel, state: State, step: int, entry: Sequen
         if None in sequence:
             continue
         path = tuple(a for a in sequence if a is not None)
-        if not continuing and path[0] not in entry:
-            non_digit = [a for a in entry if info.effects[a][0] != DIGIT]
-            if not non_digit:
-                continue
-            path = (non_digit[0], *path)  # enter with a non-digit action, then type
+        if not continuing:
+            if info.show_on_entry:
+                path = (entry[0], *path)  # the entering press only wakes the display
+            elif path[0] not in entry:
+                non_digit = [a for a in entry if info.effects[a][0] != DIGIT]
+                if not non_digit:
+                    continue
+                path = (non_digit[0], *path)  # enter with a non-digit action, then type
         current: State | None = state
         for action in path:
             current = compiled.apply(current, action) if current is not None else None

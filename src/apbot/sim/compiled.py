@@ -123,7 +123,7 @@ def _table_for(effect: Any, domain: Domain, var: Any) -> tuple[int, ...] | None:
         amount = _amount(effect.add, var)
         assert domain.magnitudes is not None
         mags = domain.magnitudes
-        return tuple(domain.snap_index(mags[i] + amount) for i in range(n))
+        return tuple(domain.snap_index(mags[i] + amount, down=amount < 0) for i in range(n))
     return tuple(range(n))
 
 

@@ -72,7 +72,8 @@ class Simulator:
             raise UnknownAction(f"unknown action {action!r}{hint}") from None
 
     def step(self, action: str | int, seconds: float | None = None) -> Observation:
-        """Perform one action. ``seconds`` is how long a hold lasts (default: long enough)."""
+        """Perform one action. ``seconds`` is how long a hold lasts (default: long enough);
+        a press ignores it."""
         aid = action if isinstance(action, int) else self.action_id(action)
         compiled = self.compiled
         new = compiled.apply(self.state, aid, seconds)
