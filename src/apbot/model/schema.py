@@ -146,21 +146,25 @@ class NumericCase(_Strict):
     initial: Number | None = None
 
 
-class TimeCase(_Strict):
-    ranges: list[TimeRangeSpec] = Field(min_length=1)
-    initial: str | None = None
+class _TimeChecks(_Strict):
+    """Times written in a model (ranges, initial) must be valid ``HH:MM:SS``."""
 
-    @field_validator("ranges")
+    @field_validator("ranges", check_fields=False)
     @classmethod
-    def _hms(cls, ranges: list[TimeRangeSpec]) -> list[TimeRangeSpec]:
-        for start, stop, step in ranges:
+    def _hms(cls, ranges: list[TimeRangeSpec] | None) -> list[TimeRangeSpec] | None:
+        for start, stop, step in ranges or []:
             parse_hms(start), parse_hms(stop), time_step_seconds(step)
         return ranges
 
-    @field_validator("initial")
+    @field_validator("initial", check_fields=False)
     @classmethod
     def _initial_hms(cls, value: str | None) -> str | None:
         return _check_hms(value)
+
+
+class TimeCase(_TimeChecks):
+    ranges: list[TimeRangeSpec] = Field(min_length=1)
+    initial: str | None = None
 
 
 NonEmptyStrings = Annotated[list[str], Field(min_length=1)]
@@ -246,7 +250,7 @@ class NumericVariable(_Variable):
         return self
 
 
-class TimeVariable(_Variable):
+class TimeVariable(_Variable, _TimeChecks):
     """A duration or clock time, canonical ``HH:MM:SS``, on piecewise ranges of seconds."""
 
     type: Literal["time"]
@@ -256,18 +260,6 @@ class TimeVariable(_Variable):
     format: TimeStyle = "hh:mm:ss"
     entry: Entry | None = None
     cases: dict[str, TimeCase] | None = None
-
-    @field_validator("ranges")
-    @classmethod
-    def _hms(cls, ranges: list[TimeRangeSpec] | None) -> list[TimeRangeSpec] | None:
-        for start, stop, step in ranges or []:
-            parse_hms(start), parse_hms(stop), time_step_seconds(step)
-        return ranges
-
-    @field_validator("initial")
-    @classmethod
-    def _initial_hms(cls, value: str | None) -> str | None:
-        return _check_hms(value)
 
     @model_validator(mode="after")
     def _domain_given_once(self) -> TimeVariable:
