@@ -7,7 +7,6 @@ YAML syntax errors, schema errors and semantic errors all come back as one
 
 from __future__ import annotations
 
-import re
 from pathlib import Path
 from typing import Any
 
@@ -240,8 +239,3 @@ def model_to_yaml(model: ApplianceModel) -> str:
     data = model.model_dump(mode="json", exclude_defaults=True)
     return dump_yaml(data)
 
-
-def slug(text: str) -> str:
-    """An identifier from free text: ``"Start/Pause"`` -> ``start_pause``."""
-    cleaned = re.sub(r"[^a-z0-9]+", "_", text.lower()).strip("_")
-    return cleaned if cleaned and cleaned[0].isalpha() else f"x_{cleaned}"

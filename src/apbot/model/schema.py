@@ -389,9 +389,6 @@ class ApplianceModel(_Strict):
         """The control with this id, if any."""
         return next((c for c in self.controls if c.id == control_id), None)
 
-    def feature_of_variable(self, name: str) -> list[str]:
-        """Features with a step that adjusts the variable."""
-        return [f for f, steps in self.features.items() if any(s.variable == name for s in steps)]
 
 
 TEMPLATE_FIELD = re.compile(r"\{([a-z][a-z0-9_]*)\}")

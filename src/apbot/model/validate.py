@@ -30,8 +30,6 @@ from apbot.model.schema import (
 )
 from apbot.model.values import closest_matches
 
-VALUE_EFFECTS = {"next", "prev", "toggle", "reset", "clear"}
-
 
 def _unknown(kind: str, name: str, options: list[str]) -> str:
     close = closest_matches(name, options, limit=1)

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from apbot.model.schema import TEMPLATE_FIELD, ApplianceModel
-from apbot.sim.compiled import NOT_HERE, TOO_SHORT, CompiledModel, State
+from apbot.sim.compiled import NOT_HERE, CompiledModel, State
 
 
 @dataclass(slots=True)
@@ -105,7 +105,6 @@ class Simulator:
             observation = self.observe()
         else:
             needed = compiled.hold_seconds[aid]
-            code = TOO_SHORT
             reason = f"{name} must be held for {needed:g} s (held {seconds:g} s)"
             observation = self.observe()
         observation.accepted = False
