@@ -9,6 +9,7 @@ from __future__ import annotations
 import itertools
 from bisect import bisect_left, bisect_right
 from dataclasses import dataclass, field
+from collections.abc import Container, Sequence
 from typing import Any
 
 from apbot.model.schema import (
@@ -168,12 +169,29 @@ def case_domains(var: AnyVariable) -> dict[str, Domain]:
 
 def all_values(var: AnyVariable) -> list[Any]:
     """Every value the variable can take in any case, in first-seen order."""
+    return list(_values_of(var)[0])
+
+
+_VALUES: dict[int, tuple[AnyVariable, tuple[Any, ...], frozenset[Any]]] = {}
+
+
+def _values_of(var: AnyVariable) -> tuple[tuple[Any, ...], frozenset[Any]]:
+    """``all_values`` and its set, remembered per (immutable) variable object: goals and
+    feedback are normalised after every action, and a clock has 1440 values to rebuild."""
+    hit = _VALUES.get(id(var))
+    if hit is not None and hit[0] is var:
+        return hit[1], hit[2]
     if var.depends_on is None:
-        return list(build_domain(var).values)
-    seen: dict[Any, None] = {}
-    for domain in case_domains(var).values():
-        seen.update(dict.fromkeys(domain.values))
-    return list(seen)
+        values = build_domain(var).values
+    else:
+        seen: dict[Any, None] = {}
+        for domain in case_domains(var).values():
+            seen.update(dict.fromkeys(domain.values))
+        values = tuple(seen)
+    if len(_VALUES) >= 1024:
+        _VALUES.pop(next(iter(_VALUES)))
+    _VALUES[id(var)] = (var, values, frozenset(values))
+    return values, _VALUES[id(var)][2]
 
 
 def _summary(values: list[Any]) -> str:
@@ -202,19 +220,22 @@ def normalise(var: AnyVariable, raw: Any, domain: Domain | None = None) -> Any:
     >>> normalise(NumericVariable(type="numeric", ranges=[(0, 120, 30)], unit="min"), "2 h")
     120
     """
-    values = list(domain.values) if domain is not None else all_values(var)
+    if domain is not None:
+        ordered, members = domain.values, domain.index
+    else:
+        ordered, members = _values_of(var)
     if isinstance(var, DiscreteVariable):
-        return _normalise_discrete(raw, values)
+        return _normalise_discrete(raw, ordered, members)
     if isinstance(var, NumericVariable):
         number = _to_number(raw, var.unit)
-        if number not in values:
+        if number not in members:
             raise ValueProblem(f"{number:g}{_unit_suffix(var.unit)} is not one of its values "
-                               f"({_summary(values)})")
+                               f"({_summary(list(ordered))})")
         return number
     seconds = _to_seconds(raw, var.format)
     value = format_hms(seconds)
-    if value not in values:
-        raise ValueProblem(f"{value} is not one of its values ({_summary(values)})")
+    if value not in members:
+        raise ValueProblem(f"{value} is not one of its values ({_summary(list(ordered))})")
     return value
 
 
@@ -222,10 +243,11 @@ def _unit_suffix(unit: str) -> str:
     return f" {unit}" if unit and unit[0].isalnum() else unit
 
 
-def _normalise_discrete(raw: Any, values: list[str]) -> str:
+def _normalise_discrete(raw: Any, ordered: Sequence[str], members: Container[str]) -> str:
     text = str(raw).lower() if isinstance(raw, bool) else str(raw)
-    if text in values:
+    if text in members:
         return text
+    values = list(ordered)
     key = normalise_text(text)
     matches = [v for v in values if normalise_text(v) == key]
     if len(matches) == 1:
