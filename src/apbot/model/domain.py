@@ -8,8 +8,8 @@ from __future__ import annotations
 
 import itertools
 from bisect import bisect_left, bisect_right
-from dataclasses import dataclass, field
 from collections.abc import Container, Sequence
+from dataclasses import dataclass, field
 from typing import Any
 
 from apbot.model.schema import (
