@@ -239,6 +239,28 @@ def normalise(var: AnyVariable, raw: Any, domain: Domain | None = None) -> Any:
     return value
 
 
+def parse_value(var: AnyVariable, raw: Any) -> Any:
+    """Canonical form of ``raw`` for ``var``'s type, *not* checked against its domain.
+
+    A display may show a value the model lacks (35 °C when the model has 0..30 in tens); read
+    the way the model writes values, it is evidence that the model is wrong. Discrete values
+    are the text as shown (stripped). Raises :class:`ValueProblem` when ``raw`` is not a value
+    of that type at all.
+
+    >>> from apbot.model.schema import NumericVariable
+    >>> parse_value(NumericVariable(type="numeric", ranges=[(0, 30, 10)], unit="°C"), "35°C")
+    35
+    """
+    if isinstance(var, DiscreteVariable):
+        text = (str(raw).lower() if isinstance(raw, bool) else str(raw)).strip()
+        if not text:
+            raise ValueProblem("an empty value")
+        return text
+    if isinstance(var, NumericVariable):
+        return _to_number(raw, var.unit)
+    return format_hms(_to_seconds(raw, var.format))
+
+
 def _unit_suffix(unit: str) -> str:
     return f" {unit}" if unit and unit[0].isalnum() else unit
 

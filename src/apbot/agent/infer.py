@@ -1,0 +1,112 @@
+"""Infer a variable's true definition from an exploration trace — by code, not by an LLM.
+
+Exploration presses one action repeatedly and records the value shown after each press, until
+a value repeats. A value repeating right away means an end was hit (clamp); repeating an
+earlier one means the values went round (wrap). From one or two such traces this module
+recovers the order of the values, piecewise ranges and their steps, and wrap vs clamp.
+
+>>> order_from_traces([0, 10, 20, 30, 0], None)
+Order(values=[0, 10, 20, 30], wrap=True, complete=True)
+>>> ranges_from_values([0, 10, 20, 30, 60, 90])
+[(0, 30, 10), (30, 90, 30)]
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+from itertools import pairwise
+from math import gcd
+from typing import Any
+
+
+@dataclass(frozen=True)
+class Order:
+    """Values in the order the explored action visits them.
+
+    ``complete`` is False when only one direction could be explored up to a clamp, so values
+    before the first one seen may exist that were never shown.
+    """
+
+    values: list[Any]
+    wrap: bool
+    complete: bool
+
+
+def order_from_traces(forward: Sequence[Any], backward: Sequence[Any] | None) -> Order:
+    """The value order seen under an action, from its trace (and its opposite's, after a clamp).
+
+    ``forward`` starts with the value before the first press and ends with the first repeat.
+    ``backward`` is the trace of the opposite action started where ``forward`` stopped.
+
+    >>> order_from_traces(["low", "mid", "high", "high"], ["high", "mid", "low", "min", "min"])
+    Order(values=['min', 'low', 'mid', 'high'], wrap=False, complete=True)
+    """
+    if len(forward) < 2:
+        return Order(list(forward), False, False)
+    last = forward[-1]
+    if last == forward[-2]:  # clamped at the end in this direction
+        seen = _unique(forward[:-1])
+        if backward and len(backward) >= 2 and backward[-1] == backward[-2]:
+            down = _unique(backward[:-1])
+            return Order(list(reversed(down)), False, True)
+        return Order(seen, False, False)
+    first = forward.index(last)
+    cycle = _unique(forward[first:-1])
+    return Order(cycle, True, True)
+
+
+def _unique(values: Sequence[Any]) -> list[Any]:
+    return list(dict.fromkeys(values))
+
+
+def ranges_from_values(values: Sequence[float]) -> list[tuple[float, float, float]]:
+    """Piecewise ``(from, to, step)`` ranges that produce exactly these sorted values.
+
+    >>> ranges_from_values([5])
+    [(5, 5, 1)]
+    >>> ranges_from_values([1, 2, 3, 5, 7, 8])
+    [(1, 3, 1), (3, 7, 2), (7, 8, 1)]
+    """
+    points = sorted({_tidy(v) for v in values})
+    if len(points) == 1:
+        return [(points[0], points[0], 1)]
+    ranges: list[tuple[float, float, float]] = []
+    start = points[0]
+    step = points[1] - points[0]
+    for previous, current in pairwise(points[1:]):
+        if current - previous != step:
+            ranges.append((start, previous, step))
+            start, step = previous, current - previous
+    ranges.append((start, points[-1], step))
+    return ranges
+
+
+def common_step(numbers: Sequence[float]) -> float:
+    """The largest step that divides every difference (for widening a keypad domain).
+
+    >>> common_step([0, 30, 90]), common_step([1.5, 2.0])
+    (30, 0.5)
+    """
+    scale = 1000
+    ints = [round(n * scale) for n in numbers]
+    step = 0
+    for a, b in pairwise(ints):
+        step = gcd(step, abs(b - a))
+    if step == 0:
+        return 1
+    result = step / scale
+    return int(result) if result == int(result) else result
+
+
+def typical_change(trace: Sequence[float]) -> float | None:
+    """The most common change between successive values (for an ``add`` action)."""
+    changes = [b - a for a, b in pairwise(trace) if b != a]
+    if not changes:
+        return None
+    return max(set(changes), key=lambda c: (changes.count(c), -abs(c)))
+
+
+def _tidy(number: float) -> float:
+    """Whole numbers as ints, so ranges read ``(10, 30, 1)`` rather than ``(10.0, 30.0, 1.0)``."""
+    return int(number) if float(number).is_integer() else number

@@ -1,0 +1,115 @@
+"""Repairs to a belief model, as data edits: each returns a new validated model.
+
+The closed loop learns facts from feedback (the values a variable really takes, which way a
+key moves it, a step the procedure needs); these functions write such facts into a copy of
+the model. A repair that would make the model invalid raises :class:`RepairError` and the
+agent keeps its old model.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any
+
+from pydantic import ValidationError
+
+from apbot.model.schema import ApplianceModel, DiscreteVariable, TimeVariable
+from apbot.model.validate import check_model
+from apbot.model.values import expand_ranges, format_hms, parse_hms
+from apbot.sim.compiled import default_effect
+
+
+class RepairError(ValueError):
+    """The repaired model would not be valid; the message says why."""
+
+
+def _rebuild(data: dict[str, Any]) -> ApplianceModel:
+    try:
+        model = ApplianceModel.model_validate(data)
+    except ValidationError as exc:
+        first = exc.errors()[0]
+        raise RepairError(f"{'.'.join(str(p) for p in first['loc'])}: {first['msg']}") from None
+    errors = [p for p in check_model(model) if p.severity == "error"]
+    if errors:
+        raise RepairError(str(errors[0]))
+    return model
+
+
+def _dump(model: ApplianceModel) -> dict[str, Any]:
+    return model.model_dump(mode="json", exclude_none=True)
+
+
+def redefine_domain(model: ApplianceModel, name: str, case: str | None, *,
+                    values: Sequence[Any] | None = None,
+                    ranges: Sequence[tuple[float, float, float]] | None = None,
+                    wrap: bool | None = None, current: Any = None) -> ApplianceModel:
+    """A new domain for ``name`` (for the parent's ``case`` when it depends on one).
+
+    Discrete variables take ``values`` in order; numeric and time variables take ``ranges`` of
+    magnitudes (seconds for times). The initial value is kept when it still fits, else the
+    observed ``current`` value (or the first value) becomes it.
+    """
+    data = _dump(model)
+    spec = model.variables[name]
+    var = data["variables"][name]
+    target = var if case is None else var["cases"].setdefault(case, {})
+    if isinstance(spec, DiscreteVariable):
+        assert values is not None
+        new_values = [str(v) for v in values]
+        if case is not None and isinstance(target, list):
+            target = var["cases"][case] = {"values": target}
+        target["values"] = new_values
+        fits = target.get("initial") in new_values
+        if not fits and ("initial" in target or case is None):
+            target["initial"] = str(current) if str(current) in new_values else new_values[0]
+    else:
+        assert ranges is not None
+        allowed = set(expand_ranges([list(r) for r in ranges]))
+        if isinstance(spec, TimeVariable):
+            target["ranges"] = [[format_hms(int(a)), format_hms(int(b)), int(s)]
+                                for a, b, s in ranges]
+        else:
+            target["ranges"] = [list(r) for r in ranges]
+        initial = target.get("initial")
+        if (initial is not None or case is None) and (
+                initial is None or _magnitude(spec, initial) not in allowed):
+            fallback = current if current is not None and _magnitude(spec, current) in allowed \
+                else min(allowed)
+            target["initial"] = (format_hms(int(_magnitude(spec, fallback)))
+                                 if isinstance(spec, TimeVariable) else fallback)
+    if wrap is not None:
+        var["wrap"] = wrap
+    return _rebuild(data)
+
+
+def _magnitude(spec: Any, value: Any) -> float:
+    if isinstance(spec, TimeVariable) and isinstance(value, str):
+        return float(parse_hms(value))
+    return float(value)
+
+
+def set_effects(model: ApplianceModel, feature: str, step: int,
+                effects: dict[str, Any]) -> ApplianceModel:
+    """Give actions of one step new effects (e.g. ``next`` ↔ ``prev``, ``{add: -5}``)."""
+    data = _dump(model)
+    entry = data["features"][feature][step]
+    spec = model.features[feature][step]
+    if isinstance(spec.effect, dict):  # already one effect per action
+        current = entry["effect"]
+    else:
+        current = {a: _plain(default_effect(spec, a, model)) for a in spec.actions}
+    entry["effect"] = {**current, **effects}
+    return _rebuild(data)
+
+
+def _plain(effect: Any) -> Any:
+    return effect.model_dump(mode="json") if hasattr(effect, "model_dump") else effect
+
+
+def insert_step(model: ApplianceModel, feature: str, before: int,
+                actions: Sequence[str]) -> ApplianceModel:
+    """Insert a step that only moves the procedure on (an entry key the model missed)."""
+    data = _dump(model)
+    data["features"][feature].insert(before, {"actions": list(actions),
+                                              "note": "learnt from feedback"})
+    return _rebuild(data)
