@@ -266,7 +266,10 @@ def _unit_suffix(unit: str) -> str:
 
 
 def _normalise_discrete(raw: Any, ordered: Sequence[str], members: Container[str]) -> str:
-    text = str(raw).lower() if isinstance(raw, bool) else str(raw)
+    if isinstance(raw, bool):  # a switch reported as True/False, whatever its words are
+        words = ("true", "on", "yes") if raw else ("false", "off", "no")
+        raw = next((w for w in words if w in members), words[0])
+    text = str(raw)
     if text in members:
         return text
     values = list(ordered)
