@@ -8,7 +8,7 @@ from __future__ import annotations
 import json
 import math
 from pathlib import Path
-from typing import TYPE_CHECKING, Annotated
+from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 from rich import box
@@ -414,6 +414,112 @@ def suite_fill_optimal(appliances: Annotated[list[str] | None, typer.Argument(
     for item in chosen:
         changed = fill_optimal(item)
         console.print(f"{item.id}: {changed} task(s) updated")
+
+
+# --- bench ------------------------------------------------------------------------------------
+
+
+def _names(text: str | None) -> list[str] | None:
+    """``"a, b,"`` -> ``["a", "b"]``; None when not given."""
+    if text is None:
+        return None
+    return [part.strip() for part in text.split(",") if part.strip()]
+
+
+@app.command()
+def bench(suite: Annotated[str, typer.Option(help="'bundled' or a suite directory.")] = "bundled",
+          methods: Annotated[str | None, typer.Option(
+              help="Comma-separated methods (default: all registered).")] = None,
+          categories: Annotated[str | None, typer.Option(
+              help="Comma-separated appliance categories.")] = None,
+          appliances: Annotated[str | None, typer.Option(
+              help="Comma-separated appliance ids.")] = None,
+          sample: Annotated[int | None, typer.Option(
+              help="Only the first N tasks of each appliance.")] = None,
+          workers: Annotated[int | None, typer.Option(
+              help="Worker processes (default: one per core; 1 runs in this process).")] = None,
+          out: Annotated[Path, typer.Option(help="Run directory (results, summary, report).")]
+          = Path("runs/latest"),
+          belief: Annotated[str, typer.Option(
+              help="The model methods work from: true, faulty:RATE or read.")] = "true",
+          seed: Annotated[int, typer.Option(help="Seed for fault injection.")] = 0,
+          rerun: Annotated[bool, typer.Option(
+              help="Discard the directory's finished results and run everything again.")]
+          = False,
+          no_report: Annotated[bool, typer.Option("--no-report",
+                                                  help="Do not write the report.")] = False
+          ) -> None:
+    """Run methods over the benchmark suite; resumable (finished tasks are skipped)."""
+    import os
+
+    from apbot.agent.registry import methods as registered
+    from apbot.bench.beliefs import BeliefError
+    from apbot.bench.results import ResultsError
+    from apbot.bench.runner import BenchError, BenchOptions, run_benchmark
+
+    chosen = _names(methods)
+    options = BenchOptions(suite=suite, methods=chosen if chosen is not None else
+                           list(registered()), categories=_names(categories),
+                           appliances=_names(appliances), sample=sample,
+                           workers=workers if workers is not None else os.cpu_count() or 1,
+                           out=out, belief=belief, seed=seed, rerun=rerun)
+    try:
+        outcome = run_benchmark(options)
+    except (BenchError, BeliefError) as exc:
+        raise _fail(str(exc), 2) from None
+    except (ResultsError, OSError) as exc:
+        raise _fail(str(exc)) from None
+    except KeyboardInterrupt:  # before the run took over Ctrl-C: nothing was started
+        raise _fail("interrupted before any task ran", 130) from None
+    _print_bench(outcome.summary)
+    console.print(f"{outcome.ran} task(s) run, {outcome.skipped} already finished; "
+                  f"results in {outcome.out}")
+    if outcome.interrupted:
+        errors.print(f"[yellow]interrupted[/yellow]: {len(outcome.records)} finished record(s) "
+                     f"kept in {outcome.out}; run the same command again"
+                     f"{' without --rerun' if rerun else ''} to resume")
+        raise typer.Exit(130)
+    if not no_report:
+        _bench_report(outcome.out)
+
+
+def _print_bench(summary: dict[str, Any]) -> None:
+    """Overall figures per method, then SR / reasoning steps per category (the paper's table,
+    transposed so it fits a terminal: one row per category)."""
+    rows = summary["methods"]
+    overall = Table(title=f"belief: {summary['belief']}", box=box.SIMPLE_HEAD,
+                    caption="steps: mean per task (reasoning = macro actions, "
+                            "execution = presses)")
+    overall.add_column("method", no_wrap=True)
+    for column in ("SR", "SPL", "reasoning", "execution", "n"):
+        overall.add_column(column, justify="right", no_wrap=True)
+    for name, row in rows.items():
+        o = row["overall"]
+        overall.add_row(name, f"{o['sr']:.2f}", f"{o['spl']:.2f}", f"{o['reasoning_steps']:.2f}",
+                        f"{o['execution_steps']:.2f}", str(o["n"]))
+    console.print(overall)
+    categories = sorted({c for row in rows.values() for c in row["categories"]})
+    if not categories:
+        return
+    table = Table(title="SR / reasoning steps by category", box=box.SIMPLE_HEAD)
+    table.add_column("category", no_wrap=True)
+    for name in rows:  # long method names fold in the header; the cells never wrap
+        table.add_column(name, justify="right", min_width=9, overflow="fold")
+    for category in categories:
+        cells = [row["categories"].get(category) for row in rows.values()]
+        table.add_row(category, *(f"{c['sr']:.2f}/{c['reasoning_steps']:.1f}" if c else "–"
+                                  for c in cells))
+    console.print(table)
+
+
+def _bench_report(out: Path) -> None:
+    try:
+        from apbot.bench.report import write_report
+    except ImportError:
+        console.print("[dim]report skipped: apbot.bench.report is not available[/dim]")
+        return
+    for path in write_report(out):
+        console.print(f"report: {path}")
 
 
 def main() -> None:

@@ -41,6 +41,8 @@ def order_from_traces(forward: Sequence[Any], backward: Sequence[Any] | None) ->
 
     >>> order_from_traces(["low", "mid", "high", "high"], ["high", "mid", "low", "min", "min"])
     Order(values=['min', 'low', 'mid', 'high'], wrap=False, complete=True)
+    >>> order_from_traces(["3", "4", "4"], ["4", "3", "2", "1"])  # "1" was the last one shown
+    Order(values=['1', '2', '3', '4'], wrap=False, complete=False)
     """
     if len(forward) < 2:
         return Order(list(forward), False, False)
@@ -50,6 +52,9 @@ def order_from_traces(forward: Sequence[Any], backward: Sequence[Any] | None) ->
         if backward and len(backward) >= 2 and backward[-1] == backward[-2]:
             down = _unique(backward[:-1])
             return Order(list(reversed(down)), False, True)
+        if backward:  # walked back without reaching the other end (the display went dark)
+            below = [v for v in _unique(backward) if v not in seen]
+            return Order(list(reversed(below)) + seen, False, False)
         return Order(seen, False, False)
     first = forward.index(last)
     cycle = _unique(forward[first:-1])

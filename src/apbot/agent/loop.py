@@ -315,7 +315,13 @@ class _Run:
 
     def _execute(self, macro: MacroAction) -> list[Executed]:
         if self.config.button_policy:
-            return [self._press(action) for action in macro.actions]
+            executed = []
+            for action in macro.actions:
+                executed.append(self._press(action))
+                if self.config.closed_loop and executed[-1].believed_accepted and \
+                        not executed[-1].feedback.accepted:
+                    break  # the appliance refused what the model allows: stop and find out why
+            return executed
         return self._execute_greedily(macro)
 
     def _execute_greedily(self, macro: MacroAction) -> list[Executed]:
@@ -497,6 +503,10 @@ class _Run:
         before, after = entering.before, entering.pointer
         if before is None or after is None or before[0] == after[0]:
             return False
+        shown = self._estimate(entering.feedback).values
+        staying = {s.variable for s in self.belief.model.features[before[0]]} - {None}
+        if entering.variable in staying or not staying & set(shown):
+            return False  # the display moved on: the action did start something else
         key = f"absorbed:{before[0]}:{entering.action.name}"
         if self.mismatches[key]:
             return False
@@ -607,6 +617,8 @@ class _Run:
         case = self._case(name)
         effect = self._effect(pointer, action)
         order = order_from_traces(forward, backward)
+        if not order.values:
+            return
         notes: list[str] = []
         try:
             if isinstance(spec, DiscreteVariable):

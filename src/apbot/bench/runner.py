@@ -1,0 +1,471 @@
+"""Run methods over the suite: resumable, parallel, interruptible, judged on the true simulator.
+
+Every finished (method, task) is appended to ``results.jsonl`` in the run directory at once,
+so a run killed at any moment resumes where it stopped (finished keys are skipped) and ends
+with the same records as an uninterrupted run. ``run.json`` pins the suite, belief and seed of
+a directory: mixing runs with different ones would make the records' keys ambiguous.
+
+Work runs in worker processes (``workers=1``: in this process), sent in small batches because
+one task often takes less time than shipping it; only the main process writes files.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import sys
+import time
+from collections import deque
+from collections.abc import Callable, Iterator
+from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
+from contextlib import contextmanager
+from dataclasses import dataclass, field
+from datetime import UTC, datetime
+from functools import lru_cache
+from pathlib import Path
+from typing import Any
+
+from apbot.agent.environment import SimulatorEnvironment
+from apbot.agent.episode import MAX_REASONING_STEPS, Episode, TaskContext
+from apbot.agent.registry import get_method, methods
+from apbot.bench.beliefs import BeliefError, BeliefSpec, belief_model, parse_belief
+from apbot.bench.metrics import summarise
+from apbot.bench.records import TaskRecord, record_key, spl
+from apbot.bench.results import RESULTS_FILE, ResultStore
+from apbot.bench.suite import Suite, SuiteAppliance, Task, load_suite
+from apbot.model.goal import parse_goal
+from apbot.model.schema import ApplianceModel
+
+RUN_FILE = "run.json"
+SUMMARY_FILE = "summary.json"
+PINNED = ("suite", "belief", "seed")  # what a run directory cannot mix
+
+
+class BenchError(ValueError):
+    """A benchmark that cannot start as asked; the message says what to change."""
+
+
+def _default_methods() -> list[str]:
+    return list(methods())
+
+
+@dataclass
+class BenchOptions:
+    """What to run and where. ``sample``: only the first N tasks of each appliance."""
+
+    suite: str = "bundled"
+    methods: list[str] = field(default_factory=_default_methods)
+    categories: list[str] | None = None
+    appliances: list[str] | None = None
+    sample: int | None = None
+    workers: int = field(default_factory=lambda: os.cpu_count() or 1)
+    out: Path = Path("runs/latest")
+    belief: str = "true"
+    seed: int = 0
+    rerun: bool = False
+
+
+@dataclass
+class BenchOutcome:
+    """The records of the selected work (finished so far), the summary written, and counts."""
+
+    records: list[TaskRecord]
+    summary: dict[str, Any]
+    out: Path
+    interrupted: bool
+    ran: int
+    skipped: int
+
+
+@dataclass(frozen=True)
+class WorkItem:
+    method: str
+    appliance: str
+    task: str
+
+
+# --- one task (runs in the workers) -----------------------------------------------------------
+
+_SUITES: dict[str, Suite] = {}
+
+
+def cached_suite(name: str) -> Suite:
+    """The suite, loaded once per process (forked workers inherit the main process's copy)."""
+    if name not in _SUITES:
+        _SUITES[name] = load_suite(name)
+    return _SUITES[name]
+
+
+def _find(suite: str, appliance_id: str, task_id: str) -> tuple[SuiteAppliance, Task]:
+    appliance = cached_suite(suite).get(appliance_id)
+    for task in appliance.tasks:
+        if task.id == task_id:
+            return appliance, task
+    raise KeyError(f"appliance {appliance_id!r} has no task {task_id!r}")
+
+
+@lru_cache(maxsize=256)
+def _belief(suite: str, appliance_id: str, spec: BeliefSpec,
+            seed: int) -> tuple[ApplianceModel, tuple[str, ...]]:
+    """The belief model for an appliance (models are frozen, so one copy serves every task)."""
+    model, faults = belief_model(cached_suite(suite).get(appliance_id), spec, seed)
+    return model, tuple(faults)
+
+
+def _optimal(appliance: SuiteAppliance, task: Task, goal: dict[str, Any]) -> int:
+    """The task's stored optimum, or the planner's on the ground truth when it is missing."""
+    if task.optimal_steps is not None:
+        return task.optimal_steps
+    from apbot.plan.plan import plan
+
+    return len(plan(appliance.model, None, goal))
+
+
+def _describe(exc: BaseException) -> str:
+    return f"{type(exc).__name__}: {exc}"
+
+
+def run_one(method: str, belief: str, seed: int, appliance_id: str, task_id: str,
+            suite: str) -> TaskRecord:
+    """Run one method on one task and judge the result on the true simulator.
+
+    Success means the task's goal (normalised on the true model) holds in the environment's
+    final state and the method stayed within the reasoning-step limit; what the method claims
+    is recorded but not trusted. An exception in the method gives a failed record.
+    """
+    started = time.perf_counter()
+    appliance, task = _find(suite, appliance_id, task_id)
+    spec = parse_belief(belief)
+    chosen = get_method(method)
+    env = SimulatorEnvironment(appliance.model)
+    episode, faults, error = Episode(), (), ""
+    context: TaskContext | None = None
+    try:
+        model, faults = ((appliance.model, ()) if chosen.uses_truth
+                         else _belief(suite, appliance.id, spec, seed))
+    except Exception as exc:
+        error = f"error: building the belief: {_describe(exc)}"
+    else:
+        context = TaskContext(appliance.id, appliance.category, task.id, task.instruction,
+                              dict(task.goal), model, appliance.manual, tuple(env.actions))
+        try:
+            result = chosen.run(context, env)
+            if not isinstance(result, Episode):
+                raise TypeError(f"method returned {type(result).__name__}, not an Episode")
+            episode = result
+        except Exception as exc:
+            error = f"error: {_describe(exc)}"
+    limit = context.max_reasoning_steps if context is not None else MAX_REASONING_STEPS
+    goal = parse_goal(appliance.model, task.goal)
+    final = {name: env.simulator.value(name) for name in goal}
+    reached = all(final[name] == value for name, value in goal.items())
+    within = episode.reasoning_steps <= limit
+    success = not error and reached and within
+    failure = "" if success else error or _failure(episode, goal, final, reached, limit)
+    optimal = _optimal(appliance, task, goal)
+    return TaskRecord(
+        key=record_key(method, str(spec), appliance.id, task.id), method=method,
+        belief=str(spec), appliance=appliance.id, category=appliance.category, task=task.id,
+        instruction=task.instruction, goal=dict(task.goal), goal_variables=len(task.goal),
+        success=success, claimed_success=episode.claimed_success,
+        reasoning_steps=episode.reasoning_steps, execution_steps=env.steps,
+        optimal_steps=optimal, spl=spl(success, optimal, env.steps), failure=failure,
+        repairs=list(episode.repairs), faults=list(faults), final_values=final,
+        trace=[event.to_dict() for event in episode.trace],
+        timings={"seconds": round(time.perf_counter() - started, 6)},
+        llm_usage=dict(episode.llm_usage))
+
+
+def _failure(episode: Episode, goal: dict[str, Any], final: dict[str, Any], reached: bool,
+             limit: int) -> str:
+    """One line saying why a run failed, the method's own reason first."""
+    parts = []
+    if episode.reasoning_steps > limit:
+        parts.append(f"over the reasoning-step limit ({episode.reasoning_steps} > {limit})")
+    if episode.failure:
+        parts.append(episode.failure)
+    if not reached:
+        wrong = ", ".join(f"{name}={final[name]!r} (want {value!r})"
+                          for name, value in goal.items() if final[name] != value)
+        claim = "claimed success but " if episode.claimed_success and not episode.failure else ""
+        parts.append(f"{claim}goal not met: {wrong}")
+    return "; ".join(parts)
+
+
+def _run_batch(items: list[WorkItem], belief: str, seed: int, suite: str) -> list[TaskRecord]:
+    return [run_one(i.method, belief, seed, i.appliance, i.task, suite) for i in items]
+
+
+def _worker_init() -> None:
+    """Workers leave Ctrl-C to the main process, which stops them cleanly."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
+# --- selecting the work -----------------------------------------------------------------------
+
+
+def _unknown(what: str, bad: list[str], known: list[str]) -> BenchError:
+    """An error naming the unknown names, the closest known one, and every valid name."""
+    from apbot.model.values import closest_matches
+
+    close = closest_matches(bad[0], known, limit=1)
+    hint = f" (did you mean {close[0]!r}?)" if close else ""
+    return BenchError(f"unknown {what} {', '.join(bad)}{hint}; known: {', '.join(known)}")
+
+
+def select_work(options: BenchOptions, suite: Suite) -> list[WorkItem]:
+    """The (method, task) pairs to run, interleaved so a partial run has some of everything.
+
+    Order: the first task of every appliance (every method), then the second, and so on.
+    Raises :class:`BenchError` for an unknown method, category or appliance, listing the
+    valid ones.
+    """
+    known = list(methods())
+    if not options.methods:
+        raise BenchError(f"no methods selected; known: {', '.join(known)}")
+    unknown = [m for m in options.methods if m not in known]
+    if unknown:
+        raise _unknown("method(s)", unknown, known)
+    chosen = suite.appliances
+    if options.categories:
+        categories = sorted({a.category for a in suite.appliances})
+        bad = [c for c in options.categories if c not in categories]
+        if bad:
+            raise _unknown("category(ies)", bad, categories)
+        chosen = [a for a in chosen if a.category in options.categories]
+    if options.appliances:
+        ids = [a.id for a in suite.appliances]
+        bad = [a for a in options.appliances if a not in ids]
+        if bad:
+            raise _unknown("appliance(s)", bad, ids)
+        outside = [a for a in options.appliances if a not in {c.id for c in chosen}]
+        if outside:
+            raise BenchError(f"appliance(s) {', '.join(outside)} not in the selected "
+                             f"categories {', '.join(options.categories or [])}")
+        chosen = [a for a in chosen if a.id in options.appliances]
+    if options.sample is not None and options.sample < 1:
+        raise BenchError(f"--sample must be at least 1 (got {options.sample})")
+    methods_in_order = list(dict.fromkeys(options.methods))
+    depth = max((len(a.tasks) for a in chosen), default=0)
+    if options.sample is not None:
+        depth = min(depth, options.sample)
+    return [WorkItem(m, a.id, a.tasks[i].id) for i in range(depth) for a in chosen
+            if i < len(a.tasks) for m in methods_in_order]
+
+
+# --- the run directory ------------------------------------------------------------------------
+
+
+def _now() -> str:
+    return datetime.now(UTC).isoformat(timespec="seconds")
+
+
+def _prepare_directory(options: BenchOptions, spec: BeliefSpec, work: list[WorkItem]) -> None:
+    """Write ``run.json``; refuse to mix another suite, belief or seed into the directory."""
+    out = options.out
+    run_file = out / RUN_FILE
+    wanted = {"suite": str(options.suite), "belief": str(spec), "seed": options.seed}
+    previous: dict[str, Any] = {}
+    if run_file.exists() and not options.rerun:
+        try:
+            previous = json.loads(run_file.read_text(encoding="utf-8"))
+        except (OSError, ValueError) as exc:
+            raise BenchError(f"{run_file} cannot be read ({exc}); use --rerun or another "
+                             "--out") from None
+        differ = [f"{k} {previous.get(k)!r} (asked: {wanted[k]!r})" for k in PINNED
+                  if previous.get(k) != wanted[k]]
+        if differ:
+            raise BenchError(f"{out} holds a run with {'; '.join(differ)}; use another --out, "
+                             "or --rerun to discard its results")
+    elif (out / RESULTS_FILE).exists() and not options.rerun:
+        raise BenchError(f"{out} has {RESULTS_FILE} but no {RUN_FILE}, so its suite, belief "
+                         "and seed are unknown; use another --out, or --rerun to discard it")
+    out.mkdir(parents=True, exist_ok=True)
+    info = {**wanted, "methods": list(dict.fromkeys(options.methods)),
+            "selection": {"categories": options.categories, "appliances": options.appliances,
+                          "sample": options.sample},
+            "tasks": len(work), "started": previous.get("started", _now()), "updated": _now()}
+    _write_json(run_file, info)
+
+
+def _write_json(path: Path, data: Any) -> None:
+    """Write JSON atomically (a reader never sees half a file)."""
+    temporary = path.with_name(path.name + ".tmp")
+    temporary.write_text(json.dumps(data, indent=2, sort_keys=True, ensure_ascii=False) + "\n",
+                         encoding="utf-8")
+    os.replace(temporary, path)
+
+
+# --- Ctrl-C -----------------------------------------------------------------------------------
+
+
+class _Stop:
+    """Ctrl-C once: finish the running tasks, start no more. Twice: abandon them too."""
+
+    def __init__(self, in_process: bool) -> None:
+        self.requested = False
+        self.hard = False
+        self.in_process = in_process
+        self.notice: Callable[[str], None] = lambda message: None
+
+    def __call__(self, signum: int, frame: Any) -> None:
+        if self.requested:
+            self.hard = True
+            if self.in_process:
+                raise KeyboardInterrupt
+            return
+        self.requested = True
+        self.notice("stopping: finishing the running tasks (Ctrl-C again to abandon them)")
+
+
+@contextmanager
+def _sigint(stop: _Stop) -> Iterator[None]:
+    try:
+        previous = signal.signal(signal.SIGINT, stop)
+    except ValueError:  # not the main thread: leave Ctrl-C alone
+        yield
+        return
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
+
+
+# --- the run ----------------------------------------------------------------------------------
+
+
+def _batches(items: list[WorkItem], workers: int) -> list[list[WorkItem]]:
+    """Small enough to balance and to stop quickly; big enough that shipping is cheap."""
+    size = max(1, min(16, len(items) // (workers * 8)))
+    return [items[i:i + size] for i in range(0, len(items), size)]
+
+
+def run_benchmark(options: BenchOptions, progress: bool = True) -> BenchOutcome:
+    """Run the selected work into ``options.out``, skipping what is finished, and summarise.
+
+    Returns with ``interrupted=True`` after Ctrl-C, having kept every finished record.
+    """
+    spec = parse_belief(options.belief)
+    if spec.kind == "faulty":
+        try:
+            import apbot.bench.faults  # noqa: F401
+        except ImportError as exc:
+            raise BeliefError(f"belief {str(spec)!r} needs fault injection, which is not "
+                              f"available: {exc}") from None
+    if options.workers < 1:
+        raise BenchError(f"--workers must be at least 1 (got {options.workers})")
+    try:
+        suite = cached_suite(str(options.suite))
+    except FileNotFoundError as exc:
+        raise BenchError(str(exc)) from None
+    work = select_work(options, suite)
+    _prepare_directory(options, spec, work)
+    store = ResultStore(options.out / RESULTS_FILE)
+    if options.rerun:
+        store.clear()
+    finished = store.load()
+    keys = {record_key(w.method, str(spec), w.appliance, w.task): w for w in work}
+    pending = [w for k, w in keys.items() if k not in finished]
+    done = [finished[k] for k in keys if k in finished]
+
+    new: list[TaskRecord] = []
+    stop = _Stop(in_process=options.workers == 1 or len(pending) <= 1)
+    with _progress(progress, options.methods, done, work) as advance, _sigint(stop):
+        stop.notice = advance.notice
+        try:
+            for record in _execute(pending, str(spec), options, stop):
+                store.append(record)
+                new.append(record)
+                advance(record)
+        except KeyboardInterrupt:  # a second Ctrl-C between tasks, in this process
+            stop.requested = True
+    interrupted = stop.requested
+
+    everything = store.load()
+    selected = sorted((everything[k] for k in keys if k in everything), key=lambda r: r.key)
+    summary = summarise(selected, belief=str(spec))
+    _write_json(options.out / SUMMARY_FILE, summary)
+    return BenchOutcome(selected, summary, options.out, interrupted, len(new), len(done))
+
+
+def _execute(pending: list[WorkItem], belief: str, options: BenchOptions,
+             stop: _Stop) -> Iterator[TaskRecord]:
+    """Yield records as tasks finish, in this process or a pool, until done or stopped."""
+    suite = str(options.suite)
+    if options.workers == 1 or len(pending) <= 1:
+        try:
+            for item in pending:
+                if stop.requested:
+                    return
+                yield run_one(item.method, belief, options.seed, item.appliance, item.task, suite)
+        except KeyboardInterrupt:
+            stop.requested = True
+        return
+    queue = deque(_batches(pending, options.workers))
+    window = options.workers * 2
+    pool = ProcessPoolExecutor(min(options.workers, len(queue)), initializer=_worker_init)
+    running: set[Future[list[TaskRecord]]] = set()
+    try:
+        while queue or running:
+            while queue and len(running) < window and not stop.requested:
+                running.add(pool.submit(_run_batch, queue.popleft(), belief, options.seed,
+                                        suite))
+            if not running or stop.hard:
+                break
+            finished, _ = wait(running, timeout=0.25, return_when=FIRST_COMPLETED)
+            for future in finished:
+                running.discard(future)
+                yield from future.result()
+    finally:
+        if running:  # abandoned after a second Ctrl-C (or an error): end the workers now
+            for process in list(getattr(pool, "_processes", {}).values()):
+                process.terminate()
+        pool.shutdown(wait=True, cancel_futures=True)
+
+
+class _Advance:
+    """Progress updates: one bar per method with its live success count."""
+
+    def __init__(self, bar: Any, tasks: dict[str, Any], ok: dict[str, int]) -> None:
+        self.bar, self.tasks, self.ok = bar, tasks, ok
+
+    def __call__(self, record: TaskRecord) -> None:
+        if self.bar is None:
+            return
+        self.ok[record.method] += record.success
+        self.bar.update(self.tasks[record.method], advance=1, ok=self.ok[record.method])
+
+    def notice(self, message: str) -> None:
+        if self.bar is not None:
+            self.bar.console.print(f"[yellow]{message}[/yellow]")
+        else:
+            print(message, file=sys.stderr, flush=True)
+
+
+@contextmanager
+def _progress(enabled: bool, chosen: list[str], done: list[TaskRecord],
+              work: list[WorkItem]) -> Iterator[_Advance]:
+    if not enabled:
+        yield _Advance(None, {}, {})
+        return
+    from rich.console import Console
+    from rich.progress import (
+        BarColumn,
+        MofNCompleteColumn,
+        Progress,
+        TextColumn,
+        TimeElapsedColumn,
+    )
+
+    console = Console(stderr=True)
+    names = list(dict.fromkeys(chosen))
+    ok = {m: sum(r.success for r in done if r.method == m) for m in names}
+    with Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(),
+                  TextColumn("[green]{task.fields[ok]} ok"), TimeElapsedColumn(),
+                  console=console, disable=not console.is_terminal) as bar:
+        width = max(map(len, names), default=0)
+        tasks = {m: bar.add_task(m.ljust(width), total=sum(w.method == m for w in work),
+                                 completed=sum(r.method == m for r in done), ok=ok[m])
+                 for m in names}
+        yield _Advance(bar, tasks, ok)

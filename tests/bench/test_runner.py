@@ -1,0 +1,200 @@
+"""The benchmark runner: judged on the true state, resumable, robust to bad methods."""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from apbot.agent.environment import Environment
+from apbot.agent.episode import Episode, TaskContext
+from apbot.agent.methods import run_oracle
+from apbot.agent.registry import Method, methods, register
+from apbot.bench.beliefs import BeliefError, belief_model, parse_belief
+from apbot.bench.results import RESULTS_FILE, read_records
+from apbot.bench.runner import BenchError, BenchOptions, cached_suite, run_benchmark, run_one
+from apbot.cli import app
+
+
+def _liar(context: TaskContext, env: Environment) -> Episode:
+    """Claims success without touching the appliance."""
+    return Episode(claimed_success=True, reasoning_steps=1)
+
+
+def _crash(context: TaskContext, env: Environment) -> Episode:
+    env.step(env.actions[0])
+    raise RuntimeError("boom")
+
+
+def _overthink(context: TaskContext, env: Environment) -> Episode:
+    """Reaches the goal, but only after too many reasoning steps, and misreports its presses."""
+    episode = run_oracle(context, env)
+    episode.reasoning_steps = context.max_reasoning_steps + 1
+    episode.execution_steps = 0
+    return episode
+
+
+def _interrupt(context: TaskContext, env: Environment) -> Episode:
+    """Ctrl-C arrives while this method runs."""
+    os.kill(os.getpid(), signal.SIGINT)
+    return run_oracle(context, env)
+
+
+FAKES = {"test-liar": _liar, "test-crash": _crash, "test-overthink": _overthink,
+         "test-interrupt": _interrupt}
+
+
+@pytest.fixture(scope="module", autouse=True)
+def fake_methods() -> None:
+    known = methods()
+    for name, run in FAKES.items():
+        if name not in known:
+            register(Method(name, run, "a method for the runner's tests"))
+
+
+def options(tmp_path: Path, **changes: object) -> BenchOptions:
+    base = BenchOptions(methods=["oracle"], appliances=["kettle_1", "dehumidifier_1"],
+                        sample=1, workers=1, out=tmp_path / "run")
+    for name, value in changes.items():
+        setattr(base, name, value)
+    return base
+
+
+def test_oracle_run_writes_records_run_json_and_summary(tmp_path: Path) -> None:
+    outcome = run_benchmark(options(tmp_path), progress=False)
+    assert (outcome.ran, outcome.skipped, outcome.interrupted) == (2, 0, False)
+    assert all(r.success and r.spl == 1.0 for r in outcome.records)
+    record = outcome.records[0]
+    assert record.execution_steps == record.optimal_steps
+    assert record.trace and record.trace[-1]["kind"] == "stop"
+    assert set(record.final_values) == set(record.goal)
+    run = json.loads((tmp_path / "run" / "run.json").read_text())
+    assert (run["suite"], run["belief"], run["seed"], run["methods"]) == (
+        "bundled", "true", 0, ["oracle"])
+    summary = json.loads((tmp_path / "run" / "summary.json").read_text())
+    assert summary == outcome.summary
+    assert summary["methods"]["oracle"]["overall"]["n"] == 2
+    assert "timings" not in json.dumps(summary)
+
+
+def test_resume_skips_finished_records(tmp_path: Path) -> None:
+    first = run_benchmark(options(tmp_path), progress=False)
+    again = run_benchmark(options(tmp_path), progress=False)
+    assert (again.ran, again.skipped) == (0, 2)
+    assert [r.key for r in again.records] == [r.key for r in first.records]
+    wider = run_benchmark(options(tmp_path, sample=2), progress=False)
+    assert (wider.ran, wider.skipped) == (2, 2)
+    lines = (tmp_path / "run" / RESULTS_FILE).read_text().splitlines()
+    assert len(lines) == 4 == len({json.loads(line)["key"] for line in lines})
+    assert wider.summary["methods"]["oracle"]["overall"]["n"] == 4
+    rerun = run_benchmark(options(tmp_path, rerun=True), progress=False)
+    assert (rerun.ran, rerun.skipped) == (2, 0)
+    assert len(read_records(tmp_path / "run")) == 2
+
+
+def test_a_torn_last_line_is_dropped_and_rerun(tmp_path: Path) -> None:
+    run_benchmark(options(tmp_path), progress=False)
+    results = tmp_path / "run" / RESULTS_FILE
+    lines = results.read_bytes().splitlines(keepends=True)
+    results.write_bytes(lines[0] + lines[1][: len(lines[1]) // 2])  # killed mid-write
+    outcome = run_benchmark(options(tmp_path), progress=False)
+    assert (outcome.ran, outcome.skipped) == (1, 1)
+    assert len(results.read_text().splitlines()) == 2
+    assert all(r.success for r in read_records(tmp_path / "run"))
+
+
+def test_a_directory_does_not_mix_seeds_or_beliefs(tmp_path: Path) -> None:
+    run_benchmark(options(tmp_path), progress=False)
+    with pytest.raises(BenchError, match=r"seed 0 \(asked: 1\).*--rerun"):
+        run_benchmark(options(tmp_path, seed=1), progress=False)
+    with pytest.raises(BenchError, match=r"belief 'true' \(asked: 'faulty:0.1'\)"):
+        run_benchmark(options(tmp_path, belief="faulty:0.1"), progress=False)
+    outcome = run_benchmark(options(tmp_path, seed=1, rerun=True), progress=False)
+    assert outcome.ran == 2
+
+
+def test_a_crashing_method_gives_a_failed_record_and_the_run_goes_on(tmp_path: Path) -> None:
+    outcome = run_benchmark(options(tmp_path, methods=["test-crash", "oracle"]), progress=False)
+    assert outcome.ran == 4
+    crashed = [r for r in outcome.records if r.method == "test-crash"]
+    assert len(crashed) == 2
+    assert all(not r.success and r.failure == "error: RuntimeError: boom" for r in crashed)
+    assert all(r.execution_steps == 1 for r in crashed)  # the environment's count
+    assert all(r.success for r in outcome.records if r.method == "oracle")
+
+
+def test_success_is_judged_on_the_true_state_not_the_claim() -> None:
+    record = run_one("test-liar", "true", 0, "kettle_1", "t01", "bundled")
+    assert record.claimed_success and not record.success
+    assert record.spl == 0.0 and record.execution_steps == 0
+    assert "claimed success but goal not met" in record.failure
+
+
+def test_too_many_reasoning_steps_is_a_failure_even_at_the_goal() -> None:
+    record = run_one("test-overthink", "true", 0, "kettle_1", "t01", "bundled")
+    assert not record.success and record.reasoning_steps == 26
+    assert "reasoning-step limit (26 > 25)" in record.failure
+    goal = cached_suite("bundled").get("kettle_1").tasks[0].goal
+    assert len(record.final_values) == len(goal)  # the goal was reached all the same
+    assert record.execution_steps == record.optimal_steps > 0  # counted by the environment
+
+
+def test_workers_give_the_same_records_as_one_process(tmp_path: Path) -> None:
+    chosen = ["oracle", "test-liar"]
+    alone = run_benchmark(options(tmp_path, methods=chosen), progress=False)
+    pooled = run_benchmark(options(tmp_path, methods=chosen, workers=2, out=tmp_path / "pool"),
+                           progress=False)
+    strip = [r.model_dump(exclude={"timings"}) for r in alone.records]
+    assert strip == [r.model_dump(exclude={"timings"}) for r in pooled.records]
+    assert (tmp_path / "run" / "summary.json").read_bytes() == (
+        tmp_path / "pool" / "summary.json").read_bytes()
+
+
+def test_ctrl_c_stops_cleanly_and_keeps_finished_records(tmp_path: Path) -> None:
+    before = signal.getsignal(signal.SIGINT)
+    outcome = run_benchmark(options(tmp_path, methods=["oracle", "test-interrupt"]),
+                            progress=False)
+    assert outcome.interrupted
+    assert outcome.ran == 2  # the first task of each method; the second appliance never started
+    assert len(read_records(tmp_path / "run")) == 2
+    assert signal.getsignal(signal.SIGINT) is before  # Ctrl-C handling restored
+
+
+def test_beliefs() -> None:
+    assert str(parse_belief(" faulty:0.50 ")) == "faulty:0.5"
+    for bad, message in (("read", "not available yet"), ("faulty:x", "not a number"),
+                         ("faulty:1.5", "between 0 and 1"), ("truth", "accepted: 'true'")):
+        with pytest.raises(BeliefError, match=message):
+            parse_belief(bad)
+    appliance = cached_suite("bundled").get("kettle_1")
+    assert belief_model(appliance, "true", 0) == (appliance.model, [])
+    model, faults = belief_model(appliance, "faulty:1", 3)
+    assert faults and model != appliance.model
+    assert belief_model(appliance, "faulty:1", 3) == (model, faults)  # seeded
+
+
+def test_the_oracle_keeps_the_run_belief_but_plans_on_the_truth() -> None:
+    record = run_one("oracle", "faulty:1", 0, "kettle_1", "t01", "bundled")
+    assert record.belief == "faulty:1" and record.key == "oracle|faulty:1|kettle_1/t01"
+    assert record.success and record.faults == []
+
+
+def test_cli_rejects_an_unknown_method(tmp_path: Path) -> None:
+    result = CliRunner().invoke(app, ["bench", "--methods", "oracle,apbot-openloop",
+                                      "--out", str(tmp_path / "x")])
+    assert result.exit_code == 2
+    assert "unknown method(s) apbot-openloop" in result.output
+    assert "did you mean 'apbot-open-loop'" in result.output and "oracle" in result.output
+    assert not (tmp_path / "x").exists()
+
+
+def test_cli_runs_and_prints_the_table(tmp_path: Path) -> None:
+    result = CliRunner().invoke(app, ["bench", "--methods", "oracle", "--appliances", "kettle_1",
+                                      "--sample", "1", "--workers", "1", "--no-report",
+                                      "--out", str(tmp_path / "x")])
+    assert result.exit_code == 0, result.output
+    assert "oracle" in result.output and "1.00" in result.output and "kettle" in result.output
