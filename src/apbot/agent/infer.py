@@ -24,28 +24,32 @@ from typing import Any
 class Order:
     """Values in the order the explored action visits them.
 
-    ``complete`` is False when only one direction could be explored up to a clamp, so values
-    before the first one seen may exist that were never shown.
+    ``wrap`` is None when the trace never showed what happens at an end; ``complete`` is
+    False when values may exist that were never shown (one direction explored up to a clamp,
+    or the display went dark part of the way).
     """
 
     values: list[Any]
-    wrap: bool
+    wrap: bool | None
     complete: bool
 
 
 def order_from_traces(forward: Sequence[Any], backward: Sequence[Any] | None) -> Order:
     """The value order seen under an action, from its trace (and its opposite's, after a clamp).
 
-    ``forward`` starts with the value before the first press and ends with the first repeat.
-    ``backward`` is the trace of the opposite action started where ``forward`` stopped.
+    ``forward`` holds the values shown press after press and ends with the first repeat (or
+    where the walk had to stop). ``backward`` is the opposite action's trace started where
+    ``forward`` stopped.
 
     >>> order_from_traces(["low", "mid", "high", "high"], ["high", "mid", "low", "min", "min"])
     Order(values=['min', 'low', 'mid', 'high'], wrap=False, complete=True)
     >>> order_from_traces(["3", "4", "4"], ["4", "3", "2", "1"])  # "1" was the last one shown
     Order(values=['1', '2', '3', '4'], wrap=False, complete=False)
+    >>> order_from_traces(["a", "b", "c"], None)  # no repeat: the walk was cut short
+    Order(values=['a', 'b', 'c'], wrap=None, complete=False)
     """
     if len(forward) < 2:
-        return Order(list(forward), False, False)
+        return Order(list(forward), None, False)
     last = forward[-1]
     if last == forward[-2]:  # clamped at the end in this direction
         seen = _unique(forward[:-1])
@@ -56,9 +60,77 @@ def order_from_traces(forward: Sequence[Any], backward: Sequence[Any] | None) ->
             below = [v for v in _unique(backward) if v not in seen]
             return Order(list(reversed(below)) + seen, False, False)
         return Order(seen, False, False)
+    if last not in forward[:-1]:
+        return Order(_unique(forward), None, False)
     first = forward.index(last)
-    cycle = _unique(forward[first:-1])
-    return Order(cycle, True, True)
+    return Order(_unique(forward[first:-1]), True, True)
+
+
+def splice(known: Sequence[Any], segment: Sequence[Any]) -> list[Any]:
+    """``known`` with ``segment`` (observed, contiguous, in order) written over it: values the
+    walk did not reach keep their places around it.
+
+    >>> splice(["off", "a", "x", "b", "c", "d"], ["a", "b", "c"])
+    ['off', 'a', 'b', 'c', 'x', 'd']
+    """
+    observed = set(segment)
+    rest = [v for v in known if v not in observed]
+    anchor = next((v for v in segment if v in known), None)
+    if anchor is None:
+        return list(segment) + rest
+    position = sum(1 for v in known[:list(known).index(anchor)] if v not in observed)
+    return rest[:position] + list(segment) + rest[position:]
+
+
+class Dark:
+    """A press after which the display showed nothing for the variable (an OFF position).
+
+    Every instance is distinct, so two dark presses never look like a repeated value.
+    """
+
+    def __repr__(self) -> str:
+        return "(dark)"
+
+
+def fill_dark(values: Sequence[Any], known: Sequence[Any], wrap: bool | None) -> list[Any]:
+    """Replace runs of :class:`Dark` by the believed values that lie between their neighbours
+    (in order, skipping values seen elsewhere); a run with no such values is dropped.
+
+    >>> fill_dark(["a", "b", Dark(), "c"], ["a", "b", "off", "x", "c"], False)
+    ['a', 'b', 'off', 'c']
+    """
+    seen = {v for v in values if not isinstance(v, Dark)}
+    result: list[Any] = []
+    n = len(values)
+    i = 0
+    while i < n:
+        if not isinstance(values[i], Dark):
+            result.append(values[i])
+            i += 1
+            continue
+        j = i
+        while j < n and isinstance(values[j], Dark):
+            j += 1
+        before = values[i - 1] if i > 0 else (values[-1] if wrap else None)
+        after = values[j] if j < n else (values[0] if wrap else None)
+        between = _between(known, before, after, wrap)
+        result.extend([v for v in between if v not in seen][: j - i])
+        i = j
+    return result
+
+
+def _between(known: Sequence[Any], before: Any, after: Any, wrap: bool | None) -> list[Any]:
+    order = list(known)
+    if before in order and after in order:
+        start, stop = order.index(before), order.index(after)
+        if start < stop:
+            return order[start + 1:stop]
+        return order[start + 1:] + order[:stop] if wrap else []
+    if before in order:
+        return order[order.index(before) + 1:]
+    if after in order:
+        return order[:order.index(after)]
+    return []
 
 
 def _unique(values: Sequence[Any]) -> list[Any]:

@@ -22,9 +22,12 @@ from apbot.agent.environment import Environment, Feedback
 from apbot.agent.episode import Episode, TaskContext
 from apbot.agent.estimate import Estimate, StateEstimator
 from apbot.agent.infer import (
+    Dark,
     common_step,
+    fill_dark,
     order_from_traces,
     ranges_from_values,
+    splice,
     typical_change,
 )
 from apbot.agent.repair import RepairError, insert_step, redefine_domain, set_effects
@@ -445,7 +448,7 @@ class _Run:
         if divergence is not None:  # repair the first thing that went wrong, then re-plan
             index, mismatch = divergence
             found.append(mismatch)
-            self._repair_value(mismatch, executed[:index + 1])
+            self._repair_value(mismatch, executed, index)
         else:
             for mismatch in found:
                 self._repair_value(mismatch, executed)
@@ -472,13 +475,29 @@ class _Run:
                                        outside=name in estimate.outside)
         return None
 
-    def _repair_value(self, mismatch: Mismatch, executed: list[Executed]) -> None:
+    def _history(self, name: str, last: Executed, executed: list[Executed]) -> list[Any]:
+        """Values ``name`` showed under the presses of ``last``'s action that end the macro
+        action: the start of the exploration trace, already paid for."""
+        values: list[Any] = []
+        for done in reversed(executed):
+            if done.action.name != last.action.name or done.pointer != last.pointer:
+                break
+            estimate = self._estimate(done.feedback)
+            value = estimate.values.get(name, estimate.outside.get(name, MISSING))
+            if value is MISSING:
+                break
+            values.append(value)
+        return list(reversed(values))
+
+    def _repair_value(self, mismatch: Mismatch, executed: list[Executed],
+                      upto: int | None = None) -> None:
         name = mismatch.variable
         self.mismatches[name] += 1
         if self.mismatches[name] > MAX_SAME_REPAIR:
             raise Stop(f"{name} keeps showing values the model does not predict "
                        f"(last: {mismatch.observed!r}, expected {mismatch.expected!r})")
-        adjusting = [e for e in executed if e.variable == name and e.believed_accepted]
+        considered = executed if upto is None else executed[:upto + 1]
+        adjusting = [e for e in considered if e.variable == name and e.believed_accepted]
         if not adjusting:
             return  # changed as a side effect: believing the display is all we can do
         last = adjusting[-1]
@@ -492,7 +511,7 @@ class _Run:
         elif effect == "digit":
             self._widen(name, [mismatch.observed])
         elif effect in ("next", "prev", "toggle") or isinstance(effect, Add):
-            self._explore(name, last)
+            self._explore(name, last, self._history(name, last, executed))
             return
         self.belief.set_value(name, mismatch.observed)
 
@@ -553,15 +572,22 @@ class _Run:
 
     # --- exploring and learning ------------------------------------------------------------
 
-    def _trace(self, name: str, action: PlannedAction) -> tuple[list[Any], bool]:
-        """Press ``action`` until the value of ``name`` shown repeats (or stops being shown).
+    def _trace(self, name: str, action: PlannedAction,
+               history: list[Any] | None = None) -> tuple[list[Any], int]:
+        """Press ``action`` until the value of ``name`` shown repeats.
 
-        Returns the values seen and whether the last press was taken but its value not shown
-        (a setting that goes dark at one end: the appliance moved one value further).
+        A press after which the display shows nothing for ``name`` (an OFF position) is
+        recorded as :class:`Dark`; two in a row end the walk. Returns the values seen and how
+        many presses at the end went unseen (the appliance moved on in the dark).
         """
         estimate = self._estimate(self.last)
         start = estimate.values.get(name, estimate.outside.get(name, MISSING))
         values = [] if start is MISSING else [start]  # not shown now: start from the first press
+        if history and values and history[-1] == values[0]:
+            values = list(history)  # the macro action's own presses of this action come first
+            if len(values) >= 2 and values[-1] in values[:-1]:
+                return values, 0  # they already went round
+        dark = 0
         for _ in range(self.config.explore_limit):
             done = self._press(action, exploring=True)
             if not done.feedback.accepted:
@@ -569,22 +595,29 @@ class _Run:
             estimate = self._estimate(done.feedback)
             value = estimate.values.get(name, estimate.outside.get(name, MISSING))
             if value is MISSING:
-                return values, True
+                dark += 1
+                values.append(Dark())
+                if dark >= 2:
+                    break
+                continue
+            dark = 0
             values.append(value)
             if value in values[:-1]:
                 break
-        return values, False
+        while values and isinstance(values[-1], Dark):
+            values.pop()
+        return values, dark
 
-    def _explore(self, name: str, last: Executed) -> None:
+    def _explore(self, name: str, last: Executed, history: list[Any] | None = None) -> None:
         assert last.pointer is not None
         pointer = last.pointer
         action = last.action
-        forward, lost = self._trace(name, action)
+        forward, unseen = self._trace(name, action, history or [])
         backward: list[Any] | None = None
         opposite = self._opposite(pointer, action.name)
         final = action
         if len(forward) >= 2 and forward[-1] == forward[-2] and opposite is not None:
-            backward, lost = self._trace(name, opposite)
+            backward, unseen = self._trace(name, opposite)
             final = opposite
         self.episode.log("explore", f"{name} under {action.name}: "
                          f"{_summary(forward)}" + (f"; under {opposite.name}: "
@@ -593,7 +626,7 @@ class _Run:
             return
         current = (backward or forward)[-1]
         self._learn(name, pointer, action.name, opposite, forward, backward, current)
-        if lost:  # one more press was taken unseen: let the repaired model say where it went
+        for _ in range(unseen):  # presses taken in the dark: the repaired model says where to
             self.belief.advance(final.name, final.seconds)
 
     def _opposite(self, pointer: tuple[str, int], action: str) -> PlannedAction | None:
@@ -622,18 +655,21 @@ class _Run:
         notes: list[str] = []
         try:
             if isinstance(spec, DiscreteVariable):
-                values = [str(v) for v in order.values]
+                values = [v if isinstance(v, Dark) else str(v) for v in order.values]
                 if effect == "prev":
                     values.reverse()
+                values = fill_dark(values, self._domain_values(name), order.wrap)
                 if not order.complete:
-                    values = [v for v in self._domain_values(name) if v not in values] + values
+                    values = splice(self._domain_values(name), values)
                 new = redefine_domain(model, name, case, values=values, wrap=order.wrap,
                                       current=current)
-                notes.append(f"{name}: values {_summary(values)}, "
-                             f"{'wraps' if order.wrap else 'stops at the ends'}")
+                notes.append(f"{name}: values {_summary(values)}{_ends(order.wrap)}")
             else:
-                magnitudes = [_magnitude(spec, v) for v in order.values]
+                magnitudes = [_magnitude(spec, v) for v in order.values
+                              if not isinstance(v, Dark)]
                 numbers = [m for m in magnitudes if m is not None]
+                if not numbers:
+                    return
                 change = _direction(spec, forward, backward)
                 new = model
                 if isinstance(effect, Add):
@@ -648,16 +684,14 @@ class _Run:
                         new = set_effects(new, pointer[0], pointer[1], flipped)
                         notes.append(f"{action} moves {name} the other way")
                     if not order.complete:
-                        known = self._magnitudes(name)
-                        low, high = min(numbers), max(numbers)
-                        side = [m for m in known if (m < low if rising else m > high)]
-                        numbers = sorted(set(numbers) | set(side))
+                        numbers = _keep_unseen(self._magnitudes(name), numbers,
+                                               clamped_high=rising if order.wrap is False
+                                               else None)
                 ranges = ranges_from_values(numbers)
                 new = redefine_domain(new, name, case, ranges=ranges,
                                       wrap=order.wrap if effect != "toggle" else None,
                                       current=_canonical_raw(spec, current))
-                notes.append(f"{name}: ranges {ranges}, "
-                             f"{'wraps' if order.wrap else 'stops at the ends'}")
+                notes.append(f"{name}: ranges {ranges}{_ends(order.wrap)}")
         except RepairError as exc:
             self.episode.log("repair", f"could not repair {name}: {exc}")
             return
@@ -783,6 +817,20 @@ def _magnitude(spec: Any, value: Any) -> float | None:
         return float(value)
     except (TypeError, ValueError):
         return None
+
+
+def _ends(wrap: bool | None) -> str:
+    return {True: ", wraps", False: ", stops at the ends", None: ""}[wrap]
+
+
+def _keep_unseen(known: list[float], seen: list[float],
+                 clamped_high: bool | None) -> list[float]:
+    """Numbers after a partial walk: what was seen replaces the belief between the lowest and
+    highest value seen; beyond them the belief stands, except past an end the walk hit."""
+    low, high = min(seen), max(seen)
+    kept = [m for m in known if (m < low and clamped_high is not False)
+            or (m > high and clamped_high is not True)]
+    return sorted(set(seen) | set(kept))
 
 
 def _direction(spec: Any, forward: list[Any], backward: list[Any] | None) -> float | None:
