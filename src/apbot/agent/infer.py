@@ -113,8 +113,10 @@ def fill_dark(values: Sequence[Any], known: Sequence[Any], wrap: bool | None) ->
             j += 1
         before = values[i - 1] if i > 0 else (values[-1] if wrap else None)
         after = values[j] if j < n else (values[0] if wrap else None)
-        between = _between(known, before, after, wrap)
-        result.extend([v for v in between if v not in seen][: j - i])
+        between = [v for v in _between(known, before, after, wrap) if v not in seen]
+        if not between:  # the belief's order is no help: any value never seen will do
+            between = [v for v in known if v not in seen and v not in result]
+        result.extend(between[: j - i])
         i = j
     return result
 

@@ -64,6 +64,7 @@ class Executed:
     believed_accepted: bool
     before: tuple[str, int] | None = None  # the belief's feature step before the action
     predicted: Any = None  # the belief's value of ``variable`` after the action
+    shown: bool = False  # whether the belief expects the display to show ``variable`` then
 
 
 class Stop(Exception):
@@ -143,6 +144,8 @@ class _Run:
                 if outside:
                     self._explore_outside(outside)
                     return
+                if any(self.belief.value(n) != v for n, v in inside.items()):
+                    raise Stop("the rest of the goal cannot be reached on the belief model")
                 raise Stop("the goal holds", success=True)
             self.pending = list(found.macro_actions)
         macro = self.pending.pop(0)
@@ -217,7 +220,9 @@ class _Run:
                        if not self._plannable({name: value})]
             rest = {name: value for name, value in target.items() if name not in blocked}
             if blocked and rest and self._plannable(rest):
-                return plan(self.belief.compiled, self.belief.state, rest)  # progress first
+                partial = plan(self.belief.compiled, self.belief.state, rest)
+                if partial.macro_actions:
+                    return partial  # progress on the rest first
             if self._recover_unreachable({name: target[name] for name in blocked}):
                 return self._plan(target)
             raise Stop(f"no plan on the belief model: {exc.reason}") from None
@@ -254,6 +259,37 @@ class _Run:
                     self._adopt(new, f"{feature} starts with {candidate}", (feature, 0))
                     self._sync(estimate)
                     return True
+            if any(self._find_separator(feature, name) for feature in features):
+                return True
+        return False
+
+    def _find_separator(self, feature: str, name: str) -> bool:
+        """A step of ``feature`` that can never be entered because it shares its keys with
+        the step before it: walk the procedure up to that step, then try the procedure's other
+        keys for the one that brings ``name`` up (a SET/CLOCK press between hours and minutes)."""
+        steps = self.belief.model.features[feature]
+        index = next((i for i, s in enumerate(steps) if s.variable == name), None)
+        if index is None or index == 0 or not set(steps[index].actions) & \
+                set(steps[index - 1].actions):
+            return False
+        inside = {a for i in (index - 1, index) for a in steps[i].actions}
+        others = [a for s in steps for a in s.actions if a not in inside]
+        walk = [s.actions[0] for s in steps[:index]]
+        for candidate in dict.fromkeys(others):
+            self._lift_guards(walk[0])
+            for action in walk:
+                self._press(self._planned(action), exploring=True)
+            probe = self._press(self._planned(candidate), exploring=True)
+            estimate = self._estimate(probe.feedback)
+            if probe.feedback.accepted and (name in estimate.values or name in estimate.outside):
+                try:
+                    new = insert_step(self.belief.model, feature, index, [candidate])
+                except RepairError:
+                    continue
+                self._adopt(new, f"{feature} needs {candidate} before {name}", (feature, index))
+                self._sync(estimate)
+                return True
+            self._resync_pointer()
         return False
 
     def _lift_guards(self, action: str) -> None:
@@ -300,6 +336,7 @@ class _Run:
         pointer = self.belief.pointer() if believed else pointer_before
         variable = self._step_variable(pointer) if believed else None
         predicted = self.belief.value(variable) if variable else None
+        shown = bool(variable) and variable in self.belief.expected().values
         feedback = self.env.step(action.name, action.seconds)
         if not feedback.accepted:
             self.belief.state = before  # a refused action changes nothing
@@ -308,7 +345,8 @@ class _Run:
         self.episode.log("action", action=action.name, display=feedback.text,
                          values=dict(feedback.values), accepted=feedback.accepted,
                          exploring=exploring)
-        return Executed(action, pointer, variable, feedback, believed, pointer_before, predicted)
+        return Executed(action, pointer, variable, feedback, believed, pointer_before, predicted,
+                        shown)
 
     def _step_variable(self, pointer: tuple[str, int] | None) -> str | None:
         if pointer is None:
@@ -436,19 +474,22 @@ class _Run:
             found.append(Mismatch(name, self.belief.value(name), value, outside=True))
         shown = set(estimate.values) | set(estimate.outside)
         expected_focus = self.belief.expected().focus
-        refused = [e for e in executed if e.believed_accepted and not e.feedback.accepted]
-        self.episode.log("check", "ok" if not (found or refused) else "mismatch",
+        refused = [i for i, e in enumerate(executed)
+                   if e.believed_accepted and not e.feedback.accepted]
+        divergence = self._divergence(executed)
+        self.episode.log("check", "ok" if not (found or refused or divergence) else "mismatch",
                          expected={m.variable: m.expected for m in found} or dict(macro.expect),
                          values={m.variable: m.observed for m in found})
-        if refused or (expected_focus and expected_focus not in shown and executed and
-                       executed[-1].variable == expected_focus and self.last.values):
-            self._repair_procedure(executed, refused)
-            return False
-        divergence = self._divergence(executed)
-        if divergence is not None:  # repair the first thing that went wrong, then re-plan
-            index, mismatch = divergence
+        elsewhere = shown - set(self.belief.model.display.indicators)
+        wrong_focus = bool(expected_focus and expected_focus not in shown and elsewhere and
+                           executed and executed[-1].variable == expected_focus)
+        if divergence is not None and (not refused or divergence[0] < refused[0]):
+            index, mismatch = divergence  # repair the first thing that went wrong, re-plan
             found.append(mismatch)
             self._repair_value(mismatch, executed, index)
+        elif refused or wrong_focus:
+            self._repair_procedure(executed, [executed[i] for i in refused])
+            return False
         else:
             for mismatch in found:
                 self._repair_value(mismatch, executed)
@@ -470,6 +511,8 @@ class _Run:
                 continue
             estimate = self._estimate(done.feedback)
             observed = estimate.values.get(name, estimate.outside.get(name, MISSING))
+            if observed is MISSING and done.shown:  # expected on the display, and it is dark
+                return index, Mismatch(name, done.predicted, None)
             if observed is not MISSING and observed != done.predicted:
                 return index, Mismatch(name, done.predicted, observed,
                                        outside=name in estimate.outside)
@@ -506,6 +549,9 @@ class _Run:
         if unchanged and self._absorbed(adjusting[0]):
             return
         effect = self._effect(last.pointer, last.action.name)
+        stepping = effect in ("next", "prev", "toggle") or isinstance(effect, Add)
+        if mismatch.observed is None and not stepping:
+            return  # dark where a value was expected, and nothing to walk through
         if isinstance(effect, GoTo):
             self._learn_goto(name, last, mismatch.observed)
         elif effect == "digit":
@@ -522,9 +568,10 @@ class _Run:
         before, after = entering.before, entering.pointer
         if before is None or after is None or before[0] == after[0]:
             return False
-        shown = self._estimate(entering.feedback).values
+        shown = set(self._estimate(entering.feedback).values) - set(
+            self.belief.model.display.indicators)
         staying = {s.variable for s in self.belief.model.features[before[0]]} - {None}
-        if entering.variable in staying or not staying & set(shown):
+        if entering.variable in staying | shown or not staying & shown:
             return False  # the display moved on: the action did start something else
         key = f"absorbed:{before[0]}:{entering.action.name}"
         if self.mismatches[key]:
@@ -545,15 +592,16 @@ class _Run:
         """Look at a variable whose goal value the belief lacks: explore it, or for a keypad
         setting, allow the value and let the next check say whether it exists."""
         for name, raw in outside.items():
-            self.explored.add(name)
             spec = self.belief.model.variables[name]
             if getattr(spec, "entry", None) is not None:
+                self.explored.add(name)
                 value = _loose(spec, raw)
                 if value is not None:
                     self._widen(name, [value])
                 continue
             stepping = self._stepping_action(name)
-            if stepping is not None:
+            if stepping is not None:  # (else the proxy plan has not reached its setting yet)
+                self.explored.add(name)
                 self._explore(name, stepping)
 
     def _stepping_action(self, name: str) -> Executed | None:
@@ -604,8 +652,6 @@ class _Run:
             values.append(value)
             if value in values[:-1]:
                 break
-        while values and isinstance(values[-1], Dark):
-            values.pop()
         return values, dark
 
     def _explore(self, name: str, last: Executed, history: list[Any] | None = None) -> None:
@@ -622,9 +668,9 @@ class _Run:
         self.episode.log("explore", f"{name} under {action.name}: "
                          f"{_summary(forward)}" + (f"; under {opposite.name}: "
                                                    f"{_summary(backward)}" if backward else ""))
-        if len(forward) < 2:
+        if len([v for v in forward if not isinstance(v, Dark)]) < 2:
             return
-        current = (backward or forward)[-1]
+        current = next(v for v in reversed(backward or forward) if not isinstance(v, Dark))
         self._learn(name, pointer, action.name, opposite, forward, backward, current)
         for _ in range(unseen):  # presses taken in the dark: the repaired model says where to
             self.belief.advance(final.name, final.seconds)
