@@ -88,3 +88,23 @@ def test_bad_inputs_are_messages_not_tracebacks(tmp_path: Path) -> None:
     assert result.exit_code == 1 and "not a time" in result.output
     for result in (runner.invoke(app, ["check", str(tmp_path)]),):
         assert "Traceback" not in result.output
+
+
+def test_run_shows_a_task_live_and_judges_it() -> None:
+    result = runner.invoke(app, ["run", "microwave_1", "t03", "--belief", "faulty:0.3"])
+    assert result.exit_code == 0, result.output
+    assert "✗ mismatch" in result.output and "repair:" in result.output
+    assert "success:" in result.output and "SPL" in result.output
+
+
+def test_run_with_an_explicit_goal_and_a_failure_exit_code() -> None:
+    ok = runner.invoke(app, ["run", "kettle_1", "keep it warm at 80", "-g", "keep_warm=on",
+                             "-g", "temperature=80"])
+    assert ok.exit_code == 0, ok.output
+    unknown = runner.invoke(app, ["run", "kettle_1", "make tea please"])
+    assert unknown.exit_code == 2 and "-g NAME=VALUE" in unknown.output
+
+
+def test_report_on_a_directory_without_a_run_is_a_clear_error(tmp_path: Path) -> None:
+    result = runner.invoke(app, ["report", str(tmp_path)])
+    assert result.exit_code == 1 and "apbot bench" in result.output

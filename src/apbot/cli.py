@@ -20,7 +20,8 @@ from apbot.model.problems import ModelError, Problem
 from apbot.model.schema import ApplianceModel
 
 if TYPE_CHECKING:
-    from apbot.bench.suite import Suite, SuiteAppliance
+    from apbot.agent.episode import TraceEvent
+    from apbot.bench.suite import Suite, SuiteAppliance, Task
 
 app = typer.Typer(add_completion=False, no_args_is_help=True,
                   help="Operate home appliances by reading their manuals.")
@@ -520,6 +521,124 @@ def _bench_report(out: Path) -> None:
         return
     for path in write_report(out):
         console.print(f"report: {path}")
+
+
+@app.command("report")
+def report_command(directory: Annotated[Path, typer.Argument(
+        help="A run directory written by `apbot bench`.")]) -> None:
+    """Write report.md and a self-contained report.html for a benchmark run."""
+    from apbot.bench.report import ReportError, write_report
+
+    try:
+        paths = write_report(directory)
+    except ReportError as exc:
+        raise _fail(str(exc)) from None
+    for path in paths[:2]:
+        console.print(f"report: {path}")
+
+
+@app.command("run")
+def run_command(
+        appliance: Annotated[str, typer.Argument(help="A bundled appliance id.")],
+        instruction: Annotated[str, typer.Argument(
+            help="The instruction, or a task id (t01…) of that appliance.")],
+        goal: Annotated[list[str] | None, typer.Option(
+            "--goal", "-g", help="The goal as NAME=VALUE (repeatable); needed for an "
+            "instruction that is not one of the appliance's tasks.")] = None,
+        method: Annotated[str, typer.Option(help="The method to run.")] = "apbot",
+        belief: Annotated[str, typer.Option(
+            help="The model the method works from: true or faulty:RATE.")] = "true",
+        seed: Annotated[int, typer.Option(help="Seed for fault injection.")] = 0,
+        show_exploration: Annotated[bool, typer.Option(
+            help="Print every exploring press, not only a count.")] = False,
+) -> None:
+    """Run one task live: every macro action, press, display, check and repair as it happens."""
+    from apbot.bench.runner import run_task
+    from apbot.bench.suite import Task
+    from apbot.model.goal import split_assignments
+
+    try:
+        found = _suite().get(appliance)
+    except KeyError as exc:
+        raise _fail(str(exc.args[0]), 2) from None
+    task = _task_for(found, instruction)
+    if goal:
+        try:
+            task = Task(id=task.id if task else "live", instruction=instruction,
+                        goal=split_assignments(goal))
+        except ValueError as exc:
+            raise _fail(str(exc), 2) from None
+    if task is None:
+        ids = ", ".join(t.id for t in found.tasks)
+        raise _fail(f"{instruction!r} is not one of {appliance}'s tasks ({ids}); give the goal "
+                    "with -g NAME=VALUE (reading goals from free text comes with the reader)", 2)
+    console.print(f"[bold]{found.id}[/bold] · {task.instruction}")
+    console.print(f"goal: {', '.join(f'{k}={v}' for k, v in task.goal.items())}")
+    printer = _LivePrinter(show_exploration)
+    try:
+        record = run_task(found, task, method, belief, seed, observer=printer)
+    except (KeyError, ValueError) as exc:
+        raise _fail(str(exc.args[0] if isinstance(exc, KeyError) else exc), 2) from None
+    printer.flush()
+    verdict = "[green]success[/green]" if record.success else "[red]failure[/red]"
+    console.print(f"{verdict}: {record.reasoning_steps} reasoning steps, "
+                  f"{record.execution_steps} actions (optimal {record.optimal_steps}), "
+                  f"SPL {record.spl:.2f}")
+    if record.failure:
+        console.print(f"[red]{record.failure}[/red]")
+    raise typer.Exit(0 if record.success else 1)
+
+
+def _task_for(appliance: SuiteAppliance, text: str) -> Task | None:
+    """The appliance's task with this id or instruction (or one very close to it)."""
+    import difflib
+
+    wanted = text.strip().casefold()
+    for task in appliance.tasks:
+        if wanted in (task.id, task.instruction.strip().casefold()):
+            return task
+    scores = [(difflib.SequenceMatcher(None, wanted, t.instruction.casefold()).ratio(), t)
+              for t in appliance.tasks]
+    best = max(scores, key=lambda pair: pair[0], default=None)
+    return best[1] if best is not None and best[0] >= 0.85 else None
+
+
+class _LivePrinter:
+    """Prints trace events as the agent produces them; runs of exploration are summarised."""
+
+    def __init__(self, show_exploration: bool) -> None:
+        self.show_exploration = show_exploration
+        self.exploring = 0
+
+    def flush(self) -> None:
+        if self.exploring:
+            console.print(f"    [dim]… explored with {self.exploring} presses[/dim]")
+            self.exploring = 0
+
+    def __call__(self, event: TraceEvent) -> None:
+        if event.kind == "action" and event.exploring and not self.show_exploration:
+            self.exploring += 1
+            return
+        self.flush()
+        if event.kind == "macro":
+            target = ", ".join(f"{k}={v}" for k, v in event.expected.items())
+            console.print(f"[bold]{event.step:>2}. {event.text}[/bold] [dim]→ {target}[/dim]")
+        elif event.kind == "action":
+            mark = "[yellow]explore[/yellow] " if event.exploring else ""
+            refused = " [red](refused)[/red]" if not event.accepted else ""
+            console.print(f"    {mark}{event.action}: [cyan]{event.display or '(dark)'}[/cyan]"
+                          f"{refused}")
+        elif event.kind == "check":
+            if event.text == "ok":
+                console.print("    [green]✓ as expected[/green]")
+            else:
+                seen = ", ".join(f"{k}={v}" for k, v in event.values.items())
+                console.print(f"    [red]✗ mismatch[/red] {seen}")
+        elif event.kind in ("explore", "repair"):
+            colour = "magenta" if event.kind == "repair" else "yellow"
+            console.print(f"    [{colour}]{event.kind}: {event.text}[/{colour}]")
+        elif event.kind == "stop":
+            console.print(f"[dim]stop: {event.text}[/dim]")
 
 
 def main() -> None:

@@ -27,7 +27,7 @@ from pathlib import Path
 from typing import Any
 
 from apbot.agent.environment import SimulatorEnvironment
-from apbot.agent.episode import MAX_REASONING_STEPS, Episode, TaskContext
+from apbot.agent.episode import MAX_REASONING_STEPS, Episode, TaskContext, TraceEvent
 from apbot.agent.registry import get_method, methods
 from apbot.bench.beliefs import BeliefError, BeliefSpec, belief_model, parse_belief
 from apbot.bench.metrics import summarise
@@ -134,21 +134,39 @@ def run_one(method: str, belief: str, seed: int, appliance_id: str, task_id: str
     final state and the method stayed within the reasoning-step limit; what the method claims
     is recorded but not trusted. An exception in the method gives a failed record.
     """
-    started = time.perf_counter()
     appliance, task = _find(suite, appliance_id, task_id)
+    return run_task(appliance, task, method, belief, seed,
+                    belief_of=lambda spec: _belief(suite, appliance.id, spec, seed))
+
+
+def run_task(appliance: SuiteAppliance, task: Task, method: str, belief: str = "true",
+             seed: int = 0, observer: Callable[[TraceEvent], None] | None = None,
+             belief_of: Callable[[BeliefSpec], tuple[ApplianceModel, Any]] | None = None,
+             ) -> TaskRecord:
+    """:func:`run_one` on objects: also for a task that is not in a suite (``apbot run``).
+
+    ``observer`` sees every trace event as it happens; ``belief_of`` builds (or fetches a
+    cached) belief model for the parsed belief spec.
+    """
+    started = time.perf_counter()
     spec = parse_belief(belief)
     chosen = get_method(method)
     env = SimulatorEnvironment(appliance.model)
     episode, faults, error = Episode(), (), ""
     context: TaskContext | None = None
     try:
-        model, faults = ((appliance.model, ()) if chosen.uses_truth
-                         else _belief(suite, appliance.id, spec, seed))
+        if chosen.uses_truth:
+            model, faults = appliance.model, ()
+        elif belief_of is not None:
+            model, faults = belief_of(spec)
+        else:
+            model, faults = belief_model(appliance, str(spec), seed)
     except Exception as exc:
         error = f"error: building the belief: {_describe(exc)}"
     else:
         context = TaskContext(appliance.id, appliance.category, task.id, task.instruction,
-                              dict(task.goal), model, appliance.manual, tuple(env.actions))
+                              dict(task.goal), model, appliance.manual, tuple(env.actions),
+                              observer=observer)
         try:
             result = chosen.run(context, env)
             if not isinstance(result, Episode):
