@@ -427,19 +427,22 @@ def reachable_indices(compiled: Any, v: int, case: int) -> set[int]:
     var = compiled.vars[v]
     domain = var.domains[case]
     tables: list[tuple[int, ...]] = []
-    typeable: set[int] = set()
+    typed = False
     for step in compiled.steps:
         if step.variable == v:
             for effect in step.effects.values():
                 if effect[0] in (TABLE, CLEAR) and effect[1][case] is not None:
                     tables.append(effect[1][case])
                 elif effect[0] == DIGIT and getattr(var.spec, "entry", None) is not None:
-                    assert domain.magnitudes is not None
-                    typeable |= {i for i, m in enumerate(domain.magnitudes)
-                                 if entry_digits(m, var.spec.entry) is not None}
+                    typed = True
         for target, side_tables in step.side:
             if target == v and side_tables[case] is not None:
                 tables.append(side_tables[case])
+    typeable: set[int] = set()
+    if typed:  # once, not once per digit key
+        assert domain.magnitudes is not None
+        typeable = {i for i, m in enumerate(domain.magnitudes)
+                    if entry_digits(m, var.spec.entry) is not None}
     reached = {domain.initial} | typeable
     frontier = list(reached)
     while frontier:
