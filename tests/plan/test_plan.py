@@ -191,3 +191,24 @@ def test_a_programme_change_as_a_shortcut_to_a_setting(goal: dict[str, object]) 
     for state in (compiled.initial_state(), start.state):
         found = plan(model, state, goal)
         assert len(found) == shortest_plan_length(compiled, state, found.goal)
+
+
+def test_among_equally_short_plans_the_display_is_lit_while_setting() -> None:
+    """A knob that also turns while the appliance is off: set it after switching on, where the
+    display shows it (the closed loop can only check what it can see)."""
+    model = model_from("""
+        controls: [{id: power, label: POWER}, {id: knob, kind: dial, label: MODE}]
+        variables:
+          power: {type: discrete, values: ["off", "on"]}
+          mode: {type: discrete, values: [a, b, c]}
+        actions:
+          press_power: {control: power}
+          turn_knob: {control: knob, skill: turn_cw}
+        features:
+          power: [{actions: [press_power], variable: power, effect: toggle}]
+          mode: [{actions: [turn_knob], variable: mode, effect: next}]
+        guards:
+          - {when: {power: "off"}, only: [press_power, turn_knob], display: "", hide: true}
+    """)
+    found = plan(model, None, {"power": "on", "mode": "c"})
+    assert [a.name for a in found.actions] == ["press_power", "turn_knob", "turn_knob"]

@@ -3,7 +3,8 @@
 Search nodes are states projected onto the *relevant* variables — the goal's, those guards read
 (power, lock, running) and the programmes that goal settings depend on — plus the feature
 pointer. Nothing else influences how those variables evolve, so the projection loses nothing.
-Edges are visits (``apbot.plan.visits``); their cost is the number of physical actions.
+Edges are visits (``apbot.plan.visits``); their cost is the number of physical actions
+(ties broken towards presses made while the display is lit).
 The heuristic (``apbot.plan.bounds``) is admissible and consistent, so the first goal node
 popped is optimal: the order of macro actions (power before settings, programme before its
 settings, start last) falls out of the search instead of being hard-coded.
@@ -25,6 +26,10 @@ from apbot.plan.visits import SMALL_DOMAIN, Exit, explore_visit, keypad_exits
 from apbot.sim.compiled import DIGIT, CompiledModel, State, entry_digits
 
 DEFAULT_BUDGET = 200_000
+# Path cost is lexicographic, packed in one int: presses × PRESS + presses made while a guard
+# keeps the display dark. The plan stays shortest; among equally short plans it prefers to set
+# things where the display shows them, so the closed loop can check what it did.
+PRESS = 1 << 16
 
 
 class SearchExhausted(Exception):
@@ -102,7 +107,7 @@ class TaskSearch:
         came_from: dict[Hashable, tuple[Hashable, Visit] | None] = {start_key: None}
         states = {start_key: start}
         tie = itertools.count()
-        frontier = [(h0, 0, next(tie), start_key)]
+        frontier = [(h0 * PRESS, 0, next(tie), start_key)]
         expanded = 0
         while frontier:
             _, negative_cost, _, node = heapq.heappop(frontier)
@@ -115,8 +120,10 @@ class TaskSearch:
             expanded += 1
             if expanded > self.budget:
                 raise SearchExhausted("budget", expanded, True)
+            in_the_dark = bool(compiled.guards) and compiled.hiding_guard(state) is not None
             for after, actions in self._edges(state, node == start_key):
-                new_cost = cost + len(actions)
+                # presses first; among plans of equal length, fewer presses with a dark display
+                new_cost = cost + len(actions) * PRESS + (len(actions) if in_the_dark else 0)
                 k = self.key(after)
                 if new_cost >= best.get(k, INF):
                     continue
@@ -126,7 +133,7 @@ class TaskSearch:
                 best[k] = new_cost
                 states[k] = after
                 came_from[k] = (node, Visit(after.step, actions))
-                heapq.heappush(frontier, (new_cost + h, -new_cost, next(tie), k))
+                heapq.heappush(frontier, (new_cost + h * PRESS, -new_cost, next(tie), k))
         raise SearchExhausted("exhausted", expanded, False)
 
     @staticmethod
