@@ -496,6 +496,8 @@ class _Run:
         if found:
             estimate = self._estimate(self.last)  # exploring moved the appliance on
         self._sync(estimate)
+        if found or divergence:
+            outside = self._goal()[1]  # a repair may have taught the belief the goal value
         focused = [name for name in outside if name in shown and name not in self.explored]
         if focused:
             self._explore_outside({name: outside[name] for name in focused})
