@@ -41,6 +41,7 @@ from apbot.sim.compiled import default_effect
 
 MISSING = object()
 EXPLORE_LIMIT = 400  # presses per direction: enough for a 1-minute clock over a day... almost
+PLAN_BUDGET = 20_000  # search nodes per plan: every bundled task needs under 4k on its truth
 MAX_SAME_REPAIR = 3  # the same variable mismatching this often without progress: give up
 
 
@@ -51,6 +52,7 @@ class AgentConfig:
     closed_loop: bool = True
     button_policy: bool = True
     explore_limit: int = EXPLORE_LIMIT
+    plan_budget: int = PLAN_BUDGET
 
 
 @dataclass
@@ -210,17 +212,19 @@ class _Run:
 
     def _plan(self, target: dict[str, Any]) -> Any:
         try:
-            return plan(self.belief.compiled, self.belief.state, target)
+            return plan(self.belief.compiled, self.belief.state, target,
+                        self.config.plan_budget)
         except GoalError as exc:
             raise Stop(f"the goal does not fit the belief model: {exc}") from None
         except Unreachable as exc:
-            if not self.config.closed_loop:
+            if not self.config.closed_loop or exc.budget_hit:
                 raise Stop(f"no plan on the belief model: {exc.reason}") from None
             blocked = [name for name, value in target.items()
                        if not self._plannable({name: value})]
             rest = {name: value for name, value in target.items() if name not in blocked}
             if blocked and rest and self._plannable(rest):
-                partial = plan(self.belief.compiled, self.belief.state, rest)
+                partial = plan(self.belief.compiled, self.belief.state, rest,
+                               self.config.plan_budget)
                 if partial.macro_actions:
                     return partial  # progress on the rest first
             if self._recover_unreachable({name: target[name] for name in blocked}):
@@ -229,7 +233,7 @@ class _Run:
 
     def _plannable(self, goal: dict[str, Any]) -> bool:
         try:
-            plan(self.belief.compiled, self.belief.state, goal)
+            plan(self.belief.compiled, self.belief.state, goal, self.config.plan_budget)
         except Unreachable:
             return False
         return True
@@ -308,7 +312,8 @@ class _Run:
                 if not others:
                     continue
                 try:
-                    found = plan(compiled, self.belief.state, {compiled.vars[v].name: others[0]})
+                    found = plan(compiled, self.belief.state, {compiled.vars[v].name: others[0]},
+                                 self.config.plan_budget)
                 except Unreachable:
                     continue
                 for planned in found.actions:

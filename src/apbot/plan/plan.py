@@ -30,9 +30,10 @@ __all__ = ["GoalError", "MacroAction", "Plan", "PlannedAction", "Unreachable", "
 class Unreachable(Exception):
     """The goal cannot be reached from this state; ``reason`` says why, in plain words."""
 
-    def __init__(self, reason: str) -> None:
+    def __init__(self, reason: str, budget_hit: bool = False) -> None:
         super().__init__(reason)
         self.reason = reason
+        self.budget_hit = budget_hit  # the search gave up: the goal may still be reachable
 
 
 @dataclass(frozen=True)
@@ -95,7 +96,8 @@ def plan(model: ApplianceModel | CompiledModel, state: State | None,
     try:
         result = search.run(start)
     except SearchExhausted as exc:
-        raise Unreachable(_explain(compiled, search, start, canonical, exc)) from None
+        raise Unreachable(_explain(compiled, search, start, canonical, exc),
+                          exc.budget_hit) from None
     macro_actions = _macro_actions(compiled, start, result.visits)
     found = Plan(canonical, macro_actions, result.expanded, time.perf_counter() - started)
     _verify(compiled, start, target, found)
