@@ -48,10 +48,6 @@ class Belief:
     def values(self) -> dict[str, Any]:
         return self.compiled.assignment(self.state)
 
-    def fits(self, name: str, value: Any) -> bool:
-        """Whether ``value`` is a value ``name`` can have in the current state."""
-        return self._index(name, value) is not None
-
     def _index(self, name: str, value: Any) -> int | None:
         v = self.compiled.var_index[name]
         var = self.compiled.vars[v]

@@ -1,0 +1,282 @@
+"""Exploring a variable and learning its definition from what the display shows.
+
+On a mismatch the agent presses the step's key again and again until a shown value repeats
+(and walks back with the opposite key after an end, or when the walk went dark at once), then
+writes what it saw into the belief: the order of the values, piecewise ranges, wrap or clamp,
+which way a key moves, how much an ``add`` key adds (``apbot.agent.infer`` does the inference,
+``apbot.agent.repair`` the model edit).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from apbot.agent.core import MISSING, Core, Executed, canonical, loose, magnitude, summary, tidy
+from apbot.agent.infer import (
+    Dark,
+    common_step,
+    fill_dark,
+    order_from_traces,
+    ranges_from_values,
+    splice,
+    typical_change,
+)
+from apbot.agent.repair import RepairError, redefine_domain, set_effects
+from apbot.model.schema import (
+    Add,
+    ApplianceModel,
+    DiscreteVariable,
+    TimeVariable,
+    time_step_seconds,
+)
+from apbot.plan.plan import PlannedAction
+
+
+class Exploring(Core):
+    """Walk a variable's values with its step's keys and repair the belief from the walk."""
+
+    def explore(self, name: str, last: Executed, history: list[Any] | None = None) -> None:
+        """Explore ``name`` with ``last``'s key (from the step ``last`` left the belief in)."""
+        assert last.pointer is not None
+        self.explored.add(name)
+        pointer, key = last.pointer, last.action
+        forward, unseen = self.walk(name, key, history or [])
+        visible = [v for v in forward if not isinstance(v, Dark)]
+        opposite = self.opposite(pointer, key.name)
+        backward: list[Any] | None = None
+        final = key
+        if opposite is not None and len(visible) < 2:
+            # nothing to learn this way (dark, or stuck at once): the other key leads
+            key, opposite = opposite, key
+            forward, unseen = self.walk(name, key)
+            final = key
+        elif opposite is not None and forward[-1] == forward[-2]:  # an end: walk back
+            backward, unseen = self.walk(name, opposite)
+            final = opposite
+        self.episode.log("explore", f"{name} under {key.name}: {summary(forward)}"
+                         + (f"; under {opposite.name}: {summary(backward)}"
+                            if opposite is not None and backward is not None else ""))
+        seen = [v for v in forward + (backward or []) if not isinstance(v, Dark)]
+        if not seen:
+            return
+        last_walk = [v for v in (backward if backward is not None else forward)
+                     if not isinstance(v, Dark)]
+        current = last_walk[-1] if last_walk else seen[-1]
+        if len(seen) >= 2:
+            self.learn(name, pointer, key.name, opposite, forward, backward, current)
+        self.belief.set_value(name, current)
+        for _ in range(unseen):  # presses taken in the dark: the (repaired) model says where to
+            self.belief.advance(final.name, final.seconds)
+
+    def walk(self, name: str, action: PlannedAction,
+             history: list[Any] | None = None) -> tuple[list[Any], int]:
+        """Press ``action`` until the value of ``name`` shown repeats.
+
+        ``history`` (values shown under the same key just before) opens the walk. A press after
+        which the display shows nothing for ``name`` (an OFF position) is recorded as
+        :class:`Dark`; two in a row end the walk. Returns the values (dark ones included) and
+        how many presses at the end went unseen (the appliance moved on in the dark).
+        """
+        start = self.shown(name)
+        values = [] if start is MISSING else [start]  # not shown now: start from the first press
+        if history and values and history[-1] == values[0]:
+            values = list(history)
+            if len(values) >= 2 and values[-1] in values[:-1]:
+                return values, 0  # they already went round
+        dark = 0
+        for _ in range(self.config.explore_limit):
+            done = self.press(action, exploring=True)
+            if not done.feedback.accepted:
+                break
+            value = done.observed(name)
+            if value is MISSING:
+                dark += 1
+                values.append(Dark())
+                if dark >= 2:
+                    break
+                continue
+            dark = 0
+            values.append(value)
+            if value in values[:-1]:
+                break
+        return values, dark
+
+    def history(self, name: str, last: Executed, executed: list[Executed]) -> list[Any]:
+        """Values ``name`` showed under the presses of ``last``'s key that end the macro
+        action: the start of the walk, already paid for."""
+        values: list[Any] = []
+        for done in reversed(executed):
+            if done.action.name != last.action.name or done.pointer != last.pointer:
+                break
+            value = done.observed(name)
+            if value is MISSING:
+                break
+            values.append(value)
+        return list(reversed(values))
+
+    def opposite(self, pointer: tuple[str, int], action: str) -> PlannedAction | None:
+        """The step's key that walks the other way, if there is one."""
+        feature, index = pointer
+        effect = self.effect(pointer, action)
+        for other in self.belief.model.features[feature][index].actions:
+            theirs = self.effect(pointer, other)
+            if other != action and (theirs in ("next", "prev") or isinstance(theirs, Add)) \
+                    and theirs != effect:
+                return self.planned(other)
+        return None
+
+    def stepping_key(self, name: str) -> Executed | None:
+        """The step the belief is in, as an action to explore ``name`` with, if it steps it."""
+        pointer = self.belief.pointer()
+        if pointer is None or self.step_variable(pointer) != name:
+            return None
+        feature, index = pointer
+        for action in self.belief.model.features[feature][index].actions:
+            if self.stepping(pointer, action):
+                return Executed(self.planned(action), pointer, name, self.last, True)
+        return None
+
+    # --- learning -------------------------------------------------------------------------
+
+    def learn(self, name: str, pointer: tuple[str, int], action: str,
+              opposite: PlannedAction | None, forward: list[Any],
+              backward: list[Any] | None, current: Any) -> bool:
+        """Write what the walks show into the belief model; False when nothing could be."""
+        model = self.belief.model
+        spec = model.variables[name]
+        effect = self.effect(pointer, action)
+        order = order_from_traces(forward, backward)
+        if not [v for v in order.values if not isinstance(v, Dark)]:
+            return False
+        try:
+            if isinstance(spec, DiscreteVariable):
+                new, note = self._learn_values(name, effect, order, current)
+            else:
+                new, note = self._learn_numbers(name, pointer, action, opposite, forward,
+                                                backward, order, current)
+        except RepairError as exc:
+            self.episode.log("repair", f"could not repair {name}: {exc}")
+            return False
+        if new is None:
+            return False
+        self.adopt(new, note, pointer)
+        return True
+
+    def _learn_values(self, name: str, effect: Any, order: Any,
+                      current: Any) -> tuple[ApplianceModel, str]:
+        values = [v if isinstance(v, Dark) else str(v) for v in order.values]
+        if effect == "prev":
+            values.reverse()
+        known = self.domain_values(name)
+        values = fill_dark(values, known, order.wrap)
+        if not order.complete:
+            values = splice(known, values)
+        new = redefine_domain(self.belief.model, name, self.case(name), values=values,
+                              wrap=order.wrap, current=current)
+        return new, f"{name}: values {summary(values)}{_ends(order.wrap)}"
+
+    def _learn_numbers(self, name: str, pointer: tuple[str, int], action: str,
+                       opposite: PlannedAction | None, forward: list[Any],
+                       backward: list[Any] | None, order: Any,
+                       current: Any) -> tuple[ApplianceModel | None, str]:
+        spec = self.belief.model.variables[name]
+        effect = self.effect(pointer, action)
+        numbers = [m for m in (magnitude(spec, v) for v in order.values) if m is not None]
+        if not numbers:
+            return None, ""
+        change = _direction(spec, forward, backward)
+        new = self.belief.model
+        notes: list[str] = []
+        if isinstance(effect, Add):
+            new, numbers = self._learn_add(new, pointer, action, spec, change, numbers, notes)
+        elif effect in ("next", "prev") and change is not None:
+            rising = change > 0
+            if rising != (effect == "next"):
+                flipped = {action: "prev" if effect == "next" else "next"}
+                if opposite is not None:
+                    flipped[opposite.name] = effect
+                new = set_effects(new, pointer[0], pointer[1], flipped)
+                notes.append(f"{action} moves {name} the other way")
+            if not order.complete:
+                numbers = _keep_unseen(self.magnitudes(name), numbers,
+                                       clamped_high=rising if order.wrap is False else None)
+        ranges = ranges_from_values(numbers)
+        new = redefine_domain(new, name, self.case(name), ranges=ranges,
+                              wrap=order.wrap if effect != "toggle" else None,
+                              current=canonical(spec, magnitude(spec, current)))
+        notes.append(f"{name}: ranges {ranges}{_ends(order.wrap)}")
+        return new, "; ".join(notes)
+
+    def _learn_add(self, model: ApplianceModel, pointer: tuple[str, int], action: str,
+                   spec: Any, change: float | None, numbers: list[float],
+                   notes: list[str]) -> tuple[ApplianceModel, list[float]]:
+        """An ``add`` key: learn its amount and sign; widen (never shrink) the domain, since
+        the key may skip values other keys reach."""
+        effect = self.effect(pointer, action)
+        believed = float(time_step_seconds(effect.add) if isinstance(effect.add, str)
+                         else effect.add)
+        if change is not None and change != believed:
+            amount: Any = int(change) if isinstance(spec, TimeVariable) else tidy(change)
+            model = set_effects(model, pointer[0], pointer[1], {action: {"add": amount}})
+            notes.append(f"{action} adds {amount}")
+        known = self.magnitudes(self.step_variable(pointer) or "")
+        return model, sorted(set(known) | set(numbers))
+
+    def learn_goto(self, name: str, last: Executed, observed: Any) -> None:
+        """A go-to key set another value than believed: it sets that one."""
+        assert last.pointer is not None
+        try:
+            new = set_effects(self.belief.model, last.pointer[0], last.pointer[1],
+                              {last.action.name: {"to": observed}})
+        except RepairError as exc:
+            self.episode.log("repair", f"could not repair {last.action.name}: {exc}")
+            return
+        self.adopt(new, f"{last.action.name} sets {name} to {observed}", last.pointer)
+
+    def widen(self, name: str, observed: list[Any]) -> None:
+        """Let a keypad setting take values the belief's ranges missed."""
+        spec = self.belief.model.variables[name]
+        if isinstance(spec, DiscreteVariable):
+            return
+        known = self.magnitudes(name)
+        extra = [m for m in (magnitude(spec, loose(spec, v)) for v in observed) if m is not None]
+        if not known or not extra or set(extra) <= set(known):
+            return
+        points = sorted(set(known) | set(extra))
+        step = common_step(points)
+        low, high = points[0], points[-1]
+        try:
+            new = redefine_domain(self.belief.model, name, self.case(name),
+                                  ranges=[(low, high, step)])
+        except RepairError as exc:
+            self.episode.log("repair", f"could not widen {name}: {exc}")
+            return
+        self.adopt(new, f"{name}: allow {low:g}..{high:g} in steps of {step:g}",
+                   self.belief.pointer())
+
+
+def _ends(wrap: bool | None) -> str:
+    return {True: ", wraps", False: ", stops at the ends", None: ""}[wrap]
+
+
+def _keep_unseen(known: list[float], seen: list[float],
+                 clamped_high: bool | None) -> list[float]:
+    """Numbers after a partial walk: what was seen replaces the belief between the lowest and
+    highest value seen; beyond them the belief stands, except past an end the walk hit."""
+    low, high = min(seen), max(seen)
+    kept = [m for m in known if (m < low and clamped_high is not False)
+            or (m > high and clamped_high is not True)]
+    return sorted(set(seen) | set(kept))
+
+
+def _direction(spec: Any, forward: list[Any], backward: list[Any] | None) -> float | None:
+    """The usual change one press of the explored key makes (from the opposite key's walk,
+    reversed, when the first walk showed no change)."""
+    def numbers(trace: list[Any]) -> list[float]:
+        return [m for m in (magnitude(spec, v) for v in trace) if m is not None]
+
+    change = typical_change(numbers(forward))
+    if change is None and backward:
+        opposite = typical_change(numbers(backward))
+        change = None if opposite is None else -opposite
+    return change
