@@ -126,3 +126,25 @@ def test_the_run_stops_at_the_reasoning_step_limit() -> None:
     episode, reached, _ = run("apbot-no-button-policy", wide, {"temperature": "50"}, wide)
     assert episode.reasoning_steps == 25 and not reached
     assert "25 reasoning steps" in episode.failure
+
+
+def test_a_setting_with_one_believed_value_is_inspected_not_looped_on() -> None:
+    """The belief knows one temperature for the eco programme; the appliance has two."""
+    from importlib.resources import files
+
+    from apbot.examples import load_example
+    from apbot.model.load import loads_model
+
+    text = (files("apbot") / "data/examples/washing_machine.yaml").read_text()
+    truth = loads_model(text.replace('eco 40-60: {values: ["40"], initial: "40"}',
+                                     'eco 40-60: {values: ["40", "60"], initial: "40"}'))
+    assert truth != load_example("washing_machine")
+    goal = {"programme": "eco 40-60", "temperature": "60"}
+    episode, reached, _ = run("apbot", load_example("washing_machine"), goal, truth)
+    assert reached, [e.to_dict() for e in episode.trace if not e.exploring]
+    assert any("temperature" in r for r in episode.repairs)
+
+
+def test_a_goal_value_of_the_wrong_kind_stops_before_any_press() -> None:
+    episode, reached, steps = run("apbot", heater(), {"timer": "banana"})
+    assert not reached and steps == 0 and "timer" in episode.failure

@@ -146,17 +146,21 @@ def ranges_from_values(values: Sequence[float]) -> list[tuple[float, float, floa
     [(5, 5, 1)]
     >>> ranges_from_values([1, 2, 3, 5, 7, 8])
     [(1, 3, 1), (3, 7, 2), (7, 8, 1)]
+    >>> ranges_from_values([0.1 * i for i in range(6)])
+    [(0, 0.5, 0.1)]
     """
-    points = sorted({_tidy(v) for v in values})
+    points = sorted({_tidy(round(v, 9)) for v in values})  # 0.1 steps sum to 0.30000000000000004
     if len(points) == 1:
         return [(points[0], points[0], 1)]
     ranges: list[tuple[float, float, float]] = []
     start = points[0]
     step = points[1] - points[0]
+    step = _tidy(round(step, 9))
     for previous, current in pairwise(points[1:]):
-        if current - previous != step:
+        change = _tidy(round(current - previous, 9))
+        if change != step:
             ranges.append((start, previous, step))
-            start, step = previous, current - previous
+            start, step = previous, change
     ranges.append((start, points[-1], step))
     return ranges
 

@@ -91,7 +91,10 @@ class _Run(Exploring, Procedures, Greedy):
             found = self.make_plan(target)
             if not found.macro_actions:
                 if outside:
+                    pressed = self.episode.execution_steps
                     self.explore_outside(outside)
+                    if self.episode.execution_steps == pressed:  # no value to go to first
+                        any(self.inspect(name) for name in outside)
                     return
                 if any(self.belief.value(n) != v for n, v in inside.items()):
                     raise Stop("the rest of the goal cannot be reached on the belief model")
