@@ -593,7 +593,8 @@ def _event_row(event: Mapping[str, Any]) -> str:
     if kind == "check":
         return f'<tr class="c"><td>{step}<td>check<td>{_check_text(text, expected, values)}'
     if kind == "repair":
-        return f'<tr class="r"><td>{step}<td>repair<td colspan="2">model repaired: {text}'
+        verb = "repair failed" if text.startswith("could not") else "model repaired"
+        return f'<tr class="r"><td>{step}<td>repair<td colspan="2">{verb}: {text}'
     if kind == "explore":
         return f'<tr class="x"><td>{step}<td>explored<td colspan="2">{text}'
     if kind == "stop":
