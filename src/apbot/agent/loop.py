@@ -241,6 +241,10 @@ class _Run(Exploring, Procedures, Greedy):
                          values={n: o for n, (_, o) in done.surprises.items()})
         if done.refused or self._wrong_setting(done):
             self.repair_procedure(executed[first:])
+            name = self.step_variable(self.belief.pointer())
+            key = self.stepping_key(name) if name else None
+            if key is not None and self.shown(name) not in (MISSING, self.belief.value(name)):
+                self.explore(name, key)  # the probe showed a value the belief cannot hold
         else:
             name = done.variable if done.variable in done.surprises else next(iter(done.surprises))
             predicted, observed = done.surprises[name]
