@@ -25,7 +25,7 @@ from pydantic import BaseModel, ConfigDict, ValidationError, field_validator, mo
 from apbot.agent.episode import MAX_REASONING_STEPS
 from apbot.bench import plots
 from apbot.bench.records import TaskRecord
-from apbot.bench.results import RESULTS_FILE
+from apbot.bench.results import RESULTS_FILE, ResultsError, ResultStore
 from apbot.bench.suite import CATEGORIES, GOAL_VARIABLES
 
 SUMMARY_FILE = "summary.json"
@@ -176,25 +176,11 @@ def _parse(path: Path, kind: type[_M]) -> _M:
 
 
 def _read_records(path: Path) -> list[TaskRecord]:
-    """The results file, read without touching it (a bench may still be appending to it).
-
-    Like :meth:`ResultStore.load`: the first record of a key wins and a torn last line (no
-    newline yet) is skipped, but nothing is truncated here.
-    """
-    if not path.exists():
-        return []
-    lines = path.read_bytes().split(b"\n")[:-1]
-    records: dict[str, TaskRecord] = {}
-    for number, line in enumerate(lines, start=1):
-        if not line.strip():
-            continue
-        try:
-            record = TaskRecord.model_validate_json(line)
-        except ValidationError as exc:
-            raise ReportError(f"{path}:{number}: not a valid result record "
-                              f"({exc.errors()[0]['msg']})") from None
-        records.setdefault(record.key, record)
-    return list(records.values())
+    """The results file, read without touching it (a bench may still be appending to it)."""
+    try:
+        return list(ResultStore(path).load(repair=False).values())
+    except ResultsError as exc:
+        raise ReportError(str(exc)) from None
 
 
 def _method_order(summary: Summary, run: Mapping[str, Any]) -> list[str]:

@@ -28,8 +28,10 @@ class ResultStore:
     def __init__(self, path: Path) -> None:
         self.path = path
 
-    def load(self) -> dict[str, TaskRecord]:
-        """Every complete record by key (first one wins); a torn final line is removed."""
+    def load(self, repair: bool = True) -> dict[str, TaskRecord]:
+        """Every complete record by key (first one wins); a torn final line is skipped, and
+        with ``repair`` cut from the file (without, the file is only read: a report may be
+        written while a bench is still appending)."""
         if not self.path.exists():
             return {}
         data = self.path.read_bytes()
@@ -46,7 +48,7 @@ class ResultStore:
                                    f"({exc.errors()[0]['msg']}); move the file away or run "
                                    "with --rerun into a new directory") from None
             records.setdefault(record.key, record)
-        if tail.strip():  # written without its newline: the run died mid-write
+        if repair and tail.strip():  # written without its newline: the run died mid-write
             with self.path.open("r+b") as handle:
                 handle.truncate(len(data) - len(tail))
         return records
