@@ -108,3 +108,9 @@ def test_run_with_an_explicit_goal_and_a_failure_exit_code() -> None:
 def test_report_on_a_directory_without_a_run_is_a_clear_error(tmp_path: Path) -> None:
     result = runner.invoke(app, ["report", str(tmp_path)])
     assert result.exit_code == 1 and "apbot bench" in result.output
+
+
+def test_run_a_task_id_with_its_own_goal() -> None:
+    result = runner.invoke(app, ["run", "microwave_1", "t03", "-g", "clock=5:00"])
+    assert result.exit_code == 0, result.output
+    assert "goal: clock=5:00" in result.output

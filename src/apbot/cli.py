@@ -564,7 +564,8 @@ def run_command(
     task = _task_for(found, instruction)
     if goal:
         try:
-            task = Task(id=task.id if task else "live", instruction=instruction,
+            task = Task(id=task.id if task else "live",
+                        instruction=task.instruction if task else instruction,
                         goal=split_assignments(goal))
         except ValueError as exc:
             raise _fail(str(exc), 2) from None

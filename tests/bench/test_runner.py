@@ -198,3 +198,14 @@ def test_cli_runs_and_prints_the_table(tmp_path: Path) -> None:
                                       "--out", str(tmp_path / "x")])
     assert result.exit_code == 0, result.output
     assert "oracle" in result.output and "1.00" in result.output and "kettle" in result.output
+
+
+def test_two_runs_never_write_one_directory_at_once(tmp_path: Path) -> None:
+    from apbot.bench.runner import _exclusive
+
+    options = BenchOptions(methods=["oracle"], appliances=["kettle_1"], sample=1, workers=1,
+                           out=tmp_path / "run")
+    (tmp_path / "run").mkdir()
+    with _exclusive(tmp_path / "run"), pytest.raises(BenchError, match="another"):
+        run_benchmark(options, progress=False)
+    assert run_benchmark(options, progress=False).ran == 1  # free again afterwards

@@ -93,6 +93,7 @@ class Core:
         self.counts: Counter[str] = Counter()  # how often each kind of trouble came back
         self.explored: set[str] = set()
         self.unverified: set[str] = set()  # changed by a press but not seen since
+        self.contradicted: dict[str, Any] = {}  # last shown as a value the belief cannot hold
 
     # --- acting ------------------------------------------------------------------------------
 
@@ -132,6 +133,9 @@ class Core:
         if variable and not exploring:
             self.unverified.add(variable)
         self.unverified -= set(estimate.values)
+        self.contradicted.update(estimate.outside)
+        for name in estimate.values:
+            self.contradicted.pop(name, None)
         return Executed(action, pointer, variable, feedback, believed, before, predicted,
                         estimate, surprises)
 

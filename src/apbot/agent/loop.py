@@ -77,7 +77,9 @@ class _Run(Exploring, Procedures, Greedy):
         for macro in self.make_plan(inside).macro_actions:
             self.start_macro(macro)
             self.execute(macro)
-        raise Stop("plan executed", success=True)
+        holds = all(self.belief.value(n) == v for n, v in inside.items())
+        raise Stop("plan executed" if holds else "plan executed, but the belief no longer "
+                   "holds the goal", success=holds)
 
     def reasoning_step(self) -> None:
         inside, outside = self.goal()
@@ -98,6 +100,8 @@ class _Run(Exploring, Procedures, Greedy):
                     return
                 if any(self.belief.value(n) != v for n, v in inside.items()):
                     raise Stop("the rest of the goal cannot be reached on the belief model")
+                if self.settle_contradictions(inside):
+                    return  # the belief now holds what was shown: plan again
                 unseen = sorted(self.unverified & set(inside))
                 raise Stop("the goal holds" + (f" (not seen on the display: {', '.join(unseen)})"
                                                if unseen else ""), success=True)
@@ -287,7 +291,24 @@ class _Run(Exploring, Procedures, Greedy):
         elif isinstance(effect, GoTo) and observed is not None and not unchanged:
             self.learn_goto(name, last, observed)
         elif effect == "digit" and observed is not None:
-            self.widen(name, [observed])
+            shown = [e.observed(name) for e in executed[upto:]]
+            self.widen(name, [observed, *(v for v in shown if v not in (MISSING, None))])
+            self.settle_contradictions({name: None})
+
+    def settle_contradictions(self, names: dict[str, Any]) -> bool:
+        """A setting last shown with a value the belief cannot hold must not count as done:
+        a keypad setting learns the value (True: plan again); otherwise the run gives up."""
+        settled = False
+        for name in [n for n in self.contradicted if n in names]:
+            value = self.contradicted.pop(name)
+            spec = self.belief.model.variables[name]
+            if getattr(spec, "entry", None) is not None:
+                self.widen(name, [value])
+                if self.belief.set_value(name, value):
+                    settled = True
+                    continue
+            raise Stop(f"the display showed {name}={value!r}, which the belief cannot hold")
+        return settled
 
     def explore_outside(self, outside: dict[str, Any]) -> None:
         """Look at a variable whose goal value the belief lacks: explore it, or for a keypad

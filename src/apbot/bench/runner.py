@@ -146,8 +146,18 @@ def run_task(appliance: SuiteAppliance, task: Task, method: str, belief: str = "
     """:func:`run_one` on objects: also for a task that is not in a suite (``apbot run``).
 
     ``observer`` sees every trace event as it happens; ``belief_of`` builds (or fetches a
-    cached) belief model for the parsed belief spec.
+    cached) belief model for the parsed belief spec. Raises :class:`ValueError` before
+    anything runs when the goal is not a reachable state of the true appliance.
     """
+    from apbot.model.goal import GoalError
+    from apbot.plan.plan import Unreachable
+
+    try:
+        goal = parse_goal(appliance.model, task.goal)
+        optimal = _optimal(appliance, task, goal)
+    except (GoalError, Unreachable) as exc:
+        raise ValueError(f"{appliance.id}/{task.id}: the goal is not reachable on the "
+                         f"appliance: {exc}") from None
     started = time.perf_counter()
     spec = parse_belief(belief)
     chosen = get_method(method)
@@ -175,13 +185,11 @@ def run_task(appliance: SuiteAppliance, task: Task, method: str, belief: str = "
         except Exception as exc:
             error = f"error: {_describe(exc)}"
     limit = context.max_reasoning_steps if context is not None else MAX_REASONING_STEPS
-    goal = parse_goal(appliance.model, task.goal)
     final = {name: env.simulator.value(name) for name in goal}
     reached = all(final[name] == value for name, value in goal.items())
     within = episode.reasoning_steps <= limit
     success = not error and reached and within
     failure = "" if success else error or _failure(episode, goal, final, reached, limit)
-    optimal = _optimal(appliance, task, goal)
     return TaskRecord(
         key=record_key(method, str(spec), appliance.id, task.id), method=method,
         belief=str(spec), appliance=appliance.id, category=appliance.category, task=task.id,
@@ -362,8 +370,33 @@ def _batches(items: list[WorkItem], workers: int) -> list[list[WorkItem]]:
 def run_benchmark(options: BenchOptions, progress: bool = True) -> BenchOutcome:
     """Run the selected work into ``options.out``, skipping what is finished, and summarise.
 
-    Returns with ``interrupted=True`` after Ctrl-C, having kept every finished record.
+    Returns with ``interrupted=True`` after Ctrl-C, having kept every finished record. One
+    run at a time per directory: a second one would cut the first one's half-written line.
     """
+    return _run_benchmark(options, progress)
+
+
+@contextmanager
+def _exclusive(directory: Path) -> Iterator[None]:
+    """Hold an exclusive lock on the run directory (where the platform has ``fcntl``)."""
+    try:
+        import fcntl
+    except ImportError:  # pragma: no cover - not POSIX
+        yield
+        return
+    with (directory / ".lock").open("w") as handle:
+        try:
+            fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except OSError:
+            raise BenchError(f"another `apbot bench` is writing to {directory}; wait for it or "
+                             "use another --out") from None
+        try:
+            yield
+        finally:
+            fcntl.flock(handle, fcntl.LOCK_UN)
+
+
+def _run_benchmark(options: BenchOptions, progress: bool) -> BenchOutcome:
     spec = parse_belief(options.belief)
     if spec.kind == "faulty":
         try:
@@ -379,32 +412,33 @@ def run_benchmark(options: BenchOptions, progress: bool = True) -> BenchOutcome:
         raise BenchError(str(exc)) from None
     work = select_work(options, suite)
     _prepare_directory(options, spec, work)
-    store = ResultStore(options.out / RESULTS_FILE)
-    if options.rerun:
-        store.clear()
-    finished = store.load()
-    keys = {record_key(w.method, str(spec), w.appliance, w.task): w for w in work}
-    pending = [w for k, w in keys.items() if k not in finished]
-    done = [finished[k] for k in keys if k in finished]
+    with _exclusive(options.out):
+        store = ResultStore(options.out / RESULTS_FILE)
+        if options.rerun:
+            store.clear()
+        finished = store.load()
+        keys = {record_key(w.method, str(spec), w.appliance, w.task): w for w in work}
+        pending = [w for k, w in keys.items() if k not in finished]
+        done = [finished[k] for k in keys if k in finished]
 
-    new: list[TaskRecord] = []
-    stop = _Stop(in_process=options.workers == 1 or len(pending) <= 1)
-    with _progress(progress, options.methods, done, work) as advance, _sigint(stop):
-        stop.notice = advance.notice
-        try:
-            for record in _execute(pending, str(spec), options, stop):
-                store.append(record)
-                new.append(record)
-                advance(record)
-        except KeyboardInterrupt:  # a second Ctrl-C between tasks, in this process
-            stop.requested = True
-    interrupted = stop.requested
+        new: list[TaskRecord] = []
+        stop = _Stop(in_process=options.workers == 1 or len(pending) <= 1)
+        with _progress(progress, options.methods, done, work) as advance, _sigint(stop):
+            stop.notice = advance.notice
+            try:
+                for record in _execute(pending, str(spec), options, stop):
+                    store.append(record)
+                    new.append(record)
+                    advance(record)
+            except KeyboardInterrupt:  # a second Ctrl-C between tasks, in this process
+                stop.requested = True
+        interrupted = stop.requested
 
-    everything = store.load()
-    selected = sorted((everything[k] for k in keys if k in everything), key=lambda r: r.key)
-    summary = summarise(selected, belief=str(spec))
-    _write_json(options.out / SUMMARY_FILE, summary)
-    return BenchOutcome(selected, summary, options.out, interrupted, len(new), len(done))
+        everything = store.load()
+        selected = sorted((everything[k] for k in keys if k in everything), key=lambda r: r.key)
+        summary = summarise(selected, belief=str(spec))
+        _write_json(options.out / SUMMARY_FILE, summary)
+        return BenchOutcome(selected, summary, options.out, interrupted, len(new), len(done))
 
 
 def _execute(pending: list[WorkItem], belief: str, options: BenchOptions,
