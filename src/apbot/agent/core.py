@@ -198,6 +198,12 @@ class Core:
         self.episode.repairs.append(note)
         self.episode.log("repair", note)
 
+    def count_reasoning_step(self) -> None:
+        """One more decision; the run ends instead when the limit is reached."""
+        if self.episode.reasoning_steps >= self.context.max_reasoning_steps:
+            raise Stop(f"reached the limit of {self.context.max_reasoning_steps} reasoning steps")
+        self.episode.reasoning_steps += 1
+
     def trouble(self, key: str, message: str) -> None:
         """Count one more occurrence of a problem; give up when it keeps coming back."""
         self.counts[key] += 1

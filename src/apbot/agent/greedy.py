@@ -12,7 +12,7 @@ from __future__ import annotations
 from collections import Counter
 from typing import Any
 
-from apbot.agent.core import MISSING, Core, Executed, Stop
+from apbot.agent.core import MISSING, Core, Executed
 from apbot.plan.plan import MacroAction, PlannedAction
 
 
@@ -72,10 +72,7 @@ class Greedy(Core):
             if seen[observed] > 2:  # going round in circles
                 return executed
             best = min(keys, key=lambda a: self._distance_after(name, a, target))
-            if self.episode.reasoning_steps >= self.context.max_reasoning_steps:
-                raise Stop("reached the limit of "
-                           f"{self.context.max_reasoning_steps} reasoning steps")
-            self.episode.reasoning_steps += 1
+            self.count_reasoning_step()
             executed.append(self.press(self.planned(best)))
 
     def _distance_after(self, name: str, action: str, target: Any) -> float:

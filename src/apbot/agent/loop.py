@@ -114,9 +114,7 @@ class _Run(Exploring, Procedures, Greedy):
             self.pending.clear()  # the belief changed: plan again from what was observed
 
     def start_macro(self, macro: MacroAction) -> None:
-        if self.episode.reasoning_steps >= self.context.max_reasoning_steps:
-            raise Stop(f"reached the limit of {self.context.max_reasoning_steps} reasoning steps")
-        self.episode.reasoning_steps += 1
+        self.count_reasoning_step()
         self.episode.log("macro", macro.feature, expected=dict(macro.expect))
         self.values_before = self.belief.values()
 
@@ -208,9 +206,7 @@ class _Run(Exploring, Procedures, Greedy):
                            self.stepping((feature, index), a)]
                 if not walking:
                     continue
-                self.lift_guards(steps[0].actions[0])
-                for before in steps[:index]:
-                    self.press(self.planned(before.actions[0]), exploring=True)
+                self.enter_step(feature, index)
                 self.explore(name, Executed(self.planned(walking[0]), (feature, index), name,
                                             self.last, True))
                 return True

@@ -125,9 +125,7 @@ class Procedures(Core):
         for candidate in dict.fromkeys(others):
             # from the step before (where the plan left off), else through the procedure
             if self.belief.pointer() != (feature, index - 1):
-                self.lift_guards(steps[0].actions[0])
-                for step in steps[:index]:
-                    self.press(self.planned(step.actions[0]), exploring=True)
+                self.enter_step(feature, index)
             probe = self.press(self.planned(candidate), exploring=True)
             shown = probe.observed(name)
             if probe.feedback.accepted and shown is not MISSING:
@@ -170,6 +168,14 @@ class Procedures(Core):
         self.adopt(new, f"{feature} takes {entering.action.name} as a further step",
                    (feature, index + 1))
         return True
+
+    def enter_step(self, feature: str, index: int) -> None:
+        """Go through ``feature`` up to (not into) step ``index``: lift any guard, then press
+        the first key of each earlier step (exploration presses)."""
+        steps = self.belief.model.features[feature]
+        self.lift_guards(steps[0].actions[0])
+        for step in steps[:index]:
+            self.press(self.planned(step.actions[0]), exploring=True)
 
     def lift_guards(self, action: str) -> None:
         """Bring the appliance out of any guard that would refuse ``action`` (switch it on,

@@ -25,7 +25,7 @@ from pydantic import BaseModel, ConfigDict, ValidationError, field_validator, mo
 from apbot.agent.episode import MAX_REASONING_STEPS
 from apbot.bench import plots
 from apbot.bench.records import TaskRecord
-from apbot.bench.results import RESULTS_FILE, ResultsError, ResultStore
+from apbot.bench.results import RESULTS_FILE, ResultsError, read_records
 from apbot.bench.suite import CATEGORIES, GOAL_VARIABLES
 
 SUMMARY_FILE = "summary.json"
@@ -146,7 +146,10 @@ def load_run(directory: Path) -> RunData:
     if not isinstance(run, dict):
         raise ReportError(f"{directory / RUN_FILE}: expected a JSON object")
     methods = _method_order(summary, run)
-    records = _read_records(directory / RESULTS_FILE)
+    try:
+        records = read_records(directory)
+    except ResultsError as exc:
+        raise ReportError(str(exc)) from None
     methods += sorted({r.method for r in records} - set(methods))
     rank = {m: i for i, m in enumerate(methods)}
     records.sort(key=lambda r: (rank[r.method], r.appliance, r.task, r.key))
@@ -173,14 +176,6 @@ def _parse(path: Path, kind: type[_M]) -> _M:
         where = ".".join(str(part) for part in error["loc"]) or "top level"
         raise ReportError(f"{path}: {where}: {error['msg']}; rewrite it with "
                           "`apbot bench` (or the fault study)") from None
-
-
-def _read_records(path: Path) -> list[TaskRecord]:
-    """The results file, read without touching it (a bench may still be appending to it)."""
-    try:
-        return list(ResultStore(path).load(repair=False).values())
-    except ResultsError as exc:
-        raise ReportError(str(exc)) from None
 
 
 def _method_order(summary: Summary, run: Mapping[str, Any]) -> list[str]:

@@ -69,5 +69,6 @@ class ResultStore:
 
 
 def read_records(directory: Path) -> list[TaskRecord]:
-    """The records of a run directory, in the order they were written."""
-    return list(ResultStore(directory / RESULTS_FILE).load().values())
+    """The records of a run directory, in the order they were written — only read, never
+    repaired (a bench may still be appending to the file)."""
+    return list(ResultStore(directory / RESULTS_FILE).load(repair=False).values())
