@@ -21,8 +21,9 @@ from apbot.bench.runner import BenchOptions, run_benchmark
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
     parser.add_argument("--workers", type=int, default=2)
     parser.add_argument("--methods", default=None, help="comma-separated (default: all)")
     parser.add_argument("--sample", type=int, default=None, help="first N tasks per appliance")
@@ -31,17 +32,19 @@ def main() -> None:
     chosen = args.methods.split(",") if args.methods else list(methods())
     with tempfile.TemporaryDirectory(prefix="apbot-bench-time-") as out:
         started = time.perf_counter()
-        outcome = run_benchmark(BenchOptions(methods=chosen, sample=args.sample,
-                                             workers=args.workers, out=Path(out)),
-                                progress=False)
+        outcome = run_benchmark(
+            BenchOptions(methods=chosen, sample=args.sample, workers=args.workers, out=Path(out)),
+            progress=False,
+        )
         seconds = time.perf_counter() - started
     tasks = len(outcome.records)
-    print(f"{tasks} tasks ({len(chosen)} methods) with {args.workers} worker(s): "
-          f"{seconds:.1f} s, {tasks / seconds:.0f} tasks/s (budget {args.budget:g} s)")
+    print(
+        f"{tasks} tasks ({len(chosen)} methods) with {args.workers} worker(s): "
+        f"{seconds:.1f} s, {tasks / seconds:.0f} tasks/s (budget {args.budget:g} s)"
+    )
     for name, row in outcome.summary["methods"].items():
         overall = row["overall"]
-        print(f"  {name:<24} SR {overall['sr']:.3f}  SPL {overall['spl']:.3f}  "
-              f"n {overall['n']}")
+        print(f"  {name:<24} SR {overall['sr']:.3f}  SPL {overall['spl']:.3f}  n {overall['n']}")
     if seconds > args.budget:
         sys.exit(f"over budget: {seconds:.1f} s > {args.budget:g} s")
 

@@ -50,26 +50,36 @@ def _listing(kind: Callable[[str], T], what: str) -> Callable[[str], list[T]]:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--rates", type=_listing(float, "fault rate"),
-                        default=[0.0, 0.1, 0.2, 0.3, 0.5])
+    parser = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
+    parser.add_argument(
+        "--rates", type=_listing(float, "fault rate"), default=[0.0, 0.1, 0.2, 0.3, 0.5]
+    )
     parser.add_argument("--seeds", type=_listing(int, "whole-number seed"), default=[0, 1, 2])
     parser.add_argument("--methods", type=_listing(str, "method"), default=list(DEFAULT_METHODS))
     parser.add_argument("--out", type=Path, default=Path("runs/faults"))
     parser.add_argument("--workers", type=int, default=None, help="default: every core")
-    parser.add_argument("--sample", type=int, default=None,
-                        help="only the first N tasks of each appliance")
+    parser.add_argument(
+        "--sample", type=int, default=None, help="only the first N tasks of each appliance"
+    )
     parser.add_argument("--appliances", type=_listing(str, "appliance id"), default=None)
     args = parser.parse_args()
     console = Console()
     try:
-        study = run_fault_study(args.rates, args.methods, args.seeds, out=args.out,
-                                workers=args.workers, sample=args.sample,
-                                appliances=args.appliances)
+        study = run_fault_study(
+            args.rates,
+            args.methods,
+            args.seeds,
+            out=args.out,
+            workers=args.workers,
+            sample=args.sample,
+            appliances=args.appliances,
+        )
     except FaultStudyInterrupted as exc:
-        console.print(f"[yellow]{exc}[/yellow]; finished tasks are kept: run the same command "
-                      "again to resume")
+        console.print(
+            f"[yellow]{exc}[/yellow]; finished tasks are kept: run the same command again to resume"
+        )
         sys.exit(130)
     except ValueError as exc:  # bad rates, unknown methods or appliances (BenchError)
         console.print(f"[red]error[/red]: {exc}")

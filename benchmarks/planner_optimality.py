@@ -46,11 +46,14 @@ def main() -> None:
             mismatches += 1
             print(f"MISMATCH seed={seed}: planner {found}, BFS {shortest}, goal {goal}")
     seconds = time.perf_counter() - started
-    print(f"compared {compared} (model, goal) cases, skipped {skipped} (BFS budget), "
-          f"{seconds:.1f} s")
-    print(f"mismatches: {mismatches}; unreachable goals (both agree): {unreachable}; "
-          f"reachable plan lengths {min(lengths)}..{max(lengths)}, "
-          f"mean {sum(lengths) / len(lengths):.1f}")
+    print(
+        f"compared {compared} (model, goal) cases, skipped {skipped} (BFS budget), {seconds:.1f} s"
+    )
+    print(
+        f"mismatches: {mismatches}; unreachable goals (both agree): {unreachable}; "
+        f"reachable plan lengths {min(lengths)}..{max(lengths)}, "
+        f"mean {sum(lengths) / len(lengths):.1f}"
+    )
 
 
 if __name__ == "__main__":

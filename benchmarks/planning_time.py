@@ -24,8 +24,14 @@ from apbot.plan.bfs import random_walk
 from apbot.plan.plan import Unreachable, plan
 from apbot.sim.compiled import compiled_model
 
-WASHER_GOAL = {"power": "on", "programme": "wool", "temperature": "20",
-               "spin_speed": "600 rpm", "finish_in": "5 h", "running": "on"}
+WASHER_GOAL = {
+    "power": "on",
+    "programme": "wool",
+    "temperature": "20",
+    "spin_speed": "600 rpm",
+    "finish_in": "5 h",
+    "running": "on",
+}
 
 
 def single_goals(model: ApplianceModel, per_variable: int) -> list[dict[str, Any]]:
@@ -37,8 +43,7 @@ def single_goals(model: ApplianceModel, per_variable: int) -> list[dict[str, Any
             goals += [{name: v} for v in values[::stride]]
         else:
             for case, spec in (var.cases or {}).items():
-                goals += [{var.depends_on: case, name: v}
-                          for v in build_domain(var, spec).values]
+                goals += [{var.depends_on: case, name: v} for v in build_domain(var, spec).values]
     return goals
 
 
@@ -74,8 +79,10 @@ def main() -> None:
     parser.add_argument("--values", type=int, default=40)
     args = parser.parse_args()
     rng = random.Random(0)
-    print(f"{'model':<20} {'goals':>6} {'median ms':>10} {'p95 ms':>8} {'worst ms':>9} "
-          f"{'unreachable':>11}")
+    print(
+        f"{'model':<20} {'goals':>6} {'median ms':>10} {'p95 ms':>8} {'worst ms':>9} "
+        f"{'unreachable':>11}"
+    )
     everything = []
     for name in example_names():
         model = load_example(name)
@@ -84,15 +91,21 @@ def main() -> None:
         results = [timed(model, g) for g in goals]
         times = sorted(t for t, _ in results)
         everything += times
-        print(f"{name:<20} {len(goals):>6} {statistics.median(times):>10.2f} "
-              f"{times[int(0.95 * len(times))]:>8.2f} {times[-1]:>9.1f} "
-              f"{sum(length is None for _, length in results):>11}")
-    print(f"all goals: {len(everything)}, median {statistics.median(everything):.2f} ms, "
-          f"worst {max(everything):.1f} ms")
+        print(
+            f"{name:<20} {len(goals):>6} {statistics.median(times):>10.2f} "
+            f"{times[int(0.95 * len(times))]:>8.2f} {times[-1]:>9.1f} "
+            f"{sum(length is None for _, length in results):>11}"
+        )
+    print(
+        f"all goals: {len(everything)}, median {statistics.median(everything):.2f} ms, "
+        f"worst {max(everything):.1f} ms"
+    )
     washer = load_example("washing_machine")
     times = sorted(timed(washer, WASHER_GOAL)[0] for _ in range(50))
-    print(f"6-variable washing-machine goal: median {statistics.median(times):.2f} ms over 50 "
-          f"runs (target < 50 ms); plan length {len(plan(washer, None, WASHER_GOAL))}")
+    print(
+        f"6-variable washing-machine goal: median {statistics.median(times):.2f} ms over 50 "
+        f"runs (target < 50 ms); plan length {len(plan(washer, None, WASHER_GOAL))}"
+    )
 
 
 if __name__ == "__main__":

@@ -28,8 +28,19 @@ RESULTS = "results.jsonl"
 
 
 def bench_command(args: argparse.Namespace, out: Path) -> list[str]:
-    command = [sys.executable, "-m", "apbot.cli", "bench", "--out", str(out), "--no-report",
-               "--workers", str(args.workers), "--belief", args.belief]
+    command = [
+        sys.executable,
+        "-m",
+        "apbot.cli",
+        "bench",
+        "--out",
+        str(out),
+        "--no-report",
+        "--workers",
+        str(args.workers),
+        "--belief",
+        args.belief,
+    ]
     if not args.full:
         command += ["--sample", "2"]
     if args.methods:
@@ -44,14 +55,20 @@ def count_lines(path: Path) -> int:
 def interrupt(args: argparse.Namespace, out: Path) -> tuple[int, int, float]:
     """Start the run, signal it after ``--after`` records; (exit code, records then, seconds)."""
     started = time.perf_counter()
-    process = subprocess.Popen(bench_command(args, out), stdout=subprocess.DEVNULL,
-                               stderr=subprocess.PIPE, start_new_session=True)
+    process = subprocess.Popen(
+        bench_command(args, out),
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.PIPE,
+        start_new_session=True,
+    )
     results = out / RESULTS
     try:
         while count_lines(results) < args.after:
             if process.poll() is not None:
-                sys.exit(f"the run ended (exit {process.returncode}) before {args.after} "
-                         f"records existed; lower --after\n{process.stderr.read().decode()}")
+                sys.exit(
+                    f"the run ended (exit {process.returncode}) before {args.after} "
+                    f"records existed; lower --after\n{process.stderr.read().decode()}"
+                )
             time.sleep(0.02)
         seen = count_lines(results)
         os.killpg(process.pid, getattr(signal, f"SIG{args.signal}"))
@@ -86,10 +103,15 @@ def compare(resumed: Path, straight: Path) -> list[str]:
     by_key_a = {r["key"]: r for r in a}
     by_key_b = {r["key"]: r for r in b}
     if by_key_a.keys() != by_key_b.keys():
-        problems.append(f"key sets differ: {len(by_key_a.keys() - by_key_b.keys())} only "
-                        f"resumed, {len(by_key_b.keys() - by_key_a.keys())} only uninterrupted")
-    differing = [k for k in sorted(by_key_a.keys() & by_key_b.keys())
-                 if {**by_key_a[k], "timings": None} != {**by_key_b[k], "timings": None}]
+        problems.append(
+            f"key sets differ: {len(by_key_a.keys() - by_key_b.keys())} only "
+            f"resumed, {len(by_key_b.keys() - by_key_a.keys())} only uninterrupted"
+        )
+    differing = [
+        k
+        for k in sorted(by_key_a.keys() & by_key_b.keys())
+        if {**by_key_a[k], "timings": None} != {**by_key_b[k], "timings": None}
+    ]
     if differing:
         problems.append(f"{len(differing)} record(s) differ, e.g. {differing[0]}")
     if (resumed / "summary.json").read_bytes() != (straight / "summary.json").read_bytes():
@@ -98,16 +120,21 @@ def compare(resumed: Path, straight: Path) -> list[str]:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
     parser.add_argument("--full", action="store_true", help="all 450 tasks, not 2 per appliance")
     parser.add_argument("--after", type=int, default=200, help="records before the signal")
     parser.add_argument("--signal", choices=["KILL", "INT", "TERM"], default="KILL")
     parser.add_argument("--workers", type=int, default=2)
     parser.add_argument("--methods", default=None, help="comma-separated (default: all)")
     parser.add_argument("--belief", default="true")
-    parser.add_argument("--keep", type=Path, default=None,
-                        help="put the two run directories here instead of a temporary one")
+    parser.add_argument(
+        "--keep",
+        type=Path,
+        default=None,
+        help="put the two run directories here instead of a temporary one",
+    )
     args = parser.parse_args()
     with tempfile.TemporaryDirectory(prefix="apbot-resume-") as temporary:
         base = args.keep or Path(temporary)
@@ -124,15 +151,20 @@ def main() -> None:
         problems = compare(resumed, straight)
         if code != expected:
             problems.append(f"the interrupted run exited {code}, expected {expected}")
-        print(f"SIG{args.signal} after {seen} records ({first:.1f} s): exit {code}, "
-              f"{kept} complete record(s) kept")
-        print(f"resumed to {total} records in {second:.1f} s; uninterrupted run: "
-              f"{count_lines(straight / RESULTS)} records in {third:.1f} s")
+        print(
+            f"SIG{args.signal} after {seen} records ({first:.1f} s): exit {code}, "
+            f"{kept} complete record(s) kept"
+        )
+        print(
+            f"resumed to {total} records in {second:.1f} s; uninterrupted run: "
+            f"{count_lines(straight / RESULTS)} records in {third:.1f} s"
+        )
         if problems:
             print("DIFFERENT:\n  " + "\n  ".join(problems))
             sys.exit(1)
-        print("identical: same keys, no duplicates, same records (timings aside), "
-              "same summary.json")
+        print(
+            "identical: same keys, no duplicates, same records (timings aside), same summary.json"
+        )
 
 
 if __name__ == "__main__":

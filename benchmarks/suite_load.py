@@ -29,12 +29,18 @@ def main() -> None:
     args = parser.parse_args()
     seconds = []
     for _ in range(args.repeat):
-        out = subprocess.run([sys.executable, "-c", PROBE.format(check=args.check)],
-                             capture_output=True, text=True, check=True).stdout.split()
+        out = subprocess.run(
+            [sys.executable, "-c", PROBE.format(check=args.check)],
+            capture_output=True,
+            text=True,
+            check=True,
+        ).stdout.split()
         seconds.append(float(out[0]))
-    print(f"loaded {out[1]} appliances, {out[2]} tasks; cold import + load: median "
-          f"{statistics.median(seconds):.2f} s, worst {max(seconds):.2f} s over {args.repeat} "
-          f"runs (target < 2 s){' with semantic checks' if args.check else ''}")
+    print(
+        f"loaded {out[1]} appliances, {out[2]} tasks; cold import + load: median "
+        f"{statistics.median(seconds):.2f} s, worst {max(seconds):.2f} s over {args.repeat} "
+        f"runs (target < 2 s){' with semantic checks' if args.check else ''}"
+    )
 
 
 if __name__ == "__main__":

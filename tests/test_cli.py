@@ -45,8 +45,10 @@ def test_check_a_goal() -> None:
 
 
 def test_plan_prints_a_table() -> None:
-    result = runner.invoke(app, ["plan", "washing_machine", "-g", "power=on",
-                                 "-g", "programme=wool", "-g", "running=on"])
+    result = runner.invoke(
+        app,
+        ["plan", "washing_machine", "-g", "power=on", "-g", "programme=wool", "-g", "running=on"],
+    )
     assert result.exit_code == 0, result.output
     assert "select_programme" in result.output and "turn_programme_cw ×4" in result.output
 
@@ -60,8 +62,9 @@ def test_plan_json_and_unreachable() -> None:
 
 def test_sim_script(tmp_path: Path) -> None:
     script = tmp_path / "actions.txt"
-    script.write_text("press_power\nturn_programme_cw\npress_temp\nnonsense\n"
-                      "hold_temp_and_spin 1\nstate\n")
+    script.write_text(
+        "press_power\nturn_programme_cw\npress_temp\nnonsense\nhold_temp_and_spin 1\nstate\n"
+    )
     result = runner.invoke(app, ["sim", "washing_machine", "--script", str(script)])
     assert result.exit_code == 0, result.output
     assert "PRG eco 40-60" in result.output
@@ -81,8 +84,9 @@ def test_bad_inputs_are_messages_not_tracebacks(tmp_path: Path) -> None:
     assert result.exit_code == 1 and "not UTF-8" in result.output
     result = runner.invoke(app, ["sim", "washing_machine", "--script", str(tmp_path / "none")])
     assert result.exit_code == 1 and "cannot read the script" in result.output
-    result = runner.invoke(app, ["plan", "washing_machine", "-g", "programme=wool",
-                                 "-g", "programme=cotton"])
+    result = runner.invoke(
+        app, ["plan", "washing_machine", "-g", "programme=wool", "-g", "programme=cotton"]
+    )
     assert result.exit_code == 1 and "given twice" in result.output
     result = runner.invoke(app, ["plan", "microwave_keypad", "-g", "cook_time=00:75:00"])
     assert result.exit_code == 1 and "not a time" in result.output
@@ -98,8 +102,9 @@ def test_run_shows_a_task_live_and_judges_it() -> None:
 
 
 def test_run_with_an_explicit_goal_and_a_failure_exit_code() -> None:
-    ok = runner.invoke(app, ["run", "kettle_1", "keep it warm at 80", "-g", "keep_warm=on",
-                             "-g", "temperature=80"])
+    ok = runner.invoke(
+        app, ["run", "kettle_1", "keep it warm at 80", "-g", "keep_warm=on", "-g", "temperature=80"]
+    )
     assert ok.exit_code == 0, ok.output
     unknown = runner.invoke(app, ["run", "kettle_1", "make tea please"])
     assert unknown.exit_code == 2 and "-g NAME=VALUE" in unknown.output

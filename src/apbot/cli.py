@@ -23,15 +23,22 @@ if TYPE_CHECKING:
     from apbot.agent.episode import TraceEvent
     from apbot.bench.suite import Suite, SuiteAppliance, Task
 
-app = typer.Typer(add_completion=False, no_args_is_help=True,
-                  help="Operate home appliances by reading their manuals.")
+app = typer.Typer(
+    add_completion=False,
+    no_args_is_help=True,
+    help="Operate home appliances by reading their manuals.",
+)
 suite_app = typer.Typer(no_args_is_help=True, help="The bundled benchmark suite.")
 app.add_typer(suite_app, name="suite")
 console = Console(highlight=False, soft_wrap=True)
 errors = Console(stderr=True, highlight=False, soft_wrap=True)
 
-ModelArg = Annotated[str, typer.Argument(
-    help="A model file, an appliance directory, an example name or a bundled appliance id.")]
+ModelArg = Annotated[
+    str,
+    typer.Argument(
+        help="A model file, an appliance directory, an example name or a bundled appliance id."
+    ),
+]
 
 
 def _fail(message: str, code: int = 1) -> typer.Exit:
@@ -58,24 +65,29 @@ def resolve_model(spec: str) -> tuple[ApplianceModel, str]:
     if bundled.exists():
         return load_model(bundled), str(bundled)
     examples = ", ".join(example_names())
-    raise FileNotFoundError(f"{spec!r} is not a model file, an example ({examples}) "
-                            "or a bundled appliance id")
+    raise FileNotFoundError(
+        f"{spec!r} is not a model file, an example ({examples}) or a bundled appliance id"
+    )
 
 
 def _print_problems(problems: list[Problem], source: str) -> None:
     for problem in problems:
         colour = "red" if problem.severity == "error" else "yellow"
         location = f"{source}:{problem.line}" if problem.line else source
-        console.print(f"[{colour}]{problem.severity}[/{colour}] {location}: "
-                      f"[bold]{problem.where}[/bold]: {problem.message} "
-                      f"[dim]\\[{problem.check}][/dim]")
+        console.print(
+            f"[{colour}]{problem.severity}[/{colour}] {location}: "
+            f"[bold]{problem.where}[/bold]: {problem.message} "
+            f"[dim]\\[{problem.check}][/dim]"
+        )
 
 
 @app.command()
-def check(model: ModelArg,
-          goal: Annotated[list[str] | None, typer.Option("--goal", "-g",
-                                                         help="Also check a goal NAME=VALUE.")]
-          = None) -> None:
+def check(
+    model: ModelArg,
+    goal: Annotated[
+        list[str] | None, typer.Option("--goal", "-g", help="Also check a goal NAME=VALUE.")
+    ] = None,
+) -> None:
     """Validate a model (or a suite appliance directory); exit 1 if it has errors."""
     from apbot.model.load import line_of, load_model
     from apbot.model.validate import check_goal, check_model
@@ -87,11 +99,16 @@ def check(model: ModelArg,
         else:
             if path.is_dir() and (path / "model.yaml").exists():
                 path = path / "model.yaml"  # a directory with a model but no tasks
-            loaded, source = resolve_model(model) if not path.exists() else (
-                load_model(path, check=False), str(path))
+            loaded, source = (
+                resolve_model(model)
+                if not path.exists()
+                else (load_model(path, check=False), str(path))
+            )
             text = Path(source).read_text(encoding="utf-8") if Path(source).exists() else None
-            problems = [Problem(p.path, p.message, p.check, p.severity, line_of(text, p.path))
-                        for p in check_model(loaded)]
+            problems = [
+                Problem(p.path, p.message, p.check, p.severity, line_of(text, p.path))
+                for p in check_model(loaded)
+            ]
             if goal:
                 from apbot.model.goal import split_assignments
 
@@ -153,11 +170,11 @@ def _check_appliance_dir(path: Path) -> list[Problem]:
 
 
 @app.command("plan")
-def plan_command(model: ModelArg,
-                 goal: Annotated[list[str], typer.Option("--goal", "-g",
-                                                         help="NAME=VALUE, repeatable.")],
-                 as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False
-                 ) -> None:
+def plan_command(
+    model: ModelArg,
+    goal: Annotated[list[str], typer.Option("--goal", "-g", help="NAME=VALUE, repeatable.")],
+    as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False,
+) -> None:
     """Plan the shortest action sequence from the initial state to a goal."""
     from apbot.plan.plan import Unreachable, plan
 
@@ -172,20 +189,38 @@ def plan_command(model: ModelArg,
     except Unreachable as exc:
         raise _fail(f"unreachable: {exc.reason}") from None
     if as_json:
-        console.print_json(json.dumps({
-            "goal": found.goal, "actions": len(found),
-            "macro_actions": [{"feature": m.feature, "actions": [str(a) for a in m.actions],
-                               "expect": m.expect} for m in found.macro_actions]}))
+        console.print_json(
+            json.dumps(
+                {
+                    "goal": found.goal,
+                    "actions": len(found),
+                    "macro_actions": [
+                        {
+                            "feature": m.feature,
+                            "actions": [str(a) for a in m.actions],
+                            "expect": m.expect,
+                        }
+                        for m in found.macro_actions
+                    ],
+                }
+            )
+        )
         return
-    table = Table(title=f"{len(found.macro_actions)} macro actions, {len(found)} actions "
-                        f"({found.seconds * 1000:.1f} ms)")
+    table = Table(
+        title=f"{len(found.macro_actions)} macro actions, {len(found)} actions "
+        f"({found.seconds * 1000:.1f} ms)"
+    )
     table.add_column("#", justify="right")
     table.add_column("macro action")
     table.add_column("actions")
     table.add_column("expect")
     for i, macro in enumerate(found.macro_actions, 1):
-        table.add_row(str(i), macro.feature, _compress([str(a) for a in macro.actions]),
-                      ", ".join(f"{k}={v}" for k, v in macro.expect.items()))
+        table.add_row(
+            str(i),
+            macro.feature,
+            _compress([str(a) for a in macro.actions]),
+            ", ".join(f"{k}={v}" for k, v in macro.expect.items()),
+        )
     console.print(table)
 
 
@@ -202,9 +237,12 @@ def _compress(actions: list[str]) -> str:
 
 
 @app.command()
-def sim(model: ModelArg,
-        script: Annotated[Path | None, typer.Option(help="Read actions from a file, one per line.")]
-        = None) -> None:
+def sim(
+    model: ModelArg,
+    script: Annotated[
+        Path | None, typer.Option(help="Read actions from a file, one per line.")
+    ] = None,
+) -> None:
     """Drive a simulator by hand: type an action, see the display. `help` lists actions."""
     from apbot.sim.simulator import Simulator, UnknownAction
 
@@ -216,8 +254,10 @@ def sim(model: ModelArg,
     except FileNotFoundError as exc:
         raise _fail(str(exc)) from None
     simulator = Simulator(loaded)
-    console.print(f"[bold]{loaded.appliance.name or loaded.appliance.id}[/bold] — "
-                  "type an action (`help`, `state`, `reset`, `quit`)")
+    console.print(
+        f"[bold]{loaded.appliance.name or loaded.appliance.id}[/bold] — "
+        "type an action (`help`, `state`, `reset`, `quit`)"
+    )
     console.print(f"display: [cyan]{simulator.observe().display!r}[/cyan]")
     try:
         lines = script.read_text(encoding="utf-8").splitlines() if script else None
@@ -274,29 +314,45 @@ def suite_list() -> None:
     for column in ("id", "category", "name", "controls", "variables", "tasks", "manual words"):
         table.add_column(column)
     for a in suite.appliances:
-        table.add_row(a.id, a.category, a.model.appliance.name, str(len(a.model.controls)),
-                      str(len(a.model.variables)), str(len(a.tasks)), str(a.manual_words))
+        table.add_row(
+            a.id,
+            a.category,
+            a.model.appliance.name,
+            str(len(a.model.controls)),
+            str(len(a.model.variables)),
+            str(len(a.tasks)),
+            str(a.manual_words),
+        )
     console.print(table)
 
 
 @suite_app.command("show")
-def suite_show(appliance: str,
-               lines: Annotated[int, typer.Option(help="Manual lines to show.")] = 25) -> None:
+def suite_show(
+    appliance: str, lines: Annotated[int, typer.Option(help="Manual lines to show.")] = 25
+) -> None:
     """One appliance: the start of its manual, a model summary, and its tasks."""
     [item] = _chosen([appliance])
     console.rule(f"{item.id} — {item.model.appliance.name} ({item.category})")
     manual = item.manual.splitlines()
-    console.print("\n".join(manual[:lines]) + (f"\n[dim]… {len(manual) - lines} more lines, "
-                                               f"{item.manual_words} words[/dim]"
-                                               if len(manual) > lines else ""))
+    console.print(
+        "\n".join(manual[:lines])
+        + (
+            f"\n[dim]… {len(manual) - lines} more lines, {item.manual_words} words[/dim]"
+            if len(manual) > lines
+            else ""
+        )
+    )
     console.rule("model")
     from apbot.bench.stats import appliance_features
 
     model = item.model
-    console.print(f"controls: {len(model.controls)}, actions: {len(model.actions)}, "
-                  f"features: {', '.join(model.features)}")
-    console.print("uses: " + ", ".join(sorted(k for k, v in appliance_features(model).items()
-                                              if v)))
+    console.print(
+        f"controls: {len(model.controls)}, actions: {len(model.actions)}, "
+        f"features: {', '.join(model.features)}"
+    )
+    console.print(
+        "uses: " + ", ".join(sorted(k for k, v in appliance_features(model).items() if v))
+    )
     table = Table()
     for column in ("variable", "type", "values"):
         table.add_column(column)
@@ -304,8 +360,9 @@ def suite_show(appliance: str,
 
     for name, var in model.variables.items():
         values = all_values(var)
-        shown = ", ".join(str(v) for v in values[:6]) + (f", … ({len(values)})"
-                                                         if len(values) > 6 else "")
+        shown = ", ".join(str(v) for v in values[:6]) + (
+            f", … ({len(values)})" if len(values) > 6 else ""
+        )
         kind = var.type + (f" (by {var.depends_on})" if var.depends_on else "")
         table.add_row(name, kind, shown)
     console.print(table)
@@ -314,15 +371,19 @@ def suite_show(appliance: str,
     for column in ("id", "instruction", "goal", "optimal"):
         tasks.add_column(column)
     for task in item.tasks:
-        tasks.add_row(task.id, task.instruction,
-                      ", ".join(f"{k}={v}" for k, v in task.goal.items()),
-                      str(task.optimal_steps))
+        tasks.add_row(
+            task.id,
+            task.instruction,
+            ", ".join(f"{k}={v}" for k, v in task.goal.items()),
+            str(task.optimal_steps),
+        )
     console.print(tasks)
 
 
 @suite_app.command("stats")
-def suite_stats(as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False
-                ) -> None:
+def suite_stats(
+    as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False,
+) -> None:
     """Per category: appliances, tasks, goal variables per task, and model features used."""
     from apbot.bench.stats import FEATURES, suite_statistics
 
@@ -330,27 +391,47 @@ def suite_stats(as_json: Annotated[bool, typer.Option("--json", help="Print JSON
     if as_json:
         print(json.dumps(stats, indent=2))
         return
-    table = Table(title=f"{stats['appliances']} appliances, {stats['tasks']} tasks",
-                  caption="appliances using each model feature (2-key: two-control hold; "
-                          "dep.: programme-dependent settings; guard: child lock or running)",
-                  box=box.SIMPLE_HEAD, padding=(0, 1, 0, 0))
+    table = Table(
+        title=f"{stats['appliances']} appliances, {stats['tasks']} tasks",
+        caption="appliances using each model feature (2-key: two-control hold; "
+        "dep.: programme-dependent settings; guard: child lock or running)",
+        box=box.SIMPLE_HEAD,
+        padding=(0, 1, 0, 0),
+    )
     table.add_column("category", no_wrap=True, min_width=16)
-    short = {"two_control_hold": "2-key", "dependent_settings": "dep.", "time_variables": "time",
-             "piecewise": "piecew.", "guards": "guard"}
+    short = {
+        "two_control_hold": "2-key",
+        "dependent_settings": "dep.",
+        "time_variables": "time",
+        "piecewise": "piecew.",
+        "guards": "guard",
+    }
     for column in ("appl.", "tasks", "vars", *(short.get(f, f) for f in FEATURES)):
         table.add_column(column, justify="right", no_wrap=True, min_width=len(column))
     for name, row in stats["categories"].items():
-        table.add_row(name, str(row["appliances"]), str(row["tasks"]),
-                      f"{row['goal_vars_per_task']:g}",
-                      *(str(row["features"][f]) for f in FEATURES))
-    table.add_row("[bold]all[/bold]", str(stats["appliances"]), str(stats["tasks"]), "",
-                  *(f"[bold]{stats['features'][f]}[/bold]" for f in FEATURES))
+        table.add_row(
+            name,
+            str(row["appliances"]),
+            str(row["tasks"]),
+            f"{row['goal_vars_per_task']:g}",
+            *(str(row["features"][f]) for f in FEATURES),
+        )
+    table.add_row(
+        "[bold]all[/bold]",
+        str(stats["appliances"]),
+        str(stats["tasks"]),
+        "",
+        *(f"[bold]{stats['features'][f]}[/bold]" for f in FEATURES),
+    )
     console.print(table)
 
 
 @suite_app.command("check")
-def suite_check(appliances: Annotated[list[str] | None, typer.Argument(
-        help="Appliance ids (default: all).")] = None) -> None:
+def suite_check(
+    appliances: Annotated[
+        list[str] | None, typer.Argument(help="Appliance ids (default: all).")
+    ] = None,
+) -> None:
     """Check appliances: model, panel, manual, tasks, oracle plans. Exit 1 on any error."""
     from apbot.bench.suite_check import check_appliance
 
@@ -368,10 +449,12 @@ def suite_check(appliances: Annotated[list[str] | None, typer.Argument(
 
 
 @suite_app.command("oracle")
-def suite_oracle(appliances: Annotated[list[str] | None, typer.Argument(
-        help="Appliance ids (default: all).")] = None,
-                 as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False
-                 ) -> None:
+def suite_oracle(
+    appliances: Annotated[
+        list[str] | None, typer.Argument(help="Appliance ids (default: all).")
+    ] = None,
+    as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False,
+) -> None:
     """Run the oracle (planner on the ground truth, executed on the simulator) on every task."""
     from apbot.bench.oracle import run_task, summarise
     from apbot.bench.suite import Suite
@@ -385,19 +468,33 @@ def suite_oracle(appliances: Annotated[list[str] | None, typer.Argument(
     summary = summarise(results)
     failures = [r for r in results if not r.success]
     if as_json:
-        print(json.dumps({"summary": summary,
-                          "failures": [r.__dict__ for r in failures]}, indent=2))
+        print(
+            json.dumps({"summary": summary, "failures": [r.__dict__ for r in failures]}, indent=2)
+        )
     else:
         table = Table(title=f"Oracle on {len(results)} tasks of {len(chosen)} appliances")
-        for column in ("category", "tasks", "success", "actions", "macro actions",
-                       "median plan ms", "worst plan ms"):
+        for column in (
+            "category",
+            "tasks",
+            "success",
+            "actions",
+            "macro actions",
+            "median plan ms",
+            "worst plan ms",
+        ):
             table.add_column(column, justify="right" if column != "category" else "left")
         for name, row in summary.items():
             style = "bold" if name == "all" else ""
-            table.add_row(name, str(row["tasks"]), f"{row['success_rate']:.2f}",
-                          f"{row['mean_actions']:.1f}", f"{row['mean_macro_actions']:.1f}",
-                          f"{row['median_planning_ms']:.1f}", f"{row['worst_planning_ms']:.0f}",
-                          style=style)
+            table.add_row(
+                name,
+                str(row["tasks"]),
+                f"{row['success_rate']:.2f}",
+                f"{row['mean_actions']:.1f}",
+                f"{row['mean_macro_actions']:.1f}",
+                f"{row['median_planning_ms']:.1f}",
+                f"{row['worst_planning_ms']:.0f}",
+                style=style,
+            )
         console.print(table)
         for failure in failures:
             console.print(f"[red]✗[/red] {failure.appliance} {failure.task}: {failure.error}")
@@ -406,8 +503,11 @@ def suite_oracle(appliances: Annotated[list[str] | None, typer.Argument(
 
 
 @suite_app.command("fill-optimal")
-def suite_fill_optimal(appliances: Annotated[list[str] | None, typer.Argument(
-        help="Appliance ids (default: all).")] = None) -> None:
+def suite_fill_optimal(
+    appliances: Annotated[
+        list[str] | None, typer.Argument(help="Appliance ids (default: all).")
+    ] = None,
+) -> None:
     """Store the planner's optimal action count in every task (rewrites tasks.yaml)."""
     from apbot.bench.suite_check import fill_optimal
 
@@ -428,28 +528,37 @@ def _names(text: str | None) -> list[str] | None:
 
 
 @app.command()
-def bench(suite: Annotated[str, typer.Option(help="'bundled' or a suite directory.")] = "bundled",
-          methods: Annotated[str | None, typer.Option(
-              help="Comma-separated methods (default: all registered).")] = None,
-          categories: Annotated[str | None, typer.Option(
-              help="Comma-separated appliance categories.")] = None,
-          appliances: Annotated[str | None, typer.Option(
-              help="Comma-separated appliance ids.")] = None,
-          sample: Annotated[int | None, typer.Option(
-              help="Only the first N tasks of each appliance.")] = None,
-          workers: Annotated[int | None, typer.Option(
-              help="Worker processes (default: one per core; 1 runs in this process).")] = None,
-          out: Annotated[Path, typer.Option(help="Run directory (results, summary, report).")]
-          = Path("runs/latest"),
-          belief: Annotated[str, typer.Option(
-              help="The model methods work from: true, faulty:RATE or read.")] = "true",
-          seed: Annotated[int, typer.Option(help="Seed for fault injection.")] = 0,
-          rerun: Annotated[bool, typer.Option(
-              help="Discard the directory's finished results and run everything again.")]
-          = False,
-          no_report: Annotated[bool, typer.Option("--no-report",
-                                                  help="Do not write the report.")] = False
-          ) -> None:
+def bench(
+    suite: Annotated[str, typer.Option(help="'bundled' or a suite directory.")] = "bundled",
+    methods: Annotated[
+        str | None, typer.Option(help="Comma-separated methods (default: all registered).")
+    ] = None,
+    categories: Annotated[
+        str | None, typer.Option(help="Comma-separated appliance categories.")
+    ] = None,
+    appliances: Annotated[str | None, typer.Option(help="Comma-separated appliance ids.")] = None,
+    sample: Annotated[
+        int | None, typer.Option(help="Only the first N tasks of each appliance.")
+    ] = None,
+    workers: Annotated[
+        int | None,
+        typer.Option(help="Worker processes (default: one per core; 1 runs in this process)."),
+    ] = None,
+    out: Annotated[Path, typer.Option(help="Run directory (results, summary, report).")] = Path(
+        "runs/latest"
+    ),
+    belief: Annotated[
+        str, typer.Option(help="The model methods work from: true, faulty:RATE or read.")
+    ] = "true",
+    seed: Annotated[int, typer.Option(help="Seed for fault injection.")] = 0,
+    rerun: Annotated[
+        bool,
+        typer.Option(help="Discard the directory's finished results and run everything again."),
+    ] = False,
+    no_report: Annotated[
+        bool, typer.Option("--no-report", help="Do not write the report.")
+    ] = False,
+) -> None:
     """Run methods over the benchmark suite; resumable (finished tasks are skipped)."""
     import os
 
@@ -459,11 +568,18 @@ def bench(suite: Annotated[str, typer.Option(help="'bundled' or a suite director
     from apbot.bench.runner import BenchError, BenchOptions, run_benchmark
 
     chosen = _names(methods)
-    options = BenchOptions(suite=suite, methods=chosen if chosen is not None else
-                           list(registered()), categories=_names(categories),
-                           appliances=_names(appliances), sample=sample,
-                           workers=workers if workers is not None else os.cpu_count() or 1,
-                           out=out, belief=belief, seed=seed, rerun=rerun)
+    options = BenchOptions(
+        suite=suite,
+        methods=chosen if chosen is not None else list(registered()),
+        categories=_names(categories),
+        appliances=_names(appliances),
+        sample=sample,
+        workers=workers if workers is not None else os.cpu_count() or 1,
+        out=out,
+        belief=belief,
+        seed=seed,
+        rerun=rerun,
+    )
     try:
         outcome = run_benchmark(options)
     except (BenchError, BeliefError) as exc:
@@ -473,12 +589,15 @@ def bench(suite: Annotated[str, typer.Option(help="'bundled' or a suite director
     except KeyboardInterrupt:  # before the run took over Ctrl-C: nothing was started
         raise _fail("interrupted before any task ran", 130) from None
     _print_bench(outcome.summary)
-    console.print(f"{outcome.ran} task(s) run, {outcome.skipped} already finished; "
-                  f"results in {outcome.out}")
+    console.print(
+        f"{outcome.ran} task(s) run, {outcome.skipped} already finished; results in {outcome.out}"
+    )
     if outcome.interrupted:
-        errors.print(f"[yellow]interrupted[/yellow]: {len(outcome.records)} finished record(s) "
-                     f"kept in {outcome.out}; run the same command again"
-                     f"{' without --rerun' if rerun else ''} to resume")
+        errors.print(
+            f"[yellow]interrupted[/yellow]: {len(outcome.records)} finished record(s) "
+            f"kept in {outcome.out}; run the same command again"
+            f"{' without --rerun' if rerun else ''} to resume"
+        )
         raise typer.Exit(130)
     if not no_report:
         _bench_report(outcome.out)
@@ -488,16 +607,24 @@ def _print_bench(summary: dict[str, Any]) -> None:
     """Overall figures per method, then SR / reasoning steps per category (the paper's table,
     transposed so it fits a terminal: one row per category)."""
     rows = summary["methods"]
-    overall = Table(title=f"belief: {summary['belief']}", box=box.SIMPLE_HEAD,
-                    caption="steps: mean per task (reasoning = macro actions, "
-                            "execution = presses)")
+    overall = Table(
+        title=f"belief: {summary['belief']}",
+        box=box.SIMPLE_HEAD,
+        caption="steps: mean per task (reasoning = macro actions, execution = presses)",
+    )
     overall.add_column("method", no_wrap=True)
     for column in ("SR", "SPL", "reasoning", "execution", "n"):
         overall.add_column(column, justify="right", no_wrap=True)
     for name, row in rows.items():
         o = row["overall"]
-        overall.add_row(name, f"{o['sr']:.2f}", f"{o['spl']:.2f}", f"{o['reasoning_steps']:.2f}",
-                        f"{o['execution_steps']:.2f}", str(o["n"]))
+        overall.add_row(
+            name,
+            f"{o['sr']:.2f}",
+            f"{o['spl']:.2f}",
+            f"{o['reasoning_steps']:.2f}",
+            f"{o['execution_steps']:.2f}",
+            str(o["n"]),
+        )
     console.print(overall)
     categories = sorted({c for row in rows.values() for c in row["categories"]})
     if not categories:
@@ -508,8 +635,9 @@ def _print_bench(summary: dict[str, Any]) -> None:
         table.add_column(name, justify="right", min_width=9, overflow="fold")
     for category in categories:
         cells = [row["categories"].get(category) for row in rows.values()]
-        table.add_row(category, *(f"{c['sr']:.2f}/{c['reasoning_steps']:.1f}" if c else "–"
-                                  for c in cells))
+        table.add_row(
+            category, *(f"{c['sr']:.2f}/{c['reasoning_steps']:.1f}" if c else "–" for c in cells)
+        )
     console.print(table)
 
 
@@ -524,8 +652,9 @@ def _bench_report(out: Path) -> None:
 
 
 @app.command("report")
-def report_command(directory: Annotated[Path, typer.Argument(
-        help="A run directory written by `apbot bench`.")]) -> None:
+def report_command(
+    directory: Annotated[Path, typer.Argument(help="A run directory written by `apbot bench`.")],
+) -> None:
     """Write report.md and a self-contained report.html for a benchmark run."""
     from apbot.bench.report import ReportError, write_report
 
@@ -539,18 +668,27 @@ def report_command(directory: Annotated[Path, typer.Argument(
 
 @app.command("run")
 def run_command(
-        appliance: Annotated[str, typer.Argument(help="A bundled appliance id.")],
-        instruction: Annotated[str, typer.Argument(
-            help="The instruction, or a task id (t01…) of that appliance.")],
-        goal: Annotated[list[str] | None, typer.Option(
-            "--goal", "-g", help="The goal as NAME=VALUE (repeatable); needed for an "
-            "instruction that is not one of the appliance's tasks.")] = None,
-        method: Annotated[str, typer.Option(help="The method to run.")] = "apbot",
-        belief: Annotated[str, typer.Option(
-            help="The model the method works from: true or faulty:RATE.")] = "true",
-        seed: Annotated[int, typer.Option(help="Seed for fault injection.")] = 0,
-        show_exploration: Annotated[bool, typer.Option(
-            help="Print every exploring press, not only a count.")] = False,
+    appliance: Annotated[str, typer.Argument(help="A bundled appliance id.")],
+    instruction: Annotated[
+        str, typer.Argument(help="The instruction, or a task id (t01…) of that appliance.")
+    ],
+    goal: Annotated[
+        list[str] | None,
+        typer.Option(
+            "--goal",
+            "-g",
+            help="The goal as NAME=VALUE (repeatable); needed for an "
+            "instruction that is not one of the appliance's tasks.",
+        ),
+    ] = None,
+    method: Annotated[str, typer.Option(help="The method to run.")] = "apbot",
+    belief: Annotated[
+        str, typer.Option(help="The model the method works from: true or faulty:RATE.")
+    ] = "true",
+    seed: Annotated[int, typer.Option(help="Seed for fault injection.")] = 0,
+    show_exploration: Annotated[
+        bool, typer.Option(help="Print every exploring press, not only a count.")
+    ] = False,
 ) -> None:
     """Run one task live: every macro action, press, display, check and repair as it happens."""
     from apbot.bench.runner import run_task
@@ -564,15 +702,20 @@ def run_command(
     task = _task_for(found, instruction)
     if goal:
         try:
-            task = Task(id=task.id if task else "live",
-                        instruction=task.instruction if task else instruction,
-                        goal=split_assignments(goal))
+            task = Task(
+                id=task.id if task else "live",
+                instruction=task.instruction if task else instruction,
+                goal=split_assignments(goal),
+            )
         except ValueError as exc:
             raise _fail(str(exc), 2) from None
     if task is None:
         ids = ", ".join(t.id for t in found.tasks)
-        raise _fail(f"{instruction!r} is not one of {appliance}'s tasks ({ids}); give the goal "
-                    "with -g NAME=VALUE (reading goals from free text comes with the reader)", 2)
+        raise _fail(
+            f"{instruction!r} is not one of {appliance}'s tasks ({ids}); give the goal "
+            "with -g NAME=VALUE (reading goals from free text comes with the reader)",
+            2,
+        )
     console.print(f"[bold]{found.id}[/bold] · {task.instruction}")
     console.print(f"goal: {', '.join(f'{k}={v}' for k, v in task.goal.items())}")
     printer = _LivePrinter(show_exploration)
@@ -582,9 +725,11 @@ def run_command(
         raise _fail(str(exc.args[0] if isinstance(exc, KeyError) else exc), 2) from None
     printer.flush()
     verdict = "[green]success[/green]" if record.success else "[red]failure[/red]"
-    console.print(f"{verdict}: {record.reasoning_steps} reasoning steps, "
-                  f"{record.execution_steps} actions (optimal {record.optimal_steps}), "
-                  f"SPL {record.spl:.2f}")
+    console.print(
+        f"{verdict}: {record.reasoning_steps} reasoning steps, "
+        f"{record.execution_steps} actions (optimal {record.optimal_steps}), "
+        f"SPL {record.spl:.2f}"
+    )
     if record.failure:
         console.print(f"[red]{record.failure}[/red]")
     raise typer.Exit(0 if record.success else 1)
@@ -598,8 +743,10 @@ def _task_for(appliance: SuiteAppliance, text: str) -> Task | None:
     for task in appliance.tasks:
         if wanted in (task.id, task.instruction.strip().casefold()):
             return task
-    scores = [(difflib.SequenceMatcher(None, wanted, t.instruction.casefold()).ratio(), t)
-              for t in appliance.tasks]
+    scores = [
+        (difflib.SequenceMatcher(None, wanted, t.instruction.casefold()).ratio(), t)
+        for t in appliance.tasks
+    ]
     best = max(scores, key=lambda pair: pair[0], default=None)
     return best[1] if best is not None and best[0] >= 0.85 else None
 
@@ -627,8 +774,9 @@ class _LivePrinter:
         elif event.kind == "action":
             mark = "[yellow]explore[/yellow] " if event.exploring else ""
             refused = " [red](refused)[/red]" if not event.accepted else ""
-            console.print(f"    {mark}{event.action}: [cyan]{event.display or '(dark)'}[/cyan]"
-                          f"{refused}")
+            console.print(
+                f"    {mark}{event.action}: [cyan]{event.display or '(dark)'}[/cyan]{refused}"
+            )
         elif event.kind == "check":
             if event.text == "ok":
                 console.print("    [green]✓ as expected[/green]")

@@ -58,15 +58,17 @@ class ApplianceEnv(gym.Env[str, int]):
         self.simulator = Simulator(self.appliance.model)
         self.action_names = self.simulator.actions
         self.action_space = spaces.Discrete(len(self.action_names))
-        self.observation_space = spaces.Text(max_length=MAX_DISPLAY, min_length=0,
-                                             charset=_charset(self.appliance))
+        self.observation_space = spaces.Text(
+            max_length=MAX_DISPLAY, min_length=0, charset=_charset(self.appliance)
+        )
         self.render_mode = render_mode
         self.task = self.appliance.tasks[0]
         self.goal = parse_goal(self.appliance.model, self.task.goal)
         self._display = ""
 
-    def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None
-              ) -> tuple[str, dict[str, Any]]:
+    def reset(
+        self, *, seed: int | None = None, options: dict[str, Any] | None = None
+    ) -> tuple[str, dict[str, Any]]:
         super().reset(seed=seed)
         chosen = (options or {}).get("task")
         tasks = self.appliance.tasks
@@ -92,9 +94,15 @@ class ApplianceEnv(gym.Env[str, int]):
         return self._display if self.render_mode == "ansi" else None
 
     def _info(self, accepted: bool, reason: str) -> dict[str, Any]:
-        return {"task": self.task.id, "instruction": self.task.instruction,
-                "optimal_steps": self.task.optimal_steps, "actions": self.action_names,
-                "accepted": accepted, "reason": reason, "manual": self.appliance.manual}
+        return {
+            "task": self.task.id,
+            "instruction": self.task.instruction,
+            "optimal_steps": self.task.optimal_steps,
+            "actions": self.action_names,
+            "accepted": accepted,
+            "reason": reason,
+            "manual": self.appliance.manual,
+        }
 
     @staticmethod
     def _clip(display: str) -> str:
@@ -115,10 +123,14 @@ def _appliance(appliance_id: str) -> SuiteAppliance:
 
 def _charset(appliance: SuiteAppliance) -> str:
     """Every character the display can show: printable ASCII plus the model's own symbols."""
-    extra = {c for c in (appliance.directory / "model.yaml").read_text(encoding="utf-8")
-             if not c.isascii() and c.isprintable()}
-    return "".join(sorted(set(string.digits + string.ascii_letters + string.punctuation + " ")
-                          | extra))
+    extra = {
+        c
+        for c in (appliance.directory / "model.yaml").read_text(encoding="utf-8")
+        if not c.isascii() and c.isprintable()
+    }
+    return "".join(
+        sorted(set(string.digits + string.ascii_letters + string.punctuation + " ") | extra)
+    )
 
 
 def step_budget(optimal: list[int]) -> int:
@@ -139,9 +151,12 @@ def register_envs() -> list[str]:
         tasks = TaskFile.model_validate(read_yaml(tasks_file.read_text(encoding="utf-8")))
         env_id = f"apbot/{directory.name}-v0"
         if env_id not in gym.registry:
-            gym.register(id=env_id, entry_point="apbot.envs:ApplianceEnv",
-                         kwargs={"appliance_id": directory.name},
-                         max_episode_steps=step_budget([t.optimal_steps or 0 for t in tasks.tasks]))
+            gym.register(
+                id=env_id,
+                entry_point="apbot.envs:ApplianceEnv",
+                kwargs={"appliance_id": directory.name},
+                max_episode_steps=step_budget([t.optimal_steps or 0 for t in tasks.tasks]),
+            )
         ids.append(env_id)
     return ids
 

@@ -63,8 +63,9 @@ def read(estimator: StateEstimator, values: dict[str, object], **context: object
     return estimator.estimate(Feedback("", values), context=context or None)
 
 
-@pytest.mark.parametrize("appliance", load_suite("bundled").appliances,
-                         ids=lambda a: a.model.appliance.id)
+@pytest.mark.parametrize(
+    "appliance", load_suite("bundled").appliances, ids=lambda a: a.model.appliance.id
+)
 def test_the_simulators_own_feedback_maps_one_to_one(appliance) -> None:
     env = SimulatorEnvironment(appliance.model)
     estimator = StateEstimator(appliance.model)
@@ -80,19 +81,43 @@ def test_the_simulators_own_feedback_maps_one_to_one(appliance) -> None:
 
 
 def test_renamed_keys_and_other_spellings_are_read() -> None:
-    seen = read(StateEstimator(fan()), {"Spd": "Medium", "Temp": "25°C", "TIMER": "1:30",
-                                        "Program": "Eco", "ChildLock": "ON", "Power": True})
-    assert seen.values == {"speed": "medium", "temperature": 25, "timer": "01:30:00",
-                           "programme": "eco", "child_lock": "on", "power": "on"}
-    assert seen.mapping == {"Spd": "speed", "Temp": "temperature", "TIMER": "timer",
-                            "Program": "programme", "ChildLock": "child_lock", "Power": "power"}
+    seen = read(
+        StateEstimator(fan()),
+        {
+            "Spd": "Medium",
+            "Temp": "25°C",
+            "TIMER": "1:30",
+            "Program": "Eco",
+            "ChildLock": "ON",
+            "Power": True,
+        },
+    )
+    assert seen.values == {
+        "speed": "medium",
+        "temperature": 25,
+        "timer": "01:30:00",
+        "programme": "eco",
+        "child_lock": "on",
+        "power": "on",
+    }
+    assert seen.mapping == {
+        "Spd": "speed",
+        "Temp": "temperature",
+        "TIMER": "timer",
+        "Program": "programme",
+        "ChildLock": "child_lock",
+        "Power": "power",
+    }
     assert not seen.unmatched and not seen.outside
 
 
 def test_a_switch_reported_as_a_bool_or_in_capitals() -> None:
     estimator = StateEstimator(fan())
     assert read(estimator, {"swing": True, "power": False, "lock": "ON"}).values == {
-        "power": "off", "swing": "on", "child_lock": "on"}
+        "power": "off",
+        "swing": "on",
+        "child_lock": "on",
+    }
 
 
 def test_an_ambiguous_name_is_reported_not_guessed() -> None:
@@ -127,8 +152,9 @@ def test_values_outside_the_belief_domain_are_evidence_not_errors() -> None:
 
 def test_a_value_that_cannot_be_read_names_the_variable() -> None:
     seen = read(StateEstimator(fan()), {"temperature": "hot", "timer": "--"})
-    assert "temperature" in seen.unmatched["temperature"] and "'hot'" in seen.unmatched[
-        "temperature"]
+    assert (
+        "temperature" in seen.unmatched["temperature"] and "'hot'" in seen.unmatched["temperature"]
+    )
     assert "timer" not in seen.unmatched and not seen.values  # "--": nothing shown
 
 
@@ -146,9 +172,9 @@ def test_a_dependent_setting_is_read_against_the_current_programme(washer) -> No
     estimator = StateEstimator(washer)
     assert read(estimator, {"temperature": "90"}).values == {"temperature": "90"}
     assert read(estimator, {"temperature": "90"}, programme="cotton").values == {
-        "temperature": "90"}
-    assert read(estimator, {"temperature": "90"}, programme="wool").outside == {
-        "temperature": "90"}
+        "temperature": "90"
+    }
+    assert read(estimator, {"temperature": "90"}, programme="wool").outside == {"temperature": "90"}
     # a programme shown in the same feedback takes precedence over the belief's
     seen = read(estimator, {"spin_speed": 1000, "programme": "wool"}, programme="cotton")
     assert list(seen.values) == ["programme"] and seen.outside == {"spin_speed": 1000}

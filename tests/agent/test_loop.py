@@ -43,20 +43,28 @@ TIMER_STEPS = """    - {actions: [press_timer]}
     - {actions: [press_up, press_down], variable: timer, effect: {press_up: next, press_down: prev}}
 """
 
-TRUTH = dict(modes="comfort, eco, frost, boost", mode_wrap="true",
-             temp_ranges="[10, 30, 1]", up="next", down="prev", timer_steps=TIMER_STEPS)
+TRUTH = dict(
+    modes="comfort, eco, frost, boost",
+    mode_wrap="true",
+    temp_ranges="[10, 30, 1]",
+    up="next",
+    down="prev",
+    timer_steps=TIMER_STEPS,
+)
 
 
 def heater(**changes: str) -> ApplianceModel:
     return model_from(HEATER % {**TRUTH, **changes})
 
 
-def run(method: str, belief: ApplianceModel, goal: dict[str, str],
-        truth: ApplianceModel | None = None) -> tuple[Episode, bool, int]:
+def run(
+    method: str, belief: ApplianceModel, goal: dict[str, str], truth: ApplianceModel | None = None
+) -> tuple[Episode, bool, int]:
     truth = truth or heater()
     env = SimulatorEnvironment(truth)
-    context = TaskContext("heater", "test", "t01", "an instruction", goal, belief,
-                          actions=tuple(env.actions))
+    context = TaskContext(
+        "heater", "test", "t01", "an instruction", goal, belief, actions=tuple(env.actions)
+    )
     episode = get_method(method).run(context, env)
     try:
         reached = env.simulator.satisfies(parse_goal(truth, goal))
@@ -107,9 +115,15 @@ def test_keys_that_move_the_other_way_are_learnt() -> None:
 def test_a_missing_entry_step_is_found_among_unused_actions() -> None:
     # the checker rejects this belief (TIMER is used nowhere, set_timer can never start): a
     # reader's first draft; the agent must still find its way
-    belief = model_from(HEATER % {**TRUTH, "timer_steps": "    - {actions: [press_up, press_down], "
-                                  "variable: timer, effect: {press_up: next, press_down: prev}}\n"},
-                        check=False)
+    belief = model_from(
+        HEATER
+        % {
+            **TRUTH,
+            "timer_steps": "    - {actions: [press_up, press_down], "
+            "variable: timer, effect: {press_up: next, press_down: prev}}\n",
+        },
+        check=False,
+    )
     episode, reached, _ = run("apbot", belief, {"timer": "4 h"})
     assert reached, [e.to_dict() for e in episode.trace]
     assert any("press_timer" in r for r in episode.repairs)
@@ -136,8 +150,12 @@ def test_a_setting_with_one_believed_value_is_inspected_not_looped_on() -> None:
     from apbot.model.load import loads_model
 
     text = (files("apbot") / "data/examples/washing_machine.yaml").read_text()
-    truth = loads_model(text.replace('eco 40-60: {values: ["40"], initial: "40"}',
-                                     'eco 40-60: {values: ["40", "60"], initial: "40"}'))
+    truth = loads_model(
+        text.replace(
+            'eco 40-60: {values: ["40"], initial: "40"}',
+            'eco 40-60: {values: ["40", "60"], initial: "40"}',
+        )
+    )
     assert truth != load_example("washing_machine")
     goal = {"programme": "eco 40-60", "temperature": "60"}
     episode, reached, _ = run("apbot", load_example("washing_machine"), goal, truth)

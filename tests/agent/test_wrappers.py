@@ -83,8 +83,7 @@ def test_public_methods_are_the_actions_and_the_wrapper_is_an_environment() -> N
     env = wrapped()
     assert env.actions == ("press_power", "press_speed", "hold_lock", "beep", "broken", "state")
     assert isinstance(env, Environment)
-    assert wrapped(actions=["press_power", "press_speed"]).actions == ("press_power",
-                                                                        "press_speed")
+    assert wrapped(actions=["press_power", "press_speed"]).actions == ("press_power", "press_speed")
 
 
 def test_every_kind_of_result_becomes_feedback() -> None:
@@ -148,8 +147,15 @@ def test_a_step_function_is_an_environment_too() -> None:
 def test_the_agent_operates_a_wrapped_fan_from_its_own_belief(speeds: str) -> None:
     env = wrapped(actions=["press_power", "press_speed"])
     belief = model_from(BELIEF % speeds)
-    context = TaskContext("fan", "fan", "t01", "Run the fan at high speed.",
-                          {"power": "on", "speed": "high"}, belief, actions=tuple(env.actions))
+    context = TaskContext(
+        "fan",
+        "fan",
+        "t01",
+        "Run the fan at high speed.",
+        {"power": "on", "speed": "high"},
+        belief,
+        actions=tuple(env.actions),
+    )
     episode = get_method("apbot").run(context, env)
     assert episode.claimed_success
     assert env.obj.on and env.obj.speeds[env.obj.speed] == "High"
@@ -157,6 +163,7 @@ def test_the_agent_operates_a_wrapped_fan_from_its_own_belief(speeds: str) -> No
 
 
 def test_the_documented_examples_run() -> None:
-    result = doctest.testfile(str(DOCS), module_relative=False, verbose=False,
-                              optionflags=doctest.ELLIPSIS)
+    result = doctest.testfile(
+        str(DOCS), module_relative=False, verbose=False, optionflags=doctest.ELLIPSIS
+    )
     assert result.attempted > 10 and result.failed == 0

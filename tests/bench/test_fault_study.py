@@ -19,13 +19,28 @@ from apbot.bench.fault_study import (
 
 
 def _overall(sr: float, spl: float, n: int = 2) -> dict[str, object]:
-    return {"methods": {"m": {"overall": {"sr": sr, "spl": spl, "reasoning_steps": 2.0,
-                                          "execution_steps": 4.0, "n": n}}}}
+    return {
+        "methods": {
+            "m": {
+                "overall": {
+                    "sr": sr,
+                    "spl": spl,
+                    "reasoning_steps": 2.0,
+                    "execution_steps": 4.0,
+                    "n": n,
+                }
+            }
+        }
+    }
 
 
 def test_average_weighs_seeds_equally_and_marks_missing_runs() -> None:
-    summaries = {(0.0, 0): _overall(1.0, 1.0), (0.0, 1): _overall(0.5, 0.25, n=4),
-                 (0.5, 0): {"methods": {}}, (0.5, 1): {"methods": {}}}
+    summaries = {
+        (0.0, 0): _overall(1.0, 1.0),
+        (0.0, 1): _overall(0.5, 0.25, n=4),
+        (0.5, 0): {"methods": {}},
+        (0.5, 1): {"methods": {}},
+    }
     study = average(summaries, [0.0, 0.5], [0, 1], ["m"])
     assert study["rates"] == [0.0, 0.5] and study["seeds"] == [0, 1]
     assert study["methods"]["m"]["sr"] == [0.75, None]
@@ -35,8 +50,13 @@ def test_average_weighs_seeds_equally_and_marks_missing_runs() -> None:
 
 
 def test_study_runs_one_benchmark_per_rate_and_seed_and_resumes(tmp_path: Path) -> None:
-    options = {"out": tmp_path, "workers": 1, "sample": 1, "progress": False,
-               "appliances": ["kettle_1", "dehumidifier_3"]}
+    options = {
+        "out": tmp_path,
+        "workers": 1,
+        "sample": 1,
+        "progress": False,
+        "appliances": ["kettle_1", "dehumidifier_3"],
+    }
     study = run_fault_study([0.5, 0.0], ["oracle"], [0, 1], **options)
     assert study["rates"] == [0.0, 0.5]  # sorted
     assert study["methods"]["oracle"]["sr"] == [1.0, 1.0]  # the oracle ignores the belief
@@ -52,23 +72,32 @@ def test_study_runs_one_benchmark_per_rate_and_seed_and_resumes(tmp_path: Path) 
     assert results.read_text() == before  # resumed: nothing ran again
 
 
-@pytest.mark.parametrize(("rates", "methods", "message"), [
-    ([0.1, 1.5], ["oracle"], "outside 0..1"),
-    ([0.1, 0.1], ["oracle"], "given twice"),
-    ([], ["oracle"], "at least one fault rate"),
-    ([0.1], ["oracel"], "unknown method"),
-])
-def test_bad_study_options_are_refused_before_any_run(tmp_path: Path, rates: list[float],
-                                                      methods: list[str], message: str) -> None:
+@pytest.mark.parametrize(
+    ("rates", "methods", "message"),
+    [
+        ([0.1, 1.5], ["oracle"], "outside 0..1"),
+        ([0.1, 0.1], ["oracle"], "given twice"),
+        ([], ["oracle"], "at least one fault rate"),
+        ([0.1], ["oracel"], "unknown method"),
+    ],
+)
+def test_bad_study_options_are_refused_before_any_run(
+    tmp_path: Path, rates: list[float], methods: list[str], message: str
+) -> None:
     with pytest.raises(ValueError, match=message):
         run_fault_study(rates, methods, [0], out=tmp_path / "study", progress=False)
     assert not (tmp_path / "study").exists()
 
 
 def test_figure_has_an_sr_and_an_spl_panel_with_a_line_per_method() -> None:
-    study = {"rates": [0.0, 0.5], "seeds": [0],
-             "methods": {"a": {"sr": [1.0, 0.5], "spl": [1.0, 0.4]},
-                         "b": {"sr": [1.0, None], "spl": [0.9, None]}}}
+    study = {
+        "rates": [0.0, 0.5],
+        "seeds": [0],
+        "methods": {
+            "a": {"sr": [1.0, 0.5], "spl": [1.0, 0.4]},
+            "b": {"sr": [1.0, None], "spl": [0.9, None]},
+        },
+    }
     axes = study_figure(study).axes
     assert [ax.get_title() for ax in axes] == ["Success rate", "SPL"]
     assert [len(ax.lines) for ax in axes] == [2, 2]

@@ -61,8 +61,9 @@ def test_lower_rates_give_a_subset_of_the_faults(sweep: Sweep, suite: Suite) -> 
         assert found[0] <= found[1] <= found[2], appliance.id
 
 
-def test_rate_one_faults_each_site_at_most_once_and_every_kind_occurs(sweep: Sweep,
-                                                                       suite: Suite) -> None:
+def test_rate_one_faults_each_site_at_most_once_and_every_kind_occurs(
+    sweep: Sweep, suite: Suite
+) -> None:
     kinds = set()
     for appliance in suite.appliances:
         faults = sweep[appliance.id, 1.0][1]
@@ -77,12 +78,14 @@ def test_rate_one_faults_each_site_at_most_once_and_every_kind_occurs(sweep: Swe
 
 
 def test_faults_keep_initial_values_and_leave_power_locks_and_run_state_alone(
-        sweep: Sweep, suite: Suite) -> None:
+    sweep: Sweep, suite: Suite
+) -> None:
     for appliance in suite.appliances:
         model, faults = sweep[appliance.id, 1.0]
         truth, faulty = compiled_model(appliance.model), compiled_model(model)
-        assert faulty.assignment(faulty.initial_state()) == \
-            truth.assignment(truth.initial_state()), appliance.id
+        assert faulty.assignment(faulty.initial_state()) == truth.assignment(
+            truth.initial_state()
+        ), appliance.id
         for name, var in appliance.model.variables.items():
             if name in ("power", "running") or "lock" in name:
                 assert model.variables[name] == var
@@ -114,8 +117,10 @@ def test_a_rate_outside_zero_to_one_is_refused(suite: Suite) -> None:
 
 
 def test_describe_gives_one_line_per_fault() -> None:
-    faults = [Fault("wrap", "delay", "stops at its ends instead of wrapping"),
-              Fault("missing_step", "set_delay", "step 1 of 2 (press_timer) is missing")]
+    faults = [
+        Fault("wrap", "delay", "stops at its ends instead of wrapping"),
+        Fault("missing_step", "set_delay", "step 1 of 2 (press_timer) is missing"),
+    ]
     assert describe([]) == "no faults"
     text = describe(faults)
     assert text.splitlines()[0] == "2 faults:"
@@ -178,7 +183,7 @@ def test_effect_direction_makes_up_go_down() -> None:
 def test_step_size_keeps_the_range_aligned_and_the_initial_value() -> None:
     for seed in range(6):
         faulty, fault = _first(step_size(model_from(TIMER), "delay", random.Random(seed)))
-        (start, end, step), = faulty.variables["delay"].ranges  # type: ignore[union-attr]
+        ((start, end, step),) = faulty.variables["delay"].ranges  # type: ignore[union-attr]
         assert step in (1, 4) and (end - start) % step == 0 and end <= 12
         assert f"step 2 h → {step} h" in fault.detail
         assert _delay_after(faulty, []) == 4

@@ -10,17 +10,35 @@ from apbot.bench.metrics import chi_square_p, pvalues, summarise
 from apbot.bench.records import TaskRecord, record_key
 
 
-def record(method: str, task: str, success: bool, *, category: str = "kettle",
-           reasoning: int = 2, execution: int = 4, optimal: int = 4,
-           goal_variables: int = 2) -> TaskRecord:
+def record(
+    method: str,
+    task: str,
+    success: bool,
+    *,
+    category: str = "kettle",
+    reasoning: int = 2,
+    execution: int = 4,
+    optimal: int = 4,
+    goal_variables: int = 2,
+) -> TaskRecord:
     appliance = f"{category}_1"
     return TaskRecord(
-        key=record_key(method, "true", appliance, task), method=method, belief="true",
-        appliance=appliance, category=category, task=task, instruction="do the thing",
-        goal={f"v{i}": "x" for i in range(goal_variables)}, goal_variables=goal_variables,
-        success=success, claimed_success=success, reasoning_steps=reasoning,
-        execution_steps=execution, optimal_steps=optimal,
-        spl=optimal / max(optimal, execution) if success else 0.0)
+        key=record_key(method, "true", appliance, task),
+        method=method,
+        belief="true",
+        appliance=appliance,
+        category=category,
+        task=task,
+        instruction="do the thing",
+        goal={f"v{i}": "x" for i in range(goal_variables)},
+        goal_variables=goal_variables,
+        success=success,
+        claimed_success=success,
+        reasoning_steps=reasoning,
+        execution_steps=execution,
+        optimal_steps=optimal,
+        spl=optimal / max(optimal, execution) if success else 0.0,
+    )
 
 
 def test_summary_shape_and_figures() -> None:
@@ -36,10 +54,14 @@ def test_summary_shape_and_figures() -> None:
     a = summary["methods"]["a"]
     assert set(a) == {"overall", "categories"}
     assert set(a["categories"]) == {"kettle", "microwave"}
-    assert a["overall"] == {"sr": 0.666667, "spl": 0.5, "n": 3,
-                            # 40 reasoning steps count as the limit, 25
-                            "reasoning_steps": round((2 + 25 + 2) / 3, 6),
-                            "execution_steps": 14.0}
+    assert a["overall"] == {
+        "sr": 0.666667,
+        "spl": 0.5,
+        "n": 3,
+        # 40 reasoning steps count as the limit, 25
+        "reasoning_steps": round((2 + 25 + 2) / 3, 6),
+        "execution_steps": 14.0,
+    }
     assert a["categories"]["kettle"]["n"] == 2
     assert summary["goal_variables"]["a"] == {"2": {"sr": 0.5, "n": 2}, "4": {"sr": 1.0, "n": 1}}
     assert summary["pvalues"]["a"]["a"] == 1.0 and summary["pvalues"]["a"]["b"] == 1.0
@@ -69,7 +91,8 @@ def test_pvalue_matrix_is_symmetric_and_uses_only_shared_tasks() -> None:
     a = [record("a", f"t{i}", True) for i in range(30)]
     b = [record("b", f"t{i}", i >= 25) for i in range(30)]
     c = [record("c", f"t{i}", True) for i in range(30)] + [
-        record("c", f"extra{i}", False) for i in range(30)]  # tasks only c ran: ignored
+        record("c", f"extra{i}", False) for i in range(30)
+    ]  # tasks only c ran: ignored
     matrix = pvalues({"a": a, "b": b, "c": c})
     assert list(matrix) == ["a", "b", "c"]
     assert all(matrix[m][m] == 1.0 for m in matrix)

@@ -44,8 +44,12 @@ def _interrupt(context: TaskContext, env: Environment) -> Episode:
     return run_oracle(context, env)
 
 
-FAKES = {"test-liar": _liar, "test-crash": _crash, "test-overthink": _overthink,
-         "test-interrupt": _interrupt}
+FAKES = {
+    "test-liar": _liar,
+    "test-crash": _crash,
+    "test-overthink": _overthink,
+    "test-interrupt": _interrupt,
+}
 
 
 @pytest.fixture(scope="module", autouse=True)
@@ -57,8 +61,13 @@ def fake_methods() -> None:
 
 
 def options(tmp_path: Path, **changes: object) -> BenchOptions:
-    base = BenchOptions(methods=["oracle"], appliances=["kettle_1", "dehumidifier_1"],
-                        sample=1, workers=1, out=tmp_path / "run")
+    base = BenchOptions(
+        methods=["oracle"],
+        appliances=["kettle_1", "dehumidifier_1"],
+        sample=1,
+        workers=1,
+        out=tmp_path / "run",
+    )
     for name, value in changes.items():
         setattr(base, name, value)
     return base
@@ -74,7 +83,11 @@ def test_oracle_run_writes_records_run_json_and_summary(tmp_path: Path) -> None:
     assert set(record.final_values) == set(record.goal)
     run = json.loads((tmp_path / "run" / "run.json").read_text())
     assert (run["suite"], run["belief"], run["seed"], run["methods"]) == (
-        "bundled", "true", 0, ["oracle"])
+        "bundled",
+        "true",
+        0,
+        ["oracle"],
+    )
     summary = json.loads((tmp_path / "run" / "summary.json").read_text())
     assert summary == outcome.summary
     assert summary["methods"]["oracle"]["overall"]["n"] == 2
@@ -146,18 +159,19 @@ def test_too_many_reasoning_steps_is_a_failure_even_at_the_goal() -> None:
 def test_workers_give_the_same_records_as_one_process(tmp_path: Path) -> None:
     chosen = ["oracle", "test-liar"]
     alone = run_benchmark(options(tmp_path, methods=chosen), progress=False)
-    pooled = run_benchmark(options(tmp_path, methods=chosen, workers=2, out=tmp_path / "pool"),
-                           progress=False)
+    pooled = run_benchmark(
+        options(tmp_path, methods=chosen, workers=2, out=tmp_path / "pool"), progress=False
+    )
     strip = [r.model_dump(exclude={"timings"}) for r in alone.records]
     assert strip == [r.model_dump(exclude={"timings"}) for r in pooled.records]
     assert (tmp_path / "run" / "summary.json").read_bytes() == (
-        tmp_path / "pool" / "summary.json").read_bytes()
+        tmp_path / "pool" / "summary.json"
+    ).read_bytes()
 
 
 def test_ctrl_c_stops_cleanly_and_keeps_finished_records(tmp_path: Path) -> None:
     before = signal.getsignal(signal.SIGINT)
-    outcome = run_benchmark(options(tmp_path, methods=["oracle", "test-interrupt"]),
-                            progress=False)
+    outcome = run_benchmark(options(tmp_path, methods=["oracle", "test-interrupt"]), progress=False)
     assert outcome.interrupted
     assert outcome.ran == 2  # the first task of each method; the second appliance never started
     assert len(read_records(tmp_path / "run")) == 2
@@ -166,8 +180,12 @@ def test_ctrl_c_stops_cleanly_and_keeps_finished_records(tmp_path: Path) -> None
 
 def test_beliefs() -> None:
     assert str(parse_belief(" faulty:0.50 ")) == "faulty:0.5"
-    for bad, message in (("read", "not available yet"), ("faulty:x", "not a number"),
-                         ("faulty:1.5", "between 0 and 1"), ("truth", "accepted: 'true'")):
+    for bad, message in (
+        ("read", "not available yet"),
+        ("faulty:x", "not a number"),
+        ("faulty:1.5", "between 0 and 1"),
+        ("truth", "accepted: 'true'"),
+    ):
         with pytest.raises(BeliefError, match=message):
             parse_belief(bad)
     appliance = cached_suite("bundled").get("kettle_1")
@@ -184,8 +202,9 @@ def test_the_oracle_keeps_the_run_belief_but_plans_on_the_truth() -> None:
 
 
 def test_cli_rejects_an_unknown_method(tmp_path: Path) -> None:
-    result = CliRunner().invoke(app, ["bench", "--methods", "oracle,apbot-openloop",
-                                      "--out", str(tmp_path / "x")])
+    result = CliRunner().invoke(
+        app, ["bench", "--methods", "oracle,apbot-openloop", "--out", str(tmp_path / "x")]
+    )
     assert result.exit_code == 2
     assert "unknown method(s) apbot-openloop" in result.output
     assert "did you mean 'apbot-open-loop'" in result.output and "oracle" in result.output
@@ -193,9 +212,23 @@ def test_cli_rejects_an_unknown_method(tmp_path: Path) -> None:
 
 
 def test_cli_runs_and_prints_the_table(tmp_path: Path) -> None:
-    result = CliRunner().invoke(app, ["bench", "--methods", "oracle", "--appliances", "kettle_1",
-                                      "--sample", "1", "--workers", "1", "--no-report",
-                                      "--out", str(tmp_path / "x")])
+    result = CliRunner().invoke(
+        app,
+        [
+            "bench",
+            "--methods",
+            "oracle",
+            "--appliances",
+            "kettle_1",
+            "--sample",
+            "1",
+            "--workers",
+            "1",
+            "--no-report",
+            "--out",
+            str(tmp_path / "x"),
+        ],
+    )
     assert result.exit_code == 0, result.output
     assert "oracle" in result.output and "1.00" in result.output and "kettle" in result.output
 
@@ -203,8 +236,9 @@ def test_cli_runs_and_prints_the_table(tmp_path: Path) -> None:
 def test_two_runs_never_write_one_directory_at_once(tmp_path: Path) -> None:
     from apbot.bench.runner import _exclusive
 
-    options = BenchOptions(methods=["oracle"], appliances=["kettle_1"], sample=1, workers=1,
-                           out=tmp_path / "run")
+    options = BenchOptions(
+        methods=["oracle"], appliances=["kettle_1"], sample=1, workers=1, out=tmp_path / "run"
+    )
     (tmp_path / "run").mkdir()
     with _exclusive(tmp_path / "run"), pytest.raises(BenchError, match="another"):
         run_benchmark(options, progress=False)

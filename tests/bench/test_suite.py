@@ -62,8 +62,15 @@ def test_stats_json_shape() -> None:
     assert result.exit_code == 0, result.output
     stats = json.loads(result.output)
     assert stats["appliances"] == 45 and stats["tasks"] == 450
-    assert set(stats["features"]) >= {"keypad", "dial", "hold", "two_control_hold",
-                                      "dependent_settings", "piecewise", "guards"}
+    assert set(stats["features"]) >= {
+        "keypad",
+        "dial",
+        "hold",
+        "two_control_hold",
+        "dependent_settings",
+        "piecewise",
+        "guards",
+    }
     for row in stats["categories"].values():
         assert {"appliances", "tasks", "goal_vars_per_task"} <= set(row)
 

@@ -22,21 +22,24 @@ def test_numeric_goal_values_in_any_unit() -> None:
 
 
 def test_time_goal_values() -> None:
-    cook = TimeVariable.model_validate({"type": "time", "format": "mm:ss",
-                                        "ranges": [["00:00:00", "01:00:00", 30]]})
+    cook = TimeVariable.model_validate(
+        {"type": "time", "format": "mm:ss", "ranges": [["00:00:00", "01:00:00", 30]]}
+    )
     assert normalise(cook, "1:30") == "00:01:30"  # mm:ss display: minutes and seconds
     assert normalise(cook, "90 seconds") == "00:01:30"
     assert normalise(cook, "00:45:00") == "00:45:00"
     with pytest.raises(ValueProblem, match="ambiguous"):
         normalise(cook, 30)
-    clock = TimeVariable.model_validate({"type": "time", "format": "h:mm",
-                                         "ranges": [["01:00:00", "12:59:00", 60]]})
+    clock = TimeVariable.model_validate(
+        {"type": "time", "format": "h:mm", "ranges": [["01:00:00", "12:59:00", 60]]}
+    )
     assert normalise(clock, "9:45") == "09:45:00"  # h:mm display: hours and minutes
 
 
 def test_discrete_values_tolerate_case_punctuation_and_units() -> None:
     programme = DiscreteVariable.model_validate(
-        {"type": "discrete", "values": ["Quick Wash", "cotton", "20", "40"]})
+        {"type": "discrete", "values": ["Quick Wash", "cotton", "20", "40"]}
+    )
     assert normalise(programme, "quick-wash") == "Quick Wash"
     assert normalise(programme, "40 °C") == "40"
     with pytest.raises(ValueProblem, match="did you mean 'cotton'"):
@@ -69,8 +72,11 @@ def test_wrap_and_clamp() -> None:
 def test_adding_to_a_wrapping_clock_counts_round() -> None:
     from apbot.model.schema import TimeVariable
 
-    clock = build_domain(TimeVariable.model_validate(
-        {"type": "time", "wrap": True, "ranges": [["00:00:00", "23:59:00", 60]]}))
+    clock = build_domain(
+        TimeVariable.model_validate(
+            {"type": "time", "wrap": True, "ranges": [["00:00:00", "23:59:00", 60]]}
+        )
+    )
     assert clock.values[clock.snap_index(23.5 * 3600 + 3600)] == "00:30:00"
     assert clock.values[clock.snap_index(-60)] == "23:59:00"
     uneven = build_domain(numeric(ranges=[[0, 10, 5], [10, 30, 10]], wrap=True))

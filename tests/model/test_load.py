@@ -30,8 +30,7 @@ features:
 def errors_of(text: str) -> list[tuple[str, str, int | None]]:
     with pytest.raises(ModelError) as caught:
         loads_model(text, source="fan.yaml")
-    return [(p.where, p.message, p.line) for p in caught.value.problems
-            if p.severity == "error"]
+    return [(p.where, p.message, p.line) for p in caught.value.problems if p.severity == "error"]
 
 
 def test_good_model_loads_and_round_trips() -> None:
@@ -72,8 +71,11 @@ def test_initial_value_out_of_domain() -> None:
 def test_unknown_key_suggests_the_right_one() -> None:
     bad = GOOD.replace("variable: speed, effect: next", "varable: speed, effect: next")
     problems = errors_of(bad)
-    assert ("features.set_speed[0].varable", "unknown key 'varable'; did you mean 'variable'?",
-            15) in problems
+    assert (
+        "features.set_speed[0].varable",
+        "unknown key 'varable'; did you mean 'variable'?",
+        15,
+    ) in problems
 
 
 def test_bad_effect_lists_the_vocabulary() -> None:
@@ -97,8 +99,9 @@ def test_a_model_is_a_mapping() -> None:
 
 
 def test_warnings_do_not_stop_loading() -> None:
-    model = model_from(GOOD + "  extra:\n    - {actions: [press_power], variable: power}\n",
-                       check=False)
+    model = model_from(
+        GOOD + "  extra:\n    - {actions: [press_power], variable: power}\n", check=False
+    )
     assert "extra" in model.features
 
 
@@ -106,16 +109,19 @@ def test_yaml_booleans_are_explained() -> None:
     bad = GOOD.replace("label: POWER}", "label: OFF}")
     bad = bad.replace("  power:\n    - {", "  off:\n    - {")
     problems = errors_of(bad)
-    assert ("controls[0].label", 'YAML read this as the boolean False (it does so for '
-            'off/no/false); quote it, e.g. "off"', 3) in problems
-    assert any(where == "features.false" and "boolean" in message
-               for where, message, _ in problems)
+    assert (
+        "controls[0].label",
+        'YAML read this as the boolean False (it does so for off/no/false); quote it, e.g. "off"',
+        3,
+    ) in problems
+    assert any(where == "features.false" and "boolean" in message for where, message, _ in problems)
 
 
 def test_repeated_keys_are_errors() -> None:
-    bad = GOOD.replace("  press_speed: {control: speed_button}",
-                       "  press_speed: {control: speed_button}\n"
-                       "  press_power: {control: speed_button}")
+    bad = GOOD.replace(
+        "  press_speed: {control: speed_button}",
+        "  press_speed: {control: speed_button}\n  press_power: {control: speed_button}",
+    )
     [(where, message, line)] = errors_of(bad)
     assert where == "actions.press_power" and line == 11
     assert "given twice (first on line 9)" in message

@@ -48,24 +48,33 @@ def test_base_is_clean() -> None:
 
 
 def test_missing_variable() -> None:
-    found = problems(BASE.replace("{actions: [press_b], variable: level, effect: next}",
-                                  "{actions: [press_b], effect: next}"))
+    found = problems(
+        BASE.replace(
+            "{actions: [press_b], variable: level, effect: next}",
+            "{actions: [press_b], effect: next}",
+        )
+    )
     assert ("missing-variable", "features.level[0].effect") in [f[:2] for f in found]
     assert ("missing-variable", "features.level") in [f[:2] for f in found]
 
 
 def test_empty_and_unknown_actions() -> None:
     assert only(BASE.replace("[press_b], variable: level", "[], variable: level"))[:2] == (
-        "empty-action", "features.level[0].actions")
+        "empty-action",
+        "features.level[0].actions",
+    )
     assert only(BASE.replace("[press_b], variable", "[press_c], variable"))[:2] == (
-        "unknown-action", "features.level[0].actions[0]")
+        "unknown-action",
+        "features.level[0].actions[0]",
+    )
 
 
 def test_action_and_variable_coverage() -> None:
     unused_action = BASE.replace("actions:\n", "actions:\n  press_x: {control: b1}\n")
     assert only(unused_action)[:2] == ("action-coverage", "actions.press_x")
-    unused_variable = BASE.replace("variables:\n", "variables:\n  spare: {type: discrete, "
-                                                   "values: [p, q]}\n")
+    unused_variable = BASE.replace(
+        "variables:\n", "variables:\n  spare: {type: discrete, values: [p, q]}\n"
+    )
     assert only(unused_variable)[:2] == ("variable-coverage", "variables.spare")
 
 
@@ -78,11 +87,14 @@ def test_duplicate_sequences_and_unstartable_features() -> None:
 
 def test_keypad_actions_without_keypad() -> None:
     text = BASE.replace("press_b: {control: b2}", "press_b: {control: b2, digit: 1}")
-    text = text.replace("level: {type: numeric, ranges: [[0, 10, 5]]}",
-                        "level: {type: numeric, ranges: [[0, 10, 5]], "
-                        "entry: {format: number}}")
-    text = text.replace("{actions: [press_b], variable: level, effect: next}",
-                        "{actions: [press_b], variable: level}")
+    text = text.replace(
+        "level: {type: numeric, ranges: [[0, 10, 5]]}",
+        "level: {type: numeric, ranges: [[0, 10, 5]], entry: {format: number}}",
+    )
+    text = text.replace(
+        "{actions: [press_b], variable: level, effect: next}",
+        "{actions: [press_b], variable: level}",
+    )
     check, where, message = only(text)
     assert (check, where) == ("keypad", "actions.press_b.digit")
     assert "kind `key`" in message
@@ -90,20 +102,24 @@ def test_keypad_actions_without_keypad() -> None:
 
 def test_keypad_buffer_needs_an_entry_format() -> None:
     text = BASE.replace("press_b: {control: b2}", "press_b: {control: k1, digit: 1}")
-    text = text.replace("{actions: [press_b], variable: level, effect: next}",
-                        "{actions: [press_b], variable: level}")
+    text = text.replace(
+        "{actions: [press_b], variable: level, effect: next}",
+        "{actions: [press_b], variable: level}",
+    )
     check, where, message = only(text)
     assert (check, where) == ("keypad-buffer", "variables.level.entry")
     assert "no `entry` format" in message
 
 
 def test_action_variable_consistency() -> None:
-    check, where, message = only(BASE.replace("variable: mode, effect: next",
-                                              "variable: mode, effect: toggle"))
+    check, where, message = only(
+        BASE.replace("variable: mode, effect: next", "variable: mode, effect: toggle")
+    )
     assert (check, where) == ("action-variable", "features.mode[0].effect")
     assert "exactly two values" in message
-    check, _, message = only(BASE.replace("variable: mode, effect: next",
-                                          "variable: mode, effect: {to: d}"))
+    check, _, message = only(
+        BASE.replace("variable: mode, effect: next", "variable: mode, effect: {to: d}")
+    )
     assert "go-to value 'd'" in message
 
 
@@ -130,8 +146,10 @@ def test_a_guard_nothing_can_lift() -> None:
 
 
 def test_dependent_cases_name_parent_values() -> None:
-    text = BASE.replace("variables:\n", "variables:\n  size: {type: discrete, depends_on: mode, "
-                                        "cases: {a: [s, m], z: [l]}}\n")
+    text = BASE.replace(
+        "variables:\n",
+        "variables:\n  size: {type: discrete, depends_on: mode, cases: {a: [s, m], z: [l]}}\n",
+    )
     text += "  size:\n    - {actions: [press_b], variable: size}\n"
     found = problems(text)
     assert ("dependent", "variables.size.cases.z") in [f[:2] for f in found]

@@ -24,27 +24,50 @@ def test_time_round_trip() -> None:
         parse_hms("1:30")
 
 
-@pytest.mark.parametrize(("seconds", "style", "shown"), [
-    (90, "mm:ss", "01:30"), (5400, "h:mm", "1:30"), (5400, "hh:mm", "01:30"),
-    (5400, "min", "90 min"), (5400, "h", "1.5 h"), (5400, "hh:mm:ss", "01:30:00"),
-])
+@pytest.mark.parametrize(
+    ("seconds", "style", "shown"),
+    [
+        (90, "mm:ss", "01:30"),
+        (5400, "h:mm", "1:30"),
+        (5400, "hh:mm", "01:30"),
+        (5400, "min", "90 min"),
+        (5400, "h", "1.5 h"),
+        (5400, "hh:mm:ss", "01:30:00"),
+    ],
+)
 def test_display_styles(seconds: int, style: str, shown: str) -> None:
     assert format_time(seconds, style) == shown
 
 
-@pytest.mark.parametrize(("text", "number"), [
-    ("forty five", 45), ("one and a half", 1.5), ("half", 0.5), ("two hundred", 200),
-    ("twenty-five", 25), ("a dozen", 12),
-])
+@pytest.mark.parametrize(
+    ("text", "number"),
+    [
+        ("forty five", 45),
+        ("one and a half", 1.5),
+        ("half", 0.5),
+        ("two hundred", 200),
+        ("twenty-five", 25),
+        ("a dozen", 12),
+    ],
+)
 def test_number_words(text: str, number: float) -> None:
     assert words_to_number(text) == number
 
 
-@pytest.mark.parametrize(("text", "expected"), [
-    ("half an hour", (1800, "time")), ("2 hrs", (7200, "time")), ("1 h 30 min", (5400, "time")),
-    ("fifty percent", (50, "ratio")), ("2kg", (2000, "mass")), ("1.5 L", (1500, "volume")),
-    ("40 °C", (40, "temperature")), ("1200 rpm", (1200, "speed")), ("45", (45, None)),
-])
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("half an hour", (1800, "time")),
+        ("2 hrs", (7200, "time")),
+        ("1 h 30 min", (5400, "time")),
+        ("fifty percent", (50, "ratio")),
+        ("2kg", (2000, "mass")),
+        ("1.5 L", (1500, "volume")),
+        ("40 °C", (40, "temperature")),
+        ("1200 rpm", (1200, "speed")),
+        ("45", (45, None)),
+    ],
+)
 def test_quantities_with_units(text: str, expected: tuple[float, str | None]) -> None:
     value, dimension, _ = parse_quantity(text)  # type: ignore[misc]
     assert (value, dimension) == expected
@@ -55,9 +78,16 @@ def test_mixed_dimensions_are_not_a_quantity() -> None:
     assert parse_quantity("quickly") is None
 
 
-@pytest.mark.parametrize(("text", "number"), [
-    ("-5", -5), ("−0.5", -0.5), ("+3", 3), ("1-2", None), ("twenty-five", 25),
-])
+@pytest.mark.parametrize(
+    ("text", "number"),
+    [
+        ("-5", -5),
+        ("−0.5", -0.5),
+        ("+3", 3),
+        ("1-2", None),
+        ("twenty-five", 25),
+    ],
+)
 def test_signs_and_ranges(text: str, number: float | None) -> None:
     assert words_to_number(text) == number
 

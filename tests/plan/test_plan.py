@@ -22,13 +22,20 @@ def execute(model: ApplianceModel, found: Plan) -> Simulator:
 
 
 def test_washing_machine_six_variables(washer: ApplianceModel) -> None:
-    goal = {"power": "on", "programme": "wool", "temperature": "20", "spin_speed": "600 rpm",
-            "finish_in": "5 h", "running": "on"}
+    goal = {
+        "power": "on",
+        "programme": "wool",
+        "temperature": "20",
+        "spin_speed": "600 rpm",
+        "finish_in": "5 h",
+        "running": "on",
+    }
     found = plan(washer, None, goal)
     features = [m.feature for m in found.macro_actions]
     assert features[0] == "power" and features[-1] == "start_pause"
-    assert features.index("select_programme") < min(features.index("set_temperature"),
-                                                    features.index("set_spin"))
+    assert features.index("select_programme") < min(
+        features.index("set_temperature"), features.index("set_spin")
+    )
     assert len(found) == 15
     assert execute(washer, found).satisfies(found.goal)
     spin = next(m for m in found.macro_actions if m.feature == "set_spin")
@@ -180,8 +187,15 @@ features:
 """
 
 
-@pytest.mark.parametrize("goal", [{"setting": "x5"}, {"setting": "x5", "level": 3},
-                                  {"setting": "x2", "level": 2}, {"setting": "x1", "level": 1}])
+@pytest.mark.parametrize(
+    "goal",
+    [
+        {"setting": "x5"},
+        {"setting": "x5", "level": 3},
+        {"setting": "x2", "level": 2},
+        {"setting": "x1", "level": 1},
+    ],
+)
 def test_a_programme_change_as_a_shortcut_to_a_setting(goal: dict[str, object]) -> None:
     """The setting's goal is some programme's default; the programme is not in the goal."""
     model = model_from(PROGRAMME_SHORTCUT)

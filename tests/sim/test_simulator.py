@@ -112,7 +112,8 @@ def test_keypad_digits_shift_in_and_reset_on_leaving(microwave: ApplianceModel) 
 
 
 def test_keypad_overflow_ignore() -> None:
-    sim = Simulator(model_from("""
+    sim = Simulator(
+        model_from("""
 controls:
   - {id: key_1, kind: key, label: "1"}
   - {id: key_2, kind: key, label: "2"}
@@ -130,7 +131,8 @@ features:
   weight:
     - {actions: [press_set]}
     - {actions: [press_1, press_2], variable: grams}
-"""))
+""")
+    )
     run(sim, "press_set", "press_1", "press_2", "press_1")
     assert sim.value("grams") == 12
 
@@ -171,7 +173,8 @@ def test_states_are_values_restorable_and_deterministic(washer: ApplianceModel) 
 
 
 def test_choosing_the_programme_again_restores_its_defaults() -> None:
-    sim = Simulator(model_from("""
+    sim = Simulator(
+        model_from("""
 controls: [{id: p, label: POWER}, {id: t, label: TEMP}, {id: c, label: COTTON},
            {id: w, label: WOOL}]
 variables:
@@ -187,7 +190,8 @@ features:
   programme:
     - {actions: [press_cotton, press_wool], variable: programme,
        effect: {press_cotton: {to: cotton}, press_wool: {to: wool}}}
-"""))
+""")
+    )
     run(sim, "press_power", "press_temp")
     assert sim.value("temperature") == "60"
     sim.step("press_cotton")  # cotton again: its defaults come back

@@ -86,8 +86,10 @@ class Belief:
     def set_pointer(self, pointer: tuple[str, int] | None) -> None:
         step = -1
         if pointer is not None:
-            step = next((i for i, s in enumerate(self.compiled.steps)
-                         if (s.feature, s.index) == pointer), -1)
+            step = next(
+                (i for i, s in enumerate(self.compiled.steps) if (s.feature, s.index) == pointer),
+                -1,
+            )
         self.state = State(self.state.values, step, "")
 
     def replace(self, model: ApplianceModel, pointer: tuple[str, int] | None = None) -> None:
@@ -97,8 +99,14 @@ class Belief:
         self.compiled = CompiledModel(model)
         self._simulator = Simulator(self.compiled)
         self.state = self.compiled.initial_state()
-        order = sorted(values, key=lambda n: self.compiled.vars[self.compiled.var_index[n]].parent
-                       if n in self.compiled.var_index else 0)
+        order = sorted(
+            values,
+            key=lambda n: (
+                self.compiled.vars[self.compiled.var_index[n]].parent
+                if n in self.compiled.var_index
+                else 0
+            ),
+        )
         for name in order:  # parents (parent index -1) before their dependents
             if name in self.compiled.var_index and values[name] is not None:
                 self.set_value(name, values[name])

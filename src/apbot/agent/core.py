@@ -103,10 +103,16 @@ class Core:
         before_state = self.belief.state
         before = self.belief.pointer()
         if action.name not in self.offered:  # the belief has a control the appliance lacks
-            feedback = Feedback(self.last.text, dict(self.last.values), False,
-                                "the appliance has no such action")
-            self.episode.log("action", action=action.name, display=feedback.text,
-                             accepted=False, exploring=exploring)
+            feedback = Feedback(
+                self.last.text, dict(self.last.values), False, "the appliance has no such action"
+            )
+            self.episode.log(
+                "action",
+                action=action.name,
+                display=feedback.text,
+                accepted=False,
+                exploring=exploring,
+            )
             return Executed(action, before, None, feedback, True, before)
         believed = self.belief.advance(action.name, action.seconds)
         pointer = self.belief.pointer() if believed else before
@@ -116,18 +122,30 @@ class Core:
         feedback = self.env.step(action.name, action.seconds)
         self.episode.execution_steps += 1
         self.last = feedback
-        self.episode.log("action", action=action.name, display=feedback.text,
-                         values=dict(feedback.values), accepted=feedback.accepted,
-                         exploring=exploring)
+        self.episode.log(
+            "action",
+            action=action.name,
+            display=feedback.text,
+            values=dict(feedback.values),
+            accepted=feedback.accepted,
+            exploring=exploring,
+        )
         if not feedback.accepted:
             self.belief.state = before_state  # a refused action changes nothing
             return Executed(action, pointer, variable, feedback, believed, before, predicted)
         estimate = self.estimate(feedback)
-        surprises = {name: (self.belief.value(name), value)
-                     for name, value in (*estimate.values.items(), *estimate.outside.items())
-                     if self.belief.value(name) != value}
-        if variable and variable in expected and variable not in surprises and \
-                variable not in estimate.values and variable not in estimate.outside:
+        surprises = {
+            name: (self.belief.value(name), value)
+            for name, value in (*estimate.values.items(), *estimate.outside.items())
+            if self.belief.value(name) != value
+        }
+        if (
+            variable
+            and variable in expected
+            and variable not in surprises
+            and variable not in estimate.values
+            and variable not in estimate.outside
+        ):
             surprises[variable] = (predicted, None)  # expected on the display, and it is dark
         self.sync(estimate)
         if variable and not exploring:
@@ -136,8 +154,9 @@ class Core:
         self.contradicted.update(estimate.outside)
         for name in estimate.values:
             self.contradicted.pop(name, None)
-        return Executed(action, pointer, variable, feedback, believed, before, predicted,
-                        estimate, surprises)
+        return Executed(
+            action, pointer, variable, feedback, believed, before, predicted, estimate, surprises
+        )
 
     def planned(self, action: str) -> PlannedAction:
         spec = self.belief.model.actions[action]
@@ -184,8 +203,7 @@ class Core:
 
     def magnitudes(self, name: str) -> list[float]:
         spec = self.belief.model.variables[name]
-        return [m for m in (magnitude(spec, v) for v in self.domain_values(name))
-                if m is not None]
+        return [m for m in (magnitude(spec, v) for v in self.domain_values(name)) if m is not None]
 
     def case(self, name: str) -> str | None:
         parent = self.belief.model.variables[name].depends_on

@@ -85,5 +85,9 @@ class SimulatorEnvironment:
 def _feedback(observation: Any) -> Feedback:
     # the simulator's reason for a refusal names true values ("child_lock is on"): an agent
     # must learn that from the display, so only the fact of the refusal is passed on
-    return Feedback(observation.display, dict(observation.values), observation.accepted,
-                    "" if observation.accepted else "refused")
+    return Feedback(
+        observation.display,
+        dict(observation.values),
+        observation.accepted,
+        "" if observation.accepted else "refused",
+    )

@@ -66,8 +66,11 @@ class TraceEvent:
 
     def to_dict(self) -> dict[str, Any]:
         """The event without its default fields (traces are stored for every task)."""
-        data = {k: v for k, v in asdict(self).items() if v not in (None, {}, "", False)
-                or k in ("kind", "step")}
+        data = {
+            k: v
+            for k, v in asdict(self).items()
+            if v not in (None, {}, "", False) or k in ("kind", "step")
+        }
         if self.accepted:
             del data["accepted"]
         else:

@@ -104,18 +104,19 @@ class StateEstimator:
     def rebind(self, belief: ApplianceModel) -> None:
         """Use a repaired belief, keeping the name matches learnt so far."""
         self._bind(belief)
-        self._learnt = {name: (tier, var) for name, (tier, var) in self._learnt.items()
-                        if var in self._vars}
+        self._learnt = {
+            name: (tier, var) for name, (tier, var) in self._learnt.items() if var in self._vars
+        }
 
     def _bind(self, belief: ApplianceModel) -> None:
         self.belief = belief
-        self._vars = {name: _prepare(name, spec, i)
-                      for i, (name, spec) in enumerate(belief.variables.items())}
+        self._vars = {
+            name: _prepare(name, spec, i) for i, (name, spec) in enumerate(belief.variables.items())
+        }
         self._candidates: dict[str, list[tuple[int, tuple[str, ...]]]] = {}
         self._plans: dict[frozenset[str], _Plan] = {}
 
-    def estimate(self, feedback: Feedback, context: Mapping[str, Any] | None = None
-                 ) -> Estimate:
+    def estimate(self, feedback: Feedback, context: Mapping[str, Any] | None = None) -> Estimate:
         """Read ``feedback`` in belief terms.
 
         ``context``: the belief's current values, so that a programme-dependent setting is
@@ -157,14 +158,17 @@ class StateEstimator:
                 try:
                     outside[var.name] = parse_value(var.spec, raw)
                 except ValueProblem as exc:
-                    unmatched[name] = (f"{name!r} shows {raw!r}, which is not a {var.spec.type} "
-                                       f"value for {var.name}: {exc}")
+                    unmatched[name] = (
+                        f"{name!r} shows {raw!r}, which is not a {var.spec.type} "
+                        f"value for {var.name}: {exc}"
+                    )
         return Estimate(values, outside, unmatched, dict(plan.mapping))
 
     # --- name matching ----------------------------------------------------------------------
 
-    def _resolve(self, shown: Mapping[str, Any], context: Mapping[str, Any] | None
-                 ) -> tuple[_Plan, bool]:
+    def _resolve(
+        self, shown: Mapping[str, Any], context: Mapping[str, Any] | None
+    ) -> tuple[_Plan, bool]:
         """Match every feedback name; True when the result depends on the names alone."""
         decided: dict[str, tuple[int, str]] = {}
         unmatched: dict[str, str] = {}
@@ -205,8 +209,10 @@ class StateEstimator:
             winners = [n for n in names if decided[n][0] == best]
             for name in names:
                 if len(winners) > 1:
-                    unmatched[name] = (f"{_either([repr(w) for w in winners], 'and')} "
-                                       f"{'both' if len(winners) == 2 else 'all'} look like {var}")
+                    unmatched[name] = (
+                        f"{_either([repr(w) for w in winners], 'and')} "
+                        f"{'both' if len(winners) == 2 else 'all'} look like {var}"
+                    )
                 elif name != winners[0]:
                     unmatched[name] = f"{var} is already shown as {winners[0]!r}"
                 else:
@@ -215,13 +221,16 @@ class StateEstimator:
                 reusable = reusable and name not in checked
         for name in checked & decided.keys():
             self._learnt[name] = decided[name]
-        entries = sorted(((name, self._vars[var]) for name, (_, var) in decided.items()),
-                         key=lambda entry: entry[1].rank)
+        entries = sorted(
+            ((name, self._vars[var]) for name, (_, var) in decided.items()),
+            key=lambda entry: entry[1].rank,
+        )
         mapping = {name: var.name for name, var in entries}
         return _Plan(tuple(entries), mapping, unmatched), reusable
 
-    def _choose(self, name: str, raw: Any, claimed: Mapping[str, str],
-                context: Mapping[str, Any] | None) -> tuple[int, str] | str:
+    def _choose(
+        self, name: str, raw: Any, claimed: Mapping[str, str], context: Mapping[str, Any] | None
+    ) -> tuple[int, str] | str:
         """Pick the variable for a name whose name alone does not decide: the best tier
         whose variables can hold the value, then the one whose domain has it."""
         wrong_type: list[str] = []
@@ -290,8 +299,17 @@ def _prepare(name: str, spec: AnyVariable, order: int) -> _Variable:
     else:
         domain, cases = None, case_domains(spec)
         union = Domain(next(iter(cases.values())).kind, tuple(all_values(spec)), 0, spec.wrap)
-    return _Variable(name, spec, (0 if spec.depends_on is None else 1, order), domain,
-                     spec.depends_on, cases, union, tuple(forms), label)
+    return _Variable(
+        name,
+        spec,
+        (0 if spec.depends_on is None else 1, order),
+        domain,
+        spec.depends_on,
+        cases,
+        union,
+        tuple(forms),
+        label,
+    )
 
 
 def _name_tier(name: str, words: tuple[str, ...], var: _Variable) -> int | None:
@@ -310,11 +328,14 @@ def _name_tier(name: str, words: tuple[str, ...], var: _Variable) -> int | None:
     for form, form_joined in var.forms:
         if (len(words) == 1 and words[0] in form) or _contains(words, form):
             tiers.append(WORDS)
-        elif len(joined) >= 2 and (form_joined.startswith(joined)
-                                   or any(w.startswith(joined) for w in form)
-                                   or (len(words) == len(form) > 1
-                                       and all(b.startswith(a) for a, b in zip(words, form,
-                                                                               strict=True)))):
+        elif len(joined) >= 2 and (
+            form_joined.startswith(joined)
+            or any(w.startswith(joined) for w in form)
+            or (
+                len(words) == len(form) > 1
+                and all(b.startswith(a) for a, b in zip(words, form, strict=True))
+            )
+        ):
             tiers.append(PREFIX)
         elif _abbreviates(joined, form_joined):
             tiers.append(ABBREVIATION)
@@ -326,11 +347,11 @@ def _name_tier(name: str, words: tuple[str, ...], var: _Variable) -> int | None:
 def _contains(words: tuple[str, ...], part: tuple[str, ...]) -> bool:
     """Whether ``part`` occurs as consecutive words inside the longer ``words``."""
     n = len(part)
-    return 0 < n < len(words) and any(words[i:i + n] == part for i in range(len(words) - n + 1))
+    return 0 < n < len(words) and any(words[i : i + n] == part for i in range(len(words) - n + 1))
 
 
 def _abbreviates(short: str, long: str) -> bool:
-    """"spd" for "speed", "tmr" for "timer": the first letter, then consonants in order (a
+    """ "spd" for "speed", "tmr" for "timer": the first letter, then consonants in order (a
     word with vowels, such as "clock", is a word, not an abbreviation of "child lock")."""
     if short[0] != long[0] or (len(short) > 2 and _VOWELS.intersection(short[1:])):
         return False
@@ -350,8 +371,12 @@ def _absent(raw: Any) -> bool:
     return raw is None or (isinstance(raw, str) and raw.strip() in ABSENT)
 
 
-def _domain_for(var: _Variable, values: Mapping[str, Any], context: Mapping[str, Any] | None,
-                outside: Mapping[str, Any] = _NOTHING) -> Domain | None:
+def _domain_for(
+    var: _Variable,
+    values: Mapping[str, Any],
+    context: Mapping[str, Any] | None,
+    outside: Mapping[str, Any] = _NOTHING,
+) -> Domain | None:
     """The domain to read ``var`` in: its parent's case when the parent is known (shown in
     this feedback, else believed); None when the belief says it does not exist there. A
     parent shown with a value the belief lacks leaves every case possible."""

@@ -53,14 +53,21 @@ class Exploring(Core):
         elif opposite is not None and forward[-1] == forward[-2]:  # an end: walk back
             backward, unseen = self.walk(name, opposite)
             final = opposite
-        self.episode.log("explore", f"{name} under {key.name}: {summary(forward)}"
-                         + (f"; under {opposite.name}: {summary(backward)}"
-                            if opposite is not None and backward is not None else ""))
+        self.episode.log(
+            "explore",
+            f"{name} under {key.name}: {summary(forward)}"
+            + (
+                f"; under {opposite.name}: {summary(backward)}"
+                if opposite is not None and backward is not None
+                else ""
+            ),
+        )
         seen = [v for v in forward + (backward or []) if not isinstance(v, Dark)]
         if not seen:
             return
-        last_walk = [v for v in (backward if backward is not None else forward)
-                     if not isinstance(v, Dark)]
+        last_walk = [
+            v for v in (backward if backward is not None else forward) if not isinstance(v, Dark)
+        ]
         current = last_walk[-1] if last_walk else seen[-1]
         if len(seen) >= 2:
             self.learn(name, pointer, key.name, opposite, forward, backward, current)
@@ -68,8 +75,9 @@ class Exploring(Core):
         for _ in range(unseen):  # presses taken in the dark: the (repaired) model says where to
             self.belief.advance(final.name, final.seconds)
 
-    def walk(self, name: str, action: PlannedAction,
-             history: list[Any] | None = None) -> tuple[list[Any], int]:
+    def walk(
+        self, name: str, action: PlannedAction, history: list[Any] | None = None
+    ) -> tuple[list[Any], int]:
         """Press ``action`` until the value of ``name`` shown repeats.
 
         ``history`` (values shown under the same key just before) opens the walk. A press after
@@ -120,8 +128,11 @@ class Exploring(Core):
         effect = self.effect(pointer, action)
         for other in self.belief.model.features[feature][index].actions:
             theirs = self.effect(pointer, other)
-            if other != action and (theirs in ("next", "prev") or isinstance(theirs, Add)) \
-                    and theirs != effect:
+            if (
+                other != action
+                and (theirs in ("next", "prev") or isinstance(theirs, Add))
+                and theirs != effect
+            ):
                 return self.planned(other)
         return None
 
@@ -138,9 +149,16 @@ class Exploring(Core):
 
     # --- learning -------------------------------------------------------------------------
 
-    def learn(self, name: str, pointer: tuple[str, int], action: str,
-              opposite: PlannedAction | None, forward: list[Any],
-              backward: list[Any] | None, current: Any) -> bool:
+    def learn(
+        self,
+        name: str,
+        pointer: tuple[str, int],
+        action: str,
+        opposite: PlannedAction | None,
+        forward: list[Any],
+        backward: list[Any] | None,
+        current: Any,
+    ) -> bool:
         """Write what the walks show into the belief model; False when nothing could be."""
         model = self.belief.model
         spec = model.variables[name]
@@ -152,8 +170,9 @@ class Exploring(Core):
             if isinstance(spec, DiscreteVariable):
                 new, note = self._learn_values(name, effect, order, current)
             else:
-                new, note = self._learn_numbers(name, pointer, action, opposite, forward,
-                                                backward, order, current)
+                new, note = self._learn_numbers(
+                    name, pointer, action, opposite, forward, backward, order, current
+                )
         except RepairError as exc:
             self.episode.log("repair", f"could not repair {name}: {exc}")
             return False
@@ -162,8 +181,9 @@ class Exploring(Core):
         self.adopt(new, note, pointer)
         return True
 
-    def _learn_values(self, name: str, effect: Any, order: Any,
-                      current: Any) -> tuple[ApplianceModel, str]:
+    def _learn_values(
+        self, name: str, effect: Any, order: Any, current: Any
+    ) -> tuple[ApplianceModel, str]:
         values = [v if isinstance(v, Dark) else str(v) for v in order.values]
         if effect == "prev":
             values.reverse()
@@ -171,14 +191,27 @@ class Exploring(Core):
         values = fill_dark(values, known, order.wrap)
         if not order.complete:
             values = splice(known, values)
-        new = redefine_domain(self.belief.model, name, self.case(name), values=values,
-                              wrap=order.wrap, current=current)
+        new = redefine_domain(
+            self.belief.model,
+            name,
+            self.case(name),
+            values=values,
+            wrap=order.wrap,
+            current=current,
+        )
         return new, f"{name}: values {summary(values)}{_ends(order.wrap)}"
 
-    def _learn_numbers(self, name: str, pointer: tuple[str, int], action: str,
-                       opposite: PlannedAction | None, forward: list[Any],
-                       backward: list[Any] | None, order: Any,
-                       current: Any) -> tuple[ApplianceModel | None, str]:
+    def _learn_numbers(
+        self,
+        name: str,
+        pointer: tuple[str, int],
+        action: str,
+        opposite: PlannedAction | None,
+        forward: list[Any],
+        backward: list[Any] | None,
+        order: Any,
+        current: Any,
+    ) -> tuple[ApplianceModel | None, str]:
         spec = self.belief.model.variables[name]
         effect = self.effect(pointer, action)
         numbers = [m for m in (magnitude(spec, v) for v in order.values) if m is not None]
@@ -198,23 +231,39 @@ class Exploring(Core):
                 new = set_effects(new, pointer[0], pointer[1], flipped)
                 notes.append(f"{action} moves {name} the other way")
             if not order.complete:
-                numbers = _keep_unseen(self.magnitudes(name), numbers,
-                                       clamped_high=rising if order.wrap is False else None)
+                numbers = _keep_unseen(
+                    self.magnitudes(name),
+                    numbers,
+                    clamped_high=rising if order.wrap is False else None,
+                )
         ranges = ranges_from_values(numbers)
-        new = redefine_domain(new, name, self.case(name), ranges=ranges,
-                              wrap=order.wrap if effect != "toggle" else None,
-                              current=canonical(spec, magnitude(spec, current)))
+        new = redefine_domain(
+            new,
+            name,
+            self.case(name),
+            ranges=ranges,
+            wrap=order.wrap if effect != "toggle" else None,
+            current=canonical(spec, magnitude(spec, current)),
+        )
         notes.append(f"{name}: ranges {ranges}{_ends(order.wrap)}")
         return new, "; ".join(notes)
 
-    def _learn_add(self, model: ApplianceModel, pointer: tuple[str, int], action: str,
-                   spec: Any, change: float | None, numbers: list[float],
-                   notes: list[str]) -> tuple[ApplianceModel, list[float]]:
+    def _learn_add(
+        self,
+        model: ApplianceModel,
+        pointer: tuple[str, int],
+        action: str,
+        spec: Any,
+        change: float | None,
+        numbers: list[float],
+        notes: list[str],
+    ) -> tuple[ApplianceModel, list[float]]:
         """An ``add`` key: learn its amount and sign; widen (never shrink) the domain, since
         the key may skip values other keys reach."""
         effect = self.effect(pointer, action)
-        believed = float(time_step_seconds(effect.add) if isinstance(effect.add, str)
-                         else effect.add)
+        believed = float(
+            time_step_seconds(effect.add) if isinstance(effect.add, str) else effect.add
+        )
         if change is not None and change != believed:
             amount: Any = int(change) if isinstance(spec, TimeVariable) else tidy(change)
             model = set_effects(model, pointer[0], pointer[1], {action: {"add": amount}})
@@ -226,8 +275,12 @@ class Exploring(Core):
         """A go-to key set another value than believed: it sets that one."""
         assert last.pointer is not None
         try:
-            new = set_effects(self.belief.model, last.pointer[0], last.pointer[1],
-                              {last.action.name: {"to": observed}})
+            new = set_effects(
+                self.belief.model,
+                last.pointer[0],
+                last.pointer[1],
+                {last.action.name: {"to": observed}},
+            )
         except RepairError as exc:
             self.episode.log("repair", f"could not repair {last.action.name}: {exc}")
             return
@@ -246,32 +299,37 @@ class Exploring(Core):
         step = common_step(points)
         low, high = points[0], points[-1]
         try:
-            new = redefine_domain(self.belief.model, name, self.case(name),
-                                  ranges=[(low, high, step)])
+            new = redefine_domain(
+                self.belief.model, name, self.case(name), ranges=[(low, high, step)]
+            )
         except RepairError as exc:
             self.episode.log("repair", f"could not widen {name}: {exc}")
             return
-        self.adopt(new, f"{name}: allow {low:g}..{high:g} in steps of {step:g}",
-                   self.belief.pointer())
+        self.adopt(
+            new, f"{name}: allow {low:g}..{high:g} in steps of {step:g}", self.belief.pointer()
+        )
 
 
 def _ends(wrap: bool | None) -> str:
     return {True: ", wraps", False: ", stops at the ends", None: ""}[wrap]
 
 
-def _keep_unseen(known: list[float], seen: list[float],
-                 clamped_high: bool | None) -> list[float]:
+def _keep_unseen(known: list[float], seen: list[float], clamped_high: bool | None) -> list[float]:
     """Numbers after a partial walk: what was seen replaces the belief between the lowest and
     highest value seen; beyond them the belief stands, except past an end the walk hit."""
     low, high = min(seen), max(seen)
-    kept = [m for m in known if (m < low and clamped_high is not False)
-            or (m > high and clamped_high is not True)]
+    kept = [
+        m
+        for m in known
+        if (m < low and clamped_high is not False) or (m > high and clamped_high is not True)
+    ]
     return sorted(set(seen) | set(kept))
 
 
 def _direction(spec: Any, forward: list[Any], backward: list[Any] | None) -> float | None:
     """The usual change one press of the explored key makes (from the opposite key's walk,
     reversed, when the first walk showed no change)."""
+
     def numbers(trace: list[Any]) -> list[float]:
         return [m for m in (magnitude(spec, v) for v in trace) if m is not None]
 

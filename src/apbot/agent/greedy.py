@@ -30,8 +30,12 @@ class Greedy(Core):
             end = i
             while end < len(actions) and self._same_step(done, actions[end]):
                 end += 1
-            if end == i or done.pointer is None or done.variable is None or \
-                    not self.stepping(done.pointer, done.action.name):
+            if (
+                end == i
+                or done.pointer is None
+                or done.variable is None
+                or not self.stepping(done.pointer, done.action.name)
+            ):
                 continue
             target = self._value_after(actions[i:end])
             executed.extend(self._towards(done, target))
@@ -42,8 +46,9 @@ class Greedy(Core):
         if done.pointer is None:
             return False
         feature, index = done.pointer
-        return action.name in self.belief.model.features[feature][index].actions and \
-            self.effect(done.pointer, action.name) not in ("digit", "none")
+        return action.name in self.belief.model.features[feature][index].actions and self.effect(
+            done.pointer, action.name
+        ) not in ("digit", "none")
 
     def _value_after(self, actions: list[PlannedAction]) -> Any:
         """What the belief says the step's variable will be after these planned presses."""
@@ -60,8 +65,11 @@ class Greedy(Core):
         assert entered.pointer is not None and entered.variable is not None
         name = entered.variable
         feature, index = entered.pointer
-        keys = [a for a in self.belief.model.features[feature][index].actions
-                if self.effect(entered.pointer, a) not in ("digit", "none")]
+        keys = [
+            a
+            for a in self.belief.model.features[feature][index].actions
+            if self.effect(entered.pointer, a) not in ("digit", "none")
+        ]
         executed: list[Executed] = []
         seen: Counter[Any] = Counter()
         while True:

@@ -78,7 +78,7 @@ def splice(known: Sequence[Any], segment: Sequence[Any]) -> list[Any]:
     anchor = next((v for v in segment if v in known), None)
     if anchor is None:
         return list(segment) + rest
-    position = sum(1 for v in known[:list(known).index(anchor)] if v not in observed)
+    position = sum(1 for v in known[: list(known).index(anchor)] if v not in observed)
     return rest[:position] + list(segment) + rest[position:]
 
 
@@ -126,12 +126,12 @@ def _between(known: Sequence[Any], before: Any, after: Any, wrap: bool | None) -
     if before in order and after in order:
         start, stop = order.index(before), order.index(after)
         if start < stop:
-            return order[start + 1:stop]
-        return order[start + 1:] + order[:stop] if wrap else []
+            return order[start + 1 : stop]
+        return order[start + 1 :] + order[:stop] if wrap else []
     if before in order:
-        return order[order.index(before) + 1:]
+        return order[order.index(before) + 1 :]
     if after in order:
-        return order[:order.index(after)]
+        return order[: order.index(after)]
     return []
 
 

@@ -58,8 +58,11 @@ class _Run(Exploring, Procedures, Greedy):
             while True:
                 mark = (episode.reasoning_steps, episode.execution_steps, len(episode.repairs))
                 self.reasoning_step()
-                progress = mark != (episode.reasoning_steps, episode.execution_steps,
-                                    len(episode.repairs))
+                progress = mark != (
+                    episode.reasoning_steps,
+                    episode.execution_steps,
+                    len(episode.repairs),
+                )
                 stalled = 0 if progress else stalled + 1
                 if stalled >= 2:
                     raise Stop("no progress: the belief offers no way to bring the goal closer")
@@ -78,15 +81,19 @@ class _Run(Exploring, Procedures, Greedy):
             self.start_macro(macro)
             self.execute(macro)
         holds = all(self.belief.value(n) == v for n, v in inside.items())
-        raise Stop("plan executed" if holds else "plan executed, but the belief no longer "
-                   "holds the goal", success=holds)
+        raise Stop(
+            "plan executed" if holds else "plan executed, but the belief no longer holds the goal",
+            success=holds,
+        )
 
     def reasoning_step(self) -> None:
         inside, outside = self.goal()
         for name in outside:
             if name in self.explored:
-                raise Stop(_outside_text({name: outside[name]}) + " (explored: "
-                           f"{summary(self.domain_values(name))})")
+                raise Stop(
+                    _outside_text({name: outside[name]}) + " (explored: "
+                    f"{summary(self.domain_values(name))})"
+                )
         if not self.pending:
             target = dict(inside)
             target.update({name: self.proxy(name, inside) for name in outside})
@@ -103,8 +110,11 @@ class _Run(Exploring, Procedures, Greedy):
                 if self.settle_contradictions(inside):
                     return  # the belief now holds what was shown: plan again
                 unseen = sorted(self.unverified & set(inside))
-                raise Stop("the goal holds" + (f" (not seen on the display: {', '.join(unseen)})"
-                                               if unseen else ""), success=True)
+                raise Stop(
+                    "the goal holds"
+                    + (f" (not seen on the display: {', '.join(unseen)})" if unseen else ""),
+                    success=True,
+                )
             self.pending = list(found.macro_actions)
             self.episode.log("plan", " → ".join(m.feature for m in found.macro_actions))
         macro = self.pending.pop(0)
@@ -202,13 +212,18 @@ class _Run(Exploring, Procedures, Greedy):
         self.counts[key] += 1
         for feature, steps in self.belief.model.features.items():
             for index, step in enumerate(steps):
-                walking = [a for a in step.actions if step.variable == name and
-                           self.stepping((feature, index), a)]
+                walking = [
+                    a
+                    for a in step.actions
+                    if step.variable == name and self.stepping((feature, index), a)
+                ]
                 if not walking:
                     continue
                 self.enter_step(feature, index)
-                self.explore(name, Executed(self.planned(walking[0]), (feature, index), name,
-                                            self.last, True))
+                self.explore(
+                    name,
+                    Executed(self.planned(walking[0]), (feature, index), name, self.last, True),
+                )
                 return True
         return False
 
@@ -236,9 +251,12 @@ class _Run(Exploring, Procedures, Greedy):
             outside = self.goal()[1]
             return not (outside and self._look_at(outside))
         done = executed[first]
-        self.episode.log("check", "mismatch",
-                         expected={n: p for n, (p, _) in done.surprises.items()},
-                         values={n: o for n, (_, o) in done.surprises.items()})
+        self.episode.log(
+            "check",
+            "mismatch",
+            expected={n: p for n, (p, _) in done.surprises.items()},
+            values={n: o for n, (_, o) in done.surprises.items()},
+        )
         if done.refused or self._wrong_setting(done):
             self.repair_procedure(executed[first:])
             name = self.step_variable(self.belief.pointer())
@@ -258,22 +276,30 @@ class _Run(Exploring, Procedures, Greedy):
         if done.variable is None or done.surprises.get(done.variable, (None, 0))[1] is not None:
             return False
         shown = set(done.estimate.values if done.estimate else ()) | set(
-            done.estimate.outside if done.estimate else ())
+            done.estimate.outside if done.estimate else ()
+        )
         return bool(shown - set(self.belief.model.display.indicators) - {done.variable})
 
     def _look_at(self, outside: dict[str, Any]) -> bool:
-        focused = {name: raw for name, raw in outside.items()
-                   if self.shown(name) is not MISSING and name not in self.explored}
+        focused = {
+            name: raw
+            for name, raw in outside.items()
+            if self.shown(name) is not MISSING and name not in self.explored
+        }
         if focused:
             self.explore_outside(focused)
         return bool(focused)
 
-    def repair_value(self, name: str, predicted: Any, observed: Any,
-                     executed: list[Executed], upto: int) -> None:
+    def repair_value(
+        self, name: str, predicted: Any, observed: Any, executed: list[Executed], upto: int
+    ) -> None:
         """The display showed ``observed`` for ``name`` where the belief predicted otherwise."""
-        self.trouble(name, f"{name} keeps showing values the model does not predict (last: "
-                     f"{observed!r}, expected {predicted!r})")
-        adjusting = [e for e in executed[:upto + 1] if e.variable == name and e.believed_accepted]
+        self.trouble(
+            name,
+            f"{name} keeps showing values the model does not predict (last: "
+            f"{observed!r}, expected {predicted!r})",
+        )
+        adjusting = [e for e in executed[: upto + 1] if e.variable == name and e.believed_accepted]
         if not adjusting:
             return  # changed as a side effect: believing the display is all there is to do
         last = adjusting[-1]
@@ -325,8 +351,9 @@ class _Run(Exploring, Procedures, Greedy):
 
 
 def _outside_text(outside: dict[str, Any]) -> str:
-    return "; ".join(f"{name}={raw!r} is not a value the model knows"
-                     for name, raw in outside.items())
+    return "; ".join(
+        f"{name}={raw!r} is not a value the model knows" for name, raw in outside.items()
+    )
 
 
 def run_agent(config: AgentConfig, context: TaskContext, env: Environment) -> Episode:

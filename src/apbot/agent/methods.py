@@ -27,15 +27,26 @@ def run_oracle(context: TaskContext, env: Environment) -> Episode:
         for action in macro.actions:
             feedback = env.step(action.name, action.seconds)
             episode.execution_steps += 1
-            episode.log("action", action=action.name, display=feedback.text,
-                        values=feedback.values, accepted=feedback.accepted)
+            episode.log(
+                "action",
+                action=action.name,
+                display=feedback.text,
+                values=feedback.values,
+                accepted=feedback.accepted,
+            )
     episode.claimed_success = True
     episode.log("stop", "plan executed")
     return episode
 
 
-register(Method("oracle", run_oracle, "the planner on the ground-truth model, executed open loop",
-                uses_truth=True))
+register(
+    Method(
+        "oracle",
+        run_oracle,
+        "the planner on the ground-truth model, executed open loop",
+        uses_truth=True,
+    )
+)
 
 
 def _agent(config: AgentConfig) -> RunFunction:
@@ -45,11 +56,26 @@ def _agent(config: AgentConfig) -> RunFunction:
     return run
 
 
-register(Method("apbot", _agent(AgentConfig()),
-                "ApBot: plan on the belief model, check after every macro action, explore and "
-                "repair on a mismatch, re-plan"))
-register(Method("apbot-open-loop", _agent(AgentConfig(closed_loop=False)),
-                "ApBot without model updates: the belief's plan, executed without checking"))
-register(Method("apbot-no-button-policy", _agent(AgentConfig(button_policy=False)),
-                "ApBot with the macro-action order from the model, but every press within a "
-                "macro action chosen greedily from the feedback (one reasoning step each)"))
+register(
+    Method(
+        "apbot",
+        _agent(AgentConfig()),
+        "ApBot: plan on the belief model, check after every macro action, explore and "
+        "repair on a mismatch, re-plan",
+    )
+)
+register(
+    Method(
+        "apbot-open-loop",
+        _agent(AgentConfig(closed_loop=False)),
+        "ApBot without model updates: the belief's plan, executed without checking",
+    )
+)
+register(
+    Method(
+        "apbot-no-button-policy",
+        _agent(AgentConfig(button_policy=False)),
+        "ApBot with the macro-action order from the model, but every press within a "
+        "macro action chosen greedily from the feedback (one reasoning step each)",
+    )
+)

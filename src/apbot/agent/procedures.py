@@ -27,8 +27,10 @@ class Procedures(Core):
             return
         failing = refused or [e for e in executed if e.variable is not None]
         if not failing or failing[0].pointer is None:
-            raise Stop("the appliance does not respond as the model predicts, and the "
-                       "model gives no step to learn from")
+            raise Stop(
+                "the appliance does not respond as the model predicts, and the "
+                "model gives no step to learn from"
+            )
         first = failing[0]
         assert first.pointer is not None
         feature, index = first.pointer
@@ -36,8 +38,12 @@ class Procedures(Core):
         self.trouble(f"procedure:{feature}", f"{first.action.name} keeps failing in {feature}")
         step = self.belief.model.features[feature][index]
         idle = [a for a in step.actions if self.effect(first.pointer, a) == "none"]
-        others = [a for s in self.belief.model.features[feature] for a in s.actions
-                  if a not in step.actions]
+        others = [
+            a
+            for s in self.belief.model.features[feature]
+            for a in s.actions
+            if a not in step.actions
+        ]
         for candidate in dict.fromkeys(self.orphans() + idle + others):
             if candidate == first.action.name:
                 continue
@@ -45,15 +51,17 @@ class Procedures(Core):
             if not probe.feedback.accepted:
                 continue
             after = self.press(first.action, exploring=True)
-            if after.feedback.accepted and name is not None and \
-                    after.observed(name) is not MISSING:
+            if after.feedback.accepted and name is not None and after.observed(name) is not MISSING:
                 try:
                     new = insert_step(self.belief.model, feature, index, [candidate])
                 except RepairError as exc:
                     self.episode.log("repair", f"could not add a step: {exc}")
                     continue
-                self.adopt(new, f"{feature} starts with {candidate} before "
-                           f"{first.action.name}", (feature, index + 1))
+                self.adopt(
+                    new,
+                    f"{feature} starts with {candidate} before {first.action.name}",
+                    (feature, index + 1),
+                )
                 return
         self.forget_pointer()
 
@@ -76,8 +84,9 @@ class Procedures(Core):
                 domain = compiled.vars[v].domain(self.belief.state.values)
                 if domain is not None:
                     self.belief.set_value(compiled.vars[v].name, domain.values[min(ok)])
-            self.episode.log("repair", f"refused with {text!r}: the appliance must be in "
-                             f"'{guard.name or text}'")
+            self.episode.log(
+                "repair", f"refused with {text!r}: the appliance must be in '{guard.name or text}'"
+            )
             return True
         return False
 
@@ -88,8 +97,11 @@ class Procedures(Core):
             if self.counts[key]:
                 continue
             self.counts[key] += 1
-            features = [f for f, steps in self.belief.model.features.items()
-                        if any(s.variable == name for s in steps)]
+            features = [
+                f
+                for f, steps in self.belief.model.features.items()
+                if any(s.variable == name for s in steps)
+            ]
             if self._first_step_from_orphans(name, features):
                 return True
             if any(self.find_separator(feature, name) for feature in features):
@@ -117,8 +129,11 @@ class Procedures(Core):
         keys for the one that brings ``name`` up (a SET press between hours and minutes)."""
         steps = self.belief.model.features[feature]
         index = next((i for i, s in enumerate(steps) if s.variable == name), None)
-        if index is None or index == 0 or not set(steps[index].actions) & \
-                set(steps[index - 1].actions):
+        if (
+            index is None
+            or index == 0
+            or not set(steps[index].actions) & set(steps[index - 1].actions)
+        ):
             return False
         inside = {a for i in (index - 1, index) for a in steps[i].actions}
         others = [a for s in steps for a in s.actions if a not in inside]
@@ -136,8 +151,9 @@ class Procedures(Core):
                         new = insert_step(self.belief.model, feature, index, [candidate])
                     except RepairError:
                         continue
-                    self.adopt(new, f"{feature} needs {candidate} before {name}",
-                               (feature, index + 1))
+                    self.adopt(
+                        new, f"{feature} needs {candidate} before {name}", (feature, index + 1)
+                    )
                     self.sync(self.estimate(self.last))
                     return True
             self.forget_pointer()
@@ -151,7 +167,8 @@ class Procedures(Core):
         if before is None or after is None or before[0] == after[0]:
             return False
         shown = set(entering.estimate.values if entering.estimate else ()) - set(
-            self.belief.model.display.indicators)
+            self.belief.model.display.indicators
+        )
         staying = {s.variable for s in self.belief.model.features[before[0]]} - {None}
         if entering.variable in staying | shown:
             return False  # the display shows the new setting: the key did start it
@@ -165,8 +182,9 @@ class Procedures(Core):
         except RepairError as exc:
             self.episode.log("repair", f"could not add a step to {feature}: {exc}")
             return False
-        self.adopt(new, f"{feature} takes {entering.action.name} as a further step",
-                   (feature, index + 1))
+        self.adopt(
+            new, f"{feature} takes {entering.action.name} as a further step", (feature, index + 1)
+        )
         return True
 
     def enter_step(self, feature: str, index: int) -> None:
@@ -188,13 +206,18 @@ class Procedures(Core):
                 continue
             for v, ok in guard.conditions:
                 domain = compiled.vars[v].domain(self.belief.state.values)
-                others = [value for i, value in enumerate(domain.values if domain else ())
-                          if i not in ok]
+                others = [
+                    value for i, value in enumerate(domain.values if domain else ()) if i not in ok
+                ]
                 if not others:
                     continue
                 try:
-                    found = plan(compiled, self.belief.state, {compiled.vars[v].name: others[0]},
-                                 self.config.plan_budget)
+                    found = plan(
+                        compiled,
+                        self.belief.state,
+                        {compiled.vars[v].name: others[0]},
+                        self.config.plan_budget,
+                    )
                 except Unreachable:
                     continue
                 for planned in found.actions:
@@ -203,8 +226,9 @@ class Procedures(Core):
 
     def orphans(self) -> list[str]:
         """Keys the appliance offers that no feature of the belief uses (at most eight)."""
-        used = {a for steps in self.belief.model.features.values() for s in steps
-                for a in s.actions}
+        used = {
+            a for steps in self.belief.model.features.values() for s in steps for a in s.actions
+        }
         return [a for a in self.belief.model.actions if a not in used and a in self.offered][:8]
 
     def forget_pointer(self) -> None:

@@ -39,10 +39,16 @@ def _dump(model: ApplianceModel) -> dict[str, Any]:
     return model.model_dump(mode="json", exclude_none=True)
 
 
-def redefine_domain(model: ApplianceModel, name: str, case: str | None, *,
-                    values: Sequence[Any] | None = None,
-                    ranges: Sequence[tuple[float, float, float]] | None = None,
-                    wrap: bool | None = None, current: Any = None) -> ApplianceModel:
+def redefine_domain(
+    model: ApplianceModel,
+    name: str,
+    case: str | None,
+    *,
+    values: Sequence[Any] | None = None,
+    ranges: Sequence[tuple[float, float, float]] | None = None,
+    wrap: bool | None = None,
+    current: Any = None,
+) -> ApplianceModel:
     """A new domain for ``name`` (for the parent's ``case`` when it depends on one).
 
     Discrete variables take ``values`` in order; numeric and time variables take ``ranges`` of
@@ -66,17 +72,25 @@ def redefine_domain(model: ApplianceModel, name: str, case: str | None, *,
         assert ranges is not None
         allowed = set(expand_ranges([list(r) for r in ranges]))
         if isinstance(spec, TimeVariable):
-            target["ranges"] = [[format_hms(int(a)), format_hms(int(b)), int(s)]
-                                for a, b, s in ranges]
+            target["ranges"] = [
+                [format_hms(int(a)), format_hms(int(b)), int(s)] for a, b, s in ranges
+            ]
         else:
             target["ranges"] = [list(r) for r in ranges]
         initial = target.get("initial")
         if (initial is not None or case is None) and (
-                initial is None or _magnitude(spec, initial) not in allowed):
-            fallback = current if current is not None and _magnitude(spec, current) in allowed \
+            initial is None or _magnitude(spec, initial) not in allowed
+        ):
+            fallback = (
+                current
+                if current is not None and _magnitude(spec, current) in allowed
                 else min(allowed)
-            target["initial"] = (format_hms(int(_magnitude(spec, fallback)))
-                                 if isinstance(spec, TimeVariable) else fallback)
+            )
+            target["initial"] = (
+                format_hms(int(_magnitude(spec, fallback)))
+                if isinstance(spec, TimeVariable)
+                else fallback
+            )
     if wrap is not None:
         var["wrap"] = wrap
     return _rebuild(data)
@@ -88,8 +102,9 @@ def _magnitude(spec: Any, value: Any) -> float:
     return float(value)
 
 
-def set_effects(model: ApplianceModel, feature: str, step: int,
-                effects: dict[str, Any]) -> ApplianceModel:
+def set_effects(
+    model: ApplianceModel, feature: str, step: int, effects: dict[str, Any]
+) -> ApplianceModel:
     """Give actions of one step new effects (e.g. ``next`` ↔ ``prev``, ``{add: -5}``)."""
     data = _dump(model)
     entry = data["features"][feature][step]
@@ -106,10 +121,12 @@ def _plain(effect: Any) -> Any:
     return effect.model_dump(mode="json") if hasattr(effect, "model_dump") else effect
 
 
-def insert_step(model: ApplianceModel, feature: str, before: int,
-                actions: Sequence[str]) -> ApplianceModel:
+def insert_step(
+    model: ApplianceModel, feature: str, before: int, actions: Sequence[str]
+) -> ApplianceModel:
     """Insert a step that only moves the procedure on (an entry key the model missed)."""
     data = _dump(model)
-    data["features"][feature].insert(before, {"actions": list(actions),
-                                              "note": "learnt from feedback"})
+    data["features"][feature].insert(
+        before, {"actions": list(actions), "note": "learnt from feedback"}
+    )
     return _rebuild(data)

@@ -35,9 +35,14 @@ Refusals = tuple[type[Exception], ...]
 class _CallEnvironment:
     """The part both wrappers share: call something per action, read what it returns."""
 
-    def __init__(self, owner: str, calls: dict[str, Callable[[float | None], Any]],
-                 reset: Callable[[], Any] | None, text: Callable[[], str] | None,
-                 refusals: Refusals) -> None:
+    def __init__(
+        self,
+        owner: str,
+        calls: dict[str, Callable[[float | None], Any]],
+        reset: Callable[[], Any] | None,
+        text: Callable[[], str] | None,
+        refusals: Refusals,
+    ) -> None:
         if not calls:
             raise ValueError(f"{owner} has no actions; list them with actions=[...]")
         if not all(isinstance(r, type) and issubclass(r, Exception) for r in refusals):
@@ -64,13 +69,16 @@ class _CallEnvironment:
         if call is None:
             close = closest_matches(action, self._actions)
             hint = f"; did you mean {' or '.join(map(repr, close))}?" if close else ""
-            raise UnknownAction(f"{self._owner} has no action {action!r}{hint} "
-                                f"(actions: {', '.join(self._actions)})")
+            raise UnknownAction(
+                f"{self._owner} has no action {action!r}{hint} "
+                f"(actions: {', '.join(self._actions)})"
+            )
         try:
             result = call(seconds)
         except self._refusals as exc:
-            return Feedback(self._text() if self._text else "", {}, False,
-                            str(exc) or type(exc).__name__)
+            return Feedback(
+                self._text() if self._text else "", {}, False, str(exc) or type(exc).__name__
+            )
         return self._feedback(result, action)
 
     def _feedback(self, result: Any, action: str) -> Feedback:
@@ -82,13 +90,19 @@ class _CallEnvironment:
             shown_text = result
         elif isinstance(result, Mapping):
             values = result
-        elif (isinstance(result, tuple) and len(result) == 2 and isinstance(result[0], str)
-              and isinstance(result[1], Mapping)):
+        elif (
+            isinstance(result, tuple)
+            and len(result) == 2
+            and isinstance(result[0], str)
+            and isinstance(result[1], Mapping)
+        ):
             shown_text, values = result
         elif result is not None:
-            raise TypeError(f"{self._owner}: {action} returned a {type(result).__name__}; "
-                            "return a dict of the values shown, the display text, a "
-                            "(text, dict) pair or None")
+            raise TypeError(
+                f"{self._owner}: {action} returned a {type(result).__name__}; "
+                "return a dict of the values shown, the display text, a "
+                "(text, dict) pair or None"
+            )
         if shown_text is None:
             shown_text = self._text() if self._text else render(values)
         return Feedback(shown_text, {str(k): v for k, v in values.items()})
@@ -114,15 +128,22 @@ class ObjectEnvironment(_CallEnvironment):
     (``accepted=False``, the message as ``reason``); any other exception propagates.
     """
 
-    def __init__(self, obj: Any, actions: Sequence[str] | None = None,
-                 reset: str | None = "reset", text: Callable[[Any], str] | None = None,
-                 refusals: Refusals = ()) -> None:
+    def __init__(
+        self,
+        obj: Any,
+        actions: Sequence[str] | None = None,
+        reset: str | None = "reset",
+        text: Callable[[Any], str] | None = None,
+        refusals: Refusals = (),
+    ) -> None:
         owner = type(obj).__name__
         if isinstance(actions, str):
             raise TypeError("actions is a list of method names, not one string")
         if reset is not None and not callable(getattr(obj, reset, None)):
-            raise TypeError(f"{owner} has no method {reset!r} to start an episode; name its "
-                            "reset method with reset='...', or pass reset=None")
+            raise TypeError(
+                f"{owner} has no method {reset!r} to start an episode; name its "
+                "reset method with reset='...', or pass reset=None"
+            )
         names = list(actions) if actions is not None else _public_methods(obj, reset)
         calls: dict[str, Callable[[float | None], Any]] = {}
         for name in names:
@@ -135,8 +156,13 @@ class ObjectEnvironment(_CallEnvironment):
                 raise ValueError(f"{owner} has no method {name!r}{hint}")
             calls[name] = _timed(method)
         self.obj = obj
-        super().__init__(owner, calls, getattr(obj, reset) if reset is not None else None,
-                         (lambda: text(obj)) if text is not None else None, tuple(refusals))
+        super().__init__(
+            owner,
+            calls,
+            getattr(obj, reset) if reset is not None else None,
+            (lambda: text(obj)) if text is not None else None,
+            tuple(refusals),
+        )
 
 
 class FunctionEnvironment(_CallEnvironment):
@@ -144,8 +170,13 @@ class FunctionEnvironment(_CallEnvironment):
     ``seconds``) as an :class:`Environment`; its results are read as
     :class:`ObjectEnvironment` reads a method's."""
 
-    def __init__(self, step_fn: Callable[..., Any], actions: Sequence[str],
-                 reset_fn: Callable[[], Any] | None = None, refusals: Refusals = ()) -> None:
+    def __init__(
+        self,
+        step_fn: Callable[..., Any],
+        actions: Sequence[str],
+        reset_fn: Callable[[], Any] | None = None,
+        refusals: Refusals = (),
+    ) -> None:
         if isinstance(actions, str):
             raise TypeError("actions is a list of action names, not one string")
         if len(set(actions)) != len(actions):
@@ -161,8 +192,9 @@ class FunctionEnvironment(_CallEnvironment):
             return run
 
         owner = getattr(step_fn, "__name__", "step function")
-        super().__init__(owner, {name: call(name) for name in actions}, reset_fn, None,
-                         tuple(refusals))
+        super().__init__(
+            owner, {name: call(name) for name in actions}, reset_fn, None, tuple(refusals)
+        )
 
 
 def _public_methods(obj: Any, reset: str | None) -> list[str]:
@@ -170,8 +202,12 @@ def _public_methods(obj: Any, reset: str | None) -> list[str]:
     names: dict[str, None] = {}
     for cls in type(obj).__mro__[:-1]:
         for name, attr in vars(cls).items():
-            if (not name.startswith("_") and name != reset and name not in names
-                    and (inspect.isfunction(attr) or isinstance(attr, staticmethod | classmethod))):
+            if (
+                not name.startswith("_")
+                and name != reset
+                and name not in names
+                and (inspect.isfunction(attr) or isinstance(attr, staticmethod | classmethod))
+            ):
                 names[name] = None
     return list(names)
 

@@ -54,24 +54,28 @@ def parse_belief(spec: str) -> BeliefSpec:
     if text == "true":
         return BeliefSpec("true")
     if text == "read":
-        raise BeliefError("belief 'read' (a model read from the manual) is not available yet: "
-                          "the manual reader lands with the reading issue; use 'true' or "
-                          "'faulty:RATE'")
+        raise BeliefError(
+            "belief 'read' (a model read from the manual) is not available yet: "
+            "the manual reader lands with the reading issue; use 'true' or "
+            "'faulty:RATE'"
+        )
     kind, sep, rate_text = text.partition(":")
     if kind == "faulty" and sep:
         try:
             rate = float(rate_text)
         except ValueError:
-            raise BeliefError(f"belief {spec!r}: {rate_text!r} is not a number; "
-                              f"accepted: {ACCEPTED_FORMS}") from None
+            raise BeliefError(
+                f"belief {spec!r}: {rate_text!r} is not a number; accepted: {ACCEPTED_FORMS}"
+            ) from None
         if not math.isfinite(rate) or not 0.0 <= rate <= 1.0:
             raise BeliefError(f"belief {spec!r}: the rate must be between 0 and 1")
         return BeliefSpec("faulty", rate)
     raise BeliefError(f"unknown belief {spec!r}; accepted: {ACCEPTED_FORMS}")
 
 
-def belief_model(appliance: SuiteAppliance, belief: str | BeliefSpec,
-                 seed: int) -> tuple[ApplianceModel, list[str]]:
+def belief_model(
+    appliance: SuiteAppliance, belief: str | BeliefSpec, seed: int
+) -> tuple[ApplianceModel, list[str]]:
     """The model a method is given for ``appliance``, and the faults injected into it (readable).
 
     Faults are seeded by ``"{seed}/{appliance id}"``: the same run gives the same faults in

@@ -60,14 +60,21 @@ def _check(rates: Sequence[float], methods: Sequence[str], seeds: Sequence[int])
 
     unknown = [m for m in methods if m not in known()]
     if unknown:
-        raise ValueError(f"unknown method(s) {', '.join(unknown)}; known: "
-                         f"{', '.join(known())}")
+        raise ValueError(f"unknown method(s) {', '.join(unknown)}; known: {', '.join(known())}")
 
 
-def run_fault_study(rates: Sequence[float], methods: Sequence[str] = DEFAULT_METHODS,
-                    seeds: Sequence[int] = (0,), *, out: Path, workers: int | None = None,
-                    sample: int | None = None, progress: bool = True, suite: str = "bundled",
-                    appliances: list[str] | None = None) -> dict[str, Any]:
+def run_fault_study(
+    rates: Sequence[float],
+    methods: Sequence[str] = DEFAULT_METHODS,
+    seeds: Sequence[int] = (0,),
+    *,
+    out: Path,
+    workers: int | None = None,
+    sample: int | None = None,
+    progress: bool = True,
+    suite: str = "bundled",
+    appliances: list[str] | None = None,
+) -> dict[str, Any]:
     """Run the study (resuming what is done), write the JSON and the plot, return the JSON.
 
     Rates are run and reported in increasing order. ``sample``: only the first N tasks of each
@@ -86,10 +93,19 @@ def run_fault_study(rates: Sequence[float], methods: Sequence[str] = DEFAULT_MET
                 from rich.console import Console
 
                 Console(stderr=True).print(f"[bold]fault rate {rate:g}, seed {seed}[/bold]")
-            outcome = run_benchmark(BenchOptions(
-                suite=suite, methods=methods, appliances=appliances, sample=sample,
-                workers=workers or os.cpu_count() or 1, out=run_directory(out, rate, seed),
-                belief=f"faulty:{rate:g}", seed=seed), progress=progress)
+            outcome = run_benchmark(
+                BenchOptions(
+                    suite=suite,
+                    methods=methods,
+                    appliances=appliances,
+                    sample=sample,
+                    workers=workers or os.cpu_count() or 1,
+                    out=run_directory(out, rate, seed),
+                    belief=f"faulty:{rate:g}",
+                    seed=seed,
+                ),
+                progress=progress,
+            )
             if outcome.interrupted:
                 raise FaultStudyInterrupted(f"interrupted at fault rate {rate:g}, seed {seed}")
             summaries[rate, seed] = outcome.summary
@@ -100,8 +116,12 @@ def run_fault_study(rates: Sequence[float], methods: Sequence[str] = DEFAULT_MET
     return study
 
 
-def average(summaries: dict[tuple[float, int], dict[str, Any]], rates: Sequence[float],
-            seeds: Sequence[int], methods: Sequence[str]) -> dict[str, Any]:
+def average(
+    summaries: dict[tuple[float, int], dict[str, Any]],
+    rates: Sequence[float],
+    seeds: Sequence[int],
+    methods: Sequence[str],
+) -> dict[str, Any]:
     """The study's figures: each run summary's ``overall`` figures, averaged over the seeds.
 
     Seeds weigh equally (each is one draw of faulty models over the same tasks).
@@ -110,8 +130,11 @@ def average(summaries: dict[tuple[float, int], dict[str, Any]], rates: Sequence[
     for method in methods:
         columns: dict[str, list[Any]] = {name: [] for name in (*FIGURES, "n")}
         for rate in rates:
-            runs = [summaries[rate, seed]["methods"][method]["overall"] for seed in seeds
-                    if method in summaries.get((rate, seed), {}).get("methods", {})]
+            runs = [
+                summaries[rate, seed]["methods"][method]["overall"]
+                for seed in seeds
+                if method in summaries.get((rate, seed), {}).get("methods", {})
+            ]
             runs = [r for r in runs if r.get("n", 0) > 0]
             for name in FIGURES:
                 columns[name].append(round(fmean(r[name] for r in runs), 6) if runs else None)
@@ -146,7 +169,9 @@ def study_rows(study: dict[str, Any]) -> list[list[str]]:
     for method, columns in study["methods"].items():
         for i, rate in enumerate(study["rates"]):
             cells = [columns[name][i] for name in FIGURES]
-            shown = ["–" if v is None else f"{v:.3f}" if name in ("sr", "spl") else f"{v:.1f}"
-                     for name, v in zip(FIGURES, cells, strict=True)]
+            shown = [
+                "–" if v is None else f"{v:.3f}" if name in ("sr", "spl") else f"{v:.1f}"
+                for name, v in zip(FIGURES, cells, strict=True)
+            ]
             rows.append([method, f"{rate:g}", *shown, str(columns["n"][i])])
     return rows

@@ -117,9 +117,13 @@ def _directional(effect: Any) -> bool:
 
 def _adjusting_steps(model: ApplianceModel, name: str) -> list[tuple[str, int]]:
     """Steps that move ``name`` up or down (next, prev, add): where direction and wrap matter."""
-    return [(feature, i) for feature, steps in model.features.items()
-            for i, step in enumerate(steps) if step.variable == name
-            and any(_directional(default_effect(step, a, model)) for a in step.actions)]
+    return [
+        (feature, i)
+        for feature, steps in model.features.items()
+        for i, step in enumerate(steps)
+        if step.variable == name
+        and any(_directional(default_effect(step, a, model)) for a in step.actions)
+    ]
 
 
 def _plain(effect: Any) -> Any:
@@ -132,8 +136,10 @@ def _plain(effect: Any) -> Any:
 def _magnitudes(var: Data, spec: Data) -> tuple[list[tuple[Decimal, Decimal, Decimal]], Decimal]:
     """The ranges as exact numbers (seconds for a time) and the initial value's magnitude."""
     if var["type"] == "time":
-        ranges = [(Decimal(parse_hms(a)), Decimal(parse_hms(b)), Decimal(time_step_seconds(s)))
-                  for a, b, s in spec["ranges"]]
+        ranges = [
+            (Decimal(parse_hms(a)), Decimal(parse_hms(b)), Decimal(time_step_seconds(s)))
+            for a, b, s in spec["ranges"]
+        ]
         initial = spec.get("initial")
         return ranges, Decimal(parse_hms(initial)) if initial is not None else ranges[0][0]
     ranges = [(Decimal(str(a)), Decimal(str(b)), Decimal(str(s))) for a, b, s in spec["ranges"]]
@@ -196,14 +202,21 @@ def step_size(model: ApplianceModel, name: str, rng: random.Random) -> Candidate
                 end = a + ((b - a) // new_step) * new_step
                 if end == a and b > a and r == len(ranges) - 1:
                     end = a + new_step  # keep at least two values in the range
-                changed = [*ranges[:r], (a, end, new_step), *ranges[r + 1:]]
+                changed = [*ranges[:r], (a, end, new_step), *ranges[r + 1 :]]
                 if not _holds(changed, initial):
                     continue
                 data = copy.deepcopy(original)
                 _write_ranges(var, _spec(data, name, case), changed)
                 where = f" of range {r + 1}" if len(ranges) > 1 else ""
-                yield data, Fault("step_size", name, f"step{where} {_show(var, s, True)} → "
-                                  f"{_show(var, new_step, True)}{_where(var, case)}")
+                yield (
+                    data,
+                    Fault(
+                        "step_size",
+                        name,
+                        f"step{where} {_show(var, s, True)} → "
+                        f"{_show(var, new_step, True)}{_where(var, case)}",
+                    ),
+                )
 
 
 def range_end(model: ApplianceModel, name: str, rng: random.Random) -> Candidates:
@@ -228,8 +241,15 @@ def range_end(model: ApplianceModel, name: str, rng: random.Random) -> Candidate
             data = copy.deepcopy(original)
             _write_ranges(var, _spec(data, name, case), changed)
             word = "too low" if end < b else "too high"
-            yield data, Fault("range_end", name, f"ends at {_show(var, end)} instead of "
-                              f"{_show(var, b)} ({word}){_where(var, case)}")
+            yield (
+                data,
+                Fault(
+                    "range_end",
+                    name,
+                    f"ends at {_show(var, end)} instead of "
+                    f"{_show(var, b)} ({word}){_where(var, case)}",
+                ),
+            )
 
 
 def missing_value(model: ApplianceModel, name: str, rng: random.Random) -> Candidates:
@@ -239,8 +259,12 @@ def missing_value(model: ApplianceModel, name: str, rng: random.Random) -> Candi
     var = original["variables"][name]
     if var["type"] != "discrete":
         return
-    selects = {key for other in original["variables"].values()
-               if other.get("depends_on") == name for key in other.get("cases", {})}
+    selects = {
+        key
+        for other in original["variables"].values()
+        if other.get("depends_on") == name
+        for key in other.get("cases", {})
+    }
     for case in _case_keys(var, rng):
         spec = _peek(original, name, case)
         values = list(spec["values"])
@@ -253,8 +277,14 @@ def missing_value(model: ApplianceModel, name: str, rng: random.Random) -> Candi
             target = _spec(data, name, case)
             target["values"] = [v for v in values if v != value]
             target["initial"] = initial
-            yield data, Fault("missing_value", name, f"{value!r} is missing from the values"
-                              f"{_where(var, case)}")
+            yield (
+                data,
+                Fault(
+                    "missing_value",
+                    name,
+                    f"{value!r} is missing from the values{_where(var, case)}",
+                ),
+            )
 
 
 _NUMBERED = re.compile(r"^(\D*?)(\d+(?:\.\d+)?)(\D*)$")
@@ -287,8 +317,9 @@ def _new_value(values: list[str], rng: random.Random) -> tuple[str, int] | None:
                 continue
             text = f"{number:.{decimals}f}".zfill(width)
             proposals.append((f"{prefix}{text}{suffix}", index))
-    names = [i for i, v in enumerate(values) if v.lower() not in _NOT_A_NAME
-             and not _NUMBERED.match(v)]
+    names = [
+        i for i, v in enumerate(values) if v.lower() not in _NOT_A_NAME and not _NUMBERED.match(v)
+    ]
     if names:
         base = rng.choice(names)
         proposals.append((rng.choice(_WORD_FORMS).format(values[base]), base + 1))
@@ -313,8 +344,14 @@ def extra_value(model: ApplianceModel, name: str, rng: random.Random) -> Candida
         target = _spec(data, name, case)
         target["values"] = [*values[:index], value, *values[index:]]
         target["initial"] = spec.get("initial", values[0])
-        yield data, Fault("extra_value", name, f"{value!r} added after {values[index - 1]!r}"
-                          f"{_where(var, case)}")
+        yield (
+            data,
+            Fault(
+                "extra_value",
+                name,
+                f"{value!r} added after {values[index - 1]!r}{_where(var, case)}",
+            ),
+        )
 
 
 def value_order(model: ApplianceModel, name: str, rng: random.Random) -> Candidates:
@@ -329,7 +366,7 @@ def value_order(model: ApplianceModel, name: str, rng: random.Random) -> Candida
         if len(values) < 2:
             continue
         i = rng.randrange(len(values) - 1)
-        swapped = [*values[:i], values[i + 1], values[i], *values[i + 2:]]
+        swapped = [*values[:i], values[i + 1], values[i], *values[i + 2 :]]
         orders = [(swapped, f"{values[i]!r} and {values[i + 1]!r} swapped")]
         if len(values) >= 3:
             orders.append((values[::-1], "the list reversed"))
@@ -349,8 +386,11 @@ def wrap(model: ApplianceModel, name: str, rng: random.Random) -> Candidates:
     var = data["variables"][name]
     wraps = var.get("wrap", var["type"] == "discrete")
     var["wrap"] = not wraps
-    text = "stops at its ends instead of wrapping" if wraps else \
-        "wraps round instead of stopping at its ends"
+    text = (
+        "stops at its ends instead of wrapping"
+        if wraps
+        else "wraps round instead of stopping at its ends"
+    )
     yield data, Fault("wrap", name, text)
 
 
@@ -381,8 +421,11 @@ def effect_direction(model: ApplianceModel, name: str, rng: random.Random) -> Ca
         effects = {a: default_effect(step, a, model) for a in step.actions}
         data = _dump(model)
         data["features"][feature][index]["effect"] = {a: _reverse(e) for a, e in effects.items()}
-        changes = ", ".join(f"{a} {_effect_text(_plain(e))} → {_effect_text(_reverse(e))}"
-                            for a, e in effects.items() if _directional(e))
+        changes = ", ".join(
+            f"{a} {_effect_text(_plain(e))} → {_effect_text(_reverse(e))}"
+            for a, e in effects.items()
+            if _directional(e)
+        )
         yield data, Fault("effect_direction", name, f"features.{feature}[{index}]: {changes}")
 
 
@@ -422,18 +465,29 @@ def missing_step(model: ApplianceModel, name: str, rng: random.Random) -> Candid
         target = data["features"][name][j]
         target["actions"] = [*orphans, *target["actions"]]
         if neighbour.variable is not None or neighbour.effect is not None:
-            target["effect"] = {**{a: "none" for a in orphans},
-                                **{a: _plain(default_effect(neighbour, a, model))
-                                   for a in neighbour.actions}}
+            target["effect"] = {
+                **{a: "none" for a in orphans},
+                **{a: _plain(default_effect(neighbour, a, model)) for a in neighbour.actions},
+            }
         side = "next" if j >= i else "previous"
-        yield data, Fault("missing_step", name, f"{label}; {', '.join(orphans)} kept as a "
-                          f"no-op of the {side} step")
+        yield (
+            data,
+            Fault(
+                "missing_step",
+                name,
+                f"{label}; {', '.join(orphans)} kept as a no-op of the {side} step",
+            ),
+        )
 
 
 Kind = Callable[[ApplianceModel, str, random.Random], Candidates]
 VARIABLE_KINDS: dict[str, Kind] = {
-    "step_size": step_size, "range_end": range_end, "missing_value": missing_value,
-    "extra_value": extra_value, "value_order": value_order, "wrap": wrap,
+    "step_size": step_size,
+    "range_end": range_end,
+    "missing_value": missing_value,
+    "extra_value": extra_value,
+    "value_order": value_order,
+    "wrap": wrap,
     "effect_direction": effect_direction,
 }
 FEATURE_KINDS: dict[str, Kind] = {"missing_step": missing_step}
@@ -457,16 +511,18 @@ def fault_sites(model: ApplianceModel) -> list[tuple[str, str]]:
     for steps in model.features.values():
         for step in steps:
             if step.variable is not None and any(
-                    _directional(e) or e == "digit"
-                    for e in (default_effect(step, a, model) for a in step.actions)):
+                _directional(e) or e == "digit"
+                for e in (default_effect(step, a, model) for a in step.actions)
+            ):
                 adjusted.add(step.variable)
     variables = [("variables", n) for n in model.variables if n in adjusted and not _protected(n)]
     features = [("features", n) for n, steps in model.features.items() if len(steps) >= 2]
     return variables + features
 
 
-def inject_faults(model: ApplianceModel, rate: float,
-                  seed: str | int) -> tuple[ApplianceModel, list[Fault]]:
+def inject_faults(
+    model: ApplianceModel, rate: float, seed: str | int
+) -> tuple[ApplianceModel, list[Fault]]:
     """A valid faulty copy of ``model`` and the faults in it (see the module doc for ``rate``).
 
     The same (model, rate, seed) always gives the same faults; string seeds are deterministic

@@ -38,8 +38,9 @@ def figures(records: Sequence[TaskRecord]) -> dict[str, float | int]:
     return {
         "sr": _round(fmean(r.success for r in records)),
         "spl": _round(fmean(r.spl for r in records)),
-        "reasoning_steps": _round(fmean(min(r.reasoning_steps, MAX_REASONING_STEPS)
-                                        for r in records)),
+        "reasoning_steps": _round(
+            fmean(min(r.reasoning_steps, MAX_REASONING_STEPS) for r in records)
+        ),
         "execution_steps": _round(fmean(r.execution_steps for r in records)),
         "n": len(records),
     }
@@ -62,8 +63,12 @@ def chi_square_p(a: Sequence[bool], b: Sequence[bool]) -> float:
     from scipy.stats import chi2_contingency
 
     table = [[sum(a), len(a) - sum(a)], [sum(b), len(b) - sum(b)]]
-    if table[0] == table[1] or 0 in (sum(table[0]), sum(table[1]),
-                                     table[0][0] + table[1][0], table[0][1] + table[1][1]):
+    if table[0] == table[1] or 0 in (
+        sum(table[0]),
+        sum(table[1]),
+        table[0][0] + table[1][0],
+        table[0][1] + table[1][1],
+    ):
         return 1.0
     return float(f"{chi2_contingency(table).pvalue:.6g}")
 
@@ -79,7 +84,7 @@ def pvalues(by_method: dict[str, list[TaskRecord]]) -> dict[str, dict[str, float
     matrix: dict[str, dict[str, float]] = {m: {} for m in names}
     for i, a in enumerate(names):
         matrix[a][a] = 1.0
-        for b in names[i + 1:]:
+        for b in names[i + 1 :]:
             shared = sorted(outcomes[a].keys() & outcomes[b].keys())
             p = chi_square_p([outcomes[a][t] for t in shared], [outcomes[b][t] for t in shared])
             matrix[a][b] = matrix[b][a] = p
@@ -110,6 +115,11 @@ def summarise(records: Iterable[TaskRecord], belief: str | None = None) -> dict[
         }
         goal_variables[method] = {
             str(n): {"sr": _round(fmean(r.success for r in sizes[n])), "n": len(sizes[n])}
-            for n in sorted(sizes)}
-    return {"belief": belief, "methods": methods, "goal_variables": goal_variables,
-            "pvalues": pvalues(dict(by_method))}
+            for n in sorted(sizes)
+        }
+    return {
+        "belief": belief,
+        "methods": methods,
+        "goal_variables": goal_variables,
+        "pvalues": pvalues(dict(by_method)),
+    }

@@ -38,15 +38,30 @@ def run_task(appliance: SuiteAppliance, task: Task) -> OracleResult:
         goal = parse_goal(appliance.model, task.goal)
         found = plan(appliance.model, None, goal)
     except (Unreachable, ValueError) as exc:
-        return OracleResult(appliance.id, appliance.category, task.id, False, 0, 0,
-                            (time.perf_counter() - started) * 1000, str(exc))
+        return OracleResult(
+            appliance.id,
+            appliance.category,
+            task.id,
+            False,
+            0,
+            0,
+            (time.perf_counter() - started) * 1000,
+            str(exc),
+        )
     planning_ms = (time.perf_counter() - started) * 1000
     simulator = Simulator(appliance.model)
     refused = [a.name for a in found.actions if not simulator.step(a.name, a.seconds).accepted]
     success = not refused and simulator.satisfies(goal)
-    return OracleResult(appliance.id, appliance.category, task.id, success, len(found),
-                        len(found.macro_actions), planning_ms,
-                        f"refused: {refused}" if refused else "")
+    return OracleResult(
+        appliance.id,
+        appliance.category,
+        task.id,
+        success,
+        len(found),
+        len(found.macro_actions),
+        planning_ms,
+        f"refused: {refused}" if refused else "",
+    )
 
 
 def run_oracle(suite: Suite) -> list[OracleResult]:

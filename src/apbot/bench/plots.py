@@ -25,8 +25,14 @@ def png_bytes(figure: Figure) -> bytes:
     """The figure as a PNG, without the version/date metadata that would make it vary."""
     FigureCanvasAgg(figure)
     buffer = io.BytesIO()
-    figure.savefig(buffer, format="png", dpi=_DPI, bbox_inches="tight", pad_inches=0.1,
-                   metadata={"Software": None})
+    figure.savefig(
+        buffer,
+        format="png",
+        dpi=_DPI,
+        bbox_inches="tight",
+        pad_inches=0.1,
+        metadata={"Software": None},
+    )
     return buffer.getvalue()
 
 
@@ -44,24 +50,43 @@ def format_p(p: float) -> str:
 def overview_figure(methods: Sequence[str], overall: Mapping[str, Mapping[str, float]]) -> Figure:
     """SR, SPL and the two step counts per method: the paper's overall-performance panels."""
     figure = Figure(figsize=(10, 3.2), layout="constrained")
-    panels = [("sr", "Success rate", (0, 1.05)), ("spl", "SPL", (0, 1.05)),
-              ("steps", "Average steps", None)]
+    panels = [
+        ("sr", "Success rate", (0, 1.05)),
+        ("spl", "SPL", (0, 1.05)),
+        ("steps", "Average steps", None),
+    ]
     axes = figure.subplots(1, len(panels))
     positions = list(range(len(methods)))
     for ax, (key, title, limits) in zip(axes, panels, strict=True):
         if key == "steps":
             width = 0.4
-            for offset, field, label in ((-width / 2, "reasoning_steps", "reasoning"),
-                                         (width / 2, "execution_steps", "execution")):
-                ax.bar([p + offset for p in positions],
-                       [overall[m].get(field, 0.0) for m in methods], width, label=label)
-            highest = max((overall[m].get(f, 0.0) for m in methods
-                           for f in ("reasoning_steps", "execution_steps")), default=0.0)
+            for offset, field, label in (
+                (-width / 2, "reasoning_steps", "reasoning"),
+                (width / 2, "execution_steps", "execution"),
+            ):
+                ax.bar(
+                    [p + offset for p in positions],
+                    [overall[m].get(field, 0.0) for m in methods],
+                    width,
+                    label=label,
+                )
+            highest = max(
+                (
+                    overall[m].get(f, 0.0)
+                    for m in methods
+                    for f in ("reasoning_steps", "execution_steps")
+                ),
+                default=0.0,
+            )
             ax.set_ylim(0, max(highest, 1.0) * 1.3)  # room for the legend above the bars
             ax.legend(fontsize=8, loc="upper left", ncol=2)
         else:
-            ax.bar(positions, [overall[m].get(key, 0.0) for m in methods], 0.6,
-                   color=[f"C{i % 10}" for i in positions])
+            ax.bar(
+                positions,
+                [overall[m].get(key, 0.0) for m in methods],
+                0.6,
+                color=[f"C{i % 10}" for i in positions],
+            )
         ax.set_title(title, fontsize=10)
         _method_ticks(ax, methods)
         if limits:
@@ -91,16 +116,18 @@ def pvalue_figure(methods: Sequence[str], pvalues: Mapping[str, Mapping[str, flo
                 text = format_p(p) + ("*" if star else "")
                 weight = "bold" if star else "normal"
                 colour = "white" if max(p, P_FLOOR) < 1e-3 else "black"
-            ax.text(j, i, text, ha="center", va="center", fontsize=8, fontweight=weight,
-                    color=colour)
+            ax.text(
+                j, i, text, ha="center", va="center", fontsize=8, fontweight=weight, color=colour
+            )
     ax.set_xticks(range(len(methods)), list(methods), rotation=30, ha="right", fontsize=8)
     ax.set_yticks(range(len(methods)), list(methods), fontsize=8)
     ax.set_title("χ² test p-values (* p < 0.05)", fontsize=10)
     return figure
 
 
-def goal_variables_figure(methods: Sequence[str],
-                          by_count: Mapping[str, Mapping[str, Mapping[str, float]]]) -> Figure:
+def goal_variables_figure(
+    methods: Sequence[str], by_count: Mapping[str, Mapping[str, Mapping[str, float]]]
+) -> Figure:
     """Success rate against the number of variables a task sets, one line per method."""
     figure = Figure(figsize=(5.5, 3.5), layout="constrained")
     ax = figure.subplots()
@@ -119,15 +146,15 @@ def goal_variables_figure(methods: Sequence[str],
     return figure
 
 
-def fault_study_figure(rates: Sequence[float],
-                       methods: Mapping[str, Mapping[str, Sequence[float]]]) -> Figure:
+def fault_study_figure(
+    rates: Sequence[float], methods: Mapping[str, Mapping[str, Sequence[float]]]
+) -> Figure:
     """SR and SPL against the rate of injected model faults, one line per method."""
     figure = Figure(figsize=(9, 3.3), layout="constrained")
     axes = figure.subplots(1, 2)
     for ax, key, title in zip(axes, ("sr", "spl"), ("Success rate", "SPL"), strict=True):
         for index, (method, series) in enumerate(methods.items()):
-            ax.plot(list(rates), list(series.get(key, [])), label=method,
-                    **_line_style(index))
+            ax.plot(list(rates), list(series.get(key, [])), label=method, **_line_style(index))
         ax.set_title(title, fontsize=10)
         ax.set_xlabel("fault rate")
         ax.set_ylim(-0.03, 1.05)
@@ -139,9 +166,12 @@ def fault_study_figure(rates: Sequence[float],
 def _line_style(index: int) -> dict[str, object]:
     """Distinct colour, marker, dash and shrinking marker size: methods with identical
     results draw on top of each other and must stay visible."""
-    return {"color": f"C{index % 10}", "marker": "osD^v<>"[index % 7],
-            "markersize": max(4.0, 10.0 - 1.5 * index),
-            "linestyle": ("-", "--", "-.", ":")[index % 4]}
+    return {
+        "color": f"C{index % 10}",
+        "marker": "osD^v<>"[index % 7],
+        "markersize": max(4.0, 10.0 - 1.5 * index),
+        "linestyle": ("-", "--", "-.", ":")[index % 4],
+    }
 
 
 def _method_ticks(ax: Axes, methods: Sequence[str]) -> None:

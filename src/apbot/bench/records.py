@@ -30,8 +30,10 @@ class TaskRecord(BaseModel):
     instruction: str
     goal: dict[str, Any]
     goal_variables: int
-    success: bool = Field(description="the goal holds in the true final state and the run "
-                                      "stayed within the reasoning-step limit")
+    success: bool = Field(
+        description="the goal holds in the true final state and the run "
+        "stayed within the reasoning-step limit"
+    )
     claimed_success: bool
     reasoning_steps: int
     execution_steps: int
@@ -40,8 +42,9 @@ class TaskRecord(BaseModel):
     failure: str = ""
     repairs: list[str] = Field(default_factory=list)
     faults: list[str] = Field(default_factory=list, description="faults injected in the belief")
-    final_values: dict[str, Any] = Field(default_factory=dict,
-                                         description="true final values of the goal variables")
+    final_values: dict[str, Any] = Field(
+        default_factory=dict, description="true final values of the goal variables"
+    )
     trace: list[dict[str, Any]] = Field(default_factory=list)
     timings: dict[str, float] = Field(default_factory=dict)
     llm_usage: dict[str, int] = Field(default_factory=dict)

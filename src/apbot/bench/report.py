@@ -107,8 +107,10 @@ class FaultStudy(_Loose):
             for key in ("sr", "spl"):
                 values = getattr(series, key)
                 if len(values) != len(self.rates):
-                    raise ValueError(f"methods.{method}.{key} has {len(values)} values for "
-                                     f"{len(self.rates)} rates")
+                    raise ValueError(
+                        f"methods.{method}.{key} has {len(values)} values for "
+                        f"{len(self.rates)} rates"
+                    )
         return self
 
 
@@ -137,8 +139,10 @@ def load_run(directory: Path) -> RunData:
         raise ReportError(f"{directory}: no such run directory")
     summary_path = directory / SUMMARY_FILE
     if not summary_path.exists():
-        raise ReportError(f"{summary_path}: not found; run `apbot bench --out {directory}` "
-                          "first (it writes summary.json)")
+        raise ReportError(
+            f"{summary_path}: not found; run `apbot bench --out {directory}` "
+            "first (it writes summary.json)"
+        )
     summary = _parse(summary_path, Summary)
     study_path = directory / FAULT_FILE
     fault_study = _parse(study_path, FaultStudy) if study_path.exists() else None
@@ -153,9 +157,17 @@ def load_run(directory: Path) -> RunData:
     methods += sorted({r.method for r in records} - set(methods))
     rank = {m: i for i, m in enumerate(methods)}
     records.sort(key=lambda r: (rank[r.method], r.appliance, r.task, r.key))
-    return RunData(directory, summary, records, run, fault_study, methods,
-                   _category_order(summary), _run_date(directory, run),
-                   _reference_methods(methods))
+    return RunData(
+        directory,
+        summary,
+        records,
+        run,
+        fault_study,
+        methods,
+        _category_order(summary),
+        _run_date(directory, run),
+        _reference_methods(methods),
+    )
 
 
 def _read_json(path: Path) -> Any:
@@ -174,15 +186,19 @@ def _parse(path: Path, kind: type[_M]) -> _M:
     except ValidationError as exc:
         error = exc.errors()[0]
         where = ".".join(str(part) for part in error["loc"]) or "top level"
-        raise ReportError(f"{path}: {where}: {error['msg']}; rewrite it with "
-                          "`apbot bench` (or the fault study)") from None
+        raise ReportError(
+            f"{path}: {where}: {error['msg']}; rewrite it with `apbot bench` (or the fault study)"
+        ) from None
 
 
 def _method_order(summary: Summary, run: Mapping[str, Any]) -> list[str]:
     """The run's method order (run.json) where known, then the rest as summary.json lists them."""
     listed = run.get("methods")
-    first = [m for m in listed if isinstance(m, str) and m in summary.methods] \
-        if isinstance(listed, list) else []
+    first = (
+        [m for m in listed if isinstance(m, str) and m in summary.methods]
+        if isinstance(listed, list)
+        else []
+    )
     return list(dict.fromkeys(first + list(summary.methods)))
 
 
@@ -249,8 +265,10 @@ READING_GUIDE = (
     "success that needed twice the presses counts half and a failure counts zero."
 )
 
-TABLE_NOTE = ("Categories are ordered by the number of variables a task sets. Best per column "
-              "in bold (highest rate, then fewest steps).")
+TABLE_NOTE = (
+    "Categories are ordered by the number of variables a task sets. Best per column "
+    "in bold (highest rate, then fewest steps)."
+)
 REFERENCE_NOTE = " † uses the ground-truth model: a reference, not ranked."
 
 _SR_TABLE = ("sr", "reasoning_steps")
@@ -324,7 +342,7 @@ def failure_reason(record: TaskRecord) -> str:
     else:
         reason = "stopped without reaching the goal"
     reason = " ".join(reason.split())
-    return reason if len(reason) <= REASON_CHARS else reason[:REASON_CHARS - 1] + "…"
+    return reason if len(reason) <= REASON_CHARS else reason[: REASON_CHARS - 1] + "…"
 
 
 def value_text(value: Any) -> str:
@@ -365,25 +383,39 @@ def make_figures(data: RunData) -> dict[str, ReportFigure]:
     figures = {}
     if methods:
         overall = {m: summary.methods[m].overall.model_dump() for m in methods}
-        figures["overview"] = ReportFigure("overview.png", "Overall performance",
-                                     plots.png_bytes(plots.overview_figure(methods, overall)))
+        figures["overview"] = ReportFigure(
+            "overview.png",
+            "Overall performance",
+            plots.png_bytes(plots.overview_figure(methods, overall)),
+        )
     if len(methods) > 1 and summary.pvalues:
-        figures["pvalues"] = ReportFigure("pvalues.png", "χ² p-values between methods",
-                                    plots.png_bytes(plots.pvalue_figure(methods,
-                                                                        summary.pvalues)))
+        figures["pvalues"] = ReportFigure(
+            "pvalues.png",
+            "χ² p-values between methods",
+            plots.png_bytes(plots.pvalue_figure(methods, summary.pvalues)),
+        )
     with_counts = [m for m in methods if summary.goal_variables.get(m)]
     if with_counts:
-        points = {m: {k: p.model_dump() for k, p in summary.goal_variables[m].items()}
-                  for m in with_counts}
+        points = {
+            m: {k: p.model_dump() for k, p in summary.goal_variables[m].items()}
+            for m in with_counts
+        }
         figures["goal_variables"] = ReportFigure(
-            "goal_variables.png", "Success rate vs number of goal variables",
-            plots.png_bytes(plots.goal_variables_figure(with_counts, points)))
+            "goal_variables.png",
+            "Success rate vs number of goal variables",
+            plots.png_bytes(plots.goal_variables_figure(with_counts, points)),
+        )
     if data.fault_study is not None and data.fault_study.methods:
         study = data.fault_study
         figures["fault_study"] = ReportFigure(
-            "fault_study.png", "SR and SPL vs fault rate",
-            plots.png_bytes(plots.fault_study_figure(
-                study.rates, {m: s.model_dump() for m, s in study.methods.items()})))
+            "fault_study.png",
+            "SR and SPL vs fault rate",
+            plots.png_bytes(
+                plots.fault_study_figure(
+                    study.rates, {m: s.model_dump() for m, s in study.methods.items()}
+                )
+            ),
+        )
     return figures
 
 
@@ -402,8 +434,10 @@ def md_text(text: Any) -> str:
 
 
 def _md_table(header: Sequence[str], rows: Sequence[Sequence[tuple[str, bool]]]) -> list[str]:
-    lines = ["| " + " | ".join(md_text(h) for h in header) + " |",
-             "|" + "|".join(["---"] + [":---:"] * (len(header) - 1)) + "|"]
+    lines = [
+        "| " + " | ".join(md_text(h) for h in header) + " |",
+        "|" + "|".join(["---"] + [":---:"] * (len(header) - 1)) + "|",
+    ]
     for row in rows:
         cells = [f"**{md_text(t)}**" if bold else md_text(t) for t, bold in row]
         lines.append("| " + " | ".join(cells) + " |")
@@ -444,8 +478,9 @@ def _fault_rows(study: FaultStudy) -> tuple[list[str], list[list[tuple[str, bool
     rows = []
     for method, series in study.methods.items():
         row = [(method, False)]
-        row += [(f"{sr:.2f} / {spl:.2f}", False)
-                for sr, spl in zip(series.sr, series.spl, strict=True)]
+        row += [
+            (f"{sr:.2f} / {spl:.2f}", False) for sr, spl in zip(series.sr, series.spl, strict=True)
+        ]
         rows.append(row)
     return ["Method", *(f"rate {r:g}" for r in study.rates)], rows
 
@@ -454,10 +489,13 @@ def _header_facts(data: RunData, generated: str) -> list[tuple[str, str]]:
     facts = [("Suite", str(data.run.get("suite", "unknown"))), ("Belief", _belief(data))]
     if "seed" in data.run:
         facts.append(("Seed", str(data.run["seed"])))
-    facts += [("Methods", ", ".join(data.methods) or "none"),
-              ("Tasks per method", str(_task_count(data))),
-              ("Records", str(len(data.records))),
-              ("Run", data.run_date), ("Report generated", generated)]
+    facts += [
+        ("Methods", ", ".join(data.methods) or "none"),
+        ("Tasks per method", str(_task_count(data))),
+        ("Records", str(len(data.records))),
+        ("Run", data.run_date),
+        ("Report generated", generated),
+    ]
     return facts
 
 
@@ -474,8 +512,10 @@ def _md_failures(data: RunData) -> list[str]:
         out.append("None.")
     for method, records in by_method.items():
         out += [f"### {md_text(method)}: {len(records)} failed", ""]
-        out += [f"- {md_text(r.appliance)}/{md_text(r.task)}: {md_text(failure_reason(r))}"
-                for r in records[:share]]
+        out += [
+            f"- {md_text(r.appliance)}/{md_text(r.task)}: {md_text(failure_reason(r))}"
+            for r in records[:share]
+        ]
         if len(records) > share:
             out.append(f"- … and {len(records) - share} more")
         out.append("")
@@ -484,6 +524,7 @@ def _md_failures(data: RunData) -> list[str]:
 
 def render_markdown(data: RunData, figures: Mapping[str, ReportFigure], generated: str) -> str:
     """The report as Markdown; figures are linked from ``figures/``."""
+
     def image(key: str) -> list[str]:
         if key not in figures:
             return []
@@ -499,15 +540,24 @@ def render_markdown(data: RunData, figures: Mapping[str, ReportFigure], generate
     out += [TABLE_NOTE + (REFERENCE_NOTE if data.reference else ""), ""]
     out += image("overview")
     if "pvalues" in figures:
-        out += ["## Pairwise χ² tests", "", "p-values of the χ² test on success/failure "
-                "counts for each pair of methods; * and bold: p < 0.05.", ""]
+        out += [
+            "## Pairwise χ² tests",
+            "",
+            "p-values of the χ² test on success/failure "
+            "counts for each pair of methods; * and bold: p < 0.05.",
+            "",
+        ]
         out += image("pvalues") + _md_table(*_pvalue_rows(data)) + [""]
     if "goal_variables" in figures:
         out += ["## Success vs number of goal variables", ""]
         out += image("goal_variables") + _md_table(*_goal_rows(data)) + [""]
     if data.fault_study is not None and "fault_study" in figures:
-        out += ["## Fault study", "", "SR / SPL when model faults are injected into the "
-                "belief at each rate.", ""]
+        out += [
+            "## Fault study",
+            "",
+            "SR / SPL when model faults are injected into the belief at each rate.",
+            "",
+        ]
         out += image("fault_study") + _md_table(*_fault_rows(data.fault_study)) + [""]
     out += _md_failures(data)
     out += ["", "Every task's trace is in `report.html`.", ""]
@@ -536,15 +586,22 @@ tr.c td{background:#f7f7f7}tr.s td{font-weight:bold}mark{background:#f99}
 .muted{color:#666}
 """
 
-_CSP = ("default-src 'none'; img-src data:; style-src 'unsafe-inline'; "
-        "form-action 'none'; base-uri 'none'")
+_CSP = (
+    "default-src 'none'; img-src data:; style-src 'unsafe-inline'; "
+    "form-action 'none'; base-uri 'none'"
+)
 
 
 def _html_table(header: Sequence[str], rows: Sequence[Sequence[tuple[str, bool]]]) -> str:
     head = "".join(f"<th>{esc(h)}</th>" for h in header)
-    body = "".join("<tr>" + "".join(f'<td class="b">{esc(t)}</td>' if bold else
-                                    f"<td>{esc(t)}</td>" for t, bold in row) + "</tr>"
-                   for row in rows)
+    body = "".join(
+        "<tr>"
+        + "".join(
+            f'<td class="b">{esc(t)}</td>' if bold else f"<td>{esc(t)}</td>" for t, bold in row
+        )
+        + "</tr>"
+        for row in rows
+    )
     return f'<table class="num"><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>'
 
 
@@ -568,8 +625,10 @@ def _event_row(event: Mapping[str, Any]) -> str:
         shown = esc(_shown(event)) or '<span class="muted">(blank)</span>'
         refused = ' <span class="bad">refused</span>' if event.get("accepted") is False else ""
         if event.get("exploring"):
-            return f'<tr class="x"><td>{step}<td>explore<td>{esc(event.get("action"))}' \
-                   f"<td>{shown}{refused}"
+            return (
+                f'<tr class="x"><td>{step}<td>explore<td>{esc(event.get("action"))}'
+                f"<td>{shown}{refused}"
+            )
         return f"<tr><td>{step}<td><td>{esc(event.get('action'))}<td>{shown}{refused}"
     if kind == "check":
         return f'<tr class="c"><td>{step}<td>check<td>{_check_text(text, expected, values)}'
@@ -580,7 +639,7 @@ def _event_row(event: Mapping[str, Any]) -> str:
         return f'<tr class="x"><td>{step}<td>explored<td colspan="2">{text}'
     if kind == "stop":
         return f'<tr class="s"><td>{step}<td>stop<td colspan="2">{text}'
-    return f"<tr><td>{step}<td>{esc(kind)}<td colspan=\"2\">{text}"
+    return f'<tr><td>{step}<td>{esc(kind)}<td colspan="2">{text}'
 
 
 def _check_text(verdict: str, expected: Mapping[str, Any], observed: Mapping[str, Any]) -> str:
@@ -588,12 +647,17 @@ def _check_text(verdict: str, expected: Mapping[str, Any], observed: Mapping[str
     parts = []
     for name, want in expected.items():
         if name in observed and observed[name] != want:
-            parts.append(f"<mark>{esc(name)}: expected {esc(value_text(want))}, observed "
-                         f"{esc(value_text(observed[name]))}</mark>")
+            parts.append(
+                f"<mark>{esc(name)}: expected {esc(value_text(want))}, observed "
+                f"{esc(value_text(observed[name]))}</mark>"
+            )
         else:
             parts.append(f"{esc(name)}={esc(value_text(want))}")
-    parts += [f"<mark>{esc(name)}: observed {esc(value_text(v))}</mark>"
-              for name, v in observed.items() if name not in expected]
+    parts += [
+        f"<mark>{esc(name)}: observed {esc(value_text(v))}</mark>"
+        for name, v in observed.items()
+        if name not in expected
+    ]
     css = "ok" if verdict == "ok" else "bad"
     return f'<span class="{css}">{verdict}</span><td>{"; ".join(parts)}'
 
@@ -615,13 +679,18 @@ def _explore_row(events: Sequence[Mapping[str, Any]]) -> str:
     """A run of exploration presses of one action as one row: the displays in order."""
     shown = [_shown(e) or "(blank)" for e in events]
     if len(shown) > 2 * EXPLORE_SHOWN:
-        shown = [*shown[:EXPLORE_SHOWN], f"… {len(shown) - 2 * EXPLORE_SHOWN} more …",
-                 *shown[-EXPLORE_SHOWN:]]
+        shown = [
+            *shown[:EXPLORE_SHOWN],
+            f"… {len(shown) - 2 * EXPLORE_SHOWN} more …",
+            *shown[-EXPLORE_SHOWN:],
+        ]
     refused = sum(e.get("accepted") is False for e in events)
     note = f' <span class="bad">{refused} refused</span>' if refused else ""
     first = events[0]
-    return (f'<tr class="x"><td>{esc(first.get("step", ""))}<td>explore'
-            f'<td>{esc(first.get("action"))} ×{len(events)}<td>{esc(" → ".join(shown))}{note}')
+    return (
+        f'<tr class="x"><td>{esc(first.get("step", ""))}<td>explore'
+        f"<td>{esc(first.get('action'))} ×{len(events)}<td>{esc(' → '.join(shown))}{note}"
+    )
 
 
 Row = list[Mapping[str, Any]]  # the events shown in one row of a trace table
@@ -635,8 +704,13 @@ def _trace_rows(trace: Sequence[Mapping[str, Any]]) -> list[Row]:
     for event in trace:
         exploring = event.get("kind") == "action" and bool(event.get("exploring"))
         last = rows[-1][0] if rows else {}
-        if exploring and last.get("kind") == "action" and last.get("exploring") and \
-                event.get("action") == last.get("action") and event.get("step") == last.get("step"):
+        if (
+            exploring
+            and last.get("kind") == "action"
+            and last.get("exploring")
+            and event.get("action") == last.get("action")
+            and event.get("step") == last.get("step")
+        ):
             rows[-1].append(event)
         else:
             rows.append([event])
@@ -650,6 +724,7 @@ def _render_row(row: Row) -> str:
 def _row_limit(records: Sequence[TaskRecord], rows: Mapping[str, list[Row]]) -> int:
     """Rows kept per failed task (successes keep half): :data:`TRACE_ROWS`, or fewer when the
     traces together would pass :data:`TRACE_ROW_BUDGET` and make the page too big to open."""
+
     def total(limit: int) -> int:
         return sum(min(len(rows[r.key]), _limit_for(r, limit)) for r in records)
 
@@ -670,13 +745,17 @@ def _trace_table(rows: list[Row], limit: int) -> str:
         return '<p class="muted">No trace recorded.</p>'
     if len(rows) > limit:
         head = limit * 3 // 4
-        shown = [*map(_render_row, rows[:head]),
-                 f'<tr><td colspan="4" class="muted">… {len(rows) - limit} more rows not shown …',
-                 *map(_render_row, rows[len(rows) - (limit - head):])]
+        shown = [
+            *map(_render_row, rows[:head]),
+            f'<tr><td colspan="4" class="muted">… {len(rows) - limit} more rows not shown …',
+            *map(_render_row, rows[len(rows) - (limit - head) :]),
+        ]
     else:
         shown = [_render_row(row) for row in rows]
-    return ('<table class="tr"><thead><tr><th>step<th>event<th>action / check'
-            "<th>display / detail</thead><tbody>\n" + "\n".join(shown) + "\n</tbody></table>")
+    return (
+        '<table class="tr"><thead><tr><th>step<th>event<th>action / check'
+        "<th>display / detail</thead><tbody>\n" + "\n".join(shown) + "\n</tbody></table>"
+    )
 
 
 def _task_html(record: TaskRecord, rows: list[Row], limit: int) -> str:
@@ -684,27 +763,35 @@ def _task_html(record: TaskRecord, rows: list[Row], limit: int) -> str:
     reason = failure_reason(record)
     mark = '<span class="ok">✓</span>' if ok else '<span class="bad">✗</span>'
     repaired = ' <span class="rep">repaired</span>' if record.repairs else ""
-    summary = (f"{mark} {esc(record.appliance)}/{esc(record.task)} · R {record.reasoning_steps}"
-               f" · E {record.execution_steps} (optimal {record.optimal_steps})"
-               f" · SPL {record.spl:.2f}{repaired}" + ("" if ok else f" — {esc(reason)}"))
+    summary = (
+        f"{mark} {esc(record.appliance)}/{esc(record.task)} · R {record.reasoning_steps}"
+        f" · E {record.execution_steps} (optimal {record.optimal_steps})"
+        f" · SPL {record.spl:.2f}{repaired}" + ("" if ok else f" — {esc(reason)}")
+    )
     goal_rows = "".join(
         f"<tr><td>{esc(name)}<td>{esc(value_text(want))}"
         f"<td>{esc(value_text(record.final_values[name])) if name in record.final_values else '—'}"
-        for name, want in record.goal.items())
+        for name, want in record.goal.items()
+    )
     outcome = "success" if ok else f"failure: {esc(reason)}"
-    parts = [f"<p><b>Instruction:</b> {esc(record.instruction)}</p>",
-             f'<table><thead><tr><th>variable<th>goal<th>final (true)</thead><tbody>{goal_rows}'
-             "</tbody></table>",
-             f"<p><b>Outcome:</b> {outcome} · claimed success: "
-             f"{'yes' if record.claimed_success else 'no'} · category {esc(record.category)} · "
-             f"{record.goal_variables} goal variables</p>"]
+    parts = [
+        f"<p><b>Instruction:</b> {esc(record.instruction)}</p>",
+        f"<table><thead><tr><th>variable<th>goal<th>final (true)</thead><tbody>{goal_rows}"
+        "</tbody></table>",
+        f"<p><b>Outcome:</b> {outcome} · claimed success: "
+        f"{'yes' if record.claimed_success else 'no'} · category {esc(record.category)} · "
+        f"{record.goal_variables} goal variables</p>",
+    ]
     if record.faults:
-        parts.append("<p><b>Faults injected:</b> " + "; ".join(esc(f) for f in record.faults)
-                     + "</p>")
+        parts.append(
+            "<p><b>Faults injected:</b> " + "; ".join(esc(f) for f in record.faults) + "</p>"
+        )
     if record.repairs:
-        parts.append('<p><b>Repairs:</b> <span class="rep">' +
-                     "</span>; <span class=\"rep\">".join(esc(r) for r in record.repairs)
-                     + "</span></p>")
+        parts.append(
+            '<p><b>Repairs:</b> <span class="rep">'
+            + '</span>; <span class="rep">'.join(esc(r) for r in record.repairs)
+            + "</span></p>"
+        )
     parts.append(_trace_table(rows, _limit_for(record, limit)))
     css = "s" if ok else "f"
     return f'<details class="t {css}"><summary>{summary}</summary>\n{"".join(parts)}</details>'
@@ -715,22 +802,33 @@ def _slug(name: str) -> str:
 
 
 def _traces_html(data: RunData) -> list[str]:
-    out = ['<h2 id="traces">Traces</h2>', '<p class="muted">Per method: failures first, then '
-           "successes. Open a task for its instruction, goal, final values and trace. Rows: "
-           "macro actions (blue), presses with the display after them, exploration (grey "
-           "italics), checks (mismatches marked red), repairs of the model (yellow).</p>"]
+    out = [
+        '<h2 id="traces">Traces</h2>',
+        '<p class="muted">Per method: failures first, then '
+        "successes. Open a task for its instruction, goal, final values and trace. Rows: "
+        "macro actions (blue), presses with the display after them, exploration (grey "
+        "italics), checks (mismatches marked red), repairs of the model (yellow).</p>",
+    ]
     by_method: dict[str, list[TaskRecord]] = {m: [] for m in data.methods}
     for record in data.records:
         by_method[record.method].append(record)
     rows = {r.key: _trace_rows(r.trace) for r in data.records}
     limit = _row_limit(data.records, rows)
     if limit < TRACE_ROWS:
-        out.append(f'<p class="muted">The traces are long: each is cut to {limit} rows '
-                   f"({max(limit // 2, 1)} for successes), its start and its end, to keep this "
-                   "page small; results.jsonl has them in full.</p>")
-    out.append("<ul>" + "".join(
-        f'<li><a href="#{_slug(m)}">{esc(m)}</a>: {sum(not r.success for r in rs)} failed, '
-        f"{sum(r.success for r in rs)} succeeded</li>" for m, rs in by_method.items()) + "</ul>")
+        out.append(
+            f'<p class="muted">The traces are long: each is cut to {limit} rows '
+            f"({max(limit // 2, 1)} for successes), its start and its end, to keep this "
+            "page small; results.jsonl has them in full.</p>"
+        )
+    out.append(
+        "<ul>"
+        + "".join(
+            f'<li><a href="#{_slug(m)}">{esc(m)}</a>: {sum(not r.success for r in rs)} failed, '
+            f"{sum(r.success for r in rs)} succeeded</li>"
+            for m, rs in by_method.items()
+        )
+        + "</ul>"
+    )
     for method, records in by_method.items():
         failed = [r for r in records if not r.success]
         passed = [r for r in records if r.success]
@@ -739,8 +837,10 @@ def _traces_html(data: RunData) -> list[str]:
             out.append('<p class="muted">No records.</p>')
         for title, group, is_open in (("Failures", failed, True), ("Successes", passed, False)):
             if group:
-                out.append(f'<details class="g"{" open" if is_open else ""}><summary>{title} '
-                           f"({len(group)})</summary>")
+                out.append(
+                    f'<details class="g"{" open" if is_open else ""}><summary>{title} '
+                    f"({len(group)})</summary>"
+                )
                 out += [_task_html(r, rows[r.key], limit) for r in group]
                 out.append("</details>")
         out.append("</section>")
@@ -749,34 +849,59 @@ def _traces_html(data: RunData) -> list[str]:
 
 def render_html(data: RunData, figures: Mapping[str, ReportFigure], generated: str) -> str:
     """The report as one self-contained HTML page."""
+
     def section(title: str, anchor: str, *body: str) -> list[str]:
         return [f'<h2 id="{anchor}">{esc(title)}</h2>', *body]
 
-    facts = "".join(f"<dt>{esc(k)}</dt><dd>{esc(v)}</dd>"
-                    for k, v in _header_facts(data, generated))
+    facts = "".join(
+        f"<dt>{esc(k)}</dt><dd>{esc(v)}</dd>" for k, v in _header_facts(data, generated)
+    )
     note = TABLE_NOTE + (REFERENCE_NOTE if data.reference else "")
-    out = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
-           f'<meta http-equiv="Content-Security-Policy" content="{_CSP}">',
-           '<meta name="viewport" content="width=device-width, initial-scale=1">',
-           "<title>apbot benchmark report</title>", f"<style>{CSS}</style></head><body>",
-           "<h1>apbot benchmark report</h1>", f'<dl class="h">{facts}</dl>',
-           f"<p>{esc(READING_GUIDE)}</p>"]
-    out += section("Success rate / average reasoning steps", "sr",
-                   _html_table(*_table(data, _SR_TABLE)))
-    out += section("SPL / average execution steps", "spl", _html_table(*_table(data, _SPL_TABLE)),
-                   f'<p class="muted">{esc(note)}</p>', _img(figures.get("overview")))
+    out = [
+        "<!DOCTYPE html>",
+        '<html lang="en"><head><meta charset="utf-8">',
+        f'<meta http-equiv="Content-Security-Policy" content="{_CSP}">',
+        '<meta name="viewport" content="width=device-width, initial-scale=1">',
+        "<title>apbot benchmark report</title>",
+        f"<style>{CSS}</style></head><body>",
+        "<h1>apbot benchmark report</h1>",
+        f'<dl class="h">{facts}</dl>',
+        f"<p>{esc(READING_GUIDE)}</p>",
+    ]
+    out += section(
+        "Success rate / average reasoning steps", "sr", _html_table(*_table(data, _SR_TABLE))
+    )
+    out += section(
+        "SPL / average execution steps",
+        "spl",
+        _html_table(*_table(data, _SPL_TABLE)),
+        f'<p class="muted">{esc(note)}</p>',
+        _img(figures.get("overview")),
+    )
     if "pvalues" in figures:
-        out += section("Pairwise χ² tests", "pvalues",
-                       "<p>p-values of the χ² test on success/failure counts for each pair of "
-                       "methods; * and bold: p &lt; 0.05.</p>",
-                       _img(figures["pvalues"]), _html_table(*_pvalue_rows(data)))
+        out += section(
+            "Pairwise χ² tests",
+            "pvalues",
+            "<p>p-values of the χ² test on success/failure counts for each pair of "
+            "methods; * and bold: p &lt; 0.05.</p>",
+            _img(figures["pvalues"]),
+            _html_table(*_pvalue_rows(data)),
+        )
     if "goal_variables" in figures:
-        out += section("Success vs number of goal variables", "goal-variables",
-                       _img(figures["goal_variables"]), _html_table(*_goal_rows(data)))
+        out += section(
+            "Success vs number of goal variables",
+            "goal-variables",
+            _img(figures["goal_variables"]),
+            _html_table(*_goal_rows(data)),
+        )
     if data.fault_study is not None and "fault_study" in figures:
-        out += section("Fault study", "faults", "<p>SR / SPL when model faults are injected "
-                       "into the belief at each rate.</p>", _img(figures["fault_study"]),
-                       _html_table(*_fault_rows(data.fault_study)))
+        out += section(
+            "Fault study",
+            "faults",
+            "<p>SR / SPL when model faults are injected into the belief at each rate.</p>",
+            _img(figures["fault_study"]),
+            _html_table(*_fault_rows(data.fault_study)),
+        )
     out += _traces_html(data)
     out.append("</body></html>")
     return "\n".join(out) + "\n"
@@ -796,8 +921,9 @@ def _write(path: Path, content: str | bytes) -> Path:
     return path
 
 
-def write_report(directory: Path,
-                 clock: Callable[[], datetime] = lambda: datetime.now(UTC)) -> list[Path]:
+def write_report(
+    directory: Path, clock: Callable[[], datetime] = lambda: datetime.now(UTC)
+) -> list[Path]:
     """Write ``report.md``, ``report.html`` and ``figures/*.png`` for a run; return the paths.
 
     Raises :class:`ReportError` when the directory has no (or a malformed) summary.json.

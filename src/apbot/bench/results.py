@@ -44,9 +44,11 @@ class ResultStore:
             try:
                 record = TaskRecord.model_validate_json(line)
             except ValidationError as exc:
-                raise ResultsError(f"{self.path}:{number}: not a valid result record "
-                                   f"({exc.errors()[0]['msg']}); move the file away or run "
-                                   "with --rerun into a new directory") from None
+                raise ResultsError(
+                    f"{self.path}:{number}: not a valid result record "
+                    f"({exc.errors()[0]['msg']}); move the file away or run "
+                    "with --rerun into a new directory"
+                ) from None
             records.setdefault(record.key, record)
         if repair and tail.strip():  # written without its newline: the run died mid-write
             with self.path.open("r+b") as handle:
@@ -56,8 +58,7 @@ class ResultStore:
     def append(self, record: TaskRecord) -> None:
         """Write one record durably (flushed and synced before returning)."""
         self.path.parent.mkdir(parents=True, exist_ok=True)
-        line = json.dumps(record.model_dump(mode="json"), ensure_ascii=False,
-                          separators=(",", ":"))
+        line = json.dumps(record.model_dump(mode="json"), ensure_ascii=False, separators=(",", ":"))
         with self.path.open("a", encoding="utf-8") as handle:
             handle.write(line + "\n")
             handle.flush()

@@ -106,8 +106,9 @@ def _find(suite: str, appliance_id: str, task_id: str) -> tuple[SuiteAppliance, 
 
 
 @lru_cache(maxsize=256)
-def _belief(suite: str, appliance_id: str, spec: BeliefSpec,
-            seed: int) -> tuple[ApplianceModel, tuple[str, ...]]:
+def _belief(
+    suite: str, appliance_id: str, spec: BeliefSpec, seed: int
+) -> tuple[ApplianceModel, tuple[str, ...]]:
     """The belief model for an appliance (models are frozen, so one copy serves every task)."""
     model, faults = belief_model(cached_suite(suite).get(appliance_id), spec, seed)
     return model, tuple(faults)
@@ -126,8 +127,9 @@ def _describe(exc: BaseException) -> str:
     return f"{type(exc).__name__}: {exc}"
 
 
-def run_one(method: str, belief: str, seed: int, appliance_id: str, task_id: str,
-            suite: str) -> TaskRecord:
+def run_one(
+    method: str, belief: str, seed: int, appliance_id: str, task_id: str, suite: str
+) -> TaskRecord:
     """Run one method on one task and judge the result on the true simulator.
 
     Success means the task's goal (normalised on the true model) holds in the environment's
@@ -135,14 +137,25 @@ def run_one(method: str, belief: str, seed: int, appliance_id: str, task_id: str
     is recorded but not trusted. An exception in the method gives a failed record.
     """
     appliance, task = _find(suite, appliance_id, task_id)
-    return run_task(appliance, task, method, belief, seed,
-                    belief_of=lambda spec: _belief(suite, appliance.id, spec, seed))
+    return run_task(
+        appliance,
+        task,
+        method,
+        belief,
+        seed,
+        belief_of=lambda spec: _belief(suite, appliance.id, spec, seed),
+    )
 
 
-def run_task(appliance: SuiteAppliance, task: Task, method: str, belief: str = "true",
-             seed: int = 0, observer: Callable[[TraceEvent], None] | None = None,
-             belief_of: Callable[[BeliefSpec], tuple[ApplianceModel, Any]] | None = None,
-             ) -> TaskRecord:
+def run_task(
+    appliance: SuiteAppliance,
+    task: Task,
+    method: str,
+    belief: str = "true",
+    seed: int = 0,
+    observer: Callable[[TraceEvent], None] | None = None,
+    belief_of: Callable[[BeliefSpec], tuple[ApplianceModel, Any]] | None = None,
+) -> TaskRecord:
     """:func:`run_one` on objects: also for a task that is not in a suite (``apbot run``).
 
     ``observer`` sees every trace event as it happens; ``belief_of`` builds (or fetches a
@@ -156,8 +169,9 @@ def run_task(appliance: SuiteAppliance, task: Task, method: str, belief: str = "
         goal = parse_goal(appliance.model, task.goal)
         optimal = _optimal(appliance, task, goal)
     except (GoalError, Unreachable) as exc:
-        raise ValueError(f"{appliance.id}/{task.id}: the goal is not reachable on the "
-                         f"appliance: {exc}") from None
+        raise ValueError(
+            f"{appliance.id}/{task.id}: the goal is not reachable on the appliance: {exc}"
+        ) from None
     started = time.perf_counter()
     spec = parse_belief(belief)
     chosen = get_method(method)
@@ -174,9 +188,17 @@ def run_task(appliance: SuiteAppliance, task: Task, method: str, belief: str = "
     except Exception as exc:
         error = f"error: building the belief: {_describe(exc)}"
     else:
-        context = TaskContext(appliance.id, appliance.category, task.id, task.instruction,
-                              dict(task.goal), model, appliance.manual, tuple(env.actions),
-                              observer=observer)
+        context = TaskContext(
+            appliance.id,
+            appliance.category,
+            task.id,
+            task.instruction,
+            dict(task.goal),
+            model,
+            appliance.manual,
+            tuple(env.actions),
+            observer=observer,
+        )
         try:
             result = chosen.run(context, env)
             if not isinstance(result, Episode):
@@ -191,20 +213,34 @@ def run_task(appliance: SuiteAppliance, task: Task, method: str, belief: str = "
     success = not error and reached and within
     failure = "" if success else error or _failure(episode, goal, final, reached, limit)
     return TaskRecord(
-        key=record_key(method, str(spec), appliance.id, task.id), method=method,
-        belief=str(spec), appliance=appliance.id, category=appliance.category, task=task.id,
-        instruction=task.instruction, goal=dict(task.goal), goal_variables=len(task.goal),
-        success=success, claimed_success=episode.claimed_success,
-        reasoning_steps=episode.reasoning_steps, execution_steps=env.steps,
-        optimal_steps=optimal, spl=spl(success, optimal, env.steps), failure=failure,
-        repairs=list(episode.repairs), faults=list(faults), final_values=final,
+        key=record_key(method, str(spec), appliance.id, task.id),
+        method=method,
+        belief=str(spec),
+        appliance=appliance.id,
+        category=appliance.category,
+        task=task.id,
+        instruction=task.instruction,
+        goal=dict(task.goal),
+        goal_variables=len(task.goal),
+        success=success,
+        claimed_success=episode.claimed_success,
+        reasoning_steps=episode.reasoning_steps,
+        execution_steps=env.steps,
+        optimal_steps=optimal,
+        spl=spl(success, optimal, env.steps),
+        failure=failure,
+        repairs=list(episode.repairs),
+        faults=list(faults),
+        final_values=final,
         trace=[event.to_dict() for event in episode.trace],
         timings={"seconds": round(time.perf_counter() - started, 6)},
-        llm_usage=dict(episode.llm_usage))
+        llm_usage=dict(episode.llm_usage),
+    )
 
 
-def _failure(episode: Episode, goal: dict[str, Any], final: dict[str, Any], reached: bool,
-             limit: int) -> str:
+def _failure(
+    episode: Episode, goal: dict[str, Any], final: dict[str, Any], reached: bool, limit: int
+) -> str:
     """One line saying why a run failed, the method's own reason first."""
     parts = []
     if episode.reasoning_steps > limit:
@@ -212,8 +248,11 @@ def _failure(episode: Episode, goal: dict[str, Any], final: dict[str, Any], reac
     if episode.failure:
         parts.append(episode.failure)
     if not reached:
-        wrong = ", ".join(f"{name}={final[name]!r} (want {value!r})"
-                          for name, value in goal.items() if final[name] != value)
+        wrong = ", ".join(
+            f"{name}={final[name]!r} (want {value!r})"
+            for name, value in goal.items()
+            if final[name] != value
+        )
         claim = "claimed success but " if episode.claimed_success and not episode.failure else ""
         parts.append(f"{claim}goal not met: {wrong}")
     return "; ".join(parts)
@@ -267,8 +306,10 @@ def select_work(options: BenchOptions, suite: Suite) -> list[WorkItem]:
             raise _unknown("appliance(s)", bad, ids)
         outside = [a for a in options.appliances if a not in {c.id for c in chosen}]
         if outside:
-            raise BenchError(f"appliance(s) {', '.join(outside)} not in the selected "
-                             f"categories {', '.join(options.categories or [])}")
+            raise BenchError(
+                f"appliance(s) {', '.join(outside)} not in the selected "
+                f"categories {', '.join(options.categories or [])}"
+            )
         chosen = [a for a in chosen if a.id in options.appliances]
     if options.sample is not None and options.sample < 1:
         raise BenchError(f"--sample must be at least 1 (got {options.sample})")
@@ -276,8 +317,13 @@ def select_work(options: BenchOptions, suite: Suite) -> list[WorkItem]:
     depth = max((len(a.tasks) for a in chosen), default=0)
     if options.sample is not None:
         depth = min(depth, options.sample)
-    return [WorkItem(m, a.id, a.tasks[i].id) for i in range(depth) for a in chosen
-            if i < len(a.tasks) for m in methods_in_order]
+    return [
+        WorkItem(m, a.id, a.tasks[i].id)
+        for i in range(depth)
+        for a in chosen
+        if i < len(a.tasks)
+        for m in methods_in_order
+    ]
 
 
 # --- the run directory ------------------------------------------------------------------------
@@ -297,29 +343,46 @@ def _prepare_directory(options: BenchOptions, spec: BeliefSpec, work: list[WorkI
         try:
             previous = json.loads(run_file.read_text(encoding="utf-8"))
         except (OSError, ValueError) as exc:
-            raise BenchError(f"{run_file} cannot be read ({exc}); use --rerun or another "
-                             "--out") from None
-        differ = [f"{k} {previous.get(k)!r} (asked: {wanted[k]!r})" for k in PINNED
-                  if previous.get(k) != wanted[k]]
+            raise BenchError(
+                f"{run_file} cannot be read ({exc}); use --rerun or another --out"
+            ) from None
+        differ = [
+            f"{k} {previous.get(k)!r} (asked: {wanted[k]!r})"
+            for k in PINNED
+            if previous.get(k) != wanted[k]
+        ]
         if differ:
-            raise BenchError(f"{out} holds a run with {'; '.join(differ)}; use another --out, "
-                             "or --rerun to discard its results")
+            raise BenchError(
+                f"{out} holds a run with {'; '.join(differ)}; use another --out, "
+                "or --rerun to discard its results"
+            )
     elif (out / RESULTS_FILE).exists() and not options.rerun:
-        raise BenchError(f"{out} has {RESULTS_FILE} but no {RUN_FILE}, so its suite, belief "
-                         "and seed are unknown; use another --out, or --rerun to discard it")
+        raise BenchError(
+            f"{out} has {RESULTS_FILE} but no {RUN_FILE}, so its suite, belief "
+            "and seed are unknown; use another --out, or --rerun to discard it"
+        )
     out.mkdir(parents=True, exist_ok=True)
-    info = {**wanted, "methods": list(dict.fromkeys(options.methods)),
-            "selection": {"categories": options.categories, "appliances": options.appliances,
-                          "sample": options.sample},
-            "tasks": len(work), "started": previous.get("started", _now()), "updated": _now()}
+    info = {
+        **wanted,
+        "methods": list(dict.fromkeys(options.methods)),
+        "selection": {
+            "categories": options.categories,
+            "appliances": options.appliances,
+            "sample": options.sample,
+        },
+        "tasks": len(work),
+        "started": previous.get("started", _now()),
+        "updated": _now(),
+    }
     _write_json(run_file, info)
 
 
 def _write_json(path: Path, data: Any) -> None:
     """Write JSON atomically (a reader never sees half a file)."""
     temporary = path.with_name(path.name + ".tmp")
-    temporary.write_text(json.dumps(data, indent=2, sort_keys=True, ensure_ascii=False) + "\n",
-                         encoding="utf-8")
+    temporary.write_text(
+        json.dumps(data, indent=2, sort_keys=True, ensure_ascii=False) + "\n", encoding="utf-8"
+    )
     os.replace(temporary, path)
 
 
@@ -364,7 +427,7 @@ def _sigint(stop: _Stop) -> Iterator[None]:
 def _batches(items: list[WorkItem], workers: int) -> list[list[WorkItem]]:
     """Small enough to balance and to stop quickly; big enough that shipping is cheap."""
     size = max(1, min(16, len(items) // (workers * 8)))
-    return [items[i:i + size] for i in range(0, len(items), size)]
+    return [items[i : i + size] for i in range(0, len(items), size)]
 
 
 def run_benchmark(options: BenchOptions, progress: bool = True) -> BenchOutcome:
@@ -388,8 +451,9 @@ def _exclusive(directory: Path) -> Iterator[None]:
         try:
             fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except OSError:
-            raise BenchError(f"another `apbot bench` is writing to {directory}; wait for it or "
-                             "use another --out") from None
+            raise BenchError(
+                f"another `apbot bench` is writing to {directory}; wait for it or use another --out"
+            ) from None
         try:
             yield
         finally:
@@ -402,8 +466,9 @@ def _run_benchmark(options: BenchOptions, progress: bool) -> BenchOutcome:
         try:
             import apbot.bench.faults  # noqa: F401
         except ImportError as exc:
-            raise BeliefError(f"belief {str(spec)!r} needs fault injection, which is not "
-                              f"available: {exc}") from None
+            raise BeliefError(
+                f"belief {str(spec)!r} needs fault injection, which is not available: {exc}"
+            ) from None
     if options.workers < 1:
         raise BenchError(f"--workers must be at least 1 (got {options.workers})")
     try:
@@ -441,8 +506,9 @@ def _run_benchmark(options: BenchOptions, progress: bool) -> BenchOutcome:
         return BenchOutcome(selected, summary, options.out, interrupted, len(new), len(done))
 
 
-def _execute(pending: list[WorkItem], belief: str, options: BenchOptions,
-             stop: _Stop) -> Iterator[TaskRecord]:
+def _execute(
+    pending: list[WorkItem], belief: str, options: BenchOptions, stop: _Stop
+) -> Iterator[TaskRecord]:
     """Yield records as tasks finish, in this process or a pool, until done or stopped."""
     suite = str(options.suite)
     if options.workers == 1 or len(pending) <= 1:
@@ -461,8 +527,7 @@ def _execute(pending: list[WorkItem], belief: str, options: BenchOptions,
     try:
         while queue or running:
             while queue and len(running) < window and not stop.requested:
-                running.add(pool.submit(_run_batch, queue.popleft(), belief, options.seed,
-                                        suite))
+                running.add(pool.submit(_run_batch, queue.popleft(), belief, options.seed, suite))
             if not running or stop.hard:
                 break
             finished, _ = wait(running, timeout=0.25, return_when=FIRST_COMPLETED)
@@ -496,8 +561,9 @@ class _Advance:
 
 
 @contextmanager
-def _progress(enabled: bool, chosen: list[str], done: list[TaskRecord],
-              work: list[WorkItem]) -> Iterator[_Advance]:
+def _progress(
+    enabled: bool, chosen: list[str], done: list[TaskRecord], work: list[WorkItem]
+) -> Iterator[_Advance]:
     if not enabled:
         yield _Advance(None, {}, {})
         return
@@ -513,11 +579,23 @@ def _progress(enabled: bool, chosen: list[str], done: list[TaskRecord],
     console = Console(stderr=True)
     names = list(dict.fromkeys(chosen))
     ok = {m: sum(r.success for r in done if r.method == m) for m in names}
-    with Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(),
-                  TextColumn("[green]{task.fields[ok]} ok"), TimeElapsedColumn(),
-                  console=console, disable=not console.is_terminal) as bar:
+    with Progress(
+        TextColumn("{task.description}"),
+        BarColumn(),
+        MofNCompleteColumn(),
+        TextColumn("[green]{task.fields[ok]} ok"),
+        TimeElapsedColumn(),
+        console=console,
+        disable=not console.is_terminal,
+    ) as bar:
         width = max(map(len, names), default=0)
-        tasks = {m: bar.add_task(m.ljust(width), total=sum(w.method == m for w in work),
-                                 completed=sum(r.method == m for r in done), ok=ok[m])
-                 for m in names}
+        tasks = {
+            m: bar.add_task(
+                m.ljust(width),
+                total=sum(w.method == m for w in work),
+                completed=sum(r.method == m for r in done),
+                ok=ok[m],
+            )
+            for m in names
+        }
         yield _Advance(bar, tasks, ok)

@@ -8,8 +8,16 @@ from apbot.bench.suite import CATEGORIES, Suite, load_suite
 from apbot.model.schema import ApplianceModel
 from apbot.sim.compiled import compiled_model
 
-FEATURES = ("keypad", "dial", "hold", "two_control_hold", "dependent_settings", "piecewise",
-            "time_variables", "guards")
+FEATURES = (
+    "keypad",
+    "dial",
+    "hold",
+    "two_control_hold",
+    "dependent_settings",
+    "piecewise",
+    "time_variables",
+    "guards",
+)
 
 
 def appliance_features(model: ApplianceModel) -> dict[str, bool]:
@@ -24,8 +32,9 @@ def appliance_features(model: ApplianceModel) -> dict[str, bool]:
         ranges.extend(getattr(s, "ranges", None) or [] for s in specs if not isinstance(s, list))
     compiled = compiled_model(model)
     start = compiled.initial_state()
-    later_guards = [g for g in compiled.guards
-                    if not all(start.values[v] in ok for v, ok in g.conditions)]
+    later_guards = [
+        g for g in compiled.guards if not all(start.values[v] in ok for v, ok in g.conditions)
+    ]
     return {
         "keypad": any(c.kind == "key" for c in model.controls),
         "dial": any(c.kind in ("dial", "knob") for c in model.controls),
@@ -57,8 +66,13 @@ def suite_statistics(suite: Suite | None = None) -> dict[str, Any]:
             "appliances": len(members),
             "tasks": len(tasks),
             "goal_vars_per_task": round(sum(len(t.goal) for t in tasks) / len(tasks), 2)
-            if tasks else 0,
+            if tasks
+            else 0,
             "features": features,
         }
-    return {"appliances": len(suite.appliances), "tasks": len(suite.tasks),
-            "categories": categories, "features": totals}
+    return {
+        "appliances": len(suite.appliances),
+        "tasks": len(suite.tasks),
+        "categories": categories,
+        "features": totals,
+    }

@@ -130,24 +130,37 @@ def _load_yaml_model(path: Path, schema: type[BaseModel], source: str) -> BaseMo
 
 def load_appliance(directory: Path, check: bool = False) -> SuiteAppliance:
     """Load one appliance directory; ``check`` also runs the model's semantic checks."""
-    manual_path = next((directory / name for name in ("manual.md", "manual.txt")
-                        if (directory / name).exists()), None)
-    missing = [name for name in ("model.yaml", "panel.yaml", "tasks.yaml")
-               if not (directory / name).exists()]
+    manual_path = next(
+        (directory / name for name in ("manual.md", "manual.txt") if (directory / name).exists()),
+        None,
+    )
+    missing = [
+        name
+        for name in ("model.yaml", "panel.yaml", "tasks.yaml")
+        if not (directory / name).exists()
+    ]
     if manual_path is None:
         missing.insert(0, "manual.md (or manual.txt)")
     if missing:
-        raise ModelError([Problem((), f"missing {name}", "suite") for name in missing],
-                         str(directory))
+        raise ModelError(
+            [Problem((), f"missing {name}", "suite") for name in missing], str(directory)
+        )
     model_path = directory / "model.yaml"
     text = model_path.read_text(encoding="utf-8")
     model = parse_model(read_yaml(text, str(model_path)), str(model_path), text, check=check)
     layout = _load_yaml_model(directory / "panel.yaml", PanelLayout, str(directory / "panel.yaml"))
     task_file = _load_yaml_model(directory / "tasks.yaml", TaskFile, str(directory / "tasks.yaml"))
     assert isinstance(layout, PanelLayout) and isinstance(task_file, TaskFile)
-    return SuiteAppliance(model.appliance.id, model.appliance.category, directory,
-                          manual_path.read_text(encoding="utf-8"), model, layout,
-                          list(task_file.tasks), manual_path.name)
+    return SuiteAppliance(
+        model.appliance.id,
+        model.appliance.category,
+        directory,
+        manual_path.read_text(encoding="utf-8"),
+        model,
+        layout,
+        list(task_file.tasks),
+        manual_path.name,
+    )
 
 
 def load_suite(name: str | Path = "bundled", check: bool = False) -> Suite:

@@ -38,25 +38,32 @@ def _panel(appliance: SuiteAppliance) -> Iterator[Problem]:
     model_controls = {c.id: c for c in appliance.model.controls}
     drawn = {c.id: c for c in layout.controls}
     for cid in model_controls.keys() - drawn.keys():
-        yield Problem(("panel", "controls"), f"control {cid!r} of the model is not drawn",
-                      "panel")
+        yield Problem(("panel", "controls"), f"control {cid!r} of the model is not drawn", "panel")
     for cid in drawn.keys() - model_controls.keys():
-        yield Problem(("panel", "controls"), f"control {cid!r} is drawn but not in the model",
-                      "panel")
+        yield Problem(
+            ("panel", "controls"), f"control {cid!r} is drawn but not in the model", "panel"
+        )
     boxes = [("display", layout.display)] + [(c.id, c.box) for c in layout.controls]
     for name, (x0, y0, x1, y1) in boxes:
         if not (0 <= x0 < x1 <= width and 0 <= y0 < y1 <= height):
-            yield Problem(("panel", name), f"box {[x0, y0, x1, y1]} is not inside the "
-                          f"{width}x{height} canvas with positive size", "panel")
+            yield Problem(
+                ("panel", name),
+                f"box {[x0, y0, x1, y1]} is not inside the "
+                f"{width}x{height} canvas with positive size",
+                "panel",
+            )
     for i, (name_a, a) in enumerate(boxes):
-        for name_b, b in boxes[i + 1:]:
+        for name_b, b in boxes[i + 1 :]:
             if a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]:
                 yield Problem(("panel", name_b), f"box overlaps {name_a!r}", "panel")
     for control in layout.controls:
         model_control = model_controls.get(control.id)
         if model_control is not None and model_control.label != control.label:
-            yield Problem(("panel", control.id), f"label {control.label!r} differs from the "
-                          f"model's {model_control.label!r}", "panel")
+            yield Problem(
+                ("panel", control.id),
+                f"label {control.label!r} differs from the model's {model_control.label!r}",
+                "panel",
+            )
 
 
 def _manual(appliance: SuiteAppliance) -> Iterator[Problem]:
@@ -69,11 +76,17 @@ def _manual(appliance: SuiteAppliance) -> Iterator[Problem]:
 def _tasks(appliance: SuiteAppliance, plan_tasks: bool) -> Iterator[Problem]:
     wanted = GOAL_VARIABLES.get(appliance.category)
     if wanted is None:
-        yield Problem(("model", "appliance", "category"), f"unknown category "
-                      f"{appliance.category!r}; use one of {sorted(GOAL_VARIABLES)}", "suite")
+        yield Problem(
+            ("model", "appliance", "category"),
+            f"unknown category {appliance.category!r}; use one of {sorted(GOAL_VARIABLES)}",
+            "suite",
+        )
     if appliance.id != appliance.directory.name:
-        yield Problem(("model", "appliance", "id"), f"id {appliance.id!r} differs from the "
-                      f"directory name {appliance.directory.name!r}", "suite")
+        yield Problem(
+            ("model", "appliance", "id"),
+            f"id {appliance.id!r} differs from the directory name {appliance.directory.name!r}",
+            "suite",
+        )
     seen: set[str] = set()
     for i, task in enumerate(appliance.tasks):
         path = ("tasks", i)
@@ -81,8 +94,11 @@ def _tasks(appliance: SuiteAppliance, plan_tasks: bool) -> Iterator[Problem]:
             yield Problem((*path, "id"), f"task id {task.id!r} repeats", "suite")
         seen.add(task.id)
         if wanted is not None and len(task.goal) != wanted:
-            yield Problem((*path, "goal"), f"{len(task.goal)} goal variables; "
-                          f"{appliance.category} tasks have {wanted}", "suite")
+            yield Problem(
+                (*path, "goal"),
+                f"{len(task.goal)} goal variables; {appliance.category} tasks have {wanted}",
+                "suite",
+            )
         try:
             goal = parse_goal(appliance.model, task.goal)
         except GoalError as exc:
@@ -102,11 +118,14 @@ def _tasks(appliance: SuiteAppliance, plan_tasks: bool) -> Iterator[Problem]:
         if not simulator.satisfies(goal):
             yield Problem((*path, "goal"), "the oracle plan does not reach the goal", "oracle")
         if len(found) == 0:
-            yield Problem((*path, "goal"), "the goal already holds in the initial state",
-                          "suite")
+            yield Problem((*path, "goal"), "the goal already holds in the initial state", "suite")
         if task.optimal_steps != len(found):
-            yield Problem((*path, "optimal_steps"), f"stored {task.optimal_steps}, the planner "
-                          f"finds {len(found)}; run `apbot suite fill-optimal`", "oracle")
+            yield Problem(
+                (*path, "optimal_steps"),
+                f"stored {task.optimal_steps}, the planner "
+                f"finds {len(found)}; run `apbot suite fill-optimal`",
+                "oracle",
+            )
 
 
 def optimal_steps(appliance: SuiteAppliance, task: Task) -> int:
@@ -128,8 +147,7 @@ def fill_optimal(appliance: SuiteAppliance) -> int:
         changed += best != task.optimal_steps
         tasks.append(task.model_copy(update={"optimal_steps": best}))
     if changed:
-        payload = {"appliance": data.appliance,
-                   "tasks": [t.model_dump(mode="json") for t in tasks]}
+        payload = {"appliance": data.appliance, "tasks": [t.model_dump(mode="json") for t in tasks]}
         path.write_text(dump_yaml(payload), encoding="utf-8")
         appliance.tasks = tasks
     return changed

@@ -104,8 +104,10 @@ def _check_ranges(ranges: list[tuple[float, float, float]], show: Any) -> None:
     previous_end: float | None = None
     count = sum(int((b - a) / c) + 1 for a, b, c in ranges if c > 0 and b >= a)
     if count > MAX_VALUES:
-        raise DomainError(f"the ranges give {count:,} values; at most {MAX_VALUES:,} are "
-                          "allowed (use a coarser step)")
+        raise DomainError(
+            f"the ranges give {count:,} values; at most {MAX_VALUES:,} are "
+            "allowed (use a coarser step)"
+        )
     for i, (start, stop, step) in enumerate(ranges):
         if step <= 0:
             raise DomainError(f"range {i + 1} has step {show(step)}; a step must be positive")
@@ -115,11 +117,13 @@ def _check_ranges(ranges: list[tuple[float, float, float]], show: Any) -> None:
         if abs(span - round(span)) > 1e-9:
             raise DomainError(
                 f"range {i + 1}: {show(stop)} is not reached from {show(start)} in steps of "
-                f"{show(step)}; make the end a whole number of steps from the start")
+                f"{show(step)}; make the end a whole number of steps from the start"
+            )
         if previous_end is not None and start < previous_end:
             raise DomainError(
                 f"range {i + 1} starts at {show(start)}, inside range {i} (which ends at "
-                f"{show(previous_end)}); ranges must not overlap")
+                f"{show(previous_end)}); ranges must not overlap"
+            )
         previous_end = stop
 
 
@@ -135,8 +139,9 @@ def build_domain(var: AnyVariable, case: Any = None) -> Domain:
             raise DomainError(f"value {duplicates[0]!r} is listed twice")
         initial = spec.initial if spec.initial is not None else values[0]
         if initial not in values:
-            raise DomainError(f"initial value {initial!r} is not one of {values}"
-                              + _did_you_mean(initial, values))
+            raise DomainError(
+                f"initial value {initial!r} is not one of {values}" + _did_you_mean(initial, values)
+            )
         return Domain("discrete", tuple(values), values.index(initial), var.wrap)
     if isinstance(var, NumericVariable):
         assert isinstance(spec, NumericVariable | NumericCase)
@@ -145,21 +150,34 @@ def build_domain(var: AnyVariable, case: Any = None) -> Domain:
         numbers = expand_ranges(spec.ranges or [])
         initial = tidy_number(spec.initial) if spec.initial is not None else numbers[0]
         if initial not in numbers:
-            raise DomainError(f"initial value {initial} is not in the ranges "
-                              f"({_summary(numbers)})")
-        return Domain("numeric", tuple(numbers), numbers.index(initial), var.wrap,
-                      tuple(float(n) for n in numbers))
+            raise DomainError(f"initial value {initial} is not in the ranges ({_summary(numbers)})")
+        return Domain(
+            "numeric",
+            tuple(numbers),
+            numbers.index(initial),
+            var.wrap,
+            tuple(float(n) for n in numbers),
+        )
     assert isinstance(spec, TimeVariable | TimeCase)
-    seconds_ranges = [(float(parse_hms(a)), float(parse_hms(b)), float(time_step_seconds(c)))
-                      for a, b, c in spec.ranges or []]
+    seconds_ranges = [
+        (float(parse_hms(a)), float(parse_hms(b)), float(time_step_seconds(c)))
+        for a, b, c in spec.ranges or []
+    ]
     _check_ranges(seconds_ranges, lambda s: format_hms(int(s)))
     seconds = [int(s) for s in expand_ranges(seconds_ranges)]
     initial_s = parse_hms(spec.initial) if spec.initial is not None else seconds[0]
     if initial_s not in seconds:
-        raise DomainError(f"initial value {format_hms(initial_s)} is not in the ranges "
-                          f"({_summary([format_hms(s) for s in seconds])})")
-    return Domain("time", tuple(format_hms(s) for s in seconds), seconds.index(initial_s),
-                  var.wrap, tuple(float(s) for s in seconds))
+        raise DomainError(
+            f"initial value {format_hms(initial_s)} is not in the ranges "
+            f"({_summary([format_hms(s) for s in seconds])})"
+        )
+    return Domain(
+        "time",
+        tuple(format_hms(s) for s in seconds),
+        seconds.index(initial_s),
+        var.wrap,
+        tuple(float(s) for s in seconds),
+    )
 
 
 def case_domains(var: AnyVariable) -> dict[str, Domain]:
@@ -229,8 +247,10 @@ def normalise(var: AnyVariable, raw: Any, domain: Domain | None = None) -> Any:
     if isinstance(var, NumericVariable):
         number = _to_number(raw, var.unit)
         if number not in members:
-            raise ValueProblem(f"{number:g}{_unit_suffix(var.unit)} is not one of its values "
-                               f"({_summary(list(ordered))})")
+            raise ValueProblem(
+                f"{number:g}{_unit_suffix(var.unit)} is not one of its values "
+                f"({_summary(list(ordered))})"
+            )
         return number
     seconds = _to_seconds(raw, var.format)
     value = format_hms(seconds)
@@ -279,9 +299,13 @@ def _normalise_discrete(raw: Any, ordered: Sequence[str], members: Container[str
         return matches[0]
     quantity = parse_quantity(text)
     if quantity is not None:  # "40 °C" for a value listed as "40"
-        by_number = [v for v in values
-                     if (q := parse_quantity(v)) and abs(q[0] - quantity[0]) < 1e-9
-                     and (q[1] is None or quantity[1] is None or q[1] == quantity[1])]
+        by_number = [
+            v
+            for v in values
+            if (q := parse_quantity(v))
+            and abs(q[0] - quantity[0]) < 1e-9
+            and (q[1] is None or quantity[1] is None or q[1] == quantity[1])
+        ]
         if len(by_number) == 1:
             return by_number[0]
     raise ValueProblem(f"{text!r} is not one of {values}" + _did_you_mean(text, values))
@@ -301,8 +325,7 @@ def _to_number(raw: Any, unit: str) -> int | float:
             return tidy_number(round(number[0], 6))
     quantity = parse_quantity(text)
     if quantity is None:
-        raise ValueProblem(f"{raw!r} is not a number"
-                           + (f" of {unit}" if unit else ""))
+        raise ValueProblem(f"{raw!r} is not a number" + (f" of {unit}" if unit else ""))
     number, dimension, _ = quantity
     if dimension is not None:
         target = unit_of(unit) if unit else None
@@ -319,15 +342,17 @@ def _to_number(raw: Any, unit: str) -> int | float:
 def _to_seconds(raw: Any, style: str) -> int:
     text = str(raw).strip()
     if isinstance(raw, int | float) and not isinstance(raw, bool):
-        raise ValueProblem(f"a bare number {raw!r} is ambiguous for a time; "
-                           "write 00:30:00, '30 min' or '2 h'")
+        raise ValueProblem(
+            f"a bare number {raw!r} is ambiguous for a time; write 00:30:00, '30 min' or '2 h'"
+        )
     parts = text.split(":")
     if len(parts) == 3 and all(p.isdigit() for p in parts):
         try:
             return parse_hms(text)
         except ValueError:
-            raise ValueProblem(f"{text!r} is not a time (minutes and seconds go up to 59)"
-                               ) from None
+            raise ValueProblem(
+                f"{text!r} is not a time (minutes and seconds go up to 59)"
+            ) from None
     if len(parts) == 2 and all(p.isdigit() for p in parts):
         first, second = int(parts[0]), int(parts[1])
         if second >= 60:

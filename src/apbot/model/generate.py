@@ -42,31 +42,49 @@ def random_model(rng: random.Random) -> ApplianceModel:
     parent: str | None = None
     for i in range(count):
         name = f"v{i}"
-        kind = rng.choice(["discrete", "discrete", "numeric", "time", "keypad", "dependent",
-                           "large"])
+        kind = rng.choice(
+            ["discrete", "discrete", "numeric", "time", "keypad", "dependent", "large"]
+        )
         if kind == "dependent" and parent is None:
             kind = "discrete"
         variables[name] = _variable(rng, kind, parent, variables)
-        if variables[name]["type"] == "discrete" and "depends_on" not in variables[name] \
-                and parent is None:
+        if (
+            variables[name]["type"] == "discrete"
+            and "depends_on" not in variables[name]
+            and parent is None
+        ):
             parent = name
     pool = _ActionPool(rng, new_action)
     for name in [v for v in variables if v.startswith("v")]:
         for _ in range(rng.randint(1, 2)):
             features[f"f{len(features)}"] = _feature(rng, name, variables, pool)
 
-    numeric = [v for v, spec in variables.items() if spec["type"] == "numeric"
-               and "depends_on" not in spec]
+    numeric = [
+        v for v, spec in variables.items() if spec["type"] == "numeric" and "depends_on" not in spec
+    ]
     if numeric and rng.random() < 0.25:  # a guard on a number: "set a time before starting"
         guarded = rng.choice(numeric)
-        low = _ranges(rng)[0][0] if "ranges" not in variables[guarded] else \
-            variables[guarded]["ranges"][0][0]
-        adjusting = [a for steps in features.values() for step in steps
-                     if step.get("variable") == guarded for a in step["actions"]]
-        entering = [a for steps in features.values() if any(
-            st.get("variable") == guarded for st in steps) for a in steps[0]["actions"]]
-        guards.append({"when": {guarded: [low, low + 1, low + 2]},
-                       "only": sorted(set(adjusting + entering))})
+        low = (
+            _ranges(rng)[0][0]
+            if "ranges" not in variables[guarded]
+            else variables[guarded]["ranges"][0][0]
+        )
+        adjusting = [
+            a
+            for steps in features.values()
+            for step in steps
+            if step.get("variable") == guarded
+            for a in step["actions"]
+        ]
+        entering = [
+            a
+            for steps in features.values()
+            if any(st.get("variable") == guarded for st in steps)
+            for a in steps[0]["actions"]
+        ]
+        guards.append(
+            {"when": {guarded: [low, low + 1, low + 2]}, "only": sorted(set(adjusting + entering))}
+        )
 
     if rng.random() < 0.3:  # a child lock on a hold, possibly of two controls
         variables["lock"] = {"type": "discrete", "values": ["off", "on"]}
@@ -81,8 +99,11 @@ def random_model(rng: random.Random) -> ApplianceModel:
 
     if rng.random() < 0.3 and len(variables) > 1:  # a step with side effects
         target = rng.choice([v for v in variables if "depends_on" not in variables[v]])
-        domain = build_domain(ApplianceModel.model_validate(_wrap(
-            variables, controls, actions, features, guards)).variables[target])
+        domain = build_domain(
+            ApplianceModel.model_validate(
+                _wrap(variables, controls, actions, features, guards)
+            ).variables[target]
+        )
         press = new_action()
         step: dict[str, Any] = {"actions": [press]}
         if rng.random() < 0.5:
@@ -94,10 +115,21 @@ def random_model(rng: random.Random) -> ApplianceModel:
     return ApplianceModel.model_validate(_wrap(variables, controls, actions, features, guards))
 
 
-def _wrap(variables: dict[str, Any], controls: list[dict[str, Any]], actions: dict[str, Any],
-          features: dict[str, Any], guards: list[dict[str, Any]]) -> dict[str, Any]:
-    return {"appliance": {"id": "generated", "category": "generated"}, "controls": controls,
-            "variables": variables, "actions": actions, "features": features, "guards": guards}
+def _wrap(
+    variables: dict[str, Any],
+    controls: list[dict[str, Any]],
+    actions: dict[str, Any],
+    features: dict[str, Any],
+    guards: list[dict[str, Any]],
+) -> dict[str, Any]:
+    return {
+        "appliance": {"id": "generated", "category": "generated"},
+        "controls": controls,
+        "variables": variables,
+        "actions": actions,
+        "features": features,
+        "guards": guards,
+    }
 
 
 def _ranges(rng: random.Random) -> list[list[int]]:
@@ -110,33 +142,44 @@ def _ranges(rng: random.Random) -> list[list[int]]:
     return [first, [first[1], first[1] + step2 * rng.randint(1, 3), step2]]
 
 
-def _variable(rng: random.Random, kind: str, parent: str | None,
-              variables: dict[str, Any]) -> dict[str, Any]:
+def _variable(
+    rng: random.Random, kind: str, parent: str | None, variables: dict[str, Any]
+) -> dict[str, Any]:
     wrap = rng.random() < 0.5
     if kind == "discrete":
         values = [f"x{j}" for j in range(rng.randint(2, 4))]
-        return {"type": "discrete", "values": values, "wrap": wrap,
-                "initial": rng.choice(values)}
+        return {"type": "discrete", "values": values, "wrap": wrap, "initial": rng.choice(values)}
     if kind == "numeric":
         return {"type": "numeric", "ranges": _ranges(rng), "wrap": wrap, "unit": "min"}
     if kind == "large":  # more values than the planner enumerates cheaply (> 64)
         return {"type": "numeric", "ranges": [[0, rng.choice([70, 100]), 1]], "wrap": wrap}
     if kind == "time":
-        return {"type": "time", "wrap": wrap,
-                "ranges": [["00:00:00", "00:02:00", 30], ["00:02:00", "00:04:00", 60]]}
+        return {
+            "type": "time",
+            "wrap": wrap,
+            "ranges": [["00:00:00", "00:02:00", 30], ["00:02:00", "00:04:00", 60]],
+        }
     if kind == "keypad":
         top, step = rng.choice([(9, 1), (12, 3), (20, 5), (120, 30)])
-        return {"type": "numeric", "ranges": [[0, top, step]],
-                "entry": {"format": "number", "max_digits": rng.choice([2, 3]),
-                          "overflow": rng.choice(["shift", "ignore"])}}
+        return {
+            "type": "numeric",
+            "ranges": [[0, top, step]],
+            "entry": {
+                "format": "number",
+                "max_digits": rng.choice([2, 3]),
+                "overflow": rng.choice(["shift", "ignore"]),
+            },
+        }
     assert parent is not None
     parent_values = variables[parent]["values"]
     cases = {}
     for value in parent_values:
         if rng.random() < 0.8:
             size = rng.randint(1, 3)
-            cases[value] = {"values": [f"y{j}" for j in range(size)],
-                            "initial": f"y{rng.randrange(size)}"}
+            cases[value] = {
+                "values": [f"y{j}" for j in range(size)],
+                "initial": f"y{rng.randrange(size)}",
+            }
     if not cases:
         cases[parent_values[0]] = {"values": ["y0", "y1"]}
     return {"type": "discrete", "depends_on": parent, "cases": cases, "wrap": wrap}
@@ -162,8 +205,9 @@ class _ActionPool:
         return self.digits
 
 
-def _adjusting_step(rng: random.Random, name: str, var: dict[str, Any],
-                    pool: _ActionPool) -> dict[str, Any]:
+def _adjusting_step(
+    rng: random.Random, name: str, var: dict[str, Any], pool: _ActionPool
+) -> dict[str, Any]:
     if "entry" in var:
         step = {"actions": pool.keypad(), "variable": name}
         if rng.random() < 0.2:
@@ -186,8 +230,9 @@ def _adjusting_step(rng: random.Random, name: str, var: dict[str, Any],
     return step
 
 
-def _feature(rng: random.Random, name: str, variables: dict[str, Any],
-             pool: _ActionPool) -> list[dict[str, Any]]:
+def _feature(
+    rng: random.Random, name: str, variables: dict[str, Any], pool: _ActionPool
+) -> list[dict[str, Any]]:
     """A procedure adjusting ``name`` (and sometimes a second variable after it), with an
     entry key sometimes and a confirm key sometimes."""
     steps: list[dict[str, Any]] = []

@@ -34,8 +34,15 @@ def split_assignments(items: Iterable[str]) -> dict[str, str]:
         if not sep or not name:
             raise GoalError([Problem(("goal",), f"{item!r} is not NAME=VALUE", "goal")])
         if name in goal and goal[name] != value.strip():
-            raise GoalError([Problem(("goal", name), f"given twice ({goal[name]!r} and "
-                                     f"{value.strip()!r}); say which one", "goal")])
+            raise GoalError(
+                [
+                    Problem(
+                        ("goal", name),
+                        f"given twice ({goal[name]!r} and {value.strip()!r}); say which one",
+                        "goal",
+                    )
+                ]
+            )
         goal[name] = value.strip()
     return goal
 

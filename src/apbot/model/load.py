@@ -24,8 +24,17 @@ except ImportError:  # pragma: no cover - depends on the platform's wheel
     from yaml import SafeDumper as _Dumper  # type: ignore[assignment]
     from yaml import SafeLoader as _Loader  # type: ignore[assignment]
 
-_UNION_TAGS = {"discrete", "numeric", "time", "GoTo", "Add", "DiscreteCase", "NumericCase",
-               "TimeCase", "function-after[_domain_given_once(), DiscreteVariable]"}
+_UNION_TAGS = {
+    "discrete",
+    "numeric",
+    "time",
+    "GoTo",
+    "Add",
+    "DiscreteCase",
+    "NumericCase",
+    "TimeCase",
+    "function-after[_domain_given_once(), DiscreteVariable]",
+}
 
 
 def read_yaml(text: str, source: str | None = None) -> Any:
@@ -41,8 +50,9 @@ def read_yaml(text: str, source: str | None = None) -> Any:
         mark = getattr(exc, "problem_mark", None)
         line = mark.line + 1 if mark is not None else None
         reason = getattr(exc, "problem", None) or str(exc)
-        raise ModelError([Problem((), f"YAML syntax: {reason}", "yaml", line=line)],
-                         source) from None
+        raise ModelError(
+            [Problem((), f"YAML syntax: {reason}", "yaml", line=line)], source
+        ) from None
     if repeated:
         raise ModelError(repeated, source)
     return data
@@ -55,9 +65,16 @@ def _repeated_keys(node: Any, path: tuple[PathPart, ...]) -> list[Problem]:
         for key, value in node.value:
             name = key.value
             if name in seen:
-                problems.append(Problem((*path, name), f"key {name!r} is given twice (first on "
-                                        f"line {seen[name]}); the second would silently replace "
-                                        "the first", "yaml", line=key.start_mark.line + 1))
+                problems.append(
+                    Problem(
+                        (*path, name),
+                        f"key {name!r} is given twice (first on "
+                        f"line {seen[name]}); the second would silently replace "
+                        "the first",
+                        "yaml",
+                        line=key.start_mark.line + 1,
+                    )
+                )
             seen.setdefault(name, key.start_mark.line + 1)
             problems += _repeated_keys(value, (*path, name))
     elif isinstance(node, yaml.SequenceNode):
@@ -68,8 +85,14 @@ def _repeated_keys(node: Any, path: tuple[PathPart, ...]) -> list[Problem]:
 
 def dump_yaml(data: Any) -> str:
     """YAML text in block style with keys in their given order."""
-    return yaml.dump(data, Dumper=_Dumper, sort_keys=False, allow_unicode=True, width=100,
-                     default_flow_style=None)
+    return yaml.dump(
+        data,
+        Dumper=_Dumper,
+        sort_keys=False,
+        allow_unicode=True,
+        width=100,
+        default_flow_style=None,
+    )
 
 
 def line_of(text: str | None, path: tuple[PathPart, ...]) -> int | None:
@@ -113,7 +136,7 @@ def _clean_loc(loc: tuple[Any, ...]) -> tuple[PathPart, ...]:
 
 _FIELD_HINTS = {
     "string_pattern_mismatch": "ids use lowercase letters, digits and underscores, "
-                               "starting with a letter",
+    "starting with a letter",
     "missing": "this key is required",
 }
 
@@ -134,11 +157,13 @@ def _message(error: Any, model_fields: dict[str, list[str]]) -> str:
         return f"{error.get('input')!r}: {_FIELD_HINTS[kind]}"
     if kind == "string_type" and isinstance(error.get("input"), bool):
         word = "on/yes/true" if error["input"] else "off/no/false"
-        return (f"YAML read this as the boolean {error['input']} (it does so for {word}); "
-                'quote it, e.g. "off"')
+        return (
+            f"YAML read this as the boolean {error['input']} (it does so for {word}); "
+            'quote it, e.g. "off"'
+        )
     message = str(error["msg"])
     if message.startswith("Value error, "):
-        message = message[len("Value error, "):]
+        message = message[len("Value error, ") :]
     return message
 
 
@@ -152,9 +177,19 @@ def _known_fields() -> dict[str, list[str]]:
     from apbot.model import schema
 
     names: dict[str, list[str]] = {}
-    for cls in (schema.Appliance, schema.Control, schema.Action, schema.Entry,
-                schema.DiscreteVariable, schema.NumericVariable, schema.TimeVariable,
-                schema.Step, schema.Guard, schema.Display, schema.ApplianceModel):
+    for cls in (
+        schema.Appliance,
+        schema.Control,
+        schema.Action,
+        schema.Entry,
+        schema.DiscreteVariable,
+        schema.NumericVariable,
+        schema.TimeVariable,
+        schema.Step,
+        schema.Guard,
+        schema.Display,
+        schema.ApplianceModel,
+    ):
         names[cls.__name__] = list(cls.model_fields)
     return names
 
@@ -171,8 +206,9 @@ def schema_problems(error: ValidationError, text: str | None = None) -> list[Pro
         path = _clean_loc(loc)
         if "effect" in path and item["type"] not in ("extra_forbidden",):
             index = path.index("effect")
-            effect_path = path[: index + 1] + tuple(p for p in path[index + 1:index + 2]
-                                                    if str(p) not in ("to", "add"))
+            effect_path = path[: index + 1] + tuple(
+                p for p in path[index + 1 : index + 2] if str(p) not in ("to", "add")
+            )
             effect_paths.add(effect_path)
             continue
         by_path.setdefault(path, [])
@@ -182,7 +218,8 @@ def schema_problems(error: ValidationError, text: str | None = None) -> list[Pro
     for path in effect_paths:
         by_path.setdefault(path, []).append(
             "an effect is next, prev, toggle, digit, clear, reset, none, {to: VALUE} or "
-            "{add: AMOUNT}; or a map from each action of the step to one of these")
+            "{add: AMOUNT}; or a map from each action of the step to one of these"
+        )
     problems = []
     for path, messages in by_path.items():
         # a union that failed every branch reports each; keep the most specific one
@@ -191,15 +228,26 @@ def schema_problems(error: ValidationError, text: str | None = None) -> list[Pro
     return problems
 
 
-def parse_model(data: Any, source: str | None = None, text: str | None = None,
-                check: bool = True) -> ApplianceModel:
+def parse_model(
+    data: Any, source: str | None = None, text: str | None = None, check: bool = True
+) -> ApplianceModel:
     """Validate plain data as a model; with ``check``, also run the semantic checks.
 
     Raises :class:`ModelError` when there is any error (warnings alone do not raise).
     """
     if not isinstance(data, dict):
-        raise ModelError([Problem((), "a model is a mapping with keys appliance, controls, "
-                                      "variables, actions, features", "schema", line=1)], source)
+        raise ModelError(
+            [
+                Problem(
+                    (),
+                    "a model is a mapping with keys appliance, controls, "
+                    "variables, actions, features",
+                    "schema",
+                    line=1,
+                )
+            ],
+            source,
+        )
     try:
         model = ApplianceModel.model_validate(data)
     except ValidationError as exc:
@@ -209,8 +257,10 @@ def parse_model(data: Any, source: str | None = None, text: str | None = None,
 
         problems = check_model(model)
         if any(p.severity == "error" for p in problems):
-            located = [Problem(p.path, p.message, p.check, p.severity, line_of(text, p.path))
-                       for p in problems]
+            located = [
+                Problem(p.path, p.message, p.check, p.severity, line_of(text, p.path))
+                for p in problems
+            ]
             raise ModelError(located, source)
     return model
 
@@ -221,11 +271,13 @@ def load_model(source: str | Path, check: bool = True) -> ApplianceModel:
     try:
         text = path.read_text(encoding="utf-8")
     except OSError as exc:
-        raise ModelError([Problem((), f"cannot read the file: {exc.strerror}", "io")],
-                         str(path)) from None
+        raise ModelError(
+            [Problem((), f"cannot read the file: {exc.strerror}", "io")], str(path)
+        ) from None
     except UnicodeDecodeError as exc:
-        raise ModelError([Problem((), f"not UTF-8 text (byte {exc.start})", "io")],
-                         str(path)) from None
+        raise ModelError(
+            [Problem((), f"not UTF-8 text (byte {exc.start})", "io")], str(path)
+        ) from None
     return parse_model(read_yaml(text, str(path)), str(path), text, check=check)
 
 
@@ -238,4 +290,3 @@ def model_to_yaml(model: ApplianceModel) -> str:
     """The model as YAML text, without defaults, ready to be loaded again."""
     data = model.model_dump(mode="json", exclude_defaults=True)
     return dump_yaml(data)
-

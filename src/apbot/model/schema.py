@@ -265,8 +265,9 @@ class TimeVariable(_Variable, _TimeChecks):
     def _domain_given_once(self) -> TimeVariable:
         _check_domain_given_once(self, self.ranges is not None)
         if self.entry is not None and self.entry.format == "number":
-            raise ValueError("a time variable's keypad entry is mm:ss, hh:mm, h:mm, hh:mm:ss, "
-                             "minutes or seconds")
+            raise ValueError(
+                "a time variable's keypad entry is mm:ss, hh:mm, h:mm, hh:mm:ss, minutes or seconds"
+            )
         return self
 
 
@@ -359,8 +360,9 @@ class Guard(_Strict):
         def fix(item: Any) -> Any:
             return str(item).lower() if isinstance(item, bool) else item
 
-        return {k: ([fix(i) for i in v] if isinstance(v, list) else fix(v))
-                for k, v in value.items()}
+        return {
+            k: ([fix(i) for i in v] if isinstance(v, list) else fix(v)) for k, v in value.items()
+        }
 
 
 class Display(_Strict):
@@ -388,7 +390,6 @@ class ApplianceModel(_Strict):
     def control(self, control_id: str) -> Control | None:
         """The control with this id, if any."""
         return next((c for c in self.controls if c.id == control_id), None)
-
 
 
 TEMPLATE_FIELD = re.compile(r"\{([a-z][a-z0-9_]*)\}")

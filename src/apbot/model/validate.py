@@ -64,59 +64,75 @@ def _references(model: ApplianceModel) -> Iterator[Problem]:
     seen: set[str] = set()
     for i, control in enumerate(model.controls):
         if control.id in seen:
-            yield Problem(("controls", i, "id"), f"control {control.id!r} is declared twice",
-                          "reference")
+            yield Problem(
+                ("controls", i, "id"), f"control {control.id!r} is declared twice", "reference"
+            )
         seen.add(control.id)
     for name, action in model.actions.items():
         for cid in action.control_ids:
             if cid not in controls:
                 key = "control" if action.control else "controls"
-                yield Problem(("actions", name, key), _unknown("control", cid, controls),
-                              "reference")
+                yield Problem(
+                    ("actions", name, key), _unknown("control", cid, controls), "reference"
+                )
     for name, var in model.variables.items():
         if var.depends_on is not None and var.depends_on not in variables:
-            yield Problem(("variables", name, "depends_on"),
-                          _unknown("variable", var.depends_on, variables), "reference")
+            yield Problem(
+                ("variables", name, "depends_on"),
+                _unknown("variable", var.depends_on, variables),
+                "reference",
+            )
     for feature, steps in model.features.items():
         if not steps:
-            yield Problem(("features", feature), "a feature needs at least one step",
-                          "empty-action")
+            yield Problem(
+                ("features", feature), "a feature needs at least one step", "empty-action"
+            )
         for s, step in enumerate(steps):
             path = ("features", feature, s)
             if not step.actions:
-                yield Problem((*path, "actions"), "a step needs at least one action",
-                              "empty-action")
+                yield Problem(
+                    (*path, "actions"), "a step needs at least one action", "empty-action"
+                )
             for a, action in enumerate(step.actions):
                 if action not in actions:
-                    yield Problem((*path, "actions", a), _unknown("action", action, actions),
-                                  "unknown-action")
+                    yield Problem(
+                        (*path, "actions", a), _unknown("action", action, actions), "unknown-action"
+                    )
             if step.variable is not None and step.variable not in variables:
-                yield Problem((*path, "variable"), _unknown("variable", step.variable, variables),
-                              "reference")
+                yield Problem(
+                    (*path, "variable"), _unknown("variable", step.variable, variables), "reference"
+                )
             if isinstance(step.effect, dict):
                 for action in step.effect:
                     if action not in step.actions:
-                        yield Problem((*path, "effect", action),
-                                      f"{action!r} has an effect here but is not one of the "
-                                      f"step's actions {step.actions}", "action-variable")
+                        yield Problem(
+                            (*path, "effect", action),
+                            f"{action!r} has an effect here but is not one of the "
+                            f"step's actions {step.actions}",
+                            "action-variable",
+                        )
             for target in [*step.set, *step.reset]:
                 if target not in variables:
                     key = "set" if target in step.set else "reset"
-                    yield Problem((*path, key), _unknown("variable", target, variables),
-                                  "reference")
+                    yield Problem(
+                        (*path, key), _unknown("variable", target, variables), "reference"
+                    )
     for g, guard in enumerate(model.guards):
         for name in guard.when:
             if name not in variables:
-                yield Problem(("guards", g, "when", name), _unknown("variable", name, variables),
-                              "reference")
+                yield Problem(
+                    ("guards", g, "when", name), _unknown("variable", name, variables), "reference"
+                )
         for a, action in enumerate(guard.only):
             if action not in actions:
-                yield Problem(("guards", g, "only", a), _unknown("action", action, actions),
-                              "unknown-action")
+                yield Problem(
+                    ("guards", g, "only", a), _unknown("action", action, actions), "unknown-action"
+                )
     for name in model.display.indicators:
         if name not in variables:
-            yield Problem(("display", "indicators"), _unknown("variable", name, variables),
-                          "reference")
+            yield Problem(
+                ("display", "indicators"), _unknown("variable", name, variables), "reference"
+            )
     for field in TEMPLATE_FIELD.findall(model.display.idle):
         if field not in variables:
             yield Problem(("display", "idle"), _unknown("variable", field, variables), "display")
@@ -125,9 +141,11 @@ def _references(model: ApplianceModel) -> Iterator[Problem]:
         for text in shows:
             for field in TEMPLATE_FIELD.findall(text):
                 if field not in (*variables, "value", "label"):
-                    yield Problem(("variables", name, "show"),
-                                  f"template field {{{field}}} is not a variable, "
-                                  "{value} or {label}", "display")
+                    yield Problem(
+                        ("variables", name, "show"),
+                        f"template field {{{field}}} is not a variable, {{value}} or {{label}}",
+                        "display",
+                    )
 
 
 # --- domains ----------------------------------------------------------------------------------
@@ -149,26 +167,38 @@ def _domains(model: ApplianceModel) -> tuple[dict[str, list[Domain]], list[Probl
         if parent is None:
             continue
         if not isinstance(parent, DiscreteVariable) or parent.depends_on is not None:
-            problems.append(Problem((*path, "depends_on"),
-                                    f"{var.depends_on!r} must be an independent discrete variable "
-                                    "(a programme or menu) to select cases", "dependent"))
+            problems.append(
+                Problem(
+                    (*path, "depends_on"),
+                    f"{var.depends_on!r} must be an independent discrete variable "
+                    "(a programme or menu) to select cases",
+                    "dependent",
+                )
+            )
             continue
         parent_values = parent.values or []
         domains[name] = []
         for key, case in (var.cases or {}).items():
             if key not in parent_values:
-                problems.append(Problem((*path, "cases", key),
-                                        f"{key!r} is not a value of {var.depends_on!r} "
-                                        f"({parent_values})" + _close(key, parent_values),
-                                        "dependent"))
+                problems.append(
+                    Problem(
+                        (*path, "cases", key),
+                        f"{key!r} is not a value of {var.depends_on!r} "
+                        f"({parent_values})" + _close(key, parent_values),
+                        "dependent",
+                    )
+                )
                 continue
             try:
                 domains[name].append(build_domain(var, case))
             except DomainError as exc:
                 problems.append(Problem((*path, "cases", key), str(exc), "domain"))
         if not var.cases or not any(k in parent_values for k in var.cases):
-            problems.append(Problem((*path, "cases"), "no case matches a value of "
-                                    f"{var.depends_on!r}", "dependent"))
+            problems.append(
+                Problem(
+                    (*path, "cases"), f"no case matches a value of {var.depends_on!r}", "dependent"
+                )
+            )
     return domains, problems
 
 
@@ -192,17 +222,26 @@ def _steps(model: ApplianceModel, domains: Mapping[str, list[Domain]]) -> Iterat
         control = model.control(action.control_ids[0])
         if action.digit is not None:
             if not has_keypad or control is None or control.kind != "key":
-                yield Problem(("actions", name, "digit"),
-                              "a digit action must press a keypad key (a control of kind `key`)"
-                              if has_keypad else "digit actions on a model without a keypad: "
-                              "declare the keypad keys as controls of kind `key`", "keypad")
+                yield Problem(
+                    ("actions", name, "digit"),
+                    "a digit action must press a keypad key (a control of kind `key`)"
+                    if has_keypad
+                    else "digit actions on a model without a keypad: "
+                    "declare the keypad keys as controls of kind `key`",
+                    "keypad",
+                )
             if action.skill != "press":
                 yield Problem(("actions", name, "skill"), "keypad digits are pressed", "keypad")
-        if action.skill in ("turn_cw", "turn_ccw") and control is not None and \
-                control.kind not in ("dial", "knob"):
-            yield Problem(("actions", name, "skill"),
-                          f"{action.skill} needs a dial or knob; {control.id!r} is a "
-                          f"{control.kind}", "control")
+        if (
+            action.skill in ("turn_cw", "turn_ccw")
+            and control is not None
+            and control.kind not in ("dial", "knob")
+        ):
+            yield Problem(
+                ("actions", name, "skill"),
+                f"{action.skill} needs a dial or knob; {control.id!r} is a {control.kind}",
+                "control",
+            )
     for feature, steps in model.features.items():
         changes_something = False
         for s, step in enumerate(steps):
@@ -212,51 +251,78 @@ def _steps(model: ApplianceModel, domains: Mapping[str, list[Domain]]) -> Iterat
             if step.set or step.reset:
                 changes_something = True
             if step.variable is None:
-                if (isinstance(step.effect, dict) and value_effects) or (step.effect not in (
-                        None, "none") and not isinstance(step.effect, dict)):
-                    yield Problem((*path, "effect"), "this step has an effect but no `variable`"
-                                  " to apply it to; name the variable it adjusts",
-                                  "missing-variable")
+                if (isinstance(step.effect, dict) and value_effects) or (
+                    step.effect not in (None, "none") and not isinstance(step.effect, dict)
+                ):
+                    yield Problem(
+                        (*path, "effect"),
+                        "this step has an effect but no `variable`"
+                        " to apply it to; name the variable it adjusts",
+                        "missing-variable",
+                    )
                 continue
             changes_something = True
             var = model.variables[step.variable]
             doms = domains.get(step.variable, [])
-            if step.effect is None and len(step.actions) > 1 and not all(
-                    model.actions[a].digit is not None for a in step.actions
-                    if a in model.actions):
-                yield Problem((*path, "effect"), f"{len(step.actions)} actions adjust "
-                              f"{step.variable!r} but the step does not say how; give `effect` "
-                              "as a map, e.g. {press_up: next, press_down: prev}",
-                              "action-variable")
+            if (
+                step.effect is None
+                and len(step.actions) > 1
+                and not all(
+                    model.actions[a].digit is not None for a in step.actions if a in model.actions
+                )
+            ):
+                yield Problem(
+                    (*path, "effect"),
+                    f"{len(step.actions)} actions adjust "
+                    f"{step.variable!r} but the step does not say how; give `effect` "
+                    "as a map, e.g. {press_up: next, press_down: prev}",
+                    "action-variable",
+                )
             digit_actions = [a for a, e in effects.items() if e == "digit"]
             other_value = [a for a, e in value_effects.items() if e not in ("digit", "clear")]
             if digit_actions:
                 if other_value:
-                    yield Problem((*path, "effect"), "keypad digits and other value changes "
-                                  f"({other_value}) share a step; the input buffer belongs to "
-                                  "one step, so give the others a step of their own",
-                                  "keypad-buffer")
+                    yield Problem(
+                        (*path, "effect"),
+                        "keypad digits and other value changes "
+                        f"({other_value}) share a step; the input buffer belongs to "
+                        "one step, so give the others a step of their own",
+                        "keypad-buffer",
+                    )
                 entry = getattr(var, "entry", None)
                 if entry is None:
-                    yield Problem(("variables", step.variable, "entry"),
-                                  f"keypad digits set {step.variable!r} in "
-                                  f"features.{feature}[{s}] but it declares no `entry` format "
-                                  "to read the typed digits", "keypad-buffer")
+                    yield Problem(
+                        ("variables", step.variable, "entry"),
+                        f"keypad digits set {step.variable!r} in "
+                        f"features.{feature}[{s}] but it declares no `entry` format "
+                        "to read the typed digits",
+                        "keypad-buffer",
+                    )
                 for a in digit_actions:
                     if model.actions[a].digit is None:
-                        yield Problem((*path, "effect", a),
-                                      f"{a!r} types a digit but the action declares no `digit`",
-                                      "keypad")
+                        yield Problem(
+                            (*path, "effect", a),
+                            f"{a!r} types a digit but the action declares no `digit`",
+                            "keypad",
+                        )
             for action, effect in value_effects.items():
                 message = _effect_problem(effect, var, doms)
                 if message:
-                    yield Problem((*path, "effect") if not isinstance(step.effect, dict)
-                                  else (*path, "effect", action), message, "action-variable")
+                    yield Problem(
+                        (*path, "effect")
+                        if not isinstance(step.effect, dict)
+                        else (*path, "effect", action),
+                        message,
+                        "action-variable",
+                    )
             for target, value in step.set.items():
                 target_var = model.variables[target]
                 if target == step.variable:
-                    yield Problem((*path, "set", target), "a step cannot both adjust and `set` "
-                                  "the same variable", "action-variable")
+                    yield Problem(
+                        (*path, "set", target),
+                        "a step cannot both adjust and `set` the same variable",
+                        "action-variable",
+                    )
                 try:
                     for dom in domains.get(target, []):
                         if _in_some(value, target_var, [dom]):
@@ -266,12 +332,19 @@ def _steps(model: ApplianceModel, domains: Mapping[str, list[Domain]]) -> Iterat
                 except ValueProblem as exc:
                     yield Problem((*path, "set", target), str(exc), "action-variable")
             if step.variable in step.reset:
-                yield Problem((*path, "reset"), f"the step adjusts {step.variable!r} and also "
-                              "resets it, which undoes every press; remove it from `reset`",
-                              "action-variable")
+                yield Problem(
+                    (*path, "reset"),
+                    f"the step adjusts {step.variable!r} and also "
+                    "resets it, which undoes every press; remove it from `reset`",
+                    "action-variable",
+                )
         if not changes_something:
-            yield Problem(("features", feature), "no step of this feature adjusts a variable "
-                          "or sets one; name the variable each step adjusts", "missing-variable")
+            yield Problem(
+                ("features", feature),
+                "no step of this feature adjusts a variable "
+                "or sets one; name the variable each step adjusts",
+                "missing-variable",
+            )
 
 
 def _in_some(value: Any, var: Any, doms: list[Domain]) -> bool:
@@ -295,8 +368,10 @@ def _effect_problem(effect: Any, var: Any, doms: list[Domain]) -> str | None:
             try:
                 time_step_seconds(effect.add)
             except ValueError:
-                return (f"add {effect.add!r}: give seconds (30, -30) or HH:MM:SS "
-                        "(\"00:00:30\", \"-00:00:30\")")
+                return (
+                    f"add {effect.add!r}: give seconds (30, -30) or HH:MM:SS "
+                    '("00:00:30", "-00:00:30")'
+                )
     if isinstance(effect, GoTo) and not _in_some(effect.to, var, doms):
         values = [v for d in doms for v in d.values][:8]
         return f"go-to value {effect.to!r} is not a value of the variable ({values})"
@@ -310,14 +385,22 @@ def _coverage(model: ApplianceModel) -> Iterator[Problem]:
     used_actions = {a for steps in model.features.values() for s in steps for a in s.actions}
     for name in model.actions:
         if name not in used_actions:
-            yield Problem(("actions", name), f"action {name!r} appears in no feature; add it "
-                          "to the step it belongs to or remove it", "action-coverage")
+            yield Problem(
+                ("actions", name),
+                f"action {name!r} appears in no feature; add it "
+                "to the step it belongs to or remove it",
+                "action-coverage",
+            )
     changed = {s.variable for steps in model.features.values() for s in steps if s.variable}
     changed |= {v for steps in model.features.values() for s in steps for v in [*s.set, *s.reset]}
     for name in model.variables:
         if name not in changed:
-            yield Problem(("variables", name), f"no feature changes {name!r}; name it as the "
-                          "`variable` of the step that adjusts it", "variable-coverage")
+            yield Problem(
+                ("variables", name),
+                f"no feature changes {name!r}; name it as the "
+                "`variable` of the step that adjusts it",
+                "variable-coverage",
+            )
 
 
 def _duplicates(model: ApplianceModel) -> Iterator[Problem]:
@@ -325,20 +408,29 @@ def _duplicates(model: ApplianceModel) -> Iterator[Problem]:
     for feature, steps in model.features.items():
         signature = repr([s.model_dump() for s in steps])
         if signature in signatures:
-            yield Problem(("features", feature), f"same steps as feature "
-                          f"{signatures[signature]!r}; keep one", "duplicate-sequence")
+            yield Problem(
+                ("features", feature),
+                f"same steps as feature {signatures[signature]!r}; keep one",
+                "duplicate-sequence",
+            )
         signatures.setdefault(signature, feature)
         for s, step in enumerate(steps):
             repeated = sorted({a for a in step.actions if step.actions.count(a) > 1})
             if repeated:
-                yield Problem(("features", feature, s, "actions"),
-                              f"{repeated[0]!r} is listed twice in one step", "duplicate-sequence")
+                yield Problem(
+                    ("features", feature, s, "actions"),
+                    f"{repeated[0]!r} is listed twice in one step",
+                    "duplicate-sequence",
+                )
         for s, (a, b) in enumerate(itertools.pairwise(steps)):
             if a.variable and a.variable == b.variable and set(a.actions) & set(b.actions):
-                yield Problem(("features", feature, s + 1),
-                              f"steps {s} and {s + 1} adjust {a.variable!r} with the same "
-                              "actions; merge them into one step", "duplicate-sequence",
-                              severity="warning")
+                yield Problem(
+                    ("features", feature, s + 1),
+                    f"steps {s} and {s + 1} adjust {a.variable!r} with the same "
+                    "actions; merge them into one step",
+                    "duplicate-sequence",
+                    severity="warning",
+                )
     claimed: dict[str, str] = {}
     for feature, steps in model.features.items():
         if not steps:
@@ -346,10 +438,13 @@ def _duplicates(model: ApplianceModel) -> Iterator[Problem]:
         first = [a for a in steps[0].actions if a in model.actions]
         if first and all(a in claimed for a in first):
             owners = sorted({claimed[a] for a in first})
-            yield Problem(("features", feature, 0, "actions"),
-                          f"feature {feature!r} can never start: every action of its first step "
-                          f"already starts {owners}; give it a distinct first action or merge "
-                          "the features", "duplicate-sequence")
+            yield Problem(
+                ("features", feature, 0, "actions"),
+                f"feature {feature!r} can never start: every action of its first step "
+                f"already starts {owners}; give it a distinct first action or merge "
+                "the features",
+                "duplicate-sequence",
+            )
         for action in first:
             claimed.setdefault(action, feature)
 
@@ -364,22 +459,35 @@ def _guards(model: ApplianceModel) -> Iterator[Problem]:
         for name, wanted in guard.when.items():
             var = model.variables[name]
             if var.depends_on is not None:
-                yield Problem(("guards", g, "when", name), "guard conditions use independent "
-                              "variables (power, child lock, running)", "guard")
+                yield Problem(
+                    ("guards", g, "when", name),
+                    "guard conditions use independent variables (power, child lock, running)",
+                    "guard",
+                )
                 continue
             domain = build_domain(var)
             for value in wanted if isinstance(wanted, list) else [wanted]:
                 if _value_index(domain, value) is None:
-                    yield Problem(("guards", g, "when", name), f"{value!r} is not a value of "
-                                  f"{name!r} ({list(domain.values)[:8]})", "guard")
-        releasing = [s for steps in model.features.values() for s in steps
-                     if any(a in guard.only for a in s.actions)
-                     and (s.variable in guard.when or any(v in guard.when
-                                                          for v in [*s.set, *s.reset]))]
+                    yield Problem(
+                        ("guards", g, "when", name),
+                        f"{value!r} is not a value of {name!r} ({list(domain.values)[:8]})",
+                        "guard",
+                    )
+        releasing = [
+            s
+            for steps in model.features.values()
+            for s in steps
+            if any(a in guard.only for a in s.actions)
+            and (s.variable in guard.when or any(v in guard.when for v in [*s.set, *s.reset]))
+        ]
         if not releasing:
-            yield Problem(("guards", g, "only"), "no allowed action changes "
-                          f"{sorted(guard.when)}, so once the guard holds nothing can lift it; "
-                          "allow the action that releases it", "guard")
+            yield Problem(
+                ("guards", g, "only"),
+                "no allowed action changes "
+                f"{sorted(guard.when)}, so once the guard holds nothing can lift it; "
+                "allow the action that releases it",
+                "guard",
+            )
 
 
 def _controls(model: ApplianceModel) -> Iterator[Problem]:
@@ -388,12 +496,19 @@ def _controls(model: ApplianceModel) -> Iterator[Problem]:
         if control.box is not None:
             x0, y0, x1, y1 = control.box
             if x1 <= x0 or y1 <= y0:
-                yield Problem(("controls", i, "box"), f"box {list(control.box)} is empty; write "
-                              "[left, top, right, bottom] with right > left and bottom > top",
-                              "control")
+                yield Problem(
+                    ("controls", i, "box"),
+                    f"box {list(control.box)} is empty; write "
+                    "[left, top, right, bottom] with right > left and bottom > top",
+                    "control",
+                )
         if control.id not in used:
-            yield Problem(("controls", i), f"control {control.id!r} is used by no action",
-                          "control", severity="warning")
+            yield Problem(
+                ("controls", i),
+                f"control {control.id!r} is used by no action",
+                "control",
+                severity="warning",
+            )
 
 
 # --- reachability ----------------------------------------------------------------------------
@@ -411,13 +526,24 @@ def _reachability(model: ApplianceModel) -> Iterator[Problem]:
             reached = reachable_indices(compiled, v, case)
             missing = [domain.values[i] for i in range(len(domain)) if i not in reached]
             if missing:
-                where = ("variables", var.name) if var.parent < 0 else (
-                    "variables", var.name, "cases",
-                    compiled.vars[var.parent].domains[0].values[case])  # type: ignore[union-attr]
+                where = (
+                    ("variables", var.name)
+                    if var.parent < 0
+                    else (
+                        "variables",
+                        var.name,
+                        "cases",
+                        compiled.vars[var.parent].domains[0].values[case],
+                    )
+                )  # type: ignore[union-attr]
                 shown = ", ".join(str(m) for m in missing[:6])
                 more = f" and {len(missing) - 6} more" if len(missing) > 6 else ""
-                yield Problem(where, f"no action can reach {shown}{more}; fix the ranges or the "
-                              "effects that adjust it", "unreachable-value")
+                yield Problem(
+                    where,
+                    f"no action can reach {shown}{more}; fix the ranges or the "
+                    "effects that adjust it",
+                    "unreachable-value",
+                )
 
 
 def reachable_indices(compiled: Any, v: int, case: int) -> set[int]:
@@ -441,8 +567,11 @@ def reachable_indices(compiled: Any, v: int, case: int) -> set[int]:
     typeable: set[int] = set()
     if typed:  # once, not once per digit key
         assert domain.magnitudes is not None
-        typeable = {i for i, m in enumerate(domain.magnitudes)
-                    if entry_digits(m, var.spec.entry) is not None}
+        typeable = {
+            i
+            for i, m in enumerate(domain.magnitudes)
+            if entry_digits(m, var.spec.entry) is not None
+        }
     reached = {domain.initial} | typeable
     frontier = list(reached)
     while frontier:
@@ -482,12 +611,18 @@ def check_goal(model: ApplianceModel, goal: Mapping[str, Any]) -> list[Problem]:
                 continue
             case = (var.cases or {}).get(parent_value)
             if case is None:
-                problems.append(Problem(path, f"{name!r} does not exist when {var.depends_on} is "
-                                        f"{parent_value!r}", "goal"))
+                problems.append(
+                    Problem(
+                        path,
+                        f"{name!r} does not exist when {var.depends_on} is {parent_value!r}",
+                        "goal",
+                    )
+                )
             else:
                 try:
                     normalise(var, value, build_domain(var, case))
                 except ValueProblem as exc:
-                    problems.append(Problem(path, f"{exc} when {var.depends_on} is "
-                                            f"{parent_value!r}", "goal"))
+                    problems.append(
+                        Problem(path, f"{exc} when {var.depends_on} is {parent_value!r}", "goal")
+                    )
     return problems

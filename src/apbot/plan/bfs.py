@@ -11,8 +11,9 @@ from apbot.plan.goals import CompiledGoal
 from apbot.sim.compiled import CompiledModel, State
 
 
-def shortest_plan_length(compiled: CompiledModel, start: State, goal: Mapping[str, Any],
-                         max_states: int = 2_000_000) -> int | None:
+def shortest_plan_length(
+    compiled: CompiledModel, start: State, goal: Mapping[str, Any], max_states: int = 2_000_000
+) -> int | None:
     """Length of the shortest action sequence reaching ``goal`` (canonical values), or None
     when it is unreachable. Raises RuntimeError if more than ``max_states`` states are seen."""
     target = CompiledGoal.build(compiled, goal)
@@ -45,8 +46,9 @@ def random_walk(compiled: CompiledModel, rng: Any, steps: int) -> State:
     return state
 
 
-def compare_with_bfs(model: Any, goal: Mapping[str, Any], start: State | None = None,
-                     max_states: int = 200_000) -> tuple[int | None, int | None]:
+def compare_with_bfs(
+    model: Any, goal: Mapping[str, Any], start: State | None = None, max_states: int = 200_000
+) -> tuple[int | None, int | None]:
     """(planner length, BFS length) for one goal from ``start`` (default: the initial state);
     None = unreachable."""
     from apbot.model.goal import parse_goal

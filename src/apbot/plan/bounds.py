@@ -29,9 +29,9 @@ INF = float("inf")
 _ABSENT = ("absent",)  # a dependent setting that does not exist in the current programme
 
 
-def _value_graph(compiled: CompiledModel, v: int, only_case: int | None = None,
-                 reset_cost: int = 0
-                 ) -> tuple[dict[Any, list[tuple[Any, int]]], list[tuple[Any, int]]]:
+def _value_graph(
+    compiled: CompiledModel, v: int, only_case: int | None = None, reset_cost: int = 0
+) -> tuple[dict[Any, list[tuple[Any, int]]], list[tuple[Any, int]]]:
     """Reverse edges ``to -> [(from, cost)]`` over canonical values, and "from anywhere" edges.
 
     ``only_case`` keeps a programme-dependent setting inside one programme's domain (the goal's).
@@ -41,8 +41,11 @@ def _value_graph(compiled: CompiledModel, v: int, only_case: int | None = None,
     var = compiled.vars[v]
 
     def cases() -> list[tuple[int, Any]]:
-        return [(c, d) for c, d in enumerate(var.domains)
-                if d is not None and (only_case is None or c == only_case)]
+        return [
+            (c, d)
+            for c, d in enumerate(var.domains)
+            if d is not None and (only_case is None or c == only_case)
+        ]
 
     reverse: dict[Any, list[tuple[Any, int]]] = {}
     anywhere: list[tuple[Any, int]] = []
@@ -66,8 +69,9 @@ def _value_graph(compiled: CompiledModel, v: int, only_case: int | None = None,
                 elif effect[0] == DIGIT and entry is not None and not typed:
                     typed = True  # every digit key of the step offers the same values
                     allowed = {value for _, d in cases() for value in d.values}
-                    anywhere.extend(item for item in typeable_values(compiled, v)
-                                    if item[0] in allowed)
+                    anywhere.extend(
+                        item for item in typeable_values(compiled, v) if item[0] in allowed
+                    )
         for target, tables in step.side:
             if target == v:
                 for case, domain in cases():
@@ -76,8 +80,10 @@ def _value_graph(compiled: CompiledModel, v: int, only_case: int | None = None,
                         anywhere.append((domain.values[table[0]], 0))
     if var.parent >= 0:  # a programme change restores the new programme's default
         if only_case is None:
-            anywhere.extend((_ABSENT, reset_cost) if d is None
-                            else (d.values[d.initial], reset_cost) for d in var.domains)
+            anywhere.extend(
+                (_ABSENT, reset_cost) if d is None else (d.values[d.initial], reset_cost)
+                for d in var.domains
+            )
         else:
             anywhere.extend((d.values[d.initial], 0) for _, d in cases())
     return reverse, anywhere
@@ -101,9 +107,13 @@ def typeable_values(compiled: CompiledModel, v: int) -> list[tuple[Any, int]]:
     return cache[v]
 
 
-def distances_to(compiled: CompiledModel, v: int, goal_value: Any,
-                 only_case: int | None = None, reset_cost: int = 0
-                 ) -> tuple[dict[Any, float], float]:
+def distances_to(
+    compiled: CompiledModel,
+    v: int,
+    goal_value: Any,
+    only_case: int | None = None,
+    reset_cost: int = 0,
+) -> tuple[dict[Any, float], float]:
     """Fewest main actions from each value to ``goal_value``, and the cost from anywhere."""
     reverse, anywhere = _value_graph(compiled, v, only_case, reset_cost)
     dist: dict[Any, float] = {goal_value: 0}
@@ -138,9 +148,11 @@ class LowerBound:
                 cache[key] = self._table(v, goal.canonical[name], goal_case, reset_cost)
             self.tables.append(cache[key])
         # steps where a partly typed buffer may finish a goal variable with one digit
-        self.typing_step = {s: step.variable for s, step in enumerate(compiled.steps)
-                            if step.variable in goal_vars
-                            and any(e[0] == DIGIT for e in step.effects.values())}
+        self.typing_step = {
+            s: step.variable
+            for s, step in enumerate(compiled.steps)
+            if step.variable in goal_vars and any(e[0] == DIGIT for e in step.effects.values())
+        }
 
     def __call__(self, state: State, continuing: bool = False) -> float:
         values = state.values
@@ -200,16 +212,22 @@ class LowerBound:
                 continue
             seen_parents.add(parent)
             steps = assigning.get(parent, set())
-            if any(compiled.steps[s].variable in goal_vars
-                   or compiled.steps[s].feature in entry_features for s in steps) \
-                    or steps & used_steps:
+            if (
+                any(
+                    compiled.steps[s].variable in goal_vars
+                    or compiled.steps[s].feature in entry_features
+                    for s in steps
+                )
+                or steps & used_steps
+            ):
                 continue
             used_steps |= steps
             charged.add(v)
         return charged
 
-    def _table(self, v: int, goal_value: Any, goal_case: int | None, reset_cost: int = 0
-               ) -> tuple[int, tuple[tuple[float, ...], ...], float]:
+    def _table(
+        self, v: int, goal_value: Any, goal_case: int | None, reset_cost: int = 0
+    ) -> tuple[int, tuple[tuple[float, ...], ...], float]:
         dist, anywhere = distances_to(self.compiled, v, goal_value, goal_case, reset_cost)
         per_case = []
         for case, d in enumerate(self.compiled.vars[v].domains):
@@ -250,8 +268,9 @@ class LowerBound:
         return names
 
 
-def _entry_requirements(compiled: CompiledModel, v: int,
-                        goal_vars: set[int]) -> tuple[frozenset[int], frozenset[str]] | None:
+def _entry_requirements(
+    compiled: CompiledModel, v: int, goal_vars: set[int]
+) -> tuple[frozenset[int], frozenset[str]] | None:
     """When every step adjusting ``v`` sits behind a step that adjusts no goal variable:
     the pointer positions from which no such entry press is needed, and the features involved.
     None when some step adjusting ``v`` can be entered directly."""

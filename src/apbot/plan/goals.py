@@ -24,7 +24,8 @@ class CompiledGoal:
         variables = tuple(compiled.var_index[n] for n in names)
         wanted = tuple(
             tuple(-2 if d is None else d.index.get(goal[n], -2) for d in compiled.vars[v].domains)
-            for n, v in zip(names, variables, strict=True))
+            for n, v in zip(names, variables, strict=True)
+        )
         return cls(names, variables, wanted, dict(goal))
 
     def holds(self, compiled: CompiledModel, state: State) -> bool:

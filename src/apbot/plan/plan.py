@@ -79,8 +79,12 @@ class Plan:
         return sum(len(m.actions) for m in self.macro_actions)
 
 
-def plan(model: ApplianceModel | CompiledModel, state: State | None,
-         goal: Mapping[str, Any] | Iterable[str], budget: int = DEFAULT_BUDGET) -> Plan:
+def plan(
+    model: ApplianceModel | CompiledModel,
+    state: State | None,
+    goal: Mapping[str, Any] | Iterable[str],
+    budget: int = DEFAULT_BUDGET,
+) -> Plan:
     """The shortest plan from ``state`` (None: the initial state) to ``goal``.
 
     ``goal`` maps variable names to values in any accepted notation ("30 min", "on"), or is a
@@ -96,8 +100,9 @@ def plan(model: ApplianceModel | CompiledModel, state: State | None,
     try:
         result = search.run(start)
     except SearchExhausted as exc:
-        raise Unreachable(_explain(compiled, search, start, canonical, exc),
-                          exc.budget_hit) from None
+        raise Unreachable(
+            _explain(compiled, search, start, canonical, exc), exc.budget_hit
+        ) from None
     macro_actions = _macro_actions(compiled, start, result.visits)
     found = Plan(canonical, macro_actions, result.expanded, time.perf_counter() - started)
     _verify(compiled, start, target, found)
@@ -110,14 +115,16 @@ def _planned(compiled: CompiledModel, action: int) -> PlannedAction:
     return PlannedAction(name, spec.skill, tuple(spec.control_ids), spec.seconds)
 
 
-def _macro_actions(compiled: CompiledModel, start: State,
-                   visits: tuple[Visit, ...]) -> tuple[MacroAction, ...]:
+def _macro_actions(
+    compiled: CompiledModel, start: State, visits: tuple[Visit, ...]
+) -> tuple[MacroAction, ...]:
     """Group visits into macro actions: a new one starts whenever a feature is (re)entered."""
     groups: list[list[Visit]] = []
     previous = start.step
     for visit in visits:
-        continues = previous >= 0 and (visit.step == previous or
-                                       compiled.steps[previous].next_step == visit.step)
+        continues = previous >= 0 and (
+            visit.step == previous or compiled.steps[previous].next_step == visit.step
+        )
         if groups and continues:
             groups[-1].append(visit)
         else:
@@ -137,11 +144,18 @@ def _macro_actions(compiled: CompiledModel, start: State,
                 changed.append(info.variable)
             changed.extend(v for v, _ in info.side)
         first = compiled.steps[group[0].step]
-        expect = {compiled.vars[v].name: compiled.value(state, compiled.vars[v].name)
-                  for v in dict.fromkeys(changed)}
-        macro_actions.append(MacroAction(
-            first.feature, tuple(compiled.steps[v.step].index for v in group),
-            tuple(_planned(compiled, a) for v in group for a in v.actions), expect))
+        expect = {
+            compiled.vars[v].name: compiled.value(state, compiled.vars[v].name)
+            for v in dict.fromkeys(changed)
+        }
+        macro_actions.append(
+            MacroAction(
+                first.feature,
+                tuple(compiled.steps[v.step].index for v in group),
+                tuple(_planned(compiled, a) for v in group for a in v.actions),
+                expect,
+            )
+        )
     return tuple(macro_actions)
 
 
@@ -157,12 +171,19 @@ def _verify(compiled: CompiledModel, start: State, goal: CompiledGoal, found: Pl
         raise AssertionError("planner bug: the plan does not reach the goal on the model")
 
 
-def _explain(compiled: CompiledModel, search: TaskSearch, start: State,
-             goal: dict[str, Any], exc: SearchExhausted) -> str:
+def _explain(
+    compiled: CompiledModel,
+    search: TaskSearch,
+    start: State,
+    goal: dict[str, Any],
+    exc: SearchExhausted,
+) -> str:
     """Why a goal is out of reach, in terms of the model."""
     if exc.budget_hit:
-        return (f"gave up after expanding {exc.expanded} search states (budget {search.budget});"
-                " the goal may be reachable but is too costly to plan — raise the budget")
+        return (
+            f"gave up after expanding {exc.expanded} search states (budget {search.budget});"
+            " the goal may be reachable but is too costly to plan — raise the budget"
+        )
     blocked = search.bound.blocking(start)
     if blocked:
         parts = []
@@ -170,12 +191,16 @@ def _explain(compiled: CompiledModel, search: TaskSearch, start: State,
             current = compiled.value(start, name)
             reach = _forward_values(compiled, start, compiled.var_index[name])
             shown = ", ".join(str(v) for v in reach[:8]) + (", ..." if len(reach) > 8 else "")
-            parts.append(f"{name} cannot become {goal[name]!r} from {current!r}: no action of "
-                         f"the model leads there (it can reach {shown})")
+            parts.append(
+                f"{name} cannot become {goal[name]!r} from {current!r}: no action of "
+                f"the model leads there (it can reach {shown})"
+            )
         return "; ".join(parts)
     names = ", ".join(f"{k}={v}" for k, v in goal.items())
-    return (f"no action sequence makes {names} hold together (searched {exc.expanded} states);"
-            " a guard or a programme restriction keeps them apart")
+    return (
+        f"no action sequence makes {names} hold together (searched {exc.expanded} states);"
+        " a guard or a programme restriction keeps them apart"
+    )
 
 
 def _forward_values(compiled: CompiledModel, start: State, v: int) -> list[Any]:

@@ -74,8 +74,9 @@ def relevant_variables(compiled: CompiledModel, goal: CompiledGoal) -> list[int]
 class TaskSearch:
     """A* from one state to one goal. Build per query; cheap to construct."""
 
-    def __init__(self, compiled: CompiledModel, goal: CompiledGoal,
-                 budget: int = DEFAULT_BUDGET) -> None:
+    def __init__(
+        self, compiled: CompiledModel, goal: CompiledGoal, budget: int = DEFAULT_BUDGET
+    ) -> None:
         self.compiled = compiled
         self.goal = goal
         self.budget = budget
@@ -86,7 +87,8 @@ class TaskSearch:
         # a keypad buffer matters only while typing a relevant variable
         self.keypad_step = tuple(
             step.variable in relevant_set and any(e[0] == DIGIT for e in step.effects.values())
-            for step in compiled.steps)
+            for step in compiled.steps
+        )
         self.bound = LowerBound(compiled, goal)
         self._visit_cache: dict[Hashable, list[tuple[tuple[int, ...], str, tuple[int, ...]]]] = {}
         self._footprints: dict[int, tuple[tuple[int, ...], tuple[int, ...]]] = {}
@@ -137,8 +139,9 @@ class TaskSearch:
         raise SearchExhausted("exhausted", expanded, False)
 
     @staticmethod
-    def _path(came_from: dict[Hashable, tuple[Hashable, Visit] | None],
-              node: Hashable) -> tuple[Visit, ...]:
+    def _path(
+        came_from: dict[Hashable, tuple[Hashable, Visit] | None], node: Hashable
+    ) -> tuple[Visit, ...]:
         visits: list[Visit] = []
         link = came_from[node]
         while link is not None:
@@ -171,19 +174,27 @@ class TaskSearch:
         reads, writes = self._footprint(step)
         continuing = state.step == step
         values = state.values
-        cache_key = (step, tuple(entry), tuple(values[r] for r in reads),
-                     state.buffer if continuing else "", continuing)
+        cache_key = (
+            step,
+            tuple(entry),
+            tuple(values[r] for r in reads),
+            state.buffer if continuing else "",
+            continuing,
+        )
         outcomes = self._visit_cache.get(cache_key)
         if outcomes is None:
             if self.keypad_step[step]:
                 exits = keypad_exits(self.compiled, state, step, entry, self._targets_for(v))
             else:
+
                 def inner_key(s: State) -> Hashable:
                     return (tuple(s.values[w] for w in writes), s.buffer)
 
                 exits = explore_visit(self.compiled, state, step, entry, inner_key)
-            outcomes = [(tuple(after.values[w] for w in writes), after.buffer, path)
-                        for after, path in exits]
+            outcomes = [
+                (tuple(after.values[w] for w in writes), after.buffer, path)
+                for after, path in exits
+            ]
             self._visit_cache[cache_key] = outcomes
         rebuilt = []
         for changed, buffer, path in outcomes:
@@ -203,8 +214,9 @@ class TaskSearch:
             info = compiled.steps[step]
             writes = {info.variable} | {target for target, _ in info.side}
             writes |= {d for w in list(writes) for d in compiled.dependents.get(w, ())}
-            reads = set(writes) | {compiled.vars[w].parent for w in writes
-                                   if compiled.vars[w].parent >= 0}
+            reads = set(writes) | {
+                compiled.vars[w].parent for w in writes if compiled.vars[w].parent >= 0
+            }
             reads |= {v for guard in compiled.guards for v, _ in guard.conditions}
             cached = (tuple(sorted(reads)), tuple(sorted(writes)))
             self._footprints[step] = cached
@@ -228,19 +240,26 @@ class TaskSearch:
             direct = typeable.get(goal_value, INF)
             # typing z and adjusting it in another step pays only if it costs about as much
             # as typing the goal; the slack covers side effects that visit may bring along
-            slack = 1 + sum(1 for step in self.compiled.steps for target, _ in step.side
-                            if target in self.goal.variables)
+            slack = 1 + sum(
+                1
+                for step in self.compiled.steps
+                for target, _ in step.side
+                if target in self.goal.variables
+            )
             for domain in var.domains:
                 if domain is None or domain.magnitudes is None:
                     continue
-                ranked = sorted((cost, i) for i, value in enumerate(domain.values)
-                                if value in typeable
-                                and (cost := typeable[value] + dist.get(value, INF))
-                                <= direct + slack)
+                ranked = sorted(
+                    (cost, i)
+                    for i, value in enumerate(domain.values)
+                    if value in typeable
+                    and (cost := typeable[value] + dist.get(value, INF)) <= direct + slack
+                )
                 for _, i in ranked[:SMALL_DOMAIN]:
                     magnitudes[domain.magnitudes[i]] = None
-        guard_sets = [ok for guard in self.compiled.guards for gv, ok in guard.conditions
-                      if gv == v]
+        guard_sets = [
+            ok for guard in self.compiled.guards for gv, ok in guard.conditions if gv == v
+        ]
         entry = getattr(var.spec, "entry", None)
         for domain in var.domains:
             if domain is None or domain.magnitudes is None:

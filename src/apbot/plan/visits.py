@@ -26,8 +26,13 @@ Exit = tuple[State, tuple[int, ...]]
 SMALL_DOMAIN = 64
 
 
-def explore_visit(compiled: CompiledModel, state: State, step: int, entry: Sequence[int],
-                  key: Callable[[State], Hashable]) -> list[Exit]:
+def explore_visit(
+    compiled: CompiledModel,
+    state: State,
+    step: int,
+    entry: Sequence[int],
+    key: Callable[[State], Hashable],
+) -> list[Exit]:
     """Every distinct (by ``key``) state a visit to ``step`` can end in, with its shortest
     action sequence. ``entry`` are the actions that move the pointer into the step."""
     apply = compiled.apply
@@ -77,26 +82,33 @@ def _ways_to_reach(buffer: str, wanted: str, width: int, overflow: str) -> list[
     """Digit strings that turn ``buffer`` into exactly ``wanted``."""
     ways = []
     if wanted.startswith(buffer) and len(wanted) <= width:
-        ways.append(wanted[len(buffer):])  # keep typing
+        ways.append(wanted[len(buffer) :])  # keep typing
     if overflow == "shift" and len(wanted) == width:
         for typed in range(1, width + 1):
             kept = width - typed  # the oldest digits shift out
-            if kept <= len(buffer) and buffer[len(buffer) - kept:] == wanted[:kept] and \
-                    len(buffer) + typed >= width:
+            if (
+                kept <= len(buffer)
+                and buffer[len(buffer) - kept :] == wanted[:kept]
+                and len(buffer) + typed >= width
+            ):
                 ways.append(wanted[kept:])
         ways.append(wanted)  # enough digits replace the whole buffer
     return ways
 
 
-def keypad_exits(compiled: CompiledModel, state: State, step: int, entry: Sequence[int],
-                 targets: Sequence[float]) -> list[Exit]:
+def keypad_exits(
+    compiled: CompiledModel, state: State, step: int, entry: Sequence[int], targets: Sequence[float]
+) -> list[Exit]:
     """Exits of a keypad visit: the entry actions alone, then typing each target magnitude."""
     info = compiled.steps[step]
     var = compiled.vars[info.variable]
     spec_entry = var.spec.entry  # type: ignore[union-attr]
     assert spec_entry is not None
-    digit_action = {str(compiled.model.actions[compiled.action_names[a]].digit): a
-                    for a in info.actions if info.effects[a][0] == DIGIT}
+    digit_action = {
+        str(compiled.model.actions[compiled.action_names[a]].digit): a
+        for a in info.actions
+        if info.effects[a][0] == DIGIT
+    }
     exits: list[Exit] = []
     for action in entry:  # the cheapest way through: one action
         after = compiled.apply(state, action)

@@ -205,10 +205,14 @@ class CompiledModel:
         self.first_steps = self._first_steps()
         self.targets = self._compile_targets()
         self.guards = self._compile_guards()
-        self.hold_seconds = tuple(model.actions[a].seconds if model.actions[a].skill == "hold"
-                                  else None for a in self.action_names)
-        self.digits = tuple(str(model.actions[a].digit) if model.actions[a].digit is not None
-                            else "" for a in self.action_names)
+        self.hold_seconds = tuple(
+            model.actions[a].seconds if model.actions[a].skill == "hold" else None
+            for a in self.action_names
+        )
+        self.digits = tuple(
+            str(model.actions[a].digit) if model.actions[a].digit is not None else ""
+            for a in self.action_names
+        )
         self.feature_names = list(model.features)
         self.cache: dict[str, Any] = {}  # planner data derived from this model, built lazily
 
@@ -221,8 +225,9 @@ class CompiledModel:
         parent_index = self.var_index[spec.depends_on]
         parent = build_domain(self.model.variables[spec.depends_on])
         cases = spec.cases or {}
-        domains = tuple(build_domain(spec, cases[value]) if value in cases else None
-                        for value in parent.values)
+        domains = tuple(
+            build_domain(spec, cases[value]) if value in cases else None for value in parent.values
+        )
         return VarInfo(name, spec, domains, parent_index)
 
     def _effect(self, effect: Any, var: VarInfo | None, action: int) -> tuple[Any, ...]:
@@ -233,8 +238,7 @@ class CompiledModel:
         if effect == "clear":
             reset = tuple(None if d is None else _index_table(d, d.initial) for d in var.domains)
             return (CLEAR, reset)
-        tables = tuple(None if d is None else _table_for(effect, d, var.spec)
-                       for d in var.domains)
+        tables = tuple(None if d is None else _table_for(effect, d, var.spec) for d in var.domains)
         assigns = effect == "reset" or isinstance(effect, GoTo)  # choosing, not stepping
         return (TABLE, tables, assigns)
 
@@ -245,22 +249,46 @@ class CompiledModel:
             for index, step in enumerate(feature_steps):
                 var = self.vars[self.var_index[step.variable]] if step.variable else None
                 action_ids = [self.action_index[a] for a in step.actions]
-                effects = {a: self._effect(default_effect(step, self.action_names[a], self.model),
-                                           var, a) for a in action_ids}
+                effects = {
+                    a: self._effect(default_effect(step, self.action_names[a], self.model), var, a)
+                    for a in action_ids
+                }
                 side: list[tuple[int, tuple[tuple[int, ...] | None, ...]]] = []
                 for target, value in step.set.items():
                     info = self.vars[self.var_index[target]]
-                    side.append((self.var_index[target], tuple(
-                        None if d is None else _table_for(GoTo(to=value), d, info.spec)
-                        for d in info.domains)))
+                    side.append(
+                        (
+                            self.var_index[target],
+                            tuple(
+                                None if d is None else _table_for(GoTo(to=value), d, info.spec)
+                                for d in info.domains
+                            ),
+                        )
+                    )
                 for target in step.reset:
                     info = self.vars[self.var_index[target]]
-                    side.append((self.var_index[target], tuple(
-                        None if d is None else _index_table(d, d.initial) for d in info.domains)))
+                    side.append(
+                        (
+                            self.var_index[target],
+                            tuple(
+                                None if d is None else _index_table(d, d.initial)
+                                for d in info.domains
+                            ),
+                        )
+                    )
                 next_step = base + index + 1 if index + 1 < len(feature_steps) else -1
-                steps.append(StepInfo(feature, index, self.var_index[step.variable]
-                                      if step.variable else -1, frozenset(action_ids), effects,
-                                      tuple(side), next_step, step.on_entry == "show"))
+                steps.append(
+                    StepInfo(
+                        feature,
+                        index,
+                        self.var_index[step.variable] if step.variable else -1,
+                        frozenset(action_ids),
+                        effects,
+                        tuple(side),
+                        next_step,
+                        step.on_entry == "show",
+                    )
+                )
         return tuple(steps)
 
     def _first_steps(self) -> dict[int, int]:
@@ -298,12 +326,14 @@ class CompiledModel:
                 domain = var.domains[0]
                 assert domain is not None
                 options = wanted if isinstance(wanted, list) else [wanted]
-                indices = frozenset(i for o in options
-                                    if (i := _value_index(domain, o)) is not None)
+                indices = frozenset(
+                    i for o in options if (i := _value_index(domain, o)) is not None
+                )
                 conditions.append((self.var_index[name], indices))
             allowed = frozenset(self.action_index[a] for a in guard.only)
-            guards.append(GuardInfo(tuple(conditions), allowed, guard.display, guard.name,
-                                    guard.hide))
+            guards.append(
+                GuardInfo(tuple(conditions), allowed, guard.display, guard.name, guard.hide)
+            )
         return tuple(guards)
 
     # --- running -----------------------------------------------------------------------------
@@ -379,8 +409,11 @@ class CompiledModel:
                 table = effect[1][var.case(new)]
                 if table is not None:
                     new[v] = table[new[v]]
-        if v >= 0 and v in self.dependents and (
-                new[v] != values[v] or kind == CLEAR or (kind == TABLE and effect[2])):
+        if (
+            v >= 0
+            and v in self.dependents
+            and (new[v] != values[v] or kind == CLEAR or (kind == TABLE and effect[2]))
+        ):
             self._reset_dependents(new, v)
         for target_var, tables in step.side:
             before = new[target_var]

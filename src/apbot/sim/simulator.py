@@ -48,8 +48,7 @@ class Simulator:
         self.model = self.compiled.model
         self.state: State = self.compiled.initial_state()
         self._display_cache: dict[tuple[int, int, int], str] = {}
-        self._plain_show = {v: _is_plain(var.spec.show) for v, var in
-                            enumerate(self.compiled.vars)}
+        self._plain_show = {v: _is_plain(var.spec.show) for v, var in enumerate(self.compiled.vars)}
 
     @property
     def actions(self) -> list[str]:
@@ -88,17 +87,21 @@ class Simulator:
         code = compiled.refusal(self.state, aid)
         if code is not None and code >= 0:
             guard = compiled.guards[code]
-            conditions = ", ".join(f"{compiled.vars[v].name} is "
-                                   f"{compiled.value(self.state, compiled.vars[v].name)}"
-                                   for v, _ in guard.conditions)
+            conditions = ", ".join(
+                f"{compiled.vars[v].name} is {compiled.value(self.state, compiled.vars[v].name)}"
+                for v, _ in guard.conditions
+            )
             allowed = [compiled.action_names[a] for a in sorted(guard.allowed)]
             verb = "works" if len(allowed) == 1 else "work"
-            reason = (f"{guard.name + ': ' if guard.name else ''}{conditions}; only "
-                      f"{', '.join(allowed)} {verb}")
+            reason = (
+                f"{guard.name + ': ' if guard.name else ''}{conditions}; only "
+                f"{', '.join(allowed)} {verb}"
+            )
             observation = self.observe()
             observation.display = guard.display
-            observation.values = {name: compiled.value(self.state, name)
-                                  for name in compiled.model.display.indicators}
+            observation.values = {
+                name: compiled.value(self.state, name) for name in compiled.model.display.indicators
+            }
             observation.focus = None
         elif code == NOT_HERE:
             reason = f"{name} does nothing here"
@@ -137,8 +140,9 @@ class Simulator:
                 values[name] = compiled.value(state, name)
         for name in compiled.model.display.indicators:
             values[name] = compiled.value(state, name)
-        return Observation(text, values, True, "", compiled.vars[focus].name if focus >= 0
-                           else None)
+        return Observation(
+            text, values, True, "", compiled.vars[focus].name if focus >= 0 else None
+        )
 
     def _show(self, state: State, v: int) -> str:
         var = self.compiled.vars[v]
