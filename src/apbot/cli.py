@@ -20,6 +20,7 @@ from apbot.model.problems import ModelError, Problem
 from apbot.model.schema import ApplianceModel
 
 if TYPE_CHECKING:
+    from apbot.agent.environment import FeedbackMode
     from apbot.agent.episode import TraceEvent
     from apbot.bench.suite import Suite, SuiteAppliance, Task
 
@@ -551,6 +552,13 @@ def bench(
         str, typer.Option(help="The model methods work from: true, faulty:RATE or read.")
     ] = "true",
     seed: Annotated[int, typer.Option(help="Seed for fault injection.")] = 0,
+    feedback: Annotated[
+        str,
+        typer.Option(
+            help="What the methods perceive: display (the panel's text, refusals only where "
+            "the appliance signals them) or values (the paper's simulator: shown values by name)."
+        ),
+    ] = "display",
     rerun: Annotated[
         bool,
         typer.Option(help="Discard the directory's finished results and run everything again."),
@@ -579,6 +587,7 @@ def bench(
         belief=belief,
         seed=seed,
         rerun=rerun,
+        feedback=_feedback_mode(feedback),
     )
     try:
         outcome = run_benchmark(options)
@@ -601,6 +610,16 @@ def bench(
         raise typer.Exit(130)
     if not no_report:
         _bench_report(outcome.out)
+
+
+def _feedback_mode(text: str) -> FeedbackMode:
+    """A ``--feedback`` value, checked (typer's Enum choices would print as classes)."""
+    from apbot.agent.environment import FEEDBACK_MODES
+
+    for mode in FEEDBACK_MODES:
+        if text == mode:
+            return mode
+    raise _fail(f"--feedback must be one of {', '.join(FEEDBACK_MODES)} (got {text!r})", 2)
 
 
 def _print_bench(summary: dict[str, Any]) -> None:
@@ -686,6 +705,9 @@ def run_command(
         str, typer.Option(help="The model the method works from: true or faulty:RATE.")
     ] = "true",
     seed: Annotated[int, typer.Option(help="Seed for fault injection.")] = 0,
+    feedback: Annotated[
+        str, typer.Option(help="What the method perceives: display or values.")
+    ] = "display",
     show_exploration: Annotated[
         bool, typer.Option(help="Print every exploring press, not only a count.")
     ] = False,
@@ -720,7 +742,9 @@ def run_command(
     console.print(f"goal: {', '.join(f'{k}={v}' for k, v in task.goal.items())}")
     printer = _LivePrinter(show_exploration)
     try:
-        record = run_task(found, task, method, belief, seed, observer=printer)
+        record = run_task(
+            found, task, method, belief, seed, observer=printer, feedback=_feedback_mode(feedback)
+        )
     except (KeyError, ValueError) as exc:
         raise _fail(str(exc.args[0] if isinstance(exc, KeyError) else exc), 2) from None
     printer.flush()

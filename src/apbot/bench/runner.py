@@ -26,7 +26,7 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
-from apbot.agent.environment import SimulatorEnvironment
+from apbot.agent.environment import FeedbackMode, SimulatorEnvironment
 from apbot.agent.episode import MAX_REASONING_STEPS, Episode, TaskContext, TraceEvent
 from apbot.agent.registry import get_method, methods
 from apbot.bench.beliefs import BeliefError, BeliefSpec, belief_model, parse_belief
@@ -39,7 +39,7 @@ from apbot.model.schema import ApplianceModel
 
 RUN_FILE = "run.json"
 SUMMARY_FILE = "summary.json"
-PINNED = ("suite", "belief", "seed")  # what a run directory cannot mix
+PINNED = ("suite", "belief", "seed", "feedback")  # what a run directory cannot mix
 
 
 class BenchError(ValueError):
@@ -64,6 +64,7 @@ class BenchOptions:
     belief: str = "true"
     seed: int = 0
     rerun: bool = False
+    feedback: FeedbackMode = "display"
 
 
 @dataclass
@@ -128,7 +129,13 @@ def _describe(exc: BaseException) -> str:
 
 
 def run_one(
-    method: str, belief: str, seed: int, appliance_id: str, task_id: str, suite: str
+    method: str,
+    belief: str,
+    seed: int,
+    appliance_id: str,
+    task_id: str,
+    suite: str,
+    feedback: FeedbackMode = "display",
 ) -> TaskRecord:
     """Run one method on one task and judge the result on the true simulator.
 
@@ -144,6 +151,7 @@ def run_one(
         belief,
         seed,
         belief_of=lambda spec: _belief(suite, appliance.id, spec, seed),
+        feedback=feedback,
     )
 
 
@@ -155,6 +163,7 @@ def run_task(
     seed: int = 0,
     observer: Callable[[TraceEvent], None] | None = None,
     belief_of: Callable[[BeliefSpec], tuple[ApplianceModel, Any]] | None = None,
+    feedback: FeedbackMode = "display",
 ) -> TaskRecord:
     """:func:`run_one` on objects: also for a task that is not in a suite (``apbot run``).
 
@@ -175,7 +184,7 @@ def run_task(
     started = time.perf_counter()
     spec = parse_belief(belief)
     chosen = get_method(method)
-    env = SimulatorEnvironment(appliance.model)
+    env = SimulatorEnvironment(appliance.model, feedback)
     episode, faults, error = Episode(), (), ""
     context: TaskContext | None = None
     try:
@@ -216,6 +225,7 @@ def run_task(
         key=record_key(method, str(spec), appliance.id, task.id),
         method=method,
         belief=str(spec),
+        feedback=feedback,
         appliance=appliance.id,
         category=appliance.category,
         task=task.id,
@@ -258,8 +268,10 @@ def _failure(
     return "; ".join(parts)
 
 
-def _run_batch(items: list[WorkItem], belief: str, seed: int, suite: str) -> list[TaskRecord]:
-    return [run_one(i.method, belief, seed, i.appliance, i.task, suite) for i in items]
+def _run_batch(
+    items: list[WorkItem], belief: str, seed: int, suite: str, feedback: FeedbackMode
+) -> list[TaskRecord]:
+    return [run_one(i.method, belief, seed, i.appliance, i.task, suite, feedback) for i in items]
 
 
 def _worker_init() -> None:
@@ -337,7 +349,12 @@ def _prepare_directory(options: BenchOptions, spec: BeliefSpec, work: list[WorkI
     """Write ``run.json``; refuse to mix another suite, belief or seed into the directory."""
     out = options.out
     run_file = out / RUN_FILE
-    wanted = {"suite": str(options.suite), "belief": str(spec), "seed": options.seed}
+    wanted = {
+        "suite": str(options.suite),
+        "belief": str(spec),
+        "seed": options.seed,
+        "feedback": options.feedback,
+    }
     previous: dict[str, Any] = {}
     if run_file.exists() and not options.rerun:
         try:
@@ -516,7 +533,15 @@ def _execute(
             for item in pending:
                 if stop.requested:
                     return
-                yield run_one(item.method, belief, options.seed, item.appliance, item.task, suite)
+                yield run_one(
+                    item.method,
+                    belief,
+                    options.seed,
+                    item.appliance,
+                    item.task,
+                    suite,
+                    options.feedback,
+                )
         except KeyboardInterrupt:
             stop.requested = True
         return
@@ -527,7 +552,11 @@ def _execute(
     try:
         while queue or running:
             while queue and len(running) < window and not stop.requested:
-                running.add(pool.submit(_run_batch, queue.popleft(), belief, options.seed, suite))
+                running.add(
+                    pool.submit(
+                        _run_batch, queue.popleft(), belief, options.seed, suite, options.feedback
+                    )
+                )
             if not running or stop.hard:
                 break
             finished, _ = wait(running, timeout=0.25, return_when=FIRST_COMPLETED)
