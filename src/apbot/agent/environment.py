@@ -8,8 +8,8 @@ model's names). Anything with ``actions``, ``reset`` and ``step`` is an environm
 
 >>> from apbot.examples import load_example
 >>> env = SimulatorEnvironment(load_example("washing_machine"))
->>> env.step("press_power").text
-'HELLO'
+>>> env.step("press_power").text  # the main display, then the lit lamps
+'HELLO  PAUSED'
 """
 
 from __future__ import annotations

@@ -13,7 +13,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
-from apbot.model.schema import TEMPLATE_FIELD, ApplianceModel, DiscreteVariable
+from apbot.model.display import lamp_for, show_template
+from apbot.model.schema import TEMPLATE_FIELD, ApplianceModel
 from apbot.sim.compiled import NOT_HERE, CompiledModel, State
 
 
@@ -182,13 +183,8 @@ class Simulator:
         if not spec.visible:
             return ""
         value = self.compiled.render_value(state, v)
-        show = spec.show
-        if isinstance(show, dict):
-            raw = self.compiled.value(state, var.name)
-            show = show.get(str(raw))
-        if show is None:
-            return f"{spec.display_label(var.name)} {value}".strip()
-        return self._template(show, state, value=value, label=spec.display_label(var.name))
+        show = show_template(spec, self.compiled.value(state, var.name))
+        return self._template(show, state, value=value, label=spec.display_label(var.name)).strip()
 
     def _template(self, text: str, state: State, **extra: str) -> str:
         def fill(match: Any) -> str:
@@ -214,13 +210,8 @@ class Simulator:
         return all(self.value(name) == value for name, value in goal.items())
 
 
-OFF_WORDS = frozenset({"off", "no", "none", "false", "disabled"})
-
-
 def lamp_text(compiled: CompiledModel, state: State, v: int) -> str:
-    """What an indicator lamp shows: its ``show`` text for the current value when that text
-    names no other variable ("LOCK", or "" for unlit); without one, nothing for an off value
-    and otherwise the label (an on/off lamp) or the label and the value ("CRUST DARK").
+    """What an indicator lamp shows now (:func:`apbot.model.display.lamp_for`).
 
     >>> from apbot.examples import load_example
     >>> compiled = CompiledModel(load_example("washing_machine"))
@@ -228,27 +219,8 @@ def lamp_text(compiled: CompiledModel, state: State, v: int) -> str:
     ''
     """
     var = compiled.vars[v]
-    spec = var.spec
-    if not spec.visible:
-        return ""
-    raw = compiled.value(state, var.name)
-    show = spec.show.get(str(raw)) if isinstance(spec.show, dict) else spec.show
-    label = spec.display_label(var.name)
-    if show is not None:
-        if set(TEMPLATE_FIELD.findall(show)) <= {"value", "label"}:
-            value = compiled.render_value(state, v)
-            return show.replace("{value}", value).replace("{label}", label).strip()
-        return ""
-    if raw is None or str(raw).casefold() in OFF_WORDS:
-        return ""
     values = var.domains[0].values if var.parent < 0 and var.domains[0] is not None else ()
-    if (
-        isinstance(spec, DiscreteVariable)
-        and len(values) == 2
-        and any(str(value).casefold() in OFF_WORDS for value in values)
-    ):
-        return label
-    return f"{label} {compiled.render_value(state, v)}".strip()
+    return lamp_for(var.spec, var.name, compiled.value(state, var.name), values)
 
 
 def _is_plain(show: Any) -> bool:
