@@ -7,7 +7,7 @@ import json
 import pytest
 from typer.testing import CliRunner
 
-from apbot.bench.oracle import run_oracle
+from apbot.bench.oracle import run_suite_oracle
 from apbot.bench.stats import suite_statistics
 from apbot.bench.suite import CATEGORIES, GOAL_VARIABLES, bundled_suite_dir, load_suite
 from apbot.bench.suite_check import check_appliance
@@ -34,7 +34,7 @@ def test_appliance_passes_every_check(appliance_id: str) -> None:
 
 
 def test_the_oracle_reaches_every_goal() -> None:
-    results = run_oracle(SUITE)
+    results = run_suite_oracle(SUITE)
     failed = [(r.appliance, r.task, r.error) for r in results if not r.success]
     assert failed == []
     stored = {(a.id, t.id): t.optimal_steps for a, t in SUITE.tasks}
