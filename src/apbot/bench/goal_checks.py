@@ -125,11 +125,35 @@ def _quick_start(
 
 
 def _start_only(compiled: CompiledModel, start: State, goal: Goal) -> Iterator[GoalFinding]:
+    """The plan for the running variables alone meets the goal, its settings untouched.
+
+    A setting that plan changes on the way counts only when the macro action that starts the
+    appliance changes it (a quick-start key); one the plan must select first (a programme
+    before START) is a real constraint.
+    """
     running = {k: v for k, v in goal.items() if k in RUN_VARIABLES}
     if not running or len(running) == len(goal):
         return
-    state = _final_state(compiled, start, running)
-    if state is not None and CompiledGoal.build(compiled, goal).holds(compiled, state):
+    try:
+        found = plan(compiled, start, running)
+    except Unreachable:
+        return
+    state = start
+    changed_by: dict[str, int] = {}
+    for index, macro in enumerate(found.macro_actions):
+        for action in macro.actions:
+            before = state
+            after = compiled.apply(state, compiled.action_index[action.name], action.seconds)
+            assert after is not None, "a verified plan was refused"
+            state = after
+            for name in goal:
+                if compiled.value(after, name) != compiled.value(before, name):
+                    changed_by[name] = index
+    if not CompiledGoal.build(compiled, goal).holds(compiled, state):
+        return
+    starter = max((changed_by[n] for n in running if n in changed_by), default=-1)
+    settings = [name for name in goal if name not in running]
+    if all(changed_by.get(name, starter) == starter for name in settings):
         yield GoalFinding(
             "start-only",
             f"a plan for {_shown(running)} alone already meets the goal: "

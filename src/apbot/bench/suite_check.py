@@ -181,7 +181,10 @@ def fill_optimal(appliance: SuiteAppliance) -> int:
         changed += best != task.optimal_steps
         tasks.append(task.model_copy(update={"optimal_steps": best}))
     if changed:
-        payload = {"appliance": data.appliance, "tasks": [t.model_dump(mode="json", exclude_defaults=True) for t in tasks]}
+        payload = {
+            "appliance": data.appliance,
+            "tasks": [t.model_dump(mode="json", exclude_defaults=True) for t in tasks],
+        }
         path.write_text(dump_yaml(payload), encoding="utf-8")
         appliance.tasks = tasks
     return changed
