@@ -13,8 +13,9 @@ such goals on the ground-truth model, by planning and simulating, never by readi
     A plan for the goal's running variables alone (``running=on`` …) already meets the whole
     goal: the settings are at their defaults or a starting key sets them, so they ask nothing.
 ``free``
-    A goal value is the variable's initial value and a plan for the rest of the goal leaves it
-    there: it pads the goal without constraining it.
+    A goal value is the variable's default (its initial value, or the value the goal's
+    programme gives it) and a plan for the rest of the goal leaves it there: it pads the goal
+    without constraining it.
 
 A task may record why a flagged variable is wanted anyway (the instruction says "don't start
 it", or names the default value on purpose) under ``allow:`` in ``tasks.yaml``, keyed by the
@@ -162,18 +163,39 @@ def _start_only(compiled: CompiledModel, start: State, goal: Goal) -> Iterator[G
 
 
 def _free(compiled: CompiledModel, start: State, goal: Goal) -> Iterator[GoalFinding]:
-    """A goal value that is the initial one and that a plan for the rest leaves alone."""
+    """A goal value that is the default and that a plan for the rest of the goal leaves alone.
+
+    The default is the initial value or, for a setting that depends on a programme the goal
+    names, the value selecting that programme gives it.
+    """
     for name, value in goal.items():
-        if compiled.value(start, name) != value:
+        default = _default(compiled, start, goal, name)
+        if default != value:
             continue
         rest = {k: v for k, v in goal.items() if k != name}
         state = start if not rest else _final_state(compiled, start, rest)
         if state is not None and compiled.value(state, name) == value:
             yield GoalFinding(
                 f"free:{name}",
-                f"{name}={value} is its initial value and a plan for the rest of the goal "
+                f"{name}={value} is its default and a plan for the rest of the goal "
                 "leaves it so: the goal asks nothing with it",
             )
+
+
+def _default(compiled: CompiledModel, start: State, goal: Goal, name: str) -> Any:
+    var = compiled.vars[compiled.var_index[name]]
+    if var.parent < 0:
+        return compiled.value(start, name)
+    parent = compiled.vars[var.parent]
+    if parent.name not in goal:
+        return compiled.value(start, name)
+    values = list(start.values)
+    parent_domain = parent.domain(values)
+    if parent_domain is None or goal[parent.name] not in parent_domain.index:
+        return None
+    values[var.parent] = parent_domain.index[goal[parent.name]]
+    domain = var.domain(values)
+    return None if domain is None else domain.values[domain.initial]
 
 
 def _shown(values: Mapping[str, Any]) -> str:
