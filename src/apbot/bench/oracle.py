@@ -93,19 +93,27 @@ class OracleResult:
 
 def run_task(appliance: SuiteAppliance, task: Task) -> OracleResult:
     """The oracle on one task, judged on the final state of a fresh ground-truth simulator."""
+    return run_task_with_plan(appliance, task)[0]
+
+
+def run_task_with_plan(
+    appliance: SuiteAppliance, task: Task
+) -> tuple[OracleResult, OraclePlanRun | None]:
+    """:func:`run_task`, and the run itself (None when the goal is invalid or unreachable)."""
     started = time.perf_counter()
     env = SimulatorEnvironment(appliance.model)
     try:
         run = run_oracle_plan(appliance.model, task.goal, env)
     except (GoalError, Unreachable) as exc:
         elapsed = (time.perf_counter() - started) * 1000
-        return OracleResult(
+        failed = OracleResult(
             appliance.id, appliance.category, task.id, False, 0, 0, elapsed, str(exc)
         )
+        return failed, None
     refused = run.refused
     success = not refused and env.simulator.satisfies(run.goal)
     error = f"refused: {refused}" if refused else "" if success else "the goal does not hold"
-    return OracleResult(
+    result = OracleResult(
         appliance.id,
         appliance.category,
         task.id,
@@ -115,6 +123,7 @@ def run_task(appliance: SuiteAppliance, task: Task) -> OracleResult:
         run.plan.seconds * 1000,
         error,
     )
+    return result, run
 
 
 def run_suite_oracle(suite: Suite) -> list[OracleResult]:

@@ -12,7 +12,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 from apbot.bench.goal_checks import CHECKS, goal_findings
-from apbot.bench.oracle import oracle_plan, run_task
+from apbot.bench.oracle import oracle_plan, run_task_with_plan
 from apbot.bench.suite import GOAL_VARIABLES, SuiteAppliance, Task, TaskFile
 from apbot.model.goal import Goal, GoalError, parse_goal
 from apbot.model.load import dump_yaml, read_yaml
@@ -133,8 +133,8 @@ def _oracle(
     appliance: SuiteAppliance, task: Task, goal: Goal, path: tuple[str | int, ...]
 ) -> Iterator[Problem]:
     """The oracle reaches the goal, ``optimal_steps`` is its length, the goal is specific."""
-    result = run_task(appliance, task)
-    if not result.success:
+    result, run = run_task_with_plan(appliance, task)
+    if run is None or not result.success:
         yield Problem((*path, "goal"), f"{task.id}: the oracle fails: {result.error}", "oracle")
         return
     if result.actions == 0:
@@ -148,7 +148,7 @@ def _oracle(
             f"finds {result.actions}; run `apbot suite fill-optimal`",
             "oracle",
         )
-    found = goal_findings(appliance.model, goal)
+    found = goal_findings(appliance.model, goal, run.plan)
     for finding in found:
         if finding.key not in task.allow:
             yield Problem((*path, "goal"), f"{task.id}: {finding.message}", finding.key)
