@@ -151,7 +151,12 @@ def _oracle(
     found = goal_findings(appliance.model, goal, run.plan)
     for finding in found:
         if finding.key not in task.allow:
-            yield Problem((*path, "goal"), f"{task.id}: {finding.message}", finding.key)
+            yield Problem(
+                (*path, "goal"),
+                f"{task.id}: {finding.message} (fix the task, or record why it is wanted "
+                f"under allow: {{{finding.key!r}: REASON}})",
+                finding.key,
+            )
     keys = {f.key for f in found}
     for key in task.allow:
         if key not in keys and key.partition(":")[0] in CHECKS:
