@@ -6,7 +6,8 @@ passes a "time defrost for 8:30" goal that says only ``running=on``). These chec
 such goals on the ground-truth model, by planning and simulating, never by reading the text:
 
 ``quick-start``
-    After the goal's settings are made, one press meets the whole goal and itself changes a
+    After the goal's settings are made, one press (possibly after a press that changes no
+    value, such as a START that confirms a clock) meets the whole goal and itself changes a
     variable outside the goal to a value the oracle does not leave: a quick-start or express
     key that starts *something else*, which the goal cannot tell apart.
 ``start-only``
@@ -30,6 +31,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from apbot.model.goal import Goal
+from apbot.model.schema import ApplianceModel
 from apbot.plan.goals import CompiledGoal
 from apbot.plan.plan import Plan, PlannedAction, Unreachable, plan
 from apbot.sim.compiled import CompiledModel, State, compiled_model
@@ -47,7 +49,9 @@ class GoalFinding:
     message: str
 
 
-def goal_findings(model: Any, goal: Goal, oracle: Plan | None = None) -> list[GoalFinding]:
+def goal_findings(
+    model: ApplianceModel | CompiledModel, goal: Goal, oracle: Plan | None = None
+) -> list[GoalFinding]:
     """Every finding for a canonical, reachable goal on the ground-truth ``model``.
 
     ``oracle`` is the goal's shortest plan when the caller has it already (it is not re-done).
