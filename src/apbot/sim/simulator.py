@@ -115,8 +115,9 @@ class Simulator:
                 f"{guard.name + ': ' if guard.name else ''}{conditions}; only "
                 f"{', '.join(allowed)} {verb}"
             )
-            if guard.display:
+            if guard.display:  # the message replaces the main display; every lamp stays lit
                 observation.display = guard.display
+                observation.lamps = self._lamps(-1)
                 observation.values = {
                     name: value
                     for name, value in observation.values.items()
@@ -162,14 +163,23 @@ class Simulator:
                 if compiled.model.variables[name].visible:
                     values[name] = compiled.value(state, name)
         self._indicator_values(values)
-        lamps = tuple(
+        return Observation(
+            text,
+            values,
+            True,
+            "",
+            compiled.vars[focus].name if focus >= 0 else None,
+            self._lamps(focus),
+        )
+
+    def _lamps(self, focus: int) -> tuple[str, ...]:
+        """The lit lamps, but for the variable the main display shows already."""
+        compiled = self.compiled
+        return tuple(
             lamp
             for name in compiled.model.display.indicators
-            if compiled.var_index[name] != focus  # on the main display already
-            and (lamp := lamp_text(compiled, state, compiled.var_index[name]))
-        )
-        return Observation(
-            text, values, True, "", compiled.vars[focus].name if focus >= 0 else None, lamps
+            if compiled.var_index[name] != focus
+            and (lamp := lamp_text(compiled, self.state, compiled.var_index[name]))
         )
 
     def _indicator_values(self, values: dict[str, Any]) -> None:
