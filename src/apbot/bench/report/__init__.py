@@ -1,0 +1,35 @@
+"""``apbot report DIR``: a benchmark run as Markdown and as one self-contained HTML page.
+
+The page is meant to be mailed or attached as a single file, so it carries everything inline:
+CSS, figures as base64 PNGs, no scripts and no external references (a Content-Security-Policy
+forbids them even if one slipped in). Model, instruction and trace text is untrusted input and
+is escaped wherever it lands. Apart from the generation timestamp the output depends only on
+the run directory, so two reports of the same run can be diffed.
+
+One module per job: :mod:`.snapshot` loads a run, :mod:`.content` says what the tables and
+facts hold, :mod:`.figures` draws them, :mod:`.markdown` and :mod:`.page` render the two
+formats, :mod:`.traces` is the trace viewer and :mod:`.write` writes the files.
+"""
+
+from apbot.bench.report.content import category_label, esc, failure_reason, value_text
+from apbot.bench.report.figures import ReportFigure, make_figures
+from apbot.bench.report.markdown import md_text, render_markdown
+from apbot.bench.report.page import render_html
+from apbot.bench.report.snapshot import ReportError, RunData, load_run
+from apbot.bench.report.write import write_report
+
+__all__ = [
+    "ReportError",
+    "ReportFigure",
+    "RunData",
+    "category_label",
+    "esc",
+    "failure_reason",
+    "load_run",
+    "make_figures",
+    "md_text",
+    "render_html",
+    "render_markdown",
+    "value_text",
+    "write_report",
+]
