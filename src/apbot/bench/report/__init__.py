@@ -6,19 +6,23 @@ forbids them even if one slipped in). Model, instruction and trace text is untru
 is escaped wherever it lands. Apart from the generation timestamp the output depends only on
 the run directory, so two reports of the same run can be diffed.
 
-One module per job: :mod:`.snapshot` loads a run, :mod:`.content` says what the tables and
-facts hold, :mod:`.figures` draws them, :mod:`.markdown` and :mod:`.page` render the two
-formats, :mod:`.traces` is the trace viewer and :mod:`.write` writes the files.
+One module per job: :mod:`.snapshot` reads a run directory once and derives everything from
+that read (with :mod:`.selection`, what the run set out to do), :mod:`.content` says what the
+tables and facts hold, :mod:`.text` turns values into safe text, :mod:`.figures` draws them,
+:mod:`.markdown` and :mod:`.page` render the two formats, :mod:`.traces` is the trace viewer
+and :mod:`.write` writes the files.
 """
 
-from apbot.bench.report.content import category_label, esc, failure_reason, value_text
+from apbot.bench.report.content import Progress, progress
 from apbot.bench.report.figures import ReportFigure, make_figures
 from apbot.bench.report.markdown import md_text, render_markdown
 from apbot.bench.report.page import render_html
 from apbot.bench.report.snapshot import ReportError, RunData, load_run
-from apbot.bench.report.write import write_report
+from apbot.bench.report.text import category_label, esc, failure_reason, value_text
+from apbot.bench.report.write import write_files, write_report
 
 __all__ = [
+    "Progress",
     "ReportError",
     "ReportFigure",
     "RunData",
@@ -28,8 +32,10 @@ __all__ = [
     "load_run",
     "make_figures",
     "md_text",
+    "progress",
     "render_html",
     "render_markdown",
     "value_text",
+    "write_files",
     "write_report",
 ]

@@ -1,19 +1,16 @@
-"""What the report says, in both formats: the reading guide, table cells, facts and reasons."""
+"""What the report says in both formats: the reading guide, table cells, facts, progress."""
 
 from __future__ import annotations
 
-import html
-import json
-from collections.abc import Mapping
-from typing import Any
+from dataclasses import dataclass
+from typing import Literal
 
 from apbot.agent.episode import MAX_REASONING_STEPS
 from apbot.bench import plots
-from apbot.bench.records import TaskRecord
+from apbot.bench.report.selection import RUN_FILE
 from apbot.bench.report.snapshot import FaultStudy, Metrics, RunData
-
-REASON_CHARS = 160
-
+from apbot.bench.report.text import category_label
+from apbot.bench.results import RESULTS_FILE
 
 READING_GUIDE = (
     "Every method gets the same tasks: an instruction and the target values of one or more "
@@ -43,11 +40,6 @@ SR_TABLE = ("sr", "reasoning_steps")
 
 
 SPL_TABLE = ("spl", "execution_steps")
-
-
-def category_label(name: str) -> str:
-    """``bottle_washer`` → ``Bottle washer``."""
-    return name.replace("_", " ").capitalize()
 
 
 def _cell_metrics(data: RunData, method: str, column: str) -> Metrics | None:
@@ -90,52 +82,6 @@ def table(data: RunData, keys: tuple[str, str]) -> tuple[list[str], list[list[tu
     return header, rows
 
 
-def _task_count(data: RunData) -> int:
-    counts = [m.overall.n for m in data.summary.methods.values()]
-    return max(counts, default=0)
-
-
-def _belief(data: RunData) -> str:
-    return data.summary.belief or str(data.run.get("belief", "")) or "unknown"
-
-
-def failure_reason(record: TaskRecord) -> str:
-    """Why a task failed, in one line."""
-    if record.success:
-        return ""
-    if record.failure:
-        reason = record.failure
-    elif record.reasoning_steps > MAX_REASONING_STEPS:
-        reason = f"over the limit of {MAX_REASONING_STEPS} reasoning steps"
-    elif record.claimed_success:
-        reason = "claimed success, but the goal does not hold in the true final state"
-    else:
-        reason = "stopped without reaching the goal"
-    reason = " ".join(reason.split())
-    return reason if len(reason) <= REASON_CHARS else reason[: REASON_CHARS - 1] + "…"
-
-
-def value_text(value: Any) -> str:
-    """A goal/trace value as plain text (strings bare, numbers short, the rest as JSON).
-
-    >>> value_text("Eco"), value_text(2.50), value_text([1, "a"]), value_text(None)
-    ('Eco', '2.5', '[1, "a"]', 'null')
-    """
-    if isinstance(value, str):
-        return value
-    if isinstance(value, bool) or value is None:
-        return json.dumps(value)
-    if isinstance(value, float):
-        return f"{value:g}"
-    if isinstance(value, int):
-        return str(value)
-    return json.dumps(value, ensure_ascii=False, sort_keys=True, default=str)
-
-
-def assignments(values: Mapping[str, Any]) -> str:
-    return ", ".join(f"{k}={value_text(v)}" for k, v in values.items())
-
-
 def pvalue_rows(data: RunData) -> tuple[list[str], list[list[tuple[str, bool]]]]:
     methods = [m for m in data.methods if m in data.summary.methods]
     rows = []
@@ -171,26 +117,81 @@ def fault_rows(study: FaultStudy) -> tuple[list[str], list[list[tuple[str, bool]
     for method, series in study.methods.items():
         row = [(method, False)]
         row += [
-            (f"{sr:.2f} / {spl:.2f}", False) for sr, spl in zip(series.sr, series.spl, strict=True)
+            (f"{_figure(sr)} / {_figure(spl)}", False)
+            for sr, spl in zip(series.sr, series.spl, strict=True)
         ]
         rows.append(row)
     return ["Method", *(f"rate {r:g}" for r in study.rates)], rows
 
 
+def _figure(value: float | None) -> str:
+    return "—" if value is None else f"{value:.2f}"
+
+
+@dataclass(frozen=True)
+class Progress:
+    """How far the run got: ``state`` is complete, partial or unknown; ``text`` says it."""
+
+    state: Literal["complete", "partial", "unknown"]
+    text: str
+
+
+def progress(data: RunData) -> Progress:
+    """Finished tasks against the run's selection, per method where the counts differ.
+
+    The counts come from the same records as every table, so they cannot disagree with them.
+    """
+    selection, finished = data.selection, data.finished()
+    expected = selection.tasks
+    if expected is None or not selection.methods:
+        why = f"; {selection.note}, so whether the run is complete is unknown"
+        return Progress("unknown", f"{len(data.records)} records" + (why if selection.note else ""))
+    counts = [finished[m] for m in selection.methods]
+    if max(counts) > expected:  # without the keys, records of an earlier bench look alike
+        return Progress(
+            "unknown",
+            f"{max(counts)} records for a method that selected {expected} tasks: "
+            f"{RESULTS_FILE} holds records outside the selection ({selection.note})",
+        )
+    each = " per method" if len(counts) > 1 else ""
+    if min(counts) == expected:
+        return Progress("complete", f"all {expected} tasks finished{each}")
+    if len(set(counts)) == 1:
+        return Progress("partial", f"{counts[0]} of {expected} tasks finished{each}")
+    first, *rest = selection.methods
+    text = f"{first} {finished[first]} of {expected} tasks finished, " + ", ".join(
+        f"{m} {finished[m]} of {expected}" for m in rest
+    )
+    return Progress("partial", text)
+
+
+PARTIAL_NOTE = (
+    "The bench was interrupted or is still running: the tables and figures cover the "
+    "finished tasks only. Run the same `apbot bench` command again to finish it."
+)
+
+
 def header_facts(data: RunData, generated: str) -> list[tuple[str, str]]:
-    facts = [("Suite", str(data.run.get("suite", "unknown"))), ("Belief", _belief(data))]
+    belief = data.summary.belief or str(data.run.get("belief", "")) or "unknown"
+    facts = [("Suite", str(data.run.get("suite", "unknown"))), ("Belief", belief)]
     if "seed" in data.run:
         facts.append(("Seed", str(data.run["seed"])))
+    state = progress(data)
+    finished = state.text
+    if data.selection.note and state.state != "unknown":
+        finished += f" (count from {RUN_FILE}; {data.selection.note})"
     facts += [
         ("Methods", ", ".join(data.methods) or "none"),
-        ("Tasks per method", str(_task_count(data))),
+        ("Finished", finished),
         ("Records", str(len(data.records))),
-        ("Run", data.run_date),
-        ("Report generated", generated),
     ]
+    if data.outside:
+        facts.append(
+            (
+                "Left out",
+                f"{data.outside} record(s) in {RESULTS_FILE} outside this run's selection "
+                "(an earlier bench into the same directory)",
+            )
+        )
+    facts += [("Run", data.run_date), ("Report generated", generated)]
     return facts
-
-
-def esc(value: Any) -> str:
-    """Anything as HTML text (quotes too, so it is safe in attributes)."""
-    return html.escape(str(value), quote=True)

@@ -8,20 +8,22 @@ from collections.abc import Mapping, Sequence
 from typing import Any
 
 from apbot.bench.report.content import (
+    PARTIAL_NOTE,
     READING_GUIDE,
     REFERENCE_NOTE,
     SPL_TABLE,
     SR_TABLE,
     TABLE_NOTE,
-    failure_reason,
     fault_rows,
     goal_rows,
     header_facts,
+    progress,
     pvalue_rows,
     table,
 )
 from apbot.bench.report.figures import FIGURES_DIR, ReportFigure
 from apbot.bench.report.snapshot import RunData
+from apbot.bench.report.text import failure_reason
 
 MARKDOWN_FAILURES = 50
 
@@ -80,6 +82,9 @@ def render_markdown(data: RunData, figures: Mapping[str, ReportFigure], generate
         return [f"![{figures[key].title}]({FIGURES_DIR}/{figures[key].name})", ""]
 
     out = ["# apbot benchmark report", ""]
+    state = progress(data)
+    if state.state == "partial":
+        out += [f"> **Partial run: {md_text(state.text)}.** {PARTIAL_NOTE}", ""]
     out += [f"- **{name}:** {md_text(value)}" for name, value in header_facts(data, generated)]
     out += ["", md_text(READING_GUIDE), ""]
     out += ["## Success rate / average reasoning steps", ""]

@@ -6,20 +6,22 @@ import base64
 from collections.abc import Mapping, Sequence
 
 from apbot.bench.report.content import (
+    PARTIAL_NOTE,
     READING_GUIDE,
     REFERENCE_NOTE,
     SPL_TABLE,
     SR_TABLE,
     TABLE_NOTE,
-    esc,
     fault_rows,
     goal_rows,
     header_facts,
+    progress,
     pvalue_rows,
     table,
 )
 from apbot.bench.report.figures import ReportFigure
 from apbot.bench.report.snapshot import RunData
+from apbot.bench.report.text import esc
 from apbot.bench.report.traces import traces_html
 
 CSS = """
@@ -33,7 +35,7 @@ details.t.s{border-color:#3a3}.ok{color:#080}.bad{color:#b00}.rep{background:#ff
 table.tr{font:12px/1.3 ui-monospace,monospace}table.tr td{border-color:#e3e3e3}
 tr.m td{background:#eef3fb}tr.x td{color:#666;font-style:italic}tr.r td{background:#ffe38a}
 tr.c td{background:#f7f7f7}tr.s td{font-weight:bold}mark{background:#f99}
-.muted{color:#666}
+.muted{color:#666}.partial{background:#fff3cd;border:1px solid #e0c36a;padding:.5em .8em}
 """
 
 
@@ -63,6 +65,13 @@ def _img(figure: ReportFigure | None) -> str:
     return f'<p><img alt="{esc(figure.title)}" src="data:image/png;base64,{data}"></p>'
 
 
+def _partial_banner(data: RunData) -> str:
+    state = progress(data)
+    if state.state != "partial":
+        return ""
+    return f'<p class="partial"><b>Partial run: {esc(state.text)}.</b> {esc(PARTIAL_NOTE)}</p>'
+
+
 def render_html(data: RunData, figures: Mapping[str, ReportFigure], generated: str) -> str:
     """The report as one self-contained HTML page."""
 
@@ -79,6 +88,7 @@ def render_html(data: RunData, figures: Mapping[str, ReportFigure], generated: s
         "<title>apbot benchmark report</title>",
         f"<style>{CSS}</style></head><body>",
         "<h1>apbot benchmark report</h1>",
+        _partial_banner(data),
         f'<dl class="h">{facts}</dl>',
         f"<p>{esc(READING_GUIDE)}</p>",
     ]

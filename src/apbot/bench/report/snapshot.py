@@ -1,4 +1,12 @@
-"""Loading a run directory for the report: its summary, records, run.json and fault study."""
+"""One consistent snapshot of a run directory: everything a report shows is derived from it.
+
+A bench may still be appending to ``results.jsonl`` while a report is written, so the records
+are read once (up to the last complete line) and every figure is computed from those records
+with :func:`apbot.bench.metrics.summarise`. ``summary.json``, written at another moment, is
+left to scripts: mixing it with fresher records is how a report came to say "44 tasks per
+method" beside 116 traces each. What the run set out to do comes from ``run.json`` (see
+:mod:`.selection`), so a partial run can say how far it got.
+"""
 
 from __future__ import annotations
 
@@ -7,28 +15,25 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from datetime import UTC, datetime
 from pathlib import Path
-from typing import Any, TypeVar
+from typing import Any
 
-from pydantic import BaseModel, ConfigDict, ValidationError, field_validator, model_validator
+from pydantic import BaseModel, ConfigDict, ValidationError, model_validator
 
+from apbot.bench.metrics import summarise
 from apbot.bench.records import TaskRecord
+from apbot.bench.report.selection import Selection, replay_selection
 from apbot.bench.results import RESULTS_FILE, ResultsError, read_records
 from apbot.bench.suite import CATEGORIES, GOAL_VARIABLES
 
-SUMMARY_FILE = "summary.json"
-
-
 RUN_FILE = "run.json"
-
-
 FAULT_FILE = "fault_study.json"
-
-
-_M = TypeVar("_M", bound=BaseModel)
 
 
 class ReportError(ValueError):
     """A run directory the report cannot be made from; the message says what and where."""
+
+
+# --- typed views of the summary (computed here) and of fault_study.json (read) ---------------
 
 
 class _Loose(BaseModel):
@@ -54,26 +59,17 @@ class GoalPoint(_Loose):
 
 
 class Summary(_Loose):
-    """summary.json as the runner writes it (extra keys are allowed and ignored)."""
+    """What :func:`~apbot.bench.metrics.summarise` returns, with attribute access."""
 
     belief: str = ""
     methods: dict[str, MethodSummary]
     pvalues: dict[str, dict[str, float]] = {}
     goal_variables: dict[str, dict[str, GoalPoint]] = {}
 
-    @field_validator("goal_variables")
-    @classmethod
-    def _counts_are_integers(cls, value: dict[str, dict[str, GoalPoint]]) -> Any:
-        for method, points in value.items():
-            bad = [k for k in points if not k.isdigit()]
-            if bad:
-                raise ValueError(f"{method}: goal-variable counts must be integers, got {bad[0]!r}")
-        return value
-
 
 class FaultSeries(_Loose):
-    sr: list[float]
-    spl: list[float]
+    sr: list[float | None]  # None: no run of the method finished at that rate
+    spl: list[float | None]
 
 
 class FaultStudy(_Loose):
@@ -96,9 +92,18 @@ class FaultStudy(_Loose):
         return self
 
 
+# --- the snapshot -----------------------------------------------------------------------------
+
+
 @dataclass
 class RunData:
-    """Everything a report shows, loaded and checked."""
+    """Everything a report shows, from one read of the run directory.
+
+    ``records`` are the run's selected records (all of them when the selection is unknown),
+    ``summary`` is computed from exactly those, and ``outside`` counts the records of
+    ``results.jsonl`` left out because an earlier bench into the same directory selected
+    other methods or tasks.
+    """
 
     directory: Path
     summary: Summary
@@ -108,47 +113,61 @@ class RunData:
     methods: list[str]
     categories: list[str]
     run_date: str
+    selection: Selection
+    outside: int = 0
     reference: set[str] = field(default_factory=set)  # methods given the ground truth
 
     def failures(self) -> list[TaskRecord]:
         return [r for r in self.records if not r.success]
 
+    def finished(self) -> dict[str, int]:
+        """Records per method, every method of the run included (0 when none finished)."""
+        counts = dict.fromkeys(self.methods, 0)
+        for record in self.records:
+            counts[record.method] += 1
+        return counts
+
 
 def load_run(directory: Path) -> RunData:
-    """Read and check a run directory (summary.json required; the rest optional)."""
+    """Read a run directory once and derive everything the report shows from that read."""
     directory = Path(directory)
     if not directory.is_dir():
         raise ReportError(f"{directory}: no such run directory")
-    summary_path = directory / SUMMARY_FILE
-    if not summary_path.exists():
+    run_path = directory / RUN_FILE
+    if not run_path.exists() and not (directory / RESULTS_FILE).exists():
         raise ReportError(
-            f"{summary_path}: not found; run `apbot bench --out {directory}` "
-            "first (it writes summary.json)"
+            f"{directory}: no benchmark run here (neither {RUN_FILE} nor {RESULTS_FILE}); "
+            f"run `apbot bench --out {directory}` first"
         )
-    summary = _parse(summary_path, Summary)
+    run = _read_json(run_path) if run_path.exists() else {}
+    if not isinstance(run, dict):
+        raise ReportError(f"{run_path}: expected a JSON object")
     study_path = directory / FAULT_FILE
     fault_study = _parse(study_path, FaultStudy) if study_path.exists() else None
-    run = _read_json(directory / RUN_FILE) if (directory / RUN_FILE).exists() else {}
-    if not isinstance(run, dict):
-        raise ReportError(f"{directory / RUN_FILE}: expected a JSON object")
-    methods = _method_order(summary, run)
     try:
-        records = read_records(directory)
+        everything = read_records(directory)  # the one read of the results
     except ResultsError as exc:
         raise ReportError(str(exc)) from None
+    selection = replay_selection(run)
+    records = [r for r in everything if selection.includes(r)]
+    belief = str(run["belief"]) if isinstance(run.get("belief"), str) else None
+    summary = Summary.model_validate(summarise(records, belief=belief))
+    methods = list(selection.methods)
     methods += sorted({r.method for r in records} - set(methods))
     rank = {m: i for i, m in enumerate(methods)}
     records.sort(key=lambda r: (rank[r.method], r.appliance, r.task, r.key))
     return RunData(
-        directory,
-        summary,
-        records,
-        run,
-        fault_study,
-        methods,
-        _category_order(summary),
-        _run_date(directory, run),
-        _reference_methods(methods),
+        directory=directory,
+        summary=summary,
+        records=records,
+        run=run,
+        fault_study=fault_study,
+        methods=methods,
+        categories=_category_order(records),
+        run_date=_run_date(directory, run),
+        selection=selection,
+        outside=len(everything) - len(records),
+        reference=_reference_methods(methods),
     )
 
 
@@ -161,7 +180,7 @@ def _read_json(path: Path) -> Any:
         raise ReportError(f"{path}: cannot be read ({exc})") from None
 
 
-def _parse(path: Path, kind: type[_M]) -> _M:
+def _parse(path: Path, kind: type[FaultStudy]) -> FaultStudy:
     data = _read_json(path)
     try:
         return kind.model_validate(data)
@@ -169,25 +188,14 @@ def _parse(path: Path, kind: type[_M]) -> _M:
         error = exc.errors()[0]
         where = ".".join(str(part) for part in error["loc"]) or "top level"
         raise ReportError(
-            f"{path}: {where}: {error['msg']}; rewrite it with `apbot bench` (or the fault study)"
+            f"{path}: {where}: {error['msg']}; write it again with the fault study"
         ) from None
 
 
-def _method_order(summary: Summary, run: Mapping[str, Any]) -> list[str]:
-    """The run's method order (run.json) where known, then the rest as summary.json lists them."""
-    listed = run.get("methods")
-    first = (
-        [m for m in listed if isinstance(m, str) and m in summary.methods]
-        if isinstance(listed, list)
-        else []
-    )
-    return list(dict.fromkeys(first + list(summary.methods)))
-
-
-def _category_order(summary: Summary) -> list[str]:
+def _category_order(records: Iterable[TaskRecord]) -> list[str]:
     """The suite's categories by the number of variables a task sets (the paper's order of
     complexity), unknown ones after, by name."""
-    present = {c for m in summary.methods.values() for c in m.categories}
+    present = {r.category for r in records}
     known = sorted((c for c in CATEGORIES if c in present), key=GOAL_VARIABLES.__getitem__)
     return known + sorted(present - set(CATEGORIES))
 
@@ -197,9 +205,8 @@ def _run_date(directory: Path, run: Mapping[str, Any]) -> str:
     started, updated = _when(run.get("started")), _when(run.get("updated"))
     if started:
         return started + (f" (last updated {updated})" if updated and updated != started else "")
-    for name in (RESULTS_FILE, SUMMARY_FILE):
-        if (directory / name).exists():
-            return _when((directory / name).stat().st_mtime) or "unknown"
+    if (directory / RESULTS_FILE).exists():
+        return _when((directory / RESULTS_FILE).stat().st_mtime) or "unknown"
     return "unknown"
 
 

@@ -7,8 +7,8 @@ from collections.abc import Mapping, Sequence
 from typing import Any
 
 from apbot.bench.records import TaskRecord
-from apbot.bench.report.content import assignments, esc, failure_reason, value_text
 from apbot.bench.report.snapshot import RunData
+from apbot.bench.report.text import assignments, esc, failure_reason, value_text
 
 TRACE_ROWS = 200  # rows kept per failed task's trace (start and end; successes keep half)
 

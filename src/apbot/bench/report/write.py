@@ -10,7 +10,13 @@ from pathlib import Path
 from apbot.bench.report.figures import FIGURES_DIR, make_figures
 from apbot.bench.report.markdown import render_markdown
 from apbot.bench.report.page import render_html
-from apbot.bench.report.snapshot import load_run
+from apbot.bench.report.snapshot import ReportError, RunData, load_run
+
+Clock = Callable[[], datetime]
+
+
+def _now() -> datetime:
+    return datetime.now(UTC)
 
 
 def _write(path: Path, content: str | bytes) -> Path:
@@ -24,19 +30,35 @@ def _write(path: Path, content: str | bytes) -> Path:
     return path
 
 
-def write_report(
-    directory: Path, clock: Callable[[], datetime] = lambda: datetime.now(UTC)
-) -> list[Path]:
-    """Write ``report.md``, ``report.html`` and ``figures/*.png`` for a run; return the paths.
+def write_files(data: RunData, clock: Clock = _now) -> list[Path]:
+    """Write ``report.md``, ``report.html`` and the figures for a loaded run; return the paths.
 
-    Raises :class:`ReportError` when the directory has no (or a malformed) summary.json.
+    Raises :class:`ReportError` naming the file that cannot be written (a read-only run
+    directory, a full disk).
     """
-    data = load_run(Path(directory))
     generated = clock().strftime("%Y-%m-%d %H:%M UTC")
     figures = make_figures(data)
     figure_dir = data.directory / FIGURES_DIR
-    figure_dir.mkdir(exist_ok=True)
-    pngs = [_write(figure_dir / f.name, f.png) for f in figures.values()]
-    markdown = _write(data.directory / "report.md", render_markdown(data, figures, generated))
-    page = _write(data.directory / "report.html", render_html(data, figures, generated))
-    return [markdown, page, *pngs]
+    target = figure_dir
+    try:
+        figure_dir.mkdir(exist_ok=True)
+        written = []
+        for figure in figures.values():
+            target = figure_dir / figure.name
+            written.append(_write(target, figure.png))
+        target = data.directory / "report.md"
+        markdown = _write(target, render_markdown(data, figures, generated))
+        target = data.directory / "report.html"
+        page = _write(target, render_html(data, figures, generated))
+    except OSError as exc:
+        raise ReportError(f"{target}: cannot be written ({exc.strerror or exc})") from None
+    return [markdown, page, *written]
+
+
+def write_report(directory: Path, clock: Clock = _now) -> list[Path]:
+    """Read a run directory once and write its report; return the paths written.
+
+    Raises :class:`ReportError` when the directory holds no run, a damaged file, or cannot
+    be written to.
+    """
+    return write_files(load_run(Path(directory)), clock)
