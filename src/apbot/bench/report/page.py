@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import base64
+import hashlib
 from collections.abc import Mapping, Sequence
+from importlib import resources
 
 from apbot.bench.report.content import (
     PARTIAL_NOTE,
@@ -24,25 +26,23 @@ from apbot.bench.report.snapshot import RunData
 from apbot.bench.report.text import esc
 from apbot.bench.report.traces import traces_html
 
-CSS = """
-body{font:14px/1.45 system-ui,sans-serif;margin:2em auto;max-width:76em;padding:0 1em;color:#222}
-table{border-collapse:collapse;margin:.6em 0}th,td{border:1px solid #ccc;padding:2px 7px}
-th{background:#f2f2f2}td.b{font-weight:bold}table.num td{text-align:center}
-img{max-width:100%}dl.h{display:grid;grid-template-columns:max-content auto;gap:0 1em}
-dl.h dt{font-weight:bold}details{margin:.15em 0}details.g>summary{font-weight:bold}
-details.t{border-left:3px solid #ccc;padding-left:.5em}details.t.f{border-color:#c33}
-details.t.s{border-color:#3a3}.ok{color:#080}.bad{color:#b00}.rep{background:#ffe38a}
-table.tr{font:12px/1.3 ui-monospace,monospace}table.tr td{border-color:#e3e3e3}
-tr.m td{background:#eef3fb}tr.x td{color:#666;font-style:italic}tr.r td{background:#ffe38a}
-tr.c td{background:#f7f7f7}tr.s td{font-weight:bold}mark{background:#f99}
-.muted{color:#666}.partial{background:#fff3cd;border:1px solid #e0c36a;padding:.5em .8em}
-"""
+
+def _asset(name: str) -> str:
+    return (resources.files("apbot.bench.report") / name).read_text(encoding="utf-8")
 
 
-_CSP = (
-    "default-src 'none'; img-src data:; style-src 'unsafe-inline'; "
-    "form-action 'none'; base-uri 'none'"
-)
+CSS = _asset("page.css")
+SCRIPT = _asset("viewer.js")
+
+
+def content_policy(script: str) -> str:
+    """Nothing from outside the page; no script but the viewer, allowed by its hash, so an
+    injected one would not run even if escaping failed."""
+    digest = base64.b64encode(hashlib.sha256(script.encode("utf-8")).digest()).decode("ascii")
+    return (
+        f"default-src 'none'; img-src data:; style-src 'unsafe-inline'; "
+        f"script-src 'sha256-{digest}'; form-action 'none'; base-uri 'none'"
+    )
 
 
 def _html_table(header: Sequence[str], rows: Sequence[Sequence[tuple[str, bool]]]) -> str:
@@ -55,7 +55,10 @@ def _html_table(header: Sequence[str], rows: Sequence[Sequence[tuple[str, bool]]
         + "</tr>"
         for row in rows
     )
-    return f'<table class="num"><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>'
+    return (
+        f'<div class="wide"><table class="num"><thead><tr>{head}</tr></thead>'
+        f"<tbody>{body}</tbody></table></div>"
+    )
 
 
 def _img(figure: ReportFigure | None) -> str:
@@ -83,7 +86,7 @@ def render_html(data: RunData, figures: Mapping[str, ReportFigure], generated: s
     out = [
         "<!DOCTYPE html>",
         '<html lang="en"><head><meta charset="utf-8">',
-        f'<meta http-equiv="Content-Security-Policy" content="{_CSP}">',
+        f'<meta http-equiv="Content-Security-Policy" content="{content_policy(SCRIPT)}">',
         '<meta name="viewport" content="width=device-width, initial-scale=1">',
         "<title>apbot benchmark report</title>",
         f"<style>{CSS}</style></head><body>",
@@ -127,5 +130,6 @@ def render_html(data: RunData, figures: Mapping[str, ReportFigure], generated: s
             _html_table(*fault_rows(data.fault_study)),
         )
     out += traces_html(data)
+    out.append(f"<script>{SCRIPT}</script>")
     out.append("</body></html>")
     return "\n".join(out) + "\n"
