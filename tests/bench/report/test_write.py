@@ -17,10 +17,10 @@ def test_writes_markdown_html_and_figures(tmp_path: Path) -> None:
     figures = {
         f"figures/{name}" for name in ("overview", "pvalues", "goal_variables", "fault_study")
     }
-    assert names == {"report.md", "report.html"} | {f + ".png" for f in figures}
+    assert names == {"report.md", "report.html"} | {f + ".svg" for f in figures}
     md = (tmp_path / "report.md").read_text(encoding="utf-8")
     for path in paths[2:]:
-        assert path.read_bytes().startswith(b"\x89PNG")
+        assert path.read_bytes().startswith(b"<?xml")
         assert f"(figures/{path.name})" in md
     assert not list(tmp_path.rglob("*.tmp"))
 

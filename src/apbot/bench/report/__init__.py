@@ -1,16 +1,18 @@
 """``apbot report DIR``: a benchmark run as Markdown and as one self-contained HTML page.
 
 The page is meant to be mailed or attached as a single file, so it carries everything inline:
-CSS, figures as base64 PNGs, no scripts and no external references (a Content-Security-Policy
-forbids them even if one slipped in). Model, instruction and trace text is untrusted input and
-is escaped wherever it lands. Apart from the generation timestamp the output depends only on
-the run directory, so two reports of the same run can be diffed.
+CSS, figures as SVG data URIs, the task details and traces as one compressed data block, and
+one small script (``viewer.js``) that draws a task when it is opened and filters the list. A
+Content-Security-Policy forbids anything from outside the page and any script but that one
+(allowed by its hash). Model, instruction and trace text is untrusted input: it is escaped in
+the HTML and reaches the viewer's tables as text only. Apart from the generation timestamp the
+output depends only on the run directory, so two reports of the same run can be diffed.
 
 One module per job: :mod:`.snapshot` reads a run directory once and derives everything from
 that read (with :mod:`.selection`, what the run set out to do), :mod:`.content` says what the
 tables and facts hold, :mod:`.text` turns values into safe text, :mod:`.figures` draws them,
-:mod:`.markdown` and :mod:`.page` render the two formats, :mod:`.traces` is the trace viewer
-and :mod:`.write` writes the files.
+:mod:`.markdown` and :mod:`.page` render the two formats, :mod:`.traces` lists the tasks and
+:mod:`.viewer` packs their details for ``viewer.js``, and :mod:`.write` writes the files.
 """
 
 from apbot.bench.report.content import Progress, progress

@@ -1,4 +1,4 @@
-"""The report's figures, drawn from a loaded run."""
+"""The report's figures, drawn from a loaded run as SVG (text kept as text: small and sharp)."""
 
 from __future__ import annotations
 
@@ -14,7 +14,8 @@ FIGURES_DIR = "figures"
 class ReportFigure:
     name: str
     title: str
-    png: bytes
+    data: bytes
+    mime: str = "image/svg+xml"
 
 
 def make_figures(data: RunData) -> dict[str, ReportFigure]:
@@ -25,15 +26,15 @@ def make_figures(data: RunData) -> dict[str, ReportFigure]:
     if methods:
         overall = {m: summary.methods[m].overall.model_dump() for m in methods}
         figures["overview"] = ReportFigure(
-            "overview.png",
+            "overview.svg",
             "Overall performance",
-            plots.png_bytes(plots.overview_figure(methods, overall)),
+            plots.svg_bytes(plots.overview_figure(methods, overall)),
         )
     if len(methods) > 1 and summary.pvalues:
         figures["pvalues"] = ReportFigure(
-            "pvalues.png",
+            "pvalues.svg",
             "χ² p-values between methods",
-            plots.png_bytes(plots.pvalue_figure(methods, summary.pvalues)),
+            plots.svg_bytes(plots.pvalue_figure(methods, summary.pvalues)),
         )
     with_counts = [m for m in methods if summary.goal_variables.get(m)]
     if with_counts:
@@ -42,16 +43,16 @@ def make_figures(data: RunData) -> dict[str, ReportFigure]:
             for m in with_counts
         }
         figures["goal_variables"] = ReportFigure(
-            "goal_variables.png",
+            "goal_variables.svg",
             "Success rate vs number of goal variables",
-            plots.png_bytes(plots.goal_variables_figure(with_counts, points)),
+            plots.svg_bytes(plots.goal_variables_figure(with_counts, points)),
         )
     if data.fault_study is not None and data.fault_study.methods:
         study = data.fault_study
         figures["fault_study"] = ReportFigure(
-            "fault_study.png",
+            "fault_study.svg",
             "SR and SPL vs fault rate",
-            plots.png_bytes(
+            plots.svg_bytes(
                 plots.fault_study_figure(
                     study.rates, {m: s.model_dump() for m, s in study.methods.items()}
                 )

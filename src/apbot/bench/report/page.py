@@ -64,8 +64,8 @@ def _html_table(header: Sequence[str], rows: Sequence[Sequence[tuple[str, bool]]
 def _img(figure: ReportFigure | None) -> str:
     if figure is None:
         return ""
-    data = base64.b64encode(figure.png).decode("ascii")
-    return f'<p><img alt="{esc(figure.title)}" src="data:image/png;base64,{data}"></p>'
+    data = base64.b64encode(figure.data).decode("ascii")
+    return f'<p><img alt="{esc(figure.title)}" src="data:{figure.mime};base64,{data}"></p>'
 
 
 def _partial_banner(data: RunData) -> str:

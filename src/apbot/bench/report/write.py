@@ -45,7 +45,7 @@ def write_files(data: RunData, clock: Clock = _now) -> list[Path]:
         written = []
         for figure in figures.values():
             target = figure_dir / figure.name
-            written.append(_write(target, figure.png))
+            written.append(_write(target, figure.data))
         target = data.directory / "report.md"
         markdown = _write(target, render_markdown(data, figures, generated))
         target = data.directory / "report.html"
