@@ -47,6 +47,15 @@ LONG_TRACE = [
 ]
 
 
+def render(directory: Path) -> tuple[str, str]:
+    """The Markdown and HTML of a run directory without drawing figures (fast)."""
+    from apbot.bench.report import load_run, render_html, render_markdown
+
+    data = load_run(directory)
+    generated = clock().strftime("%Y-%m-%d %H:%M UTC")
+    return render_markdown(data, {}, generated), render_html(data, {}, generated)
+
+
 def clock() -> datetime:
     return datetime(2026, 1, 2, 3, 4, tzinfo=UTC)
 

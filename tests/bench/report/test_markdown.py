@@ -3,18 +3,16 @@
 from __future__ import annotations
 
 from pathlib import Path
+from typing import Any
 
 import pytest
 
-from apbot.bench.report import write_report
-from tests.bench.report.rundir import clock, write_run
+from tests.bench.report.rundir import render, write_run
 
 
-@pytest.fixture(scope="module")
-def md(tmp_path_factory: pytest.TempPathFactory) -> str:
-    directory = write_run(tmp_path_factory.mktemp("run"))
-    write_report(directory, clock=clock)
-    return (directory / "report.md").read_text(encoding="utf-8")
+@pytest.fixture
+def md(report: dict[str, Any]) -> str:
+    return str(report["md"])
 
 
 def test_tables_and_facts(md: str) -> None:
@@ -39,7 +37,5 @@ def test_untrusted_text_is_escaped(md: str) -> None:
 
 
 def test_a_partial_run_says_so_first(tmp_path: Path) -> None:
-    write_run(tmp_path, [])
-    write_report(tmp_path, clock=clock)
-    md = (tmp_path / "report.md").read_text(encoding="utf-8")
+    md, _ = render(write_run(tmp_path, []))
     assert md.startswith("# apbot benchmark report\n\n> **Partial run: 0 of 2 tasks finished")

@@ -8,21 +8,8 @@ import re
 from pathlib import Path
 from typing import Any
 
-import pytest
-
-from apbot.bench.report import write_report
 from apbot.bench.report.page import CSS, SCRIPT
-from tests.bench.report.rundir import EVIL, clock, write_run
-
-
-@pytest.fixture(scope="module")
-def report(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Any]:
-    directory = write_run(tmp_path_factory.mktemp("run"))
-    write_report(directory, clock=clock)
-    return {
-        "md": (directory / "report.md").read_text(encoding="utf-8"),
-        "html": (directory / "report.html").read_text(encoding="utf-8"),
-    }
+from tests.bench.report.rundir import EVIL, render, write_run
 
 
 def test_html_is_self_contained(report: dict[str, Any]) -> None:
@@ -66,8 +53,6 @@ def test_tables_scroll_inside_their_own_box(report: dict[str, Any]) -> None:
 
 
 def test_a_partial_run_says_so_before_anything_else(tmp_path: Path) -> None:
-    write_run(tmp_path, [])
-    write_report(tmp_path, clock=clock)
-    page = (tmp_path / "report.html").read_text(encoding="utf-8")
+    _, page = render(write_run(tmp_path, []))
     banner = '<p class="partial"><b>Partial run: 0 of 2 tasks finished per method.</b>'
     assert banner in page and page.index(banner) < page.index("<dl")

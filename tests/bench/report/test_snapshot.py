@@ -10,7 +10,7 @@ import pytest
 
 from apbot.bench.report import ReportError, load_run, progress, write_report
 from apbot.bench.runner import BenchOptions, run_benchmark
-from tests.bench.report.rundir import RUN, clock, record, standard_records, write_run
+from tests.bench.report.rundir import RUN, clock, record, render, standard_records, write_run
 
 
 @pytest.fixture(scope="module")
@@ -51,9 +51,7 @@ def test_a_strict_prefix_of_the_work_says_how_far_each_method_got(
     expected = f"oracle {counts['oracle']} of 4 tasks finished, apbot {counts['apbot']} of 4"
     assert progress(data).state == "partial" and progress(data).text == expected
 
-    write_report(partial, clock=clock)
-    md = (partial / "report.md").read_text(encoding="utf-8")
-    page = (partial / "report.html").read_text(encoding="utf-8")
+    md, page = render(partial)
     assert f"Partial run: {expected}." in md and f"Partial run: {expected}." in page
     assert f"- **Finished:** {expected}" in md
 
@@ -69,7 +67,7 @@ def test_a_run_with_nothing_finished_yet(finished_run: Path, tmp_path: Path) -> 
     shutil.copy(finished_run / "run.json", tmp_path / "run.json")
     data = load_run(tmp_path)
     assert progress(data).text == "0 of 4 tasks finished per method"
-    paths = write_report(tmp_path, clock=clock)
+    paths = write_report(tmp_path, clock=clock)  # nothing to draw, nothing to fail on
     assert "Partial run: 0 of 4 tasks finished per method." in paths[0].read_text()
 
 
@@ -85,7 +83,7 @@ def test_records_outside_the_selection_are_left_out_and_counted(tmp_path: Path) 
     assert data.methods == ["oracle", "apbot"]
     assert data.summary.methods["apbot"].overall.n == 2
     assert progress(data).text == "all 2 tasks finished per method"
-    md = write_report(tmp_path, clock=clock)[0].read_text()
+    md, _ = render(tmp_path)
     assert "- **Left out:** 2 record(s) in results.jsonl outside this run's selection" in md
 
 

@@ -8,14 +8,14 @@ from typing import Any
 
 import pytest
 
-from apbot.bench.report import load_run, write_report
+from apbot.bench.report import load_run
 from apbot.bench.report.traces import DATA_ID, grouped
 from apbot.bench.report.viewer import decode
 from tests.bench.report.rundir import (
     EVIL,
     LONG_TRACE,
-    clock,
     record,
+    render,
     standard_records,
     write_run,
 )
@@ -27,11 +27,9 @@ def _data(page: str) -> Any:
     return decode(match.group(1))
 
 
-@pytest.fixture(scope="module")
-def page(tmp_path_factory: pytest.TempPathFactory) -> str:
-    directory = write_run(tmp_path_factory.mktemp("run"))
-    write_report(directory, clock=clock)
-    return (directory / "report.html").read_text(encoding="utf-8")
+@pytest.fixture
+def page(report: dict[str, Any]) -> str:
+    return str(report["html"])
 
 
 def test_groups_by_appliance_with_failures_first(tmp_path: Path) -> None:
@@ -110,9 +108,8 @@ def test_refusals_blank_displays_and_mismatched_values_are_marked(tmp_path: Path
         ),
         {"kind": "check", "step": 2, "text": "mismatch", "expected": {"a": 1}, "values": {"b": 2}},
     ]
-    write_run(tmp_path, [record("apbot", "kettle_1", "t01", False, trace=trace)], run=None)
-    write_report(tmp_path, clock=clock)
-    rows = _data((tmp_path / "report.html").read_text(encoding="utf-8"))["traces"][0]
+    records = [record("apbot", "kettle_1", "t01", False, trace=trace)]
+    rows = _data(render(write_run(tmp_path, records, run=None))[1])["traces"][0]
     assert rows[0] == ["", 1, "", "press_a", [["muted", "(blank)"], " ", ["bad", "refused"]]]
     assert rows[1] == ["x", 2, "explore", "press_b ×3", ["1 → (blank) → 3 ", ["bad", "1 refused"]]]
     assert rows[2][4] == ["a=1; ", ["mark", "b: observed 2"]]
@@ -120,8 +117,6 @@ def test_refusals_blank_displays_and_mismatched_values_are_marked(tmp_path: Path
 
 def test_a_partial_run_says_what_is_not_run_yet(tmp_path: Path) -> None:
     records = [r for r in standard_records() if (r.method, r.appliance) != ("apbot", "kettle_1")]
-    write_run(tmp_path, records)
-    write_report(tmp_path, clock=clock)
-    page = (tmp_path / "report.html").read_text(encoding="utf-8")
+    _, page = render(write_run(tmp_path, records))
     section = page[page.index('<section class="method" id="m-apbot">') :]
     assert '<p class="muted">1 failed, 0 succeeded, 1 not run yet</p>' in section
