@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import numpy as np
 from matplotlib.colors import to_rgb
 from matplotlib.figure import Figure
 
@@ -31,8 +32,8 @@ def test_goal_size_plot_shows_every_method_even_with_identical_results() -> None
             line.get_zorder() for line in ax.get_lines() if line is not own[0]
         )
         expected = SAME if index < 3 else {"1": {"sr": 0.5}, "3": {"sr": 0.0}}
-        assert list(own[0].get_xdata()) == [int(k) for k in expected]
-        assert list(own[0].get_ydata()) == [p["sr"] for p in expected.values()]
+        assert np.asarray(own[0].get_xdata()).tolist() == [int(k) for k in expected]
+        assert np.asarray(own[0].get_ydata()).tolist() == [p["sr"] for p in expected.values()]
     assert len([ax for ax in figure.axes if not ax.get_visible()]) == 3  # 5 panels on a 4×2 grid
 
 

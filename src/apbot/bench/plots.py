@@ -11,6 +11,7 @@ from __future__ import annotations
 import io
 import math
 from collections.abc import Mapping, Sequence
+from typing import Any
 
 import matplotlib
 from matplotlib.axes import Axes
@@ -43,12 +44,10 @@ def svg_bytes(figure: Figure) -> bytes:
     """The figure as SVG: text as ``<text>`` (not paths), no date, ids from a fixed salt."""
     FigureCanvasSVG(figure)
     buffer = io.BytesIO()
-    settings = {
+    settings: dict[Any, Any] = {  # matplotlib's own font, named in the SVG before sans-serif
         "svg.fonttype": "none",
         "svg.hashsalt": "apbot-report",
-        "font.sans-serif": [
-            "DejaVu Sans"
-        ],  # matplotlib's font; written as 'DejaVu Sans', sans-serif
+        "font.sans-serif": ["DejaVu Sans"],
     }
     with matplotlib.rc_context(settings):
         figure.savefig(
