@@ -174,8 +174,9 @@ PARTIAL_NOTE = (
 def header_facts(data: RunData, generated: str) -> list[tuple[str, str]]:
     belief = data.summary.belief or str(data.run.get("belief", "")) or "unknown"
     facts = [("Suite", str(data.run.get("suite", "unknown"))), ("Belief", belief)]
-    if "seed" in data.run:
-        facts.append(("Seed", str(data.run["seed"])))
+    for key in ("seed", "feedback"):
+        if key in data.run:
+            facts.append((key.capitalize(), str(data.run[key])))
     state = progress(data)
     finished = state.text
     if data.selection.note and state.state != "unknown":
