@@ -115,6 +115,11 @@ def test_damaged_files_name_the_file_and_line(tmp_path: Path) -> None:
     results.write_text(lines[0] + "garbage\n" + "".join(lines[1:]), encoding="utf-8")
     with pytest.raises(ReportError, match=r"results\.jsonl:2: not a valid result record"):
         load_run(tmp_path)
+    (tmp_path / "results.jsonl").unlink()
+    (tmp_path / "results.jsonl").mkdir()  # unreadable as a file (root reads anything else)
+    with pytest.raises(ReportError, match=r"results\.jsonl: cannot be read \(Is a directory\)"):
+        load_run(tmp_path)
+    (tmp_path / "results.jsonl").rmdir()
     write_run(tmp_path, fault_study=False)
     (tmp_path / "run.json").write_text("{not json")
     with pytest.raises(ReportError, match=r"run\.json:1:2: not valid JSON"):

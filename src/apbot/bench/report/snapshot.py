@@ -148,6 +148,8 @@ def load_run(directory: Path) -> RunData:
         everything = read_records(directory)  # the one read of the results
     except ResultsError as exc:
         raise ReportError(str(exc)) from None
+    except OSError as exc:
+        raise ReportError(f"{directory / RESULTS_FILE}: cannot be read ({exc.strerror})") from None
     selection = replay_selection(run)
     records = [r for r in everything if selection.includes(r)]
     belief = str(run["belief"]) if isinstance(run.get("belief"), str) else None
