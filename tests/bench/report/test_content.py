@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from apbot.bench.report import load_run
+from apbot.bench.report import load_run, progress
 from apbot.bench.report.content import SR_TABLE, fault_rows, header_facts, pvalue_rows, table
-from tests.bench.report.rundir import RUN, record, write_run
+from tests.bench.report.rundir import RUN, record, standard_records, write_run
 
 
 def test_tables_hold_the_records_figures_with_the_best_in_bold(tmp_path: Path) -> None:
@@ -57,3 +57,16 @@ def test_header_facts_name_the_run(tmp_path: Path) -> None:
     assert facts["Finished"] == "all 2 tasks finished per method"
     assert facts["Records"] == "4" and facts["Run"] == "2026-01-02 03:00 UTC"
     assert "Left out" not in facts
+
+
+def test_more_records_than_the_count_allows_is_not_called_complete(tmp_path: Path) -> None:
+    """Without the suite to replay the selection, an earlier bench's records look alike."""
+    extra = record("apbot", "kettle_1", "t02", True)
+    run = {**RUN, "suite": "/no/such/suite"}
+    data = load_run(write_run(tmp_path, [*standard_records(), extra], run=run))
+    state = progress(data)
+    assert state.state == "unknown"
+    assert state.text.startswith(
+        "3 records for a method that selected 2 tasks: results.jsonl holds records outside "
+        "the selection (the selection could not be replayed on suite '/no/such/suite'"
+    )
