@@ -674,15 +674,22 @@ def _bench_report(out: Path) -> None:
 def report_command(
     directory: Annotated[Path, typer.Argument(help="A run directory written by `apbot bench`.")],
 ) -> None:
-    """Write report.md and a self-contained report.html for a benchmark run."""
-    from apbot.bench.report import ReportError, write_report
+    """Write report.md and a self-contained report.html for a benchmark run (one read of its
+    results, so it may run while the bench still writes; a partial run says how far it got)."""
+    from apbot.bench.report import ReportError, load_run, progress, write_files
 
     try:
-        paths = write_report(directory)
+        data = load_run(directory)
+        paths = write_files(data)
     except ReportError as exc:
         raise _fail(str(exc)) from None
     for path in paths[:2]:
         console.print(f"report: {path}")
+    state = progress(data)
+    if state.state == "partial":
+        errors.print(f"[yellow]partial run[/yellow]: {state.text}")
+    else:
+        console.print(state.text)
 
 
 @app.command("run")
