@@ -75,8 +75,9 @@ class ProcedureRepairer:
         action = compiled.action_index.get(refused.action.name)
         text = refused.feedback.text.strip()
         for guard in compiled.guards:
-            if action in guard.allowed or not guard.display or guard.display.strip() != text:
-                continue
+            shows = guard.display.strip() == text and (guard.display or guard.hide)
+            if action in guard.allowed or not shows:
+                continue  # a dark panel (hide) explains a refusal shown as a blank display
             if all(self.session.belief.state.values[v] in ok for v, ok in guard.conditions):
                 return False  # the belief already knew: something else is wrong
             if not self.session.budget.once("guard", guard.name or guard.display):

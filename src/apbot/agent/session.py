@@ -174,6 +174,10 @@ class Session:
             and feedback.text == before_text
             and (expected.text != before_text or before_state != self.belief.state)
         )
+        if unchanged and variable is not None and not seen.showing(variable):
+            # the display did not move to the step the belief entered: the key did nothing
+            # visible, so the belief must not keep what it predicted the key would do
+            self.belief.state = before_state  # (``pointer`` still says where it meant to go)
         self.sync(seen)
         if variable and not exploring:
             self.unverified.add(variable)
