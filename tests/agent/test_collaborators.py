@@ -4,6 +4,7 @@ procedure repairer and the greedy executor, each driven directly against a true 
 from __future__ import annotations
 
 from apbot.agent.budget import Budget
+from apbot.agent.displays import DisplayLearner
 from apbot.agent.environment import SimulatorEnvironment
 from apbot.agent.episode import TaskContext
 from apbot.agent.explorer import Explorer
@@ -80,7 +81,7 @@ def test_the_explorer_walks_until_a_value_repeats_and_repairs_the_domain() -> No
     s = session(fan(hours=6), fan(hours=4))
     for action in ("press_power", "press_timer", "press_up"):
         last = s.press(s.planned(action))
-    Explorer(s).explore("timer", last)
+    Explorer(s, DisplayLearner(s)).explore("timer", last)
     assert s.belief.model.variables["timer"].ranges == [(0, 6, 1)]
     assert s.episode.repairs and s.belief.value("timer") == s.shown("timer")
 
@@ -90,7 +91,9 @@ def test_the_explorer_learns_an_entry_format_from_typed_digits() -> None:
     s = session(fan(), fan())
     s.press(s.planned("press_power"))
     last = s.press(s.planned("press_speed"))
-    assert not Explorer(s).learn_entry_format("speed", last, "mid", unchanged=False)
+    assert not Explorer(s, DisplayLearner(s)).learn_entry_format(
+        "speed", last, "mid", unchanged=False
+    )
 
 
 def test_the_repairer_finds_a_missing_entry_step_among_the_procedures_keys() -> None:

@@ -11,8 +11,10 @@ from __future__ import annotations
 
 from typing import Any
 
+from apbot.agent.displays import DisplayLearner
 from apbot.agent.infer import (
     Dark,
+    Unread,
     common_step,
     fill_dark,
     order_from_traces,
@@ -20,6 +22,7 @@ from apbot.agent.infer import (
     splice,
     typical_change,
 )
+from apbot.agent.perception import Seen
 from apbot.agent.repair import RepairError, redefine_domain, set_effects, set_entry_format
 from apbot.agent.session import (
     MISSING,
@@ -45,8 +48,9 @@ from apbot.sim.compiled import parse_entry
 class Explorer:
     """Walk a variable's values with its step's keys and repair the belief from the walk."""
 
-    def __init__(self, session: Session) -> None:
+    def __init__(self, session: Session, displays: DisplayLearner) -> None:
         self.session = session
+        self.displays = displays
 
     def explore(self, name: str, last: Executed, history: list[Any] | None = None) -> None:
         """Explore ``name`` with ``last``'s key (from the step ``last`` left the belief in)."""
@@ -75,6 +79,7 @@ class Explorer:
                 else ""
             ),
         )
+        forward, backward = self._read_unread(name, forward, backward)
         seen = [v for v in forward + (backward or []) if not isinstance(v, Dark)]
         if not seen:
             return
@@ -88,6 +93,26 @@ class Explorer:
         for _ in range(unseen):  # presses taken in the dark: the (repaired) model says where to
             self.session.belief.advance(final.name, final.seconds)
 
+    def _read_unread(
+        self, name: str, forward: list[Any], backward: list[Any] | None
+    ) -> tuple[list[Any], list[Any] | None]:
+        """Texts the belief could not read: learn how the display prints the setting from them,
+        then read them again; what stays unreadable counts as dark."""
+        texts = [v.text for v in forward + (backward or []) if isinstance(v, Unread)]
+        if texts:
+            self.displays.learn(name, texts)
+
+        def again(trace: list[Any]) -> list[Any]:
+            result = []
+            for value in trace:
+                if isinstance(value, Unread):
+                    read = self.displays.read(name, value.text)
+                    value = Dark() if read is None else read
+                result.append(value)
+            return result
+
+        return again(forward), None if backward is None else again(backward)
+
     def walk(
         self, name: str, action: PlannedAction, history: list[Any] | None = None
     ) -> tuple[list[Any], int]:
@@ -98,7 +123,7 @@ class Explorer:
         :class:`Dark`; two in a row end the walk. Returns the values (dark ones included) and
         how many presses at the end went unseen (the appliance moved on in the dark).
         """
-        start = self.session.shown(name)
+        start = self._value(name, self.session.last_seen)
         values = [] if start is MISSING else [start]  # not shown now: start from the first press
         if history and values and history[-1] == values[0]:
             values = list(history)
@@ -109,7 +134,7 @@ class Explorer:
             done = self.session.press(action, exploring=True)
             if not done.feedback.accepted:
                 break
-            value = done.observed(name)
+            value = self._value(name, done.seen)
             if value is MISSING:
                 dark += 1
                 values.append(Dark())
@@ -121,6 +146,16 @@ class Explorer:
             if value in values[:-1]:
                 break
         return values, dark
+
+    @staticmethod
+    def _value(name: str, seen: Seen | None) -> Any:
+        """What a walk records: the value shown, text the belief cannot read, or MISSING."""
+        if seen is None:
+            return MISSING
+        value = seen.observed(name)
+        if value is MISSING and seen.unknown and seen.text.strip():
+            return Unread(seen.text)
+        return value
 
     def history(self, name: str, last: Executed, executed: list[Executed]) -> list[Any]:
         """Values ``name`` showed under the presses of ``last``'s key that end the macro

@@ -17,6 +17,7 @@ from __future__ import annotations
 from typing import Any
 
 from apbot.agent.budget import Budget
+from apbot.agent.displays import DisplayLearner
 from apbot.agent.environment import Environment
 from apbot.agent.episode import Episode, TaskContext
 from apbot.agent.explorer import Explorer
@@ -25,6 +26,7 @@ from apbot.agent.perception import Seen
 from apbot.agent.procedures import ProcedureRepairer
 from apbot.agent.session import (
     MISSING,
+    UNREADABLE,
     AgentConfig,
     Executed,
     Session,
@@ -49,7 +51,8 @@ class ClosedLoop:
 
     def __init__(self, config: AgentConfig, context: TaskContext, env: Environment) -> None:
         self.session = Session(config, context, env, Budget())
-        self.explorer = Explorer(self.session)
+        self.displays = DisplayLearner(self.session)
+        self.explorer = Explorer(self.session, self.displays)
         self.procedures = ProcedureRepairer(self.session)
         self.greedy = GreedyExecutor(self.session)
         self.config = config
@@ -122,11 +125,12 @@ class ClosedLoop:
                 if self.settle_contradictions(inside):
                     return  # the belief now holds what was shown: plan again
                 unseen = sorted(self.session.unverified & set(inside))
-                raise Stop(
-                    "the goal holds"
-                    + (f" (not seen on the display: {', '.join(unseen)})" if unseen else ""),
-                    success=True,
-                )
+                if unseen:  # believed, never seen: claiming it would be a guess
+                    raise Stop(
+                        "the belief holds the goal, but the display never confirmed "
+                        f"{', '.join(unseen)} after it was set"
+                    )
+                raise Stop("the goal holds", success=True)
             self.pending = list(found.macro_actions)
             self.session.episode.log("plan", " → ".join(m.feature for m in found.macro_actions))
         macro = self.pending.pop(0)
@@ -277,7 +281,9 @@ class ClosedLoop:
             "check",
             "mismatch",
             expected={n: p for n, (p, _) in done.surprises.items()},
-            values={n: o for n, (_, o) in done.surprises.items()},
+            values={
+                n: "(unreadable)" if o is UNREADABLE else o for n, (_, o) in done.surprises.items()
+            },
         )
         if done.refused or self._wrong_setting(done):
             self.procedures.repair_procedure(executed[first:])
@@ -291,7 +297,10 @@ class ClosedLoop:
         else:
             name = done.variable if done.variable in done.surprises else next(iter(done.surprises))
             predicted, observed = done.surprises[name]
-            self.repair_value(name, predicted, observed, executed, first)
+            if observed is UNREADABLE and self._learn_display(name, executed[: first + 1]):
+                pass  # read again and plan again with the repaired display rules
+            else:
+                self.repair_value(name, predicted, observed, executed, first)
         outside = self.goal()[1]  # a repair may have taught the belief the goal value
         self._look_at(outside)
         return False
@@ -310,6 +319,22 @@ class ClosedLoop:
             return True
         shown = seen.shown()
         return bool(shown - set(self.session.belief.model.display.indicators) - {done.variable})
+
+    def _learn_display(self, name: str, executed: list[Executed]) -> bool:
+        """The display showed text the belief cannot read where it expected ``name``: learn
+        how the display prints it from the texts of the presses that adjusted it."""
+        shown = [e for e in executed if e.variable == name and e.seen is not None]
+        unread = [e for e in shown if e.seen is not None and e.seen.unknown]
+        if not unread:
+            return False
+        texts = [e.feedback.text for e in unread]
+        if not self.displays.learn(name, texts, believed=unread[-1].predicted):
+            return False
+        value = self.displays.read(name, unread[-1].feedback.text)
+        if value is not None:
+            self.session.belief.set_value(name, value)
+        self.session.reread()
+        return True
 
     def _look_at(self, outside: dict[str, Any]) -> bool:
         focused = {

@@ -193,6 +193,10 @@ class DisplayReader:
         self._cache[key] = reading
         return reading
 
+    def lamp_texts(self) -> set[str]:
+        """Every text a lamp of the belief can show (case-folded)."""
+        return {t.casefold() for rows in self._lamp_table.values() for _, t in rows if t}
+
     def screens(self) -> list[Screen]:
         """Every screen the belief can show."""
         return [p.screen for p in self._patterns]
@@ -219,12 +223,21 @@ class DisplayReader:
         if not found and text.strip():  # a word the belief does not know
             found = [h for p in self._loose if (h := self._match(p, text, parents, False))]
         if not found and text.strip():  # more on the display than the belief prints
+            main = self._without_lamps(text)
             found = [
                 h
                 for p in self._patterns
-                if p.search is not None and (h := self._match(p, text, parents, True))
+                if p.search is not None and (h := self._match(p, main, parents, True))
             ]
         return Reading(text, tuple(_unique(found)))
+
+    def _without_lamps(self, text: str) -> str:
+        """The text without the lamps the belief knows at its end (a lamp alone is no reading
+        of the main display)."""
+        trailing = re.compile(rf"\s+(?:{self._lamp_words.pattern})\s*$", re.IGNORECASE)
+        while (match := trailing.search(text)) is not None and match.start() > 0:
+            text = text[: match.start()]
+        return text
 
     def _match(
         self, pattern: _Pattern, text: str, parents: dict[str, Any], partial: bool
@@ -373,9 +386,13 @@ class DisplayReader:
 
     @cached_property
     def _loose(self) -> list[_Pattern]:
-        """Patterns whose word fields take any words: for a value the belief lacks."""
+        """Patterns whose word fields take any words: for a value the belief lacks (only on
+        screens with text of their own around the field)."""
         loose = []
         for screen in self._screens:
+            own = screen.template.replace("{label}", "label" if screen.variable else "")
+            if not TEMPLATE_FIELD.sub("", own).strip():
+                continue  # a bare "{value}" would read any text at all as a word
             names = [
                 screen.variable if n == "value" else n
                 for n in TEMPLATE_FIELD.findall(screen.template)

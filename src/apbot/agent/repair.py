@@ -137,3 +137,17 @@ def set_entry_format(model: ApplianceModel, name: str, fmt: str) -> ApplianceMod
     data = _dump(model)
     data["variables"][name].setdefault("entry", {})["format"] = fmt
     return _rebuild(data)
+
+
+def set_display(model: ApplianceModel, name: str, template: str) -> ApplianceModel:
+    """Print a variable through another template: as its label when the template is the usual
+    "LABEL {value}", else as its ``show`` template (``"PL{value}"``)."""
+    data = _dump(model)
+    var = data["variables"][name]
+    label, _, rest = template.partition(" ")
+    if rest == "{value}" and "{" not in label and not isinstance(var.get("show"), dict):
+        var["label"] = label
+        var.pop("show", None)
+    else:
+        var["show"] = template
+    return _rebuild(data)

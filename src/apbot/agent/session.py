@@ -178,13 +178,9 @@ class Session:
             # the display did not move to the step the belief entered: the key did nothing
             # visible, so the belief must not keep what it predicted the key would do
             self.belief.state = before_state  # (``pointer`` still says where it meant to go)
-        self.sync(seen)
         if variable and not exploring:
             self.unverified.add(variable)
-        self.unverified -= set(seen.values)
-        self.contradicted.update(seen.outside)
-        for name in seen.values:
-            self.contradicted.pop(name, None)
+        self.sync(seen)
         return Executed(
             action,
             pointer,
@@ -223,10 +219,15 @@ class Session:
         return ("focus", compiled.vars[focus].name) if focus >= 0 else ("idle", None)
 
     def sync(self, seen: Seen) -> None:
-        """Believe what the display shows."""
+        """Believe what the display shows; what it showed is confirmed, and a value the belief
+        cannot hold is kept as a contradiction until the setting is seen with one it can."""
         self.last_seen = seen
         for name, value in seen.values.items():
             self.belief.set_value(name, value)
+        self.unverified -= set(seen.values)
+        self.contradicted.update(seen.outside)
+        for name in seen.values:
+            self.contradicted.pop(name, None)
 
     def shown(self, name: str) -> Any:
         """The value of ``name`` on the display now; MISSING if none."""

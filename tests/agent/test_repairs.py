@@ -1,0 +1,61 @@
+"""The closed loop repairs the faults a reader of a manual makes, in display feedback mode.
+
+Each test writes a belief with one misreading of a true model and checks the outcome on the
+truth: the goal is reached (or a failure is declared — never a false claim of success), and the
+repair says what was learnt.
+"""
+
+from __future__ import annotations
+
+from importlib.resources import files
+from typing import Any
+
+from apbot.agent.environment import FeedbackMode, SimulatorEnvironment
+from apbot.agent.episode import Episode, TaskContext
+from apbot.agent.registry import get_method
+from apbot.model.goal import parse_goal
+from apbot.model.load import loads_model
+from apbot.model.schema import ApplianceModel
+
+
+def example(name: str, *replacements: tuple[str, str]) -> ApplianceModel:
+    text = (files("apbot") / f"data/examples/{name}.yaml").read_text()
+    for old, new in replacements:
+        assert old in text, old
+        text = text.replace(old, new)
+    return loads_model(text)
+
+
+def run(
+    truth: ApplianceModel,
+    belief: ApplianceModel,
+    goal: dict[str, Any],
+    feedback: FeedbackMode = "display",
+) -> tuple[Episode, bool]:
+    env = SimulatorEnvironment(truth, feedback)
+    context = TaskContext("unit", "test", "t", "", goal, belief, actions=tuple(env.actions))
+    episode = get_method("apbot").run(context, env)
+    reached = env.simulator.satisfies(parse_goal(truth, goal))
+    assert not (episode.claimed_success and not reached), "a false claim of success"
+    return episode, reached
+
+
+def test_a_display_template_copied_wrong_is_learnt_from_the_typed_values() -> None:
+    truth = example("microwave_keypad")
+    belief = example("microwave_keypad", ('show: "PL{value}"', 'show: "P{value}"'))
+    goal = {"cook_time": "00:01:30", "power_level": 7, "running": "on"}
+    episode, reached = run(truth, belief, goal)
+    assert reached and episode.claimed_success
+    assert "power_level is shown as 'PL{value}'" in episode.repairs
+
+
+def test_a_label_copied_wrong_is_learnt_by_walking_the_setting() -> None:
+    truth = example("toaster_oven_dial")
+    belief = example(
+        "toaster_oven_dial",
+        ('    initial: 180\n    label: "TEMP"', '    initial: 180\n    label: "TEMPERATURE"'),
+    )
+    goal = {"function": "bake", "temperature": 200}
+    episode, reached = run(truth, belief, goal)
+    assert reached and episode.claimed_success
+    assert "temperature is shown as 'TEMP {value}'" in episode.repairs
