@@ -59,3 +59,33 @@ def test_a_label_copied_wrong_is_learnt_by_walking_the_setting() -> None:
     episode, reached = run(truth, belief, goal)
     assert reached and episode.claimed_success
     assert "temperature is shown as 'TEMP {value}'" in episode.repairs
+
+
+def suite_model(appliance: str, *replacements: tuple[str, str]) -> ApplianceModel:
+    text = (files("apbot") / f"data/suite/{appliance}/model.yaml").read_text()
+    for old, new in replacements:
+        assert text.count(old) == 1, old
+        text = text.replace(old, new)
+    return loads_model(text)
+
+
+SHOWING_STEP = (
+    "- {actions: [press_humidity], variable: humidity, effect: next, on_entry: show}",
+    "- {actions: [press_humidity], variable: humidity, effect: next}",
+)
+
+
+def test_a_first_press_believed_to_change_a_setting_that_only_shows_it() -> None:
+    truth = suite_model("dehumidifier_4")
+    belief = suite_model("dehumidifier_4", SHOWING_STEP)  # the reader missed "press to show"
+    episode, reached = run(truth, belief, {"power": "on", "humidity": 60})
+    assert reached and episode.claimed_success
+    assert any("only shows it" in r for r in episode.repairs)
+
+
+def test_a_first_press_believed_to_show_a_setting_that_changes_it() -> None:
+    truth = suite_model("dehumidifier_4", SHOWING_STEP)
+    belief = suite_model("dehumidifier_4")
+    episode, reached = run(truth, belief, {"power": "on", "humidity": 60})
+    assert reached and episode.claimed_success
+    assert any("changes it at once" in r for r in episode.repairs)

@@ -23,7 +23,13 @@ from apbot.agent.infer import (
     typical_change,
 )
 from apbot.agent.perception import Seen
-from apbot.agent.repair import RepairError, redefine_domain, set_effects, set_entry_format
+from apbot.agent.repair import (
+    RepairError,
+    redefine_domain,
+    set_effects,
+    set_entry_format,
+    set_on_entry,
+)
 from apbot.agent.session import (
     MISSING,
     Executed,
@@ -42,7 +48,7 @@ from apbot.model.schema import (
     time_step_seconds,
 )
 from apbot.plan.plan import PlannedAction
-from apbot.sim.compiled import parse_entry
+from apbot.sim.compiled import CompiledModel, parse_entry
 
 
 class Explorer:
@@ -338,6 +344,43 @@ class Explorer:
             self.session.episode.log("repair", f"could not repair {last.action.name}: {exc}")
             return
         self.session.adopt(new, f"{last.action.name} sets {name} to {observed}", last.pointer)
+
+    def learn_on_entry(self, name: str, entering: Executed) -> bool:
+        """The press that entered a step showed what the other ``on_entry`` would have given
+        (the first press of TEMP already changed it, or only showed it): the step says so."""
+        session = self.session
+        if entering.pointer is None or entering.before == entering.pointer:
+            return False
+        if entering.state_before is None or not session.stepping(
+            entering.pointer, entering.action.name
+        ):
+            return False
+        feature, index = entering.pointer
+        step = session.belief.model.features[feature][index]
+        other = "apply" if step.on_entry == "show" else "show"
+        try:
+            flipped = set_on_entry(session.belief.model, feature, index, other)
+        except RepairError:
+            return False
+        compiled = CompiledModel(flipped)
+        after = compiled.apply(
+            entering.state_before,
+            compiled.action_index[entering.action.name],
+            entering.action.seconds,
+        )
+        shown = entering.observed(name)
+        if after is None or compiled.value(after, name) != shown or shown == entering.predicted:
+            return False
+        if not session.budget.once("entry", f"{feature}:{index}"):
+            return False
+        session.adopt(
+            flipped,
+            f"{feature}: the press that enters {name}'s step "
+            + ("changes it at once" if other == "apply" else "only shows it"),
+            entering.pointer,
+        )
+        session.belief.set_value(name, shown)
+        return True
 
     def learn_entry_format(self, name: str, last: Executed, observed: Any, unchanged: bool) -> bool:
         """Digits typed gave another value than the belief's entry format reads: find the

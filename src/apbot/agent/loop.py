@@ -362,6 +362,13 @@ class ClosedLoop:
         last = adjusting[-1]
         assert last.pointer is not None
         unchanged = observed == self.values_before.get(name)
+        first = next((e for e in executed[: upto + 1] if e.surprises), None)
+        if (
+            first is not None
+            and first.variable == name
+            and self.explorer.learn_on_entry(name, first)
+        ):
+            return
         if unchanged and self.procedures.absorbed(adjusting[0]):
             return
         effect = self.session.effect(last.pointer, last.action.name)

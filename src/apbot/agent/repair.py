@@ -151,3 +151,10 @@ def set_display(model: ApplianceModel, name: str, template: str) -> ApplianceMod
     else:
         var["show"] = template
     return _rebuild(data)
+
+
+def set_on_entry(model: ApplianceModel, feature: str, step: int, on_entry: str) -> ApplianceModel:
+    """Say whether the press that enters a step applies its effect or only shows the value."""
+    data = _dump(model)
+    data["features"][feature][step]["on_entry"] = on_entry
+    return _rebuild(data)

@@ -26,7 +26,7 @@ from apbot.model.domain import ValueProblem, parse_value
 from apbot.model.schema import Add, ApplianceModel, TimeVariable
 from apbot.model.values import format_hms, parse_hms
 from apbot.plan.plan import PlannedAction
-from apbot.sim.compiled import default_effect
+from apbot.sim.compiled import State, default_effect
 from apbot.sim.simulator import Observation
 
 __all__ = ["MISSING", "UNREADABLE", "AgentConfig", "Executed", "Session", "Stop"]
@@ -76,6 +76,7 @@ class Executed:
     surprises: dict[str, tuple[Any, Any]] = field(default_factory=dict)
     unchanged: bool = False
     buffer: str = ""  # the keypad digits the belief had typed into the step after the action
+    state_before: State | None = None  # the belief's state before the action
 
     def observed(self, name: str) -> Any:
         """The value of ``name`` the display showed after this action (MISSING if none)."""
@@ -193,6 +194,7 @@ class Session:
             surprises,
             unchanged,
             buffer,
+            before_state,
         )
 
     def planned(self, action: str) -> PlannedAction:
