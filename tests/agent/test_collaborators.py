@@ -9,6 +9,7 @@ from apbot.agent.environment import SimulatorEnvironment
 from apbot.agent.episode import TaskContext
 from apbot.agent.explorer import Explorer
 from apbot.agent.greedy import GreedyExecutor
+from apbot.agent.guards import GuardLearner
 from apbot.agent.perception import MISSING
 from apbot.agent.procedures import ProcedureRepairer
 from apbot.agent.session import AgentConfig, Session
@@ -100,7 +101,7 @@ def test_the_repairer_finds_a_missing_entry_step_among_the_procedures_keys() -> 
     s = session(fan(), fan(timer=NO_ENTRY))
     s.press(s.planned("press_power"))
     done = s.press(s.planned("press_up"))
-    ProcedureRepairer(s).repair_procedure([done])
+    ProcedureRepairer(s, GuardLearner(s)).repair_procedure([done])
     steps = s.belief.model.features["timer"]
     assert steps[0].actions == ["press_timer"] and steps[0].variable is None
     s.belief.set_pointer(None)
@@ -110,15 +111,15 @@ def test_the_repairer_finds_a_missing_entry_step_among_the_procedures_keys() -> 
     assert s.shown("timer") is not MISSING  # the probe left the setting on the display
 
 
-def test_the_repairer_explains_a_refusal_by_a_guard_once() -> None:
+def test_the_guard_learner_explains_a_refusal_by_a_guard_once() -> None:
     s = session(fan(), fan(), feedback="values")
     s.belief.set_value("power", "on")  # the belief wrongly thinks the fan is on
     done = s.press(s.planned("press_speed"))
-    repairer = ProcedureRepairer(s)
-    assert done.refused and repairer.explain_refusal(done)
+    guards = GuardLearner(s)
+    assert done.refused and guards.explain(done)
     assert s.belief.value("power") == "off"
     s.belief.set_value("power", "on")
-    assert not repairer.explain_refusal(done)  # once only
+    assert not guards.explain(done)  # once only
 
 
 def test_the_greedy_executor_decides_every_press_from_the_display() -> None:

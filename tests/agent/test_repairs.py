@@ -89,3 +89,44 @@ def test_a_first_press_believed_to_show_a_setting_that_changes_it() -> None:
     episode, reached = run(truth, belief, {"power": "on", "humidity": 60})
     assert reached and episode.claimed_success
     assert any("changes it at once" in r for r in episode.repairs)
+
+
+POWER_GUARD = (
+    """  - name: power off
+    when: {power: "off"}
+    only: [press_power]
+    display: ""
+    hide: true
+""",
+    "",
+)
+
+
+def test_a_missing_guard_behind_a_dark_display_is_found_and_learnt() -> None:
+    truth = example("washing_machine")
+    belief = example("washing_machine", POWER_GUARD)  # keys believed to work while off
+    episode, reached = run(truth, belief, {"programme": "wool"})
+    assert reached and episode.claimed_success
+    assert "while power is off, turn_programme_cw does not work" in episode.repairs
+
+
+LOCKED_AT_START = (
+    '  child_lock:\n    type: discrete\n    values: ["off", "on"]\n',
+    '  child_lock:\n    type: discrete\n    values: ["off", "on"]\n    initial: "on"\n',
+)
+
+
+def test_a_key_a_guard_is_believed_to_allow_is_struck_from_it() -> None:
+    truth = example("washing_machine", LOCKED_AT_START)
+    belief = example(
+        "washing_machine",
+        LOCKED_AT_START,
+        (
+            "only: [hold_temp_and_spin, press_power]",
+            "only: [hold_temp_and_spin, press_power, press_temp]",
+        ),
+    )
+    goal = {"power": "on", "child_lock": "on", "programme": "cotton", "temperature": "60"}
+    episode, reached = run(truth, belief, goal)
+    assert reached and episode.claimed_success
+    assert "child lock does not let press_temp work" in episode.repairs

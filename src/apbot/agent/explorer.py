@@ -373,6 +373,13 @@ class Explorer:
             return False
         if not session.budget.once("entry", f"{feature}:{index}"):
             return False
+        # a key that moves the other way, stuck at an end, also leaves the value as it was:
+        # one more press must go as the other on_entry predicts
+        action = compiled.action_index[entering.action.name]
+        then = compiled.apply(after, action, entering.action.seconds)
+        again = session.press(entering.action, exploring=True)
+        if then is None or again.observed(name) != compiled.value(then, name):
+            return False
         session.adopt(
             flipped,
             f"{feature}: the press that enters {name}'s step "

@@ -22,6 +22,7 @@ from apbot.agent.environment import Environment
 from apbot.agent.episode import Episode, TaskContext
 from apbot.agent.explorer import Explorer
 from apbot.agent.greedy import GreedyExecutor
+from apbot.agent.guards import GuardLearner
 from apbot.agent.perception import Seen
 from apbot.agent.procedures import ProcedureRepairer
 from apbot.agent.session import (
@@ -53,7 +54,8 @@ class ClosedLoop:
         self.session = Session(config, context, env, Budget())
         self.displays = DisplayLearner(self.session)
         self.explorer = Explorer(self.session, self.displays)
-        self.procedures = ProcedureRepairer(self.session)
+        self.guards = GuardLearner(self.session)
+        self.procedures = ProcedureRepairer(self.session, self.guards)
         self.greedy = GreedyExecutor(self.session)
         self.config = config
         self.context = context

@@ -11,24 +11,27 @@ from __future__ import annotations
 
 from typing import Any
 
+from apbot.agent.guards import GuardLearner
 from apbot.agent.repair import RepairError, insert_step
 from apbot.agent.session import MISSING, Executed, Session, Stop
-from apbot.plan.plan import Unreachable, plan
 
 
 class ProcedureRepairer:
-    """Find and insert missing steps; explain refusals by the belief's guards."""
+    """Find and insert missing steps (a guard that explains the trouble comes first)."""
 
-    def __init__(self, session: Session) -> None:
+    def __init__(self, session: Session, guards: GuardLearner) -> None:
         self.session = session
+        self.guards = guards
 
     def repair_procedure(self, executed: list[Executed]) -> None:
         """A key the belief expected to work was refused, or brought up another setting:
         explain it by a guard, or find the step in front of it that the belief misses."""
         refused = [e for e in executed if e.refused]
-        if refused and self.explain_refusal(refused[0]):
+        if refused and self.guards.explain(refused[0]):
             return
         failing = refused or [e for e in executed if e.variable is not None]
+        if failing and self.guards.learn(failing[0]):
+            return
         if not failing or failing[0].pointer is None:
             raise Stop(
                 "the appliance does not respond as the model predicts, and the "
@@ -68,30 +71,6 @@ class ProcedureRepairer:
                 return
         self.session.forget_pointer()
 
-    def explain_refusal(self, refused: Executed) -> bool:
-        """A refusal whose display is one of the belief's guard messages: believe that guard
-        holds (the knob is at OFF, the lock is on) and let the planner lift it."""
-        compiled = self.session.belief.compiled
-        action = compiled.action_index.get(refused.action.name)
-        text = refused.feedback.text.strip()
-        for guard in compiled.guards:
-            shows = guard.display.strip() == text and (guard.display or guard.hide)
-            if action in guard.allowed or not shows:
-                continue  # a dark panel (hide) explains a refusal shown as a blank display
-            if all(self.session.belief.state.values[v] in ok for v, ok in guard.conditions):
-                return False  # the belief already knew: something else is wrong
-            if not self.session.budget.once("guard", guard.name or guard.display):
-                return False
-            for v, ok in guard.conditions:
-                domain = compiled.vars[v].domain(self.session.belief.state.values)
-                if domain is not None:
-                    self.session.belief.set_value(compiled.vars[v].name, domain.values[min(ok)])
-            self.session.episode.log(
-                "repair", f"refused with {text!r}: the appliance must be in '{guard.name or text}'"
-            )
-            return True
-        return False
-
     def recover_unreachable(self, blocked: dict[str, Any]) -> bool:
         """The belief cannot bring these goal variables up: probe for the key that does."""
         for name in blocked:
@@ -110,7 +89,7 @@ class ProcedureRepairer:
 
     def _first_step_from_orphans(self, name: str, features: list[str]) -> bool:
         for candidate in self.orphans():
-            self.lift_guards(candidate)
+            self.guards.lift(candidate)
             probe = self.session.press(self.session.planned(candidate), exploring=True)
             if not probe.feedback.accepted or probe.observed(name) is MISSING:
                 continue
@@ -191,38 +170,9 @@ class ProcedureRepairer:
         """Go through ``feature`` up to (not into) step ``index``: lift any guard, then press
         the first key of each earlier step (exploration presses)."""
         steps = self.session.belief.model.features[feature]
-        self.lift_guards(steps[0].actions[0])
+        self.guards.lift(steps[0].actions[0])
         for step in steps[:index]:
             self.session.press(self.session.planned(step.actions[0]), exploring=True)
-
-    def lift_guards(self, action: str) -> None:
-        """Bring the appliance out of any guard that would refuse ``action`` (switch it on,
-        unlock it), so that a probe with ``action`` can tell something."""
-        compiled = self.session.belief.compiled
-        index = compiled.action_index[action]
-        for guard in compiled.guards:
-            holds = all(self.session.belief.state.values[v] in ok for v, ok in guard.conditions)
-            if index in guard.allowed or not holds:
-                continue
-            for v, ok in guard.conditions:
-                domain = compiled.vars[v].domain(self.session.belief.state.values)
-                others = [
-                    value for i, value in enumerate(domain.values if domain else ()) if i not in ok
-                ]
-                if not others:
-                    continue
-                try:
-                    found = plan(
-                        compiled,
-                        self.session.belief.state,
-                        {compiled.vars[v].name: others[0]},
-                        self.session.config.plan_budget,
-                    )
-                except Unreachable:
-                    continue
-                for planned in found.actions:
-                    self.session.press(planned, exploring=True)
-                break
 
     def orphans(self) -> list[str]:
         """Keys the appliance offers that no feature of the belief uses (at most eight)."""

@@ -158,3 +158,26 @@ def set_on_entry(model: ApplianceModel, feature: str, step: int, on_entry: str) 
     data = _dump(model)
     data["features"][feature][step]["on_entry"] = on_entry
     return _rebuild(data)
+
+
+def disallow(model: ApplianceModel, guard: int, action: str) -> ApplianceModel:
+    """A guard does not let ``action`` through after all."""
+    data = _dump(model)
+    data["guards"][guard]["only"] = [a for a in data["guards"][guard]["only"] if a != action]
+    return _rebuild(data)
+
+
+def add_guard(
+    model: ApplianceModel,
+    when: dict[str, Any],
+    only: Sequence[str],
+    display: str = "",
+    hide: bool = False,
+) -> ApplianceModel:
+    """A guard the model lacked: while ``when`` holds, only ``only`` works."""
+    data = _dump(model)
+    guard: dict[str, Any] = {"name": "learnt", "when": when, "only": list(only), "display": display}
+    if hide:
+        guard["hide"] = True
+    data.setdefault("guards", []).append(guard)
+    return _rebuild(data)
