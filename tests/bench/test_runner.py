@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 import os
 import signal
+from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
@@ -13,7 +14,7 @@ from typer.testing import CliRunner
 from apbot.agent.environment import Environment
 from apbot.agent.episode import Episode, TaskContext
 from apbot.agent.methods import run_oracle
-from apbot.agent.registry import Method, methods, register
+from apbot.agent.registry import Method, register, unregister
 from apbot.bench.beliefs import BeliefError, belief_model, parse_belief
 from apbot.bench.results import RESULTS_FILE, read_records
 from apbot.bench.runner import BenchError, BenchOptions, cached_suite, run_benchmark, run_one
@@ -53,11 +54,13 @@ FAKES = {
 
 
 @pytest.fixture(scope="module", autouse=True)
-def fake_methods() -> None:
-    known = methods()
+def fake_methods() -> Iterator[None]:
+    """The fakes exist for this module only: a default ``--methods`` elsewhere runs none."""
     for name, run in FAKES.items():
-        if name not in known:
-            register(Method(name, run, "a method for the runner's tests"))
+        register(Method(name, run, "a method for the runner's tests"))
+    yield
+    for name in FAKES:
+        unregister(name)
 
 
 def options(tmp_path: Path, **changes: object) -> BenchOptions:
