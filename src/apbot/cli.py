@@ -594,11 +594,11 @@ def bench(
     )
     if outcome.interrupted:
         errors.print(
-            f"[yellow]interrupted[/yellow]: {len(outcome.records)} finished record(s) "
-            f"kept in {outcome.out}; run the same command again"
+            f"[yellow]stopped[/yellow] ({outcome.stopped_by}): {len(outcome.records)} finished "
+            f"record(s) kept in {outcome.out}; run the same command again"
             f"{' without --rerun' if rerun else ''} to resume"
         )
-        raise typer.Exit(130)
+        raise typer.Exit(outcome.exit_code)
     if not no_report:
         _bench_report(outcome.out)
 

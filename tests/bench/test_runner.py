@@ -2,9 +2,13 @@
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import signal
+import subprocess
+import sys
+import time
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -18,6 +22,7 @@ from apbot.agent.registry import Method, register, unregister
 from apbot.bench.beliefs import BeliefError, belief_model, parse_belief
 from apbot.bench.results import RESULTS_FILE, read_records
 from apbot.bench.runner import BenchError, BenchOptions, cached_suite, run_benchmark, run_one
+from apbot.bench.stopping import WORKER_DIED
 from apbot.cli import app
 
 
@@ -45,11 +50,25 @@ def _interrupt(context: TaskContext, env: Environment) -> Episode:
     return run_oracle(context, env)
 
 
+def _terminate(context: TaskContext, env: Environment) -> Episode:
+    """A plain ``kill`` arrives while this method runs."""
+    os.kill(os.getpid(), signal.SIGTERM)
+    return run_oracle(context, env)
+
+
+def _die(context: TaskContext, env: Environment) -> Episode:
+    """The worker running this is killed (as by the OOM killer or a user's ``kill -9``)."""
+    os.kill(os.getpid(), signal.SIGKILL)
+    raise AssertionError("unreachable")
+
+
 FAKES = {
     "test-liar": _liar,
     "test-crash": _crash,
     "test-overthink": _overthink,
     "test-interrupt": _interrupt,
+    "test-terminate": _terminate,
+    "test-die": _die,
 }
 
 
@@ -172,13 +191,35 @@ def test_workers_give_the_same_records_as_one_process(tmp_path: Path) -> None:
     ).read_bytes()
 
 
-def test_ctrl_c_stops_cleanly_and_keeps_finished_records(tmp_path: Path) -> None:
-    before = signal.getsignal(signal.SIGINT)
-    outcome = run_benchmark(options(tmp_path, methods=["oracle", "test-interrupt"]), progress=False)
-    assert outcome.interrupted
+@pytest.mark.parametrize(
+    ("method", "name", "code"),
+    [("test-interrupt", "SIGINT", 130), ("test-terminate", "SIGTERM", 143)],
+)
+def test_ctrl_c_and_sigterm_stop_cleanly_and_keep_finished_records(
+    tmp_path: Path, method: str, name: str, code: int
+) -> None:
+    before = signal.getsignal(signal.SIGINT), signal.getsignal(signal.SIGTERM)
+    outcome = run_benchmark(options(tmp_path, methods=["oracle", method]), progress=False)
+    assert (outcome.interrupted, outcome.stopped_by, outcome.exit_code) == (True, name, code)
     assert outcome.ran == 2  # the first task of each method; the second appliance never started
     assert len(read_records(tmp_path / "run")) == 2
-    assert signal.getsignal(signal.SIGINT) is before  # Ctrl-C handling restored
+    assert (signal.getsignal(signal.SIGINT), signal.getsignal(signal.SIGTERM)) == before
+
+
+def test_a_worker_that_dies_stops_the_run_and_keeps_what_finished(tmp_path: Path) -> None:
+    outcome = run_benchmark(
+        options(tmp_path, methods=["oracle", "test-die"], workers=2), progress=False
+    )
+    assert (outcome.interrupted, outcome.stopped_by, outcome.exit_code) == (
+        True,
+        WORKER_DIED,
+        1,
+    )
+    kept = read_records(tmp_path / "run")
+    assert sorted(r.key for r in kept) == [r.key for r in outcome.records]
+    assert all(r.method == "oracle" and r.success for r in kept)
+    again = run_benchmark(options(tmp_path, methods=["oracle"], workers=2), progress=False)
+    assert (again.interrupted, again.ran + again.skipped) == (False, 2)
 
 
 def test_beliefs() -> None:
@@ -237,12 +278,66 @@ def test_cli_runs_and_prints_the_table(tmp_path: Path) -> None:
 
 
 def test_two_runs_never_write_one_directory_at_once(tmp_path: Path) -> None:
-    from apbot.bench.runner import _exclusive
+    from apbot.bench.rundir import exclusive
 
     options = BenchOptions(
         methods=["oracle"], appliances=["kettle_1"], sample=1, workers=1, out=tmp_path / "run"
     )
     (tmp_path / "run").mkdir()
-    with _exclusive(tmp_path / "run"), pytest.raises(BenchError, match="another"):
+    with exclusive(tmp_path / "run"), pytest.raises(BenchError, match="another"):
         run_benchmark(options, progress=False)
     assert run_benchmark(options, progress=False).ran == 1  # free again afterwards
+
+
+def _group_alive(group: int) -> list[int]:
+    """Live (not zombie) processes of a process group, from /proc."""
+    alive = []
+    for entry in Path("/proc").iterdir():
+        if entry.name.isdigit():
+            try:
+                fields = (entry / "stat").read_text().rsplit(")", 1)[1].split()
+            except OSError:
+                continue
+            if int(fields[2]) == group and fields[0] != "Z":
+                alive.append(int(entry.name))
+    return alive
+
+
+@pytest.mark.skipif(not Path("/proc").is_dir(), reason="reads /proc (Linux)")
+@pytest.mark.parametrize(("signum", "code"), [(signal.SIGKILL, -9), (signal.SIGTERM, 143)])
+def test_a_killed_bench_resumes_with_the_same_command(
+    tmp_path: Path, signum: int, code: int
+) -> None:
+    """The README's advice after a kill of the main process (its workers are not signalled)."""
+    out = tmp_path / "k"
+    command = [sys.executable, "-m", "apbot.cli", "bench", "--methods", "oracle,apbot-open-loop"]
+    command += ["--categories", "dehumidifier,kettle", "--sample", "3", "--workers", "2"]
+    command += ["--no-report", "--out", str(out)]
+    total = 2 * 10 * 3
+    with (tmp_path / "stderr").open("w") as stderr:
+        process = subprocess.Popen(
+            command, stdout=subprocess.DEVNULL, stderr=stderr, start_new_session=True
+        )
+        try:
+            while not (out / RESULTS_FILE).exists() or not (out / RESULTS_FILE).read_bytes():
+                assert process.poll() is None, (tmp_path / "stderr").read_text()
+                time.sleep(0.01)
+            os.kill(process.pid, signum)
+            assert process.wait(timeout=30) == code
+            deadline = time.monotonic() + 5
+            while _group_alive(process.pid) and time.monotonic() < deadline:
+                time.sleep(0.02)
+            assert not _group_alive(process.pid), "workers outlived the killed run"
+        finally:
+            with contextlib.suppress(ProcessLookupError):
+                os.killpg(process.pid, signal.SIGKILL)
+    if signum == signal.SIGTERM:
+        last = (tmp_path / "stderr").read_text().strip().splitlines()[-1]
+        assert "stopped (SIGTERM)" in last and "run the same command again to resume" in last
+    kept = len(read_records(out))
+    assert 0 < kept < total
+    again = subprocess.run(command, capture_output=True, text=True, timeout=60)
+    assert again.returncode == 0, again.stderr
+    assert f"{total - kept} task(s) run, {kept} already finished" in again.stdout
+    keys = [json.loads(line)["key"] for line in (out / RESULTS_FILE).read_text().splitlines()]
+    assert len(keys) == len(set(keys)) == total

@@ -2,26 +2,25 @@
 
 Every finished (method, task) is appended to ``results.jsonl`` in the run directory at once,
 so a run killed at any moment resumes where it stopped (finished keys are skipped) and ends
-with the same records as an uninterrupted run. ``run.json`` pins the suite, belief and seed of
-a directory: mixing runs with different ones would make the records' keys ambiguous.
+with the same records as an uninterrupted run. The directory itself (``run.json``, the lock)
+is :mod:`apbot.bench.rundir`'s; stopping on a signal is :mod:`apbot.bench.stopping`'s.
 
-Work runs in worker processes (``workers=1``: in this process), sent in small batches because
-one task often takes less time than shipping it; only the main process writes files.
+Work runs in worker processes (``workers=1``: in this process) that die with the main process
+(:mod:`apbot.bench.workers`), sent in small batches because one task often takes less time
+than shipping it; only the main process writes files.
 """
 
 from __future__ import annotations
 
-import json
 import os
-import signal
 import sys
 import time
 from collections import deque
 from collections.abc import Callable, Iterator
-from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
+from concurrent.futures import FIRST_COMPLETED, Future, wait
+from concurrent.futures.process import BrokenProcessPool
 from contextlib import contextmanager
 from dataclasses import dataclass, field
-from datetime import UTC, datetime
 from functools import lru_cache
 from pathlib import Path
 from typing import Any
@@ -33,17 +32,14 @@ from apbot.bench.beliefs import BeliefError, BeliefSpec, belief_model, parse_bel
 from apbot.bench.metrics import summarise
 from apbot.bench.records import TaskRecord, record_key, spl
 from apbot.bench.results import RESULTS_FILE, ResultStore
+from apbot.bench.rundir import BenchError, exclusive, prepare, write_json
+from apbot.bench.stopping import WORKER_DIED, Stop, handling_signals
 from apbot.bench.suite import Suite, SuiteAppliance, Task, load_suite
+from apbot.bench.workers import worker_pool
 from apbot.model.goal import parse_goal
 from apbot.model.schema import ApplianceModel
 
-RUN_FILE = "run.json"
 SUMMARY_FILE = "summary.json"
-PINNED = ("suite", "belief", "seed")  # what a run directory cannot mix
-
-
-class BenchError(ValueError):
-    """A benchmark that cannot start as asked; the message says what to change."""
 
 
 def _default_methods() -> list[str]:
@@ -68,7 +64,11 @@ class BenchOptions:
 
 @dataclass
 class BenchOutcome:
-    """The records of the selected work (finished so far), the summary written, and counts."""
+    """The records of the selected work (finished so far), the summary written, and counts.
+
+    ``interrupted``: the run stopped early (``stopped_by`` says why: "SIGINT", "SIGTERM" or a
+    worker's death) and ``exit_code`` is what the command line exits with.
+    """
 
     records: list[TaskRecord]
     summary: dict[str, Any]
@@ -76,6 +76,8 @@ class BenchOutcome:
     interrupted: bool
     ran: int
     skipped: int
+    stopped_by: str = ""
+    exit_code: int = 0
 
 
 @dataclass(frozen=True)
@@ -262,11 +264,6 @@ def _run_batch(items: list[WorkItem], belief: str, seed: int, suite: str) -> lis
     return [run_one(i.method, belief, seed, i.appliance, i.task, suite) for i in items]
 
 
-def _worker_init() -> None:
-    """Workers leave Ctrl-C to the main process, which stops them cleanly."""
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
-
-
 # --- selecting the work -----------------------------------------------------------------------
 
 
@@ -326,101 +323,6 @@ def select_work(options: BenchOptions, suite: Suite) -> list[WorkItem]:
     ]
 
 
-# --- the run directory ------------------------------------------------------------------------
-
-
-def _now() -> str:
-    return datetime.now(UTC).isoformat(timespec="seconds")
-
-
-def _prepare_directory(options: BenchOptions, spec: BeliefSpec, work: list[WorkItem]) -> None:
-    """Write ``run.json``; refuse to mix another suite, belief or seed into the directory."""
-    out = options.out
-    run_file = out / RUN_FILE
-    wanted = {"suite": str(options.suite), "belief": str(spec), "seed": options.seed}
-    previous: dict[str, Any] = {}
-    if run_file.exists() and not options.rerun:
-        try:
-            previous = json.loads(run_file.read_text(encoding="utf-8"))
-        except (OSError, ValueError) as exc:
-            raise BenchError(
-                f"{run_file} cannot be read ({exc}); use --rerun or another --out"
-            ) from None
-        differ = [
-            f"{k} {previous.get(k)!r} (asked: {wanted[k]!r})"
-            for k in PINNED
-            if previous.get(k) != wanted[k]
-        ]
-        if differ:
-            raise BenchError(
-                f"{out} holds a run with {'; '.join(differ)}; use another --out, "
-                "or --rerun to discard its results"
-            )
-    elif (out / RESULTS_FILE).exists() and not options.rerun:
-        raise BenchError(
-            f"{out} has {RESULTS_FILE} but no {RUN_FILE}, so its suite, belief "
-            "and seed are unknown; use another --out, or --rerun to discard it"
-        )
-    out.mkdir(parents=True, exist_ok=True)
-    info = {
-        **wanted,
-        "methods": list(dict.fromkeys(options.methods)),
-        "selection": {
-            "categories": options.categories,
-            "appliances": options.appliances,
-            "sample": options.sample,
-        },
-        "tasks": len(work),
-        "started": previous.get("started", _now()),
-        "updated": _now(),
-    }
-    _write_json(run_file, info)
-
-
-def _write_json(path: Path, data: Any) -> None:
-    """Write JSON atomically (a reader never sees half a file)."""
-    temporary = path.with_name(path.name + ".tmp")
-    temporary.write_text(
-        json.dumps(data, indent=2, sort_keys=True, ensure_ascii=False) + "\n", encoding="utf-8"
-    )
-    os.replace(temporary, path)
-
-
-# --- Ctrl-C -----------------------------------------------------------------------------------
-
-
-class _Stop:
-    """Ctrl-C once: finish the running tasks, start no more. Twice: abandon them too."""
-
-    def __init__(self, in_process: bool) -> None:
-        self.requested = False
-        self.hard = False
-        self.in_process = in_process
-        self.notice: Callable[[str], None] = lambda message: None
-
-    def __call__(self, signum: int, frame: Any) -> None:
-        if self.requested:
-            self.hard = True
-            if self.in_process:
-                raise KeyboardInterrupt
-            return
-        self.requested = True
-        self.notice("stopping: finishing the running tasks (Ctrl-C again to abandon them)")
-
-
-@contextmanager
-def _sigint(stop: _Stop) -> Iterator[None]:
-    try:
-        previous = signal.signal(signal.SIGINT, stop)
-    except ValueError:  # not the main thread: leave Ctrl-C alone
-        yield
-        return
-    try:
-        yield
-    finally:
-        signal.signal(signal.SIGINT, previous)
-
-
 # --- the run ----------------------------------------------------------------------------------
 
 
@@ -433,31 +335,11 @@ def _batches(items: list[WorkItem], workers: int) -> list[list[WorkItem]]:
 def run_benchmark(options: BenchOptions, progress: bool = True) -> BenchOutcome:
     """Run the selected work into ``options.out``, skipping what is finished, and summarise.
 
-    Returns with ``interrupted=True`` after Ctrl-C, having kept every finished record. One
-    run at a time per directory: a second one would cut the first one's half-written line.
+    Returns with ``interrupted=True`` after Ctrl-C or SIGTERM (or when a worker process died),
+    having kept every finished record. One run at a time per directory: a second one would
+    cut the first one's half-written line.
     """
     return _run_benchmark(options, progress)
-
-
-@contextmanager
-def _exclusive(directory: Path) -> Iterator[None]:
-    """Hold an exclusive lock on the run directory (where the platform has ``fcntl``)."""
-    try:
-        import fcntl
-    except ImportError:  # pragma: no cover - not POSIX
-        yield
-        return
-    with (directory / ".lock").open("w") as handle:
-        try:
-            fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
-        except OSError:
-            raise BenchError(
-                f"another `apbot bench` is writing to {directory}; wait for it or use another --out"
-            ) from None
-        try:
-            yield
-        finally:
-            fcntl.flock(handle, fcntl.LOCK_UN)
 
 
 def _run_benchmark(options: BenchOptions, progress: bool) -> BenchOutcome:
@@ -476,8 +358,22 @@ def _run_benchmark(options: BenchOptions, progress: bool) -> BenchOutcome:
     except FileNotFoundError as exc:
         raise BenchError(str(exc)) from None
     work = select_work(options, suite)
-    _prepare_directory(options, spec, work)
-    with _exclusive(options.out):
+    prepare(
+        options.out,
+        {"suite": str(options.suite), "belief": str(spec), "seed": options.seed},
+        {
+            "methods": list(dict.fromkeys(options.methods)),
+            "selection": {
+                "categories": options.categories,
+                "appliances": options.appliances,
+                "sample": options.sample,
+            },
+            "tasks": len(work),
+        },
+        options.rerun,
+        RESULTS_FILE,
+    )
+    with exclusive(options.out):
         store = ResultStore(options.out / RESULTS_FILE)
         if options.rerun:
             store.clear()
@@ -487,29 +383,42 @@ def _run_benchmark(options: BenchOptions, progress: bool) -> BenchOutcome:
         done = [finished[k] for k in keys if k in finished]
 
         new: list[TaskRecord] = []
-        stop = _Stop(in_process=options.workers == 1 or len(pending) <= 1)
-        with _progress(progress, options.methods, done, work) as advance, _sigint(stop):
+        stop = Stop(in_process=options.workers == 1 or len(pending) <= 1)
+        with _progress(progress, options.methods, done, work) as advance, handling_signals(stop):
             stop.notice = advance.notice
             try:
                 for record in _execute(pending, str(spec), options, stop):
                     store.append(record)
                     new.append(record)
                     advance(record)
-            except KeyboardInterrupt:  # a second Ctrl-C between tasks, in this process
-                stop.requested = True
-        interrupted = stop.requested
+            except KeyboardInterrupt:  # a second signal between tasks, in this process
+                stop.request("SIGINT")
 
         everything = store.load()
         selected = sorted((everything[k] for k in keys if k in everything), key=lambda r: r.key)
         summary = summarise(selected, belief=str(spec))
-        _write_json(options.out / SUMMARY_FILE, summary)
-        return BenchOutcome(selected, summary, options.out, interrupted, len(new), len(done))
+        write_json(options.out / SUMMARY_FILE, summary)
+        return BenchOutcome(
+            selected,
+            summary,
+            options.out,
+            stop.requested,
+            len(new),
+            len(done),
+            stopped_by=stop.reason,
+            exit_code=stop.exit_code if stop.requested else 0,
+        )
 
 
 def _execute(
-    pending: list[WorkItem], belief: str, options: BenchOptions, stop: _Stop
+    pending: list[WorkItem], belief: str, options: BenchOptions, stop: Stop
 ) -> Iterator[TaskRecord]:
-    """Yield records as tasks finish, in this process or a pool, until done or stopped."""
+    """Yield records as tasks finish, in this process or a pool, until done or stopped.
+
+    Once a stop is requested, batches no worker has started are cancelled and the running
+    ones finish; a second signal abandons those too. A worker that dies (killed, out of
+    memory) stops the run the same way, keeping what finished.
+    """
     suite = str(options.suite)
     if options.workers == 1 or len(pending) <= 1:
         try:
@@ -518,26 +427,34 @@ def _execute(
                     return
                 yield run_one(item.method, belief, options.seed, item.appliance, item.task, suite)
         except KeyboardInterrupt:
-            stop.requested = True
+            stop.request("SIGINT")
         return
     queue = deque(_batches(pending, options.workers))
     window = options.workers * 2
-    pool = ProcessPoolExecutor(min(options.workers, len(queue)), initializer=_worker_init)
+    pool = worker_pool(min(options.workers, len(queue)))
     running: set[Future[list[TaskRecord]]] = set()
     try:
         while queue or running:
             while queue and len(running) < window and not stop.requested:
                 running.add(pool.submit(_run_batch, queue.popleft(), belief, options.seed, suite))
+            if stop.requested:
+                running = {future for future in running if not future.cancel()}
             if not running or stop.hard:
                 break
             finished, _ = wait(running, timeout=0.25, return_when=FIRST_COMPLETED)
             for future in finished:
                 running.discard(future)
-                yield from future.result()
+                try:
+                    records = future.result()
+                except BrokenProcessPool:
+                    stop.request(WORKER_DIED)
+                    running.clear()
+                    break
+                yield from records
     finally:
-        if running:  # abandoned after a second Ctrl-C (or an error): end the workers now
+        if running:  # abandoned after a second signal (or an error): end the workers now
             for process in list(getattr(pool, "_processes", {}).values()):
-                process.terminate()
+                process.kill()
         pool.shutdown(wait=True, cancel_futures=True)
 
 

@@ -1,0 +1,139 @@
+"""The run directory of a benchmark: what it pins, who may write it, and atomic JSON files.
+
+``run.json`` pins the suite, belief and seed of a directory: mixing runs with different ones
+would make the records' keys ambiguous. One ``apbot bench`` at a time writes a directory (an
+exclusive ``flock`` on ``.lock``); the lock is the process's own and dies with it: a forked
+child (a worker) closes its inherited copy at once, so a killed run never leaves a lock behind
+in a worker that outlives it.
+"""
+
+from __future__ import annotations
+
+import errno
+import json
+import os
+from collections.abc import Iterator
+from contextlib import contextmanager, suppress
+from datetime import UTC, datetime
+from pathlib import Path
+from typing import Any
+
+RUN_FILE = "run.json"
+LOCK_FILE = ".lock"
+PINNED = ("suite", "belief", "seed")  # what a run directory cannot mix
+
+
+class BenchError(ValueError):
+    """A benchmark that cannot start as asked (here: its run directory); the message says what
+    to change. Defined here, the first place a run can fail, and re-exported by the runner."""
+
+
+# --- the lock ---------------------------------------------------------------------------------
+
+_HELD_LOCKS: set[int] = set()  # descriptors of the locks this process holds
+
+
+def _close_held_locks() -> None:
+    """In a freshly forked child: drop the parent's lock descriptors (the lock stays the
+    parent's: closing one copy of a descriptor does not unlock it)."""
+    for descriptor in list(_HELD_LOCKS):
+        with suppress(OSError):
+            os.close(descriptor)
+    _HELD_LOCKS.clear()
+
+
+if hasattr(os, "register_at_fork"):
+    os.register_at_fork(after_in_child=_close_held_locks)
+
+
+@contextmanager
+def exclusive(directory: Path) -> Iterator[None]:
+    """Hold an exclusive lock on the run directory (where the platform has ``fcntl``)."""
+    try:
+        import fcntl
+    except ImportError:  # pragma: no cover - not POSIX
+        yield
+        return
+    descriptor = os.open(directory / LOCK_FILE, os.O_WRONLY | os.O_CREAT | os.O_CLOEXEC, 0o644)
+    _HELD_LOCKS.add(descriptor)
+    try:
+        try:
+            fcntl.flock(descriptor, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except OSError as exc:
+            if exc.errno in (errno.EWOULDBLOCK, errno.EAGAIN, errno.EACCES):
+                raise BenchError(
+                    f"another `apbot bench` is writing to {directory}; "
+                    "wait for it or use another --out"
+                ) from None
+            raise BenchError(f"cannot lock {directory / LOCK_FILE}: {exc.strerror}") from None
+        try:
+            yield
+        finally:
+            fcntl.flock(descriptor, fcntl.LOCK_UN)
+    finally:
+        _HELD_LOCKS.discard(descriptor)
+        os.close(descriptor)
+
+
+# --- run.json ---------------------------------------------------------------------------------
+
+
+def _now() -> str:
+    return datetime.now(UTC).isoformat(timespec="seconds")
+
+
+def prepare(
+    out: Path,
+    pinned: dict[str, Any],
+    details: dict[str, Any],
+    rerun: bool,
+    results_file: str,
+) -> None:
+    """Write ``run.json``; refuse to mix another suite, belief or seed into the directory.
+
+    ``pinned`` must match what the directory holds (unless ``rerun``); ``details`` (methods,
+    selection, task count) are recorded as they are now.
+    """
+    run_file = out / RUN_FILE
+    previous: dict[str, Any] = {}
+    if run_file.exists() and not rerun:
+        try:
+            previous = json.loads(run_file.read_text(encoding="utf-8"))
+            if not isinstance(previous, dict):
+                raise ValueError("not a JSON object")
+        except (OSError, ValueError) as exc:
+            raise BenchError(
+                f"{run_file} cannot be read ({exc}); use --rerun or another --out"
+            ) from None
+        differ = [
+            f"{k} {previous.get(k)!r} (asked: {pinned[k]!r})"
+            for k in PINNED
+            if previous.get(k) != pinned[k]
+        ]
+        if differ:
+            raise BenchError(
+                f"{out} holds a run with {'; '.join(differ)}; use another --out, "
+                "or --rerun to discard its results"
+            )
+    elif (out / results_file).exists() and not rerun:
+        raise BenchError(
+            f"{out} has {results_file} but no {RUN_FILE}, so its suite, belief "
+            "and seed are unknown; use another --out, or --rerun to discard it"
+        )
+    out.mkdir(parents=True, exist_ok=True)
+    info = {
+        **pinned,
+        **details,
+        "started": previous.get("started", _now()),
+        "updated": _now(),
+    }
+    write_json(run_file, info)
+
+
+def write_json(path: Path, data: Any) -> None:
+    """Write JSON atomically (a reader never sees half a file)."""
+    temporary = path.with_name(path.name + ".tmp")
+    temporary.write_text(
+        json.dumps(data, indent=2, sort_keys=True, ensure_ascii=False) + "\n", encoding="utf-8"
+    )
+    os.replace(temporary, path)
