@@ -125,9 +125,6 @@ def interrupt(args: argparse.Namespace, case: str, out: Path) -> dict[str, Any]:
         if process.poll() is None:
             os.killpg(process.pid, signal.SIGKILL)
             process.wait()
-    for pid in left:  # reported as a failure below; do not leave them running
-        with contextlib.suppress(ProcessLookupError):
-            os.kill(pid, signal.SIGKILL)
     return {
         "code": code,
         "expected": EXPECTED_EXIT[name],
@@ -139,12 +136,14 @@ def interrupt(args: argparse.Namespace, case: str, out: Path) -> dict[str, Any]:
     }
 
 
-def run(command: list[str]) -> float:
+def run(command: list[str]) -> tuple[float, str]:
+    """Run to completion: (seconds, the error's last line or "")."""
     started = time.perf_counter()
     done = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    error = ""
     if done.returncode != 0:
-        sys.exit(f"{' '.join(command)} failed (exit {done.returncode}):\n{done.stderr}")
-    return time.perf_counter() - started
+        error = f"exit {done.returncode}: {(done.stderr.strip().splitlines() or [''])[-1]}"
+    return time.perf_counter() - started, error
 
 
 def load_lines(path: Path) -> list[dict[str, Any]]:
@@ -173,7 +172,10 @@ def compare(resumed: Path, straight: Path) -> list[str]:
     ]
     if differing:
         problems.append(f"{len(differing)} record(s) differ, e.g. {differing[0]}")
-    if (resumed / "summary.json").read_bytes() != (straight / "summary.json").read_bytes():
+    summary = resumed / "summary.json"
+    if not summary.exists():
+        problems.append("no summary.json")
+    elif summary.read_bytes() != (straight / "summary.json").read_bytes():
         problems.append("summary.json differs")
     return problems
 
@@ -182,9 +184,15 @@ def check_case(args: argparse.Namespace, case: str, base: Path, straight: Path) 
     """Interrupt, resume and compare one case; print one line; the problems found."""
     resumed = base / case.replace(":", "-")
     what = interrupt(args, case, resumed)
-    seconds = run(bench_command(args, resumed))
+    try:
+        seconds, error = run(bench_command(args, resumed))  # while any leftover still runs
+    finally:
+        for pid in what["left"]:  # reported as a failure below; do not leave them running
+            with contextlib.suppress(ProcessLookupError):
+                os.kill(pid, signal.SIGKILL)
     total = len(load_lines(resumed / RESULTS))
-    problems = compare(resumed, straight)
+    problems = [f"the resumed run failed ({error})"] if error else []
+    problems += compare(resumed, straight)
     if what["code"] != what["expected"]:
         problems.append(f"exited {what['code']}, expected {what['expected']} {what['stderr']}")
     if what["left"]:
@@ -228,7 +236,9 @@ def main() -> None:
         for directory in [straight, *(base / case.replace(":", "-") for case in cases)]:
             if directory.exists():
                 sys.exit(f"{directory} exists; choose an empty --keep directory")
-        seconds = run(bench_command(args, straight))
+        seconds, error = run(bench_command(args, straight))
+        if error:
+            sys.exit(f"the uninterrupted run failed ({error})")
         print(f"uninterrupted: {count_lines(straight / RESULTS)} records in {seconds:.1f} s")
         failed = [case for case in cases if check_case(args, case, base, straight)]
         if failed:

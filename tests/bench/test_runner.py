@@ -20,7 +20,7 @@ from apbot.agent.episode import Episode, TaskContext
 from apbot.agent.methods import run_oracle
 from apbot.agent.registry import Method, register, unregister
 from apbot.bench.beliefs import BeliefError, belief_model, parse_belief
-from apbot.bench.results import RESULTS_FILE, read_records
+from apbot.bench.results import QUARANTINE_FILE, RESULTS_FILE, read_records
 from apbot.bench.runner import BenchError, BenchOptions, cached_suite, run_benchmark, run_one
 from apbot.bench.stopping import WORKER_DIED
 from apbot.cli import app
@@ -140,6 +140,22 @@ def test_a_torn_last_line_is_dropped_and_rerun(tmp_path: Path) -> None:
     assert (outcome.ran, outcome.skipped) == (1, 1)
     assert len(results.read_text().splitlines()) == 2
     assert all(r.success for r in read_records(tmp_path / "run"))
+
+
+def test_a_bad_line_in_the_middle_is_quarantined_and_its_task_runs_again(tmp_path: Path) -> None:
+    run_benchmark(options(tmp_path, sample=3), progress=False)
+    results = tmp_path / "run" / RESULTS_FILE
+    lines = results.read_bytes().splitlines(keepends=True)
+    results.write_bytes(lines[0] + b"garbage\n" + lines[1][:50] + b"\n" + b"".join(lines[2:]))
+    outcome = run_benchmark(options(tmp_path, sample=3), progress=False)
+    assert (outcome.ran, outcome.skipped, outcome.interrupted) == (1, 5, False)
+    assert len(outcome.notes) == 1
+    assert "2 bad line(s) (line 2, 3" in outcome.notes[0]
+    assert QUARANTINE_FILE in outcome.notes[0] and "run again" in outcome.notes[0]
+    assert len(read_records(tmp_path / "run")) == 6
+    entries = (tmp_path / "run" / QUARANTINE_FILE).read_text().splitlines()
+    assert [json.loads(entry)["line"] for entry in entries] == [2, 3]
+    assert run_benchmark(options(tmp_path, sample=3), progress=False).notes == []
 
 
 def test_a_directory_does_not_mix_seeds_or_beliefs(tmp_path: Path) -> None:

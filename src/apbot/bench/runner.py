@@ -31,7 +31,7 @@ from apbot.agent.registry import get_method, methods
 from apbot.bench.beliefs import BeliefError, BeliefSpec, belief_model, parse_belief
 from apbot.bench.metrics import summarise
 from apbot.bench.records import TaskRecord, record_key, spl
-from apbot.bench.results import RESULTS_FILE, ResultStore
+from apbot.bench.results import RESULTS_FILE, ResultStore, describe_recovery
 from apbot.bench.rundir import BenchError, exclusive, prepare, write_json
 from apbot.bench.stopping import WORKER_DIED, Stop, handling_signals
 from apbot.bench.suite import Suite, SuiteAppliance, Task, load_suite
@@ -67,7 +67,8 @@ class BenchOutcome:
     """The records of the selected work (finished so far), the summary written, and counts.
 
     ``interrupted``: the run stopped early (``stopped_by`` says why: "SIGINT", "SIGTERM" or a
-    worker's death) and ``exit_code`` is what the command line exits with.
+    worker's death) and ``exit_code`` is what the command line exits with. ``notes``: what
+    the run warned about (bad lines of the results file it quarantined).
     """
 
     records: list[TaskRecord]
@@ -78,6 +79,7 @@ class BenchOutcome:
     skipped: int
     stopped_by: str = ""
     exit_code: int = 0
+    notes: list[str] = field(default_factory=list)  # warnings given during the run
 
 
 @dataclass(frozen=True)
@@ -377,7 +379,9 @@ def _run_benchmark(options: BenchOptions, progress: bool) -> BenchOutcome:
         store = ResultStore(options.out / RESULTS_FILE)
         if options.rerun:
             store.clear()
-        finished = store.load()
+        recovered = store.recover()
+        notes = [note] if (note := describe_recovery(store, recovered)) else []
+        finished = recovered.records
         keys = {record_key(w.method, str(spec), w.appliance, w.task): w for w in work}
         pending = [w for k, w in keys.items() if k not in finished]
         done = [finished[k] for k in keys if k in finished]
@@ -386,6 +390,8 @@ def _run_benchmark(options: BenchOptions, progress: bool) -> BenchOutcome:
         stop = Stop(in_process=options.workers == 1 or len(pending) <= 1)
         with _progress(progress, options.methods, done, work) as advance, handling_signals(stop):
             stop.notice = advance.notice
+            for note in notes:
+                advance.notice(note)
             try:
                 for record in _execute(pending, str(spec), options, stop):
                     store.append(record)
@@ -407,6 +413,7 @@ def _run_benchmark(options: BenchOptions, progress: bool) -> BenchOutcome:
             len(done),
             stopped_by=stop.reason,
             exit_code=stop.exit_code if stop.requested else 0,
+            notes=notes,
         )
 
 
@@ -472,7 +479,7 @@ class _Advance:
 
     def notice(self, message: str) -> None:
         if self.bar is not None:
-            self.bar.console.print(f"[yellow]{message}[/yellow]")
+            self.bar.console.print(f"[yellow]{message}[/yellow]", soft_wrap=True)
         else:
             print(message, file=sys.stderr, flush=True)
 
