@@ -544,9 +544,9 @@ def bench(
         int | None,
         typer.Option(help="Worker processes (default: one per core; 1 runs in this process)."),
     ] = None,
-    out: Annotated[Path, typer.Option(help="Run directory (results, summary, report).")] = Path(
-        "runs/latest"
-    ),
+    out: Annotated[
+        str, typer.Option(help="Run directory (results, summary, report).")
+    ] = "runs/latest",
     belief: Annotated[
         str, typer.Option(help="The model methods work from: true, faulty:RATE or read.")
     ] = "true",
@@ -584,8 +584,10 @@ def bench(
         outcome = run_benchmark(options)
     except (BenchError, BeliefError) as exc:
         raise _fail(str(exc), 2) from None
-    except (ResultsError, OSError) as exc:
+    except ResultsError as exc:
         raise _fail(str(exc)) from None
+    except OSError as exc:  # not foreseen by the runner: still one line, naming the file
+        raise _fail(f"{exc.filename or out}: {exc.strerror or exc}") from None
     except KeyboardInterrupt:  # before the run took over Ctrl-C: nothing was started
         raise _fail("interrupted before any task ran", 130) from None
     _print_bench(outcome.summary)

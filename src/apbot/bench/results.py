@@ -186,17 +186,22 @@ class ResultStore:
 
     def append(self, record: TaskRecord) -> None:
         """Write one record durably (one write, synced before returning)."""
-        self.path.parent.mkdir(parents=True, exist_ok=True)
         line = json.dumps(record.model_dump(mode="json"), ensure_ascii=False, separators=(",", ":"))
         data = (line + "\n").encode("utf-8")
-        descriptor = os.open(self.path, os.O_WRONLY | os.O_APPEND | os.O_CREAT, 0o644)
         try:
-            written = 0
-            while written < len(data):
-                written += os.write(descriptor, data[written:])
-            os.fsync(descriptor)
-        finally:
-            os.close(descriptor)
+            descriptor = os.open(self.path, os.O_WRONLY | os.O_APPEND | os.O_CREAT, 0o644)
+            try:
+                written = 0
+                while written < len(data):
+                    written += os.write(descriptor, data[written:])
+                os.fsync(descriptor)
+            finally:
+                os.close(descriptor)
+        except OSError as exc:
+            raise ResultsError(
+                f"{self.path}: cannot write a record ({exc.strerror}); the finished records "
+                "are kept: fix that and run the same command again"
+            ) from None
 
     def clear(self) -> None:
         """Forget every record (``--rerun``); quarantined lines are kept."""

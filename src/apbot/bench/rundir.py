@@ -1,5 +1,9 @@
-"""The run directory of a benchmark: what it pins, who may write it, and atomic JSON files.
+"""The run directory of a benchmark: where it may be, what it pins, who may write it.
 
+``--out`` is checked before any work: empty, a file, a path under a file, or a directory
+that cannot be created or written is a one-line error naming the path (a probe file is
+created and removed, the one test of writability that holds for root and for immutable or
+read-only mounts too).
 ``run.json`` pins the suite, belief and seed of a directory: mixing runs with different ones
 would make the records' keys ambiguous. One ``apbot bench`` at a time writes a directory (an
 exclusive ``flock`` on ``.lock``); the lock is the process's own and dies with it: a forked
@@ -12,6 +16,7 @@ from __future__ import annotations
 import errno
 import json
 import os
+import tempfile
 from collections.abc import Iterator
 from contextlib import contextmanager, suppress
 from datetime import UTC, datetime
@@ -26,6 +31,52 @@ PINNED = ("suite", "belief", "seed")  # what a run directory cannot mix
 class BenchError(ValueError):
     """A benchmark that cannot start as asked (here: its run directory); the message says what
     to change. Defined here, the first place a run can fail, and re-exported by the runner."""
+
+
+# --- where ---------------------------------------------------------------------------------
+
+
+def run_directory(out: str | os.PathLike[str]) -> Path:
+    """The run directory ``out`` names; :class:`BenchError` when it cannot be one.
+
+    Nothing is created here (a run refused for another reason leaves no directory behind).
+    """
+    text = os.fspath(out)
+    if not text.strip():
+        raise BenchError("--out is empty; name a run directory, e.g. --out runs/latest")
+    path = Path(text)
+    try:
+        for place in (path, *path.parents):
+            if place.is_dir():
+                return path
+            if place.exists() or place.is_symlink():
+                what = "a file" if place.is_file() else "not a directory"
+                if place == path:
+                    raise BenchError(f"the run directory {path} is {what}; use another --out")
+                raise BenchError(
+                    f"{place} is {what}, so the run directory {path} cannot be created; "
+                    "use another --out"
+                )
+    except OSError as exc:
+        raise BenchError(f"cannot reach the run directory {path}: {exc.strerror}") from None
+    return path
+
+
+def make_writable(path: Path) -> None:
+    """Create the run directory if need be and prove it can be written."""
+    try:
+        path.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise BenchError(
+            f"cannot create the run directory {path}: {exc.strerror}; use another --out"
+        ) from None
+    try:
+        with tempfile.NamedTemporaryFile(dir=path, prefix=".write-test-"):
+            pass
+    except OSError as exc:
+        raise BenchError(
+            f"the run directory {path} is not writable ({exc.strerror}); use another --out"
+        ) from None
 
 
 # --- the lock ---------------------------------------------------------------------------------
@@ -54,7 +105,10 @@ def exclusive(directory: Path) -> Iterator[None]:
     except ImportError:  # pragma: no cover - not POSIX
         yield
         return
-    descriptor = os.open(directory / LOCK_FILE, os.O_WRONLY | os.O_CREAT | os.O_CLOEXEC, 0o644)
+    try:
+        descriptor = os.open(directory / LOCK_FILE, os.O_WRONLY | os.O_CREAT | os.O_CLOEXEC, 0o644)
+    except OSError as exc:
+        raise BenchError(f"cannot lock {directory / LOCK_FILE}: {exc.strerror}") from None
     _HELD_LOCKS.add(descriptor)
     try:
         try:
@@ -120,7 +174,7 @@ def prepare(
             f"{out} has {results_file} but no {RUN_FILE}, so its suite, belief "
             "and seed are unknown; use another --out, or --rerun to discard it"
         )
-    out.mkdir(parents=True, exist_ok=True)
+    make_writable(out)
     info = {
         **pinned,
         **details,
@@ -133,7 +187,11 @@ def prepare(
 def write_json(path: Path, data: Any) -> None:
     """Write JSON atomically (a reader never sees half a file)."""
     temporary = path.with_name(path.name + ".tmp")
-    temporary.write_text(
-        json.dumps(data, indent=2, sort_keys=True, ensure_ascii=False) + "\n", encoding="utf-8"
-    )
-    os.replace(temporary, path)
+    try:
+        temporary.write_text(
+            json.dumps(data, indent=2, sort_keys=True, ensure_ascii=False) + "\n",
+            encoding="utf-8",
+        )
+        os.replace(temporary, path)
+    except OSError as exc:
+        raise BenchError(f"cannot write {path}: {exc.strerror}") from None

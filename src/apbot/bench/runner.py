@@ -32,7 +32,7 @@ from apbot.bench.beliefs import BeliefError, BeliefSpec, belief_model, parse_bel
 from apbot.bench.metrics import summarise
 from apbot.bench.records import TaskRecord, record_key, spl
 from apbot.bench.results import RESULTS_FILE, ResultStore, describe_recovery
-from apbot.bench.rundir import BenchError, exclusive, prepare, write_json
+from apbot.bench.rundir import BenchError, exclusive, prepare, run_directory, write_json
 from apbot.bench.stopping import WORKER_DIED, Stop, handling_signals
 from apbot.bench.suite import Suite, SuiteAppliance, Task, load_suite
 from apbot.bench.workers import worker_pool
@@ -56,7 +56,7 @@ class BenchOptions:
     appliances: list[str] | None = None
     sample: int | None = None
     workers: int = field(default_factory=lambda: os.cpu_count() or 1)
-    out: Path = Path("runs/latest")
+    out: Path | str = Path("runs/latest")
     belief: str = "true"
     seed: int = 0
     rerun: bool = False
@@ -345,6 +345,7 @@ def run_benchmark(options: BenchOptions, progress: bool = True) -> BenchOutcome:
 
 
 def _run_benchmark(options: BenchOptions, progress: bool) -> BenchOutcome:
+    out = run_directory(options.out)
     spec = parse_belief(options.belief)
     if spec.kind == "faulty":
         try:
@@ -361,7 +362,7 @@ def _run_benchmark(options: BenchOptions, progress: bool) -> BenchOutcome:
         raise BenchError(str(exc)) from None
     work = select_work(options, suite)
     prepare(
-        options.out,
+        out,
         {"suite": str(options.suite), "belief": str(spec), "seed": options.seed},
         {
             "methods": list(dict.fromkeys(options.methods)),
@@ -375,8 +376,8 @@ def _run_benchmark(options: BenchOptions, progress: bool) -> BenchOutcome:
         options.rerun,
         RESULTS_FILE,
     )
-    with exclusive(options.out):
-        store = ResultStore(options.out / RESULTS_FILE)
+    with exclusive(out):
+        store = ResultStore(out / RESULTS_FILE)
         if options.rerun:
             store.clear()
         recovered = store.recover()
@@ -403,11 +404,11 @@ def _run_benchmark(options: BenchOptions, progress: bool) -> BenchOutcome:
         everything = store.load()
         selected = sorted((everything[k] for k in keys if k in everything), key=lambda r: r.key)
         summary = summarise(selected, belief=str(spec))
-        write_json(options.out / SUMMARY_FILE, summary)
+        write_json(out / SUMMARY_FILE, summary)
         return BenchOutcome(
             selected,
             summary,
-            options.out,
+            out,
             stop.requested,
             len(new),
             len(done),
