@@ -2,13 +2,17 @@
 
 ``--out`` is checked before any work: empty, a file, a path under a file, or a directory
 that cannot be created or written is a one-line error naming the path (a probe file is
-created and removed, the one test of writability that holds for root and for immutable or
-read-only mounts too).
+created and removed: the one test of writability that holds for root, and for immutable or
+read-only mounts, too).
+
 ``run.json`` pins the suite, belief and seed of a directory: mixing runs with different ones
-would make the records' keys ambiguous. One ``apbot bench`` at a time writes a directory (an
-exclusive ``flock`` on ``.lock``); the lock is the process's own and dies with it: a forked
-child (a worker) closes its inherited copy at once, so a killed run never leaves a lock behind
-in a worker that outlives it.
+would make the records' keys ambiguous. It also records the code version and the suite's
+digest (:mod:`apbot.bench.provenance`): a directory written by other code or from another
+state of the suite is not resumed, since its records would not be comparable.
+
+One ``apbot bench`` at a time writes a directory (an exclusive ``flock`` on ``.lock``). The
+lock is the process's own and dies with it: a forked child (a worker) closes its inherited
+copy at once, so a killed run never leaves its lock behind in a worker that outlives it.
 """
 
 from __future__ import annotations
@@ -22,6 +26,8 @@ from contextlib import contextmanager, suppress
 from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
+
+from apbot.bench.provenance import describe_code, same_code
 
 RUN_FILE = "run.json"
 LOCK_FILE = ".lock"
@@ -139,14 +145,17 @@ def _now() -> str:
 def prepare(
     out: Path,
     pinned: dict[str, Any],
+    provenance: dict[str, Any],
     details: dict[str, Any],
     rerun: bool,
     results_file: str,
 ) -> None:
-    """Write ``run.json``; refuse to mix another suite, belief or seed into the directory.
+    """Write ``run.json``; refuse to mix another suite, belief, seed, code version or state of
+    the suite into the directory.
 
-    ``pinned`` must match what the directory holds (unless ``rerun``); ``details`` (methods,
-    selection, task count) are recorded as they are now.
+    ``pinned`` and ``provenance`` (``code``, ``suite_digest``) must match what the directory
+    holds (unless ``rerun``); ``details`` (methods, selection, task count) are recorded as
+    they are now.
     """
     run_file = out / RUN_FILE
     previous: dict[str, Any] = {}
@@ -169,6 +178,12 @@ def prepare(
                 f"{out} holds a run with {'; '.join(differ)}; use another --out, "
                 "or --rerun to discard its results"
             )
+        changed = _provenance_changes(previous, provenance)
+        if changed:
+            raise BenchError(
+                f"{out}: {'; '.join(changed)}; its records are not comparable with new ones: "
+                "use another --out, or --rerun to discard them"
+            )
     elif (out / results_file).exists() and not rerun:
         raise BenchError(
             f"{out} has {results_file} but no {RUN_FILE}, so its suite, belief "
@@ -177,11 +192,30 @@ def prepare(
     make_writable(out)
     info = {
         **pinned,
+        **provenance,
         **details,
         "started": previous.get("started", _now()),
         "updated": _now(),
     }
     write_json(run_file, info)
+
+
+def _provenance_changes(previous: dict[str, Any], now: dict[str, Any]) -> list[str]:
+    """What differs between the code and suite that wrote ``previous`` and those of ``now``."""
+    changes = []
+    if not same_code(previous.get("code"), now["code"]):
+        changes.append(
+            f"it was written by {describe_code(previous.get('code'))} and this is "
+            f"{describe_code(now['code'])}"
+        )
+    before, after = previous.get("suite_digest"), now["suite_digest"]
+    if before != after:
+        was = f"is {str(before)[:19]}…" if before else "was not recorded"
+        changes.append(
+            f"its suite digest {was} and the suite's is now {str(after)[:19]}… (the suite's "
+            "models, tasks or manuals changed)"
+        )
+    return changes
 
 
 def write_json(path: Path, data: Any) -> None:

@@ -30,6 +30,7 @@ from apbot.agent.episode import MAX_REASONING_STEPS, Episode, TaskContext, Trace
 from apbot.agent.registry import get_method, methods
 from apbot.bench.beliefs import BeliefError, BeliefSpec, belief_model, parse_belief
 from apbot.bench.metrics import summarise
+from apbot.bench.provenance import code_version, suite_digest
 from apbot.bench.records import TaskRecord, record_key, spl
 from apbot.bench.results import RESULTS_FILE, ResultStore, describe_recovery
 from apbot.bench.rundir import BenchError, exclusive, prepare, run_directory, write_json
@@ -364,6 +365,7 @@ def _run_benchmark(options: BenchOptions, progress: bool) -> BenchOutcome:
     prepare(
         out,
         {"suite": str(options.suite), "belief": str(spec), "seed": options.seed},
+        {"code": code_version(), "suite_digest": suite_digest(suite)},
         {
             "methods": list(dict.fromkeys(options.methods)),
             "selection": {
