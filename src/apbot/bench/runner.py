@@ -13,13 +13,11 @@ than shipping it; only the main process writes files.
 from __future__ import annotations
 
 import os
-import sys
 import time
 from collections import deque
 from collections.abc import Callable, Iterator
 from concurrent.futures import FIRST_COMPLETED, Future, wait
 from concurrent.futures.process import BrokenProcessPool
-from contextlib import contextmanager
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
@@ -30,6 +28,7 @@ from apbot.agent.episode import MAX_REASONING_STEPS, Episode, TaskContext, Trace
 from apbot.agent.registry import get_method, methods
 from apbot.bench.beliefs import BeliefError, BeliefSpec, belief_model, parse_belief
 from apbot.bench.metrics import summarise
+from apbot.bench.progress import progress as show_progress
 from apbot.bench.provenance import code_version, suite_digest
 from apbot.bench.records import TaskRecord, record_key, spl
 from apbot.bench.results import RESULTS_FILE, ResultStore, describe_recovery
@@ -391,7 +390,11 @@ def _run_benchmark(options: BenchOptions, progress: bool) -> BenchOutcome:
 
         new: list[TaskRecord] = []
         stop = Stop(in_process=options.workers == 1 or len(pending) <= 1)
-        with _progress(progress, options.methods, done, work) as advance, handling_signals(stop):
+        per_method = {m: sum(w.method == m for w in work) for m in dict.fromkeys(options.methods)}
+        with (
+            show_progress(progress, options.methods, done, per_method) as advance,
+            handling_signals(stop),
+        ):
             stop.notice = advance.notice
             for note in notes:
                 advance.notice(note)
@@ -466,63 +469,3 @@ def _execute(
             for process in list(getattr(pool, "_processes", {}).values()):
                 process.kill()
         pool.shutdown(wait=True, cancel_futures=True)
-
-
-class _Advance:
-    """Progress updates: one bar per method with its live success count."""
-
-    def __init__(self, bar: Any, tasks: dict[str, Any], ok: dict[str, int]) -> None:
-        self.bar, self.tasks, self.ok = bar, tasks, ok
-
-    def __call__(self, record: TaskRecord) -> None:
-        if self.bar is None:
-            return
-        self.ok[record.method] += record.success
-        self.bar.update(self.tasks[record.method], advance=1, ok=self.ok[record.method])
-
-    def notice(self, message: str) -> None:
-        if self.bar is not None:
-            self.bar.console.print(f"[yellow]{message}[/yellow]", soft_wrap=True)
-        else:
-            print(message, file=sys.stderr, flush=True)
-
-
-@contextmanager
-def _progress(
-    enabled: bool, chosen: list[str], done: list[TaskRecord], work: list[WorkItem]
-) -> Iterator[_Advance]:
-    if not enabled:
-        yield _Advance(None, {}, {})
-        return
-    from rich.console import Console
-    from rich.progress import (
-        BarColumn,
-        MofNCompleteColumn,
-        Progress,
-        TextColumn,
-        TimeElapsedColumn,
-    )
-
-    console = Console(stderr=True)
-    names = list(dict.fromkeys(chosen))
-    ok = {m: sum(r.success for r in done if r.method == m) for m in names}
-    with Progress(
-        TextColumn("{task.description}"),
-        BarColumn(),
-        MofNCompleteColumn(),
-        TextColumn("[green]{task.fields[ok]} ok"),
-        TimeElapsedColumn(),
-        console=console,
-        disable=not console.is_terminal,
-    ) as bar:
-        width = max(map(len, names), default=0)
-        tasks = {
-            m: bar.add_task(
-                m.ljust(width),
-                total=sum(w.method == m for w in work),
-                completed=sum(r.method == m for r in done),
-                ok=ok[m],
-            )
-            for m in names
-        }
-        yield _Advance(bar, tasks, ok)
