@@ -96,53 +96,59 @@ def interrupt(args: argparse.Namespace, case: str, out: Path) -> dict[str, Any]:
     name, target = case.split(":")
     number = getattr(signal, f"SIG{name}")
     started = time.perf_counter()
-    process = subprocess.Popen(
-        bench_command(args, out),
-        stdout=subprocess.DEVNULL,
-        stderr=subprocess.PIPE,
-        start_new_session=True,
-    )
-    results = out / RESULTS
-    left: list[int] = []
-    try:
-        while count_lines(results) < args.after:
-            if process.poll() is not None:
-                sys.exit(
-                    f"{case}: the run ended (exit {process.returncode}) before {args.after} "
-                    f"records existed; lower --after\n{process.stderr.read().decode()}"
-                )
-            time.sleep(0.02)
-        seen = count_lines(results)
-        if target == "group":
-            os.killpg(process.pid, number)
-        else:
-            os.kill(process.pid, number)
-        code = process.wait(timeout=120)
-        deadline = time.monotonic() + GRACE
-        while (left := group_members(process.pid)) and time.monotonic() < deadline:
-            time.sleep(0.05)
-    finally:
-        if process.poll() is None:
-            os.killpg(process.pid, signal.SIGKILL)
-            process.wait()
-    return {
-        "code": code,
-        "expected": EXPECTED_EXIT[name],
-        "seen": seen,
-        "kept": count_lines(results),
-        "left": left,
-        "seconds": time.perf_counter() - started,
-        "stderr": process.stderr.read().decode(errors="replace").strip().splitlines()[-1:],
-    }
+    # stderr to a file, not a pipe: a process left behind would keep a pipe open forever
+    with tempfile.TemporaryFile() as errors:
+        process = subprocess.Popen(
+            bench_command(args, out),
+            stdout=subprocess.DEVNULL,
+            stderr=errors,
+            start_new_session=True,
+        )
+        results = out / RESULTS
+        left: list[int] = []
+        try:
+            while count_lines(results) < args.after:
+                if process.poll() is not None:
+                    sys.exit(
+                        f"{case}: the run ended (exit {process.returncode}) before {args.after} "
+                        f"records existed; lower --after\n{last_lines(errors, 20)}"
+                    )
+                time.sleep(0.02)
+            seen = count_lines(results)
+            if target == "group":
+                os.killpg(process.pid, number)
+            else:
+                os.kill(process.pid, number)
+            code = process.wait(timeout=120)
+            deadline = time.monotonic() + GRACE
+            while (left := group_members(process.pid)) and time.monotonic() < deadline:
+                time.sleep(0.05)
+        finally:
+            if process.poll() is None:
+                os.killpg(process.pid, signal.SIGKILL)
+                process.wait()
+        return {
+            "code": code,
+            "expected": EXPECTED_EXIT[name],
+            "seen": seen,
+            "kept": count_lines(results),
+            "left": left,
+            "seconds": time.perf_counter() - started,
+            "stderr": last_lines(errors, 1),
+        }
+
+
+def last_lines(stream: Any, count: int) -> str:
+    stream.seek(0)
+    return "\n".join(stream.read().decode(errors="replace").strip().splitlines()[-count:])
 
 
 def run(command: list[str]) -> tuple[float, str]:
     """Run to completion: (seconds, the error's last line or "")."""
     started = time.perf_counter()
-    done = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    error = ""
-    if done.returncode != 0:
-        error = f"exit {done.returncode}: {(done.stderr.strip().splitlines() or [''])[-1]}"
+    with tempfile.TemporaryFile() as errors:
+        code = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=errors).returncode
+        error = f"exit {code}: {last_lines(errors, 1)}" if code else ""
     return time.perf_counter() - started, error
 
 

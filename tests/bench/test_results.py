@@ -136,7 +136,9 @@ def test_fuzz_the_store_never_crashes_nor_loses_a_valid_record(
     chunks: list[tuple[str, bytes]], final_newline: bool
 ) -> None:
     data = b"\n".join(data for _, data in chunks) + (b"\n" if final_newline and chunks else b"")
-    valid = {}  # each valid record written whole, on a line of its own: first one per key
+    valid: dict[
+        str, TaskRecord
+    ] = {}  # each valid record written whole, on a line of its own: first one per key
     for kind, data_ in chunks:
         if kind == "valid":
             item = TaskRecord.model_validate_json(data_)

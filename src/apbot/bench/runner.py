@@ -180,7 +180,8 @@ def run_task(
     spec = parse_belief(belief)
     chosen = get_method(method)
     env = SimulatorEnvironment(appliance.model)
-    episode, faults, error = Episode(), (), ""
+    episode, error = Episode(), ""
+    faults: tuple[str, ...] | list[str] = ()
     context: TaskContext | None = None
     try:
         if chosen.uses_truth:
