@@ -460,10 +460,9 @@ def _execute(
                 running.discard(future)
                 try:
                     records = future.result()
-                except BrokenProcessPool:
+                except BrokenProcessPool:  # the others fail alike, soon: keep what finished
                     stop.request(WORKER_DIED)
-                    running.clear()
-                    break
+                    continue
                 yield from records
     finally:
         if running:  # abandoned after a second signal (or an error): end the workers now

@@ -36,9 +36,11 @@ class Stop:
         return bool(self.reason)
 
     def request(self, reason: str) -> None:
-        """Stop without a signal (a worker died, a second Ctrl-C already raised)."""
+        """Stop without a handled signal: a worker died, or a KeyboardInterrupt arrived."""
         if not self.reason:
             self.reason = reason
+            if reason in signal.Signals.__members__:
+                self.signum = signal.Signals[reason]
 
     def __call__(self, signum: int, frame: Any) -> None:
         if self.signum is not None:
