@@ -96,10 +96,17 @@ def test_bad_lines_are_quarantined_with_their_numbers_and_bytes(tmp_path: Path) 
     assert store.recover().bad == []  # done once, for good
 
 
-def test_an_unreadable_results_file_is_a_results_error(tmp_path: Path) -> None:
-    (tmp_path / RESULTS_FILE).mkdir()
+def test_files_that_cannot_be_read_or_written_are_a_results_error(tmp_path: Path) -> None:
+    (tmp_path / "a").mkdir()
+    (tmp_path / "a" / RESULTS_FILE).mkdir()
     with pytest.raises(ResultsError, match=rf"{RESULTS_FILE}: cannot be read"):
-        ResultStore(tmp_path / RESULTS_FILE).recover()
+        ResultStore(tmp_path / "a" / RESULTS_FILE).recover()
+    store = ResultStore(tmp_path / RESULTS_FILE)
+    store.path.write_bytes(b"garbage\n")
+    store.quarantine.mkdir()
+    with pytest.raises(ResultsError, match=rf"{QUARANTINE_FILE}: cannot be written to repair"):
+        store.recover()
+    assert store.path.read_bytes() == b"garbage\n"  # untouched until its lines are safe
 
 
 # --- the fuzz ---------------------------------------------------------------------------------

@@ -143,7 +143,10 @@ class ResultStore:
                         handle.seek(0, os.SEEK_END)
                         handle.write(b"\n")
         except OSError as exc:
-            raise ResultsError(f"{self.path}: cannot be repaired ({exc.strerror})") from None
+            where = exc.filename or self.path
+            raise ResultsError(
+                f"{where}: cannot be written to repair {self.path.name} ({exc.strerror})"
+            ) from None
         return scan
 
     def _quarantine(self, bad: list[BadLine]) -> None:

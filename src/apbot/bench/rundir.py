@@ -165,8 +165,9 @@ def prepare(
             if not isinstance(previous, dict):
                 raise ValueError("not a JSON object")
         except (OSError, ValueError) as exc:
+            why = exc.strerror if isinstance(exc, OSError) else exc
             raise BenchError(
-                f"{run_file} cannot be read ({exc}); use --rerun or another --out"
+                f"{run_file} cannot be read ({why}); use --rerun or another --out"
             ) from None
         differ = [
             f"{k} {previous.get(k)!r} (asked: {pinned[k]!r})"
