@@ -20,6 +20,7 @@ from apbot.model.problems import ModelError, Problem
 from apbot.model.schema import ApplianceModel
 
 if TYPE_CHECKING:
+    from apbot.agent.environment import FeedbackMode
     from apbot.agent.episode import TraceEvent
     from apbot.bench.suite import Suite, SuiteAppliance, Task
 
@@ -551,6 +552,13 @@ def bench(
         str, typer.Option(help="The model methods work from: true, faulty:RATE or read.")
     ] = "true",
     seed: Annotated[int, typer.Option(help="Seed for fault injection.")] = 0,
+    feedback: Annotated[
+        str,
+        typer.Option(
+            help="What the methods perceive: display (the panel's text, refusals only where "
+            "the appliance signals them) or values (the paper's simulator: shown values by name)."
+        ),
+    ] = "display",
     rerun: Annotated[
         bool,
         typer.Option(help="Discard the directory's finished results and run everything again."),
@@ -579,6 +587,7 @@ def bench(
         belief=belief,
         seed=seed,
         rerun=rerun,
+        feedback=_feedback_mode(feedback),
     )
     try:
         outcome = run_benchmark(options)
@@ -603,6 +612,16 @@ def bench(
         raise typer.Exit(outcome.exit_code)
     if not no_report:
         _bench_report(outcome.out)
+
+
+def _feedback_mode(text: str) -> FeedbackMode:
+    """A ``--feedback`` value, checked (typer's Enum choices would print as classes)."""
+    from apbot.agent.environment import FEEDBACK_MODES
+
+    for mode in FEEDBACK_MODES:
+        if text == mode:
+            return mode
+    raise _fail(f"--feedback must be one of {', '.join(FEEDBACK_MODES)} (got {text!r})", 2)
 
 
 def _print_bench(summary: dict[str, Any]) -> None:
@@ -657,15 +676,22 @@ def _bench_report(out: Path) -> None:
 def report_command(
     directory: Annotated[Path, typer.Argument(help="A run directory written by `apbot bench`.")],
 ) -> None:
-    """Write report.md and a self-contained report.html for a benchmark run."""
-    from apbot.bench.report import ReportError, write_report
+    """Write report.md and a self-contained report.html for a benchmark run (one read of its
+    results, so it may run while the bench still writes; a partial run says how far it got)."""
+    from apbot.bench.report import ReportError, load_run, progress, write_files
 
     try:
-        paths = write_report(directory)
+        data = load_run(directory)
+        paths = write_files(data)
     except ReportError as exc:
         raise _fail(str(exc)) from None
     for path in paths[:2]:
         console.print(f"report: {path}")
+    state = progress(data)
+    if state.state == "partial":
+        errors.print(f"[yellow]partial run[/yellow]: {state.text}")
+    else:
+        console.print(state.text)
 
 
 @app.command("run")
@@ -688,6 +714,9 @@ def run_command(
         str, typer.Option(help="The model the method works from: true or faulty:RATE.")
     ] = "true",
     seed: Annotated[int, typer.Option(help="Seed for fault injection.")] = 0,
+    feedback: Annotated[
+        str, typer.Option(help="What the method perceives: display or values.")
+    ] = "display",
     show_exploration: Annotated[
         bool, typer.Option(help="Print every exploring press, not only a count.")
     ] = False,
@@ -722,7 +751,9 @@ def run_command(
     console.print(f"goal: {', '.join(f'{k}={v}' for k, v in task.goal.items())}")
     printer = _LivePrinter(show_exploration)
     try:
-        record = run_task(found, task, method, belief, seed, observer=printer)
+        record = run_task(
+            found, task, method, belief, seed, observer=printer, feedback=_feedback_mode(feedback)
+        )
     except (KeyError, ValueError) as exc:
         raise _fail(str(exc.args[0] if isinstance(exc, KeyError) else exc), 2) from None
     printer.flush()

@@ -130,3 +130,10 @@ def insert_step(
         before, {"actions": list(actions), "note": "learnt from feedback"}
     )
     return _rebuild(data)
+
+
+def set_entry_format(model: ApplianceModel, name: str, fmt: str) -> ApplianceModel:
+    """Read a keypad variable's typed digits in another format (``mm:ss`` for ``minutes``)."""
+    data = _dump(model)
+    data["variables"][name].setdefault("entry", {})["format"] = fmt
+    return _rebuild(data)

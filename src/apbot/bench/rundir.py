@@ -5,10 +5,10 @@ that cannot be created or written is a one-line error naming the path (a probe f
 created and removed: the one test of writability that holds for root, and for immutable or
 read-only mounts, too).
 
-``run.json`` pins the suite, belief and seed of a directory: mixing runs with different ones
-would make the records' keys ambiguous. It also records the code version and the suite's
-digest (:mod:`apbot.bench.provenance`): a directory written by other code or from another
-state of the suite is not resumed, since its records would not be comparable.
+``run.json`` pins the suite, belief, seed and feedback mode of a directory: mixing runs with
+different ones would make the records' keys ambiguous. It also records the code version and
+the suite's digest (:mod:`apbot.bench.provenance`): a directory written by other code or from
+another state of the suite is not resumed, since its records would not be comparable.
 
 One ``apbot bench`` at a time writes a directory (an exclusive ``flock`` on ``.lock``). The
 lock is the process's own and dies with it: a forked child (a worker) closes its inherited
@@ -31,7 +31,7 @@ from apbot.bench.provenance import describe_code, same_code
 
 RUN_FILE = "run.json"
 LOCK_FILE = ".lock"
-PINNED = ("suite", "belief", "seed")  # what a run directory cannot mix
+PINNED = ("suite", "belief", "seed", "feedback")  # what a run directory cannot mix
 
 
 class BenchError(ValueError):

@@ -23,7 +23,7 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
-from apbot.agent.environment import SimulatorEnvironment
+from apbot.agent.environment import FeedbackMode, SimulatorEnvironment
 from apbot.agent.episode import MAX_REASONING_STEPS, Episode, TaskContext, TraceEvent
 from apbot.agent.registry import get_method, methods
 from apbot.bench.beliefs import BeliefError, BeliefSpec, belief_model, parse_belief
@@ -60,6 +60,7 @@ class BenchOptions:
     belief: str = "true"
     seed: int = 0
     rerun: bool = False
+    feedback: FeedbackMode = "display"
 
 
 @dataclass
@@ -132,7 +133,13 @@ def _describe(exc: BaseException) -> str:
 
 
 def run_one(
-    method: str, belief: str, seed: int, appliance_id: str, task_id: str, suite: str
+    method: str,
+    belief: str,
+    seed: int,
+    appliance_id: str,
+    task_id: str,
+    suite: str,
+    feedback: FeedbackMode = "display",
 ) -> TaskRecord:
     """Run one method on one task and judge the result on the true simulator.
 
@@ -148,6 +155,7 @@ def run_one(
         belief,
         seed,
         belief_of=lambda spec: _belief(suite, appliance.id, spec, seed),
+        feedback=feedback,
     )
 
 
@@ -159,6 +167,7 @@ def run_task(
     seed: int = 0,
     observer: Callable[[TraceEvent], None] | None = None,
     belief_of: Callable[[BeliefSpec], tuple[ApplianceModel, Any]] | None = None,
+    feedback: FeedbackMode = "display",
 ) -> TaskRecord:
     """:func:`run_one` on objects: also for a task that is not in a suite (``apbot run``).
 
@@ -179,7 +188,7 @@ def run_task(
     started = time.perf_counter()
     spec = parse_belief(belief)
     chosen = get_method(method)
-    env = SimulatorEnvironment(appliance.model)
+    env = SimulatorEnvironment(appliance.model, feedback)
     episode, error = Episode(), ""
     faults: tuple[str, ...] | list[str] = ()
     context: TaskContext | None = None
@@ -221,6 +230,7 @@ def run_task(
         key=record_key(method, str(spec), appliance.id, task.id),
         method=method,
         belief=str(spec),
+        feedback=feedback,
         appliance=appliance.id,
         category=appliance.category,
         task=task.id,
@@ -263,8 +273,10 @@ def _failure(
     return "; ".join(parts)
 
 
-def _run_batch(items: list[WorkItem], belief: str, seed: int, suite: str) -> list[TaskRecord]:
-    return [run_one(i.method, belief, seed, i.appliance, i.task, suite) for i in items]
+def _run_batch(
+    items: list[WorkItem], belief: str, seed: int, suite: str, feedback: FeedbackMode
+) -> list[TaskRecord]:
+    return [run_one(i.method, belief, seed, i.appliance, i.task, suite, feedback) for i in items]
 
 
 # --- selecting the work -----------------------------------------------------------------------
@@ -364,7 +376,12 @@ def _run_benchmark(options: BenchOptions, progress: bool) -> BenchOutcome:
     work = select_work(options, suite)
     prepare(
         out,
-        {"suite": str(options.suite), "belief": str(spec), "seed": options.seed},
+        {
+            "suite": str(options.suite),
+            "belief": str(spec),
+            "seed": options.seed,
+            "feedback": options.feedback,
+        },
         {"code": code_version(), "suite_digest": suite_digest(suite)},
         {
             "methods": list(dict.fromkeys(options.methods)),
@@ -439,7 +456,15 @@ def _execute(
             for item in pending:
                 if stop.requested:
                     return
-                yield run_one(item.method, belief, options.seed, item.appliance, item.task, suite)
+                yield run_one(
+                    item.method,
+                    belief,
+                    options.seed,
+                    item.appliance,
+                    item.task,
+                    suite,
+                    options.feedback,
+                )
         except KeyboardInterrupt:
             stop.request("SIGINT")
         return
@@ -450,7 +475,11 @@ def _execute(
     try:
         while queue or running:
             while queue and len(running) < window and not stop.requested:
-                running.add(pool.submit(_run_batch, queue.popleft(), belief, options.seed, suite))
+                running.add(
+                    pool.submit(
+                        _run_batch, queue.popleft(), belief, options.seed, suite, options.feedback
+                    )
+                )
             if stop.requested:
                 running = {future for future in running if not future.cancel()}
             if not running or stop.hard:
