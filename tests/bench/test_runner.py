@@ -319,27 +319,20 @@ def _group_alive(group: int) -> list[int]:
     return alive
 
 
-@pytest.mark.skipif(not Path("/proc").is_dir(), reason="reads /proc (Linux)")
-@pytest.mark.parametrize(("signum", "code"), [(signal.SIGKILL, -9), (signal.SIGTERM, 143)])
-def test_a_killed_bench_resumes_with_the_same_command(
-    tmp_path: Path, signum: int, code: int
-) -> None:
-    """The README's advice after a kill of the main process (its workers are not signalled)."""
-    out = tmp_path / "k"
-    command = [sys.executable, "-m", "apbot.cli", "bench", "--methods", "oracle,apbot-open-loop"]
-    command += ["--categories", "dehumidifier,kettle", "--sample", "3", "--workers", "2"]
-    command += ["--no-report", "--out", str(out)]
-    total = 2 * 10 * 3
-    with (tmp_path / "stderr").open("w") as stderr:
+def _kill_mid_run(command: list[str], out: Path, signum: int, log: Path) -> int:
+    """Start ``command``, send ``signum`` to its main process alone once a new record exists
+    (its workers are not signalled); the exit code, once no process of the run is left."""
+    before = len(read_records(out)) if (out / RESULTS_FILE).exists() else 0
+    with log.open("w") as stderr:
         process = subprocess.Popen(
             command, stdout=subprocess.DEVNULL, stderr=stderr, start_new_session=True
         )
         try:
-            while not (out / RESULTS_FILE).exists() or not (out / RESULTS_FILE).read_bytes():
-                assert process.poll() is None, (tmp_path / "stderr").read_text()
+            while not (out / RESULTS_FILE).exists() or len(read_records(out)) <= before:
+                assert process.poll() is None, log.read_text()
                 time.sleep(0.01)
             os.kill(process.pid, signum)
-            assert process.wait(timeout=30) == code
+            code = process.wait(timeout=30)
             deadline = time.monotonic() + 5
             while _group_alive(process.pid) and time.monotonic() < deadline:
                 time.sleep(0.02)
@@ -347,11 +340,24 @@ def test_a_killed_bench_resumes_with_the_same_command(
         finally:
             with contextlib.suppress(ProcessLookupError):
                 os.killpg(process.pid, signal.SIGKILL)
-    if signum == signal.SIGTERM:
-        last = (tmp_path / "stderr").read_text().strip().splitlines()[-1]
-        assert "stopped (SIGTERM)" in last and "run the same command again to resume" in last
+    return code
+
+
+@pytest.mark.skipif(not Path("/proc").is_dir(), reason="reads /proc (Linux)")
+def test_a_killed_bench_resumes_with_the_same_command(tmp_path: Path) -> None:
+    """The README's advice, after `kill -9` and then after a plain `kill` of the main process."""
+    out = tmp_path / "k"
+    command = [sys.executable, "-m", "apbot.cli", "bench", "--methods", "oracle,apbot-open-loop"]
+    command += ["--categories", "dehumidifier,kettle", "--sample", "3", "--workers", "2"]
+    command += ["--no-report", "--out", str(out)]
+    total = 2 * 10 * 3
+    assert _kill_mid_run(command, out, signal.SIGKILL, tmp_path / "log") == -9
+    first = len(read_records(out))  # the lock is free and the records are sound
+    assert _kill_mid_run(command, out, signal.SIGTERM, tmp_path / "log") == 143
+    last = (tmp_path / "log").read_text().strip().splitlines()[-1]
+    assert "stopped (SIGTERM)" in last and "run the same command again to resume" in last
     kept = len(read_records(out))
-    assert 0 < kept < total
+    assert 0 < first < kept < total
     again = subprocess.run(command, capture_output=True, text=True, timeout=60)
     assert again.returncode == 0, again.stderr
     assert f"{total - kept} task(s) run, {kept} already finished" in again.stdout
