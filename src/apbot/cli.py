@@ -545,9 +545,9 @@ def bench(
         int | None,
         typer.Option(help="Worker processes (default: one per core; 1 runs in this process)."),
     ] = None,
-    out: Annotated[Path, typer.Option(help="Run directory (results, summary, report).")] = Path(
-        "runs/latest"
-    ),
+    out: Annotated[
+        str, typer.Option(help="Run directory (results, summary, report).")
+    ] = "runs/latest",
     belief: Annotated[
         str, typer.Option(help="The model methods work from: true, faulty:RATE or read.")
     ] = "true",
@@ -593,8 +593,10 @@ def bench(
         outcome = run_benchmark(options)
     except (BenchError, BeliefError) as exc:
         raise _fail(str(exc), 2) from None
-    except (ResultsError, OSError) as exc:
+    except ResultsError as exc:
         raise _fail(str(exc)) from None
+    except OSError as exc:  # not foreseen by the runner: still one line, naming the file
+        raise _fail(f"{exc.filename or out}: {exc.strerror or exc}") from None
     except KeyboardInterrupt:  # before the run took over Ctrl-C: nothing was started
         raise _fail("interrupted before any task ran", 130) from None
     _print_bench(outcome.summary)
@@ -603,11 +605,11 @@ def bench(
     )
     if outcome.interrupted:
         errors.print(
-            f"[yellow]interrupted[/yellow]: {len(outcome.records)} finished record(s) "
-            f"kept in {outcome.out}; run the same command again"
+            f"[yellow]stopped[/yellow] ({outcome.stopped_by}): {len(outcome.records)} finished "
+            f"record(s) kept in {outcome.out}; run the same command again"
             f"{' without --rerun' if rerun else ''} to resume"
         )
-        raise typer.Exit(130)
+        raise typer.Exit(outcome.exit_code)
     if not no_report:
         _bench_report(outcome.out)
 
