@@ -386,7 +386,7 @@ class Explorer:
             + ("changes it at once" if other == "apply" else "only shows it"),
             entering.pointer,
         )
-        session.belief.set_value(name, shown)
+        session.belief.set_value(name, again.observed(name))  # where the confirming press left it
         return True
 
     def learn_entry_format(self, name: str, last: Executed, observed: Any, unchanged: bool) -> bool:
