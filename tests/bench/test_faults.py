@@ -12,6 +12,7 @@ from apbot.bench.faults import (
     describe,
     effect_direction,
     fault_sites,
+    first_valid,
     inject_faults,
     missing_step,
     step_size,
@@ -151,9 +152,7 @@ features:
 
 
 def _first(candidates: object) -> tuple[ApplianceModel, Fault]:
-    from apbot.bench.faults import _first_valid
-
-    found = _first_valid(candidates)  # type: ignore[arg-type]
+    found = first_valid(candidates)  # type: ignore[arg-type]
     assert found is not None
     return found
 
