@@ -143,3 +143,11 @@ def actions_text(actions: Sequence[str]) -> str:
 def copied(data: Data) -> Data:
     """A deep copy to mutate into one candidate."""
     return copy.deepcopy(data)
+
+
+def by_mode(groups: list[list[tuple[Data, Fault]]], rng: random.Random) -> Candidates:
+    """Candidates of several sub-kinds: the sub-kinds in a random order, each one's candidates
+    shuffled, so a sub-kind with many candidates is not chosen more often than another."""
+    present = [g for g in groups if g]
+    for group in rng.sample(present, len(present)):
+        yield from rng.sample(group, len(group))

@@ -27,9 +27,10 @@ from apbot.bench.faults.common import (
     plain,
     read_spec,
 )
+from apbot.model.domain import build_domain
 from apbot.model.schema import Add, ApplianceModel, time_step_seconds
 from apbot.model.values import format_hms, normalise_text, parse_hms, tidy_number
-from apbot.sim.compiled import default_effect
+from apbot.sim.compiled import compiled_model, default_effect
 
 MAX_FAULTY_VALUES = 20_000  # a range end pushed "too high" stays a plausible reading
 
@@ -56,6 +57,11 @@ def _write_ranges(var: Data, spec: Data, ranges: list[tuple[Decimal, Decimal, De
         spec["ranges"] = [[format_hms(int(a)), format_hms(int(b)), int(s)] for a, b, s in ranges]
     else:
         spec["ranges"] = [[tidy_number(a), tidy_number(b), tidy_number(s)] for a, b, s in ranges]
+
+
+def _members(ranges: list[tuple[Decimal, Decimal, Decimal]]) -> set[Decimal]:
+    """Every value the ranges hold (sizes are bounded by :func:`_holds`)."""
+    return {a + k * s for a, b, s in ranges for k in range(int((b - a) / s) + 1)}
 
 
 def _show(var: Data, amount: Decimal, step: bool = False) -> str:
@@ -107,8 +113,8 @@ def step_size(model: ApplianceModel, name: str, rng: random.Random) -> Candidate
                 if end == a and b > a and r == len(ranges) - 1:
                     end = a + new_step  # keep at least two values in the range
                 changed = [*ranges[:r], (a, end, new_step), *ranges[r + 1 :]]
-                if not _holds(changed, initial):
-                    continue
+                if not _holds(changed, initial) or _members(changed) == _members(ranges):
+                    continue  # malformed, or the same values (a one-value range before another)
                 data = copied(original)
                 _write_ranges(var, domain_spec(data, name, case), changed)
                 where = f" of range {r + 1}" if len(ranges) > 1 else ""
@@ -262,13 +268,13 @@ def value_order(model: ApplianceModel, name: str, rng: random.Random) -> Candida
     """Discrete values in the wrong order: two neighbours swapped, or the list reversed."""
     original = dump(model)
     var = original["variables"][name]
-    if var["type"] != "discrete":
-        return
+    if var["type"] != "discrete" or not adjusting_steps(model, name):
+        return  # go-to keys and toggles do not care about the order
     for case in case_keys(var, rng):
         spec = read_spec(original, name, case)
         values = list(spec["values"])
-        if len(values) < 2:
-            continue
+        if len(values) < 2 or (len(values) == 2 and var.get("wrap", True)):
+            continue  # two values in a cycle come round in either order
         i = rng.randrange(len(values) - 1)
         swapped = [*values[:i], values[i + 1], values[i], *values[i + 2 :]]
         orders = [(swapped, f"{values[i]!r} and {values[i + 1]!r} swapped")]
@@ -313,6 +319,9 @@ def effect_direction(model: ApplianceModel, name: str, rng: random.Random) -> Ca
     """Every up/down effect of one step reversed: next ↔ prev (for a +/- pair both, so the
     belief thinks "+" goes down), ``{add: 5}`` → ``{add: -5}``."""
     places = adjusting_steps(model, name)
+    var = compiled_model(model).vars[compiled_model(model).var_index[name]]
+    if var.spec.wrap and all(d is None or len(d) <= 2 for d in var.domains):
+        return  # up and down are the same move round a cycle of two
     for feature, index in rng.sample(places, len(places)):
         step = model.features[feature][index]
         effects = {a: default_effect(step, a, model) for a in step.actions}
@@ -324,3 +333,23 @@ def effect_direction(model: ApplianceModel, name: str, rng: random.Random) -> Ca
             if directional(e)
         )
         yield data, Fault("effect_direction", name, f"features.{feature}[{index}]: {changes}")
+
+
+def missing_case(model: ApplianceModel, name: str, rng: random.Random) -> Candidates:
+    """A programme-dependent setting missing one programme's case: the reader did not see that
+    the wool programme has a temperature, so the belief has none there (shown as ``--``).
+    Not the starting programme's case: the belief starts where the appliance starts."""
+    original = dump(model)
+    var = original["variables"][name]
+    if "cases" not in var:
+        return
+    parent = model.variables[var["depends_on"]]
+    first = build_domain(parent).values[build_domain(parent).initial]
+    cases = [c for c in var["cases"] if c != first]
+    if not cases or len(var["cases"]) < 2:
+        return
+    for case in rng.sample(cases, len(cases)):
+        data = copied(original)
+        del data["variables"][name]["cases"][case]
+        detail = f"no case for {var['depends_on']} {case!r} (the setting is believed absent there)"
+        yield data, Fault("missing_case", name, detail)
