@@ -12,7 +12,7 @@ from apbot.bench.faults import (
     on_entry,
     side_effect,
 )
-from tests.bench.faults.models import every_candidate, only, oven, press, shown, value
+from tests.bench.faults.models import OVEN, every_candidate, only, oven, press, shown, value
 from tests.bench.faults.test_values import TIMER
 from tests.helpers import model_from
 
@@ -74,10 +74,35 @@ def test_side_effect_missing_wrong_or_invented() -> None:
     stopped = [*ON, "press_mode", "press_start", "press_stop"]
     assert value(truth, stopped, "mode") == "grill"
     assert value(faulty, stopped, "mode") == "bake"
-    starts = every_candidate(side_effect, truth, "set_delay")
-    faulty, _ = only(starts, lambda f: "sets running to 'on'" in f.detail)
-    assert value(truth, [*ON, "press_timer"], "running") == "off"
-    assert value(faulty, [*ON, "press_timer"], "running") == "on"
+    mode = every_candidate(side_effect, truth, "set_mode")  # choosing a programme…
+    faulty, _ = only(mode, lambda f: "also resets delay" in f.detail)
+    assert value(truth, [*ON, "press_timer", "press_mode"], "delay") == 1
+    assert value(faulty, [*ON, "press_timer", "press_mode"], "delay") == 0
+    assert every_candidate(side_effect, truth, "set_delay") == []  # TIMER: nothing to misread
+
+
+def test_side_effect_invents_a_start_for_a_one_touch_key() -> None:
+    text = (
+        OVEN.replace(
+            "  - {id: stop_button, label: STOP}",
+            "  - {id: stop_button, label: STOP}\n  - {id: quick_button, label: QUICK}",
+        )
+        .replace(
+            "  press_stop: {control: stop_button}",
+            "  press_stop: {control: stop_button}\n  press_quick: {control: quick_button}",
+        )
+        .replace(
+            "  start:\n",
+            "  quick:\n    - {actions: [press_quick], variable: delay, effect: {to: 3}}\n"
+            "  start:\n",
+        )
+    )
+    truth = model_from(text)
+    faulty, _ = only(
+        every_candidate(side_effect, truth, "quick"), lambda f: "sets running to 'on'" in f.detail
+    )
+    assert value(truth, [*ON, "press_quick"], "running") == "off"
+    assert value(faulty, [*ON, "press_quick"], "running") == "on"
 
 
 def test_side_effect_sets_a_wrong_value() -> None:
@@ -91,8 +116,6 @@ def test_side_effect_sets_a_wrong_value() -> None:
 
 
 def oven_text_with_level() -> str:
-    from tests.bench.faults.models import OVEN
-
     text = OVEN.replace(
         '  running: {type: discrete, values: ["off", "on"]}',
         '  running: {type: discrete, values: ["off", "on"]}\n'
@@ -137,8 +160,6 @@ def test_misplaced_action_moves_one_key_of_a_pair() -> None:
 
 
 def oven_text_wrapping() -> str:
-    from tests.bench.faults.models import OVEN
-
     return OVEN.replace("    label: TEMPERATURE\n", "    label: TEMPERATURE\n    wrap: true\n")
 
 

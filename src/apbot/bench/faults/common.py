@@ -68,9 +68,13 @@ def valid(data: Data) -> ApplianceModel | None:
     return model
 
 
+RUN_STATES = frozenset({"power", "running", "heating", "dispensing", "status"})
+
+
 def protected(name: str) -> bool:
-    """Power, locks and run state: a reader rarely gets an on/off wrong."""
-    return name in ("power", "running") or "lock" in name
+    """Power, locks and the run state (``running``, a kettle's ``heating``, a rice cooker's
+    ``status``): a reader rarely gets an on/off wrong, and a fault there is not a setting."""
+    return name in RUN_STATES or "lock" in name
 
 
 def case_keys(var: Data, rng: random.Random) -> list[str | None]:

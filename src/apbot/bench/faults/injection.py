@@ -161,3 +161,25 @@ def first_valid(candidates: Candidates) -> tuple[ApplianceModel, Fault] | None:
         if faulty is not None:
             return faulty, fault
     return None
+
+
+def candidate_sites(
+    model: ApplianceModel, rate: float, seed: str | int, kinds: Collection[str]
+) -> list[tuple[str, str]]:
+    """The sites drawn below ``rate`` where one of ``kinds`` offers a candidate on the true
+    model, unchecked: a cheap test of whether :func:`inject_faults` with these kinds can fault
+    the model at all (a study skips appliances it cannot hit). It checks no validity, so it
+    may name a site the injection then leaves alone."""
+    chosen = _chosen_kinds(kinds)
+    found = []
+    for section, name in fault_sites(model):
+        base = f"{seed}|{model.appliance.id}|{section}.{name}"
+        if random.Random(base).random() >= rate:
+            continue
+        table = SITE_KINDS[section]
+        for kind in chosen & set(table):
+            rng = random.Random(f"{base}|{kind}")
+            if next(iter(table[kind](model, name, rng)), None) is not None:
+                found.append((section, name))
+                break
+    return found

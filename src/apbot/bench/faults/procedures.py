@@ -22,7 +22,7 @@ from apbot.bench.faults.common import (
     protected,
 )
 from apbot.model.domain import ValueProblem, build_domain, normalise
-from apbot.model.schema import ApplianceModel, Step
+from apbot.model.schema import ApplianceModel, GoTo, Step
 from apbot.sim.compiled import default_effect
 
 
@@ -157,7 +157,7 @@ def _settings(model: ApplianceModel) -> list[str]:
 def side_effect(model: ApplianceModel, name: str, rng: random.Random) -> Candidates:
     """A side effect of a step wrong: a ``set`` to a wrong value, a ``set`` or ``reset``
     missing ("+30 SEC does not start the oven"), or one invented ("STOP also clears the
-    timer", "setting the time starts the oven")."""
+    timer", "choosing a programme clears the delay", "the POPCORN key starts at once")."""
     steps = model.features.get(name, [])
     original = dump(model)
     groups: dict[str, list[tuple[Data, Fault]]] = {
@@ -188,7 +188,10 @@ def side_effect(model: ApplianceModel, name: str, rng: random.Random) -> Candida
             data = copied(original)
             data["features"][name][index]["reset"] = [r for r in step.reset if r != target]
             add("no reset", data, f"{where} no longer resets {target}")
-        if step.reset or step.set:  # the reader lengthened a list of what is cleared
+        chooses = step.variable is not None and any(
+            v.depends_on == step.variable for v in model.variables.values()
+        )
+        if step.reset or step.set or chooses:  # "STOP also clears the timer", "MENU the delay"
             chosen = {step.variable, *step.reset, *step.set}  # a programme resets its settings
             others = [
                 v
@@ -200,8 +203,9 @@ def side_effect(model: ApplianceModel, name: str, rng: random.Random) -> Candida
                 data["features"][name][index]["reset"] = [*step.reset, target]
                 add("extra reset", data, f"{where} also resets {target} (it does not)")
         started = _started_value(model)
+        one_touch = any(isinstance(default_effect(step, a, model), GoTo) for a in step.actions)
         if (
-            index == len(steps) - 1
+            one_touch  # a one-touch key (POPCORN, EXPRESS 1) believed to start at once
             and started is not None
             and "running" not in step.set
             and step.variable is not None

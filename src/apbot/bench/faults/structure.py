@@ -19,7 +19,6 @@ from apbot.bench.faults.common import (
     dump,
     protected,
 )
-from apbot.model.domain import build_domain
 from apbot.model.schema import ApplianceModel
 
 # --- a setting the reader did not see ----------------------------------------------------------
@@ -184,28 +183,20 @@ def _condition(when: dict[str, Any]) -> str:
     )
 
 
-def _wrong_conditions(model: ApplianceModel, when: dict[str, Any]) -> Iterator[tuple[str, Any]]:
-    """Plausible misread conditions: one value of a list left out or one added, or another
-    value of a variable with three or more (an on/off is not misread)."""
+def _wrong_conditions(when: dict[str, Any]) -> Iterator[tuple[str, list[str]]]:
+    """Plausible misread conditions: one value of a list left out ("while cooking" for "while
+    cooking or keeping warm"). A single value is not misread: another programme or state in
+    its place would be a different guard, not a misreading."""
     for variable, wanted in when.items():
-        values = [str(v) for v in build_domain(model.variables[variable]).values]
-        if isinstance(wanted, list):
+        if isinstance(wanted, list) and len(wanted) >= 2:
             options = [str(w) for w in wanted]
-            if len(options) >= 2:
-                for value in options:
-                    yield variable, [w for w in options if w != value]
-            for value in values:
-                if value not in options:
-                    yield variable, [*options, value]
-        elif len(values) >= 3:
-            for value in values:
-                if value != str(wanted):
-                    yield variable, value
+            for value in options:
+                yield variable, [w for w in options if w != value]
 
 
 def guard(model: ApplianceModel, name: str, rng: random.Random) -> Candidates:
     """A guard missing or wrong: the belief lets keys work while the appliance runs (missing),
-    refuses a key the guard allows, allows a key it refuses, or tests a wrong value
+    refuses a key the guard allows, allows a key it refuses, or tests too few values
     (``when: {status: [cooking]}`` for ``[cooking, keep warm]``). The guard stays liftable,
     or the model would not be valid."""
     names = guard_names(model)
@@ -238,8 +229,8 @@ def guard(model: ApplianceModel, name: str, rng: random.Random) -> Candidates:
     wrong = [
         edited(
             lambda g, v=variable, w=value: g[index]["when"].update({v: w}),
-            f"tests {variable} is {'/'.join(value) if isinstance(value, list) else value}",
+            f"tests {variable} is {'/'.join(value)}",
         )
-        for variable, value in _wrong_conditions(model, original["guards"][index]["when"])
+        for variable, value in _wrong_conditions(original["guards"][index]["when"])
     ]
     yield from by_mode([missing, narrower, wider, wrong], rng)
