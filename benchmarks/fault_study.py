@@ -109,7 +109,7 @@ def main() -> None:
         help="print the per-kind table of a run or study directory and exit",
     )
     args = parser.parse_args()
-    console = Console()
+    console = Console() if sys.stdout.isatty() else Console(width=120)  # whole names in a log
     if args.table is not None:
         try:
             rates, table = directory_table(args.table)
