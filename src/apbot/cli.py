@@ -549,7 +549,10 @@ def bench(
         str, typer.Option(help="Run directory (results, summary, report).")
     ] = "runs/latest",
     belief: Annotated[
-        str, typer.Option(help="The model methods work from: true, faulty:RATE or read.")
+        str,
+        typer.Option(
+            help="The model methods work from: true, faulty:RATE, faulty:RATE:KIND,... or read."
+        ),
     ] = "true",
     seed: Annotated[int, typer.Option(help="Seed for fault injection.")] = 0,
     feedback: Annotated[
@@ -711,7 +714,10 @@ def run_command(
     ] = None,
     method: Annotated[str, typer.Option(help="The method to run.")] = "apbot",
     belief: Annotated[
-        str, typer.Option(help="The model the method works from: true or faulty:RATE.")
+        str,
+        typer.Option(
+            help="The model the method works from: true, faulty:RATE or faulty:RATE:KIND,..."
+        ),
     ] = "true",
     seed: Annotated[int, typer.Option(help="Seed for fault injection.")] = 0,
     feedback: Annotated[
