@@ -179,6 +179,11 @@ class Session:
             # the display did not move to the step the belief entered: the key did nothing
             # visible, so the belief must not keep what it predicted the key would do
             self.belief.state = before_state  # (``pointer`` still says where it meant to go)
+        # every value the press changed in the belief — side effects too — needs the display
+        # to confirm it before success can rest on it
+        before_values = self.belief.compiled.assignment(before_state)
+        after_values = self.belief.values()
+        self.unverified |= {n for n, v in after_values.items() if before_values[n] != v}
         if variable and not exploring:
             self.unverified.add(variable)
         self.sync(seen)
