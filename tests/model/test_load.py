@@ -9,10 +9,8 @@ from pathlib import Path
 import pytest
 
 from apbot.bench.suite import bundled_suite_dir
+from apbot.model.limits import MAX_FILE_BYTES, MAX_YAML_DEPTH, MAX_YAML_NODES
 from apbot.model.load import (
-    MAX_YAML_BYTES,
-    MAX_YAML_DEPTH,
-    MAX_YAML_NODES,
     load_model,
     loads_model,
     model_to_yaml,
@@ -209,7 +207,7 @@ def test_hostile_yaml_gets_one_clear_problem(text: str, expected: str) -> None:
 def test_a_huge_file_is_refused_before_it_is_read(tmp_path: Path) -> None:
     path = tmp_path / "model.yaml"
     with path.open("w", encoding="utf-8") as handle:
-        handle.write("# padding\n" * (MAX_YAML_BYTES // 10 + 1))
+        handle.write("# padding\n" * (MAX_FILE_BYTES // 10 + 1))
     with pytest.raises(ModelError, match="bytes; at most"):
         load_model(path)
 

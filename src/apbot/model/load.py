@@ -15,6 +15,7 @@ from typing import Any
 import yaml
 from pydantic import ValidationError
 
+from apbot.model.limits import MAX_FILE_BYTES, MAX_YAML_DEPTH, MAX_YAML_NODES, SIZE_LIMITS_DOC
 from apbot.model.problems import ModelError, PathPart, Problem
 from apbot.model.schema import ApplianceModel
 from apbot.model.values import closest_matches
@@ -39,15 +40,7 @@ _UNION_TAGS = {
 }
 
 
-MAX_YAML_BYTES = 4_000_000
-"""A model, panel or task file larger than this is refused before it is parsed."""
-MAX_YAML_NODES = 200_000
-"""Nodes (every key, value and list item) a document may have, counting each alias expansion."""
-MAX_YAML_DEPTH = 50
-"""Collections nested deeper than this are refused (a model nests about six deep)."""
-
-
-def read_text(path: Path, source: str | None = None, limit: int = MAX_YAML_BYTES) -> str:
+def read_text(path: Path, source: str | None = None, limit: int = MAX_FILE_BYTES) -> str:
     """A file's UTF-8 text, or a :class:`ModelError` saying why it cannot be read.
 
     The size is checked before reading, so a multi-gigabyte file costs nothing.
@@ -61,7 +54,7 @@ def read_text(path: Path, source: str | None = None, limit: int = MAX_YAML_BYTES
                     Problem(
                         (),
                         f"the file has {size:,} bytes; at most {limit:,} are allowed "
-                        "(see docs/model-format.md, Size limits)",
+                        f"(see {SIZE_LIMITS_DOC})",
                         "size",
                     )
                 ],
@@ -88,13 +81,13 @@ def read_yaml(text: str, source: str | None = None) -> Any:
     """
     if not isinstance(text, str):
         raise TypeError(f"read_yaml takes the text of a document (str), not {type(text).__name__}")
-    if len(text) > MAX_YAML_BYTES:
+    if len(text) > MAX_FILE_BYTES:
         raise ModelError(
             [
                 Problem(
                     (),
-                    f"the text has {len(text):,} characters; at most {MAX_YAML_BYTES:,} are "
-                    "allowed (see docs/model-format.md, Size limits)",
+                    f"the text has {len(text):,} characters; at most {MAX_FILE_BYTES:,} are "
+                    f"allowed (see {SIZE_LIMITS_DOC})",
                     "size",
                 )
             ],
@@ -243,7 +236,7 @@ def _too_many_nodes(stack: list[_Open], line: int, aliased: int) -> Problem:
     else:
         message = (
             f"the document has more than {limit} nodes (keys, values and list items); "
-            "see docs/model-format.md, Size limits"
+            f"see {SIZE_LIMITS_DOC}"
         )
     return Problem(_path(stack), message, "size", line=line)
 
@@ -308,7 +301,7 @@ class _LineIndex:
 
 @lru_cache(maxsize=2)
 def _line_index(text: str) -> _LineIndex | None:
-    if len(text) > MAX_YAML_BYTES:
+    if len(text) > MAX_FILE_BYTES:
         return None
     try:
         if _scan(text):
