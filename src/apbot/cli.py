@@ -70,14 +70,16 @@ def resolve_model(spec: str) -> tuple[ApplianceModel, str]:
     )
 
 
-def _print_problems(problems: list[Problem], source: str) -> None:
+def _print_problems(problems: list[Problem], source: str, stream: Console | None = None) -> None:
+    """One line per problem: severity, file:line, path, message and the check's name."""
     for problem in problems:
         colour = "red" if problem.severity == "error" else "yellow"
-        location = f"{source}:{problem.line}" if problem.line else source
-        console.print(
+        where = problem.source or source
+        location = f"{where}:{problem.line}" if problem.line else where
+        (stream or console).print(
             f"[{colour}]{problem.severity}[/{colour}] {location}: "
-            f"[bold]{problem.where}[/bold]: {problem.message} "
-            f"[dim]\\[{problem.check}][/dim]"
+            + (f"[bold]{problem.where}[/bold]: " if problem.path else "")
+            + f"{problem.message} [dim]\\[{problem.check}][/dim]"
         )
 
 
@@ -567,6 +569,7 @@ def bench(
     from apbot.bench.results import ResultsError
     from apbot.bench.runner import BenchError, BenchOptions, run_benchmark
 
+    _validated_suite(suite)
     chosen = _names(methods)
     options = BenchOptions(
         suite=suite,
@@ -601,6 +604,27 @@ def bench(
         raise typer.Exit(130)
     if not no_report:
         _bench_report(outcome.out)
+
+
+def _validated_suite(name: str) -> None:
+    """Load and validate the suite before any work starts (the runner reuses the loaded copy).
+
+    Every problem is one line naming its file, line and task; exit 2 when there is one.
+    """
+    from apbot.bench.runner import cached_suite
+    from apbot.bench.suite import validate_suite
+
+    try:
+        loaded = cached_suite(name)
+    except FileNotFoundError as exc:
+        raise _fail(str(exc), 2) from None
+    except ModelError as exc:
+        _print_problems(exc.problems, exc.source or name, stream=errors)
+        raise _fail(f"suite {name} cannot be loaded", 2) from None
+    problems = [p for p in validate_suite(loaded) if p.severity == "error"]
+    if problems:
+        _print_problems(problems, name, stream=errors)
+        raise _fail(f"suite {name} has {len(problems)} error(s); nothing was run", 2)
 
 
 def _print_bench(summary: dict[str, Any]) -> None:

@@ -346,6 +346,13 @@ def _message(error: Any, model_fields: dict[str, list[str]]) -> str:
         return "missing `type` (discrete, numeric or time)"
     if kind == "string_pattern_mismatch":
         return f"{error.get('input')!r}: {_FIELD_HINTS[kind]}"
+    context = error.get("ctx") or {}
+    if kind == "too_short" and context.get("actual_length") == 0:
+        return f"is empty; give at least {context.get('min_length', 1)}"
+    if kind == "string_too_short":
+        return (
+            f"{error.get('input')!r} is too short: at least {context.get('min_length')} characters"
+        )
     if kind == "string_type" and isinstance(error.get("input"), bool):
         word = "on/yes/true" if error["input"] else "off/no/false"
         return (

@@ -27,13 +27,18 @@ def format_path(parts: Sequence[PathPart]) -> str:
 
 @dataclass(frozen=True)
 class Problem:
-    """One thing wrong with a model. ``check`` names the rule that found it."""
+    """One thing wrong with a model. ``check`` names the rule that found it.
+
+    ``source`` is the file the problem is in, when the problem itself knows it (a suite's
+    problems come from many files); otherwise the caller says which file it was reading.
+    """
 
     path: tuple[PathPart, ...]
     message: str
     check: str
     severity: Severity = "error"
     line: int | None = None
+    source: str | None = None
 
     @property
     def where(self) -> str:
@@ -41,11 +46,12 @@ class Problem:
 
     def render(self, source: str | None = None) -> str:
         """One line: ``file:line: path: message [check]``."""
-        location = source or ""
+        location = self.source or source or ""
         if self.line is not None:
             location = f"{location}:{self.line}" if location else f"line {self.line}"
         prefix = f"{location}: " if location else ""
-        return f"{prefix}{self.severity}: {self.where}: {self.message} [{self.check}]"
+        where = f"{self.where}: " if self.path else ""  # a whole-file problem has no path
+        return f"{prefix}{self.severity}: {where}{self.message} [{self.check}]"
 
 
 class ModelError(ValueError):
