@@ -24,7 +24,7 @@ from typing import Literal
 from apbot.bench.suite import SuiteAppliance
 from apbot.model.schema import ApplianceModel
 
-ACCEPTED_FORMS = "'true', 'faulty:RATE' with 0 ≤ RATE ≤ 1 (e.g. 'faulty:0.2') or 'read'"
+ACCEPTED_FORMS = "'true' or 'faulty:RATE' with 0 ≤ RATE ≤ 1 (e.g. 'faulty:0.2')"
 
 
 class BeliefError(ValueError):
