@@ -217,3 +217,13 @@ def test_a_repeated_key_inside_an_anchor_is_reported_once() -> None:
     with pytest.raises(ModelError) as caught:
         read_yaml(text)
     assert [(p.where, p.line) for p in caught.value.problems] == [("base.x", 1)]
+
+
+def test_a_key_with_a_line_break_is_quoted_so_the_problem_stays_one_line() -> None:
+    """Found by the loader fuzzer: the path printed the raw key across two lines."""
+    header = "appliance: {id: fan, category: test}"
+    with pytest.raises(ModelError) as caught:
+        loads_model(GOOD.replace(header, header[:-1] + ', "\\n\\n": 1}'))
+    [problem] = caught.value.problems
+    assert problem.where == "appliance['\\n\\n']"
+    assert "\n" not in problem.render("fan.yaml")

@@ -6,6 +6,7 @@ a test or an LLM re-ask loop can show them the same way.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from typing import Literal
@@ -14,12 +15,22 @@ Severity = Literal["error", "warning"]
 PathPart = str | int
 
 
+_PLAIN_KEY = re.compile(r"[\w \-+/%°().']{1,80}")
+
+
 def format_path(parts: Sequence[PathPart]) -> str:
-    """``("features", "set_delay", 1, "actions")`` -> ``features.set_delay[1].actions``."""
+    """``("features", "set_delay", 1, "actions")`` -> ``features.set_delay[1].actions``.
+
+    A key a reader could not see or copy (empty, a line break, a control character, very
+    long) is shown quoted, ``guards[0].when['\\n']``, so a problem always fits on one line.
+    """
     text = ""
     for part in parts:
         if isinstance(part, int):
             text += f"[{part}]"
+        elif not _PLAIN_KEY.fullmatch(str(part)) or str(part).strip() != str(part):
+            shown = str(part) if len(str(part)) <= 80 else str(part)[:77] + "…"
+            text += f"[{shown!r}]"
         else:
             text += f".{part}" if text else str(part)
     return text or "(model)"
