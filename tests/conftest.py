@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import pytest
+from hypothesis import settings
 
 from apbot.examples import load_example
 from apbot.model.schema import ApplianceModel
@@ -21,3 +22,8 @@ def washer() -> ApplianceModel:
 @pytest.fixture(scope="session")
 def toaster() -> ApplianceModel:
     return load_example("toaster_oven_dial")
+
+
+# `pytest --hypothesis-profile=long` (or APBOT_FUZZ=long): the fuzzers try many more inputs
+# (see tests/fuzz.py); every other test keeps its own settings.
+settings.register_profile("long", deadline=None)
