@@ -358,7 +358,8 @@ def suite_list() -> None:
 
 @suite_app.command("show")
 def suite_show(
-    appliance: str, lines: Annotated[int, typer.Option(help="Manual lines to show.")] = 25
+    appliance: str,
+    lines: Annotated[int, typer.Option(help="Manual lines to show.", min=0)] = 25,
 ) -> None:
     """One appliance: the start of its manual, a model summary, and its tasks."""
     [item] = _chosen([appliance])

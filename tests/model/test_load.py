@@ -227,3 +227,11 @@ def test_a_key_with_a_line_break_is_quoted_so_the_problem_stays_one_line() -> No
     [problem] = caught.value.problems
     assert problem.where == "appliance['\\n\\n']"
     assert "\n" not in problem.render("fan.yaml")
+
+
+@pytest.mark.skipif(not Path("/dev/zero").exists(), reason="needs /dev/zero")
+def test_an_endless_device_is_refused_after_the_size_limit() -> None:
+    started = time.perf_counter()
+    with pytest.raises(ModelError, match="more than 4,000,000 bytes"):
+        load_model("/dev/zero")  # its size is 0, so only a bounded read stops it
+    assert time.perf_counter() - started < 5.0

@@ -43,24 +43,32 @@ _UNION_TAGS = {
 def read_text(path: Path, source: str | None = None, limit: int = MAX_FILE_BYTES) -> str:
     """A file's UTF-8 text, or a :class:`ModelError` saying why it cannot be read.
 
-    The size is checked before reading, so a multi-gigabyte file costs nothing.
+    At most ``limit`` bytes are ever read (a regular file's size is checked first), so a
+    multi-gigabyte file or an endless device such as ``/dev/zero`` costs nothing.
     """
     where = source or str(path)
+
+    def too_large(size: str) -> ModelError:
+        return ModelError(
+            [
+                Problem(
+                    (),
+                    f"the file has {size} bytes; at most {limit:,} are allowed "
+                    f"(see {SIZE_LIMITS_DOC})",
+                    "size",
+                )
+            ],
+            where,
+        )
+
     try:
-        size = path.stat().st_size
-        if size > limit:
-            raise ModelError(
-                [
-                    Problem(
-                        (),
-                        f"the file has {size:,} bytes; at most {limit:,} are allowed "
-                        f"(see {SIZE_LIMITS_DOC})",
-                        "size",
-                    )
-                ],
-                where,
-            )
-        return path.read_text(encoding="utf-8")
+        if path.is_file() and path.stat().st_size > limit:
+            raise too_large(f"{path.stat().st_size:,}")
+        with path.open("rb") as handle:
+            data = handle.read(limit + 1)
+        if len(data) > limit:
+            raise too_large(f"more than {limit:,}")
+        text = data.decode("utf-8")
     except IsADirectoryError:
         raise ModelError([Problem((), "is a directory, not a file", "io")], where) from None
     except OSError as exc:
@@ -68,6 +76,7 @@ def read_text(path: Path, source: str | None = None, limit: int = MAX_FILE_BYTES
         raise ModelError([Problem((), f"cannot read the file: {reason}", "io")], where) from None
     except UnicodeDecodeError as exc:
         raise ModelError([Problem((), f"not UTF-8 text (byte {exc.start})", "io")], where) from None
+    return text.replace("\r\n", "\n").replace("\r", "\n")  # as text mode reads it
 
 
 def read_yaml(text: str, source: str | None = None) -> Any:
