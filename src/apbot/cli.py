@@ -71,8 +71,11 @@ def resolve_model(spec: str) -> tuple[ApplianceModel, str]:
 
 
 def _print_problems(problems: list[Problem], source: str, stream: Console | None = None) -> None:
-    """One line per problem: severity, file:line, path, message and the check's name."""
-    for problem in problems:
+    """One line per problem: severity, file:line, path, message and the check's name (at
+    most a hundred, then a line counting the rest)."""
+    from apbot.model.load import capped
+
+    for problem in capped(problems):
         colour = "red" if problem.severity == "error" else "yellow"
         where = problem.source or source
         location = f"{where}:{problem.line}" if problem.line else where

@@ -235,3 +235,15 @@ def test_an_endless_device_is_refused_after_the_size_limit() -> None:
     with pytest.raises(ModelError, match="more than 4,000,000 bytes"):
         load_model("/dev/zero")  # its size is 0, so only a bounded read stops it
     assert time.perf_counter() - started < 5.0
+
+
+def test_thousands_of_problems_are_capped_with_a_count_of_the_rest() -> None:
+    header = "appliance: {id: fan, category: test}"
+    extra = ", ".join(f"k{i}: 1" for i in range(5_000))
+    started = time.perf_counter()
+    with pytest.raises(ModelError) as caught:
+        loads_model(GOOD.replace(header, header[:-1] + ", " + extra + "}"))
+    problems = caught.value.problems
+    assert len(problems) == 101 and problems[0].where == "appliance.k0"
+    assert problems[-1].message.startswith("… and 4,900 more problem(s) like these")
+    assert time.perf_counter() - started < 3.0  # a did-you-mean search per key took minutes

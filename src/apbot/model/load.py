@@ -16,7 +16,7 @@ import yaml
 from pydantic import ValidationError
 
 from apbot.model.limits import MAX_FILE_BYTES, MAX_YAML_DEPTH, MAX_YAML_NODES, SIZE_LIMITS_DOC
-from apbot.model.problems import ModelError, PathPart, Problem
+from apbot.model.problems import MORE, ModelError, PathPart, Problem
 from apbot.model.schema import ApplianceModel
 from apbot.model.values import closest_matches
 
@@ -334,6 +334,9 @@ def _clean_loc(loc: tuple[Any, ...]) -> tuple[PathPart, ...]:
     return tuple(parts)
 
 
+MAX_REPORTED = 100
+"""Problems explained in full; past this many, one more line counts the rest."""
+
 _FIELD_HINTS = {
     "string_pattern_mismatch": "ids use lowercase letters, digits and underscores, "
     "starting with a letter",
@@ -406,6 +409,7 @@ def schema_problems(error: ValidationError, text: str | None = None) -> list[Pro
     fields = _known_fields()
     by_path: dict[tuple[PathPart, ...], list[str]] = {}
     effect_paths: set[tuple[PathPart, ...]] = set()
+    skipped: set[tuple[PathPart, ...]] = set()
     for item in error.errors():
         loc = tuple(item["loc"])
         if loc and loc[-1] == "[key]" and isinstance(item.get("input"), bool):
@@ -417,6 +421,9 @@ def schema_problems(error: ValidationError, text: str | None = None) -> list[Pro
                 p for p in path[index + 1 : index + 2] if str(p) not in ("to", "add")
             )
             effect_paths.add(effect_path)
+            continue
+        if path not in by_path and len(by_path) >= MAX_REPORTED:
+            skipped.add(path)  # counted, not explained: a hint per key costs a difflib search
             continue
         by_path.setdefault(path, [])
         message = _message(item, fields)
@@ -432,7 +439,24 @@ def schema_problems(error: ValidationError, text: str | None = None) -> list[Pro
         # a union that failed every branch reports each; keep the most specific one
         message = messages[0] if len(messages) > 2 else "; ".join(messages)
         problems.append(Problem(path, message, "schema", line=line_of(text, path)))
+    skipped -= by_path.keys()
+    if skipped:
+        problems.append(_more(len(skipped), "schema"))
     return problems
+
+
+def _more(count: int, check: str) -> Problem:
+    return Problem(
+        (), f"{MORE}{count:,} more problem(s) like these; fix the ones above first", check
+    )
+
+
+def capped(problems: list[Problem], limit: int = MAX_REPORTED) -> list[Problem]:
+    """At most ``limit`` problems, errors first, and one line counting the rest."""
+    if len(problems) <= limit:
+        return problems
+    ordered = sorted(problems, key=lambda p: p.severity != "error")
+    return [*ordered[:limit], _more(len(ordered) - limit, ordered[limit].check)]
 
 
 def parse_model(
@@ -466,7 +490,7 @@ def parse_model(
         if any(p.severity == "error" for p in problems):
             located = [
                 Problem(p.path, p.message, p.check, p.severity, line_of(text, p.path))
-                for p in problems
+                for p in capped(problems)
             ]
             raise ModelError(located, source)
     return model

@@ -12,6 +12,8 @@ from dataclasses import dataclass
 from typing import Literal
 
 Severity = Literal["error", "warning"]
+MORE = "… and "
+"""How the line counting problems not shown begins (it sorts after the ones shown)."""
 PathPart = str | int
 
 
@@ -69,7 +71,10 @@ class ModelError(ValueError):
     """A model that cannot be used; carries every problem found, errors first."""
 
     def __init__(self, problems: Iterable[Problem], source: str | None = None) -> None:
-        self.problems = sorted(problems, key=lambda p: (p.severity != "error", p.line or 0))
+        self.problems = sorted(
+            problems,
+            key=lambda p: (p.severity != "error", p.message.startswith(MORE), p.line or 0),
+        )
         self.source = source
         super().__init__(self.render())
 
