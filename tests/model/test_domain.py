@@ -1,5 +1,6 @@
 from __future__ import annotations
 
+import math
 import time
 
 import pytest
@@ -150,3 +151,14 @@ def test_whole_number_ranges_expand_like_decimal_ones() -> None:
     assert all(type(v) is int for v in expand_ranges([[0.0, 4.0, 2.0]]))
     with pytest.raises(ValueError, match="step must be positive"):
         expand_ranges([[0, 10, 0]])  # looped for ever
+
+
+@pytest.mark.parametrize("raw", [math.inf, math.nan, 10**400, "9" * 400, "9" * 400 + " h"])
+def test_infinite_or_enormous_goal_numbers_are_value_problems(raw: object) -> None:
+    """Found by the goal fuzzer: int(inf) raised an OverflowError from inside normalise."""
+    minutes = numeric(ranges=[[0, 120, 30]], unit="min")
+    timer = TimeVariable.model_validate({"type": "time", "ranges": [["00:00:00", "01:00:00", 60]]})
+    for var in (minutes, timer):
+        with pytest.raises(ValueProblem) as caught:
+            normalise(var, raw)
+        assert len(str(caught.value)) < 150

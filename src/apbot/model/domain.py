@@ -24,6 +24,7 @@ from apbot.model.schema import (
     time_step_seconds,
 )
 from apbot.model.values import (
+    brief,
     closest_matches,
     expand_ranges,
     format_hms,
@@ -378,42 +379,57 @@ def _normalise_discrete(raw: Any, ordered: Sequence[str], members: Container[str
         ]
         if len(by_number) == 1:
             return by_number[0]
-    raise ValueProblem(f"{text!r} is not one of {preview(values)}" + _did_you_mean(text, values))
+    raise ValueProblem(
+        f"{brief(text)} is not one of {preview(values)}" + _did_you_mean(text, values)
+    )
 
 
 def _to_number(raw: Any, unit: str) -> int | float:
+    """The number ``raw`` stands for, in ``unit``; never infinite or NaN (no domain has them,
+    and ``int(inf)`` would be an OverflowError deep inside)."""
+    number = _any_number(raw, unit)
+    try:
+        finite = math.isfinite(number)
+    except OverflowError:  # an int too large for a float
+        finite = False
+    if not finite:
+        raise ValueProblem(f"{brief(raw)} is not a finite number")
+    return tidy_number(number)
+
+
+def _any_number(raw: Any, unit: str) -> float:
     if isinstance(raw, bool):
-        raise ValueProblem(f"expected a number, got {raw!r}")
+        raise ValueProblem(f"expected a number, got {brief(raw)}")
     if isinstance(raw, int | float):
-        return tidy_number(raw)
+        return raw
     text = str(raw).strip()
     if unit and text.casefold().endswith(unit.casefold()):
         # the variable's own unit, whatever it is ("2.5 lb", "3 cups", "1200 W")
         bare = text[: len(text) - len(unit)].strip()
         number = parse_quantity(bare)
         if number is not None and number[1] is None:
-            return tidy_number(round(number[0], 6))
+            return round(number[0], 6)
     quantity = parse_quantity(text)
     if quantity is None:
-        raise ValueProblem(f"{raw!r} is not a number" + (f" of {unit}" if unit else ""))
+        raise ValueProblem(f"{brief(raw)} is not a number" + (f" of {unit}" if unit else ""))
     number, dimension, _ = quantity
     if dimension is not None:
         target = unit_of(unit) if unit else None
         if target is None:
             if unit:
-                raise ValueProblem(f"cannot convert {raw!r} to {unit!r}")
+                raise ValueProblem(f"cannot convert {brief(raw)} to {unit!r}")
         elif target[0] != dimension:
-            raise ValueProblem(f"{raw!r} is not a quantity in {unit}")
+            raise ValueProblem(f"{brief(raw)} is not a quantity in {unit}")
         else:
             number = number / target[1]
-    return tidy_number(round(number, 6))
+    return round(number, 6)
 
 
 def _to_seconds(raw: Any, style: str) -> int:
     text = str(raw).strip()
     if isinstance(raw, int | float) and not isinstance(raw, bool):
         raise ValueProblem(
-            f"a bare number {raw!r} is ambiguous for a time; write 00:30:00, '30 min' or '2 h'"
+            f"a bare number {brief(raw)} is ambiguous for a time; write 00:30:00, '30 min' or '2 h'"
         )
     parts = text.split(":")
     if len(parts) == 3 and all(p.isdigit() for p in parts):
@@ -421,20 +437,22 @@ def _to_seconds(raw: Any, style: str) -> int:
             return parse_hms(text)
         except ValueError:
             raise ValueProblem(
-                f"{text!r} is not a time (minutes and seconds go up to 59)"
+                f"{brief(text)} is not a time (minutes and seconds go up to 59)"
             ) from None
     if len(parts) == 2 and all(p.isdigit() for p in parts):
         first, second = int(parts[0]), int(parts[1])
         if second >= 60:
-            raise ValueProblem(f"{text!r} is not a time")
+            raise ValueProblem(f"{brief(text)} is not a time")
         # mm:ss on a display showing minutes and seconds, else h:mm
         return first * 60 + second if style == "mm:ss" else first * 3600 + second * 60
     quantity = parse_quantity(text)
     if quantity is None or quantity[1] not in ("time", None):
-        raise ValueProblem(f"{text!r} is not a duration (try '90 min' or 01:30:00)")
+        raise ValueProblem(f"{brief(text)} is not a duration (try '90 min' or 01:30:00)")
     if quantity[1] is None:
-        raise ValueProblem(f"a bare number {text!r} is ambiguous for a time; give a unit")
+        raise ValueProblem(f"a bare number {brief(text)} is ambiguous for a time; give a unit")
     seconds = quantity[0]
+    if not math.isfinite(seconds):
+        raise ValueProblem(f"{brief(text)} is not a finite duration")
     if abs(seconds - round(seconds)) > 1e-6:
-        raise ValueProblem(f"{text!r} is not a whole number of seconds")
+        raise ValueProblem(f"{brief(text)} is not a whole number of seconds")
     return round(seconds)

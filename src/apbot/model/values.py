@@ -323,6 +323,17 @@ def closest_matches(text: str, options: Iterable[str], limit: int = 3) -> list[s
     return difflib.get_close_matches(word, candidates, n=limit, cutoff=0.5)
 
 
+def brief(value: object, limit: int = 60) -> str:
+    """``repr(value)``, cut to ``limit`` characters: a message quotes what it was given
+    without printing a 400-digit number or a pasted page.
+
+    >>> brief("x" * 100, limit=10)
+    "'xxxxxxxx…"
+    """
+    text = repr(value)
+    return text if len(text) <= limit else text[: limit - 1] + "…"
+
+
 def preview(values: Sequence[object], limit: int = 8, quote: bool = True) -> str:
     """Values for a message: all of a short list, else the first few, the last and the count.
 
