@@ -191,6 +191,7 @@ def load_appliance(directory: Path, check: bool = False) -> SuiteAppliance:
             ],
             str(directory),
         )
+    assert manual_path is not None  # a missing manual was reported just above
     problems: list[Problem] = []
     model_path = directory / "model.yaml"
     model: ApplianceModel | None = None

@@ -115,7 +115,7 @@ def range_count(ranges: Sequence[tuple[float, float, float]]) -> int:
 
 def domain_size(var: AnyVariable, case: Any = None) -> int:
     """Values of a variable's domain (or of one case), counted without building it."""
-    spec = case if case is not None else var
+    spec: Any = case if case is not None else var
     if isinstance(var, DiscreteVariable):
         return len(spec) if isinstance(spec, list) else len(spec.values or [])
     if isinstance(var, NumericVariable):
@@ -190,11 +190,11 @@ def build_domain(var: AnyVariable, case: Any = None) -> Domain:
 
 
 def _build_domain(var: AnyVariable, case: Any) -> Domain:
-    spec = case if case is not None else var
+    spec: Any = case if case is not None else var
     if isinstance(var, DiscreteVariable):
         if isinstance(spec, list):
             spec = DiscreteCase(values=spec)
-        values = list(spec.values)
+        values = list(spec.values or [])
         if len(values) > MAX_VALUES:
             raise _too_many(len(values))
         index: dict[Any, int] = {}
@@ -309,6 +309,7 @@ def normalise(var: AnyVariable, raw: Any, domain: Domain | None = None) -> Any:
     >>> normalise(NumericVariable(type="numeric", ranges=[(0, 120, 30)], unit="min"), "2 h")
     120
     """
+    members: Container[Any]
     if domain is not None:
         ordered, members = domain.values, domain.index
     else:
@@ -405,10 +406,9 @@ def _any_number(raw: Any, unit: str) -> float:
     text = str(raw).strip()
     if unit and text.casefold().endswith(unit.casefold()):
         # the variable's own unit, whatever it is ("2.5 lb", "3 cups", "1200 W")
-        bare = text[: len(text) - len(unit)].strip()
-        number = parse_quantity(bare)
-        if number is not None and number[1] is None:
-            return round(number[0], 6)
+        bare = parse_quantity(text[: len(text) - len(unit)].strip())
+        if bare is not None and bare[1] is None:
+            return round(bare[0], 6)
     quantity = parse_quantity(text)
     if quantity is None:
         raise ValueProblem(f"{brief(raw)} is not a number" + (f" of {unit}" if unit else ""))

@@ -164,17 +164,18 @@ def _scan(text: str) -> list[Problem]:
     for event in yaml.parse(text, Loader=_Loader):
         kind = type(event)
         if kind in _NODE_EVENTS:
-            line = event.start_mark.line + 1
+            node: Any = event  # a NodeEvent: it has an anchor (and a scalar, a value)
+            line = node.start_mark.line + 1
             if stack:
                 parent = stack[-1]
                 if parent.mapping and parent.items % 2 == 0:  # a key
-                    name = event.value if kind is yaml.ScalarEvent else "?"
+                    name = node.value if kind is yaml.ScalarEvent else "?"
                     if name in parent.seen and kind is yaml.ScalarEvent:
                         problems.append(_repeated(stack, name, parent.seen[name], line))
                     parent.seen.setdefault(name, line)
                     parent.key = name
                 parent.items += 1
-            anchor = event.anchor
+            anchor = node.anchor
             if kind is yaml.AliasEvent:
                 if anchor in open_anchors:
                     return [

@@ -34,11 +34,12 @@ from apbot.model.limits import (
     MAX_VALUES,
     SIZE_LIMITS_DOC,
 )
-from apbot.model.problems import Problem
+from apbot.model.problems import PathPart, Problem
 from apbot.model.schema import (
     TEMPLATE_FIELD,
     Add,
     ApplianceModel,
+    Control,
     DiscreteVariable,
     GoTo,
     Step,
@@ -112,12 +113,16 @@ def _sizes(model: ApplianceModel) -> Iterator[Problem]:
         )
     total = 0
     for name, var in model.variables.items():
-        cases = (var.cases or {}).items() if var.depends_on is not None else [(None, None)]
-        for key, case in cases:
+        cases: list[tuple[str | None, Any]] = (
+            list((var.cases or {}).items()) if var.depends_on is not None else [(None, None)]
+        )
+        for case_key, case in cases:
             size = domain_size(var, case)
             total += size
             if size > MAX_VALUES:
-                path = ("variables", name) if key is None else ("variables", name, "cases", key)
+                path: tuple[PathPart, ...] = ("variables", name)
+                if case_key is not None:
+                    path = (*path, "cases", case_key)
                 yield Problem(
                     path,
                     f"{size:,} values; a domain has at most {MAX_VALUES:,} ({LIMITS})",
@@ -298,7 +303,7 @@ def _effects_of(step: Step, model: ApplianceModel) -> dict[str, Any]:
 
 def _steps(model: ApplianceModel, domains: Mapping[str, list[Domain]]) -> Iterator[Problem]:
     has_keypad = any(c.kind == "key" for c in model.controls)
-    by_id = {}
+    by_id: dict[str, Control] = {}
     for c in model.controls:
         by_id.setdefault(c.id, c)
     for name, action in model.actions.items():

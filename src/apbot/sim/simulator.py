@@ -63,13 +63,15 @@ def require_model(model: Any, who: str) -> CompiledModel:
             f"{who} needs an ApplianceModel (from apbot.model.load.load_model or parse_model) "
             f"or a CompiledModel, not {type(model).__name__}"
         )
+    if isinstance(model, CompiledModel):
+        return model
     try:
         return compiled_model(model)
     except Exception:
         from apbot.model.problems import ModelError
         from apbot.model.validate import check_model
 
-        errors = [p for p in check_model(model) if p.severity == "error"]  # type: ignore[arg-type]
+        errors = [p for p in check_model(model) if p.severity == "error"]
         if errors:
             raise ModelError(errors, f"the model given to {who}") from None
         raise
