@@ -1,12 +1,25 @@
-"""Shared fixtures: the bundled example models."""
+"""Shared fixtures: the bundled example models; a guard against methods left registered."""
 
 from __future__ import annotations
+
+from collections.abc import Iterator
 
 import pytest
 from hypothesis import settings
 
+from apbot.agent.registry import methods
 from apbot.examples import load_example
 from apbot.model.schema import ApplianceModel
+
+
+@pytest.fixture(scope="module", autouse=True)
+def registry_unchanged() -> Iterator[None]:
+    """A test module that registers fake methods must remove them: left behind, they would run
+    under every later default ``--methods`` in the same process."""
+    before = sorted(methods())
+    yield
+    after = sorted(methods())
+    assert after == before, f"methods left registered by this module: {set(after) - set(before)}"
 
 
 @pytest.fixture(scope="session")

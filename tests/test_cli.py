@@ -117,6 +117,15 @@ def test_report_on_a_directory_without_a_run_is_a_clear_error(tmp_path: Path) ->
     assert result.exit_code == 1 and "apbot bench" in result.output
 
 
+def test_report_on_a_partial_run_says_how_far_it_got(tmp_path: Path) -> None:
+    from tests.bench.report.rundir import write_run
+
+    write_run(tmp_path, [])
+    result = runner.invoke(app, ["report", str(tmp_path)])
+    assert result.exit_code == 0, result.output
+    assert "partial run: 0 of 2 tasks finished per method" in result.output
+
+
 def test_run_a_task_id_with_its_own_goal() -> None:
     result = runner.invoke(app, ["run", "microwave_1", "t03", "-g", "clock=5:00"])
     assert result.exit_code == 0, result.output
@@ -164,4 +173,4 @@ def test_bench_help_advertises_only_beliefs_that_exist() -> None:
     assert result.exit_code == 0
     text = " ".join(result.output.replace("│", " ").split())
     belief = text.split("--belief", 1)[1].split("[default: true]", 1)[0]
-    assert "true or faulty:RATE" in belief and "read" not in belief
+    assert "faulty:RATE" in belief and "read" not in belief

@@ -20,6 +20,7 @@ from apbot.model.problems import ModelError, Problem
 from apbot.model.schema import ApplianceModel
 
 if TYPE_CHECKING:
+    from apbot.agent.environment import FeedbackMode
     from apbot.agent.episode import TraceEvent
     from apbot.bench.suite import Suite, SuiteAppliance, Task
 
@@ -578,13 +579,21 @@ def bench(
         int | None,
         typer.Option(help="Worker processes (default: one per core; 1 runs in this process)."),
     ] = None,
-    out: Annotated[Path, typer.Option(help="Run directory (results, summary, report).")] = Path(
-        "runs/latest"
-    ),
+    out: Annotated[
+        str, typer.Option(help="Run directory (results, summary, report).")
+    ] = "runs/latest",
     belief: Annotated[
-        str, typer.Option(help="The model methods work from: true or faulty:RATE.")
+        str,
+        typer.Option(help="The model methods work from: true, faulty:RATE or faulty:RATE:KIND,..."),
     ] = "true",
     seed: Annotated[int, typer.Option(help="Seed for fault injection.")] = 0,
+    feedback: Annotated[
+        str,
+        typer.Option(
+            help="What the methods perceive: display (the panel's text, refusals only where "
+            "the appliance signals them) or values (the paper's simulator: shown values by name)."
+        ),
+    ] = "display",
     rerun: Annotated[
         bool,
         typer.Option(help="Discard the directory's finished results and run everything again."),
@@ -614,13 +623,16 @@ def bench(
         belief=belief,
         seed=seed,
         rerun=rerun,
+        feedback=_feedback_mode(feedback),
     )
     try:
         outcome = run_benchmark(options)
     except (BenchError, BeliefError) as exc:
         raise _fail(str(exc), 2) from None
-    except (ResultsError, OSError) as exc:
+    except ResultsError as exc:
         raise _fail(str(exc)) from None
+    except OSError as exc:  # not foreseen by the runner: still one line, naming the file
+        raise _fail(f"{exc.filename or out}: {exc.strerror or exc}") from None
     except KeyboardInterrupt:  # before the run took over Ctrl-C: nothing was started
         raise _fail("interrupted before any task ran", 130) from None
     _print_bench(outcome.summary)
@@ -629,11 +641,11 @@ def bench(
     )
     if outcome.interrupted:
         errors.print(
-            f"[yellow]interrupted[/yellow]: {len(outcome.records)} finished record(s) "
-            f"kept in {outcome.out}; run the same command again"
+            f"[yellow]stopped[/yellow] ({outcome.stopped_by}): {len(outcome.records)} finished "
+            f"record(s) kept in {outcome.out}; run the same command again"
             f"{' without --rerun' if rerun else ''} to resume"
         )
-        raise typer.Exit(130)
+        raise typer.Exit(outcome.exit_code)
     if not no_report:
         _bench_report(outcome.out)
 
@@ -657,6 +669,16 @@ def _validated_suite(name: str) -> None:
     if problems:
         _print_problems(problems, name, stream=errors)
         raise _fail(f"suite {name} has {len(problems)} error(s); nothing was run", 2)
+
+
+def _feedback_mode(text: str) -> FeedbackMode:
+    """A ``--feedback`` value, checked (typer's Enum choices would print as classes)."""
+    from apbot.agent.environment import FEEDBACK_MODES
+
+    for mode in FEEDBACK_MODES:
+        if text == mode:
+            return mode
+    raise _fail(f"--feedback must be one of {', '.join(FEEDBACK_MODES)} (got {text!r})", 2)
 
 
 def _print_bench(summary: dict[str, Any]) -> None:
@@ -711,15 +733,22 @@ def _bench_report(out: Path) -> None:
 def report_command(
     directory: Annotated[Path, typer.Argument(help="A run directory written by `apbot bench`.")],
 ) -> None:
-    """Write report.md and a self-contained report.html for a benchmark run."""
-    from apbot.bench.report import ReportError, write_report
+    """Write report.md and a self-contained report.html for a benchmark run (one read of its
+    results, so it may run while the bench still writes; a partial run says how far it got)."""
+    from apbot.bench.report import ReportError, load_run, progress, write_files
 
     try:
-        paths = write_report(directory)
+        data = load_run(directory)
+        paths = write_files(data)
     except ReportError as exc:
         raise _fail(str(exc)) from None
     for path in paths[:2]:
         console.print(f"report: {path}")
+    state = progress(data)
+    if state.state == "partial":
+        errors.print(f"[yellow]partial run[/yellow]: {state.text}")
+    else:
+        console.print(state.text)
 
 
 @app.command("run")
@@ -739,9 +768,15 @@ def run_command(
     ] = None,
     method: Annotated[str, typer.Option(help="The method to run.")] = "apbot",
     belief: Annotated[
-        str, typer.Option(help="The model the method works from: true or faulty:RATE.")
+        str,
+        typer.Option(
+            help="The model the method works from: true, faulty:RATE or faulty:RATE:KIND,..."
+        ),
     ] = "true",
     seed: Annotated[int, typer.Option(help="Seed for fault injection.")] = 0,
+    feedback: Annotated[
+        str, typer.Option(help="What the method perceives: display or values.")
+    ] = "display",
     show_exploration: Annotated[
         bool, typer.Option(help="Print every exploring press, not only a count.")
     ] = False,
@@ -778,7 +813,9 @@ def run_command(
     console.print(f"goal: {', '.join(f'{k}={v}' for k, v in task.goal.items())}")
     printer = _LivePrinter(show_exploration)
     try:
-        record = run_task(found, task, method, belief, seed, observer=printer)
+        record = run_task(
+            found, task, method, belief, seed, observer=printer, feedback=_feedback_mode(feedback)
+        )
     except (KeyError, ValueError) as exc:
         raise _fail(str(exc.args[0] if isinstance(exc, KeyError) else exc), 2) from None
     printer.flush()

@@ -2,9 +2,14 @@
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import signal
+import subprocess
+import sys
+import time
+from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
@@ -13,10 +18,11 @@ from typer.testing import CliRunner
 from apbot.agent.environment import Environment
 from apbot.agent.episode import Episode, TaskContext
 from apbot.agent.methods import run_oracle
-from apbot.agent.registry import Method, methods, register
+from apbot.agent.registry import Method, register, unregister
 from apbot.bench.beliefs import BeliefError, belief_model, parse_belief
-from apbot.bench.results import RESULTS_FILE, read_records
+from apbot.bench.results import QUARANTINE_FILE, RESULTS_FILE, read_records
 from apbot.bench.runner import BenchError, BenchOptions, cached_suite, run_benchmark, run_one
+from apbot.bench.stopping import WORKER_DIED
 from apbot.cli import app
 
 
@@ -44,20 +50,36 @@ def _interrupt(context: TaskContext, env: Environment) -> Episode:
     return run_oracle(context, env)
 
 
+def _terminate(context: TaskContext, env: Environment) -> Episode:
+    """A plain ``kill`` arrives while this method runs."""
+    os.kill(os.getpid(), signal.SIGTERM)
+    return run_oracle(context, env)
+
+
+def _die(context: TaskContext, env: Environment) -> Episode:
+    """The worker running this is killed (as by the OOM killer or a user's ``kill -9``)."""
+    os.kill(os.getpid(), signal.SIGKILL)
+    raise AssertionError("unreachable")
+
+
 FAKES = {
     "test-liar": _liar,
     "test-crash": _crash,
     "test-overthink": _overthink,
     "test-interrupt": _interrupt,
+    "test-terminate": _terminate,
+    "test-die": _die,
 }
 
 
 @pytest.fixture(scope="module", autouse=True)
-def fake_methods() -> None:
-    known = methods()
+def fake_methods() -> Iterator[None]:
+    """The fakes exist for this module only: a default ``--methods`` elsewhere runs none."""
     for name, run in FAKES.items():
-        if name not in known:
-            register(Method(name, run, "a method for the runner's tests"))
+        register(Method(name, run, "a method for the runner's tests"))
+    yield
+    for name in FAKES:
+        unregister(name)
 
 
 def options(tmp_path: Path, **changes: object) -> BenchOptions:
@@ -120,6 +142,22 @@ def test_a_torn_last_line_is_dropped_and_rerun(tmp_path: Path) -> None:
     assert all(r.success for r in read_records(tmp_path / "run"))
 
 
+def test_a_bad_line_in_the_middle_is_quarantined_and_its_task_runs_again(tmp_path: Path) -> None:
+    run_benchmark(options(tmp_path, sample=3), progress=False)
+    results = tmp_path / "run" / RESULTS_FILE
+    lines = results.read_bytes().splitlines(keepends=True)
+    results.write_bytes(lines[0] + b"garbage\n" + lines[1][:50] + b"\n" + b"".join(lines[2:]))
+    outcome = run_benchmark(options(tmp_path, sample=3), progress=False)
+    assert (outcome.ran, outcome.skipped, outcome.interrupted) == (1, 5, False)
+    assert len(outcome.notes) == 1
+    assert "2 bad line(s) (line 2, 3" in outcome.notes[0]
+    assert QUARANTINE_FILE in outcome.notes[0] and "run again" in outcome.notes[0]
+    assert len(read_records(tmp_path / "run")) == 6
+    entries = (tmp_path / "run" / QUARANTINE_FILE).read_text().splitlines()
+    assert [json.loads(entry)["line"] for entry in entries] == [2, 3]
+    assert run_benchmark(options(tmp_path, sample=3), progress=False).notes == []
+
+
 def test_a_directory_does_not_mix_seeds_or_beliefs(tmp_path: Path) -> None:
     run_benchmark(options(tmp_path), progress=False)
     with pytest.raises(BenchError, match=r"seed 0 \(asked: 1\).*--rerun"):
@@ -169,13 +207,35 @@ def test_workers_give_the_same_records_as_one_process(tmp_path: Path) -> None:
     ).read_bytes()
 
 
-def test_ctrl_c_stops_cleanly_and_keeps_finished_records(tmp_path: Path) -> None:
-    before = signal.getsignal(signal.SIGINT)
-    outcome = run_benchmark(options(tmp_path, methods=["oracle", "test-interrupt"]), progress=False)
-    assert outcome.interrupted
+@pytest.mark.parametrize(
+    ("method", "name", "code"),
+    [("test-interrupt", "SIGINT", 130), ("test-terminate", "SIGTERM", 143)],
+)
+def test_ctrl_c_and_sigterm_stop_cleanly_and_keep_finished_records(
+    tmp_path: Path, method: str, name: str, code: int
+) -> None:
+    before = signal.getsignal(signal.SIGINT), signal.getsignal(signal.SIGTERM)
+    outcome = run_benchmark(options(tmp_path, methods=["oracle", method]), progress=False)
+    assert (outcome.interrupted, outcome.stopped_by, outcome.exit_code) == (True, name, code)
     assert outcome.ran == 2  # the first task of each method; the second appliance never started
     assert len(read_records(tmp_path / "run")) == 2
-    assert signal.getsignal(signal.SIGINT) is before  # Ctrl-C handling restored
+    assert (signal.getsignal(signal.SIGINT), signal.getsignal(signal.SIGTERM)) == before
+
+
+def test_a_worker_that_dies_stops_the_run_and_keeps_what_finished(tmp_path: Path) -> None:
+    outcome = run_benchmark(
+        options(tmp_path, methods=["oracle", "test-die"], workers=2), progress=False
+    )
+    assert (outcome.interrupted, outcome.stopped_by, outcome.exit_code) == (
+        True,
+        WORKER_DIED,
+        1,
+    )
+    kept = read_records(tmp_path / "run")
+    assert sorted(r.key for r in kept) == [r.key for r in outcome.records]
+    assert all(r.method == "oracle" and r.success for r in kept)
+    again = run_benchmark(options(tmp_path, methods=["oracle"], workers=2), progress=False)
+    assert (again.interrupted, again.ran + again.skipped) == (False, 2)
 
 
 def test_beliefs() -> None:
@@ -234,12 +294,72 @@ def test_cli_runs_and_prints_the_table(tmp_path: Path) -> None:
 
 
 def test_two_runs_never_write_one_directory_at_once(tmp_path: Path) -> None:
-    from apbot.bench.runner import _exclusive
+    from apbot.bench.rundir import exclusive
 
     options = BenchOptions(
         methods=["oracle"], appliances=["kettle_1"], sample=1, workers=1, out=tmp_path / "run"
     )
     (tmp_path / "run").mkdir()
-    with _exclusive(tmp_path / "run"), pytest.raises(BenchError, match="another"):
+    with exclusive(tmp_path / "run"), pytest.raises(BenchError, match="another"):
         run_benchmark(options, progress=False)
     assert run_benchmark(options, progress=False).ran == 1  # free again afterwards
+
+
+def _group_alive(group: int) -> list[int]:
+    """Live (not zombie) processes of a process group, from /proc."""
+    alive = []
+    for entry in Path("/proc").iterdir():
+        if entry.name.isdigit():
+            try:
+                fields = (entry / "stat").read_text().rsplit(")", 1)[1].split()
+            except OSError:
+                continue
+            if int(fields[2]) == group and fields[0] != "Z":
+                alive.append(int(entry.name))
+    return alive
+
+
+def _kill_mid_run(command: list[str], out: Path, signum: int, log: Path) -> int:
+    """Start ``command``, send ``signum`` to its main process alone once a new record exists
+    (its workers are not signalled); the exit code, once no process of the run is left."""
+    before = len(read_records(out)) if (out / RESULTS_FILE).exists() else 0
+    with log.open("w") as stderr:
+        process = subprocess.Popen(
+            command, stdout=subprocess.DEVNULL, stderr=stderr, start_new_session=True
+        )
+        try:
+            while not (out / RESULTS_FILE).exists() or len(read_records(out)) <= before:
+                assert process.poll() is None, log.read_text()
+                time.sleep(0.01)
+            os.kill(process.pid, signum)
+            code = process.wait(timeout=30)
+            deadline = time.monotonic() + 5
+            while _group_alive(process.pid) and time.monotonic() < deadline:
+                time.sleep(0.02)
+            assert not _group_alive(process.pid), "workers outlived the killed run"
+        finally:
+            with contextlib.suppress(ProcessLookupError):
+                os.killpg(process.pid, signal.SIGKILL)
+    return code
+
+
+@pytest.mark.skipif(not Path("/proc").is_dir(), reason="reads /proc (Linux)")
+def test_a_killed_bench_resumes_with_the_same_command(tmp_path: Path) -> None:
+    """The README's advice, after `kill -9` and then after a plain `kill` of the main process."""
+    out = tmp_path / "k"
+    command = [sys.executable, "-m", "apbot.cli", "bench", "--methods", "oracle,apbot-open-loop"]
+    command += ["--categories", "dehumidifier,kettle", "--sample", "3", "--workers", "2"]
+    command += ["--no-report", "--out", str(out)]
+    total = 2 * 10 * 3
+    assert _kill_mid_run(command, out, signal.SIGKILL, tmp_path / "log") == -9
+    first = len(read_records(out))  # the lock is free and the records are sound
+    assert _kill_mid_run(command, out, signal.SIGTERM, tmp_path / "log") == 143
+    last = (tmp_path / "log").read_text().strip().splitlines()[-1]
+    assert "stopped (SIGTERM)" in last and "run the same command again to resume" in last
+    kept = len(read_records(out))
+    assert 0 < first < kept < total
+    again = subprocess.run(command, capture_output=True, text=True, timeout=60)
+    assert again.returncode == 0, again.stderr
+    assert f"{total - kept} task(s) run, {kept} already finished" in again.stdout
+    keys = [json.loads(line)["key"] for line in (out / RESULTS_FILE).read_text().splitlines()]
+    assert len(keys) == len(set(keys)) == total

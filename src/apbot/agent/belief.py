@@ -83,19 +83,21 @@ class Belief:
         step = self.compiled.steps[self.state.step]
         return step.feature, step.index
 
-    def set_pointer(self, pointer: tuple[str, int] | None) -> None:
+    def set_pointer(self, pointer: tuple[str, int] | None, buffer: str = "") -> None:
+        """Believe the appliance is in this feature step (a keypad buffer ``buffer`` typed)."""
         step = -1
         if pointer is not None:
             step = next(
                 (i for i, s in enumerate(self.compiled.steps) if (s.feature, s.index) == pointer),
                 -1,
             )
-        self.state = State(self.state.values, step, "")
+        self.state = State(self.state.values, step, buffer if step >= 0 else "")
 
     def replace(self, model: ApplianceModel, pointer: tuple[str, int] | None = None) -> None:
         """Switch to a repaired model, keeping every value that still fits it."""
         values = self.values()
         old_pointer = self.pointer() if pointer is None else pointer
+        buffer = self.state.buffer if old_pointer == self.pointer() else ""
         self.compiled = CompiledModel(model)
         self._simulator = Simulator(self.compiled)
         self.state = self.compiled.initial_state()
@@ -110,4 +112,4 @@ class Belief:
         for name in order:  # parents (parent index -1) before their dependents
             if name in self.compiled.var_index and values[name] is not None:
                 self.set_value(name, values[name])
-        self.set_pointer(old_pointer)
+        self.set_pointer(old_pointer, buffer)

@@ -8,19 +8,19 @@ model's names). Anything with ``actions``, ``reset`` and ``step`` is an environm
 
 >>> from apbot.examples import load_example
 >>> env = SimulatorEnvironment(load_example("washing_machine"))
->>> env.step("press_power").text
-'HELLO'
+>>> env.step("press_power").text  # the main display, then the lit lamps
+'HELLO  PAUSED'
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass, field
-from typing import Any, Protocol, runtime_checkable
+from typing import Any, Literal, Protocol, runtime_checkable
 
 from apbot.model.schema import ApplianceModel
 from apbot.sim.compiled import compiled_model
-from apbot.sim.simulator import Simulator
+from apbot.sim.simulator import Observation, Simulator
 
 
 @dataclass(slots=True)
@@ -58,15 +58,28 @@ class Environment(Protocol):
         ...
 
 
+FeedbackMode = Literal["display", "values"]
+FEEDBACK_MODES: tuple[FeedbackMode, ...] = ("display", "values")
+
+
 class SimulatorEnvironment:
     """A ground-truth simulator seen only through feedback: the benchmark's environment.
 
-    The benchmark keeps ``simulator`` to judge the final state; agents get this object and
-    must use only :class:`Environment`'s methods.
+    ``feedback`` says what the agent gets after each action (:func:`panel_feedback`):
+    ``display`` (the default) is what a robot in front of the panel has; ``values`` adds what
+    the paper's simulator reports. The benchmark keeps ``simulator`` to judge the final state;
+    agents get this object and must use only :class:`Environment`'s methods.
     """
 
-    def __init__(self, model: ApplianceModel | Simulator) -> None:
+    def __init__(
+        self, model: ApplianceModel | Simulator, feedback: FeedbackMode = "display"
+    ) -> None:
+        if feedback not in FEEDBACK_MODES:
+            raise ValueError(
+                f"unknown feedback mode {feedback!r}; choose one of {', '.join(FEEDBACK_MODES)}"
+            )
         self.simulator = model if isinstance(model, Simulator) else Simulator(compiled_model(model))
+        self.feedback = feedback
         self.steps = 0
 
     @property
@@ -75,19 +88,32 @@ class SimulatorEnvironment:
 
     def reset(self) -> Feedback:
         self.steps = 0
-        return _feedback(self.simulator.reset())
+        return panel_feedback(self.simulator.reset(), self.feedback)
 
     def step(self, action: str, seconds: float | None = None) -> Feedback:
         self.steps += 1
-        return _feedback(self.simulator.step(action, seconds))
+        return panel_feedback(self.simulator.step(action, seconds), self.feedback)
 
 
-def _feedback(observation: Any) -> Feedback:
-    # the simulator's reason for a refusal names true values ("child_lock is on"): an agent
-    # must learn that from the display, so only the fact of the refusal is passed on
-    return Feedback(
-        observation.display,
-        dict(observation.values),
-        observation.accepted,
-        "" if observation.accepted else "refused",
-    )
+def panel_feedback(observation: Observation, mode: FeedbackMode = "display") -> Feedback:
+    """What a simulated appliance may reveal to an agent: the one rule every adapter follows.
+
+    * ``display``: the panel's text (main display and lit lamps), and a refusal only where the
+      appliance makes one perceptible (a beep, a message: ``Guard.signal``,
+      ``Display.ignored``). A key ignored without a sign is indistinguishable from one that
+      changed nothing.
+    * ``values``: as the paper's simulator — also the shown variables by name, and every
+      refusal, silent or not.
+
+    Never the simulator's reason for a refusal: it names true values ("child_lock is on"),
+    which an agent must learn from the display.
+    """
+    if mode == "values":
+        return Feedback(
+            observation.text,
+            dict(observation.values),
+            observation.accepted,
+            "" if observation.accepted else "refused",
+        )
+    refused = not observation.accepted and observation.perceptible
+    return Feedback(observation.text, {}, not refused, "beep" if refused else "")

@@ -25,6 +25,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from apbot.agent.environment import Feedback
+from apbot.agent.reader import DisplayReader
 from apbot.model.domain import (
     AnyVariable,
     Domain,
@@ -115,6 +116,7 @@ class StateEstimator:
         }
         self._candidates: dict[str, list[tuple[int, tuple[str, ...]]]] = {}
         self._plans: dict[frozenset[str], _Plan] = {}
+        self._reader: DisplayReader | None = None
 
     def estimate(self, feedback: Feedback, context: Mapping[str, Any] | None = None) -> Estimate:
         """Read ``feedback`` in belief terms.
@@ -155,6 +157,11 @@ class StateEstimator:
                     raise ValueProblem("the belief has no such setting here")
                 values[var.name] = normalise(var.spec, _as_text(raw, var.spec, domain), domain)
             except ValueProblem:
+                printed = self._as_printed(var.name, raw, {**(context or {}), **values})
+                if printed is not None:
+                    target = values if printed[0] == "value" else outside
+                    target[var.name] = printed[1]
+                    continue
                 try:
                     outside[var.name] = parse_value(var.spec, raw)
                 except ValueProblem as exc:
@@ -163,6 +170,23 @@ class StateEstimator:
                         f"value for {var.name}: {exc}"
                     )
         return Estimate(values, outside, unmatched, dict(plan.mapping))
+
+    def _as_printed(
+        self, name: str, raw: Any, context: Mapping[str, Any]
+    ) -> tuple[str, Any] | None:
+        """A value reported the way the display prints it ("PL7" for a ``show: "PL{value}"``),
+        read back through the belief's own display rules."""
+        if not isinstance(raw, str) or not raw.strip():
+            return None
+        if self._reader is None:
+            self._reader = DisplayReader(self.belief)
+        for hypothesis in self._reader.read(raw, context).hypotheses:
+            if hypothesis.screen.variable == name and not hypothesis.partial:
+                if name in hypothesis.values:
+                    return "value", hypothesis.values[name]
+                if name in hypothesis.outside:
+                    return "outside", hypothesis.outside[name]
+        return None
 
     # --- name matching ----------------------------------------------------------------------
 

@@ -12,19 +12,22 @@ from __future__ import annotations
 from collections import Counter
 from typing import Any
 
-from apbot.agent.core import MISSING, Core, Executed
+from apbot.agent.session import MISSING, Executed, Session
 from apbot.plan.plan import MacroAction, PlannedAction
 
 
-class Greedy(Core):
+class GreedyExecutor:
     """Execute a macro action press by press from the feedback."""
+
+    def __init__(self, session: Session) -> None:
+        self.session = session
 
     def execute_greedily(self, macro: MacroAction) -> list[Executed]:
         executed: list[Executed] = []
         actions = list(macro.actions)
         i = 0
         while i < len(actions):
-            done = self.press(actions[i])
+            done = self.session.press(actions[i])
             executed.append(done)
             i += 1
             end = i
@@ -34,7 +37,7 @@ class Greedy(Core):
                 end == i
                 or done.pointer is None
                 or done.variable is None
-                or not self.stepping(done.pointer, done.action.name)
+                or not self.session.stepping(done.pointer, done.action.name)
             ):
                 continue
             target = self._value_after(actions[i:end])
@@ -46,18 +49,18 @@ class Greedy(Core):
         if done.pointer is None:
             return False
         feature, index = done.pointer
-        return action.name in self.belief.model.features[feature][index].actions and self.effect(
-            done.pointer, action.name
-        ) not in ("digit", "none")
+        return action.name in self.session.belief.model.features[feature][
+            index
+        ].actions and self.session.effect(done.pointer, action.name) not in ("digit", "none")
 
     def _value_after(self, actions: list[PlannedAction]) -> Any:
         """What the belief says the step's variable will be after these planned presses."""
-        saved = self.belief.state
-        name = self.step_variable(self.belief.pointer())
+        saved = self.session.belief.state
+        name = self.session.step_variable(self.session.belief.pointer())
         for action in actions:
-            self.belief.advance(action.name, action.seconds)
-        value = self.belief.value(name) if name else None
-        self.belief.state = saved
+            self.session.belief.advance(action.name, action.seconds)
+        value = self.session.belief.value(name) if name else None
+        self.session.belief.state = saved
         return value
 
     def _towards(self, entered: Executed, target: Any) -> list[Executed]:
@@ -67,28 +70,28 @@ class Greedy(Core):
         feature, index = entered.pointer
         keys = [
             a
-            for a in self.belief.model.features[feature][index].actions
-            if self.effect(entered.pointer, a) not in ("digit", "none")
+            for a in self.session.belief.model.features[feature][index].actions
+            if self.session.effect(entered.pointer, a) not in ("digit", "none")
         ]
         executed: list[Executed] = []
         seen: Counter[Any] = Counter()
         while True:
-            observed = self.shown(name)
+            observed = self.session.shown(name)
             if observed is MISSING or observed == target:
                 return executed
             seen[observed] += 1
             if seen[observed] > 2:  # going round in circles
                 return executed
             best = min(keys, key=lambda a: self._distance_after(name, a, target))
-            self.count_reasoning_step()
-            executed.append(self.press(self.planned(best)))
+            self.session.count_reasoning_step()
+            executed.append(self.session.press(self.session.planned(best)))
 
     def _distance_after(self, name: str, action: str, target: Any) -> float:
-        saved = self.belief.state
-        self.belief.advance(action)
-        values = self.domain_values(name)
-        after = self.belief.value(name)
-        self.belief.state = saved
+        saved = self.session.belief.state
+        self.session.belief.advance(action)
+        values = self.session.domain_values(name)
+        after = self.session.belief.value(name)
+        self.session.belief.state = saved
         if after not in values or target not in values:
             return float("inf")
         return abs(values.index(after) - values.index(target))

@@ -92,6 +92,20 @@ class Dark:
         return "(dark)"
 
 
+@dataclass(frozen=True)
+class Unread:
+    """A press after which the display showed text the belief's display rules cannot print.
+
+    Two equal texts are the same slot (the walk went round); once the display rules are
+    repaired the text is read again, and until then it counts as :class:`Dark`.
+    """
+
+    text: str
+
+    def __repr__(self) -> str:
+        return f"(unread {self.text!r})"
+
+
 def fill_dark(values: Sequence[Any], known: Sequence[Any], wrap: bool | None) -> list[Any]:
     """Replace runs of :class:`Dark` by the believed values that lie between their neighbours
     (in order, skipping values seen elsewhere); a run with no such values is dropped.
@@ -193,3 +207,60 @@ def typical_change(trace: Sequence[float]) -> float | None:
 def _tidy(number: float) -> float:
     """Whole numbers as ints, so ranges read ``(10, 30, 1)`` rather than ``(10.0, 30.0, 1.0)``."""
     return int(number) if float(number).is_integer() else number
+
+
+_VALUE_CHARS = ".,:-+"
+
+
+def infer_template(
+    mains: Sequence[str], render: Any, parse: Any, words: bool = False, known: Any = None
+) -> str | None:
+    """The display template (``"PL{value}"``) behind texts that show one setting with
+    different values: the common start and end are the template's own text, the part that
+    varies is the value. ``parse`` reads a value from the varying part (None if it is none)
+    and ``render`` prints a value as the model would; the template must give back every text.
+    ``words``: the values are words (a discrete setting), not numbers or times. With a single
+    text, ``known`` is the value it is believed to show.
+
+    >>> infer_template(["PL7", "PL8"], str, lambda t: int(t) if t.isdigit() else None)
+    'PL{value}'
+    >>> infer_template(["TEMP 180°C", "TEMP 190°C"], lambda v: f"{v}°C",
+    ...                lambda t: int(t[:-2]) if t[:-2].isdigit() else None)
+    'TEMP {value}'
+    >>> infer_template(["PROG fast", "PROG fine"], str, str, words=True)
+    'PROG {value}'
+    """
+    texts = list(dict.fromkeys(mains))
+    if len(texts) == 1 and known is not None:
+        printed = render(known)
+        if texts[0].count(printed) == 1:
+            start = texts[0].index(printed)
+            return texts[0][:start] + "{value}" + texts[0][start + len(printed) :]
+    if len(texts) < 2:
+        return None
+
+    def inside(char: str) -> bool:  # could be part of a value
+        return char.isalnum() if words else (char.isdigit() or char in _VALUE_CHARS)
+
+    prefix = _common_prefix(texts)
+    suffix = _common_prefix([t[len(prefix) :][::-1] for t in texts])[::-1]
+    while prefix and inside(prefix[-1]):
+        prefix = prefix[:-1]  # do not cut into the value ("TEMP 1" of "TEMP 180")
+    while suffix and inside(suffix[0]):
+        suffix = suffix[1:]
+    for cut in range(len(suffix) + 1):  # a unit the model prints with the value moves into it
+        tail = suffix[cut:]
+        values = [parse(t[len(prefix) : len(t) - len(tail)]) for t in texts]
+        if all(v is not None for v in values) and all(
+            prefix + render(v) + tail == t for v, t in zip(values, texts, strict=True)
+        ):
+            return prefix + "{value}" + tail
+    return None
+
+
+def _common_prefix(texts: Sequence[str]) -> str:
+    first = texts[0]
+    end = 0
+    while end < len(first) and all(len(t) > end and t[end] == first[end] for t in texts):
+        end += 1
+    return first[:end]

@@ -16,20 +16,26 @@ from __future__ import annotations
 
 from typing import Any
 
-from apbot.agent.core import (
+from apbot.agent.budget import Budget
+from apbot.agent.displays import DisplayLearner
+from apbot.agent.environment import Environment
+from apbot.agent.episode import Episode, TaskContext
+from apbot.agent.explorer import Explorer
+from apbot.agent.greedy import GreedyExecutor
+from apbot.agent.guards import GuardLearner
+from apbot.agent.perception import Seen
+from apbot.agent.procedures import ProcedureRepairer
+from apbot.agent.session import (
     MISSING,
+    UNREADABLE,
     AgentConfig,
     Executed,
+    Session,
     Stop,
     loose,
     magnitude,
     summary,
 )
-from apbot.agent.environment import Environment
-from apbot.agent.episode import Episode, TaskContext
-from apbot.agent.exploring import Exploring
-from apbot.agent.greedy import Greedy
-from apbot.agent.procedures import Procedures
 from apbot.model.domain import ValueProblem, all_values, build_domain, normalise
 from apbot.model.goal import GoalError
 from apbot.model.schema import DiscreteVariable, GoTo
@@ -39,19 +45,27 @@ from apbot.plan.plan import MacroAction, Plan, Unreachable, plan
 __all__ = ["AgentConfig", "run_agent"]
 
 
-class _Run(Exploring, Procedures, Greedy):
-    """One episode of the agent."""
+class ClosedLoop:
+    """One episode of the agent: plans, executes, checks and dispatches repairs to its
+    collaborators (the explorer, the procedure repairer, the greedy executor), which share one
+    :class:`Session`."""
 
     def __init__(self, config: AgentConfig, context: TaskContext, env: Environment) -> None:
-        super().__init__(config, context, env)
+        self.session = Session(config, context, env, Budget())
+        self.displays = DisplayLearner(self.session)
+        self.explorer = Explorer(self.session, self.displays)
+        self.guards = GuardLearner(self.session)
+        self.procedures = ProcedureRepairer(self.session, self.guards)
+        self.greedy = GreedyExecutor(self.session)
+        self.config = config
+        self.context = context
         self.pending: list[MacroAction] = []  # the rest of the plan, while it holds
         self.values_before: dict[str, Any] = {}  # the belief before the current macro action
 
     def run(self) -> Episode:
-        episode = self.episode
+        episode = self.session.episode
         try:
-            self.last = self.env.reset()
-            self.sync(self.estimate(self.last))
+            self.session.start()
             if not self.config.closed_loop:
                 self.open_loop()
             stalled = 0
@@ -80,7 +94,7 @@ class _Run(Exploring, Procedures, Greedy):
         for macro in self.make_plan(inside).macro_actions:
             self.start_macro(macro)
             self.execute(macro)
-        holds = all(self.belief.value(n) == v for n, v in inside.items())
+        holds = all(self.session.belief.value(n) == v for n, v in inside.items())
         raise Stop(
             "plan executed" if holds else "plan executed, but the belief no longer holds the goal",
             success=holds,
@@ -89,34 +103,38 @@ class _Run(Exploring, Procedures, Greedy):
     def reasoning_step(self) -> None:
         inside, outside = self.goal()
         for name in outside:
-            if name in self.explored:
+            if name in self.session.explored:
                 raise Stop(
                     _outside_text({name: outside[name]}) + " (explored: "
-                    f"{summary(self.domain_values(name))})"
+                    f"{summary(self.session.domain_values(name))})"
                 )
         if not self.pending:
             target = dict(inside)
-            target.update({name: self.proxy(name, inside) for name in outside})
+            for name in outside:
+                proxy = self.proxy(name, inside)
+                if proxy is not MISSING:
+                    target[name] = proxy
             found = self.make_plan(target)
             if not found.macro_actions:
                 if outside:
-                    pressed = self.episode.execution_steps
+                    pressed = self.session.episode.execution_steps
                     self.explore_outside(outside)
-                    if self.episode.execution_steps == pressed:  # no value to go to first
+                    if self.session.episode.execution_steps == pressed:  # no value to go to first
                         any(self.inspect(name) for name in outside)
                     return
-                if any(self.belief.value(n) != v for n, v in inside.items()):
+                if any(self.session.belief.value(n) != v for n, v in inside.items()):
                     raise Stop("the rest of the goal cannot be reached on the belief model")
                 if self.settle_contradictions(inside):
                     return  # the belief now holds what was shown: plan again
-                unseen = sorted(self.unverified & set(inside))
-                raise Stop(
-                    "the goal holds"
-                    + (f" (not seen on the display: {', '.join(unseen)})" if unseen else ""),
-                    success=True,
-                )
+                unseen = sorted(self.session.unverified & set(inside))
+                if unseen:  # believed, never seen: claiming it would be a guess
+                    raise Stop(
+                        "the belief holds the goal, but the display never confirmed "
+                        f"{', '.join(unseen)} after it was set"
+                    )
+                raise Stop("the goal holds", success=True)
             self.pending = list(found.macro_actions)
-            self.episode.log("plan", " → ".join(m.feature for m in found.macro_actions))
+            self.session.episode.log("plan", " → ".join(m.feature for m in found.macro_actions))
         macro = self.pending.pop(0)
         self.start_macro(macro)
         executed = self.execute(macro)
@@ -124,18 +142,18 @@ class _Run(Exploring, Procedures, Greedy):
             self.pending.clear()  # the belief changed: plan again from what was observed
 
     def start_macro(self, macro: MacroAction) -> None:
-        self.count_reasoning_step()
-        self.episode.log("macro", macro.feature, expected=dict(macro.expect))
-        self.values_before = self.belief.values()
+        self.session.count_reasoning_step()
+        self.session.episode.log("macro", macro.feature, expected=dict(macro.expect))
+        self.values_before = self.session.belief.values()
 
     def execute(self, macro: MacroAction) -> list[Executed]:
         if not self.config.button_policy:
-            return self.execute_greedily(macro)
+            return self.greedy.execute_greedily(macro)
         executed = []
         for action in macro.actions:
-            executed.append(self.press(action))
-            if self.config.closed_loop and executed[-1].refused:
-                break  # the appliance refused what the model allows: stop and find out why
+            executed.append(self.session.press(action))
+            if self.config.closed_loop and executed[-1].surprising:
+                break  # not as predicted: pressing on would only make things worse
         return executed
 
     # --- the goal and the plan -----------------------------------------------------------
@@ -144,7 +162,7 @@ class _Run(Exploring, Procedures, Greedy):
         """The goal split into values the belief has and values it does not."""
         inside: dict[str, Any] = {}
         outside: dict[str, Any] = {}
-        variables = self.belief.model.variables
+        variables = self.session.belief.model.variables
         for name, raw in self.context.goal.items():
             if name not in variables:
                 raise Stop(f"the goal names {name!r}, which the model does not have")
@@ -154,7 +172,7 @@ class _Run(Exploring, Procedures, Greedy):
                 if loose(variables[name], raw) is None:  # not even a value of that kind
                     raise Stop(f"goal {name}={raw!r}: {exc}") from None
                 outside[name] = raw
-        for problem in check_goal(self.belief.model, inside):  # not in the goal programme's
+        for problem in check_goal(self.session.belief.model, inside):  # not in the goal programme's
             name = str(problem.path[-1])
             outside[name] = self.context.goal[name]
             del inside[name]
@@ -162,14 +180,17 @@ class _Run(Exploring, Procedures, Greedy):
 
     def proxy(self, name: str, inside: dict[str, Any]) -> Any:
         """A value the belief has, near the goal value it lacks: planning to it brings the
-        setting onto the display, where it can be explored."""
-        spec = self.belief.model.variables[name]
-        values = self.domain_values(name)
+        setting onto the display, where it can be explored (MISSING: the setting does not
+        exist in the goal's programme at all, as far as the belief knows)."""
+        spec = self.session.belief.model.variables[name]
+        values = self.session.domain_values(name)
         if spec.depends_on in inside:  # the setting as it will be in the goal's programme
             case = (spec.cases or {}).get(str(inside[spec.depends_on]))
-            values = list(build_domain(spec, case).values) if case is not None else []
+            if case is None:
+                return MISSING  # the belief lacks it there: reach the programme, then look
+            values = list(build_domain(spec, case).values)
         values = values or all_values(spec)
-        current = self.belief.value(name)
+        current = self.session.belief.value(name)
         others = [v for v in values if v != current] or values
         if isinstance(spec, DiscreteVariable):
             index = values.index(current) if current in values else -1
@@ -198,7 +219,7 @@ class _Run(Exploring, Procedures, Greedy):
                     partial = self._plan(reachable)
                     if partial.macro_actions:
                         return partial  # progress first: the rest may be reachable from there
-                if self.recover_unreachable({name: value}) or self.inspect(name):
+                if self.procedures.recover_unreachable({name: value}) or self.inspect(name):
                     return self.make_plan(target)
                 break
             raise Stop(f"no plan on the belief model: {exc.reason}") from None
@@ -206,29 +227,35 @@ class _Run(Exploring, Procedures, Greedy):
     def inspect(self, name: str) -> bool:
         """A goal setting the belief cannot reach: go through the procedure that adjusts it
         and walk its values, in case its keys do something else than believed. Once."""
-        key = f"inspect:{name}"
-        if self.counts[key]:
+        if not self.session.budget.once("inspect", name):
             return False
-        self.counts[key] += 1
-        for feature, steps in self.belief.model.features.items():
+        for feature, steps in self.session.belief.model.features.items():
             for index, step in enumerate(steps):
                 walking = [
                     a
                     for a in step.actions
-                    if step.variable == name and self.stepping((feature, index), a)
+                    if step.variable == name and self.session.stepping((feature, index), a)
                 ]
                 if not walking:
                     continue
-                self.enter_step(feature, index)
-                self.explore(
+                self.procedures.enter_step(feature, index)
+                self.explorer.explore(
                     name,
-                    Executed(self.planned(walking[0]), (feature, index), name, self.last, True),
+                    Executed(
+                        self.session.planned(walking[0]),
+                        (feature, index),
+                        name,
+                        self.session.last,
+                        True,
+                    ),
                 )
                 return True
         return False
 
     def _plan(self, target: dict[str, Any]) -> Plan:
-        return plan(self.belief.compiled, self.belief.state, target, self.config.plan_budget)
+        return plan(
+            self.session.belief.compiled, self.session.belief.state, target, self.config.plan_budget
+        )
 
     def _plannable(self, target: dict[str, Any]) -> bool:
         try:
@@ -246,45 +273,76 @@ class _Run(Exploring, Procedures, Greedy):
             return True
         first = next((i for i, e in enumerate(executed) if e.surprises or e.refused), None)
         if first is None:
-            self.episode.log("check", "ok", expected=dict(macro.expect))
-            self.counts.clear()  # things work again: earlier trouble no longer counts
+            self.session.episode.log("check", "ok", expected=dict(macro.expect))
+            self.session.budget.works("value", {e.variable for e in executed if e.variable})
+            self.session.budget.works("procedure", {macro.feature})
             outside = self.goal()[1]
             return not (outside and self._look_at(outside))
         done = executed[first]
-        self.episode.log(
+        self.session.episode.log(
             "check",
             "mismatch",
             expected={n: p for n, (p, _) in done.surprises.items()},
-            values={n: o for n, (_, o) in done.surprises.items()},
+            values={
+                n: "(unreadable)" if o is UNREADABLE else o for n, (_, o) in done.surprises.items()
+            },
         )
         if done.refused or self._wrong_setting(done):
-            self.repair_procedure(executed[first:])
-            name = self.step_variable(self.belief.pointer())
-            key = self.stepping_key(name) if name else None
-            if key is not None and self.shown(name) not in (MISSING, self.belief.value(name)):
-                self.explore(name, key)  # the probe showed a value the belief cannot hold
+            self.procedures.repair_procedure(executed[first:])
+            name = self.session.step_variable(self.session.belief.pointer())
+            key = self.explorer.stepping_key(name) if name else None
+            if key is not None and self.session.shown(name) not in (
+                MISSING,
+                self.session.belief.value(name),
+            ):
+                self.explorer.explore(name, key)  # the probe showed a value the belief cannot hold
         else:
             name = done.variable if done.variable in done.surprises else next(iter(done.surprises))
             predicted, observed = done.surprises[name]
-            self.repair_value(name, predicted, observed, executed, first)
+            if observed is UNREADABLE and self._learn_display(name, executed[: first + 1]):
+                pass  # read again and plan again with the repaired display rules
+            else:
+                self.repair_value(name, predicted, observed, executed, first)
         outside = self.goal()[1]  # a repair may have taught the belief the goal value
         self._look_at(outside)
         return False
 
     def _wrong_setting(self, done: Executed) -> bool:
-        """The press brought up another setting than the belief's step adjusts."""
-        if done.variable is None or done.surprises.get(done.variable, (None, 0))[1] is not None:
+        """The press brought up another setting than the belief's step adjusts (or left the
+        display as it was: a key ignored without a sign)."""
+        if done.variable is None:
             return False
-        shown = set(done.estimate.values if done.estimate else ()) | set(
-            done.estimate.outside if done.estimate else ()
-        )
-        return bool(shown - set(self.belief.model.display.indicators) - {done.variable})
+        seen = done.seen or Seen()
+        if not seen.showing(done.variable) and not seen.unknown:
+            return True
+        if done.surprises.get(done.variable, (None, 0))[1] is not None:
+            return False
+        if done.unchanged:
+            return True
+        shown = seen.shown()
+        return bool(shown - set(self.session.belief.model.display.indicators) - {done.variable})
+
+    def _learn_display(self, name: str, executed: list[Executed]) -> bool:
+        """The display showed text the belief cannot read where it expected ``name``: learn
+        how the display prints it from the texts of the presses that adjusted it."""
+        shown = [e for e in executed if e.variable == name and e.seen is not None]
+        unread = [e for e in shown if e.seen is not None and e.seen.unknown]
+        if not unread:
+            return False
+        texts = [e.feedback.text for e in unread]
+        if not self.displays.learn(name, texts, believed=unread[-1].predicted):
+            return False
+        value = self.displays.read(name, unread[-1].feedback.text)
+        if value is not None:
+            self.session.belief.set_value(name, value)
+        self.session.reread()
+        return True
 
     def _look_at(self, outside: dict[str, Any]) -> bool:
         focused = {
             name: raw
             for name, raw in outside.items()
-            if self.shown(name) is not MISSING and name not in self.explored
+            if self.session.shown(name) is not MISSING and name not in self.session.explored
         }
         if focused:
             self.explore_outside(focused)
@@ -294,7 +352,8 @@ class _Run(Exploring, Procedures, Greedy):
         self, name: str, predicted: Any, observed: Any, executed: list[Executed], upto: int
     ) -> None:
         """The display showed ``observed`` for ``name`` where the belief predicted otherwise."""
-        self.trouble(
+        self.session.again(
+            "value",
             name,
             f"{name} keeps showing values the model does not predict (last: "
             f"{observed!r}, expected {predicted!r})",
@@ -305,28 +364,37 @@ class _Run(Exploring, Procedures, Greedy):
         last = adjusting[-1]
         assert last.pointer is not None
         unchanged = observed == self.values_before.get(name)
-        if unchanged and self.absorbed(adjusting[0]):
+        first = next((e for e in executed[: upto + 1] if e.surprises), None)
+        if (
+            first is not None
+            and first.variable == name
+            and self.explorer.learn_on_entry(name, first)
+        ):
             return
-        effect = self.effect(last.pointer, last.action.name)
-        if self.stepping(last.pointer, last.action.name):
-            self.explore(name, last, self.history(name, last, executed))
+        if unchanged and self.procedures.absorbed(adjusting[0]):
+            return
+        effect = self.session.effect(last.pointer, last.action.name)
+        if self.session.stepping(last.pointer, last.action.name):
+            self.explorer.explore(name, last, self.explorer.history(name, last, executed))
         elif isinstance(effect, GoTo) and observed is not None and not unchanged:
-            self.learn_goto(name, last, observed)
+            self.explorer.learn_goto(name, last, observed)
         elif effect == "digit" and observed is not None:
+            if self.explorer.learn_entry_format(name, last, observed, unchanged):
+                return
             shown = [e.observed(name) for e in executed[upto:]]
-            self.widen(name, [observed, *(v for v in shown if v not in (MISSING, None))])
+            self.explorer.widen(name, [observed, *(v for v in shown if v not in (MISSING, None))])
             self.settle_contradictions({name: None})
 
     def settle_contradictions(self, names: dict[str, Any]) -> bool:
         """A setting last shown with a value the belief cannot hold must not count as done:
         a keypad setting learns the value (True: plan again); otherwise the run gives up."""
         settled = False
-        for name in [n for n in self.contradicted if n in names]:
-            value = self.contradicted.pop(name)
-            spec = self.belief.model.variables[name]
+        for name in [n for n in self.session.contradicted if n in names]:
+            value = self.session.contradicted.pop(name)
+            spec = self.session.belief.model.variables[name]
             if getattr(spec, "entry", None) is not None:
-                self.widen(name, [value])
-                if self.belief.set_value(name, value):
+                self.explorer.widen(name, [value])
+                if self.session.belief.set_value(name, value):
                     settled = True
                     continue
             raise Stop(f"the display showed {name}={value!r}, which the belief cannot hold")
@@ -336,18 +404,20 @@ class _Run(Exploring, Procedures, Greedy):
         """Look at a variable whose goal value the belief lacks: explore it, or for a keypad
         setting, allow the value and let the next check say whether it exists."""
         for name, raw in outside.items():
-            spec = self.belief.model.variables[name]
+            spec = self.session.belief.model.variables[name]
             if getattr(spec, "entry", None) is not None:
-                self.explored.add(name)
+                self.session.explored.add(name)
                 value = loose(spec, raw)
                 if value is not None:
-                    self.widen(name, [value])
+                    self.explorer.widen(name, [value])
                 continue
-            key = self.stepping_key(name)
+            key = self.explorer.stepping_key(name)
             if key is not None:
-                self.explore(name, key)
-            elif self.step_variable(self.belief.pointer()) == name:
-                self.explored.add(name)  # its setting is up, and no key walks it: seen it all
+                self.explorer.explore(name, key)
+            elif self.session.step_variable(self.session.belief.pointer()) == name:
+                self.session.explored.add(
+                    name
+                )  # its setting is up, and no key walks it: seen it all
 
 
 def _outside_text(outside: dict[str, Any]) -> str:
@@ -358,4 +428,4 @@ def _outside_text(outside: dict[str, Any]) -> str:
 
 def run_agent(config: AgentConfig, context: TaskContext, env: Environment) -> Episode:
     """One episode of ApBot (or an ablation of it) on ``env``."""
-    return _Run(config, context, env).run()
+    return ClosedLoop(config, context, env).run()

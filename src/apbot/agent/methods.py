@@ -2,38 +2,44 @@
 
 from __future__ import annotations
 
-from apbot.agent.environment import Environment
+from apbot.agent.environment import Environment, Feedback
 from apbot.agent.episode import Episode, TaskContext
 from apbot.agent.loop import AgentConfig, run_agent
 from apbot.agent.registry import Method, RunFunction, register
-from apbot.model.goal import GoalError, parse_goal
-from apbot.plan.plan import Unreachable, plan
+from apbot.bench.oracle import run_oracle_plan
+from apbot.model.goal import GoalError
+from apbot.plan.plan import MacroAction, PlannedAction, Unreachable
 
 
 def run_oracle(context: TaskContext, env: Environment) -> Episode:
-    """Plan once on the (true) model and press every action: the upper bound SPL measures by."""
+    """Plan once on the (true) model and press every action: the upper bound SPL measures by.
+
+    The plan and the presses are the benchmark's one oracle (``apbot.bench.oracle``); this
+    method only keeps the trace.
+    """
     episode = context.episode()
-    env.reset()
+
+    def on_macro(macro: MacroAction) -> None:
+        episode.reasoning_steps += 1
+        episode.log("macro", macro.feature, expected=dict(macro.expect))
+
+    def on_action(action: PlannedAction, feedback: Feedback) -> None:
+        episode.execution_steps += 1
+        episode.log(
+            "action",
+            action=action.name,
+            display=feedback.text,
+            values=feedback.values,
+            accepted=feedback.accepted,
+        )
+
     try:
-        goal = parse_goal(context.belief, context.goal)
-        found = plan(context.belief, None, goal)
+        run_oracle_plan(context.belief, context.goal, env, on_macro, on_action)
     except (GoalError, Unreachable) as exc:
+        env.reset()
         episode.failure = str(exc)
         episode.log("stop", episode.failure)
         return episode
-    for macro in found.macro_actions:
-        episode.reasoning_steps += 1
-        episode.log("macro", macro.feature, expected=dict(macro.expect))
-        for action in macro.actions:
-            feedback = env.step(action.name, action.seconds)
-            episode.execution_steps += 1
-            episode.log(
-                "action",
-                action=action.name,
-                display=feedback.text,
-                values=feedback.values,
-                accepted=feedback.accepted,
-            )
     episode.claimed_success = True
     episode.log("stop", "plan executed")
     return episode

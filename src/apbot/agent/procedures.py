@@ -1,4 +1,4 @@
-"""Repairing a procedure: a step the belief's feature lacks or has in the wrong place.
+"""The procedure repairer: a step the belief's feature lacks or has in the wrong place.
 
 Values are learnt by walking them; steps are learnt by probing. When the appliance refuses
 a key the belief expected to work, or a setting the belief cannot reach at all, the agent
@@ -11,21 +11,27 @@ from __future__ import annotations
 
 from typing import Any
 
-from apbot.agent.core import MISSING, Core, Executed, Stop
+from apbot.agent.guards import GuardLearner
 from apbot.agent.repair import RepairError, insert_step
-from apbot.plan.plan import Unreachable, plan
+from apbot.agent.session import MISSING, Executed, Session, Stop
 
 
-class Procedures(Core):
-    """Find and insert missing steps; explain refusals by the belief's guards."""
+class ProcedureRepairer:
+    """Find and insert missing steps (a guard that explains the trouble comes first)."""
+
+    def __init__(self, session: Session, guards: GuardLearner) -> None:
+        self.session = session
+        self.guards = guards
 
     def repair_procedure(self, executed: list[Executed]) -> None:
         """A key the belief expected to work was refused, or brought up another setting:
         explain it by a guard, or find the step in front of it that the belief misses."""
         refused = [e for e in executed if e.refused]
-        if refused and self.explain_refusal(refused[0]):
+        if refused and self.guards.explain(refused[0]):
             return
         failing = refused or [e for e in executed if e.variable is not None]
+        if failing and self.guards.learn(failing[0]):
+            return
         if not failing or failing[0].pointer is None:
             raise Stop(
                 "the appliance does not respond as the model predicts, and the "
@@ -35,71 +41,44 @@ class Procedures(Core):
         assert first.pointer is not None
         feature, index = first.pointer
         name = first.variable
-        self.trouble(f"procedure:{feature}", f"{first.action.name} keeps failing in {feature}")
-        step = self.belief.model.features[feature][index]
-        idle = [a for a in step.actions if self.effect(first.pointer, a) == "none"]
+        self.session.again("procedure", feature, f"{first.action.name} keeps failing in {feature}")
+        step = self.session.belief.model.features[feature][index]
+        idle = [a for a in step.actions if self.session.effect(first.pointer, a) == "none"]
         others = [
             a
-            for s in self.belief.model.features[feature]
+            for s in self.session.belief.model.features[feature]
             for a in s.actions
             if a not in step.actions
         ]
         for candidate in dict.fromkeys(self.orphans() + idle + others):
             if candidate == first.action.name:
                 continue
-            probe = self.press(self.planned(candidate), exploring=True)
+            probe = self.session.press(self.session.planned(candidate), exploring=True)
             if not probe.feedback.accepted:
                 continue
-            after = self.press(first.action, exploring=True)
+            after = self.session.press(first.action, exploring=True)
             if after.feedback.accepted and name is not None and after.observed(name) is not MISSING:
                 try:
-                    new = insert_step(self.belief.model, feature, index, [candidate])
+                    new = insert_step(self.session.belief.model, feature, index, [candidate])
                 except RepairError as exc:
-                    self.episode.log("repair", f"could not add a step: {exc}")
+                    self.session.episode.log("repair", f"could not add a step: {exc}")
                     continue
-                self.adopt(
+                self.session.adopt(
                     new,
                     f"{feature} starts with {candidate} before {first.action.name}",
                     (feature, index + 1),
                 )
                 return
-        self.forget_pointer()
-
-    def explain_refusal(self, refused: Executed) -> bool:
-        """A refusal whose display is one of the belief's guard messages: believe that guard
-        holds (the knob is at OFF, the lock is on) and let the planner lift it."""
-        compiled = self.belief.compiled
-        action = compiled.action_index.get(refused.action.name)
-        text = refused.feedback.text.strip()
-        for guard in compiled.guards:
-            if action in guard.allowed or not guard.display or guard.display.strip() != text:
-                continue
-            if all(self.belief.state.values[v] in ok for v, ok in guard.conditions):
-                return False  # the belief already knew: something else is wrong
-            key = f"guard:{guard.name or guard.display}"
-            if self.counts[key]:
-                return False
-            self.counts[key] += 1
-            for v, ok in guard.conditions:
-                domain = compiled.vars[v].domain(self.belief.state.values)
-                if domain is not None:
-                    self.belief.set_value(compiled.vars[v].name, domain.values[min(ok)])
-            self.episode.log(
-                "repair", f"refused with {text!r}: the appliance must be in '{guard.name or text}'"
-            )
-            return True
-        return False
+        self.session.forget_pointer()
 
     def recover_unreachable(self, blocked: dict[str, Any]) -> bool:
         """The belief cannot bring these goal variables up: probe for the key that does."""
         for name in blocked:
-            key = f"unreachable:{name}"
-            if self.counts[key]:
+            if not self.session.budget.once("unreachable", name):
                 continue
-            self.counts[key] += 1
             features = [
                 f
-                for f, steps in self.belief.model.features.items()
+                for f, steps in self.session.belief.model.features.items()
                 if any(s.variable == name for s in steps)
             ]
             if self._first_step_from_orphans(name, features):
@@ -110,16 +89,16 @@ class Procedures(Core):
 
     def _first_step_from_orphans(self, name: str, features: list[str]) -> bool:
         for candidate in self.orphans():
-            self.lift_guards(candidate)
-            probe = self.press(self.planned(candidate), exploring=True)
+            self.guards.lift(candidate)
+            probe = self.session.press(self.session.planned(candidate), exploring=True)
             if not probe.feedback.accepted or probe.observed(name) is MISSING:
                 continue
             for feature in features:
                 try:
-                    new = insert_step(self.belief.model, feature, 0, [candidate])
+                    new = insert_step(self.session.belief.model, feature, 0, [candidate])
                 except RepairError:
                     continue
-                self.adopt(new, f"{feature} starts with {candidate}", (feature, 0))
+                self.session.adopt(new, f"{feature} starts with {candidate}", (feature, 0))
                 return True
         return False
 
@@ -127,7 +106,7 @@ class Procedures(Core):
         """A step of ``feature`` that can never be entered because it shares its keys with
         the step before it: walk the procedure up to that step, then try the procedure's other
         keys for the one that brings ``name`` up (a SET press between hours and minutes)."""
-        steps = self.belief.model.features[feature]
+        steps = self.session.belief.model.features[feature]
         index = next((i for i, s in enumerate(steps) if s.variable == name), None)
         if (
             index is None
@@ -139,24 +118,26 @@ class Procedures(Core):
         others = [a for s in steps for a in s.actions if a not in inside]
         for candidate in dict.fromkeys(others):
             # from the step before (where the plan left off), else through the procedure
-            if self.belief.pointer() != (feature, index - 1):
+            if self.session.belief.pointer() != (feature, index - 1):
                 self.enter_step(feature, index)
-            probe = self.press(self.planned(candidate), exploring=True)
+            probe = self.session.press(self.session.planned(candidate), exploring=True)
             shown = probe.observed(name)
             if probe.feedback.accepted and shown is not MISSING:
                 # confirm: the setting's own key must now change it
-                turn = self.press(self.planned(steps[index].actions[0]), exploring=True)
+                turn = self.session.press(
+                    self.session.planned(steps[index].actions[0]), exploring=True
+                )
                 if turn.observed(name) not in (MISSING, shown):
                     try:
-                        new = insert_step(self.belief.model, feature, index, [candidate])
+                        new = insert_step(self.session.belief.model, feature, index, [candidate])
                     except RepairError:
                         continue
-                    self.adopt(
+                    self.session.adopt(
                         new, f"{feature} needs {candidate} before {name}", (feature, index + 1)
                     )
-                    self.sync(self.estimate(self.last))
+                    self.session.reread()
                     return True
-            self.forget_pointer()
+            self.session.forget_pointer()
         return False
 
     def absorbed(self, entering: Executed) -> bool:
@@ -166,23 +147,21 @@ class Procedures(Core):
         before, after = entering.before, entering.pointer
         if before is None or after is None or before[0] == after[0]:
             return False
-        shown = set(entering.estimate.values if entering.estimate else ()) - set(
-            self.belief.model.display.indicators
+        shown = set(entering.seen.values if entering.seen else ()) - set(
+            self.session.belief.model.display.indicators
         )
-        staying = {s.variable for s in self.belief.model.features[before[0]]} - {None}
+        staying = {s.variable for s in self.session.belief.model.features[before[0]]} - {None}
         if entering.variable in staying | shown:
             return False  # the display shows the new setting: the key did start it
-        key = f"absorbed:{before[0]}:{entering.action.name}"
-        if self.counts[key]:
+        if not self.session.budget.once("absorbed", f"{before[0]}:{entering.action.name}"):
             return False
-        self.counts[key] += 1
         feature, index = before
         try:
-            new = insert_step(self.belief.model, feature, index + 1, [entering.action.name])
+            new = insert_step(self.session.belief.model, feature, index + 1, [entering.action.name])
         except RepairError as exc:
-            self.episode.log("repair", f"could not add a step to {feature}: {exc}")
+            self.session.episode.log("repair", f"could not add a step to {feature}: {exc}")
             return False
-        self.adopt(
+        self.session.adopt(
             new, f"{feature} takes {entering.action.name} as a further step", (feature, index + 1)
         )
         return True
@@ -190,48 +169,21 @@ class Procedures(Core):
     def enter_step(self, feature: str, index: int) -> None:
         """Go through ``feature`` up to (not into) step ``index``: lift any guard, then press
         the first key of each earlier step (exploration presses)."""
-        steps = self.belief.model.features[feature]
-        self.lift_guards(steps[0].actions[0])
+        steps = self.session.belief.model.features[feature]
+        self.guards.lift(steps[0].actions[0])
         for step in steps[:index]:
-            self.press(self.planned(step.actions[0]), exploring=True)
-
-    def lift_guards(self, action: str) -> None:
-        """Bring the appliance out of any guard that would refuse ``action`` (switch it on,
-        unlock it), so that a probe with ``action`` can tell something."""
-        compiled = self.belief.compiled
-        index = compiled.action_index[action]
-        for guard in compiled.guards:
-            holds = all(self.belief.state.values[v] in ok for v, ok in guard.conditions)
-            if index in guard.allowed or not holds:
-                continue
-            for v, ok in guard.conditions:
-                domain = compiled.vars[v].domain(self.belief.state.values)
-                others = [
-                    value for i, value in enumerate(domain.values if domain else ()) if i not in ok
-                ]
-                if not others:
-                    continue
-                try:
-                    found = plan(
-                        compiled,
-                        self.belief.state,
-                        {compiled.vars[v].name: others[0]},
-                        self.config.plan_budget,
-                    )
-                except Unreachable:
-                    continue
-                for planned in found.actions:
-                    self.press(planned, exploring=True)
-                break
+            self.session.press(self.session.planned(step.actions[0]), exploring=True)
 
     def orphans(self) -> list[str]:
         """Keys the appliance offers that no feature of the belief uses (at most eight)."""
         used = {
-            a for steps in self.belief.model.features.values() for s in steps for a in s.actions
+            a
+            for steps in self.session.belief.model.features.values()
+            for s in steps
+            for a in s.actions
         }
-        return [a for a in self.belief.model.actions if a not in used and a in self.offered][:8]
-
-    def forget_pointer(self) -> None:
-        """After presses the belief cannot follow, assume no procedure is in progress."""
-        self.belief.set_pointer(None)
-        self.sync(self.estimate(self.last))
+        return [
+            a
+            for a in self.session.belief.model.actions
+            if a not in used and a in self.session.offered
+        ][:8]

@@ -40,6 +40,14 @@ def register(method: Method) -> Method:
     return method
 
 
+def unregister(name: str) -> Method:
+    """Remove a method registered with :func:`register` (tests that add fakes clean up, so
+    no other test, nor a default ``--methods``, ever runs them)."""
+    if name not in _METHODS:
+        raise KeyError(f"method {name!r} is not registered")
+    return _METHODS.pop(name)
+
+
 def methods() -> dict[str, Method]:
     """Every registered method, by name (importing the built-in ones first)."""
     import apbot.agent.methods  # noqa: F401  (registers the built-in methods)

@@ -130,3 +130,54 @@ def insert_step(
         before, {"actions": list(actions), "note": "learnt from feedback"}
     )
     return _rebuild(data)
+
+
+def set_entry_format(model: ApplianceModel, name: str, fmt: str) -> ApplianceModel:
+    """Read a keypad variable's typed digits in another format (``mm:ss`` for ``minutes``)."""
+    data = _dump(model)
+    data["variables"][name].setdefault("entry", {})["format"] = fmt
+    return _rebuild(data)
+
+
+def set_display(model: ApplianceModel, name: str, template: str) -> ApplianceModel:
+    """Print a variable through another template: as its label when the template is the usual
+    "LABEL {value}", else as its ``show`` template (``"PL{value}"``)."""
+    data = _dump(model)
+    var = data["variables"][name]
+    label, _, rest = template.partition(" ")
+    if rest == "{value}" and "{" not in label and not isinstance(var.get("show"), dict):
+        var["label"] = label
+        var.pop("show", None)
+    else:
+        var["show"] = template
+    return _rebuild(data)
+
+
+def set_on_entry(model: ApplianceModel, feature: str, step: int, on_entry: str) -> ApplianceModel:
+    """Say whether the press that enters a step applies its effect or only shows the value."""
+    data = _dump(model)
+    data["features"][feature][step]["on_entry"] = on_entry
+    return _rebuild(data)
+
+
+def disallow(model: ApplianceModel, guard: int, action: str) -> ApplianceModel:
+    """A guard does not let ``action`` through after all."""
+    data = _dump(model)
+    data["guards"][guard]["only"] = [a for a in data["guards"][guard]["only"] if a != action]
+    return _rebuild(data)
+
+
+def add_guard(
+    model: ApplianceModel,
+    when: dict[str, Any],
+    only: Sequence[str],
+    display: str = "",
+    hide: bool = False,
+) -> ApplianceModel:
+    """A guard the model lacked: while ``when`` holds, only ``only`` works."""
+    data = _dump(model)
+    guard: dict[str, Any] = {"name": "learnt", "when": when, "only": list(only), "display": display}
+    if hide:
+        guard["hide"] = True
+    data.setdefault("guards", []).append(guard)
+    return _rebuild(data)

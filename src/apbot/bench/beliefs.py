@@ -5,14 +5,17 @@ A run's belief is one string (stored in every record and in ``run.json``):
 - ``"true"`` — the ground-truth model, no faults;
 - ``"faulty:RATE"`` — the ground truth with faults injected at ``RATE`` (0 ≤ RATE ≤ 1), seeded by
   the run's seed and the appliance id, so every process builds the same faulty model;
+  ``"faulty:RATE:KIND,KIND"`` injects only those fault kinds (``apbot.bench.faults.FAULT_KINDS``);
 - ``"read"`` — a model read from the manual (not available yet: the reader lands later).
 
 The string is parsed once up front (:func:`parse_belief`) so a typo stops the run before any work.
 
 >>> parse_belief("faulty:0.30")
-BeliefSpec(kind='faulty', rate=0.3)
+BeliefSpec(kind='faulty', rate=0.3, kinds=())
 >>> str(parse_belief("faulty:0.30")), str(parse_belief("true"))
 ('faulty:0.3', 'true')
+>>> str(parse_belief("faulty:0.3:guard, entry_format"))
+'faulty:0.3:entry_format,guard'
 """
 
 from __future__ import annotations
@@ -24,7 +27,10 @@ from typing import Literal
 from apbot.bench.suite import SuiteAppliance
 from apbot.model.schema import ApplianceModel
 
-ACCEPTED_FORMS = "'true' or 'faulty:RATE' with 0 ≤ RATE ≤ 1 (e.g. 'faulty:0.2')"
+ACCEPTED_FORMS = (
+    "'true', 'faulty:RATE' with 0 ≤ RATE ≤ 1 (e.g. 'faulty:0.2') or 'faulty:RATE:KIND,...' "
+    "(e.g. 'faulty:0.3:guard')"
+)
 
 
 class BeliefError(ValueError):
@@ -37,9 +43,12 @@ class BeliefSpec:
 
     kind: Literal["true", "faulty", "read"]
     rate: float = 0.0
+    kinds: tuple[str, ...] = ()  # fault kinds to inject (empty: every kind)
 
     def __str__(self) -> str:
-        return f"faulty:{self.rate:g}" if self.kind == "faulty" else self.kind
+        if self.kind != "faulty":
+            return self.kind
+        return f"faulty:{self.rate:g}" + (f":{','.join(self.kinds)}" if self.kinds else "")
 
 
 def parse_belief(spec: str) -> BeliefSpec:
@@ -59,7 +68,8 @@ def parse_belief(spec: str) -> BeliefSpec:
             "the manual reader lands with the reading issue; use 'true' or "
             "'faulty:RATE'"
         )
-    kind, sep, rate_text = text.partition(":")
+    kind, sep, rest = text.partition(":")
+    rate_text, _, kinds_text = rest.partition(":")
     if kind == "faulty" and sep:
         try:
             rate = float(rate_text)
@@ -69,8 +79,26 @@ def parse_belief(spec: str) -> BeliefSpec:
             ) from None
         if not math.isfinite(rate) or not 0.0 <= rate <= 1.0:
             raise BeliefError(f"belief {spec!r}: the rate must be between 0 and 1")
-        return BeliefSpec("faulty", rate)
+        return BeliefSpec("faulty", rate, _fault_kinds(spec, kinds_text))
     raise BeliefError(f"unknown belief {spec!r}; accepted: {ACCEPTED_FORMS}")
+
+
+def _fault_kinds(spec: str, text: str) -> tuple[str, ...]:
+    """The kinds named after the rate, in the canonical order (``FAULT_KINDS``)."""
+    named = [part.strip() for part in text.split(",") if part.strip()]
+    if not named:
+        if text.strip() or spec.strip().endswith(":"):
+            raise BeliefError(f"belief {spec!r}: name at least one fault kind after the rate")
+        return ()
+    from apbot.bench.faults import FAULT_KINDS
+
+    unknown = [k for k in named if k not in FAULT_KINDS]
+    if unknown:
+        raise BeliefError(
+            f"belief {spec!r}: unknown fault kind(s) {', '.join(unknown)}; "
+            f"known: {', '.join(FAULT_KINDS)}"
+        )
+    return tuple(k for k in FAULT_KINDS if k in named)
 
 
 def belief_model(
@@ -87,6 +115,8 @@ def belief_model(
     if spec.kind == "faulty":
         from apbot.bench.faults import inject_faults  # written alongside; imported on use
 
-        model, faults = inject_faults(appliance.model, spec.rate, seed=f"{seed}/{appliance.id}")
+        model, faults = inject_faults(
+            appliance.model, spec.rate, seed=f"{seed}/{appliance.id}", kinds=spec.kinds or None
+        )
         return model, [str(fault) for fault in faults]
     raise BeliefError(f"belief {str(spec)!r} cannot be built yet")

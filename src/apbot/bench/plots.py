@@ -1,8 +1,9 @@
-"""The report's figures, drawn with matplotlib's object API and rendered to PNG bytes.
+"""The report's figures, drawn with matplotlib's object API and rendered to SVG (or PNG) bytes.
 
 Figures are built on :class:`matplotlib.figure.Figure` directly (no ``pyplot``), so nothing
-touches a display or global figure state: the Agg canvas renders them anywhere. PNG metadata
-is fixed so the same inputs give byte-identical files.
+touches a display or global figure state: the canvases render them anywhere. The report uses
+SVG with the text kept as text: smaller than a PNG of the same figure, and sharp at any zoom.
+Metadata (and SVG's element ids) are fixed so the same inputs give byte-identical files.
 """
 
 from __future__ import annotations
@@ -10,9 +11,12 @@ from __future__ import annotations
 import io
 import math
 from collections.abc import Mapping, Sequence
+from typing import Any
 
+import matplotlib
 from matplotlib.axes import Axes
 from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.backends.backend_svg import FigureCanvasSVG
 from matplotlib.colors import LogNorm
 from matplotlib.figure import Figure
 
@@ -33,6 +37,26 @@ def png_bytes(figure: Figure) -> bytes:
         pad_inches=0.1,
         metadata={"Software": None},
     )
+    return buffer.getvalue()
+
+
+def svg_bytes(figure: Figure) -> bytes:
+    """The figure as SVG: text as ``<text>`` (not paths), no date, ids from a fixed salt."""
+    FigureCanvasSVG(figure)
+    buffer = io.BytesIO()
+    settings: dict[Any, Any] = {  # matplotlib's own font, named in the SVG before sans-serif
+        "svg.fonttype": "none",
+        "svg.hashsalt": "apbot-report",
+        "font.sans-serif": ["DejaVu Sans"],
+    }
+    with matplotlib.rc_context(settings):
+        figure.savefig(
+            buffer,
+            format="svg",
+            bbox_inches="tight",
+            pad_inches=0.1,
+            metadata={"Date": None, "Creator": None},
+        )
     return buffer.getvalue()
 
 
@@ -128,21 +152,35 @@ def pvalue_figure(methods: Sequence[str], pvalues: Mapping[str, Mapping[str, flo
 def goal_variables_figure(
     methods: Sequence[str], by_count: Mapping[str, Mapping[str, Mapping[str, float]]]
 ) -> Figure:
-    """Success rate against the number of variables a task sets, one line per method."""
-    figure = Figure(figsize=(5.5, 3.5), layout="constrained")
-    ax = figure.subplots()
+    """Success rate against the number of variables a task sets: one small panel per method on
+    shared axes, the other methods faint behind it. Methods with the same results (the oracle
+    and ApBot on the true model) drew on top of each other in one panel; here none can hide."""
+    columns = max(1, min(len(methods), 4))
+    rows = max(1, math.ceil(len(methods) / columns))
+    figure = Figure(figsize=(0.4 + 2.5 * columns, 0.5 + 2.2 * rows), layout="constrained")
+    axes = figure.subplots(rows, columns, sharex=True, sharey=True, squeeze=False).flat
     counts = sorted({int(k) for m in methods for k in by_count.get(m, {})})
-    for index, method in enumerate(methods):
+
+    def series(method: str) -> tuple[list[int], list[float]]:
         points = by_count.get(method, {})
         xs = [c for c in counts if str(c) in points]
-        ax.plot(xs, [points[str(c)]["sr"] for c in xs], label=method, **_line_style(index))
-    ax.set_xticks(counts)
-    ax.set_xlabel("goal variables per task")
-    ax.set_ylabel("success rate")
-    ax.set_ylim(-0.03, 1.05)
-    ax.grid(alpha=0.3)
-    if methods:
-        ax.legend(fontsize=8)
+        return xs, [points[str(c)]["sr"] for c in xs]
+
+    for index, ax in enumerate(axes):
+        if index >= len(methods):
+            ax.set_visible(False)
+            continue
+        for other in methods:
+            if other != methods[index]:
+                ax.plot(*series(other), color="0.8", linewidth=1, zorder=1)
+        ax.plot(*series(methods[index]), color=f"C{index % 10}", marker="o", markersize=5, zorder=3)
+        ax.set_title(methods[index], fontsize=9)
+        ax.set_xticks(counts)
+        ax.set_ylim(-0.03, 1.05)
+        ax.grid(alpha=0.3)
+        ax.tick_params(labelsize=8)
+    figure.supxlabel("goal variables per task", fontsize=9)
+    figure.supylabel("success rate", fontsize=9)
     return figure
 
 

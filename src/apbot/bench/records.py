@@ -24,6 +24,9 @@ class TaskRecord(BaseModel):
     key: str
     method: str
     belief: str = Field(description="'true', 'faulty:RATE' (seeded) or 'read'")
+    feedback: str = Field(
+        default="values", description="what the agent perceived: 'display' or 'values'"
+    )
     appliance: str
     category: str
     task: str

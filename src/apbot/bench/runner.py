@@ -2,48 +2,44 @@
 
 Every finished (method, task) is appended to ``results.jsonl`` in the run directory at once,
 so a run killed at any moment resumes where it stopped (finished keys are skipped) and ends
-with the same records as an uninterrupted run. ``run.json`` pins the suite, belief and seed of
-a directory: mixing runs with different ones would make the records' keys ambiguous.
+with the same records as an uninterrupted run. The directory itself (``run.json``, the lock)
+is :mod:`apbot.bench.rundir`'s; stopping on a signal is :mod:`apbot.bench.stopping`'s.
 
-Work runs in worker processes (``workers=1``: in this process), sent in small batches because
-one task often takes less time than shipping it; only the main process writes files.
+Work runs in worker processes (``workers=1``: in this process) that die with the main process
+(:mod:`apbot.bench.workers`), sent in small batches because one task often takes less time
+than shipping it; only the main process writes files.
 """
 
 from __future__ import annotations
 
-import json
 import os
-import signal
-import sys
 import time
 from collections import deque
 from collections.abc import Callable, Iterator
-from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
-from contextlib import contextmanager
+from concurrent.futures import FIRST_COMPLETED, Future, wait
+from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
-from datetime import UTC, datetime
 from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
-from apbot.agent.environment import SimulatorEnvironment
+from apbot.agent.environment import FeedbackMode, SimulatorEnvironment
 from apbot.agent.episode import MAX_REASONING_STEPS, Episode, TaskContext, TraceEvent
 from apbot.agent.registry import get_method, methods
 from apbot.bench.beliefs import BeliefError, BeliefSpec, belief_model, parse_belief
 from apbot.bench.metrics import summarise
+from apbot.bench.progress import progress as show_progress
+from apbot.bench.provenance import code_version, suite_digest
 from apbot.bench.records import TaskRecord, record_key, spl
-from apbot.bench.results import RESULTS_FILE, ResultStore
+from apbot.bench.results import RESULTS_FILE, ResultStore, describe_recovery
+from apbot.bench.rundir import BenchError, exclusive, prepare, run_directory, write_json
+from apbot.bench.stopping import WORKER_DIED, Stop, handling_signals
 from apbot.bench.suite import Suite, SuiteAppliance, Task, load_suite
+from apbot.bench.workers import worker_pool
 from apbot.model.goal import parse_goal
 from apbot.model.schema import ApplianceModel
 
-RUN_FILE = "run.json"
 SUMMARY_FILE = "summary.json"
-PINNED = ("suite", "belief", "seed")  # what a run directory cannot mix
-
-
-class BenchError(ValueError):
-    """A benchmark that cannot start as asked; the message says what to change."""
 
 
 def _default_methods() -> list[str]:
@@ -60,15 +56,21 @@ class BenchOptions:
     appliances: list[str] | None = None
     sample: int | None = None
     workers: int = field(default_factory=lambda: os.cpu_count() or 1)
-    out: Path = Path("runs/latest")
+    out: Path | str = Path("runs/latest")
     belief: str = "true"
     seed: int = 0
     rerun: bool = False
+    feedback: FeedbackMode = "display"
 
 
 @dataclass
 class BenchOutcome:
-    """The records of the selected work (finished so far), the summary written, and counts."""
+    """The records of the selected work (finished so far), the summary written, and counts.
+
+    ``interrupted``: the run stopped early (``stopped_by`` says why: "SIGINT", "SIGTERM" or a
+    worker's death) and ``exit_code`` is what the command line exits with. ``notes``: what
+    the run warned about (bad lines of the results file it quarantined).
+    """
 
     records: list[TaskRecord]
     summary: dict[str, Any]
@@ -76,6 +78,9 @@ class BenchOutcome:
     interrupted: bool
     ran: int
     skipped: int
+    stopped_by: str = ""
+    exit_code: int = 0
+    notes: list[str] = field(default_factory=list)  # warnings given during the run
 
 
 @dataclass(frozen=True)
@@ -128,7 +133,13 @@ def _describe(exc: BaseException) -> str:
 
 
 def run_one(
-    method: str, belief: str, seed: int, appliance_id: str, task_id: str, suite: str
+    method: str,
+    belief: str,
+    seed: int,
+    appliance_id: str,
+    task_id: str,
+    suite: str,
+    feedback: FeedbackMode = "display",
 ) -> TaskRecord:
     """Run one method on one task and judge the result on the true simulator.
 
@@ -144,6 +155,7 @@ def run_one(
         belief,
         seed,
         belief_of=lambda spec: _belief(suite, appliance.id, spec, seed),
+        feedback=feedback,
     )
 
 
@@ -155,6 +167,7 @@ def run_task(
     seed: int = 0,
     observer: Callable[[TraceEvent], None] | None = None,
     belief_of: Callable[[BeliefSpec], tuple[ApplianceModel, Any]] | None = None,
+    feedback: FeedbackMode = "display",
 ) -> TaskRecord:
     """:func:`run_one` on objects: also for a task that is not in a suite (``apbot run``).
 
@@ -175,8 +188,9 @@ def run_task(
     started = time.perf_counter()
     spec = parse_belief(belief)
     chosen = get_method(method)
-    env = SimulatorEnvironment(appliance.model)
-    episode, faults, error = Episode(), (), ""
+    env = SimulatorEnvironment(appliance.model, feedback)
+    episode, error = Episode(), ""
+    faults: tuple[str, ...] | list[str] = ()
     context: TaskContext | None = None
     try:
         if chosen.uses_truth:
@@ -216,6 +230,7 @@ def run_task(
         key=record_key(method, str(spec), appliance.id, task.id),
         method=method,
         belief=str(spec),
+        feedback=feedback,
         appliance=appliance.id,
         category=appliance.category,
         task=task.id,
@@ -258,13 +273,10 @@ def _failure(
     return "; ".join(parts)
 
 
-def _run_batch(items: list[WorkItem], belief: str, seed: int, suite: str) -> list[TaskRecord]:
-    return [run_one(i.method, belief, seed, i.appliance, i.task, suite) for i in items]
-
-
-def _worker_init() -> None:
-    """Workers leave Ctrl-C to the main process, which stops them cleanly."""
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
+def _run_batch(
+    items: list[WorkItem], belief: str, seed: int, suite: str, feedback: FeedbackMode
+) -> list[TaskRecord]:
+    return [run_one(i.method, belief, seed, i.appliance, i.task, suite, feedback) for i in items]
 
 
 # --- selecting the work -----------------------------------------------------------------------
@@ -326,101 +338,6 @@ def select_work(options: BenchOptions, suite: Suite) -> list[WorkItem]:
     ]
 
 
-# --- the run directory ------------------------------------------------------------------------
-
-
-def _now() -> str:
-    return datetime.now(UTC).isoformat(timespec="seconds")
-
-
-def _prepare_directory(options: BenchOptions, spec: BeliefSpec, work: list[WorkItem]) -> None:
-    """Write ``run.json``; refuse to mix another suite, belief or seed into the directory."""
-    out = options.out
-    run_file = out / RUN_FILE
-    wanted = {"suite": str(options.suite), "belief": str(spec), "seed": options.seed}
-    previous: dict[str, Any] = {}
-    if run_file.exists() and not options.rerun:
-        try:
-            previous = json.loads(run_file.read_text(encoding="utf-8"))
-        except (OSError, ValueError) as exc:
-            raise BenchError(
-                f"{run_file} cannot be read ({exc}); use --rerun or another --out"
-            ) from None
-        differ = [
-            f"{k} {previous.get(k)!r} (asked: {wanted[k]!r})"
-            for k in PINNED
-            if previous.get(k) != wanted[k]
-        ]
-        if differ:
-            raise BenchError(
-                f"{out} holds a run with {'; '.join(differ)}; use another --out, "
-                "or --rerun to discard its results"
-            )
-    elif (out / RESULTS_FILE).exists() and not options.rerun:
-        raise BenchError(
-            f"{out} has {RESULTS_FILE} but no {RUN_FILE}, so its suite, belief "
-            "and seed are unknown; use another --out, or --rerun to discard it"
-        )
-    out.mkdir(parents=True, exist_ok=True)
-    info = {
-        **wanted,
-        "methods": list(dict.fromkeys(options.methods)),
-        "selection": {
-            "categories": options.categories,
-            "appliances": options.appliances,
-            "sample": options.sample,
-        },
-        "tasks": len(work),
-        "started": previous.get("started", _now()),
-        "updated": _now(),
-    }
-    _write_json(run_file, info)
-
-
-def _write_json(path: Path, data: Any) -> None:
-    """Write JSON atomically (a reader never sees half a file)."""
-    temporary = path.with_name(path.name + ".tmp")
-    temporary.write_text(
-        json.dumps(data, indent=2, sort_keys=True, ensure_ascii=False) + "\n", encoding="utf-8"
-    )
-    os.replace(temporary, path)
-
-
-# --- Ctrl-C -----------------------------------------------------------------------------------
-
-
-class _Stop:
-    """Ctrl-C once: finish the running tasks, start no more. Twice: abandon them too."""
-
-    def __init__(self, in_process: bool) -> None:
-        self.requested = False
-        self.hard = False
-        self.in_process = in_process
-        self.notice: Callable[[str], None] = lambda message: None
-
-    def __call__(self, signum: int, frame: Any) -> None:
-        if self.requested:
-            self.hard = True
-            if self.in_process:
-                raise KeyboardInterrupt
-            return
-        self.requested = True
-        self.notice("stopping: finishing the running tasks (Ctrl-C again to abandon them)")
-
-
-@contextmanager
-def _sigint(stop: _Stop) -> Iterator[None]:
-    try:
-        previous = signal.signal(signal.SIGINT, stop)
-    except ValueError:  # not the main thread: leave Ctrl-C alone
-        yield
-        return
-    try:
-        yield
-    finally:
-        signal.signal(signal.SIGINT, previous)
-
-
 # --- the run ----------------------------------------------------------------------------------
 
 
@@ -433,34 +350,15 @@ def _batches(items: list[WorkItem], workers: int) -> list[list[WorkItem]]:
 def run_benchmark(options: BenchOptions, progress: bool = True) -> BenchOutcome:
     """Run the selected work into ``options.out``, skipping what is finished, and summarise.
 
-    Returns with ``interrupted=True`` after Ctrl-C, having kept every finished record. One
-    run at a time per directory: a second one would cut the first one's half-written line.
+    Returns with ``interrupted=True`` after Ctrl-C or SIGTERM (or when a worker process died),
+    having kept every finished record. One run at a time per directory: a second one would
+    cut the first one's half-written line.
     """
     return _run_benchmark(options, progress)
 
 
-@contextmanager
-def _exclusive(directory: Path) -> Iterator[None]:
-    """Hold an exclusive lock on the run directory (where the platform has ``fcntl``)."""
-    try:
-        import fcntl
-    except ImportError:  # pragma: no cover - not POSIX
-        yield
-        return
-    with (directory / ".lock").open("w") as handle:
-        try:
-            fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
-        except OSError:
-            raise BenchError(
-                f"another `apbot bench` is writing to {directory}; wait for it or use another --out"
-            ) from None
-        try:
-            yield
-        finally:
-            fcntl.flock(handle, fcntl.LOCK_UN)
-
-
 def _run_benchmark(options: BenchOptions, progress: bool) -> BenchOutcome:
+    out = run_directory(options.out)
     spec = parse_belief(options.belief)
     if spec.kind == "faulty":
         try:
@@ -476,126 +374,127 @@ def _run_benchmark(options: BenchOptions, progress: bool) -> BenchOutcome:
     except FileNotFoundError as exc:
         raise BenchError(str(exc)) from None
     work = select_work(options, suite)
-    _prepare_directory(options, spec, work)
-    with _exclusive(options.out):
-        store = ResultStore(options.out / RESULTS_FILE)
+    prepare(
+        out,
+        {
+            "suite": str(options.suite),
+            "belief": str(spec),
+            "seed": options.seed,
+            "feedback": options.feedback,
+        },
+        {"code": code_version(), "suite_digest": suite_digest(suite)},
+        {
+            "methods": list(dict.fromkeys(options.methods)),
+            "selection": {
+                "categories": options.categories,
+                "appliances": options.appliances,
+                "sample": options.sample,
+            },
+            "tasks": len(work),
+        },
+        options.rerun,
+        RESULTS_FILE,
+    )
+    with exclusive(out):
+        store = ResultStore(out / RESULTS_FILE)
         if options.rerun:
             store.clear()
-        finished = store.load()
+        recovered = store.recover()
+        notes = [note] if (note := describe_recovery(store, recovered)) else []
+        finished = recovered.records
         keys = {record_key(w.method, str(spec), w.appliance, w.task): w for w in work}
         pending = [w for k, w in keys.items() if k not in finished]
         done = [finished[k] for k in keys if k in finished]
 
         new: list[TaskRecord] = []
-        stop = _Stop(in_process=options.workers == 1 or len(pending) <= 1)
-        with _progress(progress, options.methods, done, work) as advance, _sigint(stop):
+        stop = Stop(in_process=options.workers == 1 or len(pending) <= 1)
+        per_method = {m: sum(w.method == m for w in work) for m in dict.fromkeys(options.methods)}
+        with (
+            show_progress(progress, options.methods, done, per_method) as advance,
+            handling_signals(stop),
+        ):
             stop.notice = advance.notice
+            for note in notes:
+                advance.notice(note)
             try:
                 for record in _execute(pending, str(spec), options, stop):
                     store.append(record)
                     new.append(record)
                     advance(record)
-            except KeyboardInterrupt:  # a second Ctrl-C between tasks, in this process
-                stop.requested = True
-        interrupted = stop.requested
+            except KeyboardInterrupt:  # a second signal between tasks, in this process
+                stop.request("SIGINT")
 
         everything = store.load()
         selected = sorted((everything[k] for k in keys if k in everything), key=lambda r: r.key)
         summary = summarise(selected, belief=str(spec))
-        _write_json(options.out / SUMMARY_FILE, summary)
-        return BenchOutcome(selected, summary, options.out, interrupted, len(new), len(done))
+        write_json(out / SUMMARY_FILE, summary)
+        return BenchOutcome(
+            selected,
+            summary,
+            out,
+            stop.requested,
+            len(new),
+            len(done),
+            stopped_by=stop.reason,
+            exit_code=stop.exit_code if stop.requested else 0,
+            notes=notes,
+        )
 
 
 def _execute(
-    pending: list[WorkItem], belief: str, options: BenchOptions, stop: _Stop
+    pending: list[WorkItem], belief: str, options: BenchOptions, stop: Stop
 ) -> Iterator[TaskRecord]:
-    """Yield records as tasks finish, in this process or a pool, until done or stopped."""
+    """Yield records as tasks finish, in this process or a pool, until done or stopped.
+
+    Once a stop is requested, batches no worker has started are cancelled and the running
+    ones finish; a second signal abandons those too. A worker that dies (killed, out of
+    memory) stops the run the same way, keeping what finished.
+    """
     suite = str(options.suite)
     if options.workers == 1 or len(pending) <= 1:
         try:
             for item in pending:
                 if stop.requested:
                     return
-                yield run_one(item.method, belief, options.seed, item.appliance, item.task, suite)
+                yield run_one(
+                    item.method,
+                    belief,
+                    options.seed,
+                    item.appliance,
+                    item.task,
+                    suite,
+                    options.feedback,
+                )
         except KeyboardInterrupt:
-            stop.requested = True
+            stop.request("SIGINT")
         return
     queue = deque(_batches(pending, options.workers))
     window = options.workers * 2
-    pool = ProcessPoolExecutor(min(options.workers, len(queue)), initializer=_worker_init)
+    pool = worker_pool(min(options.workers, len(queue)))
     running: set[Future[list[TaskRecord]]] = set()
     try:
         while queue or running:
             while queue and len(running) < window and not stop.requested:
-                running.add(pool.submit(_run_batch, queue.popleft(), belief, options.seed, suite))
+                running.add(
+                    pool.submit(
+                        _run_batch, queue.popleft(), belief, options.seed, suite, options.feedback
+                    )
+                )
+            if stop.requested:
+                running = {future for future in running if not future.cancel()}
             if not running or stop.hard:
                 break
             finished, _ = wait(running, timeout=0.25, return_when=FIRST_COMPLETED)
             for future in finished:
                 running.discard(future)
-                yield from future.result()
+                try:
+                    records = future.result()
+                except BrokenProcessPool:  # the others fail alike, soon: keep what finished
+                    stop.request(WORKER_DIED)
+                    continue
+                yield from records
     finally:
-        if running:  # abandoned after a second Ctrl-C (or an error): end the workers now
+        if running:  # abandoned after a second signal (or an error): end the workers now
             for process in list(getattr(pool, "_processes", {}).values()):
-                process.terminate()
+                process.kill()
         pool.shutdown(wait=True, cancel_futures=True)
-
-
-class _Advance:
-    """Progress updates: one bar per method with its live success count."""
-
-    def __init__(self, bar: Any, tasks: dict[str, Any], ok: dict[str, int]) -> None:
-        self.bar, self.tasks, self.ok = bar, tasks, ok
-
-    def __call__(self, record: TaskRecord) -> None:
-        if self.bar is None:
-            return
-        self.ok[record.method] += record.success
-        self.bar.update(self.tasks[record.method], advance=1, ok=self.ok[record.method])
-
-    def notice(self, message: str) -> None:
-        if self.bar is not None:
-            self.bar.console.print(f"[yellow]{message}[/yellow]")
-        else:
-            print(message, file=sys.stderr, flush=True)
-
-
-@contextmanager
-def _progress(
-    enabled: bool, chosen: list[str], done: list[TaskRecord], work: list[WorkItem]
-) -> Iterator[_Advance]:
-    if not enabled:
-        yield _Advance(None, {}, {})
-        return
-    from rich.console import Console
-    from rich.progress import (
-        BarColumn,
-        MofNCompleteColumn,
-        Progress,
-        TextColumn,
-        TimeElapsedColumn,
-    )
-
-    console = Console(stderr=True)
-    names = list(dict.fromkeys(chosen))
-    ok = {m: sum(r.success for r in done if r.method == m) for m in names}
-    with Progress(
-        TextColumn("{task.description}"),
-        BarColumn(),
-        MofNCompleteColumn(),
-        TextColumn("[green]{task.fields[ok]} ok"),
-        TimeElapsedColumn(),
-        console=console,
-        disable=not console.is_terminal,
-    ) as bar:
-        width = max(map(len, names), default=0)
-        tasks = {
-            m: bar.add_task(
-                m.ljust(width),
-                total=sum(w.method == m for w in work),
-                completed=sum(r.method == m for r in done),
-                ok=ok[m],
-            )
-            for m in names
-        }
-        yield _Advance(bar, tasks, ok)

@@ -68,6 +68,8 @@ class Task(_Strict):
     instruction: str = Field(min_length=8)
     goal: dict[str, Scalar] = Field(min_length=1)
     optimal_steps: int | None = Field(default=None, ge=0)
+    allow: dict[str, str] = Field(default_factory=dict)
+    """Findings of ``apbot.bench.goal_checks`` this task accepts, each with the reason."""
 
 
 class TaskFile(_Strict):

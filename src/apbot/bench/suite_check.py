@@ -1,8 +1,9 @@
 """Checks of a suite appliance beyond its model: panel, manual, tasks, and oracle reachability.
 
-Every task must be reachable: the planner's oracle plan, executed on the ground-truth
-simulator, has to reach the task's goal. The stored ``optimal_steps`` must equal the planner's
-answer, so a changed model cannot silently keep stale optimal counts.
+Every task must be reachable: the oracle (``apbot.bench.oracle``), executed on the
+ground-truth simulator, has to reach the task's goal. The stored ``optimal_steps`` must equal
+the oracle's plan length, so a changed model cannot silently keep stale optimal counts, and
+the goal must not be met by an obviously different operation (``apbot.bench.goal_checks``).
 """
 
 from __future__ import annotations
@@ -10,13 +11,13 @@ from __future__ import annotations
 from collections.abc import Iterator
 from pathlib import Path
 
+from apbot.bench.goal_checks import CHECKS, goal_findings
+from apbot.bench.oracle import oracle_plan, run_task_with_plan
 from apbot.bench.suite import GOAL_VARIABLES, SuiteAppliance, Task, TaskFile
-from apbot.model.goal import GoalError, parse_goal
+from apbot.model.goal import Goal, GoalError, parse_goal
 from apbot.model.load import dump_yaml, read_yaml
 from apbot.model.problems import Problem
 from apbot.model.validate import check_model
-from apbot.plan.plan import Unreachable, plan
-from apbot.sim.simulator import Simulator
 
 MANUAL_WORDS = (600, 3000)
 
@@ -105,32 +106,70 @@ def _tasks(appliance: SuiteAppliance, plan_tasks: bool) -> Iterator[Problem]:
             for problem in exc.problems:
                 yield Problem((*path, *problem.path), problem.message, "goal")
             continue
-        if not plan_tasks:
-            continue
-        try:
-            found = plan(appliance.model, None, goal)
-        except Unreachable as exc:
-            yield Problem((*path, "goal"), f"unreachable: {exc.reason}", "oracle")
-            continue
-        simulator = Simulator(appliance.model)
-        for action in found.actions:
-            simulator.step(action.name, action.seconds)
-        if not simulator.satisfies(goal):
-            yield Problem((*path, "goal"), "the oracle plan does not reach the goal", "oracle")
-        if len(found) == 0:
-            yield Problem((*path, "goal"), "the goal already holds in the initial state", "suite")
-        if task.optimal_steps != len(found):
+        yield from _allow_keys(task, path)
+        if plan_tasks:
+            yield from _oracle(appliance, task, goal, path)
+
+
+def _allow_keys(task: Task, path: tuple[str | int, ...]) -> Iterator[Problem]:
+    for key, reason in task.allow.items():
+        check, _, variable = key.partition(":")
+        if check not in CHECKS or (check == "free") != bool(variable):
             yield Problem(
-                (*path, "optimal_steps"),
-                f"stored {task.optimal_steps}, the planner "
-                f"finds {len(found)}; run `apbot suite fill-optimal`",
-                "oracle",
+                (*path, "allow", key),
+                f"{task.id}: unknown finding {key!r}; use one of "
+                "'quick-start', 'start-only' or 'free:VARIABLE'",
+                "suite",
+            )
+        elif variable and variable not in task.goal:
+            yield Problem(
+                (*path, "allow", key), f"{task.id}: {variable!r} is not in the goal", "suite"
+            )
+        if not reason.strip():
+            yield Problem((*path, "allow", key), f"{task.id}: say why it is allowed", "suite")
+
+
+def _oracle(
+    appliance: SuiteAppliance, task: Task, goal: Goal, path: tuple[str | int, ...]
+) -> Iterator[Problem]:
+    """The oracle reaches the goal, ``optimal_steps`` is its length, the goal is specific."""
+    result, run = run_task_with_plan(appliance, task)
+    if run is None or not result.success:
+        yield Problem((*path, "goal"), f"{task.id}: the oracle fails: {result.error}", "oracle")
+        return
+    if result.actions == 0:
+        yield Problem(
+            (*path, "goal"), f"{task.id}: the goal already holds in the initial state", "suite"
+        )
+    if task.optimal_steps != result.actions:
+        yield Problem(
+            (*path, "optimal_steps"),
+            f"{task.id}: stored {task.optimal_steps}, the oracle "
+            f"finds {result.actions}; run `apbot suite fill-optimal`",
+            "oracle",
+        )
+    found = goal_findings(appliance.model, goal, run.plan)
+    for finding in found:
+        if finding.key not in task.allow:
+            yield Problem(
+                (*path, "goal"),
+                f"{task.id}: {finding.message} (fix the task, or record why it is wanted "
+                f"under allow: {{{finding.key!r}: REASON}})",
+                finding.key,
+            )
+    keys = {f.key for f in found}
+    for key in task.allow:
+        if key not in keys and key.partition(":")[0] in CHECKS:
+            yield Problem(
+                (*path, "allow", key),
+                f"{task.id}: nothing to allow any more ({key} does not fire); remove it",
+                "suite",
             )
 
 
 def optimal_steps(appliance: SuiteAppliance, task: Task) -> int:
-    """The oracle's optimal action count for a task (the planner on the ground truth)."""
-    return len(plan(appliance.model, None, task.goal))
+    """The oracle's optimal action count for a task (its plan on the ground truth)."""
+    return len(oracle_plan(appliance.model, task.goal)[1])
 
 
 def fill_optimal(appliance: SuiteAppliance) -> int:
@@ -147,7 +186,10 @@ def fill_optimal(appliance: SuiteAppliance) -> int:
         changed += best != task.optimal_steps
         tasks.append(task.model_copy(update={"optimal_steps": best}))
     if changed:
-        payload = {"appliance": data.appliance, "tasks": [t.model_dump(mode="json") for t in tasks]}
+        payload = {
+            "appliance": data.appliance,
+            "tasks": [t.model_dump(mode="json", exclude_defaults=True) for t in tasks],
+        }
         path.write_text(dump_yaml(payload), encoding="utf-8")
         appliance.tasks = tasks
     return changed

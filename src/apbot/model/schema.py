@@ -40,6 +40,7 @@ Skill = Literal["press", "hold", "turn_cw", "turn_ccw"]
 TimeStyle = Literal["hh:mm:ss", "mm:ss", "h:mm", "hh:mm", "min", "h"]
 EntryFormat = Literal["mm:ss", "hh:mm", "h:mm", "hh:mm:ss", "minutes", "seconds", "number"]
 Scalar = str | int | float | bool
+Signal = Literal["beep", "silent"]  # how a refused key makes itself known, if at all
 
 
 class _Strict(BaseModel):
@@ -341,9 +342,11 @@ class Guard(_Strict):
     """A global condition checked before any action (power off, child lock, running).
 
     While every condition in ``when`` holds (a value, or a list meaning any of them), only the
-    actions in ``only`` are accepted; the others are refused and the display shows ``display``.
-    With ``hide``, the display shows ``display`` for as long as the guard holds (a switched-off
-    appliance is dark), not only when an action is refused.
+    actions in ``only`` are accepted; the others are refused and the display shows ``display``
+    (when it is not empty). With ``hide``, the display shows ``display`` for as long as the
+    guard holds (a switched-off appliance is dark), not only when an action is refused.
+    ``signal`` says whether a refusal can be perceived: ``beep`` (a sound, a flashing message)
+    or ``silent`` (the key just does nothing); see :meth:`refusal_signal` for the default.
     """
 
     name: str = ""
@@ -351,6 +354,14 @@ class Guard(_Strict):
     only: list[Ident]
     display: str = ""
     hide: bool = False
+    signal: Signal | None = None
+
+    def refusal_signal(self) -> Signal:
+        """How a refused key makes itself known: as declared, else a beep when the guard shows
+        a message ("LOCKED") and nothing when it does not (a dark panel ignores keys)."""
+        if self.signal is not None:
+            return self.signal
+        return "beep" if self.display.strip() else "silent"
 
     @field_validator("when", mode="before")
     @classmethod
@@ -370,11 +381,15 @@ class Display(_Strict):
     """What the display shows when no variable is being adjusted, and its permanent icons.
 
     ``idle`` is a template over variable names, e.g. ``"{cook_time}"`` or ``"READY"``.
-    ``indicators`` are variables always visible (lamps, icons: child lock, running).
+    ``indicators`` are variables always visible (lamps, icons: child lock, running): each is
+    shown after the main text as its lamp (see ``apbot.sim.simulator.lamp_text``).
+    ``ignored`` is what a key that does nothing in the current state does: most panels ignore
+    it without a sign (``silent``); some beep (``beep``). A too-short hold counts as such a key.
     """
 
     idle: str = ""
     indicators: list[Ident] = Field(default_factory=list)
+    ignored: Signal = "silent"
 
 
 class ApplianceModel(_Strict):

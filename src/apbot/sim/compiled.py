@@ -33,6 +33,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, NamedTuple
 
+from apbot.model.display import display_value
 from apbot.model.domain import Domain, build_domain
 from apbot.model.schema import (
     Add,
@@ -44,7 +45,7 @@ from apbot.model.schema import (
     TimeVariable,
     time_step_seconds,
 )
-from apbot.model.values import format_hms, format_time, parse_hms, tidy_number
+from apbot.model.values import format_hms, parse_hms, tidy_number
 
 NONE, TABLE, DIGIT, CLEAR = 0, 1, 2, 3
 
@@ -520,19 +521,7 @@ class CompiledModel:
 
     def render_value(self, state: State, v: int) -> str:
         """A value as the display prints it (unit, time style)."""
-        var = self.vars[v]
-        index = state.values[v]
-        domain = var.domain(state.values)
-        if index < 0 or domain is None:
-            return "--"
-        value = domain.values[index]
-        spec = var.spec
-        if isinstance(spec, TimeVariable):
-            assert domain.magnitudes is not None
-            return format_time(int(domain.magnitudes[index]), spec.format)
-        if isinstance(spec, NumericVariable) and spec.unit:
-            return f"{value}{spec.unit}" if not spec.unit[0].isalnum() else f"{value} {spec.unit}"
-        return str(value)
+        return display_value(self.vars[v].spec, self.value(state, self.vars[v].name))
 
 
 def _canonical(domain: Domain, magnitude: float) -> Any:

@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 from numbers import Real
 from typing import Any
 
+from apbot.model.display import lamp_for, show_template
 from apbot.model.schema import TEMPLATE_FIELD, ApplianceModel
 from apbot.sim.compiled import NOT_HERE, CompiledModel, State, compiled_model
 
@@ -25,9 +26,12 @@ from apbot.sim.compiled import NOT_HERE, CompiledModel, State, compiled_model
 class Observation:
     """What an agent sees after one action.
 
-    ``display`` is the text on the appliance's display; ``values`` the variables it shows
-    (the one being adjusted, and indicators such as a lock icon); ``accepted`` says whether
-    the appliance took the action, and ``reason`` why not.
+    ``display`` is the text on the appliance's main display; ``lamps`` the texts of the lit
+    indicator lamps (``display.indicators``), and ``text`` both together, as a camera on the
+    panel would read them. ``values`` are the variables shown (the one being adjusted, the
+    idle screen's, the indicators'), visible ones only. ``accepted`` says whether the
+    appliance took the action, ``reason`` why not, and ``perceptible`` whether a refusal makes
+    a sign (a beep, a message) or passes unnoticed.
     """
 
     display: str
@@ -35,6 +39,18 @@ class Observation:
     accepted: bool = True
     reason: str = ""
     focus: str | None = None
+    lamps: tuple[str, ...] = ()
+    perceptible: bool = True
+
+    @property
+    def text(self) -> str:
+        """The whole panel as text: the main display, then the lit lamps."""
+        return panel_text(self.display, self.lamps)
+
+
+def panel_text(display: str, lamps: tuple[str, ...] | list[str]) -> str:
+    """The main display and the lit lamps, separated by two spaces."""
+    return "  ".join(part for part in (display, *lamps) if part)
 
 
 class UnknownAction(KeyError, ValueError):
@@ -163,6 +179,8 @@ class Simulator:
         compiled = self.compiled
         name = compiled.action_names[aid]
         code = compiled.refusal(self.state, aid)
+        observation = self.observe()
+        ignored_beeps = compiled.model.display.ignored == "beep"
         if code is not None and code >= 0:
             guard = compiled.guards[code]
             conditions = ", ".join(
@@ -175,21 +193,26 @@ class Simulator:
                 f"{guard.name + ': ' if guard.name else ''}{conditions}; only "
                 f"{', '.join(allowed)} {verb}"
             )
-            observation = self.observe()
-            observation.display = guard.display
-            observation.values = {
-                name: compiled.value(self.state, name) for name in compiled.model.display.indicators
-            }
-            observation.focus = None
+            if guard.display:  # the message replaces the main display; every lamp stays lit
+                observation.display = guard.display
+                observation.lamps = self._lamps(-1)
+                observation.values = {
+                    name: value
+                    for name, value in observation.values.items()
+                    if name in compiled.model.display.indicators
+                }
+                observation.focus = None
+            perceptible = compiled.model.guards[code].refusal_signal() == "beep"
         elif code == NOT_HERE:
             reason = f"{name} does nothing here"
-            observation = self.observe()
+            perceptible = ignored_beeps
         else:
             needed = compiled.hold_seconds[aid]
             reason = f"{name} must be held for {needed:g} s (held {seconds:g} s)"
-            observation = self.observe()
+            perceptible = ignored_beeps
         observation.accepted = False
         observation.reason = reason
+        observation.perceptible = perceptible
         return observation
 
     def observe(self) -> Observation:
@@ -200,12 +223,12 @@ class Simulator:
         values: dict[str, Any] = {}
         hiding = compiled.hiding_guard(state) if compiled.guards else None
         if hiding is not None:
-            for name in compiled.model.display.indicators:
-                values[name] = compiled.value(state, name)
+            self._indicator_values(values)
             return Observation(hiding.display, values, True, "", None)
         if focus >= 0:
             var = compiled.vars[focus]
-            values[var.name] = compiled.value(state, var.name)
+            if var.spec.visible:
+                values[var.name] = compiled.value(state, var.name)
             key = (focus, state.values[focus], state.values[var.parent] if var.parent >= 0 else 0)
             text = self._display_cache.get(key) if self._plain_show[focus] else None
             if text is None:
@@ -215,12 +238,32 @@ class Simulator:
         else:
             text = self._template(compiled.model.display.idle, state)
             for name in TEMPLATE_FIELD.findall(compiled.model.display.idle):
-                values[name] = compiled.value(state, name)
-        for name in compiled.model.display.indicators:
-            values[name] = compiled.value(state, name)
+                if compiled.model.variables[name].visible:
+                    values[name] = compiled.value(state, name)
+        self._indicator_values(values)
         return Observation(
-            text, values, True, "", compiled.vars[focus].name if focus >= 0 else None
+            text,
+            values,
+            True,
+            "",
+            compiled.vars[focus].name if focus >= 0 else None,
+            self._lamps(focus),
         )
+
+    def _lamps(self, focus: int) -> tuple[str, ...]:
+        """The lit lamps, but for the variable the main display shows already."""
+        compiled = self.compiled
+        return tuple(
+            lamp
+            for name in compiled.model.display.indicators
+            if compiled.var_index[name] != focus
+            and (lamp := lamp_text(compiled, self.state, compiled.var_index[name]))
+        )
+
+    def _indicator_values(self, values: dict[str, Any]) -> None:
+        for name in self.compiled.model.display.indicators:
+            if self.compiled.model.variables[name].visible:
+                values[name] = self.compiled.value(self.state, name)
 
     def _show(self, state: State, v: int) -> str:
         var = self.compiled.vars[v]
@@ -228,13 +271,8 @@ class Simulator:
         if not spec.visible:
             return ""
         value = self.compiled.render_value(state, v)
-        show = spec.show
-        if isinstance(show, dict):
-            raw = self.compiled.value(state, var.name)
-            show = show.get(str(raw))
-        if show is None:
-            return f"{spec.display_label(var.name)} {value}".strip()
-        return self._template(show, state, value=value, label=spec.display_label(var.name))
+        show = show_template(spec, self.compiled.value(state, var.name))
+        return self._template(show, state, value=value, label=spec.display_label(var.name)).strip()
 
     def _template(self, text: str, state: State, **extra: str) -> str:
         def fill(match: Any) -> str:
@@ -304,6 +342,19 @@ class Simulator:
 
 
 _UNSEEN = object()
+
+
+def lamp_text(compiled: CompiledModel, state: State, v: int) -> str:
+    """What an indicator lamp shows now (:func:`apbot.model.display.lamp_for`).
+
+    >>> from apbot.examples import load_example
+    >>> compiled = CompiledModel(load_example("washing_machine"))
+    >>> lamp_text(compiled, compiled.initial_state(), compiled.var_index["child_lock"])
+    ''
+    """
+    var = compiled.vars[v]
+    values = var.domains[0].values if var.parent < 0 and var.domains[0] is not None else ()
+    return lamp_for(var.spec, var.name, compiled.value(state, var.name), values)
 
 
 def _is_plain(show: Any) -> bool:

@@ -1,4 +1,4 @@
-"""Exploring a variable and learning its definition from what the display shows.
+"""The explorer: walk a variable's values and learn its definition from what the display shows.
 
 On a mismatch the agent presses the step's key again and again until a shown value repeats
 (and walks back with the opposite key after an end, or when the walk went dark at once), then
@@ -11,9 +11,10 @@ from __future__ import annotations
 
 from typing import Any
 
-from apbot.agent.core import MISSING, Core, Executed, canonical, loose, magnitude, summary, tidy
+from apbot.agent.displays import DisplayLearner
 from apbot.agent.infer import (
     Dark,
+    Unread,
     common_step,
     fill_dark,
     order_from_traces,
@@ -21,7 +22,24 @@ from apbot.agent.infer import (
     splice,
     typical_change,
 )
-from apbot.agent.repair import RepairError, redefine_domain, set_effects
+from apbot.agent.perception import Seen
+from apbot.agent.repair import (
+    RepairError,
+    redefine_domain,
+    set_effects,
+    set_entry_format,
+    set_on_entry,
+)
+from apbot.agent.session import (
+    MISSING,
+    Executed,
+    Session,
+    canonical,
+    loose,
+    magnitude,
+    summary,
+    tidy,
+)
 from apbot.model.schema import (
     Add,
     ApplianceModel,
@@ -30,15 +48,20 @@ from apbot.model.schema import (
     time_step_seconds,
 )
 from apbot.plan.plan import PlannedAction
+from apbot.sim.compiled import CompiledModel, parse_entry
 
 
-class Exploring(Core):
+class Explorer:
     """Walk a variable's values with its step's keys and repair the belief from the walk."""
+
+    def __init__(self, session: Session, displays: DisplayLearner) -> None:
+        self.session = session
+        self.displays = displays
 
     def explore(self, name: str, last: Executed, history: list[Any] | None = None) -> None:
         """Explore ``name`` with ``last``'s key (from the step ``last`` left the belief in)."""
         assert last.pointer is not None
-        self.explored.add(name)
+        self.session.explored.add(name)
         pointer, key = last.pointer, last.action
         forward, unseen = self.walk(name, key, history or [])
         visible = [v for v in forward if not isinstance(v, Dark)]
@@ -53,7 +76,7 @@ class Exploring(Core):
         elif opposite is not None and forward[-1] == forward[-2]:  # an end: walk back
             backward, unseen = self.walk(name, opposite)
             final = opposite
-        self.episode.log(
+        self.session.episode.log(
             "explore",
             f"{name} under {key.name}: {summary(forward)}"
             + (
@@ -62,6 +85,7 @@ class Exploring(Core):
                 else ""
             ),
         )
+        forward, backward = self._read_unread(name, forward, backward)
         seen = [v for v in forward + (backward or []) if not isinstance(v, Dark)]
         if not seen:
             return
@@ -71,9 +95,29 @@ class Exploring(Core):
         current = last_walk[-1] if last_walk else seen[-1]
         if len(seen) >= 2:
             self.learn(name, pointer, key.name, opposite, forward, backward, current)
-        self.belief.set_value(name, current)
+        self.session.belief.set_value(name, current)
         for _ in range(unseen):  # presses taken in the dark: the (repaired) model says where to
-            self.belief.advance(final.name, final.seconds)
+            self.session.belief.advance(final.name, final.seconds)
+
+    def _read_unread(
+        self, name: str, forward: list[Any], backward: list[Any] | None
+    ) -> tuple[list[Any], list[Any] | None]:
+        """Texts the belief could not read: learn how the display prints the setting from them,
+        then read them again; what stays unreadable counts as dark."""
+        texts = [v.text for v in forward + (backward or []) if isinstance(v, Unread)]
+        if texts:
+            self.displays.learn(name, texts)
+
+        def again(trace: list[Any]) -> list[Any]:
+            result = []
+            for value in trace:
+                if isinstance(value, Unread):
+                    read = self.displays.read(name, value.text)
+                    value = Dark() if read is None else read
+                result.append(value)
+            return result
+
+        return again(forward), None if backward is None else again(backward)
 
     def walk(
         self, name: str, action: PlannedAction, history: list[Any] | None = None
@@ -85,18 +129,18 @@ class Exploring(Core):
         :class:`Dark`; two in a row end the walk. Returns the values (dark ones included) and
         how many presses at the end went unseen (the appliance moved on in the dark).
         """
-        start = self.shown(name)
+        start = self._value(name, self.session.last_seen)
         values = [] if start is MISSING else [start]  # not shown now: start from the first press
         if history and values and history[-1] == values[0]:
             values = list(history)
             if len(values) >= 2 and values[-1] in values[:-1]:
                 return values, 0  # they already went round
         dark = 0
-        for _ in range(self.config.explore_limit):
-            done = self.press(action, exploring=True)
+        for _ in range(self.session.config.explore_limit):
+            done = self.session.press(action, exploring=True)
             if not done.feedback.accepted:
                 break
-            value = done.observed(name)
+            value = self._value(name, done.seen)
             if value is MISSING:
                 dark += 1
                 values.append(Dark())
@@ -108,6 +152,16 @@ class Exploring(Core):
             if value in values[:-1]:
                 break
         return values, dark
+
+    @staticmethod
+    def _value(name: str, seen: Seen | None) -> Any:
+        """What a walk records: the value shown, text the belief cannot read, or MISSING."""
+        if seen is None:
+            return MISSING
+        value = seen.observed(name)
+        if value is MISSING and seen.unknown and seen.text.strip():
+            return Unread(seen.text)
+        return value
 
     def history(self, name: str, last: Executed, executed: list[Executed]) -> list[Any]:
         """Values ``name`` showed under the presses of ``last``'s key that end the macro
@@ -125,26 +179,28 @@ class Exploring(Core):
     def opposite(self, pointer: tuple[str, int], action: str) -> PlannedAction | None:
         """The step's key that walks the other way, if there is one."""
         feature, index = pointer
-        effect = self.effect(pointer, action)
-        for other in self.belief.model.features[feature][index].actions:
-            theirs = self.effect(pointer, other)
+        effect = self.session.effect(pointer, action)
+        for other in self.session.belief.model.features[feature][index].actions:
+            theirs = self.session.effect(pointer, other)
             if (
                 other != action
                 and (theirs in ("next", "prev") or isinstance(theirs, Add))
                 and theirs != effect
             ):
-                return self.planned(other)
+                return self.session.planned(other)
         return None
 
     def stepping_key(self, name: str) -> Executed | None:
         """The step the belief is in, as an action to explore ``name`` with, if it steps it."""
-        pointer = self.belief.pointer()
-        if pointer is None or self.step_variable(pointer) != name:
+        pointer = self.session.belief.pointer()
+        if pointer is None or self.session.step_variable(pointer) != name:
             return None
         feature, index = pointer
-        for action in self.belief.model.features[feature][index].actions:
-            if self.stepping(pointer, action):
-                return Executed(self.planned(action), pointer, name, self.last, True)
+        for action in self.session.belief.model.features[feature][index].actions:
+            if self.session.stepping(pointer, action):
+                return Executed(
+                    self.session.planned(action), pointer, name, self.session.last, True
+                )
         return None
 
     # --- learning -------------------------------------------------------------------------
@@ -160,9 +216,9 @@ class Exploring(Core):
         current: Any,
     ) -> bool:
         """Write what the walks show into the belief model; False when nothing could be."""
-        model = self.belief.model
+        model = self.session.belief.model
         spec = model.variables[name]
-        effect = self.effect(pointer, action)
+        effect = self.session.effect(pointer, action)
         order = order_from_traces(forward, backward)
         if not [v for v in order.values if not isinstance(v, Dark)]:
             return False
@@ -174,11 +230,11 @@ class Exploring(Core):
                     name, pointer, action, opposite, forward, backward, order, current
                 )
         except RepairError as exc:
-            self.episode.log("repair", f"could not repair {name}: {exc}")
+            self.session.episode.log("repair", f"could not repair {name}: {exc}")
             return False
         if new is None:
             return False
-        self.adopt(new, note, pointer)
+        self.session.adopt(new, note, pointer)
         return True
 
     def _learn_values(
@@ -187,14 +243,14 @@ class Exploring(Core):
         values = [v if isinstance(v, Dark) else str(v) for v in order.values]
         if effect == "prev":
             values.reverse()
-        known = self.domain_values(name)
+        known = self.session.domain_values(name)
         values = fill_dark(values, known, order.wrap)
         if not order.complete:
             values = splice(known, values)
         new = redefine_domain(
-            self.belief.model,
+            self.session.belief.model,
             name,
-            self.case(name),
+            self.session.case(name),
             values=values,
             wrap=order.wrap,
             current=current,
@@ -212,13 +268,16 @@ class Exploring(Core):
         order: Any,
         current: Any,
     ) -> tuple[ApplianceModel | None, str]:
-        spec = self.belief.model.variables[name]
-        effect = self.effect(pointer, action)
-        numbers = [m for m in (magnitude(spec, v) for v in order.values) if m is not None]
+        spec = self.session.belief.model.variables[name]
+        effect = self.session.effect(pointer, action)
+        # a dark slot (an OFF position, a setting shown as a dark panel) is the believed value
+        # between its neighbours
+        filled = fill_dark(list(order.values), self.session.domain_values(name), order.wrap)
+        numbers = [m for m in (magnitude(spec, v) for v in filled) if m is not None]
         if not numbers:
             return None, ""
         change = _direction(spec, forward, backward)
-        new = self.belief.model
+        new = self.session.belief.model
         notes: list[str] = []
         if isinstance(effect, Add):
             new, numbers = self._learn_add(new, pointer, action, spec, change, numbers, notes)
@@ -232,7 +291,7 @@ class Exploring(Core):
                 notes.append(f"{action} moves {name} the other way")
             if not order.complete:
                 numbers = _keep_unseen(
-                    self.magnitudes(name),
+                    self.session.magnitudes(name),
                     numbers,
                     clamped_high=rising if order.wrap is False else None,
                 )
@@ -240,7 +299,7 @@ class Exploring(Core):
         new = redefine_domain(
             new,
             name,
-            self.case(name),
+            self.session.case(name),
             ranges=ranges,
             wrap=order.wrap if effect != "toggle" else None,
             current=canonical(spec, magnitude(spec, current)),
@@ -260,7 +319,7 @@ class Exploring(Core):
     ) -> tuple[ApplianceModel, list[float]]:
         """An ``add`` key: learn its amount and sign; widen (never shrink) the domain, since
         the key may skip values other keys reach."""
-        effect = self.effect(pointer, action)
+        effect = self.session.effect(pointer, action)
         believed = float(
             time_step_seconds(effect.add) if isinstance(effect.add, str) else effect.add
         )
@@ -268,7 +327,7 @@ class Exploring(Core):
             amount: Any = int(change) if isinstance(spec, TimeVariable) else tidy(change)
             model = set_effects(model, pointer[0], pointer[1], {action: {"add": amount}})
             notes.append(f"{action} adds {amount}")
-        known = self.magnitudes(self.step_variable(pointer) or "")
+        known = self.session.magnitudes(self.session.step_variable(pointer) or "")
         return model, sorted(set(known) | set(numbers))
 
     def learn_goto(self, name: str, last: Executed, observed: Any) -> None:
@@ -276,22 +335,100 @@ class Exploring(Core):
         assert last.pointer is not None
         try:
             new = set_effects(
-                self.belief.model,
+                self.session.belief.model,
                 last.pointer[0],
                 last.pointer[1],
                 {last.action.name: {"to": observed}},
             )
         except RepairError as exc:
-            self.episode.log("repair", f"could not repair {last.action.name}: {exc}")
+            self.session.episode.log("repair", f"could not repair {last.action.name}: {exc}")
             return
-        self.adopt(new, f"{last.action.name} sets {name} to {observed}", last.pointer)
+        self.session.adopt(new, f"{last.action.name} sets {name} to {observed}", last.pointer)
+
+    def learn_on_entry(self, name: str, entering: Executed) -> bool:
+        """The press that entered a step showed what the other ``on_entry`` would have given
+        (the first press of TEMP already changed it, or only showed it): the step says so."""
+        session = self.session
+        if entering.pointer is None or entering.before == entering.pointer:
+            return False
+        if entering.state_before is None or not session.stepping(
+            entering.pointer, entering.action.name
+        ):
+            return False
+        feature, index = entering.pointer
+        step = session.belief.model.features[feature][index]
+        other = "apply" if step.on_entry == "show" else "show"
+        try:
+            flipped = set_on_entry(session.belief.model, feature, index, other)
+        except RepairError:
+            return False
+        compiled = CompiledModel(flipped)
+        after = compiled.apply(
+            entering.state_before,
+            compiled.action_index[entering.action.name],
+            entering.action.seconds,
+        )
+        shown = entering.observed(name)
+        if after is None or compiled.value(after, name) != shown or shown == entering.predicted:
+            return False
+        if not session.budget.once("entry", f"{feature}:{index}"):
+            return False
+        # a key that moves the other way, stuck at an end, also leaves the value as it was:
+        # one more press must go as the other on_entry predicts
+        action = compiled.action_index[entering.action.name]
+        then = compiled.apply(after, action, entering.action.seconds)
+        again = session.press(entering.action, exploring=True)
+        if then is None or again.observed(name) != compiled.value(then, name):
+            return False
+        session.adopt(
+            flipped,
+            f"{feature}: the press that enters {name}'s step "
+            + ("changes it at once" if other == "apply" else "only shows it"),
+            entering.pointer,
+        )
+        session.belief.set_value(name, again.observed(name))  # where the confirming press left it
+        return True
+
+    def learn_entry_format(self, name: str, last: Executed, observed: Any, unchanged: bool) -> bool:
+        """Digits typed gave another value than the belief's entry format reads: find the
+        format that reads them as shown (``minutes`` for what is really ``mm:ss``). A value
+        that did not change at all fits every format that reads the digits as no value of the
+        setting (typing 5 on an ``mm:ss`` keypad for a setting in whole minutes)."""
+        spec = self.session.belief.model.variables[name]
+        entry = getattr(spec, "entry", None)
+        shown = magnitude(spec, observed)
+        if entry is None or shown is None or not last.buffer:
+            return False
+        possible = set(self.session.magnitudes(name))
+
+        def fits(fmt: str) -> bool:
+            reading = parse_entry(last.buffer, entry.model_copy(update={"format": fmt}))
+            return reading == shown or (unchanged and (reading is None or reading not in possible))
+
+        if fits(entry.format):
+            return False  # the format reads the digits as shown: the fault is elsewhere
+        fitting = [f for f in _entry_formats(spec) if fits(f)]
+        if not fitting or not self.session.budget.once("entry", name):
+            return False
+        try:
+            new = set_entry_format(self.session.belief.model, name, fitting[0])
+        except RepairError as exc:
+            self.session.episode.log("repair", f"could not repair {name}'s entry: {exc}")
+            return False
+        self.session.adopt(
+            new,
+            f"{name}: digits are read as {fitting[0]} (typed {last.buffer}, shown {observed})",
+            last.pointer,
+        )
+        self.session.belief.set_value(name, observed)
+        return True
 
     def widen(self, name: str, observed: list[Any]) -> None:
         """Let a keypad setting take values the belief's ranges missed."""
-        spec = self.belief.model.variables[name]
+        spec = self.session.belief.model.variables[name]
         if isinstance(spec, DiscreteVariable):
             return
-        known = self.magnitudes(name)
+        known = self.session.magnitudes(name)
         extra = [m for m in (magnitude(spec, loose(spec, v)) for v in observed) if m is not None]
         if not known or not extra or set(extra) <= set(known):
             return
@@ -300,14 +437,26 @@ class Exploring(Core):
         low, high = points[0], points[-1]
         try:
             new = redefine_domain(
-                self.belief.model, name, self.case(name), ranges=[(low, high, step)]
+                self.session.belief.model, name, self.session.case(name), ranges=[(low, high, step)]
             )
         except RepairError as exc:
-            self.episode.log("repair", f"could not widen {name}: {exc}")
+            self.session.episode.log("repair", f"could not widen {name}: {exc}")
             return
-        self.adopt(
-            new, f"{name}: allow {low:g}..{high:g} in steps of {step:g}", self.belief.pointer()
+        self.session.adopt(
+            new,
+            f"{name}: allow {low:g}..{high:g} in steps of {step:g}",
+            self.session.belief.pointer(),
         )
+
+
+def _entry_formats(spec: Any) -> list[str]:
+    """The keypad formats a variable could use, the one matching its display first."""
+    if not isinstance(spec, TimeVariable):
+        return ["number"]
+    order = ["mm:ss", "hh:mm", "h:mm", "hh:mm:ss", "minutes", "seconds"]
+    preferred = {"mm:ss": "mm:ss", "hh:mm": "hh:mm", "h:mm": "h:mm", "min": "minutes"}
+    first = preferred.get(spec.format)
+    return ([first] if first else []) + [f for f in order if f != first]
 
 
 def _ends(wrap: bool | None) -> str:

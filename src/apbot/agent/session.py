@@ -1,32 +1,38 @@
-"""What every part of the closed loop shares: pressing, reading feedback, the belief.
+"""One episode's shared state, and the primitive every collaborator is built on: a press.
 
-``Core`` owns one episode's state — the belief, the environment, the episode being logged —
-and the two things everything else is built on: :meth:`Core.press` (act on the appliance and
-on the belief together, and note every surprise) and :meth:`Core.adopt` (switch the belief to
-a repaired model). Exploration, procedure repairs and the greedy ablation are mixins on top
-(``apbot.agent.exploring``, ``.procedures``, ``.greedy``); ``apbot.agent.loop`` ties them up.
+A :class:`Session` holds what the collaborators of the closed loop share — the belief, the
+environment, the episode being logged, the budget of attempts, what the display showed last —
+and :meth:`Session.press`: act on the appliance and on the belief together, read the feedback
+in the light of the prediction, and keep whatever contradicted it as a *surprise*. The
+explorer (``apbot.agent.explorer``), the procedure repairer (``.procedures``) and the greedy
+executor (``.greedy``) each take a session; ``apbot.agent.loop`` orchestrates them.
+
+In display mode the prediction is the whole display text: when the appliance shows exactly
+what the belief renders, nothing needs reading; otherwise the display reader says what the
+text means in the belief's terms.
 """
 
 from __future__ import annotations
 
-from collections import Counter
 from dataclasses import dataclass, field
 from typing import Any
 
 from apbot.agent.belief import Belief
+from apbot.agent.budget import Budget
 from apbot.agent.environment import Environment, Feedback
 from apbot.agent.episode import TaskContext
-from apbot.agent.estimate import Estimate, StateEstimator
+from apbot.agent.perception import MISSING, UNREADABLE, Perceiver, Seen
 from apbot.model.domain import ValueProblem, parse_value
 from apbot.model.schema import Add, ApplianceModel, TimeVariable
 from apbot.model.values import format_hms, parse_hms
 from apbot.plan.plan import PlannedAction
-from apbot.sim.compiled import default_effect
+from apbot.sim.compiled import State, default_effect
+from apbot.sim.simulator import Observation
 
-MISSING = object()
+__all__ = ["MISSING", "UNREADABLE", "AgentConfig", "Executed", "Session", "Stop"]
+
 EXPLORE_LIMIT = 400  # presses per direction (a 1-minute clock over 6 hours; most domains < 100)
 PLAN_BUDGET = 100_000  # search nodes per plan: every bundled task needs under 4k on its truth
-MAX_SAME_REPAIR = 3  # the same thing going wrong this often in a row: give up
 
 
 @dataclass(frozen=True)
@@ -53,7 +59,10 @@ class Executed:
     """One action as performed: where the belief was, what it predicted, what was shown.
 
     ``surprises`` maps each variable the feedback contradicted to (predicted, observed); an
-    observed None means the display was dark where the belief expected the value.
+    observed None means the display was dark where the belief expected the value, and
+    ``UNREADABLE`` that it showed text the belief's display rules cannot print. ``unchanged``:
+    the display stayed exactly as it was although the belief predicted a change (a key
+    ignored without a sign looks like this).
     """
 
     action: PlannedAction
@@ -63,45 +72,60 @@ class Executed:
     believed_accepted: bool
     before: tuple[str, int] | None = None  # the belief's feature step before the action
     predicted: Any = None  # the belief's value of ``variable`` after the action
-    estimate: Estimate | None = None
+    seen: Seen | None = None
     surprises: dict[str, tuple[Any, Any]] = field(default_factory=dict)
+    unchanged: bool = False
+    buffer: str = ""  # the keypad digits the belief had typed into the step after the action
+    state_before: State | None = None  # the belief's state before the action
 
     def observed(self, name: str) -> Any:
         """The value of ``name`` the display showed after this action (MISSING if none)."""
-        if self.estimate is None:
-            return MISSING
-        return self.estimate.values.get(name, self.estimate.outside.get(name, MISSING))
+        return MISSING if self.seen is None else self.seen.observed(name)
 
     @property
     def refused(self) -> bool:
         """The appliance refused what the belief expected to work."""
         return self.believed_accepted and not self.feedback.accepted
 
+    @property
+    def surprising(self) -> bool:
+        return self.refused or bool(self.surprises)
 
-class Core:
-    """One episode's state and the primitives every part of the loop uses."""
 
-    def __init__(self, config: AgentConfig, context: TaskContext, env: Environment) -> None:
+class Session:
+    """One episode's state and the primitives every collaborator uses."""
+
+    def __init__(
+        self, config: AgentConfig, context: TaskContext, env: Environment, budget: Budget
+    ) -> None:
         self.config = config
         self.context = context
         self.env = env
+        self.budget = budget
         self.episode = context.episode()
         self.belief = Belief(context.belief)
-        self.estimator = StateEstimator(self.belief.model)
+        self.perceiver = Perceiver(self.belief.model)
         self.offered = frozenset(env.actions)
         self.last = Feedback()
-        self.counts: Counter[str] = Counter()  # how often each kind of trouble came back
+        self.last_seen = Seen()
         self.explored: set[str] = set()
         self.unverified: set[str] = set()  # changed by a press but not seen since
         self.contradicted: dict[str, Any] = {}  # last shown as a value the belief cannot hold
 
     # --- acting ------------------------------------------------------------------------------
 
+    def start(self) -> None:
+        """Reset the appliance and believe what it shows."""
+        self.last = self.env.reset()
+        self.last_seen = self.perceive(self.last, self.belief.expected())
+        self.sync(self.last_seen)
+
     def press(self, action: PlannedAction, exploring: bool = False) -> Executed:
         """Perform ``action`` on the appliance and on the belief; the belief then follows what
         the display shows, and whatever contradicted its prediction is kept as a surprise."""
         before_state = self.belief.state
         before = self.belief.pointer()
+        before_text = self.last.text
         if action.name not in self.offered:  # the belief has a control the appliance lacks
             feedback = Feedback(
                 self.last.text, dict(self.last.values), False, "the appliance has no such action"
@@ -118,7 +142,7 @@ class Core:
         pointer = self.belief.pointer() if believed else before
         variable = self.step_variable(pointer) if believed else None
         predicted = self.belief.value(variable) if variable else None
-        expected = self.belief.expected().values
+        expected = self.belief.expected()
         feedback = self.env.step(action.name, action.seconds)
         self.episode.execution_steps += 1
         self.last = feedback
@@ -133,29 +157,44 @@ class Core:
         if not feedback.accepted:
             self.belief.state = before_state  # a refused action changes nothing
             return Executed(action, pointer, variable, feedback, believed, before, predicted)
-        estimate = self.estimate(feedback)
+        buffer = self.belief.state.buffer
+        seen = self.perceive(feedback, expected)
         surprises = {
             name: (self.belief.value(name), value)
-            for name, value in (*estimate.values.items(), *estimate.outside.items())
+            for name, value in (*seen.values.items(), *seen.outside.items())
             if self.belief.value(name) != value
         }
-        if (
-            variable
-            and variable in expected
-            and variable not in surprises
-            and variable not in estimate.values
-            and variable not in estimate.outside
-        ):
-            surprises[variable] = (predicted, None)  # expected on the display, and it is dark
-        self.sync(estimate)
+        for name in seen.absent:
+            if self.belief.value(name) is not None:
+                surprises[name] = (self.belief.value(name), None)
+        if variable and variable in expected.values and variable not in seen.shown():
+            # expected on the display, and it is dark (or shows what the belief cannot read)
+            surprises[variable] = (predicted, UNREADABLE if seen.unknown else None)
+        unchanged = (
+            bool(surprises)
+            and feedback.text == before_text
+            and (expected.text != before_text or before_state != self.belief.state)
+        )
+        if unchanged and variable is not None and not seen.showing(variable):
+            # the display did not move to the step the belief entered: the key did nothing
+            # visible, so the belief must not keep what it predicted the key would do
+            self.belief.state = before_state  # (``pointer`` still says where it meant to go)
         if variable and not exploring:
             self.unverified.add(variable)
-        self.unverified -= set(estimate.values)
-        self.contradicted.update(estimate.outside)
-        for name in estimate.values:
-            self.contradicted.pop(name, None)
+        self.sync(seen)
         return Executed(
-            action, pointer, variable, feedback, believed, before, predicted, estimate, surprises
+            action,
+            pointer,
+            variable,
+            feedback,
+            believed,
+            before,
+            predicted,
+            seen,
+            surprises,
+            unchanged,
+            buffer,
+            before_state,
         )
 
     def planned(self, action: str) -> PlannedAction:
@@ -164,18 +203,42 @@ class Core:
 
     # --- reading -------------------------------------------------------------------------------
 
-    def estimate(self, feedback: Feedback) -> Estimate:
-        return self.estimator.estimate(feedback, context=self.belief.values())
+    def perceive(self, feedback: Feedback, expected: Observation) -> Seen:
+        """Read ``feedback`` against the belief's prediction ``expected``."""
+        if not feedback.values and feedback.text == expected.text:
+            kind, _ = self.expected_screen()
+            return Seen(
+                feedback.text, dict(expected.values), screen=expected.focus, screen_kind=kind
+            )
+        return self.perceiver.perceive(feedback, self.belief.values(), self.expected_screen())
 
-    def sync(self, estimate: Estimate) -> None:
-        """Believe what the display shows."""
-        for name, value in estimate.values.items():
+    def expected_screen(self) -> tuple[str, str | None]:
+        """What the belief says the main display shows now, as (kind, variable)."""
+        compiled = self.belief.compiled
+        if compiled.hiding_guard(self.belief.state) is not None:
+            return ("guard", None)
+        focus = compiled.focus(self.belief.state)
+        return ("focus", compiled.vars[focus].name) if focus >= 0 else ("idle", None)
+
+    def sync(self, seen: Seen) -> None:
+        """Believe what the display shows; what it showed is confirmed, and a value the belief
+        cannot hold is kept as a contradiction until the setting is seen with one it can."""
+        self.last_seen = seen
+        for name, value in seen.values.items():
             self.belief.set_value(name, value)
+        self.unverified -= set(seen.values)
+        self.contradicted.update(seen.outside)
+        for name in seen.values:
+            self.contradicted.pop(name, None)
 
-    def shown(self, name: str, feedback: Feedback | None = None) -> Any:
-        """The value of ``name`` on the display now (or in ``feedback``); MISSING if none."""
-        estimate = self.estimate(feedback or self.last)
-        return estimate.values.get(name, estimate.outside.get(name, MISSING))
+    def shown(self, name: str) -> Any:
+        """The value of ``name`` on the display now; MISSING if none."""
+        return self.last_seen.observed(name)
+
+    def reread(self) -> None:
+        """Read the last feedback again (after a repair changed the belief's display rules or
+        its state) and believe it."""
+        self.sync(self.perceive(self.last, self.belief.expected()))
 
     # --- the belief model ------------------------------------------------------------------
 
@@ -212,7 +275,10 @@ class Core:
     def adopt(self, model: ApplianceModel, note: str, pointer: tuple[str, int] | None) -> None:
         """Switch the belief to a repaired model, keeping the believed state."""
         self.belief.replace(model, pointer)
-        self.estimator.rebind(model)
+        self.perceiver.rebind(model)
+        for name, value in list(self.contradicted.items()):  # values the repair made possible
+            if name in model.variables and self.belief.set_value(name, value):
+                del self.contradicted[name]
         self.episode.repairs.append(note)
         self.episode.log("repair", note)
 
@@ -222,11 +288,15 @@ class Core:
             raise Stop(f"reached the limit of {self.context.max_reasoning_steps} reasoning steps")
         self.episode.reasoning_steps += 1
 
-    def trouble(self, key: str, message: str) -> None:
-        """Count one more occurrence of a problem; give up when it keeps coming back."""
-        self.counts[key] += 1
-        if self.counts[key] > MAX_SAME_REPAIR:
+    def again(self, kind: Any, key: str, message: str) -> None:
+        """One more occurrence of a repeated problem; give up when it keeps coming back."""
+        if not self.budget.again(kind, key):
             raise Stop(message)
+
+    def forget_pointer(self) -> None:
+        """After presses the belief cannot follow, assume no procedure is in progress."""
+        self.belief.set_pointer(None)
+        self.reread()
 
 
 # --- values ------------------------------------------------------------------------------------

@@ -1,0 +1,82 @@
+"""The display learner: repair the belief's display rules from text it could not read.
+
+A reader of a manual copies display texts wrong — ``P{value}`` for what the panel prints as
+``PL7``, "TEMP" for "TEMPERATURE". The belief can then read none of that setting's screens:
+each is *unknown* text. Walking the setting shows several of them; what they share is the
+template's own text and what varies is the value (:func:`apbot.agent.infer.infer_template`).
+The learnt template becomes a data edit of the model (``label`` or ``show``), accepted only if
+the repaired belief reads back every text it was learnt from.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Sequence
+from typing import Any
+
+from apbot.agent.infer import infer_template
+from apbot.agent.reader import DisplayReader
+from apbot.agent.repair import RepairError, set_display
+from apbot.agent.session import Session, loose
+from apbot.model.display import display_value
+from apbot.model.schema import DiscreteVariable
+
+_LAMP_GAP = re.compile(r"\s{2,}")
+
+
+class DisplayLearner:
+    """Learn how the display prints a setting from texts that showed it."""
+
+    def __init__(self, session: Session) -> None:
+        self.session = session
+
+    def learn(self, name: str, texts: Sequence[str], believed: Any = None) -> bool:
+        """Repair ``name``'s display rules so that these texts read as its values (once per
+        setting; ``believed``: the value a single text is believed to show); True when the
+        belief changed."""
+        session = self.session
+        model = session.belief.model
+        spec = model.variables[name]
+        if isinstance(spec.show, dict) or not spec.visible:
+            return False  # a map of words per value: one wrong word is learnt by the walk
+        mains = [self._main(text) for text in dict.fromkeys(texts) if text.strip()]
+        template = infer_template(
+            mains,
+            lambda value: display_value(spec, value),
+            lambda text: loose(spec, text),
+            words=isinstance(spec, DiscreteVariable),
+            known=believed,
+        )
+        if template is None or not session.budget.once("template", name):
+            return False
+        try:
+            new = set_display(model, name, template)
+        except RepairError as exc:
+            session.episode.log("repair", f"could not repair how {name} is shown: {exc}")
+            return False
+        reader = DisplayReader(new)
+        if any(
+            not any(h.screen.variable == name for h in reader.read(text).hypotheses)
+            for text in mains
+        ):
+            return False
+        session.adopt(new, f"{name} is shown as {template!r}", session.belief.pointer())
+        return True
+
+    def read(self, name: str, text: str) -> Any:
+        """``name``'s value in ``text`` under the (repaired) belief, or None."""
+        context = self.session.belief.values()
+        for hypothesis in self.session.perceiver.reader.read(text, context).hypotheses:
+            if hypothesis.screen.variable == name:
+                found = {**hypothesis.outside, **hypothesis.values}
+                if name in found:
+                    return found[name]
+        return None
+
+    def _main(self, text: str) -> str:
+        """The main display: the text without the lamps the belief knows at its end."""
+        lamps = self.session.perceiver.reader.lamp_texts()
+        parts = _LAMP_GAP.split(text.strip())
+        while len(parts) > 1 and parts[-1].casefold() in lamps:
+            parts.pop()
+        return "  ".join(parts)

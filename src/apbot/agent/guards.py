@@ -1,0 +1,203 @@
+"""The guard learner: explain, lift and learn the conditions under which keys do not work.
+
+A refusal the belief can explain by one of its guards (the display shows that guard's message)
+tells where the appliance is: the lock is on, the knob at OFF. A refusal — or a key ignored
+without a sign — that no guard of the belief explains is a guard the reader missed or got wrong:
+a key the belief's guard lets through is struck from it; otherwise the learner looks for the
+setting that blocks the key (a switched-off appliance behind a dark display, a lock behind a
+beep), changes it, presses the key again, and writes the guard it found into the belief.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from apbot.agent.repair import RepairError, add_guard, disallow
+from apbot.agent.session import Executed, Session
+from apbot.model.display import OFF_WORDS
+from apbot.model.schema import DiscreteVariable
+from apbot.plan.plan import Unreachable, plan
+
+ON_WORDS = frozenset({"on", "locked", "lock", "yes", "true", "enabled", "running"})
+MAX_SUSPECTS = 3  # settings tried as the cause of one refusal
+
+
+class GuardLearner:
+    """Explain refusals by the belief's guards; learn the guards it lacks."""
+
+    def __init__(self, session: Session) -> None:
+        self.session = session
+
+    def explain(self, refused: Executed) -> bool:
+        """A refusal whose display is one of the belief's guard messages: believe that guard
+        holds (the knob is at OFF, the lock is on) and let the planner lift it."""
+        compiled = self.session.belief.compiled
+        action = compiled.action_index.get(refused.action.name)
+        text = refused.feedback.text.strip()
+        shown = self._guards_shown(text)
+        for index, guard in enumerate(compiled.guards):
+            if action in guard.allowed or index not in shown:
+                continue
+            if all(self.session.belief.state.values[v] in ok for v, ok in guard.conditions):
+                return False  # the belief already knew: something else is wrong
+            if not self.session.budget.once("guard", guard.name or guard.display):
+                return False
+            for v, ok in guard.conditions:
+                domain = compiled.vars[v].domain(self.session.belief.state.values)
+                if domain is not None:
+                    self.session.belief.set_value(compiled.vars[v].name, domain.values[min(ok)])
+            self.session.episode.log(
+                "repair", f"refused with {text!r}: the appliance must be in '{guard.name or text}'"
+            )
+            return True
+        return False
+
+    def _guards_shown(self, text: str) -> set[int]:
+        """The belief's guards whose screen this text is (a message, or a dark panel)."""
+        reading = self.session.perceiver.reader.read(text, self.session.belief.values())
+        return {h.screen.guard for h in reading.hypotheses if h.screen.guard is not None}
+
+    def learn(self, failed: Executed) -> bool:
+        """A key refused (or ignored) that no guard of the belief explains: strike it from a
+        guard that wrongly allows it, or find the setting that blocks it. True if the belief
+        changed."""
+        return self._disallow(failed) or self._find_blocking(failed)
+
+    def _disallow(self, failed: Executed) -> bool:
+        """A guard of the belief holds and lists the refused key as allowed: it is not."""
+        if not failed.refused:
+            return False
+        session = self.session
+        compiled = session.belief.compiled
+        action = compiled.action_index.get(failed.action.name)
+        text = failed.feedback.text.strip()
+        for index, guard in enumerate(compiled.guards):
+            holds = all(session.belief.state.values[v] in ok for v, ok in guard.conditions)
+            if not holds or action not in guard.allowed:
+                continue
+            if guard.display and index not in self._guards_shown(text):
+                continue
+            if not session.budget.once("guard", f"disallow:{index}:{failed.action.name}"):
+                return False
+            try:
+                new = disallow(session.belief.model, index, failed.action.name)
+            except RepairError as exc:
+                session.episode.log("repair", f"could not change guard {index}: {exc}")
+                return False
+            session.adopt(
+                new,
+                f"{guard.name or 'guard ' + str(index)} does not let {failed.action.name} work",
+                session.belief.pointer(),
+            )
+            return True
+        return False
+
+    def _find_blocking(self, failed: Executed) -> bool:
+        """Change each setting that could block the key (an off switch behind a dark display,
+        an on lock behind a refusal) and press the key again; the one after which it works is
+        the guard."""
+        session = self.session
+        dark = not failed.feedback.text.strip()
+        if not (dark or failed.refused):
+            return False  # ignored on a lit display: a procedure's step, not a guard
+        for name, blocking in self._suspects(failed, dark)[:MAX_SUSPECTS]:
+            if not session.budget.once("guard", f"learn:{failed.action.name}:{name}"):
+                continue
+            other = next(v for v in session.domain_values(name) if v != blocking)
+            try:
+                route = plan(session.belief.compiled, session.belief.state, {name: other})
+            except Unreachable:
+                continue
+            lifting = [a.name for a in route.actions]
+            for planned in route.actions:
+                session.press(planned, exploring=True)
+            before = session.last.text
+            retry = session.press(failed.action, exploring=True)
+            if (
+                not (retry.believed_accepted and retry.feedback.accepted)
+                or retry.unchanged
+                or retry.feedback.text == before
+                or (retry.surprises and retry.variable not in retry.surprises)
+            ):
+                continue
+            try:
+                new = add_guard(
+                    session.belief.model,
+                    {name: blocking},
+                    sorted(set(lifting) | self._switching(name)),
+                    "" if dark else failed.feedback.text.strip(),
+                    hide=dark,
+                )
+            except RepairError as exc:
+                session.episode.log("repair", f"could not add a guard on {name}: {exc}")
+                continue
+            session.adopt(
+                new,
+                f"while {name} is {blocking}, {failed.action.name} does not work",
+                session.belief.pointer(),
+            )
+            return True
+        return False
+
+    def _suspects(self, failed: Executed, dark: bool) -> list[tuple[str, Any]]:
+        """Two-valued settings at a value that plausibly blocks keys: off behind a dark display,
+        on (a lock, a running cycle) behind a refusal."""
+        words = OFF_WORDS if dark else ON_WORDS
+        suspects = []
+        model = self.session.belief.model
+        guarded = {  # a switch whose other value is a guard already (power on, not off)
+            name: {str(v) for v in (w if isinstance(w, list) else [w])}
+            for guard in model.guards
+            for name, w in guard.when.items()
+        }
+        for name, spec in model.variables.items():
+            if not isinstance(spec, DiscreteVariable) or spec.depends_on is not None:
+                continue
+            if name in guarded and str(self.session.belief.value(name)) not in guarded[name]:
+                continue
+            value = self.session.belief.value(name)
+            if value is None or str(value).casefold() not in words:
+                continue
+            if len(self.session.domain_values(name)) == 2 and self._switching(name):
+                suspects.append((name, value))
+        return suspects
+
+    def _switching(self, name: str) -> set[str]:
+        """The keys of the steps that change ``name`` itself."""
+        model = self.session.belief.model
+        return {
+            a
+            for steps in model.features.values()
+            for s in steps
+            if s.variable == name
+            for a in s.actions
+        }
+
+    def lift(self, action: str) -> None:
+        """Bring the appliance out of any guard that would refuse ``action`` (switch it on,
+        unlock it), so that a probe with ``action`` can tell something."""
+        compiled = self.session.belief.compiled
+        index = compiled.action_index[action]
+        for guard in compiled.guards:
+            holds = all(self.session.belief.state.values[v] in ok for v, ok in guard.conditions)
+            if index in guard.allowed or not holds:
+                continue
+            for v, ok in guard.conditions:
+                domain = compiled.vars[v].domain(self.session.belief.state.values)
+                others = [
+                    value for i, value in enumerate(domain.values if domain else ()) if i not in ok
+                ]
+                if not others:
+                    continue
+                try:
+                    found = plan(
+                        compiled,
+                        self.session.belief.state,
+                        {compiled.vars[v].name: others[0]},
+                        self.session.config.plan_budget,
+                    )
+                except Unreachable:
+                    continue
+                for planned in found.actions:
+                    self.session.press(planned, exploring=True)
+                break

@@ -1,0 +1,155 @@
+"""Perception: one piece of feedback, read in the belief's terms, in the light of a prediction.
+
+Feedback comes as display text (what a robot sees), and from some environments also as values
+under the environment's own names (the paper's simulator). Values, when given, are mapped by
+name (:mod:`apbot.agent.estimate`); otherwise the display text is read by inverting the
+belief's own display rules (:mod:`apbot.agent.reader`). Either way the result is a
+:class:`Seen`.
+
+The display reader returns every reading that fits; the one that counts is the one closest to
+what the belief predicted (the predicted screen first, then the fewest values the belief
+cannot hold, then the most values as predicted). Readings that remain tied and disagree about
+a variable leave it as a set of candidates — later presses decide it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+from apbot.agent.environment import Feedback
+from apbot.agent.estimate import StateEstimator
+from apbot.agent.reader import DisplayReader, Hypothesis, Reading, is_read
+from apbot.model.schema import ApplianceModel
+
+MISSING: Any = type("Missing", (), {"__repr__": lambda self: "MISSING"})()
+"""Not shown on the display at all (a ``None`` value means shown as ``--``)."""
+UNREADABLE: Any = type("Unreadable", (), {"__repr__": lambda self: "UNREADABLE"})()
+"""The display showed something, but nothing the belief's display rules can print."""
+
+
+@dataclass
+class Seen:
+    """What one feedback says about the belief's variables.
+
+    ``values``: variable → value in its belief domain; ``outside``: variable → a value of the
+    right type the belief's domain lacks (evidence the belief is wrong); ``candidates``:
+    variables the display leaves ambiguous, with the values it allows; ``absent``: shown as
+    ``--``. ``screen``: the variable the main display is adjusting, and ``screen_kind`` what the
+    main display shows (``focus``, ``idle``, ``guard``; None when the readings disagree or in
+    values mode, where there is no screen to read). ``unknown``: the text fits none of the belief's
+    screens; ``blank``: the display shows nothing.
+    """
+
+    text: str = ""
+    values: dict[str, Any] = field(default_factory=dict)
+    outside: dict[str, Any] = field(default_factory=dict)
+    candidates: dict[str, frozenset[Any]] = field(default_factory=dict)
+    absent: set[str] = field(default_factory=set)
+    screen: str | None = None
+    screen_kind: str | None = None
+    unknown: bool = False
+    blank: bool = False
+    partial: bool = False
+
+    def observed(self, name: str) -> Any:
+        """The value shown for ``name``: MISSING if not shown, None if shown as ``--``."""
+        if name in self.values:
+            return self.values[name]
+        if name in self.outside:
+            return self.outside[name]
+        if name in self.absent:
+            return None
+        return MISSING
+
+    def showing(self, name: str) -> bool:
+        """Whether the main display is adjusting ``name`` (True when it cannot tell)."""
+        return self.screen_kind is None or (self.screen_kind, self.screen) == ("focus", name)
+
+    def shown(self) -> set[str]:
+        """The variables this feedback says something about."""
+        return set(self.values) | set(self.outside) | set(self.candidates) | self.absent
+
+
+class Perceiver:
+    """Reads feedback against one belief model; rebind it after a repair."""
+
+    def __init__(self, belief: ApplianceModel) -> None:
+        self.estimator = StateEstimator(belief)
+        self.reader = DisplayReader(belief)
+
+    def rebind(self, belief: ApplianceModel) -> None:
+        """Use a repaired belief (name matches learnt by the estimator are kept)."""
+        self.estimator.rebind(belief)
+        self.reader = DisplayReader(belief)
+
+    def perceive(
+        self,
+        feedback: Feedback,
+        context: Mapping[str, Any],
+        expected_screen: tuple[str, str | None] | None = None,
+    ) -> Seen:
+        """Read ``feedback``; ``context`` holds the predicted values, ``expected_screen`` the
+        predicted screen as (kind, variable), e.g. ``("focus", "timer")`` or ``("idle", None)``.
+        """
+        seen = choose(self.reader.read(feedback.text, context), context, expected_screen)
+        if not feedback.values:
+            return seen
+        # values by name are exact; the text adds what they leave out (and the screen), when
+        # the belief can read it at all (a third-party display may look nothing like it)
+        estimate = self.estimator.estimate(feedback, context=context)
+        named = set(estimate.values) | set(estimate.outside)
+        if seen.unknown:
+            seen = Seen(feedback.text)
+        for name in named:
+            seen.values.pop(name, None)
+            seen.outside.pop(name, None)
+            seen.candidates.pop(name, None)
+            seen.absent.discard(name)
+        seen.values.update(estimate.values)
+        seen.outside.update(estimate.outside)
+        return seen
+
+
+def choose(
+    reading: Reading, context: Mapping[str, Any], expected: tuple[str, str | None] | None
+) -> Seen:
+    """The reading closest to the prediction, ties merged into candidates."""
+    if reading.unknown:
+        return Seen(reading.text, unknown=True, blank=reading.blank)
+
+    def score(h: Hypothesis) -> tuple[int, int, int, int]:
+        kind, variable = expected or (None, None)
+        same_screen = h.screen.kind == kind and (kind != "focus" or h.screen.variable == variable)
+        differing = sum(
+            1
+            for name in h.shown()
+            if is_read(value := h.value(name)) and context.get(name) != value
+        )
+        return (0 if same_screen else 1, int(h.partial), len(h.outside), differing)
+
+    ranked = sorted(reading.hypotheses, key=score)
+    best = [h for h in ranked if score(h) == score(ranked[0])]
+    seen = Seen(reading.text, blank=reading.blank, partial=best[0].partial)
+    screens = {(h.screen.kind, h.screen.variable) for h in best}
+    if len(screens) == 1:
+        seen.screen_kind, seen.screen = screens.pop()
+    names = set().union(*(h.shown() for h in best))
+    for name in names:
+        options = {h.value(name) for h in best}
+        lamp_sets = [h.lamps[name] for h in best if name in h.lamps]
+        if len(options) == 1 and is_read(value := next(iter(options))):
+            if value is None:
+                seen.absent.add(name)
+            elif any(name in h.outside for h in best):
+                seen.outside[name] = value
+            else:
+                seen.values[name] = value
+            continue
+        allowed = {v for v in options if is_read(v)} | {v for s in lamp_sets for v in s}
+        if context.get(name) in allowed:
+            seen.values[name] = context[name]  # the belief's value is one of them: keep it
+        elif allowed:
+            seen.candidates[name] = frozenset(allowed)
+    return seen

@@ -1,0 +1,510 @@
+"""The display reader: display text → values in the belief's own names.
+
+A robot in front of a panel sees only what the display shows. The belief model says how the
+display prints things (``apbot.model.display``): a variable being adjusted through its ``show``
+template or label, the idle screen, a guard's message, lamps for indicators, values in their
+notation (``h:mm``, ``40%``, ``PL7``, ``--``). The reader inverts exactly those rules: it turns
+every *screen* the belief can show into a pattern, matches the text against all of them, and
+returns every reading that fits (:class:`Hypothesis`) — so an ambiguous display stays a set of
+candidates for the closed loop to decide with later presses.
+
+Three outcomes are kept apart, because they mean different things to the closed loop:
+
+* a reading that fits (perhaps with values the belief's domain lacks: ``outside``, the
+  evidence that the belief is wrong);
+* a *blank* display, which fits the screens that print nothing (switched off, an unlit idle
+  screen) — the reader says which;
+* text that fits no screen at all: **unknown**. It is evidence to weigh (the belief's display
+  rules may be wrong, or the display shows something transient such as ``00:00:80`` while
+  digits are typed), never the same as a dark display.
+
+When nothing fits exactly, the reader tries each screen inside the text (a display that shows
+the neighbouring step's value too) and marks such readings ``partial``.
+
+>>> from apbot.examples import load_example
+>>> reader = DisplayReader(load_example("microwave_keypad"))
+>>> [(h.screen.variable, h.values) for h in reader.read("PL7").hypotheses]
+[('power_level', {'power_level': 7})]
+>>> reader.read("PL12").hypotheses[0].outside
+{'power_level': 12}
+>>> reader.read("HELLO WORLD").unknown
+True
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from functools import cached_property
+from typing import Any, Literal
+
+from apbot.model.display import (
+    ABSENT_TEXT,
+    DEFAULT_SHOW,
+    display_value,
+    lamp_for,
+    show_template,
+)
+from apbot.model.domain import (
+    AnyVariable,
+    Domain,
+    ValueProblem,
+    all_values,
+    build_domain,
+    case_domains,
+    normalise,
+    parse_value,
+)
+from apbot.model.schema import TEMPLATE_FIELD, ApplianceModel, DiscreteVariable, TimeVariable
+
+ScreenKind = Literal["focus", "idle", "guard"]
+_MAX_CACHE = 4096
+_ABSENT = object()
+
+
+@dataclass(frozen=True)
+class Screen:
+    """One thing the display can show: a variable being adjusted (``focus``), the idle screen,
+    or a guard's text. ``fixed`` holds values the screen itself implies (the ``show`` entry of
+    a value: ``RUN`` means running is on)."""
+
+    kind: ScreenKind
+    variable: str | None = None
+    guard: int | None = None
+    template: str = ""
+    fixed: tuple[tuple[str, Any], ...] = ()
+
+    @property
+    def blank(self) -> bool:
+        return not self.template.strip()
+
+    def describe(self) -> str:
+        if self.kind == "focus":
+            return f"{self.variable} being adjusted"
+        if self.kind == "idle":
+            return "the idle screen"
+        return f"guard {self.guard} ({self.template or 'dark'})"
+
+
+@dataclass(frozen=True)
+class Hypothesis:
+    """One way the text fits the belief's display rules.
+
+    ``values``: belief variable → canonical value in its (current) belief domain;
+    ``outside``: variable → value of the right type that the belief's domain lacks;
+    ``absent``: variables shown as ``--``; ``lamps``: indicator → the values its lamps allow
+    (more than one when lamps cannot tell them apart); ``partial``: the screen was found inside
+    a longer text.
+    """
+
+    screen: Screen
+    values: dict[str, Any] = field(default_factory=dict)
+    outside: dict[str, Any] = field(default_factory=dict)
+    absent: frozenset[str] = frozenset()
+    lamps: dict[str, frozenset[Any]] = field(default_factory=dict)
+    partial: bool = False
+
+    def shown(self) -> set[str]:
+        """Every variable this reading says something about."""
+        return set(self.values) | set(self.outside) | set(self.absent) | set(self.lamps)
+
+    def value(self, name: str) -> Any:
+        """The value read for ``name`` (``outside`` ones included); ``_ABSENT`` if none."""
+        if name in self.values:
+            return self.values[name]
+        if name in self.outside:
+            return self.outside[name]
+        lamp = self.lamps.get(name)
+        if lamp is not None and len(lamp) == 1:
+            return next(iter(lamp))
+        return None if name in self.absent else _ABSENT
+
+
+@dataclass(frozen=True)
+class Reading:
+    """Everything the text could mean. No hypothesis at all: the text is unknown."""
+
+    text: str
+    hypotheses: tuple[Hypothesis, ...]
+
+    @property
+    def unknown(self) -> bool:
+        return not self.hypotheses
+
+    @property
+    def blank(self) -> bool:
+        return not self.text.strip()
+
+    def candidates(self, name: str) -> set[Any]:
+        """Every value some hypothesis reads for ``name`` (None for ``--``)."""
+        found: set[Any] = set()
+        for hypothesis in self.hypotheses:
+            value = hypothesis.value(name)
+            if value is not _ABSENT:
+                found.add(value)
+            elif name in hypothesis.lamps:
+                found |= set(hypothesis.lamps[name])
+        return found
+
+
+def is_read(value: Any) -> bool:
+    """Whether :meth:`Hypothesis.value` found a value (None included: shown as ``--``)."""
+    return value is not _ABSENT
+
+
+# --- compiling the belief's display rules ------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class _Pattern:
+    screen: Screen
+    regex: re.Pattern[str]
+    fields: tuple[tuple[str, str], ...]  # (group, variable)
+    search: re.Pattern[str] | None  # the main text alone, for a partial match
+
+
+class DisplayReader:
+    """Reads display text against one belief model (rebuild it after a repair)."""
+
+    def __init__(self, belief: ApplianceModel) -> None:
+        self.belief = belief
+        self._specs = dict(belief.variables)
+        self._cache: dict[tuple[str, tuple[tuple[str, Any], ...]], Reading] = {}
+
+    # --- public --------------------------------------------------------------------------
+
+    def read(self, text: str, context: Mapping[str, Any] | None = None) -> Reading:
+        """Every reading of ``text`` that fits the belief's display rules.
+
+        ``context``: the believed values, so that a programme-dependent setting is read in the
+        current programme's domain (a programme shown in the same text takes precedence).
+        """
+        parents = tuple(
+            (name, context.get(name)) for name in self._parent_names if context is not None
+        )
+        key = (text, parents)
+        cached = self._cache.get(key)
+        if cached is not None:
+            return cached
+        reading = self._read(text, dict(parents))
+        if len(self._cache) >= _MAX_CACHE:
+            self._cache.clear()
+        self._cache[key] = reading
+        return reading
+
+    def lamp_texts(self) -> set[str]:
+        """Every text a lamp of the belief can show (case-folded)."""
+        return {t.casefold() for rows in self._lamp_table.values() for _, t in rows if t}
+
+    def screens(self) -> list[Screen]:
+        """Every screen the belief can show."""
+        return [p.screen for p in self._patterns]
+
+    def render(self, screen: Screen, values: Mapping[str, Any]) -> str:
+        """The main text of ``screen`` with these values (for tests and explanations)."""
+        spec = self._specs.get(screen.variable or "")
+        template = screen.template
+
+        def fill(match: re.Match[str]) -> str:
+            name = match.group(1)
+            if name == "value":
+                name = screen.variable or ""
+            if name == "label" and spec is not None:
+                return spec.display_label(screen.variable or "")
+            return display_value(self._specs[name], values.get(name))
+
+        return TEMPLATE_FIELD.sub(fill, template).strip()
+
+    # --- reading -------------------------------------------------------------------------
+
+    def _read(self, text: str, parents: dict[str, Any]) -> Reading:
+        found = [h for p in self._patterns if (h := self._match(p, text, parents, False))]
+        if not found and text.strip():  # a word the belief does not know
+            found = [h for p in self._loose if (h := self._match(p, text, parents, False))]
+        if not found and text.strip():  # more on the display than the belief prints
+            main = self._without_lamps(text)
+            found = [
+                h
+                for p in self._patterns
+                if p.search is not None and (h := self._match(p, main, parents, True))
+            ]
+        return Reading(text, tuple(_unique(found)))
+
+    def _without_lamps(self, text: str) -> str:
+        """The text without the lamps the belief knows at its end (a lamp alone is no reading
+        of the main display)."""
+        trailing = re.compile(rf"\s+(?:{self._lamp_words.pattern})\s*$", re.IGNORECASE)
+        while (match := trailing.search(text)) is not None and match.start() > 0:
+            text = text[: match.start()]
+        return text
+
+    def _match(
+        self, pattern: _Pattern, text: str, parents: dict[str, Any], partial: bool
+    ) -> Hypothesis | None:
+        regex = pattern.search if partial else pattern.regex
+        assert regex is not None
+        match = regex.search(text) if partial else regex.fullmatch(text)
+        if match is None:
+            return None
+        screen = pattern.screen
+        values: dict[str, Any] = dict(screen.fixed)
+        outside: dict[str, Any] = {}
+        absent: set[str] = set()
+        # parents first: a setting is read in the domain of the programme shown with it
+        fields = sorted(pattern.fields, key=lambda f: self._specs[f[1]].depends_on is not None)
+        for group, name in fields:
+            raw = match.group(group)
+            outcome = self._interpret(name, raw, {**parents, **values})
+            if outcome is None:
+                return None
+            kind, value = outcome
+            if kind == "value":
+                if name in values and values[name] != value:
+                    return None  # one screen, two readings of one variable
+                values[name] = value
+            elif kind == "outside":
+                outside[name] = value
+            else:
+                absent.add(name)
+        lamps: dict[str, frozenset[Any]] = {}
+        if not partial and not self._dark(screen):
+            lit = match.group("_lamps") or ""
+            lamps = self._lamps(lit, screen.variable)
+            if lamps is None:
+                return None
+        for name, allowed in lamps.items():  # a value the screen printed wins over its lamp
+            if name in values and values[name] not in allowed:
+                return None
+        return Hypothesis(screen, values, outside, frozenset(absent), lamps, partial)
+
+    def _interpret(self, name: str, raw: str, known: Mapping[str, Any]) -> tuple[str, Any] | None:
+        """A captured field as ("value", v), ("outside", v), ("absent", None), or None."""
+        spec = self._specs[name]
+        text = raw.strip()
+        if text == ABSENT_TEXT:
+            return "absent", None
+        domain = self._domain(name, known)
+        if domain is not None:
+            try:
+                return "value", normalise(spec, text, domain)
+            except ValueProblem:
+                pass
+        try:
+            value = parse_value(spec, text)
+        except ValueProblem:
+            return None
+        return "outside", value
+
+    def _domain(self, name: str, known: Mapping[str, Any]) -> Domain | None:
+        spec = self._specs[name]
+        if spec.depends_on is None:
+            return self._own_domains[name]
+        parent = known.get(spec.depends_on)
+        cases = self._case_domains[name]
+        if parent is None:
+            return self._union_domains[name]
+        return cases.get(str(parent))
+
+    def _lamps(self, lit: str, focus: str | None) -> dict[str, frozenset[Any]] | None:
+        """Indicator values allowed by the lit lamps (None: text that is no lamp)."""
+        texts = self._lamp_words.findall(lit) if lit.strip() else []
+        if lit.strip() and _squash("".join(texts)) != _squash(lit):
+            return None
+        on = {_squash(t) for t in texts}
+        allowed: dict[str, frozenset[Any]] = {}
+        for name, by_value in self._lamp_table.items():
+            if name == focus:
+                continue  # the main display shows it; its lamp is not lit separately
+            lit_values = [v for v, t in by_value if t and _squash(t) in on]
+            unlit = [v for v, t in by_value if not t]
+            chosen = lit_values or unlit
+            if chosen and len(chosen) < len(by_value):
+                allowed[name] = frozenset(chosen)
+        return allowed
+
+    # --- compiled once ---------------------------------------------------------------------
+
+    @cached_property
+    def _parent_names(self) -> tuple[str, ...]:
+        return tuple(sorted({s.depends_on for s in self._specs.values() if s.depends_on}))
+
+    @cached_property
+    def _own_domains(self) -> dict[str, Domain | None]:
+        return {
+            n: build_domain(s) if s.depends_on is None else None for n, s in self._specs.items()
+        }
+
+    @cached_property
+    def _case_domains(self) -> dict[str, dict[str, Domain]]:
+        return {n: case_domains(s) for n, s in self._specs.items() if s.depends_on}
+
+    @cached_property
+    def _union_domains(self) -> dict[str, Domain]:
+        union: dict[str, Domain] = {}
+        for name, cases in self._case_domains.items():
+            values = tuple(dict.fromkeys(v for d in cases.values() for v in d.values))
+            kind = next(iter(cases.values())).kind if cases else "discrete"
+            union[name] = Domain(kind, values, 0, False)
+        return union
+
+    @cached_property
+    def _lamp_table(self) -> dict[str, list[tuple[Any, str]]]:
+        table: dict[str, list[tuple[Any, str]]] = {}
+        for name in self.belief.display.indicators:
+            spec = self._specs[name]
+            values = tuple(all_values(spec))
+            table[name] = [(v, lamp_for(spec, name, v, values)) for v in values]
+        return table
+
+    @cached_property
+    def _lamp_words(self) -> re.Pattern[str]:
+        texts = sorted({t for rows in self._lamp_table.values() for _, t in rows if t}, key=len)
+        if not texts:
+            return re.compile(r"(?!x)x")
+        return re.compile("|".join(_literal(t) for t in reversed(texts)), re.IGNORECASE)
+
+    @cached_property
+    def _screens(self) -> list[Screen]:
+        screens: list[Screen] = []
+        model = self.belief
+        for name, spec in self._specs.items():
+            for template, value in _focus_templates(spec):
+                fixed = () if value is _ABSENT else ((name, value),)
+                screens.append(
+                    Screen("focus", name, template=template if spec.visible else "", fixed=fixed)
+                )
+        screens.append(Screen("idle", template=model.display.idle))
+        for index, guard in enumerate(model.guards):
+            if guard.display or guard.hide:
+                screens.append(Screen("guard", guard=index, template=guard.display))
+        return screens
+
+    @cached_property
+    def _patterns(self) -> list[_Pattern]:
+        return [self._compile(screen, screen.variable, loose=False) for screen in self._screens]
+
+    @cached_property
+    def _loose(self) -> list[_Pattern]:
+        """Patterns whose word fields take any words: for a value the belief lacks (only on
+        screens with text of their own around the field)."""
+        loose = []
+        for screen in self._screens:
+            own = screen.template.replace("{label}", "label" if screen.variable else "")
+            if not TEMPLATE_FIELD.sub("", own).strip():
+                continue  # a bare "{value}" would read any text at all as a word
+            names = [
+                screen.variable if n == "value" else n
+                for n in TEMPLATE_FIELD.findall(screen.template)
+            ]
+            if any(
+                isinstance(self._specs.get(n or ""), DiscreteVariable)
+                and n not in dict(screen.fixed)
+                for n in names
+            ):
+                loose.append(self._compile(screen, screen.variable, loose=True))
+        return loose
+
+    def _compile(self, screen: Screen, focus: str | None, loose: bool) -> _Pattern:
+        parts: list[str] = []
+        fields: list[tuple[str, str]] = []
+        position = 0
+        template = screen.template.strip()
+        label = self._specs[focus].display_label(focus) if focus else ""
+        for match in TEMPLATE_FIELD.finditer(template):
+            parts.append(_literal(template[position : match.start()]))
+            position = match.end()
+            name = match.group(1)
+            if name == "label":
+                parts.append(_literal(label))
+                continue
+            if name == "value":
+                if focus is None:
+                    parts.append(r"\S+")
+                    continue
+                name = focus
+            if name not in self._specs:
+                parts.append(_literal(match.group(0)))
+                continue
+            fixed = dict(screen.fixed)
+            if name in fixed:  # the screen belongs to one value: print it literally
+                parts.append(_literal(display_value(self._specs[name], fixed[name])))
+                continue
+            group = f"f{len(fields)}"
+            fields.append((group, name))
+            parts.append(f"(?P<{group}>{self._value_pattern(name, loose)})")
+        parts.append(_literal(template[position:]))
+        main = "".join(parts)
+        lamps = self._lamp_words.pattern
+        if self._dark(screen):  # the panel shows the guard's text and nothing else
+            regex = rf"\s*{main}(?P<_lamps>)\s*"
+            search = None
+        elif main:
+            regex = rf"\s*{main}(?P<_lamps>(?:\s+(?:{lamps}))*)\s*"
+            search = re.compile(rf"(?<![\w:.%]){main}(?![\w:.%])", re.IGNORECASE)
+        else:
+            regex = rf"\s*(?P<_lamps>(?:{lamps})(?:\s+(?:{lamps}))*)?\s*"
+            search = None
+        return _Pattern(screen, re.compile(regex, re.IGNORECASE), tuple(fields), search)
+
+    def _dark(self, screen: Screen) -> bool:
+        return screen.kind == "guard" and self.belief.guards[screen.guard or 0].hide
+
+    def _value_pattern(self, name: str, loose: bool = False) -> str:
+        """What a printed value of ``name`` can look like: its known renderings, or any
+        number/time of its kind (a value the belief lacks must still be readable)."""
+        spec = self._specs[name]
+        known = sorted({display_value(spec, v) for v in all_values(spec)} | {ABSENT_TEXT}, key=len)
+        alternatives = [_literal(k) for k in reversed(known)]
+        if isinstance(spec, DiscreteVariable) and loose:
+            alternatives.append(r"\S+(?: \S+)*?")
+        elif isinstance(spec, TimeVariable):
+            alternatives.append(r"\d+(?::\d{1,2}){0,2}(?:\s?(?:h|hr|hrs|min|mins|s|sec))?")
+        elif not isinstance(spec, DiscreteVariable):
+            unit = rf"(?:\s?{re.escape(spec.unit)})?" if spec.unit else ""
+            alternatives.append(rf"[-+]?\d+(?:[.,]\d+)?{unit}")
+        return "|".join(alternatives)
+
+
+def _focus_templates(spec: AnyVariable) -> list[tuple[str, Any]]:
+    """The templates a variable is shown through, each with the value it belongs to: one per
+    ``show`` entry, then the general one (value ``_ABSENT``) for the values without one."""
+    if not isinstance(spec.show, dict):
+        return [(show_template(spec, None), _ABSENT)]
+    values = list(all_values(spec))
+    found: list[tuple[str, Any]] = [
+        (spec.show[str(value)], value) for value in values if str(value) in spec.show
+    ]
+    if any(str(v) not in spec.show for v in values) or spec.depends_on is not None:
+        found.append((DEFAULT_SHOW, _ABSENT))
+    return found
+
+
+def _literal(text: str) -> str:
+    """A template's literal text as a pattern: any run of spaces matches any run of spaces."""
+    return (
+        r"\s+".join(re.escape(part) for part in re.split(r"\s+", text))
+        if text.strip()
+        else (r"\s*" if text else "")
+    )
+
+
+def _squash(text: str) -> str:
+    return re.sub(r"\s+", "", text).casefold()
+
+
+def _unique(found: list[Hypothesis]) -> list[Hypothesis]:
+    seen: set[tuple[Any, ...]] = set()
+    result = []
+    for h in found:
+        key = (
+            h.screen,
+            tuple(sorted(h.values.items(), key=str)),
+            tuple(sorted(h.outside.items(), key=str)),
+            h.absent,
+            tuple(sorted(h.lamps.items(), key=str)),
+        )
+        if key not in seen:
+            seen.add(key)
+            result.append(h)
+    return result

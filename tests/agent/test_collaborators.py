@@ -1,0 +1,133 @@
+"""Each collaborator of the closed loop on its own: the session's press, the explorer, the
+procedure repairer and the greedy executor, each driven directly against a true simulator."""
+
+from __future__ import annotations
+
+from apbot.agent.budget import Budget
+from apbot.agent.displays import DisplayLearner
+from apbot.agent.environment import SimulatorEnvironment
+from apbot.agent.episode import TaskContext
+from apbot.agent.explorer import Explorer
+from apbot.agent.greedy import GreedyExecutor
+from apbot.agent.guards import GuardLearner
+from apbot.agent.perception import MISSING
+from apbot.agent.procedures import ProcedureRepairer
+from apbot.agent.session import AgentConfig, Session
+from apbot.model.schema import ApplianceModel
+from apbot.plan.plan import plan
+from tests.helpers import model_from
+
+FAN = """
+controls: [{id: power}, {id: speed}, {id: timer}, {id: up}]
+variables:
+  power: {type: discrete, values: ["off", "on"]}
+  speed: {type: discrete, values: [%(speeds)s], label: SPEED}
+  timer: {type: numeric, unit: h, ranges: [[0, %(hours)s, 1]], wrap: true, label: TIMER}
+actions:
+  press_power: {control: power}
+  press_speed: {control: speed}
+  press_timer: {control: timer}
+  press_up: {control: up}
+features:
+  power: [{actions: [press_power], variable: power, effect: toggle}]
+  speed: [{actions: [press_speed], variable: speed, effect: next}]
+  timer:
+%(timer)s
+guards:
+  - {name: switched off, when: {power: "off"}, only: [press_power], display: "", hide: true}
+"""
+TIMER_STEPS = """    - {actions: [press_timer]}
+    - {actions: [press_up], variable: timer, effect: next}"""
+NO_ENTRY = """    - {actions: [press_timer, press_up], variable: timer,
+       effect: {press_timer: none, press_up: next}}"""
+
+
+def fan(speeds: str = "low, mid, high", hours: int = 4, timer: str = TIMER_STEPS) -> ApplianceModel:
+    return model_from(FAN % {"speeds": speeds, "hours": hours, "timer": timer})
+
+
+def session(truth: ApplianceModel, belief: ApplianceModel, feedback: str = "display") -> Session:
+    env = SimulatorEnvironment(truth, feedback)  # type: ignore[arg-type]
+    context = TaskContext("fan", "test", "t", "", {}, belief, actions=tuple(env.actions))
+    started = Session(AgentConfig(), context, env, Budget())
+    started.start()
+    return started
+
+
+def test_a_press_as_predicted_has_no_surprise_and_is_believed() -> None:
+    s = session(fan(), fan())
+    done = s.press(s.planned("press_power"))
+    assert not done.surprising and s.belief.value("power") == "on"
+    done = s.press(s.planned("press_speed"))
+    assert done.variable == "speed" and not done.surprises and s.shown("speed") == "mid"
+
+
+def test_a_press_not_as_predicted_keeps_the_observed_value_as_a_surprise() -> None:
+    s = session(fan(speeds="low, mid, high"), fan(speeds="low, high"))
+    s.press(s.planned("press_power"))
+    done = s.press(s.planned("press_speed"))
+    assert done.surprises == {"speed": ("high", "mid")}  # mid: a value the belief lacks
+    assert s.contradicted == {"speed": "mid"}
+
+
+def test_a_key_the_appliance_ignores_leaves_the_belief_where_it_was() -> None:
+    s = session(fan(), fan(timer=NO_ENTRY))  # the belief misses the TIMER entry step
+    s.press(s.planned("press_power"))
+    before = s.belief.state
+    done = s.press(s.planned("press_up"))
+    assert done.unchanged and s.belief.state == before
+
+
+def test_the_explorer_walks_until_a_value_repeats_and_repairs_the_domain() -> None:
+    s = session(fan(hours=6), fan(hours=4))
+    for action in ("press_power", "press_timer", "press_up"):
+        last = s.press(s.planned(action))
+    Explorer(s, DisplayLearner(s)).explore("timer", last)
+    assert s.belief.model.variables["timer"].ranges == [(0, 6, 1)]
+    assert s.episode.repairs and s.belief.value("timer") == s.shown("timer")
+
+
+def test_the_explorer_learns_an_entry_format_from_typed_digits() -> None:
+    # covered end to end in test_soundness; here: a format that already fits is left alone
+    s = session(fan(), fan())
+    s.press(s.planned("press_power"))
+    last = s.press(s.planned("press_speed"))
+    assert not Explorer(s, DisplayLearner(s)).learn_entry_format(
+        "speed", last, "mid", unchanged=False
+    )
+
+
+def test_the_repairer_finds_a_missing_entry_step_among_the_procedures_keys() -> None:
+    s = session(fan(), fan(timer=NO_ENTRY))
+    s.press(s.planned("press_power"))
+    done = s.press(s.planned("press_up"))
+    ProcedureRepairer(s, GuardLearner(s)).repair_procedure([done])
+    steps = s.belief.model.features["timer"]
+    assert steps[0].actions == ["press_timer"] and steps[0].variable is None
+    s.belief.set_pointer(None)
+    target = (s.belief.value("timer") + 2) % 5
+    planned = plan(s.belief.compiled, s.belief.state, {"timer": target})
+    assert [a.name for a in planned.actions] == ["press_timer", "press_up", "press_up"]
+    assert s.shown("timer") is not MISSING  # the probe left the setting on the display
+
+
+def test_the_guard_learner_explains_a_refusal_by_a_guard_once() -> None:
+    s = session(fan(), fan(), feedback="values")
+    s.belief.set_value("power", "on")  # the belief wrongly thinks the fan is on
+    done = s.press(s.planned("press_speed"))
+    guards = GuardLearner(s)
+    assert done.refused and guards.explain(done)
+    assert s.belief.value("power") == "off"
+    s.belief.set_value("power", "on")
+    assert not guards.explain(done)  # once only
+
+
+def test_the_greedy_executor_decides_every_press_from_the_display() -> None:
+    truth = fan()
+    s = session(truth, truth)
+    s.press(s.planned("press_power"))
+    macro = plan(s.belief.compiled, s.belief.state, {"speed": "high"}).macro_actions[0]
+    reasoning = s.episode.reasoning_steps
+    executed = GreedyExecutor(s).execute_greedily(macro)
+    assert s.shown("speed") == "high" and len(executed) == 2
+    assert s.episode.reasoning_steps == reasoning + 1  # the entry press was planned

@@ -1,0 +1,163 @@
+"""The display reader inverts the belief's own display rules, and says when it cannot."""
+
+from __future__ import annotations
+
+import random
+
+import pytest
+
+from apbot.agent.perception import choose
+from apbot.agent.reader import DisplayReader
+from apbot.bench.suite import load_suite
+from apbot.examples import load_example
+from apbot.sim.simulator import Simulator
+from tests.helpers import model_from
+
+OVEN = """
+controls: [{id: power}, {id: mode}, {id: time}, {id: temp}, {id: lock}, {id: start}]
+variables:
+  power: {type: discrete, values: ["off", "on"]}
+  mode: {type: discrete, values: [bake, grill, fan], label: MODE}
+  cook_time: {type: time, ranges: [["00:00:00", "02:00:00", 300]], format: "h:mm", label: TIME}
+  temperature: {type: numeric, unit: "°C", ranges: [[100, 250, 10]], initial: 180, wrap: true,
+                show: "{value} {cook_time}"}
+  level: {type: numeric, ranges: [[1, 10, 1]], initial: 5, wrap: true, show: "PL{value}"}
+  child_lock: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "LOCK"}}
+  running: {type: discrete, values: ["off", "on"]}
+  hidden_mode: {type: discrete, values: [a, b], visible: false}
+actions:
+  press_power: {control: power}
+  press_mode: {control: mode}
+  press_time: {control: time}
+  press_temp: {control: temp}
+  press_level: {control: temp}
+  hold_lock: {control: lock, skill: hold, seconds: 3}
+  press_start: {control: start}
+  press_hidden: {control: mode}
+features:
+  power: [{actions: [press_power], variable: power, effect: toggle}]
+  set_mode: [{actions: [press_mode], variable: mode, effect: next}]
+  set_time: [{actions: [press_time], variable: cook_time, effect: next}]
+  set_temperature: [{actions: [press_temp], variable: temperature, effect: next}]
+  set_level: [{actions: [press_level], variable: level, effect: next}]
+  lock: [{actions: [hold_lock], variable: child_lock, effect: toggle}]
+  start: [{actions: [press_start], variable: running, effect: {to: "on"}}]
+  hidden: [{actions: [press_hidden], variable: hidden_mode, effect: next}]
+guards:
+  - {name: switched off, when: {power: "off"}, only: [press_power], display: "", hide: true}
+  - {name: lock, when: {child_lock: "on"}, only: [hold_lock], display: "LOCKED"}
+display:
+  idle: "READY {cook_time}"
+  indicators: [child_lock, running]
+"""
+
+
+@pytest.fixture(scope="module")
+def reader() -> DisplayReader:
+    return DisplayReader(model_from(OVEN))
+
+
+def focus_readings(reader: DisplayReader, text: str, name: str) -> list[dict[str, object]]:
+    return [
+        {**h.values, **h.outside}
+        for h in reader.read(text).hypotheses
+        if h.screen.kind == "focus" and h.screen.variable == name
+    ]
+
+
+def test_values_are_read_in_the_variables_own_notation(reader: DisplayReader) -> None:
+    assert focus_readings(reader, "TIME 1:35", "cook_time") == [{"cook_time": "01:35:00"}]
+    assert focus_readings(reader, "PL7", "level") == [{"level": 7}]
+    assert focus_readings(reader, "MODE grill", "mode") == [{"mode": "grill"}]
+
+
+def test_a_template_naming_another_variable_reads_both(reader: DisplayReader) -> None:
+    assert focus_readings(reader, "190°C 0:45", "temperature") == [
+        {"temperature": 190, "cook_time": "00:45:00"}
+    ]
+
+
+def test_values_the_belief_lacks_are_kept_apart_as_evidence(reader: DisplayReader) -> None:
+    (hypothesis,) = [h for h in reader.read("PL12").hypotheses if h.screen.variable == "level"]
+    assert hypothesis.outside == {"level": 12} and not hypothesis.values
+    (word,) = [h for h in reader.read("MODE turbo").hypotheses if h.screen.variable == "mode"]
+    assert word.outside == {"mode": "turbo"}
+
+
+def test_lamps_after_the_main_text_give_the_indicators(reader: DisplayReader) -> None:
+    (idle,) = [h for h in reader.read("READY 0:30  LOCK  RUNNING").hypotheses]
+    assert idle.screen.kind == "idle" and idle.values == {"cook_time": "00:30:00"}
+    assert idle.lamps == {"child_lock": {"on"}, "running": {"on"}}
+    (unlit,) = [h for h in reader.read("READY 0:30").hypotheses]
+    assert unlit.lamps == {"child_lock": {"off"}, "running": {"off"}}
+
+
+def test_blank_unknown_and_guard_messages_are_different_things(reader: DisplayReader) -> None:
+    blank = reader.read("")
+    assert blank.blank and not blank.unknown
+    kinds = {(h.screen.kind, h.screen.variable) for h in blank.hypotheses}
+    assert ("guard", None) in kinds  # switched off
+    assert ("focus", "hidden_mode") in kinds  # an invisible setting being adjusted
+    assert reader.read("LOCKED").hypotheses[0].screen.kind == "guard"
+    unknown = reader.read("E-07 SERVICE")
+    assert unknown.unknown and not unknown.blank
+
+
+def test_a_transient_typing_display_is_unknown_not_a_value() -> None:
+    reader = DisplayReader(load_example("microwave_keypad"))
+    assert reader.read("COOK 00:80").unknown
+
+
+def test_more_on_the_display_than_the_belief_prints_is_a_partial_reading(
+    reader: DisplayReader,
+) -> None:
+    reading = reader.read("MODE fan  DOOR OPEN")
+    (hypothesis,) = [h for h in reading.hypotheses if h.screen.variable == "mode"]
+    assert hypothesis.partial and hypothesis.values == {"mode": "fan"}
+
+
+def test_spacing_and_case_do_not_matter(reader: DisplayReader) -> None:
+    assert focus_readings(reader, "  mode   GRILL ", "mode") == [{"mode": "grill"}]
+
+
+def test_ambiguous_readings_stay_candidates_and_the_prediction_decides() -> None:
+    model = model_from(
+        """
+        controls: [{id: a}, {id: b}]
+        variables:
+          left: {type: numeric, ranges: [[0, 9, 1]], show: "{value}"}
+          right: {type: numeric, ranges: [[0, 9, 1]], show: "{value}"}
+        actions: {press_a: {control: a}, press_b: {control: b}}
+        features:
+          left: [{actions: [press_a], variable: left, effect: next}]
+          right: [{actions: [press_b], variable: right, effect: next}]
+        """
+    )
+    reading = DisplayReader(model).read("4")
+    assert len(reading.hypotheses) >= 2
+    expecting_right = choose(reading, {"left": 0, "right": 3}, ("focus", "right"))
+    assert expecting_right.values == {"right": 4} and expecting_right.screen == "right"
+    undecided = choose(reading, {"left": 0, "right": 3}, None)
+    assert undecided.candidates == {"left": frozenset({4}), "right": frozenset({4})}
+    assert undecided.screen_kind is None
+
+
+def test_every_display_of_every_bundled_appliance_reads_back_as_its_true_state() -> None:
+    """The reader is the exact inverse of the simulator's rendering on the true model: along
+    random walks, some reading of every display agrees with the true state."""
+    for appliance in load_suite().appliances:
+        sim, reader = Simulator(appliance.model), DisplayReader(appliance.model)
+        rng = random.Random(appliance.id)
+        for _ in range(3):
+            sim.reset()
+            for _ in range(40):
+                observation = sim.step(rng.choice(sim.actions))
+                truth = sim.assignment()
+                reading = reader.read(observation.text, truth)
+                assert any(
+                    not h.outside
+                    and all(truth[n] == v for n, v in h.values.items())
+                    and all(truth[n] in allowed for n, allowed in h.lamps.items())
+                    and all(truth[n] is None for n in h.absent)
+                    for h in reading.hypotheses
+                ), (appliance.id, observation.text)

@@ -1,0 +1,132 @@
+"""The closed loop repairs the faults a reader of a manual makes, in display feedback mode.
+
+Each test writes a belief with one misreading of a true model and checks the outcome on the
+truth: the goal is reached (or a failure is declared — never a false claim of success), and the
+repair says what was learnt.
+"""
+
+from __future__ import annotations
+
+from importlib.resources import files
+from typing import Any
+
+from apbot.agent.environment import FeedbackMode, SimulatorEnvironment
+from apbot.agent.episode import Episode, TaskContext
+from apbot.agent.registry import get_method
+from apbot.model.goal import parse_goal
+from apbot.model.load import loads_model
+from apbot.model.schema import ApplianceModel
+
+
+def example(name: str, *replacements: tuple[str, str]) -> ApplianceModel:
+    text = (files("apbot") / f"data/examples/{name}.yaml").read_text()
+    for old, new in replacements:
+        assert old in text, old
+        text = text.replace(old, new)
+    return loads_model(text)
+
+
+def run(
+    truth: ApplianceModel,
+    belief: ApplianceModel,
+    goal: dict[str, Any],
+    feedback: FeedbackMode = "display",
+) -> tuple[Episode, bool]:
+    env = SimulatorEnvironment(truth, feedback)
+    context = TaskContext("unit", "test", "t", "", goal, belief, actions=tuple(env.actions))
+    episode = get_method("apbot").run(context, env)
+    reached = env.simulator.satisfies(parse_goal(truth, goal))
+    assert not (episode.claimed_success and not reached), "a false claim of success"
+    return episode, reached
+
+
+def test_a_display_template_copied_wrong_is_learnt_from_the_typed_values() -> None:
+    truth = example("microwave_keypad")
+    belief = example("microwave_keypad", ('show: "PL{value}"', 'show: "P{value}"'))
+    goal = {"cook_time": "00:01:30", "power_level": 7, "running": "on"}
+    episode, reached = run(truth, belief, goal)
+    assert reached and episode.claimed_success
+    assert "power_level is shown as 'PL{value}'" in episode.repairs
+
+
+def test_a_label_copied_wrong_is_learnt_by_walking_the_setting() -> None:
+    truth = example("toaster_oven_dial")
+    belief = example(
+        "toaster_oven_dial",
+        ('    initial: 180\n    label: "TEMP"', '    initial: 180\n    label: "TEMPERATURE"'),
+    )
+    goal = {"function": "bake", "temperature": 200}
+    episode, reached = run(truth, belief, goal)
+    assert reached and episode.claimed_success
+    assert "temperature is shown as 'TEMP {value}'" in episode.repairs
+
+
+def suite_model(appliance: str, *replacements: tuple[str, str]) -> ApplianceModel:
+    text = (files("apbot") / f"data/suite/{appliance}/model.yaml").read_text()
+    for old, new in replacements:
+        assert text.count(old) == 1, old
+        text = text.replace(old, new)
+    return loads_model(text)
+
+
+SHOWING_STEP = (
+    "- {actions: [press_humidity], variable: humidity, effect: next, on_entry: show}",
+    "- {actions: [press_humidity], variable: humidity, effect: next}",
+)
+
+
+def test_a_first_press_believed_to_change_a_setting_that_only_shows_it() -> None:
+    truth = suite_model("dehumidifier_4")
+    belief = suite_model("dehumidifier_4", SHOWING_STEP)  # the reader missed "press to show"
+    episode, reached = run(truth, belief, {"power": "on", "humidity": 60})
+    assert reached and episode.claimed_success
+    assert any("only shows it" in r for r in episode.repairs)
+
+
+def test_a_first_press_believed_to_show_a_setting_that_changes_it() -> None:
+    truth = suite_model("dehumidifier_4", SHOWING_STEP)
+    belief = suite_model("dehumidifier_4")
+    episode, reached = run(truth, belief, {"power": "on", "humidity": 60})
+    assert reached and episode.claimed_success
+    assert any("changes it at once" in r for r in episode.repairs)
+
+
+POWER_GUARD = (
+    """  - name: power off
+    when: {power: "off"}
+    only: [press_power]
+    display: ""
+    hide: true
+""",
+    "",
+)
+
+
+def test_a_missing_guard_behind_a_dark_display_is_found_and_learnt() -> None:
+    truth = example("washing_machine")
+    belief = example("washing_machine", POWER_GUARD)  # keys believed to work while off
+    episode, reached = run(truth, belief, {"programme": "wool"})
+    assert reached and episode.claimed_success
+    assert "while power is off, turn_programme_cw does not work" in episode.repairs
+
+
+LOCKED_AT_START = (
+    '  child_lock:\n    type: discrete\n    values: ["off", "on"]\n',
+    '  child_lock:\n    type: discrete\n    values: ["off", "on"]\n    initial: "on"\n',
+)
+
+
+def test_a_key_a_guard_is_believed_to_allow_is_struck_from_it() -> None:
+    truth = example("washing_machine", LOCKED_AT_START)
+    belief = example(
+        "washing_machine",
+        LOCKED_AT_START,
+        (
+            "only: [hold_temp_and_spin, press_power]",
+            "only: [hold_temp_and_spin, press_power, press_temp]",
+        ),
+    )
+    goal = {"power": "on", "child_lock": "on", "programme": "cotton", "temperature": "60"}
+    episode, reached = run(truth, belief, goal)
+    assert reached and episode.claimed_success
+    assert "child lock does not let press_temp work" in episode.repairs
