@@ -96,6 +96,7 @@ def well_formed(draw: st.DrawFn) -> list[str]:
             *maybe(draw, "--method", METHODS),
             *maybe(draw, "--belief", BELIEFS),
             *maybe(draw, "--seed", NUMBERS),
+            *maybe(draw, "--feedback", ["display", "values", "image", "", "Display"]),
         ]
     return ["suite", "show", model, *maybe(draw, "--lines", NUMBERS)]
 
