@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 import pytest
+from hypothesis import settings
 
 from apbot.agent.registry import methods
 from apbot.examples import load_example
@@ -34,3 +35,8 @@ def washer() -> ApplianceModel:
 @pytest.fixture(scope="session")
 def toaster() -> ApplianceModel:
     return load_example("toaster_oven_dial")
+
+
+# `pytest --hypothesis-profile=long` (or APBOT_FUZZ=long): the fuzzers try many more inputs
+# (see tests/fuzz.py); every other test keeps its own settings.
+settings.register_profile("long", deadline=None)

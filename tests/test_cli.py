@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
+from rich.console import Console
 from typer.testing import CliRunner
 
 from apbot.cli import app
@@ -128,3 +130,47 @@ def test_run_a_task_id_with_its_own_goal() -> None:
     result = runner.invoke(app, ["run", "microwave_1", "t03", "-g", "clock=5:00"])
     assert result.exit_code == 0, result.output
     assert "goal: clock=5:00" in result.output
+
+
+def test_run_takes_any_instruction_with_a_goal_and_checks_the_goal_first() -> None:
+    short = runner.invoke(app, ["run", "kettle_1", "x", "-g", "temperature=80"])
+    assert short.exit_code == 0, short.output
+    assert "pydantic" not in short.output and "kettle_1 · x" in short.output
+    bad = runner.invoke(app, ["run", "kettle_1", "x", "-g", "temperature=81"])
+    assert bad.exit_code == 2
+    assert bad.output.strip() == (
+        "error: goal.temperature: 81°C is not one of its values (40, 50, 60, 70, ..., 100)"
+    )
+
+
+def test_run_loads_only_the_appliance_it_runs(monkeypatch: pytest.MonkeyPatch) -> None:
+    def whole_suite(*args: object, **kwargs: object) -> None:
+        raise AssertionError("apbot run loaded the whole suite")
+
+    monkeypatch.setattr("apbot.bench.suite.load_suite", whole_suite)
+    result = runner.invoke(app, ["run", "dehumidifier_1", "t01"])
+    assert result.exit_code == 0, result.output
+    unknown = runner.invoke(app, ["run", "dehumidifer_1", "t01"])
+    assert unknown.exit_code == 2 and "did you mean 'dehumidifier_1'?" in unknown.output
+
+
+@pytest.mark.parametrize("width", [80, 40])
+def test_suite_list_never_cuts_an_id(monkeypatch: pytest.MonkeyPatch, width: int) -> None:
+    from apbot import cli
+    from apbot.bench.suite import load_suite
+
+    monkeypatch.setattr(cli, "console", Console(width=width, highlight=False, soft_wrap=True))
+    result = runner.invoke(app, ["suite", "list"])
+    assert result.exit_code == 0, result.output
+    first_column = {line.split()[0] for line in result.output.splitlines() if line.strip()}
+    ids = {a.id for a in load_suite().appliances}
+    assert ids <= first_column, sorted(ids - first_column)
+    assert "…" not in result.output
+
+
+def test_bench_help_advertises_only_beliefs_that_exist() -> None:
+    result = runner.invoke(app, ["bench", "--help"])
+    assert result.exit_code == 0
+    text = " ".join(result.output.replace("│", " ").split())
+    belief = text.split("--belief", 1)[1].split("[default: true]", 1)[0]
+    assert "faulty:RATE" in belief and "read" not in belief

@@ -71,14 +71,19 @@ def resolve_model(spec: str) -> tuple[ApplianceModel, str]:
     )
 
 
-def _print_problems(problems: list[Problem], source: str) -> None:
-    for problem in problems:
+def _print_problems(problems: list[Problem], source: str, stream: Console | None = None) -> None:
+    """One line per problem: severity, file:line, path, message and the check's name (at
+    most a hundred, then a line counting the rest)."""
+    from apbot.model.load import capped
+
+    for problem in capped(problems):
         colour = "red" if problem.severity == "error" else "yellow"
-        location = f"{source}:{problem.line}" if problem.line else source
-        console.print(
+        where = problem.source or source
+        location = f"{where}:{problem.line}" if problem.line else where
+        (stream or console).print(
             f"[{colour}]{problem.severity}[/{colour}] {location}: "
-            f"[bold]{problem.where}[/bold]: {problem.message} "
-            f"[dim]\\[{problem.check}][/dim]"
+            + (f"[bold]{problem.where}[/bold]: " if problem.path else "")
+            + f"{problem.message} [dim]\\[{problem.check}][/dim]"
         )
 
 
@@ -132,24 +137,28 @@ def _chosen(appliances: list[str] | None) -> list[SuiteAppliance]:
 
     Exits with a clear message for an unknown id or a broken appliance directory.
     """
-    from apbot.bench.suite import bundled_suite_dir, load_appliance
-
     if not appliances:
         return _suite().appliances
-    chosen = []
-    for name in appliances:
-        directory = bundled_suite_dir() / name
-        if not directory.is_dir():
-            try:
-                _suite().get(name)
-            except KeyError as exc:  # names the closest id
-                raise _fail(str(exc.args[0])) from None
-        try:
-            chosen.append(load_appliance(directory, check=True))
-        except ModelError as exc:
-            _print_problems(exc.problems, exc.source or name)
-            raise _fail(f"{name} cannot be loaded") from None
-    return chosen
+    return [_bundled(name) for name in appliances]
+
+
+def _bundled(appliance_id: str, code: int = 1) -> SuiteAppliance:
+    """One bundled appliance, loaded and checked alone (not the whole suite: ``apbot run``
+    needs one of 45); an unknown id names the closest one."""
+    from apbot.bench.suite import bundled_suite_dir, load_appliance
+    from apbot.model.values import closest_matches
+
+    ids = sorted(p.name for p in bundled_suite_dir().iterdir() if (p / "model.yaml").exists())
+    if appliance_id not in ids:  # a name, never a path
+        close = closest_matches(appliance_id, ids, limit=1)
+        hint = f"; did you mean {close[0]!r}?" if close else " (see `apbot suite list`)"
+        raise _fail(f"no appliance {appliance_id!r} in the bundled suite{hint}", code)
+    directory = bundled_suite_dir() / appliance_id
+    try:
+        return load_appliance(directory, check=True)
+    except ModelError as exc:
+        _print_problems(exc.problems, exc.source or appliance_id)
+        raise _fail(f"{appliance_id} cannot be loaded", code) from None
 
 
 def _suite() -> Suite:
@@ -309,13 +318,10 @@ def sim(
 
 @suite_app.command("list")
 def suite_list() -> None:
-    """Every bundled appliance: category, controls, tasks."""
+    """Every bundled appliance: category, controls, variables, tasks, manual words."""
     suite = _suite()
-    table = Table(title=f"{len(suite.appliances)} appliances, {len(suite.tasks)} tasks")
-    for column in ("id", "category", "name", "controls", "variables", "tasks", "manual words"):
-        table.add_column(column)
-    for a in suite.appliances:
-        table.add_row(
+    rows = [
+        (
             a.id,
             a.category,
             a.model.appliance.name,
@@ -324,12 +330,40 @@ def suite_list() -> None:
             str(len(a.tasks)),
             str(a.manual_words),
         )
-    console.print(table)
+        for a in suite.appliances
+    ]
+    headers = ("id", "category", "name", "ctrl", "vars", "tasks", "words")
+    table = Table(
+        title=f"{len(suite.appliances)} appliances, {len(suite.tasks)} tasks",
+        box=box.SIMPLE_HEAD,
+        caption="ctrl, vars: controls and variables of the model; words: of the manual",
+        padding=(0, 1, 0, 0),
+        show_edge=False,
+    )
+    # ids and categories are what one copies: never cut or folded; the name wraps instead
+    for i, header in enumerate(headers):
+        if header == "name":
+            table.add_column(header, min_width=12, overflow="fold")
+        else:
+            table.add_column(header, no_wrap=True, justify="right" if i > 2 else "left")
+    for row in rows:
+        table.add_row(*row)
+    # rich squeezes no_wrap columns too when the console is too narrow for them; render at
+    # the width they need then (a terminal wraps the line; the id stays whole)
+    from rich.measure import Measurement
+
+    natural = Measurement.get(console, console.options.update(width=10_000), table).maximum
+    needed = natural - max(len(r[2]) for r in rows) + 12  # the name may wrap down to 12
+    out = console
+    if console.width < needed:
+        out = Console(highlight=False, width=needed, file=console.file, color_system=None)
+    out.print(table)
 
 
 @suite_app.command("show")
 def suite_show(
-    appliance: str, lines: Annotated[int, typer.Option(help="Manual lines to show.")] = 25
+    appliance: str,
+    lines: Annotated[int, typer.Option(help="Manual lines to show.", min=0)] = 25,
 ) -> None:
     """One appliance: the start of its manual, a model summary, and its tasks."""
     [item] = _chosen([appliance])
@@ -550,9 +584,7 @@ def bench(
     ] = "runs/latest",
     belief: Annotated[
         str,
-        typer.Option(
-            help="The model methods work from: true, faulty:RATE, faulty:RATE:KIND,... or read."
-        ),
+        typer.Option(help="The model methods work from: true, faulty:RATE or faulty:RATE:KIND,..."),
     ] = "true",
     seed: Annotated[int, typer.Option(help="Seed for fault injection.")] = 0,
     feedback: Annotated[
@@ -578,6 +610,7 @@ def bench(
     from apbot.bench.results import ResultsError
     from apbot.bench.runner import BenchError, BenchOptions, run_benchmark
 
+    _validated_suite(suite)
     chosen = _names(methods)
     options = BenchOptions(
         suite=suite,
@@ -615,6 +648,27 @@ def bench(
         raise typer.Exit(outcome.exit_code)
     if not no_report:
         _bench_report(outcome.out)
+
+
+def _validated_suite(name: str) -> None:
+    """Load and validate the suite before any work starts (the runner reuses the loaded copy).
+
+    Every problem is one line naming its file, line and task; exit 2 when there is one.
+    """
+    from apbot.bench.runner import cached_suite
+    from apbot.bench.suite import validate_suite
+
+    try:
+        loaded = cached_suite(name)
+    except FileNotFoundError as exc:
+        raise _fail(str(exc), 2) from None
+    except ModelError as exc:
+        _print_problems(exc.problems, exc.source or name, stream=errors)
+        raise _fail(f"suite {name} cannot be loaded", 2) from None
+    problems = [p for p in validate_suite(loaded) if p.severity == "error"]
+    if problems:
+        _print_problems(problems, name, stream=errors)
+        raise _fail(f"suite {name} has {len(problems)} error(s); nothing was run", 2)
 
 
 def _feedback_mode(text: str) -> FeedbackMode:
@@ -730,22 +784,24 @@ def run_command(
     """Run one task live: every macro action, press, display, check and repair as it happens."""
     from apbot.bench.runner import run_task
     from apbot.bench.suite import Task
-    from apbot.model.goal import split_assignments
+    from apbot.model.goal import parse_goal, split_assignments
 
-    try:
-        found = _suite().get(appliance)
-    except KeyError as exc:
-        raise _fail(str(exc.args[0]), 2) from None
+    found = _bundled(appliance, 2)
     task = _task_for(found, instruction)
     if goal:
         try:
-            task = Task(
-                id=task.id if task else "live",
-                instruction=task.instruction if task else instruction,
-                goal=split_assignments(goal),
-            )
-        except ValueError as exc:
+            goal_values = split_assignments(goal)
+            parse_goal(found.model, goal_values)
+        except GoalError as exc:
             raise _fail(str(exc), 2) from None
+        # a live task is not a line of tasks.yaml: the instruction is the user's own words
+        # (any length), and the goal was just checked against the appliance
+        task = Task.model_construct(
+            id=task.id if task else "live",
+            instruction=task.instruction if task else instruction,
+            goal=goal_values,
+            optimal_steps=None,
+        )
     if task is None:
         ids = ", ".join(t.id for t in found.tasks)
         raise _fail(

@@ -15,6 +15,7 @@ from functools import cache
 from typing import Any, ClassVar
 
 import gymnasium as gym
+import numpy as np
 from gymnasium import spaces
 
 from apbot.bench.suite import SuiteAppliance, bundled_suite_dir, load_appliance
@@ -34,7 +35,8 @@ class ApplianceEnv(gym.Env[str, int]):
 
     ## Action Space
     ``Discrete(n)``: index into ``info["actions"]``, the appliance's actions in model order
-    (press, hold — for its required duration — or a dial turn).
+    (press, hold — for its required duration — or a dial turn). Anything that is not an
+    integer in ``0 … n-1`` raises (``TypeError``, ``ValueError``).
 
     ## Observation Space
     ``Text``: the display text after the action (may be empty: a dark panel).
@@ -70,12 +72,20 @@ class ApplianceEnv(gym.Env[str, int]):
         self, *, seed: int | None = None, options: dict[str, Any] | None = None
     ) -> tuple[str, dict[str, Any]]:
         super().reset(seed=seed)
+        unknown = sorted(set(options or {}) - {"task"})
+        if unknown:
+            raise ValueError(f"unknown reset option(s) {unknown}; the one option is 'task'")
         chosen = (options or {}).get("task")
         tasks = self.appliance.tasks
         if chosen is None:
             self.task = tasks[int(self.np_random.integers(len(tasks)))]
-        elif isinstance(chosen, int):
-            self.task = tasks[chosen]
+        elif isinstance(chosen, int | np.integer) and not isinstance(chosen, bool):
+            if not 0 <= chosen < len(tasks):
+                raise ValueError(
+                    f"task index {chosen} is out of range: {self.appliance.id} has "
+                    f"{len(tasks)} tasks, 0 to {len(tasks) - 1}"
+                )
+            self.task = tasks[int(chosen)]
         else:
             self.task = next((t for t in tasks if t.id == chosen), None) or _no_task(chosen, tasks)
         self.goal = parse_goal(self.appliance.model, self.task.goal)
@@ -83,12 +93,34 @@ class ApplianceEnv(gym.Env[str, int]):
         return self._display, self._info(accepted=True, reason="")
 
     def step(self, action: int) -> tuple[str, float, bool, bool, dict[str, Any]]:
-        name = self.action_names[int(action)]
+        name = self.action_names[self._action_index(action)]
         observation = self.simulator.step(name)
         self._display = self._clip(observation.display)
         reached = self.simulator.satisfies(self.goal)
         info = self._info(accepted=observation.accepted, reason=observation.reason)
         return self._display, float(reached), reached, False, info
+
+    def _action_index(self, action: Any) -> int:
+        """The action as an index into ``info["actions"]``; anything else is refused, not
+        wrapped round (``-1``) or truncated (``1.5``) into some other action."""
+        count = len(self.action_names)
+        integral = isinstance(action, int | np.integer) or (
+            isinstance(action, np.ndarray)
+            and action.shape == ()
+            and np.issubdtype(action.dtype, np.integer)
+        )
+        if isinstance(action, bool | np.bool_) or not integral:
+            raise TypeError(
+                f"an action is an integer index into info['actions'] (0 to {count - 1}), "
+                f"not {type(action).__name__} {action!r}"
+            )
+        index = int(action)
+        if not 0 <= index < count:
+            raise ValueError(
+                f"action {index} is out of range: {self.appliance.id} has {count} actions, "
+                f"0 to {count - 1} (see info['actions'])"
+            )
+        return index
 
     def render(self) -> str | None:
         return self._display if self.render_mode == "ansi" else None

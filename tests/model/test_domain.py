@@ -1,9 +1,14 @@
 from __future__ import annotations
 
+import math
+import time
+
 import pytest
 
 from apbot.model.domain import DomainError, ValueProblem, build_domain, normalise
+from apbot.model.limits import MAX_VALUES
 from apbot.model.schema import DiscreteVariable, NumericVariable, TimeVariable
+from apbot.model.values import expand_ranges
 
 
 def numeric(**kw: object) -> NumericVariable:
@@ -101,3 +106,59 @@ def test_subtracting_snaps_down() -> None:
     coarse = build_domain(numeric(ranges=[[0, 10, 1], [10, 60, 10]]))
     assert coarse.values[coarse.snap_index(20 - 1, down=True)] == 10
     assert coarse.values[coarse.snap_index(20 - 1)] == 20  # adding snaps up
+
+
+# --- large domains: linear checks, bounded messages, an enforced limit ---------------------------
+
+
+def discrete(values: list[str], **kw: object) -> DiscreteVariable:
+    return DiscreteVariable.model_validate({"type": "discrete", "values": values, **kw})
+
+
+def test_a_30000_value_domain_with_a_repeat_is_checked_in_linear_time() -> None:
+    values = [f"v{i}" for i in range(30_000)]
+    started = time.perf_counter()
+    assert len(build_domain(discrete(values))) == 30_000
+    with pytest.raises(DomainError, match=r"'v7' is listed twice \(as value 8 and 30000\)"):
+        build_domain(discrete([*values[:-1], "v7"]))
+    assert time.perf_counter() - started < 2.0  # 44 s with a list.count per value
+
+
+def test_messages_about_a_huge_domain_stay_short() -> None:
+    values = [f"v{i}" for i in range(10_000)]
+    with pytest.raises(DomainError) as caught:
+        build_domain(discrete(values, initial="nosuch"))
+    message = str(caught.value)
+    assert message.endswith("'v9999'] (10,000 in all)") and len(message) < 200
+    with pytest.raises(ValueProblem) as goal:
+        normalise(discrete(values), "nosuch")
+    assert "(10,000 in all)" in str(goal.value) and len(str(goal.value)) < 200
+
+
+def test_a_domain_past_the_limit_is_refused_without_listing_it() -> None:
+    assert len(build_domain(numeric(ranges=[[1, MAX_VALUES, 1]]))) == MAX_VALUES
+    started = time.perf_counter()
+    with pytest.raises(DomainError, match=f"at most {MAX_VALUES:,}"):
+        build_domain(numeric(ranges=[[0, 3_000_000, 1]]))
+    with pytest.raises(DomainError, match=f"at most {MAX_VALUES:,}"):
+        build_domain(discrete([f"v{i}" for i in range(MAX_VALUES + 1)]))
+    assert time.perf_counter() - started < 2.0
+
+
+def test_whole_number_ranges_expand_like_decimal_ones() -> None:
+    assert expand_ranges([[0, 60, 10], [60.0, 120.0, 30.0]]) == [0, 10, 20, 30, 40, 50, 60, 90, 120]
+    assert expand_ranges([[0, 1, 0.25], [1, 3, 1]]) == [0, 0.25, 0.5, 0.75, 1, 2, 3]
+    assert all(type(v) is int for v in expand_ranges([[0.0, 4.0, 2.0]]))
+    with pytest.raises(ValueError, match="step must be positive"):
+        expand_ranges([[0, 10, 0]])  # looped for ever
+
+
+@pytest.mark.parametrize("raw", [math.inf, math.nan, 10**400, "9" * 400, "9" * 400 + " h"])
+def test_infinite_or_enormous_goal_numbers_are_value_problems(raw: object) -> None:
+    """Found by the goal fuzzer: int(inf) raised an OverflowError from inside normalise."""
+    minutes = numeric(ranges=[[0, 120, 30]], unit="min")
+    timer = TimeVariable.model_validate({"type": "time", "ranges": [["00:00:00", "01:00:00", 60]]})
+    for var in (minutes, timer):
+        with pytest.raises(ValueProblem) as caught:
+            normalise(var, raw)
+        assert len(str(caught.value)) < 150

@@ -2,9 +2,13 @@
 
 from __future__ import annotations
 
+import time
+
 import pytest
 
 from apbot.examples import example_names, load_example
+from apbot.model.limits import MAX_MODEL_VALUES, MAX_PARTS
+from apbot.model.problems import ModelError
 from apbot.model.validate import check_goal, check_model
 from tests.helpers import model_from
 
@@ -159,3 +163,42 @@ def test_turn_needs_a_dial() -> None:
     text = BASE.replace("press_a: {control: b1}", "press_a: {control: b1, skill: turn_cw}")
     check, where, _message = only(text)
     assert (check, where) == ("control", "actions.press_a.skill")
+
+
+# --- size limits -----------------------------------------------------------------------------
+
+
+def _wide_model(actions: int, values: int = 2) -> str:
+    lines = ["controls: [{id: b, label: B}]", "variables:"]
+    lines += [f"  v{i}: {{type: numeric, ranges: [[1, {values}, 1]]}}" for i in range(actions)]
+    lines += ["actions:"] + [f"  a{i}: {{control: b}}" for i in range(actions)]
+    lines += ["features:"]
+    lines += [f"  f{i}: [{{actions: [a{i}], variable: v{i}}}]" for i in range(actions)]
+    return "\n".join(lines) + "\n"
+
+
+def test_past_the_part_and_step_limits_is_one_size_problem_each() -> None:
+    model = model_from(_wide_model(MAX_PARTS + 1), check=False)
+    problems = check_model(model)
+    assert {(p.where, p.check) for p in problems} == {
+        ("variables", "size"),
+        ("actions", "size"),
+        ("features", "size"),
+    }
+    assert all(f"at most {MAX_PARTS:,}" in p.message for p in problems)
+
+
+def test_past_the_model_value_limit_is_refused_before_any_domain_is_built() -> None:
+    per_variable = MAX_MODEL_VALUES // 10
+    model = model_from(_wide_model(11, per_variable), check=False)
+    started = time.perf_counter()
+    [problem] = check_model(model)
+    assert problem.check == "size" and "1,100,000 values in all" in problem.message
+    assert time.perf_counter() - started < 0.5
+
+
+def test_infinite_or_nan_numbers_are_schema_errors() -> None:
+    with pytest.raises(ModelError, match="finite number"):
+        model_from(_wide_model(1).replace("[[1, 2, 1]]", "[[0, .inf, 1]]"))
+    with pytest.raises(ModelError, match="finite number"):
+        model_from(_wide_model(1).replace("[[1, 2, 1]]", "[[0, 10, .nan]]"))

@@ -226,3 +226,21 @@ def test_among_equally_short_plans_the_display_is_lit_while_setting() -> None:
     """)
     found = plan(model, None, {"power": "on", "mode": "c"})
     assert [a.name for a in found.actions] == ["press_power", "turn_knob", "turn_knob"]
+
+
+def test_bad_arguments_name_themselves(washer: ApplianceModel) -> None:
+    goal = {"power": "on"}
+    with pytest.raises(TypeError, match="plan needs an ApplianceModel"):
+        plan(None, None, goal)  # type: ignore[arg-type]
+    with pytest.raises(TypeError, match=r"state must be a State .* not str"):
+        plan(washer, "junk", goal)  # type: ignore[arg-type]
+    start = compiled_model(washer).initial_state()
+    with pytest.raises(ValueError, match=r"state\.values must hold one value index for each"):
+        plan(washer, start._replace(values=start.values[:2]), goal)
+    with pytest.raises(TypeError, match=r"not str 'power=on'"):
+        plan(washer, None, "power=on")  # type: ignore[arg-type]
+    with pytest.raises(GoalError, match="is not NAME=VALUE"):
+        plan(washer, None, [42])  # type: ignore[list-item]
+    with pytest.raises(ValueError, match="budget is a positive number"):
+        plan(washer, None, goal, budget=0)
+    assert len(plan(washer, start, goal)) == 1  # a real state is fine

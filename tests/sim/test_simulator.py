@@ -2,10 +2,15 @@
 
 from __future__ import annotations
 
+import math
 import random
 
+import numpy as np
+import pytest
+
+from apbot.model.domain import ValueProblem
 from apbot.model.schema import ApplianceModel
-from apbot.sim.simulator import Simulator
+from apbot.sim.simulator import Simulator, UnknownAction, UnknownVariable
 from tests.helpers import model_from
 
 CLOCK = """
@@ -198,3 +203,76 @@ features:
     assert sim.value("temperature") == "40"
     run(sim, "press_temp", "press_power")  # switching off forgets settings, cotton or not
     assert sim.value("temperature") == "40"
+
+
+# --- the Python API refuses bad arguments by name ------------------------------------------------
+
+
+def test_a_simulator_needs_a_model() -> None:
+    with pytest.raises(TypeError, match=r"Simulator needs an ApplianceModel .* not NoneType"):
+        Simulator(None)  # type: ignore[arg-type]
+
+
+def test_satisfies_names_an_unknown_variable_and_an_impossible_value(
+    washer: ApplianceModel,
+) -> None:
+    sim = Simulator(washer)
+    with pytest.raises(UnknownVariable, match="no variable 'programe'; did you mean 'programme'"):
+        sim.satisfies({"programe": "wool"})
+    with pytest.raises(ValueError, match="no variable 'nosuch'"):
+        sim.satisfies({"nosuch": 1})
+    with pytest.raises(ValueProblem, match=r"goal temperature=81: '81' is not one of"):
+        sim.satisfies({"temperature": 81})
+    with pytest.raises(TypeError, match="a goal maps variable names to values"):
+        sim.satisfies(["power=on"])  # type: ignore[arg-type]
+    assert sim.satisfies({"power": False, "programme": "Cotton"})  # any accepted notation
+    assert not sim.satisfies({"power": "on"})
+
+
+@pytest.mark.parametrize(
+    ("seconds", "error", "message"),
+    [
+        ("3", TypeError, "a number; got str '3'"),
+        (True, TypeError, "a number; got bool True"),
+        (math.nan, ValueError, "finite number above zero; got nan"),
+        (math.inf, ValueError, "finite number above zero; got inf"),
+        (-5, ValueError, "finite number above zero; got -5"),
+        (0, ValueError, "finite number above zero; got 0"),
+    ],
+)
+def test_a_hold_needs_a_positive_finite_duration(
+    washer: ApplianceModel, seconds: object, error: type[Exception], message: str
+) -> None:
+    sim = Simulator(washer)
+    sim.step("press_power")
+    before = sim.state
+    with pytest.raises(error, match=message):
+        sim.step("hold_temp_and_spin", seconds)  # type: ignore[arg-type]
+    assert sim.state == before  # nothing happened
+    assert sim.step("hold_temp_and_spin", 3.0).accepted
+
+
+def test_an_action_index_is_checked_not_wrapped(washer: ApplianceModel) -> None:
+    sim = Simulator(washer)
+    count = len(sim.actions)
+    with pytest.raises(UnknownAction, match=f"index -1 is out of range: the model has {count}"):
+        sim.step(-1)  # Python's negative index used to press the last action
+    with pytest.raises(ValueError, match=f"index {count} is out of range"):
+        sim.step(count)
+    with pytest.raises(TypeError, match=r"not float 1\.5"):
+        sim.step(1.5)  # type: ignore[arg-type]
+    assert sim.step(np.int64(0)).accepted == sim.step(0).accepted
+
+
+def test_reset_to_a_state_checks_it(washer: ApplianceModel) -> None:
+    sim = Simulator(washer)
+    state = sim.state
+    with pytest.raises(TypeError, match="state must be a State"):
+        sim.reset(tuple(state))  # type: ignore[arg-type]
+    with pytest.raises(ValueError, match=r"values\[0\]: 7 is not an index of power's 2 values"):
+        sim.reset(state._replace(values=(7, *state.values[1:])))
+    with pytest.raises(ValueError, match="step must be -1 or a step id"):
+        sim.reset(state._replace(step=10_000))
+    with pytest.raises(ValueError, match="buffer must be a string of typed digits"):
+        sim.reset(state._replace(buffer="12a"))
+    assert sim.reset(state).display == Simulator(washer).observe().display

@@ -28,8 +28,8 @@ from apbot.bench.suite import SuiteAppliance
 from apbot.model.schema import ApplianceModel
 
 ACCEPTED_FORMS = (
-    "'true', 'faulty:RATE' with 0 ≤ RATE ≤ 1 (e.g. 'faulty:0.2'), 'faulty:RATE:KIND,...' "
-    "(e.g. 'faulty:0.3:guard') or 'read'"
+    "'true', 'faulty:RATE' with 0 ≤ RATE ≤ 1 (e.g. 'faulty:0.2') or 'faulty:RATE:KIND,...' "
+    "(e.g. 'faulty:0.3:guard')"
 )
 
 

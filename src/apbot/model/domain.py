@@ -7,11 +7,13 @@ in button order, the initial one, and whether stepping past an end wraps or clam
 from __future__ import annotations
 
 import itertools
+import math
 from bisect import bisect_left, bisect_right
 from collections.abc import Container, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
+from apbot.model.limits import MAX_MODEL_VALUES, MAX_VALUES, SIZE_LIMITS_DOC
 from apbot.model.schema import (
     DiscreteCase,
     DiscreteVariable,
@@ -22,12 +24,14 @@ from apbot.model.schema import (
     time_step_seconds,
 )
 from apbot.model.values import (
+    brief,
     closest_matches,
     expand_ranges,
     format_hms,
     normalise_text,
     parse_hms,
     parse_quantity,
+    preview,
     tidy_number,
     unit_of,
 )
@@ -97,16 +101,54 @@ class Domain:
         return 0 if self.wrap else len(mags) - 1
 
 
-MAX_VALUES = 100_000  # a domain larger than this is a modelling mistake, not an appliance
+def range_count(ranges: Sequence[tuple[float, float, float]]) -> int:
+    """How many values piecewise ranges give, without listing them (an upper bound when the
+    ranges are malformed, which :func:`build_domain` then reports)."""
+    count = 0
+    for start, stop, step in ranges:
+        if not all(math.isfinite(x) for x in (start, stop, step)):
+            return MAX_VALUES + 1  # refused as too large, before any arithmetic overflows
+        if step > 0 and stop >= start:
+            count += min(int((stop - start) / step), MAX_MODEL_VALUES) + 1
+    return count
+
+
+def domain_size(var: AnyVariable, case: Any = None) -> int:
+    """Values of a variable's domain (or of one case), counted without building it."""
+    spec: Any = case if case is not None else var
+    if isinstance(var, DiscreteVariable):
+        return len(spec) if isinstance(spec, list) else len(spec.values or [])
+    if isinstance(var, NumericVariable):
+        return range_count([(float(a), float(b), float(c)) for a, b, c in spec.ranges or []])
+    try:
+        return range_count(_seconds_ranges(spec))
+    except ValueError:
+        return 0  # malformed times are reported by the schema
+
+
+def _seconds_ranges(spec: Any) -> list[tuple[float, float, float]]:
+    return [
+        (float(parse_hms(a)), float(parse_hms(b)), float(time_step_seconds(c)))
+        for a, b, c in spec.ranges or []
+    ]
+
+
+def _too_many(count: int) -> DomainError:
+    return DomainError(
+        f"{count:,} values; a domain has at most {MAX_VALUES:,} (see {SIZE_LIMITS_DOC})"
+    )
 
 
 def _check_ranges(ranges: list[tuple[float, float, float]], show: Any) -> None:
     previous_end: float | None = None
-    count = sum(int((b - a) / c) + 1 for a, b, c in ranges if c > 0 and b >= a)
+    for i, (start, stop, step) in enumerate(ranges):
+        if not all(math.isfinite(x) for x in (start, stop, step)):
+            raise DomainError(f"range {i + 1} is not made of finite numbers")
+    count = range_count(ranges)
     if count > MAX_VALUES:
         raise DomainError(
-            f"the ranges give {count:,} values; at most {MAX_VALUES:,} are "
-            "allowed (use a coarser step)"
+            f"the ranges give {count:,} values; a domain has at most {MAX_VALUES:,} "
+            f"(use a coarser step; see {SIZE_LIMITS_DOC})"
         )
     for i, (start, stop, step) in enumerate(ranges):
         if step <= 0:
@@ -127,46 +169,74 @@ def _check_ranges(ranges: list[tuple[float, float, float]], show: Any) -> None:
         previous_end = stop
 
 
+_DOMAINS: dict[tuple[int, int], tuple[Any, Any, Domain]] = {}
+
+
 def build_domain(var: AnyVariable, case: Any = None) -> Domain:
-    """The domain of a variable, or of one case of a dependent variable."""
-    spec = case if case is not None else var
+    """The domain of a variable, or of one case of a dependent variable.
+
+    Remembered per (immutable) variable and case object: checking a model and compiling it
+    both need every domain, and a 100,000-value one takes a while to build.
+    """
+    key = (id(var), id(case))
+    hit = _DOMAINS.get(key)
+    if hit is not None and hit[0] is var and hit[1] is case:
+        return hit[2]
+    domain = _build_domain(var, case)
+    if len(_DOMAINS) >= 64:
+        _DOMAINS.pop(next(iter(_DOMAINS)))
+    _DOMAINS[key] = (var, case, domain)
+    return domain
+
+
+def _build_domain(var: AnyVariable, case: Any) -> Domain:
+    spec: Any = case if case is not None else var
     if isinstance(var, DiscreteVariable):
         if isinstance(spec, list):
             spec = DiscreteCase(values=spec)
-        values = list(spec.values)
-        duplicates = sorted({v for v in values if values.count(v) > 1})
-        if duplicates:
-            raise DomainError(f"value {duplicates[0]!r} is listed twice")
+        values = list(spec.values or [])
+        if len(values) > MAX_VALUES:
+            raise _too_many(len(values))
+        index: dict[Any, int] = {}
+        for i, value in enumerate(values):  # one pass: a list.count per value was quadratic
+            if value in index:
+                raise DomainError(
+                    f"value {value!r} is listed twice (as value {index[value] + 1} and {i + 1})"
+                )
+            index[value] = i
         initial = spec.initial if spec.initial is not None else values[0]
-        if initial not in values:
+        if initial not in index:
             raise DomainError(
-                f"initial value {initial!r} is not one of {values}" + _did_you_mean(initial, values)
+                f"initial value {initial!r} is not one of {preview(values)}"
+                + _did_you_mean(initial, values)
             )
-        return Domain("discrete", tuple(values), values.index(initial), var.wrap)
+        return Domain("discrete", tuple(values), index[initial], var.wrap, index=index)
     if isinstance(var, NumericVariable):
         assert isinstance(spec, NumericVariable | NumericCase)
         ranges = [(float(a), float(b), float(c)) for a, b, c in spec.ranges or []]
         _check_ranges(ranges, lambda x: f"{tidy_number(x)}")
         numbers = expand_ranges(spec.ranges or [])
+        if spec.initial is not None and not math.isfinite(spec.initial):
+            raise DomainError(f"initial value {spec.initial} is not a finite number")
         initial = tidy_number(spec.initial) if spec.initial is not None else numbers[0]
-        if initial not in numbers:
+        positions = {n: i for i, n in enumerate(numbers)}
+        if initial not in positions:
             raise DomainError(f"initial value {initial} is not in the ranges ({_summary(numbers)})")
         return Domain(
             "numeric",
             tuple(numbers),
-            numbers.index(initial),
+            positions[initial],
             var.wrap,
             tuple(float(n) for n in numbers),
+            index=positions,
         )
     assert isinstance(spec, TimeVariable | TimeCase)
-    seconds_ranges = [
-        (float(parse_hms(a)), float(parse_hms(b)), float(time_step_seconds(c)))
-        for a, b, c in spec.ranges or []
-    ]
+    seconds_ranges = _seconds_ranges(spec)
     _check_ranges(seconds_ranges, lambda s: format_hms(int(s)))
     seconds = [int(s) for s in expand_ranges(seconds_ranges)]
     initial_s = parse_hms(spec.initial) if spec.initial is not None else seconds[0]
-    if initial_s not in seconds:
+    at = {s: i for i, s in enumerate(seconds)}
+    if initial_s not in at:
         raise DomainError(
             f"initial value {format_hms(initial_s)} is not in the ranges "
             f"({_summary([format_hms(s) for s in seconds])})"
@@ -174,7 +244,7 @@ def build_domain(var: AnyVariable, case: Any = None) -> Domain:
     return Domain(
         "time",
         tuple(format_hms(s) for s in seconds),
-        seconds.index(initial_s),
+        at[initial_s],
         var.wrap,
         tuple(float(s) for s in seconds),
     )
@@ -212,10 +282,11 @@ def _values_of(var: AnyVariable) -> tuple[tuple[Any, ...], frozenset[Any]]:
     return values, _VALUES[id(var)][2]
 
 
-def _summary(values: list[Any]) -> str:
+def _summary(values: Sequence[Any]) -> str:
     if len(values) <= 8:
         return ", ".join(str(v) for v in values)
-    return ", ".join(str(v) for v in values[:4]) + ", ..., " + str(values[-1])
+    more = f" ({len(values):,} in all)" if len(values) > 50 else ""
+    return ", ".join(str(v) for v in values[:4]) + ", ..., " + str(values[-1]) + more
 
 
 def _did_you_mean(text: Any, options: list[str]) -> str:
@@ -238,6 +309,7 @@ def normalise(var: AnyVariable, raw: Any, domain: Domain | None = None) -> Any:
     >>> normalise(NumericVariable(type="numeric", ranges=[(0, 120, 30)], unit="min"), "2 h")
     120
     """
+    members: Container[Any]
     if domain is not None:
         ordered, members = domain.values, domain.index
     else:
@@ -308,42 +380,56 @@ def _normalise_discrete(raw: Any, ordered: Sequence[str], members: Container[str
         ]
         if len(by_number) == 1:
             return by_number[0]
-    raise ValueProblem(f"{text!r} is not one of {values}" + _did_you_mean(text, values))
+    raise ValueProblem(
+        f"{brief(text)} is not one of {preview(values)}" + _did_you_mean(text, values)
+    )
 
 
 def _to_number(raw: Any, unit: str) -> int | float:
+    """The number ``raw`` stands for, in ``unit``; never infinite or NaN (no domain has them,
+    and ``int(inf)`` would be an OverflowError deep inside)."""
+    number = _any_number(raw, unit)
+    try:
+        finite = math.isfinite(number)
+    except OverflowError:  # an int too large for a float
+        finite = False
+    if not finite:
+        raise ValueProblem(f"{brief(raw)} is not a finite number")
+    return tidy_number(number)
+
+
+def _any_number(raw: Any, unit: str) -> float:
     if isinstance(raw, bool):
-        raise ValueProblem(f"expected a number, got {raw!r}")
+        raise ValueProblem(f"expected a number, got {brief(raw)}")
     if isinstance(raw, int | float):
-        return tidy_number(raw)
+        return raw
     text = str(raw).strip()
     if unit and text.casefold().endswith(unit.casefold()):
         # the variable's own unit, whatever it is ("2.5 lb", "3 cups", "1200 W")
-        bare = text[: len(text) - len(unit)].strip()
-        number = parse_quantity(bare)
-        if number is not None and number[1] is None:
-            return tidy_number(round(number[0], 6))
+        bare = parse_quantity(text[: len(text) - len(unit)].strip())
+        if bare is not None and bare[1] is None:
+            return round(bare[0], 6)
     quantity = parse_quantity(text)
     if quantity is None:
-        raise ValueProblem(f"{raw!r} is not a number" + (f" of {unit}" if unit else ""))
+        raise ValueProblem(f"{brief(raw)} is not a number" + (f" of {unit}" if unit else ""))
     number, dimension, _ = quantity
     if dimension is not None:
         target = unit_of(unit) if unit else None
         if target is None:
             if unit:
-                raise ValueProblem(f"cannot convert {raw!r} to {unit!r}")
+                raise ValueProblem(f"cannot convert {brief(raw)} to {unit!r}")
         elif target[0] != dimension:
-            raise ValueProblem(f"{raw!r} is not a quantity in {unit}")
+            raise ValueProblem(f"{brief(raw)} is not a quantity in {unit}")
         else:
             number = number / target[1]
-    return tidy_number(round(number, 6))
+    return round(number, 6)
 
 
 def _to_seconds(raw: Any, style: str) -> int:
     text = str(raw).strip()
     if isinstance(raw, int | float) and not isinstance(raw, bool):
         raise ValueProblem(
-            f"a bare number {raw!r} is ambiguous for a time; write 00:30:00, '30 min' or '2 h'"
+            f"a bare number {brief(raw)} is ambiguous for a time; write 00:30:00, '30 min' or '2 h'"
         )
     parts = text.split(":")
     if len(parts) == 3 and all(p.isdigit() for p in parts):
@@ -351,20 +437,22 @@ def _to_seconds(raw: Any, style: str) -> int:
             return parse_hms(text)
         except ValueError:
             raise ValueProblem(
-                f"{text!r} is not a time (minutes and seconds go up to 59)"
+                f"{brief(text)} is not a time (minutes and seconds go up to 59)"
             ) from None
     if len(parts) == 2 and all(p.isdigit() for p in parts):
         first, second = int(parts[0]), int(parts[1])
         if second >= 60:
-            raise ValueProblem(f"{text!r} is not a time")
+            raise ValueProblem(f"{brief(text)} is not a time")
         # mm:ss on a display showing minutes and seconds, else h:mm
         return first * 60 + second if style == "mm:ss" else first * 3600 + second * 60
     quantity = parse_quantity(text)
     if quantity is None or quantity[1] not in ("time", None):
-        raise ValueProblem(f"{text!r} is not a duration (try '90 min' or 01:30:00)")
+        raise ValueProblem(f"{brief(text)} is not a duration (try '90 min' or 01:30:00)")
     if quantity[1] is None:
-        raise ValueProblem(f"a bare number {text!r} is ambiguous for a time; give a unit")
+        raise ValueProblem(f"a bare number {brief(text)} is ambiguous for a time; give a unit")
     seconds = quantity[0]
+    if not math.isfinite(seconds):
+        raise ValueProblem(f"{brief(text)} is not a finite duration")
     if abs(seconds - round(seconds)) > 1e-6:
-        raise ValueProblem(f"{text!r} is not a whole number of seconds")
+        raise ValueProblem(f"{brief(text)} is not a whole number of seconds")
     return round(seconds)

@@ -29,6 +29,8 @@ def split_assignments(items: Iterable[str]) -> dict[str, str]:
     """``["power=on", "delay = 2 h"]`` -> ``{"power": "on", "delay": "2 h"}``."""
     goal: dict[str, str] = {}
     for item in items:
+        if not isinstance(item, str):
+            raise GoalError([Problem(("goal",), f"{item!r} is not NAME=VALUE text", "goal")])
         name, sep, value = item.partition("=")
         name = name.strip()
         if not sep or not name:

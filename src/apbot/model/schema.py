@@ -44,9 +44,10 @@ Signal = Literal["beep", "silent"]  # how a refused key makes itself known, if a
 
 
 class _Strict(BaseModel):
-    """Unknown keys are errors: a typo in a model must not pass silently."""
+    """Unknown keys are errors: a typo in a model must not pass silently. Numbers are finite
+    (YAML reads ``.inf`` and ``.nan`` as floats; no appliance has an infinite range)."""
 
-    model_config = ConfigDict(extra="forbid", frozen=True)
+    model_config = ConfigDict(extra="forbid", frozen=True, allow_inf_nan=False)
 
 
 class Appliance(_Strict):

@@ -7,28 +7,58 @@ Check names (the paper's nine first):
     ``missing-variable``, ``empty-action``, ``unknown-action``, ``action-coverage``,
     ``variable-coverage``, ``duplicate-sequence``, ``keypad``, ``keypad-buffer``,
     ``action-variable``, ``goal`` (see :func:`check_goal`);
-    then ``reference``, ``domain``, ``dependent``, ``guard``, ``display``, ``control``,
+    then ``size`` (first: see :mod:`apbot.model.limits`), ``reference``, ``domain``,
+    ``dependent``, ``guard``, ``display``, ``control``,
     ``unreachable-value``.
 """
 
 from __future__ import annotations
 
 import itertools
-from collections.abc import Iterator, Mapping
+from collections import Counter
+from collections.abc import Iterable, Iterator, Mapping
 from typing import Any
 
-from apbot.model.domain import Domain, DomainError, ValueProblem, build_domain, normalise
-from apbot.model.problems import Problem
+from apbot.model.domain import (
+    Domain,
+    DomainError,
+    ValueProblem,
+    build_domain,
+    domain_size,
+    normalise,
+)
+from apbot.model.limits import (
+    MAX_MODEL_VALUES,
+    MAX_PARTS,
+    MAX_STEPS,
+    MAX_VALUES,
+    SIZE_LIMITS_DOC,
+)
+from apbot.model.problems import PathPart, Problem
 from apbot.model.schema import (
     TEMPLATE_FIELD,
     Add,
     ApplianceModel,
+    Control,
     DiscreteVariable,
     GoTo,
     Step,
     time_step_seconds,
 )
-from apbot.model.values import closest_matches
+from apbot.model.values import closest_matches, preview
+
+LIMITS = f"see {SIZE_LIMITS_DOC}"
+
+
+class _Names(list[str]):
+    """Names in order (for "did you mean" hints) with a set for O(1) ``in``."""
+
+    def __init__(self, names: Iterable[str]) -> None:
+        super().__init__(names)
+        self.members = frozenset(self)
+
+    def __contains__(self, name: object) -> bool:
+        return name in self.members
 
 
 def _unknown(kind: str, name: str, options: list[str]) -> str:
@@ -39,6 +69,9 @@ def _unknown(kind: str, name: str, options: list[str]) -> str:
 
 def check_model(model: ApplianceModel) -> list[Problem]:
     """Every problem of the model; errors make it unusable, warnings are advice."""
+    too_large = list(_sizes(model))
+    if too_large:
+        return too_large  # every later check is linear in the model; past a limit, stop here
     problems = list(_references(model))
     domains, domain_problems = _domains(model)
     problems += domain_problems
@@ -54,13 +87,63 @@ def check_model(model: ApplianceModel) -> list[Problem]:
     return problems
 
 
+# --- sizes --------------------------------------------------------------------------------------
+
+
+def _sizes(model: ApplianceModel) -> Iterator[Problem]:
+    """The model's size against :mod:`apbot.model.limits`, counted without building anything."""
+    parts = {
+        "controls": len(model.controls),
+        "actions": len(model.actions),
+        "variables": len(model.variables),
+        "features": len(model.features),
+        "guards": len(model.guards),
+    }
+    for key, count in parts.items():
+        if count > MAX_PARTS:
+            yield Problem(
+                (key,), f"{count:,} {key}; a model has at most {MAX_PARTS:,} ({LIMITS})", "size"
+            )
+    steps = sum(len(s) for s in model.features.values())
+    if steps > MAX_STEPS:
+        yield Problem(
+            ("features",),
+            f"{steps:,} steps in all; a model has at most {MAX_STEPS:,} ({LIMITS})",
+            "size",
+        )
+    total = 0
+    for name, var in model.variables.items():
+        cases: list[tuple[str | None, Any]] = (
+            list((var.cases or {}).items()) if var.depends_on is not None else [(None, None)]
+        )
+        for case_key, case in cases:
+            size = domain_size(var, case)
+            total += size
+            if size > MAX_VALUES:
+                path: tuple[PathPart, ...] = ("variables", name)
+                if case_key is not None:
+                    path = (*path, "cases", case_key)
+                yield Problem(
+                    path,
+                    f"{size:,} values; a domain has at most {MAX_VALUES:,} ({LIMITS})",
+                    "size",
+                )
+    if total > MAX_MODEL_VALUES:
+        yield Problem(
+            ("variables",),
+            f"the domains hold {total:,} values in all; a model has at most "
+            f"{MAX_MODEL_VALUES:,} ({LIMITS})",
+            "size",
+        )
+
+
 # --- references -----------------------------------------------------------------------------
 
 
 def _references(model: ApplianceModel) -> Iterator[Problem]:
-    controls = [c.id for c in model.controls]
-    variables = list(model.variables)
-    actions = list(model.actions)
+    controls = _Names(c.id for c in model.controls)
+    variables = _Names(model.variables)
+    actions = _Names(model.actions)
     seen: set[str] = set()
     for i, control in enumerate(model.controls):
         if control.id in seen:
@@ -103,12 +186,13 @@ def _references(model: ApplianceModel) -> Iterator[Problem]:
                     (*path, "variable"), _unknown("variable", step.variable, variables), "reference"
                 )
             if isinstance(step.effect, dict):
+                step_actions = set(step.actions)
                 for action in step.effect:
-                    if action not in step.actions:
+                    if action not in step_actions:
                         yield Problem(
                             (*path, "effect", action),
                             f"{action!r} has an effect here but is not one of the "
-                            f"step's actions {step.actions}",
+                            f"step's actions {preview(step.actions)}",
                             "action-variable",
                         )
             for target in [*step.set, *step.reset]:
@@ -177,14 +261,15 @@ def _domains(model: ApplianceModel) -> tuple[dict[str, list[Domain]], list[Probl
             )
             continue
         parent_values = parent.values or []
+        parent_set = set(parent_values)
         domains[name] = []
         for key, case in (var.cases or {}).items():
-            if key not in parent_values:
+            if key not in parent_set:
                 problems.append(
                     Problem(
                         (*path, "cases", key),
                         f"{key!r} is not a value of {var.depends_on!r} "
-                        f"({parent_values})" + _close(key, parent_values),
+                        f"({preview(parent_values)})" + _close(key, parent_values),
                         "dependent",
                     )
                 )
@@ -193,7 +278,7 @@ def _domains(model: ApplianceModel) -> tuple[dict[str, list[Domain]], list[Probl
                 domains[name].append(build_domain(var, case))
             except DomainError as exc:
                 problems.append(Problem((*path, "cases", key), str(exc), "domain"))
-        if not var.cases or not any(k in parent_values for k in var.cases):
+        if not var.cases or not any(k in parent_set for k in var.cases):
             problems.append(
                 Problem(
                     (*path, "cases"), f"no case matches a value of {var.depends_on!r}", "dependent"
@@ -218,8 +303,11 @@ def _effects_of(step: Step, model: ApplianceModel) -> dict[str, Any]:
 
 def _steps(model: ApplianceModel, domains: Mapping[str, list[Domain]]) -> Iterator[Problem]:
     has_keypad = any(c.kind == "key" for c in model.controls)
+    by_id: dict[str, Control] = {}
+    for c in model.controls:
+        by_id.setdefault(c.id, c)
     for name, action in model.actions.items():
-        control = model.control(action.control_ids[0])
+        control = by_id.get(action.control_ids[0])
         if action.digit is not None:
             if not has_keypad or control is None or control.kind != "key":
                 yield Problem(
@@ -373,8 +461,9 @@ def _effect_problem(effect: Any, var: Any, doms: list[Domain]) -> str | None:
                     '("00:00:30", "-00:00:30")'
                 )
     if isinstance(effect, GoTo) and not _in_some(effect.to, var, doms):
-        values = [v for d in doms for v in d.values][:8]
-        return f"go-to value {effect.to!r} is not a value of the variable ({values})"
+        values = list(itertools.islice((v for d in doms for v in d.values), 9))
+        more = ", …" if len(values) > 8 else ""
+        return f"go-to value {effect.to!r} is not a value of the variable ({values[:8]}{more})"
     return None
 
 
@@ -415,7 +504,7 @@ def _duplicates(model: ApplianceModel) -> Iterator[Problem]:
             )
         signatures.setdefault(signature, feature)
         for s, step in enumerate(steps):
-            repeated = sorted({a for a in step.actions if step.actions.count(a) > 1})
+            repeated = sorted(a for a, n in Counter(step.actions).items() if n > 1)
             if repeated:
                 yield Problem(
                     ("features", feature, s, "actions"),
@@ -470,14 +559,15 @@ def _guards(model: ApplianceModel) -> Iterator[Problem]:
                 if _value_index(domain, value) is None:
                     yield Problem(
                         ("guards", g, "when", name),
-                        f"{value!r} is not a value of {name!r} ({list(domain.values)[:8]})",
+                        f"{value!r} is not a value of {name!r} ({preview(domain.values)})",
                         "guard",
                     )
+        allowed = set(guard.only)
         releasing = [
             s
             for steps in model.features.values()
             for s in steps
-            if any(a in guard.only for a in s.actions)
+            if any(a in allowed for a in s.actions)
             and (s.variable in guard.when or any(v in guard.when for v in [*s.set, *s.reset]))
         ]
         if not releasing:

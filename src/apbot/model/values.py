@@ -87,13 +87,20 @@ def tidy_number(value: Number | Decimal | str) -> Number:
 def expand_ranges(ranges: Sequence[Sequence[Number]]) -> list[Number]:
     """All values of piecewise ``[from, to, step]`` ranges, in order, shared ends once.
 
-    Decimal arithmetic keeps ``0.1`` steps exact.
+    Decimal arithmetic keeps ``0.1`` steps exact; whole-number ranges (most of them, and
+    every time range in seconds) take a fast path through ``range``.
 
     >>> expand_ranges([[0, 60, 10], [60, 120, 30]])
     [0, 10, 20, 30, 40, 50, 60, 90, 120]
     """
     values: list[Number] = []
     for start, stop, step in ranges:
+        if not step > 0:
+            raise ValueError(f"range [{start}, {stop}, {step}]: the step must be positive")
+        if all(_whole(x) for x in (start, stop, step)):
+            part: list[Number] = list(range(int(start), int(stop) + 1, int(step)))
+            values.extend(part[1:] if values and part and part[0] == values[-1] else part)
+            continue
         current, end, inc = Decimal(str(start)), Decimal(str(stop)), Decimal(str(step))
         while current <= end:
             value = tidy_number(current)
@@ -101,6 +108,10 @@ def expand_ranges(ranges: Sequence[Sequence[Number]]) -> list[Number]:
                 values.append(value)
             current += inc
     return values
+
+
+def _whole(number: Number) -> bool:
+    return isinstance(number, int) or (isinstance(number, float) and number.is_integer())
 
 
 # --- words and units ----------------------------------------------------------------------------
@@ -292,8 +303,54 @@ def normalise_text(text: str) -> str:
     return re.sub(r"[\s_\-/]+", " ", str(text).strip().casefold()).strip()
 
 
+MAX_HINT_OPTIONS = 2_000
+"""Options compared for a "did you mean" hint; past that, only the ones sharing a first letter."""
+
+
 def closest_matches(text: str, options: Iterable[str], limit: int = 3) -> list[str]:
-    """The options most similar to ``text``, for "did you mean" hints."""
+    """The options most similar to ``text``, for "did you mean" hints.
+
+    difflib compares ``text`` with every option; for a very long list (a 100,000-value domain)
+    only the options that start like ``text`` are compared, so a hint never costs seconds.
+    """
     import difflib
 
-    return difflib.get_close_matches(str(text), list(options), n=limit, cutoff=0.5)
+    word = str(text)
+    candidates = [str(o) for o in options]
+    if len(candidates) > MAX_HINT_OPTIONS:
+        head = word[:1].casefold()
+        candidates = [o for o in candidates if o[:1].casefold() == head][:MAX_HINT_OPTIONS]
+    return difflib.get_close_matches(word, candidates, n=limit, cutoff=0.5)
+
+
+def brief(value: object, limit: int = 60) -> str:
+    """``repr(value)``, cut to ``limit`` characters: a message quotes what it was given
+    without printing a 400-digit number or a pasted page.
+
+    >>> brief("x" * 100, limit=10)
+    "'xxxxxxxx…"
+    """
+    text = repr(value)
+    return text if len(text) <= limit else text[: limit - 1] + "…"
+
+
+def preview(values: Sequence[object], limit: int = 8, quote: bool = True) -> str:
+    """Values for a message: all of a short list, else the first few, the last and the count.
+
+    A message must stay one readable line whatever the domain's size.
+
+    >>> preview(["off", "on"])
+    "['off', 'on']"
+    >>> preview(list(range(10_000)), quote=False)
+    '0, 1, 2, 3, 4, 5, 6, …, 9999 (10,000 in all)'
+    """
+
+    def show(items: Sequence[object]) -> list[str]:
+        return [repr(v) if quote else str(v) for v in items]
+
+    if len(values) > limit:
+        body = ", ".join([*show(values[: limit - 1]), "…", *show(values[-1:])])
+        text = f"[{body}]" if quote else body
+        return f"{text} ({len(values):,} in all)"
+    body = ", ".join(show(values))
+    return f"[{body}]" if quote else body

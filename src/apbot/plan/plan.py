@@ -22,7 +22,8 @@ from apbot.model.goal import GoalError, parse_goal
 from apbot.model.schema import ApplianceModel
 from apbot.plan.goals import CompiledGoal
 from apbot.plan.search import DEFAULT_BUDGET, SearchExhausted, TaskSearch, Visit
-from apbot.sim.compiled import CompiledModel, State, compiled_model
+from apbot.sim.compiled import CompiledModel, State
+from apbot.sim.simulator import require_model
 
 __all__ = ["GoalError", "MacroAction", "Plan", "PlannedAction", "Unreachable", "plan"]
 
@@ -88,11 +89,22 @@ def plan(
     """The shortest plan from ``state`` (None: the initial state) to ``goal``.
 
     ``goal`` maps variable names to values in any accepted notation ("30 min", "on"), or is a
-    list of ``NAME=VALUE`` strings. Raises :class:`GoalError` for an invalid goal and
-    :class:`Unreachable` (with the reason) when no action sequence reaches it.
+    list of ``NAME=VALUE`` strings. Raises :class:`GoalError` for an invalid goal,
+    :class:`Unreachable` (with the reason) when no action sequence reaches it, and a
+    ``TypeError`` or ``ValueError`` naming the argument for a model, state or budget that
+    is not one.
     """
     started = time.perf_counter()
-    compiled = compiled_model(model)
+    compiled = require_model(model, "plan")
+    if state is not None:
+        compiled.check_state(state)
+    if isinstance(goal, str | bytes) or not isinstance(goal, Mapping | Iterable):
+        raise TypeError(
+            "plan's goal maps variable names to values ({'power': 'on'}) or is a list of "
+            f"NAME=VALUE strings (['power=on']), not {type(goal).__name__} {goal!r}"
+        )
+    if isinstance(budget, bool) or not isinstance(budget, int) or budget < 1:
+        raise ValueError(f"budget is a positive number of search states, not {budget!r}")
     canonical = parse_goal(compiled.model, goal)
     start = state if state is not None else compiled.initial_state()
     target = CompiledGoal.build(compiled, canonical)

@@ -355,6 +355,52 @@ class CompiledModel:
                 values[i] = -1 if domain is None else domain.initial
         return State(tuple(values), -1, "")
 
+    def check_state(self, state: Any, argument: str = "state") -> None:
+        """Raise a clear error unless ``state`` is a state of this model.
+
+        A state is a :class:`State` (from ``initial_state()``, ``Simulator.state`` or an
+        earlier plan): one value index per variable within its domain (``-1`` for a setting
+        absent in the current programme), a step id or ``-1``, and a buffer of digits.
+        """
+        if not isinstance(state, State):
+            raise TypeError(
+                f"{argument} must be a State (Simulator.state, CompiledModel.initial_state()) "
+                f"or None, not {type(state).__name__}"
+            )
+        values, step, buffer = state
+        if not isinstance(values, tuple) or len(values) != len(self.vars):
+            raise ValueError(
+                f"{argument}.values must hold one value index for each of the model's "
+                f"{len(self.vars)} variables"
+            )
+        for i, var in enumerate(self.vars):
+            index = values[i]
+            if isinstance(index, bool) or not isinstance(index, int):
+                raise ValueError(f"{argument}.values[{i}] ({var.name}) is not an index: {index!r}")
+        for i, var in enumerate(self.vars):  # parents first: a case depends on its parent
+            if var.parent < 0 and not 0 <= values[i] < len(var.domains[0] or ()):
+                raise ValueError(
+                    f"{argument}.values[{i}]: {values[i]} is not an index of {var.name}'s "
+                    f"{len(var.domains[0] or ())} values"
+                )
+        for i, var in enumerate(self.vars):
+            if var.parent >= 0:
+                domain = var.domain(values)
+                allowed = f"0 to {len(domain) - 1}" if domain is not None else "-1 (absent)"
+                if (domain is None and values[i] != -1) or (
+                    domain is not None and not 0 <= values[i] < len(domain)
+                ):
+                    raise ValueError(
+                        f"{argument}.values[{i}]: {values[i]} is not an index of {var.name} "
+                        f"in this programme ({allowed})"
+                    )
+        if isinstance(step, bool) or not isinstance(step, int) or not -1 <= step < len(self.steps):
+            raise ValueError(
+                f"{argument}.step must be -1 or a step id below {len(self.steps)}, not {step!r}"
+            )
+        if not isinstance(buffer, str) or not (buffer == "" or buffer.isdigit()):
+            raise ValueError(f"{argument}.buffer must be a string of typed digits, not {buffer!r}")
+
     def hiding_guard(self, state: State) -> GuardInfo | None:
         """A guard with ``hide`` that holds now: the display shows only its text."""
         for guard in self.guards:

@@ -10,12 +10,16 @@ The same engine runs the benchmark's ground truth and an agent's belief model.
 
 from __future__ import annotations
 
+import math
+import operator
+from collections.abc import Mapping
 from dataclasses import dataclass, field
+from numbers import Real
 from typing import Any
 
 from apbot.model.display import lamp_for, show_template
 from apbot.model.schema import TEMPLATE_FIELD, ApplianceModel
-from apbot.sim.compiled import NOT_HERE, CompiledModel, State
+from apbot.sim.compiled import NOT_HERE, CompiledModel, State, compiled_model
 
 
 @dataclass(slots=True)
@@ -49,22 +53,74 @@ def panel_text(display: str, lamps: tuple[str, ...] | list[str]) -> str:
     return "  ".join(part for part in (display, *lamps) if part)
 
 
-class UnknownAction(KeyError):
-    """An action name the model does not have."""
+class UnknownAction(KeyError, ValueError):
+    """An action name (or index) the model does not have. A ``ValueError`` too: the argument
+    is wrong; a ``KeyError`` for callers that looked names up in a dict before."""
 
     def __str__(self) -> str:
         return str(self.args[0])
+
+
+class UnknownVariable(KeyError, ValueError):
+    """A variable name the model does not have (in a goal, or asked for by name)."""
+
+    def __str__(self) -> str:
+        return str(self.args[0])
+
+
+def require_model(model: Any, who: str) -> CompiledModel:
+    """The compiled form of ``model``, or a :class:`TypeError` saying what ``who`` needs.
+
+    A model that fails to compile (built with ``check=False`` and broken) is reported with
+    the checker's problems rather than the compiler's KeyError.
+    """
+    if not isinstance(model, ApplianceModel | CompiledModel):
+        raise TypeError(
+            f"{who} needs an ApplianceModel (from apbot.model.load.load_model or parse_model) "
+            f"or a CompiledModel, not {type(model).__name__}"
+        )
+    if isinstance(model, CompiledModel):
+        return model
+    try:
+        return compiled_model(model)
+    except Exception:
+        from apbot.model.problems import ModelError
+        from apbot.model.validate import check_model
+
+        errors = [p for p in check_model(model) if p.severity == "error"]
+        if errors:
+            raise ModelError(errors, f"the model given to {who}") from None
+        raise
+
+
+def hold_seconds(seconds: Any) -> float:
+    """``seconds`` as a hold duration: a finite number above zero, or a clear error.
+
+    The terminal simulator always refused ``nan``, ``inf`` and negative holds; the Python API
+    now does too, instead of comparing them with the required duration.
+    """
+    if isinstance(seconds, bool) or not isinstance(seconds, Real):
+        raise TypeError(
+            f"seconds is how long a hold lasts, a number; got {type(seconds).__name__} {seconds!r}"
+        )
+    value = float(seconds)
+    if not math.isfinite(value) or value <= 0:
+        raise ValueError(f"seconds must be a finite number above zero; got {seconds!r}")
+    return value
 
 
 class Simulator:
     """A stateful wrapper around :class:`CompiledModel` with names instead of indices."""
 
     def __init__(self, model: ApplianceModel | CompiledModel) -> None:
-        self.compiled = model if isinstance(model, CompiledModel) else CompiledModel(model)
+        self.compiled = (
+            model if isinstance(model, CompiledModel) else require_model(model, "Simulator")
+        )
         self.model = self.compiled.model
         self.state: State = self.compiled.initial_state()
         self._display_cache: dict[tuple[int, int, int], str] = {}
         self._plain_show = {v: _is_plain(var.spec.show) for v, var in enumerate(self.compiled.vars)}
+        self._goal_values: dict[tuple[str, type, Any], Any] = {}
 
     @property
     def actions(self) -> list[str]:
@@ -73,23 +129,45 @@ class Simulator:
 
     def reset(self, state: State | None = None) -> Observation:
         """Back to the initial state (or to ``state``); returns what the display shows."""
+        if state is not None:
+            self.compiled.check_state(state)
         self.state = state if state is not None else self.compiled.initial_state()
         return self.observe()
 
-    def action_id(self, action: str) -> int:
-        try:
-            return self.compiled.action_index[action]
-        except KeyError:
-            from apbot.model.values import closest_matches
+    def action_id(self, action: str | int) -> int:
+        """The index of an action given by name or by index (checked either way)."""
+        if isinstance(action, str):
+            try:
+                return self.compiled.action_index[action]
+            except KeyError:
+                from apbot.model.values import closest_matches
 
-            close = closest_matches(action, self.compiled.action_names, limit=1)
-            hint = f"; did you mean {close[0]!r}?" if close else ""
-            raise UnknownAction(f"unknown action {action!r}{hint}") from None
+                close = closest_matches(action, self.compiled.action_names, limit=1)
+                hint = f"; did you mean {close[0]!r}?" if close else ""
+                raise UnknownAction(f"unknown action {action!r}{hint}") from None
+        try:
+            if isinstance(action, bool):
+                raise TypeError
+            index = operator.index(action)
+        except TypeError:
+            raise TypeError(
+                f"an action is a name (str) or an index (int), not {type(action).__name__} "
+                f"{action!r}"
+            ) from None
+        count = len(self.compiled.action_names)
+        if not 0 <= index < count:
+            raise UnknownAction(
+                f"action index {index} is out of range: the model has {count} actions, "
+                f"0 to {count - 1}"
+            )
+        return index
 
     def step(self, action: str | int, seconds: float | None = None) -> Observation:
-        """Perform one action. ``seconds`` is how long a hold lasts (default: long enough);
-        a press ignores it."""
-        aid = action if isinstance(action, int) else self.action_id(action)
+        """Perform one action, by name or index. ``seconds`` is how long a hold lasts
+        (default: long enough); a press ignores it, but it must be a positive number."""
+        aid = self.action_id(action)
+        if seconds is not None:
+            seconds = hold_seconds(seconds)
         compiled = self.compiled
         new = compiled.apply(self.state, aid, seconds)
         if new is None:
@@ -209,15 +287,61 @@ class Simulator:
 
     def value(self, name: str) -> Any:
         """Canonical value of a variable now."""
-        return self.compiled.value(self.state, name)
+        try:
+            return self.compiled.value(self.state, name)
+        except (KeyError, TypeError):
+            raise self._unknown_variable(name) from None
+
+    def _unknown_variable(self, name: Any) -> UnknownVariable:
+        from apbot.model.values import closest_matches, preview
+
+        names = list(self.compiled.var_index)
+        close = closest_matches(str(name), names, limit=1)
+        hint = f"; did you mean {close[0]!r}?" if close else f" (it has {preview(names)})"
+        return UnknownVariable(f"the model has no variable {name!r}{hint}")
 
     def assignment(self) -> dict[str, Any]:
         """Every variable's canonical value now."""
         return self.compiled.assignment(self.state)
 
-    def satisfies(self, goal: dict[str, Any]) -> bool:
-        """Whether every goal variable has its (canonical) goal value now."""
-        return all(self.value(name) == value for name, value in goal.items())
+    def satisfies(self, goal: Mapping[str, Any]) -> bool:
+        """Whether every goal variable has its goal value now.
+
+        Goal values may be written in any accepted notation ("80 °C", "on"); they are
+        normalised once and remembered. An unknown variable or a value outside the variable's
+        values raises (a goal that can never hold is a mistake, not a False).
+        """
+        if not isinstance(goal, Mapping):
+            raise TypeError(
+                f"a goal maps variable names to values, e.g. {{'power': 'on'}}; "
+                f"got {type(goal).__name__}"
+            )
+        for name, wanted in goal.items():
+            current = self.value(name)
+            if current != wanted and current != self._goal_value(name, wanted):
+                return False
+        return True
+
+    def _goal_value(self, name: str, raw: Any) -> Any:
+        key = (name, type(raw), raw)
+        try:
+            known = self._goal_values.get(key, _UNSEEN)
+        except TypeError:  # unhashable: a list or a dict is not one value
+            raise TypeError(
+                f"goal {name}: a goal value is one value, not a {type(raw).__name__}"
+            ) from None
+        if known is _UNSEEN:
+            from apbot.model.domain import ValueProblem, normalise
+
+            try:
+                known = normalise(self.model.variables[name], raw)
+            except ValueProblem as exc:
+                raise ValueProblem(f"goal {name}={raw!r}: {exc}") from None
+            self._goal_values[key] = known
+        return known
+
+
+_UNSEEN = object()
 
 
 def lamp_text(compiled: CompiledModel, state: State, v: int) -> str:
