@@ -126,11 +126,11 @@ class ClosedLoop:
                     raise Stop("the rest of the goal cannot be reached on the belief model")
                 if self.settle_contradictions(inside):
                     return  # the belief now holds what was shown: plan again
-                unseen = sorted(self.session.unverified & set(inside))
-                if unseen:  # believed, never seen: claiming it would be a guess
+                unseen = self.session.unconfirmed(set(inside))
+                if unseen:  # believed, but the display last said otherwise: it would be a guess
                     raise Stop(
-                        "the belief holds the goal, but the display never confirmed "
-                        f"{', '.join(unseen)} after it was set"
+                        "the belief holds the goal, but the display last showed "
+                        + ", ".join(f"{n}={self.session.evidence[n]!r}" for n in unseen)
                     )
                 raise Stop("the goal holds", success=True)
             self.pending = list(found.macro_actions)

@@ -109,7 +109,7 @@ class Session:
         self.last = Feedback()
         self.last_seen = Seen()
         self.explored: set[str] = set()
-        self.unverified: set[str] = set()  # changed by a press but not seen since
+        self.evidence: dict[str, Any] = {}  # the value the display showed last, per variable
         self.contradicted: dict[str, Any] = {}  # last shown as a value the belief cannot hold
 
     # --- acting ------------------------------------------------------------------------------
@@ -179,13 +179,6 @@ class Session:
             # the display did not move to the step the belief entered: the key did nothing
             # visible, so the belief must not keep what it predicted the key would do
             self.belief.state = before_state  # (``pointer`` still says where it meant to go)
-        # every value the press changed in the belief — side effects too — needs the display
-        # to confirm it before success can rest on it
-        before_values = self.belief.compiled.assignment(before_state)
-        after_values = self.belief.values()
-        self.unverified |= {n for n, v in after_values.items() if before_values[n] != v}
-        if variable and not exploring:
-            self.unverified.add(variable)
         self.sync(seen)
         return Executed(
             action,
@@ -231,10 +224,20 @@ class Session:
         self.last_seen = seen
         for name, value in seen.values.items():
             self.belief.set_value(name, value)
-        self.unverified -= set(seen.values)
+        self.evidence.update(seen.values)
+        self.evidence.update(seen.outside)
+        self.evidence.update({name: None for name in seen.absent})
         self.contradicted.update(seen.outside)
         for name in seen.values:
             self.contradicted.pop(name, None)
+
+    def unconfirmed(self, names: list[str] | set[str]) -> list[str]:
+        """The variables whose last reading on the display is not what the belief holds now
+        (changed since — by a press, a side effect, a repair — and not seen again). A variable
+        never shown at all rests on the model alone."""
+        return sorted(
+            n for n in names if n in self.evidence and self.evidence[n] != self.belief.value(n)
+        )
 
     def shown(self, name: str) -> Any:
         """The value of ``name`` on the display now; MISSING if none."""
