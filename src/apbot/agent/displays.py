@@ -47,7 +47,7 @@ class DisplayLearner:
             words=isinstance(spec, DiscreteVariable),
             known=believed,
         )
-        if template is None or not session.budget.once("template", name):
+        if template is None or not session.budget.once("template", f"{name}:{template}"):
             return False
         try:
             new = set_display(model, name, template)

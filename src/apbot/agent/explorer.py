@@ -151,6 +151,9 @@ class Explorer:
             values.append(value)
             if value in values[:-1]:
                 break
+            unread = [v.text for v in values if isinstance(v, Unread)]
+            if len(unread) >= 2 and self.displays.learn(name, unread):
+                break  # the belief printed it wrong: read again, the walk has done its job
         return values, dark
 
     @staticmethod
@@ -159,8 +162,8 @@ class Explorer:
         if seen is None:
             return MISSING
         value = seen.observed(name)
-        if value is MISSING and seen.unknown and seen.text.strip():
-            return Unread(seen.text)
+        if value is MISSING and seen.text.strip() and not seen.showing(name):
+            return Unread(seen.text)  # text, but not this setting's as the belief prints it
         return value
 
     def history(self, name: str, last: Executed, executed: list[Executed]) -> list[Any]:

@@ -36,6 +36,7 @@ from apbot.agent.session import (
     magnitude,
     summary,
 )
+from apbot.model.display import display_value
 from apbot.model.domain import ValueProblem, all_values, build_domain, normalise
 from apbot.model.goal import GoalError
 from apbot.model.schema import DiscreteVariable, GoTo
@@ -287,7 +288,15 @@ class ClosedLoop:
                 n: "(unreadable)" if o is UNREADABLE else o for n, (_, o) in done.surprises.items()
             },
         )
-        if done.refused or self._wrong_setting(done):
+        if not done.refused and self._shown_otherwise(done):
+            assert done.variable is not None and done.pointer is not None
+            # the key is the setting's own, and the screen that came up belongs to a setting
+            # no step of which has this key: more likely the belief prints the setting wrong
+            if self.session.stepping(done.pointer, done.action.name):
+                self.explorer.explore(done.variable, done)
+            else:
+                self._learn_display(done.variable, executed[: first + 1])
+        elif done.refused or self._wrong_setting(done):
             self.procedures.repair_procedure(executed[first:])
             name = self.session.step_variable(self.session.belief.pointer())
             key = self.explorer.stepping_key(name) if name else None
@@ -307,6 +316,31 @@ class ClosedLoop:
         self._look_at(outside)
         return False
 
+    def _shown_otherwise(self, done: Executed) -> bool:
+        """The press of the belief's setting's own key brought up the screen of another setting
+        whose steps do not have that key (or that shows the very value predicted), and the
+        display changed: the belief's display rules for its setting may be wrong (once)."""
+        seen = done.seen
+        name = done.variable
+        if seen is None or name is None or done.pointer is None or done.unchanged:
+            return False
+        others = {v for kind, v in seen.screens if kind == "focus"}
+        if not others or seen.showing(name):
+            return False
+        effect = self.session.effect(done.pointer, done.action.name)
+        if not self.session.stepping(done.pointer, done.action.name) and effect != "digit":
+            return False
+        model = self.session.belief.model
+        printed = display_value(model.variables[name], done.predicted)
+        if not (len(printed) >= 2 and printed in seen.text) and any(
+            done.action.name in step.actions
+            for steps in model.features.values()
+            for step in steps
+            if step.variable in others
+        ):
+            return False  # the other setting's own key, and not the value predicted either
+        return self.session.budget.once("template", f"suspect:{name}")
+
     def _wrong_setting(self, done: Executed) -> bool:
         """The press brought up another setting than the belief's step adjusts (or left the
         display as it was: a key ignored without a sign)."""
@@ -325,8 +359,14 @@ class ClosedLoop:
     def _learn_display(self, name: str, executed: list[Executed]) -> bool:
         """The display showed text the belief cannot read where it expected ``name``: learn
         how the display prints it from the texts of the presses that adjusted it."""
-        shown = [e for e in executed if e.variable == name and e.seen is not None]
-        unread = [e for e in shown if e.seen is not None and e.seen.unknown]
+        unread = [
+            e
+            for e in executed
+            if e.variable == name
+            and e.seen is not None
+            and e.seen.text.strip()
+            and (e.seen.unknown or not e.seen.showing(name))
+        ]
         if not unread:
             return False
         texts = [e.feedback.text for e in unread]

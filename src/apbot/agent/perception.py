@@ -38,7 +38,8 @@ class Seen:
     variables the display leaves ambiguous, with the values it allows; ``absent``: shown as
     ``--``. ``screen``: the variable the main display is adjusting, and ``screen_kind`` what the
     main display shows (``focus``, ``idle``, ``guard``; None when the readings disagree or in
-    values mode, where there is no screen to read). ``unknown``: the text fits none of the belief's
+    values mode, where there is no screen to read); ``screens`` every (kind, variable) the
+    best readings allow. ``unknown``: the text fits none of the belief's
     screens; ``blank``: the display shows nothing.
     """
 
@@ -49,6 +50,7 @@ class Seen:
     absent: set[str] = field(default_factory=set)
     screen: str | None = None
     screen_kind: str | None = None
+    screens: frozenset[tuple[str, str | None]] = frozenset()
     unknown: bool = False
     blank: bool = False
     partial: bool = False
@@ -64,8 +66,8 @@ class Seen:
         return MISSING
 
     def showing(self, name: str) -> bool:
-        """Whether the main display is adjusting ``name`` (True when it cannot tell)."""
-        return self.screen_kind is None or (self.screen_kind, self.screen) == ("focus", name)
+        """Whether the main display may be adjusting ``name`` (True when it cannot tell)."""
+        return not self.screens or ("focus", name) in self.screens
 
     def shown(self) -> set[str]:
         """The variables this feedback says something about."""
@@ -133,6 +135,7 @@ def choose(
     best = [h for h in ranked if score(h) == score(ranked[0])]
     seen = Seen(reading.text, blank=reading.blank, partial=best[0].partial)
     screens = {(h.screen.kind, h.screen.variable) for h in best}
+    seen.screens = frozenset(screens)
     if len(screens) == 1:
         seen.screen_kind, seen.screen = screens.pop()
     names = set().union(*(h.shown() for h in best))

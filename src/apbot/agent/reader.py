@@ -220,8 +220,6 @@ class DisplayReader:
 
     def _read(self, text: str, parents: dict[str, Any]) -> Reading:
         found = [h for p in self._patterns if (h := self._match(p, text, parents, False))]
-        if not found and text.strip():  # a word the belief does not know
-            found = [h for p in self._loose if (h := self._match(p, text, parents, False))]
         if not found and text.strip():  # more on the display than the belief prints
             main = self._without_lamps(text)
             found = [
@@ -229,6 +227,8 @@ class DisplayReader:
                 for p in self._patterns
                 if p.search is not None and (h := self._match(p, main, parents, True))
             ]
+        if not found and text.strip():  # a word the belief does not know
+            found = [h for p in self._loose if (h := self._match(p, text, parents, False))]
         return Reading(text, tuple(_unique(found)))
 
     def _without_lamps(self, text: str) -> str:
@@ -482,11 +482,7 @@ def _focus_templates(spec: AnyVariable) -> list[tuple[str, Any]]:
 
 def _literal(text: str) -> str:
     """A template's literal text as a pattern: any run of spaces matches any run of spaces."""
-    return (
-        r"\s+".join(re.escape(part) for part in re.split(r"\s+", text))
-        if text.strip()
-        else (r"\s*" if text else "")
-    )
+    return r"\s+".join(re.escape(part) for part in re.split(r"\s+", text)) if text else ""
 
 
 def _squash(text: str) -> str:

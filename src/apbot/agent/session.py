@@ -206,7 +206,11 @@ class Session:
         if not feedback.values and feedback.text == expected.text:
             kind, _ = self.expected_screen()
             return Seen(
-                feedback.text, dict(expected.values), screen=expected.focus, screen_kind=kind
+                feedback.text,
+                dict(expected.values),
+                screen=expected.focus,
+                screen_kind=kind,
+                screens=frozenset({(kind, expected.focus)}),
             )
         return self.perceiver.perceive(feedback, self.belief.values(), self.expected_screen())
 
