@@ -288,7 +288,13 @@ class ClosedLoop:
                 n: "(unreadable)" if o is UNREADABLE else o for n, (_, o) in done.surprises.items()
             },
         )
-        if not done.refused and self._shown_otherwise(done):
+        if (
+            not done.refused
+            and self.procedures.plausibly_moved(done)
+            and (self.procedures.move_key(done))
+        ):
+            pass  # plan again with the key where it belongs
+        elif not done.refused and self._shown_otherwise(done):
             assert done.variable is not None and done.pointer is not None
             # the key is the setting's own, and the screen that came up belongs to a setting
             # no step of which has this key: more likely the belief prints the setting wrong

@@ -12,8 +12,9 @@ from __future__ import annotations
 from typing import Any
 
 from apbot.agent.guards import GuardLearner
-from apbot.agent.repair import RepairError, insert_step
+from apbot.agent.repair import RepairError, insert_step, move_action
 from apbot.agent.session import MISSING, Executed, Session, Stop
+from apbot.model.schema import GoTo
 
 
 class ProcedureRepairer:
@@ -31,6 +32,8 @@ class ProcedureRepairer:
             return
         failing = refused or [e for e in executed if e.variable is not None]
         if failing and self.guards.learn(failing[0]):
+            return
+        if failing and not refused and self.move_key(failing[0]):
             return
         if not failing or failing[0].pointer is None:
             raise Stop(
@@ -50,7 +53,8 @@ class ProcedureRepairer:
             for a in s.actions
             if a not in step.actions
         ]
-        for candidate in dict.fromkeys(self.orphans() + idle + others):
+        alike = self.keys_like(name or feature, exclude=set(step.actions))
+        for candidate in dict.fromkeys(self.orphans() + idle + others + alike):
             if candidate == first.action.name:
                 continue
             probe = self.session.press(self.session.planned(candidate), exploring=True)
@@ -70,6 +74,117 @@ class ProcedureRepairer:
                 )
                 return
         self.session.forget_pointer()
+
+    def move_key(self, done: Executed) -> bool:
+        """The key brought up another setting's screen than the belief's step: the key belongs
+        to that setting's procedure. Move it there — as a key that sets, steps or only shows
+        the setting, as its value showed — and out of the step the belief had it in."""
+        session = self.session
+        seen = done.seen
+        if seen is None or seen.screen_kind != "focus" or done.unchanged:
+            return False
+        target = seen.screen
+        if target is None or target == done.variable or done.state_before is None:
+            return False
+        model = session.belief.model
+        places = [
+            (feature, index)
+            for feature, steps in model.features.items()
+            for index, step in enumerate(steps)
+            if step.variable == target and done.action.name not in step.actions
+        ]
+        first = [(f, i) for f, i in places if i == 0]
+        entered = [(f, i) for f, i in places if i > 0 and model.features[f][i - 1].variable is None]
+        if not first and not entered:
+            return False
+        before = session.belief.compiled.value(done.state_before, target)
+        shown = seen.observed(target)
+        if (first or entered)[0] in first:
+            feature, index = first[0]
+            effect = self._effect_shown(feature, index, before, shown)
+            where = (feature, index)
+        else:
+            feature, index = entered[0]
+            effect, where = None, (feature, index - 1)
+        if not session.budget.once("entry", f"move:{done.action.name}:{feature}"):
+            return False
+        try:
+            new = move_action(model, done.action.name, where, effect)
+        except RepairError as exc:
+            session.episode.log("repair", f"could not move {done.action.name}: {exc}")
+            return False
+        old = done.pointer[0] if done.pointer else "?"
+        session.adopt(new, f"{done.action.name} belongs to {feature}, not {old}", (feature, index))
+        session.reread()
+        return True
+
+    def plausibly_moved(self, done: Executed) -> bool:
+        """Whether another setting came up and changed as one of its own keys would change it
+        (set, one step either way, or not at all): the key is filed under the wrong procedure,
+        rather than the belief printing its own setting wrong."""
+        seen = done.seen
+        if seen is None or seen.screen_kind != "focus" or done.state_before is None:
+            return False
+        target = seen.screen
+        if target is None or target == done.variable:
+            return False
+        places = [
+            (f, i)
+            for f, steps in self.session.belief.model.features.items()
+            for i, step in enumerate(steps)
+            if step.variable == target
+        ]
+        if not places:
+            return False
+        before = self.session.belief.compiled.value(done.state_before, target)
+        shown = seen.observed(target)
+        feature, index = places[0]
+        effect = self._effect_shown(feature, index, before, shown)
+        values = self.session.domain_values(target)
+        return (
+            effect in ("none", "prev")
+            or isinstance(effect, dict)
+            or (
+                effect == "next"
+                and before in values
+                and shown in values
+                and values[(values.index(before) + 1) % len(values)] == shown
+            )
+        )
+
+    def _effect_shown(self, feature: str, index: int, before: Any, shown: Any) -> Any:
+        """What the key did to the step's setting, as the display showed it: set it (the step's
+        other keys set values too), stepped it one way or the other, or only showed it."""
+        model = self.session.belief.model
+        step = model.features[feature][index]
+        effects = [self.session.effect((feature, index), a) for a in step.actions]
+        if shown == before or shown is MISSING or shown is None:
+            return "none"
+        if any(isinstance(e, GoTo) for e in effects):
+            return {"to": shown}
+        values = self.session.domain_values(step.variable or "")
+        if before in values and shown in values:
+            i, j = values.index(before), values.index(shown)
+            if (i + 1) % len(values) == j:
+                return "next"
+            if (j + 1) % len(values) == i:
+                return "prev"
+        return "next"
+
+    def keys_like(self, name: str, exclude: set[str]) -> list[str]:
+        """Keys of the panel whose names share a word with ``name`` (``press_timer`` for
+        ``timer``, ``set_timer``): an entry key filed under another procedure."""
+        words = {w for w in name.split("_") if len(w) >= 3 and w not in ("set", "press")}
+        found = []
+        for action in self.session.belief.model.actions:
+            if action in exclude or action not in self.session.offered:
+                continue
+            parts = set(action.split("_"))
+            if words & parts or any(
+                w.startswith(p) or p.startswith(w) for w in words for p in parts if len(p) >= 3
+            ):
+                found.append(action)
+        return found[:4]
 
     def recover_unreachable(self, blocked: dict[str, Any]) -> bool:
         """The belief cannot bring these goal variables up: probe for the key that does."""

@@ -181,3 +181,30 @@ def add_guard(
         guard["hide"] = True
     data.setdefault("guards", []).append(guard)
     return _rebuild(data)
+
+
+def move_action(
+    model: ApplianceModel, action: str, where: tuple[str, int], effect: Any = None
+) -> ApplianceModel:
+    """File ``action`` under the step ``where`` (with ``effect`` on its setting) and take it
+    out of every other step, except one it is the only key of."""
+    data = _dump(model)
+    feature, index = where
+    for name, steps in data["features"].items():
+        for i, step in enumerate(steps):
+            if (name, i) == where or action not in step["actions"] or len(step["actions"]) < 2:
+                continue
+            step["actions"] = [a for a in step["actions"] if a != action]
+            if isinstance(step.get("effect"), dict):
+                step["effect"].pop(action, None)
+    step = data["features"][feature][index]
+    spec = model.features[feature][index]
+    step["actions"] = [*step["actions"], action]
+    if spec.variable is not None:
+        current = (
+            dict(step["effect"])
+            if isinstance(step.get("effect"), dict)
+            else {a: _plain(default_effect(spec, a, model)) for a in spec.actions}
+        )
+        step["effect"] = {**current, action: effect if effect is not None else "none"}
+    return _rebuild(data)

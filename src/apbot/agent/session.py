@@ -175,10 +175,11 @@ class Session:
             and feedback.text == before_text
             and (expected.text != before_text or before_state != self.belief.state)
         )
-        if unchanged and variable is not None and not seen.showing(variable):
-            # the display did not move to the step the belief entered: the key did nothing
-            # visible, so the belief must not keep what it predicted the key would do
-            self.belief.state = before_state  # (``pointer`` still says where it meant to go)
+        if surprises and variable is not None and not seen.showing(variable):
+            # the display did not come to the step the belief entered: the key did nothing
+            # visible, or something else, so the belief must not keep what it predicted the key
+            # would do — only what the display shows (``pointer`` still says where it meant to go)
+            self.belief.state = before_state
         self.sync(seen)
         return Executed(
             action,
