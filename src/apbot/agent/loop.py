@@ -216,11 +216,15 @@ class ClosedLoop:
                 if self._plannable({**reachable, name: value}):
                     reachable[name] = value
                     continue
+                # look for the way to it first: progress on the rest (starting a cycle, say)
+                # could close the door on it
+                if self.procedures.recover_unreachable({name: value}):
+                    return self.make_plan(target)
                 if reachable:
                     partial = self._plan(reachable)
                     if partial.macro_actions:
-                        return partial  # progress first: the rest may be reachable from there
-                if self.procedures.recover_unreachable({name: value}) or self.inspect(name):
+                        return partial  # progress: the rest may be reachable from there
+                if self.inspect(name):
                     return self.make_plan(target)
                 break
             raise Stop(f"no plan on the belief model: {exc.reason}") from None

@@ -54,14 +54,32 @@ class ProcedureRepairer:
             if a not in step.actions
         ]
         alike = self.keys_like(name or feature, exclude=set(step.actions))
-        for candidate in dict.fromkeys(self.orphans() + idle + others + alike):
+        elsewhere = self._entries_elsewhere(feature, name)
+        for candidate in dict.fromkeys(self.orphans() + idle + others + list(elsewhere) + alike):
             if candidate == first.action.name:
                 continue
             probe = self.session.press(self.session.planned(candidate), exploring=True)
             if not probe.feedback.accepted:
                 continue
             after = self.session.press(first.action, exploring=True)
-            if after.feedback.accepted and name is not None and after.observed(name) is not MISSING:
+            shows = name is not None and after.observed(name) is not MISSING
+            if after.feedback.accepted and shows and candidate in elsewhere:
+                # the key belongs to that other procedure, after its entry key
+                assert name is not None
+                where = elsewhere[candidate]
+                effect = self._effect_shown(*where, probe.observed(name), after.observed(name))
+                try:
+                    new = move_action(self.session.belief.model, first.action.name, where, effect)
+                except RepairError as exc:
+                    self.session.episode.log("repair", f"could not move a key: {exc}")
+                    continue
+                self.session.adopt(
+                    new,
+                    f"{first.action.name} belongs to {where[0]} after {candidate}, not {feature}",
+                    where,
+                )
+                return
+            if after.feedback.accepted and shows:
                 try:
                     new = insert_step(self.session.belief.model, feature, index, [candidate])
                 except RepairError as exc:
@@ -171,6 +189,20 @@ class ProcedureRepairer:
                 return "prev"
         return "next"
 
+    def _entries_elsewhere(self, feature: str, name: str | None) -> dict[str, tuple[str, int]]:
+        """Entry keys of the other procedures that adjust ``name`` too, each with the step of
+        that procedure that adjusts it: the failing key may belong there."""
+        found: dict[str, tuple[str, int]] = {}
+        if name is None:
+            return found
+        for other, steps in self.session.belief.model.features.items():
+            if other == feature or len(steps) < 2 or steps[0].variable is not None:
+                continue
+            for index, step in enumerate(steps[1:], start=1):
+                if step.variable == name:
+                    found.setdefault(steps[0].actions[0], (other, index))
+        return found
+
     def keys_like(self, name: str, exclude: set[str]) -> list[str]:
         """Keys of the panel whose names share a word with ``name`` (``press_timer`` for
         ``timer``, ``set_timer``): an entry key filed under another procedure."""
@@ -203,14 +235,23 @@ class ProcedureRepairer:
         return False
 
     def _first_step_from_orphans(self, name: str, features: list[str]) -> bool:
-        for candidate in self.orphans():
+        """Keys no procedure uses, or named like the setting (an entry key filed under another
+        procedure): the one that brings the setting up is the entry step it lacks."""
+        used = set(self.orphans())
+        for candidate in dict.fromkeys([*used, *self.keys_like(name, exclude=set())]):
             self.guards.lift(candidate)
             probe = self.session.press(self.session.planned(candidate), exploring=True)
             if not probe.feedback.accepted or probe.observed(name) is MISSING:
                 continue
             for feature in features:
                 try:
-                    new = insert_step(self.session.belief.model, feature, 0, [candidate])
+                    new = insert_step(
+                        self.session.belief.model,
+                        feature,
+                        0,
+                        [candidate],
+                        move=candidate not in used,
+                    )
                 except RepairError:
                     continue
                 self.session.adopt(new, f"{feature} starts with {candidate}", (feature, 0))

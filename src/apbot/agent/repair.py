@@ -122,10 +122,18 @@ def _plain(effect: Any) -> Any:
 
 
 def insert_step(
-    model: ApplianceModel, feature: str, before: int, actions: Sequence[str]
+    model: ApplianceModel,
+    feature: str,
+    before: int,
+    actions: Sequence[str],
+    move: bool = False,
 ) -> ApplianceModel:
-    """Insert a step that only moves the procedure on (an entry key the model missed)."""
+    """Insert a step that only moves the procedure on (an entry key the model missed);
+    ``move``: the keys leave the steps they were filed under (where not their only key)."""
     data = _dump(model)
+    if move:
+        for action in actions:
+            _take_out(data, action, keep=(feature, -1))
     data["features"][feature].insert(
         before, {"actions": list(actions), "note": "learnt from feedback"}
     )
@@ -190,13 +198,7 @@ def move_action(
     out of every other step, except one it is the only key of."""
     data = _dump(model)
     feature, index = where
-    for name, steps in data["features"].items():
-        for i, step in enumerate(steps):
-            if (name, i) == where or action not in step["actions"] or len(step["actions"]) < 2:
-                continue
-            step["actions"] = [a for a in step["actions"] if a != action]
-            if isinstance(step.get("effect"), dict):
-                step["effect"].pop(action, None)
+    _take_out(data, action, keep=where)
     step = data["features"][feature][index]
     spec = model.features[feature][index]
     step["actions"] = [*step["actions"], action]
@@ -208,3 +210,28 @@ def move_action(
         )
         step["effect"] = {**current, action: effect if effect is not None else "none"}
     return _rebuild(data)
+
+
+def _take_out(data: dict[str, Any], action: str, keep: tuple[str, int]) -> None:
+    """Remove ``action`` from every step but ``keep`` (index -1: none of that procedure's
+    steps is kept, but the procedure stays). A step it was the only key of goes too — and with
+    a first step, its whole procedure: the key was shown to do something else, so nothing could
+    ever start it."""
+    features = data["features"]
+    for name in list(features):
+        steps = features[name]
+        for i in reversed(range(len(steps))):
+            step = steps[i]
+            if (name, i) == keep or action not in step["actions"]:
+                continue
+            if len(step["actions"]) > 1:
+                step["actions"] = [a for a in step["actions"] if a != action]
+                if isinstance(step.get("effect"), dict):
+                    step["effect"].pop(action, None)
+            elif name == keep[0]:
+                continue  # the procedure the key goes to keeps its own steps
+            elif i == 0:
+                del features[name]
+                break
+            else:
+                del steps[i]
