@@ -257,6 +257,7 @@ class Explorer:
             values=values,
             wrap=order.wrap,
             current=current,
+            initial=self._first_of_programme(name, order.values),
         )
         return new, f"{name}: values {summary(values)}{_ends(order.wrap)}"
 
@@ -306,9 +307,18 @@ class Explorer:
             ranges=ranges,
             wrap=order.wrap if effect != "toggle" else None,
             current=canonical(spec, magnitude(spec, current)),
+            initial=self._first_of_programme(name, forward),
         )
         notes.append(f"{name}: ranges {ranges}{_ends(order.wrap)}")
         return new, "; ".join(notes)
+
+    def _first_of_programme(self, name: str, trace: list[Any]) -> Any:
+        """A programme's starting value of a setting the belief only guessed (one it found on
+        its own): the first value this walk showed."""
+        if name not in self.session.guessed_initial:
+            return None
+        self.session.guessed_initial.discard(name)
+        return next((v for v in trace if not isinstance(v, Dark | Unread)), None)
 
     def _learn_add(
         self,

@@ -173,6 +173,16 @@ class GuardLearner:
             for a in s.actions
         }
 
+    def lift_all(self) -> None:
+        """Bring the appliance out of every guard the belief thinks holds (switch it on,
+        unlock it): a key the belief does not know can then tell something."""
+        compiled = self.session.belief.compiled
+        for guard in compiled.guards:
+            holds = all(self.session.belief.state.values[v] in ok for v, ok in guard.conditions)
+            blocked = [a for i, a in enumerate(compiled.action_names) if i not in guard.allowed]
+            if holds and blocked:
+                self.lift(blocked[0])
+
     def lift(self, action: str) -> None:
         """Bring the appliance out of any guard that would refuse ``action`` (switch it on,
         unlock it), so that a probe with ``action`` can tell something."""

@@ -17,6 +17,7 @@ from __future__ import annotations
 from typing import Any
 
 from apbot.agent.budget import Budget
+from apbot.agent.discovery import VariableFinder
 from apbot.agent.displays import DisplayLearner
 from apbot.agent.environment import Environment
 from apbot.agent.episode import Episode, TaskContext
@@ -57,6 +58,7 @@ class ClosedLoop:
         self.explorer = Explorer(self.session, self.displays)
         self.guards = GuardLearner(self.session)
         self.procedures = ProcedureRepairer(self.session, self.guards)
+        self.finder = VariableFinder(self.session, self.guards)
         self.greedy = GreedyExecutor(self.session)
         self.config = config
         self.context = context
@@ -128,6 +130,8 @@ class ClosedLoop:
                 if self.settle_contradictions(inside):
                     return  # the belief now holds what was shown: plan again
                 unseen = self.session.unconfirmed(set(inside))
+                if unseen and self._look(unseen):
+                    return  # plan again from what the display showed
                 if unseen:  # believed, but the display last said otherwise: it would be a guess
                     raise Stop(
                         "the belief holds the goal, but the display last showed "
@@ -166,7 +170,12 @@ class ClosedLoop:
         variables = self.session.belief.model.variables
         for name, raw in self.context.goal.items():
             if name not in variables:
-                raise Stop(f"the goal names {name!r}, which the model does not have")
+                if not self.finder.find(name, raw):
+                    raise Stop(
+                        f"the goal names {name!r}, which the model does not have, and no key "
+                        "the model gives no role shows it"
+                    )
+                variables = self.session.belief.model.variables
             try:
                 inside[name] = normalise(variables[name], raw)
             except ValueProblem as exc:
@@ -228,6 +237,21 @@ class ClosedLoop:
                     return self.make_plan(target)
                 break
             raise Stop(f"no plan on the belief model: {exc.reason}") from None
+
+    def _look(self, names: list[str]) -> bool:
+        """Bring up a goal setting the display has not confirmed since the belief last changed
+        it (once each): enter its step and press its key once, and read what it shows."""
+        for name in names:
+            if not self.session.budget.once("inspect", f"look:{name}"):
+                continue
+            for feature, steps in self.session.belief.model.features.items():
+                index = next((i for i, s in enumerate(steps) if s.variable == name), None)
+                if index is None:
+                    continue
+                self.procedures.enter_step(feature, index)
+                self.session.press(self.session.planned(steps[index].actions[0]), exploring=True)
+                return True
+        return False
 
     def inspect(self, name: str) -> bool:
         """A goal setting the belief cannot reach: go through the procedure that adjusts it

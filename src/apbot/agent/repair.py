@@ -13,6 +13,7 @@ from typing import Any
 
 from pydantic import ValidationError
 
+from apbot.model.domain import all_values
 from apbot.model.schema import ApplianceModel, DiscreteVariable, TimeVariable
 from apbot.model.validate import check_model
 from apbot.model.values import expand_ranges, format_hms, parse_hms
@@ -48,12 +49,13 @@ def redefine_domain(
     ranges: Sequence[tuple[float, float, float]] | None = None,
     wrap: bool | None = None,
     current: Any = None,
+    initial: Any = None,
 ) -> ApplianceModel:
     """A new domain for ``name`` (for the parent's ``case`` when it depends on one).
 
     Discrete variables take ``values`` in order; numeric and time variables take ``ranges`` of
-    magnitudes (seconds for times). The initial value is kept when it still fits, else the
-    observed ``current`` value (or the first value) becomes it.
+    magnitudes (seconds for times). The initial value is ``initial`` when given and it fits,
+    else kept when it still fits, else the observed ``current`` value (or the first value).
     """
     data = _dump(model)
     spec = model.variables[name]
@@ -66,7 +68,9 @@ def redefine_domain(
             target = var["cases"][case] = {"values": target}
         target["values"] = new_values
         fits = target.get("initial") in new_values
-        if not fits and ("initial" in target or case is None):
+        if initial is not None and str(initial) in new_values:
+            target["initial"] = str(initial)
+        elif not fits and ("initial" in target or case is None):
             target["initial"] = str(current) if str(current) in new_values else new_values[0]
     else:
         assert ranges is not None
@@ -77,6 +81,8 @@ def redefine_domain(
             ]
         else:
             target["ranges"] = [list(r) for r in ranges]
+        if initial is not None and _magnitude(spec, initial) in allowed:
+            target["initial"] = initial
         initial = target.get("initial")
         if (initial is not None or case is None) and (
             initial is None or _magnitude(spec, initial) not in allowed
@@ -235,3 +241,70 @@ def _take_out(data: dict[str, Any], action: str, keep: tuple[str, int]) -> None:
                 break
             else:
                 del steps[i]
+
+
+def add_setting(
+    model: ApplianceModel,
+    name: str,
+    variable: dict[str, Any],
+    key: str,
+    effect: str,
+    opposite: str | None = None,
+) -> ApplianceModel:
+    """A setting the model lacked: its variable, its key (and the key walking the other way),
+    and a one-step procedure ``set_NAME`` that adjusts it. Where other settings depend on a
+    programme, this one is taken to depend on it too (each programme starting from what was
+    seen): a programme change then resets it in the belief as it may on the appliance, and the
+    planner sets it after the programme."""
+    data = _dump(model)
+    parents = [v.depends_on for v in model.variables.values() if v.depends_on is not None]
+    if parents:  # the programme other settings depend on most likely resets this one too
+        parent = max(set(parents), key=parents.count)
+        own = {k: variable.pop(k) for k in ("values", "ranges", "initial") if k in variable}
+        variable["depends_on"] = parent
+        variable["cases"] = {str(value): dict(own) for value in all_values(model.variables[parent])}
+    data["variables"][name] = variable
+    keys = [key] + ([opposite] if opposite else [])
+    effects = {key: effect}
+    if opposite:
+        effects[opposite] = "prev" if effect == "next" else "next"
+    for action in keys:
+        if action in data["actions"]:
+            continue
+        control = _control_id(action)
+        if not any(c["id"] == control for c in data["controls"]):
+            turning = action.endswith(("_cw", "_ccw"))
+            data["controls"].append({"id": control, "kind": "dial" if turning else "button"})
+        spec: dict[str, Any] = {"control": control}
+        if action.startswith("hold"):
+            spec.update(skill="hold", seconds=3)
+        elif action.endswith("_ccw"):
+            spec["skill"] = "turn_ccw"
+        elif action.endswith("_cw"):
+            spec["skill"] = "turn_cw"
+        data["actions"][action] = spec
+    data["features"][f"set_{name}"] = [
+        {"actions": keys, "variable": name, "effect": effects, "note": "learnt from feedback"}
+    ]
+    return _rebuild(data)
+
+
+def _control_id(action: str) -> str:
+    """A control id for an action the model did not know: its name without the skill."""
+    name = action
+    for prefix in ("press_", "hold_", "turn_"):
+        if name.startswith(prefix):
+            name = name[len(prefix) :]
+    for suffix in ("_cw", "_ccw"):
+        if name.endswith(suffix):
+            name = name[: -len(suffix)]
+    return f"{name}_control" if name else "learnt_control"
+
+
+def add_indicator(model: ApplianceModel, name: str) -> ApplianceModel:
+    """The display shows this setting as a lamp too, whatever screen is up."""
+    data = _dump(model)
+    indicators = data.setdefault("display", {}).setdefault("indicators", [])
+    if name not in indicators:
+        indicators.append(name)
+    return _rebuild(data)

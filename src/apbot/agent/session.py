@@ -110,6 +110,10 @@ class Session:
         self.last_seen = Seen()
         self.explored: set[str] = set()
         self.evidence: dict[str, Any] = {}  # the value the display showed last, per variable
+        self.stale: set[str] = set()  # changed in the belief since the display last showed them
+        self.guessed_initial: set[str] = (
+            set()
+        )  # settings whose programmes' start values are guesses
         self.contradicted: dict[str, Any] = {}  # last shown as a value the belief cannot hold
 
     # --- acting ------------------------------------------------------------------------------
@@ -175,6 +179,14 @@ class Session:
             and feedback.text == before_text
             and (expected.text != before_text or before_state != self.belief.state)
         )
+        before_values = self.belief.compiled.assignment(before_state)
+        changed = {n for n, v in self.belief.values().items() if before_values[n] != v}
+        self.stale |= changed
+        model = self.belief.model
+        for name in self.guessed_initial:  # its programmes' start values are only guesses
+            parent = model.variables[name].depends_on if name in model.variables else None
+            if parent is not None and (parent in changed or variable == parent):
+                self.stale.add(name)
         if surprises and variable is not None and not seen.showing(variable):
             # the display did not come to the step the belief entered: the key did nothing
             # visible, or something else, so the belief must not keep what it predicted the key
@@ -232,16 +244,23 @@ class Session:
         self.evidence.update(seen.values)
         self.evidence.update(seen.outside)
         self.evidence.update({name: None for name in seen.absent})
+        self.stale -= set(seen.values) | set(seen.outside) | seen.absent
         self.contradicted.update(seen.outside)
         for name in seen.values:
             self.contradicted.pop(name, None)
 
     def unconfirmed(self, names: list[str] | set[str]) -> list[str]:
-        """The variables whose last reading on the display is not what the belief holds now
-        (changed since — by a press, a side effect, a repair — and not seen again). A variable
-        never shown at all rests on the model alone."""
+        """The variables whose last reading on the display may not be what the belief holds
+        now: it differs, or the belief changed it since (a press, a side effect, a programme
+        that resets it) without the display showing it again. A variable never shown at all
+        rests on the model alone."""
         return sorted(
-            n for n in names if n in self.evidence and self.evidence[n] != self.belief.value(n)
+            n
+            for n in names
+            if (
+                n in self.evidence and (self.evidence[n] != self.belief.value(n) or n in self.stale)
+            )
+            or (n in self.stale and n in self.guessed_initial)  # a guess, never seen since
         )
 
     def shown(self, name: str) -> Any:
