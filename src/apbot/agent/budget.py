@@ -26,7 +26,9 @@ from collections import Counter
 from dataclasses import dataclass, field
 from typing import Literal
 
-OnceKind = Literal["inspect", "guard", "unreachable", "absorbed", "entry", "template", "case"]
+OnceKind = Literal[
+    "inspect", "guard", "unreachable", "absorbed", "entry", "template", "case", "discover"
+]
 RepeatKind = Literal["value", "procedure", "display"]
 MAX_SAME_REPAIR = 3  # the same thing going wrong this often in a row: give up
 

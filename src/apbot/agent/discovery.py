@@ -53,22 +53,27 @@ class VariableFinder:
         self.session = session
         self.guards = guards
 
-    def find(self, name: str, goal_value: Any) -> bool:
-        """Look for ``name`` on the panel (once); True when the belief now has it."""
+    def find(self, name: str, goal_value: Any, attempt: int = 1) -> bool:
+        """Look for ``name`` on the panel (once per attempt); True when the belief now has it."""
         session = self.session
-        if not session.budget.once("discover", name):
+        if not session.budget.once("discover", f"{name}:{attempt}"):
             return False
         kind = _kind_of(goal_value)
         for key in self._candidates(name):
             self.guards.lift_all()
             before = session.last.text
             texts, changed = self._walk(key)
+            last = texts[-1] if texts else ""
+            opposite = self._opposite(key)
+            if len(set(texts)) < 2 and opposite is not None:  # stuck at an end: walk back
+                back, _ = self._walk(opposite)
+                last = back[-1] if back else last
+                texts = list(reversed(back)) + texts
             if len(set(texts)) < 2:
                 continue
-            learnt = infer_setting(name, texts, kind, changed)
+            learnt = infer_setting(name, texts, kind, changed, last)
             if learnt is None:
                 continue
-            opposite = self._opposite(key)
             try:
                 new = add_setting(
                     session.belief.model, name, learnt.variable, key, learnt.effect, opposite
@@ -147,9 +152,12 @@ class VariableFinder:
         return None
 
 
-def infer_setting(name: str, texts: Sequence[str], kind: str, changed: bool) -> Learnt | None:
+def infer_setting(
+    name: str, texts: Sequence[str], kind: str, changed: bool, last: str | None = None
+) -> Learnt | None:
     """A setting's definition from the texts one key showed, press after press (the last one
-    may repeat an earlier one: the walk went round, or stopped at an end).
+    may repeat an earlier one: the walk went round, or stopped at an end); ``last`` is the text
+    the display shows now (where the setting is).
 
     >>> learnt = infer_setting("temperature", ["TEMP 180°C", "TEMP 190°C", "TEMP 200°C",
     ...                                        "TEMP 200°C"], "numeric", True)
@@ -185,7 +193,8 @@ def infer_setting(name: str, texts: Sequence[str], kind: str, changed: bool) -> 
         effect = "prev"
     variable["initial"] = values[0]
     note = f"values {summary([str(v) for v in values])}" + (", wraps" if wrap else "")
-    return Learnt(variable, effect, values[-1 if not wrap else 0], note)
+    shown_last = last if last in distinct else texts[-1]
+    return Learnt(variable, effect, values[distinct.index(shown_last)], note)
 
 
 def _split(distinct: Sequence[str], words: bool) -> tuple[str, list[str], str] | None:

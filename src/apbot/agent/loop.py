@@ -62,6 +62,8 @@ class ClosedLoop:
         self.greedy = GreedyExecutor(self.session)
         self.config = config
         self.context = context
+        self.missing: dict[str, Any] = {}  # goal settings the belief lacks and has not found
+        self.finding = 1  # the finder's attempt: once at the start, once with the rest set
         self.pending: list[MacroAction] = []  # the rest of the plan, while it holds
         self.values_before: dict[str, Any] = {}  # the belief before the current macro action
 
@@ -105,6 +107,8 @@ class ClosedLoop:
 
     def reasoning_step(self) -> None:
         inside, outside = self.goal()
+        if self.missing:  # set the rest first (the missing setting may need its programme),
+            inside = {n: v for n, v in inside.items() if not _starts(n)}  # but do not start
         for name in outside:
             if name in self.session.explored:
                 raise Stop(
@@ -119,6 +123,9 @@ class ClosedLoop:
                     target[name] = proxy
             found = self.make_plan(target)
             if not found.macro_actions:
+                if self.missing:
+                    self.finding += 1  # the rest is set: look for the missing settings again
+                    return
                 if outside:
                     pressed = self.session.episode.execution_steps
                     self.explore_outside(outside)
@@ -135,7 +142,7 @@ class ClosedLoop:
                 if unseen:  # believed, but the display last said otherwise: it would be a guess
                     raise Stop(
                         "the belief holds the goal, but the display last showed "
-                        + ", ".join(f"{n}={self.session.evidence[n]!r}" for n in unseen)
+                        + ", ".join(f"{n}={self.session.evidence.get(n, '?')!r}" for n in unseen)
                     )
                 raise Stop("the goal holds", success=True)
             self.pending = list(found.macro_actions)
@@ -168,13 +175,17 @@ class ClosedLoop:
         inside: dict[str, Any] = {}
         outside: dict[str, Any] = {}
         variables = self.session.belief.model.variables
+        self.missing = {}
         for name, raw in self.context.goal.items():
             if name not in variables:
-                if not self.finder.find(name, raw):
-                    raise Stop(
-                        f"the goal names {name!r}, which the model does not have, and no key "
-                        "the model gives no role shows it"
-                    )
+                if not self.finder.find(name, raw, attempt=self.finding):
+                    if self.finding >= 2:
+                        raise Stop(
+                            f"the goal names {name!r}, which the model does not have, and no "
+                            "key the model gives no role shows it"
+                        )
+                    self.missing[name] = raw  # look again once the rest is set
+                    continue
                 variables = self.session.belief.model.variables
             try:
                 inside[name] = normalise(variables[name], raw)
@@ -492,6 +503,14 @@ class ClosedLoop:
                 self.session.explored.add(
                     name
                 )  # its setting is up, and no key walks it: seen it all
+
+
+RUN_STATES = ("running", "heating", "dispensing", "status", "start")
+
+
+def _starts(name: str) -> bool:
+    """A goal setting that starts the appliance (left for last while settings are missing)."""
+    return any(word in name for word in RUN_STATES)
 
 
 def _outside_text(outside: dict[str, Any]) -> str:
