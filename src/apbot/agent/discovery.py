@@ -30,6 +30,7 @@ from apbot.plan.plan import PlannedAction
 
 MAX_WALK = 60  # presses of one key while looking at a new setting
 MAX_KEYS = 6  # keys tried for one setting
+MAX_ADJUSTERS = 4  # keys tried after an entry key
 TIME_STYLES = ("h:mm", "mm:ss", "hh:mm", "hh:mm:ss", "min", "h")
 _NUMBER = re.compile(r"^\s*([-+]?\d+(?:\.\d+)?)\s?(.*?)\s*$")
 _GAP = re.compile(r"\s{2,}")
@@ -54,42 +55,100 @@ class VariableFinder:
         self.guards = guards
 
     def find(self, name: str, goal_value: Any, attempt: int = 1) -> bool:
-        """Look for ``name`` on the panel (once per attempt); True when the belief now has it."""
+        """Look for ``name`` on the panel (once per attempt); True when the belief now has it.
+
+        A key that brings up a screen the belief cannot read is walked; if it shows one screen
+        only, it is an entry key ("press TIMER, then ▲/▼") and the panel's other keys are
+        walked after it."""
         session = self.session
         if not session.budget.once("discover", f"{name}:{attempt}"):
             return False
         kind = _kind_of(goal_value)
-        for key in self._candidates(name):
+        keys = self._candidates(name)
+        for key in keys[:MAX_KEYS]:
             self.guards.lift_all()
             before = session.last.text
-            texts, changed = self._walk(key)
-            last = texts[-1] if texts else ""
-            opposite = self._opposite(key)
-            if len(set(texts)) < 2 and opposite is not None:  # stuck at an end: walk back
-                back, _ = self._walk(opposite)
-                last = back[-1] if back else last
-                texts = list(reversed(back)) + texts
-            if len(set(texts)) < 2:
+            found = self._walked(key)
+            if found is None:
                 continue
-            learnt = infer_setting(name, texts, kind, changed, last)
-            if learnt is None:
+            texts, last = found
+            if len(set(texts)) >= 2:
+                if self._learn(name, kind, texts, last, before, None, key):
+                    return True
                 continue
-            try:
-                new = add_setting(
-                    session.belief.model, name, learnt.variable, key, learnt.effect, opposite
-                )
-            except RepairError as exc:
-                session.episode.log("repair", f"could not add {name}: {exc}")
-                continue
-            new = self._as_lamp(new, name, before)
-            session.adopt(new, f"{name}: found under {key}; {learnt.note}", (f"set_{name}", 0))
-            if new.variables[name].depends_on is not None:
-                session.guessed_initial.add(name)
-            session.belief.set_value(name, learnt.current)
-            session.evidence[name] = learnt.current  # the walk showed it
-            session.reread()
-            return True
+            for adjuster in self._adjusters(key)[:MAX_ADJUSTERS]:
+                self.guards.lift_all()
+                entered = session.press(_planned(key), exploring=True)
+                if not entered.feedback.accepted or not _unknown(entered):
+                    break
+                found = self._walked(adjuster)
+                walked = found is not None and len(set(found[0])) >= 2
+                if walked and self._learn(name, kind, *found, before, key, adjuster):  # type: ignore[misc]
+                    return True
         return False
+
+    def _walked(self, key: str) -> tuple[list[str], str] | None:
+        """Walk ``key`` (and its opposite back from an end): the texts in value order and the
+        text shown now; None when the key shows nothing the belief cannot read."""
+        texts = self._walk(key)
+        if not texts:
+            return None
+        last = texts[-1]
+        opposite = self._opposite(key)
+        if len(set(texts)) < 2 and opposite is not None:  # stuck at an end: walk back
+            back = self._walk(opposite)
+            last = back[-1] if back else last
+            texts = list(reversed(back)) + texts
+        return texts, last
+
+    def _learn(
+        self,
+        name: str,
+        kind: str,
+        texts: list[str],
+        last: str,
+        before: str,
+        entry: str | None,
+        key: str,
+    ) -> bool:
+        """Write the setting a walk of ``key`` (after ``entry``) showed into the belief."""
+        session = self.session
+        learnt = infer_setting(name, texts, kind, last)
+        if learnt is None:
+            return False
+        try:
+            new = add_setting(
+                session.belief.model,
+                name,
+                learnt.variable,
+                key,
+                learnt.effect,
+                self._opposite(key),
+                entry=entry,
+            )
+        except RepairError as exc:
+            session.episode.log("repair", f"could not add {name}: {exc}")
+            return False
+        new = self._as_lamp(new, name, before)
+        under = f"{entry}, then {key}" if entry else key
+        pointer = (f"set_{name}", 1 if entry else 0)
+        session.adopt(new, f"{name}: found under {under}; {learnt.note}", pointer)
+        session.discovered.add(name)
+        if new.variables[name].depends_on is not None:
+            session.guessed_initial.add(name)
+        session.belief.set_value(name, learnt.current)
+        session.evidence[name] = learnt.current  # the walk showed it
+        session.reread()
+        return True
+
+    def _adjusters(self, entry: str) -> list[str]:
+        """Keys to walk after an entry key: those that step things (▲/▼, dials) first."""
+        offered = list(self.session.context.actions or self.session.offered)
+        stepping = ("plus", "minus", "up", "down", "cw", "ccw", "left", "right", "next", "prev")
+        keys = [a for a in offered if a != entry and not _is_reverse(a) and not _is_digit(a)]
+        return sorted(
+            keys, key=lambda a: (not any(w in a.split("_") for w in stepping), keys.index(a))
+        )
 
     def _as_lamp(self, model: Any, name: str, text: str) -> Any:
         """The new setting also as a lamp, when the display showed it after its main text
@@ -107,12 +166,13 @@ class VariableFinder:
         return model
 
     def _candidates(self, name: str) -> list[str]:
-        """Keys the belief does not know or gives no procedure, those named like the setting
-        first."""
+        """Keys that start nothing the belief knows (unknown, unused, or only later steps of a
+        procedure), those named like the setting first; not digits."""
         session = self.session
         model = session.belief.model
-        used = {a for steps in model.features.values() for s in steps for a in s.actions}
-        unknown = [a for a in session.context.actions or session.offered if a not in used]
+        starting = {a for steps in model.features.values() for a in steps[0].actions}
+        offered = list(session.context.actions or session.offered)
+        unknown = [a for a in offered if a not in starting and not _is_digit(a)]
         words = {w for w in name.split("_") if len(w) >= 3}
 
         def alike(action: str) -> bool:
@@ -122,23 +182,21 @@ class VariableFinder:
         ranked = sorted(unknown, key=lambda a: (not alike(a), unknown.index(a)))
         return [a for a in ranked if not _is_reverse(a)][:MAX_KEYS]
 
-    def _walk(self, key: str) -> tuple[list[str], bool]:
-        """Press ``key`` until the display repeats a text the belief cannot read; the texts,
-        and whether the first press changed the display at all."""
+    def _walk(self, key: str) -> list[str]:
+        """Press ``key`` until the display repeats a text the belief cannot read; the texts."""
         session = self.session
-        before = session.last.text
         action = _planned(key)
         texts: list[str] = []
         for _ in range(MAX_WALK):
             done: Executed = session.press(action, exploring=True)
             text = _main(done.feedback.text, session.perceiver.reader.lamp_texts())
-            if not done.feedback.accepted or not text or (done.seen and not done.seen.unknown):
+            if not done.feedback.accepted or not text or not _unknown(done):
                 break  # refused, dark, or a screen the belief knows: not the missing setting
             if text in texts:
                 texts.append(text)
                 break
             texts.append(text)
-        return texts, bool(texts) and texts[0] != before
+        return texts
 
     def _opposite(self, key: str) -> str | None:
         """The key that walks the other way (``turn_x_ccw`` for ``turn_x_cw``), if the panel
@@ -153,17 +211,17 @@ class VariableFinder:
 
 
 def infer_setting(
-    name: str, texts: Sequence[str], kind: str, changed: bool, last: str | None = None
+    name: str, texts: Sequence[str], kind: str, last: str | None = None
 ) -> Learnt | None:
     """A setting's definition from the texts one key showed, press after press (the last one
     may repeat an earlier one: the walk went round, or stopped at an end); ``last`` is the text
     the display shows now (where the setting is).
 
     >>> learnt = infer_setting("temperature", ["TEMP 180°C", "TEMP 190°C", "TEMP 200°C",
-    ...                                        "TEMP 200°C"], "numeric", True)
+    ...                                        "TEMP 200°C"], "numeric")
     >>> learnt.variable["ranges"], learnt.variable["unit"], learnt.variable["label"]
     ([[180, 200, 10]], '°C', 'TEMP')
-    >>> flow = infer_setting("airflow", ["FLOW high", "FLOW low", "FLOW high"], "discrete", True)
+    >>> flow = infer_setting("airflow", ["FLOW high", "FLOW low", "FLOW high"], "discrete")
     >>> flow.variable["values"], flow.variable["wrap"], flow.variable["label"]
     (['high', 'low'], True, 'FLOW')
     """
@@ -286,6 +344,16 @@ def _kind_of(goal_value: Any) -> str:
     if isinstance(goal_value, int | float) and not isinstance(goal_value, bool):
         return "numeric"
     return "numeric" if re.match(r"^\s*[-+]?\d", text) else "discrete"
+
+
+def _is_digit(action: str) -> bool:
+    """A keypad digit: typing is not walking (a missing keypad setting is not looked for)."""
+    return action.rsplit("_", 1)[-1].isdigit()
+
+
+def _unknown(done: Executed) -> bool:
+    """The press showed text the belief cannot read (or reads only in part)."""
+    return done.seen is not None and (done.seen.unknown or done.seen.partial)
 
 
 def _is_reverse(action: str) -> bool:

@@ -250,6 +250,7 @@ def add_setting(
     key: str,
     effect: str,
     opposite: str | None = None,
+    entry: str | None = None,
 ) -> ApplianceModel:
     """A setting the model lacked: its variable, its key (and the key walking the other way),
     and a one-step procedure ``set_NAME`` that adjusts it. Where other settings depend on a
@@ -265,11 +266,12 @@ def add_setting(
         variable["cases"] = {str(value): dict(own) for value in all_values(model.variables[parent])}
     data["variables"][name] = variable
     keys = [key] + ([opposite] if opposite else [])
+    known = set(data["actions"])
     effects = {key: effect}
     if opposite:
         effects[opposite] = "prev" if effect == "next" else "next"
-    for action in keys:
-        if action in data["actions"]:
+    for action in keys + ([entry] if entry else []):
+        if action in known:
             continue
         control = _control_id(action)
         if not any(c["id"] == control for c in data["controls"]):
@@ -283,9 +285,11 @@ def add_setting(
         elif action.endswith("_cw"):
             spec["skill"] = "turn_cw"
         data["actions"][action] = spec
-    data["features"][f"set_{name}"] = [
+    steps = [{"actions": [entry], "note": "learnt from feedback"}] if entry else []
+    steps.append(
         {"actions": keys, "variable": name, "effect": effects, "note": "learnt from feedback"}
-    ]
+    )
+    data["features"][f"set_{name}"] = steps
     return _rebuild(data)
 
 

@@ -111,9 +111,8 @@ class Session:
         self.explored: set[str] = set()
         self.evidence: dict[str, Any] = {}  # the value the display showed last, per variable
         self.stale: set[str] = set()  # changed in the belief since the display last showed them
-        self.guessed_initial: set[str] = (
-            set()
-        )  # settings whose programmes' start values are guesses
+        self.discovered: set[str] = set()  # settings the belief lacked, found on the panel
+        self.guessed_initial: set[str] = set()  # their programmes' start values are guesses
         self.contradicted: dict[str, Any] = {}  # last shown as a value the belief cannot hold
 
     # --- acting ------------------------------------------------------------------------------
@@ -183,6 +182,10 @@ class Session:
         changed = {n for n, v in self.belief.values().items() if before_values[n] != v}
         self.stale |= changed
         model = self.belief.model
+        if changed - self.discovered - {n for n in changed if _runs(n)}:
+            # a setting found on the panel may depend on what just changed (a programme that
+            # resets it) though the belief cannot know: it needs seeing again
+            self.stale |= self.discovered - set(seen.values)
         for name in self.guessed_initial:  # its programmes' start values are only guesses
             parent = model.variables[name].depends_on if name in model.variables else None
             if parent is not None and (parent in changed or variable == parent):
@@ -260,7 +263,7 @@ class Session:
             if (
                 n in self.evidence and (self.evidence[n] != self.belief.value(n) or n in self.stale)
             )
-            or (n in self.stale and n in self.guessed_initial)  # a guess, never seen since
+            or (n in self.stale and n in self.guessed_initial | self.discovered)
         )
 
     def shown(self, name: str) -> Any:
@@ -329,6 +332,11 @@ class Session:
         """After presses the belief cannot follow, assume no procedure is in progress."""
         self.belief.set_pointer(None)
         self.reread()
+
+
+def _runs(name: str) -> bool:
+    """A run state (running, heating…): starting a cycle resets no setting."""
+    return any(word in name for word in ("running", "heating", "dispensing", "status"))
 
 
 # --- values ------------------------------------------------------------------------------------
