@@ -25,7 +25,7 @@ from apbot.agent.session import Executed, Session, summary
 from apbot.model.display import display_value
 from apbot.model.domain import ValueProblem, parse_value
 from apbot.model.schema import DiscreteVariable, NumericVariable, TimeVariable
-from apbot.model.values import parse_hms
+from apbot.model.values import parse_hms, unit_of
 from apbot.plan.plan import PlannedAction
 
 MAX_WALK = 60  # presses of one key while looking at a new setting
@@ -281,8 +281,8 @@ def _numeric_setting(distinct: Sequence[str]) -> tuple[dict[str, Any], list[Any]
     if len(units) != 1:
         return None
     unit = units.pop()
-    if suffix and not unit and not suffix[0].isspace():  # "180°C": the unit stayed outside
-        unit, suffix = suffix.strip(), ""
+    if suffix and not unit and unit_of(suffix.strip()) is not None:
+        unit, suffix = suffix.strip(), ""  # "8 min", "180°C": the unit stayed outside the value
     values = [int(n) if n.is_integer() else n for n in numbers]
     variable: dict[str, Any] = {
         "type": "numeric",
