@@ -44,6 +44,7 @@ def test_missing_variable_never_takes_a_programme_or_run_state() -> None:
 def test_spurious_variable_intercepts_the_next_procedures_key() -> None:
     truth = oven()
     candidates = every_candidate(spurious_variable, truth, "set_mode")
+    assert any("press_start right after" in f.detail for _, f in candidates)  # START first
     faulty, fault = only(candidates, lambda f: "press_temp right after" in f.detail)
     invented = fault.detail.split()[1]
     assert invented.startswith("mode_") and invented not in truth.variables

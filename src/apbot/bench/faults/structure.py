@@ -125,12 +125,23 @@ INVENTED: tuple[tuple[str, list[str]], ...] = (
 )
 
 
+def _run_state(name: str | None) -> bool:
+    return name is not None and protected(name) and name != "power" and "lock" not in name
+
+
+def _starts(steps: list[Any]) -> bool:
+    """Whether a feature's first step starts the appliance (steps or sets a run state)."""
+    return _run_state(steps[0].variable) or any(map(_run_state, steps[0].set))
+
+
 def spurious_variable(model: ApplianceModel, name: str, rng: random.Random) -> Candidates:
     """A setting that does not exist, with a step the reader invented for it: after setting the
     temperature, "press START to choose the temperature memory" — ``press_start`` right after
     ``set_temperature`` is believed to step ``temperature_memory`` (off/on) instead of starting.
-    The key is the first key of another procedure (those later in the manual first), so the
-    belief mispredicts what that key does right after this procedure."""
+    The key is the first key of another procedure: the one that starts the appliance first
+    (nearly every plan presses it last, so the planner must work round the invented step),
+    then those later in the manual; the belief mispredicts what it does right after this
+    procedure."""
     steps = model.features.get(name, [])
     settings = [s.variable for s in steps if s.variable and not protected(s.variable)]
     guarded = {v for g in model.guards for v in g.when}
@@ -138,6 +149,8 @@ def spurious_variable(model: ApplianceModel, name: str, rng: random.Random) -> C
         return  # after starting or locking, a guard would refuse the key in both models
     names = list(model.features)
     after = names[names.index(name) + 1 :] + names[: names.index(name)]
+    starting = [f for f in after if _starts(model.features[f])]
+    after = starting + [f for f in after if f not in starting]
     last = set(steps[-1].actions)
     keys = list(
         dict.fromkeys(
