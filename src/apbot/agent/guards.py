@@ -10,13 +10,15 @@ beep), changes it, presses the key again, and writes the guard it found into the
 
 from __future__ import annotations
 
+import re
 from typing import Any
 
-from apbot.agent.repair import RepairError, add_guard, disallow
+from apbot.agent.repair import RepairError, add_guard, allow, disallow
 from apbot.agent.session import Executed, Session
 from apbot.model.display import OFF_WORDS
 from apbot.model.schema import DiscreteVariable
 from apbot.plan.plan import Unreachable, plan
+from apbot.sim.compiled import compiled_model
 
 ON_WORDS = frozenset({"on", "locked", "lock", "yes", "true", "enabled", "running"})
 MAX_SUSPECTS = 3  # settings tried as the cause of one refusal
@@ -104,8 +106,14 @@ class GuardLearner:
             if not session.budget.once("guard", f"learn:{failed.action.name}:{name}"):
                 continue
             other = next(v for v in session.domain_values(name) if v != blocking)
+            keep = {  # change only the suspect: leave every other guard's setting as it is
+                u: session.belief.value(u)
+                for guard in session.belief.model.guards
+                for u in guard.when
+                if u != name and session.belief.value(u) is not None
+            }
             try:
-                route = plan(session.belief.compiled, session.belief.state, {name: other})
+                route = plan(session.belief.compiled, session.belief.state, {**keep, name: other})
             except Unreachable:
                 continue
             lifting = [a.name for a in route.actions]
@@ -125,7 +133,7 @@ class GuardLearner:
                     session.belief.model,
                     {name: blocking},
                     sorted(set(lifting) | self._switching(name)),
-                    "" if dark else failed.feedback.text.strip(),
+                    "" if dark else _main_text(failed.feedback.text, session),
                     hide=dark,
                 )
             except RepairError as exc:
@@ -145,9 +153,10 @@ class GuardLearner:
         words = OFF_WORDS if dark else ON_WORDS
         suspects = []
         model = self.session.belief.model
-        guarded = {  # a switch whose other value is a guard already (power on, not off)
+        guarded = {  # a switch whose other value is a guard of its own (power on, not off)
             name: {str(v) for v in (w if isinstance(w, list) else [w])}
             for guard in model.guards
+            if len(guard.when) == 1
             for name, w in guard.when.items()
         }
         for name, spec in model.variables.items():
@@ -172,6 +181,44 @@ class GuardLearner:
             if s.variable == name
             for a in s.actions
         }
+
+    def relax(self, target: dict[str, Any]) -> bool:
+        """The goal is out of reach on the belief because a guard blocks a key it needs (lock
+        the keys while running, start while locked): suppose the guard lets that key through,
+        if that makes the goal reachable (once each). A refusal later takes it back."""
+        session = self.session
+        model = session.belief.model
+        needed = sorted(
+            {
+                a
+                for steps in model.features.values()
+                for s in steps
+                if s.variable in target
+                for a in s.actions
+            }
+        )
+        for index, guard in enumerate(model.guards):
+            for action in needed:
+                if action in guard.only:
+                    continue
+                try:
+                    variant = allow(model, index, action)
+                    plan(
+                        compiled_model(variant),
+                        session.belief.state,
+                        target,
+                        session.config.plan_budget,
+                    )
+                except (RepairError, Unreachable):
+                    continue
+                if not session.budget.once("guard", f"relax:{index}:{action}"):
+                    continue
+                label = guard.name or f"guard {index}"
+                session.adopt(
+                    variant, f"{label} may let {action} work (to be seen)", session.belief.pointer()
+                )
+                return True
+        return False
 
     def lift_all(self) -> None:
         """Bring the appliance out of every guard the belief thinks holds (switch it on,
@@ -211,3 +258,12 @@ class GuardLearner:
                 for planned in found.actions:
                     self.session.press(planned, exploring=True)
                 break
+
+
+def _main_text(text: str, session: Session) -> str:
+    """A refusal's message without the lamps the belief knows after it."""
+    parts = re.split(r"\s{2,}", text.strip())
+    lamps = session.perceiver.reader.lamp_texts()
+    while len(parts) > 1 and parts[-1].casefold() in lamps:
+        parts.pop()
+    return "  ".join(parts)

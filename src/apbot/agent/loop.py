@@ -240,6 +240,8 @@ class ClosedLoop:
                 # could close the door on it
                 if self.procedures.recover_unreachable({name: value}):
                     return self.make_plan(target)
+                if self.guards.relax(target):
+                    return self.make_plan(target)
                 if reachable:
                     partial = self._plan(reachable)
                     if partial.macro_actions:
@@ -259,6 +261,7 @@ class ClosedLoop:
                 index = next((i for i, s in enumerate(steps) if s.variable == name), None)
                 if index is None:
                     continue
+                self.guards.lift_all()  # a dark panel shows nothing
                 self.procedures.enter_step(feature, index)
                 self.session.press(self.session.planned(steps[index].actions[0]), exploring=True)
                 return True

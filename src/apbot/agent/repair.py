@@ -174,6 +174,13 @@ def set_on_entry(model: ApplianceModel, feature: str, step: int, on_entry: str) 
     return _rebuild(data)
 
 
+def allow(model: ApplianceModel, guard: int, action: str) -> ApplianceModel:
+    """A guard lets ``action`` through after all."""
+    data = _dump(model)
+    data["guards"][guard]["only"] = [*data["guards"][guard]["only"], action]
+    return _rebuild(data)
+
+
 def disallow(model: ApplianceModel, guard: int, action: str) -> ApplianceModel:
     """A guard does not let ``action`` through after all."""
     data = _dump(model)

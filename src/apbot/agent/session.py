@@ -112,6 +112,7 @@ class Session:
         self.evidence: dict[str, Any] = {}  # the value the display showed last, per variable
         self.stale: set[str] = set()  # changed in the belief since the display last showed them
         self.discovered: set[str] = set()  # settings the belief lacked, found on the panel
+        self.blind: set[str] = set()  # changed while the display was dark, not seen since
         self.guessed_initial: set[str] = set()  # their programmes' start values are guesses
         self.contradicted: dict[str, Any] = {}  # last shown as a value the belief cannot hold
 
@@ -181,6 +182,10 @@ class Session:
         before_values = self.belief.compiled.assignment(before_state)
         changed = {n for n, v in self.belief.values().items() if before_values[n] != v}
         self.stale |= changed
+        hiding = self.belief.compiled.hiding_guard(self.belief.state)
+        if hiding is not None:  # changed behind a dark panel: nothing showed it happen
+            own = {self.belief.compiled.vars[v].name for v, _ in hiding.conditions}
+            self.blind |= changed - own
         model = self.belief.model
         if changed - self.discovered - {n for n in changed if _runs(n)}:
             # a setting found on the panel may depend on what just changed (a programme that
@@ -248,6 +253,7 @@ class Session:
         self.evidence.update(seen.outside)
         self.evidence.update({name: None for name in seen.absent})
         self.stale -= set(seen.values) | set(seen.outside) | seen.absent
+        self.blind -= set(seen.values) | set(seen.outside) | seen.absent
         self.contradicted.update(seen.outside)
         for name in seen.values:
             self.contradicted.pop(name, None)
@@ -264,6 +270,7 @@ class Session:
                 n in self.evidence and (self.evidence[n] != self.belief.value(n) or n in self.stale)
             )
             or (n in self.stale and n in self.guessed_initial | self.discovered)
+            or n in self.blind
         )
 
     def shown(self, name: str) -> Any:
