@@ -1,5 +1,5 @@
 """Brute-force breadth-first search over the full simulator: the reference the planner is
-proved against on small models. Exponential; only for tests and tiny models."""
+proved against on small models. Exponential; only for tests, benchmarks and tiny models."""
 
 from __future__ import annotations
 
@@ -11,11 +11,16 @@ from apbot.plan.goals import CompiledGoal
 from apbot.sim.compiled import CompiledModel, State
 
 
+class BfsBudgetExceeded(RuntimeError):
+    """Breadth-first search saw more states than it was allowed: the case is too large to
+    brute-force, which says nothing about the planner."""
+
+
 def shortest_plan_length(
     compiled: CompiledModel, start: State, goal: Mapping[str, Any], max_states: int = 2_000_000
 ) -> int | None:
     """Length of the shortest action sequence reaching ``goal`` (canonical values), or None
-    when it is unreachable. Raises RuntimeError if more than ``max_states`` states are seen."""
+    when it is unreachable. Raises :class:`BfsBudgetExceeded` past ``max_states`` states."""
     target = CompiledGoal.build(compiled, goal)
     if target.holds(compiled, start):
         return 0
@@ -32,9 +37,61 @@ def shortest_plan_length(
             if target.holds(compiled, after):
                 return depth[after]
             if len(depth) > max_states:
-                raise RuntimeError(f"BFS gave up after {max_states} states")
+                raise BfsBudgetExceeded(f"BFS gave up after {max_states} states")
             queue.append(after)
     return None
+
+
+def reachable_graph(
+    compiled: CompiledModel, start: State, max_states: int
+) -> dict[State, list[State]]:
+    """Every state reachable from ``start``, each with its predecessors (one entry per action
+    leading to it). Raises :class:`BfsBudgetExceeded` past ``max_states`` states."""
+    predecessors: dict[State, list[State]] = {start: []}
+    queue: deque[State] = deque([start])
+    actions = range(len(compiled.action_names))
+    while queue:
+        state = queue.popleft()
+        for action in actions:
+            after = compiled.apply(state, action)
+            if after is None:
+                continue
+            known = predecessors.get(after)
+            if known is None:
+                if len(predecessors) >= max_states:
+                    raise BfsBudgetExceeded(f"more than {max_states} reachable states")
+                predecessors[after] = [state]
+                queue.append(after)
+            else:
+                known.append(state)
+    return predecessors
+
+
+def distances_to_goal(
+    compiled: CompiledModel,
+    goal: Mapping[str, Any],
+    start: State | None = None,
+    max_states: int = 200_000,
+) -> tuple[list[State], dict[State, int]]:
+    """Every state reachable from ``start`` (default: the initial state), and the true number
+    of actions from each to the nearest goal state (states that cannot reach it are absent).
+
+    One forward search collects the states, one backward search from all goal states at once
+    gives every distance: the ground truth a lower bound is checked against on every state.
+    """
+    target = CompiledGoal.build(compiled, goal)
+    graph = reachable_graph(
+        compiled, start if start is not None else compiled.initial_state(), max_states
+    )
+    distance = {state: 0 for state in graph if target.holds(compiled, state)}
+    queue: deque[State] = deque(distance)
+    while queue:
+        state = queue.popleft()
+        for previous in graph[state]:
+            if previous not in distance:
+                distance[previous] = distance[state] + 1
+                queue.append(previous)
+    return list(graph), distance
 
 
 def random_walk(compiled: CompiledModel, rng: Any, steps: int) -> State:
@@ -50,7 +107,7 @@ def compare_with_bfs(
     model: Any, goal: Mapping[str, Any], start: State | None = None, max_states: int = 200_000
 ) -> tuple[int | None, int | None]:
     """(planner length, BFS length) for one goal from ``start`` (default: the initial state);
-    None = unreachable."""
+    None = unreachable. Raises :class:`BfsBudgetExceeded` when BFS does not fit."""
     from apbot.model.goal import parse_goal
     from apbot.plan.plan import Unreachable, plan
     from apbot.sim.compiled import compiled_model
