@@ -4,11 +4,13 @@ proved against on small models. Exponential; only for tests, benchmarks and tiny
 from __future__ import annotations
 
 from collections import deque
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from typing import Any
 
 from apbot.plan.goals import CompiledGoal
 from apbot.sim.compiled import CompiledModel, State
+
+INF = float("inf")
 
 
 class BfsBudgetExceeded(RuntimeError):
@@ -92,6 +94,51 @@ def distances_to_goal(
                 distance[previous] = distance[state] + 1
                 queue.append(previous)
     return list(graph), distance
+
+
+def bound_violations(
+    compiled: CompiledModel,
+    goal: Mapping[str, Any],
+    states: Iterable[State],
+    distance: Mapping[State, int],
+) -> list[tuple[State, float, float]]:
+    """(state, bound, true distance) wherever the planner's lower bound is not admissible:
+    above the distance (infinite where the goal is unreachable), or not 0 at a goal state.
+
+    The bound is taken as at the search's start (a half-typed buffer may be continued), the
+    weakest claim that holds from every state a plan can start in.
+    """
+    from apbot.plan.bounds import LowerBound
+
+    bound = LowerBound(compiled, CompiledGoal.build(compiled, goal))
+    found = []
+    for state in states:
+        estimate = bound(state, continuing=True)
+        truth = distance.get(state, INF)
+        if estimate > truth or (truth == 0 and estimate != 0):
+            found.append((state, estimate, truth))
+    return found
+
+
+def planner_mismatches(
+    compiled: CompiledModel,
+    goal: Mapping[str, Any],
+    starts: Iterable[State],
+    distance: Mapping[State, int],
+) -> list[tuple[State, int | None, int | None]]:
+    """(start, planner length, BFS length) wherever the planner's plan from ``start`` is not
+    exactly as short as the true distance (None: unreachable, for either)."""
+    from apbot.plan.plan import Unreachable, plan
+
+    found = []
+    for start in starts:
+        try:
+            length: int | None = len(plan(compiled, start, goal))
+        except Unreachable:
+            length = None
+        if length != distance.get(start):
+            found.append((start, length, distance.get(start)))
+    return found
 
 
 def random_walk(compiled: CompiledModel, rng: Any, steps: int) -> State:
