@@ -70,6 +70,37 @@ def test_plans_continue_from_a_half_typed_value(microwave: ApplianceModel) -> No
     assert [a.name for a in found.actions] == ["press_0"]
 
 
+KEYPAD_WITH_CLEAR = """
+controls: [{id: k1, kind: key}, {id: k5, kind: key}, {id: k6, kind: key}, {id: clr, label: CLEAR}]
+variables:
+  level:
+    type: numeric
+    ranges: [[0, 9, 1]]
+    entry: {format: number, max_digits: 3, overflow: OVERFLOW}
+actions: {press_1: {control: k1, digit: 1}, press_5: {control: k5, digit: 5},
+          press_6: {control: k6, digit: 6}, press_clear: {control: clr}}
+features:
+  level:
+    - actions: [press_1, press_5, press_6, press_clear]
+      variable: level
+      effect: {press_1: digit, press_5: digit, press_6: digit, press_clear: clear}
+"""
+
+
+@pytest.mark.parametrize("overflow", ["ignore", "shift"])
+def test_clear_then_type_when_the_typed_digits_are_in_the_way(overflow: str) -> None:
+    """A buffer full with 656: a typed 1 is ignored (or shifts in to 561, and there is no 0
+    key for 001); CLEAR, 1 takes two presses."""
+    model = model_from(KEYPAD_WITH_CLEAR.replace("OVERFLOW", overflow), check=False)
+    sim = Simulator(model)
+    for action in ("press_6", "press_5", "press_6"):
+        sim.step(action)
+    found = plan(model, sim.state, {"level": 1})
+    assert [a.name for a in found.actions] == ["press_clear", "press_1"]
+    compiled = compiled_model(model)
+    assert len(found) == shortest_plan_length(compiled, sim.state, found.goal)
+
+
 def test_dial_oven_clamps_and_steps(toaster: ApplianceModel) -> None:
     goal = {"function": "bake", "temperature": "200 °C", "timer": "45 min", "convection": "on"}
     found = plan(toaster, None, goal)

@@ -18,7 +18,7 @@ from collections import deque
 from collections.abc import Callable, Hashable, Sequence
 
 from apbot.model.schema import Entry
-from apbot.sim.compiled import DIGIT, CompiledModel, State, entry_digits
+from apbot.sim.compiled import CLEAR, DIGIT, CompiledModel, State, entry_digits
 
 Exit = tuple[State, tuple[int, ...]]
 
@@ -115,28 +115,41 @@ def keypad_exits(
         if after is not None:
             exits.append((after, (action,)))
     continuing = state.step == step
+    # continuing a half-typed buffer, CLEAR then typing afresh can beat typing on (a full
+    # buffer that ignores new digits, or one that would need every digit shifted in)
+    clear = next((a for a in sorted(info.actions) if info.effects[a][0] == CLEAR), None)
     for magnitude in targets:
         digits = entry_digits(magnitude, spec_entry)
         if digits is None:
             continue
+        ways: list[tuple[int, ...]] = []
         presses = keypad_presses(state.buffer, digits, spec_entry, typed=continuing)
-        if presses is None:
-            continue
-        sequence = [digit_action.get(d) for d in presses]
-        if None in sequence:
-            continue
-        path = tuple(a for a in sequence if a is not None)
-        if not continuing:
-            if info.show_on_entry:
-                path = (entry[0], *path)  # the entering press only wakes the display
-            elif path[0] not in entry:
-                non_digit = [a for a in entry if info.effects[a][0] != DIGIT]
-                if not non_digit:
-                    continue
-                path = (non_digit[0], *path)  # enter with a non-digit action, then type
-        current: State | None = state
-        for action in path:
-            current = compiled.apply(current, action) if current is not None else None
-        if current is not None:
-            exits.append((current, path))
+        typed = _digit_actions(presses, digit_action)
+        if typed:
+            if not continuing:
+                if info.show_on_entry:
+                    typed = (entry[0], *typed)  # the entering press only wakes the display
+                elif typed[0] not in entry:
+                    non_digit = [a for a in entry if info.effects[a][0] != DIGIT]
+                    if not non_digit:
+                        continue
+                    typed = (non_digit[0], *typed)  # enter with a non-digit action, then type
+            ways.append(typed)
+        if continuing and state.buffer and clear is not None:
+            fresh = _digit_actions(keypad_presses("", digits, spec_entry), digit_action)
+            if fresh:
+                ways.append((clear, *fresh))
+        for path in ways:
+            current: State | None = state
+            for action in path:
+                current = compiled.apply(current, action) if current is not None else None
+            if current is not None:
+                exits.append((current, path))
     return exits
+
+
+def _digit_actions(presses: str | None, digit_action: dict[str, int]) -> tuple[int, ...]:
+    """The digit keys that type ``presses`` (empty when there are none or a key is missing)."""
+    if not presses or any(d not in digit_action for d in presses):
+        return ()
+    return tuple(digit_action[d] for d in presses)
