@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import random
 from collections import Counter
+from functools import cache
 from typing import Any
 
 from apbot.model.domain import build_domain
@@ -42,21 +43,27 @@ def _entry_or_programme(model: ApplianceModel, goal: dict[str, Any]) -> bool:
     return False
 
 
+@cache
+def _sample() -> list[tuple[ApplianceModel, dict[str, Any]]]:
+    return [_case(seed) for seed in SEEDS]
+
+
+def _case(seed: int) -> tuple[ApplianceModel, dict[str, Any]]:
+    rng = random.Random(seed)
+    model = random_model(rng)
+    return model, random_goal(rng, model)
+
+
 def test_every_part_of_the_format_is_generated() -> None:
     seen: Counter[str] = Counter()
-    for seed in SEEDS:
-        seen.update(format_parts(random_model(random.Random(seed))))
+    for model, _ in _sample():
+        seen.update(format_parts(model))
     missing = [part for part in FORMAT_PARTS if seen[part] < 3]
     assert missing == [], f"parts generated fewer than 3 times in {len(SEEDS)} models: {missing}"
 
 
 def test_the_entry_or_programme_family_is_generated() -> None:
-    found = 0
-    for seed in SEEDS:
-        rng = random.Random(seed)
-        model = random_model(rng)
-        found += _entry_or_programme(model, random_goal(rng, model))
-    assert found >= 5
+    assert sum(_entry_or_programme(model, goal) for model, goal in _sample()) >= 5
 
 
 def test_models_stay_within_their_state_budget() -> None:
@@ -69,10 +76,5 @@ def test_models_stay_within_their_state_budget() -> None:
 
 
 def test_a_seed_rebuilds_the_same_case() -> None:
-    def case(seed: int) -> tuple[ApplianceModel, dict[str, Any]]:
-        rng = random.Random(seed)
-        model = random_model(rng)
-        return model, random_goal(rng, model)
-
-    assert case(7) == case(7)
-    assert case(7) != case(8)
+    assert _case(7) == _case(7)
+    assert _case(7) != _case(8)
