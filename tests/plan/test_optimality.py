@@ -29,9 +29,9 @@ STARTS = 12  # start states per model: the initial one, random walks, random rea
 @given(seed=st.integers(min_value=0, max_value=2**32 - 1))
 # the family of ../shared/repro/planner_not_optimal.yaml (a dependent setting behind an entry
 # press, its goal another programme's default): a bound adding the entry press to the
-# programme route gave a longer plan here (2 of the first 500 seeds, with 5,000 states)
-@example(seed=1)
-@example(seed=273)
+# programme route gave a longer plan here (3 of the first 2,500 seeds, with 5,000 states)
+@example(seed=1523)
+@example(seed=2059)
 def test_planner_matches_breadth_first_search(seed: int) -> None:
     rng = random.Random(seed)
     model = random_model(rng, max_states=MODEL_STATES)

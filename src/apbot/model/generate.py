@@ -55,6 +55,7 @@ FORMAT_PARTS = (
     "time keypad",
     "toggle",
     "two-control hold",
+    "two programmes",
     "wrap",
 )
 
@@ -165,19 +166,26 @@ class _Builder:
         rng = self.rng
         if rng.random() < 0.4:
             self._add_power()
-        programme = self._add_programme() if rng.random() < 0.5 else None
-        for i in range(rng.randint(1, 3 if programme is None else 2)):
+        programmes = []
+        if rng.random() < 0.5:  # a programme; sometimes a second one (two cooking zones)
+            programmes.append(self._add_programme("prog"))
+            if rng.random() < 0.4:
+                programmes.append(self._add_programme("zone"))
+        for i in range(rng.randint(1, 3 - len(programmes))):
             name = f"v{i}"
             self.variables[name] = _plain_variable(rng)
             self.settings.append(name)
-        if programme is not None:
-            for j in range(rng.randint(1, 2)):
-                name = f"d{j}"
+        for programme, prefix in zip(programmes, "de", strict=False):
+            for j in range(rng.randint(1, 2 if programme == "prog" else 1)):
+                name = f"{prefix}{j}"
                 self.variables[name] = _dependent_variable(rng, programme, self.variables)
                 self.settings.append(name)
         for name in self.settings:
             for _ in range(rng.randint(1, 2)):
                 self._add_setting_feature(name)
+        if self.power_key is not None and rng.random() < 0.4:  # switching off forgets
+            forgotten = rng.sample(self.settings, rng.randint(1, min(2, len(self.settings))))
+            self.features[self.power_feature][0]["reset"] = forgotten
         if rng.random() < 0.3:
             self._add_running()
         if rng.random() < 0.25:
@@ -203,24 +211,24 @@ class _Builder:
             guard["display"] = ""
         self.guards.append(guard)
 
-    def _add_programme(self) -> str:
+    def _add_programme(self, name: str) -> str:
         """A programme chosen by a cycling key, a dial, or one go-to key per programme."""
         rng = self.rng
         values = [f"p{j}" for j in range(rng.randint(2, 4))]
-        self.variables["prog"] = {
+        self.variables[name] = {
             "type": "discrete",
             "values": values,
             "initial": rng.choice(values),
             "wrap": rng.random() < 0.7,
         }
-        self.settings.append("prog")  # more features may come with the other settings
+        self.settings.append(name)  # more features may come with the other settings
         how = rng.choice(["cycle", "dial", "goto", "goto"])
         separate = how == "goto" and rng.random() < 0.5
         entry = [{"actions": [self.action()]}] if not separate and rng.random() < 0.3 else []
         if how == "cycle":
             step: dict[str, Any] = {
                 "actions": [self.action()],
-                "variable": "prog",
+                "variable": name,
                 "effect": "next",
             }
             if rng.random() < 0.3:
@@ -231,17 +239,17 @@ class _Builder:
             self.feature(
                 [
                     *entry,
-                    {"actions": [cw, ccw], "variable": "prog", "effect": {cw: "next", ccw: "prev"}},
+                    {"actions": [cw, ccw], "variable": name, "effect": {cw: "next", ccw: "prev"}},
                 ]
             )
         elif separate:  # one feature per programme key (POPCORN, PIZZA…)
             for value in rng.sample(values, rng.randint(1, len(values))):
                 key = self.action()
-                self.feature([{"actions": [key], "variable": "prog", "effect": {"to": value}}])
+                self.feature([{"actions": [key], "variable": name, "effect": {"to": value}}])
         else:  # the keys share one step
             keys = {self.action(): {"to": value} for value in values}
-            self.feature([*entry, {"actions": list(keys), "variable": "prog", "effect": keys}])
-        return "prog"
+            self.feature([*entry, {"actions": list(keys), "variable": name, "effect": keys}])
+        return name
 
     def _add_setting_feature(self, name: str) -> None:
         """A procedure adjusting ``name`` (sometimes a second variable after it), with an entry
@@ -302,16 +310,18 @@ class _Builder:
         return step
 
     def _side_effects(self, step: dict[str, Any], exclude: str) -> None:
-        """``set`` or ``reset`` of another variable, as SET TEMP resetting the timer does."""
+        """``set`` or ``reset`` of other variables, as SET TEMP resetting the timer does (and
+        RESET ALL resetting both zones' programmes)."""
         targets = [v for v in self.variables if v != exclude]
         if not targets:
             return
-        target = self.rng.choice(targets)
-        spec = self.variables[target]
-        if "depends_on" in spec or self.rng.random() < 0.5:
-            step["reset"] = [target]
-        else:
-            step["set"] = {target: self.rng.choice(_some_values(spec))}
+        chosen = self.rng.sample(targets, min(len(targets), self.rng.choice([1, 1, 2])))
+        for target in chosen:
+            spec = self.variables[target]
+            if "depends_on" in spec or self.rng.random() < 0.5:
+                step.setdefault("reset", []).append(target)
+            else:
+                step.setdefault("set", {})[target] = self.rng.choice(_some_values(spec))
 
     def _add_running(self) -> None:
         """START (a toggle, or ON and a separate STOP); while running only those keys work."""
@@ -518,6 +528,8 @@ def format_parts(model: ApplianceModel) -> set[str]:
     """The parts of the format a model uses (names from :data:`FORMAT_PARTS`)."""
     parts: set[str] = set()
     parents = {v.depends_on for v in model.variables.values() if v.depends_on}
+    if len(parents) > 1:
+        parts.add("two programmes")
     for var in model.variables.values():
         if var.depends_on:
             parts.add("dependent setting")
