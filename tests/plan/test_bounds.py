@@ -29,9 +29,9 @@ EXAMPLES, MODEL_STATES = BOUND
 @settings(max_examples=EXAMPLES, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(seed=st.integers(min_value=0, max_value=2**32 - 1))
 # the family of ../shared/repro/planner_not_optimal.yaml: the bound added an entry press to a
-# programme-change route (14 of the first 500 seeds, with 3,000 states)
-@example(seed=100)
-@example(seed=103)
+# programme-change route (6 of the first 400 seeds, with 3,000 states)
+@example(seed=76)
+@example(seed=92)
 def test_bound_is_admissible_on_every_state(seed: int) -> None:
     rng = random.Random(seed)
     model = random_model(rng, max_states=MODEL_STATES)
@@ -84,3 +84,48 @@ def test_the_entry_press_still_counts_on_the_settings_own_route() -> None:
     )
     assert _bound(single, {"setting": "s3"}, []) == 3
     assert _bound(single, {"setting": "s3"}, ["press_set"]) == 2
+
+
+TWO_ZONES = """
+controls: [{id: power}, {id: menu1}, {id: temp1}, {id: plus1},
+           {id: menu2}, {id: temp2}, {id: plus2}]
+variables:
+  power: {type: discrete, values: ["off", "on"]}
+  prog1: {type: discrete, values: [a, b, c]}
+  temp1: {type: discrete, depends_on: prog1,
+          cases: {a: {values: [x1, x2, x3], initial: x1}, b: {values: [x1, x2, x3], initial: x2},
+                  c: {values: [x1, x2, x3], initial: x3}}}
+  prog2: {type: discrete, values: [a, b, c]}
+  temp2: {type: discrete, depends_on: prog2,
+          cases: {a: {values: [x1, x2, x3], initial: x1}, b: {values: [x1, x2, x3], initial: x2},
+                  c: {values: [x1, x2, x3], initial: x3}}}
+actions:
+  press_power: {control: power}
+  press_menu1: {control: menu1}
+  press_temp1: {control: temp1}
+  press_plus1: {control: plus1}
+  press_menu2: {control: menu2}
+  press_temp2: {control: temp2}
+  press_plus2: {control: plus2}
+features:
+  power: [{actions: [press_power], variable: power, effect: toggle, reset: [prog1, prog2]}]
+  menu1: [{actions: [press_menu1], variable: prog1, effect: next}]
+  set_temp1: [{actions: [press_temp1]}, {actions: [press_plus1], variable: temp1, effect: next}]
+  menu2: [{actions: [press_menu2], variable: prog2, effect: next}]
+  set_temp2: [{actions: [press_temp2]}, {actions: [press_plus2], variable: temp2, effect: next}]
+guards:
+  - {when: {power: "off"}, only: [press_power]}
+"""
+
+
+def test_two_zones_pay_for_their_own_programme_changes() -> None:
+    """POWER resets both zones' programmes in one press, so only one zone may count it; but
+    reaching programme c (whose default is x3) takes each zone's own MENU press. Counting
+    both keeps the bound tight (the suite's slowest task has this shape) and still sound."""
+    goal = {"temp1": "x3", "temp2": "x3"}
+    assert _bound(TWO_ZONES, goal, ["press_power"]) == 2  # true distance: MENU1 ×2, MENU2 ×2
+    model = model_from(TWO_ZONES)
+    compiled = compiled_model(model)
+    canonical = parse_goal(model, goal)
+    states, distance = distances_to_goal(compiled, canonical)
+    assert bound_violations(compiled, canonical, states, distance) == []
