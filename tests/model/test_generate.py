@@ -8,6 +8,8 @@ from collections import Counter
 from functools import cache
 from typing import Any
 
+import pytest
+
 from apbot.model.domain import build_domain
 from apbot.model.generate import FORMAT_PARTS, format_parts, random_goal, random_model, state_bound
 from apbot.model.schema import ApplianceModel
@@ -78,3 +80,8 @@ def test_models_stay_within_their_state_budget() -> None:
 def test_a_seed_rebuilds_the_same_case() -> None:
     assert _case(7) == _case(7)
     assert _case(7) != _case(8)
+
+
+def test_an_impossible_budget_is_an_error() -> None:
+    with pytest.raises(ValueError, match="at most 2 states"):
+        random_model(random.Random(0), max_states=2)

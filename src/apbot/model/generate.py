@@ -66,10 +66,11 @@ def random_model(rng: random.Random, max_states: int = 30_000) -> ApplianceModel
     """A schema-valid model with all references resolved (semantic checks may still warn),
     with at most ``max_states`` states (:func:`state_bound`): larger draws are discarded and
     drawn again from the same ``rng``, so large cases are not generated at all."""
-    while True:
+    for _ in range(1_000):
         model = _Builder(rng).build()
         if state_bound(model) <= max_states:
             return model
+    raise ValueError(f"no model with at most {max_states} states in 1,000 draws; allow more")
 
 
 def state_bound(model: ApplianceModel) -> int:

@@ -1,8 +1,10 @@
 """Brute-force breadth-first search over the full simulator: the reference the planner is
 proved against on small models. Exponential; only for tests, benchmarks and tiny models.
 
-It shares nothing with the planner's reasoning (no bound, no visits) except, on request, one
-exact reduction — :func:`goal_projection`, itself checked against the plain search.
+The searches share nothing with the planner's reasoning (no bound, no visits) except, on
+request, one exact reduction — :func:`goal_projection`, itself checked against the plain
+search. The checks below them hold the planner, its bound and the suite's stored optimal counts
+against their answers.
 """
 
 from __future__ import annotations
