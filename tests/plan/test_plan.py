@@ -101,6 +101,39 @@ def test_clear_then_type_when_the_typed_digits_are_in_the_way(overflow: str) -> 
     assert len(found) == shortest_plan_length(compiled, sim.state, found.goal)
 
 
+SHOWN_KEYPAD_WITH_CLEAR = """
+controls: [{id: k0, kind: key}, {id: k1, kind: key}, {id: k5, kind: key}, {id: clr},
+           {id: other}]
+variables:
+  level: {type: numeric, ranges: [[10, 90, 10]], entry: {format: number}}
+  light: {type: discrete, values: ["off", "on"]}
+actions: {press_0: {control: k0, digit: 0}, press_1: {control: k1, digit: 1},
+          press_5: {control: k5, digit: 5}, press_clear: {control: clr},
+          press_light: {control: other}}
+features:
+  level:
+    - actions: [press_0, press_1, press_5, press_clear]
+      variable: level
+      effect: {press_0: digit, press_1: digit, press_5: digit, press_clear: clear}
+      on_entry: show
+  light: [{actions: [press_light], variable: light, effect: toggle}]
+"""
+
+
+def test_clear_resets_a_keypad_value_after_the_entering_press() -> None:
+    """The first press only shows the value; CLEAR then returns it to its initial 10: two
+    presses, where typing 1, 0 after the entering press takes three."""
+    model = model_from(SHOWN_KEYPAD_WITH_CLEAR, check=False)
+    sim = Simulator(model)
+    for action in ("press_5", "press_5", "press_0", "press_light"):  # level 50, then away
+        sim.step(action)
+    assert sim.value("level") == 50
+    found = plan(model, sim.state, {"level": 10})
+    assert len(found) == 2 and found.actions[-1].name == "press_clear"
+    compiled = compiled_model(model)
+    assert len(found) == shortest_plan_length(compiled, sim.state, found.goal)
+
+
 def test_dial_oven_clamps_and_steps(toaster: ApplianceModel) -> None:
     goal = {"function": "bake", "temperature": "200 °C", "timer": "45 min", "convection": "on"}
     found = plan(toaster, None, goal)

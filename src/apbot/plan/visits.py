@@ -118,6 +118,12 @@ def keypad_exits(
     # continuing a half-typed buffer, CLEAR then typing afresh can beat typing on (a full
     # buffer that ignores new digits, or one that would need every digit shifted in)
     clear = next((a for a in sorted(info.actions) if info.effects[a][0] == CLEAR), None)
+    if clear is not None and not continuing and (info.show_on_entry or clear not in entry):
+        # CLEAR also resets the variable: enter (only showing, or typing), then CLEAR
+        after_entry = compiled.apply(state, entry[0])
+        cleared = compiled.apply(after_entry, clear) if after_entry is not None else None
+        if cleared is not None:
+            exits.append((cleared, (entry[0], clear)))
     for magnitude in targets:
         digits = entry_digits(magnitude, spec_entry)
         if digits is None:
