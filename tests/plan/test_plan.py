@@ -134,6 +134,32 @@ def test_clear_resets_a_keypad_value_after_the_entering_press() -> None:
     assert len(found) == shortest_plan_length(compiled, sim.state, found.goal)
 
 
+GUARDED_KEYPAD = """
+controls: [{id: set}, {id: k0, kind: key}, {id: k4, kind: key}, {id: k5, kind: key}]
+variables:
+  mode: {type: discrete, values: [locked, open]}
+  level: {type: numeric, ranges: [[0, 90, 10]], entry: {format: number, max_digits: 2}}
+actions: {press_set: {control: set}, press_0: {control: k0, digit: 0},
+          press_4: {control: k4, digit: 4}, press_5: {control: k5, digit: 5}}
+features:
+  level:
+    - {actions: [press_set]}
+    - {actions: [press_0, press_4, press_5], variable: level, set: {mode: open}}
+guards:
+  - {when: {mode: locked}, only: [press_set, press_5]}
+"""
+
+
+def test_type_on_after_the_only_digit_a_guard_admits() -> None:
+    """Locked, only the 5 key works, and any digit unlocks: SET, 5, then 4, 0 shifts the
+    buffer to 40 — four presses, without leaving the step to type 40 afresh (five)."""
+    model = model_from(GUARDED_KEYPAD, check=False)
+    found = plan(model, None, {"level": 40})
+    assert [a.name for a in found.actions] == ["press_set", "press_5", "press_4", "press_0"]
+    compiled = compiled_model(model)
+    assert len(found) == shortest_plan_length(compiled, compiled.initial_state(), found.goal)
+
+
 def test_dial_oven_clamps_and_steps(toaster: ApplianceModel) -> None:
     goal = {"function": "bake", "temperature": "200 °C", "timer": "45 min", "convection": "on"}
     found = plan(toaster, None, goal)

@@ -99,7 +99,15 @@ def _ways_to_reach(buffer: str, wanted: str, width: int, overflow: str) -> list[
 def keypad_exits(
     compiled: CompiledModel, state: State, step: int, entry: Sequence[int], targets: Sequence[float]
 ) -> list[Exit]:
-    """Exits of a keypad visit: the entry actions alone, then typing each target magnitude."""
+    """Exits of a keypad visit: each entry action alone; for each target magnitude, the fewest
+    presses that leave the variable at it; and CLEAR, which resets the variable.
+
+    Typing starts after an entering press (a digit there is already typed, so "5" then "40"
+    reads 40 on a shifting buffer — the only way in when a guard admits just the 5 key) or,
+    at the search's start, from the half-typed buffer; CLEAR and typing afresh may beat both.
+    Only the shortest accepted way to each target is kept: the buffer it leaves is emptied as
+    soon as the pointer moves on, which is the only thing a visit can do next.
+    """
     info = compiled.steps[step]
     var = compiled.vars[info.variable]
     spec_entry = var.spec.entry  # type: ignore[union-attr]
@@ -109,49 +117,48 @@ def keypad_exits(
         for a in info.actions
         if info.effects[a][0] == DIGIT
     }
+    clear = next((a for a in sorted(info.actions) if info.effects[a][0] == CLEAR), None)
     exits: list[Exit] = []
+    origins: dict[State, tuple[int, ...]] = {}  # where typing starts, and the presses so far
+    if state.step == step:
+        origins[state] = ()
     for action in entry:  # the cheapest way through: one action
         after = compiled.apply(state, action)
         if after is not None:
             exits.append((after, (action,)))
-    continuing = state.step == step
-    # continuing a half-typed buffer, CLEAR then typing afresh can beat typing on (a full
-    # buffer that ignores new digits, or one that would need every digit shifted in)
-    clear = next((a for a in sorted(info.actions) if info.effects[a][0] == CLEAR), None)
-    if clear is not None and not continuing and (info.show_on_entry or clear not in entry):
-        # CLEAR also resets the variable: enter (only showing, or typing), then CLEAR
-        after_entry = compiled.apply(state, entry[0])
-        cleared = compiled.apply(after_entry, clear) if after_entry is not None else None
-        if cleared is not None:
-            exits.append((cleared, (entry[0], clear)))
+            if state.step != step:
+                origins.setdefault(after, (action,))
+    if clear is not None:  # CLEAR resets the variable, also after a press that showed or typed
+        exits.extend(_first_accepted(compiled, state, [(*o, clear) for o in origins.values() if o]))
     for magnitude in targets:
         digits = entry_digits(magnitude, spec_entry)
         if digits is None:
             continue
         ways: list[tuple[int, ...]] = []
-        presses = keypad_presses(state.buffer, digits, spec_entry, typed=continuing)
-        typed = _digit_actions(presses, digit_action)
-        if typed:
-            if not continuing:
-                if info.show_on_entry:
-                    typed = (entry[0], *typed)  # the entering press only wakes the display
-                elif typed[0] not in entry:
-                    non_digit = [a for a in entry if info.effects[a][0] != DIGIT]
-                    if not non_digit:
-                        continue
-                    typed = (non_digit[0], *typed)  # enter with a non-digit action, then type
-            ways.append(typed)
-        if continuing and state.buffer and clear is not None:
-            fresh = _digit_actions(keypad_presses("", digits, spec_entry), digit_action)
-            if fresh:
-                ways.append((clear, *fresh))
-        for path in ways:
-            current: State | None = state
-            for action in path:
-                current = compiled.apply(current, action) if current is not None else None
-            if current is not None:
-                exits.append((current, path))
+        for origin, prefix in origins.items():
+            presses = keypad_presses(origin.buffer, digits, spec_entry)
+            typed = _digit_actions(presses, digit_action)
+            if typed:
+                ways.append((*prefix, *typed))
+            if origin.buffer and clear is not None:
+                fresh = _digit_actions(keypad_presses("", digits, spec_entry), digit_action)
+                if fresh:
+                    ways.append((*prefix, clear, *fresh))
+        exits.extend(_first_accepted(compiled, state, ways))
     return exits
+
+
+def _first_accepted(
+    compiled: CompiledModel, state: State, ways: Sequence[tuple[int, ...]]
+) -> list[Exit]:
+    """The shortest of ``ways`` the appliance accepts press by press, with where it ends."""
+    for path in sorted(ways, key=len):
+        current: State | None = state
+        for action in path:
+            current = compiled.apply(current, action) if current is not None else None
+        if current is not None:
+            return [(current, path)]
+    return []
 
 
 def _digit_actions(presses: str | None, digit_action: dict[str, int]) -> tuple[int, ...]:
