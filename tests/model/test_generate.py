@@ -12,6 +12,7 @@ import pytest
 
 from apbot.model.domain import build_domain
 from apbot.model.generate import FORMAT_PARTS, format_parts, random_goal, random_model, state_bound
+from apbot.model.goal import parse_goal
 from apbot.model.schema import ApplianceModel
 from apbot.plan.bfs import reachable_graph
 from apbot.sim.compiled import compiled_model
@@ -85,3 +86,12 @@ def test_a_seed_rebuilds_the_same_case() -> None:
 def test_an_impossible_budget_is_an_error() -> None:
     with pytest.raises(ValueError, match="at most 2 states"):
         random_model(random.Random(0), max_states=2)
+
+
+def test_goals_name_values_that_exist_together() -> None:
+    """Two settings of one programme are drawn for the same programme (these seeds once gave
+    d0 a value of one programme and d1 another's, a goal that cannot hold)."""
+    for seed in (1439, 1276304):
+        rng = random.Random(seed)
+        model = random_model(rng, max_states=30_000)
+        parse_goal(model, random_goal(rng, model))

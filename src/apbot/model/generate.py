@@ -615,13 +615,15 @@ def random_goal(rng: random.Random, model: ApplianceModel) -> dict[str, Any]:
             return goal
     names.sort(key=lambda n: model.variables[n].depends_on is not None)  # parents first
     goal: dict[str, Any] = {}
+    programme: dict[str, Any] = {}  # the programme each dependent value was drawn for
     for name in names:
         var = model.variables[name]
         if var.depends_on is not None:
             parent = var.depends_on
             parent_domain = build_domain(model.variables[parent])
             options = [v for v in parent_domain.values if v in (var.cases or {})]
-            chosen = goal.get(parent) or rng.choice(options)
+            chosen = goal.get(parent) or programme.get(parent) or rng.choice(options)
+            programme[parent] = chosen  # a second setting of it must exist there too
             if chosen not in (var.cases or {}):
                 continue
             if parent in goal or rng.random() < 0.5:  # else: any programme offering it will do
