@@ -12,7 +12,7 @@ LONG = os.environ.get("APBOT_PROPERTY_BUDGET", "ci") == "long"
 
 # (hypothesis examples, most states a generated model may have)
 OPTIMALITY = (1_500, 30_000) if LONG else (100, 5_000)
-BOUND = (1_500, 30_000) if LONG else (60, 3_000)
+BOUND = (1_500, 30_000) if LONG else (150, 3_000)
 
 
 def states_bucket(count: int) -> str:
