@@ -1,11 +1,19 @@
-"""Planner optimality against brute-force BFS on generated small models.
+"""Planner optimality and bound admissibility against brute-force BFS on generated small models.
 
-    python benchmarks/planner_optimality.py [--cases 1000] [--seed 0]
+    python benchmarks/planner_optimality.py [--cases 1000] [--seed 0] [--max-states 30000]
+                                            [--starts 20]
 
-Each case: a random model (``apbot.model.generate``), a random goal, a start state reached by a
-random walk; the planner's plan length is compared with BFS over the full simulator, and
-unreachable goals must agree. Cases whose state space exceeds the BFS budget are skipped and
-counted.
+Each case is a random model (``apbot.model.generate``, at most ``--max-states`` states) and a
+random goal. One breadth-first search forward from the initial state and one backward from the
+goal states give the true distance from every reachable state. Then
+
+* the planner plans from ``--starts`` of those states (the initial state and random others;
+  0 = every reachable state), and each plan must be exactly as long as the distance
+  (unreachable goals must agree);
+* the planner's lower bound must not exceed the distance on any reachable state, and must be
+  0 on goal states.
+
+A case whose state space does not fit the BFS budget is counted, never silently dropped.
 """
 
 from __future__ import annotations
@@ -15,7 +23,13 @@ import random
 import time
 
 from apbot.model.generate import random_goal, random_model
-from apbot.plan.bfs import compare_with_bfs, random_walk
+from apbot.model.goal import parse_goal
+from apbot.plan.bfs import (
+    BfsBudgetExceeded,
+    bound_violations,
+    distances_to_goal,
+    planner_mismatches,
+)
 from apbot.sim.compiled import compiled_model
 
 
@@ -23,36 +37,62 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--cases", type=int, default=1000)
     parser.add_argument("--seed", type=int, default=0)
-    parser.add_argument("--bfs-states", type=int, default=200_000)
+    parser.add_argument("--max-states", type=int, default=30_000)
+    parser.add_argument("--starts", type=int, default=20, help="0: every reachable state")
     args = parser.parse_args()
-    compared = mismatches = skipped = unreachable = 0
-    lengths = []
+    cases = too_large = starts_compared = states_checked = 0
+    wrong_cases = unsound_cases = wrong_plans = unsound_states = unreachable = 0
+    lengths: list[int] = []
     started = time.perf_counter()
     for seed in range(args.seed, args.seed + args.cases):
         rng = random.Random(seed)
-        model = random_model(rng)
-        goal = random_goal(rng, model)
-        start = random_walk(compiled_model(model), rng, rng.choice([0, 0, 3, 8, 20]))
+        model = random_model(rng, max_states=args.max_states)
+        goal = parse_goal(model, random_goal(rng, model))
+        compiled = compiled_model(model)
         try:
-            found, shortest = compare_with_bfs(model, goal, start, args.bfs_states)
-        except RuntimeError:
-            skipped += 1
+            states, distance = distances_to_goal(compiled, goal, max_states=args.max_states)
+        except BfsBudgetExceeded:
+            too_large += 1
             continue
-        compared += 1
-        unreachable += shortest is None
-        if shortest is not None:
-            lengths.append(shortest)
-        if found != shortest:
-            mismatches += 1
-            print(f"MISMATCH seed={seed}: planner {found}, BFS {shortest}, goal {goal}")
+        cases += 1
+        picker = random.Random(f"{seed}/starts")
+        starts = states if args.starts == 0 or args.starts >= len(states) else None
+        if starts is None:
+            starts = [states[0], *picker.sample(states[1:], args.starts - 1)]
+        wrong = planner_mismatches(compiled, goal, starts, distance)
+        unsound = bound_violations(compiled, goal, states, distance)
+        starts_compared += len(starts)
+        states_checked += len(states)
+        unreachable += sum(start not in distance for start in starts)
+        lengths.extend(distance[start] for start in starts if start in distance)
+        if wrong:
+            wrong_cases += 1
+            wrong_plans += len(wrong)
+            state, found, shortest = wrong[0]
+            print(
+                f"MISMATCH seed={seed}: {len(wrong)}/{len(starts)} starts, e.g. planner {found}, "
+                f"BFS {shortest} from {state}; goal {goal}"
+            )
+        if unsound:
+            unsound_cases += 1
+            unsound_states += len(unsound)
+            state, estimate, truth = unsound[0]
+            print(
+                f"BOUND seed={seed}: {len(unsound)}/{len(states)} states, e.g. bound {estimate} "
+                f"> distance {truth} at {state}; goal {goal}"
+            )
     seconds = time.perf_counter() - started
+    mean = sum(lengths) / len(lengths) if lengths else 0.0
     print(
-        f"compared {compared} (model, goal) cases, skipped {skipped} (BFS budget), {seconds:.1f} s"
+        f"planner vs BFS: {cases} (model, goal) cases, {starts_compared} start states compared, "
+        f"{wrong_plans} mismatches in {wrong_cases} cases, {too_large} cases over the BFS "
+        f"budget; {unreachable} unreachable starts (both agree unless counted above); "
+        f"plan lengths {min(lengths, default=0)}..{max(lengths, default=0)}, mean {mean:.1f}"
     )
     print(
-        f"mismatches: {mismatches}; unreachable goals (both agree): {unreachable}; "
-        f"reachable plan lengths {min(lengths)}..{max(lengths)}, "
-        f"mean {sum(lengths) / len(lengths):.1f}"
+        f"bound vs BFS distance: {states_checked} states of {cases} cases checked, "
+        f"{unsound_states} where the bound is above the distance (or not 0 at a goal) "
+        f"in {unsound_cases} cases; {seconds:.1f} s"
     )
 
 

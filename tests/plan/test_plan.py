@@ -70,6 +70,96 @@ def test_plans_continue_from_a_half_typed_value(microwave: ApplianceModel) -> No
     assert [a.name for a in found.actions] == ["press_0"]
 
 
+KEYPAD_WITH_CLEAR = """
+controls: [{id: k1, kind: key}, {id: k5, kind: key}, {id: k6, kind: key}, {id: clr, label: CLEAR}]
+variables:
+  level:
+    type: numeric
+    ranges: [[0, 9, 1]]
+    entry: {format: number, max_digits: 3, overflow: OVERFLOW}
+actions: {press_1: {control: k1, digit: 1}, press_5: {control: k5, digit: 5},
+          press_6: {control: k6, digit: 6}, press_clear: {control: clr}}
+features:
+  level:
+    - actions: [press_1, press_5, press_6, press_clear]
+      variable: level
+      effect: {press_1: digit, press_5: digit, press_6: digit, press_clear: clear}
+"""
+
+
+@pytest.mark.parametrize("overflow", ["ignore", "shift"])
+def test_clear_then_type_when_the_typed_digits_are_in_the_way(overflow: str) -> None:
+    """A buffer full with 656: a typed 1 is ignored (or shifts in to 561, and there is no 0
+    key for 001); CLEAR, 1 takes two presses."""
+    model = model_from(KEYPAD_WITH_CLEAR.replace("OVERFLOW", overflow), check=False)
+    sim = Simulator(model)
+    for action in ("press_6", "press_5", "press_6"):
+        sim.step(action)
+    found = plan(model, sim.state, {"level": 1})
+    assert [a.name for a in found.actions] == ["press_clear", "press_1"]
+    compiled = compiled_model(model)
+    assert len(found) == shortest_plan_length(compiled, sim.state, found.goal)
+
+
+SHOWN_KEYPAD_WITH_CLEAR = """
+controls: [{id: k0, kind: key}, {id: k1, kind: key}, {id: k5, kind: key}, {id: clr},
+           {id: other}]
+variables:
+  level: {type: numeric, ranges: [[10, 90, 10]], entry: {format: number}}
+  light: {type: discrete, values: ["off", "on"]}
+actions: {press_0: {control: k0, digit: 0}, press_1: {control: k1, digit: 1},
+          press_5: {control: k5, digit: 5}, press_clear: {control: clr},
+          press_light: {control: other}}
+features:
+  level:
+    - actions: [press_0, press_1, press_5, press_clear]
+      variable: level
+      effect: {press_0: digit, press_1: digit, press_5: digit, press_clear: clear}
+      on_entry: show
+  light: [{actions: [press_light], variable: light, effect: toggle}]
+"""
+
+
+def test_clear_resets_a_keypad_value_after_the_entering_press() -> None:
+    """The first press only shows the value; CLEAR then returns it to its initial 10: two
+    presses, where typing 1, 0 after the entering press takes three."""
+    model = model_from(SHOWN_KEYPAD_WITH_CLEAR, check=False)
+    sim = Simulator(model)
+    for action in ("press_5", "press_5", "press_0", "press_light"):  # level 50, then away
+        sim.step(action)
+    assert sim.value("level") == 50
+    found = plan(model, sim.state, {"level": 10})
+    assert len(found) == 2 and found.actions[-1].name == "press_clear"
+    compiled = compiled_model(model)
+    assert len(found) == shortest_plan_length(compiled, sim.state, found.goal)
+
+
+GUARDED_KEYPAD = """
+controls: [{id: set}, {id: k0, kind: key}, {id: k4, kind: key}, {id: k5, kind: key}]
+variables:
+  mode: {type: discrete, values: [locked, open]}
+  level: {type: numeric, ranges: [[0, 90, 10]], entry: {format: number, max_digits: 2}}
+actions: {press_set: {control: set}, press_0: {control: k0, digit: 0},
+          press_4: {control: k4, digit: 4}, press_5: {control: k5, digit: 5}}
+features:
+  level:
+    - {actions: [press_set]}
+    - {actions: [press_0, press_4, press_5], variable: level, set: {mode: open}}
+guards:
+  - {when: {mode: locked}, only: [press_set, press_5]}
+"""
+
+
+def test_type_on_after_the_only_digit_a_guard_admits() -> None:
+    """Locked, only the 5 key works, and any digit unlocks: SET, 5, then 4, 0 shifts the
+    buffer to 40 — four presses, without leaving the step to type 40 afresh (five)."""
+    model = model_from(GUARDED_KEYPAD, check=False)
+    found = plan(model, None, {"level": 40})
+    assert [a.name for a in found.actions] == ["press_set", "press_5", "press_4", "press_0"]
+    compiled = compiled_model(model)
+    assert len(found) == shortest_plan_length(compiled, compiled.initial_state(), found.goal)
+
+
 def test_dial_oven_clamps_and_steps(toaster: ApplianceModel) -> None:
     goal = {"function": "bake", "temperature": "200 °C", "timer": "45 min", "convection": "on"}
     found = plan(toaster, None, goal)

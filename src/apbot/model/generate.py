@@ -1,10 +1,15 @@
 """Random small appliance models and goals, for checking the planner against brute force.
 
-The models use every part of the format — discrete, numeric and time variables, piecewise
-ranges, wrap and clamp, keypad entry, programme-dependent settings, go-to and add effects, side
-effects, entry steps, ``on_entry: show``, holds, two-control holds, power and lock guards — but
-stay small enough (a few thousand states) for breadth-first search over the whole simulator.
-Generation is driven by a ``random.Random`` so a failing case is reproducible from its seed.
+The models use every part of the format a planner has to get right: discrete, numeric and time
+variables, piecewise ranges, wrap and clamp, keypads (numbers and times, a CLEAR key),
+programme-dependent settings (a programme chosen by a cycling key, a dial or go-to keys, a
+programme without a case), entry steps, confirm steps, ``on_entry: show``, go-to, add, reset,
+toggle and ``none`` effects, holds and two-control holds, dial turns, side effects (``set``,
+``reset``) on any step, and guards — power off, a child lock, "only these keys while running",
+a mode that allows only some keys, a number that must be set first. They stay small enough
+(mostly a few thousand states) for breadth-first search over the whole simulator.
+Generation is driven by a ``random.Random`` so a failing case is reproducible from its seed;
+:func:`format_parts` says which parts a model uses, so tests can check the generator's reach.
 """
 
 from __future__ import annotations
@@ -12,124 +17,404 @@ from __future__ import annotations
 import random
 from typing import Any
 
-from apbot.model.domain import build_domain
-from apbot.model.schema import ApplianceModel
+from pydantic import TypeAdapter
+
+from apbot.model.domain import all_values, build_domain
+from apbot.model.schema import Add, ApplianceModel, GoTo, Variable
+
+# What :func:`format_parts` can report; the generator is tested to produce every one.
+FORMAT_PARTS = (
+    "add",
+    "clamp",
+    "confirm step",
+    "cycling programme key",
+    "dependent setting",
+    "dial",
+    "entry step",
+    "go-to",
+    "go-to programme key",
+    "hidden display",
+    "hold",
+    "keypad",
+    "keypad clear",
+    "large domain",
+    "lock guard",
+    "missing case",
+    "mode guard",
+    "none effect",
+    "number guard",
+    "on_entry show",
+    "piecewise",
+    "power guard",
+    "prev",
+    "reset effect",
+    "reset side effect",
+    "running guard",
+    "set side effect",
+    "time",
+    "time keypad",
+    "toggle",
+    "two-control hold",
+    "two programmes",
+    "wrap",
+)
+
+_VARIABLE: TypeAdapter[Any] = TypeAdapter(Variable)
 
 
-def random_model(rng: random.Random) -> ApplianceModel:
-    """A schema-valid model with all references resolved (semantic checks may still warn)."""
-    variables: dict[str, Any] = {}
-    controls: list[dict[str, Any]] = []
-    actions: dict[str, Any] = {}
-    features: dict[str, list[dict[str, Any]]] = {}
-    guards: list[dict[str, Any]] = []
+def random_model(rng: random.Random, max_states: int = 30_000) -> ApplianceModel:
+    """A schema-valid model with all references resolved (semantic checks may still warn),
+    with at most ``max_states`` states (:func:`state_bound`): larger draws are discarded and
+    drawn again from the same ``rng``, so large cases are not generated at all."""
+    for _ in range(1_000):
+        model = _Builder(rng).build()
+        if state_bound(model) <= max_states:
+            return model
+    raise ValueError(f"no model with at most {max_states} states in 1,000 draws; allow more")
 
-    def new_action(kind: str = "button", **extra: Any) -> str:
-        index = len(actions)
+
+def state_bound(model: ApplianceModel) -> int:
+    """An upper bound on the number of states: every combination of values (a dependent
+    setting counts its largest case, plus "absent"), times every pointer position, where a
+    keypad step counts once per buffer it can hold."""
+    total = 1
+    for var in model.variables.values():
+        if var.depends_on is None:
+            total *= len(build_domain(var))
+        else:
+            parent = build_domain(model.variables[var.depends_on]).values
+            cases = var.cases or {}
+            total *= max(len(build_domain(var, c)) for c in cases.values()) + (
+                len(cases) < len(parent)
+            )
+    positions = 1  # no feature entered yet
+    for steps in model.features.values():
+        for step in steps:
+            entry = None
+            if step.variable is not None:
+                entry = getattr(model.variables[step.variable], "entry", None)
+            positions += 1 if entry is None else sum(10**k for k in range(entry.digits() + 1))
+    return total * positions
+
+
+class _Builder:
+    """Collects the parts of one model; each ``_add_*`` method adds one kind of part."""
+
+    def __init__(self, rng: random.Random) -> None:
+        self.rng = rng
+        self.variables: dict[str, Any] = {}
+        self.controls: list[dict[str, Any]] = []
+        self.actions: dict[str, Any] = {}
+        self.features: dict[str, list[dict[str, Any]]] = {}
+        self.guards: list[dict[str, Any]] = []
+        self.arrows: tuple[str, str] | None = None  # one ▲/▼ pair shared by several steps
+        self.digits: list[str] | None = None  # one keypad shared by every keypad step
+        self.power_key: str | None = None
+        self.power_feature = ""
+        self.settings: list[str] = []  # variables with features of their own
+
+    # --- pieces ----------------------------------------------------------------------------
+
+    def action(self, kind: str = "button", **extra: Any) -> str:
+        index = len(self.actions)
         control = f"c{index}"
-        controls.append({"id": control, "kind": kind, "label": control.upper()})
+        self.controls.append({"id": control, "kind": kind, "label": control.upper()})
         name = f"a{index}"
-        actions[name] = {"control": control, **extra}
+        self.actions[name] = {"control": control, **extra}
         return name
 
-    if rng.random() < 0.5:  # a power switch guarding everything else
-        variables["power"] = {"type": "discrete", "values": ["off", "on"]}
-        press = new_action()
-        features["power"] = [{"actions": [press], "variable": "power", "effect": "toggle"}]
-        guards.append({"when": {"power": "off"}, "only": [press], "hide": rng.random() < 0.5})
+    def dial(self) -> tuple[str, str]:
+        """A dial's two turns (one control)."""
+        control = f"c{len(self.actions)}"
+        self.controls.append({"id": control, "kind": "dial", "label": control.upper()})
+        turns = []
+        for skill in ("turn_cw", "turn_ccw"):
+            name = f"a{len(self.actions)}"
+            self.actions[name] = {"control": control, "skill": skill}
+            turns.append(name)
+        return turns[0], turns[1]
 
-    count = rng.randint(1, 4)
-    parent: str | None = None
-    for i in range(count):
-        name = f"v{i}"
-        kind = rng.choice(
-            ["discrete", "discrete", "numeric", "time", "keypad", "dependent", "large"]
-        )
-        if kind == "dependent" and parent is None:
-            kind = "discrete"
-        variables[name] = _variable(rng, kind, parent, variables)
-        if (
-            variables[name]["type"] == "discrete"
-            and "depends_on" not in variables[name]
-            and parent is None
-        ):
-            parent = name
-    pool = _ActionPool(rng, new_action)
-    for name in [v for v in variables if v.startswith("v")]:
-        for _ in range(rng.randint(1, 2)):
-            features[f"f{len(features)}"] = _feature(rng, name, variables, pool)
+    def arrows_pair(self) -> tuple[str, str]:
+        if self.arrows is None or self.rng.random() < 0.3:
+            self.arrows = (self.action(), self.action())
+        return self.arrows
 
-    numeric = [
-        v for v, spec in variables.items() if spec["type"] == "numeric" and "depends_on" not in spec
-    ]
-    if numeric and rng.random() < 0.25:  # a guard on a number: "set a time before starting"
-        guarded = rng.choice(numeric)
-        low = (
-            _ranges(rng)[0][0]
-            if "ranges" not in variables[guarded]
-            else variables[guarded]["ranges"][0][0]
+    def keypad(self) -> list[str]:
+        if self.digits is None:
+            self.digits = [self.action("key", digit=d) for d in range(10)]
+        return self.digits
+
+    def feature(self, steps: list[dict[str, Any]]) -> str:
+        name = f"f{len(self.features)}"
+        self.features[name] = steps
+        return name
+
+    def model(self) -> ApplianceModel:
+        return ApplianceModel.model_validate(
+            {
+                "appliance": {"id": "generated", "category": "generated"},
+                "controls": self.controls,
+                "variables": self.variables,
+                "actions": self.actions,
+                "features": self.features,
+                "guards": self.guards,
+            }
         )
-        adjusting = [
+
+    # --- the whole model -------------------------------------------------------------------
+
+    def build(self) -> ApplianceModel:
+        rng = self.rng
+        if rng.random() < 0.4:
+            self._add_power()
+        programmes = []
+        if rng.random() < 0.5:  # a programme; sometimes a second one (two cooking zones)
+            programmes.append(self._add_programme("prog"))
+            if rng.random() < 0.4:
+                programmes.append(self._add_programme("zone"))
+        for i in range(rng.randint(1, 3 - len(programmes))):
+            name = f"v{i}"
+            self.variables[name] = _plain_variable(rng)
+            self.settings.append(name)
+        for programme, prefix in zip(programmes, "de", strict=False):
+            for j in range(rng.randint(1, 2 if programme == "prog" else 1)):
+                name = f"{prefix}{j}"
+                self.variables[name] = _dependent_variable(rng, programme, self.variables)
+                self.settings.append(name)
+        for name in self.settings:
+            for _ in range(rng.randint(1, 2)):
+                self._add_setting_feature(name)
+        if self.power_key is not None and rng.random() < 0.4:  # switching off forgets
+            forgotten = rng.sample(self.settings, rng.randint(1, min(2, len(self.settings))))
+            self.features[self.power_feature][0]["reset"] = forgotten
+        if rng.random() < 0.3:
+            self._add_running()
+        if rng.random() < 0.25:
+            self._add_lock()
+        if rng.random() < 0.25:
+            self._add_mode_guard()
+        if rng.random() < 0.15:
+            self._add_number_guard()
+        if rng.random() < 0.3:
+            self._add_side_effect_key()
+        return self.model()
+
+    def _add_power(self) -> None:
+        """A power key guarding everything else; switching off may forget settings later."""
+        self.variables["power"] = {"type": "discrete", "values": ["off", "on"]}
+        self.power_key = self.action()
+        self.power_feature = self.feature(
+            [{"actions": [self.power_key], "variable": "power", "effect": "toggle"}]
+        )
+        guard: dict[str, Any] = {"when": {"power": "off"}, "only": [self.power_key]}
+        if self.rng.random() < 0.5:
+            guard["hide"] = True
+            guard["display"] = ""
+        self.guards.append(guard)
+
+    def _add_programme(self, name: str) -> str:
+        """A programme chosen by a cycling key, a dial, or one go-to key per programme."""
+        rng = self.rng
+        values = [f"p{j}" for j in range(rng.randint(2, 4))]
+        self.variables[name] = {
+            "type": "discrete",
+            "values": values,
+            "initial": rng.choice(values),
+            "wrap": rng.random() < 0.7,
+        }
+        self.settings.append(name)  # more features may come with the other settings
+        how = rng.choice(["cycle", "dial", "goto", "goto"])
+        separate = how == "goto" and rng.random() < 0.5
+        entry = [{"actions": [self.action()]}] if not separate and rng.random() < 0.3 else []
+        if how == "cycle":
+            step: dict[str, Any] = {
+                "actions": [self.action()],
+                "variable": name,
+                "effect": "next",
+            }
+            if rng.random() < 0.3:
+                step["on_entry"] = "show"
+            self.feature([*entry, step])
+        elif how == "dial":
+            cw, ccw = self.dial()
+            self.feature(
+                [
+                    *entry,
+                    {"actions": [cw, ccw], "variable": name, "effect": {cw: "next", ccw: "prev"}},
+                ]
+            )
+        elif separate:  # one feature per programme key (POPCORN, PIZZA…)
+            for value in rng.sample(values, rng.randint(1, len(values))):
+                key = self.action()
+                self.feature([{"actions": [key], "variable": name, "effect": {"to": value}}])
+        else:  # the keys share one step
+            keys = {self.action(): {"to": value} for value in values}
+            self.feature([*entry, {"actions": list(keys), "variable": name, "effect": keys}])
+        return name
+
+    def _add_setting_feature(self, name: str) -> None:
+        """A procedure adjusting ``name`` (sometimes a second variable after it), with an entry
+        key sometimes, a confirm key sometimes, and side effects sometimes."""
+        rng = self.rng
+        steps: list[dict[str, Any]] = []
+        # "press TEMP, then ▲/▼" is how most programme-dependent settings are adjusted
+        if rng.random() < (0.75 if "depends_on" in self.variables[name] else 0.5):
+            steps.append({"actions": [self.action()]})
+        steps.append(self._adjusting_step(name))
+        others = [v for v in self.settings if v != name]
+        if others and rng.random() < 0.25:
+            if rng.random() < 0.5:
+                steps.append({"actions": [self.action()]})
+            steps.append(self._adjusting_step(rng.choice(others)))
+        if rng.random() < 0.2:
+            steps.append({"actions": [self.action()]})
+        self.feature(steps)
+
+    def _adjusting_step(self, name: str) -> dict[str, Any]:
+        rng = self.rng
+        var = self.variables[name]
+        step: dict[str, Any] = {"actions": [], "variable": name}
+        if "entry" in var:
+            effects: dict[str, Any] = dict.fromkeys(self.keypad(), "digit")
+            if rng.random() < 0.3:
+                effects[self.action()] = "clear"
+            step["actions"] = list(effects)
+            if len(effects) > 10 or rng.random() < 0.5:  # else the default effect: digits
+                step["effect"] = effects
+        else:
+            effects = {}
+            shape = rng.random()
+            if shape < 0.4:
+                up, down = self.arrows_pair()
+                effects = {up: "next", down: "prev"}
+            elif shape < 0.55:
+                cw, ccw = self.dial()
+                effects = {cw: "next", ccw: "prev"}
+            else:
+                hold = {"skill": "hold", "seconds": 1} if rng.random() < 0.15 else {}
+                two = _value_count(var) == 2 and rng.random() < 0.4
+                effects[self.action(**hold)] = (
+                    "toggle" if two else rng.choice(["next", "next", "prev", "reset"])
+                )
+            if var["type"] != "discrete" and rng.random() < 0.3:
+                effects[self.action()] = {"add": _add_amount(rng, var)}
+            if rng.random() < 0.2:
+                effects[self.action()] = {"to": rng.choice(_some_values(var))}
+            if rng.random() < 0.1:
+                effects[self.action()] = "none"
+            step["actions"] = list(effects)
+            step["effect"] = effects
+        if rng.random() < 0.2:
+            step["on_entry"] = "show"
+        if rng.random() < 0.15:
+            self._side_effects(step, exclude=name)
+        return step
+
+    def _side_effects(self, step: dict[str, Any], exclude: str) -> None:
+        """``set`` or ``reset`` of other variables, as SET TEMP resetting the timer does (and
+        RESET ALL resetting both zones' programmes)."""
+        targets = [v for v in self.variables if v != exclude]
+        if not targets:
+            return
+        chosen = self.rng.sample(targets, min(len(targets), self.rng.choice([1, 1, 2])))
+        for target in chosen:
+            spec = self.variables[target]
+            if "depends_on" in spec or self.rng.random() < 0.5:
+                step.setdefault("reset", []).append(target)
+            else:
+                step.setdefault("set", {})[target] = self.rng.choice(_some_values(spec))
+
+    def _add_running(self) -> None:
+        """START (a toggle, or ON and a separate STOP); while running only those keys work."""
+        rng = self.rng
+        self.variables["running"] = {"type": "discrete", "values": ["off", "on"]}
+        start = self.action()
+        allowed = [start]
+        if rng.random() < 0.5:
+            self.feature([{"actions": [start], "variable": "running", "effect": "toggle"}])
+        else:
+            stop = self.action()
+            self.feature([{"actions": [start], "variable": "running", "effect": {"to": "on"}}])
+            step: dict[str, Any] = {
+                "actions": [stop],
+                "variable": "running",
+                "effect": {"to": "off"},
+            }
+            if rng.random() < 0.5 and self.settings:
+                step["reset"] = [rng.choice(self.settings)]  # CANCEL forgets a setting
+            self.feature([step])
+            allowed.append(stop)
+        if self.power_key is not None:
+            allowed.append(self.power_key)
+            if rng.random() < 0.5:  # switching off stops the programme
+                self.features[self.power_feature][0]["set"] = {"running": "off"}
+        self.guards.append({"when": {"running": "on"}, "only": allowed, "display": "RUN"})
+
+    def _add_lock(self) -> None:
+        """A child lock on a hold, possibly of two controls; while locked only the hold works."""
+        rng = self.rng
+        self.variables["lock"] = {"type": "discrete", "values": ["off", "on"]}
+        if rng.random() < 0.5 and len(self.controls) >= 2:
+            a, b = rng.sample([c["id"] for c in self.controls], 2)
+            name = f"a{len(self.actions)}"
+            self.actions[name] = {"controls": [a, b], "skill": "hold", "seconds": 3}
+        else:
+            name = self.action(skill="hold", seconds=2)
+        self.feature([{"actions": [name], "variable": "lock", "effect": "toggle"}])
+        allowed = [name] + ([self.power_key] if self.power_key and rng.random() < 0.5 else [])
+        self.guards.append({"when": {"lock": "on"}, "only": allowed, "display": "LOCKED"})
+
+    def _add_mode_guard(self) -> None:
+        """A discrete setting whose value allows only some keys (its own among them), as a
+        mode switch does: in mode A the programme keys do nothing."""
+        rng = self.rng
+        discrete = [
+            v
+            for v in self.settings
+            if self.variables[v]["type"] == "discrete" and "depends_on" not in self.variables[v]
+        ]
+        if not discrete:
+            return
+        name = rng.choice(discrete)
+        spec = self.variables[name]
+        values = spec["values"]
+        blocked = rng.sample(values, rng.randint(1, len(values) - 1))
+        own = [
             a
-            for steps in features.values()
+            for steps in self.features.values()
+            if any(step.get("variable") == name for step in steps)
             for step in steps
-            if step.get("variable") == guarded
             for a in step["actions"]
         ]
-        entering = [
-            a
-            for steps in features.values()
-            if any(st.get("variable") == guarded for st in steps)
-            for a in steps[0]["actions"]
+        others = [a for a in self.actions if a not in own]
+        allowed = sorted(set(own) | set(rng.sample(others, rng.randint(0, len(others)))))
+        self.guards.append({"when": {name: blocked}, "only": allowed})
+
+    def _add_number_guard(self) -> None:
+        """A number's lowest values allow only its own keys ("set a time before starting")."""
+        numeric = [
+            v
+            for v in self.settings
+            if self.variables[v]["type"] == "numeric" and "depends_on" not in self.variables[v]
         ]
-        guards.append(
-            {"when": {guarded: [low, low + 1, low + 2]}, "only": sorted(set(adjusting + entering))}
-        )
+        if not numeric:
+            return
+        name = self.rng.choice(numeric)
+        lowest = all_values(_schema_var(self.variables[name]))[: self.rng.randint(1, 3)]
+        own: set[str] = set()  # its keys, and the keys entering its features
+        for steps in self.features.values():
+            adjusting = [step for step in steps if step.get("variable") == name]
+            if adjusting:
+                own.update(steps[0]["actions"])
+                own.update(a for step in adjusting for a in step["actions"])
+        self.guards.append({"when": {name: lowest}, "only": sorted(own)})
 
-    if rng.random() < 0.3:  # a child lock on a hold, possibly of two controls
-        variables["lock"] = {"type": "discrete", "values": ["off", "on"]}
-        if rng.random() < 0.5 and len(controls) >= 2:
-            a, b = rng.sample([c["id"] for c in controls], 2)
-            name = f"a{len(actions)}"
-            actions[name] = {"controls": [a, b], "skill": "hold", "seconds": 3}
-        else:
-            name = new_action(skill="hold", seconds=2)
-        features["lock"] = [{"actions": [name], "variable": "lock", "effect": "toggle"}]
-        guards.append({"when": {"lock": "on"}, "only": [name]})
-
-    if rng.random() < 0.3 and len(variables) > 1:  # a step with side effects
-        target = rng.choice([v for v in variables if "depends_on" not in variables[v]])
-        domain = build_domain(
-            ApplianceModel.model_validate(
-                _wrap(variables, controls, actions, features, guards)
-            ).variables[target]
-        )
-        press = new_action()
-        step: dict[str, Any] = {"actions": [press]}
-        if rng.random() < 0.5:
-            step["set"] = {target: domain.values[rng.randrange(len(domain))]}
-        else:
-            step["reset"] = [target]
-        features[f"f{len(features)}"] = [step]
-
-    return ApplianceModel.model_validate(_wrap(variables, controls, actions, features, guards))
-
-
-def _wrap(
-    variables: dict[str, Any],
-    controls: list[dict[str, Any]],
-    actions: dict[str, Any],
-    features: dict[str, Any],
-    guards: list[dict[str, Any]],
-) -> dict[str, Any]:
-    return {
-        "appliance": {"id": "generated", "category": "generated"},
-        "controls": controls,
-        "variables": variables,
-        "actions": actions,
-        "features": features,
-        "guards": guards,
-    }
+    def _add_side_effect_key(self) -> None:
+        """A key whose only job is a side effect: RESET ALL, a preset, a programme reset."""
+        step: dict[str, Any] = {"actions": [self.action()]}
+        self._side_effects(step, exclude="")
+        if "set" in step or "reset" in step:
+            self.feature([step])
 
 
 def _ranges(rng: random.Random) -> list[list[int]]:
@@ -142,13 +427,16 @@ def _ranges(rng: random.Random) -> list[list[int]]:
     return [first, [first[1], first[1] + step2 * rng.randint(1, 3), step2]]
 
 
-def _variable(
-    rng: random.Random, kind: str, parent: str | None, variables: dict[str, Any]
-) -> dict[str, Any]:
+def _plain_variable(rng: random.Random) -> dict[str, Any]:
     wrap = rng.random() < 0.5
+    kind = rng.choice(
+        ["discrete", "discrete", "numeric", "time", "keypad", "time keypad", "large", "mode"]
+    )
     if kind == "discrete":
         values = [f"x{j}" for j in range(rng.randint(2, 4))]
         return {"type": "discrete", "values": values, "wrap": wrap, "initial": rng.choice(values)}
+    if kind == "mode":
+        return {"type": "discrete", "values": ["m0", "m1"]}
     if kind == "numeric":
         return {"type": "numeric", "ranges": _ranges(rng), "wrap": wrap, "unit": "min"}
     if kind == "large":  # more values than the planner enumerates cheaply (> 64)
@@ -159,100 +447,162 @@ def _variable(
             "wrap": wrap,
             "ranges": [["00:00:00", "00:02:00", 30], ["00:02:00", "00:04:00", 60]],
         }
-    if kind == "keypad":
-        top, step = rng.choice([(9, 1), (12, 3), (20, 5), (120, 30)])
+    if kind == "time keypad":
+        fmt, digits, ranges = rng.choice(
+            [
+                ("mm:ss", 3, [["00:00:00", "00:01:30", 30]]),
+                ("mm:ss", 2, [["00:00:10", "00:00:50", 10], ["00:00:50", "00:02:00", 70]]),
+                ("minutes", rng.choice([1, 2]), [["00:00:00", "00:05:00", 60]]),
+            ]
+        )
+        overflow = rng.choice(["shift", "ignore"])
         return {
-            "type": "numeric",
-            "ranges": [[0, top, step]],
-            "entry": {
-                "format": "number",
-                "max_digits": rng.choice([2, 3]),
-                "overflow": rng.choice(["shift", "ignore"]),
-            },
+            "type": "time",
+            "ranges": ranges,
+            "entry": {"format": fmt, "max_digits": digits, "overflow": overflow},
         }
-    assert parent is not None
+    top, step = rng.choice([(9, 1), (12, 3), (20, 5), (120, 30)])
+    return {
+        "type": "numeric",
+        "ranges": [[0, top, step]],
+        "entry": {
+            "format": "number",
+            "max_digits": rng.choice([2, 2, 3]),
+            "overflow": rng.choice(["shift", "ignore"]),
+        },
+    }
+
+
+def _dependent_variable(
+    rng: random.Random, parent: str, variables: dict[str, Any]
+) -> dict[str, Any]:
+    """A setting with one domain per programme (sometimes none for one): value names shared
+    across programmes with different defaults, so changing programme can be a shortcut."""
     parent_values = variables[parent]["values"]
-    cases = {}
+    wrap = rng.random() < 0.5
+    numeric = rng.random() < 0.3
+    cases: dict[str, Any] = {}
     for value in parent_values:
-        if rng.random() < 0.8:
-            size = rng.randint(1, 3)
+        if rng.random() < 0.15 and (cases or value != parent_values[-1]):
+            continue  # this programme has no such setting
+        if numeric:
+            top = rng.randint(2, 4)
+            cases[value] = {"ranges": [[0, top, 1]], "initial": rng.randint(0, top)}
+        else:
+            size = rng.randint(2, 4)
             cases[value] = {
                 "values": [f"y{j}" for j in range(size)],
                 "initial": f"y{rng.randrange(size)}",
             }
-    if not cases:
-        cases[parent_values[0]] = {"values": ["y0", "y1"]}
-    return {"type": "discrete", "depends_on": parent, "cases": cases, "wrap": wrap}
+    kind = "numeric" if numeric else "discrete"
+    return {"type": kind, "depends_on": parent, "cases": cases, "wrap": wrap}
 
 
-class _ActionPool:
-    """Actions shared the way real panels share them: one ▲/▼ pair and one keypad."""
-
-    def __init__(self, rng: random.Random, new_action: Any) -> None:
-        self.rng = rng
-        self.new_action = new_action
-        self.arrows: tuple[str, str] | None = None
-        self.digits: list[str] | None = None
-
-    def arrows_pair(self) -> tuple[str, str]:
-        if self.arrows is None or self.rng.random() < 0.3:
-            self.arrows = (self.new_action(), self.new_action())
-        return self.arrows
-
-    def keypad(self) -> list[str]:
-        if self.digits is None:
-            self.digits = [self.new_action("key", digit=d) for d in range(10)]
-        return self.digits
+def _value_count(var: dict[str, Any]) -> int:
+    if "values" in var:
+        return len(var["values"])
+    return 0
 
 
-def _adjusting_step(
-    rng: random.Random, name: str, var: dict[str, Any], pool: _ActionPool
-) -> dict[str, Any]:
-    if "entry" in var:
-        step = {"actions": pool.keypad(), "variable": name}
-        if rng.random() < 0.2:
-            step["on_entry"] = "show"
-        return step
-    effects: dict[str, Any] = {}
-    if rng.random() < 0.5:
-        up, down = pool.arrows_pair()
-        effects = {up: "next", down: "prev"}
-    else:
-        hold = {"skill": "hold", "seconds": 1} if rng.random() < 0.15 else {}
-        effects[pool.new_action(**hold)] = rng.choice(["next", "next", "prev", "reset"])
-    if var["type"] != "discrete" and rng.random() < 0.3:
-        effects[pool.new_action()] = {"add": rng.choice([1, 2, 5, 10, 30, 60, -30])}
-    if var.get("values") and rng.random() < 0.2:
-        effects[pool.new_action()] = {"to": rng.choice(var["values"])}
-    step: dict[str, Any] = {"actions": list(effects), "variable": name, "effect": effects}
-    if rng.random() < 0.2:
-        step["on_entry"] = "show"
-    return step
+def _some_values(var: dict[str, Any]) -> list[Any]:
+    """Values a ``to:`` or ``set:`` may name: in every case of a dependent variable."""
+    if "values" in var:
+        return list(var["values"])
+    if "cases" in var:
+        domains = [build_domain(_schema_var(var), case) for case in _schema_var(var).cases.values()]
+        common = set(domains[0].values).intersection(*(d.values for d in domains[1:]))
+        return sorted(common, key=str) or list(domains[0].values)
+    return all_values(_schema_var(var))
 
 
-def _feature(
-    rng: random.Random, name: str, variables: dict[str, Any], pool: _ActionPool
-) -> list[dict[str, Any]]:
-    """A procedure adjusting ``name`` (and sometimes a second variable after it), with an
-    entry key sometimes and a confirm key sometimes."""
-    steps: list[dict[str, Any]] = []
-    if rng.random() < 0.5:
-        steps.append({"actions": [pool.new_action()]})
-    steps.append(_adjusting_step(rng, name, variables[name], pool))
-    others = [v for v in variables if v.startswith("v") and v != name]
-    if others and rng.random() < 0.3:
-        if rng.random() < 0.5:
-            steps.append({"actions": [pool.new_action()]})
-        second = rng.choice(others)
-        steps.append(_adjusting_step(rng, second, variables[second], pool))
-    if rng.random() < 0.2:
-        steps.append({"actions": [pool.new_action()]})
-    return steps
+def _schema_var(var: dict[str, Any]) -> Any:
+    return _VARIABLE.validate_python(var)
+
+
+def _add_amount(rng: random.Random, var: dict[str, Any]) -> Any:
+    if var["type"] == "time":
+        return rng.choice([30, 60, -30, "00:01:00"])
+    return rng.choice([1, 2, 5, 10, -1])
+
+
+def format_parts(model: ApplianceModel) -> set[str]:
+    """The parts of the format a model uses (names from :data:`FORMAT_PARTS`)."""
+    parts: set[str] = set()
+    parents = {v.depends_on for v in model.variables.values() if v.depends_on}
+    if len(parents) > 1:
+        parts.add("two programmes")
+    for var in model.variables.values():
+        if var.depends_on:
+            parts.add("dependent setting")
+            parent_values = build_domain(model.variables[var.depends_on]).values
+            if set(parent_values) - set(var.cases or {}):
+                parts.add("missing case")
+        if getattr(var, "entry", None) is not None:
+            parts.add("time keypad" if var.type == "time" else "keypad")
+        if var.type == "time":
+            parts.add("time")
+        ranges = getattr(var, "ranges", None) or []
+        if len(ranges) > 1:
+            parts.add("piecewise")
+        if var.depends_on is None and len(build_domain(var)) > 64:
+            parts.add("large domain")
+        parts.add("wrap" if var.wrap else "clamp")
+    for action in model.actions.values():
+        if action.skill == "hold":
+            parts.add("two-control hold" if action.controls else "hold")
+        if action.skill in ("turn_cw", "turn_ccw"):
+            parts.add("dial")
+    for steps in model.features.values():
+        for index, step in enumerate(steps):
+            if step.variable is None and not step.set and not step.reset:
+                parts.add("entry step" if index + 1 < len(steps) else "confirm step")
+            if step.on_entry == "show":
+                parts.add("on_entry show")
+            if step.set:
+                parts.add("set side effect")
+            if step.reset:
+                parts.add("reset side effect")
+            effects = list(step.effect.values()) if isinstance(step.effect, dict) else [step.effect]
+            for effect in effects:
+                if isinstance(effect, Add):
+                    parts.add("add")
+                elif isinstance(effect, GoTo):
+                    parts.add("go-to programme key" if step.variable in parents else "go-to")
+                elif effect in ("prev", "toggle", "none"):
+                    parts.add(str(effect) + (" effect" if effect == "none" else ""))
+                elif effect == "reset":
+                    parts.add("reset effect")
+                elif effect == "clear":
+                    parts.add("keypad clear")
+                if step.variable in parents and effect in ("next", "prev", None):
+                    parts.add("cycling programme key")
+    for guard in model.guards:
+        names = set(guard.when)
+        if guard.hide:
+            parts.add("hidden display")
+        if "power" in names:
+            parts.add("power guard")
+        elif "lock" in names:
+            parts.add("lock guard")
+        elif "running" in names:
+            parts.add("running guard")
+        elif any(model.variables[n].type == "discrete" for n in names):
+            parts.add("mode guard")
+        else:
+            parts.add("number guard")
+    return parts
 
 
 def random_goal(rng: random.Random, model: ApplianceModel) -> dict[str, Any]:
     """A goal over one to three variables: values drawn from their domains, or (half the
-    time) read off a state reached by a random walk, so that it is usually reachable."""
+    time) read off a state reached by a random walk, so that it is usually reachable.
+
+    With programme-dependent settings, a quarter of the goals ask for a setting's value that
+    is some programme's default without naming the programme, so that changing programme is
+    a candidate route (the family of ``planner_not_optimal`` in issue 8)."""
+    dependents = [n for n, v in model.variables.items() if v.depends_on is not None]
+    if dependents and rng.random() < 0.25:
+        return _default_elsewhere_goal(rng, model, rng.choice(dependents))
     names = rng.sample(list(model.variables), rng.randint(1, min(3, len(model.variables))))
     if rng.random() < 0.5:
         from apbot.plan.bfs import random_walk
@@ -265,13 +615,15 @@ def random_goal(rng: random.Random, model: ApplianceModel) -> dict[str, Any]:
             return goal
     names.sort(key=lambda n: model.variables[n].depends_on is not None)  # parents first
     goal: dict[str, Any] = {}
+    programme: dict[str, Any] = {}  # the programme each dependent value was drawn for
     for name in names:
         var = model.variables[name]
         if var.depends_on is not None:
             parent = var.depends_on
             parent_domain = build_domain(model.variables[parent])
             options = [v for v in parent_domain.values if v in (var.cases or {})]
-            chosen = goal.get(parent) or rng.choice(options)
+            chosen = goal.get(parent) or programme.get(parent) or rng.choice(options)
+            programme[parent] = chosen  # a second setting of it must exist there too
             if chosen not in (var.cases or {}):
                 continue
             if parent in goal or rng.random() < 0.5:  # else: any programme offering it will do
@@ -280,4 +632,21 @@ def random_goal(rng: random.Random, model: ApplianceModel) -> dict[str, Any]:
         else:
             domain = build_domain(var)
         goal[name] = domain.values[rng.randrange(len(domain))]
+    return goal
+
+
+def _default_elsewhere_goal(rng: random.Random, model: ApplianceModel, name: str) -> dict[str, Any]:
+    """A dependent setting at one programme's default (the programme not named), and
+    sometimes one more variable that is neither."""
+    var = model.variables[name]
+    case = rng.choice(list((var.cases or {}).values()))
+    domain = build_domain(var, case)
+    goal: dict[str, Any] = {name: domain.values[domain.initial]}
+    others = [n for n in model.variables if n not in (name, var.depends_on)]
+    if others and rng.random() < 0.3:
+        other = rng.choice(others)
+        spec = model.variables[other]
+        if spec.depends_on is None:
+            values = build_domain(spec).values
+            goal[other] = values[rng.randrange(len(values))]
     return goal

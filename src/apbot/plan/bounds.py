@@ -12,14 +12,16 @@ node can continue a half-typed buffer (elsewhere a visit is maximal, so leaving 
 discards the buffer); there, and only there, one digit may finish the job (``continuing``).
 
 Presses that adjust no goal variable (TIME COOK before the digits) are counted too: when a
-goal variable can only be adjusted in a step reached through such a press, that press is
-unavoidable, and presses entering different features are distinct actions.
+goal variable can only be adjusted in a step reached through such a press, any route that uses
+one of its own steps makes that press, and presses entering different features are distinct
+actions. A route that never uses its own steps — a side effect, or a programme change that
+restores the goal value as the new programme's default — needs no entry press, so a variable's
+term is ``min(own route + entry, cheapest such jump)``, never the sum of a jump and an entry.
 """
 
 from __future__ import annotations
 
 from collections import deque
-from collections.abc import Callable
 from typing import Any
 
 from apbot.plan.goals import CompiledGoal
@@ -30,13 +32,16 @@ _ABSENT = ("absent",)  # a dependent setting that does not exist in the current 
 
 
 def _value_graph(
-    compiled: CompiledModel, v: int, only_case: int | None = None, reset_cost: int = 0
-) -> tuple[dict[Any, list[tuple[Any, int]]], list[tuple[Any, int]]]:
-    """Reverse edges ``to -> [(from, cost)]`` over canonical values, and "from anywhere" edges.
+    compiled: CompiledModel, v: int, only_case: int | None = None, reset_costs: tuple[int, ...] = ()
+) -> tuple[dict[Any, list[tuple[Any, int]]], list[tuple[Any, int]], list[tuple[Any, int]]]:
+    """Reverse edges ``to -> [(from, cost)]`` over canonical values, and two kinds of "from
+    anywhere" edges: typing on the variable's own keypad step, and *jumps* made from outside
+    its steps (side effects, programme changes) that need no press entering them.
 
     ``only_case`` keeps a programme-dependent setting inside one programme's domain (the goal's).
-    ``reset_cost`` is what a programme change restoring the setting's default costs it (1 when
-    this setting is the one charged for its programme's presses, see :class:`LowerBound`).
+    ``reset_costs`` is what a programme change to each programme value, restoring the setting's
+    default there, costs it (1 where this setting is the one charged for its programme's
+    presses, see :class:`LowerBound`; empty: 0 everywhere).
     """
     var = compiled.vars[v]
 
@@ -48,7 +53,8 @@ def _value_graph(
         ]
 
     reverse: dict[Any, list[tuple[Any, int]]] = {}
-    anywhere: list[tuple[Any, int]] = []
+    typed_anywhere: list[tuple[Any, int]] = []
+    jumps: list[tuple[Any, int]] = []
     entry = getattr(var.spec, "entry", None)
 
     def edge(a: Any, b: Any, cost: int) -> None:
@@ -69,7 +75,7 @@ def _value_graph(
                 elif effect[0] == DIGIT and entry is not None and not typed:
                     typed = True  # every digit key of the step offers the same values
                     allowed = {value for _, d in cases() for value in d.values}
-                    anywhere.extend(
+                    typed_anywhere.extend(
                         item for item in typeable_values(compiled, v) if item[0] in allowed
                     )
         for target, tables in step.side:
@@ -77,16 +83,15 @@ def _value_graph(
                 for case, domain in cases():
                     table = tables[case]
                     if table is not None:
-                        anywhere.append((domain.values[table[0]], 0))
+                        jumps.append((domain.values[table[0]], 0))
     if var.parent >= 0:  # a programme change restores the new programme's default
         if only_case is None:
-            anywhere.extend(
-                (_ABSENT, reset_cost) if d is None else (d.values[d.initial], reset_cost)
-                for d in var.domains
-            )
+            for case, d in enumerate(var.domains):
+                cost = reset_costs[case] if reset_costs else 0
+                jumps.append((_ABSENT, cost) if d is None else (d.values[d.initial], cost))
         else:
-            anywhere.extend((d.values[d.initial], 0) for _, d in cases())
-    return reverse, anywhere
+            jumps.extend((d.values[d.initial], 0) for _, d in cases())
+    return reverse, typed_anywhere, jumps
 
 
 def typeable_values(compiled: CompiledModel, v: int) -> list[tuple[Any, int]]:
@@ -112,10 +117,24 @@ def distances_to(
     v: int,
     goal_value: Any,
     only_case: int | None = None,
-    reset_cost: int = 0,
+    reset_costs: tuple[int, ...] = (),
 ) -> tuple[dict[Any, float], float]:
     """Fewest main actions from each value to ``goal_value``, and the cost from anywhere."""
-    reverse, anywhere = _value_graph(compiled, v, only_case, reset_cost)
+    dist, from_anywhere, _ = _distances(compiled, v, goal_value, only_case, reset_costs)
+    return dist, from_anywhere
+
+
+def _distances(
+    compiled: CompiledModel,
+    v: int,
+    goal_value: Any,
+    only_case: int | None,
+    reset_costs: tuple[int, ...],
+) -> tuple[dict[Any, float], float, float]:
+    """:func:`distances_to`, plus the cheapest jump landing on the goal value: the only way
+    there that uses none of the variable's own steps."""
+    reverse, typed_anywhere, jumps = _value_graph(compiled, v, only_case, reset_costs)
+    anywhere = typed_anywhere + jumps
     dist: dict[Any, float] = {goal_value: 0}
     queue: deque[Any] = deque([goal_value])
     while queue:  # 0-1 BFS backwards from the goal
@@ -126,7 +145,8 @@ def distances_to(
                 dist[source] = candidate
                 (queue.appendleft if cost == 0 else queue.append)(source)
     from_anywhere = min((cost + dist.get(target, INF) for target, cost in anywhere), default=INF)
-    return dist, from_anywhere
+    jump = min((cost for target, cost in jumps if target == goal_value), default=INF)
+    return dist, from_anywhere, jump
 
 
 class LowerBound:
@@ -136,16 +156,17 @@ class LowerBound:
         self.compiled = compiled
         self.goal = goal
         cache: dict[Any, Any] = compiled.cache.setdefault("bounds", {})
-        self.tables: list[tuple[int, tuple[tuple[float, ...], ...], float]] = []
+        # per goal variable: (v, bound per case and value index, bound when absent, jump)
+        self.tables: list[tuple[int, tuple[tuple[float, ...], ...], float, float]] = []
         goal_vars = set(goal.variables)
         self.entries = [_entry_requirements(compiled, v, goal_vars) for v in goal.variables]
         charged = self._charged_dependents()
         for name, v in zip(goal.names, goal.variables, strict=True):
             goal_case = self._goal_case(v)
-            reset_cost = int(v in charged)
-            key = (v, goal.canonical[name], goal_case, reset_cost)
+            reset_costs = charged.get(v, ())
+            key = (v, goal.canonical[name], goal_case, reset_costs)
             if key not in cache:
-                cache[key] = self._table(v, goal.canonical[name], goal_case, reset_cost)
+                cache[key] = self._table(v, goal.canonical[name], goal_case, reset_costs)
             self.tables.append(cache[key])
         # steps where a partly typed buffer may finish a goal variable with one digit
         self.typing_step = {
@@ -160,7 +181,7 @@ class LowerBound:
         total = 0.0
         typing = self.typing_step.get(state.step, -1) if continuing and state.buffer else -1
         claimed: set[str] = set()
-        for (v, per_case, absent), entry in zip(self.tables, self.entries, strict=True):
+        for (v, per_case, absent, jump), entry in zip(self.tables, self.entries, strict=True):
             index = values[v]
             if index < 0:
                 bound = absent
@@ -169,12 +190,17 @@ class LowerBound:
                 bound = per_case[values[parent] if parent >= 0 else 0][index]
                 if v == typing and bound > 1:
                     bound = 1
-            total += bound
             if bound >= 1 and entry is not None:
                 needs, features = entry
                 if state.step not in needs and claimed.isdisjoint(features):
-                    total += 1  # an entry press no goal variable pays for
-                    claimed |= features
+                    # a route through v's own steps makes an entry press no goal variable
+                    # pays for; a jump (side effect, programme change) makes none
+                    if bound + 1 <= jump:
+                        bound += 1
+                        claimed |= features
+                    else:
+                        bound = jump
+            total += bound
         return total
 
     def _goal_case(self, v: int) -> int | None:
@@ -186,24 +212,23 @@ class LowerBound:
         assert domain is not None
         return domain.index[self.goal.canonical[self.compiled.vars[parent].name]]
 
-    def _charged_dependents(self) -> set[int]:
-        """Goal settings that pay for their programme's presses.
+    def _charged_dependents(self) -> dict[int, tuple[int, ...]]:
+        """Goal settings that pay for their programme's presses: per setting, what a programme
+        change to each programme value costs it (1 or 0).
 
         A programme that is not itself a goal variable changes only through presses no goal
         variable pays for — unless a goal variable's step assigns it as a side effect. Then the
-        first goal setting depending on it is charged one press for reaching a default by a
-        programme change (the others of the same programme ride along for free). Programmes
-        that one step can change together share a single charge, and a programme whose steps
-        sit in a feature the entry term already charges for is not charged again.
+        first goal setting depending on it is charged one press for reaching the default of a
+        programme value by a programme change (the others of the same programme ride along
+        for free). Charges are per programme value, by the steps that can assign it: a step
+        that can assign two programmes' values at once (POWER resetting both zones) is charged
+        to one of them only, and steps in a feature the entry term already charges for, or
+        adjusting a goal variable, are never charged here.
         """
         compiled = self.compiled
         goal_vars = set(self.goal.variables)
-        assigning: dict[int, set[int]] = {}  # programme -> steps that can change it
-        for sid, step in enumerate(compiled.steps):
-            for target in {step.variable} | {t for t, _ in step.side}:
-                assigning.setdefault(target, set()).add(sid)
         entry_features = {f for entry in self.entries if entry is not None for f in entry[1]}
-        charged: set[int] = set()
+        charged: dict[int, tuple[int, ...]] = {}
         used_steps: set[int] = set()
         seen_parents: set[int] = set()
         for v in self.goal.variables:
@@ -211,24 +236,26 @@ class LowerBound:
             if parent < 0 or parent in goal_vars or parent in seen_parents:
                 continue
             seen_parents.add(parent)
-            steps = assigning.get(parent, set())
-            if (
-                any(
+            costs = []
+            charging: set[int] = set()
+            for steps in _assigning_steps(compiled, parent):
+                free = bool(steps & used_steps) or any(
                     compiled.steps[s].variable in goal_vars
                     or compiled.steps[s].feature in entry_features
                     for s in steps
                 )
-                or steps & used_steps
-            ):
-                continue
-            used_steps |= steps
-            charged.add(v)
+                costs.append(0 if free else 1)
+                if not free:
+                    charging |= steps
+            used_steps |= charging
+            if any(costs):
+                charged[v] = tuple(costs)
         return charged
 
     def _table(
-        self, v: int, goal_value: Any, goal_case: int | None, reset_cost: int = 0
-    ) -> tuple[int, tuple[tuple[float, ...], ...], float]:
-        dist, anywhere = distances_to(self.compiled, v, goal_value, goal_case, reset_cost)
+        self, v: int, goal_value: Any, goal_case: int | None, reset_costs: tuple[int, ...] = ()
+    ) -> tuple[int, tuple[tuple[float, ...], ...], float, float]:
+        dist, anywhere, jump = _distances(self.compiled, v, goal_value, goal_case, reset_costs)
         per_case = []
         for case, d in enumerate(self.compiled.vars[v].domains):
             if d is None:
@@ -239,27 +266,13 @@ class LowerBound:
             else:
                 per_case.append(tuple(min(dist.get(value, INF), anywhere) for value in d.values))
         absent = anywhere if goal_case is not None else min(dist.get(_ABSENT, INF), anywhere)
-        return (v, tuple(per_case), absent)
-
-    def variable_bound(self, v: int) -> Callable[[State], float]:
-        """The bound's term for one goal variable alone (its own presses, no entries)."""
-        position = self.goal.variables.index(v)
-        _, per_case, absent = self.tables[position]
-        parent = self.compiled.vars[v].parent
-
-        def term(state: State) -> float:
-            index = state.values[v]
-            if index < 0:
-                return absent
-            return per_case[state.values[parent] if parent >= 0 else 0][index]
-
-        return term
+        return (v, tuple(per_case), absent, jump)
 
     def blocking(self, state: State) -> list[str]:
         """Goal variables whose goal value no action can ever reach from this state."""
         values = state.values
         names = []
-        for name, (v, per_case, absent) in zip(self.goal.names, self.tables, strict=True):
+        for name, (v, per_case, absent, _) in zip(self.goal.names, self.tables, strict=True):
             index = values[v]
             parent = self.compiled.vars[v].parent
             bound = absent if index < 0 else per_case[values[parent] if parent >= 0 else 0][index]
@@ -289,3 +302,25 @@ def _entry_requirements(
     if not features:
         return None
     return frozenset(free), frozenset(features)
+
+
+def _assigning_steps(compiled: CompiledModel, programme: int) -> list[set[int]]:
+    """Per value of a programme, the steps whose actions can assign it that value (by their
+    main effect or a side effect) — a superset is safe, a missing step is not."""
+    var = compiled.vars[programme]
+    domain = var.domains[0]
+    assert domain is not None
+    steps: list[set[int]] = [set() for _ in domain.values]
+    for sid, step in enumerate(compiled.steps):
+        if step.variable == programme:
+            for effect in step.effects.values():
+                if effect[0] in (TABLE, CLEAR) and effect[1][0] is not None:
+                    for value in set(effect[1][0]):
+                        steps[value].add(sid)
+                elif effect[0] == DIGIT:
+                    for chosen in steps:
+                        chosen.add(sid)
+        for target, tables in step.side:
+            if target == programme and tables[0] is not None:
+                steps[tables[0][0]].add(sid)
+    return steps

@@ -18,7 +18,7 @@ from collections import deque
 from collections.abc import Callable, Hashable, Sequence
 
 from apbot.model.schema import Entry
-from apbot.sim.compiled import DIGIT, CompiledModel, State, entry_digits
+from apbot.sim.compiled import CLEAR, DIGIT, CompiledModel, State, entry_digits
 
 Exit = tuple[State, tuple[int, ...]]
 
@@ -99,7 +99,15 @@ def _ways_to_reach(buffer: str, wanted: str, width: int, overflow: str) -> list[
 def keypad_exits(
     compiled: CompiledModel, state: State, step: int, entry: Sequence[int], targets: Sequence[float]
 ) -> list[Exit]:
-    """Exits of a keypad visit: the entry actions alone, then typing each target magnitude."""
+    """Exits of a keypad visit: each entry action alone; for each target magnitude, the fewest
+    presses that leave the variable at it; and CLEAR, which resets the variable.
+
+    Typing starts after an entering press (a digit there is already typed, so "5" then "40"
+    reads 40 on a shifting buffer — the only way in when a guard admits just the 5 key) or,
+    at the search's start, from the half-typed buffer; CLEAR and typing afresh may beat both.
+    Only the shortest accepted way to each target is kept: the buffer it leaves is emptied as
+    soon as the pointer moves on, which is the only thing a visit can do next.
+    """
     info = compiled.steps[step]
     var = compiled.vars[info.variable]
     spec_entry = var.spec.entry  # type: ignore[union-attr]
@@ -109,34 +117,52 @@ def keypad_exits(
         for a in info.actions
         if info.effects[a][0] == DIGIT
     }
+    clear = next((a for a in sorted(info.actions) if info.effects[a][0] == CLEAR), None)
     exits: list[Exit] = []
+    origins: dict[State, tuple[int, ...]] = {}  # where typing starts, and the presses so far
+    if state.step == step:
+        origins[state] = ()
     for action in entry:  # the cheapest way through: one action
         after = compiled.apply(state, action)
         if after is not None:
             exits.append((after, (action,)))
-    continuing = state.step == step
+            if state.step != step:
+                origins.setdefault(after, (action,))
+    if clear is not None:  # CLEAR resets the variable, also after a press that showed or typed
+        exits.extend(_first_accepted(compiled, state, [(*o, clear) for o in origins.values() if o]))
     for magnitude in targets:
         digits = entry_digits(magnitude, spec_entry)
         if digits is None:
             continue
-        presses = keypad_presses(state.buffer, digits, spec_entry, typed=continuing)
-        if presses is None:
-            continue
-        sequence = [digit_action.get(d) for d in presses]
-        if None in sequence:
-            continue
-        path = tuple(a for a in sequence if a is not None)
-        if not continuing:
-            if info.show_on_entry:
-                path = (entry[0], *path)  # the entering press only wakes the display
-            elif path[0] not in entry:
-                non_digit = [a for a in entry if info.effects[a][0] != DIGIT]
-                if not non_digit:
-                    continue
-                path = (non_digit[0], *path)  # enter with a non-digit action, then type
+        ways: list[tuple[int, ...]] = []
+        for origin, prefix in origins.items():
+            presses = keypad_presses(origin.buffer, digits, spec_entry)
+            typed = _digit_actions(presses, digit_action)
+            if typed:
+                ways.append((*prefix, *typed))
+            if origin.buffer and clear is not None:
+                fresh = _digit_actions(keypad_presses("", digits, spec_entry), digit_action)
+                if fresh:
+                    ways.append((*prefix, clear, *fresh))
+        exits.extend(_first_accepted(compiled, state, ways))
+    return exits
+
+
+def _first_accepted(
+    compiled: CompiledModel, state: State, ways: Sequence[tuple[int, ...]]
+) -> list[Exit]:
+    """The shortest of ``ways`` the appliance accepts press by press, with where it ends."""
+    for path in sorted(ways, key=len):
         current: State | None = state
         for action in path:
             current = compiled.apply(current, action) if current is not None else None
         if current is not None:
-            exits.append((current, path))
-    return exits
+            return [(current, path)]
+    return []
+
+
+def _digit_actions(presses: str | None, digit_action: dict[str, int]) -> tuple[int, ...]:
+    """The digit keys that type ``presses`` (empty when there are none or a key is missing)."""
+    if not presses or any(d not in digit_action for d in presses):
+        return ()
+    return tuple(digit_action[d] for d in presses)
