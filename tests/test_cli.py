@@ -97,10 +97,14 @@ def test_bad_inputs_are_messages_not_tracebacks(tmp_path: Path) -> None:
 
 
 def test_run_shows_a_task_live_and_judges_it() -> None:
-    result = runner.invoke(app, ["run", "microwave_1", "t03", "--belief", "faulty:0.3"])
+    # a belief that prints the cooking time wrong: seen, repaired, done
+    result = runner.invoke(app, ["run", "microwave_3", "t01", "--belief", "faulty:0.3:display"])
     assert result.exit_code == 0, result.output
     assert "✗ mismatch" in result.output and "repair:" in result.output
     assert "success:" in result.output and "SPL" in result.output
+    # an instruction the appliance cannot do: a declared failure, exit 1
+    impossible = runner.invoke(app, ["run", "kettle_1", "x", "-g", "temperature=81"])
+    assert impossible.exit_code != 0 and "Traceback" not in impossible.output
 
 
 def test_run_with_an_explicit_goal_and_a_failure_exit_code() -> None:
