@@ -86,3 +86,13 @@ def test_reset_options_are_checked() -> None:
     with pytest.raises(ValueError, match=r"unknown reset option\(s\) \['taks'\]"):
         env.reset(options={"taks": "t03"})
     assert env.reset(options={"task": 2})[1]["task"] == "t03"
+
+
+def test_the_env_reveals_what_the_benchmark_environment_reveals() -> None:
+    """One rule for every adapter: the panel's text, refusals only where they are signalled,
+    never the simulator's reason (which names true values)."""
+    env = ApplianceEnv("washing_machine_1")
+    env.reset(seed=0)
+    names = env.action_names
+    off = env.step(names.index("press_start"))[4]  # switched off: a dark panel ignores it
+    assert off["accepted"] and off["reason"] == ""

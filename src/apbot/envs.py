@@ -18,6 +18,7 @@ import gymnasium as gym
 import numpy as np
 from gymnasium import spaces
 
+from apbot.agent.environment import panel_feedback
 from apbot.bench.suite import SuiteAppliance, bundled_suite_dir, load_appliance
 from apbot.model.goal import parse_goal
 from apbot.sim.simulator import Simulator
@@ -39,7 +40,9 @@ class ApplianceEnv(gym.Env[str, int]):
     integer in ``0 … n-1`` raises (``TypeError``, ``ValueError``).
 
     ## Observation Space
-    ``Text``: the display text after the action (may be empty: a dark panel).
+    ``Text``: the panel's text after the action — the main display, then the lit lamps (may be
+    empty: a dark panel). ``info["accepted"]`` is False only for a refusal the appliance makes
+    perceptible (a beep); a key that does nothing here is usually ignored without a sign.
 
     ## Rewards
     1 on the step the goal is reached, 0 otherwise.
@@ -89,15 +92,17 @@ class ApplianceEnv(gym.Env[str, int]):
         else:
             self.task = next((t for t in tasks if t.id == chosen), None) or _no_task(chosen, tasks)
         self.goal = parse_goal(self.appliance.model, self.task.goal)
-        self._display = self._clip(self.simulator.reset().display)
+        self._display = self._clip(panel_feedback(self.simulator.reset()).text)
         return self._display, self._info(accepted=True, reason="")
 
     def step(self, action: int) -> tuple[str, float, bool, bool, dict[str, Any]]:
         name = self.action_names[self._action_index(action)]
-        observation = self.simulator.step(name)
-        self._display = self._clip(observation.display)
+        # what a robot at the panel has, by the same rule as the benchmark's environment: the
+        # panel's text, and a refusal only where the appliance signals one (never its reason)
+        feedback = panel_feedback(self.simulator.step(name), "display")
+        self._display = self._clip(feedback.text)
         reached = self.simulator.satisfies(self.goal)
-        info = self._info(accepted=observation.accepted, reason=observation.reason)
+        info = self._info(accepted=feedback.accepted, reason=feedback.reason)
         return self._display, float(reached), reached, False, info
 
     def _action_index(self, action: Any) -> int:
