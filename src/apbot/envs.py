@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import string
 from functools import cache
-from typing import Any, ClassVar
+from typing import Any
 
 import gymnasium as gym
 import numpy as np
@@ -56,13 +56,13 @@ class ApplianceEnv(gym.Env[str, int]):
     the environment's seeded random generator.
     """
 
-    metadata: ClassVar[dict[str, Any]] = {"render_modes": ["ansi"], "render_fps": 4}
+    metadata: dict[str, Any] = {"render_modes": ["ansi"], "render_fps": 4}  # noqa: RUF012
 
     def __init__(self, appliance_id: str, render_mode: str | None = None) -> None:
         self.appliance = _appliance(appliance_id)
         self.simulator = Simulator(self.appliance.model)
         self.action_names = self.simulator.actions
-        self.action_space = spaces.Discrete(len(self.action_names))
+        self.action_space = spaces.Discrete(len(self.action_names))  # type: ignore[assignment]
         self.observation_space = spaces.Text(
             max_length=MAX_DISPLAY, min_length=0, charset=_charset(self.appliance)
         )

@@ -24,14 +24,14 @@ from apbot.agent.repair import RepairError, add_indicator, add_setting
 from apbot.agent.session import Executed, Session, summary
 from apbot.model.display import display_value
 from apbot.model.domain import ValueProblem, parse_value
-from apbot.model.schema import DiscreteVariable, NumericVariable, TimeVariable
+from apbot.model.schema import DiscreteVariable, NumericVariable, TimeStyle, TimeVariable
 from apbot.model.values import parse_hms, unit_of
 from apbot.plan.plan import PlannedAction
 
 MAX_WALK = 60  # presses of one key while looking at a new setting
 MAX_KEYS = 6  # keys tried for one setting
 MAX_ADJUSTERS = 4  # keys tried after an entry key
-TIME_STYLES = ("h:mm", "mm:ss", "hh:mm", "hh:mm:ss", "min", "h")
+TIME_STYLES: tuple[TimeStyle, ...] = ("h:mm", "mm:ss", "hh:mm", "hh:mm:ss", "min", "h")
 _NUMBER = re.compile(r"^\s*([-+]?\d+(?:\.\d+)?)\s?(.*?)\s*$")
 _GAP = re.compile(r"\s{2,}")
 
@@ -82,8 +82,9 @@ class VariableFinder:
                 if not entered.feedback.accepted or not _unknown(entered):
                     break
                 found = self._walked(adjuster)
-                walked = found is not None and len(set(found[0])) >= 2
-                if walked and self._learn(name, kind, *found, before, key, adjuster):  # type: ignore[misc]
+                if found is None or len(set(found[0])) < 2:
+                    continue
+                if self._learn(name, kind, found[0], found[1], before, key, adjuster):
                     return True
         return False
 

@@ -225,6 +225,7 @@ class Explorer:
         order = order_from_traces(forward, backward)
         if not [v for v in order.values if not isinstance(v, Dark)]:
             return False
+        new: ApplianceModel | None
         try:
             if isinstance(spec, DiscreteVariable):
                 new, note = self._learn_values(name, effect, order, current)

@@ -348,9 +348,14 @@ class ClosedLoop:
             self.procedures.repair_procedure(executed[first:])
             name = self.session.step_variable(self.session.belief.pointer())
             key = self.explorer.stepping_key(name) if name else None
-            if key is not None and self.session.shown(name) not in (
-                MISSING,
-                self.session.belief.value(name),
+            if (
+                name is not None
+                and key is not None
+                and self.session.shown(name)
+                not in (
+                    MISSING,
+                    self.session.belief.value(name),
+                )
             ):
                 self.explorer.explore(name, key)  # the probe showed a value the belief cannot hold
         else:

@@ -270,9 +270,10 @@ class DisplayReader:
         lamps: dict[str, frozenset[Any]] = {}
         if not partial and not self._dark(screen):
             lit = match.group("_lamps") or ""
-            lamps = self._lamps(lit, screen.variable)
-            if lamps is None:
+            allowed_by_lamps = self._lamps(lit, screen.variable)
+            if allowed_by_lamps is None:
                 return None
+            lamps = allowed_by_lamps
         for name, allowed in lamps.items():  # a value the screen printed wins over its lamp
             if name in values and values[name] not in allowed:
                 return None

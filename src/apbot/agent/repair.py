@@ -292,7 +292,9 @@ def add_setting(
         elif action.endswith("_cw"):
             spec["skill"] = "turn_cw"
         data["actions"][action] = spec
-    steps = [{"actions": [entry], "note": "learnt from feedback"}] if entry else []
+    steps: list[dict[str, Any]] = (
+        [{"actions": [entry], "note": "learnt from feedback"}] if entry else []
+    )
     steps.append(
         {"actions": keys, "variable": name, "effect": effects, "note": "learnt from feedback"}
     )

@@ -26,7 +26,7 @@ def appliance_features(model: ApplianceModel) -> dict[str, bool]:
     ``guards`` counts child-lock and running guards: guards that do not already hold in the
     initial state (a power-off guard does; a lock or a running cycle is switched on later).
     """
-    ranges = []
+    ranges: list[Any] = []
     for var in model.variables.values():
         specs = [var, *list((var.cases or {}).values())]
         ranges.extend(getattr(s, "ranges", None) or [] for s in specs if not isinstance(s, list))

@@ -291,7 +291,9 @@ class _Builder:
                 cw, ccw = self.dial()
                 effects = {cw: "next", ccw: "prev"}
             else:
-                hold = {"skill": "hold", "seconds": 1} if rng.random() < 0.15 else {}
+                hold: dict[str, Any] = (
+                    {"skill": "hold", "seconds": 1} if rng.random() < 0.15 else {}
+                )
                 two = _value_count(var) == 2 and rng.random() < 0.4
                 effects[self.action(**hold)] = (
                     "toggle" if two else rng.choice(["next", "next", "prev", "reset"])
@@ -610,9 +612,9 @@ def random_goal(rng: random.Random, model: ApplianceModel) -> dict[str, Any]:
 
         compiled = compiled_model(model)
         state = random_walk(compiled, rng, rng.randint(3, 30))
-        goal = {n: compiled.value(state, n) for n in names}
-        if all(v is not None for v in goal.values()):
-            return goal
+        walked = {n: compiled.value(state, n) for n in names}
+        if all(v is not None for v in walked.values()):
+            return walked
     names.sort(key=lambda n: model.variables[n].depends_on is not None)  # parents first
     goal: dict[str, Any] = {}
     programme: dict[str, Any] = {}  # the programme each dependent value was drawn for

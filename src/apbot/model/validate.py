@@ -151,10 +151,10 @@ def _references(model: ApplianceModel) -> Iterator[Problem]:
                 ("controls", i, "id"), f"control {control.id!r} is declared twice", "reference"
             )
         seen.add(control.id)
-    for name, action in model.actions.items():
-        for cid in action.control_ids:
+    for name, spec in model.actions.items():
+        for cid in spec.control_ids:
             if cid not in controls:
-                key = "control" if action.control else "controls"
+                key = "control" if spec.control else "controls"
                 yield Problem(
                     ("actions", name, key), _unknown("control", cid, controls), "reference"
                 )
@@ -393,13 +393,13 @@ def _steps(model: ApplianceModel, domains: Mapping[str, list[Domain]]) -> Iterat
                             f"{a!r} types a digit but the action declares no `digit`",
                             "keypad",
                         )
-            for action, effect in value_effects.items():
+            for key, effect in value_effects.items():
                 message = _effect_problem(effect, var, doms)
                 if message:
                     yield Problem(
                         (*path, "effect")
                         if not isinstance(step.effect, dict)
-                        else (*path, "effect", action),
+                        else (*path, "effect", key),
                         message,
                         "action-variable",
                     )
@@ -616,16 +616,12 @@ def _reachability(model: ApplianceModel) -> Iterator[Problem]:
             reached = reachable_indices(compiled, v, case)
             missing = [domain.values[i] for i in range(len(domain)) if i not in reached]
             if missing:
-                where = (
+                parent = compiled.vars[var.parent].domains[0] if var.parent >= 0 else None
+                where: tuple[str | int, ...] = (
                     ("variables", var.name)
-                    if var.parent < 0
-                    else (
-                        "variables",
-                        var.name,
-                        "cases",
-                        compiled.vars[var.parent].domains[0].values[case],
-                    )
-                )  # type: ignore[union-attr]
+                    if parent is None
+                    else ("variables", var.name, "cases", str(parent.values[case]))
+                )
                 shown = ", ".join(str(m) for m in missing[:6])
                 more = f" and {len(missing) - 6} more" if len(missing) > 6 else ""
                 yield Problem(

@@ -256,7 +256,7 @@ class LowerBound:
         self, v: int, goal_value: Any, goal_case: int | None, reset_costs: tuple[int, ...] = ()
     ) -> tuple[int, tuple[tuple[float, ...], ...], float, float]:
         dist, anywhere, jump = _distances(self.compiled, v, goal_value, goal_case, reset_costs)
-        per_case = []
+        per_case: list[tuple[float, ...]] = []
         for case, d in enumerate(self.compiled.vars[v].domains):
             if d is None:
                 per_case.append(())
