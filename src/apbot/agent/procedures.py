@@ -12,7 +12,7 @@ from __future__ import annotations
 from typing import Any
 
 from apbot.agent.guards import GuardLearner
-from apbot.agent.repair import RepairError, insert_step, move_action
+from apbot.agent.repair import RepairError, drop_action, insert_step, move_action
 from apbot.agent.session import MISSING, Executed, Session, Stop
 from apbot.model.schema import GoTo
 
@@ -91,6 +91,8 @@ class ProcedureRepairer:
                     (feature, index + 1),
                 )
                 return
+        if first.unchanged and self._drop_key(first):
+            return
         self.session.forget_pointer()
 
     def move_key(self, done: Executed) -> bool:
@@ -188,6 +190,25 @@ class ProcedureRepairer:
             if (j + 1) % len(values) == i:
                 return "prev"
         return "next"
+
+    def _drop_key(self, failed: Executed) -> bool:
+        """A key ignored where the belief had it as one of a step's keys, and no probe found
+        where it belongs: it is not that step's (its other keys still are), once."""
+        assert failed.pointer is not None
+        feature, index = failed.pointer
+        step = self.session.belief.model.features[feature][index]
+        if len(step.actions) < 2 or failed.action.name not in step.actions:
+            return False
+        if not self.session.budget.once("entry", f"drop:{feature}:{index}:{failed.action.name}"):
+            return False
+        try:
+            new = drop_action(self.session.belief.model, failed.action.name, (feature, index))
+        except RepairError:
+            return False
+        self.session.adopt(
+            new, f"{failed.action.name} does nothing in {feature}", self.session.belief.pointer()
+        )
+        return True
 
     def _entries_elsewhere(self, feature: str, name: str | None) -> dict[str, tuple[str, int]]:
         """Entry keys of the other procedures that adjust ``name`` too, each with the step of

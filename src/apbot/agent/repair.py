@@ -321,3 +321,13 @@ def add_indicator(model: ApplianceModel, name: str) -> ApplianceModel:
     if name not in indicators:
         indicators.append(name)
     return _rebuild(data)
+
+
+def drop_action(model: ApplianceModel, action: str, where: tuple[str, int]) -> ApplianceModel:
+    """Take ``action`` out of one step (it keeps its other keys)."""
+    data = _dump(model)
+    step = data["features"][where[0]][where[1]]
+    step["actions"] = [a for a in step["actions"] if a != action]
+    if isinstance(step.get("effect"), dict):
+        step["effect"].pop(action, None)
+    return _rebuild(data)
