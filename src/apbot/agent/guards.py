@@ -18,10 +18,12 @@ from apbot.agent.session import Executed, Session
 from apbot.model.display import OFF_WORDS
 from apbot.model.schema import DiscreteVariable
 from apbot.plan.plan import Unreachable, plan
-from apbot.sim.compiled import compiled_model
+from apbot.sim.compiled import CompiledModel
 
 ON_WORDS = frozenset({"on", "locked", "lock", "yes", "true", "enabled", "running"})
 MAX_SUSPECTS = 3  # settings tried as the cause of one refusal
+MAX_RELAXATIONS = 12  # guard/key pairs tried when a guard keeps the goal out of reach
+RELAX_BUDGET = 5_000  # search nodes for each of them
 
 
 class GuardLearner:
@@ -197,18 +199,16 @@ class GuardLearner:
                 for a in s.actions
             }
         )
+        tried = 0
         for index, guard in enumerate(model.guards):
             for action in needed:
-                if action in guard.only:
+                if action in guard.only or tried >= MAX_RELAXATIONS:
                     continue
+                tried += 1
                 try:
                     variant = allow(model, index, action)
-                    plan(
-                        compiled_model(variant),
-                        session.belief.state,
-                        target,
-                        session.config.plan_budget,
-                    )
+                    # a small search each: the variant is a guess, and a throwaway compilation
+                    plan(CompiledModel(variant), session.belief.state, target, RELAX_BUDGET)
                 except (RepairError, Unreachable):
                     continue
                 if not session.budget.once("guard", f"relax:{index}:{action}"):
