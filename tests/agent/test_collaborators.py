@@ -131,3 +131,20 @@ def test_the_greedy_executor_decides_every_press_from_the_display() -> None:
     executed = GreedyExecutor(s).execute_greedily(macro)
     assert s.shown("speed") == "high" and len(executed) == 2
     assert s.episode.reasoning_steps == reasoning + 1  # the entry press was planned
+
+
+def test_a_setting_due_on_the_display_but_unreadable_stays_unconfirmed() -> None:
+    # the belief labels the speed "FAN"; the panel says "SPEED": the press is believed, but the
+    # display never confirmed it, so success cannot be claimed on it
+    s = session(
+        fan(),
+        model_from(
+            (FAN % {"speeds": "low, mid, high", "hours": 4, "timer": TIMER_STEPS}).replace(
+                "label: SPEED", "label: FAN"
+            )
+        ),
+    )
+    s.press(s.planned("press_power"))
+    done = s.press(s.planned("press_speed"))
+    assert "speed" in done.surprises and s.belief.value("speed") == "mid"
+    assert s.unconfirmed({"speed", "power"}) == ["speed"]

@@ -239,3 +239,50 @@ def test_a_wrong_keypad_format_is_learnt_not_retried(feedback: FeedbackMode) -> 
     assert reached and episode.claimed_success
     assert episode.repairs == ["cook_time: digits are read as mm:ss (typed 5, shown 00:00:00)"]
     assert episode.reasoning_steps <= 3  # the failing plan is not repeated
+
+
+# --- a programme change that resets a setting, missed by the reader ----------------------------
+
+RESETTING_WASHER = """
+controls: [{id: programme}, {id: temp}, {id: delay}, {id: start}]
+variables:
+  programme: {type: discrete, values: [cottons, synthetics, wool]}
+  temperature:
+    type: numeric
+    unit: "°C"
+    depends_on: programme
+    cases:
+      cottons: {ranges: [[20, 60, 20]]}
+      synthetics: {ranges: [[20, 40, 20]]}
+      wool: {ranges: [[20, 40, 20]]}
+    wrap: true
+    label: TEMP
+  delay: {type: numeric, unit: h, ranges: [[0, 6, 1]], label: DELAY}
+  running: {type: discrete, values: ["off", "on"], show: {"on": "RUN"}}
+actions:
+  turn_programme: {control: programme}
+  press_temp: {control: temp}
+  press_delay: {control: delay}
+  press_start: {control: start}
+features:
+  select_programme:
+    - {actions: [turn_programme], variable: programme, effect: next RESETS}
+  set_temperature:
+    - {actions: [press_temp], variable: temperature, effect: next}
+  set_delay:
+    - {actions: [press_delay], variable: delay, effect: next}
+  start:
+    - {actions: [press_start], variable: running, effect: {to: "on"}}
+"""
+
+
+@pytest.mark.parametrize("feedback", MODES)
+def test_a_missed_programme_reset_does_not_undo_a_setting_made_before_it(
+    feedback: FeedbackMode,
+) -> None:
+    truth = model_from(RESETTING_WASHER.replace("next RESETS", "next, reset: [delay]"))
+    belief = model_from(RESETTING_WASHER.replace(" RESETS", ""))  # the reader missed the reset
+    goal = {"programme": "wool", "delay": 3, "running": "on"}
+    episode, reached, env = run(truth, belief, goal, feedback=feedback)
+    assert reached and episode.claimed_success
+    assert env.steps == len(plan(truth, None, goal))  # the programmes first costs nothing

@@ -162,7 +162,7 @@ class Explorer:
         if seen is None:
             return MISSING
         value = seen.observed(name)
-        if value is MISSING and seen.text.strip() and not seen.showing(name):
+        if value is MISSING and seen.text.strip() and (seen.unknown or not seen.showing(name)):
             return Unread(seen.text)  # text, but not this setting's as the belief prints it
         return value
 

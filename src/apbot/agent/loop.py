@@ -43,6 +43,7 @@ from apbot.model.goal import GoalError
 from apbot.model.schema import DiscreteVariable, GoTo
 from apbot.model.validate import check_goal
 from apbot.plan.plan import MacroAction, Plan, Unreachable, plan
+from apbot.sim.compiled import State
 
 __all__ = ["AgentConfig", "run_agent"]
 
@@ -142,7 +143,7 @@ class ClosedLoop:
                 if unseen:  # believed, but the display last said otherwise: it would be a guess
                     raise Stop(
                         "the belief holds the goal, but the display last showed "
-                        + ", ".join(f"{n}={self.session.evidence.get(n, '?')!r}" for n in unseen)
+                        + ", ".join(f"{n}={self._last_reading(n)}" for n in unseen)
                     )
                 raise Stop("the goal holds", success=True)
             self.pending = list(found.macro_actions)
@@ -152,6 +153,11 @@ class ClosedLoop:
         executed = self.execute(macro)
         if not self.check(macro, executed):
             self.pending.clear()  # the belief changed: plan again from what was observed
+
+    def _last_reading(self, name: str) -> str:
+        if name in self.session.unread:
+            return "(unreadable)"
+        return repr(self.session.evidence.get(name, "?"))
 
     def start_macro(self, macro: MacroAction) -> None:
         self.session.count_reasoning_step()
@@ -296,9 +302,39 @@ class ClosedLoop:
         return False
 
     def _plan(self, target: dict[str, Any]) -> Plan:
-        return plan(
-            self.session.belief.compiled, self.session.belief.state, target, self.config.plan_budget
-        )
+        compiled, state = self.session.belief.compiled, self.session.belief.state
+        found = plan(compiled, state, target, self.config.plan_budget)
+        return self._programmes_first(found, target)
+
+    def _programmes_first(self, found: Plan, target: dict[str, Any]) -> Plan:
+        """Among plans of the same length, the one that selects the programmes first.
+
+        Why: a programme change that resets other settings is what a reader of a manual misses
+        most easily, and nothing on the display shows it happen; a plan that sets a delay and
+        then turns the programme dial succeeds on the belief and fails on the appliance. Setting
+        the programmes first costs nothing when the lengths tie, and is as sound either way.
+        """
+        model = self.session.belief.model
+        parents = {v.depends_on for v in model.variables.values() if v.depends_on} & set(target)
+        macros = found.macro_actions
+        last = max((i for i, m in enumerate(macros) if parents & set(m.expect)), default=0)
+        if not any(set(m.expect) & (set(target) - parents) for m in macros[:last]):
+            return found
+        compiled, budget = self.session.belief.compiled, self.config.plan_budget
+        try:
+            state: State | None = self.session.belief.state
+            head = plan(compiled, state, {n: target[n] for n in parents}, budget)
+            for action in head.actions:
+                assert state is not None
+                state = compiled.apply(state, compiled.action_index[action.name], action.seconds)
+                if state is None:
+                    return found
+            rest = plan(compiled, state, target, budget)
+        except Unreachable:
+            return found
+        if len(head) + len(rest) != len(found):
+            return found
+        return Plan(found.goal, head.macro_actions + rest.macro_actions, found.expanded)
 
     def _plannable(self, target: dict[str, Any]) -> bool:
         try:

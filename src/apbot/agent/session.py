@@ -115,6 +115,7 @@ class Session:
         self.blind: set[str] = set()  # changed while the display was dark, not seen since
         self.guessed_initial: set[str] = set()  # their programmes' start values are guesses
         self.contradicted: dict[str, Any] = {}  # last shown as a value the belief cannot hold
+        self.unread: set[str] = set()  # due on the display, but shown as the belief cannot read
 
     # --- acting ------------------------------------------------------------------------------
 
@@ -174,6 +175,8 @@ class Session:
         if variable and variable in expected.values and variable not in seen.shown():
             # expected on the display, and it is dark (or shows what the belief cannot read)
             surprises[variable] = (predicted, UNREADABLE if seen.unknown else None)
+            if seen.unknown:
+                self.unread.add(variable)
         unchanged = (
             bool(surprises)
             and feedback.text == before_text
@@ -254,6 +257,7 @@ class Session:
         self.evidence.update({name: None for name in seen.absent})
         self.stale -= set(seen.values) | set(seen.outside) | seen.absent
         self.blind -= set(seen.values) | set(seen.outside) | seen.absent
+        self.unread -= set(seen.values) | set(seen.outside) | seen.absent
         self.contradicted.update(seen.outside)
         for name in seen.values:
             self.contradicted.pop(name, None)
@@ -261,7 +265,8 @@ class Session:
     def unconfirmed(self, names: list[str] | set[str]) -> list[str]:
         """The variables whose last reading on the display may not be what the belief holds
         now: it differs, or the belief changed it since (a press, a side effect, a programme
-        that resets it) without the display showing it again. A variable never shown at all
+        that resets it) without the display showing it again, or the display was due to show it
+        and showed what the belief cannot read. A variable never due on the display at all
         rests on the model alone."""
         return sorted(
             n
@@ -271,6 +276,7 @@ class Session:
             )
             or (n in self.stale and n in self.guessed_initial | self.discovered)
             or n in self.blind
+            or n in self.unread
         )
 
     def shown(self, name: str) -> Any:
