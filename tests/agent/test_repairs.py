@@ -130,3 +130,84 @@ def test_a_key_a_guard_is_believed_to_allow_is_struck_from_it() -> None:
     episode, reached = run(truth, belief, goal)
     assert reached and episode.claimed_success
     assert "child lock does not let press_temp work" in episode.repairs
+
+
+OVEN = """
+appliance: {id: oven_unit, category: test}
+controls:
+  - {id: temp_dial, kind: dial}
+  - {id: delay_dial, kind: dial}
+  - {id: timer}
+  - {id: menu}
+  - {id: start}
+variables:
+  temperature: {type: numeric, unit: "°F", ranges: [[150, 450, 50]], initial: 150, label: TEMP}
+  delay: {type: numeric, unit: h, ranges: [[0, 6, 1]], label: DELAY}
+  menu: {type: discrete, values: [bake, broil, toast], label: MENU}
+  running: {type: discrete, values: ["off", "on"], show: {"on": "RUN"}}
+actions:
+  turn_temp_cw: {control: temp_dial, skill: turn_cw}
+  turn_temp_ccw: {control: temp_dial, skill: turn_ccw}
+  turn_delay_cw: {control: delay_dial, skill: turn_cw}
+  press_timer: {control: timer}
+  press_menu: {control: menu}
+  press_start: {control: start}
+features:
+  set_temperature:
+    - actions: [turn_temp_cw, turn_temp_ccw]
+      variable: temperature
+      effect: {turn_temp_cw: next, turn_temp_ccw: prev}
+  delay_start:
+    - {actions: [press_timer]}
+    - {actions: [turn_delay_cw], variable: delay, effect: next}
+  select_menu:
+    - {actions: [press_menu], variable: menu, effect: next}
+  start:
+    - {actions: [press_start], variable: running, effect: {to: "on"}}
+"""
+
+
+def oven(*replacements: tuple[str, str]) -> ApplianceModel:
+    text = OVEN
+    for old, new in replacements:
+        assert old in text, old
+        text = text.replace(old, new)
+    return loads_model(text)
+
+
+def test_a_key_read_backwards_and_its_partner_filed_elsewhere_are_both_put_right() -> None:
+    # the reader took the anticlockwise turn for "up" and filed the clockwise turn under the
+    # delay: at the bottom of the range, the only key of the step stays on 150
+    belief = oven(
+        (
+            "actions: [turn_temp_cw, turn_temp_ccw]\n      variable: temperature\n"
+            "      effect: {turn_temp_cw: next, turn_temp_ccw: prev}",
+            "actions: [turn_temp_ccw]\n      variable: temperature\n"
+            "      effect: {turn_temp_ccw: next}",
+        ),
+        (
+            "{actions: [turn_delay_cw], variable: delay, effect: next}",
+            "{actions: [turn_delay_cw, turn_temp_cw], variable: delay, effect: next}",
+        ),
+    )
+    episode, reached = run(oven(), belief, {"temperature": 300, "running": "on"})
+    assert reached and episode.claimed_success
+    assert any("turn_temp_cw belongs to set_temperature" in r for r in episode.repairs)
+    assert any("turn_temp_ccw goes the other way (prev)" in r for r in episode.repairs)
+
+
+def test_an_entry_key_filed_beside_another_key_of_the_same_effect_is_moved_back() -> None:
+    # the reader put TIMER next to MENU (both "next") and lost the delay's entry step
+    belief = oven(
+        (
+            "    - {actions: [press_timer]}\n    - {actions: [turn_delay_cw]",
+            "    - {actions: [turn_delay_cw]",
+        ),
+        (
+            "{actions: [press_menu], variable: menu, effect: next}",
+            "{actions: [press_menu, press_timer], variable: menu, effect: next}",
+        ),
+    )
+    episode, reached = run(oven(), belief, {"delay": 3, "menu": "broil"})
+    assert reached and episode.claimed_success
+    assert any("delay_start starts with press_timer" in r for r in episode.repairs)

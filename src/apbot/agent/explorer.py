@@ -57,6 +57,8 @@ class Explorer:
     def __init__(self, session: Session, displays: DisplayLearner) -> None:
         self.session = session
         self.displays = displays
+        # the last walk stayed on one value with no other key to try: (setting, step, key)
+        self.stuck: tuple[str, tuple[str, int], PlannedAction] | None = None
 
     def explore(self, name: str, last: Executed, history: list[Any] | None = None) -> None:
         """Explore ``name`` with ``last``'s key (from the step ``last`` left the belief in)."""
@@ -93,8 +95,12 @@ class Explorer:
             v for v in (backward if backward is not None else forward) if not isinstance(v, Dark)
         ]
         current = last_walk[-1] if last_walk else seen[-1]
-        if len(seen) >= 2:
+        self.stuck = None
+        if len(set(map(repr, seen))) >= 2:
             self.learn(name, pointer, key.name, opposite, forward, backward, current)
+        elif opposite is None:  # one value over and over, no other key in the step: at an end,
+            # or not this key's setting at all — nothing to say about the range
+            self.stuck = (name, pointer, key)
         self.session.belief.set_value(name, current)
         for _ in range(unseen):  # presses taken in the dark: the (repaired) model says where to
             self.session.belief.advance(final.name, final.seconds)
@@ -183,15 +189,18 @@ class Explorer:
         """The step's key that walks the other way, if there is one."""
         feature, index = pointer
         effect = self.session.effect(pointer, action)
-        for other in self.session.belief.model.features[feature][index].actions:
-            theirs = self.session.effect(pointer, other)
-            if (
-                other != action
-                and (theirs in ("next", "prev") or isinstance(theirs, Add))
-                and theirs != effect
-            ):
-                return self.session.planned(other)
-        return None
+        stepping = [
+            other
+            for other in self.session.belief.model.features[feature][index].actions
+            if other != action
+            and (
+                (theirs := self.session.effect(pointer, other)) in ("next", "prev")
+                or isinstance(theirs, Add)
+            )
+        ]
+        # a key believed to go the same way may be the one the reader got backwards
+        ordered = sorted(stepping, key=lambda other: self.session.effect(pointer, other) == effect)
+        return self.session.planned(ordered[0]) if ordered else None
 
     def stepping_key(self, name: str) -> Executed | None:
         """The step the belief is in, as an action to explore ``name`` with, if it steps it."""

@@ -159,6 +159,13 @@ class ClosedLoop:
             return "(unreadable)"
         return repr(self.session.evidence.get(name, "?"))
 
+    def explore(self, name: str, last: Executed, history: list[Any] | None = None) -> None:
+        """Walk ``name`` with ``last``'s key; a walk stuck on one value looks for the key
+        that walks it, filed under another procedure."""
+        self.explorer.explore(name, last, history)
+        if self.explorer.stuck is not None:
+            self.procedures.find_sibling(*self.explorer.stuck)
+
     def start_macro(self, macro: MacroAction) -> None:
         self.session.count_reasoning_step()
         self.session.episode.log("macro", macro.feature, expected=dict(macro.expect))
@@ -288,7 +295,7 @@ class ClosedLoop:
                 if not walking:
                     continue
                 self.procedures.enter_step(feature, index)
-                self.explorer.explore(
+                self.explore(
                     name,
                     Executed(
                         self.session.planned(walking[0]),
@@ -377,7 +384,7 @@ class ClosedLoop:
             # the key is the setting's own, and the screen that came up belongs to a setting
             # no step of which has this key: more likely the belief prints the setting wrong
             if self.session.stepping(done.pointer, done.action.name):
-                self.explorer.explore(done.variable, done)
+                self.explore(done.variable, done)
             else:
                 self._learn_display(done.variable, executed[: first + 1])
         elif done.refused or self._wrong_setting(done):
@@ -393,7 +400,7 @@ class ClosedLoop:
                     self.session.belief.value(name),
                 )
             ):
-                self.explorer.explore(name, key)  # the probe showed a value the belief cannot hold
+                self.explore(name, key)  # the probe showed a value the belief cannot hold
         else:
             name = done.variable if done.variable in done.surprises else next(iter(done.surprises))
             predicted, observed = done.surprises[name]
@@ -504,7 +511,7 @@ class ClosedLoop:
             return
         effect = self.session.effect(last.pointer, last.action.name)
         if self.session.stepping(last.pointer, last.action.name):
-            self.explorer.explore(name, last, self.explorer.history(name, last, executed))
+            self.explore(name, last, self.explorer.history(name, last, executed))
         elif isinstance(effect, GoTo) and observed is not None and not unchanged:
             self.explorer.learn_goto(name, last, observed)
         elif effect == "digit" and observed is not None:
@@ -542,7 +549,7 @@ class ClosedLoop:
                 continue
             key = self.explorer.stepping_key(name)
             if key is not None:
-                self.explorer.explore(name, key)
+                self.explore(name, key)
             elif self.session.step_variable(self.session.belief.pointer()) == name:
                 self.session.explored.add(
                     name

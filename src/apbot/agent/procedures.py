@@ -12,9 +12,10 @@ from __future__ import annotations
 from typing import Any
 
 from apbot.agent.guards import GuardLearner
-from apbot.agent.repair import RepairError, drop_action, insert_step, move_action
+from apbot.agent.repair import RepairError, drop_action, insert_step, move_action, set_effects
 from apbot.agent.session import MISSING, Executed, Session, Stop
 from apbot.model.schema import GoTo
+from apbot.plan.plan import PlannedAction
 
 
 class ProcedureRepairer:
@@ -55,7 +56,9 @@ class ProcedureRepairer:
         ]
         alike = self.keys_like(name or feature, exclude=set(step.actions))
         elsewhere = self._entries_elsewhere(feature, name)
-        for candidate in dict.fromkeys(self.orphans() + idle + others + list(elsewhere) + alike):
+        doubles = [a for a in self.doubled_keys() if a not in step.actions]
+        candidates = self.orphans() + idle + others + list(elsewhere) + alike + doubles
+        for candidate in dict.fromkeys(candidates):
             if candidate == first.action.name:
                 continue
             probe = self.session.press(self.session.planned(candidate), exploring=True)
@@ -81,7 +84,13 @@ class ProcedureRepairer:
                 return
             if after.feedback.accepted and shows:
                 try:
-                    new = insert_step(self.session.belief.model, feature, index, [candidate])
+                    new = insert_step(
+                        self.session.belief.model,
+                        feature,
+                        index,
+                        [candidate],
+                        move=candidate in doubles,
+                    )
                 except RepairError as exc:
                     self.session.episode.log("repair", f"could not add a step: {exc}")
                     continue
@@ -137,6 +146,40 @@ class ProcedureRepairer:
         session.adopt(new, f"{done.action.name} belongs to {feature}, not {old}", (feature, index))
         session.reread()
         return True
+
+    def find_sibling(self, name: str, pointer: tuple[str, int], stuck: PlannedAction) -> bool:
+        """A walk under ``stuck`` stayed on one value: it may be at an end of a setting it walks
+        the other way than believed, with the key that walks it back filed under another
+        procedure. Press each key named like the setting that the step lacks, once; the first
+        that moves the setting joins the step as the display showed it, and ``stuck`` is taken
+        to go the opposite way (once per setting)."""
+        session = self.session
+        if not session.budget.once("entry", f"sibling:{name}"):
+            return False
+        feature, index = pointer
+        step = session.belief.model.features[feature][index]
+        for candidate in self.keys_like(name, exclude=set(step.actions)):
+            before = session.belief.value(name)
+            probe = session.press(session.planned(candidate), exploring=True)
+            shown = probe.observed(name)
+            if not probe.feedback.accepted or shown is MISSING or shown == before:
+                continue
+            effect = self._effect_shown(feature, index, before, shown)
+            back = {"next": "prev", "prev": "next"}.get(effect) if isinstance(effect, str) else None
+            try:
+                new = move_action(session.belief.model, candidate, pointer, effect)
+                if back is not None:
+                    new = set_effects(new, feature, index, {stuck.name: back})
+            except RepairError as exc:
+                session.episode.log("repair", f"could not move {candidate}: {exc}")
+                continue
+            note = f"{candidate} belongs to {feature} ({effect})"
+            if back is not None:
+                note += f", and {stuck.name} goes the other way ({back})"
+            session.adopt(new, note, pointer)
+            session.belief.set_value(name, shown)
+            return True
+        return False
 
     def plausibly_moved(self, done: Executed) -> bool:
         """Whether another setting came up and changed as one of its own keys would change it
@@ -223,6 +266,18 @@ class ProcedureRepairer:
                 if step.variable == name:
                     found.setdefault(steps[0].actions[0], (other, index))
         return found
+
+    def doubled_keys(self) -> list[str]:
+        """Keys the belief files beside another key of the same step with the same effect: a
+        second key doing exactly what the first does is more likely one misfiled there."""
+        found = []
+        for feature, steps in self.session.belief.model.features.items():
+            for index, step in enumerate(steps):
+                effects = [(a, self.session.effect((feature, index), a)) for a in step.actions]
+                for i, (action, effect) in enumerate(effects):
+                    if any(effect == other for _, other in effects[:i]):
+                        found.append(action)
+        return [a for a in found if a in self.session.offered]
 
     def keys_like(self, name: str, exclude: set[str]) -> list[str]:
         """Keys of the panel whose names share a word with ``name`` (``press_timer`` for
