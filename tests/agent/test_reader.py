@@ -71,6 +71,16 @@ def test_values_are_read_in_the_variables_own_notation(reader: DisplayReader) ->
     assert focus_readings(reader, "MODE grill", "mode") == [{"mode": "grill"}]
 
 
+def test_a_label_abbreviated_or_spelt_out_on_the_display_is_still_read(
+    reader: DisplayReader,
+) -> None:
+    assert focus_readings(reader, "MOD grill", "mode") == [{"mode": "grill"}]
+    assert focus_readings(reader, "MODES grill", "mode") == [{"mode": "grill"}]
+    spelt = DisplayReader(model_from(OVEN.replace("label: TIME", "label: TIMER")))
+    assert focus_readings(spelt, "TIME 1:35", "cook_time") == [{"cook_time": "01:35:00"}]
+    assert focus_readings(reader, "MO grill", "mode") == []  # two letters say too little
+
+
 def test_a_template_naming_another_variable_reads_both(reader: DisplayReader) -> None:
     assert focus_readings(reader, "190°C 0:45", "temperature") == [
         {"temperature": 190, "cook_time": "00:45:00"}

@@ -417,7 +417,7 @@ class DisplayReader:
             position = match.end()
             name = match.group(1)
             if name == "label":
-                parts.append(_literal(label))
+                parts.append(_label_pattern(label))
                 continue
             if name == "value":
                 if focus is None:
@@ -479,6 +479,16 @@ def _focus_templates(spec: AnyVariable) -> list[tuple[str, Any]]:
     if any(str(v) not in spec.show for v in values) or spec.depends_on is not None:
         found.append((DEFAULT_SHOW, _ABSENT))
     return found
+
+
+def _label_pattern(label: str) -> str:
+    """A setting's label as the display may print it: as written, or shortened or spelt out
+    from its first three letters (``TEMP`` for ``TEMPERATURE``, ``WATER`` for ``WATE``) —
+    displays abbreviate, and manuals copy their labels inexactly."""
+    first = label.split()[0] if label.split() else ""
+    if len(first) < 3 or not first[:3].isalpha():
+        return _literal(label)
+    return rf"(?:{_literal(label)}|{re.escape(first[:3])}[^\W\d_]*)"
 
 
 def _literal(text: str) -> str:
