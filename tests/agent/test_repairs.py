@@ -53,7 +53,7 @@ def test_a_label_copied_wrong_is_learnt_by_walking_the_setting() -> None:
     truth = example("toaster_oven_dial")
     belief = example(
         "toaster_oven_dial",
-        ('    initial: 180\n    label: "TEMP"', '    initial: 180\n    label: "TEMPERATURE"'),
+        ('    initial: 180\n    label: "TEMP"', '    initial: 180\n    label: "HEAT"'),
     )
     goal = {"function": "bake", "temperature": 200}
     episode, reached = run(truth, belief, goal)
