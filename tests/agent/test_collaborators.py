@@ -148,3 +148,13 @@ def test_a_setting_due_on_the_display_but_unreadable_stays_unconfirmed() -> None
     done = s.press(s.planned("press_speed"))
     assert "speed" in done.surprises and s.belief.value("speed") == "mid"
     assert s.unconfirmed({"speed", "power"}) == ["speed"]
+
+
+def test_a_setting_found_on_the_panel_must_fit_the_goal_value() -> None:
+    from apbot.agent.discovery import _fits
+
+    grams = {"type": "numeric", "ranges": [[100, 500, 100]], "unit": "g"}
+    assert _fits(grams, "300 g") and _fits(grams, 700)  # the walk may not have gone so far
+    assert not _fits(grams, "70%")  # a walk of grams is not the power level asked for
+    words = {"type": "discrete", "values": ["white rice", "brown rice"]}
+    assert _fits(words, "Brown Rice") and not _fits(words, "porridge")

@@ -23,7 +23,7 @@ from apbot.agent.reader import DisplayReader
 from apbot.agent.repair import RepairError, add_indicator, add_setting
 from apbot.agent.session import Executed, Session, summary
 from apbot.model.display import display_value
-from apbot.model.domain import ValueProblem, parse_value
+from apbot.model.domain import ValueProblem, normalise, parse_value
 from apbot.model.schema import DiscreteVariable, NumericVariable, TimeStyle, TimeVariable
 from apbot.model.values import parse_hms, unit_of
 from apbot.plan.plan import PlannedAction
@@ -63,7 +63,6 @@ class VariableFinder:
         session = self.session
         if not session.budget.once("discover", f"{name}:{attempt}"):
             return False
-        kind = _kind_of(goal_value)
         keys = self._candidates(name)
         for key in keys[:MAX_KEYS]:
             self.guards.lift_all()
@@ -73,7 +72,7 @@ class VariableFinder:
                 continue
             texts, last = found
             if len(set(texts)) >= 2:
-                if self._learn(name, kind, texts, last, before, None, key):
+                if self._learn(name, goal_value, texts, last, before, None, key):
                     return True
                 continue
             for adjuster in self._adjusters(key)[:MAX_ADJUSTERS]:
@@ -84,7 +83,7 @@ class VariableFinder:
                 found = self._walked(adjuster)
                 if found is None or len(set(found[0])) < 2:
                     continue
-                if self._learn(name, kind, found[0], found[1], before, key, adjuster):
+                if self._learn(name, goal_value, found[0], found[1], before, key, adjuster):
                     return True
         return False
 
@@ -105,17 +104,23 @@ class VariableFinder:
     def _learn(
         self,
         name: str,
-        kind: str,
+        goal_value: Any,
         texts: list[str],
         last: str,
         before: str,
         entry: str | None,
         key: str,
     ) -> bool:
-        """Write the setting a walk of ``key`` (after ``entry``) showed into the belief."""
+        """Write the setting a walk of ``key`` (after ``entry``) showed into the belief — if
+        the goal's value could be one of its values (a walk of grams is not a power level)."""
         session = self.session
-        learnt = infer_setting(name, texts, kind, last)
+        learnt = infer_setting(name, texts, _kind_of(goal_value), last)
         if learnt is None:
+            return False
+        if not _fits(learnt.variable, goal_value):
+            session.episode.log(
+                "explore", f"{name}: {key} shows {learnt.note}, which {goal_value!r} is not"
+            )
             return False
         try:
             new = add_setting(
@@ -334,6 +339,24 @@ def _discrete_setting(distinct: Sequence[str]) -> tuple[dict[str, Any], list[Any
     if any(not v for v in values) or len(set(values)) != len(values):
         return None
     return {"type": "discrete", "values": values}, values, prefix + "{value}" + suffix
+
+
+def _fits(variable: dict[str, Any], goal_value: Any) -> bool:
+    """Whether ``goal_value`` reads as a value of the setting a walk found: in its unit for a
+    number or time (the range may be longer than the walk went), among its words if a word."""
+    spec: DiscreteVariable | NumericVariable | TimeVariable
+    try:
+        kind = variable["type"]
+        body = {k: v for k, v in variable.items() if k not in ("initial", "wrap")}
+        if kind == "discrete":
+            spec = DiscreteVariable.model_validate(body)
+            normalise(spec, goal_value)  # one of its words, however written
+        else:
+            spec = (NumericVariable if kind == "numeric" else TimeVariable).model_validate(body)
+            parse_value(spec, goal_value)
+    except (ValueProblem, ValueError):
+        return False
+    return True
 
 
 def _kind_of(goal_value: Any) -> str:
