@@ -211,3 +211,14 @@ def test_an_entry_key_filed_beside_another_key_of_the_same_effect_is_moved_back(
     episode, reached = run(oven(), belief, {"delay": 3, "menu": "broil"})
     assert reached and episode.claimed_success
     assert any("delay_start starts with press_timer" in r for r in episode.repairs)
+
+
+def test_a_missing_setting_whose_keys_each_select_a_value_is_found() -> None:
+    from apbot.bench.faults import inject_faults
+
+    truth = suite_model("rice_cooker_5")
+    belief, faults = inject_faults(truth, 0.3, seed="1", kinds=["missing_variable"])
+    assert [f.kind for f in faults] == ["missing_variable"] and "mode" not in belief.variables
+    episode, reached = run(truth, belief, {"mode": "porridge", "running": "on"})
+    assert reached and episode.claimed_success
+    assert any(r.startswith("mode: each of press_white_rice") for r in episode.repairs)

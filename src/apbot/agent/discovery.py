@@ -20,7 +20,7 @@ from typing import Any
 from apbot.agent.guards import GuardLearner
 from apbot.agent.infer import infer_template, ranges_from_values
 from apbot.agent.reader import DisplayReader
-from apbot.agent.repair import RepairError, add_indicator, add_setting
+from apbot.agent.repair import RepairError, add_choice_setting, add_indicator, add_setting
 from apbot.agent.session import Executed, Session, summary
 from apbot.model.display import display_value
 from apbot.model.domain import ValueProblem, normalise, parse_value
@@ -64,6 +64,8 @@ class VariableFinder:
         if not session.budget.once("discover", f"{name}:{attempt}"):
             return False
         keys = self._candidates(name)
+        single: dict[str, str] = {}  # keys that showed one text, again and again
+        before = session.last.text
         for key in keys[:MAX_KEYS]:
             self.guards.lift_all()
             before = session.last.text
@@ -75,6 +77,10 @@ class VariableFinder:
                 if self._learn(name, goal_value, texts, last, before, None, key):
                     return True
                 continue
+            single[key] = texts[0]
+        if self._learn_choice(name, goal_value, single, before):
+            return True
+        for key in single:
             for adjuster in self._adjusters(key)[:MAX_ADJUSTERS]:
                 self.guards.lift_all()
                 entered = session.press(_planned(key), exploring=True)
@@ -144,6 +150,41 @@ class VariableFinder:
             session.guessed_initial.add(name)
         session.belief.set_value(name, learnt.current)
         session.evidence[name] = learnt.current  # the walk showed it
+        session.reread()
+        return True
+
+    def _learn_choice(
+        self, name: str, goal_value: Any, single: dict[str, str], before: str
+    ) -> bool:
+        """Keys that each showed one text of their own, varying in one place (``white rice``,
+        ``brown rice``): one setting, each key selecting the value it showed."""
+        session = self.session
+        if len(single) < 2 or len(set(single.values())) < len(single):
+            return False
+        learnt = infer_setting(name, list(single.values()), "discrete")
+        if learnt is None or not _fits(learnt.variable, goal_value):
+            return False
+        values = learnt.variable.get("values") or []
+        if len(values) != len(single):
+            return False
+        learnt.variable.pop("wrap", None)
+        try:
+            new = add_choice_setting(
+                session.belief.model, name, learnt.variable, dict(zip(single, values, strict=True))
+            )
+        except RepairError as exc:
+            session.episode.log("repair", f"could not add {name}: {exc}")
+            return False
+        new = self._as_lamp(new, name, before)
+        current = values[-1]
+        session.adopt(
+            new,
+            f"{name}: each of {', '.join(single)} selects one ({learnt.note})",
+            (f"set_{name}", 0),
+        )
+        session.discovered.add(name)
+        session.belief.set_value(name, current)
+        session.stale.add(name)  # other keys may have been walked since: see it again
         session.reread()
         return True
 

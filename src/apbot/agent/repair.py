@@ -264,6 +264,30 @@ def add_setting(
     programme, this one is taken to depend on it too (each programme starting from what was
     seen): a programme change then resets it in the belief as it may on the appliance, and the
     planner sets it after the programme."""
+    effects: dict[str, Any] = {key: effect}
+    if opposite:
+        effects[opposite] = "prev" if effect == "next" else "next"
+    return _with_setting(model, name, variable, effects, entry)
+
+
+def add_choice_setting(
+    model: ApplianceModel, name: str, variable: dict[str, Any], keys: dict[str, Any]
+) -> ApplianceModel:
+    """A setting the model lacked whose keys each select one value (WHITE RICE, BROWN RICE…):
+    its variable, the keys, and a one-step procedure ``set_NAME`` where each key sets its value
+    (depending on a programme as :func:`add_setting` says)."""
+    return _with_setting(
+        model, name, variable, {action: {"to": value} for action, value in keys.items()}, None
+    )
+
+
+def _with_setting(
+    model: ApplianceModel,
+    name: str,
+    variable: dict[str, Any],
+    effects: dict[str, Any],
+    entry: str | None,
+) -> ApplianceModel:
     data = _dump(model)
     parents = [v.depends_on for v in model.variables.values() if v.depends_on is not None]
     if parents:  # the programme other settings depend on most likely resets this one too
@@ -272,34 +296,39 @@ def add_setting(
         variable["depends_on"] = parent
         variable["cases"] = {str(value): dict(own) for value in all_values(model.variables[parent])}
     data["variables"][name] = variable
-    keys = [key] + ([opposite] if opposite else [])
     known = set(data["actions"])
-    effects = {key: effect}
-    if opposite:
-        effects[opposite] = "prev" if effect == "next" else "next"
-    for action in keys + ([entry] if entry else []):
-        if action in known:
-            continue
-        control = _control_id(action)
-        if not any(c["id"] == control for c in data["controls"]):
-            turning = action.endswith(("_cw", "_ccw"))
-            data["controls"].append({"id": control, "kind": "dial" if turning else "button"})
-        spec: dict[str, Any] = {"control": control}
-        if action.startswith("hold"):
-            spec.update(skill="hold", seconds=3)
-        elif action.endswith("_ccw"):
-            spec["skill"] = "turn_ccw"
-        elif action.endswith("_cw"):
-            spec["skill"] = "turn_cw"
-        data["actions"][action] = spec
+    for action in [*effects, *([entry] if entry else [])]:
+        if action not in known:
+            _add_action(data, action)
     steps: list[dict[str, Any]] = (
         [{"actions": [entry], "note": "learnt from feedback"}] if entry else []
     )
     steps.append(
-        {"actions": keys, "variable": name, "effect": effects, "note": "learnt from feedback"}
+        {
+            "actions": list(effects),
+            "variable": name,
+            "effect": effects,
+            "note": "learnt from feedback",
+        }
     )
     data["features"][f"set_{name}"] = steps
     return _rebuild(data)
+
+
+def _add_action(data: dict[str, Any], action: str) -> None:
+    """An action the model did not know, on a control named after it."""
+    control = _control_id(action)
+    if not any(c["id"] == control for c in data["controls"]):
+        turning = action.endswith(("_cw", "_ccw"))
+        data["controls"].append({"id": control, "kind": "dial" if turning else "button"})
+    spec: dict[str, Any] = {"control": control}
+    if action.startswith("hold"):
+        spec.update(skill="hold", seconds=3)
+    elif action.endswith("_ccw"):
+        spec["skill"] = "turn_ccw"
+    elif action.endswith("_cw"):
+        spec["skill"] = "turn_cw"
+    data["actions"][action] = spec
 
 
 def _control_id(action: str) -> str:
