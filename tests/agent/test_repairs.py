@@ -222,3 +222,14 @@ def test_a_missing_setting_whose_keys_each_select_a_value_is_found() -> None:
     episode, reached = run(truth, belief, {"mode": "porridge", "running": "on"})
     assert reached and episode.claimed_success
     assert any(r.startswith("mode: each of press_white_rice") for r in episode.repairs)
+
+
+def test_a_missing_setting_behind_a_panel_asleep_without_a_guard_is_found() -> None:
+    from apbot.bench.faults import inject_faults
+
+    truth = suite_model("kettle_2")
+    belief, _ = inject_faults(truth, 0.3, seed="1", kinds=["missing_variable", "guard"])
+    assert "temperature" not in belief.variables and len(belief.guards) < len(truth.guards)
+    episode, reached = run(truth, belief, {"temperature": 96, "heating": "on"})
+    assert reached and episode.claimed_success
+    assert any(r.startswith("temperature: found under") for r in episode.repairs)

@@ -237,6 +237,8 @@ class VariableFinder:
         for _ in range(MAX_WALK):
             done: Executed = session.press(action, exploring=True)
             text = _main(done.feedback.text, session.perceiver.reader.lamp_texts())
+            if not texts and not done.feedback.text.strip() and self.guards.learn(done):
+                continue  # a dark panel the belief had no guard for (asleep): now lit
             if not done.feedback.accepted or not text or not _unknown(done):
                 break  # refused, dark, or a screen the belief knows: not the missing setting
             if text in texts:
