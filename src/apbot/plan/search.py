@@ -48,6 +48,7 @@ class Visit:
 
     step: int
     actions: tuple[int, ...]
+    free: bool = False  # one action that does not move through the pointer (anywhere, wait)
 
 
 @dataclass(frozen=True)
@@ -93,6 +94,9 @@ class TaskSearch:
         self._visit_cache: dict[Hashable, list[tuple[tuple[int, ...], str, tuple[int, ...]]]] = {}
         self._footprints: dict[int, tuple[tuple[int, ...], tuple[int, ...]]] = {}
         self._keypad_targets: dict[int, list[float]] = {}
+        # nodes reached by an anywhere key or a wait: the pointer stayed, so the step it is on
+        # may be continued (a visit there is not maximal any more)
+        self._continuable: set[Hashable] = set()
 
     def key(self, state: State) -> Hashable:
         buffer = state.buffer if state.step >= 0 and self.keypad_step[state.step] else ""
@@ -123,7 +127,9 @@ class TaskSearch:
             if expanded > self.budget:
                 raise SearchExhausted("budget", expanded, True)
             in_the_dark = bool(compiled.guards) and compiled.hiding_guard(state) is not None
-            for after, actions in self._edges(state, node == start_key):
+            for after, actions, free in self._edges(
+                state, node == start_key or node in self._continuable
+            ):
                 # presses first; among plans of equal length, fewer presses with a dark display
                 new_cost = cost + len(actions) * PRESS + (len(actions) if in_the_dark else 0)
                 k = self.key(after)
@@ -134,7 +140,9 @@ class TaskSearch:
                     continue
                 best[k] = new_cost
                 states[k] = after
-                came_from[k] = (node, Visit(after.step, actions))
+                came_from[k] = (node, Visit(after.step, actions, free))
+                if free:
+                    self._continuable.add(k)
                 heapq.heappush(frontier, (new_cost + h * PRESS, -new_cost, next(tie), k))
         raise SearchExhausted("exhausted", expanded, False)
 
@@ -150,19 +158,25 @@ class TaskSearch:
             link = came_from[previous]
         return tuple(reversed(visits))
 
-    def _edges(self, state: State, is_start: bool) -> list[Exit]:
+    def _edges(self, state: State, may_continue: bool) -> list[tuple[State, tuple[int, ...], bool]]:
+        """Visits to every step one action reaches (the current step only when ``may_continue``),
+        then each action that acts without the pointer table (anywhere keys, waits) alone."""
         compiled = self.compiled
         row = compiled.targets[state.step + 1]
         by_step: dict[int, list[int]] = {}
         for action, target in enumerate(row):
-            if target < 0 or (target == state.step and not is_start):
+            if target < 0 or (target == state.step and not may_continue):
                 continue
             if compiled.refusal(state, action) is not None:
                 continue
             by_step.setdefault(target, []).append(action)
-        edges: list[Exit] = []
+        edges: list[tuple[State, tuple[int, ...], bool]] = []
         for step, entry in by_step.items():
-            edges.extend(self._visit(state, step, entry))
+            edges.extend((after, path, False) for after, path in self._visit(state, step, entry))
+        for action in compiled.free_actions:
+            after = compiled.apply(state, action)
+            if after is not None and after != state:
+                edges.append((after, (action,), True))
         return edges
 
     def _visit(self, state: State, step: int, entry: list[int]) -> list[Exit]:
