@@ -496,15 +496,18 @@ class CompiledModel:
                         break
                 else:
                     return None
+        needed = self.hold_seconds[action]
+        short = needed is not None and seconds is not None and seconds + 1e-9 < needed
         anywhere = self.anywhere.get(action)
         if anywhere is not None:
+            if short:
+                return None  # an anywhere hold has no procedure to enter when released early
             target = -1 if anywhere.leave else state.step
             return self._effects(state, anywhere, action, target, "", anywhere.effects[action][0])
         target = self.targets[state.step + 1][action]
         if target < 0:
             return None
-        needed = self.hold_seconds[action]
-        if needed is not None and seconds is not None and seconds + 1e-9 < needed:
+        if short:
             if action not in self.short_enters:
                 return None
             # released early: the procedure moves as usual, the change does not happen
