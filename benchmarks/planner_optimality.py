@@ -23,7 +23,6 @@ from __future__ import annotations
 import argparse
 import random
 import time
-
 from collections import Counter
 
 from apbot.model.generate import FORMAT_PARTS, format_parts, random_goal, random_model
