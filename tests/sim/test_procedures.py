@@ -174,3 +174,11 @@ def test_apbot_with_the_true_model_solves_tasks_from_the_display(
     assert env.simulator.satisfies(parse_goal(oven, goal)), episode.trace
     assert episode.claimed_success and not episode.repairs
     assert env.steps == len(plan(oven, None, goal))
+
+
+def test_suite_stats_count_each_construct(oven: ApplianceModel) -> None:
+    from apbot.bench.stats import CONSTRUCTS, appliance_constructs
+    from apbot.examples import load_example
+
+    assert appliance_constructs(oven) == dict.fromkeys(CONSTRUCTS, True)
+    assert not any(appliance_constructs(load_example("microwave_keypad")).values())
