@@ -124,3 +124,12 @@ def test_a_cancel_that_only_leaves_is_fine() -> None:
 def test_a_guard_lifted_by_an_anywhere_key_can_be_lifted() -> None:
     text = BASE + '\nguards: [{when: {running: "on"}, only: [press_start], display: RUN}]\n'
     assert found(text) == []
+
+
+def test_an_early_release_on_an_anywhere_hold_is_a_warning() -> None:
+    text = BASE.replace(
+        "press_start: {control: b4}",
+        "press_start: {control: b4, skill: hold, seconds: 2, too_short: enters}",
+    )
+    assert found(text) == []
+    assert [f[:2] for f in found(text, "warning")] == [("anywhere", "anywhere[0].actions[0]")]

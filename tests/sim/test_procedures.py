@@ -13,7 +13,7 @@ from apbot.agent.environment import SimulatorEnvironment
 from apbot.agent.episode import TaskContext
 from apbot.agent.registry import get_method
 from apbot.model.goal import parse_goal
-from apbot.model.load import load_model
+from apbot.model.load import load_model, loads_model
 from apbot.model.schema import ApplianceModel
 from apbot.plan.bfs import bound_violations, distances_to_goal, planner_mismatches
 from apbot.plan.plan import plan
@@ -182,3 +182,62 @@ def test_suite_stats_count_each_construct(oven: ApplianceModel) -> None:
 
     assert appliance_constructs(oven) == dict.fromkeys(CONSTRUCTS, True)
     assert not any(appliance_constructs(load_example("microwave_keypad")).values())
+
+
+TYPED = """
+appliance: {id: typed, category: microwave}
+controls:
+  - {id: cook_button, label: TIME COOK}
+  - {id: start_button, label: START}
+  - {id: key_0, kind: key, label: "0"}
+  - {id: key_1, kind: key, label: "1"}
+  - {id: key_5, kind: key, label: "5"}
+  - {id: key_8, kind: key, label: "8"}
+variables:
+  cook_time:
+    type: time
+    ranges: [["00:00:00", "01:00:00", 10]]
+    format: "mm:ss"
+    entry: {format: hh:mm:ss, shows: typed}
+  running: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "RUN"}}
+actions:
+  press_cook: {control: cook_button}
+  press_start: {control: start_button}
+  press_0: {control: key_0, digit: 0}
+  press_1: {control: key_1, digit: 1}
+  press_5: {control: key_5, digit: 5}
+  press_8: {control: key_8, digit: 8}
+features:
+  cook:
+    - {actions: [press_cook]}
+    - {actions: [press_0, press_1, press_5, press_8], variable: cook_time}
+anywhere:
+  - {actions: [press_start], variable: running, effect: {to: "on"}}
+display: {idle: "{cook_time}", indicators: [running]}
+"""
+
+
+def test_digits_shown_as_typed_until_the_typing_ends() -> None:
+    sim = Simulator(loads_model(TYPED))
+    shown = [sim.step(a).text for a in ("press_cook", "press_8", "press_0", "press_0")]
+    assert shown == [
+        "COOK TIME 00:00",
+        "COOK TIME 00:00:08",
+        "COOK TIME 00:00:80",
+        "COOK TIME 00:08:00",
+    ]
+    assert sim.step("press_start").text == "COOK TIME 08:00  RUN"  # the value, in its format
+
+
+@pytest.mark.parametrize(
+    "goal", [{"cook_time": "00:08:00", "running": "on"}, {"cook_time": "00:15:10"}]
+)
+def test_apbot_reads_digits_shown_as_typed_without_repairs(goal: dict[str, str]) -> None:
+    model = loads_model(TYPED)
+    env = SimulatorEnvironment(model, feedback="display")
+    context = TaskContext(
+        "typed", "microwave", "t01", "a task", goal, model, actions=tuple(env.actions)
+    )
+    episode = get_method("apbot").run(context, env)
+    assert env.simulator.satisfies(parse_goal(model, goal)) and episode.claimed_success
+    assert not episode.repairs and env.steps == len(plan(model, None, goal))

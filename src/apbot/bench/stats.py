@@ -56,22 +56,22 @@ CONSTRUCTS = {
     "early_release_enters": "holds entering when released early (too_short)",
     "timeouts": "step timeouts let expire by a wait (timeout, wait)",
     "keypad_other_keys_clear": "keypads whose other keys clear (other_keys)",
+    "keypad_shows_typed": "keypads showing digits as typed (shows: typed)",
 }
 
 
 def appliance_constructs(model: ApplianceModel) -> dict[str, bool]:
     """Which procedure-structure constructs (:data:`CONSTRUCTS`) an appliance uses."""
     steps = [step for steps in model.features.values() for step in steps]
+    entries = [e for v in model.variables.values() if (e := getattr(v, "entry", None)) is not None]
     return {
         "optional_steps": any(step.optional for step in steps),
         "anywhere_keys": bool(model.anywhere),
         "leave_keys": any(entry.leave for entry in model.anywhere),
         "early_release_enters": any(a.too_short == "enters" for a in model.actions.values()),
         "timeouts": any(step.timeout is not None for step in steps),
-        "keypad_other_keys_clear": any(
-            getattr(var, "entry", None) is not None and var.entry.other_keys == "clear"  # type: ignore[union-attr]
-            for var in model.variables.values()
-        ),
+        "keypad_other_keys_clear": any(e.other_keys == "clear" for e in entries),
+        "keypad_shows_typed": any(e.shows == "typed" for e in entries),
     }
 
 

@@ -33,6 +33,7 @@ FORMAT_PARTS = (
     "short hold enters",
     "timeout",
     "keypad other keys clear",
+    "keypad shows typed",
     "clamp",
     "confirm step",
     "cycling programme key",
@@ -532,6 +533,8 @@ def _plain_variable(rng: random.Random) -> dict[str, Any]:
         entry = {"format": fmt, "max_digits": digits, "overflow": overflow}
         if rng.random() < 0.4:
             entry["other_keys"] = "clear"
+        if rng.random() < 0.4:
+            entry["shows"] = "typed"
         return {"type": "time", "ranges": ranges, "entry": entry}
     top, step = rng.choice([(9, 1), (12, 3), (20, 5), (120, 30)])
     return {
@@ -542,6 +545,7 @@ def _plain_variable(rng: random.Random) -> dict[str, Any]:
             "max_digits": rng.choice([2, 2, 3]),
             "overflow": rng.choice(["shift", "ignore"]),
             "other_keys": rng.choice(["keep", "keep", "clear"]),
+            "shows": rng.choice(["value", "value", "typed"]),
         },
     }
 
@@ -634,6 +638,8 @@ def format_parts(model: ApplianceModel) -> set[str]:
     for var in model.variables.values():
         if getattr(var, "entry", None) is not None and var.entry.other_keys == "clear":  # type: ignore[union-attr]
             parts.add("keypad other keys clear")
+        if getattr(var, "entry", None) is not None and var.entry.shows == "typed":  # type: ignore[union-attr]
+            parts.add("keypad shows typed")
     for steps in model.features.values():
         for index, step in enumerate(steps):
             if step.optional:

@@ -124,12 +124,15 @@ class Entry(_Strict):
     ``01:30``. ``overflow`` says what happens once ``max_digits`` are typed: ``shift`` drops
     the oldest digit, ``ignore`` drops the new one. ``other_keys: clear`` empties the buffer
     when a non-digit key of the typing step is pressed (the value stays as typed).
+    ``shows: typed`` makes the display show the digits as typed, in the entry format, while
+    the buffer holds any (``00:00:80`` on the way to ``00:08:00``), instead of the value.
     """
 
     format: EntryFormat
     max_digits: int | None = Field(default=None, ge=1, le=8)
     overflow: Literal["shift", "ignore"] = "shift"
     other_keys: Literal["keep", "clear"] = "keep"
+    shows: Literal["value", "typed"] = "value"
 
     def digits(self) -> int:
         """The buffer length: declared, or the format's natural width."""

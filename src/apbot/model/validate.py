@@ -547,6 +547,15 @@ def _anywhere(model: ApplianceModel, domains: Mapping[str, list[Domain]]) -> Ite
                     f"{action!r} is already in anywhere[{seen[action]}]; list each key once",
                     "duplicate-sequence",
                 )
+            spec = model.actions.get(action)
+            if spec is not None and spec.too_short == "enters":
+                yield Problem(
+                    (*path, "actions", a),
+                    f"{action!r} acts from anywhere, so a hold released early has no "
+                    "procedure to enter and is ignored; drop `too_short` from the action",
+                    "anywhere",
+                    severity="warning",
+                )
             seen.setdefault(action, i)
         effects = _effects_of(entry, model)
         value_effects = {a: e for a, e in effects.items() if e != "none"}
