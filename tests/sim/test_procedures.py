@@ -241,3 +241,36 @@ def test_apbot_reads_digits_shown_as_typed_without_repairs(goal: dict[str, str])
     episode = get_method("apbot").run(context, env)
     assert env.simulator.satisfies(parse_goal(model, goal)) and episode.claimed_success
     assert not episode.repairs and env.steps == len(plan(model, None, goal))
+
+
+KEY_OF_TWO_PROCEDURES = """
+appliance: {id: two_meanings, category: oven}
+controls: [{id: mode_button, label: MODE}, {id: up_button, label: UP}]
+variables:
+  temp: {type: numeric, ranges: [[0, 3, 1]], wrap: true}
+  volume: {type: numeric, ranges: [[0, 3, 1]], wrap: true}
+actions:
+  press_mode: {control: mode_button}
+  press_up: {control: up_button}
+  wait_5s: {skill: wait, seconds: 5}
+features:
+  set_temp:
+    - {actions: [press_mode], timeout: 5}
+    - {actions: [press_up], variable: temp, timeout: 5}
+  set_volume:
+    - {actions: [press_up], variable: volume}
+"""
+
+
+def test_the_planner_waits_when_only_a_timeout_leads_on() -> None:
+    model = loads_model(KEY_OF_TWO_PROCEDURES)
+    compiled = compiled_model(model)
+    inside = compiled.apply(compiled.apply(compiled.initial_state(), 0), 1)  # in set_temp
+    assert inside is not None and inside.step == 1
+    found = plan(compiled, inside, {"volume": "2"})
+    assert [a.name for a in found.actions] == ["wait_5s", "press_up", "press_up"]
+    assert [m.feature for m in found.macro_actions] == ["wait", "set_volume"]
+    canonical = parse_goal(model, {"volume": "2"})
+    states, distance = distances_to_goal(compiled, canonical)
+    assert distance[inside] == 3
+    assert planner_mismatches(compiled, canonical, states, distance) == []

@@ -248,6 +248,33 @@ class _Builder:
             for step in steps:
                 if rng.random() < 0.4:
                     step["timeout"] = rng.choice([seconds, seconds, 10])
+        self._add_idle_meaning(seconds)
+
+    def _add_idle_meaning(self, seconds: int) -> None:
+        """Sometimes a key of a procedure's later step also starts a procedure of its own from
+        no feature (UP sets the timer inside TIMER, the volume from the clock): inside the
+        first procedure, only its timeout leads to the second."""
+        rng = self.rng
+        firsts = {a for steps in self.features.values() for a in steps[0]["actions"]}
+        plain = [
+            v
+            for v in self.settings
+            if "depends_on" not in self.variables[v] and "entry" not in self.variables[v]
+        ]
+        hosts = [steps for steps in self.features.values() if len(steps) >= 2]
+        if not plain or not hosts or rng.random() < 0.5:
+            return
+        steps = rng.choice(hosts)
+        keys = [
+            a for a in steps[1]["actions"] if a not in firsts and "digit" not in self.actions[a]
+        ]
+        if not keys:
+            return
+        for step in steps:
+            step["timeout"] = seconds
+        self.feature(
+            [{"actions": [rng.choice(keys)], "variable": rng.choice(plain), "effect": "next"}]
+        )
 
     def _add_power(self) -> None:
         """A power key guarding everything else; switching off may forget settings later."""
