@@ -3,8 +3,10 @@
 Search nodes are states projected onto the *relevant* variables — the goal's, those guards read
 (power, lock, running) and the programmes that goal settings depend on — plus the feature
 pointer. Nothing else influences how those variables evolve, so the projection loses nothing.
-Edges are visits (``apbot.plan.visits``); their cost is the number of physical actions
-(ties broken towards presses made while the display is lit).
+Edges are visits (``apbot.plan.visits``) and single actions that bypass the pointer (a key
+from ``anywhere``, a wait letting a timeout expire); after those the step the pointer stayed on
+may be continued. An edge costs its number of physical actions (ties broken towards presses
+made while the display is lit).
 The heuristic (``apbot.plan.bounds``) is admissible and consistent, so the first goal node
 popped is optimal: the order of macro actions (power before settings, programme before its
 settings, start last) falls out of the search instead of being hard-coded.

@@ -10,7 +10,10 @@ Feature pointer (kept from the paper)
     belongs to the next step of the same feature advances to it; otherwise the action enters
     the first feature (in declaration order) whose first step contains it. An action that fits
     none of these is refused. The keypad buffer empties whenever the pointer moves to another
-    step, so a digit typed for the timer never leaks into the clock.
+    step, so a digit typed for the timer never leaks into the clock. Past an ``optional``
+    next step, the step after it is accepted too. Keys listed under ``anywhere`` bypass the
+    pointer (it stays, or with ``leave`` returns to no feature; the buffer empties), and a
+    ``wait`` at least as long as the current step's ``timeout`` returns it to no feature.
 
 Effects
     The action that enters a step applies the step's effect too, unless the step says
