@@ -14,6 +14,8 @@ goal states give the true distance from every reachable state. Then
   0 on goal states.
 
 A case whose state space does not fit the BFS budget is counted, never silently dropped.
+``--parts`` also prints, for every part of the format (``apbot.model.generate.FORMAT_PARTS``),
+how many compared cases used it and how many of those had a mismatch.
 """
 
 from __future__ import annotations
@@ -21,8 +23,9 @@ from __future__ import annotations
 import argparse
 import random
 import time
+from collections import Counter
 
-from apbot.model.generate import random_goal, random_model
+from apbot.model.generate import FORMAT_PARTS, format_parts, random_goal, random_model
 from apbot.model.goal import parse_goal
 from apbot.plan.bfs import (
     BfsBudgetExceeded,
@@ -39,7 +42,10 @@ def main() -> None:
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--max-states", type=int, default=30_000)
     parser.add_argument("--starts", type=int, default=20, help="0: every reachable state")
+    parser.add_argument("--parts", action="store_true", help="cases and mismatches per part")
     args = parser.parse_args()
+    part_cases: Counter[str] = Counter()
+    part_wrong: Counter[str] = Counter()
     cases = too_large = starts_compared = states_checked = 0
     wrong_cases = unsound_cases = wrong_plans = unsound_states = unreachable = 0
     lengths: list[int] = []
@@ -55,6 +61,8 @@ def main() -> None:
             too_large += 1
             continue
         cases += 1
+        parts = format_parts(model)
+        part_cases.update(parts)
         picker = random.Random(f"{seed}/starts")
         starts = states if args.starts == 0 or args.starts >= len(states) else None
         if starts is None:
@@ -65,6 +73,8 @@ def main() -> None:
         states_checked += len(states)
         unreachable += sum(start not in distance for start in starts)
         lengths.extend(distance[start] for start in starts if start in distance)
+        if wrong or unsound:
+            part_wrong.update(parts)
         if wrong:
             wrong_cases += 1
             wrong_plans += len(wrong)
@@ -94,6 +104,9 @@ def main() -> None:
         f"{unsound_states} where the bound is above the distance (or not 0 at a goal) "
         f"in {unsound_cases} cases; {seconds:.1f} s"
     )
+    if args.parts:
+        for part in FORMAT_PARTS:
+            print(f"  {part}: {part_cases[part]} cases, {part_wrong[part]} with a mismatch")
 
 
 if __name__ == "__main__":

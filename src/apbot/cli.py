@@ -420,7 +420,7 @@ def suite_stats(
     as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False,
 ) -> None:
     """Per category: appliances, tasks, goal variables per task, and model features used."""
-    from apbot.bench.stats import FEATURES, suite_statistics
+    from apbot.bench.stats import CONSTRUCTS, FEATURES, suite_statistics
 
     stats = suite_statistics(_suite())
     if as_json:
@@ -459,6 +459,12 @@ def suite_stats(
         *(f"[bold]{stats['features'][f]}[/bold]" for f in FEATURES),
     )
     console.print(table)
+    constructs = Table(title="procedure constructs", box=box.SIMPLE_HEAD, padding=(0, 1, 0, 0))
+    constructs.add_column("construct", no_wrap=True)
+    constructs.add_column("appliances", justify="right")
+    for key, label in CONSTRUCTS.items():
+        constructs.add_row(label, str(stats["constructs"][key]))
+    console.print(constructs)
 
 
 @suite_app.command("check")

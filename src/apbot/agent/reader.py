@@ -265,7 +265,7 @@ class DisplayReader:
                 values[name] = value
             elif kind == "outside":
                 outside[name] = value
-            else:
+            elif kind == "absent":
                 absent.add(name)
         lamps: dict[str, frozenset[Any]] = {}
         if not partial and not self._dark(screen):
@@ -280,7 +280,8 @@ class DisplayReader:
         return Hypothesis(screen, values, outside, frozenset(absent), lamps, partial)
 
     def _interpret(self, name: str, raw: str, known: Mapping[str, Any]) -> tuple[str, Any] | None:
-        """A captured field as ("value", v), ("outside", v), ("absent", None), or None."""
+        """A captured field as ("value", v), ("outside", v), ("absent", None), ("typing",
+        None) for digits shown as typed that are no value of the domain, or None."""
         spec = self._specs[name]
         text = raw.strip()
         if text == ABSENT_TEXT:
@@ -291,6 +292,9 @@ class DisplayReader:
                 return "value", normalise(spec, text, domain)
             except ValueProblem:
                 pass
+        entry = getattr(spec, "entry", None)
+        if entry is not None and entry.shows == "typed" and re.fullmatch(r"[\d:]+", text):
+            return "typing", None  # digits on their way to a value: they tell nothing yet
         try:
             value = parse_value(spec, text)
         except ValueProblem:

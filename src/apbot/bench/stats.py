@@ -47,6 +47,34 @@ def appliance_features(model: ApplianceModel) -> dict[str, bool]:
     }
 
 
+# Procedure-structure constructs of the format (docs/model-format.md, "The feature pointer"):
+# name -> what the row says in `apbot suite stats`.
+CONSTRUCTS = {
+    "optional_steps": "optional steps (optional)",
+    "anywhere_keys": "keys acting from anywhere (anywhere)",
+    "leave_keys": "keys that leave the procedure (leave)",
+    "early_release_enters": "holds entering when released early (too_short)",
+    "timeouts": "step timeouts let expire by a wait (timeout, wait)",
+    "keypad_other_keys_clear": "keypads whose other keys clear (other_keys)",
+    "keypad_shows_typed": "keypads showing digits as typed (shows: typed)",
+}
+
+
+def appliance_constructs(model: ApplianceModel) -> dict[str, bool]:
+    """Which procedure-structure constructs (:data:`CONSTRUCTS`) an appliance uses."""
+    steps = [step for steps in model.features.values() for step in steps]
+    entries = [e for v in model.variables.values() if (e := getattr(v, "entry", None)) is not None]
+    return {
+        "optional_steps": any(step.optional for step in steps),
+        "anywhere_keys": bool(model.anywhere),
+        "leave_keys": any(entry.leave for entry in model.anywhere),
+        "early_release_enters": any(a.too_short == "enters" for a in model.actions.values()),
+        "timeouts": any(step.timeout is not None for step in steps),
+        "keypad_other_keys_clear": any(e.other_keys == "clear" for e in entries),
+        "keypad_shows_typed": any(e.shows == "typed" for e in entries),
+    }
+
+
 def suite_statistics(suite: Suite | None = None) -> dict[str, Any]:
     """Counts for ``apbot suite stats`` (and its ``--json``)."""
     suite = suite or load_suite()
@@ -70,9 +98,14 @@ def suite_statistics(suite: Suite | None = None) -> dict[str, Any]:
             else 0,
             "features": features,
         }
+    constructs = dict.fromkeys(CONSTRUCTS, 0)
+    for appliance in suite.appliances:
+        for key, used in appliance_constructs(appliance.model).items():
+            constructs[key] += used
     return {
         "appliances": len(suite.appliances),
         "tasks": len(suite.tasks),
         "categories": categories,
         "features": totals,
+        "constructs": constructs,
     }

@@ -20,7 +20,13 @@ from __future__ import annotations
 from typing import Any
 
 from apbot.model.domain import AnyVariable
-from apbot.model.schema import TEMPLATE_FIELD, DiscreteVariable, NumericVariable, TimeVariable
+from apbot.model.schema import (
+    TEMPLATE_FIELD,
+    DiscreteVariable,
+    Entry,
+    NumericVariable,
+    TimeVariable,
+)
 from apbot.model.values import format_time, parse_hms
 
 ABSENT_TEXT = "--"  # a programme-dependent setting that does not exist in this programme
@@ -81,3 +87,22 @@ def lamp_for(spec: AnyVariable, name: str, value: Any, values: tuple[Any, ...] =
 def template_fields(template: str) -> list[str]:
     """The variable names (and ``value``/``label``) a template prints."""
     return TEMPLATE_FIELD.findall(template)
+
+
+def typed_text(entry: Entry, buffer: str) -> str:
+    """Keypad digits as a display that shows them as typed prints them (``Entry.shows``):
+    zero-padded into the entry's clock format, or as a number.
+
+    >>> typed_text(Entry(format="hh:mm:ss"), "80"), typed_text(Entry(format="mm:ss"), "130")
+    ('00:00:80', '01:30')
+    >>> typed_text(Entry(format="number"), "07")
+    '7'
+    """
+    fmt = entry.format
+    if fmt in ("number", "minutes", "seconds"):
+        return str(int(buffer or "0"))
+    width = {"hh:mm:ss": 6, "h:mm": 3}.get(fmt, 4)
+    padded = buffer.zfill(width)
+    if fmt == "hh:mm:ss":
+        return f"{padded[:-4]}:{padded[-4:-2]}:{padded[-2:]}"
+    return f"{padded[:-2]}:{padded[-2:]}"

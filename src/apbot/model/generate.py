@@ -4,8 +4,10 @@ The models use every part of the format a planner has to get right: discrete, nu
 variables, piecewise ranges, wrap and clamp, keypads (numbers and times, a CLEAR key),
 programme-dependent settings (a programme chosen by a cycling key, a dial or go-to keys, a
 programme without a case), entry steps, confirm steps, ``on_entry: show``, go-to, add, reset,
-toggle and ``none`` effects, holds and two-control holds, dial turns, side effects (``set``,
-``reset``) on any step, and guards — power off, a child lock, "only these keys while running",
+toggle and ``none`` effects, holds and two-control holds (some entering when released early),
+dial turns, side effects (``set``, ``reset``) on any step, optional steps, keys that act from
+anywhere (some leaving the procedure), step timeouts with a wait, keypads whose other keys
+clear the typing, and guards — power off, a child lock, "only these keys while running",
 a mode that allows only some keys, a number that must be set first. They stay small enough
 (mostly a few thousand states) for breadth-first search over the whole simulator.
 Generation is driven by a ``random.Random`` so a failing case is reproducible from its seed;
@@ -25,6 +27,13 @@ from apbot.model.schema import Add, ApplianceModel, GoTo, Variable
 # What :func:`format_parts` can report; the generator is tested to produce every one.
 FORMAT_PARTS = (
     "add",
+    "anywhere key",
+    "leave key",
+    "optional step",
+    "short hold enters",
+    "timeout",
+    "keypad other keys clear",
+    "keypad shows typed",
     "clamp",
     "confirm step",
     "cycling programme key",
@@ -109,6 +118,7 @@ class _Builder:
         self.guards: list[dict[str, Any]] = []
         self.arrows: tuple[str, str] | None = None  # one ▲/▼ pair shared by several steps
         self.digits: list[str] | None = None  # one keypad shared by every keypad step
+        self.anywhere: list[dict[str, Any]] = []
         self.power_key: str | None = None
         self.power_feature = ""
         self.settings: list[str] = []  # variables with features of their own
@@ -157,6 +167,7 @@ class _Builder:
                 "variables": self.variables,
                 "actions": self.actions,
                 "features": self.features,
+                "anywhere": self.anywhere,
                 "guards": self.guards,
             }
         )
@@ -197,7 +208,73 @@ class _Builder:
             self._add_number_guard()
         if rng.random() < 0.3:
             self._add_side_effect_key()
+        if rng.random() < 0.25:
+            self._add_anywhere_key()
+        if rng.random() < 0.25:
+            self._add_timeouts()
         return self.model()
+
+    def _add_anywhere_key(self) -> None:
+        """A key that acts from any screen: a go-to, a step or a reset of a setting (an EXPRESS
+        key), or a CANCEL that only leaves the procedure (sometimes forgetting a setting)."""
+        rng = self.rng
+        plain = [
+            v
+            for v in self.settings
+            if "depends_on" not in self.variables[v] and "entry" not in self.variables[v]
+        ]
+        if plain and rng.random() < 0.6:
+            name = rng.choice(plain)
+            effect = rng.choice(
+                ["next", "reset", {"to": rng.choice(_some_values(self.variables[name]))}]
+            )
+            entry: dict[str, Any] = {"actions": [self.action()], "variable": name, "effect": effect}
+            if rng.random() < 0.3:
+                entry["leave"] = True
+        else:
+            entry = {"actions": [self.action()], "leave": True}
+            if rng.random() < 0.4:
+                self._side_effects(entry, exclude="")
+        self.anywhere.append(entry)
+
+    def _add_timeouts(self) -> None:
+        """A wait of some seconds, and steps that time out back to no feature after it (or,
+        for some, only after a longer wait that is not declared)."""
+        rng = self.rng
+        seconds = rng.choice([2, 5])
+        name = f"a{len(self.actions)}"
+        self.actions[name] = {"skill": "wait", "seconds": seconds}
+        for steps in self.features.values():
+            for step in steps:
+                if rng.random() < 0.4:
+                    step["timeout"] = rng.choice([seconds, seconds, 10])
+        self._add_idle_meaning(seconds)
+
+    def _add_idle_meaning(self, seconds: int) -> None:
+        """Sometimes a key of a procedure's later step also starts a procedure of its own from
+        no feature (UP sets the timer inside TIMER, the volume from the clock): inside the
+        first procedure, only its timeout leads to the second."""
+        rng = self.rng
+        firsts = {a for steps in self.features.values() for a in steps[0]["actions"]}
+        plain = [
+            v
+            for v in self.settings
+            if "depends_on" not in self.variables[v] and "entry" not in self.variables[v]
+        ]
+        hosts = [steps for steps in self.features.values() if len(steps) >= 2]
+        if not plain or not hosts or rng.random() < 0.5:
+            return
+        steps = rng.choice(hosts)
+        keys = [
+            a for a in steps[1]["actions"] if a not in firsts and "digit" not in self.actions[a]
+        ]
+        if not keys:
+            return
+        for step in steps:
+            step["timeout"] = seconds
+        self.feature(
+            [{"actions": [rng.choice(keys)], "variable": rng.choice(plain), "effect": "next"}]
+        )
 
     def _add_power(self) -> None:
         """A power key guarding everything else; switching off may forget settings later."""
@@ -268,6 +345,8 @@ class _Builder:
             steps.append(self._adjusting_step(rng.choice(others)))
         if rng.random() < 0.2:
             steps.append({"actions": [self.action()]})
+        if len(steps) >= 3 and rng.random() < 0.5:  # press HR, or go straight on to MIN
+            steps[rng.randrange(1, len(steps) - 1)]["optional"] = True
         self.feature(steps)
 
     def _adjusting_step(self, name: str) -> dict[str, Any]:
@@ -278,6 +357,8 @@ class _Builder:
             effects: dict[str, Any] = dict.fromkeys(self.keypad(), "digit")
             if rng.random() < 0.3:
                 effects[self.action()] = "clear"
+            if var["entry"].get("other_keys") == "clear" and rng.random() < 0.7:
+                effects[self.action()] = "none"  # a key that only ends the typing
             step["actions"] = list(effects)
             if len(effects) > 10 or rng.random() < 0.5:  # else the default effect: digits
                 step["effect"] = effects
@@ -294,6 +375,8 @@ class _Builder:
                 hold: dict[str, Any] = (
                     {"skill": "hold", "seconds": 1} if rng.random() < 0.15 else {}
                 )
+                if hold and rng.random() < 0.5:
+                    hold["too_short"] = "enters"
                 two = _value_count(var) == 2 and rng.random() < 0.4
                 effects[self.action(**hold)] = (
                     "toggle" if two else rng.choice(["next", "next", "prev", "reset"])
@@ -332,11 +415,19 @@ class _Builder:
         self.variables["running"] = {"type": "discrete", "values": ["off", "on"]}
         start = self.action()
         allowed = [start]
+        anywhere = rng.random() < 0.3  # START from any screen, without leaving it
+
+        def add(step: dict[str, Any]) -> None:
+            if anywhere:
+                self.anywhere.append(step)
+            else:
+                self.feature([step])
+
         if rng.random() < 0.5:
-            self.feature([{"actions": [start], "variable": "running", "effect": "toggle"}])
+            add({"actions": [start], "variable": "running", "effect": "toggle"})
         else:
             stop = self.action()
-            self.feature([{"actions": [start], "variable": "running", "effect": {"to": "on"}}])
+            add({"actions": [start], "variable": "running", "effect": {"to": "on"}})
             step: dict[str, Any] = {
                 "actions": [stop],
                 "variable": "running",
@@ -344,7 +435,9 @@ class _Builder:
             }
             if rng.random() < 0.5 and self.settings:
                 step["reset"] = [rng.choice(self.settings)]  # CANCEL forgets a setting
-            self.feature([step])
+            if anywhere and rng.random() < 0.5:
+                step["leave"] = True
+            add(step)
             allowed.append(stop)
         if self.power_key is not None:
             allowed.append(self.power_key)
@@ -362,7 +455,13 @@ class _Builder:
             self.actions[name] = {"controls": [a, b], "skill": "hold", "seconds": 3}
         else:
             name = self.action(skill="hold", seconds=2)
-        self.feature([{"actions": [name], "variable": "lock", "effect": "toggle"}])
+            if rng.random() < 0.3:
+                self.actions[name]["too_short"] = "enters"
+        lock_step = {"actions": [name], "variable": "lock", "effect": "toggle"}
+        if rng.random() < 0.3:  # a lock hold that belongs to no procedure
+            self.anywhere.append(lock_step)
+        else:
+            self.feature([lock_step])
         allowed = [name] + ([self.power_key] if self.power_key and rng.random() < 0.5 else [])
         self.guards.append({"when": {"lock": "on"}, "only": allowed, "display": "LOCKED"})
 
@@ -458,11 +557,12 @@ def _plain_variable(rng: random.Random) -> dict[str, Any]:
             ]
         )
         overflow = rng.choice(["shift", "ignore"])
-        return {
-            "type": "time",
-            "ranges": ranges,
-            "entry": {"format": fmt, "max_digits": digits, "overflow": overflow},
-        }
+        entry = {"format": fmt, "max_digits": digits, "overflow": overflow}
+        if rng.random() < 0.4:
+            entry["other_keys"] = "clear"
+        if rng.random() < 0.4:
+            entry["shows"] = "typed"
+        return {"type": "time", "ranges": ranges, "entry": entry}
     top, step = rng.choice([(9, 1), (12, 3), (20, 5), (120, 30)])
     return {
         "type": "numeric",
@@ -471,6 +571,8 @@ def _plain_variable(rng: random.Random) -> dict[str, Any]:
             "format": "number",
             "max_digits": rng.choice([2, 2, 3]),
             "overflow": rng.choice(["shift", "ignore"]),
+            "other_keys": rng.choice(["keep", "keep", "clear"]),
+            "shows": rng.choice(["value", "value", "typed"]),
         },
     }
 
@@ -552,10 +654,25 @@ def format_parts(model: ApplianceModel) -> set[str]:
     for action in model.actions.values():
         if action.skill == "hold":
             parts.add("two-control hold" if action.controls else "hold")
+        if action.too_short == "enters":
+            parts.add("short hold enters")
         if action.skill in ("turn_cw", "turn_ccw"):
             parts.add("dial")
+    for entry in model.anywhere:
+        parts.add("anywhere key")
+        if entry.leave:
+            parts.add("leave key")
+    for var in model.variables.values():
+        if getattr(var, "entry", None) is not None and var.entry.other_keys == "clear":  # type: ignore[union-attr]
+            parts.add("keypad other keys clear")
+        if getattr(var, "entry", None) is not None and var.entry.shows == "typed":  # type: ignore[union-attr]
+            parts.add("keypad shows typed")
     for steps in model.features.values():
         for index, step in enumerate(steps):
+            if step.optional:
+                parts.add("optional step")
+            if step.timeout is not None:
+                parts.add("timeout")
             if step.variable is None and not step.set and not step.reset:
                 parts.add("entry step" if index + 1 < len(steps) else "confirm step")
             if step.on_entry == "show":

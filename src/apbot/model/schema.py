@@ -36,7 +36,7 @@ Ident = Annotated[str, Field(pattern=IDENT)]
 Box = tuple[int, int, int, int]
 
 ControlKind = Literal["button", "dial", "key", "touch", "switch", "knob"]
-Skill = Literal["press", "hold", "turn_cw", "turn_ccw"]
+Skill = Literal["press", "hold", "turn_cw", "turn_ccw", "wait"]
 TimeStyle = Literal["hh:mm:ss", "mm:ss", "h:mm", "hh:mm", "min", "h"]
 EntryFormat = Literal["mm:ss", "hh:mm", "h:mm", "hh:mm:ss", "minutes", "seconds", "number"]
 Scalar = str | int | float | bool
@@ -72,6 +72,9 @@ class Action(_Strict):
     """One physical action: press, hold (for ``seconds``; two controls together) or a dial turn.
 
     ``digit`` marks a keypad key: a step whose effect is ``digit`` appends it to the input buffer.
+    ``skill: wait`` is no touch at all: ``seconds`` without a key, which lets a step's
+    ``timeout`` expire. ``too_short: enters`` says that a hold released early still moves the
+    procedure on (only the change needs the full hold); by default it is ignored.
     """
 
     control: Ident | None = None
@@ -79,9 +82,20 @@ class Action(_Strict):
     skill: Skill = "press"
     seconds: float | None = Field(default=None, gt=0)
     digit: int | None = Field(default=None, ge=0, le=9)
+    too_short: Literal["ignored", "enters"] = "ignored"
 
     @model_validator(mode="after")
     def _one_way_to_name_controls(self) -> Action:
+        if self.skill == "wait":
+            if self.control is not None or self.controls is not None:
+                raise ValueError("a wait touches no control: give only `seconds`")
+            if self.seconds is None:
+                raise ValueError("a wait needs `seconds` (how long nothing is pressed)")
+            if self.digit is not None:
+                raise ValueError("a wait is not a keypad digit")
+            return self
+        if self.too_short != "ignored" and self.skill != "hold":
+            raise ValueError("`too_short` only applies to holds")
         if (self.control is None) == (self.controls is None):
             raise ValueError("give either `control` (one) or `controls` (a two-control hold)")
         if self.controls is not None:
@@ -92,12 +106,14 @@ class Action(_Strict):
         if self.skill == "hold" and self.seconds is None:
             raise ValueError("a hold needs `seconds` (how long the control must be held)")
         if self.skill != "hold" and self.seconds is not None:
-            raise ValueError(f"`seconds` only applies to holds, not to {self.skill}")
+            raise ValueError(f"`seconds` only applies to holds and waits, not to {self.skill}")
         return self
 
     @property
     def control_ids(self) -> list[str]:
-        """The controls this action touches."""
+        """The controls this action touches (none for a wait)."""
+        if self.skill == "wait":
+            return []
         return list(self.controls) if self.controls else [self.control or ""]
 
 
@@ -106,12 +122,17 @@ class Entry(_Strict):
 
     Digits shift in from the right, as on a microwave: with ``mm:ss``, typing 1, 3, 0 shows
     ``01:30``. ``overflow`` says what happens once ``max_digits`` are typed: ``shift`` drops
-    the oldest digit, ``ignore`` drops the new one.
+    the oldest digit, ``ignore`` drops the new one. ``other_keys: clear`` empties the buffer
+    when a non-digit key of the typing step is pressed (the value stays as typed).
+    ``shows: typed`` makes the display show the digits as typed, in the entry format, while
+    the buffer holds any (``00:00:80`` on the way to ``00:08:00``), instead of the value.
     """
 
     format: EntryFormat
     max_digits: int | None = Field(default=None, ge=1, le=8)
     overflow: Literal["shift", "ignore"] = "shift"
+    other_keys: Literal["keep", "clear"] = "keep"
+    shows: Literal["value", "typed"] = "value"
 
     def digits(self) -> int:
         """The buffer length: declared, or the format's natural width."""
@@ -320,6 +341,9 @@ class Step(_Strict):
     ``set`` and ``reset`` are side effects applied by every accepted action of the step.
     ``on_entry: show`` makes the action that enters the step only show the current value
     ("press TEMP to see the setting, press again to change it"); by default it also applies.
+    ``optional`` lets the procedure skip the step: from the step before it, the actions of the
+    step after it are accepted too. ``timeout`` is how many seconds without a key return the
+    appliance from this step to no feature (a ``wait`` action lets that happen).
     """
 
     actions: list[Ident]
@@ -329,13 +353,41 @@ class Step(_Strict):
     set: dict[Ident, Scalar] = Field(default_factory=dict)
     reset: list[Ident] = Field(default_factory=list)
     note: str = ""
+    optional: bool = False
+    timeout: float | None = Field(default=None, gt=0)
 
     @field_validator("set", mode="before")
     @classmethod
     def _set_strings(cls, value: Any) -> Any:
-        if isinstance(value, dict):
-            return {k: (str(v).lower() if isinstance(v, bool) else v) for k, v in value.items()}
-        return value
+        return _set_strings(value)
+
+
+def _set_strings(value: Any) -> Any:
+    if isinstance(value, dict):
+        return {k: (str(v).lower() if isinstance(v, bool) else v) for k, v in value.items()}
+    return value
+
+
+class AnywhereStep(_Strict):
+    """Keys that act from any screen without moving the procedure (START, a lock hold, STOP).
+
+    Like a step (``actions``, ``variable``, ``effect``, ``set``, ``reset``) but belonging to no
+    feature: the feature pointer stays where it is — or, with ``leave``, returns to no
+    feature (CANCEL) — and a half-typed keypad buffer empties.
+    """
+
+    actions: list[Ident]
+    variable: Ident | None = None
+    effect: Effect | dict[Ident, Effect] | None = None
+    set: dict[Ident, Scalar] = Field(default_factory=dict)
+    reset: list[Ident] = Field(default_factory=list)
+    leave: bool = False
+    note: str = ""
+
+    @field_validator("set", mode="before")
+    @classmethod
+    def _set_strings(cls, value: Any) -> Any:
+        return _set_strings(value)
 
 
 class Guard(_Strict):
@@ -400,6 +452,7 @@ class ApplianceModel(_Strict):
     variables: dict[Ident, Variable] = Field(min_length=1)
     actions: dict[Ident, Action] = Field(min_length=1)
     features: dict[Ident, list[Step]] = Field(min_length=1)
+    anywhere: list[AnywhereStep] = Field(default_factory=list)
     guards: list[Guard] = Field(default_factory=list)
     display: Display = Field(default_factory=Display)
 

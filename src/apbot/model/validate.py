@@ -9,7 +9,7 @@ Check names (the paper's nine first):
     ``action-variable``, ``goal`` (see :func:`check_goal`);
     then ``size`` (first: see :mod:`apbot.model.limits`), ``reference``, ``domain``,
     ``dependent``, ``guard``, ``display``, ``control``,
-    ``unreachable-value``.
+    ``unreachable-value``, ``optional-step``, ``timeout``, ``anywhere``.
 """
 
 from __future__ import annotations
@@ -38,6 +38,7 @@ from apbot.model.problems import PathPart, Problem
 from apbot.model.schema import (
     TEMPLATE_FIELD,
     Add,
+    AnywhereStep,
     ApplianceModel,
     Control,
     DiscreteVariable,
@@ -78,6 +79,8 @@ def check_model(model: ApplianceModel) -> list[Problem]:
     if any(p.severity == "error" for p in problems):
         return problems  # later checks need resolvable names and buildable domains
     problems += _steps(model, domains)
+    problems += _procedure_options(model)
+    problems += _anywhere(model, domains)
     problems += _coverage(model)
     problems += _duplicates(model)
     problems += _guards(model)
@@ -201,6 +204,31 @@ def _references(model: ApplianceModel) -> Iterator[Problem]:
                     yield Problem(
                         (*path, key), _unknown("variable", target, variables), "reference"
                     )
+    for i, entry in enumerate(model.anywhere):
+        apath: tuple[PathPart, ...] = ("anywhere", i)
+        if not entry.actions:
+            yield Problem((*apath, "actions"), "an anywhere entry needs an action", "empty-action")
+        for a, action in enumerate(entry.actions):
+            if action not in actions:
+                yield Problem(
+                    (*apath, "actions", a), _unknown("action", action, actions), "unknown-action"
+                )
+        if entry.variable is not None and entry.variable not in variables:
+            yield Problem(
+                (*apath, "variable"), _unknown("variable", entry.variable, variables), "reference"
+            )
+        for action in entry.effect if isinstance(entry.effect, dict) else ():
+            if action not in entry.actions:
+                yield Problem(
+                    (*apath, "effect", action),
+                    f"{action!r} has an effect here but is not one of the entry's actions "
+                    f"{preview(entry.actions)}",
+                    "action-variable",
+                )
+        for target in [*entry.set, *entry.reset]:
+            if target not in variables:
+                key = "set" if target in entry.set else "reset"
+                yield Problem((*apath, key), _unknown("variable", target, variables), "reference")
     for g, guard in enumerate(model.guards):
         for name in guard.when:
             if name not in variables:
@@ -295,7 +323,7 @@ def _close(text: str, options: list[str]) -> str:
 # --- steps and effects ---------------------------------------------------------------------
 
 
-def _effects_of(step: Step, model: ApplianceModel) -> dict[str, Any]:
+def _effects_of(step: Step | AnywhereStep, model: ApplianceModel) -> dict[str, Any]:
     from apbot.sim.compiled import default_effect
 
     return {a: default_effect(step, a, model) for a in step.actions if a in model.actions}
@@ -307,7 +335,7 @@ def _steps(model: ApplianceModel, domains: Mapping[str, list[Domain]]) -> Iterat
     for c in model.controls:
         by_id.setdefault(c.id, c)
     for name, action in model.actions.items():
-        control = by_id.get(action.control_ids[0])
+        control = by_id.get(action.control_ids[0]) if action.control_ids else None
         if action.digit is not None:
             if not has_keypad or control is None or control.kind != "key":
                 yield Problem(
@@ -435,6 +463,152 @@ def _steps(model: ApplianceModel, domains: Mapping[str, list[Domain]]) -> Iterat
             )
 
 
+def _procedure_options(model: ApplianceModel) -> Iterator[Problem]:
+    """Optional steps need steps around them; timeouts need a wait long enough, and a wait
+    needs a timeout it can let expire."""
+    waits = {n: a.seconds or 0.0 for n, a in model.actions.items() if a.skill == "wait"}
+    timeouts: list[float] = []
+    for feature, steps in model.features.items():
+        for s, step in enumerate(steps):
+            path = ("features", feature, s)
+            if step.optional and s == 0:
+                yield Problem(
+                    (*path, "optional"),
+                    "the first step cannot be optional: it is how the feature starts; "
+                    "make the step a feature of its own or drop `optional`",
+                    "optional-step",
+                )
+            elif step.optional and s == len(steps) - 1:
+                yield Problem(
+                    (*path, "optional"),
+                    "the last step cannot be optional: no step follows it to skip to; "
+                    "drop `optional`",
+                    "optional-step",
+                )
+            if step.timeout is not None:
+                timeouts.append(step.timeout)
+                if not any(seconds + 1e-9 >= step.timeout for seconds in waits.values()):
+                    yield Problem(
+                        (*path, "timeout"),
+                        f"no wait action lasts {step.timeout:g} s, so nobody can let this "
+                        "timeout expire; declare one, e.g. "
+                        f"wait_{step.timeout:g}s: {{skill: wait, seconds: {step.timeout:g}}}",
+                        "timeout",
+                        severity="warning",
+                    )
+    for name, seconds in waits.items():
+        if not any(seconds + 1e-9 >= t for t in timeouts):
+            yield Problem(
+                ("actions", name, "seconds"),
+                f"waiting {seconds:g} s lets no step's `timeout` expire (the timeouts: "
+                f"{sorted(timeouts) or 'none'}); give a step a timeout or remove the wait",
+                "timeout",
+                severity="warning",
+            )
+        used = [
+            f"features.{f}[{s}]"
+            for f, steps in model.features.items()
+            for s, step in enumerate(steps)
+            if name in step.actions
+        ] + [f"anywhere[{i}]" for i, entry in enumerate(model.anywhere) if name in entry.actions]
+        if used:
+            yield Problem(
+                ("actions", name),
+                f"the wait {name!r} is listed in {used[0]}; a wait presses nothing, so it "
+                "belongs to no step (it only lets timeouts expire)",
+                "timeout",
+            )
+
+
+def _anywhere(model: ApplianceModel, domains: Mapping[str, list[Domain]]) -> Iterator[Problem]:
+    """Anywhere keys belong to no feature, change something (or leave), and their effects
+    fit their variable; keypad digits stay in a feature's step."""
+    in_features = {
+        a: f"features.{f}[{s}]"
+        for f, steps in model.features.items()
+        for s, step in enumerate(steps)
+        for a in step.actions
+    }
+    seen: dict[str, int] = {}
+    for i, entry in enumerate(model.anywhere):
+        path = ("anywhere", i)
+        for a, action in enumerate(entry.actions):
+            where = in_features.get(action)
+            if where is not None:
+                yield Problem(
+                    (*path, "actions", a),
+                    f"{action!r} is also in {where}; a key that acts from anywhere belongs "
+                    "to no feature: remove it from one of them",
+                    "anywhere",
+                )
+            if action in seen:
+                yield Problem(
+                    (*path, "actions", a),
+                    f"{action!r} is already in anywhere[{seen[action]}]; list each key once",
+                    "duplicate-sequence",
+                )
+            spec = model.actions.get(action)
+            if spec is not None and spec.too_short == "enters":
+                yield Problem(
+                    (*path, "actions", a),
+                    f"{action!r} acts from anywhere, so a hold released early has no "
+                    "procedure to enter and is ignored; drop `too_short` from the action",
+                    "anywhere",
+                    severity="warning",
+                )
+            seen.setdefault(action, i)
+        effects = _effects_of(entry, model)
+        value_effects = {a: e for a, e in effects.items() if e != "none"}
+        if entry.variable is None:
+            if value_effects:
+                yield Problem(
+                    (*path, "effect"),
+                    "this entry has an effect but no `variable` to apply it to",
+                    "missing-variable",
+                )
+            if not (entry.set or entry.reset or entry.leave):
+                yield Problem(
+                    path,
+                    "this entry changes nothing and does not `leave`: name the variable it "
+                    "adjusts, give `set`/`reset`, or say `leave: true` (CANCEL)",
+                    "missing-variable",
+                )
+            continue
+        var = model.variables[entry.variable]
+        if entry.effect is None and len(entry.actions) > 1:
+            yield Problem(
+                (*path, "effect"),
+                f"{len(entry.actions)} actions adjust {entry.variable!r} but the entry does not "
+                "say how; give `effect` as a map",
+                "action-variable",
+            )
+        for key, effect in value_effects.items():
+            epath = (*path, "effect", key) if isinstance(entry.effect, dict) else (*path, "effect")
+            if effect in ("digit", "clear"):
+                yield Problem(
+                    epath,
+                    f"{effect} works on a keypad buffer, which belongs to a feature's step; "
+                    "put the keypad in a feature",
+                    "keypad-buffer",
+                )
+                continue
+            message = _effect_problem(effect, var, domains.get(entry.variable, []))
+            if message:
+                yield Problem(epath, message, "action-variable")
+        for target, value in entry.set.items():
+            if target == entry.variable:
+                yield Problem(
+                    (*path, "set", target),
+                    "an entry cannot both adjust and `set` the same variable",
+                    "action-variable",
+                )
+            if not _in_some(value, model.variables[target], domains.get(target, [])):
+                try:
+                    normalise(model.variables[target], value)
+                except ValueProblem as exc:
+                    yield Problem((*path, "set", target), str(exc), "action-variable")
+
+
 def _in_some(value: Any, var: Any, doms: list[Domain]) -> bool:
     from apbot.sim.compiled import _value_index
 
@@ -472,6 +646,8 @@ def _effect_problem(effect: Any, var: Any, doms: list[Domain]) -> str | None:
 
 def _coverage(model: ApplianceModel) -> Iterator[Problem]:
     used_actions = {a for steps in model.features.values() for s in steps for a in s.actions}
+    used_actions |= {a for entry in model.anywhere for a in entry.actions}
+    used_actions |= {n for n, a in model.actions.items() if a.skill == "wait"}  # see timeouts
     for name in model.actions:
         if name not in used_actions:
             yield Problem(
@@ -482,6 +658,7 @@ def _coverage(model: ApplianceModel) -> Iterator[Problem]:
             )
     changed = {s.variable for steps in model.features.values() for s in steps if s.variable}
     changed |= {v for steps in model.features.values() for s in steps for v in [*s.set, *s.reset]}
+    changed |= {v for e in model.anywhere for v in [e.variable, *e.set, *e.reset] if v}
     for name in model.variables:
         if name not in changed:
             yield Problem(
@@ -563,10 +740,10 @@ def _guards(model: ApplianceModel) -> Iterator[Problem]:
                         "guard",
                     )
         allowed = set(guard.only)
+        everywhere: list[Step | AnywhereStep] = [s for f in model.features.values() for s in f]
         releasing = [
             s
-            for steps in model.features.values()
-            for s in steps
+            for s in [*everywhere, *model.anywhere]
             if any(a in allowed for a in s.actions)
             and (s.variable in guard.when or any(v in guard.when for v in [*s.set, *s.reset]))
         ]
@@ -640,7 +817,7 @@ def reachable_indices(compiled: Any, v: int, case: int) -> set[int]:
     domain = var.domains[case]
     tables: list[tuple[int, ...]] = []
     typed = False
-    for step in compiled.steps:
+    for step in compiled.all_steps:
         if step.variable == v:
             for effect in step.effects.values():
                 if effect[0] in (TABLE, CLEAR) and effect[1][case] is not None:

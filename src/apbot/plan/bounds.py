@@ -61,7 +61,7 @@ def _value_graph(
         if a != b:
             reverse.setdefault(b, []).append((a, cost))
 
-    for step in compiled.steps:
+    for step in compiled.all_steps:  # features' steps and anywhere keys alike
         if step.variable == v:
             typed = False
             for effect in step.effects.values():
@@ -240,8 +240,8 @@ class LowerBound:
             charging: set[int] = set()
             for steps in _assigning_steps(compiled, parent):
                 free = bool(steps & used_steps) or any(
-                    compiled.steps[s].variable in goal_vars
-                    or compiled.steps[s].feature in entry_features
+                    compiled.all_steps[s].variable in goal_vars
+                    or compiled.all_steps[s].feature in entry_features
                     for s in steps
                 )
                 costs.append(0 if free else 1)
@@ -287,6 +287,8 @@ def _entry_requirements(
     """When every step adjusting ``v`` sits behind a step that adjusts no goal variable:
     the pointer positions from which no such entry press is needed, and the features involved.
     None when some step adjusting ``v`` can be entered directly."""
+    if any(step.variable == v for step in compiled.anywhere_steps):
+        return None  # an anywhere key adjusts it without entering anything
     free: set[int] = set()
     features: set[str] = set()
     for sid, step in enumerate(compiled.steps):
@@ -294,10 +296,17 @@ def _entry_requirements(
             continue
         if step.index == 0:
             return None
-        before = sid - 1
-        if compiled.steps[before].variable in goal_vars:
+        # the steps from which one of its actions moves the pointer straight there: the one
+        # before it, and those before optional steps in between
+        before = [
+            p
+            for p in range(len(compiled.steps))
+            if p != sid and any(compiled.targets[p + 1][a] == sid for a in step.actions)
+        ]
+        if any(compiled.steps[p].variable in goal_vars for p in before):
             return None
-        free.update((sid, before))
+        free.add(sid)
+        free.update(before)
         features.add(step.feature)
     if not features:
         return None
@@ -311,7 +320,7 @@ def _assigning_steps(compiled: CompiledModel, programme: int) -> list[set[int]]:
     domain = var.domains[0]
     assert domain is not None
     steps: list[set[int]] = [set() for _ in domain.values]
-    for sid, step in enumerate(compiled.steps):
+    for sid, step in enumerate(compiled.all_steps):  # ids past the features' are anywhere keys
         if step.variable == programme:
             for effect in step.effects.values():
                 if effect[0] in (TABLE, CLEAR) and effect[1][0] is not None:

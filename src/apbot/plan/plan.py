@@ -134,10 +134,12 @@ def _macro_actions(
     groups: list[list[Visit]] = []
     previous = start.step
     for visit in visits:
-        continues = previous >= 0 and (
-            visit.step == previous or compiled.steps[previous].next_step == visit.step
+        continues = (
+            previous >= 0
+            and not visit.free
+            and (visit.step == previous or _skips_to(compiled, previous, visit.step))
         )
-        if groups and continues:
+        if groups and continues and not groups[-1][-1].free:
             groups[-1].append(visit)
         else:
             groups.append([visit])
@@ -151,24 +153,47 @@ def _macro_actions(
                 after = compiled.apply(state, action)
                 assert after is not None, "planned action refused while grouping"
                 state = after
-            info = compiled.steps[visit.step]
-            if info.variable >= 0:
-                changed.append(info.variable)
-            changed.extend(v for v, _ in info.side)
-        first = compiled.steps[group[0].step]
+            info = (
+                compiled.anywhere.get(visit.actions[0])
+                if visit.free
+                else compiled.steps[visit.step]
+            )
+            if info is not None:
+                if info.variable >= 0:
+                    changed.append(info.variable)
+                changed.extend(v for v, _ in info.side)
         expect = {
             compiled.vars[v].name: compiled.value(state, compiled.vars[v].name)
             for v in dict.fromkeys(changed)
         }
+        if group[0].free:  # an anywhere key or a wait is a macro action of its own
+            name = compiled.action_names[group[0].actions[0]]
+            feature = "wait" if compiled.model.actions[name].skill == "wait" else "anywhere"
+            indices: tuple[int, ...] = ()
+        else:
+            feature = compiled.steps[group[0].step].feature
+            indices = tuple(compiled.steps[v.step].index for v in group)
         macro_actions.append(
             MacroAction(
-                first.feature,
-                tuple(compiled.steps[v.step].index for v in group),
+                feature,
+                indices,
                 tuple(_planned(compiled, a) for v in group for a in v.actions),
                 expect,
             )
         )
     return tuple(macro_actions)
+
+
+def _skips_to(compiled: CompiledModel, step: int, later: int) -> bool:
+    """Whether ``later`` follows ``step`` in its feature, past optional steps only."""
+    following = compiled.steps[step].next_step
+    while following >= 0:
+        if following == later:
+            return True
+        following = (
+            compiled.steps[following].next_step if compiled.steps[following].optional else -1
+        )
+    return False
 
 
 def _verify(compiled: CompiledModel, start: State, goal: CompiledGoal, found: Plan) -> None:

@@ -3,8 +3,10 @@
 Search nodes are states projected onto the *relevant* variables — the goal's, those guards read
 (power, lock, running) and the programmes that goal settings depend on — plus the feature
 pointer. Nothing else influences how those variables evolve, so the projection loses nothing.
-Edges are visits (``apbot.plan.visits``); their cost is the number of physical actions
-(ties broken towards presses made while the display is lit).
+Edges are visits (``apbot.plan.visits``) and single actions that bypass the pointer (a key
+from ``anywhere``, a wait letting a timeout expire); after those the step the pointer stayed on
+may be continued. An edge costs its number of physical actions (ties broken towards presses
+made while the display is lit).
 The heuristic (``apbot.plan.bounds``) is admissible and consistent, so the first goal node
 popped is optimal: the order of macro actions (power before settings, programme before its
 settings, start last) falls out of the search instead of being hard-coded.
@@ -48,6 +50,7 @@ class Visit:
 
     step: int
     actions: tuple[int, ...]
+    free: bool = False  # one action that does not move through the pointer (anywhere, wait)
 
 
 @dataclass(frozen=True)
@@ -93,6 +96,9 @@ class TaskSearch:
         self._visit_cache: dict[Hashable, list[tuple[tuple[int, ...], str, tuple[int, ...]]]] = {}
         self._footprints: dict[int, tuple[tuple[int, ...], tuple[int, ...]]] = {}
         self._keypad_targets: dict[int, list[float]] = {}
+        # nodes reached by an anywhere key or a wait: the pointer stayed, so the step it is on
+        # may be continued (a visit there is not maximal any more)
+        self._continuable: set[Hashable] = set()
 
     def key(self, state: State) -> Hashable:
         buffer = state.buffer if state.step >= 0 and self.keypad_step[state.step] else ""
@@ -123,7 +129,9 @@ class TaskSearch:
             if expanded > self.budget:
                 raise SearchExhausted("budget", expanded, True)
             in_the_dark = bool(compiled.guards) and compiled.hiding_guard(state) is not None
-            for after, actions in self._edges(state, node == start_key):
+            for after, actions, free in self._edges(
+                state, node == start_key or node in self._continuable
+            ):
                 # presses first; among plans of equal length, fewer presses with a dark display
                 new_cost = cost + len(actions) * PRESS + (len(actions) if in_the_dark else 0)
                 k = self.key(after)
@@ -134,7 +142,9 @@ class TaskSearch:
                     continue
                 best[k] = new_cost
                 states[k] = after
-                came_from[k] = (node, Visit(after.step, actions))
+                came_from[k] = (node, Visit(after.step, actions, free))
+                if free:
+                    self._continuable.add(k)
                 heapq.heappush(frontier, (new_cost + h * PRESS, -new_cost, next(tie), k))
         raise SearchExhausted("exhausted", expanded, False)
 
@@ -150,19 +160,25 @@ class TaskSearch:
             link = came_from[previous]
         return tuple(reversed(visits))
 
-    def _edges(self, state: State, is_start: bool) -> list[Exit]:
+    def _edges(self, state: State, may_continue: bool) -> list[tuple[State, tuple[int, ...], bool]]:
+        """Visits to every step one action reaches (the current step only when ``may_continue``),
+        then each action that acts without the pointer table (anywhere keys, waits) alone."""
         compiled = self.compiled
         row = compiled.targets[state.step + 1]
         by_step: dict[int, list[int]] = {}
         for action, target in enumerate(row):
-            if target < 0 or (target == state.step and not is_start):
+            if target < 0 or (target == state.step and not may_continue):
                 continue
             if compiled.refusal(state, action) is not None:
                 continue
             by_step.setdefault(target, []).append(action)
-        edges: list[Exit] = []
+        edges: list[tuple[State, tuple[int, ...], bool]] = []
         for step, entry in by_step.items():
-            edges.extend(self._visit(state, step, entry))
+            edges.extend((after, path, False) for after, path in self._visit(state, step, entry))
+        for action in compiled.free_actions:
+            after = compiled.apply(state, action)
+            if after is not None and after != state:
+                edges.append((after, (action,), True))
         return edges
 
     def _visit(self, state: State, step: int, entry: list[int]) -> list[Exit]:

@@ -18,7 +18,7 @@ from collections import deque
 from collections.abc import Callable, Hashable, Sequence
 
 from apbot.model.schema import Entry
-from apbot.sim.compiled import CLEAR, DIGIT, CompiledModel, State, entry_digits
+from apbot.sim.compiled import CLEAR, DIGIT, NONE, CompiledModel, State, entry_digits
 
 Exit = tuple[State, tuple[int, ...]]
 
@@ -118,6 +118,11 @@ def keypad_exits(
         if info.effects[a][0] == DIGIT
     }
     clear = next((a for a in sorted(info.actions) if info.effects[a][0] == CLEAR), None)
+    # a key of the step that only empties the buffer (Entry.other_keys: clear)
+    blank = next(
+        (a for a in sorted(info.actions) if info.blank_clears and info.effects[a][0] == NONE),
+        None,
+    )
     exits: list[Exit] = []
     origins: dict[State, tuple[int, ...]] = {}  # where typing starts, and the presses so far
     if state.step == step:
@@ -140,10 +145,11 @@ def keypad_exits(
             typed = _digit_actions(presses, digit_action)
             if typed:
                 ways.append((*prefix, *typed))
-            if origin.buffer and clear is not None:
-                fresh = _digit_actions(keypad_presses("", digits, spec_entry), digit_action)
-                if fresh:
-                    ways.append((*prefix, clear, *fresh))
+            for restart in (clear, blank):
+                if origin.buffer and restart is not None:
+                    fresh = _digit_actions(keypad_presses("", digits, spec_entry), digit_action)
+                    if fresh:
+                        ways.append((*prefix, restart, *fresh))
         exits.extend(_first_accepted(compiled, state, ways))
     return exits
 

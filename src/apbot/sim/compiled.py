@@ -10,7 +10,10 @@ Feature pointer (kept from the paper)
     belongs to the next step of the same feature advances to it; otherwise the action enters
     the first feature (in declaration order) whose first step contains it. An action that fits
     none of these is refused. The keypad buffer empties whenever the pointer moves to another
-    step, so a digit typed for the timer never leaks into the clock.
+    step, so a digit typed for the timer never leaks into the clock. Past an ``optional``
+    next step, the step after it is accepted too. Keys listed under ``anywhere`` bypass the
+    pointer (it stays, or with ``leave`` returns to no feature; the buffer empties), and a
+    ``wait`` at least as long as the current step's ``timeout`` returns it to no feature.
 
 Effects
     The action that enters a step applies the step's effect too, unless the step says
@@ -91,6 +94,10 @@ class StepInfo:
     side: tuple[tuple[int, tuple[tuple[int, ...] | None, ...]], ...]  # (var, per-case tables)
     next_step: int  # the next step of the same feature, or -1
     show_on_entry: bool = False  # the entering action only shows the value
+    optional: bool = False  # the step may be skipped (``Step.optional``)
+    timeout: float | None = None  # seconds without a key that return to no feature
+    leave: bool = False  # an anywhere step that returns the pointer to no feature
+    blank_clears: bool = False  # a non-digit key of this keypad step empties the buffer
 
 
 @dataclass(frozen=True)
@@ -203,6 +210,22 @@ class CompiledModel:
                 self.dependents.setdefault(var.parent, ())
                 self.dependents[var.parent] += (i,)
         self.steps = self._compile_steps()
+        self.anywhere_steps = self._compile_anywhere()
+        # every step an analysis must know about: features' (ids as in State.step), then anywhere
+        self.all_steps = self.steps + self.anywhere_steps
+        self.anywhere = {a: info for info in self.anywhere_steps for a in sorted(info.actions)}
+        self.waits = {
+            self.action_index[name]: float(spec.seconds or 0)
+            for name, spec in model.actions.items()
+            if spec.skill == "wait"
+        }
+        # actions that do not go through the feature pointer's table
+        self.free_actions = tuple(sorted({*self.anywhere, *self.waits}))
+        self.short_enters = frozenset(
+            self.action_index[name]
+            for name, spec in model.actions.items()
+            if spec.too_short == "enters"
+        )
         self.first_steps = self._first_steps()
         self.targets = self._compile_targets()
         self.guards = self._compile_guards()
@@ -243,41 +266,54 @@ class CompiledModel:
         assigns = effect == "reset" or isinstance(effect, GoTo)  # choosing, not stepping
         return (TABLE, tables, assigns)
 
+    def _step_parts(
+        self, step: Any
+    ) -> tuple[
+        list[int],
+        dict[int, tuple[Any, ...]],
+        tuple[tuple[int, tuple[tuple[int, ...] | None, ...]], ...],
+    ]:
+        """A step's action ids, their compiled effects and its side effects."""
+        var = self.vars[self.var_index[step.variable]] if step.variable else None
+        action_ids = [self.action_index[a] for a in step.actions]
+        effects = {
+            a: self._effect(default_effect(step, self.action_names[a], self.model), var, a)
+            for a in action_ids
+        }
+        side: list[tuple[int, tuple[tuple[int, ...] | None, ...]]] = []
+        for target, value in step.set.items():
+            info = self.vars[self.var_index[target]]
+            side.append(
+                (
+                    self.var_index[target],
+                    tuple(
+                        None if d is None else _table_for(GoTo(to=value), d, info.spec)
+                        for d in info.domains
+                    ),
+                )
+            )
+        for target in step.reset:
+            info = self.vars[self.var_index[target]]
+            side.append(
+                (
+                    self.var_index[target],
+                    tuple(None if d is None else _index_table(d, d.initial) for d in info.domains),
+                )
+            )
+        return action_ids, effects, tuple(side)
+
     def _compile_steps(self) -> tuple[StepInfo, ...]:
         steps: list[StepInfo] = []
         for feature, feature_steps in self.model.features.items():
             base = len(steps)
             for index, step in enumerate(feature_steps):
-                var = self.vars[self.var_index[step.variable]] if step.variable else None
-                action_ids = [self.action_index[a] for a in step.actions]
-                effects = {
-                    a: self._effect(default_effect(step, self.action_names[a], self.model), var, a)
-                    for a in action_ids
-                }
-                side: list[tuple[int, tuple[tuple[int, ...] | None, ...]]] = []
-                for target, value in step.set.items():
-                    info = self.vars[self.var_index[target]]
-                    side.append(
-                        (
-                            self.var_index[target],
-                            tuple(
-                                None if d is None else _table_for(GoTo(to=value), d, info.spec)
-                                for d in info.domains
-                            ),
-                        )
-                    )
-                for target in step.reset:
-                    info = self.vars[self.var_index[target]]
-                    side.append(
-                        (
-                            self.var_index[target],
-                            tuple(
-                                None if d is None else _index_table(d, d.initial)
-                                for d in info.domains
-                            ),
-                        )
-                    )
+                action_ids, effects, side = self._step_parts(step)
                 next_step = base + index + 1 if index + 1 < len(feature_steps) else -1
+                entry = (
+                    getattr(self.model.variables[step.variable], "entry", None)
+                    if step.variable
+                    else None
+                )
                 steps.append(
                     StepInfo(
                         feature,
@@ -285,12 +321,34 @@ class CompiledModel:
                         self.var_index[step.variable] if step.variable else -1,
                         frozenset(action_ids),
                         effects,
-                        tuple(side),
+                        side,
                         next_step,
                         step.on_entry == "show",
+                        optional=step.optional,
+                        timeout=step.timeout,
+                        blank_clears=entry is not None and entry.other_keys == "clear",
                     )
                 )
         return tuple(steps)
+
+    def _compile_anywhere(self) -> tuple[StepInfo, ...]:
+        """The ``anywhere`` entries, as steps of no feature (index -1, no next step)."""
+        compiled = []
+        for step in self.model.anywhere:
+            action_ids, effects, side = self._step_parts(step)
+            compiled.append(
+                StepInfo(
+                    "",
+                    -1,
+                    self.var_index[step.variable] if step.variable else -1,
+                    frozenset(action_ids),
+                    effects,
+                    side,
+                    -1,
+                    leave=step.leave,
+                )
+            )
+        return tuple(compiled)
 
     def _first_steps(self) -> dict[int, int]:
         """Action -> the step id of the first feature (in order) whose first step has it."""
@@ -312,8 +370,17 @@ class CompiledModel:
                     step = self.steps[pointer]
                     if action in step.actions:
                         target = pointer
-                    elif step.next_step >= 0 and action in self.steps[step.next_step].actions:
-                        target = step.next_step
+                    else:
+                        later = step.next_step  # the next step, or past optional ones
+                        while later >= 0:
+                            if action in self.steps[later].actions:
+                                target = later
+                                break
+                            later = (
+                                self.steps[later].next_step if self.steps[later].optional else -1
+                            )
+                if action in self.anywhere or action in self.waits:
+                    target = -1  # these never move the pointer through this table
                 row.append(target)
             rows.append(tuple(row))
         return tuple(rows)
@@ -410,16 +477,20 @@ class CompiledModel:
 
     def refusal(self, state: State, action: int) -> int | None:
         """Why ``action`` would be refused in ``state`` (guard index or negative code), or None."""
+        if action in self.waits:
+            return None  # nothing stops anyone from waiting
         values = state.values
         for g, guard in enumerate(self.guards):
             if action not in guard.allowed and all(values[v] in ok for v, ok in guard.conditions):
                 return g
-        if self.targets[state.step + 1][action] < 0:
+        if action not in self.anywhere and self.targets[state.step + 1][action] < 0:
             return NOT_HERE
         return None
 
     def apply(self, state: State, action: int, seconds: float | None = None) -> State | None:
         """The state after ``action``, or None when the appliance refuses it."""
+        if action in self.waits:
+            return self._wait(state, self.waits[action] if seconds is None else seconds)
         values = state.values
         for guard in self.guards:
             if action not in guard.allowed:
@@ -428,16 +499,44 @@ class CompiledModel:
                         break
                 else:
                     return None
+        needed = self.hold_seconds[action]
+        short = needed is not None and seconds is not None and seconds + 1e-9 < needed
+        anywhere = self.anywhere.get(action)
+        if anywhere is not None:
+            if short:
+                return None  # an anywhere hold has no procedure to enter when released early
+            target = -1 if anywhere.leave else state.step
+            return self._effects(state, anywhere, action, target, "", anywhere.effects[action][0])
         target = self.targets[state.step + 1][action]
         if target < 0:
             return None
-        needed = self.hold_seconds[action]
-        if needed is not None and seconds is not None and seconds + 1e-9 < needed:
-            return None
+        if short:
+            if action not in self.short_enters:
+                return None
+            # released early: the procedure moves as usual, the change does not happen
+            return state if target == state.step else State(values, target, "")
         step = self.steps[target]
         buffer = state.buffer if target == state.step else ""
         effect = step.effects[action]
         kind = NONE if step.show_on_entry and target != state.step else effect[0]
+        if kind == NONE and step.blank_clears and effect[0] == NONE:
+            buffer = ""  # a non-digit key ends the typing (Entry.other_keys)
+        return self._effects(state, step, action, target, buffer, kind)
+
+    def _wait(self, state: State, seconds: float) -> State:
+        """``seconds`` without a key: a step's timeout returns the appliance to no feature."""
+        if state.step >= 0:
+            timeout = self.steps[state.step].timeout
+            if timeout is not None and seconds + 1e-9 >= timeout:
+                return State(state.values, -1, "")
+        return state
+
+    def _effects(
+        self, state: State, step: StepInfo, action: int, target: int, buffer: str, kind: int
+    ) -> State:
+        """Apply a step's effect of ``action`` (of ``kind``) and its side effects."""
+        values = state.values
+        effect = step.effects[action]
         new = list(values)
         v = step.variable
         if kind == TABLE:

@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 from numbers import Real
 from typing import Any
 
-from apbot.model.display import lamp_for, show_template
+from apbot.model.display import lamp_for, show_template, typed_text
 from apbot.model.schema import TEMPLATE_FIELD, ApplianceModel
 from apbot.sim.compiled import NOT_HERE, CompiledModel, State, compiled_model
 
@@ -230,10 +230,11 @@ class Simulator:
             if var.spec.visible:
                 values[var.name] = compiled.value(state, var.name)
             key = (focus, state.values[focus], state.values[var.parent] if var.parent >= 0 else 0)
-            text = self._display_cache.get(key) if self._plain_show[focus] else None
+            typed = self._typed(state, focus)
+            text = self._display_cache.get(key) if self._plain_show[focus] and not typed else None
             if text is None:
-                text = self._show(state, focus)
-                if self._plain_show[focus]:
+                text = self._show(state, focus, typed)
+                if self._plain_show[focus] and not typed:
                     self._display_cache[key] = text
         else:
             text = self._template(compiled.model.display.idle, state)
@@ -265,12 +266,19 @@ class Simulator:
             if self.compiled.model.variables[name].visible:
                 values[name] = self.compiled.value(self.state, name)
 
-    def _show(self, state: State, v: int) -> str:
+    def _typed(self, state: State, v: int) -> str:
+        """The digits on display while they are typed (``Entry.shows: typed``), else ""."""
+        if not state.buffer or self.compiled.steps[state.step].variable != v:
+            return ""
+        entry = getattr(self.compiled.vars[v].spec, "entry", None)
+        return typed_text(entry, state.buffer) if entry and entry.shows == "typed" else ""
+
+    def _show(self, state: State, v: int, typed: str = "") -> str:
         var = self.compiled.vars[v]
         spec = var.spec
         if not spec.visible:
             return ""
-        value = self.compiled.render_value(state, v)
+        value = typed or self.compiled.render_value(state, v)
         show = show_template(spec, self.compiled.value(state, var.name))
         return self._template(show, state, value=value, label=spec.display_label(var.name)).strip()
 
