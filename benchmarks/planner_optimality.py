@@ -3,7 +3,7 @@
     python benchmarks/planner_optimality.py [--cases 1000] [--seed 0] [--max-states 30000]
                                             [--starts 20]
 
-Each case is a random model (``apbot.model.generate``, at most ``--max-states`` states) and a
+Each case is a random model (``apbot.testing.generate``, at most ``--max-states`` states) and a
 random goal. One breadth-first search forward from the initial state and one backward from the
 goal states give the true distance from every reachable state. Then
 
@@ -22,15 +22,15 @@ import argparse
 import random
 import time
 
-from apbot.model.generate import random_goal, random_model
 from apbot.model.goal import parse_goal
-from apbot.plan.bfs import (
+from apbot.sim.compiled import compiled_model
+from apbot.testing.bfs import (
     BfsBudgetExceeded,
     bound_violations,
     distances_to_goal,
     planner_mismatches,
 )
-from apbot.sim.compiled import compiled_model
+from apbot.testing.generate import random_goal, random_model
 
 
 def main() -> None:

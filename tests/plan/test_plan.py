@@ -6,10 +6,10 @@ import pytest
 
 from apbot.model.goal import GoalError
 from apbot.model.schema import ApplianceModel
-from apbot.plan.bfs import shortest_plan_length
 from apbot.plan.plan import Plan, Unreachable, plan
 from apbot.sim.compiled import compiled_model
 from apbot.sim.simulator import Simulator
+from apbot.testing.bfs import shortest_plan_length
 from tests.helpers import model_from
 
 

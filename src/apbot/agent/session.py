@@ -23,10 +23,11 @@ from apbot.agent.environment import Environment, Feedback
 from apbot.agent.episode import TaskContext
 from apbot.agent.perception import MISSING, UNREADABLE, Perceiver, Seen
 from apbot.model.domain import ValueProblem, parse_value
+from apbot.model.effects import default_effect
 from apbot.model.schema import Add, ApplianceModel, TimeVariable
 from apbot.model.values import format_hms, parse_hms
 from apbot.plan.plan import PlannedAction
-from apbot.sim.compiled import State, default_effect
+from apbot.sim.compiled import State
 from apbot.sim.simulator import Observation
 
 __all__ = ["MISSING", "UNREADABLE", "AgentConfig", "Executed", "Session", "Stop"]

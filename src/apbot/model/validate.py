@@ -27,6 +27,13 @@ from apbot.model.domain import (
     domain_size,
     normalise,
 )
+from apbot.model.effects import (
+    constant_table,
+    default_effect,
+    effect_table,
+    entry_digits,
+    value_index,
+)
 from apbot.model.limits import (
     MAX_MODEL_VALUES,
     MAX_PARTS,
@@ -296,8 +303,6 @@ def _close(text: str, options: list[str]) -> str:
 
 
 def _effects_of(step: Step, model: ApplianceModel) -> dict[str, Any]:
-    from apbot.sim.compiled import default_effect
-
     return {a: default_effect(step, a, model) for a in step.actions if a in model.actions}
 
 
@@ -436,9 +441,7 @@ def _steps(model: ApplianceModel, domains: Mapping[str, list[Domain]]) -> Iterat
 
 
 def _in_some(value: Any, var: Any, doms: list[Domain]) -> bool:
-    from apbot.sim.compiled import _value_index
-
-    return any(_value_index(d, value) is not None for d in doms)
+    return any(value_index(d, value) is not None for d in doms)
 
 
 def _effect_problem(effect: Any, var: Any, doms: list[Domain]) -> str | None:
@@ -542,8 +545,6 @@ def _duplicates(model: ApplianceModel) -> Iterator[Problem]:
 
 
 def _guards(model: ApplianceModel) -> Iterator[Problem]:
-    from apbot.sim.compiled import _value_index
-
     for g, guard in enumerate(model.guards):
         for name, wanted in guard.when.items():
             var = model.variables[name]
@@ -556,7 +557,7 @@ def _guards(model: ApplianceModel) -> Iterator[Problem]:
                 continue
             domain = build_domain(var)
             for value in wanted if isinstance(wanted, list) else [wanted]:
-                if _value_index(domain, value) is None:
+                if value_index(domain, value) is None:
                     yield Problem(
                         ("guards", g, "when", name),
                         f"{value!r} is not a value of {name!r} ({preview(domain.values)})",
@@ -606,21 +607,13 @@ def _controls(model: ApplianceModel) -> Iterator[Problem]:
 
 def _reachability(model: ApplianceModel) -> Iterator[Problem]:
     """Values no sequence of effects can reach from the initial value (or a case default)."""
-    from apbot.sim.compiled import compiled_model
-
-    compiled = compiled_model(model)
-    for v, var in enumerate(compiled.vars):
-        for case, domain in enumerate(var.domains):
-            if domain is None:
-                continue
-            reached = reachable_indices(compiled, v, case)
+    for name in model.variables:
+        for case, domain in _case_domains(model, name):
+            reached = reachable_indices(model, name, domain)
             missing = [domain.values[i] for i in range(len(domain)) if i not in reached]
             if missing:
-                parent = compiled.vars[var.parent].domains[0] if var.parent >= 0 else None
-                where: tuple[str | int, ...] = (
-                    ("variables", var.name)
-                    if parent is None
-                    else ("variables", var.name, "cases", str(parent.values[case]))
+                where: tuple[str, ...] = (
+                    ("variables", name) if case is None else ("variables", name, "cases", case)
                 )
                 shown = ", ".join(str(m) for m in missing[:6])
                 more = f" and {len(missing) - 6} more" if len(missing) > 6 else ""
@@ -632,31 +625,51 @@ def _reachability(model: ApplianceModel) -> Iterator[Problem]:
                 )
 
 
-def reachable_indices(compiled: Any, v: int, case: int) -> set[int]:
-    """Indices of one domain reachable from its initial value through any effect of the model."""
-    from apbot.sim.compiled import CLEAR, DIGIT, TABLE, entry_digits
+def _case_domains(model: ApplianceModel, name: str) -> list[tuple[str | None, Domain]]:
+    """A variable's domains: its own (case None), or one per programme value with a case."""
+    var = model.variables[name]
+    if var.depends_on is None:
+        return [(None, build_domain(var))]
+    parent = model.variables[var.depends_on]
+    cases = var.cases or {}
+    return [
+        (value, build_domain(var, cases[value]))
+        for value in build_domain(parent).values
+        if value in cases
+    ]
 
-    var = compiled.vars[v]
-    domain = var.domains[case]
+
+def reachable_indices(model: ApplianceModel, name: str, domain: Domain) -> set[int]:
+    """Indices of one of ``name``'s domains reachable from its initial value through any
+    effect or side effect of the model (the effect semantics of :mod:`apbot.model.effects`)."""
+    var = model.variables[name]
     tables: list[tuple[int, ...]] = []
     typed = False
-    for step in compiled.steps:
-        if step.variable == v:
-            for effect in step.effects.values():
-                if effect[0] in (TABLE, CLEAR) and effect[1][case] is not None:
-                    tables.append(effect[1][case])
-                elif effect[0] == DIGIT and getattr(var.spec, "entry", None) is not None:
-                    typed = True
-        for target, side_tables in step.side:
-            if target == v and side_tables[case] is not None:
-                tables.append(side_tables[case])
+    for steps in model.features.values():
+        for step in steps:
+            if step.variable == name:
+                for action in step.actions:
+                    effect = default_effect(step, action, model)
+                    if effect == "digit":
+                        typed = typed or getattr(var, "entry", None) is not None
+                    elif effect == "clear":
+                        tables.append(constant_table(domain, domain.initial))
+                    elif effect != "none":
+                        table = effect_table(effect, domain, var)
+                        if table is not None:
+                            tables.append(table)
+            if name in step.set:
+                table = effect_table(GoTo(to=step.set[name]), domain, var)
+                if table is not None:
+                    tables.append(table)
+            if name in step.reset:
+                tables.append(constant_table(domain, domain.initial))
     typeable: set[int] = set()
-    if typed:  # once, not once per digit key
+    entry = getattr(var, "entry", None)
+    if typed and entry is not None:  # once, not once per digit key
         assert domain.magnitudes is not None
         typeable = {
-            i
-            for i, m in enumerate(domain.magnitudes)
-            if entry_digits(m, var.spec.entry) is not None
+            i for i, m in enumerate(domain.magnitudes) if entry_digits(m, entry) is not None
         }
     reached = {domain.initial} | typeable
     frontier = list(reached)

@@ -24,8 +24,9 @@ from __future__ import annotations
 from collections import deque
 from typing import Any
 
+from apbot.model.effects import entry_digits
 from apbot.plan.goals import CompiledGoal
-from apbot.sim.compiled import CLEAR, DIGIT, TABLE, CompiledModel, State, entry_digits
+from apbot.sim.compiled import CLEAR, DIGIT, TABLE, CompiledModel, State
 
 INF = float("inf")
 _ABSENT = ("absent",)  # a dependent setting that does not exist in the current programme

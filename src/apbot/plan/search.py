@@ -20,10 +20,11 @@ from collections.abc import Hashable
 from dataclasses import dataclass
 from operator import itemgetter
 
+from apbot.model.effects import entry_digits
 from apbot.plan.bounds import INF, LowerBound, distances_to, typeable_values
 from apbot.plan.goals import CompiledGoal
 from apbot.plan.visits import SMALL_DOMAIN, Exit, explore_visit, keypad_exits
-from apbot.sim.compiled import DIGIT, CompiledModel, State, entry_digits
+from apbot.sim.compiled import DIGIT, CompiledModel, State
 
 DEFAULT_BUDGET = 200_000
 # Path cost is lexicographic, packed in one int: presses × PRESS + presses made while a guard

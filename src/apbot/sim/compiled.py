@@ -35,17 +35,22 @@ from typing import Any, NamedTuple
 
 from apbot.model.display import display_value
 from apbot.model.domain import Domain, build_domain
+from apbot.model.effects import (
+    constant_table,
+    default_effect,
+    effect_table,
+    parse_entry,
+    type_digit,
+    value_index,
+)
 from apbot.model.schema import (
-    Add,
     ApplianceModel,
     DiscreteVariable,
-    Entry,
     GoTo,
     NumericVariable,
     TimeVariable,
-    time_step_seconds,
 )
-from apbot.model.values import format_hms, parse_hms, tidy_number
+from apbot.model.values import format_hms, tidy_number
 
 NONE, TABLE, DIGIT, CLEAR = 0, 1, 2, 3
 
@@ -102,91 +107,6 @@ class GuardInfo:
     hide: bool = False
 
 
-def _index_table(domain: Domain, target: int) -> tuple[int, ...]:
-    return (target,) * len(domain)
-
-
-def _table_for(effect: Any, domain: Domain, var: Any) -> tuple[int, ...] | None:
-    """``new_index = table[index]`` for one effect on one domain (None: no such table)."""
-    n = len(domain)
-    if effect == "next":
-        return tuple(domain.next_index(i) for i in range(n))
-    if effect == "prev":
-        return tuple(domain.prev_index(i) for i in range(n))
-    if effect == "toggle":
-        return tuple((i + 1) % n for i in range(n))
-    if effect == "reset":
-        return _index_table(domain, domain.initial)
-    if isinstance(effect, GoTo):
-        target = _value_index(domain, effect.to)
-        return None if target is None else _index_table(domain, target)
-    if isinstance(effect, Add):
-        amount = _amount(effect.add, var)
-        assert domain.magnitudes is not None
-        mags = domain.magnitudes
-        return tuple(domain.snap_index(mags[i] + amount, down=amount < 0) for i in range(n))
-    return tuple(range(n))
-
-
-def _amount(amount: Any, var: Any) -> float:
-    if isinstance(var, TimeVariable):
-        return float(time_step_seconds(amount) if isinstance(amount, str) else amount)
-    return float(amount)
-
-
-def _value_index(domain: Domain, raw: Any) -> int | None:
-    """Index of a model-written value (``to:``, ``set:``, guard values) in a domain."""
-    if domain.kind == "discrete":
-        return domain.index.get(str(raw))
-    if domain.kind == "time":
-        try:
-            seconds = parse_hms(str(raw))
-        except ValueError:
-            return None
-        assert domain.magnitudes is not None
-        return next((i for i, m in enumerate(domain.magnitudes) if m == seconds), None)
-    try:
-        number = float(raw)
-    except (TypeError, ValueError):
-        return None
-    assert domain.magnitudes is not None
-    return next((i for i, m in enumerate(domain.magnitudes) if abs(m - number) < 1e-9), None)
-
-
-def parse_entry(buffer: str, entry: Entry) -> float | None:
-    """The number a keypad buffer stands for (seconds for times), or None if it is not valid.
-
-    >>> parse_entry("130", Entry(format="mm:ss")), parse_entry("190", Entry(format="mm:ss"))
-    (90.0, None)
-    """
-    if not buffer:
-        return None
-    fmt = entry.format
-    if fmt == "number":
-        return float(int(buffer))
-    if fmt == "minutes":
-        return float(int(buffer) * 60)
-    if fmt == "seconds":
-        return float(int(buffer))
-    padded = buffer.zfill(6 if fmt == "hh:mm:ss" else 4)
-    if fmt == "hh:mm:ss":
-        hours, minutes, secs = int(padded[:-4]), int(padded[-4:-2]), int(padded[-2:])
-        if minutes >= 60 or secs >= 60:
-            return None
-        return float(hours * 3600 + minutes * 60 + secs)
-    high, low = int(padded[:-2]), int(padded[-2:])
-    if low >= 60:
-        return None
-    return float(high * 60 + low) if fmt == "mm:ss" else float(high * 3600 + low * 60)
-
-
-def type_digit(buffer: str, digit: str, entry: Entry) -> str:
-    """The buffer after typing one digit (shift out the oldest, or ignore, when full)."""
-    if len(buffer) < entry.digits():
-        return buffer + digit
-    return (buffer + digit)[1:] if entry.overflow == "shift" else buffer
-
-
 class CompiledModel:
     """Lookup tables for a validated model. Build once, step many times."""
 
@@ -237,9 +157,11 @@ class CompiledModel:
         if effect == "digit":
             return (DIGIT, self.model.actions[self.action_names[action]].digit)
         if effect == "clear":
-            reset = tuple(None if d is None else _index_table(d, d.initial) for d in var.domains)
+            reset = tuple(None if d is None else constant_table(d, d.initial) for d in var.domains)
             return (CLEAR, reset)
-        tables = tuple(None if d is None else _table_for(effect, d, var.spec) for d in var.domains)
+        tables = tuple(
+            None if d is None else effect_table(effect, d, var.spec) for d in var.domains
+        )
         assigns = effect == "reset" or isinstance(effect, GoTo)  # choosing, not stepping
         return (TABLE, tables, assigns)
 
@@ -261,7 +183,7 @@ class CompiledModel:
                         (
                             self.var_index[target],
                             tuple(
-                                None if d is None else _table_for(GoTo(to=value), d, info.spec)
+                                None if d is None else effect_table(GoTo(to=value), d, info.spec)
                                 for d in info.domains
                             ),
                         )
@@ -272,7 +194,7 @@ class CompiledModel:
                         (
                             self.var_index[target],
                             tuple(
-                                None if d is None else _index_table(d, d.initial)
+                                None if d is None else constant_table(d, d.initial)
                                 for d in info.domains
                             ),
                         )
@@ -327,9 +249,7 @@ class CompiledModel:
                 domain = var.domains[0]
                 assert domain is not None
                 options = wanted if isinstance(wanted, list) else [wanted]
-                indices = frozenset(
-                    i for o in options if (i := _value_index(domain, o)) is not None
-                )
+                indices = frozenset(i for o in options if (i := value_index(domain, o)) is not None)
                 conditions.append((self.var_index[name], indices))
             allowed = frozenset(self.action_index[a] for a in guard.only)
             guards.append(
@@ -528,53 +448,6 @@ def _canonical(domain: Domain, magnitude: float) -> Any:
     if domain.kind == "time":
         return format_hms(int(magnitude))
     return tidy_number(magnitude)
-
-
-def default_effect(step: Any, action: str, model: ApplianceModel) -> Any:
-    """The effect of ``action`` in ``step``, with the defaults filled in.
-
-    With no ``effect``: a step that adjusts a variable with keypad keys types digits; with a
-    single action it steps to the next value; a step without a variable has no main effect.
-    """
-    if isinstance(step.effect, dict):
-        return step.effect.get(action, "none")
-    if step.effect is not None:
-        return step.effect
-    if step.variable is None:
-        return "none"
-    if model.actions[action].digit is not None:
-        return "digit"
-    return "next"
-
-
-def entry_digits(magnitude: float, entry: Entry) -> str | None:
-    """The shortest digit string whose entry parses to ``magnitude`` (None: not typeable).
-
-    Digits are right-aligned and zero-padded, so leading zeros never help.
-
-    >>> entry_digits(90, Entry(format="mm:ss")), entry_digits(5400, Entry(format="h:mm"))
-    ('130', '130')
-    """
-    if magnitude < 0 or abs(magnitude - round(magnitude)) > 1e-9:
-        return None
-    total = round(magnitude)
-    fmt = entry.format
-    if fmt in ("number", "seconds"):
-        text = str(total)
-    elif fmt == "minutes":
-        if total % 60:
-            return None
-        text = str(total // 60)
-    elif fmt == "mm:ss":
-        text = str((total // 60) * 100 + total % 60)
-    elif fmt in ("hh:mm", "h:mm"):
-        if total % 60:
-            return None
-        text = str((total // 3600) * 100 + (total % 3600) // 60)
-    else:
-        hours, rest = divmod(total, 3600)
-        text = str(hours * 10000 + (rest // 60) * 100 + rest % 60)
-    return text if len(text) <= entry.digits() else None
 
 
 _COMPILED: dict[int, tuple[ApplianceModel, CompiledModel]] = {}

@@ -21,6 +21,8 @@ from pydantic import TypeAdapter
 
 from apbot.model.domain import all_values, build_domain
 from apbot.model.schema import Add, ApplianceModel, GoTo, Variable
+from apbot.sim.compiled import compiled_model
+from apbot.testing.bfs import random_walk
 
 # What :func:`format_parts` can report; the generator is tested to produce every one.
 FORMAT_PARTS = (
@@ -607,9 +609,6 @@ def random_goal(rng: random.Random, model: ApplianceModel) -> dict[str, Any]:
         return _default_elsewhere_goal(rng, model, rng.choice(dependents))
     names = rng.sample(list(model.variables), rng.randint(1, min(3, len(model.variables))))
     if rng.random() < 0.5:
-        from apbot.plan.bfs import random_walk
-        from apbot.sim.compiled import compiled_model
-
         compiled = compiled_model(model)
         state = random_walk(compiled, rng, rng.randint(3, 30))
         walked = {n: compiled.value(state, n) for n in names}
