@@ -459,6 +459,16 @@ def suite_stats(
         *(f"[bold]{stats['features'][f]}[/bold]" for f in FEATURES),
     )
     console.print(table)
+    constructs = Table(
+        title="format constructs (docs/model-format.md)",
+        box=box.SIMPLE_HEAD,
+        padding=(0, 1, 0, 0),
+    )
+    constructs.add_column("construct", no_wrap=True)
+    constructs.add_column("appliances", justify="right")
+    for name, count in stats["constructs"].items():
+        constructs.add_row(name, str(count))
+    console.print(constructs)
 
 
 @suite_app.command("check")

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 from apbot.bench.suite import CATEGORIES, Suite, load_suite
@@ -47,6 +48,22 @@ def appliance_features(model: ApplianceModel) -> dict[str, bool]:
     }
 
 
+def _unreachable_values(model: ApplianceModel) -> bool:
+    return any(v.unreachable for v in model.variables.values())
+
+
+# Constructs of the format added for behaviours real manuals describe (docs/model-format.md):
+# one row each in ``apbot suite stats``, counting the appliances whose model uses it.
+CONSTRUCTS: dict[str, Callable[[ApplianceModel], bool]] = {
+    "values declared unreachable": _unreachable_values,
+}
+
+
+def construct_counts(models: list[ApplianceModel]) -> dict[str, int]:
+    """Per construct of :data:`CONSTRUCTS`, how many of ``models`` use it."""
+    return {name: sum(uses(m) for m in models) for name, uses in CONSTRUCTS.items()}
+
+
 def suite_statistics(suite: Suite | None = None) -> dict[str, Any]:
     """Counts for ``apbot suite stats`` (and its ``--json``)."""
     suite = suite or load_suite()
@@ -75,4 +92,5 @@ def suite_statistics(suite: Suite | None = None) -> dict[str, Any]:
         "tasks": len(suite.tasks),
         "categories": categories,
         "features": totals,
+        "constructs": construct_counts([a.model for a in suite.appliances]),
     }

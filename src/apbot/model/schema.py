@@ -180,12 +180,25 @@ def _stringify(values: Any) -> Any:
 
 
 class _Variable(_Strict):
-    """Fields every variable kind shares."""
+    """Fields every variable kind shares.
+
+    ``unreachable`` lists values no key can set — the appliance sets them itself (an automatic
+    programme's own stage, a sensor reading) — so the checker accepts them unreached and the
+    planner reports a goal on one as unreachable, saying so.
+    """
 
     label: str | None = None
     show: str | dict[str, str] | None = None
     visible: bool = True
     depends_on: Ident | None = None
+    unreachable: list[Scalar] = Field(default_factory=list)
+
+    @field_validator("unreachable", mode="before")
+    @classmethod
+    def _unreachable_strings(cls, values: Any) -> Any:
+        if isinstance(values, list):
+            return [str(v).lower() if isinstance(v, bool) else v for v in values]
+        return values
 
     def display_label(self, name: str) -> str:
         """What the display calls the variable: its label, or its name in capitals."""

@@ -25,6 +25,7 @@ from apbot.model.domain import (
     ValueProblem,
     build_domain,
     domain_size,
+    marked_unreachable,
     normalise,
 )
 from apbot.model.effects import (
@@ -89,6 +90,7 @@ def check_model(model: ApplianceModel) -> list[Problem]:
     problems += _duplicates(model)
     problems += _guards(model)
     problems += _controls(model)
+    problems += _unreachable_marks(model)
     if not any(p.severity == "error" for p in problems):
         problems += _reachability(model)
     return problems
@@ -605,12 +607,43 @@ def _controls(model: ApplianceModel) -> Iterator[Problem]:
 # --- reachability ----------------------------------------------------------------------------
 
 
+def _unreachable_marks(model: ApplianceModel) -> Iterator[Problem]:
+    """Each value a variable declares ``unreachable`` is one of its values, and not the
+    initial value (of any programme) — that one the appliance starts in."""
+    for name, var in model.variables.items():
+        if not var.unreachable:
+            continue
+        defaults = {domain.values[domain.initial] for _, domain in _case_domains(model, name)}
+        for i, raw in enumerate(var.unreachable):
+            path = ("variables", name, "unreachable", i)
+            try:
+                value = normalise(var, raw)
+            except ValueProblem as exc:
+                yield Problem(path, f"{raw!r}: {exc}", "unreachable-value")
+                continue
+            if value in defaults:
+                yield Problem(
+                    path,
+                    f"{value!r} is {name!r}'s initial value (or a programme's default), so "
+                    "the appliance reaches it; remove it from `unreachable`",
+                    "unreachable-value",
+                )
+
+
 def _reachability(model: ApplianceModel) -> Iterator[Problem]:
-    """Values no sequence of effects can reach from the initial value (or a case default)."""
-    for name in model.variables:
+    """Values no sequence of effects can reach from the initial value (or a case default),
+    unless declared ``unreachable``; and declared ones that some effect reaches after all."""
+    for name, var in model.variables.items():
+        marked = marked_unreachable(var)
+        reached_marks: set[Any] = set()
         for case, domain in _case_domains(model, name):
             reached = reachable_indices(model, name, domain)
-            missing = [domain.values[i] for i in range(len(domain)) if i not in reached]
+            reached_marks.update(v for i, v in enumerate(domain.values) if i in reached)
+            missing = [
+                domain.values[i]
+                for i in range(len(domain))
+                if i not in reached and domain.values[i] not in marked
+            ]
             if missing:
                 where: tuple[str, ...] = (
                     ("variables", name) if case is None else ("variables", name, "cases", case)
@@ -620,9 +653,18 @@ def _reachability(model: ApplianceModel) -> Iterator[Problem]:
                 yield Problem(
                     where,
                     f"no action can reach {shown}{more}; fix the ranges or the "
-                    "effects that adjust it",
+                    "effects that adjust it, or declare values only the appliance sets "
+                    "under `unreachable`",
                     "unreachable-value",
                 )
+        for value in sorted(marked & reached_marks, key=str):
+            yield Problem(
+                ("variables", name, "unreachable"),
+                f"{value!r} is declared unreachable but an action of the model reaches it; "
+                "remove it from `unreachable`",
+                "unreachable-value",
+                severity="warning",
+            )
 
 
 def _case_domains(model: ApplianceModel, name: str) -> list[tuple[str | None, Domain]]:

@@ -18,6 +18,7 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
+from apbot.model.domain import marked_unreachable
 from apbot.model.goal import GoalError, parse_goal
 from apbot.model.schema import ApplianceModel
 from apbot.plan.goals import CompiledGoal
@@ -200,6 +201,12 @@ def _explain(
     if blocked:
         parts = []
         for name in blocked:
+            if goal[name] in marked_unreachable(compiled.model.variables[name]):
+                parts.append(
+                    f"{name} cannot become {goal[name]!r}: the model declares it unreachable "
+                    f"(variables.{name}.unreachable: the appliance sets it itself, no key does)"
+                )
+                continue
             current = compiled.value(start, name)
             reach = _forward_values(compiled, start, compiled.var_index[name])
             shown = ", ".join(str(v) for v in reach[:8]) + (", ..." if len(reach) > 8 else "")

@@ -21,6 +21,7 @@ from pydantic import TypeAdapter
 
 from apbot.model.domain import all_values, build_domain
 from apbot.model.schema import Add, ApplianceModel, GoTo, Variable
+from apbot.model.validate import reachable_indices
 from apbot.sim.compiled import compiled_model
 from apbot.testing.bfs import random_walk
 
@@ -58,6 +59,7 @@ FORMAT_PARTS = (
     "toggle",
     "two-control hold",
     "two programmes",
+    "unreachable values",
     "wrap",
 )
 
@@ -199,7 +201,22 @@ class _Builder:
             self._add_number_guard()
         if rng.random() < 0.3:
             self._add_side_effect_key()
+        if len(self.actions) % 2 == 0:  # decided without a draw: earlier seeds keep their models
+            self._mark_unreachable()
         return self.model()
+
+    def _mark_unreachable(self) -> None:
+        """Declare the values no key reaches ``unreachable`` (an automatic programme's own
+        stages): a go-to key per programme for only some programmes leaves some out."""
+        model = self.model()
+        for name in model.variables:
+            found: set[Any] = set()
+            for domain in _case_domains(model, name):
+                reached = reachable_indices(model, name, domain)
+                found.update(v for i, v in enumerate(domain.values) if i not in reached)
+            defaults = {d.values[d.initial] for d in _case_domains(model, name)}
+            if found - defaults:
+                self.variables[name]["unreachable"] = sorted(found - defaults, key=str)
 
     def _add_power(self) -> None:
         """A power key guarding everything else; switching off may forget settings later."""
@@ -502,6 +519,13 @@ def _dependent_variable(
     return {"type": kind, "depends_on": parent, "cases": cases, "wrap": wrap}
 
 
+def _case_domains(model: ApplianceModel, name: str) -> list[Any]:
+    var = model.variables[name]
+    if var.depends_on is None:
+        return [build_domain(var)]
+    return [build_domain(var, case) for case in (var.cases or {}).values()]
+
+
 def _value_count(var: dict[str, Any]) -> int:
     if "values" in var:
         return len(var["values"])
@@ -536,6 +560,8 @@ def format_parts(model: ApplianceModel) -> set[str]:
     if len(parents) > 1:
         parts.add("two programmes")
     for var in model.variables.values():
+        if var.unreachable:
+            parts.add("unreachable values")
         if var.depends_on:
             parts.add("dependent setting")
             parent_values = build_domain(model.variables[var.depends_on]).values
