@@ -96,7 +96,8 @@ def check(
 ) -> None:
     """Validate a model (or a suite appliance directory); exit 1 if it has errors."""
     from apbot.model.load import line_of, load_model
-    from apbot.model.validate import check_goal, check_model
+    from apbot.model.validate import check_goal
+    from apbot.sim.checks import check_model
 
     path = Path(model)
     try:
