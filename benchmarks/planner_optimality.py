@@ -30,7 +30,10 @@ from apbot.testing.bfs import (
     distances_to_goal,
     planner_mismatches,
 )
-from apbot.testing.generate import random_goal, random_model
+from apbot.testing.generate import format_parts, random_goal, random_model
+
+# parts of the format added for issue 12: cases using each are counted on their own
+NEWER_PARTS = ("conditional effect", "one-position guard", "skip", "unreachable values")
 
 
 def main() -> None:
@@ -43,6 +46,7 @@ def main() -> None:
     cases = too_large = starts_compared = states_checked = 0
     wrong_cases = unsound_cases = wrong_plans = unsound_states = unreachable = 0
     lengths: list[int] = []
+    by_part = {part: [0, 0, 0] for part in NEWER_PARTS}  # cases, starts compared, mismatches
     started = time.perf_counter()
     for seed in range(args.seed, args.seed + args.cases):
         rng = random.Random(seed)
@@ -61,6 +65,10 @@ def main() -> None:
             starts = [states[0], *picker.sample(states[1:], args.starts - 1)]
         wrong = planner_mismatches(compiled, goal, starts, distance)
         unsound = bound_violations(compiled, goal, states, distance)
+        for part in format_parts(model) & set(NEWER_PARTS):
+            by_part[part][0] += 1
+            by_part[part][1] += len(starts)
+            by_part[part][2] += len(wrong)
         starts_compared += len(starts)
         states_checked += len(states)
         unreachable += sum(start not in distance for start in starts)
@@ -94,6 +102,8 @@ def main() -> None:
         f"{unsound_states} where the bound is above the distance (or not 0 at a goal) "
         f"in {unsound_cases} cases; {seconds:.1f} s"
     )
+    for part, (count, compared, mismatches) in by_part.items():
+        print(f"  using {part}: {count} cases, {compared} starts compared, {mismatches} mismatches")
 
 
 if __name__ == "__main__":

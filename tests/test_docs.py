@@ -28,4 +28,4 @@ def test_doc_examples_run(path: Path) -> None:
 
 def test_the_format_reference_has_examples() -> None:
     text = (Path(__file__).resolve().parents[1] / "docs" / "model-format.md").read_text()
-    assert text.count(">>> ") >= 4
+    assert text.count(">>> ") >= 25

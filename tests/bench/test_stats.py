@@ -18,6 +18,40 @@ USING: dict[str, str] = {
         features:
           start: [{actions: [press_start], variable: stage, effect: {to: drying}}]
     """,
+    "skip effects (hold to scroll)": """
+        controls: [{id: b, label: UP}]
+        variables: {menu: {type: discrete, values: [a, b, c, d]}}
+        actions: {press_up: {control: b}, hold_up: {control: b, skill: hold, seconds: 2}}
+        features:
+          menu:
+            - actions: [press_up, hold_up]
+              variable: menu
+              effect: {press_up: next, hold_up: {skip: 2}}
+    """,
+    "conditional effects": """
+        controls: [{id: b, label: START}]
+        variables: {cook: {type: numeric, ranges: [[0, 90, 30]]}}
+        actions: {press_start: {control: b}}
+        features:
+          start:
+            - actions: [press_start]
+              variable: cook
+              effect: {when: {cook: 0}, then: {add: 30}, otherwise: next}
+    """,
+    "other_than conditions (one dial position)": """
+        controls: [{id: d, kind: dial, label: MODE}, {id: b, label: GO}]
+        variables:
+          mode: {type: discrete, values: ["off", timer]}
+          go: {type: discrete, values: ["off", "on"]}
+        actions:
+          turn: {control: d, skill: turn_cw}
+          press_go: {control: b}
+        features:
+          mode: [{actions: [turn], variable: mode, effect: next}]
+          go: [{actions: [press_go], variable: go, effect: toggle}]
+        guards:
+          - {when: {mode: {other_than: timer}}, only: [turn]}
+    """,
 }
 
 

@@ -6,7 +6,7 @@ from collections.abc import Callable
 from typing import Any
 
 from apbot.bench.suite import CATEGORIES, Suite, load_suite
-from apbot.model.schema import ApplianceModel
+from apbot.model.schema import ApplianceModel, Conditional, OtherThan, Skip
 from apbot.sim.compiled import compiled_model
 
 FEATURES = (
@@ -52,10 +52,44 @@ def _unreachable_values(model: ApplianceModel) -> bool:
     return any(v.unreachable for v in model.variables.values())
 
 
+def _effects(model: ApplianceModel) -> list[Any]:
+    """Every effect a step writes, conditionals opened up (theirs and their branches)."""
+    found: list[Any] = []
+    for steps in model.features.values():
+        for step in steps:
+            pending = list(step.effect.values()) if isinstance(step.effect, dict) else [step.effect]
+            while pending:
+                effect = pending.pop()
+                found.append(effect)
+                if isinstance(effect, Conditional):
+                    pending += [effect.then, effect.otherwise]
+    return found
+
+
+def _skip(model: ApplianceModel) -> bool:
+    return any(isinstance(e, Skip) for e in _effects(model))
+
+
+def _conditional(model: ApplianceModel) -> bool:
+    return any(isinstance(e, Conditional) for e in _effects(model))
+
+
+def _other_than(model: ApplianceModel) -> bool:
+    return any(isinstance(w, OtherThan) for g in model.guards for w in g.when.values()) or any(
+        isinstance(w, OtherThan)
+        for e in _effects(model)
+        if isinstance(e, Conditional)
+        for w in e.when.values()
+    )
+
+
 # Constructs of the format added for behaviours real manuals describe (docs/model-format.md):
 # one row each in ``apbot suite stats``, counting the appliances whose model uses it.
 CONSTRUCTS: dict[str, Callable[[ApplianceModel], bool]] = {
     "values declared unreachable": _unreachable_values,
+    "skip effects (hold to scroll)": _skip,
+    "conditional effects": _conditional,
+    "other_than conditions (one dial position)": _other_than,
 }
 
 

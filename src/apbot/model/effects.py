@@ -10,7 +10,17 @@ from __future__ import annotations
 from typing import Any
 
 from apbot.model.domain import Domain
-from apbot.model.schema import Add, ApplianceModel, Entry, GoTo, TimeVariable, time_step_seconds
+from apbot.model.schema import (
+    Add,
+    ApplianceModel,
+    Conditional,
+    Entry,
+    GoTo,
+    OtherThan,
+    Skip,
+    TimeVariable,
+    time_step_seconds,
+)
 from apbot.model.values import parse_hms
 
 
@@ -57,6 +67,35 @@ def value_index(domain: Domain, raw: Any) -> int | None:
     return next((i for i, m in enumerate(domain.magnitudes) if abs(m - number) < 1e-9), None)
 
 
+def condition_values(wanted: Any) -> list[Any]:
+    """The values a condition names (``{other_than: ...}``: the ones it excludes)."""
+    listed = wanted.other_than if isinstance(wanted, OtherThan) else wanted
+    return list(listed) if isinstance(listed, list) else [listed]
+
+
+def condition_indices(domain: Domain, wanted: Any) -> frozenset[int]:
+    """The indices of ``domain`` a guard or effect condition accepts: one value, any of a
+    list, or with ``{other_than: ...}`` every value but those.
+
+    >>> from apbot.model.domain import build_domain
+    >>> from apbot.model.schema import DiscreteVariable
+    >>> dial = build_domain(DiscreteVariable(type="discrete", values=["off", "bake", "grill"]))
+    >>> sorted(condition_indices(dial, OtherThan(other_than="off")))
+    [1, 2]
+    """
+    named = {i for raw in condition_values(wanted) if (i := value_index(domain, raw)) is not None}
+    if isinstance(wanted, OtherThan):
+        return frozenset(range(len(domain))) - named
+    return frozenset(named)
+
+
+def leaf_effects(effect: Any) -> list[Any]:
+    """The plain effects a (possibly conditional) effect may apply."""
+    if isinstance(effect, Conditional):
+        return [*leaf_effects(effect.then), *leaf_effects(effect.otherwise)]
+    return [effect]
+
+
 def constant_table(domain: Domain, target: int) -> tuple[int, ...]:
     """The table of an assignment: every value goes to ``target``."""
     return (target,) * len(domain)
@@ -77,6 +116,14 @@ def effect_table(effect: Any, domain: Domain, var: Any) -> tuple[int, ...] | Non
     if isinstance(effect, GoTo):
         target = value_index(domain, effect.to)
         return None if target is None else constant_table(domain, target)
+    if isinstance(effect, Skip):
+        move = domain.next_index if effect.skip > 0 else domain.prev_index
+        table = []
+        for i in range(n):
+            for _ in range(abs(effect.skip)):
+                i = move(i)
+            table.append(i)
+        return tuple(table)
     if isinstance(effect, Add):
         amount = add_amount(effect.add, var)
         assert domain.magnitudes is not None

@@ -323,7 +323,64 @@ class Add(_Strict):
     add: Number | str
 
 
-Effect = EffectName | GoTo | Add
+class Skip(_Strict):
+    """Move several values along the variable's order at once (negative: back), each move
+    wrapping or clamping as ``next``/``prev`` do: a held ▲ that scrolls five menus at a time,
+    or a long range crossed in bigger strides."""
+
+    skip: int
+
+    @field_validator("skip")
+    @classmethod
+    def _not_zero(cls, value: int) -> int:
+        if value == 0:
+            raise ValueError("skip 0 changes nothing; use `none`")
+        return value
+
+
+class OtherThan(_Strict):
+    """A condition on every value but these: ``{other_than: "off"}`` (a dial anywhere but OFF)."""
+
+    other_than: Scalar | list[Scalar]
+
+
+Condition = Scalar | list[Scalar] | OtherThan  # one value, any of a list, or any but these
+
+
+def _condition_strings(value: Any) -> Any:
+    """Conditions compare with written values: YAML's ``on``/``off`` booleans become strings."""
+    if not isinstance(value, dict):
+        return value
+
+    def fix(item: Any) -> Any:
+        return str(item).lower() if isinstance(item, bool) else item
+
+    def fix_all(item: Any) -> Any:
+        if isinstance(item, list):
+            return [fix(i) for i in item]
+        if isinstance(item, dict) and "other_than" in item:
+            return {**item, "other_than": fix_all(item["other_than"])}
+        return fix(item)
+
+    return {k: fix_all(v) for k, v in value.items()}
+
+
+class Conditional(_Strict):
+    """An effect that depends on the state before the press: ``then`` while every condition
+    in ``when`` holds (as in a guard), else ``otherwise`` — a START/+30 s key that adds 30 s
+    when no time is set. Branches are value changes (no keypad digits); they may nest."""
+
+    when: dict[Ident, Condition] = Field(min_length=1)
+    then: Effect
+    otherwise: Effect = "none"
+
+    @field_validator("when", mode="before")
+    @classmethod
+    def _when_strings(cls, value: Any) -> Any:
+        return _condition_strings(value)
+
+
+Effect = EffectName | GoTo | Add | Skip | Conditional
 
 
 class Step(_Strict):
@@ -363,7 +420,7 @@ class Guard(_Strict):
     """
 
     name: str = ""
-    when: dict[Ident, Scalar | list[Scalar]] = Field(min_length=1)
+    when: dict[Ident, Condition] = Field(min_length=1)
     only: list[Ident]
     display: str = ""
     hide: bool = False
@@ -379,15 +436,7 @@ class Guard(_Strict):
     @field_validator("when", mode="before")
     @classmethod
     def _when_strings(cls, value: Any) -> Any:
-        if not isinstance(value, dict):
-            return value
-
-        def fix(item: Any) -> Any:
-            return str(item).lower() if isinstance(item, bool) else item
-
-        return {
-            k: ([fix(i) for i in v] if isinstance(v, list) else fix(v)) for k, v in value.items()
-        }
+        return _condition_strings(value)
 
 
 class Display(_Strict):
@@ -422,3 +471,5 @@ class ApplianceModel(_Strict):
 
 
 TEMPLATE_FIELD = re.compile(r"\{([a-z][a-z0-9_]*)\}")
+
+Conditional.model_rebuild()

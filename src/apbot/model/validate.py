@@ -29,10 +29,12 @@ from apbot.model.domain import (
     normalise,
 )
 from apbot.model.effects import (
+    condition_values,
     constant_table,
     default_effect,
     effect_table,
     entry_digits,
+    leaf_effects,
     value_index,
 )
 from apbot.model.limits import (
@@ -47,6 +49,7 @@ from apbot.model.schema import (
     TEMPLATE_FIELD,
     Add,
     ApplianceModel,
+    Conditional,
     Control,
     DiscreteVariable,
     GoTo,
@@ -401,6 +404,13 @@ def _steps(model: ApplianceModel, domains: Mapping[str, list[Domain]]) -> Iterat
                             "keypad",
                         )
             for key, effect in value_effects.items():
+                at = (
+                    (*path, "effect")
+                    if not isinstance(step.effect, dict)
+                    else (*path, "effect", key)
+                )
+                for when in _conditions_in(effect):
+                    yield from _condition_problems(model, (*at, "when"), when)
                 message = _effect_problem(effect, var, doms)
                 if message:
                     yield Problem(
@@ -442,11 +452,54 @@ def _steps(model: ApplianceModel, domains: Mapping[str, list[Domain]]) -> Iterat
             )
 
 
+def _conditions_in(effect: Any) -> list[dict[str, Any]]:
+    """The ``when`` of a conditional effect and of the conditionals nested in it."""
+    if not isinstance(effect, Conditional):
+        return []
+    return [effect.when, *_conditions_in(effect.then), *_conditions_in(effect.otherwise)]
+
+
+def _condition_problems(
+    model: ApplianceModel, path: tuple[PathPart, ...], when: Mapping[str, Any]
+) -> Iterator[Problem]:
+    """A condition (of a guard or a conditional effect) reads known independent variables
+    and names their values."""
+    variables = list(model.variables)
+    for name, wanted in when.items():
+        var = model.variables.get(name)
+        if var is None:
+            yield Problem((*path, name), _unknown("variable", name, variables), "reference")
+            continue
+        if var.depends_on is not None:
+            yield Problem(
+                (*path, name),
+                "conditions read independent variables (power, a programme, a time)",
+                "action-variable",
+            )
+            continue
+        domain = build_domain(var)
+        for value in condition_values(wanted):
+            if value_index(domain, value) is None:
+                yield Problem(
+                    (*path, name),
+                    f"{value!r} is not a value of {name!r} ({preview(domain.values)})",
+                    "action-variable",
+                )
+
+
 def _in_some(value: Any, var: Any, doms: list[Domain]) -> bool:
     return any(value_index(d, value) is not None for d in doms)
 
 
 def _effect_problem(effect: Any, var: Any, doms: list[Domain]) -> str | None:
+    if isinstance(effect, Conditional):
+        for branch in (effect.then, effect.otherwise):
+            if branch in ("digit", "clear"):
+                return f"a conditional effect changes the value; {branch} belongs to a keypad step"
+            message = _effect_problem(branch, var, doms)
+            if message:
+                return message
+        return None
     sizes = {len(d) for d in doms}
     if effect == "toggle" and sizes != {2}:
         return "toggle needs a variable with exactly two values; use next/prev"
@@ -558,7 +611,7 @@ def _guards(model: ApplianceModel) -> Iterator[Problem]:
                 )
                 continue
             domain = build_domain(var)
-            for value in wanted if isinstance(wanted, list) else [wanted]:
+            for value in condition_values(wanted):
                 if value_index(domain, value) is None:
                     yield Problem(
                         ("guards", g, "when", name),
@@ -681,6 +734,16 @@ def _case_domains(model: ApplianceModel, name: str) -> list[tuple[str | None, Do
     ]
 
 
+def _tables_of(effect: Any, domain: Domain, var: Any) -> list[tuple[int, ...]]:
+    """The value tables of one plain effect on one domain (none for digits and ``none``)."""
+    if effect == "clear":
+        return [constant_table(domain, domain.initial)]
+    if effect in ("digit", "none"):
+        return []
+    table = effect_table(effect, domain, var)
+    return [] if table is None else [table]
+
+
 def reachable_indices(model: ApplianceModel, name: str, domain: Domain) -> set[int]:
     """Indices of one of ``name``'s domains reachable from its initial value through any
     effect or side effect of the model (the effect semantics of :mod:`apbot.model.effects`)."""
@@ -691,15 +754,11 @@ def reachable_indices(model: ApplianceModel, name: str, domain: Domain) -> set[i
         for step in steps:
             if step.variable == name:
                 for action in step.actions:
+                    for effect in leaf_effects(default_effect(step, action, model)):
+                        tables += _tables_of(effect, domain, var)
                     effect = default_effect(step, action, model)
                     if effect == "digit":
                         typed = typed or getattr(var, "entry", None) is not None
-                    elif effect == "clear":
-                        tables.append(constant_table(domain, domain.initial))
-                    elif effect != "none":
-                        table = effect_table(effect, domain, var)
-                        if table is not None:
-                            tables.append(table)
             if name in step.set:
                 table = effect_table(GoTo(to=step.set[name]), domain, var)
                 if table is not None:

@@ -26,7 +26,7 @@ from typing import Any
 
 from apbot.model.effects import entry_digits
 from apbot.plan.goals import CompiledGoal
-from apbot.sim.compiled import CLEAR, DIGIT, TABLE, CompiledModel, State
+from apbot.sim.compiled import CLEAR, DIGIT, TABLE, CompiledModel, State, leaves
 
 INF = float("inf")
 _ABSENT = ("absent",)  # a dependent setting that does not exist in the current programme
@@ -65,7 +65,7 @@ def _value_graph(
     for step in compiled.steps:
         if step.variable == v:
             typed = False
-            for effect in step.effects.values():
+            for effect in leaves(step.effects.values()):
                 if effect[0] in (TABLE, CLEAR):
                     for case, domain in cases():
                         table = effect[1][case]
@@ -314,7 +314,7 @@ def _assigning_steps(compiled: CompiledModel, programme: int) -> list[set[int]]:
     steps: list[set[int]] = [set() for _ in domain.values]
     for sid, step in enumerate(compiled.steps):
         if step.variable == programme:
-            for effect in step.effects.values():
+            for effect in leaves(step.effects.values()):
                 if effect[0] in (TABLE, CLEAR) and effect[1][0] is not None:
                     for value in set(effect[1][0]):
                         steps[value].add(sid)

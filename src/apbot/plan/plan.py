@@ -197,16 +197,19 @@ def _explain(
             f"gave up after expanding {exc.expanded} search states (budget {search.budget});"
             " the goal may be reachable but is too costly to plan — raise the budget"
         )
+    declared = [
+        f"{name} cannot become {goal[name]!r}: the model declares it unreachable "
+        f"(variables.{name}.unreachable: the appliance sets it itself, no key does)"
+        for name in goal
+        if goal[name] in marked_unreachable(compiled.model.variables[name])
+        and goal[name] not in _forward_values(compiled, start, compiled.var_index[name])
+    ]
+    if declared:
+        return "; ".join(declared)
     blocked = search.bound.blocking(start)
     if blocked:
         parts = []
         for name in blocked:
-            if goal[name] in marked_unreachable(compiled.model.variables[name]):
-                parts.append(
-                    f"{name} cannot become {goal[name]!r}: the model declares it unreachable "
-                    f"(variables.{name}.unreachable: the appliance sets it itself, no key does)"
-                )
-                continue
             current = compiled.value(start, name)
             reach = _forward_values(compiled, start, compiled.var_index[name])
             shown = ", ".join(str(v) for v in reach[:8]) + (", ..." if len(reach) > 8 else "")

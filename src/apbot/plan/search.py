@@ -63,13 +63,7 @@ def relevant_variables(compiled: CompiledModel, goal: CompiledGoal) -> list[int]
     relevant = set(goal.variables)
     for guard in compiled.guards:
         relevant.update(v for v, _ in guard.conditions)
-    frontier = list(relevant)
-    while frontier:
-        parent = compiled.vars[frontier.pop()].parent
-        if parent >= 0 and parent not in relevant:
-            relevant.add(parent)
-            frontier.append(parent)
-    return sorted(relevant)
+    return sorted(compiled.influencers(relevant))
 
 
 class TaskSearch:
@@ -219,6 +213,7 @@ class TaskSearch:
                 compiled.vars[w].parent for w in writes if compiled.vars[w].parent >= 0
             }
             reads |= {v for guard in compiled.guards for v, _ in guard.conditions}
+            reads |= compiled.condition_variables(info)  # a conditional effect's branch
             cached = (tuple(sorted(reads)), tuple(sorted(writes)))
             self._footprints[step] = cached
         return cached

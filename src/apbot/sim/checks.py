@@ -8,10 +8,11 @@ looks for a reachable state where the guard holds and from which no sequence of 
 reaches a state where it does not.
 
 The search runs over states reduced to what decides the guards — the variables guards read,
-the programmes selecting their domains, the feature pointer, and the keypad buffer while it
-types one of those variables — which is exact: nothing else influences how those evolve. It
-stops after :data:`MAX_GUARD_STATES` such states; past that bound a state not yet expanded
-counts as one that may lift every guard, so an error is only ever reported when it is proved.
+the programmes selecting their domains, what conditional effects on them read, the feature
+pointer, and the keypad buffer while it types one of those variables — which is exact:
+nothing else influences how those evolve. It stops after :data:`MAX_GUARD_STATES` such
+states; past that bound a state not yet expanded counts as one that may lift every guard,
+so an error is only ever reported when it is proved.
 
 :func:`check_model` is the whole checker: the model's own checks, then these.
 """
@@ -40,15 +41,10 @@ def check_model(model: ApplianceModel) -> list[Problem]:
 
 
 def guard_key(compiled: CompiledModel, variables: set[int]) -> Callable[[State], Hashable]:
-    """A state reduced to ``variables`` (closed under the programmes selecting their domains),
+    """A state reduced to ``variables`` (closed under the programmes selecting their domains
+    and what conditional effects on them read: :meth:`CompiledModel.influencers`),
     the feature pointer, and the keypad buffer while it types one of them."""
-    kept = set(variables)
-    frontier = list(kept)
-    while frontier:
-        parent = compiled.vars[frontier.pop()].parent
-        if parent >= 0 and parent not in kept:
-            kept.add(parent)
-            frontier.append(parent)
+    kept = compiled.influencers(variables)
     order = sorted(kept)
     typing = tuple(
         step.variable in kept and any(e[0] == DIGIT for e in step.effects.values())

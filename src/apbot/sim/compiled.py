@@ -14,10 +14,11 @@ Feature pointer (kept from the paper)
 
 Effects
     The action that enters a step applies the step's effect too, unless the step says
-    ``on_entry: show``. Every value-changing effect (next, prev, toggle, go-to, add, reset)
-    compiles to a table
+    ``on_entry: show``. Every value-changing effect (next, prev, toggle, go-to, add, skip,
+    reset) compiles to a table
     ``new_index = table[current_index]`` per case of the variable; a keypad digit appends to the
-    buffer and sets the variable when the buffer parses to one of its values. Side effects
+    buffer and sets the variable when the buffer parses to one of its values; a conditional
+    effect picks its branch on the state before the action. Side effects
     (``set``, ``reset``) of a step follow its main effect. When a programme is chosen, settings
     that depend on it return to that programme's defaults: whenever it changes, and also when
     it is assigned without changing (a go-to key pressed again, a ``reset`` or ``set`` when the
@@ -30,21 +31,23 @@ Guards
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import Any, NamedTuple
 
 from apbot.model.display import display_value
 from apbot.model.domain import Domain, build_domain
 from apbot.model.effects import (
+    condition_indices,
     constant_table,
     default_effect,
     effect_table,
     parse_entry,
     type_digit,
-    value_index,
 )
 from apbot.model.schema import (
     ApplianceModel,
+    Conditional,
     DiscreteVariable,
     GoTo,
     NumericVariable,
@@ -52,7 +55,7 @@ from apbot.model.schema import (
 )
 from apbot.model.values import format_hms, tidy_number
 
-NONE, TABLE, DIGIT, CLEAR = 0, 1, 2, 3
+NONE, TABLE, DIGIT, CLEAR, COND = 0, 1, 2, 3, 4
 
 # rejection reasons (negative codes; a guard's refusal is its index >= 0)
 NOT_HERE = -1
@@ -154,6 +157,13 @@ class CompiledModel:
     def _effect(self, effect: Any, var: VarInfo | None, action: int) -> tuple[Any, ...]:
         if var is None or effect in (None, "none"):
             return (NONE,)
+        if isinstance(effect, Conditional):  # (COND, conditions, then, otherwise)
+            return (
+                COND,
+                self._conditions(effect.when),
+                self._effect(effect.then, var, action),
+                self._effect(effect.otherwise, var, action),
+            )
         if effect == "digit":
             return (DIGIT, self.model.actions[self.action_names[action]].digit)
         if effect == "clear":
@@ -240,22 +250,56 @@ class CompiledModel:
             rows.append(tuple(row))
         return tuple(rows)
 
+    def _conditions(self, when: dict[str, Any]) -> tuple[tuple[int, frozenset[int]], ...]:
+        """(variable, accepted value indices) per condition of a guard or conditional effect
+        (conditions read independent variables, so their one domain)."""
+        conditions = []
+        for name, wanted in when.items():
+            domain = self.vars[self.var_index[name]].domains[0]
+            assert domain is not None
+            conditions.append((self.var_index[name], condition_indices(domain, wanted)))
+        return tuple(conditions)
+
     def _compile_guards(self) -> tuple[GuardInfo, ...]:
         guards = []
         for guard in self.model.guards:
-            conditions = []
-            for name, wanted in guard.when.items():
-                var = self.vars[self.var_index[name]]
-                domain = var.domains[0]
-                assert domain is not None
-                options = wanted if isinstance(wanted, list) else [wanted]
-                indices = frozenset(i for o in options if (i := value_index(domain, o)) is not None)
-                conditions.append((self.var_index[name], indices))
             allowed = frozenset(self.action_index[a] for a in guard.only)
             guards.append(
-                GuardInfo(tuple(conditions), allowed, guard.display, guard.name, guard.hide)
+                GuardInfo(
+                    self._conditions(guard.when), allowed, guard.display, guard.name, guard.hide
+                )
             )
         return tuple(guards)
+
+    def condition_variables(self, step: StepInfo) -> set[int]:
+        """The variables a step's conditional effects read."""
+        found: set[int] = set()
+        pending = list(step.effects.values())
+        while pending:
+            effect = pending.pop()
+            if effect[0] == COND:
+                found.update(v for v, _ in effect[1])
+                pending += [effect[2], effect[3]]
+        return found
+
+    def influencers(self, variables: set[int]) -> set[int]:
+        """``variables`` with everything that decides how they change: the programmes
+        selecting their domains and the variables their steps' conditional effects read,
+        closed under both — a state reduced to these evolves them exactly."""
+        reads: dict[int, set[int]] = {}
+        for step in self.steps:
+            if step.variable >= 0:
+                reads.setdefault(step.variable, set()).update(self.condition_variables(step))
+        kept = set(variables)
+        frontier = list(kept)
+        while frontier:
+            v = frontier.pop()
+            parent = self.vars[v].parent
+            for u in ({parent} if parent >= 0 else set()) | reads.get(v, set()):
+                if u not in kept:
+                    kept.add(u)
+                    frontier.append(u)
+        return kept
 
     # --- running -----------------------------------------------------------------------------
 
@@ -357,6 +401,8 @@ class CompiledModel:
         step = self.steps[target]
         buffer = state.buffer if target == state.step else ""
         effect = step.effects[action]
+        while effect[0] == COND:  # conditions read the state before the action
+            effect = effect[2] if all(values[c] in ok for c, ok in effect[1]) else effect[3]
         kind = NONE if step.show_on_entry and target != state.step else effect[0]
         new = list(values)
         v = step.variable
@@ -451,6 +497,20 @@ def _canonical(domain: Domain, magnitude: float) -> Any:
 
 
 _COMPILED: dict[int, tuple[ApplianceModel, CompiledModel]] = {}
+
+
+def leaves(effects: Iterable[tuple[Any, ...]]) -> list[tuple[Any, ...]]:
+    """Compiled effects with every conditional replaced by the effects it may apply: what an
+    analysis over all states (a lower bound, reachable values) must consider."""
+    found: list[tuple[Any, ...]] = []
+    pending = list(effects)
+    while pending:
+        effect = pending.pop()
+        if effect[0] == COND:
+            pending += [effect[2], effect[3]]
+        else:
+            found.append(effect)
+    return found
 
 
 def compiled_model(model: ApplianceModel | CompiledModel) -> CompiledModel:

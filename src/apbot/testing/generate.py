@@ -20,7 +20,15 @@ from typing import Any
 from pydantic import TypeAdapter
 
 from apbot.model.domain import all_values, build_domain
-from apbot.model.schema import Add, ApplianceModel, GoTo, Variable
+from apbot.model.schema import (
+    Add,
+    ApplianceModel,
+    Conditional,
+    GoTo,
+    OtherThan,
+    Skip,
+    Variable,
+)
 from apbot.model.validate import reachable_indices
 from apbot.sim.compiled import compiled_model
 from apbot.testing.bfs import random_walk
@@ -29,6 +37,7 @@ from apbot.testing.bfs import random_walk
 FORMAT_PARTS = (
     "add",
     "clamp",
+    "conditional effect",
     "confirm step",
     "cycling programme key",
     "dependent setting",
@@ -47,6 +56,7 @@ FORMAT_PARTS = (
     "none effect",
     "number guard",
     "on_entry show",
+    "one-position guard",
     "piecewise",
     "power guard",
     "prev",
@@ -54,6 +64,7 @@ FORMAT_PARTS = (
     "reset side effect",
     "running guard",
     "set side effect",
+    "skip",
     "time",
     "time keypad",
     "toggle",
@@ -201,6 +212,9 @@ class _Builder:
             self._add_number_guard()
         if rng.random() < 0.3:
             self._add_side_effect_key()
+        # newer parts of the format come from a second generator seeded by what was drawn,
+        # so that every earlier seed still draws the same model underneath
+        _Extras(self, random.Random(repr((self.variables, self.features)))).add()
         if len(self.actions) % 2 == 0:  # decided without a draw: earlier seeds keep their models
             self._mark_unreachable()
         return self.model()
@@ -438,6 +452,88 @@ class _Builder:
             self.feature([step])
 
 
+class _Extras:
+    """Parts of the format added after the generator's first version, sprinkled over a drawn
+    model: a held key scrolling several values (``skip``), effects that depend on the state
+    (``when``/``then``/``otherwise``), and guards that let keys work in one position of a
+    mode only (``other_than``)."""
+
+    def __init__(self, builder: _Builder, rng: random.Random) -> None:
+        self.builder = builder
+        self.rng = rng
+
+    def add(self) -> None:
+        if self.rng.random() < 0.3:
+            self._hold_to_scroll()
+        if self.rng.random() < 0.35:
+            self._conditional()
+        if self.rng.random() < 0.5:
+            self._one_position()
+
+    def _conditional(self) -> None:
+        """One key's effect depends on an independent variable (its own, a mode, power)."""
+        b = self.builder
+        guarded = {n for g in b.guards for n in g["when"]}  # their release stays unconditional
+        steps = [s for s in self._adjusting() if s["variable"] not in guarded]
+        readable = [n for n, v in b.variables.items() if "depends_on" not in v]
+        if not steps or not readable:
+            return
+        step = self.rng.choice(steps)
+        key = self.rng.choice(step["actions"])
+        name = self.rng.choice(readable)
+        values = _some_values(b.variables[name])
+        chosen = self.rng.sample(values, self.rng.randint(1, max(1, len(values) - 1)))
+        condition: Any = chosen[0] if len(chosen) == 1 else chosen
+        if self.rng.random() < 0.3:
+            condition = {"other_than": chosen[0]}
+        otherwise = self.rng.choice(["none", "next", "prev", "reset"])
+        step["effect"][key] = {
+            "when": {name: condition},
+            "then": step["effect"][key],
+            "otherwise": otherwise,
+        }
+
+    def _one_position(self) -> None:
+        """A mode guard becomes one whose keys work in one position only (``other_than``)."""
+        b = self.builder
+        for guard in b.guards:
+            [(name, blocked)] = list(guard["when"].items())[:1] or [(None, None)]
+            spec = b.variables.get(name) if name else None
+            if isinstance(blocked, list) and spec and spec["type"] == "discrete":
+                free = [v for v in spec["values"] if v not in blocked]
+                guard["when"] = {name: {"other_than": self.rng.choice(free)}}
+                return
+
+    def _adjusting(self) -> list[dict[str, Any]]:
+        """Steps that adjust a variable by effects of their own (not keypad digits)."""
+        return [
+            step
+            for steps in self.builder.features.values()
+            for step in steps
+            if step.get("variable")
+            and isinstance(step.get("effect"), dict)
+            and set(step["effect"]) == set(step["actions"])  # a map from action to effect
+            and "digit" not in step["effect"].values()
+        ]
+
+    def _hold_to_scroll(self) -> None:
+        """Holding one of a step's keys (pressed, it moves one value) moves several at once."""
+        b = self.builder
+        keys = [
+            (step, key)
+            for step in self._adjusting()
+            for key in step["actions"]
+            if b.actions[key].get("skill", "press") == "press" and "control" in b.actions[key]
+        ]
+        if not keys:
+            return
+        step, key = self.rng.choice(keys)
+        name = f"a{len(b.actions)}"
+        b.actions[name] = {"control": b.actions[key]["control"], "skill": "hold", "seconds": 2}
+        step["actions"].append(name)
+        step["effect"][name] = {"skip": self.rng.choice([2, 3, -2, 5])}
+
+
 def _ranges(rng: random.Random) -> list[list[int]]:
     start = rng.choice([0, 1, 5, 10])
     step = rng.choice([1, 2, 5])
@@ -598,6 +694,10 @@ def format_parts(model: ApplianceModel) -> set[str]:
                     parts.add("add")
                 elif isinstance(effect, GoTo):
                     parts.add("go-to programme key" if step.variable in parents else "go-to")
+                elif isinstance(effect, Skip):
+                    parts.add("skip")
+                elif isinstance(effect, Conditional):
+                    parts.add("conditional effect")
                 elif effect in ("prev", "toggle", "none"):
                     parts.add(str(effect) + (" effect" if effect == "none" else ""))
                 elif effect == "reset":
@@ -608,6 +708,8 @@ def format_parts(model: ApplianceModel) -> set[str]:
                     parts.add("cycling programme key")
     for guard in model.guards:
         names = set(guard.when)
+        if any(isinstance(w, OtherThan) for w in guard.when.values()):
+            parts.add("one-position guard")
         if guard.hide:
             parts.add("hidden display")
         if "power" in names:
