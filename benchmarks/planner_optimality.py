@@ -33,7 +33,13 @@ from apbot.testing.bfs import (
 from apbot.testing.generate import format_parts, random_goal, random_model
 
 # parts of the format added for issue 12: cases using each are counted on their own
-NEWER_PARTS = ("conditional effect", "one-position guard", "skip", "unreachable values")
+NEWER_PARTS = (
+    "conditional effect",
+    "one-position guard",
+    "remembered setting",
+    "skip",
+    "unreachable values",
+)
 
 
 def main() -> None:

@@ -1,5 +1,6 @@
 """ApBot with the true model solves tasks on models that use the format's newer constructs
-(hold-to-scroll, conditional effects, one-position guards, values declared unreachable),
+(hold-to-scroll, conditional effects, one-position guards, settings remembered per
+programme, values declared unreachable),
 with display feedback only, in the optimal number of presses and without repairs; a goal on
 a value declared unreachable ends in a declared failure, not in wandering."""
 
@@ -15,7 +16,7 @@ from apbot.agent.registry import get_method
 from apbot.model.goal import parse_goal
 from apbot.plan.plan import plan
 from tests.helpers import model_from
-from tests.sim.test_behaviours import PLUS30, SCROLL
+from tests.sim.test_behaviours import PLUS30, SCROLL, WASHER
 
 DIAL = """
 controls: [{id: dial, kind: dial, label: MODE}, {id: plus, label: "+"}]
@@ -44,6 +45,8 @@ CASES = [
     (PLUS30, {"cook_time": "00:02:00", "running": "on"}),
     (DIAL, {"minutes": "15 min", "mode": "timer"}),
     (DIAL, {"minutes": "10", "mode": "toast"}),
+    (WASHER.replace("REMEMBER", "true"), {"programme": "synthetics", "temperature": "40"}),
+    (WASHER.replace("REMEMBER", "true"), {"temperature": "60", "power": "on"}),
 ]
 
 

@@ -18,6 +18,20 @@ USING: dict[str, str] = {
         features:
           start: [{actions: [press_start], variable: stage, effect: {to: drying}}]
     """,
+    "settings remembered per programme or zone": """
+        controls: [{id: z, label: ZONE}, {id: b, label: "+"}]
+        variables:
+          zone: {type: discrete, values: [front, rear]}
+          level:
+            type: numeric
+            depends_on: zone
+            remember: true
+            cases: {front: {ranges: [[0, 3, 1]]}, rear: {ranges: [[0, 3, 1]]}}
+        actions: {press_zone: {control: z}, press_plus: {control: b}}
+        features:
+          zone: [{actions: [press_zone], variable: zone, effect: next}]
+          level: [{actions: [press_plus], variable: level, effect: next}]
+    """,
     "skip effects (hold to scroll)": """
         controls: [{id: b, label: UP}]
         variables: {menu: {type: discrete, values: [a, b, c, d]}}

@@ -146,3 +146,100 @@ def test_a_guard_for_one_dial_position() -> None:
     wrong = text.replace("{other_than: timer}", "{other_than: grill}")
     with pytest.raises(ModelError, match="'grill' is not a value of 'mode'"):
         model_from(wrong)
+
+
+WASHER = """
+controls:
+  - {id: prog, label: PROGRAMME}
+  - {id: temp, label: TEMP}
+  - {id: power, label: POWER}
+  - {id: cotton_key, label: COTTON}
+variables:
+  power: {type: discrete, values: ["off", "on"]}
+  programme: {type: discrete, values: [cotton, synthetics, wool]}
+  temperature:
+    type: discrete
+    depends_on: programme
+    remember: REMEMBER
+    cases:
+      cotton: {values: ["30", "40", "60"], initial: "40"}
+      synthetics: ["30", "40"]
+actions:
+  press_power: {control: power}
+  press_programme: {control: prog}
+  press_temp: {control: temp}
+  press_cotton: {control: cotton_key}
+features:
+  power: [{actions: [press_power], variable: power, effect: toggle, reset: [temperature]}]
+  programme: [{actions: [press_programme], variable: programme, effect: next}]
+  cotton: [{actions: [press_cotton], variable: programme, effect: {to: cotton}}]
+  temperature: [{actions: [press_temp], variable: temperature, effect: next}]
+guards:
+  - {when: {power: "off"}, only: [press_power], display: "", hide: true}
+"""
+
+
+def _temperatures(remember: str, presses: list[str]) -> list[str | None]:
+    sim = Simulator(model_from(WASHER.replace("REMEMBER", remember)))
+    seen = []
+    for action in presses:
+        assert sim.step(action).accepted, action
+        seen.append(sim.value("temperature"))
+    return seen
+
+
+def test_a_remembered_setting_keeps_its_value_per_programme() -> None:
+    presses = ["press_power", "press_temp", "press_programme", "press_temp"]
+    presses += ["press_programme", "press_programme", "press_programme", "press_cotton"]
+    # cotton 60, synthetics 40, wool has none; back round: cotton 60, synthetics 40, cotton 60
+    assert _temperatures("true", presses) == ["40", "60", "30", "40", None, "60", "40", "60"]
+    assert _temperatures("false", presses) == ["40", "60", "30", "40", None, "40", "30", "40"]
+
+
+def test_a_reset_forgets_every_programmes_value() -> None:
+    presses = ["press_power", "press_temp", "press_programme", "press_temp", "press_power"]
+    presses += ["press_power", "press_programme", "press_programme"]
+    # switching off resets the temperature: cotton's 60 and synthetics' 40 are forgotten
+    assert _temperatures("true", presses)[-3:] == ["30", None, "40"]
+
+
+def test_remembered_settings_are_planned_exactly_from_every_state() -> None:
+    from apbot.model.goal import parse_goal
+    from apbot.testing.bfs import bound_violations, distances_to_goal, planner_mismatches
+
+    model = model_from(WASHER.replace("REMEMBER", "true"))
+    compiled = compiled_model(model)
+    for goal in (
+        {"temperature": "60"},
+        {"temperature": "30", "programme": "synthetics"},
+        {"temperature": "60", "power": "off"},
+        {"programme": "cotton", "temperature": "30"},
+    ):
+        canonical = parse_goal(model, goal)
+        states, distance = distances_to_goal(compiled, canonical)
+        assert len({s.memory for s in states}) > 1  # the kept values are part of the state
+        assert planner_mismatches(compiled, canonical, states, distance) == [], goal
+        assert bound_violations(compiled, canonical, states, distance) == [], goal
+
+
+def test_remember_needs_a_programme_and_states_keep_it_consistent() -> None:
+    text = BAD_REMEMBER
+    with pytest.raises(ModelError, match="`remember` keeps a value per programme"):
+        model_from(text)
+    compiled = compiled_model(model_from(WASHER.replace("REMEMBER", "true")))
+    state = compiled.initial_state()
+    assert state.memory == (1, 0)  # cotton's default 40, synthetics' 30
+    with pytest.raises(ValueError, match="memory must hold 2 kept values"):
+        compiled.check_state(state._replace(memory=()))
+    with pytest.raises(ValueError, match="keeps 2 for temperature in the current programme"):
+        compiled.check_state(state._replace(memory=(2, 0)))
+
+
+BAD_REMEMBER = """
+controls: [{id: b, label: UP}]
+variables:
+  level: {type: numeric, ranges: [[0, 3, 1]], remember: true}
+actions: {press_up: {control: b}}
+features:
+  level: [{actions: [press_up], variable: level, effect: next}]
+"""

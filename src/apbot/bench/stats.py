@@ -87,6 +87,9 @@ def _other_than(model: ApplianceModel) -> bool:
 # one row each in ``apbot suite stats``, counting the appliances whose model uses it.
 CONSTRUCTS: dict[str, Callable[[ApplianceModel], bool]] = {
     "values declared unreachable": _unreachable_values,
+    "settings remembered per programme or zone": lambda m: any(
+        v.remember for v in m.variables.values()
+    ),
     "skip effects (hold to scroll)": _skip,
     "conditional effects": _conditional,
     "other_than conditions (one dial position)": _other_than,

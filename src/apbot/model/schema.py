@@ -182,6 +182,8 @@ def _stringify(values: Any) -> Any:
 class _Variable(_Strict):
     """Fields every variable kind shares.
 
+    ``remember`` (with ``depends_on``) keeps the setting's value per programme: choosing
+    another programme shows that programme's own last value, not its default.
     ``unreachable`` lists values no key can set — the appliance sets them itself (an automatic
     programme's own stage, a sensor reading) — so the checker accepts them unreached and the
     planner reports a goal on one as unreachable, saying so.
@@ -191,6 +193,7 @@ class _Variable(_Strict):
     show: str | dict[str, str] | None = None
     visible: bool = True
     depends_on: Ident | None = None
+    remember: bool = False
     unreachable: list[Scalar] = Field(default_factory=list)
 
     @field_validator("unreachable", mode="before")

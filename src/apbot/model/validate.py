@@ -253,6 +253,15 @@ def _domains(model: ApplianceModel) -> tuple[dict[str, list[Domain]], list[Probl
     problems: list[Problem] = []
     for name, var in model.variables.items():
         path = ("variables", name)
+        if var.remember and var.depends_on is None:
+            problems.append(
+                Problem(
+                    (*path, "remember"),
+                    "`remember` keeps a value per programme; it needs `depends_on` (the "
+                    "programme or zone selecting the case)",
+                    "dependent",
+                )
+            )
         if var.depends_on is None:
             try:
                 domains[name] = [build_domain(var)]

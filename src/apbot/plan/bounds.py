@@ -86,12 +86,21 @@ def _value_graph(
                     if table is not None:
                         jumps.append((domain.values[table[0]], 0))
     if var.parent >= 0:  # a programme change restores the new programme's default
+        # ... or, for a ``remember`` setting, the value kept for it: any of its values
+        remembered = v in compiled.memory_slots
+
+        def landing(d: Any) -> list[Any]:
+            return list(d.values) if remembered else [d.values[d.initial]]
+
         if only_case is None:
             for case, d in enumerate(var.domains):
                 cost = reset_costs[case] if reset_costs else 0
-                jumps.append((_ABSENT, cost) if d is None else (d.values[d.initial], cost))
+                if d is None:
+                    jumps.append((_ABSENT, cost))
+                else:
+                    jumps.extend((value, cost) for value in landing(d))
         else:
-            jumps.extend((d.values[d.initial], 0) for _, d in cases())
+            jumps.extend((value, 0) for _, d in cases() for value in landing(d))
     return reverse, typed_anywhere, jumps
 
 

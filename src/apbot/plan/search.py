@@ -84,13 +84,19 @@ class TaskSearch:
             step.variable in relevant_set and any(e[0] == DIGIT for e in step.effects.values())
             for step in compiled.steps
         )
+        self._memory = compiled.memory_of(self.relevant)
         self.bound = LowerBound(compiled, goal)
-        self._visit_cache: dict[Hashable, list[tuple[tuple[int, ...], str, tuple[int, ...]]]] = {}
+        self._visit_cache: dict[
+            Hashable, list[tuple[tuple[int, ...], str, tuple[int, ...], tuple[int, ...]]]
+        ] = {}
         self._footprints: dict[int, tuple[tuple[int, ...], tuple[int, ...]]] = {}
         self._keypad_targets: dict[int, list[float]] = {}
 
     def key(self, state: State) -> Hashable:
         buffer = state.buffer if state.step >= 0 and self.keypad_step[state.step] else ""
+        if self._memory:  # what remembered settings keep for other programmes
+            kept = tuple(state.memory[s] for s in self._memory)
+            return (self._project(state.values), state.step, buffer, kept)
         return (self._project(state.values), state.step, buffer)
 
     def run(self, start: State) -> SearchResult:
@@ -175,6 +181,7 @@ class TaskSearch:
             tuple(values[r] for r in reads),
             state.buffer if continuing else "",
             continuing,
+            state.memory,  # a programme change takes back what a setting kept
         )
         outcomes = self._visit_cache.get(cache_key)
         if outcomes is None:
@@ -187,16 +194,16 @@ class TaskSearch:
 
                 exits = explore_visit(self.compiled, state, step, entry, inner_key)
             outcomes = [
-                (tuple(after.values[w] for w in writes), after.buffer, path)
+                (tuple(after.values[w] for w in writes), after.buffer, path, after.memory)
                 for after, path in exits
             ]
             self._visit_cache[cache_key] = outcomes
         rebuilt = []
-        for changed, buffer, path in outcomes:
+        for changed, buffer, path, memory in outcomes:
             new = list(values)
             for w, value in zip(writes, changed, strict=True):
                 new[w] = value
-            rebuilt.append((State(tuple(new), step, buffer), path))
+            rebuilt.append((State(tuple(new), step, buffer, memory), path))
         return rebuilt
 
     def _footprint(self, step: int) -> tuple[tuple[int, ...], tuple[int, ...]]:

@@ -51,10 +51,17 @@ def guard_key(compiled: CompiledModel, variables: set[int]) -> Callable[[State],
         for step in compiled.steps
     )
     pick = itemgetter(*order) if order else (lambda values: ())
+    memory = compiled.memory_of(kept)
 
     def key(state: State) -> Hashable:
         step = state.step
-        return (pick(state.values), step, state.buffer if step >= 0 and typing[step] else "")
+        kept_values = tuple(state.memory[s] for s in memory)
+        return (
+            pick(state.values),
+            step,
+            state.buffer if step >= 0 and typing[step] else "",
+            kept_values,
+        )
 
     return key
 

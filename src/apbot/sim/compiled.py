@@ -63,11 +63,13 @@ TOO_SHORT = -2
 
 
 class State(NamedTuple):
-    """An appliance state: value indices, feature-pointer step id, keypad buffer. Hashable."""
+    """An appliance state: value indices, feature-pointer step id, keypad buffer, and the
+    value each ``remember`` setting keeps for each programme (see ``memory_slots``). Hashable."""
 
     values: tuple[int, ...]
     step: int
     buffer: str
+    memory: tuple[int, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -99,6 +101,7 @@ class StepInfo:
     side: tuple[tuple[int, tuple[tuple[int, ...] | None, ...]], ...]  # (var, per-case tables)
     next_step: int  # the next step of the same feature, or -1
     show_on_entry: bool = False  # the entering action only shows the value
+    forgets: frozenset[int] = frozenset()  # variables the step's side effects ``reset``
 
 
 @dataclass(frozen=True)
@@ -138,6 +141,18 @@ class CompiledModel:
             for a in self.action_names
         )
         self.feature_names = list(model.features)
+        # ``remember`` settings: per variable, its memory slot for each case (-1: no domain)
+        self.memory_slots: dict[int, tuple[int, ...]] = {}
+        defaults: list[int] = []
+        for v, var in enumerate(self.vars):
+            if var.parent >= 0 and var.spec.remember:
+                slots = []
+                for domain in var.domains:
+                    slots.append(-1 if domain is None else len(defaults))
+                    if domain is not None:
+                        defaults.append(domain.initial)
+                self.memory_slots[v] = tuple(slots)
+        self.memory_defaults = tuple(defaults)
         self.cache: dict[str, Any] = {}  # planner data derived from this model, built lazily
 
     # --- building ------------------------------------------------------------------------
@@ -173,7 +188,7 @@ class CompiledModel:
             None if d is None else effect_table(effect, d, var.spec) for d in var.domains
         )
         assigns = effect == "reset" or isinstance(effect, GoTo)  # choosing, not stepping
-        return (TABLE, tables, assigns)
+        return (TABLE, tables, assigns, effect == "reset")
 
     def _compile_steps(self) -> tuple[StepInfo, ...]:
         steps: list[StepInfo] = []
@@ -220,6 +235,7 @@ class CompiledModel:
                         tuple(side),
                         next_step,
                         step.on_entry == "show",
+                        frozenset(self.var_index[t] for t in step.reset),
                     )
                 )
         return tuple(steps)
@@ -271,6 +287,25 @@ class CompiledModel:
             )
         return tuple(guards)
 
+    def kept_in_sync(self, state: State) -> State:
+        """``state`` with each ``remember`` setting's kept value for the current programme set
+        to the value it has (after its values were set from outside, e.g. by a belief)."""
+        if not self.memory_slots:
+            return state
+        memory = list(state.memory)
+        for v, slots in self.memory_slots.items():
+            slot = slots[state.values[self.vars[v].parent]]
+            if slot >= 0 and state.values[v] >= 0:
+                memory[slot] = state.values[v]
+        return state._replace(memory=tuple(memory))
+
+    def memory_of(self, variables: set[int] | list[int]) -> tuple[int, ...]:
+        """The memory slots of the ``remember`` settings among ``variables``: a state reduced
+        to those variables must keep these too."""
+        return tuple(
+            slot for v in sorted(variables) for slot in self.memory_slots.get(v, ()) if slot >= 0
+        )
+
     def condition_variables(self, step: StepInfo) -> set[int]:
         """The variables a step's conditional effects read."""
         found: set[int] = set()
@@ -317,7 +352,7 @@ class CompiledModel:
             if var.parent >= 0:
                 domain = var.domain(values)
                 values[i] = -1 if domain is None else domain.initial
-        return State(tuple(values), -1, "")
+        return State(tuple(values), -1, "", self.memory_defaults)
 
     def check_state(self, state: Any, argument: str = "state") -> None:
         """Raise a clear error unless ``state`` is a state of this model.
@@ -331,7 +366,7 @@ class CompiledModel:
                 f"{argument} must be a State (Simulator.state, CompiledModel.initial_state()) "
                 f"or None, not {type(state).__name__}"
             )
-        values, step, buffer = state
+        values, step, buffer = state.values, state.step, state.buffer
         if not isinstance(values, tuple) or len(values) != len(self.vars):
             raise ValueError(
                 f"{argument}.values must hold one value index for each of the model's "
@@ -364,6 +399,36 @@ class CompiledModel:
             )
         if not isinstance(buffer, str) or not (buffer == "" or buffer.isdigit()):
             raise ValueError(f"{argument}.buffer must be a string of typed digits, not {buffer!r}")
+        self._check_memory(state, argument)
+
+    def _check_memory(self, state: State, argument: str) -> None:
+        """The kept values of ``remember`` settings: one index per (setting, programme) in
+        that programme's domain, and the current programme's equal to what is shown."""
+        memory = state.memory
+        if not isinstance(memory, tuple) or len(memory) != len(self.memory_defaults):
+            raise ValueError(
+                f"{argument}.memory must hold {len(self.memory_defaults)} kept values (one per "
+                "remembered setting and programme); start from initial_state()"
+            )
+        for v, slots in self.memory_slots.items():
+            var = self.vars[v]
+            for case, slot in enumerate(slots):
+                domain = var.domains[case]
+                if slot < 0 or domain is None:
+                    continue
+                index = memory[slot]
+                if isinstance(index, bool) or not isinstance(index, int):
+                    raise ValueError(f"{argument}.memory[{slot}] is not an index: {index!r}")
+                if not 0 <= index < len(domain):
+                    raise ValueError(
+                        f"{argument}.memory[{slot}]: {index} is not an index of {var.name}'s "
+                        f"{len(domain)} values in case {case}"
+                    )
+                if case == state.values[var.parent] and index != state.values[v]:
+                    raise ValueError(
+                        f"{argument}.memory[{slot}] keeps {index} for {var.name} in the current "
+                        f"programme, but {var.name} is {state.values[v]}"
+                    )
 
     def hiding_guard(self, state: State) -> GuardInfo | None:
         """A guard with ``hide`` that holds now: the display shows only its text."""
@@ -422,12 +487,19 @@ class CompiledModel:
                 table = effect[1][var.case(new)]
                 if table is not None:
                     new[v] = table[new[v]]
+        memory = list(state.memory) if self.memory_slots else None
         if (
             v >= 0
             and v in self.dependents
             and (new[v] != values[v] or kind == CLEAR or (kind == TABLE and effect[2]))
         ):
-            self._reset_dependents(new, v)
+            self._reset_dependents(new, v, values[v], memory)
+        if (
+            memory is not None
+            and v in self.memory_slots
+            and (kind == CLEAR or (kind == TABLE and effect[3]))
+        ):
+            self._forget(memory, v)
         for target_var, tables in step.side:
             before = new[target_var]
             var = self.vars[target_var]
@@ -436,13 +508,45 @@ class CompiledModel:
                 if table is not None:
                     new[target_var] = table[before]
             if target_var in self.dependents:  # a side effect always assigns
-                self._reset_dependents(new, target_var)
-        return State(tuple(new), target, buffer)
+                self._reset_dependents(new, target_var, before, memory)
+            if (
+                memory is not None
+                and target_var in step.forgets
+                and target_var in self.memory_slots
+            ):
+                self._forget(memory, target_var)
+        if memory is None:
+            return State(tuple(new), target, buffer)
+        for r, slots in self.memory_slots.items():  # what a setting shows is what it keeps
+            slot = slots[new[self.vars[r].parent]]
+            if slot >= 0:
+                memory[slot] = new[r]
+        return State(tuple(new), target, buffer, tuple(memory))
 
-    def _reset_dependents(self, values: list[int], parent: int) -> None:
+    def _reset_dependents(
+        self, values: list[int], parent: int, before: int, memory: list[int] | None
+    ) -> None:
+        """A programme was chosen (``before``: its value until now): its settings take the
+        new programme's default — or, for a ``remember`` setting, keep this programme's value
+        and take back the one kept for the new programme (unchanged if it did not change)."""
         for d in self.dependents[parent]:
+            slots = self.memory_slots.get(d) if memory is not None else None
+            if slots is not None and memory is not None:
+                if values[parent] == before:
+                    continue
+                if slots[before] >= 0 and values[d] >= 0:
+                    memory[slots[before]] = values[d]
+                slot = slots[values[parent]]
+                values[d] = -1 if slot < 0 else memory[slot]
+                continue
             domain = self.vars[d].domain(values)
             values[d] = -1 if domain is None else domain.initial
+
+    def _forget(self, memory: list[int], v: int) -> None:
+        """A ``reset`` of a ``remember`` setting forgets every programme's value."""
+        for slot in self.memory_slots[v]:
+            if slot >= 0:
+                memory[slot] = self.memory_defaults[slot]
 
     def _type(self, values: list[int], v: int, buffer: str, digit: str) -> tuple[int, str]:
         var = self.vars[v]

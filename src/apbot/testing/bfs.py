@@ -61,10 +61,17 @@ def goal_projection(compiled: CompiledModel, goal: CompiledGoal) -> Callable[[St
     )
 
     pick = itemgetter(*order) if order else (lambda values: ())
+    memory = compiled.memory_of(kept)
 
     def key(state: State) -> Hashable:
         step = state.step
-        return (pick(state.values), step, state.buffer if step >= 0 and typing[step] else "")
+        kept_values = tuple(state.memory[s] for s in memory)
+        return (
+            pick(state.values),
+            step,
+            state.buffer if step >= 0 and typing[step] else "",
+            kept_values,
+        )
 
     return key
 

@@ -60,6 +60,7 @@ FORMAT_PARTS = (
     "piecewise",
     "power guard",
     "prev",
+    "remembered setting",
     "reset effect",
     "reset side effect",
     "running guard",
@@ -90,7 +91,8 @@ def random_model(rng: random.Random, max_states: int = 30_000) -> ApplianceModel
 
 def state_bound(model: ApplianceModel) -> int:
     """An upper bound on the number of states: every combination of values (a dependent
-    setting counts its largest case, plus "absent"), times every pointer position, where a
+    setting counts its largest case, plus "absent"; a remembered one every combination of
+    its cases' values), times every pointer position, where a
     keypad step counts once per buffer it can hold."""
     total = 1
     for var in model.variables.values():
@@ -99,6 +101,10 @@ def state_bound(model: ApplianceModel) -> int:
         else:
             parent = build_domain(model.variables[var.depends_on]).values
             cases = var.cases or {}
+            if var.remember:  # a value kept for every programme (the current one shown)
+                for case in cases.values():
+                    total *= len(build_domain(var, case))
+                continue
             total *= max(len(build_domain(var, c)) for c in cases.values()) + (
                 len(cases) < len(parent)
             )
@@ -456,7 +462,7 @@ class _Extras:
     """Parts of the format added after the generator's first version, sprinkled over a drawn
     model: a held key scrolling several values (``skip``), effects that depend on the state
     (``when``/``then``/``otherwise``), and guards that let keys work in one position of a
-    mode only (``other_than``)."""
+    mode only (``other_than``), and settings remembered per programme (``remember``)."""
 
     def __init__(self, builder: _Builder, rng: random.Random) -> None:
         self.builder = builder
@@ -469,6 +475,9 @@ class _Extras:
             self._conditional()
         if self.rng.random() < 0.5:
             self._one_position()
+        dependents = [n for n, v in self.builder.variables.items() if "depends_on" in v]
+        if dependents and self.rng.random() < 0.5:  # a setting kept per programme (zone)
+            self.builder.variables[self.rng.choice(dependents)]["remember"] = True
 
     def _conditional(self) -> None:
         """One key's effect depends on an independent variable (its own, a mode, power)."""
@@ -658,6 +667,8 @@ def format_parts(model: ApplianceModel) -> set[str]:
     for var in model.variables.values():
         if var.unreachable:
             parts.add("unreachable values")
+        if var.remember:
+            parts.add("remembered setting")
         if var.depends_on:
             parts.add("dependent setting")
             parent_values = build_domain(model.variables[var.depends_on]).values
