@@ -38,6 +38,7 @@ NEWER_PARTS = (
     "one-position guard",
     "remembered setting",
     "skip",
+    "timed cycle",
     "unreachable values",
 )
 

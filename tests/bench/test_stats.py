@@ -32,6 +32,18 @@ USING: dict[str, str] = {
           zone: [{actions: [press_zone], variable: zone, effect: next}]
           level: [{actions: [press_plus], variable: level, effect: next}]
     """,
+    "cycles that end by themselves": """
+        controls: [{id: b, label: START}, {id: u, label: "+"}]
+        variables:
+          minutes: {type: numeric, unit: min, ranges: [[0, 3, 1]]}
+          running: {type: discrete, values: ["off", "on"]}
+        actions: {press_start: {control: b}, press_up: {control: u}}
+        features:
+          start: [{actions: [press_start], variable: running, effect: toggle}]
+          minutes: [{actions: [press_up], variable: minutes, effect: next}]
+        cycles:
+          - {when: {running: "on"}, lasts: minutes, set: {running: "off"}}
+    """,
     "skip effects (hold to scroll)": """
         controls: [{id: b, label: UP}]
         variables: {menu: {type: discrete, values: [a, b, c, d]}}

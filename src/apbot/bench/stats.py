@@ -91,6 +91,7 @@ CONSTRUCTS: dict[str, Callable[[ApplianceModel], bool]] = {
         v.remember for v in m.variables.values()
     ),
     "skip effects (hold to scroll)": _skip,
+    "cycles that end by themselves": lambda m: bool(m.cycles),
     "conditional effects": _conditional,
     "other_than conditions (one dial position)": _other_than,
 }

@@ -442,6 +442,34 @@ class Guard(_Strict):
         return _condition_strings(value)
 
 
+class Cycle(_Strict):
+    """A cycle that ends by itself: while ``when`` holds (running is on) for as long as the
+    variable ``lasts`` says (a time, or a number in s, min or h), then ``set`` and ``reset``
+    apply as a step's side effects do (running off, the timer back to its default).
+
+    Time passes only when the simulator is told to wait (:meth:`Simulator.wait`); presses
+    take no time, so the planner plans presses and a cycle never ends during a plan.
+    """
+
+    name: str = ""
+    when: dict[Ident, Condition] = Field(min_length=1)
+    lasts: Ident
+    set: dict[Ident, Scalar] = Field(default_factory=dict)
+    reset: list[Ident] = Field(default_factory=list)
+
+    @field_validator("when", mode="before")
+    @classmethod
+    def _when_strings(cls, value: Any) -> Any:
+        return _condition_strings(value)
+
+    @field_validator("set", mode="before")
+    @classmethod
+    def _set_strings(cls, value: Any) -> Any:
+        if isinstance(value, dict):
+            return {k: (str(v).lower() if isinstance(v, bool) else v) for k, v in value.items()}
+        return value
+
+
 class Display(_Strict):
     """What the display shows when no variable is being adjusted, and its permanent icons.
 
@@ -467,6 +495,7 @@ class ApplianceModel(_Strict):
     features: dict[Ident, list[Step]] = Field(min_length=1)
     guards: list[Guard] = Field(default_factory=list)
     display: Display = Field(default_factory=Display)
+    cycles: list[Cycle] = Field(default_factory=list)
 
     def control(self, control_id: str) -> Control | None:
         """The control with this id, if any."""

@@ -8,7 +8,7 @@ Check names (the paper's nine first):
     ``variable-coverage``, ``duplicate-sequence``, ``keypad``, ``keypad-buffer``,
     ``action-variable``, ``goal`` (see :func:`check_goal`);
     then ``size`` (first: see :mod:`apbot.model.limits`), ``reference``, ``domain``,
-    ``dependent``, ``guard``, ``display``, ``control``,
+    ``dependent``, ``guard``, ``display``, ``control``, ``cycle``,
     ``unreachable-value``.
 """
 
@@ -93,6 +93,7 @@ def check_model(model: ApplianceModel) -> list[Problem]:
     problems += _duplicates(model)
     problems += _guards(model)
     problems += _controls(model)
+    problems += _cycles(model)
     problems += _unreachable_marks(model)
     if not any(p.severity == "error" for p in problems):
         problems += _reachability(model)
@@ -549,6 +550,7 @@ def _coverage(model: ApplianceModel) -> Iterator[Problem]:
             )
     changed = {s.variable for steps in model.features.values() for s in steps if s.variable}
     changed |= {v for steps in model.features.values() for s in steps for v in [*s.set, *s.reset]}
+    changed |= {v for cycle in model.cycles for v in [*cycle.set, *cycle.reset]}
     for name in model.variables:
         if name not in changed:
             yield Problem(
@@ -643,6 +645,49 @@ def _guards(model: ApplianceModel) -> Iterator[Problem]:
                 "allow the action that releases it",
                 "guard",
             )
+
+
+CYCLE_UNITS = {"s": 1, "sec": 1, "min": 60, "h": 3600}  # a numeric cycle length's unit
+
+
+def _cycles(model: ApplianceModel) -> Iterator[Problem]:
+    """A cycle's conditions, its length variable and its end's side effects make sense."""
+    variables = list(model.variables)
+    for c, cycle in enumerate(model.cycles):
+        path: tuple[PathPart, ...] = ("cycles", c)
+        yield from _condition_problems(model, (*path, "when"), cycle.when)
+        lasts = model.variables.get(cycle.lasts)
+        if lasts is None:
+            yield Problem(
+                (*path, "lasts"), _unknown("variable", cycle.lasts, variables), "reference"
+            )
+        elif lasts.depends_on is not None or not (
+            lasts.type == "time" or (lasts.type == "numeric" and lasts.unit in CYCLE_UNITS)
+        ):
+            yield Problem(
+                (*path, "lasts"),
+                f"{cycle.lasts!r} cannot say how long the cycle lasts: give an independent "
+                "time variable, or a numeric one in s, min or h",
+                "cycle",
+            )
+        for target, value in cycle.set.items():
+            target_var = model.variables.get(target)
+            if target_var is None:
+                yield Problem(
+                    (*path, "set", target), _unknown("variable", target, variables), "reference"
+                )
+                continue
+            try:
+                normalise(target_var, value)
+            except ValueProblem as exc:
+                yield Problem((*path, "set", target), str(exc), "cycle")
+        for target in cycle.reset:
+            if target not in model.variables:
+                yield Problem(
+                    (*path, "reset"), _unknown("variable", target, variables), "reference"
+                )
+        if not cycle.set and not cycle.reset:
+            yield Problem(path, "a cycle's end changes nothing; give `set` or `reset`", "cycle")
 
 
 def _controls(model: ApplianceModel) -> Iterator[Problem]:

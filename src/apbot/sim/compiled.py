@@ -53,6 +53,7 @@ from apbot.model.schema import (
     NumericVariable,
     TimeVariable,
 )
+from apbot.model.validate import CYCLE_UNITS
 from apbot.model.values import format_hms, tidy_number
 
 NONE, TABLE, DIGIT, CLEAR, COND = 0, 1, 2, 3, 4
@@ -105,6 +106,19 @@ class StepInfo:
 
 
 @dataclass(frozen=True)
+class CycleInfo:
+    """A compiled cycle: while ``conditions`` hold for ``lasts`` × ``scale`` seconds, then the
+    side effects ``side`` (as a step's) apply."""
+
+    name: str
+    conditions: tuple[tuple[int, frozenset[int]], ...]
+    lasts: int
+    scale: float
+    side: tuple[tuple[int, tuple[tuple[int, ...] | None, ...]], ...]
+    forgets: frozenset[int]
+
+
+@dataclass(frozen=True)
 class GuardInfo:
     conditions: tuple[tuple[int, frozenset[int]], ...]
     allowed: frozenset[int]
@@ -129,6 +143,7 @@ class CompiledModel:
                 self.dependents.setdefault(var.parent, ())
                 self.dependents[var.parent] += (i,)
         self.steps = self._compile_steps()
+        self.cycles = self._compile_cycles()
         self.first_steps = self._first_steps()
         self.targets = self._compile_targets()
         self.guards = self._compile_guards()
@@ -239,6 +254,87 @@ class CompiledModel:
                     )
                 )
         return tuple(steps)
+
+    def _side_tables(
+        self, assigned: dict[str, Any], reset: list[str]
+    ) -> tuple[tuple[int, tuple[tuple[int, ...] | None, ...]], ...]:
+        """(variable, per-case tables) for ``set`` and ``reset`` side effects, in that order."""
+        side = []
+        for target, value in assigned.items():
+            info = self.vars[self.var_index[target]]
+            side.append(
+                (
+                    self.var_index[target],
+                    tuple(
+                        None if d is None else effect_table(GoTo(to=value), d, info.spec)
+                        for d in info.domains
+                    ),
+                )
+            )
+        for target in reset:
+            info = self.vars[self.var_index[target]]
+            side.append(
+                (
+                    self.var_index[target],
+                    tuple(
+                        None if d is None else constant_table(d, d.initial) for d in info.domains
+                    ),
+                )
+            )
+        return tuple(side)
+
+    def _compile_cycles(self) -> tuple[CycleInfo, ...]:
+        cycles = []
+        for cycle in self.model.cycles:
+            spec = self.model.variables[cycle.lasts]
+            scale = 1.0 if spec.type == "time" else CYCLE_UNITS[getattr(spec, "unit", "s")]
+            cycles.append(
+                CycleInfo(
+                    cycle.name,
+                    self._conditions(cycle.when),
+                    self.var_index[cycle.lasts],
+                    float(scale),
+                    self._side_tables(cycle.set, cycle.reset),
+                    frozenset(self.var_index[t] for t in cycle.reset),
+                )
+            )
+        return tuple(cycles)
+
+    def cycle_running(self, state: State, c: int) -> bool:
+        """Whether cycle ``c``'s condition holds in ``state``."""
+        return all(state.values[v] in ok for v, ok in self.cycles[c].conditions)
+
+    def cycle_seconds(self, state: State, c: int) -> float:
+        """How long cycle ``c`` lasts, read from its length variable now."""
+        cycle = self.cycles[c]
+        domain = self.vars[cycle.lasts].domains[0]
+        assert domain is not None and domain.magnitudes is not None
+        return domain.magnitudes[state.values[cycle.lasts]] * cycle.scale
+
+    def end_cycle(self, state: State, c: int) -> State:
+        """The state when cycle ``c`` ends by itself: its side effects, as a step's apply."""
+        cycle = self.cycles[c]
+        new = list(state.values)
+        memory = list(state.memory) if self.memory_slots else None
+        for target_var, tables in cycle.side:
+            before = new[target_var]
+            var = self.vars[target_var]
+            if before >= 0:
+                table = tables[var.case(new)]
+                if table is not None:
+                    new[target_var] = table[before]
+            if target_var in self.dependents:
+                self._reset_dependents(new, target_var, before, memory)
+            if (
+                memory is not None
+                and target_var in cycle.forgets
+                and target_var in self.memory_slots
+            ):
+                self._forget(memory, target_var)
+        ended = State(tuple(new), state.step, state.buffer, state.memory)
+        if memory is None:
+            return ended
+        return self.kept_in_sync(ended._replace(memory=tuple(memory)))
 
     def _first_steps(self) -> dict[int, int]:
         """Action -> the step id of the first feature (in order) whose first step has it."""

@@ -68,6 +68,7 @@ FORMAT_PARTS = (
     "skip",
     "time",
     "time keypad",
+    "timed cycle",
     "toggle",
     "two-control hold",
     "two programmes",
@@ -128,6 +129,7 @@ class _Builder:
         self.actions: dict[str, Any] = {}
         self.features: dict[str, list[dict[str, Any]]] = {}
         self.guards: list[dict[str, Any]] = []
+        self.cycles: list[dict[str, Any]] = []
         self.arrows: tuple[str, str] | None = None  # one ▲/▼ pair shared by several steps
         self.digits: list[str] | None = None  # one keypad shared by every keypad step
         self.power_key: str | None = None
@@ -179,6 +181,7 @@ class _Builder:
                 "actions": self.actions,
                 "features": self.features,
                 "guards": self.guards,
+                "cycles": self.cycles,
             }
         )
 
@@ -462,7 +465,8 @@ class _Extras:
     """Parts of the format added after the generator's first version, sprinkled over a drawn
     model: a held key scrolling several values (``skip``), effects that depend on the state
     (``when``/``then``/``otherwise``), and guards that let keys work in one position of a
-    mode only (``other_than``), and settings remembered per programme (``remember``)."""
+    mode only (``other_than``), settings remembered per programme (``remember``), and
+    cycles that end by themselves (``cycles``)."""
 
     def __init__(self, builder: _Builder, rng: random.Random) -> None:
         self.builder = builder
@@ -475,6 +479,8 @@ class _Extras:
             self._conditional()
         if self.rng.random() < 0.5:
             self._one_position()
+        if "running" in self.builder.variables and self.rng.random() < 0.5:
+            self._cycle()
         dependents = [n for n, v in self.builder.variables.items() if "depends_on" in v]
         if dependents and self.rng.random() < 0.5:  # a setting kept per programme (zone)
             self.builder.variables[self.rng.choice(dependents)]["remember"] = True
@@ -501,6 +507,23 @@ class _Extras:
             "then": step["effect"][key],
             "otherwise": otherwise,
         }
+
+    def _cycle(self) -> None:
+        """Running ends by itself after a time or number setting (presses take no time, so
+        it never ends during a plan: the planner and BFS must agree all the same)."""
+        b = self.builder
+        lengths = [
+            n
+            for n, v in b.variables.items()
+            if "depends_on" not in v
+            and (v["type"] == "time" or (v["type"] == "numeric" and v.get("unit") == "min"))
+        ]
+        if lengths:
+            cycle: dict[str, Any] = {"when": {"running": "on"}, "lasts": self.rng.choice(lengths)}
+            cycle["set"] = {"running": "off"}
+            if self.rng.random() < 0.5:
+                cycle["reset"] = [cycle["lasts"]]
+            b.cycles.append(cycle)
 
     def _one_position(self) -> None:
         """A mode guard becomes one whose keys work in one position only (``other_than``)."""
@@ -664,6 +687,8 @@ def format_parts(model: ApplianceModel) -> set[str]:
     parents = {v.depends_on for v in model.variables.values() if v.depends_on}
     if len(parents) > 1:
         parts.add("two programmes")
+    if model.cycles:
+        parts.add("timed cycle")
     for var in model.variables.values():
         if var.unreachable:
             parts.add("unreachable values")
