@@ -19,7 +19,8 @@ Shape of a model (see ``apbot/data/examples`` for complete ones)::
     guards:
       - {when: {power: "off"}, only: [press_power], display: ""}
 
-Semantics (the feature pointer, effects, guards) live in ``apbot.sim.compiled``.
+Semantics: what an effect does to a value in ``apbot.model.effects``; the machine (the feature
+pointer, guards, cycles) in ``apbot.sim.compiled``.
 """
 
 from __future__ import annotations
