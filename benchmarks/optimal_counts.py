@@ -20,7 +20,7 @@ import sys
 import time
 
 from apbot.bench.suite import load_suite
-from apbot.plan.bfs import OptimalCount, check_optimal_count, optimal_counts_line
+from apbot.testing.bfs import OptimalCount, check_optimal_count, optimal_counts_line
 
 DEFAULT_STATES = 50_000  # the whole bundled suite in under 2 minutes
 

@@ -3,7 +3,7 @@
     python benchmarks/planner_optimality.py [--cases 1000] [--seed 0] [--max-states 30000]
                                             [--starts 20]
 
-Each case is a random model (``apbot.model.generate``, at most ``--max-states`` states) and a
+Each case is a random model (``apbot.testing.generate``, at most ``--max-states`` states) and a
 random goal. One breadth-first search forward from the initial state and one backward from the
 goal states give the true distance from every reachable state. Then
 
@@ -14,7 +14,7 @@ goal states give the true distance from every reachable state. Then
   0 on goal states.
 
 A case whose state space does not fit the BFS budget is counted, never silently dropped.
-``--parts`` also prints, for every part of the format (``apbot.model.generate.FORMAT_PARTS``),
+``--parts`` also prints, for every part of the format (``apbot.testing.generate.FORMAT_PARTS``),
 how many compared cases used it and how many of those had a mismatch.
 """
 
@@ -25,15 +25,25 @@ import random
 import time
 from collections import Counter
 
-from apbot.model.generate import FORMAT_PARTS, format_parts, random_goal, random_model
 from apbot.model.goal import parse_goal
-from apbot.plan.bfs import (
+from apbot.sim.compiled import compiled_model
+from apbot.testing.bfs import (
     BfsBudgetExceeded,
     bound_violations,
     distances_to_goal,
     planner_mismatches,
 )
-from apbot.sim.compiled import compiled_model
+from apbot.testing.generate import FORMAT_PARTS, format_parts, random_goal, random_model
+
+# parts of the format added for issue 12: cases using each are counted on their own
+NEWER_PARTS = (
+    "conditional effect",
+    "one-position guard",
+    "remembered setting",
+    "skip",
+    "timed cycle",
+    "unreachable values",
+)
 
 
 def main() -> None:
@@ -49,6 +59,7 @@ def main() -> None:
     cases = too_large = starts_compared = states_checked = 0
     wrong_cases = unsound_cases = wrong_plans = unsound_states = unreachable = 0
     lengths: list[int] = []
+    by_part = {part: [0, 0, 0] for part in NEWER_PARTS}  # cases, starts compared, mismatches
     started = time.perf_counter()
     for seed in range(args.seed, args.seed + args.cases):
         rng = random.Random(seed)
@@ -69,6 +80,10 @@ def main() -> None:
             starts = [states[0], *picker.sample(states[1:], args.starts - 1)]
         wrong = planner_mismatches(compiled, goal, starts, distance)
         unsound = bound_violations(compiled, goal, states, distance)
+        for part in format_parts(model) & set(NEWER_PARTS):
+            by_part[part][0] += 1
+            by_part[part][1] += len(starts)
+            by_part[part][2] += len(wrong)
         starts_compared += len(starts)
         states_checked += len(states)
         unreachable += sum(start not in distance for start in starts)
@@ -107,6 +122,8 @@ def main() -> None:
     if args.parts:
         for part in FORMAT_PARTS:
             print(f"  {part}: {part_cases[part]} cases, {part_wrong[part]} with a mismatch")
+    for part, (count, compared, mismatches) in by_part.items():
+        print(f"  using {part}: {count} cases, {compared} starts compared, {mismatches} mismatches")
 
 
 if __name__ == "__main__":

@@ -20,9 +20,9 @@ from typing import Any
 from apbot.examples import example_names, load_example
 from apbot.model.domain import build_domain
 from apbot.model.schema import ApplianceModel
-from apbot.plan.bfs import random_walk
 from apbot.plan.plan import Unreachable, plan
 from apbot.sim.compiled import compiled_model
+from apbot.testing.bfs import random_walk
 
 WASHER_GOAL = {
     "power": "on",

@@ -32,6 +32,19 @@ def test_check_a_bad_model_names_path_and_line(tmp_path: Path) -> None:
     assert f"{bad}:" in result.output and "Traceback" not in result.output
 
 
+def test_check_runs_the_model_for_a_lock_that_never_opens(tmp_path: Path) -> None:
+    from apbot.examples import example_dir
+
+    text = (example_dir() / "washing_machine.yaml").read_text()
+    old = "{actions: [hold_temp_and_spin], variable: child_lock, effect: toggle}"
+    assert old in text
+    bad = tmp_path / "locked.yaml"
+    bad.write_text(text.replace(old, old.replace("toggle", '{to: "on"}')))
+    result = runner.invoke(app, ["check", str(bad)])
+    assert result.exit_code == 1, result.output
+    assert "guard 'child lock' holds for good" in " ".join(result.output.split())
+
+
 def test_check_broken_yaml(tmp_path: Path) -> None:
     bad = tmp_path / "broken.yaml"
     bad.write_text("appliance: {id: x\ncontrols: [\n")

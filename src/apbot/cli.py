@@ -96,7 +96,8 @@ def check(
 ) -> None:
     """Validate a model (or a suite appliance directory); exit 1 if it has errors."""
     from apbot.model.load import line_of, load_model
-    from apbot.model.validate import check_goal, check_model
+    from apbot.model.validate import check_goal
+    from apbot.sim.checks import check_model
 
     path = Path(model)
     try:
@@ -420,7 +421,7 @@ def suite_stats(
     as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False,
 ) -> None:
     """Per category: appliances, tasks, goal variables per task, and model features used."""
-    from apbot.bench.stats import CONSTRUCTS, FEATURES, suite_statistics
+    from apbot.bench.stats import FEATURES, suite_statistics
 
     stats = suite_statistics(_suite())
     if as_json:
@@ -459,11 +460,15 @@ def suite_stats(
         *(f"[bold]{stats['features'][f]}[/bold]" for f in FEATURES),
     )
     console.print(table)
-    constructs = Table(title="procedure constructs", box=box.SIMPLE_HEAD, padding=(0, 1, 0, 0))
+    constructs = Table(
+        title="format constructs (docs/model-format.md)",
+        box=box.SIMPLE_HEAD,
+        padding=(0, 1, 0, 0),
+    )
     constructs.add_column("construct", no_wrap=True)
     constructs.add_column("appliances", justify="right")
-    for key, label in CONSTRUCTS.items():
-        constructs.add_row(label, str(stats["constructs"][key]))
+    for name, count in stats["constructs"].items():
+        constructs.add_row(name, str(count))
     console.print(constructs)
 
 

@@ -23,8 +23,8 @@ from apbot.bench.suite import (
 from apbot.bench.suite_check import check_appliance
 from apbot.cli import app
 from apbot.model.goal import parse_goal
-from apbot.plan.bfs import shortest_plan_length
 from apbot.sim.compiled import compiled_model
+from apbot.testing.bfs import shortest_plan_length
 
 SUITE = load_suite()
 IDS = [a.id for a in SUITE.appliances]

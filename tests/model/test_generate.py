@@ -11,11 +11,17 @@ from typing import Any
 import pytest
 
 from apbot.model.domain import build_domain
-from apbot.model.generate import FORMAT_PARTS, format_parts, random_goal, random_model, state_bound
 from apbot.model.goal import parse_goal
 from apbot.model.schema import ApplianceModel
-from apbot.plan.bfs import reachable_graph
 from apbot.sim.compiled import compiled_model
+from apbot.testing.bfs import reachable_graph
+from apbot.testing.generate import (
+    FORMAT_PARTS,
+    format_parts,
+    random_goal,
+    random_model,
+    state_bound,
+)
 
 SEEDS = range(120)
 

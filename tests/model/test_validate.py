@@ -142,6 +142,31 @@ def test_unreachable_values() -> None:
     assert "5, 10" in message
 
 
+def test_values_declared_unreachable() -> None:
+    one_way = BASE.replace("variable: level, effect: next", "variable: level, effect: prev")
+    marked = one_way.replace("ranges: [[0, 10, 5]]", "ranges: [[0, 10, 5]], unreachable: [5]")
+    check, where, message = only(marked)  # 10 is still unreached and undeclared
+    assert (check, where) == ("unreachable-value", "variables.level") and "10" in message
+    assert problems(marked.replace("unreachable: [5]", 'unreachable: [5, "10"]')) == []
+
+
+def test_unreachable_declarations_are_checked() -> None:
+    text = BASE.replace("values: [a, b, c]", "values: [a, b, c], unreachable: [d]")
+    check, where, message = only(text)
+    assert (check, where) == ("unreachable-value", "variables.mode.unreachable[0]")
+    assert "'d'" in message
+    initial = BASE.replace("values: [a, b, c]", "values: [a, b, c], unreachable: [a]")
+    assert only(initial)[1:] == (
+        "variables.mode.unreachable[0]",
+        "'a' is 'mode''s initial value (or a programme's default), so the appliance reaches "
+        "it; remove it from `unreachable`",
+    )
+    reached = BASE.replace("values: [a, b, c]", "values: [a, b, c], unreachable: [b]")
+    [warning] = [p for p in check_model(model_from(reached, check=False)) if p.check != "control"]
+    assert (warning.severity, warning.where) == ("warning", "variables.mode.unreachable")
+    assert "'b' is declared unreachable but an action of the model reaches it" in warning.message
+
+
 def test_a_guard_nothing_can_lift() -> None:
     text = BASE + "guards:\n  - {when: {mode: b}, only: [press_b]}\n"
     check, where, message = only(text)

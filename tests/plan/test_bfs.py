@@ -10,9 +10,9 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from apbot.bench.suite import load_suite
-from apbot.model.generate import random_goal, random_model
 from apbot.model.goal import parse_goal
-from apbot.plan.bfs import (
+from apbot.sim.compiled import compiled_model
+from apbot.testing.bfs import (
     BfsBudgetExceeded,
     OptimalCount,
     bound_violations,
@@ -23,7 +23,7 @@ from apbot.plan.bfs import (
     random_walk,
     shortest_plan_length,
 )
-from apbot.sim.compiled import compiled_model
+from apbot.testing.generate import random_goal, random_model
 from tests.helpers import model_from
 
 LEVEL = """

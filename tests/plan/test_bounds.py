@@ -3,7 +3,7 @@ reachable state of generated small models, and is 0 on goal states — A* is onl
 an admissible bound, and one that overestimates anywhere can cost a press somewhere else.
 
 The true distances come from one backward breadth-first search from all goal states over the
-whole simulator (``apbot.plan.bfs.distances_to_goal``). Models are generated within a state
+whole simulator (``apbot.testing.bfs.distances_to_goal``). Models are generated within a state
 budget, so every example is checked — none is skipped.
 """
 
@@ -14,12 +14,12 @@ import random
 from hypothesis import HealthCheck, event, example, given, settings
 from hypothesis import strategies as st
 
-from apbot.model.generate import random_goal, random_model
 from apbot.model.goal import parse_goal
-from apbot.plan.bfs import bound_violations, distances_to_goal
 from apbot.plan.bounds import LowerBound
 from apbot.plan.goals import CompiledGoal
 from apbot.sim.compiled import compiled_model
+from apbot.testing.bfs import bound_violations, distances_to_goal
+from apbot.testing.generate import random_goal, random_model
 from tests.helpers import model_from
 from tests.plan.budget import BOUND, states_bucket
 

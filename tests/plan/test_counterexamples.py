@@ -14,11 +14,11 @@ import pytest
 
 from apbot.model.goal import parse_goal
 from apbot.model.load import load_model
-from apbot.plan.bfs import compare_with_bfs, distances_to_goal
 from apbot.plan.bounds import LowerBound
 from apbot.plan.goals import CompiledGoal
 from apbot.plan.plan import plan
 from apbot.sim.compiled import compiled_model
+from apbot.testing.bfs import compare_with_bfs, distances_to_goal
 
 HERE = Path(__file__).parent / "counterexamples"
 

@@ -15,10 +15,10 @@ import random
 from hypothesis import HealthCheck, event, example, given, settings
 from hypothesis import strategies as st
 
-from apbot.model.generate import random_goal, random_model
 from apbot.model.goal import parse_goal
-from apbot.plan.bfs import distances_to_goal, planner_mismatches, random_walk
 from apbot.sim.compiled import compiled_model
+from apbot.testing.bfs import distances_to_goal, planner_mismatches, random_walk
+from apbot.testing.generate import random_goal, random_model
 from tests.plan.budget import OPTIMALITY, states_bucket
 
 EXAMPLES, MODEL_STATES = OPTIMALITY

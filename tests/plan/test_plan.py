@@ -6,10 +6,10 @@ import pytest
 
 from apbot.model.goal import GoalError
 from apbot.model.schema import ApplianceModel
-from apbot.plan.bfs import shortest_plan_length
 from apbot.plan.plan import Plan, Unreachable, plan
 from apbot.sim.compiled import compiled_model
 from apbot.sim.simulator import Simulator
+from apbot.testing.bfs import shortest_plan_length
 from tests.helpers import model_from
 
 
@@ -334,3 +334,22 @@ def test_bad_arguments_name_themselves(washer: ApplianceModel) -> None:
     with pytest.raises(ValueError, match="budget is a positive number"):
         plan(washer, None, goal, budget=0)
     assert len(plan(washer, start, goal)) == 1  # a real state is fine
+
+
+def test_a_goal_on_a_value_declared_unreachable_says_so() -> None:
+    model = model_from(
+        """
+        controls: [{id: start_button, label: START}, {id: stop_button, label: STOP}]
+        variables:
+          stage: {type: discrete, values: [idle, drying, cooling], unreachable: [cooling]}
+        actions: {press_start: {control: start_button}, press_stop: {control: stop_button}}
+        features:
+          start: [{actions: [press_start], variable: stage, effect: {to: drying}}]
+          stop: [{actions: [press_stop], variable: stage, effect: {to: idle}}]
+        """
+    )
+    compiled = compiled_model(model)
+    assert shortest_plan_length(compiled, compiled.initial_state(), {"stage": "cooling"}) is None
+    with pytest.raises(Unreachable, match=r"stage cannot become 'cooling': .*declares it unreach"):
+        plan(model, None, {"stage": "cooling"})
+    assert len(plan(model, None, {"stage": "drying"})) == 1

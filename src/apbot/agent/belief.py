@@ -70,10 +70,15 @@ class Belief:
             return True
         values = list(self.state.values)
         values[v] = index
+        memory = self.state.memory
         for dependent in self.compiled.dependents.get(v, ()):
             domain = self.compiled.vars[dependent].domain(values)
+            slots = self.compiled.memory_slots.get(dependent)
+            if slots is not None and domain is not None:  # it shows what it kept there
+                values[dependent] = memory[slots[index]]
+                continue
             values[dependent] = -1 if domain is None else domain.initial
-        self.state = State(tuple(values), self.state.step, self.state.buffer)
+        self.state = self.compiled.kept_in_sync(self.state._replace(values=tuple(values)))
         return True
 
     def pointer(self) -> tuple[str, int] | None:
@@ -91,7 +96,7 @@ class Belief:
                 (i for i, s in enumerate(self.compiled.steps) if (s.feature, s.index) == pointer),
                 -1,
             )
-        self.state = State(self.state.values, step, buffer if step >= 0 else "")
+        self.state = self.state._replace(step=step, buffer=buffer if step >= 0 else "")
 
     def replace(self, model: ApplianceModel, pointer: tuple[str, int] | None = None) -> None:
         """Switch to a repaired model, keeping every value that still fits it."""

@@ -40,6 +40,7 @@ from apbot.agent.session import (
     summary,
     tidy,
 )
+from apbot.model.effects import parse_entry
 from apbot.model.schema import (
     Add,
     ApplianceModel,
@@ -48,7 +49,7 @@ from apbot.model.schema import (
     time_step_seconds,
 )
 from apbot.plan.plan import PlannedAction
-from apbot.sim.compiled import CompiledModel, parse_entry
+from apbot.sim.compiled import CompiledModel
 
 
 class Explorer:

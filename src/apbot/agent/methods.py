@@ -5,8 +5,8 @@ from __future__ import annotations
 from apbot.agent.environment import Environment, Feedback
 from apbot.agent.episode import Episode, TaskContext
 from apbot.agent.loop import AgentConfig, run_agent
+from apbot.agent.oracle import run_oracle_plan
 from apbot.agent.registry import Method, RunFunction, register
-from apbot.bench.oracle import run_oracle_plan
 from apbot.model.goal import GoalError
 from apbot.plan.plan import MacroAction, PlannedAction, Unreachable
 
@@ -14,7 +14,7 @@ from apbot.plan.plan import MacroAction, PlannedAction, Unreachable
 def run_oracle(context: TaskContext, env: Environment) -> Episode:
     """Plan once on the (true) model and press every action: the upper bound SPL measures by.
 
-    The plan and the presses are the benchmark's one oracle (``apbot.bench.oracle``); this
+    The plan and the presses are the benchmark's one oracle (``apbot.agent.oracle``); this
     method only keeps the trace.
     """
     episode = context.episode()

@@ -14,10 +14,10 @@ from typing import Any
 from pydantic import ValidationError
 
 from apbot.model.domain import all_values
+from apbot.model.effects import default_effect
 from apbot.model.schema import ApplianceModel, DiscreteVariable, TimeVariable
 from apbot.model.validate import check_model
 from apbot.model.values import expand_ranges, format_hms, parse_hms
-from apbot.sim.compiled import default_effect
 
 
 class RepairError(ValueError):

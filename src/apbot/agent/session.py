@@ -23,10 +23,11 @@ from apbot.agent.environment import Environment, Feedback
 from apbot.agent.episode import TaskContext
 from apbot.agent.perception import MISSING, UNREADABLE, Perceiver, Seen
 from apbot.model.domain import ValueProblem, parse_value
-from apbot.model.schema import Add, ApplianceModel, TimeVariable
+from apbot.model.effects import default_effect
+from apbot.model.schema import Add, ApplianceModel, Skip, TimeVariable
 from apbot.model.values import format_hms, parse_hms
 from apbot.plan.plan import PlannedAction
-from apbot.sim.compiled import State, default_effect
+from apbot.sim.compiled import State
 from apbot.sim.simulator import Observation
 
 __all__ = ["MISSING", "UNREADABLE", "AgentConfig", "Executed", "Session", "Stop"]
@@ -304,7 +305,7 @@ class Session:
     def stepping(self, pointer: tuple[str, int], action: str) -> bool:
         """Whether ``action`` walks the step's variable through its values (not a go-to)."""
         effect = self.effect(pointer, action)
-        return effect in ("next", "prev", "toggle") or isinstance(effect, Add)
+        return effect in ("next", "prev", "toggle") or isinstance(effect, Add | Skip)
 
     def domain_values(self, name: str) -> list[Any]:
         compiled = self.belief.compiled

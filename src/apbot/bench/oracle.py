@@ -2,79 +2,25 @@
 
 It is the upper bound every method is measured against (its action count is the optimum used
 by SPL), and running it over the suite proves every task is reachable as written. There is one
-oracle, :func:`run_oracle_plan`: the ``oracle`` method (``apbot.agent.methods``), the suite
-oracle below and the suite checker (``apbot.bench.suite_check``) all call it, so the plan a
-task's ``optimal_steps`` comes from is the plan the benchmark's oracle presses.
+oracle, :func:`apbot.agent.oracle.run_oracle_plan`: the ``oracle`` method, the suite oracle
+below and the suite checker (``apbot.bench.suite_check``) all call it, so the plan a task's
+``optimal_steps`` comes from is the plan the benchmark's oracle presses.
 """
 
 from __future__ import annotations
 
 import statistics
 import time
-from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any
 
-from apbot.agent.environment import Environment, Feedback, SimulatorEnvironment
+from apbot.agent.environment import SimulatorEnvironment
+from apbot.agent.oracle import OraclePlanRun, oracle_plan, run_oracle_plan
 from apbot.bench.suite import Suite, SuiteAppliance, Task
-from apbot.model.goal import Goal, GoalError, parse_goal
-from apbot.model.schema import ApplianceModel
-from apbot.plan.plan import MacroAction, Plan, PlannedAction, Unreachable, plan
+from apbot.model.goal import GoalError
+from apbot.plan.plan import Unreachable
 
-OnMacro = Callable[[MacroAction], None]
-OnAction = Callable[[PlannedAction, Feedback], None]
-
-
-@dataclass
-class OraclePlanRun:
-    """One oracle run: the canonical goal, the plan, and the feedback of every action pressed."""
-
-    goal: Goal
-    plan: Plan
-    feedback: list[Feedback] = field(default_factory=list)
-
-    @property
-    def refused(self) -> list[str]:
-        """The planned actions the environment refused (none, on the model planned on)."""
-        return [
-            a.name for a, f in zip(self.plan.actions, self.feedback, strict=True) if not f.accepted
-        ]
-
-
-def oracle_plan(model: ApplianceModel, goal: Mapping[str, Any]) -> tuple[Goal, Plan]:
-    """The oracle's plan: the shortest plan on ``model`` from its initial state.
-
-    Raises :class:`GoalError` for a goal the model cannot express and :class:`Unreachable`
-    when no action sequence reaches it.
-    """
-    canonical = parse_goal(model, goal)
-    return canonical, plan(model, None, canonical)
-
-
-def run_oracle_plan(
-    model: ApplianceModel,
-    goal: Mapping[str, Any],
-    env: Environment,
-    on_macro: OnMacro | None = None,
-    on_action: OnAction | None = None,
-) -> OraclePlanRun:
-    """Plan on ``model``, reset ``env`` and press every planned action in order, open loop.
-
-    ``on_macro`` is called before each macro action and ``on_action`` after each press (the
-    ``oracle`` method logs its trace through them). Raises like :func:`oracle_plan`.
-    """
-    canonical, found = oracle_plan(model, goal)
-    run = OraclePlanRun(canonical, found)
-    env.reset()
-    for macro in found.macro_actions:
-        if on_macro is not None:
-            on_macro(macro)
-        for action in macro.actions:
-            feedback = env.step(action.name, action.seconds)
-            run.feedback.append(feedback)
-            if on_action is not None:
-                on_action(action, feedback)
-    return run
+__all__ = ["OraclePlanRun", "oracle_plan", "run_oracle_plan", "run_task", "run_task_with_plan"]
 
 
 @dataclass(frozen=True)

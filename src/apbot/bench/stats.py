@@ -2,10 +2,11 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 from apbot.bench.suite import CATEGORIES, Suite, load_suite
-from apbot.model.schema import ApplianceModel
+from apbot.model.schema import ApplianceModel, Conditional, OtherThan, Skip
 from apbot.sim.compiled import compiled_model
 
 FEATURES = (
@@ -47,32 +48,90 @@ def appliance_features(model: ApplianceModel) -> dict[str, bool]:
     }
 
 
-# Procedure-structure constructs of the format (docs/model-format.md, "The feature pointer"):
-# name -> what the row says in `apbot suite stats`.
-CONSTRUCTS = {
-    "optional_steps": "optional steps (optional)",
-    "anywhere_keys": "keys acting from anywhere (anywhere)",
-    "leave_keys": "keys that leave the procedure (leave)",
-    "early_release_enters": "holds entering when released early (too_short)",
-    "timeouts": "step timeouts let expire by a wait (timeout, wait)",
-    "keypad_other_keys_clear": "keypads whose other keys clear (other_keys)",
-    "keypad_shows_typed": "keypads showing digits as typed (shows: typed)",
+def _steps(model: ApplianceModel) -> list[Any]:
+    return [step for steps in model.features.values() for step in steps]
+
+
+def _entries(model: ApplianceModel) -> list[Any]:
+    return [e for v in model.variables.values() if (e := getattr(v, "entry", None)) is not None]
+
+
+def _unreachable_values(model: ApplianceModel) -> bool:
+    return any(v.unreachable for v in model.variables.values())
+
+
+def _effects(model: ApplianceModel) -> list[Any]:
+    """Every effect a step writes, conditionals opened up (theirs and their branches)."""
+    found: list[Any] = []
+    for steps in model.features.values():
+        for step in steps:
+            pending = list(step.effect.values()) if isinstance(step.effect, dict) else [step.effect]
+            while pending:
+                effect = pending.pop()
+                found.append(effect)
+                if isinstance(effect, Conditional):
+                    pending += [effect.then, effect.otherwise]
+    return found
+
+
+def _skip(model: ApplianceModel) -> bool:
+    return any(isinstance(e, Skip) for e in _effects(model))
+
+
+def _conditional(model: ApplianceModel) -> bool:
+    return any(isinstance(e, Conditional) for e in _effects(model))
+
+
+def _other_than(model: ApplianceModel) -> bool:
+    return any(isinstance(w, OtherThan) for g in model.guards for w in g.when.values()) or any(
+        isinstance(w, OtherThan)
+        for e in _effects(model)
+        if isinstance(e, Conditional)
+        for w in e.when.values()
+    )
+
+
+# Constructs of the format added for behaviours real manuals describe (docs/model-format.md):
+# one row each in ``apbot suite stats``, counting the appliances whose model uses it.
+CONSTRUCTS: dict[str, Callable[[ApplianceModel], bool]] = {
+    "optional steps (optional)": lambda m: any(s.optional for s in _steps(m)),
+    "keys acting from anywhere (anywhere)": lambda m: bool(m.anywhere),
+    "keys that leave the procedure (leave)": lambda m: any(e.leave for e in m.anywhere),
+    "holds entering when released early (too_short)": lambda m: any(
+        a.too_short == "enters" for a in m.actions.values()
+    ),
+    "step timeouts let expire by a wait (timeout, wait)": lambda m: any(
+        s.timeout is not None for s in _steps(m)
+    ),
+    "keypads whose other keys clear (other_keys)": lambda m: any(
+        e.other_keys == "clear" for e in _entries(m)
+    ),
+    "keypads showing digits as typed (shows: typed)": lambda m: any(
+        e.shows == "typed" for e in _entries(m)
+    ),
+    "values declared unreachable": _unreachable_values,
+    "settings remembered per programme or zone": lambda m: any(
+        v.remember for v in m.variables.values()
+    ),
+    "skip effects (hold to scroll)": _skip,
+    "cycles that end by themselves": lambda m: bool(m.cycles),
+    "conditional effects": _conditional,
+    "other_than conditions (one dial position)": _other_than,
 }
 
 
+# the procedure-structure ones, listed first above (docs/model-format.md, "The feature pointer")
+PROCEDURE_CONSTRUCTS = tuple(CONSTRUCTS)[:7]
+
+
 def appliance_constructs(model: ApplianceModel) -> dict[str, bool]:
-    """Which procedure-structure constructs (:data:`CONSTRUCTS`) an appliance uses."""
-    steps = [step for steps in model.features.values() for step in steps]
-    entries = [e for v in model.variables.values() if (e := getattr(v, "entry", None)) is not None]
-    return {
-        "optional_steps": any(step.optional for step in steps),
-        "anywhere_keys": bool(model.anywhere),
-        "leave_keys": any(entry.leave for entry in model.anywhere),
-        "early_release_enters": any(a.too_short == "enters" for a in model.actions.values()),
-        "timeouts": any(step.timeout is not None for step in steps),
-        "keypad_other_keys_clear": any(e.other_keys == "clear" for e in entries),
-        "keypad_shows_typed": any(e.shows == "typed" for e in entries),
-    }
+    """Which constructs of :data:`CONSTRUCTS` one model uses."""
+    return {name: uses(model) for name, uses in CONSTRUCTS.items()}
+
+
+def construct_counts(models: list[ApplianceModel]) -> dict[str, int]:
+    """Per construct of :data:`CONSTRUCTS`, how many of ``models`` use it."""
+    return {name: sum(uses(m) for m in models) for name, uses in CONSTRUCTS.items()}
 
 
 def suite_statistics(suite: Suite | None = None) -> dict[str, Any]:
@@ -98,14 +157,10 @@ def suite_statistics(suite: Suite | None = None) -> dict[str, Any]:
             else 0,
             "features": features,
         }
-    constructs = dict.fromkeys(CONSTRUCTS, 0)
-    for appliance in suite.appliances:
-        for key, used in appliance_constructs(appliance.model).items():
-            constructs[key] += used
     return {
         "appliances": len(suite.appliances),
         "tasks": len(suite.tasks),
         "categories": categories,
         "features": totals,
-        "constructs": constructs,
+        "constructs": construct_counts([a.model for a in suite.appliances]),
     }

@@ -17,7 +17,7 @@ from apbot.bench.suite import GOAL_VARIABLES, SuiteAppliance, Task, TaskFile
 from apbot.model.goal import Goal, GoalError, parse_goal
 from apbot.model.load import dump_yaml, read_yaml
 from apbot.model.problems import Problem
-from apbot.model.validate import check_model
+from apbot.sim.checks import check_model
 
 MANUAL_WORDS = (600, 6000)  # a short leaflet to a long real manual (issue 12: 2–6k words)
 

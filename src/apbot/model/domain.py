@@ -456,3 +456,15 @@ def _to_seconds(raw: Any, style: str) -> int:
     if abs(seconds - round(seconds)) > 1e-6:
         raise ValueProblem(f"{brief(text)} is not a whole number of seconds")
     return round(seconds)
+
+
+def marked_unreachable(var: AnyVariable) -> frozenset[Any]:
+    """The canonical values a variable declares ``unreachable`` (ones that normalise to none of
+    its values are left out here; the checker reports them)."""
+    found = set()
+    for raw in var.unreachable:
+        try:
+            found.add(normalise(var, raw))
+        except ValueProblem:
+            continue
+    return frozenset(found)

@@ -33,6 +33,9 @@ _UNION_TAGS = {
     "time",
     "GoTo",
     "Add",
+    "Skip",
+    "Conditional",
+    "OtherThan",
     "DiscreteCase",
     "NumericCase",
     "TimeCase",
@@ -419,7 +422,9 @@ def schema_problems(error: ValidationError, text: str | None = None) -> list[Pro
         if "effect" in path and item["type"] not in ("extra_forbidden",):
             index = path.index("effect")
             effect_path = path[: index + 1] + tuple(
-                p for p in path[index + 1 : index + 2] if str(p) not in ("to", "add")
+                p
+                for p in path[index + 1 : index + 2]
+                if str(p) not in ("to", "add", "skip", "when", "then", "otherwise")
             )
             effect_paths.add(effect_path)
             continue
@@ -432,7 +437,8 @@ def schema_problems(error: ValidationError, text: str | None = None) -> list[Pro
             by_path[path].append(message)
     for path in effect_paths:
         by_path.setdefault(path, []).append(
-            "an effect is next, prev, toggle, digit, clear, reset, none, {to: VALUE} or "
+            "an effect is next, prev, toggle, digit, clear, reset, none, {to: VALUE}, "
+            "{skip: N}, {when: CONDITIONS, then: EFFECT, otherwise: EFFECT} or "
             "{add: AMOUNT}; or a map from each action of the step to one of these"
         )
     problems = []

@@ -19,7 +19,8 @@ Shape of a model (see ``apbot/data/examples`` for complete ones)::
     guards:
       - {when: {power: "off"}, only: [press_power], display: ""}
 
-Semantics (the feature pointer, effects, guards) live in ``apbot.sim.compiled``.
+Semantics: what an effect does to a value in ``apbot.model.effects``; the machine (the feature
+pointer, guards, cycles) in ``apbot.sim.compiled``.
 """
 
 from __future__ import annotations
@@ -201,12 +202,28 @@ def _stringify(values: Any) -> Any:
 
 
 class _Variable(_Strict):
-    """Fields every variable kind shares."""
+    """Fields every variable kind shares.
+
+    ``remember`` (with ``depends_on``) keeps the setting's value per programme: choosing
+    another programme shows that programme's own last value, not its default.
+    ``unreachable`` lists values no key can set — the appliance sets them itself (an automatic
+    programme's own stage, a sensor reading) — so the checker accepts them unreached and the
+    planner reports a goal on one as unreachable, saying so.
+    """
 
     label: str | None = None
     show: str | dict[str, str] | None = None
     visible: bool = True
     depends_on: Ident | None = None
+    remember: bool = False
+    unreachable: list[Scalar] = Field(default_factory=list)
+
+    @field_validator("unreachable", mode="before")
+    @classmethod
+    def _unreachable_strings(cls, values: Any) -> Any:
+        if isinstance(values, list):
+            return [str(v).lower() if isinstance(v, bool) else v for v in values]
+        return values
 
     def display_label(self, name: str) -> str:
         """What the display calls the variable: its label, or its name in capitals."""
@@ -331,7 +348,64 @@ class Add(_Strict):
     add: Number | str
 
 
-Effect = EffectName | GoTo | Add
+class Skip(_Strict):
+    """Move several values along the variable's order at once (negative: back), each move
+    wrapping or clamping as ``next``/``prev`` do: a held ▲ that scrolls five menus at a time,
+    or a long range crossed in bigger strides."""
+
+    skip: int
+
+    @field_validator("skip")
+    @classmethod
+    def _not_zero(cls, value: int) -> int:
+        if value == 0:
+            raise ValueError("skip 0 changes nothing; use `none`")
+        return value
+
+
+class OtherThan(_Strict):
+    """A condition on every value but these: ``{other_than: "off"}`` (a dial anywhere but OFF)."""
+
+    other_than: Scalar | list[Scalar]
+
+
+Condition = Scalar | list[Scalar] | OtherThan  # one value, any of a list, or any but these
+
+
+def _condition_strings(value: Any) -> Any:
+    """Conditions compare with written values: YAML's ``on``/``off`` booleans become strings."""
+    if not isinstance(value, dict):
+        return value
+
+    def fix(item: Any) -> Any:
+        return str(item).lower() if isinstance(item, bool) else item
+
+    def fix_all(item: Any) -> Any:
+        if isinstance(item, list):
+            return [fix(i) for i in item]
+        if isinstance(item, dict) and "other_than" in item:
+            return {**item, "other_than": fix_all(item["other_than"])}
+        return fix(item)
+
+    return {k: fix_all(v) for k, v in value.items()}
+
+
+class Conditional(_Strict):
+    """An effect that depends on the state before the press: ``then`` while every condition
+    in ``when`` holds (as in a guard), else ``otherwise`` — a START/+30 s key that adds 30 s
+    when no time is set. Branches are value changes (no keypad digits); they may nest."""
+
+    when: dict[Ident, Condition] = Field(min_length=1)
+    then: Effect
+    otherwise: Effect = "none"
+
+    @field_validator("when", mode="before")
+    @classmethod
+    def _when_strings(cls, value: Any) -> Any:
+        return _condition_strings(value)
+
+
+Effect = EffectName | GoTo | Add | Skip | Conditional
 
 
 class Step(_Strict):
@@ -402,7 +476,7 @@ class Guard(_Strict):
     """
 
     name: str = ""
-    when: dict[Ident, Scalar | list[Scalar]] = Field(min_length=1)
+    when: dict[Ident, Condition] = Field(min_length=1)
     only: list[Ident]
     display: str = ""
     hide: bool = False
@@ -418,15 +492,35 @@ class Guard(_Strict):
     @field_validator("when", mode="before")
     @classmethod
     def _when_strings(cls, value: Any) -> Any:
-        if not isinstance(value, dict):
-            return value
+        return _condition_strings(value)
 
-        def fix(item: Any) -> Any:
-            return str(item).lower() if isinstance(item, bool) else item
 
-        return {
-            k: ([fix(i) for i in v] if isinstance(v, list) else fix(v)) for k, v in value.items()
-        }
+class Cycle(_Strict):
+    """A cycle that ends by itself: while ``when`` holds (running is on) for as long as the
+    variable ``lasts`` says (a time, or a number in s, min or h), then ``set`` and ``reset``
+    apply as a step's side effects do (running off, the timer back to its default).
+
+    Time passes only when the simulator is told to wait (:meth:`Simulator.wait`); presses
+    take no time, so the planner plans presses and a cycle never ends during a plan.
+    """
+
+    name: str = ""
+    when: dict[Ident, Condition] = Field(min_length=1)
+    lasts: Ident
+    set: dict[Ident, Scalar] = Field(default_factory=dict)
+    reset: list[Ident] = Field(default_factory=list)
+
+    @field_validator("when", mode="before")
+    @classmethod
+    def _when_strings(cls, value: Any) -> Any:
+        return _condition_strings(value)
+
+    @field_validator("set", mode="before")
+    @classmethod
+    def _set_strings(cls, value: Any) -> Any:
+        if isinstance(value, dict):
+            return {k: (str(v).lower() if isinstance(v, bool) else v) for k, v in value.items()}
+        return value
 
 
 class Display(_Strict):
@@ -455,6 +549,7 @@ class ApplianceModel(_Strict):
     anywhere: list[AnywhereStep] = Field(default_factory=list)
     guards: list[Guard] = Field(default_factory=list)
     display: Display = Field(default_factory=Display)
+    cycles: list[Cycle] = Field(default_factory=list)
 
     def control(self, control_id: str) -> Control | None:
         """The control with this id, if any."""
@@ -462,3 +557,5 @@ class ApplianceModel(_Strict):
 
 
 TEMPLATE_FIELD = re.compile(r"\{([a-z][a-z0-9_]*)\}")
+
+Conditional.model_rebuild()

@@ -8,7 +8,7 @@ Check names (the paper's nine first):
     ``variable-coverage``, ``duplicate-sequence``, ``keypad``, ``keypad-buffer``,
     ``action-variable``, ``goal`` (see :func:`check_goal`);
     then ``size`` (first: see :mod:`apbot.model.limits`), ``reference``, ``domain``,
-    ``dependent``, ``guard``, ``display``, ``control``,
+    ``dependent``, ``guard``, ``display``, ``control``, ``cycle``,
     ``unreachable-value``, ``optional-step``, ``timeout``, ``anywhere``.
 """
 
@@ -25,7 +25,17 @@ from apbot.model.domain import (
     ValueProblem,
     build_domain,
     domain_size,
+    marked_unreachable,
     normalise,
+)
+from apbot.model.effects import (
+    condition_values,
+    constant_table,
+    default_effect,
+    effect_table,
+    entry_digits,
+    leaf_effects,
+    value_index,
 )
 from apbot.model.limits import (
     MAX_MODEL_VALUES,
@@ -40,6 +50,7 @@ from apbot.model.schema import (
     Add,
     AnywhereStep,
     ApplianceModel,
+    Conditional,
     Control,
     DiscreteVariable,
     GoTo,
@@ -85,6 +96,8 @@ def check_model(model: ApplianceModel) -> list[Problem]:
     problems += _duplicates(model)
     problems += _guards(model)
     problems += _controls(model)
+    problems += _cycles(model)
+    problems += _unreachable_marks(model)
     if not any(p.severity == "error" for p in problems):
         problems += _reachability(model)
     return problems
@@ -269,6 +282,15 @@ def _domains(model: ApplianceModel) -> tuple[dict[str, list[Domain]], list[Probl
     problems: list[Problem] = []
     for name, var in model.variables.items():
         path = ("variables", name)
+        if var.remember and var.depends_on is None:
+            problems.append(
+                Problem(
+                    (*path, "remember"),
+                    "`remember` keeps a value per programme; it needs `depends_on` (the "
+                    "programme or zone selecting the case)",
+                    "dependent",
+                )
+            )
         if var.depends_on is None:
             try:
                 domains[name] = [build_domain(var)]
@@ -324,8 +346,6 @@ def _close(text: str, options: list[str]) -> str:
 
 
 def _effects_of(step: Step | AnywhereStep, model: ApplianceModel) -> dict[str, Any]:
-    from apbot.sim.compiled import default_effect
-
     return {a: default_effect(step, a, model) for a in step.actions if a in model.actions}
 
 
@@ -422,6 +442,13 @@ def _steps(model: ApplianceModel, domains: Mapping[str, list[Domain]]) -> Iterat
                             "keypad",
                         )
             for key, effect in value_effects.items():
+                at = (
+                    (*path, "effect")
+                    if not isinstance(step.effect, dict)
+                    else (*path, "effect", key)
+                )
+                for when in _conditions_in(effect):
+                    yield from _condition_problems(model, (*at, "when"), when)
                 message = _effect_problem(effect, var, doms)
                 if message:
                     yield Problem(
@@ -609,13 +636,54 @@ def _anywhere(model: ApplianceModel, domains: Mapping[str, list[Domain]]) -> Ite
                     yield Problem((*path, "set", target), str(exc), "action-variable")
 
 
-def _in_some(value: Any, var: Any, doms: list[Domain]) -> bool:
-    from apbot.sim.compiled import _value_index
+def _conditions_in(effect: Any) -> list[dict[str, Any]]:
+    """The ``when`` of a conditional effect and of the conditionals nested in it."""
+    if not isinstance(effect, Conditional):
+        return []
+    return [effect.when, *_conditions_in(effect.then), *_conditions_in(effect.otherwise)]
 
-    return any(_value_index(d, value) is not None for d in doms)
+
+def _condition_problems(
+    model: ApplianceModel, path: tuple[PathPart, ...], when: Mapping[str, Any]
+) -> Iterator[Problem]:
+    """A condition (of a guard or a conditional effect) reads known independent variables
+    and names their values."""
+    variables = list(model.variables)
+    for name, wanted in when.items():
+        var = model.variables.get(name)
+        if var is None:
+            yield Problem((*path, name), _unknown("variable", name, variables), "reference")
+            continue
+        if var.depends_on is not None:
+            yield Problem(
+                (*path, name),
+                "conditions read independent variables (power, a programme, a time)",
+                "action-variable",
+            )
+            continue
+        domain = build_domain(var)
+        for value in condition_values(wanted):
+            if value_index(domain, value) is None:
+                yield Problem(
+                    (*path, name),
+                    f"{value!r} is not a value of {name!r} ({preview(domain.values)})",
+                    "action-variable",
+                )
+
+
+def _in_some(value: Any, var: Any, doms: list[Domain]) -> bool:
+    return any(value_index(d, value) is not None for d in doms)
 
 
 def _effect_problem(effect: Any, var: Any, doms: list[Domain]) -> str | None:
+    if isinstance(effect, Conditional):
+        for branch in (effect.then, effect.otherwise):
+            if branch in ("digit", "clear"):
+                return f"a conditional effect changes the value; {branch} belongs to a keypad step"
+            message = _effect_problem(branch, var, doms)
+            if message:
+                return message
+        return None
     sizes = {len(d) for d in doms}
     if effect == "toggle" and sizes != {2}:
         return "toggle needs a variable with exactly two values; use next/prev"
@@ -659,6 +727,7 @@ def _coverage(model: ApplianceModel) -> Iterator[Problem]:
     changed = {s.variable for steps in model.features.values() for s in steps if s.variable}
     changed |= {v for steps in model.features.values() for s in steps for v in [*s.set, *s.reset]}
     changed |= {v for e in model.anywhere for v in [e.variable, *e.set, *e.reset] if v}
+    changed |= {v for cycle in model.cycles for v in [*cycle.set, *cycle.reset]}
     for name in model.variables:
         if name not in changed:
             yield Problem(
@@ -719,8 +788,6 @@ def _duplicates(model: ApplianceModel) -> Iterator[Problem]:
 
 
 def _guards(model: ApplianceModel) -> Iterator[Problem]:
-    from apbot.sim.compiled import _value_index
-
     for g, guard in enumerate(model.guards):
         for name, wanted in guard.when.items():
             var = model.variables[name]
@@ -732,8 +799,8 @@ def _guards(model: ApplianceModel) -> Iterator[Problem]:
                 )
                 continue
             domain = build_domain(var)
-            for value in wanted if isinstance(wanted, list) else [wanted]:
-                if _value_index(domain, value) is None:
+            for value in condition_values(wanted):
+                if value_index(domain, value) is None:
                     yield Problem(
                         ("guards", g, "when", name),
                         f"{value!r} is not a value of {name!r} ({preview(domain.values)})",
@@ -755,6 +822,49 @@ def _guards(model: ApplianceModel) -> Iterator[Problem]:
                 "allow the action that releases it",
                 "guard",
             )
+
+
+CYCLE_UNITS = {"s": 1, "sec": 1, "min": 60, "h": 3600}  # a numeric cycle length's unit
+
+
+def _cycles(model: ApplianceModel) -> Iterator[Problem]:
+    """A cycle's conditions, its length variable and its end's side effects make sense."""
+    variables = list(model.variables)
+    for c, cycle in enumerate(model.cycles):
+        path: tuple[PathPart, ...] = ("cycles", c)
+        yield from _condition_problems(model, (*path, "when"), cycle.when)
+        lasts = model.variables.get(cycle.lasts)
+        if lasts is None:
+            yield Problem(
+                (*path, "lasts"), _unknown("variable", cycle.lasts, variables), "reference"
+            )
+        elif lasts.depends_on is not None or not (
+            lasts.type == "time" or (lasts.type == "numeric" and lasts.unit in CYCLE_UNITS)
+        ):
+            yield Problem(
+                (*path, "lasts"),
+                f"{cycle.lasts!r} cannot say how long the cycle lasts: give an independent "
+                "time variable, or a numeric one in s, min or h",
+                "cycle",
+            )
+        for target, value in cycle.set.items():
+            target_var = model.variables.get(target)
+            if target_var is None:
+                yield Problem(
+                    (*path, "set", target), _unknown("variable", target, variables), "reference"
+                )
+                continue
+            try:
+                normalise(target_var, value)
+            except ValueProblem as exc:
+                yield Problem((*path, "set", target), str(exc), "cycle")
+        for target in cycle.reset:
+            if target not in model.variables:
+                yield Problem(
+                    (*path, "reset"), _unknown("variable", target, variables), "reference"
+                )
+        if not cycle.set and not cycle.reset:
+            yield Problem(path, "a cycle's end changes nothing; give `set` or `reset`", "cycle")
 
 
 def _controls(model: ApplianceModel) -> Iterator[Problem]:
@@ -781,59 +891,117 @@ def _controls(model: ApplianceModel) -> Iterator[Problem]:
 # --- reachability ----------------------------------------------------------------------------
 
 
-def _reachability(model: ApplianceModel) -> Iterator[Problem]:
-    """Values no sequence of effects can reach from the initial value (or a case default)."""
-    from apbot.sim.compiled import compiled_model
-
-    compiled = compiled_model(model)
-    for v, var in enumerate(compiled.vars):
-        for case, domain in enumerate(var.domains):
-            if domain is None:
+def _unreachable_marks(model: ApplianceModel) -> Iterator[Problem]:
+    """Each value a variable declares ``unreachable`` is one of its values, and not the
+    initial value (of any programme) — that one the appliance starts in."""
+    for name, var in model.variables.items():
+        if not var.unreachable:
+            continue
+        defaults = {domain.values[domain.initial] for _, domain in _case_domains(model, name)}
+        for i, raw in enumerate(var.unreachable):
+            path = ("variables", name, "unreachable", i)
+            try:
+                value = normalise(var, raw)
+            except ValueProblem as exc:
+                yield Problem(path, f"{raw!r}: {exc}", "unreachable-value")
                 continue
-            reached = reachable_indices(compiled, v, case)
-            missing = [domain.values[i] for i in range(len(domain)) if i not in reached]
+            if value in defaults:
+                yield Problem(
+                    path,
+                    f"{value!r} is {name!r}'s initial value (or a programme's default), so "
+                    "the appliance reaches it; remove it from `unreachable`",
+                    "unreachable-value",
+                )
+
+
+def _reachability(model: ApplianceModel) -> Iterator[Problem]:
+    """Values no sequence of effects can reach from the initial value (or a case default),
+    unless declared ``unreachable``; and declared ones that some effect reaches after all."""
+    for name, var in model.variables.items():
+        marked = marked_unreachable(var)
+        reached_marks: set[Any] = set()
+        for case, domain in _case_domains(model, name):
+            reached = reachable_indices(model, name, domain)
+            reached_marks.update(v for i, v in enumerate(domain.values) if i in reached)
+            missing = [
+                domain.values[i]
+                for i in range(len(domain))
+                if i not in reached and domain.values[i] not in marked
+            ]
             if missing:
-                parent = compiled.vars[var.parent].domains[0] if var.parent >= 0 else None
-                where: tuple[str | int, ...] = (
-                    ("variables", var.name)
-                    if parent is None
-                    else ("variables", var.name, "cases", str(parent.values[case]))
+                where: tuple[str, ...] = (
+                    ("variables", name) if case is None else ("variables", name, "cases", case)
                 )
                 shown = ", ".join(str(m) for m in missing[:6])
                 more = f" and {len(missing) - 6} more" if len(missing) > 6 else ""
                 yield Problem(
                     where,
                     f"no action can reach {shown}{more}; fix the ranges or the "
-                    "effects that adjust it",
+                    "effects that adjust it, or declare values only the appliance sets "
+                    "under `unreachable`",
                     "unreachable-value",
                 )
+        for value in sorted(marked & reached_marks, key=str):
+            yield Problem(
+                ("variables", name, "unreachable"),
+                f"{value!r} is declared unreachable but an action of the model reaches it; "
+                "remove it from `unreachable`",
+                "unreachable-value",
+                severity="warning",
+            )
 
 
-def reachable_indices(compiled: Any, v: int, case: int) -> set[int]:
-    """Indices of one domain reachable from its initial value through any effect of the model."""
-    from apbot.sim.compiled import CLEAR, DIGIT, TABLE, entry_digits
+def _case_domains(model: ApplianceModel, name: str) -> list[tuple[str | None, Domain]]:
+    """A variable's domains: its own (case None), or one per programme value with a case."""
+    var = model.variables[name]
+    if var.depends_on is None:
+        return [(None, build_domain(var))]
+    parent = model.variables[var.depends_on]
+    cases = var.cases or {}
+    return [
+        (value, build_domain(var, cases[value]))
+        for value in build_domain(parent).values
+        if value in cases
+    ]
 
-    var = compiled.vars[v]
-    domain = var.domains[case]
+
+def _tables_of(effect: Any, domain: Domain, var: Any) -> list[tuple[int, ...]]:
+    """The value tables of one plain effect on one domain (none for digits and ``none``)."""
+    if effect == "clear":
+        return [constant_table(domain, domain.initial)]
+    if effect in ("digit", "none"):
+        return []
+    table = effect_table(effect, domain, var)
+    return [] if table is None else [table]
+
+
+def reachable_indices(model: ApplianceModel, name: str, domain: Domain) -> set[int]:
+    """Indices of one of ``name``'s domains reachable from its initial value through any
+    effect or side effect of the model (the effect semantics of :mod:`apbot.model.effects`)."""
+    var = model.variables[name]
     tables: list[tuple[int, ...]] = []
     typed = False
-    for step in compiled.all_steps:
-        if step.variable == v:
-            for effect in step.effects.values():
-                if effect[0] in (TABLE, CLEAR) and effect[1][case] is not None:
-                    tables.append(effect[1][case])
-                elif effect[0] == DIGIT and getattr(var.spec, "entry", None) is not None:
-                    typed = True
-        for target, side_tables in step.side:
-            if target == v and side_tables[case] is not None:
-                tables.append(side_tables[case])
+    every: list[Step | AnywhereStep] = [s for steps in model.features.values() for s in steps]
+    for step in [*every, *model.anywhere]:
+        if step.variable == name:
+            for action in step.actions:
+                for effect in leaf_effects(default_effect(step, action, model)):
+                    tables += _tables_of(effect, domain, var)
+                effect = default_effect(step, action, model)
+                if effect == "digit":
+                    typed = typed or getattr(var, "entry", None) is not None
+        if name in step.set:
+            table = effect_table(GoTo(to=step.set[name]), domain, var)
+            if table is not None:
+                tables.append(table)
+        if name in step.reset:
+            tables.append(constant_table(domain, domain.initial))
     typeable: set[int] = set()
-    if typed:  # once, not once per digit key
+    entry = getattr(var, "entry", None)
+    if typed and entry is not None:  # once, not once per digit key
         assert domain.magnitudes is not None
         typeable = {
-            i
-            for i, m in enumerate(domain.magnitudes)
-            if entry_digits(m, var.spec.entry) is not None
+            i for i, m in enumerate(domain.magnitudes) if entry_digits(m, entry) is not None
         }
     reached = {domain.initial} | typeable
     frontier = list(reached)

@@ -24,8 +24,9 @@ from __future__ import annotations
 from collections import deque
 from typing import Any
 
+from apbot.model.effects import entry_digits
 from apbot.plan.goals import CompiledGoal
-from apbot.sim.compiled import CLEAR, DIGIT, TABLE, CompiledModel, State, entry_digits
+from apbot.sim.compiled import CLEAR, DIGIT, TABLE, CompiledModel, State, leaves
 
 INF = float("inf")
 _ABSENT = ("absent",)  # a dependent setting that does not exist in the current programme
@@ -64,7 +65,7 @@ def _value_graph(
     for step in compiled.all_steps:  # features' steps and anywhere keys alike
         if step.variable == v:
             typed = False
-            for effect in step.effects.values():
+            for effect in leaves(step.effects.values()):
                 if effect[0] in (TABLE, CLEAR):
                     for case, domain in cases():
                         table = effect[1][case]
@@ -85,12 +86,21 @@ def _value_graph(
                     if table is not None:
                         jumps.append((domain.values[table[0]], 0))
     if var.parent >= 0:  # a programme change restores the new programme's default
+        # ... or, for a ``remember`` setting, the value kept for it: any of its values
+        remembered = v in compiled.memory_slots
+
+        def landing(d: Any) -> list[Any]:
+            return list(d.values) if remembered else [d.values[d.initial]]
+
         if only_case is None:
             for case, d in enumerate(var.domains):
                 cost = reset_costs[case] if reset_costs else 0
-                jumps.append((_ABSENT, cost) if d is None else (d.values[d.initial], cost))
+                if d is None:
+                    jumps.append((_ABSENT, cost))
+                else:
+                    jumps.extend((value, cost) for value in landing(d))
         else:
-            jumps.extend((d.values[d.initial], 0) for _, d in cases())
+            jumps.extend((value, 0) for _, d in cases() for value in landing(d))
     return reverse, typed_anywhere, jumps
 
 
@@ -322,7 +332,7 @@ def _assigning_steps(compiled: CompiledModel, programme: int) -> list[set[int]]:
     steps: list[set[int]] = [set() for _ in domain.values]
     for sid, step in enumerate(compiled.all_steps):  # ids past the features' are anywhere keys
         if step.variable == programme:
-            for effect in step.effects.values():
+            for effect in leaves(step.effects.values()):
                 if effect[0] in (TABLE, CLEAR) and effect[1][0] is not None:
                     for value in set(effect[1][0]):
                         steps[value].add(sid)

@@ -18,6 +18,7 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
+from apbot.model.domain import marked_unreachable
 from apbot.model.goal import GoalError, parse_goal
 from apbot.model.schema import ApplianceModel
 from apbot.plan.goals import CompiledGoal
@@ -221,6 +222,15 @@ def _explain(
             f"gave up after expanding {exc.expanded} search states (budget {search.budget});"
             " the goal may be reachable but is too costly to plan — raise the budget"
         )
+    declared = [
+        f"{name} cannot become {goal[name]!r}: the model declares it unreachable "
+        f"(variables.{name}.unreachable: the appliance sets it itself, no key does)"
+        for name in goal
+        if goal[name] in marked_unreachable(compiled.model.variables[name])
+        and goal[name] not in _forward_values(compiled, start, compiled.var_index[name])
+    ]
+    if declared:
+        return "; ".join(declared)
     blocked = search.bound.blocking(start)
     if blocked:
         parts = []

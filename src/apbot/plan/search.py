@@ -22,10 +22,11 @@ from collections.abc import Hashable
 from dataclasses import dataclass
 from operator import itemgetter
 
+from apbot.model.effects import entry_digits
 from apbot.plan.bounds import INF, LowerBound, distances_to, typeable_values
 from apbot.plan.goals import CompiledGoal
 from apbot.plan.visits import SMALL_DOMAIN, Exit, explore_visit, keypad_exits
-from apbot.sim.compiled import DIGIT, CompiledModel, State, entry_digits
+from apbot.sim.compiled import DIGIT, CompiledModel, State
 
 DEFAULT_BUDGET = 200_000
 # Path cost is lexicographic, packed in one int: presses × PRESS + presses made while a guard
@@ -65,13 +66,7 @@ def relevant_variables(compiled: CompiledModel, goal: CompiledGoal) -> list[int]
     relevant = set(goal.variables)
     for guard in compiled.guards:
         relevant.update(v for v, _ in guard.conditions)
-    frontier = list(relevant)
-    while frontier:
-        parent = compiled.vars[frontier.pop()].parent
-        if parent >= 0 and parent not in relevant:
-            relevant.add(parent)
-            frontier.append(parent)
-    return sorted(relevant)
+    return sorted(compiled.influencers(relevant))
 
 
 class TaskSearch:
@@ -92,8 +87,11 @@ class TaskSearch:
             step.variable in relevant_set and any(e[0] == DIGIT for e in step.effects.values())
             for step in compiled.steps
         )
+        self._memory = compiled.memory_of(self.relevant)
         self.bound = LowerBound(compiled, goal)
-        self._visit_cache: dict[Hashable, list[tuple[tuple[int, ...], str, tuple[int, ...]]]] = {}
+        self._visit_cache: dict[
+            Hashable, list[tuple[tuple[int, ...], str, tuple[int, ...], tuple[int, ...]]]
+        ] = {}
         self._footprints: dict[int, tuple[tuple[int, ...], tuple[int, ...]]] = {}
         self._keypad_targets: dict[int, list[float]] = {}
         # nodes reached by an anywhere key or a wait: the pointer stayed, so the step it is on
@@ -102,6 +100,9 @@ class TaskSearch:
 
     def key(self, state: State) -> Hashable:
         buffer = state.buffer if state.step >= 0 and self.keypad_step[state.step] else ""
+        if self._memory:  # what remembered settings keep for other programmes
+            kept = tuple(state.memory[s] for s in self._memory)
+            return (self._project(state.values), state.step, buffer, kept)
         return (self._project(state.values), state.step, buffer)
 
     def run(self, start: State) -> SearchResult:
@@ -196,6 +197,7 @@ class TaskSearch:
             tuple(values[r] for r in reads),
             state.buffer if continuing else "",
             continuing,
+            state.memory,  # a programme change takes back what a setting kept
         )
         outcomes = self._visit_cache.get(cache_key)
         if outcomes is None:
@@ -208,16 +210,16 @@ class TaskSearch:
 
                 exits = explore_visit(self.compiled, state, step, entry, inner_key)
             outcomes = [
-                (tuple(after.values[w] for w in writes), after.buffer, path)
+                (tuple(after.values[w] for w in writes), after.buffer, path, after.memory)
                 for after, path in exits
             ]
             self._visit_cache[cache_key] = outcomes
         rebuilt = []
-        for changed, buffer, path in outcomes:
+        for changed, buffer, path, memory in outcomes:
             new = list(values)
             for w, value in zip(writes, changed, strict=True):
                 new[w] = value
-            rebuilt.append((State(tuple(new), step, buffer), path))
+            rebuilt.append((State(tuple(new), step, buffer, memory), path))
         return rebuilt
 
     def _footprint(self, step: int) -> tuple[tuple[int, ...], tuple[int, ...]]:
@@ -234,6 +236,7 @@ class TaskSearch:
                 compiled.vars[w].parent for w in writes if compiled.vars[w].parent >= 0
             }
             reads |= {v for guard in compiled.guards for v, _ in guard.conditions}
+            reads |= compiled.condition_variables(info)  # a conditional effect's branch
             cached = (tuple(sorted(reads)), tuple(sorted(writes)))
             self._footprints[step] = cached
         return cached

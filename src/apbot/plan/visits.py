@@ -17,8 +17,9 @@ from __future__ import annotations
 from collections import deque
 from collections.abc import Callable, Hashable, Sequence
 
+from apbot.model.effects import entry_digits
 from apbot.model.schema import Entry
-from apbot.sim.compiled import CLEAR, DIGIT, NONE, CompiledModel, State, entry_digits
+from apbot.sim.compiled import CLEAR, DIGIT, NONE, CompiledModel, State
 
 Exit = tuple[State, tuple[int, ...]]
 

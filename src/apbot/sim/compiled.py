@@ -17,10 +17,11 @@ Feature pointer (kept from the paper)
 
 Effects
     The action that enters a step applies the step's effect too, unless the step says
-    ``on_entry: show``. Every value-changing effect (next, prev, toggle, go-to, add, reset)
-    compiles to a table
+    ``on_entry: show``. Every value-changing effect (next, prev, toggle, go-to, add, skip,
+    reset) compiles to a table
     ``new_index = table[current_index]`` per case of the variable; a keypad digit appends to the
-    buffer and sets the variable when the buffer parses to one of its values. Side effects
+    buffer and sets the variable when the buffer parses to one of its values; a conditional
+    effect picks its branch on the state before the action. Side effects
     (``set``, ``reset``) of a step follow its main effect. When a programme is chosen, settings
     that depend on it return to that programme's defaults: whenever it changes, and also when
     it is assigned without changing (a go-to key pressed again, a ``reset`` or ``set`` when the
@@ -33,24 +34,32 @@ Guards
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import Any, NamedTuple
 
 from apbot.model.display import display_value
 from apbot.model.domain import Domain, build_domain
+from apbot.model.effects import (
+    condition_indices,
+    constant_table,
+    default_effect,
+    effect_table,
+    parse_entry,
+    type_digit,
+)
 from apbot.model.schema import (
-    Add,
     ApplianceModel,
+    Conditional,
     DiscreteVariable,
-    Entry,
     GoTo,
     NumericVariable,
     TimeVariable,
-    time_step_seconds,
 )
-from apbot.model.values import format_hms, parse_hms, tidy_number
+from apbot.model.validate import CYCLE_UNITS
+from apbot.model.values import format_hms, tidy_number
 
-NONE, TABLE, DIGIT, CLEAR = 0, 1, 2, 3
+NONE, TABLE, DIGIT, CLEAR, COND = 0, 1, 2, 3, 4
 
 # rejection reasons (negative codes; a guard's refusal is its index >= 0)
 NOT_HERE = -1
@@ -58,11 +67,13 @@ TOO_SHORT = -2
 
 
 class State(NamedTuple):
-    """An appliance state: value indices, feature-pointer step id, keypad buffer. Hashable."""
+    """An appliance state: value indices, feature-pointer step id, keypad buffer, and the
+    value each ``remember`` setting keeps for each programme (see ``memory_slots``). Hashable."""
 
     values: tuple[int, ...]
     step: int
     buffer: str
+    memory: tuple[int, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -98,6 +109,20 @@ class StepInfo:
     timeout: float | None = None  # seconds without a key that return to no feature
     leave: bool = False  # an anywhere step that returns the pointer to no feature
     blank_clears: bool = False  # a non-digit key of this keypad step empties the buffer
+    forgets: frozenset[int] = frozenset()  # variables the step's side effects ``reset``
+
+
+@dataclass(frozen=True)
+class CycleInfo:
+    """A compiled cycle: while ``conditions`` hold for ``lasts`` × ``scale`` seconds, then the
+    side effects ``side`` (as a step's) apply."""
+
+    name: str
+    conditions: tuple[tuple[int, frozenset[int]], ...]
+    lasts: int
+    scale: float
+    side: tuple[tuple[int, tuple[tuple[int, ...] | None, ...]], ...]
+    forgets: frozenset[int]
 
 
 @dataclass(frozen=True)
@@ -107,91 +132,6 @@ class GuardInfo:
     display: str
     name: str
     hide: bool = False
-
-
-def _index_table(domain: Domain, target: int) -> tuple[int, ...]:
-    return (target,) * len(domain)
-
-
-def _table_for(effect: Any, domain: Domain, var: Any) -> tuple[int, ...] | None:
-    """``new_index = table[index]`` for one effect on one domain (None: no such table)."""
-    n = len(domain)
-    if effect == "next":
-        return tuple(domain.next_index(i) for i in range(n))
-    if effect == "prev":
-        return tuple(domain.prev_index(i) for i in range(n))
-    if effect == "toggle":
-        return tuple((i + 1) % n for i in range(n))
-    if effect == "reset":
-        return _index_table(domain, domain.initial)
-    if isinstance(effect, GoTo):
-        target = _value_index(domain, effect.to)
-        return None if target is None else _index_table(domain, target)
-    if isinstance(effect, Add):
-        amount = _amount(effect.add, var)
-        assert domain.magnitudes is not None
-        mags = domain.magnitudes
-        return tuple(domain.snap_index(mags[i] + amount, down=amount < 0) for i in range(n))
-    return tuple(range(n))
-
-
-def _amount(amount: Any, var: Any) -> float:
-    if isinstance(var, TimeVariable):
-        return float(time_step_seconds(amount) if isinstance(amount, str) else amount)
-    return float(amount)
-
-
-def _value_index(domain: Domain, raw: Any) -> int | None:
-    """Index of a model-written value (``to:``, ``set:``, guard values) in a domain."""
-    if domain.kind == "discrete":
-        return domain.index.get(str(raw))
-    if domain.kind == "time":
-        try:
-            seconds = parse_hms(str(raw))
-        except ValueError:
-            return None
-        assert domain.magnitudes is not None
-        return next((i for i, m in enumerate(domain.magnitudes) if m == seconds), None)
-    try:
-        number = float(raw)
-    except (TypeError, ValueError):
-        return None
-    assert domain.magnitudes is not None
-    return next((i for i, m in enumerate(domain.magnitudes) if abs(m - number) < 1e-9), None)
-
-
-def parse_entry(buffer: str, entry: Entry) -> float | None:
-    """The number a keypad buffer stands for (seconds for times), or None if it is not valid.
-
-    >>> parse_entry("130", Entry(format="mm:ss")), parse_entry("190", Entry(format="mm:ss"))
-    (90.0, None)
-    """
-    if not buffer:
-        return None
-    fmt = entry.format
-    if fmt == "number":
-        return float(int(buffer))
-    if fmt == "minutes":
-        return float(int(buffer) * 60)
-    if fmt == "seconds":
-        return float(int(buffer))
-    padded = buffer.zfill(6 if fmt == "hh:mm:ss" else 4)
-    if fmt == "hh:mm:ss":
-        hours, minutes, secs = int(padded[:-4]), int(padded[-4:-2]), int(padded[-2:])
-        if minutes >= 60 or secs >= 60:
-            return None
-        return float(hours * 3600 + minutes * 60 + secs)
-    high, low = int(padded[:-2]), int(padded[-2:])
-    if low >= 60:
-        return None
-    return float(high * 60 + low) if fmt == "mm:ss" else float(high * 3600 + low * 60)
-
-
-def type_digit(buffer: str, digit: str, entry: Entry) -> str:
-    """The buffer after typing one digit (shift out the oldest, or ignore, when full)."""
-    if len(buffer) < entry.digits():
-        return buffer + digit
-    return (buffer + digit)[1:] if entry.overflow == "shift" else buffer
 
 
 class CompiledModel:
@@ -226,6 +166,7 @@ class CompiledModel:
             for name, spec in model.actions.items()
             if spec.too_short == "enters"
         )
+        self.cycles = self._compile_cycles()
         self.first_steps = self._first_steps()
         self.targets = self._compile_targets()
         self.guards = self._compile_guards()
@@ -238,6 +179,18 @@ class CompiledModel:
             for a in self.action_names
         )
         self.feature_names = list(model.features)
+        # ``remember`` settings: per variable, its memory slot for each case (-1: no domain)
+        self.memory_slots: dict[int, tuple[int, ...]] = {}
+        defaults: list[int] = []
+        for v, var in enumerate(self.vars):
+            if var.parent >= 0 and var.spec.remember:
+                slots = []
+                for domain in var.domains:
+                    slots.append(-1 if domain is None else len(defaults))
+                    if domain is not None:
+                        defaults.append(domain.initial)
+                self.memory_slots[v] = tuple(slots)
+        self.memory_defaults = tuple(defaults)
         self.cache: dict[str, Any] = {}  # planner data derived from this model, built lazily
 
     # --- building ------------------------------------------------------------------------
@@ -257,14 +210,23 @@ class CompiledModel:
     def _effect(self, effect: Any, var: VarInfo | None, action: int) -> tuple[Any, ...]:
         if var is None or effect in (None, "none"):
             return (NONE,)
+        if isinstance(effect, Conditional):  # (COND, conditions, then, otherwise)
+            return (
+                COND,
+                self._conditions(effect.when),
+                self._effect(effect.then, var, action),
+                self._effect(effect.otherwise, var, action),
+            )
         if effect == "digit":
             return (DIGIT, self.model.actions[self.action_names[action]].digit)
         if effect == "clear":
-            reset = tuple(None if d is None else _index_table(d, d.initial) for d in var.domains)
+            reset = tuple(None if d is None else constant_table(d, d.initial) for d in var.domains)
             return (CLEAR, reset)
-        tables = tuple(None if d is None else _table_for(effect, d, var.spec) for d in var.domains)
+        tables = tuple(
+            None if d is None else effect_table(effect, d, var.spec) for d in var.domains
+        )
         assigns = effect == "reset" or isinstance(effect, GoTo)  # choosing, not stepping
-        return (TABLE, tables, assigns)
+        return (TABLE, tables, assigns, effect == "reset")
 
     def _step_parts(
         self, step: Any
@@ -280,27 +242,7 @@ class CompiledModel:
             a: self._effect(default_effect(step, self.action_names[a], self.model), var, a)
             for a in action_ids
         }
-        side: list[tuple[int, tuple[tuple[int, ...] | None, ...]]] = []
-        for target, value in step.set.items():
-            info = self.vars[self.var_index[target]]
-            side.append(
-                (
-                    self.var_index[target],
-                    tuple(
-                        None if d is None else _table_for(GoTo(to=value), d, info.spec)
-                        for d in info.domains
-                    ),
-                )
-            )
-        for target in step.reset:
-            info = self.vars[self.var_index[target]]
-            side.append(
-                (
-                    self.var_index[target],
-                    tuple(None if d is None else _index_table(d, d.initial) for d in info.domains),
-                )
-            )
-        return action_ids, effects, tuple(side)
+        return action_ids, effects, self._side_tables(step.set, step.reset)
 
     def _compile_steps(self) -> tuple[StepInfo, ...]:
         steps: list[StepInfo] = []
@@ -327,6 +269,7 @@ class CompiledModel:
                         optional=step.optional,
                         timeout=step.timeout,
                         blank_clears=entry is not None and entry.other_keys == "clear",
+                        forgets=frozenset(self.var_index[t] for t in step.reset),
                     )
                 )
         return tuple(steps)
@@ -346,9 +289,91 @@ class CompiledModel:
                     side,
                     -1,
                     leave=step.leave,
+                    forgets=frozenset(self.var_index[t] for t in step.reset),
                 )
             )
         return tuple(compiled)
+
+    def _side_tables(
+        self, assigned: dict[str, Any], reset: list[str]
+    ) -> tuple[tuple[int, tuple[tuple[int, ...] | None, ...]], ...]:
+        """(variable, per-case tables) for ``set`` and ``reset`` side effects, in that order."""
+        side = []
+        for target, value in assigned.items():
+            info = self.vars[self.var_index[target]]
+            side.append(
+                (
+                    self.var_index[target],
+                    tuple(
+                        None if d is None else effect_table(GoTo(to=value), d, info.spec)
+                        for d in info.domains
+                    ),
+                )
+            )
+        for target in reset:
+            info = self.vars[self.var_index[target]]
+            side.append(
+                (
+                    self.var_index[target],
+                    tuple(
+                        None if d is None else constant_table(d, d.initial) for d in info.domains
+                    ),
+                )
+            )
+        return tuple(side)
+
+    def _compile_cycles(self) -> tuple[CycleInfo, ...]:
+        cycles = []
+        for cycle in self.model.cycles:
+            spec = self.model.variables[cycle.lasts]
+            scale = 1.0 if spec.type == "time" else CYCLE_UNITS[getattr(spec, "unit", "s")]
+            cycles.append(
+                CycleInfo(
+                    cycle.name,
+                    self._conditions(cycle.when),
+                    self.var_index[cycle.lasts],
+                    float(scale),
+                    self._side_tables(cycle.set, cycle.reset),
+                    frozenset(self.var_index[t] for t in cycle.reset),
+                )
+            )
+        return tuple(cycles)
+
+    def cycle_running(self, state: State, c: int) -> bool:
+        """Whether cycle ``c``'s condition holds in ``state``."""
+        return all(state.values[v] in ok for v, ok in self.cycles[c].conditions)
+
+    def cycle_seconds(self, state: State, c: int) -> float:
+        """How long cycle ``c`` lasts, read from its length variable now."""
+        cycle = self.cycles[c]
+        domain = self.vars[cycle.lasts].domains[0]
+        assert domain is not None and domain.magnitudes is not None
+        return domain.magnitudes[state.values[cycle.lasts]] * cycle.scale
+
+    def end_cycle(self, state: State, c: int) -> State:
+        """The state when cycle ``c`` ends by itself: its side effects, as a step's apply."""
+        cycle = self.cycles[c]
+        new = list(state.values)
+        memory = list(state.memory) if self.memory_slots else None
+        for target_var, tables in cycle.side:
+            before = new[target_var]
+            var = self.vars[target_var]
+            if before >= 0:
+                table = tables[var.case(new)]
+                if table is not None:
+                    new[target_var] = table[before]
+            if target_var in self.dependents:
+                self._reset_dependents(new, target_var, before, memory)
+            if (
+                memory is not None
+                and target_var in cycle.forgets
+                and target_var in self.memory_slots
+            ):
+                self._forget(memory, target_var)
+        ended = State(tuple(new), state.step, state.buffer, state.memory)
+        if memory is None:
+            return ended
+        return self.kept_in_sync(ended._replace(memory=tuple(memory)))
 
     def _first_steps(self) -> dict[int, int]:
         """Action -> the step id of the first feature (in order) whose first step has it."""
@@ -385,24 +410,75 @@ class CompiledModel:
             rows.append(tuple(row))
         return tuple(rows)
 
+    def _conditions(self, when: dict[str, Any]) -> tuple[tuple[int, frozenset[int]], ...]:
+        """(variable, accepted value indices) per condition of a guard or conditional effect
+        (conditions read independent variables, so their one domain)."""
+        conditions = []
+        for name, wanted in when.items():
+            domain = self.vars[self.var_index[name]].domains[0]
+            assert domain is not None
+            conditions.append((self.var_index[name], condition_indices(domain, wanted)))
+        return tuple(conditions)
+
     def _compile_guards(self) -> tuple[GuardInfo, ...]:
         guards = []
         for guard in self.model.guards:
-            conditions = []
-            for name, wanted in guard.when.items():
-                var = self.vars[self.var_index[name]]
-                domain = var.domains[0]
-                assert domain is not None
-                options = wanted if isinstance(wanted, list) else [wanted]
-                indices = frozenset(
-                    i for o in options if (i := _value_index(domain, o)) is not None
-                )
-                conditions.append((self.var_index[name], indices))
             allowed = frozenset(self.action_index[a] for a in guard.only)
             guards.append(
-                GuardInfo(tuple(conditions), allowed, guard.display, guard.name, guard.hide)
+                GuardInfo(
+                    self._conditions(guard.when), allowed, guard.display, guard.name, guard.hide
+                )
             )
         return tuple(guards)
+
+    def kept_in_sync(self, state: State) -> State:
+        """``state`` with each ``remember`` setting's kept value for the current programme set
+        to the value it has (after its values were set from outside, e.g. by a belief)."""
+        if not self.memory_slots:
+            return state
+        memory = list(state.memory)
+        for v, slots in self.memory_slots.items():
+            slot = slots[state.values[self.vars[v].parent]]
+            if slot >= 0 and state.values[v] >= 0:
+                memory[slot] = state.values[v]
+        return state._replace(memory=tuple(memory))
+
+    def memory_of(self, variables: set[int] | list[int]) -> tuple[int, ...]:
+        """The memory slots of the ``remember`` settings among ``variables``: a state reduced
+        to those variables must keep these too."""
+        return tuple(
+            slot for v in sorted(variables) for slot in self.memory_slots.get(v, ()) if slot >= 0
+        )
+
+    def condition_variables(self, step: StepInfo) -> set[int]:
+        """The variables a step's conditional effects read."""
+        found: set[int] = set()
+        pending = list(step.effects.values())
+        while pending:
+            effect = pending.pop()
+            if effect[0] == COND:
+                found.update(v for v, _ in effect[1])
+                pending += [effect[2], effect[3]]
+        return found
+
+    def influencers(self, variables: set[int]) -> set[int]:
+        """``variables`` with everything that decides how they change: the programmes
+        selecting their domains and the variables their steps' conditional effects read,
+        closed under both — a state reduced to these evolves them exactly."""
+        reads: dict[int, set[int]] = {}
+        for step in self.steps:
+            if step.variable >= 0:
+                reads.setdefault(step.variable, set()).update(self.condition_variables(step))
+        kept = set(variables)
+        frontier = list(kept)
+        while frontier:
+            v = frontier.pop()
+            parent = self.vars[v].parent
+            for u in ({parent} if parent >= 0 else set()) | reads.get(v, set()):
+                if u not in kept:
+                    kept.add(u)
+                    frontier.append(u)
+        return kept
 
     # --- running -----------------------------------------------------------------------------
 
@@ -420,7 +496,7 @@ class CompiledModel:
             if var.parent >= 0:
                 domain = var.domain(values)
                 values[i] = -1 if domain is None else domain.initial
-        return State(tuple(values), -1, "")
+        return State(tuple(values), -1, "", self.memory_defaults)
 
     def check_state(self, state: Any, argument: str = "state") -> None:
         """Raise a clear error unless ``state`` is a state of this model.
@@ -434,7 +510,7 @@ class CompiledModel:
                 f"{argument} must be a State (Simulator.state, CompiledModel.initial_state()) "
                 f"or None, not {type(state).__name__}"
             )
-        values, step, buffer = state
+        values, step, buffer = state.values, state.step, state.buffer
         if not isinstance(values, tuple) or len(values) != len(self.vars):
             raise ValueError(
                 f"{argument}.values must hold one value index for each of the model's "
@@ -467,6 +543,36 @@ class CompiledModel:
             )
         if not isinstance(buffer, str) or not (buffer == "" or buffer.isdigit()):
             raise ValueError(f"{argument}.buffer must be a string of typed digits, not {buffer!r}")
+        self._check_memory(state, argument)
+
+    def _check_memory(self, state: State, argument: str) -> None:
+        """The kept values of ``remember`` settings: one index per (setting, programme) in
+        that programme's domain, and the current programme's equal to what is shown."""
+        memory = state.memory
+        if not isinstance(memory, tuple) or len(memory) != len(self.memory_defaults):
+            raise ValueError(
+                f"{argument}.memory must hold {len(self.memory_defaults)} kept values (one per "
+                "remembered setting and programme); start from initial_state()"
+            )
+        for v, slots in self.memory_slots.items():
+            var = self.vars[v]
+            for case, slot in enumerate(slots):
+                domain = var.domains[case]
+                if slot < 0 or domain is None:
+                    continue
+                index = memory[slot]
+                if isinstance(index, bool) or not isinstance(index, int):
+                    raise ValueError(f"{argument}.memory[{slot}] is not an index: {index!r}")
+                if not 0 <= index < len(domain):
+                    raise ValueError(
+                        f"{argument}.memory[{slot}]: {index} is not an index of {var.name}'s "
+                        f"{len(domain)} values in case {case}"
+                    )
+                if case == state.values[var.parent] and index != state.values[v]:
+                    raise ValueError(
+                        f"{argument}.memory[{slot}] keeps {index} for {var.name} in the current "
+                        f"programme, but {var.name} is {state.values[v]}"
+                    )
 
     def hiding_guard(self, state: State) -> GuardInfo | None:
         """A guard with ``hide`` that holds now: the display shows only its text."""
@@ -506,7 +612,8 @@ class CompiledModel:
             if short:
                 return None  # an anywhere hold has no procedure to enter when released early
             target = -1 if anywhere.leave else state.step
-            return self._effects(state, anywhere, action, target, "", anywhere.effects[action][0])
+            effect = self._resolved(anywhere.effects[action], values)
+            return self._effects(state, anywhere, effect, target, "", effect[0])
         target = self.targets[state.step + 1][action]
         if target < 0:
             return None
@@ -514,29 +621,43 @@ class CompiledModel:
             if action not in self.short_enters:
                 return None
             # released early: the procedure moves as usual, the change does not happen
-            return state if target == state.step else State(values, target, "")
+            return state if target == state.step else State(values, target, "", state.memory)
         step = self.steps[target]
         buffer = state.buffer if target == state.step else ""
-        effect = step.effects[action]
+        effect = self._resolved(step.effects[action], values)
         kind = NONE if step.show_on_entry and target != state.step else effect[0]
         if kind == NONE and step.blank_clears and effect[0] == NONE:
             buffer = ""  # a non-digit key ends the typing (Entry.other_keys)
-        return self._effects(state, step, action, target, buffer, kind)
+        return self._effects(state, step, effect, target, buffer, kind)
+
+    @staticmethod
+    def _resolved(effect: tuple[Any, ...], values: tuple[int, ...]) -> tuple[Any, ...]:
+        """A conditional effect's branch for ``values`` (conditions read the state before the
+        action); any other effect as it is."""
+        while effect[0] == COND:
+            effect = effect[2] if all(values[c] in ok for c, ok in effect[1]) else effect[3]
+        return effect
 
     def _wait(self, state: State, seconds: float) -> State:
         """``seconds`` without a key: a step's timeout returns the appliance to no feature."""
         if state.step >= 0:
             timeout = self.steps[state.step].timeout
             if timeout is not None and seconds + 1e-9 >= timeout:
-                return State(state.values, -1, "")
+                return State(state.values, -1, "", state.memory)
         return state
 
     def _effects(
-        self, state: State, step: StepInfo, action: int, target: int, buffer: str, kind: int
+        self,
+        state: State,
+        step: StepInfo,
+        effect: tuple[Any, ...],
+        target: int,
+        buffer: str,
+        kind: int,
     ) -> State:
-        """Apply a step's effect of ``action`` (of ``kind``) and its side effects."""
+        """Apply a step's (resolved) ``effect`` of one action, as ``kind``, and its side
+        effects."""
         values = state.values
-        effect = step.effects[action]
         new = list(values)
         v = step.variable
         if kind == TABLE:
@@ -555,12 +676,19 @@ class CompiledModel:
                 table = effect[1][var.case(new)]
                 if table is not None:
                     new[v] = table[new[v]]
+        memory = list(state.memory) if self.memory_slots else None
         if (
             v >= 0
             and v in self.dependents
             and (new[v] != values[v] or kind == CLEAR or (kind == TABLE and effect[2]))
         ):
-            self._reset_dependents(new, v)
+            self._reset_dependents(new, v, values[v], memory)
+        if (
+            memory is not None
+            and v in self.memory_slots
+            and (kind == CLEAR or (kind == TABLE and effect[3]))
+        ):
+            self._forget(memory, v)
         for target_var, tables in step.side:
             before = new[target_var]
             var = self.vars[target_var]
@@ -569,13 +697,45 @@ class CompiledModel:
                 if table is not None:
                     new[target_var] = table[before]
             if target_var in self.dependents:  # a side effect always assigns
-                self._reset_dependents(new, target_var)
-        return State(tuple(new), target, buffer)
+                self._reset_dependents(new, target_var, before, memory)
+            if (
+                memory is not None
+                and target_var in step.forgets
+                and target_var in self.memory_slots
+            ):
+                self._forget(memory, target_var)
+        if memory is None:
+            return State(tuple(new), target, buffer)
+        for r, slots in self.memory_slots.items():  # what a setting shows is what it keeps
+            slot = slots[new[self.vars[r].parent]]
+            if slot >= 0:
+                memory[slot] = new[r]
+        return State(tuple(new), target, buffer, tuple(memory))
 
-    def _reset_dependents(self, values: list[int], parent: int) -> None:
+    def _reset_dependents(
+        self, values: list[int], parent: int, before: int, memory: list[int] | None
+    ) -> None:
+        """A programme was chosen (``before``: its value until now): its settings take the
+        new programme's default — or, for a ``remember`` setting, keep this programme's value
+        and take back the one kept for the new programme (unchanged if it did not change)."""
         for d in self.dependents[parent]:
+            slots = self.memory_slots.get(d) if memory is not None else None
+            if slots is not None and memory is not None:
+                if values[parent] == before:
+                    continue
+                if slots[before] >= 0 and values[d] >= 0:
+                    memory[slots[before]] = values[d]
+                slot = slots[values[parent]]
+                values[d] = -1 if slot < 0 else memory[slot]
+                continue
             domain = self.vars[d].domain(values)
             values[d] = -1 if domain is None else domain.initial
+
+    def _forget(self, memory: list[int], v: int) -> None:
+        """A ``reset`` of a ``remember`` setting forgets every programme's value."""
+        for slot in self.memory_slots[v]:
+            if slot >= 0:
+                memory[slot] = self.memory_defaults[slot]
 
     def _type(self, values: list[int], v: int, buffer: str, digit: str) -> tuple[int, str]:
         var = self.vars[v]
@@ -629,54 +789,21 @@ def _canonical(domain: Domain, magnitude: float) -> Any:
     return tidy_number(magnitude)
 
 
-def default_effect(step: Any, action: str, model: ApplianceModel) -> Any:
-    """The effect of ``action`` in ``step``, with the defaults filled in.
-
-    With no ``effect``: a step that adjusts a variable with keypad keys types digits; with a
-    single action it steps to the next value; a step without a variable has no main effect.
-    """
-    if isinstance(step.effect, dict):
-        return step.effect.get(action, "none")
-    if step.effect is not None:
-        return step.effect
-    if step.variable is None:
-        return "none"
-    if model.actions[action].digit is not None:
-        return "digit"
-    return "next"
-
-
-def entry_digits(magnitude: float, entry: Entry) -> str | None:
-    """The shortest digit string whose entry parses to ``magnitude`` (None: not typeable).
-
-    Digits are right-aligned and zero-padded, so leading zeros never help.
-
-    >>> entry_digits(90, Entry(format="mm:ss")), entry_digits(5400, Entry(format="h:mm"))
-    ('130', '130')
-    """
-    if magnitude < 0 or abs(magnitude - round(magnitude)) > 1e-9:
-        return None
-    total = round(magnitude)
-    fmt = entry.format
-    if fmt in ("number", "seconds"):
-        text = str(total)
-    elif fmt == "minutes":
-        if total % 60:
-            return None
-        text = str(total // 60)
-    elif fmt == "mm:ss":
-        text = str((total // 60) * 100 + total % 60)
-    elif fmt in ("hh:mm", "h:mm"):
-        if total % 60:
-            return None
-        text = str((total // 3600) * 100 + (total % 3600) // 60)
-    else:
-        hours, rest = divmod(total, 3600)
-        text = str(hours * 10000 + (rest // 60) * 100 + rest % 60)
-    return text if len(text) <= entry.digits() else None
-
-
 _COMPILED: dict[int, tuple[ApplianceModel, CompiledModel]] = {}
+
+
+def leaves(effects: Iterable[tuple[Any, ...]]) -> list[tuple[Any, ...]]:
+    """Compiled effects with every conditional replaced by the effects it may apply: what an
+    analysis over all states (a lower bound, reachable values) must consider."""
+    found: list[tuple[Any, ...]] = []
+    pending = list(effects)
+    while pending:
+        effect = pending.pop()
+        if effect[0] == COND:
+            pending += [effect[2], effect[3]]
+        else:
+            found.append(effect)
+    return found
 
 
 def compiled_model(model: ApplianceModel | CompiledModel) -> CompiledModel:

@@ -121,6 +121,7 @@ class Simulator:
         self._display_cache: dict[tuple[int, int, int], str] = {}
         self._plain_show = {v: _is_plain(var.spec.show) for v, var in enumerate(self.compiled.vars)}
         self._goal_values: dict[tuple[str, type, Any], Any] = {}
+        self.running_for: list[float] = [0.0] * len(self.compiled.cycles)  # seconds, per cycle
 
     @property
     def actions(self) -> list[str]:
@@ -132,6 +133,7 @@ class Simulator:
         if state is not None:
             self.compiled.check_state(state)
         self.state = state if state is not None else self.compiled.initial_state()
+        self.running_for = [0.0] * len(self.compiled.cycles)
         return self.observe()
 
     def action_id(self, action: str | int) -> int:
@@ -173,6 +175,23 @@ class Simulator:
         if new is None:
             return self._refused(aid, seconds)
         self.state = new
+        for c in range(len(compiled.cycles)):  # a press takes no time; one that stops a cycle
+            if not compiled.cycle_running(new, c):  # (or never started it) restarts its clock
+                self.running_for[c] = 0.0
+        return self.observe()
+
+    def wait(self, seconds: float) -> Observation:
+        """Let ``seconds`` pass without touching the panel: a running cycle (``cycles``) that
+        reaches its length ends by itself. Presses take no time; only waiting does."""
+        seconds = hold_seconds(seconds)
+        compiled = self.compiled
+        for c in range(len(compiled.cycles)):
+            if not compiled.cycle_running(self.state, c):
+                continue
+            self.running_for[c] += seconds
+            if self.running_for[c] + 1e-9 >= compiled.cycle_seconds(self.state, c):
+                self.state = compiled.end_cycle(self.state, c)
+                self.running_for[c] = 0.0
         return self.observe()
 
     def _refused(self, aid: int, seconds: float | None) -> Observation:

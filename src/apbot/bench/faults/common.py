@@ -15,9 +15,9 @@ from typing import Any
 
 from pydantic import ValidationError
 
+from apbot.model.effects import default_effect
 from apbot.model.schema import Add, ApplianceModel
 from apbot.model.validate import check_model
-from apbot.sim.compiled import default_effect
 
 Data = dict[str, Any]
 Candidates = Iterator[tuple[Data, "Fault"]]

@@ -22,8 +22,8 @@ from apbot.bench.faults.common import (
     protected,
 )
 from apbot.model.domain import ValueProblem, build_domain, normalise
+from apbot.model.effects import default_effect
 from apbot.model.schema import ApplianceModel, GoTo, Step
-from apbot.sim.compiled import default_effect
 
 
 def missing_step(model: ApplianceModel, name: str, rng: random.Random) -> Candidates:

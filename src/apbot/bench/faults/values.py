@@ -28,9 +28,10 @@ from apbot.bench.faults.common import (
     read_spec,
 )
 from apbot.model.domain import build_domain
+from apbot.model.effects import default_effect
 from apbot.model.schema import Add, ApplianceModel, time_step_seconds
 from apbot.model.values import format_hms, normalise_text, parse_hms, tidy_number
-from apbot.sim.compiled import compiled_model, default_effect
+from apbot.sim.compiled import compiled_model
 
 MAX_FAULTY_VALUES = 20_000  # a range end pushed "too high" stays a plausible reading
 

@@ -22,7 +22,19 @@ from typing import Any
 from pydantic import TypeAdapter
 
 from apbot.model.domain import all_values, build_domain
-from apbot.model.schema import Add, ApplianceModel, GoTo, Variable
+from apbot.model.schema import (
+    Add,
+    ApplianceModel,
+    Conditional,
+    GoTo,
+    OtherThan,
+    Skip,
+    Variable,
+)
+from apbot.model.validate import reachable_indices
+from apbot.sim.checks import guard_problems
+from apbot.sim.compiled import compiled_model
+from apbot.testing.bfs import random_walk
 
 # What :func:`format_parts` can report; the generator is tested to produce every one.
 FORMAT_PARTS = (
@@ -35,6 +47,7 @@ FORMAT_PARTS = (
     "keypad other keys clear",
     "keypad shows typed",
     "clamp",
+    "conditional effect",
     "confirm step",
     "cycling programme key",
     "dependent setting",
@@ -53,18 +66,23 @@ FORMAT_PARTS = (
     "none effect",
     "number guard",
     "on_entry show",
+    "one-position guard",
     "piecewise",
     "power guard",
     "prev",
+    "remembered setting",
     "reset effect",
     "reset side effect",
     "running guard",
     "set side effect",
+    "skip",
     "time",
     "time keypad",
+    "timed cycle",
     "toggle",
     "two-control hold",
     "two programmes",
+    "unreachable values",
     "wrap",
 )
 
@@ -73,18 +91,20 @@ _VARIABLE: TypeAdapter[Any] = TypeAdapter(Variable)
 
 def random_model(rng: random.Random, max_states: int = 30_000) -> ApplianceModel:
     """A schema-valid model with all references resolved (semantic checks may still warn),
-    with at most ``max_states`` states (:func:`state_bound`): larger draws are discarded and
-    drawn again from the same ``rng``, so large cases are not generated at all."""
+    with at most ``max_states`` states (:func:`state_bound`) and no guard that holds for good
+    (:func:`apbot.sim.checks.guard_problems`): other draws are discarded and drawn again from
+    the same ``rng``, so such cases are not generated at all."""
     for _ in range(1_000):
         model = _Builder(rng).build()
-        if state_bound(model) <= max_states:
-            return model
+        if state_bound(model) <= max_states and not guard_problems(model):
+            return model  # (guards that together lock the appliance for good are drawn again)
     raise ValueError(f"no model with at most {max_states} states in 1,000 draws; allow more")
 
 
 def state_bound(model: ApplianceModel) -> int:
     """An upper bound on the number of states: every combination of values (a dependent
-    setting counts its largest case, plus "absent"), times every pointer position, where a
+    setting counts its largest case, plus "absent"; a remembered one every combination of
+    its cases' values), times every pointer position, where a
     keypad step counts once per buffer it can hold."""
     total = 1
     for var in model.variables.values():
@@ -93,6 +113,10 @@ def state_bound(model: ApplianceModel) -> int:
         else:
             parent = build_domain(model.variables[var.depends_on]).values
             cases = var.cases or {}
+            if var.remember:  # a value kept for every programme (the current one shown)
+                for case in cases.values():
+                    total *= len(build_domain(var, case))
+                continue
             total *= max(len(build_domain(var, c)) for c in cases.values()) + (
                 len(cases) < len(parent)
             )
@@ -116,6 +140,7 @@ class _Builder:
         self.actions: dict[str, Any] = {}
         self.features: dict[str, list[dict[str, Any]]] = {}
         self.guards: list[dict[str, Any]] = []
+        self.cycles: list[dict[str, Any]] = []
         self.arrows: tuple[str, str] | None = None  # one ▲/▼ pair shared by several steps
         self.digits: list[str] | None = None  # one keypad shared by every keypad step
         self.anywhere: list[dict[str, Any]] = []
@@ -169,6 +194,7 @@ class _Builder:
                 "features": self.features,
                 "anywhere": self.anywhere,
                 "guards": self.guards,
+                "cycles": self.cycles,
             }
         )
 
@@ -212,7 +238,23 @@ class _Builder:
             self._add_anywhere_key()
         if rng.random() < 0.25:
             self._add_timeouts()
+        # newer parts of the format come from a second generator seeded by what was drawn,
+        # so that every earlier seed still draws the same model underneath
+        _Extras(self, random.Random(repr((self.variables, self.features)))).add()
+        if len(self.actions) % 2 == 0:  # decided without a draw: earlier seeds keep their models
+            self._mark_unreachable()
+        self._power_always_works()
         return self.model()
+
+    def _power_always_works(self) -> None:
+        """Every other guard lets the power key through: with the power guard allowing only
+        that key, a mode, a lock or a number that blocks it would leave an appliance switched
+        off in that state with nothing that works, for good (the checker refuses such models)."""
+        if not self.power_key:
+            return
+        for guard in self.guards:
+            if guard["when"] != {"power": "off"} and self.power_key not in guard["only"]:
+                guard["only"] = sorted([*guard["only"], self.power_key])
 
     def _add_anywhere_key(self) -> None:
         """A key that acts from any screen: a go-to, a step or a reset of a setting (an EXPRESS
@@ -275,6 +317,19 @@ class _Builder:
         self.feature(
             [{"actions": [rng.choice(keys)], "variable": rng.choice(plain), "effect": "next"}]
         )
+
+    def _mark_unreachable(self) -> None:
+        """Declare the values no key reaches ``unreachable`` (an automatic programme's own
+        stages): a go-to key per programme for only some programmes leaves some out."""
+        model = self.model()
+        for name in model.variables:
+            found: set[Any] = set()
+            for domain in _case_domains(model, name):
+                reached = reachable_indices(model, name, domain)
+                found.update(v for i, v in enumerate(domain.values) if i not in reached)
+            defaults = {d.values[d.initial] for d in _case_domains(model, name)}
+            if found - defaults:
+                self.variables[name]["unreachable"] = sorted(found - defaults, key=str)
 
     def _add_power(self) -> None:
         """A power key guarding everything else; switching off may forget settings later."""
@@ -518,6 +573,111 @@ class _Builder:
             self.feature([step])
 
 
+class _Extras:
+    """Parts of the format added after the generator's first version, sprinkled over a drawn
+    model: a held key scrolling several values (``skip``), effects that depend on the state
+    (``when``/``then``/``otherwise``), and guards that let keys work in one position of a
+    mode only (``other_than``), settings remembered per programme (``remember``), and
+    cycles that end by themselves (``cycles``)."""
+
+    def __init__(self, builder: _Builder, rng: random.Random) -> None:
+        self.builder = builder
+        self.rng = rng
+
+    def add(self) -> None:
+        if self.rng.random() < 0.3:
+            self._hold_to_scroll()
+        if self.rng.random() < 0.35:
+            self._conditional()
+        if self.rng.random() < 0.5:
+            self._one_position()
+        if "running" in self.builder.variables and self.rng.random() < 0.5:
+            self._cycle()
+        dependents = [n for n, v in self.builder.variables.items() if "depends_on" in v]
+        if dependents and self.rng.random() < 0.5:  # a setting kept per programme (zone)
+            self.builder.variables[self.rng.choice(dependents)]["remember"] = True
+
+    def _conditional(self) -> None:
+        """One key's effect depends on an independent variable (its own, a mode, power)."""
+        b = self.builder
+        guarded = {n for g in b.guards for n in g["when"]}  # their release stays unconditional
+        steps = [s for s in self._adjusting() if s["variable"] not in guarded]
+        readable = [n for n, v in b.variables.items() if "depends_on" not in v]
+        if not steps or not readable:
+            return
+        step = self.rng.choice(steps)
+        key = self.rng.choice(step["actions"])
+        name = self.rng.choice(readable)
+        values = _some_values(b.variables[name])
+        chosen = self.rng.sample(values, self.rng.randint(1, max(1, len(values) - 1)))
+        condition: Any = chosen[0] if len(chosen) == 1 else chosen
+        if self.rng.random() < 0.3:
+            condition = {"other_than": chosen[0]}
+        otherwise = self.rng.choice(["none", "next", "prev", "reset"])
+        step["effect"][key] = {
+            "when": {name: condition},
+            "then": step["effect"][key],
+            "otherwise": otherwise,
+        }
+
+    def _cycle(self) -> None:
+        """Running ends by itself after a time or number setting (presses take no time, so
+        it never ends during a plan: the planner and BFS must agree all the same)."""
+        b = self.builder
+        lengths = [
+            n
+            for n, v in b.variables.items()
+            if "depends_on" not in v
+            and (v["type"] == "time" or (v["type"] == "numeric" and v.get("unit") == "min"))
+        ]
+        if lengths:
+            cycle: dict[str, Any] = {"when": {"running": "on"}, "lasts": self.rng.choice(lengths)}
+            cycle["set"] = {"running": "off"}
+            if self.rng.random() < 0.5:
+                cycle["reset"] = [cycle["lasts"]]
+            b.cycles.append(cycle)
+
+    def _one_position(self) -> None:
+        """A mode guard becomes one whose keys work in one position only (``other_than``)."""
+        b = self.builder
+        for guard in b.guards:
+            [(name, blocked)] = list(guard["when"].items())[:1] or [(None, None)]
+            spec = b.variables.get(name) if name else None
+            if isinstance(blocked, list) and spec and spec["type"] == "discrete":
+                free = [v for v in spec["values"] if v not in blocked]
+                guard["when"] = {name: {"other_than": self.rng.choice(free)}}
+                return
+
+    def _adjusting(self) -> list[dict[str, Any]]:
+        """Steps that adjust a variable by effects of their own (not keypad digits)."""
+        return [
+            step
+            for steps in self.builder.features.values()
+            for step in steps
+            if step.get("variable")
+            and isinstance(step.get("effect"), dict)
+            and set(step["effect"]) == set(step["actions"])  # a map from action to effect
+            and "digit" not in step["effect"].values()
+        ]
+
+    def _hold_to_scroll(self) -> None:
+        """Holding one of a step's keys (pressed, it moves one value) moves several at once."""
+        b = self.builder
+        keys = [
+            (step, key)
+            for step in self._adjusting()
+            for key in step["actions"]
+            if b.actions[key].get("skill", "press") == "press" and "control" in b.actions[key]
+        ]
+        if not keys:
+            return
+        step, key = self.rng.choice(keys)
+        name = f"a{len(b.actions)}"
+        b.actions[name] = {"control": b.actions[key]["control"], "skill": "hold", "seconds": 2}
+        step["actions"].append(name)
+        step["effect"][name] = {"skip": self.rng.choice([2, 3, -2, 5])}
+
+
 def _ranges(rng: random.Random) -> list[list[int]]:
     start = rng.choice([0, 1, 5, 10])
     step = rng.choice([1, 2, 5])
@@ -602,6 +762,13 @@ def _dependent_variable(
     return {"type": kind, "depends_on": parent, "cases": cases, "wrap": wrap}
 
 
+def _case_domains(model: ApplianceModel, name: str) -> list[Any]:
+    var = model.variables[name]
+    if var.depends_on is None:
+        return [build_domain(var)]
+    return [build_domain(var, case) for case in (var.cases or {}).values()]
+
+
 def _value_count(var: dict[str, Any]) -> int:
     if "values" in var:
         return len(var["values"])
@@ -635,7 +802,13 @@ def format_parts(model: ApplianceModel) -> set[str]:
     parents = {v.depends_on for v in model.variables.values() if v.depends_on}
     if len(parents) > 1:
         parts.add("two programmes")
+    if model.cycles:
+        parts.add("timed cycle")
     for var in model.variables.values():
+        if var.unreachable:
+            parts.add("unreachable values")
+        if var.remember:
+            parts.add("remembered setting")
         if var.depends_on:
             parts.add("dependent setting")
             parent_values = build_domain(model.variables[var.depends_on]).values
@@ -687,6 +860,10 @@ def format_parts(model: ApplianceModel) -> set[str]:
                     parts.add("add")
                 elif isinstance(effect, GoTo):
                     parts.add("go-to programme key" if step.variable in parents else "go-to")
+                elif isinstance(effect, Skip):
+                    parts.add("skip")
+                elif isinstance(effect, Conditional):
+                    parts.add("conditional effect")
                 elif effect in ("prev", "toggle", "none"):
                     parts.add(str(effect) + (" effect" if effect == "none" else ""))
                 elif effect == "reset":
@@ -697,6 +874,8 @@ def format_parts(model: ApplianceModel) -> set[str]:
                     parts.add("cycling programme key")
     for guard in model.guards:
         names = set(guard.when)
+        if any(isinstance(w, OtherThan) for w in guard.when.values()):
+            parts.add("one-position guard")
         if guard.hide:
             parts.add("hidden display")
         if "power" in names:
@@ -724,9 +903,6 @@ def random_goal(rng: random.Random, model: ApplianceModel) -> dict[str, Any]:
         return _default_elsewhere_goal(rng, model, rng.choice(dependents))
     names = rng.sample(list(model.variables), rng.randint(1, min(3, len(model.variables))))
     if rng.random() < 0.5:
-        from apbot.plan.bfs import random_walk
-        from apbot.sim.compiled import compiled_model
-
         compiled = compiled_model(model)
         state = random_walk(compiled, rng, rng.randint(3, 30))
         walked = {n: compiled.value(state, n) for n in names}

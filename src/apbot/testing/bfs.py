@@ -41,8 +41,9 @@ def shortest_plan_length(
 
 def goal_projection(compiled: CompiledModel, goal: CompiledGoal) -> Callable[[State], Hashable]:
     """A state reduced to what can influence reaching ``goal``: the goal's variables, those
-    guards read, the programmes selecting their domains, the feature pointer, and the keypad
-    buffer while it types one of those variables.
+    guards read, the programmes selecting their domains and the variables conditional effects
+    on them read (closed under both), the feature pointer, and the keypad buffer while it
+    types one of those variables.
 
     Exact: an action's effect on these depends only on these (guards read guard variables,
     effects and side effects read their own variable and its programme, the pointer moves by
@@ -52,12 +53,7 @@ def goal_projection(compiled: CompiledModel, goal: CompiledGoal) -> Callable[[St
     kept = set(goal.variables)
     for guard in compiled.guards:
         kept.update(v for v, _ in guard.conditions)
-    frontier = list(kept)
-    while frontier:
-        parent = compiled.vars[frontier.pop()].parent
-        if parent >= 0 and parent not in kept:
-            kept.add(parent)
-            frontier.append(parent)
+    kept = compiled.influencers(kept)
     order = sorted(kept)
     typing = tuple(
         step.variable in kept and any(e[0] == DIGIT for e in step.effects.values())
@@ -65,10 +61,17 @@ def goal_projection(compiled: CompiledModel, goal: CompiledGoal) -> Callable[[St
     )
 
     pick = itemgetter(*order) if order else (lambda values: ())
+    memory = compiled.memory_of(kept)
 
     def key(state: State) -> Hashable:
         step = state.step
-        return (pick(state.values), step, state.buffer if step >= 0 and typing[step] else "")
+        kept_values = tuple(state.memory[s] for s in memory)
+        return (
+            pick(state.values),
+            step,
+            state.buffer if step >= 0 and typing[step] else "",
+            kept_values,
+        )
 
     return key
 
