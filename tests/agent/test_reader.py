@@ -171,3 +171,29 @@ def test_every_display_of_every_bundled_appliance_reads_back_as_its_true_state()
                     and all(truth[n] is None for n in h.absent)
                     for h in reading.hypotheses
                 ), (appliance.id, observation.text)
+
+
+def test_an_unlit_lamp_of_a_programme_dependent_setting_allows_its_absence() -> None:
+    """In FAN mode the air conditioner has no TURBO: its dark lamp must not claim "off"."""
+    model = model_from(
+        """
+        controls: [{id: m}, {id: t}]
+        variables:
+          mode: {type: discrete, values: [cool, fan], show: "{value}"}
+          turbo:
+            type: discrete
+            depends_on: mode
+            show: {"off": "", "on": "TURBO"}
+            cases: {cool: ["off", "on"]}
+        actions: {press_m: {control: m}, press_t: {control: t}}
+        features:
+          mode: [{actions: [press_m], variable: mode, effect: next}]
+          turbo: [{actions: [press_t], variable: turbo, effect: toggle}]
+        display: {idle: "{mode}", indicators: [turbo]}
+        """
+    )
+    reader = DisplayReader(model)
+    (dark,) = [h for h in reader.read("fan").hypotheses if h.screen.variable == "mode"]
+    assert dark.values == {"mode": "fan"} and dark.lamps["turbo"] == {"off", None}
+    (lit,) = [h for h in reader.read("cool  TURBO").hypotheses if h.screen.variable == "mode"]
+    assert lit.lamps["turbo"] == {"on"}

@@ -30,8 +30,8 @@ SUITE = load_suite()
 IDS = [a.id for a in SUITE.appliances]
 
 
-def test_nine_categories_of_five_with_ten_tasks_each() -> None:
-    assert len(SUITE.appliances) == 45 and len(SUITE.tasks) == 450
+def test_fifteen_categories_of_five_with_ten_tasks_each() -> None:
+    assert len(SUITE.appliances) == 75 and len(SUITE.tasks) == 750 and len(CATEGORIES) == 15
     for category in CATEGORIES:
         members = [a for a in SUITE.appliances if a.category == category]
         assert len(members) == 5, category
@@ -130,7 +130,7 @@ def test_stats_json_shape() -> None:
     result = CliRunner().invoke(app, ["suite", "stats", "--json"])
     assert result.exit_code == 0, result.output
     stats = json.loads(result.output)
-    assert stats["appliances"] == 45 and stats["tasks"] == 450
+    assert stats["appliances"] == 75 and stats["tasks"] == 750
     assert set(stats["features"]) >= {
         "keypad",
         "dial",

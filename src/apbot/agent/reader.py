@@ -360,6 +360,8 @@ class DisplayReader:
             spec = self._specs[name]
             values = tuple(all_values(spec))
             table[name] = [(v, lamp_for(spec, name, v, values)) for v in values]
+            if spec.depends_on:  # a setting this programme lacks leaves its lamp unlit too
+                table[name].append((None, lamp_for(spec, name, None, values)))
         return table
 
     @cached_property
