@@ -21,7 +21,6 @@ How it works, in order:
 
 from __future__ import annotations
 
-import math
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import Any
@@ -124,6 +123,11 @@ def _words(text: str) -> list[str]:
     return [t.text for t in tokenize(text.replace("_", " ")) if t.text.isalpha()]
 
 
+def _phrase_words(text: str) -> list[str]:
+    """Words and numbers of a value's name ("quick 20", "eco 40-60", "A-6")."""
+    return [t.text for t in tokenize(text.replace("_", " ")) if t.text.isalnum()]
+
+
 def _steps_of(model: ApplianceModel) -> Iterable[tuple[str, int, Step]]:
     for feature, steps in model.features.items():
         for index, step in enumerate(steps):
@@ -205,6 +209,8 @@ def build(model: ApplianceModel) -> Model:
                 for a, effect in _step_effects(step)
                 if not isinstance(effect, GoTo) and len(model.actions.get(a, _NoAction).__dict__)
             ]
+            if info.role == "switch":
+                continue  # a switch's key is often shared (hold TIMER to lock)
             for label in _control_labels(model, entry + own):
                 if not any(w in _START_LABELS for w in _words(label)):
                     _add_vocab(info, label, 0.8)
@@ -268,33 +274,44 @@ def _mark_power_and_running(model: ApplianceModel, infos: dict[str, VarInfo]) ->
     START key sets, or is named for an operation (heating, dispensing, status)."""
     hiding = {name for guard in model.guards if guard.hide for name in guard.when}
     for name, info in infos.items():
-        if info.role == "switch" and (name in hiding or name == "power") and name == "power":
+        named = name == "power" or (name in hiding and concept("power") in info.vocab)
+        if info.role == "switch" and named:
             info.role = "power"
-        elif info.role == "switch" and name in hiding and concept("power") in info.vocab:
-            info.role = "power"
-    for feature, _index, step in _steps_of(model):
-        labels = " ".join(_control_labels(model, step.actions)).casefold()
+    for _feature, _index, step in _steps_of(model):
+        pressed = [a for a in step.actions if model.actions[a].skill == "press"]
+        labels = " ".join(_control_labels(model, pressed)).casefold()
         if not any(word in _words(labels) for word in _START_LABELS):
             continue
-        targets = [step.variable] if step.variable else []
+        goes = any(isinstance(effect, GoTo) for _a, effect in _step_effects(step))
+        targets = [step.variable] if step.variable and goes else []
         targets += list(step.set)
         for target in targets:
-            info = infos.get(target or "")
-            if info is not None and isinstance(info.var, DiscreteVariable) and info.role != "power":
-                if stem(target or "") in _OPERATION_NAMES or info.role == "switch":
-                    info.role = "running"
+            found = infos.get(target or "")
+            if (
+                found is not None
+                and isinstance(found.var, DiscreteVariable)
+                and found.role != "power"
+                and (stem(target or "") in _OPERATION_NAMES or found.role == "switch")
+            ):
+                found.role = "running"
     for name, info in infos.items():
-        if info.role in ("switch", "setting") and isinstance(info.var, DiscreteVariable):
-            if stem(name) in _OPERATION_NAMES:
-                info.role = "running"
+        operation = stem(name) in _OPERATION_NAMES
+        if (
+            operation
+            and info.role in ("switch", "setting")
+            and isinstance(info.var, DiscreteVariable)
+        ):
+            info.role = "running"
 
 
-def _start_values(model: ApplianceModel, infos: dict[str, VarInfo]) -> dict[str | None, tuple[str, Any]]:
+def _start_values(
+    model: ApplianceModel, infos: dict[str, VarInfo]
+) -> dict[str | None, tuple[str, Any]]:
     """What START sets the running variable to: by the variable whose feature ends with it
     (a timer programme ends in "timer" rather than "cooking"), and in general (key None)."""
     found: dict[str | None, tuple[str, Any]] = {}
     running = [n for n, i in infos.items() if i.role == "running"]
-    for feature, steps in model.features.items():
+    for _feature, steps in model.features.items():
         adjusted = [s.variable for s in steps if s.variable and s.variable not in running]
         for step in steps:
             for action, effect in _step_effects(step):
@@ -318,7 +335,9 @@ def _start_values(model: ApplianceModel, infos: dict[str, VarInfo]) -> dict[str 
     return found
 
 
-def _phrases(model: ApplianceModel, infos: dict[str, VarInfo]) -> list[tuple[str, Any, tuple[str, ...], float]]:
+def _phrases(
+    model: ApplianceModel, infos: dict[str, VarInfo]
+) -> list[tuple[str, Any, tuple[str, ...], float]]:
     """Word sequences that name one value of one variable."""
     phrases: list[tuple[str, Any, tuple[str, ...], float]] = []
     for name, info in infos.items():
@@ -335,7 +354,9 @@ def _phrases(model: ApplianceModel, infos: dict[str, VarInfo]) -> list[tuple[str
             if show.get(text) and "{" not in show[text]:
                 forms.append(show[text])
             for form in forms:
-                words = [w for w in _words(form)]
+                words = _phrase_words(form)
+                if all(w.replace(".", "").isdigit() for w in words):
+                    continue  # a number: read as a quantity
                 if not words:
                     continue
                 if len(words) == 1 and words[0] in LETTER_WORDS:
@@ -358,9 +379,7 @@ def _phrases(model: ApplianceModel, infos: dict[str, VarInfo]) -> list[tuple[str
             for label in _control_labels(model, [action]):
                 words = _words(label)
                 if words and not any(w in STOP_WORDS for w in words):
-                    phrases.append(
-                        (step.variable, effect.to, tuple(stem(w) for w in words), 0.95)
-                    )
+                    phrases.append((step.variable, effect.to, tuple(stem(w) for w in words), 0.95))
     return phrases
 
 
@@ -416,10 +435,13 @@ def parse_instruction(model: ApplianceModel, instruction: str) -> Goal:
             continue
         goal[match.var] = match.value
         claimed.update(range(match.start, match.end))
-    mentions = find_mentions(text.tokens, skip=claimed)
+    mentions = _distinct(find_mentions(text.tokens, skip=claimed))
     _assign_mentions(view, text, mentions, goal, claimed)
     _superlatives(view, text, goal, claimed)
+    _zero_settings(view, text, goal, claimed)
     _switches(view, text, goal, claimed)
+    _entry_switches(view, goal)
+    _boil(view, text, goal)
     _power_and_running(view, text, goal)
     return _checked(view, goal)
 
@@ -437,37 +459,123 @@ def _negated_before(text: _Text, start: int, reach: int = 3) -> bool:
 def _value_matches(view: Model, text: _Text) -> list[_Match]:
     matches: list[_Match] = []
     n = len(text.tokens)
+    verbs = _verb_positions(text)
     for var, value, stems, weight in view.phrases:
+        info = view.infos[var]
         for i in range(n):
-            end = _match_at(text, i, stems)
-            if end is None:
+            found = _match_at(text, i, stems)
+            if found is None:
                 continue
+            end, quality = found
             if _negated_before(text, i):
                 continue
-            exact = all(text.stems[k] in stems for k in range(i, end) if text.word(k) not in _CONNECTORS)
-            score = len(stems) * weight * (1.0 if exact else 0.9)
-            score += 0.5 * _near_vocab(view.infos[var], text, i, end, reach=2)
+            if text.word(end) == "-" and text.word(end + 1) in ("off", "on"):
+                continue  # "auto-off" names a timer, not the AUTO mode
+            own = _near_vocab(info, text, i, end, reach=2)
+            if len(stems) == 1 and own == 0 and _names_other(view, var, text, i):
+                continue  # "power level 8" is not the POWER mode
+            score = len(stems) * weight * quality + 0.5 * own
+            if i in verbs and len(stems) == 1:
+                score *= 0.5  # "bake a French loaf": the verb is weaker than the noun
             matches.append(_Match(var, value, i, end, score))
     matches.sort(key=lambda m: (-m.score, m.start))
     return matches
 
 
-def _match_at(text: _Text, i: int, stems: tuple[str, ...]) -> int | None:
-    """End of the phrase ``stems`` matched from token i (connectors may sit between words)."""
+def _names_other(view: Model, var: str, text: _Text, i: int) -> bool:
+    """The word at i names another variable that a number or that variable's word follows."""
+    key = text.concepts[i]
+    others = [
+        info for name, info in view.infos.items() if name != var and info.vocab.get(key, 0.0) >= 0.8
+    ]
+    if not others:
+        return False
+    following = text.word(i + 1)
+    if following[:1].isdigit() or following in _NUMBER_WORDS:
+        return True
+    return any(
+        info.vocab.get(text.concepts[i + 1] if i + 1 < len(text.concepts) else "", 0.0)
+        for info in others
+    )
+
+
+_NUMBER_WORDS = frozenset(
+    {
+        "one",
+        "two",
+        "three",
+        "four",
+        "five",
+        "six",
+        "seven",
+        "eight",
+        "nine",
+        "ten",
+        "eleven",
+        "twelve",
+        "twenty",
+        "thirty",
+        "forty",
+        "fifty",
+        "sixty",
+        "seventy",
+        "eighty",
+        "ninety",
+        "hundred",
+    }
+)
+
+
+def _verb_positions(text: _Text) -> set[int]:
+    """Tokens that open a clause with a verb of doing ("Bake a cake", "then steam it")."""
+    positions = set()
+    for k in _clause_starts(text, loose=True):
+        k2 = k + 1 if text.word(k) in _FILLERS else k
+        if k2 < len(text.stems) and text.stems[k2] in _ACTION_VERBS:
+            positions.add(k2)
+    return positions
+
+
+_FILLERS = ("just", "please", "then", "now", "also", "first")
+
+
+def _match_at(text: _Text, i: int, stems: tuple[str, ...]) -> tuple[int, float] | None:
+    """End and quality of the phrase ``stems`` matched from token i (connectors may sit
+    between words; a synonym or a longer word that starts like the value counts less)."""
     k = i
+    quality = 1.0
     for index, target in enumerate(stems):
         if index:
             while text.word(k) in _CONNECTORS and k < len(text.tokens):
                 k += 1
-        if k >= len(text.tokens) or not similar(text.stems[k], target):
+        if k >= len(text.tokens):
+            return None
+        here = text.stems[k]
+        if here == target:
+            pass
+        elif similar(here, target):
+            quality = min(quality, 0.9)
+        elif here in _SYNONYM_STEMS.get(target, ()) or (
+            len(target) >= 4
+            and here.startswith(target)
+            and (len(here) <= len(target) + 4 or len(target) >= 5)
+        ):
+            quality = min(quality, 0.8)
+        else:
             return None
         k += 1
-    return k
+    return k, quality
+
+
+_SYNONYM_STEMS: dict[str, frozenset[str]] = {
+    stem(word): frozenset(stem(w) for w in others) for word, others in SYNONYMS.items()
+}
 
 
 def _near_vocab(info: VarInfo, text: _Text, start: int, end: int, reach: int = 6) -> float:
-    """How strongly the words around a span name the variable (nearer counts more)."""
-    score = 0.0
+    """How strongly the words around a span name the variable: each of its words found
+    counts once, nearer counts more, and a comma in between halves it."""
+    found: dict[str, float] = {}
     for direction, first in ((-1, start - 1), (1, end)):
         k = first
         factor = 1.0
@@ -479,11 +587,28 @@ def _near_vocab(info: VarInfo, text: _Text, start: int, end: int, reach: int = 6
                 break
             if word == ",":
                 factor *= 0.4
-            weight = info.vocab.get(text.concepts[k], 0.0)
+            key = text.concepts[k]
+            weight = info.vocab.get(key, 0.0)
             if weight:
-                score = max(score, factor * weight / distance)
+                found[key] = max(found.get(key, 0.0), factor * weight / distance)
             k += direction
-    return score
+    return sum(found.values())
+
+
+def _distinct(mentions: list[Mention]) -> list[Mention]:
+    """Drop a quantity that repeats the one just before it ("at 9 pm (21:00)", "a day, 24 h")."""
+    kept: list[Mention] = []
+    for mention in mentions:
+        last = kept[-1] if kept else None
+        if (
+            last is not None
+            and last.kind == mention.kind
+            and abs(last.value - mention.value) < 1e-6
+            and mention.start - last.end <= 3
+        ):
+            continue
+        kept.append(mention)
+    return kept
 
 
 def _assign_mentions(
@@ -559,9 +684,8 @@ def _fit(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
             seconds = round(mention.value)
         elif mention.kind == "clock" and info.timing != "duration":
             seconds = round(mention.value)
-            if format_hms(seconds) not in domain and seconds >= 13 * 3600 and not mention.meridiem:
-                seconds -= 12 * 3600
-            elif format_hms(seconds) not in domain and seconds >= 13 * 3600:
+            if format_hms(seconds) not in domain and seconds >= 13 * 3600:
+                # a 12-hour clock: 19:00 is 7:00
                 seconds -= 12 * 3600
         else:
             return None
@@ -571,20 +695,40 @@ def _fit(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
         number = _number_for(info, var.unit, mention)
         if number is None:
             return None
-        return _in_numeric(number, domain)
-    # discrete
-    if info.dimension is None and mention.kind not in ("number", "quantity"):
-        return _show_quantity(info, mention)
-    number = _number_for(info, "", mention) if info.dimension is None else None
-    if info.dimension is not None:
-        number = _number_for(info, _base_unit(info.dimension), mention)
-    if number is None:
-        return _show_quantity(info, mention)
+        converted = mention.kind == "fahrenheit" and var.unit.casefold() not in ("°f", "f")
+        return _in_numeric(number, domain, tolerance=_F_TOLERANCE if converted else 1e-6)
+    # discrete values that are numbers ("60", "1000") or quantities ("1.75 oz", "450 W")
+    measured = _measure(mention)
+    if measured is None:
+        return None
+    amount, dimension = measured
     for value in domain:
         q = parse_quantity(str(value))
-        if q is not None and abs(q[0] - number) < 1e-6:
+        if q is None:
+            continue
+        if q[1] is not None:
+            if q[1] == dimension and abs(q[0] - amount) < 1e-6 * max(1.0, abs(amount)):
+                return value
+        elif dimension is None or dimension == info.dimension:
+            if abs(q[0] - amount) < 1e-6:
+                return value
+        elif (
+            dimension == "fahrenheit"
+            and info.dimension == "temperature"
+            and abs(q[0] - (amount - 32) * 5 / 9) < 0.6
+        ):
             return value
     return _show_quantity(info, mention)
+
+
+def _measure(mention: Mention) -> tuple[float, str | None] | None:
+    if mention.kind == "number":
+        return mention.value, None
+    if mention.kind in ("quantity", "fahrenheit"):
+        return mention.value, mention.dimension
+    if mention.kind == "duration":
+        return mention.value, "time"
+    return None
 
 
 def _base_unit(dimension: str) -> str:
@@ -597,12 +741,10 @@ def _show_quantity(info: VarInfo, mention: Mention) -> Any:
     if mention.kind != "quantity" or not show:
         return None
     for value, text in show.items():
-        for word in tokenize(text):
-            pass
         for m in find_mentions(tokenize(text)):
-            if m.kind == "quantity" and m.dimension == mention.dimension:
-                if abs(m.value - mention.value) < 1e-6:
-                    return value
+            same = m.kind == "quantity" and m.dimension == mention.dimension
+            if same and abs(m.value - mention.value) < 1e-6:
+                return value
     return None
 
 
@@ -634,10 +776,15 @@ def _number_for(info: VarInfo, unit: str, mention: Mention) -> float | None:
     return None
 
 
-def _in_numeric(number: float, domain: list[Any]) -> Any:
-    for value in domain:
-        if abs(float(value) - number) < 1e-6:
-            return value
+_F_TOLERANCE = 5.0
+"""°C a Fahrenheit figure may miss a Celsius dial by: 350 °F is 176.7 °C, printed as 180 °C."""
+
+
+def _in_numeric(number: float, domain: list[Any], tolerance: float = 1e-6) -> Any:
+    """The domain value equal to ``number`` (or nearest within ``tolerance``)."""
+    best = min(domain, key=lambda v: abs(float(v) - number), default=None)
+    if best is not None and abs(float(best) - number) <= tolerance:
+        return best
     return None
 
 
@@ -660,13 +807,12 @@ def _unplaced(view: Model, text: _Text, mention: Mention, goal: Goal) -> None:
     for name, info in view.infos.items():
         if info.role != "setting":
             continue
-        if mention.kind == "duration" and (
-            isinstance(info.var, TimeVariable) or info.dimension == "time"
+        timed = isinstance(info.var, TimeVariable) or info.dimension == "time"
+        if (
+            (mention.kind == "duration" and timed)
+            or (mention.kind == "fahrenheit" and info.dimension == "temperature")
+            or (mention.kind == "quantity" and info.dimension == mention.dimension)
         ):
-            kinds.append(name)
-        elif mention.kind == "fahrenheit" and info.dimension == "temperature":
-            kinds.append(name)
-        elif mention.kind == "quantity" and info.dimension == mention.dimension:
             kinds.append(name)
     if not kinds or any(name in goal for name in kinds):
         return
@@ -679,7 +825,7 @@ def _unplaced(view: Model, text: _Text, mention: Mention, goal: Goal) -> None:
 
 
 def _superlatives(view: Model, text: _Text, goal: Goal, claimed: set[int]) -> None:
-    """"the lowest temperature", "full power", "a dark crust" on an ordered numeric setting."""
+    """ "the lowest temperature", "full power", "a dark crust" on an ordered numeric setting."""
     for k, token in enumerate(text.tokens):
         word = token.text
         if k in claimed:
@@ -726,26 +872,125 @@ def _ordered(info: VarInfo) -> bool:
 
 def _switches(view: Model, text: _Text, goal: Goal, claimed: set[int]) -> None:
     """An on/off setting named in the instruction: on, unless its words are negated."""
+    verbs = _verb_positions(text)
     for name, info in view.infos.items():
         if info.role != "switch" or name in goal:
             continue
+        own = _own_stems(info)
         best: tuple[float, int] | None = None
         for k in range(len(text.tokens)):
             if k in claimed or text.word(k) in STOP_WORDS:
                 continue
-            weight = info.vocab.get(text.concepts[k], 0.0)
-            if weight <= 0 or _generic(text.concepts[k]):
+            key = text.concepts[k]
+            weight = info.vocab.get(key, 0.0)
+            if weight <= 0 or _generic(key):
                 continue
-            weight = 1.0 if text.stems[k] in _own_stems(info) else 0.6 * weight
+            if text.stems[k] in own:
+                weight = 1.0
+                # "Warm the water" is not KEEP WARM; "UV light" is not the night light
+                doubtful = len(own) > 1 and (k in verbs or (k - 1) in claimed)
+                if doubtful and not _phrase_here(text, k, own):
+                    continue
+            elif _negative_around(text, k):
+                weight = 0.5  # a feature's word only says "without" ("no finish time")
+            else:
+                continue
             if best is None or weight > best[0]:
                 best = (weight, k)
-        if best is None or best[0] < 0.6:
+        if best is None:
             continue
         k = best[1]
         positive = not _negative_around(text, k)
         assert info.on is not None and info.off is not None
         goal[name] = info.on if positive else info.off
         claimed.add(k)
+
+
+def _phrase_here(text: _Text, k: int, own: set[str]) -> bool:
+    """Another of the switch's own words stands next to token k ("keep warm", "night light")."""
+    return any(text.stems[j] in own for j in (k - 1, k + 1) if 0 <= j < len(text.tokens))
+
+
+def _entry_switches(view: Model, goal: Goal) -> None:
+    """A setting entered through a switch ("READY AT" turns the finish timer on, then sets the
+    time) implies that switch on, unless the instruction already said otherwise."""
+    for _feature, steps in view.model.features.items():
+        for index, step in enumerate(steps):
+            if step.variable not in goal:
+                continue
+            for earlier in steps[:index]:
+                target = earlier.variable
+                info = view.infos.get(target or "")
+                if info is None or info.role != "switch" or target in goal:
+                    continue
+                effects = [effect for _a, effect in _step_effects(earlier)]
+                if all(effect == "toggle" for effect in effects) and effects:
+                    goal[info.name] = info.on
+
+
+def _zero_settings(view: Model, text: _Text, goal: Goal, claimed: set[int]) -> None:
+    """ "no delay", "no final spin", "skip the rinse": a numeric setting that can be 0 is 0."""
+    for k, token in enumerate(text.tokens):
+        if token.text not in NEGATIONS or token.text in ("off", "free", "stop", "cancel"):
+            continue
+        for d in range(1, 4):
+            j = k + d
+            if j >= len(text.tokens) or text.word(j) in _CLAUSE_ENDS or text.word(j) == ",":
+                break
+            key = text.concepts[j]
+            homes = [
+                info
+                for info in view.infos.values()
+                if info.name not in goal
+                and info.role == "setting"
+                and not isinstance(info.var, DiscreteVariable)
+                and (text.stems[j] in _own_stems(info) or key in _own_concepts(info))
+                and _starts_at_zero(info)
+            ]
+            if len(homes) == 1:
+                values = _domain_values(view, homes[0], goal)
+                zero = next((v for v in values if _magnitude(v) == 0), None)
+                if zero is not None:
+                    goal[homes[0].name] = zero
+                    claimed.add(j)
+                break
+
+
+def _own_concepts(info: VarInfo) -> set[str]:
+    return {concept(w) for w in _own_stems(info)}
+
+
+def _starts_at_zero(info: VarInfo) -> bool:
+    """A setting whose "none" is 0: any number, or a duration that starts empty (not a clock)."""
+    if isinstance(info.var, NumericVariable):
+        return True
+    if isinstance(info.var, TimeVariable) and info.timing != "clock":
+        domain = build_domain(info.var) if not info.var.depends_on else None
+        return domain is None or _magnitude(domain.values[domain.initial]) == 0
+    return False
+
+
+def _magnitude(value: Any) -> float | None:
+    if isinstance(value, int | float):
+        return float(value)
+    text = str(value)
+    if text.count(":") == 2:
+        h, m, sec = (int(x) for x in text.split(":"))
+        return float(h * 3600 + m * 60 + sec)
+    return None
+
+
+def _boil(view: Model, text: _Text, goal: Goal) -> None:
+    """ "bring it to the boil": 100 °C on a water temperature setting that offers it."""
+    if not any(s == stem("boil") for s in text.stems):
+        return
+    for info in view.infos.values():
+        if info.name in goal or not isinstance(info.var, NumericVariable):
+            continue
+        if info.dimension == "temperature" and info.var.unit.casefold() in ("°c", "c"):
+            values = _domain_values(view, info, goal)
+            if 100 in values and max(values) == 100:
+                goal[info.name] = 100
 
 
 _GENERIC = frozenset(
@@ -785,8 +1030,8 @@ def _negative_around(text: _Text, k: int) -> bool:
 
 
 _START_WORDS = frozenset({"start", "begin", "started", "starting", "begins", "kick", "launch"})
-_NOW_WORDS = ("right away", "straight away", "immediately", "start now", "it now", "now")
-_ACTION_VERBS = frozenset(
+_NOW_PHRASES = ("right away", "straight away", "immediately")
+_STRONG_VERBS = frozenset(
     stem(w)
     for w in (
         "cook",
@@ -809,114 +1054,128 @@ _ACTION_VERBS = frozenset(
         "defrost",
         "soften",
         "pop",
-        "run",
-        "keep",
         "dehydrate",
         "broil",
         "toast",
-        "bring",
-        "make",
-        "give",
     )
 )
+_WEAK_VERBS = frozenset(stem(w) for w in ("run", "keep", "bring", "make", "give"))
+_ACTION_VERBS = _STRONG_VERBS | _WEAK_VERBS
 
 
 def _power_and_running(view: Model, text: _Text, goal: Goal) -> None:
-    power = [n for n, i in view.infos.items() if i.role == "power"]
-    for name in power:
-        if _says_power_on(view, text):
-            info = view.infos[name]
+    for name, info in view.infos.items():
+        if info.role == "power" and name not in goal and _says_power_on(view, text):
             goal[name] = info.on
     running = [n for n, i in view.infos.items() if i.role == "running"]
-    if not running:
+    if not running or any(n in goal for n in running):
         return
-    start = _says_start(view, text)
+    start = _says_start(text)
+    started_by = _procedure_start(view, goal)
+    if start is None and started_by is not None:
+        start = True  # the procedure for a goal setting ends by starting (TIME DEFROST)
     if start is None:
         return
     key = next((v for v in goal if v in view.start_values), None)
-    target = view.start_values.get(key) or view.start_values.get(None)
+    target = started_by or view.start_values.get(key) or view.start_values.get(None)
     if target is None:
         return
     name, value = target
+    info = view.infos[name]
     if start:
         goal[name] = value
     else:
-        info = view.infos[name]
-        goal[name] = info.off or build_domain(info.var).values[build_domain(info.var).initial]
+        domain = build_domain(info.var)
+        goal[name] = info.off or domain.values[domain.initial]
+
+
+def _procedure_start(view: Model, goal: Goal) -> tuple[str, Any] | None:
+    """(running variable, value) when a goal setting's own procedure ends with a step that
+    sets the running variable — the model says that entering it starts the appliance."""
+    for _feature, steps in view.model.features.items():
+        for index, step in enumerate(steps):
+            if step.variable not in goal:
+                continue
+            for later in steps[index + 1 :]:
+                info = view.infos.get(later.variable or "")
+                if info is None or info.role != "running":
+                    continue
+                for _action, effect in _step_effects(later):
+                    if isinstance(effect, GoTo):
+                        return info.name, effect.to
+    return None
 
 
 def _says_power_on(view: Model, text: _Text) -> bool:
+    """ "turn the machine on", "switch on, ...", "power the bread maker up"."""
+    n = len(text.tokens)
     for k, token in enumerate(text.tokens):
         if token.text not in ("turn", "switch", "power", "switched", "turned"):
             continue
-        words = [text.word(k + d) for d in range(1, 5)]
-        # "switch on" followed by a setting's name is that setting, not the power
-        for d, word in enumerate(words):
-            if word in ("on", "up"):
-                between = words[:d]
-                if all(concept(w) in view.appliance_words or w in ("the", "it") for w in between):
-                    after = text.word(k + d + 2)
-                    after_concept = concept(after) if after else ""
-                    named = [
-                        i
-                        for i in view.infos.values()
-                        if i.role != "power" and after_concept in i.vocab
-                    ]
-                    if between or not named or after in _CLAUSE_ENDS or after == ",":
-                        if not between and named:
-                            break
-                        return True
-                break
-            if concept(word) not in view.appliance_words and word not in ("the", "it"):
-                break
+        j = k + 1
+        while j < n and (concept(text.word(j)) in view.appliance_words or text.word(j) == "the"):
+            j += 1
+        if text.word(j) not in ("on", "up"):
+            continue
+        if j > k + 1:
+            return True  # "turn it on", "power the bread maker up"
+        m = j + 1
+        while m < n and (concept(text.word(m)) in view.appliance_words or text.word(m) == "the"):
+            m += 1
+        if m >= n or text.word(m) in _CLAUSE_ENDS | {",", "and", "then"}:
+            return True  # "switch on, ...", "switch on the cooker and ..."
     return False
 
 
-def _says_start(view: Model, text: _Text) -> bool | None:
+def _says_start(text: _Text) -> bool | None:
     """True for "start it", False for "don't start", None when the instruction says neither."""
-    joined = " ".join(t.text for t in text.tokens)
+    joined = " " + " ".join(t.text for t in text.tokens) + " "
     negative = False
     positive = False
     for k, token in enumerate(text.tokens):
         word = token.text
-        starts = word in _START_WORDS or (
-            word in ("get", "set") and any(
-                text.word(k + d) in ("going", "started", "cooking", "heating", "running")
-                for d in range(1, 5)
-            )
-        ) or (word == "go" and text.word(k + 1) in ("ahead", ".", "!", ""))
-        if word == "press" and text.word(k + 1) == "start":
+        starts = word in _START_WORDS
+        if word in ("get", "set") and any(
+            text.word(k + d) in ("going", "started", "cooking", "heating", "running")
+            for d in range(1, 7)
+        ):
+            starts = True
+        if word == "go" and text.word(k + 1) in ("ahead", ".", "!", ""):
             starts = True
         if not starts:
             continue
         before = [text.word(k - d) for d in range(1, 4)]
-        if any(b in ("don't", "dont", "not", "without", "never") for b in before) or (
-            text.word(k + 1) == "yet" or text.word(k - 1) == "but" and text.word(k + 1) == "not"
-        ):
+        denied = any(b in ("don't", "dont", "not", "without", "never") for b in before)
+        if denied or "yet" in (text.word(k + 1), text.word(k + 2)):
             negative = True
         else:
             positive = True
-    if " not started" in joined or "but not start" in joined:
+    if " not started " in joined or " but not start" in joined:
         negative = True
     if negative:
         return False
-    if positive or any(f" {w} " in f" {joined} " for w in _NOW_WORDS[:3]):
+    if positive or any(f" {w} " in joined for w in _NOW_PHRASES):
         return True
-    # "now" closing a clause, or an instruction that opens with a doing verb
     for k, token in enumerate(text.tokens):
         if token.text == "now" and text.word(k - 1) != "from" and text.word(k + 1) != "on":
             return True
-    for k in _clause_starts(text):
-        k2 = k + 1 if text.word(k) in ("just", "please", "then", "now") else k
-        if text.stems[k2] in _ACTION_VERBS if k2 < len(text.stems) else False:
+    for k in _clause_starts(text, loose=True):
+        k2 = k + 1 if text.word(k) in _FILLERS else k
+        if k2 >= len(text.stems):
+            continue
+        if text.stems[k2] in _STRONG_VERBS:
+            return True
+        if text.stems[k2] in _WEAK_VERBS and (k == 0 or text.word(k - 1) in (".", ";", "!")):
             return True
     return None
 
 
-def _clause_starts(text: _Text) -> list[int]:
+def _clause_starts(text: _Text, loose: bool = False) -> list[int]:
+    """Where sentences begin (and, when ``loose``, clauses after ", and", "then")."""
+    ends = {".", ";", "!", "?"} | ({",", "and", "then"} if loose else set())
     starts = [0]
     for k, token in enumerate(text.tokens):
-        if token.text in (".", ";", "!", "?") and k + 1 < len(text.tokens):
+        if token.text in ends and k + 1 < len(text.tokens):
             starts.append(k + 1)
     return starts
 
@@ -931,10 +1190,3 @@ def _checked(view: Model, goal: Goal) -> Goal:
         except ValueProblem as exc:
             raise GoalParseError(str(value), f"not a value of {name}: {exc}") from None
     return out
-
-
-def _unused(*_: object) -> None:
-    return None
-
-
-_ = (math, _unused)

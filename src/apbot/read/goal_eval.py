@@ -8,6 +8,7 @@ so that a reader sees what went wrong.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from fnmatch import fnmatchcase
 from typing import Any
 
 from apbot.bench.suite import Suite
@@ -54,13 +55,16 @@ def evaluate_goals(
     categories: list[str] | None = None,
     appliances: list[str] | None = None,
 ) -> GoalScore:
-    """Parse every instruction of the chosen appliances and compare with the stored goal."""
+    """Parse every instruction of the chosen appliances and compare with the stored goal.
+
+    ``appliances`` are ids or shell patterns (``"*_4"``); ``categories`` are category names.
+    """
     score = GoalScore()
     for appliance in suite.appliances:
         category = appliance.category
         if categories and category not in categories:
             continue
-        if appliances and appliance.id not in appliances:
+        if appliances and not any(fnmatchcase(appliance.id, p) for p in appliances):
             continue
         for task in appliance.tasks:
             expected = parse_goal(appliance.model, task.goal)

@@ -38,15 +38,11 @@ def stem(word: str) -> str:
         return w
     if w.endswith("ly") and len(w) > 5:
         w = w[:-2]
-    if w.endswith("ies") and len(w) > 4:
-        w = w[:-3] + "y"
-    elif w.endswith("ied") and len(w) > 4:
+    if (w.endswith("ies") and len(w) > 4) or (w.endswith("ied") and len(w) > 4):
         w = w[:-3] + "y"
     elif w.endswith("ing") and len(w) > 5:
         w = w[:-3]
-    elif w.endswith("ed") and len(w) > 4:
-        w = w[:-2]
-    elif w.endswith("es") and len(w) > 4 and w[-3] in "sxz":
+    elif (w.endswith("ed") and len(w) > 4) or (w.endswith("es") and len(w) > 4 and w[-3] in "sxz"):
         w = w[:-2]
     elif w.endswith("s") and not w.endswith("ss") and len(w) > 3:
         w = w[:-1]
@@ -73,7 +69,8 @@ _GROUPS: tuple[tuple[str, ...], ...] = (
     ("lock", "child", "childlock", "lockout", "keylock", "keys", "buttons", "controls", "panel"),
     ("delay", "delayed", "preset", "later", "wait", "countdown"),
     ("finish", "end", "ready", "done", "finished"),
-    ("timer", "time", "duration"),
+    ("timer", "timers"),
+    ("time", "duration", "times"),
     ("light", "lamp"),
     ("buzzer", "beep", "beeps", "sound", "signal", "mute", "silence", "quiet", "alarm"),
     ("dry", "drying", "dryer"),
@@ -230,13 +227,17 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "softer": ("soft", "soften"),
     "light": ("pale", "lighter"),
     "dark": ("darker", "deep"),
-    "low": ("lo", "quiet", "gentle", "quietest", "down", "lowest"),
-    "high": ("hi", "full", "fast", "strong", "highest"),
+    "low": ("lo", "quiet", "gentle", "quietest", "down"),
+    "high": ("hi", "full", "fast", "strong"),
     "large": ("big", "bigger", "largest", "biggest"),
     "small": ("little", "smaller", "smallest"),
     "continuous": ("nonstop", "non", "continuously"),
     "cont": ("continuous", "continuously", "nonstop"),
     "auto": ("automatic", "automatically"),
     "sterilize": ("steam", "sterilizing", "sterilization"),
-    "free": ("freely", "free-flow", "flow"),
+    "free": ("freely", "flow"),
+    "store": ("storage", "stored"),
+    "storage": ("store", "storing"),
 }
+# Counts written as adverbs ("rinse twice").
+TIMES_WORDS = {"once": 1, "twice": 2, "thrice": 3}

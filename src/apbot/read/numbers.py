@@ -30,6 +30,7 @@ _REWRITES = (
     (re.compile(r"\bo'clock\b"), " oclock "),
     (re.compile(r"(?<=\d),(?=\d{3}\b)"), ""),  # 1,000 -> 1000
     (re.compile(r"(?<=\d)(?=[a-z°%])"), " "),  # 12min -> 12 min
+    (re.compile(r"\s[-\u2013\u2014]+\s|\u2014"), " ; "),  # a dash between clauses
     (re.compile(r"[\u2010-\u2015\u2212]"), "-"),  # typographic dashes and minus
     (re.compile(r"[\u2018\u2019`]"), "'"),
     (re.compile(r"º"), "°"),
@@ -158,8 +159,10 @@ def read_number(tokens: list[Token], i: int) -> Number | None:
                 total += current * 1000
                 current = 0
                 last = "hundred"
-            elif w == "and" and last == "hundred" and (
-                word(j + 1) in _UNITS_WORDS or word(j + 1) in _TENS_WORDS
+            elif (
+                w == "and"
+                and last == "hundred"
+                and (word(j + 1) in _UNITS_WORDS or word(j + 1) in _TENS_WORDS)
             ):
                 j += 1
                 continue
@@ -180,15 +183,14 @@ def read_number(tokens: list[Token], i: int) -> Number | None:
         value += 0.75
         j += 3
         words = True
-    elif word(j) == "-" and word(j + 1) == "and" and word(j + 2) in ("a", "an"):
-        if word(j + 3) == "half":  # "two-and-a-half"
-            value += 0.5
-            j += 4
+    elif [word(j + d) for d in range(4)] in (["-", "and", "a", "half"], ["-", "and", "an", "half"]):
+        value += 0.5  # "two-and-a-half"
+        j += 4
     return Number(value, i, j, words)
 
 
 def _fraction_alone(tokens: list[Token], i: int) -> Number | None:
-    """"half", "a half", "a quarter", "three quarters", "a", "an" (one of a unit)."""
+    """ "half", "a half", "a quarter", "three quarters", "a", "an" (one of a unit)."""
     n = len(tokens)
 
     def word(k: int) -> str:
@@ -201,8 +203,12 @@ def _fraction_alone(tokens: list[Token], i: int) -> Number | None:
         return Number(0.5 if word(j + 1) == "half" else 0.25, i, j + 2, True)
     if word(j) in ("half", "quarter"):
         return Number(0.5 if word(j) == "half" else 0.25, i, j + 1, True)
-    if word(j) in ("a", "an", "single"):
+    if word(j) in ("a", "an") and word(j + 1) == "single":
+        return Number(1.0, i, j + 2, True)
+    if word(j) in ("a", "an", "single", "once"):
         return Number(1.0, i, j + 1, True)
+    if word(j) in ("twice", "thrice"):
+        return Number(2.0 if word(j) == "twice" else 3.0, i, j + 1, True)
     if word(j) == "couple":
         return Number(2.0, i, j + 1, True)
     return None
@@ -285,7 +291,7 @@ def find_mentions(tokens: list[Token], skip: set[int] | None = None) -> list[Men
 
 
 def _clock_at(tokens: list[Token], i: int) -> Mention | None:
-    """"7:30", "7:30 pm", "9 pm", "8 o'clock", "half past six", "a quarter to eight"."""
+    """ "7:30", "7:30 pm", "9 pm", "8 o'clock", "half past six", "a quarter to eight"."""
     w = _word(tokens, i)
     hour: int | None = None
     minute = 0
@@ -346,10 +352,10 @@ def _clock_at(tokens: list[Token], i: int) -> Mention | None:
             hour = 0
         end += 1
     else:
-        part = _day_part(tokens, end)
-        if part is not None:
+        half = _day_part(tokens, end)
+        if half is not None:
             meridiem = True
-            if part == "pm" and hour < 12:
+            if half == "pm" and hour < 12:
                 hour += 12
     if hour > 24:
         return None
@@ -357,7 +363,7 @@ def _clock_at(tokens: list[Token], i: int) -> Mention | None:
 
 
 def _day_part(tokens: list[Token], k: int) -> str | None:
-    """"in the evening", "this afternoon", "tomorrow morning", "tonight" just after a time."""
+    """ "in the evening", "this afternoon", "tomorrow morning", "tonight" just after a time."""
     words = [_word(tokens, k + d) for d in range(3)]
     for size in (1, 2, 3):
         tail = words[size - 1]
@@ -454,7 +460,7 @@ def _quantity_at(tokens: list[Token], i: int) -> Mention | None:
     number = read_number(tokens, i)
     if number is None:
         return None
-    if number.words and _word(tokens, i) in ("a", "an", "single") and number.end == i + 1:
+    if number.words and _word(tokens, i) in ("a", "an") and number.end == i + 1:
         # "a" / "an" alone is a number only before a unit ("a kilo")
         unit = _unit_at(tokens, number.end)
         if unit is None:

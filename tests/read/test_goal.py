@@ -1,0 +1,193 @@
+"""The offline goal parser on the example models: values, units, negation, start, errors."""
+
+from __future__ import annotations
+
+import contextlib
+import json
+
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+from typer.testing import CliRunner
+
+from apbot.cli import app
+from apbot.examples import load_example
+from apbot.model.schema import ApplianceModel
+from apbot.read.goal import GoalParseError, parse_instruction
+
+runner = CliRunner()
+
+
+@pytest.fixture(scope="module")
+def washer() -> ApplianceModel:
+    return load_example("washing_machine")
+
+
+@pytest.fixture(scope="module")
+def oven() -> ApplianceModel:
+    return load_example("toaster_oven_dial")
+
+
+@pytest.fixture(scope="module")
+def keypad() -> ApplianceModel:
+    return load_example("microwave_keypad")
+
+
+def test_value_names_numbers_and_start(washer: ApplianceModel) -> None:
+    goal = parse_instruction(washer, "Cotton wash at sixty degrees with an extra rinse, start it")
+    assert goal == {
+        "programme": "cotton",
+        "temperature": "60",
+        "extra_rinse": "on",
+        "running": "on",
+    }
+
+
+def test_negation_and_dont_start(washer: ApplianceModel) -> None:
+    goal = parse_instruction(
+        washer, "Wool at 30, no extra rinse, lock the controls; don't start it yet"
+    )
+    assert goal == {
+        "programme": "wool",
+        "temperature": "30",
+        "extra_rinse": "off",
+        "child_lock": "on",
+        "running": "off",
+    }
+
+
+def test_relative_time_goes_to_the_finish_setting(washer: ApplianceModel) -> None:
+    goal = parse_instruction(washer, "Synthetics, spin 800, have it finished in 9 hours")
+    assert goal == {"programme": "synthetics", "spin_speed": 800, "finish_in": 9}
+
+
+def test_nothing_is_invented(washer: ApplianceModel) -> None:
+    assert parse_instruction(washer, "Wool please.") == {"programme": "wool"}
+    assert parse_instruction(washer, "Thank you!") == {}
+
+
+def test_power_on_only_when_asked(washer: ApplianceModel) -> None:
+    assert parse_instruction(washer, "Turn the machine on and pick wool")["power"] == "on"
+    assert "power" not in parse_instruction(washer, "Turn on the child lock")
+
+
+def test_durations_in_words_and_fahrenheit(oven: ApplianceModel) -> None:
+    goal = parse_instruction(oven, "Bake at 350°F for half an hour with the light on")
+    assert goal == {"function": "bake", "temperature": 180, "timer": "00:30:00", "light": "on"}
+
+
+def test_time_words_and_numbers_keep_their_variables(keypad: ApplianceModel) -> None:
+    goal = parse_instruction(
+        keypad, "Cook for two and a half minutes at power level 7 and set a 5-minute kitchen timer"
+    )
+    assert goal["cook_time"] == "00:02:30" and goal["power_level"] == 7
+    assert goal["kitchen_timer"] == "00:05:00"
+    assert parse_instruction(keypad, "Set the clock to 7:30 pm") == {"clock": "07:30:00"}
+
+
+def test_lowest_and_highest(oven: ApplianceModel) -> None:
+    assert parse_instruction(oven, "Bake at the lowest temperature")["temperature"] == 60
+    assert parse_instruction(oven, "Bake at the highest temperature")["temperature"] == 230
+
+
+def test_out_of_range_is_an_error_naming_the_words(washer: ApplianceModel) -> None:
+    with pytest.raises(GoalParseError) as info:
+        parse_instruction(washer, "Cotton with the spin at 5000 rpm")
+    assert info.value.words == "5000 rpm"
+    assert "spin_speed" in info.value.reason and "1400" in info.value.reason
+
+
+def test_fahrenheit_far_from_every_celsius_value_is_an_error(oven: ApplianceModel) -> None:
+    with pytest.raises(GoalParseError, match="temperature"):
+        parse_instruction(oven, "Bake at 600 °F")
+
+
+@given(st.text(max_size=120))
+def test_random_text_never_raises_anything_else(text: str) -> None:
+    model = load_example("washing_machine")
+    try:
+        goal = parse_instruction(model, text)
+    except GoalParseError:
+        return
+    assert set(goal) <= set(model.variables)
+
+
+WORDS = st.sampled_from(
+    [
+        "set",
+        "start",
+        "don't",
+        "no",
+        "the",
+        "a",
+        "at",
+        "for",
+        "in",
+        "to",
+        "and",
+        "half",
+        "an",
+        "hour",
+        "minutes",
+        "2",
+        "hrs",
+        "7:30",
+        "pm",
+        "60",
+        "degrees",
+        "°F",
+        "%",
+        "wool",
+        "cotton",
+        "spin",
+        "rinse",
+        "lock",
+        "on",
+        "off",
+        "finish",
+        "ready",
+        "1400",
+        "rpm",
+        "twenty-five",
+        "lowest",
+    ]
+)
+
+
+@given(st.lists(WORDS, max_size=25).map(" ".join))
+def test_random_appliance_words_never_raise_anything_else(text: str) -> None:
+    for name in ("washing_machine", "toaster_oven_dial", "microwave_keypad"):
+        model = load_example(name)
+        with contextlib.suppress(GoalParseError):
+            parse_instruction(model, text)
+
+
+def test_cli_goal_prints_json() -> None:
+    result = runner.invoke(app, ["goal", "washing_machine", "Wool at 30 degrees", "--json"])
+    assert result.exit_code == 0, result.output
+    assert json.loads(result.output) == {"programme": "wool", "temperature": "30"}
+
+
+def test_cli_goal_error_exits_1() -> None:
+    result = runner.invoke(app, ["goal", "washing_machine", "Spin at 5000 rpm"])
+    assert result.exit_code == 1
+    assert "5000 rpm" in result.output and "Traceback" not in result.output
+
+
+def test_cli_eval_goals_on_a_subset() -> None:
+    result = runner.invoke(
+        app, ["eval-goals", "--categories", "kettle", "--appliances", "kettle_1", "--json"]
+    )
+    assert result.exit_code == 0, result.output
+    scores = json.loads(result.output)
+    assert scores["overall"]["n"] == 10
+    assert set(scores["categories"]) == {"kettle"}
+    assert 0.0 <= scores["overall"]["accuracy"] <= 1.0
+    right = round(scores["overall"]["accuracy"] * 10)
+    assert len(scores["misses"]) == 10 - right
+
+
+def test_cli_eval_goals_with_nothing_chosen() -> None:
+    result = runner.invoke(app, ["eval-goals", "--categories", "toaster"])
+    assert result.exit_code == 1
+    assert "no tasks" in result.output
