@@ -472,31 +472,52 @@ def _value_matches(view: Model, text: _Text) -> list[_Match]:
             if text.word(end) == "-" and text.word(end + 1) in ("off", "on"):
                 continue  # "auto-off" names a timer, not the AUTO mode
             own = _near_vocab(info, text, i, end, reach=2)
-            if len(stems) == 1 and own == 0 and _names_other(view, var, text, i):
+            if _names_other(view, var, text, i, end):
                 continue  # "power level 8" is not the POWER mode
             score = len(stems) * weight * quality + 0.5 * own
             if i in verbs and len(stems) == 1:
                 score *= 0.5  # "bake a French loaf": the verb is weaker than the noun
             matches.append(_Match(var, value, i, end, score))
     matches.sort(key=lambda m: (-m.score, m.start))
+    return _prefer_heads(matches)
+
+
+def _prefer_heads(matches: list[_Match]) -> list[_Match]:
+    """Of two values of one variable side by side ("UV storage"), the second — the head noun —
+    is meant, unless it matched much worse."""
+    best: dict[str, _Match] = {}
+    for match in matches:
+        best.setdefault(match.var, match)
+    for var, first in best.items():
+        for other in matches:
+            if other.var == var and other.start == first.end and other.score >= first.score - 0.3:
+                other.score = first.score + 0.01
+    matches.sort(key=lambda m: (-m.score, m.start))
     return matches
 
 
-def _names_other(view: Model, var: str, text: _Text, i: int) -> bool:
-    """The word at i names another variable that a number or that variable's word follows."""
-    key = text.concepts[i]
+def _names_other(view: Model, var: str, text: _Text, i: int, end: int) -> bool:
+    """The words i..end name another variable, and a number or more of that variable's words
+    follow ("power level 8" sets the level, not the POWER mode)."""
+    keys = [text.concepts[k] for k in range(i, end) if text.word(k) not in _CONNECTORS]
     others = [
-        info for name, info in view.infos.items() if name != var and info.vocab.get(key, 0.0) >= 0.8
+        info
+        for name, info in view.infos.items()
+        if name != var and all(info.vocab.get(key, 0.0) >= 0.8 for key in keys)
     ]
     if not others:
         return False
-    following = text.word(i + 1)
+    shared = {key for info in others for key in info.vocab}
+    for k in (i - 1, end):
+        key = text.concepts[k] if 0 <= k < len(text.concepts) else ""
+        if key in view.infos[var].vocab and key not in shared:
+            return False  # "temperature mode": the mode's own word is next to it
+    k = end + 1 if text.word(end) == "(" else end
+    following = text.word(k)
     if following[:1].isdigit() or following in _NUMBER_WORDS:
         return True
-    return any(
-        info.vocab.get(text.concepts[i + 1] if i + 1 < len(text.concepts) else "", 0.0)
-        for info in others
-    )
+    key = text.concepts[k] if k < len(text.concepts) else ""
+    return any(info.vocab.get(key, 0.0) for info in others)
 
 
 _NUMBER_WORDS = frozenset(
@@ -555,12 +576,17 @@ def _match_at(text: _Text, i: int, stems: tuple[str, ...]) -> tuple[int, float] 
             pass
         elif similar(here, target):
             quality = min(quality, 0.9)
-        elif here in _SYNONYM_STEMS.get(target, ()) or (
+        elif here in _SYNONYM_STEMS.get(target, ()):
+            quality = min(quality, 0.8)
+        elif (
             len(target) >= 4
             and here.startswith(target)
             and (len(here) <= len(target) + 4 or len(target) >= 5)
+            and text.word(k) not in LOWEST | HIGHEST
         ):
-            quality = min(quality, 0.8)
+            quality = min(quality, 0.8)  # "storage" for STORE, "combination" for COMBI
+        elif len(stems) > 1 and len(here) >= 3 and target.startswith(here):
+            quality = min(quality, 0.7)  # "frozen veg" for frozen vegetables
         else:
             return None
         k += 1
@@ -631,14 +657,58 @@ def _assign_mentions(
         if mi in used or name in goal:
             continue
         mention = mentions[mi]
-        if score <= 0 and mention.kind == "number" and not _only_home(view, mention, goal):
+        article = text.word(mention.start) in ("a", "an", "couple", "single")
+        lone = not article and _only_home(view, mention, goal)
+        if score <= 0 and mention.kind == "number" and not lone:
             continue
         goal[name] = value
         used.add(mi)
         claimed.update(range(mention.start, mention.end))
     for mi, mention in enumerate(mentions):
+        if mi not in used and mention.kind == "clock" and _clock_parts(view, mention, goal):
+            used.add(mi)
+    for mi, mention in enumerate(mentions):
         if mi not in used:
             _unplaced(view, text, mention, goal)
+
+
+def _clock_parts(view: Model, mention: Mention, goal: Goal) -> bool:
+    """A clock kept as two settings, its hour and its minute: set both from one time."""
+    parts: dict[str, VarInfo] = {}
+    for info in view.infos.values():
+        own = _own_stems(info)
+        if info.role != "setting" or stem("clock") not in own or info.name in goal:
+            continue
+        if own & {stem("hour"), stem("hours"), "hr", "h"}:
+            parts["hour"] = info
+        elif own & {stem("minute"), stem("minutes"), "min", "m"}:
+            parts["minute"] = info
+    if len(parts) != 2:
+        return False
+    hour, minute = divmod(int(mention.value) // 60, 60)
+    values = {}
+    for part, number in (("hour", hour), ("minute", minute)):
+        domain = _domain_values(view, parts[part], goal)
+        if part == "hour" and not _has_number(domain, number) and number > 12:
+            number -= 12
+        found = next((v for v in domain if _as_int(v) == number), None)
+        if found is None:
+            return False
+        values[parts[part].name] = found
+    goal.update(values)
+    return True
+
+
+def _as_int(value: Any) -> int | None:
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        return None
+    return int(number) if number == int(number) else None
+
+
+def _has_number(domain: list[Any], number: int) -> bool:
+    return any(_as_int(v) == number for v in domain)
 
 
 def _only_home(view: Model, mention: Mention, goal: Goal) -> bool:
@@ -885,7 +955,7 @@ def _switches(view: Model, text: _Text, goal: Goal, claimed: set[int]) -> None:
             weight = info.vocab.get(key, 0.0)
             if weight <= 0 or _generic(key):
                 continue
-            if text.stems[k] in own:
+            if text.stems[k] in own or key in _own_concepts(info):
                 weight = 1.0
                 # "Warm the water" is not KEEP WARM; "UV light" is not the night light
                 doubtful = len(own) > 1 and (k in verbs or (k - 1) in claimed)
@@ -1008,7 +1078,7 @@ def _own_stems(info: VarInfo) -> set[str]:
 
 
 def _negative_around(text: _Text, k: int) -> bool:
-    for d in range(1, 4):
+    for d in range(1, 6):
         word = text.word(k - d)
         if word in _CLAUSE_ENDS or word == ",":
             break
@@ -1057,9 +1127,16 @@ _STRONG_VERBS = frozenset(
         "dehydrate",
         "broil",
         "toast",
+        "run",
     )
 )
-_WEAK_VERBS = frozenset(stem(w) for w in ("run", "keep", "bring", "make", "give"))
+_WEAK_VERBS = frozenset(stem(w) for w in ("keep", "bring", "make", "give", "fill"))
+# A running variable named for one operation is started only by that operation's verbs.
+_VERB_FAMILIES: dict[str, frozenset[str]] = {
+    stem("heating"): frozenset(stem(w) for w in ("heat", "warm", "boil", "bring", "keep")),
+    stem("dispensing"): frozenset(stem(w) for w in ("dispense", "pour", "fill")),
+    stem("pouring"): frozenset(stem(w) for w in ("dispense", "pour", "fill")),
+}
 _ACTION_VERBS = _STRONG_VERBS | _WEAK_VERBS
 
 
@@ -1070,7 +1147,8 @@ def _power_and_running(view: Model, text: _Text, goal: Goal) -> None:
     running = [n for n, i in view.infos.items() if i.role == "running"]
     if not running or any(n in goal for n in running):
         return
-    start = _says_start(text)
+    family = next((_VERB_FAMILIES[stem(n)] for n in running if stem(n) in _VERB_FAMILIES), None)
+    start = _says_start(text, family)
     started_by = _procedure_start(view, goal)
     if start is None and started_by is not None:
         start = True  # the procedure for a goal setting ends by starting (TIME DEFROST)
@@ -1127,7 +1205,7 @@ def _says_power_on(view: Model, text: _Text) -> bool:
     return False
 
 
-def _says_start(text: _Text) -> bool | None:
+def _says_start(text: _Text, family: frozenset[str] | None = None) -> bool | None:
     """True for "start it", False for "don't start", None when the instruction says neither."""
     joined = " " + " ".join(t.text for t in text.tokens) + " "
     negative = False
@@ -1163,9 +1241,12 @@ def _says_start(text: _Text) -> bool | None:
         k2 = k + 1 if text.word(k) in _FILLERS else k
         if k2 >= len(text.stems):
             continue
-        if text.stems[k2] in _STRONG_VERBS:
+        verb = text.stems[k2]
+        if family is not None and verb not in family:
+            continue
+        if verb in _STRONG_VERBS:
             return True
-        if text.stems[k2] in _WEAK_VERBS and (k == 0 or text.word(k - 1) in (".", ";", "!")):
+        if verb in _WEAK_VERBS and (k == 0 or text.word(k - 1) in (".", ";", "!")):
             return True
     return None
 

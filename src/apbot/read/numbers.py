@@ -205,7 +205,7 @@ def _fraction_alone(tokens: list[Token], i: int) -> Number | None:
         return Number(0.5 if word(j) == "half" else 0.25, i, j + 1, True)
     if word(j) in ("a", "an") and word(j + 1) == "single":
         return Number(1.0, i, j + 2, True)
-    if word(j) in ("a", "an", "single", "once"):
+    if word(j) in ("a", "an", "single"):
         return Number(1.0, i, j + 1, True)
     if word(j) in ("twice", "thrice"):
         return Number(2.0 if word(j) == "twice" else 3.0, i, j + 1, True)
