@@ -6,7 +6,7 @@ import contextlib
 import json
 
 import pytest
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 from typer.testing import CliRunner
 
@@ -102,6 +102,7 @@ def test_fahrenheit_far_from_every_celsius_value_is_an_error(oven: ApplianceMode
         parse_instruction(oven, "Bake at 600 °F")
 
 
+@settings(deadline=None)
 @given(st.text(max_size=120))
 def test_random_text_never_raises_anything_else(text: str) -> None:
     model = load_example("washing_machine")
@@ -154,6 +155,7 @@ WORDS = st.sampled_from(
 )
 
 
+@settings(deadline=None)
 @given(st.lists(WORDS, max_size=25).map(" ".join))
 def test_random_appliance_words_never_raise_anything_else(text: str) -> None:
     for name in ("washing_machine", "toaster_oven_dial", "microwave_keypad"):

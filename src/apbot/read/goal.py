@@ -196,6 +196,8 @@ def build(model: ApplianceModel) -> Model:
                 info.role, info.on, info.off = "switch", switch[0], switch[1]
             if _numeric_values(info.values):
                 info.dimension = _dimension_by_name(info)
+            for dimension in _quantity_dimensions(info.values):
+                _add_vocab(info, _DIMENSION_WORDS.get(dimension, ""), 0.6)  # "450 W": power
         infos[name] = info
     # features and control labels name the variables they adjust
     for feature, index, step in _steps_of(model):
@@ -257,6 +259,19 @@ class _NoAction:
 def _numeric_values(values: list[Any]) -> bool:
     numeric = [v for v in values if parse_quantity(str(v)) is not None]
     return len(numeric) >= max(1, len(values) - 2)
+
+
+_DIMENSION_WORDS = {"power": "power", "temperature": "temperature", "mass": "weight"}
+
+
+def _quantity_dimensions(values: list[Any]) -> set[str]:
+    """Dimensions that at least two values are quantities of ("100 W", "450 W")."""
+    counts: dict[str, int] = {}
+    for value in values:
+        q = parse_quantity(str(value))
+        if q is not None and q[1] is not None:
+            counts[q[1]] = counts.get(q[1], 0) + 1
+    return {d for d, c in counts.items() if c >= 2}
 
 
 def _dimension_by_name(info: VarInfo) -> str | None:
@@ -416,6 +431,21 @@ class _Match:
     score: float
 
 
+_VIEWS: dict[int, tuple[ApplianceModel, Model]] = {}
+
+
+def _view(model: ApplianceModel) -> Model:
+    """:func:`build`, remembered for the last few models (an agent parses many sentences)."""
+    hit = _VIEWS.get(id(model))
+    if hit is not None and hit[0] is model:
+        return hit[1]
+    view = build(model)
+    if len(_VIEWS) >= 32:
+        _VIEWS.pop(next(iter(_VIEWS)))
+    _VIEWS[id(model)] = (model, view)
+    return view
+
+
 def parse_instruction(model: ApplianceModel, instruction: str) -> Goal:
     """The goal an instruction asks for, over ``model``'s variables, values canonical.
 
@@ -426,7 +456,7 @@ def parse_instruction(model: ApplianceModel, instruction: str) -> Goal:
     >>> sorted(goal.items())[:2]
     [('programme', 'wool'), ('temperature', '30')]
     """
-    view = build(model)
+    view = _view(model)
     text = _Text.of(str(instruction))
     goal: Goal = {}
     claimed: set[int] = set()
@@ -585,6 +615,8 @@ def _match_at(text: _Text, i: int, stems: tuple[str, ...]) -> tuple[int, float] 
             and text.word(k) not in LOWEST | HIGHEST
         ):
             quality = min(quality, 0.8)  # "storage" for STORE, "combination" for COMBI
+        elif len(target) >= 5 and here.endswith(target):
+            quality = min(quality, 0.7)  # "multigrain" for GRAINS
         elif len(stems) > 1 and len(here) >= 3 and target.startswith(here):
             quality = min(quality, 0.7)  # "frozen veg" for frozen vegetables
         else:
@@ -924,7 +956,7 @@ def _superlatives(view: Model, text: _Text, goal: Goal, claimed: set[int]) -> No
         if best is None:
             continue
         name = best[1]
-        values = _domain_values(view, view.infos[name], goal)
+        values = _ordered_values(_domain_values(view, view.infos[name], goal))
         if not values:
             continue
         if end is not None:
@@ -936,8 +968,20 @@ def _superlatives(view: Model, text: _Text, goal: Goal, claimed: set[int]) -> No
 
 def _ordered(info: VarInfo) -> bool:
     return isinstance(info.var, NumericVariable | TimeVariable) or (
-        isinstance(info.var, DiscreteVariable) and _numeric_values(info.values)
+        isinstance(info.var, DiscreteVariable)
+        and (_numeric_values(info.values) or bool(_quantity_dimensions(info.values)))
     )
+
+
+def _ordered_values(values: list[Any]) -> list[Any]:
+    """Values in order of size: numbers and times as they are; of a discrete list, the ones
+    that are quantities ("100 W" < "450 W"), by size."""
+    if all(isinstance(v, int | float) for v in values) or all(
+        str(v).count(":") == 2 for v in values
+    ):
+        return values
+    sized = [(q[0], v) for v in values if (q := parse_quantity(str(v))) is not None]
+    return [v for _size, v in sorted(sized, key=lambda pair: pair[0])]
 
 
 def _switches(view: Model, text: _Text, goal: Goal, claimed: set[int]) -> None:

@@ -400,7 +400,7 @@ def _duration_at(tokens: list[Token], i: int) -> Mention | None:
     last_unit = 0
     while True:
         k = j
-        if parts and _word(tokens, k) in ("and", ","):
+        if parts and _word(tokens, k) == "and":
             k += 1
         number = read_number(tokens, k)
         value: float | None = None
@@ -423,6 +423,8 @@ def _duration_at(tokens: list[Token], i: int) -> Mention | None:
             if _word(tokens, k2) in ("full", "whole", "entire") and number.value == 1:
                 k2 += 1
             unit = _time_unit(tokens, k2)
+            if unit is not None and parts and unit[0] >= last_unit:
+                break  # "a day, 24 hours" is said twice, not added up
             if unit is not None:
                 total += value * unit[0]
                 j = k2 + unit[1]
