@@ -193,3 +193,24 @@ def test_cli_eval_goals_with_nothing_chosen() -> None:
     result = runner.invoke(app, ["eval-goals", "--categories", "toaster"])
     assert result.exit_code == 1
     assert "no tasks" in result.output
+
+
+def test_a_setting_the_programme_lacks_is_an_error() -> None:
+    from apbot.bench.suite import bundled_suite_dir, load_appliance
+
+    model = load_appliance(bundled_suite_dir() / "bread_maker_2").model
+    with pytest.raises(GoalParseError, match="does not apply when menu is 'dough'"):
+        parse_instruction(model, "Dough programme, 2 lb, start right away")
+
+
+def test_denied_verb_and_celsius_on_a_fahrenheit_dial() -> None:
+    from apbot.bench.suite import bundled_suite_dir, load_appliance
+
+    kettle = load_appliance(bundled_suite_dir() / "kettle_1").model
+    assert parse_instruction(kettle, "I need 95°C water, don't heat it yet") == {
+        "temperature": 95,
+        "heating": "off",
+    }
+    fryer = load_appliance(bundled_suite_dir() / "air_fryer_1").model
+    goal = parse_instruction(fryer, "Bake at 180 °C for 25 minutes")
+    assert goal["temperature"] == 350  # 356 °F, the dial's nearest mark

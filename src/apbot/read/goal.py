@@ -615,8 +615,6 @@ def _match_at(text: _Text, i: int, stems: tuple[str, ...]) -> tuple[int, float] 
             and text.word(k) not in LOWEST | HIGHEST
         ):
             quality = min(quality, 0.8)  # "storage" for STORE, "combination" for COMBI
-        elif len(target) >= 5 and here.endswith(target):
-            quality = min(quality, 0.7)  # "multigrain" for GRAINS
         elif len(stems) > 1 and len(here) >= 3 and target.startswith(here):
             quality = min(quality, 0.7)  # "frozen veg" for frozen vegetables
         else:
@@ -797,8 +795,12 @@ def _fit(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
         number = _number_for(info, var.unit, mention)
         if number is None:
             return None
-        converted = mention.kind == "fahrenheit" and var.unit.casefold() not in ("°f", "f")
-        return _in_numeric(number, domain, tolerance=_F_TOLERANCE if converted else 1e-6)
+        fahrenheit_dial = var.unit.casefold() in ("°f", "f")
+        converted = (mention.kind == "fahrenheit" and not fahrenheit_dial) or (
+            fahrenheit_dial and mention.unit in ("°c", "c", "celsius")
+        )
+        tolerance = (_F_TOLERANCE * (1.8 if fahrenheit_dial else 1.0)) if converted else 1e-6
+        return _in_numeric(number, domain, tolerance=tolerance)
     # discrete values that are numbers ("60", "1000") or quantities ("1.75 oz", "450 W")
     measured = _measure(mention)
     if measured is None:
@@ -871,6 +873,8 @@ def _number_for(info: VarInfo, unit: str, mention: Mention) -> float | None:
                 return None
             return mention.value if mention.dimension in (None, info.dimension) else None
         if unit.casefold() in ("°f", "f") and mention.dimension == "temperature":
+            if mention.unit in ("°c", "c", "celsius"):
+                return round(mention.value * 9 / 5 + 32, 6)  # "180 °C" on a Fahrenheit dial
             return mention.value  # "350 degrees" on a Fahrenheit dial
         if target[0] != mention.dimension:
             return None
@@ -916,14 +920,22 @@ def _unplaced(view: Model, text: _Text, mention: Mention, goal: Goal) -> None:
             or (mention.kind == "quantity" and info.dimension == mention.dimension)
         ):
             kinds.append(name)
-    if not kinds or any(name in goal for name in kinds):
+    if not kinds:
         return
-    near = max(kinds, key=lambda n: _near_vocab(view.infos[n], text, mention.start, mention.end))
-    offered = preview(_domain_values(view, view.infos[near], goal), quote=False)
-    raise GoalParseError(
-        text.span(mention.start, mention.end),
-        f"no setting of this model takes it; {near} can be {offered}",
-    )
+    closeness = {n: _near_vocab(view.infos[n], text, mention.start, mention.end) for n in kinds}
+    near = max(kinds, key=lambda n: closeness[n])
+    if any(name in goal for name in kinds) and (near in goal or closeness[near] < 0.5):
+        return  # another setting of its kind was given; this may be a remark
+    info = view.infos[near]
+    values = _domain_values(view, info, goal)
+    parent = info.var.depends_on
+    if not values and parent:
+        reason = f"{near} does not apply when {parent} is {goal.get(parent)!r}"
+    else:
+        where = f" when {parent} is {goal[parent]!r}" if parent and parent in goal else ""
+        reason = f"no setting of this model takes it; {near} can be {preview(values, quote=False)}"
+        reason += where
+    raise GoalParseError(text.span(mention.start, mention.end), reason)
 
 
 def _superlatives(view: Model, text: _Text, goal: Goal, claimed: set[int]) -> None:
@@ -1143,6 +1155,7 @@ def _negative_around(text: _Text, k: int) -> bool:
     return False
 
 
+_DENIALS = frozenset({"don't", "dont", "not", "without", "never"})
 _START_WORDS = frozenset({"start", "begin", "started", "starting", "begins", "kick", "launch"})
 _NOW_PHRASES = ("right away", "straight away", "immediately")
 _STRONG_VERBS = frozenset(
@@ -1266,14 +1279,23 @@ def _says_start(text: _Text, family: frozenset[str] | None = None) -> bool | Non
             starts = True
         if not starts:
             continue
-        before = [text.word(k - d) for d in range(1, 4)]
-        denied = any(b in ("don't", "dont", "not", "without", "never") for b in before)
+        before = []
+        for d in range(1, 4):
+            if text.word(k - d) in _CLAUSE_ENDS:
+                break
+            before.append(text.word(k - d))
+        denied = any(b in _DENIALS for b in before)
         if denied or "yet" in (text.word(k + 1), text.word(k + 2)):
             negative = True
         else:
             positive = True
     if " not started " in joined or " but not start" in joined:
         negative = True
+    for k, token in enumerate(text.tokens):  # "don't heat it yet"
+        if token.text in _DENIALS and token.text != "without" and k + 1 < len(text.stems):
+            verb = text.stems[k + 1]
+            if verb in _STRONG_VERBS and (family is None or verb in family):
+                negative = True
     if negative:
         return False
     if positive or any(f" {w} " in joined for w in _NOW_PHRASES):

@@ -57,7 +57,7 @@ def similar(a: str, b: str) -> bool:
     """Two stems close enough to be one word misspelt or inflected ("steriliser", "sterilize")."""
     if a == b:
         return True
-    if min(len(a), len(b)) < 5:
+    if min(len(a), len(b)) < 5 or a[0] != b[0]:
         return False
     return SequenceMatcher(None, a, b).ratio() >= 0.85
 
