@@ -478,12 +478,12 @@ def _quantity_at(tokens: list[Token], i: int) -> Mention | None:
         follow = _word(tokens, end)
         if follow in ("fahrenheit", "f"):
             return Mention("fahrenheit", number.value, i, end + 1, "fahrenheit", words=number.words)
-        unit = "degrees"
+        said = "degrees"
         if follow in ("celsius", "c", "centigrade"):
             end += 1
-            unit = "°c"  # said in Celsius: a Fahrenheit dial converts it
+            said = "°c"  # said in Celsius: a Fahrenheit dial converts it
         return Mention(
-            "quantity", number.value, i, end, "temperature", words=number.words, unit=unit
+            "quantity", number.value, i, end, "temperature", words=number.words, unit=said
         )
     info = unit_of(name)
     assert info is not None
