@@ -214,3 +214,22 @@ def test_denied_verb_and_celsius_on_a_fahrenheit_dial() -> None:
     fryer = load_appliance(bundled_suite_dir() / "air_fryer_1").model
     goal = parse_instruction(fryer, "Bake at 180 °C for 25 minutes")
     assert goal["temperature"] == 350  # 356 °F, the dial's nearest mark
+
+
+def test_percent_power_clock_needs_naming_and_switch_words() -> None:
+    from apbot.bench.suite import bundled_suite_dir, load_appliance
+
+    microwave = load_appliance(bundled_suite_dir() / "microwave_1").model
+    assert parse_instruction(microwave, "Microwave at 50% power for 2 min") == {
+        "power_level": 5,
+        "cook_time": "00:02:00",
+        "running": "on",
+    }
+    bread = load_appliance(bundled_suite_dir() / "bread_maker_3").model
+    assert parse_instruction(bread, "Jam cycle please and switch the light on") == {
+        "cycle": "jam",
+        "light": "on",
+    }
+    assert parse_instruction(bread, "French loaf with a light crust")["crust"] == "light"
+    with pytest.raises(GoalParseError, match="ready_at"):
+        parse_instruction(bread, "Brioche done at 8:15 tomorrow")  # the timer has 10-minute steps

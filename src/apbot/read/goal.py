@@ -504,12 +504,25 @@ def _value_matches(view: Model, text: _Text) -> list[_Match]:
             own = _near_vocab(info, text, i, end, reach=2)
             if _names_other(view, var, text, i, end):
                 continue  # "power level 8" is not the POWER mode
+            if len(stems) == 1 and _names_switch(view, var, text, i):
+                continue  # "switch the light on" is the LIGHT, not a light crust
             score = len(stems) * weight * quality + 0.5 * own
             if i in verbs and len(stems) == 1:
                 score *= 0.5  # "bake a French loaf": the verb is weaker than the noun
             matches.append(_Match(var, value, i, end, score))
     matches.sort(key=lambda m: (-m.score, m.start))
     return _prefer_heads(matches)
+
+
+def _names_switch(view: Model, var: str, text: _Text, i: int) -> bool:
+    """The word at i is an on/off setting's own name, and nothing of ``var`` stands next to it."""
+    if _near_vocab(view.infos[var], text, i, i + 1, reach=2):
+        return False
+    return any(
+        info.role == "switch" and text.stems[i] in _own_stems(info)
+        for name, info in view.infos.items()
+        if name != var
+    )
 
 
 def _prefer_heads(matches: list[_Match]) -> list[_Match]:
@@ -679,6 +692,10 @@ def _assign_mentions(
             if value is None:
                 continue
             score = _near_vocab(info, text, mention.start, mention.end)
+            if info.timing == "clock" and not _near_vocab(
+                info, text, mention.start, mention.end, reach=12
+            ):
+                continue  # a time of day sets the clock only when the clock is named
             score += _cue_bonus(info, text, mention)
             options.append((score, -info.order, mi, name, value))
     options.sort(key=lambda o: (-o[0], -o[1]))
@@ -794,7 +811,7 @@ def _fit(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
     if isinstance(var, NumericVariable):
         number = _number_for(info, var.unit, mention)
         if number is None:
-            return None
+            return _percent_of_level(info, mention, domain)
         fahrenheit_dial = var.unit.casefold() in ("°f", "f")
         converted = (mention.kind == "fahrenheit" and not fahrenheit_dial) or (
             fahrenheit_dial and mention.unit in ("°c", "c", "celsius")
@@ -823,6 +840,18 @@ def _fit(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
         ):
             return value
     return _show_quantity(info, mention)
+
+
+def _percent_of_level(info: VarInfo, mention: Mention, domain: list[Any]) -> Any:
+    """ "50% power" on a power level of 1-10 is level 5."""
+    if mention.dimension != "ratio" or not domain or info.dimension is not None:
+        return None
+    if not ({concept("power"), concept("level")} & set(info.vocab)):
+        return None
+    top = max(float(v) for v in domain)
+    if top not in (10, 100):
+        return None
+    return _in_numeric(mention.value * top / 100, domain)
 
 
 def _measure(mention: Mention) -> tuple[float, str | None] | None:
@@ -907,7 +936,7 @@ def _domain_values(view: Model, info: VarInfo, goal: Goal) -> list[Any]:
 def _unplaced(view: Model, text: _Text, mention: Mention, goal: Goal) -> None:
     """A quantity with a unit that only open variables of its kind could take, none of which
     has the value: the model cannot do what was asked."""
-    if mention.kind in ("number", "clock"):
+    if mention.kind == "number":
         return
     kinds = []
     for name, info in view.infos.items():
@@ -915,7 +944,8 @@ def _unplaced(view: Model, text: _Text, mention: Mention, goal: Goal) -> None:
             continue
         timed = isinstance(info.var, TimeVariable) or info.dimension == "time"
         if (
-            (mention.kind == "duration" and timed)
+            (mention.kind == "clock" and info.timing in ("clock", "delay"))
+            or (mention.kind == "duration" and timed)
             or (mention.kind == "fahrenheit" and info.dimension == "temperature")
             or (mention.kind == "quantity" and info.dimension == mention.dimension)
         ):
@@ -924,6 +954,8 @@ def _unplaced(view: Model, text: _Text, mention: Mention, goal: Goal) -> None:
         return
     closeness = {n: _near_vocab(view.infos[n], text, mention.start, mention.end) for n in kinds}
     near = max(kinds, key=lambda n: closeness[n])
+    if mention.kind == "clock" and closeness[near] < 0.5:
+        return  # a time of day said in passing ("a 3 a.m. feed")
     if any(name in goal for name in kinds) and (near in goal or closeness[near] < 0.5):
         return  # another setting of its kind was given; this may be a remark
     info = view.infos[near]
@@ -951,8 +983,9 @@ def _superlatives(view: Model, text: _Text, goal: Goal, claimed: set[int]) -> No
             end = -1
         scale_index = None
         for scale in SCALES:
-            if word in scale:
-                scale_index = (scale.index(word), len(scale))
+            said = "medium" if word in ("middle", "mid", "med") else word
+            if said in scale:
+                scale_index = (scale.index(said), len(scale))
         if end is None and scale_index is None:
             continue
         best: tuple[float, str] | None = None
@@ -1185,6 +1218,9 @@ _STRONG_VERBS = frozenset(
         "broil",
         "toast",
         "run",
+        "microwave",
+        "grill",
+        "knead",
     )
 )
 _WEAK_VERBS = frozenset(stem(w) for w in ("keep", "bring", "make", "give", "fill"))

@@ -233,6 +233,7 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "small": ("little", "smaller", "smallest"),
     "continuous": ("nonstop", "non", "continuously"),
     "cont": ("continuous", "continuously", "nonstop"),
+    "co": ("continuous", "continuously", "nonstop"),
     "auto": ("automatic", "automatically"),
     "sterilize": ("steam", "sterilizing", "sterilization"),
     "free": ("freely", "flow"),
