@@ -99,7 +99,7 @@ class VarInfo:
     role: str = "setting"  # setting, switch, power, running
     on: str | None = None
     off: str | None = None
-    timing: str = "duration"  # for time-like variables: duration, delay, clock
+    timing: str = "duration"  # for time-like variables: duration, delay, finish (at), clock
     dimension: str | None = None
     order: int = 0
 
@@ -223,8 +223,14 @@ def build(model: ApplianceModel) -> Model:
         ):
             if "clock" in info.vocab:
                 info.timing = "clock"
-            elif concept("delay") in info.vocab or concept("finish") in info.vocab:
+            elif concept("delay") in info.vocab:
                 info.timing = "delay"
+            elif concept("finish") in info.vocab:
+                # a time of day to finish at ("READY AT") or a wait ("READY IN", "END 3h")
+                at = isinstance(info.var, TimeVariable) and not (
+                    {"in", "after"} & set(_words(f"{info.name} {info.var.label or ''}"))
+                )
+                info.timing = "finish" if at else "delay"
     phrases = _phrases(model, infos)
     start_values = _start_values(model, infos)
     appliance = {concept(w) for w in _words(model.appliance.name + " " + model.appliance.category)}
@@ -518,11 +524,13 @@ def _names_switch(view: Model, var: str, text: _Text, i: int) -> bool:
     """The word at i is an on/off setting's own name, and nothing of ``var`` stands next to it."""
     if _near_vocab(view.infos[var], text, i, i + 1, reach=2):
         return False
-    return any(
-        info.role == "switch" and text.stems[i] in _own_stems(info)
-        for name, info in view.infos.items()
-        if name != var
-    )
+    for name, info in view.infos.items():
+        own = _own_stems(info)
+        if name == var or info.role != "switch" or text.stems[i] not in own:
+            continue
+        if text.word(i + 1) in ("on", "off") or _phrase_here(text, i, own - {text.stems[i]}):
+            return True
+    return False
 
 
 def _prefer_heads(matches: list[_Match]) -> list[_Match]:
@@ -692,7 +700,7 @@ def _assign_mentions(
             if value is None:
                 continue
             score = _near_vocab(info, text, mention.start, mention.end)
-            if info.timing == "clock" and not _near_vocab(
+            if info.timing in ("clock", "finish") and not _near_vocab(
                 info, text, mention.start, mention.end, reach=12
             ):
                 continue  # a time of day sets the clock only when the clock is named
@@ -785,8 +793,6 @@ def _cue_bonus(info: VarInfo, text: _Text, mention: Mention) -> float:
             bonus += 0.9 if relative else -0.3
         elif relative:
             bonus -= 0.3
-    if mention.kind == "clock":
-        bonus += 0.5 if info.timing in ("clock", "delay") else 0.0
     if mention.dimension and mention.dimension == info.dimension:
         bonus += 0.3
     return bonus
@@ -797,9 +803,15 @@ def _fit(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
     domain = _domain_values(view, info, goal)
     var = info.var
     if isinstance(var, TimeVariable):
-        if mention.kind == "duration" and info.timing != "clock":
+        if mention.kind == "duration" and info.timing not in ("clock", "finish"):
             seconds = round(mention.value)
-        elif mention.kind == "clock" and info.timing != "duration":
+        elif mention.kind == "clock" and info.timing in ("duration", "delay"):
+            if not mention.colon or mention.meridiem or mention.lead not in ("for", "to", "of"):
+                return None
+            hours, minutes = divmod(round(mention.value) // 60, 60)
+            # "for 1:30": minutes and seconds on a mm:ss display, else hours and minutes
+            seconds = hours * 60 + minutes if var.format == "mm:ss" else round(mention.value)
+        elif mention.kind == "clock":
             seconds = round(mention.value)
             if format_hms(seconds) not in domain and seconds >= 13 * 3600:
                 # a 12-hour clock: 19:00 is 7:00
@@ -944,7 +956,7 @@ def _unplaced(view: Model, text: _Text, mention: Mention, goal: Goal) -> None:
             continue
         timed = isinstance(info.var, TimeVariable) or info.dimension == "time"
         if (
-            (mention.kind == "clock" and info.timing in ("clock", "delay"))
+            (mention.kind == "clock" and info.timing in ("clock", "finish"))
             or (mention.kind == "duration" and timed)
             or (mention.kind == "fahrenheit" and info.dimension == "temperature")
             or (mention.kind == "quantity" and info.dimension == mention.dimension)
@@ -1123,7 +1135,7 @@ def _starts_at_zero(info: VarInfo) -> bool:
     """A setting whose "none" is 0: any number, or a duration that starts empty (not a clock)."""
     if isinstance(info.var, NumericVariable):
         return True
-    if isinstance(info.var, TimeVariable) and info.timing != "clock":
+    if isinstance(info.var, TimeVariable) and info.timing not in ("clock", "finish"):
         domain = build_domain(info.var) if not info.var.depends_on else None
         return domain is None or _magnitude(domain.values[domain.initial]) == 0
     return False

@@ -9,7 +9,7 @@ goal parser can decide which variable each one sets. Nothing here knows about a 
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from apbot.model.values import unit_of
 
@@ -234,6 +234,8 @@ class Mention:
     meridiem: bool = False
     words: bool = False
     unit: str = ""
+    colon: bool = False  # written with a colon ("1:30"): a duration after "for"
+    lead: str = ""  # the word just before
 
 
 _TIME_UNITS = {
@@ -283,7 +285,7 @@ def find_mentions(tokens: list[Token], skip: set[int] | None = None) -> list[Men
             continue
         found = _clock_at(tokens, i) or _duration_at(tokens, i) or _quantity_at(tokens, i)
         if found is not None and not any(k in skip for k in range(found.start, found.end)):
-            mentions.append(found)
+            mentions.append(replace(found, lead=_word(tokens, i - 1)))
             i = found.end
             continue
         i += 1
@@ -359,7 +361,8 @@ def _clock_at(tokens: list[Token], i: int) -> Mention | None:
                 hour += 12
     if hour > 24:
         return None
-    return Mention("clock", hour * 3600 + minute * 60, i, end, meridiem=meridiem)
+    colon = ":" in _word(tokens, i)
+    return Mention("clock", hour * 3600 + minute * 60, i, end, meridiem=meridiem, colon=colon)
 
 
 def _day_part(tokens: list[Token], k: int) -> str | None:
