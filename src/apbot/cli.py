@@ -853,6 +853,14 @@ def run_command(
     show_exploration: Annotated[
         bool, typer.Option(help="Print every exploring press, not only a count.")
     ] = False,
+    parse_goal_text: Annotated[
+        bool,
+        typer.Option(
+            "--parse-goal",
+            help="For an instruction that is not one of the tasks and has no -g: read the goal "
+            "from the instruction with the offline goal parser (on the appliance's model).",
+        ),
+    ] = False,
 ) -> None:
     """Run one task live: every macro action, press, display, check and repair as it happens."""
     from apbot.bench.runner import run_task
@@ -861,6 +869,16 @@ def run_command(
 
     found = _bundled(appliance, 2)
     task = _task_for(found, instruction)
+    if parse_goal_text and task is None and not goal:
+        from apbot.read.goal import GoalParseError, parse_instruction
+
+        try:
+            parsed = parse_instruction(found.model, instruction)
+        except GoalParseError as exc:
+            raise _fail(f"cannot read the instruction: {exc}", 2) from None
+        if not parsed:
+            raise _fail("the instruction names no setting of this appliance", 2)
+        goal = [f"{name}={value}" for name, value in parsed.items()]
     if goal:
         try:
             goal_values = split_assignments(goal)

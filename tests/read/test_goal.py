@@ -233,3 +233,12 @@ def test_percent_power_clock_needs_naming_and_switch_words() -> None:
     assert parse_instruction(bread, "French loaf with a light crust")["crust"] == "light"
     with pytest.raises(GoalParseError, match="ready_at"):
         parse_instruction(bread, "Brioche done at 8:15 tomorrow")  # the timer has 10-minute steps
+
+
+def test_cli_run_reads_the_goal_behind_a_flag() -> None:
+    text = "Heat the water to 70 degrees and keep it warm"
+    without = runner.invoke(app, ["run", "kettle_1", text])
+    assert without.exit_code == 2 and "-g NAME=VALUE" in without.output
+    result = runner.invoke(app, ["run", "kettle_1", text, "--parse-goal"])
+    assert result.exit_code == 0, result.output
+    assert "temperature=70" in result.output and "keep_warm=on" in result.output
