@@ -14,8 +14,8 @@ from functools import lru_cache
 _SPELLING = (
     (re.compile(r"is(e|es|ed|ing|ation)$"), r"iz\1"),
     (re.compile(r"ys(e|es|ed|ing)$"), r"yz\1"),
-    (re.compile(r"our$"), "or"),
-    (re.compile(r"ours$"), "ors"),
+    (re.compile(r"(?<=\w{3})our$"), "or"),  # colour, flavour (not hour, four, pour)
+    (re.compile(r"(?<=\w{3})ours$"), "ors"),
     (re.compile(r"tre$"), "ter"),
     (re.compile(r"tres$"), "ters"),
     (re.compile(r"^programme"), "program"),
@@ -32,6 +32,8 @@ def stem(word: str) -> str:
     (True, True)
     """
     w = word.casefold()
+    if w.endswith("'s"):
+        w = w[:-2]  # the clock's hour
     for pattern, replacement in _SPELLING:
         w = pattern.sub(replacement, w)
     if len(w) <= 3:
@@ -237,6 +239,12 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "auto": ("automatic", "automatically"),
     "sterilize": ("steam", "sterilizing", "sterilization"),
     "free": ("freely", "flow"),
+    "more": ("extra", "longer", "stronger"),
+    "less": ("shorter", "lighter", "weaker"),
+    "poultry": ("chicken", "turkey", "duck"),
+    "meat": ("beef", "pork", "lamb", "mince", "steak"),
+    "fish": ("salmon", "cod", "seafood", "prawns", "shrimp"),
+    "vegetables": ("veg", "veggies", "vegetable"),
     "store": ("storage", "stored"),
     "storage": ("store", "storing"),
 }

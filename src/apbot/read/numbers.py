@@ -28,6 +28,7 @@ _REWRITES = (
     (re.compile(r"\bp\.m\.?(?=\W|$)"), " pm "),
     (re.compile(r"\bper\s+cent\b"), " percent "),
     (re.compile(r"\bo'clock\b"), " oclock "),
+    (re.compile(r"\bnon-(?=[a-z])"), "non"),  # non-stop
     (re.compile(r"(?<=\d),(?=\d{3}\b)"), ""),  # 1,000 -> 1000
     (re.compile(r"(?<=\d)(?=[a-z°%])"), " "),  # 12min -> 12 min
     (re.compile(r"\s[-\u2013\u2014]+\s|\u2014"), " ; "),  # a dash between clauses
