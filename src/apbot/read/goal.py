@@ -649,7 +649,7 @@ _SYNONYM_STEMS: dict[str, frozenset[str]] = {
 }
 
 
-def _near_vocab(info: VarInfo, text: _Text, start: int, end: int, reach: int = 6) -> float:
+def _near_vocab(info: VarInfo, text: _Text, start: int, end: int, reach: int = 8) -> float:
     """How strongly the words around a span name the variable: each of its words found
     counts once, nearer counts more, and a comma in between halves it."""
     found: dict[str, float] = {}

@@ -87,7 +87,7 @@ _GROUPS: tuple[tuple[str, ...], ...] = (
     ("rinse", "rinses", "rinsing"),
     ("water", "litre", "litres", "liter", "liters", "fill"),
     ("warm", "warming", "keep"),
-    ("clock", "clocks"),
+    ("clock", "clocks", "day"),
     ("texture", "firmness"),
 )
 _CANON: dict[str, str] = {}
