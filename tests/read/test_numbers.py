@@ -117,3 +117,10 @@ def test_tokens_split_units_and_clauses() -> None:
 
 def test_a_range_is_not_a_clock_or_a_sum() -> None:
     assert mentions("eco 40-60") == [("number", 40), ("number", 60)]
+
+
+def test_british_and_named_clock_times() -> None:
+    assert mentions("ready by 7.30") == [("clock", 7 * 3600 + 30 * 60)]
+    assert mentions("at midnight") == [("clock", 0)]
+    assert mentions("bake for 2.5 hours") == [("duration", 9000)]
+    assert mentions("a 1.75 oz bag")[0][0] == "quantity"

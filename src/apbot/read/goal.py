@@ -295,7 +295,8 @@ def _mark_power_and_running(model: ApplianceModel, infos: dict[str, VarInfo]) ->
     START key sets, or is named for an operation (heating, dispensing, status)."""
     hiding = {name for guard in model.guards if guard.hide for name in guard.when}
     for name, info in infos.items():
-        named = name == "power" or (name in hiding and concept("power") in info.vocab)
+        dark = name in hiding and concept("lock") not in info.vocab  # a panel that goes dark
+        named = name in ("power", "on_off", "power_switch") or dark
         if info.role == "switch" and named:
             info.role = "power"
     for _feature, _index, step in _steps_of(model):

@@ -299,10 +299,18 @@ def _clock_at(tokens: list[Token], i: int) -> Mention | None:
     hour: int | None = None
     minute = 0
     end = i
-    if re.fullmatch(r"\d{1,2}:\d{2}", w):
-        hour, minute = (int(x) for x in w.split(":"))
+    if w in ("midnight", "noon", "midday"):
+        return Mention("clock", 0 if w == "midnight" else 12 * 3600, i, i + 1, meridiem=True)
+    dotted = (
+        re.fullmatch(r"\d{1,2}\.\d{2}", w) is not None
+        and _word(tokens, i - 1) in ("at", "by", "until", "till")
+        and (_word(tokens, i + 1) in ("am", "pm", "") or _unit_at(tokens, i + 1) is None)
+        and _time_unit(tokens, i + 1) is None
+    )  # "ready by 7.30" (a British clock time, not seven point three)
+    if re.fullmatch(r"\d{1,2}:\d{2}", w) or dotted:
+        hour, minute = (int(x) for x in w.replace(".", ":").split(":"))
         end = i + 1
-        if minute >= 60:
+        if minute >= 60 or hour > 24:
             return None
     elif w in ("half", "quarter") or (w in ("a",) and _word(tokens, i + 1) == "quarter"):
         k = i + (1 if w != "a" else 2)
@@ -362,7 +370,7 @@ def _clock_at(tokens: list[Token], i: int) -> Mention | None:
                 hour += 12
     if hour > 24:
         return None
-    colon = ":" in _word(tokens, i)
+    colon = ":" in _word(tokens, i) or "." in _word(tokens, i)
     return Mention("clock", hour * 3600 + minute * 60, i, end, meridiem=meridiem, colon=colon)
 
 
