@@ -242,3 +242,8 @@ def test_cli_run_reads_the_goal_behind_a_flag() -> None:
     result = runner.invoke(app, ["run", "kettle_1", text, "--parse-goal"])
     assert result.exit_code == 0, result.output
     assert "temperature=70" in result.output and "keep_warm=on" in result.output
+
+
+def test_an_overlong_instruction_is_refused(washer: ApplianceModel) -> None:
+    with pytest.raises(GoalParseError, match="at most 5,000"):
+        parse_instruction(washer, "wool " * 2000)

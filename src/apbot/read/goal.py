@@ -23,6 +23,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass, field
+from functools import lru_cache
 from typing import Any
 
 from apbot.model.domain import AnyVariable, ValueProblem, all_values, build_domain, normalise
@@ -34,7 +35,8 @@ from apbot.model.schema import (
     Step,
     TimeVariable,
 )
-from apbot.model.values import format_hms, parse_quantity, preview, unit_of
+from apbot.model.values import format_hms, preview, unit_of
+from apbot.model.values import parse_quantity as _parse_quantity
 from apbot.read.goal_vocab import (
     HIGHEST,
     LETTER_WORDS,
@@ -117,6 +119,18 @@ class Model:
     phrases: list[tuple[str, Any, tuple[str, ...], float]]  # var, value, stems, weight
     start_values: dict[str | None, tuple[str, Any]]  # feature var (None: plain START) -> value
     appliance_words: frozenset[str]
+
+
+@lru_cache(maxsize=65536)
+def parse_quantity(text: str) -> tuple[float, str | None, float] | None:
+    """:func:`apbot.model.values.parse_quantity`, remembered: value lists are read per mention."""
+    return _parse_quantity(text)
+
+
+MAX_INSTRUCTION = 5_000
+"""Characters of one instruction; a longer text is not something a user said to an appliance."""
+MAX_PHRASE_VALUES = 2_000
+"""Values of one discrete variable matched as phrases; a longer list is matched by numbers only."""
 
 
 def _words(text: str) -> list[str]:
@@ -368,6 +382,8 @@ def _phrases(
         if info.role == "switch":
             continue
         show = info.var.show if isinstance(info.var.show, dict) else {}
+        if len(info.values) > MAX_PHRASE_VALUES:
+            continue
         for value in info.values:
             text = str(value)
             if text.casefold() in _ON_WORDS + _OFF_WORDS + ("none", "----", "--"):
@@ -463,6 +479,12 @@ def parse_instruction(model: ApplianceModel, instruction: str) -> Goal:
     >>> sorted(goal.items())[:2]
     [('programme', 'wool'), ('temperature', '30')]
     """
+    if len(str(instruction)) > MAX_INSTRUCTION:
+        raise GoalParseError(
+            str(instruction)[:40] + "…",
+            f"the instruction has {len(str(instruction)):,} characters; at most "
+            f"{MAX_INSTRUCTION:,} are read",
+        )
     view = _view(model)
     text = _Text.of(str(instruction))
     goal: Goal = {}
