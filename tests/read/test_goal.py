@@ -247,3 +247,35 @@ def test_cli_run_reads_the_goal_behind_a_flag() -> None:
 def test_an_overlong_instruction_is_refused(washer: ApplianceModel) -> None:
     with pytest.raises(GoalParseError, match="at most 5,000"):
         parse_instruction(washer, "wool " * 2000)
+
+
+def _suite_models() -> list[ApplianceModel]:
+    from apbot.bench.suite import load_suite
+
+    return [appliance.model for appliance in load_suite("bundled").appliances]
+
+
+SUITE_MODELS = _suite_models()
+
+
+@settings(deadline=None, max_examples=60)
+@given(
+    st.sampled_from(range(len(SUITE_MODELS))),
+    st.lists(
+        st.one_of(
+            WORDS,
+            st.sampled_from(["start", "lock", "no", "lowest", "full", "at", "for", "ready by"]),
+            st.integers(0, 3000).map(str),
+        ),
+        max_size=20,
+    ).map(" ".join),
+)
+def test_every_bundled_model_reads_random_instructions(index: int, text: str) -> None:
+    model = SUITE_MODELS[index]
+    try:
+        goal = parse_instruction(model, text)
+    except GoalParseError:
+        return
+    from apbot.model.goal import parse_goal
+
+    assert parse_goal(model, goal) == goal  # every value is canonical and in its domain
