@@ -176,7 +176,7 @@ WEAK_VERBS = frozenset(stem(w) for w in ("keep", "bring", "make", "give", "fill"
 
 # A running variable named for one operation is started only by that operation's verbs.
 VERB_FAMILIES: dict[str, frozenset[str]] = {
-    stem("heating"): frozenset(stem(w) for w in ("heat", "warm", "boil", "bring", "keep")),
+    stem("heating"): frozenset(stem(w) for w in ("heat", "warm", "boil", "bring")),
     stem("dispensing"): frozenset(stem(w) for w in ("dispense", "pour", "fill")),
     stem("pouring"): frozenset(stem(w) for w in ("dispense", "pour", "fill")),
 }
