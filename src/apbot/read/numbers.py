@@ -274,7 +274,7 @@ def find_mentions(tokens: list[Token], skip: set[int] | None = None) -> list[Men
     ``skip`` holds token indices already explained (a value name such as "quick 20").
 
     >>> [(m.kind, m.value) for m in find_mentions(tokenize("ready by 7:30 pm, 1 hr 20"))]
-    [('clock', 70200.0), ('duration', 4800.0)]
+    [('clock', 70200), ('duration', 4800.0)]
     """
     skip = skip or set()
     mentions: list[Mention] = []
