@@ -279,3 +279,14 @@ def test_every_bundled_model_reads_random_instructions(index: int, text: str) ->
     from apbot.model.goal import parse_goal
 
     assert parse_goal(model, goal) == goal  # every value is canonical and in its domain
+
+
+def test_an_unknown_programme_name_is_an_error(washer: ApplianceModel) -> None:
+    with pytest.raises(GoalParseError) as info:
+        parse_instruction(washer, "Run the turbo programme at 40")
+    assert info.value.words == "turbo programme"
+    assert "programme has no 'turbo'" in info.value.reason and "wool" in info.value.reason
+    with pytest.raises(GoalParseError, match="programme has no 'silk'"):
+        parse_instruction(washer, "Run the silk cycle")
+    assert parse_instruction(washer, "Run the synthetic cycle")["programme"] == "synthetics"
+    assert parse_instruction(washer, "Run the usual programme") == {"running": "on"}

@@ -31,7 +31,7 @@ from apbot.model.schema import (
     NumericVariable,
     TimeVariable,
 )
-from apbot.model.values import format_hms, preview, unit_of
+from apbot.model.values import closest_matches, format_hms, preview, unit_of
 from apbot.read.goal_start import boil, entry_switches, power_and_running, switches, zero_settings
 from apbot.read.goal_text import (
     CONNECTORS,
@@ -57,6 +57,7 @@ from apbot.read.goal_vocab import (
     HIGHEST,
     LOWEST,
     SCALES,
+    STOP_WORDS,
     SYNONYMS,
     concept,
     similar,
@@ -124,7 +125,88 @@ def parse_instruction(model: ApplianceModel, instruction: str) -> Goal:
     entry_switches(view, goal)
     boil(view, text, goal)
     power_and_running(view, text, goal)
+    _unknown_values(view, text, goal, claimed)
     return _checked(view, goal)
+
+
+_KIND_WORDS = frozenset(
+    stem(w) for w in ("programme", "program", "mode", "cycle", "menu", "course", "function")
+)
+
+
+def _unknown_values(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
+    """ "the turbo programme" on a model without TURBO: a value name the model lacks is an
+    error, not a silent omission. Only the word right before a programme-kind word counts,
+    and only when no value of that kind was found."""
+    for k in range(1, len(text.tokens)):
+        if text.stems[k] not in _KIND_WORDS or k - 1 in claimed:
+            continue
+        word = text.word(k - 1)
+        if not word.isalpha() or word in STOP_WORDS or word in _ORDINARY:
+            continue
+        key = text.concepts[k]
+        kinds = [
+            info
+            for info in view.infos.values()
+            if isinstance(info.var, DiscreteVariable)
+            and info.role == "setting"
+            and info.vocab.get(key, 0.0) >= 0.8
+        ]
+        if not kinds or any(info.name in goal for info in kinds):
+            continue
+        here = text.stems[k - 1]
+        if any(
+            text.concepts[k - 1] in info.vocab
+            or any(
+                len(key) >= 3 and (here.startswith(key) or key.startswith(here))
+                for key in info.vocab
+            )
+            for info in view.infos.values()
+        ):
+            continue  # "temperature mode", "automatic programme": a setting's own word
+        info = kinds[0]
+        names = [str(v) for v in info.values]
+        close = closest_matches(word, names, limit=1)
+        hint = f"; did you mean {close[0]!r}?" if close else ""
+        raise GoalParseError(
+            text.span(k - 1, k + 1),
+            f"{info.name} has no {word!r}; it can be {preview(names, quote=False)}{hint}",
+        )
+
+
+_ORDINARY = frozenset(
+    {
+        "this",
+        "that",
+        "my",
+        "your",
+        "its",
+        "their",
+        "same",
+        "usual",
+        "whole",
+        "full",
+        "any",
+        "normal",
+        "standard",
+        "default",
+        "next",
+        "other",
+        "another",
+        "each",
+        "every",
+        "one",
+        "first",
+        "second",
+        "last",
+        "right",
+        "correct",
+        "wrong",
+        "entire",
+        "complete",
+        "new",
+    }
+)
 
 
 def _value_matches(view: Model, text: Text) -> list[_Match]:
