@@ -290,3 +290,8 @@ def test_an_unknown_programme_name_is_an_error(washer: ApplianceModel) -> None:
         parse_instruction(washer, "Run the silk cycle")
     assert parse_instruction(washer, "Run the synthetic cycle")["programme"] == "synthetics"
     assert parse_instruction(washer, "Run the usual programme") == {"running": "on"}
+
+
+def test_unlock_turns_the_lock_off(washer: ApplianceModel) -> None:
+    assert parse_instruction(washer, "Unlock the keys")["child_lock"] == "off"
+    assert parse_instruction(washer, "Lock the keys")["child_lock"] == "on"

@@ -58,10 +58,12 @@ def switches(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
             if k in claimed or text.word(k) in STOP_WORDS:
                 continue
             key = text.concepts[k]
+            if text.stems[k] == stem("unlock") and stem("lock") in own:
+                key = concept("lock")  # "unlock the keys": the lock, off
             weight = info.vocab.get(key, 0.0)
             if weight <= 0 or generic(key):
                 continue
-            if text.stems[k] in own or key in own_concepts(info):
+            if text.stems[k] in own or key in own_concepts(info) or key == concept("lock"):
                 weight = 1.0
                 # "Warm the water" is not KEEP WARM; "UV light" is not the night light
                 doubtful = len(own) > 1 and (k in verbs or (k - 1) in claimed)
