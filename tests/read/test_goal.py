@@ -295,3 +295,11 @@ def test_an_unknown_programme_name_is_an_error(washer: ApplianceModel) -> None:
 def test_unlock_turns_the_lock_off(washer: ApplianceModel) -> None:
     assert parse_instruction(washer, "Unlock the keys")["child_lock"] == "off"
     assert parse_instruction(washer, "Lock the keys")["child_lock"] == "on"
+
+
+def test_a_coded_value_by_its_number() -> None:
+    from apbot.bench.suite import bundled_suite_dir, load_appliance
+
+    model = load_appliance(bundled_suite_dir() / "microwave_3").model
+    goal = parse_instruction(model, "Cook 800 g of chicken with auto menu 6 and start")
+    assert goal == {"auto_menu": "A-6", "auto_weight": 800, "running": "on"}

@@ -21,6 +21,7 @@ How it works, in order:
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from typing import Any
 
@@ -505,7 +506,18 @@ def _fit(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
             and abs(q[0] - (amount - 32) * 5 / 9) < 0.6
         ):
             return value
-    return _show_quantity(info, mention)
+    return _coded(domain, mention) or _show_quantity(info, mention)
+
+
+_CODE = re.compile(r"[A-Za-z]{1,2}[- ]?(\d+)")
+
+
+def _coded(domain: list[Any], mention: Mention) -> Any:
+    """ "programme 5" for a value written P5, "menu 6" for A-6: a short prefix and the number."""
+    if mention.kind != "number" or mention.value != int(mention.value):
+        return None
+    found = [v for v in domain if (m := _CODE.fullmatch(str(v))) and int(m[1]) == mention.value]
+    return found[0] if len(found) == 1 else None
 
 
 def _percent_of_level(info: VarInfo, mention: Mention, domain: list[Any]) -> Any:
