@@ -303,3 +303,12 @@ def test_a_coded_value_by_its_number() -> None:
     model = load_appliance(bundled_suite_dir() / "microwave_3").model
     goal = parse_instruction(model, "Cook 800 g of chicken with auto menu 6 and start")
     assert goal == {"auto_menu": "A-6", "auto_weight": 800, "running": "on"}
+
+
+def test_a_first_word_names_a_value_only_beside_the_settings_word() -> None:
+    from apbot.bench.suite import bundled_suite_dir, load_appliance
+
+    washer = load_appliance(bundled_suite_dir() / "washing_machine_1").model
+    assert parse_instruction(washer, "Run the eco programme")["programme"] == "eco 40-60"
+    hob = load_appliance(bundled_suite_dir() / "induction_cooker_1").model
+    assert "function" not in parse_instruction(hob, "keep it hot for an hour")  # not HOT POT

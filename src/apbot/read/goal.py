@@ -44,6 +44,7 @@ from apbot.read.goal_text import (
     verb_positions,
 )
 from apbot.read.goal_view import (
+    PARTIAL,
     Goal,
     Model,
     VarInfo,
@@ -226,6 +227,8 @@ def _value_matches(view: Model, text: Text) -> list[_Match]:
             if text.word(end) == "-" and text.word(end + 1) in ("off", "on"):
                 continue  # "auto-off" names a timer, not the AUTO mode
             own = near_vocab(info, text, i, end, reach=2)
+            if weight <= PARTIAL and not near_vocab(info, text, i, end, reach=2):
+                continue  # a first word alone names a value only beside "programme"
             if _names_other(view, var, text, i, end):
                 continue  # "power level 8" is not the POWER mode
             if len(stems) == 1 and _names_switch(view, var, text, i):

@@ -336,6 +336,28 @@ def _start_values(
     return found
 
 
+PARTIAL = 0.6
+"""Weight of a value named by its first word alone ("the eco programme" for eco 40-60); such a
+match needs the setting's own word beside it."""
+
+
+def _first_words(name: str, info: VarInfo) -> list[tuple[str, Any, tuple[str, ...], float]]:
+    """The first word of a many-word value, where no other value of the setting uses it."""
+    firsts: dict[str, list[Any]] = {}
+    used: dict[str, int] = {}
+    for value in info.values:
+        words = [stem(w) for w in _phrase_words(str(value))]
+        for word in words:
+            used[word] = used.get(word, 0) + 1
+        if len(words) > 1 and words[0].isalpha() and len(words[0]) >= 3:
+            firsts.setdefault(words[0], []).append(value)
+    return [
+        (name, values[0], (word,), PARTIAL)
+        for word, values in firsts.items()
+        if len(values) == 1 and used[word] == 1 and word not in STOP_WORDS
+    ]
+
+
 def _phrases(
     model: ApplianceModel, infos: dict[str, VarInfo]
 ) -> list[tuple[str, Any, tuple[str, ...], float]]:
@@ -369,6 +391,7 @@ def _phrases(
                 phrases.append((name, value, tuple(stem(w) for w in words), 1.0))
                 for synonym in SYNONYMS.get(words[0], ()) if len(words) == 1 else ():
                     phrases.append((name, value, (stem(synonym),), 0.8))
+        phrases += _first_words(name, info)
     # keys that go straight to one value ("GREEN TEA" sets 80 °C)
     for _feature, _index, step in _steps_of(model):
         if not step.variable or step.variable not in infos:
