@@ -58,7 +58,10 @@ def test_negation_and_dont_start(washer: ApplianceModel) -> None:
 
 def test_relative_time_goes_to_the_finish_setting(washer: ApplianceModel) -> None:
     goal = parse_instruction(washer, "Synthetics, spin 800, have it finished in 9 hours")
-    assert goal == {"programme": "synthetics", "spin_speed": 800, "finish_in": 9}
+    # finished 9 hours from now: the countdown has to be started
+    assert goal == {"programme": "synthetics", "spin_speed": 800, "finish_in": 9, "running": "on"}
+    goal = parse_instruction(washer, "Synthetics with a finish time of 9 hours")
+    assert goal == {"programme": "synthetics", "finish_in": 9}
 
 
 def test_nothing_is_invented(washer: ApplianceModel) -> None:

@@ -120,13 +120,13 @@ def parse_instruction(model: ApplianceModel, instruction: str) -> Goal:
         goal[match.var] = match.value
         claimed.update(range(match.start, match.end))
     mentions = _distinct(find_mentions(text.tokens, skip=claimed))
-    _assign_mentions(view, text, mentions, goal, claimed)
+    counting = _assign_mentions(view, text, mentions, goal, claimed)
     _superlatives(view, text, goal, claimed)
     zero_settings(view, text, goal, claimed)
     switches(view, text, goal, claimed)
     entry_switches(view, goal)
     boil(view, text, goal)
-    power_and_running(view, text, goal)
+    power_and_running(view, text, goal, counting)
     _unknown_values(view, text, goal, claimed)
     return _checked(view, goal)
 
@@ -348,7 +348,10 @@ def _distinct(mentions: list[Mention]) -> list[Mention]:
 
 def _assign_mentions(
     view: Model, text: Text, mentions: list[Mention], goal: Goal, claimed: set[int]
-) -> None:
+) -> bool:
+    """Give each quantity to the open setting it fits best. True when a delay was set relative
+    to now ("ready in 15 hours", "3 hours from now"): a countdown that must be started."""
+    counting = False
     options: list[tuple[float, int, int, str, Any]] = []
     for mi, mention in enumerate(mentions):
         for name, info in view.infos.items():
@@ -377,12 +380,15 @@ def _assign_mentions(
         goal[name] = value
         used.add(mi)
         claimed.update(range(mention.start, mention.end))
+        if view.infos[name].timing == "delay" and _relative(text, mention):
+            counting = True
     for mi, mention in enumerate(mentions):
         if mi not in used and mention.kind == "clock" and _clock_parts(view, mention, goal):
             used.add(mi)
     for mi, mention in enumerate(mentions):
         if mi not in used:
             _unplaced(view, text, mention, goal)
+    return counting
 
 
 def _clock_parts(view: Model, mention: Mention, goal: Goal) -> bool:
@@ -434,19 +440,25 @@ def _only_home(view: Model, mention: Mention, goal: Goal) -> bool:
     return len(homes) == 1
 
 
+def _relative(text: Text, mention: Mention) -> bool:
+    """A duration counted from now: "in 8 hours", "5 h from now", "starting in 2 hours"."""
+    before, before2 = text.word(mention.start - 1), text.word(mention.start - 2)
+    after = " ".join(text.word(mention.end + d) for d in range(2))
+    return (
+        before in ("in", "within")
+        or after == "from now"
+        or before2 in ("start", "begin", "starting")
+    )
+
+
 def _cue_bonus(info: VarInfo, text: Text, mention: Mention) -> float:
     """Relative times prefer delays, "for" a duration, clock times clocks; units fit units."""
     before = text.word(mention.start - 1)
     before2 = text.word(mention.start - 2)
-    after = " ".join(text.word(mention.end + d) for d in range(2))
     bonus = 0.0
     if mention.kind == "duration":
-        relative = (
-            before in ("in", "within")
-            or after in ("from now",)
-            or before2 in ("start", "begin", "starting", "delay", "delayed", "wait")
-            or before in ("delay", "delayed", "wait")
-        )
+        relative = _relative(text, mention) or before2 in ("delay", "delayed", "wait")
+        relative = relative or before in ("delay", "delayed", "wait")
         if info.timing == "delay":
             bonus += 0.9 if relative else -0.3
         elif relative:

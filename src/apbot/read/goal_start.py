@@ -161,7 +161,9 @@ _START_WORDS = frozenset({"start", "begin", "started", "starting", "begins", "ki
 _NOW_PHRASES = ("right away", "straight away", "immediately")
 
 
-def power_and_running(view: Model, text: Text, goal: Goal) -> None:
+def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = False) -> None:
+    """Power on when asked; the running variable on (or off) when the instruction says so, a
+    goal setting's procedure starts it, or a delay counts down from now (``counting``)."""
     for name, info in view.infos.items():
         if info.role == "power" and name not in goal and _says_power_on(view, text):
             goal[name] = info.on
@@ -173,6 +175,8 @@ def power_and_running(view: Model, text: Text, goal: Goal) -> None:
     started_by = _procedure_start(view, goal)
     if start is None and started_by is not None:
         start = True  # the procedure for a goal setting ends by starting (TIME DEFROST)
+    if start is None and counting:
+        start = True  # "ready in 15 hours": only a started countdown ends then
     if start is None:
         return
     key = next((v for v in goal if v in view.start_values), None)
