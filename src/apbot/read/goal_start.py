@@ -67,7 +67,7 @@ def switches(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
                 weight = 1.0
                 # "Warm the water" is not KEEP WARM; "UV light" is not the night light
                 doubtful = len(own) > 1 and (k in verbs or (k - 1) in claimed)
-                if doubtful and not phrase_here(text, k, own):
+                if doubtful and not (phrase_here(text, k, own) or _kept(text, k, own)):
                     continue
             elif negative_around(text, k):
                 weight = 0.5  # a feature's word only says "without" ("no finish time")
@@ -82,6 +82,16 @@ def switches(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
         assert info.on is not None and info.off is not None
         goal[name] = info.on if positive else info.off
         claimed.add(k)
+
+
+def _kept(text: Text, k: int, own: set[str]) -> bool:
+    """ "keep it hot", "keep the water warm": KEEP WARM said with words in between."""
+    if text.stems[k] != stem("keep") or stem("warm") not in own:
+        return False
+    return any(
+        text.stems[j] in (stem("warm"), stem("hot"))
+        for j in range(k + 1, min(k + 4, len(text.tokens)))
+    )
 
 
 def entry_switches(view: Model, goal: Goal) -> None:
