@@ -315,3 +315,9 @@ def test_a_first_word_names_a_value_only_beside_the_settings_word() -> None:
     assert parse_instruction(washer, "Run the eco programme")["programme"] == "eco 40-60"
     hob = load_appliance(bundled_suite_dir() / "induction_cooker_1").model
     assert "function" not in parse_instruction(hob, "keep it hot for an hour")  # not HOT POT
+
+
+def test_quantity_values_by_quantity(keypad: ApplianceModel) -> None:
+    goal = parse_instruction(keypad, "Pop a 3.0 oz bag of popcorn and start")
+    assert goal == {"popcorn_size": "3.0 oz", "running": "on"}
+    assert parse_instruction(keypad, "Popcorn, the 1.75 ounce bag")["popcorn_size"] == "1.75 oz"

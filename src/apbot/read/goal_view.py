@@ -108,7 +108,7 @@ def _words(text: str) -> list[str]:
 
 def _phrase_words(text: str) -> list[str]:
     """Words and numbers of a value's name ("quick 20", "eco 40-60", "A-6")."""
-    return [t.text for t in tokenize(text.replace("_", " ")) if t.text.isalnum()]
+    return [t.text for t in tokenize(text.replace("_", " ")) if t.text.replace(".", "").isalnum()]
 
 
 def _steps_of(model: ApplianceModel) -> Iterable[tuple[str, int, Step]]:
@@ -380,8 +380,8 @@ def _phrases(
                 forms.append(show[text])
             for form in forms:
                 words = _phrase_words(form)
-                if all(w.replace(".", "").isdigit() for w in words):
-                    continue  # a number: read as a quantity
+                if parse_quantity(form) is not None:
+                    continue  # a number or a quantity ("3.0 oz"): read as a quantity
                 if not words:
                     continue
                 if len(words) == 1 and words[0] in LETTER_WORDS:
