@@ -321,3 +321,12 @@ def test_quantity_values_by_quantity(keypad: ApplianceModel) -> None:
     goal = parse_instruction(keypad, "Pop a 3.0 oz bag of popcorn and start")
     assert goal == {"popcorn_size": "3.0 oz", "running": "on"}
     assert parse_instruction(keypad, "Popcorn, the 1.75 ounce bag")["popcorn_size"] == "1.75 oz"
+
+
+def test_counts_and_and_in_value_names(oven: ApplianceModel, washer: ApplianceModel) -> None:
+    assert parse_instruction(oven, "Toast two slices at shade 3") == {
+        "function": "toast",
+        "toast_shade": 3,
+    }
+    goal = parse_instruction(washer, "Rinse and spin at 600 rpm")
+    assert goal == {"programme": "rinse and spin", "spin_speed": 600}

@@ -65,7 +65,7 @@ from apbot.read.goal_vocab import (
     similar,
     stem,
 )
-from apbot.read.numbers import Mention, find_mentions, tokenize
+from apbot.read.numbers import COUNT_NOUNS, Mention, find_mentions, tokenize
 
 
 class GoalParseError(ValueError):
@@ -286,7 +286,9 @@ def _names_other(view: Model, var: str, text: Text, i: int, end: int) -> bool:
             return False  # "temperature mode": the mode's own word is next to it
     k = end + 1 if text.word(end) == "(" else end
     following = text.word(k)
-    if following[:1].isdigit() or following in NUMBER_WORDS:
+    if (following[:1].isdigit() or following in NUMBER_WORDS) and text.word(
+        k + 1
+    ) not in COUNT_NOUNS:
         return True
     key = text.concepts[k] if k < len(text.concepts) else ""
     return any(info.vocab.get(key, 0.0) for info in others)
@@ -470,6 +472,9 @@ def _cue_bonus(info: VarInfo, text: Text, mention: Mention) -> float:
 
 def _fit(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
     """The canonical value a mention gives this variable, or None when it does not fit."""
+    counted = mention.kind == "number" and mention.unit
+    if counted and concept(mention.unit) not in info.vocab and not _COUNTING & set(info.vocab):
+        return None  # "two slices" counts slices: only a quantity setting takes it
     domain = domain_values(view, info, goal)
     var = info.var
     if isinstance(var, TimeVariable):
@@ -545,6 +550,11 @@ def _percent_of_level(info: VarInfo, mention: Mention, domain: list[Any]) -> Any
     if top not in (10, 100):
         return None
     return _in_numeric(mention.value * top / 100, domain)
+
+
+_COUNTING = frozenset(
+    concept(w) for w in ("quantity", "qty", "count", "number", "servings", "pieces", "portions")
+)
 
 
 def _measure(mention: Mention) -> tuple[float, str | None] | None:

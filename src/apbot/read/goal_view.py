@@ -379,7 +379,7 @@ def _phrases(
             if show.get(text) and "{" not in show[text]:
                 forms.append(show[text])
             for form in forms:
-                words = _phrase_words(form)
+                words = [w for w in _phrase_words(form) if w != "and"]  # read as a connector
                 if parse_quantity(form) is not None:
                     continue  # a number or a quantity ("3.0 oz"): read as a quantity
                 if not words:

@@ -482,7 +482,8 @@ def _quantity_at(tokens: list[Token], i: int) -> Mention | None:
     j = number.end
     unit = _unit_at(tokens, j)
     if unit is None:
-        return Mention("number", number.value, i, j, words=number.words)
+        counted = _word(tokens, j) if _word(tokens, j) in COUNT_NOUNS else ""
+        return Mention("number", number.value, i, j, words=number.words, unit=counted)
     name, used = unit
     end = j + used
     if name in ("degrees", "degree", "°", "deg"):
@@ -504,6 +505,35 @@ def _quantity_at(tokens: list[Token], i: int) -> Mention | None:
     return Mention(
         "quantity", number.value * info[1], i, end, info[0], words=number.words, unit=name
     )
+
+
+COUNT_NOUNS = frozenset(
+    {
+        "slice",
+        "slices",
+        "piece",
+        "pieces",
+        "cup",
+        "cups",
+        "serving",
+        "servings",
+        "portion",
+        "portions",
+        "people",
+        "persons",
+        "bottles",
+        "bags",
+        "loaves",
+        "eggs",
+        "potatoes",
+        "shirts",
+        "items",
+        "pizzas",
+        "mugs",
+    }
+)
+"""Nouns a count stands before ("two slices"): the number counts them, it is no setting's
+value unless the setting is named by that noun."""
 
 
 def _unit_at(tokens: list[Token], j: int) -> tuple[str, int] | None:
