@@ -330,3 +330,8 @@ def test_counts_and_and_in_value_names(oven: ApplianceModel, washer: ApplianceMo
     }
     goal = parse_instruction(washer, "Rinse and spin at 600 rpm")
     assert goal == {"programme": "rinse and spin", "spin_speed": 600}
+
+
+def test_a_time_of_day_for_a_delay_is_an_error(washer: ApplianceModel) -> None:
+    with pytest.raises(GoalParseError, match="finish_in is a time from now"):
+        parse_instruction(washer, "Wool at 30 degrees and finish by 7 am")

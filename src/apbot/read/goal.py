@@ -626,6 +626,18 @@ def _in_numeric(number: float, domain: list[Any], tolerance: float = 1e-6) -> An
     return None
 
 
+def _clock_for_a_delay(view: Model, text: Text, mention: Mention, goal: Goal) -> None:
+    """ "finish by 7 am" where the model only counts hours from now: say so, do not guess."""
+    for info in view.infos.values():
+        if info.role != "setting" or info.timing != "delay" or info.name in goal:
+            continue
+        if near_vocab(info, text, mention.start, mention.end) >= 0.5:
+            raise GoalParseError(
+                text.span(mention.start, mention.end),
+                f"{info.name} is a time from now, not a time of day; give it as 'in N hours'",
+            )
+
+
 def _unplaced(view: Model, text: Text, mention: Mention, goal: Goal) -> None:
     """A quantity with a unit that only open variables of its kind could take, none of which
     has the value: the model cannot do what was asked."""
@@ -643,6 +655,8 @@ def _unplaced(view: Model, text: Text, mention: Mention, goal: Goal) -> None:
             or (mention.kind == "quantity" and info.dimension == mention.dimension)
         ):
             kinds.append(name)
+    if not kinds and mention.kind == "clock":
+        _clock_for_a_delay(view, text, mention, goal)
     if not kinds:
         return
     closeness = {n: near_vocab(view.infos[n], text, mention.start, mention.end) for n in kinds}
