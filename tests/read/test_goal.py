@@ -335,3 +335,12 @@ def test_counts_and_and_in_value_names(oven: ApplianceModel, washer: ApplianceMo
 def test_a_time_of_day_for_a_delay_is_an_error(washer: ApplianceModel) -> None:
     with pytest.raises(GoalParseError, match="finish_in is a time from now"):
         parse_instruction(washer, "Wool at 30 degrees and finish by 7 am")
+
+
+def test_start_in_a_settings_name_is_not_a_start() -> None:
+    from apbot.bench.suite import bundled_suite_dir, load_appliance
+
+    model = load_appliance(bundled_suite_dir() / "washing_machine_3").model
+    goal = parse_instruction(model, "Cottons at 40, set the delay start to 3 hours")
+    assert goal == {"programme": "cottons", "delay_start": "03:00:00", "temperature": "40"}
+    assert parse_instruction(model, "Cottons, delay 3 hours and start it")["running"] == "on"

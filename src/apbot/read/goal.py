@@ -444,13 +444,9 @@ def _only_home(view: Model, mention: Mention, goal: Goal) -> bool:
 
 def _relative(text: Text, mention: Mention) -> bool:
     """A duration counted from now: "in 8 hours", "5 h from now", "starting in 2 hours"."""
-    before, before2 = text.word(mention.start - 1), text.word(mention.start - 2)
+    before = text.word(mention.start - 1)
     after = " ".join(text.word(mention.end + d) for d in range(2))
-    return (
-        before in ("in", "within")
-        or after == "from now"
-        or before2 in ("start", "begin", "starting")
-    )
+    return before in ("in", "within") or after == "from now"
 
 
 def _cue_bonus(info: VarInfo, text: Text, mention: Mention) -> float:

@@ -44,6 +44,7 @@ from apbot.read.goal_vocab import (
     concept,
     stem,
 )
+from apbot.read.numbers import tokenize
 
 
 def switches(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
@@ -181,7 +182,7 @@ def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = Fals
     if not running or any(n in goal for n in running):
         return
     family = next((VERB_FAMILIES[stem(n)] for n in running if stem(n) in VERB_FAMILIES), None)
-    start = _says_start(text, family)
+    start = _says_start(text, family, _named_starts(view, text))
     started_by = _procedure_start(view, goal)
     if start is None and started_by is not None:
         start = True  # the procedure for a goal setting ends by starting (TIME DEFROST)
@@ -240,14 +241,30 @@ def _says_power_on(view: Model, text: Text) -> bool:
     return False
 
 
-def _says_start(text: Text, family: frozenset[str] | None = None) -> bool | None:
+def _named_starts(view: Model, text: Text) -> set[int]:
+    """Positions of "start" that belong to a setting's name ("the delay start", "start time")."""
+    named = set()
+    for k, token in enumerate(text.tokens):
+        if token.text not in _START_WORDS:
+            continue
+        for info in view.infos.values():
+            label = info.var.label or ""
+            own = {stem(t.text) for t in tokenize(f"{info.name.replace('_', ' ')} {label}")}
+            if stem("start") in own and phrase_here(text, k, own - {stem("start")}):
+                named.add(k)
+    return named
+
+
+def _says_start(
+    text: Text, family: frozenset[str] | None = None, named: set[int] | frozenset[int] = frozenset()
+) -> bool | None:
     """True for "start it", False for "don't start", None when the instruction says neither."""
     joined = " " + " ".join(t.text for t in text.tokens) + " "
     negative = False
     positive = False
     for k, token in enumerate(text.tokens):
         word = token.text
-        starts = word in _START_WORDS
+        starts = word in _START_WORDS and k not in named
         if word in ("get", "set") and any(
             text.word(k + d) in ("going", "started", "cooking", "heating", "running")
             for d in range(1, 7)
