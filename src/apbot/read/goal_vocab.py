@@ -236,7 +236,7 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "continuous": ("nonstop", "non", "continuously"),
     "cont": ("continuous", "continuously", "nonstop"),
     "co": ("continuous", "continuously", "nonstop"),
-    "auto": ("automatic", "automatically"),
+    "auto": ("automatic",),
     "sterilize": ("steam", "sterilizing", "sterilization"),
     "free": ("freely", "flow"),
     "more": ("extra", "longer", "stronger"),
