@@ -563,6 +563,79 @@ def suite_fill_optimal(
         console.print(f"{item.id}: {changed} task(s) updated")
 
 
+# --- goals ------------------------------------------------------------------------------------
+
+
+@app.command("goal")
+def goal_command(
+    model: ModelArg,
+    instruction: Annotated[str, typer.Argument(help="What the user said, in quotes.")],
+    as_json: Annotated[bool, typer.Option("--json", help="Print the goal as JSON.")] = False,
+) -> None:
+    """Parse an instruction into a goal over MODEL's variables (the offline goal parser)."""
+    from apbot.read.goal import GoalParseError, parse_instruction
+
+    try:
+        belief, _source = resolve_model(model)
+    except (FileNotFoundError, ModelError) as exc:
+        if isinstance(exc, ModelError):
+            _print_problems(exc.problems, exc.source or model)
+        message = str(exc) if isinstance(exc, FileNotFoundError) else "the model is invalid"
+        raise _fail(message) from None
+    try:
+        goal = parse_instruction(belief, instruction)
+    except GoalParseError as exc:
+        raise _fail(f"cannot read the instruction: {exc}") from None
+    if as_json:
+        console.print_json(json.dumps(goal))
+        return
+    if not goal:
+        console.print("[yellow]the instruction names no setting of this model[/yellow]")
+    for name, value in goal.items():
+        console.print(f"{name} = {value}")
+
+
+@app.command("eval-goals")
+def eval_goals(
+    suite: Annotated[str, typer.Option(help="'bundled' or a suite directory.")] = "bundled",
+    categories: Annotated[
+        str | None, typer.Option(help="Comma-separated appliance categories.")
+    ] = None,
+    appliances: Annotated[
+        str | None, typer.Option(help="Comma-separated appliance ids or patterns ('*_4,*_5').")
+    ] = None,
+    as_json: Annotated[bool, typer.Option("--json", help="Print the scores as JSON.")] = False,
+) -> None:
+    """Exact accuracy of the offline goal parser on a suite's instructions (true models)."""
+    from apbot.bench.suite import load_suite
+    from apbot.read.goal_eval import evaluate_goals
+
+    try:
+        loaded = _suite() if suite == "bundled" else load_suite(suite)
+    except (FileNotFoundError, ModelError) as exc:
+        if isinstance(exc, ModelError):
+            _print_problems(exc.problems, exc.source or suite)
+        message = str(exc) if isinstance(exc, FileNotFoundError) else "the suite is invalid"
+        raise _fail(message) from None
+    score = evaluate_goals(loaded, _names(categories), _names(appliances))
+    if score.n == 0:
+        raise _fail("no tasks match the chosen categories and appliances")
+    if as_json:
+        console.print_json(json.dumps(score.as_json()))
+        return
+    table = Table(box=box.SIMPLE)
+    for column in ("category", "accuracy", "tasks"):
+        table.add_column(column)
+    for name, entry in score.as_json()["categories"].items():
+        table.add_row(name, f"{entry['accuracy']:.3f}", str(entry["n"]))
+    table.add_row("overall", f"{score.accuracy:.3f}", str(score.n))
+    console.print(table)
+    for miss in score.misses:
+        console.print(f"[red]miss[/red] {miss.appliance} {miss.task}: {miss.instruction}")
+        console.print(f"    expected {miss.expected}")
+        console.print(f"    parsed   {miss.error or miss.parsed}")
+
+
 # --- bench ------------------------------------------------------------------------------------
 
 
@@ -791,6 +864,14 @@ def run_command(
     show_exploration: Annotated[
         bool, typer.Option(help="Print every exploring press, not only a count.")
     ] = False,
+    parse_goal_text: Annotated[
+        bool,
+        typer.Option(
+            "--parse-goal",
+            help="For an instruction that is not one of the tasks and has no -g: read the goal "
+            "from the instruction with the offline goal parser (on the appliance's model).",
+        ),
+    ] = False,
 ) -> None:
     """Run one task live: every macro action, press, display, check and repair as it happens."""
     from apbot.bench.runner import run_task
@@ -799,6 +880,16 @@ def run_command(
 
     found = _bundled(appliance, 2)
     task = _task_for(found, instruction)
+    if parse_goal_text and task is None and not goal:
+        from apbot.read.goal import GoalParseError, parse_instruction
+
+        try:
+            parsed = parse_instruction(found.model, instruction)
+        except GoalParseError as exc:
+            raise _fail(f"cannot read the instruction: {exc}", 2) from None
+        if not parsed:
+            raise _fail("the instruction names no setting of this appliance", 2)
+        goal = [f"{name}={value}" for name, value in parsed.items()]
     if goal:
         try:
             goal_values = split_assignments(goal)

@@ -1,0 +1,1 @@
+"""Reading: manual text into a model, an instruction into a goal (offline parsers)."""

@@ -1,0 +1,744 @@
+"""The offline goal parser: a user's instruction to a partial assignment over a model's variables.
+
+It reads only the *belief* model — variable names, labels, values, units, show texts, and the
+labels of the controls that set them — and the instruction. It never invents a setting the
+instruction does not mention, and an instruction the model cannot satisfy (a value outside a
+domain, a named value the model lacks) raises :class:`GoalParseError` naming the words and why.
+
+How it works, in order:
+
+1. *value names*: every discrete value (and every labelled key that sets one value, such as a
+   GREEN TEA key) is matched as a phrase against the instruction's stemmed words;
+2. *quantities*: durations, clock times and numbers with units (``apbot.read.numbers``) are
+   given to the variable whose type, unit and domain fit, and whose names are nearest in the
+   text; a relative time ("ready in 8 hours") prefers a delay, a clock time a clock;
+3. *superlatives and scales*: "the lowest", "full power", "a dark crust" on a numeric setting;
+4. *switches*: an on/off setting named in the text is on unless negated ("no prewash");
+5. *power and start*: "switch it on" sets the power variable; "start it", "get it going" or an
+   instruction that opens with a cooking verb sets the running variable to what the model's
+   START key sets (in the programme that was asked for); "don't start" sets it off.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import Any
+
+from apbot.model.domain import ValueProblem, normalise
+from apbot.model.schema import (
+    ApplianceModel,
+    DiscreteVariable,
+    NumericVariable,
+    TimeVariable,
+)
+from apbot.model.values import closest_matches, format_hms, preview, unit_of
+from apbot.read.goal_start import boil, entry_switches, power_and_running, switches, zero_settings
+from apbot.read.goal_text import (
+    CONNECTORS,
+    NUMBER_WORDS,
+    Text,
+    near_vocab,
+    negated_before,
+    phrase_here,
+    verb_positions,
+)
+from apbot.read.goal_view import (
+    PARTIAL,
+    Goal,
+    Model,
+    VarInfo,
+    domain_values,
+    model_view,
+    numeric_values,
+    own_stems,
+    parse_quantity,
+    quantity_dimensions,
+)
+from apbot.read.goal_vocab import (
+    HIGHEST,
+    LOWEST,
+    SCALES,
+    STOP_WORDS,
+    SYNONYMS,
+    concept,
+    similar,
+    stem,
+)
+from apbot.read.numbers import COUNT_NOUNS, Mention, find_mentions, tokenize
+
+
+class GoalParseError(ValueError):
+    """The instruction asks for something the model cannot do.
+
+    ``words`` quotes the instruction's words at fault; ``reason`` says why (no such value, out
+    of range, and what the model offers instead).
+    """
+
+    def __init__(self, words: str, reason: str) -> None:
+        self.words = words
+        self.reason = reason
+        super().__init__(f"{words!r}: {reason}")
+
+
+MAX_INSTRUCTION = 5_000
+"""Characters of one instruction; a longer text is not something a user said to an appliance."""
+
+
+@dataclass
+class _Match:
+    var: str
+    value: Any
+    start: int
+    end: int
+    score: float
+
+
+def parse_instruction(model: ApplianceModel, instruction: str) -> Goal:
+    """The goal an instruction asks for, over ``model``'s variables, values canonical.
+
+    Raises :class:`GoalParseError` when the instruction asks for a value the model lacks.
+
+    >>> from apbot.examples import load_example
+    >>> goal = parse_instruction(load_example("washing_machine"), "Wool at 30 degrees, no prewash")
+    >>> sorted(goal.items())[:2]
+    [('programme', 'wool'), ('temperature', '30')]
+    """
+    if len(str(instruction)) > MAX_INSTRUCTION:
+        raise GoalParseError(
+            str(instruction)[:40] + "…",
+            f"the instruction has {len(str(instruction)):,} characters; at most "
+            f"{MAX_INSTRUCTION:,} are read",
+        )
+    view = model_view(model)
+    text = Text.of(str(instruction))
+    goal: Goal = {}
+    claimed: set[int] = set()
+    for match in _value_matches(view, text):
+        if match.var in goal or any(k in claimed for k in range(match.start, match.end)):
+            continue
+        goal[match.var] = match.value
+        claimed.update(range(match.start, match.end))
+    mentions = _distinct(find_mentions(text.tokens, skip=claimed))
+    counting = _assign_mentions(view, text, mentions, goal, claimed)
+    _superlatives(view, text, goal, claimed)
+    zero_settings(view, text, goal, claimed)
+    switches(view, text, goal, claimed)
+    entry_switches(view, goal)
+    boil(view, text, goal)
+    power_and_running(view, text, goal, counting)
+    _unknown_values(view, text, goal, claimed)
+    return _checked(view, goal)
+
+
+_KIND_WORDS = frozenset(
+    stem(w) for w in ("programme", "program", "mode", "cycle", "menu", "course", "function")
+)
+
+
+def _unknown_values(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
+    """ "the turbo programme" on a model without TURBO: a value name the model lacks is an
+    error, not a silent omission. Only the word right before a programme-kind word counts,
+    and only when no value of that kind was found."""
+    for k in range(1, len(text.tokens)):
+        if text.stems[k] not in _KIND_WORDS or k - 1 in claimed:
+            continue
+        word = text.word(k - 1)
+        if not word.isalpha() or word in STOP_WORDS or word in _ORDINARY:
+            continue
+        key = text.concepts[k]
+        kinds = [
+            info
+            for info in view.infos.values()
+            if isinstance(info.var, DiscreteVariable)
+            and info.role == "setting"
+            and info.vocab.get(key, 0.0) >= 0.8
+        ]
+        if not kinds or any(info.name in goal for info in kinds):
+            continue
+        here = text.stems[k - 1]
+        if any(
+            text.concepts[k - 1] in info.vocab
+            or any(
+                len(key) >= 3 and (here.startswith(key) or key.startswith(here))
+                for key in info.vocab
+            )
+            for info in view.infos.values()
+        ):
+            continue  # "temperature mode", "automatic programme": a setting's own word
+        info = kinds[0]
+        names = [str(v) for v in info.values]
+        close = closest_matches(word, names, limit=1)
+        hint = f"; did you mean {close[0]!r}?" if close else ""
+        raise GoalParseError(
+            text.span(k - 1, k + 1),
+            f"{info.name} has no {word!r}; it can be {preview(names, quote=False)}{hint}",
+        )
+
+
+_ORDINARY = frozenset(
+    {
+        "this",
+        "that",
+        "my",
+        "your",
+        "its",
+        "their",
+        "same",
+        "usual",
+        "whole",
+        "full",
+        "any",
+        "normal",
+        "standard",
+        "default",
+        "next",
+        "other",
+        "another",
+        "each",
+        "every",
+        "one",
+        "first",
+        "second",
+        "last",
+        "right",
+        "correct",
+        "wrong",
+        "entire",
+        "complete",
+        "new",
+    }
+)
+
+
+def _value_matches(view: Model, text: Text) -> list[_Match]:
+    matches: list[_Match] = []
+    n = len(text.tokens)
+    verbs = verb_positions(text)
+    for var, value, stems, weight in view.phrases:
+        info = view.infos[var]
+        for i in range(n):
+            found = _match_at(text, i, stems)
+            if found is None:
+                continue
+            end, quality = found
+            if negated_before(text, i):
+                continue
+            if text.word(end) == "-" and text.word(end + 1) in ("off", "on"):
+                continue  # "auto-off" names a timer, not the AUTO mode
+            own = near_vocab(info, text, i, end, reach=2)
+            if weight <= PARTIAL and not near_vocab(info, text, i, end, reach=2):
+                continue  # a first word alone names a value only beside "programme"
+            if _names_other(view, var, text, i, end):
+                continue  # "power level 8" is not the POWER mode
+            if len(stems) == 1 and _names_switch(view, var, text, i):
+                continue  # "switch the light on" is the LIGHT, not a light crust
+            score = len(stems) * weight * quality + 0.5 * own
+            if i in verbs and len(stems) == 1:
+                score *= 0.5  # "bake a French loaf": the verb is weaker than the noun
+            matches.append(_Match(var, value, i, end, score))
+    matches.sort(key=lambda m: (-m.score, m.start))
+    return _prefer_heads(matches)
+
+
+def _names_switch(view: Model, var: str, text: Text, i: int) -> bool:
+    """The word at i is an on/off setting's own name, and nothing of ``var`` stands next to it."""
+    if near_vocab(view.infos[var], text, i, i + 1, reach=2):
+        return False
+    for name, info in view.infos.items():
+        own = own_stems(info)
+        if name == var or info.role != "switch" or text.stems[i] not in own:
+            continue
+        if text.word(i + 1) in ("on", "off") or phrase_here(text, i, own - {text.stems[i]}):
+            return True
+    return False
+
+
+def _prefer_heads(matches: list[_Match]) -> list[_Match]:
+    """Of two values of one variable side by side ("UV storage"), the second — the head noun —
+    is meant, unless it matched much worse."""
+    best: dict[str, _Match] = {}
+    for match in matches:
+        best.setdefault(match.var, match)
+    for var, first in best.items():
+        for other in matches:
+            if other.var == var and other.start == first.end and other.score >= first.score - 0.3:
+                other.score = first.score + 0.01
+    matches.sort(key=lambda m: (-m.score, m.start))
+    return matches
+
+
+def _names_other(view: Model, var: str, text: Text, i: int, end: int) -> bool:
+    """The words i..end name another variable, and a number or more of that variable's words
+    follow ("power level 8" sets the level, not the POWER mode)."""
+    keys = [text.concepts[k] for k in range(i, end) if text.word(k) not in CONNECTORS]
+    others = [
+        info
+        for name, info in view.infos.items()
+        if name != var and all(info.vocab.get(key, 0.0) >= 0.8 for key in keys)
+    ]
+    if not others:
+        return False
+    shared = {key for info in others for key in info.vocab}
+    for k in (i - 1, end):
+        key = text.concepts[k] if 0 <= k < len(text.concepts) else ""
+        if key in view.infos[var].vocab and key not in shared:
+            return False  # "temperature mode": the mode's own word is next to it
+    k = end + 1 if text.word(end) == "(" else end
+    following = text.word(k)
+    if (following[:1].isdigit() or following in NUMBER_WORDS) and text.word(
+        k + 1
+    ) not in COUNT_NOUNS:
+        return True
+    key = text.concepts[k] if k < len(text.concepts) else ""
+    return any(info.vocab.get(key, 0.0) for info in others)
+
+
+def _match_at(text: Text, i: int, stems: tuple[str, ...]) -> tuple[int, float] | None:
+    """End and quality of the phrase ``stems`` matched from token i (connectors may sit
+    between words; a synonym or a longer word that starts like the value counts less)."""
+    k = i
+    quality = 1.0
+    for index, target in enumerate(stems):
+        if index:
+            while text.word(k) in CONNECTORS and k < len(text.tokens):
+                k += 1
+        if k >= len(text.tokens):
+            return None
+        here = text.stems[k]
+        if here == target:
+            pass
+        elif similar(here, target):
+            quality = min(quality, 0.9)
+        elif here in _SYNONYM_STEMS.get(target, ()):
+            quality = min(quality, 0.8)
+        elif (
+            len(target) >= 4
+            and here.startswith(target)
+            and (len(here) <= len(target) + 4 or len(target) >= 5)
+            and text.word(k) not in LOWEST | HIGHEST
+        ):
+            quality = min(quality, 0.8)  # "storage" for STORE, "combination" for COMBI
+        elif len(stems) > 1 and len(here) >= 3 and target.startswith(here):
+            quality = min(quality, 0.7)  # "frozen veg" for frozen vegetables
+        else:
+            return None
+        k += 1
+    return k, quality
+
+
+_SYNONYM_STEMS: dict[str, frozenset[str]] = {
+    stem(word): frozenset(stem(w) for w in others) for word, others in SYNONYMS.items()
+}
+
+
+def _distinct(mentions: list[Mention]) -> list[Mention]:
+    """Drop a quantity that repeats the one just before it ("at 9 pm (21:00)", "a day, 24 h")."""
+    kept: list[Mention] = []
+    for mention in mentions:
+        last = kept[-1] if kept else None
+        if (
+            last is not None
+            and last.kind == mention.kind
+            and abs(last.value - mention.value) < 1e-6
+            and mention.start - last.end <= 3
+        ):
+            continue
+        kept.append(mention)
+    return kept
+
+
+def _assign_mentions(
+    view: Model, text: Text, mentions: list[Mention], goal: Goal, claimed: set[int]
+) -> bool:
+    """Give each quantity to the open setting it fits best. True when a delay was set relative
+    to now ("ready in 15 hours", "3 hours from now"): a countdown that must be started."""
+    counting = False
+    options: list[tuple[float, int, int, str, Any]] = []
+    for mi, mention in enumerate(mentions):
+        for name, info in view.infos.items():
+            if name in goal or info.role in ("power", "running", "switch"):
+                continue
+            value = _fit(view, info, mention, goal)
+            if value is None:
+                continue
+            score = near_vocab(info, text, mention.start, mention.end)
+            if info.timing in ("clock", "finish") and not near_vocab(
+                info, text, mention.start, mention.end, reach=12
+            ):
+                continue  # a time of day sets the clock only when the clock is named
+            score += _cue_bonus(info, text, mention)
+            options.append((score, -info.order, mi, name, value))
+    options.sort(key=lambda o: (-o[0], -o[1]))
+    used: set[int] = set()
+    for score, _order, mi, name, value in options:
+        if mi in used or name in goal:
+            continue
+        mention = mentions[mi]
+        article = text.word(mention.start) in ("a", "an", "couple", "single")
+        lone = not article and _only_home(view, mention, goal)
+        if score <= 0 and mention.kind == "number" and not lone:
+            continue
+        goal[name] = value
+        used.add(mi)
+        claimed.update(range(mention.start, mention.end))
+        if view.infos[name].timing == "delay" and _relative(text, mention):
+            counting = True
+    for mi, mention in enumerate(mentions):
+        if mi not in used and mention.kind == "clock" and _clock_parts(view, mention, goal):
+            used.add(mi)
+    for mi, mention in enumerate(mentions):
+        if mi not in used:
+            _unplaced(view, text, mention, goal)
+    return counting
+
+
+def _clock_parts(view: Model, mention: Mention, goal: Goal) -> bool:
+    """A clock kept as two settings, its hour and its minute: set both from one time."""
+    parts: dict[str, VarInfo] = {}
+    for info in view.infos.values():
+        own = own_stems(info)
+        if info.role != "setting" or stem("clock") not in own or info.name in goal:
+            continue
+        if own & {stem("hour"), stem("hours"), "hr", "h"}:
+            parts["hour"] = info
+        elif own & {stem("minute"), stem("minutes"), "min", "m"}:
+            parts["minute"] = info
+    if len(parts) != 2:
+        return False
+    hour, minute = divmod(int(mention.value) // 60, 60)
+    values = {}
+    for part, number in (("hour", hour), ("minute", minute)):
+        domain = domain_values(view, parts[part], goal)
+        if part == "hour" and not _has_number(domain, number) and number > 12:
+            number -= 12
+        found = next((v for v in domain if _as_int(v) == number), None)
+        if found is None:
+            return False
+        values[parts[part].name] = found
+    goal.update(values)
+    return True
+
+
+def _as_int(value: Any) -> int | None:
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        return None
+    return int(number) if number == int(number) else None
+
+
+def _has_number(domain: list[Any], number: int) -> bool:
+    return any(_as_int(v) == number for v in domain)
+
+
+def _only_home(view: Model, mention: Mention, goal: Goal) -> bool:
+    """A bare number that fits exactly one open variable goes there."""
+    homes = [
+        n
+        for n, i in view.infos.items()
+        if n not in goal and i.role == "setting" and _fit(view, i, mention, goal) is not None
+    ]
+    return len(homes) == 1
+
+
+def _relative(text: Text, mention: Mention) -> bool:
+    """A duration counted from now: "in 8 hours", "5 h from now", "starting in 2 hours"."""
+    before = text.word(mention.start - 1)
+    after = " ".join(text.word(mention.end + d) for d in range(2))
+    return before in ("in", "within") or after == "from now"
+
+
+def _cue_bonus(info: VarInfo, text: Text, mention: Mention) -> float:
+    """Relative times prefer delays, "for" a duration, clock times clocks; units fit units."""
+    before = text.word(mention.start - 1)
+    before2 = text.word(mention.start - 2)
+    bonus = 0.0
+    if mention.kind == "duration":
+        relative = _relative(text, mention) or before2 in ("delay", "delayed", "wait")
+        relative = relative or before in ("delay", "delayed", "wait")
+        if info.timing == "delay":
+            bonus += 0.9 if relative else -0.3
+        elif relative:
+            bonus -= 0.3
+    if mention.dimension and mention.dimension == info.dimension:
+        bonus += 0.3
+    return bonus
+
+
+def _fit(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
+    """The canonical value a mention gives this variable, or None when it does not fit."""
+    counted = mention.kind == "number" and mention.unit
+    if counted and concept(mention.unit) not in info.vocab and not _COUNTING & set(info.vocab):
+        return None  # "two slices" counts slices: only a quantity setting takes it
+    domain = domain_values(view, info, goal)
+    var = info.var
+    if isinstance(var, TimeVariable):
+        if mention.kind == "duration" and info.timing not in ("clock", "finish"):
+            seconds = round(mention.value)
+        elif mention.kind == "clock" and info.timing in ("duration", "delay"):
+            if not mention.colon or mention.meridiem or mention.lead not in ("for", "to", "of"):
+                return None
+            hours, minutes = divmod(round(mention.value) // 60, 60)
+            # "for 1:30": minutes and seconds on a mm:ss display, else hours and minutes
+            seconds = hours * 60 + minutes if var.format == "mm:ss" else round(mention.value)
+        elif mention.kind == "clock":
+            seconds = round(mention.value)
+            if format_hms(seconds) not in domain and seconds >= 13 * 3600:
+                # a 12-hour clock: 19:00 is 7:00
+                seconds -= 12 * 3600
+        else:
+            return None
+        value = format_hms(seconds)
+        return value if value in domain else None
+    if isinstance(var, NumericVariable):
+        number = _number_for(info, var.unit, mention)
+        if number is None:
+            return _percent_of_level(info, mention, domain)
+        fahrenheit_dial = var.unit.casefold() in ("°f", "f")
+        converted = (mention.kind == "fahrenheit" and not fahrenheit_dial) or (
+            fahrenheit_dial and mention.unit in ("°c", "c", "celsius")
+        )
+        tolerance = (_F_TOLERANCE * (1.8 if fahrenheit_dial else 1.0)) if converted else 1e-6
+        return _in_numeric(number, domain, tolerance=tolerance)
+    # discrete values that are numbers ("60", "1000") or quantities ("1.75 oz", "450 W")
+    measured = _measure(mention)
+    if measured is None:
+        return None
+    amount, dimension = measured
+    for value in domain:
+        q = parse_quantity(str(value))
+        if q is None:
+            continue
+        if q[1] is not None:
+            if q[1] == dimension and abs(q[0] - amount) < 1e-6 * max(1.0, abs(amount)):
+                return value
+        elif dimension is None or dimension == info.dimension:
+            if abs(q[0] - amount) < 1e-6:
+                return value
+        elif (
+            dimension == "fahrenheit"
+            and info.dimension == "temperature"
+            and abs(q[0] - (amount - 32) * 5 / 9) < 0.6
+        ):
+            return value
+    return _coded(domain, mention) or _show_quantity(info, mention)
+
+
+_CODE = re.compile(r"[A-Za-z]{1,2}[- ]?(\d+)")
+
+
+def _coded(domain: list[Any], mention: Mention) -> Any:
+    """ "programme 5" for a value written P5, "menu 6" for A-6: a short prefix and the number."""
+    if mention.kind != "number" or mention.value != int(mention.value):
+        return None
+    found = [v for v in domain if (m := _CODE.fullmatch(str(v))) and int(m[1]) == mention.value]
+    return found[0] if len(found) == 1 else None
+
+
+def _percent_of_level(info: VarInfo, mention: Mention, domain: list[Any]) -> Any:
+    """ "50% power" on a power level of 1-10 is level 5."""
+    if mention.dimension != "ratio" or not domain or info.dimension is not None:
+        return None
+    if not ({concept("power"), concept("level")} & set(info.vocab)):
+        return None
+    top = max(float(v) for v in domain)
+    if top not in (10, 100):
+        return None
+    return _in_numeric(mention.value * top / 100, domain)
+
+
+_COUNTING = frozenset(
+    concept(w) for w in ("quantity", "qty", "count", "number", "servings", "pieces", "portions")
+)
+
+
+def _measure(mention: Mention) -> tuple[float, str | None] | None:
+    if mention.kind == "number":
+        return mention.value, None
+    if mention.kind in ("quantity", "fahrenheit"):
+        return mention.value, mention.dimension
+    if mention.kind == "duration":
+        return mention.value, "time"
+    return None
+
+
+def _base_unit(dimension: str) -> str:
+    return {"temperature": "°C", "ratio": "%", "speed": "rpm"}.get(dimension, "")
+
+
+def _show_quantity(info: VarInfo, mention: Mention) -> Any:
+    """A discrete value whose display text holds the mentioned quantity ("POT 600mL")."""
+    show = info.var.show if isinstance(info.var.show, dict) else {}
+    if mention.kind != "quantity" or not show:
+        return None
+    for value, text in show.items():
+        for m in find_mentions(tokenize(text)):
+            same = m.kind == "quantity" and m.dimension == mention.dimension
+            if same and abs(m.value - mention.value) < 1e-6:
+                return value
+    return None
+
+
+def _number_for(info: VarInfo, unit: str, mention: Mention) -> float | None:
+    """The mention as a number in ``unit`` (None when the dimensions differ)."""
+    target = unit_of(unit) if unit else None
+    if mention.kind == "number":
+        return mention.value
+    if mention.kind == "duration":
+        if target is None or target[0] != "time":
+            return None
+        return mention.value / target[1]
+    if mention.kind == "fahrenheit":
+        if unit.casefold() in ("°f", "f"):
+            return mention.value
+        if target is not None and target[0] == "temperature":
+            return round((mention.value - 32) * 5 / 9, 6)
+        return None
+    if mention.kind == "quantity":
+        if target is None:
+            if unit:
+                return None
+            return mention.value if mention.dimension in (None, info.dimension) else None
+        if unit.casefold() in ("°f", "f") and mention.dimension == "temperature":
+            if mention.unit in ("°c", "c", "celsius"):
+                return round(mention.value * 9 / 5 + 32, 6)  # "180 °C" on a Fahrenheit dial
+            return mention.value  # "350 degrees" on a Fahrenheit dial
+        if target[0] != mention.dimension:
+            return None
+        return mention.value / target[1]
+    return None
+
+
+_F_TOLERANCE = 5.0
+"""°C a Fahrenheit figure may miss a Celsius dial by: 350 °F is 176.7 °C, printed as 180 °C."""
+
+
+def _in_numeric(number: float, domain: list[Any], tolerance: float = 1e-6) -> Any:
+    """The domain value equal to ``number`` (or nearest within ``tolerance``)."""
+    best = min(domain, key=lambda v: abs(float(v) - number), default=None)
+    if best is not None and abs(float(best) - number) <= tolerance:
+        return best
+    return None
+
+
+def _clock_for_a_delay(view: Model, text: Text, mention: Mention, goal: Goal) -> None:
+    """ "finish by 7 am" where the model only counts hours from now: say so, do not guess."""
+    for info in view.infos.values():
+        if info.role != "setting" or info.timing != "delay" or info.name in goal:
+            continue
+        if near_vocab(info, text, mention.start, mention.end) >= 0.5:
+            raise GoalParseError(
+                text.span(mention.start, mention.end),
+                f"{info.name} is a time from now, not a time of day; give it as 'in N hours'",
+            )
+
+
+def _unplaced(view: Model, text: Text, mention: Mention, goal: Goal) -> None:
+    """A quantity with a unit that only open variables of its kind could take, none of which
+    has the value: the model cannot do what was asked."""
+    if mention.kind == "number":
+        return
+    kinds = []
+    for name, info in view.infos.items():
+        if info.role != "setting":
+            continue
+        timed = isinstance(info.var, TimeVariable) or info.dimension == "time"
+        if (
+            (mention.kind == "clock" and info.timing in ("clock", "finish"))
+            or (mention.kind == "duration" and timed)
+            or (mention.kind == "fahrenheit" and info.dimension == "temperature")
+            or (mention.kind == "quantity" and info.dimension == mention.dimension)
+        ):
+            kinds.append(name)
+    if not kinds and mention.kind == "clock":
+        _clock_for_a_delay(view, text, mention, goal)
+    if not kinds:
+        return
+    closeness = {n: near_vocab(view.infos[n], text, mention.start, mention.end) for n in kinds}
+    near = max(kinds, key=lambda n: closeness[n])
+    if mention.kind == "clock" and closeness[near] < 0.5:
+        return  # a time of day said in passing ("a 3 a.m. feed")
+    if any(name in goal for name in kinds) and (near in goal or closeness[near] < 0.5):
+        return  # another setting of its kind was given; this may be a remark
+    info = view.infos[near]
+    values = domain_values(view, info, goal)
+    parent = info.var.depends_on
+    if not values and parent:
+        reason = f"{near} does not apply when {parent} is {goal.get(parent)!r}"
+    else:
+        where = f" when {parent} is {goal[parent]!r}" if parent and parent in goal else ""
+        reason = f"no setting of this model takes it; {near} can be {preview(values, quote=False)}"
+        reason += where
+    raise GoalParseError(text.span(mention.start, mention.end), reason)
+
+
+def _superlatives(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
+    """ "the lowest temperature", "full power", "a dark crust" on an ordered numeric setting."""
+    for k, token in enumerate(text.tokens):
+        word = token.text
+        if k in claimed:
+            continue
+        end = None
+        if word in LOWEST:
+            end = 0
+        elif word in HIGHEST:
+            end = -1
+        scale_index = None
+        for scale in SCALES:
+            said = "medium" if word in ("middle", "mid", "med") else word
+            if said in scale:
+                scale_index = (scale.index(said), len(scale))
+        if end is None and scale_index is None:
+            continue
+        best: tuple[float, str] | None = None
+        for name, info in view.infos.items():
+            if name in goal or info.role != "setting" or not _ordered(info):
+                continue
+            values = domain_values(view, info, goal)
+            if scale_index is not None and end is None and len(values) != scale_index[1]:
+                continue
+            score = near_vocab(info, text, k, k + 1, reach=4)
+            if score > 0 and (best is None or score > best[0]):
+                best = (score, name)
+        if best is None:
+            continue
+        name = best[1]
+        values = _ordered_values(domain_values(view, view.infos[name], goal))
+        if not values:
+            continue
+        if end is not None:
+            goal[name] = values[end]
+        elif scale_index is not None:
+            goal[name] = values[scale_index[0]]
+        claimed.add(k)
+
+
+def _ordered(info: VarInfo) -> bool:
+    return isinstance(info.var, NumericVariable | TimeVariable) or (
+        isinstance(info.var, DiscreteVariable)
+        and (numeric_values(info.values) or bool(quantity_dimensions(info.values)))
+    )
+
+
+def _ordered_values(values: list[Any]) -> list[Any]:
+    """Values in order of size: numbers and times as they are; of a discrete list, the ones
+    that are quantities ("100 W" < "450 W"), by size."""
+    if all(isinstance(v, int | float) for v in values) or all(
+        str(v).count(":") == 2 for v in values
+    ):
+        return values
+    sized = [(q[0], v) for v in values if (q := parse_quantity(str(v))) is not None]
+    return [v for _size, v in sorted(sized, key=lambda pair: pair[0])]
+
+
+def _checked(view: Model, goal: Goal) -> Goal:
+    """Normalise every value against its variable (the programme's case for a setting)."""
+    out: Goal = {}
+    for name, value in goal.items():
+        info = view.infos[name]
+        try:
+            out[name] = normalise(info.var, value)
+        except ValueProblem as exc:
+            raise GoalParseError(str(value), f"not a value of {name}: {exc}") from None
+    return out

@@ -1,0 +1,312 @@
+"""On/off settings, zeros, power and start: the parts of a goal said with verbs and negations.
+
+"no prewash", "lock the keys", "no delay", "switch it on", "start it", "don't start it yet",
+and a goal setting whose procedure ends by starting the appliance (a TIME DEFROST entry).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from apbot.model.domain import build_domain
+from apbot.model.schema import (
+    DiscreteVariable,
+    GoTo,
+    NumericVariable,
+    TimeVariable,
+)
+from apbot.read.goal_text import (
+    CLAUSE_ENDS,
+    FILLERS,
+    STRONG_VERBS,
+    VERB_FAMILIES,
+    WEAK_VERBS,
+    Text,
+    clause_starts,
+    negative_around,
+    phrase_here,
+    verb_positions,
+)
+from apbot.read.goal_view import (
+    Goal,
+    Model,
+    VarInfo,
+    domain_values,
+    generic,
+    magnitude,
+    own_concepts,
+    own_stems,
+    step_effects,
+)
+from apbot.read.goal_vocab import (
+    NEGATIONS,
+    STOP_WORDS,
+    concept,
+    stem,
+)
+from apbot.read.numbers import tokenize
+
+
+def switches(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
+    """An on/off setting named in the instruction: on, unless its words are negated."""
+    verbs = verb_positions(text)
+    for name, info in view.infos.items():
+        if info.role != "switch" or name in goal:
+            continue
+        own = own_stems(info)
+        best: tuple[float, int] | None = None
+        for k in range(len(text.tokens)):
+            if k in claimed or text.word(k) in STOP_WORDS:
+                continue
+            key = text.concepts[k]
+            if text.stems[k] == stem("unlock") and stem("lock") in own:
+                key = concept("lock")  # "unlock the keys": the lock, off
+            weight = info.vocab.get(key, 0.0)
+            if weight <= 0 or generic(key):
+                continue
+            if text.stems[k] in own or key in own_concepts(info) or key == concept("lock"):
+                weight = 1.0
+                # "Warm the water" is not KEEP WARM; "UV light" is not the night light
+                doubtful = len(own) > 1 and (k in verbs or (k - 1) in claimed)
+                if doubtful and not (phrase_here(text, k, own) or _kept(text, k, own)):
+                    continue
+            elif negative_around(text, k):
+                weight = 0.5  # a feature's word only says "without" ("no finish time")
+            else:
+                continue
+            if best is None or weight > best[0]:
+                best = (weight, k)
+        if best is None:
+            continue
+        k = best[1]
+        positive = not negative_around(text, k)
+        assert info.on is not None and info.off is not None
+        goal[name] = info.on if positive else info.off
+        claimed.add(k)
+
+
+def _kept(text: Text, k: int, own: set[str]) -> bool:
+    """ "keep it hot", "keep the water warm": KEEP WARM said with words in between."""
+    if text.stems[k] != stem("keep") or stem("warm") not in own:
+        return False
+    return any(
+        text.stems[j] in (stem("warm"), stem("hot"))
+        for j in range(k + 1, min(k + 4, len(text.tokens)))
+    )
+
+
+def entry_switches(view: Model, goal: Goal) -> None:
+    """A setting entered through a switch ("READY AT" turns the finish timer on, then sets the
+    time) implies that switch on, unless the instruction already said otherwise."""
+    for _feature, steps in view.model.features.items():
+        for index, step in enumerate(steps):
+            if step.variable not in goal:
+                continue
+            for earlier in steps[:index]:
+                target = earlier.variable
+                info = view.infos.get(target or "")
+                if info is None or info.role != "switch" or target in goal:
+                    continue
+                effects = [effect for _a, effect in step_effects(earlier)]
+                if all(effect == "toggle" for effect in effects) and effects:
+                    goal[info.name] = info.on
+
+
+def zero_settings(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
+    """ "no delay", "no final spin", "skip the rinse": a numeric setting that can be 0 is 0."""
+    for k, token in enumerate(text.tokens):
+        if token.text not in NEGATIONS or token.text in ("off", "free", "stop", "cancel"):
+            continue
+        for d in range(1, 4):
+            j = k + d
+            if j >= len(text.tokens) or text.word(j) in CLAUSE_ENDS or text.word(j) == ",":
+                break
+            key = text.concepts[j]
+            homes = [
+                info
+                for info in view.infos.values()
+                if info.name not in goal
+                and info.role == "setting"
+                and not isinstance(info.var, DiscreteVariable)
+                and (text.stems[j] in own_stems(info) or key in own_concepts(info))
+                and _starts_at_zero(info)
+            ]
+            if len(homes) == 1:
+                values = domain_values(view, homes[0], goal)
+                zero = next((v for v in values if magnitude(v) == 0), None)
+                if zero is not None:
+                    goal[homes[0].name] = zero
+                    claimed.add(j)
+                break
+
+
+def _starts_at_zero(info: VarInfo) -> bool:
+    """A setting whose "none" is 0: any number, or a duration that starts empty (not a clock)."""
+    if isinstance(info.var, NumericVariable):
+        return True
+    if isinstance(info.var, TimeVariable) and info.timing not in ("clock", "finish"):
+        domain = build_domain(info.var) if not info.var.depends_on else None
+        return domain is None or magnitude(domain.values[domain.initial]) == 0
+    return False
+
+
+def boil(view: Model, text: Text, goal: Goal) -> None:
+    """ "bring it to the boil": 100 °C on a water temperature setting that offers it."""
+    if not any(s == stem("boil") for s in text.stems):
+        return
+    for info in view.infos.values():
+        if info.name in goal or not isinstance(info.var, NumericVariable):
+            continue
+        if info.dimension == "temperature" and info.var.unit.casefold() in ("°c", "c"):
+            values = domain_values(view, info, goal)
+            if 100 in values and max(values) == 100:
+                goal[info.name] = 100
+
+
+_DENIALS = frozenset({"don't", "dont", "not", "without", "never"})
+
+
+_START_WORDS = frozenset({"start", "begin", "started", "starting", "begins", "kick", "launch"})
+
+
+_NOW_PHRASES = ("right away", "straight away", "immediately")
+
+
+def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = False) -> None:
+    """Power on when asked; the running variable on (or off) when the instruction says so, a
+    goal setting's procedure starts it, or a delay counts down from now (``counting``)."""
+    for name, info in view.infos.items():
+        if info.role == "power" and name not in goal and _says_power_on(view, text):
+            goal[name] = info.on
+    running = [n for n, i in view.infos.items() if i.role == "running"]
+    if not running or any(n in goal for n in running):
+        return
+    family = next((VERB_FAMILIES[stem(n)] for n in running if stem(n) in VERB_FAMILIES), None)
+    start = _says_start(text, family, _named_starts(view, text))
+    started_by = _procedure_start(view, goal)
+    if start is None and started_by is not None:
+        start = True  # the procedure for a goal setting ends by starting (TIME DEFROST)
+    if start is None and counting:
+        start = True  # "ready in 15 hours": only a started countdown ends then
+    if start is None:
+        return
+    key = next((v for v in goal if v in view.start_values), None)
+    target = started_by or view.start_values.get(key) or view.start_values.get(None)
+    if target is None:
+        return
+    name, value = target
+    info = view.infos[name]
+    if start:
+        goal[name] = value
+    else:
+        domain = build_domain(info.var)
+        goal[name] = info.off or domain.values[domain.initial]
+
+
+def _procedure_start(view: Model, goal: Goal) -> tuple[str, Any] | None:
+    """(running variable, value) when a goal setting's own procedure ends with a step that
+    sets the running variable — the model says that entering it starts the appliance."""
+    for _feature, steps in view.model.features.items():
+        for index, step in enumerate(steps):
+            if step.variable not in goal:
+                continue
+            for later in steps[index + 1 :]:
+                info = view.infos.get(later.variable or "")
+                if info is None or info.role != "running":
+                    continue
+                for _action, effect in step_effects(later):
+                    if isinstance(effect, GoTo):
+                        return info.name, effect.to
+    return None
+
+
+def _says_power_on(view: Model, text: Text) -> bool:
+    """ "turn the machine on", "switch on, ...", "power the bread maker up"."""
+    n = len(text.tokens)
+    for k, token in enumerate(text.tokens):
+        if token.text not in ("turn", "switch", "power", "switched", "turned"):
+            continue
+        j = k + 1
+        while j < n and (concept(text.word(j)) in view.appliance_words or text.word(j) == "the"):
+            j += 1
+        if text.word(j) not in ("on", "up"):
+            continue
+        if j > k + 1:
+            return True  # "turn it on", "power the bread maker up"
+        m = j + 1
+        while m < n and (concept(text.word(m)) in view.appliance_words or text.word(m) == "the"):
+            m += 1
+        if m >= n or text.word(m) in CLAUSE_ENDS | {",", "and", "then"}:
+            return True  # "switch on, ...", "switch on the cooker and ..."
+    return False
+
+
+def _named_starts(view: Model, text: Text) -> set[int]:
+    """Positions of "start" that belong to a setting's name ("the delay start", "start time")."""
+    named = set()
+    for k, token in enumerate(text.tokens):
+        if token.text not in _START_WORDS:
+            continue
+        for info in view.infos.values():
+            label = info.var.label or ""
+            own = {stem(t.text) for t in tokenize(f"{info.name.replace('_', ' ')} {label}")}
+            if stem("start") in own and phrase_here(text, k, own - {stem("start")}):
+                named.add(k)
+    return named
+
+
+def _says_start(
+    text: Text, family: frozenset[str] | None = None, named: set[int] | frozenset[int] = frozenset()
+) -> bool | None:
+    """True for "start it", False for "don't start", None when the instruction says neither."""
+    joined = " " + " ".join(t.text for t in text.tokens) + " "
+    negative = False
+    positive = False
+    for k, token in enumerate(text.tokens):
+        word = token.text
+        starts = word in _START_WORDS and k not in named
+        if word in ("get", "set") and any(
+            text.word(k + d) in ("going", "started", "cooking", "heating", "running")
+            for d in range(1, 7)
+        ):
+            starts = True
+        if word == "go" and text.word(k + 1) in ("ahead", ".", "!", ""):
+            starts = True
+        if not starts:
+            continue
+        before = []
+        for d in range(1, 4):
+            if text.word(k - d) in CLAUSE_ENDS:
+                break
+            before.append(text.word(k - d))
+        denied = any(b in _DENIALS for b in before)
+        if denied or "yet" in (text.word(k + 1), text.word(k + 2)):
+            negative = True
+        else:
+            positive = True
+    if " not started " in joined or " but not start" in joined:
+        negative = True
+    for k, token in enumerate(text.tokens):  # "don't heat it yet"
+        if token.text in _DENIALS and token.text != "without" and k + 1 < len(text.stems):
+            verb = text.stems[k + 1]
+            if verb in STRONG_VERBS and (family is None or verb in family):
+                negative = True
+    if negative:
+        return False
+    if positive or any(f" {w} " in joined for w in _NOW_PHRASES):
+        return True
+    for k, token in enumerate(text.tokens):
+        if token.text == "now" and text.word(k - 1) != "from" and text.word(k + 1) != "on":
+            return True
+    for k in clause_starts(text, loose=True):
+        k2 = k + 1 if text.word(k) in FILLERS else k
+        if k2 >= len(text.stems):
+            continue
+        verb = text.stems[k2]
+        if family is not None and verb not in family:
+            continue
+        if verb in STRONG_VERBS:
+            return True
+        if verb in WEAK_VERBS and (k == 0 or text.word(k - 1) in (".", ";", "!")):
+            return True
+    return None

@@ -1,0 +1,195 @@
+"""An instruction as the goal parser reads it: tokens with stems and concepts, clauses, and
+how strongly the words around a span name a variable."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from apbot.read.goal_view import VarInfo
+from apbot.read.goal_vocab import (
+    NEGATIONS,
+    concept,
+    stem,
+)
+from apbot.read.numbers import Token, tokenize
+
+CONNECTORS = frozenset({"and", "+", "-", "/", "&", ",", "then", "with", "n"})
+
+
+CLAUSE_ENDS = frozenset({".", ";", "!", "?", "(", ")"})
+
+
+@dataclass
+class Text:
+    tokens: list[Token]
+    stems: list[str]
+    concepts: list[str]
+
+    @classmethod
+    def of(cls, text: str) -> Text:
+        tokens = tokenize(text)
+        return cls(tokens, [stem(t.text) for t in tokens], [concept(t.text) for t in tokens])
+
+    def word(self, k: int) -> str:
+        return self.tokens[k].text if 0 <= k < len(self.tokens) else ""
+
+    def span(self, start: int, end: int) -> str:
+        return " ".join(t.text for t in self.tokens[start:end])
+
+
+def negated_before(text: Text, start: int, reach: int = 3) -> bool:
+    for k in range(start - 1, max(-1, start - reach - 1), -1):
+        word = text.word(k)
+        if word in CLAUSE_ENDS or word == ",":
+            return False
+        if word in NEGATIONS and word not in ("off", "stop", "free"):
+            return True
+    return False
+
+
+NUMBER_WORDS = frozenset(
+    {
+        "one",
+        "two",
+        "three",
+        "four",
+        "five",
+        "six",
+        "seven",
+        "eight",
+        "nine",
+        "ten",
+        "eleven",
+        "twelve",
+        "twenty",
+        "thirty",
+        "forty",
+        "fifty",
+        "sixty",
+        "seventy",
+        "eighty",
+        "ninety",
+        "hundred",
+    }
+)
+
+
+def verb_positions(text: Text) -> set[int]:
+    """Tokens that open a clause with a verb of doing ("Bake a cake", "then steam it")."""
+    positions = set()
+    for k in clause_starts(text, loose=True):
+        k2 = k + 1 if text.word(k) in FILLERS else k
+        if k2 < len(text.stems) and text.stems[k2] in _ACTION_VERBS:
+            positions.add(k2)
+    return positions
+
+
+FILLERS = ("just", "please", "then", "now", "also", "first")
+
+
+def near_vocab(info: VarInfo, text: Text, start: int, end: int, reach: int = 8) -> float:
+    """How strongly the words around a span name the variable: each of its words found
+    counts once, nearer counts more, and a comma in between halves it."""
+    found: dict[str, float] = {}
+    for direction, first in ((-1, start - 1), (1, end)):
+        k = first
+        factor = 1.0
+        for distance in range(1, reach + 1):
+            if not 0 <= k < len(text.tokens):
+                break
+            word = text.word(k)
+            if word in CLAUSE_ENDS:
+                break
+            if word == ",":
+                factor *= 0.4
+            key = text.concepts[k]
+            weight = info.vocab.get(key, 0.0)
+            if weight:
+                found[key] = max(found.get(key, 0.0), factor * weight / distance)
+            k += direction
+    return sum(found.values())
+
+
+def phrase_here(text: Text, k: int, own: set[str]) -> bool:
+    """Another of the switch's own words stands next to token k ("keep warm", "night light")."""
+    return any(text.stems[j] in own for j in (k - 1, k + 1) if 0 <= j < len(text.tokens))
+
+
+def negative_around(text: Text, k: int) -> bool:
+    for d in range(1, 6):
+        word = text.word(k - d)
+        if word in CLAUSE_ENDS or word == ",":
+            break
+        if word in NEGATIONS and word not in ("free",):
+            return True
+        if word in ("on", "with", "enable", "add"):
+            break
+    if text.word(k) in ("mute", "silence", "unlock"):
+        return True
+    for d in range(1, 4):
+        word = text.word(k + d)
+        if word in CLAUSE_ENDS or word == ",":
+            break
+        if word in ("off", "disabled"):
+            return True
+        if word == "on":
+            return False
+    return False
+
+
+STRONG_VERBS = frozenset(
+    stem(w)
+    for w in (
+        "cook",
+        "heat",
+        "warm",
+        "boil",
+        "bake",
+        "fry",
+        "roast",
+        "steam",
+        "simmer",
+        "sear",
+        "melt",
+        "brew",
+        "reheat",
+        "wash",
+        "dispense",
+        "pour",
+        "thaw",
+        "defrost",
+        "soften",
+        "pop",
+        "dehydrate",
+        "broil",
+        "toast",
+        "run",
+        "microwave",
+        "grill",
+        "knead",
+    )
+)
+
+
+WEAK_VERBS = frozenset(stem(w) for w in ("keep", "bring", "make", "give", "fill"))
+
+
+# A running variable named for one operation is started only by that operation's verbs.
+VERB_FAMILIES: dict[str, frozenset[str]] = {
+    stem("heating"): frozenset(stem(w) for w in ("heat", "warm", "boil", "bring")),
+    stem("dispensing"): frozenset(stem(w) for w in ("dispense", "pour", "fill")),
+    stem("pouring"): frozenset(stem(w) for w in ("dispense", "pour", "fill")),
+}
+
+
+_ACTION_VERBS = STRONG_VERBS | WEAK_VERBS
+
+
+def clause_starts(text: Text, loose: bool = False) -> list[int]:
+    """Where sentences begin (and, when ``loose``, clauses after ", and", "then")."""
+    ends = {".", ";", "!", "?"} | ({",", "and", "then"} if loose else set())
+    starts = [0]
+    for k, token in enumerate(text.tokens):
+        if token.text in ends and k + 1 < len(text.tokens):
+            starts.append(k + 1)
+    return starts

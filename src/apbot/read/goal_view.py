@@ -1,0 +1,462 @@
+"""What the goal parser knows about a model: each variable's words, role and timing.
+
+Built once per model from its own names only — variable names and labels, show texts, feature
+names, the labels of the keys that adjust a variable, and which key starts the appliance — and
+remembered, since an agent parses many sentences against one belief.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+from functools import lru_cache
+from typing import Any
+
+from apbot.model.domain import AnyVariable, all_values, build_domain
+from apbot.model.schema import (
+    ApplianceModel,
+    DiscreteVariable,
+    GoTo,
+    NumericVariable,
+    Step,
+    TimeVariable,
+)
+from apbot.model.values import parse_quantity as _parse_quantity
+from apbot.model.values import unit_of
+from apbot.read.goal_vocab import (
+    LETTER_WORDS,
+    STOP_WORDS,
+    SYNONYMS,
+    concept,
+    stem,
+)
+from apbot.read.numbers import tokenize
+
+Goal = dict[str, Any]
+
+_ON_WORDS = ("on", "yes", "enabled", "true")
+
+
+_OFF_WORDS = ("off", "no", "disabled", "false")
+
+
+_OPERATION_NAMES = frozenset(
+    stem(w)
+    for w in (
+        "running",
+        "run",
+        "heating",
+        "cooking",
+        "dispensing",
+        "pouring",
+        "status",
+        "state",
+        "operation",
+        "washing",
+        "brewing",
+        "working",
+    )
+)
+
+
+_START_LABELS = ("start", "run", "go", "begin", "dispense", "pour")
+
+
+@dataclass
+class VarInfo:
+    """One variable as the parser sees it: words that name it and its role."""
+
+    name: str
+    var: AnyVariable
+    vocab: dict[str, float] = field(default_factory=dict)
+    role: str = "setting"  # setting, switch, power, running
+    on: str | None = None
+    off: str | None = None
+    timing: str = "duration"  # for time-like variables: duration, delay, finish (at), clock
+    dimension: str | None = None
+    order: int = 0
+
+    @property
+    def values(self) -> list[Any]:
+        return all_values(self.var)
+
+
+@dataclass
+class Model:
+    """The parser's view of a model, built once."""
+
+    model: ApplianceModel
+    infos: dict[str, VarInfo]
+    phrases: list[tuple[str, Any, tuple[str, ...], float]]  # var, value, stems, weight
+    start_values: dict[str | None, tuple[str, Any]]  # feature var (None: plain START) -> value
+    appliance_words: frozenset[str]
+
+
+@lru_cache(maxsize=65536)
+def parse_quantity(text: str) -> tuple[float, str | None, float] | None:
+    """:func:`apbot.model.values.parse_quantity`, remembered: value lists are read per mention."""
+    return _parse_quantity(text)
+
+
+MAX_PHRASE_VALUES = 2_000
+"""Values of one discrete variable matched as phrases; a longer list is matched by numbers only."""
+
+
+def _words(text: str) -> list[str]:
+    return [t.text for t in tokenize(text.replace("_", " ")) if t.text.isalpha()]
+
+
+def _phrase_words(text: str) -> list[str]:
+    """Words and numbers of a value's name ("quick 20", "eco 40-60", "A-6")."""
+    return [t.text for t in tokenize(text.replace("_", " ")) if t.text.replace(".", "").isalnum()]
+
+
+def _steps_of(model: ApplianceModel) -> Iterable[tuple[str, int, Step]]:
+    for feature, steps in model.features.items():
+        for index, step in enumerate(steps):
+            yield feature, index, step
+
+
+def _control_labels(model: ApplianceModel, actions: Iterable[str]) -> list[str]:
+    labels: list[str] = []
+    controls = {c.id: c for c in model.controls}
+    for action_id in actions:
+        action = model.actions.get(action_id)
+        if action is None:
+            continue
+        for cid in [action.control] if action.control else list(action.controls or []):
+            control = controls.get(cid or "")
+            if control is not None and control.label:
+                labels.append(control.label)
+    return labels
+
+
+def step_effects(step: Step) -> list[tuple[str, Any]]:
+    """(action, effect) pairs of a step."""
+    if isinstance(step.effect, dict):
+        return list(step.effect.items())
+    return [(a, step.effect) for a in step.actions]
+
+
+def _add_vocab(info: VarInfo, text: str, weight: float) -> None:
+    for word in _words(text):
+        if word in STOP_WORDS or len(word) < 2:
+            continue
+        key = concept(word)
+        info.vocab[key] = max(info.vocab.get(key, 0.0), weight)
+
+
+def _is_on_off(values: list[Any]) -> tuple[str, str] | None:
+    lowered = [str(v).casefold() for v in values]
+    if len(values) != 2:
+        return None
+    on = next((values[i] for i, v in enumerate(lowered) if v in _ON_WORDS), None)
+    off = next((values[i] for i, v in enumerate(lowered) if v in _OFF_WORDS), None)
+    if on is None or off is None:
+        return None
+    return str(on), str(off)
+
+
+def build(model: ApplianceModel) -> Model:
+    """Gather each variable's words and role from the model."""
+    infos: dict[str, VarInfo] = {}
+    for order, (name, var) in enumerate(model.variables.items()):
+        info = VarInfo(name, var, order=order)
+        _add_vocab(info, name, 1.0)
+        if var.label:
+            _add_vocab(info, var.label, 1.0)
+        if isinstance(var.show, str):
+            _add_vocab(info, var.show.split("{")[0], 0.7)
+        elif isinstance(var.show, dict):
+            for value, text in var.show.items():
+                if "{" not in text and str(value).casefold() not in _OFF_WORDS:
+                    _add_vocab(info, text, 0.7)
+        if isinstance(var, NumericVariable):
+            info.dimension = (unit_of(var.unit) or (None, 0))[0] if var.unit else None
+        if isinstance(var, DiscreteVariable):
+            switch = _is_on_off(info.values)
+            if switch:
+                info.role, info.on, info.off = "switch", switch[0], switch[1]
+            if numeric_values(info.values):
+                info.dimension = _dimension_by_name(info)
+            for dimension in quantity_dimensions(info.values):
+                _add_vocab(info, _DIMENSION_WORDS.get(dimension, ""), 0.6)  # "450 W": power
+        infos[name] = info
+    # features and control labels name the variables they adjust
+    for feature, index, step in _steps_of(model):
+        if step.variable and step.variable in infos:
+            info = infos[step.variable]
+            _add_vocab(info, feature, 0.6)
+            steps = model.features[feature]
+            entry = [a for s in steps[:index] for a in s.actions]
+            own = [
+                a
+                for a, effect in step_effects(step)
+                if not isinstance(effect, GoTo) and a in model.actions
+            ]
+            if info.role == "switch":
+                continue  # a switch's key is often shared (hold TIMER to lock)
+            for label in _control_labels(model, entry + own):
+                if not any(w in _START_LABELS for w in _words(label)):
+                    _add_vocab(info, label, 0.8)
+    _mark_power_and_running(model, infos)
+    for info in infos.values():
+        if isinstance(info.var, TimeVariable) or (
+            isinstance(info.var, NumericVariable) and info.dimension == "time"
+        ):
+            if "clock" in info.vocab:
+                info.timing = "clock"
+            elif concept("delay") in info.vocab:
+                info.timing = "delay"
+            elif concept("finish") in info.vocab:
+                # a time of day to finish at ("READY AT") or a wait ("READY IN", "END 3h")
+                at = isinstance(info.var, TimeVariable) and not (
+                    {"in", "after"} & set(_words(f"{info.name} {info.var.label or ''}"))
+                )
+                info.timing = "finish" if at else "delay"
+    phrases = _phrases(model, infos)
+    start_values = _start_values(model, infos)
+    appliance = {concept(w) for w in _words(model.appliance.name + " " + model.appliance.category)}
+    appliance |= {
+        concept(w)
+        for w in (
+            "it",
+            "machine",
+            "appliance",
+            "unit",
+            "device",
+            "washer",
+            "cooker",
+            "fryer",
+            "oven",
+            "kettle",
+            "maker",
+            "dehumidifier",
+            "steriliser",
+            "sterilizer",
+            "hob",
+            "everything",
+        )
+    }
+    return Model(model, infos, phrases, start_values, frozenset(appliance))
+
+
+def numeric_values(values: list[Any]) -> bool:
+    numeric = [v for v in values if parse_quantity(str(v)) is not None]
+    return len(numeric) >= max(1, len(values) - 2)
+
+
+_DIMENSION_WORDS = {"power": "power", "temperature": "temperature", "mass": "weight"}
+
+
+def quantity_dimensions(values: list[Any]) -> set[str]:
+    """Dimensions that at least two values are quantities of ("100 W", "450 W")."""
+    counts: dict[str, int] = {}
+    for value in values:
+        q = parse_quantity(str(value))
+        if q is not None and q[1] is not None:
+            counts[q[1]] = counts.get(q[1], 0) + 1
+    return {d for d, c in counts.items() if c >= 2}
+
+
+def _dimension_by_name(info: VarInfo) -> str | None:
+    if concept("temperature") in info.vocab:
+        return "temperature"
+    if concept("humidity") in info.vocab:
+        return "ratio"
+    if concept("spin") in info.vocab:
+        return "speed"
+    return None
+
+
+def _mark_power_and_running(model: ApplianceModel, infos: dict[str, VarInfo]) -> None:
+    """The power switch hides the panel (or is called power); the running variable is what a
+    START key sets, or is named for an operation (heating, dispensing, status)."""
+    hiding = {name for guard in model.guards if guard.hide for name in guard.when}
+    for name, info in infos.items():
+        dark = name in hiding and concept("lock") not in info.vocab  # a panel that goes dark
+        named = name in ("power", "on_off", "power_switch") or dark
+        if info.role == "switch" and named:
+            info.role = "power"
+    for _feature, _index, step in _steps_of(model):
+        pressed = [a for a in step.actions if model.actions[a].skill == "press"]
+        labels = " ".join(_control_labels(model, pressed)).casefold()
+        if not any(word in _words(labels) for word in _START_LABELS):
+            continue
+        goes = any(isinstance(effect, GoTo) for _a, effect in step_effects(step))
+        targets = [step.variable] if step.variable and goes else []
+        targets += list(step.set)
+        for target in targets:
+            found = infos.get(target or "")
+            if (
+                found is not None
+                and isinstance(found.var, DiscreteVariable)
+                and found.role != "power"
+                and (stem(target or "") in _OPERATION_NAMES or found.role == "switch")
+            ):
+                found.role = "running"
+    for name, info in infos.items():
+        operation = stem(name) in _OPERATION_NAMES
+        if (
+            operation
+            and info.role in ("switch", "setting")
+            and isinstance(info.var, DiscreteVariable)
+        ):
+            info.role = "running"
+
+
+def _start_values(
+    model: ApplianceModel, infos: dict[str, VarInfo]
+) -> dict[str | None, tuple[str, Any]]:
+    """What START sets the running variable to: by the variable whose feature ends with it
+    (a timer programme ends in "timer" rather than "cooking"), and in general (key None)."""
+    found: dict[str | None, tuple[str, Any]] = {}
+    running = [n for n, i in infos.items() if i.role == "running"]
+    for _feature, steps in model.features.items():
+        adjusted = [s.variable for s in steps if s.variable and s.variable not in running]
+        for step in steps:
+            for action, effect in step_effects(step):
+                if not isinstance(effect, GoTo) or step.variable not in running:
+                    continue
+                labels = " ".join(_control_labels(model, [action])).casefold()
+                if not any(word in _words(labels) for word in _START_LABELS):
+                    continue
+                value = (step.variable, effect.to)
+                if len(steps) == 1 or not adjusted:
+                    found.setdefault(None, value)
+                for var in adjusted:
+                    found.setdefault(var, value)
+    for name in running:
+        info = infos[name]
+        on = info.on or next(
+            (v for v in info.values if v != build_domain(info.var).values[0]), None
+        )
+        if on is not None:
+            found.setdefault(None, (name, on))
+    return found
+
+
+PARTIAL = 0.6
+"""Weight of a value named by its first word alone ("the eco programme" for eco 40-60); such a
+match needs the setting's own word beside it."""
+
+
+def _first_words(name: str, info: VarInfo) -> list[tuple[str, Any, tuple[str, ...], float]]:
+    """The first word of a many-word value, where no other value of the setting uses it."""
+    firsts: dict[str, list[Any]] = {}
+    used: dict[str, int] = {}
+    for value in info.values:
+        words = [stem(w) for w in _phrase_words(str(value))]
+        for word in words:
+            used[word] = used.get(word, 0) + 1
+        if len(words) > 1 and words[0].isalpha() and len(words[0]) >= 3:
+            firsts.setdefault(words[0], []).append(value)
+    return [
+        (name, values[0], (word,), PARTIAL)
+        for word, values in firsts.items()
+        if len(values) == 1 and used[word] == 1 and word not in STOP_WORDS
+    ]
+
+
+def _phrases(
+    model: ApplianceModel, infos: dict[str, VarInfo]
+) -> list[tuple[str, Any, tuple[str, ...], float]]:
+    """Word sequences that name one value of one variable."""
+    phrases: list[tuple[str, Any, tuple[str, ...], float]] = []
+    for name, info in infos.items():
+        if not isinstance(info.var, DiscreteVariable) or info.role in ("power", "running"):
+            continue
+        if info.role == "switch":
+            continue
+        show = info.var.show if isinstance(info.var.show, dict) else {}
+        if len(info.values) > MAX_PHRASE_VALUES:
+            continue
+        for value in info.values:
+            text = str(value)
+            if text.casefold() in _ON_WORDS + _OFF_WORDS + ("none", "----", "--"):
+                continue
+            forms = [text]
+            if show.get(text) and "{" not in show[text]:
+                forms.append(show[text])
+            for form in forms:
+                words = [w for w in _phrase_words(form) if w != "and"]  # read as a connector
+                if parse_quantity(form) is not None:
+                    continue  # a number or a quantity ("3.0 oz"): read as a quantity
+                if not words:
+                    continue
+                if len(words) == 1 and words[0] in LETTER_WORDS:
+                    for alias in LETTER_WORDS[words[0]]:
+                        phrases.append((name, value, (stem(alias),), 0.9))
+                    continue
+                phrases.append((name, value, tuple(stem(w) for w in words), 1.0))
+                for synonym in SYNONYMS.get(words[0], ()) if len(words) == 1 else ():
+                    phrases.append((name, value, (stem(synonym),), 0.8))
+        phrases += _first_words(name, info)
+    # keys that go straight to one value ("GREEN TEA" sets 80 °C)
+    for _feature, _index, step in _steps_of(model):
+        if not step.variable or step.variable not in infos:
+            continue
+        info = infos[step.variable]
+        if info.role in ("power", "running"):
+            continue
+        for action, effect in step_effects(step):
+            if not isinstance(effect, GoTo):
+                continue
+            for label in _control_labels(model, [action]):
+                words = _words(label)
+                if words and not any(w in STOP_WORDS for w in words):
+                    phrases.append((step.variable, effect.to, tuple(stem(w) for w in words), 0.95))
+    return phrases
+
+
+_VIEWS: dict[int, tuple[ApplianceModel, Model]] = {}
+
+
+def model_view(model: ApplianceModel) -> Model:
+    """:func:`build`, remembered for the last few models (an agent parses many sentences)."""
+    hit = _VIEWS.get(id(model))
+    if hit is not None and hit[0] is model:
+        return hit[1]
+    view = build(model)
+    if len(_VIEWS) >= 32:
+        _VIEWS.pop(next(iter(_VIEWS)))
+    _VIEWS[id(model)] = (model, view)
+    return view
+
+
+def domain_values(view: Model, info: VarInfo, goal: Goal) -> list[Any]:
+    var = info.var
+    if var.depends_on and var.depends_on in goal and var.cases:
+        case = var.cases.get(str(goal[var.depends_on]))
+        if case is None:
+            return []
+        return list(build_domain(var, case).values)
+    return list(info.values)
+
+
+def own_concepts(info: VarInfo) -> set[str]:
+    return {concept(w) for w in own_stems(info)}
+
+
+def magnitude(value: Any) -> float | None:
+    if isinstance(value, int | float):
+        return float(value)
+    text = str(value)
+    if text.count(":") == 2:
+        h, m, sec = (int(x) for x in text.split(":"))
+        return float(h * 3600 + m * 60 + sec)
+    return None
+
+
+_GENERIC = frozenset(
+    concept(w) for w in ("program", "time", "temperature", "level", "power", "size", "water")
+)
+
+
+def generic(key: str) -> bool:
+    return key in _GENERIC
+
+
+def own_stems(info: VarInfo) -> set[str]:
+    words = _words(info.name) + (_words(info.var.label) if info.var.label else [])
+    return {stem(w) for w in words if w not in STOP_WORDS}

@@ -1,0 +1,252 @@
+"""Words: a light stemmer and the general vocabulary of appliance instructions.
+
+Nothing here names an appliance, a task or a model: these are the words people use for
+settings on any panel ("lock the keys" for a child lock, "firmer" for a harder texture), so
+that the goal parser can match an instruction against a model's own names and labels.
+"""
+
+from __future__ import annotations
+
+import re
+from difflib import SequenceMatcher
+from functools import lru_cache
+
+_SPELLING = (
+    (re.compile(r"is(e|es|ed|ing|ation)$"), r"iz\1"),
+    (re.compile(r"ys(e|es|ed|ing)$"), r"yz\1"),
+    (re.compile(r"(?<=\w{3})our$"), "or"),  # colour, flavour (not hour, four, pour)
+    (re.compile(r"(?<=\w{3})ours$"), "ors"),
+    (re.compile(r"tre$"), "ter"),
+    (re.compile(r"tres$"), "ters"),
+    (re.compile(r"^programme"), "program"),
+)
+
+
+@lru_cache(maxsize=8192)
+def stem(word: str) -> str:
+    """A crude stem so that "drying", "dried" and "dry", or "sterilising" and "sterilize",
+    compare equal. Both sides of every comparison go through it, so consistency matters more
+    than linguistics.
+
+    >>> stem("drying") == stem("dry") == stem("dried"), stem("baking") == stem("bake")
+    (True, True)
+    """
+    w = word.casefold()
+    if w.endswith("'s"):
+        w = w[:-2]  # the clock's hour
+    for pattern, replacement in _SPELLING:
+        w = pattern.sub(replacement, w)
+    if len(w) <= 3:
+        return w
+    if w.endswith("ly") and len(w) > 5:
+        w = w[:-2]
+    if (w.endswith("ies") and len(w) > 4) or (w.endswith("ied") and len(w) > 4):
+        w = w[:-3] + "y"
+    elif w.endswith("ing") and len(w) > 5:
+        w = w[:-3]
+    elif (w.endswith("ed") and len(w) > 4) or (w.endswith("es") and len(w) > 4 and w[-3] in "sxz"):
+        w = w[:-2]
+    elif w.endswith("s") and not w.endswith("ss") and len(w) > 3:
+        w = w[:-1]
+    if len(w) > 3 and w[-1] == w[-2] and w[-1] not in "aeiouls":
+        w = w[:-1]  # spinning -> spinn -> spin
+    if len(w) > 3 and w.endswith("e"):
+        w = w[:-1]
+    return w
+
+
+def similar(a: str, b: str) -> bool:
+    """Two stems close enough to be one word misspelt or inflected ("steriliser", "sterilize")."""
+    if a == b:
+        return True
+    if min(len(a), len(b)) < 5 or a[0] != b[0]:
+        return False
+    return SequenceMatcher(None, a, b).ratio() >= 0.85
+
+
+# Words that mean the same setting on many panels: each group maps to its first word's stem.
+_GROUPS: tuple[tuple[str, ...], ...] = (
+    ("program", "programme", "prog", "prg", "course", "cycle", "menu", "function", "func", "mode"),
+    ("temperature", "temp", "degree", "degrees", "heat"),
+    ("lock", "child", "childlock", "lockout", "keylock", "keys", "buttons", "controls", "panel"),
+    ("delay", "delayed", "preset", "later", "wait", "countdown"),
+    ("finish", "end", "ready", "done", "finished"),
+    ("timer", "timers"),
+    ("time", "duration", "times"),
+    ("light", "lamp"),
+    ("buzzer", "beep", "beeps", "sound", "signal", "mute", "silence", "quiet", "alarm"),
+    ("dry", "drying", "dryer"),
+    ("sterilize", "steam", "sterilise", "sanitize", "uv"),
+    ("humidity", "rh", "humid", "humidistat"),
+    ("fan", "airflow", "air", "blower"),
+    ("power", "watt", "watts", "wattage", "kw", "kilowatt"),
+    ("level", "setting", "mark"),
+    ("size", "loaf", "portion", "amount", "weight"),
+    ("crust", "colour", "color", "browning"),
+    ("spin", "spinning"),
+    ("rinse", "rinses", "rinsing"),
+    ("water", "litre", "litres", "liter", "liters", "fill"),
+    ("warm", "warming", "keep"),
+    ("clock", "clocks", "day"),
+    ("texture", "firmness"),
+)
+_CANON: dict[str, str] = {}
+for _group in _GROUPS:
+    for _word in _group:
+        _CANON.setdefault(stem(_word), stem(_group[0]))
+
+
+def concept(word: str) -> str:
+    """The group a word belongs to (its own stem if none): "keys" and "lock" are one concept."""
+    s = stem(word)
+    return _CANON.get(s, s)
+
+
+# Words that say a setting is wanted off, or not wanted ("no prewash", "skip the shake").
+NEGATIONS = frozenset(
+    {
+        "no",
+        "not",
+        "without",
+        "skip",
+        "skipping",
+        "don't",
+        "dont",
+        "never",
+        "disable",
+        "disabled",
+        "off",
+        "mute",
+        "silence",
+        "silent",
+        "cancel",
+        "stop",
+        "none",
+        "free",
+        "nor",
+    }
+)
+# Words that carry no meaning for matching a variable by name.
+STOP_WORDS = frozenset(
+    {
+        "the",
+        "a",
+        "an",
+        "of",
+        "and",
+        "to",
+        "for",
+        "in",
+        "on",
+        "off",
+        "at",
+        "by",
+        "with",
+        "it",
+        "set",
+        "press",
+        "button",
+        "pad",
+        "key",
+        "touch",
+        "select",
+        "adjust",
+        "up",
+        "down",
+        "start",
+        "stop",
+        "value",
+        "enter",
+        "entry",
+        "confirm",
+        "toggle",
+        "hold",
+        "plus",
+        "minus",
+        "cancel",
+        "pause",
+        "choose",
+        "go",
+        "feature",
+    }
+)
+# Scales of adjectives: a numeric variable with a few values (a crust 1-3) maps them in order.
+SCALES: tuple[tuple[str, ...], ...] = (
+    ("light", "medium", "dark"),
+    ("low", "medium", "high"),
+    ("small", "medium", "large"),
+)
+# Superlatives: which end of a domain.
+LOWEST = frozenset(
+    {
+        "lowest",
+        "minimum",
+        "min",
+        "least",
+        "shortest",
+        "smallest",
+        "quietest",
+        "lightest",
+        "palest",
+        "coolest",
+        "weakest",
+        "slowest",
+        "gentlest",
+        "softest",
+    }
+)
+HIGHEST = frozenset(
+    {
+        "highest",
+        "maximum",
+        "max",
+        "most",
+        "longest",
+        "biggest",
+        "largest",
+        "hottest",
+        "darkest",
+        "strongest",
+        "fastest",
+        "full",
+        "top",
+        "warmest",
+    }
+)
+# Letters that stand for sizes or levels on a display.
+LETTER_WORDS = {
+    "s": ("small",),
+    "m": ("medium",),
+    "l": ("large", "big"),
+    "xl": ("extra",),
+    "lo": ("low",),
+    "hi": ("high",),
+    "med": ("medium",),
+}
+# Adjectives that mean a value word ("firmer" for harder, "pale" for light).
+SYNONYMS: dict[str, tuple[str, ...]] = {
+    "harder": ("firmer", "firm", "hard"),
+    "softer": ("soft", "soften"),
+    "light": ("pale", "lighter"),
+    "dark": ("darker", "deep"),
+    "low": ("lo", "quiet", "gentle", "quietest", "down"),
+    "high": ("hi", "full", "fast", "strong"),
+    "large": ("big", "bigger", "largest", "biggest"),
+    "small": ("little", "smaller", "smallest"),
+    "continuous": ("nonstop", "non", "continuously"),
+    "cont": ("continuous", "continuously", "nonstop"),
+    "co": ("continuous", "continuously", "nonstop"),
+    "auto": ("automatic",),
+    "sterilize": ("steam", "sterilizing", "sterilization"),
+    "free": ("freely", "flow"),
+    "more": ("extra", "longer", "stronger"),
+    "less": ("shorter", "lighter", "weaker"),
+    "poultry": ("chicken", "turkey", "duck"),
+    "meat": ("beef", "pork", "lamb", "mince", "steak"),
+    "fish": ("salmon", "cod", "seafood", "prawns", "shrimp"),
+    "vegetables": ("veg", "veggies", "vegetable"),
+    "store": ("storage", "stored"),
+    "storage": ("store", "storing"),
+}
+# Counts written as adverbs ("rinse twice").
+TIMES_WORDS = {"once": 1, "twice": 2, "thrice": 3}

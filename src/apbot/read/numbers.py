@@ -1,0 +1,556 @@
+"""Numbers, quantities, durations and clock times in an instruction, read offline.
+
+An instruction writes the same setting many ways ("90 minutes", "an hour and a half",
+"1 hr 30", "1.5 hrs"; "7:30 pm", "half past seven in the evening", "19:30"). This module turns
+the text into tokens and finds every such phrase as a :class:`Mention` with its span, so the
+goal parser can decide which variable each one sets. Nothing here knows about a model.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, replace
+
+from apbot.model.values import unit_of
+
+# --- tokens -----------------------------------------------------------------------------------
+
+_TOKEN = re.compile(
+    r"\d+:\d{2}(?::\d{2})?"  # 7:30, 1:30:00
+    r"|\d+(?:\.\d+)?"  # 12, 1.5
+    r"|°[cf]?"
+    r"|[a-z]+(?:'[a-z]+)?"  # words, don't, o'clock
+    r"|[%+/&,;.()!?:-]"
+)
+
+_REWRITES = (
+    (re.compile(r"\ba\.m\.?(?=\W|$)"), " am "),
+    (re.compile(r"\bp\.m\.?(?=\W|$)"), " pm "),
+    (re.compile(r"\bper\s+cent\b"), " percent "),
+    (re.compile(r"\bo'clock\b"), " oclock "),
+    (re.compile(r"\bnon-(?=[a-z])"), "non"),  # non-stop
+    (re.compile(r"(?<=\d),(?=\d{3}\b)"), ""),  # 1,000 -> 1000
+    (re.compile(r"(?<=\d)(?=[a-z°%])"), " "),  # 12min -> 12 min
+    (re.compile(r"\s[-\u2013\u2014]+\s|\u2014"), " ; "),  # a dash between clauses
+    (re.compile(r"[\u2010-\u2015\u2212]"), "-"),  # typographic dashes and minus
+    (re.compile(r"[\u2018\u2019`]"), "'"),
+    (re.compile(r"º"), "°"),
+    (re.compile(r"½"), " and a half "),
+    (re.compile(r"¼"), " and a quarter "),
+)
+
+
+@dataclass(frozen=True)
+class Token:
+    """One word, number or sign of the instruction, with its place in the token list."""
+
+    text: str
+    index: int
+
+
+def tokenize(text: str) -> list[Token]:
+    """Lower-case tokens of an instruction; units glued to numbers are split off.
+
+    >>> [t.text for t in tokenize("Bake at 350°F for 12min.")]
+    ['bake', 'at', '350', '°f', 'for', '12', 'min', '.']
+    """
+    cleaned = str(text).casefold()
+    for pattern, replacement in _REWRITES:
+        cleaned = pattern.sub(replacement, cleaned)
+    words = _TOKEN.findall(cleaned)
+    return [Token(word, i) for i, word in enumerate(words)]
+
+
+# --- numbers in words --------------------------------------------------------------------------
+
+_UNITS_WORDS = {
+    "zero": 0,
+    "one": 1,
+    "two": 2,
+    "three": 3,
+    "four": 4,
+    "five": 5,
+    "six": 6,
+    "seven": 7,
+    "eight": 8,
+    "nine": 9,
+    "ten": 10,
+    "eleven": 11,
+    "twelve": 12,
+    "thirteen": 13,
+    "fourteen": 14,
+    "fifteen": 15,
+    "sixteen": 16,
+    "seventeen": 17,
+    "eighteen": 18,
+    "nineteen": 19,
+}
+_TENS_WORDS = {
+    "twenty": 20,
+    "thirty": 30,
+    "forty": 40,
+    "fifty": 50,
+    "sixty": 60,
+    "seventy": 70,
+    "eighty": 80,
+    "ninety": 90,
+}
+_ARTICLES = {"a", "an", "one", "single"}
+
+
+@dataclass(frozen=True)
+class Number:
+    """A number read from tokens ``start``..``end`` (exclusive)."""
+
+    value: float
+    start: int
+    end: int
+    words: bool  # written in words (or with an article) rather than digits
+
+
+def _is_digits(text: str) -> bool:
+    return re.fullmatch(r"\d+(?:\.\d+)?", text) is not None
+
+
+def read_number(tokens: list[Token], i: int) -> Number | None:
+    """The longest number starting at token ``i``: digits, words, or both with fractions.
+
+    "two hundred fifty", "twenty-five", "two and a half", "1.5", "a half", "three quarters".
+
+    >>> read_number(tokenize("two hundred twenty-five degrees"), 0).value
+    225.0
+    >>> read_number(tokenize("four and a half hours"), 0).value
+    4.5
+    """
+    n = len(tokens)
+    j = i
+    total = 0.0
+    current = 0.0
+    seen = False
+    words = False
+
+    def word(k: int) -> str:
+        return tokens[k].text if k < n else ""
+
+    if word(j) == "three" and word(j + 1) in ("quarter", "quarters"):
+        return Number(0.75, i, j + 2, True)
+    last = ""  # the kind of the previous number word: unit, tens or hundred
+    if j < n and _is_digits(word(j)):
+        current = float(word(j))
+        j += 1
+        seen = True
+    else:
+        while j < n:
+            w = word(j)
+            if w in _UNITS_WORDS and (
+                last in ("", "hundred") or (last == "tens" and _UNITS_WORDS[w] < 10)
+            ):
+                current += _UNITS_WORDS[w]
+                last = "unit"
+            elif w in _TENS_WORDS and last in ("", "hundred"):
+                current += _TENS_WORDS[w]
+                last = "tens"
+            elif w == "-" and last == "tens" and word(j + 1) in _UNITS_WORDS:
+                j += 1
+                continue
+            elif w == "hundred" and last in ("unit",) and current < 10:
+                current *= 100
+                last = "hundred"
+            elif w == "thousand" and last in ("unit", "tens", "hundred"):
+                total += current * 1000
+                current = 0
+                last = "hundred"
+            elif (
+                w == "and"
+                and last == "hundred"
+                and (word(j + 1) in _UNITS_WORDS or word(j + 1) in _TENS_WORDS)
+            ):
+                j += 1
+                continue
+            else:
+                break
+            seen = True
+            words = True
+            j += 1
+    if not seen:
+        return _fraction_alone(tokens, i)
+    value = total + current
+    # "... and a half", "... and a quarter", "... and three quarters"
+    if word(j) == "and" and word(j + 1) in ("a", "an") and word(j + 2) in ("half", "quarter"):
+        value += 0.5 if word(j + 2) == "half" else 0.25
+        j += 3
+        words = True
+    elif word(j) == "and" and word(j + 1) == "three" and word(j + 2) in ("quarter", "quarters"):
+        value += 0.75
+        j += 3
+        words = True
+    elif [word(j + d) for d in range(4)] in (["-", "and", "a", "half"], ["-", "and", "an", "half"]):
+        value += 0.5  # "two-and-a-half"
+        j += 4
+    return Number(value, i, j, words)
+
+
+def _fraction_alone(tokens: list[Token], i: int) -> Number | None:
+    """ "half", "a half", "a quarter", "three quarters", "a", "an" (one of a unit)."""
+    n = len(tokens)
+
+    def word(k: int) -> str:
+        return tokens[k].text if k < n else ""
+
+    j = i
+    if word(j) in ("three",) and word(j + 1) in ("quarter", "quarters"):
+        return Number(0.75, i, j + 2, True)
+    if word(j) in ("a", "an", "one") and word(j + 1) in ("half", "quarter"):
+        return Number(0.5 if word(j + 1) == "half" else 0.25, i, j + 2, True)
+    if word(j) in ("half", "quarter"):
+        return Number(0.5 if word(j) == "half" else 0.25, i, j + 1, True)
+    if word(j) in ("a", "an") and word(j + 1) == "single":
+        return Number(1.0, i, j + 2, True)
+    if word(j) in ("a", "an", "single"):
+        return Number(1.0, i, j + 1, True)
+    if word(j) in ("twice", "thrice"):
+        return Number(2.0 if word(j) == "twice" else 3.0, i, j + 1, True)
+    if word(j) == "couple":
+        return Number(2.0, i, j + 1, True)
+    return None
+
+
+# --- mentions ----------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Mention:
+    """A quantity in the text.
+
+    ``kind``: ``duration`` (``value`` in seconds), ``clock`` (seconds after midnight; ``meridiem``
+    says whether am/pm or a day part fixed the half of the day), ``quantity`` (``value`` in the
+    base unit of ``dimension``), ``fahrenheit`` (degrees F), or ``number`` (no unit).
+    """
+
+    kind: str
+    value: float
+    start: int
+    end: int
+    dimension: str | None = None
+    meridiem: bool = False
+    words: bool = False
+    unit: str = ""
+    colon: bool = False  # written with a colon ("1:30"): a duration after "for"
+    lead: str = ""  # the word just before
+
+
+_TIME_UNITS = {
+    "s": 1,
+    "sec": 1,
+    "secs": 1,
+    "second": 1,
+    "seconds": 1,
+    "min": 60,
+    "mins": 60,
+    "minute": 60,
+    "minutes": 60,
+    "m": 60,
+    "h": 3600,
+    "hr": 3600,
+    "hrs": 3600,
+    "hour": 3600,
+    "hours": 3600,
+    "day": 86400,
+    "days": 86400,
+}
+_DAY_PARTS_PM = ("afternoon", "evening", "tonight", "night")
+_DAY_PARTS_AM = ("morning",)
+_CLOCK_WORDS = ("am", "pm", "oclock")
+_NOT_UNITS = {"a", "an", "m", "s", "c", "f", "l", "g", "h", "w"}  # only after a number
+
+
+def _word(tokens: list[Token], k: int) -> str:
+    return tokens[k].text if 0 <= k < len(tokens) else ""
+
+
+def find_mentions(tokens: list[Token], skip: set[int] | None = None) -> list[Mention]:
+    """Every duration, clock time, quantity and bare number in the tokens, left to right.
+
+    ``skip`` holds token indices already explained (a value name such as "quick 20").
+
+    >>> [(m.kind, m.value) for m in find_mentions(tokenize("ready by 7:30 pm, 1 hr 20"))]
+    [('clock', 70200), ('duration', 4800.0)]
+    """
+    skip = skip or set()
+    mentions: list[Mention] = []
+    i = 0
+    n = len(tokens)
+    while i < n:
+        if i in skip:
+            i += 1
+            continue
+        found = _clock_at(tokens, i) or _duration_at(tokens, i) or _quantity_at(tokens, i)
+        if found is not None and not any(k in skip for k in range(found.start, found.end)):
+            mentions.append(replace(found, lead=_word(tokens, i - 1)))
+            i = found.end
+            continue
+        i += 1
+    return mentions
+
+
+def _clock_at(tokens: list[Token], i: int) -> Mention | None:
+    """ "7:30", "7:30 pm", "9 pm", "8 o'clock", "half past six", "a quarter to eight"."""
+    w = _word(tokens, i)
+    hour: int | None = None
+    minute = 0
+    end = i
+    if w in ("midnight", "noon", "midday"):
+        return Mention("clock", 0 if w == "midnight" else 12 * 3600, i, i + 1, meridiem=True)
+    dotted = (
+        re.fullmatch(r"\d{1,2}\.\d{2}", w) is not None
+        and _word(tokens, i - 1) in ("at", "by", "until", "till")
+        and (_word(tokens, i + 1) in ("am", "pm", "") or _unit_at(tokens, i + 1) is None)
+        and _time_unit(tokens, i + 1) is None
+    )  # "ready by 7.30" (a British clock time, not seven point three)
+    if re.fullmatch(r"\d{1,2}:\d{2}", w) or dotted:
+        hour, minute = (int(x) for x in w.replace(".", ":").split(":"))
+        end = i + 1
+        if minute >= 60 or hour > 24:
+            return None
+    elif w in ("half", "quarter") or (w in ("a",) and _word(tokens, i + 1) == "quarter"):
+        k = i + (1 if w != "a" else 2)
+        past = _word(tokens, k)
+        if past not in ("past", "to"):
+            return None
+        number = read_number(tokens, k + 1)
+        if number is None or number.value != int(number.value) or not 1 <= number.value <= 12:
+            return None
+        quarter = 15 if (w == "quarter" or w == "a") else 30
+        hour = int(number.value)
+        if past == "past":
+            minute = quarter
+        else:
+            hour, minute = (hour - 1) % 24, 60 - quarter
+        end = number.end
+    else:
+        number = read_number(tokens, i)
+        if number is None or number.value != int(number.value) or not 0 <= number.value <= 24:
+            return None
+        if number.words and _word(tokens, i) in ("a", "an", "single", "half", "quarter"):
+            return None
+        following = _word(tokens, number.end)
+        if following not in _CLOCK_WORDS:
+            # "7 in the evening": a bare hour followed by a day part
+            if following == "in" and _word(tokens, number.end + 1) == "the":
+                part = _word(tokens, number.end + 2)
+                if part in _DAY_PARTS_PM + _DAY_PARTS_AM and number.value <= 12:
+                    hour = int(number.value)
+                    if part in _DAY_PARTS_PM and hour < 12:
+                        hour += 12
+                    return Mention("clock", hour * 3600, i, number.end + 3, meridiem=True)
+            return None
+        hour = int(number.value)
+        end = number.end
+        # "nine o'clock" also covered; minute stays 0
+    assert hour is not None
+    meridiem = False
+    nxt = _word(tokens, end)
+    if nxt == "oclock":
+        end += 1
+        nxt = _word(tokens, end)
+    if nxt in ("am", "pm"):
+        meridiem = True
+        if hour > 12:
+            return None
+        if nxt == "pm" and hour < 12:
+            hour += 12
+        if nxt == "am" and hour == 12:
+            hour = 0
+        end += 1
+    else:
+        half = _day_part(tokens, end)
+        if half is not None:
+            meridiem = True
+            if half == "pm" and hour < 12:
+                hour += 12
+    if hour > 24:
+        return None
+    colon = ":" in _word(tokens, i) or "." in _word(tokens, i)
+    return Mention("clock", hour * 3600 + minute * 60, i, end, meridiem=meridiem, colon=colon)
+
+
+def _day_part(tokens: list[Token], k: int) -> str | None:
+    """ "in the evening", "this afternoon", "tomorrow morning", "tonight" just after a time."""
+    words = [_word(tokens, k + d) for d in range(3)]
+    for size in (1, 2, 3):
+        tail = words[size - 1]
+        lead = words[: size - 1]
+        if all(x in ("in", "the", "this", "tomorrow", "tonight", "at") for x in lead):
+            if tail in _DAY_PARTS_PM:
+                return "pm"
+            if tail in _DAY_PARTS_AM:
+                return "am"
+    if words[0] == "tonight":
+        return "pm"
+    return None
+
+
+def _time_unit(tokens: list[Token], k: int) -> tuple[int, int] | None:
+    """(seconds per unit, tokens used) at k: "minutes", "hrs", "min.", "-minute"."""
+    w = _word(tokens, k)
+    used = 0
+    if w == "-":
+        used = 1
+        w = _word(tokens, k + 1)
+    if w in _TIME_UNITS:
+        return _TIME_UNITS[w], used + 1
+    return None
+
+
+def _duration_at(tokens: list[Token], i: int) -> Mention | None:
+    """A sum of number+time-unit parts: "2 hrs 30 mins", "an hour and a half", "1 hr 20",
+    "a quarter of an hour", "half an hour", "three quarters of an hour", "a full hour"."""
+    total = 0.0
+    j = i
+    parts = 0
+    words = False
+    last_unit = 0
+    while True:
+        k = j
+        if parts and _word(tokens, k) == "and":
+            k += 1
+        number = read_number(tokens, k)
+        value: float | None = None
+        if number is not None:
+            value = number.value
+            k2 = number.end
+            words = words or number.words
+            # "a quarter of an hour", "half an hour", "three quarters of an hour"
+            if number.value < 1 and _word(tokens, k2) in ("of", "an", "a"):
+                k3 = k2 + (1 if _word(tokens, k2) == "of" else 0)
+                if _word(tokens, k3) in ("an", "a"):
+                    k3 += 1
+                unit = _time_unit(tokens, k3)
+                if unit is not None:
+                    total += value * unit[0]
+                    j = k3 + unit[1]
+                    parts += 1
+                    last_unit = unit[0]
+                    continue
+            if _word(tokens, k2) in ("full", "whole", "entire") and number.value == 1:
+                k2 += 1
+            unit = _time_unit(tokens, k2)
+            if unit is not None and parts and unit[0] >= last_unit:
+                break  # "a day, 24 hours" is said twice, not added up
+            if unit is not None:
+                total += value * unit[0]
+                j = k2 + unit[1]
+                parts += 1
+                last_unit = unit[0]
+                # "an hour and a half"
+                if _word(tokens, j) == "and" and _word(tokens, j + 1) in ("a", "an"):
+                    if _word(tokens, j + 2) == "half":
+                        total += 0.5 * unit[0]
+                        j += 3
+                    elif _word(tokens, j + 2) == "quarter":
+                        total += 0.25 * unit[0]
+                        j += 3
+                continue
+            # "1 hr 20": a bare number after hours is minutes, after minutes seconds
+            if parts and last_unit in (3600, 60) and not number.words and value < 60:
+                following = _word(tokens, k2)
+                if following not in _UNIT_LIKE:
+                    total += value * (last_unit // 60)
+                    j = k2
+                    parts += 1
+                    last_unit = last_unit // 60
+            break
+        break
+    if not parts:
+        return None
+    return Mention("duration", total, i, j, dimension="time", words=words)
+
+
+_UNIT_LIKE = {"%", "°", "°c", "°f", "degrees", "degree", "percent", "rpm", "w", "watts"}
+
+
+def _quantity_at(tokens: list[Token], i: int) -> Mention | None:
+    """A number with an optional non-time unit: "350 °F", "1.5 kW", "fifty percent", "2 lb"."""
+    number = read_number(tokens, i)
+    if number is None:
+        return None
+    if number.words and _word(tokens, i) in ("a", "an") and number.end == i + 1:
+        # "a" / "an" alone is a number only before a unit ("a kilo")
+        unit = _unit_at(tokens, number.end)
+        if unit is None:
+            return None
+    j = number.end
+    unit = _unit_at(tokens, j)
+    if unit is None:
+        counted = _word(tokens, j) if _word(tokens, j) in COUNT_NOUNS else ""
+        return Mention("number", number.value, i, j, words=number.words, unit=counted)
+    name, used = unit
+    end = j + used
+    if name in ("degrees", "degree", "°", "deg"):
+        # "degrees Fahrenheit", "degrees C"
+        follow = _word(tokens, end)
+        if follow in ("fahrenheit", "f"):
+            return Mention("fahrenheit", number.value, i, end + 1, "fahrenheit", words=number.words)
+        said = "degrees"
+        if follow in ("celsius", "c", "centigrade"):
+            end += 1
+            said = "°c"  # said in Celsius: a Fahrenheit dial converts it
+        return Mention(
+            "quantity", number.value, i, end, "temperature", words=number.words, unit=said
+        )
+    info = unit_of(name)
+    assert info is not None
+    if info[0] == "fahrenheit":
+        return Mention("fahrenheit", number.value, i, end, "fahrenheit", words=number.words)
+    return Mention(
+        "quantity", number.value * info[1], i, end, info[0], words=number.words, unit=name
+    )
+
+
+COUNT_NOUNS = frozenset(
+    {
+        "slice",
+        "slices",
+        "piece",
+        "pieces",
+        "cup",
+        "cups",
+        "serving",
+        "servings",
+        "portion",
+        "portions",
+        "people",
+        "persons",
+        "bottles",
+        "bags",
+        "loaves",
+        "eggs",
+        "potatoes",
+        "shirts",
+        "items",
+        "pizzas",
+        "mugs",
+    }
+)
+"""Nouns a count stands before ("two slices"): the number counts them, it is no setting's
+value unless the setting is named by that noun."""
+
+
+def _unit_at(tokens: list[Token], j: int) -> tuple[str, int] | None:
+    """A unit name at token ``j`` (possibly after a hyphen: "750-gram", "one-kilo")."""
+    used = 0
+    w = _word(tokens, j)
+    if w == "-":
+        used = 1
+        w = _word(tokens, j + 1)
+    if w in ("°", "degrees", "degree", "deg"):
+        return w, used + 1
+    if w in _TIME_UNITS:
+        return None
+    if w in ("level", "levels", "lvl", "cup", "cups", "slice", "slices", "piece", "pieces"):
+        return None  # counts are read as bare numbers
+    if w in ("serving", "servings"):
+        return None
+    if unit_of(w) is not None:
+        return w, used + 1
+    return None
