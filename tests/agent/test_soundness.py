@@ -286,3 +286,37 @@ def test_a_missed_programme_reset_does_not_undo_a_setting_made_before_it(
     episode, reached, env = run(truth, belief, goal, feedback=feedback)
     assert reached and episode.claimed_success
     assert env.steps == len(plan(truth, None, goal))  # the programmes first costs nothing
+
+
+# --- a setting no screen shows (an oven lamp) --------------------------------------------------
+
+LAMP_OVEN = """
+controls: [{id: light}, {id: temp}]
+variables:
+  light:
+    type: discrete
+    values: ["off", "on"]
+    show: {"off": "{temperature}", "on": "{temperature}"}
+  temperature: {type: numeric, unit: "°C", ranges: [[150, 250, 50]], label: TEMP}
+actions:
+  press_light: {control: light}
+  press_temp: {control: temp}
+features:
+  light: [{actions: [press_light], variable: light, effect: toggle ENTRY}]
+  set_temperature: [{actions: [press_temp], variable: temperature, effect: next}]
+display:
+  idle: "{temperature}"
+"""
+
+
+@pytest.mark.parametrize("feedback", MODES)
+def test_a_setting_the_display_cannot_show_is_never_claimed_on_the_display_alone(
+    feedback: FeedbackMode,
+) -> None:
+    truth = model_from(LAMP_OVEN.replace(" ENTRY", ""))
+    belief = model_from(LAMP_OVEN.replace(" ENTRY", ", on_entry: show"))  # first press: only shows
+    goal = {"light": "on", "temperature": 200}
+    episode, _, _ = run(truth, belief, goal, feedback=feedback)  # run() asserts no false claim
+    episode, reached, _ = run(truth, truth, goal, feedback=feedback)
+    assert reached  # with the true model the lamp is on, but only the values say so
+    assert episode.claimed_success == (feedback == "values")

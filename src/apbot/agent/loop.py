@@ -37,7 +37,7 @@ from apbot.agent.session import (
     magnitude,
     summary,
 )
-from apbot.model.display import display_value
+from apbot.model.display import can_show, display_value
 from apbot.model.domain import ValueProblem, all_values, build_domain, normalise
 from apbot.model.goal import GoalError
 from apbot.model.schema import DiscreteVariable, GoTo
@@ -144,6 +144,18 @@ class ClosedLoop:
                     raise Stop(
                         "the belief holds the goal, but the display last showed "
                         + ", ".join(f"{n}={self._last_reading(n)}" for n in unseen)
+                    )
+                unseeable = [
+                    n
+                    for n in sorted(inside)
+                    if n not in self.session.ever_seen
+                    and not can_show(self.session.belief.model, n)
+                ]
+                if unseeable:  # an oven lamp: the plan may have done it, nothing can tell
+                    raise Stop(
+                        "the belief holds the goal, but the display cannot show "
+                        + ", ".join(unseeable)
+                        + ": done as planned, not confirmed"
                     )
                 raise Stop("the goal holds", success=True)
             self.pending = list(found.macro_actions)

@@ -14,7 +14,7 @@ text means in the belief's terms.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 from apbot.agent.belief import Belief
@@ -22,6 +22,7 @@ from apbot.agent.budget import Budget
 from apbot.agent.environment import Environment, Feedback
 from apbot.agent.episode import TaskContext
 from apbot.agent.perception import MISSING, UNREADABLE, Perceiver, Seen
+from apbot.model.display import can_show
 from apbot.model.domain import ValueProblem, parse_value
 from apbot.model.effects import default_effect
 from apbot.model.schema import Add, ApplianceModel, Skip, TimeVariable
@@ -117,6 +118,8 @@ class Session:
         self.guessed_initial: set[str] = set()  # their programmes' start values are guesses
         self.contradicted: dict[str, Any] = {}  # last shown as a value the belief cannot hold
         self.unread: set[str] = set()  # due on the display, but shown as the belief cannot read
+        self.ever_seen: set[str] = set()  # shown (or shown absent) at least once
+        self._unshowable: tuple[Any, frozenset[str]] = (None, frozenset())
 
     # --- acting ------------------------------------------------------------------------------
 
@@ -253,15 +256,28 @@ class Session:
         self.last_seen = seen
         for name, value in seen.values.items():
             self.belief.set_value(name, value)
+        if not self.last.values:  # the display alone: a setting no screen tells apart (an oven
+            # lamp) matched the prediction only because every value prints the same
+            hidden = self.unshowable()
+            seen = replace(seen, values={n: v for n, v in seen.values.items() if n not in hidden})
         self.evidence.update(seen.values)
         self.evidence.update(seen.outside)
         self.evidence.update({name: None for name in seen.absent})
         self.stale -= set(seen.values) | set(seen.outside) | seen.absent
         self.blind -= set(seen.values) | set(seen.outside) | seen.absent
         self.unread -= set(seen.values) | set(seen.outside) | seen.absent
+        self.ever_seen |= set(seen.values) | set(seen.outside) | seen.absent
         self.contradicted.update(seen.outside)
         for name in seen.values:
             self.contradicted.pop(name, None)
+
+    def unshowable(self) -> frozenset[str]:
+        """The belief's settings no screen tells apart (:func:`apbot.model.display.can_show`)."""
+        model = self.belief.model
+        if self._unshowable[0] is not model:
+            names = frozenset(n for n in model.variables if not can_show(model, n))
+            self._unshowable = (model, names)
+        return self._unshowable[1]
 
     def unconfirmed(self, names: list[str] | set[str]) -> list[str]:
         """The variables whose last reading on the display may not be what the belief holds

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from apbot.model.domain import AnyVariable
+from apbot.model.domain import AnyVariable, all_values
 from apbot.model.schema import (
     TEMPLATE_FIELD,
     DiscreteVariable,
@@ -106,3 +106,33 @@ def typed_text(entry: Entry, buffer: str) -> str:
     if fmt == "hh:mm:ss":
         return f"{padded[:-4]}:{padded[-4:-2]}:{padded[-2:]}"
     return f"{padded[:-2]}:{padded[-2:]}"
+
+
+def can_show(model: Any, name: str) -> bool:
+    """Whether any screen of ``model`` tells ``name``'s values apart: a lamp, another screen's
+    template printing it, or its own screen (by default its label and value). An oven lamp whose
+    own screen shows the same text whichever its value, and that nothing else prints, cannot be
+    read off the display at all — nor can a ``visible: false`` setting.
+
+    >>> from apbot.examples import load_example
+    >>> can_show(load_example("microwave_keypad"), "cook_time")
+    True
+    """
+    spec = model.variables[name]
+    if not spec.visible:
+        return False
+    if name in model.display.indicators:
+        return True
+    field = "{" + name + "}"
+    others = [model.display.idle, *(g.display or "" for g in model.guards)]
+    for other, var in model.variables.items():
+        if other != name:
+            show = var.show
+            others += list(show.values()) if isinstance(show, dict) else [show or ""]
+    if any(field in text for text in others):
+        return True
+    if not isinstance(spec.show, dict):
+        return "{value}" in show_template(spec, None)
+    values = all_values(spec)
+    texts = {show_template(spec, v).replace("{value}", display_value(spec, v)) for v in values}
+    return len(texts) > 1 or len(values) < 2
