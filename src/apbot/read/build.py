@@ -1,0 +1,349 @@
+"""Assemble an appliance model from what the manual says about each control.
+
+Each action is given a *role* from its name and the sentences that mention its control: power,
+start, stop, lock, a stepping pair (▲/▼, +/−), a digit, a dial, or a setting key. A setting key's
+sentences decide what it sets: a value list it cycles, an on/off toggle, a range it steps or that
+the stepping pair / keypad enters after it. Keys the manual only lists together (programme pads)
+become one variable with a go-to value each. Where the manual is silent the reader picks the
+guess the closed loop repairs most cheaply — a cyclic ``next`` over a small domain — and says so.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from typing import Any
+
+from apbot.read.actions import ActionInfo
+from apbot.read.labels import Label, words
+from apbot.read.report import Note
+from apbot.read.text import Manual, Unit
+from apbot.read.values import (
+    EACH_PRESS_RE,
+    ON_OFF_RE,
+    Range,
+    find_initial,
+    find_list,
+    find_ranges,
+    find_step,
+    is_time_unit,
+    number,
+    seconds,
+)
+
+UP_WORDS = {"up", "plus", "more", "increase", "inc", "higher", "add"}
+DOWN_WORDS = {"down", "minus", "less", "decrease", "dec", "lower"}
+POWER_TOKENS = {"power", "on_off", "onoff", "on", "power_on_off", "standby"}
+STOP_WORDS = {"stop", "cancel", "clear", "reset", "off", "end"}
+GENERIC_DIALS = {"dial", "knob", "select", "selector", "jog", "wheel", "control"}
+SETTING_NOUNS = (
+    "temperature", "humidity", "timer", "time", "delay", "level", "power", "speed", "volume",
+    "weight", "programme", "program", "mode", "setting", "heat", "strength", "size",
+)  # fmt: skip
+GROUP_NOUNS = ("programme", "program", "menu", "mode", "function", "cycle", "course", "preset")
+RUNNING_RE = re.compile(
+    r"\b(?:while|during|when)\b[^.]*\b(?:running|cooking|operat\w*|works?|working|heating|"
+    r"washing|in progress|runs)\b[^.]*\b(?:only|ignored|not respond|do not work|disabled|no effect"
+    r"|locked|inactive)\b|\bonly\b[^.]*\bwork\w*\b[^.]*\bwhile\b",
+    re.IGNORECASE,
+)
+
+
+@dataclass
+class Evidence:
+    values: list[str] | None = None
+    values_at: int | None = None
+    ranges: list[Range] = field(default_factory=list)
+    range_at: int | None = None
+    step: tuple[float, str] | None = None
+    step_at: int | None = None
+    toggle_at: int | None = None
+    each_press_at: int | None = None
+    initial: Any = None
+    initial_at: int | None = None
+
+
+class Builder:
+    """Collects variables, features, guards and notes; ``data()`` gives the model as plain data."""
+
+    def __init__(self, manual: Manual, infos: list[ActionInfo], labels: dict[str, Label]):
+        self.manual = manual
+        self.infos = infos
+        self.labels = labels
+        self.variables: dict[str, dict[str, Any]] = {}
+        self.features: dict[str, list[dict[str, Any]]] = {}
+        self.guards: list[dict[str, Any]] = []
+        self.notes: list[Note] = []
+        self.indicators: list[str] = []
+
+    # --- notes ------------------------------------------------------------------------------
+
+    def note(self, subject: str, what: str, unit: int | None = None) -> None:
+        if unit is None:
+            self.notes.append(Note(subject, what, guess=True))
+        else:
+            line = self.manual.units[unit].line
+            self.notes.append(Note(subject, what, line, self.manual.quote(line)))
+
+    # --- evidence ---------------------------------------------------------------------------
+
+    def context(self, tokens: list[str]) -> list[int]:
+        """Units mentioning the controls, each followed by the next two of its section (and a
+        table the sentence points to)."""
+        seen: list[int] = []
+        units = self.manual.units
+        for token in tokens:
+            for i in self.labels[token].mentions:
+                for j in range(i, min(i + 3, len(units))):
+                    if j > i and (
+                        units[j].heading != units[i].heading or units[j].text == units[j].heading
+                    ):
+                        break
+                    if j not in seen:
+                        seen.append(j)
+                    if re.search(r"\btable\b", units[j].text, re.I):
+                        k = j + 1
+                        while k < len(units) and not units[k].cells and k < j + 3:
+                            k += 1
+                        while k < len(units) and units[k].cells:
+                            if k not in seen:
+                                seen.append(k)
+                            k += 1
+        return seen
+
+    def evidence(self, tokens: list[str]) -> Evidence:
+        ev = Evidence()
+        units = self.manual.units
+        for i in self.context(tokens):
+            text = units[i].text
+            if ev.values is None:
+                found = find_list(text)
+                if found and not _numeric_items(found[0]):
+                    ev.values, ev.values_at = [v.lower() for v in found[0]], i
+                elif found and len(found[0]) >= 3:
+                    ev.values, ev.values_at = found[0], i
+                elif text.rstrip().endswith(":") or text.rstrip().endswith("order"):
+                    bullets = _bullet_items(units, i)
+                    if bullets:
+                        ev.values, ev.values_at = [b.lower() for b in bullets], i
+            if not ev.ranges:
+                ranges = find_ranges(text)
+                if ranges:
+                    ev.ranges, ev.range_at = ranges, i
+            if ev.step is None:
+                step = find_step(text)
+                if step:
+                    ev.step, ev.step_at = step, i
+            if ev.toggle_at is None and ON_OFF_RE.search(text):
+                ev.toggle_at = i
+            if ev.each_press_at is None and EACH_PRESS_RE.search(text):
+                ev.each_press_at = i
+            if ev.initial is None:
+                init = find_initial(text)
+                if init:
+                    ev.initial, ev.initial_at = init, i
+                elif ev.values:
+                    m = re.search(r"\b(?:starts?|default|factory|initially)\b(.*)", text, re.I)
+                    if m:
+                        for v in ev.values:
+                            if re.search(rf"\b{re.escape(v)}\b", m.group(1), re.I):
+                                ev.initial, ev.initial_at = v, i
+                                break
+        if ev.values and ev.ranges and _numeric_items(ev.values):
+            ev.values = None  # "between 35 % and 85 %" is a range, not a two-item list
+        return ev
+
+    # --- variables --------------------------------------------------------------------------
+
+    def unique(self, name: str, taken: dict[str, Any]) -> str:
+        base = re.sub(r"[^a-z0-9_]+", "_", name.lower()).strip("_") or "setting"
+        if not base[0].isalpha():
+            base = "v_" + base
+        out, k = base, 2
+        while out in taken:
+            out, k = f"{base}_{k}", k + 1
+        return out
+
+    def add_discrete(self, name: str, values: list[str], label: str, ev: Evidence | None) -> str:
+        name = self.unique(name, self.variables)
+        values = _dedupe([_value_text(v) for v in values if _value_text(v)])
+        spec: dict[str, Any] = {"type": "discrete", "values": values, "label": label}
+        if ev is not None and ev.initial in values:
+            spec["initial"] = ev.initial
+            self.note(f"variables.{name}.initial", f"starts at {ev.initial}", ev.initial_at)
+        self.variables[name] = spec
+        return name
+
+    def add_toggle(self, name: str, label: str, at: int | None, first: str = "off") -> str:
+        name = self.unique(name, self.variables)
+        self.variables[name] = {
+            "type": "discrete",
+            "values": ["off", "on"] if first == "off" else ["on", "off"],
+            "label": label,
+        }
+        self.note(f"variables.{name}", "an on/off setting", at)
+        if at is not None or first == "off":
+            self.indicators.append(name)
+        return name
+
+    def add_number(self, name: str, label: str, ev: Evidence, cyclic: bool) -> str:
+        """A numeric or time variable from the ranges and step read (guessed where absent)."""
+        name = self.unique(name, self.variables)
+        subject = f"variables.{name}"
+        rng = ev.ranges[0] if ev.ranges else None
+        if rng is None:
+            unit = ev.step[1] if ev.step else _unit_from_words(name)
+            low, high = (
+                (0.0, 10.0) if unit in ("", "h") else (1.0, 60.0) if unit == "min" else (0.0, 100.0)
+            )
+            if unit == "°C":
+                low, high = 30.0, 100.0
+            self.note(subject, f"range {low:g}–{high:g} {unit} (the manual gives none)")
+            rng = Range(low, high, unit)
+        else:
+            self.note(subject, f"range {rng.low:g}–{rng.high:g} {rng.unit}", ev.range_at)
+        unit = rng.unit or (ev.step[1] if ev.step else "") or _unit_from_words(name)
+        step = ev.step[0] if ev.step and ev.step[1] in ("", unit) else None
+        if (
+            ev.step
+            and ev.step[1]
+            and ev.step[1] != unit
+            and is_time_unit(ev.step[1])
+            and (is_time_unit(unit) or rng.unit == "s")
+        ):
+            step = seconds(ev.step[0], ev.step[1]) / (1 if rng.unit == "s" else seconds(1, unit))
+        if step:
+            self.note(subject + ".step", f"step {step:g}", ev.step_at)
+        else:
+            step = _guess_step(rng.high - rng.low, unit)
+            self.note(subject + ".step", f"step {step:g} {unit} (the manual gives none)")
+        as_time = rng.unit == "s" or unit in ("s", "min")
+        if as_time:
+            factor = 1 if rng.unit == "s" else seconds(1, unit)
+            lo, hi = int(rng.low * factor), int(rng.high * factor)
+            st = max(1, int(round(step * (1 if rng.unit == "s" else factor)))) if step else 60
+            if (hi - lo) // st > 5000:
+                st = max(st, (hi - lo) // 5000)
+            hi = lo + (hi - lo) // st * st
+            if hi <= lo:
+                hi = lo + st
+            spec: dict[str, Any] = {
+                "type": "time",
+                "ranges": [[_hms(lo), _hms(hi), st]],
+                "format": "h:mm" if hi >= 3600 and st >= 60 else "mm:ss",
+                "label": label,
+            }
+        else:
+            lo_n, hi_n = _tidy(rng.low), _tidy(rng.high)
+            count = int((hi_n - lo_n) / step + 1e-9)
+            if count > 5000:
+                step = (hi_n - lo_n) / 5000
+                count = 5000
+            hi_n = _tidy(lo_n + count * step)
+            if hi_n <= lo_n:
+                hi_n = _tidy(lo_n + step)
+            spec = {
+                "type": "numeric",
+                "ranges": [[lo_n, hi_n, _tidy(step)]],
+                "unit": unit,
+                "label": label,
+            }
+            if ev.initial and isinstance(ev.initial, tuple) and lo_n <= ev.initial[0] <= hi_n:
+                off = (ev.initial[0] - lo_n) / step
+                if abs(off - round(off)) < 1e-9:
+                    spec["initial"] = _tidy(ev.initial[0])
+                    self.note(subject + ".initial", f"starts at {ev.initial[0]:g}", ev.initial_at)
+        if cyclic:
+            spec["wrap"] = True
+            self.note(subject + ".wrap", "stepping past the end wraps around (each press adds)")
+        self.variables[name] = spec
+        return name
+
+    # --- the whole model --------------------------------------------------------------------
+
+    def feature(self, name: str, steps: list[dict[str, Any]]) -> None:
+        self.features[self.unique(name, self.features)] = steps
+
+
+def _numeric_items(items: list[str]) -> bool:
+    return (
+        all(
+            number(re.sub(r"[^\d.,a-z ]", "", i.lower()).split()[0] if i.split() else i) is not None
+            for i in items
+        )
+        if items
+        else False
+    )
+
+
+def _bullet_items(units: list[Unit], i: int) -> list[str]:
+    items: list[str] = []
+    for u in units[i + 1 : i + 12]:
+        if not u.bullet:
+            break
+        m = re.match(r"^([A-Z0-9][A-Za-z0-9 +/&'-]{0,22}?)\s*(?::|—|–|-|=)\s", u.text)
+        if not m:
+            break
+        items.append(m.group(1).strip())
+    return items if len(items) >= 2 else []
+
+
+def _dedupe(items: list[str]) -> list[str]:
+    out: list[str] = []
+    for item in items:
+        if item not in out:
+            out.append(item)
+    return out
+
+
+def _value_text(value: str) -> str:
+    text = re.sub(r"\s+", " ", value.strip().lower())
+    return text.strip(" .,;:")
+
+
+def _unit_from_words(name: str) -> str:
+    ws = set(words(name.replace("_", " ")))
+    if ws & {"temp", "temperature", "heat"}:
+        return "°C"
+    if ws & {"humidity", "percent"}:
+        return "%"
+    if ws & {"time", "timer", "delay", "duration", "cook"}:
+        return "min"
+    return ""
+
+
+def _guess_step(span: float, unit: str) -> float:
+    if unit == "%":
+        return 5
+    if unit in ("°C", "°F"):
+        return 5 if span > 40 else 1
+    if unit in ("min", "s", "h"):
+        return 1
+    for step in (1, 5, 10, 50, 100, 500, 1000):
+        if span / step <= 40:
+            return step
+    return max(1.0, span / 40)
+
+
+def _tidy(x: float) -> float | int:
+    return int(x) if float(x).is_integer() else round(float(x), 4)
+
+
+def _hms(total: int) -> str:
+    return f"{total // 3600:02d}:{total % 3600 // 60:02d}:{total % 60:02d}"
+
+
+def adjuster_direction(info: ActionInfo) -> tuple[str, str] | None:
+    """(base, "up"|"down") for a stepping key: ``temp_up`` → (temp, up), ``minus`` → ("", down)."""
+    if info.skill != "press" or info.digit is not None:
+        return None
+    parts = info.token.split("_")
+    for i, part in enumerate(parts):
+        core = re.sub(r"\d+$", "", part)
+        suffix = part[len(core) :]
+        if core in UP_WORDS or core in DOWN_WORDS:
+            base = "_".join(parts[:i] + parts[i + 1 :]) + suffix
+            if core == "add" and (base or not suffix):
+                continue  # add30, add_in: not a stepping key
+            return base, "up" if core in UP_WORDS else "down"
+    return None

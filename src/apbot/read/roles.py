@@ -1,0 +1,530 @@
+"""Give every action a role and build the model's variables, features and guards from them.
+
+The order matters: the name-evident roles first (power, start, stop, lock, digits, stepping
+pairs, dials), then setting keys by what their sentences say, then the keys the manual only
+lists together, then whatever is left, as a guess.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+from apbot.read.actions import ActionInfo
+from apbot.read.build import (
+    GENERIC_DIALS,
+    GROUP_NOUNS,
+    RUNNING_RE,
+    SETTING_NOUNS,
+    STOP_WORDS,
+    Builder,
+    Evidence,
+    adjuster_direction,
+)
+from apbot.read.labels import words
+
+
+def assign(b: Builder) -> None:
+    infos = b.infos
+    by_token: dict[str, list[ActionInfo]] = {}
+    for info in infos:
+        by_token.setdefault(info.token, []).append(info)
+    done: set[str] = set()
+    power_actions: list[str] = []
+    lock_actions: list[str] = []
+    run_actions: list[str] = []
+
+    def label(token: str) -> str:
+        return b.labels[token].text if token in b.labels else token.upper()
+
+    def first_mention(tokens: list[str]) -> int | None:
+        for t in tokens:
+            if t in b.labels and b.labels[t].mentions:
+                return b.labels[t].mentions[0]
+        return None
+
+    # power -------------------------------------------------------------------------------
+    tokens = {i.token for i in infos if i.skill == "press" and i.digit is None}
+    power_token = next(
+        (t for t in ("on_off", "onoff", "power_on_off", "standby") if t in tokens), None
+    )
+    if power_token is None and "power" in tokens:
+        ctx = " ".join(b.manual.units[i].text for i in b.context(["power"]))
+        if not re.search(r"\b(?:level|watt|output)\b", ctx, re.I) or re.search(
+            r"\b(?:switch|turn)\w*\b[^.]*\b(?:on|off)\b", ctx, re.I
+        ):
+            power_token = "power"
+    if power_token:
+        press = [i for i in by_token[power_token] if i.skill == "press"]
+        holds = [i for i in by_token[power_token] if i.skill == "hold"]
+        var = b.add_toggle("power", label(power_token), first_mention([power_token]))
+        b.indicators.remove(var) if var in b.indicators else None
+        if holds and press:
+            b.feature(
+                "power_on", [{"actions": [press[0].name], "variable": var, "effect": {"to": "on"}}]
+            )
+            b.feature(
+                "power_off",
+                [{"actions": [holds[0].name], "variable": var, "effect": {"to": "off"}}],
+            )
+            b.note(
+                "features.power_off",
+                "holding the power key switches off (a short press switches on)",
+                first_mention([power_token]),
+            )
+            power_actions += [press[0].name, holds[0].name]
+        else:
+            acts = [i.name for i in press]
+            b.feature("power", [{"actions": acts, "variable": var, "effect": "toggle"}])
+            power_actions += acts
+        done |= set(power_actions)
+        b.guards.append(
+            {
+                "name": "power off",
+                "when": {var: "off"},
+                "only": list(power_actions),
+                "display": "",
+                "hide": True,
+            }
+        )
+        b.note("guards.power off", "keys do nothing while the appliance is off")
+
+    # locks -------------------------------------------------------------------------------
+    for info in infos:
+        if info.name in done:
+            continue
+        is_lock = "lock" in words(info.token) and info.skill in ("hold", "press")
+        if info.skill == "hold" and not is_lock:
+            ctx = [b.manual.units[i].text for i in b.context(list(info.controls))]
+            is_lock = len(info.controls) > 1 or any(
+                re.search(r"\bhold\b", t, re.I) and re.search(r"\block", t, re.I) for t in ctx
+            )
+        if not is_lock:
+            continue
+        at = first_mention(list(info.controls))
+        var = "child_lock"
+        if var not in b.variables:
+            var = b.add_toggle("child_lock", "LOCK", at)
+            b.variables[var]["show"] = {"off": "", "on": _lock_word(b, info) or "LOCK"}
+            b.feature("child_lock", [{"actions": [info.name], "variable": var, "effect": "toggle"}])
+        else:
+            b.features["child_lock"][0]["actions"].append(info.name)
+        lock_actions.append(info.name)
+        done.add(info.name)
+    if lock_actions:
+        shown = b.variables["child_lock"]["show"]["on"]
+        b.guards.insert(
+            0,
+            {
+                "name": "child lock",
+                "when": {"child_lock": "on"},
+                "only": list(lock_actions),
+                "display": shown,
+            },
+        )
+        b.note("guards.child lock", "only the lock action works while locked")
+
+    # start / stop ------------------------------------------------------------------------
+    starts = [
+        i for i in infos if i.name not in done and "start" in words(i.token) and i.skill == "press"
+    ]
+    stops = [
+        i
+        for i in infos
+        if i.name not in done
+        and i not in starts
+        and i.digit is None
+        and (set(words(i.token)) & STOP_WORDS)
+        and i.skill in ("press", "hold")
+    ]
+    if starts or stops:
+        var = b.unique("running", b.variables)
+        b.variables[var] = {"type": "discrete", "values": ["off", "on"], "label": "RUN"}
+        b.indicators.append(var)
+        b.note(
+            f"variables.{var}",
+            "the appliance runs after START",
+            first_mention([i.token for i in starts + stops]),
+        )
+        for info in starts:
+            toggle = bool(set(words(info.token)) & (STOP_WORDS | {"pause"})) or not stops
+            b.feature(
+                info.token if info.token != "start" else "start",
+                [
+                    {
+                        "actions": [info.name],
+                        "variable": var,
+                        "effect": "toggle" if toggle else {"to": "on"},
+                    }
+                ],
+            )
+            run_actions.append(info.name)
+        for info in stops:
+            b.feature(
+                info.name if info.skill == "hold" else info.token,
+                [{"actions": [info.name], "variable": var, "effect": {"to": "off"}}],
+            )
+            run_actions.append(info.name)
+        for info in infos:
+            if (
+                info.skill == "hold"
+                and info.name not in done
+                and info.token in {s.token for s in starts}
+            ):
+                b.feature(
+                    "cancel", [{"actions": [info.name], "variable": var, "effect": {"to": "off"}}]
+                )
+                run_actions.append(info.name)
+                b.note("features.cancel", "holding START stops the programme")
+        done |= set(run_actions)
+        ctx_units = [u for u in b.manual.units if RUNNING_RE.search(u.text)]
+        if ctx_units:
+            allowed = _dedupe(run_actions + power_actions + lock_actions)
+            b.guards.append(
+                {"name": "running", "when": {var: "on"}, "only": allowed, "display": ""}
+            )
+            line = b.manual.units.index(ctx_units[0])
+            b.note("guards.running", "only start/stop (and power, lock) work while running", line)
+
+    # stepping pairs, digits, dials -------------------------------------------------------
+    pairs: dict[str, dict[str, list[str]]] = {}
+    for info in infos:
+        if info.name in done:
+            continue
+        d = adjuster_direction(info)
+        if d:
+            pairs.setdefault(d[0], {"up": [], "down": []})[d[1]].append(info.name)
+    digits = [i.name for i in infos if i.digit is not None and i.name not in done]
+    dials: dict[str, list[ActionInfo]] = {}
+    for info in infos:
+        if info.skill.startswith("turn") and info.name not in done:
+            dials.setdefault(info.token, []).append(info)
+    paired = {n for p in pairs.values() for ns in p.values() for n in ns}
+    done |= paired | set(digits)
+
+    # setting keys -------------------------------------------------------------------------
+    keys = [i for i in infos if i.name not in done and not i.skill.startswith("turn")]
+    evidence = {k.name: b.evidence(list(k.controls)) for k in keys}
+    shared_pair = pairs.get("")
+    generic_dials = [
+        t for t in dials if t.split("_")[0] in GENERIC_DIALS and not _dial_values(b, t)
+    ]
+    entry_keys: list[ActionInfo] = []
+    silent: list[ActionInfo] = []
+    for key in keys:
+        ev = evidence[key.name]
+        name = key.token if key.skill == "press" else f"{key.token}_hold"
+        lab = label(key.controls[0])
+        if ev.values and len(ev.values) >= 2 and set(ev.values) != {"on", "off"}:
+            if _numeric_list(ev.values):
+                ev2 = Evidence(
+                    ranges=[_list_range(ev.values)],
+                    range_at=ev.values_at,
+                    step=_list_step(ev.values),
+                    step_at=ev.values_at,
+                )
+                var = b.add_number(name, lab, ev2, cyclic=True)
+            else:
+                var = b.add_discrete(name, ev.values, lab, ev)
+                b.note(
+                    f"variables.{var}.values", ", ".join(b.variables[var]["values"]), ev.values_at
+                )
+            b.feature(f"set_{var}", [{"actions": [key.name], "variable": var, "effect": "next"}])
+        elif ev.ranges and ev.each_press_at is not None:
+            var = b.add_number(name, lab, ev, cyclic=True)
+            b.feature(f"set_{var}", [{"actions": [key.name], "variable": var, "effect": "next"}])
+            b.note(f"features.set_{var}", "each press steps to the next value", ev.each_press_at)
+        elif ev.ranges or (ev.step and ev.toggle_at is None):
+            entry_keys.append(key)
+        elif ev.toggle_at is not None or (ev.values and set(ev.values) == {"on", "off"}):
+            var = b.add_toggle(name, lab, ev.toggle_at)
+            b.feature(var, [{"actions": [key.name], "variable": var, "effect": "toggle"}])
+        else:
+            silent.append(key)
+
+    # keys the manual lists together: one variable with a go-to value each
+    groups = _groups(b, [k for k in silent if k.skill == "press"])
+    for group in groups:
+        noun = _group_noun(b, group)
+        var = b.unique(noun, b.variables)
+        values = [_v(label(k.controls[0])) for k in group]
+        values = [v if values.count(v) == 1 else f"{v}_{i}" for i, v in enumerate(values)]
+        b.variables[var] = {"type": "discrete", "values": values, "label": noun.upper()}
+        b.note(
+            f"variables.{var}",
+            f"keys listed together select one {noun}: {', '.join(values)}",
+            first_mention([g.token for g in group]),
+        )
+        b.note(f"variables.{var}.initial", f"starts at {values[0]} (the manual does not say)")
+        b.feature(
+            f"select_{var}",
+            [
+                {
+                    "actions": [k.name for k in group],
+                    "variable": var,
+                    "effect": {k.name: {"to": v} for k, v in zip(group, values, strict=True)},
+                }
+            ],
+        )
+        silent = [k for k in silent if k not in group]
+
+    # entry keys take the stepping pair, a generic dial or the keypad
+    steppers: list[tuple[list[str], list[str]]] = []
+    if shared_pair and shared_pair["up"] and shared_pair["down"]:
+        steppers.append((shared_pair["up"], shared_pair["down"]))
+    for t in generic_dials:
+        cw = [i.name for i in dials[t] if i.skill == "turn_cw"]
+        ccw = [i.name for i in dials[t] if i.skill == "turn_ccw"]
+        if cw and ccw:
+            steppers.append((cw, ccw))
+    if not entry_keys and (steppers or digits):
+        entry_keys = [k for k in silent if k.skill == "press"]
+        silent = [k for k in silent if k not in entry_keys]
+    used_steppers: set[int] = set()
+    used_digits = False
+    for key in entry_keys:
+        ev = evidence[key.name]
+        name = key.token if key.skill == "press" else f"{key.token}_hold"
+        lab = label(key.controls[0])
+        timeish = (
+            bool(ev.ranges and ev.ranges[0].unit in ("s", "min", "h"))
+            or "time" in name
+            or "timer" in name
+        )
+        if digits and (timeish or not steppers):
+            var = b.add_number(
+                name, lab, ev if ev.ranges else Evidence(ranges=[], step=ev.step), cyclic=False
+            )
+            spec = b.variables[var]
+            spec["entry"] = {
+                "format": "mm:ss"
+                if spec["type"] == "time" and spec.get("format") == "mm:ss"
+                else ("hh:mm" if spec["type"] == "time" else "number")
+            }
+            if spec["type"] == "time":
+                spec["ranges"] = [
+                    [r[0], r[1], 1 if spec["entry"]["format"] == "mm:ss" else 60]
+                    for r in spec["ranges"]
+                ]
+            b.feature(
+                f"set_{var}", [{"actions": [key.name]}, {"actions": list(digits), "variable": var}]
+            )
+            b.note(f"features.set_{var}", f"{lab} then the number keys", ev.range_at)
+            used_digits = True
+        elif steppers:
+            up, down = steppers[0]
+            used_steppers.add(0)
+            var = b.add_number(name, lab, ev, cyclic=False)
+            b.feature(
+                f"set_{var}",
+                [
+                    {"actions": [key.name]},
+                    {
+                        "actions": up + down,
+                        "variable": var,
+                        "effect": {**{a: "next" for a in up}, **{a: "prev" for a in down}},
+                    },
+                ],
+            )
+            b.note(f"features.set_{var}", f"{lab} then the stepping keys", ev.range_at)
+        else:
+            var = b.add_number(name, lab, ev, cyclic=True)
+            b.feature(f"set_{var}", [{"actions": [key.name], "variable": var, "effect": "next"}])
+            b.note(
+                f"features.set_{var}",
+                "each press steps to the next value (the manual names no other way)",
+            )
+    for index, (up, down) in enumerate(steppers):
+        if index not in used_steppers:
+            tokens_ = [n for n in up + down]
+            ev = b.evidence([_token_of(b, n) for n in tokens_])
+            noun = _noun(b, [_token_of(b, n) for n in tokens_]) or "level"
+            var = b.add_number(noun, noun.upper(), ev, cyclic=False)
+            b.feature(
+                f"set_{var}",
+                [
+                    {
+                        "actions": up + down,
+                        "variable": var,
+                        "effect": {**{a: "next" for a in up}, **{a: "prev" for a in down}},
+                    }
+                ],
+            )
+    if digits and not used_digits:
+        var = b.add_number("time", "TIME", Evidence(ranges=[], step=(1, "s")), cyclic=False)
+        spec = b.variables[var]
+        spec["ranges"] = [["00:00:01", "01:39:59", 1]]
+        spec["format"] = "mm:ss"
+        spec["entry"] = {"format": "mm:ss"}
+        b.feature("enter_time", [{"actions": list(digits), "variable": var}])
+        b.note("features.enter_time", "the number keys enter a time directly")
+    for base, pair in pairs.items():
+        if base == "":
+            if not (pair["up"] and pair["down"]):
+                for n in pair["up"] + pair["down"]:
+                    silent.append(next(i for i in infos if i.name == n))
+            continue
+        toks = [_token_of(b, n) for n in pair["up"] + pair["down"]]
+        ev = b.evidence(toks + ([base] if base in b.labels else []))
+        var = b.add_number(base, base.upper(), ev, cyclic=False)
+        eff = {**{a: "next" for a in pair["up"]}, **{a: "prev" for a in pair["down"]}}
+        b.feature(
+            f"set_{var}", [{"actions": pair["up"] + pair["down"], "variable": var, "effect": eff}]
+        )
+
+    # dials with their own values
+    for token, acts in dials.items():
+        if token in generic_dials and any(token in d for d in []):
+            continue
+        if (
+            token in generic_dials
+            and steppers
+            and any(
+                set(i.name for i in acts) & set(s[0] + s[1]) for s in steppers[: len(used_steppers)]
+            )
+        ):
+            continue
+        if token in generic_dials and entry_keys and not _dial_values(b, token):
+            pass
+        cw = [i.name for i in acts if i.skill == "turn_cw"]
+        ccw = [i.name for i in acts if i.skill == "turn_ccw"]
+        if any(a in str(b.features) for a in cw + ccw):
+            continue
+        ev = b.evidence([token])
+        lab = label(token)
+        if ev.values and not _numeric_list(ev.values):
+            var = b.add_discrete(token, ev.values, lab, ev)
+            b.note(f"variables.{var}.values", ", ".join(b.variables[var]["values"]), ev.values_at)
+        else:
+            var = b.add_number(token, lab, ev, cyclic=False)
+        eff = {**{a: "next" for a in cw}, **{a: "prev" for a in ccw}}
+        b.feature(f"select_{var}", [{"actions": cw + ccw, "variable": var, "effect": eff}])
+        presses = [k for k in silent if k.token == token]
+        for k in presses:
+            b.feature(
+                f"{k.token}_press",
+                [{"actions": [k.name]}, {"actions": cw + ccw, "variable": var, "effect": eff}],
+            )
+            silent.remove(k)
+
+    # whatever is left: a toggle the closed loop can repair
+    for key in silent:
+        name = key.token if key.skill == "press" else f"{key.token}_hold"
+        var = b.add_toggle(name, label(key.controls[0]), None)
+        b.feature(var, [{"actions": [key.name], "variable": var, "effect": "toggle"}])
+        b.note(
+            f"features.{var}",
+            f"{key.name} toggles a setting of its own (the manual says nothing clear)",
+        )
+
+
+def _dedupe(items: list[str]) -> list[str]:
+    return list(dict.fromkeys(items))
+
+
+def _v(text: str) -> str:
+    return re.sub(r"\s+", " ", text.lower()).strip()
+
+
+def _token_of(b: Builder, action: str) -> str:
+    return next(i.token for i in b.infos if i.name == action)
+
+
+def _lock_word(b: Builder, info: ActionInfo) -> str:
+    for i in b.context(list(info.controls)):
+        for m in re.finditer(
+            r"\b([A-Z][A-Z-]*LOC[A-Z]*|LOC|LOCK(?:ED)?|[A-Z]-?L)\b", b.manual.units[i].text
+        ):
+            return m.group(1)
+    return ""
+
+
+def _numeric_list(values: list[str]) -> bool:
+    return all(re.fullmatch(r"\d+(?:[.,]\d+)?\s*[a-z%°]*", v.strip().lower()) for v in values)
+
+
+def _nums(values: list[str]) -> list[float]:
+    return sorted(
+        {float(re.match(r"\d+(?:[.,]\d+)?", v.strip()).group(0).replace(",", ".")) for v in values}
+    )  # type: ignore[union-attr]
+
+
+def _list_range(values: list[str]) -> Any:
+    from apbot.read.values import Range, unit_name
+
+    nums = _nums(values)
+    unit = unit_name(re.sub(r"[\d.,\s]", "", values[-1])) if values else ""
+    return Range(nums[0], nums[-1], unit)
+
+
+def _list_step(values: list[str]) -> tuple[float, str] | None:
+    nums = _nums(values)
+    if len(nums) < 2:
+        return None
+    diffs = {round(b - a, 6) for a, b in zip(nums, nums[1:], strict=False)}
+    return (min(diffs), "") if diffs else None
+
+
+def _dial_values(b: Builder, token: str) -> bool:
+    if token not in b.labels or b.labels[token].line is None:
+        return False
+    ev = b.evidence([token])
+    return bool(ev.values or ev.ranges)
+
+
+def _groups(b: Builder, keys: list[ActionInfo]) -> list[list[ActionInfo]]:
+    """Keys whose labels appear together in one sentence, list or table (≥2 each)."""
+    if len(keys) < 2:
+        return []
+    parent = {k.name: k.name for k in keys}
+
+    def find(x: str) -> str:
+        while parent[x] != x:
+            x = parent[x]
+        return x
+
+    for unit_index, unit in enumerate(b.manual.units):
+        present = [k for k in keys if unit_index in b.labels[k.controls[0]].mentions]
+        for k in present[1:]:
+            parent[find(k.name)] = find(present[0].name)
+    # table columns: labels in the first cells of consecutive rows
+    rows: list[list[ActionInfo]] = []
+    current: list[ActionInfo] = []
+    for unit in b.manual.units:
+        if unit.cells and unit.header:
+            first = unit.cells[0].upper()
+            hit = [k for k in keys if b.labels[k.controls[0]].text.upper() in first]
+            current += hit
+        elif current:
+            rows.append(current)
+            current = []
+    if current:
+        rows.append(current)
+    for row in rows:
+        for k in row[1:]:
+            parent[find(k.name)] = find(row[0].name)
+    out: dict[str, list[ActionInfo]] = {}
+    for k in keys:
+        out.setdefault(find(k.name), []).append(k)
+    return [g for g in out.values() if len(g) >= 2]
+
+
+def _group_noun(b: Builder, group: list[ActionInfo]) -> str:
+    counts: dict[str, int] = {}
+    for k in group:
+        for i in b.labels[k.controls[0]].mentions:
+            unit = b.manual.units[i]
+            text = (unit.text + " " + " ".join(unit.header) + " " + unit.heading).lower()
+            for noun in GROUP_NOUNS:
+                if re.search(rf"\b{noun}", text):
+                    counts[noun] = counts.get(noun, 0) + 1
+    return max(counts, key=lambda n: counts[n]) if counts else "programme"
+
+
+def _noun(b: Builder, tokens: list[str]) -> str:
+    for i in b.context(tokens):
+        text = b.manual.units[i].text.lower()
+        for noun in SETTING_NOUNS:
+            if re.search(rf"\b{noun}\b", text):
+                return noun
+    return ""
