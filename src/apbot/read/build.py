@@ -221,7 +221,7 @@ class Builder:
         if as_time:
             factor = 1 if rng.unit == "s" else seconds(1, unit)
             lo, hi = int(rng.low * factor), int(rng.high * factor)
-            st = max(1, int(round(step * (1 if rng.unit == "s" else factor)))) if step else 60
+            st = max(1, round(step * (1 if rng.unit == "s" else factor))) if step else 60
             if (hi - lo) // st > 5000:
                 st = max(st, (hi - lo) // 5000)
             hi = lo + (hi - lo) // st * st

@@ -7,6 +7,7 @@ lists together, then whatever is left, as a guess.
 
 from __future__ import annotations
 
+import itertools
 import re
 from typing import Any
 
@@ -45,7 +46,7 @@ def assign(b: Builder) -> None:
 
     # power -------------------------------------------------------------------------------
     tokens = {i.token for i in infos if i.skill == "press" and i.digit is None}
-    power_token = next(
+    power_token: str | None = next(
         (t for t in ("on_off", "onoff", "power_on_off", "standby") if t in tokens), None
     )
     if power_token is None and "power" in tokens:
@@ -95,9 +96,9 @@ def assign(b: Builder) -> None:
             continue
         is_lock = "lock" in words(info.token) and info.skill in ("hold", "press")
         if info.skill == "hold" and not is_lock:
-            ctx = [b.manual.units[i].text for i in b.context(list(info.controls))]
+            texts = [b.manual.units[i].text for i in b.context(list(info.controls))]
             is_lock = len(info.controls) > 1 or any(
-                re.search(r"\bhold\b", t, re.I) and re.search(r"\block", t, re.I) for t in ctx
+                re.search(r"\bhold\b", t, re.I) and re.search(r"\block", t, re.I) for t in texts
             )
         if not is_lock:
             continue
@@ -372,23 +373,12 @@ def assign(b: Builder) -> None:
             f"set_{var}", [{"actions": pair["up"] + pair["down"], "variable": var, "effect": eff}]
         )
 
-    # dials with their own values
-    for token, acts in dials.items():
-        if token in generic_dials and any(token in d for d in []):
-            continue
-        if (
-            token in generic_dials
-            and steppers
-            and any(
-                set(i.name for i in acts) & set(s[0] + s[1]) for s in steppers[: len(used_steppers)]
-            )
-        ):
-            continue
-        if token in generic_dials and entry_keys and not _dial_values(b, token):
-            pass
-        cw = [i.name for i in acts if i.skill == "turn_cw"]
-        ccw = [i.name for i in acts if i.skill == "turn_ccw"]
-        if any(a in str(b.features) for a in cw + ccw):
+    # dials with their own values (a generic dial already taken as a stepper is skipped)
+    for token, turns in dials.items():
+        cw = [i.name for i in turns if i.skill == "turn_cw"]
+        ccw = [i.name for i in turns if i.skill == "turn_ccw"]
+        used = {a for steps in b.features.values() for st in steps for a in st["actions"]}
+        if set(cw + ccw) & used:
             continue
         ev = b.evidence([token])
         lab = label(token)
@@ -399,8 +389,7 @@ def assign(b: Builder) -> None:
             var = b.add_number(token, lab, ev, cyclic=False)
         eff = {**{a: "next" for a in cw}, **{a: "prev" for a in ccw}}
         b.feature(f"select_{var}", [{"actions": cw + ccw, "variable": var, "effect": eff}])
-        presses = [k for k in silent if k.token == token]
-        for k in presses:
+        for k in [k for k in silent if k.token == token]:
             b.feature(
                 f"{k.token}_press",
                 [{"actions": [k.name]}, {"actions": cw + ccw, "variable": var, "effect": eff}],
@@ -444,9 +433,8 @@ def _numeric_list(values: list[str]) -> bool:
 
 
 def _nums(values: list[str]) -> list[float]:
-    return sorted(
-        {float(re.match(r"\d+(?:[.,]\d+)?", v.strip()).group(0).replace(",", ".")) for v in values}
-    )  # type: ignore[union-attr]
+    found = [re.match(r"\d+(?:[.,]\d+)?", v.strip()) for v in values]
+    return sorted({float(m.group(0).replace(",", ".")) for m in found if m})
 
 
 def _list_range(values: list[str]) -> Any:
@@ -461,7 +449,7 @@ def _list_step(values: list[str]) -> tuple[float, str] | None:
     nums = _nums(values)
     if len(nums) < 2:
         return None
-    diffs = {round(b - a, 6) for a, b in zip(nums, nums[1:], strict=False)}
+    diffs = {round(b - a, 6) for a, b in itertools.pairwise(nums)}
     return (min(diffs), "") if diffs else None
 
 
@@ -483,7 +471,7 @@ def _groups(b: Builder, keys: list[ActionInfo]) -> list[list[ActionInfo]]:
             x = parent[x]
         return x
 
-    for unit_index, unit in enumerate(b.manual.units):
+    for unit_index in range(len(b.manual.units)):
         present = [k for k in keys if unit_index in b.labels[k.controls[0]].mentions]
         for k in present[1:]:
             parent[find(k.name)] = find(present[0].name)

@@ -13,8 +13,14 @@ from dataclasses import dataclass
 
 from apbot.model.values import unit_of, words_to_number
 
-NUM = r"(?:\d+(?:[.,]\d+)?|one|two|three|four|five|six|seven|eight|nine|ten|twelve|fifteen|twenty|thirty|half)"
-UNIT = r"(?:%|°\s?[CF]|°|degrees?|min(?:ute)?s?|h(?:ou)?rs?|hours?|h|sec(?:ond)?s?|s|rpm|W|watts?|kg|g|ml|L|litres?|cups?)"
+NUM = (
+    r"(?:\d+(?:[.,]\d+)?|one|two|three|four|five|six|seven|eight|nine|ten|twelve|fifteen"
+    r"|twenty|thirty|half)"
+)
+UNIT = (
+    r"(?:%|°\s?[CF]|°|degrees?|min(?:ute)?s?|h(?:ou)?rs?|hours?|h|sec(?:ond)?s?|s|rpm|W|watts?"
+    r"|kg|g|ml|L|litres?|cups?)"
+)
 _TIME = r"\d{1,2}:\d{2}"
 _DASH = r"\s*(?:–|—|-|to|and|~|until)\s*"
 RANGE_RE = re.compile(
@@ -72,7 +78,7 @@ def is_time_unit(unit: str) -> bool:
 
 
 def seconds(value: float, unit: str) -> int:
-    return int(round(value * {"s": 1, "min": 60, "h": 3600}.get(unit, 60)))
+    return round(value * {"s": 1, "min": 60, "h": 3600}.get(unit, 60))
 
 
 @dataclass(frozen=True)
