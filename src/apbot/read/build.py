@@ -26,7 +26,6 @@ from apbot.read.values import (
     find_list,
     find_ranges,
     find_step,
-    is_time_unit,
     number,
     seconds,
 )
@@ -109,27 +108,68 @@ class Builder:
                             if k not in seen:
                                 seen.append(k)
                             k += 1
+        for token in tokens:
+            tw = [w for w in words(token.replace("_", " ")) if len(w) >= 4]
+            for i, unit in enumerate(units):
+                if unit.text != unit.heading or not tw:
+                    continue
+                hw = words(unit.heading)
+                if any(
+                    h.startswith(t[:6]) or t.startswith(h[:6])
+                    for t in tw
+                    for h in hw
+                    if len(h) >= 4
+                ):
+                    if i not in seen:
+                        seen.append(i)  # the heading itself: bullets below it list values
+                    for j in range(i + 1, min(i + 6, len(units))):
+                        if units[j].heading != unit.heading:
+                            break
+                        if j not in seen:
+                            seen.append(j)
         return seen
 
     def evidence(self, tokens: list[str]) -> Evidence:
         ev = Evidence()
         units = self.manual.units
+        others = {
+            lab.text.lower() for t, lab in self.labels.items() if t not in tokens and lab.line
+        }
+        own = {self.labels[t].text.upper() for t in tokens if t in self.labels}
         for i in self.context(tokens):
             text = units[i].text
+            unit = units[i]
+            if unit.cells and unit.header and unit.cells[0].upper() in own:
+                head = unit.header[0].lower()
+                if not re.search(r"key|button|control|pad|dial|knob|symbol|name", head):
+                    continue  # a row describing the value the key names, not the key's setting
             if ev.values is None:
                 found = find_list(text)
+                if found and sum(v.lower() in others for v in found[0]) >= 2:
+                    found = None  # a list of other keys, not of values
                 if found and not _numeric_items(found[0]):
                     ev.values, ev.values_at = [v.lower() for v in found[0]], i
                 elif found and len(found[0]) >= 3:
                     ev.values, ev.values_at = found[0], i
-                elif text.rstrip().endswith(":") or text.rstrip().endswith("order"):
+                elif (
+                    text.rstrip().endswith(":")
+                    or text.rstrip().endswith("order")
+                    or text == unit.heading
+                ):
                     bullets = _bullet_items(units, i)
                     if bullets:
                         ev.values, ev.values_at = [b.lower() for b in bullets], i
-            if not ev.ranges:
-                ranges = find_ranges(text)
-                if ranges:
-                    ev.ranges, ev.range_at = ranges, i
+            ranges = find_ranges(text)
+            if ranges and unit.cells and len(ranges) == 1 and ranges[0].step is None:
+                row_step = _row_step(unit.cells, ranges[0].unit)
+                if row_step:
+                    ranges = [Range(ranges[0].low, ranges[0].high, ranges[0].unit, row_step)]
+            if ranges and not ev.ranges:
+                ev.ranges, ev.range_at = ranges[:1], i
+            elif ranges and ev.ranges and ranges[0].unit == ev.ranges[-1].unit:
+                last = ev.ranges[-1]
+                if abs(ranges[0].low - last.high) < 1e-9 and ranges[0].high > last.high:
+                    ev.ranges.append(ranges[0])  # the next piece of a piecewise range
             if ev.step is None:
                 step = find_step(text)
                 if step:
@@ -187,75 +227,92 @@ class Builder:
         return name
 
     def add_number(self, name: str, label: str, ev: Evidence, cyclic: bool) -> str:
-        """A numeric or time variable from the ranges and step read (guessed where absent)."""
+        """A numeric or time variable from the ranges and steps read (guessed where absent)."""
         name = self.unique(name, self.variables)
         subject = f"variables.{name}"
-        rng = ev.ranges[0] if ev.ranges else None
-        if rng is None:
+        ranges = list(ev.ranges)
+        if not ranges:
             unit = ev.step[1] if ev.step else _unit_from_words(name)
-            low, high = (
-                (0.0, 10.0) if unit in ("", "h") else (1.0, 60.0) if unit == "min" else (0.0, 100.0)
+            low, high = {"": (0, 10), "h": (0, 12), "min": (1, 60), "°C": (30, 100)}.get(
+                unit, (0, 100)
             )
-            if unit == "°C":
-                low, high = 30.0, 100.0
             self.note(subject, f"range {low:g}–{high:g} {unit} (the manual gives none)")
-            rng = Range(low, high, unit)
+            ranges = [Range(low, high, unit)]
         else:
-            self.note(subject, f"range {rng.low:g}–{rng.high:g} {rng.unit}", ev.range_at)
-        unit = rng.unit or (ev.step[1] if ev.step else "") or _unit_from_words(name)
-        step = ev.step[0] if ev.step and ev.step[1] in ("", unit) else None
-        if (
-            ev.step
-            and ev.step[1]
-            and ev.step[1] != unit
-            and is_time_unit(ev.step[1])
-            and (is_time_unit(unit) or rng.unit == "s")
-        ):
-            step = seconds(ev.step[0], ev.step[1]) / (1 if rng.unit == "s" else seconds(1, unit))
-        if step:
-            self.note(subject + ".step", f"step {step:g}", ev.step_at)
-        else:
-            step = _guess_step(rng.high - rng.low, unit)
-            self.note(subject + ".step", f"step {step:g} {unit} (the manual gives none)")
-        as_time = rng.unit == "s" or unit in ("s", "min")
-        if as_time:
-            factor = 1 if rng.unit == "s" else seconds(1, unit)
-            lo, hi = int(rng.low * factor), int(rng.high * factor)
-            st = max(1, round(step * (1 if rng.unit == "s" else factor))) if step else 60
-            if (hi - lo) // st > 5000:
-                st = max(st, (hi - lo) // 5000)
-            hi = lo + (hi - lo) // st * st
+            shown = ", ".join(f"{r.low:g}–{r.high:g}" for r in ranges)
+            self.note(subject, f"range {shown} {ranges[0].unit}", ev.range_at)
+        unit = ranges[0].unit or (ev.step[1] if ev.step else "") or _unit_from_words(name)
+        as_time = ranges[0].unit == "s" or unit in ("s", "min")
+        factor = 1 if ranges[0].unit == "s" else seconds(1, unit) if as_time else 1
+
+        def base_step(r: Range) -> float | None:
+            """The step in the variable's base unit (seconds for a time)."""
+            if r.step:
+                return r.step * factor
+            if not ev.step:
+                return None
+            value, step_unit = ev.step
+            if as_time and step_unit in ("s", "min", "h"):
+                return float(seconds(value, step_unit))
+            if step_unit in ("", unit) or not as_time:
+                return value * factor
+            return None
+
+        pieces: list[list[float]] = []
+        for index, r in enumerate(ranges):
+            lo, hi = r.low * factor, r.high * factor
+            st = base_step(r)
+            if st:
+                self.note(
+                    f"{subject}.step",
+                    f"step {st / factor:g} {unit}",
+                    ev.step_at if not r.step else ev.range_at,
+                )
+            else:
+                st = _guess_step(r.high - r.low, unit) * factor
+                self.note(f"{subject}.step", f"step {st / factor:g} {unit} (the manual gives none)")
+            if as_time:
+                st = max(1.0, float(round(st)))
+            if pieces:
+                lo = max(lo, pieces[-1][1])
+            count = int((hi - lo) / st + 1e-9)
+            if count > 5000:
+                st = (hi - lo) / 5000 if not as_time else float(-(-(hi - lo) // 5000))
+                count = int((hi - lo) / st + 1e-9)
+            hi = lo + count * st
             if hi <= lo:
+                if index:
+                    continue
                 hi = lo + st
-            spec: dict[str, Any] = {
+            pieces.append([lo, hi, st])
+        spec: dict[str, Any]
+        if as_time:
+            spec = {
                 "type": "time",
-                "ranges": [[_hms(lo), _hms(hi), st]],
-                "format": "h:mm" if hi >= 3600 and st >= 60 else "mm:ss",
+                "ranges": [[_hms(int(lo)), _hms(int(hi)), int(st)] for lo, hi, st in pieces],
+                "format": "h:mm"
+                if pieces[-1][1] >= 3600 and all(p[2] % 60 == 0 for p in pieces)
+                else "mm:ss",
                 "label": label,
             }
         else:
-            lo_n, hi_n = _tidy(rng.low), _tidy(rng.high)
-            count = int((hi_n - lo_n) / step + 1e-9)
-            if count > 5000:
-                step = (hi_n - lo_n) / 5000
-                count = 5000
-            hi_n = _tidy(lo_n + count * step)
-            if hi_n <= lo_n:
-                hi_n = _tidy(lo_n + step)
             spec = {
                 "type": "numeric",
-                "ranges": [[lo_n, hi_n, _tidy(step)]],
+                "ranges": [[_tidy(lo), _tidy(hi), _tidy(st)] for lo, hi, st in pieces],
                 "unit": unit,
                 "label": label,
             }
-            if ev.initial and isinstance(ev.initial, tuple) and lo_n <= ev.initial[0] <= hi_n:
-                off = (ev.initial[0] - lo_n) / step
-                if abs(off - round(off)) < 1e-9:
-                    spec["initial"] = _tidy(ev.initial[0])
-                    self.note(subject + ".initial", f"starts at {ev.initial[0]:g}", ev.initial_at)
+            if ev.initial and isinstance(ev.initial, tuple):
+                value = ev.initial[0]
+                for lo, hi, st in pieces:
+                    off = (value - lo) / st
+                    if lo <= value <= hi and abs(off - round(off)) < 1e-9:
+                        spec["initial"] = _tidy(value)
+                        self.note(f"{subject}.initial", f"starts at {value:g}", ev.initial_at)
+                        break
         if cyclic:
             spec["wrap"] = True
-            self.note(subject + ".wrap", "stepping past the end wraps around (each press adds)")
+            self.note(f"{subject}.wrap", "stepping past the end wraps around (each press adds)")
         self.variables[name] = spec
         return name
 
@@ -274,6 +331,23 @@ def _numeric_items(items: list[str]) -> bool:
         if items
         else False
     )
+
+
+def _row_step(cells: tuple[str, ...], unit: str) -> float | None:
+    """A table row's step: a cell that is one quantity ("half an hour", "5 min", "1 h")."""
+    from apbot.model.values import parse_quantity
+
+    for cell in cells[1:]:
+        if find_ranges(cell):
+            continue
+        step = find_step(cell)
+        if step:
+            return step[0]
+        q = parse_quantity(cell.strip().lower().replace("an hour", "1 hour"))
+        if q and q[1] == "time" and q[0] > 0:
+            base = {"s": 1, "min": 60, "h": 3600}.get(unit, 0)
+            return q[0] / base if base else None
+    return None
 
 
 def _bullet_items(units: list[Unit], i: int) -> list[str]:

@@ -24,6 +24,9 @@ SYMBOLS: dict[str, tuple[str, ...]] = {
     "right": ("▶", "→", ">"),
     "power": ("⏻",),
     "on_off": ("⏻",),
+    "temp": ("°C", "°F"),  # a knob labelled only with the unit of what it sets
+    "temperature": ("°C", "°F"),
+    "spin": ("RPM",),
 }
 CONTROL_NOUNS = r"(?:button|key|pad|touch ?pad|dial|knob|switch|control|selector|sensor)"
 _CAPS = re.compile(r"(?<![A-Za-z0-9])([A-Z0-9][A-Z0-9+&'./-]*(?:[ /][A-Z0-9+&'.-]+)*)(?![a-z])")
@@ -91,6 +94,8 @@ def _score(token_words: list[str], phrase: str) -> float:
         return 0.75
     if len(tw) == 1 and len(tw[0]) >= 3 and pw[0].startswith(tw[0]) and len(pw) == 1:
         return 0.7
+    if len(tw) == 1 and len(pw) == 1 and len(pw[0]) >= 5 and tw[0].startswith(pw[0]):
+        return 0.65  # PROGRAM for programme
     return 0.0
 
 

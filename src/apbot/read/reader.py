@@ -17,6 +17,7 @@ from apbot.model.schema import ApplianceModel
 from apbot.model.validate import check_model
 from apbot.read.actions import ActionInfo, parse_actions
 from apbot.read.build import Builder
+from apbot.read.cases import apply_cases
 from apbot.read.labels import find_labels
 from apbot.read.report import Note, Report
 from apbot.read.roles import assign
@@ -45,6 +46,7 @@ def read_manual(
     labels = find_labels(manual, tokens)
     builder = Builder(manual, infos, labels)
     assign(builder)
+    apply_cases(builder)
     data = _assemble(builder, appliance_id, category)
     notes = builder.notes
     model = _checked(data, infos, notes)

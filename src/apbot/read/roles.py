@@ -205,6 +205,11 @@ def assign(b: Builder) -> None:
 
     # setting keys -------------------------------------------------------------------------
     keys = [i for i in infos if i.name not in done and not i.skill.startswith("turn")]
+    pads = [k for k in keys if k.skill == "press" and not set(words(k.token)) & FUNCTION_WORDS]
+    for group in _groups(b, pads, tables_only=True):
+        if len(group) >= 3:
+            _pad_group(b, group, label, first_mention)
+            keys = [k for k in keys if k not in group]
     evidence = {k.name: b.evidence(list(k.controls)) for k in keys}
     shared_pair = pairs.get("")
     generic_dials = [
@@ -244,29 +249,11 @@ def assign(b: Builder) -> None:
             silent.append(key)
 
     # keys the manual lists together: one variable with a go-to value each
-    groups = _groups(b, [k for k in silent if k.skill == "press"])
+    groups = _groups(
+        b, [k for k in silent if k.skill == "press" and not set(words(k.token)) & FUNCTION_WORDS]
+    )
     for group in groups:
-        noun = _group_noun(b, group)
-        var = b.unique(noun, b.variables)
-        values = [_v(label(k.controls[0])) for k in group]
-        values = [v if values.count(v) == 1 else f"{v}_{i}" for i, v in enumerate(values)]
-        b.variables[var] = {"type": "discrete", "values": values, "label": noun.upper()}
-        b.note(
-            f"variables.{var}",
-            f"keys listed together select one {noun}: {', '.join(values)}",
-            first_mention([g.token for g in group]),
-        )
-        b.note(f"variables.{var}.initial", f"starts at {values[0]} (the manual does not say)")
-        b.feature(
-            f"select_{var}",
-            [
-                {
-                    "actions": [k.name for k in group],
-                    "variable": var,
-                    "effect": {k.name: {"to": v} for k, v in zip(group, values, strict=True)},
-                }
-            ],
-        )
+        _pad_group(b, group, label, first_mention)
         silent = [k for k in silent if k not in group]
 
     # entry keys take the stepping pair, a generic dial or the keypad
@@ -297,16 +284,7 @@ def assign(b: Builder) -> None:
                 name, lab, ev if ev.ranges else Evidence(ranges=[], step=ev.step), cyclic=False
             )
             spec = b.variables[var]
-            spec["entry"] = {
-                "format": "mm:ss"
-                if spec["type"] == "time" and spec.get("format") == "mm:ss"
-                else ("hh:mm" if spec["type"] == "time" else "number")
-            }
-            if spec["type"] == "time":
-                spec["ranges"] = [
-                    [r[0], r[1], 1 if spec["entry"]["format"] == "mm:ss" else 60]
-                    for r in spec["ranges"]
-                ]
+            _keypad_entry(spec)
             b.feature(
                 f"set_{var}", [{"actions": [key.name]}, {"actions": list(digits), "variable": var}]
             )
@@ -407,6 +385,109 @@ def assign(b: Builder) -> None:
         )
 
 
+FUNCTION_WORDS = {
+    *SETTING_NOUNS,
+    *GROUP_NOUNS,
+    "clock",
+    "hour",
+    "min",
+    "minute",
+    "sec",
+    "texture",
+    "timer",
+    "keep",
+    "warm",
+    "light",
+    "lock",
+    "delay",
+    "preset",
+    "size",
+    "crust",
+    "colour",
+    "color",
+    "loaf",
+    "start",
+    "stop",
+    "cancel",
+    "temp",
+    "fan",
+    "auto",
+    "select",
+    "set",
+    "memory",
+    "sound",
+    "quick",
+    "express",
+    "reserve",
+    "taste",
+    "add",
+    "weight",
+    "child",
+    "display",
+    "eco",
+    "rinse",
+    "spin",
+    "dry",
+    "wash",
+    "turbo",
+    "swing",
+    "pump",
+    "water",
+    "soil",
+    "option",
+    "options",
+}  # what a key does, not a programme it names
+
+
+def _pad_group(b: Builder, group: list[ActionInfo], label: Any, first_mention: Any) -> None:
+    """Keys the manual lists together: one variable, each key going to its own value."""
+    noun = _group_noun(b, group)
+    var = b.unique(noun, b.variables)
+    values = [_v(label(k.controls[0])) for k in group]
+    values = [v if values.count(v) == 1 else f"{v}_{i}" for i, v in enumerate(values)]
+    b.variables[var] = {"type": "discrete", "values": values, "label": noun.upper()}
+    b.note(
+        f"variables.{var}",
+        f"keys listed together select one {noun}: {', '.join(values)}",
+        first_mention([g.token for g in group]),
+    )
+    b.note(f"variables.{var}.initial", f"starts at {values[0]} (the manual does not say)")
+    b.feature(
+        f"select_{var}",
+        [
+            {
+                "actions": [k.name for k in group],
+                "variable": var,
+                "effect": {k.name: {"to": v} for k, v in zip(group, values, strict=True)},
+            }
+        ],
+    )
+
+
+def _keypad_entry(spec: dict[str, Any]) -> None:
+    """Digits typed for a variable: mm:ss for short times, hh:mm (minute steps) for long ones."""
+    from apbot.model.values import parse_hms
+
+    if spec["type"] != "time":
+        spec["entry"] = {"format": "number"}
+        return
+    top = max(parse_hms(r[1]) for r in spec["ranges"])
+    if top < 6000 and any(int(r[2]) < 60 for r in spec["ranges"]):
+        spec["entry"] = {"format": "mm:ss"}
+        spec["format"] = "mm:ss"
+        return
+    spec["entry"] = {"format": "hh:mm"}
+    spec["format"] = "h:mm"
+    fixed = []
+    for lo, hi, step in spec["ranges"]:
+        step = max(60, round(int(step) / 60) * 60)
+        span = parse_hms(hi) - parse_hms(lo)
+        end = parse_hms(lo) + span // step * step
+        if end > parse_hms(lo):
+            fixed.append([lo, f"{end // 3600:02d}:{end % 3600 // 60:02d}:00", step])
+    spec["ranges"] = fixed or [["00:00:00", "23:59:00", 60]]
+
+
 def _dedupe(items: list[str]) -> list[str]:
     return list(dict.fromkeys(items))
 
@@ -460,7 +541,9 @@ def _dial_values(b: Builder, token: str) -> bool:
     return bool(ev.values or ev.ranges)
 
 
-def _groups(b: Builder, keys: list[ActionInfo]) -> list[list[ActionInfo]]:
+def _groups(
+    b: Builder, keys: list[ActionInfo], tables_only: bool = False
+) -> list[list[ActionInfo]]:
     """Keys whose labels appear together in one sentence, list or table (≥2 each)."""
     if len(keys) < 2:
         return []
@@ -471,7 +554,7 @@ def _groups(b: Builder, keys: list[ActionInfo]) -> list[list[ActionInfo]]:
             x = parent[x]
         return x
 
-    for unit_index in range(len(b.manual.units)):
+    for unit_index in range(0 if tables_only else len(b.manual.units)):
         present = [k for k in keys if unit_index in b.labels[k.controls[0]].mentions]
         for k in present[1:]:
             parent[find(k.name)] = find(present[0].name)

@@ -190,7 +190,10 @@ def find_list(text: str) -> tuple[list[str], str] | None:
             return _dedupe(items), "arrows"
     for m in _CUE.finditer(text):
         segment = re.split(r"[.;]\s|\s[—–]\s|\bwhile\b|\bwhen\b|\bto (?!\d)", m.group(1))[0]
-        items = [_clean_item(p) for p in re.split(r",\s*|\s*/\s*|\s+or\s+|\s+and\s+", segment)]
+        items = [
+            _clean_item(p)
+            for p in re.split(r",\s*|\s*/\s*|\s*[·•|]\s*|\s+or\s+|\s+and\s+", segment)
+        ]
         items = [i for i in items if i]
         caps = sum(1 for i in items if i.upper() == i and any(c.isalpha() for c in i))
         if len(items) >= 2 and all(_value_like(i, caps >= 2) for i in items):
