@@ -24,9 +24,9 @@ from apbot.read.values import (
     Range,
     find_initial,
     find_list,
+    find_number_run,
     find_ranges,
     find_step,
-    number,
     seconds,
 )
 
@@ -136,6 +136,9 @@ class Builder:
             lab.text.lower() for t, lab in self.labels.items() if t not in tokens and lab.line
         }
         own = {self.labels[t].text.upper() for t in tokens if t in self.labels}
+        mentions = {i for t in tokens if t in self.labels for i in self.labels[t].mentions}
+        best: list[str] | None = None
+        best_prio = 0.0
         for i in self.context(tokens):
             text = units[i].text
             unit = units[i]
@@ -143,22 +146,13 @@ class Builder:
                 head = unit.header[0].lower()
                 if not re.search(r"key|button|control|pad|dial|knob|symbol|name", head):
                     continue  # a row describing the value the key names, not the key's setting
-            if ev.values is None:
-                found = find_list(text)
-                if found and sum(v.lower() in others for v in found[0]) >= 2:
-                    found = None  # a list of other keys, not of values
-                if found and not _numeric_items(found[0]):
-                    ev.values, ev.values_at = [v.lower() for v in found[0]], i
-                elif found and len(found[0]) >= 3:
-                    ev.values, ev.values_at = found[0], i
-                elif (
-                    text.rstrip().endswith(":")
-                    or text.rstrip().endswith("order")
-                    or text == unit.heading
-                ):
-                    bullets = _bullet_items(units, i)
-                    if bullets:
-                        ev.values, ev.values_at = [b.lower() for b in bullets], i
+            for items, prio in self._lists(i, i in mentions, tokens):
+                if sum(v.lower() in others for v in items) >= 2:
+                    continue  # a list of other keys, not of values
+                if _numeric_items(items) and len(items) < 3:
+                    continue
+                if prio > best_prio:
+                    best, best_prio, ev.values_at = items, prio, i
             ranges = find_ranges(text)
             if ranges and unit.cells and len(ranges) == 1 and ranges[0].step is None:
                 row_step = _row_step(unit.cells, ranges[0].unit)
@@ -182,16 +176,74 @@ class Builder:
                 init = find_initial(text)
                 if init:
                     ev.initial, ev.initial_at = init, i
-                elif ev.values:
-                    m = re.search(r"\b(?:starts?|default|factory|initially)\b(.*)", text, re.I)
-                    if m:
-                        for v in ev.values:
-                            if re.search(rf"\b{re.escape(v)}\b", m.group(1), re.I):
-                                ev.initial, ev.initial_at = v, i
-                                break
+        if best is None:
+            best = self._table_column(tokens)
+            if best:
+                ev.values_at = self._table_at
+        if best is not None:
+            ev.values = best if _numeric_items(best) else [v.lower() for v in best]
+            self._initial_from_values(ev, tokens)
         if ev.values and ev.ranges and _numeric_items(ev.values):
             ev.values = None  # "between 35 % and 85 %" is a range, not a two-item list
         return ev
+
+    def _lists(self, i: int, mention: bool, tokens: list[str]) -> list[tuple[list[str], float]]:
+        """Candidate value lists at unit ``i`` with a priority (arrows beat prose, prose in the
+        sentence naming the key beats prose nearby, a table the sentence introduces...)."""
+        units = self.manual.units
+        unit = units[i]
+        text = unit.text
+        out: list[tuple[list[str], float]] = []
+        found = find_list(text)
+        if found:
+            out.append((found[0], 3.0 if found[1] == "arrows" else 2.0 if mention else 1.0))
+        run = find_number_run(text)
+        if run:
+            out.append((run, 2.2 if mention else 1.2))
+        if text.rstrip().endswith((":", "order")) or text == unit.heading:
+            bullets = _bullet_items(units, i)
+            if bullets:
+                out.append((bullets, 1.5))
+            column = _next_table_column(units, i)
+            if column:
+                out.append((column, 2.5))
+        return out
+
+    _table_at: int | None = None
+
+    def _table_column(self, tokens: list[str]) -> list[str] | None:
+        """The first column of a table headed by the control's own word (a programme table)."""
+        tw = {w for t in tokens for w in words(t.replace("_", " ")) if len(w) >= 4}
+        tw |= {
+            w for t in tokens if t in self.labels for w in words(self.labels[t].text) if len(w) >= 4
+        }
+        if not tw:
+            return None
+        units = self.manual.units
+        for i, unit in enumerate(units):
+            if unit.cells and not unit.header:  # a header row
+                hw = words(unit.cells[0])
+                if hw and any(h[:6] == w[:6] for h in hw for w in tw):
+                    column = _next_table_column(units, i - 1)
+                    if column:
+                        self._table_at = i
+                        return column
+        return None
+
+    def _initial_from_values(self, ev: Evidence, tokens: list[str]) -> None:
+        if ev.initial is not None or not ev.values:
+            return
+        for i in self.context(tokens):
+            m = re.search(
+                r"\b(?:starts?|default|factory|initially|normally)\b(.*)",
+                self.manual.units[i].text,
+                re.I,
+            )
+            if m:
+                for v in ev.values:
+                    if re.search(rf"\b{re.escape(v)}\b", m.group(1), re.I):
+                        ev.initial, ev.initial_at = v, i
+                        return
 
     # --- variables --------------------------------------------------------------------------
 
@@ -323,13 +375,9 @@ class Builder:
 
 
 def _numeric_items(items: list[str]) -> bool:
-    return (
-        all(
-            number(re.sub(r"[^\d.,a-z ]", "", i.lower()).split()[0] if i.split() else i) is not None
-            for i in items
-        )
-        if items
-        else False
+    """Every item is a number, perhaps with a short unit ("40", "35 %", "2h")."""
+    return bool(items) and all(
+        re.fullmatch(r"\s*\d+(?:[.,]\d+)?\s*[^\s\d]{0,4}\s*", i) for i in items
     )
 
 
@@ -348,6 +396,20 @@ def _row_step(cells: tuple[str, ...], unit: str) -> float | None:
             base = {"s": 1, "min": 60, "h": 3600}.get(unit, 0)
             return q[0] / base if base else None
     return None
+
+
+def _next_table_column(units: list[Unit], i: int) -> list[str]:
+    """The first cells of the table that starts right after unit ``i`` (header skipped)."""
+    k = i + 1
+    if k < len(units) and units[k].cells and not units[k].header:
+        k += 1  # the header row
+    items: list[str] = []
+    while k < len(units) and units[k].cells and units[k].header:
+        cell = re.sub(r"^\s*\d{1,2}[.)]?\s+(?=\D)", "", units[k].cells[0]).strip(" *")
+        if cell and len(cell) <= 24 and cell not in items:
+            items.append(cell)
+        k += 1
+    return items if len(items) >= 2 else []
 
 
 def _bullet_items(units: list[Unit], i: int) -> list[str]:

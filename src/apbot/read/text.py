@@ -120,7 +120,16 @@ def parse_manual(text: str) -> Manual:
         para_bullet = False
         para_step = None
 
+    fenced = False
     for number, raw in enumerate(raw_lines, start=1):
+        if raw.strip().startswith("```"):
+            flush()
+            fenced = not fenced
+            continue
+        if fenced:  # a drawing of the panel: each line on its own, never joined into prose
+            if raw.strip():
+                units.append(Unit(number, raw.strip(), heading=heading))
+            continue
         line = _strip_markup(raw).rstrip()
         stripped = line.strip()
         if not stripped or re.fullmatch(r"[-=_*~`#]{3,}", stripped):

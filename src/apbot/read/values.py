@@ -167,7 +167,7 @@ def _clean_item(item: str) -> str:
 
 
 def _value_like(item: str, caps_context: bool) -> bool:
-    if not item or len(item) > 24:
+    if not item or len(item) > 24 or re.search(r"[()\[\]{}]", item):
         return False
     ws = item.split()
     if len(ws) > 3 or ws[0].lower() in _STOP_WORDS:
@@ -201,6 +201,29 @@ def find_list(text: str) -> tuple[list[str], str] | None:
             numeric = all(re.fullmatch(rf"{NUM}\s*{UNIT}?", i, re.I) for i in items)
             if caps >= 2 or numeric or lower_ok:
                 return _dedupe(items), "list"
+    return None
+
+
+_RUN_CUE = re.compile(
+    r"\b(?:printed|marked|labell?ed|reads?|positions?|settings?|scale|steps?|values?|levels?)\b"
+    r"\s*(?:are|is|with|from)?\s*:?\s*(.*)",
+    re.IGNORECASE,
+)
+
+
+def find_number_run(text: str) -> list[str] | None:
+    """Numbers printed in a row after a cue ("marked 20 30 40 60 90"), in their order."""
+    for m in _RUN_CUE.finditer(text):
+        tokens = re.findall(r"[^\s,;]+", m.group(1))
+        run: list[str] = []
+        for token in tokens:
+            token = token.strip(".*")
+            if re.fullmatch(r"\d+(?:[.,]\d+)?", token):
+                run.append(token)
+            else:
+                break
+        if len(run) >= 3:
+            return run
     return None
 
 
