@@ -153,7 +153,7 @@ class Builder:
                     continue
                 if prio > best_prio:
                     best, best_prio, ev.values_at = items, prio, i
-            ranges = find_ranges(text)
+            ranges = [r for r in find_ranges(text) if _fits(r.unit, tokens)]
             if ranges and unit.cells and len(ranges) == 1 and ranges[0].step is None:
                 row_step = _row_step(unit.cells, ranges[0].unit)
                 if row_step:
@@ -176,6 +176,18 @@ class Builder:
                 init = find_initial(text)
                 if init:
                     ev.initial, ev.initial_at = init, i
+        for t in tokens:
+            label = self.labels[t].text if t in self.labels else ""
+            if not label or best_prio >= 2.5 or not re.search(r"[A-Z]", label):
+                continue
+            pattern = re.compile(
+                rf"\b{re.escape(label)}\s+([A-Z0-9]{{1,6}}(?:/[A-Z0-9]{{1,6}})+)\b"
+            )
+            for i, unit in enumerate(units):
+                m = pattern.search(unit.text)
+                if m:  # "FAN HI/LO": the panel prints the values next to the name
+                    best, best_prio, ev.values_at = m.group(1).split("/"), 2.5, i
+                    break
         if best is None:
             best = self._table_column(tokens)
             if best:
@@ -183,8 +195,6 @@ class Builder:
         if best is not None:
             ev.values = best if _numeric_items(best) else [v.lower() for v in best]
             self._initial_from_values(ev, tokens)
-        if ev.values and ev.ranges and _numeric_items(ev.values):
-            ev.values = None  # "between 35 % and 85 %" is a range, not a two-item list
         return ev
 
     def _lists(self, i: int, mention: bool, tokens: list[str]) -> list[tuple[list[str], float]]:
@@ -398,6 +408,22 @@ def _row_step(cells: tuple[str, ...], unit: str) -> float | None:
     return None
 
 
+def _fits(unit: str, tokens: list[str]) -> bool:
+    """A range's unit can belong to the control: no minutes for a temperature, no degrees for a
+    timer (the sentence after a key often gives a neighbouring setting's range)."""
+    expected = {_unit_from_words(t) for t in tokens} - {""}
+    if not expected or not unit:
+        return True
+    timeish = {"s", "min", "h"}
+    if expected & {"°C"}:
+        return unit in ("°C", "°F", "")
+    if expected & {"min"}:
+        return unit in timeish
+    if expected & {"%"}:
+        return unit == "%"
+    return True
+
+
 def _next_table_column(units: list[Unit], i: int) -> list[str]:
     """The first cells of the table that starts right after unit ``i`` (header skipped)."""
     k = i + 1
@@ -406,6 +432,8 @@ def _next_table_column(units: list[Unit], i: int) -> list[str]:
     items: list[str] = []
     while k < len(units) and units[k].cells and units[k].header:
         cell = re.sub(r"^\s*\d{1,2}[.)]?\s+(?=\D)", "", units[k].cells[0]).strip(" *")
+        if find_ranges(cell) or not re.search(r"[A-Za-z]", cell):
+            return []  # a column of ranges or bare numbers is not a list of names
         if cell and len(cell) <= 24 and cell not in items:
             items.append(cell)
         k += 1

@@ -223,12 +223,7 @@ def assign(b: Builder) -> None:
         lab = label(key.controls[0])
         if ev.values and len(ev.values) >= 2 and set(ev.values) != {"on", "off"}:
             if _numeric_list(ev.values):
-                ev2 = Evidence(
-                    ranges=[_list_range(ev.values)],
-                    range_at=ev.values_at,
-                    step=_list_step(ev.values),
-                    step_at=ev.values_at,
-                )
+                ev2 = _list_evidence(ev)
                 var = b.add_number(name, lab, ev2, cyclic=True)
             else:
                 var = b.add_discrete(name, ev.values, lab, ev)
@@ -363,6 +358,8 @@ def assign(b: Builder) -> None:
         if ev.values and not _numeric_list(ev.values):
             var = b.add_discrete(token, ev.values, lab, ev)
             b.note(f"variables.{var}.values", ", ".join(b.variables[var]["values"]), ev.values_at)
+        elif ev.values:
+            var = b.add_number(token, lab, _list_evidence(ev), cyclic=False)
         else:
             var = b.add_number(token, lab, ev, cyclic=False)
         eff = {**{a: "next" for a in cw}, **{a: "prev" for a in ccw}}
@@ -516,6 +513,18 @@ def _numeric_list(values: list[str]) -> bool:
 def _nums(values: list[str]) -> list[float]:
     found = [re.match(r"\d+(?:[.,]\d+)?", v.strip()) for v in values]
     return sorted({float(m.group(0).replace(",", ".")) for m in found if m})
+
+
+def _list_evidence(ev: Evidence) -> Evidence:
+    """A printed row of numbers as a range with the smallest gap as its step."""
+    return Evidence(
+        ranges=[_list_range(ev.values or [])],
+        range_at=ev.values_at,
+        step=_list_step(ev.values or []),
+        step_at=ev.values_at,
+        initial=ev.initial,
+        initial_at=ev.initial_at,
+    )
 
 
 def _list_range(values: list[str]) -> Any:

@@ -36,10 +36,10 @@ STEP_RE = re.compile(
     re.IGNORECASE,
 )
 _ARROW = re.compile(r"\s*(?:→|->|⇒|>|»|⟶)\s*")
-_CUE = re.compile(
-    r"(?:\bbetween|\bamong|\bchoose(?: from)?|\bselect(?:s| from)?|\bcycles?(?: through)?|"
+_CUE = re.compile(  # a lookahead, so that every cue in a sentence is tried
+    r"(?=(?:\bbetween|\bamong|\bchoose(?: from)?|\bselect(?:s| from)?|\bcycles?(?: through)?|"
     r"\boptions?(?: are)?|\bsettings?(?: are)?|\blevels?(?: are)?|\bmodes?(?: are)?|\border|"
-    r"\bpositions?(?: are)?|\bpick|\bsteps? through|\bchanges?|:)\s+(.*)",
+    r"\bpositions?(?: are)?|\bpick|\bsteps? through|\bchanges?|:)\s+(.*))",
     re.IGNORECASE,
 )
 _STOP_WORDS = {"the", "a", "an", "your", "this", "that", "it", "you", "to", "is", "are", "of"}
@@ -192,7 +192,7 @@ def find_list(text: str) -> tuple[list[str], str] | None:
         segment = re.split(r"[.;]\s|\s[—–]\s|\bwhile\b|\bwhen\b|\bto (?!\d)", m.group(1))[0]
         items = [
             _clean_item(p)
-            for p in re.split(r",\s*|\s*/\s*|\s*[·•|]\s*|\s+or\s+|\s+and\s+", segment)
+            for p in re.split(r",\s*|\s*/\s*|\s*[·•|]\s*|\s{2,}|\s+or\s+|\s+and\s+", segment)
         ]
         items = [i for i in items if i]
         caps = sum(1 for i in items if i.upper() == i and any(c.isalpha() for c in i))
@@ -201,29 +201,43 @@ def find_list(text: str) -> tuple[list[str], str] | None:
             numeric = all(re.fullmatch(rf"{NUM}\s*{UNIT}?", i, re.I) for i in items)
             if caps >= 2 or numeric or lower_ok:
                 return _dedupe(items), "list"
+        if caps >= 3:  # names in capitals, then the prose that describes the first one
+            head = []
+            for item in items:
+                if not _value_like(item, True):
+                    break
+                head.append(item)
+            if len(head) >= 3:
+                return _dedupe(head), "list"
     return None
 
 
-_RUN_CUE = re.compile(
-    r"\b(?:printed|marked|labell?ed|reads?|positions?|settings?|scale|steps?|values?|levels?)\b"
-    r"\s*(?:are|is|with|from)?\s*:?\s*(.*)",
+_RUN_CUE = re.compile(  # a lookahead: every cue is tried
+    r"(?=\b(?:printed|marked|markings?|labell?ed|reads?|positions?|settings?|scale|steps?|values?"
+    r"|levels?)\b[^:.;]{0,30}?:?\s*(.*))",
     re.IGNORECASE,
 )
 
 
 def find_number_run(text: str) -> list[str] | None:
-    """Numbers printed in a row after a cue ("marked 20 30 40 60 90"), in their order."""
+    """Numbers printed in a row after a cue ("marked 20 30 40 60 90"), in their order; a leading
+    OFF reads as 0, another leading word (a named end position) is skipped."""
     for m in _RUN_CUE.finditer(text):
-        tokens = re.findall(r"[^\s,;]+", m.group(1))
-        run: list[str] = []
-        for token in tokens:
-            token = token.strip(".*")
-            if re.fullmatch(r"\d+(?:[.,]\d+)?", token):
-                run.append(token)
-            else:
-                break
-        if len(run) >= 3:
-            return run
+        tokens = [t.strip(".*:") for t in re.findall(r"[^\s,;]+", m.group(1))][:40]
+        for start in range(min(8, len(tokens))):
+            run: list[str] = []
+            rest = tokens[start:]
+            if rest and re.fullmatch(r"[A-Z][A-Z-]{1,9}", rest[0]):
+                if rest[0].lower() == "off":
+                    run.append("0")
+                rest = rest[1:]
+            for token in rest:
+                if re.fullmatch(r"\d+(?:[.,]\d+)?", token):
+                    run.append(token)
+                else:
+                    break
+            if len(run) >= 3:
+                return run
     return None
 
 
