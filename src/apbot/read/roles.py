@@ -449,16 +449,8 @@ def _pad_group(b: Builder, group: list[ActionInfo], label: Any, first_mention: A
         first_mention([g.token for g in group]),
     )
     b.note(f"variables.{var}.initial", f"starts at {values[0]} (the manual does not say)")
-    b.feature(
-        f"select_{var}",
-        [
-            {
-                "actions": [k.name for k in group],
-                "variable": var,
-                "effect": {k.name: {"to": v} for k, v in zip(group, values, strict=True)},
-            }
-        ],
-    )
+    for key, value in zip(group, values, strict=True):  # one go-to feature per key
+        b.feature(key.token, [{"actions": [key.name], "variable": var, "effect": {"to": value}}])
 
 
 def _keypad_entry(spec: dict[str, Any]) -> None:
@@ -550,12 +542,21 @@ def _dial_values(b: Builder, token: str) -> bool:
     return bool(ev.values or ev.ranges)
 
 
+PAD_NOUNS = re.compile(
+    r"\b(?:programs?|programmes?|menus?|modes?|functions?|cycles?|courses?|presets?|foods?|"
+    r"recipes?|dish(?:es)?|auto\w*)\b",
+    re.IGNORECASE,
+)
+
+
 def _groups(
     b: Builder, keys: list[ActionInfo], tables_only: bool = False
 ) -> list[list[ActionInfo]]:
-    """Keys whose labels appear together in one sentence, list or table (≥2 each)."""
+    """Keys the manual lists together as the choices of one thing: named in one sentence, or in
+    the first cells of one table, that also says what they choose (a programme, a menu…)."""
     if len(keys) < 2:
         return []
+    units = b.manual.units
     parent = {k.name: k.name for k in keys}
 
     def find(x: str) -> str:
@@ -563,22 +564,27 @@ def _groups(
             x = parent[x]
         return x
 
-    for unit_index in range(0 if tables_only else len(b.manual.units)):
+    for unit_index in range(0 if tables_only else len(units)):
+        if not PAD_NOUNS.search(units[unit_index].text):
+            continue
         present = [k for k in keys if unit_index in b.labels[k.controls[0]].mentions]
         for k in present[1:]:
             parent[find(k.name)] = find(present[0].name)
     # table columns: labels in the first cells of consecutive rows
     rows: list[list[ActionInfo]] = []
     current: list[ActionInfo] = []
-    for unit in b.manual.units:
+    said = False
+    for unit in units:
         if unit.cells and unit.header:
+            if not current:  # a table of programmes: its first column is headed by what they are
+                said = bool(unit.header and PAD_NOUNS.search(unit.header[0]))
             first = unit.cells[0].upper()
-            hit = [k for k in keys if b.labels[k.controls[0]].text.upper() in first]
-            current += hit
+            current += [k for k in keys if b.labels[k.controls[0]].text.upper() in first]
         elif current:
-            rows.append(current)
+            if said:
+                rows.append(current)
             current = []
-    if current:
+    if current and said:
         rows.append(current)
     for row in rows:
         for k in row[1:]:

@@ -73,6 +73,43 @@ def _strip_markup(line: str) -> str:
     return line
 
 
+def _cells(line: str) -> tuple[str, ...]:
+    return tuple(c for c in re.split(r"\s{2,}|\t+", _strip_markup(line).strip()) if c)
+
+
+def _space_tables(lines: list[str]) -> dict[int, tuple[tuple[str, ...], bool]]:
+    """Tables drawn with spaces (text from a PDF): a header of three or more cells followed by
+    rows of two or more; a row's wrapped continuation line (one cell) is dropped.
+
+    Returns line number → (cells, is the header row)."""
+    out: dict[int, tuple[tuple[str, ...], bool]] = {}
+    i = 0
+    while i < len(lines):
+        head = _cells(lines[i])
+        if len(head) < 3 or "|" in lines[i] or len(lines[i]) > 200:
+            i += 1
+            continue
+        rows: list[int] = []
+        j = i + 1
+        while j < len(lines) and lines[j].strip():
+            cells = _cells(lines[j])
+            if len(cells) >= 2 and "|" not in lines[j]:
+                rows.append(j)
+            elif len(cells) != 1 or len(cells[0]) > 40:
+                break
+            j += 1
+        if len(rows) >= 2:
+            out[i + 1] = (head, True)
+            for r in rows:
+                out[r + 1] = (_cells(lines[r]), False)
+            for k in range(i + 1, j):
+                out.setdefault(k + 1, ((), False))
+            i = j
+        else:
+            i += 1
+    return out
+
+
 def parse_manual(text: str) -> Manual:
     """Split a manual into units; raise :class:`ReaderError` for input that is not text."""
     if not isinstance(text, str):
@@ -121,7 +158,17 @@ def parse_manual(text: str) -> Manual:
         para_step = None
 
     fenced = False
+    spaced = _space_tables(raw_lines)
     for number, raw in enumerate(raw_lines, start=1):
+        if number in spaced:
+            flush()
+            cells, is_header = spaced[number]
+            if is_header:
+                header = cells
+                units.append(Unit(number, " | ".join(cells), cells, (), heading=heading))
+            elif cells:
+                units.append(Unit(number, " | ".join(cells), cells, header, heading=heading))
+            continue
         if raw.strip().startswith("```"):
             flush()
             fenced = not fenced
