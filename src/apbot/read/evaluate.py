@@ -256,3 +256,49 @@ def evaluate(pairs: Iterable[tuple[str, str, list[str], ApplianceModel]]) -> Sui
         overall.add(score)
         count += 1
     return SuiteScore(per, overall, spent, count)
+
+
+def translate_goal(
+    read: ApplianceModel, true: ApplianceModel, goal: dict[str, Any]
+) -> dict[str, Any]:
+    """A true goal in the read model's names, through the variable alignment.
+
+    PRIVILEGED: it uses the ground truth, so it serves only to *measure* the reader in the
+    closed loop (the agent on a read belief, given the goal in the belief's own words); a
+    method must never see it. A variable without a partner keeps its true name (the agent's
+    finder looks for settings its belief lacks); a value is written the read variable's way
+    when the read domain has it, else passed as the truth writes it.
+    """
+    from apbot.model.goal import parse_goal
+
+    back = {t: r for r, t in align_variables(read, true).items()}
+    canonical = parse_goal(true, goal)
+    out: dict[str, Any] = {}
+    for name, value in canonical.items():
+        target = back.get(name, name)
+        if target not in read.variables:
+            out[target] = goal[name]
+            continue
+        spec = true.variables[name]
+        key = next(iter(value_set_of(spec, value)))
+        chosen: Any = goal[name]
+        try:
+            for candidate in all_values(read.variables[target]):
+                if key in value_set_of(read.variables[target], candidate):
+                    chosen = candidate
+                    break
+        except Exception:  # a domain that cannot be listed: keep the truth's spelling
+            pass
+        out[target] = chosen
+    return out
+
+
+def value_set_of(spec: Any, value: Any) -> set[str]:
+    """One value as :func:`value_set` would write it (for comparing across models)."""
+    if isinstance(spec, TimeVariable):
+        return {f"t{parse_hms(str(value))}"}
+    if isinstance(spec, DiscreteVariable):
+        text = normalise_text(str(value))
+        number = re.fullmatch(r"(\d+(?:\.\d+)?)\s*[a-z%°]*", text)
+        return {f"{float(number.group(1)):g}" if number else text}
+    return {f"{float(value):g}"}
