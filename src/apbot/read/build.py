@@ -284,16 +284,44 @@ class Builder:
             "label": label,
         }
         self.note(f"variables.{name}", "an on/off setting", at)
-        if at is not None or first == "off":
+        lamp = self.lamp_unit(label)
+        if lamp is not None:  # only a lamp the manual names: a wrong lamp misleads the reading
             self.indicators.append(name)
+            self.note(f"display.indicators.{name}", "a lamp shows it", lamp)
         return name
+
+    def lamp_unit(self, label: str) -> int | None:
+        """A sentence saying the label lights up on the panel (a lamp, symbol or indicator)."""
+        if not label:
+            return None
+        pattern = re.compile(rf"(?<![A-Za-z0-9]){re.escape(label)}(?![A-Za-z0-9])")
+        cue = re.compile(
+            r"\b(?:lamps?|lights? up|lit|indicators?|symbols?|icons?|LEDs?|appears?|shows?|"
+            r"glows?)\b",
+            re.IGNORECASE,
+        )
+        for i, unit in enumerate(self.manual.units):
+            if pattern.search(unit.text) and cue.search(unit.text):
+                return i
+        return None
 
     def add_number(self, name: str, label: str, ev: Evidence, cyclic: bool) -> str:
         """A numeric or time variable from the ranges and steps read (guessed where absent)."""
         name = self.unique(name, self.variables)
         subject = f"variables.{name}"
         ranges = list(ev.ranges)
-        if not ranges:
+        if "clock" in words(name.replace("_", " ")) and any(
+            r.unit not in ("s", "h") for r in ranges
+        ):
+            ranges = []  # a clock's range is the day, whatever numbers stand nearby
+        if not ranges and "clock" in words(name.replace("_", " ")):
+            twelve = any(
+                re.search(r"\b12[- ]?h(?:ou)?r|\bAM\b|\bPM\b", u.text) for u in self.manual.units
+            )
+            low, high = (3600, 12 * 3600 + 59 * 60) if twelve else (0, 23 * 3600 + 59 * 60)
+            self.note(subject, "a clock: the time of day (its range is the clock's, not read)")
+            ranges = [Range(low, high, "s", 60)]
+        elif not ranges:
             unit = ev.step[1] if ev.step else _unit_from_words(name)
             low, high = {"": (0, 10), "h": (0, 12), "min": (1, 60), "°C": (30, 100)}.get(
                 unit, (0, 100)

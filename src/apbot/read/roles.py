@@ -141,7 +141,8 @@ def assign(b: Builder) -> None:
     if starts or stops:
         var = b.unique("running", b.variables)
         b.variables[var] = {"type": "discrete", "values": ["off", "on"], "label": "RUN"}
-        b.indicators.append(var)
+        if b.lamp_unit("RUN") is not None:
+            b.indicators.append(var)
         b.note(
             f"variables.{var}",
             "the appliance runs after START",
@@ -237,6 +238,10 @@ def assign(b: Builder) -> None:
             b.note(f"features.set_{var}", "each press steps to the next value", ev.each_press_at)
         elif ev.ranges or (ev.step and ev.toggle_at is None):
             entry_keys.append(key)
+        elif (
+            set(words(key.token)) & TIME_WORDS and ev.toggle_at is None and (shared_pair or digits)
+        ):
+            entry_keys.append(key)  # a clock or timer key: a time entered after it
         elif ev.toggle_at is not None or (ev.values and set(ev.values) == {"on", "off"}):
             var = b.add_toggle(name, lab, ev.toggle_at)
             b.feature(var, [{"actions": [key.name], "variable": var, "effect": "toggle"}])
@@ -269,10 +274,8 @@ def assign(b: Builder) -> None:
         ev = evidence[key.name]
         name = key.token if key.skill == "press" else f"{key.token}_hold"
         lab = label(key.controls[0])
-        timeish = (
-            bool(ev.ranges and ev.ranges[0].unit in ("s", "min", "h"))
-            or "time" in name
-            or "timer" in name
+        timeish = bool(ev.ranges and ev.ranges[0].unit in ("s", "min", "h")) or bool(
+            set(words(name)) & TIME_WORDS
         )
         if digits and (timeish or not steppers):
             var = b.add_number(
@@ -382,6 +385,7 @@ def assign(b: Builder) -> None:
         )
 
 
+TIME_WORDS = {"time", "timer", "clock", "delay", "duration", "preset", "reserve", "ready"}
 FUNCTION_WORDS = {
     *SETTING_NOUNS,
     *GROUP_NOUNS,
