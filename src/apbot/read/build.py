@@ -39,6 +39,8 @@ SETTING_NOUNS = (
     "temperature", "humidity", "timer", "time", "delay", "level", "power", "speed", "volume",
     "weight", "programme", "program", "mode", "setting", "heat", "strength", "size",
 )  # fmt: skip
+CHOICE_WORDS = {"programme", "program", "menu", "mode", "function", "cycle", "course", "dial",
+                "knob", "selector", "select"}  # fmt: skip
 GROUP_NOUNS = ("programme", "program", "menu", "mode", "function", "cycle", "course", "preset")
 RUNNING_RE = re.compile(
     r"\b(?:while|during|when)\b[^.]*\b(?:running|cooking|operat\w*|works?|working|heating|"
@@ -307,6 +309,12 @@ class Builder:
 
     def add_number(self, name: str, label: str, ev: Evidence, cyclic: bool) -> str:
         """A numeric or time variable from the ranges and steps read (guessed where absent)."""
+        if not ev.ranges and set(words(name.replace("_", " "))) & CHOICE_WORDS:
+            # a programme/mode selector the manual lists no values for: a few placeholder
+            # choices the loop replaces with what the display shows (a number would stop it)
+            var = self.add_discrete(name, ["1", "2", "3", "4", "5"], label, None)
+            self.note(f"variables.{var}.values", "placeholders: the manual lists no choices")
+            return var
         name = self.unique(name, self.variables)
         subject = f"variables.{name}"
         ranges = list(ev.ranges)

@@ -35,7 +35,7 @@ from apbot.model.domain import all_values
 from apbot.model.schema import ApplianceModel, DiscreteVariable, TimeVariable
 from apbot.model.values import normalise_text, parse_hms
 
-MIN_VARIABLE_SCORE = 0.45
+MIN_VARIABLE_SCORE = 0.4  # a name match of 0.8 alone is enough: "timer" for "start_timer"
 MIN_FEATURE_JACCARD = 0.2
 
 

@@ -220,7 +220,7 @@ def assign(b: Builder) -> None:
     silent: list[ActionInfo] = []
     for key in keys:
         ev = evidence[key.name]
-        name = key.token if key.skill == "press" else f"{key.token}_hold"
+        name = _var_name(b, key)
         lab = label(key.controls[0])
         if ev.values and len(ev.values) >= 2 and set(ev.values) != {"on", "off"}:
             if _numeric_list(ev.values):
@@ -272,7 +272,7 @@ def assign(b: Builder) -> None:
     used_digits = False
     for key in entry_keys:
         ev = evidence[key.name]
-        name = key.token if key.skill == "press" else f"{key.token}_hold"
+        name = _var_name(b, key)
         lab = label(key.controls[0])
         timeish = bool(ev.ranges and ev.ranges[0].unit in ("s", "min", "h")) or bool(
             set(words(name)) & TIME_WORDS
@@ -376,7 +376,7 @@ def assign(b: Builder) -> None:
 
     # whatever is left: a toggle the closed loop can repair
     for key in silent:
-        name = key.token if key.skill == "press" else f"{key.token}_hold"
+        name = _var_name(b, key)
         var = b.add_toggle(name, label(key.controls[0]), None)
         b.feature(var, [{"actions": [key.name], "variable": var, "effect": "toggle"}])
         b.note(
@@ -479,6 +479,20 @@ def _keypad_entry(spec: dict[str, Any]) -> None:
         if end > parse_hms(lo):
             fixed.append([lo, f"{end // 3600:02d}:{end % 3600 // 60:02d}:00", step])
     spec["ranges"] = fixed or [["00:00:00", "23:59:00", 60]]
+
+
+def _var_name(b: Builder, key: ActionInfo) -> str:
+    """The setting's name: the key's printed name when it spells out the action's word
+    ("KITCHEN TIMER" for timer, "WATER LEVEL" for water), else the action's word."""
+    base = key.token if key.skill == "press" else f"{key.token}_hold"
+    lab = b.labels.get(key.controls[0])
+    if key.skill != "press" or lab is None or lab.line is None:
+        return base
+    lw = [w for w in words(lab.text) if w.isalpha()]
+    tw = words(key.token.replace("_", " "))
+    if 1 < len(lw) <= 3 and all(any(x == t or x.startswith(t) for x in lw) for t in tw):
+        return "_".join(lw)
+    return base
 
 
 def _dedupe(items: list[str]) -> list[str]:

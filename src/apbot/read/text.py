@@ -86,6 +86,10 @@ def _space_tables(lines: list[str]) -> dict[int, tuple[tuple[str, ...], bool]]:
     i = 0
     while i < len(lines):
         head = _cells(lines[i])
+        before = lines[i - 1].strip() if i else ""
+        if before and not re.search(r"[.:!?]$", before) and not before.isupper():
+            i += 1  # the line goes on with a sentence from the line before: not a table header
+            continue
         if len(head) < 3 or "|" in lines[i] or len(lines[i]) > 200:
             i += 1
             continue
