@@ -69,10 +69,8 @@ def main() -> None:
             row[0] += ok_read
             row[1] += ok_true
             row[2] += 1
-            print(
-                f"{appliance.id}/{task.id}: read {'ok' if ok_read else '--'}  true {'ok' if ok_true else '--'}",
-                flush=True,
-            )
+            mark = {True: "ok", False: "--"}
+            print(f"{appliance.id}/{task.id}: read {mark[ok_read]}  true {mark[ok_true]}")
     total = [sum(r[i] for r in won.values()) for i in range(3)]
     print(f"\n{'category':<18}{'SR read':>10}{'SR true':>10}{'tasks':>7}")
     for category, (r, t, n) in sorted(won.items()):

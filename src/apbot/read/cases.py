@@ -12,7 +12,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
-from apbot.read.build import Builder
+from apbot.read.build import CHOICE_WORDS, Builder
 from apbot.read.labels import words
 from apbot.read.text import Unit
 from apbot.read.values import find_ranges, number, unit_name
@@ -71,17 +71,22 @@ def _matches(header: str, name: str, spec: dict[str, Any]) -> bool:
 
 def apply_cases(b: Builder) -> None:
     """Turn read variables into programme-dependent ones where a table says so."""
+    fixed = {v for g in b.guards for v in g["when"]}  # power, lock, running: never per programme
+    parents: set[str] = set()
+    children: set[str] = set()
     for header, rows in _tables(b.manual.units):
         if len(rows) < 2:
             continue
-        parent = None
+        parent, best = None, (1, False)
         for name, spec in b.variables.items():
             if spec.get("type") != "discrete" or spec.get("depends_on") or len(spec["values"]) < 3:
                 continue
+            if name in fixed or name in children:
+                continue
             hits = sum(bool(_parent_values(r.cells[0], spec["values"])) for r in rows)
-            if hits >= 2:
-                parent = name
-                break
+            score = (hits, bool(set(words(name.replace("_", " "))) & CHOICE_WORDS))
+            if hits >= 2 and score > best:
+                parent, best = name, score
         if parent is None:
             continue
         pvalues = b.variables[parent]["values"]
@@ -89,12 +94,12 @@ def apply_cases(b: Builder) -> None:
             if set(words(header[column])) & DEFAULT_WORDS:
                 continue
             for name, spec in list(b.variables.items()):
-                if (
-                    name == parent
-                    or spec.get("depends_on")
-                    or not _matches(header[column], name, spec)
-                ):
+                if name == parent or name in fixed | parents or spec.get("depends_on"):
                     continue
+                if not _matches(header[column], name, spec):
+                    continue
+                if spec.get("type") == "discrete" and _ranges_column(rows, column):
+                    _as_number(b, name, spec, rows, column)  # the table says it is an amount
                 cases = _cases(spec, rows, column, pvalues)
                 if len(cases) >= 2:
                     _defaults(spec, cases, header, rows, column, pvalues)
@@ -102,6 +107,8 @@ def apply_cases(b: Builder) -> None:
                         spec.pop(key, None)
                     spec["depends_on"] = parent
                     spec["cases"] = cases
+                    parents.add(parent)
+                    children.add(name)
                     _no_toggle(b, name, cases)
                     b.note(
                         f"variables.{name}.cases",
@@ -113,6 +120,27 @@ def apply_cases(b: Builder) -> None:
 
 def _hms(total: int) -> str:
     return f"{total // 3600:02d}:{total % 3600 // 60:02d}:{total % 60:02d}"
+
+
+def _ranges_column(rows: list[Unit], column: int) -> bool:
+    return sum(bool(column < len(r.cells) and find_ranges(r.cells[column])) for r in rows) >= 2
+
+
+def _as_number(b: Builder, name: str, spec: dict[str, Any], rows: list[Unit], column: int) -> None:
+    """Turn a read-as-discrete setting into the amount the table's ranges say it is."""
+    from apbot.read.build import Evidence
+
+    found = [find_ranges(r.cells[column]) for r in rows if column < len(r.cells)]
+    first = next(f[0] for f in found if f)
+    label = spec.get("label", name.upper())
+    del b.variables[name]
+    new = b.add_number(name, label, Evidence(ranges=[first]), cyclic=False)
+    if new != name:  # keep the name the features use
+        b.variables[name] = b.variables.pop(new)
+    spec.clear()
+    spec.update(b.variables[name])
+    b.variables[name] = spec
+    _no_toggle(b, name, {"x": {"values": []}})
 
 
 def _no_toggle(b: Builder, name: str, cases: dict[str, Any]) -> None:

@@ -170,7 +170,7 @@ def assign(b: Builder) -> None:
         for info in infos:
             if (
                 info.skill == "hold"
-                and info.name not in done
+                and info.name not in done | set(run_actions)
                 and info.token in {s.token for s in starts}
             ):
                 b.feature(
@@ -242,7 +242,9 @@ def assign(b: Builder) -> None:
             set(words(key.token)) & TIME_WORDS and ev.toggle_at is None and (shared_pair or digits)
         ):
             entry_keys.append(key)  # a clock or timer key: a time entered after it
-        elif ev.toggle_at is not None or (ev.values and set(ev.values) == {"on", "off"}):
+        elif (ev.values and set(ev.values) == {"on", "off"}) or (
+            ev.toggle_at is not None and not set(words(name)) & NUMERIC_WORDS
+        ):
             var = b.add_toggle(name, lab, ev.toggle_at)
             b.feature(var, [{"actions": [key.name], "variable": var, "effect": "toggle"}])
         else:
@@ -385,6 +387,10 @@ def assign(b: Builder) -> None:
         )
 
 
+NUMERIC_WORDS = {
+    "time", "timer", "delay", "clock", "humidity", "temperature", "temp", "level", "watt",
+    "speed", "weight", "volume", "duration", "hour", "min", "minute", "preset", "reserve",
+}  # fmt: skip  # settings that are amounts: "switch the timer off" does not make them toggles
 TIME_WORDS = {"time", "timer", "clock", "delay", "duration", "preset", "reserve", "ready"}
 FUNCTION_WORDS = {
     *SETTING_NOUNS,
