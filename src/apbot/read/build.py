@@ -298,8 +298,7 @@ class Builder:
             return None
         pattern = re.compile(rf"(?<![A-Za-z0-9]){re.escape(label)}(?![A-Za-z0-9])")
         cue = re.compile(
-            r"\b(?:lamps?|lights? up|lit|indicators?|symbols?|icons?|LEDs?|appears?|shows?|"
-            r"glows?)\b",
+            r"\b(?:display|screen|appears?|shows?|shown)\b",  # text on the display, not a lamp
             re.IGNORECASE,
         )
         for i, unit in enumerate(self.manual.units):

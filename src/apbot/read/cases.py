@@ -22,6 +22,7 @@ GENERIC = {
     "suggested", "default", "standard", "possible", "adjustable", "choices", "max", "min",
 }  # fmt: skip
 DEFAULT_WORDS = {"default", "standard", "preset", "initial", "factory"}
+ADVICE_WORDS = {"suggested", "recommended", "typical", "advised", "usual"}  # not limits
 
 
 def _tables(units: list[Unit]) -> list[tuple[tuple[str, ...], list[Unit]]]:
@@ -91,7 +92,7 @@ def apply_cases(b: Builder) -> None:
             continue
         pvalues = b.variables[parent]["values"]
         for column in range(1, len(header)):
-            if set(words(header[column])) & DEFAULT_WORDS:
+            if set(words(header[column])) & (DEFAULT_WORDS | ADVICE_WORDS):
                 continue
             for name, spec in list(b.variables.items()):
                 if name == parent or name in fixed | parents or spec.get("depends_on"):

@@ -532,12 +532,22 @@ def _nums(values: list[str]) -> list[float]:
 
 
 def _list_evidence(ev: Evidence) -> Evidence:
-    """A printed row of numbers as a range with the smallest gap as its step."""
+    """A printed row of numbers as piecewise ranges, exactly those numbers (equal gaps share a
+    piece: 20 30 40 60 90 is 20–40 by 10, 40–60 by 20, 60–90 by 30)."""
+    from apbot.read.values import Range, unit_name
+
+    nums = _nums(ev.values or [])
+    unit = unit_name(re.sub(r"[\d.,\s]", "", (ev.values or [""])[-1]))
+    pieces: list[Range] = []
+    for lo, hi in zip(nums, nums[1:], strict=False):
+        gap = round(hi - lo, 6)
+        if pieces and pieces[-1].step == gap:
+            pieces[-1] = Range(pieces[-1].low, hi, unit, gap)
+        else:
+            pieces.append(Range(lo, hi, unit, gap))
     return Evidence(
-        ranges=[_list_range(ev.values or [])],
+        ranges=pieces or [_list_range(ev.values or [])],
         range_at=ev.values_at,
-        step=_list_step(ev.values or []),
-        step_at=ev.values_at,
         initial=ev.initial,
         initial_at=ev.initial_at,
     )

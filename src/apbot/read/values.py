@@ -179,12 +179,27 @@ def _value_like(item: str, caps_context: bool) -> bool:
     return all(w[:1].isupper() or w[:1].isdigit() for w in ws) or len(ws) == 1
 
 
+_NUMBER_LIST = re.compile(
+    rf"(?<![\w.])(\d+(?:[.,]\d+)?(?:\s*,\s*\d+(?:[.,]\d+)?)*)\s*,?\s*(?:or|and)\s*"
+    rf"(\d+(?:[.,]\d+)?)\s*({UNIT})(?!\w)",
+    re.IGNORECASE,
+)
+
+
 def find_list(text: str) -> tuple[list[str], str] | None:
     """A list of values in one sentence, and how it was written ("arrows", "list")."""
+    numbers = _NUMBER_LIST.search(text)
+    if numbers:  # "3, 6 or 9 hours"
+        items = [*re.split(r"\s*,\s*", numbers.group(1)), numbers.group(2)]
+        if len(items) >= 3:
+            return [f"{i} {numbers.group(3)}" for i in items], "list"
     parts = [_clean_item(p) for p in _ARROW.split(text)]
     if len(parts) >= 3 or (len(parts) == 2 and all(_value_like(p, True) for p in parts)):
-        head = parts[0].split(":")[-1].split()  # "in this order: AUTO → ..."
-        parts[0] = _clean_item(" ".join(w for w in head if w.upper() == w) or parts[0])
+        head = parts[0].split(":")[-1].split()  # "in this order: AUTO → ...", "Clockwise: Cotton"
+        caps = [w for w in head if w.upper() == w and any(c.isalpha() for c in w)]
+        parts[0] = _clean_item(" ".join(caps) or " ".join(head[-2:]) or parts[0])
+        if len(head) > 3 and not caps:
+            parts[0] = _clean_item(head[-1])
         items = [p for p in parts if p]
         if all(_value_like(p, False) for p in items) and len(items) >= 2:
             return _dedupe(items), "arrows"
