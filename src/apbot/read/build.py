@@ -308,6 +308,8 @@ class Builder:
 
     def add_number(self, name: str, label: str, ev: Evidence, cyclic: bool) -> str:
         """A numeric or time variable from the ranges and steps read (guessed where absent)."""
+        if set(words(name.replace("_", " "))) & CHOICE_WORDS:  # a programme is not an amount
+            ev = Evidence(**{**ev.__dict__, "ranges": [r for r in ev.ranges if not r.unit]})
         if not ev.ranges and set(words(name.replace("_", " "))) & CHOICE_WORDS:
             # a programme/mode selector the manual lists no values for: a few placeholder
             # choices the loop replaces with what the display shows (a number would stop it)
@@ -465,13 +467,16 @@ def _next_table_column(units: list[Unit], i: int) -> list[str]:
     if k < len(units) and units[k].cells and not units[k].header:
         k += 1  # the header row
     items: list[str] = []
+    numbers = 0
     while k < len(units) and units[k].cells and units[k].header:
         cell = re.sub(r"^\s*\d{1,2}[.)]?\s+(?=\D)", "", units[k].cells[0]).strip(" *")
         if find_ranges(cell) or not re.search(r"[A-Za-z]", cell):
-            return []  # a column of ranges or bare numbers is not a list of names
+            numbers += 1
         if cell and len(cell) <= 24 and cell not in items:
             items.append(cell)
         k += 1
+    if numbers * 2 > len(items):
+        return []  # a column of ranges or bare numbers is not a list of names
     return items if len(items) >= 2 else []
 
 

@@ -379,6 +379,11 @@ def assign(b: Builder) -> None:
     # whatever is left: a toggle the closed loop can repair
     for key in silent:
         name = _var_name(b, key)
+        if set(words(name)) & NUMERIC_WORDS and key.skill == "press":
+            var = b.add_number(name, label(key.controls[0]), evidence[key.name], cyclic=True)
+            b.feature(f"set_{var}", [{"actions": [key.name], "variable": var, "effect": "next"}])
+            b.note(f"features.set_{var}", f"{key.name} steps an amount (the manual says no more)")
+            continue
         var = b.add_toggle(name, label(key.controls[0]), None)
         b.feature(var, [{"actions": [key.name], "variable": var, "effect": "toggle"}])
         b.note(
