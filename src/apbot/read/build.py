@@ -22,6 +22,7 @@ from apbot.read.values import (
     EACH_PRESS_RE,
     ON_OFF_RE,
     Range,
+    anchored_lists,
     find_initial,
     find_list,
     find_number_run,
@@ -178,6 +179,13 @@ class Builder:
                 init = find_initial(text)
                 if init:
                     ev.initial, ev.initial_at = init, i
+        if best_prio < 1.8:  # lists tied to the setting's own word anywhere in the manual
+            for t in tokens:
+                for w in [x for x in words(t.replace("_", " ")) if len(x) >= 4][:1]:
+                    for i, unit in enumerate(units):
+                        found = anchored_lists(unit.text, w)
+                        if found and best_prio < 1.8:
+                            best, best_prio, ev.values_at = found[0], 1.8, i
         for t in tokens:
             label = self.labels[t].text if t in self.labels else ""
             if not label or best_prio >= 2.5 or not re.search(r"[A-Z]", label):

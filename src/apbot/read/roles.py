@@ -206,6 +206,8 @@ def assign(b: Builder) -> None:
 
     # setting keys -------------------------------------------------------------------------
     keys = [i for i in infos if i.name not in done and not i.skill.startswith("turn")]
+    adders = [k for k in keys if k.skill == "press" and ADD_RE.match(k.token)]
+    keys = [k for k in keys if k not in adders]
     pads = [k for k in keys if k.skill == "press" and not set(words(k.token)) & FUNCTION_WORDS]
     for group in _groups(b, pads, tables_only=True):
         if len(group) >= 3:
@@ -329,14 +331,37 @@ def assign(b: Builder) -> None:
                     }
                 ],
             )
-    if digits and not used_digits:
-        var = b.add_number("time", "TIME", Evidence(ranges=[], step=(1, "s")), cyclic=False)
+    cooking = any(re.search(r"\bcook(?:ing)? time\b", u.text, re.I) for u in b.manual.units)
+    named_cook = any("cook" in v for v in b.variables)
+    direct: str | None = None
+    if digits and (not used_digits or (cooking and not named_cook)):
+        var = b.add_number(
+            "cook_time" if cooking else "time", "TIME", Evidence(ranges=[], step=(1, "s")), False
+        )
         spec = b.variables[var]
         spec["ranges"] = [["00:00:01", "01:39:59", 1]]
         spec["format"] = "mm:ss"
         spec["entry"] = {"format": "mm:ss"}
-        b.feature("enter_time", [{"actions": list(digits), "variable": var}])
-        b.note("features.enter_time", "the number keys enter a time directly")
+        b.feature(f"set_{var}", [{"actions": list(digits), "variable": var}])
+        b.note(f"features.set_{var}", "the number keys enter a time directly")
+        direct = var
+    for key in adders:
+        m = ADD_RE.match(key.token)
+        amount = int(m.group(2)) if m else 30
+        minutes = bool(m and m.group(3) and m.group(3).startswith("m"))
+        seconds_ = amount * (60 if minutes else 1)
+        target = direct or next(
+            (v for v, spec in b.variables.items() if spec.get("type") == "time"), None
+        )
+        if target is None:
+            target = b.add_number("cook_time", "TIME", Evidence(ranges=[], step=(1, "s")), False)
+        step = f"{seconds_ // 3600:02d}:{seconds_ % 3600 // 60:02d}:{seconds_ % 60:02d}"
+        effect = {"add": step} if b.variables[target].get("type") == "time" else {"add": amount}
+        b.feature(key.token, [{"actions": [key.name], "variable": target, "effect": effect}])
+        b.note(
+            f"features.{key.token}",
+            f"{key.name} adds {amount} {'min' if minutes else 's'} to {target}",
+        )
     for base, pair in pairs.items():
         if base == "":
             if not (pair["up"] and pair["down"]):
@@ -392,6 +417,7 @@ def assign(b: Builder) -> None:
         )
 
 
+ADD_RE = re.compile(r"^(add|plus|extra)_?(\d+)_?(s|sec|secs|seconds|m|min|mins|minutes)?$")
 NUMERIC_WORDS = {
     "time", "timer", "delay", "clock", "humidity", "temperature", "temp", "level", "watt",
     "speed", "weight", "volume", "duration", "hour", "min", "minute", "preset", "reserve",
@@ -544,7 +570,7 @@ def _list_evidence(ev: Evidence) -> Evidence:
     nums = _nums(ev.values or [])
     unit = unit_name(re.sub(r"[\d.,\s]", "", (ev.values or [""])[-1]))
     pieces: list[Range] = []
-    for lo, hi in zip(nums, nums[1:], strict=False):
+    for lo, hi in itertools.pairwise(nums):
         gap = round(hi - lo, 6)
         if pieces and pieces[-1].step == gap:
             pieces[-1] = Range(pieces[-1].low, hi, unit, gap)

@@ -180,9 +180,8 @@ def _value_like(item: str, caps_context: bool) -> bool:
 
 
 _NUMBER_LIST = re.compile(
-    rf"(?<![\w.])(\d+(?:[.,]\d+)?(?:\s*,\s*\d+(?:[.,]\d+)?)*)\s*,?\s*(?:or|and)\s*"
-    rf"(\d+(?:[.,]\d+)?)\s*({UNIT})(?!\w)",
-    re.IGNORECASE,
+    r"(?<![\w.])(\d+(?:[.,]\d+)?(?:\s*,\s*\d+(?:[.,]\d+)?)*)\s*,?\s*(?:or|and)\s*"
+    r"(\d+(?:[.,]\d+)?)\s*([A-Za-z%°]{1,8})?(?!\w)",
 )
 
 
@@ -191,14 +190,16 @@ def find_list(text: str) -> tuple[list[str], str] | None:
     numbers = _NUMBER_LIST.search(text)
     if numbers:  # "3, 6 or 9 hours"
         items = [*re.split(r"\s*,\s*", numbers.group(1)), numbers.group(2)]
+        unit = numbers.group(3) or ""
+        known = bool(unit) and bool(re.fullmatch(UNIT, unit, re.IGNORECASE))
         if len(items) >= 3:
-            return [f"{i} {numbers.group(3)}" for i in items], "list"
+            return [f"{i} {unit}" if known else i for i in items], "list"
     parts = [_clean_item(p) for p in _ARROW.split(text)]
     if len(parts) >= 3 or (len(parts) == 2 and all(_value_like(p, True) for p in parts)):
         head = parts[0].split(":")[-1].split()  # "in this order: AUTO → ...", "Clockwise: Cotton"
-        caps = [w for w in head if w.upper() == w and any(c.isalpha() for c in w)]
-        parts[0] = _clean_item(" ".join(caps) or " ".join(head[-2:]) or parts[0])
-        if len(head) > 3 and not caps:
+        capital = [w for w in head if w.upper() == w and any(c.isalpha() for c in w)]
+        parts[0] = _clean_item(" ".join(capital) or " ".join(head[-2:]) or parts[0])
+        if len(head) > 3 and not capital:
             parts[0] = _clean_item(head[-1])
         items = [p for p in parts if p]
         if all(_value_like(p, False) for p in items) and len(items) >= 2:
@@ -225,6 +226,26 @@ def find_list(text: str) -> tuple[list[str], str] | None:
             if len(head) >= 3:
                 return _dedupe(head), "list"
     return None
+
+
+def anchored_lists(text: str, word: str) -> list[list[str]]:
+    """Lists tied to a setting's word: "loaf weight (500 / 750 / 1000)", "a light, medium or
+    dark crust"."""
+    out: list[list[str]] = []
+    w = re.escape(word)
+    for m in re.finditer(rf"\b{w}\w*(?:\s+\w+){{0,2}}\s*\(([^()]{{3,80}})\)", text, re.I):
+        items = [_clean_item(i) for i in re.split(r"\s*/\s*|,\s*|\s+or\s+", m.group(1))]
+        if len(items) >= 2 and all(i and len(i) <= 16 and len(i.split()) <= 2 for i in items):
+            out.append(items)
+    pattern = (
+        r"\b(?:choose|select|set|pick)\s+(?:an?\s+|the\s+)?"
+        rf"((?:[\w-]+,\s*)+[\w-]+\s+or\s+[\w-]+)\s+{w}"
+    )
+    for m in re.finditer(pattern, text, re.I):
+        items = [_clean_item(i) for i in re.split(r",\s*|\s+or\s+", m.group(1))]
+        if len(items) >= 2:
+            out.append(items)
+    return out
 
 
 _RUN_CUE = re.compile(  # a lookahead: every cue is tried
