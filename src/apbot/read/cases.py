@@ -237,3 +237,43 @@ def _defaults(
                 if spec.get("type") == "discrete" and cell in case.get("values", []):
                     case["initial"] = cell
         break
+
+
+RESET_RE = re.compile(
+    r"\b(?:programmes?|programs?|menus?|modes?|presets?|functions?|cycles?|courses?)\b[^.]*"
+    r"\b(?:defaults?|standard values|reset|go(?:es)? back|return|wipes?|clear|lost|forget)"
+    r"|\b(?:defaults?|reset|go(?:es)? back|return|wipes?|clear|lost)\b[^.]*"
+    r"\b(?:programmes?|programs?|menus?|modes?|presets?|functions?|cycles?|courses?)\b",
+    re.IGNORECASE,
+)
+
+
+def apply_resets(b: Builder) -> None:
+    """ "Choosing a programme loads its defaults": the programme's steps reset the settings."""
+    at = next((i for i, u in enumerate(b.manual.units) if RESET_RE.search(u.text)), None)
+    if at is None:
+        return
+    fixed = {v for g in b.guards for v in g["when"]}
+    parents = {s.get("depends_on") for s in b.variables.values()} - {None}
+    choices = [
+        n
+        for n, s in b.variables.items()
+        if s.get("type") == "discrete"
+        and n not in fixed
+        and (n in parents or set(words(n.replace("_", " "))) & CHOICE_WORDS)
+    ]
+    if not choices:
+        return
+    choice = choices[0]
+    others = [
+        n
+        for n, s in b.variables.items()
+        if n != choice and n not in fixed and s.get("depends_on") is None and n != "running"
+    ]
+    if not others:
+        return
+    for steps in b.features.values():
+        for step in steps:
+            if step.get("variable") == choice:
+                step["reset"] = [n for n in others if n != step.get("variable")]
+    b.note(f"variables.{choice}", f"choosing it resets {', '.join(others)}", at)
