@@ -224,7 +224,13 @@ def assign(b: Builder) -> None:
         ev = evidence[key.name]
         name = _var_name(b, key)
         lab = label(key.controls[0])
-        if ev.values and len(ev.values) >= 2 and set(ev.values) != {"on", "off"}:
+        own_toggle = ev.toggle_at is not None and any(
+            ev.toggle_at in b.labels[c].mentions for c in key.controls if c in b.labels
+        )
+        if own_toggle and not set(words(name)) & NUMERIC_WORDS:
+            var = b.add_toggle(name, lab, ev.toggle_at)  # "press KEEP WARM to switch it on or off"
+            b.feature(var, [{"actions": [key.name], "variable": var, "effect": "toggle"}])
+        elif ev.values and len(ev.values) >= 2 and set(ev.values) != {"on", "off"}:
             if _numeric_list(ev.values):
                 ev2 = _list_evidence(ev)
                 var = b.add_number(name, lab, ev2, cyclic=True)
