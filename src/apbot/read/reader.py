@@ -16,7 +16,7 @@ from pydantic import ValidationError
 from apbot.model.schema import ApplianceModel
 from apbot.model.validate import check_model
 from apbot.read.actions import ActionInfo, parse_actions
-from apbot.read.build import Builder
+from apbot.read.build import CHOICE_WORDS, Builder
 from apbot.read.cases import apply_cases, apply_resets
 from apbot.read.labels import find_labels
 from apbot.read.report import Note, Report
@@ -100,7 +100,26 @@ def _action(info: ActionInfo) -> dict[str, Any]:
     return spec
 
 
+def _main_variable(b: Builder) -> str | None:
+    """What the display most likely shows when idle: the programme, else the first amount."""
+    fixed = {v for g in b.guards for v in g["when"]} | {"running"}
+    names = [n for n in b.variables if n not in fixed and not b.variables[n].get("depends_on")]
+    for name in names:
+        spec = b.variables[name]
+        if spec.get("type") == "discrete" and set(name.split("_")) & CHOICE_WORDS:
+            return name
+    return None  # an amount on an idle screen is too often wrong to predict (tried: worse)
+
+
 def _assemble(b: Builder, appliance_id: str, category: str) -> dict[str, Any]:
+    main = _main_variable(b)
+    idle = ""
+    if main is not None:
+        idle = "{" + main + "}"
+        b.note("display.idle", f"the display shows {main} when nothing is being set")
+        power = b.variables.get("power")
+        if power is not None and "show" not in power:
+            power["show"] = {"off": "", "on": idle}  # switching on shows the idle screen
     return {
         "appliance": {"id": appliance_id, "category": category, "name": "read from the manual"},
         "controls": _controls(b),
@@ -109,7 +128,7 @@ def _assemble(b: Builder, appliance_id: str, category: str) -> dict[str, Any]:
         "features": b.features,
         "guards": b.guards,
         "display": {
-            "idle": "",
+            "idle": idle,
             "indicators": [v for v in dict.fromkeys(b.indicators) if v in b.variables],
         },
     }

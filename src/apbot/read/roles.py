@@ -345,7 +345,7 @@ def assign(b: Builder) -> None:
             "cook_time" if cooking else "time", "TIME", Evidence(ranges=[], step=(1, "s")), False
         )
         spec = b.variables[var]
-        spec["ranges"] = [["00:00:01", "01:39:59", 1]]
+        spec["ranges"] = [["00:00:00", "01:39:59", 1]]
         spec["format"] = "mm:ss"
         spec["entry"] = {"format": "mm:ss"}
         b.feature(f"set_{var}", [{"actions": list(digits), "variable": var}])
