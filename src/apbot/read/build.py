@@ -142,9 +142,12 @@ class Builder:
         mentions = {i for t in tokens if t in self.labels for i in self.labels[t].mentions}
         best: list[str] | None = None
         best_prio = 0.0
+        elsewhere = {i for t, lab in self.labels.items() if t not in tokens for i in lab.mentions}
         for i in self.context(tokens):
             text = units[i].text
             unit = units[i]
+            if i in elsewhere and i not in mentions and not unit.cells:
+                continue  # a sentence about another key says nothing about this one
             if unit.cells and unit.header and unit.cells[0].upper() in own:
                 head = unit.header[0].lower()
                 if not re.search(r"key|button|control|pad|dial|knob|symbol|name", head):
