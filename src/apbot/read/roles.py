@@ -280,6 +280,30 @@ def assign(b: Builder) -> None:
         silent = [k for k in silent if k not in entry_keys]
     used_steppers: set[int] = set()
     used_digits = False
+    if steppers and shared_pair and entry_keys:
+        # a stepping pair whose own sentences name what it sets, and no entry key sets that,
+        # keeps its own setting: the entry keys then step theirs by themselves
+        pair_tokens = [_token_of(b, n) for n in steppers[0][0] + steppers[0][1]]
+        pair_noun = _noun(b, pair_tokens, None)
+        names = [set(words(_var_name(b, k))) for k in entry_keys]
+        direct = {"temperature", "humidity", "volume", "weight", "speed"}  # set without a key
+        if pair_noun in direct and not any(
+            any(
+                pair_noun.startswith(w[:4]) or w.startswith(pair_noun[:4]) for w in n if len(w) >= 3
+            )
+            for n in names
+        ):
+            steppers = steppers[1:] + steppers[:1]
+            used_steppers = set()
+            for key in entry_keys:
+                var = b.add_number(
+                    _var_name(b, key), label(key.controls[0]), evidence[key.name], True
+                )
+                b.feature(
+                    f"set_{var}", [{"actions": [key.name], "variable": var, "effect": "next"}]
+                )
+                b.note(f"features.set_{var}", f"{key.name} steps its setting (+/− set {pair_noun})")
+            entry_keys = []
     for key in entry_keys:
         ev = evidence[key.name]
         name = _var_name(b, key)
@@ -325,7 +349,7 @@ def assign(b: Builder) -> None:
         if index not in used_steppers:
             tokens_ = [n for n in up + down]
             ev = b.evidence([_token_of(b, n) for n in tokens_])
-            noun = _noun(b, [_token_of(b, n) for n in tokens_]) or "level"
+            noun = _noun(b, [_token_of(b, n) for n in tokens_], ev) or "level"
             var = b.add_number(noun, noun.upper(), ev, cyclic=False)
             b.feature(
                 f"set_{var}",
@@ -678,10 +702,18 @@ def _group_noun(b: Builder, group: list[ActionInfo]) -> str:
     return max(counts, key=lambda n: counts[n]) if counts else "programme"
 
 
-def _noun(b: Builder, tokens: list[str]) -> str:
+def _noun(b: Builder, tokens: list[str], ev: Evidence | None = None) -> str:
+    """What a pair of stepping keys sets: the quantity its range is in, else the setting noun
+    its sentences name most often."""
+    unit = ev.ranges[0].unit if ev is not None and ev.ranges else ""
+    by_unit = {"°C": "temperature", "°F": "temperature", "%": "humidity", "min": "time",
+               "h": "time", "s": "time", "W": "power"}  # fmt: skip
+    if unit in by_unit:
+        return by_unit[unit]
+    counts: dict[str, int] = {}
     for i in b.context(tokens):
         text = b.manual.units[i].text.lower()
         for noun in SETTING_NOUNS:
-            if re.search(rf"\b{noun}\b", text):
-                return noun
-    return ""
+            counts[noun] = counts.get(noun, 0) + len(re.findall(rf"\b{noun}\b", text))
+    best = max(SETTING_NOUNS, key=lambda n: (counts.get(n, 0), -SETTING_NOUNS.index(n)))
+    return best if counts.get(best) else ""
