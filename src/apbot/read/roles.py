@@ -286,8 +286,8 @@ def assign(b: Builder) -> None:
         pair_tokens = [_token_of(b, n) for n in steppers[0][0] + steppers[0][1]]
         pair_noun = _noun(b, pair_tokens, None)
         names = [set(words(_var_name(b, k))) for k in entry_keys]
-        direct = {"temperature", "humidity", "volume", "weight", "speed"}  # set without a key
-        if pair_noun in direct and not any(
+        direct_nouns = {"temperature", "humidity", "volume", "weight", "speed"}  # set alone
+        if pair_noun in direct_nouns and not any(
             any(
                 pair_noun.startswith(w[:4]) or w.startswith(pair_noun[:4]) for w in n if len(w) >= 3
             )
