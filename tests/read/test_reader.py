@@ -31,10 +31,10 @@ def test_every_bundled_manual_reads_into_a_checked_model(appliance):
 
 
 def test_reading_all_manuals_is_fast():
-    start = time.perf_counter()
+    start = time.process_time()  # CPU time: other processes on a shared machine do not count
     for a in BUNDLED:
         read_manual(a.manual, list(a.model.actions))
-    assert time.perf_counter() - start < 10
+    assert time.process_time() - start < 10
 
 
 def test_sources_point_at_lines_that_say_it():

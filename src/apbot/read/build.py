@@ -77,6 +77,7 @@ class Builder:
         self.guards: list[dict[str, Any]] = []
         self.notes: list[Note] = []
         self.indicators: list[str] = []
+        self._evidence: dict[tuple[str, ...], Evidence] = {}
 
     # --- notes ------------------------------------------------------------------------------
 
@@ -133,6 +134,13 @@ class Builder:
         return seen
 
     def evidence(self, tokens: list[str]) -> Evidence:
+        """What the manual says about the controls (cached: roles ask more than once)."""
+        key = tuple(tokens)
+        if key not in self._evidence:
+            self._evidence[key] = self._read_evidence(tokens)
+        return self._evidence[key]
+
+    def _read_evidence(self, tokens: list[str]) -> Evidence:
         ev = Evidence()
         units = self.manual.units
         others = {

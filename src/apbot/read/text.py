@@ -49,21 +49,23 @@ class Manual:
         return ""
 
 
+_KEEP = frozenset("▲▼△▽◀▶⏻°↑↓←→⟳⟲↻↺")
+_SPECIAL = re.compile(r"[^\x20-\x7e\n\t]")  # anything outside printable ASCII
+
+
 def _clean_chars(text: str) -> str:
     """Drop control characters and pictographs; keep letters, digits, punctuation, ▲▼ and °."""
-    out = []
-    for ch in text:
-        if ch in "\n\t":
-            out.append(ch)
-            continue
+
+    def one(match: re.Match[str]) -> str:
+        ch = match.group(0)
         cat = unicodedata.category(ch)
         if cat.startswith("C"):
-            continue
-        if cat == "So" and ch not in "▲▼△▽◀▶⏻°↑↓←→⟳⟲↻↺":
-            out.append(" ")  # emoji and dingbats
-            continue
-        out.append(ch)
-    return "".join(out)
+            return ""
+        if cat == "So" and ch not in _KEEP:
+            return " "  # emoji and dingbats
+        return ch
+
+    return _SPECIAL.sub(one, text)
 
 
 def _strip_markup(line: str) -> str:

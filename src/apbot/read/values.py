@@ -232,6 +232,8 @@ def anchored_lists(text: str, word: str) -> list[list[str]]:
     """Lists tied to a setting's word: "loaf weight (500 / 750 / 1000)", "a light, medium or
     dark crust"."""
     out: list[list[str]] = []
+    if word.lower() not in text.lower():
+        return out
     w = re.escape(word)
     for m in re.finditer(rf"\b{w}\w*(?:\s+\w+){{0,2}}\s*\(([^()]{{3,80}})\)", text, re.I):
         items = [_clean_item(i) for i in re.split(r"\s*/\s*|,\s*|\s+or\s+", m.group(1))]
