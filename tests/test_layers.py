@@ -12,7 +12,7 @@ import ast
 from pathlib import Path
 
 PACKAGE = Path(__file__).resolve().parents[1] / "src" / "apbot"
-ORDER = ("model", "sim", "plan", "agent", "bench", "cli")
+ORDER = ("model", "sim", "plan", "read", "agent", "bench", "cli")
 SAME_AS = {"examples": "model", "envs": "cli", "cli": "cli"}
 TESTING_MAY_USE = {"model", "sim", "plan", "testing"}
 

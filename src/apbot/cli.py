@@ -607,8 +607,8 @@ def eval_goals(
     as_json: Annotated[bool, typer.Option("--json", help="Print the scores as JSON.")] = False,
 ) -> None:
     """Exact accuracy of the offline goal parser on a suite's instructions (true models)."""
+    from apbot.bench.goal_eval import evaluate_goals
     from apbot.bench.suite import load_suite
-    from apbot.read.goal_eval import evaluate_goals
 
     try:
         loaded = _suite() if suite == "bundled" else load_suite(suite)
@@ -985,6 +985,70 @@ class _LivePrinter:
             console.print(f"    [{colour}]{event.kind}: {event.text}[/{colour}]")
         elif event.kind == "stop":
             console.print(f"[dim]stop: {event.text}[/dim]")
+
+
+@app.command("read")
+def read_command(
+    manual: Annotated[Path, typer.Argument(help="The manual: Markdown or plain text.")],
+    actions: Annotated[
+        Path | None,
+        typer.Option(help="A file of action names (one a line, or a YAML/JSON list)."),
+    ] = None,
+    appliance: Annotated[
+        str | None, typer.Option(help="Take the action names of this bundled appliance.")
+    ] = None,
+    out: Annotated[Path | None, typer.Option("-o", "--out", help="Write the model here.")] = None,
+    as_json: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
+) -> None:
+    """Read a manual into a model (offline, no LLM); print where each part came from."""
+    from apbot.model.load import model_to_yaml, read_text
+    from apbot.read import ReaderError, read_manual
+    from apbot.read.commands import action_names
+
+    if (actions is None) == (appliance is None):
+        raise _fail("give exactly one of --actions FILE or --appliance ID")
+    try:
+        names = action_names(actions) if actions else list(_bundled(str(appliance)).model.actions)
+        reading = read_manual(read_text(manual), names, category=manual.stem)
+    except (ReaderError, OSError, ModelError) as exc:
+        raise _fail(str(exc)) from None
+    text = model_to_yaml(reading.model)
+    if out:
+        out.write_text(text, encoding="utf-8")
+    if as_json:
+        console.print_json(json.dumps({"notes": reading.report.to_json()}))
+    else:
+        console.print(reading.report.render(), markup=False)
+        if not out:
+            console.print(text, markup=False)
+
+
+@app.command("eval-reader")
+def eval_reader(
+    suite: Annotated[str, typer.Option(help="'bundled' or a suite directory.")] = "bundled",
+    categories: Annotated[
+        str | None, typer.Option(help="Comma-separated categories (default: all).")
+    ] = None,
+    as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False,
+) -> None:
+    """Precision and recall of the offline reader against the suite's ground-truth models."""
+    from apbot.bench.suite import load_suite
+    from apbot.read.commands import score_table
+    from apbot.read.evaluate import evaluate
+
+    try:
+        loaded = load_suite(suite)
+    except (FileNotFoundError, ModelError) as exc:
+        raise _fail(str(exc)) from None
+    wanted = set(_names(categories) or [])
+    chosen = [a for a in loaded.appliances if not wanted or a.category in wanted]
+    if not chosen:
+        raise _fail(f"no appliances in categories {sorted(wanted)}")
+    result = evaluate((a.category, a.manual, list(a.model.actions), a.model) for a in chosen)
+    if as_json:
+        console.print_json(json.dumps(result.to_json()))
+    else:
+        console.print(score_table(result), markup=False)
 
 
 def main() -> None:

@@ -199,8 +199,11 @@ def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = Fals
     if start:
         goal[name] = value
     else:
-        domain = build_domain(info.var)
-        goal[name] = info.off or domain.values[domain.initial]
+        if info.off is not None:
+            goal[name] = info.off
+        elif info.var.depends_on is None:  # its start value (a dependent one has no own)
+            domain = build_domain(info.var)
+            goal[name] = domain.values[domain.initial]
 
 
 def _procedure_start(view: Model, goal: Goal) -> tuple[str, Any] | None:

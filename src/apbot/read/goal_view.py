@@ -328,9 +328,8 @@ def _start_values(
                     found.setdefault(var, value)
     for name in running:
         info = infos[name]
-        on = info.on or next(
-            (v for v in info.values if v != build_domain(info.var).values[0]), None
-        )
+        known = all_values(info.var)  # a dependent running state has its values per case
+        on = info.on or next((v for v in info.values if known and v != known[0]), None)
         if on is not None:
             found.setdefault(None, (name, on))
     return found

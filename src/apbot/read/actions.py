@@ -1,0 +1,113 @@
+"""Action names → what each does physically (press, hold, turn, type a digit) and on which control.
+
+The environment names its actions (``press_menu``, ``hold_minus_plus``, ``turn_dial_cw``,
+``press_5``); the name is all the reader knows of the panel before it reads the manual. The verb
+gives the skill, the rest names the control; a hold whose rest splits into the names of two other
+controls is a two-key hold.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from apbot.read.errors import ReaderError
+
+IDENT = re.compile(r"^[a-z][a-z0-9_]*$")
+PRESS_VERBS = ("press", "push", "touch", "tap", "slide", "flip", "switch", "toggle", "click")
+HOLD_VERBS = ("hold", "long_press", "press_and_hold", "long")
+TURN_VERBS = ("turn", "rotate", "twist", "spin")
+CW_WORDS = ("cw", "clockwise", "right", "up", "forward", "next", "plus")
+CCW_WORDS = ("ccw", "anticlockwise", "counterclockwise", "left", "down", "back", "minus")
+MAX_ACTIONS = 1000
+
+
+@dataclass(frozen=True)
+class ActionInfo:
+    """One action: its name, skill and the control tokens it uses (two for a two-key hold)."""
+
+    name: str
+    skill: str  # press, hold, turn_cw, turn_ccw
+    controls: tuple[str, ...]
+    digit: int | None = None
+
+    @property
+    def token(self) -> str:
+        return "_".join(self.controls)
+
+
+def _split_verb(name: str) -> tuple[str, str]:
+    for verb in (*HOLD_VERBS, *TURN_VERBS, *PRESS_VERBS):
+        if name == verb:
+            return verb, ""
+        if name.startswith(verb + "_"):
+            return verb, name[len(verb) + 1 :]
+    return "", name
+
+
+def parse_actions(names: list[str]) -> list[ActionInfo]:
+    """Parse the environment's action names; raise :class:`ReaderError` on a malformed list."""
+    if not names:
+        raise ReaderError("no action names given: the reader needs the appliance's actions")
+    if len(names) > MAX_ACTIONS:
+        raise ReaderError(f"{len(names)} actions given; at most {MAX_ACTIONS} are accepted")
+    seen: set[str] = set()
+    for name in names:
+        if not isinstance(name, str) or not IDENT.match(name):
+            raise ReaderError(
+                f"action name {name!r} is not lowercase_with_underscores (e.g. press_menu)"
+            )
+        if name in seen:
+            raise ReaderError(f"action name {name!r} is given twice")
+        seen.add(name)
+    first: list[tuple[str, str, str]] = []
+    for name in names:
+        verb, rest = _split_verb(name)
+        first.append((name, verb, rest))
+    single = {rest for _, verb, rest in first if rest and verb not in HOLD_VERBS}
+    single |= {_turn_base(rest) for _, verb, rest in first if verb in TURN_VERBS}
+    single.discard("")
+    out: list[ActionInfo] = []
+    for name, verb, rest in first:
+        if verb in TURN_VERBS:
+            base = _turn_base(rest)
+            ccw = rest != base and rest.rsplit("_", 1)[-1] in CCW_WORDS
+            out.append(ActionInfo(name, "turn_ccw" if ccw else "turn_cw", (base or "dial",)))
+        elif verb in HOLD_VERBS:
+            out.append(ActionInfo(name, "hold", _hold_controls(rest or name, single)))
+        elif re.fullmatch(r"\d", rest):
+            out.append(ActionInfo(name, "press", (f"key_{rest}",), int(rest)))
+        else:
+            out.append(ActionInfo(name, "press", (rest or name,)))
+    return out
+
+
+def _turn_base(rest: str) -> str:
+    parts = rest.split("_")
+    if parts and parts[-1] in (*CW_WORDS, *CCW_WORDS):
+        parts = parts[:-1]
+    return "_".join(parts)
+
+
+def _hold_controls(rest: str, single: set[str]) -> tuple[str, ...]:
+    """``minus_and_plus`` → (minus, plus) when both are other actions' controls."""
+    if rest in single:
+        return (rest,)
+    parts = [p for p in rest.split("_") if p]
+    for cut in range(1, len(parts)):
+        left = "_".join(parts[:cut])
+        right_parts = parts[cut:]
+        if right_parts and right_parts[0] in ("and", "with", "plus") and len(right_parts) > 1:
+            right_parts = right_parts[1:]
+        a, b = _known(left, single), _known("_".join(right_parts), single)
+        if a and b and a != b:
+            return (a, b)
+    return (rest,)
+
+
+def _known(part: str, single: set[str]) -> str:
+    """The control ``part`` names: itself, or the one control whose name ends with it."""
+    if part in single:
+        return part
+    ends = [s for s in single if s.endswith("_" + part)]
+    return ends[0] if len(ends) == 1 else ""

@@ -1,0 +1,572 @@
+"""Assemble an appliance model from what the manual says about each control.
+
+Each action is given a *role* from its name and the sentences that mention its control: power,
+start, stop, lock, a stepping pair (▲/▼, +/−), a digit, a dial, or a setting key. A setting key's
+sentences decide what it sets: a value list it cycles, an on/off toggle, a range it steps or that
+the stepping pair / keypad enters after it. Keys the manual only lists together (programme pads)
+become one variable with a go-to value each. Where the manual is silent the reader picks the
+guess the closed loop repairs most cheaply — a cyclic ``next`` over a small domain — and says so.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from typing import Any
+
+from apbot.read.actions import ActionInfo
+from apbot.read.labels import Label, words
+from apbot.read.report import Note
+from apbot.read.text import Manual, Unit
+from apbot.read.values import (
+    EACH_PRESS_RE,
+    ON_OFF_RE,
+    Range,
+    anchored_lists,
+    find_initial,
+    find_list,
+    find_number_run,
+    find_ranges,
+    find_step,
+    seconds,
+)
+
+UP_WORDS = {"up", "plus", "more", "increase", "inc", "higher", "add"}
+DOWN_WORDS = {"down", "minus", "less", "decrease", "dec", "lower"}
+POWER_TOKENS = {"power", "on_off", "onoff", "on", "power_on_off", "standby"}
+STOP_WORDS = {"stop", "cancel", "clear", "reset", "off", "end"}
+GENERIC_DIALS = {"dial", "knob", "select", "selector", "jog", "wheel", "control"}
+SETTING_NOUNS = (
+    "temperature", "humidity", "timer", "time", "delay", "level", "power", "speed", "volume",
+    "weight", "programme", "program", "mode", "setting", "heat", "strength", "size",
+)  # fmt: skip
+CHOICE_WORDS = {"programme", "program", "menu", "mode", "function", "cycle", "course", "dial",
+                "knob", "selector", "select"}  # fmt: skip
+GROUP_NOUNS = ("programme", "program", "menu", "mode", "function", "cycle", "course", "preset")
+RUNNING_RE = re.compile(
+    r"\b(?:while|during|when)\b[^.]*\b(?:running|cooking|operat\w*|works?|working|heating|"
+    r"washing|in progress|runs)\b[^.]*\b(?:only|ignored|not respond|do not work|disabled|no effect"
+    r"|locked|inactive)\b|\bonly\b[^.]*\bwork\w*\b[^.]*\bwhile\b",
+    re.IGNORECASE,
+)
+
+
+@dataclass
+class Evidence:
+    values: list[str] | None = None
+    values_at: int | None = None
+    ranges: list[Range] = field(default_factory=list)
+    range_at: int | None = None
+    step: tuple[float, str] | None = None
+    step_at: int | None = None
+    toggle_at: int | None = None
+    each_press_at: int | None = None
+    initial: Any = None
+    initial_at: int | None = None
+
+
+class Builder:
+    """Collects variables, features, guards and notes; ``data()`` gives the model as plain data."""
+
+    def __init__(self, manual: Manual, infos: list[ActionInfo], labels: dict[str, Label]):
+        self.manual = manual
+        self.infos = infos
+        self.labels = labels
+        self.variables: dict[str, dict[str, Any]] = {}
+        self.features: dict[str, list[dict[str, Any]]] = {}
+        self.guards: list[dict[str, Any]] = []
+        self.notes: list[Note] = []
+        self.indicators: list[str] = []
+        self._evidence: dict[tuple[str, ...], Evidence] = {}
+
+    # --- notes ------------------------------------------------------------------------------
+
+    def note(self, subject: str, what: str, unit: int | None = None) -> None:
+        if unit is None:
+            self.notes.append(Note(subject, what, guess=True))
+        else:
+            line = self.manual.units[unit].line
+            self.notes.append(Note(subject, what, line, self.manual.quote(line)))
+
+    # --- evidence ---------------------------------------------------------------------------
+
+    def context(self, tokens: list[str]) -> list[int]:
+        """Units mentioning the controls, each followed by the next two of its section (and a
+        table the sentence points to)."""
+        seen: list[int] = []
+        units = self.manual.units
+        for token in tokens:
+            for i in self.labels[token].mentions:
+                for j in range(i, min(i + 3, len(units))):
+                    if j > i and (
+                        units[j].heading != units[i].heading or units[j].text == units[j].heading
+                    ):
+                        break
+                    if j not in seen:
+                        seen.append(j)
+                    if re.search(r"\btable\b", units[j].text, re.I):
+                        k = j + 1
+                        while k < len(units) and not units[k].cells and k < j + 3:
+                            k += 1
+                        while k < len(units) and units[k].cells:
+                            if k not in seen:
+                                seen.append(k)
+                            k += 1
+        for token in tokens:
+            tw = [w for w in words(token.replace("_", " ")) if len(w) >= 4]
+            for i, unit in enumerate(units):
+                if unit.text != unit.heading or not tw:
+                    continue
+                hw = words(unit.heading)
+                if any(
+                    h.startswith(t[:6]) or t.startswith(h[:6])
+                    for t in tw
+                    for h in hw
+                    if len(h) >= 4
+                ):
+                    if i not in seen:
+                        seen.append(i)  # the heading itself: bullets below it list values
+                    for j in range(i + 1, min(i + 6, len(units))):
+                        if units[j].heading != unit.heading:
+                            break
+                        if j not in seen:
+                            seen.append(j)
+        return seen
+
+    def evidence(self, tokens: list[str]) -> Evidence:
+        """What the manual says about the controls (cached: roles ask more than once)."""
+        key = tuple(tokens)
+        if key not in self._evidence:
+            self._evidence[key] = self._read_evidence(tokens)
+        return self._evidence[key]
+
+    def _read_evidence(self, tokens: list[str]) -> Evidence:
+        ev = Evidence()
+        units = self.manual.units
+        others = {
+            lab.text.lower() for t, lab in self.labels.items() if t not in tokens and lab.line
+        }
+        own = {self.labels[t].text.upper() for t in tokens if t in self.labels}
+        mentions = {i for t in tokens if t in self.labels for i in self.labels[t].mentions}
+        best: list[str] | None = None
+        best_prio = 0.0
+        elsewhere = {i for t, lab in self.labels.items() if t not in tokens for i in lab.mentions}
+        for i in self.context(tokens):
+            text = units[i].text
+            unit = units[i]
+            if i in elsewhere and i not in mentions and not unit.cells:
+                continue  # a sentence about another key says nothing about this one
+            if unit.cells and unit.header and unit.cells[0].upper() in own:
+                head = unit.header[0].lower()
+                if not re.search(r"key|button|control|pad|dial|knob|symbol|name", head):
+                    continue  # a row describing the value the key names, not the key's setting
+            for items, prio in self._lists(i, i in mentions, tokens):
+                if sum(v.lower() in others for v in items) >= 2:
+                    continue  # a list of other keys, not of values
+                if _numeric_items(items) and len(items) < 3:
+                    continue
+                if prio > best_prio:
+                    best, best_prio, ev.values_at = items, prio, i
+            ranges = [r for r in find_ranges(text) if _fits(r.unit, tokens)]
+            if ranges and unit.cells and len(ranges) == 1 and ranges[0].step is None:
+                row_step = _row_step(unit.cells, ranges[0].unit)
+                if row_step:
+                    ranges = [Range(ranges[0].low, ranges[0].high, ranges[0].unit, row_step)]
+            if ranges and not ev.ranges:
+                ev.ranges, ev.range_at = ranges[:1], i
+            elif ranges and ev.ranges and ranges[0].unit == ev.ranges[-1].unit:
+                last = ev.ranges[-1]
+                if abs(ranges[0].low - last.high) < 1e-9 and ranges[0].high > last.high:
+                    ev.ranges.append(ranges[0])  # the next piece of a piecewise range
+            if ev.step is None:
+                step = find_step(text)
+                if step:
+                    ev.step, ev.step_at = step, i
+            if ev.toggle_at is None and ON_OFF_RE.search(text):
+                ev.toggle_at = i
+            if ev.each_press_at is None and EACH_PRESS_RE.search(text):
+                ev.each_press_at = i
+            if ev.initial is None:
+                init = find_initial(text)
+                if init:
+                    ev.initial, ev.initial_at = init, i
+        if best_prio < 1.8:  # lists tied to the setting's own word anywhere in the manual
+            for t in tokens:
+                for w in [x for x in words(t.replace("_", " ")) if len(x) >= 4][:1]:
+                    for i, unit in enumerate(units):
+                        found = anchored_lists(unit.text, w)
+                        if found and best_prio < 1.8:
+                            best, best_prio, ev.values_at = found[0], 1.8, i
+        for t in tokens:
+            label = self.labels[t].text if t in self.labels else ""
+            if not label or best_prio >= 2.5 or not re.search(r"[A-Z]", label):
+                continue
+            pattern = re.compile(
+                rf"\b{re.escape(label)}\s+([A-Z0-9]{{1,6}}(?:/[A-Z0-9]{{1,6}})+)\b"
+            )
+            for i, unit in enumerate(units):
+                m = pattern.search(unit.text)
+                if m:  # "FAN HI/LO": the panel prints the values next to the name
+                    best, best_prio, ev.values_at = m.group(1).split("/"), 2.5, i
+                    break
+        if best is None:
+            best = self._table_column(tokens)
+            if best:
+                ev.values_at = self._table_at
+        if best is not None:
+            ev.values = best if _numeric_items(best) else [v.lower() for v in best]
+            self._initial_from_values(ev, tokens)
+        return ev
+
+    def _lists(self, i: int, mention: bool, tokens: list[str]) -> list[tuple[list[str], float]]:
+        """Candidate value lists at unit ``i`` with a priority (arrows beat prose, prose in the
+        sentence naming the key beats prose nearby, a table the sentence introduces...)."""
+        units = self.manual.units
+        unit = units[i]
+        text = unit.text
+        out: list[tuple[list[str], float]] = []
+        found = find_list(text)
+        if found:
+            out.append((found[0], 3.0 if found[1] == "arrows" else 2.0 if mention else 1.0))
+        run = find_number_run(text)
+        if run:
+            out.append((run, 2.2 if mention else 1.2))
+        if text.rstrip().endswith((":", "order")) or text == unit.heading:
+            bullets = _bullet_items(units, i)
+            if bullets:
+                out.append((bullets, 1.5))
+            column = _next_table_column(units, i)
+            if column:
+                out.append((column, 2.5))
+        return out
+
+    _table_at: int | None = None
+
+    def _table_column(self, tokens: list[str]) -> list[str] | None:
+        """The first column of a table headed by the control's own word (a programme table)."""
+        tw = {w for t in tokens for w in words(t.replace("_", " ")) if len(w) >= 4}
+        tw |= {
+            w for t in tokens if t in self.labels for w in words(self.labels[t].text) if len(w) >= 4
+        }
+        if not tw:
+            return None
+        units = self.manual.units
+        for i, unit in enumerate(units):
+            if unit.cells and not unit.header:  # a header row
+                hw = words(unit.cells[0])
+                if hw and any(h[:6] == w[:6] for h in hw for w in tw):
+                    column = _next_table_column(units, i - 1)
+                    if column:
+                        self._table_at = i
+                        return column
+        return None
+
+    def _initial_from_values(self, ev: Evidence, tokens: list[str]) -> None:
+        if ev.initial is not None or not ev.values:
+            return
+        for i in self.context(tokens):
+            m = re.search(
+                r"\b(?:starts?|default|factory|initially|normally)\b(.*)",
+                self.manual.units[i].text,
+                re.I,
+            )
+            if m:
+                for v in ev.values:
+                    if re.search(rf"\b{re.escape(v)}\b", m.group(1), re.I):
+                        ev.initial, ev.initial_at = v, i
+                        return
+
+    # --- variables --------------------------------------------------------------------------
+
+    def unique(self, name: str, taken: dict[str, Any]) -> str:
+        base = re.sub(r"[^a-z0-9_]+", "_", name.lower()).strip("_") or "setting"
+        if not base[0].isalpha():
+            base = "v_" + base
+        out, k = base, 2
+        while out in taken:
+            out, k = f"{base}_{k}", k + 1
+        return out
+
+    def add_discrete(self, name: str, values: list[str], label: str, ev: Evidence | None) -> str:
+        name = self.unique(name, self.variables)
+        values = _dedupe([_value_text(v) for v in values if _value_text(v)])
+        spec: dict[str, Any] = {"type": "discrete", "values": values, "label": label}
+        if ev is not None and ev.initial in values:
+            spec["initial"] = ev.initial
+            self.note(f"variables.{name}.initial", f"starts at {ev.initial}", ev.initial_at)
+        self.variables[name] = spec
+        return name
+
+    def add_toggle(self, name: str, label: str, at: int | None, first: str = "off") -> str:
+        name = self.unique(name, self.variables)
+        self.variables[name] = {
+            "type": "discrete",
+            "values": ["off", "on"] if first == "off" else ["on", "off"],
+            "label": label,
+        }
+        self.note(f"variables.{name}", "an on/off setting", at)
+        lamp = self.lamp_unit(label)
+        if lamp is not None:  # only a lamp the manual names: a wrong lamp misleads the reading
+            self.indicators.append(name)
+            self.note(f"display.indicators.{name}", "a lamp shows it", lamp)
+        return name
+
+    def lamp_unit(self, label: str) -> int | None:
+        """A sentence saying the label lights up on the panel (a lamp, symbol or indicator)."""
+        if not label:
+            return None
+        pattern = re.compile(rf"(?<![A-Za-z0-9]){re.escape(label)}(?![A-Za-z0-9])")
+        cue = re.compile(
+            r"\b(?:display|screen|appears?|shows?|shown)\b",  # text on the display, not a lamp
+            re.IGNORECASE,
+        )
+        for i, unit in enumerate(self.manual.units):
+            if pattern.search(unit.text) and cue.search(unit.text):
+                return i
+        return None
+
+    def add_number(self, name: str, label: str, ev: Evidence, cyclic: bool) -> str:
+        """A numeric or time variable from the ranges and steps read (guessed where absent)."""
+        if set(words(name.replace("_", " "))) & CHOICE_WORDS:  # a programme is not an amount
+            ev = Evidence(**{**ev.__dict__, "ranges": [r for r in ev.ranges if not r.unit]})
+        if not ev.ranges and set(words(name.replace("_", " "))) & CHOICE_WORDS:
+            # a programme/mode selector the manual lists no values for: a few placeholder
+            # choices the loop replaces with what the display shows (a number would stop it)
+            var = self.add_discrete(name, ["1", "2", "3", "4", "5"], label, None)
+            self.note(f"variables.{var}.values", "placeholders: the manual lists no choices")
+            return var
+        name = self.unique(name, self.variables)
+        subject = f"variables.{name}"
+        ranges = list(ev.ranges)
+        if "clock" in words(name.replace("_", " ")) and any(
+            r.unit not in ("s", "h") for r in ranges
+        ):
+            ranges = []  # a clock's range is the day, whatever numbers stand nearby
+        if not ranges and "clock" in words(name.replace("_", " ")):
+            twelve = any(
+                re.search(r"\b12[- ]?h(?:ou)?r|\bAM\b|\bPM\b", u.text) for u in self.manual.units
+            )
+            low, high = (3600, 12 * 3600 + 59 * 60) if twelve else (0, 23 * 3600 + 59 * 60)
+            self.note(subject, "a clock: the time of day (its range is the clock's, not read)")
+            ranges = [Range(low, high, "s", 60)]
+        elif not ranges:
+            unit = ev.step[1] if ev.step else _unit_from_words(name)
+            low, high = {"": (0, 10), "h": (0, 12), "min": (1, 60), "°C": (30, 100)}.get(
+                unit, (0, 100)
+            )
+            self.note(subject, f"range {low:g}–{high:g} {unit} (the manual gives none)")
+            ranges = [Range(low, high, unit)]
+        else:
+            shown = ", ".join(f"{r.low:g}–{r.high:g}" for r in ranges)
+            self.note(subject, f"range {shown} {ranges[0].unit}", ev.range_at)
+        unit = ranges[0].unit or (ev.step[1] if ev.step else "") or _unit_from_words(name)
+        as_time = ranges[0].unit == "s" or unit in ("s", "min")
+        factor = 1 if ranges[0].unit == "s" else seconds(1, unit) if as_time else 1
+
+        def base_step(r: Range) -> float | None:
+            """The step in the variable's base unit (seconds for a time)."""
+            if r.step:
+                return r.step * factor
+            if not ev.step:
+                return None
+            value, step_unit = ev.step
+            if as_time and step_unit in ("s", "min", "h"):
+                return float(seconds(value, step_unit))
+            if step_unit in ("", unit) or not as_time:
+                return value * factor
+            return None
+
+        pieces: list[list[float]] = []
+        for index, r in enumerate(ranges):
+            lo, hi = r.low * factor, r.high * factor
+            st = base_step(r)
+            if st:
+                self.note(
+                    f"{subject}.step",
+                    f"step {st / factor:g} {unit}",
+                    ev.step_at if not r.step else ev.range_at,
+                )
+            else:
+                st = _guess_step(r.high - r.low, unit) * factor
+                self.note(f"{subject}.step", f"step {st / factor:g} {unit} (the manual gives none)")
+            if as_time:
+                st = max(1.0, float(round(st)))
+            if pieces:
+                lo = max(lo, pieces[-1][1])
+            count = int((hi - lo) / st + 1e-9)
+            if count > 5000:
+                st = (hi - lo) / 5000 if not as_time else float(-(-(hi - lo) // 5000))
+                count = int((hi - lo) / st + 1e-9)
+            hi = lo + count * st
+            if hi <= lo:
+                if index:
+                    continue
+                hi = lo + st
+            pieces.append([lo, hi, st])
+        spec: dict[str, Any]
+        if as_time:
+            spec = {
+                "type": "time",
+                "ranges": [[_hms(int(lo)), _hms(int(hi)), int(st)] for lo, hi, st in pieces],
+                "format": "h:mm"
+                if pieces[-1][1] >= 3600 and all(p[2] % 60 == 0 for p in pieces)
+                else "mm:ss",
+                "label": label,
+            }
+        else:
+            spec = {
+                "type": "numeric",
+                "ranges": [[_tidy(lo), _tidy(hi), _tidy(st)] for lo, hi, st in pieces],
+                "unit": unit,
+                "label": label,
+            }
+            if ev.initial and isinstance(ev.initial, tuple):
+                value = ev.initial[0]
+                for lo, hi, st in pieces:
+                    off = (value - lo) / st
+                    if lo <= value <= hi and abs(off - round(off)) < 1e-9:
+                        spec["initial"] = _tidy(value)
+                        self.note(f"{subject}.initial", f"starts at {value:g}", ev.initial_at)
+                        break
+        if cyclic:
+            spec["wrap"] = True
+            self.note(f"{subject}.wrap", "stepping past the end wraps around (each press adds)")
+        self.variables[name] = spec
+        return name
+
+    # --- the whole model --------------------------------------------------------------------
+
+    def feature(self, name: str, steps: list[dict[str, Any]]) -> None:
+        self.features[self.unique(name, self.features)] = steps
+
+
+def _numeric_items(items: list[str]) -> bool:
+    """Every item is a number, perhaps with a short unit ("40", "35 %", "2h")."""
+    return bool(items) and all(
+        re.fullmatch(r"\s*\d+(?:[.,]\d+)?\s*[^\s\d]{0,4}\s*", i) for i in items
+    )
+
+
+def _row_step(cells: tuple[str, ...], unit: str) -> float | None:
+    """A table row's step: a cell that is one quantity ("half an hour", "5 min", "1 h")."""
+    from apbot.model.values import parse_quantity
+
+    for cell in cells[1:]:
+        if find_ranges(cell):
+            continue
+        step = find_step(cell)
+        if step:
+            return step[0]
+        q = parse_quantity(cell.strip().lower().replace("an hour", "1 hour"))
+        if q and q[1] == "time" and q[0] > 0:
+            base = {"s": 1, "min": 60, "h": 3600}.get(unit, 0)
+            return q[0] / base if base else None
+    return None
+
+
+def _fits(unit: str, tokens: list[str]) -> bool:
+    """A range's unit can belong to the control: no minutes for a temperature, no degrees for a
+    timer (the sentence after a key often gives a neighbouring setting's range)."""
+    expected = {_unit_from_words(t) for t in tokens} - {""}
+    if not expected or not unit:
+        return True
+    timeish = {"s", "min", "h"}
+    if expected & {"°C"}:
+        return unit in ("°C", "°F", "")
+    if expected & {"min"}:
+        return unit in timeish
+    if expected & {"%"}:
+        return unit == "%"
+    return True
+
+
+def _next_table_column(units: list[Unit], i: int) -> list[str]:
+    """The first cells of the table that starts right after unit ``i`` (header skipped)."""
+    k = i + 1
+    if k < len(units) and units[k].cells and not units[k].header:
+        k += 1  # the header row
+    items: list[str] = []
+    numbers = 0
+    while k < len(units) and units[k].cells and units[k].header:
+        cell = re.sub(r"^\s*\d{1,2}[.)]?\s+(?=\D)", "", units[k].cells[0]).strip(" *")
+        if find_ranges(cell) or not re.search(r"[A-Za-z]", cell):
+            numbers += 1
+        if cell and len(cell) <= 24 and cell not in items:
+            items.append(cell)
+        k += 1
+    if numbers * 2 > len(items):
+        return []  # a column of ranges or bare numbers is not a list of names
+    return items if len(items) >= 2 else []
+
+
+def _bullet_items(units: list[Unit], i: int) -> list[str]:
+    items: list[str] = []
+    for u in units[i + 1 : i + 12]:
+        if not u.bullet:
+            break
+        m = re.match(r"^([A-Z0-9][A-Za-z0-9 +/&'-]{0,22}?)\s*(?::|—|–|-|=)\s", u.text)
+        if not m:
+            break
+        items.append(m.group(1).strip())
+    return items if len(items) >= 2 else []
+
+
+def _dedupe(items: list[str]) -> list[str]:
+    out: list[str] = []
+    for item in items:
+        if item not in out:
+            out.append(item)
+    return out
+
+
+def _value_text(value: str) -> str:
+    text = re.sub(r"\s+", " ", value.strip().lower())
+    return text.strip(" .,;:")
+
+
+def _unit_from_words(name: str) -> str:
+    ws = set(words(name.replace("_", " ")))
+    if ws & {"temp", "temperature", "heat"}:
+        return "°C"
+    if ws & {"humidity", "percent"}:
+        return "%"
+    if ws & {"time", "timer", "delay", "duration", "cook"}:
+        return "min"
+    return ""
+
+
+def _guess_step(span: float, unit: str) -> float:
+    if unit == "%":
+        return 5
+    if unit in ("°C", "°F"):
+        return 5 if span > 40 else 1
+    if unit in ("min", "s", "h"):
+        return 1
+    for step in (1, 5, 10, 50, 100, 500, 1000):
+        if span / step <= 40:
+            return step
+    return max(1.0, span / 40)
+
+
+def _tidy(x: float) -> float | int:
+    return int(x) if float(x).is_integer() else round(float(x), 4)
+
+
+def _hms(total: int) -> str:
+    return f"{total // 3600:02d}:{total % 3600 // 60:02d}:{total % 60:02d}"
+
+
+def adjuster_direction(info: ActionInfo) -> tuple[str, str] | None:
+    """(base, "up"|"down") for a stepping key: ``temp_up`` → (temp, up), ``minus`` → ("", down)."""
+    if info.skill != "press" or info.digit is not None:
+        return None
+    parts = info.token.split("_")
+    for i, part in enumerate(parts):
+        core = re.sub(r"\d+$", "", part)
+        suffix = part[len(core) :]
+        if core in UP_WORDS or core in DOWN_WORDS:
+            base = "_".join(parts[:i] + parts[i + 1 :]) + suffix
+            if core == "add" and (base or not suffix):
+                continue  # add30, add_in: not a stepping key
+            return base, "up" if core in UP_WORDS else "down"
+    return None

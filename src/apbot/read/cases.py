@@ -1,0 +1,279 @@
+"""Programme-dependent settings from tables: one row per programme, one column per setting.
+
+Manuals give what a setting allows in each programme as a table ("| Program | Temperature |
+Spin |", "| Menu | Texture options |"). A table whose first column names values of an already
+read programme variable, and whose other column names another variable, turns that variable
+into a dependent one with a case per row; a row that says nothing usable ("—", "fixed",
+"automatic") leaves the setting out of that programme, as the manual implies.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+from apbot.read.build import CHOICE_WORDS, Builder
+from apbot.read.labels import words
+from apbot.read.text import Unit
+from apbot.read.values import find_ranges, number, unit_name
+
+GENERIC = {
+    "options", "option", "range", "ranges", "setting", "settings", "available", "values",
+    "suggested", "default", "standard", "possible", "adjustable", "choices", "max", "min",
+}  # fmt: skip
+DEFAULT_WORDS = {"default", "standard", "preset", "initial", "factory"}
+ADVICE_WORDS = {"suggested", "recommended", "typical", "advised", "usual"}  # not limits
+
+
+def _tables(units: list[Unit]) -> list[tuple[tuple[str, ...], list[Unit]]]:
+    out: list[tuple[tuple[str, ...], list[Unit]]] = []
+    for unit in units:
+        if unit.cells and unit.header:
+            if out and out[-1][0] == unit.header and out[-1][1][-1].line >= unit.line - 1:
+                out[-1][1].append(unit)
+            else:
+                out.append((unit.header, [unit]))
+    return out
+
+
+def _norm(text: str) -> str:
+    return re.sub(r"\s+", " ", re.sub(r"[*_`]", "", text).strip().lower()).strip(" .")
+
+
+def _parent_values(cell: str, values: list[str]) -> list[str]:
+    """Which of the parent's values a first cell names ("White, Quick Cook" → two)."""
+    found = []
+    for part in re.split(r"\s*(?:,|/|&|\band\b)\s*", _norm(cell)):
+        part = re.sub(r"^\d+[.)]?\s*", "", part)
+        for value in values:
+            if part and (part == value or (len(part) >= 4 and value.startswith(part))):
+                found.append(value)
+                break
+    exact = _norm(cell)
+    if exact in values and exact not in found:
+        found = [exact]
+    return found
+
+
+def _matches(header: str, name: str, spec: dict[str, Any]) -> bool:
+    hw = [w for w in words(header) if w not in GENERIC]
+    if not hw:
+        return False
+    vw = set(words(name.replace("_", " "))) | set(words(str(spec.get("label", ""))))
+    if any(
+        h == v or (min(len(h), len(v)) >= 4 and (h.startswith(v) or v.startswith(h)))
+        for h in hw
+        for v in vw
+    ):
+        return True
+    unit = spec.get("unit", "")
+    return bool(unit) and unit.lower() in header.lower().replace(" ", "")
+
+
+def apply_cases(b: Builder) -> None:
+    """Turn read variables into programme-dependent ones where a table says so."""
+    fixed = {v for g in b.guards for v in g["when"]}  # power, lock, running: never per programme
+    parents: set[str] = set()
+    children: set[str] = set()
+    for header, rows in _tables(b.manual.units):
+        if len(rows) < 2:
+            continue
+        parent, best = None, (1, False)
+        for name, spec in b.variables.items():
+            if spec.get("type") != "discrete" or spec.get("depends_on") or len(spec["values"]) < 3:
+                continue
+            if name in fixed or name in children:
+                continue
+            hits = sum(bool(_parent_values(r.cells[0], spec["values"])) for r in rows)
+            score = (hits, bool(set(words(name.replace("_", " "))) & CHOICE_WORDS))
+            if hits >= 2 and score > best:
+                parent, best = name, score
+        if parent is None:
+            continue
+        pvalues = b.variables[parent]["values"]
+        for column in range(1, len(header)):
+            if set(words(header[column])) & (DEFAULT_WORDS | ADVICE_WORDS):
+                continue
+            for name, spec in list(b.variables.items()):
+                if name == parent or name in fixed | parents or spec.get("depends_on"):
+                    continue
+                if not _matches(header[column], name, spec):
+                    continue
+                if spec.get("type") == "discrete" and _ranges_column(rows, column):
+                    _as_number(b, name, spec, rows, column)  # the table says it is an amount
+                cases = _cases(spec, rows, column, pvalues)
+                if len(cases) >= 2:
+                    _defaults(spec, cases, header, rows, column, pvalues)
+                    for key in ("values", "ranges", "initial"):
+                        spec.pop(key, None)
+                    spec["depends_on"] = parent
+                    spec["cases"] = cases
+                    parents.add(parent)
+                    children.add(name)
+                    _no_toggle(b, name, cases)
+                    b.note(
+                        f"variables.{name}.cases",
+                        f"depends on {parent}: {len(cases)} cases",
+                        b.manual.units.index(rows[0]),
+                    )
+                break
+
+
+def _hms(total: int) -> str:
+    return f"{total // 3600:02d}:{total % 3600 // 60:02d}:{total % 60:02d}"
+
+
+def _ranges_column(rows: list[Unit], column: int) -> bool:
+    return sum(bool(column < len(r.cells) and find_ranges(r.cells[column])) for r in rows) >= 2
+
+
+def _as_number(b: Builder, name: str, spec: dict[str, Any], rows: list[Unit], column: int) -> None:
+    """Turn a read-as-discrete setting into the amount the table's ranges say it is."""
+    from apbot.read.build import Evidence
+
+    found = [find_ranges(r.cells[column]) for r in rows if column < len(r.cells)]
+    first = next(f[0] for f in found if f)
+    label = spec.get("label", name.upper())
+    del b.variables[name]
+    new = b.add_number(name, label, Evidence(ranges=[first]), cyclic=False)
+    if new != name:  # keep the name the features use
+        b.variables[name] = b.variables.pop(new)
+    spec.clear()
+    spec.update(b.variables[name])
+    b.variables[name] = spec
+    _no_toggle(b, name, {"x": {"values": []}})
+
+
+def _no_toggle(b: Builder, name: str, cases: dict[str, Any]) -> None:
+    """A toggle on a setting that now has more than two values in some programme steps on."""
+    if all(len(c.get("values", [])) == 2 for c in cases.values()):
+        return
+    for steps in b.features.values():
+        for step in steps:
+            if step.get("variable") != name:
+                continue
+            effect = step.get("effect")
+            if effect == "toggle":
+                step["effect"] = "next"
+            elif isinstance(effect, dict):
+                step["effect"] = {a: "next" if e == "toggle" else e for a, e in effect.items()}
+
+
+def _cases(
+    spec: dict[str, Any], rows: list[Unit], column: int, pvalues: list[str]
+) -> dict[str, Any]:
+    cases: dict[str, Any] = {}
+    for row in rows:
+        if column >= len(row.cells):
+            continue
+        cell = row.cells[column]
+        targets = _parent_values(row.cells[0], pvalues)
+        if not targets:
+            continue
+        case = _case(spec, cell)
+        if case is None:
+            continue
+        for target in targets:
+            cases.setdefault(target, case)
+    return cases
+
+
+def _case(spec: dict[str, Any], cell: str) -> Any:
+    kind = spec.get("type")
+    if kind == "discrete":
+        items = [_norm(i) for i in re.split(r"\s*(?:,|/|·|\bor\b)\s*", cell)]
+        items = [i for i in items if i and i not in ("—", "-", "–", "n/a") and len(i) <= 24]
+        return {"values": list(dict.fromkeys(items))} if items else None
+    ranges = spec.get("ranges") or []
+    if not ranges:
+        return None
+    ranges_read = find_ranges(cell)
+    if kind == "time":
+        if not ranges_read:
+            return None
+        r = ranges_read[0]
+        factor = 1 if r.unit == "s" else {"min": 60, "h": 3600}.get(r.unit or "min", 60)
+        t_lo, t_hi = int(r.low * factor), int(r.high * factor)
+        t_step = min(int(ranges[0][2]), max(1, t_hi - t_lo))
+        t_hi = t_lo + (t_hi - t_lo) // t_step * t_step
+        return {"ranges": [[_hms(t_lo), _hms(t_hi), t_step]]}
+    step = float(ranges[0][2])
+    if ranges_read:
+        lo, hi = ranges_read[0].low, ranges_read[0].high
+    else:
+        m = re.fullmatch(r"\s*(\d+(?:[.,]\d+)?)\s*(\S*)\s*", cell)
+        if not m or (m.group(2) and unit_name(m.group(2)) not in ("", spec.get("unit", ""))):
+            return None
+        value = number(m.group(1))
+        if value is None:
+            return None
+        lo = hi = value
+    count = int((hi - lo) / step + 1e-9)
+    hi = lo + count * step
+    tidy = lambda x: int(x) if float(x).is_integer() else round(x, 4)  # noqa: E731
+    return {"ranges": [[tidy(lo), tidy(hi), tidy(step)]]}
+
+
+def _defaults(
+    spec: dict[str, Any],
+    cases: dict[str, Any],
+    header: tuple[str, ...],
+    rows: list[Unit],
+    column: int,
+    pvalues: list[str],
+) -> None:
+    """A "default"/"standard" column next to the setting's column gives each case's initial."""
+    for c in range(1, len(header)):
+        if c == column or not set(words(header[c])) & DEFAULT_WORDS:
+            continue
+        for row in rows:
+            if c >= len(row.cells):
+                continue
+            for target in _parent_values(row.cells[0], pvalues):
+                case = cases.get(target)
+                if case is None:
+                    continue
+                cell = _norm(row.cells[c])
+                if spec.get("type") == "discrete" and cell in case.get("values", []):
+                    case["initial"] = cell
+        break
+
+
+RESET_RE = re.compile(
+    r"\b(?:programmes?|programs?|menus?|modes?|presets?|functions?|cycles?|courses?)\b[^.]*"
+    r"\b(?:defaults?|standard values|reset|go(?:es)? back|return|wipes?|clear|lost|forget)"
+    r"|\b(?:defaults?|reset|go(?:es)? back|return|wipes?|clear|lost)\b[^.]*"
+    r"\b(?:programmes?|programs?|menus?|modes?|presets?|functions?|cycles?|courses?)\b",
+    re.IGNORECASE,
+)
+
+
+def apply_resets(b: Builder) -> None:
+    """ "Choosing a programme loads its defaults": the programme's steps reset the settings."""
+    at = next((i for i, u in enumerate(b.manual.units) if RESET_RE.search(u.text)), None)
+    if at is None:
+        return
+    fixed = {v for g in b.guards for v in g["when"]}
+    parents = {s.get("depends_on") for s in b.variables.values()} - {None}
+    choices = [
+        n
+        for n, s in b.variables.items()
+        if s.get("type") == "discrete"
+        and n not in fixed
+        and (n in parents or set(words(n.replace("_", " "))) & CHOICE_WORDS)
+    ]
+    if not choices:
+        return
+    choice = choices[0]
+    others = [
+        n
+        for n, s in b.variables.items()
+        if n != choice and n not in fixed and s.get("depends_on") is None and n != "running"
+    ]
+    if not others:
+        return
+    for steps in b.features.values():
+        for step in steps:
+            if step.get("variable") == choice:
+                step["reset"] = [n for n in others if n != step.get("variable")]
+    b.note(f"variables.{choice}", f"choosing it resets {', '.join(others)}", at)

@@ -1,0 +1,149 @@
+"""Control names → the label printed on the panel and the manual sentences that mention it.
+
+Manuals name keys in capitals (``COOK TIME``, ``START/PAUSE``), symbols (``▲``, ``+``) or plain
+words ("the timer button"). A control's action token (``cook_time``, ``temp_up``) is matched to
+those spellings by words, abbreviations ("temp" for "TEMPERATURE") and symbol names, never by
+any one manual's wording.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+from apbot.read.text import Manual, Unit
+
+SYMBOLS: dict[str, tuple[str, ...]] = {
+    "up": ("▲", "↑", "△", "∧"),
+    "down": ("▼", "↓", "▽", "∨"),
+    "plus": ("+",),
+    "minus": ("−", "-"),
+    "more": ("+",),
+    "less": ("−", "-"),
+    "left": ("◀", "←", "<"),
+    "right": ("▶", "→", ">"),
+    "power": ("⏻",),
+    "on_off": ("⏻",),
+    "temp": ("°C", "°F"),  # a knob labelled only with the unit of what it sets
+    "temperature": ("°C", "°F"),
+    "spin": ("RPM",),
+}
+CONTROL_NOUNS = r"(?:button|key|pad|touch ?pad|dial|knob|switch|control|selector|sensor)"
+_CAPS = re.compile(r"(?<![A-Za-z0-9])([A-Z0-9][A-Z0-9+&'./-]*(?:[ /][A-Z0-9+&'.-]+)*)(?![a-z])")
+
+
+def words(text: str) -> list[str]:
+    return [w for w in re.split(r"[^a-z0-9]+", text.lower()) if w]
+
+
+def squash(text: str) -> str:
+    return "".join(words(text))
+
+
+@dataclass
+class Label:
+    """A control's label and the units that mention it (in manual order)."""
+
+    token: str
+    text: str
+    line: int | None  # where the label was found (None: guessed from the action name)
+    mentions: list[int] = field(default_factory=list)  # indices into the manual's units
+
+
+POWER_SPELLINGS = frozenset({"onoff", "io", "power", "onstandby", "standby"})
+
+
+def caps_phrases(manual: Manual) -> tuple[dict[str, int], dict[str, str]]:
+    """Every capitalised phrase with the first line it appears on, and for a part of a
+    slashed key name (START of START/PAUSE) the whole name."""
+    found: dict[str, int] = {}
+    whole: dict[str, str] = {}
+    for unit in manual.units:
+        for match in _CAPS.finditer(unit.text):
+            phrase = match.group(1).strip(" ./-'")
+            if len(phrase) >= 2 and any(c.isalpha() for c in phrase):
+                found.setdefault(phrase, unit.line)
+                for part in re.split(r"\s*/\s*", phrase):  # START/PAUSE also names START
+                    if len(part) >= 2 and part != phrase:
+                        found.setdefault(part, unit.line)
+                        if re.search(r"\S/\S", phrase) and len(phrase) <= 24:
+                            whole.setdefault(part, phrase)
+    return found, whole
+
+
+def _score(token_words: list[str], phrase: str) -> float:
+    pw = words(phrase)
+    if not pw:
+        return 0.0
+    tw = token_words
+    if "".join(pw) == "".join(tw):
+        return 1.0
+    if "".join(tw) in ("power", "onoff") and "".join(pw) in POWER_SPELLINGS:
+        return 0.8
+    digits = "".join(c for c in "".join(tw) if c.isdigit())
+    if digits and "+" in phrase and digits == "".join(c for c in phrase if c.isdigit()):
+        return 0.7  # add30 for "+30 SEC"
+    if pw == tw[: len(pw)] and len(pw) < len(tw):
+        return 0.0  # "TEMP" for temp_up: a shorter phrase names another control
+    if tw == pw[: len(tw)]:
+        return 0.85 if "/" in phrase or len(pw) - len(tw) <= 1 else 0.6
+    if (
+        all(any(p == t or (len(t) >= 3 and p.startswith(t)) for p in pw) for t in tw)
+        and len(pw) <= len(tw) + 1
+    ):
+        return 0.75
+    if len(tw) == 1 and len(tw[0]) >= 3 and pw[0].startswith(tw[0]) and len(pw) == 1:
+        return 0.7
+    if len(tw) == 1 and len(pw) == 1 and len(pw[0]) >= 5 and tw[0].startswith(pw[0]):
+        return 0.65  # PROGRAM for programme
+    return 0.0
+
+
+def find_labels(manual: Manual, tokens: list[str]) -> dict[str, Label]:
+    """The label and mentions of each control token."""
+    phrases, whole = caps_phrases(manual)
+    labels: dict[str, Label] = {}
+    for token in tokens:
+        tw = words(token.replace("_", " "))
+        best, best_score, line = "", 0.0, None
+        for phrase, at in phrases.items():
+            score = _score(tw, phrase)
+            if score > best_score or (score == best_score and score and len(phrase) < len(best)):
+                best, best_score, line = phrase, score, at
+        if best_score < 0.6:
+            best, line = " ".join(tw).upper() or token.upper(), None
+            symbols = [s for w in (token, *tw[-1:]) for s in SYMBOLS.get(w, ())]
+            for symbol in symbols:
+                if any(symbol in u.text for u in manual.units):
+                    best = symbol
+                    break
+        labels[token] = Label(token, best, line)
+    claimed = {label.text for label in labels.values()}
+    for label in labels.values():
+        full = whole.get(label.text)
+        if full and not (set(re.split(r"\s*/\s*", full)) - {label.text}) & claimed:
+            label.text = full
+    for token, label in labels.items():
+        label.mentions = _mentions(manual.units, token, label)
+        if label.line is None and label.mentions:
+            label.line = manual.units[label.mentions[0]].line
+    return labels
+
+
+def _mentions(units: list[Unit], token: str, label: Label) -> list[int]:
+    tw = words(token.replace("_", " "))
+    patterns = []
+    if label.line is not None:
+        for text in {label.text, *re.split(r"\s*/\s*", label.text)} - {""}:
+            if len(text) >= 2 or not text.isalnum():
+                patterns.append(re.compile(rf"(?<![A-Za-z0-9]){re.escape(text)}(?![A-Za-z0-9])"))
+    plain = r"[\s-]+".join(re.escape(w) for w in tw)
+    if plain:
+        patterns.append(re.compile(rf"\b{plain}\w*(?:\s+\w+)?\s+{CONTROL_NOUNS}\b", re.IGNORECASE))
+    symbols = [s for w in (token, *tw[-1:]) for s in SYMBOLS.get(w, ())]
+    for symbol in symbols:
+        if len(symbol) == 1 and symbol in "+-−–<>":
+            patterns.append(re.compile(rf"(?:^|[\s(/]){re.escape(symbol)}(?=[\s)/,.:]|$)"))
+        else:
+            patterns.append(re.compile(re.escape(symbol)))
+    return [i for i, u in enumerate(units) if any(p.search(u.text) for p in patterns)]

@@ -1,0 +1,258 @@
+"""``read_manual``: manual text + action names → a checked model and its reading report.
+
+Whatever the text, the result passes the checker: a part of the read model the checker rejects
+is replaced by the cheapest guess (a toggle of the action's own), and the replacement is noted,
+so a bad reading degrades into a model the closed loop can still explore and repair.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import Any
+
+from pydantic import ValidationError
+
+from apbot.model.schema import ApplianceModel
+from apbot.model.validate import check_model
+from apbot.read.actions import ActionInfo, parse_actions
+from apbot.read.build import CHOICE_WORDS, Builder
+from apbot.read.cases import apply_cases, apply_resets
+from apbot.read.labels import find_labels
+from apbot.read.report import Note, Report
+from apbot.read.roles import assign
+from apbot.read.text import parse_manual
+
+MAX_REPAIRS = 40
+
+
+@dataclass
+class Reading:
+    """A read model and the report of where each part came from."""
+
+    model: ApplianceModel
+    report: Report
+
+
+def read_manual(
+    text: str, actions: list[str], appliance_id: str = "read_appliance", category: str = "appliance"
+) -> Reading:
+    """Read a manual; raise :class:`ReaderError` only for input that is not a manual at all."""
+    manual = parse_manual(text)
+    infos = parse_actions(list(actions))
+    appliance_id = _ident(appliance_id, "read_appliance")
+    category = _ident(category, "appliance")
+    tokens = sorted({c for i in infos for c in i.controls if i.digit is None})
+    labels = find_labels(manual, tokens)
+    builder = Builder(manual, infos, labels)
+    assign(builder)
+    apply_cases(builder)
+    apply_resets(builder)
+    data = _assemble(builder, appliance_id, category)
+    notes = builder.notes
+    model = _checked(data, infos, notes)
+    return Reading(model, Report(notes))
+
+
+def _ident(text: str, default: str) -> str:
+    out = re.sub(r"[^a-z0-9_]+", "_", str(text).lower()).strip("_")
+    return out if out and out[0].isalpha() else default
+
+
+def _controls(b: Builder) -> list[dict[str, Any]]:
+    kinds: dict[str, str] = {}
+    for info in b.infos:
+        for token in info.controls:
+            kind = (
+                "key"
+                if info.digit is not None
+                else "knob"
+                if info.skill.startswith("turn")
+                else "button"
+            )
+            if kinds.get(token) != "knob":
+                kinds[token] = kind
+    out = []
+    for token, kind in kinds.items():
+        label = (
+            str(next(i.digit for i in b.infos if i.controls == (token,) and i.digit is not None))
+            if kind == "key"
+            else (b.labels[token].text if token in b.labels else token.upper())
+        )
+        out.append({"id": _control_id(token), "kind": kind, "label": label})
+    return out
+
+
+def _control_id(token: str) -> str:
+    return _ident(token, "control") + ("" if token.startswith("key_") else "_control")
+
+
+def _action(info: ActionInfo) -> dict[str, Any]:
+    spec: dict[str, Any] = {"skill": info.skill}
+    if len(info.controls) == 1:
+        spec["control"] = _control_id(info.controls[0])
+    else:
+        spec["controls"] = [_control_id(c) for c in info.controls]
+    if info.skill == "hold":
+        spec["seconds"] = 3
+    if info.digit is not None:
+        spec["digit"] = info.digit
+    return spec
+
+
+def _main_variable(b: Builder) -> str | None:
+    """What the display most likely shows when idle: the programme, else the first amount."""
+    fixed = {v for g in b.guards for v in g["when"]} | {"running"}
+    names = [n for n in b.variables if n not in fixed and not b.variables[n].get("depends_on")]
+    for name in names:
+        spec = b.variables[name]
+        if spec.get("type") == "discrete" and set(name.split("_")) & CHOICE_WORDS:
+            return name
+    return None  # an amount on an idle screen is too often wrong to predict (tried: worse)
+
+
+def _assemble(b: Builder, appliance_id: str, category: str) -> dict[str, Any]:
+    main = _main_variable(b)
+    idle = ""
+    if main is not None:
+        idle = "{" + main + "}"
+        b.note("display.idle", f"the display shows {main} when nothing is being set")
+        power = b.variables.get("power")
+        if power is not None and "show" not in power:
+            power["show"] = {"off": "", "on": idle}  # switching on shows the idle screen
+    return {
+        "appliance": {"id": appliance_id, "category": category, "name": "read from the manual"},
+        "controls": _controls(b),
+        "variables": b.variables,
+        "actions": {i.name: _action(i) for i in b.infos},
+        "features": b.features,
+        "guards": b.guards,
+        "display": {
+            "idle": idle,
+            "indicators": [v for v in dict.fromkeys(b.indicators) if v in b.variables],
+        },
+    }
+
+
+def _checked(data: dict[str, Any], infos: list[ActionInfo], notes: list[Note]) -> ApplianceModel:
+    """Validate, replacing what the checker rejects, until the model passes."""
+    for _ in range(MAX_REPAIRS):
+        try:
+            model = ApplianceModel.model_validate(data)
+        except ValidationError as exc:
+            path = tuple(exc.errors()[0]["loc"])
+            if not _drop(data, path, notes, exc.errors()[0]["msg"]):
+                break
+            continue
+        errors = [p for p in check_model(model) if p.severity == "error"]
+        if not errors:
+            return model
+        if not _drop(data, errors[0].path, notes, errors[0].message):
+            break
+    notes.append(
+        Note(
+            "(model)",
+            "the reading could not be checked; every action toggles its own setting",
+            guess=True,
+        )
+    )
+    return ApplianceModel.model_validate(_fallback(data, infos))
+
+
+def _drop(data: dict[str, Any], path: tuple[Any, ...], notes: list[Note], why: str) -> bool:
+    """Remove the part of the model a problem points at; False when nothing can be removed."""
+    if not path:
+        return False
+    head = path[0]
+    if head == "guards" and data["guards"]:
+        index = path[1] if len(path) > 1 and isinstance(path[1], int) else 0
+        gone = data["guards"].pop(min(index, len(data["guards"]) - 1))
+        notes.append(Note(f"guards.{gone.get('name')}", f"dropped: {why}", guess=True))
+        return True
+    if head == "display":
+        data["display"] = {"idle": ""}
+        return True
+    if head in ("features", "variables") and len(path) > 1:
+        name = str(path[1])
+        victims = {name}
+        if head == "variables":
+            victims = {
+                f
+                for f, steps in data["features"].items()
+                if any(s.get("variable") == name for s in steps)
+            }
+            data["variables"].pop(name, None)
+        for feature in victims:
+            steps = data["features"].pop(feature, None)
+            if steps is None:
+                continue
+            for step in steps:
+                var = step.get("variable")
+                if var and not any(
+                    s.get("variable") == var for ss in data["features"].values() for s in ss
+                ):
+                    data["variables"].pop(var, None)
+            notes.append(Note(f"features.{feature}", f"replaced by toggles: {why}", guess=True))
+            for step in steps:
+                for action in step["actions"]:
+                    if not any(
+                        action in s["actions"] for ss in data["features"].values() for s in ss
+                    ):
+                        _toggle_for(data, action)
+        data["guards"] = [g for g in data["guards"] if set(g["when"]) <= set(data["variables"])]
+        data["display"]["indicators"] = [
+            v for v in data["display"].get("indicators", []) if v in data["variables"]
+        ]
+        return True
+    return False
+
+
+def _toggle_for(data: dict[str, Any], action: str) -> None:
+    digit = data["actions"][action].get("digit")
+    if digit is not None:
+        data["actions"][action].pop("digit")
+        control = data["actions"][action]["control"]
+        for c in data["controls"]:
+            if c["id"] == control:
+                c["kind"] = "button"
+    var = action
+    while var in data["variables"]:
+        var += "_"
+    data["variables"][var] = {"type": "discrete", "values": ["off", "on"]}
+    name = var
+    while name in data["features"]:
+        name += "_"
+    data["features"][name] = [{"actions": [action], "variable": var, "effect": "toggle"}]
+
+
+def _fallback(data: dict[str, Any], infos: list[ActionInfo]) -> dict[str, Any]:
+    controls = {}
+    for info in infos:
+        for token in info.controls:
+            controls[token] = {
+                "id": _control_id(token),
+                "kind": "knob" if info.skill.startswith("turn") else "button",
+                "label": token.upper(),
+            }
+    actions = {}
+    for info in infos:
+        spec = _action(info)
+        spec.pop("digit", None)
+        actions[info.name] = spec
+    for info in infos:
+        if info.skill.startswith("turn"):
+            controls[info.controls[0]]["kind"] = "knob"
+    return {
+        "appliance": data["appliance"],
+        "controls": list(controls.values()),
+        "variables": {
+            f"{i.name}_state": {"type": "discrete", "values": ["off", "on"]} for i in infos
+        },
+        "actions": actions,
+        "features": {
+            f"use_{i.name}": [
+                {"actions": [i.name], "variable": f"{i.name}_state", "effect": "toggle"}
+            ]
+            for i in infos
+        },
+    }

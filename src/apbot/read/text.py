@@ -1,0 +1,220 @@
+"""Manual text → units: cleaned sentences and table rows, each with the line it came from.
+
+Manuals arrive as Markdown, plain text, or text a vision model flattened out of a PDF (broken
+lines, page headers, bullet glyphs, emoji, pipe tables). Everything later works on *units*: a
+sentence of running text (joined across broken lines) or one table row split into cells, so a
+rule never depends on where the converter happened to break a line.
+"""
+
+from __future__ import annotations
+
+import re
+import unicodedata
+from dataclasses import dataclass, field
+
+from apbot.read.errors import ReaderError
+
+MAX_MANUAL_CHARS = 400_000  # ten times the longest real manual we expect; larger is not a manual
+
+_BULLETS = "•●○◦▪▫■□►▶➤➢✓✔✗✘–—·*-"
+_BULLET_RE = re.compile(rf"^\s*(?:[{re.escape(_BULLETS)}]|\d{{1,2}}[.)])\s+")
+_NUMBERED_RE = re.compile(r"^\s*(\d{1,2})[.)]\s+")
+_TABLE_RULE = re.compile(r"^\s*\|?\s*:?-{2,}:?\s*(\|\s*:?-{2,}:?\s*)*\|?\s*$")
+_SENTENCE_END = re.compile(r"(?<=[.!?])\s+(?=[A-Z0-9\"'(*])")
+
+
+@dataclass(frozen=True)
+class Unit:
+    """One sentence or table row. ``line`` is 1-based in the original text."""
+
+    line: int
+    text: str
+    cells: tuple[str, ...] = ()  # a table row's cells (``text`` joins them with " | ")
+    header: tuple[str, ...] = ()  # the header row of the table this row belongs to
+    bullet: bool = False  # the sentence starts a bullet or numbered item
+    step: int | None = None  # the number of a numbered step
+    heading: str = ""  # the nearest heading above
+
+
+@dataclass
+class Manual:
+    """The cleaned manual: its units and the raw lines (for quoting in the report)."""
+
+    units: list[Unit]
+    lines: list[str] = field(default_factory=list)
+
+    def quote(self, line: int) -> str:
+        if 1 <= line <= len(self.lines):
+            return self.lines[line - 1].strip()[:160]
+        return ""
+
+
+_KEEP = frozenset("▲▼△▽◀▶⏻°↑↓←→⟳⟲↻↺")
+_SPECIAL = re.compile(r"[^\x20-\x7e\n\t]")  # anything outside printable ASCII
+
+
+def _clean_chars(text: str) -> str:
+    """Drop control characters and pictographs; keep letters, digits, punctuation, ▲▼ and °."""
+
+    def one(match: re.Match[str]) -> str:
+        ch = match.group(0)
+        cat = unicodedata.category(ch)
+        if cat.startswith("C"):
+            return ""
+        if cat == "So" and ch not in _KEEP:
+            return " "  # emoji and dingbats
+        return ch
+
+    return _SPECIAL.sub(one, text)
+
+
+def _strip_markup(line: str) -> str:
+    line = re.sub(r"\*\*|__|`+", "", line)
+    line = re.sub(r"(?<!\w)\*(?=\S)|(?<=\S)\*(?!\w)", "", line)
+    line = re.sub(r"^\s*>+\s?", "", line)
+    return line
+
+
+def _cells(line: str) -> tuple[str, ...]:
+    return tuple(c for c in re.split(r"\s{2,}|\t+", _strip_markup(line).strip()) if c)
+
+
+def _space_tables(lines: list[str]) -> dict[int, tuple[tuple[str, ...], bool]]:
+    """Tables drawn with spaces (text from a PDF): a header of three or more cells followed by
+    rows of two or more; a row's wrapped continuation line (one cell) is dropped.
+
+    Returns line number → (cells, is the header row)."""
+    out: dict[int, tuple[tuple[str, ...], bool]] = {}
+    i = 0
+    while i < len(lines):
+        head = _cells(lines[i])
+        before = lines[i - 1].strip() if i else ""
+        if before and not re.search(r"[.:!?]$", before) and not before.isupper():
+            i += 1  # the line goes on with a sentence from the line before: not a table header
+            continue
+        if len(head) < 3 or "|" in lines[i] or len(lines[i]) > 200:
+            i += 1
+            continue
+        rows: list[int] = []
+        j = i + 1
+        while j < len(lines) and lines[j].strip():
+            cells = _cells(lines[j])
+            if len(cells) >= 2 and "|" not in lines[j]:
+                rows.append(j)
+            elif len(cells) != 1 or len(cells[0]) > 40:
+                break
+            j += 1
+        if len(rows) >= 2:
+            out[i + 1] = (head, True)
+            for r in rows:
+                out[r + 1] = (_cells(lines[r]), False)
+            for k in range(i + 1, j):
+                out.setdefault(k + 1, ((), False))
+            i = j
+        else:
+            i += 1
+    return out
+
+
+def parse_manual(text: str) -> Manual:
+    """Split a manual into units; raise :class:`ReaderError` for input that is not text."""
+    if not isinstance(text, str):
+        raise ReaderError(f"a manual is text, got {type(text).__name__}")
+    if len(text) > MAX_MANUAL_CHARS:
+        raise ReaderError(
+            f"the manual has {len(text):,} characters; the reader accepts at most "
+            f"{MAX_MANUAL_CHARS:,}"
+        )
+    text = _clean_chars(text.replace("\r\n", "\n").replace("\r", "\n"))
+    raw_lines = text.split("\n")
+    units: list[Unit] = []
+    heading = ""
+    header: tuple[str, ...] = ()
+    para: list[tuple[int, str]] = []
+    para_bullet = False
+    para_step: int | None = None
+
+    def flush() -> None:
+        nonlocal para, para_bullet, para_step
+        offsets: list[tuple[int, int]] = []  # (character offset in the paragraph, line)
+        acc = 0
+        for line_no, piece in para:
+            offsets.append((acc, line_no))
+            acc += len(piece) + 1
+        joined = " ".join(piece for _, piece in para)
+        pos = 0
+        for k, sentence in enumerate(_SENTENCE_END.split(joined)):
+            found = joined.find(sentence, pos)
+            pos = found + len(sentence) if found >= 0 else pos
+            sentence = re.sub(r"(\w)- (\w)", r"\1\2", sentence.strip())  # broken hyphenation
+            if not sentence:
+                continue
+            line_no = max((ln for off, ln in offsets if off <= max(found, 0)), default=0)
+            units.append(
+                Unit(
+                    line_no,
+                    sentence,
+                    bullet=para_bullet and k == 0,
+                    step=para_step if k == 0 else None,
+                    heading=heading,
+                )
+            )
+        para = []
+        para_bullet = False
+        para_step = None
+
+    fenced = False
+    spaced = _space_tables(raw_lines)
+    for number, raw in enumerate(raw_lines, start=1):
+        if number in spaced:
+            flush()
+            cells, is_header = spaced[number]
+            if is_header:
+                header = cells
+                units.append(Unit(number, " | ".join(cells), cells, (), heading=heading))
+            elif cells:
+                units.append(Unit(number, " | ".join(cells), cells, header, heading=heading))
+            continue
+        if raw.strip().startswith("```"):
+            flush()
+            fenced = not fenced
+            continue
+        if fenced:  # a drawing of the panel: each line on its own, never joined into prose
+            if raw.strip():
+                units.append(Unit(number, raw.strip(), heading=heading))
+            continue
+        line = _strip_markup(raw).rstrip()
+        stripped = line.strip()
+        if not stripped or re.fullmatch(r"[-=_*~`#]{3,}", stripped):
+            flush()
+            header = ()
+            continue
+        if stripped.startswith("#"):
+            flush()
+            header = ()
+            heading = stripped.lstrip("#").strip()
+            units.append(Unit(number, heading, heading=heading))
+            continue
+        if "|" in stripped and stripped.count("|") >= 2:
+            flush()
+            if _TABLE_RULE.match(stripped):
+                continue
+            cells = tuple(c.strip() for c in stripped.strip("|").split("|"))
+            if not header:
+                header = cells
+                units.append(Unit(number, " | ".join(cells), cells, (), heading=heading))
+            else:
+                units.append(Unit(number, " | ".join(cells), cells, header, heading=heading))
+            continue
+        header = ()
+        bullet = _BULLET_RE.match(line)
+        if bullet:
+            flush()
+            step = _NUMBERED_RE.match(line)
+            para_bullet = True
+            para_step = int(step.group(1)) if step else None
+            para.append((number, line[bullet.end() :].strip()))
+            continue
+        para.append((number, stripped))
+    flush()
+    return Manual(units, raw_lines)

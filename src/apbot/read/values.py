@@ -1,0 +1,299 @@
+"""Value lists, ranges and steps in manual prose and tables.
+
+"AUTO → CONTINUOUS → LAUNDRY", "switch between HIGH and LOW", "35 % to 85 %", "0:30–24:00",
+"in 5% steps", "each touch adds one hour": the few shapes manuals use to say which values a
+setting takes. Every finder returns what it read and nothing it did not (None), so the builder
+can tell evidence from guesses.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from apbot.model.values import unit_of, words_to_number
+
+NUM = (
+    r"(?:\d+(?:[.,]\d+)?|one|two|three|four|five|six|seven|eight|nine|ten|twelve|fifteen"
+    r"|twenty|thirty|half)"
+)
+UNIT = (
+    r"(?:%|°\s?[CF]|°|degrees?|min(?:ute)?s?|h(?:ou)?rs?|hours?|h|sec(?:ond)?s?|s|rpm|W|watts?"
+    r"|kg|g|ml|L|litres?|cups?)"
+)
+_TIME = r"\d{1,2}:\d{2}"
+_DASH = r"\s*(?:–|—|-|to|and|~|until)\s*"
+RANGE_RE = re.compile(
+    rf"(?<![\w:.])({NUM})\s*({UNIT})?{_DASH}({NUM})\s*({UNIT})?(?![\w:])", re.IGNORECASE
+)
+TIME_RANGE_RE = re.compile(rf"(?<![\d:])({_TIME}){_DASH}({_TIME})(?![\d:])")
+UPTO_RE = re.compile(rf"\bup to\s+({NUM})\s*({UNIT})(?!\w)", re.IGNORECASE)
+STEP_RE = re.compile(
+    rf"(?:in\s+({NUM})\s*-?\s*({UNIT})?\s*(?:steps|increments|stages)"
+    rf"|(?:steps?|increments?|units?)\s+of\s+({NUM})\s*({UNIT})?"
+    rf"|(?:each|every)\s+(?:press|touch|turn|click|tap|step)[^.;]*?"
+    rf"(?:adds?|by|changes?[^.;]*?by|raises?|moves?[^.;]*?by)\s+(?:an?\s+|another\s+)?({NUM})?\s*({UNIT}))",
+    re.IGNORECASE,
+)
+_ARROW = re.compile(r"\s*(?:→|->|⇒|>|»|⟶)\s*")
+_CUE = re.compile(  # a lookahead, so that every cue in a sentence is tried
+    r"(?=(?:\bbetween|\bamong|\bchoose(?: from)?|\bselect(?:s| from)?|\bcycles?(?: through)?|"
+    r"\boptions?(?: are)?|\bsettings?(?: are)?|\blevels?(?: are)?|\bmodes?(?: are)?|\border|"
+    r"\bpositions?(?: are)?|\bpick|\bsteps? through|\bchanges?|:)\s+(.*))",
+    re.IGNORECASE,
+)
+_STOP_WORDS = {"the", "a", "an", "your", "this", "that", "it", "you", "to", "is", "are", "of"}
+
+
+def number(text: str) -> float | None:
+    text = text.strip().lower().replace(",", ".")
+    if text == "half":
+        return 0.5
+    try:
+        return float(text)
+    except ValueError:
+        return words_to_number(text)
+
+
+def unit_name(text: str | None) -> str:
+    """A canonical unit spelling: %, °C, °F, min, h, s, rpm, W, kg, g, ml, l (or "")."""
+    if not text:
+        return ""
+    t = text.strip().replace(" ", "")
+    low = t.lower()
+    if low in ("%", "percent"):
+        return "%"
+    if low in ("°c", "°", "degree", "degrees", "c"):
+        return "°C"
+    if low == "°f":
+        return "°F"
+    info = unit_of(low)
+    if info and info[0] == "time":
+        return {1: "s", 60: "min", 3600: "h"}[int(info[1])]
+    return {"watt": "W", "watts": "W", "w": "W", "litre": "l", "litres": "l"}.get(low, low)
+
+
+def is_time_unit(unit: str) -> bool:
+    return unit in ("s", "min", "h")
+
+
+def seconds(value: float, unit: str) -> int:
+    return round(value * {"s": 1, "min": 60, "h": 3600}.get(unit, 60))
+
+
+@dataclass(frozen=True)
+class Range:
+    low: float
+    high: float
+    unit: str  # canonical; "hmm" for times written h:mm
+    step: float | None = None
+
+
+def find_ranges(text: str) -> list[Range]:
+    """Ranges written in the text (times h:mm in seconds with unit ``s``)."""
+    out: list[Range] = []
+    for m in TIME_RANGE_RE.finditer(text):
+        a, b = _hmm(m.group(1)), _hmm(m.group(2))
+        if a < b:
+            out.append(Range(a, b, "s"))
+    for m in RANGE_RE.finditer(text):
+        if TIME_RANGE_RE.search(m.group(0)):
+            continue
+        lo, hi = number(m.group(1)), number(m.group(3))
+        unit = unit_name(m.group(4) or m.group(2))
+        if lo is None or hi is None or not lo < hi:
+            continue
+        if not unit and m.group(0).strip().lower().split()[1:2] == ["and"]:
+            continue  # "press A and B": no unit, "and" joins words more often than numbers
+        if unit == "" and hi > 10_000:
+            continue
+        out.append(Range(lo, hi, unit))
+    for m in UPTO_RE.finditer(text):
+        hi = number(m.group(1))
+        if hi:
+            out.append(Range(0, hi, unit_name(m.group(2))))
+    return out
+
+
+def _hmm(text: str) -> int:
+    h, m = text.split(":")
+    return int(h) * 3600 + int(m) * 60
+
+
+PER_RE = re.compile(
+    rf"\b({NUM})\s*({UNIT})\s+(?:per|for each|each|with each|with every|a)\s+"
+    rf"(?:press|click|turn|touch|detent|step|tap|notch)",
+    re.IGNORECASE,
+)
+
+
+def find_step(text: str) -> tuple[float, str] | None:
+    """A step size: (number, canonical unit)."""
+    per = PER_RE.search(text)
+    if per and number(per.group(1)):
+        return number(per.group(1)) or 1.0, unit_name(per.group(2))
+    m = STEP_RE.search(text)
+    if not m:
+        return None
+    groups = m.groups()
+    for i in (0, 2, 4):
+        raw, unit = groups[i], groups[i + 1]
+        if raw is None and i == 4 and unit:
+            raw = "1"
+        if raw is not None:
+            value = number(raw)
+            if value:
+                return value, unit_name(unit)
+    return None
+
+
+def find_initial(text: str) -> tuple[float, str] | None:
+    m = re.search(
+        rf"\b(?:default|factory setting|preset|standard|starts? (?:at|on)|initially)\b[^.;]*?"
+        rf"({NUM})\s*({UNIT})?(?![\w:])",
+        text,
+        re.IGNORECASE,
+    )
+    if not m:
+        return None
+    value = number(m.group(1))
+    return (value, unit_name(m.group(2))) if value is not None else None
+
+
+def _clean_item(item: str) -> str:
+    item = re.sub(r"\(.*?\)", "", item)
+    item = re.sub(r"^(?:back to|then|and|or|finally)\s+", "", item.strip(), flags=re.I)
+    return item.strip(" .;:!?\"'“”‘’*_")
+
+
+def _value_like(item: str, caps_context: bool) -> bool:
+    if not item or len(item) > 24 or re.search(r"[()\[\]{}]", item):
+        return False
+    ws = item.split()
+    if len(ws) > 3 or ws[0].lower() in _STOP_WORDS:
+        return False
+    if re.fullmatch(rf"{NUM}\s*{UNIT}?", item, re.IGNORECASE):
+        return True
+    if caps_context:
+        return item.upper() == item and any(c.isalpha() for c in item)
+    return all(w[:1].isupper() or w[:1].isdigit() for w in ws) or len(ws) == 1
+
+
+_NUMBER_LIST = re.compile(
+    r"(?<![\w.])(\d+(?:[.,]\d+)?(?:\s*,\s*\d+(?:[.,]\d+)?)*)\s*,?\s*(?:or|and)\s*"
+    r"(\d+(?:[.,]\d+)?)\s*([A-Za-z%°]{1,8})?(?!\w)",
+)
+
+
+def find_list(text: str) -> tuple[list[str], str] | None:
+    """A list of values in one sentence, and how it was written ("arrows", "list")."""
+    numbers = _NUMBER_LIST.search(text)
+    if numbers:  # "3, 6 or 9 hours"
+        items = [*re.split(r"\s*,\s*", numbers.group(1)), numbers.group(2)]
+        unit = numbers.group(3) or ""
+        known = bool(unit) and bool(re.fullmatch(UNIT, unit, re.IGNORECASE))
+        if len(items) >= 3:
+            return [f"{i} {unit}" if known else i for i in items], "list"
+    parts = [_clean_item(p) for p in _ARROW.split(text)]
+    if len(parts) >= 3 or (len(parts) == 2 and all(_value_like(p, True) for p in parts)):
+        head = parts[0].split(":")[-1].split()  # "in this order: AUTO → ...", "Clockwise: Cotton"
+        capital = [w for w in head if w.upper() == w and any(c.isalpha() for c in w)]
+        parts[0] = _clean_item(" ".join(capital) or " ".join(head[-2:]) or parts[0])
+        if len(head) > 3 and not capital:
+            parts[0] = _clean_item(head[-1])
+        items = [p for p in parts if p]
+        if all(_value_like(p, False) for p in items) and len(items) >= 2:
+            return _dedupe(items), "arrows"
+    for m in _CUE.finditer(text):
+        segment = re.split(r"[.;]\s|\s[—–]\s|\bwhile\b|\bwhen\b|\bto (?!\d)", m.group(1))[0]
+        items = [
+            _clean_item(p)
+            for p in re.split(r",\s*|\s*/\s*|\s*[·•|]\s*|\s{2,}|\s+or\s+|\s+and\s+", segment)
+        ]
+        items = [i for i in items if i]
+        caps = sum(1 for i in items if i.upper() == i and any(c.isalpha() for c in i))
+        if len(items) >= 2 and all(_value_like(i, caps >= 2) for i in items):
+            lower_ok = len(items) >= 3 and all(len(i.split()) <= 2 for i in items)
+            numeric = all(re.fullmatch(rf"{NUM}\s*{UNIT}?", i, re.I) for i in items)
+            if caps >= 2 or numeric or lower_ok:
+                return _dedupe(items), "list"
+        if caps >= 3:  # names in capitals, then the prose that describes the first one
+            head = []
+            for item in items:
+                if not _value_like(item, True):
+                    break
+                head.append(item)
+            if len(head) >= 3:
+                return _dedupe(head), "list"
+    return None
+
+
+def anchored_lists(text: str, word: str) -> list[list[str]]:
+    """Lists tied to a setting's word: "loaf weight (500 / 750 / 1000)", "a light, medium or
+    dark crust"."""
+    out: list[list[str]] = []
+    if word.lower() not in text.lower():
+        return out
+    w = re.escape(word)
+    for m in re.finditer(rf"\b{w}\w*(?:\s+\w+){{0,2}}\s*\(([^()]{{3,80}})\)", text, re.I):
+        items = [_clean_item(i) for i in re.split(r"\s*/\s*|,\s*|\s+or\s+", m.group(1))]
+        if len(items) >= 2 and all(i and len(i) <= 16 and len(i.split()) <= 2 for i in items):
+            out.append(items)
+    pattern = (
+        r"\b(?:choose|select|set|pick)\s+(?:an?\s+|the\s+)?"
+        rf"((?:[\w-]+,\s*)+[\w-]+\s+or\s+[\w-]+)\s+{w}"
+    )
+    for m in re.finditer(pattern, text, re.I):
+        items = [_clean_item(i) for i in re.split(r",\s*|\s+or\s+", m.group(1))]
+        if len(items) >= 2:
+            out.append(items)
+    return out
+
+
+_RUN_CUE = re.compile(  # a lookahead: every cue is tried
+    r"(?=\b(?:printed|marked|markings?|labell?ed|reads?|positions?|settings?|scale|steps?|values?"
+    r"|levels?)\b[^:.;]{0,30}?:?\s*(.*))",
+    re.IGNORECASE,
+)
+
+
+def find_number_run(text: str) -> list[str] | None:
+    """Numbers printed in a row after a cue ("marked 20 30 40 60 90"), in their order; a leading
+    OFF reads as 0, another leading word (a named end position) is skipped."""
+    for m in _RUN_CUE.finditer(text):
+        tokens = [t.strip(".*:") for t in re.findall(r"[^\s,;]+", m.group(1))][:40]
+        for start in range(min(8, len(tokens))):
+            run: list[str] = []
+            rest = tokens[start:]
+            if rest and re.fullmatch(r"[A-Z][A-Z-]{1,9}", rest[0]):
+                if rest[0].lower() == "off":
+                    run.append("0")
+                rest = rest[1:]
+            for token in rest:
+                if re.fullmatch(r"\d+(?:[.,]\d+)?", token):
+                    run.append(token)
+                else:
+                    break
+            if len(run) >= 3:
+                return run
+    return None
+
+
+def _dedupe(items: list[str]) -> list[str]:
+    seen: list[str] = []
+    for item in items:
+        if item.lower() not in (s.lower() for s in seen):
+            seen.append(item)
+    return seen
+
+
+ON_OFF_RE = re.compile(
+    r"\bon\s*(?:/|or|and)\s*off\b|\boff\s*(?:/|or|and)\s*on\b|\btoggles?\b"
+    r"|\b(?:enable|disable|activate|deactivate)s?\b[^.]*\b(?:or|and|/)\b"
+    r"|\bagain to (?:switch|turn|cancel|deactivate|disable)\b"
+    r"|\b(?:switch|turn)\w*\s+(?:\w+\s+){0,3}(?:on|off)\s+(?:or|and|/)\s+(?:\w+\s+){0,2}(?:on|off)\b",
+    re.IGNORECASE,
+)
+EACH_PRESS_RE = re.compile(
+    r"\b(?:each|every|repeated(?:ly)?|successive)\s+(?:press|touch|tap|push|click)", re.I
+)
