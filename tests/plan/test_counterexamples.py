@@ -18,7 +18,7 @@ from apbot.plan.bounds import LowerBound
 from apbot.plan.goals import CompiledGoal
 from apbot.plan.plan import plan
 from apbot.sim.compiled import compiled_model
-from apbot.testing.bfs import compare_with_bfs, distances_to_goal
+from apbot.testing.bfs import compare_with_bfs, distances_to_goal, planner_mismatches
 
 HERE = Path(__file__).parent / "counterexamples"
 
@@ -64,3 +64,12 @@ def test_a_programme_change_beats_entering_the_setting() -> None:
     model = load_model(HERE / "ce_entry_or_programme.yaml", check=False)
     found = plan(model, None, {"setting": "s3"})
     assert [a.name for a in found.actions] == ["press_mode", "press_prog"]
+
+
+def test_remembered_values_from_every_reachable_state() -> None:
+    # ce_remember: from 364 of its 1,251 states the planner took one press too many
+    model = load_model(HERE / "ce_remember.yaml", check=False)
+    compiled = compiled_model(model)
+    canonical = parse_goal(model, {"d0": 3})
+    states, distance = distances_to_goal(compiled, canonical, max_states=20_000)
+    assert planner_mismatches(compiled, canonical, states, distance) == []

@@ -206,7 +206,9 @@ class TaskSearch:
             else:
 
                 def inner_key(s: State) -> Hashable:
-                    return (tuple(s.values[w] for w in writes), s.buffer)
+                    # what remembered settings keep tells two ends of a visit apart too (a
+                    # press stored a value for the programme its side effect then left)
+                    return (tuple(s.values[w] for w in writes), s.buffer, s.memory)
 
                 exits = explore_visit(self.compiled, state, step, entry, inner_key)
             outcomes = [
