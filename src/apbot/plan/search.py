@@ -25,10 +25,22 @@ from operator import itemgetter
 from apbot.model.effects import entry_digits
 from apbot.plan.bounds import INF, LowerBound, distances_to, typeable_values
 from apbot.plan.goals import CompiledGoal
-from apbot.plan.visits import SMALL_DOMAIN, Exit, explore_visit, keypad_exits
+from apbot.plan.visits import SMALL_DOMAIN, Exit, VisitTooLarge, explore_visit, keypad_exits
 from apbot.sim.compiled import DIGIT, CompiledModel, State
 
 DEFAULT_BUDGET = 200_000
+# distinct ends of one visit to one step past which the search gives up (as over budget): every
+# end keeps its path, and a step that stores per-programme values while changing the programme
+# has combinatorially many
+VISIT_LIMIT = 20_000
+# states the search may hold per state of its budget: a node with a thousand-end visit fills
+# memory long before the budget of expanded nodes runs out
+STORED_PER_BUDGET = 2
+# successors the search may generate per state of its budget (each costs a bound evaluation)
+EDGES_PER_BUDGET = 20
+# presses the visit cache may hold in its paths (a 1,440-minute clock walked one press at a time
+# gives visits of a million presses each) before it is emptied
+CACHED_PRESSES = 5_000_000
 # Path cost is lexicographic, packed in one int: presses × PRESS + presses made while a guard
 # keeps the display dark. The plan stays shortest; among equally short plans it prefers to set
 # things where the display shows them, so the closed loop can check what it did.
@@ -92,6 +104,7 @@ class TaskSearch:
         self._visit_cache: dict[
             Hashable, list[tuple[tuple[int, ...], str, tuple[int, ...], tuple[int, ...]]]
         ] = {}
+        self._cached_presses = 0  # presses held by the paths in the visit cache
         self._footprints: dict[int, tuple[tuple[int, ...], tuple[int, ...]]] = {}
         self._keypad_targets: dict[int, list[float]] = {}
         # nodes reached by an anywhere key or a wait: the pointer stayed, so the step it is on
@@ -117,7 +130,7 @@ class TaskSearch:
         states = {start_key: start}
         tie = itertools.count()
         frontier = [(h0 * PRESS, 0, next(tie), start_key)]
-        expanded = 0
+        expanded = generated = 0
         while frontier:
             _, negative_cost, _, node = heapq.heappop(frontier)
             cost = -negative_cost
@@ -130,9 +143,11 @@ class TaskSearch:
             if expanded > self.budget:
                 raise SearchExhausted("budget", expanded, True)
             in_the_dark = bool(compiled.guards) and compiled.hiding_guard(state) is not None
-            for after, actions, free in self._edges(
-                state, node == start_key or node in self._continuable
-            ):
+            edges = self._edges(state, node == start_key or node in self._continuable)
+            generated += len(edges)
+            if generated > EDGES_PER_BUDGET * self.budget:  # thousand-end visits: time runs out
+                raise SearchExhausted("budget", expanded, True)
+            for after, actions, free in edges:
                 # presses first; among plans of equal length, fewer presses with a dark display
                 new_cost = cost + len(actions) * PRESS + (len(actions) if in_the_dark else 0)
                 k = self.key(after)
@@ -142,6 +157,8 @@ class TaskSearch:
                 if h == INF:
                     continue
                 best[k] = new_cost
+                if len(best) > STORED_PER_BUDGET * self.budget:  # memory, not time, runs out
+                    raise SearchExhausted("budget", expanded, True)
                 states[k] = after
                 came_from[k] = (node, Visit(after.step, actions, free))
                 if free:
@@ -210,11 +227,20 @@ class TaskSearch:
                     # press stored a value for the programme its side effect then left)
                     return (tuple(s.values[w] for w in writes), s.buffer, s.memory)
 
-                exits = explore_visit(self.compiled, state, step, entry, inner_key)
+                try:
+                    exits = explore_visit(
+                        self.compiled, state, step, entry, inner_key, limit=VISIT_LIMIT
+                    )
+                except VisitTooLarge:
+                    raise SearchExhausted("budget", self.budget, True) from None
             outcomes = [
                 (tuple(after.values[w] for w in writes), after.buffer, path, after.memory)
                 for after, path in exits
             ]
+            self._cached_presses += sum(len(path) for _, path in exits)
+            if self._cached_presses > CACHED_PRESSES:  # a cache, not a store: start afresh
+                self._visit_cache.clear()
+                self._cached_presses = 0
             self._visit_cache[cache_key] = outcomes
         rebuilt = []
         for changed, buffer, path, memory in outcomes:

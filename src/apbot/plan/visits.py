@@ -27,15 +27,25 @@ Exit = tuple[State, tuple[int, ...]]
 SMALL_DOMAIN = 64
 
 
+class VisitTooLarge(Exception):
+    """One visit to a step ends in more distinct states than the search may hold."""
+
+
 def explore_visit(
     compiled: CompiledModel,
     state: State,
     step: int,
     entry: Sequence[int],
     key: Callable[[State], Hashable],
+    limit: int | None = None,
 ) -> list[Exit]:
     """Every distinct (by ``key``) state a visit to ``step`` can end in, with its shortest
-    action sequence. ``entry`` are the actions that move the pointer into the step."""
+    action sequence. ``entry`` are the actions that move the pointer into the step.
+
+    Raises :class:`VisitTooLarge` past ``limit`` distinct ends: a step whose presses store a
+    value per programme while changing the programme reaches every combination of what it
+    remembers, which can outgrow any memory.
+    """
     apply = compiled.apply
     seen: dict[Hashable, Exit] = {}
     queue: deque[Exit] = deque()
@@ -49,6 +59,8 @@ def explore_visit(
             if k not in seen:
                 seen[k] = (after, (*path, action))
                 queue.append(seen[k])
+                if limit is not None and len(seen) > limit:
+                    raise VisitTooLarge(f"a visit to step {step} ends in over {limit} states")
 
     expand(state, (), entry)
     own = sorted(compiled.steps[step].actions)
