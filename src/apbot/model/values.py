@@ -116,7 +116,7 @@ def _whole(number: Number) -> bool:
 
 # --- words and units ----------------------------------------------------------------------------
 
-_WORD_NUMBERS = {
+NUMBER_WORDS: dict[str, int] = {
     "zero": 0,
     "one": 1,
     "two": 2,
@@ -152,6 +152,7 @@ _WORD_NUMBERS = {
     "single": 1,
     "couple": 2,
 }
+_WORD_NUMBERS = NUMBER_WORDS
 _FRACTIONS = {"half": 0.5, "quarter": 0.25}
 _NUMBER_TOKEN = r"\d+(?:[.,]\d+)?"
 

@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, replace
 
-from apbot.model.values import unit_of
+from apbot.model.values import NUMBER_WORDS, unit_of
 
 # --- tokens -----------------------------------------------------------------------------------
 
@@ -63,38 +63,9 @@ def tokenize(text: str) -> list[Token]:
 
 # --- numbers in words --------------------------------------------------------------------------
 
-_UNITS_WORDS = {
-    "zero": 0,
-    "one": 1,
-    "two": 2,
-    "three": 3,
-    "four": 4,
-    "five": 5,
-    "six": 6,
-    "seven": 7,
-    "eight": 8,
-    "nine": 9,
-    "ten": 10,
-    "eleven": 11,
-    "twelve": 12,
-    "thirteen": 13,
-    "fourteen": 14,
-    "fifteen": 15,
-    "sixteen": 16,
-    "seventeen": 17,
-    "eighteen": 18,
-    "nineteen": 19,
-}
-_TENS_WORDS = {
-    "twenty": 20,
-    "thirty": 30,
-    "forty": 40,
-    "fifty": 50,
-    "sixty": 60,
-    "seventy": 70,
-    "eighty": 80,
-    "ninety": 90,
-}
+_COUNTING = {w: n for w, n in NUMBER_WORDS.items() if w not in ("a", "an", "single", "couple")}
+_UNITS_WORDS = {w: n for w, n in _COUNTING.items() if n < 20}
+_TENS_WORDS = {w: n for w, n in _COUNTING.items() if 20 <= n < 100}
 _ARTICLES = {"a", "an", "one", "single"}
 
 

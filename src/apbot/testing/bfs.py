@@ -12,11 +12,11 @@ from __future__ import annotations
 from collections import deque
 from collections.abc import Callable, Hashable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
-from operator import itemgetter
 from typing import Any
 
 from apbot.plan.goals import CompiledGoal
-from apbot.sim.compiled import DIGIT, CompiledModel, State
+from apbot.sim.checks import guard_key
+from apbot.sim.compiled import CompiledModel, State
 
 INF = float("inf")
 
@@ -53,27 +53,7 @@ def goal_projection(compiled: CompiledModel, goal: CompiledGoal) -> Callable[[St
     kept = set(goal.variables)
     for guard in compiled.guards:
         kept.update(v for v, _ in guard.conditions)
-    kept = compiled.influencers(kept)
-    order = sorted(kept)
-    typing = tuple(
-        step.variable in kept and any(e[0] == DIGIT for e in step.effects.values())
-        for step in compiled.steps
-    )
-
-    pick = itemgetter(*order) if order else (lambda values: ())
-    memory = compiled.memory_of(kept)
-
-    def key(state: State) -> Hashable:
-        step = state.step
-        kept_values = tuple(state.memory[s] for s in memory)
-        return (
-            pick(state.values),
-            step,
-            state.buffer if step >= 0 and typing[step] else "",
-            kept_values,
-        )
-
-    return key
+    return guard_key(compiled, kept)  # the same reduction, closed the same way
 
 
 def _search(
