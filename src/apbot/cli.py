@@ -555,11 +555,15 @@ def suite_fill_optimal(
     ] = None,
 ) -> None:
     """Store the planner's optimal action count in every task (rewrites tasks.yaml)."""
-    from apbot.bench.suite_check import fill_optimal
+    from apbot.bench.suite_check import FillError, fill_optimal
 
     chosen = _chosen(appliances)
     for item in chosen:
-        changed = fill_optimal(item)
+        try:
+            changed = fill_optimal(item)
+        except FillError as exc:
+            errors.print(f"[red]error:[/red] {exc} (nothing written for {item.id})")
+            raise typer.Exit(1) from exc
         console.print(f"{item.id}: {changed} task(s) updated")
 
 
