@@ -448,7 +448,7 @@ class DisplayReader:
             search = None
         elif main:
             regex = rf"\s*{main}(?P<_lamps>(?:\s+(?:{lamps}))*)\s*"
-            search = re.compile(rf"(?<![\w:.%]){main}(?![\w:.%])", re.IGNORECASE)
+            search = re.compile(rf"(?<!\S){main}(?!\S)", re.IGNORECASE)
         else:
             regex = rf"\s*(?P<_lamps>(?:{lamps})(?:\s+(?:{lamps}))*)?\s*"
             search = None
