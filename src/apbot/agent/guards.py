@@ -102,9 +102,16 @@ class GuardLearner:
         the guard."""
         session = self.session
         dark = not failed.feedback.text.strip()
-        if not (dark or failed.refused):
-            return False  # ignored on a lit display: a procedure's step, not a guard
-        for name, blocking in self._suspects(failed, dark)[:MAX_SUSPECTS]:
+        if dark or failed.refused:
+            suspects = self._suspects(dark)
+        elif failed.unchanged:  # ignored without a sign on a lit display: a switch at off
+            # (standby) or a lock — one some guard of the belief already tests
+            tested = {n for guard in session.belief.model.guards for n in guard.when}
+            suspects = [s for s in self._suspects(True) + self._suspects(False) if s[0] in tested]
+        else:
+            return False  # another screen came up: a procedure's step, not a guard
+        silent = not (dark or failed.refused)
+        for name, blocking in suspects[:MAX_SUSPECTS]:
             if not session.budget.once("guard", f"learn:{failed.action.name}:{name}"):
                 continue
             other = next(v for v in session.domain_values(name) if v != blocking)
@@ -128,6 +135,7 @@ class GuardLearner:
                 or retry.unchanged
                 or retry.feedback.text == before
                 or (retry.surprises and retry.variable not in retry.surprises)
+                or (silent and retry.surprises)  # a lit panel: only what the belief predicted
             ):
                 continue
             try:
@@ -149,9 +157,9 @@ class GuardLearner:
             return True
         return False
 
-    def _suspects(self, failed: Executed, dark: bool) -> list[tuple[str, Any]]:
-        """Two-valued settings at a value that plausibly blocks keys: off behind a dark display,
-        on (a lock, a running cycle) behind a refusal."""
+    def _suspects(self, dark: bool) -> list[tuple[str, Any]]:
+        """Two-valued settings at a value that plausibly blocks keys: off behind a dark display
+        (``dark``), on (a lock, a running cycle) behind a refusal."""
         words = OFF_WORDS if dark else ON_WORDS
         suspects = []
         model = self.session.belief.model
@@ -255,8 +263,20 @@ class GuardLearner:
                     )
                 except Unreachable:
                     continue
+                before = self.session.last.text
                 for planned in found.actions:
                     self.session.press(planned, exploring=True)
+                name = compiled.vars[v].name
+                after = self.session.last
+                if (
+                    self.session.belief.value(name) != others[0]
+                    and after.accepted
+                    and after.text.strip()
+                    and after.text != before
+                ):
+                    # the panel answered (lit up, left the guard's message) with a screen the
+                    # belief cannot read: it did come out of the guard
+                    self.session.belief.set_value(name, others[0])
                 break
 
 

@@ -521,6 +521,8 @@ class ClosedLoop:
             return
         if unchanged and self.procedures.absorbed(adjusting[0]):
             return
+        if first is not None and first.unchanged and self.guards.learn(first):
+            return  # a key ignored without a sign: a guard the belief lacked (now learnt)
         effect = self.session.effect(last.pointer, last.action.name)
         if self.session.stepping(last.pointer, last.action.name):
             self.explore(name, last, self.explorer.history(name, last, executed))
