@@ -20,6 +20,7 @@ from apbot.model.schema import DiscreteVariable
 from apbot.plan.plan import Unreachable, plan
 from apbot.sim.compiled import CompiledModel
 
+LEARNT = "learnt"  # the name of a guard the agent wrote into the belief
 ON_WORDS = frozenset({"on", "locked", "lock", "yes", "true", "enabled", "running"})
 MAX_SUSPECTS = 3  # settings tried as the cause of one refusal
 MAX_RELAXATIONS = 12  # guard/key pairs tried when a guard keeps the goal out of reach
@@ -208,7 +209,10 @@ class GuardLearner:
             }
         )
         tried = 0
-        for index, guard in enumerate(model.guards):
+        # a guard the agent wrote itself guessed every other key refused; the reader's own
+        # guards come from the manual: suppose the guess wrong first
+        order = sorted(enumerate(model.guards), key=lambda item: item[1].name != LEARNT)
+        for index, guard in order:
             for action in needed:
                 if action in guard.only or tried >= MAX_RELAXATIONS:
                     continue

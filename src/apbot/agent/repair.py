@@ -174,6 +174,30 @@ def set_on_entry(model: ApplianceModel, feature: str, step: int, on_entry: str) 
     return _rebuild(data)
 
 
+def set_side_effect(
+    model: ApplianceModel,
+    feature: str,
+    step: int,
+    name: str,
+    value: Any = None,
+    reset: bool = False,
+) -> ApplianceModel:
+    """What one step does to ``name`` besides its own setting: sets it to ``value``, resets it
+    (``reset``), or — with neither — leaves it alone."""
+    data = _dump(model)
+    entry = data["features"][feature][step]
+    entry.get("set", {}).pop(name, None)
+    entry["reset"] = [r for r in entry.get("reset", []) if r != name]
+    if value is not None:
+        entry.setdefault("set", {})[name] = value
+    elif reset:
+        entry["reset"].append(name)
+    for key in ("set", "reset"):
+        if not entry.get(key):
+            entry.pop(key, None)
+    return _rebuild(data)
+
+
 def allow(model: ApplianceModel, guard: int, action: str) -> ApplianceModel:
     """A guard lets ``action`` through after all."""
     data = _dump(model)
