@@ -108,7 +108,7 @@ class GuardLearner:
         elif failed.unchanged:  # ignored without a sign on a lit display: a switch at off
             # (standby) or a lock — one some guard of the belief already tests
             tested = {n for guard in session.belief.model.guards for n in guard.when}
-            suspects = [s for s in self._suspects(True) + self._suspects(False) if s[0] in tested]
+            suspects = self._suspects(True, tested) + self._suspects(False, tested)
         else:
             return False  # another screen came up: a procedure's step, not a guard
         silent = not (dark or failed.refused)
@@ -125,7 +125,10 @@ class GuardLearner:
             try:
                 route = plan(session.belief.compiled, session.belief.state, {**keep, name: other})
             except Unreachable:
-                continue
+                try:  # the suspect cannot change alone (switching on clears a start time)
+                    route = plan(session.belief.compiled, session.belief.state, {name: other})
+                except Unreachable:
+                    continue
             lifting = [a.name for a in route.actions]
             for planned in route.actions:
                 session.press(planned, exploring=True)
@@ -158,9 +161,10 @@ class GuardLearner:
             return True
         return False
 
-    def _suspects(self, dark: bool) -> list[tuple[str, Any]]:
+    def _suspects(self, dark: bool, tested: set[str] | None = None) -> list[tuple[str, Any]]:
         """Two-valued settings at a value that plausibly blocks keys: off behind a dark display
-        (``dark``), on (a lock, a running cycle) behind a refusal."""
+        (``dark``), on (a lock, a running cycle) behind a refusal. With ``tested``: only those
+        settings, whatever guards their other value has (a key ignored without a sign)."""
         words = OFF_WORDS if dark else ON_WORDS
         suspects = []
         model = self.session.belief.model
@@ -173,7 +177,10 @@ class GuardLearner:
         for name, spec in model.variables.items():
             if not isinstance(spec, DiscreteVariable) or spec.depends_on is not None:
                 continue
-            if name in guarded and str(self.session.belief.value(name)) not in guarded[name]:
+            if tested is not None:
+                if name not in tested:
+                    continue
+            elif name in guarded and str(self.session.belief.value(name)) not in guarded[name]:
                 continue
             value = self.session.belief.value(name)
             if value is None or str(value).casefold() not in words:

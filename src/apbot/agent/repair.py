@@ -394,10 +394,15 @@ def setting_step(model: ApplianceModel, name: str) -> tuple[str, int] | None:
 def _add_action(data: dict[str, Any], action: str) -> None:
     """An action the model did not know, on a control named after it."""
     control = _control_id(action)
+    digit = action.rsplit("_", 1)[-1]
+    keypad = len(digit) == 1 and digit.isdigit()  # press_7: a keypad key
     if not any(c["id"] == control for c in data["controls"]):
         turning = action.endswith(("_cw", "_ccw"))
-        data["controls"].append({"id": control, "kind": "dial" if turning else "button"})
+        kind = "key" if keypad else "dial" if turning else "button"
+        data["controls"].append({"id": control, "kind": kind})
     spec: dict[str, Any] = {"control": control}
+    if keypad:
+        spec["digit"] = int(digit)
     if action.startswith("hold"):
         spec.update(skill="hold", seconds=3)
     elif action.endswith("_ccw"):
@@ -416,6 +421,8 @@ def _control_id(action: str) -> str:
     for suffix in ("_cw", "_ccw"):
         if name.endswith(suffix):
             name = name[: -len(suffix)]
+    if name[:1].isdigit():  # press_7: keypad key 7
+        return f"key_{name}"
     return f"{name}_control" if name else "learnt_control"
 
 
