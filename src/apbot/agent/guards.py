@@ -106,9 +106,9 @@ class GuardLearner:
         if dark or failed.refused:
             suspects = self._suspects(dark)
         elif failed.unchanged:  # ignored without a sign on a lit display: a switch at off
-            # (standby) or a lock — one some guard of the belief already tests
+            # (standby) that some guard of the belief already tests
             tested = {n for guard in session.belief.model.guards for n in guard.when}
-            suspects = self._suspects(True, tested) + self._suspects(False, tested)
+            suspects = self._suspects(True, tested)
         else:
             return False  # another screen came up: a procedure's step, not a guard
         silent = not (dark or failed.refused)
