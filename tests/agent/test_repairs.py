@@ -233,3 +233,112 @@ def test_a_missing_setting_behind_a_panel_asleep_without_a_guard_is_found() -> N
     episode, reached = run(truth, belief, {"temperature": 96, "heating": "on"})
     assert reached and episode.claimed_success
     assert any(r.startswith("temperature: found under") for r in episode.repairs)
+
+
+def test_a_key_ignored_without_a_sign_on_a_lit_panel_is_explained_by_a_guard() -> None:
+    # the reader missed that in standby (off, a start time set) the panel stays lit and only
+    # POWER and TIMER work — silently
+    belief = suite_model(
+        "dehumidifier_4",
+        (
+            'only: [press_power, press_timer], display: "", hide: true}',
+            'only: [press_timer], display: "", hide: true}',
+        ),
+        (
+            '  - {name: standby with start time, when: {power: "off"}, '
+            'only: [press_power, press_timer], display: ""}\n',
+            "",
+        ),
+    )
+    episode, reached = run(suite_model("dehumidifier_4"), belief, {"mode": "clothes"})
+    assert reached and episode.claimed_success
+    assert "while power is off, press_mode does not work" in episode.repairs
+
+
+def test_a_side_effect_the_display_contradicts_is_struck_from_its_step() -> None:
+    # the reader believed switching on sets the full volume: the display keeps showing 250 ml
+    belief = suite_model(
+        "kettle_5", ('set: {dispensing: "off", hot_water_lock: locked}', "set: {volume: 1000}")
+    )
+    episode, reached = run(suite_model("kettle_5"), belief, {"power": "on", "volume": 1000})
+    assert reached and episode.claimed_success
+    assert "power: press_power leaves it alone (volume)" in episode.repairs
+
+
+def test_a_guessed_guard_is_relaxed_before_one_from_the_manual() -> None:
+    # the reader missed that a running wash lets only START/PAUSE and the lock through: the
+    # guard learnt from the refusal guesses every other key refused, the lock's too, which
+    # keeps "start, then lock" out of reach until the guess is relaxed (not the manual's lock)
+    belief = suite_model(
+        "washing_machine_3",
+        (
+            '  - {name: running, when: {running: "on"}, only: [press_start, hold_spin_and_steam], '
+            'display: "▶"}\n',
+            "",
+        ),
+    )
+    goal = {
+        "programme": "wool/silk",
+        "temperature": 20,
+        "spin": 600,
+        "delay_start": "90 min",
+        "running": "on",
+        "child_lock": "on",
+    }
+    episode, reached = run(suite_model("washing_machine_3"), belief, goal)
+    assert reached and episode.claimed_success
+    assert not any(r.startswith("child lock may let") for r in episode.repairs)
+
+
+def test_a_keypad_setting_missing_a_programme_case_takes_the_other_cases_range() -> None:
+    belief = suite_model(
+        "microwave_2", ("      fish: {ranges: [[100, 1000, 10]], initial: 100}\n", "")
+    )
+    goal = {"defrost_food": "fish", "defrost_weight": "450 g", "running": "on"}
+    episode, reached = run(suite_model("microwave_2"), belief, goal)
+    assert reached and episode.claimed_success
+    assert any(r.startswith("defrost_weight: allow") for r in episode.repairs)
+
+
+SHARED_DIAL = """
+controls: [{id: prog}, {id: knob, kind: dial}]
+variables:
+  programme: {type: discrete, values: [custom, simmer], label: PROG}
+  temperature:
+    type: numeric
+    unit: "°C"
+    depends_on: programme
+    label: TEMP
+    cases:
+      custom: {ranges: [[60, 100, 20]], initial: 80}
+      simmer: {ranges: [[80, 110, 5]], initial: 95}
+actions:
+  press_programme: {control: prog}
+  turn_knob_cw: {control: knob, skill: turn_cw}
+  turn_knob_ccw: {control: knob, skill: turn_ccw}
+features:
+  select_programme:
+    - {actions: [press_programme], variable: programme, effect: next}
+  set_temperature:
+    - actions: [turn_knob_cw, turn_knob_ccw]
+      variable: temperature
+      effect: {turn_knob_cw: next, turn_knob_ccw: prev}
+display:
+  idle: "{temperature}"
+"""
+
+
+def test_a_goal_value_a_walk_lacked_is_looked_for_again_in_the_goals_programme() -> None:
+    from tests.helpers import model_from
+
+    truth = model_from(SHARED_DIAL)
+    # the reader saw the temperatures of one programme only, for every programme
+    belief = model_from(
+        SHARED_DIAL.replace("    depends_on: programme\n", "").replace(
+            "    cases:\n      custom: {ranges: [[60, 100, 20]], initial: 80}\n"
+            "      simmer: {ranges: [[80, 110, 5]], initial: 95}\n",
+            "    ranges: [[60, 100, 20]]\n    initial: 80\n",
+        )
+    )
+    episode, reached = run(truth, belief, {"programme": "simmer", "temperature": 105})
+    assert reached and episode.claimed_success

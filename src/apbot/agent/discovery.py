@@ -20,7 +20,15 @@ from typing import Any
 from apbot.agent.guards import GuardLearner
 from apbot.agent.infer import infer_template, ranges_from_values
 from apbot.agent.reader import DisplayReader
-from apbot.agent.repair import RepairError, add_choice_setting, add_indicator, add_setting
+from apbot.agent.repair import (
+    RepairError,
+    add_choice_setting,
+    add_indicator,
+    add_keypad_setting,
+    add_setting,
+    plain_keys,
+    setting_step,
+)
 from apbot.agent.session import Executed, Session, summary
 from apbot.model.display import display_value
 from apbot.model.domain import ValueProblem, normalise, parse_value
@@ -53,6 +61,7 @@ class VariableFinder:
     def __init__(self, session: Session, guards: GuardLearner) -> None:
         self.session = session
         self.guards = guards
+        self.trail: list[str | None] = []  # the full texts of the last walk (None: refused)
 
     def find(self, name: str, goal_value: Any, attempt: int = 1) -> bool:
         """Look for ``name`` on the panel (once per attempt); True when the belief now has it.
@@ -77,6 +86,8 @@ class VariableFinder:
                 if self._learn(name, goal_value, texts, last, before, None, key):
                     return True
                 continue
+            if self._learn_lamp(name, goal_value, key):
+                return True
             single[key] = texts[0]
         if self._learn_choice(name, goal_value, single, before):
             return True
@@ -91,7 +102,7 @@ class VariableFinder:
                     continue
                 if self._learn(name, goal_value, found[0], found[1], before, key, adjuster):
                     return True
-        return False
+        return any(self._typed(name, goal_value, key) for key in single)
 
     def _walked(self, key: str) -> tuple[list[str], str] | None:
         """Walk ``key`` (and its opposite back from an end): the texts in value order and the
@@ -121,6 +132,9 @@ class VariableFinder:
         the goal's value could be one of its values (a walk of grams is not a power level)."""
         session = self.session
         learnt = infer_setting(name, texts, _kind_of(goal_value), last)
+        if learnt is not None and not _fits(learnt.variable, goal_value):
+            # each text a value of its own, named by its first word (MUG 300mL)?
+            learnt = infer_setting(name, texts, "worded", last) or learnt
         if learnt is None:
             return False
         if not _fits(learnt.variable, goal_value):
@@ -143,13 +157,99 @@ class VariableFinder:
             return False
         new = self._as_lamp(new, name, before)
         under = f"{entry}, then {key}" if entry else key
-        pointer = (f"set_{name}", 1 if entry else 0)
-        session.adopt(new, f"{name}: found under {under}; {learnt.note}", pointer)
+        session.adopt(new, f"{name}: found under {under}; {learnt.note}", setting_step(new, name))
         session.discovered.add(name)
         if new.variables[name].depends_on is not None:
             session.guessed_initial.add(name)
         session.belief.set_value(name, learnt.current)
         session.evidence[name] = learnt.current  # the walk showed it
+        session.reread()
+        return True
+
+    def _learn_lamp(self, name: str, goal_value: Any, key: str) -> bool:
+        """A key whose presses light a word on the display and put it out again (``SYNC``,
+        ``LIGHT``): an on/off setting the key toggles, shown as that lamp while on. One more
+        press must light it again."""
+        session = self.session
+        lit, unlit = [*self.trail, None, None][:2]
+        if len(self.trail) != 2 or lit is None or unlit is None:
+            return False
+        word = lamp_word(lit, unlit)
+        variable: dict[str, Any] = {
+            "type": "discrete",
+            "values": ["off", "on"],
+            "show": {"off": "", "on": word},
+            "initial": "off",
+        }
+        if word is None or not _fits(variable, goal_value):
+            return False
+        again = session.press(_planned(key), exploring=True)
+        if again.feedback.text != lit:
+            return False
+        try:
+            new = add_setting(session.belief.model, name, variable, key, "toggle")
+            new = add_indicator(new, name)
+        except RepairError as exc:
+            session.episode.log("repair", f"could not add {name}: {exc}")
+            return False
+        session.adopt(
+            new,
+            f"{name}: found under {key}; an on/off lamp shown as {word!r}",
+            setting_step(new, name),
+        )
+        session.discovered.add(name)
+        session.belief.set_value(name, "on")
+        session.evidence[name] = "on"
+        session.reread()
+        return True
+
+    def _typed(self, name: str, goal_value: Any, key: str) -> bool:
+        """An entry key that shows one screen, on a panel with a keypad: type the goal's
+        number after it; a display that then shows it in the screen's place is the setting,
+        typed in as a number (``P 100%`` → ``P 70%``)."""
+        session = self.session
+        digits = _digit_keys(session.context.actions or tuple(session.offered))
+        number = _whole(goal_value)
+        if number is None or len(digits) < 10:
+            return False
+        self.guards.lift_all()
+        entered = session.press(_planned(key), exploring=True)
+        lamps = session.perceiver.reader.lamp_texts()
+        first = _main(entered.feedback.text, lamps)
+        if not entered.feedback.accepted or not first or not _unknown(entered):
+            return False
+        done = entered
+        for digit in str(number):
+            action = digits[digit]
+            planned = (
+                session.planned(action) if action in session.belief.model.actions else None
+            ) or _planned(action)
+            done = session.press(planned, exploring=True)
+            if not done.feedback.accepted:
+                return False
+        last = _main(done.feedback.text, lamps)
+        learnt = infer_setting(name, [first, last], "numeric", last)
+        if learnt is None or learnt.current != number or not _fits(learnt.variable, goal_value):
+            return False
+        variable = dict(learnt.variable)
+        variable.pop("wrap", None)
+        width = max(len(str(number)), len(str(_whole(variable["initial"]) or "")))
+        variable["entry"] = {"format": "number", "max_digits": width}
+        try:
+            new = add_keypad_setting(
+                session.belief.model, name, variable, key, [digits[d] for d in sorted(digits)]
+            )
+        except RepairError as exc:
+            session.episode.log("repair", f"could not add {name}: {exc}")
+            return False
+        session.adopt(
+            new,
+            f"{name}: found under {key}, then the digits; {learnt.note}",
+            setting_step(new, name),
+        )
+        session.discovered.add(name)
+        session.belief.set_value(name, number)
+        session.evidence[name] = number
         session.reread()
         return True
 
@@ -180,7 +280,7 @@ class VariableFinder:
         session.adopt(
             new,
             f"{name}: each of {', '.join(single)} selects one ({learnt.note})",
-            (f"set_{name}", 0),
+            setting_step(new, name),
         )
         session.discovered.add(name)
         session.belief.set_value(name, current)
@@ -218,15 +318,18 @@ class VariableFinder:
         session = self.session
         model = session.belief.model
         starting = {a for steps in model.features.values() for a in steps[0].actions}
+        plain = plain_keys(model)
         offered = list(session.context.actions or session.offered)
-        unknown = [a for a in offered if a not in starting and not _is_digit(a)]
+        unknown = [a for a in offered if (a not in starting or a in plain) and not _is_digit(a)]
         words = {w for w in name.split("_") if len(w) >= 3}
 
         def alike(action: str) -> bool:
             parts = [p for p in action.split("_") if len(p) >= 3]
             return any(w.startswith(p) or p.startswith(w) for w in words for p in parts)
 
-        ranked = sorted(unknown, key=lambda a: (not alike(a), unknown.index(a)))
+        # a key the belief gives a plain step only (press it, nothing changes) may be the very
+        # key of the setting the reader missed: after the keys with no role at all
+        ranked = sorted(unknown, key=lambda a: (not alike(a), a in plain, unknown.index(a)))
         return [a for a in ranked if not _is_reverse(a)][:MAX_KEYS]
 
     def _walk(self, key: str) -> list[str]:
@@ -234,8 +337,10 @@ class VariableFinder:
         session = self.session
         action = _planned(key)
         texts: list[str] = []
+        self.trail = []
         for _ in range(MAX_WALK):
             done: Executed = session.press(action, exploring=True)
+            self.trail.append(done.feedback.text if done.feedback.accepted else None)
             text = _main(done.feedback.text, session.perceiver.reader.lamp_texts())
             if not texts and not done.feedback.text.strip() and self.guards.learn(done):
                 continue  # a dark panel the belief had no guard for (asleep): now lit
@@ -264,7 +369,8 @@ def infer_setting(
 ) -> Learnt | None:
     """A setting's definition from the texts one key showed, press after press (the last one
     may repeat an earlier one: the walk went round, or stopped at an end); ``last`` is the text
-    the display shows now (where the setting is).
+    the display shows now (where the setting is). ``kind`` is tried first ("worded": only a
+    word of its own per value).
 
     >>> learnt = infer_setting("temperature", ["TEMP 180°C", "TEMP 190°C", "TEMP 200°C",
     ...                                        "TEMP 200°C"], "numeric")
@@ -278,10 +384,15 @@ def infer_setting(
     if len(distinct) < 2:
         return None
     wrap = len(texts) > len(distinct) and texts[-1] == distinct[0] and len(distinct) > 1
-    readers = {"time": _time_setting, "numeric": _numeric_setting, "discrete": _discrete_setting}
-    order = [kind, *(k for k in ("numeric", "time", "discrete") if k != kind)]
+    readers = {
+        "time": _time_setting,
+        "numeric": _numeric_setting,
+        "discrete": _discrete_setting,
+        "worded": _worded_setting,
+    }
+    order = [kind] if kind == "worded" else [kind, "numeric", "time", "discrete", "worded"]
     found = None
-    for candidate in order:
+    for candidate in dict.fromkeys(order):
         found = readers[candidate](distinct)
         if found is not None:
             break
@@ -290,7 +401,9 @@ def infer_setting(
     variable, values, template = found
     variable["wrap"] = wrap
     label, _, rest = template.partition(" ")
-    if rest == "{value}" and "{" not in label:
+    if "show" in variable:
+        pass  # a word of its own for each value
+    elif rest == "{value}" and "{" not in label:
         variable["label"] = label
     else:
         variable["show"] = template
@@ -384,6 +497,20 @@ def _discrete_setting(distinct: Sequence[str]) -> tuple[dict[str, Any], list[Any
     return {"type": "discrete", "values": values}, values, prefix + "{value}" + suffix
 
 
+def _worded_setting(distinct: Sequence[str]) -> tuple[dict[str, Any], list[Any], str] | None:
+    """Texts with nothing in common (``CUP 150mL``, ``MUG 300mL``, ``FREE``): a value each,
+    named by its first word, shown as the whole text.
+
+    >>> _worded_setting(["MUG 300mL", "FREE"])[0]
+    {'type': 'discrete', 'values': ['mug', 'free'], 'show': {'mug': 'MUG 300mL', 'free': 'FREE'}}
+    """
+    values = [text.split()[0].casefold() if text.split() else "" for text in distinct]
+    if any(not v.isalpha() for v in values) or len(set(values)) != len(values):
+        return None
+    show = dict(zip(values, distinct, strict=True))
+    return {"type": "discrete", "values": values, "show": show}, list(values), "{value}"
+
+
 def _fits(variable: dict[str, Any], goal_value: Any) -> bool:
     """Whether ``goal_value`` reads as a value of the setting a walk found: in its unit for a
     number or time (the range may be longer than the walk went), among its words if a word."""
@@ -411,6 +538,39 @@ def _kind_of(goal_value: Any) -> str:
     if isinstance(goal_value, int | float) and not isinstance(goal_value, bool):
         return "numeric"
     return "numeric" if re.match(r"^\s*[-+]?\d", text) else "discrete"
+
+
+def lamp_word(lit: str, unlit: str) -> str | None:
+    """The one word a display shows more when a lamp is lit (``SYNC``), if that is all that
+    tells the two texts apart: a word with letters and no digits (not a value).
+
+    >>> lamp_word("SYNC  Z1 air fry", "1: 200°C  Z1 air fry"), lamp_word("LIGHT", "")
+    ('SYNC', 'LIGHT')
+    >>> lamp_word("160°C", "") is None
+    True
+    """
+    shown = [part for part in _GAP.split(lit.strip()) if part]
+    others = set(_GAP.split(unlit.strip()))
+    new = [part for part in shown if part not in others]
+    if len(new) != 1 or any(c.isdigit() for c in new[0]) or not any(c.isalpha() for c in new[0]):
+        return None
+    return new[0]
+
+
+def _digit_keys(actions: Sequence[str]) -> dict[str, str]:
+    """The keypad: digit → action (``press_7``)."""
+    return {
+        a.rsplit("_", 1)[-1]: a for a in actions if _is_digit(a) and len(a.rsplit("_", 1)[-1]) == 1
+    }
+
+
+def _whole(value: Any) -> int | None:
+    """A goal value as a whole number (``70``, ``"70 %"``), if it is one."""
+    match = _NUMBER.match(str(value))
+    if match is None:
+        return None
+    number = float(match.group(1))
+    return int(number) if number.is_integer() and number >= 0 else None
 
 
 def _is_digit(action: str) -> bool:

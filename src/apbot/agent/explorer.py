@@ -40,6 +40,7 @@ from apbot.agent.session import (
     summary,
     tidy,
 )
+from apbot.model.domain import all_values
 from apbot.model.effects import parse_entry
 from apbot.model.schema import (
     Add,
@@ -453,8 +454,11 @@ class Explorer:
         if isinstance(spec, DiscreteVariable):
             return
         known = self.session.magnitudes(name)
+        if not known and spec.depends_on is not None:  # no case for this programme: what the
+            # other programmes take is the best guess of its range
+            known = [m for m in (magnitude(spec, v) for v in all_values(spec)) if m is not None]
         extra = [m for m in (magnitude(spec, loose(spec, v)) for v in observed) if m is not None]
-        if not known or not extra or set(extra) <= set(known):
+        if not known or not extra or set(extra) <= set(self.session.magnitudes(name)):
             return
         points = sorted(set(known) | set(extra))
         step = common_step(points)

@@ -20,6 +20,7 @@ from apbot.model.schema import DiscreteVariable
 from apbot.plan.plan import Unreachable, plan
 from apbot.sim.compiled import CompiledModel
 
+LEARNT = "learnt"  # the name of a guard the agent wrote into the belief
 ON_WORDS = frozenset({"on", "locked", "lock", "yes", "true", "enabled", "running"})
 MAX_SUSPECTS = 3  # settings tried as the cause of one refusal
 MAX_RELAXATIONS = 12  # guard/key pairs tried when a guard keeps the goal out of reach
@@ -102,9 +103,16 @@ class GuardLearner:
         the guard."""
         session = self.session
         dark = not failed.feedback.text.strip()
-        if not (dark or failed.refused):
-            return False  # ignored on a lit display: a procedure's step, not a guard
-        for name, blocking in self._suspects(failed, dark)[:MAX_SUSPECTS]:
+        if dark or failed.refused:
+            suspects = self._suspects(dark)
+        elif failed.unchanged:  # ignored without a sign on a lit display: a switch at off
+            # (standby) that some guard of the belief already tests
+            tested = {n for guard in session.belief.model.guards for n in guard.when}
+            suspects = self._suspects(True, tested)
+        else:
+            return False  # another screen came up: a procedure's step, not a guard
+        silent = not (dark or failed.refused)
+        for name, blocking in suspects[:MAX_SUSPECTS]:
             if not session.budget.once("guard", f"learn:{failed.action.name}:{name}"):
                 continue
             other = next(v for v in session.domain_values(name) if v != blocking)
@@ -117,7 +125,10 @@ class GuardLearner:
             try:
                 route = plan(session.belief.compiled, session.belief.state, {**keep, name: other})
             except Unreachable:
-                continue
+                try:  # the suspect cannot change alone (switching on clears a start time)
+                    route = plan(session.belief.compiled, session.belief.state, {name: other})
+                except Unreachable:
+                    continue
             lifting = [a.name for a in route.actions]
             for planned in route.actions:
                 session.press(planned, exploring=True)
@@ -128,6 +139,7 @@ class GuardLearner:
                 or retry.unchanged
                 or retry.feedback.text == before
                 or (retry.surprises and retry.variable not in retry.surprises)
+                or (silent and retry.surprises)  # a lit panel: only what the belief predicted
             ):
                 continue
             try:
@@ -149,9 +161,10 @@ class GuardLearner:
             return True
         return False
 
-    def _suspects(self, failed: Executed, dark: bool) -> list[tuple[str, Any]]:
-        """Two-valued settings at a value that plausibly blocks keys: off behind a dark display,
-        on (a lock, a running cycle) behind a refusal."""
+    def _suspects(self, dark: bool, tested: set[str] | None = None) -> list[tuple[str, Any]]:
+        """Two-valued settings at a value that plausibly blocks keys: off behind a dark display
+        (``dark``), on (a lock, a running cycle) behind a refusal. With ``tested``: only those
+        settings, whatever guards their other value has (a key ignored without a sign)."""
         words = OFF_WORDS if dark else ON_WORDS
         suspects = []
         model = self.session.belief.model
@@ -164,7 +177,10 @@ class GuardLearner:
         for name, spec in model.variables.items():
             if not isinstance(spec, DiscreteVariable) or spec.depends_on is not None:
                 continue
-            if name in guarded and str(self.session.belief.value(name)) not in guarded[name]:
+            if tested is not None:
+                if name not in tested:
+                    continue
+            elif name in guarded and str(self.session.belief.value(name)) not in guarded[name]:
                 continue
             value = self.session.belief.value(name)
             if value is None or str(value).casefold() not in words:
@@ -200,7 +216,10 @@ class GuardLearner:
             }
         )
         tried = 0
-        for index, guard in enumerate(model.guards):
+        # a guard the agent wrote itself guessed every other key refused; the reader's own
+        # guards come from the manual: suppose the guess wrong first
+        order = sorted(enumerate(model.guards), key=lambda item: item[1].name != LEARNT)
+        for index, guard in order:
             for action in needed:
                 if action in guard.only or tried >= MAX_RELAXATIONS:
                     continue
@@ -255,8 +274,20 @@ class GuardLearner:
                     )
                 except Unreachable:
                     continue
+                before = self.session.last.text
                 for planned in found.actions:
                     self.session.press(planned, exploring=True)
+                name = compiled.vars[v].name
+                after = self.session.last
+                if (
+                    self.session.belief.value(name) != others[0]
+                    and after.accepted
+                    and after.text.strip()
+                    and after.text != before
+                ):
+                    # the panel answered (lit up, left the guard's message) with a screen the
+                    # belief cannot read: it did come out of the guard
+                    self.session.belief.set_value(name, others[0])
                 break
 
 

@@ -24,6 +24,7 @@ from apbot.agent.episode import Episode, TaskContext
 from apbot.agent.explorer import Explorer
 from apbot.agent.greedy import GreedyExecutor
 from apbot.agent.guards import GuardLearner
+from apbot.agent.looking import route_to_screen
 from apbot.agent.perception import Seen
 from apbot.agent.procedures import ProcedureRepairer
 from apbot.agent.session import (
@@ -112,6 +113,8 @@ class ClosedLoop:
             inside = {n: v for n, v in inside.items() if not _starts(n)}  # but do not start
         for name in outside:
             if name in self.session.explored:
+                if self._again_after_the_rest(name, inside):
+                    continue
                 raise Stop(
                     _outside_text({name: outside[name]}) + " (explored: "
                     f"{summary(self.session.domain_values(name))})"
@@ -165,6 +168,18 @@ class ClosedLoop:
         executed = self.execute(macro)
         if not self.check(macro, executed):
             self.pending.clear()  # the belief changed: plan again from what was observed
+
+    def _again_after_the_rest(self, name: str, inside: dict[str, Any]) -> bool:
+        """A goal value missing from what a walk showed, while the rest of the goal (a
+        programme) is still to be set: the value may exist there. Walk it again once the rest
+        holds (once per setting)."""
+        pending = [n for n, v in inside.items() if self.session.belief.value(n) != v]
+        if not [n for n in pending if not _starts(n)]:
+            return False
+        if not self.session.budget.once("inspect", f"again:{name}"):
+            return False
+        self.session.explored.discard(name)
+        return True
 
     def _last_reading(self, name: str) -> str:
         if name in self.session.unread:
@@ -282,6 +297,18 @@ class ClosedLoop:
         for name in names:
             if not self.session.budget.once("inspect", f"look:{name}"):
                 continue
+            session = self.session
+            route = route_to_screen(
+                session.belief.compiled,
+                session.belief.state,
+                name,
+                session.belief.model.variables,  # a look changes nothing else
+                sorted(session.offered & set(session.belief.model.actions)),
+            )
+            if route is not None:
+                for action in route:
+                    session.press(session.planned(action), exploring=True)
+                return True
             for feature, steps in self.session.belief.model.features.items():
                 index = next((i for i, s in enumerate(steps) if s.variable == name), None)
                 if index is None:
@@ -507,8 +534,9 @@ class ClosedLoop:
             f"{observed!r}, expected {predicted!r})",
         )
         adjusting = [e for e in executed[: upto + 1] if e.variable == name and e.believed_accepted]
-        if not adjusting:
-            return  # changed as a side effect: believing the display is all there is to do
+        if not adjusting:  # changed as a side effect: the step that did it says so now
+            self.procedures.learn_side_effect(name, executed[upto], observed)
+            return
         last = adjusting[-1]
         assert last.pointer is not None
         unchanged = observed == self.values_before.get(name)
@@ -521,6 +549,8 @@ class ClosedLoop:
             return
         if unchanged and self.procedures.absorbed(adjusting[0]):
             return
+        if first is not None and first.unchanged and self.guards.learn(first):
+            return  # a key ignored without a sign: a guard the belief lacked (now learnt)
         effect = self.session.effect(last.pointer, last.action.name)
         if self.session.stepping(last.pointer, last.action.name):
             self.explore(name, last, self.explorer.history(name, last, executed))
@@ -535,7 +565,8 @@ class ClosedLoop:
 
     def settle_contradictions(self, names: dict[str, Any]) -> bool:
         """A setting last shown with a value the belief cannot hold must not count as done:
-        a keypad setting learns the value (True: plan again); otherwise the run gives up."""
+        a keypad setting learns the value, another is walked again once (True: plan again);
+        otherwise the run gives up."""
         settled = False
         for name in [n for n in self.session.contradicted if n in names]:
             value = self.session.contradicted.pop(name)
@@ -543,6 +574,16 @@ class ClosedLoop:
             if getattr(spec, "entry", None) is not None:
                 self.explorer.widen(name, [value])
                 if self.session.belief.set_value(name, value):
+                    settled = True
+                    continue
+            elif self.session.budget.once("inspect", f"contradicted:{name}"):
+                # walk it again where it is now (another programme may have other values)
+                key = self.explorer.stepping_key(name)
+                if key is not None:
+                    self.explore(name, key)
+                    settled = True
+                    continue
+                if self.inspect(name):
                     settled = True
                     continue
             raise Stop(f"the display showed {name}={value!r}, which the belief cannot hold")

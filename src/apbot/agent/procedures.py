@@ -12,8 +12,15 @@ from __future__ import annotations
 from typing import Any
 
 from apbot.agent.guards import GuardLearner
-from apbot.agent.repair import RepairError, drop_action, insert_step, move_action, set_effects
-from apbot.agent.session import MISSING, Executed, Session, Stop
+from apbot.agent.repair import (
+    RepairError,
+    drop_action,
+    insert_step,
+    move_action,
+    set_effects,
+    set_side_effect,
+)
+from apbot.agent.session import MISSING, UNREADABLE, Executed, Session, Stop
 from apbot.model.schema import GoTo
 from apbot.plan.plan import PlannedAction
 
@@ -371,6 +378,42 @@ class ProcedureRepairer:
                     return True
             self.session.forget_pointer()
         return False
+
+    def learn_side_effect(self, name: str, done: Executed, observed: Any) -> bool:
+        """A press of another setting's step changed ``name`` otherwise than the belief said:
+        the step leaves it alone (the display kept the value), sets it to what was shown, or
+        resets it to its starting value — once per step and setting."""
+        session = self.session
+        if done.pointer is None or done.state_before is None or done.refused:
+            return False
+        if observed is MISSING or observed is UNREADABLE or observed is None:
+            return False
+        feature, index = done.pointer
+        step = session.belief.model.features[feature][index]
+        if step.variable == name or name not in session.belief.model.variables:
+            return False
+        compiled = session.belief.compiled
+        before = compiled.value(done.state_before, name)
+        initial = session.belief.initial_value(name, done.state_before)
+        value, reset = None, False
+        if observed == before:
+            if name not in step.set and name not in step.reset:
+                return False
+            change = "leaves it alone"
+        elif observed == initial:
+            reset, change = True, "resets it"
+        else:
+            value, change = observed, f"sets it to {observed}"
+        if not session.budget.once("side", f"{feature}:{index}:{name}"):
+            return False
+        try:
+            new = set_side_effect(session.belief.model, feature, index, name, value, reset)
+        except RepairError as exc:
+            session.episode.log("repair", f"could not change {feature}'s side effect: {exc}")
+            return False
+        session.adopt(new, f"{feature}: {done.action.name} {change} ({name})", done.pointer)
+        session.belief.set_value(name, observed)
+        return True
 
     def absorbed(self, entering: Executed) -> bool:
         """A key meant to start a new procedure changed nothing, and the display does not

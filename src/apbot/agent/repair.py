@@ -174,6 +174,30 @@ def set_on_entry(model: ApplianceModel, feature: str, step: int, on_entry: str) 
     return _rebuild(data)
 
 
+def set_side_effect(
+    model: ApplianceModel,
+    feature: str,
+    step: int,
+    name: str,
+    value: Any = None,
+    reset: bool = False,
+) -> ApplianceModel:
+    """What one step does to ``name`` besides its own setting: sets it to ``value``, resets it
+    (``reset``), or — with neither — leaves it alone."""
+    data = _dump(model)
+    entry = data["features"][feature][step]
+    entry.get("set", {}).pop(name, None)
+    entry["reset"] = [r for r in entry.get("reset", []) if r != name]
+    if value is not None:
+        entry.setdefault("set", {})[name] = value
+    elif reset:
+        entry["reset"].append(name)
+    for key in ("set", "reset"):
+        if not entry.get(key):
+            entry.pop(key, None)
+    return _rebuild(data)
+
+
 def allow(model: ApplianceModel, guard: int, action: str) -> ApplianceModel:
     """A guard lets ``action`` through after all."""
     data = _dump(model)
@@ -270,14 +294,27 @@ def add_setting(
     return _with_setting(model, name, variable, effects, entry)
 
 
+def add_keypad_setting(
+    model: ApplianceModel, name: str, variable: dict[str, Any], entry: str, digits: list[str]
+) -> ApplianceModel:
+    """A setting the model lacked that is typed on the keypad after ``entry`` (POWER, then
+    the digits): its variable (with its ``entry`` format) and a procedure ``set_NAME``."""
+    return _with_setting(model, name, variable, {d: "digit" for d in digits}, entry)
+
+
 def add_choice_setting(
     model: ApplianceModel, name: str, variable: dict[str, Any], keys: dict[str, Any]
 ) -> ApplianceModel:
     """A setting the model lacked whose keys each select one value (WHITE RICE, BROWN RICE…):
     its variable, the keys, and a one-step procedure ``set_NAME`` where each key sets its value
-    (depending on a programme as :func:`add_setting` says)."""
+    (a programme of its own: nothing is taken to depend on it, nor it on another)."""
     return _with_setting(
-        model, name, variable, {action: {"to": value} for action, value in keys.items()}, None
+        model,
+        name,
+        variable,
+        {action: {"to": value} for action, value in keys.items()},
+        None,
+        programme=True,
     )
 
 
@@ -287,10 +324,19 @@ def _with_setting(
     variable: dict[str, Any],
     effects: dict[str, Any],
     entry: str | None,
+    programme: bool = False,
 ) -> ApplianceModel:
     data = _dump(model)
     parents = [v.depends_on for v in model.variables.values() if v.depends_on is not None]
-    if parents:  # the programme other settings depend on most likely resets this one too
+    # keys that each select a value, or that reset other settings, choose a programme rather
+    # than adjust a setting of one
+    programme = programme or any(
+        step.reset or step.set
+        for steps in model.features.values()
+        for step in steps
+        if step.variable is None and set(step.actions) & set(effects)
+    )
+    if parents and not programme:  # the programme other settings depend on resets it too
         parent = max(set(parents), key=parents.count)
         own = {k: variable.pop(k) for k in ("values", "ranges", "initial") if k in variable}
         variable["depends_on"] = parent
@@ -300,6 +346,18 @@ def _with_setting(
     for action in [*effects, *([entry] if entry else [])]:
         if action not in known:
             _add_action(data, action)
+    plain = plain_keys(model) & set(effects)
+    used = {a for steps in model.features.values() for step in steps for a in step.actions}
+    if plain and entry is None:  # the reader kept the key as a plain step: it adjusts this
+        for procedure in data["features"].values():
+            for step in procedure:
+                if step.get("variable") is None and plain & set(step["actions"]):
+                    # the step's own keys, and those the model has nowhere (the way back)
+                    keys = list(dict.fromkeys([*step["actions"], *(set(effects) - used)]))
+                    step["variable"] = name
+                    step["effect"] = {a: effects.get(a, "none") for a in keys}
+                    step["actions"] = keys
+        return _rebuild(data)
     steps: list[dict[str, Any]] = (
         [{"actions": [entry], "note": "learnt from feedback"}] if entry else []
     )
@@ -315,13 +373,36 @@ def _with_setting(
     return _rebuild(data)
 
 
+def plain_keys(model: ApplianceModel) -> set[str]:
+    """Keys every step of which adjusts nothing ("press TIMER", then the digits): a key the
+    reader knew without knowing what it sets."""
+    steps = [step for feature in model.features.values() for step in feature]
+    used = {a for step in steps for a in step.actions}
+    adjusting = {a for step in steps if step.variable is not None for a in step.actions}
+    return used - adjusting
+
+
+def setting_step(model: ApplianceModel, name: str) -> tuple[str, int] | None:
+    """The first step that adjusts ``name`` (where a new setting was written)."""
+    for feature, steps in model.features.items():
+        for index, step in enumerate(steps):
+            if step.variable == name:
+                return feature, index
+    return None
+
+
 def _add_action(data: dict[str, Any], action: str) -> None:
     """An action the model did not know, on a control named after it."""
     control = _control_id(action)
+    digit = action.rsplit("_", 1)[-1]
+    keypad = len(digit) == 1 and digit.isdigit()  # press_7: a keypad key
     if not any(c["id"] == control for c in data["controls"]):
         turning = action.endswith(("_cw", "_ccw"))
-        data["controls"].append({"id": control, "kind": "dial" if turning else "button"})
+        kind = "key" if keypad else "dial" if turning else "button"
+        data["controls"].append({"id": control, "kind": kind})
     spec: dict[str, Any] = {"control": control}
+    if keypad:
+        spec["digit"] = int(digit)
     if action.startswith("hold"):
         spec.update(skill="hold", seconds=3)
     elif action.endswith("_ccw"):
@@ -340,6 +421,8 @@ def _control_id(action: str) -> str:
     for suffix in ("_cw", "_ccw"):
         if name.endswith(suffix):
             name = name[: -len(suffix)]
+    if name[:1].isdigit():  # press_7: keypad key 7
+        return f"key_{name}"
     return f"{name}_control" if name else "learnt_control"
 
 
