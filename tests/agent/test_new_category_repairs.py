@@ -8,10 +8,12 @@ from typing import Any
 
 import pytest
 
+from apbot.agent.budget import Budget
 from apbot.agent.environment import FeedbackMode, SimulatorEnvironment
 from apbot.agent.episode import Episode, TaskContext
 from apbot.agent.reader import DisplayReader
 from apbot.agent.registry import get_method
+from apbot.agent.session import AgentConfig, Session
 from apbot.model.goal import parse_goal
 from apbot.model.schema import ApplianceModel
 from tests.helpers import model_from
@@ -80,3 +82,76 @@ def test_an_unknown_lamp_never_confirms_a_goal_value(feedback: FeedbackMode) -> 
         feedback,
     )
     assert reached and episode.claimed_success, episode.failure
+
+
+# --- a dark panel shows no value ---------------------------------------------------------------
+
+ESPRESSO = """
+controls: [{id: power, label: POWER}, {id: steam, label: STEAM}]
+variables:
+  power: {type: discrete, values: ["off", "on"]}
+  steam: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "StE"}}
+actions: {press_power: {control: power}, press_steam: {control: steam}}
+features:
+  power: [{actions: [press_power], variable: power, effect: toggle}]
+  steam: [{actions: [press_steam], variable: steam, effect: toggle}]
+guards:
+  - {name: switched off, when: {power: "off"}, only: [press_power], display: "", hide: true}
+display: {idle: "93°", indicators: [steam]}
+"""
+
+
+def test_a_dark_panel_predicted_and_seen_confirms_no_lamp() -> None:
+    # the belief holds steam on behind a dark panel: the blank display, exactly as predicted,
+    # must not confirm it (its lamps are dark too)
+    belief = model_from(
+        ESPRESSO.replace('values: ["off", "on"], show', 'values: ["on", "off"], show')
+    )
+    env = SimulatorEnvironment(model_from(ESPRESSO), "display")
+    context = TaskContext(
+        "unit", "test", "t", "", {"steam": "on"}, belief, actions=tuple(env.actions)
+    )
+    session = Session(AgentConfig(), context, env, Budget())
+    session.start()
+    assert session.belief.value("steam") == "on" and session.last.text == ""
+    assert "steam" not in session.last_seen.values
+
+
+# --- a word per value copied wrong -------------------------------------------------------------
+
+DISHWASHER = """
+controls: [{id: eco, label: ECO}, {id: dry, label: DRY+}, {id: start, label: START}]
+variables:
+  programme: {type: discrete, values: [eco, auto]}
+  dry_plus: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "DRY+"}}
+  running: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "RUN"}}
+actions: {press_eco: {control: eco}, press_dry: {control: dry}, press_start: {control: start}}
+features:
+  programme: [{actions: [press_eco], variable: programme, effect: next}]
+  dry_plus: [{actions: [press_dry], variable: dry_plus, effect: toggle}]
+  start:
+    - {actions: [press_start], variable: programme, effect: none, set: {running: "on"}}
+guards:
+  - {name: running, when: {running: "on"}, only: [press_start], signal: silent}
+display: {idle: "{programme}", indicators: [dry_plus, running]}
+"""
+
+
+@pytest.mark.parametrize("feedback", MODES)
+def test_a_lamp_word_copied_wrong_is_learnt_from_the_walk(feedback: FeedbackMode) -> None:
+    belief = model_from(DISHWASHER.replace('"on": "DRY+"', '"on": "ON"'))
+    episode, reached = run(model_from(DISHWASHER), belief, {"dry_plus": "on"}, feedback)
+    assert reached and episode.claimed_success, episode.failure
+    if feedback == "display":
+        assert any("'DRY+'" in note for note in episode.repairs)
+
+
+@pytest.mark.parametrize("feedback", MODES)
+def test_a_start_key_believed_to_set_nothing_is_probed_for_the_run_state(
+    feedback: FeedbackMode,
+) -> None:
+    belief = model_from(DISHWASHER.replace(', set: {running: "on"}', ""), check=False)
+    goal = {"programme": "auto", "running": "on"}
+    episode, reached = run(model_from(DISHWASHER), belief, goal, feedback)
+    assert reached and episode.claimed_success, episode.failure
+    assert any("press_start sets it to on (running)" in note for note in episode.repairs)

@@ -113,7 +113,7 @@ class Explorer:
         """Texts the belief could not read: learn how the display prints the setting from them,
         then read them again; what stays unreadable counts as dark."""
         texts = [v.text for v in forward + (backward or []) if isinstance(v, Unread)]
-        if texts:
+        if texts and not self.displays.learn_word(name, forward + (backward or [])):
             self.displays.learn(name, texts)
 
         def again(trace: list[Any]) -> list[Any]:

@@ -276,6 +276,8 @@ class ClosedLoop:
                 if self._plannable({**reachable, name: value}):
                     reachable[name] = value
                     continue
+                if _starts(name) and reachable and self._progress(reachable):
+                    return self._plan(reachable)  # a run state comes last: set the rest first
                 # look for the way to it first: progress on the rest (starting a cycle, say)
                 # could close the door on it
                 if self.procedures.recover_unreachable({name: value}):
@@ -381,6 +383,13 @@ class ClosedLoop:
         if len(head) + len(rest) != len(found):
             return found
         return Plan(found.goal, head.macro_actions + rest.macro_actions, found.expanded)
+
+    def _progress(self, target: dict[str, Any]) -> bool:
+        """Whether the belief has a plan that changes something towards ``target``."""
+        try:
+            return bool(self._plan(target).macro_actions)
+        except Unreachable:
+            return False
 
     def _plannable(self, target: dict[str, Any]) -> bool:
         try:

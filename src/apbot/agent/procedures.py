@@ -24,6 +24,8 @@ from apbot.agent.session import MISSING, UNREADABLE, Executed, Session, Stop
 from apbot.model.schema import GoTo
 from apbot.plan.plan import PlannedAction
 
+_RUN_WORDS = ("running", "heating", "dispensing", "status", "brewing", "cooking")
+
 
 class ProcedureRepairer:
     """Find and insert missing steps (a guard that explains the trouble comes first)."""
@@ -314,6 +316,32 @@ class ProcedureRepairer:
             if self._first_step_from_orphans(name, features):
                 return True
             if any(self.find_separator(feature, name) for feature in features):
+                return True
+            if not features and self._setter(name, blocked[name]):
+                return True
+        return False
+
+    def _setter(self, name: str, value: Any) -> bool:
+        """A goal setting no step adjusts, which none of the belief's side effects brings to
+        the goal value (running, set by START): a key named like it — START for a run state —
+        may set it as a side effect the reader missed. Press each such key once; the first
+        after which the display shows the setting at the goal value teaches that side effect."""
+        session = self.session
+        compiled = session.belief.compiled
+        keys = self.keys_like(name, exclude=set())
+        if any(word in name for word in _RUN_WORDS):
+            keys += [a for a in session.belief.model.actions if "start" in a.split("_")]
+        for key in list(dict.fromkeys(keys))[:3]:
+            if key not in session.offered or not session.budget.once("setter", key):
+                continue
+            self.guards.lift(key)
+            probe = session.press(session.planned(key), exploring=True)
+            observed = probe.observed(name)
+            if not probe.feedback.accepted or probe.state_before is None:
+                continue
+            if observed != value or observed == compiled.value(probe.state_before, name):
+                continue
+            if self.learn_side_effect(name, probe, observed):
                 return True
         return False
 

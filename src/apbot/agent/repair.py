@@ -153,11 +153,14 @@ def set_entry_format(model: ApplianceModel, name: str, fmt: str) -> ApplianceMod
     return _rebuild(data)
 
 
-def set_display(model: ApplianceModel, name: str, template: str) -> ApplianceModel:
+def set_display(model: ApplianceModel, name: str, template: str | dict[str, str]) -> ApplianceModel:
     """Print a variable through another template: as its label when the template is the usual
-    "LABEL {value}", else as its ``show`` template (``"PL{value}"``)."""
+    "LABEL {value}", else as its ``show`` template (``"PL{value}"``, or a word per value)."""
     data = _dump(model)
     var = data["variables"][name]
+    if isinstance(template, dict):
+        var["show"] = template
+        return _rebuild(data)
     label, _, rest = template.partition(" ")
     if rest == "{value}" and "{" not in label and not isinstance(var.get("show"), dict):
         var["label"] = label

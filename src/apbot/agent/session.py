@@ -235,7 +235,8 @@ class Session:
             kind, _ = self.expected_screen()
             return Seen(
                 feedback.text,
-                dict(expected.values),
+                # a dark panel (a hiding guard) shows no value, not even its lamps
+                {} if kind == "guard" else dict(expected.values),
                 screen=expected.focus,
                 screen_kind=kind,
                 screens=frozenset({(kind, expected.focus)}),
