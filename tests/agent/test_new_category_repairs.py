@@ -155,3 +155,36 @@ def test_a_start_key_believed_to_set_nothing_is_probed_for_the_run_state(
     episode, reached = run(model_from(DISHWASHER), belief, goal, feedback)
     assert reached and episode.claimed_success, episode.failure
     assert any("press_start sets it to on (running)" in note for note in episode.repairs)
+
+
+WORDED = """
+controls: [{id: prog, label: PROG}, {id: dry, label: DRY}, {id: delay, label: DELAY}]
+variables:
+  programme: {type: discrete, values: [eco, glass]}
+  extra_dry:
+    type: discrete
+    depends_on: programme
+    show: {"off": "", "on": "Extr"}
+    cases: {eco: ["off", "on"]}
+  delay: {type: time, ranges: [["00:00:00", "03:00:00", 3600]], format: h, show: "{value}"}
+actions: {press_prog: {control: prog}, press_dry: {control: dry}, press_delay: {control: delay}}
+features:
+  programme: [{actions: [press_prog], variable: programme, effect: next}]
+  extra_dry: [{actions: [press_dry], variable: extra_dry, effect: toggle}]
+  delay: [{actions: [press_delay], variable: delay, effect: next}]
+display: {idle: "{programme}", indicators: [extra_dry, delay]}
+"""
+
+
+def test_a_setting_printed_by_a_word_per_value_reads_no_other_words_as_its_value() -> None:
+    # extra_dry's general screen exists only for "--" in a programme without it: its
+    # abbreviated label must not read "ExtraDry  0 h" (a word the belief copied as "Extr")
+    # as extra_dry = "0 h"
+    reader = DisplayReader(model_from(WORDED))
+    assert not any(
+        h.screen.variable == "extra_dry" for h in reader.read("ExtraDry  0 h").hypotheses
+    )
+    (absent,) = [
+        h for h in reader.read("EXTRA DRY --").hypotheses if h.screen.variable == "extra_dry"
+    ]
+    assert absent.absent == {"extra_dry"}
