@@ -309,6 +309,8 @@ class ClosedLoop:
                 for action in route:
                     session.press(session.planned(action), exploring=True)
                 return True
+            if self._guarding_the_goal():
+                continue  # getting out would undo the goal (stop a running cycle): no look
             for feature, steps in self.session.belief.model.features.items():
                 index = next((i for i, s in enumerate(steps) if s.variable == name), None)
                 if index is None:
@@ -318,6 +320,16 @@ class ClosedLoop:
                 self.session.press(self.session.planned(steps[index].actions[0]), exploring=True)
                 return True
         return False
+
+    def _guarding_the_goal(self) -> bool:
+        """A guard holds whose condition the goal itself asks for (running, locked)."""
+        compiled, state = self.session.belief.compiled, self.session.belief.state
+        goal = set(self.context.goal)
+        return any(
+            all(state.values[v] in ok for v, ok in guard.conditions)
+            and any(compiled.vars[v].name in goal for v, _ in guard.conditions)
+            for guard in compiled.guards
+        )
 
     def inspect(self, name: str) -> bool:
         """A goal setting the belief cannot reach: go through the procedure that adjusts it
@@ -533,6 +545,8 @@ class ClosedLoop:
             f"{name} keeps showing values the model does not predict (last: "
             f"{observed!r}, expected {predicted!r})",
         )
+        if self.procedures.independent(name, executed[upto], observed):
+            return
         adjusting = [e for e in executed[: upto + 1] if e.variable == name and e.believed_accepted]
         if not adjusting:  # changed as a side effect: the step that did it says so now
             self.procedures.learn_side_effect(name, executed[upto], observed)

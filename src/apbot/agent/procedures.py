@@ -15,6 +15,7 @@ from apbot.agent.guards import GuardLearner
 from apbot.agent.repair import (
     RepairError,
     drop_action,
+    drop_dependence,
     insert_step,
     move_action,
     set_effects,
@@ -392,6 +393,8 @@ class ProcedureRepairer:
         step = session.belief.model.features[feature][index]
         if step.variable == name or name not in session.belief.model.variables:
             return False
+        if name in done.unseen_before or name in session.discovered:
+            return False  # what it was before is a guess: the change may be older
         compiled = session.belief.compiled
         before = compiled.value(done.state_before, name)
         initial = session.belief.initial_value(name, done.state_before)
@@ -412,6 +415,30 @@ class ProcedureRepairer:
             session.episode.log("repair", f"could not change {feature}'s side effect: {exc}")
             return False
         session.adopt(new, f"{feature}: {done.action.name} {change} ({name})", done.pointer)
+        session.belief.set_value(name, observed)
+        return True
+
+    def independent(self, name: str, done: Executed, observed: Any) -> bool:
+        """A setting found on the panel, guessed to depend on the programme, shows again the
+        value it showed before a programme change the belief said would reset it: it does not
+        depend on the programme (once)."""
+        session = self.session
+        spec = session.belief.model.variables.get(name)
+        if spec is None or spec.depends_on is None or name not in session.discovered:
+            return False
+        if observed is MISSING or done.shown_before.get(name, MISSING) != observed:
+            return False
+        case = session.case(name)
+        if case is None or not session.budget.once("side", f"independent:{name}"):
+            return False
+        try:
+            new = drop_dependence(session.belief.model, name, case)
+        except RepairError as exc:
+            session.episode.log("repair", f"could not make {name} independent: {exc}")
+            return False
+        session.adopt(
+            new, f"{name} keeps its value whatever the {spec.depends_on}", session.belief.pointer()
+        )
         session.belief.set_value(name, observed)
         return True
 

@@ -79,6 +79,8 @@ class Executed:
     unchanged: bool = False
     buffer: str = ""  # the keypad digits the belief had typed into the step after the action
     state_before: State | None = None  # the belief's state before the action
+    unseen_before: frozenset[str] = frozenset()  # changed unseen (or guessed) before the action
+    shown_before: dict[str, Any] = field(default_factory=dict)  # last shown, before the action
 
     def observed(self, name: str) -> Any:
         """The value of ``name`` the display showed after this action (MISSING if none)."""
@@ -135,6 +137,8 @@ class Session:
         before_state = self.belief.state
         before = self.belief.pointer()
         before_text = self.last.text
+        unseen = frozenset(self.stale | self.blind | self.unread | self.guessed_initial)
+        shown_before = dict(self.evidence)
         if action.name not in self.offered:  # the belief has a control the appliance lacks
             feedback = Feedback(
                 self.last.text, dict(self.last.values), False, "the appliance has no such action"
@@ -221,6 +225,8 @@ class Session:
             unchanged,
             buffer,
             before_state,
+            unseen,
+            shown_before,
         )
 
     def planned(self, action: str) -> PlannedAction:
