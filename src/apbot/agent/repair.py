@@ -375,18 +375,25 @@ def _with_setting(
             step["effect"] = {a: effects.get(a, "none") for a in keys}
             step["actions"] = keys
         return _rebuild(data)
+    adjusting = {
+        "actions": list(effects),
+        "variable": name,
+        "effect": effects,
+        "note": "learnt from feedback",
+    }
+    after = plain_steps(model, [entry]) if entry else []
+    if after:  # the entry key is a plain step already ("press POWER, then …"): it goes on there
+        feature, index = after[0]
+        data["features"][feature].insert(index + 1, adjusting)
+        return _rebuild(data)
     steps: list[dict[str, Any]] = (
         [{"actions": [entry], "note": "learnt from feedback"}] if entry else []
     )
-    steps.append(
-        {
-            "actions": list(effects),
-            "variable": name,
-            "effect": effects,
-            "note": "learnt from feedback",
-        }
-    )
-    data["features"][f"set_{name}"] = steps
+    steps.append(adjusting)
+    title = f"set_{name}"
+    while title in data["features"]:
+        title += "_learnt"
+    data["features"][title] = steps
     return _rebuild(data)
 
 
