@@ -376,7 +376,7 @@ def test_a_look_never_stops_what_the_goal_started() -> None:
     from apbot.bench.faults import inject_faults
 
     truth = suite_model("washing_machine_5")
-    belief, faults = inject_faults(truth, 0.3, seed="10/washing_machine_5")
+    belief, _ = inject_faults(truth, 0.3, seed="10/washing_machine_5")
     assert "eco" not in belief.variables
     goal = {
         "programme": "synthetic",
@@ -386,6 +386,28 @@ def test_a_look_never_stops_what_the_goal_started() -> None:
         "delay": "3 h",
         "running": "on",
     }
-    episode, reached = run(truth, belief, goal)  # asserts no false claim
+    episode, _ = run(truth, belief, goal)  # asserts no false claim
     looks = [e.action for e in episode.trace if e.kind == "action" and e.exploring]
     assert "press_power" not in looks[looks.index("press_eco") + 3 :]
+
+
+def test_a_setting_found_on_the_panel_is_seen_again_before_the_start_locks_the_keys() -> None:
+    # prewash was found before the programme was chosen, which may reset it: it must be seen
+    # again, and after START nothing but START/PAUSE works
+    from apbot.bench.faults import inject_faults
+
+    truth = suite_model("washing_machine_1")
+    belief, _ = inject_faults(truth, 0.3, seed="1/washing_machine_1")
+    assert "prewash" not in belief.variables
+    goal = {
+        "programme": "duvet",
+        "temperature": 60,
+        "prewash": "on",
+        "extra_rinse": "on",
+        "end_time": "19 h",
+        "running": "on",
+    }
+    episode, reached = run(truth, belief, goal)
+    assert reached and episode.claimed_success
+    start = next(i for i, e in enumerate(episode.trace) if e.action == "press_start")
+    assert any(e.action == "press_prewash" for e in episode.trace[start - 3 : start])

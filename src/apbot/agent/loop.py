@@ -163,6 +163,12 @@ class ClosedLoop:
                 raise Stop("the goal holds", success=True)
             self.pending = list(found.macro_actions)
             self.session.episode.log("plan", " → ".join(m.feature for m in found.macro_actions))
+        if any(_starts(n) for n in self.pending[0].expect):
+            # once it runs, most keys are locked out: see what is unconfirmed first
+            unseen = self.session.unconfirmed({n for n in inside if not _starts(n)})
+            if unseen and self._look(unseen):
+                self.pending.clear()
+                return
         macro = self.pending.pop(0)
         self.start_macro(macro)
         executed = self.execute(macro)

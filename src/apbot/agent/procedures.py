@@ -393,7 +393,10 @@ class ProcedureRepairer:
         step = session.belief.model.features[feature][index]
         if step.variable == name or name not in session.belief.model.variables:
             return False
-        if name in done.unseen_before or name in session.discovered:
+        if name in session.discovered:
+            return False  # what it depends on is a guess
+        kept = done.shown_before.get(name, MISSING) == observed  # as last shown: untouched
+        if name in done.unseen_before and not kept:
             return False  # what it was before is a guess: the change may be older
         compiled = session.belief.compiled
         before = compiled.value(done.state_before, name)
