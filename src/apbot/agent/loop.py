@@ -25,6 +25,7 @@ from apbot.agent.explorer import Explorer
 from apbot.agent.greedy import GreedyExecutor
 from apbot.agent.guards import GuardLearner
 from apbot.agent.looking import route_to_screen
+from apbot.agent.merged import ProcedureSplitter
 from apbot.agent.perception import Seen
 from apbot.agent.procedures import ProcedureRepairer
 from apbot.agent.session import (
@@ -61,6 +62,7 @@ class ClosedLoop:
         self.guards = GuardLearner(self.session)
         self.procedures = ProcedureRepairer(self.session, self.guards)
         self.finder = VariableFinder(self.session, self.guards)
+        self.splitter = ProcedureSplitter(self.session)
         self.greedy = GreedyExecutor(self.session)
         self.config = config
         self.context = context
@@ -430,7 +432,15 @@ class ClosedLoop:
                 n: "(unreadable)" if o is UNREADABLE else o for n, (_, o) in done.surprises.items()
             },
         )
-        if (
+        if not done.refused and self.splitter.split(done):
+            pass  # plan again with the procedure the key really starts
+        elif (
+            not done.refused
+            and (feature := self.splitter.misentered(done)) is not None
+            and self.procedures.find_entry(feature)
+        ):
+            pass  # the procedure lacked its entry key: found
+        elif (
             not done.refused
             and self.procedures.plausibly_moved(done)
             and (self.procedures.move_key(done))

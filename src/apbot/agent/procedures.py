@@ -318,6 +318,16 @@ class ProcedureRepairer:
                 return True
         return False
 
+    def find_entry(self, feature: str) -> bool:
+        """An earlier key was believed to start ``feature`` and did nothing: the procedure
+        lacks the key that starts it. Probe for it (once per setting)."""
+        steps = self.session.belief.model.features.get(feature, [])
+        name = next((s.variable for s in steps if s.variable is not None), None)
+        if name is None or not self.session.budget.once("unreachable", name):
+            return False
+        self.session.forget_pointer()
+        return self._first_step_from_orphans(name, [feature])
+
     def _first_step_from_orphans(self, name: str, features: list[str]) -> bool:
         """Keys no procedure uses, or named like the setting (an entry key filed under another
         procedure): the one that brings the setting up is the entry step it lacks."""

@@ -174,6 +174,30 @@ def set_on_entry(model: ApplianceModel, feature: str, step: int, on_entry: str) 
     return _rebuild(data)
 
 
+def split_feature(
+    model: ApplianceModel, feature: str, index: int, first: bool = False
+) -> tuple[ApplianceModel, str]:
+    """``feature`` ends before step ``index``; its steps from there are a procedure of their own
+    (named after the first one's setting), right after it — or before every other (``first``).
+    """
+    data = _dump(model)
+    steps = data["features"][feature]
+    if not 0 < index < len(steps):
+        raise RepairError(f"{feature} has no step {index} to split at")
+    head, tail = steps[:index], steps[index:]
+    base = f"{tail[0].get('variable') or feature}_procedure"
+    name = base
+    while name in data["features"]:
+        name += "_learnt"
+    features: dict[str, Any] = {} if not first else {name: tail}
+    for title, body in data["features"].items():
+        features[title] = head if title == feature else body
+        if title == feature and not first:
+            features[name] = tail
+    data["features"] = features
+    return _rebuild(data), name
+
+
 def drop_dependence(model: ApplianceModel, name: str, case: str) -> ApplianceModel:
     """``name`` does not depend on a programme after all: it keeps its values in ``case``
     (the programme it was seen in) whatever the programme."""
