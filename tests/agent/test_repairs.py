@@ -342,3 +342,72 @@ def test_a_goal_value_a_walk_lacked_is_looked_for_again_in_the_goals_programme()
     )
     episode, reached = run(truth, belief, {"programme": "simmer", "temperature": 105})
     assert reached and episode.claimed_success
+
+
+def test_a_key_seen_refused_under_a_guard_is_never_supposed_allowed_there() -> None:
+    # the reader missed the child lock and read the cooking guard without the lock key: START
+    # is refused while locked (a guard learnt from it), so "lock while cooking" must be what
+    # the agent supposes — not "start while locked", which it saw refused
+    belief = suite_model(
+        "microwave_4",
+        (
+            '  - name: child lock\n    when: {child_lock: "on"}\n    only: [hold_clock]\n'
+            '    display: "LOCKED"\n',
+            "",
+        ),
+        ("only: [press_stop, press_add30, hold_clock]", "only: [press_stop, press_add30]"),
+    )
+    goal = {
+        "auto_programme": "roast chicken",
+        "auto_weight": "1400 g",
+        "running": "on",
+        "child_lock": "on",
+    }
+    episode, reached = run(suite_model("microwave_4"), belief, goal)
+    assert reached and episode.claimed_success
+    assert "cooking may let hold_clock work (to be seen)" in episode.repairs
+    assert not any("let press_start work" in r for r in episode.repairs)
+
+
+def test_a_look_never_stops_what_the_goal_started() -> None:
+    # a setting found on the panel must be seen again after START; the only way to it the
+    # belief knows is to switch off — which clears the delay on the appliance (the reader
+    # missed that): no look then, and no claim of success resting on it
+    from apbot.bench.faults import inject_faults
+
+    truth = suite_model("washing_machine_5")
+    belief, _ = inject_faults(truth, 0.3, seed="10/washing_machine_5")
+    assert "eco" not in belief.variables
+    goal = {
+        "programme": "synthetic",
+        "temperature": 60,
+        "spin_speed": 800,
+        "eco": "on",
+        "delay": "3 h",
+        "running": "on",
+    }
+    episode, _ = run(truth, belief, goal)  # asserts no false claim
+    looks = [e.action for e in episode.trace if e.kind == "action" and e.exploring]
+    assert "press_power" not in looks[looks.index("press_eco") + 3 :]
+
+
+def test_a_setting_found_on_the_panel_is_seen_again_before_the_start_locks_the_keys() -> None:
+    # prewash was found before the programme was chosen, which may reset it: it must be seen
+    # again, and after START nothing but START/PAUSE works
+    from apbot.bench.faults import inject_faults
+
+    truth = suite_model("washing_machine_1")
+    belief, _ = inject_faults(truth, 0.3, seed="1/washing_machine_1")
+    assert "prewash" not in belief.variables
+    goal = {
+        "programme": "duvet",
+        "temperature": 60,
+        "prewash": "on",
+        "extra_rinse": "on",
+        "end_time": "19 h",
+        "running": "on",
+    }
+    episode, reached = run(truth, belief, goal)
+    assert reached and episode.claimed_success
+    start = next(i for i, e in enumerate(episode.trace) if e.action == "press_start")
+    assert any(e.action == "press_prewash" for e in episode.trace[start - 3 : start])

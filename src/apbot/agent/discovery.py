@@ -27,6 +27,7 @@ from apbot.agent.repair import (
     add_keypad_setting,
     add_setting,
     plain_keys,
+    plain_steps,
     setting_step,
 )
 from apbot.agent.session import Executed, Session, summary
@@ -102,7 +103,11 @@ class VariableFinder:
                     continue
                 if self._learn(name, goal_value, found[0], found[1], before, key, adjuster):
                     return True
-        return any(self._typed(name, goal_value, key) for key in single)
+        if any(self._typed(name, goal_value, key) for key in single):
+            return True
+        keypad = [a for a in session.belief.model.actions if _is_digit(a)]
+        typing_first = bool(keypad) and bool(plain_steps(session.belief.model, keypad))
+        return typing_first and self._typed(name, goal_value, None)
 
     def _walked(self, key: str) -> tuple[list[str], str] | None:
         """Walk ``key`` (and its opposite back from an end): the texts in value order and the
@@ -203,23 +208,26 @@ class VariableFinder:
         session.reread()
         return True
 
-    def _typed(self, name: str, goal_value: Any, key: str) -> bool:
-        """An entry key that shows one screen, on a panel with a keypad: type the goal's
-        number after it; a display that then shows it in the screen's place is the setting,
-        typed in as a number (``P 100%`` → ``P 70%``)."""
+    def _typed(self, name: str, goal_value: Any, key: str | None) -> bool:
+        """On a panel with a keypad, type the goal's value — after an entry key that shows one
+        screen (``key``), or straight away where the belief has the digits as a procedure that
+        sets nothing; a display that then shows the value is the setting, typed in as a number
+        (``P 100%`` → ``P 70%``) or a clock (``TIME 00:01`` → ``TIME 01:30``)."""
         session = self.session
         digits = _digit_keys(session.context.actions or tuple(session.offered))
-        number = _whole(goal_value)
-        if number is None or len(digits) < 10:
+        typing = _typing(goal_value)
+        if typing is None or len(digits) < 10:
             return False
+        kind, typed, value, fmt = typing
         self.guards.lift_all()
-        entered = session.press(_planned(key), exploring=True)
         lamps = session.perceiver.reader.lamp_texts()
-        first = _main(entered.feedback.text, lamps)
-        if not entered.feedback.accepted or not first or not _unknown(entered):
-            return False
-        done = entered
-        for digit in str(number):
+        texts: list[str] = []
+        if key is not None:
+            entered = session.press(_planned(key), exploring=True)
+            texts.append(_main(entered.feedback.text, lamps))
+            if not entered.feedback.accepted or not texts[0] or not _unknown(entered):
+                return False
+        for digit in typed:
             action = digits[digit]
             planned = (
                 session.planned(action) if action in session.belief.model.actions else None
@@ -227,14 +235,17 @@ class VariableFinder:
             done = session.press(planned, exploring=True)
             if not done.feedback.accepted:
                 return False
-        last = _main(done.feedback.text, lamps)
-        learnt = infer_setting(name, [first, last], "numeric", last)
-        if learnt is None or learnt.current != number or not _fits(learnt.variable, goal_value):
+            texts.append(_main(done.feedback.text, lamps))
+        learnt = infer_setting(name, [texts[0], texts[-1]], kind, texts[-1])
+        if learnt is None or learnt.current != value or not _fits(learnt.variable, goal_value):
             return False
         variable = dict(learnt.variable)
         variable.pop("wrap", None)
-        width = max(len(str(number)), len(str(_whole(variable["initial"]) or "")))
-        variable["entry"] = {"format": "number", "max_digits": width}
+        if kind == "numeric":
+            width = max(len(typed), len(str(_whole(variable["initial"]) or "")))
+            variable["entry"] = {"format": fmt, "max_digits": width}
+        else:
+            variable["entry"] = {"format": fmt}
         try:
             new = add_keypad_setting(
                 session.belief.model, name, variable, key, [digits[d] for d in sorted(digits)]
@@ -242,14 +253,11 @@ class VariableFinder:
         except RepairError as exc:
             session.episode.log("repair", f"could not add {name}: {exc}")
             return False
-        session.adopt(
-            new,
-            f"{name}: found under {key}, then the digits; {learnt.note}",
-            setting_step(new, name),
-        )
+        under = f"{key}, then the digits" if key else "the digits"
+        session.adopt(new, f"{name}: found under {under}; {learnt.note}", setting_step(new, name))
         session.discovered.add(name)
-        session.belief.set_value(name, number)
-        session.evidence[name] = number
+        session.belief.set_value(name, value)
+        session.evidence[name] = value
         session.reread()
         return True
 
@@ -564,6 +572,33 @@ def _digit_keys(actions: Sequence[str]) -> dict[str, str]:
     }
 
 
+def _typing(goal_value: Any) -> tuple[str, str, Any, str] | None:
+    """How to type a goal value on a keypad: (kind, digits, the value as the setting holds it,
+    entry format) — a whole number as itself, a time as minutes and seconds (``1:30`` →
+    ``130``), or hours and minutes past 99 minutes.
+
+    >>> _typing(70), _typing("1 min 30 s")
+    (('numeric', '70', 70, 'number'), ('time', '130', '00:01:30', 'mm:ss'))
+    >>> _typing("2 h"), _typing("1000 ml")
+    (('time', '200', '02:00:00', 'h:mm'), ('numeric', '1000', 1000, 'number'))
+    """
+    probe = TimeVariable(type="time", ranges=[("00:00:00", "99:59:59", 1)])
+    try:  # a clock, or a number with a unit of time
+        clock = _kind_of(goal_value) == "time" or any(c.isalpha() for c in str(goal_value))
+        value = parse_value(probe, goal_value) if clock else None
+    except ValueProblem:
+        value = None
+    if value is None:
+        number = _whole(goal_value)
+        return None if number is None else ("numeric", str(number), number, "number")
+    seconds = parse_hms(value)
+    if seconds < 100 * 60:
+        return "time", str(seconds // 60 * 100 + seconds % 60), value, "mm:ss"
+    if seconds % 60 == 0:
+        return "time", str(seconds // 3600 * 100 + seconds % 3600 // 60), value, "h:mm"
+    return None
+
+
 def _whole(value: Any) -> int | None:
     """A goal value as a whole number (``70``, ``"70 %"``), if it is one."""
     match = _NUMBER.match(str(value))
@@ -579,8 +614,12 @@ def _is_digit(action: str) -> bool:
 
 
 def _unknown(done: Executed) -> bool:
-    """The press showed text the belief cannot read (or reads only in part)."""
-    return done.seen is not None and (done.seen.unknown or done.seen.partial)
+    """The press showed text the belief cannot read (or reads only in part, or only as a value
+    its setting cannot have: ``DELAY 0:00`` for a ``DELAY MODE`` of standard/intensive)."""
+    seen = done.seen
+    return seen is not None and (
+        seen.unknown or seen.partial or (seen.screen is not None and seen.screen in seen.outside)
+    )
 
 
 def _is_reverse(action: str) -> bool:

@@ -32,6 +32,8 @@ class GuardLearner:
 
     def __init__(self, session: Session) -> None:
         self.session = session
+        # (guard condition, key) pairs seen refused: no relaxation may suppose them allowed
+        self.witnessed: set[tuple[str, str]] = set()
 
     def explain(self, refused: Executed) -> bool:
         """A refusal whose display is one of the belief's guard messages: believe that guard
@@ -53,6 +55,9 @@ class GuardLearner:
                     self.session.belief.set_value(compiled.vars[v].name, domain.values[min(ok)])
             self.session.episode.log(
                 "repair", f"refused with {text!r}: the appliance must be in '{guard.name or text}'"
+            )
+            self.witnessed.add(
+                (_condition(self.session.belief.model.guards[index].when), refused.action.name)
             )
             return True
         return False
@@ -94,6 +99,7 @@ class GuardLearner:
                 f"{guard.name or 'guard ' + str(index)} does not let {failed.action.name} work",
                 session.belief.pointer(),
             )
+            self.witnessed.add((_condition(new.guards[index].when), failed.action.name))
             return True
         return False
 
@@ -158,6 +164,7 @@ class GuardLearner:
                 f"while {name} is {blocking}, {failed.action.name} does not work",
                 session.belief.pointer(),
             )
+            self.witnessed.add((_condition({name: blocking}), failed.action.name))
             return True
         return False
 
@@ -206,37 +213,36 @@ class GuardLearner:
         if that makes the goal reachable (once each). A refusal later takes it back."""
         session = self.session
         model = session.belief.model
+        tested = {n for guard in model.guards for n in guard.when}
+        steps = [s for feature in model.features.values() for s in feature]
+        # the keys of the locks and run states first (start while locked, lock while running)
         needed = sorted(
-            {
-                a
-                for steps in model.features.values()
-                for s in steps
-                if s.variable in target
-                for a in s.actions
-            }
+            {a for s in steps if s.variable in target for a in s.actions},
+            key=lambda a: (not any(s.variable in tested for s in steps if a in s.actions), a),
         )
         tried = 0
         # a guard the agent wrote itself guessed every other key refused; the reader's own
         # guards come from the manual: suppose the guess wrong first
         order = sorted(enumerate(model.guards), key=lambda item: item[1].name != LEARNT)
-        for index, guard in order:
-            for action in needed:
-                if action in guard.only or tried >= MAX_RELAXATIONS:
-                    continue
-                tried += 1
-                try:
-                    variant = allow(model, index, action)
-                    # a small search each: the variant is a guess, and a throwaway compilation
-                    plan(CompiledModel(variant), session.belief.state, target, RELAX_BUDGET)
-                except (RepairError, Unreachable):
-                    continue
-                if not session.budget.once("guard", f"relax:{index}:{action}"):
-                    continue
-                label = guard.name or f"guard {index}"
-                session.adopt(
-                    variant, f"{label} may let {action} work (to be seen)", session.belief.pointer()
-                )
-                return True
+        for action, (index, guard) in ((a, g) for a in needed for g in order):
+            if action in guard.only or tried >= MAX_RELAXATIONS:
+                continue
+            if (_condition(guard.when), action) in self.witnessed:
+                continue  # seen refused there: no supposing
+            tried += 1
+            try:
+                variant = allow(model, index, action)
+                # a small search each: the variant is a guess, and a throwaway compilation
+                plan(CompiledModel(variant), session.belief.state, target, RELAX_BUDGET)
+            except (RepairError, Unreachable):
+                continue
+            if not session.budget.once("guard", f"relax:{index}:{action}"):
+                continue
+            label = guard.name or f"guard {index}"
+            session.adopt(
+                variant, f"{label} may let {action} work (to be seen)", session.belief.pointer()
+            )
+            return True
         return False
 
     def lift_all(self) -> None:
@@ -289,6 +295,11 @@ class GuardLearner:
                     # belief cannot read: it did come out of the guard
                     self.session.belief.set_value(name, others[0])
                 break
+
+
+def _condition(when: dict[str, Any]) -> str:
+    """A guard's condition as a key (the same whatever the guard is called)."""
+    return repr(sorted((name, str(value)) for name, value in when.items()))
 
 
 def _main_text(text: str, session: Session) -> str:

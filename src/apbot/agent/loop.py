@@ -25,6 +25,7 @@ from apbot.agent.explorer import Explorer
 from apbot.agent.greedy import GreedyExecutor
 from apbot.agent.guards import GuardLearner
 from apbot.agent.looking import route_to_screen
+from apbot.agent.merged import ProcedureSplitter
 from apbot.agent.perception import Seen
 from apbot.agent.procedures import ProcedureRepairer
 from apbot.agent.session import (
@@ -61,6 +62,7 @@ class ClosedLoop:
         self.guards = GuardLearner(self.session)
         self.procedures = ProcedureRepairer(self.session, self.guards)
         self.finder = VariableFinder(self.session, self.guards)
+        self.splitter = ProcedureSplitter(self.session)
         self.greedy = GreedyExecutor(self.session)
         self.config = config
         self.context = context
@@ -163,6 +165,12 @@ class ClosedLoop:
                 raise Stop("the goal holds", success=True)
             self.pending = list(found.macro_actions)
             self.session.episode.log("plan", " → ".join(m.feature for m in found.macro_actions))
+        if any(_starts(n) for n in self.pending[0].expect):
+            # once it runs, most keys are locked out: see what is unconfirmed first
+            unseen = self.session.unconfirmed({n for n in inside if not _starts(n)})
+            if unseen and self._look(unseen):
+                self.pending.clear()
+                return
         macro = self.pending.pop(0)
         self.start_macro(macro)
         executed = self.execute(macro)
@@ -311,6 +319,8 @@ class ClosedLoop:
                 for action in route:
                     session.press(session.planned(action), exploring=True)
                 return True
+            if self._guarding_the_goal():
+                continue  # getting out would undo the goal (stop a running cycle): no look
             for feature, steps in self.session.belief.model.features.items():
                 index = next((i for i, s in enumerate(steps) if s.variable == name), None)
                 if index is None:
@@ -320,6 +330,16 @@ class ClosedLoop:
                 self.session.press(self.session.planned(steps[index].actions[0]), exploring=True)
                 return True
         return False
+
+    def _guarding_the_goal(self) -> bool:
+        """A guard holds whose condition the goal itself asks for (running, locked)."""
+        compiled, state = self.session.belief.compiled, self.session.belief.state
+        goal = set(self.context.goal)
+        return any(
+            all(state.values[v] in ok for v, ok in guard.conditions)
+            and any(compiled.vars[v].name in goal for v, _ in guard.conditions)
+            for guard in compiled.guards
+        )
 
     def inspect(self, name: str) -> bool:
         """A goal setting the belief cannot reach: go through the procedure that adjusts it
@@ -421,7 +441,15 @@ class ClosedLoop:
                 n: "(unreadable)" if o is UNREADABLE else o for n, (_, o) in done.surprises.items()
             },
         )
-        if (
+        if not done.refused and self.splitter.split(done):
+            pass  # plan again with the procedure the key really starts
+        elif (
+            not done.refused
+            and (feature := self.splitter.misentered(done)) is not None
+            and self.procedures.find_entry(feature)
+        ):
+            pass  # the procedure lacked its entry key: found
+        elif (
             not done.refused
             and self.procedures.plausibly_moved(done)
             and (self.procedures.move_key(done))
@@ -542,6 +570,8 @@ class ClosedLoop:
             f"{name} keeps showing values the model does not predict (last: "
             f"{observed!r}, expected {predicted!r})",
         )
+        if self.procedures.independent(name, executed[upto], observed):
+            return
         adjusting = [e for e in executed[: upto + 1] if e.variable == name and e.believed_accepted]
         if not adjusting:  # changed as a side effect: the step that did it says so now
             self.procedures.learn_side_effect(name, executed[upto], observed)

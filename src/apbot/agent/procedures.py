@@ -15,6 +15,7 @@ from apbot.agent.guards import GuardLearner
 from apbot.agent.repair import (
     RepairError,
     drop_action,
+    drop_dependence,
     insert_step,
     move_action,
     set_effects,
@@ -345,6 +346,16 @@ class ProcedureRepairer:
                 return True
         return False
 
+    def find_entry(self, feature: str) -> bool:
+        """An earlier key was believed to start ``feature`` and did nothing: the procedure
+        lacks the key that starts it. Probe for it (once per setting)."""
+        steps = self.session.belief.model.features.get(feature, [])
+        name = next((s.variable for s in steps if s.variable is not None), None)
+        if name is None or not self.session.budget.once("unreachable", name):
+            return False
+        self.session.forget_pointer()
+        return self._first_step_from_orphans(name, [feature])
+
     def _first_step_from_orphans(self, name: str, features: list[str]) -> bool:
         """Keys no procedure uses, or named like the setting (an entry key filed under another
         procedure): the one that brings the setting up is the entry step it lacks."""
@@ -420,6 +431,11 @@ class ProcedureRepairer:
         step = session.belief.model.features[feature][index]
         if step.variable == name or name not in session.belief.model.variables:
             return False
+        if name in session.discovered:
+            return False  # what it depends on is a guess
+        kept = done.shown_before.get(name, MISSING) == observed  # as last shown: untouched
+        if name in done.unseen_before and not kept:
+            return False  # what it was before is a guess: the change may be older
         compiled = session.belief.compiled
         before = compiled.value(done.state_before, name)
         initial = session.belief.initial_value(name, done.state_before)
@@ -440,6 +456,30 @@ class ProcedureRepairer:
             session.episode.log("repair", f"could not change {feature}'s side effect: {exc}")
             return False
         session.adopt(new, f"{feature}: {done.action.name} {change} ({name})", done.pointer)
+        session.belief.set_value(name, observed)
+        return True
+
+    def independent(self, name: str, done: Executed, observed: Any) -> bool:
+        """A setting found on the panel, guessed to depend on the programme, shows again the
+        value it showed before a programme change the belief said would reset it: it does not
+        depend on the programme (once)."""
+        session = self.session
+        spec = session.belief.model.variables.get(name)
+        if spec is None or spec.depends_on is None or name not in session.discovered:
+            return False
+        if observed is MISSING or done.shown_before.get(name, MISSING) != observed:
+            return False
+        case = session.case(name)
+        if case is None or not session.budget.once("side", f"independent:{name}"):
+            return False
+        try:
+            new = drop_dependence(session.belief.model, name, case)
+        except RepairError as exc:
+            session.episode.log("repair", f"could not make {name} independent: {exc}")
+            return False
+        session.adopt(
+            new, f"{name} keeps its value whatever the {spec.depends_on}", session.belief.pointer()
+        )
         session.belief.set_value(name, observed)
         return True
 

@@ -8,7 +8,7 @@ agent keeps its old model.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 from typing import Any
 
 from pydantic import ValidationError
@@ -177,6 +177,44 @@ def set_on_entry(model: ApplianceModel, feature: str, step: int, on_entry: str) 
     return _rebuild(data)
 
 
+def split_feature(
+    model: ApplianceModel, feature: str, index: int, first: bool = False
+) -> tuple[ApplianceModel, str]:
+    """``feature`` ends before step ``index``; its steps from there are a procedure of their own
+    (named after the first one's setting), right after it — or before every other (``first``).
+    """
+    data = _dump(model)
+    steps = data["features"][feature]
+    if not 0 < index < len(steps):
+        raise RepairError(f"{feature} has no step {index} to split at")
+    head, tail = steps[:index], steps[index:]
+    base = f"{tail[0].get('variable') or feature}_procedure"
+    name = base
+    while name in data["features"]:
+        name += "_learnt"
+    features: dict[str, Any] = {} if not first else {name: tail}
+    for title, body in data["features"].items():
+        features[title] = head if title == feature else body
+        if title == feature and not first:
+            features[name] = tail
+    data["features"] = features
+    return _rebuild(data), name
+
+
+def drop_dependence(model: ApplianceModel, name: str, case: str) -> ApplianceModel:
+    """``name`` does not depend on a programme after all: it keeps its values in ``case``
+    (the programme it was seen in) whatever the programme."""
+    data = _dump(model)
+    var = data["variables"][name]
+    cases = var.pop("cases", {})
+    var.pop("depends_on", None)
+    own: Any = cases.get(case) or next((c for c in cases.values() if c), {})
+    if isinstance(own, list):
+        own = {"values": own}
+    var.update({k: v for k, v in own.items() if k in ("values", "ranges", "initial")})
+    return _rebuild(data)
+
+
 def set_side_effect(
     model: ApplianceModel,
     feature: str,
@@ -298,10 +336,15 @@ def add_setting(
 
 
 def add_keypad_setting(
-    model: ApplianceModel, name: str, variable: dict[str, Any], entry: str, digits: list[str]
+    model: ApplianceModel,
+    name: str,
+    variable: dict[str, Any],
+    entry: str | None,
+    digits: list[str],
 ) -> ApplianceModel:
     """A setting the model lacked that is typed on the keypad after ``entry`` (POWER, then
-    the digits): its variable (with its ``entry`` format) and a procedure ``set_NAME``."""
+    the digits), or without one: its variable (with its ``entry`` format) and a procedure
+    ``set_NAME`` — or the plain steps of digits the model had (see :func:`add_setting`)."""
     return _with_setting(model, name, variable, {d: "digit" for d in digits}, entry)
 
 
@@ -334,10 +377,9 @@ def _with_setting(
     # keys that each select a value, or that reset other settings, choose a programme rather
     # than adjust a setting of one
     programme = programme or any(
-        step.reset or step.set
-        for steps in model.features.values()
-        for step in steps
-        if step.variable is None and set(step.actions) & set(effects)
+        model.features[feature][index].reset or model.features[feature][index].set
+        for feature, index in plain_steps(model, effects)
+        if effects and not all(e == "digit" for e in effects.values())
     )
     if parents and not programme:  # the programme other settings depend on resets it too
         parent = max(set(parents), key=parents.count)
@@ -349,30 +391,36 @@ def _with_setting(
     for action in [*effects, *([entry] if entry else [])]:
         if action not in known:
             _add_action(data, action)
-    plain = plain_keys(model) & set(effects)
+    plain = plain_steps(model, effects)
     used = {a for steps in model.features.values() for step in steps for a in step.actions}
-    if plain and entry is None:  # the reader kept the key as a plain step: it adjusts this
-        for procedure in data["features"].values():
-            for step in procedure:
-                if step.get("variable") is None and plain & set(step["actions"]):
-                    # the step's own keys, and those the model has nowhere (the way back)
-                    keys = list(dict.fromkeys([*step["actions"], *(set(effects) - used)]))
-                    step["variable"] = name
-                    step["effect"] = {a: effects.get(a, "none") for a in keys}
-                    step["actions"] = keys
+    if plain and entry is None:  # the reader kept the keys as a plain step: it adjusts this
+        for feature, index in plain:
+            step = data["features"][feature][index]
+            # the step's own keys, and those the model has nowhere (the way back)
+            keys = list(dict.fromkeys([*step["actions"], *(set(effects) - used)]))
+            step["variable"] = name
+            step["effect"] = {a: effects.get(a, "none") for a in keys}
+            step["actions"] = keys
+        return _rebuild(data)
+    adjusting = {
+        "actions": list(effects),
+        "variable": name,
+        "effect": effects,
+        "note": "learnt from feedback",
+    }
+    after = plain_steps(model, [entry]) if entry else []
+    if after:  # the entry key is a plain step already ("press POWER, then …"): it goes on there
+        feature, index = after[0]
+        data["features"][feature].insert(index + 1, adjusting)
         return _rebuild(data)
     steps: list[dict[str, Any]] = (
         [{"actions": [entry], "note": "learnt from feedback"}] if entry else []
     )
-    steps.append(
-        {
-            "actions": list(effects),
-            "variable": name,
-            "effect": effects,
-            "note": "learnt from feedback",
-        }
-    )
-    data["features"][f"set_{name}"] = steps
+    steps.append(adjusting)
+    title = f"set_{name}"
+    while title in data["features"]:
+        title += "_learnt"
+    data["features"][title] = steps
     return _rebuild(data)
 
 
@@ -383,6 +431,17 @@ def plain_keys(model: ApplianceModel) -> set[str]:
     used = {a for step in steps for a in step.actions}
     adjusting = {a for step in steps if step.variable is not None for a in step.actions}
     return used - adjusting
+
+
+def plain_steps(model: ApplianceModel, keys: Collection[str]) -> list[tuple[str, int]]:
+    """The steps that adjust nothing and whose keys are all among ``keys``: where a reader
+    kept a setting's keys ("press TIMER", the digits) without the setting."""
+    return [
+        (feature, index)
+        for feature, steps in model.features.items()
+        for index, step in enumerate(steps)
+        if step.variable is None and set(step.actions) <= set(keys)
+    ]
 
 
 def setting_step(model: ApplianceModel, name: str) -> tuple[str, int] | None:

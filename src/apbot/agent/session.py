@@ -22,7 +22,7 @@ from apbot.agent.budget import Budget
 from apbot.agent.environment import Environment, Feedback
 from apbot.agent.episode import TaskContext
 from apbot.agent.perception import MISSING, UNREADABLE, Perceiver, Seen
-from apbot.model.display import can_show
+from apbot.model.display import can_show, show_template, template_fields
 from apbot.model.domain import ValueProblem, parse_value
 from apbot.model.effects import default_effect
 from apbot.model.schema import Add, ApplianceModel, Skip, TimeVariable
@@ -79,6 +79,8 @@ class Executed:
     unchanged: bool = False
     buffer: str = ""  # the keypad digits the belief had typed into the step after the action
     state_before: State | None = None  # the belief's state before the action
+    unseen_before: frozenset[str] = frozenset()  # changed unseen (or guessed) before the action
+    shown_before: dict[str, Any] = field(default_factory=dict)  # last shown, before the action
 
     def observed(self, name: str) -> Any:
         """The value of ``name`` the display showed after this action (MISSING if none)."""
@@ -135,6 +137,8 @@ class Session:
         before_state = self.belief.state
         before = self.belief.pointer()
         before_text = self.last.text
+        unseen = frozenset(self.stale | self.blind | self.unread | self.guessed_initial)
+        shown_before = dict(self.evidence)
         if action.name not in self.offered:  # the belief has a control the appliance lacks
             feedback = Feedback(
                 self.last.text, dict(self.last.values), False, "the appliance has no such action"
@@ -221,6 +225,8 @@ class Session:
             unchanged,
             buffer,
             before_state,
+            unseen,
+            shown_before,
         )
 
     def planned(self, action: str) -> PlannedAction:
@@ -233,10 +239,20 @@ class Session:
         """Read ``feedback`` against the belief's prediction ``expected``."""
         if not feedback.values and feedback.text == expected.text:
             kind, _ = self.expected_screen()
+            values = dict(expected.values)
+            if expected.focus is not None:  # the screen prints other settings too ("{clock}")
+                spec = self.belief.model.variables[expected.focus]
+                template = show_template(spec, self.belief.value(expected.focus))
+                for name in template_fields(template):
+                    if (
+                        name in self.belief.model.variables
+                        and self.belief.model.variables[name].visible
+                    ):
+                        values.setdefault(name, self.belief.value(name))
             return Seen(
                 feedback.text,
                 # a dark panel (a hiding guard) shows no value, not even its lamps
-                {} if kind == "guard" else dict(expected.values),
+                {} if kind == "guard" else values,
                 screen=expected.focus,
                 screen_kind=kind,
                 screens=frozenset({(kind, expected.focus)}),
