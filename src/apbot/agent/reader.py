@@ -458,13 +458,9 @@ class DisplayReader:
             search = None
         elif main:
             regex = rf"\s*{main}(?P<_lamps>(?:\s+(?:{lamps}))*)\s*"
-<<<<<<< HEAD
-            search = re.compile(rf"(?<!\S){main}(?!\S)", re.IGNORECASE)
-=======
             # found inside a longer text, not inside a word or a number (1 is no reading of
             # a 1-4 lamp, nor 12 of 12/24)
             search = re.compile(rf"(?<![\w:.%\-/]){main}(?![\w:.%\-/])", re.IGNORECASE)
->>>>>>> wt/agent
         else:
             regex = rf"\s*(?P<_lamps>(?:{lamps})(?:\s+(?:{lamps}))*)?\s*"
             search = None
