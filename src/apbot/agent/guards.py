@@ -22,6 +22,7 @@ from apbot.sim.compiled import CompiledModel
 
 LEARNT = "learnt"  # the name of a guard the agent wrote into the belief
 ON_WORDS = frozenset({"on", "locked", "lock", "yes", "true", "enabled", "running"})
+MAIN_SWITCHES = frozenset({"power", "on_off", "main_switch", "standby"})
 MAX_SUSPECTS = 3  # settings tried as the cause of one refusal
 MAX_RELAXATIONS = 12  # guard/key pairs tried when a guard keeps the goal out of reach
 RELAX_BUDGET = 5_000  # search nodes for each of them
@@ -114,6 +115,8 @@ class GuardLearner:
         elif failed.unchanged:  # ignored without a sign on a lit display: a switch at off
             # (standby) that some guard of the belief already tests
             tested = {n for guard in session.belief.model.guards for n in guard.when}
+            # or the main switch, whose guard the reader may have missed altogether
+            tested |= {n for n in session.belief.model.variables if n in MAIN_SWITCHES}
             suspects = self._suspects(True, tested)
         else:
             return False  # another screen came up: a procedure's step, not a guard
