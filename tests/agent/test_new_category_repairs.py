@@ -188,3 +188,69 @@ def test_a_setting_printed_by_a_word_per_value_reads_no_other_words_as_its_value
         h for h in reader.read("EXTRA DRY --").hypotheses if h.screen.variable == "extra_dry"
     ]
     assert absent.absent == {"extra_dry"}
+
+
+# --- guards a reader missed, on a panel that stays lit -------------------------------------------
+
+CONDITIONER = """
+controls: [{id: power, label: POWER}, {id: plus, label: "+"}, {id: minus, label: "-"}]
+variables:
+  power: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "ON"}}
+  temperature: {type: numeric, unit: "°F", ranges: [[61, 86, 1]], initial: 72, show: "{value}"}
+actions: {press_power: {control: power}, press_plus: {control: plus}, press_minus: {control: minus}}
+features:
+  power: [{actions: [press_power], variable: power, effect: toggle}]
+  temperature:
+    - actions: [press_plus, press_minus]
+      variable: temperature
+      effect: {press_plus: next, press_minus: prev}
+guards:
+  - {name: unit off, when: {power: "off"}, only: [press_power], signal: silent}
+display: {idle: "{temperature}", indicators: [power]}
+"""
+
+
+@pytest.mark.parametrize("feedback", MODES)
+def test_a_missing_main_switch_guard_behind_a_lit_display_is_learnt(feedback: FeedbackMode) -> None:
+    # the remote shows the set temperature while the unit is off, and ignores + and - silently
+    belief = model_from(
+        CONDITIONER.split("guards:")[0] + 'display: {idle: "{temperature}", indicators: [power]}\n'
+    )
+    episode, reached = run(model_from(CONDITIONER), belief, {"temperature": 70}, feedback)
+    assert reached and episode.claimed_success, episode.failure
+
+
+OVEN = """
+controls: [{id: plus, label: "+"}, {id: start, label: START}, {id: stop, label: STOP}]
+variables:
+  temperature:
+    {type: numeric, unit: "°C", ranges: [[150, 250, 10]], initial: 180, wrap: true, show: "{value}"}
+  running: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "RUN"}}
+actions: {press_plus: {control: plus}, press_start: {control: start}, press_stop: {control: stop}}
+features:
+  temperature: [{actions: [press_plus], variable: temperature, effect: next}]
+  start: [{actions: [press_start], variable: running, effect: {to: "on"}}]
+  stop: [{actions: [press_stop], variable: running, effect: {to: "off"}}]
+guards:
+  - {name: cooking, when: {running: "on"}, only: [press_stop], signal: silent}
+display: {idle: "{temperature}", indicators: [running]}
+"""
+
+
+@pytest.mark.parametrize("feedback", MODES)
+def test_a_missing_running_guard_is_learnt_when_a_key_does_nothing_while_it_runs(
+    feedback: FeedbackMode,
+) -> None:
+    # the oven is already cooking, and ignores + silently until it is stopped
+    truth = model_from(
+        OVEN.replace('values: ["off", "on"], show', 'values: ["off", "on"], initial: "on", show')
+    )
+    belief = model_from(
+        OVEN.replace(
+            'values: ["off", "on"], show', 'values: ["off", "on"], initial: "on", show'
+        ).split("guards:")[0]
+        + 'display: {idle: "{temperature}", indicators: [running]}\n'
+    )
+    episode, reached = run(truth, belief, {"temperature": 200}, feedback)
+    assert reached and episode.claimed_success, episode.failure
+    assert any("while running is on" in note for note in episode.repairs)

@@ -23,6 +23,7 @@ from apbot.sim.compiled import CompiledModel
 LEARNT = "learnt"  # the name of a guard the agent wrote into the belief
 ON_WORDS = frozenset({"on", "locked", "lock", "yes", "true", "enabled", "running"})
 MAIN_SWITCHES = frozenset({"power", "on_off", "main_switch", "standby"})
+RUN_WORDS = ("running", "cooking", "brewing", "heating", "washing", "blending")
 MAX_SUSPECTS = 3  # settings tried as the cause of one refusal
 MAX_RELAXATIONS = 12  # guard/key pairs tried when a guard keeps the goal out of reach
 RELAX_BUDGET = 5_000  # search nodes for each of them
@@ -112,12 +113,15 @@ class GuardLearner:
         dark = not failed.feedback.text.strip()
         if dark or failed.refused:
             suspects = self._suspects(dark)
+            if not dark:  # a refusal on a lit display: also a main switch at off (standby)
+                switches = {n for n in session.belief.model.variables if n in MAIN_SWITCHES}
+                suspects += self._suspects(True, switches)
         elif failed.unchanged:  # ignored without a sign on a lit display: a switch at off
             # (standby) that some guard of the belief already tests
             tested = {n for guard in session.belief.model.guards for n in guard.when}
             # or the main switch, whose guard the reader may have missed altogether
             tested |= {n for n in session.belief.model.variables if n in MAIN_SWITCHES}
-            suspects = self._suspects(True, tested)
+            suspects = self._suspects(True, tested) + self._cycles_on()
         else:
             return False  # another screen came up: a procedure's step, not a guard
         silent = not (dark or failed.refused)
@@ -156,7 +160,7 @@ class GuardLearner:
                     session.belief.model,
                     {name: blocking},
                     sorted(set(lifting) | self._switching(name)),
-                    "" if dark else _main_text(failed.feedback.text, session),
+                    "" if dark or silent else _main_text(failed.feedback.text, session),
                     hide=dark,
                 )
             except RepairError as exc:
@@ -198,6 +202,23 @@ class GuardLearner:
             if len(self.session.domain_values(name)) == 2 and self._switching(name):
                 suspects.append((name, value))
         return suspects
+
+    def _cycles_on(self) -> list[tuple[str, Any]]:
+        """Run states that are on (a cycle running), which a key that did nothing without a
+        sign may be locked out by: most appliances lock their settings while they run."""
+        found = []
+        for name, spec in self.session.belief.model.variables.items():
+            if not isinstance(spec, DiscreteVariable) or spec.depends_on is not None:
+                continue
+            if not any(word in name for word in RUN_WORDS):
+                continue
+            value = self.session.belief.value(name)
+            values = self.session.domain_values(name)
+            if str(value).casefold() not in ON_WORDS or str(values[0]).casefold() not in OFF_WORDS:
+                continue
+            if self._switching(name):
+                found.append((name, value))
+        return found
 
     def _switching(self, name: str) -> set[str]:
         """The keys of the steps that change ``name`` itself."""
