@@ -254,3 +254,53 @@ def test_a_missing_running_guard_is_learnt_when_a_key_does_nothing_while_it_runs
     episode, reached = run(truth, belief, {"temperature": 200}, feedback)
     assert reached and episode.claimed_success, episode.failure
     assert any("while running is on" in note for note in episode.repairs)
+
+
+# --- a setting the reader missed, shown as a symbol lamp -----------------------------------------
+
+REMOTE = """
+controls: [{id: power, label: POWER}, {id: mode, label: MODE}, {id: sleep, label: SLEEP}]
+variables:
+  power: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "RUN"}}
+  mode: {type: discrete, values: [auto, cool]}
+  sleep:
+    type: discrete
+    depends_on: mode
+    show: {"off": "", "on": "☾"}
+    cases: {cool: ["off", "on"]}
+actions: {press_power: {control: power}, press_mode: {control: mode}, press_sleep: {control: sleep}}
+features:
+  power: [{actions: [press_power], variable: power, effect: toggle}]
+  mode: [{actions: [press_mode], variable: mode, effect: next}]
+  sleep: [{actions: [press_sleep], variable: sleep, effect: toggle}]
+guards:
+  - {name: unit off, when: {power: "off"}, only: [press_power], signal: silent}
+  - {name: unit on, when: {power: "on"}, only: [press_power, press_mode, press_sleep],
+     signal: silent}
+display: {idle: "{mode}", indicators: [power, sleep]}
+"""
+
+REMOTE_WITHOUT_SLEEP = """
+controls: [{id: power, label: POWER}, {id: mode, label: MODE}, {id: sleep, label: SLEEP}]
+variables:
+  power: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "RUN"}}
+  mode: {type: discrete, values: [auto, cool]}
+actions: {press_power: {control: power}, press_mode: {control: mode}}
+features:
+  power: [{actions: [press_power], variable: power, effect: toggle}]
+  mode: [{actions: [press_mode], variable: mode, effect: next}]
+guards:
+  - {name: unit off, when: {power: "off"}, only: [press_power], signal: silent}
+  - {name: unit on, when: {power: "on"}, only: [press_power, press_mode], signal: silent}
+display: {idle: "{mode}", indicators: [power]}
+"""
+
+
+@pytest.mark.parametrize("feedback", MODES)
+def test_a_missing_setting_shown_as_a_symbol_lamp_is_found_with_the_unit_on(
+    feedback: FeedbackMode,
+) -> None:
+    # "unit on" lets most keys work: looking for SLEEP must not switch the unit off first
+    goal = {"power": "on", "mode": "cool", "sleep": "on"}
+    episode, reached = run(model_from(REMOTE), model_from(REMOTE_WITHOUT_SLEEP), goal, feedback)
+    assert reached and episode.claimed_success, episode.failure

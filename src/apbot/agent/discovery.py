@@ -86,6 +86,8 @@ class VariableFinder:
             if len(set(texts)) >= 2:
                 if self._learn(name, goal_value, texts, last, before, None, key):
                     return True
+                if self._learn_lamp(name, goal_value, key):  # a lamp lit and put out
+                    return True
                 continue
             if self._learn_lamp(name, goal_value, key):
                 return True
@@ -550,18 +552,22 @@ def _kind_of(goal_value: Any) -> str:
 
 def lamp_word(lit: str, unlit: str) -> str | None:
     """The one word a display shows more when a lamp is lit (``SYNC``), if that is all that
-    tells the two texts apart: a word with letters and no digits (not a value).
+    tells the two texts apart: a word with letters or a symbol, and no digits (not a value).
 
     >>> lamp_word("SYNC  Z1 air fry", "1: 200°C  Z1 air fry"), lamp_word("LIGHT", "")
     ('SYNC', 'LIGHT')
+    >>> lamp_word("☾  RUN", "RUN"), lamp_word("--  RUN", "RUN")
+    ('☾', None)
     >>> lamp_word("160°C", "") is None
     True
     """
     shown = [part for part in _GAP.split(lit.strip()) if part]
     others = set(_GAP.split(unlit.strip()))
     new = [part for part in shown if part not in others]
-    if len(new) != 1 or any(c.isdigit() for c in new[0]) or not any(c.isalpha() for c in new[0]):
+    if len(new) != 1 or any(c.isdigit() for c in new[0]):
         return None
+    if not any(c.isalpha() or not c.isascii() for c in new[0]):
+        return None  # punctuation alone ("--"); letters or a symbol lamp (☾, ⚡) it may be
     return new[0]
 
 

@@ -276,7 +276,9 @@ class GuardLearner:
         for guard in compiled.guards:
             holds = all(self.session.belief.state.values[v] in ok for v, ok in guard.conditions)
             blocked = [a for i, a in enumerate(compiled.action_names) if i not in guard.allowed]
-            if holds and blocked:
+            # a guard that lets most keys work ("unit on": the keys of a running unit) is no
+            # blocker: getting out of it (switching off) would block more than it frees
+            if holds and blocked and len(guard.allowed) < len(blocked):
                 self.lift(blocked[0])
 
     def lift(self, action: str) -> None:
