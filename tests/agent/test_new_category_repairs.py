@@ -9,6 +9,7 @@ from typing import Any
 import pytest
 
 from apbot.agent.budget import Budget
+from apbot.agent.displays import DisplayLearner
 from apbot.agent.environment import FeedbackMode, SimulatorEnvironment
 from apbot.agent.episode import Episode, TaskContext
 from apbot.agent.reader import DisplayReader
@@ -304,3 +305,41 @@ def test_a_missing_setting_shown_as_a_symbol_lamp_is_found_with_the_unit_on(
     goal = {"power": "on", "mode": "cool", "sleep": "on"}
     episode, reached = run(model_from(REMOTE), model_from(REMOTE_WITHOUT_SLEEP), goal, feedback)
     assert reached and episode.claimed_success, episode.failure
+
+
+# --- a lamp the belief does not know is no part of a template ------------------------------------
+
+SLIDE = """
+controls: [{id: delay, label: DELAY}, {id: source, kind: switch, label: TANK/TAP}]
+variables:
+  delay: {type: time, ranges: [["00:00:00", "06:00:00", 3600]], format: h, show: "{value}"}
+  water_source: {type: discrete, values: [TANK, TAP], show: {TANK: TANK, TAP: TAP}}
+actions: {press_delay: {control: delay}, slide_source: {control: source}}
+features:
+  delay: [{actions: [press_delay], variable: delay, effect: next}]
+  water_source: [{actions: [slide_source], variable: water_source, effect: toggle}]
+display: {idle: READY, indicators: [water_source]}
+"""
+
+
+SLIDE_WITHOUT_SOURCE = """
+controls: [{id: delay, label: DELAY}, {id: source, kind: switch, label: TANK/TAP}]
+variables:
+  delay: {type: time, ranges: [["00:00:00", "06:00:00", 3600]], format: h}
+actions: {press_delay: {control: delay}}
+features:
+  delay: [{actions: [press_delay], variable: delay, effect: next}]
+display: {idle: READY}
+"""
+
+
+def test_a_template_is_learnt_from_the_main_text_not_the_lamps_after_it() -> None:
+    # the belief prints the delay as "DELAY 2 h" and lacks the TANK/TAP lamp: from the
+    # screens "2 h  TANK" and "4 h  TANK" the template is "{value}", not "{value}  TANK"
+    belief = model_from(SLIDE_WITHOUT_SOURCE)
+    env = SimulatorEnvironment(model_from(SLIDE), "display")
+    context = TaskContext("unit", "test", "t", "", {}, belief, actions=tuple(env.actions))
+    session = Session(AgentConfig(), context, env, Budget())
+    session.start()
+    assert DisplayLearner(session).learn("delay", ["2 h  TANK", "4 h  TANK"])
+    assert session.belief.model.variables["delay"].show == "{value}"

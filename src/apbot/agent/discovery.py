@@ -644,11 +644,11 @@ def _planned(action: str) -> PlannedAction:
 
 
 def _main(text: str, lamps: set[str]) -> str:
-    """The main display: the text without the lamps the belief knows at its end."""
+    """The main display: what comes before the lamps (two spaces apart), known or not."""
     parts = _GAP.split(text.strip())
     while len(parts) > 1 and parts[-1].casefold() in lamps:
         parts.pop()
-    return "  ".join(parts)
+    return parts[0]  # a lamp the belief does not know is no part of the setting's screen
 
 
 __all__ = ["DiscreteVariable", "VariableFinder", "infer_setting"]

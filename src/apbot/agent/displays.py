@@ -122,7 +122,7 @@ class DisplayLearner:
         parts = _LAMP_GAP.split(text.strip())
         while len(parts) > 1 and parts[-1].casefold() in lamps:
             parts.pop()
-        return "  ".join(parts)
+        return parts[0]  # a lamp the belief does not know is no part of a template either
 
 
 def _parts(text: str) -> set[str]:
