@@ -12,6 +12,8 @@ from apbot.agent.budget import Budget
 from apbot.agent.displays import DisplayLearner
 from apbot.agent.environment import FeedbackMode, SimulatorEnvironment
 from apbot.agent.episode import Episode, TaskContext
+from apbot.agent.guards import GuardLearner
+from apbot.agent.procedures import ProcedureRepairer
 from apbot.agent.reader import DisplayReader
 from apbot.agent.registry import get_method
 from apbot.agent.session import AgentConfig, Session
@@ -343,3 +345,35 @@ def test_a_template_is_learnt_from_the_main_text_not_the_lamps_after_it() -> Non
     session.start()
     assert DisplayLearner(session).learn("delay", ["2 h  TANK", "4 h  TANK"])
     assert session.belief.model.variables["delay"].show == "{value}"
+
+
+# --- keys with a role of their own are no orphans -------------------------------------------------
+
+GRINDER = """
+controls: [{id: cup, label: CUP}, {id: lock, label: LOCK}, {id: spare, label: SPARE}]
+variables:
+  cups: {type: numeric, ranges: [[1, 4, 1]], wrap: true}
+  key_lock: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "LOCK"}}
+actions:
+  press_cup: {control: cup}
+  hold_lock: {control: lock, skill: hold, seconds: 3}
+  press_spare: {control: spare}
+  wait_5s: {skill: wait, seconds: 5}
+features:
+  cups: [{actions: [press_cup], variable: cups, timeout: 5}]
+  spare: [{actions: [press_spare]}]
+anywhere:
+  - {actions: [hold_lock], variable: key_lock, effect: toggle}
+display: {idle: READY, indicators: [key_lock]}
+"""
+
+
+def test_keys_that_act_from_anywhere_and_waits_are_not_probed_as_keys_with_no_role() -> None:
+    # probing the lock hold as "a key no procedure uses" locked the panel for every later probe
+    model = model_from(GRINDER.replace("  spare: [{actions: [press_spare]}]\n", ""), check=False)
+    env = SimulatorEnvironment(model, "display")
+    context = TaskContext("unit", "test", "t", "", {}, model, actions=tuple(env.actions))
+    session = Session(AgentConfig(), context, env, Budget())
+    session.start()
+    orphans = ProcedureRepairer(session, GuardLearner(session)).orphans()
+    assert orphans == ["press_spare"]

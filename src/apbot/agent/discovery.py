@@ -328,6 +328,8 @@ class VariableFinder:
         session = self.session
         model = session.belief.model
         starting = {a for steps in model.features.values() for a in steps[0].actions}
+        starting |= {a for entry in model.anywhere for a in entry.actions}  # a role of their own
+        starting |= {a for a, spec in model.actions.items() if spec.skill == "wait"}
         plain = plain_keys(model)
         offered = list(session.context.actions or session.offered)
         unknown = [a for a in offered if (a not in starting or a in plain) and not _is_digit(a)]

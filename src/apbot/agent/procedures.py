@@ -518,13 +518,12 @@ class ProcedureRepairer:
             self.session.press(self.session.planned(step.actions[0]), exploring=True)
 
     def orphans(self) -> list[str]:
-        """Keys the appliance offers that no feature of the belief uses (at most eight)."""
-        used = {
-            a
-            for steps in self.session.belief.model.features.values()
-            for s in steps
-            for a in s.actions
-        }
+        """Keys the appliance offers that no feature of the belief uses, nor its keys that
+        act from anywhere, nor a wait (at most eight)."""
+        model = self.session.belief.model
+        used = {a for steps in model.features.values() for s in steps for a in s.actions}
+        used |= {a for entry in model.anywhere for a in entry.actions}
+        used |= {a for a, spec in model.actions.items() if spec.skill == "wait"}
         return [
             a
             for a in self.session.belief.model.actions
