@@ -377,3 +377,64 @@ def test_keys_that_act_from_anywhere_and_waits_are_not_probed_as_keys_with_no_ro
     session.start()
     orphans = ProcedureRepairer(session, GuardLearner(session)).orphans()
     assert orphans == ["press_spare"]
+
+
+COOKER = """
+controls: [{id: plus, label: "+"}, {id: start, label: START}]
+variables:
+  temperature:
+    {type: numeric, unit: "°C", ranges: [[150, 250, 10]], initial: 180, wrap: true, show: "{value}"}
+  running:
+    type: discrete
+    values: ["off", "on"]
+    show: {"off": "{temperature}", "on": "RUN {temperature}"}
+actions: {press_plus: {control: plus}, press_start: {control: start}}
+features:
+  temperature: [{actions: [press_plus], variable: temperature, effect: next}]
+  start: [{actions: [press_start], variable: running, effect: {to: "on"}}]
+guards:
+  - {name: cooking, when: {running: "on"}, only: [press_start], signal: silent}
+display: {idle: "{temperature}"}
+"""
+
+
+@pytest.mark.parametrize("feedback", MODES)
+def test_a_start_believed_to_reset_a_goal_setting_is_pressed_last_and_seen_not_to(
+    feedback: FeedbackMode,
+) -> None:
+    # the belief has no plan (START resets the temperature, it says); with the temperature
+    # set, the agent starts anyway, and the display still showing it teaches that it does not
+    belief = model_from(
+        COOKER.replace('effect: {to: "on"}}]', 'effect: {to: "on"}, reset: [temperature]}]')
+    )
+    goal = {"running": "on", "temperature": 200}
+    episode, reached = run(model_from(COOKER), belief, goal, feedback)
+    assert reached and episode.claimed_success, episode.failure
+
+
+DELAY = """
+controls: [{id: up, label: "▲"}, {id: down, label: "▼"}]
+variables:
+  delay: {type: time, ranges: [["00:00:00", "12:00:00", 3600]], format: h, label: DELAY}
+actions:
+  press_up: {control: up}
+  press_down: {control: down}
+  hold_up: {control: up, skill: hold, seconds: 2}
+  hold_down: {control: down, skill: hold, seconds: 2}
+features:
+  delay:
+    - actions: [press_up, press_down, hold_up, hold_down]
+      variable: delay
+      effect: {press_up: next, press_down: prev, hold_up: {skip: 4}, hold_down: {skip: -4}}
+"""
+
+
+@pytest.mark.parametrize("feedback", MODES)
+def test_a_wrong_step_is_walked_one_value_at_a_time_not_in_the_holds_strides(
+    feedback: FeedbackMode,
+) -> None:
+    # the belief steps the delay by 2 h, so it plans holds of 8 h; the walk that follows the
+    # surprise goes one hour at a time, and back with the key that goes down
+    belief = model_from(DELAY.replace('"12:00:00", 3600', '"12:00:00", 7200'))
+    episode, reached = run(model_from(DELAY), belief, {"delay": "9 h"}, feedback)
+    assert reached and episode.claimed_success, episode.failure

@@ -46,6 +46,7 @@ from apbot.model.schema import (
     Add,
     ApplianceModel,
     DiscreteVariable,
+    Skip,
     TimeVariable,
     time_step_seconds,
 )
@@ -67,6 +68,9 @@ class Explorer:
         assert last.pointer is not None
         self.session.explored.add(name)
         pointer, key = last.pointer, last.action
+        single = self.single_step(pointer, key)
+        if single is not key:  # walk one value at a time: its history was in strides
+            key, history = single, []
         forward, unseen = self.walk(name, key, history or [])
         visible = [v for v in forward if not isinstance(v, Dark)]
         opposite = self.opposite(pointer, key.name)
@@ -201,8 +205,28 @@ class Explorer:
             )
         ]
         # a key believed to go the same way may be the one the reader got backwards
-        ordered = sorted(stepping, key=lambda other: self.session.effect(pointer, other) == effect)
+        ordered = sorted(
+            stepping,
+            key=lambda other: (
+                self.session.effect(pointer, other) == effect
+                or _way(self.session.effect(pointer, other)) == _way(effect) != 0
+            ),
+        )
         return self.session.planned(ordered[0]) if ordered else None
+
+    def single_step(self, pointer: tuple[str, int], key: PlannedAction) -> PlannedAction:
+        """For a key that scrolls several values at once (a held ▲, ``skip``), the step's key
+        that moves one value the same way: a walk in strides skips values."""
+        effect = self.session.effect(pointer, key.name)
+        if not isinstance(effect, Skip):
+            return key
+        feature, index = pointer
+        for other in self.session.belief.model.features[feature][index].actions:
+            if _way(self.session.effect(pointer, other)) == _way(effect) and self.session.effect(
+                pointer, other
+            ) in ("next", "prev"):
+                return self.session.planned(other)
+        return key
 
     def stepping_key(self, name: str) -> Executed | None:
         """The step the belief is in, as an action to explore ``name`` with, if it steps it."""
@@ -485,6 +509,22 @@ def _entry_formats(spec: Any) -> list[str]:
     preferred = {"mm:ss": "mm:ss", "hh:mm": "hh:mm", "h:mm": "h:mm", "min": "minutes"}
     first = preferred.get(spec.format)
     return ([first] if first else []) + [f for f in order if f != first]
+
+
+def _way(effect: Any) -> int:
+    """Which way an effect moves a value along its order: +1, -1, or 0 (a go-to, none)."""
+    if effect == "next":
+        return 1
+    if effect == "prev":
+        return -1
+    amount = effect.skip if isinstance(effect, Skip) else None
+    if isinstance(effect, Add):
+        amount = effect.add if isinstance(effect.add, int | float) else None
+        if isinstance(effect.add, str):
+            amount = -1 if effect.add.startswith("-") else 1
+    if amount is None or amount == 0:
+        return 0
+    return 1 if amount > 0 else -1
 
 
 def _ends(wrap: bool | None) -> str:

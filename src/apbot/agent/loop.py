@@ -280,12 +280,18 @@ class ClosedLoop:
             if not self.config.closed_loop or exc.budget_hit:
                 raise Stop(f"no plan on the belief model: {exc.reason}") from None
             reachable: dict[str, Any] = {}
-            for name, value in target.items():  # the goal variable that breaks planning
+            # the goal variable that breaks planning (a run state last: it locks the rest)
+            for name, value in sorted(target.items(), key=lambda item: _starts(item[0])):
                 if self._plannable({**reachable, name: value}):
                     reachable[name] = value
                     continue
-                if _starts(name) and reachable and self._progress(reachable):
-                    return self._plan(reachable)  # a run state comes last: set the rest first
+                if _starts(name):
+                    others = {n: v for n, v in target.items() if n != name}
+                    if others and self._progress(others):
+                        return self._plan(others)  # a run state comes last: set the rest first
+                    anyway = self._start_anyway(name, value, target)
+                    if anyway is not None:
+                        return anyway
                 # look for the way to it first: progress on the rest (starting a cycle, say)
                 # could close the door on it
                 if self.procedures.recover_unreachable({name: value}):
@@ -403,6 +409,24 @@ class ClosedLoop:
         if len(head) + len(rest) != len(found):
             return found
         return Plan(found.goal, head.macro_actions + rest.macro_actions, found.expanded)
+
+    def _start_anyway(self, name: str, value: Any, target: dict[str, Any]) -> Plan | None:
+        """The rest of the goal holds, and the belief says starting undoes part of it (a
+        reset the reader may have misread): start the belief's way, and let the display say
+        whether the side effect is real (once per belief)."""
+        rest = {n: v for n, v in target.items() if n != name}
+        if any(self.session.belief.value(n) != v for n, v in rest.items()):
+            return None  # the rest first
+        try:
+            found = self._plan({name: value})
+        except Unreachable:
+            return None
+        if not {n for m in found.macro_actions for n in m.expect} & set(rest):
+            return None  # it undoes nothing of the goal: not why there is no plan
+        repairs = len(self.session.episode.repairs)  # once per belief
+        if not self.session.budget.once("inspect", f"anyway:{name}:{repairs}"):
+            return None
+        return found
 
     def _progress(self, target: dict[str, Any]) -> bool:
         """Whether the belief has a plan that changes something towards ``target``."""
