@@ -411,3 +411,79 @@ def test_a_setting_found_on_the_panel_is_seen_again_before_the_start_locks_the_k
     assert reached and episode.claimed_success
     start = next(i for i, e in enumerate(episode.trace) if e.action == "press_start")
     assert any(e.action == "press_prewash" for e in episode.trace[start - 3 : start])
+
+
+EXPRESS = """
+controls: [{id: clock}, {id: defrost}, {id: stop}, %(controls)s]
+variables:
+  clock:
+    type: time
+    ranges: [["01:00:00", "12:59:00", 60]]
+    initial: "12:00:00"
+    format: "h:mm"
+    entry: {format: "h:mm", max_digits: 4}
+    show: "{value}"
+  defrost_time:
+    type: time
+    ranges: [["00:00:00", "00:30:00", 1]]
+    format: "mm:ss"
+    entry: {format: "mm:ss"}
+    label: dEF
+  cook_time:
+    type: time
+    ranges: [["00:00:00", "00:03:00", 60]]
+    format: "mm:ss"
+    label: COOK
+  running: {type: discrete, values: ["off", "on"], show: {"off": "{clock}", "on": "COOK"}}
+actions:
+  press_clock: {control: clock}
+  press_defrost: {control: defrost}
+  press_stop: {control: stop}
+%(actions)s
+features:
+  set_clock:
+%(clock)s
+  time_defrost:
+    - {actions: [press_defrost]}
+    - {actions: [%(digits)s], variable: defrost_time}
+%(express)s
+  stop:
+    - {actions: [%(stop)s], variable: running, effect: {to: "off"}, reset: [cook_time]}
+guards:
+  - {name: cooking, when: {running: "on"}, only: [press_stop], display: "COOK"}
+display:
+  idle: "{clock}"
+  indicators: [running]
+"""
+EXPRESS_STEP = """\
+    - actions: [press_1, press_2, press_3]
+      variable: cook_time
+      effect: {press_1: {to: "00:01:00"}, press_2: {to: "00:02:00"}, press_3: {to: "00:03:00"}}
+      set: {running: "on"}"""
+
+
+def express(merged: bool) -> ApplianceModel:
+    from tests.helpers import model_from
+
+    digits = ", ".join(f"press_{d}" for d in range(10))
+    clock = f"    - {{actions: [press_clock]}}\n    - {{actions: [{digits}], variable: clock}}"
+    return model_from(
+        EXPRESS
+        % {
+            "controls": ", ".join(f"{{id: k{d}, kind: key}}" for d in range(10)),
+            "actions": "\n".join(f"  press_{d}: {{control: k{d}, digit: {d}}}" for d in range(10)),
+            "digits": digits,
+            # the reader lost CLOCK before the digits, and read express cooking as a last step
+            # of time defrost
+            "clock": f"    - {{actions: [{digits}], variable: clock}}" if merged else clock,
+            "express": EXPRESS_STEP if merged else "  express:\n" + EXPRESS_STEP,
+            "stop": "press_stop, press_clock" if merged else "press_stop",  # CLOCK misfiled
+        }
+    )
+
+
+def test_two_procedures_read_as_one_are_split_and_a_lost_entry_key_is_found() -> None:
+    episode, reached = run(express(False), express(True), {"clock": "02:30"})
+    assert reached and episode.claimed_success
+    assert any("press_2 starts a procedure of its own" in r for r in episode.repairs)
+    assert "set_clock starts with press_clock" in episode.repairs
