@@ -110,7 +110,7 @@ class GuardLearner:
         session = self.session
         dark = not failed.feedback.text.strip()
         if dark or failed.refused:
-            suspects = self._suspects(dark)
+            suspects = self._suspects(dark, action=failed.action.name)
         elif failed.unchanged:  # ignored without a sign on a lit display: a switch at off
             # (standby) that some guard of the belief already tests
             tested = {n for guard in session.belief.model.guards for n in guard.when}
@@ -168,17 +168,20 @@ class GuardLearner:
             return True
         return False
 
-    def _suspects(self, dark: bool, tested: set[str] | None = None) -> list[tuple[str, Any]]:
+    def _suspects(
+        self, dark: bool, tested: set[str] | None = None, action: str | None = None
+    ) -> list[tuple[str, Any]]:
         """Two-valued settings at a value that plausibly blocks keys: off behind a dark display
         (``dark``), on (a lock, a running cycle) behind a refusal. With ``tested``: only those
         settings, whatever guards their other value has (a key ignored without a sign)."""
         words = OFF_WORDS if dark else ON_WORDS
         suspects = []
         model = self.session.belief.model
-        guarded = {  # a switch whose other value is a guard of its own (power on, not off)
+        guarded = {  # a switch whose other value has a guard of its own that would refuse
+            # ``action`` too (a lock on, not off); one letting it through (power on) proves nothing
             name: {str(v) for v in (w if isinstance(w, list) else [w])}
             for guard in model.guards
-            if len(guard.when) == 1
+            if len(guard.when) == 1 and (action is None or action not in guard.only)
             for name, w in guard.when.items()
         }
         for name, spec in model.variables.items():
@@ -194,7 +197,9 @@ class GuardLearner:
                 continue
             if len(self.session.domain_values(name)) == 2 and self._switching(name):
                 suspects.append((name, value))
-        return suspects
+        # a setting some guard already tests (power, a lock) first: it is known to block keys
+        tested = {n for guard in model.guards for n in guard.when}
+        return sorted(suspects, key=lambda suspect: suspect[0] not in tested)
 
     def _switching(self, name: str) -> set[str]:
         """The keys of the steps that change ``name`` itself."""
