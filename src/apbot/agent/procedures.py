@@ -335,7 +335,7 @@ class ProcedureRepairer:
         for candidate in dict.fromkeys([*used, *self.keys_like(name, exclude=set())]):
             self.guards.lift(candidate)
             probe = self.session.press(self.session.planned(candidate), exploring=True)
-            if not probe.feedback.accepted or probe.observed(name) is MISSING:
+            if not probe.feedback.accepted or not self.session.shows(probe.feedback, name):
                 continue
             for feature in features:
                 try:
