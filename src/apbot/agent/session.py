@@ -237,15 +237,22 @@ class Session:
 
     def perceive(self, feedback: Feedback, expected: Observation) -> Seen:
         """Read ``feedback`` against the belief's prediction ``expected``."""
-        if not feedback.values and feedback.text == expected.text:
+        if feedback.text == expected.text:
             kind, _ = self.expected_screen()
-            return Seen(
+            seen = Seen(
                 feedback.text,
                 dict(expected.values),
                 screen=expected.focus,
                 screen_kind=kind,
                 screens=frozenset({(kind, expected.focus)}),
             )
+            if feedback.values:  # values by name are exact, and win
+                estimate = self.perceiver.estimator.estimate(feedback, context=self.belief.values())
+                for name in set(estimate.values) | set(estimate.outside):
+                    seen.values.pop(name, None)
+                seen.values.update(estimate.values)
+                seen.outside.update(estimate.outside)
+            return seen
         return self.perceiver.perceive(feedback, self.belief.values(), self.expected_screen())
 
     def expected_screen(self) -> tuple[str, str | None]:
