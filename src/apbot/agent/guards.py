@@ -14,7 +14,7 @@ import re
 from typing import Any
 
 from apbot.agent.repair import RepairError, add_guard, allow, disallow
-from apbot.agent.session import Executed, Session
+from apbot.agent.session import MISSING, Executed, Session
 from apbot.model.display import OFF_WORDS
 from apbot.model.schema import DiscreteVariable
 from apbot.plan.plan import Unreachable, plan
@@ -140,6 +140,8 @@ class GuardLearner:
                 session.press(planned, exploring=True)
             before = session.last.text
             retry = session.press(failed.action, exploring=True)
+            if retry.feedback.accepted and retry.feedback.text == before:
+                retry = self._again(retry)  # the screen it came to was up already: once more
             if (
                 not (retry.believed_accepted and retry.feedback.accepted)
                 or retry.unchanged
@@ -167,6 +169,18 @@ class GuardLearner:
             self.witnessed.add((_condition({name: blocking}), failed.action.name))
             return True
         return False
+
+    def _again(self, retry: Executed) -> Executed:
+        """A key pressed again after a retry that left the display as it was: if the setting
+        it shows moves, the key works (a first press that only shows the setting, on a screen
+        that was showing it already) — the retry counts as the second press."""
+        name = retry.variable
+        shown = retry.observed(name) if name else None
+        if name is None or shown is MISSING or shown is None:
+            return retry
+        again = self.session.press(retry.action, exploring=True)
+        moved = again.observed(name)
+        return again if moved is not MISSING and moved != shown else retry
 
     def _suspects(
         self, dark: bool, tested: set[str] | None = None, action: str | None = None
