@@ -171,3 +171,17 @@ def test_a_lamp_word_is_one_new_word_without_digits() -> None:
     assert lamp_word("SYNC  Z1 air fry", "1: 200°C  Z1 air fry") == "SYNC"
     assert lamp_word("160°C", "") is None  # a value, not a lamp
     assert lamp_word("ECO  TURBO", "") is None  # two words: not one lamp
+
+
+def test_in_values_mode_a_text_the_belief_cannot_read_is_still_walked() -> None:
+    # the paper's simulator names the value ("sync": "on") but the belief has no such setting:
+    # the text stays unread, and the finder learns the lamp from it as in display mode
+    belief = missing("sync", "press_sync", "sync")
+    env = SimulatorEnvironment(panel(), "values")
+    context = TaskContext(
+        "unit", "test", "t", "", {"sync": "on"}, belief, actions=tuple(env.actions)
+    )
+    episode = get_method("apbot").run(context, env)
+    assert env.simulator.satisfies(parse_goal(panel(), {"sync": "on"}))
+    assert episode.claimed_success
+    assert "sync: found under press_sync; an on/off lamp shown as 'SYNC'" in episode.repairs

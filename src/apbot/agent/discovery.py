@@ -299,13 +299,32 @@ class VariableFinder:
         return True
 
     def _adjusters(self, entry: str) -> list[str]:
-        """Keys to walk after an entry key: those that step things (▲/▼, dials) first."""
+        """Keys to walk after an entry key: those that step things (▲/▼, dials) first; never
+        a lock's, a power switch's or a start key (they change which keys work)."""
         offered = list(self.session.context.actions or self.session.offered)
         stepping = ("plus", "minus", "up", "down", "cw", "ccw", "left", "right", "next", "prev")
-        keys = [a for a in offered if a != entry and not _is_reverse(a) and not _is_digit(a)]
+        switches = self._switch_keys()
+        keys = [
+            a
+            for a in offered
+            if a != entry and not _is_reverse(a) and not _is_digit(a) and a not in switches
+        ]
         return sorted(
             keys, key=lambda a: (not any(w in a.split("_") for w in stepping), keys.index(a))
         )
+
+    def _switch_keys(self) -> set[str]:
+        """Keys of the steps that change what a guard of the belief tests (power, locks, the
+        run state)."""
+        model = self.session.belief.model
+        tested = {n for guard in model.guards for n in guard.when}
+        return {
+            a
+            for steps in model.features.values()
+            for step in steps
+            if step.variable in tested or tested & set(step.set)
+            for a in step.actions
+        }
 
     def _as_lamp(self, model: Any, name: str, text: str) -> Any:
         """The new setting also as a lamp, when the display showed it after its main text

@@ -14,7 +14,7 @@ import re
 from typing import Any
 
 from apbot.agent.repair import RepairError, add_guard, allow, disallow
-from apbot.agent.session import Executed, Session
+from apbot.agent.session import MISSING, Executed, Session
 from apbot.model.display import OFF_WORDS
 from apbot.model.schema import DiscreteVariable
 from apbot.plan.plan import Unreachable, plan
@@ -112,10 +112,10 @@ class GuardLearner:
         session = self.session
         dark = not failed.feedback.text.strip()
         if dark or failed.refused:
-            suspects = self._suspects(dark)
+            suspects = self._suspects(dark, action=failed.action.name)
             if not dark:  # a refusal on a lit display: also a main switch at off (standby)
                 switches = {n for n in session.belief.model.variables if n in MAIN_SWITCHES}
-                suspects += self._suspects(True, switches)
+                suspects += self._suspects(True, switches, action=failed.action.name)
         elif failed.unchanged:  # ignored without a sign on a lit display: a switch at off
             # (standby) that some guard of the belief already tests
             tested = {n for guard in session.belief.model.guards for n in guard.when}
@@ -147,6 +147,8 @@ class GuardLearner:
                 session.press(planned, exploring=True)
             before = session.last.text
             retry = session.press(failed.action, exploring=True)
+            if retry.feedback.accepted and retry.feedback.text == before:
+                retry = self._again(retry)  # the screen it came to was up already: once more
             if (
                 not (retry.believed_accepted and retry.feedback.accepted)
                 or retry.unchanged
@@ -175,17 +177,32 @@ class GuardLearner:
             return True
         return False
 
-    def _suspects(self, dark: bool, tested: set[str] | None = None) -> list[tuple[str, Any]]:
+    def _again(self, retry: Executed) -> Executed:
+        """A key pressed again after a retry that left the display as it was: if the setting
+        it shows moves, the key works (a first press that only shows the setting, on a screen
+        that was showing it already) — the retry counts as the second press."""
+        name = retry.variable
+        shown = retry.observed(name) if name else None
+        if name is None or shown is MISSING or shown is None:
+            return retry
+        again = self.session.press(retry.action, exploring=True)
+        moved = again.observed(name)
+        return again if moved is not MISSING and moved != shown else retry
+
+    def _suspects(
+        self, dark: bool, tested: set[str] | None = None, action: str | None = None
+    ) -> list[tuple[str, Any]]:
         """Two-valued settings at a value that plausibly blocks keys: off behind a dark display
         (``dark``), on (a lock, a running cycle) behind a refusal. With ``tested``: only those
         settings, whatever guards their other value has (a key ignored without a sign)."""
         words = OFF_WORDS if dark else ON_WORDS
         suspects = []
         model = self.session.belief.model
-        guarded = {  # a switch whose other value is a guard of its own (power on, not off)
+        guarded = {  # a switch whose other value has a guard of its own that would refuse
+            # ``action`` too (a lock on, not off); one letting it through (power on) proves nothing
             name: {str(v) for v in (w if isinstance(w, list) else [w])}
             for guard in model.guards
-            if len(guard.when) == 1
+            if len(guard.when) == 1 and (action is None or action not in guard.only)
             for name, w in guard.when.items()
         }
         for name, spec in model.variables.items():
@@ -201,7 +218,9 @@ class GuardLearner:
                 continue
             if len(self.session.domain_values(name)) == 2 and self._switching(name):
                 suspects.append((name, value))
-        return suspects
+        # a setting some guard already tests (power, a lock) first: it is known to block keys
+        tested = {n for guard in model.guards for n in guard.when}
+        return sorted(suspects, key=lambda suspect: suspect[0] not in tested)
 
     def _cycles_on(self) -> list[tuple[str, Any]]:
         """Run states that are on (a cycle running), which a key that did nothing without a

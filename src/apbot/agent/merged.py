@@ -44,8 +44,8 @@ class ProcedureSplitter:
                 for first in (False, True):
                     try:
                         variant, name = split_feature(model, feature, index, first)
-                    except RepairError:
-                        break
+                    except RepairError:  # (another procedure would hide it: put it first)
+                        continue
                     if self._explains(variant, done, shown):
                         session.adopt(
                             variant,

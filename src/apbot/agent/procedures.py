@@ -363,7 +363,7 @@ class ProcedureRepairer:
         for candidate in dict.fromkeys([*used, *self.keys_like(name, exclude=set())]):
             self.guards.lift(candidate)
             probe = self.session.press(self.session.planned(candidate), exploring=True)
-            if not probe.feedback.accepted or probe.observed(name) is MISSING:
+            if not probe.feedback.accepted or not self.session.shows(probe.feedback, name):
                 continue
             for feature in features:
                 try:
@@ -427,6 +427,9 @@ class ProcedureRepairer:
             return False
         if observed is MISSING or observed is UNREADABLE or observed is None:
             return False
+        seen = done.seen
+        if seen is None or seen.blank or name not in seen.values or seen.values[name] != observed:
+            return False  # a dark panel shows no lamp; a value the setting cannot have is no set
         feature, index = done.pointer
         step = session.belief.model.features[feature][index]
         if step.variable == name or name not in session.belief.model.variables:

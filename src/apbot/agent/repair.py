@@ -434,13 +434,13 @@ def plain_keys(model: ApplianceModel) -> set[str]:
 
 
 def plain_steps(model: ApplianceModel, keys: Collection[str]) -> list[tuple[str, int]]:
-    """The steps that adjust nothing and whose keys are all among ``keys``: where a reader
-    kept a setting's keys ("press TIMER", the digits) without the setting."""
+    """The steps that adjust nothing and have some of ``keys``: where a reader kept a
+    setting's keys ("press TIMER", the digits, the programme keys) without the setting."""
     return [
         (feature, index)
         for feature, steps in model.features.items()
         for index, step in enumerate(steps)
-        if step.variable is None and set(step.actions) <= set(keys)
+        if step.variable is None and set(step.actions) & set(keys)
     ]
 
 

@@ -22,7 +22,7 @@ from apbot.agent.budget import Budget
 from apbot.agent.environment import Environment, Feedback
 from apbot.agent.episode import TaskContext
 from apbot.agent.perception import MISSING, UNREADABLE, Perceiver, Seen
-from apbot.model.display import can_show, show_template, template_fields
+from apbot.model.display import can_show
 from apbot.model.domain import ValueProblem, parse_value
 from apbot.model.effects import default_effect
 from apbot.model.schema import Add, ApplianceModel, Skip, TimeVariable
@@ -237,26 +237,23 @@ class Session:
 
     def perceive(self, feedback: Feedback, expected: Observation) -> Seen:
         """Read ``feedback`` against the belief's prediction ``expected``."""
-        if not feedback.values and feedback.text == expected.text:
+        if feedback.text == expected.text:
             kind, _ = self.expected_screen()
-            values = dict(expected.values)
-            if expected.focus is not None:  # the screen prints other settings too ("{clock}")
-                spec = self.belief.model.variables[expected.focus]
-                template = show_template(spec, self.belief.value(expected.focus))
-                for name in template_fields(template):
-                    if (
-                        name in self.belief.model.variables
-                        and self.belief.model.variables[name].visible
-                    ):
-                        values.setdefault(name, self.belief.value(name))
-            return Seen(
+            seen = Seen(
                 feedback.text,
                 # a dark panel (a hiding guard) shows no value, not even its lamps
-                {} if kind == "guard" else values,
+                {} if kind == "guard" else dict(expected.values),
                 screen=expected.focus,
                 screen_kind=kind,
                 screens=frozenset({(kind, expected.focus)}),
             )
+            if feedback.values:  # values by name are exact, and win
+                estimate = self.perceiver.estimator.estimate(feedback, context=self.belief.values())
+                for name in set(estimate.values) | set(estimate.outside):
+                    seen.values.pop(name, None)
+                seen.values.update(estimate.values)
+                seen.outside.update(estimate.outside)
+            return seen
         return self.perceiver.perceive(feedback, self.belief.values(), self.expected_screen())
 
     def expected_screen(self) -> tuple[str, str | None]:
@@ -312,6 +309,12 @@ class Session:
             or n in self.blind
             or n in self.unread
         )
+
+    def shows(self, feedback: Feedback, name: str) -> bool:
+        """Whether ``feedback``'s text prints ``name`` on any screen the belief knows (read
+        afresh: a screen matching the prediction records only its own setting)."""
+        seen = self.perceiver.perceive(feedback, self.belief.values(), None)
+        return seen.observed(name) is not MISSING
 
     def shown(self, name: str) -> Any:
         """The value of ``name`` on the display now; MISSING if none."""
