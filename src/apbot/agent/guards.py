@@ -295,10 +295,26 @@ class GuardLearner:
         for guard in compiled.guards:
             holds = all(self.session.belief.state.values[v] in ok for v, ok in guard.conditions)
             blocked = [a for i, a in enumerate(compiled.action_names) if i not in guard.allowed]
-            # a guard that lets most keys work ("unit on": the keys of a running unit) is no
-            # blocker: getting out of it (switching off) would block more than it frees
-            if holds and blocked and len(guard.allowed) < len(blocked):
+            # a guard that getting out of puts the panel under another ("unit on": switching
+            # off lands in "unit off") is no blocker to lift
+            if holds and blocked and not self._swaps(guard):
                 self.lift(blocked[0])
+
+    def _swaps(self, guard: Any) -> bool:
+        """Whether leaving ``guard`` (its first condition changed) makes another guard hold."""
+        compiled = self.session.belief.compiled
+        values = list(self.session.belief.state.values)
+        for v, ok in guard.conditions:
+            domain = compiled.vars[v].domain(self.session.belief.state.values)
+            others = [i for i in range(len(domain.values) if domain else 0) if i not in ok]
+            if not others:
+                continue
+            values[v] = others[0]
+            return any(
+                other is not guard and all(values[u] in allowed for u, allowed in other.conditions)
+                for other in compiled.guards
+            )
+        return False
 
     def lift(self, action: str) -> None:
         """Bring the appliance out of any guard that would refuse ``action`` (switch it on,
