@@ -4,6 +4,7 @@ conditioner…, against the true simulator, and judges the outcome on the truth.
 
 from __future__ import annotations
 
+from importlib.resources import files
 from typing import Any
 
 import pytest
@@ -18,6 +19,7 @@ from apbot.agent.reader import DisplayReader
 from apbot.agent.registry import get_method
 from apbot.agent.session import AgentConfig, Session
 from apbot.model.goal import parse_goal
+from apbot.model.load import loads_model
 from apbot.model.schema import ApplianceModel
 from tests.helpers import model_from
 
@@ -438,3 +440,33 @@ def test_a_wrong_step_is_walked_one_value_at_a_time_not_in_the_holds_strides(
     belief = model_from(DELAY.replace('"12:00:00", 3600', '"12:00:00", 7200'))
     episode, reached = run(model_from(DELAY), belief, {"delay": "9 h"}, feedback)
     assert reached and episode.claimed_success, episode.failure
+
+
+def suite_model(appliance: str, *replacements: tuple[str, str]) -> ApplianceModel:
+    text = (files("apbot") / f"data/suite/{appliance}/model.yaml").read_text()
+    for old, new in replacements:
+        assert text.count(old) == 1, old
+        text = text.replace(old, new)
+    return loads_model(text)
+
+
+@pytest.mark.parametrize("feedback", MODES)
+def test_a_one_position_guard_read_too_strict_is_relaxed_and_no_lock_is_probed(
+    feedback: FeedbackMode,
+) -> None:
+    # the reader believed TIMER works at PROBE only (other_than): the goal is out of reach on
+    # the belief. Probing the lock hold (hold TIMER ▲, named like the setting) would lock the
+    # panel, and TIMER is already the timer's own key: the guard is supposed to let it work
+    truth = suite_model("slow_cooker_4")
+    belief = suite_model(
+        "slow_cooker_4",
+        (
+            "only: [turn_cw, turn_ccw, press_timer, press_start, hold_timer_up]",
+            "only: [turn_cw, turn_ccw, press_start, hold_timer_up]",
+        ),
+    )
+    goal = {"setting": "low", "timer": "8 h", "running": "on"}
+    episode, reached = run(truth, belief, goal, feedback)
+    assert reached and episode.claimed_success, episode.failure
+    pressed = [e.action for e in episode.trace if e.kind == "action"]
+    assert "hold_timer_up" not in pressed

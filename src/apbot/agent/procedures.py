@@ -297,6 +297,8 @@ class ProcedureRepairer:
         for action in self.session.belief.model.actions:
             if action in exclude or action not in self.session.offered:
                 continue
+            if self._locks(action):
+                continue  # a lock hold named like the setting (hold TIMER ▲) would lock out
             parts = set(action.split("_"))
             if words & parts or any(
                 w.startswith(p) or p.startswith(w) for w in words for p in parts if len(p) >= 3
@@ -360,7 +362,8 @@ class ProcedureRepairer:
         """Keys no procedure uses, or named like the setting (an entry key filed under another
         procedure): the one that brings the setting up is the entry step it lacks."""
         used = set(self.orphans())
-        for candidate in dict.fromkeys([*used, *self.keys_like(name, exclude=set())]):
+        firsts = {a for f in features for a in self.session.belief.model.features[f][0].actions}
+        for candidate in dict.fromkeys([*used, *self.keys_like(name, exclude=firsts)]):
             self.guards.lift(candidate)
             probe = self.session.press(self.session.planned(candidate), exploring=True)
             if not probe.feedback.accepted or not self.session.shows(probe.feedback, name):
@@ -379,6 +382,25 @@ class ProcedureRepairer:
                 self.session.adopt(new, f"{feature} starts with {candidate}", (feature, 0))
                 return True
         return False
+
+    def _locks(self, action: str) -> bool:
+        """Whether the belief says ``action`` puts the panel under a guard (locks it, switches
+        it off) from where it is now."""
+        compiled = self.session.belief.compiled
+        index = compiled.action_index.get(action)
+        if index is None:
+            return False
+        state = self.session.belief.state
+        after = compiled.apply(state, index, compiled.hold_seconds[index] or None)
+        if after is None:
+            return False
+
+        def holding(values: tuple[int, ...]) -> int:
+            return sum(
+                all(values[v] in ok for v, ok in guard.conditions) for guard in compiled.guards
+            )
+
+        return holding(after.values) > holding(state.values)
 
     def find_separator(self, feature: str, name: str) -> bool:
         """A step of ``feature`` that can never be entered because it shares its keys with
