@@ -470,3 +470,22 @@ def test_a_one_position_guard_read_too_strict_is_relaxed_and_no_lock_is_probed(
     assert reached and episode.claimed_success, episode.failure
     pressed = [e.action for e in episode.trace if e.kind == "action"]
     assert "hold_timer_up" not in pressed
+
+
+@pytest.mark.parametrize("feedback", MODES)
+def test_a_missing_separator_named_like_the_setting_is_found_in_another_procedure(
+    feedback: FeedbackMode,
+) -> None:
+    # the reader missed TIMER between the right side's power and its timer (both on + / -);
+    # TIMER is filed under the left side only, and it is the separator the right side lacks
+    right_timer_step = (
+        '    - {actions: [press_timer], timeout: 10, note: "switches the selected side to its'
+        ' timer"}\n    - actions: [press_plus, press_minus]\n      variable: right_timer'
+    )
+    belief = suite_model(
+        "slow_cooker_2",
+        (right_timer_step, "    - actions: [press_plus, press_minus]\n      variable: right_timer"),
+    )
+    goal = {"right_power": 700, "right_timer": "45 min"}
+    episode, reached = run(suite_model("slow_cooker_2"), belief, goal, feedback)
+    assert reached and episode.claimed_success, episode.failure

@@ -416,6 +416,9 @@ class ProcedureRepairer:
             return False
         inside = {a for i in (index - 1, index) for a in steps[i].actions}
         others = [a for s in steps for a in s.actions if a not in inside]
+        # or a key named like the setting, filed under another procedure (TIMER, which
+        # switches the right side to its timer as it does the left side)
+        others += self.keys_like(name, exclude=inside | {steps[0].actions[0]})
         for candidate in dict.fromkeys(others):
             # from the step before (where the plan left off), else through the procedure
             if self.session.belief.pointer() != (feature, index - 1):
