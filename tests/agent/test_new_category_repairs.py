@@ -489,3 +489,18 @@ def test_a_missing_separator_named_like_the_setting_is_found_in_another_procedur
     goal = {"right_power": 700, "right_timer": "45 min"}
     episode, reached = run(suite_model("slow_cooker_2"), belief, goal, feedback)
     assert reached and episode.claimed_success, episode.failure
+
+
+@pytest.mark.parametrize("feedback", MODES)
+def test_a_setting_missing_from_the_goals_programme_is_looked_for_before_starting(
+    feedback: FeedbackMode,
+) -> None:
+    # the reader missed LOW's cook time (remembered per mode): the agent must find it on LOW
+    # before START locks the keys, not start first and then look
+    belief = suite_model(
+        "slow_cooker_1",
+        ('      low: {ranges: [["02:00:00", "20:00:00", 1800]], initial: "08:00:00"}\n', ""),
+    )
+    goal = {"mode": "low", "cook_time": "9 h", "running": "on"}
+    episode, reached = run(suite_model("slow_cooker_1"), belief, goal, feedback)
+    assert reached and episode.claimed_success, episode.failure

@@ -127,6 +127,10 @@ class ClosedLoop:
                 proxy = self.proxy(name, inside)
                 if proxy is not MISSING:
                     target[name] = proxy
+                elif name not in self.session.explored:
+                    # the setting is to be looked for in its programme: starting first would
+                    # lock it out
+                    target = {n: v for n, v in target.items() if not _starts(n)}
             found = self.make_plan(target)
             if not found.macro_actions:
                 if self.missing:
