@@ -572,3 +572,26 @@ def test_the_true_model_in_values_mode_presses_the_optimum_after_a_programme_cha
     episode, reached = run(appliance.model, appliance.model, dict(task.goal), feedback="values")
     assert reached and episode.claimed_success
     assert episode.execution_steps == task.optimal_steps
+
+
+def test_an_entry_key_misfiled_as_another_procedures_first_key_is_moved_not_given_up() -> None:
+    # TIMER was read as a second key of the temperature procedure: probed, it brings the timer
+    # up, so it leaves the temperature's first step for the timer's (the digits are kept)
+    truth, belief = injected("induction_cooker_2", "2")
+    goal = {"temperature": 180, "timer": "20 min", "running": "on"}
+    episode, reached = run(truth, belief, goal)
+    assert reached and episode.claimed_success
+    assert "set_timer starts with press_timer before press_2" in episode.repairs
+    assert not any(r.startswith("press_2 does nothing") for r in episode.repairs)
+
+
+def test_a_key_that_changed_nothing_shown_is_no_sign_of_a_procedure_entered_wrongly() -> None:
+    # + did nothing visible after the function was chosen (COOK TIME, its entry key, was
+    # misfiled): the belief's "from no procedure" reading fits trivially, and must not send
+    # the agent probing the function's procedure (it changed the function, which stops at the
+    # end of its list)
+    truth, belief = injected("rice_cooker_4", "2")
+    goal = {"cook_time": "02:00:00", "function": "porridge", "status": "cooking"}
+    episode, reached = run(truth, belief, goal)
+    assert reached and episode.claimed_success
+    assert "select_function starts with press_function" not in episode.repairs

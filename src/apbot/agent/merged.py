@@ -67,6 +67,10 @@ class ProcedureSplitter:
         shown = {**seen.values, **seen.outside}
         if not shown or not self._explains(self.session.belief.model, done, shown):
             return None
+        compiled = self.session.belief.compiled
+        before = compiled.assignment(done.state_before)
+        if not any(before.get(name) != value for name, value in shown.items()):
+            return None  # nothing changed that the display showed: no evidence either way
         return done.before[0]
 
     def _explains(self, variant: ApplianceModel, done: Executed, shown: dict[str, Any]) -> bool:

@@ -93,17 +93,15 @@ class ProcedureRepairer:
                 )
                 return
             if after.feedback.accepted and shows:
+                model = self.session.belief.model
                 try:
-                    new = insert_step(
-                        self.session.belief.model,
-                        feature,
-                        index,
-                        [candidate],
-                        move=candidate in doubles,
-                    )
-                except RepairError as exc:
-                    self.session.episode.log("repair", f"could not add a step: {exc}")
-                    continue
+                    new = insert_step(model, feature, index, [candidate], move=candidate in doubles)
+                except RepairError:
+                    try:  # it starts another procedure in the belief: shown to do this instead
+                        new = insert_step(model, feature, index, [candidate], move=True)
+                    except RepairError as exc:
+                        self.session.episode.log("repair", f"could not add a step: {exc}")
+                        continue
                 self.session.adopt(
                     new,
                     f"{feature} starts with {candidate} before {first.action.name}",
