@@ -517,7 +517,7 @@ def _way(effect: Any) -> int:
         return 1
     if effect == "prev":
         return -1
-    amount = effect.skip if isinstance(effect, Skip) else None
+    amount: float | None = effect.skip if isinstance(effect, Skip) else None
     if isinstance(effect, Add):
         amount = effect.add if isinstance(effect.add, int | float) else None
         if isinstance(effect.add, str):

@@ -333,7 +333,9 @@ class ProcedureRepairer:
         if any(word in name for word in _RUN_WORDS):
             keys += [a for a in session.belief.model.actions if "start" in a.split("_")]
         for key in list(dict.fromkeys(keys))[:3]:
-            if key not in session.offered or not session.budget.once("setter", key):
+            if key not in session.offered or not session.budget.once(
+                "unreachable", f"setter:{key}"
+            ):
                 continue
             self.guards.lift(key)
             probe = session.press(session.planned(key), exploring=True)
