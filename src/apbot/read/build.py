@@ -228,17 +228,55 @@ class Builder:
         found = find_list(text)
         if found:
             out.append((found[0], 3.0 if found[1] == "arrows" else 2.0 if mention else 1.0))
-        run = find_number_run(text)
+        run = find_number_run(self._own_span(text, tokens) if mention else text)
         if run:
             out.append((run, 2.2 if mention else 1.2))
         if text.rstrip().endswith((":", "order")) or text == unit.heading:
             bullets = _bullet_items(units, i)
             if bullets:
                 out.append((bullets, 1.5))
-            column = _next_table_column(units, i)
+            column = _next_table_column(units, i) or _quantity_column(units, i)
             if column:
-                out.append((column, 2.5))
+                # a heading that only shares a word with the key ("Recipe: basic white loaf"
+                # for LOAF) introduces a table about something else unless its header says so
+                related = mention or text != unit.heading or self._header_names(i, tokens)
+                out.append((column, 2.5 if related else 1.2))
         return out
+
+    def _own_span(self, text: str, tokens: list[str]) -> str:
+        """The part of a sentence about the key: from its label to the next other key's label
+        ("below TEMP. a row printed 20 30 40, and below SPIN a row printed 400 800")."""
+        own = [self.labels[t].text for t in tokens if t in self.labels and self.labels[t].text]
+        starts = [text.find(lab) for lab in own if lab and text.find(lab) >= 0]
+        if not starts:
+            return text
+        start = min(starts)
+        others = [
+            lab.text
+            for t, lab in self.labels.items()
+            if t not in tokens
+            and lab.text
+            and lab.text not in own
+            and not any(lab.text in o for o in own)
+        ]
+        end = len(text)
+        for lab in others:
+            k = text.find(lab, start + 1)
+            if k > start:
+                end = min(end, k)
+        return text[start:end]
+
+    def _header_names(self, i: int, tokens: list[str]) -> bool:
+        """Whether the header of the table after unit ``i`` names the key's word."""
+        units = self.manual.units
+        k = i + 1
+        if k >= len(units) or not units[k].cells:
+            return False
+        header = units[k].header or units[k].cells
+        tw = {w[:5] for t in tokens for w in words(t.replace("_", " ")) if len(w) >= 3}
+        if any(t in self.labels for t in tokens):
+            tw |= {w[:5] for t in tokens if t in self.labels for w in words(self.labels[t].text)}
+        return any(w[:5] in tw for cell in header for w in words(cell) if len(w) >= 3)
 
     _table_at: int | None = None
 
@@ -338,27 +376,32 @@ class Builder:
         name = self.unique(name, self.variables)
         subject = f"variables.{name}"
         ranges = list(ev.ranges)
-        if "clock" in words(name.replace("_", " ")) and any(
-            r.unit not in ("s", "h") for r in ranges
-        ):
+        clock = "clock" in words(name.replace("_", " "))
+        if clock and any(r.unit not in ("s", "h") for r in ranges):
             ranges = []  # a clock's range is the day, whatever numbers stand nearby
-        if not ranges and "clock" in words(name.replace("_", " ")):
+        if ranges:
+            shown = ", ".join(f"{r.low:g}–{r.high:g}" for r in ranges)
+            self.note(subject, f"range {shown} {ranges[0].unit}", ev.range_at)
+        elif clock:
             twelve = any(
                 re.search(r"\b12[- ]?h(?:ou)?r|\bAM\b|\bPM\b", u.text) for u in self.manual.units
             )
             low, high = (3600, 12 * 3600 + 59 * 60) if twelve else (0, 23 * 3600 + 59 * 60)
             self.note(subject, "a clock: the time of day (its range is the clock's, not read)")
             ranges = [Range(low, high, "s", 60)]
-        elif not ranges:
+        elif (found := self._range_anywhere(name, label)) is not None:
+            ranges = [found[0]]
+            r0 = found[0]
+            self.note(
+                subject, f"range {r0.low:g}–{r0.high:g} {r0.unit} (named elsewhere)", found[1]
+            )
+        else:
             unit = ev.step[1] if ev.step else _unit_from_words(name)
             low, high = {"": (0, 10), "h": (0, 12), "min": (1, 60), "°C": (30, 100)}.get(
                 unit, (0, 100)
             )
             self.note(subject, f"range {low:g}–{high:g} {unit} (the manual gives none)")
             ranges = [Range(low, high, unit)]
-        else:
-            shown = ", ".join(f"{r.low:g}–{r.high:g}" for r in ranges)
-            self.note(subject, f"range {shown} {ranges[0].unit}", ev.range_at)
         unit = ranges[0].unit or (ev.step[1] if ev.step else "") or _unit_from_words(name)
         as_time = ranges[0].unit == "s" or unit in ("s", "min")
         factor = 1 if ranges[0].unit == "s" else seconds(1, unit) if as_time else 1
@@ -434,6 +477,27 @@ class Builder:
         self.variables[name] = spec
         return name
 
+    def _range_anywhere(self, name: str, label: str) -> tuple[Range, int] | None:
+        """A range in a sentence or table row naming the setting anywhere (a specifications
+        table: "| Set temperature range | 40–100 °C |"), its unit fitting the setting; advice
+        ("suggested", "recommended") is not a limit. The widest such range."""
+        ws = {w for w in words(name.replace("_", " ")) + words(label) if len(w) >= 4}
+        if not ws or not _unit_from_words(name):
+            return None
+        best: tuple[Range, int] | None = None
+        for i, unit in enumerate(self.manual.units):
+            uw = words(unit.text)
+            if not any(u[:5] == w[:5] for u in uw for w in ws):
+                continue
+            if set(uw) & {"suggested", "recommended", "typical", "advised", "usual", "ideal"}:
+                continue
+            for r in find_ranges(unit.text):
+                if not r.unit or not _fits(r.unit, [name]) or r.high <= r.low:
+                    continue
+                if best is None or r.high - r.low > best[0].high - best[0].low:
+                    best = (r, i)
+        return best
+
     # --- the whole model --------------------------------------------------------------------
 
     def feature(self, name: str, steps: list[dict[str, Any]]) -> None:
@@ -497,6 +561,43 @@ def _next_table_column(units: list[Unit], i: int) -> list[str]:
     if numbers * 2 > len(items):
         return []  # a column of ranges or bare numbers is not a list of names
     return items if len(items) >= 2 else []
+
+
+FRACTIONS = {"½": ".5", "¼": ".25", "¾": ".75"}
+
+
+def _quantity_column(units: list[Unit], i: int) -> list[str]:
+    """A table column of durations after unit ``i`` ("| `60` | 1 hour |"), as minutes; a cell
+    saying there is none ("no hold", "off", "--") is 0. Empty unless most cells are durations."""
+    from apbot.model.values import parse_quantity
+
+    rows: list[tuple[str, ...]] = []
+    k = i + 1
+    if k < len(units) and units[k].cells and not units[k].header:
+        k += 1
+    while k < len(units) and units[k].cells and units[k].header:
+        rows.append(units[k].cells)
+        k += 1
+    if len(rows) < 3:
+        return []
+    width = min(len(r) for r in rows)
+    for column in range(width - 1, -1, -1):
+        items: list[str] = []
+        for row in rows:
+            cell = row[column].strip(" *`").lower()
+            for frac, dec in FRACTIONS.items():
+                cell = re.sub(rf"(\d)\s*{frac}", rf"\g<1>{dec}", cell).replace(frac, "0" + dec)
+            q = parse_quantity(re.sub(r"\(.*?\)", "", cell).strip())
+            if q and q[1] == "time":
+                items.append(f"{q[0] / 60:g} min")
+            elif re.match(r"^(?:no\b|none|off\b|-+$|–|—)", cell):
+                items.append("0 min")
+            else:
+                break
+        else:
+            if sum(i != "0 min" for i in items) >= 2:
+                return _dedupe(items)
+    return []
 
 
 def _bullet_items(units: list[Unit], i: int) -> list[str]:

@@ -117,9 +117,15 @@ def _assemble(b: Builder, appliance_id: str, category: str) -> dict[str, Any]:
     if main is not None:
         idle = "{" + main + "}"
         b.note("display.idle", f"the display shows {main} when nothing is being set")
-        power = b.variables.get("power")
-        if power is not None and "show" not in power:
-            power["show"] = {"off": "", "on": idle}  # switching on shows the idle screen
+    power = b.variables.get("power")
+    if power is not None and "show" not in power:
+        # switching on shows the idle screen; with none read, a lit screen the belief does not
+        # try to read (a guessed word would be misread as a wrong power state)
+        power["show"] = {"off": "", "on": idle}
+        if not idle:
+            b.note(
+                "variables.power.show", "switching on lights the display (what it shows: not read)"
+            )
     return {
         "appliance": {"id": appliance_id, "category": category, "name": "read from the manual"},
         "controls": _controls(b),

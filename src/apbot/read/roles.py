@@ -23,6 +23,7 @@ from apbot.read.build import (
     adjuster_direction,
 )
 from apbot.read.labels import words
+from apbot.read.shown import LOCK_CUE, RUNNING_CUE, shown_words
 
 
 def assign(b: Builder) -> None:
@@ -106,7 +107,11 @@ def assign(b: Builder) -> None:
         var = "child_lock"
         if var not in b.variables:
             var = b.add_toggle("child_lock", "LOCK", at)
-            b.variables[var]["show"] = {"off": "", "on": _lock_word(b, info) or "LOCK"}
+            word = (
+                _lock_word(b, info)
+                or _state_word(b, list(info.controls), LOCK_CUE, re.compile(r"^RUN", re.I))[0]
+            )
+            b.variables[var]["show"] = {"off": "", "on": word or "LOCK"}
             b.feature("child_lock", [{"actions": [info.name], "variable": var, "effect": "toggle"}])
         else:
             b.features["child_lock"][0]["actions"].append(info.name)
@@ -136,13 +141,21 @@ def assign(b: Builder) -> None:
         and i not in starts
         and i.digit is None
         and (set(words(i.token)) & STOP_WORDS)
+        and not set(words(i.token)) & NUMERIC_WORDS  # END TIME, CLEAR TIMER: a setting
         and i.skill in ("press", "hold")
     ]
     if starts or stops:
         var = b.unique("running", b.variables)
         b.variables[var] = {"type": "discrete", "values": ["off", "on"], "label": "RUN"}
-        if b.lamp_unit("RUN") is not None:
-            b.indicators.append(var)
+        word, at = _state_word(
+            b, [i.token for i in starts + stops], RUNNING_CUE, re.compile(r"LOC|^C?L$|^Lc$", re.I)
+        )
+        if word:
+            b.variables[var]["show"] = {"off": "", "on": word}
+            b.note(f"variables.{var}.show", f"the panel shows {word} while it runs", at)
+        else:  # no word read: the belief does not predict the screen (the loop cannot misread it)
+            b.variables[var]["visible"] = False
+            b.note(f"variables.{var}.visible", "the manual names no sign of running")
         b.note(
             f"variables.{var}",
             "the appliance runs after START",
@@ -519,9 +532,41 @@ def _pad_group(b: Builder, group: list[ActionInfo], label: Any, first_mention: A
         f"keys listed together select one {noun}: {', '.join(values)}",
         first_mention([g.token for g in group]),
     )
-    b.note(f"variables.{var}.initial", f"starts at {values[0]} (the manual does not say)")
+    start, at = _pad_initial(b, values)
+    if start is None:
+        b.note(f"variables.{var}.initial", f"starts at {values[0]} (the manual does not say)")
+    elif start in values:
+        b.variables[var]["initial"] = start
+        b.note(f"variables.{var}.initial", f"starts at {start}", at)
+    else:  # a state no key selects ("Manual mode is selected every time you switch on")
+        b.variables[var]["values"] = [start, *values]
+        b.note(f"variables.{var}.initial", f"starts at {start}, which no key selects", at)
     for key, value in zip(group, values, strict=True):  # one go-to feature per key
         b.feature(key.token, [{"actions": [key.name], "variable": var, "effect": {"to": value}}])
+
+
+START_RE = re.compile(
+    r"\b(?:(?:is|comes)\s+(?:set|preset)\s+(?:for|to)|starts?\s+(?:in|with|on)|defaults?\s+to"
+    r"|by default(?:,)?\s+(?:it is|is)|comes on in)\s+(?:the\s+)?"
+    r"([A-Za-z][\w-]*(?: [A-Za-z][\w-]*)?)"
+    r"|\b([A-Z][\w-]*)\s+(?:mode|programme|program|setting)\s+is\s+(?:selected|chosen|set)"
+    r"\s+(?:automatically|by default|(?:each|every) time)",
+)
+
+
+def _pad_initial(b: Builder, values: list[str]) -> tuple[str | None, int | None]:
+    """What a pad of go-to keys starts at: a value the manual says it is set for out of the box,
+    or a named mode selected on switching on that no key selects."""
+    for i, unit in enumerate(b.manual.units):
+        for m in START_RE.finditer(unit.text):
+            if m.group(1):
+                words_ = m.group(1).lower().split()
+                for k in (2, 1):
+                    if " ".join(words_[:k]) in values:
+                        return " ".join(words_[:k]), i
+            elif m.group(2):
+                return m.group(2).lower(), i
+    return None, None
 
 
 def _keypad_entry(spec: dict[str, Any]) -> None:
@@ -574,12 +619,37 @@ def _token_of(b: Builder, action: str) -> str:
     return next(i.token for i in b.infos if i.name == action)
 
 
+def _state_word(
+    b: Builder, tokens: list[str], cue: re.Pattern[str], reject: re.Pattern[str] | None = None
+) -> tuple[str, int | None]:
+    """The word the panel shows in a state (running, locked): first in the sentences about the
+    keys that enter it (the sentence that names the key, or the one right after it), then in any
+    sentence about the state; a word ``reject`` matches belongs to another state."""
+    keys = {lab.text for lab in b.labels.values() if lab.text}
+    mentions = {m for t in tokens for m in _mentions(b, t)}
+    near = [i for i in b.context(tokens) if i < len(b.manual.units)]
+    rest = [i for i, u in enumerate(b.manual.units) if cue.search(u.text) and i not in near]
+    for i in near + rest:
+        text = b.manual.units[i].text
+        if not cue.search(text) and not (i - 1 in mentions and i not in mentions):
+            continue
+        for word in shown_words(text, keys):
+            if reject is None or not reject.search(word):
+                return word, i
+    return "", None
+
+
+def _mentions(b: Builder, token: str) -> list[int]:
+    return b.labels[token].mentions if token in b.labels else []
+
+
 def _lock_word(b: Builder, info: ActionInfo) -> str:
     for i in b.context(list(info.controls)):
         for m in re.finditer(
             r"\b([A-Z][A-Z-]*LOC[A-Z]*|LOC|LOCK(?:ED)?|[A-Z]-?L)\b", b.manual.units[i].text
         ):
-            return m.group(1)
+            if "CLOCK" not in m.group(1):
+                return m.group(1)
     return ""
 
 
