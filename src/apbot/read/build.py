@@ -209,10 +209,14 @@ class Builder:
                 if m:  # "FAN HI/LO": the panel prints the values next to the name
                     best, best_prio, ev.values_at = m.group(1).split("/"), 2.5, i
                     break
-        if best is None:
-            best = self._table_column(tokens)
-            if best:
-                ev.values_at = self._table_at
+        choice = bool({w for t in tokens for w in words(t.replace("_", " "))} & CHOICE_WORDS)
+        if best is None or (_numeric_items(best) and (len(best) < 3 or choice)):
+            # two numbers are a range, not a list; a programme key's list is of names
+            column = self._table_column(tokens)
+            if column:
+                best, ev.values_at = column, self._table_at
+            elif best is not None and len(best) < 3:
+                best = None
         if best is not None:
             ev.values = best if _numeric_items(best) else [v.lower() for v in best]
             self._initial_from_values(ev, tokens)
@@ -507,7 +511,7 @@ class Builder:
 def _numeric_items(items: list[str]) -> bool:
     """Every item is a number, perhaps with a short unit ("40", "35 %", "2h")."""
     return bool(items) and all(
-        re.fullmatch(r"\s*\d+(?:[.,]\d+)?\s*[^\s\d]{0,4}\s*", i) for i in items
+        re.fullmatch(r"\s*\d+(?:[.,]\d+)?\s*(?:[^\s\d]{0,4}|[A-Za-z]{1,8})\s*", i) for i in items
     )
 
 

@@ -437,6 +437,7 @@ def assign(b: Builder) -> None:
             var = b.add_number(token, lab, ev, cyclic=False)
         eff = {**{a: "next" for a in cw}, **{a: "prev" for a in ccw}}
         b.feature(f"select_{var}", [{"actions": cw + ccw, "variable": var, "effect": eff}])
+        _dial_ends(b, token, var)
         for k in [k for k in silent if k.token == token]:
             b.feature(
                 f"{k.token}_press",
@@ -637,6 +638,32 @@ def _state_word(
             if reject is None or not reject.search(word):
                 return word, i
     return "", None
+
+
+ENDLESS_RE = re.compile(
+    r"\bno (?:end )?stops?\b|\bturns? (?:freely|endlessly|all the way round)\b|\bendless\w*"
+    r"|\b(?:simply )?continues with the first\b|\bround and round\b",
+    re.IGNORECASE,
+)
+STOPS_RE = re.compile(
+    r"\bstops? at (?:each|either|both|the) ends?\b|\bend stops?\b|\bwill not turn (?:past|beyond)"
+    r"|\bcannot be turned (?:past|beyond)",
+    re.IGNORECASE,
+)
+
+
+def _dial_ends(b: Builder, token: str, var: str) -> None:
+    """A knob the manual says stops at its ends clamps; one with no end stop goes round."""
+    for i in b.context([token]):
+        text = b.manual.units[i].text
+        if ENDLESS_RE.search(text):
+            b.variables[var]["wrap"] = True
+            b.note(f"variables.{var}.wrap", "the knob has no end stop", i)
+            return
+        if STOPS_RE.search(text):
+            b.variables[var]["wrap"] = False
+            b.note(f"variables.{var}.wrap", "the knob stops at its ends", i)
+            return
 
 
 def _mentions(b: Builder, token: str) -> list[int]:
