@@ -23,6 +23,7 @@ from apbot.read.values import (
     ON_OFF_RE,
     Range,
     anchored_lists,
+    bare_list,
     find_initial,
     find_list,
     find_number_run,
@@ -31,6 +32,10 @@ from apbot.read.values import (
     seconds,
 )
 
+LAMP_LIST_RE = re.compile(
+    r"^\W*(?:the\s+)?(?:\w+\s+){0,2}(?:lamps?|indicators?|symbols?|icons?|LEDs?|lights)\b[^:]{0,40}:",
+    re.IGNORECASE,
+)
 UP_WORDS = {"up", "plus", "more", "increase", "inc", "higher", "add"}
 DOWN_WORDS = {"down", "minus", "less", "decrease", "dec", "lower"}
 POWER_TOKENS = {"power", "on_off", "onoff", "on", "power_on_off", "standby"}
@@ -163,6 +168,8 @@ class Builder:
             for items, prio in self._lists(i, i in mentions, tokens):
                 if sum(v.lower() in others for v in items) >= 2:
                     continue  # a list of other keys, not of values
+                if LAMP_LIST_RE.match(text):
+                    continue  # "Lamps (top row): FAN HI, FAN LO, 2H…": what lights, not values
                 if _numeric_items(items) and len(items) < 3:
                     continue
                 if prio > best_prio:
@@ -201,6 +208,12 @@ class Builder:
             label = self.labels[t].text if t in self.labels else ""
             if not label or best_prio >= 2.5 or not re.search(r"[A-Z]", label):
                 continue
+            own = re.fullmatch(r"([A-Z][A-Z ]*?)\s+([A-Z0-9]{1,6}(?:/[A-Z0-9]{1,6})+)", label)
+            if own and t in self.labels and self.labels[t].line is not None:
+                # the key's printed name carries its values: "FAN HI/LO"
+                best, best_prio = own.group(2).split("/"), 2.5
+                ev.values_at = self.labels[t].mentions[0] if self.labels[t].mentions else None
+                continue
             pattern = re.compile(
                 rf"\b{re.escape(label)}\s+([A-Z0-9]{{1,6}}(?:/[A-Z0-9]{{1,6}})+)\b"
             )
@@ -235,6 +248,10 @@ class Builder:
         run = find_number_run(self._own_span(text, tokens) if mention else text)
         if run:
             out.append((run, 2.2 if mention else 1.2))
+        if text.rstrip().endswith(":") and i + 1 < len(units) and not units[i + 1].cells:
+            after = bare_list(units[i + 1].text)  # "Printed round the knob:" then the marks
+            if after and len(units[i + 1].text) <= 120:
+                out.append((after, 2.6))
         if text.rstrip().endswith((":", "order")) or text == unit.heading:
             bullets = _bullet_items(units, i)
             if bullets:
@@ -332,6 +349,9 @@ class Builder:
     def add_discrete(self, name: str, values: list[str], label: str, ev: Evidence | None) -> str:
         name = self.unique(name, self.variables)
         values = _dedupe([_value_text(v) for v in values if _value_text(v)])
+        own = re.fullmatch(r"(.*?)\s+([A-Z0-9]{1,6}(?:/[A-Z0-9]{1,6})+)", label)
+        if own and [p.lower() for p in own.group(2).split("/")] == values:
+            label = own.group(1)  # the display names the setting, not the printed choices
         spec: dict[str, Any] = {"type": "discrete", "values": values, "label": label}
         if ev is not None and ev.initial in values:
             spec["initial"] = ev.initial

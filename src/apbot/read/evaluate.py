@@ -78,7 +78,7 @@ def value_set(model: ApplianceModel, name: str) -> set[str]:
         if isinstance(var, TimeVariable):
             out.add(f"t{parse_hms(str(value))}")
         elif isinstance(var, DiscreteVariable):
-            text = normalise_text(str(value))
+            text = _spelled(normalise_text(str(value)))
             number = re.fullmatch(r"(\d+(?:\.\d+)?)\s*[a-z%°]*", text)
             out.add(f"{float(number.group(1)):g}" if number else text)
         else:
@@ -303,6 +303,14 @@ def translate_goal(
     return out
 
 
+SHORT_WORDS = {"hi": "high", "lo": "low", "med": "medium", "mid": "medium", "std": "standard"}
+
+
+def _spelled(text: str) -> str:
+    """A value with the panel abbreviations every manual uses spelt out ("HI" is "high")."""
+    return " ".join(SHORT_WORDS.get(w, w) for w in text.split())
+
+
 def _abbreviates(short: str, long: str) -> bool:
     """Whether ``short`` writes ``long`` with shortened words ("conv bake", "convection bake")."""
     sw, lw = normalise_text(short).split(), normalise_text(long).split()
@@ -318,7 +326,7 @@ def value_set_of(spec: Any, value: Any) -> set[str]:
     if isinstance(spec, TimeVariable):
         return {f"t{parse_hms(str(value))}"}
     if isinstance(spec, DiscreteVariable):
-        text = normalise_text(str(value))
+        text = _spelled(normalise_text(str(value)))
         number = re.fullmatch(r"(\d+(?:\.\d+)?)\s*[a-z%°]*", text)
         return {f"{float(number.group(1)):g}" if number else text}
     factor = TIME_UNITS.get(getattr(spec, "unit", "") or "")

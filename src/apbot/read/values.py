@@ -228,6 +228,21 @@ def find_list(text: str) -> tuple[list[str], str] | None:
     return None
 
 
+def bare_list(text: str) -> list[str] | None:
+    """A line that is nothing but a list ("OFF · 1 · 2 · 3 · CONT", "WARM   BAKE   TOAST"), as
+    printed round a knob or under a key after a sentence ending in a colon."""
+    items = [
+        _clean_item(p)
+        for p in re.split(r"\s*[·•|,]\s*|\s*/\s*|\s{2,}|\s+or\s+|\s*[→>]\s*", text.strip())
+    ]
+    items = [i for i in items if i]
+    if len(items) < 3 or len(items) > 16:
+        return None
+    if all(len(i) <= 20 and len(i.split()) <= 3 and not i.endswith(":") for i in items):
+        return _dedupe(items)
+    return None
+
+
 def anchored_lists(text: str, word: str) -> list[list[str]]:
     """Lists tied to a setting's word: "loaf weight (500 / 750 / 1000)", "a light, medium or
     dark crust"."""
