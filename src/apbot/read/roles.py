@@ -438,6 +438,18 @@ def assign(b: Builder) -> None:
         eff = {**{a: "next" for a in cw}, **{a: "prev" for a in ccw}}
         b.feature(f"select_{var}", [{"actions": cw + ccw, "variable": var, "effect": eff}])
         _dial_ends(b, token, var)
+        values = b.variables[var].get("values") or []
+        if (
+            values
+            and values[0] == "off"
+            and "power" not in b.variables
+            and not any(g["name"] == "power off" for g in b.guards)
+        ):  # a knob whose first position is OFF is the on/off switch: off, nothing else works
+            b.guards.append(
+                {"name": "power off", "when": {var: "off"}, "only": cw + ccw, "display": "",
+                 "hide": True}
+            )  # fmt: skip
+            b.note("guards.power off", f"the {lab} knob at OFF switches the appliance off")
         for k in [k for k in silent if k.token == token]:
             b.feature(
                 f"{k.token}_press",
