@@ -24,6 +24,8 @@ from apbot.read.values import (
     Range,
     anchored_lists,
     bare_list,
+    caps_run,
+    quantity_run,
     find_initial,
     find_list,
     find_number_run,
@@ -33,7 +35,8 @@ from apbot.read.values import (
 )
 
 LAMP_LIST_RE = re.compile(
-    r"^\W*(?:the\s+)?(?:\w+\s+){0,2}(?:lamps?|indicators?|symbols?|icons?|LEDs?|lights)\b[^:]{0,40}:",
+    r"^\W*(?:the\s+)?(?:\w+\s+){0,2}(?:lamps?|indicators?|symbols?|icons?|LEDs?|lights)\b"
+    r"(?:\s*\([^)]*\))?\s*:",
     re.IGNORECASE,
 )
 UP_WORDS = {"up", "plus", "more", "increase", "inc", "higher", "add"}
@@ -245,6 +248,16 @@ class Builder:
         found = find_list(text)
         if found:
             out.append((found[0], 3.0 if found[1] == "arrows" else 2.0 if mention else 1.0))
+        else:
+            own = {self.labels[t].text.upper() for t in tokens if t in self.labels}
+            keys = {lab.text.upper() for lab in self.labels.values() if lab.text}
+            span = self._own_span(text, tokens) if mention else text
+            run = caps_run(span, own | keys)
+            if run and (mention or len(run) >= 4):
+                out.append((run, 1.9 if mention else 1.6))
+            amounts = quantity_run(span) if mention else None
+            if amounts:
+                out.append((amounts, 1.9))
         run = find_number_run(self._own_span(text, tokens) if mention else text)
         if run:
             out.append((run, 2.2 if mention else 1.2))

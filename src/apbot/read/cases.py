@@ -319,8 +319,8 @@ def _defaults(
 
 
 RESET_RE = re.compile(
-    r"\b(?:programmes?|programs?|menus?|modes?|presets?|functions?|cycles?|courses?)\b[^.]*"
-    r"\b(?:defaults?|standard values|reset|go(?:es)? back|return|wipes?|clear|lost|forget)"
+    r"\b(?:programmes?|programs?|menus?|modes?|presets?|functions?|cycles?|courses?|selector)\b"
+    r"[^.]*\b(?:defaults?|standard values|reset|go(?:es)? back|return|wipes?|clear|lost|forget)"
     r"|\b(?:defaults?|reset|go(?:es)? back|return|wipes?|clear|lost)\b[^.]*"
     r"\b(?:programmes?|programs?|menus?|modes?|presets?|functions?|cycles?|courses?)\b",
     re.IGNORECASE,
