@@ -25,12 +25,12 @@ from apbot.read.values import (
     anchored_lists,
     bare_list,
     caps_run,
-    quantity_run,
     find_initial,
     find_list,
     find_number_run,
     find_ranges,
     find_step,
+    quantity_run,
     seconds,
 )
 
