@@ -269,7 +269,10 @@ class Builder:
             bullets = _bullet_items(units, i)
             if bullets:
                 out.append((bullets, 1.5))
-            column = _next_table_column(units, i) or _quantity_column(units, i)
+            index = self._own_column(i, tokens)
+            column = _next_table_column(units, i, index) or (
+                [] if index else _quantity_column(units, i)
+            )
             if column:
                 # a heading that only shares a word with the key ("Recipe: basic white loaf"
                 # for LOAF) introduces a table about something else unless its header says so
@@ -299,6 +302,23 @@ class Builder:
             if k > start:
                 end = min(end, k)
         return text[start:end]
+
+    def _own_column(self, i: int, tokens: list[str]) -> int:
+        """Which column of the table after unit ``i`` is the key's: one headed by the key's
+        printed name when the header is a row of key names ("| TEMP. | SPIN | SOIL |"), else
+        the first."""
+        units = self.manual.units
+        k = i + 1
+        if k >= len(units) or not units[k].cells or units[k].header:
+            return 0
+        header = [c.strip(" *.").upper() for c in units[k].cells]
+        keys = {lab.text.strip(" .").upper() for lab in self.labels.values() if lab.text}
+        own = {self.labels[t].text.strip(" .").upper() for t in tokens if t in self.labels}
+        if len(header) >= 2 and sum(h in keys for h in header) >= 2:
+            for index, cell in enumerate(header):
+                if cell in own:
+                    return index
+        return 0
 
     def _header_names(self, i: int, tokens: list[str]) -> bool:
         """Whether the header of the table after unit ``i`` names the key's word."""
@@ -581,15 +601,19 @@ def _fits(unit: str, tokens: list[str]) -> bool:
     return True
 
 
-def _next_table_column(units: list[Unit], i: int) -> list[str]:
-    """The first cells of the table that starts right after unit ``i`` (header skipped)."""
+def _next_table_column(units: list[Unit], i: int, column: int = 0) -> list[str]:
+    """The cells of one column (the first by default) of the table that starts right after
+    unit ``i`` (header skipped)."""
     k = i + 1
     if k < len(units) and units[k].cells and not units[k].header:
         k += 1  # the header row
     items: list[str] = []
     numbers = 0
     while k < len(units) and units[k].cells and units[k].header:
-        cell = re.sub(r"^\s*\d{1,2}[.)]?\s+(?=\D)", "", units[k].cells[0]).strip(" *")
+        if column >= len(units[k].cells):
+            k += 1
+            continue
+        cell = re.sub(r"^\s*\d{1,2}[.)]?\s+(?=\D)", "", units[k].cells[column]).strip(" *")
         if find_ranges(cell) or not re.search(r"[A-Za-z]", cell):
             numbers += 1
         if cell and len(cell) <= 24 and cell not in items:

@@ -76,9 +76,12 @@ def apply_cases(b: Builder) -> None:
     fixed = {v for g in b.guards for v in g["when"]}  # power, lock, running: never per programme
     parents: set[str] = set()
     children: set[str] = set()
+    keys = {lab.text.strip(" .").upper() for lab in b.labels.values() if lab.text}
     for header, rows in _tables(b.manual.units):
         if len(rows) < 2:
             continue
+        if sum(h.strip(" *.").upper() in keys for h in header) >= 2:
+            continue  # a column per key ("| TEMP. | SPIN | SOIL |"): each lists its own values
         parent, best = None, (1, False)
         for name, spec in b.variables.items():
             if spec.get("type") != "discrete" or spec.get("depends_on") or len(spec["values"]) < 3:

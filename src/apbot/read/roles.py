@@ -227,6 +227,7 @@ def assign(b: Builder) -> None:
             _pad_group(b, group, label, first_mention)
             keys = [k for k in keys if k not in group]
     evidence = {k.name: b.evidence(list(k.controls)) for k in keys}
+    options = _option_keys(b, keys)
     shared_pair = pairs.get("")
     generic_dials = [
         t for t in dials if t.split("_")[0] in GENERIC_DIALS and not _dial_values(b, t)
@@ -237,9 +238,12 @@ def assign(b: Builder) -> None:
         ev = evidence[key.name]
         name = _var_name(b, key)
         lab = label(key.controls[0])
-        own_toggle = ev.toggle_at is not None and any(
-            ev.toggle_at in b.labels[c].mentions for c in key.controls if c in b.labels
-        )
+        own_toggle = (
+            ev.toggle_at is not None
+            and any(ev.toggle_at in b.labels[c].mentions for c in key.controls if c in b.labels)
+        ) or (key.token in options and not ev.values)
+        if key.token in options and ev.toggle_at is None:
+            ev.toggle_at = options[key.token]
         if own_toggle and not set(words(name)) & NUMERIC_WORDS:
             var = b.add_toggle(name, lab, ev.toggle_at)  # "press KEEP WARM to switch it on or off"
             b.feature(var, [{"actions": [key.name], "variable": var, "effect": "toggle"}])
@@ -676,6 +680,35 @@ def _dial_ends(b: Builder, token: str, var: str) -> None:
             b.variables[var]["wrap"] = False
             b.note(f"variables.{var}.wrap", "the knob stops at its ends", i)
             return
+
+
+OPTIONS_RE = re.compile(
+    r"\boptions?\b[^.]*\b(?:(?:turned|switched|set) on and off|on or off|on and off|toggle)",
+    re.IGNORECASE,
+)
+
+
+def _option_keys(b: Builder, keys: list[ActionInfo]) -> dict[str, int]:
+    """Keys of an options section ("Options are turned on and off by touching their pad"):
+    those named in it, up to a heading that names no key."""
+    units = b.manual.units
+    labels = {k.token: b.labels[k.controls[0]].text for k in keys if k.controls[0] in b.labels}
+    found: dict[str, int] = {}
+    for o, unit in enumerate(units):
+        if not OPTIONS_RE.search(unit.text):
+            continue
+        for j in range(o, min(o + 40, len(units))):
+            text = units[j].text
+            if (
+                j > o
+                and text == units[j].heading
+                and not any(lab and lab.upper() in text.upper() for lab in labels.values())
+            ):
+                break
+            for token, lab in labels.items():
+                if lab and re.search(rf"(?<![A-Za-z0-9]){re.escape(lab)}(?![A-Za-z0-9])", text):
+                    found.setdefault(token, o)
+    return found
 
 
 def _mentions(b: Builder, token: str) -> list[int]:
