@@ -106,7 +106,7 @@ def _main_variable(b: Builder) -> str | None:
     names = [n for n in b.variables if n not in fixed and not b.variables[n].get("depends_on")]
     for name in names:
         spec = b.variables[name]
-        if spec.get("type") == "discrete" and set(name.split("_")) & CHOICE_WORDS:
+        if spec.get("type") in ("discrete", "numeric") and set(name.split("_")) & CHOICE_WORDS:
             return name
     return None  # an amount on an idle screen is too often wrong to predict (tried: worse)
 

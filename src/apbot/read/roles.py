@@ -247,7 +247,12 @@ def assign(b: Builder) -> None:
         if own_toggle and not set(words(name)) & NUMERIC_WORDS:
             var = b.add_toggle(name, lab, ev.toggle_at)  # "press KEEP WARM to switch it on or off"
             b.feature(var, [{"actions": [key.name], "variable": var, "effect": "toggle"}])
-        elif ev.values and len(ev.values) >= 2 and set(ev.values) != {"on", "off"}:
+        elif (
+            ev.values
+            and len(ev.values) >= 2
+            and set(ev.values) != {"on", "off"}
+            and not _numbered(b, key, ev)
+        ):
             if _numeric_list(ev.values):
                 ev2 = _list_evidence(ev)
                 var = b.add_number(name, lab, ev2, cyclic=True)
@@ -709,6 +714,19 @@ def _option_keys(b: Builder, keys: list[ActionInfo]) -> dict[str, int]:
                 if lab and re.search(rf"(?<![A-Za-z0-9]){re.escape(lab)}(?![A-Za-z0-9])", text):
                     found.setdefault(token, o)
     return found
+
+
+def _numbered(b: Builder, key: ActionInfo, ev: Evidence) -> bool:
+    """A key whose own sentence gives a bare number range ("Next menu number (1–15)") sets a
+    number, whatever names a table elsewhere gives the numbers."""
+    own = set(_mentions(b, key.controls[0]))
+    return (
+        bool(ev.ranges)
+        and ev.range_at in own
+        and ev.values_at not in own
+        and not ev.ranges[0].unit
+        and ev.ranges[0].high - ev.ranges[0].low >= 2
+    )
 
 
 def _mentions(b: Builder, token: str) -> list[int]:
