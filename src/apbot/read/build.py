@@ -535,25 +535,41 @@ class Builder:
         return name
 
     def _range_anywhere(self, name: str, label: str) -> tuple[Range, int] | None:
-        """A range in a sentence or table row naming the setting anywhere (a specifications
-        table: "| Set temperature range | 40–100 °C |"), its unit fitting the setting; advice
-        ("suggested", "recommended") is not a limit. The widest such range."""
+        """The first range in a sentence or table row naming the setting anywhere (a
+        specifications table: "| Set temperature range | 40–100 °C |", a programme table's
+        time column), its unit fitting the setting; advice ("suggested") is not a limit."""
         ws = {w for w in words(name.replace("_", " ")) + words(label) if len(w) >= 4}
         if not ws or not _unit_from_words(name):
             return None
-        best: tuple[Range, int] | None = None
+        advice = {"suggested", "recommended", "typical", "advised", "usual", "ideal"}
+        limits = re.compile(r"\brange\b|\badjustable\b|\bcan be set\b|\bsettable\b|\bbetween\b")
+        best: tuple[int, Range, int] | None = None
+
+        def consider(score: int, text: str, i: int) -> None:
+            nonlocal best
+            for r in find_ranges(text):
+                if r.unit and _fits(r.unit, [name]) and r.high > r.low:
+                    if best is None or score > best[0]:
+                        best = (score, r, i)
+                    return
+
         for i, unit in enumerate(self.manual.units):
             uw = words(unit.text)
-            if not any(u[:5] == w[:5] for u in uw for w in ws):
+            if unit.cells and unit.header and len(unit.header) == len(unit.cells):
+                # a table row: the setting is named by the column's header
+                for head, cell in zip(unit.header, unit.cells, strict=True):
+                    hw = words(head)
+                    if set(hw) & advice or not any(h[:5] == w[:5] for h in hw for w in ws):
+                        continue
+                    consider(1 + 2 * bool(limits.search(head)), cell, i)
+                first = words(unit.cells[0])
+                if any(u[:5] == w[:5] for u in first for w in ws) and not set(first) & advice:
+                    consider(1 + 2 * bool(limits.search(unit.cells[0])), unit.text, i)
                 continue
-            if set(uw) & {"suggested", "recommended", "typical", "advised", "usual", "ideal"}:
+            if not any(u[:5] == w[:5] for u in uw for w in ws) or set(uw) & advice:
                 continue
-            for r in find_ranges(unit.text):
-                if not r.unit or not _fits(r.unit, [name]) or r.high <= r.low:
-                    continue
-                if best is None or r.high - r.low > best[0].high - best[0].low:
-                    best = (r, i)
-        return best
+            consider(2 * bool(limits.search(unit.text)), unit.text, i)
+        return (best[1], best[2]) if best else None
 
     # --- the whole model --------------------------------------------------------------------
 

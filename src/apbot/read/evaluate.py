@@ -299,6 +299,9 @@ def translate_goal(
         else:
             if isinstance(spec, DiscreteVariable):  # "conv bake" for "convection bake"
                 chosen = next((c for c in candidates if _abbreviates(str(c), str(value))), chosen)
+            factor = TIME_UNITS.get(getattr(read.variables[target], "unit", "") or "")
+            if factor and isinstance(spec, TimeVariable):  # 20 min on a belief counting hours
+                chosen = round(parse_hms(str(value)) / factor, 4)
         out[target] = chosen
     return out
 

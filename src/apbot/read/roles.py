@@ -269,7 +269,9 @@ def assign(b: Builder) -> None:
         elif ev.ranges or (ev.step and ev.toggle_at is None):
             entry_keys.append(key)
         elif (
-            set(words(key.token)) & TIME_WORDS and ev.toggle_at is None and (shared_pair or digits)
+            set(words(key.token)) & TIME_WORDS
+            and ev.toggle_at is None
+            and (shared_pair or digits or generic_dials)
         ):
             entry_keys.append(key)  # a clock or timer key: a time entered after it
         elif (ev.values and set(ev.values) == {"on", "off"}) or (
