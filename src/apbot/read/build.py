@@ -488,6 +488,8 @@ class Builder:
                 )
             else:
                 st = _guess_step(r.high - r.low, unit) * factor
+                if as_time and st < 60 and lo % 60 == 0 and hi % 60 == 0 and hi - lo >= 600:
+                    st = 60.0  # a clock-written range ("0:20 – 1:30") steps in minutes
                 self.note(f"{subject}.step", f"step {st / factor:g} {unit} (the manual gives none)")
             if as_time:
                 st = max(1.0, float(round(st)))
