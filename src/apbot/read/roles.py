@@ -669,7 +669,8 @@ ENDLESS_RE = re.compile(
     re.IGNORECASE,
 )
 STOPS_RE = re.compile(
-    r"\bstops? at (?:each|either|both|the) ends?\b|\bend stops?\b|\bwill not turn (?:past|beyond)"
+    r"\bstops? at (?:each|either|both|the) ends?\b|\bstops? at \S+ and (?:at )?\S+"
+    r"|\bend stops?\b|\bwill not turn (?:past|beyond)"
     r"|\bcannot be turned (?:past|beyond)",
     re.IGNORECASE,
 )
@@ -677,8 +678,11 @@ STOPS_RE = re.compile(
 
 def _dial_ends(b: Builder, token: str, var: str) -> None:
     """A knob the manual says stops at its ends clamps; one with no end stop goes round."""
-    for i in b.context([token]):
-        text = b.manual.units[i].text
+    units = b.manual.units
+    noun = re.compile(rf"\b{re.escape(token.replace('_', ' '))}\b", re.IGNORECASE)
+    near = b.context([token]) + [i for i, u in enumerate(units) if noun.search(u.text)]
+    for i in dict.fromkeys(near):
+        text = units[i].text
         if ENDLESS_RE.search(text):
             b.variables[var]["wrap"] = True
             b.note(f"variables.{var}.wrap", "the knob has no end stop", i)
