@@ -110,7 +110,10 @@ def test_keys_of_an_options_section_are_toggles():
 
 
 def test_names_in_capitals_and_amounts_in_a_keys_own_sentence():
-    text = "COLOUR – crust colour, LIGHT, MEDIUM or DARK.\n\nSIZE – loaf size, 750 g, 1000 g or 1250 g."
+    text = (
+        "COLOUR – crust colour, LIGHT, MEDIUM or DARK.\n\n"
+        "SIZE – loaf size, 750 g, 1000 g or 1250 g."
+    )
     model = _read(text, ["press_colour", "press_size"])
     assert model.variables["colour"].values == ["light", "medium", "dark"]
     assert model.variables["size"].ranges == [(750, 1250, 250)]

@@ -211,10 +211,10 @@ class Builder:
             label = self.labels[t].text if t in self.labels else ""
             if not label or best_prio >= 2.5 or not re.search(r"[A-Z]", label):
                 continue
-            own = re.fullmatch(r"([A-Z][A-Z ]*?)\s+([A-Z0-9]{1,6}(?:/[A-Z0-9]{1,6})+)", label)
-            if own and t in self.labels and self.labels[t].line is not None:
+            printed = re.fullmatch(r"([A-Z][A-Z ]*?)\s+([A-Z0-9]{1,6}(?:/[A-Z0-9]{1,6})+)", label)
+            if printed and t in self.labels and self.labels[t].line is not None:
                 # the key's printed name carries its values: "FAN HI/LO"
-                best, best_prio = own.group(2).split("/"), 2.5
+                best, best_prio = printed.group(2).split("/"), 2.5
                 ev.values_at = self.labels[t].mentions[0] if self.labels[t].mentions else None
                 continue
             pattern = re.compile(
