@@ -171,8 +171,12 @@ class Builder:
             for items, prio in self._lists(i, i in mentions, tokens):
                 if sum(v.lower() in others for v in items) >= 2:
                     continue  # a list of other keys, not of values
-                if LAMP_LIST_RE.match(text):
+                lamps = LAMP_LIST_RE.match(text)
+                if lamps and not set(words(lamps.group(0))) & {
+                    w for t in tokens for w in words(t.replace("_", " "))
+                }:
                     continue  # "Lamps (top row): FAN HI, FAN LO, 2H…": what lights, not values
+                    # ("Mode lamps: NORMAL CONT. …" are the mode key's values)
                 if _numeric_items(items) and len(items) < 3:
                     continue
                 if prio > best_prio:
@@ -200,6 +204,20 @@ class Builder:
                 init = find_initial(text)
                 if init:
                     ev.initial, ev.initial_at = init, i
+        own_words = {w for t in tokens for w in words(t.replace("_", " ")) if len(w) >= 3}
+        if best_prio < 2.0 and own_words:  # "Mode lamps (left to right): NORMAL CONT. FAN"
+            for i, unit in enumerate(units):
+                lamps = LAMP_LIST_RE.match(unit.text)
+                if lamps and set(words(lamps.group(0))) & own_words:
+                    rest = unit.text[lamps.end() :]
+                    for after in units[i + 1 : i + 8]:  # "CONT." ended a "sentence" mid-line
+                        if after.line != unit.line:
+                            break
+                        rest += "   " + after.text
+                    found = bare_list(rest)
+                    if found:
+                        best, best_prio, ev.values_at = found, 2.0, i
+                        break
         if best_prio < 1.8:  # lists tied to the setting's own word anywhere in the manual
             for t in tokens:
                 for w in [x for x in words(t.replace("_", " ")) if len(x) >= 4][:1]:
@@ -266,7 +284,7 @@ class Builder:
             if after and len(units[i + 1].text) <= 120:
                 out.append((after, 2.6))
         if text.rstrip().endswith((":", "order")) or text == unit.heading:
-            bullets = _bullet_items(units, i)
+            bullets = _bullet_items(units, i, lead=2 if text == unit.heading else 0)
             if bullets:
                 out.append((bullets, 1.5))
             index = self._own_column(i, tokens)
@@ -679,11 +697,23 @@ def _quantity_column(units: list[Unit], i: int) -> list[str]:
     return []
 
 
-def _bullet_items(units: list[Unit], i: int) -> list[str]:
+def _bullet_items(units: list[Unit], i: int, lead: int = 0) -> list[str]:
+    """The terms of the bullets after unit ``i`` ("- AUTO — dries until…"); a bullet may run
+    to more sentences, and ``lead`` sentences may stand between ``i`` and the first bullet."""
     items: list[str] = []
-    for u in units[i + 1 : i + 12]:
+    k = i + 1
+    while lead and k < len(units) and not units[k].bullet and k <= i + lead:
+        k += 1
+    gap = 0
+    while k < len(units) and len(items) < 16:
+        u = units[k]
+        k += 1
         if not u.bullet:
-            break
+            if not items or u.heading != units[i].heading or gap >= 3 or u.cells:
+                break
+            gap += 1  # another sentence of the same bullet
+            continue
+        gap = 0
         m = re.match(r"^([A-Z0-9][A-Za-z0-9 +/&'-]{0,22}?)\s*(?::|—|–|-|=)\s", u.text)
         if not m:
             break

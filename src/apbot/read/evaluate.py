@@ -316,7 +316,8 @@ def _spelled(text: str) -> str:
 
 def _abbreviates(short: str, long: str) -> bool:
     """Whether ``short`` writes ``long`` with shortened words ("conv bake", "convection bake")."""
-    sw, lw = normalise_text(short).split(), normalise_text(long).split()
+    sw = re.findall(r"[a-z0-9]+", normalise_text(short))
+    lw = re.findall(r"[a-z0-9]+", normalise_text(long))
     return (
         len(sw) == len(lw)
         and sw != lw
