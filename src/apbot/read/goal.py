@@ -54,6 +54,7 @@ from apbot.read.goal_view import (
     own_stems,
     parse_quantity,
     quantity_dimensions,
+    unit_text,
 )
 from apbot.read.goal_vocab import (
     HIGHEST,
@@ -492,10 +493,11 @@ def _fit(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
         value = format_hms(seconds)
         return value if value in domain else None
     if isinstance(var, NumericVariable):
-        number = _number_for(info, var.unit, mention)
+        unit = unit_text(var)
+        number = _number_for(info, unit, mention)
         if number is None:
             return _percent_of_level(info, mention, domain)
-        fahrenheit_dial = var.unit.casefold() in ("°f", "f")
+        fahrenheit_dial = unit.casefold() in ("°f", "f")
         converted = (mention.kind == "fahrenheit" and not fahrenheit_dial) or (
             fahrenheit_dial and mention.unit in ("°c", "c", "celsius")
         )

@@ -37,6 +37,7 @@ from apbot.read.goal_view import (
     own_concepts,
     own_stems,
     step_effects,
+    unit_text,
 )
 from apbot.read.goal_vocab import (
     NEGATIONS,
@@ -62,9 +63,16 @@ def switches(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
             if text.stems[k] == stem("unlock") and stem("lock") in own:
                 key = concept("lock")  # "unlock the keys": the lock, off
             weight = info.vocab.get(key, 0.0)
+            if weight <= 0 and _abbreviated(text.stems[k], own):
+                key, weight = text.stems[k], 1.0  # "tablets" for a TABS key
             if weight <= 0 or generic(key):
                 continue
-            if text.stems[k] in own or key in own_concepts(info) or key == concept("lock"):
+            if (
+                text.stems[k] in own
+                or key in own_concepts(info)
+                or key == concept("lock")
+                or _abbreviated(text.stems[k], own)
+            ):
                 weight = 1.0
                 # "Warm the water" is not KEEP WARM; "UV light" is not the night light
                 doubtful = len(own) > 1 and (k in verbs or (k - 1) in claimed)
@@ -83,6 +91,14 @@ def switches(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
         assert info.on is not None and info.off is not None
         goal[name] = info.on if positive else info.off
         claimed.add(k)
+
+
+def _abbreviated(word: str, own: set[str]) -> bool:
+    """The switch's one-word name is a short form of the word ("TABS" for tablets)."""
+    return len(own) == 1 and any(
+        len(short) >= 3 and word.startswith(short) and len(word) <= len(short) + 4
+        for short in own
+    )
 
 
 def _kept(text: Text, k: int, own: set[str]) -> bool:
@@ -157,7 +173,7 @@ def boil(view: Model, text: Text, goal: Goal) -> None:
     for info in view.infos.values():
         if info.name in goal or not isinstance(info.var, NumericVariable):
             continue
-        if info.dimension == "temperature" and info.var.unit.casefold() in ("°c", "c"):
+        if info.dimension == "temperature" and unit_text(info.var).casefold() in ("°c", "c"):
             values = domain_values(view, info, goal)
             if 100 in values and max(values) == 100:
                 goal[info.name] = 100

@@ -9,6 +9,7 @@ from apbot.read.goal_view import VarInfo
 from apbot.read.goal_vocab import (
     NEGATIONS,
     concept,
+    split_camel,
     stem,
 )
 from apbot.read.numbers import Token, tokenize
@@ -27,7 +28,7 @@ class Text:
 
     @classmethod
     def of(cls, text: str) -> Text:
-        tokens = tokenize(text)
+        tokens = tokenize(split_camel(text))
         return cls(tokens, [stem(t.text) for t in tokens], [concept(t.text) for t in tokens])
 
     def word(self, k: int) -> str:
@@ -167,6 +168,17 @@ STRONG_VERBS = frozenset(
         "microwave",
         "grill",
         "knead",
+        "blend",
+        "crush",
+        "whip",
+        "chop",
+        "grind",
+        "puree",
+        "pulse",
+        "clean",
+        "sterilise",
+        "sterilize",
+        "dehumidify",
     )
 )
 

@@ -7,6 +7,7 @@ remembered, since an agent parses many sentences against one belief.
 
 from __future__ import annotations
 
+import unicodedata
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from functools import lru_cache
@@ -14,6 +15,7 @@ from typing import Any
 
 from apbot.model.domain import AnyVariable, all_values, build_domain
 from apbot.model.schema import (
+    AnywhereStep,
     ApplianceModel,
     DiscreteVariable,
     GoTo,
@@ -28,6 +30,7 @@ from apbot.read.goal_vocab import (
     STOP_WORDS,
     SYNONYMS,
     concept,
+    split_camel,
     stem,
 )
 from apbot.read.numbers import tokenize
@@ -41,7 +44,7 @@ _OFF_WORDS = ("off", "no", "disabled", "false")
 
 
 _OPERATION_NAMES = frozenset(
-    stem(w)
+    w
     for w in (
         "running",
         "run",
@@ -103,18 +106,23 @@ MAX_PHRASE_VALUES = 2_000
 
 
 def _words(text: str) -> list[str]:
-    return [t.text for t in tokenize(text.replace("_", " ")) if t.text.isalpha()]
+    return [t.text for t in tokenize(split_camel(text.replace("_", " "))) if t.text.isalpha()]
 
 
 def _phrase_words(text: str) -> list[str]:
     """Words and numbers of a value's name ("quick 20", "eco 40-60", "A-6")."""
-    return [t.text for t in tokenize(text.replace("_", " ")) if t.text.replace(".", "").isalnum()]
+    words = tokenize(split_camel(text.replace("_", " ")))
+    return [t.text for t in words if t.text.replace(".", "").isalnum()]
 
 
-def _steps_of(model: ApplianceModel) -> Iterable[tuple[str, int, Step]]:
+def _steps_of(model: ApplianceModel) -> Iterable[tuple[str, int, Step | AnywhereStep]]:
+    """Every step of every feature, and the keys that act from anywhere (START, CANCEL) as
+    one-step procedures of their own."""
     for feature, steps in model.features.items():
         for index, step in enumerate(steps):
             yield feature, index, step
+    for index, anywhere in enumerate(model.anywhere):
+        yield f"anywhere_{index}", 0, anywhere
 
 
 def _control_labels(model: ApplianceModel, actions: Iterable[str]) -> list[str]:
@@ -131,7 +139,7 @@ def _control_labels(model: ApplianceModel, actions: Iterable[str]) -> list[str]:
     return labels
 
 
-def step_effects(step: Step) -> list[tuple[str, Any]]:
+def step_effects(step: Step | AnywhereStep) -> list[tuple[str, Any]]:
     """(action, effect) pairs of a step."""
     if isinstance(step.effect, dict):
         return list(step.effect.items())
@@ -172,7 +180,8 @@ def build(model: ApplianceModel) -> Model:
                 if "{" not in text and str(value).casefold() not in _OFF_WORDS:
                     _add_vocab(info, text, 0.7)
         if isinstance(var, NumericVariable):
-            info.dimension = (unit_of(var.unit) or (None, 0))[0] if var.unit else None
+            unit = unit_text(var)
+            info.dimension = (unit_of(unit) or (None, 0))[0] if unit else None
         if isinstance(var, DiscreteVariable):
             switch = _is_on_off(info.values)
             if switch:
@@ -186,8 +195,9 @@ def build(model: ApplianceModel) -> Model:
     for feature, index, step in _steps_of(model):
         if step.variable and step.variable in infos:
             info = infos[step.variable]
-            _add_vocab(info, feature, 0.6)
-            steps = model.features[feature]
+            steps: list[Step] = model.features.get(feature, [])
+            if steps:  # not a key that acts from anywhere
+                _add_vocab(info, feature, 0.6)
             entry = [a for s in steps[:index] for a in s.actions]
             own = [
                 a
@@ -241,6 +251,11 @@ def build(model: ApplianceModel) -> Model:
     return Model(model, infos, phrases, start_values, frozenset(appliance))
 
 
+def unit_text(var: NumericVariable) -> str:
+    """The variable's unit in plain letters: a one-character "℃" is "°C" (NFKC)."""
+    return unicodedata.normalize("NFKC", var.unit).strip()
+
+
 def numeric_values(values: list[Any]) -> bool:
     numeric = [v for v in values if parse_quantity(str(v)) is not None]
     return len(numeric) >= max(1, len(values) - 2)
@@ -292,17 +307,23 @@ def _mark_power_and_running(model: ApplianceModel, infos: dict[str, VarInfo]) ->
                 found is not None
                 and isinstance(found.var, DiscreteVariable)
                 and found.role != "power"
-                and (stem(target or "") in _OPERATION_NAMES or found.role == "switch")
+                and (_operation(target or "") or found.role == "switch")
             ):
                 found.role = "running"
     for name, info in infos.items():
-        operation = stem(name) in _OPERATION_NAMES
+        operation = _operation(name)
         if (
             operation
             and info.role in ("switch", "setting")
             and isinstance(info.var, DiscreteVariable)
         ):
             info.role = "running"
+
+
+def _operation(name: str) -> bool:
+    """A variable named for an operation under way ("running", "heating", "brew_status"), not
+    a setting that shares a stem with one ("heat" is a level, "heating" is running)."""
+    return bool(set(name.casefold().split("_")) & _OPERATION_NAMES)
 
 
 def _start_values(
@@ -312,7 +333,9 @@ def _start_values(
     (a timer programme ends in "timer" rather than "cooking"), and in general (key None)."""
     found: dict[str | None, tuple[str, Any]] = {}
     running = [n for n, i in infos.items() if i.role == "running"]
-    for _feature, steps in model.features.items():
+    procedures: list[list[Step | AnywhereStep]] = [list(s) for s in model.features.values()]
+    procedures += [[anywhere] for anywhere in model.anywhere]
+    for steps in procedures:
         adjusted = [s.variable for s in steps if s.variable and s.variable not in running]
         for step in steps:
             for action, effect in step_effects(step):

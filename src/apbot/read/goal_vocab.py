@@ -22,6 +22,18 @@ _SPELLING = (
 )
 
 
+_CAMEL = re.compile(r"(?<=[a-z])(?=[A-Z][a-z])")
+
+
+def split_camel(text: str) -> str:
+    """ "ExtraDry" and "varioSpeed" are two words each: a brand's run-together option names.
+
+    >>> split_camel("varioSpeed with ExtraDry, not PIZZA or McVitie")
+    'vario Speed with Extra Dry, not PIZZA or Mc Vitie'
+    """
+    return _CAMEL.sub(" ", text)
+
+
 @lru_cache(maxsize=8192)
 def stem(word: str) -> str:
     """A crude stem so that "drying", "dried" and "dry", or "sterilising" and "sterilize",
