@@ -17,6 +17,7 @@ from apbot.model.schema import (
 )
 from apbot.read.goal_text import (
     CLAUSE_ENDS,
+    NUMBER_WORDS,
     FILLERS,
     STRONG_VERBS,
     VERB_FAMILIES,
@@ -195,7 +196,13 @@ def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = Fals
         if info.role == "power" and name not in goal and _says_power_on(view, text):
             goal[name] = info.on
     running = [n for n, i in view.infos.items() if i.role == "running"]
-    if not running or any(n in goal for n in running):
+    if not running:
+        # no running state of its own: the appliance works while it is on ("start cooling")
+        power = [n for n, i in view.infos.items() if i.role == "power" and n not in goal]
+        if power and _says_start(text, None, _named_starts(view, text), verbs=False):
+            goal[power[0]] = view.infos[power[0]].on
+        return
+    if any(n in goal for n in running):
         return
     family = next((VERB_FAMILIES[stem(n)] for n in running if stem(n) in VERB_FAMILIES), None)
     start = _says_start(text, family, _named_starts(view, text))
@@ -255,9 +262,34 @@ def _says_power_on(view: Model, text: Text) -> bool:
         m = j + 1
         while m < n and (concept(text.word(m)) in view.appliance_words or text.word(m) == "the"):
             m += 1
-        if m >= n or text.word(m) in CLAUSE_ENDS | {",", "and", "then"}:
-            return True  # "switch on, ...", "switch on the cooker and ..."
+        if m >= n or text.word(m) in CLAUSE_ENDS | {",", "and", "then"} | _AFTER_ON:
+            return True  # "switch on, ...", "switch on the cooker and ...", "switch on in fan"
+    for k, token in enumerate(text.tokens):  # "with the machine left on", "leave it on"
+        if token.text in ("leave", "left", "keep", "kept", "stay", "stays"):
+            j = k + 1
+            while j < n and (concept(text.word(j)) in view.appliance_words or text.word(j) == "the"):
+                j += 1
+            before = concept(text.word(k - 1)) in view.appliance_words
+            if text.word(j) == "on" and (j > k + 1 or before) and text.word(j + 1) in (
+                CLAUSE_ENDS | {",", "and", "then", ""}
+            ):
+                return True
     return False
+
+
+def _later(text: Text, k: int) -> bool:
+    """A start word followed in its clause by "in/after N ..." (a delayed start)."""
+    for j in range(k + 1, min(k + 6, len(text.tokens))):
+        word = text.word(j)
+        if word in CLAUSE_ENDS or word == ",":
+            return False
+        following = text.word(j + 1)
+        if word in ("in", "after") and (following[:1].isdigit() or following in NUMBER_WORDS):
+            return True
+    return False
+
+
+_AFTER_ON = frozenset({"in", "at", "to", "with", "for"})
 
 
 def _named_starts(view: Model, text: Text) -> set[int]:
@@ -275,9 +307,13 @@ def _named_starts(view: Model, text: Text) -> set[int]:
 
 
 def _says_start(
-    text: Text, family: frozenset[str] | None = None, named: set[int] | frozenset[int] = frozenset()
+    text: Text,
+    family: frozenset[str] | None = None,
+    named: set[int] | frozenset[int] = frozenset(),
+    verbs: bool = True,
 ) -> bool | None:
-    """True for "start it", False for "don't start", None when the instruction says neither."""
+    """True for "start it", False for "don't start", None when the instruction says neither.
+    ``verbs``: an instruction that opens with a doing verb ("Bake a cake") says start too."""
     joined = " " + " ".join(t.text for t in text.tokens) + " "
     negative = False
     positive = False
@@ -291,8 +327,12 @@ def _says_start(
             starts = True
         if word == "go" and text.word(k + 1) in ("ahead", ".", "!", ""):
             starts = True
+        if word == "run" and text.word(k + 1) == "it" and k in clause_starts(text):
+            starts = True  # "Run it in dry mode"
         if not starts:
             continue
+        if not verbs and _later(text, k):
+            continue  # "start by itself in six hours": a timer, not now
         before = []
         for d in range(1, 4):
             if text.word(k - d) in CLAUSE_ENDS:
@@ -317,6 +357,8 @@ def _says_start(
     for k, token in enumerate(text.tokens):
         if token.text == "now" and text.word(k - 1) != "from" and text.word(k + 1) != "on":
             return True
+    if not verbs:
+        return None
     for k in clause_starts(text, loose=True):
         k2 = k + 1 if text.word(k) in FILLERS else k
         if k2 >= len(text.stems):
