@@ -43,6 +43,7 @@ from apbot.read.goal_text import (
     phrase_here,
     verb_positions,
 )
+from apbot.read.goal_twins import place_twins
 from apbot.read.goal_view import (
     PARTIAL,
     Goal,
@@ -115,16 +116,19 @@ def parse_instruction(model: ApplianceModel, instruction: str) -> Goal:
     text = Text.of(str(instruction))
     goal: Goal = {}
     claimed: set[int] = set()
+    where: dict[str, int] = {}  # the token each setting was read from
     for match in _value_matches(view, text):
         if match.var in goal or any(k in claimed for k in range(match.start, match.end)):
             continue
         goal[match.var] = match.value
+        where[match.var] = match.start
         claimed.update(range(match.start, match.end))
     mentions = _distinct(find_mentions(text.tokens, skip=claimed))
-    counting = _assign_mentions(view, text, mentions, goal, claimed)
-    _superlatives(view, text, goal, claimed)
-    zero_settings(view, text, goal, claimed)
-    switches(view, text, goal, claimed)
+    counting = _assign_mentions(view, text, mentions, goal, claimed, where)
+    _superlatives(view, text, goal, claimed, where)
+    zero_settings(view, text, goal, claimed, where)
+    switches(view, text, goal, claimed, where)
+    place_twins(view, text, goal, where)
     entry_switches(view, goal)
     boil(view, text, goal)
     power_and_running(view, text, goal, counting)
@@ -350,7 +354,12 @@ def _distinct(mentions: list[Mention]) -> list[Mention]:
 
 
 def _assign_mentions(
-    view: Model, text: Text, mentions: list[Mention], goal: Goal, claimed: set[int]
+    view: Model,
+    text: Text,
+    mentions: list[Mention],
+    goal: Goal,
+    claimed: set[int],
+    where: dict[str, int],
 ) -> bool:
     """Give each quantity to the open setting it fits best. True when a delay was set relative
     to now ("ready in 15 hours", "3 hours from now"): a countdown that must be started."""
@@ -381,6 +390,7 @@ def _assign_mentions(
         if score <= 0 and mention.kind == "number" and not lone:
             continue
         goal[name] = value
+        where[name] = mention.start
         used.add(mi)
         claimed.update(range(mention.start, mention.end))
         if view.infos[name].timing == "delay" and _relative(text, mention):
@@ -675,7 +685,9 @@ def _unplaced(view: Model, text: Text, mention: Mention, goal: Goal) -> None:
     raise GoalParseError(text.span(mention.start, mention.end), reason)
 
 
-def _superlatives(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
+def _superlatives(
+    view: Model, text: Text, goal: Goal, claimed: set[int], where: dict[str, int]
+) -> None:
     """ "the lowest temperature", "full power", "a dark crust" on an ordered numeric setting."""
     for k, token in enumerate(text.tokens):
         word = token.text
@@ -713,6 +725,7 @@ def _superlatives(view: Model, text: Text, goal: Goal, claimed: set[int]) -> Non
             goal[name] = values[end]
         elif scale_index is not None:
             goal[name] = values[scale_index[0]]
+        where[name] = k
         claimed.add(k)
 
 

@@ -49,7 +49,9 @@ from apbot.read.goal_vocab import (
 from apbot.read.numbers import tokenize
 
 
-def switches(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
+def switches(
+    view: Model, text: Text, goal: Goal, claimed: set[int], where: dict[str, int] | None = None
+) -> None:
     """An on/off setting named in the instruction: on, unless its words are negated."""
     verbs = verb_positions(text)
     for name, info in view.infos.items():
@@ -91,6 +93,8 @@ def switches(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
         positive = not negative_around(text, k)
         assert info.on is not None and info.off is not None
         goal[name] = info.on if positive else info.off
+        if where is not None:
+            where[name] = k
         claimed.add(k)
 
 
@@ -129,7 +133,9 @@ def entry_switches(view: Model, goal: Goal) -> None:
                     goal[info.name] = info.on
 
 
-def zero_settings(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
+def zero_settings(
+    view: Model, text: Text, goal: Goal, claimed: set[int], where: dict[str, int] | None = None
+) -> None:
     """ "no delay", "no final spin", "skip the rinse": a numeric setting that can be 0 is 0."""
     for k, token in enumerate(text.tokens):
         if token.text not in NEGATIONS or token.text in ("off", "free", "stop", "cancel"):
@@ -153,6 +159,8 @@ def zero_settings(view: Model, text: Text, goal: Goal, claimed: set[int]) -> Non
                 zero = next((v for v in values if magnitude(v) == 0), None)
                 if zero is not None:
                     goal[homes[0].name] = zero
+                    if where is not None:
+                        where[homes[0].name] = j
                     claimed.add(j)
                 break
 
