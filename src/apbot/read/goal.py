@@ -96,10 +96,12 @@ class _Match:
     score: float
 
 
-def parse_instruction(model: ApplianceModel, instruction: str) -> Goal:
+def parse_instruction(model: ApplianceModel, instruction: str, manual: str = "") -> Goal:
     """The goal an instruction asks for, over ``model``'s variables, values canonical.
 
-    Raises :class:`GoalParseError` when the instruction asks for a value the model lacks.
+    ``manual``, when given, names the values the panel shows only as codes ("2" is the French
+    loaf; :mod:`apbot.read.goal_manual`). Raises :class:`GoalParseError` when the instruction
+    asks for a value the model lacks.
 
     >>> from apbot.examples import load_example
     >>> goal = parse_instruction(load_example("washing_machine"), "Wool at 30 degrees, no prewash")
@@ -112,7 +114,7 @@ def parse_instruction(model: ApplianceModel, instruction: str) -> Goal:
             f"the instruction has {len(str(instruction)):,} characters; at most "
             f"{MAX_INSTRUCTION:,} are read",
         )
-    view = model_view(model)
+    view = model_view(model, manual or "")
     text = Text.of(str(instruction))
     goal: Goal = {}
     claimed: set[int] = set()
@@ -123,6 +125,7 @@ def parse_instruction(model: ApplianceModel, instruction: str) -> Goal:
         goal[match.var] = match.value
         where[match.var] = match.start
         claimed.update(range(match.start, match.end))
+    _restated_codes(view, text, goal, claimed)
     mentions = _distinct(find_mentions(text.tokens, skip=claimed))
     counting = _assign_mentions(view, text, mentions, goal, claimed, where)
     _superlatives(view, text, goal, claimed, where)
@@ -337,6 +340,21 @@ _SYNONYM_STEMS: dict[str, frozenset[str]] = {
 }
 
 
+def _restated_codes(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
+    """ "yogurt (menu 12)": the number beside the setting's word restates the value already
+    read by name (its code); it is not another setting."""
+    for k, token in enumerate(text.tokens):
+        if k in claimed or not token.text.isdigit() or k == 0:
+            continue
+        key = text.concepts[k - 1]
+        for name, value in goal.items():
+            if view.infos[name].vocab.get(key, 0.0) < 0.8:
+                continue
+            code = _CODE.fullmatch(str(value)) or re.fullmatch(r"(\d+)", str(value))
+            if code is not None and int(code[1]) == int(token.text):
+                claimed.add(k)
+
+
 def _distinct(mentions: list[Mention]) -> list[Mention]:
     """Drop a quantity that repeats the one just before it ("at 9 pm (21:00)", "a day, 24 h")."""
     kept: list[Mention] = []
@@ -534,7 +552,11 @@ def _fit(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
             and abs(q[0] - (amount - 32) * 5 / 9) < 0.6
         ):
             return value
-    return _coded(domain, mention) or _show_quantity(info, mention)
+    return (
+        _coded(domain, mention)
+        or _show_quantity(info, mention)
+        or _named_quantity(view, info, mention, domain)
+    )
 
 
 _CODE = re.compile(r"[A-Za-z]{1,2}[- ]?(\d+)")
@@ -588,6 +610,16 @@ def _show_quantity(info: VarInfo, mention: Mention) -> Any:
         for m in find_mentions(tokenize(text)):
             same = m.kind == "quantity" and m.dimension == mention.dimension
             if same and abs(m.value - mention.value) < 1e-6:
+                return value
+    return None
+
+
+def _named_quantity(view: Model, info: VarInfo, mention: Mention, domain: list[Any]) -> Any:
+    """A coded value the manual gives as this quantity ("60 %" for knob mark 2)."""
+    for value, text in view.named_quantities.get(info.name, []):
+        for m in find_mentions(tokenize(text)):
+            same = m.dimension == mention.dimension and m.kind == mention.kind
+            if same and abs(m.value - mention.value) < 1e-6 and value in domain:
                 return value
     return None
 

@@ -157,6 +157,8 @@ def zero_settings(
             if len(homes) == 1:
                 values = domain_values(view, homes[0], goal)
                 zero = next((v for v in values if magnitude(v) == 0), None)
+                if zero is None and homes[0].timing in ("delay", "finish") and values:
+                    zero = min(values, key=lambda v: magnitude(v) or 0.0)  # the soonest end
                 if zero is not None:
                     goal[homes[0].name] = zero
                     if where is not None:

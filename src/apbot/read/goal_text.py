@@ -116,22 +116,25 @@ def phrase_here(text: Text, k: int, own: set[str]) -> bool:
     return any(text.stems[j] in own for j in (k - 1, k + 1) if 0 <= j < len(text.tokens))
 
 
+_LONG_REACH = frozenset({"without", "no"})
+
+
 def negative_around(text: Text, k: int) -> bool:
-    for d in range(1, 6):
+    for d in range(1, 8):
         word = text.word(k - d)
         if word in CLAUSE_ENDS or word == ",":
             break
-        if word in NEGATIONS and word not in ("free",):
-            return True
+        if word in NEGATIONS and word not in ("free",) and (d < 6 or word in _LONG_REACH):
+            return True  # "without the fruit-and-nut beep"
         if word in ("on", "with", "enable", "add"):
             break
     if text.word(k) in ("mute", "silence", "unlock"):
         return True
-    for d in range(1, 4):
+    for d in range(1, 5):
         word = text.word(k + d)
         if word in CLAUSE_ENDS or word == ",":
             break
-        if word in ("off", "disabled"):
+        if word in ("off", "disabled", "silenced", "muted"):
             return True
         if word == "on":
             return False

@@ -33,6 +33,7 @@ from apbot.read.goal_vocab import (
     split_camel,
     stem,
 )
+from apbot.read.goal_manual import coded_names
 from apbot.read.numbers import tokenize
 
 Goal = dict[str, Any]
@@ -93,6 +94,8 @@ class Model:
     phrases: list[tuple[str, Any, tuple[str, ...], float]]  # var, value, stems, weight
     start_values: dict[str | None, tuple[str, Any]]  # feature var (None: plain START) -> value
     appliance_words: frozenset[str]
+    named_quantities: dict[str, list[tuple[Any, str]]] = field(default_factory=dict)
+    # var -> (value, "60 %"): a coded value the manual gives as a quantity (knob mark 2: 60 %)
 
 
 @lru_cache(maxsize=65536)
@@ -165,8 +168,9 @@ def _is_on_off(values: list[Any]) -> tuple[str, str] | None:
     return str(on), str(off)
 
 
-def build(model: ApplianceModel) -> Model:
-    """Gather each variable's words and role from the model."""
+def build(model: ApplianceModel, manual: str = "") -> Model:
+    """Gather each variable's words and role from the model (and the names the manual gives
+    to coded values, when it is given)."""
     infos: dict[str, VarInfo] = {}
     for order, (name, var) in enumerate(model.variables.items()):
         info = VarInfo(name, var, order=order)
@@ -248,7 +252,15 @@ def build(model: ApplianceModel) -> Model:
             "everything",
         )
     }
-    return Model(model, infos, phrases, start_values, frozenset(appliance))
+    named: dict[str, list[tuple[Any, str]]] = {}
+    for var, value, name in coded_names(model, manual):
+        if parse_quantity(name) is not None:
+            named.setdefault(var, []).append((value, name))
+            continue
+        words = [w for w in _phrase_words(name) if w != "and"]
+        if words and not all(w in STOP_WORDS for w in words):
+            phrases.append((var, value, tuple(stem(w) for w in words), 0.95))
+    return Model(model, infos, phrases, start_values, frozenset(appliance), named)
 
 
 def unit_text(var: NumericVariable) -> str:
@@ -431,18 +443,19 @@ def _phrases(
     return phrases
 
 
-_VIEWS: dict[int, tuple[ApplianceModel, Model]] = {}
+_VIEWS: dict[tuple[int, int], tuple[ApplianceModel, str, Model]] = {}
 
 
-def model_view(model: ApplianceModel) -> Model:
+def model_view(model: ApplianceModel, manual: str = "") -> Model:
     """:func:`build`, remembered for the last few models (an agent parses many sentences)."""
-    hit = _VIEWS.get(id(model))
-    if hit is not None and hit[0] is model:
-        return hit[1]
-    view = build(model)
+    key = (id(model), hash(manual))
+    hit = _VIEWS.get(key)
+    if hit is not None and hit[0] is model and hit[1] == manual:
+        return hit[2]
+    view = build(model, manual)
     if len(_VIEWS) >= 32:
         _VIEWS.pop(next(iter(_VIEWS)))
-    _VIEWS[id(model)] = (model, view)
+    _VIEWS[key] = (model, manual, view)
     return view
 
 
