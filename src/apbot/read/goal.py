@@ -41,6 +41,7 @@ from apbot.read.goal_text import (
     near_vocab,
     negated_before,
     phrase_here,
+    turned_off_after,
     verb_positions,
 )
 from apbot.read.goal_twins import place_twins
@@ -230,13 +231,15 @@ def _value_matches(view: Model, text: Text) -> list[_Match]:
             if found is None:
                 continue
             end, quality = found
-            if negated_before(text, i):
+            if negated_before(text, i) or turned_off_after(text, end):
                 continue
             if text.word(end) == "-" and text.word(end + 1) in ("off", "on"):
                 continue  # "auto-off" names a timer, not the AUTO mode
             own = near_vocab(info, text, i, end, reach=2)
-            if weight <= PARTIAL and not near_vocab(info, text, i, end, reach=2):
+            opening = i == 0 or text.word(i - 1) in (".", ";", "!")
+            if weight <= PARTIAL and not (own or (opening and text.word(end) in ("with", ","))):
                 continue  # a first word alone names a value only beside "programme"
+                # (or opening the sentence: "Auto with ExtraDry")
             if _names_other(view, var, text, i, end):
                 continue  # "power level 8" is not the POWER mode
             if len(stems) == 1 and _names_switch(view, var, text, i):
@@ -311,6 +314,13 @@ def _match_at(text: Text, i: int, stems: tuple[str, ...]) -> tuple[int, float] |
         if index:
             while text.word(k) in CONNECTORS and k < len(text.tokens):
                 k += 1
+            if index == 1 and stems[0] in _SPLIT_VERBS and len(stems) == 2:
+                # "keep the chili warm": KEEP WARM around its object
+                gap = next(
+                    (j for j in range(k, min(k + 4, len(text.tokens))) if text.stems[j] == target),
+                    None,
+                )
+                k = gap if gap is not None else k
         if k >= len(text.tokens):
             return None
         here = text.stems[k]
@@ -323,16 +333,21 @@ def _match_at(text: Text, i: int, stems: tuple[str, ...]) -> tuple[int, float] |
         elif (
             len(target) >= 4
             and here.startswith(target)
-            and (len(here) <= len(target) + 4 or len(target) >= 5)
+            and (len(here) <= len(target) + 4 or len(target) >= 5 or len(stems) > 1)
             and text.word(k) not in LOWEST | HIGHEST
         ):
-            quality = min(quality, 0.8)  # "storage" for STORE, "combination" for COMBI
+            quality = min(quality, 0.8)  # "storage" for STORE, "convection bake" for CONV BAKE
+        elif len(target) >= 3 and here == target + "er":
+            quality = min(quality, 0.8)  # "the air fryer" for AIR FRY
         elif len(stems) > 1 and len(here) >= 3 and target.startswith(here):
             quality = min(quality, 0.7)  # "frozen veg" for frozen vegetables
         else:
             return None
         k += 1
     return k, quality
+
+
+_SPLIT_VERBS = frozenset({stem("keep")})
 
 
 _SYNONYM_STEMS: dict[str, frozenset[str]] = {

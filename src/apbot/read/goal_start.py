@@ -70,6 +70,8 @@ def switches(
                 key, weight = text.stems[k], 1.0  # "tablets" for a TABS key
             if weight <= 0 or generic(key):
                 continue
+            if key == concept("lock") and not _locking(text, k):
+                continue  # "wake the panel": the panel, not its lock
             if (
                 text.stems[k] in own
                 or key in own_concepts(info)
@@ -96,6 +98,18 @@ def switches(
         if where is not None:
             where[name] = k
         claimed.add(k)
+
+
+_LOCK_WORDS = frozenset(
+    {"lock", "locked", "locks", "locking", "unlock", "unlocked", "childlock", "lockout", "keylock"}
+)
+
+
+def _locking(text: Text, k: int) -> bool:
+    """A word of the lock's group ("the panel", "the keys") means the lock only beside a word
+    of locking ("lock the panel", "child-lock the controls", "keys locked")."""
+    window = range(max(0, k - 4), min(len(text.tokens), k + 4))
+    return any(text.word(j) in _LOCK_WORDS or "lock" in text.word(j) for j in window)
 
 
 def _abbreviated(word: str, own: set[str]) -> bool:
@@ -294,7 +308,24 @@ def _later(text: Text, k: int) -> bool:
         if word in CLAUSE_ENDS or word == ",":
             return False
         following = text.word(j + 1)
+        if following in ("a", "an"):
+            following = text.word(j + 2)
         if word in ("in", "after") and (following[:1].isdigit() or following in NUMBER_WORDS):
+            return True
+    return False
+
+
+_NOT_ASKED = frozenset({"can't", "cannot", "couldn't", "won't", "i'll", "i", "we'll", "we"})
+
+
+def _someone_else(text: Text, k: int) -> bool:
+    """The start is said of someone else or of what may not happen ("so the kids can't start
+    it", "I'll start it myself"): not a request to start."""
+    for d in range(1, 4):
+        word = text.word(k - d)
+        if word in CLAUSE_ENDS or word == ",":
+            return False
+        if word in _NOT_ASKED or (word == "can" and text.word(k - d + 1) == "not"):
             return True
     return False
 
@@ -332,17 +363,19 @@ def _says_start(
         starts = word in _START_WORDS and k not in named
         if word in ("get", "set") and any(
             text.word(k + d) in ("going", "started", "cooking", "heating", "running")
-            for d in range(1, 7)
+            for d in range(2 if word == "set" else 1, 7)
         ):
-            starts = True
+            starts = True  # "get it going", "set the rice cooking" (not "set heating at 21")
         if word == "go" and text.word(k + 1) in ("ahead", ".", "!", ""):
             starts = True
         if word == "run" and text.word(k + 1) == "it" and k in clause_starts(text):
             starts = True  # "Run it in dry mode"
         if not starts:
             continue
-        if not verbs and _later(text, k):
+        if _later(text, k):
             continue  # "start by itself in six hours": a timer, not now
+        if _someone_else(text, k):
+            continue  # "so the kids can't start it", "I'll start it myself"
         before = []
         for d in range(1, 4):
             if text.word(k - d) in CLAUSE_ENDS:
@@ -380,4 +413,6 @@ def _says_start(
             return True
         if verb in WEAK_VERBS and (k == 0 or text.word(k - 1) in (".", ";", "!")):
             return True
+        if verb in WEAK_VERBS and text.word(k2 + 1) == "me":
+            return True  # "... and make me an espresso"
     return None

@@ -3,6 +3,7 @@ how strongly the words around a span name a variable."""
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 from apbot.read.goal_view import VarInfo
@@ -28,7 +29,7 @@ class Text:
 
     @classmethod
     def of(cls, text: str) -> Text:
-        tokens = tokenize(split_camel(text))
+        tokens = tokenize(split_camel(unhyphen(text)))
         return cls(tokens, [stem(t.text) for t in tokens], [concept(t.text) for t in tokens])
 
     def word(self, k: int) -> str:
@@ -45,7 +46,34 @@ def negated_before(text: Text, start: int, reach: int = 3) -> bool:
             return False
         if word in NEGATIONS and word not in ("off", "stop", "free"):
             return True
+        if word == "of" and text.word(k - 1) == "instead":
+            return True  # "switch off at the end instead of keeping warm"
     return False
+
+
+def turned_off_after(text: Text, end: int) -> bool:
+    """ "keep-warm turned off", "the buzzer off": the words before ``end`` name a switch that
+    is being turned off, not a value being chosen."""
+    k = end
+    if text.word(k) in ("turned", "switched", "set", "is", "left"):
+        k += 1
+    return text.word(k) in ("off", "disabled")
+
+
+_HYPHENED = re.compile(
+    r"\b(a|an|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve)-and-(a|an)-"
+    r"(half|quarter)(?:-(hours?|minutes?))?\b",
+    re.IGNORECASE,
+)
+
+
+def unhyphen(text: str) -> str:
+    """ "a one-and-a-half-hour timer" reads as "one and a half hour".
+
+    >>> unhyphen("a one-and-a-half-hour timer")
+    'a one and a half hour timer'
+    """
+    return _HYPHENED.sub(lambda m: " ".join(g for g in m.groups() if g), text)
 
 
 NUMBER_WORDS = frozenset(
@@ -116,7 +144,7 @@ def phrase_here(text: Text, k: int, own: set[str]) -> bool:
     return any(text.stems[j] in own for j in (k - 1, k + 1) if 0 <= j < len(text.tokens))
 
 
-_LONG_REACH = frozenset({"without", "no"})
+_LONG_REACH = frozenset({"without", "no", "don't", "dont"})
 
 
 def negative_around(text: Text, k: int) -> bool:
@@ -186,7 +214,7 @@ STRONG_VERBS = frozenset(
 )
 
 
-WEAK_VERBS = frozenset(stem(w) for w in ("keep", "bring", "make", "give", "fill"))
+WEAK_VERBS = frozenset(stem(w) for w in ("keep", "bring", "make", "give", "fill", "get"))
 
 
 # A running variable named for one operation is started only by that operation's verbs.

@@ -101,6 +101,7 @@ _GROUPS: tuple[tuple[str, ...], ...] = (
     ("warm", "warming", "keep"),
     ("clock", "clocks", "day"),
     ("texture", "firmness"),
+    ("awake", "wake", "woken", "wakeup"),
 )
 _CANON: dict[str, str] = {}
 for _group in _GROUPS:
@@ -250,6 +251,7 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "co": ("continuous", "continuously", "nonstop"),
     "auto": ("automatic",),
     "sterilize": ("steam", "sterilizing", "sterilization"),
+    "dry": ("dehumidify", "dehumidifying", "dehumidification"),
     "free": ("freely", "flow"),
     "more": ("extra", "longer", "stronger"),
     "less": ("shorter", "lighter", "weaker"),
