@@ -35,6 +35,7 @@ from apbot.model.schema import (
 from apbot.model.values import closest_matches, format_hms, preview, unit_of
 from apbot.read.goal_start import boil, entry_switches, power_and_running, switches, zero_settings
 from apbot.read.goal_text import (
+    CLAUSE_ENDS,
     CONNECTORS,
     NUMBER_WORDS,
     Text,
@@ -51,6 +52,7 @@ from apbot.read.goal_view import (
     Model,
     VarInfo,
     domain_values,
+    magnitude,
     model_view,
     numeric_values,
     own_stems,
@@ -244,6 +246,8 @@ def _value_matches(view: Model, text: Text) -> list[_Match]:
                 continue  # "power level 8" is not the POWER mode
             if len(stems) == 1 and _names_switch(view, var, text, i):
                 continue  # "switch the light on" is the LIGHT, not a light crust
+            if len(stems) == 1 and _names_setting(view, var, text, i):
+                continue  # "low fan", "fan on quiet": the FAN setting, not the FAN mode
             score = len(stems) * weight * quality + 0.5 * own
             if i in verbs and len(stems) == 1:
                 score *= 0.5  # "bake a French loaf": the verb is weaker than the noun
@@ -262,6 +266,23 @@ def _names_switch(view: Model, var: str, text: Text, i: int) -> bool:
             continue
         if text.word(i + 1) in ("on", "off") or phrase_here(text, i, own - {text.stems[i]}):
             return True
+    return False
+
+
+def _names_setting(view: Model, var: str, text: Text, i: int) -> bool:
+    """The word at i is another setting's own name and one of that setting's values stands
+    right beside it ("low fan", "fan on quiet", "high fan")."""
+    if near_vocab(view.infos[var], text, i, i + 1, reach=1):
+        return False  # "fan mode": the mode's own word is next to it
+    for name, info in view.infos.items():
+        if name == var or info.role != "setting" or text.stems[i] not in own_stems(info):
+            continue
+        values = {stem(str(v)) for v in info.values if str(v).isalpha()}
+        for j in (i - 1, i + 1, i + 2):
+            if j == i + 2 and text.word(i + 1) not in ("on", "at", "to"):
+                continue
+            if 0 <= j < len(text.tokens) and text.stems[j] in values:
+                return True
     return False
 
 
@@ -507,7 +528,30 @@ def _cue_bonus(info: VarInfo, text: Text, mention: Mention) -> float:
             bonus -= 0.3
     if mention.dimension and mention.dimension == info.dimension:
         bonus += 0.3
+    if mention.kind == "duration" and info.turns is not None:
+        said = _turning(text, mention.start)
+        if said is not None:
+            bonus += 1.0 if said == info.turns else -1.0
     return bonus
+
+
+_TURN_VERBS = frozenset(
+    {"switch", "turn", "come", "switching", "turning", "coming", "comes", "switches", "turns"}
+)
+
+
+def _turning(text: Text, start: int) -> str | None:
+    """ "switch off after 2 hours", "an off-timer of 10 hours", "come on in 7.5 hours": which
+    way the appliance turns when the duration ends (None when the words do not say)."""
+    for k in range(start - 1, max(-1, start - 7), -1):
+        word = text.word(k)
+        if word in CLAUSE_ENDS or word == ",":
+            break
+        if word == "off":
+            return "off"
+        if word == "on" and text.word(k - 1) in _TURN_VERBS | {"itself", "it"}:
+            return "on"
+    return None
 
 
 def _fit(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
@@ -768,7 +812,9 @@ def _superlatives(
         values = _ordered_values(domain_values(view, view.infos[name], goal))
         if not values:
             continue
-        if end is not None:
+        if end == 0 and len(values) > 2 and _is_off_level(view.infos[name], values[0]):
+            goal[name] = values[1]  # "the lowest level": the lowest one that works, not off
+        elif end is not None:
             goal[name] = values[end]
         elif scale_index is not None:
             goal[name] = values[scale_index[0]]
@@ -776,21 +822,46 @@ def _superlatives(
         claimed.add(k)
 
 
+def _is_off_level(info: VarInfo, lowest: Any) -> bool:
+    """A power or level setting whose lowest value, 0, is off rather than a level."""
+    return (
+        isinstance(info.var, NumericVariable)
+        and info.dimension in (None, "power")
+        and bool({concept("power"), concept("level")} & set(info.vocab))
+        and magnitude(lowest) == 0
+    )
+
+
 def _ordered(info: VarInfo) -> bool:
     return isinstance(info.var, NumericVariable | TimeVariable) or (
         isinstance(info.var, DiscreteVariable)
-        and (numeric_values(info.values) or bool(quantity_dimensions(info.values)))
+        and (
+            numeric_values(info.values)
+            or bool(quantity_dimensions(info.values))
+            or len(_scaled(info.values)) >= 2
+        )
     )
+
+
+def _scaled(values: list[Any]) -> list[Any]:
+    """Values that are words of one scale ("low", "medium", "high"), in the scale's order."""
+    for scale in SCALES:
+        found = [v for v in values if str(v).casefold() in scale]
+        if len(found) >= 2:
+            return sorted(found, key=lambda v: scale.index(str(v).casefold()))
+    return []
 
 
 def _ordered_values(values: list[Any]) -> list[Any]:
     """Values in order of size: numbers and times as they are; of a discrete list, the ones
-    that are quantities ("100 W" < "450 W"), by size."""
+    that are quantities ("100 W" < "450 W"), by size, or the words of a scale (low < high)."""
     if all(isinstance(v, int | float) for v in values) or all(
         str(v).count(":") == 2 for v in values
     ):
         return values
     sized = [(q[0], v) for v in values if (q := parse_quantity(str(v))) is not None]
+    if len(sized) < 2 and _scaled(values):
+        return _scaled(values)
     return [v for _size, v in sorted(sized, key=lambda pair: pair[0])]
 
 

@@ -10,7 +10,8 @@ with a name ("| 2 | French | 3:50 |"), or a bold heading ("**2 French** – …"
 >>> model = ApplianceModel.model_validate({
 ...     "appliance": {"id": "m", "category": "bread_maker", "name": "m"},
 ...     "variables": {"menu": {"type": "discrete", "values": ["1", "2", "3"]}},
-...     "actions": {"press_menu": {}},
+...     "controls": [{"id": "menu", "kind": "button", "label": "MENU"}],
+...     "actions": {"press_menu": {"control": "menu"}},
 ...     "features": {"menu": [{"actions": ["press_menu"], "variable": "menu", "effect": "next"}]},
 ... })
 >>> manual = "| No. | Programme |\\n|---|---|\\n| 1 | Basic |\\n| 2 | French (crisp) |\\n| 3 | Cake |"

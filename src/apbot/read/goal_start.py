@@ -288,6 +288,10 @@ def _says_power_on(view: Model, text: Text) -> bool:
             m += 1
         if m >= n or text.word(m) in CLAUSE_ENDS | {",", "and", "then"} | _AFTER_ON:
             return True  # "switch on, ...", "switch on the cooker and ...", "switch on in fan"
+        if _mode_word(view, text.stems[m]) and not any(
+            i.role == "running" for i in view.infos.values()
+        ):
+            return True  # "switch on heating at 30 °C": on, in that mode
     for k, token in enumerate(text.tokens):  # "with the machine left on", "leave it on"
         if token.text in ("leave", "left", "keep", "kept", "stay", "stays"):
             j = k + 1
@@ -299,6 +303,15 @@ def _says_power_on(view: Model, text: Text) -> bool:
             ):
                 return True
     return False
+
+
+def _mode_word(view: Model, word: str) -> bool:
+    """The word is a one-word value of a programme-like setting (HEAT, COOL, DRY)."""
+    return any(
+        stems == (word,)
+        for var, _value, stems, weight in view.phrases
+        if weight >= 1.0 and view.infos[var].role == "setting"
+    )
 
 
 def _later(text: Text, k: int) -> bool:

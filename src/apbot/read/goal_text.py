@@ -73,7 +73,9 @@ def unhyphen(text: str) -> str:
     >>> unhyphen("a one-and-a-half-hour timer")
     'a one and a half hour timer'
     """
-    return _HYPHENED.sub(lambda m: " ".join(g for g in m.groups() if g), text)
+    return _HYPHENED.sub(
+        lambda m: f"{m[1]} and {m[2]} {m[3]}" + (f" {m[4]}" if m[4] else ""), text
+    )
 
 
 NUMBER_WORDS = frozenset(

@@ -79,6 +79,7 @@ class VarInfo:
     timing: str = "duration"  # for time-like variables: duration, delay, finish (at), clock
     dimension: str | None = None
     order: int = 0
+    turns: str | None = None  # a timer that switches the appliance "on" or "off" at its end
 
     @property
     def values(self) -> list[Any]:
@@ -228,6 +229,12 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
                     {"in", "after"} & set(_words(f"{info.name} {info.var.label or ''}"))
                 )
                 info.timing = "finish" if at else "delay"
+    for info in infos.values():
+        if info.timing in ("duration", "delay") and (
+            isinstance(info.var, TimeVariable) or info.dimension == "time"
+        ):
+            words = set(_words(f"{info.name} {info.var.label or ''}".casefold()))
+            info.turns = "off" if "off" in words else "on" if "on" in words else None
     phrases = _phrases(model, infos)
     start_values = _start_values(model, infos)
     appliance = {concept(w) for w in _words(model.appliance.name + " " + model.appliance.category)}
