@@ -450,7 +450,7 @@ def _assign_mentions(
         if view.infos[name].timing == "delay" and _relative(text, mention):
             counting = True
     for mi, mention in enumerate(mentions):
-        if mi not in used and mention.kind == "clock" and _clock_parts(view, mention, goal):
+        if mi not in used and mention.kind == "clock" and _clock_parts(view, text, mention, goal):
             used.add(mi)
     for mi, mention in enumerate(mentions):
         if mi not in used:
@@ -458,19 +458,33 @@ def _assign_mentions(
     return counting
 
 
-def _clock_parts(view: Model, mention: Mention, goal: Goal) -> bool:
-    """A clock kept as two settings, its hour and its minute: set both from one time."""
-    parts: dict[str, VarInfo] = {}
+def _clock_parts(view: Model, text: Text, mention: Mention, goal: Goal) -> bool:
+    """A time of day kept as two settings, an hour and a minute (a clock, an auto-start time):
+    set both from one time, on the pair the words around it name."""
+    pairs: dict[str, dict[str, VarInfo]] = {}
     for info in view.infos.values():
-        own = own_stems(info)
-        if info.role != "setting" or stem("clock") not in own or info.name in goal:
+        if info.role != "setting" or info.name in goal:
             continue
-        if own & {stem("hour"), stem("hours"), "hr", "h"}:
-            parts["hour"] = info
-        elif own & {stem("minute"), stem("minutes"), "min", "m"}:
-            parts["minute"] = info
-    if len(parts) != 2:
+        words = [w for w in info.name.casefold().split("_") if w]
+        part = next((p for p, names in _PARTS.items() if names & set(words)), None)
+        if part is None:
+            continue
+        rest = "_".join(w for w in words if w not in _PARTS[part])
+        pairs.setdefault(rest, {})[part] = info
+    options = []
+    for rest, parts in pairs.items():
+        if len(parts) != 2:
+            continue
+        score = sum(near_vocab(i, text, mention.start, mention.end) for i in parts.values())
+        clock = stem("clock") in own_stems(parts["hour"])
+        if clock and score <= 0 and concept("clock") in text.concepts:
+            score = 0.1  # "The clock is off — set it to 13:15"
+        if clock and score <= 0:
+            continue  # a time of day sets the clock only when the clock is named
+        options.append((score, not clock, parts))
+    if not options:
         return False
+    parts = max(options, key=lambda o: (o[0], o[1]))[2]
     hour, minute = divmod(int(mention.value) // 60, 60)
     values = {}
     for part, number in (("hour", hour), ("minute", minute)):
@@ -483,6 +497,9 @@ def _clock_parts(view: Model, mention: Mention, goal: Goal) -> bool:
         values[parts[part].name] = found
     goal.update(values)
     return True
+
+
+_PARTS = {"hour": {"hour", "hours", "hr", "h"}, "minute": {"minute", "minutes", "min", "m"}}
 
 
 def _as_int(value: Any) -> int | None:

@@ -102,6 +102,7 @@ _GROUPS: tuple[tuple[str, ...], ...] = (
     ("clock", "clocks", "day"),
     ("texture", "firmness"),
     ("awake", "wake", "woken", "wakeup"),
+    ("auto", "automatic", "automatically"),
 )
 _CANON: dict[str, str] = {}
 for _group in _GROUPS:
