@@ -52,6 +52,7 @@ from apbot.read.goal_view import (
     Model,
     VarInfo,
     domain_values,
+    generic,
     magnitude,
     model_view,
     numeric_values,
@@ -129,6 +130,7 @@ def parse_instruction(model: ApplianceModel, instruction: str, manual: str = "")
         where[match.var] = match.start
         claimed.update(range(match.start, match.end))
     _restated_codes(view, text, goal, claimed)
+    _pronoun_ones(text, claimed)
     mentions = _distinct(find_mentions(text.tokens, skip=claimed))
     counting = _assign_mentions(view, text, mentions, goal, claimed, where)
     _superlatives(view, text, goal, claimed, where)
@@ -278,11 +280,11 @@ def _names_setting(view: Model, var: str, text: Text, i: int) -> bool:
         if name == var or info.role != "setting" or text.stems[i] not in own_stems(info):
             continue
         values = {stem(str(v)) for v in info.values if str(v).isalpha()}
-        for j in (i - 1, i + 1, i + 2):
-            if j == i + 2 and text.word(i + 1) not in ("on", "at", "to"):
-                continue
+        after = i + 2 if text.word(i + 1) in ("on", "at", "to") else i + 1
+        after += 1 if text.word(after) in ("the", "a") else 0
+        for j in (i - 1, i + 1, after):
             if 0 <= j < len(text.tokens) and text.stems[j] in values:
-                return True
+                return True  # "low fan", "fan on quiet", "the fan to the quiet speed"
     return False
 
 
@@ -347,6 +349,8 @@ def _match_at(text: Text, i: int, stems: tuple[str, ...]) -> tuple[int, float] |
         here = text.stems[k]
         if here == target:
             pass
+        elif text.word(k).endswith("ly") and len(text.word(k)) > 5:
+            return None  # "automatically" says how, it does not name AUTO
         elif similar(here, target):
             quality = min(quality, 0.9)
         elif here in _SYNONYM_STEMS.get(target, ()):
@@ -358,6 +362,8 @@ def _match_at(text: Text, i: int, stems: tuple[str, ...]) -> tuple[int, float] |
             and text.word(k) not in LOWEST | HIGHEST
         ):
             quality = min(quality, 0.8)  # "storage" for STORE, "convection bake" for CONV BAKE
+        elif len(stems) == 1 and len(target) >= 5 and here.endswith(target):
+            quality = min(quality, 0.7)  # "multigrain" for GRAINS
         elif len(target) >= 3 and here == target + "er":
             quality = min(quality, 0.8)  # "the air fryer" for AIR FRY
         elif len(stems) > 1 and len(here) >= 3 and target.startswith(here):
@@ -374,6 +380,14 @@ _SPLIT_VERBS = frozenset({stem("keep")})
 _SYNONYM_STEMS: dict[str, frozenset[str]] = {
     stem(word): frozenset(stem(w) for w in others) for word, others in SYNONYMS.items()
 }
+
+
+def _pronoun_ones(text: Text, claimed: set[int]) -> None:
+    """ "on the rear one", "the big one": "one" after "the" and a word is a pronoun."""
+    for k, token in enumerate(text.tokens):
+        if token.text == "one" and text.word(k - 2) == "the":
+            if text.word(k + 1) in CLAUSE_ENDS | {",", "and", "with", "at", "on", "to", ""}:
+                claimed.add(k)
 
 
 def _restated_codes(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
@@ -430,7 +444,9 @@ def _assign_mentions(
             if info.timing in ("clock", "finish") and not near_vocab(
                 info, text, mention.start, mention.end, reach=12
             ):
-                continue  # a time of day sets the clock only when the clock is named
+                named = info.timing == "clock" and concept("clock") in text.concepts
+                if not (named and mention.kind == "clock"):
+                    continue  # a time of day sets the clock only when the clock is named
             score += _cue_bonus(info, text, mention)
             options.append((score, -info.order, mi, name, value))
     options.sort(key=lambda o: (-o[0], -o[1]))
@@ -813,6 +829,8 @@ def _superlatives(
                 scale_index = (scale.index(said), len(scale))
         if end is None and scale_index is None:
             continue
+        if end is not None and _names_set(view, text, k, goal):
+            continue  # "the lowest humidity setting, 40%": said of a setting already read
         best: tuple[float, str] | None = None
         for name, info in view.infos.items():
             if name in goal or info.role != "setting" or not _ordered(info):
@@ -837,6 +855,16 @@ def _superlatives(
             goal[name] = values[scale_index[0]]
         where[name] = k
         claimed.add(k)
+
+
+def _names_set(view: Model, text: Text, k: int, goal: Goal) -> bool:
+    """The word after the superlative names (not generically) a setting the goal already has."""
+    for j in (k + 1, k + 2):
+        key = text.concepts[j] if j < len(text.concepts) else ""
+        if key and not generic(key):
+            if any(view.infos[n].vocab.get(key, 0.0) >= 0.8 for n in goal):
+                return True
+    return False
 
 
 def _is_off_level(info: VarInfo, lowest: Any) -> bool:

@@ -273,9 +273,14 @@ def _procedure_start(view: Model, goal: Goal) -> tuple[str, Any] | None:
 def _says_power_on(view: Model, text: Text) -> bool:
     """ "turn the machine on", "switch on, ...", "power the bread maker up"."""
     n = len(text.tokens)
+    switch_words = {
+        s for i in view.infos.values() if i.role == "switch" for s in own_stems(i)
+    }
     for k, token in enumerate(text.tokens):
         if token.text not in ("turn", "switch", "power", "switched", "turned"):
             continue
+        if token.text in ("switched", "turned") and text.stems[k - 1] in switch_words:
+            continue  # "Keep Fresh switched on": that switch, not the power
         j = k + 1
         while j < n and (concept(text.word(j)) in view.appliance_words or text.word(j) == "the"):
             j += 1

@@ -150,6 +150,10 @@ _LONG_REACH = frozenset({"without", "no", "don't", "dont"})
 
 
 def negative_around(text: Text, k: int) -> bool:
+    if text.word(k + 1) == "on" and not any(
+        text.word(k - d) in ("don't", "dont", "not", "never") for d in range(1, 4)
+    ):
+        return False  # "with no spin at all and ECO on"
     for d in range(1, 8):
         word = text.word(k - d)
         if word in CLAUSE_ENDS or word == ",":
@@ -216,7 +220,9 @@ STRONG_VERBS = frozenset(
 )
 
 
-WEAK_VERBS = frozenset(stem(w) for w in ("keep", "bring", "make", "give", "fill", "get"))
+WEAK_VERBS = frozenset(
+    stem(w) for w in ("keep", "bring", "make", "give", "fill", "get", "hold")
+)
 
 
 # A running variable named for one operation is started only by that operation's verbs.

@@ -182,6 +182,8 @@ def place_twins(view: Model, text: Text, goal: Goal, where: dict[str, int]) -> N
                     placed.setdefault(name, (position, value))
             elif target is not None and target not in placed:
                 placed[target] = (position, value)
+            elif target is not None and placed[target][1] == value:
+                continue  # "the longest possible timer, 99 minutes": said twice
             else:
                 leftover.append((position, value))
         free = [n for n in twins.names if n not in placed]

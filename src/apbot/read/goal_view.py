@@ -363,6 +363,8 @@ def _start_values(
                 labels = " ".join(_control_labels(model, [action])).casefold()
                 if not any(word in _words(labels) for word in _START_LABELS):
                     continue
+                if str(effect.to).casefold() in _OFF_WORDS:
+                    continue  # START held to cancel: it stops, it does not start
                 value = (step.variable, effect.to)
                 if len(steps) == 1 or not adjusted:
                     found.setdefault(None, value)

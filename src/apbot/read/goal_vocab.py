@@ -81,7 +81,7 @@ _GROUPS: tuple[tuple[str, ...], ...] = (
     ("program", "programme", "prog", "prg", "course", "cycle", "menu", "function", "func", "mode"),
     ("temperature", "temp", "degree", "degrees", "heat"),
     ("lock", "child", "childlock", "lockout", "keylock", "keys", "buttons", "controls", "panel"),
-    ("delay", "delayed", "preset", "later", "wait", "countdown"),
+    ("delay", "delayed", "preset", "later", "wait", "countdown", "reserve", "reservation"),
     ("finish", "end", "ready", "done", "finished"),
     ("timer", "timers"),
     ("time", "duration", "times"),
@@ -138,6 +138,7 @@ NEGATIONS = frozenset(
         "none",
         "free",
         "nor",
+        "release",
     }
 )
 # Words that carry no meaning for matching a variable by name.
