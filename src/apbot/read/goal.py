@@ -33,7 +33,14 @@ from apbot.model.schema import (
     TimeVariable,
 )
 from apbot.model.values import closest_matches, format_hms, preview, unit_of
-from apbot.read.goal_start import boil, entry_switches, power_and_running, switches, zero_settings
+from apbot.read.goal_start import (
+    boil,
+    entry_switches,
+    no_values,
+    power_and_running,
+    switches,
+    zero_settings,
+)
 from apbot.read.goal_text import (
     CLAUSE_ENDS,
     CONNECTORS,
@@ -135,6 +142,7 @@ def parse_instruction(model: ApplianceModel, instruction: str, manual: str = "")
     counting = _assign_mentions(view, text, mentions, goal, claimed, where)
     _superlatives(view, text, goal, claimed, where)
     zero_settings(view, text, goal, claimed, where)
+    no_values(view, text, goal, claimed)
     switches(view, text, goal, claimed, where)
     place_twins(view, text, goal, where)
     entry_switches(view, goal)

@@ -181,6 +181,24 @@ def zero_settings(
                 break
 
 
+def no_values(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
+    """ "without spinning" where the spin setting has a "no spin" value: that value."""
+    for k, token in enumerate(text.tokens):
+        if token.text not in ("no", "without", "skip") or k + 1 >= len(text.tokens):
+            continue
+        j = k + 1 if text.word(k + 1) not in ("the", "any", "a") else k + 2
+        if j in claimed:
+            continue
+        for info in view.infos.values():
+            if info.name in goal or info.role != "setting" or text.stems[j] not in own_stems(info):
+                continue
+            for value in domain_values(view, info, goal):
+                words = [stem(w) for w in str(value).casefold().split()]
+                if len(words) == 2 and words[0] in ("no", "without") and words[1] == text.stems[j]:
+                    goal[info.name] = value
+                    claimed.add(j)
+
+
 def _starts_at_zero(info: VarInfo) -> bool:
     """A setting whose "none" is 0: any number, or a duration that starts empty (not a clock)."""
     if isinstance(info.var, NumericVariable):
@@ -229,7 +247,7 @@ def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = Fals
     if any(n in goal for n in running):
         return
     family = next((VERB_FAMILIES[stem(n)] for n in running if stem(n) in VERB_FAMILIES), None)
-    start = _says_start(text, family, _named_starts(view, text))
+    start = _says_start(text, family, _named_starts(view, text), settings=_setting_words(view))
     started_by = _procedure_start(view, goal)
     if start is None and started_by is not None:
         start = True  # the procedure for a goal setting ends by starting (TIME DEFROST)
@@ -310,6 +328,17 @@ def _says_power_on(view: Model, text: Text) -> bool:
     return False
 
 
+def _setting_words(view: Model) -> frozenset[str]:
+    """Concepts that name a setting outright (its own name or label; not generic words)."""
+    return frozenset(
+        key
+        for info in view.infos.values()
+        if info.role == "setting"
+        for key, weight in info.vocab.items()
+        if weight >= 1.0 and not generic(key)
+    )
+
+
 def _mode_word(view: Model, word: str) -> bool:
     """The word is a one-word value of a programme-like setting (HEAT, COOL, DRY)."""
     return any(
@@ -370,6 +399,7 @@ def _says_start(
     family: frozenset[str] | None = None,
     named: set[int] | frozenset[int] = frozenset(),
     verbs: bool = True,
+    settings: frozenset[str] = frozenset(),
 ) -> bool | None:
     """True for "start it", False for "don't start", None when the instruction says neither.
     ``verbs``: an instruction that opens with a doing verb ("Bake a cake") says start too."""
@@ -430,6 +460,10 @@ def _says_start(
         if verb in STRONG_VERBS:
             return True
         if verb in WEAK_VERBS and (k == 0 or text.word(k - 1) in (".", ";", "!")):
+            if verb == stem("give") and any(
+                text.concepts[j] in settings for j in range(k2 + 1, min(k2 + 5, len(text.tokens)))
+            ):
+                continue  # "Give the … dry cycle 90 minutes": a setting is given a value
             return True
         if verb in WEAK_VERBS and text.word(k2 + 1) == "me":
             return True  # "... and make me an espresso"
