@@ -92,7 +92,17 @@ def switches(
         if best is None:
             continue
         k = best[1]
-        positive = not negative_around(text, k)
+        last = k  # the switch's name may run over several words ("automatic keep-warm")
+        while last + 1 < len(text.tokens) and (
+            text.stems[last + 1] in own
+            or text.concepts[last + 1] in own_concepts(info)
+            or (
+                text.word(last + 1) == "-"
+                and text.stems[min(last + 2, len(text.tokens) - 1)] in own
+            )
+        ):
+            last += 1
+        positive = not (negative_around(text, k) or negative_around(text, last))
         assert info.on is not None and info.off is not None
         goal[name] = info.on if positive else info.off
         if where is not None:
@@ -115,8 +125,7 @@ def _locking(text: Text, k: int) -> bool:
 def _abbreviated(word: str, own: set[str]) -> bool:
     """The switch's one-word name is a short form of the word ("TABS" for tablets)."""
     return len(own) == 1 and any(
-        len(short) >= 3 and word.startswith(short) and len(word) <= len(short) + 4
-        for short in own
+        len(short) >= 3 and word.startswith(short) and len(word) <= len(short) + 4 for short in own
     )
 
 
@@ -291,9 +300,7 @@ def _procedure_start(view: Model, goal: Goal) -> tuple[str, Any] | None:
 def _says_power_on(view: Model, text: Text) -> bool:
     """ "turn the machine on", "switch on, ...", "power the bread maker up"."""
     n = len(text.tokens)
-    switch_words = {
-        s for i in view.infos.values() if i.role == "switch" for s in own_stems(i)
-    }
+    switch_words = {s for i in view.infos.values() if i.role == "switch" for s in own_stems(i)}
     for k, token in enumerate(text.tokens):
         if token.text not in ("turn", "switch", "power", "switched", "turned"):
             continue
@@ -315,14 +322,21 @@ def _says_power_on(view: Model, text: Text) -> bool:
             i.role == "running" for i in view.infos.values()
         ):
             return True  # "switch on heating at 30 °C": on, in that mode
+    for k, token in enumerate(text.tokens):  # "wake the panel", "wake it up"
+        if text.stems[k] == stem("wake") and (k == 0 or text.word(k - 1) in CLAUSE_ENDS | {","}):
+            return True
     for k, token in enumerate(text.tokens):  # "with the machine left on", "leave it on"
         if token.text in ("leave", "left", "keep", "kept", "stay", "stays"):
             j = k + 1
-            while j < n and (concept(text.word(j)) in view.appliance_words or text.word(j) == "the"):
+            while j < n and (
+                concept(text.word(j)) in view.appliance_words or text.word(j) == "the"
+            ):
                 j += 1
             before = concept(text.word(k - 1)) in view.appliance_words
-            if text.word(j) == "on" and (j > k + 1 or before) and text.word(j + 1) in (
-                CLAUSE_ENDS | {",", "and", "then", ""}
+            if (
+                text.word(j) == "on"
+                and (j > k + 1 or before)
+                and text.word(j + 1) in (CLAUSE_ENDS | {",", "and", "then", ""})
             ):
                 return True
     return False

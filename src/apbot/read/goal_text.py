@@ -73,9 +73,7 @@ def unhyphen(text: str) -> str:
     >>> unhyphen("a one-and-a-half-hour timer")
     'a one and a half hour timer'
     """
-    return _HYPHENED.sub(
-        lambda m: f"{m[1]} and {m[2]} {m[3]}" + (f" {m[4]}" if m[4] else ""), text
-    )
+    return _HYPHENED.sub(lambda m: f"{m[1]} and {m[2]} {m[3]}" + (f" {m[4]}" if m[4] else ""), text)
 
 
 NUMBER_WORDS = frozenset(
@@ -160,6 +158,8 @@ def negative_around(text: Text, k: int) -> bool:
             break
         if word in NEGATIONS and word not in ("free",) and (d < 6 or word in _LONG_REACH):
             return True  # "without the fruit-and-nut beep"
+        if word == "of" and text.word(k - d - 1) == "instead":
+            return True  # "switch off instead of keeping warm"
         if word in ("on", "with", "enable", "add"):
             break
     if text.word(k) in ("mute", "silence", "unlock"):
@@ -220,9 +220,7 @@ STRONG_VERBS = frozenset(
 )
 
 
-WEAK_VERBS = frozenset(
-    stem(w) for w in ("keep", "bring", "make", "give", "fill", "get", "hold")
-)
+WEAK_VERBS = frozenset(stem(w) for w in ("keep", "bring", "make", "give", "fill", "get", "hold"))
 
 
 # A running variable named for one operation is started only by that operation's verbs.

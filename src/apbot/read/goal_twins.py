@@ -43,7 +43,12 @@ _SAME: dict[str, tuple[str, ...]] = {
 }
 # Two-way swings: a horizontal swing moves left and right, a vertical one up and down.
 _PHRASES: dict[str, tuple[tuple[str, ...], ...]] = {
-    "h": (("horizontal",), ("left", "-", "right"), ("left", "and", "right"), ("side", "to", "side")),
+    "h": (
+        ("horizontal",),
+        ("left", "-", "right"),
+        ("left", "and", "right"),
+        ("side", "to", "side"),
+    ),
     "v": (("vertical",), ("up", "-", "down"), ("up", "and", "down")),
 }
 _NOUNS = frozenset(
