@@ -236,6 +236,7 @@ def _value_matches(view: Model, text: Text) -> list[_Match]:
     matches: list[_Match] = []
     n = len(text.tokens)
     verbs = verb_positions(text)
+    itself = {stem(w) for w in re.findall(r"[a-z]+", _appliance_name(view))}
     for var, value, stems, weight in view.phrases:
         info = view.infos[var]
         for i in range(n):
@@ -245,6 +246,8 @@ def _value_matches(view: Model, text: Text) -> list[_Match]:
             end, quality = found
             if negated_before(text, i) or turned_off_after(text, end):
                 continue
+            if quality < 1.0 and text.stems[end - 1] in itself and i not in verbs:
+                continue  # "turn on the air fryer": the appliance, not its AIR FRY programme
             if text.word(end) == "-" and text.word(end + 1) in ("off", "on"):
                 continue  # "auto-off" names a timer, not the AUTO mode
             own = near_vocab(info, text, i, end, reach=2)
@@ -277,6 +280,11 @@ def _names_switch(view: Model, var: str, text: Text, i: int) -> bool:
         if text.word(i + 1) in ("on", "off") or phrase_here(text, i, own - {text.stems[i]}):
             return True
     return False
+
+
+def _appliance_name(view: Model) -> str:
+    appliance = view.model.appliance
+    return f"{appliance.name} {appliance.category.replace('_', ' ')}".casefold()
 
 
 def _names_setting(view: Model, var: str, text: Text, i: int) -> bool:
@@ -393,9 +401,9 @@ _SYNONYM_STEMS: dict[str, frozenset[str]] = {
 def _pronoun_ones(text: Text, claimed: set[int]) -> None:
     """ "on the rear one", "the big one": "one" after "the" and a word is a pronoun."""
     for k, token in enumerate(text.tokens):
-        if token.text == "one" and text.word(k - 2) == "the":
-            if text.word(k + 1) in CLAUSE_ENDS | {",", "and", "with", "at", "on", "to", ""}:
-                claimed.add(k)
+        ends = CLAUSE_ENDS | {",", "and", "with", "at", "on", "to", ""}
+        if token.text == "one" and text.word(k - 2) == "the" and text.word(k + 1) in ends:
+            claimed.add(k)
 
 
 def _restated_codes(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
@@ -496,7 +504,7 @@ def _clock_parts(view: Model, text: Text, mention: Mention, goal: Goal) -> bool:
         rest = "_".join(w for w in words if w not in _PARTS[part])
         pairs.setdefault(rest, {})[part] = info
     options = []
-    for rest, parts in pairs.items():
+    for parts in pairs.values():
         if len(parts) != 2:
             continue
         score = sum(near_vocab(i, text, mention.start, mention.end) for i in parts.values())
@@ -869,9 +877,8 @@ def _names_set(view: Model, text: Text, k: int, goal: Goal) -> bool:
     """The word after the superlative names (not generically) a setting the goal already has."""
     for j in (k + 1, k + 2):
         key = text.concepts[j] if j < len(text.concepts) else ""
-        if key and not generic(key):
-            if any(view.infos[n].vocab.get(key, 0.0) >= 0.8 for n in goal):
-                return True
+        if key and not generic(key) and any(view.infos[n].vocab.get(key, 0.0) >= 0.8 for n in goal):
+            return True
     return False
 
 

@@ -14,7 +14,8 @@ with a name ("| 2 | French | 3:50 |"), or a bold heading ("**2 French** – …"
 ...     "actions": {"press_menu": {"control": "menu"}},
 ...     "features": {"menu": [{"actions": ["press_menu"], "variable": "menu", "effect": "next"}]},
 ... })
->>> manual = "| No. | Programme |\\n|---|---|\\n| 1 | Basic |\\n| 2 | French (crisp) |\\n| 3 | Cake |"
+>>> manual = "| No. | Programme |\\n|---|---|\\n| 1 | Basic |\\n| 2 | French (crisp) |"
+>>> manual += "\\n| 3 | Cake |"
 >>> coded_names(model, manual)
 [('menu', '1', 'Basic'), ('menu', '2', 'French'), ('menu', '3', 'Cake')]
 """

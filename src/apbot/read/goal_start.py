@@ -17,8 +17,8 @@ from apbot.model.schema import (
 )
 from apbot.read.goal_text import (
     CLAUSE_ENDS,
-    NUMBER_WORDS,
     FILLERS,
+    NUMBER_WORDS,
     STRONG_VERBS,
     VERB_FAMILIES,
     WEAK_VERBS,
@@ -196,7 +196,7 @@ def no_values(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
         if token.text not in ("no", "without", "skip") or k + 1 >= len(text.tokens):
             continue
         j = k + 1 if text.word(k + 1) not in ("the", "any", "a") else k + 2
-        if j in claimed:
+        if j in claimed or j >= len(text.tokens):
             continue
         for info in view.infos.values():
             if info.name in goal or info.role != "setting" or text.stems[j] not in own_stems(info):
@@ -322,7 +322,7 @@ def _says_power_on(view: Model, text: Text) -> bool:
             i.role == "running" for i in view.infos.values()
         ):
             return True  # "switch on heating at 30 °C": on, in that mode
-    for k, token in enumerate(text.tokens):  # "wake the panel", "wake it up"
+    for k in range(n):  # "wake the panel", "wake it up"
         if text.stems[k] == stem("wake") and (k == 0 or text.word(k - 1) in CLAUSE_ENDS | {","}):
             return True
     for k, token in enumerate(text.tokens):  # "with the machine left on", "leave it on"
@@ -349,7 +349,7 @@ def _setting_words(view: Model) -> frozenset[str]:
         for info in view.infos.values()
         if info.role == "setting"
         for key, weight in info.vocab.items()
-        if weight >= 1.0 and not generic(key)
+        if weight >= 0.8 and (not generic(key) or key == concept("program"))
     )
 
 

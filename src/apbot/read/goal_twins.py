@@ -94,7 +94,8 @@ def find_twins(model: ApplianceModel) -> list[Twins]:
             words = _tokens(name.replace("_", " "))
             for i, word in enumerate(words):
                 if word in _SAME or word in _PHRASES:
-                    families.setdefault(tuple(words[:i] + ["*"] + words[i + 1 :]), {})[name] = word
+                    key = (*words[:i], "*", *words[i + 1 :])
+                    families.setdefault(key, {})[name] = word
         for key, marks in families.items():
             if len(marks) < 2 or len(set(marks.values())) != len(marks):
                 continue
@@ -119,10 +120,9 @@ def _marks_at(twins: Twins, text: Text) -> dict[int, str]:
         for k, word in enumerate(words):
             if k in found or word not in _SAME.get(mark, ()):
                 continue
-            if word[0].isdigit() or word in ("one", "two", "three", "four"):
-                # a bare number is a zone only right after a zone's noun ("zone 2", "Z2")
-                if k == 0 or words[k - 1] not in twins.nouns:
-                    continue
+            numeral = word[0].isdigit() or word in ("one", "two", "three", "four")
+            if numeral and (k == 0 or words[k - 1] not in twins.nouns):
+                continue  # a bare number is a zone only right after a zone's noun ("zone 2")
             found[k] = name
     for k, word in enumerate(words):
         if word in _ALL and k not in found:

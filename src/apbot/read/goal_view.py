@@ -25,6 +25,7 @@ from apbot.model.schema import (
 )
 from apbot.model.values import parse_quantity as _parse_quantity
 from apbot.model.values import unit_of
+from apbot.read.goal_manual import coded_names
 from apbot.read.goal_vocab import (
     LETTER_WORDS,
     STOP_WORDS,
@@ -33,7 +34,6 @@ from apbot.read.goal_vocab import (
     split_camel,
     stem,
 )
-from apbot.read.goal_manual import coded_names
 from apbot.read.numbers import tokenize
 
 Goal = dict[str, Any]
@@ -260,13 +260,13 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         )
     }
     named: dict[str, list[tuple[Any, str]]] = {}
-    for var, value, name in coded_names(model, manual):
-        if parse_quantity(name) is not None:
-            named.setdefault(var, []).append((value, name))
+    for coded, value, label in coded_names(model, manual):
+        if parse_quantity(label) is not None:
+            named.setdefault(coded, []).append((value, label))
             continue
-        words = [w for w in _phrase_words(name) if w != "and"]
-        if words and not all(w in STOP_WORDS for w in words):
-            phrases.append((var, value, tuple(stem(w) for w in words), 0.95))
+        names = [w for w in _phrase_words(label) if w != "and"]
+        if names and not all(w in STOP_WORDS for w in names):
+            phrases.append((coded, value, tuple(stem(w) for w in names), 0.95))
     return Model(model, infos, phrases, start_values, frozenset(appliance), named)
 
 

@@ -244,7 +244,7 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "softer": ("soft", "soften"),
     "light": ("pale", "lighter"),
     "dark": ("darker", "deep"),
-    "low": ("lo", "quiet", "gentle", "quietest", "down"),
+    "low": ("lo", "quiet", "gentle", "quietest"),
     "high": ("hi", "full", "fast", "strong"),
     "large": ("big", "bigger", "largest", "biggest"),
     "small": ("little", "smaller", "smallest"),
