@@ -20,7 +20,7 @@ from apbot.agent.environment import Environment
 from apbot.agent.episode import Episode, TaskContext, TraceEvent
 from apbot.agent.registry import get_method
 from apbot.model.schema import ApplianceModel
-from apbot.read import Reading, read_manual
+from apbot.read import Reading, Report, read_manual
 from apbot.read.goal import GoalParseError, parse_instruction
 
 OFFLINE_NOTE = (
@@ -71,7 +71,10 @@ class Operation:
 
 
 def read_model(
-    manual: str, actions: Sequence[str], appliance_id: str = "appliance", category: str = "appliance"
+    manual: str,
+    actions: Sequence[str],
+    appliance_id: str = "appliance",
+    category: str = "appliance",
 ) -> Reading:
     """The model (and reading report) the offline reader builds from a manual's text and the
     panel's action names. Raises :class:`apbot.read.ReaderError` for text that is no manual."""
@@ -95,14 +98,16 @@ def operate(
     *,
     method: str = "apbot",
     observer: Callable[[TraceEvent], None] | None = None,
+    model: ApplianceModel | None = None,
 ) -> Operation:
     """Read the manual and the instruction, then operate ``env`` until the goal shows.
 
     ``actions`` are the environment's action names (``env.actions`` usually). An instruction
     the read model cannot satisfy is not guessed at: the operation comes back unattempted,
-    with the parser's message in ``goal_error``. ``observer`` sees every trace event live.
+    with the parser's message in ``goal_error``. ``observer`` sees every trace event live;
+    ``model`` replaces the reading of the manual (a model written or read before).
     """
-    reading = read_model(manual, actions)
+    reading = read_model(manual, actions) if model is None else Reading(model, Report([]))
     try:
         goal = read_goal(reading.model, instruction, manual)
     except GoalParseError as exc:
@@ -122,4 +127,4 @@ def operate(
         observer=observer,
     )
     episode = get_method(method).run(context, env)
-    return Operation(reading, goal, episode, notes=[OFFLINE_NOTE])
+    return Operation(reading, goal, episode, notes=[OFFLINE_NOTE] if model is None else [])

@@ -268,7 +268,12 @@ def run_task_learning(
         digest = model_digest(model) if learnt is not None or facts is None else facts.digest
         if not chosen.uses_truth:  # the oracle plans on the truth, to the stored goal
             asked = method_goal(
-                goal_mode, model, task.instruction, appliance.manual, dict(task.goal), appliance.model
+                goal_mode,
+                model,
+                task.instruction,
+                appliance.manual,
+                dict(task.goal),
+                appliance.model,
             )
     except Exception as exc:
         error = f"error: building the belief: {_describe(exc)}"
@@ -495,7 +500,11 @@ def _run_benchmark(options: BenchOptions, progress: bool) -> BenchOutcome:
             for note in notes:
                 advance.notice(note)
             settings = RunSettings(
-                str(spec), options.seed, str(options.suite), options.feedback, goal_mode,
+                str(spec),
+                options.seed,
+                str(options.suite),
+                options.feedback,
+                goal_mode,
                 options.learn,
             )
             batches = _work_batches(pending, work, settings, options.workers)
