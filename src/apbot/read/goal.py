@@ -52,7 +52,7 @@ from apbot.read.goal_text import (
     turned_off_after,
     verb_positions,
 )
-from apbot.read.goal_twins import place_twins
+from apbot.read.goal_twins import find_twins, place_twins
 from apbot.read.goal_view import (
     PARTIAL,
     Goal,
@@ -126,7 +126,7 @@ def parse_instruction(model: ApplianceModel, instruction: str, manual: str = "")
             f"{MAX_INSTRUCTION:,} are read",
         )
     view = model_view(model, manual or "")
-    text = Text.of(str(instruction))
+    text = Text.of(_joined_compounds(view, str(instruction)))
     goal: Goal = {}
     claimed: set[int] = set()
     where: dict[str, int] = {}  # the token each setting was read from
@@ -237,6 +237,7 @@ def _value_matches(view: Model, text: Text) -> list[_Match]:
     n = len(text.tokens)
     verbs = verb_positions(text)
     itself = {stem(w) for w in re.findall(r"[a-z]+", _appliance_name(view))}
+    running = {stem(n) for n, info in view.infos.items() if info.role == "running"}
     for var, value, stems, weight in view.phrases:
         info = view.infos[var]
         for i in range(n):
@@ -259,6 +260,8 @@ def _value_matches(view: Model, text: Text) -> list[_Match]:
                 continue  # "power level 8" is not the POWER mode
             if len(stems) == 1 and _names_switch(view, var, text, i):
                 continue  # "switch the light on" is the LIGHT, not a light crust
+            if len(stems) == 1 and text.stems[i] in running and not own:
+                continue  # "Brew six cups", "get it brewing": the operation, not a BREW mode
             if len(stems) == 1 and _names_setting(view, var, text, i):
                 continue  # "low fan", "fan on quiet": the FAN setting, not the FAN mode
             score = len(stems) * weight * quality + 0.5 * own
@@ -277,8 +280,9 @@ def _names_switch(view: Model, var: str, text: Text, i: int) -> bool:
         own = own_stems(info)
         if name == var or info.role != "switch" or text.stems[i] not in own:
             continue
-        if text.word(i + 1) in ("on", "off") or phrase_here(text, i, own - {text.stems[i]}):
-            return True
+        said = text.word(i + 1) in ("on", "off") and text.word(i + 2) not in ("a", "an", "the")
+        if said or phrase_here(text, i, own - {text.stems[i]}):
+            return True  # "switch the light on" (not "AUTO on a half load")
     return False
 
 
@@ -396,6 +400,21 @@ _SPLIT_VERBS = frozenset({stem("keep")})
 _SYNONYM_STEMS: dict[str, frozenset[str]] = {
     stem(word): frozenset(stem(w) for w in others) for word, others in SYNONYMS.items()
 }
+
+
+_HYPHEN_PAIR = re.compile(r"\b([A-Za-z]{2,})-([A-Za-z]{2,})\b")
+
+
+def _joined_compounds(view: Model, instruction: str) -> str:
+    """ "pre-infusion" for a PREINFUSION key: a hyphenated word the model writes as one."""
+    words = {w for info in view.infos.values() for w in own_stems(info)}
+    words |= {s for _var, _value, stems, _weight in view.phrases for s in stems}
+
+    def join(match: re.Match[str]) -> str:
+        whole = match[1] + match[2]
+        return whole if stem(whole) in words else match[0]
+
+    return _HYPHEN_PAIR.sub(join, instruction)
 
 
 def _pronoun_ones(text: Text, claimed: set[int]) -> None:
@@ -829,10 +848,11 @@ def _superlatives(
     view: Model, text: Text, goal: Goal, claimed: set[int], where: dict[str, int]
 ) -> None:
     """ "the lowest temperature", "full power", "a dark crust" on an ordered numeric setting."""
+    marks = {m for twins in find_twins(view.model) for m in twins.marks.values()}
     for k, token in enumerate(text.tokens):
         word = token.text
-        if k in claimed:
-            continue
+        if k in claimed or word in marks:
+            continue  # "the top zone" on an oven with a top and a bottom
         end = None
         if word in LOWEST:
             end = 0

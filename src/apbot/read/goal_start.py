@@ -250,7 +250,8 @@ def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = Fals
     if not running:
         # no running state of its own: the appliance works while it is on ("start cooling")
         power = [n for n, i in view.infos.items() if i.role == "power" and n not in goal]
-        if power and _says_start(text, None, _named_starts(view, text), verbs=False):
+        said = _says_start(text, None, _named_starts(view, text), verbs=False)
+        if power and (said or _running_now(text)):
             goal[power[0]] = view.infos[power[0]].on
         return
     if any(n in goal for n in running):
@@ -260,6 +261,9 @@ def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = Fals
     started_by = _procedure_start(view, goal)
     if start is None and started_by is not None:
         start = True  # the procedure for a goal setting ends by starting (TIME DEFROST)
+    delayed = any(view.infos[n].timing == "delay" for n in goal)
+    if start is None and (counting or delayed) and _timer_mode(view, goal):
+        return  # a countdown armed by choosing the TIMER mode: it starts by itself
     if start is None and counting:
         start = True  # "ready in 15 hours": only a started countdown ends then
     if start is None:
@@ -278,6 +282,19 @@ def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = Fals
         elif info.var.depends_on is None:  # its start value (a dependent one has no own)
             domain = build_domain(info.var)
             goal[name] = domain.values[domain.initial]
+
+
+def _timer_mode(view: Model, goal: Goal) -> bool:
+    """A mode setting with a TIMER (or DELAY) value arms a delayed start: set it, when the
+    goal has not chosen that setting otherwise."""
+    for info in view.infos.values():
+        if info.role != "setting" or not isinstance(info.var, DiscreteVariable):
+            continue
+        armed = [v for v in info.values if concept(str(v)) in (concept("timer"), concept("delay"))]
+        if len(armed) == 1 and goal.get(info.name) in (None, *armed):
+            goal[info.name] = armed[0]
+            return True
+    return False
 
 
 def _procedure_start(view: Model, goal: Goal) -> tuple[str, Any] | None:
@@ -353,6 +370,16 @@ def _setting_words(view: Model) -> frozenset[str]:
     )
 
 
+def _running_now(text: Text) -> bool:
+    """ "…, locked, and running": the appliance asked to be running (not "running low")."""
+    return any(
+        token.text == "running"
+        and text.word(k + 1) in CLAUSE_ENDS | {"", ","}
+        and not any(text.word(k - d) in _DENIALS for d in range(1, 4))
+        for k, token in enumerate(text.tokens)
+    )
+
+
 def _mode_word(view: Model, word: str) -> bool:
     """The word is a one-word value of a programme-like setting (HEAT, COOL, DRY)."""
     return any(
@@ -360,6 +387,13 @@ def _mode_word(view: Model, word: str) -> bool:
         for var, _value, stems, weight in view.phrases
         if weight >= 1.0 and view.infos[var].role == "setting"
     )
+
+
+_SET_GOING = frozenset({"going", "started", "cooking", "heating", "running"})
+_GOING = frozenset(
+    {"going", "started", "cooking", "heating", "running", "brewing", "washing", "blending"}
+    | {"pouring", "dispensing", "working", "baking", "drying"}
+)
 
 
 def _later(text: Text, k: int) -> bool:
@@ -371,7 +405,8 @@ def _later(text: Text, k: int) -> bool:
         following = text.word(j + 1)
         if following in ("a", "an"):
             following = text.word(j + 2)
-        if word in ("in", "after") and (following[:1].isdigit() or following in NUMBER_WORDS):
+        numeral = following[:1].isdigit() or following in NUMBER_WORDS | {"half", "quarter"}
+        if word in ("in", "after") and numeral:
             return True
     return False
 
@@ -424,7 +459,7 @@ def _says_start(
         word = token.text
         starts = word in _START_WORDS and k not in named
         if word in ("get", "set") and any(
-            text.word(k + d) in ("going", "started", "cooking", "heating", "running")
+            text.word(k + d) in (_GOING if word == "get" else _SET_GOING)
             for d in range(2 if word == "set" else 1, 7)
         ):
             starts = True  # "get it going", "set the rice cooking" (not "set heating at 21")
@@ -438,6 +473,8 @@ def _says_start(
             continue  # "start by itself in six hours": a timer, not now
         if _someone_else(text, k):
             continue  # "so the kids can't start it", "I'll start it myself"
+        if text.word(k - 1) in ("delayed", "delay", "timed", "auto"):
+            continue  # "arm the delayed start": the timer's name
         before = []
         for d in range(1, 4):
             if text.word(k - d) in CLAUSE_ENDS:

@@ -148,8 +148,10 @@ _LONG_REACH = frozenset({"without", "no", "don't", "dont"})
 
 
 def negative_around(text: Text, k: int) -> bool:
-    if text.word(k + 1) == "on" and not any(
-        text.word(k - d) in ("don't", "dont", "not", "never") for d in range(1, 4)
+    if (
+        text.word(k + 1) == "on"
+        and text.word(k + 2) in CLAUSE_ENDS | {",", "and", ""}
+        and not any(text.word(k - d) in ("don't", "dont", "not", "never") for d in range(1, 4))
     ):
         return False  # "with no spin at all and ECO on"
     for d in range(1, 8):

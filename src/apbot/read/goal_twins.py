@@ -34,10 +34,10 @@ _SAME: dict[str, tuple[str, ...]] = {
     "front": ("front",),
     "left": ("left",),
     "right": ("right",),
-    "upper": ("upper", "top"),
-    "top": ("upper", "top"),
-    "lower": ("lower", "bottom"),
-    "bottom": ("lower", "bottom"),
+    "upper": ("upper", "top", "above"),
+    "top": ("upper", "top", "above"),
+    "lower": ("lower", "bottom", "below", "underneath", "beneath"),
+    "bottom": ("lower", "bottom", "below", "underneath", "beneath"),
     "inner": ("inner",),
     "outer": ("outer",),
 }
@@ -73,15 +73,29 @@ def _tokens(text: str) -> list[str]:
 
 
 def _shape(model: ApplianceModel, name: str) -> str:
-    """The variable without its name, label, display and start value: twins share it."""
+    """The kind of setting (type and unit): twins are one kind, named alike. Their values may
+    differ (only the top element broils); a value goes only where the twin can take it."""
     var = model.variables[name]
-    data = var.model_dump(exclude={"label", "show", "initial", "depends_on"}, mode="json")
-    data["dependent"] = var.depends_on is not None
-    return json.dumps(data, sort_keys=True, default=str)
+    return json.dumps([var.type, getattr(var, "unit", "")])
+
+
+_FOUND: dict[int, tuple[ApplianceModel, list[Twins]]] = {}
 
 
 def find_twins(model: ApplianceModel) -> list[Twins]:
-    """Groups of variables with one shape whose names differ by one qualifier each."""
+    """Groups of variables of one kind whose names differ by one qualifier each (remembered
+    for the last few models)."""
+    hit = _FOUND.get(id(model))
+    if hit is not None and hit[0] is model:
+        return hit[1]
+    found = _find_twins(model)
+    if len(_FOUND) >= 32:
+        _FOUND.pop(next(iter(_FOUND)))
+    _FOUND[id(model)] = (model, found)
+    return found
+
+
+def _find_twins(model: ApplianceModel) -> list[Twins]:
     by_shape: dict[str, list[str]] = {}
     for name in model.variables:
         by_shape.setdefault(_shape(model, name), []).append(name)

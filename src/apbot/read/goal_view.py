@@ -256,6 +256,12 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
             "steriliser",
             "sterilizer",
             "hob",
+            "ac",
+            "aircon",
+            "unit",
+            "blender",
+            "dishwasher",
+            "toaster",
             "everything",
         )
     }
