@@ -247,6 +247,8 @@ def _value_matches(view: Model, text: Text) -> list[_Match]:
             end, quality = found
             if negated_before(text, i) or turned_off_after(text, end):
                 continue
+            if text.word(i - 1) in ("stay", "stays", "remain", "remains"):
+                continue  # "so the bottles stay dry": a state of the load, not the DRY cycle
             if quality < 1.0 and text.stems[end - 1] in itself and i not in verbs:
                 continue  # "turn on the air fryer": the appliance, not its AIR FRY programme
             if text.word(end) == "-" and text.word(end + 1) in ("off", "on"):
@@ -260,6 +262,8 @@ def _value_matches(view: Model, text: Text) -> list[_Match]:
                 continue  # "power level 8" is not the POWER mode
             if len(stems) == 1 and _names_switch(view, var, text, i):
                 continue  # "switch the light on" is the LIGHT, not a light crust
+            if len(stems) == 1 and _qualifies_other(view, var, text, end):
+                continue  # "manual speed 3": the speed, in its manual kind
             if len(stems) == 1 and text.stems[i] in running and not own:
                 continue  # "Brew six cups", "get it brewing": the operation, not a BREW mode
             if len(stems) == 1 and _names_setting(view, var, text, i):
@@ -284,6 +288,23 @@ def _names_switch(view: Model, var: str, text: Text, i: int) -> bool:
         if said or phrase_here(text, i, own - {text.stems[i]}):
             return True  # "switch the light on" (not "AUTO on a half load")
     return False
+
+
+def _qualifies_other(view: Model, var: str, text: Text, end: int) -> bool:
+    """The value word stands right before another setting's own name, which a number or a
+    superlative then sets ("manual speed 3", "the highest manual speed")."""
+    if end >= len(text.tokens):
+        return False
+    others = [
+        info
+        for name, info in view.infos.items()
+        if name != var and info.role == "setting" and text.stems[end] in own_stems(info)
+    ]
+    if not others:
+        return False
+    following = text.word(end + 1)
+    before = text.word(end - 2)
+    return following[:1].isdigit() or following in NUMBER_WORDS or before in LOWEST | HIGHEST
 
 
 def _appliance_name(view: Model) -> str:
@@ -414,7 +435,39 @@ def _joined_compounds(view: Model, instruction: str) -> str:
         whole = match[1] + match[2]
         return whole if stem(whole) in words else match[0]
 
-    return _HYPHEN_PAIR.sub(join, instruction)
+    text = _HALF_POWER.sub("50% power", _HYPHEN_PAIR.sub(join, instruction))
+    return _fractions(text)
+
+
+_UNIT_WORDS = r"(litres?|liters?|kilos?|kg|pounds?|lbs?|cups?|hours?|minutes?)"
+_HALF_A = re.compile(rf"\bhalf an? {_UNIT_WORDS}\b", re.IGNORECASE)
+_A_AND_A_HALF = re.compile(rf"\ban? {_UNIT_WORDS} and a half\b", re.IGNORECASE)
+_AND_PART = re.compile(
+    rf"\b(\d+|[a-z]+) and (a half|a quarter|three[- ]quarters?) {_UNIT_WORDS}\b", re.IGNORECASE
+)
+_FRACTIONS = {"a half": 0.5, "a quarter": 0.25}
+
+
+def _fractions(text: str) -> str:
+    """ "half a litre", "a kilo and a half", "three and three-quarter hours" as decimals."""
+    from apbot.model.values import NUMBER_WORDS as WORDS
+
+    text = _HALF_A.sub(lambda m: f"0.5 {m[1]}", text)
+    text = _A_AND_A_HALF.sub(
+        lambda m: m[0] if m[1].lower().startswith(("hour", "minute")) else f"1.5 {m[1]}", text
+    )
+
+    def part(m: re.Match[str]) -> str:
+        whole = float(m[1]) if m[1].isdigit() else WORDS.get(m[1].lower())
+        if whole is None:
+            return m[0]
+        fraction = _FRACTIONS.get(m[2].lower(), 0.75)
+        return f"{whole + fraction:g} {m[3]}"
+
+    return _AND_PART.sub(part, text)
+
+
+_HALF_POWER = re.compile(r"\bhalf[- ]power\b", re.IGNORECASE)
 
 
 def _pronoun_ones(text: Text, claimed: set[int]) -> None:

@@ -89,14 +89,15 @@ def coded_names(model: ApplianceModel, manual: str) -> list[tuple[str, str, str]
             for i in range(len(row) - 1)
             if _CODE.fullmatch(row[i]) or any(_key(row[i]) in v for v in variables.values())
         ]
-        best, score = None, 0.0
+        best, score = None, (0.0, 0.0)
+        codes = {_key(code) for code, _ in pairs}
         for name, values in variables.items():
-            codes = {_key(code) for code, _ in pairs}
             hits = len(codes & set(values))
-            fraction = hits / max(len(codes), len(values), 1)
+            # most of the table's codes are this setting's values; then: it covers most of them
+            fraction = (hits / max(len(codes), 1), hits / max(len(values), 1))
             if hits >= 2 and fraction > score:
                 best, score = name, fraction
-        if best is None or score < 0.4:
+        if best is None or score[0] < 0.6:
             continue
         for code, cell in pairs:
             value = variables[best].get(_key(code))
@@ -109,3 +110,37 @@ def coded_names(model: ApplianceModel, manual: str) -> list[tuple[str, str, str]
         if len(homes) == 1 and label:
             out.append((homes[0], variables[homes[0]][_key(code)], label))
     return list(dict.fromkeys(out))
+
+
+_LEGEND_VERBS = frozenset(
+    {"turns", "turn", "switches", "switch", "sets", "set", "selects", "select", "press", "presses"}
+    | {"changes", "change", "shows", "show", "starts", "start", "stops", "stop", "each", "when"}
+    | {"with", "from", "into", "this", "that", "then", "also", "only", "between", "unit's"}
+)
+
+
+def legend_words(
+    model: ApplianceModel, manual: str, labels: dict[str, list[str]]
+) -> dict[str, set[str]]:
+    """The thing a manual's key legend says a switch turns on and off: "LIGHT   Turns the
+    indoor unit's LED display on and off." — the LIGHT switch is the *display*. ``labels``:
+    setting -> its keys' labels. Only legend lines count (a key's label opening a line, then
+    its description), and only the word right before "on and off"."""
+    out: dict[str, set[str]] = {}
+    if not manual:
+        return out
+    lines = [line.strip().strip("|*-• ").strip() for line in manual.splitlines()]
+    for name, keys in labels.items():
+        for label in keys:
+            if len(label) < 3 or not label.isupper():
+                continue
+            pattern = re.compile(rf"^{re.escape(label)}(?:\s{{2,}}|\s*[:|–—]\s*)(.+)$")
+            for line in lines:
+                found = pattern.match(line)
+                if found is None:
+                    continue
+                sentence = re.split(r"[.;(]", found[1])[0]
+                thing = re.search(r"([A-Za-z]{4,})\s+on\s*(?:and|or|/)\s*off\b", sentence)
+                if thing is not None and thing[1].casefold() not in _LEGEND_VERBS:
+                    out.setdefault(name, set()).add(thing[1].casefold())
+    return out

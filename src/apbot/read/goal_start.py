@@ -59,6 +59,7 @@ def switches(
             continue
         own = own_stems(info)
         best: tuple[float, int] | None = None
+        left = False  # "leave the auto switched off": as it is, not a setting asked for
         for k in range(len(text.tokens)):
             if k in claimed or text.word(k) in STOP_WORDS:
                 continue
@@ -70,8 +71,9 @@ def switches(
                 key, weight = text.stems[k], 1.0  # "tablets" for a TABS key
             if weight <= 0 or generic(key):
                 continue
-            if key == concept("lock") and not _locking(text, k):
-                continue  # "wake the panel": the panel, not its lock
+            locks = key == concept("lock") or concept("lock") in own_concepts(info)
+            if locks and not _locking(text, k):
+                continue  # "wake the panel", "hot water": not the (hot-water) lock
             if (
                 text.stems[k] in own
                 or key in own_concepts(info)
@@ -87,9 +89,11 @@ def switches(
                 weight = 0.5  # a feature's word only says "without" ("no finish time")
             else:
                 continue
+            if any(text.word(k - d) in ("leave", "leaving") for d in range(1, 4)):
+                left = True
             if best is None or weight > best[0]:
                 best = (weight, k)
-        if best is None:
+        if best is None or left:
             continue
         k = best[1]
         last = k  # the switch's name may run over several words ("automatic keep-warm")
@@ -112,6 +116,7 @@ def switches(
 
 _LOCK_WORDS = frozenset(
     {"lock", "locked", "locks", "locking", "unlock", "unlocked", "childlock", "lockout", "keylock"}
+    | {"release", "released"}
 )
 
 
@@ -195,17 +200,27 @@ def no_values(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
     for k, token in enumerate(text.tokens):
         if token.text not in ("no", "without", "skip") or k + 1 >= len(text.tokens):
             continue
-        j = k + 1 if text.word(k + 1) not in ("the", "any", "a") else k + 2
+        j = k + 1
+        while text.word(j) in ("the", "any", "a", "using", "use"):
+            j += 1  # "without using any preset"
         if j in claimed or j >= len(text.tokens):
             continue
         for info in view.infos.values():
             if info.name in goal or info.role != "setting" or text.stems[j] not in own_stems(info):
                 continue
-            for value in domain_values(view, info, goal):
+            values = domain_values(view, info, goal)
+            for value in values:
                 words = [stem(w) for w in str(value).casefold().split()]
                 if len(words) == 2 and words[0] in ("no", "without") and words[1] == text.stems[j]:
                     goal[info.name] = value
                     claimed.add(j)
+            plain = [v for v in values if str(v).casefold() in _PLAIN]
+            if info.name not in goal and len(plain) == 1 and isinstance(info.var, DiscreteVariable):
+                goal[info.name] = plain[0]  # "without any preset": the MANUAL (no preset) one
+                claimed.add(j)
+
+
+_PLAIN = frozenset({"manual", "none", "normal"})
 
 
 def _starts_at_zero(info: VarInfo) -> bool:
@@ -497,7 +512,11 @@ def _says_start(
     if positive or any(f" {w} " in joined for w in _NOW_PHRASES):
         return True
     for k, token in enumerate(text.tokens):
-        if token.text == "now" and text.word(k - 1) != "from" and text.word(k + 1) != "on":
+        if (
+            token.text == "now"
+            and text.word(k - 1) not in ("from", "for")
+            and text.word(k + 1) != "on"
+        ):
             return True
     if not verbs:
         return None
@@ -512,7 +531,7 @@ def _says_start(
             return True
         if verb in WEAK_VERBS and (k == 0 or text.word(k - 1) in (".", ";", "!")):
             if verb == stem("give") and any(
-                text.concepts[j] in settings for j in range(k2 + 1, min(k2 + 5, len(text.tokens)))
+                text.concepts[j] in settings for j in range(k2 + 1, min(k2 + 9, len(text.tokens)))
             ):
                 continue  # "Give the … dry cycle 90 minutes": a setting is given a value
             return True

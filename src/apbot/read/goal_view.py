@@ -7,6 +7,7 @@ remembered, since an agent parses many sentences against one belief.
 
 from __future__ import annotations
 
+import itertools
 import unicodedata
 from collections.abc import Iterable
 from dataclasses import dataclass, field
@@ -25,7 +26,7 @@ from apbot.model.schema import (
 )
 from apbot.model.values import parse_quantity as _parse_quantity
 from apbot.model.values import unit_of
-from apbot.read.goal_manual import coded_names
+from apbot.read.goal_manual import coded_names, legend_words
 from apbot.read.goal_vocab import (
     LETTER_WORDS,
     STOP_WORDS,
@@ -162,6 +163,8 @@ def _is_on_off(values: list[Any]) -> tuple[str, str] | None:
     lowered = [str(v).casefold() for v in values]
     if len(values) != 2:
         return None
+    if sorted(lowered) == ["locked", "unlocked"]:  # a lock: on is locked
+        return str(values[lowered.index("locked")]), str(values[lowered.index("unlocked")])
     on = next((values[i] for i, v in enumerate(lowered) if v in _ON_WORDS), None)
     off = next((values[i] for i, v in enumerate(lowered) if v in _OFF_WORDS), None)
     if on is None or off is None:
@@ -265,6 +268,18 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
             "everything",
         )
     }
+    keys: dict[str, list[str]] = {}
+    for _feature, _index, step in _steps_of(model):
+        if step.variable in infos and infos[step.variable].role == "switch":
+            keys.setdefault(step.variable, []).extend(_control_labels(model, step.actions))
+    legends = legend_words(model, manual, keys)
+    shared = {w for a, b in itertools.combinations(legends.values(), 2) for w in a & b}
+    taken = {key for info in infos.values() for key in info.vocab}
+    for name, words in legends.items():
+        for word in words - shared:
+            key = concept(word)
+            if word not in STOP_WORDS and key not in taken:
+                infos[name].vocab[key] = 0.5  # a word only this key's legend in the manual has
     named: dict[str, list[tuple[Any, str]]] = {}
     for coded, value, label in coded_names(model, manual):
         if parse_quantity(label) is not None:
@@ -332,6 +347,7 @@ def _mark_power_and_running(model: ApplianceModel, infos: dict[str, VarInfo]) ->
                 found is not None
                 and isinstance(found.var, DiscreteVariable)
                 and found.role != "power"
+                and concept("lock") not in found.vocab
                 and (_operation(target or "") or found.role == "switch")
             ):
                 found.role = "running"

@@ -90,7 +90,7 @@ _GROUPS: tuple[tuple[str, ...], ...] = (
     ("dry", "drying", "dryer"),
     ("sterilize", "steam", "sterilise", "sanitize", "uv"),
     ("humidity", "rh", "humid", "humidistat"),
-    ("fan", "airflow", "air", "blower"),
+    ("fan", "airflow", "air", "blower", "convection"),
     ("power", "watt", "watts", "wattage", "kw", "kilowatt"),
     ("level", "setting", "mark"),
     ("size", "loaf", "portion", "amount", "weight"),
@@ -103,6 +103,8 @@ _GROUPS: tuple[tuple[str, ...], ...] = (
     ("texture", "firmness"),
     ("awake", "wake", "woken", "wakeup"),
     ("auto", "automatic", "automatically"),
+    ("swing", "sweep", "oscillate", "oscillation", "oscillating"),
+    ("rotate", "rotation", "rotisserie", "spit"),
 )
 _CANON: dict[str, str] = {}
 for _group in _GROUPS:
@@ -262,6 +264,7 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "fish": ("salmon", "cod", "seafood", "prawns", "shrimp"),
     "vegetables": ("veg", "veggies", "vegetable"),
     "store": ("storage", "stored"),
+    "eco": ("economy", "economical", "saving"),
     "storage": ("store", "storing"),
 }
 # Counts written as adverbs ("rinse twice").
