@@ -8,7 +8,8 @@ from pathlib import Path
 import pytest
 
 from apbot.bench.results import RESULTS_FILE, read_records
-from apbot.bench.runner import BenchError, BenchOptions, run_benchmark, run_one
+from apbot.bench.reading import model_digest
+from apbot.bench.runner import BenchError, BenchOptions, cached_suite, run_benchmark, run_one
 
 
 def _options(tmp_path: Path, **changes: object) -> BenchOptions:
@@ -49,6 +50,8 @@ def test_a_goal_read_on_the_true_model_is_judged_exact_and_the_oracle_keeps_the_
     assert record.parsed_goal == {"temperature": 80, "heating": "on"}
     oracle = run_one("oracle", "read", 0, "kettle_1", "t01", "bundled", goal="read")
     assert oracle.success and oracle.goal_mode == "given" and oracle.parsed_goal is None
+    truth = cached_suite("bundled").get("kettle_1").model
+    assert oracle.belief_hash == model_digest(truth) and oracle.belief_diff == []
 
 
 def test_an_unreadable_instruction_fails_the_task_with_the_parsers_words() -> None:

@@ -193,7 +193,7 @@ def run_item(
         belief_of=lambda s: _belief(settings.suite, appliance.id, s, settings.seed),
         feedback=settings.feedback,
         goal_mode=settings.goal,
-        facts=_about_belief(settings.suite, appliance.id, spec, settings.seed),
+        facts=lambda: _about_belief(settings.suite, appliance.id, spec, settings.seed),
         learnt=learnt,
         index=index,
     )
@@ -232,7 +232,7 @@ def run_task_learning(
     belief_of: Callable[[BeliefSpec], tuple[ApplianceModel, Any]] | None = None,
     feedback: FeedbackMode = "display",
     goal_mode: GoalMode = "given",
-    facts: BeliefFacts | None = None,
+    facts: Callable[[], BeliefFacts] | None = None,
     learnt: ApplianceModel | None = None,
     index: int = 0,
 ) -> tuple[TaskRecord, ApplianceModel | None]:
@@ -256,6 +256,7 @@ def run_task_learning(
     context: TaskContext | None = None
     asked = MethodGoal(dict(task.goal))
     digest = ""
+    about: BeliefFacts | None = None
     try:
         if chosen.uses_truth:
             model, faults = appliance.model, ()
@@ -265,7 +266,8 @@ def run_task_learning(
             model, faults = belief_of(spec)
         else:
             model, faults = belief_model(appliance, str(spec), seed)
-        digest = model_digest(model) if learnt is not None or facts is None else facts.digest
+        about = facts() if facts is not None and learnt is None and not chosen.uses_truth else None
+        digest = about.digest if about is not None else model_digest(model)
         if not chosen.uses_truth:  # the oracle plans on the truth, to the stored goal
             asked = method_goal(
                 goal_mode,
@@ -333,7 +335,7 @@ def run_task_learning(
         parsed_goal=asked.parsed,
         goal_exact=asked.exact,
         belief_hash=digest,
-        belief_diff=list(facts.differences) if facts is not None and learnt is None else [],
+        belief_diff=list(about.differences) if about is not None else [],
         learnt_from=index if learnt is not None else 0,
     )
     return record, episode.belief
