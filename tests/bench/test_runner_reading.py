@@ -7,8 +7,8 @@ from pathlib import Path
 
 import pytest
 
-from apbot.bench.results import RESULTS_FILE, read_records
 from apbot.bench.reading import model_digest
+from apbot.bench.results import RESULTS_FILE, read_records
 from apbot.bench.runner import BenchError, BenchOptions, cached_suite, run_benchmark, run_one
 
 

@@ -4,6 +4,8 @@ start convention, and what is not a start."""
 from __future__ import annotations
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from apbot.bench.runner import cached_suite
 from apbot.read.goal import parse_instruction
@@ -75,3 +77,20 @@ def test_run_together_names_and_short_forms() -> None:
     goal = _goal("dishwasher_2", "Eco 50 with varioSpeed and ExtraDry")
     assert goal["vario_speed"] == "on" and goal["extra_dry"] == "on"
     assert _goal("dishwasher_3", "Eco with tablets")["tabs"] == "on"
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    st.text(alphabet=st.sampled_from(list("| -*:1234PA\nabc LIGHTonf.%")), max_size=300),
+    st.text(max_size=80),
+)
+def test_any_manual_and_sentence_give_a_goal_or_a_clear_error(manual: str, text: str) -> None:
+    from apbot.read.goal import GoalParseError
+
+    model = cached_suite("bundled").get("bread_maker_1").model
+    try:
+        goal = parse_instruction(model, text, manual)
+    except GoalParseError as exc:
+        assert exc.words is not None and exc.reason
+    else:
+        assert set(goal) <= set(model.variables)
