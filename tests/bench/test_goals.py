@@ -26,11 +26,19 @@ def test_a_read_goal_is_parsed_against_the_belief_and_judged_under_the_alignment
     assert same_goal(truth, truth, read.parsed or {}, wrong) is False
 
 
-def test_an_instruction_the_belief_cannot_satisfy_gives_no_goal_and_says_why() -> None:
+def test_a_value_the_belief_lacks_is_handed_over_as_said_and_noted() -> None:
     appliance = cached_suite("bundled").get("kettle_1")
     task = appliance.tasks[0]
     asked = method_goal(
         "read", appliance.model, "Heat it to 120 degrees", "", task.goal, appliance.model
     )
+    assert asked.goal == {"temperature": 120, "heating": "on"} and asked.exact is False
+    assert asked.outside and asked.outside[0].startswith("'120 degrees': no setting")
+
+
+def test_an_instruction_that_cannot_be_read_gives_no_goal_and_says_why() -> None:
+    appliance = cached_suite("bundled").get("kettle_1")
+    task = appliance.tasks[0]
+    asked = method_goal("read", appliance.model, "x" * 6000, "", task.goal, appliance.model)
     assert asked.goal is None and asked.exact is False
-    assert "cannot read the instruction: '120 degrees'" in asked.error
+    assert "cannot read the instruction" in asked.error and "characters" in asked.error

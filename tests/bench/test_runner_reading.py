@@ -59,12 +59,17 @@ def test_an_unreadable_instruction_fails_the_task_with_the_parsers_words() -> No
     from apbot.bench.suite import Task
 
     appliance, task = _find("bundled", "kettle_1", "t01")
-    odd = Task.model_construct(
-        id="t01", instruction="Heat it to 120 degrees", goal=task.goal, optimal_steps=None
-    )
+    odd = Task.model_construct(id="t01", instruction="x" * 6000, goal=task.goal, optimal_steps=None)
     record = run_task(appliance, odd, "apbot", "true", goal="read")
     assert not record.success and record.parsed_goal is None and record.execution_steps == 0
-    assert "cannot read the instruction: '120 degrees'" in record.failure
+    assert "cannot read the instruction" in record.failure
+    # a value the belief lacks is handed over as said: the agent looks for it, then says so
+    hot = Task.model_construct(
+        id="t01", instruction="Heat it to 120 degrees", goal=task.goal, optimal_steps=None
+    )
+    record = run_task(appliance, hot, "apbot", "true", goal="read")
+    assert record.parsed_goal == {"temperature": 120, "heating": "on"} and record.goal_outside
+    assert not record.success and "temperature=120 is not a value" in record.failure
 
 
 def test_a_directory_does_not_mix_goal_modes_or_learning(tmp_path: Path) -> None:

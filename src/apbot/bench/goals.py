@@ -2,8 +2,11 @@
 
 - ``read`` (the default) — the offline goal parser reads the task's instruction against the
   method's own belief (:func:`apbot.read.goal.parse_instruction`, with the manual for coded
-  values): what a robot with no LLM would do. An instruction the parser cannot map onto the
-  belief gives no goal, and the task fails with the parser's message.
+  values): what a robot with no LLM would do. A quantity the belief has no value for is still
+  handed over as said, to the setting of its kind the words name (a belief read from a manual
+  may lack a value the appliance has; the closed loop looks for it), and the parser's reason
+  is recorded; an instruction it cannot read at all gives no goal, and the task fails with the
+  parser's message.
 - ``given`` — the task's stored goal, in the truth's names (the figures before reading landed).
 
 Either way success is judged on the true simulator against the stored goal. Whether the parsed
@@ -58,7 +61,7 @@ class MethodGoal:
     parsed: dict[str, Any] | None = None
     error: str = ""
     exact: bool | None = None
-    extra: dict[str, Any] = field(default_factory=dict)
+    outside: list[str] = field(default_factory=list)  # values kept though the belief lacks them
 
 
 def method_goal(
@@ -74,11 +77,13 @@ def method_goal(
         return MethodGoal(dict(stored))
     from apbot.read.goal import GoalParseError, parse_instruction
 
+    outside: list[str] = []
     try:
-        parsed = parse_instruction(belief, instruction, manual)
+        parsed = parse_instruction(belief, instruction, manual, outside=outside)
     except GoalParseError as exc:
         return MethodGoal(None, None, f"cannot read the instruction: {exc}", exact=False)
-    return MethodGoal(dict(parsed), dict(parsed), exact=same_goal(belief, truth, parsed, stored))
+    exact = same_goal(belief, truth, parsed, stored)
+    return MethodGoal(dict(parsed), dict(parsed), exact=exact, outside=outside)
 
 
 def same_goal(

@@ -64,6 +64,10 @@ class TaskRecord(BaseModel):
         description="the parsed goal is the stored one under the reader's alignment (judged "
         "with the truth; never shown to the method)",
     )
+    goal_outside: list[str] = Field(
+        default_factory=list,
+        description="parts of the read goal the belief has no value for, handed over as said",
+    )
     belief_hash: str = Field(default="", description="sha256 of the model the method started from")
     belief_diff: list[str] = Field(
         default_factory=list, description="a read belief's differences from the truth"

@@ -334,6 +334,7 @@ def run_task_learning(
         goal_mode=goal_mode if not chosen.uses_truth else "given",
         parsed_goal=asked.parsed,
         goal_exact=asked.exact,
+        goal_outside=list(asked.outside),
         belief_hash=digest,
         belief_diff=list(about.differences) if about is not None else [],
         learnt_from=index if learnt is not None else 0,

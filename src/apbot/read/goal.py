@@ -91,6 +91,8 @@ class GoalParseError(ValueError):
     def __init__(self, words: str, reason: str) -> None:
         self.words = words
         self.reason = reason
+        self.setting: str | None = None  # the setting it would go to, when there is one
+        self.asked: Any = None  # the value as said, in that setting's terms
         super().__init__(f"{words!r}: {reason}")
 
 
@@ -107,12 +109,20 @@ class _Match:
     score: float
 
 
-def parse_instruction(model: ApplianceModel, instruction: str, manual: str = "") -> Goal:
+def parse_instruction(
+    model: ApplianceModel,
+    instruction: str,
+    manual: str = "",
+    outside: list[str] | None = None,
+) -> Goal:
     """The goal an instruction asks for, over ``model``'s variables, values canonical.
 
     ``manual``, when given, names the values the panel shows only as codes ("2" is the French
     loaf; :mod:`apbot.read.goal_manual`). Raises :class:`GoalParseError` when the instruction
-    asks for a value the model lacks.
+    asks for a value the model lacks — unless ``outside`` is given: then a quantity the model
+    has no value for is still given to the setting of its kind the words name, as said (a
+    belief read from a manual may lack the value the appliance has, and the closed loop looks
+    for it), and the reason it would have been refused is appended to ``outside``.
 
     >>> from apbot.examples import load_example
     >>> goal = parse_instruction(load_example("washing_machine"), "Wool at 30 degrees, no prewash")
@@ -139,7 +149,7 @@ def parse_instruction(model: ApplianceModel, instruction: str, manual: str = "")
     _restated_codes(view, text, goal, claimed)
     _pronoun_ones(text, claimed)
     mentions = _distinct(find_mentions(text.tokens, skip=claimed))
-    counting = _assign_mentions(view, text, mentions, goal, claimed, where)
+    counting = _assign_mentions(view, text, mentions, goal, claimed, where, outside)
     _superlatives(view, text, goal, claimed, where)
     zero_settings(view, text, goal, claimed, where)
     no_values(view, text, goal, claimed)
@@ -148,8 +158,13 @@ def parse_instruction(model: ApplianceModel, instruction: str, manual: str = "")
     entry_switches(view, goal)
     boil(view, text, goal)
     power_and_running(view, text, goal, counting)
-    _unknown_values(view, text, goal, claimed)
-    return _checked(view, goal)
+    try:
+        _unknown_values(view, text, goal, claimed)
+    except GoalParseError as exc:
+        if outside is None:
+            raise
+        outside.append(str(exc))
+    return _checked(view, goal, outside)
 
 
 _KIND_WORDS = frozenset(
@@ -516,6 +531,7 @@ def _assign_mentions(
     goal: Goal,
     claimed: set[int],
     where: dict[str, int],
+    outside: list[str] | None = None,
 ) -> bool:
     """Give each quantity to the open setting it fits best. True when a delay was set relative
     to now ("ready in 15 hours", "3 hours from now"): a countdown that must be started."""
@@ -558,7 +574,14 @@ def _assign_mentions(
             used.add(mi)
     for mi, mention in enumerate(mentions):
         if mi not in used:
-            _unplaced(view, text, mention, goal)
+            try:
+                _unplaced(view, text, mention, goal)
+            except GoalParseError as exc:
+                if outside is None or exc.setting is None:
+                    raise
+                goal[exc.setting] = exc.asked  # as said: the appliance may have it
+                where[exc.setting] = mention.start
+                outside.append(str(exc))
     return counting
 
 
@@ -894,7 +917,23 @@ def _unplaced(view: Model, text: Text, mention: Mention, goal: Goal) -> None:
         where = f" when {parent} is {goal[parent]!r}" if parent and parent in goal else ""
         reason = f"no setting of this model takes it; {near} can be {preview(values, quote=False)}"
         reason += where
-    raise GoalParseError(text.span(mention.start, mention.end), reason)
+    error = GoalParseError(text.span(mention.start, mention.end), reason)
+    error.setting, error.asked = near, _as_said(info, mention)
+    if error.asked is None:
+        error.setting = None
+    raise error
+
+
+def _as_said(info: VarInfo, mention: Mention) -> Any:
+    """The quantity as the user said it, in the setting's own terms (None: no such terms)."""
+    var = info.var
+    if isinstance(var, TimeVariable) and mention.kind in ("duration", "clock"):
+        return format_hms(round(mention.value))
+    if isinstance(var, NumericVariable):
+        number = _number_for(info, unit_text(var), mention)
+        if number is not None:
+            return int(number) if float(number).is_integer() else round(number, 3)
+    return None
 
 
 def _superlatives(
@@ -998,13 +1037,19 @@ def _ordered_values(values: list[Any]) -> list[Any]:
     return [v for _size, v in sorted(sized, key=lambda pair: pair[0])]
 
 
-def _checked(view: Model, goal: Goal) -> Goal:
-    """Normalise every value against its variable (the programme's case for a setting)."""
+def _checked(view: Model, goal: Goal, outside: list[str] | None = None) -> Goal:
+    """Normalise every value against its variable (the programme's case for a setting); with
+    ``outside``, a value the variable lacks is kept as said and noted."""
     out: Goal = {}
     for name, value in goal.items():
         info = view.infos[name]
         try:
             out[name] = normalise(info.var, value)
         except ValueProblem as exc:
-            raise GoalParseError(str(value), f"not a value of {name}: {exc}") from None
+            problem = GoalParseError(str(value), f"not a value of {name}: {exc}")
+            if outside is None:
+                raise problem from None
+            out[name] = value
+            if not any(f" {name} can be" in note for note in outside):
+                outside.append(str(problem))
     return out

@@ -78,6 +78,7 @@
         out.push(table(["", "variable (belief)", "value"], task.pg.map(([n, v]) => ["", n, v]), "kv"));
       }
     }
+    if (task.go.length) out.push(line("Read goal values the belief lacks (handed over as said)", task.go.join("; ")));
     if (task.bh) out.push(line("Belief", task.bh + (task.lf ? ` · learnt over ${task.lf} earlier task(s)` : "")));
     if (task.bd.length) out.push(line("Read belief vs the truth", task.bd.join("; ")));
     const outcome = task.ok ? "success" : "failure: " + task.why;

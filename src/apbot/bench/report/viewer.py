@@ -175,6 +175,7 @@ def task_entry(record: TaskRecord, trace: int) -> dict[str, Any]:
             else None
         ),
         "gx": record.goal_exact,
+        "go": list(record.goal_outside),
         "bh": record.belief_hash,
         "bd": list(record.belief_diff),
         "lf": record.learnt_from,
