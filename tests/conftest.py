@@ -22,6 +22,20 @@ def registry_unchanged() -> Iterator[None]:
     assert after == before, f"methods left registered by this module: {set(after) - set(before)}"
 
 
+@pytest.fixture(scope="session", autouse=True)
+def read_cache(tmp_path_factory: pytest.TempPathFactory) -> Iterator[None]:
+    """Read beliefs are cached in a directory of the test session's, not the user's."""
+    import os
+
+    before = os.environ.get("APBOT_CACHE_DIR")
+    os.environ["APBOT_CACHE_DIR"] = str(tmp_path_factory.mktemp("apbot-cache"))
+    yield
+    if before is None:
+        os.environ.pop("APBOT_CACHE_DIR", None)
+    else:
+        os.environ["APBOT_CACHE_DIR"] = before
+
+
 @pytest.fixture(scope="session")
 def microwave() -> ApplianceModel:
     return load_example("microwave_keypad")

@@ -13,7 +13,7 @@ from pathlib import Path
 
 PACKAGE = Path(__file__).resolve().parents[1] / "src" / "apbot"
 ORDER = ("model", "sim", "plan", "read", "agent", "bench", "cli")
-SAME_AS = {"examples": "model", "envs": "cli", "cli": "cli"}
+SAME_AS = {"examples": "model", "envs": "cli", "cli": "cli", "operate": "agent"}
 TESTING_MAY_USE = {"model", "sim", "plan", "testing"}
 
 

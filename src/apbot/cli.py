@@ -575,19 +575,33 @@ def goal_command(
     model: ModelArg,
     instruction: Annotated[str, typer.Argument(help="What the user said, in quotes.")],
     as_json: Annotated[bool, typer.Option("--json", help="Print the goal as JSON.")] = False,
+    manual: Annotated[
+        Path | None,
+        typer.Option(
+            help="The manual, for values the panel shows only as codes (default: the "
+            "manual.md beside the model, if there is one)."
+        ),
+    ] = None,
 ) -> None:
     """Parse an instruction into a goal over MODEL's variables (the offline goal parser)."""
     from apbot.read.goal import GoalParseError, parse_instruction
 
     try:
-        belief, _source = resolve_model(model)
+        belief, source = resolve_model(model)
     except (FileNotFoundError, ModelError) as exc:
         if isinstance(exc, ModelError):
             _print_problems(exc.problems, exc.source or model)
         message = str(exc) if isinstance(exc, FileNotFoundError) else "the model is invalid"
         raise _fail(message) from None
+    beside = Path(source).parent / "manual.md"
+    text = ""
+    if manual is not None or beside.is_file():
+        try:
+            text = (manual or beside).read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError) as exc:
+            raise _fail(f"{manual or beside}: cannot read the manual ({exc})") from None
     try:
-        goal = parse_instruction(belief, instruction)
+        goal = parse_instruction(belief, instruction, text)
     except GoalParseError as exc:
         raise _fail(f"cannot read the instruction: {exc}") from None
     if as_json:
@@ -672,8 +686,25 @@ def bench(
     ] = "runs/latest",
     belief: Annotated[
         str,
-        typer.Option(help="The model methods work from: true, faulty:RATE or faulty:RATE:KIND,..."),
-    ] = "true",
+        typer.Option(
+            help="The model methods work from: read (from the manual, offline), true, "
+            "faulty:RATE or faulty:RATE:KIND,..."
+        ),
+    ] = "read",
+    goal: Annotated[
+        str,
+        typer.Option(
+            help="The goal methods get: read (parsed from the instruction against the belief) "
+            "or given (the task's stored goal). Success is judged on the stored goal either way."
+        ),
+    ] = "read",
+    learn: Annotated[
+        bool,
+        typer.Option(
+            "--learn",
+            help="Run each appliance's tasks in order, each from the belief the last one left.",
+        ),
+    ] = False,
     seed: Annotated[int, typer.Option(help="Seed for fault injection.")] = 0,
     feedback: Annotated[
         str,
@@ -695,6 +726,7 @@ def bench(
 
     from apbot.agent.registry import methods as registered
     from apbot.bench.beliefs import BeliefError
+    from apbot.bench.goals import GoalModeError
     from apbot.bench.results import ResultsError
     from apbot.bench.runner import BenchError, BenchOptions, run_benchmark
 
@@ -712,10 +744,12 @@ def bench(
         seed=seed,
         rerun=rerun,
         feedback=_feedback_mode(feedback),
+        goal=goal,
+        learn=learn,
     )
     try:
         outcome = run_benchmark(options)
-    except (BenchError, BeliefError) as exc:
+    except (BenchError, BeliefError, GoalModeError) as exc:
         raise _fail(str(exc), 2) from None
     except ResultsError as exc:
         raise _fail(str(exc)) from None
@@ -727,6 +761,10 @@ def bench(
     console.print(
         f"{outcome.ran} task(s) run, {outcome.skipped} already finished; results in {outcome.out}"
     )
+    if belief.strip() == "read" or goal.strip() == "read":
+        from apbot.operate import OFFLINE_NOTE
+
+        console.print(f"[dim]{OFFLINE_NOTE}[/dim]")
     if outcome.interrupted:
         errors.print(
             f"[yellow]stopped[/yellow] ({outcome.stopped_by}): {len(outcome.records)} finished "
@@ -843,24 +881,27 @@ def report_command(
 def run_command(
     appliance: Annotated[str, typer.Argument(help="A bundled appliance id.")],
     instruction: Annotated[
-        str, typer.Argument(help="The instruction, or a task id (t01…) of that appliance.")
+        str,
+        typer.Argument(help="What to do, in any words — or a task id (t01…) of the appliance."),
     ],
     goal: Annotated[
         list[str] | None,
         typer.Option(
             "--goal",
             "-g",
-            help="The goal as NAME=VALUE (repeatable); needed for an "
-            "instruction that is not one of the appliance's tasks.",
+            help="Give the goal as NAME=VALUE (repeatable) instead of reading it from the "
+            "instruction; names and values are the true appliance's.",
         ),
     ] = None,
     method: Annotated[str, typer.Option(help="The method to run.")] = "apbot",
     belief: Annotated[
-        str,
+        str | None,
         typer.Option(
-            help="The model the method works from: true, faulty:RATE or faulty:RATE:KIND,..."
+            help="The model the method works from: read (from the manual, offline; the "
+            "default), true (the default with -g, whose names are the truth's), faulty:RATE or "
+            "faulty:RATE:KIND,..."
         ),
-    ] = "true",
+    ] = None,
     seed: Annotated[int, typer.Option(help="Seed for fault injection.")] = 0,
     feedback: Annotated[
         str, typer.Option(help="What the method perceives: display or values.")
@@ -869,31 +910,28 @@ def run_command(
         bool, typer.Option(help="Print every exploring press, not only a count.")
     ] = False,
     parse_goal_text: Annotated[
-        bool,
-        typer.Option(
-            "--parse-goal",
-            help="For an instruction that is not one of the tasks and has no -g: read the goal "
-            "from the instruction with the offline goal parser (on the appliance's model).",
-        ),
+        bool, typer.Option("--parse-goal", hidden=True, help="The default now; ignored.")
     ] = False,
 ) -> None:
-    """Run one task live: every macro action, press, display, check and repair as it happens."""
+    """Run one instruction live: every macro action, press, display, check and repair.
+
+    The goal is read from the instruction against the method's belief (the offline goal
+    parser) unless -g gives it. A task of the appliance (its id or its instruction) is judged
+    on the true simulator against the task's stored goal; any other instruction has no stored
+    goal, so the verdict is the agent's own.
+    """
+    from apbot.bench.beliefs import BeliefError
     from apbot.bench.runner import run_task
     from apbot.bench.suite import Task
     from apbot.model.goal import parse_goal, split_assignments
+    from apbot.operate import OFFLINE_NOTE
 
     found = _bundled(appliance, 2)
     task = _task_for(found, instruction)
-    if parse_goal_text and task is None and not goal:
-        from apbot.read.goal import GoalParseError, parse_instruction
-
-        try:
-            parsed = parse_instruction(found.model, instruction)
-        except GoalParseError as exc:
-            raise _fail(f"cannot read the instruction: {exc}", 2) from None
-        if not parsed:
-            raise _fail("the instruction names no setting of this appliance", 2)
-        goal = [f"{name}={value}" for name, value in parsed.items()]
+    mode = _feedback_mode(feedback)
+    belief = belief if belief is not None else ("true" if goal else "read")
+    if belief.strip() == "read" or not goal:
+        console.print(f"[dim]{OFFLINE_NOTE}[/dim]")
     if goal:
         try:
             goal_values = split_assignments(goal)
@@ -908,23 +946,30 @@ def run_command(
             goal=goal_values,
             optimal_steps=None,
         )
-    if task is None:
-        ids = ", ".join(t.id for t in found.tasks)
-        raise _fail(
-            f"{instruction!r} is not one of {appliance}'s tasks ({ids}); give the goal "
-            "with -g NAME=VALUE (reading goals from free text comes with the reader)",
-            2,
-        )
-    console.print(f"[bold]{found.id}[/bold] · {task.instruction}")
-    console.print(f"goal: {', '.join(f'{k}={v}' for k, v in task.goal.items())}")
     printer = _LivePrinter(show_exploration)
+    if task is None:
+        _run_free(found, instruction, method, belief, seed, mode, printer)
+        return
+    console.print(f"[bold]{found.id}[/bold] · {task.instruction}")
+    console.print(f"stored goal: {', '.join(f'{k}={v}' for k, v in task.goal.items())}")
     try:
         record = run_task(
-            found, task, method, belief, seed, observer=printer, feedback=_feedback_mode(feedback)
+            found,
+            task,
+            method,
+            belief,
+            seed,
+            observer=printer,
+            feedback=mode,
+            goal="given" if goal else "read",
         )
+    except BeliefError as exc:
+        raise _fail(str(exc), 2) from None
     except (KeyError, ValueError) as exc:
         raise _fail(str(exc.args[0] if isinstance(exc, KeyError) else exc), 2) from None
     printer.flush()
+    if record.parsed_goal is not None:
+        console.print(f"read goal: {', '.join(f'{k}={v}' for k, v in record.parsed_goal.items())}")
     verdict = "[green]success[/green]" if record.success else "[red]failure[/red]"
     console.print(
         f"{verdict}: {record.reasoning_steps} reasoning steps, "
@@ -934,6 +979,50 @@ def run_command(
     if record.failure:
         console.print(f"[red]{record.failure}[/red]")
     raise typer.Exit(0 if record.success else 1)
+
+
+def _run_free(
+    found: SuiteAppliance,
+    instruction: str,
+    method: str,
+    belief: str,
+    seed: int,
+    mode: FeedbackMode,
+    printer: _LivePrinter,
+) -> None:
+    """An instruction that is none of the tasks: read its goal against the belief and run it;
+    there is no stored goal, so the agent's verdict is all there is (said so)."""
+    from apbot.agent.environment import SimulatorEnvironment
+    from apbot.bench.beliefs import BeliefError, belief_model
+    from apbot.operate import operate
+
+    try:
+        model, _faults = belief_model(found, belief, seed)
+    except (BeliefError, ValueError) as exc:
+        raise _fail(str(exc), 2) from None
+    env = SimulatorEnvironment(found.model, mode)
+    console.print(f"[bold]{found.id}[/bold] · {instruction}")
+    done = operate(
+        found.manual,
+        list(env.actions),
+        instruction,
+        env,
+        method=method,
+        observer=printer,
+        model=model,
+    )
+    printer.flush()
+    if done.goal_error:
+        raise _fail(f"cannot read the instruction: {done.goal_error}", 2)
+    console.print(f"read goal: {', '.join(f'{k}={v}' for k, v in done.goal.items())}")
+    verdict = "[green]done[/green]" if done.success else "[red]not done[/red]"
+    console.print(
+        f"{verdict} (the agent's verdict: a free instruction has no stored goal to judge by): "
+        f"{done.episode.reasoning_steps} reasoning steps, {env.steps} actions"
+    )
+    if done.episode.failure:
+        console.print(f"[red]{done.episode.failure}[/red]")
+    raise typer.Exit(0 if done.success else 1)
 
 
 def _task_for(appliance: SuiteAppliance, text: str) -> Task | None:

@@ -93,6 +93,7 @@ class ClosedLoop:
             episode.claimed_success = stop.success
             episode.failure = "" if stop.success else stop.reason
             episode.log("stop", stop.reason)
+        episode.belief = self.session.belief.model
         return episode
 
     def open_loop(self) -> None:

@@ -71,7 +71,7 @@ def evaluate_goals(
             parsed: dict[str, Any] | None
             error = ""
             try:
-                parsed = parse_instruction(appliance.model, task.instruction)
+                parsed = parse_instruction(appliance.model, task.instruction, appliance.manual)
             except GoalParseError as exc:
                 parsed, error = None, str(exc)
             ok = parsed == expected
