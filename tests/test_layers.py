@@ -1,6 +1,7 @@
 """The package's layers: nothing lower imports anything higher, checked on the source (ast).
 
-llm < model < sim < plan < read < agent < bench < cli (``envs`` beside the cli, ``examples`` with the model).
+llm < model < sim < plan < read < agent < bench < cli (``envs`` beside the cli, ``examples``
+with the model).
 ``apbot.testing`` (the random model generator, brute-force BFS) may use model, sim and plan,
 and no product module may import it: test tooling never decides a result. Every import counts,
 also one inside a function, since a lazy import is a dependency all the same.

@@ -689,7 +689,7 @@ def bench(
     """Run methods over the benchmark suite; resumable (finished tasks are skipped)."""
     import os
 
-    from apbot.agent.registry import methods as registered
+    from apbot.agent.registry import default_methods
     from apbot.bench.beliefs import BeliefError
     from apbot.bench.results import ResultsError
     from apbot.bench.runner import BenchError, BenchOptions, run_benchmark
@@ -698,7 +698,7 @@ def bench(
     chosen = _names(methods)
     options = BenchOptions(
         suite=suite,
-        methods=chosen if chosen is not None else list(registered()),
+        methods=chosen if chosen is not None else default_methods(),
         categories=_names(categories),
         appliances=_names(appliances),
         sample=sample,

@@ -7,6 +7,7 @@ so that a reader sees what went wrong.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from fnmatch import fnmatchcase
 from typing import Any
@@ -50,15 +51,24 @@ class GoalScore:
         }
 
 
+Parser = Callable[[Any, str], dict[str, Any]]
+
+
 def evaluate_goals(
     suite: Suite,
     categories: list[str] | None = None,
     appliances: list[str] | None = None,
+    parser: Parser | None = None,
+    sample: int | None = None,
 ) -> GoalScore:
     """Parse every instruction of the chosen appliances and compare with the stored goal.
 
-    ``appliances`` are ids or shell patterns (``"*_4"``); ``categories`` are category names.
+    ``appliances`` are ids or shell patterns (``"*_4"``); ``categories`` are category names;
+    ``parser`` reads (model, instruction) into a goal (default: the offline parser; it raises
+    ``GoalParseError`` or another ``ValueError`` for an instruction it cannot read);
+    ``sample``: only the first N tasks of each appliance.
     """
+    parse = parser or parse_instruction
     score = GoalScore()
     for appliance in suite.appliances:
         category = appliance.category
@@ -66,13 +76,13 @@ def evaluate_goals(
             continue
         if appliances and not any(fnmatchcase(appliance.id, p) for p in appliances):
             continue
-        for task in appliance.tasks:
+        for task in appliance.tasks[:sample]:
             expected = parse_goal(appliance.model, task.goal)
             parsed: dict[str, Any] | None
             error = ""
             try:
-                parsed = parse_instruction(appliance.model, task.instruction)
-            except GoalParseError as exc:
+                parsed = parse(appliance.model, task.instruction)
+            except (GoalParseError, ValueError) as exc:
                 parsed, error = None, str(exc)
             ok = parsed == expected
             counts = score.categories.setdefault(category, [0, 0])

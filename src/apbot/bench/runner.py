@@ -25,7 +25,7 @@ from typing import Any
 
 from apbot.agent.environment import FeedbackMode, SimulatorEnvironment
 from apbot.agent.episode import MAX_REASONING_STEPS, Episode, TaskContext, TraceEvent
-from apbot.agent.registry import get_method, methods
+from apbot.agent.registry import default_methods, get_method, methods
 from apbot.bench.beliefs import BeliefError, BeliefSpec, belief_model, parse_belief
 from apbot.bench.metrics import summarise
 from apbot.bench.progress import progress as show_progress
@@ -36,14 +36,16 @@ from apbot.bench.rundir import BenchError, exclusive, prepare, run_directory, wr
 from apbot.bench.stopping import WORKER_DIED, Stop, handling_signals
 from apbot.bench.suite import Suite, SuiteAppliance, Task, load_suite
 from apbot.bench.workers import worker_pool
+from apbot.llm.limits import BudgetSpent
 from apbot.model.goal import parse_goal
 from apbot.model.schema import ApplianceModel
 
 SUMMARY_FILE = "summary.json"
+LLM_BUDGET = "LLM budget"
 
 
 def _default_methods() -> list[str]:
-    return list(methods())
+    return default_methods()
 
 
 @dataclass
@@ -199,6 +201,8 @@ def run_task(
             model, faults = belief_of(spec)
         else:
             model, faults = belief_model(appliance, str(spec), seed)
+    except BudgetSpent:
+        raise
     except Exception as exc:
         error = f"error: building the belief: {_describe(exc)}"
     else:
@@ -218,6 +222,8 @@ def run_task(
             if not isinstance(result, Episode):
                 raise TypeError(f"method returned {type(result).__name__}, not an Episode")
             episode = result
+        except BudgetSpent:
+            raise  # not the task's failure: the run stops here and this task runs again later
         except Exception as exc:
             error = f"error: {_describe(exc)}"
     limit = context.max_reasoning_steps if context is not None else MAX_REASONING_STEPS
@@ -467,6 +473,8 @@ def _execute(
                 )
         except KeyboardInterrupt:
             stop.request("SIGINT")
+        except BudgetSpent as exc:
+            stop.request(f"{LLM_BUDGET}: {exc}")
         return
     queue = deque(_batches(pending, options.workers))
     window = options.workers * 2
@@ -491,6 +499,9 @@ def _execute(
                     records = future.result()
                 except BrokenProcessPool:  # the others fail alike, soon: keep what finished
                     stop.request(WORKER_DIED)
+                    continue
+                except BudgetSpent as exc:  # the batch's finished tasks run again next time
+                    stop.request(f"{LLM_BUDGET}: {exc}")
                     continue
                 yield from records
     finally:
