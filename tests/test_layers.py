@@ -14,7 +14,7 @@ from pathlib import Path
 
 PACKAGE = Path(__file__).resolve().parents[1] / "src" / "apbot"
 ORDER = ("llm", "model", "sim", "plan", "read", "agent", "bench", "cli")
-SAME_AS = {"examples": "model", "envs": "cli", "cli": "cli"}
+SAME_AS = {"examples": "model", "envs": "cli", "cli": "cli", "cli_llm": "cli"}
 TESTING_MAY_USE = {"model", "sim", "plan", "testing"}
 
 
