@@ -690,7 +690,11 @@ def bench(
     ] = "runs/latest",
     belief: Annotated[
         str,
-        typer.Option(help="The model methods work from: true, faulty:RATE or faulty:RATE:KIND,..."),
+        typer.Option(
+            help="The model methods work from: true, read (from the manual: by the LLM with --llm, "
+            "else offline; the goal is then read from the instruction), faulty:RATE or "
+            "faulty:RATE:KIND,..."
+        ),
     ] = "true",
     seed: Annotated[int, typer.Option(help="Seed for fault injection.")] = 0,
     feedback: Annotated[
@@ -889,7 +893,8 @@ def run_command(
     belief: Annotated[
         str,
         typer.Option(
-            help="The model the method works from: true, faulty:RATE or faulty:RATE:KIND,..."
+            help="The model the method works from: true, read (from the manual, by the LLM "
+            "with --llm), faulty:RATE or faulty:RATE:KIND,..."
         ),
     ] = "true",
     seed: Annotated[int, typer.Option(help="Seed for fault injection.")] = 0,

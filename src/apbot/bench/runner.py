@@ -205,13 +205,24 @@ def run_task(
         raise
     except Exception as exc:
         error = f"error: building the belief: {_describe(exc)}"
-    else:
+    given: dict[str, Any] = dict(task.goal)
+    reading_usage: dict[str, int] = {}
+    if not error and spec.kind == "read" and not chosen.uses_truth:
+        try:  # a read belief has its own names: the goal is read from the instruction too
+            from apbot.read.llm_goal import read_goal
+
+            given, reading_usage = read_goal(model, task.instruction)
+        except BudgetSpent:
+            raise
+        except Exception as exc:
+            error = f"error: reading the goal: {_describe(exc)}"
+    if not error:
         context = TaskContext(
             appliance.id,
             appliance.category,
             task.id,
             task.instruction,
-            dict(task.goal),
+            given,
             model,
             appliance.manual,
             tuple(env.actions),
@@ -255,7 +266,10 @@ def run_task(
         final_values=final,
         trace=[event.to_dict() for event in episode.trace],
         timings={"seconds": round(time.perf_counter() - started, 6)},
-        llm_usage=dict(episode.llm_usage),
+        llm_usage={
+            k: episode.llm_usage.get(k, 0) + reading_usage.get(k, 0)
+            for k in {**episode.llm_usage, **reading_usage}
+        },
     )
 
 

@@ -121,14 +121,17 @@ class LLMClient:
             )
         return self._openai
 
-    def settings(self, max_tokens: int | None, response_format: dict[str, Any] | None) -> dict:
-        """The generation settings of a request (all of them are in the cache key)."""
+    def settings(
+        self, max_tokens: int | None, response_format: dict[str, Any] | None, repeat: int = 0
+    ) -> dict[str, Any]:
+        """The generation settings of a request (all of them are in the cache key); repeat i
+        sends seed + i, so that a sampling server may answer each repeat differently."""
         out: dict[str, Any] = {
             "temperature": self.config.temperature,
             "max_tokens": max_tokens or self.config.max_tokens,
         }
         if self.config.seed is not None:
-            out["seed"] = self.config.seed
+            out["seed"] = self.config.seed + repeat
         if response_format is not None:
             out["response_format"] = response_format
         return out
@@ -139,10 +142,12 @@ class LLMClient:
         *,
         max_tokens: int | None = None,
         response_format: dict[str, Any] | None = None,
-        repeat: int = 0,
+        repeat: int | None = None,
     ) -> Completion:
-        """One answer to ``messages``; ``repeat`` tells apart the k answers of k repeats."""
-        settings = self.settings(max_tokens, response_format)
+        """One answer to ``messages``; ``repeat`` tells apart the k answers of k repeats
+        (default: the configuration's, ``APBOT_LLM_REPEAT``)."""
+        repeat = self.config.repeat if repeat is None else repeat
+        settings = self.settings(max_tokens, response_format, repeat)
         key = cache_key(messages, self.config.model, settings, self.config.base_url, repeat)
         stored = self.cache.get(key)
         if stored is not None:

@@ -68,6 +68,7 @@ class LLMConfig:
     max_requests: int | None = None
     max_tokens_total: int | None = None
     budget_file: Path | None = None
+    repeat: int = 0  # which of k repeats (APBOT_LLM_REPEAT): its own cache entries
 
     def describe(self) -> str:
         """The spec, without any secret (it never holds one)."""
@@ -170,6 +171,7 @@ def from_env(environ: Mapping[str, str] | None = None) -> LLMConfig | None:
         ("APBOT_LLM_CONCURRENCY", "concurrency", int),
         ("APBOT_LLM_MAX_REQUESTS", "max_requests", int),
         ("APBOT_LLM_MAX_TOKENS_TOTAL", "max_tokens_total", int),
+        ("APBOT_LLM_REPEAT", "repeat", int),
     ):
         value = _number(env, name, kind)
         if value is not None:

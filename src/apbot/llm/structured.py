@@ -64,7 +64,7 @@ def ask(
     check: Callable[[T], list[str]] | None = None,
     feedback: int = MAX_FEEDBACK,
     max_tokens: int | None = None,
-    repeat: int = 0,
+    repeat: int | None = None,
     adapter: Adapter | None = None,
 ) -> Answer[T]:
     """Ask until the answer validates and passes ``check`` (which returns error messages)."""

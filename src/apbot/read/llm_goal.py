@@ -161,7 +161,7 @@ def llm_parse_instruction(
     client: LLMClient,
     *,
     use_hint: bool = True,
-    repeat: int = 0,
+    repeat: int | None = None,
 ) -> LLMGoal:
     """Read ``instruction`` into a goal over ``model``; raises ``StructuredError`` when no
     valid answer comes within the allowed attempts."""
@@ -176,3 +176,20 @@ def llm_parse_instruction(
     )
     goal = parse_goal(model, _answer_goal(answer.value))
     return LLMGoal(goal, answer.usage, answer.attempts, hint)
+
+
+def read_goal(model: ApplianceModel, instruction: str) -> tuple[Goal, dict[str, int]]:
+    """The goal a run reads from the instruction: with the configured LLM, else (or when the
+    LLM gives no valid answer) the offline parser; and the LLM usage, record-style."""
+    from apbot.llm.client import configured_client
+    from apbot.llm.structured import StructuredError
+    from apbot.read.goal import parse_instruction
+
+    client = configured_client()
+    if client is not None:
+        try:
+            read = llm_parse_instruction(model, instruction, client)
+            return read.goal, read.usage.record()
+        except StructuredError as exc:
+            return parse_instruction(model, instruction), exc.usage.record()
+    return parse_instruction(model, instruction), {}

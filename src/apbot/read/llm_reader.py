@@ -321,3 +321,20 @@ def _stale(items: Any, variables: set[str]) -> bool:
 def _known(text: str, variables: set[str]) -> bool:
     """Every ``{name}`` the display text refers to is a variable of the model."""
     return all(name in variables for name in re.findall(r"\{([a-z][a-z0-9_]*)", text))
+
+
+def read_belief(
+    manual: str, actions: list[str], appliance_id: str, category: str
+) -> tuple[ApplianceModel, list[str]]:
+    """The belief a run reads from the manual: with the configured LLM (seeded by the offline
+    reading), else the offline reader; and notes on how it was read. The LLM's answers are in
+    the response cache, so an appliance is read once and a rerun reads it for free."""
+    from apbot.llm.client import configured_client
+
+    client = configured_client()
+    if client is None:
+        return read_manual(manual, actions, appliance_id, category).model, ["read offline"]
+    reading = llm_read_manual(manual, actions, client, appliance_id, category)
+    notes = [f"read by {client.config.describe()}"]
+    notes += [f"{stage}: the offline reading kept" for stage in reading.fallbacks]
+    return reading.model, notes
