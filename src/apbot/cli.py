@@ -923,7 +923,6 @@ def run_command(
     from apbot.model.goal import parse_goal, split_assignments
 
     config = llm_setup(llm, cache)
-    errors.print(f"[dim]{describe(config)}[/dim]")
 
     found = _bundled(appliance, 2)
     task = _task_for(found, instruction)
@@ -962,6 +961,7 @@ def run_command(
             "with -g NAME=VALUE (reading goals from free text comes with the reader)",
             2,
         )
+    errors.print(f"[dim]{describe(config)}[/dim]")
     console.print(f"[bold]{found.id}[/bold] · {task.instruction}")
     console.print(f"goal: {', '.join(f'{k}={v}' for k, v in task.goal.items())}")
     printer = _LivePrinter(show_exploration)

@@ -240,8 +240,8 @@ def test_a_worker_that_dies_stops_the_run_and_keeps_what_finished(tmp_path: Path
 
 def test_beliefs() -> None:
     assert str(parse_belief(" faulty:0.50 ")) == "faulty:0.5"
+    assert str(parse_belief("read")) == "read"
     for bad, message in (
-        ("read", "not available yet"),
         ("faulty:x", "not a number"),
         ("faulty:1.5", "between 0 and 1"),
         ("truth", "accepted: 'true'"),
@@ -253,6 +253,8 @@ def test_beliefs() -> None:
     model, faults = belief_model(appliance, "faulty:1", 3)
     assert faults and model != appliance.model
     assert belief_model(appliance, "faulty:1", 3) == (model, faults)  # seeded
+    read, notes = belief_model(appliance, "read", 0)  # no LLM configured: the offline reader
+    assert notes == ["read offline"] and read.appliance.name == "read from the manual"
 
 
 def test_the_oracle_keeps_the_run_belief_but_plans_on_the_truth() -> None:
