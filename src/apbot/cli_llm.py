@@ -171,8 +171,8 @@ def goal_parser(config: LLMConfig) -> Any:
 def serve(
     port: Annotated[int, typer.Option(help="The port on 127.0.0.1.")] = 8765,
     threads: Annotated[
-        int, typer.Option(help="Threads that generate (1 is faster on a busy machine).")
-    ] = 2,
+        int, typer.Option(help="Threads that generate (1 is far faster on a busy machine).")
+    ] = 1,
     batch_threads: Annotated[int, typer.Option(help="Threads that read the prompt.")] = 2,
     context: Annotated[int, typer.Option(help="Context length in tokens.")] = 8192,
 ) -> None:

@@ -93,6 +93,7 @@ def test_a_server_without_json_schema_gets_json_object(script: Script, config: L
     assert script.count == 2
     second = script.requests[1]["response_format"]
     assert second["type"] == "json_object" and "properties" in second["schema"]
+    assert second["schema"]["required"] == ["name", "value", "unit"]  # one order for a grammar
 
 
 def test_schema_in_the_prompt_mode(script: Script, config: LLMConfig) -> None:

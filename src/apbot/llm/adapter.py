@@ -46,6 +46,26 @@ def strict_schema(schema: dict[str, Any]) -> dict[str, Any]:
     return out
 
 
+def grammar_schema(schema: dict[str, Any]) -> dict[str, Any]:
+    """The schema for a grammar-constraining server (llama.cpp): every property required, so
+    the grammar is one fixed sequence instead of every order and subset of the optional ones
+    (seen: 0.3 tokens/s against 5–7 for the same model), and no regex patterns (the answer is
+    validated after anyway)."""
+    out = strict_schema(schema)
+
+    def visit(node: Any) -> None:
+        if isinstance(node, dict):
+            node.pop("pattern", None)
+            for value in node.values():
+                visit(value)
+        elif isinstance(node, list):
+            for value in node:
+                visit(value)
+
+    visit(out)
+    return out
+
+
 class Adapter:
     """The request parameters that ask one server for JSON of a given schema."""
 
@@ -59,7 +79,7 @@ class Adapter:
                 "json_schema": {"name": name, "schema": strict_schema(schema), "strict": True},
             }
         if self.mode == "json_object":
-            return {"type": "json_object", "schema": schema}
+            return {"type": "json_object", "schema": grammar_schema(schema)}
         return None
 
     def instructions(self, schema: dict[str, Any]) -> str:
