@@ -725,8 +725,7 @@ def bench(
 
     from apbot.cli_llm import describe, set_budget
 
-    set_budget(out, llm_requests, llm_tokens)
-    errors.print(f"[dim]{describe(llm_setup(llm, cache))}[/dim]")
+    config = llm_setup(llm, cache)
 
     from apbot.agent.registry import default_methods
     from apbot.bench.beliefs import BeliefError
@@ -748,6 +747,7 @@ def bench(
         rerun=rerun,
         feedback=_feedback_mode(feedback),
     )
+    set_budget(out, llm_requests, llm_tokens)
     try:
         outcome = run_benchmark(options)
     except (BenchError, BeliefError) as exc:
@@ -759,6 +759,7 @@ def bench(
     except KeyboardInterrupt:  # before the run took over Ctrl-C: nothing was started
         raise _fail("interrupted before any task ran", 130) from None
     _print_bench(outcome.summary)
+    errors.print(f"[dim]{describe(config)}[/dim]")
     console.print(
         f"{outcome.ran} task(s) run, {outcome.skipped} already finished; results in {outcome.out}"
     )

@@ -80,8 +80,7 @@ def set_budget(out: str, requests: int | None, tokens: int | None) -> None:
     """A budget for this invocation of a run, shared by its workers through a file."""
     if requests is None and tokens is None:
         return
-    path = Path(out) / "llm_budget.json"
-    path.parent.mkdir(parents=True, exist_ok=True)
+    path = Path(out) / "llm_budget.json"  # the directory is made when the run starts
     path.unlink(missing_ok=True)
     os.environ["APBOT_LLM_BUDGET_FILE"] = str(path)
     if requests is not None:
