@@ -36,6 +36,24 @@ def read_cache(tmp_path_factory: pytest.TempPathFactory) -> Iterator[None]:
         os.environ["APBOT_CACHE_DIR"] = before
 
 
+LLM_VARIABLES = (
+    "APBOT_LLM",
+    "APBOT_LLM_CACHE",
+    "APBOT_LLM_KEY_ENV",
+    "APBOT_LLM_BUDGET_FILE",
+    "APBOT_LLM_MAX_REQUESTS",
+    "APBOT_LLM_MAX_TOKENS_TOTAL",
+)
+
+
+@pytest.fixture(autouse=True)
+def no_llm_configured(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Tests run offline whatever the developer's shell says, and a test whose command sets
+    ``APBOT_LLM`` (``--llm`` writes it for the workers) leaves it unset for the next."""
+    for name in LLM_VARIABLES:
+        monkeypatch.setenv(name, "")
+
+
 @pytest.fixture(scope="session")
 def microwave() -> ApplianceModel:
     return load_example("microwave_keypad")

@@ -135,7 +135,7 @@ def test_run_reads_any_instruction_and_says_it_reads_offline() -> None:
         app, ["run", "kettle_1", "Warm the water to 80 degrees, please", "--belief", "true"]
     )
     text = " ".join(free.output.split())
-    assert "no LLM is configured" in text and "--llm / APBOT_LLM" in text
+    assert "no LLM is configured" in text and "--llm local" in text and "APBOT_LLM" in text
     assert "read goal: temperature=80, heating=on" in text, free.output
     assert "the agent's verdict" in text and free.exit_code == 0, free.output
     task = runner.invoke(app, ["run", "kettle_1", "t01", "--belief", "true"])

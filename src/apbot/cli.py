@@ -15,6 +15,8 @@ from rich import box
 from rich.console import Console
 from rich.table import Table
 
+from apbot.cli_llm import CacheOption, LLMOption, llm_app
+from apbot.cli_llm import setup as llm_setup
 from apbot.model.goal import GoalError
 from apbot.model.problems import ModelError, Problem
 from apbot.model.schema import ApplianceModel
@@ -31,6 +33,7 @@ app = typer.Typer(
 )
 suite_app = typer.Typer(no_args_is_help=True, help="The bundled benchmark suite.")
 app.add_typer(suite_app, name="suite")
+app.add_typer(llm_app, name="llm")
 console = Console(highlight=False, soft_wrap=True)
 errors = Console(stderr=True, highlight=False, soft_wrap=True)
 
@@ -582,9 +585,13 @@ def goal_command(
             "manual.md beside the model, if there is one)."
         ),
     ] = None,
+    llm: LLMOption = None,
+    cache: CacheOption = None,
 ) -> None:
-    """Parse an instruction into a goal over MODEL's variables (the offline goal parser)."""
+    """Parse an instruction into a goal over MODEL's variables (offline parser, or --llm)."""
     from apbot.read.goal import GoalParseError, parse_instruction
+
+    config = llm_setup(llm, cache)
 
     try:
         belief, source = resolve_model(model)
@@ -601,8 +608,13 @@ def goal_command(
         except (OSError, UnicodeDecodeError) as exc:
             raise _fail(f"{manual or beside}: cannot read the manual ({exc})") from None
     try:
-        goal = parse_instruction(belief, instruction, text)
-    except GoalParseError as exc:
+        if config is not None:
+            from apbot.cli_llm import goal_parser
+
+            goal = goal_parser(config)(belief, instruction)
+        else:
+            goal = parse_instruction(belief, instruction, text)
+    except (GoalParseError, ValueError) as exc:
         raise _fail(f"cannot read the instruction: {exc}") from None
     if as_json:
         console.print_json(json.dumps(goal))
@@ -623,8 +635,13 @@ def eval_goals(
         str | None, typer.Option(help="Comma-separated appliance ids or patterns ('*_4,*_5').")
     ] = None,
     as_json: Annotated[bool, typer.Option("--json", help="Print the scores as JSON.")] = False,
+    sample: Annotated[
+        int | None, typer.Option(help="Only the first N tasks of each appliance.", min=1)
+    ] = None,
+    llm: LLMOption = None,
+    cache: CacheOption = None,
 ) -> None:
-    """Exact accuracy of the offline goal parser on a suite's instructions (true models)."""
+    """Exact accuracy of the goal parser (offline, or --llm) on a suite's instructions."""
     from apbot.bench.goal_eval import evaluate_goals
     from apbot.bench.suite import load_suite
 
@@ -635,7 +652,13 @@ def eval_goals(
             _print_problems(exc.problems, exc.source or suite)
         message = str(exc) if isinstance(exc, FileNotFoundError) else "the suite is invalid"
         raise _fail(message) from None
-    score = evaluate_goals(loaded, _names(categories), _names(appliances))
+    config = llm_setup(llm, cache)
+    parser = None
+    if config is not None:
+        from apbot.cli_llm import goal_parser
+
+        parser = goal_parser(config)
+    score = evaluate_goals(loaded, _names(categories), _names(appliances), parser, sample)
     if score.n == 0:
         raise _fail("no tasks match the chosen categories and appliances")
     if as_json:
@@ -668,7 +691,7 @@ def _names(text: str | None) -> list[str] | None:
 def bench(
     suite: Annotated[str, typer.Option(help="'bundled' or a suite directory.")] = "bundled",
     methods: Annotated[
-        str | None, typer.Option(help="Comma-separated methods (default: all registered).")
+        str | None, typer.Option(help="Comma-separated methods (default: all that need no LLM).")
     ] = None,
     categories: Annotated[
         str | None, typer.Option(help="Comma-separated appliance categories.")
@@ -720,11 +743,22 @@ def bench(
     no_report: Annotated[
         bool, typer.Option("--no-report", help="Do not write the report.")
     ] = False,
+    llm: LLMOption = None,
+    cache: CacheOption = None,
+    llm_requests: Annotated[
+        int | None, typer.Option(help="Stop cleanly after this many LLM requests.", min=0)
+    ] = None,
+    llm_tokens: Annotated[
+        int | None, typer.Option(help="Stop cleanly after this many LLM tokens.", min=0)
+    ] = None,
 ) -> None:
     """Run methods over the benchmark suite; resumable (finished tasks are skipped)."""
     import os
 
-    from apbot.agent.registry import methods as registered
+    from apbot.agent.registry import default_methods
+    from apbot.cli_llm import describe, set_budget
+
+    config = llm_setup(llm, cache)
     from apbot.bench.beliefs import BeliefError
     from apbot.bench.goals import GoalModeError
     from apbot.bench.results import ResultsError
@@ -734,7 +768,7 @@ def bench(
     chosen = _names(methods)
     options = BenchOptions(
         suite=suite,
-        methods=chosen if chosen is not None else list(registered()),
+        methods=chosen if chosen is not None else default_methods(),
         categories=_names(categories),
         appliances=_names(appliances),
         sample=sample,
@@ -747,6 +781,7 @@ def bench(
         goal=goal,
         learn=learn,
     )
+    set_budget(out, llm_requests, llm_tokens)
     try:
         outcome = run_benchmark(options)
     except (BenchError, BeliefError, GoalModeError) as exc:
@@ -762,9 +797,7 @@ def bench(
         f"{outcome.ran} task(s) run, {outcome.skipped} already finished; results in {outcome.out}"
     )
     if belief.strip() == "read" or goal.strip() == "read":
-        from apbot.operate import OFFLINE_NOTE
-
-        console.print(f"[dim]{OFFLINE_NOTE}[/dim]")
+        console.print(f"[dim]{describe(config)}[/dim]")
     if outcome.interrupted:
         errors.print(
             f"[yellow]stopped[/yellow] ({outcome.stopped_by}): {len(outcome.records)} finished "
@@ -897,9 +930,9 @@ def run_command(
     belief: Annotated[
         str | None,
         typer.Option(
-            help="The model the method works from: read (from the manual, offline; the "
-            "default), true (the default with -g, whose names are the truth's), faulty:RATE or "
-            "faulty:RATE:KIND,..."
+            help="The model the method works from: read (from the manual, by the LLM with "
+            "--llm, else offline; the default), true (the default with -g, whose names are the "
+            "truth's), faulty:RATE or faulty:RATE:KIND,..."
         ),
     ] = None,
     seed: Annotated[int, typer.Option(help="Seed for fault injection.")] = 0,
@@ -912,6 +945,8 @@ def run_command(
     parse_goal_text: Annotated[
         bool, typer.Option("--parse-goal", hidden=True, help="The default now; ignored.")
     ] = False,
+    llm: LLMOption = None,
+    cache: CacheOption = None,
 ) -> None:
     """Run one instruction live: every macro action, press, display, check and repair.
 
@@ -923,15 +958,16 @@ def run_command(
     from apbot.bench.beliefs import BeliefError
     from apbot.bench.runner import run_task
     from apbot.bench.suite import Task
+    from apbot.cli_llm import describe
     from apbot.model.goal import parse_goal, split_assignments
-    from apbot.operate import OFFLINE_NOTE
 
+    config = llm_setup(llm, cache)
     found = _bundled(appliance, 2)
     task = _task_for(found, instruction)
     mode = _feedback_mode(feedback)
     belief = belief if belief is not None else ("true" if goal else "read")
     if belief.strip() == "read" or not goal:
-        console.print(f"[dim]{OFFLINE_NOTE}[/dim]")
+        console.print(f"[dim]{describe(config)}[/dim]")
     if goal:
         try:
             goal_values = split_assignments(goal)
@@ -1092,8 +1128,17 @@ def read_command(
     ] = None,
     out: Annotated[Path | None, typer.Option("-o", "--out", help="Write the model here.")] = None,
     as_json: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
+    llm: LLMOption = None,
+    cache: CacheOption = None,
+    from_scratch: Annotated[
+        bool,
+        typer.Option(
+            help="With --llm: no draft from the offline reader (it still gives the "
+            "action specs and guards)."
+        ),
+    ] = False,
 ) -> None:
-    """Read a manual into a model (offline, no LLM); print where each part came from."""
+    """Read a manual into a model (offline, or --llm); print where each part came from."""
     from apbot.model.load import model_to_yaml, read_text
     from apbot.read import ReaderError, read_manual
     from apbot.read.commands import action_names
@@ -1102,7 +1147,13 @@ def read_command(
         raise _fail("give exactly one of --actions FILE or --appliance ID")
     try:
         names = action_names(actions) if actions else list(_bundled(str(appliance)).model.actions)
-        reading = read_manual(read_text(manual), names, category=manual.stem)
+        config = llm_setup(llm, cache)
+        if config is None:
+            reading = read_manual(read_text(manual), names, category=manual.stem)
+        else:
+            from apbot.cli_llm import read_with_llm
+
+            reading = read_with_llm(config, read_text(manual), names, manual.stem, from_scratch)
     except (ReaderError, OSError, ModelError) as exc:
         raise _fail(str(exc)) from None
     text = model_to_yaml(reading.model)
@@ -1123,8 +1174,16 @@ def eval_reader(
         str | None, typer.Option(help="Comma-separated categories (default: all).")
     ] = None,
     as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False,
+    appliances: Annotated[
+        str | None, typer.Option(help="Comma-separated appliance ids or patterns ('*_1').")
+    ] = None,
+    llm: LLMOption = None,
+    cache: CacheOption = None,
+    from_scratch: Annotated[
+        bool, typer.Option(help="With --llm: no draft from the offline reader.")
+    ] = False,
 ) -> None:
-    """Precision and recall of the offline reader against the suite's ground-truth models."""
+    """Precision and recall of the reader (offline, or --llm) against the ground truth."""
     from apbot.bench.suite import load_suite
     from apbot.read.commands import score_table
     from apbot.read.evaluate import evaluate
@@ -1135,11 +1194,23 @@ def eval_reader(
         raise _fail(str(exc)) from None
     wanted = set(_names(categories) or [])
     chosen = [a for a in loaded.appliances if not wanted or a.category in wanted]
+    if appliances:
+        from fnmatch import fnmatchcase
+
+        patterns = _names(appliances) or []
+        chosen = [a for a in chosen if any(fnmatchcase(a.id, p) for p in patterns)]
     if not chosen:
         raise _fail(f"no appliances in categories {sorted(wanted)}")
-    result = evaluate((a.category, a.manual, list(a.model.actions), a.model) for a in chosen)
+    config = llm_setup(llm, cache)
+    extra: dict[str, Any] = {}
+    if config is None:
+        result = evaluate((a.category, a.manual, list(a.model.actions), a.model) for a in chosen)
+    else:
+        from apbot.cli_llm import evaluate_reader
+
+        result, extra = evaluate_reader(config, chosen, from_scratch)
     if as_json:
-        console.print_json(json.dumps(result.to_json()))
+        console.print_json(json.dumps({**result.to_json(), **extra}))
     else:
         console.print(score_table(result), markup=False)
 

@@ -3,8 +3,9 @@
 Someone with their own appliance — a simulator of theirs, or a robot in front of a real panel —
 has its manual, the names of the actions it accepts, and what the user said. :func:`operate`
 takes exactly those four things and returns the whole episode: the model read from the manual,
-the goal read from the sentence, the trace and the outcome. Both readings are offline (no LLM
-is configured yet); each is also available on its own (:func:`read_model`, :func:`read_goal`).
+the goal read from the sentence, the trace and the outcome. Both readings use the LLM configured
+in the environment (``APBOT_LLM``; see ``docs/llm.md``) and are offline otherwise; each is also
+available on its own (:func:`read_model`, :func:`read_goal`).
 
 Nothing here sees a ground truth: the outcome is the agent's own verdict, checked against what
 the appliance displayed. See ``docs/environments.md`` for a worked example.
@@ -25,7 +26,8 @@ from apbot.read.goal import GoalParseError, parse_instruction
 
 OFFLINE_NOTE = (
     "reading with the offline reader and goal parser: no LLM is configured "
-    "(an LLM will be set with --llm / APBOT_LLM once that layer is available)"
+    "(give --llm openai:MODEL with the key in OPENAI_API_KEY, --llm http://HOST:PORT/v1:MODEL, "
+    "or --llm local after `apbot llm serve`; or set APBOT_LLM)"
 )
 """What a user is told about how the manual and the sentence are read."""
 
@@ -76,17 +78,37 @@ def read_model(
     appliance_id: str = "appliance",
     category: str = "appliance",
 ) -> Reading:
-    """The model (and reading report) the offline reader builds from a manual's text and the
-    panel's action names. Raises :class:`apbot.read.ReaderError` for text that is no manual."""
-    return read_manual(manual, list(actions), appliance_id, category)
+    """The model (and reading report) read from a manual's text and the panel's action names:
+    by the configured LLM (seeded by the offline reading), else by the offline reader.
+    Raises :class:`apbot.read.ReaderError` for text that is no manual."""
+    from apbot.llm.client import configured_client
+
+    client = configured_client()
+    if client is None:
+        return read_manual(manual, list(actions), appliance_id, category)
+    from apbot.read.llm_reader import llm_read_manual
+
+    return llm_read_manual(manual, list(actions), client, appliance_id, category).as_reading()
 
 
 def read_goal(model: ApplianceModel, instruction: str, manual: str = "") -> dict[str, Any]:
-    """The goal a sentence asks for, over ``model``'s settings (the offline goal parser).
+    """The goal a sentence asks for, over ``model``'s settings: by the configured LLM, else (or
+    when it gives no valid answer) by the offline goal parser.
 
     Raises :class:`apbot.read.goal.GoalParseError` (a ``ValueError``) naming the words the
     model cannot satisfy and why.
     """
+    from apbot.llm.client import configured_client
+
+    client = configured_client()
+    if client is not None:
+        from apbot.llm.structured import StructuredError
+        from apbot.read.llm_goal import llm_parse_instruction
+
+        try:
+            return dict(llm_parse_instruction(model, instruction, client).goal)
+        except StructuredError:
+            pass  # the offline parser's answer stands
     return dict(parse_instruction(model, instruction, manual))
 
 
@@ -127,4 +149,14 @@ def operate(
         observer=observer,
     )
     episode = get_method(method).run(context, env)
-    return Operation(reading, goal, episode, notes=[OFFLINE_NOTE] if model is None else [])
+    return Operation(reading, goal, episode, notes=[reading_note()] if model is None else [])
+
+
+def reading_note() -> str:
+    """How the manual and the sentence are read: by which LLM, or offline and how to set one."""
+    from apbot.llm.client import configured_client
+
+    client = configured_client()
+    if client is None:
+        return OFFLINE_NOTE
+    return f"reading with the LLM {client.config.describe()}"

@@ -253,6 +253,8 @@ def test_beliefs() -> None:
     model, faults = belief_model(appliance, "faulty:1", 3)
     assert faults and model != appliance.model
     assert belief_model(appliance, "faulty:1", 3) == (model, faults)  # seeded
+    read, notes = belief_model(appliance, "read", 0)  # no LLM configured: the offline reader
+    assert notes == [] and read.appliance.name == "read from the manual"
 
 
 def test_the_oracle_keeps_the_run_belief_but_plans_on_the_truth() -> None:

@@ -6,8 +6,9 @@ A run's belief is one string (stored in every record and in ``run.json``):
 - ``"faulty:RATE"`` — the ground truth with faults injected at ``RATE`` (0 ≤ RATE ≤ 1), seeded by
   the run's seed and the appliance id, so every process builds the same faulty model;
   ``"faulty:RATE:KIND,KIND"`` injects only those fault kinds (``apbot.bench.faults.FAULT_KINDS``);
-- ``"read"`` — the model the offline reader reads from the appliance's manual and action names
-  (:mod:`apbot.bench.reading`: read once per appliance, cached on disk). The default.
+- ``"read"`` — the default: a model read from the manual and the action names, by the configured
+  LLM (``--llm``, seeded by the offline reading) or else by the offline reader
+  (:mod:`apbot.bench.reading`: read once per appliance, cached on disk).
 
 The string is parsed once up front (:func:`parse_belief`) so a typo stops the run before any work.
 
@@ -118,7 +119,6 @@ def belief_model(
         return model, [str(fault) for fault in faults]
     from apbot.bench.reading import read_belief
 
-    reading = read_belief(
-        appliance.manual, list(appliance.model.actions), appliance.id, appliance.category
-    )
+    actions = list(appliance.model.actions)  # the names grounding gives, nothing more
+    reading = read_belief(appliance.manual, actions, appliance.id, appliance.category)
     return reading.model, []

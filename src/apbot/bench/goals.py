@@ -7,6 +7,8 @@
   may lack a value the appliance has; the closed loop looks for it), and the parser's reason
   is recorded; an instruction it cannot read at all gives no goal, and the task fails with the
   parser's message.
+  With an LLM configured (``--llm``) the LLM reads it instead
+  (:func:`apbot.read.llm_goal.llm_parse_instruction`, the offline reading as its hint).
 - ``given`` — the task's stored goal, in the truth's names (the figures before reading landed).
 
 Either way success is judged on the true simulator against the stored goal. Whether the parsed
@@ -62,6 +64,7 @@ class MethodGoal:
     error: str = ""
     exact: bool | None = None
     outside: list[str] = field(default_factory=list)  # values kept though the belief lacks them
+    usage: dict[str, int] = field(default_factory=dict)  # LLM tokens spent reading it
 
 
 def method_goal(
@@ -71,12 +74,29 @@ def method_goal(
     manual: str,
     stored: dict[str, Any],
     truth: ApplianceModel,
+    offline: bool = False,
 ) -> MethodGoal:
-    """The goal for a method working from ``belief`` on a task whose stored goal is ``stored``."""
+    """The goal for a method working from ``belief`` on a task whose stored goal is ``stored``:
+    read by the configured LLM (unless ``offline``), else by the offline parser."""
     if mode == "given":
         return MethodGoal(dict(stored))
+    from apbot.llm.client import configured_client
     from apbot.read.goal import GoalParseError, parse_instruction
 
+    client = None if offline else configured_client()
+    if client is not None:  # the LLM reads it; when it gives no valid answer, the offline parser
+        from apbot.llm.structured import StructuredError
+        from apbot.read.llm_goal import llm_parse_instruction
+
+        try:
+            answer = llm_parse_instruction(belief, instruction, client)
+        except StructuredError as exc:
+            fallback = method_goal(mode, belief, instruction, manual, stored, truth, offline=True)
+            fallback.usage = exc.usage.record()
+            return fallback
+        parsed = dict(answer.goal)
+        exact = same_goal(belief, truth, parsed, stored)
+        return MethodGoal(parsed, dict(parsed), exact=exact, usage=answer.usage.record())
     outside: list[str] = []
     try:
         parsed = parse_instruction(belief, instruction, manual, outside=outside)

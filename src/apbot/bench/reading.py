@@ -96,10 +96,19 @@ def cache_key(manual: str, actions: list[str], appliance_id: str, category: str)
 def read_belief(
     manual: str, actions: list[str], appliance_id: str = "appliance", category: str = "appliance"
 ) -> ReadBelief:
-    """The model :func:`apbot.read.read_manual` reads, from the cache when it holds it.
+    """The model the configured LLM reads (seeded by the offline reading), else the model
+    :func:`apbot.read.read_manual` reads, from the cache when it holds it.
 
     Raises :class:`apbot.read.ReaderError` for a text that is not a manual at all.
     """
+    from apbot.llm.client import configured_client
+
+    client = configured_client()
+    if client is not None:  # the LLM's answers sit in its own response cache
+        from apbot.read.llm_reader import llm_read_manual
+
+        answer = llm_read_manual(manual, list(actions), client, appliance_id, category)
+        return ReadBelief(answer.model, model_digest(answer.model), len(answer.report.guesses))
     key = cache_key(manual, actions, appliance_id, category)
     folder = cache_dir()
     path = folder / "read" / f"{key}.json" if folder is not None else None

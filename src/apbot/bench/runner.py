@@ -25,7 +25,7 @@ from typing import Any
 
 from apbot.agent.environment import FeedbackMode, SimulatorEnvironment
 from apbot.agent.episode import MAX_REASONING_STEPS, Episode, TaskContext, TraceEvent
-from apbot.agent.registry import get_method, methods
+from apbot.agent.registry import default_methods, get_method, methods
 from apbot.bench.beliefs import BeliefError, BeliefSpec, belief_model, parse_belief
 from apbot.bench.goals import GoalMode, MethodGoal, method_goal, parse_goal_mode
 from apbot.bench.metrics import summarise
@@ -38,14 +38,16 @@ from apbot.bench.rundir import BenchError, exclusive, prepare, run_directory, wr
 from apbot.bench.stopping import WORKER_DIED, Stop, handling_signals
 from apbot.bench.suite import Suite, SuiteAppliance, Task, load_suite
 from apbot.bench.workers import worker_pool
+from apbot.llm.limits import BudgetSpent
 from apbot.model.goal import parse_goal
 from apbot.model.schema import ApplianceModel
 
 SUMMARY_FILE = "summary.json"
+LLM_BUDGET = "LLM budget"
 
 
 def _default_methods() -> list[str]:
-    return list(methods())
+    return default_methods()
 
 
 @dataclass
@@ -277,6 +279,8 @@ def run_task_learning(
                 dict(task.goal),
                 appliance.model,
             )
+    except BudgetSpent:
+        raise
     except Exception as exc:
         error = f"error: building the belief: {_describe(exc)}"
     else:
@@ -299,6 +303,8 @@ def run_task_learning(
                 if not isinstance(result, Episode):
                     raise TypeError(f"method returned {type(result).__name__}, not an Episode")
                 episode = result
+            except BudgetSpent:
+                raise  # not the task's failure: the run stops here and this task runs again later
             except Exception as exc:
                 error = f"error: {_describe(exc)}"
     limit = context.max_reasoning_steps if context is not None else MAX_REASONING_STEPS
@@ -330,7 +336,10 @@ def run_task_learning(
         final_values=final,
         trace=[event.to_dict() for event in episode.trace],
         timings={"seconds": round(time.perf_counter() - started, 6)},
-        llm_usage=dict(episode.llm_usage),
+        llm_usage={
+            k: episode.llm_usage.get(k, 0) + asked.usage.get(k, 0)
+            for k in {**episode.llm_usage, **asked.usage}
+        },
         goal_mode=goal_mode if not chosen.uses_truth else "given",
         parsed_goal=asked.parsed,
         goal_exact=asked.exact,
@@ -594,6 +603,8 @@ def _execute(
                     yield run_item(item, settings)[0]
         except KeyboardInterrupt:
             stop.request("SIGINT")
+        except BudgetSpent as exc:
+            stop.request(f"{LLM_BUDGET}: {exc}")
         return
     queue = deque(batches)
     window = workers * 2
@@ -614,6 +625,9 @@ def _execute(
                     records = future.result()
                 except BrokenProcessPool:  # the others fail alike, soon: keep what finished
                     stop.request(WORKER_DIED)
+                    continue
+                except BudgetSpent as exc:  # the batch's finished tasks run again next time
+                    stop.request(f"{LLM_BUDGET}: {exc}")
                     continue
                 yield from records
     finally:

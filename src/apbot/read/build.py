@@ -222,9 +222,9 @@ class Builder:
             for t in tokens:
                 for w in [x for x in words(t.replace("_", " ")) if len(x) >= 4][:1]:
                     for i, unit in enumerate(units):
-                        found = anchored_lists(unit.text, w)
-                        if found and best_prio < 1.8:
-                            best, best_prio, ev.values_at = found[0], 1.8, i
+                        anchored = anchored_lists(unit.text, w)
+                        if anchored and best_prio < 1.8:
+                            best, best_prio, ev.values_at = anchored[0], 1.8, i
         for t in tokens:
             label = self.labels[t].text if t in self.labels else ""
             if not label or best_prio >= 2.5 or not re.search(r"[A-Z]", label):
