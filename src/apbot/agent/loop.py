@@ -93,6 +93,9 @@ class ClosedLoop:
             episode.claimed_success = stop.success
             episode.failure = "" if stop.success else stop.reason
             episode.log("stop", stop.reason)
+        except Unreachable as exc:  # a repair left the belief with no plan: a declared failure
+            episode.failure = f"no plan on the belief model: {exc.reason}"
+            episode.log("stop", episode.failure)
         episode.belief = self.session.belief.model
         return episode
 
@@ -304,8 +307,11 @@ class ClosedLoop:
                 if self.guards.relax(target):
                     return self.make_plan(target)
                 if reachable:
-                    partial = self._plan(reachable)
-                    if partial.macro_actions:
+                    try:  # the repairs tried above may have changed what is reachable
+                        partial: Plan | None = self._plan(reachable)
+                    except Unreachable:
+                        partial = None
+                    if partial is not None and partial.macro_actions:
                         return partial  # progress: the rest may be reachable from there
                 if self.inspect(name):
                     return self.make_plan(target)
