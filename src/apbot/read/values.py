@@ -101,6 +101,10 @@ def find_ranges(text: str) -> list[Range]:
             continue
         lo, hi = number(m.group(1)), number(m.group(3))
         unit = unit_name(m.group(4) or m.group(2))
+        first = unit_name(m.group(2))
+        mixed = first != unit and is_time_unit(first) and is_time_unit(unit)
+        if hi is not None and mixed:  # "1 min – 3 h": in minutes
+            hi, unit = seconds(hi, unit) / seconds(1, first), first
         if lo is None or hi is None or not lo < hi:
             continue
         if not unit and m.group(0).strip().lower().split()[1:2] == ["and"]:
