@@ -76,3 +76,53 @@ def test_silence_is_a_recorded_guess_and_still_a_checked_model():
     reading = read_manual("Nothing about the keys here.", ["press_a", "press_b", "turn_c_cw"])
     assert not [p for p in check_model(reading.model) if p.severity == "error"]
     assert reading.report.guesses and all(n.line is None for n in reading.report.guesses)
+
+
+KEYPAD_HOB = """
+# The panel
+
+  ON/OFF     LEVEL     TIMER          [ display ]
+
+* **0 – 9** — number keys.
+* **LEVEL** — each press raises the power level, 1 to 9, then back to 1.
+* **TIMER** — the keypad then takes the cooking time in minutes.
+
+## Programmes
+
+PROGRAMME knob positions, clockwise from OFF: OFF · Simmer · Boil · Fry · Warm Default temp.
+
+To set the delay, press DELAY, then + / −.
+
+| Data | Value |
+|---|---|
+| Timer | 1 min – 3 h |
+"""
+KEYPAD_ACTIONS = [
+    "press_on_off", "press_level", "press_timer", "turn_programme_cw", "turn_programme_ccw",
+    "press_delay", "press_plus", "press_minus",
+    *[f"press_{d}" for d in range(10)],
+]  # fmt: skip
+
+
+def test_the_keypad_names_no_range_and_a_panel_drawing_makes_no_toggle() -> None:
+    reading = read_manual(KEYPAD_HOB, KEYPAD_ACTIONS)
+    model = reading.model
+    timer = model.variables["timer"]
+    # "0 – 9 — number keys" is the keypad; "1 min – 3 h" the timer's range, in minutes
+    assert timer.type == "time" and timer.entry is not None
+    assert str(timer.ranges[0][0]) == "00:01:00" and str(timer.ranges[-1][1]) == "03:00:00"
+    # ON/OFF in the drawing of the panel is a key's name, not "on and off" wording for TIMER
+    assert not any(
+        getattr(step.effect, "kind", step.effect) == "toggle" and step.variable == "timer"
+        for steps in model.features.values()
+        for step in steps
+    )
+
+
+def test_a_dotted_run_in_flattened_text_and_a_list_of_keys() -> None:
+    model = read_manual(KEYPAD_HOB, KEYPAD_ACTIONS).model
+    programme = next(v for n, v in model.variables.items() if "programme" in n)
+    assert programme.values == ["off", "simmer", "boil", "fry", "warm"]
+    # "DELAY, then + / −" lists keys, not the delay's values
+    delay = model.variables["delay"]
+    assert delay.type != "discrete" or "+" not in delay.values

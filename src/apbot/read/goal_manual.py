@@ -31,6 +31,7 @@ from apbot.model.schema import ApplianceModel, DiscreteVariable, NumericVariable
 _CODE = re.compile(r"[a-z]{0,2}[- ]?\d{1,3}", re.IGNORECASE)
 _BOLD = re.compile(r"\*\*\s*([A-Za-z]{0,2}[- ]?\d{1,3})\s+([^*\n]{2,40}?)\s*\*\*")
 _RULE = re.compile(r"^[\s|:\-–—=+]*$")
+_PROGRAMME = re.compile(r"menu|progr|mode|cycle|function|course|recipe|select", re.IGNORECASE)
 MAX_WORDS = 5
 """Words of a name kept (a cell that says more is a description, not a name)."""
 
@@ -41,14 +42,16 @@ def _key(text: str) -> str:
 
 def _coded_variables(model: ApplianceModel) -> dict[str, dict[str, Any]]:
     """Discrete variables whose values are mostly codes, and unitless whole-number settings
-    (a menu the reader took for a number): name -> {normalised value: value}."""
+    named for a programme (a menu the reader took for a number; not a count):
+    name -> {normalised value: value}."""
     found: dict[str, dict[str, Any]] = {}
     for name, var in model.variables.items():
         if isinstance(var, NumericVariable):
             # a menu numbered 1-15 the reader took for a number: its numbers are codes
             numbers = all_values(var)
             whole = all(float(v) == int(float(v)) for v in numbers)
-            if var.unit or not whole or not 2 <= len(numbers) <= 99:
+            named = _PROGRAMME.search(f"{name} {var.label or ''}")
+            if var.unit or not whole or not 2 <= len(numbers) <= 99 or not named:
                 continue
             found[name] = {str(int(float(v))): int(float(v)) for v in numbers}
             continue

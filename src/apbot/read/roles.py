@@ -268,6 +268,8 @@ def assign(b: Builder) -> None:
             b.note(f"features.set_{var}", "each press steps to the next value", ev.each_press_at)
         elif ev.ranges or (ev.step and ev.toggle_at is None):
             entry_keys.append(key)
+        elif digits and ev.keypad_at is not None and ev.toggle_at is None:
+            entry_keys.append(key)  # "TIMER — the keypad then takes the time in minutes"
         elif (
             set(words(key.token)) & TIME_WORDS
             and ev.toggle_at is None

@@ -198,6 +198,9 @@ def find_list(text: str) -> tuple[list[str], str] | None:
         known = bool(unit) and bool(re.fullmatch(UNIT, unit, re.IGNORECASE))
         if len(items) >= 3:
             return [f"{i} {unit}" if known else i for i in items], "list"
+    dotted = _dotted_run(text)
+    if dotted:
+        return dotted, "list"
     parts = [_clean_item(p) for p in _ARROW.split(text)]
     if len(parts) >= 3 or (len(parts) == 2 and all(_value_like(p, True) for p in parts)):
         head = parts[0].split(":")[-1].split()  # "in this order: AUTO → ...", "Clockwise: Cotton"
@@ -230,6 +233,23 @@ def find_list(text: str) -> tuple[list[str], str] | None:
             if len(head) >= 3:
                 return _dedupe(head), "list"
     return None
+
+
+def _dotted_run(text: str) -> list[str] | None:
+    """Names run together with middle dots inside a longer sentence, as text flattened from a
+    PDF prints a knob's positions ("… starting from OFF: OFF · Cottons · Eco Cottons · … ·
+    Spin/Drain Programme Default temp."): the first and last names are cut to the length most
+    of the names have."""
+    parts = re.split(r"\s*[·•]\s*", text)
+    middle = [_clean_item(p) for p in parts[1:-1]]
+    if len(middle) < 3 or not all(0 < len(p) <= 24 and len(p.split()) <= 3 for p in middle):
+        return None
+    counts = [len(p.split()) for p in middle]
+    k = max(set(counts), key=lambda c: (counts.count(c), -c))
+    first = _clean_item(" ".join(parts[0].split(":")[-1].split()[-k:]))
+    last = _clean_item(" ".join(parts[-1].split()[:k]))
+    items = [i for i in [first, *middle, last] if i]
+    return _dedupe(items)
 
 
 _CAPS_ITEM = r"[A-Z][A-Z0-9+-]*(?: [A-Z0-9+-]+){0,2}"
