@@ -198,9 +198,6 @@ def find_list(text: str) -> tuple[list[str], str] | None:
         known = bool(unit) and bool(re.fullmatch(UNIT, unit, re.IGNORECASE))
         if len(items) >= 3:
             return [f"{i} {unit}" if known else i for i in items], "list"
-    dotted = _dotted_run(text)
-    if dotted:
-        return dotted, "list"
     parts = [_clean_item(p) for p in _ARROW.split(text)]
     if len(parts) >= 3 or (len(parts) == 2 and all(_value_like(p, True) for p in parts)):
         head = parts[0].split(":")[-1].split()  # "in this order: AUTO → ...", "Clockwise: Cotton"
@@ -232,7 +229,11 @@ def find_list(text: str) -> tuple[list[str], str] | None:
                 head.append(item)
             if len(head) >= 3:
                 return _dedupe(head), "list"
-    return None
+    dotted = _dotted_run(text)  # the last resort: a dotted run inside a flattened sentence
+    return (dotted, "list") if dotted else None
+
+
+_QUANTITY = re.compile(rf"\d\s*{UNIT}\b", re.IGNORECASE)
 
 
 def _dotted_run(text: str) -> list[str] | None:
@@ -241,8 +242,14 @@ def _dotted_run(text: str) -> list[str] | None:
     Spin/Drain Programme Default temp."): the first and last names are cut to the length most
     of the names have."""
     parts = re.split(r"\s*[·•]\s*", text)
+    if len(parts) < 5 or ":" not in parts[0]:
+        return None  # a list a colon introduces, not a legend or a row of figures
     middle = [_clean_item(p) for p in parts[1:-1]]
-    if len(middle) < 3 or not all(0 < len(p) <= 24 and len(p.split()) <= 3 for p in middle):
+    names = all(
+        _value_like(p, False) and re.match(r"[A-Za-z]", p) and not _QUANTITY.search(p)
+        for p in middle
+    )
+    if not names:
         return None
     counts = [len(p.split()) for p in middle]
     k = max(set(counts), key=lambda c: (counts.count(c), -c))
