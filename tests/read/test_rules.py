@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from apbot.model.domain import all_values
 from apbot.model.validate import check_model
 from apbot.read import read_manual
 
@@ -126,3 +127,15 @@ def test_a_dotted_run_in_flattened_text_and_a_list_of_keys() -> None:
     # "DELAY, then + / −" lists keys, not the delay's values
     delay = model.variables["delay"]
     assert delay.type != "discrete" or "+" not in delay.values
+
+
+def test_a_timer_key_finds_its_range_under_the_name_its_legend_gives_it() -> None:
+    manual = """
+TIMER   Push to set the Delay Start timer.
++ / -   Used with TIMER to change the delay.
+
+SPECIFICATIONS   Rated power: 650 W   Delay start: up to 15 hours
+"""
+    model = read_manual(manual, ["press_timer", "press_plus", "press_minus"]).model
+    timer = model.variables["timer"]
+    assert max(float(v) for v in all_values(timer)) == 15  # hours, not a guessed 1–60 min

@@ -574,6 +574,16 @@ class Builder:
         ws = {w for w in words(name.replace("_", " ")) + words(label) if len(w) >= 4}
         if not ws or not _unit_from_words(name):
             return None
+        if label and label.upper() == label and ws & _TIMER_WORDS:
+            # what the key's own sentences call its time ("TIMER  Push to set the Delay
+            # Start timer"): a specification may name only that ("Delay start: up to 15 h")
+            ws |= {
+                w
+                for u in self.manual.units
+                if re.search(rf"\b{re.escape(label)}\b", u.text)
+                for w in words(u.text)
+                if w in _TIMER_WORDS
+            }
         advice = {"suggested", "recommended", "typical", "advised", "usual", "ideal"}
         limits = re.compile(r"\brange\b|\badjustable\b|\bcan be set\b|\bsettable\b|\bbetween\b")
         best: tuple[int, Range, int] | None = None
@@ -608,6 +618,9 @@ class Builder:
 
     def feature(self, name: str, steps: list[dict[str, Any]]) -> None:
         self.features[self.unique(name, self.features)] = steps
+
+
+_TIMER_WORDS = frozenset({"timer", "delay", "preset", "reserve", "finish"})
 
 
 def _all_names(items: list[str], text: str) -> bool:
