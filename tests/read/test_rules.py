@@ -139,3 +139,16 @@ SPECIFICATIONS   Rated power: 650 W   Delay start: up to 15 hours
     model = read_manual(manual, ["press_timer", "press_plus", "press_minus"]).model
     timer = model.variables["timer"]
     assert max(float(v) for v in all_values(timer)) == 15  # hours, not a guessed 1–60 min
+
+
+def test_a_range_told_by_the_first_press_and_the_longest_setting() -> None:
+    manual = """
+## Reserve
+
+1. Tap **RESERVE**. The display shows how long from now the rice will be ready.
+   The first tap gives 0.5 h; keep tapping to add more time.
+   The longest reservation is 24 h.
+"""
+    model = read_manual(manual, ["press_reserve", "press_start"]).model
+    values = [float(v) for v in all_values(model.variables["reserve"])]
+    assert values[0] == 0.5 and values[1] == 1.0 and values[-1] == 24

@@ -25,6 +25,7 @@ from apbot.read.values import (
     anchored_lists,
     bare_list,
     caps_run,
+    find_bounds,
     find_initial,
     find_list,
     find_number_run,
@@ -214,6 +215,13 @@ class Builder:
                 init = find_initial(text)
                 if init:
                     ev.initial, ev.initial_at = init, i
+        if not ev.ranges:
+            for i in sorted(self.context(tokens)):  # the sentences that follow say the rest
+                bounds = find_bounds([u.text for u in units[i : i + 4]])
+                if bounds and _fits(bounds.unit, tokens):
+                    ev.ranges, ev.range_at = [bounds], i
+                    ev.step = ev.step or (bounds.low, bounds.unit)
+                    break
         own_words = {w for t in tokens for w in words(t.replace("_", " ")) if len(w) >= 3}
         if best_prio < 2.0 and own_words:  # "Mode lamps (left to right): NORMAL CONT. FAN"
             for i, unit in enumerate(units):

@@ -119,6 +119,37 @@ def find_ranges(text: str) -> list[Range]:
     return out
 
 
+_FIRST_RE = re.compile(
+    rf"\bfirst (?:press|tap|touch|push|click|turn)\b[^.;]*?\b(?:gives|shows|sets|is|selects)\s+"
+    rf"({NUM})\s*({UNIT})(?!\w)",
+    re.IGNORECASE,
+)
+_MOST_RE = re.compile(
+    rf"\b(?:longest|maximum|highest|max\.?)\b[^.;]*?\b(?:is|of)\s+({NUM})\s*({UNIT})(?!\w)",
+    re.IGNORECASE,
+)
+
+
+def find_bounds(texts: list[str]) -> Range | None:
+    """A range told in two sentences: "the first tap gives 0.5 h" and "the longest
+    reservation is 24 h" (the first value is also the step: each tap adds time)."""
+    first = _FIRST_RE.search(texts[0]) if texts else None  # the first of them says the start
+    most = None
+    for text in texts:
+        most = most or _MOST_RE.search(text)
+    if not first or not most:
+        return None
+    low, high = number(first.group(1)), number(most.group(1))
+    unit, top = unit_name(first.group(2)), unit_name(most.group(2))
+    if low is None or high is None:
+        return None
+    if unit != top:
+        if not (is_time_unit(unit) and is_time_unit(top)):
+            return None
+        high = seconds(high, top) / seconds(1, unit)
+    return Range(low, high, unit, low) if low < high else None
+
+
 def _hmm(text: str) -> int:
     h, m = text.split(":")
     return int(h) * 3600 + int(m) * 60
