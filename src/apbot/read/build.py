@@ -220,7 +220,8 @@ class Builder:
                 bounds = find_bounds([u.text for u in units[i : i + 4]])
                 if bounds and _fits(bounds.unit, tokens):
                     ev.ranges, ev.range_at = [bounds], i
-                    ev.step = ev.step or (bounds.low, bounds.unit)
+                    if bounds.step and not ev.step:
+                        ev.step = (bounds.step, bounds.unit)
                     break
         own_words = {w for t in tokens for w in words(t.replace("_", " ")) if len(w) >= 3}
         if best_prio < 2.0 and own_words:  # "Mode lamps (left to right): NORMAL CONT. FAN"
@@ -582,7 +583,7 @@ class Builder:
         ws = {w for w in words(name.replace("_", " ")) + words(label) if len(w) >= 4}
         if not ws or not _unit_from_words(name):
             return None
-        if label and label.upper() == label and ws & _TIMER_WORDS:
+        if label and label.upper() == label and ws & (_TIMER_WORDS | {"time"}):
             # what the key's own sentences call its time ("TIMER  Push to set the Delay
             # Start timer"): a specification may name only that ("Delay start: up to 15 h")
             ws |= {

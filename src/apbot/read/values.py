@@ -132,13 +132,17 @@ _MOST_RE = re.compile(
 
 def find_bounds(texts: list[str]) -> Range | None:
     """A range told in two sentences: "the first tap gives 0.5 h" and "the longest
-    reservation is 24 h" (the first value is also the step: each tap adds time)."""
-    first = _FIRST_RE.search(texts[0]) if texts else None  # the first of them says the start
-    most = None
+    reservation is 24 h" (the first value is also the step: each tap adds time); a time's
+    longest setting alone ("the longest setting is 13 hours") is a range from 0."""
+    first = most = None
     for text in texts:
+        first = first or _FIRST_RE.search(text)
         most = most or _MOST_RE.search(text)
-    if not first or not most:
+    if not most:
         return None
+    if not first:  # "the longest setting is 13 hours": from nothing up to that
+        high, unit = number(most.group(1)), unit_name(most.group(2))
+        return Range(0, high, unit) if high and is_time_unit(unit) else None
     low, high = number(first.group(1)), number(most.group(1))
     unit, top = unit_name(first.group(2)), unit_name(most.group(2))
     if low is None or high is None:
