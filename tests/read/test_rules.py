@@ -152,3 +152,17 @@ def test_a_range_told_by_the_first_press_and_the_longest_setting() -> None:
     model = read_manual(manual, ["press_reserve", "press_start"]).model
     values = [float(v) for v in all_values(model.variables["reserve"])]
     assert values[0] == 0.5 and values[1] == 1.0 and values[-1] == 24
+
+
+def test_an_arrow_list_ends_at_the_comma_and_a_shared_pair_keeps_its_own_setting() -> None:
+    manual = """
+* **SPEED** — fan speed.
+* **▲ / ▼** — change the target humidity. While the TIMER is being set they change the hours.
+* **TIMER** — switches the unit off after a number of hours.
+
+Press **SPEED** to go to the next fan speed. The order is LOW → MED → HIGH, and from HIGH
+the next press brings you back to LOW.
+"""
+    model = read_manual(manual, ["press_speed", "press_timer", "press_up", "press_down"]).model
+    assert model.variables["speed"].values == ["low", "med", "high"]
+    assert "humidity" in model.variables  # the pair's own setting, not the timer's

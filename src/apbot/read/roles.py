@@ -879,9 +879,12 @@ def _noun(b: Builder, tokens: list[str], ev: Evidence | None = None) -> str:
     if unit in by_unit:
         return by_unit[unit]
     counts: dict[str, int] = {}
+    # another key's name ("while the TIMER is being set they change the hours") is what the
+    # pair sets for that key, not its own setting
+    keys = {lab.text.lower() for t, lab in b.labels.items() if t not in tokens and lab.text}
     for i in b.context(tokens):
         text = b.manual.units[i].text.lower()
-        for noun in SETTING_NOUNS:
+        for noun in (n for n in SETTING_NOUNS if n not in keys):
             counts[noun] = counts.get(noun, 0) + len(re.findall(rf"\b{noun}\b", text))
     best = max(SETTING_NOUNS, key=lambda n: (counts.get(n, 0), -SETTING_NOUNS.index(n)))
     return best if counts.get(best) else ""

@@ -234,6 +234,8 @@ def find_list(text: str) -> tuple[list[str], str] | None:
         if len(items) >= 3:
             return [f"{i} {unit}" if known else i for i in items], "list"
     parts = [_clean_item(p) for p in _ARROW.split(text)]
+    if len(parts) >= 3:  # "… → HIGH, and from HIGH the next press …": the list ends at the comma
+        parts[-1] = _clean_item(re.split(r"[,;]\s|\s[—–]\s", parts[-1])[0])
     if len(parts) >= 3 or (len(parts) == 2 and all(_value_like(p, True) for p in parts)):
         head = parts[0].split(":")[-1].split()  # "in this order: AUTO → ...", "Clockwise: Cotton"
         capital = [w for w in head if w.upper() == w and any(c.isalpha() for c in w)]
