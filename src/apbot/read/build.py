@@ -73,6 +73,7 @@ class Evidence:
     initial: Any = None
     initial_at: int | None = None
     keypad_at: int | None = None  # a sentence of its context speaks of the number keys
+    longest: tuple[Range, int] | None = None  # "the longest setting is 13 hours", alone
 
 
 class Builder:
@@ -219,9 +220,11 @@ class Builder:
             for i in sorted(self.context(tokens)):  # the sentences that follow say the rest
                 bounds = find_bounds([u.text for u in units[i : i + 4]])
                 if bounds and _fits(bounds.unit, tokens):
+                    if not bounds.step:  # the longest setting alone: if nothing better is read
+                        ev.longest = ev.longest or (bounds, i)
+                        continue
                     ev.ranges, ev.range_at = [bounds], i
-                    if bounds.step and not ev.step:
-                        ev.step = (bounds.step, bounds.unit)
+                    ev.step = ev.step or (bounds.step, bounds.unit)
                     break
         own_words = {w for t in tokens for w in words(t.replace("_", " ")) if len(w) >= 3}
         if best_prio < 2.0 and own_words:  # "Mode lamps (left to right): NORMAL CONT. FAN"
@@ -491,6 +494,12 @@ class Builder:
             r0 = found[0]
             self.note(
                 subject, f"range {r0.low:g}–{r0.high:g} {r0.unit} (named elsewhere)", found[1]
+            )
+        elif ev.longest is not None:
+            ranges = [ev.longest[0]]
+            r0 = ev.longest[0]
+            self.note(
+                subject, f"range {r0.low:g}–{r0.high:g} {r0.unit} (its longest)", ev.longest[1]
             )
         else:
             unit = ev.step[1] if ev.step else _unit_from_words(name)
