@@ -234,6 +234,15 @@ def test_budget_is_reported(washer: ApplianceModel) -> None:
         plan(washer, None, goal, budget=1)
 
 
+def test_a_work_limit_gives_up_on_successors_generated(washer: ApplianceModel) -> None:
+    goal = {"power": "on", "programme": "wool", "temperature": "20", "finish_in": "5 h"}
+    found = plan(washer, None, goal)
+    with pytest.raises(Unreachable, match="successors") as caught:
+        plan(washer, None, goal, work=2)
+    assert caught.value.budget_hit
+    assert len(plan(washer, None, goal, work=1_000_000)) == len(found)
+
+
 CLOCK = """
 controls: [{id: clock, label: CLOCK}, {id: hour, label: HOUR}, {id: minute, label: MIN}]
 variables:
@@ -333,6 +342,8 @@ def test_bad_arguments_name_themselves(washer: ApplianceModel) -> None:
         plan(washer, None, [42])  # type: ignore[list-item]
     with pytest.raises(ValueError, match="budget is a positive number"):
         plan(washer, None, goal, budget=0)
+    with pytest.raises(ValueError, match="work is a positive number"):
+        plan(washer, None, goal, work=0)
     assert len(plan(washer, start, goal)) == 1  # a real state is fine
 
 

@@ -12,14 +12,15 @@ from __future__ import annotations
 
 import re
 from collections.abc import Sequence
-from typing import Any
+from typing import Any, get_args
 
 from apbot.agent.infer import Dark, Unread, infer_template
 from apbot.agent.reader import DisplayReader
 from apbot.agent.repair import RepairError, set_display
 from apbot.agent.session import Session, loose
 from apbot.model.display import display_value
-from apbot.model.schema import DiscreteVariable
+from apbot.model.domain import AnyVariable
+from apbot.model.schema import DiscreteVariable, TimeStyle, TimeVariable
 
 _LAMP_GAP = re.compile(r"\s{2,}")
 
@@ -40,17 +41,20 @@ class DisplayLearner:
         if isinstance(spec.show, dict) or not spec.visible:
             return False  # a map of words per value: one wrong word is learnt by the walk
         mains = [self._main(text) for text in dict.fromkeys(texts) if text.strip()]
-        template = infer_template(
-            mains,
-            lambda value: display_value(spec, value),
-            lambda text: loose(spec, text),
-            words=isinstance(spec, DiscreteVariable),
-            known=believed,
-        )
-        if template is None or not session.budget.once("template", f"{name}:{template}"):
+        style: str | None = None
+        template = self._template(spec, mains, believed)
+        if template is None and isinstance(spec, TimeVariable):
+            # the reader may print a time in the wrong style ("0:30" for a panel's "30 min")
+            for style in (s for s in get_args(TimeStyle) if s != spec.format):
+                other = spec.model_copy(update={"format": style})
+                template = self._template(other, mains, believed)
+                if template is not None:
+                    break
+        key = f"{name}:{template}:{style}" if style else f"{name}:{template}"
+        if template is None or not session.budget.once("template", key):
             return False
         try:
-            new = set_display(model, name, template)
+            new = set_display(model, name, template, style)
         except RepairError as exc:
             session.episode.log("repair", f"could not repair how {name} is shown: {exc}")
             return False
@@ -60,8 +64,19 @@ class DisplayLearner:
             for text in mains
         ):
             return False
-        session.adopt(new, f"{name} is shown as {template!r}", session.belief.pointer())
+        how = f"{template!r} ({style})" if style else repr(template)
+        session.adopt(new, f"{name} is shown as {how}", session.belief.pointer())
         return True
+
+    @staticmethod
+    def _template(spec: AnyVariable, mains: list[str], believed: Any) -> str | None:
+        return infer_template(
+            mains,
+            lambda value: display_value(spec, value),
+            lambda text: loose(spec, text),
+            words=isinstance(spec, DiscreteVariable),
+            known=believed,
+        )
 
     def learn_word(self, name: str, trace: Sequence[Any]) -> bool:
         """A setting printed as one word per value (a lamp ``DRY+``, a screen ``ECO``) with one

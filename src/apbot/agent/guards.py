@@ -338,6 +338,7 @@ class GuardLearner:
                         self.session.belief.state,
                         {compiled.vars[v].name: others[0]},
                         self.session.config.plan_budget,
+                        self.session.config.plan_work,
                     )
                 except Unreachable:
                     continue

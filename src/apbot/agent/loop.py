@@ -14,6 +14,7 @@ physical action, exploration included, is an execution step.
 
 from __future__ import annotations
 
+from collections.abc import Hashable
 from typing import Any
 
 from apbot.agent.budget import Budget
@@ -45,7 +46,7 @@ from apbot.model.goal import GoalError
 from apbot.model.schema import DiscreteVariable, GoTo
 from apbot.model.validate import check_goal
 from apbot.plan.plan import MacroAction, Plan, Unreachable, plan
-from apbot.sim.compiled import State
+from apbot.sim.compiled import CompiledModel, State
 
 __all__ = ["AgentConfig", "run_agent"]
 
@@ -68,6 +69,8 @@ class ClosedLoop:
         self.context = context
         self.missing: dict[str, Any] = {}  # goal settings the belief lacks and has not found
         self.finding = 1  # the finder's attempt: once at the start, once with the rest set
+        self._plans_on: CompiledModel | None = None  # the belief the remembered plans are on
+        self._plans: dict[Hashable, Plan | Unreachable] = {}
         self.pending: list[MacroAction] = []  # the rest of the plan, while it holds
         self.values_before: dict[str, Any] = {}  # the belief before the current macro action
 
@@ -387,9 +390,27 @@ class ClosedLoop:
         return False
 
     def _plan(self, target: dict[str, Any]) -> Plan:
+        """The belief's plan to ``target``, remembered while the belief and its state stay the
+        same: the search is deterministic, and on a read model the loop asks the same question
+        several times (the whole goal, then goal by goal) — the costly answer is a search that
+        fails after exploring everything."""
         compiled, state = self.session.belief.compiled, self.session.belief.state
-        found = plan(compiled, state, target, self.config.plan_budget)
-        return self._programmes_first(found, target)
+        if self._plans_on is not compiled:
+            self._plans_on, self._plans = compiled, {}
+        key = (state, tuple(sorted((n, repr(v)) for n, v in target.items())))
+        known = self._plans.get(key)
+        if known is None:
+            try:
+                known = self._programmes_first(
+                    plan(compiled, state, target, self.config.plan_budget, self.config.plan_work),
+                    target,
+                )
+            except Unreachable as exc:
+                known = exc
+            self._plans[key] = known
+        if isinstance(known, Unreachable):
+            raise Unreachable(known.reason, known.budget_hit)
+        return known
 
     def _programmes_first(self, found: Plan, target: dict[str, Any]) -> Plan:
         """Among plans of the same length, the one that selects the programmes first.
@@ -406,15 +427,16 @@ class ClosedLoop:
         if not any(set(m.expect) & (set(target) - parents) for m in macros[:last]):
             return found
         compiled, budget = self.session.belief.compiled, self.config.plan_budget
+        work = self.config.plan_work
         try:
             state: State | None = self.session.belief.state
-            head = plan(compiled, state, {n: target[n] for n in parents}, budget)
+            head = plan(compiled, state, {n: target[n] for n in parents}, budget, work)
             for action in head.actions:
                 assert state is not None
                 state = compiled.apply(state, compiled.action_index[action.name], action.seconds)
                 if state is None:
                     return found
-            rest = plan(compiled, state, target, budget)
+            rest = plan(compiled, state, target, budget, work)
         except Unreachable:
             return found
         if len(head) + len(rest) != len(found):

@@ -153,11 +153,19 @@ def set_entry_format(model: ApplianceModel, name: str, fmt: str) -> ApplianceMod
     return _rebuild(data)
 
 
-def set_display(model: ApplianceModel, name: str, template: str | dict[str, str]) -> ApplianceModel:
+def set_display(
+    model: ApplianceModel,
+    name: str,
+    template: str | dict[str, str],
+    time_format: str | None = None,
+) -> ApplianceModel:
     """Print a variable through another template: as its label when the template is the usual
-    "LABEL {value}", else as its ``show`` template (``"PL{value}"``, or a word per value)."""
+    "LABEL {value}", else as its ``show`` template (``"PL{value}"``, or a word per value);
+    ``time_format``: a time variable's new display style too ("min" for "30 min")."""
     data = _dump(model)
     var = data["variables"][name]
+    if time_format is not None:
+        var["format"] = time_format
     if isinstance(template, dict):
         var["show"] = template
         return _rebuild(data)

@@ -34,7 +34,14 @@ from apbot.sim.simulator import Observation
 __all__ = ["MISSING", "UNREADABLE", "AgentConfig", "Executed", "Session", "Stop"]
 
 EXPLORE_LIMIT = 400  # presses per direction (a 1-minute clock over 6 hours; most domains < 100)
-PLAN_BUDGET = 100_000  # search nodes per plan: every bundled task needs under 4k on its truth
+# Search per plan. On the true models every plan of the bundled suite (750 tasks, stored or
+# read goals, from every state the loop plans from) needs at most 14,149 expanded states (and
+# keeps up to twice the budget in memory) and 730,469 successors generated; on a model read
+# from a manual a search past that much work is almost always one that cannot succeed (the
+# goal is out of the belief's reach and the search would walk its whole space, 2,000,000
+# successors at 20 per state), so it gives up at the work limit instead.
+PLAN_BUDGET = 100_000  # expanded states
+PLAN_WORK = 1_000_000  # successors generated
 
 
 @dataclass(frozen=True)
@@ -45,6 +52,7 @@ class AgentConfig:
     button_policy: bool = True
     explore_limit: int = EXPLORE_LIMIT
     plan_budget: int = PLAN_BUDGET
+    plan_work: int = PLAN_WORK
 
 
 class Stop(Exception):

@@ -86,6 +86,7 @@ def plan(
     state: State | None,
     goal: Mapping[str, Any] | Iterable[str],
     budget: int = DEFAULT_BUDGET,
+    work: int | None = None,
 ) -> Plan:
     """The shortest plan from ``state`` (None: the initial state) to ``goal``.
 
@@ -93,7 +94,9 @@ def plan(
     list of ``NAME=VALUE`` strings. Raises :class:`GoalError` for an invalid goal,
     :class:`Unreachable` (with the reason) when no action sequence reaches it, and a
     ``TypeError`` or ``ValueError`` naming the argument for a model, state or budget that
-    is not one.
+    is not one. ``budget`` bounds the search states expanded, ``work`` the successors
+    generated (default: 20 per state of the budget); past either the search gives up with
+    :class:`Unreachable` and ``budget_hit`` set.
     """
     started = time.perf_counter()
     compiled = require_model(model, "plan")
@@ -106,10 +109,12 @@ def plan(
         )
     if isinstance(budget, bool) or not isinstance(budget, int) or budget < 1:
         raise ValueError(f"budget is a positive number of search states, not {budget!r}")
+    if work is not None and (isinstance(work, bool) or not isinstance(work, int) or work < 1):
+        raise ValueError(f"work is a positive number of search successors, not {work!r}")
     canonical = parse_goal(compiled.model, goal)
     start = state if state is not None else compiled.initial_state()
     target = CompiledGoal.build(compiled, canonical)
-    search = TaskSearch(compiled, target, budget)
+    search = TaskSearch(compiled, target, budget, work)
     try:
         result = search.run(start)
     except SearchExhausted as exc:
@@ -219,8 +224,9 @@ def _explain(
     """Why a goal is out of reach, in terms of the model."""
     if exc.budget_hit:
         return (
-            f"gave up after expanding {exc.expanded} search states (budget {search.budget});"
-            " the goal may be reachable but is too costly to plan — raise the budget"
+            f"gave up after expanding {exc.expanded} search states (budget {search.budget}"
+            f" states, {search.work} successors); the goal may be reachable but is too costly"
+            " to plan — raise the budget"
         )
     declared = [
         f"{name} cannot become {goal[name]!r}: the model declares it unreachable "

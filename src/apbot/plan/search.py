@@ -85,11 +85,18 @@ class TaskSearch:
     """A* from one state to one goal. Build per query; cheap to construct."""
 
     def __init__(
-        self, compiled: CompiledModel, goal: CompiledGoal, budget: int = DEFAULT_BUDGET
+        self,
+        compiled: CompiledModel,
+        goal: CompiledGoal,
+        budget: int = DEFAULT_BUDGET,
+        work: int | None = None,
     ) -> None:
         self.compiled = compiled
         self.goal = goal
         self.budget = budget
+        # successors generated before giving up: the time a search takes, where ``budget``
+        # (expanded nodes) is not — one node with a thousand-end visit costs a thousand
+        self.work = EDGES_PER_BUDGET * budget if work is None else work
         self.relevant = relevant_variables(compiled, goal)
         relevant_set = set(self.relevant)
         getter = itemgetter(*self.relevant) if self.relevant else (lambda values: ())
@@ -145,7 +152,7 @@ class TaskSearch:
             in_the_dark = bool(compiled.guards) and compiled.hiding_guard(state) is not None
             edges = self._edges(state, node == start_key or node in self._continuable)
             generated += len(edges)
-            if generated > EDGES_PER_BUDGET * self.budget:  # thousand-end visits: time runs out
+            if generated > self.work:  # thousand-end visits: time runs out
                 raise SearchExhausted("budget", expanded, True)
             for after, actions, free in edges:
                 # presses first; among plans of equal length, fewer presses with a dark display

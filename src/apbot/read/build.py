@@ -25,6 +25,7 @@ from apbot.read.values import (
     anchored_lists,
     bare_list,
     caps_run,
+    find_bounds,
     find_initial,
     find_list,
     find_number_run,
@@ -71,6 +72,8 @@ class Evidence:
     each_press_at: int | None = None
     initial: Any = None
     initial_at: int | None = None
+    keypad_at: int | None = None  # a sentence of its context speaks of the number keys
+    longest: tuple[Range, int] | None = None  # "the longest setting is 13 hours", alone
 
 
 class Builder:
@@ -159,6 +162,11 @@ class Builder:
         best: list[str] | None = None
         best_prio = 0.0
         elsewhere = {i for t, lab in self.labels.items() if t not in tokens for i in lab.mentions}
+        other_labels = [
+            lab.text
+            for t, lab in self.labels.items()
+            if t not in tokens and lab.text and lab.text.upper() == lab.text
+        ]
         for i in self.context(tokens):
             text = units[i].text
             unit = units[i]
@@ -169,8 +177,8 @@ class Builder:
                 if not re.search(r"key|button|control|pad|dial|knob|symbol|name", head):
                     continue  # a row describing the value the key names, not the key's setting
             for items, prio in self._lists(i, i in mentions, tokens):
-                if sum(v.lower() in others for v in items) >= 2:
-                    continue  # a list of other keys, not of values
+                if _keyish(items, others, own):
+                    continue  # a list of keys ("DELAY, then + / −"), not of values
                 lamps = LAMP_LIST_RE.match(text)
                 if lamps and not set(words(lamps.group(0))) & {
                     w for t in tokens for w in words(t.replace("_", " "))
@@ -181,7 +189,11 @@ class Builder:
                     continue
                 if prio > best_prio:
                     best, best_prio, ev.values_at = items, prio, i
-            ranges = [r for r in find_ranges(text) if _fits(r.unit, tokens)]
+            ranges = [
+                r for r in find_ranges(text) if _fits(r.unit, tokens) and not _keypad(r, text)
+            ]
+            if ev.keypad_at is None and _KEYPAD_WORDS.search(text):
+                ev.keypad_at = i
             if ranges and unit.cells and len(ranges) == 1 and ranges[0].step is None:
                 row_step = _row_step(unit.cells, ranges[0].unit)
                 if row_step:
@@ -196,14 +208,24 @@ class Builder:
                 step = find_step(text)
                 if step:
                     ev.step, ev.step_at = step, i
-            if ev.toggle_at is None and ON_OFF_RE.search(text):
-                ev.toggle_at = i
+            if ev.toggle_at is None and ON_OFF_RE.search(_without(text, other_labels)):
+                ev.toggle_at = i  # (another key's name, ON/OFF in a panel drawing, is no toggle)
             if ev.each_press_at is None and EACH_PRESS_RE.search(text):
                 ev.each_press_at = i
             if ev.initial is None:
                 init = find_initial(text)
                 if init:
                     ev.initial, ev.initial_at = init, i
+        if not ev.ranges:
+            for i in sorted(self.context(tokens)):  # the sentences that follow say the rest
+                bounds = find_bounds([u.text for u in units[i : i + 4]])
+                if bounds and _fits(bounds.unit, tokens):
+                    if not bounds.step:  # the longest setting alone: if nothing better is read
+                        ev.longest = ev.longest or (bounds, i)
+                        continue
+                    ev.ranges, ev.range_at = [bounds], i
+                    ev.step = ev.step or (bounds.step, bounds.unit)
+                    break
         own_words = {w for t in tokens for w in words(t.replace("_", " ")) if len(w) >= 3}
         if best_prio < 2.0 and own_words:  # "Mode lamps (left to right): NORMAL CONT. FAN"
             for i, unit in enumerate(units):
@@ -223,6 +245,8 @@ class Builder:
                 for w in [x for x in words(t.replace("_", " ")) if len(x) >= 4][:1]:
                     for i, unit in enumerate(units):
                         anchored = anchored_lists(unit.text, w)
+                        if anchored and _keyish(anchored[0], others, own):
+                            continue
                         if anchored and best_prio < 1.8:
                             best, best_prio, ev.values_at = anchored[0], 1.8, i
         for t in tokens:
@@ -281,7 +305,8 @@ class Builder:
             out.append((run, 2.2 if mention else 1.2))
         if text.rstrip().endswith(":") and i + 1 < len(units) and not units[i + 1].cells:
             after = bare_list(units[i + 1].text)  # "Printed round the knob:" then the marks
-            if after and len(units[i + 1].text) <= 120:
+            # a long line is a list only when it is all short names ("OFF · Cottons · Eco …")
+            if after and (len(units[i + 1].text) <= 120 or _all_names(after, units[i + 1].text)):
                 out.append((after, 2.6))
         if text.rstrip().endswith((":", "order")) or text == unit.heading:
             bullets = _bullet_items(units, i, lead=2 if text == unit.heading else 0)
@@ -470,6 +495,12 @@ class Builder:
             self.note(
                 subject, f"range {r0.low:g}–{r0.high:g} {r0.unit} (named elsewhere)", found[1]
             )
+        elif ev.longest is not None:
+            ranges = [ev.longest[0]]
+            r0 = ev.longest[0]
+            self.note(
+                subject, f"range {r0.low:g}–{r0.high:g} {r0.unit} (its longest)", ev.longest[1]
+            )
         else:
             unit = ev.step[1] if ev.step else _unit_from_words(name)
             low, high = {"": (0, 10), "h": (0, 12), "min": (1, 60), "°C": (30, 100)}.get(
@@ -561,6 +592,16 @@ class Builder:
         ws = {w for w in words(name.replace("_", " ")) + words(label) if len(w) >= 4}
         if not ws or not _unit_from_words(name):
             return None
+        if label and label.upper() == label and ws & (_TIMER_WORDS | {"time"}):
+            # what the key's own sentences call its time ("TIMER  Push to set the Delay
+            # Start timer"): a specification may name only that ("Delay start: up to 15 h")
+            ws |= {
+                w
+                for u in self.manual.units
+                if re.search(rf"\b{re.escape(label)}\b", u.text)
+                for w in words(u.text)
+                if w in _TIMER_WORDS
+            }
         advice = {"suggested", "recommended", "typical", "advised", "usual", "ideal"}
         limits = re.compile(r"\brange\b|\badjustable\b|\bcan be set\b|\bsettable\b|\bbetween\b")
         best: tuple[int, Range, int] | None = None
@@ -595,6 +636,39 @@ class Builder:
 
     def feature(self, name: str, steps: list[dict[str, Any]]) -> None:
         self.features[self.unique(name, self.features)] = steps
+
+
+_TIMER_WORDS = frozenset({"timer", "delay", "preset", "reserve", "finish"})
+
+
+def _all_names(items: list[str], text: str) -> bool:
+    """Five or more short names that make up the whole line."""
+    covered = sum(len(v) for v in items)
+    return len(items) >= 5 and max(map(len, items)) <= 24 and covered >= 0.7 * len(text)
+
+
+def _keyish(items: list[str], others: set[str], own: set[str]) -> bool:
+    """A list naming two or more keys (other keys, the key itself, symbols such as + and −)."""
+    named = sum(
+        v.lower() in others or v.upper() in own or not re.search(r"[^\W_]", v) for v in items
+    )
+    return named >= 2
+
+
+def _without(text: str, labels: list[str]) -> str:
+    """The text with these key names (printed in capitals) taken out."""
+    for label in labels:
+        if re.search(r"[A-Z]", label):
+            text = text.replace(label, " ")
+    return text
+
+
+_KEYPAD_WORDS = re.compile(r"\b(?:numbers?|numeric|digits?|keypad|numerals?)\b", re.IGNORECASE)
+
+
+def _keypad(r: Range, text: str) -> bool:
+    """ "0 – 9: number keys" names the keypad, not a setting's range."""
+    return not r.unit and r.low == 0 and r.high == 9 and bool(_KEYPAD_WORDS.search(text))
 
 
 def _numeric_items(items: list[str]) -> bool:

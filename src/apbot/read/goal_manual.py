@@ -23,13 +23,15 @@ with a name ("| 2 | French | 3:50 |"), or a bold heading ("**2 French** – …"
 from __future__ import annotations
 
 import re
+from typing import Any
 
 from apbot.model.domain import all_values
-from apbot.model.schema import ApplianceModel, DiscreteVariable
+from apbot.model.schema import ApplianceModel, DiscreteVariable, NumericVariable
 
 _CODE = re.compile(r"[a-z]{0,2}[- ]?\d{1,3}", re.IGNORECASE)
 _BOLD = re.compile(r"\*\*\s*([A-Za-z]{0,2}[- ]?\d{1,3})\s+([^*\n]{2,40}?)\s*\*\*")
 _RULE = re.compile(r"^[\s|:\-–—=+]*$")
+_PROGRAMME = re.compile(r"menu|progr|mode|cycle|function|course|recipe|select", re.IGNORECASE)
 MAX_WORDS = 5
 """Words of a name kept (a cell that says more is a description, not a name)."""
 
@@ -38,10 +40,21 @@ def _key(text: str) -> str:
     return re.sub(r"[\s\-_.]", "", text.casefold())
 
 
-def _coded_variables(model: ApplianceModel) -> dict[str, dict[str, str]]:
-    """Discrete variables whose values are mostly codes: name -> {normalised value: value}."""
-    found = {}
+def _coded_variables(model: ApplianceModel) -> dict[str, dict[str, Any]]:
+    """Discrete variables whose values are mostly codes, and unitless whole-number settings
+    named for a programme (a menu the reader took for a number; not a count):
+    name -> {normalised value: value}."""
+    found: dict[str, dict[str, Any]] = {}
     for name, var in model.variables.items():
+        if isinstance(var, NumericVariable):
+            # a menu numbered 1-15 the reader took for a number: its numbers are codes
+            numbers = all_values(var)
+            whole = all(float(v) == int(float(v)) for v in numbers)
+            named = _PROGRAMME.search(f"{name} {var.label or ''}")
+            if var.unit or not whole or not 2 <= len(numbers) <= 99 or not named:
+                continue
+            found[name] = {str(int(float(v))): int(float(v)) for v in numbers}
+            continue
         if not isinstance(var, DiscreteVariable):
             continue
         values = [str(v) for v in all_values(var)]
@@ -76,7 +89,7 @@ def _table_blocks(manual: str) -> list[list[list[str]]]:
     return blocks
 
 
-def coded_names(model: ApplianceModel, manual: str) -> list[tuple[str, str, str]]:
+def coded_names(model: ApplianceModel, manual: str) -> list[tuple[str, Any, str]]:
     """(variable, value, name) for each coded value the manual names."""
     variables = _coded_variables(model)
     if not variables or not manual:
@@ -102,7 +115,7 @@ def coded_names(model: ApplianceModel, manual: str) -> list[tuple[str, str, str]
         for code, cell in pairs:
             value = variables[best].get(_key(code))
             label = _name(cell)
-            if value is not None and label and _key(label) != _key(value):
+            if value is not None and label and _key(label) != _key(str(value)):
                 out.append((best, value, label))
     for code, text in _BOLD.findall(manual):
         homes = [n for n, values in variables.items() if _key(code) in values]

@@ -190,6 +190,8 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         if isinstance(var, NumericVariable):
             unit = unit_text(var)
             info.dimension = (unit_of(unit) or (None, 0))[0] if unit else None
+            if not unit:  # a reader may miss the unit: SPIN 0-1400 still takes "1000 rpm"
+                info.dimension = _dimension_by_name(info)
         if isinstance(var, DiscreteVariable):
             switch = _is_on_off(info.values)
             if switch:

@@ -268,6 +268,8 @@ def assign(b: Builder) -> None:
             b.note(f"features.set_{var}", "each press steps to the next value", ev.each_press_at)
         elif ev.ranges or (ev.step and ev.toggle_at is None):
             entry_keys.append(key)
+        elif digits and ev.keypad_at is not None and ev.toggle_at is None:
+            entry_keys.append(key)  # "TIMER — the keypad then takes the time in minutes"
         elif (
             set(words(key.token)) & TIME_WORDS
             and ev.toggle_at is None
@@ -877,9 +879,12 @@ def _noun(b: Builder, tokens: list[str], ev: Evidence | None = None) -> str:
     if unit in by_unit:
         return by_unit[unit]
     counts: dict[str, int] = {}
+    # another key's name ("while the TIMER is being set they change the hours") is what the
+    # pair sets for that key, not its own setting
+    keys = {lab.text.lower() for t, lab in b.labels.items() if t not in tokens and lab.text}
     for i in b.context(tokens):
         text = b.manual.units[i].text.lower()
-        for noun in SETTING_NOUNS:
+        for noun in (n for n in SETTING_NOUNS if n not in keys):
             counts[noun] = counts.get(noun, 0) + len(re.findall(rf"\b{noun}\b", text))
     best = max(SETTING_NOUNS, key=lambda n: (counts.get(n, 0), -SETTING_NOUNS.index(n)))
     return best if counts.get(best) else ""

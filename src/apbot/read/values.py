@@ -101,6 +101,10 @@ def find_ranges(text: str) -> list[Range]:
             continue
         lo, hi = number(m.group(1)), number(m.group(3))
         unit = unit_name(m.group(4) or m.group(2))
+        first = unit_name(m.group(2))
+        mixed = first != unit and is_time_unit(first) and is_time_unit(unit)
+        if hi is not None and mixed:  # "1 min – 3 h": in minutes
+            hi, unit = seconds(hi, unit) / seconds(1, first), first
         if lo is None or hi is None or not lo < hi:
             continue
         if not unit and m.group(0).strip().lower().split()[1:2] == ["and"]:
@@ -113,6 +117,41 @@ def find_ranges(text: str) -> list[Range]:
         if hi:
             out.append(Range(0, hi, unit_name(m.group(2))))
     return out
+
+
+_FIRST_RE = re.compile(
+    rf"\bfirst (?:press|tap|touch|push|click|turn)\b[^.;]*?\b(?:gives|shows|sets|is|selects)\s+"
+    rf"({NUM})\s*({UNIT})(?!\w)",
+    re.IGNORECASE,
+)
+_MOST_RE = re.compile(
+    rf"\b(?:longest|maximum|highest|max\.?)\b[^.;]*?\b(?:is|of)\s+({NUM})\s*({UNIT})(?!\w)",
+    re.IGNORECASE,
+)
+
+
+def find_bounds(texts: list[str]) -> Range | None:
+    """A range told in two sentences: "the first tap gives 0.5 h" and "the longest
+    reservation is 24 h" (the first value is also the step: each tap adds time); a time's
+    longest setting alone ("the longest setting is 13 hours") is a range from 0."""
+    first = most = None
+    for text in texts:
+        first = first or _FIRST_RE.search(text)
+        most = most or _MOST_RE.search(text)
+    if not most:
+        return None
+    if not first:  # "the longest setting is 13 hours": from nothing up to that
+        high, unit = number(most.group(1)), unit_name(most.group(2))
+        return Range(0, high, unit) if high and is_time_unit(unit) else None
+    low, high = number(first.group(1)), number(most.group(1))
+    unit, top = unit_name(first.group(2)), unit_name(most.group(2))
+    if low is None or high is None:
+        return None
+    if unit != top:
+        if not (is_time_unit(unit) and is_time_unit(top)):
+            return None
+        high = seconds(high, top) / seconds(1, unit)
+    return Range(low, high, unit, low) if low < high else None
 
 
 def _hmm(text: str) -> int:
@@ -195,6 +234,8 @@ def find_list(text: str) -> tuple[list[str], str] | None:
         if len(items) >= 3:
             return [f"{i} {unit}" if known else i for i in items], "list"
     parts = [_clean_item(p) for p in _ARROW.split(text)]
+    if len(parts) >= 3:  # "… → HIGH, and from HIGH the next press …": the list ends at the comma
+        parts[-1] = _clean_item(re.split(r"[,;]\s|\s[—–]\s", parts[-1])[0])
     if len(parts) >= 3 or (len(parts) == 2 and all(_value_like(p, True) for p in parts)):
         head = parts[0].split(":")[-1].split()  # "in this order: AUTO → ...", "Clockwise: Cotton"
         capital = [w for w in head if w.upper() == w and any(c.isalpha() for c in w)]
@@ -225,7 +266,34 @@ def find_list(text: str) -> tuple[list[str], str] | None:
                 head.append(item)
             if len(head) >= 3:
                 return _dedupe(head), "list"
-    return None
+    dotted = _dotted_run(text)  # the last resort: a dotted run inside a flattened sentence
+    return (dotted, "list") if dotted else None
+
+
+_QUANTITY = re.compile(rf"\d\s*{UNIT}\b", re.IGNORECASE)
+
+
+def _dotted_run(text: str) -> list[str] | None:
+    """Names run together with middle dots inside a longer sentence, as text flattened from a
+    PDF prints a knob's positions ("… starting from OFF: OFF · Cottons · Eco Cottons · … ·
+    Spin/Drain Programme Default temp."): the first and last names are cut to the length most
+    of the names have."""
+    parts = re.split(r"\s*[·•]\s*", text)
+    if len(parts) < 5 or ":" not in parts[0]:
+        return None  # a list a colon introduces, not a legend or a row of figures
+    middle = [_clean_item(p) for p in parts[1:-1]]
+    names = all(
+        _value_like(p, False) and re.match(r"[A-Za-z]", p) and not _QUANTITY.search(p)
+        for p in middle
+    )
+    if not names:
+        return None
+    counts = [len(p.split()) for p in middle]
+    k = max(set(counts), key=lambda c: (counts.count(c), -c))
+    first = _clean_item(" ".join(parts[0].split(":")[-1].split()[-k:]))
+    last = _clean_item(" ".join(parts[-1].split()[:k]))
+    items = [i for i in [first, *middle, last] if i]
+    return _dedupe(items)
 
 
 _CAPS_ITEM = r"[A-Z][A-Z0-9+-]*(?: [A-Z0-9+-]+){0,2}"

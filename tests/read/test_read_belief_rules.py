@@ -1,0 +1,56 @@
+"""Rules for what a model read from a manual gets wrong in ways the goal parser and the
+reader can still bear: a unitless setting, a numbered menu read as a number, a range written
+in two units."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from apbot.model.schema import ApplianceModel
+from apbot.read.goal import parse_instruction
+from apbot.read.values import Range, find_ranges
+
+
+def _model(variables: dict[str, Any]) -> ApplianceModel:
+    actions = {f"press_{name}": {"control": name} for name in variables}
+    return ApplianceModel.model_validate(
+        {
+            "appliance": {"id": "m", "category": "test", "name": "m"},
+            "variables": variables,
+            "controls": [{"id": n, "kind": "button", "label": n.upper()} for n in variables],
+            "actions": actions,
+            "features": {
+                f"set_{n}": [{"actions": [f"press_{n}"], "variable": n, "effect": "next"}]
+                for n in variables
+            },
+        }
+    )
+
+
+def test_a_range_written_in_two_time_units_is_read_in_the_smaller() -> None:
+    assert find_ranges("| Timer | 1 min – 3 h |") == [Range(1, 180, "min")]
+    assert find_ranges("from 30 s to 90 min") == [Range(30, 5400, "s")]
+    assert find_ranges("1–60 min") == [Range(1, 60, "min")]
+
+
+def test_a_unit_the_reader_missed_is_still_the_settings_kind() -> None:
+    spin = {"type": "numeric", "ranges": [[0, 1400, 200]], "label": "SPIN"}
+    model = _model({"spin": spin})
+    assert parse_instruction(model, "a wash with a 1000 rpm spin") == {"spin": 1000}
+    temp = {"type": "numeric", "ranges": [[20, 90, 10]], "label": "TEMP"}
+    assert parse_instruction(_model({"temp": temp}), "wash it at 60 degrees") == {"temp": 60}
+
+
+def test_a_numbered_menu_read_as_a_number_is_named_by_the_manuals_table() -> None:
+    menu = {"type": "numeric", "ranges": [[1, 15, 1]], "label": "MENU"}
+    manual = (
+        "| No. | Menu | No. | Menu | No. | Menu |\n|---|---|---|---|---|---|\n"
+        "| 1 | Basic | 6 | Rapid | 11 | Jam |\n| 2 | French | 7 | Express | 12 | Yogurt |\n"
+        "| 5 | Gluten-free | 10 | Cake | 15 | Bake |\n"
+    )
+    model = _model({"menu": menu})
+    assert parse_instruction(model, "the gluten-free menu, please", manual) == {"menu": 5}
+    assert parse_instruction(model, "make some jam", manual) == {"menu": 11}
+    # a setting with a unit counts something: its numbers are no codes
+    weight = {"type": "numeric", "ranges": [[1, 15, 1]], "label": "WEIGHT", "unit": "kg"}
+    assert "weight" not in parse_instruction(_model({"weight": weight}), "the jam one", manual)
