@@ -1,0 +1,157 @@
+"""Seeded camera variations: a clean rendering turned into something like a photo.
+
+A :class:`Camera` fixes what stays put while a robot stands in front of a panel (viewpoint,
+scale, lighting, glare, focus, JPEG quality); each frame adds its own sensor noise. The same
+seed always gives the same camera, so every figure is reproducible, and a camera knows the
+homography from clean-rendering pixels to photo pixels (the scorer and the panel
+environment need it; a reader never sees it).
+"""
+
+from __future__ import annotations
+
+import io
+import random
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+from PIL import Image, ImageFilter
+
+Matrix = np.ndarray
+LEVELS = ("clean", "mild", "strong")
+
+
+@dataclass(frozen=True)
+class Camera:
+    """One viewpoint and its imaging conditions. ``level``: ``clean`` (none at all), ``mild``
+    or ``strong``."""
+
+    level: str = "clean"
+    gain: float = 1.0
+    gradient: tuple[float, float] = (0.0, 0.0)
+    tint: tuple[float, float, float] = (1.0, 1.0, 1.0)
+    glare: tuple[float, float, float, float] | None = None  # x, y (fractions), radius, strength
+    blur: float = 0.0
+    corners: tuple[float, ...] = (0.0,) * 8  # corner offsets as fractions of width/height
+    noise: float = 0.0
+    jpeg: int | None = None
+    zoom: float = 1.0
+    seed: int = 0
+
+    @classmethod
+    def sample(cls, seed: int, level: str = "mild") -> Camera:
+        """A camera drawn from ``seed``: ``mild`` is an ordinary phone photo in a kitchen,
+        ``strong`` a poor one (dim or uneven light, glare, blur, a slanted view, noise)."""
+        if level == "clean":
+            return cls(seed=seed)
+        if level not in LEVELS:
+            raise ValueError(f"unknown variation level {level!r}; use {', '.join(LEVELS)}")
+        rng = random.Random(f"camera/{seed}/{level}")
+        k = 1.0 if level == "mild" else 1.8
+        glare = (
+            (rng.uniform(0.1, 0.9), rng.uniform(0.1, 0.9), rng.uniform(0.1, 0.3),
+             rng.uniform(0.1, 0.25) * k)
+            if rng.random() < 0.6
+            else None
+        )  # fmt: skip
+        return cls(
+            level=level,
+            gain=rng.uniform(1 - 0.15 * k, 1 + 0.1 * k),
+            gradient=(rng.uniform(-0.12, 0.12) * k, rng.uniform(-0.12, 0.12) * k),
+            tint=(rng.uniform(0.95, 1.05), rng.uniform(0.95, 1.05), rng.uniform(0.95, 1.05)),
+            glare=glare,
+            blur=rng.uniform(0.0, 0.8 * k),
+            corners=tuple(rng.uniform(-0.025, 0.025) * k for _ in range(8)),
+            noise=rng.uniform(1.0, 4.0 * k),
+            jpeg=rng.randint(int(92 - 20 * k), 95),
+            zoom=rng.uniform(0.85, 1.15),
+            seed=seed,
+        )
+
+    def homography(self, width: int, height: int) -> Matrix:
+        """Clean-image pixels → photo pixels (3×3), for an image of this size."""
+        src = np.array([[0, 0], [width, 0], [width, height], [0, height]], dtype=float)
+        offsets = np.array(self.corners, dtype=float).reshape(4, 2) * [width, height]
+        return homography(src, src + offsets)
+
+    def photograph(self, clean: Image.Image, frame: int = 0) -> Image.Image:
+        """The photo this camera takes of ``clean`` (``frame`` seeds the sensor noise)."""
+        image = clean.convert("RGB")
+        if self.level == "clean":
+            return image
+        width, height = image.size
+        inverse = np.linalg.inv(self.homography(width, height))
+        inverse /= inverse[2, 2]
+        coefficients = tuple(float(v) for v in inverse.ravel()[:8])
+        image = image.transform((width, height), Image.Transform.PERSPECTIVE, coefficients,
+                                Image.Resampling.BILINEAR, fillcolor=(70, 68, 64))  # fmt: skip
+        if self.blur > 0.05:
+            image = image.filter(ImageFilter.GaussianBlur(self.blur))
+        gain, glow = _light_maps(self, width, height)
+        pixels = np.asarray(image, dtype=np.float32)
+        pixels *= gain
+        pixels += glow
+        pixels += _noise(self, frame, height, width)
+        np.clip(pixels, 0, 255, out=pixels)
+        image = Image.fromarray(pixels.astype(np.uint8))
+        if self.jpeg is not None:
+            buffer = io.BytesIO()
+            image.save(buffer, format="JPEG", quality=self.jpeg)
+            buffer.seek(0)
+            image = Image.open(buffer).convert("RGB")
+        return image
+
+
+@lru_cache(maxsize=8)
+def _light_maps(camera: Camera, width: int, height: int) -> tuple[np.ndarray, np.ndarray]:
+    """The camera's gain per pixel and channel (lighting, tint) and its additive glare."""
+    gx, gy = camera.gradient
+    xs = np.linspace(-0.5, 0.5, width, dtype=np.float32)
+    ys = np.linspace(-0.5, 0.5, height, dtype=np.float32)
+    light = camera.gain * (1.0 + gx * xs[None, :] + gy * ys[:, None])
+    gain = light[..., None] * np.array(camera.tint, dtype=np.float32)
+    glow = np.zeros((height, width, 1), dtype=np.float32)
+    if camera.glare is not None:
+        cx, cy, size, strength = camera.glare
+        radius = size * max(width, height)
+        gxs = np.exp(-((np.arange(width, dtype=np.float32) - cx * width) ** 2) / (2 * radius**2))
+        gys = np.exp(-((np.arange(height, dtype=np.float32) - cy * height) ** 2) / (2 * radius**2))
+        glow = (255.0 * strength * np.outer(gys, gxs))[..., None].astype(np.float32)
+    return gain.astype(np.float32), glow
+
+
+_TILE = 509  # a prime, so that shifted tiles do not line up with a panel's regular grids
+
+
+@lru_cache(maxsize=4)
+def _noise_tile(seed: int, sigma: float) -> np.ndarray:
+    rng = np.random.default_rng([seed, 11])
+    return rng.standard_normal((_TILE, _TILE, 3), dtype=np.float32) * np.float32(sigma)
+
+
+def _noise(camera: Camera, frame: int, height: int, width: int) -> np.ndarray:
+    """Sensor noise for one frame: a seeded noise tile, shifted per frame, covering the image."""
+    tile = _noise_tile(camera.seed, camera.noise)
+    rng = np.random.default_rng([camera.seed, frame, 7])
+    dy, dx = (int(v) for v in rng.integers(0, _TILE, 2))
+    reps = (height // _TILE + 2, width // _TILE + 2, 1)
+    return np.tile(tile, reps)[dy : dy + height, dx : dx + width]
+
+
+def homography(src: np.ndarray, dst: np.ndarray) -> Matrix:
+    """The 3×3 homography taking the four points ``src`` to ``dst``."""
+    rows = []
+    for (x, y), (u, v) in zip(src, dst, strict=True):
+        rows.append([x, y, 1, 0, 0, 0, -u * x, -u * y, -u])
+        rows.append([0, 0, 0, x, y, 1, -v * x, -v * y, -v])
+    _, _, vt = np.linalg.svd(np.array(rows, dtype=float))
+    h = vt[-1].reshape(3, 3)
+    return h / h[2, 2]
+
+
+def apply(matrix: Matrix, points: np.ndarray) -> np.ndarray:
+    """``points`` (N×2) mapped by the homography ``matrix``."""
+    pts = np.asarray(points, dtype=float).reshape(-1, 2)
+    ones = np.ones((len(pts), 1))
+    mapped = np.hstack([pts, ones]) @ matrix.T
+    return mapped[:, :2] / mapped[:, 2:3]
