@@ -33,6 +33,7 @@ class Row:
     bottom: float
     fit: float
     lit: bool = True
+    geometry: tuple[float, ...] = ()
 
     @property
     def text(self) -> str:
@@ -50,8 +51,9 @@ class Decoded:
     problem: str = ""
 
 
-def decode_window(window: np.ndarray, beam: int = 48) -> Decoded:
-    """Read a straightened display window (grey levels, upright)."""
+def decode_window(window: np.ndarray, beam: int = 48, known: Geometry | None = None) -> Decoded:
+    """Read a straightened display window (grey levels, upright). ``known`` keeps the cell
+    grid fitted for each row band, so later photos of the same display skip the fitting."""
     if window.size == 0 or min(window.shape[:2]) < 12:
         return Decoded("", problem="the display window is too small to read")
     g = window.astype(np.float32)
@@ -62,7 +64,9 @@ def decode_window(window: np.ndarray, beam: int = 48) -> Decoded:
     bands = _bands(detail)
     if not bands:
         return Decoded("", confidence=0.5, problem="no cells found on the display")
-    rows = [row for top, bottom in bands if (row := _read_band(detail, top, bottom)) is not None]
+    rows = [
+        row for top, bottom in bands if (row := _read_band(detail, top, bottom, known)) is not None
+    ]
     rows = [r for r in rows if r.fit > 0.15]
     if not rows:
         return Decoded("", confidence=0.5, problem="no cells found on the display")
@@ -111,7 +115,16 @@ def _bands(detail: np.ndarray) -> list[tuple[int, int]]:
     return [(a, b) for a, b in merged if b - a >= max(5, 0.2 * tallest)]
 
 
-def _read_band(detail: np.ndarray, top: int, bottom: int) -> Row | None:
+Geometry = dict[tuple[int, int], tuple[str, tuple[float, ...]]]
+
+
+def _read_band(detail: np.ndarray, top: int, bottom: int, known: Geometry | None = None
+               ) -> Row | None:  # fmt: skip
+    key = (round(top / 4), round(bottom / 4))
+    if known is not None and key in known:
+        style, fixed = known[key]
+        fit = _fit_dots if style == "dot" else _fit_segments
+        return fit(detail, top, bottom, 0.0, 1.0, fixed)
     band = detail[max(0, top - 2) : bottom + 2]
     profile = band.mean(axis=0)
     edge = max(2, int(0.015 * len(profile)))
@@ -128,7 +141,10 @@ def _read_band(detail: np.ndarray, top: int, bottom: int) -> Row | None:
     options = [o for o in options if o is not None]
     if not options:
         return None
-    return max(options, key=lambda r: r.fit)
+    best = max(options, key=lambda r: r.fit)
+    if known is not None:
+        known[key] = (best.style, best.geometry)
+    return best
 
 
 # --- dot matrix ---------------------------------------------------------------------------------
@@ -149,12 +165,16 @@ def _dot_grid(columns: int, pitch: float, x0: float, y0: float) -> tuple[np.ndar
     return xs.astype(np.float32), ys.astype(np.float32)
 
 
-def _fit_dots(detail: np.ndarray, top: int, bottom: int, left: float, right: float) -> Row | None:
+def _fit_dots(detail: np.ndarray, top: int, bottom: int, left: float, right: float,
+              fixed: tuple[float, ...] | None = None) -> Row | None:  # fmt: skip
     pitch0 = (bottom - top) / 7.0
     if pitch0 < 1.5:
         return None
     guess = max(1, round(((right - left) / pitch0 + 1.2) / 6))
     best: tuple[float, int, float, float, float] | None = None
+    if fixed is not None:
+        best = (fixed[0], int(fixed[1]), fixed[2], fixed[3], fixed[4])
+        guess = -10
     for columns in range(max(1, guess - 3), guess + 4):
         for scale in (0.98, 1.0, 1.02):
             pitch = (right - left) / max(1.0, 6 * columns - 1.2) * scale
@@ -181,7 +201,8 @@ def _fit_dots(detail: np.ndarray, top: int, bottom: int, left: float, right: flo
     for k in range(columns):
         probabilities = lit(values[k])
         cells.append(dot_candidates(probabilities, limit=3))
-    return Row("dot", cells, float(top), float(bottom), score, any_lit)
+    return Row("dot", cells, float(top), float(bottom), score, any_lit,
+               (score, columns, pitch_x, x0, y0))  # fmt: skip
 
 
 # --- seven segments -----------------------------------------------------------------------------
@@ -209,14 +230,17 @@ _SEG_HOLES = np.array(
 )
 
 
-def _fit_segments(detail: np.ndarray, top: int, bottom: int, left: float, right: float
-                  ) -> Row | None:  # fmt: skip
+def _fit_segments(detail: np.ndarray, top: int, bottom: int, left: float, right: float,
+                  fixed: tuple[float, ...] | None = None) -> Row | None:  # fmt: skip
     height0 = (bottom - top) / 1.0
     width0 = height0 / 1.7
     if width0 < 4:
         return None
     guess = max(1, round(((right - left) / width0 + 0.3) / 1.3))
     best: tuple[float, int, float, float, float, float] | None = None
+    if fixed is not None:
+        best = (fixed[0], int(fixed[1]), fixed[2], fixed[3], fixed[4], fixed[5])
+        guess = -10
     for columns in range(max(1, guess - 1), guess + 2):
         for scale in (0.94, 0.97, 1.0, 1.03):
             width = (right - left) / max(0.5, columns * 1.3 - 0.3) * scale
@@ -245,7 +269,8 @@ def _fit_segments(detail: np.ndarray, top: int, bottom: int, left: float, right:
             bits.setdefault(name, []).append(float(p))
         per = {name: float(np.mean(v)) for name, v in bits.items()}
         cells.append(_segment_cell(per))
-    return Row("seg", cells, float(top), float(bottom), score, any_lit)
+    return Row("seg", cells, float(top), float(bottom), score, any_lit,
+               (score, columns, width, height, x0, y0))  # fmt: skip
 
 
 def _seg_samples(detail: np.ndarray, columns: int, width: float, height: float, x0: float,
