@@ -116,7 +116,6 @@ class Perceiver:
         seen.outside.update(estimate.outside)
         return seen
 
-
     def _best_alternative(
         self,
         alternatives: list[tuple[str, float]],

@@ -4,7 +4,9 @@ from __future__ import annotations
 
 from typing import Any
 
-INSTALL_HINT = "install the vision extra: pip install -e '.[vision]' (opencv, rapidocr, onnxruntime)"
+INSTALL_HINT = (
+    "install the vision extra: pip install -e '.[vision]' (opencv, rapidocr, onnxruntime)"
+)
 
 
 class VisionUnavailable(ImportError):

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import heapq
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -138,10 +139,10 @@ def _read_band(detail: np.ndarray, top: int, bottom: int, known: Geometry | None
     left, right = float(cols[0]), float(cols[-1] + 1)
     options = [_fit_dots(detail, top, bottom, left, right), _fit_segments(detail, top, bottom,
                                                                           left, right)]  # fmt: skip
-    options = [o for o in options if o is not None]
-    if not options:
+    fitted = [o for o in options if o is not None]
+    if not fitted:
         return None
-    best = max(options, key=lambda r: r.fit)
+    best = max(fitted, key=lambda r: r.fit)
     if known is not None:
         known[key] = (best.style, best.geometry)
     return best
@@ -260,7 +261,7 @@ def _fit_segments(detail: np.ndarray, top: int, bottom: int, left: float, right:
         return None
     score, columns, width, height, x0, y0 = best
     values = _seg_samples(detail, columns, width, height, x0, y0, _SEG_POINTS)
-    lit, any_lit = _lit(values.ravel())
+    lit, any_lit = _lit(values.ravel(), most=0.9)
     cells = []
     for k in range(columns):
         probabilities = lit(values[k])
@@ -296,7 +297,7 @@ def _segment_cell(bits: dict[str, float]) -> Candidates:
 # --- lit or unlit -------------------------------------------------------------------------------
 
 
-def _lit(samples: np.ndarray):  # type: ignore[no-untyped-def]
+def _lit(samples: np.ndarray, most: float = 0.5) -> tuple[Any, bool]:
     """A function giving lit probabilities for sample values, and whether anything is lit.
 
     Two clusters (Otsu on the samples) when the brighter one is clearly apart: lit elements
@@ -321,7 +322,7 @@ def _lit(samples: np.ndarray):  # type: ignore[no-untyped-def]
     unlit = float(np.median(low)) if len(low) else 0.0
     bright = float(np.median(high)) if len(high) else 0.0
     separated = bright - unlit > 30 and bright > 1.9 * max(unlit, 1.0)
-    if not separated or len(high) > 0.5 * n:
+    if not separated or len(high) > most * n:
         # nothing lit, or "lit" everywhere: a blank row under uneven light, not a text
         return (lambda v: np.zeros_like(v, dtype=np.float32)), False
     midpoint = (unlit + bright) / 2
@@ -343,16 +344,16 @@ def _alternatives(rows: list[Row], beam: int) -> list[tuple[str, float]]:
         states: list[tuple[float, str]] = [(0.0, "")]
         for cell in row.cells:
             best = cell[0][1]
-            options = [(c, d) for c, d in cell if d - best <= 1.5][:3]
-            grown = [(cost + d - best, text + c) for cost, text in states for c, d in options]
+            near = [(c, d) for c, d in cell if d - best <= 1.5][:3]
+            grown = [(cost + d - best, text + c) for cost, text in states for c, d in near]
             states = heapq.nsmallest(beam, grown)
         per_row.append([(cost, text.strip()) for cost, text in states])
     combined: list[tuple[float, str]] = [(0.0, "")]
-    for options in per_row:
+    for row_texts in per_row:
         grown = [
             (cost + c2, "  ".join(p for p in (text, t2) if p))
             for cost, text in combined
-            for c2, t2 in options
+            for c2, t2 in row_texts
         ]
         combined = heapq.nsmallest(beam, grown)
     seen: dict[str, float] = {}

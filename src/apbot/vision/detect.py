@@ -106,7 +106,9 @@ def shape_proposals(image: np.ndarray) -> list[Candidate]:
 def detect(image: np.ndarray) -> Detection:
     """Text lines and control candidates on a panel photo (RGB)."""
     if image.ndim != 3 or image.shape[2] != 3 or min(image.shape[:2]) < 16:
-        return Detection([], [], (int(image.shape[1]) if image.ndim > 1 else 0, int(image.shape[0])))
+        return Detection(
+            [], [], (int(image.shape[1]) if image.ndim > 1 else 0, int(image.shape[0]))
+        )
     texts = read_lines(image)
     candidates = [Candidate(t.box, "text", 0.5 + 0.5 * t.score, t.text) for t in texts]
     candidates += shape_proposals(image)

@@ -127,8 +127,7 @@ def make_labels(image: np.ndarray, detection: Detection, window: Window | None) 
         (
             c
             for c in _controls(detection, window)
-            if c.kind == "shape"
-            and min(c.box[2] - c.box[0], c.box[3] - c.box[1]) >= 1.2 * line
+            if c.kind == "shape" and min(c.box[2] - c.box[0], c.box[3] - c.box[1]) >= 1.2 * line
         ),
         key=lambda c: _area(c.box),
     )
@@ -173,7 +172,7 @@ def _symbol_labels(image: np.ndarray, shapes: list[Candidate], labels: list[Labe
     printed = [label.box for label in labels]
     budget = 25
     for i in range(1, count):
-        x, y, w, h, area = (int(v) for v in stats[i])
+        x, y, w, h, _ = (int(v) for v in stats[i])
         box = (float(x), float(y), float(x + w), float(y + h))
         if not (0.6 * line <= max(w, h) <= 5 * line) or max(w, h) > 4 * max(1, min(w, h)):
             continue
@@ -194,7 +193,9 @@ def _symbol_labels(image: np.ndarray, shapes: list[Candidate], labels: list[Labe
                 text = ""
         if not (symbol or text):
             continue
-        owner = [s.box for s in shapes if _inside(_centre(box), s.box) and _area(s.box) < 30 * _area(box)]
+        owner = [
+            s.box for s in shapes if _inside(_centre(box), s.box) and _area(s.box) < 30 * _area(box)
+        ]
         control = min(owner, key=_area) if owner else None
         labels.append(Label(text or symbol, box, control, [symbol] if symbol else []))
 
@@ -209,7 +210,7 @@ def _edge_symbols(image: np.ndarray, label: Label) -> list[str]:
     from apbot.vision.icons import ink_of
 
     ink = ink_of(crop)
-    columns = ink.any(axis=0)
+    columns: list[bool] = list(np.asarray(ink).any(axis=0).tolist())  # type: ignore[arg-type]
     runs = []
     start = None
     for x, on in enumerate(columns):
@@ -335,8 +336,8 @@ def ground(image: np.ndarray | None, actions: Sequence[str]) -> Grounding:
             names.append(label.text)
             scores.append(hit[1])
         if len(boxes) != len(parts):
-            words = " / ".join(" ".join(p) for p in parts)
-            missing[action] = f"no label on the panel matches {words!r}"
+            wanted = " / ".join(" ".join(p) for p in parts)
+            missing[action] = f"no label on the panel matches {wanted!r}"
             continue
         result[action] = Grounded(action, skill, boxes, " + ".join(names), min(scores))
     return Grounding(result, missing, labels, window, detection.size,

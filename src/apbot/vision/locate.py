@@ -102,9 +102,9 @@ def _score(g: np.ndarray, corners: np.ndarray, area: float) -> float:
 def straighten(image: np.ndarray, window: Window, height: int = 200) -> np.ndarray:
     """The window warped to an upright rectangle ``height`` pixels tall (grey levels)."""
     tl, tr, br, bl = window.corners
-    width_px = (np.linalg.norm(tr - tl) + np.linalg.norm(br - bl)) / 2
-    height_px = (np.linalg.norm(bl - tl) + np.linalg.norm(br - tr)) / 2
-    out_h = int(max(height, height_px))
+    width_px = float(np.linalg.norm(tr - tl) + np.linalg.norm(br - bl)) / 2
+    height_px = float(np.linalg.norm(bl - tl) + np.linalg.norm(br - tr)) / 2
+    out_h = int(max(float(height), height_px))
     out_w = int(max(8, round(width_px * out_h / max(1.0, height_px))))
     target = np.array([[0, 0], [out_w - 1, 0], [out_w - 1, out_h - 1], [0, out_h - 1]],
                       dtype=np.float32)  # fmt: skip

@@ -49,11 +49,15 @@ def as_array(image: Any) -> np.ndarray | None:
 
 
 class DisplayCamera:
-    """Reads the display of one appliance seen from one viewpoint, photo after photo."""
+    """Reads the display of one appliance seen from one viewpoint, photo after photo.
 
-    def __init__(self, window: Window | None = None) -> None:
+    ``keep_grid`` also reuses each row's fitted cell grid (faster; off by default because a
+    grid fitted badly on one photo would spoil every later one).
+    """
+
+    def __init__(self, window: Window | None = None, keep_grid: bool = False) -> None:
         self.window = window
-        self.geometry: Geometry = {}
+        self.geometry: Geometry | None = {} if keep_grid else None
 
     def read(self, image: Any) -> ImageReading:
         """The display text of one photo (never raises on a bad photo: ``problem`` says)."""

@@ -19,7 +19,7 @@ from __future__ import annotations
 import random
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Protocol
+from typing import Any, Protocol
 
 import numpy as np
 from PIL import Image, ImageDraw
@@ -48,7 +48,6 @@ from apbot.vision.panel_art import (
     shade,
 )
 from apbot.vision.photo import Camera, apply
-
 
 
 class ControlLike(Protocol):
@@ -80,9 +79,13 @@ class PanelLayout(Protocol):
 class SuiteAppliance(Protocol):
     """What rendering needs of a suite appliance (``apbot.bench.suite.SuiteAppliance``)."""
 
-    id: str
-    model: ApplianceModel
-    layout: PanelLayout
+    @property
+    def id(self) -> str: ...
+    @property
+    def model(self) -> ApplianceModel: ...
+    @property
+    def layout(self) -> PanelLayout: ...
+
 
 MIN_PITCH = 6.0
 """Smallest dot pitch (pixels) the rendering scale allows on the display."""
@@ -269,3 +272,22 @@ def _scale_for(layout: PanelLayout, look: DisplayLook) -> float:
     wanted = max(1.5, MIN_PITCH / max(pitch, 0.1))
     cw, ch = layout.canvas
     return float(min(wanted, 5000 / max(cw, ch), (6e6 / (cw * ch)) ** 0.5))
+
+
+def render_state(appliance: SuiteAppliance, state: dict[str, str], out: Any, level: str = "clean",
+                 seed: int = 0, style: DisplayStyle | None = None) -> str:  # fmt: skip
+    """Render ``appliance`` showing ``state`` (VAR → VALUE, reached by the planner's presses
+    from the start) to the PNG file ``out``; returns the display text shown."""
+    from apbot.model.goal import parse_goal
+    from apbot.plan.plan import plan
+
+    sim = Simulator(compiled_model(appliance.model))
+    seen = sim.reset()
+    if state:
+        goal = parse_goal(appliance.model, dict(state))
+        for action in plan(appliance.model, None, goal).actions:
+            seen = sim.step(action.name, action.seconds)
+    scene = PanelScene.of(appliance, style=style)
+    photo = scene.photograph(seen.display, seen.lamps, Camera.sample(seed, level))
+    photo.image.save(out)
+    return seen.text

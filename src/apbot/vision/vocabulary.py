@@ -128,7 +128,7 @@ def similarity(word: str, token: str) -> float:
         return 1.0
     if token in WORD_SYNONYMS.get(word, ()) or word in WORD_SYNONYMS.get(token, ()):
         return 0.95
-    if len(word) >= 3 and (token.startswith(word) or word.startswith(token) and len(token) >= 3):
+    if len(word) >= 3 and (token.startswith(word) or (word.startswith(token) and len(token) >= 3)):
         return 0.85
     if word[:1] != token[:1] or min(len(word), len(token)) < 4:
         return 0.0
