@@ -125,7 +125,10 @@ def _read_band(detail: np.ndarray, top: int, bottom: int, known: Geometry | None
     if known is not None and key in known:
         style, fixed = known[key]
         fit = _fit_dots if style == "dot" else _fit_segments
-        return fit(detail, top, bottom, 0.0, 1.0, fixed)
+        again = fit(detail, top, bottom, 0.0, 1.0, fixed)
+        if again is not None and again.fit >= 0.85 * fixed[0]:
+            return again  # the grid still fits this photo
+        del known[key]
     band = detail[max(0, top - 2) : bottom + 2]
     profile = band.mean(axis=0)
     edge = max(2, int(0.015 * len(profile)))
@@ -174,7 +177,13 @@ def _fit_dots(detail: np.ndarray, top: int, bottom: int, left: float, right: flo
     guess = max(1, round(((right - left) / pitch0 + 1.2) / 6))
     best: tuple[float, int, float, float, float] | None = None
     if fixed is not None:
-        best = (fixed[0], int(fixed[1]), fixed[2], fixed[3], fixed[4])
+        columns, pitch, x0, y0 = int(fixed[1]), fixed[2], fixed[3], fixed[4]
+        xs, ys = _dot_grid(columns, pitch, x0, y0)
+        on = _sample(detail, xs.reshape(1, -1), ys.reshape(1, -1)).mean()
+        off = _sample(
+            detail, (xs + pitch / 2).reshape(1, -1), (ys + pitch / 2).reshape(1, -1)
+        ).mean()
+        best = (float((on - off) / (abs(on) + abs(off) + 1e-6)), columns, pitch, x0, y0)
         guess = -10
     for columns in range(max(1, guess - 3), guess + 4):
         for scale in (0.98, 1.0, 1.02):
@@ -240,7 +249,11 @@ def _fit_segments(detail: np.ndarray, top: int, bottom: int, left: float, right:
     guess = max(1, round(((right - left) / width0 + 0.3) / 1.3))
     best: tuple[float, int, float, float, float, float] | None = None
     if fixed is not None:
-        best = (fixed[0], int(fixed[1]), fixed[2], fixed[3], fixed[4], fixed[5])
+        columns, width, height, x0, y0 = int(fixed[1]), fixed[2], fixed[3], fixed[4], fixed[5]
+        on = _seg_samples(detail, columns, width, height, x0, y0, _SEG_POINTS).mean()
+        off = _seg_samples(detail, columns, width, height, x0, y0, _SEG_HOLES).mean()
+        score = float((on - off) / (abs(on) + abs(off) + 1e-6))
+        best = (score, columns, width, height, x0, y0)
         guess = -10
     for columns in range(max(1, guess - 1), guess + 2):
         for scale in (0.94, 0.97, 1.0, 1.03):

@@ -108,5 +108,10 @@ def straighten(image: np.ndarray, window: Window, height: int = 200) -> np.ndarr
     out_w = int(max(8, round(width_px * out_h / max(1.0, height_px))))
     target = np.array([[0, 0], [out_w - 1, 0], [out_w - 1, out_h - 1], [0, out_h - 1]],
                       dtype=np.float32)  # fmt: skip
-    matrix = cv2.getPerspectiveTransform(window.corners.astype(np.float32), target)
-    return cv2.warpPerspective(gray(image), matrix, (out_w, out_h), flags=cv2.INTER_LINEAR)
+    h, w = image.shape[:2]
+    x0, y0, x1, y1 = window.box
+    left, top = max(0, int(x0) - 2), max(0, int(y0) - 2)
+    crop = image[top : min(h, int(y1) + 3), left : min(w, int(x1) + 3)]
+    corners = window.corners.astype(np.float32) - np.array([left, top], dtype=np.float32)
+    matrix = cv2.getPerspectiveTransform(corners, target)
+    return cv2.warpPerspective(gray(crop), matrix, (out_w, out_h), flags=cv2.INTER_LINEAR)

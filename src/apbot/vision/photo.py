@@ -101,6 +101,54 @@ class Camera:
             image = Image.open(buffer).convert("RGB")
         return image
 
+    def photograph_region(self, photo: Image.Image, crop: Image.Image,
+                          region: tuple[int, int, int, int], clean_size: tuple[int, int],
+                          frame: int) -> Image.Image:  # fmt: skip
+        """``photo`` (an earlier photo of the same clean image) with the clean ``region``
+        replaced by ``crop`` and photographed again: warp, blur, light, new noise, JPEG."""
+        width, height = clean_size
+        matrix = self.homography(width, height)
+        rx0, ry0, rx1, ry1 = region
+        corners = apply(matrix, np.array([[rx0, ry0], [rx1, ry0], [rx1, ry1], [rx0, ry1]]))
+        px0 = max(0, int(np.floor(corners[:, 0].min())))
+        py0 = max(0, int(np.floor(corners[:, 1].min())))
+        px1 = min(photo.size[0], int(np.ceil(corners[:, 0].max())))
+        py1 = min(photo.size[1], int(np.ceil(corners[:, 1].max())))
+        if px1 - px0 < 4 or py1 - py0 < 4:
+            return photo.copy()
+        shift_in = np.array([[1, 0, rx0], [0, 1, ry0], [0, 0, 1]], dtype=float)
+        shift_out = np.array([[1, 0, -px0], [0, 1, -py0], [0, 0, 1]], dtype=float)
+        local = shift_out @ matrix @ shift_in
+        inverse = np.linalg.inv(local)
+        inverse /= inverse[2, 2]
+        coefficients = tuple(float(v) for v in inverse.ravel()[:8])
+        size = (px1 - px0, py1 - py0)
+        patch = crop.convert("RGB").transform(size, Image.Transform.PERSPECTIVE, coefficients,
+                                              Image.Resampling.BILINEAR)  # fmt: skip
+        mask = Image.new("L", crop.size, 255).transform(size, Image.Transform.PERSPECTIVE,
+                                                        coefficients, Image.Resampling.NEAREST)  # fmt: skip
+        if self.blur > 0.05:
+            patch = patch.filter(ImageFilter.GaussianBlur(self.blur))
+        gain, glow = _light_maps(self, width, height)
+        pixels = np.asarray(patch, dtype=np.float32)
+        pixels *= gain[py0:py1, px0:px1]
+        if glow.shape[0] > 1:
+            pixels += glow[py0:py1, px0:px1]
+        pixels += _noise(self, frame, py1 - py0, px1 - px0)
+        np.clip(pixels, 0, 255, out=pixels)
+        patch = Image.fromarray(pixels.astype(np.uint8))
+        if self.jpeg is not None:
+            buffer = io.BytesIO()
+            patch.save(buffer, format="JPEG", quality=self.jpeg)
+            buffer.seek(0)
+            patch = Image.open(buffer).convert("RGB")
+        margin = max(2, int(2 * self.blur) + 2)
+        mask = mask.crop((0, 0, size[0], size[1])).point(lambda v: 255 if v > 250 else 0)
+        inner = mask.filter(ImageFilter.MinFilter(2 * margin + 1))
+        result = photo.copy()
+        result.paste(patch, (px0, py0), inner)
+        return result
+
 
 @lru_cache(maxsize=8)
 def _light_maps(camera: Camera, width: int, height: int) -> tuple[np.ndarray, np.ndarray]:
@@ -110,7 +158,7 @@ def _light_maps(camera: Camera, width: int, height: int) -> tuple[np.ndarray, np
     ys = np.linspace(-0.5, 0.5, height, dtype=np.float32)
     light = camera.gain * (1.0 + gx * xs[None, :] + gy * ys[:, None])
     gain = light[..., None] * np.array(camera.tint, dtype=np.float32)
-    glow = np.zeros((height, width, 1), dtype=np.float32)
+    glow = np.zeros((1, 1, 1), dtype=np.float32)
     if camera.glare is not None:
         cx, cy, size, strength = camera.glare
         radius = size * max(width, height)

@@ -51,11 +51,11 @@ def as_array(image: Any) -> np.ndarray | None:
 class DisplayCamera:
     """Reads the display of one appliance seen from one viewpoint, photo after photo.
 
-    ``keep_grid`` also reuses each row's fitted cell grid (faster; off by default because a
-    grid fitted badly on one photo would spoil every later one).
+    ``keep_grid`` also reuses each row's fitted cell grid while it still fits a new photo
+    about as well as the photo it was fitted on (otherwise the row is fitted again).
     """
 
-    def __init__(self, window: Window | None = None, keep_grid: bool = False) -> None:
+    def __init__(self, window: Window | None = None, keep_grid: bool = True) -> None:
         self.window = window
         self.geometry: Geometry | None = {} if keep_grid else None
 

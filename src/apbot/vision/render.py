@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import random
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, Protocol
 
 import numpy as np
@@ -165,6 +165,10 @@ class PanelScene:
     scale: float
     margin: float
     seed: int = 0
+    _bases: dict[float, Image.Image] = field(default_factory=dict, repr=False)
+    _photos: dict[Camera, tuple[Photo, tuple[int, int, int, int]]] = field(
+        default_factory=dict, repr=False
+    )
 
     @classmethod
     def of(cls, appliance: SuiteAppliance, seed: int = 0, style: DisplayStyle | None = None
@@ -204,6 +208,24 @@ class PanelScene:
 
     def clean(self, main: str, lamps: Sequence[str], zoom: float = 1.0) -> Image.Image:
         """The panel as drawn, without any camera effect (``zoom`` scales it)."""
+        image = self._base(zoom).copy()
+        self._draw_display(image, main, lamps, zoom)
+        return image
+
+    def _draw_display(self, image: Image.Image, main: str, lamps: Sequence[str], zoom: float,
+                      offset: tuple[float, float] = (0.0, 0.0)) -> None:  # fmt: skip
+        s = self.scale * zoom
+        pad = self.layout.canvas[0] * self.scale * self.margin * zoom
+        x0, y0, x1, y1 = self.layout.display
+        box = (pad + x0 * s - offset[0], pad + y0 * s - offset[1], pad + x1 * s - offset[0],
+               pad + y1 * s - offset[1])  # fmt: skip
+        draw_display(ImageDraw.Draw(image), box, self.look, main, list(lamps))
+
+    def _base(self, zoom: float) -> Image.Image:
+        """The panel without its display (cached per zoom: it never changes)."""
+        cached = self._bases.get(zoom)
+        if cached is not None:
+            return cached
         s = self.scale * zoom
         pad = self.layout.canvas[0] * self.scale * self.margin * zoom
         size = (round(self.width * zoom), round(self.height * zoom))
@@ -240,7 +262,9 @@ class PanelScene:
                 if control.shape == "key":
                     radius *= 2
                 draw_button(draw, box, control.label, face, ink, radius)
-        draw_display(draw, px(self.layout.display), self.look, main, list(lamps))
+        if len(self._bases) > 4:
+            self._bases.clear()
+        self._bases[zoom] = image
         return image
 
     def layout_to_clean(self, zoom: float = 1.0) -> np.ndarray:
@@ -253,10 +277,41 @@ class PanelScene:
                    frame: int = 0) -> Photo:  # fmt: skip
         """The panel showing ``main`` and ``lamps`` as ``camera`` sees it (clean by default)."""
         camera = camera or Camera()
+        cached = self._photos.get(camera)
+        if cached is not None and camera.level != "clean":
+            return self._rephotograph(cached, main, lamps, camera, frame)
         clean = self.clean(main, lamps, camera.zoom)
         image = camera.photograph(clean, frame)
         to_photo = camera.homography(*clean.size) @ self.layout_to_clean(camera.zoom)
-        return Photo(image, to_photo / to_photo[2, 2])
+        photo = Photo(image, to_photo / to_photo[2, 2])
+        if camera.level != "clean":
+            if len(self._photos) > 4:
+                self._photos.clear()
+            self._photos[camera] = (photo, self._display_region(camera.zoom, clean.size))
+        return photo
+
+    def _display_region(self, zoom: float, size: tuple[int, int]) -> tuple[int, int, int, int]:
+        """Clean-image pixels around the display (with a margin for blur and perspective)."""
+        m = self.layout_to_clean(zoom)
+        x0, y0, x1, y1 = self.layout.display
+        margin = 0.05 * max(x1 - x0, y1 - y0) * m[0, 0] + 6
+        return (
+            max(0, int(m[0, 2] + x0 * m[0, 0] - margin)),
+            max(0, int(m[1, 2] + y0 * m[1, 1] - margin)),
+            min(size[0], int(m[0, 2] + x1 * m[0, 0] + margin) + 1),
+            min(size[1], int(m[1, 2] + y1 * m[1, 1] + margin) + 1),
+        )
+
+    def _rephotograph(self, cached: tuple[Photo, tuple[int, int, int, int]], main: str,
+                      lamps: Sequence[str], camera: Camera, frame: int) -> Photo:  # fmt: skip
+        """A new frame of an earlier photo: only the display region is drawn and photographed
+        again (the rest of a still panel in front of a still camera does not change)."""
+        photo, region = cached
+        base = self._base(camera.zoom)
+        crop = base.crop(region)
+        self._draw_display(crop, main, lamps, camera.zoom, (region[0], region[1]))
+        image = camera.photograph_region(photo.image, crop, region, base.size, frame)
+        return Photo(image, photo.to_photo)
 
 
 def _scale_for(layout: PanelLayout, look: DisplayLook) -> float:
