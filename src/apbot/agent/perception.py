@@ -182,7 +182,7 @@ def choose(
                 seen.values[name] = value
             continue
         allowed = {v for v in options if is_read(v)} | {v for s in lamp_sets for v in s}
-        if context.get(name) in allowed:
+        if name in context and context[name] in allowed:
             seen.values[name] = context[name]  # the belief's value is one of them: keep it
         elif allowed:
             seen.candidates[name] = frozenset(allowed)

@@ -107,6 +107,9 @@ def evaluate_display(
     report = report or GroundReport()
     for appliance in appliances:
         perceiver = Perceiver(appliance.model)
+        fresh = Simulator(compiled_model(appliance.model))
+        fresh.reset()
+        initial = {name: fresh.value(name) for name in appliance.model.variables}
         rng = random.Random(f"display/{appliance.id}")
         styles = ["dot"]
         seg = PanelScene.of(appliance, style="seg")
@@ -130,7 +133,7 @@ def evaluate_display(
                 reading = reader.read(photo.image)
                 report.read_seconds.append(time.perf_counter() - started)
                 truth = visible(seen.text)
-                ok = _same_reading(perceiver, truth, reading.text, reading.alternatives)
+                ok = _same_reading(perceiver, truth, reading.text, reading.alternatives, initial)
                 report.display_n += 1
                 report.display_right += ok
                 tally = report.display_styles.setdefault(style, [0, 0])
@@ -144,14 +147,15 @@ def evaluate_display(
 
 
 def _same_reading(perceiver: Perceiver, truth: str, text: str,
-                  alternatives: list[tuple[str, float]]) -> bool:  # fmt: skip
-    """Whether the photo's reading means what the true text means to the display reader."""
+                  alternatives: list[tuple[str, float]], context: dict[str, Any]) -> bool:  # fmt: skip
+    """Whether the photo's reading means what the true text means to the display reader
+    (``context``: the appliance's initial values, a neutral prediction for both)."""
     if text == truth:
         return True
-    true_seen = perceiver.perceive(Feedback(truth), {})
+    true_seen = perceiver.perceive(Feedback(truth), context)
     if true_seen.unknown:
         return False
-    seen = perceiver.perceive(Feedback(text, image=_Alternatives(alternatives)), {})
+    seen = perceiver.perceive(Feedback(text, image=_Alternatives(alternatives)), context)
     return (
         not seen.unknown
         and seen.values == true_seen.values

@@ -27,10 +27,10 @@ import numpy as np
 
 from apbot.vision.cv import cv2
 from apbot.vision.detect import BoxT, Candidate, Detection, detect
-from apbot.vision.icons import classify
+from apbot.vision.icons import classify, classify_ink
 from apbot.vision.locate import Window, find_window
 from apbot.vision.ocr import read_crop
-from apbot.vision.vocabulary import label_tokens, name_parts, words_score
+from apbot.vision.vocabulary import label_symbols, label_tokens, name_parts, words_score
 
 MIN_SCORE = 0.6
 """A label must match an action's words at least this well to ground it."""
@@ -150,11 +150,32 @@ def make_labels(image: np.ndarray, detection: Detection, window: Window | None) 
     for i, t in enumerate(texts):
         if i not in used:
             labels.append(Label(t.text, t.box))
+    _shape_symbols(image, shapes, labels)
     _symbol_labels(image, shapes, labels, line, window)
     _mark_ticks(detection, labels)
     for label in labels:
         label.symbols += _edge_symbols(image, label)
     return labels
+
+
+def _shape_symbols(image: np.ndarray, shapes: list[Candidate], labels: list[Label]) -> None:
+    """Buttons with no text on them: the symbol printed inside (⏻ on a round key)."""
+    taken = [label.box for label in labels]
+    seen: list[BoxT] = []
+    for shape in shapes:
+        if any(_overlap(shape.box, t) > 0 for t in taken) or any(
+            _inside(_centre(shape.box), s) for s in seen
+        ):
+            continue
+        x0, y0, x1, y1 = shape.box
+        mx, my = 0.18 * (x1 - x0), 0.18 * (y1 - y0)
+        crop = image[int(y0 + my) : int(y1 - my), int(x0 + mx) : int(x1 - mx)]
+        if crop.size == 0:
+            continue
+        symbol, _ = classify(crop, minimum=0.6)
+        if symbol:
+            seen.append(shape.box)
+            labels.append(Label(symbol, shape.box, shape.box, [symbol]))
 
 
 def _symbol_labels(image: np.ndarray, shapes: list[Candidate], labels: list[Label],
@@ -166,23 +187,24 @@ def _symbol_labels(image: np.ndarray, shapes: list[Candidate], labels: list[Labe
     size = int(max(15, 4 * line)) | 1
     background = cv2.medianBlur(gray, min(size, 255) if size < 255 else 255)
     ink = (cv2.absdiff(gray, background) > 45).astype(np.uint8)
+    raw = ink.copy()
     join = max(3, int(0.35 * line)) | 1
     ink = cv2.morphologyEx(ink, cv2.MORPH_CLOSE, np.ones((join, join), np.uint8))
-    count, _, stats, _ = cv2.connectedComponentsWithStats(ink, 8)
+    count, parts, stats, _ = cv2.connectedComponentsWithStats(ink, 8)
     printed = [label.box for label in labels]
     budget = 25
     for i in range(1, count):
         x, y, w, h, _ = (int(v) for v in stats[i])
         box = (float(x), float(y), float(x + w), float(y + h))
-        if not (0.6 * line <= max(w, h) <= 5 * line) or max(w, h) > 4 * max(1, min(w, h)):
+        if not (0.6 * line <= max(w, h) <= 5 * line) or max(w, h) > 10 * max(1, min(w, h)):
             continue
+        if w < h and max(w, h) > 4 * max(1, min(w, h)):
+            continue  # a tall thin line is an edge, not a symbol
         if window is not None and _inside(_centre(box), window.box, 4):
             continue
         if any(_overlap(box, p) > 0.2 * _area(box) for p in printed):
             continue
-        pad = 2
-        crop = image[max(0, y - pad) : y + h + pad, max(0, x - pad) : x + w + pad]
-        symbol, _ = classify(crop)
+        symbol, _ = classify_ink(raw[y : y + h, x : x + w] > 0)
         text = ""
         if not symbol and budget > 0 and max(w, h) >= line:
             budget -= 1
@@ -201,45 +223,61 @@ def _symbol_labels(image: np.ndarray, shapes: list[Candidate], labels: list[Labe
 
 
 def _edge_symbols(image: np.ndarray, label: Label) -> list[str]:
-    """A symbol printed beside a word (``TEMP ▲``): the first and last ink blobs of the label
-    box, checked against the symbol templates."""
+    """Arrows and signs printed with a word on one key (``TEMP ▲``, ``◀ PROG``): each ink
+    blob of the label's box, checked against those symbols' templates (letters fit badly)."""
     x0, y0, x1, y1 = (int(v) for v in label.box)
     crop = image[max(0, y0) : y1, max(0, x0) : x1]
-    if crop.size == 0 or crop.shape[1] < 8:
+    if crop.size == 0 or min(crop.shape[:2]) < 8:
         return []
     from apbot.vision.icons import ink_of
 
-    ink = ink_of(crop)
-    columns: list[bool] = list(np.asarray(ink).any(axis=0).tolist())  # type: ignore[arg-type]
-    runs = []
-    start = None
-    for x, on in enumerate(columns):
-        if on and start is None:
-            start = x
-        elif not on and start is not None:
-            runs.append((start, x))
-            start = None
-    if start is not None:
-        runs.append((start, len(columns)))
-    if len(runs) < 2:
-        return []
+    ink = ink_of(crop).astype(np.uint8)
+    count, parts, stats, _ = cv2.connectedComponentsWithStats(ink, 8)
     found = []
-    for a, b in (runs[0], runs[-1]):
-        symbol, score = classify(crop[:, a:b], minimum=0.72)
-        if symbol and symbol not in "½" and score >= 0.72:
+    for i in range(1, count):
+        x, y, w, h, area = (int(v) for v in stats[i])
+        if area < 30 or (h < 0.2 * crop.shape[0] and w < 0.2 * crop.shape[1]):
+            continue
+        if not 0.42 <= area / float(w * h) <= 0.7:
+            continue  # the arrows are solid triangles; letters are strokes
+        glyph = parts[y : y + h, x : x + w] == i
+        symbol, _ = classify_ink(glyph, minimum=0.85, among=EDGE_SYMBOLS)
+        if symbol and symbol not in found:
             found.append(symbol)
     return found
 
 
+EDGE_SYMBOLS = "▲▼◀▶◄►"
+"""Symbols printed beside a word on a key (``TEMP ▲``, ``◀ PROG``, ``↕ SWING``)."""
+
+
+def _spans(flags: list[bool]) -> list[tuple[int, int]]:
+    """(start, end) of each run of True."""
+    spans, start = [], None
+    for i, flag in enumerate([*flags, False]):
+        if flag and start is None:
+            start = i
+        elif not flag and start is not None:
+            spans.append((start, i))
+            start = None
+    return spans
+
+
 def _mark_ticks(detection: Detection, labels: list[Label]) -> None:
-    """Text around a dial (not under it) is a tick label, not a control's name."""
+    """Small text around a dial (not under it, not on a control of its own) is a tick label,
+    not a control's name."""
+    heights = [lb.box[3] - lb.box[1] for lb in labels if lb.control is None or lb.text]
+    typical = float(np.median(heights)) if heights else 0.0
     for circle in (c for c in detection.candidates if c.kind == "circle"):
         cx, cy = circle.centre
         r = (circle.box[2] - circle.box[0]) / 2
         for label in labels:
+            if label.control is not None and _area(label.control) < 4 * _area(label.box):
+                continue
             lx, ly = _centre(label.box)
             d = float(np.hypot(lx - cx, ly - cy))
-            if r * 0.9 < d < r * 1.9 and ly < cy + 1.1 * r:
+            small = (label.box[3] - label.box[1]) < 0.85 * typical
+            if small and r * 0.9 < d < r * 1.9 and ly < cy + 1.1 * r:
                 label.tick = True
 
 
@@ -271,7 +309,8 @@ def _groups(actions: Sequence[str]) -> tuple[dict[str, tuple[str, list[list[str]
 
 
 def _score(words: list[str], label: Label, turn: bool) -> float:
-    score = words_score(words, label.tokens, label.symbols)
+    tokens = [t for t in label.tokens if t != "+" or label.text.strip() == "+"]
+    score = words_score(words, tokens, label.symbols + label_symbols(label.text))
     if label.tick:
         score -= 0.3
     if turn and label.control is None:
@@ -325,7 +364,14 @@ def ground(image: np.ndarray | None, actions: Sequence[str]) -> Grounding:
         taken.add(index)
     result: dict[str, Grounded] = {}
     missing: dict[str, str] = {a: "a wait touches no control" for a in waits}
+    dial = _only_dial(detection, window)
     for action, (skill, parts) in parsed.items():
+        if parts == [[]]:  # "turn_cw", "press_knob": the panel's dial, if it has one
+            if dial is None:
+                missing[action] = "the name names no control and the panel shows no one dial"
+            else:
+                result[action] = Grounded(action, skill, [dial], "(the dial)", 0.7)
+            continue
         boxes, names, scores = [], [], []
         for part in parts:
             hit = chosen.get(tuple(part))
@@ -357,6 +403,8 @@ def _target(label: Label, detection: Detection, window: Window | None, turn: boo
             return min(near, key=lambda c: np.hypot(c.centre[0] - lx, c.centre[1] - ly)).box
     if label.control is not None:
         return label.control
+    if not any(ch.isalnum() for ch in label.text):
+        return label.box  # a printed symbol is itself the place to touch
     above = [
         c
         for c in shapes
@@ -369,6 +417,23 @@ def _target(label: Label, detection: Detection, window: Window | None, turn: boo
         nearest = min(above, key=lambda c: ly - c.centre[1])
         return _union([nearest.box, label.box])
     return label.box
+
+
+def _only_dial(detection: Detection, window: Window | None) -> BoxT | None:
+    """The panel's dial when one circle stands out (the largest, clearly larger than any other)."""
+    circles = sorted(
+        (c for c in _controls(detection, window) if c.kind == "circle"),
+        key=lambda c: -(c.box[2] - c.box[0]),
+    )
+    if not circles:
+        return None
+    if (
+        len(circles) > 1
+        and (circles[1].box[2] - circles[1].box[0]) > 0.8 * (circles[0].box[2] - circles[0].box[0])
+        and not _inside(circles[1].centre, circles[0].box)
+    ):
+        return None
+    return circles[0].box
 
 
 def _round(candidate: Candidate) -> bool:

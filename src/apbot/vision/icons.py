@@ -61,14 +61,22 @@ def ink_of(crop: np.ndarray) -> np.ndarray:
     return spread > threshold
 
 
-def classify(crop: np.ndarray, minimum: float = 0.55) -> tuple[str, float]:
-    """The symbol a crop shows and the match (IoU), or ("", best) when none fits well."""
-    normal = _normalise(ink_of(crop))
+def classify(crop: np.ndarray, minimum: float = 0.55, among: str = SYMBOLS) -> tuple[str, float]:
+    """The symbol a crop shows and the match (IoU), or ("", best) when none fits well;
+    ``among`` limits the symbols considered."""
+    return classify_ink(ink_of(crop), minimum, among)
+
+
+def classify_ink(ink: np.ndarray, minimum: float = 0.55, among: str = SYMBOLS) -> tuple[str, float]:
+    """:func:`classify` on a glyph mask already cut from its background."""
+    normal = _normalise(ink)
     if normal is None:
         return "", 0.0
     dilated = cv2.dilate(normal.astype(np.uint8), np.ones((3, 3), np.uint8)) > 0
     best, best_score = "", 0.0
     for symbol, template in templates().items():
+        if symbol not in among:
+            continue
         t_dilated = cv2.dilate(template.astype(np.uint8), np.ones((3, 3), np.uint8)) > 0
         inter = (dilated & t_dilated).sum()
         union = (dilated | t_dilated).sum()

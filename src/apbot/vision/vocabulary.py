@@ -86,6 +86,21 @@ _SPLIT = re.compile(r"[^0-9a-z+½]+")
 _ALNUM = re.compile(r"[a-z]+|[0-9]+|\+[0-9]*|½")
 
 
+_STANDALONE = re.compile(r"(?:^|\s)([+\-−])(?=\s|$)")
+
+
+def label_symbols(text: str) -> list[str]:
+    """Symbols printed in a label's text: any of :data:`SYMBOL_WORDS` except ``+`` and ``-``,
+    which count only standing alone (``TEMP −``, not ``ADD-IN`` or ``RINSE+``).
+
+    >>> label_symbols("TEMP −"), label_symbols("ADD-IN"), label_symbols("▲ UP")
+    (['−'], [], ['▲'])
+    """
+    found = [c for c in text if c in SYMBOL_WORDS and c not in "+-−"]
+    found += ["−" if m in "-−" else "+" for m in _STANDALONE.findall(text)]
+    return found
+
+
 def label_tokens(text: str) -> list[str]:
     """Tokens of a printed label: words and numbers, lower case (``+30 SEC`` → +30, 30, sec)."""
     tokens: list[str] = []
@@ -141,6 +156,7 @@ def words_score(words: list[str], tokens: list[str], symbols: list[str]) -> floa
     if not words:
         return 0.0
     meanings = [w for symbol in symbols for w in SYMBOL_WORDS.get(symbol, ())]
+    meanings += [w for token in tokens if token == "+" for w in SYMBOL_WORDS["+"]]
     joined = [tokens[i] + tokens[i + 1] for i in range(len(tokens) - 1)]
     pool = tokens + joined
     if not pool and not meanings:
