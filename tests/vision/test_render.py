@@ -23,6 +23,9 @@ def test_same_seed_same_photo_other_seed_other_photo(suite) -> None:  # type: ig
     b = np.asarray(scene.photograph("PL10", ("COOK",), Camera.sample(3, "mild"), 1).image)
     c = np.asarray(scene.photograph("PL10", ("COOK",), Camera.sample(4, "mild"), 1).image)
     assert np.array_equal(a, b)
+    fresh = PanelScene.of(suite.get("microwave_1"))
+    d = np.asarray(fresh.photograph("PL10", ("COOK",), Camera.sample(3, "mild"), 1).image)
+    assert np.array_equal(a, d)  # what the scene showed before does not change a photo
     assert a.shape != c.shape or not np.array_equal(a, c)
 
 

@@ -134,7 +134,7 @@ class Camera:
         pixels *= gain[py0:py1, px0:px1]
         if glow.shape[0] > 1:
             pixels += glow[py0:py1, px0:px1]
-        pixels += _noise(self, frame, py1 - py0, px1 - px0)
+        pixels += _noise(self, frame, py1 - py0, px1 - px0, (py0, px0))
         np.clip(pixels, 0, 255, out=pixels)
         patch = Image.fromarray(pixels.astype(np.uint8))
         if self.jpeg is not None:
@@ -177,13 +177,16 @@ def _noise_tile(seed: int, sigma: float) -> np.ndarray:
     return rng.standard_normal((_TILE, _TILE, 3), dtype=np.float32) * np.float32(sigma)
 
 
-def _noise(camera: Camera, frame: int, height: int, width: int) -> np.ndarray:
-    """Sensor noise for one frame: a seeded noise tile, shifted per frame, covering the image."""
+def _noise(camera: Camera, frame: int, height: int, width: int,
+           origin: tuple[int, int] = (0, 0)) -> np.ndarray:  # fmt: skip
+    """Sensor noise for one frame: a seeded noise tile, shifted per frame, covering the image.
+    ``origin`` (row, column) gives a region's noise: the same pixels as the whole frame's."""
     tile = _noise_tile(camera.seed, camera.noise)
     rng = np.random.default_rng([camera.seed, frame, 7])
     dy, dx = (int(v) for v in rng.integers(0, _TILE, 2))
-    reps = (height // _TILE + 2, width // _TILE + 2, 1)
-    return np.tile(tile, reps)[dy : dy + height, dx : dx + width]
+    rows = (np.arange(height) + dy + origin[0]) % _TILE
+    columns = (np.arange(width) + dx + origin[1]) % _TILE
+    return tile[rows[:, None], columns[None, :]]
 
 
 def homography(src: np.ndarray, dst: np.ndarray) -> Matrix:

@@ -275,20 +275,27 @@ class PanelScene:
 
     def photograph(self, main: str, lamps: Sequence[str], camera: Camera | None = None,
                    frame: int = 0) -> Photo:  # fmt: skip
-        """The panel showing ``main`` and ``lamps`` as ``camera`` sees it (clean by default)."""
+        """The panel showing ``main`` and ``lamps`` as ``camera`` sees it (clean by default).
+
+        A pure function of its arguments: with a camera, the panel is photographed once with
+        its display blank (frame 0, cached per camera) and each call draws and photographs
+        only the display region again on top of that (the rest of a still panel in front
+        of a still camera does not change)."""
         camera = camera or Camera()
-        cached = self._photos.get(camera)
-        if cached is not None and camera.level != "clean":
-            return self._rephotograph(cached, main, lamps, camera, frame)
-        clean = self.clean(main, lamps, camera.zoom)
-        image = camera.photograph(clean, frame)
-        to_photo = camera.homography(*clean.size) @ self.layout_to_clean(camera.zoom)
-        photo = Photo(image, to_photo / to_photo[2, 2])
-        if camera.level != "clean":
+        if camera.level == "clean":
+            clean = self.clean(main, lamps, camera.zoom)
+            to_photo = camera.homography(*clean.size) @ self.layout_to_clean(camera.zoom)
+            return Photo(camera.photograph(clean, frame), to_photo / to_photo[2, 2])
+        reference = self._photos.get(camera)
+        if reference is None:
+            blank = self.clean("", (), camera.zoom)
+            to_photo = camera.homography(*blank.size) @ self.layout_to_clean(camera.zoom)
+            photo = Photo(camera.photograph(blank, 0), to_photo / to_photo[2, 2])
             if len(self._photos) > 4:
                 self._photos.clear()
-            self._photos[camera] = (photo, self._display_region(camera.zoom, clean.size))
-        return photo
+            reference = (photo, self._display_region(camera.zoom, blank.size))
+            self._photos[camera] = reference
+        return self._rephotograph(reference, main, lamps, camera, frame)
 
     def _display_region(self, zoom: float, size: tuple[int, int]) -> tuple[int, int, int, int]:
         """Clean-image pixels around the display (with a margin for blur and perspective)."""
@@ -304,8 +311,9 @@ class PanelScene:
 
     def _rephotograph(self, cached: tuple[Photo, tuple[int, int, int, int]], main: str,
                       lamps: Sequence[str], camera: Camera, frame: int) -> Photo:  # fmt: skip
-        """A new frame of an earlier photo: only the display region is drawn and photographed
-        again (the rest of a still panel in front of a still camera does not change)."""
+        """The blank-display reference photo with the display region drawn showing ``main``
+        and ``lamps`` and photographed again (its own frame's noise); the reference is not
+        changed."""
         photo, region = cached
         base = self._base(camera.zoom)
         crop = base.crop(region)
