@@ -169,38 +169,55 @@ def _dot_grid(columns: int, pitch: float, x0: float, y0: float) -> tuple[np.ndar
     return xs.astype(np.float32), ys.astype(np.float32)
 
 
+def _dot_score(detail: np.ndarray, profile: np.ndarray, columns: int, pitch: float, x0: float,
+               y0: float) -> float:  # fmt: skip
+    """How well a dot grid fits: dot centres bright against the gaps between them, times the
+    share of the row's structure that the grid covers (a grid missing a cell fits worse)."""
+    xs, ys = _dot_grid(columns, pitch, x0, y0)
+    on = _sample(detail, xs.reshape(1, -1), ys.reshape(1, -1)).mean()
+    off = _sample(detail, (xs + pitch / 2).reshape(1, -1), (ys + pitch / 2).reshape(1, -1)).mean()
+    contrast = float((on - off) / (abs(on) + abs(off) + 1e-6))
+    a = max(0, int(x0 - 0.6 * pitch))
+    b = min(len(profile), int(x0 + (6 * columns - 2) * pitch + 0.6 * pitch) + 1)
+    total = float(profile.sum()) + 1e-6
+    return contrast * float(profile[a:b].sum()) / total
+
+
 def _fit_dots(detail: np.ndarray, top: int, bottom: int, left: float, right: float,
               fixed: tuple[float, ...] | None = None) -> Row | None:  # fmt: skip
     pitch0 = (bottom - top) / 7.0
     if pitch0 < 1.5:
         return None
-    guess = max(1, round(((right - left) / pitch0 + 1.2) / 6))
+    band = detail[max(0, top - 2) : bottom + 2]
+    profile = np.clip(band.mean(axis=0), 0, None)
     best: tuple[float, int, float, float, float] | None = None
     if fixed is not None:
         columns, pitch, x0, y0 = int(fixed[1]), fixed[2], fixed[3], fixed[4]
-        xs, ys = _dot_grid(columns, pitch, x0, y0)
-        on = _sample(detail, xs.reshape(1, -1), ys.reshape(1, -1)).mean()
-        off = _sample(
-            detail, (xs + pitch / 2).reshape(1, -1), (ys + pitch / 2).reshape(1, -1)
-        ).mean()
-        best = (float((on - off) / (abs(on) + abs(off) + 1e-6)), columns, pitch, x0, y0)
-        guess = -10
-    for columns in range(max(1, guess - 3), guess + 4):
-        for scale in (0.98, 1.0, 1.02):
-            pitch = (right - left) / max(1.0, 6 * columns - 1.2) * scale
-            if not 0.65 < pitch / pitch0 < 1.4:
-                continue
-            for dx in np.linspace(-0.3, 0.3, 5):
-                for dy in np.linspace(-0.4, 0.4, 7):
-                    x0 = left + (0.4 + dx) * pitch
-                    y0 = (top + bottom) / 2 - 3 * pitch + dy * pitch
-                    xs, ys = _dot_grid(columns, pitch, x0, y0)
-                    on = _sample(detail, xs.reshape(1, -1), ys.reshape(1, -1)).mean()
-                    off = _sample(detail, (xs + pitch / 2).reshape(1, -1),
-                                  (ys + pitch / 2).reshape(1, -1)).mean()  # fmt: skip
-                    score = float((on - off) / (abs(on) + abs(off) + 1e-6))
-                    if best is None or score > best[0]:
-                        best = (score, columns, pitch, x0, y0)
+        best = (_dot_score(detail, profile, columns, pitch, x0, y0), columns, pitch, x0, y0)
+    else:
+        guess = max(1, round(((right - left) / pitch0 + 1.2) / 6))
+        for columns in range(max(1, guess - 3), guess + 4):
+            for scale in (0.98, 1.0, 1.02):
+                pitch = (right - left) / max(1.0, 6 * columns - 1.2) * scale
+                if not 0.65 < pitch / pitch0 < 1.4:
+                    continue
+                for dx in np.linspace(-1.2, 1.2, 13):
+                    for dy in np.linspace(-0.4, 0.4, 5):
+                        x0 = left + (0.4 + dx) * pitch
+                        y0 = (top + bottom) / 2 - 3 * pitch + dy * pitch
+                        score = _dot_score(detail, profile, columns, pitch, x0, y0)
+                        if best is None or score > best[0]:
+                            best = (score, columns, pitch, x0, y0)
+        if best is not None:  # refine pitch and offsets finely around the best
+            _, columns, pitch_c, x_c, y_c = best
+            for scale in np.linspace(0.985, 1.015, 7):
+                for dx in np.linspace(-0.2, 0.2, 5):
+                    for dy in np.linspace(-0.15, 0.15, 3):
+                        pitch = pitch_c * scale
+                        x0, y0 = x_c + dx * pitch, y_c + dy * pitch
+                        score = _dot_score(detail, profile, columns, pitch, x0, y0)
+                        if score > best[0]:
+                            best = (score, columns, pitch, x0, y0)
     if best is None:
         return None
     score, columns, pitch_x, x0, y0 = best

@@ -146,8 +146,13 @@ def evaluate_display(
     return report
 
 
-def _same_reading(perceiver: Perceiver, truth: str, text: str,
-                  alternatives: list[tuple[str, float]], context: dict[str, Any]) -> bool:  # fmt: skip
+def _same_reading(
+    perceiver: Perceiver,
+    truth: str,
+    text: str,
+    alternatives: list[tuple[str, float]],
+    context: dict[str, Any],
+) -> bool:
     """Whether the photo's reading means what the true text means to the display reader
     (``context``: the appliance's initial values, a neutral prediction for both)."""
     if text == truth:

@@ -190,7 +190,7 @@ def _symbol_labels(image: np.ndarray, shapes: list[Candidate], labels: list[Labe
     raw = ink.copy()
     join = max(3, int(0.35 * line)) | 1
     ink = cv2.morphologyEx(ink, cv2.MORPH_CLOSE, np.ones((join, join), np.uint8))
-    count, parts, stats, _ = cv2.connectedComponentsWithStats(ink, 8)
+    count, _, stats, _ = cv2.connectedComponentsWithStats(ink, 8)
     printed = [label.box for label in labels]
     budget = 25
     for i in range(1, count):
