@@ -125,8 +125,9 @@ class Camera:
         size = (px1 - px0, py1 - py0)
         patch = crop.convert("RGB").transform(size, Image.Transform.PERSPECTIVE, coefficients,
                                               Image.Resampling.BILINEAR)  # fmt: skip
-        mask = Image.new("L", crop.size, 255).transform(size, Image.Transform.PERSPECTIVE,
-                                                        coefficients, Image.Resampling.NEAREST)  # fmt: skip
+        mask = Image.new("L", crop.size, 255).transform(
+            size, Image.Transform.PERSPECTIVE, coefficients, Image.Resampling.NEAREST
+        )
         if self.blur > 0.05:
             patch = patch.filter(ImageFilter.GaussianBlur(self.blur))
         gain, glow = _light_maps(self, width, height)
