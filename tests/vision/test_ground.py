@@ -35,3 +35,16 @@ def test_no_photo_or_a_blank_one_grounds_nothing_and_says_why() -> None:
 def test_waits_are_not_grounded(name: str) -> None:
     found = ground(np.full((100, 100, 3), 90, np.uint8), [name])
     assert found.ungrounded[name] == "a wait touches no control"
+
+
+def test_a_panel_of_blank_keys_grounds_nothing_by_name() -> None:
+    from PIL import Image, ImageDraw
+
+    image = Image.new("RGB", (640, 360), (60, 60, 64))
+    draw = ImageDraw.Draw(image)
+    for i in range(4):
+        draw.rounded_rectangle((40 + 150 * i, 200, 160 + 150 * i, 260), 12, fill=(110, 110, 116))
+    draw.ellipse((260, 40, 380, 160), fill=(120, 120, 120), outline=(20, 20, 20), width=4)
+    found = ground(np.asarray(image), ["press_menu", "press_start"])
+    assert found.actions == {}
+    assert all("no label" in why for why in found.ungrounded.values())

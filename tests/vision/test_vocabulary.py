@@ -21,3 +21,10 @@ def test_words_match_labels_through_synonyms_and_symbols() -> None:
     assert words_score(["add30"], label_tokens("+30 SEC"), []) > 0.8
     assert words_score(["clock"], [], ["🔒"]) == 0.0  # a symbol is never matched by spelling
     assert words_score(["menu"], label_tokens("START"), []) == 0.0
+
+
+def test_ocr_look_alikes_and_joined_words() -> None:
+    assert words_score(["power"], label_tokens("1/0"), []) > 0.85  # I/O read as 1/0
+    assert words_score(["power"], label_tokens("10 MIN"), []) == 0.0  # a number is no switch
+    assert words_score(["zone"], label_tokens("IntensiveZone"), []) > 0.8
+    assert words_score(["cancel"], label_tokens("×"), ["×"]) > 0.9

@@ -152,10 +152,42 @@ def make_labels(image: np.ndarray, detection: Detection, window: Window | None) 
             labels.append(Label(t.text, t.box))
     _shape_symbols(image, shapes, labels)
     _symbol_labels(image, shapes, labels, line, window)
+    labels = _join_line_symbols(labels)
     _mark_ticks(detection, labels)
     for label in labels:
-        label.symbols += _edge_symbols(image, label)
+        label.symbols += [s for s in _edge_symbols(image, label) if s not in label.symbols]
     return labels
+
+
+def _wordy(label: Label) -> bool:
+    """Whether a label has a word in it (not a lone character OCR made of a symbol)."""
+    return any(len(t) >= 2 and t.isalpha() for t in label.tokens)
+
+
+def _join_line_symbols(labels: list[Label]) -> list[Label]:
+    """A symbol found on its own just beside a word on the same line (``TIME −`` when OCR
+    kept only ``TIME``) belongs to that word's label, not to a control of its own."""
+    words = [lb for lb in labels if _wordy(lb)]
+    kept = []
+    for label in labels:
+        if label.tokens or not label.symbols or label in words:
+            kept.append(label)
+            continue
+        cy = _centre(label.box)[1]
+        host, host_gap = None, 0.0
+        for word in words:
+            x0, y0, x1, y1 = word.box
+            gap = max(x0 - label.box[2], label.box[0] - x1)
+            same_control = label.control is None or label.control == word.control
+            near = y0 <= cy <= y1 and gap < 1.0 * (y1 - y0) and same_control
+            if near and (host is None or gap < host_gap):
+                host, host_gap = word, gap
+        if host is None:
+            kept.append(label)
+        else:
+            host.symbols += [s for s in label.symbols if s not in host.symbols]
+            host.box = _union([host.box, label.box])
+    return kept
 
 
 def _shape_symbols(image: np.ndarray, shapes: list[Candidate], labels: list[Label]) -> None:
@@ -223,32 +255,81 @@ def _symbol_labels(image: np.ndarray, shapes: list[Candidate], labels: list[Labe
 
 
 def _edge_symbols(image: np.ndarray, label: Label) -> list[str]:
-    """Arrows and signs printed with a word on one key (``TEMP ▲``, ``◀ PROG``): each ink
-    blob of the label's box, checked against those symbols' templates (letters fit badly)."""
-    x0, y0, x1, y1 = (int(v) for v in label.box)
-    crop = image[max(0, y0) : y1, max(0, x0) : x1]
+    """Arrows and signs printed with a word on one key (``TEMP ▲``, ``◀ PROG``, ``⏻ START``,
+    ``↕ SWING``), inside the label's box or just beside it on its line (OCR often boxes the
+    word only). Ink blobs whose columns overlap are one glyph (⏻ is an arc and a bar); a
+    glyph about a capital's height is checked against those symbols' templates (letters fit
+    badly), and a triangle must be solid."""
+    x0, y0, x1, y1 = label.box
+    height = y1 - y0
+    if label.control is not None:  # a key: anywhere on it (⏻ above START/STOP)
+        cx0, cy0, cx1, cy1 = label.control
+        mx, my = 0.06 * (cx1 - cx0), 0.06 * (cy1 - cy0)
+        ex0, ey0, ex1, ey1 = cx0 + mx, cy0 + my, cx1 - mx, cy1 - my
+    elif _wordy(label):  # beside the word on its line
+        ex0, ex1 = x0 - 1.3 * height, x1 + 1.3 * height
+        ey0, ey1 = y0 - 0.15 * height, y1 + 0.15 * height
+    else:
+        ex0, ey0, ex1, ey1 = label.box
+    ix0, iy0 = max(0, int(min(ex0, x0))), max(0, int(min(ey0, y0)))
+    crop = image[iy0 : int(max(ey1, y1)) + 1, ix0 : int(max(ex1, x1)) + 1]
     if crop.size == 0 or min(crop.shape[:2]) < 8:
         return []
     from apbot.vision.icons import ink_of
 
     ink = ink_of(crop).astype(np.uint8)
     count, parts, stats, _ = cv2.connectedComponentsWithStats(ink, 8)
+    sizes = [int(stats[i][3]) for i in range(1, count) if stats[i][4] >= 12]
+    if not sizes:
+        return []
+    height = float(np.median(sizes))  # a letter's height
+    blobs = [
+        i
+        for i in range(1, count)
+        if stats[i][4] >= 12 and stats[i][3] < 2.5 * height and stats[i][2] < 2.5 * height
+    ]
+    group = {i: i for i in blobs}
+
+    def root(i: int) -> int:
+        while group[i] != i:
+            i = group[i]
+        return i
+
+    for n, i in enumerate(blobs):  # columns overlap and rows touch: one glyph
+        xi, yi, wi, hi, _ = (int(v) for v in stats[i])
+        for j in blobs[n + 1 :]:
+            xj, yj, wj, hj, _ = (int(v) for v in stats[j])
+            gap_y = max(yi - (yj + hj), yj - (yi + hi))
+            if min(xi + wi, xj + wj) > max(xi, xj) and gap_y < 0.4 * height:
+                group[root(j)] = root(i)
+    members: dict[int, list[int]] = {}
+    for i in blobs:
+        members.setdefault(root(i), []).append(i)
+    glyphs = list(members.values())
     found = []
-    for i in range(1, count):
-        x, y, w, h, area = (int(v) for v in stats[i])
-        if area < 30 or (h < 0.2 * crop.shape[0] and w < 0.2 * crop.shape[1]):
+    for glyph in glyphs:
+        gx0 = min(int(stats[i][0]) for i in glyph)
+        gx1 = max(int(stats[i][0] + stats[i][2]) for i in glyph)
+        gy0 = min(int(stats[i][1]) for i in glyph)
+        gy1 = max(int(stats[i][1] + stats[i][3]) for i in glyph)
+        w, h = gx1 - gx0, gy1 - gy0
+        if h < 0.6 * height and w < 0.6 * height:
             continue
-        if not 0.42 <= area / float(w * h) <= 0.7:
+        mask = np.isin(parts[gy0:gy1, gx0:gx1], glyph)
+        symbol, _ = classify_ink(mask, minimum=0.85, among=EDGE_SYMBOLS + STROKE_SYMBOLS)
+        if not symbol:
+            continue
+        if symbol in EDGE_SYMBOLS and not 0.42 <= mask.sum() / float(w * h) <= 0.7:
             continue  # the arrows are solid triangles; letters are strokes
-        glyph = parts[y : y + h, x : x + w] == i
-        symbol, _ = classify_ink(glyph, minimum=0.85, among=EDGE_SYMBOLS)
-        if symbol and symbol not in found:
+        if symbol not in found:
             found.append(symbol)
     return found
 
 
 EDGE_SYMBOLS = "▲▼◀▶◄►"
-"""Symbols printed beside a word on a key (``TEMP ▲``, ``◀ PROG``, ``↕ SWING``)."""
+"""Solid arrows printed beside a word on a key (``TEMP ▲``, ``◀ PROG``)."""
+STROKE_SYMBOLS = "⏻↕↔"
+"""Line-drawn symbols printed beside a word (``⏻ START/STOP``, ``↕ SWING``)."""
 
 
 def _spans(flags: list[bool]) -> list[tuple[int, int]]:
@@ -365,6 +446,10 @@ def ground(image: np.ndarray | None, actions: Sequence[str]) -> Grounding:
     result: dict[str, Grounded] = {}
     missing: dict[str, str] = {a: "a wait touches no control" for a in waits}
     dial = _only_dial(detection, window)
+    turned = {tuple(p[0]) for k, p in parsed.values() if k.startswith("turn") and p != [[]]}
+    lone_turn = next(iter(turned)) if len(turned) == 1 and not any(
+        k.startswith("turn") and p == [[]] for k, p in parsed.values()
+    ) else None  # fmt: skip
     for action, (skill, parts) in parsed.items():
         if parts == [[]]:  # "turn_cw", "press_knob": the panel's dial, if it has one
             if dial is None:
@@ -383,6 +468,9 @@ def ground(image: np.ndarray | None, actions: Sequence[str]) -> Grounding:
             scores.append(hit[1])
         if len(boxes) != len(parts):
             wanted = " / ".join(" ".join(p) for p in parts)
+            if skill.startswith("turn") and dial is not None and lone_turn == tuple(parts[0]):
+                result[action] = Grounded(action, skill, [dial], "(the dial)", 0.65)
+                continue  # the one dial is the only thing to turn (its name not printed)
             missing[action] = f"no label on the panel matches {wanted!r}"
             continue
         result[action] = Grounded(action, skill, boxes, " + ".join(names), min(scores))

@@ -39,6 +39,7 @@ SYMBOL_WORDS: dict[str, tuple[str, ...]] = {
     "►": ("right", "next", "forward"),
     "▷": ("right", "next", "start", "play", "up", "forward"),
     "✕": ("cancel", "clear", "stop", "close"),
+    "×": ("cancel", "clear", "stop", "close"),
     "🔒": ("lock", "child", "locked"),
     "🔓": ("unlock", "lock"),
     "🔑": ("lock", "key", "child"),
@@ -86,6 +87,9 @@ _SPLIT = re.compile(r"[^0-9a-z+½]+")
 _ALNUM = re.compile(r"[a-z]+|[0-9]+|\+[0-9]*|½")
 
 
+_CAMEL = re.compile(r"[A-Za-z]*[a-z][A-Z][A-Za-z]*")
+_CAMEL_PART = re.compile(r"[A-Z]?[a-z]+|[A-Z]+(?![a-z])")
+_IO = re.compile(r"(?:^|\s)[1il|]\s?/\s?[0o](?=\s|$)")
 _STANDALONE = re.compile(r"(?:^|\s)([+\-−])(?=\s|$)")
 
 
@@ -102,8 +106,16 @@ def label_symbols(text: str) -> list[str]:
 
 
 def label_tokens(text: str) -> list[str]:
-    """Tokens of a printed label: words and numbers, lower case (``+30 SEC`` → +30, 30, sec)."""
+    """Tokens of a printed label: words and numbers, lower case (``+30 SEC`` → +30, 30, sec).
+
+    >>> label_tokens("1/0")
+    ['io', '1', '0']
+    """
     tokens: list[str] = []
+    if _IO.search(text.casefold()):  # an I/O switch that OCR read as 1/0
+        tokens.append("io")
+    for word in _CAMEL.findall(text):  # "IntensiveZone", "varioSpeed": its words too
+        tokens += [w.casefold() for w in _CAMEL_PART.findall(word)]
     for part in _SPLIT.split(text.casefold()):
         if not part:
             continue
