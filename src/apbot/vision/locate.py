@@ -60,7 +60,7 @@ def find_window(image: np.ndarray) -> Window | None:
                 continue
             rect = cv2.minAreaRect(contour)
             rect_area = rect[1][0] * rect[1][1]
-            if rect_area <= 0 or area / rect_area < 0.88:
+            if rect_area <= 0 or area / rect_area < 0.92:  # a window's edges are straight
                 continue
             corners = _corners(contour, rect)
             score = _score(g, corners, area)
