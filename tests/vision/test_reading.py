@@ -51,3 +51,15 @@ def test_bad_images_give_clear_results() -> None:
     assert read_display("not an image").problem == "not a usable image"
     flat = np.full((200, 300, 3), 128, np.uint8)
     assert read_display(flat).problem == "no display window found"
+
+
+def test_the_window_is_the_display_not_a_dark_stretch_of_panel(suite) -> None:  # type: ignore[no-untyped-def]
+    # under this camera's uneven light a dark part of bread_maker_4's panel looked like a
+    # larger window than the display itself
+    import zlib
+
+    appliance = suite.get("bread_maker_4")
+    camera = Camera.sample(zlib.crc32(b"display/bread_maker_4/dot"), "mild")
+    photo = PanelScene.of(appliance, style="dot").photograph("CRUST 3", ("STOP",), camera, 1)
+    reading = read_display(photo.image)
+    assert reading.text == "CRUST 3  STOP"
