@@ -125,8 +125,22 @@ def test_run_with_an_explicit_goal_and_a_failure_exit_code() -> None:
         app, ["run", "kettle_1", "keep it warm at 80", "-g", "keep_warm=on", "-g", "temperature=80"]
     )
     assert ok.exit_code == 0, ok.output
-    unknown = runner.invoke(app, ["run", "kettle_1", "make tea please"])
-    assert unknown.exit_code == 2 and "-g NAME=VALUE" in unknown.output
+    impossible = runner.invoke(app, ["run", "kettle_1", "Heat the water to 120 degrees"])
+    assert impossible.exit_code == 2, impossible.output
+    assert "cannot read the instruction: '120 degrees'" in " ".join(impossible.output.split())
+
+
+def test_run_reads_any_instruction_and_says_it_reads_offline() -> None:
+    free = runner.invoke(
+        app, ["run", "kettle_1", "Warm the water to 80 degrees, please", "--belief", "true"]
+    )
+    text = " ".join(free.output.split())
+    assert "no LLM is configured" in text and "--llm local" in text and "APBOT_LLM" in text
+    assert "read goal: temperature=80, heating=on" in text, free.output
+    assert "the agent's verdict" in text and free.exit_code == 0, free.output
+    task = runner.invoke(app, ["run", "kettle_1", "t01", "--belief", "true"])
+    text = " ".join(task.output.split())
+    assert "stored goal:" in text and "read goal:" in text and "SPL" in text, task.output
 
 
 def test_report_on_a_directory_without_a_run_is_a_clear_error(tmp_path: Path) -> None:
@@ -185,9 +199,11 @@ def test_suite_list_never_cuts_an_id(monkeypatch: pytest.MonkeyPatch, width: int
     assert "…" not in result.output
 
 
-def test_bench_help_advertises_only_beliefs_that_exist() -> None:
+def test_bench_help_advertises_the_read_belief_and_goal_as_defaults() -> None:
     result = runner.invoke(app, ["bench", "--help"])
     assert result.exit_code == 0
     text = " ".join(result.output.replace("│", " ").split())
-    belief = text.split("--belief", 1)[1].split("[default: true]", 1)[0]
-    assert "faulty:RATE" in belief and "read" not in belief
+    belief = text.split("--belief", 1)[1].split("--goal", 1)[0]
+    assert "faulty:RATE" in belief and "read" in belief and "[default: read]" in belief
+    goal = text.split("--goal", 1)[1].split("--learn", 1)[0]
+    assert "given" in goal and "[default: read]" in goal

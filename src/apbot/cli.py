@@ -15,6 +15,8 @@ from rich import box
 from rich.console import Console
 from rich.table import Table
 
+from apbot.cli_llm import CacheOption, LLMOption, llm_app
+from apbot.cli_llm import setup as llm_setup
 from apbot.model.goal import GoalError
 from apbot.model.problems import ModelError, Problem
 from apbot.model.schema import ApplianceModel
@@ -31,6 +33,7 @@ app = typer.Typer(
 )
 suite_app = typer.Typer(no_args_is_help=True, help="The bundled benchmark suite.")
 app.add_typer(suite_app, name="suite")
+app.add_typer(llm_app, name="llm")
 console = Console(highlight=False, soft_wrap=True)
 errors = Console(stderr=True, highlight=False, soft_wrap=True)
 
@@ -555,11 +558,15 @@ def suite_fill_optimal(
     ] = None,
 ) -> None:
     """Store the planner's optimal action count in every task (rewrites tasks.yaml)."""
-    from apbot.bench.suite_check import fill_optimal
+    from apbot.bench.suite_check import FillError, fill_optimal
 
     chosen = _chosen(appliances)
     for item in chosen:
-        changed = fill_optimal(item)
+        try:
+            changed = fill_optimal(item)
+        except FillError as exc:
+            errors.print(f"[red]error:[/red] {exc} (nothing written for {item.id})")
+            raise typer.Exit(1) from exc
         console.print(f"{item.id}: {changed} task(s) updated")
 
 
@@ -571,20 +578,43 @@ def goal_command(
     model: ModelArg,
     instruction: Annotated[str, typer.Argument(help="What the user said, in quotes.")],
     as_json: Annotated[bool, typer.Option("--json", help="Print the goal as JSON.")] = False,
+    manual: Annotated[
+        Path | None,
+        typer.Option(
+            help="The manual, for values the panel shows only as codes (default: the "
+            "manual.md beside the model, if there is one)."
+        ),
+    ] = None,
+    llm: LLMOption = None,
+    cache: CacheOption = None,
 ) -> None:
-    """Parse an instruction into a goal over MODEL's variables (the offline goal parser)."""
+    """Parse an instruction into a goal over MODEL's variables (offline parser, or --llm)."""
     from apbot.read.goal import GoalParseError, parse_instruction
 
+    config = llm_setup(llm, cache)
+
     try:
-        belief, _source = resolve_model(model)
+        belief, source = resolve_model(model)
     except (FileNotFoundError, ModelError) as exc:
         if isinstance(exc, ModelError):
             _print_problems(exc.problems, exc.source or model)
         message = str(exc) if isinstance(exc, FileNotFoundError) else "the model is invalid"
         raise _fail(message) from None
+    beside = Path(source).parent / "manual.md"
+    text = ""
+    if manual is not None or beside.is_file():
+        try:
+            text = (manual or beside).read_text(encoding="utf-8")
+        except (OSError, UnicodeDecodeError) as exc:
+            raise _fail(f"{manual or beside}: cannot read the manual ({exc})") from None
     try:
-        goal = parse_instruction(belief, instruction)
-    except GoalParseError as exc:
+        if config is not None:
+            from apbot.cli_llm import goal_parser
+
+            goal = goal_parser(config)(belief, instruction)
+        else:
+            goal = parse_instruction(belief, instruction, text)
+    except (GoalParseError, ValueError) as exc:
         raise _fail(f"cannot read the instruction: {exc}") from None
     if as_json:
         console.print_json(json.dumps(goal))
@@ -605,8 +635,13 @@ def eval_goals(
         str | None, typer.Option(help="Comma-separated appliance ids or patterns ('*_4,*_5').")
     ] = None,
     as_json: Annotated[bool, typer.Option("--json", help="Print the scores as JSON.")] = False,
+    sample: Annotated[
+        int | None, typer.Option(help="Only the first N tasks of each appliance.", min=1)
+    ] = None,
+    llm: LLMOption = None,
+    cache: CacheOption = None,
 ) -> None:
-    """Exact accuracy of the offline goal parser on a suite's instructions (true models)."""
+    """Exact accuracy of the goal parser (offline, or --llm) on a suite's instructions."""
     from apbot.bench.goal_eval import evaluate_goals
     from apbot.bench.suite import load_suite
 
@@ -617,7 +652,13 @@ def eval_goals(
             _print_problems(exc.problems, exc.source or suite)
         message = str(exc) if isinstance(exc, FileNotFoundError) else "the suite is invalid"
         raise _fail(message) from None
-    score = evaluate_goals(loaded, _names(categories), _names(appliances))
+    config = llm_setup(llm, cache)
+    parser = None
+    if config is not None:
+        from apbot.cli_llm import goal_parser
+
+        parser = goal_parser(config)
+    score = evaluate_goals(loaded, _names(categories), _names(appliances), parser, sample)
     if score.n == 0:
         raise _fail("no tasks match the chosen categories and appliances")
     if as_json:
@@ -650,7 +691,7 @@ def _names(text: str | None) -> list[str] | None:
 def bench(
     suite: Annotated[str, typer.Option(help="'bundled' or a suite directory.")] = "bundled",
     methods: Annotated[
-        str | None, typer.Option(help="Comma-separated methods (default: all registered).")
+        str | None, typer.Option(help="Comma-separated methods (default: all that need no LLM).")
     ] = None,
     categories: Annotated[
         str | None, typer.Option(help="Comma-separated appliance categories.")
@@ -668,8 +709,25 @@ def bench(
     ] = "runs/latest",
     belief: Annotated[
         str,
-        typer.Option(help="The model methods work from: true, faulty:RATE or faulty:RATE:KIND,..."),
-    ] = "true",
+        typer.Option(
+            help="The model methods work from: read (from the manual, offline), true, "
+            "faulty:RATE or faulty:RATE:KIND,..."
+        ),
+    ] = "read",
+    goal: Annotated[
+        str,
+        typer.Option(
+            help="The goal methods get: read (parsed from the instruction against the belief) "
+            "or given (the task's stored goal). Success is judged on the stored goal either way."
+        ),
+    ] = "read",
+    learn: Annotated[
+        bool,
+        typer.Option(
+            "--learn",
+            help="Run each appliance's tasks in order, each from the belief the last one left.",
+        ),
+    ] = False,
     seed: Annotated[int, typer.Option(help="Seed for fault injection.")] = 0,
     feedback: Annotated[
         str,
@@ -685,12 +743,24 @@ def bench(
     no_report: Annotated[
         bool, typer.Option("--no-report", help="Do not write the report.")
     ] = False,
+    llm: LLMOption = None,
+    cache: CacheOption = None,
+    llm_requests: Annotated[
+        int | None, typer.Option(help="Stop cleanly after this many LLM requests.", min=0)
+    ] = None,
+    llm_tokens: Annotated[
+        int | None, typer.Option(help="Stop cleanly after this many LLM tokens.", min=0)
+    ] = None,
 ) -> None:
     """Run methods over the benchmark suite; resumable (finished tasks are skipped)."""
     import os
 
-    from apbot.agent.registry import methods as registered
+    from apbot.agent.registry import default_methods
+    from apbot.cli_llm import describe, set_budget
+
+    config = llm_setup(llm, cache)
     from apbot.bench.beliefs import BeliefError
+    from apbot.bench.goals import GoalModeError
     from apbot.bench.results import ResultsError
     from apbot.bench.runner import BenchError, BenchOptions, run_benchmark
 
@@ -698,7 +768,7 @@ def bench(
     chosen = _names(methods)
     options = BenchOptions(
         suite=suite,
-        methods=chosen if chosen is not None else list(registered()),
+        methods=chosen if chosen is not None else default_methods(),
         categories=_names(categories),
         appliances=_names(appliances),
         sample=sample,
@@ -708,10 +778,13 @@ def bench(
         seed=seed,
         rerun=rerun,
         feedback=_feedback_mode(feedback),
+        goal=goal,
+        learn=learn,
     )
+    set_budget(out, llm_requests, llm_tokens)
     try:
         outcome = run_benchmark(options)
-    except (BenchError, BeliefError) as exc:
+    except (BenchError, BeliefError, GoalModeError) as exc:
         raise _fail(str(exc), 2) from None
     except ResultsError as exc:
         raise _fail(str(exc)) from None
@@ -723,6 +796,8 @@ def bench(
     console.print(
         f"{outcome.ran} task(s) run, {outcome.skipped} already finished; results in {outcome.out}"
     )
+    if belief.strip() == "read" or goal.strip() == "read":
+        console.print(f"[dim]{describe(config)}[/dim]")
     if outcome.interrupted:
         errors.print(
             f"[yellow]stopped[/yellow] ({outcome.stopped_by}): {len(outcome.records)} finished "
@@ -839,24 +914,27 @@ def report_command(
 def run_command(
     appliance: Annotated[str, typer.Argument(help="A bundled appliance id.")],
     instruction: Annotated[
-        str, typer.Argument(help="The instruction, or a task id (t01…) of that appliance.")
+        str,
+        typer.Argument(help="What to do, in any words — or a task id (t01…) of the appliance."),
     ],
     goal: Annotated[
         list[str] | None,
         typer.Option(
             "--goal",
             "-g",
-            help="The goal as NAME=VALUE (repeatable); needed for an "
-            "instruction that is not one of the appliance's tasks.",
+            help="Give the goal as NAME=VALUE (repeatable) instead of reading it from the "
+            "instruction; names and values are the true appliance's.",
         ),
     ] = None,
     method: Annotated[str, typer.Option(help="The method to run.")] = "apbot",
     belief: Annotated[
-        str,
+        str | None,
         typer.Option(
-            help="The model the method works from: true, faulty:RATE or faulty:RATE:KIND,..."
+            help="The model the method works from: read (from the manual, by the LLM with "
+            "--llm, else offline; the default), true (the default with -g, whose names are the "
+            "truth's), faulty:RATE or faulty:RATE:KIND,..."
         ),
-    ] = "true",
+    ] = None,
     seed: Annotated[int, typer.Option(help="Seed for fault injection.")] = 0,
     feedback: Annotated[
         str, typer.Option(help="What the method perceives: display or values.")
@@ -865,31 +943,31 @@ def run_command(
         bool, typer.Option(help="Print every exploring press, not only a count.")
     ] = False,
     parse_goal_text: Annotated[
-        bool,
-        typer.Option(
-            "--parse-goal",
-            help="For an instruction that is not one of the tasks and has no -g: read the goal "
-            "from the instruction with the offline goal parser (on the appliance's model).",
-        ),
+        bool, typer.Option("--parse-goal", hidden=True, help="The default now; ignored.")
     ] = False,
+    llm: LLMOption = None,
+    cache: CacheOption = None,
 ) -> None:
-    """Run one task live: every macro action, press, display, check and repair as it happens."""
+    """Run one instruction live: every macro action, press, display, check and repair.
+
+    The goal is read from the instruction against the method's belief (the offline goal
+    parser) unless -g gives it. A task of the appliance (its id or its instruction) is judged
+    on the true simulator against the task's stored goal; any other instruction has no stored
+    goal, so the verdict is the agent's own.
+    """
+    from apbot.bench.beliefs import BeliefError
     from apbot.bench.runner import run_task
     from apbot.bench.suite import Task
+    from apbot.cli_llm import describe
     from apbot.model.goal import parse_goal, split_assignments
 
+    config = llm_setup(llm, cache)
     found = _bundled(appliance, 2)
     task = _task_for(found, instruction)
-    if parse_goal_text and task is None and not goal:
-        from apbot.read.goal import GoalParseError, parse_instruction
-
-        try:
-            parsed = parse_instruction(found.model, instruction)
-        except GoalParseError as exc:
-            raise _fail(f"cannot read the instruction: {exc}", 2) from None
-        if not parsed:
-            raise _fail("the instruction names no setting of this appliance", 2)
-        goal = [f"{name}={value}" for name, value in parsed.items()]
+    mode = _feedback_mode(feedback)
+    belief = belief if belief is not None else ("true" if goal else "read")
+    if belief.strip() == "read" or not goal:
+        console.print(f"[dim]{describe(config)}[/dim]")
     if goal:
         try:
             goal_values = split_assignments(goal)
@@ -904,23 +982,30 @@ def run_command(
             goal=goal_values,
             optimal_steps=None,
         )
-    if task is None:
-        ids = ", ".join(t.id for t in found.tasks)
-        raise _fail(
-            f"{instruction!r} is not one of {appliance}'s tasks ({ids}); give the goal "
-            "with -g NAME=VALUE (reading goals from free text comes with the reader)",
-            2,
-        )
-    console.print(f"[bold]{found.id}[/bold] · {task.instruction}")
-    console.print(f"goal: {', '.join(f'{k}={v}' for k, v in task.goal.items())}")
     printer = _LivePrinter(show_exploration)
+    if task is None:
+        _run_free(found, instruction, method, belief, seed, mode, printer)
+        return
+    console.print(f"[bold]{found.id}[/bold] · {task.instruction}")
+    console.print(f"stored goal: {', '.join(f'{k}={v}' for k, v in task.goal.items())}")
     try:
         record = run_task(
-            found, task, method, belief, seed, observer=printer, feedback=_feedback_mode(feedback)
+            found,
+            task,
+            method,
+            belief,
+            seed,
+            observer=printer,
+            feedback=mode,
+            goal="given" if goal else "read",
         )
+    except BeliefError as exc:
+        raise _fail(str(exc), 2) from None
     except (KeyError, ValueError) as exc:
         raise _fail(str(exc.args[0] if isinstance(exc, KeyError) else exc), 2) from None
     printer.flush()
+    if record.parsed_goal is not None:
+        console.print(f"read goal: {', '.join(f'{k}={v}' for k, v in record.parsed_goal.items())}")
     verdict = "[green]success[/green]" if record.success else "[red]failure[/red]"
     console.print(
         f"{verdict}: {record.reasoning_steps} reasoning steps, "
@@ -930,6 +1015,50 @@ def run_command(
     if record.failure:
         console.print(f"[red]{record.failure}[/red]")
     raise typer.Exit(0 if record.success else 1)
+
+
+def _run_free(
+    found: SuiteAppliance,
+    instruction: str,
+    method: str,
+    belief: str,
+    seed: int,
+    mode: FeedbackMode,
+    printer: _LivePrinter,
+) -> None:
+    """An instruction that is none of the tasks: read its goal against the belief and run it;
+    there is no stored goal, so the agent's verdict is all there is (said so)."""
+    from apbot.agent.environment import SimulatorEnvironment
+    from apbot.bench.beliefs import BeliefError, belief_model
+    from apbot.operate import operate
+
+    try:
+        model, _faults = belief_model(found, belief, seed)
+    except (BeliefError, ValueError) as exc:
+        raise _fail(str(exc), 2) from None
+    env = SimulatorEnvironment(found.model, mode)
+    console.print(f"[bold]{found.id}[/bold] · {instruction}")
+    done = operate(
+        found.manual,
+        list(env.actions),
+        instruction,
+        env,
+        method=method,
+        observer=printer,
+        model=model,
+    )
+    printer.flush()
+    if done.goal_error:
+        raise _fail(f"cannot read the instruction: {done.goal_error}", 2)
+    console.print(f"read goal: {', '.join(f'{k}={v}' for k, v in done.goal.items())}")
+    verdict = "[green]done[/green]" if done.success else "[red]not done[/red]"
+    console.print(
+        f"{verdict} (the agent's verdict: a free instruction has no stored goal to judge by): "
+        f"{done.episode.reasoning_steps} reasoning steps, {env.steps} actions"
+    )
+    if done.episode.failure:
+        console.print(f"[red]{done.episode.failure}[/red]")
+    raise typer.Exit(0 if done.success else 1)
 
 
 def _task_for(appliance: SuiteAppliance, text: str) -> Task | None:
@@ -999,8 +1128,17 @@ def read_command(
     ] = None,
     out: Annotated[Path | None, typer.Option("-o", "--out", help="Write the model here.")] = None,
     as_json: Annotated[bool, typer.Option("--json", help="Print the report as JSON.")] = False,
+    llm: LLMOption = None,
+    cache: CacheOption = None,
+    from_scratch: Annotated[
+        bool,
+        typer.Option(
+            help="With --llm: no draft from the offline reader (it still gives the "
+            "action specs and guards)."
+        ),
+    ] = False,
 ) -> None:
-    """Read a manual into a model (offline, no LLM); print where each part came from."""
+    """Read a manual into a model (offline, or --llm); print where each part came from."""
     from apbot.model.load import model_to_yaml, read_text
     from apbot.read import ReaderError, read_manual
     from apbot.read.commands import action_names
@@ -1009,7 +1147,13 @@ def read_command(
         raise _fail("give exactly one of --actions FILE or --appliance ID")
     try:
         names = action_names(actions) if actions else list(_bundled(str(appliance)).model.actions)
-        reading = read_manual(read_text(manual), names, category=manual.stem)
+        config = llm_setup(llm, cache)
+        if config is None:
+            reading = read_manual(read_text(manual), names, category=manual.stem)
+        else:
+            from apbot.cli_llm import read_with_llm
+
+            reading = read_with_llm(config, read_text(manual), names, manual.stem, from_scratch)
     except (ReaderError, OSError, ModelError) as exc:
         raise _fail(str(exc)) from None
     text = model_to_yaml(reading.model)
@@ -1030,8 +1174,16 @@ def eval_reader(
         str | None, typer.Option(help="Comma-separated categories (default: all).")
     ] = None,
     as_json: Annotated[bool, typer.Option("--json", help="Print JSON.")] = False,
+    appliances: Annotated[
+        str | None, typer.Option(help="Comma-separated appliance ids or patterns ('*_1').")
+    ] = None,
+    llm: LLMOption = None,
+    cache: CacheOption = None,
+    from_scratch: Annotated[
+        bool, typer.Option(help="With --llm: no draft from the offline reader.")
+    ] = False,
 ) -> None:
-    """Precision and recall of the offline reader against the suite's ground-truth models."""
+    """Precision and recall of the reader (offline, or --llm) against the ground truth."""
     from apbot.bench.suite import load_suite
     from apbot.read.commands import score_table
     from apbot.read.evaluate import evaluate
@@ -1042,11 +1194,23 @@ def eval_reader(
         raise _fail(str(exc)) from None
     wanted = set(_names(categories) or [])
     chosen = [a for a in loaded.appliances if not wanted or a.category in wanted]
+    if appliances:
+        from fnmatch import fnmatchcase
+
+        patterns = _names(appliances) or []
+        chosen = [a for a in chosen if any(fnmatchcase(a.id, p) for p in patterns)]
     if not chosen:
         raise _fail(f"no appliances in categories {sorted(wanted)}")
-    result = evaluate((a.category, a.manual, list(a.model.actions), a.model) for a in chosen)
+    config = llm_setup(llm, cache)
+    extra: dict[str, Any] = {}
+    if config is None:
+        result = evaluate((a.category, a.manual, list(a.model.actions), a.model) for a in chosen)
+    else:
+        from apbot.cli_llm import evaluate_reader
+
+        result, extra = evaluate_reader(config, chosen, from_scratch)
     if as_json:
-        console.print_json(json.dumps(result.to_json()))
+        console.print_json(json.dumps({**result.to_json(), **extra}))
     else:
         console.print(score_table(result), markup=False)
 

@@ -158,3 +158,28 @@ def test_a_setting_found_on_the_panel_must_fit_the_goal_value() -> None:
     assert not _fits(grams, "70%")  # a walk of grams is not the power level asked for
     words = {"type": "discrete", "values": ["white rice", "brown rice"]}
     assert _fits(words, "Brown Rice") and not _fits(words, "porridge")
+
+
+def test_the_finder_never_walks_a_power_or_lock_key_after_an_entry_key() -> None:
+    from apbot.agent.discovery import VariableFinder
+
+    s = session(fan(), fan())
+    adjusters = VariableFinder(s, GuardLearner(s))._adjusters("press_timer")
+    assert "press_power" not in adjusters  # switching off would end what it is looking at
+    assert adjusters[0] == "press_up"  # the stepping keys first
+
+
+def test_no_side_effect_is_learnt_from_a_dark_panel() -> None:
+    # the belief says switching off slows the fan; the dark panel shows no speed at all, so
+    # nothing can be learnt about that from it
+    belief = model_from(
+        (FAN % {"speeds": "low, mid, high", "hours": 4, "timer": TIMER_STEPS}).replace(
+            "effect: toggle}]", "effect: toggle, set: {speed: low}}]"
+        )
+    )
+    s = session(fan(), belief)
+    s.press(s.planned("press_power"))
+    s.press(s.planned("press_speed"))
+    off = s.press(s.planned("press_power"))
+    assert not off.feedback.text.strip()
+    assert not ProcedureRepairer(s, GuardLearner(s)).learn_side_effect("speed", off, "mid")

@@ -197,3 +197,28 @@ def test_an_unlit_lamp_of_a_programme_dependent_setting_allows_its_absence() -> 
     assert dark.values == {"mode": "fan"} and dark.lamps["turbo"] == {"off", None}
     (lit,) = [h for h in reader.read("cool  TURBO").hypotheses if h.screen.variable == "mode"]
     assert lit.lamps["turbo"] == {"on"}
+
+
+def test_a_bare_number_is_not_read_out_of_a_lamp_like_1_4() -> None:
+    # "1-4" (the small-batch lamp of a coffee maker) is no reading of keep-warm hours shown as
+    # a bare number: a value found inside a longer text must stand apart from its neighbours
+    model = model_from(
+        """
+        controls: [{id: warm}, {id: bold}]
+        variables:
+          keep_warm:
+            {type: numeric, unit: h, ranges: [[1, 4, 1]], initial: 2, wrap: true, show: "{value}"}
+          strength: {type: discrete, values: [regular, bold], show: {regular: "", bold: BOLD}}
+        actions:
+          press_warm: {control: warm}
+          press_bold: {control: bold}
+        features:
+          keep_warm: [{actions: [press_warm], variable: keep_warm, effect: next}]
+          bold: [{actions: [press_bold], variable: strength, effect: toggle}]
+        display:
+          indicators: [strength]
+        """
+    )
+    reader = DisplayReader(model)
+    assert not any("keep_warm" in h.values for h in reader.read("1-4  BOLD").hypotheses)
+    assert any(h.values.get("keep_warm") == 3 for h in reader.read("3 h  BOLD  1-4").hypotheses)

@@ -320,3 +320,23 @@ def test_a_setting_the_display_cannot_show_is_never_claimed_on_the_display_alone
     episode, reached, _ = run(truth, truth, goal, feedback=feedback)
     assert reached  # with the true model the lamp is on, but only the values say so
     assert episode.claimed_success == (feedback == "values")
+
+
+def test_a_belief_left_without_a_plan_by_a_repair_ends_in_a_declared_failure(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """A repair that leaves the belief with no plan for the goal must end the episode as a
+    declared failure (coffee_machine_5 t05 at faults 0.3 once crashed the run instead)."""
+    from apbot.agent import loop
+    from apbot.plan.plan import Unreachable
+
+    def no_plan(self: Any) -> None:
+        raise Unreachable("temperature=94 and preinfusion=on cannot hold together")
+
+    model = load_example("washing_machine")
+    env = SimulatorEnvironment(model, "display")
+    context = TaskContext("w", "washing_machine", "t", "x", {}, model, "", tuple(env.actions))
+    monkeypatch.setattr(loop.ClosedLoop, "reasoning_step", no_plan)
+    episode = get_method("apbot").run(context, env)
+    assert not episode.claimed_success
+    assert episode.failure.startswith("no plan on the belief model: temperature=94")

@@ -106,7 +106,7 @@ def test_oracle_run_writes_records_run_json_and_summary(tmp_path: Path) -> None:
     run = json.loads((tmp_path / "run" / "run.json").read_text())
     assert (run["suite"], run["belief"], run["seed"], run["methods"]) == (
         "bundled",
-        "true",
+        "read",
         0,
         ["oracle"],
     )
@@ -162,7 +162,7 @@ def test_a_directory_does_not_mix_seeds_or_beliefs(tmp_path: Path) -> None:
     run_benchmark(options(tmp_path), progress=False)
     with pytest.raises(BenchError, match=r"seed 0 \(asked: 1\).*--rerun"):
         run_benchmark(options(tmp_path, seed=1), progress=False)
-    with pytest.raises(BenchError, match=r"belief 'true' \(asked: 'faulty:0.1'\)"):
+    with pytest.raises(BenchError, match=r"belief 'read' \(asked: 'faulty:0.1'\)"):
         run_benchmark(options(tmp_path, belief="faulty:0.1"), progress=False)
     outcome = run_benchmark(options(tmp_path, seed=1, rerun=True), progress=False)
     assert outcome.ran == 2
@@ -240,11 +240,11 @@ def test_a_worker_that_dies_stops_the_run_and_keeps_what_finished(tmp_path: Path
 
 def test_beliefs() -> None:
     assert str(parse_belief(" faulty:0.50 ")) == "faulty:0.5"
+    assert str(parse_belief("read")) == "read"
     for bad, message in (
-        ("read", "not available yet"),
         ("faulty:x", "not a number"),
         ("faulty:1.5", "between 0 and 1"),
-        ("truth", "accepted: 'true'"),
+        ("truth", "accepted: 'read', 'true'"),
     ):
         with pytest.raises(BeliefError, match=message):
             parse_belief(bad)
@@ -253,6 +253,8 @@ def test_beliefs() -> None:
     model, faults = belief_model(appliance, "faulty:1", 3)
     assert faults and model != appliance.model
     assert belief_model(appliance, "faulty:1", 3) == (model, faults)  # seeded
+    read, notes = belief_model(appliance, "read", 0)  # no LLM configured: the offline reader
+    assert notes == [] and read.appliance.name == "read from the manual"
 
 
 def test_the_oracle_keeps_the_run_belief_but_plans_on_the_truth() -> None:

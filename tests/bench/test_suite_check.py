@@ -5,8 +5,10 @@ from __future__ import annotations
 import shutil
 from pathlib import Path
 
+import pytest
+
 from apbot.bench.suite import SuiteAppliance, Task, bundled_suite_dir, load_appliance
-from apbot.bench.suite_check import check_appliance, fill_optimal
+from apbot.bench.suite_check import FillError, check_appliance, fill_optimal
 from apbot.model.load import read_yaml
 
 
@@ -73,3 +75,19 @@ def test_fill_optimal_keeps_the_allow_entries(tmp_path: Path) -> None:
     assert set(by_id["t06"]["allow"]) == {"start-only", "free:mode"}
     assert "allow" not in by_id["t01"]
     assert _errors(load_appliance(directory)) == []
+
+
+def test_fill_optimal_names_a_task_whose_goal_value_is_invalid_and_writes_nothing(
+    tmp_path: Path,
+) -> None:
+    directory = tmp_path / "bottle_washer_1"
+    shutil.copytree(bundled_suite_dir() / "bottle_washer_1", directory)
+    tasks_file = directory / "tasks.yaml"
+    before = tasks_file.read_text(encoding="utf-8").replace(
+        "goal: {mode: sterilise, running: 'on'}", "goal: {mode: no such mode, running: 'on'}"
+    )
+    tasks_file.write_text(before, encoding="utf-8")
+    appliance = load_appliance(directory)
+    with pytest.raises(FillError, match=r"bottle_washer_1 t03: .*no such mode"):
+        fill_optimal(appliance)
+    assert tasks_file.read_text(encoding="utf-8") == before

@@ -238,13 +238,14 @@ def test_percent_power_clock_needs_naming_and_switch_words() -> None:
         parse_instruction(bread, "Brioche done at 8:15 tomorrow")  # the timer has 10-minute steps
 
 
-def test_cli_run_reads_the_goal_behind_a_flag() -> None:
+def test_cli_run_reads_the_goal_of_any_instruction() -> None:
     text = "Heat the water to 70 degrees and keep it warm"
-    without = runner.invoke(app, ["run", "kettle_1", text])
-    assert without.exit_code == 2 and "-g NAME=VALUE" in without.output
-    result = runner.invoke(app, ["run", "kettle_1", text, "--parse-goal"])
+    result = runner.invoke(app, ["run", "kettle_1", text, "--belief", "true"])
     assert result.exit_code == 0, result.output
     assert "temperature=70" in result.output and "keep_warm=on" in result.output
+    # --parse-goal, once needed, is the default now and still accepted
+    again = runner.invoke(app, ["run", "kettle_1", text, "--belief", "true", "--parse-goal"])
+    assert again.exit_code == 0 and "temperature=70" in again.output
 
 
 def test_an_overlong_instruction_is_refused(washer: ApplianceModel) -> None:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -18,9 +19,11 @@ FUZZ = settings(max_examples=25, deadline=None, suppress_health_check=[HealthChe
 def _passes(text: str, actions: list[str]) -> None:
     try:
         reading = read_manual(text, actions)
-    except ReaderError:
+    except ReaderError as error:
+        assert str(error).strip()  # a clear error says what is wrong
         return
     assert not [p for p in check_model(reading.model) if p.severity == "error"]
+    assert set(reading.model.actions) == set(actions)  # exactly the appliance's action names
 
 
 @FUZZ
@@ -57,3 +60,35 @@ def test_truncated_manual_or_another_appliances_manual(i, cut, j):
 )
 def test_random_action_names(actions, manual):
     _passes(manual, actions)
+
+
+@FUZZ
+@given(
+    st.integers(0, len(MANUALS) - 1),
+    st.lists(st.integers(0, 10**6), min_size=1, max_size=40),
+    st.binary(min_size=1, max_size=200),
+)
+def test_a_manual_with_garbage_and_shuffled_lines(i, picks, junk):
+    """A vision model's text: lines out of order, repeated, with binary junk spliced in."""
+    lines = MANUALS[i].splitlines() or [""]
+    mixed = [lines[p % len(lines)] for p in picks]
+    mixed.insert(picks[0] % len(mixed), junk.decode("utf-8", errors="replace"))
+    _passes("\n".join(mixed), ACTIONS[i])
+
+
+@FUZZ
+@given(st.sampled_from(MANUALS), st.sampled_from(MANUALS), st.sampled_from(ACTIONS))
+def test_two_manuals_run_together(first, second, actions):
+    """Two appliances' manuals in one file (another appliance's names everywhere)."""
+    _passes(first + "\n\n" + second, actions)
+
+
+def test_input_that_is_not_a_manual_raises_reader_error():
+    for bad in (b"bytes", 42, None):
+        with pytest.raises(ReaderError, match="text"):
+            read_manual(bad, ["press_power"])  # type: ignore[arg-type]
+    with pytest.raises(ReaderError, match="characters"):
+        read_manual("x" * 500_000, ["press_power"])
+    for names in ([], ["press power"], [""], ["press_power", "press_power"]):
+        with pytest.raises(ReaderError):
+            read_manual(MANUALS[0], names)

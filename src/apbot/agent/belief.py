@@ -48,6 +48,13 @@ class Belief:
     def values(self) -> dict[str, Any]:
         return self.compiled.assignment(self.state)
 
+    def initial_value(self, name: str, state: State | None = None) -> Any:
+        """What ``name`` starts from (in the programme ``state`` is in; default: now)."""
+        state = self.state if state is None else state
+        var = self.compiled.vars[self.compiled.var_index[name]]
+        domain = var.domain(state.values)
+        return None if domain is None else domain.values[domain.initial]
+
     def _index(self, name: str, value: Any) -> int | None:
         v = self.compiled.var_index[name]
         var = self.compiled.vars[v]

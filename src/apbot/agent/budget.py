@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 OnceKind = Literal[
-    "inspect", "guard", "unreachable", "absorbed", "entry", "template", "case", "discover"
+    "inspect", "guard", "unreachable", "absorbed", "entry", "template", "case", "discover", "side"
 ]
 RepeatKind = Literal["value", "procedure", "display"]
 MAX_SAME_REPAIR = 3  # the same thing going wrong this often in a row: give up

@@ -20,7 +20,16 @@ from typing import Any
 from apbot.agent.guards import GuardLearner
 from apbot.agent.infer import infer_template, ranges_from_values
 from apbot.agent.reader import DisplayReader
-from apbot.agent.repair import RepairError, add_choice_setting, add_indicator, add_setting
+from apbot.agent.repair import (
+    RepairError,
+    add_choice_setting,
+    add_indicator,
+    add_keypad_setting,
+    add_setting,
+    plain_keys,
+    plain_steps,
+    setting_step,
+)
 from apbot.agent.session import Executed, Session, summary
 from apbot.model.display import display_value
 from apbot.model.domain import ValueProblem, normalise, parse_value
@@ -53,6 +62,7 @@ class VariableFinder:
     def __init__(self, session: Session, guards: GuardLearner) -> None:
         self.session = session
         self.guards = guards
+        self.trail: list[str | None] = []  # the full texts of the last walk (None: refused)
 
     def find(self, name: str, goal_value: Any, attempt: int = 1) -> bool:
         """Look for ``name`` on the panel (once per attempt); True when the belief now has it.
@@ -76,7 +86,11 @@ class VariableFinder:
             if len(set(texts)) >= 2:
                 if self._learn(name, goal_value, texts, last, before, None, key):
                     return True
+                if self._learn_lamp(name, goal_value, key):  # a lamp lit and put out
+                    return True
                 continue
+            if self._learn_lamp(name, goal_value, key):
+                return True
             single[key] = texts[0]
         if self._learn_choice(name, goal_value, single, before):
             return True
@@ -91,7 +105,11 @@ class VariableFinder:
                     continue
                 if self._learn(name, goal_value, found[0], found[1], before, key, adjuster):
                     return True
-        return False
+        if any(self._typed(name, goal_value, key) for key in single):
+            return True
+        keypad = [a for a in session.belief.model.actions if _is_digit(a)]
+        typing_first = bool(keypad) and bool(plain_steps(session.belief.model, keypad))
+        return typing_first and self._typed(name, goal_value, None)
 
     def _walked(self, key: str) -> tuple[list[str], str] | None:
         """Walk ``key`` (and its opposite back from an end): the texts in value order and the
@@ -121,6 +139,9 @@ class VariableFinder:
         the goal's value could be one of its values (a walk of grams is not a power level)."""
         session = self.session
         learnt = infer_setting(name, texts, _kind_of(goal_value), last)
+        if learnt is not None and not _fits(learnt.variable, goal_value):
+            # each text a value of its own, named by its first word (MUG 300mL)?
+            learnt = infer_setting(name, texts, "worded", last) or learnt
         if learnt is None:
             return False
         if not _fits(learnt.variable, goal_value):
@@ -143,13 +164,102 @@ class VariableFinder:
             return False
         new = self._as_lamp(new, name, before)
         under = f"{entry}, then {key}" if entry else key
-        pointer = (f"set_{name}", 1 if entry else 0)
-        session.adopt(new, f"{name}: found under {under}; {learnt.note}", pointer)
+        session.adopt(new, f"{name}: found under {under}; {learnt.note}", setting_step(new, name))
         session.discovered.add(name)
         if new.variables[name].depends_on is not None:
             session.guessed_initial.add(name)
         session.belief.set_value(name, learnt.current)
         session.evidence[name] = learnt.current  # the walk showed it
+        session.reread()
+        return True
+
+    def _learn_lamp(self, name: str, goal_value: Any, key: str) -> bool:
+        """A key whose presses light a word on the display and put it out again (``SYNC``,
+        ``LIGHT``): an on/off setting the key toggles, shown as that lamp while on. One more
+        press must light it again."""
+        session = self.session
+        lit, unlit = [*self.trail, None, None][:2]
+        if len(self.trail) != 2 or lit is None or unlit is None:
+            return False
+        word = lamp_word(lit, unlit)
+        variable: dict[str, Any] = {
+            "type": "discrete",
+            "values": ["off", "on"],
+            "show": {"off": "", "on": word},
+            "initial": "off",
+        }
+        if word is None or not _fits(variable, goal_value):
+            return False
+        again = session.press(_planned(key), exploring=True)
+        if again.feedback.text != lit:
+            return False
+        try:
+            new = add_setting(session.belief.model, name, variable, key, "toggle")
+            new = add_indicator(new, name)
+        except RepairError as exc:
+            session.episode.log("repair", f"could not add {name}: {exc}")
+            return False
+        session.adopt(
+            new,
+            f"{name}: found under {key}; an on/off lamp shown as {word!r}",
+            setting_step(new, name),
+        )
+        session.discovered.add(name)
+        session.belief.set_value(name, "on")
+        session.evidence[name] = "on"
+        session.reread()
+        return True
+
+    def _typed(self, name: str, goal_value: Any, key: str | None) -> bool:
+        """On a panel with a keypad, type the goal's value — after an entry key that shows one
+        screen (``key``), or straight away where the belief has the digits as a procedure that
+        sets nothing; a display that then shows the value is the setting, typed in as a number
+        (``P 100%`` → ``P 70%``) or a clock (``TIME 00:01`` → ``TIME 01:30``)."""
+        session = self.session
+        digits = _digit_keys(session.context.actions or tuple(session.offered))
+        typing = _typing(goal_value)
+        if typing is None or len(digits) < 10:
+            return False
+        kind, typed, value, fmt = typing
+        self.guards.lift_all()
+        lamps = session.perceiver.reader.lamp_texts()
+        texts: list[str] = []
+        if key is not None:
+            entered = session.press(_planned(key), exploring=True)
+            texts.append(_main(entered.feedback.text, lamps))
+            if not entered.feedback.accepted or not texts[0] or not _unknown(entered):
+                return False
+        for digit in typed:
+            action = digits[digit]
+            planned = (
+                session.planned(action) if action in session.belief.model.actions else None
+            ) or _planned(action)
+            done = session.press(planned, exploring=True)
+            if not done.feedback.accepted:
+                return False
+            texts.append(_main(done.feedback.text, lamps))
+        learnt = infer_setting(name, [texts[0], texts[-1]], kind, texts[-1])
+        if learnt is None or learnt.current != value or not _fits(learnt.variable, goal_value):
+            return False
+        variable = dict(learnt.variable)
+        variable.pop("wrap", None)
+        if kind == "numeric":
+            width = max(len(typed), len(str(_whole(variable["initial"]) or "")))
+            variable["entry"] = {"format": fmt, "max_digits": width}
+        else:
+            variable["entry"] = {"format": fmt}
+        try:
+            new = add_keypad_setting(
+                session.belief.model, name, variable, key, [digits[d] for d in sorted(digits)]
+            )
+        except RepairError as exc:
+            session.episode.log("repair", f"could not add {name}: {exc}")
+            return False
+        under = f"{key}, then the digits" if key else "the digits"
+        session.adopt(new, f"{name}: found under {under}; {learnt.note}", setting_step(new, name))
+        session.discovered.add(name)
+        session.belief.set_value(name, value)
+        session.evidence[name] = value
         session.reread()
         return True
 
@@ -180,7 +290,7 @@ class VariableFinder:
         session.adopt(
             new,
             f"{name}: each of {', '.join(single)} selects one ({learnt.note})",
-            (f"set_{name}", 0),
+            setting_step(new, name),
         )
         session.discovered.add(name)
         session.belief.set_value(name, current)
@@ -189,13 +299,32 @@ class VariableFinder:
         return True
 
     def _adjusters(self, entry: str) -> list[str]:
-        """Keys to walk after an entry key: those that step things (▲/▼, dials) first."""
+        """Keys to walk after an entry key: those that step things (▲/▼, dials) first; never
+        a lock's, a power switch's or a start key (they change which keys work)."""
         offered = list(self.session.context.actions or self.session.offered)
         stepping = ("plus", "minus", "up", "down", "cw", "ccw", "left", "right", "next", "prev")
-        keys = [a for a in offered if a != entry and not _is_reverse(a) and not _is_digit(a)]
+        switches = self._switch_keys()
+        keys = [
+            a
+            for a in offered
+            if a != entry and not _is_reverse(a) and not _is_digit(a) and a not in switches
+        ]
         return sorted(
             keys, key=lambda a: (not any(w in a.split("_") for w in stepping), keys.index(a))
         )
+
+    def _switch_keys(self) -> set[str]:
+        """Keys of the steps that change what a guard of the belief tests (power, locks, the
+        run state)."""
+        model = self.session.belief.model
+        tested = {n for guard in model.guards for n in guard.when}
+        return {
+            a
+            for steps in model.features.values()
+            for step in steps
+            if step.variable in tested or tested & set(step.set)
+            for a in step.actions
+        }
 
     def _as_lamp(self, model: Any, name: str, text: str) -> Any:
         """The new setting also as a lamp, when the display showed it after its main text
@@ -218,15 +347,20 @@ class VariableFinder:
         session = self.session
         model = session.belief.model
         starting = {a for steps in model.features.values() for a in steps[0].actions}
+        starting |= {a for entry in model.anywhere for a in entry.actions}  # a role of their own
+        starting |= {a for a, spec in model.actions.items() if spec.skill == "wait"}
+        plain = plain_keys(model)
         offered = list(session.context.actions or session.offered)
-        unknown = [a for a in offered if a not in starting and not _is_digit(a)]
+        unknown = [a for a in offered if (a not in starting or a in plain) and not _is_digit(a)]
         words = {w for w in name.split("_") if len(w) >= 3}
 
         def alike(action: str) -> bool:
             parts = [p for p in action.split("_") if len(p) >= 3]
             return any(w.startswith(p) or p.startswith(w) for w in words for p in parts)
 
-        ranked = sorted(unknown, key=lambda a: (not alike(a), unknown.index(a)))
+        # a key the belief gives a plain step only (press it, nothing changes) may be the very
+        # key of the setting the reader missed: after the keys with no role at all
+        ranked = sorted(unknown, key=lambda a: (not alike(a), a in plain, unknown.index(a)))
         return [a for a in ranked if not _is_reverse(a)][:MAX_KEYS]
 
     def _walk(self, key: str) -> list[str]:
@@ -234,8 +368,10 @@ class VariableFinder:
         session = self.session
         action = _planned(key)
         texts: list[str] = []
+        self.trail = []
         for _ in range(MAX_WALK):
             done: Executed = session.press(action, exploring=True)
+            self.trail.append(done.feedback.text if done.feedback.accepted else None)
             text = _main(done.feedback.text, session.perceiver.reader.lamp_texts())
             if not texts and not done.feedback.text.strip() and self.guards.learn(done):
                 continue  # a dark panel the belief had no guard for (asleep): now lit
@@ -264,7 +400,8 @@ def infer_setting(
 ) -> Learnt | None:
     """A setting's definition from the texts one key showed, press after press (the last one
     may repeat an earlier one: the walk went round, or stopped at an end); ``last`` is the text
-    the display shows now (where the setting is).
+    the display shows now (where the setting is). ``kind`` is tried first ("worded": only a
+    word of its own per value).
 
     >>> learnt = infer_setting("temperature", ["TEMP 180°C", "TEMP 190°C", "TEMP 200°C",
     ...                                        "TEMP 200°C"], "numeric")
@@ -278,10 +415,15 @@ def infer_setting(
     if len(distinct) < 2:
         return None
     wrap = len(texts) > len(distinct) and texts[-1] == distinct[0] and len(distinct) > 1
-    readers = {"time": _time_setting, "numeric": _numeric_setting, "discrete": _discrete_setting}
-    order = [kind, *(k for k in ("numeric", "time", "discrete") if k != kind)]
+    readers = {
+        "time": _time_setting,
+        "numeric": _numeric_setting,
+        "discrete": _discrete_setting,
+        "worded": _worded_setting,
+    }
+    order = [kind] if kind == "worded" else [kind, "numeric", "time", "discrete", "worded"]
     found = None
-    for candidate in order:
+    for candidate in dict.fromkeys(order):
         found = readers[candidate](distinct)
         if found is not None:
             break
@@ -290,7 +432,9 @@ def infer_setting(
     variable, values, template = found
     variable["wrap"] = wrap
     label, _, rest = template.partition(" ")
-    if rest == "{value}" and "{" not in label:
+    if "show" in variable:
+        pass  # a word of its own for each value
+    elif rest == "{value}" and "{" not in label:
         variable["label"] = label
     else:
         variable["show"] = template
@@ -384,6 +528,20 @@ def _discrete_setting(distinct: Sequence[str]) -> tuple[dict[str, Any], list[Any
     return {"type": "discrete", "values": values}, values, prefix + "{value}" + suffix
 
 
+def _worded_setting(distinct: Sequence[str]) -> tuple[dict[str, Any], list[Any], str] | None:
+    """Texts with nothing in common (``CUP 150mL``, ``MUG 300mL``, ``FREE``): a value each,
+    named by its first word, shown as the whole text.
+
+    >>> _worded_setting(["MUG 300mL", "FREE"])[0]
+    {'type': 'discrete', 'values': ['mug', 'free'], 'show': {'mug': 'MUG 300mL', 'free': 'FREE'}}
+    """
+    values = [text.split()[0].casefold() if text.split() else "" for text in distinct]
+    if any(not v.isalpha() for v in values) or len(set(values)) != len(values):
+        return None
+    show = dict(zip(values, distinct, strict=True))
+    return {"type": "discrete", "values": values, "show": show}, list(values), "{value}"
+
+
 def _fits(variable: dict[str, Any], goal_value: Any) -> bool:
     """Whether ``goal_value`` reads as a value of the setting a walk found: in its unit for a
     number or time (the range may be longer than the walk went), among its words if a word."""
@@ -413,14 +571,82 @@ def _kind_of(goal_value: Any) -> str:
     return "numeric" if re.match(r"^\s*[-+]?\d", text) else "discrete"
 
 
+def lamp_word(lit: str, unlit: str) -> str | None:
+    """The one word a display shows more when a lamp is lit (``SYNC``), if that is all that
+    tells the two texts apart: a word with letters or a symbol, and no digits (not a value).
+
+    >>> lamp_word("SYNC  Z1 air fry", "1: 200°C  Z1 air fry"), lamp_word("LIGHT", "")
+    ('SYNC', 'LIGHT')
+    >>> lamp_word("☾  RUN", "RUN"), lamp_word("--  RUN", "RUN")
+    ('☾', None)
+    >>> lamp_word("160°C", "") is None
+    True
+    """
+    shown = [part for part in _GAP.split(lit.strip()) if part]
+    others = set(_GAP.split(unlit.strip()))
+    new = [part for part in shown if part not in others]
+    if len(new) != 1 or any(c.isdigit() for c in new[0]):
+        return None
+    if not any(c.isalpha() or not c.isascii() for c in new[0]):
+        return None  # punctuation alone ("--"); letters or a symbol lamp (☾, ⚡) it may be
+    return new[0]
+
+
+def _digit_keys(actions: Sequence[str]) -> dict[str, str]:
+    """The keypad: digit → action (``press_7``)."""
+    return {
+        a.rsplit("_", 1)[-1]: a for a in actions if _is_digit(a) and len(a.rsplit("_", 1)[-1]) == 1
+    }
+
+
+def _typing(goal_value: Any) -> tuple[str, str, Any, str] | None:
+    """How to type a goal value on a keypad: (kind, digits, the value as the setting holds it,
+    entry format) — a whole number as itself, a time as minutes and seconds (``1:30`` →
+    ``130``), or hours and minutes past 99 minutes.
+
+    >>> _typing(70), _typing("1 min 30 s")
+    (('numeric', '70', 70, 'number'), ('time', '130', '00:01:30', 'mm:ss'))
+    >>> _typing("2 h"), _typing("1000 ml")
+    (('time', '200', '02:00:00', 'h:mm'), ('numeric', '1000', 1000, 'number'))
+    """
+    probe = TimeVariable(type="time", ranges=[("00:00:00", "99:59:59", 1)])
+    try:  # a clock, or a number with a unit of time
+        clock = _kind_of(goal_value) == "time" or any(c.isalpha() for c in str(goal_value))
+        value = parse_value(probe, goal_value) if clock else None
+    except ValueProblem:
+        value = None
+    if value is None:
+        number = _whole(goal_value)
+        return None if number is None else ("numeric", str(number), number, "number")
+    seconds = parse_hms(value)
+    if seconds < 100 * 60:
+        return "time", str(seconds // 60 * 100 + seconds % 60), value, "mm:ss"
+    if seconds % 60 == 0:
+        return "time", str(seconds // 3600 * 100 + seconds % 3600 // 60), value, "h:mm"
+    return None
+
+
+def _whole(value: Any) -> int | None:
+    """A goal value as a whole number (``70``, ``"70 %"``), if it is one."""
+    match = _NUMBER.match(str(value))
+    if match is None:
+        return None
+    number = float(match.group(1))
+    return int(number) if number.is_integer() and number >= 0 else None
+
+
 def _is_digit(action: str) -> bool:
     """A keypad digit: typing is not walking (a missing keypad setting is not looked for)."""
     return action.rsplit("_", 1)[-1].isdigit()
 
 
 def _unknown(done: Executed) -> bool:
-    """The press showed text the belief cannot read (or reads only in part)."""
-    return done.seen is not None and (done.seen.unknown or done.seen.partial)
+    """The press showed text the belief cannot read (or reads only in part, or only as a value
+    its setting cannot have: ``DELAY 0:00`` for a ``DELAY MODE`` of standard/intensive)."""
+    seen = done.seen
+    return seen is not None and (
+        seen.unknown or seen.partial or (seen.screen is not None and seen.screen in seen.outside)
+    )
 
 
 def _is_reverse(action: str) -> bool:
@@ -439,11 +665,11 @@ def _planned(action: str) -> PlannedAction:
 
 
 def _main(text: str, lamps: set[str]) -> str:
-    """The main display: the text without the lamps the belief knows at its end."""
+    """The main display: what comes before the lamps (two spaces apart), known or not."""
     parts = _GAP.split(text.strip())
     while len(parts) > 1 and parts[-1].casefold() in lamps:
         parts.pop()
-    return "  ".join(parts)
+    return parts[0]  # a lamp the belief does not know is no part of the setting's screen
 
 
 __all__ = ["DiscreteVariable", "VariableFinder", "infer_setting"]

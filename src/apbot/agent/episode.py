@@ -94,6 +94,9 @@ class Episode:
     failure: str = ""
     llm_usage: dict[str, int] = field(default_factory=dict)
     observer: Callable[[TraceEvent], None] | None = field(default=None, repr=False)
+    belief: ApplianceModel | None = field(default=None, repr=False)
+    """The model the method ended with, its repairs kept (None: it keeps none); a household
+    robot starts its next task from it (``apbot bench --learn``)."""
 
     def log(self, kind: EventKind, text: str = "", **fields: Any) -> TraceEvent:
         event = TraceEvent(kind, self.reasoning_steps, text, **fields)

@@ -40,11 +40,13 @@ from apbot.agent.session import (
     summary,
     tidy,
 )
+from apbot.model.domain import all_values
 from apbot.model.effects import parse_entry
 from apbot.model.schema import (
     Add,
     ApplianceModel,
     DiscreteVariable,
+    Skip,
     TimeVariable,
     time_step_seconds,
 )
@@ -66,6 +68,9 @@ class Explorer:
         assert last.pointer is not None
         self.session.explored.add(name)
         pointer, key = last.pointer, last.action
+        single = self.single_step(pointer, key)
+        if single is not key:  # walk one value at a time: its history was in strides
+            key, history = single, []
         forward, unseen = self.walk(name, key, history or [])
         visible = [v for v in forward if not isinstance(v, Dark)]
         opposite = self.opposite(pointer, key.name)
@@ -112,7 +117,7 @@ class Explorer:
         """Texts the belief could not read: learn how the display prints the setting from them,
         then read them again; what stays unreadable counts as dark."""
         texts = [v.text for v in forward + (backward or []) if isinstance(v, Unread)]
-        if texts:
+        if texts and not self.displays.learn_word(name, forward + (backward or [])):
             self.displays.learn(name, texts)
 
         def again(trace: list[Any]) -> list[Any]:
@@ -200,8 +205,28 @@ class Explorer:
             )
         ]
         # a key believed to go the same way may be the one the reader got backwards
-        ordered = sorted(stepping, key=lambda other: self.session.effect(pointer, other) == effect)
+        ordered = sorted(
+            stepping,
+            key=lambda other: (
+                self.session.effect(pointer, other) == effect
+                or _way(self.session.effect(pointer, other)) == _way(effect) != 0
+            ),
+        )
         return self.session.planned(ordered[0]) if ordered else None
+
+    def single_step(self, pointer: tuple[str, int], key: PlannedAction) -> PlannedAction:
+        """For a key that scrolls several values at once (a held ▲, ``skip``), the step's key
+        that moves one value the same way: a walk in strides skips values."""
+        effect = self.session.effect(pointer, key.name)
+        if not isinstance(effect, Skip):
+            return key
+        feature, index = pointer
+        for other in self.session.belief.model.features[feature][index].actions:
+            if _way(self.session.effect(pointer, other)) == _way(effect) and self.session.effect(
+                pointer, other
+            ) in ("next", "prev"):
+                return self.session.planned(other)
+        return key
 
     def stepping_key(self, name: str) -> Executed | None:
         """The step the belief is in, as an action to explore ``name`` with, if it steps it."""
@@ -453,8 +478,11 @@ class Explorer:
         if isinstance(spec, DiscreteVariable):
             return
         known = self.session.magnitudes(name)
+        if not known and spec.depends_on is not None:  # no case for this programme: what the
+            # other programmes take is the best guess of its range
+            known = [m for m in (magnitude(spec, v) for v in all_values(spec)) if m is not None]
         extra = [m for m in (magnitude(spec, loose(spec, v)) for v in observed) if m is not None]
-        if not known or not extra or set(extra) <= set(known):
+        if not known or not extra or set(extra) <= set(self.session.magnitudes(name)):
             return
         points = sorted(set(known) | set(extra))
         step = common_step(points)
@@ -481,6 +509,22 @@ def _entry_formats(spec: Any) -> list[str]:
     preferred = {"mm:ss": "mm:ss", "hh:mm": "hh:mm", "h:mm": "h:mm", "min": "minutes"}
     first = preferred.get(spec.format)
     return ([first] if first else []) + [f for f in order if f != first]
+
+
+def _way(effect: Any) -> int:
+    """Which way an effect moves a value along its order: +1, -1, or 0 (a go-to, none)."""
+    if effect == "next":
+        return 1
+    if effect == "prev":
+        return -1
+    amount: float | None = effect.skip if isinstance(effect, Skip) else None
+    if isinstance(effect, Add):
+        amount = effect.add if isinstance(effect.add, int | float) else None
+        if isinstance(effect.add, str):
+            amount = -1 if effect.add.startswith("-") else 1
+    if amount is None or amount == 0:
+        return 0
+    return 1 if amount > 0 else -1
 
 
 def _ends(wrap: bool | None) -> str:

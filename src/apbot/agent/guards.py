@@ -14,13 +14,16 @@ import re
 from typing import Any
 
 from apbot.agent.repair import RepairError, add_guard, allow, disallow
-from apbot.agent.session import Executed, Session
+from apbot.agent.session import MISSING, Executed, Session
 from apbot.model.display import OFF_WORDS
 from apbot.model.schema import DiscreteVariable
 from apbot.plan.plan import Unreachable, plan
 from apbot.sim.compiled import CompiledModel
 
+LEARNT = "learnt"  # the name of a guard the agent wrote into the belief
 ON_WORDS = frozenset({"on", "locked", "lock", "yes", "true", "enabled", "running"})
+MAIN_SWITCHES = frozenset({"power", "on_off", "main_switch", "standby"})
+RUN_WORDS = ("running", "cooking", "brewing", "heating", "washing", "blending")
 MAX_SUSPECTS = 3  # settings tried as the cause of one refusal
 MAX_RELAXATIONS = 12  # guard/key pairs tried when a guard keeps the goal out of reach
 RELAX_BUDGET = 5_000  # search nodes for each of them
@@ -31,6 +34,8 @@ class GuardLearner:
 
     def __init__(self, session: Session) -> None:
         self.session = session
+        # (guard condition, key) pairs seen refused: no relaxation may suppose them allowed
+        self.witnessed: set[tuple[str, str]] = set()
 
     def explain(self, refused: Executed) -> bool:
         """A refusal whose display is one of the belief's guard messages: believe that guard
@@ -52,6 +57,9 @@ class GuardLearner:
                     self.session.belief.set_value(compiled.vars[v].name, domain.values[min(ok)])
             self.session.episode.log(
                 "repair", f"refused with {text!r}: the appliance must be in '{guard.name or text}'"
+            )
+            self.witnessed.add(
+                (_condition(self.session.belief.model.guards[index].when), refused.action.name)
             )
             return True
         return False
@@ -93,6 +101,7 @@ class GuardLearner:
                 f"{guard.name or 'guard ' + str(index)} does not let {failed.action.name} work",
                 session.belief.pointer(),
             )
+            self.witnessed.add((_condition(new.guards[index].when), failed.action.name))
             return True
         return False
 
@@ -102,9 +111,21 @@ class GuardLearner:
         the guard."""
         session = self.session
         dark = not failed.feedback.text.strip()
-        if not (dark or failed.refused):
-            return False  # ignored on a lit display: a procedure's step, not a guard
-        for name, blocking in self._suspects(failed, dark)[:MAX_SUSPECTS]:
+        if dark or failed.refused:
+            suspects = self._suspects(dark, action=failed.action.name)
+            if not dark:  # a refusal on a lit display: also a main switch at off (standby)
+                switches = {n for n in session.belief.model.variables if n in MAIN_SWITCHES}
+                suspects += self._suspects(True, switches, action=failed.action.name)
+        elif failed.unchanged:  # ignored without a sign on a lit display: a switch at off
+            # (standby) that some guard of the belief already tests
+            tested = {n for guard in session.belief.model.guards for n in guard.when}
+            # or the main switch, whose guard the reader may have missed altogether
+            tested |= {n for n in session.belief.model.variables if n in MAIN_SWITCHES}
+            suspects = self._suspects(True, tested) + self._cycles_on()
+        else:
+            return False  # another screen came up: a procedure's step, not a guard
+        silent = not (dark or failed.refused)
+        for name, blocking in suspects[:MAX_SUSPECTS]:
             if not session.budget.once("guard", f"learn:{failed.action.name}:{name}"):
                 continue
             other = next(v for v in session.domain_values(name) if v != blocking)
@@ -117,17 +138,23 @@ class GuardLearner:
             try:
                 route = plan(session.belief.compiled, session.belief.state, {**keep, name: other})
             except Unreachable:
-                continue
+                try:  # the suspect cannot change alone (switching on clears a start time)
+                    route = plan(session.belief.compiled, session.belief.state, {name: other})
+                except Unreachable:
+                    continue
             lifting = [a.name for a in route.actions]
             for planned in route.actions:
                 session.press(planned, exploring=True)
             before = session.last.text
             retry = session.press(failed.action, exploring=True)
+            if retry.feedback.accepted and retry.feedback.text == before:
+                retry = self._again(retry)  # the screen it came to was up already: once more
             if (
                 not (retry.believed_accepted and retry.feedback.accepted)
                 or retry.unchanged
                 or retry.feedback.text == before
                 or (retry.surprises and retry.variable not in retry.surprises)
+                or (silent and retry.surprises)  # a lit panel: only what the belief predicted
             ):
                 continue
             try:
@@ -135,7 +162,7 @@ class GuardLearner:
                     session.belief.model,
                     {name: blocking},
                     sorted(set(lifting) | self._switching(name)),
-                    "" if dark else _main_text(failed.feedback.text, session),
+                    "" if dark or silent else _main_text(failed.feedback.text, session),
                     hide=dark,
                 )
             except RepairError as exc:
@@ -146,32 +173,71 @@ class GuardLearner:
                 f"while {name} is {blocking}, {failed.action.name} does not work",
                 session.belief.pointer(),
             )
+            self.witnessed.add((_condition({name: blocking}), failed.action.name))
             return True
         return False
 
-    def _suspects(self, failed: Executed, dark: bool) -> list[tuple[str, Any]]:
-        """Two-valued settings at a value that plausibly blocks keys: off behind a dark display,
-        on (a lock, a running cycle) behind a refusal."""
+    def _again(self, retry: Executed) -> Executed:
+        """A key pressed again after a retry that left the display as it was: if the setting
+        it shows moves, the key works (a first press that only shows the setting, on a screen
+        that was showing it already) — the retry counts as the second press."""
+        name = retry.variable
+        shown = retry.observed(name) if name else None
+        if name is None or shown is MISSING or shown is None:
+            return retry
+        again = self.session.press(retry.action, exploring=True)
+        moved = again.observed(name)
+        return again if moved is not MISSING and moved != shown else retry
+
+    def _suspects(
+        self, dark: bool, tested: set[str] | None = None, action: str | None = None
+    ) -> list[tuple[str, Any]]:
+        """Two-valued settings at a value that plausibly blocks keys: off behind a dark display
+        (``dark``), on (a lock, a running cycle) behind a refusal. With ``tested``: only those
+        settings, whatever guards their other value has (a key ignored without a sign)."""
         words = OFF_WORDS if dark else ON_WORDS
         suspects = []
         model = self.session.belief.model
-        guarded = {  # a switch whose other value is a guard of its own (power on, not off)
+        guarded = {  # a switch whose other value has a guard of its own that would refuse
+            # ``action`` too (a lock on, not off); one letting it through (power on) proves nothing
             name: {str(v) for v in (w if isinstance(w, list) else [w])}
             for guard in model.guards
-            if len(guard.when) == 1
+            if len(guard.when) == 1 and (action is None or action not in guard.only)
             for name, w in guard.when.items()
         }
         for name, spec in model.variables.items():
             if not isinstance(spec, DiscreteVariable) or spec.depends_on is not None:
                 continue
-            if name in guarded and str(self.session.belief.value(name)) not in guarded[name]:
+            if tested is not None:
+                if name not in tested:
+                    continue
+            elif name in guarded and str(self.session.belief.value(name)) not in guarded[name]:
                 continue
             value = self.session.belief.value(name)
             if value is None or str(value).casefold() not in words:
                 continue
             if len(self.session.domain_values(name)) == 2 and self._switching(name):
                 suspects.append((name, value))
-        return suspects
+        # a setting some guard already tests (power, a lock) first: it is known to block keys
+        tested = {n for guard in model.guards for n in guard.when}
+        return sorted(suspects, key=lambda suspect: suspect[0] not in tested)
+
+    def _cycles_on(self) -> list[tuple[str, Any]]:
+        """Run states that are on (a cycle running), which a key that did nothing without a
+        sign may be locked out by: most appliances lock their settings while they run."""
+        found = []
+        for name, spec in self.session.belief.model.variables.items():
+            if not isinstance(spec, DiscreteVariable) or spec.depends_on is not None:
+                continue
+            if not any(word in name for word in RUN_WORDS):
+                continue
+            value = self.session.belief.value(name)
+            values = self.session.domain_values(name)
+            if str(value).casefold() not in ON_WORDS or str(values[0]).casefold() not in OFF_WORDS:
+                continue
+            if self._switching(name):
+                found.append((name, value))
+        return found
 
     def _switching(self, name: str) -> set[str]:
         """The keys of the steps that change ``name`` itself."""
@@ -190,34 +256,36 @@ class GuardLearner:
         if that makes the goal reachable (once each). A refusal later takes it back."""
         session = self.session
         model = session.belief.model
+        tested = {n for guard in model.guards for n in guard.when}
+        steps = [s for feature in model.features.values() for s in feature]
+        # the keys of the locks and run states first (start while locked, lock while running)
         needed = sorted(
-            {
-                a
-                for steps in model.features.values()
-                for s in steps
-                if s.variable in target
-                for a in s.actions
-            }
+            {a for s in steps if s.variable in target for a in s.actions},
+            key=lambda a: (not any(s.variable in tested for s in steps if a in s.actions), a),
         )
         tried = 0
-        for index, guard in enumerate(model.guards):
-            for action in needed:
-                if action in guard.only or tried >= MAX_RELAXATIONS:
-                    continue
-                tried += 1
-                try:
-                    variant = allow(model, index, action)
-                    # a small search each: the variant is a guess, and a throwaway compilation
-                    plan(CompiledModel(variant), session.belief.state, target, RELAX_BUDGET)
-                except (RepairError, Unreachable):
-                    continue
-                if not session.budget.once("guard", f"relax:{index}:{action}"):
-                    continue
-                label = guard.name or f"guard {index}"
-                session.adopt(
-                    variant, f"{label} may let {action} work (to be seen)", session.belief.pointer()
-                )
-                return True
+        # a guard the agent wrote itself guessed every other key refused; the reader's own
+        # guards come from the manual: suppose the guess wrong first
+        order = sorted(enumerate(model.guards), key=lambda item: item[1].name != LEARNT)
+        for action, (index, guard) in ((a, g) for a in needed for g in order):
+            if action in guard.only or tried >= MAX_RELAXATIONS:
+                continue
+            if (_condition(guard.when), action) in self.witnessed:
+                continue  # seen refused there: no supposing
+            tried += 1
+            try:
+                variant = allow(model, index, action)
+                # a small search each: the variant is a guess, and a throwaway compilation
+                plan(CompiledModel(variant), session.belief.state, target, RELAX_BUDGET)
+            except (RepairError, Unreachable):
+                continue
+            if not session.budget.once("guard", f"relax:{index}:{action}"):
+                continue
+            label = guard.name or f"guard {index}"
+            session.adopt(
+                variant, f"{label} may let {action} work (to be seen)", session.belief.pointer()
+            )
+            return True
         return False
 
     def lift_all(self) -> None:
@@ -227,8 +295,26 @@ class GuardLearner:
         for guard in compiled.guards:
             holds = all(self.session.belief.state.values[v] in ok for v, ok in guard.conditions)
             blocked = [a for i, a in enumerate(compiled.action_names) if i not in guard.allowed]
-            if holds and blocked:
+            # a guard that getting out of puts the panel under another ("unit on": switching
+            # off lands in "unit off") is no blocker to lift
+            if holds and blocked and not self._swaps(guard):
                 self.lift(blocked[0])
+
+    def _swaps(self, guard: Any) -> bool:
+        """Whether leaving ``guard`` (its first condition changed) makes another guard hold."""
+        compiled = self.session.belief.compiled
+        values = list(self.session.belief.state.values)
+        for v, ok in guard.conditions:
+            domain = compiled.vars[v].domain(self.session.belief.state.values)
+            others = [i for i in range(len(domain.values) if domain else 0) if i not in ok]
+            if not others:
+                continue
+            values[v] = others[0]
+            return any(
+                other is not guard and all(values[u] in allowed for u, allowed in other.conditions)
+                for other in compiled.guards
+            )
+        return False
 
     def lift(self, action: str) -> None:
         """Bring the appliance out of any guard that would refuse ``action`` (switch it on,
@@ -255,9 +341,26 @@ class GuardLearner:
                     )
                 except Unreachable:
                     continue
+                before = self.session.last.text
                 for planned in found.actions:
                     self.session.press(planned, exploring=True)
+                name = compiled.vars[v].name
+                after = self.session.last
+                if (
+                    self.session.belief.value(name) != others[0]
+                    and after.accepted
+                    and after.text.strip()
+                    and after.text != before
+                ):
+                    # the panel answered (lit up, left the guard's message) with a screen the
+                    # belief cannot read: it did come out of the guard
+                    self.session.belief.set_value(name, others[0])
                 break
+
+
+def _condition(when: dict[str, Any]) -> str:
+    """A guard's condition as a key (the same whatever the guard is called)."""
+    return repr(sorted((name, str(value)) for name, value in when.items()))
 
 
 def _main_text(text: str, session: Session) -> str:

@@ -24,6 +24,8 @@ from apbot.agent.episode import Episode, TaskContext
 from apbot.agent.explorer import Explorer
 from apbot.agent.greedy import GreedyExecutor
 from apbot.agent.guards import GuardLearner
+from apbot.agent.looking import route_to_screen
+from apbot.agent.merged import ProcedureSplitter
 from apbot.agent.perception import Seen
 from apbot.agent.procedures import ProcedureRepairer
 from apbot.agent.session import (
@@ -60,6 +62,7 @@ class ClosedLoop:
         self.guards = GuardLearner(self.session)
         self.procedures = ProcedureRepairer(self.session, self.guards)
         self.finder = VariableFinder(self.session, self.guards)
+        self.splitter = ProcedureSplitter(self.session)
         self.greedy = GreedyExecutor(self.session)
         self.config = config
         self.context = context
@@ -90,6 +93,10 @@ class ClosedLoop:
             episode.claimed_success = stop.success
             episode.failure = "" if stop.success else stop.reason
             episode.log("stop", stop.reason)
+        except Unreachable as exc:  # a repair left the belief with no plan: a declared failure
+            episode.failure = f"no plan on the belief model: {exc.reason}"
+            episode.log("stop", episode.failure)
+        episode.belief = self.session.belief.model
         return episode
 
     def open_loop(self) -> None:
@@ -112,6 +119,8 @@ class ClosedLoop:
             inside = {n: v for n, v in inside.items() if not _starts(n)}  # but do not start
         for name in outside:
             if name in self.session.explored:
+                if self._again_after_the_rest(name, inside):
+                    continue
                 raise Stop(
                     _outside_text({name: outside[name]}) + " (explored: "
                     f"{summary(self.session.domain_values(name))})"
@@ -122,6 +131,10 @@ class ClosedLoop:
                 proxy = self.proxy(name, inside)
                 if proxy is not MISSING:
                     target[name] = proxy
+                elif name not in self.session.explored:
+                    # the setting is to be looked for in its programme: starting first would
+                    # lock it out
+                    target = {n: v for n, v in target.items() if not _starts(n)}
             found = self.make_plan(target)
             if not found.macro_actions:
                 if self.missing:
@@ -160,11 +173,29 @@ class ClosedLoop:
                 raise Stop("the goal holds", success=True)
             self.pending = list(found.macro_actions)
             self.session.episode.log("plan", " → ".join(m.feature for m in found.macro_actions))
+        if any(_starts(n) for n in self.pending[0].expect):
+            # once it runs, most keys are locked out: see what is unconfirmed first
+            unseen = self.session.unconfirmed({n for n in inside if not _starts(n)})
+            if unseen and self._look(unseen):
+                self.pending.clear()
+                return
         macro = self.pending.pop(0)
         self.start_macro(macro)
         executed = self.execute(macro)
         if not self.check(macro, executed):
             self.pending.clear()  # the belief changed: plan again from what was observed
+
+    def _again_after_the_rest(self, name: str, inside: dict[str, Any]) -> bool:
+        """A goal value missing from what a walk showed, while the rest of the goal (a
+        programme) is still to be set: the value may exist there. Walk it again once the rest
+        holds (once per setting)."""
+        pending = [n for n, v in inside.items() if self.session.belief.value(n) != v]
+        if not [n for n in pending if not _starts(n)]:
+            return False
+        if not self.session.budget.once("inspect", f"again:{name}"):
+            return False
+        self.session.explored.discard(name)
+        return True
 
     def _last_reading(self, name: str) -> str:
         if name in self.session.unread:
@@ -257,10 +288,18 @@ class ClosedLoop:
             if not self.config.closed_loop or exc.budget_hit:
                 raise Stop(f"no plan on the belief model: {exc.reason}") from None
             reachable: dict[str, Any] = {}
-            for name, value in target.items():  # the goal variable that breaks planning
+            # the goal variable that breaks planning (a run state last: it locks the rest)
+            for name, value in sorted(target.items(), key=lambda item: _starts(item[0])):
                 if self._plannable({**reachable, name: value}):
                     reachable[name] = value
                     continue
+                if _starts(name):
+                    others = {n: v for n, v in target.items() if n != name}
+                    if others and self._progress(others):
+                        return self._plan(others)  # a run state comes last: set the rest first
+                    anyway = self._start_anyway(name, value, target)
+                    if anyway is not None:
+                        return anyway
                 # look for the way to it first: progress on the rest (starting a cycle, say)
                 # could close the door on it
                 if self.procedures.recover_unreachable({name: value}):
@@ -268,8 +307,11 @@ class ClosedLoop:
                 if self.guards.relax(target):
                     return self.make_plan(target)
                 if reachable:
-                    partial = self._plan(reachable)
-                    if partial.macro_actions:
+                    try:  # the repairs tried above may have changed what is reachable
+                        partial: Plan | None = self._plan(reachable)
+                    except Unreachable:
+                        partial = None
+                    if partial is not None and partial.macro_actions:
                         return partial  # progress: the rest may be reachable from there
                 if self.inspect(name):
                     return self.make_plan(target)
@@ -282,6 +324,20 @@ class ClosedLoop:
         for name in names:
             if not self.session.budget.once("inspect", f"look:{name}"):
                 continue
+            session = self.session
+            route = route_to_screen(
+                session.belief.compiled,
+                session.belief.state,
+                name,
+                session.belief.model.variables,  # a look changes nothing else
+                sorted(session.offered & set(session.belief.model.actions)),
+            )
+            if route is not None:
+                for action in route:
+                    session.press(session.planned(action), exploring=True)
+                return True
+            if self._guarding_the_goal():
+                continue  # getting out would undo the goal (stop a running cycle): no look
             for feature, steps in self.session.belief.model.features.items():
                 index = next((i for i, s in enumerate(steps) if s.variable == name), None)
                 if index is None:
@@ -291,6 +347,16 @@ class ClosedLoop:
                 self.session.press(self.session.planned(steps[index].actions[0]), exploring=True)
                 return True
         return False
+
+    def _guarding_the_goal(self) -> bool:
+        """A guard holds whose condition the goal itself asks for (running, locked)."""
+        compiled, state = self.session.belief.compiled, self.session.belief.state
+        goal = set(self.context.goal)
+        return any(
+            all(state.values[v] in ok for v, ok in guard.conditions)
+            and any(compiled.vars[v].name in goal for v, _ in guard.conditions)
+            for guard in compiled.guards
+        )
 
     def inspect(self, name: str) -> bool:
         """A goal setting the belief cannot reach: go through the procedure that adjusts it
@@ -355,6 +421,31 @@ class ClosedLoop:
             return found
         return Plan(found.goal, head.macro_actions + rest.macro_actions, found.expanded)
 
+    def _start_anyway(self, name: str, value: Any, target: dict[str, Any]) -> Plan | None:
+        """The rest of the goal holds, and the belief says starting undoes part of it (a
+        reset the reader may have misread): start the belief's way, and let the display say
+        whether the side effect is real (once per belief)."""
+        rest = {n: v for n, v in target.items() if n != name}
+        if any(self.session.belief.value(n) != v for n, v in rest.items()):
+            return None  # the rest first
+        try:
+            found = self._plan({name: value})
+        except Unreachable:
+            return None
+        if not {n for m in found.macro_actions for n in m.expect} & set(rest):
+            return None  # it undoes nothing of the goal: not why there is no plan
+        repairs = len(self.session.episode.repairs)  # once per belief
+        if not self.session.budget.once("inspect", f"anyway:{name}:{repairs}"):
+            return None
+        return found
+
+    def _progress(self, target: dict[str, Any]) -> bool:
+        """Whether the belief has a plan that changes something towards ``target``."""
+        try:
+            return bool(self._plan(target).macro_actions)
+        except Unreachable:
+            return False
+
     def _plannable(self, target: dict[str, Any]) -> bool:
         try:
             self._plan(target)
@@ -385,7 +476,15 @@ class ClosedLoop:
                 n: "(unreadable)" if o is UNREADABLE else o for n, (_, o) in done.surprises.items()
             },
         )
-        if (
+        if not done.refused and self.splitter.split(done):
+            pass  # plan again with the procedure the key really starts
+        elif (
+            not done.refused
+            and (feature := self.splitter.misentered(done)) is not None
+            and self.procedures.find_entry(feature)
+        ):
+            pass  # the procedure lacked its entry key: found
+        elif (
             not done.refused
             and self.procedures.plausibly_moved(done)
             and (self.procedures.move_key(done))
@@ -506,9 +605,12 @@ class ClosedLoop:
             f"{name} keeps showing values the model does not predict (last: "
             f"{observed!r}, expected {predicted!r})",
         )
+        if self.procedures.independent(name, executed[upto], observed):
+            return
         adjusting = [e for e in executed[: upto + 1] if e.variable == name and e.believed_accepted]
-        if not adjusting:
-            return  # changed as a side effect: believing the display is all there is to do
+        if not adjusting:  # changed as a side effect: the step that did it says so now
+            self.procedures.learn_side_effect(name, executed[upto], observed)
+            return
         last = adjusting[-1]
         assert last.pointer is not None
         unchanged = observed == self.values_before.get(name)
@@ -521,6 +623,8 @@ class ClosedLoop:
             return
         if unchanged and self.procedures.absorbed(adjusting[0]):
             return
+        if first is not None and first.unchanged and self.guards.learn(first):
+            return  # a key ignored without a sign: a guard the belief lacked (now learnt)
         effect = self.session.effect(last.pointer, last.action.name)
         if self.session.stepping(last.pointer, last.action.name):
             self.explore(name, last, self.explorer.history(name, last, executed))
@@ -535,7 +639,8 @@ class ClosedLoop:
 
     def settle_contradictions(self, names: dict[str, Any]) -> bool:
         """A setting last shown with a value the belief cannot hold must not count as done:
-        a keypad setting learns the value (True: plan again); otherwise the run gives up."""
+        a keypad setting learns the value, another is walked again once (True: plan again);
+        otherwise the run gives up."""
         settled = False
         for name in [n for n in self.session.contradicted if n in names]:
             value = self.session.contradicted.pop(name)
@@ -543,6 +648,16 @@ class ClosedLoop:
             if getattr(spec, "entry", None) is not None:
                 self.explorer.widen(name, [value])
                 if self.session.belief.set_value(name, value):
+                    settled = True
+                    continue
+            elif self.session.budget.once("inspect", f"contradicted:{name}"):
+                # walk it again where it is now (another programme may have other values)
+                key = self.explorer.stepping_key(name)
+                if key is not None:
+                    self.explore(name, key)
+                    settled = True
+                    continue
+                if self.inspect(name):
                     settled = True
                     continue
             raise Stop(f"the display showed {name}={value!r}, which the belief cannot hold")

@@ -105,8 +105,8 @@ class Perceiver:
         # the belief can read it at all (a third-party display may look nothing like it)
         estimate = self.estimator.estimate(feedback, context=context)
         named = set(estimate.values) | set(estimate.outside)
-        if seen.unknown:
-            seen = Seen(feedback.text)
+        if seen.unknown:  # still unknown if a value shown by name fits none of the belief's
+            seen = Seen(feedback.text, unknown=bool(estimate.unmatched))
         for name in named:
             seen.values.pop(name, None)
             seen.outside.pop(name, None)

@@ -12,10 +12,20 @@ from __future__ import annotations
 from typing import Any
 
 from apbot.agent.guards import GuardLearner
-from apbot.agent.repair import RepairError, drop_action, insert_step, move_action, set_effects
-from apbot.agent.session import MISSING, Executed, Session, Stop
+from apbot.agent.repair import (
+    RepairError,
+    drop_action,
+    drop_dependence,
+    insert_step,
+    move_action,
+    set_effects,
+    set_side_effect,
+)
+from apbot.agent.session import MISSING, UNREADABLE, Executed, Session, Stop
 from apbot.model.schema import GoTo
 from apbot.plan.plan import PlannedAction
+
+_RUN_WORDS = ("running", "heating", "dispensing", "status", "brewing", "cooking")
 
 
 class ProcedureRepairer:
@@ -83,17 +93,15 @@ class ProcedureRepairer:
                 )
                 return
             if after.feedback.accepted and shows:
+                model = self.session.belief.model
                 try:
-                    new = insert_step(
-                        self.session.belief.model,
-                        feature,
-                        index,
-                        [candidate],
-                        move=candidate in doubles,
-                    )
-                except RepairError as exc:
-                    self.session.episode.log("repair", f"could not add a step: {exc}")
-                    continue
+                    new = insert_step(model, feature, index, [candidate], move=candidate in doubles)
+                except RepairError:
+                    try:  # it starts another procedure in the belief: shown to do this instead
+                        new = insert_step(model, feature, index, [candidate], move=True)
+                    except RepairError as exc:
+                        self.session.episode.log("repair", f"could not add a step: {exc}")
+                        continue
                 self.session.adopt(
                     new,
                     f"{feature} starts with {candidate} before {first.action.name}",
@@ -287,6 +295,8 @@ class ProcedureRepairer:
         for action in self.session.belief.model.actions:
             if action in exclude or action not in self.session.offered:
                 continue
+            if self._locks(action):
+                continue  # a lock hold named like the setting (hold TIMER ▲) would lock out
             parts = set(action.split("_"))
             if words & parts or any(
                 w.startswith(p) or p.startswith(w) for w in words for p in parts if len(p) >= 3
@@ -308,16 +318,55 @@ class ProcedureRepairer:
                 return True
             if any(self.find_separator(feature, name) for feature in features):
                 return True
+            if not features and self._setter(name, blocked[name]):
+                return True
         return False
+
+    def _setter(self, name: str, value: Any) -> bool:
+        """A goal setting no step adjusts, which none of the belief's side effects brings to
+        the goal value (running, set by START): a key named like it — START for a run state —
+        may set it as a side effect the reader missed. Press each such key once; the first
+        after which the display shows the setting at the goal value teaches that side effect."""
+        session = self.session
+        compiled = session.belief.compiled
+        keys = self.keys_like(name, exclude=set())
+        if any(word in name for word in _RUN_WORDS):
+            keys += [a for a in session.belief.model.actions if "start" in a.split("_")]
+        for key in list(dict.fromkeys(keys))[:3]:
+            if key not in session.offered or not session.budget.once(
+                "unreachable", f"setter:{key}"
+            ):
+                continue
+            self.guards.lift(key)
+            probe = session.press(session.planned(key), exploring=True)
+            observed = probe.observed(name)
+            if not probe.feedback.accepted or probe.state_before is None:
+                continue
+            if observed != value or observed == compiled.value(probe.state_before, name):
+                continue
+            if self.learn_side_effect(name, probe, observed):
+                return True
+        return False
+
+    def find_entry(self, feature: str) -> bool:
+        """An earlier key was believed to start ``feature`` and did nothing: the procedure
+        lacks the key that starts it. Probe for it (once per setting)."""
+        steps = self.session.belief.model.features.get(feature, [])
+        name = next((s.variable for s in steps if s.variable is not None), None)
+        if name is None or not self.session.budget.once("unreachable", name):
+            return False
+        self.session.forget_pointer()
+        return self._first_step_from_orphans(name, [feature])
 
     def _first_step_from_orphans(self, name: str, features: list[str]) -> bool:
         """Keys no procedure uses, or named like the setting (an entry key filed under another
         procedure): the one that brings the setting up is the entry step it lacks."""
         used = set(self.orphans())
-        for candidate in dict.fromkeys([*used, *self.keys_like(name, exclude=set())]):
+        firsts = {a for f in features for a in self.session.belief.model.features[f][0].actions}
+        for candidate in dict.fromkeys([*used, *self.keys_like(name, exclude=firsts)]):
             self.guards.lift(candidate)
             probe = self.session.press(self.session.planned(candidate), exploring=True)
-            if not probe.feedback.accepted or probe.observed(name) is MISSING:
+            if not probe.feedback.accepted or not self.session.shows(probe.feedback, name):
                 continue
             for feature in features:
                 try:
@@ -334,6 +383,25 @@ class ProcedureRepairer:
                 return True
         return False
 
+    def _locks(self, action: str) -> bool:
+        """Whether the belief says ``action`` puts the panel under a guard (locks it, switches
+        it off) from where it is now."""
+        compiled = self.session.belief.compiled
+        index = compiled.action_index.get(action)
+        if index is None:
+            return False
+        state = self.session.belief.state
+        after = compiled.apply(state, index, compiled.hold_seconds[index] or None)
+        if after is None:
+            return False
+
+        def holding(values: tuple[int, ...]) -> int:
+            return sum(
+                all(values[v] in ok for v, ok in guard.conditions) for guard in compiled.guards
+            )
+
+        return holding(after.values) > holding(state.values)
+
     def find_separator(self, feature: str, name: str) -> bool:
         """A step of ``feature`` that can never be entered because it shares its keys with
         the step before it: walk the procedure up to that step, then try the procedure's other
@@ -348,6 +416,9 @@ class ProcedureRepairer:
             return False
         inside = {a for i in (index - 1, index) for a in steps[i].actions}
         others = [a for s in steps for a in s.actions if a not in inside]
+        # or a key named like the setting, filed under another procedure (TIMER, which
+        # switches the right side to its timer as it does the left side)
+        others += self.keys_like(name, exclude=inside | {steps[0].actions[0]})
         for candidate in dict.fromkeys(others):
             # from the step before (where the plan left off), else through the procedure
             if self.session.belief.pointer() != (feature, index - 1):
@@ -371,6 +442,74 @@ class ProcedureRepairer:
                     return True
             self.session.forget_pointer()
         return False
+
+    def learn_side_effect(self, name: str, done: Executed, observed: Any) -> bool:
+        """A press of another setting's step changed ``name`` otherwise than the belief said:
+        the step leaves it alone (the display kept the value), sets it to what was shown, or
+        resets it to its starting value — once per step and setting."""
+        session = self.session
+        if done.pointer is None or done.state_before is None or done.refused:
+            return False
+        if observed is MISSING or observed is UNREADABLE or observed is None:
+            return False
+        seen = done.seen
+        if seen is None or seen.blank or name not in seen.values or seen.values[name] != observed:
+            return False  # a dark panel shows no lamp; a value the setting cannot have is no set
+        feature, index = done.pointer
+        step = session.belief.model.features[feature][index]
+        if step.variable == name or name not in session.belief.model.variables:
+            return False
+        if name in session.discovered:
+            return False  # what it depends on is a guess
+        kept = done.shown_before.get(name, MISSING) == observed  # as last shown: untouched
+        if name in done.unseen_before and not kept:
+            return False  # what it was before is a guess: the change may be older
+        compiled = session.belief.compiled
+        before = compiled.value(done.state_before, name)
+        initial = session.belief.initial_value(name, done.state_before)
+        value, reset = None, False
+        if observed == before:
+            if name not in step.set and name not in step.reset:
+                return False
+            change = "leaves it alone"
+        elif observed == initial:
+            reset, change = True, "resets it"
+        else:
+            value, change = observed, f"sets it to {observed}"
+        if not session.budget.once("side", f"{feature}:{index}:{name}"):
+            return False
+        try:
+            new = set_side_effect(session.belief.model, feature, index, name, value, reset)
+        except RepairError as exc:
+            session.episode.log("repair", f"could not change {feature}'s side effect: {exc}")
+            return False
+        session.adopt(new, f"{feature}: {done.action.name} {change} ({name})", done.pointer)
+        session.belief.set_value(name, observed)
+        return True
+
+    def independent(self, name: str, done: Executed, observed: Any) -> bool:
+        """A setting found on the panel, guessed to depend on the programme, shows again the
+        value it showed before a programme change the belief said would reset it: it does not
+        depend on the programme (once)."""
+        session = self.session
+        spec = session.belief.model.variables.get(name)
+        if spec is None or spec.depends_on is None or name not in session.discovered:
+            return False
+        if observed is MISSING or done.shown_before.get(name, MISSING) != observed:
+            return False
+        case = session.case(name)
+        if case is None or not session.budget.once("side", f"independent:{name}"):
+            return False
+        try:
+            new = drop_dependence(session.belief.model, name, case)
+        except RepairError as exc:
+            session.episode.log("repair", f"could not make {name} independent: {exc}")
+            return False
+        session.adopt(
+            new, f"{name} keeps its value whatever the {spec.depends_on}", session.belief.pointer()
+        )
+        session.belief.set_value(name, observed)
+        return True
 
     def absorbed(self, entering: Executed) -> bool:
         """A key meant to start a new procedure changed nothing, and the display does not
@@ -407,13 +546,12 @@ class ProcedureRepairer:
             self.session.press(self.session.planned(step.actions[0]), exploring=True)
 
     def orphans(self) -> list[str]:
-        """Keys the appliance offers that no feature of the belief uses (at most eight)."""
-        used = {
-            a
-            for steps in self.session.belief.model.features.values()
-            for s in steps
-            for a in s.actions
-        }
+        """Keys the appliance offers that no feature of the belief uses, nor its keys that
+        act from anywhere, nor a wait (at most eight)."""
+        model = self.session.belief.model
+        used = {a for steps in model.features.values() for s in steps for a in s.actions}
+        used |= {a for entry in model.anywhere for a in entry.actions}
+        used |= {a for a, spec in model.actions.items() if spec.skill == "wait"}
         return [
             a
             for a in self.session.belief.model.actions

@@ -400,6 +400,8 @@ class DisplayReader:
             own = screen.template.replace("{label}", "label" if screen.variable else "")
             if not TEMPLATE_FIELD.sub("", own).strip():
                 continue  # a bare "{value}" would read any text at all as a word
+            if self._worded(screen):
+                continue  # every value has its own word: this screen only ever prints "--"
             names = [
                 screen.variable if n == "value" else n
                 for n in TEMPLATE_FIELD.findall(screen.template)
@@ -411,6 +413,14 @@ class DisplayReader:
             ):
                 loose.append(self._compile(screen, screen.variable, loose=True))
         return loose
+
+    def _worded(self, screen: Screen) -> bool:
+        """The general screen of a setting printed by a word per value (a ``show`` map that
+        covers every value): it exists only for ``--`` in a programme without the setting."""
+        spec = self._specs.get(screen.variable or "")
+        if spec is None or screen.fixed or not isinstance(spec.show, dict):
+            return False
+        return all(str(v) in spec.show for v in all_values(spec))
 
     def _compile(self, screen: Screen, focus: str | None, loose: bool) -> _Pattern:
         parts: list[str] = []
@@ -448,7 +458,9 @@ class DisplayReader:
             search = None
         elif main:
             regex = rf"\s*{main}(?P<_lamps>(?:\s+(?:{lamps}))*)\s*"
-            search = re.compile(rf"(?<![\w:.%]){main}(?![\w:.%])", re.IGNORECASE)
+            # found inside a longer text, not inside a word or a number (1 is no reading of
+            # a 1-4 lamp, nor 12 of 12/24)
+            search = re.compile(rf"(?<![\w:.%\-/]){main}(?![\w:.%\-/])", re.IGNORECASE)
         else:
             regex = rf"\s*(?P<_lamps>(?:{lamps})(?:\s+(?:{lamps}))*)?\s*"
             search = None

@@ -21,13 +21,15 @@ class Method:
     """A named way of operating an appliance.
 
     ``uses_truth``: the method is given the ground-truth model whatever belief the run asks
-    for (the oracle).
+    for (the oracle). ``needs_llm``: it asks an LLM (``apbot.llm``); it runs only when named,
+    never as part of a default method list, so no run spends tokens unasked.
     """
 
     name: str
     run: RunFunction
     description: str
     uses_truth: bool = False
+    needs_llm: bool = False
 
 
 _METHODS: dict[str, Method] = {}
@@ -50,9 +52,15 @@ def unregister(name: str) -> Method:
 
 def methods() -> dict[str, Method]:
     """Every registered method, by name (importing the built-in ones first)."""
+    import apbot.agent.llm_methods
     import apbot.agent.methods  # noqa: F401  (registers the built-in methods)
 
     return dict(_METHODS)
+
+
+def default_methods() -> list[str]:
+    """What a run with no ``--methods`` runs: every method that needs no LLM."""
+    return [name for name, method in methods().items() if not method.needs_llm]
 
 
 def get_method(name: str) -> Method:

@@ -8,7 +8,7 @@ agent keeps its old model.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 from typing import Any
 
 from pydantic import ValidationError
@@ -153,11 +153,14 @@ def set_entry_format(model: ApplianceModel, name: str, fmt: str) -> ApplianceMod
     return _rebuild(data)
 
 
-def set_display(model: ApplianceModel, name: str, template: str) -> ApplianceModel:
+def set_display(model: ApplianceModel, name: str, template: str | dict[str, str]) -> ApplianceModel:
     """Print a variable through another template: as its label when the template is the usual
-    "LABEL {value}", else as its ``show`` template (``"PL{value}"``)."""
+    "LABEL {value}", else as its ``show`` template (``"PL{value}"``, or a word per value)."""
     data = _dump(model)
     var = data["variables"][name]
+    if isinstance(template, dict):
+        var["show"] = template
+        return _rebuild(data)
     label, _, rest = template.partition(" ")
     if rest == "{value}" and "{" not in label and not isinstance(var.get("show"), dict):
         var["label"] = label
@@ -171,6 +174,68 @@ def set_on_entry(model: ApplianceModel, feature: str, step: int, on_entry: str) 
     """Say whether the press that enters a step applies its effect or only shows the value."""
     data = _dump(model)
     data["features"][feature][step]["on_entry"] = on_entry
+    return _rebuild(data)
+
+
+def split_feature(
+    model: ApplianceModel, feature: str, index: int, first: bool = False
+) -> tuple[ApplianceModel, str]:
+    """``feature`` ends before step ``index``; its steps from there are a procedure of their own
+    (named after the first one's setting), right after it — or before every other (``first``).
+    """
+    data = _dump(model)
+    steps = data["features"][feature]
+    if not 0 < index < len(steps):
+        raise RepairError(f"{feature} has no step {index} to split at")
+    head, tail = steps[:index], steps[index:]
+    base = f"{tail[0].get('variable') or feature}_procedure"
+    name = base
+    while name in data["features"]:
+        name += "_learnt"
+    features: dict[str, Any] = {} if not first else {name: tail}
+    for title, body in data["features"].items():
+        features[title] = head if title == feature else body
+        if title == feature and not first:
+            features[name] = tail
+    data["features"] = features
+    return _rebuild(data), name
+
+
+def drop_dependence(model: ApplianceModel, name: str, case: str) -> ApplianceModel:
+    """``name`` does not depend on a programme after all: it keeps its values in ``case``
+    (the programme it was seen in) whatever the programme."""
+    data = _dump(model)
+    var = data["variables"][name]
+    cases = var.pop("cases", {})
+    var.pop("depends_on", None)
+    own: Any = cases.get(case) or next((c for c in cases.values() if c), {})
+    if isinstance(own, list):
+        own = {"values": own}
+    var.update({k: v for k, v in own.items() if k in ("values", "ranges", "initial")})
+    return _rebuild(data)
+
+
+def set_side_effect(
+    model: ApplianceModel,
+    feature: str,
+    step: int,
+    name: str,
+    value: Any = None,
+    reset: bool = False,
+) -> ApplianceModel:
+    """What one step does to ``name`` besides its own setting: sets it to ``value``, resets it
+    (``reset``), or — with neither — leaves it alone."""
+    data = _dump(model)
+    entry = data["features"][feature][step]
+    entry.get("set", {}).pop(name, None)
+    entry["reset"] = [r for r in entry.get("reset", []) if r != name]
+    if value is not None:
+        entry.setdefault("set", {})[name] = value
+    elif reset:
+        entry["reset"].append(name)
+    for key in ("set", "reset"):
+        if not entry.get(key):
+            entry.pop(key, None)
     return _rebuild(data)
 
 
@@ -270,14 +335,32 @@ def add_setting(
     return _with_setting(model, name, variable, effects, entry)
 
 
+def add_keypad_setting(
+    model: ApplianceModel,
+    name: str,
+    variable: dict[str, Any],
+    entry: str | None,
+    digits: list[str],
+) -> ApplianceModel:
+    """A setting the model lacked that is typed on the keypad after ``entry`` (POWER, then
+    the digits), or without one: its variable (with its ``entry`` format) and a procedure
+    ``set_NAME`` — or the plain steps of digits the model had (see :func:`add_setting`)."""
+    return _with_setting(model, name, variable, {d: "digit" for d in digits}, entry)
+
+
 def add_choice_setting(
     model: ApplianceModel, name: str, variable: dict[str, Any], keys: dict[str, Any]
 ) -> ApplianceModel:
     """A setting the model lacked whose keys each select one value (WHITE RICE, BROWN RICE…):
     its variable, the keys, and a one-step procedure ``set_NAME`` where each key sets its value
-    (depending on a programme as :func:`add_setting` says)."""
+    (a programme of its own: nothing is taken to depend on it, nor it on another)."""
     return _with_setting(
-        model, name, variable, {action: {"to": value} for action, value in keys.items()}, None
+        model,
+        name,
+        variable,
+        {action: {"to": value} for action, value in keys.items()},
+        None,
+        programme=True,
     )
 
 
@@ -287,10 +370,18 @@ def _with_setting(
     variable: dict[str, Any],
     effects: dict[str, Any],
     entry: str | None,
+    programme: bool = False,
 ) -> ApplianceModel:
     data = _dump(model)
     parents = [v.depends_on for v in model.variables.values() if v.depends_on is not None]
-    if parents:  # the programme other settings depend on most likely resets this one too
+    # keys that each select a value, or that reset other settings, choose a programme rather
+    # than adjust a setting of one
+    programme = programme or any(
+        model.features[feature][index].reset or model.features[feature][index].set
+        for feature, index in plain_steps(model, effects)
+        if effects and not all(e == "digit" for e in effects.values())
+    )
+    if parents and not programme:  # the programme other settings depend on resets it too
         parent = max(set(parents), key=parents.count)
         own = {k: variable.pop(k) for k in ("values", "ranges", "initial") if k in variable}
         variable["depends_on"] = parent
@@ -300,28 +391,80 @@ def _with_setting(
     for action in [*effects, *([entry] if entry else [])]:
         if action not in known:
             _add_action(data, action)
+    plain = plain_steps(model, effects)
+    used = {a for steps in model.features.values() for step in steps for a in step.actions}
+    if plain and entry is None:  # the reader kept the keys as a plain step: it adjusts this
+        for feature, index in plain:
+            step = data["features"][feature][index]
+            # the step's own keys, and those the model has nowhere (the way back)
+            keys = list(dict.fromkeys([*step["actions"], *(set(effects) - used)]))
+            step["variable"] = name
+            step["effect"] = {a: effects.get(a, "none") for a in keys}
+            step["actions"] = keys
+        return _rebuild(data)
+    adjusting = {
+        "actions": list(effects),
+        "variable": name,
+        "effect": effects,
+        "note": "learnt from feedback",
+    }
+    after = plain_steps(model, [entry]) if entry else []
+    if after:  # the entry key is a plain step already ("press POWER, then …"): it goes on there
+        feature, index = after[0]
+        data["features"][feature].insert(index + 1, adjusting)
+        return _rebuild(data)
     steps: list[dict[str, Any]] = (
         [{"actions": [entry], "note": "learnt from feedback"}] if entry else []
     )
-    steps.append(
-        {
-            "actions": list(effects),
-            "variable": name,
-            "effect": effects,
-            "note": "learnt from feedback",
-        }
-    )
-    data["features"][f"set_{name}"] = steps
+    steps.append(adjusting)
+    title = f"set_{name}"
+    while title in data["features"]:
+        title += "_learnt"
+    data["features"][title] = steps
     return _rebuild(data)
+
+
+def plain_keys(model: ApplianceModel) -> set[str]:
+    """Keys every step of which adjusts nothing ("press TIMER", then the digits): a key the
+    reader knew without knowing what it sets."""
+    steps = [step for feature in model.features.values() for step in feature]
+    used = {a for step in steps for a in step.actions}
+    adjusting = {a for step in steps if step.variable is not None for a in step.actions}
+    return used - adjusting
+
+
+def plain_steps(model: ApplianceModel, keys: Collection[str]) -> list[tuple[str, int]]:
+    """The steps that adjust nothing and have some of ``keys``: where a reader kept a
+    setting's keys ("press TIMER", the digits, the programme keys) without the setting."""
+    return [
+        (feature, index)
+        for feature, steps in model.features.items()
+        for index, step in enumerate(steps)
+        if step.variable is None and set(step.actions) & set(keys)
+    ]
+
+
+def setting_step(model: ApplianceModel, name: str) -> tuple[str, int] | None:
+    """The first step that adjusts ``name`` (where a new setting was written)."""
+    for feature, steps in model.features.items():
+        for index, step in enumerate(steps):
+            if step.variable == name:
+                return feature, index
+    return None
 
 
 def _add_action(data: dict[str, Any], action: str) -> None:
     """An action the model did not know, on a control named after it."""
     control = _control_id(action)
+    digit = action.rsplit("_", 1)[-1]
+    keypad = len(digit) == 1 and digit.isdigit()  # press_7: a keypad key
     if not any(c["id"] == control for c in data["controls"]):
         turning = action.endswith(("_cw", "_ccw"))
-        data["controls"].append({"id": control, "kind": "dial" if turning else "button"})
+        kind = "key" if keypad else "dial" if turning else "button"
+        data["controls"].append({"id": control, "kind": kind})
     spec: dict[str, Any] = {"control": control}
+    if keypad:
+        spec["digit"] = int(digit)
     if action.startswith("hold"):
         spec.update(skill="hold", seconds=3)
     elif action.endswith("_ccw"):
@@ -340,6 +483,8 @@ def _control_id(action: str) -> str:
     for suffix in ("_cw", "_ccw"):
         if name.endswith(suffix):
             name = name[: -len(suffix)]
+    if name[:1].isdigit():  # press_7: keypad key 7
+        return f"key_{name}"
     return f"{name}_control" if name else "learnt_control"
 
 

@@ -79,6 +79,8 @@ class Executed:
     unchanged: bool = False
     buffer: str = ""  # the keypad digits the belief had typed into the step after the action
     state_before: State | None = None  # the belief's state before the action
+    unseen_before: frozenset[str] = frozenset()  # changed unseen (or guessed) before the action
+    shown_before: dict[str, Any] = field(default_factory=dict)  # last shown, before the action
 
     def observed(self, name: str) -> Any:
         """The value of ``name`` the display showed after this action (MISSING if none)."""
@@ -135,6 +137,8 @@ class Session:
         before_state = self.belief.state
         before = self.belief.pointer()
         before_text = self.last.text
+        unseen = frozenset(self.stale | self.blind | self.unread | self.guessed_initial)
+        shown_before = dict(self.evidence)
         if action.name not in self.offered:  # the belief has a control the appliance lacks
             feedback = Feedback(
                 self.last.text, dict(self.last.values), False, "the appliance has no such action"
@@ -221,6 +225,8 @@ class Session:
             unchanged,
             buffer,
             before_state,
+            unseen,
+            shown_before,
         )
 
     def planned(self, action: str) -> PlannedAction:
@@ -231,15 +237,23 @@ class Session:
 
     def perceive(self, feedback: Feedback, expected: Observation) -> Seen:
         """Read ``feedback`` against the belief's prediction ``expected``."""
-        if not feedback.values and feedback.text == expected.text:
+        if feedback.text == expected.text:
             kind, _ = self.expected_screen()
-            return Seen(
+            seen = Seen(
                 feedback.text,
-                dict(expected.values),
+                # a dark panel (a hiding guard) shows no value, not even its lamps
+                {} if kind == "guard" else dict(expected.values),
                 screen=expected.focus,
                 screen_kind=kind,
                 screens=frozenset({(kind, expected.focus)}),
             )
+            if feedback.values:  # values by name are exact, and win
+                estimate = self.perceiver.estimator.estimate(feedback, context=self.belief.values())
+                for name in set(estimate.values) | set(estimate.outside):
+                    seen.values.pop(name, None)
+                seen.values.update(estimate.values)
+                seen.outside.update(estimate.outside)
+            return seen
         return self.perceiver.perceive(feedback, self.belief.values(), self.expected_screen())
 
     def expected_screen(self) -> tuple[str, str | None]:
@@ -295,6 +309,12 @@ class Session:
             or n in self.blind
             or n in self.unread
         )
+
+    def shows(self, feedback: Feedback, name: str) -> bool:
+        """Whether ``feedback``'s text prints ``name`` on any screen the belief knows (read
+        afresh: a screen matching the prediction records only its own setting)."""
+        seen = self.perceiver.perceive(feedback, self.belief.values(), None)
+        return seen.observed(name) is not MISSING
 
     def shown(self, name: str) -> Any:
         """The value of ``name`` on the display now; MISSING if none."""

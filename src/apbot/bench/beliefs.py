@@ -6,7 +6,9 @@ A run's belief is one string (stored in every record and in ``run.json``):
 - ``"faulty:RATE"`` — the ground truth with faults injected at ``RATE`` (0 ≤ RATE ≤ 1), seeded by
   the run's seed and the appliance id, so every process builds the same faulty model;
   ``"faulty:RATE:KIND,KIND"`` injects only those fault kinds (``apbot.bench.faults.FAULT_KINDS``);
-- ``"read"`` — a model read from the manual (not available yet: the reader lands later).
+- ``"read"`` — the default: a model read from the manual and the action names, by the configured
+  LLM (``--llm``, seeded by the offline reading) or else by the offline reader
+  (:mod:`apbot.bench.reading`: read once per appliance, cached on disk).
 
 The string is parsed once up front (:func:`parse_belief`) so a typo stops the run before any work.
 
@@ -28,8 +30,8 @@ from apbot.bench.suite import SuiteAppliance
 from apbot.model.schema import ApplianceModel
 
 ACCEPTED_FORMS = (
-    "'true', 'faulty:RATE' with 0 ≤ RATE ≤ 1 (e.g. 'faulty:0.2') or 'faulty:RATE:KIND,...' "
-    "(e.g. 'faulty:0.3:guard')"
+    "'read', 'true', 'faulty:RATE' with 0 ≤ RATE ≤ 1 (e.g. 'faulty:0.2') or "
+    "'faulty:RATE:KIND,...' (e.g. 'faulty:0.3:guard')"
 )
 
 
@@ -63,11 +65,7 @@ def parse_belief(spec: str) -> BeliefSpec:
     if text == "true":
         return BeliefSpec("true")
     if text == "read":
-        raise BeliefError(
-            "belief 'read' (a model read from the manual) is not available yet: "
-            "the manual reader lands with the reading issue; use 'true' or "
-            "'faulty:RATE'"
-        )
+        return BeliefSpec("read")
     kind, sep, rest = text.partition(":")
     rate_text, _, kinds_text = rest.partition(":")
     if kind == "faulty" and sep:
@@ -119,4 +117,8 @@ def belief_model(
             appliance.model, spec.rate, seed=f"{seed}/{appliance.id}", kinds=spec.kinds or None
         )
         return model, [str(fault) for fault in faults]
-    raise BeliefError(f"belief {str(spec)!r} cannot be built yet")
+    from apbot.bench.reading import read_belief
+
+    actions = list(appliance.model.actions)  # the names grounding gives, nothing more
+    reading = read_belief(appliance.manual, actions, appliance.id, appliance.category)
+    return reading.model, []

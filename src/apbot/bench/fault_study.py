@@ -162,6 +162,7 @@ def run_fault_study(
                 belief=belief,
                 seed=seed,
                 feedback=feedback,  # type: ignore[arg-type]
+                goal="given",  # the study measures model faults: the stored goal, as before
             ),
             progress=progress,
         )

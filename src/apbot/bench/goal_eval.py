@@ -7,6 +7,7 @@ so that a reader sees what went wrong.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from fnmatch import fnmatchcase
 from typing import Any
@@ -50,14 +51,22 @@ class GoalScore:
         }
 
 
+Parser = Callable[[Any, str], dict[str, Any]]
+
+
 def evaluate_goals(
     suite: Suite,
     categories: list[str] | None = None,
     appliances: list[str] | None = None,
+    parser: Parser | None = None,
+    sample: int | None = None,
 ) -> GoalScore:
     """Parse every instruction of the chosen appliances and compare with the stored goal.
 
-    ``appliances`` are ids or shell patterns (``"*_4"``); ``categories`` are category names.
+    ``appliances`` are ids or shell patterns (``"*_4"``); ``categories`` are category names;
+    ``parser`` reads (model, instruction) into a goal (default: the offline parser; it raises
+    ``GoalParseError`` or another ``ValueError`` for an instruction it cannot read);
+    ``sample``: only the first N tasks of each appliance.
     """
     score = GoalScore()
     for appliance in suite.appliances:
@@ -66,13 +75,16 @@ def evaluate_goals(
             continue
         if appliances and not any(fnmatchcase(appliance.id, p) for p in appliances):
             continue
-        for task in appliance.tasks:
+        for task in appliance.tasks[:sample]:
             expected = parse_goal(appliance.model, task.goal)
             parsed: dict[str, Any] | None
             error = ""
             try:
-                parsed = parse_instruction(appliance.model, task.instruction)
-            except GoalParseError as exc:
+                if parser is not None:
+                    parsed = parser(appliance.model, task.instruction)
+                else:
+                    parsed = parse_instruction(appliance.model, task.instruction, appliance.manual)
+            except (GoalParseError, ValueError) as exc:
                 parsed, error = None, str(exc)
             ok = parsed == expected
             counts = score.categories.setdefault(category, [0, 0])

@@ -113,6 +113,12 @@ def summarise(records: Iterable[TaskRecord], belief: str | None = None) -> dict[
             "overall": figures(mine),
             "categories": {c: figures(categories[c]) for c in sorted(categories)},
         }
+        usage: dict[str, int] = defaultdict(int)
+        for record in mine:
+            for name, value in record.llm_usage.items():
+                usage[name] += value
+        if usage:  # tokens summed over the run (the LLM methods and readers)
+            methods[method]["llm_usage"] = dict(sorted(usage.items()))
         goal_variables[method] = {
             str(n): {"sr": _round(fmean(r.success for r in sizes[n])), "n": len(sizes[n])}
             for n in sorted(sizes)

@@ -23,7 +23,7 @@ class TaskRecord(BaseModel):
 
     key: str
     method: str
-    belief: str = Field(description="'true', 'faulty:RATE' (seeded) or 'read'")
+    belief: str = Field(description="'read', 'true' or 'faulty:RATE' (seeded)")
     feedback: str = Field(
         default="values", description="what the agent perceived: 'display' or 'values'"
     )
@@ -51,6 +51,30 @@ class TaskRecord(BaseModel):
     trace: list[dict[str, Any]] = Field(default_factory=list)
     timings: dict[str, float] = Field(default_factory=dict)
     llm_usage: dict[str, int] = Field(default_factory=dict)
+    goal_mode: str = Field(
+        default="given",
+        description="'read': the method got the goal parsed from the instruction; 'given': "
+        "the stored goal",
+    )
+    parsed_goal: dict[str, Any] | None = Field(
+        default=None, description="the parser's goal, in the belief's names (read mode)"
+    )
+    goal_exact: bool | None = Field(
+        default=None,
+        description="the parsed goal is the stored one under the reader's alignment (judged "
+        "with the truth; never shown to the method)",
+    )
+    goal_outside: list[str] = Field(
+        default_factory=list,
+        description="parts of the read goal the belief has no value for, handed over as said",
+    )
+    belief_hash: str = Field(default="", description="sha256 of the model the method started from")
+    belief_diff: list[str] = Field(
+        default_factory=list, description="a read belief's differences from the truth"
+    )
+    learnt_from: int = Field(
+        default=0, description="with --learn: how many earlier tasks the starting belief saw"
+    )
 
 
 def spl(success: bool, optimal: int, taken: int) -> float:

@@ -31,7 +31,7 @@ from apbot.bench.provenance import describe_code, same_code
 
 RUN_FILE = "run.json"
 LOCK_FILE = ".lock"
-PINNED = ("suite", "belief", "seed", "feedback")  # what a run directory cannot mix
+PINNED = ("suite", "belief", "seed", "feedback", "goal", "learn")  # what a run cannot mix
 
 
 class BenchError(ValueError):

@@ -25,25 +25,29 @@ from typing import Any
 
 from apbot.agent.environment import FeedbackMode, SimulatorEnvironment
 from apbot.agent.episode import MAX_REASONING_STEPS, Episode, TaskContext, TraceEvent
-from apbot.agent.registry import get_method, methods
+from apbot.agent.registry import default_methods, get_method, methods
 from apbot.bench.beliefs import BeliefError, BeliefSpec, belief_model, parse_belief
+from apbot.bench.goals import GoalMode, MethodGoal, method_goal, parse_goal_mode
 from apbot.bench.metrics import summarise
 from apbot.bench.progress import progress as show_progress
 from apbot.bench.provenance import code_version, suite_digest
+from apbot.bench.reading import BeliefFacts, belief_differences, model_digest
 from apbot.bench.records import TaskRecord, record_key, spl
 from apbot.bench.results import RESULTS_FILE, ResultStore, describe_recovery
 from apbot.bench.rundir import BenchError, exclusive, prepare, run_directory, write_json
 from apbot.bench.stopping import WORKER_DIED, Stop, handling_signals
 from apbot.bench.suite import Suite, SuiteAppliance, Task, load_suite
 from apbot.bench.workers import worker_pool
+from apbot.llm.limits import BudgetSpent
 from apbot.model.goal import parse_goal
 from apbot.model.schema import ApplianceModel
 
 SUMMARY_FILE = "summary.json"
+LLM_BUDGET = "LLM budget"
 
 
 def _default_methods() -> list[str]:
-    return list(methods())
+    return default_methods()
 
 
 @dataclass
@@ -57,10 +61,12 @@ class BenchOptions:
     sample: int | None = None
     workers: int = field(default_factory=lambda: os.cpu_count() or 1)
     out: Path | str = Path("runs/latest")
-    belief: str = "true"
+    belief: str = "read"
     seed: int = 0
     rerun: bool = False
     feedback: FeedbackMode = "display"
+    goal: str = "read"  # "read": parsed from the instruction against the belief; "given"
+    learn: bool = False  # each appliance's tasks in order, each from the belief the last left
 
 
 @dataclass
@@ -88,6 +94,18 @@ class WorkItem:
     method: str
     appliance: str
     task: str
+
+
+@dataclass(frozen=True)
+class RunSettings:
+    """What every task of a run shares (pinned in ``run.json``)."""
+
+    belief: str = "read"
+    seed: int = 0
+    suite: str = "bundled"
+    feedback: FeedbackMode = "display"
+    goal: GoalMode = "read"
+    learn: bool = False
 
 
 # --- one task (runs in the workers) -----------------------------------------------------------
@@ -119,6 +137,15 @@ def _belief(
     return model, tuple(faults)
 
 
+@lru_cache(maxsize=256)
+def _about_belief(suite: str, appliance_id: str, spec: BeliefSpec, seed: int) -> BeliefFacts:
+    """The belief's hash and, for a read one, its differences from the truth (for reports)."""
+    model, _faults = _belief(suite, appliance_id, spec, seed)
+    truth = cached_suite(suite).get(appliance_id).model
+    differences = belief_differences(model, truth) if spec.kind == "read" else []
+    return BeliefFacts(model_digest(model), tuple(differences))
+
+
 def _optimal(appliance: SuiteAppliance, task: Task, goal: dict[str, Any]) -> int:
     """The task's stored optimum, or the planner's on the ground truth when it is missing."""
     if task.optimal_steps is not None:
@@ -140,6 +167,7 @@ def run_one(
     task_id: str,
     suite: str,
     feedback: FeedbackMode = "display",
+    goal: GoalMode = "given",
 ) -> TaskRecord:
     """Run one method on one task and judge the result on the true simulator.
 
@@ -147,15 +175,29 @@ def run_one(
     final state and the method stayed within the reasoning-step limit; what the method claims
     is recorded but not trusted. An exception in the method gives a failed record.
     """
-    appliance, task = _find(suite, appliance_id, task_id)
-    return run_task(
+    settings = RunSettings(belief, seed, suite, feedback, goal)
+    return run_item(WorkItem(method, appliance_id, task_id), settings)[0]
+
+
+def run_item(
+    item: WorkItem, settings: RunSettings, learnt: ApplianceModel | None = None, index: int = 0
+) -> tuple[TaskRecord, ApplianceModel | None]:
+    """:func:`run_one` on a work item; with ``learnt``, the method starts from that belief
+    (``index`` tasks before this one left it). Also returns the belief the method ended with."""
+    appliance, task = _find(settings.suite, item.appliance, item.task)
+    spec = parse_belief(settings.belief)
+    return run_task_learning(
         appliance,
         task,
-        method,
-        belief,
-        seed,
-        belief_of=lambda spec: _belief(suite, appliance.id, spec, seed),
-        feedback=feedback,
+        item.method,
+        settings.belief,
+        settings.seed,
+        belief_of=lambda s: _belief(settings.suite, appliance.id, s, settings.seed),
+        feedback=settings.feedback,
+        goal_mode=settings.goal,
+        facts=lambda: _about_belief(settings.suite, appliance.id, spec, settings.seed),
+        learnt=learnt,
+        index=index,
     )
 
 
@@ -168,13 +210,35 @@ def run_task(
     observer: Callable[[TraceEvent], None] | None = None,
     belief_of: Callable[[BeliefSpec], tuple[ApplianceModel, Any]] | None = None,
     feedback: FeedbackMode = "display",
+    goal: GoalMode = "given",
 ) -> TaskRecord:
     """:func:`run_one` on objects: also for a task that is not in a suite (``apbot run``).
 
     ``observer`` sees every trace event as it happens; ``belief_of`` builds (or fetches a
-    cached) belief model for the parsed belief spec. Raises :class:`ValueError` before
-    anything runs when the goal is not a reachable state of the true appliance.
+    cached) belief model for the parsed belief spec; ``goal`` says whether the method gets
+    the task's goal or reads it from the instruction. Raises :class:`ValueError` before
+    anything runs when the stored goal is not a reachable state of the true appliance.
     """
+    return run_task_learning(
+        appliance, task, method, belief, seed, observer, belief_of, feedback, goal
+    )[0]
+
+
+def run_task_learning(
+    appliance: SuiteAppliance,
+    task: Task,
+    method: str,
+    belief: str = "true",
+    seed: int = 0,
+    observer: Callable[[TraceEvent], None] | None = None,
+    belief_of: Callable[[BeliefSpec], tuple[ApplianceModel, Any]] | None = None,
+    feedback: FeedbackMode = "display",
+    goal_mode: GoalMode = "given",
+    facts: Callable[[], BeliefFacts] | None = None,
+    learnt: ApplianceModel | None = None,
+    index: int = 0,
+) -> tuple[TaskRecord, ApplianceModel | None]:
+    """:func:`run_task`, optionally from a learnt belief, returning the belief it ended with."""
     from apbot.model.goal import GoalError
     from apbot.plan.plan import Unreachable
 
@@ -196,43 +260,66 @@ def run_task(
     episode, error = Episode(), ""
     faults: tuple[str, ...] | list[str] = ()
     context: TaskContext | None = None
+    asked = MethodGoal(dict(task.goal))
+    digest = ""
+    about: BeliefFacts | None = None
     try:
         if chosen.uses_truth:
             model, faults = appliance.model, ()
+        elif learnt is not None:
+            model, faults = learnt, ()
         elif belief_of is not None:
             model, faults = belief_of(spec)
         else:
             model, faults = belief_model(appliance, str(spec), seed)
+        about = facts() if facts is not None and learnt is None and not chosen.uses_truth else None
+        digest = about.digest if about is not None else model_digest(model)
+        if not chosen.uses_truth:  # the oracle plans on the truth, to the stored goal
+            asked = method_goal(
+                goal_mode,
+                model,
+                task.instruction,
+                appliance.manual,
+                dict(task.goal),
+                appliance.model,
+            )
+    except BudgetSpent:
+        raise
     except Exception as exc:
         error = f"error: building the belief: {_describe(exc)}"
     else:
         if feedback == "image" and list(model.actions) != list(appliance.model.actions):
             env = image_environment(appliance, model.actions, seed)  # ground the belief's names
-        context = TaskContext(
-            appliance.id,
-            appliance.category,
-            task.id,
-            task.instruction,
-            dict(task.goal),
-            model,
-            appliance.manual,
-            tuple(env.actions),
-            observer=observer,
-        )
-        try:
-            result = chosen.run(context, env)
-            if not isinstance(result, Episode):
-                raise TypeError(f"method returned {type(result).__name__}, not an Episode")
-            episode = result
-        except Exception as exc:
-            error = f"error: {_describe(exc)}"
+        if asked.goal is None:
+            episode = Episode(failure=asked.error)
+        else:
+            context = TaskContext(
+                appliance.id,
+                appliance.category,
+                task.id,
+                task.instruction,
+                asked.goal,
+                model,
+                appliance.manual,
+                tuple(env.actions),
+                observer=observer,
+            )
+            try:
+                result = chosen.run(context, env)
+                if not isinstance(result, Episode):
+                    raise TypeError(f"method returned {type(result).__name__}, not an Episode")
+                episode = result
+            except BudgetSpent:
+                raise  # not the task's failure: the run stops here and this task runs again later
+            except Exception as exc:
+                error = f"error: {_describe(exc)}"
     limit = context.max_reasoning_steps if context is not None else MAX_REASONING_STEPS
     final = {name: env.simulator.value(name) for name in goal}
     reached = all(final[name] == value for name, value in goal.items())
     within = episode.reasoning_steps <= limit
     success = not error and reached and within
     failure = "" if success else error or _failure(episode, goal, final, reached, limit)
-    return TaskRecord(
+    record = TaskRecord(
         key=record_key(method, str(spec), appliance.id, task.id),
         method=method,
         belief=str(spec),
@@ -255,8 +342,19 @@ def run_task(
         final_values=final,
         trace=[event.to_dict() for event in episode.trace],
         timings={"seconds": round(time.perf_counter() - started, 6)},
-        llm_usage=dict(episode.llm_usage),
+        llm_usage={
+            k: episode.llm_usage.get(k, 0) + asked.usage.get(k, 0)
+            for k in {**episode.llm_usage, **asked.usage}
+        },
+        goal_mode=goal_mode if not chosen.uses_truth else "given",
+        parsed_goal=asked.parsed,
+        goal_exact=asked.exact,
+        goal_outside=list(asked.outside),
+        belief_hash=digest,
+        belief_diff=list(about.differences) if about is not None else [],
+        learnt_from=index if learnt is not None else 0,
     )
+    return record, episode.belief
 
 
 def image_environment(appliance: SuiteAppliance, actions: Iterable[str], seed: int) -> Any:
@@ -285,12 +383,6 @@ def _failure(
         claim = "claimed success but " if episode.claimed_success and not episode.failure else ""
         parts.append(f"{claim}goal not met: {wrong}")
     return "; ".join(parts)
-
-
-def _run_batch(
-    items: list[WorkItem], belief: str, seed: int, suite: str, feedback: FeedbackMode
-) -> list[TaskRecord]:
-    return [run_one(i.method, belief, seed, i.appliance, i.task, suite, feedback) for i in items]
 
 
 # --- selecting the work -----------------------------------------------------------------------
@@ -383,6 +475,7 @@ def _run_benchmark(options: BenchOptions, progress: bool) -> BenchOutcome:
             ) from None
     if options.workers < 1:
         raise BenchError(f"--workers must be at least 1 (got {options.workers})")
+    goal_mode = parse_goal_mode(options.goal)
     try:
         suite = cached_suite(str(options.suite))
     except FileNotFoundError as exc:
@@ -395,6 +488,8 @@ def _run_benchmark(options: BenchOptions, progress: bool) -> BenchOutcome:
             "belief": str(spec),
             "seed": options.seed,
             "feedback": options.feedback,
+            "goal": goal_mode,
+            "learn": options.learn,
         },
         {"code": code_version(), "suite_digest": suite_digest(suite)},
         {
@@ -430,8 +525,17 @@ def _run_benchmark(options: BenchOptions, progress: bool) -> BenchOutcome:
             stop.notice = advance.notice
             for note in notes:
                 advance.notice(note)
+            settings = RunSettings(
+                str(spec),
+                options.seed,
+                str(options.suite),
+                options.feedback,
+                goal_mode,
+                options.learn,
+            )
+            batches = _work_batches(pending, work, settings, options.workers)
             try:
-                for record in _execute(pending, str(spec), options, stop):
+                for record in _execute(batches, settings, options.workers, stop):
                     store.append(record)
                     new.append(record)
                     advance(record)
@@ -455,8 +559,40 @@ def _run_benchmark(options: BenchOptions, progress: bool) -> BenchOutcome:
         )
 
 
+Batch = tuple[list[WorkItem], frozenset[str] | None]
+"""Items run in one go, and (learning) the task ids whose records are wanted (None: all)."""
+
+
+def _work_batches(
+    pending: list[WorkItem], work: list[WorkItem], settings: RunSettings, workers: int
+) -> list[Batch]:
+    """Small batches of pending items; when learning, one batch per (method, appliance) chain
+    holding every selected task up to the last pending one (earlier tasks are run again, not
+    recorded again: the belief a task starts from is the one the tasks before it left)."""
+    if not settings.learn:
+        return [(items, None) for items in _batches(pending, workers)]
+    wanted: dict[tuple[str, str], set[str]] = {}
+    for item in pending:
+        wanted.setdefault((item.method, item.appliance), set()).add(item.task)
+    batches: list[Batch] = []
+    for (method, appliance), tasks in wanted.items():
+        chain = [w for w in work if (w.method, w.appliance) == (method, appliance)]
+        last = max(i for i, w in enumerate(chain) if w.task in tasks)
+        batches.append((chain[: last + 1], frozenset(tasks)))
+    return batches
+
+
+def _run_batch(batch: Batch, settings: RunSettings) -> list[TaskRecord]:
+    items, wanted = batch
+    if settings.learn:
+        from apbot.bench.learn import run_chain
+
+        return list(run_chain(items, settings, wanted))
+    return [run_item(item, settings)[0] for item in items]
+
+
 def _execute(
-    pending: list[WorkItem], belief: str, options: BenchOptions, stop: Stop
+    batches: list[Batch], settings: RunSettings, workers: int, stop: Stop
 ) -> Iterator[TaskRecord]:
     """Yield records as tasks finish, in this process or a pool, until done or stopped.
 
@@ -464,36 +600,34 @@ def _execute(
     ones finish; a second signal abandons those too. A worker that dies (killed, out of
     memory) stops the run the same way, keeping what finished.
     """
-    suite = str(options.suite)
-    if options.workers == 1 or len(pending) <= 1:
+    if workers == 1 or sum(len(items) for items, _ in batches) <= 1:
         try:
-            for item in pending:
-                if stop.requested:
-                    return
-                yield run_one(
-                    item.method,
-                    belief,
-                    options.seed,
-                    item.appliance,
-                    item.task,
-                    suite,
-                    options.feedback,
-                )
+            for items, wanted in batches:
+                if settings.learn:
+                    from apbot.bench.learn import run_chain
+
+                    for record in run_chain(items, settings, wanted):
+                        yield record
+                        if stop.requested:
+                            return
+                    continue
+                for item in items:
+                    if stop.requested:
+                        return
+                    yield run_item(item, settings)[0]
         except KeyboardInterrupt:
             stop.request("SIGINT")
+        except BudgetSpent as exc:
+            stop.request(f"{LLM_BUDGET}: {exc}")
         return
-    queue = deque(_batches(pending, options.workers))
-    window = options.workers * 2
-    pool = worker_pool(min(options.workers, len(queue)))
+    queue = deque(batches)
+    window = workers * 2
+    pool = worker_pool(min(workers, len(queue)))
     running: set[Future[list[TaskRecord]]] = set()
     try:
         while queue or running:
             while queue and len(running) < window and not stop.requested:
-                running.add(
-                    pool.submit(
-                        _run_batch, queue.popleft(), belief, options.seed, suite, options.feedback
-                    )
-                )
+                running.add(pool.submit(_run_batch, queue.popleft(), settings))
             if stop.requested:
                 running = {future for future in running if not future.cancel()}
             if not running or stop.hard:
@@ -505,6 +639,9 @@ def _execute(
                     records = future.result()
                 except BrokenProcessPool:  # the others fail alike, soon: keep what finished
                     stop.request(WORKER_DIED)
+                    continue
+                except BudgetSpent as exc:  # the batch's finished tasks run again next time
+                    stop.request(f"{LLM_BUDGET}: {exc}")
                     continue
                 yield from records
     finally:

@@ -17,6 +17,7 @@ from apbot.bench.suite import GOAL_VARIABLES, SuiteAppliance, Task, TaskFile
 from apbot.model.goal import Goal, GoalError, parse_goal
 from apbot.model.load import dump_yaml, read_yaml
 from apbot.model.problems import Problem
+from apbot.plan.plan import Unreachable
 from apbot.sim.checks import check_model
 
 MANUAL_WORDS = (600, 6000)  # a short leaflet to a long real manual (issue 12: 2–6k words)
@@ -172,17 +173,26 @@ def optimal_steps(appliance: SuiteAppliance, task: Task) -> int:
     return len(oracle_plan(appliance.model, task.goal)[1])
 
 
+class FillError(ValueError):
+    """A task whose optimal count cannot be computed; the message names the task and why."""
+
+
 def fill_optimal(appliance: SuiteAppliance) -> int:
     """Rewrite ``tasks.yaml`` with the planner's optimal action counts; returns how many changed.
 
-    The file is rewritten from its parsed form, so comments in it are not kept.
+    The file is rewritten from its parsed form, so comments in it are not kept. A task whose
+    goal the model cannot express or reach raises :class:`FillError` before anything is
+    written, so one bad task never leaves the file half rewritten.
     """
     path: Path = appliance.directory / "tasks.yaml"
     data = TaskFile.model_validate(read_yaml(path.read_text(encoding="utf-8"), str(path)))
     changed = 0
     tasks = []
     for task in data.tasks:
-        best = optimal_steps(appliance, task)
+        try:
+            best = optimal_steps(appliance, task)
+        except (GoalError, Unreachable) as exc:
+            raise FillError(f"{appliance.id} {task.id}: {exc}") from exc
         changed += best != task.optimal_steps
         tasks.append(task.model_copy(update={"optimal_steps": best}))
     if changed:

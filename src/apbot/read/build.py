@@ -23,14 +23,22 @@ from apbot.read.values import (
     ON_OFF_RE,
     Range,
     anchored_lists,
+    bare_list,
+    caps_run,
     find_initial,
     find_list,
     find_number_run,
     find_ranges,
     find_step,
+    quantity_run,
     seconds,
 )
 
+LAMP_LIST_RE = re.compile(
+    r"^\W*(?:the\s+)?(?:\w+\s+){0,2}(?:lamps?|indicators?|symbols?|icons?|LEDs?|lights)\b"
+    r"(?:\s*\([^)]*\))?\s*:",
+    re.IGNORECASE,
+)
 UP_WORDS = {"up", "plus", "more", "increase", "inc", "higher", "add"}
 DOWN_WORDS = {"down", "minus", "less", "decrease", "dec", "lower"}
 POWER_TOKENS = {"power", "on_off", "onoff", "on", "power_on_off", "standby"}
@@ -163,6 +171,12 @@ class Builder:
             for items, prio in self._lists(i, i in mentions, tokens):
                 if sum(v.lower() in others for v in items) >= 2:
                     continue  # a list of other keys, not of values
+                lamps = LAMP_LIST_RE.match(text)
+                if lamps and not set(words(lamps.group(0))) & {
+                    w for t in tokens for w in words(t.replace("_", " "))
+                }:
+                    continue  # "Lamps (top row): FAN HI, FAN LO, 2H…": what lights, not values
+                    # ("Mode lamps: NORMAL CONT. …" are the mode key's values)
                 if _numeric_items(items) and len(items) < 3:
                     continue
                 if prio > best_prio:
@@ -190,16 +204,36 @@ class Builder:
                 init = find_initial(text)
                 if init:
                     ev.initial, ev.initial_at = init, i
+        own_words = {w for t in tokens for w in words(t.replace("_", " ")) if len(w) >= 3}
+        if best_prio < 2.0 and own_words:  # "Mode lamps (left to right): NORMAL CONT. FAN"
+            for i, unit in enumerate(units):
+                lamps = LAMP_LIST_RE.match(unit.text)
+                if lamps and set(words(lamps.group(0))) & own_words:
+                    rest = unit.text[lamps.end() :]
+                    for after in units[i + 1 : i + 8]:  # "CONT." ended a "sentence" mid-line
+                        if after.line != unit.line:
+                            break
+                        rest += "   " + after.text
+                    found = bare_list(rest)
+                    if found:
+                        best, best_prio, ev.values_at = found, 2.0, i
+                        break
         if best_prio < 1.8:  # lists tied to the setting's own word anywhere in the manual
             for t in tokens:
                 for w in [x for x in words(t.replace("_", " ")) if len(x) >= 4][:1]:
                     for i, unit in enumerate(units):
-                        found = anchored_lists(unit.text, w)
-                        if found and best_prio < 1.8:
-                            best, best_prio, ev.values_at = found[0], 1.8, i
+                        anchored = anchored_lists(unit.text, w)
+                        if anchored and best_prio < 1.8:
+                            best, best_prio, ev.values_at = anchored[0], 1.8, i
         for t in tokens:
             label = self.labels[t].text if t in self.labels else ""
             if not label or best_prio >= 2.5 or not re.search(r"[A-Z]", label):
+                continue
+            printed = re.fullmatch(r"([A-Z][A-Z ]*?)\s+([A-Z0-9]{1,6}(?:/[A-Z0-9]{1,6})+)", label)
+            if printed and t in self.labels and self.labels[t].line is not None:
+                # the key's printed name carries its values: "FAN HI/LO"
+                best, best_prio = printed.group(2).split("/"), 2.5
+                ev.values_at = self.labels[t].mentions[0] if self.labels[t].mentions else None
                 continue
             pattern = re.compile(
                 rf"\b{re.escape(label)}\s+([A-Z0-9]{{1,6}}(?:/[A-Z0-9]{{1,6}})+)\b"
@@ -209,10 +243,14 @@ class Builder:
                 if m:  # "FAN HI/LO": the panel prints the values next to the name
                     best, best_prio, ev.values_at = m.group(1).split("/"), 2.5, i
                     break
-        if best is None:
-            best = self._table_column(tokens)
-            if best:
-                ev.values_at = self._table_at
+        choice = bool({w for t in tokens for w in words(t.replace("_", " "))} & CHOICE_WORDS)
+        if best is None or (_numeric_items(best) and (len(best) < 3 or choice)):
+            # two numbers are a range, not a list; a programme key's list is of names
+            column = self._table_column(tokens)
+            if column:
+                best, ev.values_at = column, self._table_at
+            elif best is not None and len(best) < 3:
+                best = None
         if best is not None:
             ev.values = best if _numeric_items(best) else [v.lower() for v in best]
             self._initial_from_values(ev, tokens)
@@ -228,17 +266,89 @@ class Builder:
         found = find_list(text)
         if found:
             out.append((found[0], 3.0 if found[1] == "arrows" else 2.0 if mention else 1.0))
-        run = find_number_run(text)
+        else:
+            own = {self.labels[t].text.upper() for t in tokens if t in self.labels}
+            keys = {lab.text.upper() for lab in self.labels.values() if lab.text}
+            span = self._own_span(text, tokens) if mention else text
+            run = caps_run(span, own | keys)
+            if run and (mention or len(run) >= 4):
+                out.append((run, 1.9 if mention else 1.6))
+            amounts = quantity_run(span) if mention else None
+            if amounts:
+                out.append((amounts, 1.9))
+        run = find_number_run(self._own_span(text, tokens) if mention else text)
         if run:
             out.append((run, 2.2 if mention else 1.2))
+        if text.rstrip().endswith(":") and i + 1 < len(units) and not units[i + 1].cells:
+            after = bare_list(units[i + 1].text)  # "Printed round the knob:" then the marks
+            if after and len(units[i + 1].text) <= 120:
+                out.append((after, 2.6))
         if text.rstrip().endswith((":", "order")) or text == unit.heading:
-            bullets = _bullet_items(units, i)
+            bullets = _bullet_items(units, i, lead=2 if text == unit.heading else 0)
             if bullets:
                 out.append((bullets, 1.5))
-            column = _next_table_column(units, i)
+            index = self._own_column(i, tokens)
+            column = _next_table_column(units, i, index) or (
+                [] if index else _quantity_column(units, i)
+            )
             if column:
-                out.append((column, 2.5))
+                # a heading that only shares a word with the key ("Recipe: basic white loaf"
+                # for LOAF) introduces a table about something else unless its header says so
+                related = mention or text != unit.heading or self._header_names(i, tokens)
+                out.append((column, 2.5 if related else 1.2))
         return out
+
+    def _own_span(self, text: str, tokens: list[str]) -> str:
+        """The part of a sentence about the key: from its label to the next other key's label
+        ("below TEMP. a row printed 20 30 40, and below SPIN a row printed 400 800")."""
+        own = [self.labels[t].text for t in tokens if t in self.labels and self.labels[t].text]
+        starts = [text.find(lab) for lab in own if lab and text.find(lab) >= 0]
+        if not starts:
+            return text
+        start = min(starts)
+        others = [
+            lab.text
+            for t, lab in self.labels.items()
+            if t not in tokens
+            and lab.text
+            and lab.text not in own
+            and not any(lab.text in o for o in own)
+        ]
+        end = len(text)
+        for lab in others:
+            k = text.find(lab, start + 1)
+            if k > start:
+                end = min(end, k)
+        return text[start:end]
+
+    def _own_column(self, i: int, tokens: list[str]) -> int:
+        """Which column of the table after unit ``i`` is the key's: one headed by the key's
+        printed name when the header is a row of key names ("| TEMP. | SPIN | SOIL |"), else
+        the first."""
+        units = self.manual.units
+        k = i + 1
+        if k >= len(units) or not units[k].cells or units[k].header:
+            return 0
+        header = [c.strip(" *.").upper() for c in units[k].cells]
+        keys = {lab.text.strip(" .").upper() for lab in self.labels.values() if lab.text}
+        own = {self.labels[t].text.strip(" .").upper() for t in tokens if t in self.labels}
+        if len(header) >= 2 and sum(h in keys for h in header) >= 2:
+            for index, cell in enumerate(header):
+                if cell in own:
+                    return index
+        return 0
+
+    def _header_names(self, i: int, tokens: list[str]) -> bool:
+        """Whether the header of the table after unit ``i`` names the key's word."""
+        units = self.manual.units
+        k = i + 1
+        if k >= len(units) or not units[k].cells:
+            return False
+        header = units[k].header or units[k].cells
+        tw = {w[:5] for t in tokens for w in words(t.replace("_", " ")) if len(w) >= 3}
+        if any(t in self.labels for t in tokens):
+            tw |= {w[:5] for t in tokens if t in self.labels for w in words(self.labels[t].text)}
+        return any(w[:5] in tw for cell in header for w in words(cell) if len(w) >= 3)
 
     _table_at: int | None = None
 
@@ -290,6 +400,9 @@ class Builder:
     def add_discrete(self, name: str, values: list[str], label: str, ev: Evidence | None) -> str:
         name = self.unique(name, self.variables)
         values = _dedupe([_value_text(v) for v in values if _value_text(v)])
+        own = re.fullmatch(r"(.*?)\s+([A-Z0-9]{1,6}(?:/[A-Z0-9]{1,6})+)", label)
+        if own and [p.lower() for p in own.group(2).split("/")] == values:
+            label = own.group(1)  # the display names the setting, not the printed choices
         spec: dict[str, Any] = {"type": "discrete", "values": values, "label": label}
         if ev is not None and ev.initial in values:
             spec["initial"] = ev.initial
@@ -338,27 +451,32 @@ class Builder:
         name = self.unique(name, self.variables)
         subject = f"variables.{name}"
         ranges = list(ev.ranges)
-        if "clock" in words(name.replace("_", " ")) and any(
-            r.unit not in ("s", "h") for r in ranges
-        ):
+        clock = "clock" in words(name.replace("_", " "))
+        if clock and any(r.unit not in ("s", "h") for r in ranges):
             ranges = []  # a clock's range is the day, whatever numbers stand nearby
-        if not ranges and "clock" in words(name.replace("_", " ")):
+        if ranges:
+            shown = ", ".join(f"{r.low:g}–{r.high:g}" for r in ranges)
+            self.note(subject, f"range {shown} {ranges[0].unit}", ev.range_at)
+        elif clock:
             twelve = any(
                 re.search(r"\b12[- ]?h(?:ou)?r|\bAM\b|\bPM\b", u.text) for u in self.manual.units
             )
             low, high = (3600, 12 * 3600 + 59 * 60) if twelve else (0, 23 * 3600 + 59 * 60)
             self.note(subject, "a clock: the time of day (its range is the clock's, not read)")
             ranges = [Range(low, high, "s", 60)]
-        elif not ranges:
+        elif (found := self._range_anywhere(name, label)) is not None:
+            ranges = [found[0]]
+            r0 = found[0]
+            self.note(
+                subject, f"range {r0.low:g}–{r0.high:g} {r0.unit} (named elsewhere)", found[1]
+            )
+        else:
             unit = ev.step[1] if ev.step else _unit_from_words(name)
             low, high = {"": (0, 10), "h": (0, 12), "min": (1, 60), "°C": (30, 100)}.get(
                 unit, (0, 100)
             )
             self.note(subject, f"range {low:g}–{high:g} {unit} (the manual gives none)")
             ranges = [Range(low, high, unit)]
-        else:
-            shown = ", ".join(f"{r.low:g}–{r.high:g}" for r in ranges)
-            self.note(subject, f"range {shown} {ranges[0].unit}", ev.range_at)
         unit = ranges[0].unit or (ev.step[1] if ev.step else "") or _unit_from_words(name)
         as_time = ranges[0].unit == "s" or unit in ("s", "min")
         factor = 1 if ranges[0].unit == "s" else seconds(1, unit) if as_time else 1
@@ -388,6 +506,8 @@ class Builder:
                 )
             else:
                 st = _guess_step(r.high - r.low, unit) * factor
+                if as_time and st < 60 and lo % 60 == 0 and hi % 60 == 0 and hi - lo >= 600:
+                    st = 60.0  # a clock-written range ("0:20 – 1:30") steps in minutes
                 self.note(f"{subject}.step", f"step {st / factor:g} {unit} (the manual gives none)")
             if as_time:
                 st = max(1.0, float(round(st)))
@@ -434,6 +554,43 @@ class Builder:
         self.variables[name] = spec
         return name
 
+    def _range_anywhere(self, name: str, label: str) -> tuple[Range, int] | None:
+        """The first range in a sentence or table row naming the setting anywhere (a
+        specifications table: "| Set temperature range | 40–100 °C |", a programme table's
+        time column), its unit fitting the setting; advice ("suggested") is not a limit."""
+        ws = {w for w in words(name.replace("_", " ")) + words(label) if len(w) >= 4}
+        if not ws or not _unit_from_words(name):
+            return None
+        advice = {"suggested", "recommended", "typical", "advised", "usual", "ideal"}
+        limits = re.compile(r"\brange\b|\badjustable\b|\bcan be set\b|\bsettable\b|\bbetween\b")
+        best: tuple[int, Range, int] | None = None
+
+        def consider(score: int, text: str, i: int) -> None:
+            nonlocal best
+            for r in find_ranges(text):
+                if r.unit and _fits(r.unit, [name]) and r.high > r.low:
+                    if best is None or score > best[0]:
+                        best = (score, r, i)
+                    return
+
+        for i, unit in enumerate(self.manual.units):
+            uw = words(unit.text)
+            if unit.cells and unit.header and len(unit.header) == len(unit.cells):
+                # a table row: the setting is named by the column's header
+                for head, cell in zip(unit.header, unit.cells, strict=True):
+                    hw = words(head)
+                    if set(hw) & advice or not any(h[:5] == w[:5] for h in hw for w in ws):
+                        continue
+                    consider(1 + 2 * bool(limits.search(head)), cell, i)
+                first = words(unit.cells[0])
+                if any(u[:5] == w[:5] for u in first for w in ws) and not set(first) & advice:
+                    consider(1 + 2 * bool(limits.search(unit.cells[0])), unit.text, i)
+                continue
+            if not any(u[:5] == w[:5] for u in uw for w in ws) or set(uw) & advice:
+                continue
+            consider(2 * bool(limits.search(unit.text)), unit.text, i)
+        return (best[1], best[2]) if best else None
+
     # --- the whole model --------------------------------------------------------------------
 
     def feature(self, name: str, steps: list[dict[str, Any]]) -> None:
@@ -443,7 +600,7 @@ class Builder:
 def _numeric_items(items: list[str]) -> bool:
     """Every item is a number, perhaps with a short unit ("40", "35 %", "2h")."""
     return bool(items) and all(
-        re.fullmatch(r"\s*\d+(?:[.,]\d+)?\s*[^\s\d]{0,4}\s*", i) for i in items
+        re.fullmatch(r"\s*\d+(?:[.,]\d+)?\s*(?:[^\s\d]{0,4}|[A-Za-z]{1,8})\s*", i) for i in items
     )
 
 
@@ -480,15 +637,19 @@ def _fits(unit: str, tokens: list[str]) -> bool:
     return True
 
 
-def _next_table_column(units: list[Unit], i: int) -> list[str]:
-    """The first cells of the table that starts right after unit ``i`` (header skipped)."""
+def _next_table_column(units: list[Unit], i: int, column: int = 0) -> list[str]:
+    """The cells of one column (the first by default) of the table that starts right after
+    unit ``i`` (header skipped)."""
     k = i + 1
     if k < len(units) and units[k].cells and not units[k].header:
         k += 1  # the header row
     items: list[str] = []
     numbers = 0
     while k < len(units) and units[k].cells and units[k].header:
-        cell = re.sub(r"^\s*\d{1,2}[.)]?\s+(?=\D)", "", units[k].cells[0]).strip(" *")
+        if column >= len(units[k].cells):
+            k += 1
+            continue
+        cell = re.sub(r"^\s*\d{1,2}[.)]?\s+(?=\D)", "", units[k].cells[column]).strip(" *")
         if find_ranges(cell) or not re.search(r"[A-Za-z]", cell):
             numbers += 1
         if cell and len(cell) <= 24 and cell not in items:
@@ -499,11 +660,60 @@ def _next_table_column(units: list[Unit], i: int) -> list[str]:
     return items if len(items) >= 2 else []
 
 
-def _bullet_items(units: list[Unit], i: int) -> list[str]:
+FRACTIONS = {"½": ".5", "¼": ".25", "¾": ".75"}
+
+
+def _quantity_column(units: list[Unit], i: int) -> list[str]:
+    """A table column of durations after unit ``i`` ("| `60` | 1 hour |"), as minutes; a cell
+    saying there is none ("no hold", "off", "--") is 0. Empty unless most cells are durations."""
+    from apbot.model.values import parse_quantity
+
+    rows: list[tuple[str, ...]] = []
+    k = i + 1
+    if k < len(units) and units[k].cells and not units[k].header:
+        k += 1
+    while k < len(units) and units[k].cells and units[k].header:
+        rows.append(units[k].cells)
+        k += 1
+    if len(rows) < 3:
+        return []
+    width = min(len(r) for r in rows)
+    for column in range(width - 1, -1, -1):
+        items: list[str] = []
+        for row in rows:
+            cell = row[column].strip(" *`").lower()
+            for frac, dec in FRACTIONS.items():
+                cell = re.sub(rf"(\d)\s*{frac}", rf"\g<1>{dec}", cell).replace(frac, "0" + dec)
+            q = parse_quantity(re.sub(r"\(.*?\)", "", cell).strip())
+            if q and q[1] == "time":
+                items.append(f"{q[0] / 60:g} min")
+            elif re.match(r"^(?:no\b|none|off\b|-+$|–|—)", cell):
+                items.append("0 min")
+            else:
+                break
+        else:
+            if sum(i != "0 min" for i in items) >= 2:
+                return _dedupe(items)
+    return []
+
+
+def _bullet_items(units: list[Unit], i: int, lead: int = 0) -> list[str]:
+    """The terms of the bullets after unit ``i`` ("- AUTO — dries until…"); a bullet may run
+    to more sentences, and ``lead`` sentences may stand between ``i`` and the first bullet."""
     items: list[str] = []
-    for u in units[i + 1 : i + 12]:
+    k = i + 1
+    while lead and k < len(units) and not units[k].bullet and k <= i + lead:
+        k += 1
+    gap = 0
+    while k < len(units) and len(items) < 16:
+        u = units[k]
+        k += 1
         if not u.bullet:
-            break
+            if not items or u.heading != units[i].heading or gap >= 3 or u.cells:
+                break
+            gap += 1  # another sentence of the same bullet
+            continue
+        gap = 0
         m = re.match(r"^([A-Z0-9][A-Za-z0-9 +/&'-]{0,22}?)\s*(?::|—|–|-|=)\s", u.text)
         if not m:
             break

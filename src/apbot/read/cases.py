@@ -12,6 +12,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
+from apbot.model.values import parse_hms
 from apbot.read.build import CHOICE_WORDS, Builder
 from apbot.read.labels import words
 from apbot.read.text import Unit
@@ -75,9 +76,12 @@ def apply_cases(b: Builder) -> None:
     fixed = {v for g in b.guards for v in g["when"]}  # power, lock, running: never per programme
     parents: set[str] = set()
     children: set[str] = set()
+    keys = {lab.text.strip(" .").upper() for lab in b.labels.values() if lab.text}
     for header, rows in _tables(b.manual.units):
         if len(rows) < 2:
             continue
+        if sum(h.strip(" *.").upper() in keys for h in header) >= 2:
+            continue  # a column per key ("| TEMP. | SPIN | SOIL |"): each lists its own values
         parent, best = None, (1, False)
         for name, spec in b.variables.items():
             if spec.get("type") != "discrete" or spec.get("depends_on") or len(spec["values"]) < 3:
@@ -102,7 +106,12 @@ def apply_cases(b: Builder) -> None:
                 if spec.get("type") == "discrete" and _ranges_column(rows, column):
                     _as_number(b, name, spec, rows, column)  # the table says it is an amount
                 cases = _cases(spec, rows, column, pvalues)
+                if len(cases) >= 2 and _presets(b, parent, name, cases, rows[0]):
+                    break
                 if len(cases) >= 2:
+                    if all("initial" in c for c in cases.values()) and spec.get("values"):
+                        for value in pvalues:  # defaults per programme: the others keep all
+                            cases.setdefault(value, {"values": list(spec["values"])})
                     _defaults(spec, cases, header, rows, column, pvalues)
                     for key in ("values", "ranges", "initial"):
                         spec.pop(key, None)
@@ -117,6 +126,72 @@ def apply_cases(b: Builder) -> None:
                         b.manual.units.index(rows[0]),
                     )
                 break
+
+
+def _presets(b: Builder, parent: str, name: str, cases: dict[str, Any], row: Unit) -> bool:
+    """Keys that each load one amount ("FRIES — 200 °C", "BOIL — 100 °C") give the amount a
+    starting value per preset, not a one-value domain: the +/− keys still adjust it over its
+    whole range (a preset the table leaves out keeps the range, from its start). Only for a
+    table of single values."""
+    spec = b.variables[name]
+    if spec.get("type") not in ("numeric", "time") or not spec.get("ranges"):
+        return False
+    if not set(cases) <= set(b.variables[parent].get("values", [])):
+        return False
+    single: dict[str, Any] = {}
+    for value, case in cases.items():
+        ranges = case.get("ranges") or []
+        if len(ranges) != 1 or ranges[0][0] != ranges[0][1]:
+            return False
+        single[value] = ranges[0][0]
+    ranges = [list(r) for r in spec["ranges"]]
+    if spec["type"] == "numeric":
+        lo, hi, step = ranges[0][0], ranges[-1][1], ranges[0][2]
+        values = list(single.values())
+        if (
+            len(ranges) > 1
+            or any((v - lo) % step for v in values)
+            or min(values) < lo
+            or max(values) > hi
+        ):
+            low, high = min([lo, *values]), max([hi, *values])
+            step = _gcd_step(step, single, low)
+            ranges = [[low, low + int((high - low) / step) * step, step]]
+    else:
+        secs = [parse_hms(str(v)) for v in single.values()]
+        lo_t, hi_t = parse_hms(ranges[0][0]), parse_hms(ranges[-1][1])
+        if (
+            min(secs) < lo_t
+            or max(secs) > hi_t
+            or any((t - lo_t) % int(ranges[0][2]) for t in secs)
+        ):
+            return False
+    for key in ("ranges", "initial", "values"):
+        spec.pop(key, None)
+    spec["depends_on"] = parent
+    spec["cases"] = {
+        v: {"ranges": ranges, **({"initial": single[v]} if v in single else {})}
+        for v in b.variables[parent]["values"]
+    }
+    b.note(
+        f"variables.{name}.cases",
+        f"each {parent} loads its own starting value: "
+        + ", ".join(f"{k} {v}" for k, v in single.items()),
+        b.manual.units.index(row),
+    )
+    return True
+
+
+def _gcd_step(step: float, values: dict[str, Any], low: float) -> float:
+    """The largest step from ``low`` that reaches every preset (1 when they are whole)."""
+    from math import gcd
+
+    if all(float(v).is_integer() for v in values.values()) and float(step).is_integer():
+        g = int(step)
+        for v in values.values():
+            g = gcd(g, int(v - low))
+        return g or 1
+    return 1 if all(float(v).is_integer() for v in values.values()) else 0.5
 
 
 def _hms(total: int) -> str:
@@ -181,6 +256,8 @@ def _cases(
 def _case(spec: dict[str, Any], cell: str) -> Any:
     kind = spec.get("type")
     if kind == "discrete":
+        if len(spec.get("values", [])) == 2 and _norm(cell) in spec["values"]:
+            return {"values": list(spec["values"]), "initial": _norm(cell)}  # a default
         items = [_norm(i) for i in re.split(r"\s*(?:,|/|·|\bor\b)\s*", cell)]
         items = [i for i in items if i and i not in ("—", "-", "–", "n/a") and len(i) <= 24]
         return {"values": list(dict.fromkeys(items))} if items else None
@@ -190,7 +267,12 @@ def _case(spec: dict[str, Any], cell: str) -> Any:
     ranges_read = find_ranges(cell)
     if kind == "time":
         if not ranges_read:
-            return None
+            from apbot.model.values import parse_quantity
+
+            q = parse_quantity(cell.strip().lower())
+            if not q or q[1] != "time" or q[0] <= 0:
+                return None
+            return {"ranges": [[_hms(int(q[0])), _hms(int(q[0])), int(ranges[0][2])]]}
         r = ranges_read[0]
         factor = 1 if r.unit == "s" else {"min": 60, "h": 3600}.get(r.unit or "min", 60)
         t_lo, t_hi = int(r.low * factor), int(r.high * factor)
@@ -240,8 +322,8 @@ def _defaults(
 
 
 RESET_RE = re.compile(
-    r"\b(?:programmes?|programs?|menus?|modes?|presets?|functions?|cycles?|courses?)\b[^.]*"
-    r"\b(?:defaults?|standard values|reset|go(?:es)? back|return|wipes?|clear|lost|forget)"
+    r"\b(?:programmes?|programs?|menus?|modes?|presets?|functions?|cycles?|courses?|selector)\b"
+    r"[^.]*\b(?:defaults?|standard values|reset|go(?:es)? back|return|wipes?|clear|lost|forget)"
     r"|\b(?:defaults?|reset|go(?:es)? back|return|wipes?|clear|lost)\b[^.]*"
     r"\b(?:programmes?|programs?|menus?|modes?|presets?|functions?|cycles?|courses?)\b",
     re.IGNORECASE,

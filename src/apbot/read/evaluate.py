@@ -32,7 +32,7 @@ import numpy as np
 from scipy.optimize import linear_sum_assignment
 
 from apbot.model.domain import all_values
-from apbot.model.schema import ApplianceModel, DiscreteVariable, TimeVariable
+from apbot.model.schema import ApplianceModel, DiscreteVariable, NumericVariable, TimeVariable
 from apbot.model.values import normalise_text, parse_hms
 
 MIN_VARIABLE_SCORE = 0.4  # a name match of 0.8 alone is enough: "timer" for "start_timer"
@@ -63,6 +63,9 @@ def name_similarity(a: str, b: str) -> float:
     return max(ratio, 0.4 + 0.6 * overlap if shared else 0.0)
 
 
+TIME_UNITS = {"s": 1, "min": 60, "h": 3600}
+
+
 def value_set(model: ApplianceModel, name: str) -> set[str]:
     """A variable's values as comparable strings (numbers as numbers, times in seconds)."""
     var = model.variables[name]
@@ -75,11 +78,11 @@ def value_set(model: ApplianceModel, name: str) -> set[str]:
         if isinstance(var, TimeVariable):
             out.add(f"t{parse_hms(str(value))}")
         elif isinstance(var, DiscreteVariable):
-            text = normalise_text(str(value))
+            text = _spelled(normalise_text(str(value)))
             number = re.fullmatch(r"(\d+(?:\.\d+)?)\s*[a-z%°]*", text)
             out.add(f"{float(number.group(1)):g}" if number else text)
         else:
-            out.add(f"{float(value):g}")
+            out |= value_set_of(var, value)
     return out
 
 
@@ -280,17 +283,46 @@ def translate_goal(
             out[target] = goal[name]
             continue
         spec = true.variables[name]
-        key = next(iter(value_set_of(spec, value)))
+        keys = [next(iter(value_set_of(spec, value)))]
+        if isinstance(spec, NumericVariable):  # a duration in hours read as a bare number
+            keys.append(f"{float(value):g}")
         chosen: Any = goal[name]
         try:
-            for candidate in all_values(read.variables[target]):
-                if key in value_set_of(read.variables[target], candidate):
-                    chosen = candidate
-                    break
+            candidates = list(all_values(read.variables[target]))
         except Exception:  # a domain that cannot be listed: keep the truth's spelling
-            pass
+            candidates = []
+        for key in keys:
+            found = [c for c in candidates if key in value_set_of(read.variables[target], c)]
+            if found:
+                chosen = found[0]
+                break
+        else:
+            if isinstance(spec, DiscreteVariable):  # "conv bake" for "convection bake"
+                chosen = next((c for c in candidates if _abbreviates(str(c), str(value))), chosen)
+            factor = TIME_UNITS.get(getattr(read.variables[target], "unit", "") or "")
+            if factor and isinstance(spec, TimeVariable):  # 20 min on a belief counting hours
+                chosen = round(parse_hms(str(value)) / factor, 4)
         out[target] = chosen
     return out
+
+
+SHORT_WORDS = {"hi": "high", "lo": "low", "med": "medium", "mid": "medium", "std": "standard"}
+
+
+def _spelled(text: str) -> str:
+    """A value with the panel abbreviations every manual uses spelt out ("HI" is "high")."""
+    return " ".join(SHORT_WORDS.get(w, w) for w in text.split())
+
+
+def _abbreviates(short: str, long: str) -> bool:
+    """Whether ``short`` writes ``long`` with shortened words ("conv bake", "convection bake")."""
+    sw = re.findall(r"[a-z0-9]+", normalise_text(short))
+    lw = re.findall(r"[a-z0-9]+", normalise_text(long))
+    return (
+        len(sw) == len(lw)
+        and sw != lw
+        and all(w.startswith(s) and len(s) >= 3 for s, w in zip(sw, lw, strict=True))
+    )
 
 
 def value_set_of(spec: Any, value: Any) -> set[str]:
@@ -298,7 +330,10 @@ def value_set_of(spec: Any, value: Any) -> set[str]:
     if isinstance(spec, TimeVariable):
         return {f"t{parse_hms(str(value))}"}
     if isinstance(spec, DiscreteVariable):
-        text = normalise_text(str(value))
+        text = _spelled(normalise_text(str(value)))
         number = re.fullmatch(r"(\d+(?:\.\d+)?)\s*[a-z%°]*", text)
         return {f"{float(number.group(1)):g}" if number else text}
+    factor = TIME_UNITS.get(getattr(spec, "unit", "") or "")
+    if factor is not None:  # a duration counted in a unit compares with a time, in seconds
+        return {f"t{round(float(value) * factor)}"}
     return {f"{float(value):g}"}

@@ -3,12 +3,14 @@ how strongly the words around a span name a variable."""
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 from apbot.read.goal_view import VarInfo
 from apbot.read.goal_vocab import (
     NEGATIONS,
     concept,
+    split_camel,
     stem,
 )
 from apbot.read.numbers import Token, tokenize
@@ -27,7 +29,7 @@ class Text:
 
     @classmethod
     def of(cls, text: str) -> Text:
-        tokens = tokenize(text)
+        tokens = tokenize(split_camel(unhyphen(text)))
         return cls(tokens, [stem(t.text) for t in tokens], [concept(t.text) for t in tokens])
 
     def word(self, k: int) -> str:
@@ -44,7 +46,34 @@ def negated_before(text: Text, start: int, reach: int = 3) -> bool:
             return False
         if word in NEGATIONS and word not in ("off", "stop", "free"):
             return True
+        if word == "of" and text.word(k - 1) == "instead":
+            return True  # "switch off at the end instead of keeping warm"
     return False
+
+
+def turned_off_after(text: Text, end: int) -> bool:
+    """ "keep-warm turned off", "the buzzer off": the words before ``end`` name a switch that
+    is being turned off, not a value being chosen."""
+    k = end
+    if text.word(k) in ("turned", "switched", "set", "is", "left"):
+        k += 1
+    return text.word(k) in ("off", "disabled")
+
+
+_HYPHENED = re.compile(
+    r"\b(a|an|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve)-and-(a|an)-"
+    r"(half|quarter)(?:-(hours?|minutes?))?\b",
+    re.IGNORECASE,
+)
+
+
+def unhyphen(text: str) -> str:
+    """ "a one-and-a-half-hour timer" reads as "one and a half hour".
+
+    >>> unhyphen("a one-and-a-half-hour timer")
+    'a one and a half hour timer'
+    """
+    return _HYPHENED.sub(lambda m: f"{m[1]} and {m[2]} {m[3]}" + (f" {m[4]}" if m[4] else ""), text)
 
 
 NUMBER_WORDS = frozenset(
@@ -115,22 +144,33 @@ def phrase_here(text: Text, k: int, own: set[str]) -> bool:
     return any(text.stems[j] in own for j in (k - 1, k + 1) if 0 <= j < len(text.tokens))
 
 
+_LONG_REACH = frozenset({"without", "no", "don't", "dont"})
+
+
 def negative_around(text: Text, k: int) -> bool:
-    for d in range(1, 6):
+    if (
+        text.word(k + 1) == "on"
+        and text.word(k + 2) in CLAUSE_ENDS | {",", "and", ""}
+        and not any(text.word(k - d) in ("don't", "dont", "not", "never") for d in range(1, 4))
+    ):
+        return False  # "with no spin at all and ECO on"
+    for d in range(1, 8):
         word = text.word(k - d)
         if word in CLAUSE_ENDS or word == ",":
             break
-        if word in NEGATIONS and word not in ("free",):
-            return True
+        if word in NEGATIONS and word not in ("free",) and (d < 6 or word in _LONG_REACH):
+            return True  # "without the fruit-and-nut beep"
+        if word == "of" and text.word(k - d - 1) == "instead":
+            return True  # "switch off instead of keeping warm"
         if word in ("on", "with", "enable", "add"):
             break
     if text.word(k) in ("mute", "silence", "unlock"):
         return True
-    for d in range(1, 4):
+    for d in range(1, 5):
         word = text.word(k + d)
         if word in CLAUSE_ENDS or word == ",":
             break
-        if word in ("off", "disabled"):
+        if word in ("off", "disabled", "silenced", "muted"):
             return True
         if word == "on":
             return False
@@ -167,11 +207,22 @@ STRONG_VERBS = frozenset(
         "microwave",
         "grill",
         "knead",
+        "blend",
+        "crush",
+        "whip",
+        "chop",
+        "grind",
+        "puree",
+        "pulse",
+        "clean",
+        "sterilise",
+        "sterilize",
+        "dehumidify",
     )
 )
 
 
-WEAK_VERBS = frozenset(stem(w) for w in ("keep", "bring", "make", "give", "fill"))
+WEAK_VERBS = frozenset(stem(w) for w in ("keep", "bring", "make", "give", "fill", "get", "hold"))
 
 
 # A running variable named for one operation is started only by that operation's verbs.

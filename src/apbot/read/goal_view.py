@@ -7,6 +7,8 @@ remembered, since an agent parses many sentences against one belief.
 
 from __future__ import annotations
 
+import itertools
+import unicodedata
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from functools import lru_cache
@@ -14,6 +16,7 @@ from typing import Any
 
 from apbot.model.domain import AnyVariable, all_values, build_domain
 from apbot.model.schema import (
+    AnywhereStep,
     ApplianceModel,
     DiscreteVariable,
     GoTo,
@@ -23,11 +26,13 @@ from apbot.model.schema import (
 )
 from apbot.model.values import parse_quantity as _parse_quantity
 from apbot.model.values import unit_of
+from apbot.read.goal_manual import coded_names, legend_words
 from apbot.read.goal_vocab import (
     LETTER_WORDS,
     STOP_WORDS,
     SYNONYMS,
     concept,
+    split_camel,
     stem,
 )
 from apbot.read.numbers import tokenize
@@ -41,7 +46,7 @@ _OFF_WORDS = ("off", "no", "disabled", "false")
 
 
 _OPERATION_NAMES = frozenset(
-    stem(w)
+    w
     for w in (
         "running",
         "run",
@@ -75,6 +80,7 @@ class VarInfo:
     timing: str = "duration"  # for time-like variables: duration, delay, finish (at), clock
     dimension: str | None = None
     order: int = 0
+    turns: str | None = None  # a timer that switches the appliance "on" or "off" at its end
 
     @property
     def values(self) -> list[Any]:
@@ -90,6 +96,8 @@ class Model:
     phrases: list[tuple[str, Any, tuple[str, ...], float]]  # var, value, stems, weight
     start_values: dict[str | None, tuple[str, Any]]  # feature var (None: plain START) -> value
     appliance_words: frozenset[str]
+    named_quantities: dict[str, list[tuple[Any, str]]] = field(default_factory=dict)
+    # var -> (value, "60 %"): a coded value the manual gives as a quantity (knob mark 2: 60 %)
 
 
 @lru_cache(maxsize=65536)
@@ -103,18 +111,23 @@ MAX_PHRASE_VALUES = 2_000
 
 
 def _words(text: str) -> list[str]:
-    return [t.text for t in tokenize(text.replace("_", " ")) if t.text.isalpha()]
+    return [t.text for t in tokenize(split_camel(text.replace("_", " "))) if t.text.isalpha()]
 
 
 def _phrase_words(text: str) -> list[str]:
     """Words and numbers of a value's name ("quick 20", "eco 40-60", "A-6")."""
-    return [t.text for t in tokenize(text.replace("_", " ")) if t.text.replace(".", "").isalnum()]
+    words = tokenize(split_camel(text.replace("_", " ")))
+    return [t.text for t in words if t.text.replace(".", "").isalnum()]
 
 
-def _steps_of(model: ApplianceModel) -> Iterable[tuple[str, int, Step]]:
+def _steps_of(model: ApplianceModel) -> Iterable[tuple[str, int, Step | AnywhereStep]]:
+    """Every step of every feature, and the keys that act from anywhere (START, CANCEL) as
+    one-step procedures of their own."""
     for feature, steps in model.features.items():
         for index, step in enumerate(steps):
             yield feature, index, step
+    for index, anywhere in enumerate(model.anywhere):
+        yield f"anywhere_{index}", 0, anywhere
 
 
 def _control_labels(model: ApplianceModel, actions: Iterable[str]) -> list[str]:
@@ -131,7 +144,7 @@ def _control_labels(model: ApplianceModel, actions: Iterable[str]) -> list[str]:
     return labels
 
 
-def step_effects(step: Step) -> list[tuple[str, Any]]:
+def step_effects(step: Step | AnywhereStep) -> list[tuple[str, Any]]:
     """(action, effect) pairs of a step."""
     if isinstance(step.effect, dict):
         return list(step.effect.items())
@@ -150,6 +163,8 @@ def _is_on_off(values: list[Any]) -> tuple[str, str] | None:
     lowered = [str(v).casefold() for v in values]
     if len(values) != 2:
         return None
+    if sorted(lowered) == ["locked", "unlocked"]:  # a lock: on is locked
+        return str(values[lowered.index("locked")]), str(values[lowered.index("unlocked")])
     on = next((values[i] for i, v in enumerate(lowered) if v in _ON_WORDS), None)
     off = next((values[i] for i, v in enumerate(lowered) if v in _OFF_WORDS), None)
     if on is None or off is None:
@@ -157,8 +172,9 @@ def _is_on_off(values: list[Any]) -> tuple[str, str] | None:
     return str(on), str(off)
 
 
-def build(model: ApplianceModel) -> Model:
-    """Gather each variable's words and role from the model."""
+def build(model: ApplianceModel, manual: str = "") -> Model:
+    """Gather each variable's words and role from the model (and the names the manual gives
+    to coded values, when it is given)."""
     infos: dict[str, VarInfo] = {}
     for order, (name, var) in enumerate(model.variables.items()):
         info = VarInfo(name, var, order=order)
@@ -172,7 +188,8 @@ def build(model: ApplianceModel) -> Model:
                 if "{" not in text and str(value).casefold() not in _OFF_WORDS:
                     _add_vocab(info, text, 0.7)
         if isinstance(var, NumericVariable):
-            info.dimension = (unit_of(var.unit) or (None, 0))[0] if var.unit else None
+            unit = unit_text(var)
+            info.dimension = (unit_of(unit) or (None, 0))[0] if unit else None
         if isinstance(var, DiscreteVariable):
             switch = _is_on_off(info.values)
             if switch:
@@ -186,8 +203,9 @@ def build(model: ApplianceModel) -> Model:
     for feature, index, step in _steps_of(model):
         if step.variable and step.variable in infos:
             info = infos[step.variable]
-            _add_vocab(info, feature, 0.6)
-            steps = model.features[feature]
+            steps: list[Step] = model.features.get(feature, [])
+            if steps:  # not a key that acts from anywhere
+                _add_vocab(info, feature, 0.6)
             entry = [a for s in steps[:index] for a in s.actions]
             own = [
                 a
@@ -214,6 +232,12 @@ def build(model: ApplianceModel) -> Model:
                     {"in", "after"} & set(_words(f"{info.name} {info.var.label or ''}"))
                 )
                 info.timing = "finish" if at else "delay"
+    for info in infos.values():
+        if info.timing in ("duration", "delay") and (
+            isinstance(info.var, TimeVariable) or info.dimension == "time"
+        ):
+            words = set(_words(f"{info.name} {info.var.label or ''}".casefold()))
+            info.turns = "off" if "off" in words else "on" if "on" in words else None
     phrases = _phrases(model, infos)
     start_values = _start_values(model, infos)
     appliance = {concept(w) for w in _words(model.appliance.name + " " + model.appliance.category)}
@@ -235,10 +259,41 @@ def build(model: ApplianceModel) -> Model:
             "steriliser",
             "sterilizer",
             "hob",
+            "ac",
+            "aircon",
+            "unit",
+            "blender",
+            "dishwasher",
+            "toaster",
             "everything",
         )
     }
-    return Model(model, infos, phrases, start_values, frozenset(appliance))
+    keys: dict[str, list[str]] = {}
+    for _feature, _index, step in _steps_of(model):
+        if step.variable in infos and infos[step.variable].role == "switch":
+            keys.setdefault(step.variable, []).extend(_control_labels(model, step.actions))
+    legends = legend_words(model, manual, keys)
+    shared = {w for a, b in itertools.combinations(legends.values(), 2) for w in a & b}
+    taken = {key for info in infos.values() for key in info.vocab}
+    for name, words in legends.items():
+        for word in words - shared:
+            key = concept(word)
+            if word not in STOP_WORDS and key not in taken:
+                infos[name].vocab[key] = 0.5  # a word only this key's legend in the manual has
+    named: dict[str, list[tuple[Any, str]]] = {}
+    for coded, value, label in coded_names(model, manual):
+        if parse_quantity(label) is not None:
+            named.setdefault(coded, []).append((value, label))
+            continue
+        names = [w for w in _phrase_words(label) if w != "and"]
+        if names and not all(w in STOP_WORDS for w in names):
+            phrases.append((coded, value, tuple(stem(w) for w in names), 0.95))
+    return Model(model, infos, phrases, start_values, frozenset(appliance), named)
+
+
+def unit_text(var: NumericVariable) -> str:
+    """The variable's unit in plain letters: a one-character "℃" is "°C" (NFKC)."""
+    return unicodedata.normalize("NFKC", var.unit).strip()
 
 
 def numeric_values(values: list[Any]) -> bool:
@@ -292,17 +347,24 @@ def _mark_power_and_running(model: ApplianceModel, infos: dict[str, VarInfo]) ->
                 found is not None
                 and isinstance(found.var, DiscreteVariable)
                 and found.role != "power"
-                and (stem(target or "") in _OPERATION_NAMES or found.role == "switch")
+                and concept("lock") not in found.vocab
+                and (_operation(target or "") or found.role == "switch")
             ):
                 found.role = "running"
     for name, info in infos.items():
-        operation = stem(name) in _OPERATION_NAMES
+        operation = _operation(name)
         if (
             operation
             and info.role in ("switch", "setting")
             and isinstance(info.var, DiscreteVariable)
         ):
             info.role = "running"
+
+
+def _operation(name: str) -> bool:
+    """A variable named for an operation under way ("running", "heating", "brew_status"), not
+    a setting that shares a stem with one ("heat" is a level, "heating" is running)."""
+    return bool(set(name.casefold().split("_")) & _OPERATION_NAMES)
 
 
 def _start_values(
@@ -312,7 +374,9 @@ def _start_values(
     (a timer programme ends in "timer" rather than "cooking"), and in general (key None)."""
     found: dict[str | None, tuple[str, Any]] = {}
     running = [n for n, i in infos.items() if i.role == "running"]
-    for _feature, steps in model.features.items():
+    procedures: list[list[Step | AnywhereStep]] = [list(s) for s in model.features.values()]
+    procedures += [[anywhere] for anywhere in model.anywhere]
+    for steps in procedures:
         adjusted = [s.variable for s in steps if s.variable and s.variable not in running]
         for step in steps:
             for action, effect in step_effects(step):
@@ -321,6 +385,8 @@ def _start_values(
                 labels = " ".join(_control_labels(model, [action])).casefold()
                 if not any(word in _words(labels) for word in _START_LABELS):
                     continue
+                if str(effect.to).casefold() in _OFF_WORDS:
+                    continue  # START held to cancel: it stops, it does not start
                 value = (step.variable, effect.to)
                 if len(steps) == 1 or not adjusted:
                     found.setdefault(None, value)
@@ -408,18 +474,19 @@ def _phrases(
     return phrases
 
 
-_VIEWS: dict[int, tuple[ApplianceModel, Model]] = {}
+_VIEWS: dict[tuple[int, int], tuple[ApplianceModel, str, Model]] = {}
 
 
-def model_view(model: ApplianceModel) -> Model:
+def model_view(model: ApplianceModel, manual: str = "") -> Model:
     """:func:`build`, remembered for the last few models (an agent parses many sentences)."""
-    hit = _VIEWS.get(id(model))
-    if hit is not None and hit[0] is model:
-        return hit[1]
-    view = build(model)
+    key = (id(model), hash(manual))
+    hit = _VIEWS.get(key)
+    if hit is not None and hit[0] is model and hit[1] == manual:
+        return hit[2]
+    view = build(model, manual)
     if len(_VIEWS) >= 32:
         _VIEWS.pop(next(iter(_VIEWS)))
-    _VIEWS[id(model)] = (model, view)
+    _VIEWS[key] = (model, manual, view)
     return view
 
 

@@ -22,6 +22,18 @@ _SPELLING = (
 )
 
 
+_CAMEL = re.compile(r"(?<=[a-z])(?=[A-Z][a-z])")
+
+
+def split_camel(text: str) -> str:
+    """ "ExtraDry" and "varioSpeed" are two words each: a brand's run-together option names.
+
+    >>> split_camel("varioSpeed with ExtraDry, not PIZZA or McVitie")
+    'vario Speed with Extra Dry, not PIZZA or Mc Vitie'
+    """
+    return _CAMEL.sub(" ", text)
+
+
 @lru_cache(maxsize=8192)
 def stem(word: str) -> str:
     """A crude stem so that "drying", "dried" and "dry", or "sterilising" and "sterilize",
@@ -69,7 +81,7 @@ _GROUPS: tuple[tuple[str, ...], ...] = (
     ("program", "programme", "prog", "prg", "course", "cycle", "menu", "function", "func", "mode"),
     ("temperature", "temp", "degree", "degrees", "heat"),
     ("lock", "child", "childlock", "lockout", "keylock", "keys", "buttons", "controls", "panel"),
-    ("delay", "delayed", "preset", "later", "wait", "countdown"),
+    ("delay", "delayed", "preset", "later", "wait", "countdown", "reserve", "reservation"),
     ("finish", "end", "ready", "done", "finished"),
     ("timer", "timers"),
     ("time", "duration", "times"),
@@ -78,7 +90,7 @@ _GROUPS: tuple[tuple[str, ...], ...] = (
     ("dry", "drying", "dryer"),
     ("sterilize", "steam", "sterilise", "sanitize", "uv"),
     ("humidity", "rh", "humid", "humidistat"),
-    ("fan", "airflow", "air", "blower"),
+    ("fan", "airflow", "air", "blower", "convection"),
     ("power", "watt", "watts", "wattage", "kw", "kilowatt"),
     ("level", "setting", "mark"),
     ("size", "loaf", "portion", "amount", "weight"),
@@ -89,6 +101,10 @@ _GROUPS: tuple[tuple[str, ...], ...] = (
     ("warm", "warming", "keep"),
     ("clock", "clocks", "day"),
     ("texture", "firmness"),
+    ("awake", "wake", "woken", "wakeup"),
+    ("auto", "automatic", "automatically"),
+    ("swing", "sweep", "oscillate", "oscillation", "oscillating"),
+    ("rotate", "rotation", "rotisserie", "spit"),
 )
 _CANON: dict[str, str] = {}
 for _group in _GROUPS:
@@ -124,6 +140,7 @@ NEGATIONS = frozenset(
         "none",
         "free",
         "nor",
+        "release",
     }
 )
 # Words that carry no meaning for matching a variable by name.
@@ -229,7 +246,7 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "softer": ("soft", "soften"),
     "light": ("pale", "lighter"),
     "dark": ("darker", "deep"),
-    "low": ("lo", "quiet", "gentle", "quietest", "down"),
+    "low": ("lo", "quiet", "gentle", "quietest"),
     "high": ("hi", "full", "fast", "strong"),
     "large": ("big", "bigger", "largest", "biggest"),
     "small": ("little", "smaller", "smallest"),
@@ -238,6 +255,7 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "co": ("continuous", "continuously", "nonstop"),
     "auto": ("automatic",),
     "sterilize": ("steam", "sterilizing", "sterilization"),
+    "dry": ("dehumidify", "dehumidifying", "dehumidification"),
     "free": ("freely", "flow"),
     "more": ("extra", "longer", "stronger"),
     "less": ("shorter", "lighter", "weaker"),
@@ -246,6 +264,7 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "fish": ("salmon", "cod", "seafood", "prawns", "shrimp"),
     "vegetables": ("veg", "veggies", "vegetable"),
     "store": ("storage", "stored"),
+    "eco": ("economy", "economical", "saving"),
     "storage": ("store", "storing"),
 }
 # Counts written as adverbs ("rinse twice").

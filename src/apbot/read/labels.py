@@ -99,6 +99,20 @@ def _score(token_words: list[str], phrase: str) -> float:
     return 0.0
 
 
+NOUN_TOKENS = frozenset({"knob", "dial", "selector", "switch", "wheel", "ring", "lever"})
+
+
+def _named_by_noun(manual: Manual, noun: str) -> tuple[str, int] | None:
+    """The capitalised name written before a control noun ("HUMIDISTAT knob"): an action
+    named only ``knob`` is that control."""
+    pattern = re.compile(rf"(?<![A-Za-z0-9])([A-Z][A-Z0-9+&'.-]+(?: [A-Z0-9+&'.-]+)*)\s+{noun}\b")
+    for unit in manual.units:
+        m = pattern.search(unit.text)
+        if m and len(m.group(1)) >= 3:
+            return m.group(1), unit.line
+    return None
+
+
 def find_labels(manual: Manual, tokens: list[str]) -> dict[str, Label]:
     """The label and mentions of each control token."""
     phrases, whole = caps_phrases(manual)
@@ -110,6 +124,10 @@ def find_labels(manual: Manual, tokens: list[str]) -> dict[str, Label]:
             score = _score(tw, phrase)
             if score > best_score or (score == best_score and score and len(phrase) < len(best)):
                 best, best_score, line = phrase, score, at
+        if best_score < 0.6 and tw and tw[-1] in NOUN_TOKENS:
+            named = _named_by_noun(manual, tw[-1])  # "the HUMIDISTAT knob" for ``knob``
+            if named is not None:
+                best, best_score, line = named[0], 0.6, named[1]
         if best_score < 0.6:
             best, line = " ".join(tw).upper() or token.upper(), None
             symbols = [s for w in (token, *tw[-1:]) for s in SYMBOLS.get(w, ())]

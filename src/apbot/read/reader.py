@@ -106,7 +106,7 @@ def _main_variable(b: Builder) -> str | None:
     names = [n for n in b.variables if n not in fixed and not b.variables[n].get("depends_on")]
     for name in names:
         spec = b.variables[name]
-        if spec.get("type") == "discrete" and set(name.split("_")) & CHOICE_WORDS:
+        if spec.get("type") in ("discrete", "numeric") and set(name.split("_")) & CHOICE_WORDS:
             return name
     return None  # an amount on an idle screen is too often wrong to predict (tried: worse)
 
@@ -117,9 +117,15 @@ def _assemble(b: Builder, appliance_id: str, category: str) -> dict[str, Any]:
     if main is not None:
         idle = "{" + main + "}"
         b.note("display.idle", f"the display shows {main} when nothing is being set")
-        power = b.variables.get("power")
-        if power is not None and "show" not in power:
-            power["show"] = {"off": "", "on": idle}  # switching on shows the idle screen
+    power = b.variables.get("power")
+    if power is not None and "show" not in power:
+        # switching on shows the idle screen; with none read, a lit screen the belief does not
+        # try to read (a guessed word would be misread as a wrong power state)
+        power["show"] = {"off": "", "on": idle}
+        if not idle:
+            b.note(
+                "variables.power.show", "switching on lights the display (what it shows: not read)"
+            )
     return {
         "appliance": {"id": appliance_id, "category": category, "name": "read from the manual"},
         "controls": _controls(b),

@@ -23,6 +23,7 @@ from apbot.read.build import (
     adjuster_direction,
 )
 from apbot.read.labels import words
+from apbot.read.shown import LOCK_CUE, RUNNING_CUE, shown_words
 
 
 def assign(b: Builder) -> None:
@@ -106,7 +107,11 @@ def assign(b: Builder) -> None:
         var = "child_lock"
         if var not in b.variables:
             var = b.add_toggle("child_lock", "LOCK", at)
-            b.variables[var]["show"] = {"off": "", "on": _lock_word(b, info) or "LOCK"}
+            word = (
+                _lock_word(b, info)
+                or _state_word(b, list(info.controls), LOCK_CUE, re.compile(r"^RUN", re.I))[0]
+            )
+            b.variables[var]["show"] = {"off": "", "on": word or "LOCK"}
             b.feature("child_lock", [{"actions": [info.name], "variable": var, "effect": "toggle"}])
         else:
             b.features["child_lock"][0]["actions"].append(info.name)
@@ -136,13 +141,21 @@ def assign(b: Builder) -> None:
         and i not in starts
         and i.digit is None
         and (set(words(i.token)) & STOP_WORDS)
+        and not set(words(i.token)) & NUMERIC_WORDS  # END TIME, CLEAR TIMER: a setting
         and i.skill in ("press", "hold")
     ]
     if starts or stops:
         var = b.unique("running", b.variables)
         b.variables[var] = {"type": "discrete", "values": ["off", "on"], "label": "RUN"}
-        if b.lamp_unit("RUN") is not None:
-            b.indicators.append(var)
+        word, at = _state_word(
+            b, [i.token for i in starts + stops], RUNNING_CUE, re.compile(r"LOC|^C?L$|^Lc$", re.I)
+        )
+        if word:
+            b.variables[var]["show"] = {"off": "", "on": word}
+            b.note(f"variables.{var}.show", f"the panel shows {word} while it runs", at)
+        else:  # no word read: the belief does not predict the screen (the loop cannot misread it)
+            b.variables[var]["visible"] = False
+            b.note(f"variables.{var}.visible", "the manual names no sign of running")
         b.note(
             f"variables.{var}",
             "the appliance runs after START",
@@ -214,6 +227,7 @@ def assign(b: Builder) -> None:
             _pad_group(b, group, label, first_mention)
             keys = [k for k in keys if k not in group]
     evidence = {k.name: b.evidence(list(k.controls)) for k in keys}
+    options = _option_keys(b, keys)
     shared_pair = pairs.get("")
     generic_dials = [
         t for t in dials if t.split("_")[0] in GENERIC_DIALS and not _dial_values(b, t)
@@ -224,13 +238,21 @@ def assign(b: Builder) -> None:
         ev = evidence[key.name]
         name = _var_name(b, key)
         lab = label(key.controls[0])
-        own_toggle = ev.toggle_at is not None and any(
-            ev.toggle_at in b.labels[c].mentions for c in key.controls if c in b.labels
-        )
+        own_toggle = (
+            ev.toggle_at is not None
+            and any(ev.toggle_at in b.labels[c].mentions for c in key.controls if c in b.labels)
+        ) or (key.token in options and not ev.values)
+        if key.token in options and ev.toggle_at is None:
+            ev.toggle_at = options[key.token]
         if own_toggle and not set(words(name)) & NUMERIC_WORDS:
             var = b.add_toggle(name, lab, ev.toggle_at)  # "press KEEP WARM to switch it on or off"
             b.feature(var, [{"actions": [key.name], "variable": var, "effect": "toggle"}])
-        elif ev.values and len(ev.values) >= 2 and set(ev.values) != {"on", "off"}:
+        elif (
+            ev.values
+            and len(ev.values) >= 2
+            and set(ev.values) != {"on", "off"}
+            and not _numbered(b, key, ev)
+        ):
             if _numeric_list(ev.values):
                 ev2 = _list_evidence(ev)
                 var = b.add_number(name, lab, ev2, cyclic=True)
@@ -247,7 +269,9 @@ def assign(b: Builder) -> None:
         elif ev.ranges or (ev.step and ev.toggle_at is None):
             entry_keys.append(key)
         elif (
-            set(words(key.token)) & TIME_WORDS and ev.toggle_at is None and (shared_pair or digits)
+            set(words(key.token)) & TIME_WORDS
+            and ev.toggle_at is None
+            and (shared_pair or digits or generic_dials)
         ):
             entry_keys.append(key)  # a clock or timer key: a time entered after it
         elif (ev.values and set(ev.values) == {"on", "off"}) or (
@@ -424,6 +448,19 @@ def assign(b: Builder) -> None:
             var = b.add_number(token, lab, ev, cyclic=False)
         eff = {**{a: "next" for a in cw}, **{a: "prev" for a in ccw}}
         b.feature(f"select_{var}", [{"actions": cw + ccw, "variable": var, "effect": eff}])
+        _dial_ends(b, token, var)
+        values = b.variables[var].get("values") or []
+        if (
+            values
+            and values[0] == "off"
+            and "power" not in b.variables
+            and not any(g["name"] == "power off" for g in b.guards)
+        ):  # a knob whose first position is OFF is the on/off switch: off, nothing else works
+            b.guards.append(
+                {"name": "power off", "when": {var: "off"}, "only": cw + ccw, "display": "",
+                 "hide": True}
+            )  # fmt: skip
+            b.note("guards.power off", f"the {lab} knob at OFF switches the appliance off")
         for k in [k for k in silent if k.token == token]:
             b.feature(
                 f"{k.token}_press",
@@ -519,9 +556,41 @@ def _pad_group(b: Builder, group: list[ActionInfo], label: Any, first_mention: A
         f"keys listed together select one {noun}: {', '.join(values)}",
         first_mention([g.token for g in group]),
     )
-    b.note(f"variables.{var}.initial", f"starts at {values[0]} (the manual does not say)")
+    start, at = _pad_initial(b, values)
+    if start is None:
+        b.note(f"variables.{var}.initial", f"starts at {values[0]} (the manual does not say)")
+    elif start in values:
+        b.variables[var]["initial"] = start
+        b.note(f"variables.{var}.initial", f"starts at {start}", at)
+    else:  # a state no key selects ("Manual mode is selected every time you switch on")
+        b.variables[var]["values"] = [start, *values]
+        b.note(f"variables.{var}.initial", f"starts at {start}, which no key selects", at)
     for key, value in zip(group, values, strict=True):  # one go-to feature per key
         b.feature(key.token, [{"actions": [key.name], "variable": var, "effect": {"to": value}}])
+
+
+START_RE = re.compile(
+    r"\b(?:(?:is|comes)\s+(?:set|preset)\s+(?:for|to)|starts?\s+(?:in|with|on)|defaults?\s+to"
+    r"|by default(?:,)?\s+(?:it is|is)|comes on in)\s+(?:the\s+)?"
+    r"([A-Za-z][\w-]*(?: [A-Za-z][\w-]*)?)"
+    r"|\b([A-Z][\w-]*)\s+(?:mode|programme|program|setting)\s+is\s+(?:selected|chosen|set)"
+    r"\s+(?:automatically|by default|(?:each|every) time)",
+)
+
+
+def _pad_initial(b: Builder, values: list[str]) -> tuple[str | None, int | None]:
+    """What a pad of go-to keys starts at: a value the manual says it is set for out of the box,
+    or a named mode selected on switching on that no key selects."""
+    for i, unit in enumerate(b.manual.units):
+        for m in START_RE.finditer(unit.text):
+            if m.group(1):
+                words_ = m.group(1).lower().split()
+                for k in (2, 1):
+                    if " ".join(words_[:k]) in values:
+                        return " ".join(words_[:k]), i
+            elif m.group(2):
+                return m.group(2).lower(), i
+    return None, None
 
 
 def _keypad_entry(spec: dict[str, Any]) -> None:
@@ -574,12 +643,109 @@ def _token_of(b: Builder, action: str) -> str:
     return next(i.token for i in b.infos if i.name == action)
 
 
+def _state_word(
+    b: Builder, tokens: list[str], cue: re.Pattern[str], reject: re.Pattern[str] | None = None
+) -> tuple[str, int | None]:
+    """The word the panel shows in a state (running, locked): first in the sentences about the
+    keys that enter it (the sentence that names the key, or the one right after it), then in any
+    sentence about the state; a word ``reject`` matches belongs to another state."""
+    keys = {lab.text for lab in b.labels.values() if lab.text}
+    mentions = {m for t in tokens for m in _mentions(b, t)}
+    near = [i for i in b.context(tokens) if i < len(b.manual.units)]
+    rest = [i for i, u in enumerate(b.manual.units) if cue.search(u.text) and i not in near]
+    for i in near + rest:
+        text = b.manual.units[i].text
+        if not cue.search(text) and not (i - 1 in mentions and i not in mentions):
+            continue
+        for word in shown_words(text, keys):
+            if reject is None or not reject.search(word):
+                return word, i
+    return "", None
+
+
+ENDLESS_RE = re.compile(
+    r"\bno (?:end )?stops?\b|\bturns? (?:freely|endlessly|all the way round)\b|\bendless\w*"
+    r"|\b(?:simply )?continues with the first\b|\bround and round\b",
+    re.IGNORECASE,
+)
+STOPS_RE = re.compile(
+    r"\bstops? at (?:each|either|both|the) ends?\b|\bstops? at \S+ and (?:at )?\S+"
+    r"|\bend stops?\b|\bwill not turn (?:past|beyond)"
+    r"|\bcannot be turned (?:past|beyond)",
+    re.IGNORECASE,
+)
+
+
+def _dial_ends(b: Builder, token: str, var: str) -> None:
+    """A knob the manual says stops at its ends clamps; one with no end stop goes round."""
+    units = b.manual.units
+    noun = re.compile(rf"\b{re.escape(token.replace('_', ' '))}\b", re.IGNORECASE)
+    near = b.context([token]) + [i for i, u in enumerate(units) if noun.search(u.text)]
+    for i in dict.fromkeys(near):
+        text = units[i].text
+        if ENDLESS_RE.search(text):
+            b.variables[var]["wrap"] = True
+            b.note(f"variables.{var}.wrap", "the knob has no end stop", i)
+            return
+        if STOPS_RE.search(text):
+            b.variables[var]["wrap"] = False
+            b.note(f"variables.{var}.wrap", "the knob stops at its ends", i)
+            return
+
+
+OPTIONS_RE = re.compile(
+    r"\boptions?\b[^.]*\b(?:(?:turned|switched|set) on and off|on or off|on and off|toggle)",
+    re.IGNORECASE,
+)
+
+
+def _option_keys(b: Builder, keys: list[ActionInfo]) -> dict[str, int]:
+    """Keys of an options section ("Options are turned on and off by touching their pad"):
+    those named in it, up to a heading that names no key."""
+    units = b.manual.units
+    labels = {k.token: b.labels[k.controls[0]].text for k in keys if k.controls[0] in b.labels}
+    found: dict[str, int] = {}
+    for o, unit in enumerate(units):
+        if not OPTIONS_RE.search(unit.text):
+            continue
+        for j in range(o, min(o + 40, len(units))):
+            text = units[j].text
+            if (
+                j > o
+                and text == units[j].heading
+                and not any(lab and lab.upper() in text.upper() for lab in labels.values())
+            ):
+                break
+            for token, lab in labels.items():
+                if lab and re.search(rf"(?<![A-Za-z0-9]){re.escape(lab)}(?![A-Za-z0-9])", text):
+                    found.setdefault(token, o)
+    return found
+
+
+def _numbered(b: Builder, key: ActionInfo, ev: Evidence) -> bool:
+    """A key whose own sentence gives a bare number range ("Next menu number (1–15)") sets a
+    number, whatever names a table elsewhere gives the numbers."""
+    own = set(_mentions(b, key.controls[0]))
+    return (
+        bool(ev.ranges)
+        and ev.range_at in own
+        and ev.values_at not in own
+        and not ev.ranges[0].unit
+        and ev.ranges[0].high - ev.ranges[0].low >= 2
+    )
+
+
+def _mentions(b: Builder, token: str) -> list[int]:
+    return b.labels[token].mentions if token in b.labels else []
+
+
 def _lock_word(b: Builder, info: ActionInfo) -> str:
     for i in b.context(list(info.controls)):
         for m in re.finditer(
             r"\b([A-Z][A-Z-]*LOC[A-Z]*|LOC|LOCK(?:ED)?|[A-Z]-?L)\b", b.manual.units[i].text
         ):
-            return m.group(1)
+            if "CLOCK" not in m.group(1):
+                return m.group(1)
     return ""
 
 

@@ -215,6 +215,12 @@ def parse_manual(text: str) -> Manual:
             para_step = int(step.group(1)) if step else None
             para.append((number, line[bullet.end() :].strip()))
             continue
+        if para and (_TERM_RE.match(line) or _FIELD_RE.match(line)):
+            flush()  # "WARM      holds cooked food hot": a term and its definition, a new item
         para.append((number, stripped))
     flush()
     return Manual(units, raw_lines)
+
+
+_FIELD_RE = re.compile(r"^\s{0,2}[A-Z][a-z]+(?: [A-Za-z]+){0,3}(?: \([^)]{1,30}\))?:\s+\S")
+_TERM_RE = re.compile(r"^\s{0,2}[A-Z0-9][A-Z0-9+/&.'-]*(?: [A-Z0-9+/&.'-]+){0,3}\s{2,}\S")

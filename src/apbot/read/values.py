@@ -228,6 +228,51 @@ def find_list(text: str) -> tuple[list[str], str] | None:
     return None
 
 
+_CAPS_ITEM = r"[A-Z][A-Z0-9+-]*(?: [A-Z0-9+-]+){0,2}"
+_CAPS_RUN = re.compile(
+    rf"(?<![\w/])({_CAPS_ITEM}(?:\s*(?:,|/|·|\s[–—]\s)\s*{_CAPS_ITEM})*\s*(?:,\s*)?"
+    rf"(?:or|and|,|/|[–—])\s*{_CAPS_ITEM})(?![\w/])"
+)
+_QTY = r"\d+(?:[.,]\d+)?\s*(?:[a-zA-Z%°]{1,4}\b|%|°[CF])?"
+_QTY_RUN = re.compile(rf"(?<![\w.])({_QTY}(?:\s*,\s*{_QTY})+\s*,?\s*(?:or|and)\s+{_QTY})")
+
+
+def quantity_run(text: str) -> list[str] | None:
+    """Three or more amounts in a row in a key's own sentence ("750 g, 1000 g or 1250 g")."""
+    m = _QTY_RUN.search(text)
+    if not m:
+        return None
+    items = [i.strip() for i in re.split(r"\s*,\s*(?:or\s+|and\s+)?|\s+(?:or|and)\s+", m.group(1))]
+    items = [i for i in items if i]
+    return _dedupe(items) if len(items) >= 3 else None
+
+
+def caps_run(text: str, exclude: set[str]) -> list[str] | None:
+    """Three or more names in capitals written in a row in a key's own sentence ("COLOUR –
+    crust colour, LIGHT, MEDIUM or DARK"), the key's own names excluded."""
+    for m in _CAPS_RUN.finditer(text):
+        items = [i.strip() for i in re.split(r"\s*(?:,|/|·|[–—])\s*|\s+(?:or|and)\s+", m.group(1))]
+        items = [i for i in items if i and i.upper() not in exclude]
+        if len(items) >= 3 and all(len(i) <= 16 for i in items):
+            return _dedupe(items)
+    return None
+
+
+def bare_list(text: str) -> list[str] | None:
+    """A line that is nothing but a list ("OFF · 1 · 2 · 3 · CONT", "WARM   BAKE   TOAST"), as
+    printed round a knob or under a key after a sentence ending in a colon."""
+    items = [
+        _clean_item(p)
+        for p in re.split(r"\s*[·•|,]\s*|\s*/\s*|\s{2,}|\s+or\s+|\s*[→>]\s*", text.strip())
+    ]
+    items = [i for i in items if i]
+    if len(items) < 3 or len(items) > 16:
+        return None
+    if all(len(i) <= 20 and len(i.split()) <= 3 and not i.endswith(":") for i in items):
+        return _dedupe(items)
+    return None
+
+
 def anchored_lists(text: str, word: str) -> list[list[str]]:
     """Lists tied to a setting's word: "loaf weight (500 / 750 / 1000)", "a light, medium or
     dark crust"."""

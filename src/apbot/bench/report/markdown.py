@@ -22,6 +22,7 @@ from apbot.bench.report.content import (
     table,
 )
 from apbot.bench.report.figures import FIGURES_DIR, ReportFigure
+from apbot.bench.report.reading import belief_sections, read_goal_rows
 from apbot.bench.report.snapshot import RunData
 from apbot.bench.report.text import failure_reason
 
@@ -73,6 +74,29 @@ def _md_failures(data: RunData) -> list[str]:
     return out
 
 
+def _md_reading(data: RunData) -> list[str]:
+    """Goals read from the instructions, per task; read beliefs' differences, per appliance."""
+    out: list[str] = []
+    line, header, rows = read_goal_rows(data)
+    if rows:
+        out += ["## Goals read from the instructions", "", md_text(line), ""]
+        out += [*_md_table(header, rows), ""]
+    sections = belief_sections(data)
+    if sections:
+        out += [
+            "## Read beliefs",
+            "",
+            "How the model read from each manual differs from the truth, under the reader's "
+            "evaluation alignment (judged with the truth; no method sees this).",
+            "",
+        ]
+        for appliance, digest, differences in sections:
+            shown = "; ".join(differences) if differences else "no difference found"
+            out.append(f"- **{md_text(appliance)}** ({md_text(digest)}): {md_text(shown)}")
+        out.append("")
+    return out
+
+
 def render_markdown(data: RunData, figures: Mapping[str, ReportFigure], generated: str) -> str:
     """The report as Markdown; figures are linked from ``figures/``."""
 
@@ -113,6 +137,7 @@ def render_markdown(data: RunData, figures: Mapping[str, ReportFigure], generate
             "",
         ]
         out += image("fault_study") + _md_table(*fault_rows(data.fault_study)) + [""]
+    out += _md_reading(data)
     out += _md_failures(data)
     out += ["", "Every task's trace is in `report.html`.", ""]
     return "\n".join(out)

@@ -70,6 +70,17 @@
     const out = [line("Instruction", task.ins)];
     const goal = task.goal.map(([name, want, got]) => ["", name, want, got === null ? "—" : got]);
     out.push(table(["variable", "goal", "final (true)"], goal, "kv"));
+    if (task.gm === "read") {
+      if (task.pg === null) out.push(line("Goal read from the instruction", "none"));
+      else {
+        const verdict = task.gx === null ? "" : task.gx ? " (the stored goal)" : " (not the stored goal)";
+        out.push(line("Goal read from the instruction" + verdict, ""));
+        out.push(table(["", "variable (belief)", "value"], task.pg.map(([n, v]) => ["", n, v]), "kv"));
+      }
+    }
+    if (task.go.length) out.push(line("Read goal values the belief lacks (handed over as said)", task.go.join("; ")));
+    if (task.bh) out.push(line("Belief", task.bh + (task.lf ? ` · learnt over ${task.lf} earlier task(s)` : "")));
+    if (task.bd.length) out.push(line("Read belief vs the truth", task.bd.join("; ")));
     const outcome = task.ok ? "success" : "failure: " + task.why;
     out.push(
       line(

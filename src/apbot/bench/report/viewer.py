@@ -168,6 +168,17 @@ def task_entry(record: TaskRecord, trace: int) -> dict[str, Any]:
         "faults": list(record.faults),
         "repairs": list(record.repairs),
         "tr": trace,
+        "gm": record.goal_mode,
+        "pg": (
+            [[name, value_text(value)] for name, value in record.parsed_goal.items()]
+            if record.parsed_goal is not None
+            else None
+        ),
+        "gx": record.goal_exact,
+        "go": list(record.goal_outside),
+        "bh": record.belief_hash,
+        "bd": list(record.belief_diff),
+        "lf": record.learnt_from,
     }
 
 

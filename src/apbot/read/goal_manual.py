@@ -1,0 +1,146 @@
+"""Names the manual gives to coded values: "2" is French bread, "A-4" a chilled ready meal.
+
+Many panels show a programme only as a number or a short code (P2, A-4, a knob mark), and
+only the manual's table says what it is. A user says "a French loaf" or "60 % humidity", so
+the goal parser may read the manual it is given (a robot has it) for those names — only for
+values that are codes, and only from where manuals put them: a table row that pairs a code
+with a name ("| 2 | French | 3:50 |"), or a bold heading ("**2 French** – …").
+
+>>> from apbot.model.schema import ApplianceModel
+>>> model = ApplianceModel.model_validate({
+...     "appliance": {"id": "m", "category": "bread_maker", "name": "m"},
+...     "variables": {"menu": {"type": "discrete", "values": ["1", "2", "3"]}},
+...     "controls": [{"id": "menu", "kind": "button", "label": "MENU"}],
+...     "actions": {"press_menu": {"control": "menu"}},
+...     "features": {"menu": [{"actions": ["press_menu"], "variable": "menu", "effect": "next"}]},
+... })
+>>> manual = "| No. | Programme |\\n|---|---|\\n| 1 | Basic |\\n| 2 | French (crisp) |"
+>>> manual += "\\n| 3 | Cake |"
+>>> coded_names(model, manual)
+[('menu', '1', 'Basic'), ('menu', '2', 'French'), ('menu', '3', 'Cake')]
+"""
+
+from __future__ import annotations
+
+import re
+
+from apbot.model.domain import all_values
+from apbot.model.schema import ApplianceModel, DiscreteVariable
+
+_CODE = re.compile(r"[a-z]{0,2}[- ]?\d{1,3}", re.IGNORECASE)
+_BOLD = re.compile(r"\*\*\s*([A-Za-z]{0,2}[- ]?\d{1,3})\s+([^*\n]{2,40}?)\s*\*\*")
+_RULE = re.compile(r"^[\s|:\-–—=+]*$")
+MAX_WORDS = 5
+"""Words of a name kept (a cell that says more is a description, not a name)."""
+
+
+def _key(text: str) -> str:
+    return re.sub(r"[\s\-_.]", "", text.casefold())
+
+
+def _coded_variables(model: ApplianceModel) -> dict[str, dict[str, str]]:
+    """Discrete variables whose values are mostly codes: name -> {normalised value: value}."""
+    found = {}
+    for name, var in model.variables.items():
+        if not isinstance(var, DiscreteVariable):
+            continue
+        values = [str(v) for v in all_values(var)]
+        coded = [v for v in values if _CODE.fullmatch(v.strip())]
+        if len(coded) >= 2 and len(coded) >= 0.6 * len(values):
+            found[name] = {_key(v): v for v in values}
+    return found
+
+
+def _name(cell: str) -> str:
+    """The name a cell gives: markup, brackets and what follows a dash or colon dropped."""
+    text = re.sub(r"[*_`]", "", cell)
+    text = re.sub(r"\([^)]*\)|\[[^\]]*\]", " ", text)
+    text = re.split(r"\s[–—-]\s|[:;,]", text)[0].strip()
+    return text if 0 < len(text.split()) <= MAX_WORDS else ""
+
+
+def _table_blocks(manual: str) -> list[list[list[str]]]:
+    """Rows of cells of each pipe-drawn table (separator rows dropped)."""
+    blocks: list[list[list[str]]] = []
+    current: list[list[str]] = []
+    for line in manual.splitlines():
+        if line.count("|") >= 2:
+            if not _RULE.match(line):
+                current.append([c.strip() for c in line.strip().strip("|").split("|")])
+            continue
+        if current:
+            blocks.append(current)
+            current = []
+    if current:
+        blocks.append(current)
+    return blocks
+
+
+def coded_names(model: ApplianceModel, manual: str) -> list[tuple[str, str, str]]:
+    """(variable, value, name) for each coded value the manual names."""
+    variables = _coded_variables(model)
+    if not variables or not manual:
+        return []
+    out: list[tuple[str, str, str]] = []
+    for block in _table_blocks(manual):
+        pairs = [
+            (row[i], row[i + 1])
+            for row in block
+            for i in range(len(row) - 1)
+            if _CODE.fullmatch(row[i]) or any(_key(row[i]) in v for v in variables.values())
+        ]
+        best, score = None, (0.0, 0.0)
+        codes = {_key(code) for code, _ in pairs}
+        for name, values in variables.items():
+            hits = len(codes & set(values))
+            # most of the table's codes are this setting's values; then: it covers most of them
+            fraction = (hits / max(len(codes), 1), hits / max(len(values), 1))
+            if hits >= 2 and fraction > score:
+                best, score = name, fraction
+        if best is None or score[0] < 0.6:
+            continue
+        for code, cell in pairs:
+            value = variables[best].get(_key(code))
+            label = _name(cell)
+            if value is not None and label and _key(label) != _key(value):
+                out.append((best, value, label))
+    for code, text in _BOLD.findall(manual):
+        homes = [n for n, values in variables.items() if _key(code) in values]
+        label = _name(text)
+        if len(homes) == 1 and label:
+            out.append((homes[0], variables[homes[0]][_key(code)], label))
+    return list(dict.fromkeys(out))
+
+
+_LEGEND_VERBS = frozenset(
+    {"turns", "turn", "switches", "switch", "sets", "set", "selects", "select", "press", "presses"}
+    | {"changes", "change", "shows", "show", "starts", "start", "stops", "stop", "each", "when"}
+    | {"with", "from", "into", "this", "that", "then", "also", "only", "between", "unit's"}
+)
+
+
+def legend_words(
+    model: ApplianceModel, manual: str, labels: dict[str, list[str]]
+) -> dict[str, set[str]]:
+    """The thing a manual's key legend says a switch turns on and off: "LIGHT   Turns the
+    indoor unit's LED display on and off." — the LIGHT switch is the *display*. ``labels``:
+    setting -> its keys' labels. Only legend lines count (a key's label opening a line, then
+    its description), and only the word right before "on and off"."""
+    out: dict[str, set[str]] = {}
+    if not manual:
+        return out
+    lines = [line.strip().strip("|*-• ").strip() for line in manual.splitlines()]
+    for name, keys in labels.items():
+        for label in keys:
+            if len(label) < 3 or not label.isupper():
+                continue
+            pattern = re.compile(rf"^{re.escape(label)}(?:\s{{2,}}|\s*[:|–—]\s*)(.+)$")
+            for line in lines:
+                found = pattern.match(line)
+                if found is None:
+                    continue
+                sentence = re.split(r"[.;(]", found[1])[0]
+                thing = re.search(r"([A-Za-z]{4,})\s+on\s*(?:and|or|/)\s*off\b", sentence)
+                if thing is not None and thing[1].casefold() not in _LEGEND_VERBS:
+                    out.setdefault(name, set()).add(thing[1].casefold())
+    return out

@@ -1,0 +1,178 @@
+"""Instruction → goal with an LLM: a schema built from the belief, validated against it.
+
+The answer's schema has one property per variable of the belief — its allowed values as an
+enum where there are few enough (written as text: ``"80"``, ``"00:03:30"``), ``null`` for
+"not mentioned" — so a server with constrained decoding cannot name a value the belief lacks.
+The prompt lists the settings, shows one worked example (a made-up fan heater, so that no
+bundled appliance is in it), and gives the offline parser's reading as a hint. The answer is
+then normalised by :func:`apbot.model.goal.parse_goal`; its errors go back to the model.
+
+Prompt layout for the server's prompt cache: what is the same for every instruction to one
+appliance (the settings, the example) comes first; the instruction and the hint last.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from typing import Any, Literal
+
+from pydantic import BaseModel, ConfigDict, Field, create_model
+
+from apbot.llm.client import LLMClient
+from apbot.llm.structured import ask
+from apbot.llm.usage import Usage
+from apbot.model.domain import all_values
+from apbot.model.goal import Goal, GoalError, parse_goal
+from apbot.model.schema import ApplianceModel
+
+MAX_ENUM = 80  # more values than this: free text, checked after the answer
+
+SYSTEM = (
+    "You turn what a user asks of a home appliance into the settings it must end in. "
+    "Set only what the request asks for, explicitly or by clear implication (asking to start, "
+    "cook, heat or run it now sets the start/running setting; 'don't start yet' sets it off). "
+    "Every other setting is null. Use only the allowed values, spelled as listed."
+)
+
+EXAMPLE = """Example (another appliance, a fan heater):
+settings:
+- power: "off" | "on"
+- mode: "eco" | "comfort" | "boost"
+- temperature (°C): "10" | "11" | … | "30"
+- timer (h): "0" | "1" | … | "8"
+- oscillation: "off" | "on"
+- running: "off" | "on"
+request: Warm the room to 22 degrees on eco for two hours and get it going.
+answer: {"power": null, "mode": "eco", "temperature": "22", "timer": "2", "oscillation": null, \
+"running": "on"}"""
+
+
+@dataclass
+class LLMGoal:
+    """A goal read by the LLM (canonical values), what it cost, and the hint it was given."""
+
+    goal: Goal
+    usage: Usage
+    attempts: int
+    hint: str
+
+
+def _text(value: Any) -> str:
+    return str(value)
+
+
+def _values(var: Any) -> list[Any]:
+    """The variable's values (every case's, for a dependent one), in order."""
+    values = all_values(var)
+    if var.type != "discrete" and all(isinstance(v, int | float) for v in values):
+        return sorted(values)
+    if var.type == "time":
+        return sorted(values, key=str)
+    return values
+
+
+def _shown(var: Any) -> str:
+    values = _values(var)
+    if len(values) > MAX_ENUM:
+        return f'text, from "{_text(values[0])}" to "{_text(values[-1])}"'
+    if len(values) > 12 and var.type != "discrete":
+        head = " | ".join(f'"{_text(v)}"' for v in values[:3])
+        return f'{head} | … | "{_text(values[-1])}"'
+    return " | ".join(f'"{_text(v)}"' for v in values)
+
+
+def describe_settings(model: ApplianceModel) -> list[str]:
+    """One line per variable: its name, label, unit and allowed values (or their range)."""
+    lines = []
+    for name, var in model.variables.items():
+        label = f" [{var.label}]" if var.label and var.label.lower() != name else ""
+        unit = getattr(var, "unit", "")
+        unit_text = f" ({unit})" if unit else ""
+        if var.type == "time":
+            unit_text = f" (time {var.format})"
+        extra = f" (depends on {var.depends_on})" if var.depends_on else ""
+        lines.append(f"- {name}{label}{unit_text}{extra}: {_shown(var)}")
+    return lines
+
+
+def goal_schema(model: ApplianceModel) -> type[BaseModel]:
+    """A pydantic model with one optional property per variable (its values as an enum)."""
+    fields: dict[str, Any] = {}
+    for index, (name, var) in enumerate(model.variables.items()):
+        values = _values(var)
+        kind: Any = str
+        if len(values) <= MAX_ENUM:
+            kind = Literal[tuple(dict.fromkeys(_text(v) for v in values))]
+        fields[f"v{index}"] = (kind | None, Field(default=None, alias=name))
+    return create_model(
+        "Goal",
+        __config__=ConfigDict(populate_by_name=False, extra="forbid"),
+        **fields,
+    )
+
+
+def _answer_goal(answer: BaseModel) -> dict[str, Any]:
+    return {k: v for k, v in answer.model_dump(by_alias=True).items() if v is not None}
+
+
+def _check(model: ApplianceModel) -> Any:
+    def check(answer: BaseModel) -> list[str]:
+        goal = _answer_goal(answer)
+        if not goal:
+            return ["no setting is set: the request asks for at least one"]
+        try:
+            parse_goal(model, goal)
+        except GoalError as exc:
+            return [f"{p.where}: {p.message}" for p in exc.problems]
+        return []
+
+    return check
+
+
+def offline_hint(model: ApplianceModel, instruction: str) -> str:
+    """The offline parser's reading, as a line of the prompt (it may be wrong)."""
+    from apbot.read.goal import GoalParseError, parse_instruction
+
+    try:
+        parsed = parse_instruction(model, instruction)
+    except GoalParseError as exc:
+        return f"A rule-based parser could not read it ({exc}); it may be wrong."
+    except Exception:  # a parser bug must not stop the LLM path
+        return ""
+    text = json.dumps({k: _text(v) for k, v in parsed.items()}, ensure_ascii=False)
+    return f"A rule-based parser read (it may be wrong or miss things): {text}"
+
+
+def goal_messages(model: ApplianceModel, instruction: str, hint: str) -> list[dict[str, Any]]:
+    settings = "\n".join(describe_settings(model))
+    user = (
+        f"{EXAMPLE}\n\nThis appliance:\nsettings:\n{settings}\n"
+        f"request: {instruction.strip()}\n"
+        + (f"{hint}\n" if hint else "")
+        + "Give every setting of this appliance, null where the request does not ask for it."
+    )
+    return [{"role": "system", "content": SYSTEM}, {"role": "user", "content": user}]
+
+
+def llm_parse_instruction(
+    model: ApplianceModel,
+    instruction: str,
+    client: LLMClient,
+    *,
+    use_hint: bool = True,
+    repeat: int | None = None,
+) -> LLMGoal:
+    """Read ``instruction`` into a goal over ``model``; raises ``StructuredError`` when no
+    valid answer comes within the allowed attempts."""
+    hint = offline_hint(model, instruction) if use_hint else ""
+    answer = ask(
+        client,
+        goal_messages(model, instruction, hint),
+        goal_schema(model),
+        check=_check(model),
+        max_tokens=40 + 24 * len(model.variables),
+        repeat=repeat,
+    )
+    goal = parse_goal(model, _answer_goal(answer.value))
+    return LLMGoal(goal, answer.usage, answer.attempts, hint)

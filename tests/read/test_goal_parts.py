@@ -1,0 +1,96 @@
+"""The goal parser's newer rules: twins, coded values named by the manual, on/off timers, the
+start convention, and what is not a start."""
+
+from __future__ import annotations
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from apbot.bench.runner import cached_suite
+from apbot.read.goal import parse_instruction
+from apbot.read.goal_manual import coded_names
+from apbot.read.goal_twins import find_twins
+from apbot.read.goal_vocab import split_camel
+
+
+def _goal(appliance_id: str, text: str) -> dict[str, object]:
+    appliance = cached_suite("bundled").get(appliance_id)
+    return parse_instruction(appliance.model, text, appliance.manual)
+
+
+def test_twin_settings_take_the_value_of_the_zone_named() -> None:
+    groups = find_twins(cached_suite("bundled").get("induction_cooker_5").model)
+    assert {g.names for g in groups} == {
+        ("front_level", "rear_level"),
+        ("front_timer", "rear_timer"),
+    }
+    assert _goal(
+        "slow_cooker_2", "Both sides at 900 watts, and the left side should turn off after an hour."
+    ) == {"left_power": 900, "right_power": 900, "left_timer": "01:00:00"}
+    goal = _goal("air_fryer_4", "Zone 1 at 160 degrees for a quarter of an hour, zone 2 at 190")
+    assert goal["temp1"] == 160 and goal["time1"] == "00:15:00" and goal["temp2"] == 190
+
+
+def test_coded_values_are_named_by_the_manual_table() -> None:
+    appliance = cached_suite("bundled").get("dehumidifier_3")
+    assert ("humidistat", "2", "60 %") in coded_names(appliance.model, appliance.manual)
+    assert _goal("dehumidifier_3", "Keep the room at about 60% humidity") == {"humidistat": "2"}
+    assert _goal("bread_maker_1", "A whole wheat loaf, 1 kg")["menu"] == "3"
+    # without the manual the code cannot be known, and the parser says nothing of it
+    model = cached_suite("bundled").get("bread_maker_1").model
+    assert "menu" not in parse_instruction(model, "A sandwich loaf, 1 kg")
+
+
+@pytest.mark.parametrize(
+    ("text", "timer"),
+    [
+        ("Cool to 22 degrees and switch off after 2 hours", "timer_off"),
+        ("An off-timer of 3 hours, please", "timer_off"),
+        ("Have it come on in 7.5 hours", "timer_on"),
+    ],
+)
+def test_on_and_off_timers_are_told_apart(text: str, timer: str) -> None:
+    assert timer in _goal("air_conditioner_1", text)
+
+
+def test_starts_said_of_others_or_later_are_not_requests() -> None:
+    assert _goal(
+        "coffee_machine_2", "Choose a lungo and lock the keys so the kids can't start it"
+    ) == {
+        "drink": "lungo",
+        "key_lock": "on",
+    }
+    assert "running" not in _goal("blender_2", "Set speed 4; I'll start it myself.")
+    assert _goal("blender_1", "Blend the sauce at speed 5.") == {"speed": 5, "running": "on"}
+
+
+def test_a_power_only_appliance_is_switched_on_by_start() -> None:
+    assert _goal("air_conditioner_2", "Cool at 24 degrees and start it.")["power"] == "on"
+    assert "power" not in _goal(
+        "dehumidifier_4", "Have the dehumidifier start by itself in six hours."
+    )
+
+
+def test_run_together_names_and_short_forms() -> None:
+    assert split_camel("ExtraDry") == "Extra Dry"
+    goal = _goal("dishwasher_2", "Eco 50 with varioSpeed and ExtraDry")
+    assert goal["vario_speed"] == "on" and goal["extra_dry"] == "on"
+    assert _goal("dishwasher_3", "Eco with tablets")["tabs"] == "on"
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    st.text(alphabet=st.sampled_from(list("| -*:1234PA\nabc LIGHTonf.%")), max_size=300),
+    st.text(max_size=80),
+)
+def test_any_manual_and_sentence_give_a_goal_or_a_clear_error(manual: str, text: str) -> None:
+    from apbot.read.goal import GoalParseError
+
+    model = cached_suite("bundled").get("bread_maker_1").model
+    try:
+        goal = parse_instruction(model, text, manual)
+    except GoalParseError as exc:
+        assert exc.words is not None and exc.reason
+    else:
+        assert set(goal) <= set(model.variables)
