@@ -1,7 +1,7 @@
 """The package's layers: nothing lower imports anything higher, checked on the source (ast).
 
-llm < model < sim < plan < read < agent < bench < cli (``envs`` beside the cli, ``examples``
-with the model).
+llm < model < sim < plan < read < agent < vision < bench < cli (``envs`` beside the cli,
+``examples`` with the model).
 ``apbot.testing`` (the random model generator, brute-force BFS) may use model, sim and plan,
 and no product module may import it: test tooling never decides a result. Every import counts,
 also one inside a function, since a lazy import is a dependency all the same.
@@ -13,7 +13,7 @@ import ast
 from pathlib import Path
 
 PACKAGE = Path(__file__).resolve().parents[1] / "src" / "apbot"
-ORDER = ("llm", "model", "sim", "plan", "read", "agent", "bench", "cli")
+ORDER = ("llm", "model", "sim", "plan", "read", "agent", "vision", "bench", "cli")
 SAME_AS = {"examples": "model", "envs": "cli", "cli": "cli", "operate": "agent", "cli_llm": "cli"}
 TESTING_MAY_USE = {"model", "sim", "plan", "testing"}
 

@@ -58,8 +58,10 @@ class Environment(Protocol):
         ...
 
 
-FeedbackMode = Literal["display", "values"]
-FEEDBACK_MODES: tuple[FeedbackMode, ...] = ("display", "values")
+FeedbackMode = Literal["display", "values", "image"]
+FEEDBACK_MODES: tuple[FeedbackMode, ...] = ("display", "values", "image")
+"""``image`` is served by ``apbot.vision.environment.ImageEnvironment`` (a panel photo per
+action), not by :class:`SimulatorEnvironment`."""
 
 
 class SimulatorEnvironment:
@@ -77,6 +79,10 @@ class SimulatorEnvironment:
         if feedback not in FEEDBACK_MODES:
             raise ValueError(
                 f"unknown feedback mode {feedback!r}; choose one of {', '.join(FEEDBACK_MODES)}"
+            )
+        if feedback == "image":
+            raise ValueError(
+                "image feedback needs a panel: use apbot.vision.environment.ImageEnvironment"
             )
         self.simulator = model if isinstance(model, Simulator) else Simulator(compiled_model(model))
         self.feedback = feedback

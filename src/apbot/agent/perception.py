@@ -95,6 +95,9 @@ class Perceiver:
         """Read ``feedback``; ``context`` holds the predicted values, ``expected_screen`` the
         predicted screen as (kind, variable), e.g. ``("focus", "timer")`` or ``("idle", None)``.
         """
+        alternatives = getattr(feedback.image, "alternatives", None)
+        if alternatives and not feedback.values:
+            return self._best_alternative(alternatives, context, expected_screen)
         seen = choose(self.reader.read(feedback.text, context), context, expected_screen)
         if not feedback.values:
             return seen
@@ -112,6 +115,34 @@ class Perceiver:
         seen.values.update(estimate.values)
         seen.outside.update(estimate.outside)
         return seen
+
+    def _best_alternative(
+        self,
+        alternatives: list[tuple[str, float]],
+        context: Mapping[str, Any],
+        expected: tuple[str, str | None] | None,
+    ) -> Seen:
+        """Image mode: of the texts a photo's display may show (with their visual cost), the
+        cheapest one the belief can read; among equally cheap ones (look-alikes such as
+        ``5``/``S``), the one closest to the prediction. Unreadable if none can be read."""
+        readable = []
+        for text, cost in alternatives:
+            reading = self.reader.read(text, context)
+            if not reading.unknown:
+                readable.append((float(cost), choose(reading, context, expected)))
+        if not readable:
+            text = alternatives[0][0]
+            return choose(self.reader.read(text, context), context, expected)
+        cheapest = min(cost for cost, _ in readable)
+
+        def closeness(seen: Seen) -> tuple[int, int]:
+            kind, variable = expected or (None, None)
+            on_screen = seen.screen_kind == kind and (kind != "focus" or seen.screen == variable)
+            differing = sum(1 for name, value in seen.values.items() if context.get(name) != value)
+            return (0 if on_screen else 1, differing + len(seen.outside))
+
+        tied = [seen for cost, seen in readable if cost <= cheapest + 0.05]
+        return min(tied, key=closeness)
 
 
 def choose(
@@ -151,7 +182,7 @@ def choose(
                 seen.values[name] = value
             continue
         allowed = {v for v in options if is_read(v)} | {v for s in lamp_sets for v in s}
-        if context.get(name) in allowed:
+        if name in context and context[name] in allowed:
             seen.values[name] = context[name]  # the belief's value is one of them: keep it
         elif allowed:
             seen.candidates[name] = frozenset(allowed)

@@ -15,7 +15,7 @@ from __future__ import annotations
 import os
 import time
 from collections import deque
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from concurrent.futures import FIRST_COMPLETED, Future, wait
 from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
@@ -252,7 +252,11 @@ def run_task_learning(
     started = time.perf_counter()
     spec = parse_belief(belief)
     chosen = get_method(method)
-    env = SimulatorEnvironment(appliance.model, feedback)
+    env: Any = (
+        image_environment(appliance, appliance.model.actions, seed)
+        if feedback == "image"
+        else SimulatorEnvironment(appliance.model, feedback)
+    )
     episode, error = Episode(), ""
     faults: tuple[str, ...] | list[str] = ()
     context: TaskContext | None = None
@@ -284,6 +288,8 @@ def run_task_learning(
     except Exception as exc:
         error = f"error: building the belief: {_describe(exc)}"
     else:
+        if feedback == "image" and list(model.actions) != list(appliance.model.actions):
+            env = image_environment(appliance, model.actions, seed)  # ground the belief's names
         if asked.goal is None:
             episode = Episode(failure=asked.error)
         else:
@@ -349,6 +355,14 @@ def run_task_learning(
         learnt_from=index if learnt is not None else 0,
     )
     return record, episode.belief
+
+
+def image_environment(appliance: SuiteAppliance, actions: Iterable[str], seed: int) -> Any:
+    """Image mode: the appliance as a rendered panel, grounded once per appliance and process
+    (``apbot.vision``; needs the ``vision`` extra)."""
+    from apbot.vision.mode import image_environment as build
+
+    return build(appliance, list(actions), seed)
 
 
 def _failure(

@@ -1,0 +1,534 @@
+"""Grounding: each symbolic action name → one box on the panel photo and a skill.
+
+Inputs are what a robot has: the photo and the belief's action names (the manual is not
+needed by the rules here). Never the layout's true boxes — those only score the result.
+
+1. Detect text lines and control candidates (:mod:`apbot.vision.detect`); drop what lies in
+   the display window (its characters are not labels).
+2. Make *labels*: the text lines inside one control shape joined in reading order (``+30`` /
+   ``SEC``), free-standing text, and the symbols of controls printed without words
+   (:mod:`apbot.vision.icons`, plus recognition of single characters such as ``P``).
+3. Parse each action name into a skill and the words naming its control(s)
+   (``hold_up_down`` → hold, two controls ``up`` and ``down``).
+4. Score every (action words, label) pair (fuzzy words, synonyms, symbols), then assign
+   greedily, best first, one label per control: actions naming the same words share it
+   (``press_lock`` and ``hold_lock``), different words never do.
+5. From a label to the thing to touch: the control shape it is printed on, else the shape
+   just above it (a label printed under an icon), the dial it names for a turn, else the
+   label itself (a printed soft-touch pad).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from apbot.vision.cv import cv2
+from apbot.vision.detect import BoxT, Candidate, Detection, detect
+from apbot.vision.icons import classify, classify_ink
+from apbot.vision.locate import Window, find_window
+from apbot.vision.ocr import read_crop
+from apbot.vision.vocabulary import label_symbols, label_tokens, name_parts, words_score
+
+MIN_SCORE = 0.6
+"""A label must match an action's words at least this well to ground it."""
+
+
+@dataclass
+class Label:
+    """Printed text or a symbol, and the control it is printed on (when one was found)."""
+
+    text: str
+    box: BoxT
+    control: BoxT | None = None
+    symbols: list[str] = field(default_factory=list)
+    tick: bool = False
+
+    @property
+    def tokens(self) -> list[str]:
+        return label_tokens(self.text)
+
+
+@dataclass
+class Grounded:
+    """Where to act for one action: box(es) in photo pixels, the point(s), and the skill."""
+
+    action: str
+    skill: str
+    boxes: list[BoxT]
+    label: str
+    score: float
+
+    @property
+    def points(self) -> list[tuple[float, float]]:
+        return [((b[0] + b[2]) / 2, (b[1] + b[3]) / 2) for b in self.boxes]
+
+
+@dataclass
+class Grounding:
+    """The grounding of a whole panel: grounded actions, the ones that could not be, why."""
+
+    actions: dict[str, Grounded]
+    ungrounded: dict[str, str]
+    labels: list[Label]
+    window: Window | None
+    size: tuple[int, int]
+    seconds: float = 0.0
+
+
+def _inside(point: tuple[float, float], box: BoxT, pad: float = 0.0) -> bool:
+    return box[0] - pad <= point[0] <= box[2] + pad and box[1] - pad <= point[1] <= box[3] + pad
+
+
+def _overlap(a: BoxT, b: BoxT) -> float:
+    """Area shared by two boxes."""
+    return max(0.0, min(a[2], b[2]) - max(a[0], b[0])) * max(0.0, min(a[3], b[3]) - max(a[1], b[1]))
+
+
+def _area(box: BoxT) -> float:
+    return max(0.0, box[2] - box[0]) * max(0.0, box[3] - box[1])
+
+
+def _centre(box: BoxT) -> tuple[float, float]:
+    return ((box[0] + box[2]) / 2, (box[1] + box[3]) / 2)
+
+
+def _union(boxes: Iterable[BoxT]) -> BoxT:
+    boxes = list(boxes)
+    return (min(b[0] for b in boxes), min(b[1] for b in boxes), max(b[2] for b in boxes),
+            max(b[3] for b in boxes))  # fmt: skip
+
+
+# --- labels -------------------------------------------------------------------------------------
+
+
+def _controls(detection: Detection, window: Window | None) -> list[Candidate]:
+    """Shape and circle candidates that can be controls (not the display, not the panel)."""
+    w, h = detection.size
+    found = []
+    for c in detection.candidates:
+        if c.kind == "text":
+            continue
+        if window is not None and _inside(c.centre, window.box, 4):
+            continue
+        if _area(c.box) > 0.12 * w * h:
+            continue
+        found.append(c)
+    return found
+
+
+def make_labels(image: np.ndarray, detection: Detection, window: Window | None) -> list[Label]:
+    """Labels from text lines (grouped per control) and from symbol-only controls."""
+    texts = [t for t in detection.texts if window is None or not _inside(t.centre, window.box, 4)]
+    line = float(np.median([t.box[3] - t.box[1] for t in texts])) if texts else 12.0
+    shapes = sorted(
+        (
+            c
+            for c in _controls(detection, window)
+            if c.kind == "shape" and min(c.box[2] - c.box[0], c.box[3] - c.box[1]) >= 1.2 * line
+        ),
+        key=lambda c: _area(c.box),
+    )
+    used: set[int] = set()
+    labels: list[Label] = []
+    for shape in shapes:
+        inside = [
+            i
+            for i, t in enumerate(texts)
+            if i not in used and _inside(t.centre, shape.box) and _area(t.box) < _area(shape.box)
+        ]
+        if not inside:
+            continue
+        if _area(shape.box) > 40 * sum(_area(texts[i].box) for i in inside):
+            continue  # a big frame around several labels, not one control
+        used.update(inside)
+        ordered = sorted(inside, key=lambda i: (round(texts[i].box[1] / 8), texts[i].box[0]))
+        text = " ".join(texts[i].text for i in ordered)
+        labels.append(Label(text, _union(texts[i].box for i in ordered), shape.box))
+    for i, t in enumerate(texts):
+        if i not in used:
+            labels.append(Label(t.text, t.box))
+    _shape_symbols(image, shapes, labels)
+    _symbol_labels(image, shapes, labels, line, window)
+    labels = _join_line_symbols(labels)
+    _mark_ticks(detection, labels)
+    for label in labels:
+        label.symbols += [s for s in _edge_symbols(image, label) if s not in label.symbols]
+    return labels
+
+
+def _wordy(label: Label) -> bool:
+    """Whether a label has a word in it (not a lone character OCR made of a symbol)."""
+    return any(len(t) >= 2 and t.isalpha() for t in label.tokens)
+
+
+def _join_line_symbols(labels: list[Label]) -> list[Label]:
+    """A symbol found on its own just beside a word on the same line (``TIME −`` when OCR
+    kept only ``TIME``) belongs to that word's label, not to a control of its own."""
+    words = [lb for lb in labels if _wordy(lb)]
+    kept = []
+    for label in labels:
+        if label.tokens or not label.symbols or label in words:
+            kept.append(label)
+            continue
+        cy = _centre(label.box)[1]
+        host, host_gap = None, 0.0
+        for word in words:
+            x0, y0, x1, y1 = word.box
+            gap = max(x0 - label.box[2], label.box[0] - x1)
+            same_control = label.control is None or label.control == word.control
+            near = y0 <= cy <= y1 and gap < 1.0 * (y1 - y0) and same_control
+            if near and (host is None or gap < host_gap):
+                host, host_gap = word, gap
+        if host is None:
+            kept.append(label)
+        else:
+            host.symbols += [s for s in label.symbols if s not in host.symbols]
+            host.box = _union([host.box, label.box])
+    return kept
+
+
+def _shape_symbols(image: np.ndarray, shapes: list[Candidate], labels: list[Label]) -> None:
+    """Buttons with no text on them: the symbol printed inside (⏻ on a round key)."""
+    taken = [label.box for label in labels]
+    seen: list[BoxT] = []
+    for shape in shapes:
+        if any(_overlap(shape.box, t) > 0 for t in taken) or any(
+            _inside(_centre(shape.box), s) for s in seen
+        ):
+            continue
+        x0, y0, x1, y1 = shape.box
+        mx, my = 0.18 * (x1 - x0), 0.18 * (y1 - y0)
+        crop = image[int(y0 + my) : int(y1 - my), int(x0 + mx) : int(x1 - mx)]
+        if crop.size == 0:
+            continue
+        symbol, _ = classify(crop, minimum=0.6)
+        if symbol:
+            seen.append(shape.box)
+            labels.append(Label(symbol, shape.box, shape.box, [symbol]))
+
+
+def _symbol_labels(image: np.ndarray, shapes: list[Candidate], labels: list[Label],
+                   line: float, window: Window | None) -> None:  # fmt: skip
+    """Symbols printed without words (⏻, +, 🔒 …): ink blobs of about a label's size that no
+    text line covers, each classified against the symbol templates; a blob on a control shape
+    gets that shape as its control."""
+    gray = cv2.cvtColor(image, cv2.COLOR_RGB2GRAY)
+    size = int(max(15, 4 * line)) | 1
+    background = cv2.medianBlur(gray, min(size, 255) if size < 255 else 255)
+    ink = (cv2.absdiff(gray, background) > 45).astype(np.uint8)
+    raw = ink.copy()
+    join = max(3, int(0.35 * line)) | 1
+    ink = cv2.morphologyEx(ink, cv2.MORPH_CLOSE, np.ones((join, join), np.uint8))
+    count, _, stats, _ = cv2.connectedComponentsWithStats(ink, 8)
+    printed = [label.box for label in labels]
+    budget = 25
+    for i in range(1, count):
+        x, y, w, h, _ = (int(v) for v in stats[i])
+        box = (float(x), float(y), float(x + w), float(y + h))
+        if not (0.6 * line <= max(w, h) <= 5 * line) or max(w, h) > 10 * max(1, min(w, h)):
+            continue
+        if w < h and max(w, h) > 4 * max(1, min(w, h)):
+            continue  # a tall thin line is an edge, not a symbol
+        if window is not None and _inside(_centre(box), window.box, 4):
+            continue
+        if any(_overlap(box, p) > 0.2 * _area(box) for p in printed):
+            continue
+        symbol, _ = classify_ink(raw[y : y + h, x : x + w] > 0)
+        text = ""
+        if not symbol and budget > 0 and max(w, h) >= line:
+            budget -= 1
+            text, confidence = read_crop(
+                image[max(0, y - 6) : y + h + 6, max(0, x - 6) : x + w + 6]
+            )
+            if confidence < 0.85 or len(text) > 2:
+                text = ""
+        if not (symbol or text):
+            continue
+        owner = [
+            s.box for s in shapes if _inside(_centre(box), s.box) and _area(s.box) < 30 * _area(box)
+        ]
+        control = min(owner, key=_area) if owner else None
+        labels.append(Label(text or symbol, box, control, [symbol] if symbol else []))
+
+
+def _edge_symbols(image: np.ndarray, label: Label) -> list[str]:
+    """Arrows and signs printed with a word on one key (``TEMP ▲``, ``◀ PROG``, ``⏻ START``,
+    ``↕ SWING``), inside the label's box or just beside it on its line (OCR often boxes the
+    word only). Ink blobs whose columns overlap are one glyph (⏻ is an arc and a bar); a
+    glyph about a capital's height is checked against those symbols' templates (letters fit
+    badly), and a triangle must be solid."""
+    x0, y0, x1, y1 = label.box
+    height = y1 - y0
+    if label.control is not None:  # a key: anywhere on it (⏻ above START/STOP)
+        cx0, cy0, cx1, cy1 = label.control
+        mx, my = 0.06 * (cx1 - cx0), 0.06 * (cy1 - cy0)
+        ex0, ey0, ex1, ey1 = cx0 + mx, cy0 + my, cx1 - mx, cy1 - my
+    elif _wordy(label):  # beside the word on its line
+        ex0, ex1 = x0 - 1.3 * height, x1 + 1.3 * height
+        ey0, ey1 = y0 - 0.15 * height, y1 + 0.15 * height
+    else:
+        ex0, ey0, ex1, ey1 = label.box
+    ix0, iy0 = max(0, int(min(ex0, x0))), max(0, int(min(ey0, y0)))
+    crop = image[iy0 : int(max(ey1, y1)) + 1, ix0 : int(max(ex1, x1)) + 1]
+    if crop.size == 0 or min(crop.shape[:2]) < 8:
+        return []
+    from apbot.vision.icons import ink_of
+
+    ink = ink_of(crop).astype(np.uint8)
+    count, parts, stats, _ = cv2.connectedComponentsWithStats(ink, 8)
+    sizes = [int(stats[i][3]) for i in range(1, count) if stats[i][4] >= 12]
+    if not sizes:
+        return []
+    height = float(np.median(sizes))  # a letter's height
+    blobs = [
+        i
+        for i in range(1, count)
+        if stats[i][4] >= 12 and stats[i][3] < 2.5 * height and stats[i][2] < 2.5 * height
+    ]
+    group = {i: i for i in blobs}
+
+    def root(i: int) -> int:
+        while group[i] != i:
+            i = group[i]
+        return i
+
+    for n, i in enumerate(blobs):  # columns overlap and rows touch: one glyph
+        xi, yi, wi, hi, _ = (int(v) for v in stats[i])
+        for j in blobs[n + 1 :]:
+            xj, yj, wj, hj, _ = (int(v) for v in stats[j])
+            gap_y = max(yi - (yj + hj), yj - (yi + hi))
+            if min(xi + wi, xj + wj) > max(xi, xj) and gap_y < 0.4 * height:
+                group[root(j)] = root(i)
+    members: dict[int, list[int]] = {}
+    for i in blobs:
+        members.setdefault(root(i), []).append(i)
+    glyphs = list(members.values())
+    found = []
+    for glyph in glyphs:
+        gx0 = min(int(stats[i][0]) for i in glyph)
+        gx1 = max(int(stats[i][0] + stats[i][2]) for i in glyph)
+        gy0 = min(int(stats[i][1]) for i in glyph)
+        gy1 = max(int(stats[i][1] + stats[i][3]) for i in glyph)
+        w, h = gx1 - gx0, gy1 - gy0
+        if h < 0.6 * height and w < 0.6 * height:
+            continue
+        mask = np.isin(parts[gy0:gy1, gx0:gx1], glyph)
+        symbol, _ = classify_ink(mask, minimum=0.85, among=EDGE_SYMBOLS + STROKE_SYMBOLS)
+        if not symbol:
+            continue
+        if symbol in EDGE_SYMBOLS and not 0.42 <= mask.sum() / float(w * h) <= 0.7:
+            continue  # the arrows are solid triangles; letters are strokes
+        if symbol not in found:
+            found.append(symbol)
+    return found
+
+
+EDGE_SYMBOLS = "▲▼◀▶◄►"
+"""Solid arrows printed beside a word on a key (``TEMP ▲``, ``◀ PROG``)."""
+STROKE_SYMBOLS = "⏻↕↔"
+"""Line-drawn symbols printed beside a word (``⏻ START/STOP``, ``↕ SWING``)."""
+
+
+def _spans(flags: list[bool]) -> list[tuple[int, int]]:
+    """(start, end) of each run of True."""
+    spans, start = [], None
+    for i, flag in enumerate([*flags, False]):
+        if flag and start is None:
+            start = i
+        elif not flag and start is not None:
+            spans.append((start, i))
+            start = None
+    return spans
+
+
+def _mark_ticks(detection: Detection, labels: list[Label]) -> None:
+    """Small text around a dial (not under it, not on a control of its own) is a tick label,
+    not a control's name."""
+    heights = [lb.box[3] - lb.box[1] for lb in labels if lb.control is None or lb.text]
+    typical = float(np.median(heights)) if heights else 0.0
+    for circle in (c for c in detection.candidates if c.kind == "circle"):
+        cx, cy = circle.centre
+        r = (circle.box[2] - circle.box[0]) / 2
+        for label in labels:
+            if label.control is not None and _area(label.control) < 4 * _area(label.box):
+                continue
+            lx, ly = _centre(label.box)
+            d = float(np.hypot(lx - cx, ly - cy))
+            small = (label.box[3] - label.box[1]) < 0.85 * typical
+            if small and r * 0.9 < d < r * 1.9 and ly < cy + 1.1 * r:
+                label.tick = True
+
+
+# --- matching and assignment --------------------------------------------------------------------
+
+
+@dataclass
+class _Wanted:
+    key: tuple[str, ...]  # the words naming one control
+    actions: list[str]
+    turn: bool
+
+
+def _groups(actions: Sequence[str]) -> tuple[dict[str, tuple[str, list[list[str]]]], list[str]]:
+    """Each action's skill and control word lists (two lists for a two-control hold)."""
+    parsed: dict[str, tuple[str, list[list[str]]]] = {}
+    waits = []
+    for action in actions:
+        skill, words = name_parts(action)
+        if skill == "wait":
+            waits.append(action)
+            continue
+        parts = [words]
+        if "and" in words:
+            i = words.index("and")
+            parts = [words[:i], words[i + 1 :]]
+        parsed[action] = (skill, [p for p in parts if p] or [words])
+    return parsed, waits
+
+
+def _score(words: list[str], label: Label, turn: bool) -> float:
+    tokens = [t for t in label.tokens if t != "+" or label.text.strip() == "+"]
+    score = words_score(words, tokens, label.symbols + label_symbols(label.text))
+    if label.tick:
+        score -= 0.3
+    if turn and label.control is None:
+        score -= 0.05
+    return score
+
+
+def ground(image: np.ndarray | None, actions: Sequence[str]) -> Grounding:
+    """Ground every action name on a panel photo (RGB array). Never raises on a bad photo:
+    an empty or unreadable one grounds nothing, and says so."""
+    import time
+
+    started = time.perf_counter()
+    if image is None or not isinstance(image, np.ndarray) or image.ndim != 3 or image.size == 0:
+        reason = "no usable panel photo"
+        return Grounding({}, {a: reason for a in actions}, [], None, (0, 0))
+    detection = detect(image)
+    window = find_window(image)
+    labels = make_labels(image, detection, window)
+    parsed, waits = _groups(actions)
+    # two-control holds whose words were not split by "and": try every split
+    for action, (skill, parts) in list(parsed.items()):
+        if skill == "hold" and len(parts) == 1 and len(parts[0]) >= 2:
+            words = parts[0]
+            whole = max((_score(words, lb, False) for lb in labels), default=0.0)
+            best_split, best = None, whole + 0.05
+            for i in range(1, len(words)):
+                a = max((_score(words[:i], lb, False) for lb in labels), default=0.0)
+                b = max((_score(words[i:], lb, False) for lb in labels), default=0.0)
+                if min(a, b) > best:
+                    best_split, best = [words[:i], words[i:]], min(a, b)
+            if best_split is not None:
+                parsed[action] = (skill, best_split)
+    keys: dict[tuple[str, ...], bool] = {}
+    for skill, parts in parsed.values():
+        for part in parts:
+            keys[tuple(part)] = keys.get(tuple(part), False) or skill.startswith("turn")
+    pairs = []
+    for key, turn in keys.items():
+        for index, label in enumerate(labels):
+            score = _score(list(key), label, turn)
+            if score >= MIN_SCORE:
+                pairs.append((score, key, index))
+    pairs.sort(key=lambda p: (-p[0], p[1]))
+    chosen: dict[tuple[str, ...], tuple[int, float]] = {}
+    taken: set[int] = set()
+    for score, key, index in pairs:
+        if key in chosen or index in taken:
+            continue
+        chosen[key] = (index, score)
+        taken.add(index)
+    result: dict[str, Grounded] = {}
+    missing: dict[str, str] = {a: "a wait touches no control" for a in waits}
+    dial = _only_dial(detection, window)
+    turned = {tuple(p[0]) for k, p in parsed.values() if k.startswith("turn") and p != [[]]}
+    lone_turn = next(iter(turned)) if len(turned) == 1 and not any(
+        k.startswith("turn") and p == [[]] for k, p in parsed.values()
+    ) else None  # fmt: skip
+    for action, (skill, parts) in parsed.items():
+        if parts == [[]]:  # "turn_cw", "press_knob": the panel's dial, if it has one
+            if dial is None:
+                missing[action] = "the name names no control and the panel shows no one dial"
+            else:
+                result[action] = Grounded(action, skill, [dial], "(the dial)", 0.7)
+            continue
+        boxes, names, scores = [], [], []
+        for part in parts:
+            hit = chosen.get(tuple(part))
+            if hit is None:
+                break
+            label = labels[hit[0]]
+            boxes.append(_target(label, detection, window, skill.startswith("turn")))
+            names.append(label.text)
+            scores.append(hit[1])
+        if len(boxes) != len(parts):
+            wanted = " / ".join(" ".join(p) for p in parts)
+            if skill.startswith("turn") and dial is not None and lone_turn == tuple(parts[0]):
+                result[action] = Grounded(action, skill, [dial], "(the dial)", 0.65)
+                continue  # the one dial is the only thing to turn (its name not printed)
+            missing[action] = f"no label on the panel matches {wanted!r}"
+            continue
+        result[action] = Grounded(action, skill, boxes, " + ".join(names), min(scores))
+    return Grounding(result, missing, labels, window, detection.size,
+                     time.perf_counter() - started)  # fmt: skip
+
+
+def _target(label: Label, detection: Detection, window: Window | None, turn: bool) -> BoxT:
+    """The box to touch for a label: its control, a dial it names, the shape above it."""
+    shapes = _controls(detection, window)
+    lx, ly = _centre(label.box)
+    height = label.box[3] - label.box[1]
+    if turn:
+        circles = [c for c in shapes if c.kind == "circle" or _round(c)]
+        near = [c for c in circles if abs(c.centre[0] - lx) < (c.box[2] - c.box[0])
+                and c.centre[1] <= ly + height]  # fmt: skip
+        if near:
+            return min(near, key=lambda c: np.hypot(c.centre[0] - lx, c.centre[1] - ly)).box
+    if label.control is not None:
+        return label.control
+    if not any(ch.isalnum() for ch in label.text):
+        return label.box  # a printed symbol is itself the place to touch
+    above = [
+        c
+        for c in shapes
+        if abs(c.centre[0] - lx) < 0.6 * max(c.box[2] - c.box[0], label.box[2] - label.box[0])
+        and 0 < ly - c.centre[1] < 4 * height + (c.box[3] - c.box[1])
+        and not any(_inside(c.centre, lb) for lb in [label.box])
+        and _area(c.box) < 30 * _area(label.box)
+    ]
+    if above:
+        nearest = min(above, key=lambda c: ly - c.centre[1])
+        return _union([nearest.box, label.box])
+    return label.box
+
+
+def _only_dial(detection: Detection, window: Window | None) -> BoxT | None:
+    """The panel's dial when one circle stands out (the largest, clearly larger than any other)."""
+    circles = sorted(
+        (c for c in _controls(detection, window) if c.kind == "circle"),
+        key=lambda c: -(c.box[2] - c.box[0]),
+    )
+    if not circles:
+        return None
+    if (
+        len(circles) > 1
+        and (circles[1].box[2] - circles[1].box[0]) > 0.8 * (circles[0].box[2] - circles[0].box[0])
+        and not _inside(circles[1].centre, circles[0].box)
+    ):
+        return None
+    return circles[0].box
+
+
+def _round(candidate: Candidate) -> bool:
+    w, h = candidate.box[2] - candidate.box[0], candidate.box[3] - candidate.box[1]
+    return 0.8 < w / max(1.0, h) < 1.25
+
+
+def ground_photo(image: np.ndarray, actions: Iterable[str]) -> Grounding:
+    """:func:`ground` for any iterable of action names (kept in order)."""
+    return ground(image, list(actions))

@@ -1,0 +1,65 @@
+"""Reading displays from photos: exact on clean ones, clear results on bad input."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from apbot.bench.suite import load_suite
+from apbot.vision.photo import Camera
+from apbot.vision.reading import read_display
+from apbot.vision.render import PanelScene
+
+
+@pytest.fixture(scope="module")
+def suite():  # type: ignore[no-untyped-def]
+    return load_suite()
+
+
+@pytest.mark.parametrize(
+    ("appliance", "main", "lamps"),
+    [
+        ("microwave_1", "PL10", ("COOK",)),
+        ("bread_maker_4", "READY IN 1 h", ("SIZE 2 lb", "CRUST 2", "ADD-IN", "STOP")),
+        ("air_conditioner_1", "", ("LIGHT OFF",)),
+        ("kettle_1", "40°C", ()),
+        ("slow_cooker_1", "", ()),
+    ],
+)
+def test_clean_dot_matrix_displays_read_exactly(suite, appliance, main, lamps) -> None:  # type: ignore[no-untyped-def]
+    photo = PanelScene.of(suite.get(appliance)).photograph(main, lamps)
+    expected = "  ".join(p for p in (main, *lamps) if p)
+    assert read_display(photo.image).text == expected
+
+
+def test_seven_segments_keep_look_alikes_as_alternatives(suite) -> None:  # type: ignore[no-untyped-def]
+    scene = PanelScene.of(suite.get("coffee_machine_5"), style="seg")
+    assert scene.look.style == "seg"
+    reading = read_display(scene.photograph("POUR", ()).image)
+    assert "POUR" in reading.texts
+
+
+def test_a_mild_photo_reads(suite) -> None:  # type: ignore[no-untyped-def]
+    photo = PanelScene.of(suite.get("microwave_1")).photograph(
+        "dEF 08:36", (), Camera.sample(11, "mild")
+    )
+    assert read_display(photo.image).text == "dEF 08:36"
+
+
+def test_bad_images_give_clear_results() -> None:
+    assert read_display(np.zeros((0, 0, 3), np.uint8)).problem == "not a usable image"
+    assert read_display("not an image").problem == "not a usable image"
+    flat = np.full((200, 300, 3), 128, np.uint8)
+    assert read_display(flat).problem == "no display window found"
+
+
+def test_the_window_is_the_display_not_a_dark_stretch_of_panel(suite) -> None:  # type: ignore[no-untyped-def]
+    # under this camera's uneven light a dark part of bread_maker_4's panel looked like a
+    # larger window than the display itself
+    import zlib
+
+    appliance = suite.get("bread_maker_4")
+    camera = Camera.sample(zlib.crc32(b"display/bread_maker_4/dot"), "mild")
+    photo = PanelScene.of(appliance, style="dot").photograph("CRUST 3", ("STOP",), camera, 1)
+    reading = read_display(photo.image)
+    assert reading.text == "CRUST 3  STOP"
