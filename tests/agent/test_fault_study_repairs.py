@@ -125,3 +125,26 @@ def test_a_key_refused_without_a_message_is_dropped_from_a_step_as_one_ignored(
     goal = {"function": "milk", "heat_power": 200, "timer": "8 min"}
     episode, reached = run(truth, belief, goal, feedback)
     assert reached and episode.claimed_success, episode.failure
+
+
+@pytest.mark.parametrize("feedback", MODES)
+@pytest.mark.parametrize(
+    "goal",
+    [
+        {"programme": "sear", "temperature": 240, "child_lock": "on"},
+        {"child_lock": "on", "programme": "fry", "temperature": 150},
+    ],
+)
+def test_a_found_setting_is_seen_again_before_the_lock_goes_on_and_the_lock_resets_nothing(
+    feedback: FeedbackMode, goal: dict[str, Any]
+) -> None:
+    # the fault study's belief of seed 2: the temperature is missing (found on the knob before
+    # the programme is chosen, so it must be seen again), and so is the child lock's guard:
+    # the look comes before the lock, which freezes the keys and changes no setting
+    from apbot.bench.faults import inject_faults
+
+    truth = suite_model("induction_cooker_3")
+    belief, faults = inject_faults(truth, 0.3, seed="2/induction_cooker_3")
+    assert any("missing_variable temperature" in str(f) for f in faults)
+    episode, reached = run(truth, belief, goal, feedback)
+    assert reached and episode.claimed_success, episode.failure

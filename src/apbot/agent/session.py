@@ -202,7 +202,8 @@ class Session:
             own = {self.belief.compiled.vars[v].name for v, _ in hiding.conditions}
             self.blind |= changed - own
         model = self.belief.model
-        if changed - self.discovered - {n for n in changed if _runs(n)} - _locks(model):
+        quiet = {n for n in changed if _runs(n) or "lock" in n.split("_")} | _locks(model)
+        if changed - self.discovered - quiet:
             # a setting found on the panel may depend on what just changed (a programme that
             # resets it) though the belief cannot know: it needs seeing again
             self.stale |= self.discovered - set(seen.values)
@@ -390,7 +391,8 @@ class Session:
 
 def _locks(model: ApplianceModel) -> set[str]:
     """Locks: settings a guard of the model tests for a value other than their starting one
-    (a child lock on) without darkening the panel. Engaging one freezes keys, resets nothing."""
+    (a child lock on) without darkening the panel. Engaging one freezes keys, resets nothing
+    (a setting named a lock is one too, where the reader missed its guard)."""
     found = set()
     for guard in model.guards:
         if guard.hide:
