@@ -148,3 +148,32 @@ def test_a_found_setting_is_seen_again_before_the_lock_goes_on_and_the_lock_rese
     assert any("missing_variable temperature" in str(f) for f in faults)
     episode, reached = run(truth, belief, goal, feedback)
     assert reached and episode.claimed_success, episode.failure
+
+
+@pytest.mark.parametrize("feedback", MODES)
+def test_a_dark_panel_suspects_a_selector_knob_at_its_off_position(
+    feedback: FeedbackMode,
+) -> None:
+    # the fault study's belief of seed 1 lacks "while the knob is at OFF, only the knob
+    # works": the panel is dark and LIGHT does nothing. The knob has five positions, not two,
+    # yet its OFF position is what darkens the panel
+    from apbot.bench.faults import inject_faults
+
+    truth = suite_model("bottle_washer_3")
+    belief, faults = inject_faults(truth, 0.3, seed="1/bottle_washer_3")
+    assert any("knob_at_off" in str(f) for f in faults)
+    episode, reached = run(truth, belief, {"night_light": "on", "child_lock": "on"}, feedback)
+    assert reached and episode.claimed_success, episode.failure
+    assert any("while program is off" in r for r in episode.repairs)
+
+
+def test_a_key_that_darkens_the_panel_again_after_a_lift_is_no_proof_of_a_guard() -> None:
+    # seed 0's belief files the knob's ◀ under LIGHT and lacks the knob-at-OFF guard: turning
+    # the knob on lights the panel, and ◀ then turns it off again. That is no key working
+    # behind a guard, and the guard "◀ does not work while the knob is at OFF" is not learnt
+    from apbot.bench.faults import inject_faults
+
+    truth = suite_model("bottle_washer_3")
+    belief, _ = inject_faults(truth, 0.3, seed="0/bottle_washer_3")
+    episode, _reached = run(truth, belief, {"night_light": "on", "child_lock": "on"}, "display")
+    assert not any("turn_program_ccw does not work" in r for r in episode.repairs)

@@ -153,6 +153,7 @@ class GuardLearner:
                 not (retry.believed_accepted and retry.feedback.accepted)
                 or retry.unchanged
                 or retry.feedback.text == before
+                or (dark and not retry.feedback.text.strip())  # dark again: it did not work
                 or (retry.surprises and retry.variable not in retry.surprises)
                 or (silent and retry.surprises)  # a lit panel: only what the belief predicted
             ):
@@ -216,7 +217,9 @@ class GuardLearner:
             value = self.session.belief.value(name)
             if value is None or str(value).casefold() not in words:
                 continue
-            if len(self.session.domain_values(name)) == 2 and self._switching(name):
+            # a switch; or, behind a dark display, a selector at its OFF position (a knob)
+            two = len(self.session.domain_values(name)) == 2
+            if (two or (dark and str(value).casefold() == "off")) and self._switching(name):
                 suspects.append((name, value))
         # a setting some guard already tests (power, a lock) first: it is known to block keys
         tested = {n for guard in model.guards for n in guard.when}
