@@ -177,3 +177,20 @@ def test_a_key_that_darkens_the_panel_again_after_a_lift_is_no_proof_of_a_guard(
     belief, _ = inject_faults(truth, 0.3, seed="0/bottle_washer_3")
     episode, _reached = run(truth, belief, {"night_light": "on", "child_lock": "on"}, "display")
     assert not any("turn_program_ccw does not work" in r for r in episode.repairs)
+
+
+@pytest.mark.parametrize("feedback", MODES)
+def test_a_missing_lamp_setting_behind_a_panel_off_without_a_guard_is_found(
+    feedback: FeedbackMode,
+) -> None:
+    # seed 1's belief lacks SYNC (its key unknown) and the power-off guard: SYNC pressed on
+    # the dark panel does nothing; once the panel is on, the same press lights SYNC. That
+    # press is the walk's first, and the key it found working is a guard's proof too
+    from apbot.bench.faults import inject_faults
+
+    truth = suite_model("air_fryer_4")
+    belief, faults = inject_faults(truth, 0.3, seed="1/air_fryer_4")
+    assert any("missing_variable sync" in str(f) for f in faults)
+    goal = {"temp1": "160", "time1": "15 min", "temp2": "190", "sync": "on"}
+    episode, reached = run(truth, belief, goal, feedback)
+    assert reached and episode.claimed_success, episode.failure

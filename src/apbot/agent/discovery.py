@@ -421,7 +421,14 @@ class VariableFinder:
             self.trail.append(done.feedback.text if done.feedback.accepted else None)
             text = _main(done.feedback.text, session.perceiver.reader.lamp_texts())
             if not texts and not done.feedback.text.strip() and self.guards.learn(done):
-                continue  # a dark panel the belief had no guard for (asleep): now lit
+                # a dark panel the belief had no guard for (asleep): now lit, and the key was
+                # pressed again there — what it showed is the walk's first text
+                shown = session.last.text
+                main = _main(shown, session.perceiver.reader.lamp_texts())
+                if main and session.perceiver.reader.read(shown).unknown:
+                    self.trail = [shown]
+                    texts.append(main)
+                continue
             if not done.feedback.accepted or not text or not _unknown(done):
                 break  # refused, dark, or a screen the belief knows: not the missing setting
             if text in texts:

@@ -149,8 +149,10 @@ class GuardLearner:
             retry = session.press(failed.action, exploring=True)
             if retry.feedback.accepted and retry.feedback.text == before:
                 retry = self._again(retry)  # the screen it came to was up already: once more
+            # a key the belief does not know at all (a setting's it lacks) works if it lit
+            known = retry.believed_accepted or retry.action.name not in session.belief.model.actions
             if (
-                not (retry.believed_accepted and retry.feedback.accepted)
+                not (known and retry.feedback.accepted)
                 or retry.unchanged
                 or retry.feedback.text == before
                 or (dark and not retry.feedback.text.strip())  # dark again: it did not work
