@@ -109,7 +109,51 @@ class VariableFinder:
             return True
         keypad = [a for a in session.belief.model.actions if _is_digit(a)]
         typing_first = bool(keypad) and bool(plain_steps(session.belief.model, keypad))
-        return typing_first and self._typed(name, goal_value, None)
+        if typing_first and self._typed(name, goal_value, None):
+            return True
+        return self._after_named(name, goal_value, before)
+
+    def _after_named(self, name: str, goal_value: Any, before: str) -> bool:
+        """A procedure named like the setting (``auto_menu`` for ``auto_weight``) may go on
+        with it as a step the reader missed ("press AUTO MENU, then turn the dial for the
+        weight"): press the procedure's key, walk the panel's stepping keys after it, and a
+        walk the belief cannot read is the setting, a further step of that procedure."""
+        session = self.session
+        for key, site in self._named_steps(name)[:2]:
+            for adjuster in self._adjusters(key)[:MAX_ADJUSTERS]:
+                self.guards.lift_all()
+                entered = session.press(session.planned(key), exploring=True)
+                if not entered.feedback.accepted or _unknown(entered):
+                    break  # refused, or not the procedure the belief knows
+                entered_values = session.belief.values()
+                found = self._walked(adjuster)
+                if found is None or len(set(found[0])) < 2:
+                    continue
+                texts, last = found
+                if self._learn(name, goal_value, texts, last, before, key, adjuster, site):
+                    # the walk was the new step's: what the belief took the keys to do
+                    # elsewhere (another setting's steps, its resets) never happened
+                    for other, value in entered_values.items():
+                        if other != name and session.belief.value(other) != value:
+                            session.belief.set_value(other, value)
+                    return True
+        return False
+
+    def _named_steps(self, name: str) -> list[tuple[str, tuple[str, int]]]:
+        """The last step of each procedure whose name or setting shares a word with ``name``,
+        with a key of its own that is no switch's: (that key, (procedure, step index))."""
+        model = self.session.belief.model
+        words = {w for w in name.split("_") if len(w) >= 3}
+        switches = self._switch_keys()
+        found: list[tuple[str, tuple[str, int]]] = []
+        for feature, steps in model.features.items():
+            index = len(steps) - 1
+            step = steps[index]
+            names = {*feature.split("_"), *(step.variable or "").split("_")}
+            keys = [a for a in step.actions if a not in switches and not _is_digit(a)]
+            if words & names and len(keys) == 1 and step.variable is not None:
+                found.append((keys[0], (feature, index)))
+        return found
 
     def _walked(self, key: str) -> tuple[list[str], str] | None:
         """Walk ``key`` (and its opposite back from an end): the texts in value order and the
@@ -134,9 +178,11 @@ class VariableFinder:
         before: str,
         entry: str | None,
         key: str,
+        site: tuple[str, int] | None = None,
     ) -> bool:
         """Write the setting a walk of ``key`` (after ``entry``) showed into the belief — if
-        the goal's value could be one of its values (a walk of grams is not a power level)."""
+        the goal's value could be one of its values (a walk of grams is not a power level);
+        with ``site``, as the step after that step of a procedure."""
         session = self.session
         learnt = infer_setting(name, texts, _kind_of(goal_value), last)
         if learnt is not None and not _fits(learnt.variable, goal_value):
@@ -158,6 +204,7 @@ class VariableFinder:
                 learnt.effect,
                 self._opposite(key),
                 entry=entry,
+                after=site,
             )
         except RepairError as exc:
             session.episode.log("repair", f"could not add {name}: {exc}")
@@ -374,7 +421,14 @@ class VariableFinder:
             self.trail.append(done.feedback.text if done.feedback.accepted else None)
             text = _main(done.feedback.text, session.perceiver.reader.lamp_texts())
             if not texts and not done.feedback.text.strip() and self.guards.learn(done):
-                continue  # a dark panel the belief had no guard for (asleep): now lit
+                # a dark panel the belief had no guard for (asleep): now lit, and the key was
+                # pressed again there — what it showed is the walk's first text
+                shown = session.last.text
+                main = _main(shown, session.perceiver.reader.lamp_texts())
+                if main and session.perceiver.reader.read(shown).unknown:
+                    self.trail = [shown]
+                    texts.append(main)
+                continue
             if not done.feedback.accepted or not text or not _unknown(done):
                 break  # refused, dark, or a screen the belief knows: not the missing setting
             if text in texts:

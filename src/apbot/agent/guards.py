@@ -149,10 +149,13 @@ class GuardLearner:
             retry = session.press(failed.action, exploring=True)
             if retry.feedback.accepted and retry.feedback.text == before:
                 retry = self._again(retry)  # the screen it came to was up already: once more
+            # a key the belief does not know at all (a setting's it lacks) works if it lit
+            known = retry.believed_accepted or retry.action.name not in session.belief.model.actions
             if (
-                not (retry.believed_accepted and retry.feedback.accepted)
+                not (known and retry.feedback.accepted)
                 or retry.unchanged
                 or retry.feedback.text == before
+                or (dark and not retry.feedback.text.strip())  # dark again: it did not work
                 or (retry.surprises and retry.variable not in retry.surprises)
                 or (silent and retry.surprises)  # a lit panel: only what the belief predicted
             ):
@@ -216,7 +219,9 @@ class GuardLearner:
             value = self.session.belief.value(name)
             if value is None or str(value).casefold() not in words:
                 continue
-            if len(self.session.domain_values(name)) == 2 and self._switching(name):
+            # a switch; or, behind a dark display, a selector at its OFF position (a knob)
+            two = len(self.session.domain_values(name)) == 2
+            if (two or (dark and str(value).casefold() == "off")) and self._switching(name):
                 suspects.append((name, value))
         # a setting some guard already tests (power, a lock) first: it is known to block keys
         tested = {n for guard in model.guards for n in guard.when}

@@ -176,9 +176,10 @@ class ClosedLoop:
                 raise Stop("the goal holds", success=True)
             self.pending = list(found.macro_actions)
             self.session.episode.log("plan", " → ".join(m.feature for m in found.macro_actions))
-        if any(_starts(n) for n in self.pending[0].expect):
-            # once it runs, most keys are locked out: see what is unconfirmed first
-            unseen = self.session.unconfirmed({n for n in inside if not _starts(n)})
+        if any(_starts(n) or _locks(n) for n in self.pending[0].expect):
+            # once it runs (or the lock is on), most keys are locked out: see what is
+            # unconfirmed first
+            unseen = self.session.unconfirmed({n for n in inside if not (_starts(n) or _locks(n))})
             if unseen and self._look(unseen):
                 self.pending.clear()
                 return
@@ -711,6 +712,11 @@ RUN_STATES = ("running", "heating", "dispensing", "status", "start")
 def _starts(name: str) -> bool:
     """A goal setting that starts the appliance (left for last while settings are missing)."""
     return any(word in name for word in RUN_STATES)
+
+
+def _locks(name: str) -> bool:
+    """A goal setting that locks the panel (a child lock): the belief may lack its guard."""
+    return "lock" in name.split("_")
 
 
 def _outside_text(outside: dict[str, Any]) -> str:

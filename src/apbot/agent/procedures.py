@@ -23,7 +23,7 @@ from apbot.agent.repair import (
 )
 from apbot.agent.session import MISSING, UNREADABLE, Executed, Session, Stop
 from apbot.model.schema import GoTo
-from apbot.plan.plan import PlannedAction
+from apbot.plan.plan import PlannedAction, Unreachable, plan
 
 _RUN_WORDS = ("running", "heating", "dispensing", "status", "brewing", "cooking")
 
@@ -71,11 +71,14 @@ class ProcedureRepairer:
         for candidate in dict.fromkeys(candidates):
             if candidate == first.action.name:
                 continue
+            running = self._run_states()
             probe = self.session.press(self.session.planned(candidate), exploring=True)
             if not probe.feedback.accepted:
                 continue
             after = self.session.press(first.action, exploring=True)
             shows = name is not None and after.observed(name) is not MISSING
+            if not (after.feedback.accepted and shows):
+                self._stop_started(running)  # a cycle the probe started locks the next probes
             if after.feedback.accepted and shows and candidate in elsewhere:
                 # the key belongs to that other procedure, after its entry key
                 assert name is not None
@@ -111,6 +114,27 @@ class ProcedureRepairer:
         if first.unchanged and self._drop_key(first):
             return
         self.session.forget_pointer()
+
+    def _run_states(self) -> dict[str, Any]:
+        """The belief's run states (running, heating…) as they are now."""
+        belief = self.session.belief
+        return {
+            n: belief.value(n) for n in belief.model.variables if any(w in n for w in _RUN_WORDS)
+        }
+
+    def _stop_started(self, before: dict[str, Any]) -> None:
+        """A probe that explained nothing but started a cycle: stop it again (by the belief's
+        shortest route), so that the keys a running cycle locks can still be probed."""
+        session = self.session
+        started = {n: v for n, v in before.items() if session.belief.value(n) != v}
+        if not started:
+            return
+        try:
+            route = plan(session.belief.compiled, session.belief.state, started)
+        except Unreachable:
+            return
+        for planned in route.actions:
+            session.press(planned, exploring=True)
 
     def move_key(self, done: Executed) -> bool:
         """The key brought up another setting's screen than the belief's step: the key belongs

@@ -66,10 +66,15 @@ def redefine_domain(
         new_values = [str(v) for v in values]
         if case is not None and isinstance(target, list):
             target = var["cases"][case] = {"values": target}
+        old_values = target.get("values") or []
+        # no initial written: the first of the old list was (a new order must not move it)
+        start = target.get("initial", old_values[0] if old_values else None)
         target["values"] = new_values
-        fits = target.get("initial") in new_values
+        fits = start in new_values
         if initial is not None and str(initial) in new_values:
             target["initial"] = str(initial)
+        elif fits and start != new_values[0]:
+            target["initial"] = start
         elif not fits and ("initial" in target or case is None):
             target["initial"] = str(current) if str(current) in new_values else new_values[0]
     else:
@@ -331,16 +336,52 @@ def add_setting(
     effect: str,
     opposite: str | None = None,
     entry: str | None = None,
+    after: tuple[str, int] | None = None,
 ) -> ApplianceModel:
     """A setting the model lacked: its variable, its key (and the key walking the other way),
     and a one-step procedure ``set_NAME`` that adjusts it. Where other settings depend on a
     programme, this one is taken to depend on it too (each programme starting from what was
     seen): a programme change then resets it in the belief as it may on the appliance, and the
-    planner sets it after the programme."""
+    planner sets it after the programme. With ``after`` (a procedure and the index of the step
+    whose key ``entry`` is), it is that procedure's next step instead, depending on the choice
+    made there when that is a list of values (a weight per automatic menu)."""
     effects: dict[str, Any] = {key: effect}
     if opposite:
         effects[opposite] = "prev" if effect == "next" else "next"
+    if after is not None:
+        return _after_step(model, name, variable, effects, after)
     return _with_setting(model, name, variable, effects, entry)
+
+
+def _after_step(
+    model: ApplianceModel,
+    name: str,
+    variable: dict[str, Any],
+    effects: dict[str, Any],
+    after: tuple[str, int],
+) -> ApplianceModel:
+    feature, index = after
+    data = _dump(model)
+    chosen = model.features[feature][index].variable
+    parent = model.variables.get(chosen) if chosen else None
+    if isinstance(parent, DiscreteVariable) and parent.depends_on is None:
+        own = {k: variable.pop(k) for k in ("values", "ranges", "initial") if k in variable}
+        variable["depends_on"] = chosen
+        variable["cases"] = {str(value): dict(own) for value in all_values(parent)}
+    data["variables"][name] = variable
+    for action in effects:
+        if action not in data["actions"]:
+            _add_action(data, action)
+    data["features"][feature].insert(
+        index + 1,
+        {
+            "actions": list(effects),
+            "variable": name,
+            "effect": effects,
+            "note": "learnt from feedback",
+        },
+    )
+    return _rebuild(data)
 
 
 def add_keypad_setting(

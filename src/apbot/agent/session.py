@@ -25,7 +25,7 @@ from apbot.agent.perception import MISSING, UNREADABLE, Perceiver, Seen
 from apbot.model.display import can_show
 from apbot.model.domain import ValueProblem, parse_value
 from apbot.model.effects import default_effect
-from apbot.model.schema import Add, ApplianceModel, Skip, TimeVariable
+from apbot.model.schema import Add, ApplianceModel, DiscreteVariable, Skip, TimeVariable
 from apbot.model.values import format_hms, parse_hms
 from apbot.plan.plan import PlannedAction
 from apbot.sim.compiled import State
@@ -177,7 +177,11 @@ class Session:
         )
         if not feedback.accepted:
             self.belief.state = before_state  # a refused action changes nothing
-            return Executed(action, pointer, variable, feedback, believed, before, predicted)
+            # a refusal that left the display as it was (no message) is a key ignored here
+            mute = believed and feedback.text == before_text
+            return Executed(
+                action, pointer, variable, feedback, believed, before, predicted, unchanged=mute
+            )
         buffer = self.belief.state.buffer
         seen = self.perceive(feedback, expected)
         surprises = {
@@ -206,7 +210,8 @@ class Session:
             own = {self.belief.compiled.vars[v].name for v, _ in hiding.conditions}
             self.blind |= changed - own
         model = self.belief.model
-        if changed - self.discovered - {n for n in changed if _runs(n)}:
+        quiet = {n for n in changed if _runs(n) or "lock" in n.split("_")} | _locks(model)
+        if changed - self.discovered - quiet:
             # a setting found on the panel may depend on what just changed (a programme that
             # resets it) though the belief cannot know: it needs seeing again
             self.stale |= self.discovered - set(seen.values)
@@ -390,6 +395,25 @@ class Session:
         """After presses the belief cannot follow, assume no procedure is in progress."""
         self.belief.set_pointer(None)
         self.reread()
+
+
+def _locks(model: ApplianceModel) -> set[str]:
+    """Locks: settings a guard of the model tests for a value other than their starting one
+    (a child lock on) without darkening the panel. Engaging one freezes keys, resets nothing
+    (a setting named a lock is one too, where the reader missed its guard)."""
+    found = set()
+    for guard in model.guards:
+        if guard.hide:
+            continue
+        for name, condition in guard.when.items():
+            spec = model.variables.get(name)
+            if not isinstance(spec, DiscreteVariable) or not spec.values:
+                continue
+            held = condition if isinstance(condition, list) else [condition]
+            start = spec.initial if spec.initial is not None else spec.values[0]
+            if start not in held:
+                found.add(name)
+    return found
 
 
 def _runs(name: str) -> bool:
