@@ -150,9 +150,9 @@ def goal_parser(config: LLMConfig) -> Any:
 
     client = client_for(config)
 
-    def parse(model: ApplianceModel, instruction: str) -> dict[str, Any]:
+    def parse(model: ApplianceModel, instruction: str, manual: str = "") -> dict[str, Any]:
         try:
-            return llm_parse_instruction(model, instruction, client).goal
+            return llm_parse_instruction(model, instruction, client, manual=manual).goal
         except StructuredError as exc:
             raise ValueError(str(exc)) from None
 
