@@ -59,13 +59,17 @@ def main() -> None:
                 continue
             expected = parse_goal(appliance.model, task.goal)
             try:
-                offline = parse_instruction(appliance.model, task.instruction)
+                offline = parse_instruction(appliance.model, task.instruction, appliance.manual)
             except GoalParseError:
                 offline = None
             start = time.perf_counter()
             try:
                 read = llm_parse_instruction(
-                    appliance.model, task.instruction, client, use_hint=not args.no_hint
+                    appliance.model,
+                    task.instruction,
+                    client,
+                    use_hint=not args.no_hint,
+                    manual=appliance.manual,
                 )
                 got, usage, attempts, error = read.goal, read.usage, read.attempts, ""
             except StructuredError as exc:

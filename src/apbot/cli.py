@@ -611,7 +611,7 @@ def goal_command(
         if config is not None:
             from apbot.cli_llm import goal_parser
 
-            goal = goal_parser(config)(belief, instruction)
+            goal = goal_parser(config)(belief, instruction, text)
         else:
             goal = parse_instruction(belief, instruction, text)
     except (GoalParseError, ValueError) as exc:

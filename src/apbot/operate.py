@@ -106,7 +106,7 @@ def read_goal(model: ApplianceModel, instruction: str, manual: str = "") -> dict
         from apbot.read.llm_goal import llm_parse_instruction
 
         try:
-            return dict(llm_parse_instruction(model, instruction, client).goal)
+            return dict(llm_parse_instruction(model, instruction, client, manual=manual).goal)
         except StructuredError:
             pass  # the offline parser's answer stands
     return dict(parse_instruction(model, instruction, manual))

@@ -10,7 +10,7 @@ from apbot.bench.suite import SuiteAppliance, bundled_suite_dir, load_appliance
 from apbot.llm.client import LLMClient
 from apbot.llm.config import LLMConfig
 from apbot.llm.structured import StructuredError
-from apbot.read.llm_goal import goal_schema, llm_parse_instruction
+from apbot.read.llm_goal import goal_schema, llm_parse_instruction, offline_hint
 from tests.llm.scripted import Reply, Script
 
 
@@ -53,3 +53,21 @@ def test_nothing_chosen_is_an_error_fed_back(
     with pytest.raises(StructuredError, match="no setting is set"):
         llm_parse_instruction(kettle.model, "Make tea", LLMClient(config), use_hint=False)
     assert script.count == 4
+
+
+def test_the_hint_reads_with_the_manual(script: Script, config: LLMConfig) -> None:
+    """The offline parser names coded values from the manual (menu 3 is whole wheat); the
+    hint the LLM gets must be that reading, not a weaker one without the manual."""
+    bread = load_appliance(bundled_suite_dir() / "bread_maker_1")
+    instruction = bread.tasks[1].instruction  # a whole wheat loaf: menu 3 in this manual
+    script.replies = [
+        Reply(
+            '{"power": null, "menu": "3", "loaf_size": "1000", "crust": "light", '
+            '"delay": "08:00:00", "running": "on"}'
+        )
+    ]
+    read = llm_parse_instruction(bread.model, instruction, LLMClient(config), manual=bread.manual)
+    assert '"menu": "3"' in read.hint
+    assert '"menu": "3"' in script.requests[0]["messages"][1]["content"]
+    # without the manual the parser cannot name the menu: the case this guards
+    assert '"menu"' not in offline_hint(bread.model, instruction)

@@ -51,7 +51,7 @@ class GoalScore:
         }
 
 
-Parser = Callable[[Any, str], dict[str, Any]]
+Parser = Callable[[Any, str, str], dict[str, Any]]  # (model, instruction, manual)
 
 
 def evaluate_goals(
@@ -64,8 +64,8 @@ def evaluate_goals(
     """Parse every instruction of the chosen appliances and compare with the stored goal.
 
     ``appliances`` are ids or shell patterns (``"*_4"``); ``categories`` are category names;
-    ``parser`` reads (model, instruction) into a goal (default: the offline parser; it raises
-    ``GoalParseError`` or another ``ValueError`` for an instruction it cannot read);
+    ``parser`` reads (model, instruction, manual) into a goal (default: the offline parser; it
+    raises ``GoalParseError`` or another ``ValueError`` for an instruction it cannot read);
     ``sample``: only the first N tasks of each appliance.
     """
     score = GoalScore()
@@ -81,7 +81,7 @@ def evaluate_goals(
             error = ""
             try:
                 if parser is not None:
-                    parsed = parser(appliance.model, task.instruction)
+                    parsed = parser(appliance.model, task.instruction, appliance.manual)
                 else:
                     parsed = parse_instruction(appliance.model, task.instruction, appliance.manual)
             except (GoalParseError, ValueError) as exc:

@@ -89,7 +89,7 @@ def method_goal(
         from apbot.read.llm_goal import llm_parse_instruction
 
         try:
-            answer = llm_parse_instruction(belief, instruction, client)
+            answer = llm_parse_instruction(belief, instruction, client, manual=manual)
         except StructuredError as exc:
             fallback = method_goal(mode, belief, instruction, manual, stored, truth, offline=True)
             fallback.usage = exc.usage.record()

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import hashlib
 import os
+import signal
 import subprocess
 import sys
 from dataclasses import dataclass
@@ -139,9 +140,26 @@ def serve(
     """Assemble, verify and serve in the foreground until interrupted; the exit code."""
     check_runtime()
     model = assemble()
-    process = subprocess.Popen(server_command(model, host, port, threads, context, batch_threads))
+    return run_foreground(server_command(model, host, port, threads, context, batch_threads))
+
+
+def run_foreground(command: list[str]) -> int:
+    """Run ``command`` until it exits; Ctrl-C, SIGTERM or SIGHUP to us stop it too.
+
+    Without the handlers a ``kill`` of ``apbot llm serve`` left llama.cpp's server running
+    (orphaned, still holding the port and the cores).
+    """
+    process = subprocess.Popen(command)
+
+    def stop(signum: int, frame: object) -> None:
+        process.terminate()
+
+    previous = {sig: signal.signal(sig, stop) for sig in (signal.SIGTERM, signal.SIGHUP)}
     try:
         return process.wait()
     except KeyboardInterrupt:
         process.terminate()
         return process.wait()
+    finally:
+        for sig, handler in previous.items():
+            signal.signal(sig, handler)

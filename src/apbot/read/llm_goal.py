@@ -130,12 +130,16 @@ def _check(model: ApplianceModel) -> Any:
     return check
 
 
-def offline_hint(model: ApplianceModel, instruction: str) -> str:
-    """The offline parser's reading, as a line of the prompt (it may be wrong)."""
+def offline_hint(model: ApplianceModel, instruction: str, manual: str = "") -> str:
+    """The offline parser's reading, as a line of the prompt (it may be wrong).
+
+    With the manual, as the offline parser is used elsewhere: without it the hint lacks the
+    values a panel shows only as codes (a bread maker's menu numbers).
+    """
     from apbot.read.goal import GoalParseError, parse_instruction
 
     try:
-        parsed = parse_instruction(model, instruction)
+        parsed = parse_instruction(model, instruction, manual)
     except GoalParseError as exc:
         return f"A rule-based parser could not read it ({exc}); it may be wrong."
     except Exception:  # a parser bug must not stop the LLM path
@@ -162,10 +166,11 @@ def llm_parse_instruction(
     *,
     use_hint: bool = True,
     repeat: int | None = None,
+    manual: str = "",
 ) -> LLMGoal:
     """Read ``instruction`` into a goal over ``model``; raises ``StructuredError`` when no
-    valid answer comes within the allowed attempts."""
-    hint = offline_hint(model, instruction) if use_hint else ""
+    valid answer comes within the allowed attempts. ``manual`` goes to the offline hint."""
+    hint = offline_hint(model, instruction, manual) if use_hint else ""
     answer = ask(
         client,
         goal_messages(model, instruction, hint),
