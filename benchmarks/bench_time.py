@@ -20,7 +20,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from apbot.agent.registry import methods
+from apbot.agent.registry import default_methods
 from apbot.bench.runner import BenchOptions, run_benchmark
 
 
@@ -29,12 +29,14 @@ def main() -> None:
         description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
     )
     parser.add_argument("--workers", type=int, default=2)
-    parser.add_argument("--methods", default=None, help="comma-separated (default: all)")
+    parser.add_argument(
+        "--methods", default=None, help="comma-separated (default: every method needing no LLM)"
+    )
     parser.add_argument("--sample", type=int, default=None, help="first N tasks per appliance")
     parser.add_argument("--budget", type=float, default=120.0, help="seconds allowed")
     parser.add_argument("--warm", action="store_true", help="use the user's read cache")
     args = parser.parse_args()
-    chosen = args.methods.split(",") if args.methods else list(methods())
+    chosen = args.methods.split(",") if args.methods else default_methods()
     with tempfile.TemporaryDirectory(prefix="apbot-bench-time-") as out:
         if not args.warm:
             os.environ["APBOT_CACHE_DIR"] = str(Path(out) / "cache")  # every manual read anew
