@@ -1,4 +1,4 @@
-"""How long the full offline benchmark takes (every registered method × every task).
+"""How long the full offline benchmark takes (every method a plain bench runs × every task).
 
     python benchmarks/bench_time.py [--workers 2] [--methods a,b] [--sample N] [--budget 120]
                                     [--warm]
