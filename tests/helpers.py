@@ -3,7 +3,12 @@
 from __future__ import annotations
 
 import textwrap
+from typing import Any
 
+from apbot.agent.environment import FeedbackMode, SimulatorEnvironment
+from apbot.agent.episode import Episode, TaskContext
+from apbot.agent.registry import get_method
+from apbot.model.goal import parse_goal
 from apbot.model.load import loads_model
 from apbot.model.schema import ApplianceModel
 
@@ -14,3 +19,19 @@ def model_from(yaml_text: str, check: bool = True) -> ApplianceModel:
     if "appliance:" not in text:
         text = "appliance: {id: test_unit, category: test}\n" + text
     return loads_model(text, check=check)
+
+
+def run_checked(
+    truth: ApplianceModel,
+    belief: ApplianceModel,
+    goal: dict[str, Any],
+    feedback: FeedbackMode = "display",
+) -> tuple[Episode, bool]:
+    """Run ``apbot`` from ``belief`` on a simulator of ``truth``; the episode and whether the
+    goal was really reached. Fails the test on any false claim of success."""
+    env = SimulatorEnvironment(truth, feedback)
+    context = TaskContext("unit", "test", "t", "", goal, belief, actions=tuple(env.actions))
+    episode = get_method("apbot").run(context, env)
+    reached = env.simulator.satisfies(parse_goal(truth, goal))
+    assert not (episode.claimed_success and not reached), "a false claim of success"
+    return episode, reached

@@ -9,13 +9,11 @@ from typing import Any
 
 import pytest
 
-from apbot.agent.environment import FeedbackMode, SimulatorEnvironment
-from apbot.agent.episode import Episode, TaskContext
-from apbot.agent.registry import get_method
+from apbot.agent.environment import FeedbackMode
 from apbot.agent.repair import redefine_domain
-from apbot.model.goal import parse_goal
 from apbot.model.load import loads_model
 from apbot.model.schema import ApplianceModel, DiscreteVariable
+from tests.helpers import run_checked as run
 
 MODES: tuple[FeedbackMode, ...] = ("display", "values")
 
@@ -26,17 +24,6 @@ def suite_model(appliance: str, *replacements: tuple[str, str]) -> ApplianceMode
         assert text.count(old) == 1, old
         text = text.replace(old, new)
     return loads_model(text)
-
-
-def run(
-    truth: ApplianceModel, belief: ApplianceModel, goal: dict[str, Any], feedback: FeedbackMode
-) -> tuple[Episode, bool]:
-    env = SimulatorEnvironment(truth, feedback)
-    context = TaskContext("unit", "test", "t", "", goal, belief, actions=tuple(env.actions))
-    episode = get_method("apbot").run(context, env)
-    reached = env.simulator.satisfies(parse_goal(truth, goal))
-    assert not (episode.claimed_success and not reached), "a false claim of success"
-    return episode, reached
 
 
 # the reader missed the weight an automatic menu asks for: "press AUTO MENU, then turn the

@@ -5,36 +5,23 @@ conditioner…, against the true simulator, and judges the outcome on the truth.
 from __future__ import annotations
 
 from importlib.resources import files
-from typing import Any
 
 import pytest
 
 from apbot.agent.budget import Budget
 from apbot.agent.displays import DisplayLearner
 from apbot.agent.environment import FeedbackMode, SimulatorEnvironment
-from apbot.agent.episode import Episode, TaskContext
+from apbot.agent.episode import TaskContext
 from apbot.agent.guards import GuardLearner
 from apbot.agent.procedures import ProcedureRepairer
 from apbot.agent.reader import DisplayReader
-from apbot.agent.registry import get_method
 from apbot.agent.session import AgentConfig, Session
-from apbot.model.goal import parse_goal
 from apbot.model.load import loads_model
 from apbot.model.schema import ApplianceModel
 from tests.helpers import model_from
+from tests.helpers import run_checked as run
 
 MODES: tuple[FeedbackMode, ...] = ("display", "values")
-
-
-def run(
-    truth: ApplianceModel, belief: ApplianceModel, goal: dict[str, Any], feedback: FeedbackMode
-) -> tuple[Episode, bool]:
-    env = SimulatorEnvironment(truth, feedback)
-    context = TaskContext("unit", "test", "t", "", goal, belief, actions=tuple(env.actions))
-    episode = get_method("apbot").run(context, env)
-    reached = env.simulator.satisfies(parse_goal(truth, goal))
-    assert not (episode.claimed_success and not reached), "a false claim of success"
-    return episode, reached
 
 
 # --- a lamp the belief does not know, read as a bare number ------------------------------------

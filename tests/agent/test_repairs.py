@@ -8,14 +8,10 @@ repair says what was learnt.
 from __future__ import annotations
 
 from importlib.resources import files
-from typing import Any
 
-from apbot.agent.environment import FeedbackMode, SimulatorEnvironment
-from apbot.agent.episode import Episode, TaskContext
-from apbot.agent.registry import get_method
-from apbot.model.goal import parse_goal
 from apbot.model.load import loads_model
 from apbot.model.schema import ApplianceModel
+from tests.helpers import run_checked as run
 
 
 def example(name: str, *replacements: tuple[str, str]) -> ApplianceModel:
@@ -24,20 +20,6 @@ def example(name: str, *replacements: tuple[str, str]) -> ApplianceModel:
         assert old in text, old
         text = text.replace(old, new)
     return loads_model(text)
-
-
-def run(
-    truth: ApplianceModel,
-    belief: ApplianceModel,
-    goal: dict[str, Any],
-    feedback: FeedbackMode = "display",
-) -> tuple[Episode, bool]:
-    env = SimulatorEnvironment(truth, feedback)
-    context = TaskContext("unit", "test", "t", "", goal, belief, actions=tuple(env.actions))
-    episode = get_method("apbot").run(context, env)
-    reached = env.simulator.satisfies(parse_goal(truth, goal))
-    assert not (episode.claimed_success and not reached), "a false claim of success"
-    return episode, reached
 
 
 def test_a_display_template_copied_wrong_is_learnt_from_the_typed_values() -> None:

@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import copy
 import json
+from collections.abc import Callable
 from typing import Any
 
 from apbot.llm.config import SCHEMA_MODES, SchemaMode
@@ -30,19 +31,13 @@ def strict_schema(schema: dict[str, Any]) -> dict[str, Any]:
     """The schema as OpenAI's strict mode wants it (a copy; the input is left alone)."""
     out = copy.deepcopy(schema)
 
-    def visit(node: Any) -> None:
-        if isinstance(node, dict):
-            node.pop("default", None)
-            if node.get("type") == "object" or "properties" in node:
-                node["additionalProperties"] = False
-                node["required"] = list(node.get("properties", {}))
-            for value in node.values():
-                visit(value)
-        elif isinstance(node, list):
-            for value in node:
-                visit(value)
+    def tighten(node: dict[str, Any]) -> None:
+        node.pop("default", None)
+        if node.get("type") == "object" or "properties" in node:
+            node["additionalProperties"] = False
+            node["required"] = list(node.get("properties", {}))
 
-    visit(out)
+    _each_object(out, tighten)
     return out
 
 
@@ -52,18 +47,19 @@ def grammar_schema(schema: dict[str, Any]) -> dict[str, Any]:
     (seen: 0.3 tokens/s against 5–7 for the same model), and no regex patterns (the answer is
     validated after anyway)."""
     out = strict_schema(schema)
-
-    def visit(node: Any) -> None:
-        if isinstance(node, dict):
-            node.pop("pattern", None)
-            for value in node.values():
-                visit(value)
-        elif isinstance(node, list):
-            for value in node:
-                visit(value)
-
-    visit(out)
+    _each_object(out, lambda node: node.pop("pattern", None))
     return out
+
+
+def _each_object(node: Any, change: Callable[[dict[str, Any]], object]) -> None:
+    """Apply ``change`` to every JSON object in a schema, outermost first."""
+    if isinstance(node, dict):
+        change(node)
+        for value in node.values():
+            _each_object(value, change)
+    elif isinstance(node, list):
+        for value in node:
+            _each_object(value, change)
 
 
 class Adapter:
