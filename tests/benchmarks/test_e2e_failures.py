@@ -1,0 +1,70 @@
+"""The end-to-end failure classifier files each failure under the first cause, in its order."""
+
+from __future__ import annotations
+
+from apbot.model.schema import ApplianceModel
+from benchmarks.e2e_failures import classify, first_cause
+from tests.helpers import model_from
+
+
+def _model(modes: str, with_fan: bool = True) -> ApplianceModel:
+    fan = (
+        """
+          fan: {type: discrete, values: [low, high]}"""
+        if with_fan
+        else ""
+    )
+    fan_feature = (
+        """
+          fan:
+            - {actions: [press_fan], variable: fan, effect: next}"""
+        if with_fan
+        else ""
+    )
+    fan_action = "\n          press_fan: {control: fan_key}" if with_fan else ""
+    fan_control = "\n          - {id: fan_key, kind: touch, label: FAN}" if with_fan else ""
+    return model_from(
+        f"""
+        controls:
+          - {{id: mode_key, kind: touch, label: MODE}}{fan_control}
+        variables:
+          mode: {{type: discrete, values: [{modes}]}}{fan}
+        actions:
+          press_mode: {{control: mode_key}}{fan_action}
+        features:
+          mode:
+            - {{actions: [press_mode], variable: mode, effect: next}}{fan_feature}
+        """
+    )
+
+
+TRUTH = _model("auto, dry, sleep")
+
+
+def test_a_right_goal_blames_the_agent() -> None:
+    belief = _model("auto, dry, sleep")
+    causes = classify(belief, TRUTH, {"mode": "dry"}, {"mode": "dry"})
+    assert causes == [] and first_cause(causes) == "agent"
+
+
+def test_a_value_the_belief_lacks_comes_before_what_the_parser_did() -> None:
+    belief = _model("auto, sleep")
+    causes = classify(belief, TRUTH, {"mode": "dry", "fan": "high"}, {"fan": "low"})
+    assert [c.kind for c in causes] == ["lacks value", "wrong value"]
+    assert causes[0].setting == "mode" and "auto, sleep" in causes[0].detail
+
+
+def test_a_setting_the_belief_lacks_is_named_with_the_truths_name() -> None:
+    belief = _model("auto, dry, sleep", with_fan=False)
+    causes = classify(belief, TRUTH, {"fan": "high", "mode": "dry"}, {"mode": "dry"})
+    assert first_cause(causes) == "lacks setting" and causes[0].setting == "fan"
+
+
+def test_parser_faults_dropped_refused_and_extra() -> None:
+    belief = _model("auto, dry, sleep")
+    dropped = classify(belief, TRUTH, {"mode": "dry", "fan": "high"}, {"mode": "dry"})
+    assert [c.kind for c in dropped] == ["parser dropped"]
+    refused = classify(belief, TRUTH, {"mode": "dry"}, None)
+    assert [c.kind for c in refused] == ["parser refused"]
+    extra = classify(belief, TRUTH, {"mode": "dry"}, {"mode": "dry", "fan": "low"})
+    assert [(c.kind, c.setting) for c in extra] == [("extra setting", "fan")]
