@@ -40,8 +40,8 @@ LAMP_LIST_RE = re.compile(
     r"(?:\s*\([^)]*\))?\s*:",
     re.IGNORECASE,
 )
-UP_WORDS = {"up", "plus", "more", "increase", "inc", "higher", "add"}
-DOWN_WORDS = {"down", "minus", "less", "decrease", "dec", "lower"}
+UP_WORDS = {"up", "plus", "more", "increase", "inc", "higher", "add", "right", "next", "forward"}
+DOWN_WORDS = {"down", "minus", "less", "decrease", "dec", "lower", "left", "prev", "previous"}
 POWER_TOKENS = {"power", "on_off", "onoff", "on", "power_on_off", "standby"}
 STOP_WORDS = {"stop", "cancel", "clear", "reset", "off", "end"}
 GENERIC_DIALS = {"dial", "knob", "select", "selector", "jog", "wheel", "control"}
@@ -167,11 +167,14 @@ class Builder:
             for t, lab in self.labels.items()
             if t not in tokens and lab.text and lab.text.upper() == lab.text
         ]
+        other_keys = {_cell_key(lab) for lab in other_labels} - {_cell_key(o) for o in own}
         for i in self.context(tokens):
             text = units[i].text
             unit = units[i]
             if i in elsewhere and i not in mentions and not unit.cells:
                 continue  # a sentence about another key says nothing about this one
+            if unit.cells and i not in mentions and _cell_key(unit.cells[0]) in other_keys:
+                continue  # a key table's row about another key ("| SIZE | S, M or L |")
             if unit.cells and unit.header and unit.cells[0].upper() in own:
                 head = unit.header[0].lower()
                 if not re.search(r"key|button|control|pad|dial|knob|symbol|name", head):
@@ -664,6 +667,11 @@ def _without(text: str, labels: list[str]) -> str:
 
 
 _KEYPAD_WORDS = re.compile(r"\b(?:numbers?|numeric|digits?|keypad|numerals?)\b", re.IGNORECASE)
+
+
+def _cell_key(cell: str) -> str:
+    """A table cell as a key's printed name compares (no markup, case or end dots)."""
+    return re.sub(r"[*_`]+", "", cell).strip(" .:").upper()
 
 
 def _keypad(r: Range, text: str) -> bool:

@@ -20,8 +20,10 @@ SYMBOLS: dict[str, tuple[str, ...]] = {
     "minus": ("−", "-"),
     "more": ("+",),
     "less": ("−", "-"),
-    "left": ("◀", "←", "<"),
-    "right": ("▶", "→", ">"),
+    "left": ("◀", "◄", "◁", "←", "<"),
+    "right": ("▶", "►", "▷", "→", ">"),
+    "prev": ("◀", "◄", "◁", "←"),
+    "next": ("▶", "►", "▷", "→"),
     "power": ("⏻",),
     "on_off": ("⏻",),
     "temp": ("°C", "°F"),  # a knob labelled only with the unit of what it sets

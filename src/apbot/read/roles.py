@@ -20,6 +20,7 @@ from apbot.read.build import (
     STOP_WORDS,
     Builder,
     Evidence,
+    _next_table_column,
     adjuster_direction,
 )
 from apbot.read.labels import words
@@ -214,8 +215,11 @@ def assign(b: Builder) -> None:
     for info in infos:
         if info.skill.startswith("turn") and info.name not in done:
             dials.setdefault(info.token, []).append(info)
+    for base in list(pairs):
+        if _pair_of_names(b, base, pairs[base]):
+            del pairs[base]  # it moves through a list of names: no amount for other keys
     paired = {n for p in pairs.values() for ns in p.values() for n in ns}
-    done |= paired | set(digits)
+    done |= paired | set(digits) | _used(b)
 
     # setting keys -------------------------------------------------------------------------
     keys = [i for i in infos if i.name not in done and not i.skill.startswith("turn")]
@@ -544,6 +548,75 @@ FUNCTION_WORDS = {
     "option",
     "options",
 }  # what a key does, not a programme it names
+
+
+LIST_WORDS = {"left", "right", "prev", "previous", "next", "forward"}
+
+
+def _used(b: Builder) -> set[str]:
+    return {a for steps in b.features.values() for st in steps for a in st["actions"]}
+
+
+def _pair_of_names(b: Builder, base: str, pair: dict[str, list[str]]) -> bool:
+    """A stepping pair whose sentences give a list of names (◄ ► "move through the cooking
+    functions" above a table of them) steps that list as a setting of its own, both ways."""
+    if not (pair["up"] and pair["down"]):
+        return False
+    tokens = [_token_of(b, n) for n in pair["up"] + pair["down"]]
+    if not all(set(t.split("_")) & LIST_WORDS for t in tokens):
+        return False  # + − and ▲ ▼ set amounts (often for other keys); ◄ ► move through lists
+    ev = b.evidence(tokens + ([base] if base in b.labels else []))
+    if not ev.values:
+        named = _named_column(b, tokens)
+        if named is not None:
+            ev = Evidence(values=[v.lower() for v in named[0]], values_at=named[1])
+    if not ev.values or len(ev.values) < 3 or _numeric_list(ev.values):
+        return False
+    noun = base or _list_noun(b, ev) or _noun(b, tokens, None) or "selection"
+    var = b.add_discrete(noun, ev.values, noun.upper(), ev)
+    eff = {**{a: "next" for a in pair["up"]}, **{a: "prev" for a in pair["down"]}}
+    b.feature(
+        f"select_{var}", [{"actions": pair["up"] + pair["down"], "variable": var, "effect": eff}]
+    )
+    b.note(f"variables.{var}.values", ", ".join(b.variables[var]["values"]), ev.values_at)
+    return True
+
+
+def _named_column(b: Builder, tokens: list[str]) -> tuple[list[str], int] | None:
+    """A table column of names headed by a noun the keys' own sentences use ("◄ ► move
+    through the cooking functions" and a table with a "Function" column)."""
+    units = b.manual.units
+    said = {
+        w[:5]
+        for t in tokens
+        if t in b.labels
+        for i in b.labels[t].mentions
+        for w in words(units[i].text)
+        if len(w) >= 4
+    }
+    for i, unit in enumerate(units):
+        if not unit.cells or unit.header:
+            continue  # only header rows
+        for column, cell in enumerate(unit.cells):
+            cw = words(cell)
+            if len(cw) == 1 and len(cw[0]) >= 4 and cw[0][:5] in said:
+                values = _next_table_column(units, i - 1, column)
+                if len(values) >= 3:
+                    return values, i
+    return None
+
+
+def _list_noun(b: Builder, ev: Evidence) -> str:
+    """The header of the table column a list was read from ("Function"), if any."""
+    if ev.values_at is None:
+        return ""
+    units = b.manual.units
+    for unit in units[ev.values_at : ev.values_at + 3]:
+        if unit.header:
+            for cell in unit.header:
+                if words(cell) and not re.fullmatch(r"[#n]o?\.?|", cell.strip().lower()):
+                    return "_".join(words(cell)[:2])
+    return ""
 
 
 def _pad_group(b: Builder, group: list[ActionInfo], label: Any, first_mention: Any) -> None:

@@ -49,7 +49,7 @@ class Manual:
         return ""
 
 
-_KEEP = frozenset("▲▼△▽◀▶⏻°↑↓←→⟳⟲↻↺")
+_KEEP = frozenset("▲▼△▽◀▶◄►◁▷⏻°↑↓←→⟳⟲↻↺")
 _SPECIAL = re.compile(r"[^\x20-\x7e\n\t]")  # anything outside printable ASCII
 
 

@@ -1,0 +1,76 @@
+"""Where value lists are found (and where they are not), each on a small manual of its own."""
+
+from __future__ import annotations
+
+from apbot.model.validate import check_model
+from apbot.read import read_manual
+
+KEY_TABLE = """
+## Keys
+
+| Key | Use |
+|---|---|
+| BLEND | Picks the blend; each touch goes to the next one. |
+| CUP | Chooses the cup: SMALL, MEDIUM or LARGE. |
+| START | Starts. |
+
+## Reference
+
+| Blend | Notes |
+|---|---|
+| SMOOTH | even and fine |
+| CHUNKY | leaves pieces |
+| ICE | short bursts |
+"""
+
+
+def test_a_key_table_row_about_another_key_lends_it_no_values() -> None:
+    model = read_manual(KEY_TABLE, ["press_blend", "press_cup", "press_start"]).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    assert model.variables["blend"].values == ["smooth", "chunky", "ice"]
+    assert model.variables["cup"].values == ["small", "medium", "large"]
+
+
+ARROWS = """
+## Panel
+
+| Pad | Purpose |
+|---|---|
+| ◄ ► | Step through the heating styles |
+| HEAT | Enter a heat level with the number pads |
+| GO | Start |
+
+## Styles
+
+The lit symbol shows the style; ► moves it one place on, ◄ one place back.
+
+| No. | Style | Good for |
+|---|---|---|
+| 1 | GRILL | browning |
+| 2 | FAN | even baking |
+| 3 | BOTTOM | crisp bases |
+| 4 | DEFROST | frozen food |
+"""
+
+
+def test_left_and_right_pads_step_the_list_named_in_their_sentence() -> None:
+    actions = ["press_left", "press_right", "press_heat", "press_go"]
+    actions += [f"press_{d}" for d in range(10)]
+    model = read_manual(ARROWS, actions).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    style = model.variables["style"]
+    assert style.values == ["grill", "fan", "bottom", "defrost"]
+    (step,) = model.features["select_style"]
+    assert step.effect == {"press_right": "next", "press_left": "prev"}
+
+
+def test_plus_and_minus_stay_the_amount_keys_of_an_entry_key() -> None:
+    text = ARROWS.replace("◄ ►", "+ −").replace("►", "+").replace("◄", "−")
+    text = text.replace("number pads", "+ and − keys")
+    model = read_manual(text, ["press_minus", "press_plus", "press_heat", "press_go"]).model
+    assert "style" not in model.variables
+    assert any(
+        "press_plus" in st.actions and st.variable == "heat"
+        for steps in model.features.values()
+        for st in steps
+    )
