@@ -74,3 +74,33 @@ def test_plus_and_minus_stay_the_amount_keys_of_an_entry_key() -> None:
         for steps in model.features.values()
         for st in steps
     )
+
+
+DIAL = """
+## Panel
+
+| Control | Use |
+|---|---|
+| MAIN dial | Turn it to choose a recipe; after HEAT or CLOCK it sets that value instead. |
+| HEAT | The dial now sets the heat. |
+| CLOCK | The dial now sets the cooking time. |
+| GO | Start. |
+
+## Recipes
+
+| Recipe | Heat | Cooking time |
+|---|---|---|
+| WINGS | 150–200 °C | 5–30 min |
+| FISH | 120–180 °C | 5–20 min |
+| CAKE | 140–170 °C | 20–60 min |
+"""
+
+
+def test_a_dial_that_sets_other_keys_values_turned_alone_picks_its_list() -> None:
+    actions = ["turn_cw", "turn_ccw", "press_heat", "press_clock", "press_go"]
+    model = read_manual(DIAL, actions).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    assert model.variables["recipe"].values == ["wings", "fish", "cake"]
+    assert model.features["select_recipe"][0].actions == ["turn_cw", "turn_ccw"]
+    clock = model.features["set_clock"]  # the dial still sets what a key hands it
+    assert clock[0].actions == ["press_clock"] and clock[1].actions == ["turn_cw", "turn_ccw"]

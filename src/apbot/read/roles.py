@@ -375,6 +375,11 @@ def assign(b: Builder) -> None:
                 f"features.set_{var}",
                 "each press steps to the next value (the manual names no other way)",
             )
+    for t in generic_dials:  # turned by itself, the dial picks the list its sentence names
+        cw = [i.name for i in dials[t] if i.skill == "turn_cw"]
+        ccw = [i.name for i in dials[t] if i.skill == "turn_ccw"]
+        if cw and ccw and _dial_list(b, t, cw, ccw):
+            used_steppers |= {k for k, pair in enumerate(steppers) if pair == (cw, ccw)}
     for index, (up, down) in enumerate(steppers):
         if index not in used_steppers:
             tokens_ = [n for n in up + down]
@@ -579,6 +584,26 @@ def _pair_of_names(b: Builder, base: str, pair: dict[str, list[str]]) -> bool:
         f"select_{var}", [{"actions": pair["up"] + pair["down"], "variable": var, "effect": eff}]
     )
     b.note(f"variables.{var}.values", ", ".join(b.variables[var]["values"]), ev.values_at)
+    return True
+
+
+def _dial_list(b: Builder, token: str, cw: list[str], ccw: list[str]) -> bool:
+    """A generic dial ("SELECT dial: turn to pick a program, or to change the temperature
+    after TEMP") whose sentences name a list of names: turning it alone steps that list."""
+    ev = b.evidence([token])
+    values = ev.values if ev.values and not _numeric_list(ev.values) else None
+    at = ev.values_at
+    named = _named_column(b, [token]) if values is None else None
+    if named is not None:
+        values, at = [v.lower() for v in named[0]], named[1]
+    if not values or len(values) < 3:
+        return False
+    found = Evidence(values=values, values_at=at)
+    noun = _list_noun(b, found) or "programme"
+    var = b.add_discrete(noun, values, noun.upper(), found)
+    eff = {**{a: "next" for a in cw}, **{a: "prev" for a in ccw}}
+    b.feature(f"select_{var}", [{"actions": cw + ccw, "variable": var, "effect": eff}])
+    b.note(f"variables.{var}.values", ", ".join(b.variables[var]["values"]), at)
     return True
 
 
