@@ -104,3 +104,35 @@ def test_a_dial_that_sets_other_keys_values_turned_alone_picks_its_list() -> Non
     assert model.features["select_recipe"][0].actions == ["turn_cw", "turn_ccw"]
     clock = model.features["set_clock"]  # the dial still sets what a key hands it
     assert clock[0].actions == ["press_clock"] and clock[1].actions == ["turn_cw", "turn_ccw"]
+
+
+SELECTING_ROWS = """
+## Pads
+
+| Pad | Function |
+|---|---|
+| RINSE+STEAM+AIR | Selects programme A. |
+| STEAM | Selects programme B. |
+| WARM AIR | Selects programme C. |
+| LAMP | Switches the lamp on and off. |
+| GO | Starts the programme. |
+"""
+
+
+def test_pads_each_selecting_one_programme_are_one_choice_and_the_unnamed_pad_is_the_free_row():
+    actions = ["press_all", "press_steam", "press_warm_air", "press_lamp", "press_go"]
+    model = read_manual(SELECTING_ROWS, actions).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    programme = model.variables["programme"]
+    assert set(programme.values) == {"steam", "warm air", "rinse+steam+air"}
+    assert model.features["all"][0].effect.to == "rinse+steam+air"
+    assert model.features["warm_air"][0].effect.to == "warm air"
+
+
+def test_the_alignment_ignores_spaces_round_joining_signs() -> None:
+    from apbot.model.schema import DiscreteVariable
+    from apbot.read.evaluate import value_set_of
+
+    spec = DiscreteVariable(type="discrete", values=["wash+dry", "wash & dry"])
+    assert value_set_of(spec, "wash + dry") == value_set_of(spec, "wash+dry")
+    assert value_set_of(spec, "wash&dry") == value_set_of(spec, "wash & dry")

@@ -310,7 +310,9 @@ SHORT_WORDS = {"hi": "high", "lo": "low", "med": "medium", "mid": "medium", "std
 
 
 def _spelled(text: str) -> str:
-    """A value with the panel abbreviations every manual uses spelt out ("HI" is "high")."""
+    """A value with the panel abbreviations every manual uses spelt out ("HI" is "high"), and
+    no spaces round joining signs ("wash + dry" is "wash+dry")."""
+    text = re.sub(r"\s*([+&/])\s*", r"\1", text)
     return " ".join(SHORT_WORDS.get(w, w) for w in text.split())
 
 

@@ -25,6 +25,7 @@ from apbot.read.build import (
 )
 from apbot.read.labels import words
 from apbot.read.shown import LOCK_CUE, RUNNING_CUE, shown_words
+from apbot.read.text import Unit
 
 
 def assign(b: Builder) -> None:
@@ -225,6 +226,10 @@ def assign(b: Builder) -> None:
     keys = [i for i in infos if i.name not in done and not i.skill.startswith("turn")]
     adders = [k for k in keys if k.skill == "press" and ADD_RE.match(k.token)]
     keys = [k for k in keys if k not in adders]
+    selecting = _selecting(b, keys)
+    if selecting:
+        _pad_group(b, selecting, label, first_mention)
+        keys = [k for k in keys if k not in selecting]
     pads = [k for k in keys if k.skill == "press" and not set(words(k.token)) & FUNCTION_WORDS]
     for group in _groups(b, pads, tables_only=True):
         if len(group) >= 3:
@@ -903,6 +908,11 @@ def _dial_values(b: Builder, token: str) -> bool:
     return bool(ev.values or ev.ranges)
 
 
+SELECTS_ONE = re.compile(
+    r"\s*(?:selects?|chooses?|picks?|starts?)\s+(?:the\s+)?(?:programs?|programmes?|menus?|modes?"
+    r"|functions?|cycles?|courses?|presets?)\s+(?!you\b|that\b|which\b|the\b)[\w\"'“]",
+    re.IGNORECASE,
+)
 PAD_NOUNS = re.compile(
     r"\b(?:programs?|programmes?|menus?|modes?|functions?|cycles?|courses?|presets?|foods?|"
     r"recipes?|dish(?:es)?|auto\w*)\b",
@@ -954,6 +964,40 @@ def _groups(
     for k in keys:
         out.setdefault(find(k.name), []).append(k)
     return [g for g in out.values() if len(g) >= 2]
+
+
+def _selecting(b: Builder, keys: list[ActionInfo]) -> list[ActionInfo]:
+    """Keys whose rows in a key table each say they select one named choice ("| DRY |
+    Selects programme P4 |"): one choice variable, whatever words the keys' names hold."""
+    rows = [u for u in b.manual.units if len(u.cells) >= 2 and SELECTS_ONE.match(u.cells[1])]
+    out: list[ActionInfo] = []
+    free: list[Unit] = []
+    for unit in rows:
+        name = unit.cells[0].strip(" *").upper()
+        found = [
+            k
+            for k in keys
+            if k.skill == "press"
+            and b.labels[k.controls[0]].line is not None
+            and b.labels[k.controls[0]].text.upper() == name
+        ]
+        out += found
+        if not found and not any(lab.text.upper() == name for lab in b.labels.values()):
+            free.append(unit)
+    unnamed = [k for k in keys if k.skill == "press" and b.labels[k.controls[0]].line is None]
+    if len(out) >= 2 and len(free) == 1 and len(unnamed) == 1:
+        # the one key the manual never names is the one row no key claims ("FULL" is
+        # "WASH+STERILISE+DRY")
+        label = b.labels[unnamed[0].controls[0]]
+        label.text, label.line = free[0].cells[0].strip(" *"), free[0].line
+        label.mentions = [i for i, u in enumerate(b.manual.units) if label.text in u.text]
+        out.append(unnamed[0])
+    out = _dedupe_keys(out)
+    return out if len(out) >= 2 else []
+
+
+def _dedupe_keys(keys: list[ActionInfo]) -> list[ActionInfo]:
+    return [k for i, k in enumerate(keys) if k not in keys[:i]]
 
 
 def _group_noun(b: Builder, group: list[ActionInfo]) -> str:
