@@ -136,3 +136,40 @@ def test_the_alignment_ignores_spaces_round_joining_signs() -> None:
     spec = DiscreteVariable(type="discrete", values=["wash+dry", "wash & dry"])
     assert value_set_of(spec, "wash + dry") == value_set_of(spec, "wash+dry")
     assert value_set_of(spec, "wash&dry") == value_set_of(spec, "wash & dry")
+
+
+GROUP_ROWS = """
+## Pads
+
+| Pad | What it is |
+|---|---|
+| LONG GRAIN · SHORT GRAIN · WILD | Grain modes. |
+| SOUP · CONGEE | Other modes. |
+| FLAVOUR | Softer or firmer rice. |
+| GO | Starts cooking. |
+
+Each pad lights when chosen. Your flavour choice stays the same when you change the mode.
+"""
+
+
+def test_rows_naming_several_pads_of_one_kind_make_one_choice() -> None:
+    actions = [
+        "press_long_grain", "press_short_grain", "press_wild", "press_soup", "press_congee",
+        "press_flavour", "press_go",
+    ]  # fmt: skip
+    model = read_manual(GROUP_ROWS, actions).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    mode = model.variables["mode"]
+    assert mode.values == ["long grain", "short grain", "wild", "soup", "congee"]
+    assert model.features["soup"][0].effect.to == "soup"
+
+
+def test_a_setting_said_to_stay_when_the_mode_changes_is_not_reset() -> None:
+    text = GROUP_ROWS + "\nChanging the mode brings back its default settings.\n"
+    actions = [
+        "press_long_grain", "press_short_grain", "press_wild", "press_soup", "press_congee",
+        "press_flavour", "press_go",
+    ]  # fmt: skip
+    model = read_manual(text, actions).model
+    resets = {r for st in model.features["soup"] for r in st.reset}
+    assert "flavour" in model.variables and "flavour" not in resets

@@ -321,6 +321,12 @@ def _defaults(
         break
 
 
+STAY_RE = re.compile(
+    r"\b(?:stays?|remains?|kept|keeps?|unchanged|not (?:reset|lost|changed?|cleared))\b", re.I
+)
+RESET_NOUN_RE = re.compile(
+    r"\b(?:programmes?|programs?|menus?|modes?|presets?|functions?|cycles?|courses?)\b", re.I
+)
 RESET_RE = re.compile(
     r"\b(?:programmes?|programs?|menus?|modes?|presets?|functions?|cycles?|courses?|selector)\b"
     r"[^.]*\b(?:defaults?|standard values|reset|go(?:es)? back|return|wipes?|clear|lost|forget)"
@@ -332,9 +338,20 @@ RESET_RE = re.compile(
 
 def apply_resets(b: Builder) -> None:
     """ "Choosing a programme loads its defaults": the programme's steps reset the settings."""
-    at = next((i for i, u in enumerate(b.manual.units) if RESET_RE.search(u.text)), None)
+    units = b.manual.units
+    at = next(
+        (i for i, u in enumerate(units) if RESET_RE.search(u.text) and not STAY_RE.search(u.text)),
+        None,
+    )
     if at is None:
         return
+    kept = {  # "your taste choice stays the same when you change the mode"
+        n
+        for u in units
+        if STAY_RE.search(u.text) and RESET_NOUN_RE.search(u.text)
+        for n in b.variables
+        if set(words(n.replace("_", " "))) & set(words(u.text))
+    }
     fixed = {v for g in b.guards for v in g["when"]}
     parents = {s.get("depends_on") for s in b.variables.values()} - {None}
     choices = [
@@ -350,7 +367,11 @@ def apply_resets(b: Builder) -> None:
     others = [
         n
         for n, s in b.variables.items()
-        if n != choice and n not in fixed and s.get("depends_on") is None and n != "running"
+        if n != choice
+        and n not in fixed
+        and n not in kept
+        and s.get("depends_on") is None
+        and n != "running"
     ]
     if not others:
         return

@@ -993,7 +993,30 @@ def _selecting(b: Builder, keys: list[ActionInfo]) -> list[ActionInfo]:
         label.mentions = [i for i, u in enumerate(b.manual.units) if label.text in u.text]
         out.append(unnamed[0])
     out = _dedupe_keys(out)
-    return out if len(out) >= 2 else []
+    if len(out) >= 2:
+        return out
+    # rows naming several keys that are all one kind of choice ("| WHITE · BROWN | Rice modes |")
+    by_noun: dict[str, list[ActionInfo]] = {}
+    for unit in b.manual.units:
+        if len(unit.cells) < 2:
+            continue
+        m = PAD_NOUNS.search(unit.cells[1])
+        if not m or len(unit.cells[1].split()) > 4:
+            continue  # a short cell that only says what they are
+        named = [
+            k
+            for k in keys
+            if k.skill == "press"
+            and b.labels[k.controls[0]].line is not None
+            and re.search(
+                rf"(?<![A-Z0-9]){re.escape(b.labels[k.controls[0]].text.upper())}(?![A-Z0-9])",
+                unit.cells[0].upper(),
+            )
+        ]
+        if len(named) >= 2:
+            by_noun.setdefault(m.group(0).lower().rstrip("s"), []).extend(named)
+    best = max(by_noun.values(), key=len, default=[])
+    return _dedupe_keys(best) if len(_dedupe_keys(best)) >= 3 else []
 
 
 def _dedupe_keys(keys: list[ActionInfo]) -> list[ActionInfo]:
