@@ -173,3 +173,34 @@ def test_a_setting_said_to_stay_when_the_mode_changes_is_not_reset() -> None:
     model = read_manual(text, actions).model
     resets = {r for st in model.features["soup"] for r in st.reset}
     assert "flavour" in model.variables and "flavour" not in resets
+
+
+ORDER = """
+## Programmes
+
+| Key | Use |
+|---|---|
+| PROGRAMME dial | Turn it to choose a programme. |
+| GO | Start. |
+
+The programmes sit round the dial in this order, clockwise. Defaults are in bold.
+A dash means the setting is fixed.
+
+| Programme | Heat | Spin |
+|---|---|---|
+| Everyday | **40** | 1200 |
+| Linen | **60** | 1400 |
+| Silk | **30** | — |
+
+## Stopping
+
+- Pause: touch GO.
+- Cancel: turn the dial.
+- End of programme: the drum unlocks.
+"""
+
+
+def test_a_sentence_saying_in_this_order_points_to_the_table_a_line_on() -> None:
+    model = read_manual(ORDER, ["turn_programme_cw", "turn_programme_ccw", "press_go"]).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    assert model.variables["programme"].values == ["everyday", "linen", "silk"]

@@ -60,6 +60,9 @@ RUNNING_RE = re.compile(
 )
 
 
+ORDER_RE = re.compile(r"\bin (?:this|the following|that) order\b", re.I)
+
+
 @dataclass
 class Evidence:
     values: list[str] | None = None
@@ -311,6 +314,14 @@ class Builder:
             # a long line is a list only when it is all short names ("OFF · Cottons · Eco …")
             if after and (len(units[i + 1].text) <= 120 or _all_names(after, units[i + 1].text)):
                 out.append((after, 2.6))
+        if ORDER_RE.search(text) and not text.rstrip().endswith((":", "order")):
+            # "arranged round the knob in this order, clockwise." and the table a line or two on
+            for k in range(i + 1, min(i + 4, len(units))):
+                if units[k].cells:
+                    column = _next_table_column(units, k - 1, self._own_column(k - 1, tokens))
+                    if column and (mention or self._header_names(k - 1, tokens)):
+                        out.append((column, 2.5))
+                    break
         if text.rstrip().endswith((":", "order")) or text == unit.heading:
             bullets = _bullet_items(units, i, lead=2 if text == unit.heading else 0)
             if bullets:
