@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from apbot.model.domain import all_values
 from apbot.model.validate import check_model
 from apbot.read import read_manual
 
@@ -204,3 +205,17 @@ def test_a_sentence_saying_in_this_order_points_to_the_table_a_line_on() -> None
     model = read_manual(ORDER, ["turn_programme_cw", "turn_programme_ccw", "press_go"]).model
     assert not [p for p in check_model(model) if p.severity == "error"]
     assert model.variables["programme"].values == ["everyday", "linen", "silk"]
+
+
+def test_a_knobs_marks_are_read_where_its_label_stands_the_second_time() -> None:
+    text = """
+## Knobs
+
+- **HEAT** and **SPEED** stop at both ends; HEAT is marked 30 45 60 75, SPEED is marked
+  0 500 900 1300.
+"""
+    actions = ["turn_heat_cw", "turn_heat_ccw", "turn_speed_cw", "turn_speed_ccw"]
+    model = read_manual(text, actions).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    assert set(all_values(model.variables["heat"])) == {30, 45, 60, 75}
+    assert set(all_values(model.variables["speed"])) == {0, 500, 900, 1300}

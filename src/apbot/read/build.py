@@ -306,7 +306,11 @@ class Builder:
             amounts = quantity_run(span) if mention else None
             if amounts:
                 out.append((amounts, 1.9))
-        run = find_number_run(self._own_span(text, tokens) if mention else text)
+        run = None
+        for span in self._own_spans(text, tokens) if mention else [text]:
+            run = find_number_run(span)  # "°C and RPM stop. °C is marked 20 30 40; RPM is …"
+            if run:
+                break
         if run:
             out.append((run, 2.2 if mention else 1.2))
         if text.rstrip().endswith(":") and i + 1 < len(units) and not units[i + 1].cells:
@@ -336,6 +340,14 @@ class Builder:
                 related = mention or text != unit.heading or self._header_names(i, tokens)
                 out.append((column, 2.5 if related else 1.2))
         return out
+
+    def _own_spans(self, text: str, tokens: list[str]) -> list[str]:
+        """:meth:`_own_span` from each place the key's label stands in the sentence."""
+        own = [self.labels[t].text for t in tokens if t in self.labels and self.labels[t].text]
+        starts = sorted({m.start() for lab in own for m in re.finditer(re.escape(lab), text)})
+        if len(starts) <= 1:
+            return [self._own_span(text, tokens)]
+        return [self._own_span(text[k:], tokens) for k in starts]
 
     def _own_span(self, text: str, tokens: list[str]) -> str:
         """The part of a sentence about the key: from its label to the next other key's label
