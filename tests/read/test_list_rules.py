@@ -219,3 +219,46 @@ def test_a_knobs_marks_are_read_where_its_label_stands_the_second_time() -> None
     assert not [p for p in check_model(model) if p.severity == "error"]
     assert set(all_values(model.variables["heat"])) == {30, 45, 60, 75}
     assert set(all_values(model.variables["speed"])) == {0, 500, 900, 1300}
+
+
+WASH_MARKS = """
+## Panel
+
+Below the TEMP key a row of lamps is printed ❄ 30 50 70, one lit at a time.
+Turn the PROGRAMME knob: DAILY → LINEN → RINSE → back to DAILY.
+
+| Programme | Wash temperature |
+|---|---|
+| Daily | ❄ – 50 °C |
+| Linen | 30 – 70 °C |
+| Rinse | — |
+"""
+
+
+def test_a_snowflake_mark_is_the_cold_value_and_a_span_of_marks_is_a_programmes_values() -> None:
+    actions = ["press_temp", "turn_programme_cw", "turn_programme_ccw"]
+    model = read_manual(WASH_MARKS, actions).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    warmth = model.variables["temp"]
+    assert warmth.depends_on == "programme"
+    assert warmth.cases["daily"].values == ["cold", "30", "50"]
+    assert warmth.cases["linen"].values == ["30", "50", "70"]
+
+
+CODES = """
+## Pads
+
+| Pad | Function |
+|---|---|
+| HOT | Selects programme H1. |
+| WARM | Selects programme H2. |
+| COOL | Selects programme H3. |
+
+The programme code appears on the display while the pad is lit.
+"""
+
+
+def test_pads_selecting_programmes_by_code_are_shown_by_their_codes() -> None:
+    model = read_manual(CODES, ["press_hot", "press_warm", "press_cool"]).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    assert model.variables["programme"].show == {"hot": "H1", "warm": "H2", "cool": "H3"}

@@ -253,11 +253,27 @@ def _cases(
     return cases
 
 
+def _value_span(values: list[str], cell: str) -> list[str] | None:
+    """The listed values from one to another ("COLD – 60 °C" over cold, 20, 30, 40, 60, 90)."""
+    m = re.fullmatch(r"\s*(.+?)\s*(?:–|—|-|\bto\b)\s*(.+?)\s*", cell)
+    if not m or len(values) < 3:
+        return None
+    unit = r"\s*(?:°\s*[cf]|°|rpm|%)?\s*"
+    ends = [re.sub(rf"^{unit}|{unit}$", "", _norm(x)) for x in m.groups()]
+    if not all(e in values for e in ends):
+        return None
+    a, b = values.index(ends[0]), values.index(ends[1])
+    return values[a : b + 1] if a < b else None
+
+
 def _case(spec: dict[str, Any], cell: str) -> Any:
     kind = spec.get("type")
     if kind == "discrete":
         if len(spec.get("values", [])) == 2 and _norm(cell) in spec["values"]:
             return {"values": list(spec["values"]), "initial": _norm(cell)}  # a default
+        span = _value_span(spec.get("values", []), cell)
+        if span:
+            return {"values": span}  # "cold – 60 °C" over the knob's marks
         items = [_norm(i) for i in re.split(r"\s*(?:,|/|·|\bor\b)\s*", cell)]
         items = [i for i in items if i and i not in ("—", "-", "–", "n/a") and len(i) <= 24]
         return {"values": list(dict.fromkeys(items))} if items else None

@@ -228,8 +228,9 @@ def assign(b: Builder) -> None:
     keys = [k for k in keys if k not in adders]
     selecting = _selecting(b, keys)
     if selecting:
-        _pad_group(b, selecting, label, first_mention)
+        var = _pad_group(b, selecting, label, first_mention)
         keys = [k for k in keys if k not in selecting]
+        _shown_codes(b, var, selecting)
     pads = [k for k in keys if k.skill == "press" and not set(words(k.token)) & FUNCTION_WORDS]
     for group in _groups(b, pads, tables_only=True):
         if len(group) >= 3:
@@ -649,7 +650,7 @@ def _list_noun(b: Builder, ev: Evidence) -> str:
     return ""
 
 
-def _pad_group(b: Builder, group: list[ActionInfo], label: Any, first_mention: Any) -> None:
+def _pad_group(b: Builder, group: list[ActionInfo], label: Any, first_mention: Any) -> str:
     """Keys the manual lists together: one variable, each key going to its own value."""
     noun = _group_noun(b, group)
     var = b.unique(noun, b.variables)
@@ -672,6 +673,7 @@ def _pad_group(b: Builder, group: list[ActionInfo], label: Any, first_mention: A
         b.note(f"variables.{var}.initial", f"starts at {start}, which no key selects", at)
     for key, value in zip(group, values, strict=True):  # one go-to feature per key
         b.feature(key.token, [{"actions": [key.name], "variable": var, "effect": {"to": value}}])
+    return var
 
 
 START_RE = re.compile(
@@ -913,6 +915,12 @@ SELECTS_ONE = re.compile(
     r"|functions?|cycles?|courses?|presets?)\s+(?!you\b|that\b|which\b|the\b)[\w\"'“]",
     re.IGNORECASE,
 )
+CODE_RE = re.compile(r"\b([A-Z]{1,3}-?\d{1,2})\b")
+CODE_SHOWN_RE = re.compile(
+    r"\b(?:code|number)\b[^.]*\b(?:appears?|shows?|shown|displayed|lights?)\b"
+    r"|\bdisplay\b[^.]*\bshows?\b[^.]*\b(?:code|number)\b",
+    re.IGNORECASE,
+)
 PAD_NOUNS = re.compile(
     r"\b(?:programs?|programmes?|menus?|modes?|functions?|cycles?|courses?|presets?|foods?|"
     r"recipes?|dish(?:es)?|auto\w*)\b",
@@ -1017,6 +1025,33 @@ def _selecting(b: Builder, keys: list[ActionInfo]) -> list[ActionInfo]:
             by_noun.setdefault(m.group(0).lower().rstrip("s"), []).extend(named)
     best = max(by_noun.values(), key=len, default=[])
     return _dedupe_keys(best) if len(_dedupe_keys(best)) >= 3 else []
+
+
+def _shown_codes(b: Builder, var: str, keys: list[ActionInfo]) -> None:
+    """Rows saying "Selects programme P3" for every key, and a manual saying the code is what
+    the display shows: each value is shown by its code."""
+    if not any(CODE_SHOWN_RE.search(u.text) for u in b.manual.units):
+        return
+    codes: dict[str, str] = {}
+    for unit in b.manual.units:
+        if len(unit.cells) < 2 or not SELECTS_ONE.match(unit.cells[1]):
+            continue
+        m = CODE_RE.search(unit.cells[1])
+        for k in keys:
+            if m and b.labels[k.controls[0]].text.upper() == unit.cells[0].strip(" *").upper():
+                codes[k.name] = m.group(1)
+    if len(codes) != len(keys) or len(set(codes.values())) != len(keys):
+        return
+    spec = b.variables[var]
+    shown = {}
+    for k in keys:
+        effect = b.features[k.token][0]["effect"]
+        shown[effect["to"]] = codes[k.name]
+    spec["show"] = shown
+    b.note(
+        f"variables.{var}.show",
+        "the display shows each one's code: " + ", ".join(f"{v} {c}" for v, c in shown.items()),
+    )
 
 
 def _dedupe_keys(keys: list[ActionInfo]) -> list[ActionInfo]:

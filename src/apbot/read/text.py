@@ -61,6 +61,8 @@ def _clean_chars(text: str) -> str:
         cat = unicodedata.category(ch)
         if cat.startswith("C"):
             return ""
+        if ch == "❄":
+            return " COLD "  # the snowflake printed for a cold wash or a cold setting
         if cat == "So" and ch not in _KEEP:
             return " "  # emoji and dingbats
         return ch

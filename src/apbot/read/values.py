@@ -381,6 +381,8 @@ def find_number_run(text: str) -> list[str] | None:
             if rest and re.fullmatch(r"[A-Z][A-Z-]{1,9}", rest[0]):
                 if rest[0].lower() == "off":
                     run.append("0")
+                elif rest[0].lower() in ("cold", "cool"):  # a wash knob's first mark: a value
+                    run.append(rest[0].lower())
                 rest = rest[1:]
             for token in rest:
                 if re.fullmatch(r"\d+(?:[.,]\d+)?", token):
