@@ -262,3 +262,22 @@ def test_pads_selecting_programmes_by_code_are_shown_by_their_codes() -> None:
     model = read_manual(CODES, ["press_hot", "press_warm", "press_cool"]).model
     assert not [p for p in check_model(model) if p.severity == "error"]
     assert model.variables["programme"].show == {"hot": "H1", "warm": "H2", "cool": "H3"}
+
+
+def test_a_sentence_led_by_the_settings_name_lists_its_values_anywhere() -> None:
+    text = """
+## Keys
+
+| Key | Use |
+|---|---|
+| AIR TIME | Opens the airing-time setting. |
+
+## Reference
+
+Airing-time settings available: 15 · 30 · 45 · 60 · 120 min.
+"""
+    model = read_manual(text, ["press_air_time"]).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    values = set(all_values(model.variables["air_time"]))
+    assert {"00:15:00", "00:45:00", "02:00:00"} <= {str(v) for v in values}
+    assert "01:30:00" not in {str(v) for v in values}

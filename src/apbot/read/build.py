@@ -246,6 +246,12 @@ class Builder:
                     if found:
                         best, best_prio, ev.values_at = found, 2.0, i
                         break
+        if best_prio < 1.85:  # "Drying-time settings available: 10 · 20 · 30 · 60 min."
+            for i, unit in enumerate(units):
+                led = self._led_list(unit.text, tokens)
+                if led and not _keyish(led, others, own):
+                    best, best_prio, ev.values_at = led, 1.85, i
+                    break
         if best_prio < 1.8:  # lists tied to the setting's own word anywhere in the manual
             for t in tokens:
                 for w in [x for x in words(t.replace("_", " ")) if len(x) >= 4][:1]:
@@ -340,6 +346,26 @@ class Builder:
                 related = mention or text != unit.heading or self._header_names(i, tokens)
                 out.append((column, 2.5 if related else 1.2))
         return out
+
+    def _led_list(self, text: str, tokens: list[str]) -> list[str] | None:
+        """A list after a colon in a sentence that starts by naming the setting ("Drying-time
+        settings available: …" for DRY TIME, "Timer steps: …" for TIMER)."""
+        m = re.match(r"\s*([^:.;]{3,50}):\s*(.+)", text)
+        if not m:
+            return None
+        lead = words(m.group(1))
+        names = [words(t.replace("_", " ")) for t in tokens]
+        names += [words(self.labels[t].text) for t in tokens if t in self.labels]
+        if not any(
+            name
+            and len(name) <= len(lead)
+            and all(lw.startswith(nw) and len(nw) >= 3 for nw, lw in zip(name, lead, strict=False))
+            for name in names
+        ):
+            return None
+        found = find_list(text)
+        items = found[0] if found else bare_list(m.group(2))
+        return items if items and len(items) >= 3 else None
 
     def _own_spans(self, text: str, tokens: list[str]) -> list[str]:
         """:meth:`_own_span` from each place the key's label stands in the sentence."""

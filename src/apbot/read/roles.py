@@ -361,6 +361,8 @@ def assign(b: Builder) -> None:
         elif steppers:
             up, down = steppers[0]
             used_steppers.add(0)
+            if ev.values and len(ev.values) >= 3 and _numeric_list(ev.values):
+                ev = _list_evidence(ev)  # the settings listed one by one, not only the ends
             var = b.add_number(name, lab, ev, cyclic=False)
             b.feature(
                 f"set_{var}",
