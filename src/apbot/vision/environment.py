@@ -79,6 +79,11 @@ class PanelEnvironment:
         self._reference = photo
         return photo
 
+    @property
+    def latest(self) -> Photo:
+        """The latest photo of the panel (the one touches are aimed at)."""
+        return self._reference
+
     def control_at(self, x: float, y: float, photo: Photo) -> str | None:
         """The control under photo pixel (x, y), if any."""
         lx, ly = photo.layout_point(x, y)
@@ -180,6 +185,13 @@ class ImageEnvironment:
             self.panel.touches += 1
             return self._feedback(Touch((), None, self.panel.photo(), None))
         return self._feedback(self.panel.touch(grounded.points, grounded.skill, seconds))
+
+    def touch(self, points: Sequence[tuple[float, float]], skill: str,
+              seconds: float | None = None) -> Feedback:  # fmt: skip
+        """One step that touches photo points directly (a method that picks boxes itself,
+        not action names): the step is counted and the new photo read."""
+        self.steps += 1
+        return self._feedback(self.panel.touch(points, skill, seconds))
 
     def _feedback(self, touch: Touch) -> Feedback:
         reading = self.display.read(touch.photo.image)
