@@ -15,7 +15,7 @@ would cost on a real appliance (a wrong key pressed, a wrong text read).
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -154,11 +154,13 @@ class ImageEnvironment:
     """
 
     def __init__(self, panel: PanelEnvironment, actions: Sequence[str],
-                 grounding: Grounding | None = None) -> None:  # fmt: skip
+                 grounding: Grounding | None = None,
+                 grounder: Callable[[np.ndarray, Sequence[str]], Grounding] = ground
+                 ) -> None:  # fmt: skip
         self.panel = panel
         self._actions = tuple(actions)
         first = panel.reset()
-        self.grounding = grounding or ground(np.asarray(first.image), self._actions)
+        self.grounding = grounding or grounder(np.asarray(first.image), self._actions)
         self.display = DisplayCamera(self.grounding.window)
         self.steps = 0
 
