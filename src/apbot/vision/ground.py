@@ -34,6 +34,8 @@ from apbot.vision.vocabulary import label_symbols, label_tokens, name_parts, wor
 
 MIN_SCORE = 0.6
 """A label must match an action's words at least this well to ground it."""
+UNPRINTED_COST = 0.85
+"""A key matched on its printed words only (a name word printed nowhere) scores this much less."""
 
 
 @dataclass
@@ -150,6 +152,7 @@ def make_labels(image: np.ndarray, detection: Detection, window: Window | None) 
     for i, t in enumerate(texts):
         if i not in used:
             labels.append(Label(t.text, t.box))
+    _misread_symbols(image, labels)
     _shape_symbols(image, shapes, labels)
     _symbol_labels(image, shapes, labels, line, window)
     labels = _join_line_symbols(labels)
@@ -157,6 +160,36 @@ def make_labels(image: np.ndarray, detection: Detection, window: Window | None) 
     for label in labels:
         label.symbols += [s for s in _edge_symbols(image, label) if s not in label.symbols]
     return labels
+
+
+def _misread_symbols(image: np.ndarray, labels: list[Label]) -> None:
+    """A pictogram OCR read as a character or two (💡 as ``9``, + as ``X``, ☀ as ``米``, ▷ as
+    ``D``): when the glyph matches one symbol template clearly better than any other, the
+    label means that symbol too (its text is kept)."""
+    from apbot.vision.icons import ink_of, rank_ink
+
+    for label in labels:
+        text = label.text.replace(" ", "")
+        if label.symbols or not 0 < len(text) <= 2:
+            continue
+        if label.control is not None and _area(label.control) < 12 * _area(label.box):
+            bx0, by0, bx1, by1 = label.control  # the whole key face: OCR may box part of it
+            mx, my = 0.18 * (bx1 - bx0), 0.18 * (by1 - by0)
+            x0, y0, x1, y1 = int(bx0 + mx), int(by0 + my), int(bx1 - mx), int(by1 - my)
+            m = 0
+        else:
+            x0, y0, x1, y1 = (int(v) for v in label.box)
+            m = max(2, int(0.1 * (y1 - y0)))
+        crop = image[max(0, y0 - m) : y1 + m, max(0, x0 - m) : x1 + m]
+        if crop.size == 0 or min(crop.shape[:2]) < 8:
+            continue
+        ranked = rank_ink(ink_of(crop))
+        if len(ranked) < 2:
+            continue
+        (symbol, best), (_, second) = ranked[0], ranked[1]
+        digits = text.isdigit()  # a real digit must look far more like the symbol
+        if best >= (0.85 if digits else 0.78) and best - second >= (0.2 if digits else 0.06):
+            label.symbols.append(symbol)
 
 
 def _wordy(label: Label) -> bool:
@@ -275,7 +308,7 @@ def _edge_symbols(image: np.ndarray, label: Label) -> list[str]:
     crop = image[iy0 : int(max(ey1, y1)) + 1, ix0 : int(max(ex1, x1)) + 1]
     if crop.size == 0 or min(crop.shape[:2]) < 8:
         return []
-    from apbot.vision.icons import ink_of
+    from apbot.vision.icons import ink_of, rank_ink
 
     ink = ink_of(crop).astype(np.uint8)
     count, parts, stats, _ = cv2.connectedComponentsWithStats(ink, 8)
@@ -316,10 +349,16 @@ def _edge_symbols(image: np.ndarray, label: Label) -> list[str]:
         if h < 0.6 * height and w < 0.6 * height:
             continue
         mask = np.isin(parts[gy0:gy1, gx0:gx1], glyph)
+        fill = mask.sum() / float(w * h)
         symbol, _ = classify_ink(mask, minimum=0.85, among=EDGE_SYMBOLS + STROKE_SYMBOLS)
+        if not symbol and fill < 0.35:  # an outlined triangle: thin strokes, mostly empty
+            ranked = rank_ink(mask)
+            best, score = ranked[0] if ranked else ("", 0.0)
+            if best in HOLLOW_SYMBOLS and score >= 0.65 and score - ranked[1][1] >= 0.06:
+                symbol = best
         if not symbol:
             continue
-        if symbol in EDGE_SYMBOLS and not 0.42 <= mask.sum() / float(w * h) <= 0.7:
+        if symbol in EDGE_SYMBOLS and not 0.42 <= fill <= 0.7:
             continue  # the arrows are solid triangles; letters are strokes
         if symbol not in found:
             found.append(symbol)
@@ -328,6 +367,8 @@ def _edge_symbols(image: np.ndarray, label: Label) -> list[str]:
 
 EDGE_SYMBOLS = "▲▼◀▶◄►"
 """Solid arrows printed beside a word on a key (``TEMP ▲``, ``◀ PROG``)."""
+HOLLOW_SYMBOLS = "◁▷"
+"""Outlined arrows printed beside a word or a unit (``◁ h``, ``h ▷``)."""
 STROKE_SYMBOLS = "⏻↕↔"
 """Line-drawn symbols printed beside a word (``⏻ START/STOP``, ``↕ SWING``)."""
 
@@ -355,6 +396,11 @@ def _mark_ticks(detection: Detection, labels: list[Label]) -> None:
         for label in labels:
             if label.control is not None and _area(label.control) < 4 * _area(label.box):
                 continue
+            if label.control is not None and (
+                not _inside(circle.centre, label.control)
+                or _area(circle.box) < 1.5 * _area(label.control)
+            ):
+                continue  # printed on a key of its own (round or beside the dial): its name
             lx, ly = _centre(label.box)
             d = float(np.hypot(lx - cx, ly - cy))
             small = (label.box[3] - label.box[1]) < 0.85 * typical
@@ -429,10 +475,18 @@ def ground(image: np.ndarray | None, actions: Sequence[str]) -> Grounding:
     for skill, parts in parsed.values():
         for part in parts:
             keys[tuple(part)] = keys.get(tuple(part), False) or skill.startswith("turn")
+    # a name word printed nowhere ("delay" of delay_up on a key printed "h ▷") is left out
+    # of its key's match, at a cost, when the key's other words are printed
+    named = {w for key in keys for w in key}
+    printed = {w for w in named if any(_score([w], lb, False) >= MIN_SCORE for lb in labels)}
     pairs = []
     for key, turn in keys.items():
+        shown = [w for w in key if w in printed]
+        partial = 0 < len(shown) < len(key)
         for index, label in enumerate(labels):
             score = _score(list(key), label, turn)
+            if partial:
+                score = max(score, UNPRINTED_COST * _score(shown, label, turn))
             if score >= MIN_SCORE:
                 pairs.append((score, key, index))
     pairs.sort(key=lambda p: (-p[0], p[1]))
@@ -443,9 +497,19 @@ def ground(image: np.ndarray | None, actions: Sequence[str]) -> Grounding:
             continue
         chosen[key] = (index, score)
         taken.add(index)
+    claimed = [_target(labels[i], detection, window, keys[key]) for key, (i, _) in chosen.items()]
+    _eliminate(keys, labels, chosen, taken, claimed, window)
+    for action, (skill, parts) in list(parsed.items()):
+        both = tuple(parts[0])
+        if skill == "hold" and len(parts) == 1 and both not in chosen:
+            for i in range(1, len(both)):
+                if both[:i] in chosen and both[i:] in chosen:
+                    parsed[action] = (skill, [list(both[:i]), list(both[i:])])
+                    break
+    claimed = [_target(labels[i], detection, window, keys[key]) for key, (i, _) in chosen.items()]
     result: dict[str, Grounded] = {}
     missing: dict[str, str] = {a: "a wait touches no control" for a in waits}
-    dial = _only_dial(detection, window)
+    dial = _only_dial(detection, window, claimed)
     turned = {tuple(p[0]) for k, p in parsed.values() if k.startswith("turn") and p != [[]]}
     lone_turn = next(iter(turned)) if len(turned) == 1 and not any(
         k.startswith("turn") and p == [[]] for k, p in parsed.values()
@@ -478,6 +542,48 @@ def ground(image: np.ndarray | None, actions: Sequence[str]) -> Grounding:
                      time.perf_counter() - started)  # fmt: skip
 
 
+def _eliminate(keys: dict[tuple[str, ...], bool], labels: list[Label],
+               chosen: dict[tuple[str, ...], tuple[int, float]], taken: set[int],
+               claimed: list[BoxT], window: Window | None) -> None:  # fmt: skip
+    """The one key name nothing matched and the one labelled control nothing claimed belong
+    together (``hot`` and a key printed ``65°``, ``grind`` and ``BEANS/GROUND``): a panel has
+    no key without a use, and a name with no key cannot be pressed. Only one to one, and only
+    labels on a key or with a word or symbol, off the display, not dial ticks, and outside
+    every control already claimed."""
+    unmatched = [
+        k
+        for k, turn in keys.items()
+        if k and not turn and k not in chosen and not _combination(k, keys)
+    ]
+    if len(unmatched) != 1:
+        return
+    free = []
+    for index, label in enumerate(labels):
+        if index in taken or label.tick:
+            continue
+        if not (label.control is not None or _wordy(label) or label.symbols):
+            continue
+        place = label.control or label.box
+        if window is not None and _inside(_centre(place), window.box, 4):
+            continue
+        if any(_inside(_centre(place), box, 2) or _inside(_centre(box), place) for box in claimed):
+            continue
+        free.append(index)
+    keyed = [i for i in free if labels[i].control is not None]
+    for tier in ([i for i in keyed if _wordy(labels[i])], keyed, free):
+        if tier:  # the likeliest kind of place first: a named key, any key, any label
+            if len(tier) == 1:
+                chosen[unmatched[0]] = (tier[0], MIN_SCORE)
+                taken.add(tier[0])
+            return
+
+
+def _combination(key: tuple[str, ...], keys: Iterable[tuple[str, ...]]) -> bool:
+    """Whether ``key`` is two other keys' words one after the other (a two-key hold)."""
+    others = set(keys) - {key}
+    return any(key[:i] in others and key[i:] in others for i in range(1, len(key)))
+
+
 def _target(label: Label, detection: Detection, window: Window | None, turn: bool) -> BoxT:
     """The box to touch for a label: its control, a dial it names, the shape above it."""
     shapes = _controls(detection, window)
@@ -507,10 +613,17 @@ def _target(label: Label, detection: Detection, window: Window | None, turn: boo
     return label.box
 
 
-def _only_dial(detection: Detection, window: Window | None) -> BoxT | None:
-    """The panel's dial when one circle stands out (the largest, clearly larger than any other)."""
+def _only_dial(detection: Detection, window: Window | None, claimed: Sequence[BoxT] = ()
+               ) -> BoxT | None:  # fmt: skip
+    """The panel's dial when one circle stands out (the largest, clearly larger than any
+    other); a circle on a control already claimed by its label is a round key, not a dial."""
     circles = sorted(
-        (c for c in _controls(detection, window) if c.kind == "circle"),
+        (
+            c
+            for c in _controls(detection, window)
+            if (c.kind == "circle" or _round(c))
+            and not any(_inside(_centre(b), c.box) for b in claimed)
+        ),
         key=lambda c: -(c.box[2] - c.box[0]),
     )
     if not circles:
