@@ -523,7 +523,7 @@ def ground(image: np.ndarray | None, actions: Sequence[str]) -> Grounding:
             continue
         boxes, names, scores = [], [], []
         for part in parts:
-            hit = chosen.get(tuple(part))
+            hit = chosen.get(_owner(tuple(part), parts, chosen, keys, labels))
             if hit is None:
                 break
             label = labels[hit[0]]
@@ -578,6 +578,19 @@ def _eliminate(keys: dict[tuple[str, ...], bool], labels: list[Label],
             return
 
 
+def _owner(part: tuple[str, ...], parts: list[list[str]],
+           chosen: dict[tuple[str, ...], tuple[int, float]],
+           keys: dict[tuple[str, ...], bool], labels: list[Label]) -> tuple[str, ...]:  # fmt: skip
+    """The key a part of a two-key hold names: a key of its own, or (``rinse`` of
+    ``hold_rinse_and_presoak``) the smallest other key holding all its words, whose label
+    then wins over a caption that matches the short name better."""
+    if len(parts) < 2 or (part in chosen and labels[chosen[part][0]].control is not None):
+        return part  # one key, or a part whose own label is printed on a key
+    wider = [k for k in chosen if k != part and len(k) > len(part) and set(part) <= set(k)
+             and not keys.get(k, False)]  # fmt: skip
+    return min(wider, key=len) if wider else part
+
+
 def _combination(key: tuple[str, ...], keys: Iterable[tuple[str, ...]]) -> bool:
     """Whether ``key`` is two other keys' words one after the other (a two-key hold)."""
     others = set(keys) - {key}
@@ -606,6 +619,8 @@ def _target(label: Label, detection: Detection, window: Window | None, turn: boo
         and 0 < ly - c.centre[1] < 4 * height + (c.box[3] - c.box[1])
         and not any(_inside(c.centre, lb) for lb in [label.box])
         and _area(c.box) < 30 * _area(label.box)
+        # another key (text on it) or a letter of another label (inside its text) is no icon
+        and not any(_inside(t.centre, c.box) or _inside(c.centre, t.box) for t in detection.texts)
     ]
     if above:
         nearest = min(above, key=lambda c: ly - c.centre[1])
