@@ -50,3 +50,11 @@ def test_units_and_spin_speed() -> None:
     assert "°" in label_symbols("℃")  # OCR's one-character unit
     assert words_score(["temp"], label_tokens("℃"), label_symbols("℃")) > 0.9
     assert words_score(["spin"], label_tokens("RPM"), []) > 0.9
+
+
+def test_a_printed_half() -> None:
+    from apbot.vision.vocabulary import label_symbols
+
+    assert "½" in label_tokens("1/2")
+    assert words_score(["half"], label_tokens("1/2"), label_symbols("1/2")) > 0.9
+    assert "½" not in label_tokens("11/20")

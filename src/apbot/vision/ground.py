@@ -152,6 +152,7 @@ def make_labels(image: np.ndarray, detection: Detection, window: Window | None) 
     for i, t in enumerate(texts):
         if i not in used:
             labels.append(Label(t.text, t.box))
+    labels += _stacked(labels)
     _misread_symbols(image, labels)
     _shape_symbols(image, shapes, labels)
     _symbol_labels(image, shapes, labels, line, window)
@@ -160,6 +161,25 @@ def make_labels(image: np.ndarray, detection: Detection, window: Window | None) 
     for label in labels:
         label.symbols += [s for s in _edge_symbols(image, label) if s not in label.symbols]
     return labels
+
+
+def _stacked(labels: list[Label]) -> list[Label]:
+    """Two-line labels (``DRY`` over ``TIME``) as one more label: word lines of about one
+    size, one under the other, centred alike and close, on no detected key. The single lines
+    stay labels too (either may be a name of its own)."""
+    loose = [lb for lb in labels if lb.control is None and _wordy(lb)]
+    found = []
+    for upper in loose:
+        ux0, uy0, ux1, uy1 = upper.box
+        for lower in loose:
+            lx0, ly0, lx1, ly1 = lower.box
+            height = min(uy1 - uy0, ly1 - ly0)
+            if lower is upper or max(uy1 - uy0, ly1 - ly0) > 1.5 * height:
+                continue
+            centred = abs((ux0 + ux1) - (lx0 + lx1)) / 2 < 0.25 * max(ux1 - ux0, lx1 - lx0)
+            if centred and -0.3 * height <= ly0 - uy1 < 0.6 * height:
+                found.append(Label(f"{upper.text} {lower.text}", _union([upper.box, lower.box])))
+    return found
 
 
 def _misread_symbols(image: np.ndarray, labels: list[Label]) -> None:

@@ -100,8 +100,12 @@ _SIGNED = re.compile(r"^\+([0-9]+)$")
 _MIXED = re.compile(r"^([a-z]+)([0-9]+)$")
 
 
+_HALF = re.compile(r"(?:^|(?<=\s))1\s?/\s?2(?=\s|$)")
+
+
 def _units(text: str) -> str:
-    return "".join(UNITS.get(c, c) for c in text)
+    """Units and signs as usually printed: ``℃`` → ``°C``, a lone ``1/2`` → ``½``."""
+    return _HALF.sub("½", "".join(UNITS.get(c, c) for c in text))
 
 
 def label_symbols(text: str) -> list[str]:
