@@ -77,3 +77,13 @@ def test_a_drawn_circle_has_its_rim_on_edges_and_a_guess_does_not() -> None:
     edges = cv2.dilate(cv2.Canny(canvas, 30, 90), np.ones((3, 3), np.uint8))
     assert _rim_support(edges, 100, 100, 60) > 0.9
     assert _rim_support(edges, 100, 100, 30) < 0.1
+
+
+def test_a_two_line_label_is_also_one_label() -> None:
+    from apbot.vision.ground import _stacked
+
+    dry, time = Label("DRY", (765, 426, 868, 473)), Label("TIME", (754, 474, 875, 525))
+    mode = Label("MODE", (478, 451, 602, 496))  # beside, not under
+    found = _stacked([dry, time, mode])
+    assert [lb.text for lb in found] == ["DRY TIME"]
+    assert found[0].box == (754, 426, 875, 525)
