@@ -26,7 +26,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from apbot.vision.cv import cv2
-from apbot.vision.detect import BoxT, Candidate, Detection, detect
+from apbot.vision.detect import BoxT, Candidate, Detection, detect, iou
 from apbot.vision.icons import classify, classify_ink
 from apbot.vision.locate import Window, find_window
 from apbot.vision.ocr import read_crop
@@ -208,7 +208,7 @@ def _misread_symbols(image: np.ndarray, labels: list[Label]) -> None:
             continue
         (symbol, best), (_, second) = ranked[0], ranked[1]
         digits = text.isdigit()  # a real digit must look far more like the symbol
-        if best >= (0.85 if digits else 0.78) and best - second >= (0.2 if digits else 0.06):
+        if best >= (0.85 if digits else 0.72) and best - second >= (0.2 if digits else 0.06):
             label.symbols.append(symbol)
 
 
@@ -257,9 +257,13 @@ def _shape_symbols(image: np.ndarray, shapes: list[Candidate], labels: list[Labe
         crop = image[int(y0 + my) : int(y1 - my), int(x0 + mx) : int(x1 - mx)]
         if crop.size == 0:
             continue
-        symbol, _ = classify(crop, minimum=0.6)
+        symbol, score = classify(crop, minimum=0.6)
         if symbol:
             seen.append(shape.box)
+            text, confidence = read_crop(crop)
+            if confidence >= 0.9 and text.isdigit() and len(text) <= 2 and score < 0.85:
+                labels.append(Label(text, shape.box, shape.box))  # a keypad digit the
+                continue  # page-wide OCR missed, not a pictogram that looks a bit like it
             labels.append(Label(symbol, shape.box, shape.box, [symbol]))
 
 
@@ -369,6 +373,11 @@ def _edge_symbols(image: np.ndarray, label: Label) -> list[str]:
         if h < 0.6 * height and w < 0.6 * height:
             continue
         mask = np.isin(parts[gy0:gy1, gx0:gx1], glyph)
+        short = len(label.text.replace(" ", "")) <= 2  # "1" of a key printed "− 1"
+        if short and h <= 0.3 * w and w >= 0.4 * height and mask.mean() >= 0.6:
+            if "−" not in found:
+                found.append("−")  # a solid bar beside a digit: the minus sign OCR dropped
+            continue
         fill = mask.sum() / float(w * h)
         symbol, _ = classify_ink(mask, minimum=0.85, among=EDGE_SYMBOLS + STROKE_SYMBOLS)
         if not symbol and fill < 0.35:  # an outlined triangle: thin strokes, mostly empty
@@ -527,6 +536,7 @@ def ground(image: np.ndarray | None, actions: Sequence[str]) -> Grounding:
                     parsed[action] = (skill, [list(both[:i]), list(both[i:])])
                     break
     claimed = [_target(labels[i], detection, window, keys[key]) for key, (i, _) in chosen.items()]
+    keyed = [lb.control for lb in labels if lb.control is not None]
     result: dict[str, Grounded] = {}
     missing: dict[str, str] = {a: "a wait touches no control" for a in waits}
     dial = _only_dial(detection, window, claimed)
@@ -547,7 +557,7 @@ def ground(image: np.ndarray | None, actions: Sequence[str]) -> Grounding:
             if hit is None:
                 break
             label = labels[hit[0]]
-            boxes.append(_target(label, detection, window, skill.startswith("turn")))
+            boxes.append(_target(label, detection, window, skill.startswith("turn"), keyed))
             names.append(label.text)
             scores.append(hit[1])
         if len(boxes) != len(parts):
@@ -617,8 +627,10 @@ def _combination(key: tuple[str, ...], keys: Iterable[tuple[str, ...]]) -> bool:
     return any(key[:i] in others and key[i:] in others for i in range(1, len(key)))
 
 
-def _target(label: Label, detection: Detection, window: Window | None, turn: bool) -> BoxT:
-    """The box to touch for a label: its control, a dial it names, the shape above it."""
+def _target(label: Label, detection: Detection, window: Window | None, turn: bool,
+            keyed: Sequence[BoxT] = ()) -> BoxT:  # fmt: skip
+    """The box to touch for a label: its control, a dial it names, the shape above it (not
+    a key of another label: ``keyed``)."""
     shapes = _controls(detection, window)
     lx, ly = _centre(label.box)
     height = label.box[3] - label.box[1]
@@ -639,6 +651,9 @@ def _target(label: Label, detection: Detection, window: Window | None, turn: boo
         and 0 < ly - c.centre[1] < 4 * height + (c.box[3] - c.box[1])
         and not any(_inside(c.centre, lb) for lb in [label.box])
         and _area(c.box) < 30 * _area(label.box)
+        and c.box[3] - c.box[1] < 3 * height  # a pictogram, not a dial or a slider's track
+        and label.box[1] - c.box[3] < 1.5 * height  # just above the word
+        and not any(iou(c.box, k) > 0.5 for k in keyed)
         # another key (text on it) or a letter of another label (inside its text) is no icon
         and not any(_inside(t.centre, c.box) or _inside(c.centre, t.box) for t in detection.texts)
     ]
