@@ -87,3 +87,22 @@ def test_a_two_line_label_is_also_one_label() -> None:
     found = _stacked([dry, time, mode])
     assert [lb.text for lb in found] == ["DRY TIME"]
     assert found[0].box == (754, 426, 875, 525)
+
+
+def test_a_minus_bar_beside_a_digit_on_a_key() -> None:
+    image, key = _key("− 1")
+    found = _edge_symbols(image, Label("1", (125.0, 45.0, 160.0, 95.0), key))
+    assert "−" in found
+    image, key = _key("ADD-IN", 30)  # a hyphen inside a word is no minus key
+    assert "−" not in _edge_symbols(image, Label("ADD-IN", (60.0, 55.0, 180.0, 85.0), key))
+
+
+def test_an_icon_above_a_word_is_not_another_labels_key() -> None:
+    from apbot.vision.detect import Candidate, Detection
+    from apbot.vision.ground import _target
+
+    word = Label("QUICK MIN", (330.0, 1346.0, 614.0, 1404.0))
+    lock_key = (363.0, 1162.0, 580.0, 1291.0)  # key 0 above it, with a label of its own
+    detection = Detection([], [Candidate(lock_key, "shape", 0.9)], (1000, 1600))
+    assert _target(word, detection, None, False) != word.box  # alone: taken for its icon
+    assert _target(word, detection, None, False, [lock_key]) == word.box
