@@ -7,7 +7,8 @@ from PIL import Image, ImageDraw
 
 from apbot.vision.cv import cv2
 from apbot.vision.detect import _rim_support
-from apbot.vision.ground import Label, _combination, _edge_symbols, _eliminate, _misread_symbols
+from apbot.vision.ground import _combination, _eliminate
+from apbot.vision.labels import Label, _edge_symbols, _misread_symbols
 from apbot.vision.panel_art import draw_text
 
 
@@ -80,7 +81,7 @@ def test_a_drawn_circle_has_its_rim_on_edges_and_a_guess_does_not() -> None:
 
 
 def test_a_two_line_label_is_also_one_label() -> None:
-    from apbot.vision.ground import _stacked
+    from apbot.vision.labels import _stacked
 
     dry, time = Label("DRY", (765, 426, 868, 473)), Label("TIME", (754, 474, 875, 525))
     mode = Label("MODE", (478, 451, 602, 496))  # beside, not under

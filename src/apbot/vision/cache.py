@@ -21,7 +21,8 @@ from typing import Any
 
 import numpy as np
 
-from apbot.vision.ground import Grounded, Grounding, Label, ground
+from apbot.vision.ground import Grounded, Grounding, ground
+from apbot.vision.labels import Label
 from apbot.vision.locate import Window
 
 CACHE_ENV = "APBOT_CACHE_DIR"

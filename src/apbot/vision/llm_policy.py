@@ -51,7 +51,7 @@ def panel_boxes(image: np.ndarray) -> list[BoxT]:
     """The boxes offered to the LLM, in reading order (top to bottom, left to right): control
     shapes and dials off the display, and printed labels that lie on none of them."""
     from apbot.vision.detect import detect
-    from apbot.vision.ground import _controls
+    from apbot.vision.labels import _controls
     from apbot.vision.locate import find_window
 
     detection = detect(image)
