@@ -1,5 +1,6 @@
-"""Time of image mode's parts: rendering a photo, detection + grounding per panel, one display
-reading (window located once, then a crop per photo), on a sample of bundled appliances.
+"""Time of image mode's parts: rendering a photo, detection + grounding per panel, the same
+grounding read back from the on-disk cache (a temporary directory), one display reading
+(window located once, then a crop per photo), on a sample of bundled appliances.
 
     python benchmarks/vision_speed.py [--appliances kettle_1,microwave_1] [--reads 10]
 """
@@ -7,7 +8,9 @@ reading (window located once, then a crop per photo), on a sample of bundled app
 from __future__ import annotations
 
 import argparse
+import os
 import statistics
+import tempfile
 import time
 
 import numpy as np
@@ -15,6 +18,7 @@ import numpy as np
 from apbot.bench.suite import load_suite
 from apbot.sim.compiled import compiled_model
 from apbot.sim.simulator import Simulator
+from apbot.vision.cache import cache_dir, cache_key, cached_ground, store
 from apbot.vision.ground import ground
 from apbot.vision.mode import camera_for
 from apbot.vision.reading import DisplayCamera
@@ -27,7 +31,8 @@ def main() -> None:
     parser.add_argument("--reads", type=int, default=10)
     args = parser.parse_args()
     suite = load_suite()
-    renders, groundings, reads = [], [], []
+    renders, groundings, cached, reads = [], [], [], []
+    os.environ["APBOT_CACHE_DIR"] = tempfile.mkdtemp(prefix="apbot-vision-speed-")
     for name in args.appliances.split(","):
         appliance = suite.get(name.strip())
         scene = PanelScene.of(appliance)
@@ -39,6 +44,13 @@ def main() -> None:
         renders.append(time.perf_counter() - started)
         found = ground(np.asarray(photo.image), list(appliance.model.actions))
         groundings.append(found.seconds)
+        folder = cache_dir()
+        assert folder is not None
+        names = list(appliance.model.actions)
+        store(folder / "grounding" / f"{cache_key(np.asarray(photo.image), names)}.json", found)
+        started = time.perf_counter()
+        cached_ground(np.asarray(photo.image), names)  # the key (hash of the photo) + the load
+        cached.append(time.perf_counter() - started)
         reader = DisplayCamera(found.window)
         actions = list(sim.actions)
         for i in range(args.reads):
@@ -53,6 +65,8 @@ def main() -> None:
     print(f"render one photo: median {statistics.median(renders):.3f} s")
     print(f"detection + grounding per panel: median {statistics.median(groundings):.2f} s, "
           f"max {max(groundings):.2f} s")  # fmt: skip
+    print(f"grounding from the disk cache: median {statistics.median(cached):.3f} s, "
+          f"max {max(cached):.3f} s")  # fmt: skip
     print(f"display reading per photo: median {statistics.median(reads):.3f} s, "
           f"max {max(reads):.3f} s ({len(reads)} reads)")  # fmt: skip
 

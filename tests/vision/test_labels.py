@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 from PIL import Image, ImageDraw
 
-from apbot.vision.ground import Label, _edge_symbols, _join_line_symbols
+from apbot.vision.labels import Label, _edge_symbols, _join_line_symbols
 from apbot.vision.panel_art import draw_text
 
 

@@ -63,3 +63,21 @@ def test_the_window_is_the_display_not_a_dark_stretch_of_panel(suite) -> None:  
     photo = PanelScene.of(appliance, style="dot").photograph("CRUST 3", ("STOP",), camera, 1)
     reading = read_display(photo.image)
     assert reading.text == "CRUST 3  STOP"
+
+
+@pytest.mark.parametrize(("appliance", "main"), [("rice_cooker_4", "DELAY 0:00"),
+                                                 ("kettle_1", "HEATING 40°C")])  # fmt: skip
+def test_seven_segment_words_read_as_letters_and_numbers_as_digits(suite, appliance, main) -> None:  # type: ignore[no-untyped-def]
+    # 0/O/D, 1/I and 5/S light the same segments: the word's shape ranks DELAY before 0ELAY
+    scene = PanelScene.of(suite.get(appliance), style="seg", force=True)
+    assert scene.look.style == "seg"
+    assert read_display(scene.photograph(main, ()).image).text == main
+
+
+def test_the_word_shape_cost() -> None:
+    from apbot.vision.decode import WORD_SWITCH, _switch
+
+    assert _switch("DEL", "A") == 0.0 and _switch("0:0", "0") == 0.0
+    assert _switch("", "0") == 0.0 and _switch("HEAT ", "1") == 0.0
+    assert _switch("HEAT", "1") == WORD_SWITCH and _switch("1", "E") == WORD_SWITCH
+    assert 0 < _switch("HEATIN", "g") < WORD_SWITCH

@@ -23,6 +23,7 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
+import apbot.vision.llm_policy  # noqa: F401  registers llm-policy-image (base deps only)
 from apbot.agent.environment import FeedbackMode, SimulatorEnvironment
 from apbot.agent.episode import MAX_REASONING_STEPS, Episode, TaskContext, TraceEvent
 from apbot.agent.registry import default_methods, get_method, methods

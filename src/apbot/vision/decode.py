@@ -372,10 +372,15 @@ def _alternatives(rows: list[Row], beam: int) -> list[tuple[str, float]]:
     per_row = []
     for row in rows:
         states: list[tuple[float, str]] = [(0.0, "")]
+        shape = row.style == "seg"
         for cell in row.cells:
             best = cell[0][1]
             near = [(c, d) for c, d in cell if d - best <= 1.5][:3]
-            grown = [(cost + d - best, text + c) for cost, text in states for c, d in near]
+            grown = [
+                (cost + d - best + (_switch(text, c) if shape else 0.0), text + c)
+                for cost, text in states
+                for c, d in near
+            ]
             states = heapq.nsmallest(beam, grown)
         per_row.append([(cost, text.strip()) for cost, text in states])
     combined: list[tuple[float, str]] = [(0.0, "")]
@@ -390,6 +395,25 @@ def _alternatives(rows: list[Row], beam: int) -> list[tuple[str, float]]:
     for cost, text in combined:
         seen.setdefault(text, cost)
     return sorted(((t, c) for t, c in seen.items()), key=lambda item: item[1])
+
+
+WORD_SWITCH = 0.05
+"""Cost of a letter next to a digit in one word on seven segments, where ``0``/``O``/``D``,
+``1``/``I``, ``5``/``S`` light the same segments: words are letters and numbers digits, so
+``DELAY`` and ``0:00`` come before ``0ELAY`` and ``O:OO`` (a label like ``P1`` still reads:
+the display rules pick among the alternatives)."""
+
+
+def _switch(text: str, char: str) -> float:
+    """The word-shape cost of appending ``char`` to ``text``."""
+    last = text[-1] if text else ""
+    if not last.isalnum() or not char.isalnum():
+        return 0.0
+    if last.isdigit() != char.isdigit():
+        return WORD_SWITCH
+    if last.isalpha() and char.isalpha() and last.isupper() != char.isupper():
+        return WORD_SWITCH / 2  # one case in a word (``b``, ``n``, ``r`` have only one form)
+    return 0.0
 
 
 def _confidence(rows: list[Row]) -> float:

@@ -17,6 +17,8 @@ from apbot.vision.ocr import TextBox, read_lines
 
 BoxT = tuple[float, float, float, float]
 NMS_IOU = 0.85
+MIN_RIM = 0.45
+"""A Hough circle is kept when at least this share of its rim lies on an edge."""
 
 
 @dataclass(frozen=True)
@@ -99,8 +101,23 @@ def shape_proposals(image: np.ndarray) -> list[Candidate]:
     if circles is not None:
         for cx, cy, r in circles[0]:
             box = (float(cx - r), float(cy - r), float(cx + r), float(cy + r))
-            found.append(Candidate(box, "circle", 0.75))
+            if min(box[0], box[1], w - box[2], h - box[3]) < -0.1 * r:
+                continue  # a dial lies on the panel: a circle through the photo's edge is noise
+            support = _rim_support(edges, float(cx), float(cy), float(r))
+            if support < MIN_RIM:
+                continue  # the accumulator's guess, not an outline that is there
+            found.append(Candidate(box, "circle", 0.5 + 0.5 * support))
     return found
+
+
+def _rim_support(edges: np.ndarray, cx: float, cy: float, r: float) -> float:
+    """The share of a circle's rim that lies on an edge (Hough also votes for circles that
+    only touch scattered edges: grids of display dots, rows of keys)."""
+    angles = np.linspace(0, 2 * np.pi, 96, endpoint=False)
+    xs = np.round(cx + r * np.cos(angles)).astype(int)
+    ys = np.round(cy + r * np.sin(angles)).astype(int)
+    ok = (xs >= 0) & (ys >= 0) & (xs < edges.shape[1]) & (ys < edges.shape[0])
+    return float((edges[ys[ok], xs[ok]] > 0).sum() / len(angles))
 
 
 def detect(image: np.ndarray) -> Detection:

@@ -15,7 +15,7 @@ would cost on a real appliance (a wrong key pressed, a wrong text read).
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -78,6 +78,11 @@ class PanelEnvironment:
                                       self.frame)  # fmt: skip
         self._reference = photo
         return photo
+
+    @property
+    def latest(self) -> Photo:
+        """The latest photo of the panel (the one touches are aimed at)."""
+        return self._reference
 
     def control_at(self, x: float, y: float, photo: Photo) -> str | None:
         """The control under photo pixel (x, y), if any."""
@@ -149,11 +154,13 @@ class ImageEnvironment:
     """
 
     def __init__(self, panel: PanelEnvironment, actions: Sequence[str],
-                 grounding: Grounding | None = None) -> None:  # fmt: skip
+                 grounding: Grounding | None = None,
+                 grounder: Callable[[np.ndarray, Sequence[str]], Grounding] = ground
+                 ) -> None:  # fmt: skip
         self.panel = panel
         self._actions = tuple(actions)
         first = panel.reset()
-        self.grounding = grounding or ground(np.asarray(first.image), self._actions)
+        self.grounding = grounding or grounder(np.asarray(first.image), self._actions)
         self.display = DisplayCamera(self.grounding.window)
         self.steps = 0
 
@@ -180,6 +187,13 @@ class ImageEnvironment:
             self.panel.touches += 1
             return self._feedback(Touch((), None, self.panel.photo(), None))
         return self._feedback(self.panel.touch(grounded.points, grounded.skill, seconds))
+
+    def touch(self, points: Sequence[tuple[float, float]], skill: str,
+              seconds: float | None = None) -> Feedback:  # fmt: skip
+        """One step that touches photo points directly (a method that picks boxes itself,
+        not action names): the step is counted and the new photo read."""
+        self.steps += 1
+        return self._feedback(self.panel.touch(points, skill, seconds))
 
     def _feedback(self, touch: Touch) -> Feedback:
         reading = self.display.read(touch.photo.image)

@@ -5,9 +5,9 @@ needed by the rules here). Never the layout's true boxes — those only score th
 
 1. Detect text lines and control candidates (:mod:`apbot.vision.detect`); drop what lies in
    the display window (its characters are not labels).
-2. Make *labels*: the text lines inside one control shape joined in reading order (``+30`` /
-   ``SEC``), free-standing text, and the symbols of controls printed without words
-   (:mod:`apbot.vision.icons`, plus recognition of single characters such as ``P``).
+2. Make *labels* (:mod:`apbot.vision.labels`): the text lines inside one control shape
+   joined in reading order (``+30`` / ``SEC``), free-standing text, and the symbols of
+   controls printed without words or beside a word.
 3. Parse each action name into a skill and the words naming its control(s)
    (``hold_up_down`` → hold, two controls ``up`` and ``down``).
 4. Score every (action words, label) pair (fuzzy words, synonyms, symbols), then assign
@@ -21,34 +21,28 @@ needed by the rules here). Never the layout's true boxes — those only score th
 from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
-from apbot.vision.cv import cv2
-from apbot.vision.detect import BoxT, Candidate, Detection, detect
-from apbot.vision.icons import classify, classify_ink
+from apbot.vision.detect import BoxT, Candidate, Detection, detect, iou
+from apbot.vision.labels import (
+    Label,
+    _area,
+    _centre,
+    _controls,
+    _inside,
+    _union,
+    _wordy,
+    make_labels,
+)
 from apbot.vision.locate import Window, find_window
-from apbot.vision.ocr import read_crop
-from apbot.vision.vocabulary import label_symbols, label_tokens, name_parts, words_score
+from apbot.vision.vocabulary import label_symbols, name_parts, words_score
 
 MIN_SCORE = 0.6
 """A label must match an action's words at least this well to ground it."""
-
-
-@dataclass
-class Label:
-    """Printed text or a symbol, and the control it is printed on (when one was found)."""
-
-    text: str
-    box: BoxT
-    control: BoxT | None = None
-    symbols: list[str] = field(default_factory=list)
-    tick: bool = False
-
-    @property
-    def tokens(self) -> list[str]:
-        return label_tokens(self.text)
+UNPRINTED_COST = 0.85
+"""A key matched on its printed words only (a name word printed nowhere) scores this much less."""
 
 
 @dataclass
@@ -76,290 +70,6 @@ class Grounding:
     window: Window | None
     size: tuple[int, int]
     seconds: float = 0.0
-
-
-def _inside(point: tuple[float, float], box: BoxT, pad: float = 0.0) -> bool:
-    return box[0] - pad <= point[0] <= box[2] + pad and box[1] - pad <= point[1] <= box[3] + pad
-
-
-def _overlap(a: BoxT, b: BoxT) -> float:
-    """Area shared by two boxes."""
-    return max(0.0, min(a[2], b[2]) - max(a[0], b[0])) * max(0.0, min(a[3], b[3]) - max(a[1], b[1]))
-
-
-def _area(box: BoxT) -> float:
-    return max(0.0, box[2] - box[0]) * max(0.0, box[3] - box[1])
-
-
-def _centre(box: BoxT) -> tuple[float, float]:
-    return ((box[0] + box[2]) / 2, (box[1] + box[3]) / 2)
-
-
-def _union(boxes: Iterable[BoxT]) -> BoxT:
-    boxes = list(boxes)
-    return (min(b[0] for b in boxes), min(b[1] for b in boxes), max(b[2] for b in boxes),
-            max(b[3] for b in boxes))  # fmt: skip
-
-
-# --- labels -------------------------------------------------------------------------------------
-
-
-def _controls(detection: Detection, window: Window | None) -> list[Candidate]:
-    """Shape and circle candidates that can be controls (not the display, not the panel)."""
-    w, h = detection.size
-    found = []
-    for c in detection.candidates:
-        if c.kind == "text":
-            continue
-        if window is not None and _inside(c.centre, window.box, 4):
-            continue
-        if _area(c.box) > 0.12 * w * h:
-            continue
-        found.append(c)
-    return found
-
-
-def make_labels(image: np.ndarray, detection: Detection, window: Window | None) -> list[Label]:
-    """Labels from text lines (grouped per control) and from symbol-only controls."""
-    texts = [t for t in detection.texts if window is None or not _inside(t.centre, window.box, 4)]
-    line = float(np.median([t.box[3] - t.box[1] for t in texts])) if texts else 12.0
-    shapes = sorted(
-        (
-            c
-            for c in _controls(detection, window)
-            if c.kind == "shape" and min(c.box[2] - c.box[0], c.box[3] - c.box[1]) >= 1.2 * line
-        ),
-        key=lambda c: _area(c.box),
-    )
-    used: set[int] = set()
-    labels: list[Label] = []
-    for shape in shapes:
-        inside = [
-            i
-            for i, t in enumerate(texts)
-            if i not in used and _inside(t.centre, shape.box) and _area(t.box) < _area(shape.box)
-        ]
-        if not inside:
-            continue
-        if _area(shape.box) > 40 * sum(_area(texts[i].box) for i in inside):
-            continue  # a big frame around several labels, not one control
-        used.update(inside)
-        ordered = sorted(inside, key=lambda i: (round(texts[i].box[1] / 8), texts[i].box[0]))
-        text = " ".join(texts[i].text for i in ordered)
-        labels.append(Label(text, _union(texts[i].box for i in ordered), shape.box))
-    for i, t in enumerate(texts):
-        if i not in used:
-            labels.append(Label(t.text, t.box))
-    _shape_symbols(image, shapes, labels)
-    _symbol_labels(image, shapes, labels, line, window)
-    labels = _join_line_symbols(labels)
-    _mark_ticks(detection, labels)
-    for label in labels:
-        label.symbols += [s for s in _edge_symbols(image, label) if s not in label.symbols]
-    return labels
-
-
-def _wordy(label: Label) -> bool:
-    """Whether a label has a word in it (not a lone character OCR made of a symbol)."""
-    return any(len(t) >= 2 and t.isalpha() for t in label.tokens)
-
-
-def _join_line_symbols(labels: list[Label]) -> list[Label]:
-    """A symbol found on its own just beside a word on the same line (``TIME −`` when OCR
-    kept only ``TIME``) belongs to that word's label, not to a control of its own."""
-    words = [lb for lb in labels if _wordy(lb)]
-    kept = []
-    for label in labels:
-        if label.tokens or not label.symbols or label in words:
-            kept.append(label)
-            continue
-        cy = _centre(label.box)[1]
-        host, host_gap = None, 0.0
-        for word in words:
-            x0, y0, x1, y1 = word.box
-            gap = max(x0 - label.box[2], label.box[0] - x1)
-            same_control = label.control is None or label.control == word.control
-            near = y0 <= cy <= y1 and gap < 1.0 * (y1 - y0) and same_control
-            if near and (host is None or gap < host_gap):
-                host, host_gap = word, gap
-        if host is None:
-            kept.append(label)
-        else:
-            host.symbols += [s for s in label.symbols if s not in host.symbols]
-            host.box = _union([host.box, label.box])
-    return kept
-
-
-def _shape_symbols(image: np.ndarray, shapes: list[Candidate], labels: list[Label]) -> None:
-    """Buttons with no text on them: the symbol printed inside (⏻ on a round key)."""
-    taken = [label.box for label in labels]
-    seen: list[BoxT] = []
-    for shape in shapes:
-        if any(_overlap(shape.box, t) > 0 for t in taken) or any(
-            _inside(_centre(shape.box), s) for s in seen
-        ):
-            continue
-        x0, y0, x1, y1 = shape.box
-        mx, my = 0.18 * (x1 - x0), 0.18 * (y1 - y0)
-        crop = image[int(y0 + my) : int(y1 - my), int(x0 + mx) : int(x1 - mx)]
-        if crop.size == 0:
-            continue
-        symbol, _ = classify(crop, minimum=0.6)
-        if symbol:
-            seen.append(shape.box)
-            labels.append(Label(symbol, shape.box, shape.box, [symbol]))
-
-
-def _symbol_labels(image: np.ndarray, shapes: list[Candidate], labels: list[Label],
-                   line: float, window: Window | None) -> None:  # fmt: skip
-    """Symbols printed without words (⏻, +, 🔒 …): ink blobs of about a label's size that no
-    text line covers, each classified against the symbol templates; a blob on a control shape
-    gets that shape as its control."""
-    gray = cv2.cvtColor(image, cv2.COLOR_RGB2GRAY)
-    size = int(max(15, 4 * line)) | 1
-    background = cv2.medianBlur(gray, min(size, 255) if size < 255 else 255)
-    ink = (cv2.absdiff(gray, background) > 45).astype(np.uint8)
-    raw = ink.copy()
-    join = max(3, int(0.35 * line)) | 1
-    ink = cv2.morphologyEx(ink, cv2.MORPH_CLOSE, np.ones((join, join), np.uint8))
-    count, _, stats, _ = cv2.connectedComponentsWithStats(ink, 8)
-    printed = [label.box for label in labels]
-    budget = 25
-    for i in range(1, count):
-        x, y, w, h, _ = (int(v) for v in stats[i])
-        box = (float(x), float(y), float(x + w), float(y + h))
-        if not (0.6 * line <= max(w, h) <= 5 * line) or max(w, h) > 10 * max(1, min(w, h)):
-            continue
-        if w < h and max(w, h) > 4 * max(1, min(w, h)):
-            continue  # a tall thin line is an edge, not a symbol
-        if window is not None and _inside(_centre(box), window.box, 4):
-            continue
-        if any(_overlap(box, p) > 0.2 * _area(box) for p in printed):
-            continue
-        symbol, _ = classify_ink(raw[y : y + h, x : x + w] > 0)
-        text = ""
-        if not symbol and budget > 0 and max(w, h) >= line:
-            budget -= 1
-            text, confidence = read_crop(
-                image[max(0, y - 6) : y + h + 6, max(0, x - 6) : x + w + 6]
-            )
-            if confidence < 0.85 or len(text) > 2:
-                text = ""
-        if not (symbol or text):
-            continue
-        owner = [
-            s.box for s in shapes if _inside(_centre(box), s.box) and _area(s.box) < 30 * _area(box)
-        ]
-        control = min(owner, key=_area) if owner else None
-        labels.append(Label(text or symbol, box, control, [symbol] if symbol else []))
-
-
-def _edge_symbols(image: np.ndarray, label: Label) -> list[str]:
-    """Arrows and signs printed with a word on one key (``TEMP ▲``, ``◀ PROG``, ``⏻ START``,
-    ``↕ SWING``), inside the label's box or just beside it on its line (OCR often boxes the
-    word only). Ink blobs whose columns overlap are one glyph (⏻ is an arc and a bar); a
-    glyph about a capital's height is checked against those symbols' templates (letters fit
-    badly), and a triangle must be solid."""
-    x0, y0, x1, y1 = label.box
-    height = y1 - y0
-    if label.control is not None:  # a key: anywhere on it (⏻ above START/STOP)
-        cx0, cy0, cx1, cy1 = label.control
-        mx, my = 0.06 * (cx1 - cx0), 0.06 * (cy1 - cy0)
-        ex0, ey0, ex1, ey1 = cx0 + mx, cy0 + my, cx1 - mx, cy1 - my
-    elif _wordy(label):  # beside the word on its line
-        ex0, ex1 = x0 - 1.3 * height, x1 + 1.3 * height
-        ey0, ey1 = y0 - 0.15 * height, y1 + 0.15 * height
-    else:
-        ex0, ey0, ex1, ey1 = label.box
-    ix0, iy0 = max(0, int(min(ex0, x0))), max(0, int(min(ey0, y0)))
-    crop = image[iy0 : int(max(ey1, y1)) + 1, ix0 : int(max(ex1, x1)) + 1]
-    if crop.size == 0 or min(crop.shape[:2]) < 8:
-        return []
-    from apbot.vision.icons import ink_of
-
-    ink = ink_of(crop).astype(np.uint8)
-    count, parts, stats, _ = cv2.connectedComponentsWithStats(ink, 8)
-    sizes = [int(stats[i][3]) for i in range(1, count) if stats[i][4] >= 12]
-    if not sizes:
-        return []
-    height = float(np.median(sizes))  # a letter's height
-    blobs = [
-        i
-        for i in range(1, count)
-        if stats[i][4] >= 12 and stats[i][3] < 2.5 * height and stats[i][2] < 2.5 * height
-    ]
-    group = {i: i for i in blobs}
-
-    def root(i: int) -> int:
-        while group[i] != i:
-            i = group[i]
-        return i
-
-    for n, i in enumerate(blobs):  # columns overlap and rows touch: one glyph
-        xi, yi, wi, hi, _ = (int(v) for v in stats[i])
-        for j in blobs[n + 1 :]:
-            xj, yj, wj, hj, _ = (int(v) for v in stats[j])
-            gap_y = max(yi - (yj + hj), yj - (yi + hi))
-            if min(xi + wi, xj + wj) > max(xi, xj) and gap_y < 0.4 * height:
-                group[root(j)] = root(i)
-    members: dict[int, list[int]] = {}
-    for i in blobs:
-        members.setdefault(root(i), []).append(i)
-    glyphs = list(members.values())
-    found = []
-    for glyph in glyphs:
-        gx0 = min(int(stats[i][0]) for i in glyph)
-        gx1 = max(int(stats[i][0] + stats[i][2]) for i in glyph)
-        gy0 = min(int(stats[i][1]) for i in glyph)
-        gy1 = max(int(stats[i][1] + stats[i][3]) for i in glyph)
-        w, h = gx1 - gx0, gy1 - gy0
-        if h < 0.6 * height and w < 0.6 * height:
-            continue
-        mask = np.isin(parts[gy0:gy1, gx0:gx1], glyph)
-        symbol, _ = classify_ink(mask, minimum=0.85, among=EDGE_SYMBOLS + STROKE_SYMBOLS)
-        if not symbol:
-            continue
-        if symbol in EDGE_SYMBOLS and not 0.42 <= mask.sum() / float(w * h) <= 0.7:
-            continue  # the arrows are solid triangles; letters are strokes
-        if symbol not in found:
-            found.append(symbol)
-    return found
-
-
-EDGE_SYMBOLS = "▲▼◀▶◄►"
-"""Solid arrows printed beside a word on a key (``TEMP ▲``, ``◀ PROG``)."""
-STROKE_SYMBOLS = "⏻↕↔"
-"""Line-drawn symbols printed beside a word (``⏻ START/STOP``, ``↕ SWING``)."""
-
-
-def _spans(flags: list[bool]) -> list[tuple[int, int]]:
-    """(start, end) of each run of True."""
-    spans, start = [], None
-    for i, flag in enumerate([*flags, False]):
-        if flag and start is None:
-            start = i
-        elif not flag and start is not None:
-            spans.append((start, i))
-            start = None
-    return spans
-
-
-def _mark_ticks(detection: Detection, labels: list[Label]) -> None:
-    """Small text around a dial (not under it, not on a control of its own) is a tick label,
-    not a control's name."""
-    heights = [lb.box[3] - lb.box[1] for lb in labels if lb.control is None or lb.text]
-    typical = float(np.median(heights)) if heights else 0.0
-    for circle in (c for c in detection.candidates if c.kind == "circle"):
-        cx, cy = circle.centre
-        r = (circle.box[2] - circle.box[0]) / 2
-        for label in labels:
-            if label.control is not None and _area(label.control) < 4 * _area(label.box):
-                continue
-            lx, ly = _centre(label.box)
-            d = float(np.hypot(lx - cx, ly - cy))
-            small = (label.box[3] - label.box[1]) < 0.85 * typical
-            if small and r * 0.9 < d < r * 1.9 and ly < cy + 1.1 * r:
-                label.tick = True
 
 
 # --- matching and assignment --------------------------------------------------------------------
@@ -429,10 +139,18 @@ def ground(image: np.ndarray | None, actions: Sequence[str]) -> Grounding:
     for skill, parts in parsed.values():
         for part in parts:
             keys[tuple(part)] = keys.get(tuple(part), False) or skill.startswith("turn")
+    # a name word printed nowhere ("delay" of delay_up on a key printed "h ▷") is left out
+    # of its key's match, at a cost, when the key's other words are printed
+    named = {w for key in keys for w in key}
+    printed = {w for w in named if any(_score([w], lb, False) >= MIN_SCORE for lb in labels)}
     pairs = []
     for key, turn in keys.items():
+        shown = [w for w in key if w in printed]
+        partial = 0 < len(shown) < len(key)
         for index, label in enumerate(labels):
             score = _score(list(key), label, turn)
+            if partial:
+                score = max(score, UNPRINTED_COST * _score(shown, label, turn))
             if score >= MIN_SCORE:
                 pairs.append((score, key, index))
     pairs.sort(key=lambda p: (-p[0], p[1]))
@@ -443,9 +161,20 @@ def ground(image: np.ndarray | None, actions: Sequence[str]) -> Grounding:
             continue
         chosen[key] = (index, score)
         taken.add(index)
+    claimed = [_target(labels[i], detection, window, keys[key]) for key, (i, _) in chosen.items()]
+    _eliminate(keys, labels, chosen, taken, claimed, window)
+    for action, (skill, parts) in list(parsed.items()):
+        both = tuple(parts[0])
+        if skill == "hold" and len(parts) == 1 and both not in chosen:
+            for i in range(1, len(both)):
+                if both[:i] in chosen and both[i:] in chosen:
+                    parsed[action] = (skill, [list(both[:i]), list(both[i:])])
+                    break
+    claimed = [_target(labels[i], detection, window, keys[key]) for key, (i, _) in chosen.items()]
+    keyed = [lb.control for lb in labels if lb.control is not None]
     result: dict[str, Grounded] = {}
     missing: dict[str, str] = {a: "a wait touches no control" for a in waits}
-    dial = _only_dial(detection, window)
+    dial = _only_dial(detection, window, claimed)
     turned = {tuple(p[0]) for k, p in parsed.values() if k.startswith("turn") and p != [[]]}
     lone_turn = next(iter(turned)) if len(turned) == 1 and not any(
         k.startswith("turn") and p == [[]] for k, p in parsed.values()
@@ -459,11 +188,11 @@ def ground(image: np.ndarray | None, actions: Sequence[str]) -> Grounding:
             continue
         boxes, names, scores = [], [], []
         for part in parts:
-            hit = chosen.get(tuple(part))
+            hit = chosen.get(_owner(tuple(part), parts, chosen, keys, labels))
             if hit is None:
                 break
             label = labels[hit[0]]
-            boxes.append(_target(label, detection, window, skill.startswith("turn")))
+            boxes.append(_target(label, detection, window, skill.startswith("turn"), keyed))
             names.append(label.text)
             scores.append(hit[1])
         if len(boxes) != len(parts):
@@ -478,8 +207,65 @@ def ground(image: np.ndarray | None, actions: Sequence[str]) -> Grounding:
                      time.perf_counter() - started)  # fmt: skip
 
 
-def _target(label: Label, detection: Detection, window: Window | None, turn: bool) -> BoxT:
-    """The box to touch for a label: its control, a dial it names, the shape above it."""
+def _eliminate(keys: dict[tuple[str, ...], bool], labels: list[Label],
+               chosen: dict[tuple[str, ...], tuple[int, float]], taken: set[int],
+               claimed: list[BoxT], window: Window | None) -> None:  # fmt: skip
+    """The one key name nothing matched and the one labelled control nothing claimed belong
+    together (``hot`` and a key printed ``65°``, ``grind`` and ``BEANS/GROUND``): a panel has
+    no key without a use, and a name with no key cannot be pressed. Only one to one, and only
+    labels on a key or with a word or symbol, off the display, not dial ticks, and outside
+    every control already claimed."""
+    unmatched = [
+        k
+        for k, turn in keys.items()
+        if k and not turn and k not in chosen and not _combination(k, keys)
+    ]
+    if len(unmatched) != 1:
+        return
+    free = []
+    for index, label in enumerate(labels):
+        if index in taken or label.tick:
+            continue
+        if not (label.control is not None or _wordy(label) or label.symbols):
+            continue
+        place = label.control or label.box
+        if window is not None and _inside(_centre(place), window.box, 4):
+            continue
+        if any(_inside(_centre(place), box, 2) or _inside(_centre(box), place) for box in claimed):
+            continue
+        free.append(index)
+    keyed = [i for i in free if labels[i].control is not None]
+    for tier in ([i for i in keyed if _wordy(labels[i])], keyed, free):
+        if tier:  # the likeliest kind of place first: a named key, any key, any label
+            if len(tier) == 1:
+                chosen[unmatched[0]] = (tier[0], MIN_SCORE)
+                taken.add(tier[0])
+            return
+
+
+def _owner(part: tuple[str, ...], parts: list[list[str]],
+           chosen: dict[tuple[str, ...], tuple[int, float]],
+           keys: dict[tuple[str, ...], bool], labels: list[Label]) -> tuple[str, ...]:  # fmt: skip
+    """The key a part of a two-key hold names: a key of its own, or (``rinse`` of
+    ``hold_rinse_and_presoak``) the smallest other key holding all its words, whose label
+    then wins over a caption that matches the short name better."""
+    if len(parts) < 2 or (part in chosen and labels[chosen[part][0]].control is not None):
+        return part  # one key, or a part whose own label is printed on a key
+    wider = [k for k in chosen if k != part and len(k) > len(part) and set(part) <= set(k)
+             and not keys.get(k, False)]  # fmt: skip
+    return min(wider, key=len) if wider else part
+
+
+def _combination(key: tuple[str, ...], keys: Iterable[tuple[str, ...]]) -> bool:
+    """Whether ``key`` is two other keys' words one after the other (a two-key hold)."""
+    others = set(keys) - {key}
+    return any(key[:i] in others and key[i:] in others for i in range(1, len(key)))
+
+
+def _target(label: Label, detection: Detection, window: Window | None, turn: bool,
+            keyed: Sequence[BoxT] = ()) -> BoxT:  # fmt: skip
+    """The box to touch for a label: its control, a dial it names, the shape above it (not
+    a key of another label: ``keyed``)."""
     shapes = _controls(detection, window)
     lx, ly = _centre(label.box)
     height = label.box[3] - label.box[1]
@@ -500,6 +286,11 @@ def _target(label: Label, detection: Detection, window: Window | None, turn: boo
         and 0 < ly - c.centre[1] < 4 * height + (c.box[3] - c.box[1])
         and not any(_inside(c.centre, lb) for lb in [label.box])
         and _area(c.box) < 30 * _area(label.box)
+        and c.box[3] - c.box[1] < 3 * height  # a pictogram, not a dial or a slider's track
+        and label.box[1] - c.box[3] < 1.5 * height  # just above the word
+        and not any(iou(c.box, k) > 0.5 for k in keyed)
+        # another key (text on it) or a letter of another label (inside its text) is no icon
+        and not any(_inside(t.centre, c.box) or _inside(c.centre, t.box) for t in detection.texts)
     ]
     if above:
         nearest = min(above, key=lambda c: ly - c.centre[1])
@@ -507,10 +298,17 @@ def _target(label: Label, detection: Detection, window: Window | None, turn: boo
     return label.box
 
 
-def _only_dial(detection: Detection, window: Window | None) -> BoxT | None:
-    """The panel's dial when one circle stands out (the largest, clearly larger than any other)."""
+def _only_dial(detection: Detection, window: Window | None, claimed: Sequence[BoxT] = ()
+               ) -> BoxT | None:  # fmt: skip
+    """The panel's dial when one circle stands out (the largest, clearly larger than any
+    other); a circle on a control already claimed by its label is a round key, not a dial."""
     circles = sorted(
-        (c for c in _controls(detection, window) if c.kind == "circle"),
+        (
+            c
+            for c in _controls(detection, window)
+            if (c.kind == "circle" or _round(c))
+            and not any(_inside(_centre(b), c.box) for b in claimed)
+        ),
         key=lambda c: -(c.box[2] - c.box[0]),
     )
     if not circles:

@@ -69,18 +69,29 @@ def classify(crop: np.ndarray, minimum: float = 0.55, among: str = SYMBOLS) -> t
 
 def classify_ink(ink: np.ndarray, minimum: float = 0.55, among: str = SYMBOLS) -> tuple[str, float]:
     """:func:`classify` on a glyph mask already cut from its background."""
+    ranked = rank_ink(ink, among)
+    if not ranked:
+        return "", 0.0
+    best, best_score = ranked[0]
+    return (best, best_score) if best_score >= minimum else ("", best_score)
+
+
+def rank_ink(ink: np.ndarray, among: str = SYMBOLS) -> list[tuple[str, float]]:
+    """Every symbol of ``among`` with its match (IoU) to a glyph mask, best first."""
     normal = _normalise(ink)
     if normal is None:
-        return "", 0.0
+        return []
     dilated = cv2.dilate(normal.astype(np.uint8), np.ones((3, 3), np.uint8)) > 0
-    best, best_score = "", 0.0
-    for symbol, template in templates().items():
+    scored = []
+    for symbol in templates():
         if symbol not in among:
             continue
-        t_dilated = cv2.dilate(template.astype(np.uint8), np.ones((3, 3), np.uint8)) > 0
-        inter = (dilated & t_dilated).sum()
-        union = (dilated | t_dilated).sum()
-        score = float(inter / union) if union else 0.0
-        if score > best_score:
-            best, best_score = symbol, score
-    return (best, best_score) if best_score >= minimum else ("", best_score)
+        inter = (dilated & _dilated(symbol)).sum()
+        union = (dilated | _dilated(symbol)).sum()
+        scored.append((symbol, float(inter / union) if union else 0.0))
+    return sorted(scored, key=lambda item: -item[1])
+
+
+@cache
+def _dilated(symbol: str) -> np.ndarray:
+    return cv2.dilate(templates()[symbol].astype(np.uint8), np.ones((3, 3), np.uint8)) > 0

@@ -2,7 +2,8 @@
 
 The camera of an appliance is drawn from its id and the run's seed (``mild`` variations), so
 a run is reproducible; the grounding of a set of action names on that camera's first photo
-is computed once and reused for every task of the appliance in the same process.
+is computed once and reused for every task of the appliance in the same process, and kept
+on disk (:mod:`apbot.vision.cache`) for the next process and the next run.
 """
 
 from __future__ import annotations
@@ -10,6 +11,7 @@ from __future__ import annotations
 import zlib
 from collections.abc import Sequence
 
+from apbot.vision.cache import cached_ground
 from apbot.vision.environment import ImageEnvironment, PanelEnvironment
 from apbot.vision.ground import Grounding
 from apbot.vision.photo import Camera
@@ -33,6 +35,6 @@ def image_environment(appliance: SuiteAppliance, actions: Sequence[str], seed: i
         scene = _SCENES[appliance.id] = PanelScene.of(appliance)
     panel = PanelEnvironment(appliance, camera_for(appliance.id, seed), scene)
     key = (appliance.id, tuple(actions), seed)
-    env = ImageEnvironment(panel, actions, _GROUNDINGS.get(key))
+    env = ImageEnvironment(panel, actions, _GROUNDINGS.get(key), cached_ground)
     _GROUNDINGS[key] = env.grounding
     return env

@@ -171,15 +171,16 @@ class PanelScene:
     )
 
     @classmethod
-    def of(cls, appliance: SuiteAppliance, seed: int = 0, style: DisplayStyle | None = None
-           ) -> PanelScene:  # fmt: skip
-        """The scene of a bundled appliance; ``style`` forces a display style (a style the
-        texts cannot use falls back to dot matrix)."""
+    def of(cls, appliance: SuiteAppliance, seed: int = 0, style: DisplayStyle | None = None,
+           force: bool = False) -> PanelScene:  # fmt: skip
+        """The scene of a bundled appliance; ``style`` asks for a display style (one the
+        texts cannot all use falls back to dot matrix unless ``force``: then the texts it
+        cannot show are drawn as far as they go, and only the others should be read)."""
         mains, lamps = sample_texts(appliance.model, f"{appliance.id}/{seed}")
         rng = random.Random(f"scene/{appliance.id}/{seed}")
         segment_ok = all(seven_segment_ok(t) for t in mains)
         chosen: DisplayStyle = style or ("seg" if segment_ok else "dot")
-        if chosen == "seg" and not segment_ok:
+        if chosen == "seg" and not segment_ok and not force:
             chosen = "dot"
         main_columns = max([4, *(len(visible(t)) for t in mains)])
         status_columns, status_lines = status_layout([list(t) for t in lamps])

@@ -53,6 +53,7 @@ SYMBOL_WORDS: dict[str, tuple[str, ...]] = {
     "❄": ("ice", "cool", "frozen", "cold"),
     "↕": ("vertical", "v", "updown"),
     "↔": ("horizontal", "h", "leftright"),
+    "°": ("temp", "temperature", "heat"),
 }
 WORD_SYNONYMS: dict[str, tuple[str, ...]] = {
     "power": ("onoff", "io", "on", "off"),
@@ -81,7 +82,11 @@ WORD_SYNONYMS: dict[str, tuple[str, ...]] = {
     "dry": ("extradry", "dry+"),
     "left": ("l",),
     "right": ("r",),
+    "spin": ("rpm",),
+    "rpm": ("spin",),
 }
+UNITS = {"℃": "°C", "℉": "°F"}
+"""One-character units OCR may return, as they are usually printed."""
 
 _SPLIT = re.compile(r"[^0-9a-z+½]+")
 _ALNUM = re.compile(r"[a-z]+|[0-9]+|\+[0-9]*|½")
@@ -90,7 +95,17 @@ _ALNUM = re.compile(r"[a-z]+|[0-9]+|\+[0-9]*|½")
 _CAMEL = re.compile(r"[A-Za-z]*[a-z][A-Z][A-Za-z]*")
 _CAMEL_PART = re.compile(r"[A-Z]?[a-z]+|[A-Z]+(?![a-z])")
 _IO = re.compile(r"(?:^|\s)[1il|]\s?/\s?[0o](?=\s|$)")
-_STANDALONE = re.compile(r"(?:^|\s)([+\-−])(?=\s|$)")
+_STANDALONE = re.compile(r"(?:^|\s)([+\-−])(?=\s|$|[0-9])")
+_SIGNED = re.compile(r"^\+([0-9]+)$")
+_MIXED = re.compile(r"^([a-z]+)([0-9]+)$")
+
+
+_HALF = re.compile(r"(?:^|(?<=\s))1\s?/\s?2(?=\s|$)")
+
+
+def _units(text: str) -> str:
+    """Units and signs as usually printed: ``℃`` → ``°C``, a lone ``1/2`` → ``½``."""
+    return _HALF.sub("½", "".join(UNITS.get(c, c) for c in text))
 
 
 def label_symbols(text: str) -> list[str]:
@@ -100,6 +115,7 @@ def label_symbols(text: str) -> list[str]:
     >>> label_symbols("TEMP −"), label_symbols("ADD-IN"), label_symbols("▲ UP")
     (['−'], [], ['▲'])
     """
+    text = _units(text)
     found = [c for c in text if c in SYMBOL_WORDS and c not in "+-−"]
     found += ["−" if m in "-−" else "+" for m in _STANDALONE.findall(text)]
     return found
@@ -111,6 +127,7 @@ def label_tokens(text: str) -> list[str]:
     >>> label_tokens("1/0")
     ['io', '1', '0']
     """
+    text = _units(text)
     tokens: list[str] = []
     if _IO.search(text.casefold()):  # an I/O switch that OCR read as 1/0
         tokens.append("io")
@@ -123,6 +140,9 @@ def label_tokens(text: str) -> list[str]:
         pieces = _ALNUM.findall(part)
         if len(pieces) > 1:
             tokens += pieces
+        signed = _SIGNED.match(part)
+        if signed:  # "+1": the sign's key for zone 1
+            tokens.append(signed.group(1))
     return tokens
 
 
@@ -175,9 +195,11 @@ def words_score(words: list[str], tokens: list[str], symbols: list[str]) -> floa
         return 0.0
     matched = []
     for word in words:
-        best = max([similarity(word, token) for token in pool] + [0.0])
-        if word in meanings:  # a symbol means a word exactly, never by spelling
-            best = max(best, 0.97)
+        best = _word_score(word, pool, meanings)
+        mixed = _MIXED.match(word)
+        if mixed and best < 0.9:  # "plus1" printed "+ 1", "menu2" printed "MENU 2"
+            parts = [_word_score(p, pool, meanings) for p in mixed.groups()]
+            best = max(best, 0.95 * min(parts))
         if best == 0.0 and len(word) > 4:  # a compound name word: "temptime" = TEMP/TIME
             best = 0.9 if any(word == "".join(tokens[i:j]) for i in range(len(tokens))
                               for j in range(i + 2, len(tokens) + 1)) else 0.0  # fmt: skip
@@ -187,3 +209,10 @@ def words_score(words: list[str], tokens: list[str], symbols: list[str]) -> floa
         score *= 0.5
     extra = max(0, len([t for t in tokens if not t.isdigit() or len(tokens) == 1]) - len(words))
     return max(0.0, score - 0.06 * extra)
+
+
+def _word_score(word: str, pool: list[str], meanings: list[str]) -> float:
+    best = max([similarity(word, token) for token in pool] + [0.0])
+    if word in meanings:  # a symbol means a word exactly, never by spelling
+        best = max(best, 0.97)
+    return best

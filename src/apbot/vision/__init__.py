@@ -1,0 +1,1 @@
+"""Image mode: rendered panels, grounding action names on a photo, reading the display."""
