@@ -129,3 +129,42 @@ def test_two_zones_pay_for_their_own_programme_changes() -> None:
     canonical = parse_goal(model, goal)
     states, distance = distances_to_goal(compiled, canonical)
     assert bound_violations(compiled, canonical, states, distance) == []
+
+
+PROGRAMME_RESETS_DELAY = """
+controls: [{id: prog}, {id: delay}]
+variables:
+  programme: {type: discrete, values: [cotton, wool, quick]}
+  delay: {type: numeric, ranges: [[0, 30, 1]]}
+actions: {press_prog: {control: prog}, press_delay: {control: delay}}
+features:
+  select_programme: [{actions: [press_prog], variable: programme, effect: next, reset: [delay]}]
+  set_delay: [{actions: [press_delay], variable: delay, effect: next}]
+"""
+
+
+def test_a_setting_the_programme_key_resets_counts_from_where_the_reset_leaves_it() -> None:
+    """With the delay already at 20 but the programme still to change, the PROG press will put
+    the delay back to 0: 20 DELAY presses are still to come, plus the PROG press."""
+    goal = {"programme": "wool", "delay": "20"}
+    assert _bound(PROGRAMME_RESETS_DELAY, goal, ["press_delay"] * 20) == 21
+    assert _bound(PROGRAMME_RESETS_DELAY, goal, ["press_prog", *["press_delay"] * 20]) == 0
+    model = model_from(PROGRAMME_RESETS_DELAY)
+    compiled = compiled_model(model)
+    canonical = parse_goal(model, goal)
+    states, distance = distances_to_goal(compiled, canonical)
+    assert bound_violations(compiled, canonical, states, distance) == []
+
+
+def test_a_reset_only_some_changes_make_does_not_count() -> None:
+    """A second key that changes the programme without resetting the delay: setting the delay
+    first may be right, so the delay's own distance is all the bound may say."""
+    text = PROGRAMME_RESETS_DELAY.replace(
+        "controls: [{id: prog}, {id: delay}]", "controls: [{id: prog}, {id: delay}, {id: back}]"
+    ).replace(
+        "press_delay: {control: delay}}",
+        "press_delay: {control: delay}, press_back: {control: back}}",
+    )
+    text += "  back: [{actions: [press_back], variable: programme, effect: prev}]\n"
+    goal = {"programme": "quick", "delay": "20"}
+    assert _bound(text, goal, ["press_delay"] * 20) == 1

@@ -17,6 +17,11 @@ one of its own steps makes that press, and presses entering different features a
 actions. A route that never uses its own steps — a side effect, or a programme change that
 restores the goal value as the new programme's default — needs no entry press, so a variable's
 term is ``min(own route + entry, cheapest such jump)``, never the sum of a jump and an entry.
+
+A goal setting that a still-needed change of another goal variable resets (a programme key
+that resets the delay) must be set after that change: its term is at least its distance from
+where the reset leaves it (:func:`_reset_landings`). This keeps the search from wandering a
+plateau of states that set the delay first, each as promising as the optimum by the plain sum.
 """
 
 from __future__ import annotations
@@ -178,6 +183,15 @@ class LowerBound:
             if key not in cache:
                 cache[key] = self._table(v, goal.canonical[name], goal_case, reset_costs)
             self.tables.append(cache[key])
+        # per goal variable: (other goal variable, its goal index, this one's bound after the
+        # reset every change of the other makes) — see :func:`_reset_landings`
+        self.landings = [
+            tuple(
+                (w, wanted, self._landing_bound(table, landed))
+                for w, wanted, landed in _reset_landings(compiled, goal, v)
+            )
+            for v, table in zip(goal.variables, self.tables, strict=True)
+        ]
         # steps where a partly typed buffer may finish a goal variable with one digit
         self.typing_step = {
             s: step.variable
@@ -191,7 +205,9 @@ class LowerBound:
         total = 0.0
         typing = self.typing_step.get(state.step, -1) if continuing and state.buffer else -1
         claimed: set[str] = set()
-        for (v, per_case, absent, jump), entry in zip(self.tables, self.entries, strict=True):
+        for (v, per_case, absent, jump), entry, landings in zip(
+            self.tables, self.entries, self.landings, strict=True
+        ):
             index = values[v]
             if index < 0:
                 bound = absent
@@ -200,6 +216,9 @@ class LowerBound:
                 bound = per_case[values[parent] if parent >= 0 else 0][index]
                 if v == typing and bound > 1:
                     bound = 1
+            for w, wanted, after_reset in landings:
+                if values[w] != wanted and after_reset > bound:
+                    bound = after_reset  # w must still change, and that resets v
             if bound >= 1 and entry is not None:
                 needs, features = entry
                 if state.step not in needs and claimed.isdisjoint(features):
@@ -212,6 +231,19 @@ class LowerBound:
                         bound = jump
             total += bound
         return total
+
+    @staticmethod
+    def _landing_bound(
+        table: tuple[int, tuple[tuple[float, ...], ...], float, float],
+        landed: list[tuple[int, int]],
+    ) -> float:
+        """The least bound over the (case, value index) pairs a reset may leave a variable at
+        (case -1: absent in the programme of the moment)."""
+        _, per_case, absent, _ = table
+        return min(
+            (absent if case < 0 else per_case[case][index] for case, index in landed),
+            default=0.0,
+        )
 
     def _goal_case(self, v: int) -> int | None:
         """The programme a dependent goal setting must end in, when the goal names it."""
@@ -321,6 +353,50 @@ def _entry_requirements(
     if not features:
         return None
     return frozenset(free), frozenset(features)
+
+
+def _reset_landings(
+    compiled: CompiledModel, goal: CompiledGoal, v: int
+) -> list[tuple[int, int, list[tuple[int, int]]]]:
+    """Goal variables every change of which resets goal variable ``v``: (w, w's goal index,
+    the (case, value index) pairs the reset can leave ``v`` at).
+
+    While w is off its goal it must still change, and whatever changes it resets v in the same
+    press; after the last such press v still has to go from where the reset left it to its
+    goal, by presses counted in v's term only. A w qualifies when it selects no programme of
+    its own (else a programme change could move it without the reset), and every step that
+    can change it — its own steps and those assigning it as a side effect, anywhere keys
+    included — assigns v as a side effect.
+    """
+    found = []
+    for w, wanted in zip(goal.variables, goal.wanted, strict=True):
+        if w == v or compiled.vars[w].parent >= 0:
+            continue
+        changing = [
+            step
+            for step in compiled.all_steps
+            if step.variable == w or any(target == w for target, _ in step.side)
+        ]
+        landed: set[tuple[int, int]] = set()
+        parent = compiled.vars[v].parent
+        for step in changing:
+            tables = [tables for target, tables in step.side if target == v]
+            if not tables or (
+                parent >= 0  # the same press choosing v's programme restores its default
+                and (step.variable == parent or any(t == parent for t, _ in step.side))
+            ):
+                break
+            for case, table in enumerate(tables[-1]):  # the last assignment wins
+                if table is None:
+                    landed.add((-1, 0))
+                else:
+                    landed.update((case, index) for index in set(table))
+        else:
+            if changing and landed:
+                if parent >= 0:
+                    landed.add((-1, 0))  # a programme change may also leave it absent
+                found.append((w, wanted[0], sorted(landed)))
+    return found
 
 
 def _assigning_steps(compiled: CompiledModel, programme: int) -> list[set[int]]:
