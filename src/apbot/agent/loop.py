@@ -431,13 +431,16 @@ class ClosedLoop:
         work = self.config.plan_work
         try:
             state: State | None = self.session.belief.state
-            head = plan(compiled, state, {n: target[n] for n in parents}, budget, work)
+            head = plan(compiled, state, {n: target[n] for n in parents}, budget, work, len(found))
             for action in head.actions:
                 assert state is not None
                 state = compiled.apply(state, compiled.action_index[action.name], action.seconds)
                 if state is None:
                     return found
-            rest = plan(compiled, state, target, budget, work)
+            if len(head) > len(found):
+                return found
+            # only a rest as short as the found plan's is of use: search no further
+            rest = plan(compiled, state, target, budget, work, len(found) - len(head))
         except Unreachable:
             return found
         if len(head) + len(rest) != len(found):

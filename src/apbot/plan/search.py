@@ -90,6 +90,7 @@ class TaskSearch:
         goal: CompiledGoal,
         budget: int = DEFAULT_BUDGET,
         work: int | None = None,
+        most: int | None = None,
     ) -> None:
         self.compiled = compiled
         self.goal = goal
@@ -97,6 +98,10 @@ class TaskSearch:
         # successors generated before giving up: the time a search takes, where ``budget``
         # (expanded nodes) is not — one node with a thousand-end visit costs a thousand
         self.work = EDGES_PER_BUDGET * budget if work is None else work
+        # the longest plan wanted (None: any): a caller comparing with a plan it has prunes
+        # every node whose bound says it cannot do as well
+        self.most = most
+        self._ceiling = INF if most is None else (most + 1) * PRESS - 1
         self.relevant = relevant_variables(compiled, goal)
         relevant_set = set(self.relevant)
         getter = itemgetter(*self.relevant) if self.relevant else (lambda values: ())
@@ -129,7 +134,8 @@ class TaskSearch:
         compiled = self.compiled
         bound = self.bound
         h0 = bound(start, continuing=True)
-        if h0 == INF:
+        ceiling = self._ceiling
+        if h0 == INF or h0 * PRESS > ceiling:
             raise SearchExhausted("unreachable", 0, False)
         start_key = self.key(start)
         best = {start_key: 0}
@@ -161,7 +167,7 @@ class TaskSearch:
                 if new_cost >= best.get(k, INF):
                     continue
                 h = bound(after)
-                if h == INF:
+                if h == INF or new_cost + h * PRESS > ceiling:
                     continue
                 best[k] = new_cost
                 if len(best) > STORED_PER_BUDGET * self.budget:  # memory, not time, runs out
