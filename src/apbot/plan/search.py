@@ -23,6 +23,7 @@ from dataclasses import dataclass
 from operator import itemgetter
 
 from apbot.model.effects import entry_digits
+from apbot.plan.abstract import out_of_reach
 from apbot.plan.bounds import INF, LowerBound, distances_to, typeable_values
 from apbot.plan.goals import CompiledGoal
 from apbot.plan.visits import SMALL_DOMAIN, Exit, VisitTooLarge, explore_visit, keypad_exits
@@ -45,6 +46,9 @@ CACHED_PRESSES = 5_000_000
 # keeps the display dark. The plan stays shortest; among equally short plans it prefers to set
 # things where the display shows them, so the closed loop can check what it did.
 PRESS = 1 << 16
+# successors generated before the search asks a small abstraction whether the goal is out of
+# reach at all (``apbot.plan.abstract``): cheap searches never pay for the question
+ASK_ABSTRACTION_AFTER = 20_000
 
 
 class SearchExhausted(Exception):
@@ -144,6 +148,7 @@ class TaskSearch:
         tie = itertools.count()
         frontier = [(h0 * PRESS, 0, next(tie), start_key)]
         expanded = generated = 0
+        asked = False
         while frontier:
             _, negative_cost, _, node = heapq.heappop(frontier)
             cost = -negative_cost
@@ -160,6 +165,10 @@ class TaskSearch:
             generated += len(edges)
             if generated > self.work:  # thousand-end visits: time runs out
                 raise SearchExhausted("budget", expanded, True)
+            if not asked and generated > ASK_ABSTRACTION_AFTER:
+                asked = True
+                if out_of_reach(compiled, self.goal, start):
+                    raise SearchExhausted("unreachable", expanded, False)
             for after, actions, free in edges:
                 # presses first; among plans of equal length, fewer presses with a dark display
                 new_cost = cost + len(actions) * PRESS + (len(actions) if in_the_dark else 0)
