@@ -48,7 +48,7 @@ CACHED_PRESSES = 5_000_000
 PRESS = 1 << 16
 # successors generated before the search asks a small abstraction whether the goal is out of
 # reach at all (``apbot.plan.abstract``): cheap searches never pay for the question
-ASK_ABSTRACTION_AFTER = 20_000
+ASK_ABSTRACTION_AFTER = 5_000
 
 
 class SearchExhausted(Exception):
