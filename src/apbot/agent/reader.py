@@ -473,6 +473,17 @@ class DisplayReader:
         """What a printed value of ``name`` can look like: its known renderings, or any
         number/time of its kind (a value the belief lacks must still be readable)."""
         spec = self._specs[name]
+        kept = _VALUE_PATTERNS.get((id(spec), loose))
+        if kept is not None and kept[0] is spec:  # a repair leaves most variables as they were
+            return kept[1]
+        if len(_VALUE_PATTERNS) >= 4096:
+            _VALUE_PATTERNS.clear()
+        pattern = self._value_alternatives(spec, loose)
+        _VALUE_PATTERNS[(id(spec), loose)] = (spec, pattern)
+        return pattern
+
+    @staticmethod
+    def _value_alternatives(spec: AnyVariable, loose: bool) -> str:
         known = sorted({display_value(spec, v) for v in all_values(spec)} | {ABSENT_TEXT}, key=len)
         alternatives = [_literal(k) for k in reversed(known)]
         if isinstance(spec, DiscreteVariable) and loose:
@@ -483,6 +494,10 @@ class DisplayReader:
             unit = rf"(?:\s?{re.escape(spec.unit)})?" if spec.unit else ""
             alternatives.append(rf"[-+]?\d+(?:[.,]\d+)?{unit}")
         return "|".join(alternatives)
+
+
+# value patterns by variable spec (identity-checked: the spec is kept with its pattern)
+_VALUE_PATTERNS: dict[tuple[int, bool], tuple[AnyVariable, str]] = {}
 
 
 def _focus_templates(spec: AnyVariable) -> list[tuple[str, Any]]:

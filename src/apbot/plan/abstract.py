@@ -22,7 +22,7 @@ from apbot.plan.goals import CompiledGoal
 from apbot.sim.compiled import CLEAR, COND, DIGIT, NONE, TABLE, CompiledModel, State, StepInfo
 
 # abstract states (kept values × pointer positions) the abstraction may have
-ABSTRACT_STATES = 20_000
+ABSTRACT_STATES = 5_000
 
 Node = tuple[tuple[int, ...], int]  # kept value indices, pointer
 
@@ -92,32 +92,59 @@ class _Abstraction:
             for guard in compiled.guards
             if all(v in self.position for v, _ in guard.conditions)
         ]
+        self.waits = frozenset(compiled.waits)  # waiting passes every guard
+        self._moves: dict[int, list[tuple[int, int, StepInfo | None, tuple[Any, ...], int]]] = {}
+        self._allowing: dict[tuple[int, ...], frozenset[int] | None] = {}
 
     def successors(self, node: Node) -> Iterator[Node]:
         values, step = node
-        compiled = self.compiled
-        for action in range(len(compiled.action_names)):
-            if action in compiled.waits:  # waits pass every guard
-                yield values, self._waited(step, compiled.waits[action])
+        moves = self._moves.get(step)
+        if moves is None:
+            moves = self._moves[step] = self._moves_from(step)
+        allowed = self._allowed(values)
+        for action, target, info, effect, kind in moves:
+            if allowed is not None and action not in allowed and action not in self.waits:
                 continue
-            if any(
-                action not in allowed and all(values[i] in ok for i, ok in conditions)
-                for conditions, allowed in self.guards
-            ):
+            if info is None:  # a wait: the pointer may time out, nothing else changes
+                yield values, target
+                continue
+            for after in self._effects(values, info, effect, kind):
+                yield after, target
+
+    def _allowed(self, values: tuple[int, ...]) -> frozenset[int] | None:
+        """The actions every guard holding on these kept values lets through (None: all)."""
+        if values in self._allowing:
+            return self._allowing[values]
+        allowed: frozenset[int] | None = None
+        for conditions, keys in self.guards:
+            if all(values[i] in ok for i, ok in conditions):
+                allowed = keys if allowed is None else allowed & keys
+        self._allowing[values] = allowed
+        return allowed
+
+    def _moves_from(
+        self, step: int
+    ) -> list[tuple[int, int, StepInfo | None, tuple[Any, ...], int]]:
+        """(action, pointer after, step whose effect applies or None for a wait, its effect,
+        -1 or NONE when entering only shows) for every action the pointer accepts here."""
+        compiled = self.compiled
+        moves: list[tuple[int, int, StepInfo | None, tuple[Any, ...], int]] = []
+        for action in range(len(compiled.action_names)):
+            if action in compiled.waits:
+                moves.append((action, self._waited(step, compiled.waits[action]), None, (), -1))
                 continue
             anywhere = compiled.anywhere.get(action)
             if anywhere is not None:
                 target = -1 if anywhere.leave else step
-                info, effect, kind = anywhere, anywhere.effects[action], -1
-            else:
-                target = compiled.targets[step + 1][action]
-                if target < 0:
-                    continue
-                info = compiled.steps[target]
-                effect = info.effects[action]
-                kind = NONE if info.show_on_entry and target != step else -1
-            for after in self._effects(values, info, effect, kind):
-                yield after, target
+                moves.append((action, target, anywhere, anywhere.effects[action], -1))
+                continue
+            target = compiled.targets[step + 1][action]
+            if target < 0:
+                continue
+            info = compiled.steps[target]
+            kind = NONE if info.show_on_entry and target != step else -1
+            moves.append((action, target, info, info.effects[action], kind))
+        return moves
 
     def _waited(self, step: int, seconds: float) -> int:
         if step >= 0:
