@@ -473,13 +473,13 @@ class DisplayReader:
         """What a printed value of ``name`` can look like: its known renderings, or any
         number/time of its kind (a value the belief lacks must still be readable)."""
         spec = self._specs[name]
-        kept = _VALUE_PATTERNS.get((id(spec), loose))
-        if kept is not None and kept[0] is spec:  # a repair leaves most variables as they were
-            return kept[1]
-        if len(_VALUE_PATTERNS) >= 4096:
-            _VALUE_PATTERNS.clear()
-        pattern = self._value_alternatives(spec, loose)
-        _VALUE_PATTERNS[(id(spec), loose)] = (spec, pattern)
+        # a repair rebuilds the model but leaves most variables as they were
+        key = (type(spec).__name__, spec.model_dump_json(), loose)
+        pattern = _VALUE_PATTERNS.get(key)
+        if pattern is None:
+            if len(_VALUE_PATTERNS) >= 4096:
+                _VALUE_PATTERNS.clear()
+            pattern = _VALUE_PATTERNS[key] = self._value_alternatives(spec, loose)
         return pattern
 
     @staticmethod
@@ -496,8 +496,8 @@ class DisplayReader:
         return "|".join(alternatives)
 
 
-# value patterns by variable spec (identity-checked: the spec is kept with its pattern)
-_VALUE_PATTERNS: dict[tuple[int, bool], tuple[AnyVariable, str]] = {}
+# value patterns by variable kind, definition and looseness
+_VALUE_PATTERNS: dict[tuple[str, str, bool], str] = {}
 
 
 def _focus_templates(spec: AnyVariable) -> list[tuple[str, Any]]:
