@@ -257,3 +257,26 @@ def test_settings_a_needed_programme_change_resets_count_from_the_default() -> N
     # does not charge TIME again, the pointer being on the time's step now); was 24 + 0
     assert _bound(MENU_CASES, goal, presses) == 24 + 9
     _admissible(MENU_CASES, goal)
+
+
+CLOCK_HOUR_MINUTE = """
+controls: [{id: clock}, {id: dial, kind: dial}]
+variables:
+  hour: {type: numeric, wrap: true, ranges: [[0, 23, 1]], initial: 12}
+  minute: {type: numeric, wrap: true, ranges: [[0, 59, 1]]}
+actions: {press_clock: {control: clock}, turn_cw: {control: dial, skill: turn_cw}}
+features:
+  set_clock:
+    - {actions: [press_clock]}
+    - {actions: [turn_cw], variable: hour, effect: next}
+    - {actions: [press_clock]}
+    - {actions: [turn_cw], variable: minute, effect: next}
+"""
+
+
+def test_the_hour_and_the_minute_each_count_their_own_entry_press() -> None:
+    """CLOCK lands on the step before the hour, CLOCK again on the one before the minute:
+    two presses no setting pays for, both counted now (one per feature was counted before)."""
+    goal = {"hour": "14", "minute": "3"}
+    assert _bound(CLOCK_HOUR_MINUTE, goal, []) == 1 + 2 + 1 + 3
+    _admissible(CLOCK_HOUR_MINUTE, goal)

@@ -13,10 +13,11 @@ discards the buffer); there, and only there, one digit may finish the job (``con
 
 Presses that adjust no goal variable (TIME COOK before the digits) are counted too: when a
 goal variable can only be adjusted in a step reached through such a press, any route that uses
-one of its own steps makes that press, and presses entering different features are distinct
-actions. A route that never uses its own steps — a side effect, or a programme change that
-restores the goal value as the new programme's default — needs no entry press, so a variable's
-term is ``min(own route + entry, cheapest such jump)``, never the sum of a jump and an entry.
+one of its own steps makes that press, and presses landing on different steps are distinct
+actions (the hour and the minute of a clock each have their own CLOCK press in front). A route
+that never uses its own steps — a side effect, or a programme change that restores the goal
+value as the new programme's default — needs no entry press, so a variable's term is
+``min(own route + entry, cheapest such jump)``, never the sum of a jump and an entry.
 
 A goal setting that a still-needed change of another goal variable resets (a programme key
 that resets the delay) must be set after that change: its term is at least its distance from
@@ -297,7 +298,7 @@ class LowerBound:
         vars_ = self.compiled.vars
         total = 0.0
         typing = self.typing_step.get(state.step, -1) if continuing and state.buffer else -1
-        claimed: set[str] = set()
+        claimed: set[int] = set()  # steps an entry press counted so far lands on
         found: list[float] = []  # each goal variable's term, when programme returns need them
         must = self._must_change(values) if self.detectors else ()
         for (v, per_case, absent, jump), entry, landings in zip(
@@ -315,13 +316,13 @@ class LowerBound:
                 if after_reset > bound and (w in must if wanted == MUST else values[w] != wanted):
                     bound = after_reset  # w must still change, and that resets v
             if bound >= 1 and entry is not None:
-                needs, features = entry
-                if state.step not in needs and claimed.isdisjoint(features):
+                needs, _, gates = entry
+                if state.step not in needs and claimed.isdisjoint(gates):
                     # a route through v's own steps makes an entry press no goal variable
                     # pays for; a jump (side effect, programme change) makes none
                     if bound + 1 <= jump:
                         bound += 1
-                        claimed |= features
+                        claimed |= gates
                     else:
                         bound = jump
             total += bound
@@ -507,14 +508,17 @@ class LowerBound:
 
 def _entry_requirements(
     compiled: CompiledModel, v: int, goal_vars: set[int]
-) -> tuple[frozenset[int], frozenset[str]] | None:
+) -> tuple[frozenset[int], frozenset[str], frozenset[int]] | None:
     """When every step adjusting ``v`` sits behind a step that adjusts no goal variable:
-    the pointer positions from which no such entry press is needed, and the features involved.
-    None when some step adjusting ``v`` can be entered directly."""
+    the pointer positions from which no such entry press is needed, the features involved,
+    and the steps in front (an entry press lands on one of them: presses landing on disjoint
+    sets of steps are distinct presses). None when some step adjusting ``v`` can be entered
+    directly."""
     if any(step.variable == v for step in compiled.anywhere_steps):
         return None  # an anywhere key adjusts it without entering anything
     free: set[int] = set()
     features: set[str] = set()
+    gates: set[int] = set()
     for sid, step in enumerate(compiled.steps):
         if step.variable != v:
             continue
@@ -531,10 +535,11 @@ def _entry_requirements(
             return None
         free.add(sid)
         free.update(before)
+        gates.update(before)
         features.add(step.feature)
     if not features:
         return None
-    return frozenset(free), frozenset(features)
+    return frozenset(free), frozenset(features), frozenset(gates)
 
 
 def _return_cost(compiled: CompiledModel, p: int, wanted: int) -> float:
