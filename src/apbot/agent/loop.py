@@ -299,6 +299,12 @@ class ClosedLoop:
                     continue
                 if _starts(name):
                     others = {n: v for n, v in target.items() if n != name}
+                    if self.session.belief.value(name) == value and self._stops(others, name):
+                        # it runs as asked; the belief's only way to the rest stops it again
+                        # (a reset the start is believed to make, seen on a running display)
+                        raise Stop(
+                            f"no plan on the belief model that keeps {name}={value}: {exc.reason}"
+                        ) from None
                     if others and self._progress(others):
                         return self._plan(others)  # a run state comes last: set the rest first
                     anyway = self._start_anyway(name, value, target)
@@ -471,6 +477,14 @@ class ClosedLoop:
             return bool(self._plan(target).macro_actions)
         except Unreachable:
             return False
+
+    def _stops(self, others: dict[str, Any], name: str) -> bool:
+        """Whether the belief's plan to ``others`` changes run state ``name`` on the way."""
+        try:
+            found = self._plan(others)
+        except Unreachable:
+            return False
+        return any(name in m.expect for m in found.macro_actions)
 
     def _plannable(self, target: dict[str, Any]) -> bool:
         try:
