@@ -292,6 +292,7 @@ class ClosedLoop:
             if not self.config.closed_loop or exc.budget_hit:
                 raise Stop(f"no plan on the belief model: {exc.reason}") from None
             reachable: dict[str, Any] = {}
+            kept = ""  # a run state the appliance is in as asked: nothing may undo it
             # the goal variable that breaks planning (a run state last: it locks the rest)
             for name, value in sorted(target.items(), key=lambda item: _starts(item[0])):
                 if self._plannable({**reachable, name: value}):
@@ -299,13 +300,11 @@ class ClosedLoop:
                     continue
                 if _starts(name):
                     others = {n: v for n, v in target.items() if n != name}
-                    if self.session.belief.value(name) == value and self._stops(others, name):
-                        # it runs as asked; the belief's only way to the rest stops it again
-                        # (a reset the start is believed to make, seen on a running display)
-                        raise Stop(
-                            f"no plan on the belief model that keeps {name}={value}: {exc.reason}"
-                        ) from None
-                    if others and self._progress(others):
+                    # running as asked, a way to the rest that stops the cycle is no progress:
+                    # starting again would undo it (a reset the start is believed to make,
+                    # often read off a running display that only hides the setting)
+                    kept = name if self.session.belief.value(name) == value else ""
+                    if others and not self._undoes(others, kept) and self._progress(others):
                         return self._plan(others)  # a run state comes last: set the rest first
                     anyway = self._start_anyway(name, value, target)
                     if anyway is not None:
@@ -321,11 +320,19 @@ class ClosedLoop:
                         partial: Plan | None = self._plan(reachable)
                     except Unreachable:
                         partial = None
-                    if partial is not None and partial.macro_actions:
+                    if (
+                        partial is not None
+                        and partial.macro_actions
+                        and not (kept and any(kept in m.expect for m in partial.macro_actions))
+                    ):
                         return partial  # progress: the rest may be reachable from there
-                if self.inspect(name):
+                if not kept and self.inspect(name):
                     return self.make_plan(target)
                 break
+            if kept:
+                raise Stop(
+                    f"no plan on the belief model that keeps {kept}={target[kept]}: {exc.reason}"
+                ) from None
             raise Stop(f"no plan on the belief model: {exc.reason}") from None
 
     def _look(self, names: list[str]) -> bool:
@@ -478,8 +485,11 @@ class ClosedLoop:
         except Unreachable:
             return False
 
-    def _stops(self, others: dict[str, Any], name: str) -> bool:
-        """Whether the belief's plan to ``others`` changes run state ``name`` on the way."""
+    def _undoes(self, others: dict[str, Any], name: str) -> bool:
+        """Whether the belief's plan to ``others`` changes run state ``name`` on the way
+        (False when ``name`` is empty: nothing to keep)."""
+        if not name:
+            return False
         try:
             found = self._plan(others)
         except Unreachable:
