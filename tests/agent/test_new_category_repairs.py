@@ -13,9 +13,10 @@ from apbot.agent.displays import DisplayLearner
 from apbot.agent.environment import FeedbackMode, SimulatorEnvironment
 from apbot.agent.episode import TaskContext
 from apbot.agent.guards import GuardLearner
+from apbot.agent.loop import ClosedLoop
 from apbot.agent.procedures import ProcedureRepairer
 from apbot.agent.reader import DisplayReader
-from apbot.agent.session import AgentConfig, Session
+from apbot.agent.session import AgentConfig, Session, Stop
 from apbot.model.load import loads_model
 from apbot.model.schema import ApplianceModel
 from tests.helpers import model_from
@@ -491,3 +492,39 @@ def test_a_setting_missing_from_the_goals_programme_is_looked_for_before_startin
     goal = {"mode": "low", "cook_time": "9 h", "running": "on"}
     episode, reached = run(suite_model("slow_cooker_1"), belief, goal, feedback)
     assert reached and episode.claimed_success, episode.failure
+
+
+WASHER = """
+controls: [{id: rinse, label: RINSE}, {id: start, label: START}]
+variables:
+  rinse: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "RINSE+"}}
+  running: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "RUN"}}
+actions: {press_rinse: {control: rinse}, press_start: {control: start}}
+features:
+  rinse: [{actions: [press_rinse], variable: rinse, effect: toggle}]
+  start: [{actions: [press_start], variable: running, effect: toggle, reset: [rinse]}]
+guards:
+  - {name: running, when: {running: "on"}, only: [press_start], display: RUN}
+display: {idle: READY, indicators: [rinse]}
+"""
+
+
+def test_a_cycle_running_as_asked_is_not_stopped_to_redo_a_setting_the_belief_says_it_reset() -> (
+    None
+):
+    # the belief: START toggles the cycle and resets the rinse, and running locks the rinse
+    # key. Running as asked with the rinse off, the only way to the rinse stops the cycle
+    # (and starting again would reset it): the loop never undoes the run for it
+    # (washing_machine_1 t02/t04 on their read beliefs, where the reset was a misreading)
+    model = model_from(WASHER)
+    env = SimulatorEnvironment(model, "display")
+    context = TaskContext("unit", "test", "t", "", {}, model, actions=tuple(env.actions))
+    loop = ClosedLoop(AgentConfig(), context, env)
+    loop.session.start()
+    loop.session.belief.set_value("running", "on")
+    try:  # a stop, or a plan (a guard supposed to let RINSE through) that keeps it running
+        found = loop.make_plan({"rinse": "on", "running": "on"})
+    except Stop as stop:
+        assert "keeps running=on" in stop.reason
+        return
+    assert not any("running" in m.expect for m in found.macro_actions), found

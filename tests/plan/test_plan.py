@@ -243,6 +243,51 @@ def test_a_work_limit_gives_up_on_successors_generated(washer: ApplianceModel) -
     assert len(plan(washer, None, goal, work=1_000_000)) == len(found)
 
 
+def test_a_longest_plan_wanted_prunes_the_search(washer: ApplianceModel) -> None:
+    """``most``: a plan that long is found as before; one press less, there is none, and the
+    search says so after expanding fewer states than the full search did."""
+    goal = {"power": "on", "programme": "wool", "temperature": "20", "finish_in": "5 h"}
+    found = plan(washer, None, goal)
+    assert len(plan(washer, None, goal, most=len(found))) == len(found)
+    with pytest.raises(Unreachable, match=f"at most {len(found) - 1} actions") as caught:
+        plan(washer, None, goal, most=len(found) - 1)
+    assert not caught.value.budget_hit
+    with pytest.raises(Unreachable, match="at most 0 actions"):
+        plan(washer, None, goal, most=0)
+
+
+PLATEAU = """
+controls: [{id: power}, {id: prog}, {id: clock}, {id: eco}]
+variables:
+  power: {type: discrete, values: ["off", "on"]}
+  programme: {type: discrete, values: [cool, heat, dry, auto]}
+  clock: {type: time, wrap: true, ranges: [["01:00:00", "12:59:00", 60]]}
+  eco: {type: numeric, wrap: true, ranges: [[1, 5, 1]]}
+actions: {press_power: {control: power}, press_prog: {control: prog},
+          press_clock: {control: clock}, press_eco: {control: eco}}
+features:
+  power: [{actions: [press_power], variable: power, effect: toggle}]
+  set_programme: [{actions: [press_prog], variable: programme, effect: next,
+                   reset: [clock, eco]}]
+  set_clock: [{actions: [press_clock], variable: clock, effect: next}]
+  set_eco: [{actions: [press_eco], variable: eco, effect: next}]
+guards:
+  - {when: {power: "off"}, only: [press_power]}
+"""
+
+
+def test_settings_a_programme_key_resets_are_planned_without_a_plateau() -> None:
+    """The shape of a read air conditioner manual: the programme key resets a 720-value
+    clock. Every state that sets the clock before the programme looked as good as the
+    optimum to the plain bound, and the search ran out of work; now it walks straight in."""
+    model = model_from(PLATEAU)
+    goal = {"power": "on", "programme": "heat", "clock": "07:45", "eco": "4"}
+    found = plan(model, None, goal, work=100_000)
+    assert len(found) == 1 + 1 + 405 + 3
+    assert found.expanded < 50
+    assert execute(model, found).satisfies(found.goal)
+
+
 CLOCK = """
 controls: [{id: clock, label: CLOCK}, {id: hour, label: HOUR}, {id: minute, label: MIN}]
 variables:
@@ -344,6 +389,8 @@ def test_bad_arguments_name_themselves(washer: ApplianceModel) -> None:
         plan(washer, None, goal, budget=0)
     with pytest.raises(ValueError, match="work is a positive number"):
         plan(washer, None, goal, work=0)
+    with pytest.raises(ValueError, match="most is a number of actions"):
+        plan(washer, None, goal, most=-1)
     assert len(plan(washer, start, goal)) == 1  # a real state is fine
 
 

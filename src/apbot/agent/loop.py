@@ -292,6 +292,7 @@ class ClosedLoop:
             if not self.config.closed_loop or exc.budget_hit:
                 raise Stop(f"no plan on the belief model: {exc.reason}") from None
             reachable: dict[str, Any] = {}
+            kept = ""  # a run state the appliance is in as asked: nothing may undo it
             # the goal variable that breaks planning (a run state last: it locks the rest)
             for name, value in sorted(target.items(), key=lambda item: _starts(item[0])):
                 if self._plannable({**reachable, name: value}):
@@ -299,7 +300,11 @@ class ClosedLoop:
                     continue
                 if _starts(name):
                     others = {n: v for n, v in target.items() if n != name}
-                    if others and self._progress(others):
+                    # running as asked, a way to the rest that stops the cycle is no progress:
+                    # starting again would undo it (a reset the start is believed to make,
+                    # often read off a running display that only hides the setting)
+                    kept = name if self.session.belief.value(name) == value else ""
+                    if others and not self._undoes(others, kept) and self._progress(others):
                         return self._plan(others)  # a run state comes last: set the rest first
                     anyway = self._start_anyway(name, value, target)
                     if anyway is not None:
@@ -315,11 +320,19 @@ class ClosedLoop:
                         partial: Plan | None = self._plan(reachable)
                     except Unreachable:
                         partial = None
-                    if partial is not None and partial.macro_actions:
+                    if (
+                        partial is not None
+                        and partial.macro_actions
+                        and not (kept and any(kept in m.expect for m in partial.macro_actions))
+                    ):
                         return partial  # progress: the rest may be reachable from there
-                if self.inspect(name):
+                if not kept and self.inspect(name):
                     return self.make_plan(target)
                 break
+            if kept:
+                raise Stop(
+                    f"no plan on the belief model that keeps {kept}={target[kept]}: {exc.reason}"
+                ) from None
             raise Stop(f"no plan on the belief model: {exc.reason}") from None
 
     def _look(self, names: list[str]) -> bool:
@@ -431,13 +444,16 @@ class ClosedLoop:
         work = self.config.plan_work
         try:
             state: State | None = self.session.belief.state
-            head = plan(compiled, state, {n: target[n] for n in parents}, budget, work)
+            head = plan(compiled, state, {n: target[n] for n in parents}, budget, work, len(found))
             for action in head.actions:
                 assert state is not None
                 state = compiled.apply(state, compiled.action_index[action.name], action.seconds)
                 if state is None:
                     return found
-            rest = plan(compiled, state, target, budget, work)
+            if len(head) > len(found):
+                return found
+            # only a rest as short as the found plan's is of use: search no further
+            rest = plan(compiled, state, target, budget, work, len(found) - len(head))
         except Unreachable:
             return found
         if len(head) + len(rest) != len(found):
@@ -468,6 +484,17 @@ class ClosedLoop:
             return bool(self._plan(target).macro_actions)
         except Unreachable:
             return False
+
+    def _undoes(self, others: dict[str, Any], name: str) -> bool:
+        """Whether the belief's plan to ``others`` changes run state ``name`` on the way
+        (False when ``name`` is empty: nothing to keep)."""
+        if not name:
+            return False
+        try:
+            found = self._plan(others)
+        except Unreachable:
+            return False
+        return any(name in m.expect for m in found.macro_actions)
 
     def _plannable(self, target: dict[str, Any]) -> bool:
         try:

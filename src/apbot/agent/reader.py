@@ -36,7 +36,7 @@ from __future__ import annotations
 import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from functools import cached_property
+from functools import cached_property, lru_cache
 from typing import Any, Literal
 
 from apbot.model.display import (
@@ -234,7 +234,7 @@ class DisplayReader:
     def _without_lamps(self, text: str) -> str:
         """The text without the lamps the belief knows at its end (a lamp alone is no reading
         of the main display)."""
-        trailing = re.compile(rf"\s+(?:{self._lamp_words.pattern})\s*$", re.IGNORECASE)
+        trailing = _regex(rf"\s+(?:{self._lamp_words.pattern})\s*$", re.IGNORECASE)
         while (match := trailing.search(text)) is not None and match.start() > 0:
             text = text[: match.start()]
         return text
@@ -368,8 +368,8 @@ class DisplayReader:
     def _lamp_words(self) -> re.Pattern[str]:
         texts = sorted({t for rows in self._lamp_table.values() for _, t in rows if t}, key=len)
         if not texts:
-            return re.compile(r"(?!x)x")
-        return re.compile("|".join(_literal(t) for t in reversed(texts)), re.IGNORECASE)
+            return _regex(r"(?!x)x")
+        return _regex("|".join(_literal(t) for t in reversed(texts)), re.IGNORECASE)
 
     @cached_property
     def _screens(self) -> list[Screen]:
@@ -460,11 +460,11 @@ class DisplayReader:
             regex = rf"\s*{main}(?P<_lamps>(?:\s+(?:{lamps}))*)\s*"
             # found inside a longer text, not inside a word or a number (1 is no reading of
             # a 1-4 lamp, nor 12 of 12/24)
-            search = re.compile(rf"(?<![\w:.%\-/]){main}(?![\w:.%\-/])", re.IGNORECASE)
+            search = _regex(rf"(?<![\w:.%\-/]){main}(?![\w:.%\-/])", re.IGNORECASE)
         else:
             regex = rf"\s*(?P<_lamps>(?:{lamps})(?:\s+(?:{lamps}))*)?\s*"
             search = None
-        return _Pattern(screen, re.compile(regex, re.IGNORECASE), tuple(fields), search)
+        return _Pattern(screen, _regex(regex, re.IGNORECASE), tuple(fields), search)
 
     def _dark(self, screen: Screen) -> bool:
         return screen.kind == "guard" and self.belief.guards[screen.guard or 0].hide
@@ -473,6 +473,17 @@ class DisplayReader:
         """What a printed value of ``name`` can look like: its known renderings, or any
         number/time of its kind (a value the belief lacks must still be readable)."""
         spec = self._specs[name]
+        # a repair rebuilds the model but leaves most variables as they were
+        key = (type(spec).__name__, spec.model_dump_json(), loose)
+        pattern = _VALUE_PATTERNS.get(key)
+        if pattern is None:
+            if len(_VALUE_PATTERNS) >= 4096:
+                _VALUE_PATTERNS.clear()
+            pattern = _VALUE_PATTERNS[key] = self._value_alternatives(spec, loose)
+        return pattern
+
+    @staticmethod
+    def _value_alternatives(spec: AnyVariable, loose: bool) -> str:
         known = sorted({display_value(spec, v) for v in all_values(spec)} | {ABSENT_TEXT}, key=len)
         alternatives = [_literal(k) for k in reversed(known)]
         if isinstance(spec, DiscreteVariable) and loose:
@@ -483,6 +494,10 @@ class DisplayReader:
             unit = rf"(?:\s?{re.escape(spec.unit)})?" if spec.unit else ""
             alternatives.append(rf"[-+]?\d+(?:[.,]\d+)?{unit}")
         return "|".join(alternatives)
+
+
+# value patterns by variable kind, definition and looseness
+_VALUE_PATTERNS: dict[tuple[str, str, bool], str] = {}
 
 
 def _focus_templates(spec: AnyVariable) -> list[tuple[str, Any]]:
@@ -512,6 +527,14 @@ def _label_pattern(label: str) -> str:
 def _literal(text: str) -> str:
     """A template's literal text as a pattern: any run of spaces matches any run of spaces."""
     return r"\s+".join(re.escape(part) for part in re.split(r"\s+", text)) if text else ""
+
+
+@lru_cache(maxsize=8192)
+def _regex(pattern: str, flags: int = 0) -> re.Pattern[str]:
+    """A compiled pattern, kept across readers: every repair makes a new belief and a new
+    reader whose screens are mostly the old ones, and ``re``'s own cache (512 patterns) is
+    too small for a benchmark's worth of them."""
+    return re.compile(pattern, flags)
 
 
 def _squash(text: str) -> str:

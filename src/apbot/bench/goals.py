@@ -19,7 +19,7 @@ truth, never shown to a method.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Literal
 
 from apbot.model.schema import ApplianceModel
@@ -97,13 +97,36 @@ def method_goal(
         parsed = dict(answer.goal)
         exact = same_goal(belief, truth, parsed, stored)
         return MethodGoal(parsed, dict(parsed), exact=exact, usage=answer.usage.record())
-    outside: list[str] = []
-    try:
-        parsed = parse_instruction(belief, instruction, manual, outside=outside)
-    except GoalParseError as exc:
-        return MethodGoal(None, None, f"cannot read the instruction: {exc}", exact=False)
-    exact = same_goal(belief, truth, parsed, stored)
-    return MethodGoal(dict(parsed), dict(parsed), exact=exact, outside=outside)
+    key = (id(belief), id(truth), instruction, manual, repr(sorted(stored.items())))
+    known = _OFFLINE.get(key)
+    if known is None or known[0] is not belief or known[1] is not truth:
+        outside: list[str] = []
+        try:
+            parsed = parse_instruction(belief, instruction, manual, outside=outside)
+        except GoalParseError as exc:
+            found = MethodGoal(None, None, f"cannot read the instruction: {exc}", exact=False)
+        else:
+            exact = same_goal(belief, truth, parsed, stored)
+            found = MethodGoal(dict(parsed), dict(parsed), exact=exact, outside=outside)
+        if len(_OFFLINE) >= OFFLINE_KEPT:
+            _OFFLINE.clear()
+        known = _OFFLINE[key] = (belief, truth, found)
+    found = known[2]
+    return replace(
+        found,
+        goal=None if found.goal is None else dict(found.goal),
+        parsed=None if found.parsed is None else dict(found.parsed),
+        outside=list(found.outside),
+    )
+
+
+# Offline readings by belief, truth, instruction, manual and stored goal: the parser is
+# deterministic and every method of a task asks it the same question on the same (frozen,
+# cached) belief; the alignment judging it costs more than the parse. Identity is checked, so
+# a model freed and another allocated at its address is never mistaken for it.
+OFFLINE_KEPT = 4096
+_OFFLINE: dict[tuple[int, int, str, str, str], tuple[ApplianceModel, ApplianceModel, MethodGoal]]
+_OFFLINE = {}
 
 
 def same_goal(

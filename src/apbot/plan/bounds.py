@@ -13,10 +13,16 @@ discards the buffer); there, and only there, one digit may finish the job (``con
 
 Presses that adjust no goal variable (TIME COOK before the digits) are counted too: when a
 goal variable can only be adjusted in a step reached through such a press, any route that uses
-one of its own steps makes that press, and presses entering different features are distinct
-actions. A route that never uses its own steps — a side effect, or a programme change that
-restores the goal value as the new programme's default — needs no entry press, so a variable's
-term is ``min(own route + entry, cheapest such jump)``, never the sum of a jump and an entry.
+one of its own steps makes that press, and presses landing on different steps are distinct
+actions (the hour and the minute of a clock each have their own CLOCK press in front). A route
+that never uses its own steps — a side effect, or a programme change that restores the goal
+value as the new programme's default — needs no entry press, so a variable's term is
+``min(own route + entry, cheapest such jump)``, never the sum of a jump and an entry.
+
+A goal setting that a still-needed change of another goal variable resets (a programme key
+that resets the delay) must be set after that change: its term is at least its distance from
+where the reset leaves it (:func:`_reset_landings`). This keeps the search from wandering a
+plateau of states that set the delay first, each as promising as the optimum by the plain sum.
 """
 
 from __future__ import annotations
@@ -34,10 +40,16 @@ _ABSENT = ("absent",)  # a dependent setting that does not exist in the current 
 
 def _value_graph(
     compiled: CompiledModel, v: int, only_case: int | None = None, reset_costs: tuple[int, ...] = ()
-) -> tuple[dict[Any, list[tuple[Any, int]]], list[tuple[Any, int]], list[tuple[Any, int]]]:
+) -> tuple[
+    dict[Any, list[tuple[Any, int]]],
+    list[tuple[Any, int]],
+    list[tuple[Any, int]],
+    list[tuple[Any, int]],
+]:
     """Reverse edges ``to -> [(from, cost)]`` over canonical values, and two kinds of "from
     anywhere" edges: typing on the variable's own keypad step, and *jumps* made from outside
-    its steps (side effects, programme changes) that need no press entering them.
+    its steps (side effects, programme changes) that need no press entering them. The last
+    list holds the jumps that are programme changes (also among the jumps).
 
     ``only_case`` keeps a programme-dependent setting inside one programme's domain (the goal's).
     ``reset_costs`` is what a programme change to each programme value, restoring the setting's
@@ -85,6 +97,7 @@ def _value_graph(
                     table = tables[case]
                     if table is not None:
                         jumps.append((domain.values[table[0]], 0))
+    programme: list[tuple[Any, int]] = []
     if var.parent >= 0:  # a programme change restores the new programme's default
         # ... or, for a ``remember`` setting, the value kept for it: any of its values
         remembered = v in compiled.memory_slots
@@ -96,12 +109,12 @@ def _value_graph(
             for case, d in enumerate(var.domains):
                 cost = reset_costs[case] if reset_costs else 0
                 if d is None:
-                    jumps.append((_ABSENT, cost))
+                    programme.append((_ABSENT, cost))
                 else:
-                    jumps.extend((value, cost) for value in landing(d))
+                    programme.extend((value, cost) for value in landing(d))
         else:
-            jumps.extend((value, 0) for _, d in cases() for value in landing(d))
-    return reverse, typed_anywhere, jumps
+            programme.extend((value, 0) for _, d in cases() for value in landing(d))
+    return reverse, typed_anywhere, jumps + programme, programme
 
 
 def typeable_values(compiled: CompiledModel, v: int) -> list[tuple[Any, int]]:
@@ -143,20 +156,91 @@ def _distances(
 ) -> tuple[dict[Any, float], float, float]:
     """:func:`distances_to`, plus the cheapest jump landing on the goal value: the only way
     there that uses none of the variable's own steps."""
-    reverse, typed_anywhere, jumps = _value_graph(compiled, v, only_case, reset_costs)
+    dist, from_anywhere, jump, _ = _distances_apart(compiled, v, goal_value, only_case, reset_costs)
+    return dist, from_anywhere, jump
+
+
+def _distances_apart(
+    compiled: CompiledModel,
+    v: int,
+    goal_value: Any,
+    only_case: int | None,
+    reset_costs: tuple[int, ...],
+) -> tuple[dict[Any, float], float, float, float]:
+    """:func:`_distances`, plus the cost from anywhere by routes with no programme change."""
+    reverse, typed_anywhere, jumps, programme = _value_graph(compiled, v, only_case, reset_costs)
+    dist = _backwards(reverse, goal_value)
     anywhere = typed_anywhere + jumps
+    from_anywhere = min((cost + dist.get(target, INF) for target, cost in anywhere), default=INF)
+    jump = min((cost for target, cost in jumps if target == goal_value), default=INF)
+    side = jumps[: len(jumps) - len(programme)]  # the programme changes come last
+    unchosen = min(
+        (cost + dist.get(target, INF) for target, cost in typed_anywhere + side), default=INF
+    )
+    return dist, from_anywhere, jump, unchosen
+
+
+def _per_case_table(
+    compiled: CompiledModel, v: int, goal_value: Any, reset_costs: tuple[int, ...]
+) -> tuple[tuple[tuple[float, ...], ...], float, float, tuple[tuple[float, ...], ...]]:
+    """The bound per case and value, the bound when absent, the cheapest jump, and the bound
+    per case and value with no programme change (typing and side effects only), for a
+    setting of a programme the goal does not name: distances within each programme's own
+    domain (with its own keys' tables), since every programme change puts the setting back to
+    the new programme's default (or what it kept there). Mixing the programmes' tables in one
+    graph would let a setting land on a programme's default and walk on with another's keys.
+    """
+    var = compiled.vars[v]
+    _, typed, jumps, programme = _value_graph(compiled, v, None, reset_costs)
+    side = jumps[: len(jumps) - len(programme)]  # the programme changes come last
+    dists: list[dict[Any, float]] = []
+    for case, domain in enumerate(var.domains):
+        if domain is None or goal_value not in domain.index:
+            dists.append({})  # the goal cannot hold in this programme
+        else:
+            dists.append(_backwards(_value_graph(compiled, v, case)[0], goal_value))
+
+    def from_any_case(value: Any) -> float:
+        return min((dist.get(value, INF) for dist in dists), default=INF)
+
+    anywhere = min((cost + from_any_case(target) for target, cost in typed + side), default=INF)
+    remembered = v in compiled.memory_slots
+    for case, domain in enumerate(var.domains):
+        if domain is None:
+            continue
+        cost = reset_costs[case] if reset_costs else 0
+        landing = domain.values if remembered else [domain.values[domain.initial]]
+        anywhere = min(anywhere, cost + min(dists[case].get(value, INF) for value in landing))
+    jump: float = min((cost for target, cost in jumps if target == goal_value), default=INF)
+    per_case = tuple(
+        ()
+        if domain is None
+        else tuple(min(dists[case].get(value, INF), anywhere) for value in domain.values)
+        for case, domain in enumerate(var.domains)
+    )
+    # with no programme change: own keys within the programme, side effects, typing
+    unchosen = min((cost + from_any_case(target) for target, cost in typed + side), default=INF)
+    free = tuple(
+        ()
+        if domain is None
+        else tuple(min(dists[case].get(value, INF), unchosen) for value in domain.values)
+        for case, domain in enumerate(var.domains)
+    )
+    return per_case, anywhere, jump, free
+
+
+def _backwards(reverse: dict[Any, list[tuple[Any, int]]], goal_value: Any) -> dict[Any, float]:
+    """Fewest counted edges from every value to ``goal_value`` (0-1 BFS backwards)."""
     dist: dict[Any, float] = {goal_value: 0}
     queue: deque[Any] = deque([goal_value])
-    while queue:  # 0-1 BFS backwards from the goal
+    while queue:
         node = queue.popleft()
         for source, cost in reverse.get(node, []):
             candidate = dist[node] + cost
             if candidate < dist.get(source, INF):
                 dist[source] = candidate
                 (queue.appendleft if cost == 0 else queue.append)(source)
-    from_anywhere = min((cost + dist.get(target, INF) for target, cost in anywhere), default=INF)
-    jump = min((cost for target, cost in jumps if target == goal_value), default=INF)
-    return dist, from_anywhere, jump
+    return dist
 
 
 class LowerBound:
@@ -178,6 +262,30 @@ class LowerBound:
             if key not in cache:
                 cache[key] = self._table(v, goal.canonical[name], goal_case, reset_costs)
             self.tables.append(cache[key])
+        self.returns = self._programme_returns(cache)
+        # programmes no goal names, with the goal settings that may need them to change:
+        # [(setting, its bound per case and value with no programme change)]
+        self.detectors: dict[int, list[tuple[int, tuple[tuple[float, ...], ...]]]] = {}
+        for name, v in zip(goal.names, goal.variables, strict=True):
+            parent = compiled.vars[v].parent
+            if parent < 0 or parent in goal_vars:
+                continue
+            costs = charged.get(v, ())
+            free_key = ("free", v, goal.canonical[name], costs)
+            if free_key not in cache:
+                cache[free_key] = _per_case_table(compiled, v, goal.canonical[name], costs)[3]
+            self.detectors.setdefault(parent, []).append((v, cache[free_key]))
+        candidates = [(w, wanted[0]) for w, wanted in zip(goal.variables, goal.wanted, strict=True)]
+        candidates += [(w, MUST) for w in self.detectors]
+        # per goal variable: (a variable that must still change, its goal index or MUST,
+        # this one's bound after the reset every change of it makes) — :func:`_reset_landings`
+        self.landings = [
+            tuple(
+                (w, wanted, self._landing_bound(table, landed))
+                for w, wanted, landed in _reset_landings(compiled, candidates, v)
+            )
+            for v, table in zip(goal.variables, self.tables, strict=True)
+        ]
         # steps where a partly typed buffer may finish a goal variable with one digit
         self.typing_step = {
             s: step.variable
@@ -190,8 +298,12 @@ class LowerBound:
         vars_ = self.compiled.vars
         total = 0.0
         typing = self.typing_step.get(state.step, -1) if continuing and state.buffer else -1
-        claimed: set[str] = set()
-        for (v, per_case, absent, jump), entry in zip(self.tables, self.entries, strict=True):
+        claimed: set[int] = set()  # steps an entry press counted so far lands on
+        found: list[float] = []  # each goal variable's term, when programme returns need them
+        must = self._must_change(values) if self.detectors else ()
+        for (v, per_case, absent, jump), entry, landings in zip(
+            self.tables, self.entries, self.landings, strict=True
+        ):
             index = values[v]
             if index < 0:
                 bound = absent
@@ -200,18 +312,118 @@ class LowerBound:
                 bound = per_case[values[parent] if parent >= 0 else 0][index]
                 if v == typing and bound > 1:
                     bound = 1
+            for w, wanted, after_reset in landings:
+                if after_reset > bound and (w in must if wanted == MUST else values[w] != wanted):
+                    bound = after_reset  # w must still change, and that resets v
             if bound >= 1 and entry is not None:
-                needs, features = entry
-                if state.step not in needs and claimed.isdisjoint(features):
+                needs, _, gates = entry
+                if state.step not in needs and claimed.isdisjoint(gates):
                     # a route through v's own steps makes an entry press no goal variable
                     # pays for; a jump (side effect, programme change) makes none
                     if bound + 1 <= jump:
                         bound += 1
-                        claimed |= features
+                        claimed |= gates
                     else:
                         bound = jump
             total += bound
+            if self.returns:
+                found.append(bound)
+        for p, wanted, back, members in self.returns:
+            if values[p] != wanted or found[self._index[p]] != 0:
+                continue
+            gap = 0.0
+            for k, unchosen in members:
+                v = self.tables[k][0]
+                index = values[v]
+                if index < 0 or found[k] == INF:
+                    continue
+                without = unchosen[index]
+                if v == typing and without > 1:
+                    without = 1
+                for w, wanted_w, after_reset in self.landings[k]:
+                    if after_reset > without and (
+                        w in must if wanted_w == MUST else values[w] != wanted_w
+                    ):
+                        without = after_reset
+                gap += without - found[k]
+            total += min(gap, back)
         return total
+
+    def _must_change(self, values: tuple[int, ...]) -> set[int]:
+        """Programmes no goal names that must change all the same: a goal setting of theirs is
+        absent in the current programme, or no key but a programme change brings it to its
+        goal from here."""
+        must = set()
+        for w, settings in self.detectors.items():
+            for v, free in settings:
+                index = values[v]
+                if index < 0 or free[values[w]][index] == INF:
+                    must.add(w)
+                    break
+        return must
+
+    def _programme_returns(
+        self, cache: dict[Any, Any]
+    ) -> list[tuple[int, int, float, list[tuple[int, tuple[float, ...]]]]]:
+        """Goal programmes whose settings may need the programme chosen again: per programme,
+        (p, its goal index, the fewest presses that leave p and choose its goal value again,
+        [(goal index of a setting of p, that setting's bound per value with no programme
+        change)]).
+
+        While p is at its goal its term is 0, yet a setting of p whose own keys cannot reach
+        its goal value (a power level that only goes up) gets there only by p being chosen
+        again, which restores its default: p's own presses, counted nowhere else. With no
+        programme change, each setting needs its bound without programme-change routes; with
+        one, p needs the presses of a return. The bound adds the smaller of the two extras.
+        Only for a p that its own keys alone can change (no side effect assigns it, it selects
+        no programme of its own), and settings with no entry press in their term.
+        """
+        compiled, goal = self.compiled, self.goal
+        self._index = {v: k for k, v in enumerate(goal.variables)}
+        found = []
+        for p, name in zip(goal.variables, goal.names, strict=True):
+            var = compiled.vars[p]
+            if var.parent >= 0 or any(
+                target == p for step in compiled.all_steps for target, _ in step.side
+            ):
+                continue
+            members = []
+            for k, v in enumerate(goal.variables):
+                if compiled.vars[v].parent != p or self.entries[k] is not None:
+                    continue
+                key = ("unchosen", v, goal.canonical[goal.names[k]], self._goal_case(v))
+                if key not in cache:
+                    cache[key] = self._unchosen(v, goal.canonical[goal.names[k]])
+                members.append((k, cache[key]))
+            if not members:
+                continue
+            domain = var.domains[0]
+            assert domain is not None
+            wanted = domain.index[goal.canonical[name]]
+            found.append((p, wanted, _return_cost(compiled, p, wanted), members))
+        return found
+
+    def _unchosen(self, v: int, goal_value: Any) -> tuple[float, ...]:
+        """Per value index in the goal programme's domain: the bound with no programme change."""
+        goal_case = self._goal_case(v)
+        assert goal_case is not None
+        dist, _, _, unchosen = _distances_apart(self.compiled, v, goal_value, goal_case, ())
+        domain = self.compiled.vars[v].domains[goal_case]
+        assert domain is not None
+        return tuple(min(dist.get(value, INF), unchosen) for value in domain.values)
+
+    @staticmethod
+    def _landing_bound(
+        table: tuple[int, tuple[tuple[float, ...], ...], float, float],
+        landed: list[tuple[int, int]],
+    ) -> float:
+        """The least bound over the (case, value index) pairs a reset may leave a variable at
+        (case -1: absent in the programme of the moment)."""
+        _, per_case, absent, _ = table
+        return min(
+            (absent if case < 0 else per_case[case][index] for case, index in landed),
+            default=0.0,
+        )
 
     def _goal_case(self, v: int) -> int | None:
         """The programme a dependent goal setting must end in, when the goal names it."""
@@ -265,6 +477,9 @@ class LowerBound:
     def _table(
         self, v: int, goal_value: Any, goal_case: int | None, reset_costs: tuple[int, ...] = ()
     ) -> tuple[int, tuple[tuple[float, ...], ...], float, float]:
+        if goal_case is None and self.compiled.vars[v].parent >= 0:
+            apart = _per_case_table(self.compiled, v, goal_value, reset_costs)
+            return (v, apart[0], apart[1], apart[2])
         dist, anywhere, jump = _distances(self.compiled, v, goal_value, goal_case, reset_costs)
         per_case: list[tuple[float, ...]] = []
         for case, d in enumerate(self.compiled.vars[v].domains):
@@ -293,14 +508,17 @@ class LowerBound:
 
 def _entry_requirements(
     compiled: CompiledModel, v: int, goal_vars: set[int]
-) -> tuple[frozenset[int], frozenset[str]] | None:
+) -> tuple[frozenset[int], frozenset[str], frozenset[int]] | None:
     """When every step adjusting ``v`` sits behind a step that adjusts no goal variable:
-    the pointer positions from which no such entry press is needed, and the features involved.
-    None when some step adjusting ``v`` can be entered directly."""
+    the pointer positions from which no such entry press is needed, the features involved,
+    and the steps in front (an entry press lands on one of them: presses landing on disjoint
+    sets of steps are distinct presses). None when some step adjusting ``v`` can be entered
+    directly."""
     if any(step.variable == v for step in compiled.anywhere_steps):
         return None  # an anywhere key adjusts it without entering anything
     free: set[int] = set()
     features: set[str] = set()
+    gates: set[int] = set()
     for sid, step in enumerate(compiled.steps):
         if step.variable != v:
             continue
@@ -317,10 +535,106 @@ def _entry_requirements(
             return None
         free.add(sid)
         free.update(before)
+        gates.update(before)
         features.add(step.feature)
     if not features:
         return None
-    return frozenset(free), frozenset(features)
+    return frozenset(free), frozenset(features), frozenset(gates)
+
+
+def _return_cost(compiled: CompiledModel, p: int, wanted: int) -> float:
+    """Fewest presses of p's own keys that choose p again and leave it at value ``wanted``
+    (from ``wanted``): a way round its values, or one press that assigns without changing
+    (a go-to key, a clear, a digit)."""
+    domain = compiled.vars[p].domains[0]
+    assert domain is not None
+    reverse, _, _, _ = _value_graph(compiled, p)
+    dist = _backwards(reverse, domain.values[wanted])
+    best = INF
+    for step in compiled.all_steps:
+        if step.variable != p:
+            continue
+        for effect in leaves(step.effects.values()):
+            if effect[0] in (CLEAR, DIGIT):
+                return 1.0
+            if effect[0] != TABLE or effect[1][0] is None:
+                continue
+            after = effect[1][0][wanted]
+            if after == wanted:
+                if effect[2]:
+                    return 1.0
+                continue
+            best = min(best, 1 + dist.get(domain.values[after], INF))
+    return best
+
+
+MUST = -3  # in place of a goal index: the variable is no goal, but must change (see below)
+
+
+def _reset_landings(
+    compiled: CompiledModel, candidates: list[tuple[int, int]], v: int
+) -> list[tuple[int, int, list[tuple[int, int]]]]:
+    """Variables every change of which resets goal variable ``v``: (w, w's goal index or
+    :data:`MUST`, the (case, value index) pairs the reset can leave ``v`` at).
+
+    ``candidates`` are (w, goal index) for goal variables, (w, MUST) for programmes of goal
+    settings that are no goal themselves. While a goal w is off its goal — or a MUST w has a
+    setting that cannot reach its goal without w changing — w must still change, and whatever
+    changes it resets v in the same press; after the last such press v still has to go from
+    where the reset left it to its goal, by presses counted in v's term only. Resets are
+    ``reset``/``set`` side effects of every step that can change w (w selecting no programme of
+    its own, else a programme change could move it without them), or, for a setting of w,
+    the programme's default every change of w restores (not for a ``remember`` setting).
+    """
+    found = []
+    parent = compiled.vars[v].parent
+    for w, wanted in candidates:
+        if w == v:
+            continue
+        changing = [
+            step
+            for step in compiled.all_steps
+            if step.variable == w or any(target == w for target, _ in step.side)
+        ]
+        landed: set[tuple[int, int]] = set()
+        if parent == w:
+            if wanted != MUST or v in compiled.memory_slots:
+                continue  # a goal programme: the goal's case says it already
+            for case, domain in enumerate(compiled.vars[v].domains):
+                landed.add((-1, 0) if domain is None else (case, domain.initial))
+            for step in changing:  # a side effect of the same press may move it on
+                for target, assigned in step.side:
+                    if target == v:
+                        landed.update(_side_landings(assigned))
+            found.append((w, wanted, sorted(landed)))
+            continue
+        if compiled.vars[w].parent >= 0:
+            continue
+        for step in changing:
+            tables = [assigned for target, assigned in step.side if target == v]
+            if not tables or (
+                parent >= 0  # the same press choosing v's programme restores its default
+                and (step.variable == parent or any(t == parent for t, _ in step.side))
+            ):
+                break
+            landed.update(_side_landings(tables[-1]))  # the last assignment wins
+        else:
+            if changing and landed:
+                if parent >= 0:
+                    landed.add((-1, 0))  # a programme change may also leave it absent
+                found.append((w, wanted, sorted(landed)))
+    return found
+
+
+def _side_landings(tables: tuple[tuple[int, ...] | None, ...]) -> set[tuple[int, int]]:
+    """The (case, value index) pairs a side effect's per-case tables can assign."""
+    landed: set[tuple[int, int]] = set()
+    for case, table in enumerate(tables):
+        if table is None:
+            landed.add((-1, 0))
+        else:
+            landed.update((case, index) for index in set(table))
+    return landed
 
 
 def _assigning_steps(compiled: CompiledModel, programme: int) -> list[set[int]]:

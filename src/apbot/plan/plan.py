@@ -87,6 +87,7 @@ def plan(
     goal: Mapping[str, Any] | Iterable[str],
     budget: int = DEFAULT_BUDGET,
     work: int | None = None,
+    most: int | None = None,
 ) -> Plan:
     """The shortest plan from ``state`` (None: the initial state) to ``goal``.
 
@@ -96,7 +97,9 @@ def plan(
     ``TypeError`` or ``ValueError`` naming the argument for a model, state or budget that
     is not one. ``budget`` bounds the search states expanded, ``work`` the successors
     generated (default: 20 per state of the budget); past either the search gives up with
-    :class:`Unreachable` and ``budget_hit`` set.
+    :class:`Unreachable` and ``budget_hit`` set. ``most`` (None: no limit) is the longest plan
+    wanted: when every plan is longer, :class:`Unreachable` says so (a caller that only
+    takes a plan shorter than one it has needs no search past that length).
     """
     started = time.perf_counter()
     compiled = require_model(model, "plan")
@@ -111,10 +114,12 @@ def plan(
         raise ValueError(f"budget is a positive number of search states, not {budget!r}")
     if work is not None and (isinstance(work, bool) or not isinstance(work, int) or work < 1):
         raise ValueError(f"work is a positive number of search successors, not {work!r}")
+    if most is not None and (isinstance(most, bool) or not isinstance(most, int) or most < 0):
+        raise ValueError(f"most is a number of actions (0 or more), not {most!r}")
     canonical = parse_goal(compiled.model, goal)
     start = state if state is not None else compiled.initial_state()
     target = CompiledGoal.build(compiled, canonical)
-    search = TaskSearch(compiled, target, budget, work)
+    search = TaskSearch(compiled, target, budget, work, most)
     try:
         result = search.run(start)
     except SearchExhausted as exc:
@@ -249,6 +254,8 @@ def _explain(
                 f"the model leads there (it can reach {shown})"
             )
         return "; ".join(parts)
+    if search.most is not None:
+        return f"no plan of at most {search.most} actions reaches the goal"
     names = ", ".join(f"{k}={v}" for k, v in goal.items())
     return (
         f"no action sequence makes {names} hold together (searched {exc.expanded} states);"

@@ -23,6 +23,7 @@ from dataclasses import dataclass
 from operator import itemgetter
 
 from apbot.model.effects import entry_digits
+from apbot.plan.abstract import out_of_reach
 from apbot.plan.bounds import INF, LowerBound, distances_to, typeable_values
 from apbot.plan.goals import CompiledGoal
 from apbot.plan.visits import SMALL_DOMAIN, Exit, VisitTooLarge, explore_visit, keypad_exits
@@ -45,6 +46,9 @@ CACHED_PRESSES = 5_000_000
 # keeps the display dark. The plan stays shortest; among equally short plans it prefers to set
 # things where the display shows them, so the closed loop can check what it did.
 PRESS = 1 << 16
+# successors generated before the search asks a small abstraction whether the goal is out of
+# reach at all (``apbot.plan.abstract``): cheap searches never pay for the question
+ASK_ABSTRACTION_AFTER = 5_000
 
 
 class SearchExhausted(Exception):
@@ -90,6 +94,7 @@ class TaskSearch:
         goal: CompiledGoal,
         budget: int = DEFAULT_BUDGET,
         work: int | None = None,
+        most: int | None = None,
     ) -> None:
         self.compiled = compiled
         self.goal = goal
@@ -97,6 +102,10 @@ class TaskSearch:
         # successors generated before giving up: the time a search takes, where ``budget``
         # (expanded nodes) is not — one node with a thousand-end visit costs a thousand
         self.work = EDGES_PER_BUDGET * budget if work is None else work
+        # the longest plan wanted (None: any): a caller comparing with a plan it has prunes
+        # every node whose bound says it cannot do as well
+        self.most = most
+        self._ceiling = INF if most is None else (most + 1) * PRESS - 1
         self.relevant = relevant_variables(compiled, goal)
         relevant_set = set(self.relevant)
         getter = itemgetter(*self.relevant) if self.relevant else (lambda values: ())
@@ -129,7 +138,8 @@ class TaskSearch:
         compiled = self.compiled
         bound = self.bound
         h0 = bound(start, continuing=True)
-        if h0 == INF:
+        ceiling = self._ceiling
+        if h0 == INF or h0 * PRESS > ceiling:
             raise SearchExhausted("unreachable", 0, False)
         start_key = self.key(start)
         best = {start_key: 0}
@@ -138,6 +148,7 @@ class TaskSearch:
         tie = itertools.count()
         frontier = [(h0 * PRESS, 0, next(tie), start_key)]
         expanded = generated = 0
+        asked = False
         while frontier:
             _, negative_cost, _, node = heapq.heappop(frontier)
             cost = -negative_cost
@@ -154,6 +165,10 @@ class TaskSearch:
             generated += len(edges)
             if generated > self.work:  # thousand-end visits: time runs out
                 raise SearchExhausted("budget", expanded, True)
+            if not asked and generated > ASK_ABSTRACTION_AFTER:
+                asked = True
+                if out_of_reach(compiled, self.goal, start):
+                    raise SearchExhausted("unreachable", expanded, False)
             for after, actions, free in edges:
                 # presses first; among plans of equal length, fewer presses with a dark display
                 new_cost = cost + len(actions) * PRESS + (len(actions) if in_the_dark else 0)
@@ -161,7 +176,7 @@ class TaskSearch:
                 if new_cost >= best.get(k, INF):
                     continue
                 h = bound(after)
-                if h == INF:
+                if h == INF or new_cost + h * PRESS > ceiling:
                     continue
                 best[k] = new_cost
                 if len(best) > STORED_PER_BUDGET * self.budget:  # memory, not time, runs out
