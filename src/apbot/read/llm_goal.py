@@ -76,7 +76,9 @@ EXAMPLE: dict[GoalForm, str] = {
 
 _CLOSING: dict[GoalForm, str] = {
     "object": "Give every setting of this appliance, null where the request does not ask for it.",
-    "list": "List the settings the request asks for, each once; leave the others out.",
+    "list": "List every setting the request asks for, each once, with what it implies (asking "
+    "to start or run it now sets the running/start setting; switching it on sets power; a "
+    "clock time or a delay it names sets that setting); leave the others out.",
 }
 
 
