@@ -1,14 +1,16 @@
 """Goal extraction with an LLM beside the offline parser: exact accuracy and seconds per task.
 
     python benchmarks/llm_goals.py --llm local --appliances '*_1,*_2,*_3,*_4' --sample 2 \
-        --out /work/runs/llm/goals
+        --out /work/runs/llm/goals [--form list|object]
 
 Each instruction is read against the TRUE model (as ``apbot eval-goals``) by the LLM (with the
 offline parser's answer as a hint) and by the offline parser alone; a task is right when the
 goal equals the stored one exactly after normalisation. One JSON line per task is appended to
 ``OUT/goals.jsonl`` as it finishes, so a stopped run resumes; the answers are in the LLM
 response cache, so a rerun costs nothing (and its seconds are then the cache's, not the
-model's: the figures below are from the first run).
+model's: the figures below are from the first run). ``--form`` picks the answer's shape
+(:mod:`apbot.read.llm_goal`: the settings named as a list, the default, or an object with every
+setting); use one output directory per form.
 """
 
 from __future__ import annotations
@@ -26,7 +28,7 @@ from apbot.llm.config import configure_env
 from apbot.llm.structured import StructuredError
 from apbot.model.goal import parse_goal
 from apbot.read.goal import GoalParseError, parse_instruction
-from apbot.read.llm_goal import llm_parse_instruction
+from apbot.read.llm_goal import GOAL_FORMS, llm_parse_instruction
 
 
 def main() -> None:
@@ -36,6 +38,7 @@ def main() -> None:
     parser.add_argument("--sample", type=int, default=2, help="tasks per appliance")
     parser.add_argument("--out", type=Path, required=True)
     parser.add_argument("--no-hint", action="store_true", help="no offline answer as a hint")
+    parser.add_argument("--form", choices=GOAL_FORMS, default="list", help="the answer's shape")
     args = parser.parse_args()
     configure_env(args.llm)
     client = configured_client()
@@ -46,6 +49,8 @@ def main() -> None:
     if path.exists():
         for line in path.read_text().splitlines():
             row = json.loads(line)
+            if row.get("form", "object") != args.form:
+                parser.error(f"{path} holds answers in the {row.get('form', 'object')} form")
             done[row["key"]] = row
     patterns = args.appliances.split(",")
     rows = []
@@ -70,6 +75,7 @@ def main() -> None:
                     client,
                     use_hint=not args.no_hint,
                     manual=appliance.manual,
+                    form=args.form,
                 )
                 got, usage, attempts, error = read.goal, read.usage, read.attempts, ""
             except StructuredError as exc:
@@ -77,6 +83,7 @@ def main() -> None:
             seconds = time.perf_counter() - start
             row = {
                 "key": key,
+                "form": args.form,
                 "category": appliance.category,
                 "llm_right": got == expected,
                 "offline_right": offline == expected,
@@ -98,10 +105,25 @@ def main() -> None:
     report(rows)
 
 
+def miss_kinds(rows: list[dict]) -> dict[str, int]:
+    """How the answered misses differ from the stored goal (settings as text: the rows were
+    written as JSON)."""
+    kinds = {"extra setting": 0, "missing setting": 0, "wrong value": 0}
+    for r in rows:
+        if r["llm_right"] or r["llm"] is None:
+            continue
+        got = {k: str(v) for k, v in r["llm"].items()}
+        want = {k: str(v) for k, v in r["expected"].items()}
+        kinds["extra setting"] += bool(got.keys() - want.keys())
+        kinds["missing setting"] += bool(want.keys() - got.keys())
+        kinds["wrong value"] += any(got[k] != want[k] for k in got.keys() & want.keys())
+    return kinds
+
+
 def report(rows: list[dict]) -> None:
     n = len(rows)
     fresh = [r["seconds"] for r in rows if not r["cached"]]
-    print(f"tasks: {n}")
+    print(f"tasks: {n} (answer form: {rows[0].get('form', 'object') if rows else '-'})")
     print(f"LLM goal accuracy: {sum(r['llm_right'] for r in rows) / n:.3f}")
     print(f"offline parser on the same tasks: {sum(r['offline_right'] for r in rows) / n:.3f}")
     both = sum(r["llm_right"] and r["offline_right"] for r in rows)
@@ -110,6 +132,12 @@ def report(rows: list[dict]) -> None:
         f"offline only: {sum(r['offline_right'] for r in rows) - both}"
     )
     print(f"no valid answer after feedback: {sum(bool(r['error']) for r in rows)}")
+    kinds = miss_kinds(rows)
+    print(
+        "misses with an answer: "
+        + ", ".join(f"{kinds[k]} {k}" for k in ("extra setting", "missing setting", "wrong value"))
+        + " (a miss may have several)"
+    )
     print(f"attempts: mean {fmean(r['attempts'] for r in rows):.2f}")
     if fresh:
         print(

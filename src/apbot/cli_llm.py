@@ -122,6 +122,8 @@ def evaluate_reader(
     overall = Score()
     spent = 0.0
     fallbacks: dict[str, list[str]] = {}
+    stage = Score()  # the variables stage alone, where it answered
+    staged = 0
     for appliance in appliances:
         start = time.perf_counter()
         reading = llm_read_manual(
@@ -138,7 +140,20 @@ def evaluate_reader(
         score = score_reading(reading.model, appliance.model)
         per.setdefault(appliance.category, Score()).add(score)
         overall.add(score)
-    extra = {"usage": client.usage.as_dict(), "fallbacks": fallbacks}
+        if reading.variables_read is not None:
+            stage.add(score_reading(reading.variables_read, appliance.model))
+            staged += 1
+    kinds = ("variables", "discrete_values", "numeric_ranges")
+    extra = {
+        "usage": client.usage.as_dict(),
+        "fallbacks": fallbacks,
+        # where the assembled model fell back, the scores above are the offline reader's: this
+        # is what the LLM's own variables scored (features and placements are not the stage's)
+        "variables_stage": {
+            "appliances": staged,
+            **{k: v for k, v in stage.table().items() if k in kinds},
+        },
+    }
     return SuiteScore(per, overall, spent, len(appliances)), extra
 
 

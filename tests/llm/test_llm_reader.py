@@ -118,3 +118,39 @@ def test_a_stage_without_a_valid_answer_falls_back(
     assert reading.fallbacks == ["controls", "variables", "features"]
     assert reading.model.variables == read_manual(kettle.manual, actions).model.variables
     assert "no valid answer" in reading.report.render()
+    assert reading.variables_read is None  # no variables answer: nothing of the LLM's to score
+
+
+def test_the_variables_stage_is_kept_for_scoring_when_the_model_falls_back(
+    script: Script, config: LLMConfig, kettle: SuiteAppliance
+) -> None:
+    """Features that never fit: the model is the offline one (its scores are the offline
+    reader's), and the LLM's own variables stay available to be scored alone."""
+    answers = {"Stage 1": [CONTROLS], "Stage 2": [VARIABLES], "Stage 3": [WRONG] * 4}
+
+    def route(body: dict[str, Any]) -> Reply:
+        return Reply(json.dumps(answers[_stage(body)].pop(0)))
+
+    script.router = route
+    actions = list(kettle.model.actions)
+    reading = llm_read_manual(kettle.manual, actions, LLMClient(config), seeded=False)
+    assert "features" in reading.fallbacks
+    assert reading.variables_read is not None
+    assert set(reading.variables_read.variables) == {"temperature", "keep_warm", "heating"}
+    assert reading.variables_read.variables["temperature"].type == "numeric"
+
+
+def test_eval_reader_scores_the_variables_stage_apart(
+    script: Script, config: LLMConfig, kettle: SuiteAppliance
+) -> None:
+    from apbot.cli_llm import evaluate_reader
+
+    answers = {"Stage 1": [CONTROLS], "Stage 2": [VARIABLES], "Stage 3": [WRONG] * 4}
+    script.router = lambda body: Reply(json.dumps(answers[_stage(body)].pop(0)))
+    result, extra = evaluate_reader(config, [kettle], from_scratch=True)
+    assert result.appliances == 1
+    assert "features" in extra["fallbacks"]["kettle_1"]
+    stage = extra["variables_stage"]
+    assert stage["appliances"] == 1
+    assert set(stage) == {"appliances", "variables", "discrete_values", "numeric_ranges"}
+    assert stage["variables"] == {"precision": 1.0, "recall": 1.0}  # the three, named right

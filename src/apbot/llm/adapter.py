@@ -1,7 +1,9 @@
 """How each kind of server is asked for JSON that fits a schema — the one place they differ.
 
 - ``json_schema``: OpenAI's strict structured outputs (also vLLM, Ollama): the schema is sent
-  in strict form (every property required, no extra keys; optional ones become nullable).
+  in strict form (every property required, no extra keys; optional ones become nullable; a
+  tagged union's ``oneOf`` becomes the ``anyOf`` strict mode takes — its alternatives exclude
+  each other by their tag, so the two mean the same).
 - ``json_object``: llama.cpp's server rejects ``json_schema`` but takes
   ``{"type": "json_object", "schema": …}`` and constrains the output by a grammar.
 - ``prompt``: servers with neither: the schema goes into the prompt and the text is parsed.
@@ -33,6 +35,8 @@ def strict_schema(schema: dict[str, Any]) -> dict[str, Any]:
 
     def tighten(node: dict[str, Any]) -> None:
         node.pop("default", None)
+        if "oneOf" in node and node.pop("discriminator", None) is not None:
+            node["anyOf"] = node.pop("oneOf")
         if node.get("type") == "object" or "properties" in node:
             node["additionalProperties"] = False
             node["required"] = list(node.get("properties", {}))

@@ -82,6 +82,9 @@ class LLMReading:
     usage: Usage = field(default_factory=Usage)
     seeded: bool = True
     fallbacks: list[str] = field(default_factory=list)
+    # the offline model with the LLM's variables in place (schema-valid, not checked as a
+    # whole), so the variables stage can be scored where the assembled model fell back
+    variables_read: ApplianceModel | None = None
 
     def as_reading(self) -> Reading:
         return Reading(self.model, self.report)
@@ -163,7 +166,31 @@ def llm_read_manual(
     context = labels + ("\n\nSettings: " + _dump(variables) if variables else "")
     model = _features(session, context, controls, variables)
     notes = session.notes + seed.report.notes
-    return LLMReading(model, Report(notes), session.usage, seeded, session.fallbacks)
+    return LLMReading(
+        model,
+        Report(notes),
+        session.usage,
+        seeded,
+        session.fallbacks,
+        _with_variables(seed.model, controls, variables),
+    )
+
+
+def _with_variables(
+    seed: ApplianceModel, controls: Controls | None, variables: Variables | None
+) -> ApplianceModel | None:
+    """The offline model with the LLM's controls and variables, for scoring that stage alone
+    (None when the stage gave no answer or the result is not a valid model at all)."""
+    if variables is None:
+        return None
+    base = seed.model_dump(mode="json", exclude_none=True)
+    if controls is not None:
+        _relabel(base, controls)
+    base["variables"] = _merged_variables(seed, variables)
+    try:
+        return ApplianceModel.model_validate(base)
+    except ValidationError:
+        return None
 
 
 def _controls(session: _Session) -> Controls | None:
