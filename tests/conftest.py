@@ -7,6 +7,7 @@ from collections.abc import Iterator
 import pytest
 from hypothesis import settings
 
+import apbot.bench.runner  # noqa: F401  registers every real method (llm-policy-image too) first
 from apbot.agent.registry import methods
 from apbot.examples import load_example
 from apbot.model.schema import ApplianceModel
