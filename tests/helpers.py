@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import textwrap
+from importlib.resources import files
 from typing import Any
 
 from apbot.agent.environment import FeedbackMode, SimulatorEnvironment
@@ -19,6 +20,16 @@ def model_from(yaml_text: str, check: bool = True) -> ApplianceModel:
     if "appliance:" not in text:
         text = "appliance: {id: test_unit, category: test}\n" + text
     return loads_model(text, check=check)
+
+
+def suite_model(appliance: str, *replacements: tuple[str, str]) -> ApplianceModel:
+    """A bundled appliance's true model with each ``(old, new)`` text replaced once: a belief
+    that is wrong in exactly the way a test describes."""
+    text = (files("apbot") / f"data/suite/{appliance}/model.yaml").read_text()
+    for old, new in replacements:
+        assert text.count(old) == 1, old
+        text = text.replace(old, new)
+    return loads_model(text)
 
 
 def run_checked(

@@ -4,26 +4,17 @@ both feedback modes, and judges the outcome on the truth."""
 
 from __future__ import annotations
 
-from importlib.resources import files
 from typing import Any
 
 import pytest
 
 from apbot.agent.environment import FeedbackMode
 from apbot.agent.repair import redefine_domain
-from apbot.model.load import loads_model
-from apbot.model.schema import ApplianceModel, DiscreteVariable
+from apbot.model.schema import DiscreteVariable
 from tests.helpers import run_checked as run
+from tests.helpers import suite_model
 
 MODES: tuple[FeedbackMode, ...] = ("display", "values")
-
-
-def suite_model(appliance: str, *replacements: tuple[str, str]) -> ApplianceModel:
-    text = (files("apbot") / f"data/suite/{appliance}/model.yaml").read_text()
-    for old, new in replacements:
-        assert text.count(old) == 1, old
-        text = text.replace(old, new)
-    return loads_model(text)
 
 
 # the reader missed the weight an automatic menu asks for: "press AUTO MENU, then turn the

@@ -4,8 +4,6 @@ conditioner…, against the true simulator, and judges the outcome on the truth.
 
 from __future__ import annotations
 
-from importlib.resources import files
-
 import pytest
 
 from apbot.agent.budget import Budget
@@ -17,9 +15,7 @@ from apbot.agent.loop import ClosedLoop
 from apbot.agent.procedures import ProcedureRepairer
 from apbot.agent.reader import DisplayReader
 from apbot.agent.session import AgentConfig, Session, Stop
-from apbot.model.load import loads_model
-from apbot.model.schema import ApplianceModel
-from tests.helpers import model_from
+from tests.helpers import model_from, suite_model
 from tests.helpers import run_checked as run
 
 MODES: tuple[FeedbackMode, ...] = ("display", "values")
@@ -428,14 +424,6 @@ def test_a_wrong_step_is_walked_one_value_at_a_time_not_in_the_holds_strides(
     belief = model_from(DELAY.replace('"12:00:00", 3600', '"12:00:00", 7200'))
     episode, reached = run(model_from(DELAY), belief, {"delay": "9 h"}, feedback)
     assert reached and episode.claimed_success, episode.failure
-
-
-def suite_model(appliance: str, *replacements: tuple[str, str]) -> ApplianceModel:
-    text = (files("apbot") / f"data/suite/{appliance}/model.yaml").read_text()
-    for old, new in replacements:
-        assert text.count(old) == 1, old
-        text = text.replace(old, new)
-    return loads_model(text)
 
 
 @pytest.mark.parametrize("feedback", MODES)

@@ -12,6 +12,7 @@ from importlib.resources import files
 from apbot.model.load import loads_model
 from apbot.model.schema import ApplianceModel
 from tests.helpers import run_checked as run
+from tests.helpers import suite_model
 
 
 def example(name: str, *replacements: tuple[str, str]) -> ApplianceModel:
@@ -41,14 +42,6 @@ def test_a_label_copied_wrong_is_learnt_by_walking_the_setting() -> None:
     episode, reached = run(truth, belief, goal)
     assert reached and episode.claimed_success
     assert "temperature is shown as 'TEMP {value}'" in episode.repairs
-
-
-def suite_model(appliance: str, *replacements: tuple[str, str]) -> ApplianceModel:
-    text = (files("apbot") / f"data/suite/{appliance}/model.yaml").read_text()
-    for old, new in replacements:
-        assert text.count(old) == 1, old
-        text = text.replace(old, new)
-    return loads_model(text)
 
 
 SHOWING_STEP = (
