@@ -94,12 +94,7 @@ class Camera:
         pixels += _noise(self, frame, height, width)
         np.clip(pixels, 0, 255, out=pixels)
         image = Image.fromarray(pixels.astype(np.uint8))
-        if self.jpeg is not None:
-            buffer = io.BytesIO()
-            image.save(buffer, format="JPEG", quality=self.jpeg)
-            buffer.seek(0)
-            image = Image.open(buffer).convert("RGB")
-        return image
+        return _jpeg(image, self.jpeg)
 
     def photograph_region(self, photo: Image.Image, crop: Image.Image,
                           region: tuple[int, int, int, int], clean_size: tuple[int, int],
@@ -138,11 +133,7 @@ class Camera:
         pixels += _noise(self, frame, py1 - py0, px1 - px0, (py0, px0))
         np.clip(pixels, 0, 255, out=pixels)
         patch = Image.fromarray(pixels.astype(np.uint8))
-        if self.jpeg is not None:
-            buffer = io.BytesIO()
-            patch.save(buffer, format="JPEG", quality=self.jpeg)
-            buffer.seek(0)
-            patch = Image.open(buffer).convert("RGB")
+        patch = _jpeg(patch, self.jpeg)
         margin = max(2, int(2 * self.blur) + 2)
         mask = mask.crop((0, 0, size[0], size[1])).point(lambda v: 255 if v > 250 else 0)
         inner = mask.filter(ImageFilter.MinFilter(2 * margin + 1))
@@ -207,3 +198,13 @@ def apply(matrix: Matrix, points: np.ndarray) -> np.ndarray:
     ones = np.ones((len(pts), 1))
     mapped = np.hstack([pts, ones]) @ matrix.T
     return mapped[:, :2] / mapped[:, 2:3]
+
+
+def _jpeg(image: Image.Image, quality: int | None) -> Image.Image:
+    """``image`` after a JPEG round trip at ``quality`` (None: as it is): a camera's artefacts."""
+    if quality is None:
+        return image
+    buffer = io.BytesIO()
+    image.save(buffer, format="JPEG", quality=quality)
+    buffer.seek(0)
+    return Image.open(buffer).convert("RGB")
