@@ -1,0 +1,272 @@
+"""Amounts: entry keys set through the stepping pair, a generic dial or the keypad; stepping
+pairs and dials of their own; add-time keys; and the toggles guessed for whatever is left."""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+from apbot.read.actions import ActionInfo
+from apbot.read.build import Builder, Evidence
+from apbot.read.labels import words
+from apbot.read.roles_common import (
+    NUMERIC_WORDS,
+    TIME_WORDS,
+    label_of,
+    numeric_list,
+    stepped_noun,
+    token_of,
+    var_name,
+)
+from apbot.read.roles_lists import dial_ends, dial_list, list_evidence
+
+ADD_RE = re.compile(r"^(add|plus|extra)_?(\d+)_?(s|sec|secs|seconds|m|min|mins|minutes)?$")
+
+
+def assign_amounts(
+    b: Builder,
+    entry_keys: list[ActionInfo],
+    silent: list[ActionInfo],
+    evidence: dict[str, Evidence],
+    pairs: dict[str, dict[str, list[str]]],
+    digits: list[str],
+    dials: dict[str, list[ActionInfo]],
+    generic_dials: list[str],
+    adders: list[ActionInfo],
+) -> list[ActionInfo]:
+    """Entry keys take the stepping pair, a generic dial or the keypad; then the steppers no key
+    took, the keypad alone, add-time keys and named stepping pairs; returns the keys still
+    without a role."""
+    infos = b.infos
+    shared_pair = pairs.get("")
+    steppers: list[tuple[list[str], list[str]]] = []
+    if shared_pair and shared_pair["up"] and shared_pair["down"]:
+        steppers.append((shared_pair["up"], shared_pair["down"]))
+    for t in generic_dials:
+        cw = [i.name for i in dials[t] if i.skill == "turn_cw"]
+        ccw = [i.name for i in dials[t] if i.skill == "turn_ccw"]
+        if cw and ccw:
+            steppers.append((cw, ccw))
+    if not entry_keys and (steppers or digits):
+        entry_keys = [k for k in silent if k.skill == "press"]
+        silent = [k for k in silent if k not in entry_keys]
+    used_steppers: set[int] = set()
+    used_digits = False
+    if steppers and shared_pair and entry_keys:
+        # a stepping pair whose own sentences name what it sets, and no entry key sets that,
+        # keeps its own setting: the entry keys then step theirs by themselves
+        pair_tokens = [token_of(b, n) for n in steppers[0][0] + steppers[0][1]]
+        pair_noun = stepped_noun(b, pair_tokens, None)
+        names = [set(words(var_name(b, k))) for k in entry_keys]
+        direct_nouns = {"temperature", "humidity", "volume", "weight", "speed"}  # set alone
+        if pair_noun in direct_nouns and not any(
+            any(
+                pair_noun.startswith(w[:4]) or w.startswith(pair_noun[:4]) for w in n if len(w) >= 3
+            )
+            for n in names
+        ):
+            steppers = steppers[1:] + steppers[:1]
+            used_steppers = set()
+            for key in entry_keys:
+                var = b.add_number(
+                    var_name(b, key), label_of(b, key.controls[0]), evidence[key.name], True
+                )
+                b.feature(
+                    f"set_{var}", [{"actions": [key.name], "variable": var, "effect": "next"}]
+                )
+                b.note(f"features.set_{var}", f"{key.name} steps its setting (+/− set {pair_noun})")
+            entry_keys = []
+    for key in entry_keys:
+        ev = evidence[key.name]
+        name = var_name(b, key)
+        lab = label_of(b, key.controls[0])
+        timeish = bool(ev.ranges and ev.ranges[0].unit in ("s", "min", "h")) or bool(
+            set(words(name)) & TIME_WORDS
+        )
+        if digits and (timeish or not steppers):
+            var = b.add_number(
+                name, lab, ev if ev.ranges else Evidence(ranges=[], step=ev.step), cyclic=False
+            )
+            spec = b.variables[var]
+            _keypad_entry(spec)
+            b.feature(
+                f"set_{var}", [{"actions": [key.name]}, {"actions": list(digits), "variable": var}]
+            )
+            b.note(f"features.set_{var}", f"{lab} then the number keys", ev.range_at)
+            used_digits = True
+        elif steppers:
+            up, down = steppers[0]
+            used_steppers.add(0)
+            if ev.values and len(ev.values) >= 3 and numeric_list(ev.values):
+                ev = list_evidence(ev)  # the settings listed one by one, not only the ends
+            var = b.add_number(name, lab, ev, cyclic=False)
+            b.feature(
+                f"set_{var}",
+                [
+                    {"actions": [key.name]},
+                    {
+                        "actions": up + down,
+                        "variable": var,
+                        "effect": {**{a: "next" for a in up}, **{a: "prev" for a in down}},
+                    },
+                ],
+            )
+            b.note(f"features.set_{var}", f"{lab} then the stepping keys", ev.range_at)
+        else:
+            var = b.add_number(name, lab, ev, cyclic=True)
+            b.feature(f"set_{var}", [{"actions": [key.name], "variable": var, "effect": "next"}])
+            b.note(
+                f"features.set_{var}",
+                "each press steps to the next value (the manual names no other way)",
+            )
+    for t in generic_dials:  # turned by itself, the dial picks the list its sentence names
+        cw = [i.name for i in dials[t] if i.skill == "turn_cw"]
+        ccw = [i.name for i in dials[t] if i.skill == "turn_ccw"]
+        if cw and ccw and dial_list(b, t, cw, ccw):
+            used_steppers |= {k for k, pair in enumerate(steppers) if pair == (cw, ccw)}
+    for index, (up, down) in enumerate(steppers):
+        if index not in used_steppers:
+            tokens_ = [n for n in up + down]
+            ev = b.evidence([token_of(b, n) for n in tokens_])
+            noun = stepped_noun(b, [token_of(b, n) for n in tokens_], ev) or "level"
+            var = b.add_number(noun, noun.upper(), ev, cyclic=False)
+            b.feature(
+                f"set_{var}",
+                [
+                    {
+                        "actions": up + down,
+                        "variable": var,
+                        "effect": {**{a: "next" for a in up}, **{a: "prev" for a in down}},
+                    }
+                ],
+            )
+    cooking = any(re.search(r"\bcook(?:ing)? time\b", u.text, re.I) for u in b.manual.units)
+    named_cook = any("cook" in v for v in b.variables)
+    direct: str | None = None
+    if digits and (not used_digits or (cooking and not named_cook)):
+        var = b.add_number(
+            "cook_time" if cooking else "time", "TIME", Evidence(ranges=[], step=(1, "s")), False
+        )
+        spec = b.variables[var]
+        spec["ranges"] = [["00:00:00", "01:39:59", 1]]
+        spec["format"] = "mm:ss"
+        spec["entry"] = {"format": "mm:ss"}
+        b.feature(f"set_{var}", [{"actions": list(digits), "variable": var}])
+        b.note(f"features.set_{var}", "the number keys enter a time directly")
+        direct = var
+    for key in adders:
+        m = ADD_RE.match(key.token)
+        amount = int(m.group(2)) if m else 30
+        minutes = bool(m and m.group(3) and m.group(3).startswith("m"))
+        seconds_ = amount * (60 if minutes else 1)
+        target = direct or next(
+            (v for v, spec in b.variables.items() if spec.get("type") == "time"), None
+        )
+        if target is None:
+            target = b.add_number("cook_time", "TIME", Evidence(ranges=[], step=(1, "s")), False)
+        step = f"{seconds_ // 3600:02d}:{seconds_ % 3600 // 60:02d}:{seconds_ % 60:02d}"
+        effect = {"add": step} if b.variables[target].get("type") == "time" else {"add": amount}
+        b.feature(key.token, [{"actions": [key.name], "variable": target, "effect": effect}])
+        b.note(
+            f"features.{key.token}",
+            f"{key.name} adds {amount} {'min' if minutes else 's'} to {target}",
+        )
+    for base, pair in pairs.items():
+        if base == "":
+            if not (pair["up"] and pair["down"]):
+                for n in pair["up"] + pair["down"]:
+                    silent.append(next(i for i in infos if i.name == n))
+            continue
+        toks = [token_of(b, n) for n in pair["up"] + pair["down"]]
+        ev = b.evidence(toks + ([base] if base in b.labels else []))
+        var = b.add_number(base, base.upper(), ev, cyclic=False)
+        eff = {**{a: "next" for a in pair["up"]}, **{a: "prev" for a in pair["down"]}}
+        b.feature(
+            f"set_{var}", [{"actions": pair["up"] + pair["down"], "variable": var, "effect": eff}]
+        )
+    return silent
+
+
+def assign_dials(
+    b: Builder, dials: dict[str, list[ActionInfo]], silent: list[ActionInfo]
+) -> list[ActionInfo]:
+    """Dials with their own values (a generic dial already taken as a stepper is skipped), and
+    a key pressed before turning its dial; returns the keys still without a role."""
+    for token, turns in dials.items():
+        cw = [i.name for i in turns if i.skill == "turn_cw"]
+        ccw = [i.name for i in turns if i.skill == "turn_ccw"]
+        used = {a for steps in b.features.values() for st in steps for a in st["actions"]}
+        if set(cw + ccw) & used:
+            continue
+        ev = b.evidence([token])
+        lab = label_of(b, token)
+        if ev.values and not numeric_list(ev.values):
+            var = b.add_discrete(token, ev.values, lab, ev)
+            b.note(f"variables.{var}.values", ", ".join(b.variables[var]["values"]), ev.values_at)
+        elif ev.values:
+            var = b.add_number(token, lab, list_evidence(ev), cyclic=False)
+        else:
+            var = b.add_number(token, lab, ev, cyclic=False)
+        eff = {**{a: "next" for a in cw}, **{a: "prev" for a in ccw}}
+        b.feature(f"select_{var}", [{"actions": cw + ccw, "variable": var, "effect": eff}])
+        dial_ends(b, token, var)
+        values = b.variables[var].get("values") or []
+        if (
+            values
+            and values[0] == "off"
+            and "power" not in b.variables
+            and not any(g["name"] == "power off" for g in b.guards)
+        ):  # a knob whose first position is OFF is the on/off switch: off, nothing else works
+            b.guards.append(
+                {"name": "power off", "when": {var: "off"}, "only": cw + ccw, "display": "",
+                 "hide": True}
+            )  # fmt: skip
+            b.note("guards.power off", f"the {lab} knob at OFF switches the appliance off")
+        for k in [k for k in silent if k.token == token]:
+            b.feature(
+                f"{k.token}_press",
+                [{"actions": [k.name]}, {"actions": cw + ccw, "variable": var, "effect": eff}],
+            )
+            silent.remove(k)
+    return silent
+
+
+def assign_leftovers(b: Builder, silent: list[ActionInfo], evidence: dict[str, Evidence]) -> None:
+    """Whatever is left: an amount a key steps, or a toggle the closed loop can repair."""
+    for key in silent:
+        name = var_name(b, key)
+        if set(words(name)) & NUMERIC_WORDS and key.skill == "press":
+            var = b.add_number(name, label_of(b, key.controls[0]), evidence[key.name], cyclic=True)
+            b.feature(f"set_{var}", [{"actions": [key.name], "variable": var, "effect": "next"}])
+            b.note(f"features.set_{var}", f"{key.name} steps an amount (the manual says no more)")
+            continue
+        var = b.add_toggle(name, label_of(b, key.controls[0]), None)
+        b.feature(var, [{"actions": [key.name], "variable": var, "effect": "toggle"}])
+        b.note(
+            f"features.{var}",
+            f"{key.name} toggles a setting of its own (the manual says nothing clear)",
+        )
+
+
+def _keypad_entry(spec: dict[str, Any]) -> None:
+    """Digits typed for a variable: mm:ss for short times, hh:mm (minute steps) for long ones."""
+    from apbot.model.values import parse_hms
+
+    if spec["type"] != "time":
+        spec["entry"] = {"format": "number"}
+        return
+    top = max(parse_hms(r[1]) for r in spec["ranges"])
+    if top < 6000 and any(int(r[2]) < 60 for r in spec["ranges"]):
+        spec["entry"] = {"format": "mm:ss"}
+        spec["format"] = "mm:ss"
+        return
+    spec["entry"] = {"format": "hh:mm"}
+    spec["format"] = "h:mm"
+    fixed = []
+    for lo, hi, step in spec["ranges"]:
+        step = max(60, round(int(step) / 60) * 60)
+        span = parse_hms(hi) - parse_hms(lo)
+        end = parse_hms(lo) + span // step * step
+        if end > parse_hms(lo):
+            fixed.append([lo, f"{end // 3600:02d}:{end % 3600 // 60:02d}:00", step])
+    spec["ranges"] = fixed or [["00:00:00", "23:59:00", 60]]

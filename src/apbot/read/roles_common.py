@@ -1,0 +1,144 @@
+"""Words and small lookups the role passes share: which names are amounts, a key's setting name,
+what a stepping pair sets."""
+
+from __future__ import annotations
+
+import re
+
+from apbot.read.actions import ActionInfo
+from apbot.read.build import GROUP_NOUNS, SETTING_NOUNS, Builder, Evidence
+from apbot.read.labels import words
+
+
+def label_of(b: Builder, token: str) -> str:
+    """The control's printed name, or its action word in capitals when the manual has none."""
+    return b.labels[token].text if token in b.labels else token.upper()
+
+
+def first_mention(b: Builder, tokens: list[str]) -> int | None:
+    """The first unit naming any of the controls (for the reading report)."""
+    for t in tokens:
+        if t in b.labels and b.labels[t].mentions:
+            return b.labels[t].mentions[0]
+    return None
+
+
+NUMERIC_WORDS = {
+    "time", "timer", "delay", "clock", "humidity", "temperature", "temp", "level", "watt",
+    "speed", "weight", "volume", "duration", "hour", "min", "minute", "preset", "reserve",
+}  # fmt: skip  # settings that are amounts: "switch the timer off" does not make them toggles
+
+
+TIME_WORDS = {"time", "timer", "clock", "delay", "duration", "preset", "reserve", "ready"}
+
+
+FUNCTION_WORDS = {
+    *SETTING_NOUNS,
+    *GROUP_NOUNS,
+    "clock",
+    "hour",
+    "min",
+    "minute",
+    "sec",
+    "texture",
+    "timer",
+    "keep",
+    "warm",
+    "light",
+    "lock",
+    "delay",
+    "preset",
+    "size",
+    "crust",
+    "colour",
+    "color",
+    "loaf",
+    "start",
+    "stop",
+    "cancel",
+    "temp",
+    "fan",
+    "auto",
+    "select",
+    "set",
+    "memory",
+    "sound",
+    "quick",
+    "express",
+    "reserve",
+    "taste",
+    "add",
+    "weight",
+    "child",
+    "display",
+    "eco",
+    "rinse",
+    "spin",
+    "dry",
+    "wash",
+    "turbo",
+    "swing",
+    "pump",
+    "water",
+    "soil",
+    "option",
+    "options",
+}  # what a key does, not a programme it names
+
+
+def used_actions(b: Builder) -> set[str]:
+    return {a for steps in b.features.values() for st in steps for a in st["actions"]}
+
+
+def var_name(b: Builder, key: ActionInfo) -> str:
+    """The setting's name: the key's printed name when it spells out the action's word
+    ("KITCHEN TIMER" for timer, "WATER LEVEL" for water), else the action's word."""
+    base = key.token if key.skill == "press" else f"{key.token}_hold"
+    lab = b.labels.get(key.controls[0])
+    if key.skill != "press" or lab is None or lab.line is None:
+        return base
+    lw = [w for w in words(lab.text) if w.isalpha()]
+    tw = words(key.token.replace("_", " "))
+    if 1 < len(lw) <= 3 and all(any(x == t or x.startswith(t) for x in lw) for t in tw):
+        return "_".join(lw)
+    return base
+
+
+def dedupe(items: list[str]) -> list[str]:
+    return list(dict.fromkeys(items))
+
+
+def plain(text: str) -> str:
+    return re.sub(r"\s+", " ", text.lower()).strip()
+
+
+def token_of(b: Builder, action: str) -> str:
+    return next(i.token for i in b.infos if i.name == action)
+
+
+def mentions_of(b: Builder, token: str) -> list[int]:
+    return b.labels[token].mentions if token in b.labels else []
+
+
+def numeric_list(values: list[str]) -> bool:
+    return all(re.fullmatch(r"\d+(?:[.,]\d+)?\s*[a-z%°]*", v.strip().lower()) for v in values)
+
+
+def stepped_noun(b: Builder, tokens: list[str], ev: Evidence | None = None) -> str:
+    """What a pair of stepping keys sets: the quantity its range is in, else the setting noun
+    its sentences name most often."""
+    unit = ev.ranges[0].unit if ev is not None and ev.ranges else ""
+    by_unit = {"°C": "temperature", "°F": "temperature", "%": "humidity", "min": "time",
+               "h": "time", "s": "time", "W": "power"}  # fmt: skip
+    if unit in by_unit:
+        return by_unit[unit]
+    counts: dict[str, int] = {}
+    # another key's name ("while the TIMER is being set they change the hours") is what the
+    # pair sets for that key, not its own setting
+    keys = {lab.text.lower() for t, lab in b.labels.items() if t not in tokens and lab.text}
+    for i in b.context(tokens):
+        text = b.manual.units[i].text.lower()
+        for noun in (n for n in SETTING_NOUNS if n not in keys):
+            counts[noun] = counts.get(noun, 0) + len(re.findall(rf"\b{noun}\b", text))
+    best = max(SETTING_NOUNS, key=lambda n: (counts.get(n, 0), -SETTING_NOUNS.index(n)))
+    return best if counts.get(best) else ""

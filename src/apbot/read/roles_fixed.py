@@ -1,0 +1,226 @@
+"""The roles an action's name gives away: power, child lock, start and stop (with their guards)."""
+
+from __future__ import annotations
+
+import re
+
+from apbot.read.actions import ActionInfo
+from apbot.read.build import RUNNING_RE, STOP_WORDS, Builder
+from apbot.read.labels import words
+from apbot.read.roles_common import (
+    NUMERIC_WORDS,
+    dedupe,
+    first_mention,
+    label_of,
+    mentions_of,
+)
+from apbot.read.shown import LOCK_CUE, RUNNING_CUE, shown_words
+
+
+def assign_power(b: Builder) -> list[str]:
+    """The power key (ON/OFF, or POWER unless the manual uses it for a power level) and its
+    guard; returns the power actions."""
+    infos = b.infos
+    by_token: dict[str, list[ActionInfo]] = {}
+    for info in infos:
+        by_token.setdefault(info.token, []).append(info)
+    power_actions: list[str] = []
+
+    tokens = {i.token for i in infos if i.skill == "press" and i.digit is None}
+    power_token: str | None = next(
+        (t for t in ("on_off", "onoff", "power_on_off", "standby") if t in tokens), None
+    )
+    if power_token is None and "power" in tokens:
+        ctx = " ".join(b.manual.units[i].text for i in b.context(["power"]))
+        if not re.search(r"\b(?:level|watt|output)\b", ctx, re.I) or re.search(
+            r"\b(?:switch|turn)\w*\b[^.]*\b(?:on|off)\b", ctx, re.I
+        ):
+            power_token = "power"
+    if power_token:
+        press = [i for i in by_token[power_token] if i.skill == "press"]
+        holds = [i for i in by_token[power_token] if i.skill == "hold"]
+        var = b.add_toggle("power", label_of(b, power_token), first_mention(b, [power_token]))
+        b.indicators.remove(var) if var in b.indicators else None
+        if holds and press:
+            b.feature(
+                "power_on", [{"actions": [press[0].name], "variable": var, "effect": {"to": "on"}}]
+            )
+            b.feature(
+                "power_off",
+                [{"actions": [holds[0].name], "variable": var, "effect": {"to": "off"}}],
+            )
+            b.note(
+                "features.power_off",
+                "holding the power key switches off (a short press switches on)",
+                first_mention(b, [power_token]),
+            )
+            power_actions += [press[0].name, holds[0].name]
+        else:
+            acts = [i.name for i in press]
+            b.feature("power", [{"actions": acts, "variable": var, "effect": "toggle"}])
+            power_actions += acts
+        b.guards.append(
+            {
+                "name": "power off",
+                "when": {var: "off"},
+                "only": list(power_actions),
+                "display": "",
+                "hide": True,
+            }
+        )
+        b.note("guards.power off", "keys do nothing while the appliance is off")
+    return power_actions
+
+
+def assign_locks(b: Builder, done: set[str]) -> list[str]:
+    """Child-lock keys (two-key holds, holds whose sentences mention a lock) and the lock guard;
+    adds them to ``done`` and returns them."""
+    infos = b.infos
+    lock_actions: list[str] = []
+    for info in infos:
+        if info.name in done:
+            continue
+        is_lock = "lock" in words(info.token) and info.skill in ("hold", "press")
+        if info.skill == "hold" and not is_lock:
+            texts = [b.manual.units[i].text for i in b.context(list(info.controls))]
+            is_lock = len(info.controls) > 1 or any(
+                re.search(r"\bhold\b", t, re.I) and re.search(r"\block", t, re.I) for t in texts
+            )
+        if not is_lock:
+            continue
+        at = first_mention(b, list(info.controls))
+        var = "child_lock"
+        if var not in b.variables:
+            var = b.add_toggle("child_lock", "LOCK", at)
+            word = (
+                _lock_word(b, info)
+                or _state_word(b, list(info.controls), LOCK_CUE, re.compile(r"^RUN", re.I))[0]
+            )
+            b.variables[var]["show"] = {"off": "", "on": word or "LOCK"}
+            b.feature("child_lock", [{"actions": [info.name], "variable": var, "effect": "toggle"}])
+        else:
+            b.features["child_lock"][0]["actions"].append(info.name)
+        lock_actions.append(info.name)
+        done.add(info.name)
+    if lock_actions:
+        shown = b.variables["child_lock"]["show"]["on"]
+        b.guards.insert(
+            0,
+            {
+                "name": "child lock",
+                "when": {"child_lock": "on"},
+                "only": list(lock_actions),
+                "display": shown,
+            },
+        )
+        b.note("guards.child lock", "only the lock action works while locked")
+    return lock_actions
+
+
+def assign_running(
+    b: Builder, done: set[str], power_actions: list[str], lock_actions: list[str]
+) -> list[str]:
+    """START/STOP (START toggles unless a STOP or CANCEL key exists) and the running guard;
+    adds them to ``done`` and returns them."""
+    infos = b.infos
+    run_actions: list[str] = []
+    starts = [
+        i for i in infos if i.name not in done and "start" in words(i.token) and i.skill == "press"
+    ]
+    stops = [
+        i
+        for i in infos
+        if i.name not in done
+        and i not in starts
+        and i.digit is None
+        and (set(words(i.token)) & STOP_WORDS)
+        and not set(words(i.token)) & NUMERIC_WORDS  # END TIME, CLEAR TIMER: a setting
+        and i.skill in ("press", "hold")
+    ]
+    if starts or stops:
+        var = b.unique("running", b.variables)
+        b.variables[var] = {"type": "discrete", "values": ["off", "on"], "label": "RUN"}
+        word, at = _state_word(
+            b, [i.token for i in starts + stops], RUNNING_CUE, re.compile(r"LOC|^C?L$|^Lc$", re.I)
+        )
+        if word:
+            b.variables[var]["show"] = {"off": "", "on": word}
+            b.note(f"variables.{var}.show", f"the panel shows {word} while it runs", at)
+        else:  # no word read: the belief does not predict the screen (the loop cannot misread it)
+            b.variables[var]["visible"] = False
+            b.note(f"variables.{var}.visible", "the manual names no sign of running")
+        b.note(
+            f"variables.{var}",
+            "the appliance runs after START",
+            first_mention(b, [i.token for i in starts + stops]),
+        )
+        for info in starts:
+            toggle = bool(set(words(info.token)) & (STOP_WORDS | {"pause"})) or not stops
+            b.feature(
+                info.token if info.token != "start" else "start",
+                [
+                    {
+                        "actions": [info.name],
+                        "variable": var,
+                        "effect": "toggle" if toggle else {"to": "on"},
+                    }
+                ],
+            )
+            run_actions.append(info.name)
+        for info in stops:
+            b.feature(
+                info.name if info.skill == "hold" else info.token,
+                [{"actions": [info.name], "variable": var, "effect": {"to": "off"}}],
+            )
+            run_actions.append(info.name)
+        for info in infos:
+            if (
+                info.skill == "hold"
+                and info.name not in done | set(run_actions)
+                and info.token in {s.token for s in starts}
+            ):
+                b.feature(
+                    "cancel", [{"actions": [info.name], "variable": var, "effect": {"to": "off"}}]
+                )
+                run_actions.append(info.name)
+                b.note("features.cancel", "holding START stops the programme")
+        done.update(run_actions)
+        ctx_units = [u for u in b.manual.units if RUNNING_RE.search(u.text)]
+        if ctx_units:
+            allowed = dedupe(run_actions + power_actions + lock_actions)
+            b.guards.append(
+                {"name": "running", "when": {var: "on"}, "only": allowed, "display": ""}
+            )
+            line = b.manual.units.index(ctx_units[0])
+            b.note("guards.running", "only start/stop (and power, lock) work while running", line)
+    return run_actions
+
+
+def _state_word(
+    b: Builder, tokens: list[str], cue: re.Pattern[str], reject: re.Pattern[str] | None = None
+) -> tuple[str, int | None]:
+    """The word the panel shows in a state (running, locked): first in the sentences about the
+    keys that enter it (the sentence that names the key, or the one right after it), then in any
+    sentence about the state; a word ``reject`` matches belongs to another state."""
+    keys = {lab.text for lab in b.labels.values() if lab.text}
+    mentions = {m for t in tokens for m in mentions_of(b, t)}
+    near = [i for i in b.context(tokens) if i < len(b.manual.units)]
+    rest = [i for i, u in enumerate(b.manual.units) if cue.search(u.text) and i not in near]
+    for i in near + rest:
+        text = b.manual.units[i].text
+        if not cue.search(text) and not (i - 1 in mentions and i not in mentions):
+            continue
+        for word in shown_words(text, keys):
+            if reject is None or not reject.search(word):
+                return word, i
+    return "", None
+
+
+def _lock_word(b: Builder, info: ActionInfo) -> str:
+    for i in b.context(list(info.controls)):
+        for m in re.finditer(
+            r"\b([A-Z][A-Z-]*LOC[A-Z]*|LOC|LOCK(?:ED)?|[A-Z]-?L)\b", b.manual.units[i].text
+        ):
+            if "CLOCK" not in m.group(1):
+                return m.group(1)
+    return ""

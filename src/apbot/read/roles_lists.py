@@ -1,0 +1,178 @@
+"""Lists of values read as numbers or names a pad or dial steps through: ◄ ► pads and generic
+dials over a named list, printed rows of numbers as ranges, knobs' end stops."""
+
+from __future__ import annotations
+
+import itertools
+import re
+from typing import Any
+
+from apbot.read.build import Builder, Evidence, _next_table_column
+from apbot.read.labels import words
+from apbot.read.roles_common import numeric_list, stepped_noun, token_of
+
+LIST_WORDS = {"left", "right", "prev", "previous", "next", "forward"}
+
+
+def pair_of_names(b: Builder, base: str, pair: dict[str, list[str]]) -> bool:
+    """A stepping pair whose sentences give a list of names (◄ ► "move through the cooking
+    functions" above a table of them) steps that list as a setting of its own, both ways."""
+    if not (pair["up"] and pair["down"]):
+        return False
+    tokens = [token_of(b, n) for n in pair["up"] + pair["down"]]
+    if not all(set(t.split("_")) & LIST_WORDS for t in tokens):
+        return False  # + − and ▲ ▼ set amounts (often for other keys); ◄ ► move through lists
+    ev = b.evidence(tokens + ([base] if base in b.labels else []))
+    if not ev.values:
+        named = _named_column(b, tokens)
+        if named is not None:
+            ev = Evidence(values=[v.lower() for v in named[0]], values_at=named[1])
+    if not ev.values or len(ev.values) < 3 or numeric_list(ev.values):
+        return False
+    noun = base or _list_noun(b, ev) or stepped_noun(b, tokens, None) or "selection"
+    var = b.add_discrete(noun, ev.values, noun.upper(), ev)
+    eff = {**{a: "next" for a in pair["up"]}, **{a: "prev" for a in pair["down"]}}
+    b.feature(
+        f"select_{var}", [{"actions": pair["up"] + pair["down"], "variable": var, "effect": eff}]
+    )
+    b.note(f"variables.{var}.values", ", ".join(b.variables[var]["values"]), ev.values_at)
+    return True
+
+
+def dial_list(b: Builder, token: str, cw: list[str], ccw: list[str]) -> bool:
+    """A generic dial ("SELECT dial: turn to pick a program, or to change the temperature
+    after TEMP") whose sentences name a list of names: turning it alone steps that list."""
+    ev = b.evidence([token])
+    values = ev.values if ev.values and not numeric_list(ev.values) else None
+    at = ev.values_at
+    named = _named_column(b, [token]) if values is None else None
+    if named is not None:
+        values, at = [v.lower() for v in named[0]], named[1]
+    if not values or len(values) < 3:
+        return False
+    found = Evidence(values=values, values_at=at)
+    noun = _list_noun(b, found) or "programme"
+    var = b.add_discrete(noun, values, noun.upper(), found)
+    eff = {**{a: "next" for a in cw}, **{a: "prev" for a in ccw}}
+    b.feature(f"select_{var}", [{"actions": cw + ccw, "variable": var, "effect": eff}])
+    b.note(f"variables.{var}.values", ", ".join(b.variables[var]["values"]), at)
+    return True
+
+
+def _named_column(b: Builder, tokens: list[str]) -> tuple[list[str], int] | None:
+    """A table column of names headed by a noun the keys' own sentences use ("◄ ► move
+    through the cooking functions" and a table with a "Function" column)."""
+    units = b.manual.units
+    said = {
+        w[:5]
+        for t in tokens
+        if t in b.labels
+        for i in b.labels[t].mentions
+        for w in words(units[i].text)
+        if len(w) >= 4
+    }
+    for i, unit in enumerate(units):
+        if not unit.cells or unit.header:
+            continue  # only header rows
+        for column, cell in enumerate(unit.cells):
+            cw = words(cell)
+            if len(cw) == 1 and len(cw[0]) >= 4 and cw[0][:5] in said:
+                values = _next_table_column(units, i - 1, column)
+                if len(values) >= 3:
+                    return values, i
+    return None
+
+
+def _list_noun(b: Builder, ev: Evidence) -> str:
+    """The header of the table column a list was read from ("Function"), if any."""
+    if ev.values_at is None:
+        return ""
+    units = b.manual.units
+    for unit in units[ev.values_at : ev.values_at + 3]:
+        if unit.header:
+            for cell in unit.header:
+                if words(cell) and not re.fullmatch(r"[#n]o?\.?|", cell.strip().lower()):
+                    return "_".join(words(cell)[:2])
+    return ""
+
+
+def _nums(values: list[str]) -> list[float]:
+    found = [re.match(r"\d+(?:[.,]\d+)?", v.strip()) for v in values]
+    return sorted({float(m.group(0).replace(",", ".")) for m in found if m})
+
+
+def list_evidence(ev: Evidence) -> Evidence:
+    """A printed row of numbers as piecewise ranges, exactly those numbers (equal gaps share a
+    piece: 20 30 40 60 90 is 20–40 by 10, 40–60 by 20, 60–90 by 30)."""
+    from apbot.read.values import Range, unit_name
+
+    nums = _nums(ev.values or [])
+    unit = unit_name(re.sub(r"[\d.,\s]", "", (ev.values or [""])[-1]))
+    pieces: list[Range] = []
+    for lo, hi in itertools.pairwise(nums):
+        gap = round(hi - lo, 6)
+        if pieces and pieces[-1].step == gap:
+            pieces[-1] = Range(pieces[-1].low, hi, unit, gap)
+        else:
+            pieces.append(Range(lo, hi, unit, gap))
+    return Evidence(
+        ranges=pieces or [_list_range(ev.values or [])],
+        range_at=ev.values_at,
+        initial=ev.initial,
+        initial_at=ev.initial_at,
+    )
+
+
+def _list_range(values: list[str]) -> Any:
+    from apbot.read.values import Range, unit_name
+
+    nums = _nums(values)
+    unit = unit_name(re.sub(r"[\d.,\s]", "", values[-1])) if values else ""
+    return Range(nums[0], nums[-1], unit)
+
+
+def _list_step(values: list[str]) -> tuple[float, str] | None:
+    nums = _nums(values)
+    if len(nums) < 2:
+        return None
+    diffs = {round(b - a, 6) for a, b in itertools.pairwise(nums)}
+    return (min(diffs), "") if diffs else None
+
+
+def dial_values(b: Builder, token: str) -> bool:
+    if token not in b.labels or b.labels[token].line is None:
+        return False
+    ev = b.evidence([token])
+    return bool(ev.values or ev.ranges)
+
+
+ENDLESS_RE = re.compile(
+    r"\bno (?:end )?stops?\b|\bturns? (?:freely|endlessly|all the way round)\b|\bendless\w*"
+    r"|\b(?:simply )?continues with the first\b|\bround and round\b",
+    re.IGNORECASE,
+)
+
+
+STOPS_RE = re.compile(
+    r"\bstops? at (?:each|either|both|the) ends?\b|\bstops? at \S+ and (?:at )?\S+"
+    r"|\bend stops?\b|\bwill not turn (?:past|beyond)"
+    r"|\bcannot be turned (?:past|beyond)",
+    re.IGNORECASE,
+)
+
+
+def dial_ends(b: Builder, token: str, var: str) -> None:
+    """A knob the manual says stops at its ends clamps; one with no end stop goes round."""
+    units = b.manual.units
+    noun = re.compile(rf"\b{re.escape(token.replace('_', ' '))}\b", re.IGNORECASE)
+    near = b.context([token]) + [i for i, u in enumerate(units) if noun.search(u.text)]
+    for i in dict.fromkeys(near):
+        text = units[i].text
+        if ENDLESS_RE.search(text):
+            b.variables[var]["wrap"] = True
+            b.note(f"variables.{var}.wrap", "the knob has no end stop", i)
+            return
+        if STOPS_RE.search(text):
+            b.variables[var]["wrap"] = False
+            b.note(f"variables.{var}.wrap", "the knob stops at its ends", i)
+            return

@@ -1,0 +1,256 @@
+"""Keys that each select one choice (programme pads): found in key tables and in sentences that
+list them together, made one variable with a go-to feature per key."""
+
+from __future__ import annotations
+
+import re
+
+from apbot.read.actions import ActionInfo
+from apbot.read.build import GROUP_NOUNS, Builder
+from apbot.read.roles_common import first_mention, label_of, plain
+from apbot.read.text import Unit
+
+
+def pad_group(b: Builder, group: list[ActionInfo]) -> str:
+    """Keys the manual lists together: one variable, each key going to its own value."""
+    noun = _group_noun(b, group)
+    var = b.unique(noun, b.variables)
+    values = [plain(label_of(b, k.controls[0])) for k in group]
+    values = [v if values.count(v) == 1 else f"{v}_{i}" for i, v in enumerate(values)]
+    b.variables[var] = {"type": "discrete", "values": values, "label": noun.upper()}
+    b.note(
+        f"variables.{var}",
+        f"keys listed together select one {noun}: {', '.join(values)}",
+        first_mention(b, [g.token for g in group]),
+    )
+    start, at = _pad_initial(b, values)
+    if start is None:
+        b.note(f"variables.{var}.initial", f"starts at {values[0]} (the manual does not say)")
+    elif start in values:
+        b.variables[var]["initial"] = start
+        b.note(f"variables.{var}.initial", f"starts at {start}", at)
+    else:  # a state no key selects ("Manual mode is selected every time you switch on")
+        b.variables[var]["values"] = [start, *values]
+        b.note(f"variables.{var}.initial", f"starts at {start}, which no key selects", at)
+    for key, value in zip(group, values, strict=True):  # one go-to feature per key
+        b.feature(key.token, [{"actions": [key.name], "variable": var, "effect": {"to": value}}])
+    return var
+
+
+START_RE = re.compile(
+    r"\b(?:(?:is|comes)\s+(?:set|preset)\s+(?:for|to)|starts?\s+(?:in|with|on)|defaults?\s+to"
+    r"|by default(?:,)?\s+(?:it is|is)|comes on in)\s+(?:the\s+)?"
+    r"([A-Za-z][\w-]*(?: [A-Za-z][\w-]*)?)"
+    r"|\b([A-Z][\w-]*)\s+(?:mode|programme|program|setting)\s+is\s+(?:selected|chosen|set)"
+    r"\s+(?:automatically|by default|(?:each|every) time)",
+)
+
+
+def _pad_initial(b: Builder, values: list[str]) -> tuple[str | None, int | None]:
+    """What a pad of go-to keys starts at: a value the manual says it is set for out of the box,
+    or a named mode selected on switching on that no key selects."""
+    for i, unit in enumerate(b.manual.units):
+        for m in START_RE.finditer(unit.text):
+            if m.group(1):
+                words_ = m.group(1).lower().split()
+                for k in (2, 1):
+                    if " ".join(words_[:k]) in values:
+                        return " ".join(words_[:k]), i
+            elif m.group(2):
+                return m.group(2).lower(), i
+    return None, None
+
+
+OPTIONS_RE = re.compile(
+    r"\boptions?\b[^.]*\b(?:(?:turned|switched|set) on and off|on or off|on and off|toggle)",
+    re.IGNORECASE,
+)
+
+
+def option_keys(b: Builder, keys: list[ActionInfo]) -> dict[str, int]:
+    """Keys of an options section ("Options are turned on and off by touching their pad"):
+    those named in it, up to a heading that names no key."""
+    units = b.manual.units
+    labels = {k.token: b.labels[k.controls[0]].text for k in keys if k.controls[0] in b.labels}
+    found: dict[str, int] = {}
+    for o, unit in enumerate(units):
+        if not OPTIONS_RE.search(unit.text):
+            continue
+        for j in range(o, min(o + 40, len(units))):
+            text = units[j].text
+            if (
+                j > o
+                and text == units[j].heading
+                and not any(lab and lab.upper() in text.upper() for lab in labels.values())
+            ):
+                break
+            for token, lab in labels.items():
+                if lab and re.search(rf"(?<![A-Za-z0-9]){re.escape(lab)}(?![A-Za-z0-9])", text):
+                    found.setdefault(token, o)
+    return found
+
+
+SELECTS_ONE = re.compile(
+    r"\s*(?:selects?|chooses?|picks?|starts?)\s+(?:the\s+)?(?:programs?|programmes?|menus?|modes?"
+    r"|functions?|cycles?|courses?|presets?)\s+(?!you\b|that\b|which\b|the\b)[\w\"'“]",
+    re.IGNORECASE,
+)
+
+
+CODE_RE = re.compile(r"\b([A-Z]{1,3}-?\d{1,2})\b")
+
+
+CODE_SHOWN_RE = re.compile(
+    r"\b(?:code|number)\b[^.]*\b(?:appears?|shows?|shown|displayed|lights?)\b"
+    r"|\bdisplay\b[^.]*\bshows?\b[^.]*\b(?:code|number)\b",
+    re.IGNORECASE,
+)
+
+
+PAD_NOUNS = re.compile(
+    r"\b(?:programs?|programmes?|menus?|modes?|functions?|cycles?|courses?|presets?|foods?|"
+    r"recipes?|dish(?:es)?|auto\w*)\b",
+    re.IGNORECASE,
+)
+
+
+def listed_groups(
+    b: Builder, keys: list[ActionInfo], tables_only: bool = False
+) -> list[list[ActionInfo]]:
+    """Keys the manual lists together as the choices of one thing: named in one sentence, or in
+    the first cells of one table, that also says what they choose (a programme, a menu…)."""
+    if len(keys) < 2:
+        return []
+    units = b.manual.units
+    parent = {k.name: k.name for k in keys}
+
+    def find(x: str) -> str:
+        while parent[x] != x:
+            x = parent[x]
+        return x
+
+    for unit_index in range(0 if tables_only else len(units)):
+        if not PAD_NOUNS.search(units[unit_index].text):
+            continue
+        present = [k for k in keys if unit_index in b.labels[k.controls[0]].mentions]
+        for k in present[1:]:
+            parent[find(k.name)] = find(present[0].name)
+    # table columns: labels in the first cells of consecutive rows
+    rows: list[list[ActionInfo]] = []
+    current: list[ActionInfo] = []
+    said = False
+    for unit in units:
+        if unit.cells and unit.header:
+            if not current:  # a table of programmes: its first column is headed by what they are
+                said = bool(unit.header and PAD_NOUNS.search(unit.header[0]))
+            first = unit.cells[0].upper()
+            current += [k for k in keys if b.labels[k.controls[0]].text.upper() in first]
+        elif current:
+            if said:
+                rows.append(current)
+            current = []
+    if current and said:
+        rows.append(current)
+    for row in rows:
+        for k in row[1:]:
+            parent[find(k.name)] = find(row[0].name)
+    out: dict[str, list[ActionInfo]] = {}
+    for k in keys:
+        out.setdefault(find(k.name), []).append(k)
+    return [g for g in out.values() if len(g) >= 2]
+
+
+def selecting_keys(b: Builder, keys: list[ActionInfo]) -> list[ActionInfo]:
+    """Keys whose rows in a key table each say they select one named choice ("| DRY |
+    Selects programme P4 |"): one choice variable, whatever words the keys' names hold."""
+    rows = [u for u in b.manual.units if len(u.cells) >= 2 and SELECTS_ONE.match(u.cells[1])]
+    out: list[ActionInfo] = []
+    free: list[Unit] = []
+    for unit in rows:
+        name = unit.cells[0].strip(" *").upper()
+        found = [
+            k
+            for k in keys
+            if k.skill == "press"
+            and b.labels[k.controls[0]].line is not None
+            and b.labels[k.controls[0]].text.upper() == name
+        ]
+        out += found
+        if not found and not any(lab.text.upper() == name for lab in b.labels.values()):
+            free.append(unit)
+    unnamed = [k for k in keys if k.skill == "press" and b.labels[k.controls[0]].line is None]
+    if len(out) >= 2 and len(free) == 1 and len(unnamed) == 1:
+        # the one key the manual never names is the one row no key claims ("FULL" is
+        # "WASH+STERILISE+DRY")
+        label = b.labels[unnamed[0].controls[0]]
+        label.text, label.line = free[0].cells[0].strip(" *"), free[0].line
+        label.mentions = [i for i, u in enumerate(b.manual.units) if label.text in u.text]
+        out.append(unnamed[0])
+    out = _dedupe_keys(out)
+    if len(out) >= 2:
+        return out
+    # rows naming several keys that are all one kind of choice ("| WHITE · BROWN | Rice modes |")
+    by_noun: dict[str, list[ActionInfo]] = {}
+    for unit in b.manual.units:
+        if len(unit.cells) < 2:
+            continue
+        m = PAD_NOUNS.search(unit.cells[1])
+        if not m or len(unit.cells[1].split()) > 4:
+            continue  # a short cell that only says what they are
+        named = [
+            k
+            for k in keys
+            if k.skill == "press"
+            and b.labels[k.controls[0]].line is not None
+            and re.search(
+                rf"(?<![A-Z0-9]){re.escape(b.labels[k.controls[0]].text.upper())}(?![A-Z0-9])",
+                unit.cells[0].upper(),
+            )
+        ]
+        if len(named) >= 2:
+            by_noun.setdefault(m.group(0).lower().rstrip("s"), []).extend(named)
+    best = max(by_noun.values(), key=len, default=[])
+    return _dedupe_keys(best) if len(_dedupe_keys(best)) >= 3 else []
+
+
+def shown_codes(b: Builder, var: str, keys: list[ActionInfo]) -> None:
+    """Rows saying "Selects programme P3" for every key, and a manual saying the code is what
+    the display shows: each value is shown by its code."""
+    if not any(CODE_SHOWN_RE.search(u.text) for u in b.manual.units):
+        return
+    codes: dict[str, str] = {}
+    for unit in b.manual.units:
+        if len(unit.cells) < 2 or not SELECTS_ONE.match(unit.cells[1]):
+            continue
+        m = CODE_RE.search(unit.cells[1])
+        for k in keys:
+            if m and b.labels[k.controls[0]].text.upper() == unit.cells[0].strip(" *").upper():
+                codes[k.name] = m.group(1)
+    if len(codes) != len(keys) or len(set(codes.values())) != len(keys):
+        return
+    spec = b.variables[var]
+    shown = {}
+    for k in keys:
+        effect = b.features[k.token][0]["effect"]
+        shown[effect["to"]] = codes[k.name]
+    spec["show"] = shown
+    b.note(
+        f"variables.{var}.show",
+        "the display shows each one's code: " + ", ".join(f"{v} {c}" for v, c in shown.items()),
+    )
+
+
+def _dedupe_keys(keys: list[ActionInfo]) -> list[ActionInfo]:
+    return [k for i, k in enumerate(keys) if k not in keys[:i]]
+
+
+def _group_noun(b: Builder, group: list[ActionInfo]) -> str:
+    counts: dict[str, int] = {}
+    for k in group:
+        for i in b.labels[k.controls[0]].mentions:
+            unit = b.manual.units[i]
+            text = (unit.text + " " + " ".join(unit.header) + " " + unit.heading).lower()
+            for noun in GROUP_NOUNS:
+                if re.search(rf"\b{noun}", text):
+                    counts[noun] = counts.get(noun, 0) + 1
+    return max(counts, key=lambda n: counts[n]) if counts else "programme"
