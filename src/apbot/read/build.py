@@ -25,6 +25,7 @@ from apbot.read.values import (
     anchored_lists,
     bare_list,
     caps_run,
+    cell_list,
     find_bounds,
     find_initial,
     find_list,
@@ -182,7 +183,8 @@ class Builder:
                 head = unit.header[0].lower()
                 if not re.search(r"key|button|control|pad|dial|knob|symbol|name", head):
                     continue  # a row describing the value the key names, not the key's setting
-            for items, prio in self._lists(i, i in mentions, tokens):
+            lists = [] if _aside(units, i) else self._lists(i, i in mentions, tokens)
+            for items, prio in lists:
                 if _keyish(items, others, own):
                     continue  # a list of keys ("DELAY, then + / −"), not of values
                 lamps = LAMP_LIST_RE.match(text)
@@ -248,7 +250,7 @@ class Builder:
                         break
         if best_prio < 1.85:  # "Drying-time settings available: 10 · 20 · 30 · 60 min."
             for i, unit in enumerate(units):
-                led = self._led_list(unit.text, tokens)
+                led = None if _aside(units, i) else self._led_list(unit, tokens)
                 if led and not _keyish(led, others, own):
                     best, best_prio, ev.values_at = led, 1.85, i
                     break
@@ -256,7 +258,7 @@ class Builder:
             for t in tokens:
                 for w in [x for x in words(t.replace("_", " ")) if len(x) >= 4][:1]:
                     for i, unit in enumerate(units):
-                        anchored = anchored_lists(unit.text, w)
+                        anchored = [] if _aside(units, i) else anchored_lists(unit.text, w)
                         if anchored and _keyish(anchored[0], others, own):
                             continue
                         if anchored and best_prio < 1.8:
@@ -312,6 +314,9 @@ class Builder:
             amounts = quantity_run(span) if mention else None
             if amounts:
                 out.append((amounts, 1.9))
+        legend = self._legend_cells(unit, tokens)
+        if legend is not None:  # the panel's printing: only the cells beside the own name
+            return [(legend, 2.4)] if legend and mention else []
         run = None
         for span in self._own_spans(text, tokens) if mention else [text]:
             run = find_number_run(span)  # "°C and RPM stop. °C is marked 20 30 40; RPM is …"
@@ -347,25 +352,61 @@ class Builder:
                 out.append((column, 2.5 if related else 1.2))
         return out
 
-    def _led_list(self, text: str, tokens: list[str]) -> list[str] | None:
-        """A list after a colon in a sentence that starts by naming the setting ("Drying-time
-        settings available: …" for DRY TIME, "Timer steps: …" for TIMER)."""
-        m = re.match(r"\s*([^:.;]{3,50}):\s*(.+)", text)
-        if not m:
+    def _legend_cells(self, unit: Unit, tokens: list[str]) -> list[str] | None:
+        """A line of the panel's printing laid out with wide spaces ("PROGRAM   OFF   AUTO   UV
+        DRY   STORE     TIME  - / +     START"): the cells after the control's own name, up
+        to the next control's name, are the positions printed beside it (empty: none). None
+        when the unit is no such line."""
+        if unit.cells and unit.header:
+            return None  # a table's row, not its first line
+        parts = unit.cells or tuple(re.split(r"\s{2,}|\t", unit.text.strip()))
+        cells = [c.strip(" *[]") for c in parts]
+        if len(cells) < 4 or any(len(c) > 20 or c != c.upper() for c in cells):
             return None
-        lead = words(m.group(1))
+        own = {self.labels[t].text.upper() for t in tokens if t in self.labels}
+        keys = {lab.text.upper() for lab in self.labels.values() if lab.text}
+        keys |= {t.upper().replace("_", " ") for t in self.labels}  # "HOURS" for HOURS knob
+        if sum(c.upper() in keys for c in cells) < 2:
+            return None
+        for k, cell in enumerate(cells):
+            if cell.upper() not in own:
+                continue
+            items: list[str] = []
+            for after in cells[k + 1 :]:
+                if after.upper() in keys or not re.search(r"[A-Z0-9]", after):
+                    break
+                items.append(after)
+            if len(items) >= 3:
+                return items
+        return []
+
+    def _led_list(self, unit: Unit, tokens: list[str]) -> list[str] | None:
+        """A list after a colon in a sentence that starts by naming the setting ("Drying-time
+        settings available: …" for DRY TIME, "Timer steps: …" for TIMER), or in the next cell
+        of a table row that does (a specifications table: "| Water levels | 22, 26 … 58 L |")."""
+        if len(unit.cells) >= 2:
+            if not self._names_setting(words(unit.cells[0]), tokens):
+                return None
+            items = cell_list(unit.cells[1])
+            return items if items and len(items) >= 3 else None
+        m = re.match(r"\s*([^:.;]{3,50}):\s*(.+)", unit.text)
+        if not m or not self._names_setting(words(m.group(1)), tokens):
+            return None
+        found = find_list(unit.text)
+        items = found[0] if found else bare_list(m.group(2))
+        return items if items and len(items) >= 3 else None
+
+    def _names_setting(self, lead: list[str], tokens: list[str]) -> bool:
+        """Whether words start by naming the control's setting (by its action word or its printed
+        label; "Water levels" names WATER LEVEL)."""
         names = [words(t.replace("_", " ")) for t in tokens]
         names += [words(self.labels[t].text) for t in tokens if t in self.labels]
-        if not any(
+        return any(
             name
             and len(name) <= len(lead)
             and all(lw.startswith(nw) and len(nw) >= 3 for nw, lw in zip(name, lead, strict=False))
             for name in names
-        ):
-            return None
-        found = find_list(text)
-        items = found[0] if found else bare_list(m.group(2))
-        return items if items and len(items) >= 3 else None
+        )
 
     def _own_spans(self, text: str, tokens: list[str]) -> list[str]:
         """:meth:`_own_span` from each place the key's label stands in the sentence."""
@@ -642,7 +683,7 @@ class Builder:
         specifications table: "| Set temperature range | 40–100 °C |", a programme table's
         time column), its unit fitting the setting; advice ("suggested") is not a limit."""
         ws = {w for w in words(name.replace("_", " ")) + words(label) if len(w) >= 4}
-        if not ws or not _unit_from_words(name):
+        if not ws or not _quantity_unit(name):
             return None
         if label and label.upper() == label and ws & (_TIMER_WORDS | {"time"}):
             # what the key's own sentences call its time ("TIMER  Push to set the Delay
@@ -752,10 +793,40 @@ def _row_step(cells: tuple[str, ...], unit: str) -> float | None:
     return None
 
 
+ASIDE_HEADING = re.compile(
+    r"\b(?:safety|safeguards?|warnings?|cautions?|precautions?|trouble-?\s?shooting|faults?"
+    r"|fault finding|problems?|error codes?|cleaning|care|maintenance|warranty|guarantee"
+    r"|disposal|customer)\b",
+    re.IGNORECASE,
+)
+EXAMPLE_RE = re.compile(r"^\s*(?:examples?|e\.\s?g\.|for (?:example|instance))\b", re.IGNORECASE)
+
+
+def _aside(units: list[Unit], i: int) -> bool:
+    """A unit that names values in passing, never a setting's list of them: a worked example
+    ("Example: it is 9 pm. You choose BASIC, 2.0 LB."), or a sentence under a safety,
+    troubleshooting, care or warranty heading ("Select UV, DRY or STORE" as a remedy). Ranges
+    are still read there."""
+    unit = units[i]
+    if EXAMPLE_RE.match(unit.text):
+        return True
+    before = units[i - 1] if i else None
+    if (
+        before is not None
+        and EXAMPLE_RE.match(before.text)
+        and not unit.bullet
+        and not unit.cells
+        and unit.line - before.line <= 1
+    ):
+        return True  # the example's next sentence
+    return bool(unit.heading) and bool(ASIDE_HEADING.search(unit.heading))
+
+
 def _fits(unit: str, tokens: list[str]) -> bool:
     """A range's unit can belong to the control: no minutes for a temperature, no degrees for a
-    timer (the sentence after a key often gives a neighbouring setting's range)."""
-    expected = {_unit_from_words(t) for t in tokens} - {""}
+    timer, no watts for a volume (the sentence after a key often gives a neighbouring
+    setting's range)."""
+    expected = {_quantity_unit(t) for t in tokens} - {""}
     if not expected or not unit:
         return True
     timeish = {"s", "min", "h"}
@@ -765,6 +836,9 @@ def _fits(unit: str, tokens: list[str]) -> bool:
         return unit in timeish
     if expected & {"%"}:
         return unit == "%"
+    for canonical, family in QUANTITY_FAMILIES.items():
+        if canonical in expected:
+            return unit in family
     return True
 
 
@@ -873,6 +947,30 @@ def _unit_from_words(name: str) -> str:
         return "%"
     if ws & {"time", "timer", "delay", "duration", "cook"}:
         return "min"
+    return ""
+
+
+QUANTITY_FAMILIES = {  # a setting named for a quantity takes a range in one of its units
+    "ml": frozenset({"ml", "l", "cl", "dl", "cups", "cup"}),
+    "g": frozenset({"g", "kg", "lb", "lbs"}),
+    "W": frozenset({"W", "kw"}),
+    "rpm": frozenset({"rpm"}),
+}
+QUANTITY_WORDS = {
+    "volume": "ml", "amount": "ml", "capacity": "ml", "water": "ml", "weight": "g",
+    "watt": "W", "watts": "W", "wattage": "W", "output": "W", "spin": "rpm", "rpm": "rpm",
+}  # fmt: skip
+
+
+def _quantity_unit(name: str) -> str:
+    """:func:`_unit_from_words`, and for a quantity its unit (volume → ml, weight → g, watts →
+    W, spin → rpm): a range must be in that unit's family to belong to the setting."""
+    unit = _unit_from_words(name)
+    if unit:
+        return unit
+    for w in words(name.replace("_", " ")):
+        if w in QUANTITY_WORDS:
+            return QUANTITY_WORDS[w]
     return ""
 
 

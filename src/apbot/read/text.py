@@ -118,6 +118,94 @@ def _space_tables(lines: list[str]) -> dict[int, tuple[tuple[str, ...], bool]]:
     return out
 
 
+_PAGE_NUMBER = re.compile(
+    r"^[-—–\s]*(?:page\s+)?\d{1,3}(?:\s*(?:/|of)\s*\d{1,3})?[-—–\s]*$", re.IGNORECASE
+)
+_NUMBER_PREFIX = re.compile(r"^\d{1,2}(?:\.\d{1,2})*\.?\s+")
+_CAPS_HEADING = re.compile(r"[A-Z][A-Z0-9 &/,'’()+-]*")
+
+
+def _furniture(lines: list[str]) -> set[int]:
+    """Page headers and footers of text flattened from a PDF (0-based line indexes): a page
+    number alone ("— 2 —", "Page 3"), or a short line standing by a blank line that comes back
+    three or more times with only its digits changed ("GLIMMERKIN UVC-9   - 3 -")."""
+
+    def key(line: str) -> str:
+        return re.sub(r"\s+", " ", re.sub(r"\d+", "#", line.strip())).lower()
+
+    def first(line: str) -> str:  # a running header's left part ("GLIMMERKIN UVC-9    - 3 -")
+        return key(re.split(r"\s{4,}", line.strip())[0]) + " …"
+
+    counts: dict[str, int] = {}
+    for line in lines:
+        counts[key(line)] = counts.get(key(line), 0) + 1
+        if re.search(r"\S\s{4,}\S", line.strip()):
+            counts[first(line)] = counts.get(first(line), 0) + 1
+    out: set[int] = set()
+    for i, line in enumerate(lines):
+        stripped = line.strip()
+        if not stripped or "|" in stripped or len(stripped) > 90:
+            continue
+        by_blank = (i > 0 and not lines[i - 1].strip()) or (
+            i + 1 < len(lines) and not lines[i + 1].strip()
+        )
+        if _PAGE_NUMBER.match(stripped) and by_blank:
+            out.add(i)
+            continue
+        wide = bool(re.search(r"\S\s{4,}\S", stripped)) and counts.get(first(line), 0) >= 3
+        if (
+            (counts[key(line)] >= 3 or wide)
+            and by_blank
+            and len(key(line)) >= 4
+            and not re.search(r"[.!?:;,]$", stripped)
+            and not re.match(r"[-*#>|`]", stripped)
+        ):
+            out.add(i)
+    return out
+
+
+def _page_breaks(lines: list[str], furniture: set[int]) -> set[int]:
+    """Lines to pass over so a sentence broken by a page goes on (0-based): a run of blank lines
+    and page furniture, unless the text before it ended a sentence (then it is a paragraph
+    break, and one blank line stays)."""
+    skip: set[int] = set()
+    i = 0
+    while i < len(lines):
+        if i not in furniture and lines[i].strip():
+            i += 1
+            continue
+        j = i
+        while j < len(lines) and (j in furniture or not lines[j].strip()):
+            j += 1
+        run = range(i, j)
+        if any(k in furniture for k in run):
+            before = next((lines[k].strip() for k in range(i - 1, -1, -1) if k not in skip), "")
+            ended = not before or re.search(r"[.!?:]$", before) or _plain_heading(before)
+            skip |= {k for k in run if k in furniture or not ended or k != i}
+            if ended and i in furniture:  # keep one break: the first blank line of the run
+                blank = next((k for k in run if k not in furniture), None)
+                skip -= {blank} if blank is not None else set()
+        i = j
+    return skip
+
+
+def _plain_heading(line: str) -> bool:
+    """A heading of a plain-text manual: a short line in capitals ("PANEL AND KNOBS", "4 CONTROL
+    PANEL", "1. SAFETY INFORMATION") or a section number with a short title ("6.1 Entering the
+    output on the keypad"), never a sentence, a numbered step or a drawing of the panel."""
+    stripped = line.strip()
+    number = _NUMBER_PREFIX.match(stripped)
+    rest = stripped[number.end() :] if number else stripped
+    if not 3 <= len(rest) <= 60 or re.search(r"\s{2,}|[.:;!?,]$|\[|\|", rest):
+        return False
+    if len(re.findall(r"[A-Za-z]", rest)) < 3 or len(rest.split()) > 8:
+        return False
+    if _CAPS_HEADING.fullmatch(rest) and len(rest.split()) <= 7:
+        return True
+    sub_level = bool(number and re.match(r"\d{1,2}\.\d", stripped))
+    return sub_level and rest[0].isupper() and not re.search(r"\d", rest)
+
+
 def parse_manual(text: str) -> Manual:
     """Split a manual into units; raise :class:`ReaderError` for input that is not text."""
     if not isinstance(text, str):
@@ -167,7 +255,15 @@ def parse_manual(text: str) -> Manual:
 
     fenced = False
     spaced = _space_tables(raw_lines)
+    furniture = _furniture(raw_lines)
+    passed = _page_breaks(raw_lines, furniture)
+    previous, last = "", 0
     for number, raw in enumerate(raw_lines, start=1):
+        if number - 1 in passed or number - 1 in furniture:
+            continue
+        # after a page break passed over, a line in capitals may start a new section
+        before, previous = ("" if number > last + 1 else previous), raw.strip()
+        last = number
         if number in spaced:
             flush()
             cells, is_header = spaced[number]
@@ -191,7 +287,12 @@ def parse_manual(text: str) -> Manual:
             flush()
             header = ()
             continue
-        if stripped.startswith("#"):
+        plain = (
+            not stripped.startswith(("#", "-", "*", ">"))
+            and (not before or re.search(r"[.!?:]$", before) or _plain_heading(before))
+            and _plain_heading(stripped)
+        )
+        if stripped.startswith("#") or plain:
             flush()
             header = ()
             heading = stripped.lstrip("#").strip()

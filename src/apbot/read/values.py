@@ -89,6 +89,11 @@ class Range:
     step: float | None = None
 
 
+_FOREIGN_UNIT = re.compile(
+    r"\s*(?:V|VAC|Hz|kHz|mm|cm|m|nm|µm|mA|mAh|dB|dBA|kWh|VA|bar|MPa|kPa|psi|Pa|lux)(?![\w])"
+)  # units no setting of a household appliance is set in: ratings and sizes
+
+
 def find_ranges(text: str) -> list[Range]:
     """Ranges written in the text (times h:mm in seconds with unit ``s``)."""
     out: list[Range] = []
@@ -109,8 +114,8 @@ def find_ranges(text: str) -> list[Range]:
             continue
         if not unit and m.group(0).strip().lower().split()[1:2] == ["and"]:
             continue  # "press A and B": no unit, "and" joins words more often than numbers
-        if unit == "" and hi > 10_000:
-            continue
+        if unit == "" and (hi > 10_000 or _FOREIGN_UNIT.match(text, m.end())):
+            continue  # "220–240 V", "12–32 cm": a rating or a size, not a setting's range
         out.append(Range(lo, hi, unit))
     for m in UPTO_RE.finditer(text):
         hi = number(m.group(1))
@@ -337,6 +342,21 @@ def bare_list(text: str) -> list[str] | None:
     if len(items) < 3 or len(items) > 16:
         return None
     if all(len(i) <= 20 and len(i.split()) <= 3 and not i.endswith(":") for i in items):
+        return _dedupe(items)
+    return None
+
+
+def cell_list(text: str) -> list[str] | None:
+    """A table cell that is nothing but a list of values ("22, 26, 30 … 58 L", "Low, Medium
+    and High", "400 / 800 / 1200 rpm"): three to sixteen short items, no sentence."""
+    items = [
+        _clean_item(p)
+        for p in re.split(r"\s*[·•,;/]\s*(?:(?:and|or)\s+)?|\s+(?:and|or)\s+", text.strip())
+    ]
+    items = [i for i in items if i]
+    if not 3 <= len(items) <= 16 or len(text) > 160 or re.search(r"[.:!?]\s*$|:\s", text):
+        return None  # a sentence describing the key, not a cell of values
+    if all(len(i) <= 20 and len(i.split()) <= 2 for i in items):
         return _dedupe(items)
     return None
 

@@ -1,0 +1,156 @@
+"""Rules about a manual's structure (page furniture, plain-text headings, specification tables,
+the panel's printed legend, sections that only mention values), each on a small manual written
+the way a commercial manual reads once converted to text."""
+
+from __future__ import annotations
+
+from apbot.model.domain import all_values
+from apbot.model.validate import check_model
+from apbot.read import read_manual
+from apbot.read.text import parse_manual
+
+# a washer-dryer manual flattened from a PDF: running headers, page numbers, plain headings
+WASHER = """AQUAVALE WD-7
+Washer-Dryer  ·  Instructions for use
+
+CONTENTS
+1 Safety ................ 2      4 Daily use ............ 5
+2 Installation .......... 3      5 Troubleshooting ...... 7
+
+1 SAFETY
+WARNING Risk of electric shock. Have the machine connected by a qualified person to an earthed
+socket (220–240 V, 10 A). Children from 8 years may use the machine under supervision.
+Never use the machine if the door seal, the cable or the hose is damaged. Do not wash items
+soiled with petrol, solvents, wax or cooking oil: they can ignite while drying.
+
+AQUAVALE WD-7                                                        - 2 -
+
+
+AQUAVALE WD-7                                                 Instructions for use
+2 INSTALLATION
+Remove the three transit bolts at the rear before first use and keep them for moving. The
+machine must stand level; adjust the feet with a 17 mm spanner.
+
+AQUAVALE WD-7                                                        - 3 -
+
+
+AQUAVALE WD-7                                                 Instructions for use
+4 DAILY USE
+4.1 Choosing the water level
+Press WATER LEVEL to select the amount of water. Each press selects the next level; after the
+highest level the lowest comes back. Choose a level that lets the laundry move
+freely in the drum. For a very small load
+
+AQUAVALE WD-7                                                        - 5 -
+
+
+AQUAVALE WD-7                                                 Instructions for use
+choose the lowest level.
+4.2 Starting
+Press START/PAUSE. The drum turns and water flows in.
+
+5 TROUBLESHOOTING
+Problem Possible cause Remedy Water stays in the drum Drain blocked Clean the pump filter
+Drum does not turn Load too small Select LOW, MID or HIGH and restart
+
+AQUAVALE WD-7                                                        - 7 -
+
+
+TECHNICAL DATA
+| Supply | 220–240 V ~ 50 Hz |
+| Water levels | 18, 24, 30, 36 and 42 L |
+| Dimensions | 595 × 565 × 850 mm |
+"""
+
+
+def test_page_headers_and_numbers_are_dropped_and_a_broken_sentence_goes_on() -> None:
+    units = parse_manual(WASHER).units
+    texts = [u.text for u in units]
+    assert not any("- 5 -" in t or "WD-7 Instructions for use" in t for t in texts)
+    assert any(t.startswith("For a very small load choose the lowest level.") for t in texts)
+
+
+def test_plain_text_headings_start_sections() -> None:
+    units = parse_manual(WASHER).units
+    headings = [u.text for u in units if u.text == u.heading]
+    assert "4.1 Choosing the water level" in headings
+    assert "5 TROUBLESHOOTING" in headings and "TECHNICAL DATA" in headings
+    # numbered steps and ordinary sentences stay sentences
+    assert not any(h.startswith("Press") for h in headings)
+
+
+def test_a_specification_row_led_by_the_settings_name_gives_its_values() -> None:
+    actions = ["press_water_level", "press_start_pause"]
+    model = read_manual(WASHER, actions).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    (var,) = [v for v in model.variables if "water" in v]
+    assert all_values(model.variables[var]) == [18, 24, 30, 36, 42]
+    # a rating in volts is no range of a setting, and a remedy lists no setting's values
+    assert not any(
+        set(map(str, all_values(spec))) & {"220", "240", "low", "mid", "high"}
+        for spec in model.variables.values()
+    )
+
+
+KETTLE = """# Brewline VK-2 variable-temperature kettle
+
+## Important safety instructions
+
+Fill between the MIN and MAX marks. Never immerse the base in water. The kettle switches
+off when it boils dry. Keep the cord away from the hot-plate of a cooker or a 2000 W heater.
+
+## Parts
+
+| Part | What it does |
+|---|---|
+| **ON** | Starts heating. |
+| **VOLUME ring** | Turn it to set how much water is poured. |
+
+## Technical data
+
+| Item | Value |
+|---|---|
+| Rated power | 1850–2200 W |
+| Volume per pour | 100–900 ml |
+| Cable length | 0.75 m |
+"""
+
+
+def test_a_quantity_takes_a_range_in_its_own_unit_from_the_specifications() -> None:
+    actions = ["press_on", "turn_volume_cw", "turn_volume_ccw"]
+    model = read_manual(KETTLE, actions).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    values = all_values(model.variables["volume"])
+    assert values[0] == 100 and values[-1] == 900  # ml, not the watts of the row above
+
+
+CABINET = """GLOWMAX SC-4 UV CABINET
+Instruction Manual
+
+PANEL
+MODE   OFF   QUICK   FULL   KEEP        HOURS  - / +     GO
+MODE knob   Large knob on the left; it clicks into the positions printed round it.
+HOURS knob   Turn it to set the storage time.
+
+FOR EXAMPLE
+Example: a bottle was rinsed at 6 pm. You pick QUICK, FULL and KEEP in turn to compare.
+
+PROBLEMS
+Nothing happens Knob at OFF Select QUICK, KEEP or DRY
+"""
+
+
+def test_positions_printed_beside_a_knobs_name_on_the_panel_are_its_values() -> None:
+    actions = ["turn_mode_cw", "turn_mode_ccw", "turn_hours_cw", "turn_hours_ccw", "press_go"]
+    model = read_manual(CABINET, actions).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    assert model.variables["mode"].values == ["off", "quick", "full", "keep"]
+
+
+def test_a_worked_example_and_a_remedy_give_no_values() -> None:
+    text = CABINET.replace("MODE   OFF   QUICK   FULL   KEEP        HOURS", "MODE  HOURS  GO  DRY")
+    actions = ["turn_mode_cw", "turn_mode_ccw", "turn_hours_cw", "turn_hours_ccw", "press_go"]
+    model = read_manual(text, actions).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    mode = model.variables["mode"]
+    assert mode.type != "discrete" or not {"quick", "full", "keep"} <= set(mode.values or [])
