@@ -154,3 +154,37 @@ def test_a_worked_example_and_a_remedy_give_no_values() -> None:
     assert not [p for p in check_model(model) if p.severity == "error"]
     mode = model.variables["mode"]
     assert mode.type != "discrete" or not {"quick", "full", "keep"} <= set(mode.values or [])
+
+
+# a catering hob's manual: a numbered key legend and an output table flattened with spaces
+HOB = """4 CONTROL PANEL
+[ON/OFF]  [POWER LEVEL]  [TIMER]   [ 8.8.8.8 ]   [+] [-]      7 8 9
+1 ON/OFF   2 WATT   3 TIMER   4 keys 0-9   5 + and -   6 START
+
+5 SETTING THE OUTPUT
+Tap WATT, then change the output with + and -. The output can also be typed in.
+
+Table 2  Output levels  Band  Settings (W)  Step
+Low  400 · 600 · 800 · 1000 · 1200  200 W
+High  1500 · 2000 · 2500 ·
+3000  500 W
+
+9 SAFETY
+Never leave hot oil unattended above 2000 W; keep 5 · 10 · 15 cm clear of walls (W).
+"""
+HOB_ACTIONS = ["press_on_off", "press_watt", "press_timer", "press_plus", "press_minus"]
+HOB_ACTIONS += ["press_start"] + [f"press_{d}" for d in range(10)]
+
+
+def test_the_runs_of_a_table_headed_by_a_quantitys_unit_are_its_settings() -> None:
+    model = read_manual(HOB, HOB_ACTIONS).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    values = all_values(model.variables["watt"])
+    assert values == [400, 600, 800, 1000, 1200, 1500, 2000, 2500, 3000]
+
+
+def test_keys_0_9_in_a_legend_name_the_keypad_not_a_range() -> None:
+    model = read_manual(HOB, HOB_ACTIONS).model
+    for name, spec in model.variables.items():
+        if spec.type == "numeric" and name != "watt":
+            assert all_values(spec)[-1] != 9 or all_values(spec)[0] != 0, name

@@ -10,6 +10,7 @@ guess the closed loop repairs most cheaply — a cyclic ``next`` over a small do
 
 from __future__ import annotations
 
+import itertools
 import re
 from dataclasses import dataclass, field
 from typing import Any
@@ -183,7 +184,8 @@ class Builder:
                 head = unit.header[0].lower()
                 if not re.search(r"key|button|control|pad|dial|knob|symbol|name", head):
                     continue  # a row describing the value the key names, not the key's setting
-            lists = [] if _aside(units, i) else self._lists(i, i in mentions, tokens)
+            quiet = _aside(units, i) or _header_row(units, i)
+            lists = [] if quiet else self._lists(i, i in mentions, tokens)
             for items, prio in lists:
                 if _keyish(items, others, own):
                     continue  # a list of keys ("DELAY, then + / −"), not of values
@@ -289,10 +291,50 @@ class Builder:
                 best, ev.values_at = column, self._table_at
             elif best is not None and len(best) < 3:
                 best = None
+        if best is None and not ev.ranges:
+            runs = self._unit_runs(tokens)
+            if runs is not None:  # the settings one by one: pieces of equal steps
+                amounts, at = runs
+                symbol = next(q for q in (_quantity_unit(t) for t in tokens) if q)
+                for lo, hi in itertools.pairwise(amounts):
+                    gap = round(hi - lo, 6)
+                    if ev.ranges and ev.ranges[-1].step == gap:
+                        ev.ranges[-1] = Range(ev.ranges[-1].low, hi, symbol, gap)
+                    else:
+                        ev.ranges.append(Range(lo, hi, symbol, gap))
+                ev.range_at = at
         if best is not None:
             ev.values = best if _numeric_items(best) else [v.lower() for v in best]
             self._initial_from_values(ev, tokens)
         return ev
+
+    def _unit_runs(self, tokens: list[str]) -> tuple[list[float], int] | None:
+        """For a quantity (watts, volume, weight, spin) of which nothing else is read: the
+        numbers a table headed by its unit lists in runs joined by middle dots ("Output
+        settings (W) … 500 · 600 · 700 … 1500 100 W Medium 1600 · 1700 …"), all runs of that
+        table together, in order."""
+        unit = next((u for u in (_quantity_unit(t) for t in tokens) if u in QUANTITY_FAMILIES), "")
+        if not unit:
+            return None
+        family = "|".join(re.escape(u) for u in sorted(QUANTITY_FAMILIES[unit], key=len))
+        headed = re.compile(rf"\((?:{family})\)", re.IGNORECASE)
+        units = self.manual.units
+        for i, u in enumerate(units):
+            if u.header or _aside(units, i) or not headed.search(u.text):
+                continue
+            table = [u]
+            for row in units[i + 1 :]:  # a header row: its rows too
+                if not u.cells or row.header != u.cells:
+                    break
+                table.append(row)
+            numbers: list[float] = []
+            text = " ".join(row.text for row in table)  # a run may go on in the next row
+            for run in RUN_RE.finditer(text):
+                numbers += [float(x.replace(",", ".")) for x in re.split(r"\s*[·•|]\s*", run[0])]
+            values = sorted(set(numbers))
+            if len(values) >= 3:
+                return values, i
+        return None
 
     def _lists(self, i: int, mention: bool, tokens: list[str]) -> list[tuple[list[str], float]]:
         """Candidate value lists at unit ``i`` with a priority (arrows beat prose, prose in the
@@ -765,8 +807,15 @@ def _cell_key(cell: str) -> str:
 
 
 def _keypad(r: Range, text: str) -> bool:
-    """ "0 – 9: number keys" names the keypad, not a setting's range."""
-    return not r.unit and r.low == 0 and r.high == 9 and bool(_KEYPAD_WORDS.search(text))
+    """ "0 – 9: number keys" (or "keys 0-9", "0–9 buttons") names the keypad, not a setting's
+    range."""
+    if r.unit or r.low != 0 or r.high != 9:
+        return False
+    return bool(
+        _KEYPAD_WORDS.search(text)
+        or re.search(r"\b(?:keys|buttons|pads)\s+0\s*(?:-|–|—|to)\s*9\b", text, re.I)
+        or re.search(r"\b0\s*(?:-|–|—|to)\s*9\s+(?:keys|buttons|pads)\b", text, re.I)
+    )
 
 
 def _numeric_items(items: list[str]) -> bool:
@@ -793,6 +842,7 @@ def _row_step(cells: tuple[str, ...], unit: str) -> float | None:
     return None
 
 
+RUN_RE = re.compile(r"\d+(?:[.,]\d+)?(?:\s*[·•]\s*(?:\|\s*)?\d+(?:[.,]\d+)?){2,}")
 ASIDE_HEADING = re.compile(
     r"\b(?:safety|safeguards?|warnings?|cautions?|precautions?|trouble-?\s?shooting|faults?"
     r"|fault finding|problems?|error codes?|cleaning|care|maintenance|warranty|guarantee"
@@ -800,6 +850,19 @@ ASIDE_HEADING = re.compile(
     re.IGNORECASE,
 )
 EXAMPLE_RE = re.compile(r"^\s*(?:examples?|e\.\s?g\.|for (?:example|instance))\b", re.IGNORECASE)
+
+
+def _header_row(units: list[Unit], i: int) -> bool:
+    """A table's header row (rows follow under it): the names of its columns, not values."""
+    unit = units[i]
+    return (
+        bool(unit.cells)
+        and not unit.header
+        and i + 1 < len(units)
+        and units[i + 1].header == unit.cells
+        and sum(c.upper() == c for c in unit.cells) < len(unit.cells)  # not a row of key names
+        and all(len(c) <= 24 for c in unit.cells)  # not two columns of prose side by side
+    )
 
 
 def _aside(units: list[Unit], i: int) -> bool:
