@@ -188,3 +188,30 @@ def test_keys_0_9_in_a_legend_name_the_keypad_not_a_range() -> None:
     for name, spec in model.variables.items():
         if spec.type == "numeric" and name != "watt":
             assert all_values(spec)[-1] != 9 or all_values(spec)[0] != 0, name
+
+
+# a washing machine's settings page set in two columns, as a PDF converter leaves it
+COLUMNS = """6. SETTINGS
+6.1 Spin Press the SPIN button to lower      Rinse Hold: the water of the last rinse
+the spin speed. Each press gives a lower     stays in the drum, so that nothing creases.
+speed. The lamps show 1200 1000 800 600      Drain it with the Spin/Drain programme
+and the symbol Rinse Hold. After the last    once you are back.
+one the highest speed comes back.
+6.2 Child lock Hold SPIN and RINSE         To release it, hold the same two buttons
+together for 3 seconds: CL appears and      again for 3 seconds; CL goes off and the
+every button is locked.                     buttons work again.
+"""
+COLUMN_ACTIONS = ["press_spin", "press_rinse", "hold_spin_and_rinse", "press_start"]
+
+
+def test_two_columns_side_by_side_are_read_one_after_the_other() -> None:
+    texts = [u.text for u in parse_manual(COLUMNS).units]
+    assert "6.1 Spin Press the SPIN button to lower the spin speed." in texts
+    assert any(t.startswith("Rinse Hold: the water of the last rinse stays in the") for t in texts)
+
+
+def test_a_keys_lamps_showing_numbers_make_it_an_amount_not_the_two_key_holds_toggle() -> None:
+    model = read_manual(COLUMNS, COLUMN_ACTIONS).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    assert all_values(model.variables["spin"]) == [600, 800, 1000, 1200]
+    assert model.features["child_lock"][0].actions == ["hold_spin_and_rinse"]

@@ -218,7 +218,11 @@ class Builder:
                 step = find_step(text)
                 if step:
                     ev.step, ev.step_at = step, i
-            if ev.toggle_at is None and ON_OFF_RE.search(_without(text, other_labels)):
+            if (
+                ev.toggle_at is None
+                and ON_OFF_RE.search(_without(text, other_labels))
+                and not self._two_key_hold(text, tokens)
+            ):
                 ev.toggle_at = i  # (another key's name, ON/OFF in a panel drawing, is no toggle)
             if ev.each_press_at is None and EACH_PRESS_RE.search(text):
                 ev.each_press_at = i
@@ -307,6 +311,19 @@ class Builder:
             ev.values = best if _numeric_items(best) else [v.lower() for v in best]
             self._initial_from_values(ev, tokens)
         return ev
+
+    def _two_key_hold(self, text: str, tokens: list[str]) -> bool:
+        """Whether a sentence tells of holding two keys together, one of them this one, when
+        the panel has that two-key hold ("press and hold SPIN and STEAM for 3 seconds: CL
+        appears; hold them again to switch it off"): its on/off is the hold's, not the key's."""
+        if len(tokens) != 1 or not re.search(r"\bhold", text, re.IGNORECASE):
+            return False
+        for info in self.infos:
+            if len(info.controls) > 1 and tokens[0] in info.controls:
+                names = [self.labels[c].text for c in info.controls if c in self.labels]
+                if len(names) == len(info.controls) and all(n and n in text for n in names):
+                    return True
+        return False
 
     def _unit_runs(self, tokens: list[str]) -> tuple[list[float], int] | None:
         """For a quantity (watts, volume, weight, spin) of which nothing else is read: the

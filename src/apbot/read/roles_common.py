@@ -25,7 +25,7 @@ def first_mention(b: Builder, tokens: list[str]) -> int | None:
 
 NUMERIC_WORDS = {
     "time", "timer", "delay", "clock", "humidity", "temperature", "temp", "level", "watt",
-    "speed", "weight", "volume", "duration", "hour", "min", "minute", "preset", "reserve",
+    "speed", "spin", "weight", "volume", "duration", "hour", "min", "minute", "preset", "reserve",
 }  # fmt: skip  # settings that are amounts: "switch the timer off" does not make them toggles
 
 

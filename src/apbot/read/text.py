@@ -62,7 +62,7 @@ def _clean_chars(text: str) -> str:
         if cat.startswith("C"):
             return ""
         if ch == "❄":
-            return " COLD "  # the snowflake printed for a cold wash or a cold setting
+            return "COLD"  # the snowflake printed for a cold wash or a cold setting
         if cat == "So" and ch not in _KEEP:
             return " "  # emoji and dingbats
         return ch
@@ -196,14 +196,71 @@ def _plain_heading(line: str) -> bool:
     stripped = line.strip()
     number = _NUMBER_PREFIX.match(stripped)
     rest = stripped[number.end() :] if number else stripped
-    if not 3 <= len(rest) <= 60 or re.search(r"\s{2,}|[.:;!?,]$|\[|\|", rest):
+    if not 3 <= len(rest) <= 60 or re.search(r"\s{2,}|[.:;!?,-]$|\[|\|", rest):
         return False
     if len(re.findall(r"[A-Za-z]", rest)) < 3 or len(rest.split()) > 8:
         return False
     if _CAPS_HEADING.fullmatch(rest) and len(rest.split()) <= 7:
         return True
     sub_level = bool(number and re.match(r"\d{1,2}\.\d", stripped))
-    return sub_level and rest[0].isupper() and not re.search(r"\d", rest)
+    short = len(rest.split()) <= 6  # a title, not a sentence run on after it
+    return sub_level and short and rest[0].isupper() and not re.search(r"\d", rest)
+
+
+def _reading_order(lines: list[str]) -> tuple[list[str], list[int]]:
+    """The lines in reading order, each with its 1-based number in the text: prose set in two
+    columns side by side ("5.2 Spin Press the SPIN button to     Spin: no final spin; the…") is
+    read down the left column, then down the right one. A block counts as two columns when
+    three or more lines in a row split at one place by a wide gap into two parts of running
+    text (a table's cells are short; a drawing's are words in capitals)."""
+    splits: list[tuple[int, str, str] | None] = []
+    for line in lines:
+        found = None
+        if "|" not in line:
+            for m in re.finditer(r"\S(\s{3,})(?=\S)", line):
+                left, right = line[: m.start(1)].strip(), line[m.end(1) :].strip()
+                if len(left) >= 18 and len(right) >= 18 and not re.search(r"\s{2,}", right):
+                    found = (m.end(1), left, right)
+                break
+        splits.append(found)
+
+    def at(k: int, column: int) -> tuple[int, str, str] | None:
+        """Line k split by a gap of two or more spaces ending near ``column``."""
+        if splits[k] is not None and abs(splits[k][0] - column) <= 8:  # type: ignore[index]
+            return splits[k]
+        for m in re.finditer(r"\S(\s{2,})(?=\S)", lines[k]):
+            if abs(m.end(1) - column) <= 8 and "|" not in lines[k]:
+                left, right = lines[k][: m.start(1)].strip(), lines[k][m.end(1) :].strip()
+                plain = not re.search(r"\s{2,}", left + "\n" + right)
+                if len(left) >= 10 and len(right) >= 10 and plain:
+                    return (m.end(1), left, right)
+        return None
+
+    out: list[str] = []
+    numbers: list[int] = []
+    i = 0
+    column = 0  # the gap of the block just read: the next section's block may share it
+    while i < len(lines):
+        first = splits[i] or (at(i, column) if column else None)
+        parts: list[tuple[int, str, str]] = []
+        j = i
+        while j < len(lines) and first is not None:
+            here = at(j, first[0])
+            if here is None or (j > i and re.match(r"\d{1,2}\.\d{1,2}\.?\s+[A-Z]", here[1])):
+                break  # a numbered section starting on the left begins a block of its own
+            parts.append(here)
+            j += 1
+        prose = sum(bool(re.search(r"[a-z]{3,} [a-z]{3,}", p[1] + " " + p[2])) for p in parts)
+        if j - i >= 3 and prose * 3 >= 2 * (j - i):
+            out += [p[1] for p in parts] + [p[2] for p in parts]
+            numbers += [k + 1 for k in range(i, j)] * 2
+            i, column = j, parts[0][0]
+        else:
+            out.append(lines[i])
+            numbers.append(i + 1)
+            i += 1
+            column = 0  # only the line right after a block may go on with its gap
+    return out, numbers
 
 
 def parse_manual(text: str) -> Manual:
@@ -215,8 +272,10 @@ def parse_manual(text: str) -> Manual:
             f"the manual has {len(text):,} characters; the reader accepts at most "
             f"{MAX_MANUAL_CHARS:,}"
         )
-    text = _clean_chars(text.replace("\r\n", "\n").replace("\r", "\n"))
-    raw_lines = text.split("\n")
+    text = text.replace("\r\n", "\n").replace("\r", "\n")
+    text = _clean_chars(re.sub(r" ?❄ ?", " ❄ ", text))  # one space each side, not two
+    original = text.split("\n")
+    raw_lines, line_numbers = _reading_order(original)
     units: list[Unit] = []
     heading = ""
     header: tuple[str, ...] = ()
@@ -258,15 +317,16 @@ def parse_manual(text: str) -> Manual:
     furniture = _furniture(raw_lines)
     passed = _page_breaks(raw_lines, furniture)
     previous, last = "", 0
-    for number, raw in enumerate(raw_lines, start=1):
-        if number - 1 in passed or number - 1 in furniture:
+    for position, raw in enumerate(raw_lines, start=1):
+        number = line_numbers[position - 1]
+        if position - 1 in passed or position - 1 in furniture:
             continue
         # after a page break passed over, a line in capitals may start a new section
-        before, previous = ("" if number > last + 1 else previous), raw.strip()
-        last = number
-        if number in spaced:
+        before, previous = ("" if position > last + 1 else previous), raw.strip()
+        last = position
+        if position in spaced:
             flush()
-            cells, is_header = spaced[number]
+            cells, is_header = spaced[position]
             if is_header:
                 header = cells
                 units.append(Unit(number, " | ".join(cells), cells, (), heading=heading))
@@ -322,7 +382,7 @@ def parse_manual(text: str) -> Manual:
             flush()  # "WARM      holds cooked food hot": a term and its definition, a new item
         para.append((number, stripped))
     flush()
-    return Manual(units, raw_lines)
+    return Manual(units, original)
 
 
 _FIELD_RE = re.compile(r"^\s{0,2}[A-Z][a-z]+(?: [A-Za-z]+){0,3}(?: \([^)]{1,30}\))?:\s+\S")

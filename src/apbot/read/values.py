@@ -385,7 +385,7 @@ def anchored_lists(text: str, word: str) -> list[list[str]]:
 
 _RUN_CUE = re.compile(  # a lookahead: every cue is tried
     r"(?=\b(?:printed|marked|markings?|labell?ed|reads?|positions?|settings?|scale|steps?|values?"
-    r"|levels?)\b[^:.;]{0,30}?:?\s*(.*))",
+    r"|levels?|(?:lamps?|leds?|indicators?|lights?)\s+(?:show|read|mark))\b[^:.;]{0,30}?:?\s*(.*))",
     re.IGNORECASE,
 )
 
