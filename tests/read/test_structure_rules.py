@@ -215,3 +215,39 @@ def test_a_keys_lamps_showing_numbers_make_it_an_amount_not_the_two_key_holds_to
     assert not [p for p in check_model(model) if p.severity == "error"]
     assert all_values(model.variables["spin"]) == [600, 800, 1000, 1200]
     assert model.features["child_lock"][0].actions == ["hold_spin_and_rinse"]
+
+
+# a domino hob: one sensor per zone, touched for the zone and held for its timer
+DOMINO = """# Vellmar HZ-2 Domino Hob
+
+## Safety
+
+Stay with the pan when frying; oil overheats fast. Do not use the hob if the glass is cracked.
+The key lock keeps children from changing a setting.
+
+## Sensors
+
+| Sensor | Use |
+|---|---|
+| ON/OFF | Hob on / off |
+| FRONT | Selects the front zone (touch) · front timer (touch and hold) |
+| BACK | Selects the back zone (touch) · back timer (touch and hold) |
+| − / + | Change the value of whatever is selected |
+| LOCK | Key lock (touch and hold) |
+
+Touch a zone's sensor, then use + and − to set its heat from 0 to 9.
+"""
+DOMINO_ACTIONS = ["press_on_off", "press_front", "press_back", "hold_front", "hold_back"]
+DOMINO_ACTIONS += ["press_minus", "press_plus", "hold_lock"]
+
+
+def test_a_keys_hold_sets_the_timer_its_legend_names_and_the_lock_is_the_lock_key() -> None:
+    model = read_manual(DOMINO, DOMINO_ACTIONS).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    assert model.features["child_lock"][0].actions == ["hold_lock"]
+    timer = model.variables["front_timer"]
+    assert timer.type == "time"
+    (feature,) = [steps for steps in model.features.values() if steps[0].actions == ["hold_front"]]
+    assert set(feature[1].actions) == {"press_minus", "press_plus"}
+    heat = model.features["set_front"]  # the touch still sets the zone's own amount
+    assert heat[0].actions == ["press_front"] and model.variables["front"].type == "numeric"

@@ -17,6 +17,7 @@ from apbot.read.roles_common import (
     FUNCTION_WORDS,
     NUMERIC_WORDS,
     TIME_WORDS,
+    hold_use,
     label_of,
     mentions_of,
     used_actions,
@@ -79,6 +80,13 @@ def assign(b: Builder) -> None:
         ev = evidence[key.name]
         name = var_name(b, key)
         lab = label_of(b, key.controls[0])
+        if (
+            key.skill == "hold"
+            and set(words(hold_use(b, key))) & TIME_WORDS
+            and (shared_pair or digits or generic_dials)
+        ):
+            entry_keys.append(key)  # "rear timer (touch and hold)", then + / −
+            continue
         own_toggle = (
             ev.toggle_at is not None
             and any(ev.toggle_at in b.labels[c].mentions for c in key.controls if c in b.labels)

@@ -47,8 +47,9 @@ def assign_amounts(
         ccw = [i.name for i in dials[t] if i.skill == "turn_ccw"]
         if cw and ccw:
             steppers.append((cw, ccw))
-    if not entry_keys and (steppers or digits):
-        entry_keys = [k for k in silent if k.skill == "press"]
+    if not any(k.skill == "press" for k in entry_keys) and (steppers or digits):
+        # (a key's hold that sets a timer leaves its press to set the key's own amount)
+        entry_keys = entry_keys + [k for k in silent if k.skill == "press"]
         silent = [k for k in silent if k not in entry_keys]
     used_steppers: set[int] = set()
     used_digits = False

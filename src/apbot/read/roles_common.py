@@ -90,10 +90,33 @@ def used_actions(b: Builder) -> set[str]:
     return {a for steps in b.features.values() for st in steps for a in st["actions"]}
 
 
+HOLD_USE_RE = re.compile(
+    r"([A-Za-z][A-Za-z -]{2,30}?)\s*\((?:(?:touch|press|tap|push)\s*(?:and|&)\s*)?hold\)",
+    re.IGNORECASE,
+)
+
+
+def hold_use(b: Builder, key: ActionInfo) -> str:
+    """What holding a key does when its legend gives a use per way of touching it ("| REAR |
+    Selects the rear zone (touch) · rear timer (touch and hold) |"): "rear timer"; else ""."""
+    if key.skill != "hold" or len(key.controls) != 1 or key.controls[0] not in b.labels:
+        return ""
+    for i in b.labels[key.controls[0]].mentions:
+        m = HOLD_USE_RE.search(b.manual.units[i].text)
+        if m:
+            noun = re.split(r"[·;,:|]|\)", m.group(1))[-1].strip()
+            if noun and len(noun.split()) <= 3 and not set(words(noun)) & {"lock", "key"}:
+                return noun.lower()
+    return ""
+
+
 def var_name(b: Builder, key: ActionInfo) -> str:
     """The setting's name: the key's printed name when it spells out the action's word
     ("KITCHEN TIMER" for timer, "WATER LEVEL" for water), else the action's word."""
     base = key.token if key.skill == "press" else f"{key.token}_hold"
+    held = hold_use(b, key)
+    if held:
+        return "_".join(words(held))
     lab = b.labels.get(key.controls[0])
     if key.skill != "press" or lab is None or lab.line is None:
         return base

@@ -77,14 +77,20 @@ def assign_locks(b: Builder, done: set[str]) -> list[str]:
     adds them to ``done`` and returns them."""
     infos = b.infos
     lock_actions: list[str] = []
+    # a panel with a key of its own for the lock: another key's hold near the word "lock"
+    # (a key table's next row, "| LOCK | Key lock (touch and hold) |") is not the lock
+    named = any("lock" in words(i.token) for i in infos)
     for info in infos:
         if info.name in done:
             continue
         is_lock = "lock" in words(info.token) and info.skill in ("hold", "press")
         if info.skill == "hold" and not is_lock:
             texts = [b.manual.units[i].text for i in b.context(list(info.controls))]
-            is_lock = len(info.controls) > 1 or any(
-                re.search(r"\bhold\b", t, re.I) and re.search(r"\block", t, re.I) for t in texts
+            is_lock = len(info.controls) > 1 or (
+                not named
+                and any(
+                    re.search(r"\bhold\b", t, re.I) and re.search(r"\block", t, re.I) for t in texts
+                )
             )
         if not is_lock:
             continue
