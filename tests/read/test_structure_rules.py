@@ -251,3 +251,37 @@ def test_a_keys_hold_sets_the_timer_its_legend_names_and_the_lock_is_the_lock_ke
     assert set(feature[1].actions) == {"press_minus", "press_plus"}
     heat = model.features["set_front"]  # the touch still sets the zone's own amount
     assert heat[0].actions == ["press_front"] and model.variables["front"].type == "numeric"
+
+
+# a portable hob with one knob that the timer borrows and that otherwise sets the temperature
+KNOB = """# Solvik PH-1 Portable Induction Hob
+
+## Safety notes
+
+Never heat an empty pan. Keep the air vents free. Persons with a pacemaker should ask a doctor.
+
+## Controls
+
+- **POWER** — switches the hob on and off.
+- **TIMER** — hands the knob over to the timer for the next turns.
+- **Knob** — turning clockwise raises the value shown, anticlockwise lowers it.
+
+## Setting the temperature
+
+Turn the knob. Each click changes the temperature by 10 °C, from 60 °C to 240 °C.
+
+## Timer
+
+Press **TIMER**, then turn the knob to set 1–180 minutes; press **TIMER** again to go back.
+"""
+KNOB_ACTIONS = ["press_power", "press_timer", "turn_knob_cw", "turn_knob_ccw"]
+
+
+def test_a_shared_knob_turned_alone_sets_the_amount_its_section_names() -> None:
+    model = read_manual(KNOB, KNOB_ACTIONS).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    temperature = all_values(model.variables["temperature"])
+    assert temperature[0] == 60 and temperature[-1] == 240 and 190 in temperature
+    (alone,) = model.features["set_temperature"]
+    assert set(alone.actions) == {"turn_knob_cw", "turn_knob_ccw"}
+    assert model.features["set_timer"][0].actions == ["press_timer"]

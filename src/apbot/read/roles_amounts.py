@@ -18,7 +18,7 @@ from apbot.read.roles_common import (
     token_of,
     var_name,
 )
-from apbot.read.roles_lists import dial_ends, dial_list, list_evidence
+from apbot.read.roles_lists import dial_amount, dial_ends, dial_list, list_evidence
 
 ADD_RE = re.compile(r"^(add|plus|extra)_?(\d+)_?(s|sec|secs|seconds|m|min|mins|minutes)?$")
 
@@ -123,7 +123,7 @@ def assign_amounts(
     for t in generic_dials:  # turned by itself, the dial picks the list its sentence names
         cw = [i.name for i in dials[t] if i.skill == "turn_cw"]
         ccw = [i.name for i in dials[t] if i.skill == "turn_ccw"]
-        if cw and ccw and dial_list(b, t, cw, ccw):
+        if cw and ccw and (dial_list(b, t, cw, ccw) or dial_amount(b, t, cw, ccw)):
             used_steppers |= {k for k, pair in enumerate(steppers) if pair == (cw, ccw)}
     for index, (up, down) in enumerate(steppers):
         if index not in used_steppers:

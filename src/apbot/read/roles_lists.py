@@ -7,9 +7,10 @@ import itertools
 import re
 from typing import Any
 
-from apbot.read.build import Builder, Evidence, _next_table_column
+from apbot.read.build import Builder, Evidence, _fits, _next_table_column
 from apbot.read.labels import words
 from apbot.read.roles_common import numeric_list, stepped_noun, token_of
+from apbot.read.values import find_ranges, find_step
 
 LIST_WORDS = {"left", "right", "prev", "previous", "next", "forward"}
 
@@ -176,3 +177,36 @@ def dial_ends(b: Builder, token: str, var: str) -> None:
             b.variables[var]["wrap"] = False
             b.note(f"variables.{var}.wrap", "the knob stops at its ends", i)
             return
+
+
+AMOUNT_NOUNS = ("temperature", "heat", "power", "speed", "volume", "level", "strength")
+
+
+def dial_amount(b: Builder, token: str, cw: list[str], ccw: list[str]) -> bool:
+    """A generic dial other keys hand values to ("TIMER — hands the knob over to the timer")
+    that a section headed by an amount tells to turn by itself ("## Setting the temperature —
+    Turn the knob."): turned alone, it sets that amount, read from that section."""
+    units = b.manual.units
+    turn = re.compile(rf"\b(?:turn|rotate|twist)\w*\b[^.]*?\b{re.escape(token)}\b", re.I)
+    for i, unit in enumerate(units):
+        if unit.text == unit.heading or not turn.search(unit.text):
+            continue
+        heading = words(unit.heading)
+        noun = next((n for n in AMOUNT_NOUNS if n in heading), None)
+        if noun is None or any(noun in words(v.replace("_", " ")) for v in b.variables):
+            continue
+        section = [k for k, u in enumerate(units) if u.heading == unit.heading]
+        ev = Evidence()
+        for k in section:
+            found = [r for r in find_ranges(units[k].text) if r.unit and _fits(r.unit, [noun])]
+            if found and not ev.ranges:
+                ev.ranges, ev.range_at = found[:1], k
+            step = find_step(units[k].text)
+            if step and ev.step is None and _fits(step[1], [noun]):
+                ev.step, ev.step_at = step, k
+        var = b.add_number(noun, noun.upper(), ev, cyclic=False)
+        eff = {**{a: "next" for a in cw}, **{a: "prev" for a in ccw}}
+        b.feature(f"set_{var}", [{"actions": cw + ccw, "variable": var, "effect": eff}])
+        b.note(f"features.set_{var}", f"turned by itself the {token} sets the {noun}", i)
+        return True
+    return False
