@@ -285,3 +285,57 @@ def test_a_shared_knob_turned_alone_sets_the_amount_its_section_names() -> None:
     (alone,) = model.features["set_temperature"]
     assert set(alone.actions) == {"turn_knob_cw", "turn_knob_ccw"}
     assert model.features["set_timer"][0].actions == ["press_timer"]
+
+
+# a twin-tub washer: three keys stepping per-course amounts named by a table's columns
+TWIN = """# Lindqvist TT-6 Twin Tub Washer
+
+## Keys
+
+| Key | What it does |
+|---|---|
+| COURSE | Chooses the course. |
+| WASH | Wash time. |
+| RINSE | Number of rinses. |
+| DELAY | Finish later; each press adds one hour (2 to 12 hours). |
+| START | Starts the course. |
+
+### Courses
+
+| Course | Use it for | Wash (min) | Rinses |
+|---|---|---|---|
+| Normal | Everyday laundry | 6 – 18 (12) | 0 – 3 (2) |
+| Heavy | Work clothes | 12 – 24 (18) | 1 – 3 (3) |
+| Quick | Small loads | 3 – 9 (6) | 1 – 2 (1) |
+
+### Changing the settings
+
+Press **WASH** or **RINSE**: every press gives the next value the course allows, and after the
+largest the smallest comes back.
+
+The timer moves in one-minute steps up to one hour, and in coarser steps after that, up to 3
+hours.
+"""
+TWIN_ACTIONS = ["press_course", "press_wash", "press_rinse", "press_delay", "press_start"]
+
+
+def test_a_key_stepped_by_every_press_is_an_amount_and_takes_the_column_of_its_name() -> None:
+    model = read_manual(TWIN, TWIN_ACTIONS).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    wash = model.variables["wash"]
+    assert wash.depends_on == "course"
+    (heavy,) = wash.cases["heavy"].ranges  # 12–24 min, in minutes or as a time
+    assert [str(x) for x in heavy[:2]] in (["12", "24"], ["00:12:00", "00:24:00"])
+    assert model.variables["delay"].depends_on is None  # "Wash (min)" is not the delay's
+
+
+def test_a_range_told_twice_in_a_sentence_is_the_wider_and_minutes_step_an_hours_range() -> None:
+    text = KNOB.replace(
+        "Press **TIMER**, then turn the knob to set 1–180 minutes; press **TIMER** again to go back.",
+        "Press **TIMER**, then turn the knob. The time moves one minute per click up to one hour,"
+        " and in coarser steps after that, up to 3 hours.",
+    )
+    model = read_manual(text, KNOB_ACTIONS).model
+    timer = model.variables["timer"]
+    assert timer.type == "time"
+    assert timer.ranges[0][1] == "03:00:00" and timer.ranges[0][2] == 60

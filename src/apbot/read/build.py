@@ -209,7 +209,10 @@ class Builder:
                 if row_step:
                     ranges = [Range(ranges[0].low, ranges[0].high, ranges[0].unit, row_step)]
             if ranges and not ev.ranges:
-                ev.ranges, ev.range_at = ranges[:1], i
+                # "one minute per click up to one hour, and in coarser steps after that, up to
+                # 3 hours": the same range told twice, the wider is the whole of it
+                same = [r for r in ranges if r.low == ranges[0].low and r.unit == ranges[0].unit]
+                ev.ranges, ev.range_at = [max(same, key=lambda r: r.high)], i
             elif ranges and ev.ranges and ranges[0].unit == ev.ranges[-1].unit:
                 last = ev.ranges[-1]
                 if abs(ranges[0].low - last.high) < 1e-9 and ranges[0].high > last.high:
@@ -661,7 +664,8 @@ class Builder:
             self.note(subject, f"range {low:g}–{high:g} {unit} (the manual gives none)")
             ranges = [Range(low, high, unit)]
         unit = ranges[0].unit or (ev.step[1] if ev.step else "") or _unit_from_words(name)
-        as_time = ranges[0].unit == "s" or unit in ("s", "min")
+        finer = bool(ev.step and ev.step[1] in ("s", "min") and unit == "h")  # 0–3 h by 1 min
+        as_time = ranges[0].unit == "s" or unit in ("s", "min") or finer
         factor = 1 if ranges[0].unit == "s" else seconds(1, unit) if as_time else 1
 
         def base_step(r: Range) -> float | None:

@@ -98,7 +98,11 @@ def apply_cases(b: Builder) -> None:
         for column in range(1, len(header)):
             if set(words(header[column])) & (DEFAULT_WORDS | ADVICE_WORDS):
                 continue
-            for name, spec in list(b.variables.items()):
+            head = [w for w in words(header[column]) if w not in GENERIC][:1]
+            named = sorted(  # "Wash (min)": the variable named wash before any other "min" one
+                b.variables.items(), key=lambda item: not set(head) & set(words(item[0]))
+            )
+            for name, spec in named:
                 if name == parent or name in fixed | parents or spec.get("depends_on"):
                     continue
                 if not _matches(header[column], name, spec):

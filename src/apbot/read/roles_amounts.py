@@ -7,7 +7,7 @@ import re
 from typing import Any
 
 from apbot.read.actions import ActionInfo
-from apbot.read.build import Builder, Evidence
+from apbot.read.build import CHOICE_WORDS, Builder, Evidence
 from apbot.read.labels import words
 from apbot.read.roles_common import (
     NUMERIC_WORDS,
@@ -236,7 +236,15 @@ def assign_leftovers(b: Builder, silent: list[ActionInfo], evidence: dict[str, E
     """Whatever is left: an amount a key steps, or a toggle the closed loop can repair."""
     for key in silent:
         name = var_name(b, key)
-        if set(words(name)) & NUMERIC_WORDS and key.skill == "press":
+        ev = evidence.get(key.name)
+        own = {i for c in key.controls if c in b.labels for i in b.labels[c].mentions}
+        stepped = (  # "press WASH, RINSE or SPIN: every press gives the next value"
+            ev is not None
+            and ev.each_press_at in own
+            and ev.toggle_at is None
+            and not set(words(name)) & CHOICE_WORDS
+        )
+        if (set(words(name)) & NUMERIC_WORDS or stepped) and key.skill == "press":
             var = b.add_number(name, label_of(b, key.controls[0]), evidence[key.name], cyclic=True)
             b.feature(f"set_{var}", [{"actions": [key.name], "variable": var, "effect": "next"}])
             b.note(f"features.set_{var}", f"{key.name} steps an amount (the manual says no more)")
