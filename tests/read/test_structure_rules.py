@@ -331,8 +331,8 @@ def test_a_key_stepped_by_every_press_is_an_amount_and_takes_the_column_of_its_n
 
 def test_a_range_told_twice_in_a_sentence_is_the_wider_and_minutes_step_an_hours_range() -> None:
     text = KNOB.replace(
-        "Press **TIMER**, then turn the knob to set 1–180 minutes; press **TIMER** again to go back.",
-        "Press **TIMER**, then turn the knob. The time moves one minute per click up to one hour,"
+        "then turn the knob to set 1–180 minutes; press **TIMER** again to go back.",
+        "then turn the knob. The time moves one minute per click up to one hour,"
         " and in coarser steps after that, up to 3 hours.",
     )
     model = read_manual(text, KNOB_ACTIONS).model
