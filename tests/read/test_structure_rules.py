@@ -339,3 +339,43 @@ def test_a_range_told_twice_in_a_sentence_is_the_wider_and_minutes_step_an_hours
     timer = model.variables["timer"]
     assert timer.type == "time"
     assert timer.ranges[0][1] == "03:00:00" and timer.ranges[0][2] == 60
+
+
+def test_a_heading_sharing_only_a_words_start_is_no_section_of_the_key() -> None:
+    text = """# Oven
+
+| Key | Use |
+|---|---|
+| COOK | Cooking time, with the number keys. |
+| START | Starts. |
+
+## Cookware
+
+- Glass: yes
+- Foil: no
+- Paper: short times only
+"""
+    actions = ["press_cook", "press_start"] + [f"press_{d}" for d in range(10)]
+    model = read_manual(text, actions).model
+    assert not any(
+        {"glass", "foil", "paper"} & set(map(str, spec.values or []))
+        for spec in model.variables.values()
+        if spec.type == "discrete"
+    )
+
+
+def test_a_keypad_cooking_time_with_no_range_read_takes_minutes_and_seconds() -> None:
+    text = """# Compact microwave
+
+The clock runs on a 12-hour cycle, so any time from 1:00 to 12:59 can be entered.
+
+| Key | Use |
+|---|---|
+| TIME COOK | Enter the cooking time with the number keys. |
+| START | Starts. |
+"""
+    actions = ["press_time_cook", "press_start"] + [f"press_{d}" for d in range(10)]
+    model = read_manual(text, actions).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    cook = model.variables["time_cook"]
+    assert cook.type == "time" and "00:02:30" in all_values(cook)  # not the clock's 1:00–12:59

@@ -135,11 +135,8 @@ class Builder:
                     continue
                 hw = words(unit.heading)
                 if any(
-                    h.startswith(t[:6]) or t.startswith(h[:6])
-                    for t in tw
-                    for h in hw
-                    if len(h) >= 4
-                ):
+                    _same_word(h, t) for t in tw for h in hw if len(h) >= 4
+                ):  # ("Cookware" is no heading of COOK: a word, not a prefix)
                     if i not in seen:
                         seen.append(i)  # the heading itself: bullets below it list values
                     for j in range(i + 1, min(i + 6, len(units))):
@@ -785,6 +782,8 @@ class Builder:
                 continue
             if not any(u[:5] == w[:5] for u in uw for w in ws) or set(uw) & advice:
                 continue
+            if "clock" in uw and "clock" not in ws:
+                continue  # "any time from 1:00 to 12:59": the clock's day, not a duration
             consider(2 * bool(limits.search(unit.text)), unit.text, i)
         return (best[1], best[2]) if best else None
 
@@ -871,6 +870,17 @@ ASIDE_HEADING = re.compile(
     re.IGNORECASE,
 )
 EXAMPLE_RE = re.compile(r"^\s*(?:examples?|e\.\s?g\.|for (?:example|instance))\b", re.IGNORECASE)
+
+
+def _same_word(a: str, b: str) -> bool:
+    """The same word, or one word inflected ("timer"/"timers", "programme"/"programmes",
+    "temperature"/"temp"), not merely sharing a start ("cook"/"cookware")."""
+    short, long = sorted((a, b), key=len)
+    if long.startswith(short[:6]) and len(short) >= 6:
+        return True
+    rest = long[len(short) :] if long.startswith(short) else None
+    abbreviation = short in ("temp", "prog", "func", "prep")
+    return rest is not None and (rest in ("", "s", "es", "ing", "ed", "er", "ers") or abbreviation)
 
 
 def _header_row(units: list[Unit], i: int) -> bool:

@@ -89,6 +89,13 @@ def assign_amounts(
                 name, lab, ev if ev.ranges else Evidence(ranges=[], step=ev.step), cyclic=False
             )
             spec = b.variables[var]
+            guessed = spec.get("ranges") == [["00:01:00", "01:00:00", 60]]  # nothing read
+            if guessed and not ev.step and "cook" in words(name.replace("_", " ")):
+                # a cooking time typed on the keypad with no range read: minutes and seconds,
+                # as the number keys alone enter one
+                spec.update(type="time", ranges=[["00:00:00", "01:39:59", 1]], format="mm:ss")
+                spec.pop("unit", None)
+                b.note(f"variables.{var}", "a cooking time typed as minutes and seconds")
             _keypad_entry(spec)
             b.feature(
                 f"set_{var}", [{"actions": [key.name]}, {"actions": list(digits), "variable": var}]
