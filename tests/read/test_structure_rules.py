@@ -379,3 +379,25 @@ The clock runs on a 12-hour cycle, so any time from 1:00 to 12:59 can be entered
     assert not [p for p in check_model(model) if p.severity == "error"]
     cook = model.variables["time_cook"]
     assert cook.type == "time" and "00:02:30" in all_values(cook)  # not the clock's 1:00–12:59
+
+
+def test_a_range_in_a_column_of_advice_is_no_limit() -> None:
+    text = """# Countertop oven
+
+| Key | Use |
+|---|---|
+| TEMP | Enter a new temperature with the number keys. |
+
+| # | Function | Suggested use | Suggested °C |
+|---|---|---|---|
+| 1 | BAKE | Cakes, bread | 160–180 |
+| 2 | ROAST | Meat | 180–220 |
+
+## Technical data
+
+Rated voltage 220–240 V ~ 50 Hz · Temperature 40–230 °C · Capacity 12 L.
+"""
+    actions = ["press_temp"] + [f"press_{d}" for d in range(10)]
+    model = read_manual(text, actions).model
+    values = all_values(model.variables["temp"])
+    assert values[0] == 40 and values[-1] == 230

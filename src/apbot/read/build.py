@@ -197,7 +197,9 @@ class Builder:
                 if prio > best_prio:
                     best, best_prio, ev.values_at = items, prio, i
             ranges = [
-                r for r in find_ranges(text) if _fits(r.unit, tokens) and not _keypad(r, text)
+                r
+                for r in find_ranges(_without_advice(unit))
+                if _fits(r.unit, tokens) and not _keypad(r, text)
             ]
             if ev.keypad_at is None and _KEYPAD_WORDS.search(text):
                 ev.keypad_at = i
@@ -870,6 +872,21 @@ ASIDE_HEADING = re.compile(
     re.IGNORECASE,
 )
 EXAMPLE_RE = re.compile(r"^\s*(?:examples?|e\.\s?g\.|for (?:example|instance))\b", re.IGNORECASE)
+
+
+ADVICE_WORDS = frozenset({"suggested", "recommended", "typical", "advised", "usual", "ideal"})
+
+
+def _without_advice(unit: Unit) -> str:
+    """A unit's text without the cells of columns headed as advice ("Suggested °C": what suits
+    a food, not the limits of the setting)."""
+    if not unit.cells or len(unit.header) != len(unit.cells):
+        return unit.text
+    return " | ".join(
+        cell
+        for head, cell in zip(unit.header, unit.cells, strict=True)
+        if not set(words(head)) & ADVICE_WORDS
+    )
 
 
 def _same_word(a: str, b: str) -> bool:
