@@ -401,3 +401,19 @@ Rated voltage 220–240 V ~ 50 Hz · Temperature 40–230 °C · Capacity 12 L.
     model = read_manual(text, actions).model
     values = all_values(model.variables["temp"])
     assert values[0] == 40 and values[-1] == 230
+
+
+def test_a_list_of_times_written_h_mm_is_a_time_setting() -> None:
+    text = """# Bottle steriliser
+
+| Key | Use |
+|---|---|
+| DRYING | Each press moves to the next drying time. |
+
+Drying times you can choose: 0:00 (no drying) · 0:20 · 0:40 · 1:00 · 1:30 · 2:00.
+"""
+    model = read_manual(text, ["press_drying"]).model
+    drying = model.variables["drying"]
+    assert drying.type == "time"
+    assert all_values(drying) == ["00:00:00", "00:20:00", "00:40:00", "01:00:00", "01:30:00",
+                                  "02:00:00"]  # fmt: skip

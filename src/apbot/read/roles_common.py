@@ -144,7 +144,15 @@ def mentions_of(b: Builder, token: str) -> list[int]:
 
 
 def numeric_list(values: list[str]) -> bool:
-    return all(re.fullmatch(r"\d+(?:[.,]\d+)?\s*[a-z%°]*", v.strip().lower()) for v in values)
+    """Numbers ("20 30 40 60 90", "1.5 kg"), or times of a dial written h:mm ("0:20 · 0:40")."""
+    return all(
+        re.fullmatch(r"\d+(?:[.,]\d+)?\s*[a-z%°]*", v.strip().lower()) for v in values
+    ) or clock_list(values)
+
+
+def clock_list(values: list[str]) -> bool:
+    """Durations written h:mm, every one ("0:00, 0:20, 0:40, 1:00, 1:30, 2:00")."""
+    return len(values) >= 2 and all(re.fullmatch(r"\d{1,2}:[0-5]\d", v.strip()) for v in values)
 
 
 def stepped_noun(b: Builder, tokens: list[str], ev: Evidence | None = None) -> str:

@@ -9,7 +9,7 @@ from typing import Any
 
 from apbot.read.build import Builder, Evidence, _fits, _next_table_column
 from apbot.read.labels import words
-from apbot.read.roles_common import numeric_list, stepped_noun, token_of
+from apbot.read.roles_common import clock_list, numeric_list, stepped_noun, token_of
 from apbot.read.values import find_ranges, find_step
 
 LIST_WORDS = {"left", "right", "prev", "previous", "next", "forward"}
@@ -109,6 +109,11 @@ def list_evidence(ev: Evidence) -> Evidence:
 
     nums = _nums(ev.values or [])
     unit = unit_name(re.sub(r"[\d.,\s]", "", (ev.values or [""])[-1]))
+    if clock_list(ev.values or []):  # h:mm: in seconds
+        nums = sorted(
+            {int(h) * 3600 + int(m) * 60 for h, m in (v.split(":") for v in ev.values or [])}
+        )
+        unit = "s"
     pieces: list[Range] = []
     for lo, hi in itertools.pairwise(nums):
         gap = round(hi - lo, 6)
