@@ -13,8 +13,9 @@ import re
 from typing import Any
 
 from apbot.model.values import parse_hms
-from apbot.read.build import CHOICE_WORDS, Builder
+from apbot.read.build import Builder
 from apbot.read.labels import words
+from apbot.read.shapes import CHOICE_WORDS
 from apbot.read.text import Unit
 from apbot.read.values import find_ranges, number, unit_name
 
@@ -208,7 +209,7 @@ def _ranges_column(rows: list[Unit], column: int) -> bool:
 
 def _as_number(b: Builder, name: str, spec: dict[str, Any], rows: list[Unit], column: int) -> None:
     """Turn a read-as-discrete setting into the amount the table's ranges say it is."""
-    from apbot.read.build import Evidence
+    from apbot.read.shapes import Evidence
 
     found = [find_ranges(r.cells[column]) for r in rows if column < len(r.cells)]
     first = next(f[0] for f in found if f)

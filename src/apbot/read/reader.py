@@ -16,11 +16,12 @@ from pydantic import ValidationError
 from apbot.model.schema import ApplianceModel
 from apbot.model.validate import check_model
 from apbot.read.actions import ActionInfo, parse_actions
-from apbot.read.build import CHOICE_WORDS, Builder
+from apbot.read.build import Builder
 from apbot.read.cases import apply_cases, apply_resets
 from apbot.read.labels import find_labels
 from apbot.read.report import Note, Report
 from apbot.read.roles import assign
+from apbot.read.shapes import CHOICE_WORDS
 from apbot.read.text import parse_manual
 
 MAX_REPAIRS = 40

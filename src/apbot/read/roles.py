@@ -10,7 +10,7 @@ order and sorts the setting keys by what their sentences say.
 from __future__ import annotations
 
 from apbot.read.actions import ActionInfo
-from apbot.read.build import GENERIC_DIALS, Builder, Evidence, adjuster_direction
+from apbot.read.build import Builder
 from apbot.read.labels import words
 from apbot.read.roles_amounts import ADD_RE, assign_amounts, assign_dials, assign_leftovers
 from apbot.read.roles_common import (
@@ -26,6 +26,7 @@ from apbot.read.roles_common import (
 from apbot.read.roles_fixed import assign_locks, assign_power, assign_running
 from apbot.read.roles_lists import dial_values, list_evidence, numeric_list, pair_of_names
 from apbot.read.roles_pads import listed_groups, option_keys, pad_group, selecting_keys, shown_codes
+from apbot.read.shapes import GENERIC_DIALS, Evidence, adjuster_direction
 
 
 def assign(b: Builder) -> None:

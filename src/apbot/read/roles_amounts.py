@@ -7,7 +7,7 @@ import re
 from typing import Any
 
 from apbot.read.actions import ActionInfo
-from apbot.read.build import CHOICE_WORDS, Builder, Evidence
+from apbot.read.build import Builder
 from apbot.read.labels import words
 from apbot.read.roles_common import (
     NUMERIC_WORDS,
@@ -19,6 +19,7 @@ from apbot.read.roles_common import (
     var_name,
 )
 from apbot.read.roles_lists import dial_amount, dial_ends, dial_list, list_evidence
+from apbot.read.shapes import CHOICE_WORDS, Evidence
 
 ADD_RE = re.compile(r"^(add|plus|extra)_?(\d+)_?(s|sec|secs|seconds|m|min|mins|minutes)?$")
 

@@ -6,8 +6,9 @@ from __future__ import annotations
 import re
 
 from apbot.read.actions import ActionInfo
-from apbot.read.build import GROUP_NOUNS, SETTING_NOUNS, Builder, Evidence
+from apbot.read.build import Builder
 from apbot.read.labels import words
+from apbot.read.shapes import GROUP_NOUNS, SETTING_NOUNS, Evidence
 
 
 def label_of(b: Builder, token: str) -> str:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import re
 
 from apbot.read.actions import ActionInfo
-from apbot.read.build import RUNNING_RE, STOP_WORDS, Builder
+from apbot.read.build import Builder
 from apbot.read.labels import words
 from apbot.read.roles_common import (
     NUMERIC_WORDS,
@@ -14,6 +14,7 @@ from apbot.read.roles_common import (
     label_of,
     mentions_of,
 )
+from apbot.read.shapes import RUNNING_RE, STOP_WORDS
 from apbot.read.shown import LOCK_CUE, RUNNING_CUE, shown_words
 
 

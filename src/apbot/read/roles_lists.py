@@ -7,9 +7,10 @@ import itertools
 import re
 from typing import Any
 
-from apbot.read.build import Builder, Evidence, _fits, _next_table_column
+from apbot.read.build import Builder
 from apbot.read.labels import words
 from apbot.read.roles_common import clock_list, numeric_list, stepped_noun, token_of
+from apbot.read.shapes import Evidence, _fits, _next_table_column
 from apbot.read.values import find_ranges, find_step
 
 LIST_WORDS = {"left", "right", "prev", "previous", "next", "forward"}

@@ -6,8 +6,9 @@ from __future__ import annotations
 import re
 
 from apbot.read.actions import ActionInfo
-from apbot.read.build import GROUP_NOUNS, Builder
+from apbot.read.build import Builder
 from apbot.read.roles_common import first_mention, label_of, plain
+from apbot.read.shapes import GROUP_NOUNS
 from apbot.read.text import Unit
 
 

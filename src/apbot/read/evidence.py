@@ -1,0 +1,262 @@
+"""What the manual says about a control: values, ranges, steps, toggles, each with the unit
+it came from (the builder asks once per control and keeps the answer)."""
+
+from __future__ import annotations
+
+import itertools
+import re
+
+from apbot.read.evidence_lists import ListReader
+from apbot.read.labels import words
+from apbot.read.shapes import (
+    _KEYPAD_WORDS,
+    _TIMER_WORDS,
+    CHOICE_WORDS,
+    LAMP_LIST_RE,
+    Evidence,
+    _aside,
+    _cell_key,
+    _fits,
+    _header_row,
+    _keyish,
+    _keypad,
+    _numeric_items,
+    _quantity_unit,
+    _row_step,
+    _without,
+    _without_advice,
+)
+from apbot.read.values import (
+    EACH_PRESS_RE,
+    ON_OFF_RE,
+    Range,
+    anchored_lists,
+    bare_list,
+    find_bounds,
+    find_initial,
+    find_ranges,
+    find_step,
+)
+
+
+class EvidenceReader(ListReader):
+    """Evidence about controls: values, ranges, steps and toggles, with where each was read."""
+
+    _evidence: dict[tuple[str, ...], Evidence]
+
+    def evidence(self, tokens: list[str]) -> Evidence:
+        """What the manual says about the controls (cached: roles ask more than once)."""
+        key = tuple(tokens)
+        if key not in self._evidence:
+            self._evidence[key] = self._read_evidence(tokens)
+        return self._evidence[key]
+
+    def _read_evidence(self, tokens: list[str]) -> Evidence:
+        ev = Evidence()
+        units = self.manual.units
+        others = {
+            lab.text.lower() for t, lab in self.labels.items() if t not in tokens and lab.line
+        }
+        own = {self.labels[t].text.upper() for t in tokens if t in self.labels}
+        mentions = {i for t in tokens if t in self.labels for i in self.labels[t].mentions}
+        best: list[str] | None = None
+        best_prio = 0.0
+        elsewhere = {i for t, lab in self.labels.items() if t not in tokens for i in lab.mentions}
+        other_labels = [
+            lab.text
+            for t, lab in self.labels.items()
+            if t not in tokens and lab.text and lab.text.upper() == lab.text
+        ]
+        other_keys = {_cell_key(lab) for lab in other_labels} - {_cell_key(o) for o in own}
+        for i in self.context(tokens):
+            text = units[i].text
+            unit = units[i]
+            if i in elsewhere and i not in mentions and not unit.cells:
+                continue  # a sentence about another key says nothing about this one
+            if unit.cells and i not in mentions and _cell_key(unit.cells[0]) in other_keys:
+                continue  # a key table's row about another key ("| SIZE | S, M or L |")
+            if unit.cells and unit.header and unit.cells[0].upper() in own:
+                head = unit.header[0].lower()
+                if not re.search(r"key|button|control|pad|dial|knob|symbol|name", head):
+                    continue  # a row describing the value the key names, not the key's setting
+            quiet = _aside(units, i) or _header_row(units, i)
+            lists = [] if quiet else self._lists(i, i in mentions, tokens)
+            for items, prio in lists:
+                if _keyish(items, others, own):
+                    continue  # a list of keys ("DELAY, then + / −"), not of values
+                lamps = LAMP_LIST_RE.match(text)
+                if lamps and not set(words(lamps.group(0))) & {
+                    w for t in tokens for w in words(t.replace("_", " "))
+                }:
+                    continue  # "Lamps (top row): FAN HI, FAN LO, 2H…": what lights, not values
+                    # ("Mode lamps: NORMAL CONT. …" are the mode key's values)
+                if _numeric_items(items) and len(items) < 3:
+                    continue
+                if prio > best_prio:
+                    best, best_prio, ev.values_at = items, prio, i
+            ranges = [
+                r
+                for r in find_ranges(_without_advice(unit))
+                if _fits(r.unit, tokens) and not _keypad(r, text)
+            ]
+            if ev.keypad_at is None and _KEYPAD_WORDS.search(text):
+                ev.keypad_at = i
+            if ranges and unit.cells and len(ranges) == 1 and ranges[0].step is None:
+                row_step = _row_step(unit.cells, ranges[0].unit)
+                if row_step:
+                    ranges = [Range(ranges[0].low, ranges[0].high, ranges[0].unit, row_step)]
+            if ranges and not ev.ranges:
+                # "one minute per click up to one hour, and in coarser steps after that, up to
+                # 3 hours": the same range told twice, the wider is the whole of it
+                same = [r for r in ranges if r.low == ranges[0].low and r.unit == ranges[0].unit]
+                ev.ranges, ev.range_at = [max(same, key=lambda r: r.high)], i
+            elif ranges and ev.ranges and ranges[0].unit == ev.ranges[-1].unit:
+                last = ev.ranges[-1]
+                if abs(ranges[0].low - last.high) < 1e-9 and ranges[0].high > last.high:
+                    ev.ranges.append(ranges[0])  # the next piece of a piecewise range
+            if ev.step is None:
+                step = find_step(text)
+                if step:
+                    ev.step, ev.step_at = step, i
+            if (
+                ev.toggle_at is None
+                and ON_OFF_RE.search(_without(text, other_labels))
+                and not self._two_key_hold(text, tokens)
+            ):
+                ev.toggle_at = i  # (another key's name, ON/OFF in a panel drawing, is no toggle)
+            if ev.each_press_at is None and EACH_PRESS_RE.search(text):
+                ev.each_press_at = i
+            if ev.initial is None:
+                init = find_initial(text)
+                if init:
+                    ev.initial, ev.initial_at = init, i
+        if not ev.ranges:
+            for i in sorted(self.context(tokens)):  # the sentences that follow say the rest
+                bounds = find_bounds([u.text for u in units[i : i + 4]])
+                if bounds and _fits(bounds.unit, tokens):
+                    if not bounds.step:  # the longest setting alone: if nothing better is read
+                        ev.longest = ev.longest or (bounds, i)
+                        continue
+                    ev.ranges, ev.range_at = [bounds], i
+                    ev.step = ev.step or (bounds.step, bounds.unit)
+                    break
+        own_words = {w for t in tokens for w in words(t.replace("_", " ")) if len(w) >= 3}
+        if best_prio < 2.0 and own_words:  # "Mode lamps (left to right): NORMAL CONT. FAN"
+            for i, unit in enumerate(units):
+                lamps = LAMP_LIST_RE.match(unit.text)
+                if lamps and set(words(lamps.group(0))) & own_words:
+                    rest = unit.text[lamps.end() :]
+                    for after in units[i + 1 : i + 8]:  # "CONT." ended a "sentence" mid-line
+                        if after.line != unit.line:
+                            break
+                        rest += "   " + after.text
+                    found = bare_list(rest)
+                    if found:
+                        best, best_prio, ev.values_at = found, 2.0, i
+                        break
+        if best_prio < 1.85:  # "Drying-time settings available: 10 · 20 · 30 · 60 min."
+            for i, unit in enumerate(units):
+                led = None if _aside(units, i) else self._led_list(unit, tokens)
+                if led and not _keyish(led, others, own):
+                    best, best_prio, ev.values_at = led, 1.85, i
+                    break
+        if best_prio < 1.8:  # lists tied to the setting's own word anywhere in the manual
+            for t in tokens:
+                for w in [x for x in words(t.replace("_", " ")) if len(x) >= 4][:1]:
+                    for i, unit in enumerate(units):
+                        anchored = [] if _aside(units, i) else anchored_lists(unit.text, w)
+                        if anchored and _keyish(anchored[0], others, own):
+                            continue
+                        if anchored and best_prio < 1.8:
+                            best, best_prio, ev.values_at = anchored[0], 1.8, i
+        for t in tokens:
+            label = self.labels[t].text if t in self.labels else ""
+            if not label or best_prio >= 2.5 or not re.search(r"[A-Z]", label):
+                continue
+            printed = re.fullmatch(r"([A-Z][A-Z ]*?)\s+([A-Z0-9]{1,6}(?:/[A-Z0-9]{1,6})+)", label)
+            if printed and t in self.labels and self.labels[t].line is not None:
+                # the key's printed name carries its values: "FAN HI/LO"
+                best, best_prio = printed.group(2).split("/"), 2.5
+                ev.values_at = self.labels[t].mentions[0] if self.labels[t].mentions else None
+                continue
+            pattern = re.compile(
+                rf"\b{re.escape(label)}\s+([A-Z0-9]{{1,6}}(?:/[A-Z0-9]{{1,6}})+)\b"
+            )
+            for i, unit in enumerate(units):
+                m = pattern.search(unit.text)
+                if m:  # "FAN HI/LO": the panel prints the values next to the name
+                    best, best_prio, ev.values_at = m.group(1).split("/"), 2.5, i
+                    break
+        choice = bool({w for t in tokens for w in words(t.replace("_", " "))} & CHOICE_WORDS)
+        if best is None or (_numeric_items(best) and (len(best) < 3 or choice)):
+            # two numbers are a range, not a list; a programme key's list is of names
+            column = self._table_column(tokens)
+            if column:
+                best, ev.values_at = column, self._table_at
+            elif best is not None and len(best) < 3:
+                best = None
+        if best is None and not ev.ranges:
+            runs = self._unit_runs(tokens)
+            if runs is not None:  # the settings one by one: pieces of equal steps
+                amounts, at = runs
+                symbol = next(q for q in (_quantity_unit(t) for t in tokens) if q)
+                for lo, hi in itertools.pairwise(amounts):
+                    gap = round(hi - lo, 6)
+                    if ev.ranges and ev.ranges[-1].step == gap:
+                        ev.ranges[-1] = Range(ev.ranges[-1].low, hi, symbol, gap)
+                    else:
+                        ev.ranges.append(Range(lo, hi, symbol, gap))
+                ev.range_at = at
+        if best is not None:
+            ev.values = best if _numeric_items(best) else [v.lower() for v in best]
+            self._initial_from_values(ev, tokens)
+        return ev
+
+    def _range_anywhere(self, name: str, label: str) -> tuple[Range, int] | None:
+        """The first range in a sentence or table row naming the setting anywhere (a
+        specifications table: "| Set temperature range | 40–100 °C |", a programme table's
+        time column), its unit fitting the setting; advice ("suggested") is not a limit."""
+        ws = {w for w in words(name.replace("_", " ")) + words(label) if len(w) >= 4}
+        if not ws or not _quantity_unit(name):
+            return None
+        if label and label.upper() == label and ws & (_TIMER_WORDS | {"time"}):
+            # what the key's own sentences call its time ("TIMER  Push to set the Delay
+            # Start timer"): a specification may name only that ("Delay start: up to 15 h")
+            ws |= {
+                w
+                for u in self.manual.units
+                if re.search(rf"\b{re.escape(label)}\b", u.text)
+                for w in words(u.text)
+                if w in _TIMER_WORDS
+            }
+        advice = {"suggested", "recommended", "typical", "advised", "usual", "ideal"}
+        limits = re.compile(r"\brange\b|\badjustable\b|\bcan be set\b|\bsettable\b|\bbetween\b")
+        best: tuple[int, Range, int] | None = None
+
+        def consider(score: int, text: str, i: int) -> None:
+            nonlocal best
+            for r in find_ranges(text):
+                if r.unit and _fits(r.unit, [name]) and r.high > r.low:
+                    if best is None or score > best[0]:
+                        best = (score, r, i)
+                    return
+
+        for i, unit in enumerate(self.manual.units):
+            uw = words(unit.text)
+            if unit.cells and unit.header and len(unit.header) == len(unit.cells):
+                # a table row: the setting is named by the column's header
+                for head, cell in zip(unit.header, unit.cells, strict=True):
+                    hw = words(head)
+                    if set(hw) & advice or not any(h[:5] == w[:5] for h in hw for w in ws):
+                        continue
+                    consider(1 + 2 * bool(limits.search(head)), cell, i)
+                first = words(unit.cells[0])
+                if any(u[:5] == w[:5] for u in first for w in ws) and not set(first) & advice:
+                    consider(1 + 2 * bool(limits.search(unit.cells[0])), unit.text, i)
+                continue
+            if not any(u[:5] == w[:5] for u in uw for w in ws) or set(uw) & advice:
+                continue
+            if "clock" in uw and "clock" not in ws:
+                continue  # "any time from 1:00 to 12:59": the clock's day, not a duration
+            consider(2 * bool(limits.search(unit.text)), unit.text, i)
+        return (best[1], best[2]) if best else None

@@ -1,0 +1,330 @@
+"""Where a control's values are written: its context (the units naming it and what follows),
+and the lists, legends, table columns and runs of numbers in them, each with a priority."""
+
+from __future__ import annotations
+
+import re
+
+from apbot.read.actions import ActionInfo
+from apbot.read.labels import Label, words
+from apbot.read.shapes import (
+    ORDER_RE,
+    QUANTITY_FAMILIES,
+    RUN_RE,
+    Evidence,
+    _all_names,
+    _aside,
+    _bullet_items,
+    _next_table_column,
+    _quantity_column,
+    _quantity_unit,
+    _same_word,
+)
+from apbot.read.text import Manual, Unit
+from apbot.read.values import (
+    bare_list,
+    caps_run,
+    cell_list,
+    find_list,
+    find_number_run,
+    quantity_run,
+)
+
+
+class ListReader:
+    """The manual's units about the controls, and the value lists they hold."""
+
+    manual: Manual
+    infos: list[ActionInfo]
+    labels: dict[str, Label]
+
+    def context(self, tokens: list[str]) -> list[int]:
+        """Units mentioning the controls, each followed by the next two of its section (and a
+        table the sentence points to)."""
+        seen: list[int] = []
+        units = self.manual.units
+        for token in tokens:
+            for i in self.labels[token].mentions:
+                for j in range(i, min(i + 3, len(units))):
+                    if j > i and (
+                        units[j].heading != units[i].heading or units[j].text == units[j].heading
+                    ):
+                        break
+                    if j not in seen:
+                        seen.append(j)
+                    if re.search(r"\btable\b", units[j].text, re.I):
+                        k = j + 1
+                        while k < len(units) and not units[k].cells and k < j + 3:
+                            k += 1
+                        while k < len(units) and units[k].cells:
+                            if k not in seen:
+                                seen.append(k)
+                            k += 1
+        for token in tokens:
+            tw = [w for w in words(token.replace("_", " ")) if len(w) >= 4]
+            for i, unit in enumerate(units):
+                if unit.text != unit.heading or not tw:
+                    continue
+                hw = words(unit.heading)
+                if any(
+                    _same_word(h, t) for t in tw for h in hw if len(h) >= 4
+                ):  # ("Cookware" is no heading of COOK: a word, not a prefix)
+                    if i not in seen:
+                        seen.append(i)  # the heading itself: bullets below it list values
+                    for j in range(i + 1, min(i + 6, len(units))):
+                        if units[j].heading != unit.heading:
+                            break
+                        if j not in seen:
+                            seen.append(j)
+        return seen
+
+    def _two_key_hold(self, text: str, tokens: list[str]) -> bool:
+        """Whether a sentence tells of holding two keys together, one of them this one, when
+        the panel has that two-key hold ("press and hold SPIN and STEAM for 3 seconds: CL
+        appears; hold them again to switch it off"): its on/off is the hold's, not the key's."""
+        if len(tokens) != 1 or not re.search(r"\bhold", text, re.IGNORECASE):
+            return False
+        for info in self.infos:
+            if len(info.controls) > 1 and tokens[0] in info.controls:
+                names = [self.labels[c].text for c in info.controls if c in self.labels]
+                if len(names) == len(info.controls) and all(n and n in text for n in names):
+                    return True
+        return False
+
+    def _unit_runs(self, tokens: list[str]) -> tuple[list[float], int] | None:
+        """For a quantity (watts, volume, weight, spin) of which nothing else is read: the
+        numbers a table headed by its unit lists in runs joined by middle dots ("Output
+        settings (W) … 500 · 600 · 700 … 1500 100 W Medium 1600 · 1700 …"), all runs of that
+        table together, in order."""
+        unit = next((u for u in (_quantity_unit(t) for t in tokens) if u in QUANTITY_FAMILIES), "")
+        if not unit:
+            return None
+        family = "|".join(re.escape(u) for u in sorted(QUANTITY_FAMILIES[unit], key=len))
+        headed = re.compile(rf"\((?:{family})\)", re.IGNORECASE)
+        units = self.manual.units
+        for i, u in enumerate(units):
+            if u.header or _aside(units, i) or not headed.search(u.text):
+                continue
+            table = [u]
+            for row in units[i + 1 :]:  # a header row: its rows too
+                if not u.cells or row.header != u.cells:
+                    break
+                table.append(row)
+            numbers: list[float] = []
+            text = " ".join(row.text for row in table)  # a run may go on in the next row
+            for run in RUN_RE.finditer(text):
+                numbers += [float(x.replace(",", ".")) for x in re.split(r"\s*[·•|]\s*", run[0])]
+            values = sorted(set(numbers))
+            if len(values) >= 3:
+                return values, i
+        return None
+
+    def _lists(self, i: int, mention: bool, tokens: list[str]) -> list[tuple[list[str], float]]:
+        """Candidate value lists at unit ``i`` with a priority (arrows beat prose, prose in the
+        sentence naming the key beats prose nearby, a table the sentence introduces...)."""
+        units = self.manual.units
+        unit = units[i]
+        text = unit.text
+        out: list[tuple[list[str], float]] = []
+        found = find_list(text)
+        if found:
+            out.append((found[0], 3.0 if found[1] == "arrows" else 2.0 if mention else 1.0))
+        else:
+            own = {self.labels[t].text.upper() for t in tokens if t in self.labels}
+            keys = {lab.text.upper() for lab in self.labels.values() if lab.text}
+            span = self._own_span(text, tokens) if mention else text
+            run = caps_run(span, own | keys)
+            if run and (mention or len(run) >= 4):
+                out.append((run, 1.9 if mention else 1.6))
+            amounts = quantity_run(span) if mention else None
+            if amounts:
+                out.append((amounts, 1.9))
+        legend = self._legend_cells(unit, tokens)
+        if legend is not None:  # the panel's printing: only the cells beside the own name
+            return [(legend, 2.4)] if legend and mention else []
+        run = None
+        for span in self._own_spans(text, tokens) if mention else [text]:
+            run = find_number_run(span)  # "°C and RPM stop. °C is marked 20 30 40; RPM is …"
+            if run:
+                break
+        if run:
+            out.append((run, 2.2 if mention else 1.2))
+        if text.rstrip().endswith(":") and i + 1 < len(units) and not units[i + 1].cells:
+            after = bare_list(units[i + 1].text)  # "Printed round the knob:" then the marks
+            # a long line is a list only when it is all short names ("OFF · Cottons · Eco …")
+            if after and (len(units[i + 1].text) <= 120 or _all_names(after, units[i + 1].text)):
+                out.append((after, 2.6))
+        if ORDER_RE.search(text) and not text.rstrip().endswith((":", "order")):
+            # "arranged round the knob in this order, clockwise." and the table a line or two on
+            for k in range(i + 1, min(i + 4, len(units))):
+                if units[k].cells:
+                    column = _next_table_column(units, k - 1, self._own_column(k - 1, tokens))
+                    if column and (mention or self._header_names(k - 1, tokens)):
+                        out.append((column, 2.5))
+                    break
+        if text.rstrip().endswith((":", "order")) or text == unit.heading:
+            bullets = _bullet_items(units, i, lead=2 if text == unit.heading else 0)
+            if bullets:
+                out.append((bullets, 1.5))
+            index = self._own_column(i, tokens)
+            column = _next_table_column(units, i, index) or (
+                [] if index else _quantity_column(units, i)
+            )
+            if column:
+                # a heading that only shares a word with the key ("Recipe: basic white loaf"
+                # for LOAF) introduces a table about something else unless its header says so
+                related = mention or text != unit.heading or self._header_names(i, tokens)
+                out.append((column, 2.5 if related else 1.2))
+        return out
+
+    def _legend_cells(self, unit: Unit, tokens: list[str]) -> list[str] | None:
+        """A line of the panel's printing laid out with wide spaces ("PROGRAM   OFF   AUTO   UV
+        DRY   STORE     TIME  - / +     START"): the cells after the control's own name, up
+        to the next control's name, are the positions printed beside it (empty: none). None
+        when the unit is no such line."""
+        if unit.cells and unit.header:
+            return None  # a table's row, not its first line
+        parts = unit.cells or tuple(re.split(r"\s{2,}|\t", unit.text.strip()))
+        cells = [c.strip(" *[]") for c in parts]
+        if len(cells) < 4 or any(len(c) > 20 or c != c.upper() for c in cells):
+            return None
+        own = {self.labels[t].text.upper() for t in tokens if t in self.labels}
+        keys = {lab.text.upper() for lab in self.labels.values() if lab.text}
+        keys |= {t.upper().replace("_", " ") for t in self.labels}  # "HOURS" for HOURS knob
+        if sum(c.upper() in keys for c in cells) < 2:
+            return None
+        for k, cell in enumerate(cells):
+            if cell.upper() not in own:
+                continue
+            items: list[str] = []
+            for after in cells[k + 1 :]:
+                if after.upper() in keys or not re.search(r"[A-Z0-9]", after):
+                    break
+                items.append(after)
+            if len(items) >= 3:
+                return items
+        return []
+
+    def _led_list(self, unit: Unit, tokens: list[str]) -> list[str] | None:
+        """A list after a colon in a sentence that starts by naming the setting ("Drying-time
+        settings available: …" for DRY TIME, "Timer steps: …" for TIMER), or in the next cell
+        of a table row that does (a specifications table: "| Water levels | 22, 26 … 58 L |")."""
+        if len(unit.cells) >= 2:
+            if not self._names_setting(words(unit.cells[0]), tokens):
+                return None
+            items = cell_list(unit.cells[1])
+            return items if items and len(items) >= 3 else None
+        m = re.match(r"\s*([^:.;]{3,50}):\s*(.+)", unit.text)
+        if not m or not self._names_setting(words(m.group(1)), tokens):
+            return None
+        found = find_list(unit.text)
+        items = found[0] if found else bare_list(m.group(2))
+        return items if items and len(items) >= 3 else None
+
+    def _names_setting(self, lead: list[str], tokens: list[str]) -> bool:
+        """Whether words start by naming the control's setting (by its action word or its printed
+        label; "Water levels" names WATER LEVEL)."""
+        names = [words(t.replace("_", " ")) for t in tokens]
+        names += [words(self.labels[t].text) for t in tokens if t in self.labels]
+        return any(
+            name
+            and len(name) <= len(lead)
+            and all(lw.startswith(nw) and len(nw) >= 3 for nw, lw in zip(name, lead, strict=False))
+            for name in names
+        )
+
+    def _own_spans(self, text: str, tokens: list[str]) -> list[str]:
+        """:meth:`_own_span` from each place the key's label stands in the sentence."""
+        own = [self.labels[t].text for t in tokens if t in self.labels and self.labels[t].text]
+        starts = sorted({m.start() for lab in own for m in re.finditer(re.escape(lab), text)})
+        if len(starts) <= 1:
+            return [self._own_span(text, tokens)]
+        return [self._own_span(text[k:], tokens) for k in starts]
+
+    def _own_span(self, text: str, tokens: list[str]) -> str:
+        """The part of a sentence about the key: from its label to the next other key's label
+        ("below TEMP. a row printed 20 30 40, and below SPIN a row printed 400 800")."""
+        own = [self.labels[t].text for t in tokens if t in self.labels and self.labels[t].text]
+        starts = [text.find(lab) for lab in own if lab and text.find(lab) >= 0]
+        if not starts:
+            return text
+        start = min(starts)
+        others = [
+            lab.text
+            for t, lab in self.labels.items()
+            if t not in tokens
+            and lab.text
+            and lab.text not in own
+            and not any(lab.text in o for o in own)
+        ]
+        end = len(text)
+        for lab in others:
+            k = text.find(lab, start + 1)
+            if k > start:
+                end = min(end, k)
+        return text[start:end]
+
+    def _own_column(self, i: int, tokens: list[str]) -> int:
+        """Which column of the table after unit ``i`` is the key's: one headed by the key's
+        printed name when the header is a row of key names ("| TEMP. | SPIN | SOIL |"), else
+        the first."""
+        units = self.manual.units
+        k = i + 1
+        if k >= len(units) or not units[k].cells or units[k].header:
+            return 0
+        header = [c.strip(" *.").upper() for c in units[k].cells]
+        keys = {lab.text.strip(" .").upper() for lab in self.labels.values() if lab.text}
+        own = {self.labels[t].text.strip(" .").upper() for t in tokens if t in self.labels}
+        if len(header) >= 2 and sum(h in keys for h in header) >= 2:
+            for index, cell in enumerate(header):
+                if cell in own:
+                    return index
+        return 0
+
+    def _header_names(self, i: int, tokens: list[str]) -> bool:
+        """Whether the header of the table after unit ``i`` names the key's word."""
+        units = self.manual.units
+        k = i + 1
+        if k >= len(units) or not units[k].cells:
+            return False
+        header = units[k].header or units[k].cells
+        tw = {w[:5] for t in tokens for w in words(t.replace("_", " ")) if len(w) >= 3}
+        if any(t in self.labels for t in tokens):
+            tw |= {w[:5] for t in tokens if t in self.labels for w in words(self.labels[t].text)}
+        return any(w[:5] in tw for cell in header for w in words(cell) if len(w) >= 3)
+
+    _table_at: int | None = None
+
+    def _table_column(self, tokens: list[str]) -> list[str] | None:
+        """The first column of a table headed by the control's own word (a programme table)."""
+        tw = {w for t in tokens for w in words(t.replace("_", " ")) if len(w) >= 4}
+        tw |= {
+            w for t in tokens if t in self.labels for w in words(self.labels[t].text) if len(w) >= 4
+        }
+        if not tw:
+            return None
+        units = self.manual.units
+        for i, unit in enumerate(units):
+            if unit.cells and not unit.header:  # a header row
+                hw = words(unit.cells[0])
+                if hw and any(h[:6] == w[:6] for h in hw for w in tw):
+                    column = _next_table_column(units, i - 1)
+                    if column:
+                        self._table_at = i
+                        return column
+        return None
+
+    def _initial_from_values(self, ev: Evidence, tokens: list[str]) -> None:
+        if ev.initial is not None or not ev.values:
+            return
+        for i in self.context(tokens):
+            m = re.search(
+                r"\b(?:starts?|default|factory|initially|normally)\b(.*)",
+                self.manual.units[i].text,
+                re.I,
+            )
+            if m:
+                for v in ev.values:
+                    if re.search(rf"\b{re.escape(v)}\b", m.group(1), re.I):
+                        ev.initial, ev.initial_at = v, i
+                        return

@@ -1,0 +1,388 @@
+"""Shapes a manual's units take that the reader looks for: the words of roles and settings,
+what evidence about a control holds, and small tests on units (a keypad range, a column of
+advice, a section that only mentions values, a unit family, a table column, bullets)."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from typing import Any
+
+from apbot.read.actions import ActionInfo
+from apbot.read.labels import words
+from apbot.read.text import Unit
+from apbot.read.values import (
+    Range,
+    find_ranges,
+    find_step,
+)
+
+LAMP_LIST_RE = re.compile(
+    r"^\W*(?:the\s+)?(?:\w+\s+){0,2}(?:lamps?|indicators?|symbols?|icons?|LEDs?|lights)\b"
+    r"(?:\s*\([^)]*\))?\s*:",
+    re.IGNORECASE,
+)
+UP_WORDS = {"up", "plus", "more", "increase", "inc", "higher", "add", "right", "next", "forward"}
+DOWN_WORDS = {"down", "minus", "less", "decrease", "dec", "lower", "left", "prev", "previous"}
+POWER_TOKENS = {"power", "on_off", "onoff", "on", "power_on_off", "standby"}
+STOP_WORDS = {"stop", "cancel", "clear", "reset", "off", "end"}
+GENERIC_DIALS = {"dial", "knob", "select", "selector", "jog", "wheel", "control"}
+SETTING_NOUNS = (
+    "temperature", "humidity", "timer", "time", "delay", "level", "power", "speed", "volume",
+    "weight", "programme", "program", "mode", "setting", "heat", "strength", "size",
+)  # fmt: skip
+CHOICE_WORDS = {"programme", "program", "menu", "mode", "function", "cycle", "course", "dial",
+                "knob", "selector", "select"}  # fmt: skip
+GROUP_NOUNS = ("programme", "program", "menu", "mode", "function", "cycle", "course", "preset")
+RUNNING_RE = re.compile(
+    r"\b(?:while|during|when)\b[^.]*\b(?:running|cooking|operat\w*|works?|working|heating|"
+    r"washing|in progress|runs)\b[^.]*\b(?:only|ignored|not respond|do not work|disabled|no effect"
+    r"|locked|inactive)\b|\bonly\b[^.]*\bwork\w*\b[^.]*\bwhile\b",
+    re.IGNORECASE,
+)
+
+
+ORDER_RE = re.compile(r"\bin (?:this|the following|that) order\b", re.I)
+
+
+@dataclass
+class Evidence:
+    values: list[str] | None = None
+    values_at: int | None = None
+    ranges: list[Range] = field(default_factory=list)
+    range_at: int | None = None
+    step: tuple[float, str] | None = None
+    step_at: int | None = None
+    toggle_at: int | None = None
+    each_press_at: int | None = None
+    initial: Any = None
+    initial_at: int | None = None
+    keypad_at: int | None = None  # a sentence of its context speaks of the number keys
+    longest: tuple[Range, int] | None = None  # "the longest setting is 13 hours", alone
+
+
+_TIMER_WORDS = frozenset({"timer", "delay", "preset", "reserve", "finish"})
+
+
+def _all_names(items: list[str], text: str) -> bool:
+    """Five or more short names that make up the whole line."""
+    covered = sum(len(v) for v in items)
+    return len(items) >= 5 and max(map(len, items)) <= 24 and covered >= 0.7 * len(text)
+
+
+def _keyish(items: list[str], others: set[str], own: set[str]) -> bool:
+    """A list naming two or more keys (other keys, the key itself, symbols such as + and −)."""
+    named = sum(
+        v.lower() in others or v.upper() in own or not re.search(r"[^\W_]", v) for v in items
+    )
+    return named >= 2
+
+
+def _without(text: str, labels: list[str]) -> str:
+    """The text with these key names (printed in capitals) taken out."""
+    for label in labels:
+        if re.search(r"[A-Z]", label):
+            text = text.replace(label, " ")
+    return text
+
+
+_KEYPAD_WORDS = re.compile(r"\b(?:numbers?|numeric|digits?|keypad|numerals?)\b", re.IGNORECASE)
+
+
+def _cell_key(cell: str) -> str:
+    """A table cell as a key's printed name compares (no markup, case or end dots)."""
+    return re.sub(r"[*_`]+", "", cell).strip(" .:").upper()
+
+
+def _keypad(r: Range, text: str) -> bool:
+    """ "0 – 9: number keys" (or "keys 0-9", "0–9 buttons") names the keypad, not a setting's
+    range."""
+    if r.unit or r.low != 0 or r.high != 9:
+        return False
+    return bool(
+        _KEYPAD_WORDS.search(text)
+        or re.search(r"\b(?:keys|buttons|pads)\s+0\s*(?:-|–|—|to)\s*9\b", text, re.I)
+        or re.search(r"\b0\s*(?:-|–|—|to)\s*9\s+(?:keys|buttons|pads)\b", text, re.I)
+    )
+
+
+def _numeric_items(items: list[str]) -> bool:
+    """Every item is a number, perhaps with a short unit ("40", "35 %", "2h")."""
+    return bool(items) and all(
+        re.fullmatch(r"\s*\d+(?:[.,]\d+)?\s*(?:[^\s\d]{0,4}|[A-Za-z]{1,8})\s*", i) for i in items
+    )
+
+
+def _row_step(cells: tuple[str, ...], unit: str) -> float | None:
+    """A table row's step: a cell that is one quantity ("half an hour", "5 min", "1 h")."""
+    from apbot.model.values import parse_quantity
+
+    for cell in cells[1:]:
+        if find_ranges(cell):
+            continue
+        step = find_step(cell)
+        if step:
+            return step[0]
+        q = parse_quantity(cell.strip().lower().replace("an hour", "1 hour"))
+        if q and q[1] == "time" and q[0] > 0:
+            base = {"s": 1, "min": 60, "h": 3600}.get(unit, 0)
+            return q[0] / base if base else None
+    return None
+
+
+RUN_RE = re.compile(r"\d+(?:[.,]\d+)?(?:\s*[·•]\s*(?:\|\s*)?\d+(?:[.,]\d+)?){2,}")
+ASIDE_HEADING = re.compile(
+    r"\b(?:safety|safeguards?|warnings?|cautions?|precautions?|trouble-?\s?shooting|faults?"
+    r"|fault finding|problems?|error codes?|cleaning|care|maintenance|warranty|guarantee"
+    r"|disposal|customer)\b",
+    re.IGNORECASE,
+)
+EXAMPLE_RE = re.compile(r"^\s*(?:examples?|e\.\s?g\.|for (?:example|instance))\b", re.IGNORECASE)
+
+
+ADVICE_WORDS = frozenset({"suggested", "recommended", "typical", "advised", "usual", "ideal"})
+
+
+def _without_advice(unit: Unit) -> str:
+    """A unit's text without the cells of columns headed as advice ("Suggested °C": what suits
+    a food, not the limits of the setting)."""
+    if not unit.cells or len(unit.header) != len(unit.cells):
+        return unit.text
+    return " | ".join(
+        cell
+        for head, cell in zip(unit.header, unit.cells, strict=True)
+        if not set(words(head)) & ADVICE_WORDS
+    )
+
+
+def _same_word(a: str, b: str) -> bool:
+    """The same word, or one word inflected ("timer"/"timers", "programme"/"programmes",
+    "temperature"/"temp"), not merely sharing a start ("cook"/"cookware")."""
+    short, long = sorted((a, b), key=len)
+    if long.startswith(short[:6]) and len(short) >= 6:
+        return True
+    rest = long[len(short) :] if long.startswith(short) else None
+    abbreviation = short in ("temp", "prog", "func", "prep")
+    return rest is not None and (rest in ("", "s", "es", "ing", "ed", "er", "ers") or abbreviation)
+
+
+def _header_row(units: list[Unit], i: int) -> bool:
+    """A table's header row (rows follow under it): the names of its columns, not values."""
+    unit = units[i]
+    return (
+        bool(unit.cells)
+        and not unit.header
+        and i + 1 < len(units)
+        and units[i + 1].header == unit.cells
+        and sum(c.upper() == c for c in unit.cells) < len(unit.cells)  # not a row of key names
+        and all(len(c) <= 24 for c in unit.cells)  # not two columns of prose side by side
+    )
+
+
+def _aside(units: list[Unit], i: int) -> bool:
+    """A unit that names values in passing, never a setting's list of them: a worked example
+    ("Example: it is 9 pm. You choose BASIC, 2.0 LB."), or a sentence under a safety,
+    troubleshooting, care or warranty heading ("Select UV, DRY or STORE" as a remedy). Ranges
+    are still read there."""
+    unit = units[i]
+    if EXAMPLE_RE.match(unit.text):
+        return True
+    before = units[i - 1] if i else None
+    if (
+        before is not None
+        and EXAMPLE_RE.match(before.text)
+        and not unit.bullet
+        and not unit.cells
+        and unit.line - before.line <= 1
+    ):
+        return True  # the example's next sentence
+    return bool(unit.heading) and bool(ASIDE_HEADING.search(unit.heading))
+
+
+def _fits(unit: str, tokens: list[str]) -> bool:
+    """A range's unit can belong to the control: no minutes for a temperature, no degrees for a
+    timer, no watts for a volume (the sentence after a key often gives a neighbouring
+    setting's range)."""
+    expected = {_quantity_unit(t) for t in tokens} - {""}
+    if not expected or not unit:
+        return True
+    timeish = {"s", "min", "h"}
+    if expected & {"°C"}:
+        return unit in ("°C", "°F", "")
+    if expected & {"min"}:
+        return unit in timeish
+    if expected & {"%"}:
+        return unit == "%"
+    for canonical, family in QUANTITY_FAMILIES.items():
+        if canonical in expected:
+            return unit in family
+    return True
+
+
+def _next_table_column(units: list[Unit], i: int, column: int = 0) -> list[str]:
+    """The cells of one column (the first by default) of the table that starts right after
+    unit ``i`` (header skipped)."""
+    k = i + 1
+    if k < len(units) and units[k].cells and not units[k].header:
+        k += 1  # the header row
+    items: list[str] = []
+    numbers = 0
+    while k < len(units) and units[k].cells and units[k].header:
+        if column >= len(units[k].cells):
+            k += 1
+            continue
+        cell = re.sub(r"^\s*\d{1,2}[.)]?\s+(?=\D)", "", units[k].cells[column]).strip(" *")
+        if find_ranges(cell) or not re.search(r"[A-Za-z]", cell):
+            numbers += 1
+        if cell and len(cell) <= 24 and cell not in items:
+            items.append(cell)
+        k += 1
+    if numbers * 2 > len(items):
+        return []  # a column of ranges or bare numbers is not a list of names
+    return items if len(items) >= 2 else []
+
+
+FRACTIONS = {"½": ".5", "¼": ".25", "¾": ".75"}
+
+
+def _quantity_column(units: list[Unit], i: int) -> list[str]:
+    """A table column of durations after unit ``i`` ("| `60` | 1 hour |"), as minutes; a cell
+    saying there is none ("no hold", "off", "--") is 0. Empty unless most cells are durations."""
+    from apbot.model.values import parse_quantity
+
+    rows: list[tuple[str, ...]] = []
+    k = i + 1
+    if k < len(units) and units[k].cells and not units[k].header:
+        k += 1
+    while k < len(units) and units[k].cells and units[k].header:
+        rows.append(units[k].cells)
+        k += 1
+    if len(rows) < 3:
+        return []
+    width = min(len(r) for r in rows)
+    for column in range(width - 1, -1, -1):
+        items: list[str] = []
+        for row in rows:
+            cell = row[column].strip(" *`").lower()
+            for frac, dec in FRACTIONS.items():
+                cell = re.sub(rf"(\d)\s*{frac}", rf"\g<1>{dec}", cell).replace(frac, "0" + dec)
+            q = parse_quantity(re.sub(r"\(.*?\)", "", cell).strip())
+            if q and q[1] == "time":
+                items.append(f"{q[0] / 60:g} min")
+            elif re.match(r"^(?:no\b|none|off\b|-+$|–|—)", cell):
+                items.append("0 min")
+            else:
+                break
+        else:
+            if sum(i != "0 min" for i in items) >= 2:
+                return _dedupe(items)
+    return []
+
+
+def _bullet_items(units: list[Unit], i: int, lead: int = 0) -> list[str]:
+    """The terms of the bullets after unit ``i`` ("- AUTO — dries until…"); a bullet may run
+    to more sentences, and ``lead`` sentences may stand between ``i`` and the first bullet."""
+    items: list[str] = []
+    k = i + 1
+    while lead and k < len(units) and not units[k].bullet and k <= i + lead:
+        k += 1
+    gap = 0
+    while k < len(units) and len(items) < 16:
+        u = units[k]
+        k += 1
+        if not u.bullet:
+            if not items or u.heading != units[i].heading or gap >= 3 or u.cells:
+                break
+            gap += 1  # another sentence of the same bullet
+            continue
+        gap = 0
+        m = re.match(r"^([A-Z0-9][A-Za-z0-9 +/&'-]{0,22}?)\s*(?::|—|–|-|=)\s", u.text)
+        if not m:
+            break
+        items.append(m.group(1).strip())
+    return items if len(items) >= 2 else []
+
+
+def _dedupe(items: list[str]) -> list[str]:
+    out: list[str] = []
+    for item in items:
+        if item not in out:
+            out.append(item)
+    return out
+
+
+def _value_text(value: str) -> str:
+    text = re.sub(r"\s+", " ", value.strip().lower())
+    return text.strip(" .,;:")
+
+
+def _unit_from_words(name: str) -> str:
+    ws = set(words(name.replace("_", " ")))
+    if ws & {"temp", "temperature", "heat"}:
+        return "°C"
+    if ws & {"humidity", "percent"}:
+        return "%"
+    if ws & {"time", "timer", "delay", "duration", "cook"}:
+        return "min"
+    return ""
+
+
+QUANTITY_FAMILIES = {  # a setting named for a quantity takes a range in one of its units
+    "ml": frozenset({"ml", "l", "cl", "dl", "cups", "cup"}),
+    "g": frozenset({"g", "kg", "lb", "lbs"}),
+    "W": frozenset({"W", "kw"}),
+    "rpm": frozenset({"rpm"}),
+}
+QUANTITY_WORDS = {
+    "volume": "ml", "amount": "ml", "capacity": "ml", "water": "ml", "weight": "g",
+    "watt": "W", "watts": "W", "wattage": "W", "output": "W", "spin": "rpm", "rpm": "rpm",
+}  # fmt: skip
+
+
+def _quantity_unit(name: str) -> str:
+    """:func:`_unit_from_words`, and for a quantity its unit (volume → ml, weight → g, watts →
+    W, spin → rpm): a range must be in that unit's family to belong to the setting."""
+    unit = _unit_from_words(name)
+    if unit:
+        return unit
+    for w in words(name.replace("_", " ")):
+        if w in QUANTITY_WORDS:
+            return QUANTITY_WORDS[w]
+    return ""
+
+
+def _guess_step(span: float, unit: str) -> float:
+    if unit == "%":
+        return 5
+    if unit in ("°C", "°F"):
+        return 5 if span > 40 else 1
+    if unit in ("min", "s", "h"):
+        return 1
+    for step in (1, 5, 10, 50, 100, 500, 1000):
+        if span / step <= 40:
+            return step
+    return max(1.0, span / 40)
+
+
+def _tidy(x: float) -> float | int:
+    return int(x) if float(x).is_integer() else round(float(x), 4)
+
+
+def _hms(total: int) -> str:
+    return f"{total // 3600:02d}:{total % 3600 // 60:02d}:{total % 60:02d}"
+
+
+def adjuster_direction(info: ActionInfo) -> tuple[str, str] | None:
+    """(base, "up"|"down") for a stepping key: ``temp_up`` → (temp, up), ``minus`` → ("", down)."""
+    if info.skill != "press" or info.digit is not None:
+        return None
+    parts = info.token.split("_")
+    for i, part in enumerate(parts):
+        core = re.sub(r"\d+$", "", part)
+        suffix = part[len(core) :]
+        if core in UP_WORDS or core in DOWN_WORDS:
+            base = "_".join(parts[:i] + parts[i + 1 :]) + suffix
+            if core == "add" and (base or not suffix):
+                continue  # add30, add_in: not a stepping key
+            return base, "up" if core in UP_WORDS else "down"
+    return None
