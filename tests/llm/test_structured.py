@@ -11,7 +11,7 @@ from pydantic import BaseModel
 
 from apbot.llm.client import LLMClient
 from apbot.llm.config import LLMConfig
-from apbot.llm.structured import StructuredError, ask
+from apbot.llm.structured import StructuredError, ask, repeated_tail
 from tests.llm.scripted import Reply, Script
 
 
@@ -81,6 +81,35 @@ def test_a_length_stop_is_asked_again_with_more_room(script: Script, config: LLM
     assert answer.value.value == 1
     assert [r["max_tokens"] for r in script.requests] == [50, 100]
     assert "cut off at 50 tokens" in script.requests[1]["messages"][-1]["content"]
+
+
+def test_a_loop_cut_off_is_named_and_asked_again_with_the_same_room(
+    script: Script, config: LLMConfig
+) -> None:
+    looping = '{"name": "timer", "values": [' + '"," , ' * 200
+    script.replies = [
+        Reply(looping, finish="length"),
+        Reply(looping, finish="length"),
+        Reply('{"name": "t", "value": 1}'),
+    ]
+    answer = ask(LLMClient(config), MESSAGES, Setting, max_tokens=50)
+    assert answer.value.value == 1
+    assert [r["max_tokens"] for r in script.requests] == [50, 50, 50]  # no longer loops
+    said = script.requests[1]["messages"]
+    assert "repeated" in said[-1]["content"] and "cut off at 50 tokens" in said[-1]["content"]
+    shown = said[-2]["content"]
+    assert shown.startswith('{"name": "timer", "values": [') and len(shown) < 80
+
+
+def test_repeated_tail_finds_a_loop_and_only_a_loop() -> None:
+    text = '{"a": "FRONT", "b": [' + '"," , ' * 60
+    start, unit = repeated_tail(text)  # type: ignore[misc]
+    assert text[start:].startswith(unit) and len(unit) == 6
+    assert text[:start].startswith('{"a": "FRONT", "b": [')
+    counting = '{"values": [' + ", ".join(f'"{i}"' for i in range(200))
+    assert repeated_tail(counting) is None
+    assert repeated_tail('{"name": "tim') is None
+    assert repeated_tail("x" * 100) is None  # too short a span to call a loop
 
 
 def test_a_server_without_json_schema_gets_json_object(script: Script, config: LLMConfig) -> None:

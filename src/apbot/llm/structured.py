@@ -3,8 +3,11 @@
 The pydantic model is the one source of the schema. An answer that is not JSON, does not fit
 the schema, or fails the caller's semantic check goes back to the model with the errors, at
 most ``feedback`` times (three by default); an answer cut off by the token limit is asked again
-with twice the room and a request to be brief; a refusal ends the question at once. Usage is
-summed over every attempt. The answer is data — parsed, validated, never executed.
+with twice the room and a request to be brief — unless it was cut off because it kept repeating
+itself (a small model writing ``"," ,`` until the limit): more room only buys a longer loop, so
+the room stays, the loop is shown to the model cut short and named in the feedback. A refusal
+ends the question at once. Usage is summed over every attempt. The answer is data — parsed,
+validated, never executed.
 """
 
 from __future__ import annotations
@@ -25,6 +28,9 @@ T = TypeVar("T", bound=BaseModel)
 MAX_FEEDBACK = 3
 MAX_ERRORS_SHOWN = 8
 MAX_TOKENS_CAP = 8192
+LOOP_UNIT = 60  # the longest repeated piece looked for at the end of a cut-off answer
+LOOP_SPAN = 240  # a tail this long (and at least LOOP_COPIES copies) made of one piece is a loop
+LOOP_COPIES = 8
 
 
 class StructuredError(LLMError):
@@ -96,9 +102,21 @@ def ask(
         if answer.refusal:
             raise StructuredError(f"the model refused: {answer.refusal[:200]}", usage, [], last)
         errors: list[str]
+        shown = answer.text[:4000]
         if answer.finish_reason == "length":
-            errors = [f"the answer was cut off at {tokens} tokens: give a shorter, complete one"]
-            tokens = min(tokens * 2, MAX_TOKENS_CAP)
+            loop = repeated_tail(answer.text)
+            if loop is None:
+                errors = [
+                    f"the answer was cut off at {tokens} tokens: give a shorter, complete one"
+                ]
+                tokens = min(tokens * 2, MAX_TOKENS_CAP)
+            else:
+                start, unit = loop
+                errors = [
+                    f"the answer was cut off at {tokens} tokens because it repeated "
+                    f"{unit.strip()!r} over and over: give a complete answer without repeating"
+                ]
+                shown = answer.text[: min(start + 3 * len(unit), 4000)] + " …"
         else:
             errors = _problems(answer.text, schema, check)
             if not errors:
@@ -114,9 +132,26 @@ def ask(
             )
         conversation = [
             *conversation,
-            {"role": "assistant", "content": answer.text[:4000]},
+            {"role": "assistant", "content": shown},
             {"role": "user", "content": _feedback_text(errors)},
         ]
+
+
+def repeated_tail(text: str) -> tuple[int, str] | None:
+    """Where a cut-off answer starts repeating one short piece to its end, and the piece
+    (None when its end is not such a loop)."""
+    best: tuple[int, str] | None = None
+    for size in range(1, LOOP_UNIT + 1):
+        if size * LOOP_COPIES > len(text):
+            break
+        unit = text[-size:]
+        start = len(text) - size
+        while start >= size and text[start - size : start] == unit:
+            start -= size
+        looped = (len(text) - start) // size >= LOOP_COPIES and len(text) - start >= LOOP_SPAN
+        if looped and (best is None or start < best[0]):
+            best = (start, unit)
+    return best
 
 
 def _problems(text: str, schema: type[T], check: Callable[[T], list[str]] | None) -> list[str]:
