@@ -3,6 +3,9 @@ procedure repairer and the greedy executor, each driven directly against a true 
 
 from __future__ import annotations
 
+import pytest
+
+from apbot.agent import guards
 from apbot.agent.budget import Budget
 from apbot.agent.displays import DisplayLearner
 from apbot.agent.environment import SimulatorEnvironment
@@ -183,3 +186,48 @@ def test_no_side_effect_is_learnt_from_a_dark_panel() -> None:
     off = s.press(s.planned("press_power"))
     assert not off.feedback.text.strip()
     assert not ProcedureRepairer(s, GuardLearner(s)).learn_side_effect("speed", off, "mid")
+
+
+def test_no_guard_is_supposed_wrong_when_even_all_of_them_relaxed_cannot_reach_the_goal(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # each setting's key resets the other: no guard, relaxed or not, makes both hold
+    apart = model_from(
+        (FAN % {"speeds": "low, mid, high", "hours": 4, "timer": TIMER_STEPS})
+        .replace(
+            "variable: speed, effect: next}", "variable: speed, effect: next, set: {timer: 0}}"
+        )
+        .replace(
+            "variable: timer, effect: next}", "variable: timer, effect: next, set: {speed: low}}"
+        )
+        .replace('only: [press_power], display: ""', 'only: [press_power, press_up], display: ""')
+    )
+    s = session(apart, apart)
+    searches: list[dict[str, object]] = []
+    real = guards.plan
+    monkeypatch.setattr(
+        guards,
+        "plan",
+        lambda m, st, goal, *a, **k: searches.append(goal) or real(m, st, goal, *a, **k),
+    )
+    target = {"speed": "high", "timer": 2}
+    learner = GuardLearner(s)
+    assert not learner.relax(target)
+    assert len(searches) == 1  # the union of every supposed relaxation, not one search each
+    assert not learner.relax(target) and len(searches) == 1  # the same question: remembered
+    assert s.episode.repairs == []
+
+
+def test_a_guard_relaxation_that_makes_the_goal_reachable_is_still_found() -> None:
+    # the belief has the timer's UP key locked whenever the fan runs: the timer is out of reach
+    locked = model_from(
+        (FAN % {"speeds": "low, mid, high", "hours": 4, "timer": TIMER_STEPS}).replace(
+            "  - {name: switched off",
+            '  - {name: timer lock, when: {power: "on"}, '
+            "only: [press_power, press_speed, press_timer]}\n"
+            "  - {name: switched off",
+        )
+    )
+    s = session(fan(), locked)
+    assert GuardLearner(s).relax({"timer": 2})
+    assert s.episode.repairs == ["timer lock may let press_up work (to be seen)"]

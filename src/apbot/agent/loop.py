@@ -423,7 +423,7 @@ class ClosedLoop:
                 known = exc
             self._plans[key] = known
         if isinstance(known, Unreachable):
-            raise Unreachable(known.reason, known.budget_hit)
+            raise known.again()
         return known
 
     def _programmes_first(self, found: Plan, target: dict[str, Any]) -> Plan:

@@ -259,6 +259,17 @@ def allow(model: ApplianceModel, guard: int, action: str) -> ApplianceModel:
     return _rebuild(data)
 
 
+def allow_all(model: ApplianceModel, pairs: Sequence[tuple[int, str]]) -> ApplianceModel:
+    """Every guard ``index`` lets its ``action`` through: the union of :func:`allow`'s
+    variants, which can do everything any one of them can."""
+    data = _dump(model)
+    for index, action in pairs:
+        only = data["guards"][index]["only"]
+        if action not in only:
+            data["guards"][index]["only"] = [*only, action]
+    return _rebuild(data)
+
+
 def disallow(model: ApplianceModel, guard: int, action: str) -> ApplianceModel:
     """A guard does not let ``action`` through after all."""
     data = _dump(model)
