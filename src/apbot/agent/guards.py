@@ -36,9 +36,11 @@ class GuardLearner:
         self.session = session
         # (guard condition, key) pairs seen refused: no relaxation may suppose them allowed
         self.witnessed: set[tuple[str, str]] = set()
-        # (state, goal) pairs on the belief ``_hopeless_on`` no relaxation can help
+        # on the belief ``_hopeless_on``: (state, goal) pairs no relaxation can help, and the
+        # goals every relaxation was tried for in vain
         self._hopeless_on: CompiledModel | None = None
         self._hopeless_for: set[tuple[Any, str]] = set()
+        self._tried_for: set[str] = set()
 
     def explain(self, refused: Executed) -> bool:
         """A refusal whose display is one of the belief's guard messages: believe that guard
@@ -280,7 +282,13 @@ class GuardLearner:
             for index, guard in order
             if action not in guard.only and (_condition(guard.when), action) not in self.witnessed
         ][:MAX_RELAXATIONS]
-        if not candidates or self._hopeless(candidates, target):
+        if self._hopeless_on is not session.belief.compiled:
+            self._hopeless_on = session.belief.compiled
+            self._hopeless_for, self._tried_for = set(), set()
+        goal = repr(sorted(target.items()))
+        # each guess tried in vain for this goal on this belief: the same guards keep it out
+        # from the next state too (another plan cycle, the same failure) — until a repair
+        if goal in self._tried_for or not candidates or self._hopeless(candidates, target):
             return False
         for index, action in candidates:
             try:
@@ -297,16 +305,16 @@ class GuardLearner:
                 variant, f"{label} may let {action} work (to be seen)", session.belief.pointer()
             )
             return True
+        self._tried_for.add(goal)
         return False
 
     def _hopeless(self, candidates: list[tuple[int, str]], target: dict[str, Any]) -> bool:
         """Whether no single relaxation can make ``target`` reachable: the model with all of
         them at once (which can do whatever any one can) has no plan — a value no key leads
         to, or a search that ran out, not one that gave up. One search instead of a dozen
-        speculative ones, remembered for the same belief, state and goal."""
+        speculative ones, remembered for the same belief, state and goal (the caller resets
+        the memory when the belief changes)."""
         session = self.session
-        if self._hopeless_on is not session.belief.compiled:
-            self._hopeless_on, self._hopeless_for = session.belief.compiled, set()
         key = (session.belief.state, repr(sorted(target.items())))
         if key in self._hopeless_for:
             return True
