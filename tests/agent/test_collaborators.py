@@ -231,3 +231,38 @@ def test_a_guard_relaxation_that_makes_the_goal_reachable_is_still_found() -> No
     s = session(fan(), locked)
     assert GuardLearner(s).relax({"timer": 2})
     assert s.episode.repairs == ["timer lock may let press_up work (to be seen)"]
+
+
+LOCKED_FAN = """
+controls: [{id: power}, {id: speed}, {id: lock}]
+variables:
+  power: {type: discrete, values: ["off", "on"]}
+  speed: {type: discrete, values: [low, mid, high], label: SPEED}
+  child_lock: {type: discrete, values: ["off", "on"], show: {"off": "%s", "on": "LOCKED"}}
+actions:
+  press_power: {control: power}
+  press_speed: {control: speed}
+  hold_lock: {control: lock, skill: hold, seconds: 3}
+features:
+  power: [{actions: [press_power], variable: power, effect: toggle}]
+  speed: [{actions: [press_speed], variable: speed, effect: next}]
+  lock: [{actions: [hold_lock], variable: child_lock, effect: toggle}]
+guards:
+  - {name: switched off, when: {power: "off"}, only: [press_power], display: "", hide: true}
+  - {name: lock, when: {child_lock: "on"}, only: [hold_lock], display: "LOCKED"}
+display:
+  idle: "{speed}"
+"""
+
+
+def test_a_value_printed_as_nothing_is_seen_in_the_absence_of_the_other_values_word() -> None:
+    # the manual says the lock shows LOCKED; unlocked, the panel goes back to the speed with a
+    # word the belief does not print ("mid  FAN"): the lock is off, no surprise
+    truth = model_from(LOCKED_FAN % "{speed}  FAN")
+    s = session(truth, model_from(LOCKED_FAN % ""))
+    s.press(s.planned("press_power"))
+    locked = s.press(s.planned("hold_lock"))
+    assert not locked.surprising and s.belief.value("child_lock") == "on"
+    unlocked = s.press(s.planned("hold_lock"))
+    assert unlocked.feedback.text == "low  FAN"
+    assert not unlocked.surprising and s.belief.value("child_lock") == "off"

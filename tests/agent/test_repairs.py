@@ -583,3 +583,46 @@ def test_a_time_read_in_the_wrong_display_style_is_learnt_from_the_walk() -> Non
     episode, reached = run(truth, belief, goal)
     assert reached and episode.claimed_success
     assert "timer is shown as 'TIME {value}' (min)" in episode.repairs
+
+
+HOB = """
+controls: [{id: power}, {id: function}, {id: heat}]
+variables:
+  power: {type: discrete, values: ["off", "on"]}
+  function: {type: discrete, values: [fry, water, soup, stew], label: FUNC}
+  heat:
+    type: numeric
+    unit: W
+    depends_on: function
+    label: POWER
+    wrap: true
+    cases:
+      fry: {ranges: [[1000, 2000, 500]], initial: 1000}
+      soup: {ranges: [[200, 1000, 400]], initial: 200}
+      stew: {ranges: [[200, 1000, 400]], initial: 600}
+actions:
+  press_power: {control: power}
+  press_function: {control: function}
+  press_heat: {control: heat}
+features:
+  power: [{actions: [press_power], variable: power, effect: toggle}]
+  function: [{actions: [press_function], variable: function, effect: next}]
+  heat: [{actions: [press_heat], variable: heat, effect: next}]
+guards:
+  - {name: switched off, when: {power: "off"}, only: [press_power], display: "", hide: true}
+display:
+  idle: "{function}"
+"""
+
+
+def test_a_setting_read_as_a_lamp_that_never_lights_is_shown_on_its_own_screen_only() -> None:
+    # the reader took "POWER 1000 W" for a lamp lit on every screen; the hob shows the power
+    # only while it is being set, so every other screen reads as "no power"
+    truth = loads_model("appliance: {id: hob, category: test}\n" + HOB)
+    belief = loads_model("appliance: {id: hob, category: test}\n" + HOB + "  indicators: [heat]\n")
+    episode, reached = run(truth, belief, {"function": "stew", "heat": 1000})
+    assert reached and episode.claimed_success
+    assert "heat has no lamp: shown on its own screen only" in episode.repairs
+    # learnt at the first screen that did not show it: no later screen is a surprise
+    mismatches = [e for e in episode.trace if e.kind == "check" and e.text == "mismatch"]
+    assert len(mismatches) == 1

@@ -526,7 +526,9 @@ class ClosedLoop:
                 n: "(unreadable)" if o is UNREADABLE else o for n, (_, o) in done.surprises.items()
             },
         )
-        if not done.refused and self.splitter.split(done):
+        if not done.refused and self.displays.no_lamp(done):
+            pass  # plan again, reading the setting on its own screen only
+        elif not done.refused and self.splitter.split(done):
             pass  # plan again with the procedure the key really starts
         elif (
             not done.refused

@@ -557,6 +557,14 @@ def add_indicator(model: ApplianceModel, name: str) -> ApplianceModel:
     return _rebuild(data)
 
 
+def drop_indicator(model: ApplianceModel, name: str) -> ApplianceModel:
+    """The display has no lamp for this setting: it shows it only on its own screen."""
+    data = _dump(model)
+    display = data.get("display") or {}
+    display["indicators"] = [n for n in display.get("indicators", []) if n != name]
+    return _rebuild(data)
+
+
 def drop_action(model: ApplianceModel, action: str, where: tuple[str, int]) -> ApplianceModel:
     """Take ``action`` out of one step (it keeps its other keys)."""
     data = _dump(model)
