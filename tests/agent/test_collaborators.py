@@ -18,7 +18,7 @@ from apbot.agent.procedures import ProcedureRepairer
 from apbot.agent.session import AgentConfig, Session
 from apbot.model.schema import ApplianceModel
 from apbot.plan.plan import plan
-from tests.helpers import model_from
+from tests.helpers import model_from, suite_model
 
 FAN = """
 controls: [{id: power}, {id: speed}, {id: timer}, {id: up}]
@@ -266,3 +266,26 @@ def test_a_value_printed_as_nothing_is_seen_in_the_absence_of_the_other_values_w
     unlocked = s.press(s.planned("hold_lock"))
     assert unlocked.feedback.text == "low  FAN"
     assert not unlocked.surprising and s.belief.value("child_lock") == "off"
+
+
+def test_a_time_on_a_partly_read_display_that_contradicts_a_time_seen_before_is_looked_at() -> None:
+    # the belief missed that CANCEL clears the delay, and prints no delay on the idle screen:
+    # after CANCEL the panel shows "white  0:00" where the belief reads only the programme
+    truth = suite_model("bread_maker_5")
+    belief = suite_model(
+        "bread_maker_5",
+        ('effect: {to: "off"}, reset: [delay]}', 'effect: {to: "off"}}'),
+        ('show: {"off": "{programme}  {delay}", "on": "BAKING"}', 'show: {"on": "BAKING"}'),
+        ('show: {"off": "{programme}  {delay}", "on": "LOCKED"}', 'show: {"on": "LOCKED"}'),
+        ('idle: "{programme}  {delay}"', 'idle: "{programme}"'),
+    )
+    s = session(truth, belief)
+    for _ in range(2):
+        s.press(s.planned("press_plus"))
+    assert s.belief.value("delay") == "00:30:00" and s.evidence["delay"] == "00:30:00"
+    s.press(s.planned("press_start"))
+    cancelled = s.press(s.planned("press_cancel"))
+    assert "0:00" in cancelled.feedback.text and cancelled.seen is not None
+    assert cancelled.seen.partial
+    assert s.belief.value("delay") == "00:30:00"  # nothing the belief could read said otherwise
+    assert s.unconfirmed(["delay"]) == ["delay"]  # but it is to be seen again before a claim
