@@ -626,3 +626,50 @@ def test_a_setting_read_as_a_lamp_that_never_lights_is_shown_on_its_own_screen_o
     # learnt at the first screen that did not show it: no later screen is a surprise
     mismatches = [e for e in episode.trace if e.kind == "check" and e.text == "mismatch"]
     assert len(mismatches) == 1
+
+
+HOB_KEYS = """
+controls: [{id: power}, {id: heat}, {id: timer}, {id: plus}, {id: minus}]
+variables:
+  power: {type: discrete, values: ["off", "on"]}
+  heat: {type: numeric, unit: W, ranges: [[200, 2000, 200]], initial: 1000, label: POWER,
+         wrap: true}
+  timer: {type: numeric, unit: min, ranges: [[0, 60, 5]], label: TIMER}
+actions:
+  press_power: {control: power}
+  press_heat: {control: heat}
+  press_timer: {control: timer}
+  press_plus: {control: plus}
+  press_minus: {control: minus}
+features:
+  power: [{actions: [press_power], variable: power, effect: toggle}]
+  heat:
+%s
+  timer:
+    - {actions: [press_timer]}
+    - {actions: [press_plus, press_minus], variable: timer,
+       effect: {press_plus: next, press_minus: prev}}
+guards:
+  - {name: switched off, when: {power: "off"}, only: [press_power], display: "", hide: true}
+"""
+
+
+def test_a_key_that_only_brings_its_setting_up_is_an_entry_for_the_stepping_keys() -> None:
+    # the manual said "press POWER to change the power"; the hob's POWER only shows it, and
+    # + / − (which the belief knows from the timer) adjust it
+    header = "appliance: {id: hob, category: test}\n"
+    truth = loads_model(
+        header
+        + HOB_KEYS
+        % (
+            "    - {actions: [press_heat]}\n"
+            "    - {actions: [press_plus, press_minus], variable: heat,\n"
+            "       effect: {press_plus: next, press_minus: prev}}"
+        )
+    )
+    belief = loads_model(
+        header + HOB_KEYS % "    - {actions: [press_heat], variable: heat, effect: next}"
+    )
+    episode, reached = run(truth, belief, {"power": "on", "heat": 1600})
+    assert reached and episode.claimed_success
+    assert "press_heat only brings heat up; press_plus, press_minus adjust it" in episode.repairs

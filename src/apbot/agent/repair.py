@@ -151,6 +151,21 @@ def insert_step(
     return _rebuild(data)
 
 
+def entry_then_keys(
+    model: ApplianceModel, feature: str, index: int, effects: dict[str, str]
+) -> ApplianceModel:
+    """The step's key only brings its setting up; ``effects``' keys adjust it, in a step of
+    their own after it (POWER, then + and −)."""
+    data = _dump(model)
+    steps = data["features"][feature]
+    old = steps[index]
+    entry = {"actions": list(old["actions"]), "note": "learnt from feedback"}
+    adjust = {k: v for k, v in old.items() if k not in ("actions", "effect", "note", "on_entry")}
+    adjust.update(actions=list(effects), effect=dict(effects), note="learnt from feedback")
+    steps[index : index + 1] = [entry, adjust]
+    return _rebuild(data)
+
+
 def set_entry_format(model: ApplianceModel, name: str, fmt: str) -> ApplianceModel:
     """Read a keypad variable's typed digits in another format (``mm:ss`` for ``minutes``)."""
     data = _dump(model)
