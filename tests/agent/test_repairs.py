@@ -673,3 +673,16 @@ def test_a_key_that_only_brings_its_setting_up_is_an_entry_for_the_stepping_keys
     episode, reached = run(truth, belief, {"power": "on", "heat": 1600})
     assert reached and episode.claimed_success
     assert "press_heat only brings heat up; press_plus, press_minus adjust it" in episode.repairs
+
+
+def test_a_setting_whose_label_shows_in_words_the_belief_cannot_read_is_looked_at() -> None:
+    # the reader missed that TASTE is lit on every screen, and guessed the wrong start value:
+    # "white rice  TASTE standard" is a screen the belief reads only in part
+    belief = suite_model(
+        "rice_cooker_5",
+        ("  indicators: [taste, running, child_lock]", "  indicators: [running, child_lock]"),
+        ("values: [standard, soft, firm]", "values: [soft, standard, firm]"),
+    )
+    goal = {"mode": "brown rice", "taste": "soft", "running": "on"}
+    episode, reached = run(suite_model("rice_cooker_5"), belief, goal)  # never a false claim
+    assert reached or "taste" in episode.failure  # unread, it is no ground for a claim

@@ -253,15 +253,25 @@ class Session:
         )
 
     def _suspect_unread(self, seen: Seen) -> None:
-        """A screen found inside text the belief cannot print: a time in that text that is not
-        what the belief holds for a time setting shown before may be that setting, changed
-        where the belief saw no reason (a CANCEL that also clears the delay). Such a setting
-        needs seeing again before anything rests on it."""
+        """A screen found inside text the belief cannot print. A setting whose label is in that
+        text, unread, is shown in a way the belief cannot read; a time in it that is not what
+        the belief holds for a time setting shown before may be that setting, changed where
+        the belief saw no reason (a CANCEL that also clears the delay). Either needs seeing
+        again before anything rests on it."""
+        read = seen.shown()
+        for name, spec in self.belief.model.variables.items():
+            label = spec.display_label(name)
+            if name in read or not spec.visible or len(label) < 3:
+                continue
+            if re.search(rf"(?<!\w){re.escape(label)}(?!\w)", seen.text, re.IGNORECASE):
+                # its label is on the display, its value in words the belief cannot read: what
+                # the belief holds for it rests on nothing the display said
+                self.unread.add(name)
         times = re.findall(r"(?<![\d:])\d{1,2}:\d{2}(?::\d{2})?(?![\d:])", seen.text)
         if not times:
             return
         for name, spec in self.belief.model.variables.items():
-            if not isinstance(spec, TimeVariable) or name in seen.shown():
+            if not isinstance(spec, TimeVariable) or name in read:
                 continue
             if name not in self.evidence or name in self.stale:
                 continue
