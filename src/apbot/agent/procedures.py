@@ -219,14 +219,19 @@ class ProcedureRepairer:
     ) -> bool:
         """The step's only key brings the setting up and leaves it as it is: it may be an
         entry key, with the panel's stepping keys (+ and − of another procedure) adjusting
-        the setting after it. Bring it up again and press each such pair's first key once
-        (three at most); the first that moves it makes the step an entry press followed by
-        that pair's step."""
+        the setting after it. With the setting on the display (brought up again after a probe
+        took it away), press each such pair's first key once (three at most); the first that
+        moves it makes the step an entry press followed by that pair's step. Only for a key
+        believed to step the setting: a toggle pressed again would undo itself."""
         session = self.session
         model = session.belief.model
         feature, index = pointer
         if model.features[feature][index].actions != [stuck.name]:
             return False
+        if session.effect(pointer, stuck.name) not in ("next", "prev"):
+            return False  # a toggle pressed again would undo itself (a switch off)
+        if session.shown(name) in (MISSING, None):
+            return False  # the key left the setting off the display: no stepping to see
         pairs = []
         for other, steps in model.features.items():
             for j, step in enumerate(steps):
@@ -238,10 +243,11 @@ class ProcedureRepairer:
                 if fits and moving not in pairs:
                     pairs.append(moving)
         for moving in pairs[:3]:
-            up = session.press(stuck, exploring=True)
-            before = up.observed(name)
-            if before is MISSING or before is None:
-                return False  # the key does not even bring the setting up
+            before = session.shown(name)
+            if before in (MISSING, None):  # a probe took the display elsewhere: bring it back
+                before = session.press(stuck, exploring=True).observed(name)
+                if before in (MISSING, None):
+                    return False
             key = next(iter(moving))
             probe = session.press(session.planned(key), exploring=True)
             shown = probe.observed(name)

@@ -23,7 +23,7 @@ from apbot.agent.budget import Budget
 from apbot.agent.environment import Environment, Feedback
 from apbot.agent.episode import TaskContext
 from apbot.agent.perception import MISSING, UNREADABLE, Perceiver, Seen
-from apbot.model.display import can_show
+from apbot.model.display import can_show, display_value
 from apbot.model.domain import ValueProblem, parse_value
 from apbot.model.effects import default_effect
 from apbot.model.schema import Add, ApplianceModel, DiscreteVariable, Skip, TimeVariable
@@ -263,9 +263,14 @@ class Session:
             label = spec.display_label(name)
             if name in read or not spec.visible or len(label) < 3:
                 continue
-            if re.search(rf"(?<!\w){re.escape(label)}(?!\w)", seen.text, re.IGNORECASE):
-                # its label is on the display, its value in words the belief cannot read: what
-                # the belief holds for it rests on nothing the display said
+            found = re.search(rf"(?<!\w){re.escape(label)}(?!\w)", seen.text, re.IGNORECASE)
+            if found is None:
+                continue
+            after = seen.text[found.end() :].strip().casefold()
+            printed = display_value(spec, self.belief.value(name)).strip().casefold()
+            if not (printed and after.startswith(printed)):
+                # its label is on the display, followed by words the belief cannot read as
+                # what it holds: that rests on nothing the display said
                 self.unread.add(name)
         times = re.findall(r"(?<![\d:])\d{1,2}:\d{2}(?::\d{2})?(?![\d:])", seen.text)
         if not times:
