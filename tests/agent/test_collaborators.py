@@ -3,6 +3,9 @@ procedure repairer and the greedy executor, each driven directly against a true 
 
 from __future__ import annotations
 
+import pytest
+
+from apbot.agent import guards
 from apbot.agent.budget import Budget
 from apbot.agent.displays import DisplayLearner
 from apbot.agent.environment import SimulatorEnvironment
@@ -15,7 +18,7 @@ from apbot.agent.procedures import ProcedureRepairer
 from apbot.agent.session import AgentConfig, Session
 from apbot.model.schema import ApplianceModel
 from apbot.plan.plan import plan
-from tests.helpers import model_from
+from tests.helpers import model_from, suite_model
 
 FAN = """
 controls: [{id: power}, {id: speed}, {id: timer}, {id: up}]
@@ -183,3 +186,106 @@ def test_no_side_effect_is_learnt_from_a_dark_panel() -> None:
     off = s.press(s.planned("press_power"))
     assert not off.feedback.text.strip()
     assert not ProcedureRepairer(s, GuardLearner(s)).learn_side_effect("speed", off, "mid")
+
+
+def test_no_guard_is_supposed_wrong_when_even_all_of_them_relaxed_cannot_reach_the_goal(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # each setting's key resets the other: no guard, relaxed or not, makes both hold
+    apart = model_from(
+        (FAN % {"speeds": "low, mid, high", "hours": 4, "timer": TIMER_STEPS})
+        .replace(
+            "variable: speed, effect: next}", "variable: speed, effect: next, set: {timer: 0}}"
+        )
+        .replace(
+            "variable: timer, effect: next}", "variable: timer, effect: next, set: {speed: low}}"
+        )
+        .replace('only: [press_power], display: ""', 'only: [press_power, press_up], display: ""')
+    )
+    s = session(apart, apart)
+    searches: list[dict[str, object]] = []
+    real = guards.plan
+    monkeypatch.setattr(
+        guards,
+        "plan",
+        lambda m, st, goal, *a, **k: searches.append(goal) or real(m, st, goal, *a, **k),
+    )
+    target = {"speed": "high", "timer": 2}
+    learner = GuardLearner(s)
+    assert not learner.relax(target)
+    assert len(searches) == 1  # the union of every supposed relaxation, not one search each
+    assert not learner.relax(target) and len(searches) == 1  # the same question: remembered
+    assert s.episode.repairs == []
+
+
+def test_a_guard_relaxation_that_makes_the_goal_reachable_is_still_found() -> None:
+    # the belief has the timer's UP key locked whenever the fan runs: the timer is out of reach
+    locked = model_from(
+        (FAN % {"speeds": "low, mid, high", "hours": 4, "timer": TIMER_STEPS}).replace(
+            "  - {name: switched off",
+            '  - {name: timer lock, when: {power: "on"}, '
+            "only: [press_power, press_speed, press_timer]}\n"
+            "  - {name: switched off",
+        )
+    )
+    s = session(fan(), locked)
+    assert GuardLearner(s).relax({"timer": 2})
+    assert s.episode.repairs == ["timer lock may let press_up work (to be seen)"]
+
+
+LOCKED_FAN = """
+controls: [{id: power}, {id: speed}, {id: lock}]
+variables:
+  power: {type: discrete, values: ["off", "on"]}
+  speed: {type: discrete, values: [low, mid, high], label: SPEED}
+  child_lock: {type: discrete, values: ["off", "on"], show: {"off": "%s", "on": "LOCKED"}}
+actions:
+  press_power: {control: power}
+  press_speed: {control: speed}
+  hold_lock: {control: lock, skill: hold, seconds: 3}
+features:
+  power: [{actions: [press_power], variable: power, effect: toggle}]
+  speed: [{actions: [press_speed], variable: speed, effect: next}]
+  lock: [{actions: [hold_lock], variable: child_lock, effect: toggle}]
+guards:
+  - {name: switched off, when: {power: "off"}, only: [press_power], display: "", hide: true}
+  - {name: lock, when: {child_lock: "on"}, only: [hold_lock], display: "LOCKED"}
+display:
+  idle: "{speed}"
+"""
+
+
+def test_a_value_printed_as_nothing_is_seen_in_the_absence_of_the_other_values_word() -> None:
+    # the manual says the lock shows LOCKED; unlocked, the panel goes back to the speed with a
+    # word the belief does not print ("mid  FAN"): the lock is off, no surprise
+    truth = model_from(LOCKED_FAN % "{speed}  FAN")
+    s = session(truth, model_from(LOCKED_FAN % ""))
+    s.press(s.planned("press_power"))
+    locked = s.press(s.planned("hold_lock"))
+    assert not locked.surprising and s.belief.value("child_lock") == "on"
+    unlocked = s.press(s.planned("hold_lock"))
+    assert unlocked.feedback.text == "low  FAN"
+    assert not unlocked.surprising and s.belief.value("child_lock") == "off"
+
+
+def test_a_time_on_a_partly_read_display_that_contradicts_a_time_seen_before_is_looked_at() -> None:
+    # the belief missed that CANCEL clears the delay, and prints no delay on the idle screen:
+    # after CANCEL the panel shows "white  0:00" where the belief reads only the programme
+    truth = suite_model("bread_maker_5")
+    belief = suite_model(
+        "bread_maker_5",
+        ('effect: {to: "off"}, reset: [delay]}', 'effect: {to: "off"}}'),
+        ('show: {"off": "{programme}  {delay}", "on": "BAKING"}', 'show: {"on": "BAKING"}'),
+        ('show: {"off": "{programme}  {delay}", "on": "LOCKED"}', 'show: {"on": "LOCKED"}'),
+        ('idle: "{programme}  {delay}"', 'idle: "{programme}"'),
+    )
+    s = session(truth, belief)
+    for _ in range(2):
+        s.press(s.planned("press_plus"))
+    assert s.belief.value("delay") == "00:30:00" and s.evidence["delay"] == "00:30:00"
+    s.press(s.planned("press_start"))
+    cancelled = s.press(s.planned("press_cancel"))
+    assert "0:00" in cancelled.feedback.text and cancelled.seen is not None
+    assert cancelled.seen.partial
+    assert s.belief.value("delay") == "00:30:00"  # nothing the belief could read said otherwise
+    assert s.unconfirmed(["delay"]) == ["delay"]  # but it is to be seen again before a claim

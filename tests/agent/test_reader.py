@@ -126,6 +126,17 @@ def test_more_on_the_display_than_the_belief_prints_is_a_partial_reading(
     assert hypothesis.partial and hypothesis.values == {"mode": "fan"}
 
 
+def test_lamps_are_read_around_a_screen_found_inside_unknown_text(
+    reader: DisplayReader,
+) -> None:
+    (idle,) = [h for h in reader.read("READY 0:30  DOOR OPEN").hypotheses]
+    assert idle.partial and idle.lamps == {"child_lock": {"off"}, "running": {"off"}}
+    (lit,) = [h for h in reader.read("READY 0:30  DOOR OPEN  LOCK").hypotheses]
+    assert lit.partial and lit.lamps == {"child_lock": {"on"}, "running": {"off"}}
+    (word,) = [h for h in reader.read("READY 0:30  UNLOCKED").hypotheses]
+    assert word.lamps["child_lock"] == {"off"}  # a lamp's word inside another word is not it
+
+
 def test_spacing_and_case_do_not_matter(reader: DisplayReader) -> None:
     assert focus_readings(reader, "  mode   GRILL ", "mode") == [{"mode": "grill"}]
 

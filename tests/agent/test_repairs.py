@@ -583,3 +583,106 @@ def test_a_time_read_in_the_wrong_display_style_is_learnt_from_the_walk() -> Non
     episode, reached = run(truth, belief, goal)
     assert reached and episode.claimed_success
     assert "timer is shown as 'TIME {value}' (min)" in episode.repairs
+
+
+HOB = """
+controls: [{id: power}, {id: function}, {id: heat}]
+variables:
+  power: {type: discrete, values: ["off", "on"]}
+  function: {type: discrete, values: [fry, water, soup, stew], label: FUNC}
+  heat:
+    type: numeric
+    unit: W
+    depends_on: function
+    label: POWER
+    wrap: true
+    cases:
+      fry: {ranges: [[1000, 2000, 500]], initial: 1000}
+      soup: {ranges: [[200, 1000, 400]], initial: 200}
+      stew: {ranges: [[200, 1000, 400]], initial: 600}
+actions:
+  press_power: {control: power}
+  press_function: {control: function}
+  press_heat: {control: heat}
+features:
+  power: [{actions: [press_power], variable: power, effect: toggle}]
+  function: [{actions: [press_function], variable: function, effect: next}]
+  heat: [{actions: [press_heat], variable: heat, effect: next}]
+guards:
+  - {name: switched off, when: {power: "off"}, only: [press_power], display: "", hide: true}
+display:
+  idle: "{function}"
+"""
+
+
+def test_a_setting_read_as_a_lamp_that_never_lights_is_shown_on_its_own_screen_only() -> None:
+    # the reader took "POWER 1000 W" for a lamp lit on every screen; the hob shows the power
+    # only while it is being set, so every other screen reads as "no power"
+    truth = loads_model("appliance: {id: hob, category: test}\n" + HOB)
+    belief = loads_model("appliance: {id: hob, category: test}\n" + HOB + "  indicators: [heat]\n")
+    episode, reached = run(truth, belief, {"function": "stew", "heat": 1000})
+    assert reached and episode.claimed_success
+    assert "heat has no lamp: shown on its own screen only" in episode.repairs
+    # learnt at the first screen that did not show it: no later screen is a surprise
+    mismatches = [e for e in episode.trace if e.kind == "check" and e.text == "mismatch"]
+    assert len(mismatches) == 1
+
+
+HOB_KEYS = """
+controls: [{id: power}, {id: heat}, {id: timer}, {id: plus}, {id: minus}]
+variables:
+  power: {type: discrete, values: ["off", "on"]}
+  heat: {type: numeric, unit: W, ranges: [[200, 2000, 200]], initial: 1000, label: POWER,
+         wrap: true}
+  timer: {type: numeric, unit: min, ranges: [[0, 60, 5]], label: TIMER}
+actions:
+  press_power: {control: power}
+  press_heat: {control: heat}
+  press_timer: {control: timer}
+  press_plus: {control: plus}
+  press_minus: {control: minus}
+features:
+  power: [{actions: [press_power], variable: power, effect: toggle}]
+  heat:
+%s
+  timer:
+    - {actions: [press_timer]}
+    - {actions: [press_plus, press_minus], variable: timer,
+       effect: {press_plus: next, press_minus: prev}}
+guards:
+  - {name: switched off, when: {power: "off"}, only: [press_power], display: "", hide: true}
+"""
+
+
+def test_a_key_that_only_brings_its_setting_up_is_an_entry_for_the_stepping_keys() -> None:
+    # the manual said "press POWER to change the power"; the hob's POWER only shows it, and
+    # + / − (which the belief knows from the timer) adjust it
+    header = "appliance: {id: hob, category: test}\n"
+    truth = loads_model(
+        header
+        + HOB_KEYS
+        % (
+            "    - {actions: [press_heat]}\n"
+            "    - {actions: [press_plus, press_minus], variable: heat,\n"
+            "       effect: {press_plus: next, press_minus: prev}}"
+        )
+    )
+    belief = loads_model(
+        header + HOB_KEYS % "    - {actions: [press_heat], variable: heat, effect: next}"
+    )
+    episode, reached = run(truth, belief, {"power": "on", "heat": 1600})
+    assert reached and episode.claimed_success
+    assert "press_heat only brings heat up; press_plus, press_minus adjust it" in episode.repairs
+
+
+def test_a_setting_whose_label_shows_in_words_the_belief_cannot_read_is_looked_at() -> None:
+    # the reader missed that TASTE is lit on every screen, and guessed the wrong start value:
+    # "white rice  TASTE standard" is a screen the belief reads only in part
+    belief = suite_model(
+        "rice_cooker_5",
+        ("  indicators: [taste, running, child_lock]", "  indicators: [running, child_lock]"),
+        ("values: [standard, soft, firm]", "values: [soft, standard, firm]"),
+    )
+    goal = {"mode": "brown rice", "taste": "soft", "running": "on"}
+    episode, reached = run(suite_model("rice_cooker_5"), belief, goal)  # never a false claim
+    assert reached or "taste" in episode.failure  # unread, it is no ground for a claim

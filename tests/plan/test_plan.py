@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import pickle
+
 import pytest
 
 from apbot.model.goal import GoalError
@@ -210,6 +212,39 @@ def test_unreachable_value_gets_a_reason() -> None:
     assert [a.name for a in plan(model, sim.state, {"level": 2}).actions] == ["press_c"]
 
 
+def test_an_unreachable_value_is_named_as_blocked_whatever_the_guards() -> None:
+    model = model_from(ONE_WAY.replace("initial: 2", "initial: 2, wrap: false"), check=False)
+    sim = Simulator(model)
+    for _ in range(3):
+        sim.step("press_b")
+    with pytest.raises(Unreachable) as caught:
+        plan(model, sim.state, {"level": 1})
+    assert caught.value.blocked == ("level",) and not caught.value.budget_hit
+    again = caught.value.again()  # the remembered answer, re-raised, says the same
+    assert (again.blocked, again.reason) == (("level",), caught.value.reason)
+    assert pickle.loads(pickle.dumps(caught.value)).reason == caught.value.reason
+
+
+def test_the_costly_reason_is_worked_out_only_when_read(monkeypatch: pytest.MonkeyPatch) -> None:
+    import apbot.plan.plan as planning
+
+    model = model_from(ONE_WAY.replace("initial: 2", "initial: 2, wrap: false"), check=False)
+    sim = Simulator(model)
+    for _ in range(3):
+        sim.step("press_b")
+    walks: list[int] = []
+    real = planning._forward_values
+    monkeypatch.setattr(
+        planning,
+        "_forward_values",
+        lambda *a: walks.append(1) or real(*a),  # type: ignore
+    )
+    with pytest.raises(Unreachable) as caught:
+        plan(model, sim.state, {"level": 1})
+    assert walks == []  # a caller that only tries a guess pays nothing for the words
+    assert "reach 2, 3, 4, 5" in str(caught.value) and walks
+
+
 JOINT = """
 controls: [{id: a, label: A}, {id: b, label: B}]
 variables:
@@ -224,8 +259,9 @@ features:
 
 def test_jointly_impossible_goal_gets_a_reason() -> None:
     model = model_from(JOINT, check=False)
-    with pytest.raises(Unreachable, match="hold together"):
+    with pytest.raises(Unreachable, match="hold together") as caught:
         plan(model, None, {"door": "open", "heat": "on"})
+    assert caught.value.blocked == ()  # each value alone is reachable
 
 
 def test_budget_is_reported(washer: ApplianceModel) -> None:

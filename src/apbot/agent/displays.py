@@ -16,9 +16,9 @@ from typing import Any, get_args
 
 from apbot.agent.infer import Dark, Unread, infer_template
 from apbot.agent.reader import DisplayReader
-from apbot.agent.repair import RepairError, set_display
-from apbot.agent.session import Session, loose
-from apbot.model.display import display_value
+from apbot.agent.repair import RepairError, drop_indicator, set_display
+from apbot.agent.session import Executed, Session, loose
+from apbot.model.display import display_value, lamp_for
 from apbot.model.domain import AnyVariable
 from apbot.model.schema import DiscreteVariable, TimeStyle, TimeVariable
 
@@ -120,6 +120,35 @@ class DisplayLearner:
             return False
         session.adopt(new, f"{name} {value!r} is shown as {word!r}", session.belief.pointer())
         return True
+
+    def no_lamp(self, done: Executed) -> bool:
+        """A setting the belief shows as a lamp on every screen, predicted lit with a value
+        it has, read unlit from a display that does not show the lamp's text while another
+        screen is up: the display shows the setting on its own screen only (a reader that
+        took "POWER 1000 W" for a lamp). Drop the lamp (once per setting); True when the
+        belief changed."""
+        session = self.session
+        seen = done.seen
+        model = session.belief.model
+        if seen is None or seen.unknown or seen.blank or not seen.screens:
+            return False
+        for name, (predicted, observed) in done.surprises.items():
+            if name not in model.display.indicators or observed is not None or predicted is None:
+                continue
+            spec = model.variables[name]
+            lamp = lamp_for(spec, name, predicted, tuple(session.domain_values(name)))
+            if not lamp or lamp.casefold() in seen.text.casefold() or seen.showing(name):
+                continue
+            if not session.budget.once("template", f"lamp:{name}"):
+                continue
+            try:
+                new = drop_indicator(model, name)
+            except RepairError:
+                continue
+            session.adopt(new, f"{name} has no lamp: shown on its own screen only", None)
+            session.belief.set_value(name, predicted)  # not seen otherwise: keep the belief
+            return True
+        return False
 
     def read(self, name: str, text: str) -> Any:
         """``name``'s value in ``text`` under the (repaired) belief, or None."""

@@ -13,7 +13,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
-from apbot.agent.repair import RepairError, add_guard, allow, disallow
+from apbot.agent.repair import RepairError, add_guard, allow, allow_all, disallow
 from apbot.agent.session import MISSING, Executed, Session
 from apbot.model.display import OFF_WORDS
 from apbot.model.schema import DiscreteVariable
@@ -36,6 +36,11 @@ class GuardLearner:
         self.session = session
         # (guard condition, key) pairs seen refused: no relaxation may suppose them allowed
         self.witnessed: set[tuple[str, str]] = set()
+        # on the belief ``_hopeless_on``: (state, goal) pairs no relaxation can help, and the
+        # goals every relaxation was tried for in vain
+        self._hopeless_on: CompiledModel | None = None
+        self._hopeless_for: set[tuple[Any, str]] = set()
+        self._tried_for: set[str] = set()
 
     def explain(self, refused: Executed) -> bool:
         """A refusal whose display is one of the belief's guard messages: believe that guard
@@ -268,16 +273,24 @@ class GuardLearner:
             {a for s in steps if s.variable in target for a in s.actions},
             key=lambda a: (not any(s.variable in tested for s in steps if a in s.actions), a),
         )
-        tried = 0
         # a guard the agent wrote itself guessed every other key refused; the reader's own
         # guards come from the manual: suppose the guess wrong first
         order = sorted(enumerate(model.guards), key=lambda item: item[1].name != LEARNT)
-        for action, (index, guard) in ((a, g) for a in needed for g in order):
-            if action in guard.only or tried >= MAX_RELAXATIONS:
-                continue
-            if (_condition(guard.when), action) in self.witnessed:
-                continue  # seen refused there: no supposing
-            tried += 1
+        candidates = [
+            (index, action)
+            for action in needed
+            for index, guard in order
+            if action not in guard.only and (_condition(guard.when), action) not in self.witnessed
+        ][:MAX_RELAXATIONS]
+        if self._hopeless_on is not session.belief.compiled:
+            self._hopeless_on = session.belief.compiled
+            self._hopeless_for, self._tried_for = set(), set()
+        goal = repr(sorted(target.items()))
+        # each guess tried in vain for this goal on this belief: the same guards keep it out
+        # from the next state too (another plan cycle, the same failure) — until a repair
+        if goal in self._tried_for or not candidates or self._hopeless(candidates, target):
+            return False
+        for index, action in candidates:
             try:
                 variant = allow(model, index, action)
                 # a small search each: the variant is a guess, and a throwaway compilation
@@ -286,10 +299,34 @@ class GuardLearner:
                 continue
             if not session.budget.once("guard", f"relax:{index}:{action}"):
                 continue
+            guard = model.guards[index]
             label = guard.name or f"guard {index}"
             session.adopt(
                 variant, f"{label} may let {action} work (to be seen)", session.belief.pointer()
             )
+            return True
+        self._tried_for.add(goal)
+        return False
+
+    def _hopeless(self, candidates: list[tuple[int, str]], target: dict[str, Any]) -> bool:
+        """Whether no single relaxation can make ``target`` reachable: the model with all of
+        them at once (which can do whatever any one can) has no plan — a value no key leads
+        to, or a search that ran out, not one that gave up. One search instead of a dozen
+        speculative ones, remembered for the same belief, state and goal (the caller resets
+        the memory when the belief changes)."""
+        session = self.session
+        key = (session.belief.state, repr(sorted(target.items())))
+        if key in self._hopeless_for:
+            return True
+        try:
+            union = allow_all(session.belief.model, candidates)
+            plan(CompiledModel(union), session.belief.state, target, RELAX_BUDGET)
+        except RepairError:
+            return False
+        except Unreachable as exc:
+            if exc.budget_hit:
+                return False  # too costly to say: try them one by one
+            self._hopeless_for.add(key)
             return True
         return False
 

@@ -423,7 +423,7 @@ class ClosedLoop:
                 known = exc
             self._plans[key] = known
         if isinstance(known, Unreachable):
-            raise Unreachable(known.reason, known.budget_hit)
+            raise known.again()
         return known
 
     def _programmes_first(self, found: Plan, target: dict[str, Any]) -> Plan:
@@ -526,7 +526,9 @@ class ClosedLoop:
                 n: "(unreadable)" if o is UNREADABLE else o for n, (_, o) in done.surprises.items()
             },
         )
-        if not done.refused and self.splitter.split(done):
+        if not done.refused and self.displays.no_lamp(done):
+            pass  # plan again, reading the setting on its own screen only
+        elif not done.refused and self.splitter.split(done):
             pass  # plan again with the procedure the key really starts
         elif (
             not done.refused

@@ -16,6 +16,7 @@ from apbot.agent.repair import (
     RepairError,
     drop_action,
     drop_dependence,
+    entry_then_keys,
     insert_step,
     move_action,
     set_effects,
@@ -209,6 +210,63 @@ class ProcedureRepairer:
             if back is not None:
                 note += f", and {stuck.name} goes the other way ({back})"
             session.adopt(new, note, pointer)
+            session.belief.set_value(name, shown)
+            return True
+        return self._entry_then_steppers(name, pointer, stuck)
+
+    def _entry_then_steppers(
+        self, name: str, pointer: tuple[str, int], stuck: PlannedAction
+    ) -> bool:
+        """The step's only key brings the setting up and leaves it as it is: it may be an
+        entry key, with the panel's stepping keys (+ and − of another procedure) adjusting
+        the setting after it. With the setting on the display (brought up again after a probe
+        took it away), press each such pair's first key once (three at most); the first that
+        moves it makes the step an entry press followed by that pair's step. Only for a key
+        believed to step the setting: a toggle pressed again would undo itself."""
+        session = self.session
+        model = session.belief.model
+        feature, index = pointer
+        if model.features[feature][index].actions != [stuck.name]:
+            return False
+        if session.effect(pointer, stuck.name) not in ("next", "prev"):
+            return False  # a toggle pressed again would undo itself (a switch off)
+        if session.shown(name) in (MISSING, None):
+            return False  # the key left the setting off the display: no stepping to see
+        pairs = []
+        for other, steps in model.features.items():
+            for j, step in enumerate(steps):
+                if (other, j) == pointer or step.variable is None:
+                    continue
+                effects = {a: session.effect((other, j), a) for a in step.actions}
+                moving = {a: str(e) for a, e in effects.items() if e in ("next", "prev")}
+                fits = moving and stuck.name not in moving and set(moving) <= session.offered
+                if fits and moving not in pairs:
+                    pairs.append(moving)
+        for moving in pairs[:3]:
+            before = session.shown(name)
+            if before in (MISSING, None):  # a probe took the display elsewhere: bring it back
+                before = session.press(stuck, exploring=True).observed(name)
+                if before in (MISSING, None):
+                    return False
+            key = next(iter(moving))
+            probe = session.press(session.planned(key), exploring=True)
+            shown = probe.observed(name)
+            if not probe.feedback.accepted or shown is MISSING or shown in (None, before):
+                continue
+            effect = self._effect_shown(feature, index, before, shown)
+            if effect not in ("next", "prev"):
+                continue
+            flip = {"next": "prev", "prev": "next"}
+            mapping = moving if effect == moving[key] else {a: flip[e] for a, e in moving.items()}
+            try:
+                new = entry_then_keys(model, feature, index, mapping)
+            except RepairError as exc:
+                session.episode.log("repair", f"could not make {stuck.name} an entry: {exc}")
+                return False
+            keys = ", ".join(mapping)
+            session.adopt(
+                new, f"{stuck.name} only brings {name} up; {keys} adjust it", (feature, index + 1)
+            )
             session.belief.set_value(name, shown)
             return True
         return False

@@ -225,7 +225,7 @@ class DisplayReader:
             found = [
                 h
                 for p in self._patterns
-                if p.search is not None and (h := self._match(p, main, parents, True))
+                if p.search is not None and (h := self._match(p, main, parents, True, text))
             ]
         if not found and text.strip():  # a word the belief does not know
             found = [h for p in self._loose if (h := self._match(p, text, parents, False))]
@@ -240,7 +240,12 @@ class DisplayReader:
         return text
 
     def _match(
-        self, pattern: _Pattern, text: str, parents: dict[str, Any], partial: bool
+        self,
+        pattern: _Pattern,
+        text: str,
+        parents: dict[str, Any],
+        partial: bool,
+        whole: str = "",
     ) -> Hypothesis | None:
         regex = pattern.search if partial else pattern.regex
         assert regex is not None
@@ -274,6 +279,9 @@ class DisplayReader:
             if allowed_by_lamps is None:
                 return None
             lamps = allowed_by_lamps
+        elif not self._dark(screen):  # lamps among words the belief does not know
+            rest = whole[: match.start()] + "  " + whole[match.end() :] if whole else ""
+            lamps = self._lamps_among(rest, screen.variable)
         for name, allowed in lamps.items():  # a value the screen printed wins over its lamp
             if name in values and values[name] not in allowed:
                 return None
@@ -327,6 +335,15 @@ class DisplayReader:
             if chosen and len(chosen) < len(by_value):
                 allowed[name] = frozenset(chosen)
         return allowed
+
+    def _lamps_among(self, rest: str, focus: str | None) -> dict[str, frozenset[Any]]:
+        """Indicator values allowed by the lamp words found as whole words in ``rest`` (the
+        text around a screen found inside it): a lamp whose words are nowhere on a lit
+        display is unlit, whatever else the display shows that the belief cannot print."""
+        whole_words = _regex(rf"(?<!\w)(?:{self._lamp_words.pattern})(?!\w)", re.IGNORECASE)
+        found = " ".join(whole_words.findall(rest))
+        allowed = self._lamps(found, focus)
+        return allowed or {}
 
     # --- compiled once ---------------------------------------------------------------------
 

@@ -151,6 +151,21 @@ def insert_step(
     return _rebuild(data)
 
 
+def entry_then_keys(
+    model: ApplianceModel, feature: str, index: int, effects: dict[str, str]
+) -> ApplianceModel:
+    """The step's key only brings its setting up; ``effects``' keys adjust it, in a step of
+    their own after it (POWER, then + and −)."""
+    data = _dump(model)
+    steps = data["features"][feature]
+    old = steps[index]
+    entry = {"actions": list(old["actions"]), "note": "learnt from feedback"}
+    adjust = {k: v for k, v in old.items() if k not in ("actions", "effect", "note", "on_entry")}
+    adjust.update(actions=list(effects), effect=dict(effects), note="learnt from feedback")
+    steps[index : index + 1] = [entry, adjust]
+    return _rebuild(data)
+
+
 def set_entry_format(model: ApplianceModel, name: str, fmt: str) -> ApplianceModel:
     """Read a keypad variable's typed digits in another format (``mm:ss`` for ``minutes``)."""
     data = _dump(model)
@@ -256,6 +271,17 @@ def allow(model: ApplianceModel, guard: int, action: str) -> ApplianceModel:
     """A guard lets ``action`` through after all."""
     data = _dump(model)
     data["guards"][guard]["only"] = [*data["guards"][guard]["only"], action]
+    return _rebuild(data)
+
+
+def allow_all(model: ApplianceModel, pairs: Sequence[tuple[int, str]]) -> ApplianceModel:
+    """Every guard ``index`` lets its ``action`` through: the union of :func:`allow`'s
+    variants, which can do everything any one of them can."""
+    data = _dump(model)
+    for index, action in pairs:
+        only = data["guards"][index]["only"]
+        if action not in only:
+            data["guards"][index]["only"] = [*only, action]
     return _rebuild(data)
 
 
@@ -543,6 +569,14 @@ def add_indicator(model: ApplianceModel, name: str) -> ApplianceModel:
     indicators = data.setdefault("display", {}).setdefault("indicators", [])
     if name not in indicators:
         indicators.append(name)
+    return _rebuild(data)
+
+
+def drop_indicator(model: ApplianceModel, name: str) -> ApplianceModel:
+    """The display has no lamp for this setting: it shows it only on its own screen."""
+    data = _dump(model)
+    display = data.get("display") or {}
+    display["indicators"] = [n for n in display.get("indicators", []) if n != name]
     return _rebuild(data)
 
 

@@ -14,6 +14,7 @@ text means in the belief's terms.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field, replace
 from typing import Any
 
@@ -22,7 +23,7 @@ from apbot.agent.budget import Budget
 from apbot.agent.environment import Environment, Feedback
 from apbot.agent.episode import TaskContext
 from apbot.agent.perception import MISSING, UNREADABLE, Perceiver, Seen
-from apbot.model.display import can_show
+from apbot.model.display import can_show, display_value
 from apbot.model.domain import ValueProblem, parse_value
 from apbot.model.effects import default_effect
 from apbot.model.schema import Add, ApplianceModel, DiscreteVariable, Skip, TimeVariable
@@ -184,6 +185,13 @@ class Session:
             )
         buffer = self.belief.state.buffer
         seen = self.perceive(feedback, expected)
+        if variable and variable in expected.values and silent(self.belief.model, variable):
+            unsaid = seen.observed(variable) is MISSING and variable not in seen.candidates
+            readable = bool(seen.screens) and not (seen.unknown or seen.blank)
+            if unsaid and readable and predicted in silent(self.belief.model, variable):
+                # the value the key was to set prints nothing, and a readable display does not
+                # show the word of any other value: it shows that value by its silence
+                seen.values[variable] = predicted
         surprises = {
             name: (self.belief.value(name), value)
             for name, value in (*seen.values.items(), *seen.outside.items())
@@ -225,6 +233,8 @@ class Session:
             # would do — only what the display shows (``pointer`` still says where it meant to go)
             self.belief.state = before_state
         self.sync(seen)
+        if seen.partial and not feedback.values:
+            self._suspect_unread(seen)
         return Executed(
             action,
             pointer,
@@ -241,6 +251,44 @@ class Session:
             unseen,
             shown_before,
         )
+
+    def _suspect_unread(self, seen: Seen) -> None:
+        """A screen found inside text the belief cannot print. A setting whose label is in that
+        text, unread, is shown in a way the belief cannot read; a time in it that is not what
+        the belief holds for a time setting shown before may be that setting, changed where
+        the belief saw no reason (a CANCEL that also clears the delay). Either needs seeing
+        again before anything rests on it."""
+        read = seen.shown()
+        for name, spec in self.belief.model.variables.items():
+            label = spec.display_label(name)
+            if name in read or not spec.visible or len(label) < 3:
+                continue
+            found = re.search(rf"(?<!\w){re.escape(label)}(?!\w)", seen.text, re.IGNORECASE)
+            if found is None:
+                continue
+            after = seen.text[found.end() :].strip().casefold()
+            printed = display_value(spec, self.belief.value(name)).strip().casefold()
+            if not (printed and after.startswith(printed)):
+                # its label is on the display, followed by words the belief cannot read as
+                # what it holds: that rests on nothing the display said
+                self.unread.add(name)
+        times = re.findall(r"(?<![\d:])\d{1,2}:\d{2}(?::\d{2})?(?![\d:])", seen.text)
+        if not times:
+            return
+        for name, spec in self.belief.model.variables.items():
+            if not isinstance(spec, TimeVariable) or name in read:
+                continue
+            if name not in self.evidence or name in self.stale:
+                continue
+            believed = magnitude(spec, self.belief.value(name))
+            for text in times:
+                try:
+                    shown = magnitude(spec, parse_value(spec, text))
+                except ValueProblem:
+                    continue
+                if shown is not None and shown != believed:
+                    self.stale.add(name)
+                    break
 
     def planned(self, action: str) -> PlannedAction:
         spec = self.belief.model.actions[action]
@@ -395,6 +443,21 @@ class Session:
         """After presses the belief cannot follow, assume no procedure is in progress."""
         self.belief.set_pointer(None)
         self.reread()
+
+
+def silent(model: ApplianceModel, name: str) -> frozenset[Any]:
+    """The values of discrete ``name`` that its screen prints as nothing ("off" of a lock
+    shown as LOCKED or not at all), when every other value prints a word of its own; empty
+    otherwise."""
+    spec = model.variables.get(name)
+    if not isinstance(spec, DiscreteVariable) or not isinstance(spec.show, dict):
+        return frozenset()
+    texts = {value: (spec.show.get(str(value)) or "").strip() for value in spec.values or []}
+    quiet = frozenset(v for v, text in texts.items() if not text)
+    words = [text.casefold() for text in texts.values() if text]
+    if len(quiet) != 1 or len(set(words)) != len(words):
+        return frozenset()
+    return quiet
 
 
 def _locks(model: ApplianceModel) -> set[str]:

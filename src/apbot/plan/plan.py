@@ -14,7 +14,7 @@ closed loop compares with what it observes.
 from __future__ import annotations
 
 import time
-from collections.abc import Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -30,12 +30,42 @@ __all__ = ["GoalError", "MacroAction", "Plan", "PlannedAction", "Unreachable", "
 
 
 class Unreachable(Exception):
-    """The goal cannot be reached from this state; ``reason`` says why, in plain words."""
+    """The goal cannot be reached from this state; ``reason`` says why, in plain words.
 
-    def __init__(self, reason: str, budget_hit: bool = False) -> None:
-        super().__init__(reason)
-        self.reason = reason
+    ``blocked`` names the goal variables whose goal value no action leads to at all, whatever
+    the guards allow: no guard relaxed can make such a goal reachable. ``reason`` may be
+    given as a function, called the first time it is read — its "it can reach …" walk costs
+    more than many a failed search, and callers that only try a guess never read it.
+    """
+
+    def __init__(
+        self,
+        reason: str | Callable[[], str],
+        budget_hit: bool = False,
+        blocked: tuple[str, ...] = (),
+        generated: int = 0,
+    ) -> None:
+        super().__init__()
+        self._reason = reason
         self.budget_hit = budget_hit  # the search gave up: the goal may still be reachable
+        self.blocked = blocked
+        self.generated = generated  # search successors spent finding out
+
+    @property
+    def reason(self) -> str:
+        if not isinstance(self._reason, str):
+            self._reason = self._reason()
+        return self._reason
+
+    def __str__(self) -> str:
+        return self.reason
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        return (Unreachable, (self.reason, self.budget_hit, self.blocked, self.generated))
+
+    def again(self) -> Unreachable:
+        """A fresh exception with the same answer (its reason still unread if it was)."""
+        return Unreachable(self._reason, self.budget_hit, self.blocked, self.generated)
 
 
 @dataclass(frozen=True)
@@ -72,6 +102,7 @@ class Plan:
     macro_actions: tuple[MacroAction, ...]
     expanded: int = 0
     seconds: float = 0.0
+    generated: int = 0  # search successors spent finding it
 
     @property
     def actions(self) -> list[PlannedAction]:
@@ -123,11 +154,21 @@ def plan(
     try:
         result = search.run(start)
     except SearchExhausted as exc:
+        blocked = () if exc.budget_hit else tuple(search.bound.blocking(start))
         raise Unreachable(
-            _explain(compiled, search, start, canonical, exc), exc.budget_hit
+            _explainer(compiled, search, start, canonical, exc, blocked),
+            exc.budget_hit,
+            blocked,
+            search.generated,
         ) from None
     macro_actions = _macro_actions(compiled, start, result.visits)
-    found = Plan(canonical, macro_actions, result.expanded, time.perf_counter() - started)
+    found = Plan(
+        canonical,
+        macro_actions,
+        result.expanded,
+        time.perf_counter() - started,
+        search.generated,
+    )
     _verify(compiled, start, target, found)
     return found
 
@@ -219,20 +260,35 @@ def _verify(compiled: CompiledModel, start: State, goal: CompiledGoal, found: Pl
         raise AssertionError("planner bug: the plan does not reach the goal on the model")
 
 
-def _explain(
+def _explainer(
     compiled: CompiledModel,
     search: TaskSearch,
     start: State,
     goal: dict[str, Any],
     exc: SearchExhausted,
-) -> str:
-    """Why a goal is out of reach, in terms of the model."""
+    blocked: tuple[str, ...],
+) -> str | Callable[[], str]:
+    """Why a goal is out of reach, in terms of the model: at once when that is cheap, else
+    as a function that works it out when asked (it holds no reference to the search)."""
     if exc.budget_hit:
         return (
             f"gave up after expanding {exc.expanded} search states (budget {search.budget}"
             f" states, {search.work} successors); the goal may be reachable but is too costly"
             " to plan — raise the budget"
         )
+    most, expanded = search.most, exc.expanded
+    return lambda: _explain(compiled, start, goal, blocked, most, expanded)
+
+
+def _explain(
+    compiled: CompiledModel,
+    start: State,
+    goal: dict[str, Any],
+    blocked: tuple[str, ...],
+    most: int | None,
+    expanded: int,
+) -> str:
+    """Why a goal is out of reach (the search ran out, not its budget)."""
     declared = [
         f"{name} cannot become {goal[name]!r}: the model declares it unreachable "
         f"(variables.{name}.unreachable: the appliance sets it itself, no key does)"
@@ -242,7 +298,6 @@ def _explain(
     ]
     if declared:
         return "; ".join(declared)
-    blocked = search.bound.blocking(start)
     if blocked:
         parts = []
         for name in blocked:
@@ -254,11 +309,11 @@ def _explain(
                 f"the model leads there (it can reach {shown})"
             )
         return "; ".join(parts)
-    if search.most is not None:
-        return f"no plan of at most {search.most} actions reaches the goal"
+    if most is not None:
+        return f"no plan of at most {most} actions reaches the goal"
     names = ", ".join(f"{k}={v}" for k, v in goal.items())
     return (
-        f"no action sequence makes {names} hold together (searched {exc.expanded} states);"
+        f"no action sequence makes {names} hold together (searched {expanded} states);"
         " a guard or a programme restriction keeps them apart"
     )
 
