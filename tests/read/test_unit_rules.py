@@ -1,0 +1,95 @@
+"""Where a setting's unit is written down in a commercial manual other than beside its range:
+the header of the programme table's column, a key legend or heading that calls the key a
+timer. Each on a small manual of our own in that style."""
+
+from __future__ import annotations
+
+from apbot.model.domain import all_values
+from apbot.read import read_manual
+from apbot.read.goal import parse_instruction
+
+# a twin-tub washer: the per-course limits stand in a table whose headers carry the units
+WASHER = """# NORDWASH TW-8 Twin-Tub Washer — Owner's Manual
+
+⚠ Unplug the washer before cleaning. Do not wash waterproof items.
+
+## The keys
+
+| Key | What it does |
+|---|---|
+| **PROGRAM** | Chooses the programme. |
+| **SOAK** | Changes the soaking time. |
+| **AGITATE** | Changes the agitation time. |
+| **FINISH** | Sets in how many hours the programme ends. |
+| **START** | Starts or pauses the programme. |
+
+## Programmes
+
+| Programme | Suited to | Soak (min) | Agitate (min) |
+|---|---|---|---|
+| Standard | Everyday laundry | 0 – 20 (10) | 5 – 15 (10) |
+| Strong | Very dirty clothes | 10 – 40 (20) | 10 – 20 (15) |
+| Gentle | Wool, silk | 0 – 10 (0) | 3 – 6 (3) |
+
+Press SOAK or AGITATE and every press gives the next value; after the longest the shortest
+comes back.
+
+## Finishing later
+
+Press FINISH: the display shows the hours, 2 to 12.
+"""
+
+WASHER_ACTIONS = ["press_program", "press_soak", "press_agitate", "press_finish", "press_start"]
+
+
+def test_a_column_headed_with_its_unit_gives_the_dependent_amount_that_unit() -> None:
+    model = read_manual(WASHER, WASHER_ACTIONS).model
+    soak = model.variables["soak"]
+    assert soak.depends_on == "program"
+    assert getattr(soak, "unit", "") == "min"
+    assert getattr(model.variables["agitate"], "unit", "") == "min"
+
+
+def test_a_duration_bound_to_its_noun_goes_to_that_setting_not_the_hour_timer() -> None:
+    model = read_manual(WASHER, WASHER_ACTIONS).model
+    goal = parse_instruction(
+        model, "Strong programme with a 30-minute soak and 12 minutes of agitation, start it."
+    )
+    assert goal.get("soak") == 30 and goal.get("agitate") == 12
+    assert "finish" not in goal
+
+
+# a bread maker whose ready-in key is called a timer only in its legend and in a heading,
+# and whose limit is told only on the specifications line
+BREAD = """# CRUSTA BM-15 Bread Maker
+
+| Pad | Use |
+|---|---|
+| MENU | Selects one of the 12 menus |
+| RESERVE | Timer: hours until the bread is done |
+| START/STOP | Starts or stops the menu |
+
+## Ready-in timer (RESERVE)
+
+Touch RESERVE repeatedly to choose in how many hours the bread should be done. Each touch adds
+time; past the maximum the timer returns to 0.
+
+## Specifications
+
+230 V ~ 50 Hz · 600 W · loaf 1.0–2.0 LB · timer up to 13 h in whole hours · 12 menus
+"""
+
+
+def test_a_key_its_legend_calls_a_timer_takes_the_timer_range_of_the_specifications() -> None:
+    model = read_manual(BREAD, ["press_menu", "press_reserve", "press_start_stop"]).model
+    reserve = model.variables["reserve"]
+    assert getattr(reserve, "unit", "") == "h"
+    values = all_values(reserve)
+    assert values[0] == 0 and values[-1] == 13  # not the loaf's 1.0–2.0 LB on the same line
+
+
+def test_a_legend_that_only_mentions_a_timer_later_does_not_make_a_key_a_time() -> None:
+    text = BREAD.replace("Timer: hours until the bread is done", "Crust shade; see the timer")
+    text = text.replace("## Ready-in timer (RESERVE)", "## Crust shade (RESERVE)")
+    model = read_manual(text, ["press_menu", "press_reserve", "press_start_stop"]).model
+    assert getattr(model.variables["reserve"], "unit", "") != "h"
