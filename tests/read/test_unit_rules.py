@@ -93,3 +93,39 @@ def test_a_legend_that_only_mentions_a_timer_later_does_not_make_a_key_a_time() 
     text = text.replace("## Ready-in timer (RESERVE)", "## Crust shade (RESERVE)")
     model = read_manual(text, ["press_menu", "press_reserve", "press_start_stop"]).model
     assert getattr(model.variables["reserve"], "unit", "") != "h"
+
+
+def test_numbers_read_bare_take_the_unit_printed_beside_them_where_the_setting_is_named() -> None:
+    text = """# HEARTH BM-3 Bread Maker
+
+| Pad | Use |
+|---|---|
+| SIZE | Chooses the size of the finished loaf. |
+| START | Starts the programme. |
+
+The display points at the printed sizes (450 / 680 / 900) with a small arrow.
+
+| Programme | Time | Size |
+|---|---|---|
+| Basic | 3:00 | 450 / 680 / 900 g |
+| Rapid | 1:58 | 680 / 900 g |
+"""
+    model = read_manual(text, ["press_size", "press_start"]).model
+    size = model.variables["size"]
+    assert getattr(size, "unit", "") == "g"
+    goal = parse_instruction(model, "A 680 g loaf please.")
+    assert goal.get("size") == 680
+
+
+def test_a_bare_number_setting_takes_no_unit_from_a_line_that_does_not_name_it() -> None:
+    text = """# HEARTH BM-3 Bread Maker
+
+| Pad | Use |
+|---|---|
+| CRUST | Chooses the crust: 1, 2 or 3 bars. |
+| START | Starts the programme. |
+
+Rated power 3 W in standby.
+"""
+    model = read_manual(text, ["press_crust", "press_start"]).model
+    assert getattr(model.variables["crust"], "unit", "") == ""
