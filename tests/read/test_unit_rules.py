@@ -129,3 +129,37 @@ Rated power 3 W in standby.
 """
     model = read_manual(text, ["press_crust", "press_start"]).model
     assert getattr(model.variables["crust"], "unit", "") == ""
+
+
+# a multicooker whose delay is keyed in on the number pad; its step is told in a sentence led by
+# the setting's name, three sentences after the key is named
+COOKER = """# VESTA MC-10 Multicooker
+
+## 5.3 Delayed cooking
+
+1. Choose the program.
+2. Touch DELAY. The display shows 0:00.
+3. Enter the hours and minutes on the number pad, for example 6, 3, 0 for 6 hours 30 minutes.
+The delay is set in half-hour units.
+4. Touch START.
+
+The delay can be used for up to 12 hours.
+"""
+
+
+def test_a_step_in_half_hour_units_told_by_a_sentence_led_by_the_settings_name() -> None:
+    actions = ["press_delay", "press_start"] + [f"press_{d}" for d in range(10)]
+    model = read_manual(COOKER, actions).model
+    delay = model.variables["delay"]
+    assert delay.type == "time"  # keyed in as hours and minutes
+    values = all_values(delay)
+    assert "06:30:00" in values and "06:15:00" not in values and values[-1] == "12:00:00"
+    goal = parse_instruction(model, "Have it ready in six and a half hours, start it.")
+    assert goal.get("delay") == "06:30:00"
+
+
+def test_units_without_a_unit_of_measure_are_no_step() -> None:
+    from apbot.read.values import find_step
+
+    assert find_step("The delay is set in half-hour units.") == (0.5, "h")
+    assert find_step("The filters are sold in 2 units.") is None

@@ -141,6 +141,13 @@ class EvidenceReader(ListReader):
                     ev.step = ev.step or (bounds.step, bounds.unit)
                     break
         own_words = {w for t in tokens for w in words(t.replace("_", " ")) if len(w) >= 3}
+        if ev.step is None and own_words:  # "The delay is set in half-hour units.", anywhere
+            led = re.compile(rf"^(?:the\s+)?(?:{'|'.join(map(re.escape, own_words))})\b", re.I)
+            for i, unit in enumerate(units):
+                step = None if unit.cells or not led.match(unit.text) else find_step(unit.text)
+                if step:
+                    ev.step, ev.step_at = step, i
+                    break
         if best_prio < 2.0 and own_words:  # "Mode lamps (left to right): NORMAL CONT. FAN"
             for i, unit in enumerate(units):
                 lamps = LAMP_LIST_RE.match(unit.text)

@@ -86,8 +86,16 @@ def assign_amounts(
             set(words(name)) & TIME_WORDS
         )
         if digits and (timeish or not steppers):
+            step = ev.step
+            if step and step[1] == "h" and step[0] % 1:  # keyed in as hours and minutes
+                step = (step[0] * 60, "min")
             var = b.add_number(
-                name, lab, ev if ev.ranges else Evidence(ranges=[], step=ev.step), cyclic=False
+                name,
+                lab,
+                Evidence(**{**ev.__dict__, "step": step})
+                if ev.ranges
+                else Evidence(ranges=[], step=step, step_at=ev.step_at),
+                cyclic=False,
             )
             spec = b.variables[var]
             guessed = spec.get("ranges") == [["00:01:00", "01:00:00", 60]]  # nothing read

@@ -29,7 +29,7 @@ RANGE_RE = re.compile(
 TIME_RANGE_RE = re.compile(rf"(?<![\d:])({_TIME}){_DASH}({_TIME})(?![\d:])")
 UPTO_RE = re.compile(rf"\bup to\s+({NUM})\s*({UNIT})(?!\w)", re.IGNORECASE)
 STEP_RE = re.compile(
-    rf"(?:in\s+({NUM})\s*-?\s*({UNIT})?\s*(?:steps|increments|stages)"
+    rf"(?:in\s+({NUM})\s*-?\s*({UNIT})?\s*(?:steps|increments|stages|units)"
     rf"|(?:steps?|increments?|units?)\s+of\s+({NUM})\s*({UNIT})?"
     rf"|(?:each|every)\s+(?:press|touch|turn|click|tap|step)[^.;]*?"
     rf"(?:adds?|by|changes?[^.;]*?by|raises?|moves?[^.;]*?by)\s+(?:an?\s+|another\s+)?({NUM})?\s*({UNIT}))",
@@ -180,6 +180,8 @@ def find_step(text: str) -> tuple[float, str] | None:
     if not m:
         return None
     groups = m.groups()
+    if m.group(0).lower().endswith("units") and not groups[1]:
+        return None  # "in half-hour units" is a step, "sold in 2 units" is not
     for i in (0, 2, 4):
         raw, unit = groups[i], groups[i + 1]
         if raw is None and i == 4 and unit:
