@@ -142,9 +142,9 @@ class EvidenceReader(ListReader):
                     break
         own_words = {w for t in tokens for w in words(t.replace("_", " ")) if len(w) >= 3}
         if ev.step is None and own_words:  # "The delay is set in half-hour units.", anywhere
-            led = re.compile(rf"^(?:the\s+)?(?:{'|'.join(map(re.escape, own_words))})\b", re.I)
+            subject = re.compile(rf"^(?:the\s+)?(?:{'|'.join(map(re.escape, own_words))})\b", re.I)
             for i, unit in enumerate(units):
-                step = None if unit.cells or not led.match(unit.text) else find_step(unit.text)
+                step = None if unit.cells or not subject.match(unit.text) else find_step(unit.text)
                 if step:
                     ev.step, ev.step_at = step, i
                     break

@@ -86,15 +86,15 @@ def assign_amounts(
             set(words(name)) & TIME_WORDS
         )
         if digits and (timeish or not steppers):
-            step = ev.step
-            if step and step[1] == "h" and step[0] % 1:  # keyed in as hours and minutes
-                step = (step[0] * 60, "min")
+            keyed = ev.step
+            if keyed and keyed[1] == "h" and keyed[0] % 1:  # keyed in as hours and minutes
+                keyed = (keyed[0] * 60, "min")
             var = b.add_number(
                 name,
                 lab,
-                Evidence(**{**ev.__dict__, "step": step})
+                Evidence(**{**ev.__dict__, "step": keyed})
                 if ev.ranges
-                else Evidence(ranges=[], step=step, step_at=ev.step_at),
+                else Evidence(ranges=[], step=keyed, step_at=ev.step_at),
                 cyclic=False,
             )
             spec = b.variables[var]
