@@ -163,3 +163,21 @@ def test_units_without_a_unit_of_measure_are_no_step() -> None:
 
     assert find_step("The delay is set in half-hour units.") == (0.5, "h")
     assert find_step("The filters are sold in 2 units.") is None
+
+
+def test_a_step_that_changes_part_way_told_in_words_gives_two_pieces() -> None:
+    text = """# OKRA RC-2 Rice Cooker
+
+## Delayed start
+
+1. Choose the function.
+2. Press TIMER. 0:00 flashes.
+3. Press + or -. Up to two hours, each press changes the time by 15 minutes; beyond that it
+   changes by 1 hour. The longest delay is 12 hours.
+4. Press START.
+"""
+    model = read_manual(text, ["press_timer", "press_plus", "press_minus", "press_start"]).model
+    values = all_values(model.variables["timer"])
+    assert values[:3] == ["00:00:00", "00:15:00", "00:30:00"]
+    assert "01:45:00" in values and "02:15:00" not in values and "03:00:00" in values
+    assert values[-1] == "12:00:00"

@@ -36,6 +36,7 @@ from apbot.read.values import (
     find_initial,
     find_ranges,
     find_step,
+    find_two_steps,
 )
 
 
@@ -130,6 +131,12 @@ class EvidenceReader(ListReader):
                 init = find_initial(text)
                 if init:
                     ev.initial, ev.initial_at = init, i
+        for i in sorted(self.context(tokens)):  # "up to 1 h by 10 min; after that by 30 min"
+            window = [k for k in range(i, min(i + 4, len(units))) if not units[k].cells]
+            two = find_two_steps([units[k].text for k in window])
+            if two and _fits(two[0][0].unit, tokens):
+                ev.ranges, ev.range_at = two[0], window[two[1]]
+                break
         if not ev.ranges:
             for i in sorted(self.context(tokens)):  # the sentences that follow say the rest
                 bounds = find_bounds([u.text for u in units[i : i + 4]])
