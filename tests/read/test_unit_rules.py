@@ -181,3 +181,40 @@ def test_a_step_that_changes_part_way_told_in_words_gives_two_pieces() -> None:
     assert values[:3] == ["00:00:00", "00:15:00", "00:30:00"]
     assert "01:45:00" in values and "02:15:00" not in values and "03:00:00" in values
     assert values[-1] == "12:00:00"
+
+
+# a countertop oven whose TIME pad hands the keypad the cooking time; a table shows what to type
+OVEN = """# SOLANO CO-9 Countertop Oven
+
+The keypad (1 2 3 / 4 5 6 / 7 8 9 / 0) only responds after TEMP or TIME has been touched.
+
+## Entering the temperature
+
+1. Touch **TEMP**. The temperature flashes.
+2. Type the temperature on the keypad, 50 °C to 230 °C in steps of 5 degrees.
+
+## Entering the cooking time
+
+1. Touch **TIME**. The time flashes.
+2. Type the hours and minutes; the last two digits you type are the minutes:
+
+| You type | Display | Cooking time |
+|---|---|---|
+| 9 | 0:09 | 9 minutes |
+| 1 1 5 | 1:15 | 1 hour 15 minutes |
+| 4 0 0 | 4:00 | 4 hours |
+
+During cooking you may enter a new temperature or time (TEMP or TIME, then the digits), and
+switch the lamp on or off.
+"""
+OVEN_ACTIONS = ["press_temp", "press_time", "press_light"] + [f"press_{d}" for d in range(10)]
+
+
+def test_a_table_of_what_to_type_is_examples_not_the_values_there_are() -> None:
+    model = read_manual(OVEN, OVEN_ACTIONS).model
+    time = model.variables["time"]
+    assert time.type == "time"
+    assert getattr(time, "entry", None) is not None  # TIME, then the number keys
+    assert "00:10:00" in all_values(time)  # not only the three examples
+    entered = [f for f in model.features.values() if any("press_1" in s.actions for s in f)]
+    assert len(entered) == 2  # TEMP's and TIME's; no third time the digits set directly
