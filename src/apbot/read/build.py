@@ -31,7 +31,10 @@ from apbot.read.text import Manual
 from apbot.read.values import (
     Range,
     seconds,
+    unit_name,
 )
+
+_PRINTED_UNITS = r"kg|g|lbs?|ml|l|litres?|W|watts?|rpm|%"  # quantities, not times or degrees
 
 
 class Builder(EvidenceReader):
@@ -213,6 +216,11 @@ class Builder(EvidenceReader):
                 "label": label,
             }
         else:
+            if not unit and (found_unit := self._printed_unit(name, label, pieces[-1][1])):
+                unit = found_unit[0]
+                self.note(
+                    f"{subject}.unit", f"in {unit} (printed beside its values)", found_unit[1]
+                )
             spec = {
                 "type": "numeric",
                 "ranges": [[_tidy(lo), _tidy(hi), _tidy(st)] for lo, hi, st in pieces],
@@ -232,6 +240,27 @@ class Builder(EvidenceReader):
             self.note(f"{subject}.wrap", "stepping past the end wraps around (each press adds)")
         self.variables[name] = spec
         return name
+
+    def _printed_unit(self, name: str, label: str, high: float) -> tuple[str, int] | None:
+        """The unit printed after the setting's largest value where a table column or a
+        sentence names the setting ("| Loaf weight | … 500 / 750 / 1000 g |" for LOAF): a
+        quantity read from numbers alone ("(500 / 750 / 1000)") is in that unit."""
+        own = {w for w in words(name.replace("_", " ")) + words(label) if len(w) >= 3}
+        if not own:
+            return None
+        pattern = re.compile(rf"(?<![\d.,]){_tidy(high)}\s*({_PRINTED_UNITS})(?![\w°])", re.I)
+        for i, unit in enumerate(self.manual.units):
+            if unit.cells and unit.header and len(unit.header) == len(unit.cells):
+                places = [
+                    c for h, c in zip(unit.header, unit.cells, strict=True) if own & set(words(h))
+                ]
+            else:
+                places = [unit.text] if own & set(words(unit.text)) else []
+            for place in places:
+                m = pattern.search(place)
+                if m:
+                    return unit_name(m.group(1)), i
+        return None
 
     # --- the whole model --------------------------------------------------------------------
 

@@ -122,6 +122,7 @@ def apply_cases(b: Builder) -> None:
                         spec.pop(key, None)
                     spec["depends_on"] = parent
                     spec["cases"] = cases
+                    _header_unit(spec, header[column])
                     parents.add(parent)
                     children.add(name)
                     _no_toggle(b, name, cases)
@@ -197,6 +198,21 @@ def _gcd_step(step: float, values: dict[str, Any], low: float) -> float:
             g = gcd(g, int(v - low))
         return g or 1
     return 1 if all(float(v).is_integer() for v in values.values()) else 0.5
+
+
+HEADER_UNIT_RE = re.compile(
+    r"\(\s*(min|mins|minutes|h|hrs|hours|s|sec|°c|°f|%|rpm|w|g|kg|ml|l)\s*\)", re.I
+)
+
+
+def _header_unit(spec: dict[str, Any], header: str) -> None:
+    """A column headed with its unit ("Wash (min)", "Temp (°C)") gives an amount read without
+    one that unit, so that a goal's "24-minute wash" finds it."""
+    if spec.get("type") != "numeric" or spec.get("unit"):
+        return
+    m = HEADER_UNIT_RE.search(header)
+    if m:
+        spec["unit"] = unit_name(m.group(1))
 
 
 def _hms(total: int) -> str:

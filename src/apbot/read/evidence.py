@@ -36,6 +36,7 @@ from apbot.read.values import (
     find_initial,
     find_ranges,
     find_step,
+    find_two_steps,
 )
 
 
@@ -130,6 +131,12 @@ class EvidenceReader(ListReader):
                 init = find_initial(text)
                 if init:
                     ev.initial, ev.initial_at = init, i
+        for i in sorted(self.context(tokens)):  # "up to 1 h by 10 min; after that by 30 min"
+            window = [k for k in range(i, min(i + 4, len(units))) if not units[k].cells]
+            two = find_two_steps([units[k].text for k in window])
+            if two and _fits(two[0][0].unit, tokens):
+                ev.ranges, ev.range_at = two[0], window[two[1]]
+                break
         if not ev.ranges:
             for i in sorted(self.context(tokens)):  # the sentences that follow say the rest
                 bounds = find_bounds([u.text for u in units[i : i + 4]])
@@ -141,6 +148,13 @@ class EvidenceReader(ListReader):
                     ev.step = ev.step or (bounds.step, bounds.unit)
                     break
         own_words = {w for t in tokens for w in words(t.replace("_", " ")) if len(w) >= 3}
+        if ev.step is None and own_words:  # "The delay is set in half-hour units.", anywhere
+            subject = re.compile(rf"^(?:the\s+)?(?:{'|'.join(map(re.escape, own_words))})\b", re.I)
+            for i, unit in enumerate(units):
+                step = None if unit.cells or not subject.match(unit.text) else find_step(unit.text)
+                if step:
+                    ev.step, ev.step_at = step, i
+                    break
         if best_prio < 2.0 and own_words:  # "Mode lamps (left to right): NORMAL CONT. FAN"
             for i, unit in enumerate(units):
                 lamps = LAMP_LIST_RE.match(unit.text)
@@ -212,13 +226,29 @@ class EvidenceReader(ListReader):
             self._initial_from_values(ev, tokens)
         return ev
 
+    def _called_timer(self, label: str) -> bool:
+        """The key's legend row or a heading naming it calls it a timer ("| PRESET | Timer:
+        hours until the bread is ready |", "## Ready-in timer (PRESET)"): its amount is a time."""
+        if not label or label.upper() != label:
+            return False
+        named = re.compile(rf"\b{re.escape(label)}\b")
+        for unit in self.manual.units:
+            if named.search(unit.heading) and set(words(unit.heading)) & {"timer", "delay"}:
+                return True
+            legend = len(unit.cells) >= 2 and unit.cells[0].strip(" *`") == label
+            if legend and set(words(" ".join(unit.cells[1:]))[:3]) & {"timer", "delay"}:
+                return True
+        return False
+
     def _range_anywhere(self, name: str, label: str) -> tuple[Range, int] | None:
         """The first range in a sentence or table row naming the setting anywhere (a
         specifications table: "| Set temperature range | 40–100 °C |", a programme table's
         time column), its unit fitting the setting; advice ("suggested") is not a limit."""
         ws = {w for w in words(name.replace("_", " ")) + words(label) if len(w) >= 4}
-        if not ws or not _quantity_unit(name):
+        timed = not _quantity_unit(name) and self._called_timer(label)
+        if not ws or not (_quantity_unit(name) or timed):
             return None
+        fit = [name, "timer"] if timed else [name]
         if label and label.upper() == label and ws & (_TIMER_WORDS | {"time"}):
             # what the key's own sentences call its time ("TIMER  Push to set the Delay
             # Start timer"): a specification may name only that ("Delay start: up to 15 h")
@@ -236,7 +266,7 @@ class EvidenceReader(ListReader):
         def consider(score: int, text: str, i: int) -> None:
             nonlocal best
             for r in find_ranges(text):
-                if r.unit and _fits(r.unit, [name]) and r.high > r.low:
+                if r.unit and _fits(r.unit, fit) and r.high > r.low:
                     if best is None or score > best[0]:
                         best = (score, r, i)
                     return

@@ -30,6 +30,18 @@ from apbot.read.values import (
     quantity_run,
 )
 
+_TYPING_WORDS = frozenset({"type", "typed", "typing", "digits", "keystrokes", "keyed"})
+
+
+def _keyed_examples(units: list[Unit], i: int) -> bool:
+    """The table after unit ``i`` shows what to type for some values ("| You type | Display |
+    Cooking time |"): examples of entering a value on the keypad, not the values there are."""
+    k = i + 1
+    if k >= len(units) or not units[k].cells:
+        return False
+    header = units[k].header or units[k].cells
+    return any(set(words(cell)) & _TYPING_WORDS for cell in header)
+
 
 class ListReader:
     """The manual's units about the controls, and the value lists they hold."""
@@ -170,6 +182,8 @@ class ListReader:
             column = _next_table_column(units, i, index) or (
                 [] if index else _quantity_column(units, i)
             )
+            if _keyed_examples(units, i):
+                column = []  # "| You type | Display | Cooking time |": worked examples
             if column:
                 # a heading that only shares a word with the key ("Recipe: basic white loaf"
                 # for LOAF) introduces a table about something else unless its header says so

@@ -88,6 +88,7 @@ def assign(b: Builder) -> None:
         ):
             entry_keys.append(key)  # "rear timer (touch and hold)", then + / −
             continue
+        amount = bool(set(words(name)) & NUMERIC_WORDS)
         own_toggle = (
             ev.toggle_at is not None
             and any(ev.toggle_at in b.labels[c].mentions for c in key.controls if c in b.labels)
@@ -118,8 +119,10 @@ def assign(b: Builder) -> None:
             b.note(f"features.set_{var}", "each press steps to the next value", ev.each_press_at)
         elif ev.ranges or (ev.step and ev.toggle_at is None):
             entry_keys.append(key)
-        elif digits and ev.keypad_at is not None and ev.toggle_at is None:
+        elif digits and ev.keypad_at is not None and (ev.toggle_at is None or amount):
             entry_keys.append(key)  # "TIMER — the keypad then takes the time in minutes"
+            # (on/off wording near an amount's key is about something else: "… and switch the
+            # lamp on or off")
         elif (
             set(words(key.token)) & TIME_WORDS
             and ev.toggle_at is None

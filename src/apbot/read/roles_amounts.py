@@ -86,8 +86,16 @@ def assign_amounts(
             set(words(name)) & TIME_WORDS
         )
         if digits and (timeish or not steppers):
+            keyed = ev.step
+            if keyed and keyed[1] == "h" and keyed[0] % 1:  # keyed in as hours and minutes
+                keyed = (keyed[0] * 60, "min")
             var = b.add_number(
-                name, lab, ev if ev.ranges else Evidence(ranges=[], step=ev.step), cyclic=False
+                name,
+                lab,
+                Evidence(**{**ev.__dict__, "step": keyed})
+                if ev.ranges
+                else Evidence(ranges=[], step=keyed, step_at=ev.step_at),
+                cyclic=False,
             )
             spec = b.variables[var]
             guessed = spec.get("ranges") == [["00:01:00", "01:00:00", 60]]  # nothing read
@@ -150,7 +158,9 @@ def assign_amounts(
                 ],
             )
     cooking = any(re.search(r"\bcook(?:ing)? time\b", u.text, re.I) for u in b.manual.units)
-    named_cook = any("cook" in v for v in b.variables)
+    named_cook = any(  # a cooking time already keyed in after a TIME key is the one
+        "cook" in v or (v == "time" and "entry" in spec) for v, spec in b.variables.items()
+    )
     direct: str | None = None
     if digits and (not used_digits or (cooking and not named_cook)):
         var = b.add_number(

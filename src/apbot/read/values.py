@@ -29,7 +29,7 @@ RANGE_RE = re.compile(
 TIME_RANGE_RE = re.compile(rf"(?<![\d:])({_TIME}){_DASH}({_TIME})(?![\d:])")
 UPTO_RE = re.compile(rf"\bup to\s+({NUM})\s*({UNIT})(?!\w)", re.IGNORECASE)
 STEP_RE = re.compile(
-    rf"(?:in\s+({NUM})\s*-?\s*({UNIT})?\s*(?:steps|increments|stages)"
+    rf"(?:in\s+({NUM})\s*-?\s*({UNIT})?\s*(?:steps|increments|stages|units)"
     rf"|(?:steps?|increments?|units?)\s+of\s+({NUM})\s*({UNIT})?"
     rf"|(?:each|every)\s+(?:press|touch|turn|click|tap|step)[^.;]*?"
     rf"(?:adds?|by|changes?[^.;]*?by|raises?|moves?[^.;]*?by)\s+(?:an?\s+|another\s+)?({NUM})?\s*({UNIT}))",
@@ -159,6 +159,40 @@ def find_bounds(texts: list[str]) -> Range | None:
     return Range(low, high, unit, low) if low < high else None
 
 
+_TWO_STEPS_RE = re.compile(
+    rf"\bup to\s+(?:an?\s+)?({NUM})?\s*({UNIT})\b[^.;]*?\b(?:by|adds?)\s+(?:an?\s+)?({NUM})?"
+    rf"\s*({UNIT})\s*[;,]?\s*(?:and\s+)?(?:after that|beyond (?:that|it)|above (?:that|it)|"
+    rf"thereafter|then)\b[^.;]*?\b(?:by|adds?)\s+(?:an?\s+)?({NUM})?\s*({UNIT})(?!\w)",
+    re.IGNORECASE,
+)
+
+
+def find_two_steps(texts: list[str]) -> tuple[list[Range], int] | None:
+    """A time range whose step changes part way, told in words: "Up to one hour, each press
+    changes the delay by 10 minutes; after that it changes by 30 minutes. The longest delay is
+    24 hours." — two pieces in the smaller unit (0–60 min by 10, 60–1440 min by 30), and
+    the index of the text that told them."""
+    pieces = most = None
+    at = 0
+    for k, text in enumerate(texts):
+        if pieces is None:
+            pieces, at = _TWO_STEPS_RE.search(text), k
+            text = text[pieces.end() :] if pieces else ""
+        most = most or _MOST_RE.search(text) or UPTO_RE.search(text)
+    if not pieces or not most:
+        return None
+    g = pieces.groups()
+    amounts = [(number(g[k] or "1"), unit_name(g[k + 1])) for k in (0, 2, 4)]
+    amounts.append((number(most.group(1)), unit_name(most.group(2))))
+    if any(v is None or not is_time_unit(u) for v, u in amounts):
+        return None
+    unit = min((u for _v, u in amounts), key=lambda u: seconds(1, u))
+    middle, first, then, top = (seconds(v or 0, u) / seconds(1, unit) for v, u in amounts)
+    if not (0 < first < middle < top and then > 0):
+        return None
+    return [Range(0, middle, unit, first), Range(middle, top, unit, then)], at
+
+
 def _hmm(text: str) -> int:
     h, m = text.split(":")
     return int(h) * 3600 + int(m) * 60
@@ -180,6 +214,8 @@ def find_step(text: str) -> tuple[float, str] | None:
     if not m:
         return None
     groups = m.groups()
+    if m.group(0).lower().endswith("units") and not groups[1]:
+        return None  # "in half-hour units" is a step, "sold in 2 units" is not
     for i in (0, 2, 4):
         raw, unit = groups[i], groups[i + 1]
         if raw is None and i == 4 and unit:
