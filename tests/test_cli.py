@@ -143,6 +143,19 @@ def test_run_reads_any_instruction_and_says_it_reads_offline() -> None:
     assert "stored goal:" in text and "read goal:" in text and "SPL" in text, task.output
 
 
+def test_run_a_free_instruction_through_the_rendered_panel() -> None:
+    """`--feedback image` on an instruction that is no task: the panel photo is grounded and the
+    presses land on it, as in `bench` (it once crashed: the simulator refused image mode)."""
+    seen = runner.invoke(
+        app,
+        ["run", "kettle_1", "Warm the water to 80", "--belief", "true", "--feedback", "image"],
+    )
+    text = " ".join(seen.output.split())
+    assert seen.exception is None or isinstance(seen.exception, SystemExit), seen.exception
+    assert "read goal: temperature=80, heating=on" in text, seen.output
+    assert "the agent's verdict" in text, seen.output
+
+
 def test_report_on_a_directory_without_a_run_is_a_clear_error(tmp_path: Path) -> None:
     result = runner.invoke(app, ["report", str(tmp_path)])
     assert result.exit_code == 1 and "apbot bench" in result.output

@@ -937,7 +937,7 @@ def run_command(
     ] = None,
     seed: Annotated[int, typer.Option(help="Seed for fault injection.")] = 0,
     feedback: Annotated[
-        str, typer.Option(help="What the method perceives: display or values.")
+        str, typer.Option(help="What the method perceives: display, values or image.")
     ] = "display",
     show_exploration: Annotated[
         bool, typer.Option(help="Print every exploring press, not only a count.")
@@ -1036,7 +1036,15 @@ def _run_free(
         model, _faults = belief_model(found, belief, seed)
     except (BeliefError, ValueError) as exc:
         raise _fail(str(exc), 2) from None
-    env = SimulatorEnvironment(found.model, mode)
+    if mode == "image":  # the rendered panel, grounded from its photo, as `bench` does
+        from apbot.bench.runner import image_environment
+
+        try:
+            env: Any = image_environment(found, found.model.actions, seed)
+        except ImportError as exc:
+            raise _fail(f"--feedback image needs the vision extra ({exc})", 2) from None
+    else:
+        env = SimulatorEnvironment(found.model, mode)
     console.print(f"[bold]{found.id}[/bold] · {instruction}")
     done = operate(
         found.manual,
