@@ -114,6 +114,7 @@ def make_labels(image: np.ndarray, detection: Detection, window: Window | None) 
     _misread_symbols(image, labels)
     _shape_symbols(image, shapes, labels)
     _symbol_labels(image, shapes, labels, line, window)
+    labels = _missed_lines(image, labels, line, window)
     labels = _join_line_symbols(labels)
     _mark_ticks(detection, labels)
     for label in labels:
@@ -267,6 +268,56 @@ def _symbol_labels(image: np.ndarray, shapes: list[Candidate], labels: list[Labe
         ]
         control = min(owner, key=_area) if owner else None
         labels.append(Label(text or symbol, box, control, [symbol] if symbol else []))
+
+
+def _missed_lines(image: np.ndarray, labels: list[Label], line: float,
+                  window: Window | None) -> list[Label]:  # fmt: skip
+    """Short legends the page-wide text detector missed (a switch printed ``I / O``: thin,
+    widely spaced glyphs): a row of two or more glyph-sized ink blobs that no text label
+    covers is read again as one crop; when it reads clearly as text with a letter, digit or
+    slash in it, it becomes a text label and the symbols made of its glyphs (``O`` taken for
+    a clock face) go."""
+    gray = cv2.cvtColor(image, cv2.COLOR_RGB2GRAY)
+    size = int(max(15, 4 * line)) | 1
+    background = cv2.medianBlur(gray, min(size, 255))
+    ink = (cv2.absdiff(gray, background) > 45).astype(np.uint8)
+    reach = max(3, int(1.2 * line)) | 1
+    joined = cv2.morphologyEx(ink, cv2.MORPH_CLOSE, np.ones((3, reach), np.uint8))
+    count, _, stats, _ = cv2.connectedComponentsWithStats(joined, 8)
+    words = [lb.box for lb in labels if lb.tokens and not lb.symbols]
+    found: list[Label] = []
+    for i in range(1, count):
+        x, y, w, h, _ = (int(v) for v in stats[i])
+        box = (float(x), float(y), float(x + w), float(y + h))
+        if not (0.6 * line <= h <= 2.5 * line and 1.5 * h <= w <= 8 * line):
+            continue
+        if window is not None and _inside(_centre(box), window.box, 4):
+            continue
+        if any(_overlap(box, b) > 0.1 * _area(box) for b in words):
+            continue
+        parts, _, part_stats, _ = cv2.connectedComponentsWithStats(ink[y : y + h, x : x + w], 8)
+        glyphs = [k for k in range(1, parts) if part_stats[k][3] >= 0.5 * h]
+        if len(glyphs) < 2:
+            continue
+        pad = max(4, int(0.3 * h))
+        text, confidence = read_crop(
+            image[max(0, y - pad) : y + h + pad, max(0, x - pad) : x + w + pad]
+        )
+        if (
+            confidence < 0.9
+            or len(text.replace(" ", "")) < 2
+            or not any(c.isalnum() or c == "/" for c in text)
+        ):
+            continue
+        found.append(Label(text, box))
+    if not found:
+        return labels
+    kept = [
+        lb
+        for lb in labels
+        if lb.tokens or not any(_inside(_centre(lb.box), f.box, 2) for f in found)
+    ]
+    return kept + found
 
 
 def _edge_symbols(image: np.ndarray, label: Label) -> list[str]:
