@@ -162,7 +162,7 @@ def _pieces(image: np.ndarray, label: Label, controls: list[Candidate], line: fl
     crop = image[int(y0) : int(y1) + 1, int(x0) : int(x1) + 1]
     from apbot.vision.icons import ink_of
 
-    ink = ink_of(crop).any(axis=0)
+    ink: list[bool] = np.asarray(ink_of(crop)).any(axis=0).tolist()
     cuts = []
     for a, b in itertools.pairwise(xs):
         lo, hi = int(a - x0), int(b - x0)
