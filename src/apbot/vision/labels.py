@@ -162,7 +162,8 @@ def _pieces(image: np.ndarray, label: Label, controls: list[Candidate], line: fl
     crop = image[int(y0) : int(y1) + 1, int(x0) : int(x1) + 1]
     from apbot.vision.icons import ink_of
 
-    ink: list[bool] = np.asarray(ink_of(crop)).any(axis=0).tolist()
+    columns: np.ndarray = np.asarray(ink_of(crop)).any(axis=0)
+    ink = [bool(v) for v in columns]
     cuts = []
     for a, b in itertools.pairwise(xs):
         lo, hi = int(a - x0), int(b - x0)
