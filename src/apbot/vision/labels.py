@@ -162,7 +162,7 @@ def _pieces(image: np.ndarray, label: Label, controls: list[Candidate], line: fl
     crop = image[int(y0) : int(y1) + 1, int(x0) : int(x1) + 1]
     from apbot.vision.icons import ink_of
 
-    columns: np.ndarray = np.asarray(ink_of(crop)).any(axis=0)
+    columns = np.asarray(np.asarray(ink_of(crop)).any(axis=0), dtype=bool)
     ink = [bool(v) for v in columns]
     cuts = []
     for a, b in itertools.pairwise(xs):
