@@ -132,13 +132,6 @@ few hundredths."""
 def _read_band(detail: np.ndarray, top: int, bottom: int, known: Geometry | None = None
                ) -> Row | None:  # fmt: skip
     key = (round(top / 4), round(bottom / 4))
-    if known is not None and key in known:
-        style, fixed = known[key]
-        fit = _fit_dots if style == "dot" else _fit_segments
-        again = fit(detail, top, bottom, 0.0, 1.0, fixed)
-        if again is not None and again.fit >= 0.85 * fixed[0]:
-            return again  # the grid still fits this photo
-        del known[key]
     band = detail[max(0, top - 2) : bottom + 2]
     profile = band.mean(axis=0)
     edge = max(2, int(0.015 * len(profile)))
@@ -150,6 +143,13 @@ def _read_band(detail: np.ndarray, top: int, bottom: int, known: Geometry | None
     if len(cols) < 3:
         return None
     left, right = float(cols[0]), float(cols[-1] + 1)
+    if known is not None and key in known:
+        style, fixed = known[key]
+        fit = _fit_dots if style == "dot" else _fit_segments
+        again = fit(detail, top, bottom, 0.0, 1.0, fixed)
+        if again is not None and again.fit >= 0.85 * fixed[0] and _covers(style, fixed, left, right):
+            return again  # the grid still fits this photo and spans the row
+        del known[key]
     options = [_fit_dots(detail, top, bottom, left, right), _fit_segments(detail, top, bottom,
                                                                           left, right)]  # fmt: skip
     fitted = [o for o in options if o is not None]
@@ -159,6 +159,18 @@ def _read_band(detail: np.ndarray, top: int, bottom: int, known: Geometry | None
     if known is not None:
         known[key] = (best.style, best.geometry)
     return best
+
+
+def _covers(style: str, fixed: tuple[float, ...], left: float, right: float) -> bool:
+    """Whether a kept grid spans the row's cells now seen from ``left`` to ``right`` (a
+    display that centres its text draws more cells for a longer one)."""
+    if style == "dot":
+        columns, pitch, x0 = fixed[1], fixed[2], fixed[3]
+        start, end, cell = x0, x0 + (6 * columns - 2) * pitch, 6 * pitch
+    else:
+        columns, width, x0 = fixed[1], fixed[2], fixed[4]
+        start, end, cell = x0, x0 + (1.3 * columns - 0.3) * width, 1.3 * width
+    return left > start - 0.5 * cell and right < end + 0.5 * cell
 
 
 # --- dot matrix ---------------------------------------------------------------------------------
