@@ -147,7 +147,11 @@ def _read_band(detail: np.ndarray, top: int, bottom: int, known: Geometry | None
         style, fixed = known[key]
         fit = _fit_dots if style == "dot" else _fit_segments
         again = fit(detail, top, bottom, 0.0, 1.0, fixed)
-        if again is not None and again.fit >= 0.85 * fixed[0] and _covers(style, fixed, left, right):
+        if (
+            again is not None
+            and again.fit >= 0.85 * fixed[0]
+            and _covers(style, fixed, left, right)
+        ):
             return again  # the grid still fits this photo and spans the row
         del known[key]
     options = [_fit_dots(detail, top, bottom, left, right), _fit_segments(detail, top, bottom,

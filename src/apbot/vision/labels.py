@@ -366,9 +366,12 @@ def _missed_lines(image: np.ndarray, labels: list[Label], line: float,
         glyphs = [k for k in range(1, parts) if part_stats[k][3] >= 0.5 * h]
         if len(glyphs) < 2:
             continue
-        pad = max(4, int(0.3 * h))
-        text, confidence = read_crop(
-            image[max(0, y - pad) : y + h + pad, max(0, x - pad) : x + w + pad]
+        text, confidence = max(  # the recogniser's confidence moves with the margin
+            (
+                read_crop(image[max(0, y - pad) : y + h + pad, max(0, x - pad) : x + w + pad])
+                for pad in (max(4, int(0.3 * h)), max(5, int(0.4 * h)))
+            ),
+            key=lambda read: read[1],
         )
         if (
             confidence < 0.9
