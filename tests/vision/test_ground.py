@@ -48,3 +48,22 @@ def test_a_panel_of_blank_keys_grounds_nothing_by_name() -> None:
     found = ground(np.asarray(image), ["press_menu", "press_start"])
     assert found.actions == {}
     assert all("no label" in why for why in found.ungrounded.values())
+
+
+@pytest.mark.parametrize(
+    "appliance",
+    [
+        "blender_1",  # an I / O switch legend the text detector missed
+        "coffee_machine_2",  # HOT WATER and STRENGTH read as one line
+        "washing_machine_5",  # 'spin' printed round the programme dial, the spin dial 'RPM'
+    ],
+)
+def test_the_panels_image_mode_failed_on_ground_fully(appliance: str) -> None:
+    from apbot.vision.environment import PanelEnvironment
+    from apbot.vision.mode import camera_for
+
+    model = load_suite().get(appliance)
+    photo = PanelEnvironment(model, camera_for(appliance, 0), PanelScene.of(model)).reset()
+    found = ground(np.asarray(photo.image), list(model.model.actions))
+    tally, wrong = score_grounding(found, model.model, model.layout, photo)
+    assert tally.precision == 1.0 and tally.recall == 1.0, wrong

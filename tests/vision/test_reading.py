@@ -81,3 +81,46 @@ def test_the_word_shape_cost() -> None:
     assert _switch("", "0") == 0.0 and _switch("HEAT ", "1") == 0.0
     assert _switch("HEAT", "1") == WORD_SWITCH and _switch("1", "E") == WORD_SWITCH
     assert 0 < _switch("HEATIN", "g") < WORD_SWITCH
+
+
+def _camera(appliance: str, style: str) -> Camera:
+    import zlib
+
+    return Camera.sample(zlib.crc32(f"display/{appliance}/{style}".encode()), "mild")
+
+
+@pytest.mark.parametrize("appliance", ["air_fryer_4", "coffee_machine_2", "slow_cooker_2"])
+def test_a_blank_seven_segment_display_reads_as_nothing(suite, appliance) -> None:  # type: ignore[no-untyped-def]
+    # the faint unlit segments and lamp dots under uneven light were read as noise
+    scene = PanelScene.of(suite.get(appliance), style="seg", force=True)
+    photo = scene.photograph("", (), _camera(appliance, "seg"), frame=1)
+    assert read_display(photo.image).text == ""
+
+
+def test_status_lamps_under_a_seven_segment_row_are_read_as_dots(suite) -> None:  # type: ignore[no-untyped-def]
+    # the small dot cells fitted a segment grid a few hundredths better: "HFFF HAPH"
+    scene = PanelScene.of(suite.get("kettle_4"), style="seg", force=True)
+    photo = scene.photograph("100°C", ("KEEP WARM 0",), _camera("kettle_4", "seg"), frame=1)
+    assert read_display(photo.image).text == "100°C  KEEP WARM 0"
+
+
+def test_a_kept_grid_is_fitted_again_when_a_longer_text_draws_more_cells(suite) -> None:  # type: ignore[no-untyped-def]
+    # dishwasher_4 centres its text: the grid kept from "heavy" covered five of the seven
+    # cells of "DRY+ & UV", read "RY+ U"
+    from apbot.sim.compiled import compiled_model
+    from apbot.sim.simulator import Simulator
+    from apbot.vision.display_art import visible
+    from apbot.vision.mode import camera_for
+    from apbot.vision.reading import DisplayCamera
+
+    appliance = suite.get("dishwasher_4")
+    scene = PanelScene.of(appliance)
+    sim = Simulator(compiled_model(appliance.model))
+    sim.reset()
+    camera = DisplayCamera()  # keeps each row's grid between photos
+    presses = ["press_power", "press_program", "press_option", "press_option", "press_option"]
+    for frame, action in enumerate(presses, start=1):
+        sim.step(action)
+        seen = sim.observe()
+        photo = scene.photograph(seen.display, seen.lamps, camera_for(appliance.id), frame=frame)
+        assert camera.read(photo.image).text == visible(seen.text)

@@ -35,6 +35,7 @@ class Row:
     fit: float
     lit: bool = True
     geometry: tuple[float, ...] = ()
+    values: Any = None  # the sampled elements: (cells, 7, 5) dots or (cells, points) segments
 
     @property
     def text(self) -> str:
@@ -71,6 +72,8 @@ def decode_window(window: np.ndarray, beam: int = 48, known: Geometry | None = N
     rows = [r for r in rows if r.fit > 0.15]
     if not rows:
         return Decoded("", confidence=0.5, problem="no cells found on the display")
+    for row in rows:
+        _decode_cells(row, LIT_CONTRAST)
     ordered = sorted(rows, key=lambda r: r.top)  # the main row on top, status rows below
     alternatives = _alternatives(ordered, beam)
     text = alternatives[0][0] if alternatives else ""
@@ -118,17 +121,17 @@ def _bands(detail: np.ndarray) -> list[tuple[int, int]]:
 
 Geometry = dict[tuple[int, int], tuple[str, tuple[float, ...]]]
 
+DOT_PREFERENCE = 0.1
+"""How much better a segment grid must fit a row than a dot grid to win. A segment grid
+also fits a row of small dot-matrix cells roughly (its strokes lie along each blurred 5×7
+block, its holes inside it), while a dot grid fits segment strokes badly: segment rows win
+by 0.3 or more, small dot rows (status lamps under a segment row) lose to segments by a
+few hundredths."""
+
 
 def _read_band(detail: np.ndarray, top: int, bottom: int, known: Geometry | None = None
                ) -> Row | None:  # fmt: skip
     key = (round(top / 4), round(bottom / 4))
-    if known is not None and key in known:
-        style, fixed = known[key]
-        fit = _fit_dots if style == "dot" else _fit_segments
-        again = fit(detail, top, bottom, 0.0, 1.0, fixed)
-        if again is not None and again.fit >= 0.85 * fixed[0]:
-            return again  # the grid still fits this photo
-        del known[key]
     band = detail[max(0, top - 2) : bottom + 2]
     profile = band.mean(axis=0)
     edge = max(2, int(0.015 * len(profile)))
@@ -140,15 +143,38 @@ def _read_band(detail: np.ndarray, top: int, bottom: int, known: Geometry | None
     if len(cols) < 3:
         return None
     left, right = float(cols[0]), float(cols[-1] + 1)
+    if known is not None and key in known:
+        style, fixed = known[key]
+        fit = _fit_dots if style == "dot" else _fit_segments
+        again = fit(detail, top, bottom, 0.0, 1.0, fixed)
+        if (
+            again is not None
+            and again.fit >= 0.85 * fixed[0]
+            and _covers(style, fixed, left, right)
+        ):
+            return again  # the grid still fits this photo and spans the row
+        del known[key]
     options = [_fit_dots(detail, top, bottom, left, right), _fit_segments(detail, top, bottom,
                                                                           left, right)]  # fmt: skip
     fitted = [o for o in options if o is not None]
     if not fitted:
         return None
-    best = max(fitted, key=lambda r: r.fit)
+    best = max(fitted, key=lambda r: r.fit + (DOT_PREFERENCE if r.style == "dot" else 0.0))
     if known is not None:
         known[key] = (best.style, best.geometry)
     return best
+
+
+def _covers(style: str, fixed: tuple[float, ...], left: float, right: float) -> bool:
+    """Whether a kept grid spans the row's cells now seen from ``left`` to ``right`` (a
+    display that centres its text draws more cells for a longer one)."""
+    if style == "dot":
+        columns, pitch, x0 = fixed[1], fixed[2], fixed[3]
+        start, end, cell = x0, x0 + (6 * columns - 2) * pitch, 6 * pitch
+    else:
+        columns, width, x0 = fixed[1], fixed[2], fixed[4]
+        start, end, cell = x0, x0 + (1.3 * columns - 0.3) * width, 1.3 * width
+    return left > start - 0.5 * cell and right < end + 0.5 * cell
 
 
 # --- dot matrix ---------------------------------------------------------------------------------
@@ -223,13 +249,8 @@ def _fit_dots(detail: np.ndarray, top: int, bottom: int, left: float, right: flo
     score, columns, pitch_x, x0, y0 = best
     xs, ys = _dot_grid(columns, pitch_x, x0, y0)
     values = _sample(detail, xs.reshape(1, -1), ys.reshape(1, -1)).reshape(columns, 7, 5)
-    lit, any_lit = _lit(values.ravel())
-    cells = []
-    for k in range(columns):
-        probabilities = lit(values[k])
-        cells.append(dot_candidates(probabilities, limit=3))
-    return Row("dot", cells, float(top), float(bottom), score, any_lit,
-               (score, columns, pitch_x, x0, y0))  # fmt: skip
+    return Row("dot", [], float(top), float(bottom), score, True,
+               (score, columns, pitch_x, x0, y0), values)  # fmt: skip
 
 
 # --- seven segments -----------------------------------------------------------------------------
@@ -291,17 +312,26 @@ def _fit_segments(detail: np.ndarray, top: int, bottom: int, left: float, right:
         return None
     score, columns, width, height, x0, y0 = best
     values = _seg_samples(detail, columns, width, height, x0, y0, _SEG_POINTS)
-    lit, any_lit = _lit(values.ravel(), most=0.9)
-    cells = []
-    for k in range(columns):
+    return Row("seg", [], float(top), float(bottom), score, True,
+               (score, columns, width, height, x0, y0), values)  # fmt: skip
+
+
+def _decode_cells(row: Row, floor: float) -> None:
+    """Fill ``row.cells`` from its samples; nothing is lit below ``floor`` (see :func:`_lit`)."""
+    values = row.values
+    lit, row.lit = _lit(values.ravel(), most=0.9 if row.style == "seg" else 0.5, floor=floor)
+    cells: list[Candidates] = []
+    for k in range(len(values)):
         probabilities = lit(values[k])
+        if row.style == "dot":
+            cells.append(dot_candidates(probabilities, limit=3))
+            continue
         bits: dict[str, list[float]] = {}
-        for name, p in zip(_SEG_NAMES, probabilities, strict=True):
+        for name, p in zip(_SEG_NAMES, probabilities.ravel(), strict=True):
             bits.setdefault(name, []).append(float(p))
         per = {name: float(np.mean(v)) for name, v in bits.items()}
         cells.append(_segment_cell(per))
-    return Row("seg", cells, float(top), float(bottom), score, any_lit,
-               (score, columns, width, height, x0, y0))  # fmt: skip
+    row.cells = cells
 
 
 def _seg_samples(detail: np.ndarray, columns: int, width: float, height: float, x0: float,
@@ -324,14 +354,22 @@ def _segment_cell(bits: dict[str, float]) -> Candidates:
     return segment_distance_candidates(segments, limit=4)
 
 
+LIT_CONTRAST = 60.0
+"""Grey levels a lit element stands above the window's own background, at least. Unlit
+elements are drawn faintly (up to ~55 above it in the photos measured); lit ones at 60–240.
+Without this floor a blank row whose grid fits badly splits into "background" samples and
+faint elements, and the faint ones read as lit (noise instead of the empty text)."""
+
+
 # --- lit or unlit -------------------------------------------------------------------------------
 
 
-def _lit(samples: np.ndarray, most: float = 0.5) -> tuple[Any, bool]:
+def _lit(samples: np.ndarray, most: float = 0.5, floor: float = 0.0) -> tuple[Any, bool]:
     """A function giving lit probabilities for sample values, and whether anything is lit.
 
     Two clusters (Otsu on the samples) when the brighter one is clearly apart: lit elements
-    are several times brighter than unlit ones. Otherwise nothing is lit (a blank row).
+    are several times brighter than unlit ones and at least ``floor`` above the background.
+    Otherwise nothing is lit (a blank row).
     """
     values = np.sort(samples.astype(np.float64))
     n = len(values)
@@ -351,7 +389,7 @@ def _lit(samples: np.ndarray, most: float = 0.5) -> tuple[Any, bool]:
     high = values[values > best_t]
     unlit = float(np.median(low)) if len(low) else 0.0
     bright = float(np.median(high)) if len(high) else 0.0
-    separated = bright - unlit > 30 and bright > 1.9 * max(unlit, 1.0)
+    separated = bright - unlit > 30 and bright > 1.9 * max(unlit, 1.0) and bright > floor
     if not separated or len(high) > most * n:
         # nothing lit, or "lit" everywhere: a blank row under uneven light, not a text
         return (lambda v: np.zeros_like(v, dtype=np.float32)), False

@@ -10,6 +10,7 @@ of a pictogram. Small text around a dial is marked as its tick labels.
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 
@@ -110,15 +111,82 @@ def make_labels(image: np.ndarray, detection: Detection, window: Window | None) 
     for i, t in enumerate(texts):
         if i not in used:
             labels.append(Label(t.text, t.box))
+    labels = _split_shared(image, labels, _controls(detection, window), line)
     labels += _stacked(labels)
     _misread_symbols(image, labels)
     _shape_symbols(image, shapes, labels)
     _symbol_labels(image, shapes, labels, line, window)
+    labels = _missed_lines(image, labels, line, window)
     labels = _join_line_symbols(labels)
     _mark_ticks(detection, labels)
     for label in labels:
         label.symbols += [s for s in _edge_symbols(image, label) if s not in label.symbols]
     return labels
+
+
+def _split_shared(image: np.ndarray, labels: list[Label], controls: list[Candidate],
+                  line: float) -> list[Label]:  # fmt: skip
+    """One text line that OCR made of the labels of two neighbouring keys (``HOT WATER`` and
+    ``STRENGTH`` under two round keys): when two or more keys sit just above a free line,
+    within its width, the line is cut at the widest blank gap between each pair of keys and
+    each piece read again. A piece that does not read clearly keeps the line whole."""
+    out: list[Label] = []
+    for label in labels:
+        pieces = _pieces(image, label, controls, line) if label.control is None else None
+        out += pieces or [label]
+    return out
+
+
+def _pieces(image: np.ndarray, label: Label, controls: list[Candidate], line: float
+            ) -> list[Label] | None:  # fmt: skip
+    x0, y0, x1, y1 = label.box
+    height = y1 - y0
+    if len(label.text.split()) < 2 or height > 2 * line:
+        return None
+    above = sorted(
+        (
+            c
+            for c in controls
+            if x0 <= c.centre[0] <= x1
+            and -0.2 * height <= y0 - c.box[3] <= 2.5 * height
+            and (c.box[2] - c.box[0]) < 0.7 * (x1 - x0)
+        ),
+        key=lambda c: c.centre[0],
+    )
+    xs: list[float] = []
+    for c in above:  # one key per position (a ring and its dot are one key)
+        if not xs or c.centre[0] - xs[-1] > 1.5 * height:
+            xs.append(c.centre[0])
+    if len(xs) < 2:
+        return None
+    crop = image[int(y0) : int(y1) + 1, int(x0) : int(x1) + 1]
+    from apbot.vision.icons import ink_of
+
+    columns = np.asarray(np.asarray(ink_of(crop)).any(axis=0), dtype=bool)
+    ink = [bool(v) for v in columns]
+    cuts = []
+    for a, b in itertools.pairwise(xs):
+        lo, hi = int(a - x0), int(b - x0)
+        gaps = [(e - s, (s + e) // 2) for s, e in _spans([not v for v in ink[lo:hi]])]
+        if not gaps:
+            return None
+        width, middle = max(gaps)
+        if width < 0.25 * height:
+            return None  # letters run on between the keys: one label after all
+        cuts.append(lo + middle)
+    edges = [0, *cuts, len(ink)]
+    pieces = []
+    for a, b in itertools.pairwise(edges):
+        pad = max(3, int(0.2 * height))
+        text, confidence = read_crop(
+            image[
+                max(0, int(y0) - pad) : int(y1) + pad, max(0, int(x0) + a - pad) : int(x0) + b + pad
+            ]
+        )
+        if confidence < 0.8 or not text:
+            return None
+        pieces.append(Label(text, (x0 + a, y0, x0 + b, y1)))
+    return pieces
 
 
 def _stacked(labels: list[Label]) -> list[Label]:
@@ -269,6 +337,59 @@ def _symbol_labels(image: np.ndarray, shapes: list[Candidate], labels: list[Labe
         labels.append(Label(text or symbol, box, control, [symbol] if symbol else []))
 
 
+def _missed_lines(image: np.ndarray, labels: list[Label], line: float,
+                  window: Window | None) -> list[Label]:  # fmt: skip
+    """Short legends the page-wide text detector missed (a switch printed ``I / O``: thin,
+    widely spaced glyphs): a row of two or more glyph-sized ink blobs that no text label
+    covers is read again as one crop; when it reads clearly as text with a letter, digit or
+    slash in it, it becomes a text label and the symbols made of its glyphs (``O`` taken for
+    a clock face) go."""
+    gray = cv2.cvtColor(image, cv2.COLOR_RGB2GRAY)
+    size = int(max(15, 4 * line)) | 1
+    background = cv2.medianBlur(gray, min(size, 255))
+    ink = (cv2.absdiff(gray, background) > 45).astype(np.uint8)
+    reach = max(3, int(1.2 * line)) | 1
+    joined = cv2.morphologyEx(ink, cv2.MORPH_CLOSE, np.ones((3, reach), np.uint8))
+    count, _, stats, _ = cv2.connectedComponentsWithStats(joined, 8)
+    words = [lb.box for lb in labels if lb.tokens and not lb.symbols]
+    found: list[Label] = []
+    for i in range(1, count):
+        x, y, w, h, _ = (int(v) for v in stats[i])
+        box = (float(x), float(y), float(x + w), float(y + h))
+        if not (0.6 * line <= h <= 2.5 * line and 1.5 * h <= w <= 8 * line):
+            continue
+        if window is not None and _inside(_centre(box), window.box, 4):
+            continue
+        if any(_overlap(box, b) > 0.1 * _area(box) for b in words):
+            continue
+        parts, _, part_stats, _ = cv2.connectedComponentsWithStats(ink[y : y + h, x : x + w], 8)
+        glyphs = [k for k in range(1, parts) if part_stats[k][3] >= 0.5 * h]
+        if len(glyphs) < 2:
+            continue
+        text, confidence = max(  # the recogniser's confidence moves with the margin
+            (
+                read_crop(image[max(0, y - pad) : y + h + pad, max(0, x - pad) : x + w + pad])
+                for pad in (max(4, int(0.3 * h)), max(5, int(0.4 * h)))
+            ),
+            key=lambda read: read[1],
+        )
+        if (
+            confidence < 0.9
+            or len(text.replace(" ", "")) < 2
+            or not any(c.isalnum() or c == "/" for c in text)
+        ):
+            continue
+        found.append(Label(text, box))
+    if not found:
+        return labels
+    kept = [
+        lb
+        for lb in labels
+        if lb.tokens or not any(_inside(_centre(lb.box), f.box, 2) for f in found)
+    ]
+    return kept + found
+
+
 def _edge_symbols(image: np.ndarray, label: Label) -> list[str]:
     """Arrows and signs printed with a word on one key (``TEMP ▲``, ``◀ PROG``, ``⏻ START``,
     ``↕ SWING``), inside the label's box or just beside it on its line (OCR often boxes the
@@ -380,6 +501,7 @@ def _mark_ticks(detection: Detection, labels: list[Label]) -> None:
     for circle in (c for c in detection.candidates if c.kind == "circle"):
         cx, cy = circle.centre
         r = (circle.box[2] - circle.box[0]) / 2
+        ring = []
         for label in labels:
             if label.control is not None and _area(label.control) < 4 * _area(label.box):
                 continue
@@ -390,6 +512,16 @@ def _mark_ticks(detection: Detection, labels: list[Label]) -> None:
                 continue  # printed on a key of its own (round or beside the dial): its name
             lx, ly = _centre(label.box)
             d = float(np.hypot(lx - cx, ly - cy))
-            small = (label.box[3] - label.box[1]) < 0.85 * typical
-            if small and r * 0.9 < d < r * 1.9 and ly < cy + 1.1 * r:
-                label.tick = True
+            if r * 0.9 < d < r * 1.9 and ly < cy + 1.1 * r:
+                ring.append(label)
+                if (label.box[3] - label.box[1]) < 0.85 * typical:
+                    label.tick = True
+        if len({_angle_step(lb, cx, cy) for lb in ring}) >= 3:
+            for label in ring:  # three or more words around one dial: its positions, whatever
+                label.tick = True  # their size (a programme dial printed ``cotton`` … ``spin``)
+
+
+def _angle_step(label: Label, cx: float, cy: float) -> int:
+    """The direction of a label from a dial's centre, in steps of 30 degrees."""
+    lx, ly = _centre(label.box)
+    return round(float(np.degrees(np.arctan2(ly - cy, lx - cx))) / 30.0)
