@@ -7,6 +7,7 @@ from dataclasses import dataclass
 from apbot.agent.environment import Feedback
 from apbot.agent.perception import Perceiver
 from apbot.examples import load_example
+from tests.helpers import suite_model
 
 
 @dataclass
@@ -26,3 +27,16 @@ def test_a_cheaper_reading_wins_over_the_prediction() -> None:
     feedback = Feedback("PL8", image=_Reading([("PL8", 0.0), ("PL7", 2.0)]))
     seen = perceiver.perceive(feedback, {"power_level": 7}, ("focus", "power_level"))
     assert seen.values == {"power_level": 8}
+
+
+def test_a_look_alike_read_only_in_part_loses_to_one_read_whole() -> None:
+    """Seven segments light the same bars for O and D: 'DFF 2 h' leaves the off-timer unread
+    and so differs less from a prediction of no timer, yet 'OFF 2 h' is the one the display
+    rules explain whole, and the one to believe."""
+    perceiver = Perceiver(suite_model("air_conditioner_1"))
+    shown = "OFF 2 h  RUN  LIGHT OFF"
+    tied = [("DFF 2 h  RUN  LIGHT OFF", 0.0), (shown, 0.0)]
+    prediction = {"power": "on", "timer_off": "00:00:00", "light": "off"}
+    seen = perceiver.perceive(Feedback(tied[0][0], image=_Reading(tied)), prediction)
+    assert not seen.partial
+    assert seen.values["timer_off"] == "02:00:00"

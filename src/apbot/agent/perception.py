@@ -135,11 +135,14 @@ class Perceiver:
             return choose(self.reader.read(text, context), context, expected)
         cheapest = min(cost for cost, _ in readable)
 
-        def closeness(seen: Seen) -> tuple[int, int]:
+        def closeness(seen: Seen) -> tuple[int, int, int]:
             kind, variable = expected or (None, None)
             on_screen = seen.screen_kind == kind and (kind != "focus" or seen.screen == variable)
             differing = sum(1 for name, value in seen.values.items() if context.get(name) != value)
-            return (0 if on_screen else 1, differing + len(seen.outside))
+            # a look-alike the display rules explain only in part ('DFF 2 h': the timer read,
+            # 'DFF' left over) loses to one they explain whole ('OFF 2 h'), however close the
+            # part is to the prediction
+            return (0 if on_screen else 1, int(seen.partial), differing + len(seen.outside))
 
         tied = [seen for cost, seen in readable if cost <= cheapest + 0.05]
         return min(tied, key=closeness)
