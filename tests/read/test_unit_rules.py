@@ -218,3 +218,15 @@ def test_a_table_of_what_to_type_is_examples_not_the_values_there_are() -> None:
     assert "00:10:00" in all_values(time)  # not only the three examples
     entered = [f for f in model.features.values() if any("press_1" in s.actions for s in f)]
     assert len(entered) == 2  # TEMP's and TIME's; no third time the digits set directly
+
+
+def test_a_plural_ending_in_a_column_heading_is_no_unit_of_seconds() -> None:
+    from apbot.read.cases import _header_unit
+
+    plural: dict[str, object] = {"type": "numeric"}
+    _header_unit(plural, "Option(s)")
+    assert "unit" not in plural
+    for header, unit in (("Rinse (s)", "s"), ("Soak (min)", "min"), ("Time(min)", "min")):
+        spec: dict[str, object] = {"type": "numeric"}
+        _header_unit(spec, header)
+        assert spec["unit"] == unit, header
