@@ -133,8 +133,12 @@ def _row_step(cells: tuple[str, ...], unit: str) -> float | None:
 RUN_RE = re.compile(r"\d+(?:[.,]\d+)?(?:\s*[·•]\s*(?:\|\s*)?\d+(?:[.,]\d+)?){2,}")
 ASIDE_HEADING = re.compile(
     r"\b(?:safety|safeguards?|warnings?|cautions?|precautions?|trouble-?\s?shooting|faults?"
-    r"|fault finding|problems?|error codes?|cleaning|care|maintenance|warranty|guarantee"
-    r"|disposal|customer)\b",
+    r"|fault finding|problems?|error codes?|cleaning|maintenance|warranty|guarantee"
+    r"|disposal|customer)\b"
+    # "care" only as the section's own word ("Care", "Care and cleaning", "Cleaning and care"),
+    # never inside a programme's name ("Easy Care", "Baby care")
+    r"|^[\W\d.]*care\b(?!\s+(?:programs?|programmes?|cycles?|modes?|settings?)\b)"
+    r"|\b(?:and|&)\s+care\b",
     re.IGNORECASE,
 )
 EXAMPLE_RE = re.compile(r"^\s*(?:examples?|e\.\s?g\.|for (?:example|instance))\b", re.IGNORECASE)
