@@ -230,3 +230,23 @@ def test_a_plural_ending_in_a_column_heading_is_no_unit_of_seconds() -> None:
         spec: dict[str, object] = {"type": "numeric"}
         _header_unit(spec, header)
         assert spec["unit"] == unit, header
+
+
+KEYPAD_OVEN = """# Zapwave M-1 microwave
+
+## Cooking
+
+Press COOK TIME, then type the cooking time with the number keys and press START.
+{range}
+"""
+KEYPAD_ACTIONS = ["press_cook_time", "press_start"] + [f"press_{i}" for i in range(10)]
+
+
+def test_a_keypad_cooking_time_is_minutes_and_seconds_only_when_no_range_was_read() -> None:
+    stated = read_manual(
+        KEYPAD_OVEN.format(range="The cooking time can be set from 1 to 60 minutes."),
+        KEYPAD_ACTIONS,
+    ).model.variables["cook_time"]
+    assert stated.ranges == [("00:01:00", "01:00:00", 60)]  # type: ignore[union-attr]
+    unstated = read_manual(KEYPAD_OVEN.format(range=""), KEYPAD_ACTIONS).model
+    assert unstated.variables["cook_time"].format == "mm:ss"  # type: ignore[union-attr]
