@@ -175,3 +175,11 @@ def test_care_is_an_aside_section_only_as_the_sections_own_word() -> None:
         assert ASIDE_HEADING.search(heading), heading
     for heading in ("Easy Care", "Baby care programme", "4.2 Easy care", "Care programme"):
         assert not ASIDE_HEADING.search(heading), heading
+
+
+def test_water_calls_for_millilitres_only_as_the_settings_own_noun() -> None:
+    from apbot.read.shapes import _fits
+
+    assert _fits("°dH", ["water_hardness"])  # a hardness is in its own unit
+    assert not _fits("°dH", ["water"]) and _fits("ml", ["water"])
+    assert _fits("l", ["amount", "water"]) and not _fits("W", ["water_amount"])

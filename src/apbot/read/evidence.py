@@ -22,6 +22,7 @@ from apbot.read.shapes import (
     _keypad,
     _numeric_items,
     _quantity_unit,
+    _quantity_units,
     _row_step,
     _without,
     _without_advice,
@@ -213,7 +214,7 @@ class EvidenceReader(ListReader):
             runs = self._unit_runs(tokens)
             if runs is not None:  # the settings one by one: pieces of equal steps
                 amounts, at = runs
-                symbol = next(q for q in (_quantity_unit(t) for t in tokens) if q)
+                symbol = _quantity_units(tokens)[0]
                 for lo, hi in itertools.pairwise(amounts):
                     gap = round(hi - lo, 6)
                     if ev.ranges and ev.ranges[-1].step == gap:
