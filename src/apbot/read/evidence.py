@@ -134,7 +134,8 @@ class EvidenceReader(ListReader):
                     ev.initial, ev.initial_at = init, i
         for i in sorted(self.context(tokens)):  # "up to 1 h by 10 min; after that by 30 min"
             window = [k for k in range(i, min(i + 4, len(units))) if not units[k].cells]
-            two = find_two_steps([units[k].text for k in window])
+            names = tuple(self.labels[t].text.lower() for t in tokens if t in self.labels)
+            two = find_two_steps([units[k].text for k in window], names)
             if two and _fits(two[0][0].unit, tokens):
                 ev.ranges, ev.range_at = two[0], window[two[1]]
                 break
