@@ -466,3 +466,28 @@ def test_form_feeds_show_the_pages_whose_running_header_is_dropped() -> None:
     assert not any("KORVEN" in t for t in texts)
     assert sum(t.startswith("Press START") for t in texts) == 3
     assert any("KORVEN" in u.text for u in parse_manual(text.replace("\f", "\n")).units)
+
+
+LEGEND = """CONTROL PANEL
+DELAY START button     Sets the finish time of the programme, up to 24 hours ahead.
+TEMPERATURE button     Chooses the wash temperature of the selected programme.
+SPIN button            Lowers the spin speed of the programme or turns spinning off.
+"""
+
+
+def test_a_legend_of_terms_each_with_its_definition_is_read_row_by_row() -> None:
+    from apbot.read.text import _reading_order
+
+    lines = LEGEND.split("\n")
+    order, numbers = _reading_order(lines)
+    assert order == lines and numbers == list(range(1, len(lines) + 1))
+    # prose set in two columns is still read down the left column first
+    prose = [
+        "Press the SPIN button to lower the         speed or to switch spinning off for",
+        "the speed of the final spin; each press     delicate items that must not be wrung",
+        "goes to the next lower speed in turn        out, such as wool and silk garments.",
+    ]
+    assert _reading_order(prose)[0][0:2] == [
+        "Press the SPIN button to lower the",
+        "the speed of the final spin; each press",
+    ]

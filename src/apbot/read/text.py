@@ -8,6 +8,7 @@ rule never depends on where the converter happened to break a line.
 
 from __future__ import annotations
 
+import itertools
 import re
 import unicodedata
 from dataclasses import dataclass, field
@@ -247,6 +248,24 @@ def _plain_heading(line: str) -> bool:
     return sub_level and short and rest[0].isupper() and not re.search(r"\d", rest)
 
 
+def _legend(parts: list[tuple[int, str, str]]) -> bool:
+    """Rows of a legend or a table ("DELAY START button     Sets the finish time …"), not two
+    columns of prose: the left parts are mostly short terms, each starting afresh, and the left
+    column's text does not run on from one line to the next."""
+    lefts = [p[1] for p in parts]
+    terms = sum(
+        len(left.split()) <= 4
+        and not re.search(r"[,;-]$|\b(?:the|and|or|to|of|a|an)$", left)
+        and not left[0].islower()
+        for left in lefts
+    )
+    runs_on = sum(
+        nxt[0].islower() or bool(re.search(r"[,-]$|\b(?:the|and|or|to|of|a|an|with)$", left))
+        for left, nxt in itertools.pairwise(lefts)
+    )
+    return terms * 3 >= 2 * len(lefts) and runs_on * 2 < len(lefts) - 1
+
+
 def _reading_order(lines: list[str]) -> tuple[list[str], list[int]]:
     """The lines in reading order, each with its 1-based number in the text: prose set in two
     columns side by side ("5.2 Spin Press the SPIN button to     Spin: no final spin; the…") is
@@ -291,7 +310,7 @@ def _reading_order(lines: list[str]) -> tuple[list[str], list[int]]:
             parts.append(here)
             j += 1
         prose = sum(bool(re.search(r"[a-z]{3,} [a-z]{3,}", p[1] + " " + p[2])) for p in parts)
-        if j - i >= 3 and prose * 3 >= 2 * (j - i):
+        if j - i >= 3 and prose * 3 >= 2 * (j - i) and not _legend(parts):
             out += [p[1] for p in parts] + [p[2] for p in parts]
             numbers += [k + 1 for k in range(i, j)] * 2
             i, column = j, parts[0][0]
