@@ -166,3 +166,20 @@ the next press brings you back to LOW.
     model = read_manual(manual, ["press_speed", "press_timer", "press_up", "press_down"]).model
     assert model.variables["speed"].values == ["low", "med", "high"]
     assert "humidity" in model.variables  # the pair's own setting, not the timer's
+
+
+def test_care_is_an_aside_section_only_as_the_sections_own_word() -> None:
+    from apbot.read.shapes import ASIDE_HEADING
+
+    for heading in ("Care and cleaning", "7 CARE", "Cleaning and care", "Care & maintenance"):
+        assert ASIDE_HEADING.search(heading), heading
+    for heading in ("Easy Care", "Baby care programme", "4.2 Easy care", "Care programme"):
+        assert not ASIDE_HEADING.search(heading), heading
+
+
+def test_water_calls_for_millilitres_only_as_the_settings_own_noun() -> None:
+    from apbot.read.shapes import _fits
+
+    assert _fits("°dH", ["water_hardness"])  # a hardness is in its own unit
+    assert not _fits("°dH", ["water"]) and _fits("ml", ["water"])
+    assert _fits("l", ["amount", "water"]) and not _fits("W", ["water_amount"])

@@ -417,3 +417,77 @@ Drying times you can choose: 0:00 (no drying) · 0:20 · 0:40 · 1:00 · 1:30 ·
     assert drying.type == "time"
     assert all_values(drying) == ["00:00:00", "00:20:00", "00:40:00", "01:00:00", "01:30:00",
                                   "02:00:00"]  # fmt: skip
+
+
+def _dropped(text: str) -> list[str]:
+    from apbot.read.text import _furniture
+
+    lines = text.split("\n")
+    return [lines[i].strip() for i in sorted(_furniture(lines))]
+
+
+# steps, notes and table rows that come back on every page, each by a blank line
+REPEATS = """KORVEN K-3
+
+2. Press START
+
+Note
+
+  Level 1         gentle
+{page}
+Example
+
+2. Press START
+
+  Level 1         gentle
+{page}
+2. Press START
+
+Note
+
+  Level 1         gentle
+{page}
+"""
+
+
+def test_repeated_steps_notes_and_table_rows_are_content_without_page_structure() -> None:
+    assert _dropped(REPEATS.format(page="")) == []
+
+
+def test_repeated_steps_notes_and_table_rows_stay_next_to_page_numbers() -> None:
+    text = REPEATS.format(page="\nKORVEN K-3                                  - 1 -\n")
+    assert set(_dropped(text)) == {"KORVEN K-3                                  - 1 -"}
+
+
+def test_form_feeds_show_the_pages_whose_running_header_is_dropped() -> None:
+    page = "KORVEN K-3 Instructions\n\nPress START to begin the {n} cycle.\n"
+    text = "\f".join(page.format(n=n) for n in ("first", "second", "third"))
+    texts = [u.text for u in parse_manual(text).units]
+    assert not any("KORVEN" in t for t in texts)
+    assert sum(t.startswith("Press START") for t in texts) == 3
+    assert any("KORVEN" in u.text for u in parse_manual(text.replace("\f", "\n")).units)
+
+
+LEGEND = """CONTROL PANEL
+DELAY START button     Sets the finish time of the programme, up to 24 hours ahead.
+TEMPERATURE button     Chooses the wash temperature of the selected programme.
+SPIN button            Lowers the spin speed of the programme or turns spinning off.
+"""
+
+
+def test_a_legend_of_terms_each_with_its_definition_is_read_row_by_row() -> None:
+    from apbot.read.text import _reading_order
+
+    lines = LEGEND.split("\n")
+    order, numbers = _reading_order(lines)
+    assert order == lines and numbers == list(range(1, len(lines) + 1))
+    # prose set in two columns is still read down the left column first
+    prose = [
+        "Press the SPIN button to lower the         speed or to switch spinning off for",
+        "the speed of the final spin; each press     delicate items that must not be wrung",
+        "goes to the next lower speed in turn        out, such as wool and silk garments.",
+    ]
+    assert _reading_order(prose)[0][0:2] == [
+        "Press the SPIN button to lower the",
+        "the speed of the final spin; each press",
+    ]

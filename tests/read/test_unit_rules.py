@@ -218,3 +218,56 @@ def test_a_table_of_what_to_type_is_examples_not_the_values_there_are() -> None:
     assert "00:10:00" in all_values(time)  # not only the three examples
     entered = [f for f in model.features.values() if any("press_1" in s.actions for s in f)]
     assert len(entered) == 2  # TEMP's and TIME's; no third time the digits set directly
+
+
+def test_a_plural_ending_in_a_column_heading_is_no_unit_of_seconds() -> None:
+    from apbot.read.cases import _header_unit
+
+    plural: dict[str, object] = {"type": "numeric"}
+    _header_unit(plural, "Option(s)")
+    assert "unit" not in plural
+    for header, unit in (("Rinse (s)", "s"), ("Soak (min)", "min"), ("Time(min)", "min")):
+        spec: dict[str, object] = {"type": "numeric"}
+        _header_unit(spec, header)
+        assert spec["unit"] == unit, header
+
+
+KEYPAD_OVEN = """# Zapwave M-1 microwave
+
+## Cooking
+
+Press COOK TIME, then type the cooking time with the number keys and press START.
+{range}
+"""
+KEYPAD_ACTIONS = ["press_cook_time", "press_start"] + [f"press_{i}" for i in range(10)]
+
+
+def test_a_keypad_cooking_time_is_minutes_and_seconds_only_when_no_range_was_read() -> None:
+    stated = read_manual(
+        KEYPAD_OVEN.format(range="The cooking time can be set from 1 to 60 minutes."),
+        KEYPAD_ACTIONS,
+    ).model.variables["cook_time"]
+    assert stated.ranges == [("00:01:00", "01:00:00", 60)]  # type: ignore[union-attr]
+    unstated = read_manual(KEYPAD_OVEN.format(range=""), KEYPAD_ACTIONS).model
+    assert unstated.variables["cook_time"].format == "mm:ss"  # type: ignore[union-attr]
+
+
+def test_a_step_that_changes_part_way_is_read_in_other_wordings() -> None:
+    from apbot.read.values import Range, find_two_steps
+
+    expected = [Range(0, 60, "min", 10), Range(60, 1440, "min", 30)]
+    for wording in (
+        "The delay is set in steps of 10 minutes up to 1 hour, then in steps of 30 minutes "
+        "up to 24 hours.",
+        "In 10-minute steps up to one hour and in 30-minute steps up to 24 hours.",
+        "From 0 to 1 hour the delay changes by 10 minutes, from 1 to 24 hours by 30 minutes.",
+    ):
+        found = find_two_steps([wording])
+        assert found is not None and found[0] == expected, wording
+    told = ["Up to 1 hour the delay changes by 10 minutes; after that by 30 minutes."]
+    assert find_two_steps([*told, "The longest delay is 24 hours."]) is not None
+    # a maximum two sentences on belongs to the setting only when it names it
+    far = [*told, "Press START.", "The longest cooking time is 9 hours."]
+    assert find_two_steps(far, ("delay",)) is None
+    named = [*told, "Press START.", "The longest delay is 24 hours."]
+    assert find_two_steps(named, ("delay",)) == (expected, 0)

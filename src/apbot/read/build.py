@@ -50,6 +50,7 @@ class Builder(EvidenceReader):
         self.notes: list[Note] = []
         self.indicators: list[str] = []
         self._evidence: dict[tuple[str, ...], Evidence] = {}
+        self.unread: set[str] = set()  # numbers whose range the manual never gave (guessed)
 
     # --- notes ------------------------------------------------------------------------------
 
@@ -158,6 +159,7 @@ class Builder(EvidenceReader):
             )
             self.note(subject, f"range {low:g}–{high:g} {unit} (the manual gives none)")
             ranges = [Range(low, high, unit)]
+            self.unread.add(name)
         unit = ranges[0].unit or (ev.step[1] if ev.step else "") or _unit_from_words(name)
         finer = bool(ev.step and ev.step[1] in ("s", "min") and unit == "h")  # 0–3 h by 1 min
         as_time = ranges[0].unit == "s" or unit in ("s", "min") or finer

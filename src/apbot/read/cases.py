@@ -200,8 +200,10 @@ def _gcd_step(step: float, values: dict[str, Any], low: float) -> float:
     return 1 if all(float(v).is_integer() for v in values.values()) else 0.5
 
 
-HEADER_UNIT_RE = re.compile(
-    r"\(\s*(min|mins|minutes|h|hrs|hours|s|sec|°c|°f|%|rpm|w|g|kg|ml|l)\s*\)", re.I
+HEADER_UNIT_RE = re.compile(  # "(s)" glued to a word is a plural ending ("Option(s)")
+    r"\(\s*(min|mins|minutes|h|hrs|hours|sec|°c|°f|%|rpm|w|g|kg|ml|l)\s*\)"
+    r"|(?<![A-Za-z])\(\s*(s)\s*\)",
+    re.I,
 )
 
 
@@ -212,7 +214,7 @@ def _header_unit(spec: dict[str, Any], header: str) -> None:
         return
     m = HEADER_UNIT_RE.search(header)
     if m:
-        spec["unit"] = unit_name(m.group(1))
+        spec["unit"] = unit_name(m.group(1) or m.group(2))
 
 
 def _hms(total: int) -> str:

@@ -22,6 +22,7 @@ from apbot.read.shapes import (
     _keypad,
     _numeric_items,
     _quantity_unit,
+    _quantity_units,
     _row_step,
     _without,
     _without_advice,
@@ -133,7 +134,8 @@ class EvidenceReader(ListReader):
                     ev.initial, ev.initial_at = init, i
         for i in sorted(self.context(tokens)):  # "up to 1 h by 10 min; after that by 30 min"
             window = [k for k in range(i, min(i + 4, len(units))) if not units[k].cells]
-            two = find_two_steps([units[k].text for k in window])
+            names = tuple(self.labels[t].text.lower() for t in tokens if t in self.labels)
+            two = find_two_steps([units[k].text for k in window], names)
             if two and _fits(two[0][0].unit, tokens):
                 ev.ranges, ev.range_at = two[0], window[two[1]]
                 break
@@ -213,7 +215,7 @@ class EvidenceReader(ListReader):
             runs = self._unit_runs(tokens)
             if runs is not None:  # the settings one by one: pieces of equal steps
                 amounts, at = runs
-                symbol = next(q for q in (_quantity_unit(t) for t in tokens) if q)
+                symbol = _quantity_units(tokens)[0]
                 for lo, hi in itertools.pairwise(amounts):
                     gap = round(hi - lo, 6)
                     if ev.ranges and ev.ranges[-1].step == gap:

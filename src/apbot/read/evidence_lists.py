@@ -17,7 +17,7 @@ from apbot.read.shapes import (
     _bullet_items,
     _next_table_column,
     _quantity_column,
-    _quantity_unit,
+    _quantity_units,
     _same_word,
 )
 from apbot.read.text import Manual, Unit
@@ -108,7 +108,7 @@ class ListReader:
         numbers a table headed by its unit lists in runs joined by middle dots ("Output
         settings (W) … 500 · 600 · 700 … 1500 100 W Medium 1600 · 1700 …"), all runs of that
         table together, in order."""
-        unit = next((u for u in (_quantity_unit(t) for t in tokens) if u in QUANTITY_FAMILIES), "")
+        unit = next((u for u in _quantity_units(tokens) if u in QUANTITY_FAMILIES), "")
         if not unit:
             return None
         family = "|".join(re.escape(u) for u in sorted(QUANTITY_FAMILIES[unit], key=len))

@@ -98,8 +98,7 @@ def assign_amounts(
                 cyclic=False,
             )
             spec = b.variables[var]
-            guessed = spec.get("ranges") == [["00:01:00", "01:00:00", 60]]  # nothing read
-            if guessed and not ev.step and "cook" in words(name.replace("_", " ")):
+            if var in b.unread and not ev.step and "cook" in words(name.replace("_", " ")):
                 # a cooking time typed on the keypad with no range read: minutes and seconds,
                 # as the number keys alone enter one
                 spec.update(type="time", ranges=[["00:00:00", "01:39:59", 1]], format="mm:ss")

@@ -133,8 +133,12 @@ def _row_step(cells: tuple[str, ...], unit: str) -> float | None:
 RUN_RE = re.compile(r"\d+(?:[.,]\d+)?(?:\s*[·•]\s*(?:\|\s*)?\d+(?:[.,]\d+)?){2,}")
 ASIDE_HEADING = re.compile(
     r"\b(?:safety|safeguards?|warnings?|cautions?|precautions?|trouble-?\s?shooting|faults?"
-    r"|fault finding|problems?|error codes?|cleaning|care|maintenance|warranty|guarantee"
-    r"|disposal|customer)\b",
+    r"|fault finding|problems?|error codes?|cleaning|maintenance|warranty|guarantee"
+    r"|disposal|customer)\b"
+    # "care" only as the section's own word ("Care", "Care and cleaning", "Cleaning and care"),
+    # never inside a programme's name ("Easy Care", "Baby care")
+    r"|^[\W\d.]*care\b(?!\s+(?:programs?|programmes?|cycles?|modes?|settings?)\b)"
+    r"|\b(?:and|&)\s+care\b",
     re.IGNORECASE,
 )
 EXAMPLE_RE = re.compile(r"^\s*(?:examples?|e\.\s?g\.|for (?:example|instance))\b", re.IGNORECASE)
@@ -203,7 +207,7 @@ def _fits(unit: str, tokens: list[str]) -> bool:
     """A range's unit can belong to the control: no minutes for a temperature, no degrees for a
     timer, no watts for a volume (the sentence after a key often gives a neighbouring
     setting's range)."""
-    expected = {_quantity_unit(t) for t in tokens} - {""}
+    expected = set(_quantity_units(tokens))
     if not expected or not unit:
         return True
     timeish = {"s", "min", "h"}
@@ -334,7 +338,7 @@ QUANTITY_FAMILIES = {  # a setting named for a quantity takes a range in one of 
     "rpm": frozenset({"rpm"}),
 }
 QUANTITY_WORDS = {
-    "volume": "ml", "amount": "ml", "capacity": "ml", "water": "ml", "weight": "g",
+    "volume": "ml", "capacity": "ml", "weight": "g",
     "watt": "W", "watts": "W", "wattage": "W", "output": "W", "spin": "rpm", "rpm": "rpm",
 }  # fmt: skip
 
@@ -349,6 +353,17 @@ def _quantity_unit(name: str) -> str:
         if w in QUANTITY_WORDS:
             return QUANTITY_WORDS[w]
     return ""
+
+
+def _quantity_units(tokens: list[str]) -> list[str]:
+    """The units the words of a setting's name call for, in order: each word's own
+    (:func:`_quantity_unit`), and ml where water is the setting's own noun ("water", "amount of
+    water") — in "water hardness" or "water level" it names what is measured, in another unit."""
+    units = [u for u in (_quantity_unit(t) for t in tokens) if u]
+    ws = [w for t in tokens for w in words(t.replace("_", " "))]
+    if ws and (ws[-1] == "water" or {"water", "amount"} <= set(ws)):
+        units.append("ml")
+    return units
 
 
 def _guess_step(span: float, unit: str) -> float:

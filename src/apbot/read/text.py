@@ -8,6 +8,7 @@ rule never depends on where the converter happened to break a line.
 
 from __future__ import annotations
 
+import itertools
 import re
 import unicodedata
 from dataclasses import dataclass, field
@@ -60,7 +61,7 @@ def _clean_chars(text: str) -> str:
         ch = match.group(0)
         cat = unicodedata.category(ch)
         if cat.startswith("C"):
-            return ""
+            return "\f" if ch == "\f" else ""  # a form feed marks a page: kept, on its own line
         if ch == "❄":
             return "COLD"  # the snowflake printed for a cold wash or a cold setting
         if cat == "So" and ch not in _KEEP:
@@ -125,41 +126,81 @@ _NUMBER_PREFIX = re.compile(r"^\d{1,2}(?:\.\d{1,2})*\.?\s+")
 _CAPS_HEADING = re.compile(r"[A-Z][A-Z0-9 &/,'’()+-]*")
 
 
+_PAGE_TAG = re.compile(  # "- 3 -", "Page 2 — EN", "EN · 1/14", "p. 3 / 12", "EN-4", "2 en", "6a"
+    r"[-—–·\s]*(?:(?:en|de|fr|es|it|nl|uk|us|gb)\s*[-—–·/]?\s*)?(?:(?:page|p\.)\s*)?\d{1,3}[a-d]?"
+    r"(?:\s*(?:/|of)\s*\d{1,3}|\s*\(\d{1,3}\))?(?:\s*[-—–·]?\s*(?:en|de|fr|es|it|nl))?"
+    r"[-—–·\s]*",
+    re.IGNORECASE,
+)
+_CONTENT_START = re.compile(r"\d{1,2}[.)]\s|\d{1,2}(?:\.\d{1,2})*\s+\S|[-*•·▪●◦–]\s")
+_KEY_WORDS = re.compile(r"\b(?:press|touch|tap|turn|hold|select|push)\b|\[[^\]]+\]", re.I)
+
+
 def _furniture(lines: list[str]) -> set[int]:
-    """Page headers and footers of text flattened from a PDF (0-based line indexes): a page
-    number alone ("— 2 —", "Page 3"), or a short line standing by a blank line that comes back
-    three or more times with only its digits changed ("GLIMMERKIN UVC-9   - 3 -")."""
+    """Page headers and footers of text flattened from a PDF (0-based line indexes). Only text
+    that shows its pages has them: two or more page markers — a form feed, a page number
+    standing alone by a blank line ("— 2 —", "Page 3", "EN · 2/14"), or one beside a running
+    title that comes back three or more times ("GLIMMERKIN UVC-9    - 3 -"). Then a short line
+    that comes back three or more times (digits aside) is furniture only next to a marker, at
+    the top or bottom of a page, and never when it reads as content: a numbered or bulleted
+    line, one naming a key to press, a single word ("Note"), or a row of a table."""
 
     def key(line: str) -> str:
         return re.sub(r"\s+", " ", re.sub(r"\d+", "#", line.strip())).lower()
 
-    def first(line: str) -> str:  # a running header's left part ("GLIMMERKIN UVC-9    - 3 -")
-        return key(re.split(r"\s{4,}", line.strip())[0]) + " …"
-
+    cells = [re.split(r"\s{3,}", line.strip()) for line in lines]
     counts: dict[str, int] = {}
-    for line in lines:
-        counts[key(line)] = counts.get(key(line), 0) + 1
-        if re.search(r"\S\s{4,}\S", line.strip()):
-            counts[first(line)] = counts.get(first(line), 0) + 1
-    out: set[int] = set()
+    for i, line in enumerate(lines):
+        for k in {key(line), key(cells[i][0]) + " …", key(cells[i][-1]) + " …"}:
+            counts[k] = counts.get(k, 0) + 1
+
+    def plain(k: int) -> bool:  # a blank line or a line drawn across the page
+        return not 0 <= k < len(lines) or not re.search(r"[A-Za-z0-9]", lines[k])
+
+    markers: set[int] = set()
+    titles: set[str] = set()  # running titles beside page numbers ("GLIMMERKIN UVC-9")
     for i, line in enumerate(lines):
         stripped = line.strip()
-        if not stripped or "|" in stripped or len(stripped) > 90:
+        apart = plain(i - 1) or plain(i + 1) or re.match(r"\s{20,}", line)
+        numbered = bool(stripped and _PAGE_TAG.fullmatch(stripped) and re.search("[1-9]", line))
+        if "\f" in line or (numbered and apart):
+            markers.add(i)
+        elif len(cells[i]) == 2 and "|" not in stripped:
+            for tag, title in (cells[i], reversed(cells[i])):
+                if _PAGE_TAG.fullmatch(tag) and counts[key(title) + " …"] >= 3:
+                    markers.add(i)
+                    titles.add(key(title))
+    if len(markers) < 2:
+        return set()
+    filled = [i for i, line in enumerate(lines) if line.strip() and i not in markers]
+    edge: set[int] = set()
+    for m in markers:  # up to three lines of text above and below each page marker
+        after = [i for i in filled if i > m][:3]
+        before = [i for i in filled if i < m][-3:]
+        edge |= set(after) | set(before)
+    edge |= set(filled[:3])  # the first page's header
+    out = {i for i in markers if "\f" not in lines[i]}
+    for i in sorted(edge):
+        stripped = lines[i].strip()
+        if "|" in stripped or len(stripped) > 90 or counts[key(lines[i])] < 3:
             continue
-        by_blank = (i > 0 and not lines[i - 1].strip()) or (
-            i + 1 < len(lines) and not lines[i + 1].strip()
-        )
-        if _PAGE_NUMBER.match(stripped) and by_blank:
+        rule = not re.search(r"[A-Za-z0-9]", stripped)  # a drawn line across the page
+        if rule and len(stripped) >= 10 and not re.match(r"[-*#>|`]", stripped):
             out.add(i)
             continue
-        wide = bool(re.search(r"\S\s{4,}\S", stripped)) and counts.get(first(line), 0) >= 3
-        if (
-            (counts[key(line)] >= 3 or wide)
-            and by_blank
-            and len(key(line)) >= 4
-            and not re.search(r"[.!?:;,]$", stripped)
-            and not re.match(r"[-*#>|`]", stripped)
-        ):
+        content = (
+            _CONTENT_START.match(stripped)
+            or _KEY_WORDS.search(stripped)
+            or len(stripped.split()) < 2
+            or len(cells[i]) > 2
+            or (len(cells[i]) == 2 and re.match(r"\s{2,}", lines[i]))  # an indented table row
+            or re.search(r"[.!?:;,]$", stripped)
+            or re.match(r"[-*#>|`]", stripped)
+        )
+        if not content:
+            out.add(i)
+    for i, line in enumerate(lines):  # a running title beside the section's name, anywhere
+        if len(cells[i]) == 2 and key(cells[i][0]) in titles and not re.match(r"\s", line):
             out.add(i)
     return out
 
@@ -207,6 +248,24 @@ def _plain_heading(line: str) -> bool:
     return sub_level and short and rest[0].isupper() and not re.search(r"\d", rest)
 
 
+def _legend(parts: list[tuple[int, str, str]]) -> bool:
+    """Rows of a legend or a table ("DELAY START button     Sets the finish time …"), not two
+    columns of prose: the left parts are mostly short terms, each starting afresh, and the left
+    column's text does not run on from one line to the next."""
+    lefts = [p[1] for p in parts]
+    terms = sum(
+        len(left.split()) <= 4
+        and not re.search(r"[,;-]$|\b(?:the|and|or|to|of|a|an)$", left)
+        and not left[0].islower()
+        for left in lefts
+    )
+    runs_on = sum(
+        nxt[0].islower() or bool(re.search(r"[,-]$|\b(?:the|and|or|to|of|a|an|with)$", left))
+        for left, nxt in itertools.pairwise(lefts)
+    )
+    return terms * 3 >= 2 * len(lefts) and runs_on * 2 < len(lefts) - 1
+
+
 def _reading_order(lines: list[str]) -> tuple[list[str], list[int]]:
     """The lines in reading order, each with its 1-based number in the text: prose set in two
     columns side by side ("5.2 Spin Press the SPIN button to     Spin: no final spin; the…") is
@@ -251,7 +310,7 @@ def _reading_order(lines: list[str]) -> tuple[list[str], list[int]]:
             parts.append(here)
             j += 1
         prose = sum(bool(re.search(r"[a-z]{3,} [a-z]{3,}", p[1] + " " + p[2])) for p in parts)
-        if j - i >= 3 and prose * 3 >= 2 * (j - i):
+        if j - i >= 3 and prose * 3 >= 2 * (j - i) and not _legend(parts):
             out += [p[1] for p in parts] + [p[2] for p in parts]
             numbers += [k + 1 for k in range(i, j)] * 2
             i, column = j, parts[0][0]
@@ -272,7 +331,7 @@ def parse_manual(text: str) -> Manual:
             f"the manual has {len(text):,} characters; the reader accepts at most "
             f"{MAX_MANUAL_CHARS:,}"
         )
-    text = text.replace("\r\n", "\n").replace("\r", "\n")
+    text = text.replace("\r\n", "\n").replace("\r", "\n").replace("\f", "\n\f\n")
     text = _clean_chars(re.sub(r" ?❄ ?", " ❄ ", text))  # one space each side, not two
     original = text.split("\n")
     raw_lines, line_numbers = _reading_order(original)
