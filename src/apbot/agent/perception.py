@@ -23,6 +23,10 @@ from apbot.agent.estimate import StateEstimator
 from apbot.agent.reader import DisplayReader, Hypothesis, Reading, is_read
 from apbot.model.schema import ApplianceModel
 
+LOOK_ALIKE_COST = 1.0
+"""How much more a photo's reading may cost (in the decoder's units, where a cell's look-alikes
+lie within 1.5 of its best glyph) and still win by being one the display rules explain whole."""
+
 MISSING: Any = type("Missing", (), {"__repr__": lambda self: "MISSING"})()
 """Not shown on the display at all (a ``None`` value means shown as ``--``)."""
 UNREADABLE: Any = type("Unreadable", (), {"__repr__": lambda self: "UNREADABLE"})()
@@ -124,9 +128,12 @@ class Perceiver:
     ) -> Seen:
         """Image mode: of the texts a photo's display may show (with their visual cost), the
         cheapest one the belief can read; among equally cheap ones (look-alikes such as
-        ``5``/``S``), the one closest to the prediction. Unreadable if none can be read."""
+        ``5``/``S``), the one closest to the prediction. A look-alike the display rules explain
+        whole beats a cheaper one they read only in part, within :data:`LOOK_ALIKE_COST`
+        (``▶`` drawn small reads best as ``▸``, which no screen of the belief prints: the part
+        read would say the run lamp is off). Unreadable if none can be read."""
         readable = []
-        for text, cost in alternatives:
+        for text, cost in _with_symbol_sizes(alternatives):
             reading = self.reader.read(text, context)
             if not reading.unknown:
                 readable.append((float(cost), choose(reading, context, expected)))
@@ -134,18 +141,40 @@ class Perceiver:
             text = alternatives[0][0]
             return choose(self.reader.read(text, context), context, expected)
         cheapest = min(cost for cost, _ in readable)
+        whole = [
+            (cost, seen)
+            for cost, seen in readable
+            if not seen.partial and cost <= cheapest + LOOK_ALIKE_COST
+        ]
+        if whole:
+            readable = whole
+            cheapest = min(cost for cost, _ in readable)
 
-        def closeness(seen: Seen) -> tuple[int, int, int]:
+        def closeness(seen: Seen) -> tuple[int, int]:
             kind, variable = expected or (None, None)
             on_screen = seen.screen_kind == kind and (kind != "focus" or seen.screen == variable)
             differing = sum(1 for name, value in seen.values.items() if context.get(name) != value)
-            # a look-alike the display rules explain only in part ('DFF 2 h': the timer read,
-            # 'DFF' left over) loses to one they explain whole ('OFF 2 h'), however close the
-            # part is to the prediction
-            return (0 if on_screen else 1, int(seen.partial), differing + len(seen.outside))
+            return (0 if on_screen else 1, differing + len(seen.outside))
 
         tied = [seen for cost, seen in readable if cost <= cheapest + 0.05]
         return min(tied, key=closeness)
+
+
+SYMBOL_SIZES = str.maketrans({"▸": "▶", "►": "▶", "◂": "◀", "◄": "◀", "▴": "▲", "▾": "▼"})
+"""One symbol drawn at two sizes (a status row's small ▸ is the run lamp's ▶): a photo cannot
+tell which of the two a manual's or model's text uses."""
+
+
+def _with_symbol_sizes(alternatives: list[tuple[str, float]]) -> list[tuple[str, float]]:
+    """The photo's readings, each followed by itself with its arrows at the other size (a
+    little dearer, so a display rule that prints the small one still wins)."""
+    grown = []
+    for text, cost in alternatives:
+        grown.append((text, cost))
+        other = text.translate(SYMBOL_SIZES)
+        if other != text:
+            grown.append((other, cost + 0.5))
+    return grown
 
 
 def choose(
