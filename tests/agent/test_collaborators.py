@@ -13,8 +13,9 @@ from apbot.agent.episode import TaskContext
 from apbot.agent.explorer import Explorer
 from apbot.agent.greedy import GreedyExecutor
 from apbot.agent.guards import GuardLearner
-from apbot.agent.perception import MISSING
+from apbot.agent.perception import MISSING, Seen
 from apbot.agent.procedures import ProcedureRepairer
+from apbot.agent.repair import RepairError
 from apbot.agent.session import AgentConfig, Session
 from apbot.model.schema import ApplianceModel
 from apbot.plan.plan import plan
@@ -231,6 +232,50 @@ def test_a_guard_relaxation_that_makes_the_goal_reachable_is_still_found() -> No
     s = session(fan(), locked)
     assert GuardLearner(s).relax({"timer": 2})
     assert s.episode.repairs == ["timer lock may let press_up work (to be seen)"]
+
+
+def _timer_locked() -> ApplianceModel:
+    return model_from(
+        (FAN % {"speeds": "low, mid, high", "hours": 4, "timer": TIMER_STEPS}).replace(
+            "  - {name: switched off",
+            '  - {name: timer lock, when: {power: "on"}, '
+            "only: [press_power, press_speed, press_timer]}\n"
+            "  - {name: switched off",
+        )
+    )
+
+
+def test_a_relaxation_whose_search_ran_out_is_not_remembered_as_in_vain(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    s = session(fan(), _timer_locked())
+    learner = GuardLearner(s)
+    budget = guards.RELAX_BUDGET
+    monkeypatch.setattr(guards, "RELAX_BUDGET", 1)  # every search gives up at once
+    assert not learner.relax({"timer": 2})
+    monkeypatch.setattr(guards, "RELAX_BUDGET", budget)
+    assert learner.relax({"timer": 2})  # asked again with room to search: found
+
+
+def test_a_goal_tried_in_vain_is_asked_again_once_the_display_moved_a_value(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    s = session(fan(), _timer_locked())
+    learner = GuardLearner(s)
+    guesses: list[str] = []
+
+    def refuse(model: ApplianceModel, index: int, action: str) -> ApplianceModel:
+        guesses.append(action)
+        raise RepairError("no such guess here")
+
+    monkeypatch.setattr(guards, "allow", refuse)
+    assert not learner.relax({"timer": 2})
+    tried = len(guesses)
+    assert tried and not learner.relax({"timer": 2}) and len(guesses) == tried  # remembered
+    assert s.belief.value("speed") != "high"
+    s.sync(Seen("SPEED high", {"speed": "high"}))  # the display says otherwise than the belief
+    assert not learner.relax({"timer": 2})
+    assert len(guesses) == 2 * tried  # a new question: asked again
 
 
 LOCKED_FAN = """

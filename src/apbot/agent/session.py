@@ -130,6 +130,8 @@ class Session:
         self.contradicted: dict[str, Any] = {}  # last shown as a value the belief cannot hold
         self.unread: set[str] = set()  # due on the display, but shown as the belief cannot read
         self.ever_seen: set[str] = set()  # shown (or shown absent) at least once
+        # how often the display moved the belief's state where its own transitions did not go
+        self.moved = 0
         self._unshowable: tuple[Any, frozenset[str]] = (None, frozenset())
 
     # --- acting ------------------------------------------------------------------------------
@@ -329,8 +331,11 @@ class Session:
         """Believe what the display shows; what it showed is confirmed, and a value the belief
         cannot hold is kept as a contradiction until the setting is seen with one it can."""
         self.last_seen = seen
+        before = self.belief.state
         for name, value in seen.values.items():
             self.belief.set_value(name, value)
+        if self.belief.state != before:
+            self.moved += 1
         if not self.last.values:  # the display alone: a setting no screen tells apart (an oven
             # lamp) matched the prediction only because every value prints the same
             hidden = self.unshowable()
