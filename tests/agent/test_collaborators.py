@@ -334,3 +334,56 @@ def test_a_time_on_a_partly_read_display_that_contradicts_a_time_seen_before_is_
     assert cancelled.seen.partial
     assert s.belief.value("delay") == "00:30:00"  # nothing the belief could read said otherwise
     assert s.unconfirmed(["delay"]) == ["delay"]  # but it is to be seen again before a claim
+
+
+SILENT_LOCK = """
+controls: [{id: power}, {id: function}, {id: lock}, {id: sound}]
+variables:
+  power: {type: discrete, values: ["off", "on"]}
+  function: {type: discrete, values: [fry, soup], label: FUNC}
+  child_lock: {type: discrete, values: ["off", "on"], initial: "on",
+               show: {"on": LOCKED, "off": ""}}
+  beep: {type: discrete, values: ["off", "on"], visible: false}
+actions:
+  press_power: {control: power}
+  press_function: {control: function}
+  press_lock: {control: lock}
+  press_sound: {control: sound}
+features:
+  power: [{actions: [press_power], variable: power, effect: toggle}]
+  function: [{actions: [press_function], variable: function, effect: next}]
+  lock: [{actions: [press_lock], variable: LOCK_KEY}]
+  sound: [{actions: [press_sound], variable: SOUND_KEY, effect: toggle}]
+display:
+  idle: "{function}"
+  indicators: [power]
+"""
+
+
+def test_an_unlock_that_failed_is_not_seen_as_unlocked_by_a_silent_other_screen() -> None:
+    # the belief's unlock key is the panel's function key: the function screen comes up, with
+    # no LOCKED on it — as it would be whatever the lock holds. Unlocked is not seen
+    truth = model_from(
+        SILENT_LOCK.replace("LOCK_KEY}", "function, effect: next}")
+        .replace("SOUND_KEY", "child_lock")
+        .replace('  beep: {type: discrete, values: ["off", "on"], visible: false}\n', "")
+    )
+    belief = model_from(
+        SILENT_LOCK.replace("LOCK_KEY}", "child_lock, effect: toggle}").replace("SOUND_KEY", "beep")
+    )
+    s = session(truth, belief)
+    s.press(s.planned("press_power"))
+    done = s.press(s.planned("press_lock"))
+    assert done.observed("child_lock") is MISSING
+    assert "child_lock" in done.surprises
+    assert s.evidence.get("child_lock") != "off" and s.belief.value("child_lock") == "on"
+
+
+def test_an_unlock_is_seen_by_the_silence_of_its_own_screen() -> None:
+    model = model_from(
+        SILENT_LOCK.replace("LOCK_KEY}", "child_lock, effect: toggle}").replace("SOUND_KEY", "beep")
+    )
+    s = session(model, model)
+    s.press(s.planned("press_power"))
+    done = s.press(s.planned("press_lock"))
+    assert not done.surprising and s.evidence["child_lock"] == "off"
