@@ -30,8 +30,8 @@ class DisplayLearner:
 
     def __init__(self, session: Session) -> None:
         self.session = session
-        # per setting, the screens read with its lamp unlit where the belief predicted it lit
-        self._unlit: dict[str, set[frozenset[tuple[str, str | None]]]] = {}
+        # per setting, the displays read with its lamp unlit where the belief predicted it lit
+        self._unlit: dict[str, set[str]] = {}
 
     def learn(self, name: str, texts: Sequence[str], believed: Any = None) -> bool:
         """Repair ``name``'s display rules so that these texts read as its values (once per
@@ -128,10 +128,10 @@ class DisplayLearner:
         it has, read unlit from displays that do not show the lamp's text while other screens
         are up: the display shows the setting on its own screen only (a reader that took
         "POWER 1000 W" for a lamp). One unlit reading is as well a key that failed to light a
-        real lamp, so the lamp goes only after unlit readings on two different screens, and
+        real lamp, so the lamp goes only after it was unlit on two different displays, and
         only if the repaired belief still has a screen that shows the setting. The setting's
         value is then the belief's alone until a screen shows it. True when the belief
-        changed."""
+        changed, or at the first unlit display (plan again and look once more)."""
         session = self.session
         seen = done.seen
         model = session.belief.model
@@ -144,10 +144,16 @@ class DisplayLearner:
             lamp = lamp_for(spec, name, predicted, tuple(session.domain_values(name)))
             if not lamp or lamp.casefold() in seen.text.casefold() or seen.showing(name):
                 continue
-            screens = self._unlit.setdefault(name, set())
-            screens.add(seen.screens)
-            if len(screens) < 2:
-                continue  # one unlit screen: the key may have failed to light a real lamp
+            unlit = self._unlit.setdefault(name, set())
+            first = not unlit
+            unlit.add(seen.text.strip().casefold())
+            if first:
+                # one unlit display: the key may have failed to light a real lamp. Plan again
+                # (once per setting) and see the lamp on the next display before repairing
+                session.episode.log("repair", f"{name}'s lamp unlit: to be seen again")
+                return True
+            if len(unlit) < 2:
+                continue
             try:
                 new = drop_indicator(model, name)
             except RepairError:
