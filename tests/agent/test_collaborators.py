@@ -13,8 +13,9 @@ from apbot.agent.episode import TaskContext
 from apbot.agent.explorer import Explorer
 from apbot.agent.greedy import GreedyExecutor
 from apbot.agent.guards import GuardLearner
-from apbot.agent.perception import MISSING
+from apbot.agent.perception import MISSING, Seen
 from apbot.agent.procedures import ProcedureRepairer
+from apbot.agent.repair import RepairError
 from apbot.agent.session import AgentConfig, Session
 from apbot.model.schema import ApplianceModel
 from apbot.plan.plan import plan
@@ -233,6 +234,50 @@ def test_a_guard_relaxation_that_makes_the_goal_reachable_is_still_found() -> No
     assert s.episode.repairs == ["timer lock may let press_up work (to be seen)"]
 
 
+def _timer_locked() -> ApplianceModel:
+    return model_from(
+        (FAN % {"speeds": "low, mid, high", "hours": 4, "timer": TIMER_STEPS}).replace(
+            "  - {name: switched off",
+            '  - {name: timer lock, when: {power: "on"}, '
+            "only: [press_power, press_speed, press_timer]}\n"
+            "  - {name: switched off",
+        )
+    )
+
+
+def test_a_relaxation_whose_search_ran_out_is_not_remembered_as_in_vain(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    s = session(fan(), _timer_locked())
+    learner = GuardLearner(s)
+    budget = guards.RELAX_BUDGET
+    monkeypatch.setattr(guards, "RELAX_BUDGET", 1)  # every search gives up at once
+    assert not learner.relax({"timer": 2})
+    monkeypatch.setattr(guards, "RELAX_BUDGET", budget)
+    assert learner.relax({"timer": 2})  # asked again with room to search: found
+
+
+def test_a_goal_tried_in_vain_is_asked_again_once_the_display_moved_a_value(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    s = session(fan(), _timer_locked())
+    learner = GuardLearner(s)
+    guesses: list[str] = []
+
+    def refuse(model: ApplianceModel, index: int, action: str) -> ApplianceModel:
+        guesses.append(action)
+        raise RepairError("no such guess here")
+
+    monkeypatch.setattr(guards, "allow", refuse)
+    assert not learner.relax({"timer": 2})
+    tried = len(guesses)
+    assert tried and not learner.relax({"timer": 2}) and len(guesses) == tried  # remembered
+    assert s.belief.value("speed") != "high"
+    s.sync(Seen("SPEED high", {"speed": "high"}))  # the display says otherwise than the belief
+    assert not learner.relax({"timer": 2})
+    assert len(guesses) == 2 * tried  # a new question: asked again
+
+
 LOCKED_FAN = """
 controls: [{id: power}, {id: speed}, {id: lock}]
 variables:
@@ -289,3 +334,56 @@ def test_a_time_on_a_partly_read_display_that_contradicts_a_time_seen_before_is_
     assert cancelled.seen.partial
     assert s.belief.value("delay") == "00:30:00"  # nothing the belief could read said otherwise
     assert s.unconfirmed(["delay"]) == ["delay"]  # but it is to be seen again before a claim
+
+
+SILENT_LOCK = """
+controls: [{id: power}, {id: function}, {id: lock}, {id: sound}]
+variables:
+  power: {type: discrete, values: ["off", "on"]}
+  function: {type: discrete, values: [fry, soup], label: FUNC}
+  child_lock: {type: discrete, values: ["off", "on"], initial: "on",
+               show: {"on": LOCKED, "off": ""}}
+  beep: {type: discrete, values: ["off", "on"], visible: false}
+actions:
+  press_power: {control: power}
+  press_function: {control: function}
+  press_lock: {control: lock}
+  press_sound: {control: sound}
+features:
+  power: [{actions: [press_power], variable: power, effect: toggle}]
+  function: [{actions: [press_function], variable: function, effect: next}]
+  lock: [{actions: [press_lock], variable: LOCK_KEY}]
+  sound: [{actions: [press_sound], variable: SOUND_KEY, effect: toggle}]
+display:
+  idle: "{function}"
+  indicators: [power]
+"""
+
+
+def test_an_unlock_that_failed_is_not_seen_as_unlocked_by_a_silent_other_screen() -> None:
+    # the belief's unlock key is the panel's function key: the function screen comes up, with
+    # no LOCKED on it — as it would be whatever the lock holds. Unlocked is not seen
+    truth = model_from(
+        SILENT_LOCK.replace("LOCK_KEY}", "function, effect: next}")
+        .replace("SOUND_KEY", "child_lock")
+        .replace('  beep: {type: discrete, values: ["off", "on"], visible: false}\n', "")
+    )
+    belief = model_from(
+        SILENT_LOCK.replace("LOCK_KEY}", "child_lock, effect: toggle}").replace("SOUND_KEY", "beep")
+    )
+    s = session(truth, belief)
+    s.press(s.planned("press_power"))
+    done = s.press(s.planned("press_lock"))
+    assert done.observed("child_lock") is MISSING
+    assert "child_lock" in done.surprises
+    assert s.evidence.get("child_lock") != "off" and s.belief.value("child_lock") == "on"
+
+
+def test_an_unlock_is_seen_by_the_silence_of_its_own_screen() -> None:
+    model = model_from(
+        SILENT_LOCK.replace("LOCK_KEY}", "child_lock, effect: toggle}").replace("SOUND_KEY", "beep")
+    )
+    s = session(model, model)
+    s.press(s.planned("press_power"))
+    done = s.press(s.planned("press_lock"))
+    assert not done.surprising and s.evidence["child_lock"] == "off"

@@ -447,3 +447,10 @@ def test_a_goal_on_a_value_declared_unreachable_says_so() -> None:
     with pytest.raises(Unreachable, match=r"stage cannot become 'cooling': .*declares it unreach"):
         plan(model, None, {"stage": "cooling"})
     assert len(plan(model, None, {"stage": "drying"})) == 1
+
+
+def test_unreachable_says_why_in_its_repr() -> None:
+    assert repr(Unreachable("no key sets it")) == "Unreachable('no key sets it')"
+    lazy = Unreachable(lambda: "worked out later")
+    assert "cannot be reached" in repr(lazy)
+    assert str(lazy) == "worked out later"

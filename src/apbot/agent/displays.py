@@ -18,9 +18,9 @@ from apbot.agent.infer import Dark, Unread, infer_template
 from apbot.agent.reader import DisplayReader
 from apbot.agent.repair import RepairError, drop_indicator, set_display
 from apbot.agent.session import Executed, Session, loose
-from apbot.model.display import display_value, lamp_for
+from apbot.model.display import can_show, display_value, lamp_for
 from apbot.model.domain import AnyVariable
-from apbot.model.schema import DiscreteVariable, TimeStyle, TimeVariable
+from apbot.model.schema import ApplianceModel, DiscreteVariable, TimeStyle, TimeVariable
 
 _LAMP_GAP = re.compile(r"\s{2,}")
 
@@ -30,6 +30,8 @@ class DisplayLearner:
 
     def __init__(self, session: Session) -> None:
         self.session = session
+        # per setting, the displays read with its lamp unlit where the belief predicted it lit
+        self._unlit: dict[str, set[str]] = {}
 
     def learn(self, name: str, texts: Sequence[str], believed: Any = None) -> bool:
         """Repair ``name``'s display rules so that these texts read as its values (once per
@@ -123,10 +125,13 @@ class DisplayLearner:
 
     def no_lamp(self, done: Executed) -> bool:
         """A setting the belief shows as a lamp on every screen, predicted lit with a value
-        it has, read unlit from a display that does not show the lamp's text while another
-        screen is up: the display shows the setting on its own screen only (a reader that
-        took "POWER 1000 W" for a lamp). Drop the lamp (once per setting); True when the
-        belief changed."""
+        it has, read unlit from displays that do not show the lamp's text while other screens
+        are up: the display shows the setting on its own screen only (a reader that took
+        "POWER 1000 W" for a lamp). One unlit reading is as well a key that failed to light a
+        real lamp, so the lamp goes only after it was unlit on two different displays, and
+        only if the repaired belief still has a screen that shows the setting. The setting's
+        value is then the belief's alone until a screen shows it. True when the belief
+        changed, or at the first unlit display (plan again and look once more)."""
         session = self.session
         seen = done.seen
         model = session.belief.model
@@ -139,14 +144,29 @@ class DisplayLearner:
             lamp = lamp_for(spec, name, predicted, tuple(session.domain_values(name)))
             if not lamp or lamp.casefold() in seen.text.casefold() or seen.showing(name):
                 continue
-            if not session.budget.once("template", f"lamp:{name}"):
+            unlit = self._unlit.setdefault(name, set())
+            first = not unlit
+            unlit.add(seen.text.strip().casefold())
+            if first:
+                # one unlit display: the key may have failed to light a real lamp. Plan again
+                # (once per setting) and see the lamp on the next display before repairing
+                session.episode.log("repair", f"{name}'s lamp unlit: to be seen again")
+                return True
+            if len(unlit) < 2:
                 continue
             try:
                 new = drop_indicator(model, name)
             except RepairError:
                 continue
+            if not can_show(new, name) or not _has_screen(new, name):
+                continue  # without the lamp nothing would show it: keep what the panel said
+            if not session.budget.once("template", f"lamp:{name}"):
+                continue
             session.adopt(new, f"{name} has no lamp: shown on its own screen only", None)
-            session.belief.set_value(name, predicted)  # not seen otherwise: keep the belief
+            session.belief.set_value(name, predicted)
+            # never read on its own screen yet: a claim must see it there first
+            session.stale.add(name)
+            session.unread.add(name)
             return True
         return False
 
@@ -172,3 +192,9 @@ class DisplayLearner:
 def _parts(text: str) -> set[str]:
     """The words of a display, case-folded (the main text and each lamp)."""
     return {part.casefold() for part in text.split() if part}
+
+
+def _has_screen(model: ApplianceModel, name: str) -> bool:
+    """Whether a feature step of ``model`` adjusts ``name``: its own screen comes up while it
+    does (a key acting from anywhere brings up no screen)."""
+    return any(step.variable == name for steps in model.features.values() for step in steps)

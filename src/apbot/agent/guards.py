@@ -37,10 +37,11 @@ class GuardLearner:
         # (guard condition, key) pairs seen refused: no relaxation may suppose them allowed
         self.witnessed: set[tuple[str, str]] = set()
         # on the belief ``_hopeless_on``: (state, goal) pairs no relaxation can help, and the
-        # goals every relaxation was tried for in vain
+        # goals every relaxation was tried for in vain, with the count of display moves
+        # (``Session.moved``) then: a value the display moved is a new question
         self._hopeless_on: CompiledModel | None = None
         self._hopeless_for: set[tuple[Any, str]] = set()
-        self._tried_for: set[str] = set()
+        self._tried_for: dict[str, int] = {}
 
     def explain(self, refused: Executed) -> bool:
         """A refusal whose display is one of the belief's guard messages: believe that guard
@@ -284,18 +285,24 @@ class GuardLearner:
         ][:MAX_RELAXATIONS]
         if self._hopeless_on is not session.belief.compiled:
             self._hopeless_on = session.belief.compiled
-            self._hopeless_for, self._tried_for = set(), set()
+            self._hopeless_for, self._tried_for = set(), {}
         goal = repr(sorted(target.items()))
         # each guess tried in vain for this goal on this belief: the same guards keep it out
-        # from the next state too (another plan cycle, the same failure) — until a repair
-        if goal in self._tried_for or not candidates or self._hopeless(candidates, target):
+        # from the next state too (another plan cycle, the same failure) — until a repair, or
+        # the display moves a value where the belief's transitions do not lead
+        tried = self._tried_for.get(goal) == session.moved
+        if tried or not candidates or self._hopeless(candidates, target):
             return False
+        cut = False  # a search gave up at its budget: that guess is untried, not in vain
         for index, action in candidates:
             try:
                 variant = allow(model, index, action)
                 # a small search each: the variant is a guess, and a throwaway compilation
                 plan(CompiledModel(variant), session.belief.state, target, RELAX_BUDGET)
-            except (RepairError, Unreachable):
+            except RepairError:
+                continue
+            except Unreachable as exc:
+                cut = cut or exc.budget_hit
                 continue
             if not session.budget.once("guard", f"relax:{index}:{action}"):
                 continue
@@ -305,7 +312,8 @@ class GuardLearner:
                 variant, f"{label} may let {action} work (to be seen)", session.belief.pointer()
             )
             return True
-        self._tried_for.add(goal)
+        if not cut:
+            self._tried_for[goal] = session.moved
         return False
 
     def _hopeless(self, candidates: list[tuple[int, str]], target: dict[str, Any]) -> bool:

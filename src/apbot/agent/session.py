@@ -130,6 +130,8 @@ class Session:
         self.contradicted: dict[str, Any] = {}  # last shown as a value the belief cannot hold
         self.unread: set[str] = set()  # due on the display, but shown as the belief cannot read
         self.ever_seen: set[str] = set()  # shown (or shown absent) at least once
+        # how often the display moved the belief's state where its own transitions did not go
+        self.moved = 0
         self._unshowable: tuple[Any, frozenset[str]] = (None, frozenset())
 
     # --- acting ------------------------------------------------------------------------------
@@ -188,9 +190,22 @@ class Session:
         if variable and variable in expected.values and silent(self.belief.model, variable):
             unsaid = seen.observed(variable) is MISSING and variable not in seen.candidates
             readable = bool(seen.screens) and not (seen.unknown or seen.blank)
-            if unsaid and readable and predicted in silent(self.belief.model, variable):
-                # the value the key was to set prints nothing, and a readable display does not
-                # show the word of any other value: it shows that value by its silence
+            # silence says something only where the other value's word would be: the
+            # setting's own screen, any screen when it is a lamp, or a screen the key changed
+            # to with nothing else moved. A screen that shows the key did something else (or
+            # nothing) would be as silent had the key failed: a lock still on, its LOCKED
+            # shown only when a key is refused
+            moved = seen.outside or any(
+                self.belief.value(n) != v for n, v in seen.values.items() if n != variable
+            )
+            speaks = (
+                ("focus", variable) in seen.screens
+                or variable in self.belief.model.display.indicators
+                or (feedback.text != before_text and not moved)
+            )
+            if unsaid and readable and speaks and predicted in silent(self.belief.model, variable):
+                # the value the key was to set prints nothing, and its screen does not show the
+                # word of any other value: it shows that value by its silence
                 seen.values[variable] = predicted
         surprises = {
             name: (self.belief.value(name), value)
@@ -329,8 +344,11 @@ class Session:
         """Believe what the display shows; what it showed is confirmed, and a value the belief
         cannot hold is kept as a contradiction until the setting is seen with one it can."""
         self.last_seen = seen
+        before = self.belief.state
         for name, value in seen.values.items():
             self.belief.set_value(name, value)
+        if self.belief.state != before:
+            self.moved += 1
         if not self.last.values:  # the display alone: a setting no screen tells apart (an oven
             # lamp) matched the prediction only because every value prints the same
             hidden = self.unshowable()

@@ -45,7 +45,8 @@ class Unreachable(Exception):
         blocked: tuple[str, ...] = (),
         generated: int = 0,
     ) -> None:
-        super().__init__()
+        # a short message for repr and tracebacks; a reason still to be worked out stays unread
+        super().__init__(reason if isinstance(reason, str) else "the goal cannot be reached")
         self._reason = reason
         self.budget_hit = budget_hit  # the search gave up: the goal may still be reachable
         self.blocked = blocked
