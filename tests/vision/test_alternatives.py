@@ -40,3 +40,19 @@ def test_a_look_alike_read_only_in_part_loses_to_one_read_whole() -> None:
     seen = perceiver.perceive(Feedback(tied[0][0], image=_Reading(tied)), prediction)
     assert not seen.partial
     assert seen.values["timer_off"] == "02:00:00"
+
+
+def test_an_arrow_drawn_small_is_the_run_lamp_the_belief_prints_large() -> None:
+    """A status row's small ▸ is the ▶ the toaster's run lamp prints: read as leftover text,
+    the part read would say the oven is off."""
+    perceiver = Perceiver(suite_model("toaster_oven_3"))
+    photo = [("TIME 0:28  ▸", 0.0)]
+    seen = perceiver.perceive(Feedback(photo[0][0], image=_Reading(photo)), {"running": "on"})
+    assert seen.values["running"] == "on" and not seen.partial
+
+
+def test_a_whole_reading_does_not_beat_a_much_cheaper_one() -> None:
+    """Only look-alikes trade: a reading far dearer than the photo's best is no look-alike."""
+    perceiver = Perceiver(load_example("microwave_keypad"))
+    feedback = Feedback("PL8", image=_Reading([("PL8", 0.0), ("PL7", 5.0)]))
+    assert perceiver.perceive(feedback, {"power_level": 7}).values == {"power_level": 8}
