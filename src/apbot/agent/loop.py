@@ -29,17 +29,8 @@ from apbot.agent.looking import route_to_screen
 from apbot.agent.merged import ProcedureSplitter
 from apbot.agent.perception import Seen
 from apbot.agent.procedures import ProcedureRepairer
-from apbot.agent.session import (
-    MISSING,
-    UNREADABLE,
-    AgentConfig,
-    Executed,
-    Session,
-    Stop,
-    loose,
-    magnitude,
-    summary,
-)
+from apbot.agent.quantities import loose, magnitude, summary
+from apbot.agent.session import MISSING, UNREADABLE, AgentConfig, Executed, Session, Stop
 from apbot.model.display import can_show, display_value
 from apbot.model.domain import ValueProblem, all_values, build_domain, normalise
 from apbot.model.goal import GoalError
@@ -62,6 +53,8 @@ class ClosedLoop:
         self.explorer = Explorer(self.session, self.displays)
         self.guards = GuardLearner(self.session)
         self.procedures = ProcedureRepairer(self.session, self.guards)
+        self.movers = self.procedures.movers
+        self.side_effects = self.procedures.side_effects
         self.finder = VariableFinder(self.session, self.guards)
         self.splitter = ProcedureSplitter(self.session)
         self.greedy = GreedyExecutor(self.session)
@@ -211,7 +204,7 @@ class ClosedLoop:
         that walks it, filed under another procedure."""
         self.explorer.explore(name, last, history)
         if self.explorer.stuck is not None:
-            self.procedures.find_sibling(*self.explorer.stuck)
+            self.movers.find_sibling(*self.explorer.stuck)
 
     def start_macro(self, macro: MacroAction) -> None:
         self.session.count_reasoning_step()
@@ -537,9 +530,7 @@ class ClosedLoop:
         ):
             pass  # the procedure lacked its entry key: found
         elif (
-            not done.refused
-            and self.procedures.plausibly_moved(done)
-            and (self.procedures.move_key(done))
+            not done.refused and self.movers.plausibly_moved(done) and (self.movers.move_key(done))
         ):
             pass  # plan again with the key where it belongs
         elif not done.refused and self._shown_otherwise(done):
@@ -657,11 +648,11 @@ class ClosedLoop:
             f"{name} keeps showing values the model does not predict (last: "
             f"{observed!r}, expected {predicted!r})",
         )
-        if self.procedures.independent(name, executed[upto], observed):
+        if self.side_effects.independent(name, executed[upto], observed):
             return
         adjusting = [e for e in executed[: upto + 1] if e.variable == name and e.believed_accepted]
         if not adjusting:  # changed as a side effect: the step that did it says so now
-            self.procedures.learn_side_effect(name, executed[upto], observed)
+            self.side_effects.learn_side_effect(name, executed[upto], observed)
             return
         last = adjusting[-1]
         assert last.pointer is not None
@@ -673,7 +664,7 @@ class ClosedLoop:
             and self.explorer.learn_on_entry(name, first)
         ):
             return
-        if unchanged and self.procedures.absorbed(adjusting[0]):
+        if unchanged and self.side_effects.absorbed(adjusting[0]):
             return
         if first is not None and first.unchanged and self.guards.learn(first):
             return  # a key ignored without a sign: a guard the belief lacked (now learnt)
