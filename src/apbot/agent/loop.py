@@ -149,6 +149,8 @@ class ClosedLoop:
                 unseen = self.session.unconfirmed(set(inside))
                 if unseen and self._look(unseen):
                     return  # plan again from what the display showed
+                if not unseen and self._glance(set(inside)):
+                    return  # plan again from what the display showed
                 if unseen:  # believed, but the display last said otherwise: it would be a guess
                     raise Stop(
                         "the belief holds the goal, but the display last showed "
@@ -172,8 +174,9 @@ class ClosedLoop:
         if any(_starts(n) or _locks(n) for n in self.pending[0].expect):
             # once it runs (or the lock is on), most keys are locked out: see what is
             # unconfirmed first
-            unseen = self.session.unconfirmed({n for n in inside if not (_starts(n) or _locks(n))})
-            if unseen and self._look(unseen):
+            settings = {n for n in inside if not (_starts(n) or _locks(n))}
+            unseen = self.session.unconfirmed(settings)
+            if (unseen and self._look(unseen)) or (not unseen and self._glance(settings)):
                 self.pending.clear()
                 return
         macro = self.pending.pop(0)
@@ -356,6 +359,28 @@ class ClosedLoop:
                 self.procedures.enter_step(feature, index)
                 self.session.press(self.session.planned(steps[index].actions[0]), exploring=True)
                 return True
+        return False
+
+    def _glance(self, names: set[str]) -> bool:
+        """Look at a goal setting the display never showed, or showed only before a press the
+        belief did not foresee (:meth:`Session.unverified`), where a few presses show it and
+        change nothing else (once each). Where none does, the belief is all there is."""
+        session = self.session
+        for name in session.unverified({n for n in names if not (_starts(n) or _locks(n))}):
+            if not session.budget.once("inspect", f"glance:{name}"):
+                continue
+            route = route_to_screen(
+                session.belief.compiled,
+                session.belief.state,
+                name,
+                session.belief.model.variables,
+                sorted(session.offered & set(session.belief.model.actions)),
+            )
+            if route is None:
+                continue
+            for action in route:
+                session.press(session.planned(action), exploring=True)
+            return True
         return False
 
     def _guarding_the_goal(self) -> bool:

@@ -130,6 +130,9 @@ def press(session: Session, action: PlannedAction, exploring: bool = False) -> E
         # visible, or something else, so the belief must not keep what it predicted the key
         # would do — only what the display shows (``pointer`` still says where it meant to go)
         session.belief.state = before_state
+    if surprises:
+        # the belief did not foresee this press: what else it did, the belief cannot say
+        session.doubtful |= set(session.evidence) - seen.shown()
     session.sync(seen)
     if seen.partial and not feedback.values:
         suspect_unread(session, seen)

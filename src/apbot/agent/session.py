@@ -59,6 +59,9 @@ class Session:
         self.contradicted: dict[str, Any] = {}  # last shown as a value the belief cannot hold
         self.unread: set[str] = set()  # due on the display, but shown as the belief cannot read
         self.ever_seen: set[str] = set()  # shown (or shown absent) at least once
+        # shown before a press the belief did not predict, not shown since: that press may have
+        # changed them too (a CANCEL that also clears the delay), though the belief says not
+        self.doubtful: set[str] = set()
         # how often the display moved the belief's state where its own transitions did not go
         self.moved = 0
         self._unshowable: tuple[Any, frozenset[str]] = (None, frozenset())
@@ -132,6 +135,7 @@ class Session:
         self.blind -= set(seen.values) | set(seen.outside) | seen.absent
         self.unread -= set(seen.values) | set(seen.outside) | seen.absent
         self.ever_seen |= set(seen.values) | set(seen.outside) | seen.absent
+        self.doubtful -= set(seen.values) | set(seen.outside) | seen.absent
         self.contradicted.update(seen.outside)
         for name in seen.values:
             self.contradicted.pop(name, None)
@@ -159,6 +163,22 @@ class Session:
             or (n in self.stale and n in self.guessed_initial | self.discovered)
             or n in self.blind
             or n in self.unread
+        )
+
+    def unverified(self, names: list[str] | set[str]) -> list[str]:
+        """The variables a claim would rest on without the display's word, though a screen of
+        the belief can show them: never shown at all (the value is the reader's guess of the
+        starting value, or a side effect nothing showed), or shown only before a press that
+        did what the belief did not predict. Worth a look where one changes nothing else;
+        where none does, the belief is all there is (:meth:`unconfirmed` is stricter)."""
+        hidden = self.unshowable()
+        return sorted(
+            n
+            for n in names
+            if n in self.belief.model.variables
+            and n not in hidden
+            and self.belief.model.variables[n].visible
+            and (n not in self.ever_seen or n in self.doubtful)
         )
 
     def shows(self, feedback: Feedback, name: str) -> bool:

@@ -1,0 +1,99 @@
+"""A claim rests on the display: a goal setting the display never showed, or showed only before
+a press the belief did not foresee, is looked at first where a look changes nothing else."""
+
+from __future__ import annotations
+
+from apbot.agent.budget import Budget
+from apbot.agent.environment import SimulatorEnvironment
+from apbot.agent.episode import TaskContext
+from apbot.agent.session import AgentConfig, Session
+from apbot.model.schema import ApplianceModel
+from tests.helpers import model_from, run_checked
+
+KETTLE = """
+controls: [{id: temp, label: TEMP}, {id: start, label: START}]
+variables:
+  running: {type: discrete, values: ["off", "on"], visible: false}
+  temp: {type: numeric, unit: "°C", ranges: [[40, 100, 10]], wrap: true, initial: %(initial)s,
+         label: TEMP}
+actions:
+  press_temp: {control: temp}
+  press_start: {control: start}
+features:
+  set_temp: [{actions: [press_temp], variable: temp, effect: next}]
+  start: [{actions: [press_start], variable: running, effect: toggle}]
+display:
+  idle: "%(idle)s"
+"""
+
+
+def kettle(initial: int, idle: str) -> ApplianceModel:
+    return model_from(KETTLE % {"initial": initial, "idle": idle})
+
+
+def test_a_goal_setting_never_shown_is_looked_at_before_the_cycle_starts() -> None:
+    # the appliance starts at 100 °C and says so; the reader guessed 40 and no idle screen,
+    # so the belief already "holds" 40 °C: only START is left to press
+    truth = kettle(100, "{temp}")
+    belief = kettle(40, "")
+    episode, reached = run_checked(truth, belief, {"temp": 40, "running": "on"})
+    assert reached, [e.text or e.action for e in episode.trace]
+    looked = [e for e in episode.trace if e.kind == "action" and e.exploring]
+    starts = [i for i, e in enumerate(episode.trace) if e.action == "press_start"]
+    assert looked and episode.trace.index(looked[0]) < starts[0]
+
+
+def test_a_setting_already_shown_as_asked_costs_no_look() -> None:
+    truth = kettle(40, "{temp}")
+    episode, reached = run_checked(truth, truth, {"temp": 40, "running": "on"})
+    assert reached  # not claimed: nothing on the display says the kettle runs
+    assert not any(e.exploring for e in episode.trace)
+    assert episode.execution_steps == 1
+
+
+FAN = """
+controls: [{id: power}, {id: speed}, {id: up}]
+variables:
+  power: {type: discrete, values: ["off", "on"]}
+  speed: {type: discrete, values: [low, mid, high], label: SPEED}
+  timer: {type: numeric, unit: h, ranges: [%(hours)s], wrap: true, label: TIMER}
+actions:
+  press_power: {control: power}
+  press_speed: {control: speed}
+  press_up: {control: up}
+features:
+  power: [{actions: [press_power], variable: power, effect: toggle}]
+  speed: [{actions: [press_speed], variable: speed, effect: next}]
+  timer: [{actions: [press_up], variable: timer, effect: next}]
+guards:
+  - {name: switched off, when: {power: "off"}, only: [press_power], display: "", hide: true}
+"""
+
+
+def fan_session(truth_hours: str, belief_hours: str) -> Session:
+    truth = model_from(FAN % {"hours": truth_hours})
+    belief = model_from(FAN % {"hours": belief_hours})
+    env = SimulatorEnvironment(truth, "display")
+    context = TaskContext("fan", "test", "t", "", {}, belief, actions=tuple(env.actions))
+    started = Session(AgentConfig(), context, env, Budget())
+    started.start()
+    return started
+
+
+def test_a_press_the_belief_did_not_foresee_puts_earlier_readings_in_doubt() -> None:
+    s = fan_session("[0, 8, 1]", "[0, 8, 2]")
+    s.press(s.planned("press_power"))
+    s.press(s.planned("press_speed"))
+    assert s.shown("speed") == "mid" and s.unverified({"speed"}) == []
+    done = s.press(s.planned("press_up"))  # 1 h where the belief said 2 h
+    assert done.surprises
+    assert s.unverified({"speed", "timer"}) == ["speed"]  # the timer is on the display
+    s.press(s.planned("press_speed"))
+    assert s.unverified({"speed"}) == []  # seen again
+
+
+def test_presses_as_predicted_leave_readings_alone() -> None:
+    s = fan_session("[0, 8, 1]", "[0, 8, 1]")
+    for action in ("press_power", "press_speed", "press_up", "press_up"):
+        assert not s.press(s.planned(action)).surprising
+    assert s.unverified({"speed", "timer"}) == []
