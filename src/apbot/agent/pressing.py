@@ -18,11 +18,12 @@ from apbot.model.display import display_value
 from apbot.model.domain import ValueProblem, parse_value
 from apbot.model.schema import ApplianceModel, DiscreteVariable, TimeVariable
 from apbot.plan.plan import PlannedAction
+from apbot.sim.compiled import State
 
 if TYPE_CHECKING:
     from apbot.agent.session import Session
 
-__all__ = ["locks", "press", "runs", "silent", "suspect_unread"]
+__all__ = ["lights_up", "locks", "press", "runs", "silent", "suspect_unread"]
 
 
 def press(session: Session, action: PlannedAction, exploring: bool = False) -> Executed:
@@ -90,6 +91,12 @@ def press(session: Session, action: PlannedAction, exploring: bool = False) -> E
             # the value the key was to set prints nothing, and its screen does not show the
             # word of any other value: it shows that value by its silence
             seen.values[variable] = predicted
+    if (
+        variable is not None
+        and variable not in seen.shown()
+        and lights_up(session, before_state, variable, before_text, feedback.text)
+    ):
+        seen.values[variable] = predicted
     surprises = {
         name: (session.belief.value(name), value)
         for name, value in (*seen.values.items(), *seen.outside.items())
@@ -152,6 +159,20 @@ def press(session: Session, action: PlannedAction, exploring: bool = False) -> E
         unseen,
         shown_before,
     )
+
+
+def lights_up(session: Session, before: State, variable: str, before_text: str, text: str) -> bool:
+    """Whether the key that sets ``variable`` lit a dark panel as the belief says it would:
+    the belief had the panel dark by a guard on ``variable`` (switched off) and predicts it
+    lit, and the display, blank before, now shows something. Whatever the text (a screen
+    the belief cannot print), a lit panel says the guard no longer holds: the switch is on."""
+    if before_text.strip() or not text.strip():
+        return False
+    compiled = session.belief.compiled
+    hiding = compiled.hiding_guard(before)
+    if hiding is None or compiled.hiding_guard(session.belief.state) is not None:
+        return False
+    return any(compiled.vars[v].name == variable for v, _ in hiding.conditions)
 
 
 def suspect_unread(session: Session, seen: Seen) -> None:
