@@ -56,7 +56,7 @@ controls: [{id: power}, {id: speed}, {id: up}]
 variables:
   power: {type: discrete, values: ["off", "on"]}
   speed: {type: discrete, values: [low, mid, high], label: SPEED}
-  timer: {type: numeric, unit: h, ranges: [%(hours)s], wrap: true, label: TIMER}
+  timer: {type: numeric, unit: h, ranges: [[0, 8, 1]], wrap: true, label: %(label)s}
 actions:
   press_power: {control: power}
   press_speed: {control: speed}
@@ -70,9 +70,9 @@ guards:
 """
 
 
-def fan_session(truth_hours: str, belief_hours: str) -> Session:
-    truth = model_from(FAN % {"hours": truth_hours})
-    belief = model_from(FAN % {"hours": belief_hours})
+def fan_session(truth_label: str, belief_label: str) -> Session:
+    truth = model_from(FAN % {"label": truth_label})
+    belief = model_from(FAN % {"label": belief_label})
     env = SimulatorEnvironment(truth, "display")
     context = TaskContext("fan", "test", "t", "", {}, belief, actions=tuple(env.actions))
     started = Session(AgentConfig(), context, env, Budget())
@@ -81,19 +81,77 @@ def fan_session(truth_hours: str, belief_hours: str) -> Session:
 
 
 def test_a_press_the_belief_did_not_foresee_puts_earlier_readings_in_doubt() -> None:
-    s = fan_session("[0, 8, 1]", "[0, 8, 2]")
+    s = fan_session("HOURS", "TIMER")
     s.press(s.planned("press_power"))
     s.press(s.planned("press_speed"))
     assert s.shown("speed") == "mid" and s.unverified({"speed"}) == []
-    done = s.press(s.planned("press_up"))  # 1 h where the belief said 2 h
-    assert done.surprises
-    assert s.unverified({"speed", "timer"}) == ["speed"]  # the timer is on the display
+    done = s.press(s.planned("press_up"))  # a screen the belief cannot print
+    assert done.surprises and done.seen is not None and done.seen.unknown
+    assert s.unverified({"speed"}) == ["speed"]
     s.press(s.planned("press_speed"))
     assert s.unverified({"speed"}) == []  # seen again
 
 
+def test_another_value_of_the_setting_adjusted_puts_nothing_else_in_doubt() -> None:
+    truth = model_from(FAN % {"label": "TIMER"})
+    belief = model_from((FAN % {"label": "TIMER"}).replace("[[0, 8, 1]]", "[[0, 8, 2]]"))
+    env = SimulatorEnvironment(truth, "display")
+    context = TaskContext("fan", "test", "t", "", {}, belief, actions=tuple(env.actions))
+    s = Session(AgentConfig(), context, env, Budget())
+    s.start()
+    s.press(s.planned("press_power"))
+    s.press(s.planned("press_speed"))
+    done = s.press(s.planned("press_up"))  # 1 h where the belief said 2 h: a value, no more
+    assert done.surprises and s.unverified({"speed"}) == []
+
+
 def test_presses_as_predicted_leave_readings_alone() -> None:
-    s = fan_session("[0, 8, 1]", "[0, 8, 1]")
+    s = fan_session("TIMER", "TIMER")
     for action in ("press_power", "press_speed", "press_up", "press_up"):
         assert not s.press(s.planned(action)).surprising
     assert s.unverified({"speed", "timer"}) == []
+
+
+def test_a_still_look_leaves_the_setting_where_it_is() -> None:
+    from apbot.agent.looking import route_to_screen
+    from apbot.sim.compiled import CompiledModel
+
+    model = kettle(40, "")
+    compiled = CompiledModel(model)
+    start = compiled.initial_state()
+    assert route_to_screen(compiled, start, "temp", model.variables, model.actions) == [
+        "press_temp"
+    ]  # it moves 40 to 50 on the way: a look only where the value is a guess
+    assert (
+        route_to_screen(compiled, start, "temp", model.variables, model.actions, still=True) is None
+    )
+
+
+TIMER = """
+controls: [{id: timer}, %(keys)s]
+variables:
+  timer: {type: time, ranges: [["00:00:00", "01:30:00", 1]], label: TIMER,
+         entry: {format: "mm:ss"}}
+actions:
+  press_timer: {control: timer}
+%(actions)s
+features:
+  set_timer:
+    - {actions: [press_timer]}
+    - {actions: [%(digits)s], variable: timer}
+"""
+
+
+def test_a_setting_typed_on_a_keypad_is_not_glanced_at() -> None:
+    from apbot.agent.looking import typed
+
+    model = model_from(
+        TIMER
+        % {
+            "keys": ", ".join(f"{{id: k{d}, kind: key}}" for d in range(10)),
+            "actions": "\n".join(f"  press_{d}: {{control: k{d}, digit: {d}}}" for d in range(10)),
+            "digits": ", ".join(f"press_{d}" for d in range(10)),
+        }
+    )
+    assert typed(model, "timer")
+    assert not typed(kettle(40, ""), "temp")

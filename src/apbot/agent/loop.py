@@ -25,7 +25,7 @@ from apbot.agent.episode import Episode, TaskContext
 from apbot.agent.explorer import Explorer
 from apbot.agent.greedy import GreedyExecutor
 from apbot.agent.guards import GuardLearner
-from apbot.agent.looking import route_to_screen
+from apbot.agent.looking import glance, route_to_screen
 from apbot.agent.merged import ProcedureSplitter
 from apbot.agent.perception import Seen
 from apbot.agent.procedures import ProcedureRepairer
@@ -362,26 +362,8 @@ class ClosedLoop:
         return False
 
     def _glance(self, names: set[str]) -> bool:
-        """Look at a goal setting the display never showed, or showed only before a press the
-        belief did not foresee (:meth:`Session.unverified`), where a few presses show it and
-        change nothing else (once each). Where none does, the belief is all there is."""
-        session = self.session
-        for name in session.unverified({n for n in names if not (_starts(n) or _locks(n))}):
-            if not session.budget.once("inspect", f"glance:{name}"):
-                continue
-            route = route_to_screen(
-                session.belief.compiled,
-                session.belief.state,
-                name,
-                session.belief.model.variables,
-                sorted(session.offered & set(session.belief.model.actions)),
-            )
-            if route is None:
-                continue
-            for action in route:
-                session.press(session.planned(action), exploring=True)
-            return True
-        return False
+        """Look at a goal setting the display may not have confirmed (:func:`glance`)."""
+        return glance(self.session, {n for n in names if not (_starts(n) or _locks(n))})
 
     def _guarding_the_goal(self) -> bool:
         """A guard holds whose condition the goal itself asks for (running, locked)."""

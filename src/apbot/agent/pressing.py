@@ -137,8 +137,9 @@ def press(session: Session, action: PlannedAction, exploring: bool = False) -> E
         # visible, or something else, so the belief must not keep what it predicted the key
         # would do — only what the display shows (``pointer`` still says where it meant to go)
         session.belief.state = before_state
-    if surprises:
-        # the belief did not foresee this press: what else it did, the belief cannot say
+    if surprises and (variable is None or ("focus", variable) not in seen.screens):
+        # the press did something else than the belief foresaw (not merely another value of
+        # the setting it adjusts): what else it did, the belief cannot say
         session.doubtful |= set(session.evidence) - seen.shown()
     session.sync(seen)
     if seen.partial and not feedback.values:
