@@ -114,8 +114,11 @@ class KeyMover:
             return False
         if session.effect(pointer, stuck.name) not in ("next", "prev"):
             return False  # a toggle pressed again would undo itself (a switch off)
-        if session.shown(name) in (MISSING, None):
-            return False  # the key left the setting off the display: no stepping to see
+        # a probe of a key named like it may have taken the display elsewhere: bring it back
+        if session.shown(name) in (MISSING, None) and session.press(stuck, exploring=True).observed(
+            name
+        ) in (MISSING, None):
+            return False  # the key leaves the setting off the display: no stepping to see
         pairs = []
         for other, steps in model.features.items():
             for j, step in enumerate(steps):
