@@ -155,3 +155,61 @@ def test_a_setting_typed_on_a_keypad_is_not_glanced_at() -> None:
     )
     assert typed(model, "timer")
     assert not typed(kettle(40, ""), "temp")
+
+
+WASHER = """
+controls: [{id: wash}, {id: dry}, {id: time}, {id: plus}, {id: minus}, {id: temp}]
+variables:
+  programme: {type: discrete, values: [wash, dry], label: PROG}
+  dry_time: {type: numeric, unit: min, ranges: [[10, 120, 10]], initial: 40, label: DRY, wrap: true}
+  temp: {type: numeric, unit: "°C", ranges: [[40, 60, 10]], initial: 40, label: TEMP}
+actions:
+  press_wash: {control: wash}
+  press_dry: {control: dry}
+  press_dry_time: {control: time}
+  press_plus: {control: plus}
+  press_minus: {control: minus}
+  press_temp: {control: temp}
+features:
+  choose:
+    - {actions: [press_wash, press_dry], variable: programme,
+       effect: {press_wash: {to: wash}, press_dry: {to: dry}}}
+  set_dry_time:
+%(dry_time)s
+  set_temp:
+    - {actions: [press_temp]}
+    - {actions: [press_plus, press_minus], variable: temp,
+       effect: {press_plus: next, press_minus: prev}}
+"""
+ENTRY_THEN_PAIR = """    - {actions: [press_dry_time]}
+    - {actions: [press_plus, press_minus], variable: dry_time,
+       effect: {press_plus: next, press_minus: prev}}"""
+ONE_KEY = """    - {actions: [press_dry_time], variable: dry_time, effect: next}"""
+
+
+def washer(dry_time: str) -> ApplianceModel:
+    return model_from(WASHER % {"dry_time": dry_time})
+
+
+def test_a_probe_that_took_the_setting_away_does_not_end_the_search_for_its_keys() -> None:
+    # the belief steps the drying time with DRY TIME; the washer only shows it with that key and
+    # adjusts it with + and −. The walk stays on 40; the key named like it (DRY) is probed
+    # first and brings up the programme: the setting is brought back before + is tried
+    episode, reached = run_checked(washer(ENTRY_THEN_PAIR), washer(ONE_KEY), {"dry_time": 60})
+    assert reached, [e.text or e.action for e in episode.trace]
+    assert any("press_plus, press_minus adjust it" in r for r in episode.repairs)
+
+
+def test_choosing_a_programme_puts_the_settings_shown_before_in_doubt() -> None:
+    truth = washer(ENTRY_THEN_PAIR)
+    env = SimulatorEnvironment(truth, "display")
+    context = TaskContext("washer", "test", "t", "", {}, truth, actions=tuple(env.actions))
+    s = Session(AgentConfig(), context, env, Budget())
+    s.start()
+    for action in ("press_dry_time", "press_plus"):
+        s.press(s.planned(action))
+    assert s.shown("dry_time") == 50 and s.unverified({"dry_time"}) == []
+    s.press(s.planned("press_dry"))  # many appliances reset settings to the programme's own
+    assert s.unverified({"dry_time"}) == ["dry_time"]
+    s.press(s.planned("press_dry_time"))
+    assert s.unverified({"dry_time"}) == []

@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING
 
 from apbot.agent.perception import MISSING
 from apbot.model.effects import default_effect
-from apbot.model.schema import ApplianceModel
+from apbot.model.schema import ApplianceModel, GoTo
 from apbot.sim.compiled import CompiledModel, State
 
 if TYPE_CHECKING:
@@ -86,7 +86,9 @@ def glance(session: Session, names: Collection[str]) -> bool:
     looked at only where the look leaves it as it is: moving it would cost a walk round its
     values (and a programme's resets) to settle a doubt; a value never shown is a guess worth
     that step. Not a setting typed on a keypad: its entry key starts a new entry, which may
-    clear what was typed. Where no route shows it, the belief is all there is."""
+    clear what was typed. Nor through a key that selects a value or sets others
+    (:func:`selecting`): choosing the programme already chosen resets its settings on many
+    appliances. Where no route shows it, the belief is all there is."""
     model = session.belief.model
     for name in session.unverified(set(names)):
         if typed(model, name) or not session.budget.once("inspect", f"glance:{name}"):
@@ -96,7 +98,7 @@ def glance(session: Session, names: Collection[str]) -> bool:
             session.belief.state,
             name,
             model.variables,
-            sorted(session.offered & set(model.actions)),
+            sorted(session.offered & set(model.actions) - selecting(model)),
             still=name in session.ever_seen,
         )
         if route is None:
@@ -119,3 +121,15 @@ def typed(model: ApplianceModel, name: str) -> bool:
         if step.variable == name
         for action in step.actions
     )
+
+
+def selecting(model: ApplianceModel) -> set[str]:
+    """Keys that go to a value (a programme key) or set or reset other settings as they do."""
+    found = set()
+    for steps in model.features.values():
+        for step in steps:
+            for action in step.actions:
+                effect = default_effect(step, action, model)
+                if isinstance(effect, GoTo) or step.set or step.reset:
+                    found.add(action)
+    return found

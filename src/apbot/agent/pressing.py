@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING, Any
 
 from apbot.agent.environment import Feedback
 from apbot.agent.executed import Executed
+from apbot.agent.looking import selecting
 from apbot.agent.perception import MISSING, UNREADABLE, Seen
 from apbot.agent.quantities import magnitude
 from apbot.model.display import display_value
@@ -128,6 +129,10 @@ def press(session: Session, action: PlannedAction, exploring: bool = False) -> E
         # a setting found on the panel may depend on what just changed (a programme that
         # resets it) though the belief cannot know: it needs seeing again
         session.stale |= session.discovered - set(seen.values)
+    if variable in changed - quiet and action.name in selecting(model):
+        # a programme chosen: many appliances bring their settings back to its defaults,
+        # whether or not the manual says so: what the display showed of them before is in doubt
+        session.doubtful |= set(session.evidence) - seen.shown() - changed
     for name in session.guessed_initial:  # its programmes' start values are only guesses
         parent = model.variables[name].depends_on if name in model.variables else None
         if parent is not None and (parent in changed or variable == parent):
