@@ -71,7 +71,7 @@ guards:
 
 
 def fan_session(truth_label: str, belief_label: str) -> Session:
-    truth = model_from(FAN % {"label": truth_label})
+    truth = model_from((FAN % {"label": truth_label}).replace("unit: h,", "unit: hr,"))
     belief = model_from(FAN % {"label": belief_label})
     env = SimulatorEnvironment(truth, "display")
     context = TaskContext("fan", "test", "t", "", {}, belief, actions=tuple(env.actions))
@@ -213,3 +213,33 @@ def test_choosing_a_programme_puts_the_settings_shown_before_in_doubt() -> None:
     assert s.unverified({"dry_time"}) == ["dry_time"]
     s.press(s.planned("press_dry_time"))
     assert s.unverified({"dry_time"}) == []
+
+
+DARK_KETTLE = """
+controls: [{id: power}, {id: temp, label: TEMP}]
+variables:
+  power: {type: discrete, values: ["off", "on"]}
+  temp: {type: numeric, unit: "°C", ranges: [[40, 100, 10]], wrap: true, initial: %(initial)s,
+         label: TEMP}
+actions:
+  press_power: {control: power}
+  press_temp: {control: temp}
+features:
+  power: [{actions: [press_power], variable: power, effect: toggle}]
+  set_temp: [{actions: [press_temp], variable: temp, effect: next}]
+guards:
+  - {name: switched off, when: {power: "off"}, only: [press_power], hide: true}
+"""
+
+
+def test_a_never_shown_setting_behind_a_dark_panel_is_looked_at_with_the_panel_switched_on() -> (
+    None
+):
+    # the goal names only the temperature, which the reader guessed already right: without a
+    # look the agent would claim on a dark panel
+    truth = model_from(DARK_KETTLE % {"initial": 100})
+    belief = model_from(DARK_KETTLE % {"initial": 40})
+    episode, reached = run_checked(truth, belief, {"temp": 40})
+    assert reached, [e.text or e.action for e in episode.trace]
+    pressed = [e.action for e in episode.trace if e.kind == "action"]
+    assert pressed[:2] == ["press_power", "press_temp"]

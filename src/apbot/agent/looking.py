@@ -86,18 +86,26 @@ def glance(session: Session, names: Collection[str]) -> bool:
     looked at only where the look leaves it as it is: moving it would cost a walk round its
     values (and a programme's resets) to settle a doubt; a value never shown is a guess worth
     that step. Not a setting typed on a keypad: its entry key starts a new entry, which may
-    clear what was typed. Nor through a key that selects a value or sets others
+    clear what was typed. A never-shown setting behind a dark panel may switch the panel on
+    first. Nor through a key that selects a value or sets others
     (:func:`selecting`): choosing the programme already chosen resets its settings on many
     appliances. Where no route shows it, the belief is all there is."""
     model = session.belief.model
     for name in session.unverified(set(names)):
         if typed(model, name) or not session.budget.once("inspect", f"glance:{name}"):
             continue
+        compiled, state = session.belief.compiled, session.belief.state
+        keep = set(model.variables)
+        hiding = compiled.hiding_guard(state)
+        if hiding is not None and name not in session.ever_seen:
+            # a dark panel shows nothing: a guess is worth switching it on (the goal's setting
+            # cannot be set on a dark panel either)
+            keep -= {compiled.vars[v].name for v, _ in hiding.conditions}
         route = route_to_screen(
-            session.belief.compiled,
-            session.belief.state,
+            compiled,
+            state,
             name,
-            model.variables,
+            keep,
             sorted(session.offered & set(model.actions) - selecting(model)),
             still=name in session.ever_seen,
         )
