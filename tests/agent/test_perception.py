@@ -46,3 +46,28 @@ def test_a_unit_shared_with_another_setting_or_two_numbers_say_nothing() -> None
 
 def test_the_belief_s_own_screen_still_reads_first() -> None:
     assert read(kettle(), "TEMPERATURE 10°C") == ({"temperature": 10}, {})
+
+
+DELAY = """
+controls: [{id: plus}]
+variables:
+  delay: {type: numeric, unit: h, ranges: [[0, 12, 1]], label: TIMER}
+actions:
+  press_plus: {control: plus}
+features:
+  set_delay: [{actions: [press_plus], variable: delay, effect: next}]
+"""
+
+
+def test_a_setting_counted_in_hours_is_read_from_a_clock() -> None:
+    model = model_from(DELAY)
+
+    def hours(text: str) -> tuple[dict[str, object], dict[str, object]]:
+        seen = Perceiver(model).perceive(
+            Feedback(text, {}, True, ""), {"delay": 1}, ("focus", "delay")
+        )
+        return seen.values, seen.outside
+
+    assert hours("DELAY 2:00  LOAF 2.5 lb") == ({"delay": 2}, {})
+    assert hours("DELAY 0:30") == ({}, {"delay": 0.5})  # a step the belief lacks
+    assert hours("DELAY 0:30  3:40") == ({}, {})  # two clocks: which one?

@@ -227,12 +227,16 @@ def choose(
     return seen
 
 
+HOUR_UNITS = frozenset({"h", "hr", "hrs", "hour", "hours"})
+
+
 def by_unit(model: ApplianceModel, seen: Seen, name: str | None) -> Seen | None:
     """The setting the press was to bring up, read by its unit where its screen was not found:
     the display prints one number in that setting's unit (``55°C  LOCK RED`` for a
     temperature whose screen the belief prints as ``TEMPERATURE 55°C``) and no other visible
-    setting of the belief has that unit. None when the reading stands as it is (the setting
-    read, no unit, no such number, or more than one)."""
+    setting of the belief has that unit; a setting counted in hours also by one clock time
+    (``0:30`` is 0.5 h). None when the reading stands as it is (the setting read, no unit, no
+    such number, or more than one)."""
     spec = model.variables.get(name or "")
     if name is None or not isinstance(spec, NumericVariable) or not spec.unit:
         return None
@@ -250,6 +254,10 @@ def by_unit(model: ApplianceModel, seen: Seen, name: str | None) -> Seen | None:
     found = re.findall(
         rf"(?<![\d.:])(-?\d+(?:\.\d+)?)\s?{re.escape(unit)}(?!\w)", seen.text, re.IGNORECASE
     )
+    if not found and unit.casefold() in HOUR_UNITS:
+        # a setting counted in hours, shown as a clock (``DELAY 0:30``): the hours it shows
+        clocks = re.findall(r"(?<![\d.:])(\d{1,2}):([0-5]\d)(?![\d:])", seen.text)
+        found = [f"{int(h) + int(m) / 60:g}" for h, m in clocks]
     if len(found) != 1:
         return None
     read = Seen(seen.text, screen=name, screen_kind="focus", partial=True)
