@@ -17,6 +17,7 @@ from apbot.agent.perception import MISSING, Seen
 from apbot.agent.procedures import ProcedureRepairer
 from apbot.agent.repair import RepairError
 from apbot.agent.session import AgentConfig, Session
+from apbot.agent.side_effects import SideEffectLearner
 from apbot.model.schema import ApplianceModel
 from apbot.plan.plan import plan
 from tests.helpers import model_from, suite_model
@@ -186,7 +187,7 @@ def test_no_side_effect_is_learnt_from_a_dark_panel() -> None:
     s.press(s.planned("press_speed"))
     off = s.press(s.planned("press_power"))
     assert not off.feedback.text.strip()
-    assert not ProcedureRepairer(s, GuardLearner(s)).learn_side_effect("speed", off, "mid")
+    assert not SideEffectLearner(s).learn_side_effect("speed", off, "mid")
 
 
 def test_no_guard_is_supposed_wrong_when_even_all_of_them_relaxed_cannot_reach_the_goal(

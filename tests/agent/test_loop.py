@@ -172,28 +172,29 @@ def test_a_goal_value_of_the_wrong_kind_stops_before_any_press() -> None:
 
 def test_the_loop_searches_each_question_once_per_belief(monkeypatch) -> None:  # type: ignore[no-untyped-def]
     import apbot.agent.loop as loop_module
+    import apbot.agent.planning as planning_module
     from apbot.agent.session import AgentConfig
     from apbot.plan.plan import Unreachable
 
     asked: list[dict[str, str]] = []
-    searched = loop_module.plan
+    searched = planning_module.plan
 
     def counting(compiled, state, target, *args):  # type: ignore[no-untyped-def]
         asked.append(dict(target))
         return searched(compiled, state, target, *args)
 
-    monkeypatch.setattr(loop_module, "plan", counting)
+    monkeypatch.setattr(planning_module, "plan", counting)
     # no key raises the temperature (a belief the checker would refuse; the loop may hold one)
     belief = model_from(HEATER % {**TRUTH, "up": "prev"}, check=False)
     env = SimulatorEnvironment(heater())
     context = TaskContext("heater", "test", "t", "", {}, belief, actions=tuple(env.actions))
     loop = loop_module.ClosedLoop(AgentConfig(), context, env)
-    first = loop._plan({"power": "on", "timer": "3"})
-    assert loop._plan({"timer": "3", "power": "on"}) is first and len(asked) == 1
+    first = loop.plans.plan({"power": "on", "timer": "3"})
+    assert loop.plans.plan({"timer": "3", "power": "on"}) is first and len(asked) == 1
     for _ in range(2):  # a failed search is remembered too
         with pytest.raises(Unreachable):
-            loop._plan({"power": "on", "temperature": "25"})
+            loop.plans.plan({"power": "on", "temperature": "25"})
     assert len(asked) == 2
     loop.session.belief.replace(heater())  # a repaired belief asks again
-    loop._plan({"power": "on", "timer": "3"})
+    loop.plans.plan({"power": "on", "timer": "3"})
     assert len(asked) == 3

@@ -6,13 +6,12 @@ from __future__ import annotations
 
 import pytest
 
+from apbot.agent import keys
 from apbot.agent.budget import Budget
 from apbot.agent.displays import DisplayLearner
 from apbot.agent.environment import FeedbackMode, SimulatorEnvironment
 from apbot.agent.episode import TaskContext
-from apbot.agent.guards import GuardLearner
 from apbot.agent.loop import ClosedLoop
-from apbot.agent.procedures import ProcedureRepairer
 from apbot.agent.reader import DisplayReader
 from apbot.agent.session import AgentConfig, Session, Stop
 from tests.helpers import model_from, suite_model
@@ -361,7 +360,7 @@ def test_keys_that_act_from_anywhere_and_waits_are_not_probed_as_keys_with_no_ro
     context = TaskContext("unit", "test", "t", "", {}, model, actions=tuple(env.actions))
     session = Session(AgentConfig(), context, env, Budget())
     session.start()
-    orphans = ProcedureRepairer(session, GuardLearner(session)).orphans()
+    orphans = keys.orphans(session)
     assert orphans == ["press_spare"]
 
 

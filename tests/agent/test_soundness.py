@@ -107,7 +107,10 @@ def test_a_fault_at_the_first_step_is_explored_there_not_at_the_second(
         truth, belief, {"hour": 0, "minute": 40, "running": "on"}, feedback=feedback
     )
     assert reached and episode.claimed_success
-    assert set(presses(episode, exploring=True)) == {"press_hr"}
+    walks = [e.text for e in episode.trace if e.kind == "explore"]
+    assert walks and all(w.startswith("hour under press_hr:") for w in walks)
+    # besides the walk, one look at the hour before the start: the display never showed it
+    assert set(presses(episode, exploring=True)) <= {"press_hr", "press_cook_time"}
     assert any("hour: ranges [(0, 4, 1)]" in r for r in episode.repairs)
 
 

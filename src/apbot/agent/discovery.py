@@ -19,6 +19,7 @@ from typing import Any
 
 from apbot.agent.guards import GuardLearner
 from apbot.agent.infer import infer_template, ranges_from_values
+from apbot.agent.quantities import summary
 from apbot.agent.reader import DisplayReader
 from apbot.agent.repair import (
     RepairError,
@@ -30,7 +31,7 @@ from apbot.agent.repair import (
     plain_steps,
     setting_step,
 )
-from apbot.agent.session import Executed, Session, summary
+from apbot.agent.session import Executed, Session
 from apbot.model.display import display_value
 from apbot.model.domain import ValueProblem, normalise, parse_value
 from apbot.model.schema import DiscreteVariable, NumericVariable, TimeStyle, TimeVariable

@@ -15,9 +15,10 @@ from collections.abc import Sequence
 from typing import Any, get_args
 
 from apbot.agent.infer import Dark, Unread, infer_template
+from apbot.agent.quantities import loose
 from apbot.agent.reader import DisplayReader
 from apbot.agent.repair import RepairError, drop_indicator, set_display
-from apbot.agent.session import Executed, Session, loose
+from apbot.agent.session import Executed, Session
 from apbot.model.display import can_show, display_value, lamp_for
 from apbot.model.domain import AnyVariable
 from apbot.model.schema import ApplianceModel, DiscreteVariable, TimeStyle, TimeVariable

@@ -23,6 +23,7 @@ from apbot.agent.infer import (
     typical_change,
 )
 from apbot.agent.perception import Seen
+from apbot.agent.quantities import canonical, loose, magnitude, summary, tidy
 from apbot.agent.repair import (
     RepairError,
     redefine_domain,
@@ -30,16 +31,7 @@ from apbot.agent.repair import (
     set_entry_format,
     set_on_entry,
 )
-from apbot.agent.session import (
-    MISSING,
-    Executed,
-    Session,
-    canonical,
-    loose,
-    magnitude,
-    summary,
-    tidy,
-)
+from apbot.agent.session import MISSING, Executed, Session
 from apbot.model.domain import all_values
 from apbot.model.effects import parse_entry
 from apbot.model.schema import (

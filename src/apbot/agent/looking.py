@@ -11,8 +11,15 @@ may move one step on the last press — the next plan puts it back.
 from __future__ import annotations
 
 from collections.abc import Collection
+from typing import TYPE_CHECKING
 
+from apbot.agent.perception import MISSING
+from apbot.model.effects import default_effect
+from apbot.model.schema import ApplianceModel, GoTo
 from apbot.sim.compiled import CompiledModel, State
+
+if TYPE_CHECKING:
+    from apbot.agent.session import Session
 
 MAX_PRESSES = 3  # a look longer than this is not a look
 MAX_STATES = 4_000  # states searched for one look
@@ -24,10 +31,11 @@ def route_to_screen(
     name: str,
     keep: Collection[str],
     actions: Collection[str],
+    still: bool = False,
 ) -> list[str] | None:
     """The fewest presses of ``actions`` (at most :data:`MAX_PRESSES`) after which the belief
-    shows ``name`` on a lit display and every variable of ``keep`` but ``name`` is unchanged;
-    None when there is none within the search's bounds.
+    shows ``name`` on a lit display and every variable of ``keep`` but ``name`` is unchanged
+    (``still``: ``name`` too); None when there is none within the search's bounds.
 
     >>> from apbot.examples import load_example
     >>> model = load_example("microwave_keypad")
@@ -56,9 +64,12 @@ def route_to_screen(
                     continue
                 if any(after.values[v] != state.values[v] for v in kept):
                     continue
+                moved = after.values[target] != state.values[target]
                 if compiled.hiding_guard(after) is None and compiled.focus(after) == target:
-                    return [*path, action]
-                if after.values[target] != state.values[target]:
+                    if not (still and moved):
+                        return [*path, action]
+                    continue
+                if moved:
                     continue  # only the last press may move the setting itself
                 seen.add(after)
                 following.append((after, [*path, action]))
@@ -66,3 +77,67 @@ def route_to_screen(
                     return None
         frontier = following
     return None
+
+
+def glance(session: Session, names: Collection[str]) -> bool:
+    """Look at one setting of ``names`` the display never showed, or showed only before a
+    press the belief did not foresee (:meth:`Session.unverified`), where a route shows it
+    changing nothing else (once per setting); True when it pressed. A setting shown before is
+    looked at only where the look leaves it as it is: moving it would cost a walk round its
+    values (and a programme's resets) to settle a doubt; a value never shown is a guess worth
+    that step. Not a setting typed on a keypad: its entry key starts a new entry, which may
+    clear what was typed. A never-shown setting behind a dark panel may switch the panel on
+    first. Nor through a key that selects a value or sets others
+    (:func:`selecting`): choosing the programme already chosen resets its settings on many
+    appliances. Where no route shows it, the belief is all there is."""
+    model = session.belief.model
+    for name in session.unverified(set(names)):
+        if typed(model, name) or not session.budget.once("inspect", f"glance:{name}"):
+            continue
+        compiled, state = session.belief.compiled, session.belief.state
+        keep = set(model.variables)
+        hiding = compiled.hiding_guard(state)
+        if hiding is not None and name not in session.ever_seen:
+            # a dark panel shows nothing: a guess is worth switching it on (the goal's setting
+            # cannot be set on a dark panel either)
+            keep -= {compiled.vars[v].name for v, _ in hiding.conditions}
+        route = route_to_screen(
+            compiled,
+            state,
+            name,
+            keep,
+            sorted(session.offered & set(model.actions) - selecting(model)),
+            still=name in session.ever_seen,
+        )
+        if route is None:
+            continue
+        for action in route:
+            session.press(session.planned(action), exploring=True)
+        if session.shown(name) is MISSING:
+            # the look may have moved it, and the display did not say to what
+            session.unread.add(name)
+        return True
+    return False
+
+
+def typed(model: ApplianceModel, name: str) -> bool:
+    """Whether a step of the model sets ``name`` with keypad digits."""
+    return any(
+        default_effect(step, action, model) == "digit"
+        for steps in model.features.values()
+        for step in steps
+        if step.variable == name
+        for action in step.actions
+    )
+
+
+def selecting(model: ApplianceModel) -> set[str]:
+    """Keys that go to a value (a programme key) or set or reset other settings as they do."""
+    found = set()
+    for steps in model.features.values():
+        for step in steps:
+            for action in step.actions:
+                effect = default_effect(step, action, model)
+                if isinstance(effect, GoTo) or step.set or step.reset:
+                    found.add(action)
+    return found

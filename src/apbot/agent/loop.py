@@ -14,7 +14,6 @@ physical action, exploration included, is an execution step.
 
 from __future__ import annotations
 
-from collections.abc import Hashable
 from typing import Any
 
 from apbot.agent.budget import Budget
@@ -25,28 +24,19 @@ from apbot.agent.episode import Episode, TaskContext
 from apbot.agent.explorer import Explorer
 from apbot.agent.greedy import GreedyExecutor
 from apbot.agent.guards import GuardLearner
-from apbot.agent.looking import route_to_screen
+from apbot.agent.looking import glance, route_to_screen
 from apbot.agent.merged import ProcedureSplitter
-from apbot.agent.perception import Seen
+from apbot.agent.mismatch import shown_otherwise, wrong_setting
+from apbot.agent.planning import BeliefPlans
 from apbot.agent.procedures import ProcedureRepairer
-from apbot.agent.session import (
-    MISSING,
-    UNREADABLE,
-    AgentConfig,
-    Executed,
-    Session,
-    Stop,
-    loose,
-    magnitude,
-    summary,
-)
-from apbot.model.display import can_show, display_value
+from apbot.agent.quantities import loose, magnitude, summary
+from apbot.agent.session import MISSING, UNREADABLE, AgentConfig, Executed, Session, Stop
+from apbot.model.display import can_show
 from apbot.model.domain import ValueProblem, all_values, build_domain, normalise
 from apbot.model.goal import GoalError
 from apbot.model.schema import DiscreteVariable, GoTo
 from apbot.model.validate import check_goal
-from apbot.plan.plan import MacroAction, Plan, Unreachable, plan
-from apbot.sim.compiled import CompiledModel, State
+from apbot.plan.plan import MacroAction, Plan, Unreachable
 
 __all__ = ["AgentConfig", "run_agent"]
 
@@ -62,6 +52,8 @@ class ClosedLoop:
         self.explorer = Explorer(self.session, self.displays)
         self.guards = GuardLearner(self.session)
         self.procedures = ProcedureRepairer(self.session, self.guards)
+        self.movers = self.procedures.movers
+        self.side_effects = self.procedures.side_effects
         self.finder = VariableFinder(self.session, self.guards)
         self.splitter = ProcedureSplitter(self.session)
         self.greedy = GreedyExecutor(self.session)
@@ -69,8 +61,7 @@ class ClosedLoop:
         self.context = context
         self.missing: dict[str, Any] = {}  # goal settings the belief lacks and has not found
         self.finding = 1  # the finder's attempt: once at the start, once with the rest set
-        self._plans_on: CompiledModel | None = None  # the belief the remembered plans are on
-        self._plans: dict[Hashable, Plan | Unreachable] = {}
+        self.plans = BeliefPlans(self.session, config)
         self.pending: list[MacroAction] = []  # the rest of the plan, while it holds
         self.values_before: dict[str, Any] = {}  # the belief before the current macro action
 
@@ -156,6 +147,8 @@ class ClosedLoop:
                 unseen = self.session.unconfirmed(set(inside))
                 if unseen and self._look(unseen):
                     return  # plan again from what the display showed
+                if not unseen and self._glance(set(inside)):
+                    return  # plan again from what the display showed
                 if unseen:  # believed, but the display last said otherwise: it would be a guess
                     raise Stop(
                         "the belief holds the goal, but the display last showed "
@@ -179,8 +172,9 @@ class ClosedLoop:
         if any(_starts(n) or _locks(n) for n in self.pending[0].expect):
             # once it runs (or the lock is on), most keys are locked out: see what is
             # unconfirmed first
-            unseen = self.session.unconfirmed({n for n in inside if not (_starts(n) or _locks(n))})
-            if unseen and self._look(unseen):
+            settings = {n for n in inside if not (_starts(n) or _locks(n))}
+            unseen = self.session.unconfirmed(settings)
+            if (unseen and self._look(unseen)) or (not unseen and self._glance(settings)):
                 self.pending.clear()
                 return
         macro = self.pending.pop(0)
@@ -211,7 +205,7 @@ class ClosedLoop:
         that walks it, filed under another procedure."""
         self.explorer.explore(name, last, history)
         if self.explorer.stuck is not None:
-            self.procedures.find_sibling(*self.explorer.stuck)
+            self.movers.find_sibling(*self.explorer.stuck)
 
     def start_macro(self, macro: MacroAction) -> None:
         self.session.count_reasoning_step()
@@ -285,7 +279,7 @@ class ClosedLoop:
         """The belief's plan to ``target``; when it has none, make progress on the part it can
         reach, or probe for what it lacks."""
         try:
-            return self._plan(target)
+            return self.plans.plan(target)
         except GoalError as exc:
             raise Stop(f"the goal does not fit the belief model: {exc}") from None
         except Unreachable as exc:
@@ -295,7 +289,7 @@ class ClosedLoop:
             kept = ""  # a run state the appliance is in as asked: nothing may undo it
             # the goal variable that breaks planning (a run state last: it locks the rest)
             for name, value in sorted(target.items(), key=lambda item: _starts(item[0])):
-                if self._plannable({**reachable, name: value}):
+                if self.plans.plannable({**reachable, name: value}):
                     reachable[name] = value
                     continue
                 if _starts(name):
@@ -304,9 +298,13 @@ class ClosedLoop:
                     # starting again would undo it (a reset the start is believed to make,
                     # often read off a running display that only hides the setting)
                     kept = name if self.session.belief.value(name) == value else ""
-                    if others and not self._undoes(others, kept) and self._progress(others):
-                        return self._plan(others)  # a run state comes last: set the rest first
-                    anyway = self._start_anyway(name, value, target)
+                    if (
+                        others
+                        and not self.plans.undoes(others, kept)
+                        and self.plans.progress(others)
+                    ):
+                        return self.plans.plan(others)  # a run state comes last: set the rest first
+                    anyway = self.plans.start_anyway(name, value, target)
                     if anyway is not None:
                         return anyway
                 # look for the way to it first: progress on the rest (starting a cycle, say)
@@ -317,7 +315,7 @@ class ClosedLoop:
                     return self.make_plan(target)
                 if reachable:
                     try:  # the repairs tried above may have changed what is reachable
-                        partial: Plan | None = self._plan(reachable)
+                        partial: Plan | None = self.plans.plan(reachable)
                     except Unreachable:
                         partial = None
                     if (
@@ -365,6 +363,10 @@ class ClosedLoop:
                 return True
         return False
 
+    def _glance(self, names: set[str]) -> bool:
+        """Look at a goal setting the display may not have confirmed (:func:`glance`)."""
+        return glance(self.session, {n for n in names if not (_starts(n) or _locks(n))})
+
     def _guarding_the_goal(self) -> bool:
         """A guard holds whose condition the goal itself asks for (running, locked)."""
         compiled, state = self.session.belief.compiled, self.session.belief.state
@@ -403,106 +405,6 @@ class ClosedLoop:
                 return True
         return False
 
-    def _plan(self, target: dict[str, Any]) -> Plan:
-        """The belief's plan to ``target``, remembered while the belief and its state stay the
-        same: the search is deterministic, and on a read model the loop asks the same question
-        several times (the whole goal, then goal by goal) — the costly answer is a search that
-        fails after exploring everything."""
-        compiled, state = self.session.belief.compiled, self.session.belief.state
-        if self._plans_on is not compiled:
-            self._plans_on, self._plans = compiled, {}
-        key = (state, tuple(sorted((n, repr(v)) for n, v in target.items())))
-        known = self._plans.get(key)
-        if known is None:
-            try:
-                known = self._programmes_first(
-                    plan(compiled, state, target, self.config.plan_budget, self.config.plan_work),
-                    target,
-                )
-            except Unreachable as exc:
-                known = exc
-            self._plans[key] = known
-        if isinstance(known, Unreachable):
-            raise known.again()
-        return known
-
-    def _programmes_first(self, found: Plan, target: dict[str, Any]) -> Plan:
-        """Among plans of the same length, the one that selects the programmes first.
-
-        Why: a programme change that resets other settings is what a reader of a manual misses
-        most easily, and nothing on the display shows it happen; a plan that sets a delay and
-        then turns the programme dial succeeds on the belief and fails on the appliance. Setting
-        the programmes first costs nothing when the lengths tie, and is as sound either way.
-        """
-        model = self.session.belief.model
-        parents = {v.depends_on for v in model.variables.values() if v.depends_on} & set(target)
-        macros = found.macro_actions
-        last = max((i for i, m in enumerate(macros) if parents & set(m.expect)), default=0)
-        if not any(set(m.expect) & (set(target) - parents) for m in macros[:last]):
-            return found
-        compiled, budget = self.session.belief.compiled, self.config.plan_budget
-        work = self.config.plan_work
-        try:
-            state: State | None = self.session.belief.state
-            head = plan(compiled, state, {n: target[n] for n in parents}, budget, work, len(found))
-            for action in head.actions:
-                assert state is not None
-                state = compiled.apply(state, compiled.action_index[action.name], action.seconds)
-                if state is None:
-                    return found
-            if len(head) > len(found):
-                return found
-            # only a rest as short as the found plan's is of use: search no further
-            rest = plan(compiled, state, target, budget, work, len(found) - len(head))
-        except Unreachable:
-            return found
-        if len(head) + len(rest) != len(found):
-            return found
-        return Plan(found.goal, head.macro_actions + rest.macro_actions, found.expanded)
-
-    def _start_anyway(self, name: str, value: Any, target: dict[str, Any]) -> Plan | None:
-        """The rest of the goal holds, and the belief says starting undoes part of it (a
-        reset the reader may have misread): start the belief's way, and let the display say
-        whether the side effect is real (once per belief)."""
-        rest = {n: v for n, v in target.items() if n != name}
-        if any(self.session.belief.value(n) != v for n, v in rest.items()):
-            return None  # the rest first
-        try:
-            found = self._plan({name: value})
-        except Unreachable:
-            return None
-        if not {n for m in found.macro_actions for n in m.expect} & set(rest):
-            return None  # it undoes nothing of the goal: not why there is no plan
-        repairs = len(self.session.episode.repairs)  # once per belief
-        if not self.session.budget.once("inspect", f"anyway:{name}:{repairs}"):
-            return None
-        return found
-
-    def _progress(self, target: dict[str, Any]) -> bool:
-        """Whether the belief has a plan that changes something towards ``target``."""
-        try:
-            return bool(self._plan(target).macro_actions)
-        except Unreachable:
-            return False
-
-    def _undoes(self, others: dict[str, Any], name: str) -> bool:
-        """Whether the belief's plan to ``others`` changes run state ``name`` on the way
-        (False when ``name`` is empty: nothing to keep)."""
-        if not name:
-            return False
-        try:
-            found = self._plan(others)
-        except Unreachable:
-            return False
-        return any(name in m.expect for m in found.macro_actions)
-
-    def _plannable(self, target: dict[str, Any]) -> bool:
-        try:
-            self._plan(target)
-        except Unreachable:
-            return False
-        return True
-
     # --- checking ----------------------------------------------------------------------------
 
     def check(self, macro: MacroAction, executed: list[Executed]) -> bool:
@@ -537,12 +439,10 @@ class ClosedLoop:
         ):
             pass  # the procedure lacked its entry key: found
         elif (
-            not done.refused
-            and self.procedures.plausibly_moved(done)
-            and (self.procedures.move_key(done))
+            not done.refused and self.movers.plausibly_moved(done) and (self.movers.move_key(done))
         ):
             pass  # plan again with the key where it belongs
-        elif not done.refused and self._shown_otherwise(done):
+        elif not done.refused and shown_otherwise(self.session, done):
             assert done.variable is not None and done.pointer is not None
             # the key is the setting's own, and the screen that came up belongs to a setting
             # no step of which has this key: more likely the belief prints the setting wrong
@@ -550,7 +450,7 @@ class ClosedLoop:
                 self.explore(done.variable, done)
             else:
                 self._learn_display(done.variable, executed[: first + 1])
-        elif done.refused or self._wrong_setting(done):
+        elif done.refused or wrong_setting(self.session, done):
             self.procedures.repair_procedure(executed[first:])
             name = self.session.step_variable(self.session.belief.pointer())
             key = self.explorer.stepping_key(name) if name else None
@@ -574,46 +474,6 @@ class ClosedLoop:
         outside = self.goal()[1]  # a repair may have taught the belief the goal value
         self._look_at(outside)
         return False
-
-    def _shown_otherwise(self, done: Executed) -> bool:
-        """The press of the belief's setting's own key brought up the screen of another setting
-        whose steps do not have that key (or that shows the very value predicted), and the
-        display changed: the belief's display rules for its setting may be wrong (once)."""
-        seen = done.seen
-        name = done.variable
-        if seen is None or name is None or done.pointer is None or done.unchanged:
-            return False
-        others = {v for kind, v in seen.screens if kind == "focus"}
-        if not others or seen.showing(name):
-            return False
-        effect = self.session.effect(done.pointer, done.action.name)
-        if not self.session.stepping(done.pointer, done.action.name) and effect != "digit":
-            return False
-        model = self.session.belief.model
-        printed = display_value(model.variables[name], done.predicted)
-        if not (len(printed) >= 2 and printed in seen.text) and any(
-            done.action.name in step.actions
-            for steps in model.features.values()
-            for step in steps
-            if step.variable in others
-        ):
-            return False  # the other setting's own key, and not the value predicted either
-        return self.session.budget.once("template", f"suspect:{name}")
-
-    def _wrong_setting(self, done: Executed) -> bool:
-        """The press brought up another setting than the belief's step adjusts (or left the
-        display as it was: a key ignored without a sign)."""
-        if done.variable is None:
-            return False
-        seen = done.seen or Seen()
-        if not seen.showing(done.variable) and not seen.unknown:
-            return True
-        if done.surprises.get(done.variable, (None, 0))[1] is not None:
-            return False
-        if done.unchanged:
-            return True
-        shown = seen.shown()
-        return bool(shown - set(self.session.belief.model.display.indicators) - {done.variable})
 
     def _learn_display(self, name: str, executed: list[Executed]) -> bool:
         """The display showed text the belief cannot read where it expected ``name``: learn
@@ -657,11 +517,11 @@ class ClosedLoop:
             f"{name} keeps showing values the model does not predict (last: "
             f"{observed!r}, expected {predicted!r})",
         )
-        if self.procedures.independent(name, executed[upto], observed):
+        if self.side_effects.independent(name, executed[upto], observed):
             return
         adjusting = [e for e in executed[: upto + 1] if e.variable == name and e.believed_accepted]
         if not adjusting:  # changed as a side effect: the step that did it says so now
-            self.procedures.learn_side_effect(name, executed[upto], observed)
+            self.side_effects.learn_side_effect(name, executed[upto], observed)
             return
         last = adjusting[-1]
         assert last.pointer is not None
@@ -673,7 +533,7 @@ class ClosedLoop:
             and self.explorer.learn_on_entry(name, first)
         ):
             return
-        if unchanged and self.procedures.absorbed(adjusting[0]):
+        if unchanged and self.side_effects.absorbed(adjusting[0]):
             return
         if first is not None and first.unchanged and self.guards.learn(first):
             return  # a key ignored without a sign: a guard the belief lacked (now learnt)

@@ -14,6 +14,7 @@ a variable leave it as a set of candidates — later presses decide it.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -21,7 +22,8 @@ from typing import Any
 from apbot.agent.environment import Feedback
 from apbot.agent.estimate import StateEstimator
 from apbot.agent.reader import DisplayReader, Hypothesis, Reading, is_read
-from apbot.model.schema import ApplianceModel
+from apbot.model.domain import ValueProblem, normalise, parse_value
+from apbot.model.schema import ApplianceModel, NumericVariable
 
 LOOK_ALIKE_COST = 1.0
 """How much more a photo's reading may cost (in the decoder's units, where a cell's look-alikes
@@ -84,11 +86,13 @@ class Perceiver:
     def __init__(self, belief: ApplianceModel) -> None:
         self.estimator = StateEstimator(belief)
         self.reader = DisplayReader(belief)
+        self.model = belief
 
     def rebind(self, belief: ApplianceModel) -> None:
         """Use a repaired belief (name matches learnt by the estimator are kept)."""
         self.estimator.rebind(belief)
         self.reader = DisplayReader(belief)
+        self.model = belief
 
     def perceive(
         self,
@@ -104,6 +108,8 @@ class Perceiver:
             return self._best_alternative(alternatives, context, expected_screen)
         seen = choose(self.reader.read(feedback.text, context), context, expected_screen)
         if not feedback.values:
+            if expected_screen is not None and expected_screen[0] == "focus":
+                return by_unit(self.model, seen, expected_screen[1]) or seen
             return seen
         # values by name are exact; the text adds what they leave out (and the screen), when
         # the belief can read it at all (a third-party display may look nothing like it)
@@ -219,3 +225,48 @@ def choose(
         elif allowed:
             seen.candidates[name] = frozenset(allowed)
     return seen
+
+
+HOUR_UNITS = frozenset({"h", "hr", "hrs", "hour", "hours"})
+
+
+def by_unit(model: ApplianceModel, seen: Seen, name: str | None) -> Seen | None:
+    """The setting the press was to bring up, read by its unit where its screen was not found:
+    the display prints one number in that setting's unit (``55°C  LOCK RED`` for a
+    temperature whose screen the belief prints as ``TEMPERATURE 55°C``) and no other visible
+    setting of the belief has that unit; a setting counted in hours also by one clock time
+    (``0:30`` is 0.5 h). None when the reading stands as it is (the setting read, no unit, no
+    such number, or more than one)."""
+    spec = model.variables.get(name or "")
+    if name is None or not isinstance(spec, NumericVariable) or not spec.unit:
+        return None
+    if seen.observed(name) not in (MISSING, None) or name in seen.candidates or seen.blank:
+        return None
+    unit = spec.unit.strip()
+    if not unit or any(
+        other != name
+        and isinstance(o, NumericVariable)
+        and o.visible
+        and (o.unit or "").strip().casefold() == unit.casefold()
+        for other, o in model.variables.items()
+    ):
+        return None
+    found = re.findall(
+        rf"(?<![\d.:])(-?\d+(?:\.\d+)?)\s?{re.escape(unit)}(?!\w)", seen.text, re.IGNORECASE
+    )
+    if not found and unit.casefold() in HOUR_UNITS:
+        # a setting counted in hours, shown as a clock (``DELAY 0:30``): the hours it shows
+        clocks = re.findall(r"(?<![\d.:])(\d{1,2}):([0-5]\d)(?![\d:])", seen.text)
+        found = [f"{int(h) + int(m) / 60:g}" for h, m in clocks]
+    if len(found) != 1:
+        return None
+    read = Seen(seen.text, screen=name, screen_kind="focus", partial=True)
+    read.screens = frozenset({("focus", name)})
+    try:
+        read.values[name] = normalise(spec, found[0])
+    except ValueProblem:
+        try:
+            read.outside[name] = parse_value(spec, found[0])
+        except ValueProblem:
+            return None
+    return read

@@ -3,8 +3,10 @@
 Values are learnt by walking them; steps are learnt by probing. When the appliance refuses
 a key the belief expected to work, or a setting the belief cannot reach at all, the agent
 tries the keys the belief gives no clear role (unused keys, keys that do nothing in the step,
-the procedure's other keys) and keeps the one after which the setting comes up. Each probe is
-an exploration press: it costs execution steps, not reasoning steps.
+the procedure's other keys; ``apbot.agent.keys``) and keeps the one after which the setting
+comes up. Each probe is an exploration press: it costs execution steps, not reasoning steps.
+A key filed under the wrong procedure is moved by ``apbot.agent.misfiled``; side effects are
+learnt by ``apbot.agent.side_effects``.
 """
 
 from __future__ import annotations
@@ -12,21 +14,14 @@ from __future__ import annotations
 from typing import Any
 
 from apbot.agent.guards import GuardLearner
-from apbot.agent.repair import (
-    RepairError,
-    drop_action,
-    drop_dependence,
-    entry_then_keys,
-    insert_step,
-    move_action,
-    set_effects,
-    set_side_effect,
-)
-from apbot.agent.session import MISSING, UNREADABLE, Executed, Session, Stop
-from apbot.model.schema import GoTo
-from apbot.plan.plan import PlannedAction, Unreachable, plan
+from apbot.agent.keys import RUN_WORDS, doubled_keys, effect_shown, keys_like, orphans, run_states
+from apbot.agent.misfiled import KeyMover
+from apbot.agent.repair import RepairError, drop_action, insert_step, move_action
+from apbot.agent.session import MISSING, Executed, Session, Stop
+from apbot.agent.side_effects import SideEffectLearner
+from apbot.plan.plan import Unreachable, plan
 
-_RUN_WORDS = ("running", "heating", "dispensing", "status", "brewing", "cooking")
+__all__ = ["ProcedureRepairer"]
 
 
 class ProcedureRepairer:
@@ -35,6 +30,8 @@ class ProcedureRepairer:
     def __init__(self, session: Session, guards: GuardLearner) -> None:
         self.session = session
         self.guards = guards
+        self.movers = KeyMover(session)
+        self.side_effects = SideEffectLearner(session)
 
     def repair_procedure(self, executed: list[Executed]) -> None:
         """A key the belief expected to work was refused, or brought up another setting:
@@ -45,7 +42,7 @@ class ProcedureRepairer:
         failing = refused or [e for e in executed if e.variable is not None]
         if failing and self.guards.learn(failing[0]):
             return
-        if failing and not refused and self.move_key(failing[0]):
+        if failing and not refused and self.movers.move_key(failing[0]):
             return
         if not failing or failing[0].pointer is None:
             raise Stop(
@@ -65,14 +62,14 @@ class ProcedureRepairer:
             for a in s.actions
             if a not in step.actions
         ]
-        alike = self.keys_like(name or feature, exclude=set(step.actions))
+        alike = keys_like(self.session, name or feature, exclude=set(step.actions))
         elsewhere = self._entries_elsewhere(feature, name)
-        doubles = [a for a in self.doubled_keys() if a not in step.actions]
-        candidates = self.orphans() + idle + others + list(elsewhere) + alike + doubles
+        doubles = [a for a in doubled_keys(self.session) if a not in step.actions]
+        candidates = orphans(self.session) + idle + others + list(elsewhere) + alike + doubles
         for candidate in dict.fromkeys(candidates):
             if candidate == first.action.name:
                 continue
-            running = self._run_states()
+            running = run_states(self.session)
             probe = self.session.press(self.session.planned(candidate), exploring=True)
             if not probe.feedback.accepted:
                 continue
@@ -84,7 +81,9 @@ class ProcedureRepairer:
                 # the key belongs to that other procedure, after its entry key
                 assert name is not None
                 where = elsewhere[candidate]
-                effect = self._effect_shown(*where, probe.observed(name), after.observed(name))
+                effect = effect_shown(
+                    self.session, *where, probe.observed(name), after.observed(name)
+                )
                 try:
                     new = move_action(self.session.belief.model, first.action.name, where, effect)
                 except RepairError as exc:
@@ -116,13 +115,6 @@ class ProcedureRepairer:
             return
         self.session.forget_pointer()
 
-    def _run_states(self) -> dict[str, Any]:
-        """The belief's run states (running, heating…) as they are now."""
-        belief = self.session.belief
-        return {
-            n: belief.value(n) for n in belief.model.variables if any(w in n for w in _RUN_WORDS)
-        }
-
     def _stop_started(self, before: dict[str, Any]) -> None:
         """A probe that explained nothing but started a cycle: stop it again (by the belief's
         shortest route), so that the keys a running cycle locks can still be probed."""
@@ -136,193 +128,6 @@ class ProcedureRepairer:
             return
         for planned in route.actions:
             session.press(planned, exploring=True)
-
-    def move_key(self, done: Executed) -> bool:
-        """The key brought up another setting's screen than the belief's step: the key belongs
-        to that setting's procedure. Move it there — as a key that sets, steps or only shows
-        the setting, as its value showed — and out of the step the belief had it in."""
-        session = self.session
-        seen = done.seen
-        if seen is None or seen.screen_kind != "focus" or done.unchanged:
-            return False
-        target = seen.screen
-        if target is None or target == done.variable or done.state_before is None:
-            return False
-        model = session.belief.model
-        places = [
-            (feature, index)
-            for feature, steps in model.features.items()
-            for index, step in enumerate(steps)
-            if step.variable == target and done.action.name not in step.actions
-        ]
-        first = [(f, i) for f, i in places if i == 0]
-        entered = [(f, i) for f, i in places if i > 0 and model.features[f][i - 1].variable is None]
-        if not first and not entered:
-            return False
-        before = session.belief.compiled.value(done.state_before, target)
-        shown = seen.observed(target)
-        if (first or entered)[0] in first:
-            feature, index = first[0]
-            effect = self._effect_shown(feature, index, before, shown)
-            where = (feature, index)
-        else:
-            feature, index = entered[0]
-            effect, where = None, (feature, index - 1)
-        if not session.budget.once("entry", f"move:{done.action.name}:{feature}"):
-            return False
-        try:
-            new = move_action(model, done.action.name, where, effect)
-        except RepairError as exc:
-            session.episode.log("repair", f"could not move {done.action.name}: {exc}")
-            return False
-        old = done.pointer[0] if done.pointer else "?"
-        session.adopt(new, f"{done.action.name} belongs to {feature}, not {old}", (feature, index))
-        session.reread()
-        return True
-
-    def find_sibling(self, name: str, pointer: tuple[str, int], stuck: PlannedAction) -> bool:
-        """A walk under ``stuck`` stayed on one value: it may be at an end of a setting it walks
-        the other way than believed, with the key that walks it back filed under another
-        procedure. Press each key named like the setting that the step lacks, once; the first
-        that moves the setting joins the step as the display showed it, and ``stuck`` is taken
-        to go the opposite way (once per setting)."""
-        session = self.session
-        if not session.budget.once("entry", f"sibling:{name}"):
-            return False
-        feature, index = pointer
-        step = session.belief.model.features[feature][index]
-        for candidate in self.keys_like(name, exclude=set(step.actions)):
-            before = session.belief.value(name)
-            probe = session.press(session.planned(candidate), exploring=True)
-            shown = probe.observed(name)
-            if not probe.feedback.accepted or shown is MISSING or shown == before:
-                continue
-            effect = self._effect_shown(feature, index, before, shown)
-            back = {"next": "prev", "prev": "next"}.get(effect) if isinstance(effect, str) else None
-            try:
-                new = move_action(session.belief.model, candidate, pointer, effect)
-                if back is not None:
-                    new = set_effects(new, feature, index, {stuck.name: back})
-            except RepairError as exc:
-                session.episode.log("repair", f"could not move {candidate}: {exc}")
-                continue
-            note = f"{candidate} belongs to {feature} ({effect})"
-            if back is not None:
-                note += f", and {stuck.name} goes the other way ({back})"
-            session.adopt(new, note, pointer)
-            session.belief.set_value(name, shown)
-            return True
-        return self._entry_then_steppers(name, pointer, stuck)
-
-    def _entry_then_steppers(
-        self, name: str, pointer: tuple[str, int], stuck: PlannedAction
-    ) -> bool:
-        """The step's only key brings the setting up and leaves it as it is: it may be an
-        entry key, with the panel's stepping keys (+ and − of another procedure) adjusting
-        the setting after it. With the setting on the display (brought up again after a probe
-        took it away), press each such pair's first key once (three at most); the first that
-        moves it makes the step an entry press followed by that pair's step. Only for a key
-        believed to step the setting: a toggle pressed again would undo itself."""
-        session = self.session
-        model = session.belief.model
-        feature, index = pointer
-        if model.features[feature][index].actions != [stuck.name]:
-            return False
-        if session.effect(pointer, stuck.name) not in ("next", "prev"):
-            return False  # a toggle pressed again would undo itself (a switch off)
-        if session.shown(name) in (MISSING, None):
-            return False  # the key left the setting off the display: no stepping to see
-        pairs = []
-        for other, steps in model.features.items():
-            for j, step in enumerate(steps):
-                if (other, j) == pointer or step.variable is None:
-                    continue
-                effects = {a: session.effect((other, j), a) for a in step.actions}
-                moving = {a: str(e) for a, e in effects.items() if e in ("next", "prev")}
-                fits = moving and stuck.name not in moving and set(moving) <= session.offered
-                if fits and moving not in pairs:
-                    pairs.append(moving)
-        for moving in pairs[:3]:
-            before = session.shown(name)
-            if before in (MISSING, None):  # a probe took the display elsewhere: bring it back
-                before = session.press(stuck, exploring=True).observed(name)
-                if before in (MISSING, None):
-                    return False
-            key = next(iter(moving))
-            probe = session.press(session.planned(key), exploring=True)
-            shown = probe.observed(name)
-            if not probe.feedback.accepted or shown is MISSING or shown in (None, before):
-                continue
-            effect = self._effect_shown(feature, index, before, shown)
-            if effect not in ("next", "prev"):
-                continue
-            flip = {"next": "prev", "prev": "next"}
-            mapping = moving if effect == moving[key] else {a: flip[e] for a, e in moving.items()}
-            try:
-                new = entry_then_keys(model, feature, index, mapping)
-            except RepairError as exc:
-                session.episode.log("repair", f"could not make {stuck.name} an entry: {exc}")
-                return False
-            keys = ", ".join(mapping)
-            session.adopt(
-                new, f"{stuck.name} only brings {name} up; {keys} adjust it", (feature, index + 1)
-            )
-            session.belief.set_value(name, shown)
-            return True
-        return False
-
-    def plausibly_moved(self, done: Executed) -> bool:
-        """Whether another setting came up and changed as one of its own keys would change it
-        (set, one step either way, or not at all): the key is filed under the wrong procedure,
-        rather than the belief printing its own setting wrong."""
-        seen = done.seen
-        if seen is None or seen.screen_kind != "focus" or done.state_before is None:
-            return False
-        target = seen.screen
-        if target is None or target == done.variable:
-            return False
-        places = [
-            (f, i)
-            for f, steps in self.session.belief.model.features.items()
-            for i, step in enumerate(steps)
-            if step.variable == target
-        ]
-        if not places:
-            return False
-        before = self.session.belief.compiled.value(done.state_before, target)
-        shown = seen.observed(target)
-        feature, index = places[0]
-        effect = self._effect_shown(feature, index, before, shown)
-        values = self.session.domain_values(target)
-        return (
-            effect in ("none", "prev")
-            or isinstance(effect, dict)
-            or (
-                effect == "next"
-                and before in values
-                and shown in values
-                and values[(values.index(before) + 1) % len(values)] == shown
-            )
-        )
-
-    def _effect_shown(self, feature: str, index: int, before: Any, shown: Any) -> Any:
-        """What the key did to the step's setting, as the display showed it: set it (the step's
-        other keys set values too), stepped it one way or the other, or only showed it."""
-        model = self.session.belief.model
-        step = model.features[feature][index]
-        effects = [self.session.effect((feature, index), a) for a in step.actions]
-        if shown == before or shown is MISSING or shown is None:
-            return "none"
-        if any(isinstance(e, GoTo) for e in effects):
-            return {"to": shown}
-        values = self.session.domain_values(step.variable or "")
-        if before in values and shown in values:
-            i, j = values.index(before), values.index(shown)
-            if (i + 1) % len(values) == j:
-                return "next"
-            if (j + 1) % len(values) == i:
-                return "prev"
-        return "next"
 
     def _drop_key(self, failed: Executed) -> bool:
         """A key ignored where the belief had it as one of a step's keys, and no probe found
@@ -357,35 +162,6 @@ class ProcedureRepairer:
                     found.setdefault(steps[0].actions[0], (other, index))
         return found
 
-    def doubled_keys(self) -> list[str]:
-        """Keys the belief files beside another key of the same step with the same effect: a
-        second key doing exactly what the first does is more likely one misfiled there."""
-        found = []
-        for feature, steps in self.session.belief.model.features.items():
-            for index, step in enumerate(steps):
-                effects = [(a, self.session.effect((feature, index), a)) for a in step.actions]
-                for i, (action, effect) in enumerate(effects):
-                    if any(effect == other for _, other in effects[:i]):
-                        found.append(action)
-        return [a for a in found if a in self.session.offered]
-
-    def keys_like(self, name: str, exclude: set[str]) -> list[str]:
-        """Keys of the panel whose names share a word with ``name`` (``press_timer`` for
-        ``timer``, ``set_timer``): an entry key filed under another procedure."""
-        words = {w for w in name.split("_") if len(w) >= 3 and w not in ("set", "press")}
-        found = []
-        for action in self.session.belief.model.actions:
-            if action in exclude or action not in self.session.offered:
-                continue
-            if self._locks(action):
-                continue  # a lock hold named like the setting (hold TIMER ▲) would lock out
-            parts = set(action.split("_"))
-            if words & parts or any(
-                w.startswith(p) or p.startswith(w) for w in words for p in parts if len(p) >= 3
-            ):
-                found.append(action)
-        return found[:4]
-
     def recover_unreachable(self, blocked: dict[str, Any]) -> bool:
         """The belief cannot bring these goal variables up: probe for the key that does."""
         for name in blocked:
@@ -411,8 +187,8 @@ class ProcedureRepairer:
         after which the display shows the setting at the goal value teaches that side effect."""
         session = self.session
         compiled = session.belief.compiled
-        keys = self.keys_like(name, exclude=set())
-        if any(word in name for word in _RUN_WORDS):
+        keys = keys_like(self.session, name, exclude=set())
+        if any(word in name for word in RUN_WORDS):
             keys += [a for a in session.belief.model.actions if "start" in a.split("_")]
         for key in list(dict.fromkeys(keys))[:3]:
             if key not in session.offered or not session.budget.once(
@@ -426,7 +202,7 @@ class ProcedureRepairer:
                 continue
             if observed != value or observed == compiled.value(probe.state_before, name):
                 continue
-            if self.learn_side_effect(name, probe, observed):
+            if self.side_effects.learn_side_effect(name, probe, observed):
                 return True
         return False
 
@@ -443,9 +219,9 @@ class ProcedureRepairer:
     def _first_step_from_orphans(self, name: str, features: list[str]) -> bool:
         """Keys no procedure uses, or named like the setting (an entry key filed under another
         procedure): the one that brings the setting up is the entry step it lacks."""
-        used = set(self.orphans())
+        used = set(orphans(self.session))
         firsts = {a for f in features for a in self.session.belief.model.features[f][0].actions}
-        for candidate in dict.fromkeys([*used, *self.keys_like(name, exclude=firsts)]):
+        for candidate in dict.fromkeys([*used, *keys_like(self.session, name, exclude=firsts)]):
             self.guards.lift(candidate)
             probe = self.session.press(self.session.planned(candidate), exploring=True)
             if not probe.feedback.accepted or not self.session.shows(probe.feedback, name):
@@ -465,25 +241,6 @@ class ProcedureRepairer:
                 return True
         return False
 
-    def _locks(self, action: str) -> bool:
-        """Whether the belief says ``action`` puts the panel under a guard (locks it, switches
-        it off) from where it is now."""
-        compiled = self.session.belief.compiled
-        index = compiled.action_index.get(action)
-        if index is None:
-            return False
-        state = self.session.belief.state
-        after = compiled.apply(state, index, compiled.hold_seconds[index] or None)
-        if after is None:
-            return False
-
-        def holding(values: tuple[int, ...]) -> int:
-            return sum(
-                all(values[v] in ok for v, ok in guard.conditions) for guard in compiled.guards
-            )
-
-        return holding(after.values) > holding(state.values)
-
     def find_separator(self, feature: str, name: str) -> bool:
         """A step of ``feature`` that can never be entered because it shares its keys with
         the step before it: walk the procedure up to that step, then try the procedure's other
@@ -500,7 +257,7 @@ class ProcedureRepairer:
         others = [a for s in steps for a in s.actions if a not in inside]
         # or a key named like the setting, filed under another procedure (TIMER, which
         # switches the right side to its timer as it does the left side)
-        others += self.keys_like(name, exclude=inside | {steps[0].actions[0]})
+        others += keys_like(self.session, name, exclude=inside | {steps[0].actions[0]})
         for candidate in dict.fromkeys(others):
             # from the step before (where the plan left off), else through the procedure
             if self.session.belief.pointer() != (feature, index - 1):
@@ -525,100 +282,6 @@ class ProcedureRepairer:
             self.session.forget_pointer()
         return False
 
-    def learn_side_effect(self, name: str, done: Executed, observed: Any) -> bool:
-        """A press of another setting's step changed ``name`` otherwise than the belief said:
-        the step leaves it alone (the display kept the value), sets it to what was shown, or
-        resets it to its starting value — once per step and setting."""
-        session = self.session
-        if done.pointer is None or done.state_before is None or done.refused:
-            return False
-        if observed is MISSING or observed is UNREADABLE or observed is None:
-            return False
-        seen = done.seen
-        if seen is None or seen.blank or name not in seen.values or seen.values[name] != observed:
-            return False  # a dark panel shows no lamp; a value the setting cannot have is no set
-        feature, index = done.pointer
-        step = session.belief.model.features[feature][index]
-        if step.variable == name or name not in session.belief.model.variables:
-            return False
-        if name in session.discovered:
-            return False  # what it depends on is a guess
-        kept = done.shown_before.get(name, MISSING) == observed  # as last shown: untouched
-        if name in done.unseen_before and not kept:
-            return False  # what it was before is a guess: the change may be older
-        compiled = session.belief.compiled
-        before = compiled.value(done.state_before, name)
-        initial = session.belief.initial_value(name, done.state_before)
-        value, reset = None, False
-        if observed == before:
-            if name not in step.set and name not in step.reset:
-                return False
-            change = "leaves it alone"
-        elif observed == initial:
-            reset, change = True, "resets it"
-        else:
-            value, change = observed, f"sets it to {observed}"
-        if not session.budget.once("side", f"{feature}:{index}:{name}"):
-            return False
-        try:
-            new = set_side_effect(session.belief.model, feature, index, name, value, reset)
-        except RepairError as exc:
-            session.episode.log("repair", f"could not change {feature}'s side effect: {exc}")
-            return False
-        session.adopt(new, f"{feature}: {done.action.name} {change} ({name})", done.pointer)
-        session.belief.set_value(name, observed)
-        return True
-
-    def independent(self, name: str, done: Executed, observed: Any) -> bool:
-        """A setting found on the panel, guessed to depend on the programme, shows again the
-        value it showed before a programme change the belief said would reset it: it does not
-        depend on the programme (once)."""
-        session = self.session
-        spec = session.belief.model.variables.get(name)
-        if spec is None or spec.depends_on is None or name not in session.discovered:
-            return False
-        if observed is MISSING or done.shown_before.get(name, MISSING) != observed:
-            return False
-        case = session.case(name)
-        if case is None or not session.budget.once("side", f"independent:{name}"):
-            return False
-        try:
-            new = drop_dependence(session.belief.model, name, case)
-        except RepairError as exc:
-            session.episode.log("repair", f"could not make {name} independent: {exc}")
-            return False
-        session.adopt(
-            new, f"{name} keeps its value whatever the {spec.depends_on}", session.belief.pointer()
-        )
-        session.belief.set_value(name, observed)
-        return True
-
-    def absorbed(self, entering: Executed) -> bool:
-        """A key meant to start a new procedure changed nothing, and the display does not
-        show that procedure's setting: perhaps the procedure in progress takes the key as one
-        more step (a START that confirms a timer). Add it there, once; the next check judges."""
-        before, after = entering.before, entering.pointer
-        if before is None or after is None or before[0] == after[0]:
-            return False
-        shown = set(entering.seen.values if entering.seen else ()) - set(
-            self.session.belief.model.display.indicators
-        )
-        staying = {s.variable for s in self.session.belief.model.features[before[0]]} - {None}
-        if entering.variable in staying | shown:
-            return False  # the display shows the new setting: the key did start it
-        if not self.session.budget.once("absorbed", f"{before[0]}:{entering.action.name}"):
-            return False
-        feature, index = before
-        try:
-            new = insert_step(self.session.belief.model, feature, index + 1, [entering.action.name])
-        except RepairError as exc:
-            self.session.episode.log("repair", f"could not add a step to {feature}: {exc}")
-            return False
-        self.session.adopt(
-            new, f"{feature} takes {entering.action.name} as a further step", (feature, index + 1)
-        )
-        return True
-
     def enter_step(self, feature: str, index: int) -> None:
         """Go through ``feature`` up to (not into) step ``index``: lift any guard, then press
         the first key of each earlier step (exploration presses)."""
@@ -626,16 +289,3 @@ class ProcedureRepairer:
         self.guards.lift(steps[0].actions[0])
         for step in steps[:index]:
             self.session.press(self.session.planned(step.actions[0]), exploring=True)
-
-    def orphans(self) -> list[str]:
-        """Keys the appliance offers that no feature of the belief uses, nor its keys that
-        act from anywhere, nor a wait (at most eight)."""
-        model = self.session.belief.model
-        used = {a for steps in model.features.values() for s in steps for a in s.actions}
-        used |= {a for entry in model.anywhere for a in entry.actions}
-        used |= {a for a, spec in model.actions.items() if spec.skill == "wait"}
-        return [
-            a
-            for a in self.session.belief.model.actions
-            if a not in used and a in self.session.offered
-        ][:8]

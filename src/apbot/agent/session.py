@@ -14,95 +14,24 @@ text means in the belief's terms.
 
 from __future__ import annotations
 
-import re
-from dataclasses import dataclass, field, replace
+from dataclasses import replace
 from typing import Any
 
 from apbot.agent.belief import Belief
 from apbot.agent.budget import Budget
 from apbot.agent.environment import Environment, Feedback
 from apbot.agent.episode import TaskContext
+from apbot.agent.executed import AgentConfig, Executed, Stop
 from apbot.agent.perception import MISSING, UNREADABLE, Perceiver, Seen
-from apbot.model.display import can_show, display_value
-from apbot.model.domain import ValueProblem, parse_value
+from apbot.agent.pressing import press
+from apbot.agent.quantities import magnitude
+from apbot.model.display import can_show
 from apbot.model.effects import default_effect
-from apbot.model.schema import Add, ApplianceModel, DiscreteVariable, Skip, TimeVariable
-from apbot.model.values import format_hms, parse_hms
+from apbot.model.schema import Add, ApplianceModel, Skip
 from apbot.plan.plan import PlannedAction
-from apbot.sim.compiled import State
 from apbot.sim.simulator import Observation
 
 __all__ = ["MISSING", "UNREADABLE", "AgentConfig", "Executed", "Session", "Stop"]
-
-EXPLORE_LIMIT = 400  # presses per direction (a 1-minute clock over 6 hours; most domains < 100)
-# Search per plan. On the true models every plan of the bundled suite (750 tasks, stored or
-# read goals, from every state the loop plans from) needs at most 14,149 expanded states (and
-# keeps up to twice the budget in memory) and 730,469 successors generated; on a model read
-# from a manual a search past that much work is almost always one that cannot succeed (the
-# goal is out of the belief's reach and the search would walk its whole space, 2,000,000
-# successors at 20 per state), so it gives up at the work limit instead.
-PLAN_BUDGET = 100_000  # expanded states
-PLAN_WORK = 1_000_000  # successors generated
-
-
-@dataclass(frozen=True)
-class AgentConfig:
-    """Which parts of ApBot are switched on (the ablations switch them off)."""
-
-    closed_loop: bool = True
-    button_policy: bool = True
-    explore_limit: int = EXPLORE_LIMIT
-    plan_budget: int = PLAN_BUDGET
-    plan_work: int = PLAN_WORK
-
-
-class Stop(Exception):
-    """The run ends: ``success`` claimed, or a declared failure with its reason."""
-
-    def __init__(self, reason: str, success: bool = False) -> None:
-        super().__init__(reason)
-        self.reason = reason
-        self.success = success
-
-
-@dataclass
-class Executed:
-    """One action as performed: where the belief was, what it predicted, what was shown.
-
-    ``surprises`` maps each variable the feedback contradicted to (predicted, observed); an
-    observed None means the display was dark where the belief expected the value, and
-    ``UNREADABLE`` that it showed text the belief's display rules cannot print. ``unchanged``:
-    the display stayed exactly as it was although the belief predicted a change (a key
-    ignored without a sign looks like this).
-    """
-
-    action: PlannedAction
-    pointer: tuple[str, int] | None  # the belief's feature step after the action
-    variable: str | None  # the variable that step adjusts
-    feedback: Feedback
-    believed_accepted: bool
-    before: tuple[str, int] | None = None  # the belief's feature step before the action
-    predicted: Any = None  # the belief's value of ``variable`` after the action
-    seen: Seen | None = None
-    surprises: dict[str, tuple[Any, Any]] = field(default_factory=dict)
-    unchanged: bool = False
-    buffer: str = ""  # the keypad digits the belief had typed into the step after the action
-    state_before: State | None = None  # the belief's state before the action
-    unseen_before: frozenset[str] = frozenset()  # changed unseen (or guessed) before the action
-    shown_before: dict[str, Any] = field(default_factory=dict)  # last shown, before the action
-
-    def observed(self, name: str) -> Any:
-        """The value of ``name`` the display showed after this action (MISSING if none)."""
-        return MISSING if self.seen is None else self.seen.observed(name)
-
-    @property
-    def refused(self) -> bool:
-        """The appliance refused what the belief expected to work."""
-        return self.believed_accepted and not self.feedback.accepted
-
-    @property
-    def surprising(self) -> bool:
-        return self.refused or bool(self.surprises)
 
 
 class Session:
@@ -130,6 +59,9 @@ class Session:
         self.contradicted: dict[str, Any] = {}  # last shown as a value the belief cannot hold
         self.unread: set[str] = set()  # due on the display, but shown as the belief cannot read
         self.ever_seen: set[str] = set()  # shown (or shown absent) at least once
+        # shown before a press the belief did not predict, not shown since: that press may have
+        # changed them too (a CANCEL that also clears the delay), though the belief says not
+        self.doubtful: set[str] = set()
         # how often the display moved the belief's state where its own transitions did not go
         self.moved = 0
         self._unshowable: tuple[Any, frozenset[str]] = (None, frozenset())
@@ -144,166 +76,9 @@ class Session:
 
     def press(self, action: PlannedAction, exploring: bool = False) -> Executed:
         """Perform ``action`` on the appliance and on the belief; the belief then follows what
-        the display shows, and whatever contradicted its prediction is kept as a surprise."""
-        before_state = self.belief.state
-        before = self.belief.pointer()
-        before_text = self.last.text
-        unseen = frozenset(self.stale | self.blind | self.unread | self.guessed_initial)
-        shown_before = dict(self.evidence)
-        if action.name not in self.offered:  # the belief has a control the appliance lacks
-            feedback = Feedback(
-                self.last.text, dict(self.last.values), False, "the appliance has no such action"
-            )
-            self.episode.log(
-                "action",
-                action=action.name,
-                display=feedback.text,
-                accepted=False,
-                exploring=exploring,
-            )
-            return Executed(action, before, None, feedback, True, before)
-        believed = self.belief.advance(action.name, action.seconds)
-        pointer = self.belief.pointer() if believed else before
-        variable = self.step_variable(pointer) if believed else None
-        predicted = self.belief.value(variable) if variable else None
-        expected = self.belief.expected()
-        feedback = self.env.step(action.name, action.seconds)
-        self.episode.execution_steps += 1
-        self.last = feedback
-        self.episode.log(
-            "action",
-            action=action.name,
-            display=feedback.text,
-            values=dict(feedback.values),
-            accepted=feedback.accepted,
-            exploring=exploring,
-        )
-        if not feedback.accepted:
-            self.belief.state = before_state  # a refused action changes nothing
-            # a refusal that left the display as it was (no message) is a key ignored here
-            mute = believed and feedback.text == before_text
-            return Executed(
-                action, pointer, variable, feedback, believed, before, predicted, unchanged=mute
-            )
-        buffer = self.belief.state.buffer
-        seen = self.perceive(feedback, expected)
-        if variable and variable in expected.values and silent(self.belief.model, variable):
-            unsaid = seen.observed(variable) is MISSING and variable not in seen.candidates
-            readable = bool(seen.screens) and not (seen.unknown or seen.blank)
-            # silence says something only where the other value's word would be: the
-            # setting's own screen, any screen when it is a lamp, or a screen the key changed
-            # to with nothing else moved. A screen that shows the key did something else (or
-            # nothing) would be as silent had the key failed: a lock still on, its LOCKED
-            # shown only when a key is refused
-            moved = seen.outside or any(
-                self.belief.value(n) != v for n, v in seen.values.items() if n != variable
-            )
-            speaks = (
-                ("focus", variable) in seen.screens
-                or variable in self.belief.model.display.indicators
-                or (feedback.text != before_text and not moved)
-            )
-            if unsaid and readable and speaks and predicted in silent(self.belief.model, variable):
-                # the value the key was to set prints nothing, and its screen does not show the
-                # word of any other value: it shows that value by its silence
-                seen.values[variable] = predicted
-        surprises = {
-            name: (self.belief.value(name), value)
-            for name, value in (*seen.values.items(), *seen.outside.items())
-            if self.belief.value(name) != value
-        }
-        for name in seen.absent:
-            if self.belief.value(name) is not None:
-                surprises[name] = (self.belief.value(name), None)
-        if variable and variable in expected.values and variable not in seen.shown():
-            # expected on the display, and it is dark (or shows what the belief cannot read)
-            surprises[variable] = (predicted, UNREADABLE if seen.unknown else None)
-            if seen.unknown:
-                self.unread.add(variable)
-        unchanged = (
-            bool(surprises)
-            and feedback.text == before_text
-            and (expected.text != before_text or before_state != self.belief.state)
-        )
-        before_values = self.belief.compiled.assignment(before_state)
-        changed = {n for n, v in self.belief.values().items() if before_values[n] != v}
-        self.stale |= changed
-        hiding = self.belief.compiled.hiding_guard(self.belief.state)
-        if hiding is not None:  # changed behind a dark panel: nothing showed it happen
-            own = {self.belief.compiled.vars[v].name for v, _ in hiding.conditions}
-            self.blind |= changed - own
-        model = self.belief.model
-        quiet = {n for n in changed if _runs(n) or "lock" in n.split("_")} | _locks(model)
-        if changed - self.discovered - quiet:
-            # a setting found on the panel may depend on what just changed (a programme that
-            # resets it) though the belief cannot know: it needs seeing again
-            self.stale |= self.discovered - set(seen.values)
-        for name in self.guessed_initial:  # its programmes' start values are only guesses
-            parent = model.variables[name].depends_on if name in model.variables else None
-            if parent is not None and (parent in changed or variable == parent):
-                self.stale.add(name)
-        if surprises and variable is not None and not seen.showing(variable):
-            # the display did not come to the step the belief entered: the key did nothing
-            # visible, or something else, so the belief must not keep what it predicted the key
-            # would do — only what the display shows (``pointer`` still says where it meant to go)
-            self.belief.state = before_state
-        self.sync(seen)
-        if seen.partial and not feedback.values:
-            self._suspect_unread(seen)
-        return Executed(
-            action,
-            pointer,
-            variable,
-            feedback,
-            believed,
-            before,
-            predicted,
-            seen,
-            surprises,
-            unchanged,
-            buffer,
-            before_state,
-            unseen,
-            shown_before,
-        )
-
-    def _suspect_unread(self, seen: Seen) -> None:
-        """A screen found inside text the belief cannot print. A setting whose label is in that
-        text, unread, is shown in a way the belief cannot read; a time in it that is not what
-        the belief holds for a time setting shown before may be that setting, changed where
-        the belief saw no reason (a CANCEL that also clears the delay). Either needs seeing
-        again before anything rests on it."""
-        read = seen.shown()
-        for name, spec in self.belief.model.variables.items():
-            label = spec.display_label(name)
-            if name in read or not spec.visible or len(label) < 3:
-                continue
-            found = re.search(rf"(?<!\w){re.escape(label)}(?!\w)", seen.text, re.IGNORECASE)
-            if found is None:
-                continue
-            after = seen.text[found.end() :].strip().casefold()
-            printed = display_value(spec, self.belief.value(name)).strip().casefold()
-            if not (printed and after.startswith(printed)):
-                # its label is on the display, followed by words the belief cannot read as
-                # what it holds: that rests on nothing the display said
-                self.unread.add(name)
-        times = re.findall(r"(?<![\d:])\d{1,2}:\d{2}(?::\d{2})?(?![\d:])", seen.text)
-        if not times:
-            return
-        for name, spec in self.belief.model.variables.items():
-            if not isinstance(spec, TimeVariable) or name in read:
-                continue
-            if name not in self.evidence or name in self.stale:
-                continue
-            believed = magnitude(spec, self.belief.value(name))
-            for text in times:
-                try:
-                    shown = magnitude(spec, parse_value(spec, text))
-                except ValueProblem:
-                    continue
-                if shown is not None and shown != believed:
-                    self.stale.add(name)
-                    break
+        the display shows, and whatever contradicted its prediction is kept as a surprise
+        (:func:`apbot.agent.pressing.press`)."""
+        return press(self, action, exploring)
 
     def planned(self, action: str) -> PlannedAction:
         spec = self.belief.model.actions[action]
@@ -360,6 +135,7 @@ class Session:
         self.blind -= set(seen.values) | set(seen.outside) | seen.absent
         self.unread -= set(seen.values) | set(seen.outside) | seen.absent
         self.ever_seen |= set(seen.values) | set(seen.outside) | seen.absent
+        self.doubtful -= set(seen.values) | set(seen.outside) | seen.absent
         self.contradicted.update(seen.outside)
         for name in seen.values:
             self.contradicted.pop(name, None)
@@ -387,6 +163,22 @@ class Session:
             or (n in self.stale and n in self.guessed_initial | self.discovered)
             or n in self.blind
             or n in self.unread
+        )
+
+    def unverified(self, names: list[str] | set[str]) -> list[str]:
+        """The variables a claim would rest on without the display's word, though a screen of
+        the belief can show them: never shown at all (the value is the reader's guess of the
+        starting value, or a side effect nothing showed), or shown only before a press that
+        did what the belief did not predict. Worth a look where one changes nothing else;
+        where none does, the belief is all there is (:meth:`unconfirmed` is stricter)."""
+        hidden = self.unshowable()
+        return sorted(
+            n
+            for n in names
+            if n in self.belief.model.variables
+            and n not in hidden
+            and self.belief.model.variables[n].visible
+            and (n not in self.ever_seen or n in self.doubtful)
         )
 
     def shows(self, feedback: Feedback, name: str) -> bool:
@@ -461,85 +253,3 @@ class Session:
         """After presses the belief cannot follow, assume no procedure is in progress."""
         self.belief.set_pointer(None)
         self.reread()
-
-
-def silent(model: ApplianceModel, name: str) -> frozenset[Any]:
-    """The values of discrete ``name`` that its screen prints as nothing ("off" of a lock
-    shown as LOCKED or not at all), when every other value prints a word of its own; empty
-    otherwise."""
-    spec = model.variables.get(name)
-    if not isinstance(spec, DiscreteVariable) or not isinstance(spec.show, dict):
-        return frozenset()
-    texts = {value: (spec.show.get(str(value)) or "").strip() for value in spec.values or []}
-    quiet = frozenset(v for v, text in texts.items() if not text)
-    words = [text.casefold() for text in texts.values() if text]
-    if len(quiet) != 1 or len(set(words)) != len(words):
-        return frozenset()
-    return quiet
-
-
-def _locks(model: ApplianceModel) -> set[str]:
-    """Locks: settings a guard of the model tests for a value other than their starting one
-    (a child lock on) without darkening the panel. Engaging one freezes keys, resets nothing
-    (a setting named a lock is one too, where the reader missed its guard)."""
-    found = set()
-    for guard in model.guards:
-        if guard.hide:
-            continue
-        for name, condition in guard.when.items():
-            spec = model.variables.get(name)
-            if not isinstance(spec, DiscreteVariable) or not spec.values:
-                continue
-            held = condition if isinstance(condition, list) else [condition]
-            start = spec.initial if spec.initial is not None else spec.values[0]
-            if start not in held:
-                found.add(name)
-    return found
-
-
-def _runs(name: str) -> bool:
-    """A run state (running, heating…): starting a cycle resets no setting."""
-    return any(word in name for word in ("running", "heating", "dispensing", "status"))
-
-
-# --- values ------------------------------------------------------------------------------------
-
-
-def magnitude(spec: Any, value: Any) -> float | None:
-    """A numeric or time value as a number (seconds for times); None for anything else."""
-    if value is None:
-        return None
-    try:
-        if isinstance(spec, TimeVariable):
-            return float(parse_hms(str(value)))
-        return float(value)
-    except (TypeError, ValueError):
-        return None
-
-
-def loose(spec: Any, raw: Any) -> Any:
-    """``raw`` in canonical form for ``spec``'s type, whether or not its domain has it."""
-    try:
-        return parse_value(spec, raw)
-    except ValueProblem:
-        return None
-
-
-def canonical(spec: Any, number: float | None) -> Any:
-    """A number back in the model's notation (``HH:MM:SS`` for times)."""
-    if number is None:
-        return None
-    if isinstance(spec, TimeVariable):
-        return format_hms(int(number))
-    return tidy(number)
-
-
-def tidy(number: float) -> int | float:
-    return int(number) if float(number).is_integer() else number
-
-
-def summary(values: list[Any] | None) -> str:
-    if not values:
-        return "nothing"
-    shown = [str(v) for v in values]
-    return ", ".join(shown) if len(shown) <= 12 else ", ".join(shown[:10]) + f", … ({len(shown)})"
