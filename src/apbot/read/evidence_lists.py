@@ -31,6 +31,8 @@ from apbot.read.values import (
 )
 
 _TYPING_WORDS = frozenset({"type", "typed", "typing", "digits", "keystrokes", "keyed"})
+_KEY_WORDS = frozenset({"key", "keys", "button", "buttons", "number", "numbers"})
+_PRESS_WORDS = frozenset({"press", "pressed", "touch", "touched", "enter", "entered", "input"})
 
 
 def _keyed_examples(units: list[Unit], i: int) -> bool:
@@ -40,7 +42,11 @@ def _keyed_examples(units: list[Unit], i: int) -> bool:
     if k >= len(units) or not units[k].cells:
         return False
     header = units[k].header or units[k].cells
-    return any(set(words(cell)) & _TYPING_WORDS for cell in header)
+    return any(
+        set(words(cell)) & _TYPING_WORDS
+        or (set(words(cell)) & _KEY_WORDS and set(words(cell)) & _PRESS_WORDS)  # "Keys pressed"
+        for cell in header
+    )
 
 
 class ListReader:
@@ -168,7 +174,9 @@ class ListReader:
                 out.append((after, 2.6))
         if ORDER_RE.search(text) and not text.rstrip().endswith((":", "order")):
             # "arranged round the knob in this order, clockwise." and the table a line or two on
-            for k in range(i + 1, min(i + 4, len(units))):
+            for k in range(i + 1, min(i + 7, len(units))):
+                if units[k].heading != unit.heading:
+                    break
                 if units[k].cells:
                     column = _next_table_column(units, k - 1, self._own_column(k - 1, tokens))
                     if column and (mention or self._header_names(k - 1, tokens)):

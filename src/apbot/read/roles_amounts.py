@@ -158,8 +158,9 @@ def assign_amounts(
             )
     cooking = any(re.search(r"\bcook(?:ing)? time\b", u.text, re.I) for u in b.manual.units)
     named_cook = any(  # a cooking time already keyed in after a TIME key is the one
-        "cook" in v or (v == "time" and "entry" in spec) for v, spec in b.variables.items()
-    )
+        spec.get("type") == "time" and ("cook" in v or (v == "time" and "entry" in spec))
+        for v, spec in b.variables.items()
+    )  # (AUTO COOK's list of menus is no cooking time)
     direct: str | None = None
     if digits and (not used_digits or (cooking and not named_cook)):
         var = b.add_number(

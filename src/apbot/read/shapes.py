@@ -42,7 +42,15 @@ RUNNING_RE = re.compile(
 )
 
 
-ORDER_RE = re.compile(r"\bin (?:this|the following|that) order\b", re.I)
+ORDER_RE = re.compile(
+    r"\bin (?:this|the following|that) order\b|\(see (?:the )?table\)|\bthe table below\b",
+    re.I,
+)
+# a table's first column counting the presses ("| Presses | Menu |", "| Times pressed | Level |")
+PRESSES_RE = re.compile(
+    r"^\W*(?:no\.? of |number of )?(?:press(?:es)?|touch(?:es)?|taps?|times?)(?: pressed)?\b",
+    re.I,
+)
 
 
 @dataclass
@@ -228,6 +236,8 @@ def _next_table_column(units: list[Unit], i: int, column: int = 0) -> list[str]:
     unit ``i`` (header skipped)."""
     k = i + 1
     if k < len(units) and units[k].cells and not units[k].header:
+        if column == 0 and len(units[k].cells) >= 2 and PRESSES_RE.match(units[k].cells[0]):
+            column = 1  # the first column counts presses: the values are in the next one
         k += 1  # the header row
     items: list[str] = []
     numbers = 0
@@ -236,6 +246,8 @@ def _next_table_column(units: list[Unit], i: int, column: int = 0) -> list[str]:
             k += 1
             continue
         cell = re.sub(r"^\s*\d{1,2}[.)]?\s+(?=\D)", "", units[k].cells[column]).strip(" *")
+        # "Meat (joints, steaks, minced meat)": the name before its gloss
+        cell = re.sub(r"(?<=\w)\s*\([^)]*\)\s*$", "", cell)
         if find_ranges(cell) or not re.search(r"[A-Za-z]", cell):
             numbers += 1
         if cell and len(cell) <= 24 and cell not in items:

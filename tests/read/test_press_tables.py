@@ -1,0 +1,66 @@
+"""Tables that count presses, pointers to a table further on, and keypad worked examples."""
+
+from __future__ import annotations
+
+from apbot.model.validate import check_model
+from apbot.read import read_manual
+
+STEAMER = """
+IMPORTANT SAFETY INSTRUCTIONS
+Read all instructions before use. Never operate the steamer with a damaged cord or plug. Keep
+the appliance out of the reach of children. Do not immerse the base in water or other liquid.
+
+CONTROL PANEL
+- **HEAT** — selects the steam strength.
+- **PRESET** — chooses a cooking preset.
+- **Number pads 0 to 9** — enter the time.
+- **START** — starts.
+
+COOKING BY TIME
+No key is needed first: enter the cooking time with the number pads, then touch START.
+
+| Pads touched | Display | Cooking time |
+|---|---|---|
+| 3 0 | 00:30 | 30 seconds |
+| 1 5 0 0 | 15:00 | 15 minutes |
+
+Touch **HEAT** to change the strength; each touch moves to the next line of the table below.
+
+| Times pressed | Strength | Suitable for |
+|---|---|---|
+| 1 | FULL | root vegetables |
+| 2 | MEDIUM | fish fillets |
+| 3 | GENTLE (delicate food) | eggs, custard |
+
+PRESETS
+1. Touch PRESET until the dish you want is shown (see table).
+2. Touch START.
+3. When the beeper sounds, stir the food.
+
+| Presses | Dish | Weight |
+|---|---|---|
+| 1 | Broccoli | 200-500 g |
+| 2 | Dumplings | 6-12 pieces |
+| 3 | Sweetcorn (on the cob, 1 or 2 ears) | 1-2 ears |
+"""
+
+ACTIONS = ["press_heat", "press_preset", "press_start"] + [f"press_{d}" for d in range(10)]
+
+
+def test_a_column_counting_presses_is_no_value_list_the_next_column_is() -> None:
+    model = read_manual(STEAMER, ACTIONS).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    assert model.variables["heat"].values == ["full", "medium", "gentle"]
+
+
+def test_a_pointer_to_a_table_reaches_past_the_steps_between() -> None:
+    model = read_manual(STEAMER, ACTIONS).model
+    assert model.variables["preset"].values == ["broccoli", "dumplings", "sweetcorn"]
+
+
+def test_a_keys_pressed_table_is_worked_examples_and_the_pads_enter_the_time() -> None:
+    model = read_manual(STEAMER, ACTIONS).model
+    times = [v for v, spec in model.variables.items() if spec.type == "time"]
+    assert times, model.variables
+    feature = next(f for f in model.features.values() if f[0].variable in times)
+    assert set(feature[0].actions) == {f"press_{d}" for d in range(10)}
