@@ -64,3 +64,45 @@ def test_a_keys_pressed_table_is_worked_examples_and_the_pads_enter_the_time() -
     assert times, model.variables
     feature = next(f for f in model.features.values() if f[0].variable in times)
     assert set(feature[0].actions) == {f"press_{d}" for d in range(10)}
+
+
+SCALE_OVEN = """
+GENERAL SAFETY
+Do not operate the oven empty. Never heat liquids in sealed jars; they may burst. Children
+should only use the oven under supervision. Do not use metal dishes on the turntable.
+
+PANEL
+THAW — chooses what you are thawing.   0-9 — number keys.   START — starts.
+
+THAWING BY WEIGHT
+1. Press THAW to choose the food. Each press moves on:
+
+| Presses | Food | Weight |
+|---|---|---|
+| 1 | Mince | 100 g – 1.5 kg |
+| 2 | Chicken pieces | 200 g – 2 kg |
+| 3 | Rolls | 50 – 400 g |
+
+2. Enter the weight of the food in grams with the number keys (e.g. 7 5 0).
+3. Press START.
+"""
+
+
+def test_an_amount_typed_after_a_choice_key_is_the_second_step_of_its_feature() -> None:
+    actions = ["press_thaw", "press_start"] + [f"press_{d}" for d in range(10)]
+    reading = read_manual(SCALE_OVEN, actions)
+    model = reading.model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    assert model.variables["thaw"].values == ["mince", "chicken pieces", "rolls"]
+    steps = next(f for f in model.features.values() if f[0].variable == "thaw")
+    assert len(steps) == 2 and steps[1].variable == "weight"
+    assert set(steps[1].actions) == {f"press_{d}" for d in range(10)}
+    weight = model.variables["weight"]
+    assert weight.unit == "g" and weight.ranges[0][0] == 50 and weight.ranges[0][1] == 2000
+
+
+def test_a_range_from_grams_to_kilograms_is_read_in_grams() -> None:
+    from apbot.read.values import find_ranges
+
+    (r,) = find_ranges("100 g – 1.5 kg")
+    assert (r.low, r.high, r.unit) == (100, 1500, "g")

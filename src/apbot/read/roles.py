@@ -24,6 +24,7 @@ from apbot.read.roles_common import (
     var_name,
 )
 from apbot.read.roles_fixed import assign_locks, assign_power, assign_running
+from apbot.read.roles_keyed import assign_keyed_amounts
 from apbot.read.roles_lists import dial_values, list_evidence, numeric_list, pair_of_names
 from apbot.read.roles_pads import listed_groups, option_keys, pad_group, selecting_keys, shown_codes
 from apbot.read.shapes import GENERIC_DIALS, Evidence, adjuster_direction
@@ -149,6 +150,7 @@ def assign(b: Builder) -> None:
     )
     silent = assign_dials(b, dials, silent)
     assign_leftovers(b, silent, evidence)
+    assign_keyed_amounts(b, digits)
 
 
 def _numbered(b: Builder, key: ActionInfo, ev: Evidence) -> bool:

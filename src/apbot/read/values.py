@@ -110,6 +110,8 @@ def find_ranges(text: str) -> list[Range]:
         mixed = first != unit and is_time_unit(first) and is_time_unit(unit)
         if hi is not None and mixed:  # "1 min – 3 h": in minutes
             hi, unit = seconds(hi, unit) / seconds(1, first), first
+        elif hi is not None and (first, unit) in (("g", "kg"), ("ml", "l")):
+            hi, unit = hi * 1000, first  # "100 g – 2.0 kg": in grams
         if lo is None or hi is None or not lo < hi:
             continue
         if not unit and m.group(0).strip().lower().split()[1:2] == ["and"]:
