@@ -170,6 +170,16 @@ class EvidenceReader(ListReader):
                     if found:
                         best, best_prio, ev.values_at = found, 2.0, i
                         break
+        alone = [t for t in tokens if t in ("knob", "dial")]
+        if best_prio < 2.6 and alone and sum(t.endswith(alone[0]) for t in self.labels) == 1:
+            # the panel's one knob: "The knob has seven positions." and the row drawn after it
+            the = re.compile(rf"\bthe {alone[0]}\b", re.I)
+            for i, unit in enumerate(units):
+                if the.search(unit.text) and not _aside(units, i):
+                    counted = [c for c in self._lists(i, True, tokens) if c[1] == 2.6]
+                    if counted and self.labels[alone[0]].line is not None:
+                        best, best_prio, ev.values_at = counted[0][0], 2.6, i
+                        break
         if best_prio < 1.85:  # "Drying-time settings available: 10 · 20 · 30 · 60 min."
             for i, unit in enumerate(units):
                 led = None if _aside(units, i) else self._led_list(unit, tokens)

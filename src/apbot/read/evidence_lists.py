@@ -35,6 +35,34 @@ _KEY_WORDS = frozenset({"key", "keys", "button", "buttons", "number", "numbers"}
 _PRESS_WORDS = frozenset({"press", "pressed", "touch", "touched", "enter", "entered", "input"})
 
 
+_COUNT_WORDS = {
+    w: n
+    for n, w in enumerate(
+        [
+            "zero",
+            "one",
+            "two",
+            "three",
+            "four",
+            "five",
+            "six",
+            "seven",
+            "eight",
+            "nine",
+            "ten",
+            "eleven",
+            "twelve",
+        ]
+    )
+}
+_COUNTED_RE = re.compile(
+    r"\b(?:has|have|with)\s+(\d{1,2}|"
+    + "|".join(_COUNT_WORDS)
+    + r")\s+(?:positions|settings|marks|stops|detents|steps)\b",
+    re.I,
+)
+
+
 def _keyed_examples(units: list[Unit], i: int) -> bool:
     """The table after unit ``i`` shows what to type for some values ("| You type | Display |
     Cooking time |"): examples of entering a value on the keypad, not the values there are."""
@@ -172,6 +200,14 @@ class ListReader:
             # a long line is a list only when it is all short names ("OFF · Cottons · Eco …")
             if after and (len(units[i + 1].text) <= 120 or _all_names(after, units[i + 1].text)):
                 out.append((after, 2.6))
+        counted = _COUNTED_RE.search(text)
+        if counted and mention:  # "The knob has seven positions." and the row of them drawn
+            n = _COUNT_WORDS.get(counted.group(1).lower()) or int(counted.group(1) or 0)
+            for k in range(i + 1, min(i + 3, len(units))):
+                after = None if units[k].cells else bare_list(units[k].text)
+                if after and len(after) == n:
+                    out.append((after, 2.6))
+                    break
         if ORDER_RE.search(text) and not text.rstrip().endswith((":", "order")):
             # "arranged round the knob in this order, clockwise." and the table a line or two on
             for k in range(i + 1, min(i + 7, len(units))):

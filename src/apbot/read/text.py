@@ -437,6 +437,10 @@ def parse_manual(text: str) -> Manual:
             para_step = int(step.group(1)) if step else None
             para.append((number, line[bullet.end() :].strip()))
             continue
+        if re.match(r"\s{3,}\S", line) and len(re.findall(r"\S\s+·\s+\S", line)) >= 2:
+            flush()  # an indented row of marks ("   OFF · 1 · 2 · CONT") drawn in a figure
+            units.append(Unit(number, stripped, heading=heading))
+            continue
         if para and (_TERM_RE.match(line) or _FIELD_RE.match(line)):
             flush()  # "WARM      holds cooked food hot": a term and its definition, a new item
         para.append((number, stripped))

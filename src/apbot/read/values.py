@@ -312,6 +312,21 @@ _NUMBER_LIST = re.compile(
 )
 
 
+def _nothing_as_zero(items: list[str]) -> list[str]:
+    """A list of durations led by a word for none ("no timer → 2H → 4H", "OFF, 1 h, 2 h"): the
+    first is zero of their unit."""
+    rest = [
+        re.fullmatch(r"(\d+(?:[.,]\d+)?)\s*(h|hr|hrs|hours?|min|mins|minutes?)", i.strip(), re.I)
+        for i in items[1:]
+    ]
+    if len(items) < 3 or not all(rest):
+        return items
+    if not re.fullmatch(r"(?:no\b.{0,12}|none|off|-+|–|—)", items[0].strip(), re.I):
+        return items
+    unit = rest[0].group(2) if rest[0] else "h"
+    return [f"0 {unit}"] + [f"{m.group(1)} {m.group(2)}" for m in rest if m]
+
+
 def find_list(text: str) -> tuple[list[str], str] | None:
     """A list of values in one sentence, and how it was written ("arrows", "list")."""
     numbers = _NUMBER_LIST.search(text)
@@ -330,7 +345,10 @@ def find_list(text: str) -> tuple[list[str], str] | None:
         parts[0] = _clean_item(" ".join(capital) or " ".join(head[-2:]) or parts[0])
         if len(head) > 3 and not capital:
             parts[0] = _clean_item(head[-1])
-        items = [p for p in parts if p]
+        items = [p for p in parts if p and re.search(r"\w", p)]  # "… → OFF → …": no item
+        if items and items[0] in items[1:]:
+            items = items[: items.index(items[0], 1)]  # "OFF → 2H → 4H → OFF": the cycle, once
+        items = _nothing_as_zero(items)
         if all(_value_like(p, False) for p in items) and len(items) >= 2:
             return _dedupe(items), "arrows"
     for m in _CUE.finditer(text):
