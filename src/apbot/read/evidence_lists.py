@@ -35,26 +35,8 @@ _KEY_WORDS = frozenset({"key", "keys", "button", "buttons", "number", "numbers"}
 _PRESS_WORDS = frozenset({"press", "pressed", "touch", "touched", "enter", "entered", "input"})
 
 
-_COUNT_WORDS = {
-    w: n
-    for n, w in enumerate(
-        [
-            "zero",
-            "one",
-            "two",
-            "three",
-            "four",
-            "five",
-            "six",
-            "seven",
-            "eight",
-            "nine",
-            "ten",
-            "eleven",
-            "twelve",
-        ]
-    )
-}
+_NUMBER_WORDS = "zero one two three four five six seven eight nine ten eleven twelve"
+_COUNT_WORDS = {w: n for n, w in enumerate(_NUMBER_WORDS.split(" "))}
 _COUNTED_RE = re.compile(
     r"\b(?:has|have|with)\s+(\d{1,2}|"
     + "|".join(_COUNT_WORDS)

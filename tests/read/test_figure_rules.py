@@ -1,0 +1,50 @@
+"""Rules for what a converted PDF draws: cycles of lamps, rows of knob marks, counted positions."""
+
+from __future__ import annotations
+
+from apbot.model.validate import check_model
+from apbot.read import read_manual
+from apbot.read.values import find_list
+
+FAN_HEATER = """
+SAFETY FIRST
+Never cover the heater. Keep curtains, furniture and bedding at least 1 m away from the
+front grille. Do not use the heater in bathrooms or near a bath, shower or swimming pool.
+
+PANEL
+SETTING knob      Mains switch and heat setting.
+OFF TIMER         Stops the heater after a while.
+
+USE
+The knob has five positions. It clicks into each one.
+
+      OFF  ·  FAN  ·  LOW  ·  MID  ·  HIGH
+      ---- turn right for more heat ---->
+
+Turn the knob away from OFF to switch on.
+
+Each press of OFF TIMER lights the next lamp:
+
+   none  →  1H  →  3H  →  6H  →  none  →  …
+"""
+
+ACTIONS = ["turn_knob_cw", "turn_knob_ccw", "press_off_timer"]
+
+
+def test_an_arrow_cycle_is_read_once_and_its_leading_none_is_zero() -> None:
+    assert find_list("none → 1H → 3H → 6H → none → …") == (["0 H", "1 H", "3 H", "6 H"], "arrows")
+    assert find_list("ECO → TURBO → QUIET → ECO") == (["ECO", "TURBO", "QUIET"], "arrows")
+
+
+def test_the_counted_positions_of_the_one_knob_are_the_row_drawn_after() -> None:
+    model = read_manual(FAN_HEATER, ACTIONS).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    knob = next(v for v in model.variables.values() if v.label == "SETTING")
+    assert knob.values == ["off", "fan", "low", "mid", "high"]
+
+
+def test_the_timer_cycle_becomes_hours() -> None:
+    model = read_manual(FAN_HEATER, ACTIONS).model
+    timer = next(v for v in model.variables.values() if v.label == "OFF TIMER")
+    assert timer.type == "numeric" and timer.unit == "h"
+    assert [r[0] for r in timer.ranges][0] == 0 and timer.ranges[-1][1] == 6
