@@ -47,4 +47,37 @@ def test_the_timer_cycle_becomes_hours() -> None:
     model = read_manual(FAN_HEATER, ACTIONS).model
     timer = next(v for v in model.variables.values() if v.label == "OFF TIMER")
     assert timer.type == "numeric" and timer.unit == "h"
-    assert [r[0] for r in timer.ranges][0] == 0 and timer.ranges[-1][1] == 6
+    assert timer.ranges[0][0] == 0 and timer.ranges[-1][1] == 6
+
+
+WATER_POT = """
+# Thermo pot TP-2
+
+## Important safeguards
+Do not carry the pot while it holds hot water. Do not operate it empty. Keep the cord away from
+children. Unplug before cleaning.
+
+## Panel
+
+| No. | Key | What it does |
+|---|---|---|
+| 1 | TEMP SELECT | Picks the holding temperature. |
+| 2 | SERVE SIZE | Picks how much one pour gives. |
+| 3 | POUR | Pours. |
+
+Keep-warm temperature lamps: **60 · 75 · 85 · 95 °C**
+Serve-size lamps: **SMALL · LARGE · CARAFE**
+
+## Holding temperature
+Press **TEMP SELECT**; each press lights the next lamp.
+"""
+
+
+def test_field_lines_with_hyphenated_names_stay_apart_and_lamps_match_by_word_stem() -> None:
+    model = read_manual(WATER_POT, ["press_temp", "press_serve_size", "press_pour"]).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    size = next(v for v in model.variables.values() if v.label == "SERVE SIZE")
+    assert size.values == ["small", "large", "carafe"]
+    temp = next(v for v in model.variables.values() if v.label == "TEMP SELECT")
+    assert temp.type == "numeric" and temp.unit == "°C"  # a TEMP SELECT key sets an amount
+    assert temp.ranges[0][0] == 60 and temp.ranges[-1][1] == 95

@@ -37,6 +37,9 @@ from apbot.read.values import (
 _PRINTED_UNITS = r"kg|g|lbs?|ml|l|litres?|W|watts?|rpm|%"  # quantities, not times or degrees
 
 
+_QUANTITY_WORDS = {"temp", "temperature", "humidity", "weight", "volume", "speed", "watt"}
+
+
 class Builder(EvidenceReader):
     """Collects variables, features, guards and notes; ``data()`` gives the model as plain data."""
 
@@ -116,9 +119,11 @@ class Builder(EvidenceReader):
 
     def add_number(self, name: str, label: str, ev: Evidence, cyclic: bool) -> str:
         """A numeric or time variable from the ranges and steps read (guessed where absent)."""
-        if set(words(name.replace("_", " "))) & CHOICE_WORDS:  # a programme is not an amount
+        named = set(words(name.replace("_", " ")))
+        choice = bool(named & CHOICE_WORDS) and not named & _QUANTITY_WORDS  # (TEMP SELECT)
+        if choice:  # a programme is not an amount
             ev = Evidence(**{**ev.__dict__, "ranges": [r for r in ev.ranges if not r.unit]})
-        if not ev.ranges and set(words(name.replace("_", " "))) & CHOICE_WORDS:
+        if not ev.ranges and choice:
             # a programme/mode selector the manual lists no values for: a few placeholder
             # choices the loop replaces with what the display shows (a number would stop it)
             var = self.add_discrete(name, ["1", "2", "3", "4", "5"], label, None)

@@ -160,7 +160,11 @@ class EvidenceReader(ListReader):
         if best_prio < 2.0 and own_words:  # "Mode lamps (left to right): NORMAL CONT. FAN"
             for i, unit in enumerate(units):
                 lamps = LAMP_LIST_RE.match(unit.text)
-                if lamps and set(words(lamps.group(0))) & own_words:
+                lamp_words = (
+                    {w[:4] for w in words(lamps.group(0)) if len(w) >= 4} if lamps else set()
+                )
+                if lamps and lamp_words & {w[:4] for w in own_words if len(w) >= 4}:
+                    # ("Keep-warm temperature lamps:" for TEMP SELECT: temp ~ temperature)
                     rest = unit.text[lamps.end() :]
                     for after in units[i + 1 : i + 8]:  # "CONT." ended a "sentence" mid-line
                         if after.line != unit.line:

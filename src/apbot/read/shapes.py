@@ -18,7 +18,7 @@ from apbot.read.values import (
 )
 
 LAMP_LIST_RE = re.compile(
-    r"^\W*(?:the\s+)?(?:\w+\s+){0,2}(?:lamps?|indicators?|symbols?|icons?|LEDs?|lights)\b"
+    r"^\W*(?:the\s+)?(?:[\w-]+\s+){0,2}(?:lamps?|indicators?|symbols?|icons?|LEDs?|lights)\b"
     r"(?:\s*\([^)]*\))?\s*:",
     re.IGNORECASE,
 )
