@@ -81,3 +81,32 @@ def test_field_lines_with_hyphenated_names_stay_apart_and_lamps_match_by_word_st
     temp = next(v for v in model.variables.values() if v.label == "TEMP SELECT")
     assert temp.type == "numeric" and temp.unit == "°C"  # a TEMP SELECT key sets an amount
     assert temp.ranges[0][0] == 60 and temp.ranges[-1][1] == 95
+
+
+TEA_KETTLE = """
+1 SAFETY
+Use the kettle only with the base supplied. Never fill above MAX. Do not open the lid while
+the water boils. Keep the appliance and its cord out of the reach of children under 8.
+
+2 PARTS
+A  Lid          B  Base          C  Heat dial (HEAT)          D  HOLD switch (0 / I)
+
+3 USE
+The heat dial has printed marks at 40, 60, 80 and 100 °C. Each click is one setting, 10 °C
+apart (40, 50, 60 ... 90, 100), so the dots between the marks are 50, 70 and 90 °C.
+Slide the HOLD switch to I to hold the water hot after boiling; back to 0 to stop.
+"""
+
+
+def test_an_ellipsis_run_of_numbers_gives_every_setting() -> None:
+    actions = ["turn_heat_cw", "turn_heat_ccw", "slide_hold"]
+    model = read_manual(TEA_KETTLE, actions).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    heat = next(v for v in model.variables.values() if v.label == "HEAT")
+    assert heat.ranges == [(40, 100, 10)]
+
+
+def test_a_switch_printed_0_and_i_is_off_and_on() -> None:
+    model = read_manual(TEA_KETTLE, ["turn_heat_cw", "turn_heat_ccw", "slide_hold"]).model
+    hold = next(v for v in model.variables.values() if v.label == "HOLD")
+    assert hold.values == ["off", "on"]

@@ -79,13 +79,17 @@ class Builder(EvidenceReader):
     def add_discrete(self, name: str, values: list[str], label: str, ev: Evidence | None) -> str:
         name = self.unique(name, self.variables)
         values = _dedupe([_value_text(v) for v in values if _value_text(v)])
+        initial = ev.initial if ev is not None else None
+        if values in (["0", "i"], ["o", "i"]):  # a switch printed 0 / I: off and on
+            values = ["off", "on"]
+            initial = None  # ("position I" is as often the drawing's callout I)
         own = re.fullmatch(r"(.*?)\s+([A-Z0-9]{1,6}(?:/[A-Z0-9]{1,6})+)", label)
         if own and [p.lower() for p in own.group(2).split("/")] == values:
             label = own.group(1)  # the display names the setting, not the printed choices
         spec: dict[str, Any] = {"type": "discrete", "values": values, "label": label}
-        if ev is not None and ev.initial in values:
-            spec["initial"] = ev.initial
-            self.note(f"variables.{name}.initial", f"starts at {ev.initial}", ev.initial_at)
+        if ev is not None and initial in values:
+            spec["initial"] = initial
+            self.note(f"variables.{name}.initial", f"starts at {initial}", ev.initial_at)
         self.variables[name] = spec
         return name
 

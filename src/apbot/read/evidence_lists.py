@@ -27,6 +27,7 @@ from apbot.read.values import (
     cell_list,
     find_list,
     find_number_run,
+    find_progression,
     quantity_run,
 )
 
@@ -182,6 +183,9 @@ class ListReader:
             # a long line is a list only when it is all short names ("OFF · Cottons · Eco …")
             if after and (len(units[i + 1].text) <= 120 or _all_names(after, units[i + 1].text)):
                 out.append((after, 2.6))
+        progression = find_progression(text)
+        if progression and len(progression) >= 3:  # "one click each, 50, 55, 60 ... 95, 100"
+            out.append((progression, 2.7 if mention else 2.3))  # (beats the printed marks)
         counted = _COUNTED_RE.search(text)
         if counted and mention:  # "The knob has seven positions." and the row of them drawn
             n = _COUNT_WORDS.get(counted.group(1).lower()) or int(counted.group(1) or 0)

@@ -21,7 +21,8 @@ _BULLETS = "•●○◦▪▫■□►▶➤➢✓✔✗✘–—·*-"
 _BULLET_RE = re.compile(rf"^\s*(?:[{re.escape(_BULLETS)}]|\d{{1,2}}[.)])\s+")
 _NUMBERED_RE = re.compile(r"^\s*(\d{1,2})[.)]\s+")
 _TABLE_RULE = re.compile(r"^\s*\|?\s*:?-{2,}:?\s*(\|\s*:?-{2,}:?\s*)*\|?\s*$")
-_SENTENCE_END = re.compile(r"(?<=[.!?])\s+(?=[A-Z0-9\"'(*])")
+# (not inside a run of numbers: "50, 55, 60 ... 95, 100")
+_SENTENCE_END = re.compile(r"(?<=[.!?])(?<!\d \.\.\.)(?<!\d\.\.\.)\s+(?=[A-Z0-9\"'(*])")
 
 
 @dataclass(frozen=True)

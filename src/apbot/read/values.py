@@ -327,6 +327,29 @@ def _nothing_as_zero(items: list[str]) -> list[str]:
     return [f"0 {unit}"] + [f"{m.group(1)} {m.group(2)}" for m in rest if m]
 
 
+_PROGRESSION_RE = re.compile(
+    r"(?<![\d.])(\d+(?:\.\d+)?),\s*(\d+(?:\.\d+)?)(?:,\s*\d+(?:\.\d+)?)*,?\s*(?:\.\.\.|…)\s*"
+    r"(?:\d+(?:\.\d+)?,\s*)*(\d+(?:\.\d+)?)(?![\d.])\s*([A-Za-z%°]{1,4})?"
+)
+
+
+def find_progression(text: str) -> list[str] | None:
+    """Settings written as the first few, an ellipsis and the last ("50, 55, 60 ... 95, 100"):
+    every one of them, the step being the first gap."""
+    m = _PROGRESSION_RE.search(text)
+    if not m:
+        return None
+    first, second, last = float(m.group(1)), float(m.group(2)), float(m.group(3))
+    gap = second - first
+    if gap <= 0 or last <= second or (last - first) / gap > 400:
+        return None
+    count = round((last - first) / gap)
+    if abs(first + count * gap - last) > 1e-6:
+        return None  # the last is off the step: no progression
+    unit = m.group(4) if m.group(4) and re.fullmatch(UNIT, m.group(4), re.I) else ""
+    return [f"{first + k * gap:g}" + (f" {unit}" if unit else "") for k in range(count + 1)]
+
+
 def find_list(text: str) -> tuple[list[str], str] | None:
     """A list of values in one sentence, and how it was written ("arrows", "list")."""
     numbers = _NUMBER_LIST.search(text)
