@@ -37,6 +37,19 @@ from apbot.read.values import (
 _PRINTED_UNITS = r"kg|g|lbs?|ml|l|litres?|W|watts?|rpm|%"  # quantities, not times or degrees
 
 
+_TWELVE_RE = re.compile(r"\b12[- ]h(?:ou)?r\b|\b12 hours? (?:clock|system|format)|\bAM\b|\bPM\b")
+_TWENTY_FOUR_RE = re.compile(r"\b24[- ]h(?:ou)?r\b|\b24 hours? (?:clock|system|format)", re.I)
+
+
+def twelve_hour_clock(units: list[Any]) -> bool:
+    """Whether the clock counts 1–12 (AM/PM, "12-hour clock"): "keeps warm for 12 hours" is no
+    such clock, and a manual that speaks of a 24-hour clock has none."""
+    texts = [u.text for u in units]
+    if any(_TWENTY_FOUR_RE.search(t) for t in texts):
+        return False
+    return any(_TWELVE_RE.search(t) for t in texts)
+
+
 _QUANTITY_WORDS = {"temp", "temperature", "humidity", "weight", "volume", "speed", "watt"}
 
 
@@ -143,9 +156,7 @@ class Builder(EvidenceReader):
             shown = ", ".join(f"{r.low:g}–{r.high:g}" for r in ranges)
             self.note(subject, f"range {shown} {ranges[0].unit}", ev.range_at)
         elif clock:
-            twelve = any(
-                re.search(r"\b12[- ]?h(?:ou)?r|\bAM\b|\bPM\b", u.text) for u in self.manual.units
-            )
+            twelve = twelve_hour_clock(self.manual.units)
             low, high = (3600, 12 * 3600 + 59 * 60) if twelve else (0, 23 * 3600 + 59 * 60)
             self.note(subject, "a clock: the time of day (its range is the clock's, not read)")
             ranges = [Range(low, high, "s", 60)]

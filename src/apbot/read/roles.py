@@ -24,6 +24,7 @@ from apbot.read.roles_common import (
     var_name,
 )
 from apbot.read.roles_fixed import assign_locks, assign_power, assign_running
+from apbot.read.roles_hourmin import assign_hour_minute, hour_minute_keys
 from apbot.read.roles_keyed import assign_keyed_amounts
 from apbot.read.roles_lists import dial_values, list_evidence, numeric_list, pair_of_names
 from apbot.read.roles_pads import listed_groups, option_keys, pad_group, selecting_keys, shown_codes
@@ -57,6 +58,10 @@ def assign(b: Builder) -> None:
             del pairs[base]  # it moves through a list of names: no amount for other keys
     paired = {n for p in pairs.values() for ns in p.values() for n in ns}
     done |= paired | set(digits) | used_actions(b)
+    hour_minute = hour_minute_keys(infos, done)
+    if hour_minute:  # HOUR / MIN move whichever time CLOCK, TIMER, READY AT… opened
+        others = [i for i in infos if i.name not in done and not i.skill.startswith("turn")]
+        done |= set(assign_hour_minute(b, others, hour_minute))
 
     # setting keys -------------------------------------------------------------------------
     keys = [i for i in infos if i.name not in done and not i.skill.startswith("turn")]

@@ -252,6 +252,9 @@ PER_RE = re.compile(
 )
 
 
+_BARE_STEPS_RE = re.compile(rf"(?<![\w-])({NUM})-({UNIT})\s+(?:steps|increments)\b", re.I)
+
+
 def find_step(text: str) -> tuple[float, str] | None:
     """A step size: (number, canonical unit)."""
     per = PER_RE.search(text)
@@ -259,6 +262,9 @@ def find_step(text: str) -> tuple[float, str] | None:
         return number(per.group(1)) or 1.0, unit_name(per.group(2))
     m = STEP_RE.search(text)
     if not m:
+        bare = _BARE_STEPS_RE.search(text)  # "| up to 15 h ahead, ten-minute steps |"
+        if bare and number(bare.group(1)):
+            return number(bare.group(1)) or 1.0, unit_name(bare.group(2))
         return None
     groups = m.groups()
     if m.group(0).lower().endswith("units") and not groups[1]:
