@@ -69,3 +69,28 @@ def test_a_duration_no_word_claims_goes_to_the_cooking_time() -> None:
     model = read_manual(oven, actions).model
     goal = parse_instruction(model, "Heat the soup for 4 minutes and start.")
     assert goal.get("cook_time") == "00:04:00", goal
+
+
+def test_a_key_whose_legend_says_it_takes_the_cooking_time_is_the_cooking_time() -> None:
+    hob = """
+## Keys
+* **HEAT** — the keypad then takes the power level.
+* **TIMER** — the keypad then takes the cooking time in minutes.
+* **0 – 9** — number keys.
+"""
+    actions = ["press_heat", "press_timer"] + [f"press_{d}" for d in range(10)]
+    model = read_manual(hob, actions).model
+    times = [n for n, v in model.variables.items() if v.type == "time"]
+    assert times == ["timer"], times  # no second cooking time the digits set alone
+
+
+def test_a_cooking_time_typed_straight_away_stays_beside_a_minute_minder() -> None:
+    oven = """
+## Keys
+- **Number pads 0–9**: type a cooking time straight away, or a value after TIMER.
+- **TIMER**: minute minder (no heating).
+"""
+    actions = ["press_timer"] + [f"press_{d}" for d in range(10)]
+    model = read_manual(oven, actions).model
+    times = sorted(n for n, v in model.variables.items() if v.type == "time")
+    assert times == ["cook_time", "timer"], times
