@@ -106,3 +106,28 @@ def test_a_range_from_grams_to_kilograms_is_read_in_grams() -> None:
 
     (r,) = find_ranges("100 g – 1.5 kg")
     assert (r.low, r.high, r.unit) == (100, 1500, "g")
+
+
+POWER_GUIDE = """
+## Cooking
+1. Type the time on the number pads.
+2. Tap **LEVEL** and type the power level with the number pads.
+3. Tap **START**.
+
+A guide to the outputs:
+
+| Output | Suits |
+|---|---|
+| 100 % | Soup, water |
+| 80 % | Leftovers |
+| 40 % | Stews |
+| 20 % | Thawing |
+"""
+
+
+def test_a_guide_table_of_amounts_gives_the_range_in_the_step_that_meets_them() -> None:
+    actions = ["press_level", "press_start"] + [f"press_{d}" for d in range(10)]
+    model = read_manual(POWER_GUIDE, actions).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    output = next(v for v in model.variables.values() if v.label == "LEVEL")
+    assert output.unit == "%" and output.ranges == [(20, 100, 20)]

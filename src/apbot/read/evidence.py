@@ -4,6 +4,7 @@ it came from (the builder asks once per control and keeps the answer)."""
 from __future__ import annotations
 
 import itertools
+import math
 import re
 
 from apbot.read.evidence_lists import ListReader
@@ -27,9 +28,11 @@ from apbot.read.shapes import (
     _without,
     _without_advice,
 )
+from apbot.read.text import Unit
 from apbot.read.values import (
     EACH_PRESS_RE,
     ON_OFF_RE,
+    UNIT,
     Range,
     anchored_lists,
     bare_list,
@@ -38,6 +41,7 @@ from apbot.read.values import (
     find_ranges,
     find_step,
     find_two_steps,
+    unit_name,
 )
 
 
@@ -139,6 +143,12 @@ class EvidenceReader(ListReader):
             if two and _fits(two[0][0].unit, tokens):
                 ev.ranges, ev.range_at = two[0], window[two[1]]
                 break
+        if not ev.ranges:  # "Rough guide to power:" and a column of 100 % … 10 %
+            for i in sorted(self.context(tokens)):
+                guide = None if _aside(units, i) else _amount_column(units, i)
+                if guide is not None and _fits(guide.unit, tokens):
+                    ev.ranges, ev.range_at = [guide], i
+                    break
         if not ev.ranges:
             for i in sorted(self.context(tokens)):  # the sentences that follow say the rest
                 bounds = find_bounds([u.text for u in units[i : i + 4]])
@@ -306,3 +316,37 @@ class EvidenceReader(ListReader):
                 continue  # "any time from 1:00 to 12:59": the clock's day, not a duration
             consider(2 * bool(limits.search(unit.text)), unit.text, i)
         return (best[1], best[2]) if best else None
+
+
+_AMOUNT_CELL_RE = re.compile(rf"\s*\**\s*(\d+(?:[.,]\d+)?)\s*({UNIT})\s*\**\s*$", re.I)
+
+
+def _amount_column(units: list[Unit], i: int) -> Range | None:
+    """A table a sentence ending in ":" introduces whose first column is amounts in one unit
+    other than time ("| 100 % | Water |", "| 70 % | Reheating |"): settings given as examples,
+    so the range runs from the least to the most, in the largest step that meets them all."""
+    if not units[i].text.rstrip().endswith(":"):
+        return None
+    k = i + 1
+    if k < len(units) and units[k].cells and not units[k].header:
+        k += 1  # the header row
+    amounts: list[float] = []
+    unit = None
+    while k < len(units) and units[k].cells and units[k].header:
+        m = _AMOUNT_CELL_RE.fullmatch(units[k].cells[0])
+        if not m:
+            return None
+        this = unit_name(m.group(2))
+        if unit not in (None, this) or this in ("", "s", "min", "h"):
+            return None
+        unit = this
+        amounts.append(float(m.group(1).replace(",", ".")))
+        k += 1
+    if len(amounts) < 3 or unit is None:
+        return None
+    step = 0.0
+    for a in amounts:
+        step = math.gcd(round(step * 10), round(a * 10)) / 10
+    if step <= 0:
+        return None
+    return Range(min(amounts), max(amounts), unit, step)
