@@ -110,3 +110,35 @@ def test_a_switch_printed_0_and_i_is_off_and_on() -> None:
     model = read_manual(TEA_KETTLE, ["turn_heat_cw", "turn_heat_ccw", "slide_hold"]).model
     hold = next(v for v in model.variables.values() if v.label == "HOLD")
     assert hold.values == ["off", "on"]
+
+
+TOASTER = """
+IMPORTANT SAFEGUARDS
+Do not touch hot surfaces; use handles or knobs. Unplug from outlet when not in use and before
+cleaning. Allow to cool before putting on or taking off parts. Oversize foods must not be used.
+
+USING THE CONTROLS
+
+HEAT °F knob
+Marked on the knob: 250 300 350 400 450. The knob clicks between the marks, so a temperature
+halfway between two printed numbers can be set as well. Most foods bake at 350 °F.
+
+TIME knob
+The scale reads OFF 5 10 15 30 45 60 (minutes). In the first five minutes every minute has its
+own click, for toast; above that it clicks at the printed marks only.
+"""
+
+TOASTER_ACTIONS = ["turn_heat_cw", "turn_heat_ccw", "turn_time_cw", "turn_time_ccw"]
+
+
+def test_clicks_between_the_marks_add_the_midpoints_and_the_manual_speaks_fahrenheit() -> None:
+    model = read_manual(TOASTER, TOASTER_ACTIONS).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    heat = next(v for v in model.variables.values() if v.label.startswith("HEAT"))
+    assert heat.unit == "°F" and heat.ranges == [(250, 450, 25)]
+
+
+def test_every_minute_in_the_first_few_minutes_has_its_own_setting() -> None:
+    model = read_manual(TOASTER, TOASTER_ACTIONS).model
+    time = next(v for v in model.variables.values() if v.label == "TIME")
+    assert time.ranges[0] == ("00:00:00", "00:05:00", 60)

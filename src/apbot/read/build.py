@@ -80,6 +80,17 @@ class Builder(EvidenceReader):
     # --- evidence ---------------------------------------------------------------------------
     # --- variables --------------------------------------------------------------------------
 
+    _fahrenheit: bool | None = None
+
+    def fahrenheit(self) -> bool:
+        """Whether the manual gives temperatures in °F more often than in °C."""
+        if self._fahrenheit is None:
+            text = "\n".join(u.text for u in self.manual.units)
+            f = len(re.findall(r"°\s?F\b|\bdegrees F(?:ahrenheit)?\b", text))
+            c = len(re.findall(r"°\s?C\b|\bdegrees C(?:elsius)?\b", text))
+            self._fahrenheit = f > c
+        return self._fahrenheit
+
     def unique(self, name: str, taken: dict[str, Any]) -> str:
         base = re.sub(r"[^a-z0-9_]+", "_", name.lower()).strip("_") or "setting"
         if not base[0].isalpha():
@@ -181,6 +192,8 @@ class Builder(EvidenceReader):
             ranges = [Range(low, high, unit)]
             self.unread.add(name)
         unit = ranges[0].unit or (ev.step[1] if ev.step else "") or _unit_from_words(name)
+        if unit == "°C" and not ranges[0].unit and self.fahrenheit():
+            unit = "°F"  # a temperature read without its unit, in a manual that speaks °F
         finer = bool(ev.step and ev.step[1] in ("s", "min") and unit == "h")  # 0–3 h by 1 min
         as_time = ranges[0].unit == "s" or unit in ("s", "min") or finer
         factor = 1 if ranges[0].unit == "s" else seconds(1, unit) if as_time else 1

@@ -41,6 +41,7 @@ from apbot.read.values import (
     find_ranges,
     find_step,
     find_two_steps,
+    number,
     unit_name,
 )
 
@@ -247,6 +248,22 @@ class EvidenceReader(ListReader):
                     else:
                         ev.ranges.append(Range(lo, hi, symbol, gap))
                 ev.range_at = at
+        if best is not None and _numeric_items(best) and len(best) >= 3:
+            near = {
+                j
+                for i in mentions
+                for j in range(i, min(i + 5, len(units)))
+                if units[j].heading == units[i].heading
+            }  # the paragraph about the knob: its marks, then how it clicks between them
+            said = [units[i].text for i in sorted(near | set(self.context(tokens)))]
+            if any(_BETWEEN_RE.search(t) for t in said):
+                best = _with_midpoints(best)
+            for t in said:  # "in the first ten minutes every minute has its own tick"
+                each = _EVERY_MINUTE_RE.search(t)
+                top = number(each.group(1) or each.group(2)) if each else None
+                if top and 2 <= top <= 30:
+                    best = _with_every(best, int(top))
+                    break
         if best is not None:
             ev.values = best if _numeric_items(best) else [v.lower() for v in best]
             self._initial_from_values(ev, tokens)
@@ -350,3 +367,44 @@ def _amount_column(units: list[Unit], i: int) -> Range | None:
     if step <= 0:
         return None
     return Range(min(amounts), max(amounts), unit, step)
+
+
+# "the knob clicks between the markings", "a detent halfway between two printed numbers"
+_BETWEEN_RE = re.compile(
+    r"\b(?:clicks?|detents?|stops?|notch(?:es)?|settings?|set)\b[^.;]{0,40}\b(?:between|halfway)\b"
+    r"[^.;]{0,30}\b(?:markings?|marks|numbers|figures)\b",
+    re.I,
+)
+
+
+def _with_midpoints(items: list[str]) -> list[str]:
+    """Printed marks with a setting halfway between each two (200 250 … → 200 225 250 …)."""
+    parsed = [re.match(r"\s*(\d+(?:[.,]\d+)?)\s*(.*)", v) for v in items]
+    if not all(parsed):
+        return items
+    nums = [float(m.group(1).replace(",", ".")) for m in parsed if m]
+    if any(b <= a for a, b in itertools.pairwise(nums)):
+        return items
+    unit = next((m.group(2) for m in parsed if m and m.group(2)), "")
+    out: list[float] = []
+    for a, b in itertools.pairwise(nums):
+        out += [a, (a + b) / 2]
+    out.append(nums[-1])
+    return [f"{v:g}" + (f" {unit}" if unit else "") for v in out]
+
+
+_EVERY_MINUTE_RE = re.compile(
+    r"\bfirst\s+(\w+)\s+minutes\b[^.;]{0,30}\bevery minute\b"
+    r"|\bevery minute\b[^.;]{0,40}\b(?:first|up to)\s+(\w+)\s+minutes\b",
+    re.I,
+)
+
+
+def _with_every(items: list[str], top: int) -> list[str]:
+    """Marks in minutes with every whole minute up to ``top`` added."""
+    parsed = [re.match(r"\s*(\d+)\s*(.*)", v) for v in items]
+    if not all(parsed):
+        return items
+    nums = sorted({int(m.group(1)) for m in parsed if m} | set(range(top + 1)))
+    unit = next((m.group(2) for m in parsed if m and m.group(2)), "")
+    return [f"{v}" + (f" {unit}" if unit else "") for v in nums]
