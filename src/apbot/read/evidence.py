@@ -127,6 +127,7 @@ class EvidenceReader(ListReader):
                     ev.step, ev.step_at = step, i
             if (
                 ev.toggle_at is None
+                and not quiet  # ("The hob deactivates." under Troubleshooting)
                 and ON_OFF_RE.search(_without(text, other_labels))
                 and not self._two_key_hold(text, tokens)
             ):

@@ -85,7 +85,7 @@ def _cells(line: str) -> tuple[str, ...]:
 
 def _space_tables(lines: list[str]) -> dict[int, tuple[tuple[str, ...], bool]]:
     """Tables drawn with spaces (text from a PDF): a header of three or more cells followed by
-    rows of two or more; a row's wrapped continuation line (one cell) is dropped.
+    rows of two or more; a row's wrapped lines (set in from the left) go on its cells.
 
     Returns line number → (cells, is the header row)."""
     out: dict[int, tuple[tuple[str, ...], bool]] = {}
@@ -100,10 +100,15 @@ def _space_tables(lines: list[str]) -> dict[int, tuple[tuple[str, ...], bool]]:
             i += 1
             continue
         rows: list[int] = []
+        more: dict[int, list[tuple[int, str]]] = {}  # row -> wrapped lines' cells, by position
+        indent = len(lines[i]) - len(lines[i].lstrip())
         j = i + 1
         while j < len(lines) and lines[j].strip():
             cells = _cells(lines[j])
-            if len(cells) >= 2 and "|" not in lines[j]:
+            inset = len(lines[j]) - len(lines[j].lstrip()) > indent + 2
+            if rows and inset and "|" not in lines[j]:
+                more.setdefault(rows[-1], []).extend(_placed_cells(lines[j]))
+            elif len(cells) >= 2 and "|" not in lines[j]:
                 rows.append(j)
             elif len(cells) != 1 or len(cells[0]) > 40:
                 break
@@ -111,13 +116,32 @@ def _space_tables(lines: list[str]) -> dict[int, tuple[tuple[str, ...], bool]]:
         if len(rows) >= 2:
             out[i + 1] = (head, True)
             for r in rows:
-                out[r + 1] = (_cells(lines[r]), False)
+                out[r + 1] = (_joined_cells(lines[r], more.get(r, [])), False)
             for k in range(i + 1, j):
                 out.setdefault(k + 1, ((), False))
             i = j
         else:
             i += 1
     return out
+
+
+def _placed_cells(line: str) -> list[tuple[int, str]]:
+    """A line's cells (split at wide gaps) with the column each starts at."""
+    body = _strip_markup(line).rstrip()
+    return [(m.start(), m.group(0)) for m in re.finditer(r"\S+(?: \S+)*", body)]
+
+
+def _joined_cells(line: str, wrapped: list[tuple[int, str]]) -> tuple[str, ...]:
+    """A row's cells with the text of its wrapped lines added to the cell each piece stands
+    under ("To activate and deactivate the" + "hob.")."""
+    placed = _placed_cells(line)
+    if not wrapped or not placed:
+        return _cells(line)
+    cells = [text for _, text in placed]
+    for at, text in wrapped:
+        k = max((n for n, (start, _) in enumerate(placed) if start <= at + 2), default=0)
+        cells[k] = f"{cells[k]} {text}"
+    return tuple(cells)
 
 
 _PAGE_NUMBER = re.compile(
