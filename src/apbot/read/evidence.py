@@ -99,6 +99,11 @@ class EvidenceReader(ListReader):
                     # ("Mode lamps: NORMAL CONT. …" are the mode key's values)
                 if _numeric_items(items) and len(items) < 3:
                     continue
+                tail = items[-1]
+                if re.search(r"\bonly$", tail, re.I) or re.search(
+                    rf"{re.escape(tail)}\W{{0,3}}only\b", text, re.I
+                ):
+                    continue  # "(PORRIDGE, STEAM, SOUP only)": where it applies, not its values
                 if prio > best_prio:
                     best, best_prio, ev.values_at = items, prio, i
             ranges = [
@@ -132,7 +137,7 @@ class EvidenceReader(ListReader):
                 and not self._two_key_hold(text, tokens)
             ):
                 ev.toggle_at = i  # (another key's name, ON/OFF in a panel drawing, is no toggle)
-            if ev.each_press_at is None and EACH_PRESS_RE.search(text):
+            if ev.each_press_at is None and not quiet and EACH_PRESS_RE.search(text):
                 ev.each_press_at = i
             if ev.initial is None:
                 init = find_initial(text)
@@ -229,6 +234,8 @@ class EvidenceReader(ListReader):
                 if m:  # "FAN HI/LO": the panel prints the values next to the name
                     best, best_prio, ev.values_at = m.group(1).split("/"), 2.5, i
                     break
+        if best and re.search(r"\bonly\W*$", best[-1], re.I):
+            best = None  # "(STEW, JAM, BROTH only)": where the setting applies, not its values
         choice = bool({w for t in tokens for w in words(t.replace("_", " "))} & CHOICE_WORDS)
         if best is None or (_numeric_items(best) and (len(best) < 3 or choice)):
             # two numbers are a range, not a list; a programme key's list is of names

@@ -11,6 +11,7 @@ from apbot.read.shapes import (
     ORDER_RE,
     QUANTITY_FAMILIES,
     RUN_RE,
+    TABLE_POINTER_RE,
     Evidence,
     _all_names,
     _aside,
@@ -194,7 +195,9 @@ class ListReader:
                 if after and len(after) == n:
                     out.append((after, 2.6))
                     break
-        if ORDER_RE.search(text) and not text.rstrip().endswith((":", "order")):
+        said = {m for t in tokens if t in self.labels for m in self.labels[t].mentions}
+        pointer = (mention or i - 1 in said) and TABLE_POINTER_RE.search(text)  # (its paragraph)
+        if (ORDER_RE.search(text) or pointer) and not text.rstrip().endswith((":", "order")):
             # "arranged round the knob in this order, clockwise." and the table a line or two on
             for k in range(i + 1, min(i + 7, len(units))):
                 if units[k].heading != unit.heading:

@@ -9,6 +9,8 @@ order and sorts the setting keys by what their sentences say.
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.labels import words
@@ -78,6 +80,13 @@ def assign(b: Builder) -> None:
             pad_group(b, group)
             keys = [k for k in keys if k not in group]
     evidence = {k.name: b.evidence(list(k.controls)) for k in keys}
+    for key in keys:  # "Cooking rice (WHITE RICE, BROWN RICE)" near COOK TIME: FUNCTION's values
+        ev = evidence[key.name]
+        mine = set(ev.values or [])
+        if len(mine) >= 2 and any(
+            mine < set(evidence[o.name].values or []) for o in keys if o.name != key.name
+        ):
+            evidence[key.name] = replace(ev, values=None, values_at=None)
     options = option_keys(b, keys)
     shared_pair = pairs.get("")
     generic_dials = [t for t in dials if t.split("_")[0] in GENERIC_DIALS and not dial_values(b, t)]

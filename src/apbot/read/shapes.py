@@ -42,10 +42,9 @@ RUNNING_RE = re.compile(
 )
 
 
-ORDER_RE = re.compile(
-    r"\bin (?:this|the following|that) order\b|\(see (?:the )?table\)|\bthe table below\b",
-    re.I,
-)
+ORDER_RE = re.compile(r"\bin (?:this|the following|that) order\b", re.I)
+# "Press AUTO COOK until the menu you want is displayed (see table)": only for the key it names
+TABLE_POINTER_RE = re.compile(r"\(see (?:the )?table\)|\bthe table below\b", re.I)
 # a table's first column counting the presses ("| Presses | Menu |", "| Times pressed | Level |")
 PRESSES_RE = re.compile(
     r"^\W*(?:no\.? of |number of )?(?:press(?:es)?|touch(?:es)?|taps?|times?)(?: pressed)?\b",
