@@ -142,3 +142,28 @@ def test_every_minute_in_the_first_few_minutes_has_its_own_setting() -> None:
     model = read_manual(TOASTER, TOASTER_ACTIONS).model
     time = next(v for v in model.variables.values() if v.label == "TIME")
     assert time.ranges[0] == ("00:00:00", "00:05:00", 60)
+
+
+def test_an_arrow_list_of_amounts_keeps_the_first_amount_and_ends_before_and_then_back() -> None:
+    found = find_list(
+        "Each touch goes on in the order 0.5 LB → 1 LB → 1.5 LB and then back to 0.5 LB."
+    )
+    assert found == (["0.5 LB", "1 LB", "1.5 LB"], "arrows")
+    found = find_list("Touch MODE to step through ECO → NORMAL → BOOST and back to ECO.")
+    assert found == (["ECO", "NORMAL", "BOOST"], "arrows")
+
+
+LEGEND = """
+## Panel legend
+
+ Symbol       Name            Function
+ ──────────────────────────────────────────────
+ BATCH        Batch size      0.5 LB, 1.0 LB, 1.5 LB
+ GO           Start           Starts the programme
+"""
+
+
+def test_a_legend_row_lends_its_key_the_list_in_any_later_cell() -> None:
+    model = read_manual(LEGEND, ["press_batch", "press_go"]).model
+    batch = next(v for v in model.variables.values() if v.label == "BATCH")
+    assert batch.unit == "lb" and batch.ranges == [(0.5, 1.5, 0.5)]

@@ -259,8 +259,11 @@ class ListReader:
         if len(unit.cells) >= 2:
             if not self._names_setting(words(unit.cells[0]), tokens):
                 return None
-            items = cell_list(unit.cells[1])
-            return items if items and len(items) >= 3 else None
+            for cell in unit.cells[1:]:  # "| SIZE | Loaf size | 1.0 LB, 1.5 LB, 2.0 LB |"
+                items = cell_list(cell)
+                if items and len(items) >= 3:
+                    return items
+            return None
         m = re.match(r"\s*([^:.;]{3,50}):\s*(.+)", unit.text)
         if not m or not self._names_setting(words(m.group(1)), tokens):
             return None

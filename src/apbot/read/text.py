@@ -65,6 +65,8 @@ def _clean_chars(text: str) -> str:
             return "\f" if ch == "\f" else ""  # a form feed marks a page: kept, on its own line
         if ch == "❄":
             return "COLD"  # the snowflake printed for a cold wash or a cold setting
+        if "\u2500" <= ch <= "\u257f":
+            return "-"  # box drawing: a rule across a table stays a rule
         if cat == "So" and ch not in _KEEP:
             return " "  # emoji and dingbats
         return ch
@@ -93,7 +95,12 @@ def _space_tables(lines: list[str]) -> dict[int, tuple[tuple[str, ...], bool]]:
     while i < len(lines):
         head = _cells(lines[i])
         before = lines[i - 1].strip() if i else ""
-        if before and not re.search(r"[.:!?]$", before) and not before.isupper():
+        if (
+            before
+            and not re.search(r"[.:!?]$", before)
+            and not before.isupper()
+            and not before.startswith("#")  # a Markdown heading ends what came before
+        ):
             i += 1  # the line goes on with a sentence from the line before: not a table header
             continue
         if len(head) < 3 or "|" in lines[i] or len(lines[i]) > 200:
@@ -104,6 +111,9 @@ def _space_tables(lines: list[str]) -> dict[int, tuple[tuple[str, ...], bool]]:
         indent = len(lines[i]) - len(lines[i].lstrip())
         j = i + 1
         while j < len(lines) and lines[j].strip():
+            if re.fullmatch(r"[-=_]{3,}", lines[j].strip()):
+                j += 1  # a rule under the header
+                continue
             cells = _cells(lines[j])
             inset = len(lines[j]) - len(lines[j].lstrip()) > indent + 2
             if rows and inset and "|" not in lines[j]:

@@ -19,7 +19,7 @@ NUM = (
 )
 UNIT = (
     r"(?:%|°\s?[CF]|°|degrees?|min(?:ute)?s?|h(?:ou)?rs?|hours?|h|sec(?:ond)?s?|s|rpm|W|watts?"
-    r"|kg|g|ml|L|litres?|cups?)"
+    r"|kg|lbs?|oz|g|ml|L|litres?|cups?)"
 )
 _TIME = r"\d{1,2}:\d{2}"
 _DASH = r"\s*(?:–|—|-|to|and|~|until)\s*"
@@ -70,7 +70,9 @@ def unit_name(text: str | None) -> str:
     info = unit_of(low)
     if info and info[0] == "time":
         return {1: "s", 60: "min", 3600: "h"}[int(info[1])]
-    return {"watt": "W", "watts": "W", "w": "W", "litre": "l", "litres": "l"}.get(low, low)
+    return {"watt": "W", "watts": "W", "w": "W", "litre": "l", "litres": "l", "lbs": "lb"}.get(
+        low, low
+    )
 
 
 def is_time_unit(unit: str) -> bool:
@@ -367,13 +369,24 @@ def find_list(text: str) -> tuple[list[str], str] | None:
             return [f"{i} {unit}" if known else i for i in items], "list"
     parts = [_clean_item(p) for p in _ARROW.split(text)]
     if len(parts) >= 3:  # "… → HIGH, and from HIGH the next press …": the list ends at the comma
-        parts[-1] = _clean_item(re.split(r"[,;]\s|\s[—–]\s", parts[-1])[0])
+        last = re.split(r"[,;]\s|\s[—–]\s|\s+(?:and\s+)?(?:then|back|again)\b", parts[-1])[0]
+        parts[-1] = _clean_item(last)
+    amount = re.search(rf"(?<![\w.])({NUM}\s*{UNIT})\s*$", parts[0], re.I)
     if len(parts) >= 3 or (len(parts) == 2 and all(_value_like(p, True) for p in parts)):
         head = parts[0].split(":")[-1].split()  # "in this order: AUTO → ...", "Clockwise: Cotton"
         capital = [w for w in head if w.upper() == w and any(c.isalpha() for c in w)]
+        trailing: list[str] = []  # "Tap FAN to step through AUTO →": the run before the arrow
+        for w in reversed(head):
+            if w.upper() != w or not any(c.isalpha() for c in w):
+                break
+            trailing.insert(0, w)
+        if trailing and len(trailing) < len(capital):
+            capital = trailing
         parts[0] = _clean_item(" ".join(capital) or " ".join(head[-2:]) or parts[0])
         if len(head) > 3 and not capital:
             parts[0] = _clean_item(head[-1])
+        if amount and len(parts) >= 3:  # "… in the order 1.0 LB → 1.5 LB": the amount first
+            parts[0] = amount.group(1)
         items = [p for p in parts if p and re.search(r"\w", p)]  # "… → OFF → …": no item
         if items and items[0] in items[1:]:
             items = items[: items.index(items[0], 1)]  # "OFF → 2H → 4H → OFF": the cycle, once
