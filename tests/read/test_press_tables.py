@@ -131,3 +131,42 @@ def test_a_guide_table_of_amounts_gives_the_range_in_the_step_that_meets_them() 
     assert not [p for p in check_model(model) if p.severity == "error"]
     output = next(v for v in model.variables.values() if v.label == "LEVEL")
     assert output.unit == "%" and output.ranges == [(20, 100, 20)]
+
+
+OVEN_PANEL = """
+## Using the oven
+The display shows the programme as PROG 1, PROG 2 … PROG 9. Touch PROG to go to the next
+one; after PROG 9 it returns to PROG 1.
+
+1. Type the time on the number pads. Longer dishes: cook in two stages.
+2. Touch **LEVEL** and type the power level with the number pads.
+
+Level guide
+
+ Level    Name        Use
+ 90 %     High        Drinks
+ 60 %     Medium      Stews
+ 30 %     Low         Thawing
+
+## Specifications
+
+                    OV-1             OV-2
+Level settings      230 V ~ 50 Hz    230 V ~ 50 Hz
+Input level         1100 W           1200 W
+Cavity              20 L             25 L
+"""
+
+
+def test_numbered_programmes_written_with_their_label_are_a_list_of_codes() -> None:
+    actions = ["press_prog", "press_level"] + [f"press_{d}" for d in range(10)]
+    model = read_manual(OVEN_PANEL, actions).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    assert model.variables["prog"].values == [str(n) for n in range(1, 10)]
+
+
+def test_a_captioned_guide_table_gives_the_range_and_a_data_row_is_no_header() -> None:
+    actions = ["press_prog", "press_level"] + [f"press_{d}" for d in range(10)]
+    model = read_manual(OVEN_PANEL, actions).model
+    level = next(v for v in model.variables.values() if v.label == "LEVEL")
+    assert level.type == "numeric" and level.unit == "%"
+    assert level.ranges == [(30, 90, 30)]  # not the specifications' row names, no "two" step

@@ -350,8 +350,10 @@ def _amount_column(units: list[Unit], i: int) -> Range | None:
     """A table a sentence ending in ":" introduces whose first column is amounts in one unit
     other than time ("| 100 % | Water |", "| 70 % | Reheating |"): settings given as examples,
     so the range runs from the least to the most, in the largest step that meets them all."""
-    if not units[i].text.rstrip().endswith(":"):
-        return None
+    text = units[i].text.rstrip()
+    caption = len(text.split()) <= 6 and not text.endswith((".", "!", "?"))  # "Power table"
+    if not text.endswith(":") and text != units[i].heading and not caption:
+        return None  # (a sentence ending in ":", a heading or a caption over the table)
     k = i + 1
     if k < len(units) and units[k].cells and not units[k].header:
         k += 1  # the header row

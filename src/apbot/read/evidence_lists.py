@@ -356,6 +356,8 @@ class ListReader:
         units = self.manual.units
         for i, unit in enumerate(units):
             if unit.cells and not unit.header:  # a header row
+                if any(re.search(r"\d", c) for c in unit.cells[1:]):
+                    continue  # "Power supply | 230 V": a row of data read as a header
                 hw = words(unit.cells[0])
                 if hw and any(h[:6] == w[:6] for h in hw for w in tw):
                     column = _next_table_column(units, i - 1)

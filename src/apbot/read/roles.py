@@ -30,7 +30,7 @@ from apbot.read.roles_hourmin import assign_hour_minute, hour_minute_keys
 from apbot.read.roles_keyed import assign_keyed_amounts
 from apbot.read.roles_lists import dial_values, list_evidence, numeric_list, pair_of_names
 from apbot.read.roles_pads import listed_groups, option_keys, pad_group, selecting_keys, shown_codes
-from apbot.read.shapes import GENERIC_DIALS, Evidence, adjuster_direction
+from apbot.read.shapes import CHOICE_WORDS, GENERIC_DIALS, Evidence, adjuster_direction
 
 
 def assign(b: Builder) -> None:
@@ -119,7 +119,8 @@ def assign(b: Builder) -> None:
             and set(ev.values) != {"on", "off"}
             and not _numbered(b, key, ev)
         ):
-            if numeric_list(ev.values):
+            numbered = set(words(name)) & CHOICE_WORDS and all(v.isdigit() for v in ev.values)
+            if numeric_list(ev.values) and not (numbered and len(ev.values) <= 40):
                 ev2 = list_evidence(ev)
                 var = b.add_number(name, lab, ev2, cyclic=True)
             else:

@@ -31,8 +31,8 @@ SETTING_NOUNS = (
     "temperature", "humidity", "timer", "time", "delay", "level", "power", "speed", "volume",
     "weight", "programme", "program", "mode", "setting", "heat", "strength", "size",
 )  # fmt: skip
-CHOICE_WORDS = {"programme", "program", "menu", "mode", "function", "cycle", "course", "dial",
-                "knob", "selector", "select"}  # fmt: skip
+CHOICE_WORDS = {"programme", "program", "prog", "menu", "mode", "function", "cycle", "course",
+                "dial", "knob", "selector", "select"}  # fmt: skip
 GROUP_NOUNS = ("programme", "program", "menu", "mode", "function", "cycle", "course", "preset")
 RUNNING_RE = re.compile(
     r"\b(?:while|during|when)\b[^.]*\b(?:running|cooking|operat\w*|works?|working|heating|"

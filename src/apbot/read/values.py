@@ -269,8 +269,8 @@ def find_step(text: str) -> tuple[float, str] | None:
             return number(bare.group(1)) or 1.0, unit_name(bare.group(2))
         return None
     groups = m.groups()
-    if m.group(0).lower().endswith("units") and not groups[1]:
-        return None  # "in half-hour units" is a step, "sold in 2 units" is not
+    if m.group(0).lower().endswith(("units", "stages")) and not groups[1]:
+        return None  # "in half-hour units" is a step, "sold in 2 units", "in two stages" not
     for i in (0, 2, 4):
         raw, unit = groups[i], groups[i + 1]
         if raw is None and i == 4 and unit:
@@ -335,9 +335,10 @@ def _nothing_as_zero(items: list[str]) -> list[str]:
     return [f"0 {unit}"] + [f"{m.group(1)} {m.group(2)}" for m in rest if m]
 
 
-_PROGRESSION_RE = re.compile(
-    r"(?<![\d.])(\d+(?:\.\d+)?),\s*(\d+(?:\.\d+)?)(?:,\s*\d+(?:\.\d+)?)*,?\s*(?:\.\.\.|…)\s*"
-    r"(?:\d+(?:\.\d+)?,\s*)*(\d+(?:\.\d+)?)(?![\d.])\s*([A-Za-z%°]{1,4})?"
+_PROGRESSION_RE = re.compile(  # "50, 55, 60 ... 95, 100", "MENU 1, MENU 2 … MENU 15"
+    r"(?<![\d.])(?:([A-Z]{2,12}) )?(\d+(?:\.\d+)?),\s*(?:\1 )?(\d+(?:\.\d+)?)"
+    r"(?:,\s*(?:\1 )?\d+(?:\.\d+)?)*,?\s*(?:\.\.\.|…)\s*"
+    r"(?:(?:\1 )?\d+(?:\.\d+)?,\s*)*(?:\1 )?(\d+(?:\.\d+)?)(?!\d|\.\d)\s*([A-Za-z%°]{1,4})?"
 )
 
 
@@ -347,14 +348,14 @@ def find_progression(text: str) -> list[str] | None:
     m = _PROGRESSION_RE.search(text)
     if not m:
         return None
-    first, second, last = float(m.group(1)), float(m.group(2)), float(m.group(3))
+    first, second, last = float(m.group(2)), float(m.group(3)), float(m.group(4))
     gap = second - first
     if gap <= 0 or last <= second or (last - first) / gap > 400:
         return None
     count = round((last - first) / gap)
     if abs(first + count * gap - last) > 1e-6:
         return None  # the last is off the step: no progression
-    unit = m.group(4) if m.group(4) and re.fullmatch(UNIT, m.group(4), re.I) else ""
+    unit = m.group(5) if m.group(5) and re.fullmatch(UNIT, m.group(5), re.I) else ""
     return [f"{first + k * gap:g}" + (f" {unit}" if unit else "") for k in range(count + 1)]
 
 
