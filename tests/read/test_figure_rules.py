@@ -167,3 +167,26 @@ def test_a_legend_row_lends_its_key_the_list_in_any_later_cell() -> None:
     model = read_manual(LEGEND, ["press_batch", "press_go"]).model
     batch = next(v for v in model.variables.values() if v.label == "BATCH")
     assert batch.unit == "lb" and batch.ranges == [(0.5, 1.5, 0.5)]
+
+
+MAKER = """
+## Display
+The display shows the programme as MENU 1, MENU 2 … MENU 9, with the hours when a DELAY is set.
+
+## Browning
+Touch SHADE to change the browning: 1 (light) → 2 (medium) → 3 (dark) → back to 1.
+
+## Delay
+Touch DELAY. Each further touch adds one hour:
+1, 2, 3 … up to 12 hours.
+"""
+
+
+def test_progressions_belong_to_the_key_they_name_and_arrow_cycles_end_at_back() -> None:
+    model = read_manual(MAKER, ["press_menu", "press_shade", "press_delay"]).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    assert model.variables["menu"].values == [str(n) for n in range(1, 10)]
+    shade = model.variables["shade"]  # 1–3 although MENU's codes hold 1, 2 and 3
+    assert shade.type == "numeric" and shade.ranges == [(1, 3, 1)]
+    delay = model.variables["delay"]
+    assert delay.unit == "h" and delay.ranges[-1][1] == 12

@@ -184,9 +184,15 @@ class ListReader:
             # a long line is a list only when it is all short names ("OFF · Cottons · Eco …")
             if after and (len(units[i + 1].text) <= 120 or _all_names(after, units[i + 1].text)):
                 out.append((after, 2.6))
+        said = {m for t in tokens if t in self.labels for m in self.labels[t].mentions}
         progression = find_progression(text)
+        named = re.search(r"\b([A-Z]{2,12}) \d+(?:\.\d+)?,\s*\1 \d", text)
+        own_labels = {self.labels[t].text.upper() for t in tokens if t in self.labels}
+        if named and not any(lab.split()[:1] == [named.group(1)] for lab in own_labels):
+            progression = None  # "MENU 1, MENU 2 … MENU 15" lists MENU's codes, not this key's
         if progression and len(progression) >= 3:  # "one click each, 50, 55, 60 ... 95, 100"
-            out.append((progression, 2.7 if mention else 2.3))  # (beats the printed marks)
+            near = mention or i - 1 in said  # (in the key's sentence or the one after it)
+            out.append((progression, 2.7 if near else 2.3))  # (beats the printed marks)
         counted = _COUNTED_RE.search(text)
         if counted and mention:  # "The knob has seven positions." and the row of them drawn
             n = _COUNT_WORDS.get(counted.group(1).lower()) or int(counted.group(1) or 0)
@@ -195,7 +201,6 @@ class ListReader:
                 if after and len(after) == n:
                     out.append((after, 2.6))
                     break
-        said = {m for t in tokens if t in self.labels for m in self.labels[t].mentions}
         pointer = (mention or i - 1 in said) and TABLE_POINTER_RE.search(text)  # (its paragraph)
         if (ORDER_RE.search(text) or pointer) and not text.rstrip().endswith((":", "order")):
             # "arranged round the knob in this order, clockwise." and the table a line or two on

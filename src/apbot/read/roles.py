@@ -83,8 +83,10 @@ def assign(b: Builder) -> None:
     for key in keys:  # "Cooking rice (WHITE RICE, BROWN RICE)" near COOK TIME: FUNCTION's values
         ev = evidence[key.name]
         mine = set(ev.values or [])
-        if len(mine) >= 2 and any(
-            mine < set(evidence[o.name].values or []) for o in keys if o.name != key.name
+        if (
+            len(mine) >= 2
+            and not numeric_list(list(mine))
+            and any(mine < set(evidence[o.name].values or []) for o in keys if o.name != key.name)
         ):
             evidence[key.name] = replace(ev, values=None, values_at=None)
     options = option_keys(b, keys)
