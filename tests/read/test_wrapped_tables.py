@@ -68,3 +68,29 @@ def test_on_off_wording_under_troubleshooting_makes_no_toggle() -> None:
     model = read_manual(GRIDDLE, ACTIONS).model
     touched = next(f for f in model.features.values() if f[0].actions == ["press_main"])
     assert touched[0].effect != "toggle"
+
+
+CHART = """
+4 PROGRAMME CHART
+
+Programme    Max. load   Temperature     Description
+             (kg)        advised
+-----------  ----------  --------------  ---------------------------
+Daily        5           30 – 60 °C      Everyday laundry.
+Express 20'  2           20 – 40 °C      Lightly soiled, 20 minutes.
+Duvet        2           40 °C           One duvet.
+"""
+
+
+def test_a_wrapped_header_line_and_a_dashed_rule_are_no_rows() -> None:
+    units = parse_manual(CHART).units
+    rows = [u.cells[0] for u in units if u.cells and u.header]
+    assert rows == ["Daily", "Express 20'", "Duvet"]
+    header = next(u for u in units if u.cells and not u.header)
+    assert header.cells[1] == "Max. load (kg)"
+
+
+def test_a_minute_mark_after_a_programme_number_is_not_part_of_its_name() -> None:
+    actions = ["turn_programme_cw", "turn_programme_ccw"]
+    model = read_manual(CHART, actions).model
+    assert model.variables["programme"].values == ["daily", "express 20", "duvet"]

@@ -328,6 +328,7 @@ def _dedupe(items: list[str]) -> list[str]:
 
 def _value_text(value: str) -> str:
     text = re.sub(r"\s+", " ", value.strip().lower())
+    text = re.sub(r"(?<=\d)['’′]$", "", text)  # "Quick 15'": a minute mark, not part of the name
     return text.strip(" .,;:")
 
 

@@ -111,20 +111,20 @@ def _space_tables(lines: list[str]) -> dict[int, tuple[tuple[str, ...], bool]]:
         indent = len(lines[i]) - len(lines[i].lstrip())
         j = i + 1
         while j < len(lines) and lines[j].strip():
-            if re.fullmatch(r"[-=_]{3,}", lines[j].strip()):
-                j += 1  # a rule under the header
+            if re.fullmatch(r"[-=_][-=_\s]{2,}", lines[j].strip()):
+                j += 1  # a rule under the header ("-------  ------  -----")
                 continue
             cells = _cells(lines[j])
             inset = len(lines[j]) - len(lines[j].lstrip()) > indent + 2
-            if rows and inset and "|" not in lines[j]:
-                more.setdefault(rows[-1], []).extend(_placed_cells(lines[j]))
+            if inset and "|" not in lines[j]:  # a wrapped line: of the header, or of a row
+                more.setdefault(rows[-1] if rows else i, []).extend(_placed_cells(lines[j]))
             elif len(cells) >= 2 and "|" not in lines[j]:
                 rows.append(j)
             elif len(cells) != 1 or len(cells[0]) > 40:
                 break
             j += 1
         if len(rows) >= 2:
-            out[i + 1] = (head, True)
+            out[i + 1] = (_joined_cells(lines[i], more.get(i, [])), True)
             for r in rows:
                 out[r + 1] = (_joined_cells(lines[r], more.get(r, [])), False)
             for k in range(i + 1, j):
