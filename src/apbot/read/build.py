@@ -37,6 +37,22 @@ from apbot.read.values import (
 _PRINTED_UNITS = r"kg|g|lbs?|ml|l|litres?|W|watts?|rpm|%"  # quantities, not times or degrees
 
 
+_TWELVE_RE = re.compile(r"\b12[- ]h(?:ou)?r\b|\b12 hours? (?:clock|system|format)|\bAM\b|\bPM\b")
+_TWENTY_FOUR_RE = re.compile(r"\b24[- ]h(?:ou)?r\b|\b24 hours? (?:clock|system|format)", re.I)
+
+
+def twelve_hour_clock(units: list[Any]) -> bool:
+    """Whether the clock counts 1–12 (AM/PM, "12-hour clock"): "keeps warm for 12 hours" is no
+    such clock, and a manual that speaks of a 24-hour clock has none."""
+    texts = [u.text for u in units]
+    if any(_TWENTY_FOUR_RE.search(t) for t in texts):
+        return False
+    return any(_TWELVE_RE.search(t) for t in texts)
+
+
+_QUANTITY_WORDS = {"temp", "temperature", "humidity", "weight", "volume", "speed", "watt"}
+
+
 class Builder(EvidenceReader):
     """Collects variables, features, guards and notes; ``data()`` gives the model as plain data."""
 
@@ -64,6 +80,17 @@ class Builder(EvidenceReader):
     # --- evidence ---------------------------------------------------------------------------
     # --- variables --------------------------------------------------------------------------
 
+    _fahrenheit: bool | None = None
+
+    def fahrenheit(self) -> bool:
+        """Whether the manual gives temperatures in °F more often than in °C."""
+        if self._fahrenheit is None:
+            text = "\n".join(u.text for u in self.manual.units)
+            f = len(re.findall(r"°\s?F\b|\bdegrees F(?:ahrenheit)?\b", text))
+            c = len(re.findall(r"°\s?C\b|\bdegrees C(?:elsius)?\b", text))
+            self._fahrenheit = f > c
+        return self._fahrenheit
+
     def unique(self, name: str, taken: dict[str, Any]) -> str:
         base = re.sub(r"[^a-z0-9_]+", "_", name.lower()).strip("_") or "setting"
         if not base[0].isalpha():
@@ -76,13 +103,17 @@ class Builder(EvidenceReader):
     def add_discrete(self, name: str, values: list[str], label: str, ev: Evidence | None) -> str:
         name = self.unique(name, self.variables)
         values = _dedupe([_value_text(v) for v in values if _value_text(v)])
+        initial = ev.initial if ev is not None else None
+        if values in (["0", "i"], ["o", "i"]):  # a switch printed 0 / I: off and on
+            values = ["off", "on"]
+            initial = None  # ("position I" is as often the drawing's callout I)
         own = re.fullmatch(r"(.*?)\s+([A-Z0-9]{1,6}(?:/[A-Z0-9]{1,6})+)", label)
         if own and [p.lower() for p in own.group(2).split("/")] == values:
             label = own.group(1)  # the display names the setting, not the printed choices
         spec: dict[str, Any] = {"type": "discrete", "values": values, "label": label}
-        if ev is not None and ev.initial in values:
-            spec["initial"] = ev.initial
-            self.note(f"variables.{name}.initial", f"starts at {ev.initial}", ev.initial_at)
+        if ev is not None and initial in values:
+            spec["initial"] = initial
+            self.note(f"variables.{name}.initial", f"starts at {initial}", ev.initial_at)
         self.variables[name] = spec
         return name
 
@@ -116,9 +147,11 @@ class Builder(EvidenceReader):
 
     def add_number(self, name: str, label: str, ev: Evidence, cyclic: bool) -> str:
         """A numeric or time variable from the ranges and steps read (guessed where absent)."""
-        if set(words(name.replace("_", " "))) & CHOICE_WORDS:  # a programme is not an amount
+        named = set(words(name.replace("_", " ")))
+        choice = bool(named & CHOICE_WORDS) and not named & _QUANTITY_WORDS  # (TEMP SELECT)
+        if choice:  # a programme is not an amount
             ev = Evidence(**{**ev.__dict__, "ranges": [r for r in ev.ranges if not r.unit]})
-        if not ev.ranges and set(words(name.replace("_", " "))) & CHOICE_WORDS:
+        if not ev.ranges and choice:
             # a programme/mode selector the manual lists no values for: a few placeholder
             # choices the loop replaces with what the display shows (a number would stop it)
             var = self.add_discrete(name, ["1", "2", "3", "4", "5"], label, None)
@@ -134,9 +167,7 @@ class Builder(EvidenceReader):
             shown = ", ".join(f"{r.low:g}–{r.high:g}" for r in ranges)
             self.note(subject, f"range {shown} {ranges[0].unit}", ev.range_at)
         elif clock:
-            twelve = any(
-                re.search(r"\b12[- ]?h(?:ou)?r|\bAM\b|\bPM\b", u.text) for u in self.manual.units
-            )
+            twelve = twelve_hour_clock(self.manual.units)
             low, high = (3600, 12 * 3600 + 59 * 60) if twelve else (0, 23 * 3600 + 59 * 60)
             self.note(subject, "a clock: the time of day (its range is the clock's, not read)")
             ranges = [Range(low, high, "s", 60)]
@@ -161,6 +192,8 @@ class Builder(EvidenceReader):
             ranges = [Range(low, high, unit)]
             self.unread.add(name)
         unit = ranges[0].unit or (ev.step[1] if ev.step else "") or _unit_from_words(name)
+        if unit == "°C" and not ranges[0].unit and self.fahrenheit():
+            unit = "°F"  # a temperature read without its unit, in a manual that speaks °F
         finer = bool(ev.step and ev.step[1] in ("s", "min") and unit == "h")  # 0–3 h by 1 min
         as_time = ranges[0].unit == "s" or unit in ("s", "min") or finer
         factor = 1 if ranges[0].unit == "s" else seconds(1, unit) if as_time else 1

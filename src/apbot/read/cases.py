@@ -96,6 +96,7 @@ def apply_cases(b: Builder) -> None:
         if parent is None:
             continue
         pvalues = b.variables[parent]["values"]
+        header = _named_ranges(header, rows)
         for column in range(1, len(header)):
             if set(words(header[column])) & (DEFAULT_WORDS | ADVICE_WORDS):
                 continue
@@ -117,6 +118,7 @@ def apply_cases(b: Builder) -> None:
                     if all("initial" in c for c in cases.values()) and spec.get("values"):
                         for value in pvalues:  # defaults per programme: the others keep all
                             cases.setdefault(value, {"values": list(spec["values"])})
+                    _row_steps(spec, cases, header, rows, column, pvalues)
                     _defaults(spec, cases, header, rows, column, pvalues)
                     for key in ("values", "ranges", "initial"):
                         spec.pop(key, None)
@@ -132,6 +134,25 @@ def apply_cases(b: Builder) -> None:
                         b.manual.units.index(rows[0]),
                     )
                 break
+
+
+_YES_NO = {"yes", "no", "y", "n", "—", "-", "–", ""}
+
+
+def _named_ranges(header: tuple[str, ...], rows: list[Unit]) -> tuple[str, ...]:
+    """ "| Cook time adjustable? | Range |": the column that only says yes or no names the
+    setting, the bare "Range" column next to it holds its values (a "no" row's range is "—")."""
+    out = list(header)
+    for c in range(1, len(header)):
+        cells = [r.cells[c].strip(" *").lower() if c < len(r.cells) else "" for r in rows]
+        if not all(cell in _YES_NO for cell in cells) or "yes" not in cells:
+            continue
+        for r in range(c + 1, min(c + 3, len(header))):
+            if re.fullmatch(r"\W*(?:setting |adjustment |time )?range\W*", header[r], re.I):
+                name = re.sub(r"\b(?:adjustable|settable|available|can be set)\b|\?", "", header[c])
+                out[r], out[c] = name.strip(), "adjustable"
+                break
+    return tuple(out)
 
 
 def _presets(b: Builder, parent: str, name: str, cases: dict[str, Any], row: Unit) -> bool:
@@ -357,7 +378,69 @@ def _defaults(
                 cell = _norm(row.cells[c])
                 if spec.get("type") == "discrete" and cell in case.get("values", []):
                     case["initial"] = cell
+                elif spec.get("type") == "time" and case.get("ranges"):
+                    start = _duration(cell)  # "| Preset time | 1:30 |"
+                    if start is not None and _within(case["ranges"], start):
+                        case["initial"] = _hms(start)
         break
+
+
+_STEP_HEAD_RE = re.compile(
+    r"\b(?:each|every|per)\b.*\b(?:press|touch|tap|click|step)\b|\bsteps?\b", re.I
+)
+
+
+def _row_steps(
+    spec: dict[str, Any],
+    cases: dict[str, Any],
+    header: tuple[str, ...],
+    rows: list[Unit],
+    column: int,
+    pvalues: list[str],
+) -> None:
+    """A column headed "Each + / – press" (or "Step") next to a time's ranges gives each row's
+    step ("| 0:45 – 2:00 | 15 min |")."""
+    if spec.get("type") != "time":
+        return
+    for c in range(1, len(header)):
+        if c == column or not _STEP_HEAD_RE.search(header[c]):
+            continue
+        for row in rows:
+            step = _duration(_norm(row.cells[c])) if c < len(row.cells) else None
+            if not step:
+                continue
+            for target in _parent_values(row.cells[0], pvalues):
+                case = cases.get(target)
+                if not case or not case.get("ranges") or len(case["ranges"]) != 1:
+                    continue
+                lo, hi, _ = case["ranges"][0]
+                a, b = _seconds(lo), _seconds(hi)
+                if b > a and (b - a) % step == 0:
+                    case["ranges"] = [[lo, hi, step]]
+        break
+
+
+def _duration(cell: str) -> int | None:
+    """Seconds in "15 min", "1:30" (h:mm), "20 s"; None for anything else."""
+    from apbot.model.values import parse_quantity
+
+    m = re.fullmatch(r"\s*(\d{1,2}):([0-5]\d)\s*", cell)
+    if m:
+        return int(m.group(1)) * 3600 + int(m.group(2)) * 60
+    q = parse_quantity(cell.strip().lower())
+    return int(q[0]) if q and q[1] == "time" and q[0] > 0 else None
+
+
+def _seconds(hms: str) -> int:
+    h, m, sec = (int(x) for x in str(hms).split(":"))
+    return h * 3600 + m * 60 + sec
+
+
+def _within(ranges: list[list[Any]], value: int) -> bool:
+    return any(
+        _seconds(lo) <= value <= _seconds(hi) and (value - _seconds(lo)) % int(st) == 0
+        for lo, hi, st in ranges
+    )
 
 
 STAY_RE = re.compile(

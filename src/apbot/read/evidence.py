@@ -4,6 +4,7 @@ it came from (the builder asks once per control and keeps the answer)."""
 from __future__ import annotations
 
 import itertools
+import math
 import re
 
 from apbot.read.evidence_lists import ListReader
@@ -27,9 +28,11 @@ from apbot.read.shapes import (
     _without,
     _without_advice,
 )
+from apbot.read.text import Unit
 from apbot.read.values import (
     EACH_PRESS_RE,
     ON_OFF_RE,
+    UNIT,
     Range,
     anchored_lists,
     bare_list,
@@ -38,6 +41,8 @@ from apbot.read.values import (
     find_ranges,
     find_step,
     find_two_steps,
+    number,
+    unit_name,
 )
 
 
@@ -94,6 +99,11 @@ class EvidenceReader(ListReader):
                     # ("Mode lamps: NORMAL CONT. …" are the mode key's values)
                 if _numeric_items(items) and len(items) < 3:
                     continue
+                tail = items[-1]
+                if re.search(r"\bonly$", tail, re.I) or re.search(
+                    rf"{re.escape(tail)}\W{{0,3}}only\b", text, re.I
+                ):
+                    continue  # "(PORRIDGE, STEAM, SOUP only)": where it applies, not its values
                 if prio > best_prio:
                     best, best_prio, ev.values_at = items, prio, i
             ranges = [
@@ -122,11 +132,12 @@ class EvidenceReader(ListReader):
                     ev.step, ev.step_at = step, i
             if (
                 ev.toggle_at is None
+                and not quiet  # ("The hob deactivates." under Troubleshooting)
                 and ON_OFF_RE.search(_without(text, other_labels))
                 and not self._two_key_hold(text, tokens)
             ):
                 ev.toggle_at = i  # (another key's name, ON/OFF in a panel drawing, is no toggle)
-            if ev.each_press_at is None and EACH_PRESS_RE.search(text):
+            if ev.each_press_at is None and not quiet and EACH_PRESS_RE.search(text):
                 ev.each_press_at = i
             if ev.initial is None:
                 init = find_initial(text)
@@ -139,6 +150,12 @@ class EvidenceReader(ListReader):
             if two and _fits(two[0][0].unit, tokens):
                 ev.ranges, ev.range_at = two[0], window[two[1]]
                 break
+        if not ev.ranges:  # "Rough guide to power:" and a column of 100 % … 10 %
+            for i in sorted(self.context(tokens)):
+                guide = None if _aside(units, i) else _amount_column(units, i)
+                if guide is not None and _fits(guide.unit, tokens):
+                    ev.ranges, ev.range_at = [guide], i
+                    break
         if not ev.ranges:
             for i in sorted(self.context(tokens)):  # the sentences that follow say the rest
                 bounds = find_bounds([u.text for u in units[i : i + 4]])
@@ -160,7 +177,11 @@ class EvidenceReader(ListReader):
         if best_prio < 2.0 and own_words:  # "Mode lamps (left to right): NORMAL CONT. FAN"
             for i, unit in enumerate(units):
                 lamps = LAMP_LIST_RE.match(unit.text)
-                if lamps and set(words(lamps.group(0))) & own_words:
+                lamp_words = (
+                    {w[:4] for w in words(lamps.group(0)) if len(w) >= 4} if lamps else set()
+                )
+                if lamps and lamp_words & {w[:4] for w in own_words if len(w) >= 4}:
+                    # ("Keep-warm temperature lamps:" for TEMP SELECT: temp ~ temperature)
                     rest = unit.text[lamps.end() :]
                     for after in units[i + 1 : i + 8]:  # "CONT." ended a "sentence" mid-line
                         if after.line != unit.line:
@@ -169,6 +190,16 @@ class EvidenceReader(ListReader):
                     found = bare_list(rest)
                     if found:
                         best, best_prio, ev.values_at = found, 2.0, i
+                        break
+        alone = [t for t in tokens if t in ("knob", "dial")]
+        if best_prio < 2.6 and alone and sum(t.endswith(alone[0]) for t in self.labels) == 1:
+            # the panel's one knob: "The knob has seven positions." and the row drawn after it
+            the = re.compile(rf"\bthe {alone[0]}\b", re.I)
+            for i, unit in enumerate(units):
+                if the.search(unit.text) and not _aside(units, i):
+                    counted = [c for c in self._lists(i, True, tokens) if c[1] == 2.6]
+                    if counted and self.labels[alone[0]].line is not None:
+                        best, best_prio, ev.values_at = counted[0][0], 2.6, i
                         break
         if best_prio < 1.85:  # "Drying-time settings available: 10 · 20 · 30 · 60 min."
             for i, unit in enumerate(units):
@@ -203,6 +234,8 @@ class EvidenceReader(ListReader):
                 if m:  # "FAN HI/LO": the panel prints the values next to the name
                     best, best_prio, ev.values_at = m.group(1).split("/"), 2.5, i
                     break
+        if best and re.search(r"\bonly\W*$", best[-1], re.I):
+            best = None  # "(STEW, JAM, BROTH only)": where the setting applies, not its values
         choice = bool({w for t in tokens for w in words(t.replace("_", " "))} & CHOICE_WORDS)
         if best is None or (_numeric_items(best) and (len(best) < 3 or choice)):
             # two numbers are a range, not a list; a programme key's list is of names
@@ -223,6 +256,22 @@ class EvidenceReader(ListReader):
                     else:
                         ev.ranges.append(Range(lo, hi, symbol, gap))
                 ev.range_at = at
+        if best is not None and _numeric_items(best) and len(best) >= 3:
+            near = {
+                j
+                for i in mentions
+                for j in range(i, min(i + 5, len(units)))
+                if units[j].heading == units[i].heading
+            }  # the paragraph about the knob: its marks, then how it clicks between them
+            said = [units[i].text for i in sorted(near | set(self.context(tokens)))]
+            if any(_BETWEEN_RE.search(t) for t in said):
+                best = _with_midpoints(best)
+            for t in said:  # "in the first ten minutes every minute has its own tick"
+                each = _EVERY_MINUTE_RE.search(t)
+                top = number(each.group(1) or each.group(2)) if each else None
+                if top and 2 <= top <= 30:
+                    best = _with_every(best, int(top))
+                    break
         if best is not None:
             ev.values = best if _numeric_items(best) else [v.lower() for v in best]
             self._initial_from_values(ev, tokens)
@@ -292,3 +341,80 @@ class EvidenceReader(ListReader):
                 continue  # "any time from 1:00 to 12:59": the clock's day, not a duration
             consider(2 * bool(limits.search(unit.text)), unit.text, i)
         return (best[1], best[2]) if best else None
+
+
+_AMOUNT_CELL_RE = re.compile(rf"\s*\**\s*(\d+(?:[.,]\d+)?)\s*({UNIT})\s*\**\s*$", re.I)
+
+
+def _amount_column(units: list[Unit], i: int) -> Range | None:
+    """A table a sentence ending in ":" introduces whose first column is amounts in one unit
+    other than time ("| 100 % | Water |", "| 70 % | Reheating |"): settings given as examples,
+    so the range runs from the least to the most, in the largest step that meets them all."""
+    text = units[i].text.rstrip()
+    caption = len(text.split()) <= 6 and not text.endswith((".", "!", "?"))  # "Power table"
+    if not text.endswith(":") and text != units[i].heading and not caption:
+        return None  # (a sentence ending in ":", a heading or a caption over the table)
+    k = i + 1
+    if k < len(units) and units[k].cells and not units[k].header:
+        k += 1  # the header row
+    amounts: list[float] = []
+    unit = None
+    while k < len(units) and units[k].cells and units[k].header:
+        m = _AMOUNT_CELL_RE.fullmatch(units[k].cells[0])
+        if not m:
+            return None
+        this = unit_name(m.group(2))
+        if unit not in (None, this) or this in ("", "s", "min", "h"):
+            return None
+        unit = this
+        amounts.append(float(m.group(1).replace(",", ".")))
+        k += 1
+    if len(amounts) < 3 or unit is None:
+        return None
+    step = 0.0
+    for a in amounts:
+        step = math.gcd(round(step * 10), round(a * 10)) / 10
+    if step <= 0:
+        return None
+    return Range(min(amounts), max(amounts), unit, step)
+
+
+# "the knob clicks between the markings", "a detent halfway between two printed numbers"
+_BETWEEN_RE = re.compile(
+    r"\b(?:clicks?|detents?|stops?|notch(?:es)?|settings?|set)\b[^.;]{0,40}\b(?:between|halfway)\b"
+    r"[^.;]{0,30}\b(?:markings?|marks|numbers|figures)\b",
+    re.I,
+)
+
+
+def _with_midpoints(items: list[str]) -> list[str]:
+    """Printed marks with a setting halfway between each two (200 250 … → 200 225 250 …)."""
+    parsed = [re.match(r"\s*(\d+(?:[.,]\d+)?)\s*(.*)", v) for v in items]
+    if not all(parsed):
+        return items
+    nums = [float(m.group(1).replace(",", ".")) for m in parsed if m]
+    if any(b <= a for a, b in itertools.pairwise(nums)):
+        return items
+    unit = next((m.group(2) for m in parsed if m and m.group(2)), "")
+    out: list[float] = []
+    for a, b in itertools.pairwise(nums):
+        out += [a, (a + b) / 2]
+    out.append(nums[-1])
+    return [f"{v:g}" + (f" {unit}" if unit else "") for v in out]
+
+
+_EVERY_MINUTE_RE = re.compile(
+    r"\bfirst\s+(\w+)\s+minutes\b[^.;]{0,30}\bevery minute\b"
+    r"|\bevery minute\b[^.;]{0,40}\b(?:first|up to)\s+(\w+)\s+minutes\b",
+    re.I,
+)
+
+
+def _with_every(items: list[str], top: int) -> list[str]:
+    """Marks in minutes with every whole minute up to ``top`` added."""
+    parsed = [re.match(r"\s*(\d+)\s*(.*)", v) for v in items]
+    if not all(parsed):
+        return items
+    nums = sorted({int(m.group(1)) for m in parsed if m} | set(range(top + 1)))
+    unit = next((m.group(2) for m in parsed if m and m.group(2)), "")
+    return [f"{v}" + (f" {unit}" if unit else "") for v in nums]

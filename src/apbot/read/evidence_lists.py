@@ -11,6 +11,7 @@ from apbot.read.shapes import (
     ORDER_RE,
     QUANTITY_FAMILIES,
     RUN_RE,
+    TABLE_POINTER_RE,
     Evidence,
     _all_names,
     _aside,
@@ -27,10 +28,23 @@ from apbot.read.values import (
     cell_list,
     find_list,
     find_number_run,
+    find_progression,
     quantity_run,
 )
 
 _TYPING_WORDS = frozenset({"type", "typed", "typing", "digits", "keystrokes", "keyed"})
+_KEY_WORDS = frozenset({"key", "keys", "button", "buttons", "number", "numbers"})
+_PRESS_WORDS = frozenset({"press", "pressed", "touch", "touched", "enter", "entered", "input"})
+
+
+_NUMBER_WORDS = "zero one two three four five six seven eight nine ten eleven twelve"
+_COUNT_WORDS = {w: n for n, w in enumerate(_NUMBER_WORDS.split(" "))}
+_COUNTED_RE = re.compile(
+    r"\b(?:has|have|with)\s+(\d{1,2}|"
+    + "|".join(_COUNT_WORDS)
+    + r")\s+(?:positions|settings|marks|stops|detents|steps)\b",
+    re.I,
+)
 
 
 def _keyed_examples(units: list[Unit], i: int) -> bool:
@@ -40,7 +54,11 @@ def _keyed_examples(units: list[Unit], i: int) -> bool:
     if k >= len(units) or not units[k].cells:
         return False
     header = units[k].header or units[k].cells
-    return any(set(words(cell)) & _TYPING_WORDS for cell in header)
+    return any(
+        set(words(cell)) & _TYPING_WORDS
+        or (set(words(cell)) & _KEY_WORDS and set(words(cell)) & _PRESS_WORDS)  # "Keys pressed"
+        for cell in header
+    )
 
 
 class ListReader:
@@ -166,9 +184,29 @@ class ListReader:
             # a long line is a list only when it is all short names ("OFF · Cottons · Eco …")
             if after and (len(units[i + 1].text) <= 120 or _all_names(after, units[i + 1].text)):
                 out.append((after, 2.6))
-        if ORDER_RE.search(text) and not text.rstrip().endswith((":", "order")):
+        said = {m for t in tokens if t in self.labels for m in self.labels[t].mentions}
+        progression = find_progression(text)
+        named = re.search(r"\b([A-Z]{2,12}) \d+(?:\.\d+)?,\s*\1 \d", text)
+        own_labels = {self.labels[t].text.upper() for t in tokens if t in self.labels}
+        if named and not any(lab.split()[:1] == [named.group(1)] for lab in own_labels):
+            progression = None  # "MENU 1, MENU 2 … MENU 15" lists MENU's codes, not this key's
+        if progression and len(progression) >= 3:  # "one click each, 50, 55, 60 ... 95, 100"
+            near = mention or i - 1 in said  # (in the key's sentence or the one after it)
+            out.append((progression, 2.7 if near else 2.3))  # (beats the printed marks)
+        counted = _COUNTED_RE.search(text)
+        if counted and mention:  # "The knob has seven positions." and the row of them drawn
+            n = _COUNT_WORDS.get(counted.group(1).lower()) or int(counted.group(1) or 0)
+            for k in range(i + 1, min(i + 3, len(units))):
+                after = None if units[k].cells else bare_list(units[k].text)
+                if after and len(after) == n:
+                    out.append((after, 2.6))
+                    break
+        pointer = (mention or i - 1 in said) and TABLE_POINTER_RE.search(text)  # (its paragraph)
+        if (ORDER_RE.search(text) or pointer) and not text.rstrip().endswith((":", "order")):
             # "arranged round the knob in this order, clockwise." and the table a line or two on
-            for k in range(i + 1, min(i + 4, len(units))):
+            for k in range(i + 1, min(i + 7, len(units))):
+                if units[k].heading != unit.heading:
+                    break
                 if units[k].cells:
                     column = _next_table_column(units, k - 1, self._own_column(k - 1, tokens))
                     if column and (mention or self._header_names(k - 1, tokens)):
@@ -226,8 +264,11 @@ class ListReader:
         if len(unit.cells) >= 2:
             if not self._names_setting(words(unit.cells[0]), tokens):
                 return None
-            items = cell_list(unit.cells[1])
-            return items if items and len(items) >= 3 else None
+            for cell in unit.cells[1:]:  # "| SIZE | Loaf size | 1.0 LB, 1.5 LB, 2.0 LB |"
+                items = cell_list(cell)
+                if items and len(items) >= 3:
+                    return items
+            return None
         m = re.match(r"\s*([^:.;]{3,50}):\s*(.+)", unit.text)
         if not m or not self._names_setting(words(m.group(1)), tokens):
             return None
@@ -320,6 +361,8 @@ class ListReader:
         units = self.manual.units
         for i, unit in enumerate(units):
             if unit.cells and not unit.header:  # a header row
+                if any(re.search(r"\d", c) for c in unit.cells[1:]):
+                    continue  # "Power supply | 230 V": a row of data read as a header
                 hw = words(unit.cells[0])
                 if hw and any(h[:6] == w[:6] for h in hw for w in tw):
                     column = _next_table_column(units, i - 1)

@@ -9,6 +9,8 @@ order and sorts the setting keys by what their sentences say.
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.labels import words
@@ -24,9 +26,11 @@ from apbot.read.roles_common import (
     var_name,
 )
 from apbot.read.roles_fixed import assign_locks, assign_power, assign_running
+from apbot.read.roles_hourmin import assign_hour_minute, hour_minute_keys
+from apbot.read.roles_keyed import assign_keyed_amounts
 from apbot.read.roles_lists import dial_values, list_evidence, numeric_list, pair_of_names
 from apbot.read.roles_pads import listed_groups, option_keys, pad_group, selecting_keys, shown_codes
-from apbot.read.shapes import GENERIC_DIALS, Evidence, adjuster_direction
+from apbot.read.shapes import CHOICE_WORDS, GENERIC_DIALS, Evidence, adjuster_direction
 
 
 def assign(b: Builder) -> None:
@@ -56,6 +60,10 @@ def assign(b: Builder) -> None:
             del pairs[base]  # it moves through a list of names: no amount for other keys
     paired = {n for p in pairs.values() for ns in p.values() for n in ns}
     done |= paired | set(digits) | used_actions(b)
+    hour_minute = hour_minute_keys(infos, done)
+    if hour_minute:  # HOUR / MIN move whichever time CLOCK, TIMER, READY AT… opened
+        others = [i for i in infos if i.name not in done and not i.skill.startswith("turn")]
+        done |= set(assign_hour_minute(b, others, hour_minute))
 
     # setting keys -------------------------------------------------------------------------
     keys = [i for i in infos if i.name not in done and not i.skill.startswith("turn")]
@@ -72,6 +80,15 @@ def assign(b: Builder) -> None:
             pad_group(b, group)
             keys = [k for k in keys if k not in group]
     evidence = {k.name: b.evidence(list(k.controls)) for k in keys}
+    for key in keys:  # "Cooking rice (WHITE RICE, BROWN RICE)" near COOK TIME: FUNCTION's values
+        ev = evidence[key.name]
+        mine = set(ev.values or [])
+        if (
+            len(mine) >= 2
+            and not numeric_list(list(mine))
+            and any(mine < set(evidence[o.name].values or []) for o in keys if o.name != key.name)
+        ):
+            evidence[key.name] = replace(ev, values=None, values_at=None)
     options = option_keys(b, keys)
     shared_pair = pairs.get("")
     generic_dials = [t for t in dials if t.split("_")[0] in GENERIC_DIALS and not dial_values(b, t)]
@@ -104,7 +121,8 @@ def assign(b: Builder) -> None:
             and set(ev.values) != {"on", "off"}
             and not _numbered(b, key, ev)
         ):
-            if numeric_list(ev.values):
+            numbered = set(words(name)) & CHOICE_WORDS and all(v.isdigit() for v in ev.values)
+            if numeric_list(ev.values) and not (numbered and len(ev.values) <= 40):
                 ev2 = list_evidence(ev)
                 var = b.add_number(name, lab, ev2, cyclic=True)
             else:
@@ -149,6 +167,7 @@ def assign(b: Builder) -> None:
     )
     silent = assign_dials(b, dials, silent)
     assign_leftovers(b, silent, evidence)
+    assign_keyed_amounts(b, digits)
 
 
 def _numbered(b: Builder, key: ActionInfo, ev: Evidence) -> bool:

@@ -13,6 +13,7 @@ from apbot.read.roles_common import (
     NUMERIC_WORDS,
     TIME_WORDS,
     label_of,
+    mentions_of,
     numeric_list,
     stepped_noun,
     token_of,
@@ -22,6 +23,9 @@ from apbot.read.roles_lists import dial_amount, dial_ends, dial_list, list_evide
 from apbot.read.shapes import CHOICE_WORDS, Evidence
 
 ADD_RE = re.compile(r"^(add|plus|extra)_?(\d+)_?(s|sec|secs|seconds|m|min|mins|minutes)?$")
+
+
+_COOK_TIME_RE = re.compile(r"\bcook(?:ing)? time\b", re.I)
 
 
 def assign_amounts(
@@ -53,7 +57,7 @@ def assign_amounts(
         entry_keys = entry_keys + [k for k in silent if k.skill == "press"]
         silent = [k for k in silent if k not in entry_keys]
     used_steppers: set[int] = set()
-    used_digits = False
+    used_digits = keyed_cook = False
     if steppers and shared_pair and entry_keys:
         # a stepping pair whose own sentences name what it sets, and no entry key sets that,
         # keeps its own setting: the entry keys then step theirs by themselves
@@ -110,6 +114,10 @@ def assign_amounts(
             )
             b.note(f"features.set_{var}", f"{lab} then the number keys", ev.range_at)
             used_digits = True
+            said = [b.manual.units[i].text for i in mentions_of(b, key.controls[0])]
+            said = [t for t in said if t.lstrip(" *|").upper().startswith(lab.upper())]
+            if spec["type"] == "time" and any(_COOK_TIME_RE.search(t) for t in said):
+                keyed_cook = True  # "TIMER — the keypad then takes the cooking time"
         elif steppers:
             up, down = steppers[0]
             used_steppers.add(0)
@@ -156,10 +164,11 @@ def assign_amounts(
                     }
                 ],
             )
-    cooking = any(re.search(r"\bcook(?:ing)? time\b", u.text, re.I) for u in b.manual.units)
-    named_cook = any(  # a cooking time already keyed in after a TIME key is the one
-        "cook" in v or (v == "time" and "entry" in spec) for v, spec in b.variables.items()
-    )
+    cooking = any(_COOK_TIME_RE.search(u.text) for u in b.manual.units)
+    named_cook = keyed_cook or any(  # a cooking time already keyed in after a TIME key is the one
+        spec.get("type") == "time" and ("cook" in v or (v == "time" and "entry" in spec))
+        for v, spec in b.variables.items()
+    )  # (AUTO COOK's list of menus is no cooking time)
     direct: str | None = None
     if digits and (not used_digits or (cooking and not named_cook)):
         var = b.add_number(

@@ -97,13 +97,38 @@ HOLD_USE_RE = re.compile(
 )
 
 
+HOLD_THEN_RE = re.compile(
+    r"\b(?:touch|press|tap|push)\s+(?:and|&)\s+hold(?:\s+(?:for\s+)?\d+(?:[.,]\d+)?\s*"
+    r"(?:s|sec|secs|seconds?))?\s*:\s*([A-Za-z][A-Za-z -]{2,40})",
+    re.IGNORECASE,
+)
+_PLACE_NOUNS = {"zone", "ring", "burner", "plate", "side", "area", "hob", "element"}
+
+
+def _of_the(noun: str) -> str:
+    """ "timer of the rear zone" -> "rear timer"; a noun without "of" as it is."""
+    head, of, tail = noun.partition(" of ")
+    if not of:
+        return noun
+    rest = [w for w in tail.split() if w.lower() not in ("the", "a", "an")]
+    while rest and rest[-1].lower() in _PLACE_NOUNS:
+        rest.pop()
+    return " ".join([*rest, head]) if rest else head
+
+
 def hold_use(b: Builder, key: ActionInfo) -> str:
     """What holding a key does when its legend gives a use per way of touching it ("| REAR |
     Selects the rear zone (touch) · rear timer (touch and hold) |"): "rear timer"; else ""."""
     if key.skill != "hold" or len(key.controls) != 1 or key.controls[0] not in b.labels:
         return ""
     for i in b.labels[key.controls[0]].mentions:
-        m = HOLD_USE_RE.search(b.manual.units[i].text)
+        text = b.manual.units[i].text
+        after = HOLD_THEN_RE.search(text)  # "| Touch and hold 2 s: timer of the rear zone. |"
+        if after:
+            noun = _of_the(after.group(1).strip())
+            if noun and len(noun.split()) <= 3 and not set(words(noun)) & {"lock", "key"}:
+                return noun.lower()
+        m = HOLD_USE_RE.search(text)
         if m:
             noun = re.split(r"[·;,:|]|\)", m.group(1))[-1].strip()
             if noun and len(noun.split()) <= 3 and not set(words(noun)) & {"lock", "key"}:

@@ -18,7 +18,7 @@ from apbot.read.values import (
 )
 
 LAMP_LIST_RE = re.compile(
-    r"^\W*(?:the\s+)?(?:\w+\s+){0,2}(?:lamps?|indicators?|symbols?|icons?|LEDs?|lights)\b"
+    r"^\W*(?:the\s+)?(?:[\w-]+\s+){0,2}(?:lamps?|indicators?|symbols?|icons?|LEDs?|lights)\b"
     r"(?:\s*\([^)]*\))?\s*:",
     re.IGNORECASE,
 )
@@ -31,8 +31,8 @@ SETTING_NOUNS = (
     "temperature", "humidity", "timer", "time", "delay", "level", "power", "speed", "volume",
     "weight", "programme", "program", "mode", "setting", "heat", "strength", "size",
 )  # fmt: skip
-CHOICE_WORDS = {"programme", "program", "menu", "mode", "function", "cycle", "course", "dial",
-                "knob", "selector", "select"}  # fmt: skip
+CHOICE_WORDS = {"programme", "program", "prog", "menu", "mode", "function", "cycle", "course",
+                "dial", "knob", "selector", "select"}  # fmt: skip
 GROUP_NOUNS = ("programme", "program", "menu", "mode", "function", "cycle", "course", "preset")
 RUNNING_RE = re.compile(
     r"\b(?:while|during|when)\b[^.]*\b(?:running|cooking|operat\w*|works?|working|heating|"
@@ -43,6 +43,13 @@ RUNNING_RE = re.compile(
 
 
 ORDER_RE = re.compile(r"\bin (?:this|the following|that) order\b", re.I)
+# "Press AUTO COOK until the menu you want is displayed (see table)": only for the key it names
+TABLE_POINTER_RE = re.compile(r"\(see (?:the )?table\)|\bthe table below\b", re.I)
+# a table's first column counting the presses ("| Presses | Menu |", "| Times pressed | Level |")
+PRESSES_RE = re.compile(
+    r"^\W*(?:no\.? of |number of )?(?:press(?:es)?|touch(?:es)?|taps?|times?)(?: pressed)?\b",
+    re.I,
+)
 
 
 @dataclass
@@ -228,6 +235,8 @@ def _next_table_column(units: list[Unit], i: int, column: int = 0) -> list[str]:
     unit ``i`` (header skipped)."""
     k = i + 1
     if k < len(units) and units[k].cells and not units[k].header:
+        if column == 0 and len(units[k].cells) >= 2 and PRESSES_RE.match(units[k].cells[0]):
+            column = 1  # the first column counts presses: the values are in the next one
         k += 1  # the header row
     items: list[str] = []
     numbers = 0
@@ -236,6 +245,8 @@ def _next_table_column(units: list[Unit], i: int, column: int = 0) -> list[str]:
             k += 1
             continue
         cell = re.sub(r"^\s*\d{1,2}[.)]?\s+(?=\D)", "", units[k].cells[column]).strip(" *")
+        # "Meat (joints, steaks, minced meat)": the name before its gloss
+        cell = re.sub(r"(?<=\w)\s*\([^)]*\)\s*$", "", cell)
         if find_ranges(cell) or not re.search(r"[A-Za-z]", cell):
             numbers += 1
         if cell and len(cell) <= 24 and cell not in items:
@@ -317,6 +328,7 @@ def _dedupe(items: list[str]) -> list[str]:
 
 def _value_text(value: str) -> str:
     text = re.sub(r"\s+", " ", value.strip().lower())
+    text = re.sub(r"(?<=\d)['’′]$", "", text)  # "Quick 15'": a minute mark, not part of the name
     return text.strip(" .,;:")
 
 

@@ -21,7 +21,8 @@ _BULLETS = "•●○◦▪▫■□►▶➤➢✓✔✗✘–—·*-"
 _BULLET_RE = re.compile(rf"^\s*(?:[{re.escape(_BULLETS)}]|\d{{1,2}}[.)])\s+")
 _NUMBERED_RE = re.compile(r"^\s*(\d{1,2})[.)]\s+")
 _TABLE_RULE = re.compile(r"^\s*\|?\s*:?-{2,}:?\s*(\|\s*:?-{2,}:?\s*)*\|?\s*$")
-_SENTENCE_END = re.compile(r"(?<=[.!?])\s+(?=[A-Z0-9\"'(*])")
+# (not inside a run of numbers: "50, 55, 60 ... 95, 100")
+_SENTENCE_END = re.compile(r"(?<=[.!?])(?<!\d \.\.\.)(?<!\d\.\.\.)\s+(?=[A-Z0-9\"'(*])")
 
 
 @dataclass(frozen=True)
@@ -64,6 +65,8 @@ def _clean_chars(text: str) -> str:
             return "\f" if ch == "\f" else ""  # a form feed marks a page: kept, on its own line
         if ch == "❄":
             return "COLD"  # the snowflake printed for a cold wash or a cold setting
+        if "\u2500" <= ch <= "\u257f":
+            return "-"  # box drawing: a rule across a table stays a rule
         if cat == "So" and ch not in _KEEP:
             return " "  # emoji and dingbats
         return ch
@@ -84,7 +87,7 @@ def _cells(line: str) -> tuple[str, ...]:
 
 def _space_tables(lines: list[str]) -> dict[int, tuple[tuple[str, ...], bool]]:
     """Tables drawn with spaces (text from a PDF): a header of three or more cells followed by
-    rows of two or more; a row's wrapped continuation line (one cell) is dropped.
+    rows of two or more; a row's wrapped lines (set in from the left) go on its cells.
 
     Returns line number → (cells, is the header row)."""
     out: dict[int, tuple[tuple[str, ...], bool]] = {}
@@ -92,31 +95,63 @@ def _space_tables(lines: list[str]) -> dict[int, tuple[tuple[str, ...], bool]]:
     while i < len(lines):
         head = _cells(lines[i])
         before = lines[i - 1].strip() if i else ""
-        if before and not re.search(r"[.:!?]$", before) and not before.isupper():
+        if (
+            before
+            and not re.search(r"[.:!?]$", before)
+            and not before.isupper()
+            and not before.startswith("#")  # a Markdown heading ends what came before
+        ):
             i += 1  # the line goes on with a sentence from the line before: not a table header
             continue
         if len(head) < 3 or "|" in lines[i] or len(lines[i]) > 200:
             i += 1
             continue
         rows: list[int] = []
+        more: dict[int, list[tuple[int, str]]] = {}  # row -> wrapped lines' cells, by position
+        indent = len(lines[i]) - len(lines[i].lstrip())
         j = i + 1
         while j < len(lines) and lines[j].strip():
+            if re.fullmatch(r"[-=_][-=_\s]{2,}", lines[j].strip()):
+                j += 1  # a rule under the header ("-------  ------  -----")
+                continue
             cells = _cells(lines[j])
-            if len(cells) >= 2 and "|" not in lines[j]:
+            inset = len(lines[j]) - len(lines[j].lstrip()) > indent + 2
+            if inset and "|" not in lines[j]:  # a wrapped line: of the header, or of a row
+                more.setdefault(rows[-1] if rows else i, []).extend(_placed_cells(lines[j]))
+            elif len(cells) >= 2 and "|" not in lines[j]:
                 rows.append(j)
             elif len(cells) != 1 or len(cells[0]) > 40:
                 break
             j += 1
         if len(rows) >= 2:
-            out[i + 1] = (head, True)
+            out[i + 1] = (_joined_cells(lines[i], more.get(i, [])), True)
             for r in rows:
-                out[r + 1] = (_cells(lines[r]), False)
+                out[r + 1] = (_joined_cells(lines[r], more.get(r, [])), False)
             for k in range(i + 1, j):
                 out.setdefault(k + 1, ((), False))
             i = j
         else:
             i += 1
     return out
+
+
+def _placed_cells(line: str) -> list[tuple[int, str]]:
+    """A line's cells (split at wide gaps) with the column each starts at."""
+    body = _strip_markup(line).rstrip()
+    return [(m.start(), m.group(0)) for m in re.finditer(r"\S+(?: \S+)*", body)]
+
+
+def _joined_cells(line: str, wrapped: list[tuple[int, str]]) -> tuple[str, ...]:
+    """A row's cells with the text of its wrapped lines added to the cell each piece stands
+    under ("To activate and deactivate the" + "hob.")."""
+    placed = _placed_cells(line)
+    if not wrapped or not placed:
+        return _cells(line)
+    cells = [text for _, text in placed]
+    for at, text in wrapped:
+        k = max((n for n, (start, _) in enumerate(placed) if start <= at + 2), default=0)
+        cells[k] = f"{cells[k]} {text}"
+    return tuple(cells)
 
 
 _PAGE_NUMBER = re.compile(
@@ -437,6 +472,10 @@ def parse_manual(text: str) -> Manual:
             para_step = int(step.group(1)) if step else None
             para.append((number, line[bullet.end() :].strip()))
             continue
+        if re.match(r"\s{3,}\S", line) and len(re.findall(r"\S\s+·\s+\S", line)) >= 2:
+            flush()  # an indented row of marks ("   OFF · 1 · 2 · CONT") drawn in a figure
+            units.append(Unit(number, stripped, heading=heading))
+            continue
         if para and (_TERM_RE.match(line) or _FIELD_RE.match(line)):
             flush()  # "WARM      holds cooked food hot": a term and its definition, a new item
         para.append((number, stripped))
@@ -444,5 +483,7 @@ def parse_manual(text: str) -> Manual:
     return Manual(units, original)
 
 
-_FIELD_RE = re.compile(r"^\s{0,2}[A-Z][a-z]+(?: [A-Za-z]+){0,3}(?: \([^)]{1,30}\))?:\s+\S")
+_FIELD_RE = re.compile(  # "Water level: …", "Cup-size lamps: …": a field of its own
+    r"^\s{0,2}[A-Z][a-z]+(?:-[a-z]+)?(?:[ -][A-Za-z]+){0,3}(?: \([^)]{1,30}\))?:\s+\S"
+)
 _TERM_RE = re.compile(r"^\s{0,2}[A-Z0-9][A-Z0-9+/&.'-]*(?: [A-Z0-9+/&.'-]+){0,3}\s{2,}\S")

@@ -19,7 +19,7 @@ NUM = (
 )
 UNIT = (
     r"(?:%|°\s?[CF]|°|degrees?|min(?:ute)?s?|h(?:ou)?rs?|hours?|h|sec(?:ond)?s?|s|rpm|W|watts?"
-    r"|kg|g|ml|L|litres?|cups?)"
+    r"|kg|lbs?|oz|g|ml|L|litres?|cups?)"
 )
 _TIME = r"\d{1,2}:\d{2}"
 _DASH = r"\s*(?:–|—|-|to|and|~|until)\s*"
@@ -70,7 +70,9 @@ def unit_name(text: str | None) -> str:
     info = unit_of(low)
     if info and info[0] == "time":
         return {1: "s", 60: "min", 3600: "h"}[int(info[1])]
-    return {"watt": "W", "watts": "W", "w": "W", "litre": "l", "litres": "l"}.get(low, low)
+    return {"watt": "W", "watts": "W", "w": "W", "litre": "l", "litres": "l", "lbs": "lb"}.get(
+        low, low
+    )
 
 
 def is_time_unit(unit: str) -> bool:
@@ -110,6 +112,8 @@ def find_ranges(text: str) -> list[Range]:
         mixed = first != unit and is_time_unit(first) and is_time_unit(unit)
         if hi is not None and mixed:  # "1 min – 3 h": in minutes
             hi, unit = seconds(hi, unit) / seconds(1, first), first
+        elif hi is not None and (first, unit) in (("g", "kg"), ("ml", "l")):
+            hi, unit = hi * 1000, first  # "100 g – 2.0 kg": in grams
         if lo is None or hi is None or not lo < hi:
             continue
         if not unit and m.group(0).strip().lower().split()[1:2] == ["and"]:
@@ -250,6 +254,9 @@ PER_RE = re.compile(
 )
 
 
+_BARE_STEPS_RE = re.compile(rf"(?<![\w-])({NUM})-({UNIT})\s+(?:steps|increments)\b", re.I)
+
+
 def find_step(text: str) -> tuple[float, str] | None:
     """A step size: (number, canonical unit)."""
     per = PER_RE.search(text)
@@ -257,10 +264,13 @@ def find_step(text: str) -> tuple[float, str] | None:
         return number(per.group(1)) or 1.0, unit_name(per.group(2))
     m = STEP_RE.search(text)
     if not m:
+        bare = _BARE_STEPS_RE.search(text)  # "| up to 15 h ahead, ten-minute steps |"
+        if bare and number(bare.group(1)):
+            return number(bare.group(1)) or 1.0, unit_name(bare.group(2))
         return None
     groups = m.groups()
-    if m.group(0).lower().endswith("units") and not groups[1]:
-        return None  # "in half-hour units" is a step, "sold in 2 units" is not
+    if m.group(0).lower().endswith(("units", "stages")) and not groups[1]:
+        return None  # "in half-hour units" is a step, "sold in 2 units", "in two stages" not
     for i in (0, 2, 4):
         raw, unit = groups[i], groups[i + 1]
         if raw is None and i == 4 and unit:
@@ -310,6 +320,45 @@ _NUMBER_LIST = re.compile(
 )
 
 
+def _nothing_as_zero(items: list[str]) -> list[str]:
+    """A list of durations led by a word for none ("no timer → 2H → 4H", "OFF, 1 h, 2 h"): the
+    first is zero of their unit."""
+    rest = [
+        re.fullmatch(r"(\d+(?:[.,]\d+)?)\s*(h|hr|hrs|hours?|min|mins|minutes?)", i.strip(), re.I)
+        for i in items[1:]
+    ]
+    if len(items) < 3 or not all(rest):
+        return items
+    if not re.fullmatch(r"(?:no\b.{0,12}|none|off|-+|–|—)", items[0].strip(), re.I):
+        return items
+    unit = rest[0].group(2) if rest[0] else "h"
+    return [f"0 {unit}"] + [f"{m.group(1)} {m.group(2)}" for m in rest if m]
+
+
+_PROGRESSION_RE = re.compile(  # "50, 55, 60 ... 95, 100", "MENU 1, MENU 2 … MENU 15"
+    r"(?<![\d.])(?:([A-Z]{2,12}) )?(\d+(?:\.\d+)?),\s*(?:\1 )?(\d+(?:\.\d+)?)"
+    r"(?:,\s*(?:\1 )?\d+(?:\.\d+)?)*,?\s*(?:\.\.\.|…)\s*(?:(?:up )?to\s+)?"
+    r"(?:(?:\1 )?\d+(?:\.\d+)?,\s*)*(?:\1 )?(\d+(?:\.\d+)?)(?!\d|\.\d)\s*([A-Za-z%°]{1,8})?"
+)
+
+
+def find_progression(text: str) -> list[str] | None:
+    """Settings written as the first few, an ellipsis and the last ("50, 55, 60 ... 95, 100"):
+    every one of them, the step being the first gap."""
+    m = _PROGRESSION_RE.search(text)
+    if not m:
+        return None
+    first, second, last = float(m.group(2)), float(m.group(3)), float(m.group(4))
+    gap = second - first
+    if gap <= 0 or last <= second or (last - first) / gap > 400:
+        return None
+    count = round((last - first) / gap)
+    if abs(first + count * gap - last) > 1e-6:
+        return None  # the last is off the step: no progression
+    unit = m.group(5) if m.group(5) and re.fullmatch(UNIT, m.group(5), re.I) else ""
+    return [f"{first + k * gap:g}" + (f" {unit}" if unit else "") for k in range(count + 1)]
+
+
 def find_list(text: str) -> tuple[list[str], str] | None:
     """A list of values in one sentence, and how it was written ("arrows", "list")."""
     numbers = _NUMBER_LIST.search(text)
@@ -321,14 +370,28 @@ def find_list(text: str) -> tuple[list[str], str] | None:
             return [f"{i} {unit}" if known else i for i in items], "list"
     parts = [_clean_item(p) for p in _ARROW.split(text)]
     if len(parts) >= 3:  # "… → HIGH, and from HIGH the next press …": the list ends at the comma
-        parts[-1] = _clean_item(re.split(r"[,;]\s|\s[—–]\s", parts[-1])[0])
+        last = re.split(r"[,;]\s|\s[—–]\s|(?:^|\s+)(?:and\s+)?(?:then|back|again)\b", parts[-1])[0]
+        parts[-1] = _clean_item(last)
+    amount = re.search(rf"(?<![\w.])({NUM}\s*{UNIT})\s*$", parts[0], re.I)
     if len(parts) >= 3 or (len(parts) == 2 and all(_value_like(p, True) for p in parts)):
         head = parts[0].split(":")[-1].split()  # "in this order: AUTO → ...", "Clockwise: Cotton"
         capital = [w for w in head if w.upper() == w and any(c.isalpha() for c in w)]
+        trailing: list[str] = []  # "Tap FAN to step through AUTO →": the run before the arrow
+        for w in reversed(head):
+            if w.upper() != w or not any(c.isalpha() for c in w):
+                break
+            trailing.insert(0, w)
+        if trailing and len(trailing) < len(capital):
+            capital = trailing
         parts[0] = _clean_item(" ".join(capital) or " ".join(head[-2:]) or parts[0])
         if len(head) > 3 and not capital:
             parts[0] = _clean_item(head[-1])
-        items = [p for p in parts if p]
+        if amount and len(parts) >= 3:  # "… in the order 1.0 LB → 1.5 LB": the amount first
+            parts[0] = amount.group(1)
+        items = [p for p in parts if p and re.search(r"\w", p)]  # "… → OFF → …": no item
+        if items and items[0] in items[1:]:
+            items = items[: items.index(items[0], 1)]  # "OFF → 2H → 4H → OFF": the cycle, once
+        items = _nothing_as_zero(items)
         if all(_value_like(p, False) for p in items) and len(items) >= 2:
             return _dedupe(items), "arrows"
     for m in _CUE.finditer(text):
