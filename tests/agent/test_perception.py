@@ -71,3 +71,25 @@ def test_a_setting_counted_in_hours_is_read_from_a_clock() -> None:
     assert hours("DELAY 2:00  LOAF 2.5 lb") == ({"delay": 2}, {})
     assert hours("DELAY 0:30") == ({}, {"delay": 0.5})  # a step the belief lacks
     assert hours("DELAY 0:30  3:40") == ({}, {})  # two clocks: which one?
+
+
+WITH_CLOCK = """
+controls: [{id: plus}, {id: clock}]
+variables:
+  delay: {type: numeric, unit: h, ranges: [[0, 12, 1]], label: DELAY}
+  clock: {type: time, ranges: [["00:00:00", "23:59:00", 60]], label: CLOCK}
+actions:
+  press_plus: {control: plus}
+  press_clock: {control: clock}
+features:
+  set_delay: [{actions: [press_plus], variable: delay, effect: next}]
+  set_clock: [{actions: [press_clock], variable: clock, effect: next}]
+"""
+
+
+def test_a_clock_is_no_count_of_hours_where_the_belief_shows_a_time_of_day() -> None:
+    # ``12:45`` on a panel with a clock is the time of day, not a delay of 12.75 h to repair on
+    seen = Perceiver(model_from(WITH_CLOCK)).perceive(
+        Feedback("12:45", {}, True, ""), {"delay": 1, "clock": "12:45:00"}, ("focus", "delay")
+    )
+    assert "delay" not in seen.values and "delay" not in seen.outside

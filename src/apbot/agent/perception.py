@@ -23,7 +23,7 @@ from apbot.agent.environment import Feedback
 from apbot.agent.estimate import StateEstimator
 from apbot.agent.reader import DisplayReader, Hypothesis, Reading, is_read
 from apbot.model.domain import ValueProblem, normalise, parse_value
-from apbot.model.schema import ApplianceModel, NumericVariable
+from apbot.model.schema import ApplianceModel, NumericVariable, TimeVariable
 
 LOOK_ALIKE_COST = 1.0
 """How much more a photo's reading may cost (in the decoder's units, where a cell's look-alikes
@@ -235,8 +235,8 @@ def by_unit(model: ApplianceModel, seen: Seen, name: str | None) -> Seen | None:
     the display prints one number in that setting's unit (``55°C  LOCK RED`` for a
     temperature whose screen the belief prints as ``TEMPERATURE 55°C``) and no other visible
     setting of the belief has that unit; a setting counted in hours also by one clock time
-    (``0:30`` is 0.5 h). None when the reading stands as it is (the setting read, no unit, no
-    such number, or more than one)."""
+    (``0:30`` is 0.5 h) when the belief shows no time of its own. None when the reading stands
+    as it is (the setting read, no unit, no such number, or more than one)."""
     spec = model.variables.get(name or "")
     if name is None or not isinstance(spec, NumericVariable) or not spec.unit:
         return None
@@ -254,8 +254,14 @@ def by_unit(model: ApplianceModel, seen: Seen, name: str | None) -> Seen | None:
     found = re.findall(
         rf"(?<![\d.:])(-?\d+(?:\.\d+)?)\s?{re.escape(unit)}(?!\w)", seen.text, re.IGNORECASE
     )
-    if not found and unit.casefold() in HOUR_UNITS:
-        # a setting counted in hours, shown as a clock (``DELAY 0:30``): the hours it shows
+    if (
+        not found
+        and unit.casefold() in HOUR_UNITS
+        and not any(isinstance(o, TimeVariable) and o.visible for o in model.variables.values())
+    ):
+        # a setting counted in hours, shown as a clock (``DELAY 0:30``): the hours it shows —
+        # unless the belief has a time of its own the same clock could be (``12:45`` on a
+        # panel with a clock is the time of day, not a delay of 12.75 h)
         clocks = re.findall(r"(?<![\d.:])(\d{1,2}):([0-5]\d)(?![\d:])", seen.text)
         found = [f"{int(h) + int(m) / 60:g}" for h, m in clocks]
     if len(found) != 1:
