@@ -129,3 +129,44 @@ def test_a_key_that_sets_the_value_on_entry_starts_the_bound_there() -> None:
     assert distance[start] == 35
     assert all(bound(state) <= steps for state, steps in distance.items())
     assert all(bound(state) == 0 for state, steps in distance.items() if steps == 0)
+
+
+# two programmes: 170° only for BAKE, 1:30 only for SLOW
+TWO_PROGRAMMES = """
+controls: [{id: menu}, {id: temp}, {id: time}, {id: plus}, {id: light}]
+variables:
+  menu: {type: discrete, values: [bake, slow]}
+  light: {type: discrete, values: ["off", "on"]}
+  temp:
+    type: numeric
+    depends_on: menu
+    cases: {bake: {ranges: [[80, 230, 10]]}, slow: {ranges: [[40, 80, 10]]}}
+  time:
+    type: time
+    depends_on: menu
+    cases: {bake: {ranges: [["00:01:00", "01:00:00", 60]]},
+            slow: {ranges: [["00:01:00", "02:00:00", 60]]}}
+actions: {press_menu: {control: menu}, press_temp: {control: temp},
+          press_time: {control: time}, press_plus: {control: plus},
+          press_light: {control: light}}
+features:
+  menu: [{actions: [press_menu], variable: menu, effect: next}]
+  light: [{actions: [press_light], variable: light, effect: toggle}]
+  set_temp:
+    - {actions: [press_temp]}
+    - {actions: [press_plus], variable: temp, effect: next}
+  set_time:
+    - {actions: [press_time]}
+    - {actions: [press_plus], variable: time, effect: next}
+"""
+
+
+def test_settings_no_programme_has_together_are_out_of_reach_without_a_search() -> None:
+    model = model_from(TWO_PROGRAMMES)
+    with pytest.raises(Unreachable, match="no programme lets") as caught:
+        plan(model, None, {"temp": 170, "time": "01:30:00", "light": "on"})
+    assert not caught.value.budget_hit
+    assert caught.value.generated == 0
+    # each alone, or both where one programme has them, is planned as before
+    assert len(plan(model, None, {"temp": 170, "time": "00:30:00"})) == 10 + 30
+    assert len(plan(model, None, {"time": "01:30:00", "temp": 60})) == 1 + 3 + 90

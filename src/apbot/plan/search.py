@@ -143,7 +143,7 @@ class TaskSearch:
         bound = self.bound
         h0 = bound(start, continuing=True)
         ceiling = self._ceiling
-        if h0 == INF or h0 * PRESS > ceiling:
+        if h0 == INF or h0 * PRESS > ceiling or self.goal.case_conflict(compiled):
             raise SearchExhausted("unreachable", 0, False)
         start_key = self.key(start)
         best = {start_key: 0}
