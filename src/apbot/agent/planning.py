@@ -70,6 +70,8 @@ class BeliefPlans:
         try:
             state: State | None = self.session.belief.state
             head = plan(compiled, state, {n: target[n] for n in parents}, budget, work, len(found))
+            if not head.actions:  # the programmes hold: the rest is the search just made
+                return found
             for action in head.actions:
                 assert state is not None
                 state = compiled.apply(state, compiled.action_index[action.name], action.seconds)

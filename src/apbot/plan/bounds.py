@@ -263,6 +263,12 @@ class LowerBound:
                 cache[key] = self._table(v, goal.canonical[name], goal_case, reset_costs)
             self.tables.append(cache[key])
         self.returns = self._programme_returns(cache)
+        # per goal variable: its least term after a press onto a step in front of its own
+        # steps, when every such press sets it (0: no such floor) — :func:`_gate_floor`
+        self.gate_floors = [
+            _gate_floor(compiled, v, entry, goal.canonical[name])
+            for name, v, entry in zip(goal.names, goal.variables, self.entries, strict=True)
+        ]
         # programmes no goal names, with the goal settings that may need them to change:
         # [(setting, its bound per case and value with no programme change)]
         self.detectors: dict[int, list[tuple[int, tuple[tuple[float, ...], ...]]]] = {}
@@ -301,8 +307,8 @@ class LowerBound:
         claimed: set[int] = set()  # steps an entry press counted so far lands on
         found: list[float] = []  # each goal variable's term, when programme returns need them
         must = self._must_change(values) if self.detectors else ()
-        for (v, per_case, absent, jump), entry, landings in zip(
-            self.tables, self.entries, self.landings, strict=True
+        for (v, per_case, absent, jump), entry, landings, floor in zip(
+            self.tables, self.entries, self.landings, self.gate_floors, strict=True
         ):
             index = values[v]
             if index < 0:
@@ -319,7 +325,9 @@ class LowerBound:
                 needs, _, gates = entry
                 if state.step not in needs and claimed.isdisjoint(gates):
                     # a route through v's own steps makes an entry press no goal variable
-                    # pays for; a jump (side effect, programme change) makes none
+                    # pays for; a jump (side effect, programme change) makes none. When
+                    # that press sets v, the own route goes on from where it left v
+                    bound = max(bound, floor)
                     if bound + 1 <= jump:
                         bound += 1
                         claimed |= gates
@@ -540,6 +548,57 @@ def _entry_requirements(
     if not features:
         return None
     return frozenset(free), frozenset(features), frozenset(gates)
+
+
+def _gate_floor(
+    compiled: CompiledModel,
+    v: int,
+    entry: tuple[frozenset[int], frozenset[str], frozenset[int]] | None,
+    goal_value: Any,
+) -> float:
+    """The fewest presses of v's own steps that bring ``v`` to ``goal_value`` from where a
+    press onto one of the steps in front of them (``entry``'s gates) leaves it, when every
+    such press sets ``v`` to a constant (a TIME key that shows 7:00 before the dial turns).
+    A route that ends in v's own steps makes such a press last before them, and between it
+    and the goal the pointer stays in v's steps, where nothing but v's own keys moves v or its
+    programme: it goes on from the constant, not from v's value now. 0 (no floor) when
+    some gate leaves ``v`` as it is, when an anywhere key or a cycle's end may change ``v``
+    or its programme between that press and v's steps, or when a key enters v's steps
+    from no feature."""
+    if entry is None:
+        return 0.0
+    _, _, gates = entry
+    var = compiled.vars[v]
+    watched = {v, var.parent} if var.parent >= 0 else {v}
+    if any(
+        step.variable in watched or any(t in watched for t, _ in step.side)
+        for step in compiled.anywhere_steps
+    ) or any(any(t in watched for t, _ in cycle.side) for cycle in compiled.cycles):
+        return 0.0
+    own = [s for s, step in enumerate(compiled.steps) if step.variable == v]
+    if any(compiled.targets[0][a] in own for s in own for a in compiled.steps[s].actions):
+        return 0.0
+    if any(t == var.parent for s in own for t, _ in compiled.steps[s].side):
+        return 0.0  # its own steps change its programme
+    floor = INF
+    for gate in gates:
+        step = compiled.steps[gate]
+        if step.variable == var.parent and var.parent >= 0:
+            return 0.0
+        tables = [tables for t, tables in step.side if t == v]
+        if not tables:
+            return 0.0  # this press leaves v as it was
+        for case, domain in enumerate(var.domains):
+            table = tables[-1][case]
+            if domain is None or table is None:
+                continue
+            if len(set(table)) != 1:
+                return 0.0  # not a constant: where it lands depends on v
+            reverse, typed, _, _ = _value_graph(compiled, v, case)
+            dist = _backwards(reverse, goal_value) if goal_value in domain.index else {}
+            typing = min((cost + dist.get(to, INF) for to, cost in typed), default=INF)
+            floor = min(floor, dist.get(domain.values[table[0]], INF), typing)
+    return 0.0 if floor == INF else floor
 
 
 def _return_cost(compiled: CompiledModel, p: int, wanted: int) -> float:

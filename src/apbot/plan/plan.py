@@ -313,6 +313,11 @@ def _explain(
     if most is not None:
         return f"no plan of at most {most} actions reaches the goal"
     names = ", ".join(f"{k}={v}" for k, v in goal.items())
+    if CompiledGoal.build(compiled, goal).case_conflict(compiled):
+        return (
+            f"no programme lets {names} hold together: each of those settings' values exists"
+            " only in some programmes, and no programme has them all"
+        )
     return (
         f"no action sequence makes {names} hold together (searched {expanded} states);"
         " a guard or a programme restriction keeps them apart"
