@@ -14,7 +14,7 @@ from apbot.plan import search
 from apbot.plan.bounds import LowerBound
 from apbot.plan.goals import CompiledGoal
 from apbot.plan.plan import Unreachable, plan
-from apbot.sim.compiled import compiled_model
+from apbot.sim.compiled import State, compiled_model
 from apbot.testing.bfs import distances_to_goal
 from tests.helpers import model_from
 
@@ -67,7 +67,7 @@ def test_one_part_out_of_reach_ends_the_search_at_once() -> None:
     compiled = compiled_model(model)
     target = CompiledGoal.build(compiled, parse_goal(model, goal))
     whole = search.TaskSearch(compiled, target)
-    whole._part_out_of_reach = lambda start: (False, 0)  # type: ignore[method-assign]
+    whole._part_out_of_reach = lambda start, left: (False, 0)  # type: ignore[method-assign]
     with pytest.raises(search.SearchExhausted):
         whole.run(compiled.initial_state())
     assert whole.generated > 4 * caught.value.generated
@@ -170,3 +170,27 @@ def test_settings_no_programme_has_together_are_out_of_reach_without_a_search() 
     # each alone, or both where one programme has them, is planned as before
     assert len(plan(model, None, {"temp": 170, "time": "00:30:00"})) == 10 + 30
     assert len(plan(model, None, {"time": "01:30:00", "temp": 60})) == 1 + 3 + 90
+
+
+def test_the_part_proofs_stop_where_the_whole_search_s_work_runs_out(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """The part proofs are work done for the whole search: once they have spent what it has
+    left, no further part is searched, and each part may spend only what is left (rather than up to 20,000 successors per part past it)."""
+    model = model_from(NO_THREE)
+    goal = {"temp": 24, "timer": "01:10:00", "fan": "on", "swing": "on", "power": "on"}
+    compiled = compiled_model(model)
+    whole = search.TaskSearch(compiled, CompiledGoal.build(compiled, parse_goal(model, goal)))
+    works: list[int] = []
+    real_run = search.TaskSearch.run
+
+    def counted(self: search.TaskSearch, start: State) -> search.SearchResult:
+        works.append(self.work)
+        return real_run(self, start)
+
+    monkeypatch.setattr(search.TaskSearch, "run", counted)
+    assert whole._part_out_of_reach(compiled.initial_state(), 10**9)[0] is False
+    assert len(works) == len(goal) and max(works) == search.PART_WORK
+    works.clear()
+    whole._part_out_of_reach(compiled.initial_state(), 30)
+    assert works[0] == 30 and len(works) < len(goal)  # each part has what the others left

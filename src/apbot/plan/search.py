@@ -174,7 +174,7 @@ class TaskSearch:
                 asked = True
                 if out_of_reach(compiled, self.goal, start):
                     raise SearchExhausted("unreachable", expanded, False)
-                proven, spent = self._part_out_of_reach(start)
+                proven, spent = self._part_out_of_reach(start, self.work - generated)
                 generated += spent  # the parts' searches are work done for this one
                 self.generated = generated
                 if proven:
@@ -198,13 +198,14 @@ class TaskSearch:
                 heapq.heappush(frontier, (new_cost + h * PRESS, -new_cost, next(tie), k))
         raise SearchExhausted("exhausted", expanded, False)
 
-    def _part_out_of_reach(self, start: State) -> tuple[bool, int]:
+    def _part_out_of_reach(self, start: State, left: int) -> tuple[bool, int]:
         """Whether one goal variable alone is out of reach from ``start`` (within ``most``
         actions): then the whole goal is too, since every plan for the whole is one for each
         part. Each part's search is small (:data:`PART_WORK` successors) and its space far
         smaller than the whole's — a digit key the belief lost from a keypad makes one value
         untypeable, which the whole search would prove only by walking every other setting's
-        values. Proven parts are remembered on the model, per start state. Also returns the
+        values. Proven parts are remembered on the model, per start state. The parts together
+        spend at most ``left``, the whole search's own work still to do. Also returns the
         successors the parts' searches generated."""
         goal = self.goal
         spent = 0
@@ -216,11 +217,13 @@ class TaskSearch:
             key = (start, name, repr(value), self.most)
             if key in proven:
                 return True, spent
+            if left - spent <= 0:
+                break
             part = TaskSearch(
                 self.compiled,
                 CompiledGoal.build(self.compiled, {name: value}),
                 self.budget,
-                PART_WORK,
+                min(PART_WORK, left - spent),
                 self.most,
             )
             try:
