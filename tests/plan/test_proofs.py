@@ -176,7 +176,8 @@ def test_the_part_proofs_stop_where_the_whole_search_s_work_runs_out(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
     """The part proofs are work done for the whole search: once they have spent what it has
-    left, no further part is searched, and each part may spend only what is left (rather than up to 20,000 successors per part past it)."""
+    left, no further part is searched, and each part may spend only what is left (rather
+    than up to 20,000 successors per part past it)."""
     model = model_from(NO_THREE)
     goal = {"temp": 24, "timer": "01:10:00", "fan": "on", "swing": "on", "power": "on"}
     compiled = compiled_model(model)
