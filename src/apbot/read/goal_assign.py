@@ -1,0 +1,275 @@
+"""Quantities to settings: each mention goes to the open setting whose type, unit and words fit
+best; a quantity no setting of its kind takes is refused (or kept as said, for a read belief)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from apbot.model.schema import NumericVariable, TimeVariable
+from apbot.model.values import format_hms, preview
+from apbot.read.goal_error import GoalParseError
+from apbot.read.goal_fit import fit, number_for
+from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab
+from apbot.read.goal_view import Goal, Model, VarInfo, domain_values, own_stems, unit_text
+from apbot.read.goal_vocab import concept, stem
+from apbot.read.numbers import Mention
+
+
+def distinct(mentions: list[Mention]) -> list[Mention]:
+    """Drop a quantity that repeats the one just before it ("at 9 pm (21:00)", "a day, 24 h")."""
+    kept: list[Mention] = []
+    for mention in mentions:
+        last = kept[-1] if kept else None
+        if (
+            last is not None
+            and last.kind == mention.kind
+            and abs(last.value - mention.value) < 1e-6
+            and mention.start - last.end <= 3
+        ):
+            continue
+        kept.append(mention)
+    return kept
+
+
+def assign_mentions(
+    view: Model,
+    text: Text,
+    mentions: list[Mention],
+    goal: Goal,
+    claimed: set[int],
+    where: dict[str, int],
+    outside: list[str] | None = None,
+) -> bool:
+    """Give each quantity to the open setting it fits best. True when a delay was set relative
+    to now ("ready in 15 hours", "3 hours from now"): a countdown that must be started."""
+    counting = False
+    options: list[tuple[float, int, int, str, Any]] = []
+    for mi, mention in enumerate(mentions):
+        for name, info in view.infos.items():
+            if name in goal or info.role in ("power", "running", "switch"):
+                continue
+            value = fit(view, info, mention, goal)
+            if value is None:
+                continue
+            score = near_vocab(info, text, mention.start, mention.end)
+            if info.timing in ("clock", "finish") and not near_vocab(
+                info, text, mention.start, mention.end, reach=12
+            ):
+                named = info.timing == "clock" and concept("clock") in text.concepts
+                if not (named and mention.kind == "clock"):
+                    continue  # a time of day sets the clock only when the clock is named
+            score += _cue_bonus(info, text, mention)
+            options.append((score, -info.order, mi, name, value))
+    options.sort(key=lambda o: (-o[0], -o[1]))
+    used: set[int] = set()
+    for score, _order, mi, name, value in options:
+        if mi in used or name in goal:
+            continue
+        mention = mentions[mi]
+        article = text.word(mention.start) in ("a", "an", "couple", "single")
+        lone = not article and _only_home(view, mention, goal)
+        if score <= 0 and mention.kind == "number" and not lone:
+            continue
+        goal[name] = value
+        where[name] = mention.start
+        used.add(mi)
+        claimed.update(range(mention.start, mention.end))
+        if view.infos[name].timing == "delay" and _relative(text, mention):
+            counting = True
+    for mi, mention in enumerate(mentions):
+        if mi not in used and mention.kind == "clock" and _clock_parts(view, text, mention, goal):
+            used.add(mi)
+    for mi, mention in enumerate(mentions):
+        if mi not in used:
+            try:
+                _unplaced(view, text, mention, goal)
+            except GoalParseError as exc:
+                if outside is None or exc.setting is None:
+                    raise
+                goal[exc.setting] = exc.asked  # as said: the appliance may have it
+                where[exc.setting] = mention.start
+                outside.append(str(exc))
+    return counting
+
+
+def _clock_parts(view: Model, text: Text, mention: Mention, goal: Goal) -> bool:
+    """A time of day kept as two settings, an hour and a minute (a clock, an auto-start time):
+    set both from one time, on the pair the words around it name."""
+    pairs: dict[str, dict[str, VarInfo]] = {}
+    for info in view.infos.values():
+        if info.role != "setting" or info.name in goal:
+            continue
+        words = [w for w in info.name.casefold().split("_") if w]
+        part = next((p for p, names in _PARTS.items() if names & set(words)), None)
+        if part is None:
+            continue
+        rest = "_".join(w for w in words if w not in _PARTS[part])
+        pairs.setdefault(rest, {})[part] = info
+    options = []
+    for parts in pairs.values():
+        if len(parts) != 2:
+            continue
+        score = sum(near_vocab(i, text, mention.start, mention.end) for i in parts.values())
+        clock = stem("clock") in own_stems(parts["hour"])
+        if clock and score <= 0 and concept("clock") in text.concepts:
+            score = 0.1  # "The clock is off — set it to 13:15"
+        if clock and score <= 0:
+            continue  # a time of day sets the clock only when the clock is named
+        options.append((score, not clock, parts))
+    if not options:
+        return False
+    parts = max(options, key=lambda o: (o[0], o[1]))[2]
+    hour, minute = divmod(int(mention.value) // 60, 60)
+    values = {}
+    for part, number in (("hour", hour), ("minute", minute)):
+        domain = domain_values(view, parts[part], goal)
+        if part == "hour" and not _has_number(domain, number) and number > 12:
+            number -= 12
+        found = next((v for v in domain if _as_int(v) == number), None)
+        if found is None:
+            return False
+        values[parts[part].name] = found
+    goal.update(values)
+    return True
+
+
+_PARTS = {"hour": {"hour", "hours", "hr", "h"}, "minute": {"minute", "minutes", "min", "m"}}
+
+
+def _as_int(value: Any) -> int | None:
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        return None
+    return int(number) if number == int(number) else None
+
+
+def _has_number(domain: list[Any], number: int) -> bool:
+    return any(_as_int(v) == number for v in domain)
+
+
+def _only_home(view: Model, mention: Mention, goal: Goal) -> bool:
+    """A bare number that fits exactly one open variable goes there."""
+    homes = [
+        n
+        for n, i in view.infos.items()
+        if n not in goal and i.role == "setting" and fit(view, i, mention, goal) is not None
+    ]
+    return len(homes) == 1
+
+
+def _relative(text: Text, mention: Mention) -> bool:
+    """A duration counted from now: "in 8 hours", "5 h from now", "starting in 2 hours"."""
+    before = text.word(mention.start - 1)
+    after = " ".join(text.word(mention.end + d) for d in range(2))
+    return before in ("in", "within") or after == "from now"
+
+
+def _cue_bonus(info: VarInfo, text: Text, mention: Mention) -> float:
+    """Relative times prefer delays, "for" a duration, clock times clocks; units fit units."""
+    before = text.word(mention.start - 1)
+    before2 = text.word(mention.start - 2)
+    bonus = 0.0
+    if mention.kind == "duration":
+        relative = _relative(text, mention) or before2 in ("delay", "delayed", "wait")
+        relative = relative or before in ("delay", "delayed", "wait")
+        if info.timing == "delay":
+            bonus += 0.9 if relative else -0.3
+        elif relative:
+            bonus -= 0.3
+    if mention.dimension and mention.dimension == info.dimension:
+        bonus += 0.3
+    main = {"time", "cook", "cooking", "duration"} & set(info.name.split("_"))
+    if mention.kind == "duration" and info.timing == "duration" and main:
+        bonus += 0.1  # a duration no word claims goes to the cooking time, not QUICK MIN's
+    if mention.kind == "duration" and info.turns is not None:
+        said = _turning(text, mention.start)
+        if said is not None:
+            bonus += 1.0 if said == info.turns else -1.0
+    return bonus
+
+
+_TURN_VERBS = frozenset(
+    {"switch", "turn", "come", "switching", "turning", "coming", "comes", "switches", "turns"}
+)
+
+
+def _turning(text: Text, start: int) -> str | None:
+    """ "switch off after 2 hours", "an off-timer of 10 hours", "come on in 7.5 hours": which
+    way the appliance turns when the duration ends (None when the words do not say)."""
+    for k in range(start - 1, max(-1, start - 7), -1):
+        word = text.word(k)
+        if word in CLAUSE_ENDS or word == ",":
+            break
+        if word == "off":
+            return "off"
+        if word == "on" and text.word(k - 1) in _TURN_VERBS | {"itself", "it"}:
+            return "on"
+    return None
+
+
+def _clock_for_a_delay(view: Model, text: Text, mention: Mention, goal: Goal) -> None:
+    """ "finish by 7 am" where the model only counts hours from now: say so, do not guess."""
+    for info in view.infos.values():
+        if info.role != "setting" or info.timing != "delay" or info.name in goal:
+            continue
+        if near_vocab(info, text, mention.start, mention.end) >= 0.5:
+            raise GoalParseError(
+                text.span(mention.start, mention.end),
+                f"{info.name} is a time from now, not a time of day; give it as 'in N hours'",
+            )
+
+
+def _unplaced(view: Model, text: Text, mention: Mention, goal: Goal) -> None:
+    """A quantity with a unit that only open variables of its kind could take, none of which
+    has the value: the model cannot do what was asked."""
+    if mention.kind == "number":
+        return
+    kinds = []
+    for name, info in view.infos.items():
+        if info.role != "setting":
+            continue
+        timed = isinstance(info.var, TimeVariable) or info.dimension == "time"
+        if (
+            (mention.kind == "clock" and info.timing in ("clock", "finish"))
+            or (mention.kind == "duration" and timed)
+            or (mention.kind == "fahrenheit" and info.dimension == "temperature")
+            or (mention.kind == "quantity" and info.dimension == mention.dimension)
+        ):
+            kinds.append(name)
+    if not kinds and mention.kind == "clock":
+        _clock_for_a_delay(view, text, mention, goal)
+    if not kinds:
+        return
+    closeness = {n: near_vocab(view.infos[n], text, mention.start, mention.end) for n in kinds}
+    near = max(kinds, key=lambda n: closeness[n])
+    if mention.kind == "clock" and closeness[near] < 0.5:
+        return  # a time of day said in passing ("a 3 a.m. feed")
+    if any(name in goal for name in kinds) and (near in goal or closeness[near] < 0.5):
+        return  # another setting of its kind was given; this may be a remark
+    info = view.infos[near]
+    values = domain_values(view, info, goal)
+    parent = info.var.depends_on
+    if not values and parent:
+        reason = f"{near} does not apply when {parent} is {goal.get(parent)!r}"
+    else:
+        where = f" when {parent} is {goal[parent]!r}" if parent and parent in goal else ""
+        reason = f"no setting of this model takes it; {near} can be {preview(values, quote=False)}"
+        reason += where
+    error = GoalParseError(text.span(mention.start, mention.end), reason)
+    error.setting, error.asked = near, _as_said(info, mention)
+    if error.asked is None:
+        error.setting = None
+    raise error
+
+
+def _as_said(info: VarInfo, mention: Mention) -> Any:
+    """The quantity as the user said it, in the setting's own terms (None: no such terms)."""
+    var = info.var
+    if isinstance(var, TimeVariable) and mention.kind in ("duration", "clock"):
+        return format_hms(round(mention.value))
+    if isinstance(var, NumericVariable):
+        number = number_for(info, unit_text(var), mention)
+        if number is not None:
+            return int(number) if float(number).is_integer() else round(number, 3)
+    return None

@@ -1,0 +1,184 @@
+"""Whether a quantity fits a variable: the canonical value a mention (number, duration, clock
+time, quantity with a unit) gives one setting, in that setting's unit and domain."""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+from apbot.model.schema import NumericVariable, TimeVariable
+from apbot.model.values import format_hms, unit_of
+from apbot.read.goal_view import Goal, Model, VarInfo, domain_values, parse_quantity, unit_text
+from apbot.read.goal_vocab import concept
+from apbot.read.numbers import Mention, find_mentions, tokenize
+
+
+def fit(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
+    """The canonical value a mention gives this variable, or None when it does not fit."""
+    counted = mention.kind == "number" and mention.unit
+    if counted and concept(mention.unit) not in info.vocab and not _COUNTING & set(info.vocab):
+        return None  # "two slices" counts slices: only a quantity setting takes it
+    domain = domain_values(view, info, goal)
+    var = info.var
+    if isinstance(var, TimeVariable):
+        if mention.kind == "duration" and info.timing not in ("clock", "finish"):
+            seconds = round(mention.value)
+        elif mention.kind == "clock" and info.timing in ("duration", "delay"):
+            if not mention.colon or mention.meridiem or mention.lead not in ("for", "to", "of"):
+                return None
+            hours, minutes = divmod(round(mention.value) // 60, 60)
+            # "for 1:30": minutes and seconds on a mm:ss display, else hours and minutes
+            seconds = hours * 60 + minutes if var.format == "mm:ss" else round(mention.value)
+        elif mention.kind == "clock":
+            seconds = round(mention.value)
+            if format_hms(seconds) not in domain and seconds >= 13 * 3600:
+                # a 12-hour clock: 19:00 is 7:00
+                seconds -= 12 * 3600
+        else:
+            return None
+        value = format_hms(seconds)
+        return value if value in domain else None
+    if isinstance(var, NumericVariable):
+        unit = unit_text(var)
+        number = number_for(info, unit, mention)
+        if number is None:
+            return _percent_of_level(info, mention, domain)
+        fahrenheit_dial = unit.casefold() in ("°f", "f")
+        converted = (mention.kind == "fahrenheit" and not fahrenheit_dial) or (
+            fahrenheit_dial and mention.unit in ("°c", "c", "celsius")
+        )
+        tolerance = (_F_TOLERANCE * (1.8 if fahrenheit_dial else 1.0)) if converted else 1e-6
+        return _in_numeric(number, domain, tolerance=tolerance)
+    # discrete values that are numbers ("60", "1000") or quantities ("1.75 oz", "450 W")
+    measured = _measure(mention)
+    if measured is None:
+        return None
+    amount, dimension = measured
+    for value in domain:
+        q = parse_quantity(str(value))
+        if q is None:
+            continue
+        if q[1] is not None:
+            if q[1] == dimension and abs(q[0] - amount) < 1e-6 * max(1.0, abs(amount)):
+                return value
+        elif dimension is None or dimension == info.dimension:
+            if abs(q[0] - amount) < 1e-6:
+                return value
+        elif (
+            dimension == "fahrenheit"
+            and info.dimension == "temperature"
+            and abs(q[0] - (amount - 32) * 5 / 9) < 0.6
+        ):
+            return value
+    return (
+        _coded(domain, mention)
+        or _show_quantity(info, mention)
+        or _named_quantity(view, info, mention, domain)
+    )
+
+
+CODE = re.compile(r"[A-Za-z]{1,2}[- ]?(\d+)")
+
+
+def _coded(domain: list[Any], mention: Mention) -> Any:
+    """ "programme 5" for a value written P5, "menu 6" for A-6: a short prefix and the number."""
+    if mention.kind != "number" or mention.value != int(mention.value):
+        return None
+    found = [v for v in domain if (m := CODE.fullmatch(str(v))) and int(m[1]) == mention.value]
+    return found[0] if len(found) == 1 else None
+
+
+def _percent_of_level(info: VarInfo, mention: Mention, domain: list[Any]) -> Any:
+    """ "50% power" on a power level of 1-10 is level 5."""
+    if mention.dimension != "ratio" or not domain or info.dimension is not None:
+        return None
+    if not ({concept("power"), concept("level")} & set(info.vocab)):
+        return None
+    top = max(float(v) for v in domain)
+    if top not in (10, 100):
+        return None
+    return _in_numeric(mention.value * top / 100, domain)
+
+
+_COUNTING = frozenset(
+    concept(w) for w in ("quantity", "qty", "count", "number", "servings", "pieces", "portions")
+)
+
+
+def _measure(mention: Mention) -> tuple[float, str | None] | None:
+    if mention.kind == "number":
+        return mention.value, None
+    if mention.kind in ("quantity", "fahrenheit"):
+        return mention.value, mention.dimension
+    if mention.kind == "duration":
+        return mention.value, "time"
+    return None
+
+
+def _base_unit(dimension: str) -> str:
+    return {"temperature": "°C", "ratio": "%", "speed": "rpm"}.get(dimension, "")
+
+
+def _show_quantity(info: VarInfo, mention: Mention) -> Any:
+    """A discrete value whose display text holds the mentioned quantity ("POT 600mL")."""
+    show = info.var.show if isinstance(info.var.show, dict) else {}
+    if mention.kind != "quantity" or not show:
+        return None
+    for value, text in show.items():
+        for m in find_mentions(tokenize(text)):
+            same = m.kind == "quantity" and m.dimension == mention.dimension
+            if same and abs(m.value - mention.value) < 1e-6:
+                return value
+    return None
+
+
+def _named_quantity(view: Model, info: VarInfo, mention: Mention, domain: list[Any]) -> Any:
+    """A coded value the manual gives as this quantity ("60 %" for knob mark 2)."""
+    for value, text in view.named_quantities.get(info.name, []):
+        for m in find_mentions(tokenize(text)):
+            same = m.dimension == mention.dimension and m.kind == mention.kind
+            if same and abs(m.value - mention.value) < 1e-6 and value in domain:
+                return value
+    return None
+
+
+def number_for(info: VarInfo, unit: str, mention: Mention) -> float | None:
+    """The mention as a number in ``unit`` (None when the dimensions differ)."""
+    target = unit_of(unit) if unit else None
+    if mention.kind == "number":
+        return mention.value
+    if mention.kind == "duration":
+        if target is None or target[0] != "time":
+            return None
+        return mention.value / target[1]
+    if mention.kind == "fahrenheit":
+        if unit.casefold() in ("°f", "f"):
+            return mention.value
+        if target is not None and target[0] == "temperature":
+            return round((mention.value - 32) * 5 / 9, 6)
+        return None
+    if mention.kind == "quantity":
+        if target is None:
+            if unit:
+                return None
+            return mention.value if mention.dimension in (None, info.dimension) else None
+        if unit.casefold() in ("°f", "f") and mention.dimension == "temperature":
+            if mention.unit in ("°c", "c", "celsius"):
+                return round(mention.value * 9 / 5 + 32, 6)  # "180 °C" on a Fahrenheit dial
+            return mention.value  # "350 degrees" on a Fahrenheit dial
+        if target[0] != mention.dimension:
+            return None
+        return mention.value / target[1]
+    return None
+
+
+_F_TOLERANCE = 5.0
+"""°C a Fahrenheit figure may miss a Celsius dial by: 350 °F is 176.7 °C, printed as 180 °C."""
+
+
+def _in_numeric(number: float, domain: list[Any], tolerance: float = 1e-6) -> Any:
+    """The domain value equal to ``number`` (or nearest within ``tolerance``)."""
+    best = min(domain, key=lambda v: abs(float(v) - number), default=None)
+    if best is not None and abs(float(best) - number) <= tolerance:
+        return best
+    return None

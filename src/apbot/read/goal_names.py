@@ -1,0 +1,247 @@
+"""Value names in an instruction: each discrete value (or a key that sets one value) matched as a
+phrase against the stemmed words, and the words that say a match names something else."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import Any
+
+from apbot.read.goal_fit import CODE
+from apbot.read.goal_text import (
+    CLAUSE_ENDS,
+    CONNECTORS,
+    NUMBER_WORDS,
+    Text,
+    near_vocab,
+    negated_before,
+    phrase_here,
+    turned_off_after,
+    verb_positions,
+)
+from apbot.read.goal_view import PARTIAL, Goal, Model, own_stems
+from apbot.read.goal_vocab import HIGHEST, LOWEST, SYNONYMS, similar, stem
+from apbot.read.numbers import COUNT_NOUNS
+
+
+@dataclass
+class _Match:
+    var: str
+    value: Any
+    start: int
+    end: int
+    score: float
+
+
+def value_matches(view: Model, text: Text) -> list[_Match]:
+    matches: list[_Match] = []
+    n = len(text.tokens)
+    verbs = verb_positions(text)
+    itself = {stem(w) for w in re.findall(r"[a-z]+", _appliance_name(view))}
+    running = {stem(n) for n, info in view.infos.items() if info.role == "running"}
+    for var, value, stems, weight in view.phrases:
+        info = view.infos[var]
+        for i in range(n):
+            found = _match_at(text, i, stems)
+            if found is None:
+                continue
+            end, quality = found
+            if negated_before(text, i) or turned_off_after(text, end):
+                continue
+            if text.word(i - 1) in ("stay", "stays", "remain", "remains"):
+                continue  # "so the bottles stay dry": a state of the load, not the DRY cycle
+            if quality < 1.0 and text.stems[end - 1] in itself and i not in verbs:
+                continue  # "turn on the air fryer": the appliance, not its AIR FRY programme
+            if text.word(end) == "-" and text.word(end + 1) in ("off", "on"):
+                continue  # "auto-off" names a timer, not the AUTO mode
+            own = near_vocab(info, text, i, end, reach=2)
+            opening = i == 0 or text.word(i - 1) in (".", ";", "!")
+            if weight <= PARTIAL and not (own or (opening and text.word(end) in ("with", ","))):
+                continue  # a first word alone names a value only beside "programme"
+                # (or opening the sentence: "Auto with ExtraDry")
+            if _names_other(view, var, text, i, end):
+                continue  # "power level 8" is not the POWER mode
+            if len(stems) == 1 and _names_switch(view, var, text, i):
+                continue  # "switch the light on" is the LIGHT, not a light crust
+            if len(stems) == 1 and _qualifies_other(view, var, text, end):
+                continue  # "manual speed 3": the speed, in its manual kind
+            if len(stems) == 1 and text.stems[i] in running and not own:
+                continue  # "Brew six cups", "get it brewing": the operation, not a BREW mode
+            if len(stems) == 1 and _names_setting(view, var, text, i):
+                continue  # "low fan", "fan on quiet": the FAN setting, not the FAN mode
+            score = len(stems) * weight * quality + 0.5 * own
+            if i in verbs and len(stems) == 1:
+                score *= 0.5  # "bake a French loaf": the verb is weaker than the noun
+            matches.append(_Match(var, value, i, end, score))
+    matches.sort(key=lambda m: (-m.score, m.start))
+    return _prefer_heads(matches)
+
+
+def _names_switch(view: Model, var: str, text: Text, i: int) -> bool:
+    """The word at i is an on/off setting's own name, and nothing of ``var`` stands next to it."""
+    if near_vocab(view.infos[var], text, i, i + 1, reach=2):
+        return False
+    for name, info in view.infos.items():
+        own = own_stems(info)
+        if name == var or info.role != "switch" or text.stems[i] not in own:
+            continue
+        said = text.word(i + 1) in ("on", "off") and text.word(i + 2) not in ("a", "an", "the")
+        if said or phrase_here(text, i, own - {text.stems[i]}):
+            return True  # "switch the light on" (not "AUTO on a half load")
+    return False
+
+
+def _qualifies_other(view: Model, var: str, text: Text, end: int) -> bool:
+    """The value word stands right before another setting's own name, which a number or a
+    superlative then sets ("manual speed 3", "the highest manual speed")."""
+    if end >= len(text.tokens):
+        return False
+    others = [
+        info
+        for name, info in view.infos.items()
+        if name != var and info.role == "setting" and text.stems[end] in own_stems(info)
+    ]
+    if not others:
+        return False
+    following = text.word(end + 1)
+    before = text.word(end - 2)
+    return following[:1].isdigit() or following in NUMBER_WORDS or before in LOWEST | HIGHEST
+
+
+def _appliance_name(view: Model) -> str:
+    appliance = view.model.appliance
+    return f"{appliance.name} {appliance.category.replace('_', ' ')}".casefold()
+
+
+def _names_setting(view: Model, var: str, text: Text, i: int) -> bool:
+    """The word at i is another setting's own name and one of that setting's values stands
+    right beside it ("low fan", "fan on quiet", "high fan")."""
+    if near_vocab(view.infos[var], text, i, i + 1, reach=1):
+        return False  # "fan mode": the mode's own word is next to it
+    for name, info in view.infos.items():
+        if name == var or info.role != "setting" or text.stems[i] not in own_stems(info):
+            continue
+        values = {stem(str(v)) for v in info.values if str(v).isalpha()}
+        after = i + 2 if text.word(i + 1) in ("on", "at", "to") else i + 1
+        after += 1 if text.word(after) in ("the", "a") else 0
+        for j in (i - 1, i + 1, after):
+            if 0 <= j < len(text.tokens) and text.stems[j] in values:
+                return True  # "low fan", "fan on quiet", "the fan to the quiet speed"
+    return False
+
+
+def _prefer_heads(matches: list[_Match]) -> list[_Match]:
+    """Of two values of one variable side by side ("UV storage"), the second — the head noun —
+    is meant, unless it matched much worse."""
+    best: dict[str, _Match] = {}
+    for match in matches:
+        best.setdefault(match.var, match)
+    for var, first in best.items():
+        for other in matches:
+            if other.var == var and other.start == first.end and other.score >= first.score - 0.3:
+                other.score = first.score + 0.01
+    matches.sort(key=lambda m: (-m.score, m.start))
+    return matches
+
+
+def _names_other(view: Model, var: str, text: Text, i: int, end: int) -> bool:
+    """The words i..end name another variable, and a number or more of that variable's words
+    follow ("power level 8" sets the level, not the POWER mode)."""
+    keys = [text.concepts[k] for k in range(i, end) if text.word(k) not in CONNECTORS]
+    others = [
+        info
+        for name, info in view.infos.items()
+        if name != var and all(info.vocab.get(key, 0.0) >= 0.8 for key in keys)
+    ]
+    if not others:
+        return False
+    shared = {key for info in others for key in info.vocab}
+    for k in (i - 1, end):
+        key = text.concepts[k] if 0 <= k < len(text.concepts) else ""
+        if key in view.infos[var].vocab and key not in shared:
+            return False  # "temperature mode": the mode's own word is next to it
+    k = end + 1 if text.word(end) == "(" else end
+    following = text.word(k)
+    if (following[:1].isdigit() or following in NUMBER_WORDS) and text.word(
+        k + 1
+    ) not in COUNT_NOUNS:
+        return True
+    key = text.concepts[k] if k < len(text.concepts) else ""
+    return any(info.vocab.get(key, 0.0) for info in others)
+
+
+def _match_at(text: Text, i: int, stems: tuple[str, ...]) -> tuple[int, float] | None:
+    """End and quality of the phrase ``stems`` matched from token i (connectors may sit
+    between words; a synonym or a longer word that starts like the value counts less)."""
+    k = i
+    quality = 1.0
+    for index, target in enumerate(stems):
+        if index:
+            while text.word(k) in CONNECTORS and k < len(text.tokens):
+                k += 1
+            if index == 1 and stems[0] in _SPLIT_VERBS and len(stems) == 2:
+                # "keep the chili warm": KEEP WARM around its object
+                gap = next(
+                    (j for j in range(k, min(k + 4, len(text.tokens))) if text.stems[j] == target),
+                    None,
+                )
+                k = gap if gap is not None else k
+        if k >= len(text.tokens):
+            return None
+        here = text.stems[k]
+        if here == target:
+            pass
+        elif text.word(k).endswith("ly") and len(text.word(k)) > 5:
+            return None  # "automatically" says how, it does not name AUTO
+        elif similar(here, target):
+            quality = min(quality, 0.9)
+        elif here in _SYNONYM_STEMS.get(target, ()):
+            quality = min(quality, 0.8)
+        elif (
+            len(target) >= 4
+            and here.startswith(target)
+            and (len(here) <= len(target) + 4 or len(target) >= 5 or len(stems) > 1)
+            and text.word(k) not in LOWEST | HIGHEST
+        ):
+            quality = min(quality, 0.8)  # "storage" for STORE, "convection bake" for CONV BAKE
+        elif len(stems) == 1 and len(target) >= 5 and here.endswith(target):
+            quality = min(quality, 0.7)  # "multigrain" for GRAINS
+        elif len(target) >= 3 and here == target + "er":
+            quality = min(quality, 0.8)  # "the air fryer" for AIR FRY
+        elif len(stems) > 1 and len(here) >= 3 and target.startswith(here):
+            quality = min(quality, 0.7)  # "frozen veg" for frozen vegetables
+        else:
+            return None
+        k += 1
+    return k, quality
+
+
+_SPLIT_VERBS = frozenset({stem("keep")})
+
+
+_SYNONYM_STEMS: dict[str, frozenset[str]] = {
+    stem(word): frozenset(stem(w) for w in others) for word, others in SYNONYMS.items()
+}
+
+
+def pronoun_ones(text: Text, claimed: set[int]) -> None:
+    """ "on the rear one", "the big one": "one" after "the" and a word is a pronoun."""
+    for k, token in enumerate(text.tokens):
+        ends = CLAUSE_ENDS | {",", "and", "with", "at", "on", "to", ""}
+        if token.text == "one" and text.word(k - 2) == "the" and text.word(k + 1) in ends:
+            claimed.add(k)
+
+
+def restated_codes(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
+    """ "yogurt (menu 12)": the number beside the setting's word restates the value already
+    read by name (its code); it is not another setting."""
+    for k, token in enumerate(text.tokens):
+        if k in claimed or not token.text.isdigit() or k == 0:
+            continue
+        key = text.concepts[k - 1]
+        for name, value in goal.items():
+            if view.infos[name].vocab.get(key, 0.0) < 0.8:
+                continue
+            code = CODE.fullmatch(str(value)) or re.fullmatch(r"(\d+)", str(value))
+            if code is not None and int(code[1]) == int(token.text):
+                claimed.add(k)

@@ -1,0 +1,123 @@
+"""Superlatives and scales: "the lowest temperature", "full power", "a dark crust" on an
+ordered setting."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from apbot.model.schema import DiscreteVariable, NumericVariable, TimeVariable
+from apbot.read.goal_text import Text, near_vocab
+from apbot.read.goal_twins import find_twins
+from apbot.read.goal_view import (
+    Goal,
+    Model,
+    VarInfo,
+    domain_values,
+    generic,
+    magnitude,
+    numeric_values,
+    parse_quantity,
+    quantity_dimensions,
+)
+from apbot.read.goal_vocab import HIGHEST, LOWEST, SCALES, concept
+
+
+def superlatives(
+    view: Model, text: Text, goal: Goal, claimed: set[int], where: dict[str, int]
+) -> None:
+    """ "the lowest temperature", "full power", "a dark crust" on an ordered numeric setting."""
+    marks = {m for twins in find_twins(view.model) for m in twins.marks.values()}
+    for k, token in enumerate(text.tokens):
+        word = token.text
+        if k in claimed or word in marks:
+            continue  # "the top zone" on an oven with a top and a bottom
+        end = None
+        if word in LOWEST:
+            end = 0
+        elif word in HIGHEST:
+            end = -1
+        scale_index = None
+        for scale in SCALES:
+            said = "medium" if word in ("middle", "mid", "med") else word
+            if said in scale:
+                scale_index = (scale.index(said), len(scale))
+        if end is None and scale_index is None:
+            continue
+        if end is not None and _names_set(view, text, k, goal):
+            continue  # "the lowest humidity setting, 40%": said of a setting already read
+        best: tuple[float, str] | None = None
+        for name, info in view.infos.items():
+            if name in goal or info.role != "setting" or not _ordered(info):
+                continue
+            values = domain_values(view, info, goal)
+            if scale_index is not None and end is None and len(values) != scale_index[1]:
+                continue
+            score = near_vocab(info, text, k, k + 1, reach=4)
+            if score > 0 and (best is None or score > best[0]):
+                best = (score, name)
+        if best is None:
+            continue
+        name = best[1]
+        values = _ordered_values(domain_values(view, view.infos[name], goal))
+        if not values:
+            continue
+        if end == 0 and len(values) > 2 and _is_off_level(view.infos[name], values[0]):
+            goal[name] = values[1]  # "the lowest level": the lowest one that works, not off
+        elif end is not None:
+            goal[name] = values[end]
+        elif scale_index is not None:
+            goal[name] = values[scale_index[0]]
+        where[name] = k
+        claimed.add(k)
+
+
+def _names_set(view: Model, text: Text, k: int, goal: Goal) -> bool:
+    """The word after the superlative names (not generically) a setting the goal already has."""
+    for j in (k + 1, k + 2):
+        key = text.concepts[j] if j < len(text.concepts) else ""
+        if key and not generic(key) and any(view.infos[n].vocab.get(key, 0.0) >= 0.8 for n in goal):
+            return True
+    return False
+
+
+def _is_off_level(info: VarInfo, lowest: Any) -> bool:
+    """A power or level setting whose lowest value, 0, is off rather than a level."""
+    return (
+        isinstance(info.var, NumericVariable)
+        and info.dimension in (None, "power")
+        and bool({concept("power"), concept("level")} & set(info.vocab))
+        and magnitude(lowest) == 0
+    )
+
+
+def _ordered(info: VarInfo) -> bool:
+    return isinstance(info.var, NumericVariable | TimeVariable) or (
+        isinstance(info.var, DiscreteVariable)
+        and (
+            numeric_values(info.values)
+            or bool(quantity_dimensions(info.values))
+            or len(_scaled(info.values)) >= 2
+        )
+    )
+
+
+def _scaled(values: list[Any]) -> list[Any]:
+    """Values that are words of one scale ("low", "medium", "high"), in the scale's order."""
+    for scale in SCALES:
+        found = [v for v in values if str(v).casefold() in scale]
+        if len(found) >= 2:
+            return sorted(found, key=lambda v: scale.index(str(v).casefold()))
+    return []
+
+
+def _ordered_values(values: list[Any]) -> list[Any]:
+    """Values in order of size: numbers and times as they are; of a discrete list, the ones
+    that are quantities ("100 W" < "450 W"), by size, or the words of a scale (low < high)."""
+    if all(isinstance(v, int | float) for v in values) or all(
+        str(v).count(":") == 2 for v in values
+    ):
+        return values
+    sized = [(q[0], v) for v in values if (q := parse_quantity(str(v))) is not None]
+    if len(sized) < 2 and _scaled(values):
+        return _scaled(values)
+    return [v for _size, v in sorted(sized, key=lambda pair: pair[0])]
