@@ -54,3 +54,12 @@ def test_a_numbered_menu_read_as_a_number_is_named_by_the_manuals_table() -> Non
     # a setting with a unit counts something: its numbers are no codes
     weight = {"type": "numeric", "ranges": [[1, 15, 1]], "label": "WEIGHT", "unit": "kg"}
     assert "weight" not in parse_instruction(_model({"weight": weight}), "the jam one", manual)
+
+
+def test_the_end_of_a_hyphenated_compound_is_a_weaker_name_than_a_whole_word() -> None:
+    cycle = {"type": "discrete", "values": ["auto", "steril", "dry", "keep"], "label": "CYCLE"}
+    model = _model({"cycle": cycle})
+    said = "Only sterilise them this time, I will air-dry them myself."
+    assert parse_instruction(model, said) == {"cycle": "steril"}
+    assert parse_instruction(model, "the automatic steam-and-dry cycle") == {"cycle": "auto"}
+    assert parse_instruction(model, "just dry them") == {"cycle": "dry"}

@@ -72,9 +72,17 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
             score = len(stems) * weight * quality + 0.5 * own
             if i in verbs and len(stems) == 1:
                 score *= 0.5  # "bake a French loaf": the verb is weaker than the noun
+            if len(stems) == 1 and _compound_tail(text, i):
+                score *= 0.5  # "air-dry", "sterilise-and-dry": the end of another word
             matches.append(_Match(var, value, i, end, score))
     matches.sort(key=lambda m: (-m.score, m.start))
     return _prefer_heads(matches)
+
+
+def _compound_tail(text: Text, i: int) -> bool:
+    """The word at i ends a hyphenated compound whose first part the match leaves out: "I'll
+    air-dry them" is no DRY programme, the automatic "sterilise-and-dry" programme no DRY."""
+    return text.word(i - 1) == "-" and text.word(i - 2).isalpha()
 
 
 def _names_switch(view: Model, var: str, text: Text, i: int) -> bool:
