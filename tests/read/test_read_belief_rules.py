@@ -63,3 +63,19 @@ def test_the_end_of_a_hyphenated_compound_is_a_weaker_name_than_a_whole_word() -
     assert parse_instruction(model, said) == {"cycle": "steril"}
     assert parse_instruction(model, "the automatic steam-and-dry cycle") == {"cycle": "auto"}
     assert parse_instruction(model, "just dry them") == {"cycle": "dry"}
+
+
+def test_a_settings_name_beside_a_synonym_of_its_value_is_that_setting() -> None:
+    # a reader may file a setting's own name among another setting's values
+    rice = {"type": "discrete", "values": ["white", "brown"], "label": "RICE"}
+    extra = {"type": "discrete", "values": ["texture", "if needed"], "label": "MENU"}
+    texture = {"type": "discrete", "values": ["regular", "softer", "harder"], "label": "TEXTURE"}
+    model = _model({"rice": rice, "extra": extra, "texture": texture})
+    assert parse_instruction(model, "brown rice with the soft texture") == {
+        "rice": "brown",
+        "texture": "softer",
+    }
+    assert parse_instruction(model, "white rice, firm texture") == {
+        "rice": "white",
+        "texture": "harder",
+    }

@@ -130,11 +130,12 @@ def _names_setting(view: Model, var: str, text: Text, i: int) -> bool:
         if name == var or info.role != "setting" or text.stems[i] not in own_stems(info):
             continue
         values = {stem(str(v)) for v in info.values if str(v).isalpha()}
+        said = values | {s for v in values for s in _SYNONYM_STEMS.get(v, ())}
         after = i + 2 if text.word(i + 1) in ("on", "at", "to") else i + 1
         after += 1 if text.word(after) in ("the", "a") else 0
         for j in (i - 1, i + 1, after):
-            if 0 <= j < len(text.tokens) and text.stems[j] in values:
-                return True  # "low fan", "fan on quiet", "the fan to the quiet speed"
+            if 0 <= j < len(text.tokens) and text.stems[j] in said:
+                return True  # "low fan", "fan on quiet", "the soft texture" (SOFTER)
     return False
 
 
