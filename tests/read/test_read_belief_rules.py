@@ -79,3 +79,11 @@ def test_a_settings_name_beside_a_synonym_of_its_value_is_that_setting() -> None
         "rice": "white",
         "texture": "harder",
     }
+
+
+def test_a_switch_named_like_a_setting_that_took_a_value_is_not_named_again() -> None:
+    # a reader may keep a key's hold function as a switch under the same label
+    cook = {"type": "time", "ranges": [["00:30:00", "04:00:00", 600]], "label": "COOK TIME"}
+    hold = {"type": "discrete", "values": ["off", "on"], "label": "COOK TIME"}
+    model = _model({"cook_time": cook, "cook_time_hold": hold})
+    assert parse_instruction(model, "a cooking time of 1.5 hours") == {"cook_time": "01:30:00"}

@@ -58,6 +58,8 @@ def switches(
         if info.role != "switch" or name in goal:
             continue
         own = own_stems(info)
+        if any(own == own_stems(view.infos[other]) for other in goal):
+            continue  # COOK TIME (on/off) beside a COOK TIME given a value: the words named that
         best: tuple[float, int] | None = None
         left = False  # "leave the auto switched off": as it is, not a setting asked for
         for k in range(len(text.tokens)):
