@@ -87,3 +87,16 @@ def test_a_switch_named_like_a_setting_that_took_a_value_is_not_named_again() ->
     hold = {"type": "discrete", "values": ["off", "on"], "label": "COOK TIME"}
     model = _model({"cook_time": cook, "cook_time_hold": hold})
     assert parse_instruction(model, "a cooking time of 1.5 hours") == {"cook_time": "01:30:00"}
+
+
+def test_the_manuals_title_names_the_appliance_a_reader_left_unnamed() -> None:
+    power = {"type": "discrete", "values": ["off", "on"], "label": "POWER"}
+    temp = {"type": "numeric", "ranges": [[40, 95, 5]], "unit": "°C", "label": "TEMP"}
+    model = _model({"power": power, "temp": temp})
+    said = "Switch the urn on and set it to 85 degrees."
+    assert parse_instruction(model, said) == {"temp": 85}  # the belief says nothing of an urn
+    titled = "# Calda C-2 Hot Drinks Urn\n\nThank you for choosing Calda.\n"
+    assert parse_instruction(model, said, titled) == {"power": "on", "temp": 85}
+    plain = "CALDA\nBeverage equipment\nC-2 test Urn 2.5 kW\nInstruction manual\n"
+    assert parse_instruction(model, said, plain) == {"power": "on", "temp": 85}
+    assert parse_instruction(model, "Turn the temp on", titled) == {}

@@ -157,3 +157,32 @@ def legend_words(
                 if thing is not None and thing[1].casefold() not in _LEGEND_VERBS:
                     out.setdefault(name, set()).add(thing[1].casefold())
     return out
+
+
+_NOT_HEADS = frozenset(
+    {"manual", "manuals", "instructions", "instruction", "guide", "handbook", "booklet", "use"}
+    | {"operating", "owner", "owners", "user", "users", "care", "and", "for", "the", "with"}
+)
+
+
+def title_nouns(manual: str, known: frozenset[str]) -> set[str]:
+    """What the manual's title calls the appliance ("Instant Hot Water Dispenser", "Countertop
+    Induction Range 3.5 kW"): the head noun, the title's last word. A person says "switch the
+    dispenser on" of an appliance the reader could not name. The title is the first heading, or
+    else the first of the opening lines with a word of ``known`` (the category's words)."""
+    lines = [line.strip() for line in manual.splitlines()[:40] if line.strip()][:12]
+    title = next((line for line in lines if line.startswith("#")), None)
+    if title is None:
+        title = next(
+            (
+                line
+                for line in lines
+                if known & {w.casefold() for w in re.findall(r"[A-Za-z]+", line)}
+            ),
+            None,
+        )
+    if title is None:
+        return set()
+    words = [w.casefold() for w in re.findall(r"[A-Za-z]{3,}", title)]
+    words = [w for w in words if w not in _NOT_HEADS]
+    return {words[-1]} if words else set()

@@ -26,7 +26,7 @@ from apbot.model.schema import (
 )
 from apbot.model.values import parse_quantity as _parse_quantity
 from apbot.model.values import unit_of
-from apbot.read.goal_manual import coded_names, legend_words
+from apbot.read.goal_manual import coded_names, legend_words, title_nouns
 from apbot.read.goal_vocab import (
     LETTER_WORDS,
     STOP_WORDS,
@@ -270,6 +270,13 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
             "everything",
         )
     }
+    category = frozenset(model.appliance.category.casefold().split("_"))
+    said = {s for _var, _value, stems, _weight in phrases for s in stems}
+    appliance |= {
+        concept(w)
+        for w in title_nouns(manual, category)
+        if stem(w) not in said and not any(concept(w) in i.vocab for i in infos.values())
+    }  # "switch the dispenser on": not a setting's or a value's word
     keys: dict[str, list[str]] = {}
     for _feature, _index, step in _steps_of(model):
         if step.variable in infos and infos[step.variable].role == "switch":
