@@ -100,3 +100,13 @@ def test_the_manuals_title_names_the_appliance_a_reader_left_unnamed() -> None:
     plain = "CALDA\nBeverage equipment\nC-2 test Urn 2.5 kW\nInstruction manual\n"
     assert parse_instruction(model, said, plain) == {"power": "on", "temp": 85}
     assert parse_instruction(model, "Turn the temp on", titled) == {}
+
+
+def test_output_is_a_word_for_power() -> None:
+    watt = {"type": "numeric", "ranges": [[500, 3500, 100]], "label": "WATT"}
+    time = {"type": "numeric", "ranges": [[1, 180, 1]], "label": "TIME", "unit": "min"}
+    model = _model({"watt": watt, "time": time})
+    assert parse_instruction(model, "set the lowest output for 20 minutes") == {
+        "watt": 500,
+        "time": 20,
+    }

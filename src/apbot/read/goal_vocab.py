@@ -91,7 +91,7 @@ _GROUPS: tuple[tuple[str, ...], ...] = (
     ("sterilize", "steam", "sterilise", "sanitize", "uv"),
     ("humidity", "rh", "humid", "humidistat"),
     ("fan", "airflow", "air", "blower", "convection"),
-    ("power", "watt", "watts", "wattage", "kw", "kilowatt"),
+    ("power", "watt", "watts", "wattage", "kw", "kilowatt", "output"),
     ("level", "setting", "mark"),
     ("size", "loaf", "portion", "amount", "weight"),
     ("crust", "colour", "color", "browning"),
