@@ -11,13 +11,16 @@ from apbot.read.goal import parse_instruction
 from apbot.read.values import Range, find_ranges
 
 
-def _model(variables: dict[str, Any]) -> ApplianceModel:
+def _model(variables: dict[str, Any], labels: dict[str, str] | None = None) -> ApplianceModel:
+    labels = labels or {}
     actions = {f"press_{name}": {"control": name} for name in variables}
     return ApplianceModel.model_validate(
         {
             "appliance": {"id": "m", "category": "test", "name": "m"},
             "variables": variables,
-            "controls": [{"id": n, "kind": "button", "label": n.upper()} for n in variables],
+            "controls": [
+                {"id": n, "kind": "button", "label": labels.get(n, n.upper())} for n in variables
+            ],
             "actions": actions,
             "features": {
                 f"set_{n}": [{"actions": [f"press_{n}"], "variable": n, "effect": "next"}]
@@ -110,3 +113,22 @@ def test_output_is_a_word_for_power() -> None:
         "watt": 500,
         "time": 20,
     }
+
+
+def test_a_setting_is_named_by_the_manuals_description_of_it() -> None:
+    extra = {"type": "discrete", "values": ["off", "on"], "label": "ADD-IN"}
+    menu = {"type": "discrete", "values": ["basic", "dough", "jam"], "label": "MENU"}
+    model = _model({"extra": extra, "menu": menu}, labels={"extra": "ADD-IN"})
+    manual = (
+        "| Key | What it does |\n|---|---|\n"
+        "| ADD-IN | Tells you when to drop in raisins or seeds |\n"
+        "| MENU | Steps through the programmes |\n\n"
+        "DOUGH     Kneads and proves only, no baking.\n"
+    )
+    said = "Basic bread, without the raisins and seeds reminder."
+    assert parse_instruction(model, said) == {"menu": "basic"}  # no manual: nothing to look up
+    assert parse_instruction(model, said, manual) == {"menu": "basic", "extra": "off"}
+    assert parse_instruction(model, "just knead and prove it", manual) == {"menu": "dough"}
+    # one word of a description names nothing; nor do words a setting of the model has
+    assert parse_instruction(model, "basic, with seeds", manual) == {"menu": "basic"}
+    assert parse_instruction(model, "the basic programmes", manual) == {"menu": "basic"}

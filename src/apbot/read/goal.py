@@ -29,6 +29,7 @@ from apbot.model.domain import ValueProblem, normalise
 from apbot.model.schema import ApplianceModel, DiscreteVariable
 from apbot.model.values import closest_matches, preview
 from apbot.read.goal_assign import assign_mentions, distinct
+from apbot.read.goal_described import described_settings
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
 from apbot.read.goal_scales import superlatives
@@ -97,6 +98,7 @@ def parse_instruction(
     superlatives(view, text, goal, claimed, where)
     zero_settings(view, text, goal, claimed, where)
     no_values(view, text, goal, claimed)
+    described_settings(view, text, goal, claimed, where)
     switches(view, text, goal, claimed, where)
     place_twins(view, text, goal, where)
     entry_switches(view, goal)

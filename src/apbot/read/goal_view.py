@@ -98,6 +98,8 @@ class Model:
     appliance_words: frozenset[str]
     named_quantities: dict[str, list[tuple[Any, str]]] = field(default_factory=dict)
     # var -> (value, "60 %"): a coded value the manual gives as a quantity (knob mark 2: 60 %)
+    manual: str = ""
+    switch_keys: dict[str, list[str]] = field(default_factory=dict)  # switch -> its keys' labels
 
 
 @lru_cache(maxsize=65536)
@@ -297,7 +299,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         names = [w for w in _phrase_words(label) if w != "and"]
         if names and not all(w in STOP_WORDS for w in names):
             phrases.append((coded, value, tuple(stem(w) for w in names), 0.95))
-    return Model(model, infos, phrases, start_values, frozenset(appliance), named)
+    return Model(model, infos, phrases, start_values, frozenset(appliance), named, manual, keys)
 
 
 def unit_text(var: NumericVariable) -> str:
