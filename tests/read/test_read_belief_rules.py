@@ -125,10 +125,10 @@ def test_a_setting_is_named_by_the_manuals_description_of_it() -> None:
         "| MENU | Steps through the programmes |\n\n"
         "DOUGH     Kneads and proves only, no baking.\n"
     )
-    said = "Basic bread, without the raisins and seeds reminder."
+    said = "Basic bread, without the reminder to drop in raisins or seeds."
     assert parse_instruction(model, said) == {"menu": "basic"}  # no manual: nothing to look up
     assert parse_instruction(model, said, manual) == {"menu": "basic", "extra": "off"}
-    assert parse_instruction(model, "just knead and prove it", manual) == {"menu": "dough"}
-    # one word of a description names nothing; nor do words a setting of the model has
-    assert parse_instruction(model, "basic, with seeds", manual) == {"menu": "basic"}
+    assert parse_instruction(model, "just knead and prove, no baking", manual) == {"menu": "dough"}
+    # two words of a description name nothing; nor do words a setting of the model has
+    assert parse_instruction(model, "basic, with raisins and seeds", manual) == {"menu": "basic"}
     assert parse_instruction(model, "the basic programmes", manual) == {"menu": "basic"}

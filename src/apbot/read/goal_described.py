@@ -4,7 +4,7 @@ ADD-IN key whose legend reads "Beep for adding fruit and nuts".
 A user often says what they want done, not the panel's name for it, and a robot holding the
 manual can look the words up there. Only legend lines count (a value's or a key's name opening
 a line, then its first sentence; :func:`apbot.read.goal_manual.descriptions`), and a setting is
-named only by two of its description's words close together that no other description, no
+named only by three of its description's words close together that no other description, no
 setting and no value of the model uses (so "the fan speed" never names what "FAN  Switches the
 fan speed" says), and only when one description alone fits best; a key that does two jobs is
 described for neither.
@@ -23,6 +23,9 @@ from apbot.read.numbers import tokenize
 
 WINDOW = 6
 """Tokens the description's words may spread over in the instruction."""
+
+MIN_WORDS = 3
+"""Of the description's own words, found in that stretch: two named settings nobody asked for."""
 
 _COMMON = frozenset(
     {"you", "your", "yours", "them", "they", "their", "its", "are", "was", "were", "has", "have"}
@@ -80,7 +83,7 @@ def _described(view: Model) -> list[Described]:
             for w in words
             if stem(w) not in used and concept(w) not in vocab and seen[stem(w)] == 1
         )
-        if len(own) >= 2:
+        if len(own) >= MIN_WORDS:
             out.append(Described(var, value, own))
     if len(_CACHE) >= 32:
         _CACHE.pop(next(iter(_CACHE)))
@@ -112,7 +115,7 @@ def _best_window(text: Text, claimed: set[int], item: Described) -> tuple[int, i
     best: tuple[int, int] | None = None
     for i, (k, _word) in enumerate(hits):
         found = {w for j, w in hits[i:] if j - k < WINDOW}
-        if len(found) >= 2 and (best is None or len(found) > best[0]):
+        if len(found) >= MIN_WORDS and (best is None or len(found) > best[0]):
             best = (len(found), k)
     return best
 
