@@ -132,3 +132,24 @@ def test_a_setting_is_named_by_the_manuals_description_of_it() -> None:
     # two words of a description name nothing; nor do words a setting of the model has
     assert parse_instruction(model, "basic, with raisins and seeds", manual) == {"menu": "basic"}
     assert parse_instruction(model, "the basic programmes", manual) == {"menu": "basic"}
+
+
+def test_a_timer_that_wraps_round_the_day_beside_a_clock_is_when_it_is_done() -> None:
+    day = {
+        "type": "time",
+        "wrap": True,
+        "format": "hh:mm",
+        "ranges": [["00:00:00", "23:59:00", 60]],
+    }
+    menu = {"type": "discrete", "values": ["white", "brown", "porridge"], "label": "MENU"}
+    model = _model(
+        {"clock": {**day, "label": "CLOCK"}, "timer": {**day, "label": "TIMER"}, "menu": menu}
+    )
+    said = "Porridge, done at 7 am for breakfast."
+    assert parse_instruction(model, said) == {"menu": "porridge", "timer": "07:00:00"}
+    said = "Set the clock to 13:05, then brown rice ready at half past six."
+    assert parse_instruction(model, said) == {
+        "clock": "13:05:00",
+        "menu": "brown",
+        "timer": "06:30:00",
+    }

@@ -236,6 +236,12 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
                     {"in", "after"} & set(_words(f"{info.name} {info.var.label or ''}"))
                 )
                 info.timing = "finish" if at else "delay"
+    clocked = any(info.timing == "clock" for info in infos.values())
+    for info in infos.values():
+        if clocked and info.timing == "duration" and _whole_day(info):
+            # beside the clock, a TIMER that wraps at 23:59 is a time of day: when it is done
+            info.timing = "finish"
+            info.vocab.setdefault(concept("finish"), 0.5)
     for info in infos.values():
         if info.timing in ("duration", "delay") and (
             isinstance(info.var, TimeVariable) or info.dimension == "time"
@@ -300,6 +306,16 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         if names and not all(w in STOP_WORDS for w in names):
             phrases.append((coded, value, tuple(stem(w) for w in names), 0.95))
     return Model(model, infos, phrases, start_values, frozenset(appliance), named, manual, keys)
+
+
+def _whole_day(info: VarInfo) -> bool:
+    """A time setting that wraps round a whole day (00:00 to 23:xx): a time of day."""
+    var = info.var
+    values = info.values
+    if not isinstance(var, TimeVariable) or not var.wrap or not values:
+        return False
+    first, last = magnitude(values[0]), magnitude(values[-1])
+    return first == 0 and last is not None and last >= 23 * 3600
 
 
 def unit_text(var: NumericVariable) -> str:
