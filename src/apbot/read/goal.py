@@ -19,8 +19,9 @@ How it works, in order:
    START key sets (in the programme that was asked for); "don't start" sets it off.
 
 The steps live in their own modules: ``goal_spelling`` (rewrites before tokenising),
-``goal_names`` (1), ``goal_assign`` and ``goal_fit`` (2), ``goal_scales`` (3), ``goal_start``
-(4, 5), ``goal_twins`` (zones and sides); ``goal_view`` is the model as the parser sees it.
+``goal_names`` (1), ``goal_assign`` and ``goal_fit`` (2), ``goal_scales`` (3),
+``goal_described`` and ``goal_switches`` (4), ``goal_start`` (5), ``goal_twins`` (zones and
+sides); ``goal_view`` is the model as the parser sees it.
 """
 
 from __future__ import annotations
@@ -34,14 +35,8 @@ from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
 from apbot.read.goal_scales import superlatives
 from apbot.read.goal_spelling import joined_compounds
-from apbot.read.goal_start import (
-    boil,
-    entry_switches,
-    no_values,
-    power_and_running,
-    switches,
-    zero_settings,
-)
+from apbot.read.goal_start import power_and_running
+from apbot.read.goal_switches import boil, entry_switches, no_values, switches, zero_settings
 from apbot.read.goal_text import Text
 from apbot.read.goal_twins import place_twins
 from apbot.read.goal_view import Goal, Model, model_view

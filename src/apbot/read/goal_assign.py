@@ -10,7 +10,8 @@ from apbot.model.values import format_hms, preview
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_fit import fit, number_for
 from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab
-from apbot.read.goal_view import Goal, Model, VarInfo, domain_values, own_stems, unit_text
+from apbot.read.goal_values import unit_text
+from apbot.read.goal_view import Goal, Model, VarInfo, domain_values, own_stems
 from apbot.read.goal_vocab import concept, stem
 from apbot.read.numbers import Mention
 

@@ -8,7 +8,8 @@ from typing import Any
 
 from apbot.model.schema import NumericVariable, TimeVariable
 from apbot.model.values import format_hms, unit_of
-from apbot.read.goal_view import Goal, Model, VarInfo, domain_values, parse_quantity, unit_text
+from apbot.read.goal_values import parse_quantity, unit_text
+from apbot.read.goal_view import Goal, Model, VarInfo, domain_values
 from apbot.read.goal_vocab import concept
 from apbot.read.numbers import Mention, find_mentions, tokenize
 

@@ -8,17 +8,14 @@ from typing import Any
 from apbot.model.schema import DiscreteVariable, NumericVariable, TimeVariable
 from apbot.read.goal_text import Text, near_vocab
 from apbot.read.goal_twins import find_twins
-from apbot.read.goal_view import (
-    Goal,
-    Model,
-    VarInfo,
-    domain_values,
+from apbot.read.goal_values import (
     generic,
     magnitude,
     numeric_values,
     parse_quantity,
     quantity_dimensions,
 )
+from apbot.read.goal_view import Goal, Model, VarInfo, domain_values
 from apbot.read.goal_vocab import HIGHEST, LOWEST, SCALES, concept
 
 

@@ -1,20 +1,13 @@
-"""On/off settings, zeros, power and start: the parts of a goal said with verbs and negations.
-
-"no prewash", "lock the keys", "no delay", "switch it on", "start it", "don't start it yet",
-and a goal setting whose procedure ends by starting the appliance (a TIME DEFROST entry).
-"""
+"""Power and start: the parts of a goal said with verbs — "switch it on", "start it", "don't
+start it yet", and a goal setting whose procedure ends by starting the appliance (a TIME
+DEFROST entry)."""
 
 from __future__ import annotations
 
 from typing import Any
 
 from apbot.model.domain import build_domain
-from apbot.model.schema import (
-    DiscreteVariable,
-    GoTo,
-    NumericVariable,
-    TimeVariable,
-)
+from apbot.model.schema import DiscreteVariable, GoTo
 from apbot.read.goal_text import (
     CLAUSE_ENDS,
     FILLERS,
@@ -24,229 +17,12 @@ from apbot.read.goal_text import (
     WEAK_VERBS,
     Text,
     clause_starts,
-    negative_around,
     phrase_here,
-    verb_positions,
 )
-from apbot.read.goal_view import (
-    Goal,
-    Model,
-    VarInfo,
-    domain_values,
-    generic,
-    magnitude,
-    own_concepts,
-    own_stems,
-    step_effects,
-    unit_text,
-)
-from apbot.read.goal_vocab import (
-    NEGATIONS,
-    STOP_WORDS,
-    concept,
-    stem,
-)
+from apbot.read.goal_values import generic
+from apbot.read.goal_view import Goal, Model, own_stems, step_effects
+from apbot.read.goal_vocab import concept, stem
 from apbot.read.numbers import tokenize
-
-
-def switches(
-    view: Model, text: Text, goal: Goal, claimed: set[int], where: dict[str, int] | None = None
-) -> None:
-    """An on/off setting named in the instruction: on, unless its words are negated."""
-    verbs = verb_positions(text)
-    for name, info in view.infos.items():
-        if info.role != "switch" or name in goal:
-            continue
-        own = own_stems(info)
-        if any(own == own_stems(view.infos[other]) for other in goal):
-            continue  # COOK TIME (on/off) beside a COOK TIME given a value: the words named that
-        best: tuple[float, int] | None = None
-        left = False  # "leave the auto switched off": as it is, not a setting asked for
-        for k in range(len(text.tokens)):
-            if k in claimed or text.word(k) in STOP_WORDS:
-                continue
-            key = text.concepts[k]
-            if text.stems[k] == stem("unlock") and stem("lock") in own:
-                key = concept("lock")  # "unlock the keys": the lock, off
-            weight = info.vocab.get(key, 0.0)
-            if weight <= 0 and _abbreviated(text.stems[k], own):
-                key, weight = text.stems[k], 1.0  # "tablets" for a TABS key
-            if weight <= 0 or generic(key):
-                continue
-            locks = key == concept("lock") or concept("lock") in own_concepts(info)
-            if locks and not _locking(text, k):
-                continue  # "wake the panel", "hot water": not the (hot-water) lock
-            if (
-                text.stems[k] in own
-                or key in own_concepts(info)
-                or key == concept("lock")
-                or _abbreviated(text.stems[k], own)
-            ):
-                weight = 1.0
-                # "Warm the water" is not KEEP WARM; "UV light" is not the night light
-                doubtful = len(own) > 1 and (k in verbs or (k - 1) in claimed)
-                if doubtful and not (phrase_here(text, k, own) or _kept(text, k, own)):
-                    continue
-            elif negative_around(text, k):
-                weight = 0.5  # a feature's word only says "without" ("no finish time")
-            else:
-                continue
-            if any(text.word(k - d) in ("leave", "leaving") for d in range(1, 4)):
-                left = True
-            if best is None or weight > best[0]:
-                best = (weight, k)
-        if best is None or left:
-            continue
-        k = best[1]
-        last = k  # the switch's name may run over several words ("automatic keep-warm")
-        while last + 1 < len(text.tokens) and (
-            text.stems[last + 1] in own
-            or text.concepts[last + 1] in own_concepts(info)
-            or (
-                text.word(last + 1) == "-"
-                and text.stems[min(last + 2, len(text.tokens) - 1)] in own
-            )
-        ):
-            last += 1
-        positive = not (negative_around(text, k) or negative_around(text, last))
-        assert info.on is not None and info.off is not None
-        goal[name] = info.on if positive else info.off
-        if where is not None:
-            where[name] = k
-        claimed.add(k)
-
-
-_LOCK_WORDS = frozenset(
-    {"lock", "locked", "locks", "locking", "unlock", "unlocked", "childlock", "lockout", "keylock"}
-    | {"release", "released"}
-)
-
-
-def _locking(text: Text, k: int) -> bool:
-    """A word of the lock's group ("the panel", "the keys") means the lock only beside a word
-    of locking ("lock the panel", "child-lock the controls", "keys locked")."""
-    window = range(max(0, k - 4), min(len(text.tokens), k + 4))
-    return any(text.word(j) in _LOCK_WORDS or "lock" in text.word(j) for j in window)
-
-
-def _abbreviated(word: str, own: set[str]) -> bool:
-    """The switch's one-word name is a short form of the word ("TABS" for tablets)."""
-    return len(own) == 1 and any(
-        len(short) >= 3 and word.startswith(short) and len(word) <= len(short) + 4 for short in own
-    )
-
-
-def _kept(text: Text, k: int, own: set[str]) -> bool:
-    """ "keep it hot", "keep the water warm": KEEP WARM said with words in between."""
-    if text.stems[k] != stem("keep") or stem("warm") not in own:
-        return False
-    return any(
-        text.stems[j] in (stem("warm"), stem("hot"))
-        for j in range(k + 1, min(k + 4, len(text.tokens)))
-    )
-
-
-def entry_switches(view: Model, goal: Goal) -> None:
-    """A setting entered through a switch ("READY AT" turns the finish timer on, then sets the
-    time) implies that switch on, unless the instruction already said otherwise."""
-    for _feature, steps in view.model.features.items():
-        for index, step in enumerate(steps):
-            if step.variable not in goal:
-                continue
-            for earlier in steps[:index]:
-                target = earlier.variable
-                info = view.infos.get(target or "")
-                if info is None or info.role != "switch" or target in goal:
-                    continue
-                effects = [effect for _a, effect in step_effects(earlier)]
-                if all(effect == "toggle" for effect in effects) and effects:
-                    goal[info.name] = info.on
-
-
-def zero_settings(
-    view: Model, text: Text, goal: Goal, claimed: set[int], where: dict[str, int] | None = None
-) -> None:
-    """ "no delay", "no final spin", "skip the rinse": a numeric setting that can be 0 is 0."""
-    for k, token in enumerate(text.tokens):
-        if token.text not in NEGATIONS or token.text in ("off", "free", "stop", "cancel"):
-            continue
-        for d in range(1, 4):
-            j = k + d
-            if j >= len(text.tokens) or text.word(j) in CLAUSE_ENDS or text.word(j) == ",":
-                break
-            key = text.concepts[j]
-            homes = [
-                info
-                for info in view.infos.values()
-                if info.name not in goal
-                and info.role == "setting"
-                and not isinstance(info.var, DiscreteVariable)
-                and (text.stems[j] in own_stems(info) or key in own_concepts(info))
-                and _starts_at_zero(info)
-            ]
-            if len(homes) == 1:
-                values = domain_values(view, homes[0], goal)
-                zero = next((v for v in values if magnitude(v) == 0), None)
-                if zero is None and homes[0].timing in ("delay", "finish") and values:
-                    zero = min(values, key=lambda v: magnitude(v) or 0.0)  # the soonest end
-                if zero is not None:
-                    goal[homes[0].name] = zero
-                    if where is not None:
-                        where[homes[0].name] = j
-                    claimed.add(j)
-                break
-
-
-def no_values(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
-    """ "without spinning" where the spin setting has a "no spin" value: that value."""
-    for k, token in enumerate(text.tokens):
-        if token.text not in ("no", "without", "skip") or k + 1 >= len(text.tokens):
-            continue
-        j = k + 1
-        while text.word(j) in ("the", "any", "a", "using", "use"):
-            j += 1  # "without using any preset"
-        if j in claimed or j >= len(text.tokens):
-            continue
-        for info in view.infos.values():
-            if info.name in goal or info.role != "setting" or text.stems[j] not in own_stems(info):
-                continue
-            values = domain_values(view, info, goal)
-            for value in values:
-                words = [stem(w) for w in str(value).casefold().split()]
-                if len(words) == 2 and words[0] in ("no", "without") and words[1] == text.stems[j]:
-                    goal[info.name] = value
-                    claimed.add(j)
-            plain = [v for v in values if str(v).casefold() in _PLAIN]
-            if info.name not in goal and len(plain) == 1 and isinstance(info.var, DiscreteVariable):
-                goal[info.name] = plain[0]  # "without any preset": the MANUAL (no preset) one
-                claimed.add(j)
-
-
-_PLAIN = frozenset({"manual", "none", "normal"})
-
-
-def _starts_at_zero(info: VarInfo) -> bool:
-    """A setting whose "none" is 0: any number, or a duration that starts empty (not a clock)."""
-    if isinstance(info.var, NumericVariable):
-        return True
-    if isinstance(info.var, TimeVariable) and info.timing not in ("clock", "finish"):
-        domain = build_domain(info.var) if not info.var.depends_on else None
-        return domain is None or magnitude(domain.values[domain.initial]) == 0
-    return False
-
-
-def boil(view: Model, text: Text, goal: Goal) -> None:
-    """ "bring it to the boil": 100 °C on a water temperature setting that offers it."""
-    if not any(s == stem("boil") for s in text.stems):
-        return
-    for info in view.infos.values():
-        if info.name in goal or not isinstance(info.var, NumericVariable):
-            continue
-        if info.dimension == "temperature" and unit_text(info.var).casefold() in ("°c", "c"):
-            values = domain_values(view, info, goal)
-            if 100 in values and max(values) == 100:
-                goal[info.name] = 100
-
 
 _DENIALS = frozenset({"don't", "dont", "not", "without", "never"})
 

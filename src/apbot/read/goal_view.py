@@ -8,10 +8,8 @@ remembered, since an agent parses many sentences against one belief.
 from __future__ import annotations
 
 import itertools
-import unicodedata
 from collections.abc import Iterable
 from dataclasses import dataclass, field
-from functools import lru_cache
 from typing import Any
 
 from apbot.model.domain import AnyVariable, all_values, build_domain
@@ -24,26 +22,29 @@ from apbot.model.schema import (
     Step,
     TimeVariable,
 )
-from apbot.model.values import parse_quantity as _parse_quantity
 from apbot.model.values import unit_of
 from apbot.read.goal_manual import coded_names, legend_words, title_nouns
+from apbot.read.goal_values import (
+    OFF_WORDS,
+    ON_WORDS,
+    magnitude,
+    name_words,
+    numeric_values,
+    on_off_pair,
+    parse_quantity,
+    phrase_words,
+    quantity_dimensions,
+    unit_text,
+)
 from apbot.read.goal_vocab import (
     LETTER_WORDS,
     STOP_WORDS,
     SYNONYMS,
     concept,
-    split_camel,
     stem,
 )
-from apbot.read.numbers import tokenize
 
 Goal = dict[str, Any]
-
-_ON_WORDS = ("on", "yes", "enabled", "true")
-
-
-_OFF_WORDS = ("off", "no", "disabled", "false")
-
 
 _OPERATION_NAMES = frozenset(
     w
@@ -102,24 +103,8 @@ class Model:
     switch_keys: dict[str, list[str]] = field(default_factory=dict)  # switch -> its keys' labels
 
 
-@lru_cache(maxsize=65536)
-def parse_quantity(text: str) -> tuple[float, str | None, float] | None:
-    """:func:`apbot.model.values.parse_quantity`, remembered: value lists are read per mention."""
-    return _parse_quantity(text)
-
-
 MAX_PHRASE_VALUES = 2_000
 """Values of one discrete variable matched as phrases; a longer list is matched by numbers only."""
-
-
-def _words(text: str) -> list[str]:
-    return [t.text for t in tokenize(split_camel(text.replace("_", " "))) if t.text.isalpha()]
-
-
-def _phrase_words(text: str) -> list[str]:
-    """Words and numbers of a value's name ("quick 20", "eco 40-60", "A-6")."""
-    words = tokenize(split_camel(text.replace("_", " ")))
-    return [t.text for t in words if t.text.replace(".", "").isalnum()]
 
 
 def _steps_of(model: ApplianceModel) -> Iterable[tuple[str, int, Step | AnywhereStep]]:
@@ -154,24 +139,11 @@ def step_effects(step: Step | AnywhereStep) -> list[tuple[str, Any]]:
 
 
 def _add_vocab(info: VarInfo, text: str, weight: float) -> None:
-    for word in _words(text):
+    for word in name_words(text):
         if word in STOP_WORDS or len(word) < 2:
             continue
         key = concept(word)
         info.vocab[key] = max(info.vocab.get(key, 0.0), weight)
-
-
-def _is_on_off(values: list[Any]) -> tuple[str, str] | None:
-    lowered = [str(v).casefold() for v in values]
-    if len(values) != 2:
-        return None
-    if sorted(lowered) == ["locked", "unlocked"]:  # a lock: on is locked
-        return str(values[lowered.index("locked")]), str(values[lowered.index("unlocked")])
-    on = next((values[i] for i, v in enumerate(lowered) if v in _ON_WORDS), None)
-    off = next((values[i] for i, v in enumerate(lowered) if v in _OFF_WORDS), None)
-    if on is None or off is None:
-        return None
-    return str(on), str(off)
 
 
 def build(model: ApplianceModel, manual: str = "") -> Model:
@@ -187,7 +159,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
             _add_vocab(info, var.show.split("{")[0], 0.7)
         elif isinstance(var.show, dict):
             for value, text in var.show.items():
-                if "{" not in text and str(value).casefold() not in _OFF_WORDS:
+                if "{" not in text and str(value).casefold() not in OFF_WORDS:
                     _add_vocab(info, text, 0.7)
         if isinstance(var, NumericVariable):
             unit = unit_text(var)
@@ -195,7 +167,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
             if not unit:  # a reader may miss the unit: SPIN 0-1400 still takes "1000 rpm"
                 info.dimension = _dimension_by_name(info)
         if isinstance(var, DiscreteVariable):
-            switch = _is_on_off(info.values)
+            switch = on_off_pair(info.values)
             if switch:
                 info.role, info.on, info.off = "switch", switch[0], switch[1]
             if numeric_values(info.values):
@@ -219,7 +191,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
             if info.role == "switch":
                 continue  # a switch's key is often shared (hold TIMER to lock)
             for label in _control_labels(model, entry + own):
-                if not any(w in _START_LABELS for w in _words(label)):
+                if not any(w in _START_LABELS for w in name_words(label)):
                     _add_vocab(info, label, 0.8)
     _mark_power_and_running(model, infos)
     for info in infos.values():
@@ -233,7 +205,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
             elif concept("finish") in info.vocab:
                 # a time of day to finish at ("READY AT") or a wait ("READY IN", "END 3h")
                 at = isinstance(info.var, TimeVariable) and not (
-                    {"in", "after"} & set(_words(f"{info.name} {info.var.label or ''}"))
+                    {"in", "after"} & set(name_words(f"{info.name} {info.var.label or ''}"))
                 )
                 info.timing = "finish" if at else "delay"
     clocked = any(info.timing == "clock" for info in infos.values())
@@ -246,11 +218,13 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         if info.timing in ("duration", "delay") and (
             isinstance(info.var, TimeVariable) or info.dimension == "time"
         ):
-            words = set(_words(f"{info.name} {info.var.label or ''}".casefold()))
+            words = set(name_words(f"{info.name} {info.var.label or ''}".casefold()))
             info.turns = "off" if "off" in words else "on" if "on" in words else None
     phrases = _phrases(model, infos)
     start_values = _start_values(model, infos)
-    appliance = {concept(w) for w in _words(model.appliance.name + " " + model.appliance.category)}
+    appliance = {
+        concept(w) for w in name_words(model.appliance.name + " " + model.appliance.category)
+    }
     appliance |= {
         concept(w)
         for w in (
@@ -302,7 +276,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         if parse_quantity(label) is not None:
             named.setdefault(coded, []).append((value, label))
             continue
-        names = [w for w in _phrase_words(label) if w != "and"]
+        names = [w for w in phrase_words(label) if w != "and"]
         if names and not all(w in STOP_WORDS for w in names):
             phrases.append((coded, value, tuple(stem(w) for w in names), 0.95))
     return Model(model, infos, phrases, start_values, frozenset(appliance), named, manual, keys)
@@ -318,27 +292,7 @@ def _whole_day(info: VarInfo) -> bool:
     return first == 0 and last is not None and last >= 23 * 3600
 
 
-def unit_text(var: NumericVariable) -> str:
-    """The variable's unit in plain letters: a one-character "℃" is "°C" (NFKC)."""
-    return unicodedata.normalize("NFKC", var.unit).strip()
-
-
-def numeric_values(values: list[Any]) -> bool:
-    numeric = [v for v in values if parse_quantity(str(v)) is not None]
-    return len(numeric) >= max(1, len(values) - 2)
-
-
 _DIMENSION_WORDS = {"power": "power", "temperature": "temperature", "mass": "weight"}
-
-
-def quantity_dimensions(values: list[Any]) -> set[str]:
-    """Dimensions that at least two values are quantities of ("100 W", "450 W")."""
-    counts: dict[str, int] = {}
-    for value in values:
-        q = parse_quantity(str(value))
-        if q is not None and q[1] is not None:
-            counts[q[1]] = counts.get(q[1], 0) + 1
-    return {d for d, c in counts.items() if c >= 2}
 
 
 def _dimension_by_name(info: VarInfo) -> str | None:
@@ -363,7 +317,7 @@ def _mark_power_and_running(model: ApplianceModel, infos: dict[str, VarInfo]) ->
     for _feature, _index, step in _steps_of(model):
         pressed = [a for a in step.actions if model.actions[a].skill == "press"]
         labels = " ".join(_control_labels(model, pressed)).casefold()
-        if not any(word in _words(labels) for word in _START_LABELS):
+        if not any(word in name_words(labels) for word in _START_LABELS):
             continue
         goes = any(isinstance(effect, GoTo) for _a, effect in step_effects(step))
         targets = [step.variable] if step.variable and goes else []
@@ -410,9 +364,9 @@ def _start_values(
                 if not isinstance(effect, GoTo) or step.variable not in running:
                     continue
                 labels = " ".join(_control_labels(model, [action])).casefold()
-                if not any(word in _words(labels) for word in _START_LABELS):
+                if not any(word in name_words(labels) for word in _START_LABELS):
                     continue
-                if str(effect.to).casefold() in _OFF_WORDS:
+                if str(effect.to).casefold() in OFF_WORDS:
                     continue  # START held to cancel: it stops, it does not start
                 value = (step.variable, effect.to)
                 if len(steps) == 1 or not adjusted:
@@ -438,7 +392,7 @@ def _first_words(name: str, info: VarInfo) -> list[tuple[str, Any, tuple[str, ..
     firsts: dict[str, list[Any]] = {}
     used: dict[str, int] = {}
     for value in info.values:
-        words = [stem(w) for w in _phrase_words(str(value))]
+        words = [stem(w) for w in phrase_words(str(value))]
         for word in words:
             used[word] = used.get(word, 0) + 1
         if len(words) > 1 and words[0].isalpha() and len(words[0]) >= 3:
@@ -465,13 +419,13 @@ def _phrases(
             continue
         for value in info.values:
             text = str(value)
-            if text.casefold() in _ON_WORDS + _OFF_WORDS + ("none", "----", "--"):
+            if text.casefold() in ON_WORDS + OFF_WORDS + ("none", "----", "--"):
                 continue
             forms = [text]
             if show.get(text) and "{" not in show[text]:
                 forms.append(show[text])
             for form in forms:
-                words = [w for w in _phrase_words(form) if w != "and"]  # read as a connector
+                words = [w for w in phrase_words(form) if w != "and"]  # read as a connector
                 if parse_quantity(form) is not None:
                     continue  # a number or a quantity ("3.0 oz"): read as a quantity
                 if not words:
@@ -495,7 +449,7 @@ def _phrases(
             if not isinstance(effect, GoTo):
                 continue
             for label in _control_labels(model, [action]):
-                words = _words(label)
+                words = name_words(label)
                 if words and not any(w in STOP_WORDS for w in words):
                     phrases.append((step.variable, effect.to, tuple(stem(w) for w in words), 0.95))
     return phrases
@@ -531,25 +485,6 @@ def own_concepts(info: VarInfo) -> set[str]:
     return {concept(w) for w in own_stems(info)}
 
 
-def magnitude(value: Any) -> float | None:
-    if isinstance(value, int | float):
-        return float(value)
-    text = str(value)
-    if text.count(":") == 2:
-        h, m, sec = (int(x) for x in text.split(":"))
-        return float(h * 3600 + m * 60 + sec)
-    return None
-
-
-_GENERIC = frozenset(
-    concept(w) for w in ("program", "time", "temperature", "level", "power", "size", "water")
-)
-
-
-def generic(key: str) -> bool:
-    return key in _GENERIC
-
-
 def own_stems(info: VarInfo) -> set[str]:
-    words = _words(info.name) + (_words(info.var.label) if info.var.label else [])
+    words = name_words(info.name) + (name_words(info.var.label) if info.var.label else [])
     return {stem(w) for w in words if w not in STOP_WORDS}

@@ -1,0 +1,88 @@
+"""What the names and values of a model look like to the goal parser: the words of a name, the
+words and numbers of a value's name, quantities and magnitudes, an on/off pair."""
+
+from __future__ import annotations
+
+import unicodedata
+from functools import lru_cache
+from typing import Any
+
+from apbot.model.schema import NumericVariable
+from apbot.model.values import parse_quantity as _parse_quantity
+from apbot.read.goal_vocab import concept, split_camel
+from apbot.read.numbers import tokenize
+
+ON_WORDS = ("on", "yes", "enabled", "true")
+
+
+OFF_WORDS = ("off", "no", "disabled", "false")
+
+
+@lru_cache(maxsize=65536)
+def parse_quantity(text: str) -> tuple[float, str | None, float] | None:
+    """:func:`apbot.model.values.parse_quantity`, remembered: value lists are read per mention."""
+    return _parse_quantity(text)
+
+
+def name_words(text: str) -> list[str]:
+    """The words of a variable's name or label ("keepWarm_time": keep, warm, time)."""
+    return [t.text for t in tokenize(split_camel(text.replace("_", " "))) if t.text.isalpha()]
+
+
+def phrase_words(text: str) -> list[str]:
+    """Words and numbers of a value's name ("quick 20", "eco 40-60", "A-6")."""
+    words = tokenize(split_camel(text.replace("_", " ")))
+    return [t.text for t in words if t.text.replace(".", "").isalnum()]
+
+
+def on_off_pair(values: list[Any]) -> tuple[str, str] | None:
+    """(on, off) of a two-valued switch ("on"/"off", "yes"/"no", "locked"/"unlocked")."""
+    lowered = [str(v).casefold() for v in values]
+    if len(values) != 2:
+        return None
+    if sorted(lowered) == ["locked", "unlocked"]:  # a lock: on is locked
+        return str(values[lowered.index("locked")]), str(values[lowered.index("unlocked")])
+    on = next((values[i] for i, v in enumerate(lowered) if v in ON_WORDS), None)
+    off = next((values[i] for i, v in enumerate(lowered) if v in OFF_WORDS), None)
+    if on is None or off is None:
+        return None
+    return str(on), str(off)
+
+
+def unit_text(var: NumericVariable) -> str:
+    """The variable's unit in plain letters: a one-character "℃" is "°C" (NFKC)."""
+    return unicodedata.normalize("NFKC", var.unit).strip()
+
+
+def numeric_values(values: list[Any]) -> bool:
+    numeric = [v for v in values if parse_quantity(str(v)) is not None]
+    return len(numeric) >= max(1, len(values) - 2)
+
+
+def quantity_dimensions(values: list[Any]) -> set[str]:
+    """Dimensions that at least two values are quantities of ("100 W", "450 W")."""
+    counts: dict[str, int] = {}
+    for value in values:
+        q = parse_quantity(str(value))
+        if q is not None and q[1] is not None:
+            counts[q[1]] = counts.get(q[1], 0) + 1
+    return {d for d, c in counts.items() if c >= 2}
+
+
+def magnitude(value: Any) -> float | None:
+    if isinstance(value, int | float):
+        return float(value)
+    text = str(value)
+    if text.count(":") == 2:
+        h, m, sec = (int(x) for x in text.split(":"))
+        return float(h * 3600 + m * 60 + sec)
+    return None
+
+
+_GENERIC = frozenset(
+    concept(w) for w in ("program", "time", "temperature", "level", "power", "size", "water")
+)
+
+
+def generic(key: str) -> bool:
+    return key in _GENERIC
