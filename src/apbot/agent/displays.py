@@ -21,7 +21,13 @@ from apbot.agent.repair import RepairError, drop_indicator, set_display
 from apbot.agent.session import Executed, Session
 from apbot.model.display import can_show, display_value, lamp_for
 from apbot.model.domain import AnyVariable
-from apbot.model.schema import ApplianceModel, DiscreteVariable, TimeStyle, TimeVariable
+from apbot.model.schema import (
+    ApplianceModel,
+    DiscreteVariable,
+    NumericVariable,
+    TimeStyle,
+    TimeVariable,
+)
 
 _LAMP_GAP = re.compile(r"\s{2,}")
 
@@ -46,6 +52,7 @@ class DisplayLearner:
         mains = [self._main(text) for text in dict.fromkeys(texts) if text.strip()]
         style: str | None = None
         template = self._template(spec, mains, believed)
+        unitless = False
         if template is None and isinstance(spec, TimeVariable):
             # the reader may print a time in the wrong style ("0:30" for a panel's "30 min")
             for style in (s for s in get_args(TimeStyle) if s != spec.format):
@@ -53,11 +60,15 @@ class DisplayLearner:
                 template = self._template(other, mains, believed)
                 if template is not None:
                     break
+        if template is None and isinstance(spec, NumericVariable) and spec.unit:
+            # the manual names a unit ("45 %") the panel does not print ("45")
+            template = self._template(spec.model_copy(update={"unit": None}), mains, believed)
+            unitless = template is not None
         key = f"{name}:{template}:{style}" if style else f"{name}:{template}"
         if template is None or not session.budget.once("template", key):
             return False
         try:
-            new = set_display(model, name, template, style)
+            new = set_display(model, name, template, style, drop_unit=unitless)
         except RepairError as exc:
             session.episode.log("repair", f"could not repair how {name} is shown: {exc}")
             return False
@@ -68,6 +79,7 @@ class DisplayLearner:
         ):
             return False
         how = f"{template!r} ({style})" if style else repr(template)
+        how += " (no unit)" if unitless else ""
         session.adopt(new, f"{name} is shown as {how}", session.belief.pointer())
         return True
 

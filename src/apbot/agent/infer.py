@@ -229,6 +229,8 @@ def infer_template(
     'TEMP {value}'
     >>> infer_template(["PROG fast", "PROG fine"], str, str, words=True)
     'PROG {value}'
+    >>> infer_template(["12"], str, lambda t: int(t) if t.isdigit() else None, known=7)
+    '{value}'
     """
     texts = list(dict.fromkeys(mains))
     if len(texts) == 1 and known is not None:
@@ -236,6 +238,12 @@ def infer_template(
         if texts[0].count(printed) == 1:
             start = texts[0].index(printed)
             return texts[0][:start] + "{value}" + texts[0][start + len(printed) :]
+    if len(texts) == 1 and not words:
+        # one text that is a whole value in the setting's notation ("12:00"): a panel that
+        # prints the value alone (kept while the digits typed are no value yet)
+        value = parse(texts[0])
+        if value is not None and render(value) == texts[0]:
+            return "{value}"
     if len(texts) < 2:
         return None
 
