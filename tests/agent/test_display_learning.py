@@ -99,3 +99,23 @@ def test_a_clock_the_panel_prints_bare_while_digits_are_typed() -> None:
     assert reached and episode.claimed_success
     assert any(r.startswith("clock is shown as '{value}'") for r in episode.repairs)
     assert episode.reasoning_steps == 2  # not one macro action per digit until "6:15" shows
+
+
+def test_a_time_found_inside_a_longer_time_is_no_template() -> None:
+    # a 24-hour clock the panel prints "00:07" (hh:mm) as the digits go in, where the belief
+    # prints "CLOCK 0:07" (h:mm): "0:07" inside "00:07" must not become the template
+    # "0{value}", but the panel's own style
+    day = (
+        OVEN.replace('[["01:00:00", "12:59:00", 60]]', '[["00:00:00", "23:59:00", 60]]')
+        .replace("{initial}", "00:00:00")
+        .replace('entry: {format: "h:mm", max_digits: 4}', 'entry: {format: "hh:mm"}')
+    )
+    truth = model_from(
+        day.replace("{show}", 'show: "{value}"').replace('format: "h:mm"\n', 'format: "hh:mm"\n')
+        + 'display: {idle: "{clock}"}\n'
+    )
+    belief = model_from(day.replace("{show}", "label: CLOCK"))
+    episode, reached = run(truth, belief, {"clock": "07:45:00"})
+    assert reached and episode.claimed_success
+    assert not any("'0{value}'" in r for r in episode.repairs)
+    assert any(r.startswith("clock is shown as '{value}' (hh:mm)") for r in episode.repairs)
