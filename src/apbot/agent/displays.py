@@ -21,7 +21,13 @@ from apbot.agent.repair import RepairError, drop_indicator, set_display
 from apbot.agent.session import Executed, Session
 from apbot.model.display import can_show, display_value, lamp_for
 from apbot.model.domain import AnyVariable
-from apbot.model.schema import ApplianceModel, DiscreteVariable, TimeStyle, TimeVariable
+from apbot.model.schema import (
+    ApplianceModel,
+    DiscreteVariable,
+    NumericVariable,
+    TimeStyle,
+    TimeVariable,
+)
 
 _LAMP_GAP = re.compile(r"\s{2,}")
 
@@ -44,20 +50,35 @@ class DisplayLearner:
         if isinstance(spec.show, dict) or not spec.visible:
             return False  # a map of words per value: one wrong word is learnt by the walk
         mains = [self._main(text) for text in dict.fromkeys(texts) if text.strip()]
-        style: str | None = None
-        template = self._template(spec, mains, believed)
-        if template is None and isinstance(spec, TimeVariable):
+        variants: list[tuple[AnyVariable, str | None, bool]] = [(spec, None, False)]
+        if isinstance(spec, TimeVariable):
             # the reader may print a time in the wrong style ("0:30" for a panel's "30 min")
-            for style in (s for s in get_args(TimeStyle) if s != spec.format):
-                other = spec.model_copy(update={"format": style})
-                template = self._template(other, mains, believed)
-                if template is not None:
-                    break
+            variants += [
+                (spec.model_copy(update={"format": s}), s, False)
+                for s in get_args(TimeStyle)
+                if s != spec.format
+            ]
+        if isinstance(spec, NumericVariable) and spec.unit:
+            # the manual names a unit ("45 %") the panel does not print ("45")
+            variants.append((spec.model_copy(update={"unit": None}), None, True))
+        # a text that holds the believed value first, in any style; a bare value only then
+        found = next(
+            (
+                (template, style, unitless)
+                for bare in (False, True)
+                for variant, style, unitless in variants
+                if (template := self._template(variant, mains, believed, bare)) is not None
+            ),
+            None,
+        )
+        if found is None:
+            return False
+        template, style, unitless = found
         key = f"{name}:{template}:{style}" if style else f"{name}:{template}"
-        if template is None or not session.budget.once("template", key):
+        if not session.budget.once("template", key):
             return False
         try:
-            new = set_display(model, name, template, style)
+            new = set_display(model, name, template, style, drop_unit=unitless)
         except RepairError as exc:
             session.episode.log("repair", f"could not repair how {name} is shown: {exc}")
             return False
@@ -68,17 +89,21 @@ class DisplayLearner:
         ):
             return False
         how = f"{template!r} ({style})" if style else repr(template)
+        how += " (no unit)" if unitless else ""
         session.adopt(new, f"{name} is shown as {how}", session.belief.pointer())
         return True
 
     @staticmethod
-    def _template(spec: AnyVariable, mains: list[str], believed: Any) -> str | None:
+    def _template(
+        spec: AnyVariable, mains: list[str], believed: Any, bare: bool = True
+    ) -> str | None:
         return infer_template(
             mains,
             lambda value: display_value(spec, value),
             lambda text: loose(spec, text),
             words=isinstance(spec, DiscreteVariable),
             known=believed,
+            bare=bare,
         )
 
     def learn_word(self, name: str, trace: Sequence[Any]) -> bool:

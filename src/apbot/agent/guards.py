@@ -148,6 +148,9 @@ class GuardLearner:
                     route = plan(session.belief.compiled, session.belief.state, {name: other})
                 except Unreachable:
                     continue
+            key = failed.action.name
+            if self._refusing_after(route.actions, key) > self._refusing_after([], key):
+                continue  # it would lock the key out (a child lock put on): no way to unblock
             lifting = [a.name for a in route.actions]
             for planned in route.actions:
                 session.press(planned, exploring=True)
@@ -185,6 +188,24 @@ class GuardLearner:
             self.witnessed.add((_condition({name: blocking}), failed.action.name))
             return True
         return False
+
+    def _refusing_after(self, actions: list[Any], key: str) -> int:
+        """How many of the belief's guards would refuse ``key`` after ``actions`` from the
+        believed state."""
+        compiled = self.session.belief.compiled
+        state = self.session.belief.state
+        for planned in actions:
+            index = compiled.action_index.get(planned.name)
+            after = None if index is None else compiled.apply(state, index, planned.seconds)
+            if after is None:
+                break
+            state = after
+        refused = compiled.action_index.get(key)
+        return sum(
+            all(state.values[v] in ok for v, ok in guard.conditions)
+            and refused not in guard.allowed
+            for guard in compiled.guards
+        )
 
     def _again(self, retry: Executed) -> Executed:
         """A key pressed again after a retry that left the display as it was: if the setting

@@ -213,14 +213,20 @@ _VALUE_CHARS = ".,:-+"
 
 
 def infer_template(
-    mains: Sequence[str], render: Any, parse: Any, words: bool = False, known: Any = None
+    mains: Sequence[str],
+    render: Any,
+    parse: Any,
+    words: bool = False,
+    known: Any = None,
+    bare: bool = True,
 ) -> str | None:
     """The display template (``"PL{value}"``) behind texts that show one setting with
     different values: the common start and end are the template's own text, the part that
     varies is the value. ``parse`` reads a value from the varying part (None if it is none)
     and ``render`` prints a value as the model would; the template must give back every text.
     ``words``: the values are words (a discrete setting), not numbers or times. With a single
-    text, ``known`` is the value it is believed to show.
+    text, ``known`` is the value it is believed to show; else (``bare``) a text that is a whole
+    value printed alone reads as that value.
 
     >>> infer_template(["PL7", "PL8"], str, lambda t: int(t) if t.isdigit() else None)
     'PL{value}'
@@ -229,19 +235,33 @@ def infer_template(
     'TEMP {value}'
     >>> infer_template(["PROG fast", "PROG fine"], str, str, words=True)
     'PROG {value}'
+    >>> infer_template(["12"], str, lambda t: int(t) if t.isdigit() else None, known=7)
+    '{value}'
+    >>> clock = lambda v: f"{v // 60}:{v % 60:02d}"
+    >>> infer_template(["00:07"], clock, lambda t: None, known=7) is None  # not "0{value}"
+    True
     """
     texts = list(dict.fromkeys(mains))
-    if len(texts) == 1 and known is not None:
-        printed = render(known)
-        if texts[0].count(printed) == 1:
-            start = texts[0].index(printed)
-            return texts[0][:start] + "{value}" + texts[0][start + len(printed) :]
-    if len(texts) < 2:
-        return None
 
     def inside(char: str) -> bool:  # could be part of a value
         return char.isalnum() if words else (char.isdigit() or char in _VALUE_CHARS)
 
+    if len(texts) == 1 and known is not None:
+        printed = render(known)
+        if texts[0].count(printed) == 1:
+            start = texts[0].index(printed)
+            head, tail = texts[0][:start], texts[0][start + len(printed) :]
+            # not inside a longer value ("0:07" in "00:07" is no "0{value}")
+            if not (head and inside(head[-1])) and not (tail and inside(tail[0])):
+                return head + "{value}" + tail
+    if len(texts) == 1 and bare and not words:
+        # one text that is a whole value in the setting's notation ("12:00"): a panel that
+        # prints the value alone (kept while the digits typed are no value yet)
+        value = parse(texts[0])
+        if value is not None and render(value) == texts[0]:
+            return "{value}"
+    if len(texts) < 2:
+        return None
     prefix = _common_prefix(texts)
     suffix = _common_prefix([t[len(prefix) :][::-1] for t in texts])[::-1]
     while prefix and inside(prefix[-1]):

@@ -104,7 +104,7 @@ class KeyMover:
         """The step's only key brings the setting up and leaves it as it is: it may be an
         entry key, with the panel's stepping keys (+ and − of another procedure) adjusting
         the setting after it. With the setting on the display (brought up again after a probe
-        took it away), press each such pair's first key once (three at most); the first that
+        took it away), press each key of such a pair once (three pairs at most); the first that
         moves it makes the step an entry press followed by that pair's step. Only for a key
         believed to step the setting: a toggle pressed again would undo itself."""
         session = self.session
@@ -129,13 +129,13 @@ class KeyMover:
                 fits = moving and stuck.name not in moving and set(moving) <= session.offered
                 if fits and moving not in pairs:
                     pairs.append(moving)
-        for moving in pairs[:3]:
+        # each key of a pair in turn: the setting may be at the end the first one goes to
+        for moving, key in [(m, k) for m in pairs[:3] for k in m]:
             before = session.shown(name)
             if before in (MISSING, None):  # a probe took the display elsewhere: bring it back
                 before = session.press(stuck, exploring=True).observed(name)
                 if before in (MISSING, None):
                     return False
-            key = next(iter(moving))
             probe = session.press(session.planned(key), exploring=True)
             shown = probe.observed(name)
             if not probe.feedback.accepted or shown is MISSING or shown in (None, before):

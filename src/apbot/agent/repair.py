@@ -178,14 +178,18 @@ def set_display(
     name: str,
     template: str | dict[str, str],
     time_format: str | None = None,
+    drop_unit: bool = False,
 ) -> ApplianceModel:
     """Print a variable through another template: as its label when the template is the usual
     "LABEL {value}", else as its ``show`` template (``"PL{value}"``, or a word per value);
-    ``time_format``: a time variable's new display style too ("min" for "30 min")."""
+    ``time_format``: a time variable's new display style too ("min" for "30 min");
+    ``drop_unit``: a number the display prints without the unit the model gives it."""
     data = _dump(model)
     var = data["variables"][name]
     if time_format is not None:
         var["format"] = time_format
+    if drop_unit:
+        var.pop("unit", None)
     if isinstance(template, dict):
         var["show"] = template
         return _rebuild(data)
