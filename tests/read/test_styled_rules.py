@@ -1,0 +1,78 @@
+"""Rules found on the styled (commercial-style) manuals, each on a small manual of our own
+written the way a converted commercial manual reads."""
+
+from __future__ import annotations
+
+from apbot.model.schema import DiscreteVariable
+from apbot.read import read_manual
+
+# an oven with one push-turn dial: it picks the function, and after TEMP or TIME it sets those
+OVEN = """CONTROLS
+
+                 ┌──────────────────────┐
+                 │   GRILL  200°C  0:20 │
+                 └──────────────────────┘
+       ON/OFF                          LIGHT
+       TEMP          ( MODE )          TIME
+                   START/STOP
+
+ Control        Description
+ ON/OFF         Switches the oven on or off.
+ MODE dial      Turn to choose a function, or after TEMP or TIME to change that setting.
+                Push the dial to go back to choosing a function.
+ TEMP           Lets the dial change the temperature.
+ TIME           Lets the dial change the cooking time.
+ LIGHT          Switches the oven light on or off.
+ START/STOP     Starts or stops cooking.
+
+Functions are printed round the MODE dial, clockwise:
+
+   GRILL → FAN → PIZZA → DEFROST → (GRILL …)
+
+USING THE OVEN
+
+1. Press ON/OFF.
+2. Turn the MODE dial to the function.
+3. Press TEMP and turn the dial to set the temperature, 50 °C – 250 °C.
+4. Press TIME and turn the dial to set the cooking time, 1 – 90 min.
+5. Press START/STOP.
+
+Temperature: every click of the dial changes the temperature by 10 °C.
+Time: every click changes the time by 1 minute.
+"""
+ACTIONS = ["press_on_off", "turn_cw", "turn_ccw", "press_dial", "press_temp", "press_time"]
+ACTIONS += ["press_light", "press_start_stop"]
+
+
+def _steps(model, variable: str) -> list[list[list[str]]]:  # type: ignore[no-untyped-def]
+    return [
+        [list(step.actions) for step in steps]
+        for steps in model.features.values()
+        if steps and steps[-1].variable == variable
+    ]
+
+
+def test_a_key_then_the_dials_clicks_set_its_amount() -> None:
+    model = read_manual(OVEN, ACTIONS).model
+    temp = next(n for n in model.variables if n.startswith("temp"))
+    time = next(n for n in model.variables if "time" in n)
+    # "every click (of the dial)" is the dial's turn, not each press of TEMP or TIME
+    assert _steps(model, temp) == [[["press_temp"], ["turn_cw", "turn_ccw"]]]
+    assert _steps(model, time) == [[["press_time"], ["turn_cw", "turn_ccw"]]]
+
+
+def test_a_push_turn_dials_ring_of_names_is_what_its_turns_pick() -> None:
+    model = read_manual(OVEN, ACTIONS).model
+    picked = [
+        n
+        for n, v in model.variables.items()
+        if isinstance(v, DiscreteVariable) and "pizza" in v.values
+    ]
+    assert len(picked) == 1
+    assert _steps(model, picked[0]) == [[["turn_cw", "turn_ccw"]]]
+
+
+def test_the_next_keys_name_on_a_panel_drawing_is_no_list_of_values() -> None:
+    model = read_manual(OVEN, ACTIONS).model
+    time = next(n for n in model.variables if "time" in n)
+    assert not isinstance(model.variables[time], DiscreteVariable)
