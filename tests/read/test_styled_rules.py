@@ -3,6 +3,7 @@ written the way a converted commercial manual reads."""
 
 from __future__ import annotations
 
+from apbot.model.domain import all_values
 from apbot.model.schema import DiscreteVariable
 from apbot.read import read_manual
 
@@ -76,3 +77,41 @@ def test_the_next_keys_name_on_a_panel_drawing_is_no_list_of_values() -> None:
     model = read_manual(OVEN, ACTIONS).model
     time = next(n for n in model.variables if "time" in n)
     assert not isinstance(model.variables[time], DiscreteVariable)
+
+
+# a washer's numbered panel legend: three knobs, each paragraph saying where it stops
+WASHER = """  ①          ②         ③         ④
+  CYCLE      TEMP      SPIN      START
+
+① CYCLE selector — chooses the wash cycle. The knob turns in both
+   directions all the way round, without a stop. Clockwise it gives the order
+   of the cycle table.
+② TEMP knob — positions, from left to right:
+       COLD (cold water)   30   40   60
+   The knob stops at COLD and at 60. Clockwise = warmer.
+③ SPIN knob — positions, from left to right:
+       0 (no spin)   600   800   1000
+   Clockwise = faster. The knob stops at both ends. ④ START — starts the cycle.
+
+CYCLE TABLE
+
+Cycle        Temperature     Spin
+Cotton       30 – 60 °C      1000
+Synthetic    30 – 40 °C      800
+Wool         COLD – 30 °C    600
+"""
+WASHER_ACTIONS = ["turn_cycle_cw", "turn_cycle_ccw", "turn_temp_cw", "turn_temp_ccw"]
+WASHER_ACTIONS += ["turn_spin_cw", "turn_spin_ccw", "press_start"]
+
+
+def test_a_marks_gloss_does_not_break_the_row_of_marks() -> None:
+    model = read_manual(WASHER, WASHER_ACTIONS).model
+    assert list(all_values(model.variables["temp"])) == ["cold", "30", "40", "60"]
+    assert [float(v) for v in all_values(model.variables["spin"])] == [0, 600, 800, 1000]
+
+
+def test_a_knob_stops_where_its_own_paragraph_says_not_where_the_one_before_goes_round() -> None:
+    model = read_manual(WASHER, WASHER_ACTIONS).model
+    assert model.variables["cycle"].wrap is True
+    assert model.variables["temp"].wrap is False
+    assert model.variables["spin"].wrap is False
