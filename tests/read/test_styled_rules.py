@@ -115,3 +115,14 @@ def test_a_knob_stops_where_its_own_paragraph_says_not_where_the_one_before_goes
     assert model.variables["cycle"].wrap is True
     assert model.variables["temp"].wrap is False
     assert model.variables["spin"].wrap is False
+
+
+def test_a_keys_word_with_on_that_the_display_shows_is_the_sign_it_is_on() -> None:
+    manual = (
+        "Keys\n\n  POWER        switches the unit on and off\n"
+        "  NIGHT MODE   switches night mode on / off\n\n"
+        "Display\n\n  NIGHT ON     night mode is switched on\n  Lc           keys locked\n"
+    )
+    model = read_manual(manual, ["press_power", "press_night_mode"]).model
+    night = next(v for n, v in model.variables.items() if n.startswith("night"))
+    assert isinstance(night.show, dict) and night.show.get("on") == "NIGHT ON"
