@@ -126,3 +126,14 @@ def test_a_keys_word_with_on_that_the_display_shows_is_the_sign_it_is_on() -> No
     model = read_manual(manual, ["press_power", "press_night_mode"]).model
     night = next(v for n, v in model.variables.items() if n.startswith("night"))
     assert isinstance(night.show, dict) and night.show.get("on") == "NIGHT ON"
+
+
+def test_what_the_next_sentence_says_of_it_is_said_of_the_knob() -> None:
+    manual = (
+        "CONTROLS\n\nHEAT knob   Main switch and heat setting.\nFAN         Fan on/off.\n\n"
+        "OPERATION\n\nThe knob has five positions. It clicks at each one and stops at both "
+        "ends.\n\n     OFF  ·  LOW  ·  MID  ·  HIGH  ·  MAX\n\nTurn the knob away from OFF "
+        "to switch on.\n"
+    )
+    model = read_manual(manual, ["turn_knob_cw", "turn_knob_ccw", "press_fan"]).model
+    assert model.variables["knob"].wrap is False

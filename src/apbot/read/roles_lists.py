@@ -169,12 +169,18 @@ STOPS_RE = re.compile(
 )
 
 
+_IT_RE = re.compile(r"^It\b")
+
+
 def dial_ends(b: Builder, token: str, var: str) -> None:
     """A knob the manual says stops at its ends clamps; one with no end stop goes round."""
     units = b.manual.units
     noun = re.compile(rf"\b{re.escape(token.replace('_', ' '))}\b", re.IGNORECASE)
-    near = b.context([token]) + [i for i, u in enumerate(units) if noun.search(u.text)]
-    own = set(b.labels[token].mentions) if token in b.labels else set()
+    named = [i for i, u in enumerate(units) if noun.search(u.text)]
+    # "The knob has seven positions. It clicks at each one and stops at both ends."
+    named += [i + 1 for i in named if i + 1 < len(units) and _IT_RE.match(units[i + 1].text)]
+    near = b.context([token]) + sorted(named)
+    own = set(b.labels[token].mentions if token in b.labels else []) | set(named)
     names = [lab.text for t, lab in b.labels.items() if t != token and lab.line is not None]
     others = {i for t, lab in b.labels.items() if t != token for i in lab.mentions}
     for i in dict.fromkeys(near):
