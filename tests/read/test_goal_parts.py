@@ -8,6 +8,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from apbot.bench.runner import cached_suite
+from apbot.model.schema import ApplianceModel
 from apbot.read.goal import parse_instruction
 from apbot.read.goal_manual import coded_names
 from apbot.read.goal_twins import find_twins
@@ -94,3 +95,43 @@ def test_any_manual_and_sentence_give_a_goal_or_a_clear_error(manual: str, text:
         assert exc.words is not None and exc.reason
     else:
         assert set(goal) <= set(model.variables)
+
+
+def _menu_model(values: list[str]) -> ApplianceModel:
+    return ApplianceModel.model_validate(
+        {
+            "appliance": {"id": "m", "category": "bread_maker", "name": "m"},
+            "variables": {"menu": {"type": "discrete", "values": values}},
+            "controls": [{"id": "menu", "kind": "button", "label": "MENU"}],
+            "actions": {"press_menu": {"control": "menu"}},
+            "features": {
+                "menu": [{"actions": ["press_menu"], "variable": "menu", "effect": "next"}]
+            },
+        }
+    )
+
+
+def test_tables_drawn_with_spaces_name_coded_values() -> None:
+    # a converted PDF draws its tables with spaces; a parts legend drawn the same way names
+    # nothing (it covers too few of the codes, and a better table exists)
+    manual = (
+        "PARTS\n\n  1   Lid with window        4   Pan\n  2   Handle             5   Blade\n"
+        "\nPROGRAMMES\n\n No.  Programme      Use                 Time\n"
+        " 1    Plain          White loaves        3:00\n"
+        " 2    Rye            Rye flour mixes     3:30\n"
+        " 3    Brioche        Rich, sweet dough   3:10\n"
+        " 4    Dough only     No baking           1:30\n"
+        " 5    Jam            Fruit and sugar     1:05\n"
+        " 6    Bake           Baking only         1:00\n"
+    )
+    names = coded_names(_menu_model([str(n) for n in range(1, 7)]), manual)
+    assert ("menu", "3", "Brioche") in names and ("menu", "4", "Dough only") in names
+    assert not any(label.startswith(("Lid", "Handle", "Pan")) for _, _, label in names)
+    # a row of marks above a row of what each means
+    dial = (
+        "Turn the dial to a mark:\n\n"
+        "     Mark        1       2       3       MAX\n"
+        "     Output      low     medium  high    full power\n"
+    )
+    names = coded_names(_menu_model(["1", "2", "3", "max"]), dial)
+    assert ("menu", "2", "medium") in names and ("menu", "max", "full power") in names

@@ -491,3 +491,27 @@ def test_a_legend_of_terms_each_with_its_definition_is_read_row_by_row() -> None
         "Press the SPIN button to lower the",
         "the speed of the final spin; each press",
     ]
+
+
+# a steamer's key legend and its display legend: the display's "FRESH ON" is a state, not a key
+STEAMER = """Control panel
+
+  POWER         switches the steamer on and off
+  HOLD FRESH    switches the hold-fresh function on / off
+  START         starts the steaming cycle
+
+The display
+
+  STEAM         steaming in progress
+  FRESH ON      HOLD FRESH is switched on
+
+Press HOLD FRESH before starting. FRESH ON appears. Press it again to switch it off.
+The contents stay sterile for up to 12 hours as long as the lid stays closed.
+"""
+
+
+def test_a_state_the_display_shows_is_not_the_name_of_the_key_that_sets_it() -> None:
+    model = read_manual(STEAMER, ["press_power", "press_fresh", "press_start"]).model
+    fresh = [v for n, v in model.variables.items() if "fresh" in n]
+    assert len(fresh) == 1 and fresh[0].label == "HOLD FRESH"
+    assert list(all_values(fresh[0])) == ["off", "on"]

@@ -27,6 +27,7 @@ from apbot.read.shapes import (
     _unit_from_words,
     _value_text,
 )
+from apbot.read.shown import shown_words
 from apbot.read.text import Manual
 from apbot.read.values import (
     Range,
@@ -125,11 +126,30 @@ class Builder(EvidenceReader):
             "label": label,
         }
         self.note(f"variables.{name}", "an on/off setting", at)
+        shown = self._shown_on(label)
+        if shown is not None:  # "FRESH ON appears": what the display prints while it is on
+            self.variables[name]["show"] = {"off": "", "on": shown[0]}
+            self.note(f"variables.{name}.show", f"the display shows {shown[0]} while on", shown[1])
+            return name
         lamp = self.lamp_unit(label)
         if lamp is not None:  # only a lamp the manual names: a wrong lamp misleads the reading
             self.indicators.append(name)
             self.note(f"display.indicators.{name}", "a lamp shows it", lamp)
         return name
+
+    def _shown_on(self, label: str) -> tuple[str, int] | None:
+        """A word of the key's name with ON after it that the display shows ("FRESH ON appears",
+        a display legend's "FRESH ON   KEEP FRESH is on"): the sign the setting is on."""
+        names = [w for w in re.findall(r"[A-Z][A-Z0-9+-]{2,}", label) if w not in ("ON", "OFF")]
+        if not names or label.upper() != label:
+            return None
+        phrase = re.compile(rf"(?<![\w/])((?:{'|'.join(map(re.escape, names))}) ON)(?![\w/])")
+        for i, unit in enumerate(self.manual.units):
+            for m in phrase.finditer(unit.text):
+                legend = re.match(r"\s{2,}\S", unit.text[m.end() :])
+                if legend or m.group(1) in shown_words(unit.text):
+                    return m.group(1), i
+        return None
 
     def lamp_unit(self, label: str) -> int | None:
         """A sentence saying the label lights up on the panel (a lamp, symbol or indicator)."""

@@ -58,6 +58,13 @@ class EvidenceReader(ListReader):
             self._evidence[key] = self._read_evidence(tokens)
         return self._evidence[key]
 
+    def _turned(self, tokens: list[str]) -> bool:
+        """The panel has a knob or dial other than these controls (its turns are clicks)."""
+        return any(
+            i.skill.startswith("turn") and not set(i.controls) & set(tokens)
+            for i in getattr(self, "infos", [])
+        )
+
     def _read_evidence(self, tokens: list[str]) -> Evidence:
         ev = Evidence()
         units = self.manual.units
@@ -137,7 +144,10 @@ class EvidenceReader(ListReader):
                 and not self._two_key_hold(text, tokens)
             ):
                 ev.toggle_at = i  # (another key's name, ON/OFF in a panel drawing, is no toggle)
-            if ev.each_press_at is None and not quiet and EACH_PRESS_RE.search(text):
+            pressed = EACH_PRESS_RE.search(text)
+            if pressed and "click" in pressed.group(0).lower() and self._turned(tokens):
+                pressed = None  # "every click changes the time": a dial's clicks, not a key's
+            if ev.each_press_at is None and not quiet and pressed:
                 ev.each_press_at = i
             if ev.initial is None:
                 init = find_initial(text)
@@ -231,6 +241,8 @@ class EvidenceReader(ListReader):
             )
             for i, unit in enumerate(units):
                 m = pattern.search(unit.text)
+                if m and m.group(1).lower() in others:
+                    continue  # "TIME START/PAUSE" on a panel drawing: the next key's name
                 if m:  # "FAN HI/LO": the panel prints the values next to the name
                     best, best_prio, ev.values_at = m.group(1).split("/"), 2.5, i
                     break

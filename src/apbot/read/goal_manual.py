@@ -23,6 +23,7 @@ with a name ("| 2 | French | 3:50 |"), or a bold heading ("**2 French** – …"
 from __future__ import annotations
 
 import re
+from itertools import pairwise
 from typing import Any
 
 from apbot.model.domain import all_values
@@ -31,6 +32,8 @@ from apbot.model.schema import ApplianceModel, DiscreteVariable, NumericVariable
 _CODE = re.compile(r"[a-z]{0,2}[- ]?\d{1,3}", re.IGNORECASE)
 _BOLD = re.compile(r"\*\*\s*([A-Za-z]{0,2}[- ]?\d{1,3})\s+([^*\n]{2,40}?)\s*\*\*")
 _RULE = re.compile(r"^[\s|:\-–—=+]*$")
+_GAP = re.compile(r"\s{2,}|\t+")
+Pair = tuple[str, str]
 _PROGRAMME = re.compile(r"menu|progr|mode|cycle|function|course|recipe|select", re.IGNORECASE)
 MAX_WORDS = 5
 """Words of a name kept (a cell that says more is a description, not a name)."""
@@ -89,34 +92,94 @@ def _table_blocks(manual: str) -> list[list[list[str]]]:
     return blocks
 
 
+def _aligned_blocks(manual: str) -> list[list[list[str]]]:
+    """Rows of cells of each table a PDF conversion drew with spaces: runs of lines whose
+    columns are set apart by two or more spaces (" 5    Gluten-free     2:40"). A blank line
+    or a line of prose ends a block."""
+    blocks: list[list[list[str]]] = []
+    current: list[list[str]] = []
+    for line in manual.splitlines():
+        cells = [c.strip() for c in _GAP.split(line.strip())] if "|" not in line else []
+        if len(cells) >= 2:
+            current.append(cells)
+            continue
+        if len(current) >= 2:
+            blocks.append(current)
+        current = []
+    if len(current) >= 2:
+        blocks.append(current)
+    return blocks
+
+
+def _pairs(block: list[list[str]], variables: dict[str, dict[str, Any]]) -> list[list[Pair]]:
+    """The (code, name) pairs a block can give: along its rows ("| 2 | French |"), and down
+    its columns where a row of codes sits over a row of names ("Knob mark  1  2" over
+    "Approx. RH  70 %  60 %")."""
+
+    def code(cell: str) -> bool:
+        return bool(_CODE.fullmatch(cell)) or any(_key(cell) in v for v in variables.values())
+
+    rows = [(r[i], r[i + 1]) for r in block for i in range(len(r) - 1) if code(r[i])]
+    columns = [
+        (top[i], below[i])
+        for top, below in pairwise(block)
+        if len(top) == len(below) >= 3
+        for i in range(len(top))
+        if code(top[i]) and not code(below[i])
+    ]
+    return [p for p in (rows, columns) if p]
+
+
+def _best(
+    pairs: list[Pair], variables: dict[str, dict[str, Any]]
+) -> tuple[str | None, tuple[float, float]]:
+    """The setting whose values most of the pairs' codes are; then the one they cover most."""
+    best, score = None, (0.0, 0.0)
+    codes = {_key(code) for code, _ in pairs}
+    for name, values in variables.items():
+        hits = len(codes & set(values))
+        fraction = (hits / max(len(codes), 1), hits / max(len(values), 1))
+        if hits >= 2 and fraction > score:
+            best, score = name, fraction
+    return best, score
+
+
+def _named(pairs: list[Pair], values: dict[str, Any], name: str) -> list[tuple[str, Any, str]]:
+    out = []
+    for code, cell in pairs:
+        value = values.get(_key(code))
+        label = _name(cell)
+        if value is not None and label and _key(label) != _key(str(value)):
+            out.append((name, value, label))
+    return out
+
+
 def coded_names(model: ApplianceModel, manual: str) -> list[tuple[str, Any, str]]:
     """(variable, value, name) for each coded value the manual names."""
     variables = _coded_variables(model)
     if not variables or not manual:
         return []
-    out: list[tuple[str, str, str]] = []
+    out: list[tuple[str, Any, str]] = []
     for block in _table_blocks(manual):
-        pairs = [
-            (row[i], row[i + 1])
-            for row in block
-            for i in range(len(row) - 1)
-            if _CODE.fullmatch(row[i]) or any(_key(row[i]) in v for v in variables.values())
-        ]
-        best, score = None, (0.0, 0.0)
-        codes = {_key(code) for code, _ in pairs}
-        for name, values in variables.items():
-            hits = len(codes & set(values))
-            # most of the table's codes are this setting's values; then: it covers most of them
-            fraction = (hits / max(len(codes), 1), hits / max(len(values), 1))
-            if hits >= 2 and fraction > score:
-                best, score = name, fraction
-        if best is None or score[0] < 0.6:
-            continue
-        for code, cell in pairs:
-            value = variables[best].get(_key(code))
-            label = _name(cell)
-            if value is not None and label and _key(label) != _key(str(value)):
-                out.append((best, value, label))
+        for pairs in _pairs(block, variables)[:1]:
+            best, score = _best(pairs, variables)
+            if best is not None and score[0] >= 0.6:
+                out.extend(_named(pairs, variables[best], best))
+    # tables drawn with spaces, for settings no pipe table named: a parts legend ("1  Lid") is
+    # drawn the same way, so only a block that names most of the setting's values and fits it
+    # best names it
+    named = {name for name, _, _ in out}
+    chosen: dict[str, tuple[tuple[float, float, int], list[Pair]]] = {}
+    for block in _aligned_blocks(manual):
+        for pairs in _pairs(block, variables):
+            best, score = _best(pairs, variables)
+            if best is None or best in named or score[0] < 0.6 or score[1] < 0.5:
+                continue
+            rank = (*score, -len(chosen))
+            if best not in chosen or rank[:2] > chosen[best][0][:2]:
+                chosen[best] = (rank, pairs)
+    for name, (_, pairs) in chosen.items():
+        out.extend(_named(pairs, variables[name], name))
     for code, text in _BOLD.findall(manual):
         homes = [n for n, values in variables.items() if _key(code) in values]
         label = _name(text)

@@ -88,6 +88,8 @@ def _score(token_words: list[str], phrase: str) -> float:
     if pw == tw[: len(pw)] and len(pw) < len(tw):
         return 0.0  # "TEMP" for temp_up: a shorter phrase names another control
     if tw == pw[: len(tw)]:
+        if pw[len(tw) :] in (["on"], ["off"]) and "/" not in phrase:
+            return 0.7  # "FRESH ON": the state a display shows; KEEP FRESH is the key's name
         return 0.85 if "/" in phrase or len(pw) - len(tw) <= 1 else 0.6
     if (
         all(any(p == t or (len(t) >= 3 and p.startswith(t)) for p in pw) for t in tw)

@@ -9,6 +9,7 @@ order and sorts the setting keys by what their sentences say.
 
 from __future__ import annotations
 
+import re
 from dataclasses import replace
 
 from apbot.read.actions import ActionInfo
@@ -89,9 +90,18 @@ def assign(b: Builder) -> None:
             and any(mine < set(evidence[o.name].values or []) for o in keys if o.name != key.name)
         ):
             evidence[key.name] = replace(ev, values=None, values_at=None)
+    for key in keys:  # a push-turn dial's list ("a ring of programs round the dial"): its turns'
+        turned = any(t in key.controls for t in dials)
+        if turned and key.skill == "press" and evidence[key.name].values:
+            evidence[key.name] = replace(evidence[key.name], values=None, values_at=None)
     options = option_keys(b, keys)
     shared_pair = pairs.get("")
-    generic_dials = [t for t in dials if t.split("_")[0] in GENERIC_DIALS and not dial_values(b, t)]
+    generic_dials = [
+        t
+        for t in dials
+        if t.split("_")[0] in GENERIC_DIALS
+        and (not dial_values(b, t) or _turned_after_keys(b, t, keys))
+    ]
     entry_keys: list[ActionInfo] = []
     silent: list[ActionInfo] = []
     for key in keys:
@@ -168,6 +178,21 @@ def assign(b: Builder) -> None:
     silent = assign_dials(b, dials, silent)
     assign_leftovers(b, silent, evidence)
     assign_keyed_amounts(b, digits)
+
+
+def _turned_after_keys(b: Builder, dial: str, keys: list[ActionInfo]) -> bool:
+    """A dial that picks a list of its own is also turned after setting keys ("Press TEMP and
+    turn the dial to set the temperature"): those keys take its turns as their stepping pair."""
+    noun = re.escape(dial.split("_")[0])
+    labels = [re.escape(label_of(b, k.controls[0])) for k in keys if k.controls[0] in b.labels]
+    if not labels:
+        return False
+    said = re.compile(
+        rf"\b(?:press|touch|push)\w*\s+(?:the\s+)?(?:{'|'.join(labels)})\b[^.]{{0,30}}?"
+        rf"\bturn\w*\s+the\s+(?:\w+\s+)?{noun}\b",
+        re.IGNORECASE,
+    )
+    return sum(bool(said.search(u.text)) for u in b.manual.units) >= 1
 
 
 def _numbered(b: Builder, key: ActionInfo, ev: Evidence) -> bool:

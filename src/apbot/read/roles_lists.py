@@ -155,7 +155,8 @@ def dial_values(b: Builder, token: str) -> bool:
 
 ENDLESS_RE = re.compile(
     r"\bno (?:end )?stops?\b|\bturns? (?:freely|endlessly|all the way round)\b|\bendless\w*"
-    r"|\b(?:simply )?continues with the first\b|\bround and round\b",
+    r"|\b(?:simply )?continues with the first\b|\bround and round\b"
+    r"|\bwithout (?:an? )?(?:end )?stop\b",
     re.IGNORECASE,
 )
 
@@ -168,13 +169,30 @@ STOPS_RE = re.compile(
 )
 
 
+_IT_RE = re.compile(r"^It\b")
+
+
 def dial_ends(b: Builder, token: str, var: str) -> None:
     """A knob the manual says stops at its ends clamps; one with no end stop goes round."""
     units = b.manual.units
     noun = re.compile(rf"\b{re.escape(token.replace('_', ' '))}\b", re.IGNORECASE)
-    near = b.context([token]) + [i for i, u in enumerate(units) if noun.search(u.text)]
+    named = [i for i, u in enumerate(units) if noun.search(u.text)]
+    # "The knob has seven positions. It clicks at each one and stops at both ends."
+    named += [i + 1 for i in named if i + 1 < len(units) and _IT_RE.match(units[i + 1].text)]
+    near = b.context([token]) + sorted(named)
+    own = set(b.labels[token].mentions if token in b.labels else []) | set(named)
+    names = [lab.text for t, lab in b.labels.items() if t != token and lab.line is not None]
+    others = {i for t, lab in b.labels.items() if t != token for i in lab.mentions}
     for i in dict.fromkeys(near):
         text = units[i].text
+        if i in others and i not in own:
+            # "The knob stops at both ends. ④ ECO — …": what comes before another key's name
+            cut = min((text.find(n) for n in names if n and n in text), default=-1)
+            text = text[: max(cut, 0)]
+        elif i not in own:
+            said = [k for k in range(max(i - 3, 0), i) if k in own or k in others]
+            if said and said[-1] in others and said[-1] not in own:
+                continue  # "① PROGRAM selector — …. The knob turns all the way round."
         if ENDLESS_RE.search(text):
             b.variables[var]["wrap"] = True
             b.note(f"variables.{var}.wrap", "the knob has no end stop", i)

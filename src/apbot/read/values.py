@@ -538,7 +538,9 @@ def find_number_run(text: str) -> list[str] | None:
     """Numbers printed in a row after a cue ("marked 20 30 40 60 90"), in their order; a leading
     OFF reads as 0, another leading word (a named end position) is skipped."""
     for m in _RUN_CUE.finditer(text):
-        tokens = [t.strip(".*:") for t in re.findall(r"[^\s,;]+", m.group(1))][:40]
+        # a mark's gloss is no break in the row: "0 (no spin)  400  600", "COLD (cold)  20  30"
+        row = re.sub(r"(?<=\S)\s*\([^()]{1,20}\)(?=\s)", " ", m.group(1))
+        tokens = [t.strip(".*:") for t in re.findall(r"[^\s,;]+", row)][:40]
         for start in range(min(8, len(tokens))):
             run: list[str] = []
             rest = tokens[start:]
@@ -574,5 +576,8 @@ ON_OFF_RE = re.compile(
     re.IGNORECASE,
 )
 EACH_PRESS_RE = re.compile(
-    r"\b(?:each|every|repeated(?:ly)?|successive)\s+(?:press|touch|tap|push|click)", re.I
+    r"\b(?:each|every|repeated(?:ly)?|successive)\s+(?:press|touch|tap|push|click)"
+    # ("every click of the dial changes the temperature": the dial's turns, not the key's presses)
+    r"(?!\w*\s+of\s+the\s+(?:\w+\s+)?(?:dial|knob|wheel|ring|selector|encoder)\b)",
+    re.I,
 )
