@@ -21,12 +21,13 @@ import itertools
 from collections.abc import Hashable
 from dataclasses import dataclass
 from operator import itemgetter
+from typing import Any
 
 from apbot.model.effects import entry_digits
 from apbot.plan.abstract import out_of_reach
 from apbot.plan.bounds import INF, LowerBound, distances_to, typeable_values
 from apbot.plan.goals import CompiledGoal
-from apbot.plan.visits import SMALL_DOMAIN, Exit, VisitTooLarge, explore_visit, keypad_exits
+from apbot.plan.visits import SMALL_DOMAIN, VisitTooLarge, VisitTree, explore_tree, keypad_exits
 from apbot.sim.compiled import DIGIT, CompiledModel, State
 
 DEFAULT_BUDGET = 200_000
@@ -39,9 +40,9 @@ VISIT_LIMIT = 20_000
 STORED_PER_BUDGET = 2
 # successors the search may generate per state of its budget (each costs a bound evaluation)
 EDGES_PER_BUDGET = 20
-# presses the visit cache may hold in its paths (a 1,440-minute clock walked one press at a time
-# gives visits of a million presses each) before it is emptied
-CACHED_PRESSES = 5_000_000
+# visit ends the visit cache may hold before it is emptied (a 1,440-minute clock walked one
+# press at a time gives visits of 1,440 ends; an end costs about 200 bytes)
+CACHED_ENDS = 500_000
 # Path cost is lexicographic, packed in one int: presses × PRESS + presses made while a guard
 # keeps the display dark. The plan stays shortest; among equally short plans it prefers to set
 # things where the display shows them, so the closed loop can check what it did.
@@ -73,6 +74,20 @@ class Visit:
     free: bool = False  # one action that does not move through the pointer (anywhere, wait)
 
 
+# one way out of a visit, cached: (values of the step's writes, buffer, memory, presses, and
+# the presses themselves — an index into the visit's tree, or the presses when it has none)
+Outcome = tuple[tuple[int, ...], str, tuple[int, ...], int, "int | tuple[int, ...]"]
+# a successor: (state, presses, the visit's tree or None, index into it or the presses, free)
+Edge = tuple[State, int, VisitTree | None, "int | tuple[int, ...]", bool]
+
+
+def _presses(tree: VisitTree | None, way: int | tuple[int, ...]) -> tuple[int, ...]:
+    if isinstance(way, int):
+        assert tree is not None
+        return tree.path(way)
+    return way
+
+
 @dataclass(frozen=True)
 class SearchResult:
     visits: tuple[Visit, ...]
@@ -86,6 +101,11 @@ def relevant_variables(compiled: CompiledModel, goal: CompiledGoal) -> list[int]
     for guard in compiled.guards:
         relevant.update(v for v, _ in guard.conditions)
     return sorted(compiled.influencers(relevant))
+
+
+def _tupled(picked: Any) -> tuple[int, ...]:
+    """What an ``itemgetter`` of one or more items picked, as a tuple."""
+    return picked if isinstance(picked, tuple) else (picked,)
 
 
 class TaskSearch:
@@ -120,10 +140,8 @@ class TaskSearch:
         )
         self._memory = compiled.memory_of(self.relevant)
         self.bound = LowerBound(compiled, goal)
-        self._visit_cache: dict[
-            Hashable, list[tuple[tuple[int, ...], str, tuple[int, ...], tuple[int, ...]]]
-        ] = {}
-        self._cached_presses = 0  # presses held by the paths in the visit cache
+        self._visit_cache: dict[Hashable, tuple[VisitTree | None, list[Outcome]]] = {}
+        self._cached_ends = 0  # visit ends held by the visit cache
         self._footprints: dict[int, tuple[tuple[int, ...], tuple[int, ...]]] = {}
         self._keypad_targets: dict[int, list[float]] = {}
         # nodes reached by an anywhere key or a wait: the pointer stayed, so the step it is on
@@ -147,7 +165,9 @@ class TaskSearch:
             raise SearchExhausted("unreachable", 0, False)
         start_key = self.key(start)
         best = {start_key: 0}
-        came_from: dict[Hashable, tuple[Hashable, Visit] | None] = {start_key: None}
+        came_from: dict[
+            Hashable, tuple[Hashable, int, VisitTree | None, int | tuple[int, ...], bool] | None
+        ] = {start_key: None}
         states = {start_key: start}
         tie = itertools.count()
         frontier = [(h0 * PRESS, 0, next(tie), start_key)]
@@ -179,9 +199,9 @@ class TaskSearch:
                 self.generated = generated
                 if proven:
                     raise SearchExhausted("unreachable", expanded, False)
-            for after, actions, free in edges:
+            for after, presses, tree, way, free in edges:
                 # presses first; among plans of equal length, fewer presses with a dark display
-                new_cost = cost + len(actions) * PRESS + (len(actions) if in_the_dark else 0)
+                new_cost = cost + presses * PRESS + (presses if in_the_dark else 0)
                 k = self.key(after)
                 if new_cost >= best.get(k, INF):
                     continue
@@ -192,7 +212,7 @@ class TaskSearch:
                 if len(best) > STORED_PER_BUDGET * self.budget:  # memory, not time, runs out
                     raise SearchExhausted("budget", expanded, True)
                 states[k] = after
-                came_from[k] = (node, Visit(after.step, actions, free))
+                came_from[k] = (node, after.step, tree, way, free)
                 if free:
                     self._continuable.add(k)
                 heapq.heappush(frontier, (new_cost + h * PRESS, -new_cost, next(tie), k))
@@ -239,17 +259,20 @@ class TaskSearch:
 
     @staticmethod
     def _path(
-        came_from: dict[Hashable, tuple[Hashable, Visit] | None], node: Hashable
+        came_from: dict[
+            Hashable, tuple[Hashable, int, VisitTree | None, int | tuple[int, ...], bool] | None
+        ],
+        node: Hashable,
     ) -> tuple[Visit, ...]:
         visits: list[Visit] = []
         link = came_from[node]
         while link is not None:
-            previous, visit = link
-            visits.append(visit)
+            previous, step, tree, way, free = link
+            visits.append(Visit(step, _presses(tree, way), free))
             link = came_from[previous]
         return tuple(reversed(visits))
 
-    def _edges(self, state: State, may_continue: bool) -> list[tuple[State, tuple[int, ...], bool]]:
+    def _edges(self, state: State, may_continue: bool) -> list[Edge]:
         """Visits to every step one action reaches (the current step only when ``may_continue``),
         then each action that acts without the pointer table (anywhere keys, waits) alone."""
         compiled = self.compiled
@@ -261,21 +284,21 @@ class TaskSearch:
             if compiled.refusal(state, action) is not None:
                 continue
             by_step.setdefault(target, []).append(action)
-        edges: list[tuple[State, tuple[int, ...], bool]] = []
+        edges: list[Edge] = []
         for step, entry in by_step.items():
-            edges.extend((after, path, False) for after, path in self._visit(state, step, entry))
+            edges.extend(self._visit(state, step, entry))
         for action in compiled.free_actions:
             after = compiled.apply(state, action)
             if after is not None and after != state:
-                edges.append((after, (action,), True))
+                edges.append((after, 1, None, (action,), True))
         return edges
 
-    def _visit(self, state: State, step: int, entry: list[int]) -> list[Exit]:
+    def _visit(self, state: State, step: int, entry: list[int]) -> list[Edge]:
         info = self.compiled.steps[step]
         v = info.variable
         if v < 0 or v not in self.relevant:
             after = self.compiled.apply(state, entry[0])
-            return [] if after is None else [(after, (entry[0],))]
+            return [] if after is None else [(after, 1, None, (entry[0],), False)]
         reads, writes = self._footprint(step)
         continuing = state.step == step
         values = state.values
@@ -287,38 +310,47 @@ class TaskSearch:
             continuing,
             state.memory,  # a programme change takes back what a setting kept
         )
-        outcomes = self._visit_cache.get(cache_key)
-        if outcomes is None:
+        cached = self._visit_cache.get(cache_key)
+        if cached is None:
+            written = itemgetter(*writes)
+            outcomes: list[Outcome]
+            tree: VisitTree | None = None
             if self.keypad_step[step]:
                 exits = keypad_exits(self.compiled, state, step, entry, self._targets_for(v))
+                outcomes = [
+                    (_tupled(written(after.values)), after.buffer, after.memory, len(path), path)
+                    for after, path in exits
+                ]
             else:
 
                 def inner_key(s: State) -> Hashable:
                     # what remembered settings keep tells two ends of a visit apart too (a
                     # press stored a value for the programme its side effect then left)
-                    return (tuple(s.values[w] for w in writes), s.buffer, s.memory)
+                    return (written(s.values), s.buffer, s.memory)
 
                 try:
-                    exits = explore_visit(
+                    tree = explore_tree(
                         self.compiled, state, step, entry, inner_key, limit=VISIT_LIMIT
                     )
                 except VisitTooLarge:
                     raise SearchExhausted("budget", self.budget, True) from None
-            outcomes = [
-                (tuple(after.values[w] for w in writes), after.buffer, path, after.memory)
-                for after, path in exits
-            ]
-            self._cached_presses += sum(len(path) for _, path in exits)
-            if self._cached_presses > CACHED_PRESSES:  # a cache, not a store: start afresh
+                outcomes = [
+                    (_tupled(written(after.values)), after.buffer, after.memory, length, i)
+                    for i, (after, length) in enumerate(zip(tree.ends, tree.lengths, strict=True))
+                ]
+                tree.ends = []  # the paths are all the cache needs of it
+            self._cached_ends += len(outcomes)
+            if self._cached_ends > CACHED_ENDS:  # a cache, not a store: start afresh
                 self._visit_cache.clear()
-                self._cached_presses = 0
-            self._visit_cache[cache_key] = outcomes
-        rebuilt = []
-        for changed, buffer, path, memory in outcomes:
+                self._cached_ends = 0
+            cached = self._visit_cache[cache_key] = (tree, outcomes)
+        tree, outcomes = cached
+        rebuilt: list[Edge] = []
+        for changed, buffer, memory, presses, way in outcomes:
             new = list(values)
             for w, value in zip(writes, changed, strict=True):
                 new[w] = value
-            rebuilt.append((State(tuple(new), step, buffer, memory), path))
+            rebuilt.append((State(tuple(new), step, buffer, memory), presses, tree, way, False))
         return rebuilt
 
     def _footprint(self, step: int) -> tuple[tuple[int, ...], tuple[int, ...]]:

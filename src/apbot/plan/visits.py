@@ -14,7 +14,6 @@ shortest digit string that leaves the buffer reading the wanted value (see
 
 from __future__ import annotations
 
-from collections import deque
 from collections.abc import Callable, Hashable, Sequence
 
 from apbot.model.effects import entry_digits
@@ -46,28 +45,70 @@ def explore_visit(
     value per programme while changing the programme reaches every combination of what it
     remembers, which can outgrow any memory.
     """
-    apply = compiled.apply
-    seen: dict[Hashable, Exit] = {}
-    queue: deque[Exit] = deque()
+    tree = explore_tree(compiled, state, step, entry, key, limit)
+    return [(end, tree.path(i)) for i, end in enumerate(tree.ends)]
 
-    def expand(source: State, path: tuple[int, ...], actions: Sequence[int]) -> None:
-        for action in actions:
+
+class VisitTree:
+    """The ends of one visit as a breadth-first tree: ``ends[i]`` is reached by the press
+    ``actions[i]`` from ``ends[parents[i]]`` (-1: from the state the visit starts in), in
+    ``lengths[i]`` presses. Why a tree: a clock walked one press at a time has ends hundreds
+    of presses away, and copying each end's whole path costs time and memory quadratic in
+    the walk; the search needs only the lengths, and the path of the plan it returns."""
+
+    __slots__ = ("actions", "ends", "lengths", "parents")
+
+    def __init__(self) -> None:
+        self.ends: list[State] = []
+        self.parents: list[int] = []
+        self.actions: list[int] = []
+        self.lengths: list[int] = []
+
+    def path(self, i: int) -> tuple[int, ...]:
+        """The presses from the visit's start to end ``i``."""
+        presses = []
+        while i >= 0:
+            presses.append(self.actions[i])
+            i = self.parents[i]
+        return tuple(reversed(presses))
+
+
+def explore_tree(
+    compiled: CompiledModel,
+    state: State,
+    step: int,
+    entry: Sequence[int],
+    key: Callable[[State], Hashable],
+    limit: int | None = None,
+) -> VisitTree:
+    """:func:`explore_visit`, its ends kept as a :class:`VisitTree` (same ends, same order)."""
+    apply = compiled.apply
+    seen: set[Hashable] = set()
+    tree = VisitTree()
+    ends, parents, actions, lengths = tree.ends, tree.parents, tree.actions, tree.lengths
+
+    def expand(source: State, parent: int, length: int, pressed: Sequence[int]) -> None:
+        for action in pressed:
             after = apply(source, action)
             if after is None:
                 continue
             k = key(after)
             if k not in seen:
-                seen[k] = (after, (*path, action))
-                queue.append(seen[k])
+                seen.add(k)
+                ends.append(after)
+                parents.append(parent)
+                actions.append(action)
+                lengths.append(length)
                 if limit is not None and len(seen) > limit:
                     raise VisitTooLarge(f"a visit to step {step} ends in over {limit} states")
 
-    expand(state, (), entry)
+    expand(state, -1, 1, entry)
     own = sorted(compiled.steps[step].actions)
-    while queue:
-        current, path = queue.popleft()
-        expand(current, path, own)
-    return list(seen.values())
+    i = 0
+    while i < len(ends):  # the ends list is the breadth-first queue
+        expand(ends[i], i, lengths[i] + 1, own)
+        i += 1
+    return tree
 
 
 def keypad_presses(buffer: str, target: str, entry: Entry, typed: bool = True) -> str | None:
