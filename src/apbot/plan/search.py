@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import heapq
 import itertools
-from collections.abc import Hashable
+from collections.abc import Hashable, Iterator
 from dataclasses import dataclass
 from operator import itemgetter
 from typing import Any
@@ -79,6 +79,22 @@ class Visit:
 Outcome = tuple[tuple[int, ...], str, tuple[int, ...], int, "int | tuple[int, ...]"]
 # a successor: (state, presses, the visit's tree or None, index into it or the presses, free)
 Edge = tuple[State, int, VisitTree | None, "int | tuple[int, ...]", bool]
+# a cached visit: its tree (None: keypad or single presses), outcomes, and per outcome the part
+# of a search key it decides: the relevant written values, and (buffer, what memory keeps)
+CachedVisit = tuple[
+    VisitTree | None, list[Outcome], list[tuple[tuple[int, ...], tuple[Hashable, ...]]]
+]
+
+
+@dataclass(frozen=True)
+class Ends:
+    """The successors one visit gives a node, their states not yet built: most are dropped
+    as no better than a way the search has already found, which their keys alone tell."""
+
+    step: int
+    writes: tuple[int, ...]
+    slots: tuple[int, ...]  # where the relevant writes sit in a search key's projection
+    visit: CachedVisit
 
 
 def _presses(tree: VisitTree | None, way: int | tuple[int, ...]) -> tuple[int, ...]:
@@ -140,7 +156,8 @@ class TaskSearch:
         )
         self._memory = compiled.memory_of(self.relevant)
         self.bound = LowerBound(compiled, goal)
-        self._visit_cache: dict[Hashable, tuple[VisitTree | None, list[Outcome]]] = {}
+        self._visit_cache: dict[Hashable, CachedVisit] = {}
+        self._slots: dict[int, tuple[tuple[int, ...], tuple[int, ...]]] = {}
         self._cached_ends = 0  # visit ends held by the visit cache
         self._footprints: dict[int, tuple[tuple[int, ...], tuple[int, ...]]] = {}
         self._keypad_targets: dict[int, list[float]] = {}
@@ -186,7 +203,7 @@ class TaskSearch:
                 raise SearchExhausted("budget", expanded, True)
             in_the_dark = bool(compiled.guards) and compiled.hiding_guard(state) is not None
             edges = self._edges(state, node == start_key or node in self._continuable)
-            generated += len(edges)
+            generated += sum(len(e.visit[1]) if isinstance(e, Ends) else 1 for e in edges)
             self.generated = generated
             if generated > self.work:  # thousand-end visits: time runs out
                 raise SearchExhausted("budget", expanded, True)
@@ -199,7 +216,28 @@ class TaskSearch:
                 self.generated = generated
                 if proven:
                     raise SearchExhausted("unreachable", expanded, False)
-            for after, presses, tree, way, free in edges:
+            projected: list[int] | None = None
+            for edge in edges:
+                if isinstance(edge, Ends):  # the same as below, states built only when kept
+                    if projected is None:
+                        projected = list(self.key(state)[0])  # type: ignore[index]
+                    if self._visit_successors(
+                        edge,
+                        state,
+                        node,
+                        cost,
+                        in_the_dark,
+                        projected,
+                        best,
+                        states,
+                        came_from,
+                        frontier,
+                        tie,
+                        expanded,
+                    ):
+                        raise SearchExhausted("budget", expanded, True)
+                    continue
+                after, presses, tree, way, free = edge
                 # presses first; among plans of equal length, fewer presses with a dark display
                 new_cost = cost + presses * PRESS + (presses if in_the_dark else 0)
                 k = self.key(after)
@@ -217,6 +255,52 @@ class TaskSearch:
                     self._continuable.add(k)
                 heapq.heappush(frontier, (new_cost + h * PRESS, -new_cost, next(tie), k))
         raise SearchExhausted("exhausted", expanded, False)
+
+    def _visit_successors(
+        self,
+        ends: Ends,
+        state: State,
+        node: Hashable,
+        cost: int,
+        in_the_dark: bool,
+        projected: list[int],
+        best: dict[Hashable, int],
+        states: dict[Hashable, State],
+        came_from: dict[Hashable, Any],
+        frontier: list[tuple[float, int, int, Hashable]],
+        tie: Iterator[int],
+        expanded: int,
+    ) -> bool:
+        """:meth:`run`'s loop over one visit's successors, in order, each state built only
+        once its key shows it better than any way found before. True: memory ran out."""
+        step, writes, slots = ends.step, ends.writes, ends.slots
+        tree, outcomes, keyed = ends.visit
+        values = state.values
+        bound, ceiling, limit = self.bound, self._ceiling, STORED_PER_BUDGET * self.budget
+        for (changed, buffer, memory, presses, way), (written, tail) in zip(
+            outcomes, keyed, strict=True
+        ):
+            new_cost = cost + presses * PRESS + (presses if in_the_dark else 0)
+            seen = projected.copy()
+            for slot, value in zip(slots, written, strict=True):
+                seen[slot] = value
+            k = (tuple(seen), step, *tail)
+            if new_cost >= best.get(k, INF):
+                continue
+            new = list(values)
+            for w, value in zip(writes, changed, strict=True):
+                new[w] = value
+            after = State(tuple(new), step, buffer, memory)
+            h = bound(after)
+            if h == INF or new_cost + h * PRESS > ceiling:
+                continue
+            best[k] = new_cost
+            if len(best) > limit:
+                return True
+            states[k] = after
+            came_from[k] = (node, step, tree, way, False)
+            heapq.heappush(frontier, (new_cost + h * PRESS, -new_cost, next(tie), k))
+        return False
 
     def _part_out_of_reach(self, start: State, left: int) -> tuple[bool, int]:
         """Whether one goal variable alone is out of reach from ``start`` (within ``most``
@@ -272,7 +356,7 @@ class TaskSearch:
             link = came_from[previous]
         return tuple(reversed(visits))
 
-    def _edges(self, state: State, may_continue: bool) -> list[Edge]:
+    def _edges(self, state: State, may_continue: bool) -> list[Edge | Ends]:
         """Visits to every step one action reaches (the current step only when ``may_continue``),
         then each action that acts without the pointer table (anywhere keys, waits) alone."""
         compiled = self.compiled
@@ -284,7 +368,7 @@ class TaskSearch:
             if compiled.refusal(state, action) is not None:
                 continue
             by_step.setdefault(target, []).append(action)
-        edges: list[Edge] = []
+        edges: list[Edge | Ends] = []
         for step, entry in by_step.items():
             edges.extend(self._visit(state, step, entry))
         for action in compiled.free_actions:
@@ -293,7 +377,7 @@ class TaskSearch:
                 edges.append((after, 1, None, (action,), True))
         return edges
 
-    def _visit(self, state: State, step: int, entry: list[int]) -> list[Edge]:
+    def _visit(self, state: State, step: int, entry: list[int]) -> list[Edge | Ends]:
         info = self.compiled.steps[step]
         v = info.variable
         if v < 0 or v not in self.relevant:
@@ -343,15 +427,32 @@ class TaskSearch:
             if self._cached_ends > CACHED_ENDS:  # a cache, not a store: start afresh
                 self._visit_cache.clear()
                 self._cached_ends = 0
-            cached = self._visit_cache[cache_key] = (tree, outcomes)
-        tree, outcomes = cached
-        rebuilt: list[Edge] = []
-        for changed, buffer, memory, presses, way in outcomes:
-            new = list(values)
-            for w, value in zip(writes, changed, strict=True):
-                new[w] = value
-            rebuilt.append((State(tuple(new), step, buffer, memory), presses, tree, way, False))
-        return rebuilt
+            picks, _ = self._key_slots(step)
+            keypad = self.keypad_step[step]
+            keyed: list[tuple[tuple[int, ...], tuple[Hashable, ...]]] = [
+                (
+                    tuple(changed[i] for i in picks),
+                    (buffer if keypad else "", tuple(memory[m] for m in self._memory))
+                    if self._memory
+                    else (buffer if keypad else "",),
+                )
+                for changed, buffer, memory, _, _ in outcomes
+            ]
+            cached = (tree, outcomes, keyed)
+            self._visit_cache[cache_key] = cached
+        return [Ends(step, writes, self._key_slots(step)[1], cached)]
+
+    def _key_slots(self, step: int) -> tuple[tuple[int, ...], tuple[int, ...]]:
+        """For a visit to ``step``: which of its writes are relevant (indices into the
+        writes), and where each sits in a search key's projection of the values."""
+        found = self._slots.get(step)
+        if found is None:
+            _, writes = self._footprint(step)
+            position = {v: i for i, v in enumerate(self.relevant)}
+            picks = tuple(i for i, w in enumerate(writes) if w in position)
+            found = (picks, tuple(position[writes[i]] for i in picks))
+            self._slots[step] = found
+        return found
 
     def _footprint(self, step: int) -> tuple[tuple[int, ...], tuple[int, ...]]:
         """What a visit to ``step`` can change (its variable, side effects, the settings that
