@@ -25,7 +25,8 @@ from typing import Any
 
 from apbot.model.effects import entry_digits
 from apbot.plan.abstract import out_of_reach
-from apbot.plan.bounds import INF, LowerBound, distances_to, typeable_values
+from apbot.plan.bounds import LowerBound
+from apbot.plan.distances import INF, distances_to, typeable_values
 from apbot.plan.goals import CompiledGoal
 from apbot.plan.visits import SMALL_DOMAIN, VisitTooLarge, VisitTree, explore_tree, keypad_exits
 from apbot.sim.compiled import DIGIT, CompiledModel, State
