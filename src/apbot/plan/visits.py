@@ -18,6 +18,8 @@ from collections.abc import Callable, Hashable, Sequence
 
 from apbot.model.effects import entry_digits
 from apbot.model.schema import Entry
+from apbot.plan.distances import INF, distances_to, typeable_values
+from apbot.plan.goals import CompiledGoal
 from apbot.sim.compiled import CLEAR, DIGIT, NONE, CompiledModel, State
 
 Exit = tuple[State, tuple[int, ...]]
@@ -226,3 +228,53 @@ def _digit_actions(presses: str | None, digit_action: dict[str, int]) -> tuple[i
     if not presses or any(d not in digit_action for d in presses):
         return ()
     return tuple(digit_action[d] for d in presses)
+
+
+def keypad_targets(compiled: CompiledModel, goal: CompiledGoal, v: int) -> list[float]:
+    """Values worth typing into a keypad variable: its goal; values from which another step
+    reaches the goal about as cheaply (type 3:00, then +30 s) — the one place the planner
+    filters candidates by a cost argument instead of enumerating them; and, for each way
+    the guards can see the variable (inside or outside each guard's values), the value with
+    the fewest digits. Small domains offer every value."""
+    var = compiled.vars[v]
+    magnitudes: dict[float, None] = {}
+    if v in goal.variables:
+        name = var.name
+        goal_value = goal.canonical[name]
+        dist, _ = distances_to(compiled, v, goal_value)
+        typeable = dict(typeable_values(compiled, v))
+        direct = typeable.get(goal_value, INF)
+        # typing z and adjusting it in another step pays only if it costs about as much
+        # as typing the goal; the slack covers side effects that visit may bring along
+        slack = 1 + sum(
+            1 for step in compiled.steps for target, _ in step.side if target in goal.variables
+        )
+        for domain in var.domains:
+            if domain is None or domain.magnitudes is None:
+                continue
+            ranked = sorted(
+                (cost, i)
+                for i, value in enumerate(domain.values)
+                if value in typeable
+                and (cost := typeable[value] + dist.get(value, INF)) <= direct + slack
+            )
+            for _, i in ranked[:SMALL_DOMAIN]:
+                magnitudes[domain.magnitudes[i]] = None
+    guard_sets = [ok for guard in compiled.guards for gv, ok in guard.conditions if gv == v]
+    entry = getattr(var.spec, "entry", None)
+    for domain in var.domains:
+        if domain is None or domain.magnitudes is None:
+            continue
+        if len(domain) <= SMALL_DOMAIN:
+            magnitudes.update(dict.fromkeys(domain.magnitudes))
+            continue
+        cheapest: dict[tuple[bool, ...], tuple[int, float]] = {}
+        for i, magnitude in enumerate(domain.magnitudes):
+            digits = entry_digits(magnitude, entry) if entry is not None else None
+            if digits is None:
+                continue
+            seen_by_guards = tuple(i in ok for ok in guard_sets)
+            if seen_by_guards not in cheapest or len(digits) < cheapest[seen_by_guards][0]:
+                cheapest[seen_by_guards] = (len(digits), magnitude)
+        magnitudes.update(dict.fromkeys(m for _, m in cheapest.values()))
+    return list(magnitudes)
