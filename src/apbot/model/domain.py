@@ -11,6 +11,7 @@ import math
 from bisect import bisect_left, bisect_right
 from collections.abc import Container, Sequence
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Any
 
 from apbot.model.limits import MAX_MODEL_VALUES, MAX_VALUES, SIZE_LIMITS_DOC
@@ -73,6 +74,17 @@ class Domain:
             return i - 1
         return len(self.values) - 1 if self.wrap else i
 
+    @cached_property
+    def _period(self) -> float | None:
+        """How far a clock counts before it comes round, for evenly spaced magnitudes (None:
+        uneven). Worked out once: :meth:`snap_index` needs it for every value of a table."""
+        assert self.magnitudes is not None
+        mags = self.magnitudes
+        steps = {round(b - a, 9) for a, b in itertools.pairwise(mags)}
+        if len(steps) != 1:
+            return None
+        return mags[-1] - mags[0] + steps.pop()
+
     def snap_index(self, magnitude: float, down: bool = False) -> int:
         """The index reached by adding to a number: the next value at or above ``magnitude``
         (at or below it when subtracting, ``down``), so a key never fails to move the value.
@@ -85,9 +97,8 @@ class Domain:
         mags = self.magnitudes
         outside = magnitude > mags[-1] + 1e-9 or magnitude < mags[0] - 1e-9
         if self.wrap and outside and len(mags) > 1:
-            steps = {round(b - a, 9) for a, b in itertools.pairwise(mags)}
-            if len(steps) == 1:
-                period = mags[-1] - mags[0] + steps.pop()
+            period = self._period
+            if period is not None:
                 magnitude = mags[0] + (magnitude - mags[0]) % period
                 outside = False
         if not outside:

@@ -18,15 +18,22 @@ from __future__ import annotations
 
 import heapq
 import itertools
-from collections.abc import Hashable
+from collections.abc import Hashable, Iterator
 from dataclasses import dataclass
 from operator import itemgetter
+from typing import Any
 
-from apbot.model.effects import entry_digits
 from apbot.plan.abstract import out_of_reach
-from apbot.plan.bounds import INF, LowerBound, distances_to, typeable_values
+from apbot.plan.bounds import LowerBound
+from apbot.plan.distances import INF
 from apbot.plan.goals import CompiledGoal
-from apbot.plan.visits import SMALL_DOMAIN, Exit, VisitTooLarge, explore_visit, keypad_exits
+from apbot.plan.visits import (
+    VisitTooLarge,
+    VisitTree,
+    explore_tree,
+    keypad_exits,
+    keypad_targets,
+)
 from apbot.sim.compiled import DIGIT, CompiledModel, State
 
 DEFAULT_BUDGET = 200_000
@@ -39,9 +46,9 @@ VISIT_LIMIT = 20_000
 STORED_PER_BUDGET = 2
 # successors the search may generate per state of its budget (each costs a bound evaluation)
 EDGES_PER_BUDGET = 20
-# presses the visit cache may hold in its paths (a 1,440-minute clock walked one press at a time
-# gives visits of a million presses each) before it is emptied
-CACHED_PRESSES = 5_000_000
+# visit ends the visit cache may hold before it is emptied (a 1,440-minute clock walked one
+# press at a time gives visits of 1,440 ends; an end costs about 200 bytes)
+CACHED_ENDS = 500_000
 # Path cost is lexicographic, packed in one int: presses × PRESS + presses made while a guard
 # keeps the display dark. The plan stays shortest; among equally short plans it prefers to set
 # things where the display shows them, so the closed loop can check what it did.
@@ -73,6 +80,36 @@ class Visit:
     free: bool = False  # one action that does not move through the pointer (anywhere, wait)
 
 
+# one way out of a visit, cached: (values of the step's writes, buffer, memory, presses, and
+# the presses themselves — an index into the visit's tree, or the presses when it has none)
+Outcome = tuple[tuple[int, ...], str, tuple[int, ...], int, "int | tuple[int, ...]"]
+# a successor: (state, presses, the visit's tree or None, index into it or the presses, free)
+Edge = tuple[State, int, VisitTree | None, "int | tuple[int, ...]", bool]
+# a cached visit: its tree (None: keypad or single presses), outcomes, and per outcome the part
+# of a search key it decides: the relevant written values, and (buffer, what memory keeps)
+CachedVisit = tuple[
+    VisitTree | None, list[Outcome], list[tuple[tuple[int, ...], tuple[Hashable, ...]]]
+]
+
+
+@dataclass(frozen=True)
+class Ends:
+    """The successors one visit gives a node, their states not yet built: most are dropped
+    as no better than a way the search has already found, which their keys alone tell."""
+
+    step: int
+    writes: tuple[int, ...]
+    slots: tuple[int, ...]  # where the relevant writes sit in a search key's projection
+    visit: CachedVisit
+
+
+def _presses(tree: VisitTree | None, way: int | tuple[int, ...]) -> tuple[int, ...]:
+    if isinstance(way, int):
+        assert tree is not None
+        return tree.path(way)
+    return way
+
+
 @dataclass(frozen=True)
 class SearchResult:
     visits: tuple[Visit, ...]
@@ -86,6 +123,11 @@ def relevant_variables(compiled: CompiledModel, goal: CompiledGoal) -> list[int]
     for guard in compiled.guards:
         relevant.update(v for v, _ in guard.conditions)
     return sorted(compiled.influencers(relevant))
+
+
+def _tupled(picked: Any) -> tuple[int, ...]:
+    """What an ``itemgetter`` of one or more items picked, as a tuple."""
+    return picked if isinstance(picked, tuple) else (picked,)
 
 
 class TaskSearch:
@@ -120,10 +162,9 @@ class TaskSearch:
         )
         self._memory = compiled.memory_of(self.relevant)
         self.bound = LowerBound(compiled, goal)
-        self._visit_cache: dict[
-            Hashable, list[tuple[tuple[int, ...], str, tuple[int, ...], tuple[int, ...]]]
-        ] = {}
-        self._cached_presses = 0  # presses held by the paths in the visit cache
+        self._visit_cache: dict[Hashable, CachedVisit] = {}
+        self._slots: dict[int, tuple[tuple[int, ...], tuple[int, ...]]] = {}
+        self._cached_ends = 0  # visit ends held by the visit cache
         self._footprints: dict[int, tuple[tuple[int, ...], tuple[int, ...]]] = {}
         self._keypad_targets: dict[int, list[float]] = {}
         # nodes reached by an anywhere key or a wait: the pointer stayed, so the step it is on
@@ -147,7 +188,9 @@ class TaskSearch:
             raise SearchExhausted("unreachable", 0, False)
         start_key = self.key(start)
         best = {start_key: 0}
-        came_from: dict[Hashable, tuple[Hashable, Visit] | None] = {start_key: None}
+        came_from: dict[
+            Hashable, tuple[Hashable, int, VisitTree | None, int | tuple[int, ...], bool] | None
+        ] = {start_key: None}
         states = {start_key: start}
         tie = itertools.count()
         frontier = [(h0 * PRESS, 0, next(tie), start_key)]
@@ -166,7 +209,7 @@ class TaskSearch:
                 raise SearchExhausted("budget", expanded, True)
             in_the_dark = bool(compiled.guards) and compiled.hiding_guard(state) is not None
             edges = self._edges(state, node == start_key or node in self._continuable)
-            generated += len(edges)
+            generated += sum(len(e.visit[1]) if isinstance(e, Ends) else 1 for e in edges)
             self.generated = generated
             if generated > self.work:  # thousand-end visits: time runs out
                 raise SearchExhausted("budget", expanded, True)
@@ -179,9 +222,30 @@ class TaskSearch:
                 self.generated = generated
                 if proven:
                     raise SearchExhausted("unreachable", expanded, False)
-            for after, actions, free in edges:
+            projected: list[int] | None = None
+            for edge in edges:
+                if isinstance(edge, Ends):  # the same as below, states built only when kept
+                    if projected is None:
+                        projected = list(self.key(state)[0])  # type: ignore[index]
+                    if self._visit_successors(
+                        edge,
+                        state,
+                        node,
+                        cost,
+                        in_the_dark,
+                        projected,
+                        best,
+                        states,
+                        came_from,
+                        frontier,
+                        tie,
+                        expanded,
+                    ):
+                        raise SearchExhausted("budget", expanded, True)
+                    continue
+                after, presses, tree, way, free = edge
                 # presses first; among plans of equal length, fewer presses with a dark display
-                new_cost = cost + len(actions) * PRESS + (len(actions) if in_the_dark else 0)
+                new_cost = cost + presses * PRESS + (presses if in_the_dark else 0)
                 k = self.key(after)
                 if new_cost >= best.get(k, INF):
                     continue
@@ -192,11 +256,57 @@ class TaskSearch:
                 if len(best) > STORED_PER_BUDGET * self.budget:  # memory, not time, runs out
                     raise SearchExhausted("budget", expanded, True)
                 states[k] = after
-                came_from[k] = (node, Visit(after.step, actions, free))
+                came_from[k] = (node, after.step, tree, way, free)
                 if free:
                     self._continuable.add(k)
                 heapq.heappush(frontier, (new_cost + h * PRESS, -new_cost, next(tie), k))
         raise SearchExhausted("exhausted", expanded, False)
+
+    def _visit_successors(
+        self,
+        ends: Ends,
+        state: State,
+        node: Hashable,
+        cost: int,
+        in_the_dark: bool,
+        projected: list[int],
+        best: dict[Hashable, int],
+        states: dict[Hashable, State],
+        came_from: dict[Hashable, Any],
+        frontier: list[tuple[float, int, int, Hashable]],
+        tie: Iterator[int],
+        expanded: int,
+    ) -> bool:
+        """:meth:`run`'s loop over one visit's successors, in order, each state built only
+        once its key shows it better than any way found before. True: memory ran out."""
+        step, writes, slots = ends.step, ends.writes, ends.slots
+        tree, outcomes, keyed = ends.visit
+        values = state.values
+        bound, ceiling, limit = self.bound, self._ceiling, STORED_PER_BUDGET * self.budget
+        for (changed, buffer, memory, presses, way), (written, tail) in zip(
+            outcomes, keyed, strict=True
+        ):
+            new_cost = cost + presses * PRESS + (presses if in_the_dark else 0)
+            seen = projected.copy()
+            for slot, value in zip(slots, written, strict=True):
+                seen[slot] = value
+            k = (tuple(seen), step, *tail)
+            if new_cost >= best.get(k, INF):
+                continue
+            new = list(values)
+            for w, value in zip(writes, changed, strict=True):
+                new[w] = value
+            after = State(tuple(new), step, buffer, memory)
+            h = bound(after)
+            if h == INF or new_cost + h * PRESS > ceiling:
+                continue
+            best[k] = new_cost
+            if len(best) > limit:
+                return True
+            states[k] = after
+            came_from[k] = (node, step, tree, way, False)
+            heapq.heappush(frontier, (new_cost + h * PRESS, -new_cost, next(tie), k))
+        return False
 
     def _part_out_of_reach(self, start: State, left: int) -> tuple[bool, int]:
         """Whether one goal variable alone is out of reach from ``start`` (within ``most``
@@ -239,17 +349,20 @@ class TaskSearch:
 
     @staticmethod
     def _path(
-        came_from: dict[Hashable, tuple[Hashable, Visit] | None], node: Hashable
+        came_from: dict[
+            Hashable, tuple[Hashable, int, VisitTree | None, int | tuple[int, ...], bool] | None
+        ],
+        node: Hashable,
     ) -> tuple[Visit, ...]:
         visits: list[Visit] = []
         link = came_from[node]
         while link is not None:
-            previous, visit = link
-            visits.append(visit)
+            previous, step, tree, way, free = link
+            visits.append(Visit(step, _presses(tree, way), free))
             link = came_from[previous]
         return tuple(reversed(visits))
 
-    def _edges(self, state: State, may_continue: bool) -> list[tuple[State, tuple[int, ...], bool]]:
+    def _edges(self, state: State, may_continue: bool) -> list[Edge | Ends]:
         """Visits to every step one action reaches (the current step only when ``may_continue``),
         then each action that acts without the pointer table (anywhere keys, waits) alone."""
         compiled = self.compiled
@@ -261,21 +374,21 @@ class TaskSearch:
             if compiled.refusal(state, action) is not None:
                 continue
             by_step.setdefault(target, []).append(action)
-        edges: list[tuple[State, tuple[int, ...], bool]] = []
+        edges: list[Edge | Ends] = []
         for step, entry in by_step.items():
-            edges.extend((after, path, False) for after, path in self._visit(state, step, entry))
+            edges.extend(self._visit(state, step, entry))
         for action in compiled.free_actions:
             after = compiled.apply(state, action)
             if after is not None and after != state:
-                edges.append((after, (action,), True))
+                edges.append((after, 1, None, (action,), True))
         return edges
 
-    def _visit(self, state: State, step: int, entry: list[int]) -> list[Exit]:
+    def _visit(self, state: State, step: int, entry: list[int]) -> list[Edge | Ends]:
         info = self.compiled.steps[step]
         v = info.variable
         if v < 0 or v not in self.relevant:
             after = self.compiled.apply(state, entry[0])
-            return [] if after is None else [(after, (entry[0],))]
+            return [] if after is None else [(after, 1, None, (entry[0],), False)]
         reads, writes = self._footprint(step)
         continuing = state.step == step
         values = state.values
@@ -287,39 +400,65 @@ class TaskSearch:
             continuing,
             state.memory,  # a programme change takes back what a setting kept
         )
-        outcomes = self._visit_cache.get(cache_key)
-        if outcomes is None:
+        cached = self._visit_cache.get(cache_key)
+        if cached is None:
+            written = itemgetter(*writes)
+            outcomes: list[Outcome]
+            tree: VisitTree | None = None
             if self.keypad_step[step]:
                 exits = keypad_exits(self.compiled, state, step, entry, self._targets_for(v))
+                outcomes = [
+                    (_tupled(written(after.values)), after.buffer, after.memory, len(path), path)
+                    for after, path in exits
+                ]
             else:
 
                 def inner_key(s: State) -> Hashable:
                     # what remembered settings keep tells two ends of a visit apart too (a
                     # press stored a value for the programme its side effect then left)
-                    return (tuple(s.values[w] for w in writes), s.buffer, s.memory)
+                    return (written(s.values), s.buffer, s.memory)
 
                 try:
-                    exits = explore_visit(
+                    tree = explore_tree(
                         self.compiled, state, step, entry, inner_key, limit=VISIT_LIMIT
                     )
                 except VisitTooLarge:
                     raise SearchExhausted("budget", self.budget, True) from None
-            outcomes = [
-                (tuple(after.values[w] for w in writes), after.buffer, path, after.memory)
-                for after, path in exits
-            ]
-            self._cached_presses += sum(len(path) for _, path in exits)
-            if self._cached_presses > CACHED_PRESSES:  # a cache, not a store: start afresh
+                outcomes = [
+                    (_tupled(written(after.values)), after.buffer, after.memory, length, i)
+                    for i, (after, length) in enumerate(zip(tree.ends, tree.lengths, strict=True))
+                ]
+                tree.ends = []  # the paths are all the cache needs of it
+            self._cached_ends += len(outcomes)
+            if self._cached_ends > CACHED_ENDS:  # a cache, not a store: start afresh
                 self._visit_cache.clear()
-                self._cached_presses = 0
-            self._visit_cache[cache_key] = outcomes
-        rebuilt = []
-        for changed, buffer, path, memory in outcomes:
-            new = list(values)
-            for w, value in zip(writes, changed, strict=True):
-                new[w] = value
-            rebuilt.append((State(tuple(new), step, buffer, memory), path))
-        return rebuilt
+                self._cached_ends = 0
+            picks, _ = self._key_slots(step)
+            keypad = self.keypad_step[step]
+            keyed: list[tuple[tuple[int, ...], tuple[Hashable, ...]]] = [
+                (
+                    tuple(changed[i] for i in picks),
+                    (buffer if keypad else "", tuple(memory[m] for m in self._memory))
+                    if self._memory
+                    else (buffer if keypad else "",),
+                )
+                for changed, buffer, memory, _, _ in outcomes
+            ]
+            cached = (tree, outcomes, keyed)
+            self._visit_cache[cache_key] = cached
+        return [Ends(step, writes, self._key_slots(step)[1], cached)]
+
+    def _key_slots(self, step: int) -> tuple[tuple[int, ...], tuple[int, ...]]:
+        """For a visit to ``step``: which of its writes are relevant (indices into the
+        writes), and where each sits in a search key's projection of the values."""
+        found = self._slots.get(step)
+        if found is None:
+            _, writes = self._footprint(step)
+            position = {v: i for i, v in enumerate(self.relevant)}
+            picks = tuple(i for i, w in enumerate(writes) if w in position)
+            found = (picks, tuple(position[writes[i]] for i in picks))
+            self._slots[step] = found
+        return found
 
     def _footprint(self, step: int) -> tuple[tuple[int, ...], tuple[int, ...]]:
         """What a visit to ``step`` can change (its variable, side effects, the settings that
@@ -341,58 +480,7 @@ class TaskSearch:
         return cached
 
     def _targets_for(self, v: int) -> list[float]:
-        """Values worth typing into a keypad variable: its goal; values from which another step
-        reaches the goal about as cheaply (type 3:00, then +30 s) — the one place the planner
-        filters candidates by a cost argument instead of enumerating them; and, for each way
-        the guards can see the variable (inside or outside each guard's values), the value with
-        the fewest digits. Small domains offer every value."""
-        if v in self._keypad_targets:
-            return self._keypad_targets[v]
-        var = self.compiled.vars[v]
-        magnitudes: dict[float, None] = {}
-        if v in self.goal.variables:
-            name = var.name
-            goal_value = self.goal.canonical[name]
-            dist, _ = distances_to(self.compiled, v, goal_value)
-            typeable = dict(typeable_values(self.compiled, v))
-            direct = typeable.get(goal_value, INF)
-            # typing z and adjusting it in another step pays only if it costs about as much
-            # as typing the goal; the slack covers side effects that visit may bring along
-            slack = 1 + sum(
-                1
-                for step in self.compiled.steps
-                for target, _ in step.side
-                if target in self.goal.variables
-            )
-            for domain in var.domains:
-                if domain is None or domain.magnitudes is None:
-                    continue
-                ranked = sorted(
-                    (cost, i)
-                    for i, value in enumerate(domain.values)
-                    if value in typeable
-                    and (cost := typeable[value] + dist.get(value, INF)) <= direct + slack
-                )
-                for _, i in ranked[:SMALL_DOMAIN]:
-                    magnitudes[domain.magnitudes[i]] = None
-        guard_sets = [
-            ok for guard in self.compiled.guards for gv, ok in guard.conditions if gv == v
-        ]
-        entry = getattr(var.spec, "entry", None)
-        for domain in var.domains:
-            if domain is None or domain.magnitudes is None:
-                continue
-            if len(domain) <= SMALL_DOMAIN:
-                magnitudes.update(dict.fromkeys(domain.magnitudes))
-                continue
-            cheapest: dict[tuple[bool, ...], tuple[int, float]] = {}
-            for i, magnitude in enumerate(domain.magnitudes):
-                digits = entry_digits(magnitude, entry) if entry is not None else None
-                if digits is None:
-                    continue
-                seen_by_guards = tuple(i in ok for ok in guard_sets)
-                if seen_by_guards not in cheapest or len(digits) < cheapest[seen_by_guards][0]:
-                    cheapest[seen_by_guards] = (len(digits), magnitude)
-            magnitudes.update(dict.fromkeys(m for _, m in cheapest.values()))
-        self._keypad_targets[v] = list(magnitudes)
+        """Values worth typing into keypad variable ``v`` (see :func:`keypad_targets`)."""
+        if v not in self._keypad_targets:
+            self._keypad_targets[v] = keypad_targets(self.compiled, self.goal, v)
         return self._keypad_targets[v]

@@ -14,11 +14,12 @@ shortest digit string that leaves the buffer reading the wanted value (see
 
 from __future__ import annotations
 
-from collections import deque
 from collections.abc import Callable, Hashable, Sequence
 
 from apbot.model.effects import entry_digits
 from apbot.model.schema import Entry
+from apbot.plan.distances import INF, distances_to, typeable_values
+from apbot.plan.goals import CompiledGoal
 from apbot.sim.compiled import CLEAR, DIGIT, NONE, CompiledModel, State
 
 Exit = tuple[State, tuple[int, ...]]
@@ -46,28 +47,70 @@ def explore_visit(
     value per programme while changing the programme reaches every combination of what it
     remembers, which can outgrow any memory.
     """
-    apply = compiled.apply
-    seen: dict[Hashable, Exit] = {}
-    queue: deque[Exit] = deque()
+    tree = explore_tree(compiled, state, step, entry, key, limit)
+    return [(end, tree.path(i)) for i, end in enumerate(tree.ends)]
 
-    def expand(source: State, path: tuple[int, ...], actions: Sequence[int]) -> None:
-        for action in actions:
+
+class VisitTree:
+    """The ends of one visit as a breadth-first tree: ``ends[i]`` is reached by the press
+    ``actions[i]`` from ``ends[parents[i]]`` (-1: from the state the visit starts in), in
+    ``lengths[i]`` presses. Why a tree: a clock walked one press at a time has ends hundreds
+    of presses away, and copying each end's whole path costs time and memory quadratic in
+    the walk; the search needs only the lengths, and the path of the plan it returns."""
+
+    __slots__ = ("actions", "ends", "lengths", "parents")
+
+    def __init__(self) -> None:
+        self.ends: list[State] = []
+        self.parents: list[int] = []
+        self.actions: list[int] = []
+        self.lengths: list[int] = []
+
+    def path(self, i: int) -> tuple[int, ...]:
+        """The presses from the visit's start to end ``i``."""
+        presses = []
+        while i >= 0:
+            presses.append(self.actions[i])
+            i = self.parents[i]
+        return tuple(reversed(presses))
+
+
+def explore_tree(
+    compiled: CompiledModel,
+    state: State,
+    step: int,
+    entry: Sequence[int],
+    key: Callable[[State], Hashable],
+    limit: int | None = None,
+) -> VisitTree:
+    """:func:`explore_visit`, its ends kept as a :class:`VisitTree` (same ends, same order)."""
+    apply = compiled.apply
+    seen: set[Hashable] = set()
+    tree = VisitTree()
+    ends, parents, actions, lengths = tree.ends, tree.parents, tree.actions, tree.lengths
+
+    def expand(source: State, parent: int, length: int, pressed: Sequence[int]) -> None:
+        for action in pressed:
             after = apply(source, action)
             if after is None:
                 continue
             k = key(after)
             if k not in seen:
-                seen[k] = (after, (*path, action))
-                queue.append(seen[k])
+                seen.add(k)
+                ends.append(after)
+                parents.append(parent)
+                actions.append(action)
+                lengths.append(length)
                 if limit is not None and len(seen) > limit:
                     raise VisitTooLarge(f"a visit to step {step} ends in over {limit} states")
 
-    expand(state, (), entry)
+    expand(state, -1, 1, entry)
     own = sorted(compiled.steps[step].actions)
-    while queue:
-        current, path = queue.popleft()
-        expand(current, path, own)
-    return list(seen.values())
+    i = 0
+    while i < len(ends):  # the ends list is the breadth-first queue
+        expand(ends[i], i, lengths[i] + 1, own)
+        i += 1
+    return tree
 
 
 def keypad_presses(buffer: str, target: str, entry: Entry, typed: bool = True) -> str | None:
@@ -185,3 +228,53 @@ def _digit_actions(presses: str | None, digit_action: dict[str, int]) -> tuple[i
     if not presses or any(d not in digit_action for d in presses):
         return ()
     return tuple(digit_action[d] for d in presses)
+
+
+def keypad_targets(compiled: CompiledModel, goal: CompiledGoal, v: int) -> list[float]:
+    """Values worth typing into a keypad variable: its goal; values from which another step
+    reaches the goal about as cheaply (type 3:00, then +30 s) — the one place the planner
+    filters candidates by a cost argument instead of enumerating them; and, for each way
+    the guards can see the variable (inside or outside each guard's values), the value with
+    the fewest digits. Small domains offer every value."""
+    var = compiled.vars[v]
+    magnitudes: dict[float, None] = {}
+    if v in goal.variables:
+        name = var.name
+        goal_value = goal.canonical[name]
+        dist, _ = distances_to(compiled, v, goal_value)
+        typeable = dict(typeable_values(compiled, v))
+        direct = typeable.get(goal_value, INF)
+        # typing z and adjusting it in another step pays only if it costs about as much
+        # as typing the goal; the slack covers side effects that visit may bring along
+        slack = 1 + sum(
+            1 for step in compiled.steps for target, _ in step.side if target in goal.variables
+        )
+        for domain in var.domains:
+            if domain is None or domain.magnitudes is None:
+                continue
+            ranked = sorted(
+                (cost, i)
+                for i, value in enumerate(domain.values)
+                if value in typeable
+                and (cost := typeable[value] + dist.get(value, INF)) <= direct + slack
+            )
+            for _, i in ranked[:SMALL_DOMAIN]:
+                magnitudes[domain.magnitudes[i]] = None
+    guard_sets = [ok for guard in compiled.guards for gv, ok in guard.conditions if gv == v]
+    entry = getattr(var.spec, "entry", None)
+    for domain in var.domains:
+        if domain is None or domain.magnitudes is None:
+            continue
+        if len(domain) <= SMALL_DOMAIN:
+            magnitudes.update(dict.fromkeys(domain.magnitudes))
+            continue
+        cheapest: dict[tuple[bool, ...], tuple[int, float]] = {}
+        for i, magnitude in enumerate(domain.magnitudes):
+            digits = entry_digits(magnitude, entry) if entry is not None else None
+            if digits is None:
+                continue
+            seen_by_guards = tuple(i in ok for ok in guard_sets)
+            if seen_by_guards not in cheapest or len(digits) < cheapest[seen_by_guards][0]:
+                cheapest[seen_by_guards] = (len(digits), magnitude)
+        magnitudes.update(dict.fromkeys(m for _, m in cheapest.values()))
+    return list(magnitudes)
