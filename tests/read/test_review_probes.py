@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -49,3 +50,33 @@ def test_counted_ranged_and_stepped_phrases_with_odd_numbers_read_or_refuse(
         f"| Programme | Time ({unit}) |\n|---|---|\n| BAKE | {low}–{high} |\n| GRILL | {high} |\n"
     )
     _checked(text, [*KNOB, "press_timer_button"])
+
+
+TIMER_DIAL = """# Mini oven
+
+## TIMER knob
+
+Turning the TIMER knob starts the oven. Its dial is printed OFF 5 10 15 20 30 45 (minutes).
+{said} Past that the knob clicks at the printed numbers.
+"""
+TIMER_ACTIONS = ["turn_timer_knob_clockwise", "turn_timer_knob_counterclockwise", "press_light"]
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
+        "Up to 5 min the knob moves in 1-minute steps.",
+        "For the first five minutes, each minute is marked.",
+        "Below 5 minutes there is a detent minute by minute.",
+    ],
+)
+def test_a_dial_marked_minute_by_minute_up_to_a_bound_has_every_minute_there(said: str) -> None:
+    model = read_manual(TIMER_DIAL.format(said=said), TIMER_ACTIONS).model
+    timer = model.variables["timer_knob"]
+    assert timer.ranges[0] == ("00:00:00", "00:05:00", 60)
+
+
+def test_a_minute_counted_down_is_no_minute_by_minute_dial() -> None:
+    said = "The display counts each minute down."
+    model = read_manual(TIMER_DIAL.format(said=said), TIMER_ACTIONS).model
+    assert model.variables["timer_knob"].ranges[0][2] == 300

@@ -267,9 +267,8 @@ class EvidenceReader(ListReader):
             if any(_BETWEEN_RE.search(t) for t in said):
                 best = _with_midpoints(best)
             for t in said:  # "in the first ten minutes every minute has its own tick"
-                each = _EVERY_MINUTE_RE.search(t)
-                top = number(each.group(1) or each.group(2)) if each else None
-                if top and 2 <= top <= 30:
+                top = _every_minute_top(t)
+                if top and 2 <= top <= 30 and top == int(top):
                     best = _with_every(best, int(top))
                     break
         if best is not None:
@@ -403,11 +402,33 @@ def _with_midpoints(items: list[str]) -> list[str]:
     return [f"{v:g}" + (f" {unit}" if unit else "") for v in out]
 
 
+# a scale marked minute by minute up to some bound: "every minute up to 10 min", "1-minute
+# steps below 10 minutes", "each minute is marked for the first ten minutes"
 _EVERY_MINUTE_RE = re.compile(
-    r"\bfirst\s+(\w+)\s+minutes\b[^.;]{0,30}\bevery minute\b"
-    r"|\bevery minute\b[^.;]{0,40}\b(?:first|up to)\s+(\w+)\s+minutes\b",
+    r"\b(?:every|each|single)\s+minute\b|\bminute by minute\b|\bsingle minutes\b"
+    r"|\b(?:1|one)[\s-]?min(?:ute)?\s+(?:steps?|increments?|ticks?|marks?|clicks?|divisions?)\b",
     re.I,
 )
+_MINUTE_BOUND_RE = re.compile(
+    r"\b(?:first|up to|below|under|until|till|to)\s+(?:the\s+)?(?:first\s+)?"
+    r"(\d{1,2}|[a-z]+)\s*(?:minutes|mins?)\b",
+    re.I,
+)
+_SENTENCE_END_RE = re.compile(r"(?<=[.;!?])\s+")
+
+
+def _every_minute_top(text: str) -> float | None:
+    """The bound of a run of one-minute settings a sentence describes, else None."""
+    for sentence in _SENTENCE_END_RE.split(text):
+        fine = _EVERY_MINUTE_RE.search(sentence)
+        if fine is None:
+            continue
+        for bound in _MINUTE_BOUND_RE.finditer(sentence):
+            if bound.start() >= fine.end() or bound.end() <= fine.start():
+                top = number(bound.group(1))
+                if top is not None:
+                    return top
+    return None
 
 
 def _with_every(items: list[str], top: int) -> list[str]:
