@@ -80,3 +80,36 @@ def test_a_minute_counted_down_is_no_minute_by_minute_dial() -> None:
     said = "The display counts each minute down."
     model = read_manual(TIMER_DIAL.format(said=said), TIMER_ACTIONS).model
     assert model.variables["timer_knob"].ranges[0][2] == 300
+
+
+HOB = """# Hob
+
+## Keys
+
+| Key | Touch | Touch and hold |
+|---|---|---|
+| ON/OFF | Switches the hob on and off. | – |
+| LEFT | Selects the left field. | Touch and hold 2 s: timer for the left cooking field. |
+| RIGHT | Selects the right field. | Touch and hold 2 s: timer for the right cooking field. |
+| + / − | Change the power or the timer minutes. | – |
+
+Touch LEFT or RIGHT, then + or − to change its power level from 1 to 9.
+Touch and hold LEFT or RIGHT to set that field's timer with + and −, 1 to 99 minutes.
+"""
+HOB_ACTIONS = [
+    "press_on_off",
+    "press_left",
+    "hold_left",
+    "press_right",
+    "hold_right",
+    "press_plus",
+    "press_minus",
+]
+
+
+def test_a_hold_for_the_timer_of_a_place_of_any_noun_is_that_keys_timer() -> None:
+    model = read_manual(HOB, HOB_ACTIONS).model  # ("cooking field": no fixed list of places)
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    held = next(f for f in model.features.values() if f[0].actions == ["hold_left"])
+    assert held[1].variable == "left_timer"
+
