@@ -8,6 +8,8 @@ from hypothesis import strategies as st
 
 from apbot.model.validate import check_model
 from apbot.read import ReaderError, read_manual
+from apbot.read.build import twelve_hour_clock
+from apbot.read.text import parse_manual
 
 KNOB = ["turn_mode_knob_clockwise", "press_start_button"]
 
@@ -113,3 +115,19 @@ def test_a_hold_for_the_timer_of_a_place_of_any_noun_is_that_keys_timer() -> Non
     held = next(f for f in model.features.values() if f[0].actions == ["hold_left"])
     assert held[1].variable == "left_timer"
 
+
+@pytest.mark.parametrize(
+    ("said", "twelve"),
+    [
+        ("The clock uses the 12-Hour format.", True),
+        ("Time of day is shown in 12 h format.", True),
+        ("Set the clock to the time of day, e.g. 7:30 pm.", True),
+        ("Keep warm runs for a 12-hour maximum.", False),
+        ("Delay: up to a 12-hour delay. The clock shows 24 h.", False),
+        ("I am sure the clock works.", False),
+    ],
+)
+def test_a_twelve_hour_clock_is_read_from_any_spelling_and_only_of_a_clock(
+    said: str, twelve: bool
+) -> None:
+    assert twelve_hour_clock(parse_manual(f"# T\n\n{said}\n").units) is twelve

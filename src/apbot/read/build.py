@@ -37,17 +37,33 @@ from apbot.read.values import (
 _PRINTED_UNITS = r"kg|g|lbs?|ml|l|litres?|W|watts?|rpm|%"  # quantities, not times or degrees
 
 
-_TWELVE_RE = re.compile(r"\b12[- ]h(?:ou)?r\b|\b12 hours? (?:clock|system|format)|\bAM\b|\bPM\b")
-_TWENTY_FOUR_RE = re.compile(r"\b24[- ]h(?:ou)?r\b|\b24 hours? (?:clock|system|format)", re.I)
+_HOURS = r"(?:[- ]?h(?:ou)?rs?\b|[- ]?h\b|[- ]hours?\b)"  # "12-hour", "12 h", "12hr", "24-hours"
+_CLOCK_WORDS = r"\b(?:clock|format|system|mode|display|time of day|a\.?m\b|p\.?m\b)"
+
+
+def _hour_clock_re(number: str) -> re.Pattern[str]:
+    """ "12-hour" (any spelling) with a clock word in its sentence: "keeps warm 12 hours" is
+    no clock."""
+    return re.compile(
+        rf"{number}{_HOURS}(?=.*{_CLOCK_WORDS})|{_CLOCK_WORDS}.*{number}{_HOURS}", re.I
+    )
+
+
+_TWELVE_RE = _hour_clock_re(r"(?:\b12|\btwelve)")
+_TWENTY_FOUR_RE = _hour_clock_re(r"(?:\b24|\btwenty[- ]four)")
+_AM_PM_RE = re.compile(  # "AM", "7:30 pm", "8 a.m.", "am/pm" (not the verb "am")
+    r"(?-i:\bAM\b|\bPM\b)|\d(?::\d\d)?\s*[ap]\.?m\b|\b(?:am|a\.m\.)\s*/\s*(?:pm|p\.m\.)", re.I
+)
+_SENTENCE_RE = re.compile(r"(?<=[.;!?])\s+(?=[A-Z])")
 
 
 def twelve_hour_clock(units: list[Any]) -> bool:
     """Whether the clock counts 1–12 (AM/PM, "12-hour clock"): "keeps warm for 12 hours" is no
     such clock, and a manual that speaks of a 24-hour clock has none."""
-    texts = [u.text for u in units]
+    texts = [s for u in units for s in _SENTENCE_RE.split(u.text)]  # (its clock in the sentence)
     if any(_TWENTY_FOUR_RE.search(t) for t in texts):
         return False
-    return any(_TWELVE_RE.search(t) for t in texts)
+    return any(_TWELVE_RE.search(t) or _AM_PM_RE.search(t) for t in texts)
 
 
 _QUANTITY_WORDS = {"temp", "temperature", "humidity", "weight", "volume", "speed", "watt"}
