@@ -13,6 +13,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
+from apbot.model.values import format_hms
 from apbot.read.actions import ActionInfo
 from apbot.read.evidence import EvidenceReader
 from apbot.read.labels import Label, words
@@ -22,7 +23,6 @@ from apbot.read.shapes import (
     Evidence,
     _dedupe,
     _guess_step,
-    _hms,
     _tidy,
     _unit_from_words,
     _value_text,
@@ -260,7 +260,9 @@ class Builder(EvidenceReader):
         if as_time:
             spec = {
                 "type": "time",
-                "ranges": [[_hms(int(lo)), _hms(int(hi)), int(st)] for lo, hi, st in pieces],
+                "ranges": [
+                    [format_hms(int(lo)), format_hms(int(hi)), int(st)] for lo, hi, st in pieces
+                ],
                 "format": "h:mm"
                 if pieces[-1][1] >= 3600 and all(p[2] % 60 == 0 for p in pieces)
                 else "mm:ss",

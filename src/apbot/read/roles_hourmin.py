@@ -7,6 +7,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
+from apbot.model.values import format_hms
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder, twelve_hour_clock
 from apbot.read.roles_common import label_of, var_name
@@ -74,13 +75,13 @@ def assign_hour_minute(b: Builder, keys: list[ActionInfo], pair: tuple[str, str]
         var = b.unique(name, b.variables)
         spec: dict[str, Any] = {
             "type": "time",
-            "ranges": [[_hms(low), _hms(high), step]],
+            "ranges": [[format_hms(low), format_hms(high), step]],
             "format": "hh:mm",
             "wrap": True,
             "label": label_of(b, token),
         }
         b.variables[var] = spec
-        effect = {hour: {"add": "01:00:00"}, minute: {"add": _hms(step)}}
+        effect = {hour: {"add": "01:00:00"}, minute: {"add": format_hms(step)}}
         first: dict[str, Any] = {"actions": [key.name]}
         switched = [i for i in mentions if ON_OFF_RE.search(b.manual.units[i].text)]
         if switched and not clock:  # "READY AT switches the finish-time function on or off"
@@ -93,7 +94,3 @@ def assign_hour_minute(b: Builder, keys: list[ActionInfo], pair: tuple[str, str]
                mentions[0] if mentions else None)  # fmt: skip
         used.append(key.name)
     return used
-
-
-def _hms(seconds: int) -> str:
-    return f"{seconds // 3600:02d}:{seconds % 3600 // 60:02d}:{seconds % 60:02d}"

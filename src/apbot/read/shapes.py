@@ -395,10 +395,6 @@ def _tidy(x: float) -> float | int:
     return int(x) if float(x).is_integer() else round(float(x), 4)
 
 
-def _hms(total: int) -> str:
-    return f"{total // 3600:02d}:{total % 3600 // 60:02d}:{total % 60:02d}"
-
-
 def adjuster_direction(info: ActionInfo) -> tuple[str, str] | None:
     """(base, "up"|"down") for a stepping key: ``temp_up`` → (temp, up), ``minus`` → ("", down)."""
     if info.skill != "press" or info.digit is not None:
