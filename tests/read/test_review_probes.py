@@ -131,3 +131,45 @@ def test_a_twelve_hour_clock_is_read_from_any_spelling_and_only_of_a_clock(
     said: str, twelve: bool
 ) -> None:
     assert twelve_hour_clock(parse_manual(f"# T\n\n{said}\n").units) is twelve
+
+
+COOKER = """# Cooker
+
+## Keys
+
+| Key | Use |
+|---|---|
+| MENU | Choose the menu: WHITE, BROWN, PORRIDGE, STEAM or CAKE. |
+| TEXTURE | {said} |
+| START | Starts cooking. |
+"""
+COOKER_ACTIONS = ["press_menu", "press_texture", "press_start"]
+
+
+@pytest.mark.parametrize(
+    ("said", "values"),
+    [
+        ("Selects SOFT, REGULAR or FIRM only.", ["soft", "regular", "firm"]),
+        ("Choose between SOFT and FIRM only.", ["soft", "firm"]),
+        ("Selects SOFT, REGULAR or FIRM (WHITE and BROWN only).", ["soft", "regular", "firm"]),
+        ("Selects SOFT, REGULAR or FIRM; for WHITE, BROWN only.", ["soft", "regular", "firm"]),
+    ],
+)
+def test_only_closes_the_programmes_a_setting_applies_to_and_nothing_else(
+    said: str, values: list[str]
+) -> None:
+    model = read_manual(COOKER.format(said=said), COOKER_ACTIONS).model
+    assert model.variables["texture"].values == values
+
+
+@pytest.mark.parametrize(
+    "said",
+    [
+        "Selects the texture (WHITE, BROWN only).",
+        "Choose the texture for WHITE or BROWN only.",
+        "Selects the texture. Available for the following menus only: WHITE, BROWN.",
+    ],
+)
+def test_the_programmes_a_setting_applies_to_are_not_its_values(said: str) -> None:
+    model = read_manual(COOKER.format(said=said), COOKER_ACTIONS).model
+    assert "white" not in model.variables["texture"].values

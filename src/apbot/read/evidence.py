@@ -99,11 +99,9 @@ class EvidenceReader(ListReader):
                     # ("Mode lamps: NORMAL CONT. …" are the mode key's values)
                 if _numeric_items(items) and len(items) < 3:
                     continue
-                tail = items[-1]
-                if re.search(r"\bonly$", tail, re.I) or re.search(
-                    rf"{re.escape(tail)}\W{{0,3}}only\b", text, re.I
-                ):
+                if _where_it_applies(items, text):
                     continue  # "(PORRIDGE, STEAM, SOUP only)": where it applies, not its values
+                items = _without_only(items)  # "Selects SOFT or FIRM only": the values
                 if prio > best_prio:
                     best, best_prio, ev.values_at = items, prio, i
             ranges = [
@@ -235,7 +233,9 @@ class EvidenceReader(ListReader):
                     best, best_prio, ev.values_at = m.group(1).split("/"), 2.5, i
                     break
         if best and re.search(r"\bonly\W*$", best[-1], re.I):
-            best = None  # "(STEW, JAM, BROTH only)": where the setting applies, not its values
+            # "(STEW, JAM, BROTH only)": where the setting applies, not its values
+            at = units[ev.values_at].text if ev.values_at is not None else ""
+            best = None if _where_it_applies(best, at) else _without_only(best)
         choice = bool({w for t in tokens for w in words(t.replace("_", " "))} & CHOICE_WORDS)
         if best is None or (_numeric_items(best) and (len(best) < 3 or choice)):
             # two numbers are a range, not a list; a programme key's list is of names
@@ -376,6 +376,33 @@ def _amount_column(units: list[Unit], i: int) -> Range | None:
     if step <= 0:
         return None
     return Range(min(amounts), max(amounts), unit, step)
+
+
+_APPLIES_BEFORE_RE = re.compile(  # "(", "for", "with the menus", "for these programmes only:"
+    r"(?:\(|\b(?:for|with|in|during|on|under)\b(?:\s+(?:the|all|these|those|following))*"
+    r"(?:\s+[a-z]+)?(?:\s+only)?\s*:?)\s*$",
+    re.I,
+)
+
+
+def _where_it_applies(items: list[str], text: str) -> bool:
+    """A list the word "only" closes or leads, after "for"/"with"/"(": the programmes where a
+    setting applies ("(STEW, JAM only)", "only for WHITE and BROWN"), not the setting's own
+    values ("Selects SOFT, REGULAR or FIRM only")."""
+    tail = re.sub(r"\W*\bonly\W*$", "", items[-1], flags=re.I)
+    closed = tail != items[-1] or bool(re.search(rf"{re.escape(tail)}\W{{0,3}}only\b", text, re.I))
+    first = re.search(rf"(?<!\w){re.escape(items[0].strip())}(?!\w)", text, re.I)
+    if first is None:
+        return closed  # (where the list stands is unknown: as the words say)
+    before = text[max(0, first.start() - 60) : first.start()]
+    led = bool(re.search(r"\bonly\b[^.;]{0,40}$", before))
+    return (closed or led) and bool(_APPLIES_BEFORE_RE.search(before))
+
+
+def _without_only(items: list[str]) -> list[str]:
+    """The list with a closing "only" taken off its last item ("FIRM only" -> "FIRM")."""
+    last = re.sub(r"\W*\bonly\W*$", "", items[-1], flags=re.I)
+    return [*items[:-1], last] if last else items[:-1]
 
 
 # "the knob clicks between the markings", "a detent halfway between two printed numbers"

@@ -396,6 +396,7 @@ def find_list(text: str) -> tuple[list[str], str] | None:
             return _dedupe(items), "arrows"
     for m in _CUE.finditer(text):
         segment = re.split(r"[.;]\s|\s[—–]\s|\bwhile\b|\bwhen\b|\bto (?!\d)", m.group(1))[0]
+        segment = re.sub(r"\s+only\W*$", "", segment, flags=re.I)  # "SOFT or FIRM only."
         items = [
             _clean_item(p)
             for p in re.split(r",\s*|\s*/\s*|\s*[·•|]\s*|\s{2,}|\s+or\s+|\s+and\s+", segment)
