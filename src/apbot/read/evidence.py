@@ -234,8 +234,8 @@ class EvidenceReader(ListReader):
                     break
         if best and re.search(r"\bonly\W*$", best[-1], re.I):
             # "(STEW, JAM, BROTH only)": where the setting applies, not its values
-            at = units[ev.values_at].text if ev.values_at is not None else ""
-            best = None if _where_it_applies(best, at) else _without_only(best)
+            shown = units[ev.values_at].text if ev.values_at is not None else ""
+            best = None if _where_it_applies(best, shown) else _without_only(best)
         choice = bool({w for t in tokens for w in words(t.replace("_", " "))} & CHOICE_WORDS)
         if best is None or (_numeric_items(best) and (len(best) < 3 or choice)):
             # two numbers are a range, not a list; a programme key's list is of names
