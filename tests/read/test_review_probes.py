@@ -173,3 +173,44 @@ def test_only_closes_the_programmes_a_setting_applies_to_and_nothing_else(
 def test_the_programmes_a_setting_applies_to_are_not_its_values(said: str) -> None:
     model = read_manual(COOKER.format(said=said), COOKER_ACTIONS).model
     assert "white" not in model.variables["texture"].values
+
+
+STEAMER = """# Steamer
+
+## Keys
+
+| Key | Use |
+|---|---|
+| CLOCK | Sets the clock. |
+| HOUR | Moves the flashing time on by one hour. |
+| MIN | Moves the flashing time on by one minute. |
+| COOK TIME | Opens the cooking time. |
+| + / − | Change the cooking time. |
+| START | Starts. |
+
+## Setting the clock
+
+Press CLOCK, then HOUR and MIN until the time of day is shown.
+
+## Cooking time
+
+Press COOK TIME, then + or − to change the cooking time from 10 to 90 minutes in 5-minute steps.
+"""
+STEAMER_ACTIONS = [
+    "press_clock",
+    "press_hour",
+    "press_min",
+    "press_cook_time",
+    "press_plus",
+    "press_minus",
+    "press_start",
+]
+
+
+def test_hour_and_min_set_only_the_times_their_sentences_are_about() -> None:
+    model = read_manual(STEAMER, STEAMER_ACTIONS).model  # (COOK TIME is a time word alone)
+    clock = next(f for f in model.features.values() if f[0].actions == ["press_clock"])
+    assert clock[1].actions == ["press_hour", "press_min"]
+    cook = next(f for f in model.features.values() if f[0].actions == ["press_cook_time"])
+    assert set(cook[1].actions) == {"press_plus", "press_minus"}
+    assert model.variables["cook_time"].ranges[0][:2] == ("00:10:00", "01:30:00")

@@ -42,12 +42,26 @@ def assign_hour_minute(b: Builder, keys: list[ActionInfo], pair: tuple[str, str]
         said = b.labels[token].mentions[:2] if token in b.labels else []
         return any(_FINISH_RE.search(units[i].text) for i in said)
 
+    pair_tokens = [k.controls[0] for k in keys if k.name in pair and len(k.controls) == 1]
+    pair_said = {i for t in pair_tokens if t in b.labels for i in b.labels[t].mentions}
+
+    def with_pair(token: str) -> bool:
+        """HOUR / MIN are named near the key ("Press CLOCK. … Press HOUR …"), or their own
+        sentences name it ("HOUR / MIN set the clock"): a time word in a key's name alone
+        ("COOK TIME" of a +/− pair) gives it no HOUR / MIN."""
+        said = b.labels[token].mentions if token in b.labels else []
+        if {j for i in said for j in range(i, i + 3)} & pair_said:
+            return True
+        name = re.compile(rf"\b{re.escape(label_of(b, token))}\b", re.I)
+        return any(name.search(units[i].text) for i in pair_said)
+
     timed = [
         k
         for k in keys
         if k.skill in ("press", "hold")
         and len(k.controls) == 1
         and (set(k.controls[0].split("_")) & _TIME_KEYS or finish_key(k.controls[0]))
+        and (not pair_said or with_pair(k.controls[0]))
     ]
     if not timed:
         return []
