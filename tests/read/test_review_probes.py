@@ -10,6 +10,7 @@ from apbot.model.validate import check_model
 from apbot.read import ReaderError, read_manual
 from apbot.read.build import twelve_hour_clock
 from apbot.read.text import parse_manual
+from apbot.read.values import Range, find_ranges
 
 KNOB = ["turn_mode_knob_clockwise", "press_start_button"]
 
@@ -214,3 +215,40 @@ def test_hour_and_min_set_only_the_times_their_sentences_are_about() -> None:
     cook = next(f for f in model.features.values() if f[0].actions == ["press_cook_time"])
     assert set(cook[1].actions) == {"press_plus", "press_minus"}
     assert model.variables["cook_time"].ranges[0][:2] == ("00:10:00", "01:30:00")
+
+
+@pytest.mark.parametrize(
+    ("text", "low", "high", "unit"),
+    [
+        ("from 0.1 kg to 1500 g", 100, 1500, "g"),
+        ("from 100 g to 2 kg", 100, 2000, "g"),
+        ("250 ml to 1.5 l", 250, 1500, "ml"),
+    ],
+)
+def test_a_range_written_in_two_units_of_one_kind_is_read_in_the_smaller(
+    text: str, low: float, high: float, unit: str
+) -> None:
+    assert find_ranges(text) == [Range(low, high, unit)]
+
+
+MICRO = """# Microwave
+
+## Keys
+
+| Key | Use |
+|---|---|
+| DEFROST | Defrost by weight. |
+| START | Starts. |
+
+## Defrost
+
+Press DEFROST repeatedly to set the weight from {said}.
+"""
+
+
+@pytest.mark.parametrize("said", ["0.1 to 1.5 kg in 100 g steps", "100 to 1500 g in 0.1 kg steps"])
+def test_a_step_in_another_unit_of_the_range_kind_is_converted(said: str) -> None:
+    model = read_manual(MICRO.format(said=said), ["press_defrost", "press_start"]).model
+    var = model.variables["defrost"]
+    low, high, step = var.ranges[0]
+    assert high / low == 15 and high / step == 15  # 0.1–1.5 kg by 0.1, or 100–1500 g by 100

@@ -30,6 +30,7 @@ from apbot.read.shapes import (
 from apbot.read.text import Manual
 from apbot.read.values import (
     Range,
+    rescale,
     seconds,
     unit_name,
 )
@@ -223,6 +224,8 @@ class Builder(EvidenceReader):
             value, step_unit = ev.step
             if as_time and step_unit in ("s", "min", "h"):
                 return float(seconds(value, step_unit))
+            if not as_time and step_unit and (scaled := rescale(value, step_unit, unit)):
+                return scaled * factor  # "0.1 – 1.5 kg in 100 g steps": 0.1 kg
             if step_unit in ("", unit) or not as_time:
                 return value * factor
             return None

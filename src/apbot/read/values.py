@@ -75,6 +75,17 @@ def unit_name(text: str | None) -> str:
     )
 
 
+def rescale(value: float, unit: str, to: str) -> float | None:
+    """``value`` in ``unit`` written in ``to`` when both measure the same (1.5 kg = 1500 g,
+    0.5 l = 500 ml); None for units of different kinds (or none)."""
+    if unit == to:
+        return value
+    a, b = unit_of(unit.lower()) if unit else None, unit_of(to.lower()) if to else None
+    if a is None or b is None or a[0] != b[0] or a[0] in ("time", "temperature", "fahrenheit"):
+        return None
+    return round(value * a[1] / b[1], 6)
+
+
 def is_time_unit(unit: str) -> bool:
     return unit in ("s", "min", "h")
 
@@ -112,8 +123,11 @@ def find_ranges(text: str) -> list[Range]:
         mixed = first != unit and is_time_unit(first) and is_time_unit(unit)
         if hi is not None and mixed:  # "1 min – 3 h": in minutes
             hi, unit = seconds(hi, unit) / seconds(1, first), first
-        elif hi is not None and (first, unit) in (("g", "kg"), ("ml", "l")):
-            hi, unit = hi * 1000, first  # "100 g – 2.0 kg": in grams
+        elif lo is not None and hi is not None and first and first != unit:
+            small = min((first, unit), key=lambda u: (unit_of(u) or ("", 0))[1])
+            low_in, high_in = rescale(lo, first, small), rescale(hi, unit, small)
+            if low_in is not None and high_in is not None:  # "100 g – 2.0 kg": in grams
+                lo, hi, unit = low_in, high_in, small
         if lo is None or hi is None or not lo < hi:
             continue
         if not unit and m.group(0).strip().lower().split()[1:2] == ["and"]:
