@@ -252,3 +252,21 @@ def test_a_step_in_another_unit_of_the_range_kind_is_converted(said: str) -> Non
     var = model.variables["defrost"]
     low, high, step = var.ranges[0]
     assert high / low == 15 and high / step == 15  # 0.1–1.5 kg by 0.1, or 100–1500 g by 100
+
+
+TWO_LINE_HEADER = """# Washer
+
+| Programme | Max. temperature | Max. spin |
+| | (°C) | (rpm) |
+|---|---|---|
+| Cotton | 40 | 1200 |
+| Wool | 20 | 600 |
+|---|---|---|
+| Rinse | – | 800 |
+"""
+
+
+def test_the_lines_above_a_tables_rule_are_its_header_not_data_rows() -> None:
+    rows = [u for u in parse_manual(TWO_LINE_HEADER).units if u.cells]
+    assert rows[0].cells == ("Programme", "Max. temperature (°C)", "Max. spin (rpm)")
+    assert [u.cells[0] for u in rows if u.header] == ["Cotton", "Wool", "Rinse"]
