@@ -270,3 +270,12 @@ def test_the_lines_above_a_tables_rule_are_its_header_not_data_rows() -> None:
     rows = [u for u in parse_manual(TWO_LINE_HEADER).units if u.cells]
     assert rows[0].cells == ("Programme", "Max. temperature (°C)", "Max. spin (rpm)")
     assert [u.cells[0] for u in rows if u.header] == ["Cotton", "Wool", "Rinse"]
+
+
+def test_a_table_cell_names_the_programme_it_spells_before_one_it_begins() -> None:
+    from apbot.read.cases import _parent_values
+
+    values = ["white quick", "white", "brown"]
+    assert _parent_values("White, Brown", values) == ["white", "brown"]
+    assert _parent_values("White quick", values) == ["white quick"]
+    assert _parent_values("Brow", values) == ["brown"]

@@ -47,8 +47,11 @@ def _parent_values(cell: str, values: list[str]) -> list[str]:
     found = []
     for part in re.split(r"\s*(?:,|/|&|\band\b)\s*", _norm(cell)):
         part = re.sub(r"^\d+[.)]?\s*", "", part)
+        if part in values:  # "White" is WHITE even where WHITE QUICK comes first
+            found.append(part)
+            continue
         for value in values:
-            if part and (part == value or (len(part) >= 4 and value.startswith(part))):
+            if part and len(part) >= 4 and value.startswith(part):
                 found.append(value)
                 break
     exact = _norm(cell)
