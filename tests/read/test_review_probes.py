@@ -279,3 +279,52 @@ def test_a_table_cell_names_the_programme_it_spells_before_one_it_begins() -> No
     assert _parent_values("White, Brown", values) == ["white", "brown"]
     assert _parent_values("White quick", values) == ["white quick"]
     assert _parent_values("Brow", values) == ["brown"]
+
+
+MINDER = """# Oven
+
+## Keys
+
+| Key | Use |
+|---|---|
+| ALARM | Kitchen alarm. |
+| 0–9 | Number keys. |
+| GO | Starts. |
+
+## Kitchen alarm
+
+Touch ALARM, key in the minutes (up to two digits), then GO.
+"""
+MINDER_ACTIONS = ["press_alarm", *(f"press_{d}" for d in range(10)), "press_go"]
+
+
+def test_a_time_keyed_in_two_digits_of_minutes_runs_to_99_minutes() -> None:
+    model = read_manual(MINDER, MINDER_ACTIONS).model
+    assert model.variables["alarm"].ranges[-1][1] == "01:39:00"
+
+
+OVEN = """# Oven
+
+## Keys
+
+| Key | Use |
+|---|---|
+| TIME | Enter the cooking time. |
+| 0–9 | Number keys. |
+| GO | Starts. |
+
+Touch TIME, then key in the hours and minutes.
+
+## Technical data
+
+Power 1500 W · Timer 0:01–9:59 (h:mm) · Mass 6 kg
+"""
+OVEN_ACTIONS = ["press_time", *(f"press_{d}" for d in range(10)), "press_go"]
+
+
+def test_a_time_setting_takes_the_timer_range_of_the_specifications_when_no_key_is_a_timer() -> (
+    None
+):
+    model = read_manual(OVEN, OVEN_ACTIONS).model
+    ranges = model.variables["time"].ranges
+    assert ranges[0][0] == "00:01:00" and ranges[-1][1] == "09:59:00"

@@ -30,6 +30,7 @@ from apbot.read.shapes import (
 from apbot.read.text import Manual
 from apbot.read.values import (
     Range,
+    number,
     rescale,
     seconds,
     unit_name,
@@ -67,6 +68,7 @@ def twelve_hour_clock(units: list[Any]) -> bool:
     return any(_TWELVE_RE.search(t) or _AM_PM_RE.search(t) for t in texts)
 
 
+_DIGITS_RE = re.compile(r"\b(one|two|three|1|2|3)[- ]digits?\b", re.I)
 _QUANTITY_WORDS = {"temp", "temperature", "humidity", "weight", "volume", "speed", "watt"}
 
 
@@ -162,6 +164,23 @@ class Builder(EvidenceReader):
                 return i
         return None
 
+    def _digit_count(self, name: str, label: str) -> tuple[Range, int] | None:
+        """A time whose amount the manual says is written in so many digits of one unit ("type
+        the minutes (two digits at most)", "| two digits + dot | Timer minutes |"): 0 to 99 of
+        it. Only a sentence or row naming the setting (or its key) and the unit."""
+        ws = {w for w in words(name.replace("_", " ")) if len(w) >= 4} | set(words(label))
+        for i, unit in enumerate(self.manual.units):
+            m = _DIGITS_RE.search(unit.text)
+            uw = set(words(unit.text))
+            if m is None or not uw & ws:
+                continue
+            counted = number(m.group(1))
+            spans = [u for u in ("seconds", "minutes", "hours") if u in uw]
+            if counted and 1 <= counted <= 3 and len(spans) == 1:
+                top = 10 ** int(counted) - 1
+                return Range(0, top, {"seconds": "s", "minutes": "min", "hours": "h"}[spans[0]]), i
+        return None
+
     def add_number(self, name: str, label: str, ev: Evidence, cyclic: bool) -> str:
         """A numeric or time variable from the ranges and steps read (guessed where absent)."""
         named = set(words(name.replace("_", " ")))
@@ -194,6 +213,10 @@ class Builder(EvidenceReader):
             self.note(
                 subject, f"range {r0.low:g}–{r0.high:g} {r0.unit} (named elsewhere)", found[1]
             )
+        elif (digits := self._digit_count(name, label)) is not None:
+            ranges = [digits[0]]
+            r0 = digits[0]
+            self.note(subject, f"range {r0.low:g}–{r0.high:g} {r0.unit} (its digits)", digits[1])
         elif ev.longest is not None:
             ranges = [ev.longest[0]]
             r0 = ev.longest[0]

@@ -309,6 +309,8 @@ class EvidenceReader(ListReader):
                 for w in words(u.text)
                 if w in _TIMER_WORDS
             }
+        if "time" in ws and not any("timer" in words(lab.text) for lab in self.labels.values()):
+            ws.add("timer")  # no key is a timer: "Timer 0:01–12:00" in the specifications is this
         advice = {"suggested", "recommended", "typical", "advised", "usual", "ideal"}
         limits = re.compile(r"\brange\b|\badjustable\b|\bcan be set\b|\bsettable\b|\bbetween\b")
         best: tuple[int, Range, int] | None = None
