@@ -328,3 +328,9 @@ def test_a_time_setting_takes_the_timer_range_of_the_specifications_when_no_key_
     model = read_manual(OVEN, OVEN_ACTIONS).model
     ranges = model.variables["time"].ranges
     assert ranges[0][0] == "00:01:00" and ranges[-1][1] == "09:59:00"
+
+
+def test_words_in_brackets_after_a_number_do_not_hide_a_range() -> None:
+    said = "Heat runs from 1 (just warm) to 9 (fierce)."
+    assert find_ranges(said) == [Range(1, 9, "")]
+    assert find_ranges("from 40 (min) to 90 min") == []  # (a unit in brackets is no aside)

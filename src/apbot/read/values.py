@@ -107,8 +107,20 @@ _FOREIGN_UNIT = re.compile(
 )  # units no setting of a household appliance is set in: ratings and sizes
 
 
+_ASIDE_RE = re.compile(  # "1 (barely warm)": words in brackets, no number and no unit
+    rf"(?<=\d)\s*\((?!\s*{UNIT}\s*\))[^()\d]{{3,30}}\)", re.IGNORECASE
+)
+
+
 def find_ranges(text: str) -> list[Range]:
-    """Ranges written in the text (times h:mm in seconds with unit ``s``)."""
+    """Ranges written in the text (times h:mm in seconds with unit ``s``); a word or two in
+    brackets after a number is an aside ("from 1 (barely warm) to 10 (full power)")."""
+    out = _ranges(text)
+    bare = _ASIDE_RE.sub("", text)
+    return out + [r for r in _ranges(bare) if r not in out] if bare != text else out
+
+
+def _ranges(text: str) -> list[Range]:
     out: list[Range] = []
     for m in TIME_RANGE_RE.finditer(text):
         a, b = _hmm(m.group(1)), _hmm(m.group(2))
