@@ -334,3 +334,28 @@ def test_words_in_brackets_after_a_number_do_not_hide_a_range() -> None:
     said = "Heat runs from 1 (just warm) to 9 (fierce)."
     assert find_ranges(said) == [Range(1, 9, "")]
     assert find_ranges("from 40 (min) to 90 min") == []  # (a unit in brackets is no aside)
+
+
+DELAYED = """# Cooker
+
+## Keys
+
+| Key | Use |
+|---|---|
+| DELAY | Sets the delay, then + / − change it. |
+| + / − | Change the delay. |
+| START | Starts. |
+
+## Delay
+
+Press DELAY, then + or −. The delay runs 0:00 – 4:00 by 15 minutes, then 4:00 – 18:00 by 1 hour.
+"""
+
+
+def test_time_ranges_each_with_its_step_make_a_piecewise_range() -> None:
+    actions = ["press_delay", "press_plus", "press_minus", "press_start"]
+    model = read_manual(DELAYED, actions).model
+    assert model.variables["delay"].ranges == [
+        ("00:00:00", "04:00:00", 900),
+        ("04:00:00", "18:00:00", 3600),
+    ]

@@ -40,6 +40,7 @@ from apbot.read.values import (
     find_initial,
     find_ranges,
     find_step,
+    find_stepped_pieces,
     find_two_steps,
     number,
     unit_name,
@@ -115,7 +116,10 @@ class EvidenceReader(ListReader):
                 row_step = _row_step(unit.cells, ranges[0].unit)
                 if row_step:
                     ranges = [Range(ranges[0].low, ranges[0].high, ranges[0].unit, row_step)]
-            if ranges and not ev.ranges:
+            pieces = find_stepped_pieces(text) if ranges and not ev.ranges else []
+            if pieces and _fits("s", tokens):  # "0:30 – 12:00 30 minutes 12:00 – 24:00 1 hour"
+                ev.ranges, ev.range_at = pieces, i
+            elif ranges and not ev.ranges:
                 # "one minute per click up to one hour, and in coarser steps after that, up to
                 # 3 hours": the same range told twice, the wider is the whole of it
                 same = [r for r in ranges if r.low == ranges[0].low and r.unit == ranges[0].unit]

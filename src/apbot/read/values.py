@@ -165,6 +165,26 @@ _MOST_RE = re.compile(
 )
 
 
+_STEPPED_PIECE_RE = re.compile(  # "0:30 – 12:00  30 minutes": a range, then its step
+    rf"(?<![\d:])({_TIME}){_DASH}({_TIME})(?![\d:])\s*(?:h\b)?\s*(?:by\s+)?"
+    r"(\d+(?:[.,]\d+)?|one|an?)\s*(minutes?|mins?|hours?|hrs?|h)\b",
+    re.IGNORECASE,
+)
+
+
+def find_stepped_pieces(text: str) -> list[Range]:
+    """Two or more time ranges, each followed by its step, the next starting where the last
+    ends ("Range Step 0:30 - 12:00 30 minutes 12:00 - 24:00 1 hour"), in seconds; else []."""
+    pieces: list[Range] = []
+    for m in _STEPPED_PIECE_RE.finditer(text):
+        low, high = _hmm(m.group(1)), _hmm(m.group(2))
+        amount = 1.0 if m.group(3).lower() in ("one", "a", "an") else number(m.group(3))
+        if amount is None or not low < high or (pieces and pieces[-1].high != low):
+            return pieces if len(pieces) >= 2 else []
+        pieces.append(Range(low, high, "s", seconds(amount, unit_name(m.group(4)))))
+    return pieces if len(pieces) >= 2 else []
+
+
 def find_bounds(texts: list[str]) -> Range | None:
     """A range told in two sentences: "the first tap gives 0.5 h" and "the longest
     reservation is 24 h" (the first value is also the step: each tap adds time); a time's
