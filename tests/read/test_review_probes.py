@@ -359,3 +359,32 @@ def test_time_ranges_each_with_its_step_make_a_piecewise_range() -> None:
         ("00:00:00", "04:00:00", 900),
         ("04:00:00", "18:00:00", 3600),
     ]
+
+
+DRYER = """# Dryer
+
+## Keys
+
+| Key | Use |
+|---|---|
+| ▲ / ▼ | Raise or lower the target humidity. |
+| POWER | On and off. |
+
+## Humidity
+
+Press ▲ or ▼ to change the target humidity shown.
+
+Tip: for a bedroom, 50 to 60 % is a comfortable level.
+
+## Specifications
+
+| Item | Value |
+|---|---|
+| Humidity setting | 35–75 % |
+"""
+
+
+def test_a_range_given_as_advice_is_not_the_settings_limits() -> None:
+    model = read_manual(DRYER, ["press_up", "press_down", "press_power"]).model
+    humidity = next(v for k, v in model.variables.items() if "humid" in k)
+    assert humidity.ranges[0][0] == 35 and humidity.ranges[-1][1] == 75

@@ -154,10 +154,20 @@ EXAMPLE_RE = re.compile(r"^\s*(?:examples?|e\.\s?g\.|for (?:example|instance))\b
 ADVICE_WORDS = frozenset({"suggested", "recommended", "typical", "advised", "usual", "ideal"})
 
 
+_ADVICE_PROSE_RE = re.compile(  # "45 to 55 % is a sensible target", "ideally 40–60 %"
+    r"\b(?:suggested|recommended|typical|advised|ideal|ideally|sensible|advisable|comfortable"
+    r"|healthy)\b",
+    re.IGNORECASE,
+)
+
+
 def _without_advice(unit: Unit) -> str:
     """A unit's text without the cells of columns headed as advice ("Suggested °C": what suits
-    a food, not the limits of the setting)."""
-    if not unit.cells or len(unit.header) != len(unit.cells):
+    a food, not the limits of the setting); a sentence of advice ("in most homes 45 to 55 % is
+    a sensible target") gives no limits at all."""
+    if not unit.cells:
+        return "" if _ADVICE_PROSE_RE.search(unit.text) else unit.text
+    if len(unit.header) != len(unit.cells):
         return unit.text
     return " | ".join(
         cell
