@@ -388,3 +388,29 @@ def test_a_range_given_as_advice_is_not_the_settings_limits() -> None:
     model = read_manual(DRYER, ["press_up", "press_down", "press_power"]).model
     humidity = next(v for k, v in model.variables.items() if "humid" in k)
     assert humidity.ranges[0][0] == 35 and humidity.ranges[-1][1] == 75
+
+
+OFF_TIMER = """# Fan heater
+
+## Keys
+
+| Key | Use |
+|---|---|
+| TIMER | Each press adds time to the switch-off timer. |
+| POWER | On and off. |
+
+## Switch-off timer
+
+Press TIMER: each press adds time. The steps are given in the table below.
+
+| Timer band | Range | Increment |
+|---|---|---|
+| Brief | 0.5 – 4 hours | half an hour |
+| Extended | 4 – 12 hours | one hour |
+"""
+
+
+def test_a_range_table_with_an_increment_per_row_is_a_piecewise_range_not_its_row_names() -> None:
+    model = read_manual(OFF_TIMER, ["press_timer", "press_power"]).model
+    timer = model.variables["timer"]  # (hours)
+    assert [tuple(r) for r in timer.ranges] == [(0.5, 4, 0.5), (4, 12, 1)]

@@ -248,6 +248,8 @@ class EvidenceReader(ListReader):
                 best, ev.values_at = column, self._table_at
             elif best is not None and len(best) < 3:
                 best = None
+        if best and len(ev.ranges) >= 2 and _names_of_pieces(best, units, ev.range_at):
+            best = None  # "| Short | 0.5 – 10 hours | half an hour |": names of the range's pieces
         if best is None and not ev.ranges:
             runs = self._unit_runs(tokens)
             if runs is not None:  # the settings one by one: pieces of equal steps
@@ -403,6 +405,15 @@ def _where_it_applies(items: list[str], text: str) -> bool:
     before = text[max(0, first.start() - 60) : first.start()]
     led = bool(re.search(r"\bonly\b[^.;]{0,40}$", before))
     return (closed or led) and bool(_APPLIES_BEFORE_RE.search(before))
+
+
+def _names_of_pieces(items: list[str], units: list[Unit], at: int | None) -> bool:
+    """The list is the first cells of the table rows the range's pieces were read from."""
+    if at is None or not units[at].cells:
+        return False
+    rows = units[at : at + len(items)]
+    heads = [u.cells[0].strip(" *").lower() for u in rows if u.cells]
+    return heads == [v.strip(" *").lower() for v in items]
 
 
 def _without_only(items: list[str]) -> list[str]:

@@ -130,7 +130,7 @@ def _row_step(cells: tuple[str, ...], unit: str) -> float | None:
         step = find_step(cell)
         if step:
             return step[0]
-        q = parse_quantity(cell.strip().lower().replace("an hour", "1 hour"))
+        q = parse_quantity(cell.strip().lower())  # ("half an hour": 30 min, not 1 h 30)
         if q and q[1] == "time" and q[0] > 0:
             base = {"s": 1, "min": 60, "h": 3600}.get(unit, 0)
             return q[0] / base if base else None
