@@ -414,3 +414,11 @@ def test_a_range_table_with_an_increment_per_row_is_a_piecewise_range_not_its_ro
     model = read_manual(OFF_TIMER, ["press_timer", "press_power"]).model
     timer = model.variables["timer"]  # (hours)
     assert [tuple(r) for r in timer.ranges] == [(0.5, 4, 0.5), (4, 12, 1)]
+
+
+def test_a_few_numbered_keys_are_no_range() -> None:
+    from apbot.read.shapes import _keypad
+
+    said = "Number pads: enter times; pads 1 to 6 also start a quick cook"
+    assert _keypad(Range(1, 6, ""), said)
+    assert not _keypad(Range(1, 6, ""), "Levels run from 1 to 6")

@@ -102,9 +102,16 @@ def _cell_key(cell: str) -> str:
 
 
 def _keypad(r: Range, text: str) -> bool:
-    """ "0 – 9: number keys" (or "keys 0-9", "0–9 buttons") names the keypad, not a setting's
-    range."""
-    if r.unit or r.low != 0 or r.high != 9:
+    """ "0 – 9: number keys" (or "keys 0-9", "0–9 buttons") names the keypad, and "pads 1 to 6"
+    ("buttons 1–4") some of its keys, not a setting's range."""
+    if r.unit:
+        return False
+    span = rf"{r.low:g}\s*(?:-|–|—|to)\s*{r.high:g}"
+    if re.search(
+        rf"\b(?:keys|buttons|pads)\s+{span}\b|\b{span}\s+(?:keys|buttons|pads)\b", text, re.I
+    ):
+        return True
+    if r.low != 0 or r.high != 9:
         return False
     return bool(
         _KEYPAD_WORDS.search(text)
