@@ -103,6 +103,8 @@ class EvidenceReader(ListReader):
                 if _where_it_applies(items, text):
                     continue  # "(PORRIDGE, STEAM, SOUP only)": where it applies, not its values
                 items = _without_only(items)  # "Selects SOFT or FIRM only": the values
+                if not items:
+                    continue
                 if prio > best_prio:
                     best, best_prio, ev.values_at = items, prio, i
             ranges = [
@@ -239,7 +241,7 @@ class EvidenceReader(ListReader):
         if best and re.search(r"\bonly\W*$", best[-1], re.I):
             # "(STEW, JAM, BROTH only)": where the setting applies, not its values
             shown = units[ev.values_at].text if ev.values_at is not None else ""
-            best = None if _where_it_applies(best, shown) else _without_only(best)
+            best = None if _where_it_applies(best, shown) else _without_only(best) or None
         choice = bool({w for t in tokens for w in words(t.replace("_", " "))} & CHOICE_WORDS)
         if best is None or (_numeric_items(best) and (len(best) < 3 or choice)):
             # two numbers are a range, not a list; a programme key's list is of names
