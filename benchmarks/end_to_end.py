@@ -2,6 +2,7 @@
 
     python benchmarks/end_to_end.py [--methods apbot,apbot-open-loop] [--workers 2]
                                     [--out runs/e2e] [--feedback display] [--sample N]
+                                    [--categories a,b]
 
 Runs ``apbot bench`` with its defaults (``--belief read --goal read``) and prints SR and SPL
 per category and method, overall, on the six categories held back from the reader's and the
@@ -46,6 +47,7 @@ def main() -> None:
     parser.add_argument("--out", default="runs/e2e")
     parser.add_argument("--feedback", default="display", choices=("display", "values"))
     parser.add_argument("--sample", type=int, default=None, help="first N tasks per appliance")
+    parser.add_argument("--categories", default=None, help="comma-separated (default: all)")
     args = parser.parse_args()
     methods = args.methods.split(",")
     outcome = run_benchmark(
@@ -55,6 +57,7 @@ def main() -> None:
             out=Path(args.out),
             feedback=args.feedback,  # type: ignore[arg-type]
             sample=args.sample,
+            categories=args.categories.split(",") if args.categories else None,
         ),
         progress=False,
     )

@@ -13,6 +13,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
+from apbot.model.values import format_hms
 from apbot.read.actions import ActionInfo
 from apbot.read.evidence import EvidenceReader
 from apbot.read.labels import Label, words
@@ -22,7 +23,6 @@ from apbot.read.shapes import (
     Evidence,
     _dedupe,
     _guess_step,
-    _hms,
     _tidy,
     _unit_from_words,
     _value_text,
@@ -31,6 +31,8 @@ from apbot.read.shown import shown_words
 from apbot.read.text import Manual
 from apbot.read.values import (
     Range,
+    number,
+    rescale,
     seconds,
     unit_name,
 )
@@ -38,19 +40,36 @@ from apbot.read.values import (
 _PRINTED_UNITS = r"kg|g|lbs?|ml|l|litres?|W|watts?|rpm|%"  # quantities, not times or degrees
 
 
-_TWELVE_RE = re.compile(r"\b12[- ]h(?:ou)?r\b|\b12 hours? (?:clock|system|format)|\bAM\b|\bPM\b")
-_TWENTY_FOUR_RE = re.compile(r"\b24[- ]h(?:ou)?r\b|\b24 hours? (?:clock|system|format)", re.I)
+_HOURS = r"(?:[- ]?h(?:ou)?rs?\b|[- ]?h\b|[- ]hours?\b)"  # "12-hour", "12 h", "12hr", "24-hours"
+_CLOCK_WORDS = r"\b(?:clock|format|system|mode|display|time of day|a\.?m\b|p\.?m\b)"
+
+
+def _hour_clock_re(number: str) -> re.Pattern[str]:
+    """ "12-hour" (any spelling) with a clock word in its sentence: "keeps warm 12 hours" is
+    no clock."""
+    return re.compile(
+        rf"{number}{_HOURS}(?=.*{_CLOCK_WORDS})|{_CLOCK_WORDS}.*{number}{_HOURS}", re.I
+    )
+
+
+_TWELVE_RE = _hour_clock_re(r"(?:\b12|\btwelve)")
+_TWENTY_FOUR_RE = _hour_clock_re(r"(?:\b24|\btwenty[- ]four)")
+_AM_PM_RE = re.compile(  # "AM", "7:30 pm", "8 a.m.", "am/pm" (not the verb "am")
+    r"(?-i:\bAM\b|\bPM\b)|\d(?::\d\d)?\s*[ap]\.?m\b|\b(?:am|a\.m\.)\s*/\s*(?:pm|p\.m\.)", re.I
+)
+_SENTENCE_RE = re.compile(r"(?<=[.;!?])\s+(?=[A-Z])")
 
 
 def twelve_hour_clock(units: list[Any]) -> bool:
     """Whether the clock counts 1–12 (AM/PM, "12-hour clock"): "keeps warm for 12 hours" is no
     such clock, and a manual that speaks of a 24-hour clock has none."""
-    texts = [u.text for u in units]
+    texts = [s for u in units for s in _SENTENCE_RE.split(u.text)]  # (its clock in the sentence)
     if any(_TWENTY_FOUR_RE.search(t) for t in texts):
         return False
-    return any(_TWELVE_RE.search(t) for t in texts)
+    return any(_TWELVE_RE.search(t) or _AM_PM_RE.search(t) for t in texts)
 
 
+_DIGITS_RE = re.compile(r"\b(one|two|three|1|2|3)[- ]digits?\b", re.I)
 _QUANTITY_WORDS = {"temp", "temperature", "humidity", "weight", "volume", "speed", "watt"}
 
 
@@ -165,6 +184,23 @@ class Builder(EvidenceReader):
                 return i
         return None
 
+    def _digit_count(self, name: str, label: str) -> tuple[Range, int] | None:
+        """A time whose amount the manual says is written in so many digits of one unit ("type
+        the minutes (two digits at most)", "| two digits + dot | Timer minutes |"): 0 to 99 of
+        it. Only a sentence or row naming the setting (or its key) and the unit."""
+        ws = {w for w in words(name.replace("_", " ")) if len(w) >= 4} | set(words(label))
+        for i, unit in enumerate(self.manual.units):
+            m = _DIGITS_RE.search(unit.text)
+            uw = set(words(unit.text))
+            if m is None or not uw & ws:
+                continue
+            counted = number(m.group(1))
+            spans = [u for u in ("seconds", "minutes", "hours") if u in uw]
+            if counted and 1 <= counted <= 3 and len(spans) == 1:
+                top = 10 ** int(counted) - 1
+                return Range(0, top, {"seconds": "s", "minutes": "min", "hours": "h"}[spans[0]]), i
+        return None
+
     def add_number(self, name: str, label: str, ev: Evidence, cyclic: bool) -> str:
         """A numeric or time variable from the ranges and steps read (guessed where absent)."""
         named = set(words(name.replace("_", " ")))
@@ -197,6 +233,10 @@ class Builder(EvidenceReader):
             self.note(
                 subject, f"range {r0.low:g}–{r0.high:g} {r0.unit} (named elsewhere)", found[1]
             )
+        elif (digits := self._digit_count(name, label)) is not None:
+            ranges = [digits[0]]
+            r0 = digits[0]
+            self.note(subject, f"range {r0.low:g}–{r0.high:g} {r0.unit} (its digits)", digits[1])
         elif ev.longest is not None:
             ranges = [ev.longest[0]]
             r0 = ev.longest[0]
@@ -227,6 +267,8 @@ class Builder(EvidenceReader):
             value, step_unit = ev.step
             if as_time and step_unit in ("s", "min", "h"):
                 return float(seconds(value, step_unit))
+            if not as_time and step_unit and (scaled := rescale(value, step_unit, unit)):
+                return scaled * factor  # "0.1 – 1.5 kg in 100 g steps": 0.1 kg
             if step_unit in ("", unit) or not as_time:
                 return value * factor
             return None
@@ -264,7 +306,9 @@ class Builder(EvidenceReader):
         if as_time:
             spec = {
                 "type": "time",
-                "ranges": [[_hms(int(lo)), _hms(int(hi)), int(st)] for lo, hi, st in pieces],
+                "ranges": [
+                    [format_hms(int(lo)), format_hms(int(hi)), int(st)] for lo, hi, st in pieces
+                ],
                 "format": "h:mm"
                 if pieces[-1][1] >= 3600 and all(p[2] % 60 == 0 for p in pieces)
                 else "mm:ss",

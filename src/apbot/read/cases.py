@@ -12,7 +12,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
-from apbot.model.values import parse_hms
+from apbot.model.values import format_hms, parse_hms
 from apbot.read.build import Builder
 from apbot.read.labels import words
 from apbot.read.shapes import CHOICE_WORDS
@@ -47,8 +47,11 @@ def _parent_values(cell: str, values: list[str]) -> list[str]:
     found = []
     for part in re.split(r"\s*(?:,|/|&|\band\b)\s*", _norm(cell)):
         part = re.sub(r"^\d+[.)]?\s*", "", part)
+        if part in values:  # "White" is WHITE even where WHITE QUICK comes first
+            found.append(part)
+            continue
         for value in values:
-            if part and (part == value or (len(part) >= 4 and value.startswith(part))):
+            if part and len(part) >= 4 and value.startswith(part):
                 found.append(value)
                 break
     exact = _norm(cell)
@@ -238,10 +241,6 @@ def _header_unit(spec: dict[str, Any], header: str) -> None:
         spec["unit"] = unit_name(m.group(1) or m.group(2))
 
 
-def _hms(total: int) -> str:
-    return f"{total // 3600:02d}:{total % 3600 // 60:02d}:{total % 60:02d}"
-
-
 def _ranges_column(rows: list[Unit], column: int) -> bool:
     return sum(bool(column < len(r.cells) and find_ranges(r.cells[column])) for r in rows) >= 2
 
@@ -332,13 +331,13 @@ def _case(spec: dict[str, Any], cell: str) -> Any:
             q = parse_quantity(cell.strip().lower())
             if not q or q[1] != "time" or q[0] <= 0:
                 return None
-            return {"ranges": [[_hms(int(q[0])), _hms(int(q[0])), int(ranges[0][2])]]}
+            return {"ranges": [[format_hms(int(q[0])), format_hms(int(q[0])), int(ranges[0][2])]]}
         r = ranges_read[0]
         factor = 1 if r.unit == "s" else {"min": 60, "h": 3600}.get(r.unit or "min", 60)
         t_lo, t_hi = int(r.low * factor), int(r.high * factor)
         t_step = min(int(ranges[0][2]), max(1, t_hi - t_lo))
         t_hi = t_lo + (t_hi - t_lo) // t_step * t_step
-        return {"ranges": [[_hms(t_lo), _hms(t_hi), t_step]]}
+        return {"ranges": [[format_hms(t_lo), format_hms(t_hi), t_step]]}
     step = float(ranges[0][2])
     if ranges_read:
         lo, hi = ranges_read[0].low, ranges_read[0].high
@@ -381,7 +380,7 @@ def _defaults(
                 elif spec.get("type") == "time" and case.get("ranges"):
                     start = _duration(cell)  # "| Preset time | 1:30 |"
                     if start is not None and _within(case["ranges"], start):
-                        case["initial"] = _hms(start)
+                        case["initial"] = format_hms(start)
         break
 
 

@@ -40,6 +40,7 @@ from apbot.read.values import (
     find_initial,
     find_ranges,
     find_step,
+    find_stepped_pieces,
     find_two_steps,
     number,
     unit_name,
@@ -106,11 +107,11 @@ class EvidenceReader(ListReader):
                     # ("Mode lamps: NORMAL CONT. …" are the mode key's values)
                 if _numeric_items(items) and len(items) < 3:
                     continue
-                tail = items[-1]
-                if re.search(r"\bonly$", tail, re.I) or re.search(
-                    rf"{re.escape(tail)}\W{{0,3}}only\b", text, re.I
-                ):
+                if _where_it_applies(items, text):
                     continue  # "(PORRIDGE, STEAM, SOUP only)": where it applies, not its values
+                items = _without_only(items)  # "Selects SOFT or FIRM only": the values
+                if not items:
+                    continue
                 if prio > best_prio:
                     best, best_prio, ev.values_at = items, prio, i
             ranges = [
@@ -124,7 +125,10 @@ class EvidenceReader(ListReader):
                 row_step = _row_step(unit.cells, ranges[0].unit)
                 if row_step:
                     ranges = [Range(ranges[0].low, ranges[0].high, ranges[0].unit, row_step)]
-            if ranges and not ev.ranges:
+            pieces = find_stepped_pieces(text) if ranges and not ev.ranges else []
+            if pieces and _fits("s", tokens):  # "0:30 – 12:00 30 minutes 12:00 – 24:00 1 hour"
+                ev.ranges, ev.range_at = pieces, i
+            elif ranges and not ev.ranges:
                 # "one minute per click up to one hour, and in coarser steps after that, up to
                 # 3 hours": the same range told twice, the wider is the whole of it
                 same = [r for r in ranges if r.low == ranges[0].low and r.unit == ranges[0].unit]
@@ -247,7 +251,9 @@ class EvidenceReader(ListReader):
                     best, best_prio, ev.values_at = m.group(1).split("/"), 2.5, i
                     break
         if best and re.search(r"\bonly\W*$", best[-1], re.I):
-            best = None  # "(STEW, JAM, BROTH only)": where the setting applies, not its values
+            # "(STEW, JAM, BROTH only)": where the setting applies, not its values
+            shown = units[ev.values_at].text if ev.values_at is not None else ""
+            best = None if _where_it_applies(best, shown) else _without_only(best) or None
         choice = bool({w for t in tokens for w in words(t.replace("_", " "))} & CHOICE_WORDS)
         if best is None or (_numeric_items(best) and (len(best) < 3 or choice)):
             # two numbers are a range, not a list; a programme key's list is of names
@@ -256,6 +262,8 @@ class EvidenceReader(ListReader):
                 best, ev.values_at = column, self._table_at
             elif best is not None and len(best) < 3:
                 best = None
+        if best and len(ev.ranges) >= 2 and _names_of_pieces(best, units, ev.range_at):
+            best = None  # "| Short | 0.5 – 10 hours | half an hour |": names of the range's pieces
         if best is None and not ev.ranges:
             runs = self._unit_runs(tokens)
             if runs is not None:  # the settings one by one: pieces of equal steps
@@ -279,9 +287,8 @@ class EvidenceReader(ListReader):
             if any(_BETWEEN_RE.search(t) for t in said):
                 best = _with_midpoints(best)
             for t in said:  # "in the first ten minutes every minute has its own tick"
-                each = _EVERY_MINUTE_RE.search(t)
-                top = number(each.group(1) or each.group(2)) if each else None
-                if top and 2 <= top <= 30:
+                top = _every_minute_top(t)
+                if top and 2 <= top <= 30 and top == int(top):
                     best = _with_every(best, int(top))
                     break
         if best is not None:
@@ -322,6 +329,8 @@ class EvidenceReader(ListReader):
                 for w in words(u.text)
                 if w in _TIMER_WORDS
             }
+        if "time" in ws and not any("timer" in words(lab.text) for lab in self.labels.values()):
+            ws.add("timer")  # no key is a timer: "Timer 0:01–12:00" in the specifications is this
         advice = {"suggested", "recommended", "typical", "advised", "usual", "ideal"}
         limits = re.compile(r"\brange\b|\badjustable\b|\bcan be set\b|\bsettable\b|\bbetween\b")
         best: tuple[int, Range, int] | None = None
@@ -391,6 +400,42 @@ def _amount_column(units: list[Unit], i: int) -> Range | None:
     return Range(min(amounts), max(amounts), unit, step)
 
 
+_APPLIES_BEFORE_RE = re.compile(  # "(", "for", "with the menus", "for these programmes only:"
+    r"(?:\(|\b(?:for|with|in|during|on|under)\b(?:\s+(?:the|all|these|those|following))*"
+    r"(?:\s+[a-z]+)?(?:\s+only)?\s*:?)\s*$",
+    re.I,
+)
+
+
+def _where_it_applies(items: list[str], text: str) -> bool:
+    """A list the word "only" closes or leads, after "for"/"with"/"(": the programmes where a
+    setting applies ("(STEW, JAM only)", "only for WHITE and BROWN"), not the setting's own
+    values ("Selects SOFT, REGULAR or FIRM only")."""
+    tail = re.sub(r"\W*\bonly\W*$", "", items[-1], flags=re.I)
+    closed = tail != items[-1] or bool(re.search(rf"{re.escape(tail)}\W{{0,3}}only\b", text, re.I))
+    first = re.search(rf"(?<!\w){re.escape(items[0].strip())}(?!\w)", text, re.I)
+    if first is None:
+        return closed  # (where the list stands is unknown: as the words say)
+    before = text[max(0, first.start() - 60) : first.start()]
+    led = bool(re.search(r"\bonly\b[^.;]{0,40}$", before))
+    return (closed or led) and bool(_APPLIES_BEFORE_RE.search(before))
+
+
+def _names_of_pieces(items: list[str], units: list[Unit], at: int | None) -> bool:
+    """The list is the first cells of the table rows the range's pieces were read from."""
+    if at is None or not units[at].cells:
+        return False
+    rows = units[at : at + len(items)]
+    heads = [u.cells[0].strip(" *").lower() for u in rows if u.cells]
+    return heads == [v.strip(" *").lower() for v in items]
+
+
+def _without_only(items: list[str]) -> list[str]:
+    """The list with a closing "only" taken off its last item ("FIRM only" -> "FIRM")."""
+    last = re.sub(r"\W*\bonly\W*$", "", items[-1], flags=re.I)
+    return [*items[:-1], last] if last else items[:-1]
+
+
 # "the knob clicks between the markings", "a detent halfway between two printed numbers"
 _BETWEEN_RE = re.compile(
     r"\b(?:clicks?|detents?|stops?|notch(?:es)?|settings?|set)\b[^.;]{0,40}\b(?:between|halfway)\b"
@@ -415,11 +460,33 @@ def _with_midpoints(items: list[str]) -> list[str]:
     return [f"{v:g}" + (f" {unit}" if unit else "") for v in out]
 
 
+# a scale marked minute by minute up to some bound: "every minute up to 10 min", "1-minute
+# steps below 10 minutes", "each minute is marked for the first ten minutes"
 _EVERY_MINUTE_RE = re.compile(
-    r"\bfirst\s+(\w+)\s+minutes\b[^.;]{0,30}\bevery minute\b"
-    r"|\bevery minute\b[^.;]{0,40}\b(?:first|up to)\s+(\w+)\s+minutes\b",
+    r"\b(?:every|each|single)\s+minute\b|\bminute by minute\b|\bsingle minutes\b"
+    r"|\b(?:1|one)[\s-]?min(?:ute)?\s+(?:steps?|increments?|ticks?|marks?|clicks?|divisions?)\b",
     re.I,
 )
+_MINUTE_BOUND_RE = re.compile(
+    r"\b(?:first|up to|below|under|until|till|to)\s+(?:the\s+)?(?:first\s+)?"
+    r"(\d{1,2}|[a-z]+)\s*(?:minutes|mins?)\b",
+    re.I,
+)
+_SENTENCE_END_RE = re.compile(r"(?<=[.;!?])\s+")
+
+
+def _every_minute_top(text: str) -> float | None:
+    """The bound of a run of one-minute settings a sentence describes, else None."""
+    for sentence in _SENTENCE_END_RE.split(text):
+        fine = _EVERY_MINUTE_RE.search(sentence)
+        if fine is None:
+            continue
+        for bound in _MINUTE_BOUND_RE.finditer(sentence):
+            if bound.start() >= fine.end() or bound.end() <= fine.start():
+                top = number(bound.group(1))
+                if top is not None:
+                    return top
+    return None
 
 
 def _with_every(items: list[str], top: int) -> list[str]:

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import re
 
+from apbot.model.values import NUMBER_WORDS
 from apbot.read.actions import ActionInfo
 from apbot.read.labels import Label, words
 from apbot.read.shapes import (
@@ -29,6 +30,7 @@ from apbot.read.values import (
     find_list,
     find_number_run,
     find_progression,
+    number,
     quantity_run,
 )
 
@@ -37,11 +39,9 @@ _KEY_WORDS = frozenset({"key", "keys", "button", "buttons", "number", "numbers"}
 _PRESS_WORDS = frozenset({"press", "pressed", "touch", "touched", "enter", "entered", "input"})
 
 
-_NUMBER_WORDS = "zero one two three four five six seven eight nine ten eleven twelve"
-_COUNT_WORDS = {w: n for n, w in enumerate(_NUMBER_WORDS.split(" "))}
-_COUNTED_RE = re.compile(
+_COUNTED_RE = re.compile(  # "has seven positions", "with 12 settings" (read by ``number``)
     r"\b(?:has|have|with)\s+(\d{1,2}|"
-    + "|".join(_COUNT_WORDS)
+    + "|".join(w for w, n in NUMBER_WORDS.items() if n < 20 and w not in ("a", "an", "single"))
     + r")\s+(?:positions|settings|marks|stops|detents|steps)\b",
     re.I,
 )
@@ -194,8 +194,8 @@ class ListReader:
             near = mention or i - 1 in said  # (in the key's sentence or the one after it)
             out.append((progression, 2.7 if near else 2.3))  # (beats the printed marks)
         counted = _COUNTED_RE.search(text)
-        if counted and mention:  # "The knob has seven positions." and the row of them drawn
-            n = _COUNT_WORDS.get(counted.group(1).lower()) or int(counted.group(1) or 0)
+        n = number(counted.group(1)) if counted and mention else None
+        if n:  # "The knob has seven positions." and the row of them drawn ("zero": no list)
             for k in range(i + 1, min(i + 3, len(units))):
                 after = None if units[k].cells else bare_list(units[k].text)
                 if after and len(after) == n:

@@ -17,7 +17,7 @@ from pydantic import BaseModel, Field, TypeAdapter, ValidationError
 
 from apbot.model.domain import DomainError, build_domain
 from apbot.model.schema import ApplianceModel, Variable
-from apbot.model.values import parse_hms
+from apbot.model.values import format_hms, parse_hms
 
 NAME = r"^[a-z][a-z0-9_]*$"
 
@@ -87,13 +87,14 @@ def _number(text: str | None, what: str) -> float:
 
 
 def _hms(text: str | None, what: str) -> str:
+    """The answer's time in the model's HH:MM:SS ("1:30:00" -> "01:30:00"), or why not."""
     if text is None:
         raise ValueError(f"{what} is missing")
     try:
         seconds = parse_hms(str(text).strip())
     except ValueError:
         raise ValueError(f"{what} {text!r} is not a time like 1:30:00") from None
-    return f"{seconds // 3600:02d}:{seconds % 3600 // 60:02d}:{seconds % 60:02d}"
+    return format_hms(seconds)
 
 
 def variable_spec(info: VariableInfo) -> dict[str, Any]:

@@ -102,17 +102,22 @@ HOLD_THEN_RE = re.compile(
     r"(?:s|sec|secs|seconds?))?\s*:\s*([A-Za-z][A-Za-z -]{2,40})",
     re.IGNORECASE,
 )
-_PLACE_NOUNS = {"zone", "ring", "burner", "plate", "side", "area", "hob", "element"}
 
 
-def _of_the(noun: str) -> str:
-    """ "timer of the rear zone" -> "rear timer"; a noun without "of" as it is."""
-    head, of, tail = noun.partition(" of ")
-    if not of:
+def _of_the(noun: str, own: set[str]) -> str:
+    """ "timer of the rear zone" (key REAR) -> "rear timer": the head noun with what names the
+    key in the phrase after "of"/"for" (its label's words; else the phrase less its own final
+    noun, "zone"); a noun without "of"/"for" as it is."""
+    parts = re.split(r"\s+(?:of|for)\s+", noun, maxsplit=1)
+    if len(parts) < 2:
         return noun
-    rest = [w for w in tail.split() if w.lower() not in ("the", "a", "an")]
-    while rest and rest[-1].lower() in _PLACE_NOUNS:
-        rest.pop()
+    head, tail = parts
+    rest = [w for w in tail.split() if w.lower() not in ("the", "a", "an", "its", "this", "that")]
+    named = [w for w in rest if w.lower() in own]
+    if named:
+        rest = named
+    elif len(rest) >= 2:
+        rest = rest[:-1]  # "the rear zone": "zone" is the noun, "rear" says which
     return " ".join([*rest, head]) if rest else head
 
 
@@ -125,7 +130,8 @@ def hold_use(b: Builder, key: ActionInfo) -> str:
         text = b.manual.units[i].text
         after = HOLD_THEN_RE.search(text)  # "| Touch and hold 2 s: timer of the rear zone. |"
         if after:
-            noun = _of_the(after.group(1).strip())
+            own = set(words(b.labels[key.controls[0]].text))
+            noun = _of_the(after.group(1).strip(), own)
             if noun and len(noun.split()) <= 3 and not set(words(noun)) & {"lock", "key"}:
                 return noun.lower()
         m = HOLD_USE_RE.search(text)

@@ -7,6 +7,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
+from apbot.model.values import format_hms
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder, twelve_hour_clock
 from apbot.read.roles_common import label_of, var_name
@@ -41,12 +42,26 @@ def assign_hour_minute(b: Builder, keys: list[ActionInfo], pair: tuple[str, str]
         said = b.labels[token].mentions[:2] if token in b.labels else []
         return any(_FINISH_RE.search(units[i].text) for i in said)
 
+    pair_tokens = [k.controls[0] for k in keys if k.name in pair and len(k.controls) == 1]
+    pair_said = {i for t in pair_tokens if t in b.labels for i in b.labels[t].mentions}
+
+    def with_pair(token: str) -> bool:
+        """HOUR / MIN are named near the key ("Press CLOCK. … Press HOUR …"), or their own
+        sentences name it ("HOUR / MIN set the clock"): a time word in a key's name alone
+        ("COOK TIME" of a +/− pair) gives it no HOUR / MIN."""
+        said = b.labels[token].mentions if token in b.labels else []
+        if {j for i in said for j in range(i, i + 3)} & pair_said:
+            return True
+        name = re.compile(rf"\b{re.escape(label_of(b, token))}\b", re.I)
+        return any(name.search(units[i].text) for i in pair_said)
+
     timed = [
         k
         for k in keys
         if k.skill in ("press", "hold")
         and len(k.controls) == 1
         and (set(k.controls[0].split("_")) & _TIME_KEYS or finish_key(k.controls[0]))
+        and (not pair_said or with_pair(k.controls[0]))
     ]
     if not timed:
         return []
@@ -74,13 +89,13 @@ def assign_hour_minute(b: Builder, keys: list[ActionInfo], pair: tuple[str, str]
         var = b.unique(name, b.variables)
         spec: dict[str, Any] = {
             "type": "time",
-            "ranges": [[_hms(low), _hms(high), step]],
+            "ranges": [[format_hms(low), format_hms(high), step]],
             "format": "hh:mm",
             "wrap": True,
             "label": label_of(b, token),
         }
         b.variables[var] = spec
-        effect = {hour: {"add": "01:00:00"}, minute: {"add": _hms(step)}}
+        effect = {hour: {"add": "01:00:00"}, minute: {"add": format_hms(step)}}
         first: dict[str, Any] = {"actions": [key.name]}
         switched = [i for i in mentions if ON_OFF_RE.search(b.manual.units[i].text)]
         if switched and not clock:  # "READY AT switches the finish-time function on or off"
@@ -93,7 +108,3 @@ def assign_hour_minute(b: Builder, keys: list[ActionInfo], pair: tuple[str, str]
                mentions[0] if mentions else None)  # fmt: skip
         used.append(key.name)
     return used
-
-
-def _hms(seconds: int) -> str:
-    return f"{seconds // 3600:02d}:{seconds % 3600 // 60:02d}:{seconds % 60:02d}"

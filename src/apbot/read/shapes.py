@@ -102,9 +102,16 @@ def _cell_key(cell: str) -> str:
 
 
 def _keypad(r: Range, text: str) -> bool:
-    """ "0 – 9: number keys" (or "keys 0-9", "0–9 buttons") names the keypad, not a setting's
-    range."""
-    if r.unit or r.low != 0 or r.high != 9:
+    """ "0 – 9: number keys" (or "keys 0-9", "0–9 buttons") names the keypad, and "pads 1 to 6"
+    ("buttons 1–4") some of its keys, not a setting's range."""
+    if r.unit:
+        return False
+    span = rf"{r.low:g}\s*(?:-|–|—|to)\s*{r.high:g}"
+    if re.search(
+        rf"\b(?:keys|buttons|pads)\s+{span}\b|\b{span}\s+(?:keys|buttons|pads)\b", text, re.I
+    ):
+        return True
+    if r.low != 0 or r.high != 9:
         return False
     return bool(
         _KEYPAD_WORDS.search(text)
@@ -130,7 +137,7 @@ def _row_step(cells: tuple[str, ...], unit: str) -> float | None:
         step = find_step(cell)
         if step:
             return step[0]
-        q = parse_quantity(cell.strip().lower().replace("an hour", "1 hour"))
+        q = parse_quantity(cell.strip().lower())  # ("half an hour": 30 min, not 1 h 30)
         if q and q[1] == "time" and q[0] > 0:
             base = {"s": 1, "min": 60, "h": 3600}.get(unit, 0)
             return q[0] / base if base else None
@@ -154,10 +161,20 @@ EXAMPLE_RE = re.compile(r"^\s*(?:examples?|e\.\s?g\.|for (?:example|instance))\b
 ADVICE_WORDS = frozenset({"suggested", "recommended", "typical", "advised", "usual", "ideal"})
 
 
+_ADVICE_PROSE_RE = re.compile(  # "45 to 55 % is a sensible target", "ideally 40–60 %"
+    r"\b(?:suggested|recommended|typical|advised|ideal|ideally|sensible|advisable|comfortable"
+    r"|healthy)\b",
+    re.IGNORECASE,
+)
+
+
 def _without_advice(unit: Unit) -> str:
     """A unit's text without the cells of columns headed as advice ("Suggested °C": what suits
-    a food, not the limits of the setting)."""
-    if not unit.cells or len(unit.header) != len(unit.cells):
+    a food, not the limits of the setting); a sentence of advice ("in most homes 45 to 55 % is
+    a sensible target") gives no limits at all."""
+    if not unit.cells:
+        return "" if _ADVICE_PROSE_RE.search(unit.text) else unit.text
+    if len(unit.header) != len(unit.cells):
         return unit.text
     return " | ".join(
         cell
@@ -393,10 +410,6 @@ def _guess_step(span: float, unit: str) -> float:
 
 def _tidy(x: float) -> float | int:
     return int(x) if float(x).is_integer() else round(float(x), 4)
-
-
-def _hms(total: int) -> str:
-    return f"{total // 3600:02d}:{total % 3600 // 60:02d}:{total % 60:02d}"
 
 
 def adjuster_direction(info: ActionInfo) -> tuple[str, str] | None:

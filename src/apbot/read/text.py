@@ -38,6 +38,26 @@ class Unit:
     heading: str = ""  # the nearest heading above
 
 
+def _header_lines(units: list[Unit], header: tuple[str, ...]) -> tuple[str, ...]:
+    """A pipe table's header written on two or more lines above its rule ("| Programme |
+    Max. spin |" then "| | (rpm) |"): one header row, the lines joined cell by cell, so the
+    second line is no data row. Returns the table's header."""
+    k = len(units)
+    while k > 0 and header and units[k - 1].header == header:
+        k -= 1
+    if not header or k == 0 or k == len(units) or units[k - 1].cells != header:
+        return header
+    lines = [units[k - 1].cells, *(u.cells for u in units[k:])]
+    width = max(len(cells) for cells in lines)
+    merged = tuple(
+        " ".join(c[i] for c in lines if i < len(c) and c[i]).strip() for i in range(width)
+    )
+    first = units[k - 1]
+    del units[k - 1 :]
+    units.append(Unit(first.line, " | ".join(merged), merged, (), heading=first.heading))
+    return merged
+
+
 @dataclass
 class Manual:
     """The cleaned manual: its units and the raw lines (for quoting in the report)."""
@@ -373,6 +393,7 @@ def parse_manual(text: str) -> Manual:
     units: list[Unit] = []
     heading = ""
     header: tuple[str, ...] = ()
+    ruled: tuple[str, ...] = ()  # the header of the table whose rule has been read
     para: list[tuple[int, str]] = []
     para_bullet = False
     para_step: int | None = None
@@ -455,6 +476,8 @@ def parse_manual(text: str) -> Manual:
         if "|" in stripped and stripped.count("|") >= 2:
             flush()
             if _TABLE_RULE.match(stripped):
+                if header and header != ruled:  # the rows above a table's first rule: header
+                    header = ruled = _header_lines(units, header)
                 continue
             cells = tuple(c.strip() for c in stripped.strip("|").split("|"))
             if not header:

@@ -75,6 +75,17 @@ def unit_name(text: str | None) -> str:
     )
 
 
+def rescale(value: float, unit: str, to: str) -> float | None:
+    """``value`` in ``unit`` written in ``to`` when both measure the same (1.5 kg = 1500 g,
+    0.5 l = 500 ml); None for units of different kinds (or none)."""
+    if unit == to:
+        return value
+    a, b = unit_of(unit.lower()) if unit else None, unit_of(to.lower()) if to else None
+    if a is None or b is None or a[0] != b[0] or a[0] in ("time", "temperature", "fahrenheit"):
+        return None
+    return round(value * a[1] / b[1], 6)
+
+
 def is_time_unit(unit: str) -> bool:
     return unit in ("s", "min", "h")
 
@@ -96,8 +107,20 @@ _FOREIGN_UNIT = re.compile(
 )  # units no setting of a household appliance is set in: ratings and sizes
 
 
+_ASIDE_RE = re.compile(  # "1 (barely warm)": words in brackets, no number and no unit
+    rf"(?<=\d)\s*\((?!\s*{UNIT}\s*\))[^()\d]{{3,30}}\)", re.IGNORECASE
+)
+
+
 def find_ranges(text: str) -> list[Range]:
-    """Ranges written in the text (times h:mm in seconds with unit ``s``)."""
+    """Ranges written in the text (times h:mm in seconds with unit ``s``); a word or two in
+    brackets after a number is an aside ("from 1 (barely warm) to 10 (full power)")."""
+    out = _ranges(text)
+    bare = _ASIDE_RE.sub("", text)
+    return out + [r for r in _ranges(bare) if r not in out] if bare != text else out
+
+
+def _ranges(text: str) -> list[Range]:
     out: list[Range] = []
     for m in TIME_RANGE_RE.finditer(text):
         a, b = _hmm(m.group(1)), _hmm(m.group(2))
@@ -112,8 +135,11 @@ def find_ranges(text: str) -> list[Range]:
         mixed = first != unit and is_time_unit(first) and is_time_unit(unit)
         if hi is not None and mixed:  # "1 min – 3 h": in minutes
             hi, unit = seconds(hi, unit) / seconds(1, first), first
-        elif hi is not None and (first, unit) in (("g", "kg"), ("ml", "l")):
-            hi, unit = hi * 1000, first  # "100 g – 2.0 kg": in grams
+        elif lo is not None and hi is not None and first and first != unit:
+            small = min((first, unit), key=lambda u: (unit_of(u) or ("", 0))[1])
+            low_in, high_in = rescale(lo, first, small), rescale(hi, unit, small)
+            if low_in is not None and high_in is not None:  # "100 g – 2.0 kg": in grams
+                lo, hi, unit = low_in, high_in, small
         if lo is None or hi is None or not lo < hi:
             continue
         if not unit and m.group(0).strip().lower().split()[1:2] == ["and"]:
@@ -137,6 +163,26 @@ _MOST_RE = re.compile(
     rf"\b(?:longest|maximum|highest|max\.?)\b[^.;]*?\b(?:is|of)\s+({NUM})\s*({UNIT})(?!\w)",
     re.IGNORECASE,
 )
+
+
+_STEPPED_PIECE_RE = re.compile(  # "0:30 – 12:00  30 minutes": a range, then its step
+    rf"(?<![\d:])({_TIME}){_DASH}({_TIME})(?![\d:])\s*(?:h\b)?\s*(?:by\s+)?"
+    r"(\d+(?:[.,]\d+)?|one|an?)\s*(minutes?|mins?|hours?|hrs?|h)\b",
+    re.IGNORECASE,
+)
+
+
+def find_stepped_pieces(text: str) -> list[Range]:
+    """Two or more time ranges, each followed by its step, the next starting where the last
+    ends ("Range Step 0:30 - 12:00 30 minutes 12:00 - 24:00 1 hour"), in seconds; else []."""
+    pieces: list[Range] = []
+    for m in _STEPPED_PIECE_RE.finditer(text):
+        low, high = _hmm(m.group(1)), _hmm(m.group(2))
+        amount = 1.0 if m.group(3).lower() in ("one", "a", "an") else number(m.group(3))
+        if amount is None or not low < high or (pieces and pieces[-1].high != low):
+            return pieces if len(pieces) >= 2 else []
+        pieces.append(Range(low, high, "s", seconds(amount, unit_name(m.group(4)))))
+    return pieces if len(pieces) >= 2 else []
 
 
 def find_bounds(texts: list[str]) -> Range | None:
@@ -396,6 +442,7 @@ def find_list(text: str) -> tuple[list[str], str] | None:
             return _dedupe(items), "arrows"
     for m in _CUE.finditer(text):
         segment = re.split(r"[.;]\s|\s[—–]\s|\bwhile\b|\bwhen\b|\bto (?!\d)", m.group(1))[0]
+        segment = re.sub(r"\s+only\W*$", "", segment, flags=re.I)  # "SOFT or FIRM only."
         items = [
             _clean_item(p)
             for p in re.split(r",\s*|\s*/\s*|\s*[·•|]\s*|\s{2,}|\s+or\s+|\s+and\s+", segment)
