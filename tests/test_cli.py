@@ -200,10 +200,10 @@ def test_run_loads_only_the_appliance_it_runs(monkeypatch: pytest.MonkeyPatch) -
 
 @pytest.mark.parametrize("width", [80, 40])
 def test_suite_list_never_cuts_an_id(monkeypatch: pytest.MonkeyPatch, width: int) -> None:
-    from apbot import cli
+    from apbot import cli_suite
     from apbot.bench.suite import load_suite
 
-    monkeypatch.setattr(cli, "console", Console(width=width, highlight=False, soft_wrap=True))
+    monkeypatch.setattr(cli_suite, "console", Console(width=width, highlight=False, soft_wrap=True))
     result = runner.invoke(app, ["suite", "list"])
     assert result.exit_code == 0, result.output
     first_column = {line.split()[0] for line in result.output.splitlines() if line.strip()}
