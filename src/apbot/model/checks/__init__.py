@@ -1,0 +1,1 @@
+"""The semantic checks of :func:`apbot.model.validate.check_model`, one module per concern."""
