@@ -14,7 +14,14 @@ from pathlib import Path
 
 PACKAGE = Path(__file__).resolve().parents[1] / "src" / "apbot"
 ORDER = ("llm", "model", "sim", "plan", "read", "agent", "vision", "bench", "cli")
-SAME_AS = {"examples": "model", "envs": "cli", "cli": "cli", "operate": "agent", "cli_llm": "cli"}
+CLI_MODULES = ("bench", "common", "goal", "llm", "model", "read", "run", "suite", "vision")
+SAME_AS = {
+    "examples": "model",
+    "envs": "cli",
+    "cli": "cli",
+    "operate": "agent",
+    **{f"cli_{name}": "cli" for name in CLI_MODULES},
+}
 TESTING_MAY_USE = {"model", "sim", "plan", "testing"}
 
 
