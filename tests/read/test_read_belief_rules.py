@@ -115,25 +115,6 @@ def test_output_is_a_word_for_power() -> None:
     }
 
 
-def test_a_setting_is_named_by_the_manuals_description_of_it() -> None:
-    extra = {"type": "discrete", "values": ["off", "on"], "label": "ADD-IN"}
-    menu = {"type": "discrete", "values": ["basic", "dough", "jam"], "label": "MENU"}
-    model = _model({"extra": extra, "menu": menu}, labels={"extra": "ADD-IN"})
-    manual = (
-        "| Key | What it does |\n|---|---|\n"
-        "| ADD-IN | Tells you when to drop in raisins or seeds |\n"
-        "| MENU | Steps through the programmes |\n\n"
-        "DOUGH     Kneads and proves only, no baking.\n"
-    )
-    said = "Basic bread, without the reminder to drop in raisins or seeds."
-    assert parse_instruction(model, said) == {"menu": "basic"}  # no manual: nothing to look up
-    assert parse_instruction(model, said, manual) == {"menu": "basic", "extra": "off"}
-    assert parse_instruction(model, "just knead and prove, no baking", manual) == {"menu": "dough"}
-    # two words of a description name nothing; nor do words a setting of the model has
-    assert parse_instruction(model, "basic, with raisins and seeds", manual) == {"menu": "basic"}
-    assert parse_instruction(model, "the basic programmes", manual) == {"menu": "basic"}
-
-
 def test_a_timer_that_wraps_round_the_day_beside_a_clock_is_when_it_is_done() -> None:
     day = {
         "type": "time",
@@ -153,3 +134,21 @@ def test_a_timer_that_wraps_round_the_day_beside_a_clock_is_when_it_is_done() ->
         "menu": "brown",
         "timer": "06:30:00",
     }
+
+
+def test_a_legends_words_in_an_instruction_do_not_set_that_key() -> None:
+    # a legend says what a key is for; the same words in an instruction describe the load
+    # or the user's wish, not that key (a rule that matched them set these switches)
+    prewash = {"type": "discrete", "values": ["off", "on"], "label": "PREWASH"}
+    programme = {"type": "discrete", "values": ["cottons", "synthetics"], "label": "PROGRAMME"}
+    temp = {"type": "numeric", "ranges": [[20, 90, 10]], "label": "TEMP", "unit": "C"}
+    washer = _model({"prewash": prewash, "programme": programme, "temp": temp})
+    legend = "PREWASH — an extra wash first, for laundry that is heavily soiled.\n"
+    said = "Cottons at 60 degrees, the laundry is heavily soiled."
+    assert parse_instruction(washer, said, legend) == {"programme": "cottons", "temp": 60}
+    lock = {"type": "discrete", "values": ["off", "on"], "label": "CHILD LOCK"}
+    heat = {"type": "numeric", "ranges": [[100, 250, 10]], "label": "TEMP", "unit": "C"}
+    oven = _model({"lock": lock, "heat": heat}, labels={"lock": "STOP/CANCEL"})
+    legend = "STOP/CANCEL     Halts the oven and wipes out the settings you keyed in.\n"
+    said = "Wipe out the settings I keyed in and heat the oven to 200 degrees."
+    assert parse_instruction(oven, said, legend) == {"heat": 200}

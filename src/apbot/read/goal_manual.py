@@ -188,7 +188,7 @@ def coded_names(model: ApplianceModel, manual: str) -> list[tuple[str, Any, str]
     return list(dict.fromkeys(out))
 
 
-LEGEND_VERBS = frozenset(
+_LEGEND_VERBS = frozenset(
     {"turns", "turn", "switches", "switch", "sets", "set", "selects", "select", "press", "presses"}
     | {"changes", "change", "shows", "show", "starts", "start", "stops", "stop", "each", "when"}
     | {"with", "from", "into", "this", "that", "then", "also", "only", "between", "unit's"}
@@ -217,7 +217,7 @@ def legend_words(
                     continue
                 sentence = re.split(r"[.;(]", found[1])[0]
                 thing = re.search(r"([A-Za-z]{4,})\s+on\s*(?:and|or|/)\s*off\b", sentence)
-                if thing is not None and thing[1].casefold() not in LEGEND_VERBS:
+                if thing is not None and thing[1].casefold() not in _LEGEND_VERBS:
                     out.setdefault(name, set()).add(thing[1].casefold())
     return out
 
@@ -249,31 +249,3 @@ def title_nouns(manual: str, known: frozenset[str]) -> set[str]:
     words = [w.casefold() for w in re.findall(r"[A-Za-z]{3,}", title)]
     words = [w for w in words if w not in _NOT_HEADS]
     return {words[-1]} if words else set()
-
-
-_MARKUP = re.compile(r"[*_`#]+")
-
-
-def descriptions(
-    manual: str, names: dict[str, list[tuple[str, Any]]]
-) -> list[tuple[str, Any, str]]:
-    """(variable, value, description) for each legend line of the manual that opens with a
-    name and says what it does: "FAN       Air circulation only.", "| ADD-IN | Beep for adding
-    fruit and nuts |", "- **PURIFY** — the fan and the filter only". ``names``: a key label
-    or value name -> the (variable, value) it sets. Only the first sentence is kept."""
-    out: list[tuple[str, Any, str]] = []
-    if not manual or not names:
-        return out
-    by_key = {name.casefold(): homes for name, homes in names.items() if len(name) >= 3}
-    for raw in manual.splitlines():
-        line = _MARKUP.sub("", raw).strip().strip("|-•– ").strip()
-        found = re.match(r"^([A-Za-z][A-Za-z .+/-]{2,24}?)(?:\s{2,}|\s*[:|–—]\s*)(.+)$", line)
-        if found is None:
-            continue
-        homes = by_key.get(found[1].strip().casefold())
-        if not homes:
-            continue
-        sentence = re.split(r"(?<=[a-z])[.;!?](?:\s|$)|\|", found[2])[0].strip()
-        if len(sentence.split()) >= 2:
-            out.extend((var, value, sentence) for var, value in homes)
-    return list(dict.fromkeys(out))
