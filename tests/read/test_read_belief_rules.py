@@ -105,6 +105,21 @@ def test_the_manuals_title_names_the_appliance_a_reader_left_unnamed() -> None:
     assert parse_instruction(model, "Turn the temp on", titled) == {}
 
 
+def test_the_titles_head_noun_comes_before_its_extras_and_a_safety_heading_names_nothing() -> None:
+    power = {"type": "discrete", "values": ["off", "on"], "label": "POWER"}
+    temp = {"type": "numeric", "ranges": [[60, 220, 10]], "unit": "°C", "label": "TEMP"}
+    model = _model({"power": power, "temp": temp})
+    extras = "# Countertop Soup Urn with Viewing Window and Light\n\nThank you.\n"
+    assert parse_instruction(model, "Turn the light on, 150 degrees", extras) == {"temp": 150}
+    on = {"power": "on", "temp": 150}
+    assert parse_instruction(model, "Switch the urn on, 150 degrees", extras) == on
+    safety = "# Important Safety Instructions\n\nRead them.\n\n# Kora SU-2 Soup Urn\n"
+    assert parse_instruction(model, "Turn the urn on at 150 degrees", safety) == on
+    brand = "# Kora SU-2 — Soup Urn & Warmer\n"  # the part after the brand; not the "& Warmer"
+    assert parse_instruction(model, "Turn the urn on at 150 degrees", brand) == on
+    assert parse_instruction(model, "Turn the warmer on at 150 degrees", brand) == {"temp": 150}
+
+
 def test_output_is_a_word_for_power() -> None:
     watt = {"type": "numeric", "ranges": [[500, 3500, 100]], "label": "WATT"}
     time = {"type": "numeric", "ranges": [[1, 180, 1]], "label": "TIME", "unit": "min"}

@@ -228,24 +228,51 @@ _NOT_HEADS = frozenset(
 )
 
 
-def title_nouns(manual: str, known: frozenset[str]) -> set[str]:
-    """What the manual's title calls the appliance ("Instant Hot Water Dispenser", "Countertop
-    Induction Range 3.5 kW"): the head noun, the title's last word. A person says "switch the
-    dispenser on" of an appliance the reader could not name. The title is the first heading, or
-    else the first of the opening lines with a word of ``known`` (the category's words)."""
-    lines = [line.strip() for line in manual.splitlines()[:40] if line.strip()][:12]
-    title = next((line for line in lines if line.startswith("#")), None)
-    if title is None:
-        title = next(
-            (
-                line
-                for line in lines
-                if known & {w.casefold() for w in re.findall(r"[A-Za-z]+", line)}
-            ),
-            None,
-        )
-    if title is None:
-        return set()
-    words = [w.casefold() for w in re.findall(r"[A-Za-z]{3,}", title)]
+_APPLIANCE_NOUNS = frozenset(
+    {"machine", "washer", "dryer", "cooker", "multicooker", "oven", "microwave", "fryer", "kettle"}
+    | {"urn", "dispenser", "boiler", "heater", "maker", "breadmaker", "toaster", "blender", "mixer"}
+    | {"juicer", "grinder", "hob", "cooktop", "range", "stove", "griddle", "grill", "steamer"}
+    | {"steriliser", "sterilizer", "purifier", "humidifier", "dehumidifier", "conditioner", "pot"}
+    | {"cooler", "fan", "dishwasher", "brewer", "percolator", "warmer", "iron", "cleaner", "fridge"}
+    | {"refrigerator", "freezer", "appliance", "unit", "device", "processor", "airfryer"}
+)
+"""Head nouns that name an appliance (a title's "Safety" or "Light" names none)."""
+
+_NOT_AGENTS = frozenset(
+    {"water", "power", "timer", "filter", "cover", "paper", "order", "number", "center", "centre"}
+    | {"adapter", "adaptor", "controller", "monitor", "sensor", "indicator", "colour", "color"}
+)
+
+_SEGMENTS = re.compile(r"\s[-–—·|:]\s|[–—·|:,()]")
+_TAIL = re.compile(r"\s(?:with|and|for|incl\w*|plus)\s.*|\s*&.*", re.IGNORECASE)
+
+
+def _head(segment: str) -> str | None:
+    """A title part's head noun: its last word before "with", "and", "for" or "&"."""
+    words = [w.casefold() for w in re.findall(r"[A-Za-z]{3,}", _TAIL.sub("", segment))]
     words = [w for w in words if w not in _NOT_HEADS]
-    return {words[-1]} if words else set()
+    return words[-1] if words else None
+
+
+def title_nouns(manual: str, known: frozenset[str]) -> set[str]:
+    """What the manual's title calls the appliance ("Instant Hot Water Dispenser", "Digital Air
+    Fryer with Viewing Window", "Countertop Induction Range 3.5 kW"): the head noun, the last
+    word before "with"/"and"/"for"/"&", of the first title part whose head names an appliance (a
+    word of ``known``, the category's words, a common appliance noun, else a doer's "-er"/"-or"
+    noun). A person says "switch the dispenser on" of an appliance the reader could not name.
+    Titles are the opening headings, or else the opening lines with a word of ``known``;
+    "Important Safety Instructions" names none and a later heading is taken."""
+    lines = [line.strip() for line in manual.splitlines()[:40] if line.strip()][:12]
+    titles = [line.lstrip("#").strip() for line in lines if line.startswith("#")]
+    if not titles:
+        titles = [
+            line for line in lines if known & {w.casefold() for w in re.findall(r"[A-Za-z]+", line)}
+        ]
+    heads = [h for t in titles for part in _SEGMENTS.split(t) if (h := _head(part)) is not None]
+    for head in heads:
+        if head in known or head in _APPLIANCE_NOUNS:
+            return {head}
+    for head in heads:
+        if re.search(r"(?:er|or)$", head) and head not in _NOT_AGENTS:
+            return {head}
+    return set()
