@@ -140,6 +140,17 @@ def test_what_the_next_sentence_says_of_it_is_said_of_the_knob() -> None:
     assert model.variables["knob"].wrap is False
 
 
+def test_an_it_sentence_joins_the_knob_only_when_it_speaks_of_the_knobs_turns_or_ends() -> None:
+    manual = (
+        "CONTROLS\n\nHEAT knob   Main switch and heat setting.\nFAN         Fan on/off.\n\n"
+        "OPERATION\n\nThe knob has five positions. It stops at the end of the heating period "
+        "and gives a beep.\n\n     OFF  ·  LOW  ·  MID  ·  HIGH  ·  MAX\n\nTurn the knob away "
+        "from OFF to switch on. The knob turns all the way round, from MAX on to OFF.\n"
+    )
+    model = read_manual(manual, ["turn_knob_cw", "turn_knob_ccw", "press_fan"]).model
+    assert model.variables["knob"].wrap is True  # the heating stops, not the knob
+
+
 # a fan heater whose timer is a knob you press, not turn
 HEATER = """CONTROLS
 
