@@ -51,12 +51,13 @@ def twelve_hour_clock(units: list[Any]) -> bool:
     return any(_TWELVE_RE.search(t) for t in texts)
 
 
+_QUANTITY_WORDS = {"temp", "temperature", "humidity", "weight", "volume", "speed", "watt"}
+
+
 _DISPLAY_RE = re.compile(
     r"\b(?:display|screen|indicators?|symbols?|icons?|lamps?|lights?|readouts?|signs?)\b", re.I
 )
 """A section that explains what the panel shows."""
-
-_QUANTITY_WORDS = {"temp", "temperature", "humidity", "weight", "volume", "speed", "watt"}
 
 
 class Builder(EvidenceReader):
