@@ -156,3 +156,22 @@ features:
     assert translate_goal(read, true, {"function": "fan high"}) == {"function": "fan hi"}
     assert translate_goal(read, true, {"delay": "09:00:00"}) == {"delay": 9}
     assert translate_goal(read, true, {"delay": "00:30:00"}) == {"delay": 0.5}
+
+
+def test_a_key_word_with_on_is_display_text_only_in_a_display_legend():
+    # a legend of beeps is no display legend, and POWER ON names the power key's job
+    beeps = (
+        "Keys\n\n"
+        "  POWER        switches the purifier on and off\n"
+        "  NIGHT        switches night mode on / off\n\n"
+        "Beeps\n\n"
+        "  POWER ON     a short double beep\n"
+        "  NIGHT ON     a single low beep\n"
+    )
+    model = _read(beeps, ["press_power", "press_night"])
+    assert model.variables["power"].show != {"off": "", "on": "POWER ON"}
+    assert "NIGHT ON" not in str(model.variables["night"].show)
+    lit = beeps.replace("Beeps", "Symbols on the screen")
+    model = _read(lit, ["press_power", "press_night"])
+    assert model.variables["night"].show == {"off": "", "on": "NIGHT ON"}
+    assert model.variables["power"].show != {"off": "", "on": "POWER ON"}

@@ -6,6 +6,7 @@ from __future__ import annotations
 from apbot.model.domain import all_values
 from apbot.model.schema import DiscreteVariable
 from apbot.read import read_manual
+from apbot.read.values import EACH_PRESS_RE
 
 # an oven with one push-turn dial: it picks the function, and after TEMP or TIME it sets those
 OVEN = """CONTROLS
@@ -137,3 +138,34 @@ def test_what_the_next_sentence_says_of_it_is_said_of_the_knob() -> None:
     )
     model = read_manual(manual, ["turn_knob_cw", "turn_knob_ccw", "press_fan"]).model
     assert model.variables["knob"].wrap is False
+
+
+def test_an_it_sentence_joins_the_knob_only_when_it_speaks_of_the_knobs_turns_or_ends() -> None:
+    manual = (
+        "CONTROLS\n\nHEAT knob   Main switch and heat setting.\nFAN         Fan on/off.\n\n"
+        "OPERATION\n\nThe knob has five positions. It stops at the end of the heating period "
+        "and gives a beep.\n\n     OFF  ·  LOW  ·  MID  ·  HIGH  ·  MAX\n\nTurn the knob away "
+        "from OFF to switch on. The knob turns all the way round, from MAX on to OFF.\n"
+    )
+    model = read_manual(manual, ["turn_knob_cw", "turn_knob_ccw", "press_fan"]).model
+    assert model.variables["knob"].wrap is True  # the heating stops, not the knob
+
+
+# a fan heater whose timer is a knob you press, not turn
+HEATER = """CONTROLS
+
+ POWER         Switches the fan heater on or off.
+ TIMER knob    Every push of the timer knob adds an hour before the heater turns itself off (1–8 h).
+
+1. Press POWER.
+2. Press the TIMER knob until the hours you want are set.
+"""
+
+
+def test_each_press_of_a_knob_is_a_press_only_a_dials_click_is_a_turn() -> None:
+    reading = read_manual(HEATER, ["press_power", "press_timer"])
+    read = {n.subject: n for n in reading.report.notes if not n.guess}
+    assert read["features.set_timer"].line == 4  # read from the legend, not guessed
+    assert EACH_PRESS_RE.search("Each press of the timer knob adds one hour")
+    assert not EACH_PRESS_RE.search("every click of the dial changes the temperature")
+    assert EACH_PRESS_RE.search("every click changes the time by 1 minute")

@@ -73,6 +73,12 @@ _DIGITS_RE = re.compile(r"\b(one|two|three|1|2|3)[- ]digits?\b", re.I)
 _QUANTITY_WORDS = {"temp", "temperature", "humidity", "weight", "volume", "speed", "watt"}
 
 
+_DISPLAY_RE = re.compile(
+    r"\b(?:display|screen|indicators?|symbols?|icons?|lamps?|lights?|readouts?|signs?)\b", re.I
+)
+"""A section that explains what the panel shows."""
+
+
 class Builder(EvidenceReader):
     """Collects variables, features, guards and notes; ``data()`` gives the model as plain data."""
 
@@ -145,7 +151,7 @@ class Builder(EvidenceReader):
             "label": label,
         }
         self.note(f"variables.{name}", "an on/off setting", at)
-        shown = self._shown_on(label)
+        shown = self._shown_on(name, label)
         if shown is not None:  # "FRESH ON appears": what the display prints while it is on
             self.variables[name]["show"] = {"off": "", "on": shown[0]}
             self.note(f"variables.{name}.show", f"the display shows {shown[0]} while on", shown[1])
@@ -156,19 +162,40 @@ class Builder(EvidenceReader):
             self.note(f"display.indicators.{name}", "a lamp shows it", lamp)
         return name
 
-    def _shown_on(self, label: str) -> tuple[str, int] | None:
+    def _shown_on(self, name: str, label: str) -> tuple[str, int] | None:
         """A word of the key's name with ON after it that the display shows ("FRESH ON appears",
-        a display legend's "FRESH ON   KEEP FRESH is on"): the sign the setting is on."""
-        names = [w for w in re.findall(r"[A-Z][A-Z0-9+-]{2,}", label) if w not in ("ON", "OFF")]
+        a display legend's "FRESH ON   KEEP FRESH is on"): the sign the setting is on. A row
+        counts only under a display heading ("POWER ON   two beeps" in a table of sounds is
+        no display text), and never for the power switch, whose ON names the key's job."""
+        if name == "power":
+            return None
+        names = [
+            w
+            for w in re.findall(r"[A-Z][A-Z0-9+-]{2,}", label)
+            if w not in ("ON", "OFF", "POWER", "MAIN")
+        ]
         if not names or label.upper() != label:
             return None
         phrase = re.compile(rf"(?<![\w/])((?:{'|'.join(map(re.escape, names))}) ON)(?![\w/])")
         for i, unit in enumerate(self.manual.units):
             for m in phrase.finditer(unit.text):
                 legend = re.match(r"\s{2,}\S", unit.text[m.end() :])
-                if legend or m.group(1) in shown_words(unit.text):
+                if legend and _DISPLAY_RE.search(self._section(unit.line) or unit.heading):
+                    return m.group(1), i
+                if m.group(1) in shown_words(unit.text):
                     return m.group(1), i
         return None
+
+    def _section(self, line: int) -> str:
+        """The nearest title above a line ("The display", "Sounds", "## Symbols"): a short line
+        standing alone between blank lines, without a full stop — marked as a heading or not."""
+        lines = self.manual.lines
+        for k in range(min(line, len(lines)) - 2, max(line - 40, 0), -1):
+            text = lines[k].strip()
+            alone = not lines[k - 1].strip() and k + 1 < len(lines) and not lines[k + 1].strip()
+            if text and alone and len(text.split()) <= 5 and not text.endswith((".", ":", ",")):
+                return text
+        return ""
 
     def lamp_unit(self, label: str) -> int | None:
         """A sentence saying the label lights up on the panel (a lamp, symbol or indicator)."""

@@ -20,7 +20,7 @@ How it works, in order:
 
 The steps live in their own modules: ``goal_spelling`` (rewrites before tokenising),
 ``goal_names`` (1), ``goal_assign`` and ``goal_fit`` (2), ``goal_scales`` (3),
-``goal_described`` and ``goal_switches`` (4), ``goal_start`` (5), ``goal_twins`` (zones and
+``goal_switches`` (4), ``goal_start`` (5), ``goal_twins`` (zones and
 sides); ``goal_view`` is the model as the parser sees it.
 """
 
@@ -30,7 +30,6 @@ from apbot.model.domain import ValueProblem, normalise
 from apbot.model.schema import ApplianceModel, DiscreteVariable
 from apbot.model.values import closest_matches, preview
 from apbot.read.goal_assign import assign_mentions, distinct
-from apbot.read.goal_described import described_settings
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
 from apbot.read.goal_scales import superlatives
@@ -93,7 +92,6 @@ def parse_instruction(
     superlatives(view, text, goal, claimed, where)
     zero_settings(view, text, goal, claimed, where)
     no_values(view, text, goal, claimed)
-    described_settings(view, text, goal, claimed, where)
     switches(view, text, goal, claimed, where)
     place_twins(view, text, goal, where)
     entry_switches(view, goal)

@@ -188,7 +188,7 @@ def coded_names(model: ApplianceModel, manual: str) -> list[tuple[str, Any, str]
     return list(dict.fromkeys(out))
 
 
-LEGEND_VERBS = frozenset(
+_LEGEND_VERBS = frozenset(
     {"turns", "turn", "switches", "switch", "sets", "set", "selects", "select", "press", "presses"}
     | {"changes", "change", "shows", "show", "starts", "start", "stops", "stop", "each", "when"}
     | {"with", "from", "into", "this", "that", "then", "also", "only", "between", "unit's"}
@@ -217,7 +217,7 @@ def legend_words(
                     continue
                 sentence = re.split(r"[.;(]", found[1])[0]
                 thing = re.search(r"([A-Za-z]{4,})\s+on\s*(?:and|or|/)\s*off\b", sentence)
-                if thing is not None and thing[1].casefold() not in LEGEND_VERBS:
+                if thing is not None and thing[1].casefold() not in _LEGEND_VERBS:
                     out.setdefault(name, set()).add(thing[1].casefold())
     return out
 
@@ -228,52 +228,51 @@ _NOT_HEADS = frozenset(
 )
 
 
-def title_nouns(manual: str, known: frozenset[str]) -> set[str]:
-    """What the manual's title calls the appliance ("Instant Hot Water Dispenser", "Countertop
-    Induction Range 3.5 kW"): the head noun, the title's last word. A person says "switch the
-    dispenser on" of an appliance the reader could not name. The title is the first heading, or
-    else the first of the opening lines with a word of ``known`` (the category's words)."""
-    lines = [line.strip() for line in manual.splitlines()[:40] if line.strip()][:12]
-    title = next((line for line in lines if line.startswith("#")), None)
-    if title is None:
-        title = next(
-            (
-                line
-                for line in lines
-                if known & {w.casefold() for w in re.findall(r"[A-Za-z]+", line)}
-            ),
-            None,
-        )
-    if title is None:
-        return set()
-    words = [w.casefold() for w in re.findall(r"[A-Za-z]{3,}", title)]
+_APPLIANCE_NOUNS = frozenset(
+    {"machine", "washer", "dryer", "cooker", "multicooker", "oven", "microwave", "fryer", "kettle"}
+    | {"urn", "dispenser", "boiler", "heater", "maker", "breadmaker", "toaster", "blender", "mixer"}
+    | {"juicer", "grinder", "hob", "cooktop", "range", "stove", "griddle", "grill", "steamer"}
+    | {"steriliser", "sterilizer", "purifier", "humidifier", "dehumidifier", "conditioner", "pot"}
+    | {"cooler", "fan", "dishwasher", "brewer", "percolator", "warmer", "iron", "cleaner", "fridge"}
+    | {"refrigerator", "freezer", "appliance", "unit", "device", "processor", "airfryer"}
+)
+"""Head nouns that name an appliance (a title's "Safety" or "Light" names none)."""
+
+_NOT_AGENTS = frozenset(
+    {"water", "power", "timer", "filter", "cover", "paper", "order", "number", "center", "centre"}
+    | {"adapter", "adaptor", "controller", "monitor", "sensor", "indicator", "colour", "color"}
+)
+
+_SEGMENTS = re.compile(r"\s[-–—·|:]\s|[–—·|:,()]")
+_TAIL = re.compile(r"\s(?:with|and|for|incl\w*|plus)\s.*|\s*&.*", re.IGNORECASE)
+
+
+def _head(segment: str) -> str | None:
+    """A title part's head noun: its last word before "with", "and", "for" or "&"."""
+    words = [w.casefold() for w in re.findall(r"[A-Za-z]{3,}", _TAIL.sub("", segment))]
     words = [w for w in words if w not in _NOT_HEADS]
-    return {words[-1]} if words else set()
+    return words[-1] if words else None
 
 
-_MARKUP = re.compile(r"[*_`#]+")
-
-
-def descriptions(
-    manual: str, names: dict[str, list[tuple[str, Any]]]
-) -> list[tuple[str, Any, str]]:
-    """(variable, value, description) for each legend line of the manual that opens with a
-    name and says what it does: "FAN       Air circulation only.", "| ADD-IN | Beep for adding
-    fruit and nuts |", "- **PURIFY** — the fan and the filter only". ``names``: a key label
-    or value name -> the (variable, value) it sets. Only the first sentence is kept."""
-    out: list[tuple[str, Any, str]] = []
-    if not manual or not names:
-        return out
-    by_key = {name.casefold(): homes for name, homes in names.items() if len(name) >= 3}
-    for raw in manual.splitlines():
-        line = _MARKUP.sub("", raw).strip().strip("|-•– ").strip()
-        found = re.match(r"^([A-Za-z][A-Za-z .+/-]{2,24}?)(?:\s{2,}|\s*[:|–—]\s*)(.+)$", line)
-        if found is None:
-            continue
-        homes = by_key.get(found[1].strip().casefold())
-        if not homes:
-            continue
-        sentence = re.split(r"(?<=[a-z])[.;!?](?:\s|$)|\|", found[2])[0].strip()
-        if len(sentence.split()) >= 2:
-            out.extend((var, value, sentence) for var, value in homes)
-    return list(dict.fromkeys(out))
+def title_nouns(manual: str, known: frozenset[str]) -> set[str]:
+    """What the manual's title calls the appliance ("Instant Hot Water Dispenser", "Digital Air
+    Fryer with Viewing Window", "Countertop Induction Range 3.5 kW"): the head noun, the last
+    word before "with"/"and"/"for"/"&", of the first title part whose head names an appliance (a
+    word of ``known``, the category's words, a common appliance noun, else a doer's "-er"/"-or"
+    noun). A person says "switch the dispenser on" of an appliance the reader could not name.
+    Titles are the opening headings, or else the opening lines with a word of ``known``;
+    "Important Safety Instructions" names none and a later heading is taken."""
+    lines = [line.strip() for line in manual.splitlines()[:40] if line.strip()][:12]
+    titles = [line.lstrip("#").strip() for line in lines if line.startswith("#")]
+    if not titles:
+        titles = [
+            line for line in lines if known & {w.casefold() for w in re.findall(r"[A-Za-z]+", line)}
+        ]
+    heads = [h for t in titles for part in _SEGMENTS.split(t) if (h := _head(part)) is not None]
+    for head in heads:
+        if head in known or head in _APPLIANCE_NOUNS:
+            return {head}
+    for head in heads:
+        if re.search(r"(?:er|or)$", head) and head not in _NOT_AGENTS:
+            return {head}
+    return set()

@@ -99,8 +99,6 @@ class Model:
     appliance_words: frozenset[str]
     named_quantities: dict[str, list[tuple[Any, str]]] = field(default_factory=dict)
     # var -> (value, "60 %"): a coded value the manual gives as a quantity (knob mark 2: 60 %)
-    manual: str = ""
-    switch_keys: dict[str, list[str]] = field(default_factory=dict)  # switch -> its keys' labels
 
 
 MAX_PHRASE_VALUES = 2_000
@@ -279,7 +277,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         names = [w for w in phrase_words(label) if w != "and"]
         if names and not all(w in STOP_WORDS for w in names):
             phrases.append((coded, value, tuple(stem(w) for w in names), 0.95))
-    return Model(model, infos, phrases, start_values, frozenset(appliance), named, manual, keys)
+    return Model(model, infos, phrases, start_values, frozenset(appliance), named)
 
 
 def _whole_day(info: VarInfo) -> bool:

@@ -192,7 +192,7 @@ def _turned_after_keys(b: Builder, dial: str, keys: list[ActionInfo]) -> bool:
         rf"\bturn\w*\s+the\s+(?:\w+\s+)?{noun}\b",
         re.IGNORECASE,
     )
-    return sum(bool(said.search(u.text)) for u in b.manual.units) >= 1
+    return any(said.search(u.text) for u in b.manual.units)
 
 
 def _numbered(b: Builder, key: ActionInfo, ev: Evidence) -> bool:

@@ -170,6 +170,13 @@ STOPS_RE = re.compile(
 
 
 _IT_RE = re.compile(r"^It\b")
+_KNOB_TALK_RE = re.compile(
+    r"\b(?:turn\w*|rotat\w*|twist\w*|clicks?|positions?|detents?|marks?|notch\w*|round)\b"
+    r"|\b(?:both|either|each|its|the) ends\b|\ball the way\b|\bend stops?\b",
+    re.IGNORECASE,
+)
+"""An "It …" sentence about the knob itself: its turns, positions or ends ("It stops at the end
+of the programme" speaks of the wash)."""
 
 
 def dial_ends(b: Builder, token: str, var: str) -> None:
@@ -178,7 +185,13 @@ def dial_ends(b: Builder, token: str, var: str) -> None:
     noun = re.compile(rf"\b{re.escape(token.replace('_', ' '))}\b", re.IGNORECASE)
     named = [i for i, u in enumerate(units) if noun.search(u.text)]
     # "The knob has seven positions. It clicks at each one and stops at both ends."
-    named += [i + 1 for i in named if i + 1 < len(units) and _IT_RE.match(units[i + 1].text)]
+    named += [
+        i + 1
+        for i in named
+        if i + 1 < len(units)
+        and _IT_RE.match(units[i + 1].text)
+        and _KNOB_TALK_RE.search(units[i + 1].text)
+    ]
     near = b.context([token]) + sorted(named)
     own = set(b.labels[token].mentions if token in b.labels else []) | set(named)
     names = [lab.text for t, lab in b.labels.items() if t != token and lab.line is not None]

@@ -623,8 +623,9 @@ ON_OFF_RE = re.compile(
     re.IGNORECASE,
 )
 EACH_PRESS_RE = re.compile(
-    r"\b(?:each|every|repeated(?:ly)?|successive)\s+(?:press|touch|tap|push|click)"
-    # ("every click of the dial changes the temperature": the dial's turns, not the key's presses)
-    r"(?!\w*\s+of\s+the\s+(?:\w+\s+)?(?:dial|knob|wheel|ring|selector|encoder)\b)",
+    r"\b(?:each|every|repeated(?:ly)?|successive)\s+(?:press|touch|tap|push"
+    # ("every click of the dial changes the temperature": the dial's detents, not presses; "each
+    # press of the timer knob" is a press all the same)
+    r"|click(?!\w*\s+of\s+the\s+(?:\w+\s+)?(?:dial|knob|wheel|ring|selector|encoder)\b))",
     re.I,
 )
