@@ -143,6 +143,19 @@ def test_run_reads_any_instruction_and_says_it_reads_offline() -> None:
     assert "stored goal:" in text and "read goal:" in text and "SPL" in text, task.output
 
 
+def test_run_names_an_unknown_method_for_a_task_and_for_a_free_instruction() -> None:
+    # a free instruction once raised a bare KeyError (found by the command-line fuzz)
+    for words in (["t01"], ["make tea"]):
+        result = runner.invoke(app, ["run", "kettle_1", *words, "--method", "nosuch"])
+        text = " ".join(result.output.split())
+        assert result.exit_code == 2 and "unknown method 'nosuch'" in text, result.output
+        assert (
+            "apbot-open-loop" in text
+            and result.exception is None
+            or isinstance(result.exception, SystemExit)
+        ), result.exception
+
+
 def test_run_a_free_instruction_through_the_rendered_panel() -> None:
     """`--feedback image` on an instruction that is no task: the panel photo is grounded and the
     presses land on it, as in `bench` (it once crashed: the simulator refused image mode)."""

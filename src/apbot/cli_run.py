@@ -68,6 +68,12 @@ def run_command(
     from apbot.cli_llm import describe
     from apbot.model.goal import parse_goal, split_assignments
 
+    from apbot.agent.registry import get_method
+
+    try:  # before any work: a free instruction's run has no other place that would say it
+        get_method(method)
+    except KeyError as exc:
+        raise fail(str(exc.args[0]), 2) from None
     config = llm_setup(llm, cache)
     found = bundled_appliance(appliance, 2)
     task = _task_for(found, instruction)
