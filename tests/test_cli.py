@@ -149,10 +149,8 @@ def test_run_names_an_unknown_method_for_a_task_and_for_a_free_instruction() -> 
         result = runner.invoke(app, ["run", "kettle_1", *words, "--method", "nosuch"])
         text = " ".join(result.output.split())
         assert result.exit_code == 2 and "unknown method 'nosuch'" in text, result.output
-        assert (
-            "apbot-open-loop" in text
-            and result.exception is None
-            or isinstance(result.exception, SystemExit)
+        assert ("apbot-open-loop" in text and result.exception is None) or isinstance(
+            result.exception, SystemExit
         ), result.exception
 
 

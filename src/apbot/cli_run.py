@@ -62,13 +62,12 @@ def run_command(
     on the true simulator against the task's stored goal; any other instruction has no stored
     goal, so the verdict is the agent's own.
     """
+    from apbot.agent.registry import get_method
     from apbot.bench.beliefs import BeliefError
     from apbot.bench.runner import run_task
     from apbot.bench.suite import Task
     from apbot.cli_llm import describe
     from apbot.model.goal import parse_goal, split_assignments
-
-    from apbot.agent.registry import get_method
 
     try:  # before any work: a free instruction's run has no other place that would say it
         get_method(method)
