@@ -41,3 +41,28 @@ def test_a_charts_first_column_headed_by_the_dials_word_beats_a_sentence_naming_
     values = _values(model, name)
     for mode in ("cotton dry", "iron dry", "mixed", "delicate", "cool/airing"):
         assert mode in values, values
+
+
+# a grill whose MENU key's chart sits a few sentences under its own heading, its first
+# column counting the touches
+GRILL = """KEYS
+MENU      Chooses an automatic programme. Repeated touches go round the list.
+START     Starts cooking.
+
+MENU CHART
+Touch MENU until the programme shows, then touch START.
+If you touch nothing, the first programme is used.
+
+Touches   Programme       Weight        Hints
+1         TOAST           2 – 4 slices  turn halfway
+2         CHEESE MELT     1 – 2 plates
+3         SAUSAGES        4 – 8 pcs     prick them
+4         FISH            200 – 600 g   oil the rack
+"""
+
+
+def test_a_touch_counted_chart_a_few_lines_under_the_keys_heading_lists_its_values() -> None:
+    model = read_manual(GRILL, ["press_menu", "press_start"]).model
+    name = next(n for n in model.variables if "menu" in n)
+    values = _values(model, name)
+    assert values == ["toast", "cheese melt", "sausages", "fish"], values
