@@ -262,6 +262,10 @@ class EvidenceReader(ListReader):
                 best, ev.values_at = column, self._table_at
             elif best is not None and len(best) < 3:
                 best = None
+        elif not _numeric_items(best):
+            column = self._table_column(tokens)
+            if column and _part_of(best, column):
+                best, ev.values_at = column, self._table_at
         if best and len(ev.ranges) >= 2 and _names_of_pieces(best, units, ev.range_at):
             best = None  # "| Short | 0.5 – 10 hours | half an hour |": names of the range's pieces
         if best is None and not ev.ranges:
@@ -428,6 +432,15 @@ def _names_of_pieces(items: list[str], units: list[Unit], at: int | None) -> boo
     rows = units[at : at + len(items)]
     heads = [u.cells[0].strip(" *").lower() for u in rows if u.cells]
     return heads == [v.strip(" *").lower() for v in items]
+
+
+def _part_of(items: list[str], column: list[str]) -> bool:
+    """A few names a sentence gives in passing ("OFF sits between Spin/Drain and Cottons"),
+    each a name or a slash-part of a name in the longer first column of the control's own
+    chart: the chart lists them all."""
+    names = {c.strip(" *").lower() for c in column}
+    parts = names | {p.strip() for c in names for p in c.split("/")}
+    return len(column) > len(items) and all(v.strip(" *").lower() in parts for v in items)
 
 
 def _without_only(items: list[str]) -> list[str]:

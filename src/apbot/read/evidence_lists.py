@@ -10,6 +10,7 @@ from apbot.read.actions import ActionInfo
 from apbot.read.labels import Label, words
 from apbot.read.shapes import (
     ORDER_RE,
+    PRESSES_RE,
     QUANTITY_FAMILIES,
     RUN_RE,
     TABLE_POINTER_RE,
@@ -222,12 +223,28 @@ class ListReader:
             )
             if _keyed_examples(units, i):
                 column = []  # "| You type | Display | Cooking time |": worked examples
+            if not column and text == unit.heading:
+                column = self._counted_chart(i)
             if column:
                 # a heading that only shares a word with the key ("Recipe: basic white loaf"
                 # for LOAF) introduces a table about something else unless its header says so
                 related = mention or text != unit.heading or self._header_names(i, tokens)
                 out.append((column, 2.5 if related else 1.2))
         return out
+
+    def _counted_chart(self, i: int) -> list[str]:
+        """Under the key's own heading ("AUTO COOK CHART"), a sentence or two on, a table whose
+        first column counts the touches ("Touches | Menu | Quantity"): its next column is what
+        each touch selects."""
+        units = self.manual.units
+        for k in range(i + 1, min(i + 5, len(units))):
+            if units[k].heading != units[i].heading:
+                break
+            if units[k].cells:
+                if not units[k].header and PRESSES_RE.match(units[k].cells[0]):
+                    return _next_table_column(units, k - 1)
+                break
+        return []
 
     def _legend_cells(self, unit: Unit, tokens: list[str]) -> list[str] | None:
         """A line of the panel's printing laid out with wide spaces ("PROGRAM   OFF   AUTO   UV
