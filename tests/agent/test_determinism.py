@@ -79,3 +79,9 @@ def test_keys_written_into_a_plain_step_keep_their_order_under_every_hash_seed()
 
 def test_a_tie_between_parent_programmes_goes_the_same_way_under_every_hash_seed() -> None:
     assert _outputs(PARENTS) == {"programme\n"}  # the first met
+
+
+def test_a_walk_up_and_down_as_often_is_read_as_a_walk_upwards() -> None:
+    from apbot.agent.infer import typical_change
+
+    assert typical_change([55, 45, 55]) == 10 == typical_change([45, 55, 45])
