@@ -243,7 +243,7 @@ class StateEstimator:
                     continue
                 del decided[name]
                 reusable = reusable and name not in checked
-        for name in checked & decided.keys():
+        for name in [n for n in decided if n in checked]:
             self._learnt[name] = decided[name]
         entries = sorted(
             ((name, self._vars[var]) for name, (_, var) in decided.items()),

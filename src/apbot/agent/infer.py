@@ -201,7 +201,8 @@ def typical_change(trace: Sequence[float]) -> float | None:
     changes = [b - a for a, b in pairwise(trace) if b != a]
     if not changes:
         return None
-    return max(set(changes), key=lambda c: (changes.count(c), -abs(c)))
+    # +1 and -1 as common (two values that wrap): upwards, the way a key usually walks
+    return max(changes, key=lambda c: (changes.count(c), -abs(c), c > 0))
 
 
 def _tidy(number: float) -> float:

@@ -207,7 +207,7 @@ def choose(
     seen.screens = frozenset(screens)
     if len(screens) == 1:
         seen.screen_kind, seen.screen = screens.pop()
-    names = set().union(*(h.shown() for h in best))
+    names = sorted(set().union(*(h.shown() for h in best)))  # in an order no hash seed moves
     for name in names:
         options = {h.value(name) for h in best}
         lamp_sets = [h.lamps[name] for h in best if name in h.lamps]

@@ -383,7 +383,9 @@ class DisplayReader:
 
     @cached_property
     def _lamp_words(self) -> re.Pattern[str]:
-        texts = sorted({t for rows in self._lamp_table.values() for _, t in rows if t}, key=len)
+        texts = sorted(
+            {t for rows in self._lamp_table.values() for _, t in rows if t}, key=_by_length
+        )
         if not texts:
             return _regex(r"(?!x)x")
         return _regex("|".join(_literal(t) for t in reversed(texts)), re.IGNORECASE)
@@ -501,7 +503,9 @@ class DisplayReader:
 
     @staticmethod
     def _value_alternatives(spec: AnyVariable, loose: bool) -> str:
-        known = sorted({display_value(spec, v) for v in all_values(spec)} | {ABSENT_TEXT}, key=len)
+        known = sorted(
+            {display_value(spec, v) for v in all_values(spec)} | {ABSENT_TEXT}, key=_by_length
+        )
         alternatives = [_literal(k) for k in reversed(known)]
         if isinstance(spec, DiscreteVariable) and loose:
             alternatives.append(r"\S+(?: \S+)*?")
@@ -573,3 +577,8 @@ def _unique(found: list[Hypothesis]) -> list[Hypothesis]:
             seen.add(key)
             result.append(h)
     return result
+
+
+def _by_length(text: str) -> tuple[int, str]:
+    """Sort key: shortest first, then alphabetical, so a set's hash order never shows."""
+    return len(text), text

@@ -461,7 +461,7 @@ def _with_setting(
         if effects and not all(e == "digit" for e in effects.values())
     )
     if parents and not programme:  # the programme other settings depend on resets it too
-        parent = max(set(parents), key=parents.count)
+        parent = max(dict.fromkeys(parents), key=parents.count)  # ties: the first, not the hash's
         own = {k: variable.pop(k) for k in ("values", "ranges", "initial") if k in variable}
         variable["depends_on"] = parent
         variable["cases"] = {str(value): dict(own) for value in all_values(model.variables[parent])}
@@ -476,7 +476,7 @@ def _with_setting(
         for feature, index in plain:
             step = data["features"][feature][index]
             # the step's own keys, and those the model has nowhere (the way back)
-            keys = list(dict.fromkeys([*step["actions"], *(set(effects) - used)]))
+            keys = list(dict.fromkeys([*step["actions"], *(a for a in effects if a not in used)]))
             step["variable"] = name
             step["effect"] = {a: effects.get(a, "none") for a in keys}
             step["actions"] = keys
