@@ -83,11 +83,19 @@ class EvidenceReader(ListReader):
             if t not in tokens and lab.text and lab.text.upper() == lab.text
         ]
         other_keys = {_cell_key(lab) for lab in other_labels} - {_cell_key(o) for o in own}
+        other_words = {
+            w
+            for t in self.labels
+            if t not in tokens
+            for w in [x for x in words(t.replace("_", " ")) if len(x) >= 4][:1]
+        }
         for i in self.context(tokens):
             text = units[i].text
             unit = units[i]
             if i in elsewhere and i not in mentions and not unit.cells:
                 continue  # a sentence about another key says nothing about this one
+            if i not in mentions and any(anchored_lists(text, w) for w in other_words):
+                continue  # "The menu names printed on the panel: …" near KEEP WARM: MENU's
             if unit.cells and i not in mentions and _cell_key(unit.cells[0]) in other_keys:
                 continue  # a key table's row about another key ("| SIZE | S, M or L |")
             if unit.cells and unit.header and unit.cells[0].upper() in own:
