@@ -317,3 +317,25 @@ def test_a_parenthesis_adding_a_step_is_no_value_list() -> None:
     assert anchored_lists("Set the crust (light / medium / dark).", "crust") == [
         ["light", "medium", "dark"]
     ]
+
+
+GRILL_ZONES = """
+## Heat
+
+1. Press HEAT.
+2. Key in the heat on the number pads.
+
+| Heat | Surface | For |
+|---|---|---|
+| 1 – 3 | 90 – 140 °C | warming buns |
+| 4 – 6 | 160 – 210 °C | vegetables |
+| 7 – 8 | 220 – 250 °C | searing steaks |
+"""
+
+
+def test_table_rows_of_grouped_settings_span_the_whole_range() -> None:
+    actions = ["press_heat", "press_go"] + [f"press_{d}" for d in range(10)]
+    model = read_manual(GRILL_ZONES, actions).model
+    heat = model.variables["heat"]
+    assert heat.type == "numeric"
+    assert heat.ranges and heat.ranges[0][0] == 1 and heat.ranges[-1][1] == 8

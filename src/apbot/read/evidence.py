@@ -25,6 +25,7 @@ from apbot.read.shapes import (
     _quantity_unit,
     _quantity_units,
     _row_step,
+    _rows_span,
     _without,
     _without_advice,
 )
@@ -133,6 +134,8 @@ class EvidenceReader(ListReader):
                 row_step = _row_step(unit.cells, ranges[0].unit)
                 if row_step:
                     ranges = [Range(ranges[0].low, ranges[0].high, ranges[0].unit, row_step)]
+            if unit.cells:  # "| 1 – 2 |" then "| 3 – 4 |" … "| 9 – 10 |": groups of one setting
+                ranges = [_rows_span(units, i, r) for r in ranges]
             pieces = find_stepped_pieces(text) if ranges and not ev.ranges else []
             if pieces and _fits("s", tokens):  # "0:30 – 12:00 30 minutes 12:00 – 24:00 1 hour"
                 ev.ranges, ev.range_at = pieces, i
