@@ -339,3 +339,49 @@ def test_table_rows_of_grouped_settings_span_the_whole_range() -> None:
     heat = model.variables["heat"]
     assert heat.type == "numeric"
     assert heat.ranges and heat.ranges[0][0] == 1 and heat.ranges[-1][1] == 8
+
+
+GRIDDLE_LEGEND = """
+## Keys
+
+| Key | Use |
+|---|---|
+| POWER | Griddle on / off |
+| INNER | Picks the inner ring |
+| OUTER | Picks the outer ring |
+| + / − | Change the selected ring |
+
+## What the digits mean
+
+| Digit | Meaning |
+|---|---|
+| 0 | Ring idle |
+| 1 … 6 | Cooking level |
+| S | Sear, one level past 6 |
+| r | Ring still warm |
+"""
+
+GRIDDLE_CAPTION = """
+## Keys
+
+| Key | Use |
+|---|---|
+| POWER | Griddle on / off |
+| INNER | Picks the inner ring |
+| OUTER | Picks the outer ring |
+| + / − | Change the selected ring |
+
+## Cooking
+
+Ring levels
+
+0 · 1 · 2 · 3 · 4 · 5 · 6 · S
+"""
+
+
+def test_a_ring_level_takes_the_one_printed_row_of_levels() -> None:
+    actions = ["press_power", "press_inner", "press_outer", "press_plus", "press_minus"]
+    for manual in (GRIDDLE_LEGEND, GRIDDLE_CAPTION):
+        model = read_manual(manual, actions).model
+        inner = model.variables["inner"]
+        assert all_values(inner) == ["0", "1", "2", "3", "4", "5", "6", "s"], manual[-60:]
