@@ -17,7 +17,6 @@ from apbot.model.values import format_hms
 from apbot.read.actions import ActionInfo
 from apbot.read.evidence import EvidenceReader
 from apbot.read.labels import Label, words
-from apbot.read.levels import levels_list
 from apbot.read.report import Note
 from apbot.read.shapes import (
     CHOICE_WORDS,
@@ -244,11 +243,6 @@ class Builder(EvidenceReader):
             self.note(
                 subject, f"range {r0.low:g}–{r0.high:g} {r0.unit} (its longest)", ev.longest[1]
             )
-        elif not ev.step and not _unit_from_words(name) and (row := levels_list(self.manual.units)):
-            # nothing read for a unitless level, and the manual prints one row of levels
-            var = self.add_discrete(name, row[0], label, None)
-            self.note(f"variables.{var}.values", "the manual's one printed row of levels", row[1])
-            return var
         else:
             unit = ev.step[1] if ev.step else _unit_from_words(name)
             low, high = {"": (0, 10), "h": (0, 12), "min": (1, 60), "°C": (30, 100)}.get(
