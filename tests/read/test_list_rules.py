@@ -281,3 +281,61 @@ Airing-time settings available: 15 · 30 · 45 · 60 · 120 min.
     values = set(all_values(model.variables["air_time"]))
     assert {"00:15:00", "00:45:00", "02:00:00"} <= {str(v) for v in values}
     assert "01:30:00" not in {str(v) for v in values}
+
+
+STEAMER_NAMES = """
+## Keys
+
+| Key | What it does |
+|---|---|
+| COURSE | Picks the course; the light moves one name to the right on each touch. |
+| START | Starts steaming. |
+| HOLD HOT | Keeps the food hot after steaming. |
+
+The course names printed above the lights, in order: FISH · GREENS · DUMPLINGS · EGGS.
+
+## Steaming
+
+1. Pick the course (and the lid height, if you like).
+2. Touch START.
+"""
+
+
+def test_a_names_sentence_gives_its_named_setting_the_list_not_the_key_above_it() -> None:
+    actions = ["press_course", "press_start", "press_hold_hot"]
+    model = read_manual(STEAMER_NAMES, actions).model
+    assert model.variables["course"].values == ["fish", "greens", "dumplings", "eggs"]
+    hold = model.variables.get("hold_hot")
+    assert hold is None or "fish" not in all_values(hold)
+
+
+def test_a_parenthesis_adding_a_step_is_no_value_list() -> None:
+    from apbot.read.values import anchored_lists
+
+    assert anchored_lists("Pick the course (and the lid height, if you like).", "course") == []
+    assert anchored_lists("Pick the course (or a timer, see below).", "course") == []
+    assert anchored_lists("Set the crust (light / medium / dark).", "crust") == [
+        ["light", "medium", "dark"]
+    ]
+
+
+GRILL_ZONES = """
+## Heat
+
+1. Press HEAT.
+2. Key in the heat on the number pads.
+
+| Heat | Surface | For |
+|---|---|---|
+| 1 – 3 | 90 – 140 °C | warming buns |
+| 4 – 6 | 160 – 210 °C | vegetables |
+| 7 – 8 | 220 – 250 °C | searing steaks |
+"""
+
+
+def test_table_rows_of_grouped_settings_span_the_whole_range() -> None:
+    actions = ["press_heat", "press_go"] + [f"press_{d}" for d in range(10)]
+    model = read_manual(GRILL_ZONES, actions).model
+    heat = model.variables["heat"]
+    assert heat.type == "numeric"
+    assert heat.ranges and heat.ranges[0][0] == 1 and heat.ranges[-1][1] == 8

@@ -25,6 +25,7 @@ from apbot.read.shapes import (
     _quantity_unit,
     _quantity_units,
     _row_step,
+    _rows_span,
     _without,
     _without_advice,
 )
@@ -83,11 +84,19 @@ class EvidenceReader(ListReader):
             if t not in tokens and lab.text and lab.text.upper() == lab.text
         ]
         other_keys = {_cell_key(lab) for lab in other_labels} - {_cell_key(o) for o in own}
+        other_words = {
+            w
+            for t in self.labels
+            if t not in tokens
+            for w in [x for x in words(t.replace("_", " ")) if len(x) >= 4][:1]
+        }
         for i in self.context(tokens):
             text = units[i].text
             unit = units[i]
             if i in elsewhere and i not in mentions and not unit.cells:
                 continue  # a sentence about another key says nothing about this one
+            if i not in mentions and any(anchored_lists(text, w) for w in other_words):
+                continue  # "The menu names printed on the panel: …" near KEEP WARM: MENU's
             if unit.cells and i not in mentions and _cell_key(unit.cells[0]) in other_keys:
                 continue  # a key table's row about another key ("| SIZE | S, M or L |")
             if unit.cells and unit.header and unit.cells[0].upper() in own:
@@ -125,6 +134,8 @@ class EvidenceReader(ListReader):
                 row_step = _row_step(unit.cells, ranges[0].unit)
                 if row_step:
                     ranges = [Range(ranges[0].low, ranges[0].high, ranges[0].unit, row_step)]
+            if unit.cells:  # "| 1 – 2 |" then "| 3 – 4 |" … "| 9 – 10 |": groups of one setting
+                ranges = [_rows_span(units, i, r) for r in ranges]
             pieces = find_stepped_pieces(text) if ranges and not ev.ranges else []
             if pieces and _fits("s", tokens):  # "0:30 – 12:00 30 minutes 12:00 – 24:00 1 hour"
                 ev.ranges, ev.range_at = pieces, i

@@ -127,6 +127,26 @@ def _numeric_items(items: list[str]) -> bool:
     )
 
 
+def _rows_span(units: list[Unit], i: int, first: Range) -> Range:
+    """A range in a table's first column that the next rows carry on ("| 1 – 2 | … |",
+    "| 3 – 4 | … |" … "| 9 – 10 | … |"): the rows are groups of one setting, whose whole span
+    runs from the first row's low to the last row's high (a gap wider than the step, or than 1
+    where none is given, ends it)."""
+    own = find_ranges(units[i].cells[0])
+    if len(own) != 1 or (own[0].low, own[0].high) != (first.low, first.high):
+        return first
+    last = first
+    for row in units[i + 1 :]:
+        if not row.cells or row.header != units[i].header:
+            break
+        nxt = find_ranges(row.cells[0])
+        gap = nxt[0].low - last.high if len(nxt) == 1 and nxt[0].unit == first.unit else -1.0
+        if not 0 < gap <= max(1.0, first.step or 0.0):
+            break
+        last = nxt[0]
+    return first if last is first else Range(first.low, last.high, first.unit, first.step)
+
+
 def _row_step(cells: tuple[str, ...], unit: str) -> float | None:
     """A table row's step: a cell that is one quantity ("half an hour", "5 min", "1 h")."""
     from apbot.model.values import parse_quantity

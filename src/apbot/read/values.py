@@ -560,6 +560,8 @@ def anchored_lists(text: str, word: str) -> list[list[str]]:
         return out
     w = re.escape(word)
     for m in re.finditer(rf"\b{w}\w*(?:\s+\w+){{0,2}}\s*\(([^()]{{3,80}})\)", text, re.I):
+        if _ASIDE_PAREN_RE.match(m.group(1)):
+            continue  # "choose the menu (and texture, if needed)": an aside, not the values
         items = [_clean_item(i) for i in re.split(r"\s*/\s*|,\s*|\s+or\s+", m.group(1))]
         if len(items) >= 2 and all(i and len(i) <= 16 and len(i.split()) <= 2 for i in items):
             out.append(items)
@@ -571,7 +573,17 @@ def anchored_lists(text: str, word: str) -> list[list[str]]:
         items = [_clean_item(i) for i in re.split(r",\s*|\s+or\s+", m.group(1))]
         if len(items) >= 2:
             out.append(items)
+    # "The menu names printed on the lid: WHITE · BROWN · PORRIDGE": the names, then the list
+    named = re.search(rf"\b{w}\w*\s+{_NAMES_NOUN}\b[^:.;]{{0,60}}:\s*(.+)$", text, re.I)
+    found = bare_list(named.group(1)) if named else None
+    if found:
+        out.append(found)
     return out
+
+
+_ASIDE_PAREN_RE = re.compile(r"\s*(?:and|or|also|plus|e\.g\.|i\.e\.|see|if)\b", re.I)
+"""A parenthesis that adds a step, an example or a reference, not the setting's values."""
+_NAMES_NOUN = r"(?:names|settings|options|choices|positions)"
 
 
 _RUN_CUE = re.compile(  # a lookahead: every cue is tried
