@@ -1,4 +1,5 @@
-"""A 12-hour clock is read only from a sentence about the clock."""
+"""A 12-hour clock is read only from a sentence about the clock; a knob's end stop only from
+its own ends (not "the end of the heating period")."""
 
 import pytest
 
@@ -38,3 +39,23 @@ def test_a_warm_mode_of_twelve_hours_leaves_the_clock_at_twenty_four_hours() -> 
     model = read_manual(manual, ["press_clock", "press_hour", "press_min", "press_stay_warm"]).model
     clock = next(f for f in model.features.values() if f[0].actions == ["press_clock"])
     assert model.variables[clock[1].variable].ranges[0][0] == "00:00:00"
+
+
+def _heater(said: str) -> bool | None:
+    manual = (
+        "CONTROLS\n\nHEAT knob   Main switch and heat setting.\nFAN         Fan on/off.\n\n"
+        f"OPERATION\n\nThe knob has five positions. {said}\n\n"
+        "     OFF  ·  LOW  ·  MID  ·  HIGH  ·  MAX\n\nTurn the knob away from OFF to switch on.\n"
+    )
+    model = read_manual(manual, ["turn_knob_cw", "turn_knob_ccw", "press_fan"]).model
+    return model.variables["knob"].wrap
+
+
+def test_stopping_at_the_end_of_a_period_is_no_end_stop_of_the_knob() -> None:
+    said = "It turns the element off and stops at the end of the warming cycle."
+    assert _heater(said) is not False
+
+
+def test_a_knob_that_turns_and_stops_at_the_end_still_clamps() -> None:
+    assert _heater("It turns up to MAX and stops at the end.") is False
+    assert _heater("It turns up to MAX and stops at the ends, with a click.") is False

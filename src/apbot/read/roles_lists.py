@@ -161,8 +161,8 @@ ENDLESS_RE = re.compile(
 )
 
 
-STOPS_RE = re.compile(
-    r"\bstops? at (?:each|either|both|the) ends?\b|\bstops? at \S+ and (?:at )?\S+"
+STOPS_RE = re.compile(  # (not "stops at the end of the heating period": that is the heating)
+    r"\bstops? at (?:each|either|both|the) ends?\b(?!\s+of\b)|\bstops? at \S+ and (?:at )?\S+"
     r"|\bend stops?\b|\bwill not turn (?:past|beyond)"
     r"|\bcannot be turned (?:past|beyond)",
     re.IGNORECASE,
