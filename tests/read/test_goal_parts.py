@@ -135,3 +135,20 @@ def test_tables_drawn_with_spaces_name_coded_values() -> None:
     )
     names = coded_names(_menu_model(["1", "2", "3", "max"]), dial)
     assert ("menu", "2", "medium") in names and ("menu", "max", "full power") in names
+
+
+def test_a_titles_and_joins_words_of_one_name_and_only_the_title_names_the_appliance() -> None:
+    from apbot.read.goal_manual import title_nouns
+
+    none: frozenset[str] = frozenset()
+    assert title_nouns("# Soy & Nut Milk Maker\n\nThank you.\n", none) == {"maker"}
+    assert title_nouns("# Yogurt and Cheese Maker\n", frozenset({"yogurt"})) == {"maker"}
+    assert title_nouns("# Juice and Smoothie Maker\n", none) == {"maker"}
+    assert title_nouns("# Mira Soup Urn & Warmer\n", none) == {"urn"}  # an urn that also warms
+    assert title_nouns("# Mira Soup Urn with Tap and Light\n", none) == {"urn"}
+    parts = "# Mira MX-7\n\n## Parts\n\n### Inner pot\n"
+    assert title_nouns(parts, none) == set()  # a part named in a section is no appliance
+    poster = "# Mira MX-7 Owner's Manual\n\n## Wall sticker\n"
+    assert title_nouns(poster, none) == set()  # a section's "-er" word is no appliance
+    safety = "# Important Safety Instructions\n\nRead them.\n\n# Mira Soup Urn\n\n## Parts\n"
+    assert title_nouns(safety, none) == {"urn"}

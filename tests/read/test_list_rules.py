@@ -339,3 +339,17 @@ def test_table_rows_of_grouped_settings_span_the_whole_range() -> None:
     heat = model.variables["heat"]
     assert heat.type == "numeric"
     assert heat.ranges and heat.ranges[0][0] == 1 and heat.ranges[-1][1] == 8
+
+
+JUICER_STRENGTH = """
+PROGRAM picks the drink: CITRUS, CARROT, APPLE.
+
+PULP sets how much pulp goes into the glass.
+For the fruit programs (CITRUS, APPLE) it has three settings: NONE, SOME or LOTS.
+"""
+
+
+def test_a_sentence_naming_another_keys_values_in_passing_keeps_this_keys_own_list() -> None:
+    actions = ["press_program", "press_pulp", "press_start"]
+    model = read_manual(JUICER_STRENGTH, actions).model
+    assert model.variables["pulp"].values == ["none", "some", "lots"]

@@ -43,6 +43,7 @@ from apbot.read.values import (
     find_step,
     find_stepped_pieces,
     find_two_steps,
+    named_list,
     number,
     unit_name,
 )
@@ -95,7 +96,7 @@ class EvidenceReader(ListReader):
             unit = units[i]
             if i in elsewhere and i not in mentions and not unit.cells:
                 continue  # a sentence about another key says nothing about this one
-            if i not in mentions and any(anchored_lists(text, w) for w in other_words):
+            if i not in mentions and any(named_list(text, w) for w in other_words):
                 continue  # "The menu names printed on the panel: …" near KEEP WARM: MENU's
             if unit.cells and i not in mentions and _cell_key(unit.cells[0]) in other_keys:
                 continue  # a key table's row about another key ("| SIZE | S, M or L |")

@@ -244,26 +244,39 @@ _NOT_AGENTS = frozenset(
 )
 
 _SEGMENTS = re.compile(r"\s[-–—·|:]\s|[–—·|:,()]")
-_TAIL = re.compile(r"\s(?:with|and|for|incl\w*|plus)\s.*|\s*&.*", re.IGNORECASE)
+_TAIL = re.compile(r"\s(?:with|for|incl\w*|plus)\s.*", re.IGNORECASE)
+_JOIN = re.compile(r"\s+and\s+|\s*&\s*", re.IGNORECASE)
+
+
+def _words(text: str) -> list[str]:
+    return [w for w in re.findall(r"[a-z]{3,}", text.casefold()) if w not in _NOT_HEADS]
 
 
 def _head(segment: str) -> str | None:
-    """A title part's head noun: its last word before "with", "and", "for" or "&"."""
-    words = [w.casefold() for w in re.findall(r"[A-Za-z]{3,}", _TAIL.sub("", segment))]
-    words = [w for w in words if w not in _NOT_HEADS]
+    """A title part's head noun: its last word before "with" or "for". "And"/"&" join words of
+    one name ("Bread & Pastry Maker": a maker), unless the word before already names an
+    appliance ("Soup Urn & Warmer": an urn that also warms)."""
+    name = _TAIL.sub("", segment)
+    first = _words(_JOIN.split(name)[0])
+    if _JOIN.search(name) and first and first[-1] in _APPLIANCE_NOUNS:
+        return first[-1]
+    words = _words(name)
     return words[-1] if words else None
 
 
 def title_nouns(manual: str, known: frozenset[str]) -> set[str]:
     """What the manual's title calls the appliance ("Instant Hot Water Dispenser", "Digital Air
-    Fryer with Viewing Window", "Countertop Induction Range 3.5 kW"): the head noun, the last
-    word before "with"/"and"/"for"/"&", of the first title part whose head names an appliance (a
-    word of ``known``, the category's words, a common appliance noun, else a doer's "-er"/"-or"
-    noun). A person says "switch the dispenser on" of an appliance the reader could not name.
-    Titles are the opening headings, or else the opening lines with a word of ``known``;
-    "Important Safety Instructions" names none and a later heading is taken."""
+    Fryer with Viewing Window", "Bread & Pastry Maker"): the head noun (see ``_head``) of the
+    first title part whose head names an appliance (a word of ``known``, the category's words, a
+    common appliance noun, else a doer's "-er"/"-or" noun). A person says "switch the dispenser
+    on" of an appliance the reader could not name. Titles are the opening headings of the top
+    level (a section's "### Inner pot" is a part, not the appliance), or else the opening lines
+    with a word of ``known``; "Important Safety Instructions" names none and a later title is
+    taken."""
     lines = [line.strip() for line in manual.splitlines()[:40] if line.strip()][:12]
-    titles = [line.lstrip("#").strip() for line in lines if line.startswith("#")]
+    headings = [line for line in lines if line.startswith("#")]
+    top = min((len(h) - len(h.lstrip("#")) for h in headings), default=0)
+    titles = [h.lstrip("#").strip() for h in headings if len(h) - len(h.lstrip("#")) == top]
     if not titles:
         titles = [
             line for line in lines if known & {w.casefold() for w in re.findall(r"[A-Za-z]+", line)}

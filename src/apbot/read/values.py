@@ -573,12 +573,19 @@ def anchored_lists(text: str, word: str) -> list[list[str]]:
         items = [_clean_item(i) for i in re.split(r",\s*|\s+or\s+", m.group(1))]
         if len(items) >= 2:
             out.append(items)
-    # "The menu names printed on the lid: WHITE · BROWN · PORRIDGE": the names, then the list
-    named = re.search(rf"\b{w}\w*\s+{_NAMES_NOUN}\b[^:.;]{{0,60}}:\s*(.+)$", text, re.I)
-    found = bare_list(named.group(1)) if named else None
+    found = named_list(text, word)
     if found:
         out.append(found)
     return out
+
+
+def named_list(text: str, word: str) -> list[str] | None:
+    """A sentence that is the setting's list of names: "The menu names printed on the lid: WHITE
+    · BROWN · PORRIDGE". Unlike a passing "(for the menus (WHITE, BROWN))", the whole sentence
+    is about that setting, so it says nothing about the key next to it."""
+    w = re.escape(word)
+    named = re.search(rf"\b{w}\w*\s+{_NAMES_NOUN}\b[^:.;]{{0,60}}:\s*(.+)$", text, re.I)
+    return bare_list(named.group(1)) if named else None
 
 
 _ASIDE_PAREN_RE = re.compile(r"\s*(?:and|or|also|plus|e\.g\.|i\.e\.|see|if)\b", re.I)
