@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from apbot.model.validate import check_model
 from apbot.read import read_manual
-from apbot.read.values import find_list
+from apbot.read.value_lists import find_list
 
 FAN_HEATER = """
 SAFETY FIRST

@@ -310,7 +310,7 @@ def test_a_names_sentence_gives_its_named_setting_the_list_not_the_key_above_it(
 
 
 def test_a_parenthesis_adding_a_step_is_no_value_list() -> None:
-    from apbot.read.values import anchored_lists
+    from apbot.read.value_lists import anchored_lists
 
     assert anchored_lists("Pick the course (and the lid height, if you like).", "course") == []
     assert anchored_lists("Pick the course (or a timer, see below).", "course") == []

@@ -30,20 +30,18 @@ from apbot.read.shapes import (
     _without_advice,
 )
 from apbot.read.text import Unit
+from apbot.read.value_lists import anchored_lists, bare_list, named_list
 from apbot.read.values import (
     EACH_PRESS_RE,
     ON_OFF_RE,
     UNIT,
     Range,
-    anchored_lists,
-    bare_list,
     find_bounds,
     find_initial,
     find_ranges,
     find_step,
     find_stepped_pieces,
     find_two_steps,
-    named_list,
     number,
     unit_name,
 )

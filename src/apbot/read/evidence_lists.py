@@ -24,16 +24,16 @@ from apbot.read.shapes import (
     _same_word,
 )
 from apbot.read.text import Manual, Unit
-from apbot.read.values import (
+from apbot.read.value_lists import (
     bare_list,
     caps_run,
     cell_list,
     find_list,
     find_number_run,
     find_progression,
-    number,
     quantity_run,
 )
+from apbot.read.values import number
 
 _TYPING_WORDS = frozenset({"type", "typed", "typing", "digits", "keystrokes", "keyed"})
 _KEY_WORDS = frozenset({"key", "keys", "button", "buttons", "number", "numbers"})

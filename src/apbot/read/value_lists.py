@@ -1,0 +1,315 @@
+"""Lists of values in manual prose, tables and panel drawings.
+
+"AUTO → CONTINUOUS → LAUNDRY", "switch between HIGH and LOW", "3, 6 or 9 hours", "marked 20 30
+40 60 90", "50, 55 ... 95, 100": the shapes manuals use to name a setting's values one by one.
+Apart from values.py (ranges and steps) because lists are a job of their own: each finder
+returns the items it read and nothing it did not (None).
+"""
+
+from __future__ import annotations
+
+import re
+
+from apbot.read.values import NUM, UNIT
+
+_ARROW = re.compile(r"\s*(?:→|->|⇒|>|»|⟶)\s*")
+_CUE = re.compile(  # a lookahead, so that every cue in a sentence is tried
+    r"(?=(?:\bbetween|\bamong|\bchoose(?: from)?|\bselect(?:s| from)?|\bcycles?(?: through)?|"
+    r"\boptions?(?: are)?|\bsettings?(?: are)?|\blevels?(?: are)?|\bmodes?(?: are)?|\border|"
+    r"\bpositions?(?: are)?|\bpick|\bsteps? through|\bchanges?|:)\s+(.*))",
+    re.IGNORECASE,
+)
+_STOP_WORDS = {"the", "a", "an", "your", "this", "that", "it", "you", "to", "is", "are", "of"}
+
+
+def _clean_item(item: str) -> str:
+    item = re.sub(r"\(.*?\)", "", item)
+    item = re.sub(r"^(?:back to|then|and|or|finally)\s+", "", item.strip(), flags=re.I)
+    return item.strip(" .;:!?\"'“”‘’*_")
+
+
+def _value_like(item: str, caps_context: bool) -> bool:
+    if not item or len(item) > 24 or re.search(r"[()\[\]{}]", item):
+        return False
+    ws = item.split()
+    if len(ws) > 3 or ws[0].lower() in _STOP_WORDS:
+        return False
+    if re.fullmatch(rf"{NUM}\s*{UNIT}?", item, re.IGNORECASE):
+        return True
+    if caps_context:
+        return item.upper() == item and any(c.isalpha() for c in item)
+    return all(w[:1].isupper() or w[:1].isdigit() for w in ws) or len(ws) == 1
+
+
+_NUMBER_LIST = re.compile(
+    r"(?<![\w.])(\d+(?:[.,]\d+)?(?:\s*,\s*\d+(?:[.,]\d+)?)*)\s*,?\s*(?:or|and)\s*"
+    r"(\d+(?:[.,]\d+)?)\s*([A-Za-z%°]{1,8})?(?!\w)",
+)
+
+
+def _nothing_as_zero(items: list[str]) -> list[str]:
+    """A list of durations led by a word for none ("no timer → 2H → 4H", "OFF, 1 h, 2 h"): the
+    first is zero of their unit."""
+    rest = [
+        re.fullmatch(r"(\d+(?:[.,]\d+)?)\s*(h|hr|hrs|hours?|min|mins|minutes?)", i.strip(), re.I)
+        for i in items[1:]
+    ]
+    if len(items) < 3 or not all(rest):
+        return items
+    if not re.fullmatch(r"(?:no\b.{0,12}|none|off|-+|–|—)", items[0].strip(), re.I):
+        return items
+    unit = rest[0].group(2) if rest[0] else "h"
+    return [f"0 {unit}"] + [f"{m.group(1)} {m.group(2)}" for m in rest if m]
+
+
+_PROGRESSION_RE = re.compile(  # "50, 55, 60 ... 95, 100", "MENU 1, MENU 2 … MENU 15"
+    r"(?<![\d.])(?:([A-Z]{2,12}) )?(\d+(?:\.\d+)?),\s*(?:\1 )?(\d+(?:\.\d+)?)"
+    r"(?:,\s*(?:\1 )?\d+(?:\.\d+)?)*,?\s*(?:\.\.\.|…)\s*(?:(?:up )?to\s+)?"
+    r"(?:(?:\1 )?\d+(?:\.\d+)?,\s*)*(?:\1 )?(\d+(?:\.\d+)?)(?!\d|\.\d)\s*([A-Za-z%°]{1,8})?"
+)
+
+
+def find_progression(text: str) -> list[str] | None:
+    """Settings written as the first few, an ellipsis and the last ("50, 55, 60 ... 95, 100"):
+    every one of them, the step being the first gap."""
+    m = _PROGRESSION_RE.search(text)
+    if not m:
+        return None
+    first, second, last = float(m.group(2)), float(m.group(3)), float(m.group(4))
+    gap = second - first
+    if gap <= 0 or last <= second or (last - first) / gap > 400:
+        return None
+    count = round((last - first) / gap)
+    if abs(first + count * gap - last) > 1e-6:
+        return None  # the last is off the step: no progression
+    unit = m.group(5) if m.group(5) and re.fullmatch(UNIT, m.group(5), re.I) else ""
+    return [f"{first + k * gap:g}" + (f" {unit}" if unit else "") for k in range(count + 1)]
+
+
+def find_list(text: str) -> tuple[list[str], str] | None:
+    """A list of values in one sentence, and how it was written ("arrows", "list")."""
+    numbers = _NUMBER_LIST.search(text)
+    if numbers:  # "3, 6 or 9 hours"
+        items = [*re.split(r"\s*,\s*", numbers.group(1)), numbers.group(2)]
+        unit = numbers.group(3) or ""
+        known = bool(unit) and bool(re.fullmatch(UNIT, unit, re.IGNORECASE))
+        if len(items) >= 3:
+            return [f"{i} {unit}" if known else i for i in items], "list"
+    parts = [_clean_item(p) for p in _ARROW.split(text)]
+    if len(parts) >= 3:  # "… → HIGH, and from HIGH the next press …": the list ends at the comma
+        last = re.split(r"[,;]\s|\s[—–]\s|(?:^|\s+)(?:and\s+)?(?:then|back|again)\b", parts[-1])[0]
+        parts[-1] = _clean_item(last)
+    amount = re.search(rf"(?<![\w.])({NUM}\s*{UNIT})\s*$", parts[0], re.I)
+    if len(parts) >= 3 or (len(parts) == 2 and all(_value_like(p, True) for p in parts)):
+        head = parts[0].split(":")[-1].split()  # "in this order: AUTO → ...", "Clockwise: Cotton"
+        capital = [w for w in head if w.upper() == w and any(c.isalpha() for c in w)]
+        trailing: list[str] = []  # "Tap FAN to step through AUTO →": the run before the arrow
+        for w in reversed(head):
+            if w.upper() != w or not any(c.isalpha() for c in w):
+                break
+            trailing.insert(0, w)
+        if trailing and len(trailing) < len(capital):
+            capital = trailing
+        parts[0] = _clean_item(" ".join(capital) or " ".join(head[-2:]) or parts[0])
+        if len(head) > 3 and not capital:
+            parts[0] = _clean_item(head[-1])
+        if amount and len(parts) >= 3:  # "… in the order 1.0 LB → 1.5 LB": the amount first
+            parts[0] = amount.group(1)
+        items = [p for p in parts if p and re.search(r"\w", p)]  # "… → OFF → …": no item
+        if items and items[0] in items[1:]:
+            items = items[: items.index(items[0], 1)]  # "OFF → 2H → 4H → OFF": the cycle, once
+        items = _nothing_as_zero(items)
+        if all(_value_like(p, False) for p in items) and len(items) >= 2:
+            return _dedupe(items), "arrows"
+    for m in _CUE.finditer(text):
+        segment = re.split(r"[.;]\s|\s[—–]\s|\bwhile\b|\bwhen\b|\bto (?!\d)", m.group(1))[0]
+        segment = re.sub(r"\s+only\W*$", "", segment, flags=re.I)  # "SOFT or FIRM only."
+        items = [
+            _clean_item(p)
+            for p in re.split(r",\s*|\s*/\s*|\s*[·•|]\s*|\s{2,}|\s+or\s+|\s+and\s+", segment)
+        ]
+        items = [i for i in items if i]
+        caps = sum(1 for i in items if i.upper() == i and any(c.isalpha() for c in i))
+        if len(items) >= 2 and all(_value_like(i, caps >= 2) for i in items):
+            lower_ok = len(items) >= 3 and all(len(i.split()) <= 2 for i in items)
+            numeric = all(re.fullmatch(rf"{NUM}\s*{UNIT}?", i, re.I) for i in items)
+            if caps >= 2 or numeric or lower_ok:
+                return _dedupe(items), "list"
+        if caps >= 3:  # names in capitals, then the prose that describes the first one
+            head = []
+            for item in items:
+                if not _value_like(item, True):
+                    break
+                head.append(item)
+            if len(head) >= 3:
+                return _dedupe(head), "list"
+    dotted = _dotted_run(text)  # the last resort: a dotted run inside a flattened sentence
+    return (dotted, "list") if dotted else None
+
+
+_QUANTITY = re.compile(rf"\d\s*{UNIT}\b", re.IGNORECASE)
+
+
+def _dotted_run(text: str) -> list[str] | None:
+    """Names run together with middle dots inside a longer sentence, as text flattened from a
+    PDF prints a knob's positions ("… starting from OFF: OFF · Cottons · Eco Cottons · … ·
+    Spin/Drain Programme Default temp."): the first and last names are cut to the length most
+    of the names have."""
+    parts = re.split(r"\s*[·•]\s*", text)
+    if len(parts) < 5 or ":" not in parts[0]:
+        return None  # a list a colon introduces, not a legend or a row of figures
+    middle = [_clean_item(p) for p in parts[1:-1]]
+    names = all(
+        _value_like(p, False) and re.match(r"[A-Za-z]", p) and not _QUANTITY.search(p)
+        for p in middle
+    )
+    if not names:
+        return None
+    counts = [len(p.split()) for p in middle]
+    k = max(set(counts), key=lambda c: (counts.count(c), -c))
+    first = _clean_item(" ".join(parts[0].split(":")[-1].split()[-k:]))
+    last = _clean_item(" ".join(parts[-1].split()[:k]))
+    items = [i for i in [first, *middle, last] if i]
+    return _dedupe(items)
+
+
+_CAPS_ITEM = r"[A-Z][A-Z0-9+-]*(?: [A-Z0-9+-]+){0,2}"
+_CAPS_RUN = re.compile(
+    rf"(?<![\w/])({_CAPS_ITEM}(?:\s*(?:,|/|·|\s[–—]\s)\s*{_CAPS_ITEM})*\s*(?:,\s*)?"
+    rf"(?:or|and|,|/|[–—])\s*{_CAPS_ITEM})(?![\w/])"
+)
+_QTY = r"\d+(?:[.,]\d+)?\s*(?:[a-zA-Z%°]{1,4}\b|%|°[CF])?"
+_QTY_RUN = re.compile(rf"(?<![\w.])({_QTY}(?:\s*,\s*{_QTY})+\s*,?\s*(?:or|and)\s+{_QTY})")
+
+
+def quantity_run(text: str) -> list[str] | None:
+    """Three or more amounts in a row in a key's own sentence ("750 g, 1000 g or 1250 g")."""
+    m = _QTY_RUN.search(text)
+    if not m:
+        return None
+    items = [i.strip() for i in re.split(r"\s*,\s*(?:or\s+|and\s+)?|\s+(?:or|and)\s+", m.group(1))]
+    items = [i for i in items if i]
+    return _dedupe(items) if len(items) >= 3 else None
+
+
+def caps_run(text: str, exclude: set[str]) -> list[str] | None:
+    """Three or more names in capitals written in a row in a key's own sentence ("COLOUR –
+    crust colour, LIGHT, MEDIUM or DARK"), the key's own names excluded."""
+    for m in _CAPS_RUN.finditer(text):
+        items = [i.strip() for i in re.split(r"\s*(?:,|/|·|[–—])\s*|\s+(?:or|and)\s+", m.group(1))]
+        items = [i for i in items if i and i.upper() not in exclude]
+        if len(items) >= 3 and all(len(i) <= 16 for i in items):
+            return _dedupe(items)
+    return None
+
+
+def bare_list(text: str) -> list[str] | None:
+    """A line that is nothing but a list ("OFF · 1 · 2 · 3 · CONT", "WARM   BAKE   TOAST"), as
+    printed round a knob or under a key after a sentence ending in a colon."""
+    items = [
+        _clean_item(p)
+        for p in re.split(r"\s*[·•|,]\s*|\s*/\s*|\s{2,}|\s+or\s+|\s*[→>]\s*", text.strip())
+    ]
+    items = [i for i in items if i]
+    if len(items) < 3 or len(items) > 16:
+        return None
+    if all(len(i) <= 20 and len(i.split()) <= 3 and not i.endswith(":") for i in items):
+        return _dedupe(items)
+    return None
+
+
+def cell_list(text: str) -> list[str] | None:
+    """A table cell that is nothing but a list of values ("22, 26, 30 … 58 L", "Low, Medium
+    and High", "400 / 800 / 1200 rpm"): three to sixteen short items, no sentence."""
+    items = [
+        _clean_item(p)
+        for p in re.split(r"\s*[·•,;/]\s*(?:(?:and|or)\s+)?|\s+(?:and|or)\s+", text.strip())
+    ]
+    items = [i for i in items if i]
+    if not 3 <= len(items) <= 16 or len(text) > 160 or re.search(r"[.:!?]\s*$|:\s", text):
+        return None  # a sentence describing the key, not a cell of values
+    if all(len(i) <= 20 and len(i.split()) <= 2 for i in items):
+        return _dedupe(items)
+    return None
+
+
+def anchored_lists(text: str, word: str) -> list[list[str]]:
+    """Lists tied to a setting's word: "loaf weight (500 / 750 / 1000)", "a light, medium or
+    dark crust"."""
+    out: list[list[str]] = []
+    if word.lower() not in text.lower():
+        return out
+    w = re.escape(word)
+    for m in re.finditer(rf"\b{w}\w*(?:\s+\w+){{0,2}}\s*\(([^()]{{3,80}})\)", text, re.I):
+        if _ASIDE_PAREN_RE.match(m.group(1)):
+            continue  # "choose the menu (and texture, if needed)": an aside, not the values
+        items = [_clean_item(i) for i in re.split(r"\s*/\s*|,\s*|\s+or\s+", m.group(1))]
+        if len(items) >= 2 and all(i and len(i) <= 16 and len(i.split()) <= 2 for i in items):
+            out.append(items)
+    pattern = (
+        r"\b(?:choose|select|set|pick)\s+(?:an?\s+|the\s+)?"
+        rf"((?:[\w-]+,\s*)+[\w-]+\s+or\s+[\w-]+)\s+{w}"
+    )
+    for m in re.finditer(pattern, text, re.I):
+        items = [_clean_item(i) for i in re.split(r",\s*|\s+or\s+", m.group(1))]
+        if len(items) >= 2:
+            out.append(items)
+    found = named_list(text, word)
+    if found:
+        out.append(found)
+    return out
+
+
+def named_list(text: str, word: str) -> list[str] | None:
+    """A sentence that is the setting's list of names: "The menu names printed on the lid: WHITE
+    · BROWN · PORRIDGE". Unlike a passing "(for the menus (WHITE, BROWN))", the whole sentence
+    is about that setting, so it says nothing about the key next to it."""
+    w = re.escape(word)
+    named = re.search(rf"\b{w}\w*\s+{_NAMES_NOUN}\b[^:.;]{{0,60}}:\s*(.+)$", text, re.I)
+    return bare_list(named.group(1)) if named else None
+
+
+_ASIDE_PAREN_RE = re.compile(r"\s*(?:and|or|also|plus|e\.g\.|i\.e\.|see|if)\b", re.I)
+"""A parenthesis that adds a step, an example or a reference, not the setting's values."""
+_NAMES_NOUN = r"(?:names|settings|options|choices|positions)"
+
+
+_RUN_CUE = re.compile(  # a lookahead: every cue is tried
+    r"(?=\b(?:printed|marked|markings?|labell?ed|reads?|positions?|settings?|scale|steps?|values?"
+    r"|levels?|(?:lamps?|leds?|indicators?|lights?)\s+(?:show|read|mark))\b[^:.;]{0,30}?:?\s*(.*))",
+    re.IGNORECASE,
+)
+
+
+def find_number_run(text: str) -> list[str] | None:
+    """Numbers printed in a row after a cue ("marked 20 30 40 60 90"), in their order; a leading
+    OFF reads as 0, another leading word (a named end position) is skipped."""
+    for m in _RUN_CUE.finditer(text):
+        # a mark's gloss is no break in the row: "0 (no spin)  400  600", "COLD (cold)  20  30"
+        row = re.sub(r"(?<=\S)\s*\([^()]{1,20}\)(?=\s)", " ", m.group(1))
+        tokens = [t.strip(".*:") for t in re.findall(r"[^\s,;]+", row)][:40]
+        for start in range(min(8, len(tokens))):
+            run: list[str] = []
+            rest = tokens[start:]
+            if rest and re.fullmatch(r"[A-Z][A-Z-]{1,9}", rest[0]):
+                if rest[0].lower() == "off":
+                    run.append("0")
+                elif rest[0].lower() in ("cold", "cool"):  # a wash knob's first mark: a value
+                    run.append(rest[0].lower())
+                rest = rest[1:]
+            for token in rest:
+                if re.fullmatch(r"\d+(?:[.,]\d+)?", token):
+                    run.append(token)
+                else:
+                    break
+            if len(run) >= 3:
+                return run
+    return None
+
+
+def _dedupe(items: list[str]) -> list[str]:
+    seen: list[str] = []
+    for item in items:
+        if item.lower() not in (s.lower() for s in seen):
+            seen.append(item)
+    return seen
