@@ -1,17 +1,29 @@
 """What the manual says about a control: values, ranges, steps, toggles, each with the unit
-it came from (the builder asks once per control and keeps the answer)."""
+it came from (the builder asks once per control and keeps the answer). Second looks at a list
+or table are in evidence_checks.py; a setting's range found anywhere, in evidence_anywhere.py.
+"""
 
 from __future__ import annotations
 
 import itertools
-import math
 import re
 
+from apbot.read.evidence_anywhere import AnywhereReader
+from apbot.read.evidence_checks import (
+    _BETWEEN_RE,
+    _amount_column,
+    _every_minute_top,
+    _names_of_pieces,
+    _part_of,
+    _where_it_applies,
+    _with_every,
+    _with_midpoints,
+    _without_only,
+)
 from apbot.read.evidence_lists import ListReader
 from apbot.read.labels import words
 from apbot.read.shapes import (
     _KEYPAD_WORDS,
-    _TIMER_WORDS,
     CHOICE_WORDS,
     LAMP_LIST_RE,
     Evidence,
@@ -22,19 +34,16 @@ from apbot.read.shapes import (
     _keyish,
     _keypad,
     _numeric_items,
-    _quantity_unit,
     _quantity_units,
     _row_step,
     _rows_span,
     _without,
     _without_advice,
 )
-from apbot.read.text import Unit
 from apbot.read.value_lists import anchored_lists, bare_list, named_list
 from apbot.read.values import (
     EACH_PRESS_RE,
     ON_OFF_RE,
-    UNIT,
     Range,
     find_bounds,
     find_initial,
@@ -42,12 +51,10 @@ from apbot.read.values import (
     find_step,
     find_stepped_pieces,
     find_two_steps,
-    number,
-    unit_name,
 )
 
 
-class EvidenceReader(ListReader):
+class EvidenceReader(ListReader, AnywhereReader):
     """Evidence about controls: values, ranges, steps and toggles, with where each was read."""
 
     _evidence: dict[tuple[str, ...], Evidence]
@@ -309,214 +316,3 @@ class EvidenceReader(ListReader):
             ev.values = best if _numeric_items(best) else [v.lower() for v in best]
             self._initial_from_values(ev, tokens)
         return ev
-
-    def _called_timer(self, label: str) -> bool:
-        """The key's legend row or a heading naming it calls it a timer ("| PRESET | Timer:
-        hours until the bread is ready |", "## Ready-in timer (PRESET)"): its amount is a time."""
-        if not label or label.upper() != label:
-            return False
-        named = re.compile(rf"\b{re.escape(label)}\b")
-        for unit in self.manual.units:
-            if named.search(unit.heading) and set(words(unit.heading)) & {"timer", "delay"}:
-                return True
-            legend = len(unit.cells) >= 2 and unit.cells[0].strip(" *`") == label
-            if legend and set(words(" ".join(unit.cells[1:]))[:3]) & {"timer", "delay"}:
-                return True
-        return False
-
-    def _range_anywhere(self, name: str, label: str) -> tuple[Range, int] | None:
-        """The first range in a sentence or table row naming the setting anywhere (a
-        specifications table: "| Set temperature range | 40–100 °C |", a programme table's
-        time column), its unit fitting the setting; advice ("suggested") is not a limit."""
-        ws = {w for w in words(name.replace("_", " ")) + words(label) if len(w) >= 4}
-        timed = not _quantity_unit(name) and self._called_timer(label)
-        if not ws or not (_quantity_unit(name) or timed):
-            return None
-        fit = [name, "timer"] if timed else [name]
-        if label and label.upper() == label and ws & (_TIMER_WORDS | {"time"}):
-            # what the key's own sentences call its time ("TIMER  Push to set the Delay
-            # Start timer"): a specification may name only that ("Delay start: up to 15 h")
-            ws |= {
-                w
-                for u in self.manual.units
-                if re.search(rf"\b{re.escape(label)}\b", u.text)
-                for w in words(u.text)
-                if w in _TIMER_WORDS
-            }
-        if "time" in ws and not any("timer" in words(lab.text) for lab in self.labels.values()):
-            ws.add("timer")  # no key is a timer: "Timer 0:01–12:00" in the specifications is this
-        advice = {"suggested", "recommended", "typical", "advised", "usual", "ideal"}
-        limits = re.compile(r"\brange\b|\badjustable\b|\bcan be set\b|\bsettable\b|\bbetween\b")
-        best: tuple[int, Range, int] | None = None
-
-        def consider(score: int, text: str, i: int) -> None:
-            nonlocal best
-            for r in find_ranges(text):
-                if r.unit and _fits(r.unit, fit) and r.high > r.low:
-                    if best is None or score > best[0]:
-                        best = (score, r, i)
-                    return
-
-        for i, unit in enumerate(self.manual.units):
-            uw = words(unit.text)
-            if unit.cells and unit.header and len(unit.header) == len(unit.cells):
-                # a table row: the setting is named by the column's header
-                for head, cell in zip(unit.header, unit.cells, strict=True):
-                    hw = words(head)
-                    if set(hw) & advice or not any(h[:5] == w[:5] for h in hw for w in ws):
-                        continue
-                    consider(1 + 2 * bool(limits.search(head)), cell, i)
-                first = words(unit.cells[0])
-                if any(u[:5] == w[:5] for u in first for w in ws) and not set(first) & advice:
-                    consider(1 + 2 * bool(limits.search(unit.cells[0])), unit.text, i)
-                continue
-            if not any(u[:5] == w[:5] for u in uw for w in ws) or set(uw) & advice:
-                continue
-            if "clock" in uw and "clock" not in ws:
-                continue  # "any time from 1:00 to 12:59": the clock's day, not a duration
-            consider(2 * bool(limits.search(unit.text)), unit.text, i)
-        return (best[1], best[2]) if best else None
-
-
-_AMOUNT_CELL_RE = re.compile(rf"\s*\**\s*(\d+(?:[.,]\d+)?)\s*({UNIT})\s*\**\s*$", re.I)
-
-
-def _amount_column(units: list[Unit], i: int) -> Range | None:
-    """A table a sentence ending in ":" introduces whose first column is amounts in one unit
-    other than time ("| 100 % | Water |", "| 70 % | Reheating |"): settings given as examples,
-    so the range runs from the least to the most, in the largest step that meets them all."""
-    text = units[i].text.rstrip()
-    caption = len(text.split()) <= 6 and not text.endswith((".", "!", "?"))  # "Power table"
-    if not text.endswith(":") and text != units[i].heading and not caption:
-        return None  # (a sentence ending in ":", a heading or a caption over the table)
-    k = i + 1
-    if k < len(units) and units[k].cells and not units[k].header:
-        k += 1  # the header row
-    amounts: list[float] = []
-    unit = None
-    while k < len(units) and units[k].cells and units[k].header:
-        m = _AMOUNT_CELL_RE.fullmatch(units[k].cells[0])
-        if not m:
-            return None
-        this = unit_name(m.group(2))
-        if unit not in (None, this) or this in ("", "s", "min", "h"):
-            return None
-        unit = this
-        amounts.append(float(m.group(1).replace(",", ".")))
-        k += 1
-    if len(amounts) < 3 or unit is None:
-        return None
-    step = 0.0
-    for a in amounts:
-        step = math.gcd(round(step * 10), round(a * 10)) / 10
-    if step <= 0:
-        return None
-    return Range(min(amounts), max(amounts), unit, step)
-
-
-_APPLIES_BEFORE_RE = re.compile(  # "(", "for", "with the menus", "for these programmes only:"
-    r"(?:\(|\b(?:for|with|in|during|on|under)\b(?:\s+(?:the|all|these|those|following))*"
-    r"(?:\s+[a-z]+)?(?:\s+only)?\s*:?)\s*$",
-    re.I,
-)
-
-
-def _where_it_applies(items: list[str], text: str) -> bool:
-    """A list the word "only" closes or leads, after "for"/"with"/"(": the programmes where a
-    setting applies ("(STEW, JAM only)", "only for WHITE and BROWN"), not the setting's own
-    values ("Selects SOFT, REGULAR or FIRM only")."""
-    tail = re.sub(r"\W*\bonly\W*$", "", items[-1], flags=re.I)
-    closed = tail != items[-1] or bool(re.search(rf"{re.escape(tail)}\W{{0,3}}only\b", text, re.I))
-    first = re.search(rf"(?<!\w){re.escape(items[0].strip())}(?!\w)", text, re.I)
-    if first is None:
-        return closed  # (where the list stands is unknown: as the words say)
-    before = text[max(0, first.start() - 60) : first.start()]
-    led = bool(re.search(r"\bonly\b[^.;]{0,40}$", before))
-    return (closed or led) and bool(_APPLIES_BEFORE_RE.search(before))
-
-
-def _names_of_pieces(items: list[str], units: list[Unit], at: int | None) -> bool:
-    """The list is the first cells of the table rows the range's pieces were read from."""
-    if at is None or not units[at].cells:
-        return False
-    rows = units[at : at + len(items)]
-    heads = [u.cells[0].strip(" *").lower() for u in rows if u.cells]
-    return heads == [v.strip(" *").lower() for v in items]
-
-
-def _part_of(items: list[str], column: list[str]) -> bool:
-    """A few names a sentence gives in passing ("OFF sits between Spin/Drain and Cottons"),
-    each a name or a slash-part of a name in the longer first column of the control's own
-    chart: the chart lists them all."""
-    names = {c.strip(" *").lower() for c in column}
-    parts = names | {p.strip() for c in names for p in c.split("/")}
-    return len(column) > len(items) and all(v.strip(" *").lower() in parts for v in items)
-
-
-def _without_only(items: list[str]) -> list[str]:
-    """The list with a closing "only" taken off its last item ("FIRM only" -> "FIRM")."""
-    last = re.sub(r"\W*\bonly\W*$", "", items[-1], flags=re.I)
-    return [*items[:-1], last] if last else items[:-1]
-
-
-# "the knob clicks between the markings", "a detent halfway between two printed numbers"
-_BETWEEN_RE = re.compile(
-    r"\b(?:clicks?|detents?|stops?|notch(?:es)?|settings?|set)\b[^.;]{0,40}\b(?:between|halfway)\b"
-    r"[^.;]{0,30}\b(?:markings?|marks|numbers|figures)\b",
-    re.I,
-)
-
-
-def _with_midpoints(items: list[str]) -> list[str]:
-    """Printed marks with a setting halfway between each two (200 250 … → 200 225 250 …)."""
-    parsed = [re.match(r"\s*(\d+(?:[.,]\d+)?)\s*(.*)", v) for v in items]
-    if not all(parsed):
-        return items
-    nums = [float(m.group(1).replace(",", ".")) for m in parsed if m]
-    if any(b <= a for a, b in itertools.pairwise(nums)):
-        return items
-    unit = next((m.group(2) for m in parsed if m and m.group(2)), "")
-    out: list[float] = []
-    for a, b in itertools.pairwise(nums):
-        out += [a, (a + b) / 2]
-    out.append(nums[-1])
-    return [f"{v:g}" + (f" {unit}" if unit else "") for v in out]
-
-
-# a scale marked minute by minute up to some bound: "every minute up to 10 min", "1-minute
-# steps below 10 minutes", "each minute is marked for the first ten minutes"
-_EVERY_MINUTE_RE = re.compile(
-    r"\b(?:every|each|single)\s+minute\b|\bminute by minute\b|\bsingle minutes\b"
-    r"|\b(?:1|one)[\s-]?min(?:ute)?\s+(?:steps?|increments?|ticks?|marks?|clicks?|divisions?)\b",
-    re.I,
-)
-_MINUTE_BOUND_RE = re.compile(
-    r"\b(?:first|up to|below|under|until|till|to)\s+(?:the\s+)?(?:first\s+)?"
-    r"(\d{1,2}|[a-z]+)\s*(?:minutes|mins?)\b",
-    re.I,
-)
-_SENTENCE_END_RE = re.compile(r"(?<=[.;!?])\s+")
-
-
-def _every_minute_top(text: str) -> float | None:
-    """The bound of a run of one-minute settings a sentence describes, else None."""
-    for sentence in _SENTENCE_END_RE.split(text):
-        fine = _EVERY_MINUTE_RE.search(sentence)
-        if fine is None:
-            continue
-        for bound in _MINUTE_BOUND_RE.finditer(sentence):
-            if bound.start() >= fine.end() or bound.end() <= fine.start():
-                top = number(bound.group(1))
-                if top is not None:
-                    return top
-    return None
-
-
-def _with_every(items: list[str], top: int) -> list[str]:
-    """Marks in minutes with every whole minute up to ``top`` added."""
-    parsed = [re.match(r"\s*(\d+)\s*(.*)", v) for v in items]
-    if not all(parsed):
-        return items
-    nums = sorted({int(m.group(1)) for m in parsed if m} | set(range(top + 1)))
-    unit = next((m.group(2) for m in parsed if m and m.group(2)), "")
-    return [f"{v}" + (f" {unit}" if unit else "") for v in nums]
