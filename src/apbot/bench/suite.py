@@ -52,6 +52,7 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "sous_vide_cooker": 3,
     "ice_cream_maker": 2,
     "water_heater": 5,
+    "steam_iron": 3,
 }
 
 
