@@ -1,6 +1,10 @@
 """Why end-to-end tasks failed: the first cause of each failure in a bench run on read beliefs.
 
     python benchmarks/e2e_failures.py RUN_DIR [--method apbot] [--categories a,b] [--examples 6]
+                                      [--suite bundled|DIR]
+
+The suite is the run's own (its run.json names it; ``--suite`` overrides). On the bundled suite
+the nine development categories are judged by default, on another suite every category.
 
 MEASURING ONLY — this script uses privileged inputs: the ground-truth model and the task's stored
 goal, aligned with the read belief through the reader's evaluation alignment
@@ -230,17 +234,33 @@ def _records(run: Path, method: str, categories: set[str] | None) -> list[dict[s
     return out
 
 
-def main() -> None:
+def run_suite(run: Path) -> str:
+    """The suite a bench run used, from its run.json (``bundled`` when the run does not say)."""
+    manifest = (run if run.is_dir() else run.parent) / "run.json"
+    try:
+        suite = json.loads(manifest.read_text(encoding="utf-8")).get("suite")
+    except (OSError, json.JSONDecodeError):
+        return "bundled"
+    return suite if isinstance(suite, str) and suite else "bundled"
+
+
+def main(argv: list[str] | None = None) -> None:
     parser = argparse.ArgumentParser(
         description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
     )
     parser.add_argument("run", type=Path, help="a bench run directory (or its results.jsonl)")
     parser.add_argument("--method", default="apbot")
     parser.add_argument(
-        "--categories", default="nine", help="comma list, 'nine' (default), 'six' or 'all'"
+        "--categories",
+        default=None,
+        help="comma list, 'nine', 'six' or 'all' (default: nine on the bundled suite, else all)",
     )
+    parser.add_argument("--suite", default=None, help="'bundled' or a suite directory")
     parser.add_argument("--examples", type=int, default=6, help="examples printed per cause")
-    args = parser.parse_args()
+    args = parser.parse_args(argv)
+    suite = args.suite or run_suite(args.run)
+    if args.categories is None:
+        args.categories = "nine" if suite == "bundled" else "all"
     if args.categories == "all":
         chosen: set[str] | None = None
     elif args.categories == "nine":
@@ -256,7 +276,7 @@ def main() -> None:
         raise SystemExit(
             f"e2e_failures: no {args.method} records in {args.run} for those categories"
         )
-    print(render(tally(records), args.examples))
+    print(render(tally(records, suite), args.examples))
 
 
 if __name__ == "__main__":

@@ -91,3 +91,14 @@ def test_fill_optimal_names_a_task_whose_goal_value_is_invalid_and_writes_nothin
     with pytest.raises(FillError, match=r"bottle_washer_1 t03: .*no such mode"):
         fill_optimal(appliance)
     assert tasks_file.read_text(encoding="utf-8") == before
+
+
+def test_a_development_category_is_checked_with_its_goal_size() -> None:
+    from dataclasses import replace
+
+    appliance = _appliance()  # bottle washer tasks have two goal settings, as ice cream makers
+    assert _errors(replace(appliance, category="ice_cream_maker")) == []
+    errors = _errors(replace(appliance, category="sous_vide_cooker"))
+    assert errors and all("sous_vide_cooker tasks have 3" in e for e in errors)
+    unknown = _errors(replace(appliance, category="hovercraft"))
+    assert len(unknown) == 1 and "unknown category 'hovercraft'" in unknown[0]

@@ -2,9 +2,16 @@
 
 from __future__ import annotations
 
+import json
+from pathlib import Path
+
+import pytest
+
 from apbot.model.schema import ApplianceModel
 from benchmarks.e2e_failures import classify, first_cause
 from tests.helpers import model_from
+
+NEWCATS = Path(__file__).resolve().parents[2] / "benchmarks" / "data" / "newcats"
 
 
 def _model(modes: str, with_fan: bool = True) -> ApplianceModel:
@@ -68,3 +75,22 @@ def test_parser_faults_dropped_refused_and_extra() -> None:
     assert [c.kind for c in refused] == ["parser refused"]
     extra = classify(belief, TRUTH, {"mode": "dry"}, {"mode": "dry", "fan": "low"})
     assert [(c.kind, c.setting) for c in extra] == [("extra setting", "fan")]
+
+
+def test_the_run_names_its_suite_and_another_suite_judges_every_category(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    from benchmarks.e2e_failures import main, run_suite
+
+    assert run_suite(tmp_path) == "bundled"  # no run.json: the bundled suite
+    (tmp_path / "run.json").write_text(json.dumps({"suite": str(NEWCATS)}), encoding="utf-8")
+    assert run_suite(tmp_path) == str(NEWCATS)
+    assert run_suite(tmp_path / "results.jsonl") == str(NEWCATS)
+    record = {"method": "apbot", "category": "steam_iron", "appliance": "steam_iron_1"}
+    (tmp_path / "results.jsonl").write_text(
+        json.dumps({**record, "task": "t01", "success": True}) + "\n", encoding="utf-8"
+    )
+    main([str(tmp_path)])  # a new category counts: the nine are the bundled suite's default
+    assert "failed 0 of 1 records" in capsys.readouterr().out
+    with pytest.raises(SystemExit, match="no apbot records"):
+        main([str(tmp_path), "--suite", "bundled"])

@@ -13,7 +13,13 @@ from pathlib import Path
 
 from apbot.bench.goal_checks import CHECKS, goal_findings
 from apbot.bench.oracle import oracle_plan, run_task_with_plan
-from apbot.bench.suite import GOAL_VARIABLES, SuiteAppliance, Task, TaskFile
+from apbot.bench.suite import (
+    DEVELOPMENT_GOAL_VARIABLES,
+    GOAL_VARIABLES,
+    SuiteAppliance,
+    Task,
+    TaskFile,
+)
 from apbot.model.goal import Goal, GoalError, parse_goal
 from apbot.model.load import dump_yaml, read_yaml
 from apbot.model.problems import Problem
@@ -76,11 +82,12 @@ def _manual(appliance: SuiteAppliance) -> Iterator[Problem]:
 
 
 def _tasks(appliance: SuiteAppliance, plan_tasks: bool) -> Iterator[Problem]:
-    wanted = GOAL_VARIABLES.get(appliance.category)
+    known = {**GOAL_VARIABLES, **DEVELOPMENT_GOAL_VARIABLES}
+    wanted = known.get(appliance.category)
     if wanted is None:
         yield Problem(
             ("model", "appliance", "category"),
-            f"unknown category {appliance.category!r}; use one of {sorted(GOAL_VARIABLES)}",
+            f"unknown category {appliance.category!r}; use one of {sorted(known)}",
             "suite",
         )
     if appliance.id != appliance.directory.name:
