@@ -29,12 +29,15 @@ ADVICE_WORDS = {"suggested", "recommended", "typical", "advised", "usual"}  # no
 
 def _tables(units: list[Unit]) -> list[tuple[tuple[str, ...], list[Unit]]]:
     out: list[tuple[tuple[str, ...], list[Unit]]] = []
+    previous: Unit | None = None
     for unit in units:
         if unit.cells and unit.header:
-            if out and out[-1][0] == unit.header and out[-1][1][-1].line >= unit.line - 1:
-                out[-1][1].append(unit)
+            last = out[-1][1][-1] if out and out[-1][0] == unit.header else None
+            if last is not None and (last.line >= unit.line - 1 or last is previous):
+                out[-1][1].append(unit)  # the next row, also after rows wrapped onto two lines
             else:
                 out.append((unit.header, [unit]))
+        previous = unit
     return out
 
 
@@ -103,6 +106,8 @@ def apply_cases(b: Builder) -> None:
         for column in range(1, len(header)):
             if set(words(header[column])) & (DEFAULT_WORDS | ADVICE_WORDS):
                 continue
+            if _STEP_HEAD_RE.search(header[column]):
+                continue  # "Time step": each row's step (read by _row_steps), not its values
             head = [w for w in words(header[column]) if w not in GENERIC][:1]
             named = sorted(  # "Wash (min)": the variable named wash before any other "min" one
                 b.variables.items(), key=lambda item: not set(head) & set(words(item[0]))
@@ -317,7 +322,13 @@ def _case(spec: dict[str, Any], cell: str) -> Any:
         span = _value_span(spec.get("values", []), cell)
         if span:
             return {"values": span}  # "cold – 60 °C" over the knob's marks
-        items = [_norm(i) for i in re.split(r"\s*(?:,|/|·|\bor\b)\s*", cell)]
+        known = spec.get("values", [])
+        spaced = _norm(re.sub(r"\(.*?\)", "", cell)).split()
+        if len(spaced) >= 2 and all(w in known for w in spaced):
+            return {"values": spaced}  # "SOFT MEDIUM FIRM": the values, printed with spaces
+        items = [
+            _norm(re.sub(r"\(.*?\)", "", i)) for i in re.split(r"\s*(?:,|/|·|\bor\b)\s*", cell)
+        ]
         items = [i for i in items if i and i not in ("—", "-", "–", "n/a") and len(i) <= 24]
         return {"values": list(dict.fromkeys(items))} if items else None
     ranges = spec.get("ranges") or []
