@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from apbot.model.validate import check_model
 from apbot.read import read_manual
+from apbot.read.value_lists import find_list
 
 # a yoghurt maker whose chart's rows wrap onto two lines, with a per-row step column and the
 # styles printed with spaces between them
@@ -40,3 +41,79 @@ def test_a_chart_with_wrapped_rows_is_one_table_whose_step_column_gives_no_value
     assert style.cases["skyr"].values == ["tangy", "sour"]
     time = model.variables["time"]
     assert time.depends_on is None  # the step column is no list of times
+
+
+# a bread proofer with a two-digit display: programmes shown as codes, a chart naming them,
+# chart rows wrapped onto two lines in the PDF text
+PROOFER = """
+PROOFMATE 200   USER GUIDE
+
+1  SAFETY
+Do not place the proofer near a sink. Unplug it before cleaning.
+
+2  KEYS
+
+  Key        Use
+  ---------------------------------------------------------------
+  ON/OFF     Switches the proofer on or off.
+  PROG       Each press goes on to the next programme, A1 → A2 → … → A5 → A1. The
+             display shows the programme number.
+  START      Starts proofing; press again to stop.
+
+3  PROGRAMME TABLE
+
+  No.    Programme         Temperature    Suits
+  ---------------------------------------------------------------
+  A1     WHITE DOUGH       28 °C          sandwich loaves, rolls,
+                                          buns
+  A2     RYE               30 °C          dark breads
+  A3     SOURDOUGH         26 °C          levain, starters and
+                                          long rises
+  A4     BRIOCHE           24 °C          butter doughs
+  A5     MELT              40 °C          chocolate, butter
+
+The proofer starts in A1 each time it is switched on.
+"""
+
+PROOFER_ACTIONS = ["press_on_off", "press_prog", "press_start"]
+
+
+def test_an_ellipsis_between_codes_stands_for_the_codes_it_skips() -> None:
+    found = find_list("Each press shows the next one: C1 → C2 → … → C5 → C1. Hold it to exit.")
+    assert found == (["C1", "C2", "C3", "C4", "C5"], "arrows")
+
+
+def test_an_arrow_cycle_ends_at_its_sentence_and_at_a_bracket() -> None:
+    found = find_list("Sets the grind: FINE → MEDIUM → COARSE → FINE … (see the chart).")
+    assert found == (["FINE", "MEDIUM", "COARSE"], "arrows")
+    found = find_list("Moves on (in turn: MILD → HOT → EXTRA HOT → back to MILD).")
+    assert found == (["MILD", "HOT", "EXTRA HOT"], "arrows")
+
+
+def test_codes_a_chart_names_become_the_names_and_the_display_shows_the_codes() -> None:
+    model = read_manual(PROOFER, PROOFER_ACTIONS).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    prog = model.variables["prog"]
+    assert prog.values == ["white dough", "rye", "sourdough", "brioche", "melt"]
+    assert prog.show == {
+        "white dough": "A1",
+        "rye": "A2",
+        "sourdough": "A3",
+        "brioche": "A4",
+        "melt": "A5",
+    }
+
+
+# a yoghurt maker whose last mode is called "WARM ONLY"
+YOGHURT = """
+## Keys
+
+- **MODE** — Changes the mode. Each press moves on (order: PLAIN → GREEK → WARM ONLY → back
+  to PLAIN).
+- **START** — Starts or stops the cycle.
+"""
+
+
+def test_only_in_capitals_inside_a_name_in_capitals_is_part_of_the_name() -> None:
+    model = read_manual(YOGHURT, ["press_mode", "press_start"]).model
+    assert model.variables["mode"].values == ["plain", "greek", "warm only"]

@@ -122,9 +122,10 @@ class EvidenceReader(ListReader, AnywhereReader):
                     # ("Mode lamps: NORMAL CONT. …" are the mode key's values)
                 if _numeric_items(items) and len(items) < 3:
                     continue
-                if _where_it_applies(items, text):
+                named = _named_only(items[-1], text)  # "… → COOL ONLY →": a name
+                if not named and _where_it_applies(items, text):
                     continue  # "(PORRIDGE, STEAM, SOUP only)": where it applies, not its values
-                items = _without_only(items)  # "Selects SOFT or FIRM only": the values
+                items = items if named else _without_only(items)  # "SOFT or FIRM only": values
                 if not items:
                     continue
                 if prio > best_prio:
@@ -267,9 +268,9 @@ class EvidenceReader(ListReader, AnywhereReader):
                 if m:  # "FAN HI/LO": the panel prints the values next to the name
                     best, best_prio, ev.values_at = m.group(1).split("/"), 2.5, i
                     break
-        if best and re.search(r"\bonly\W*$", best[-1], re.I):
+        shown = units[ev.values_at].text if best and ev.values_at is not None else ""
+        if best and re.search(r"\bonly\W*$", best[-1], re.I) and not _named_only(best[-1], shown):
             # "(STEW, JAM, BROTH only)": where the setting applies, not its values
-            shown = units[ev.values_at].text if ev.values_at is not None else ""
             best = None if _where_it_applies(best, shown) else _without_only(best) or None
         choice = bool({w for t in tokens for w in words(t.replace("_", " "))} & CHOICE_WORDS)
         if best is None or (_numeric_items(best) and (len(best) < 3 or choice)):
@@ -316,3 +317,12 @@ class EvidenceReader(ListReader, AnywhereReader):
             ev.values = best if _numeric_items(best) else [v.lower() for v in best]
             self._initial_from_values(ev, tokens)
         return ev
+
+
+def _named_only(item: str, text: str) -> bool:
+    """ "ONLY" printed in capitals as part of a name in capitals ("… → COOL ONLY → …") in a
+    sentence in lower case: the value's own name, not a word saying where a list applies."""
+    m = re.search(rf"(?<!\w){re.escape(item.strip())}(?!\w)", text, re.I)
+    if not m or text.upper() == text:
+        return False
+    return bool(re.search(r"\bONLY\b", m.group(0))) and m.group(0).upper() == m.group(0)

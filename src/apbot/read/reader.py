@@ -18,6 +18,7 @@ from apbot.model.validate import check_model
 from apbot.read.actions import ActionInfo, parse_actions
 from apbot.read.build import Builder
 from apbot.read.cases import apply_cases, apply_resets
+from apbot.read.codes import name_codes
 from apbot.read.labels import find_labels
 from apbot.read.report import Note, Report
 from apbot.read.roles import assign
@@ -48,6 +49,7 @@ def read_manual(
     builder = Builder(manual, infos, labels)
     assign(builder)
     apply_cases(builder)
+    name_codes(builder)
     apply_resets(builder)
     data = _assemble(builder, appliance_id, category)
     notes = builder.notes

@@ -86,6 +86,26 @@ def find_progression(text: str) -> list[str] | None:
     return [f"{first + k * gap:g}" + (f" {unit}" if unit else "") for k in range(count + 1)]
 
 
+_CODED = re.compile(r"([A-Za-z]{1,4}\s?-?)(\d{1,2})")
+
+
+def _filled_codes(parts: list[str]) -> list[str]:
+    """An ellipsis between two codes of one kind ("P1 → P2 → … → P6"): the codes it skips."""
+    out: list[str] = []
+    for i, part in enumerate(parts):
+        if part not in ("…", "...") or not out or i + 1 >= len(parts):
+            out.append(part)
+            continue
+        before, after = _CODED.fullmatch(out[-1]), _CODED.fullmatch(parts[i + 1])
+        if before and after and before.group(1) == after.group(1):
+            lo, hi = int(before.group(2)), int(after.group(2))
+            if 1 < hi - lo <= 40:
+                out += [f"{before.group(1)}{n}" for n in range(lo + 1, hi)]
+                continue
+        out.append(part)
+    return out
+
+
 def find_list(text: str) -> tuple[list[str], str] | None:
     """A list of values in one sentence, and how it was written ("arrows", "list")."""
     numbers = _NUMBER_LIST.search(text)
@@ -97,8 +117,12 @@ def find_list(text: str) -> tuple[list[str], str] | None:
             return [f"{i} {unit}" if known else i for i in items], "list"
     parts = [_clean_item(p) for p in _ARROW.split(text)]
     if len(parts) >= 3:  # "… → HIGH, and from HIGH the next press …": the list ends at the comma
-        last = re.split(r"[,;]\s|\s[—–]\s|(?:^|\s+)(?:and\s+)?(?:then|back|again)\b", parts[-1])[0]
+        last = re.split(
+            r"[,;]\s|\s[—–]\s|(?:^|\s+)(?:and\s+)?(?:then|back|again)\b|\.\s|\s*[()]|\s*(?:…|\.\.\.)",
+            parts[-1],
+        )[0]  # "… → P1. The display …", "FIRM → SOFT … (not every …)": nor at a sentence's end
         parts[-1] = _clean_item(last)
+        parts = _filled_codes(parts)
     amount = re.search(rf"(?<![\w.])({NUM}\s*{UNIT})\s*$", parts[0], re.I)
     if len(parts) >= 3 or (len(parts) == 2 and all(_value_like(p, True) for p in parts)):
         head = parts[0].split(":")[-1].split()  # "in this order: AUTO → ...", "Clockwise: Cotton"

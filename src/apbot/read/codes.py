@@ -1,0 +1,69 @@
+"""Programmes the key steps through as codes, named by the manual's chart.
+
+Panels with a small display show a programme as a code ("P1 → P2 → … → P6"), and the manual's
+programme chart pairs each code with its name ("| P3 | JERKY / MEAT | 70 °C |"). A user asks
+for the name ("dry some jerky"), never the code, so a setting read as codes takes the names
+from the chart as its values and keeps the codes as what the display shows. A name given
+two ways ("JERKY / MEAT") is called by the first: the goal parser matches whole names.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+from apbot.read.build import Builder
+from apbot.read.cases import _norm, _tables
+from apbot.read.text import Unit
+
+_CODE = re.compile(r"[a-z]{1,3}\s?-?\d{1,2}")
+_NAME = re.compile(r"[a-z][a-z '&/+-]{1,30}")
+
+
+def name_codes(b: Builder) -> None:
+    """Give a setting whose values are all codes the names a chart's column pairs them with."""
+    for var, spec in b.variables.items():
+        values = [str(v) for v in spec.get("values") or []]
+        if spec.get("type") != "discrete" or len(values) < 3:
+            continue
+        if not all(_CODE.fullmatch(v) for v in values) or spec.get("show"):
+            continue
+        found = _chart_names(b, values)
+        if found:
+            names, row = found
+            _rename(spec, names)
+            for child in b.variables.values():  # per-programme settings, keyed by the names
+                if child.get("depends_on") == var and "cases" in child:
+                    child["cases"] = {names.get(str(k), k): c for k, c in child["cases"].items()}
+            at = b.manual.units.index(row)
+            b.note(
+                f"variables.{var}.values",
+                "codes named by the chart: " + ", ".join(f"{c} {n}" for c, n in names.items()),
+                at,
+            )
+
+
+def _chart_names(b: Builder, codes: list[str]) -> tuple[dict[str, str], Unit] | None:
+    """The names beside the codes in the first table with a column of every one of them."""
+    for _header, rows in _tables(b.manual.units):
+        width = min(len(r.cells) for r in rows)
+        for column in range(width - 1):
+            cells = [_norm(r.cells[column]) for r in rows]
+            if not set(codes) <= set(cells):
+                continue
+            names: dict[str, str] = {}
+            for row, cell in zip(rows, cells, strict=True):
+                name = _norm(row.cells[column + 1]).split(" / ")[0]  # "JERKY / MEAT": jerky
+                if cell in codes and _NAME.fullmatch(name) and not _CODE.fullmatch(name):
+                    names.setdefault(cell, name)
+            if len(names) == len(codes) and len(set(names.values())) == len(codes):
+                return names, rows[0]
+    return None
+
+
+def _rename(spec: dict[str, Any], names: dict[str, str]) -> None:
+    """Values become names; the display shows each one's code as the manual prints it."""
+    spec["values"] = [names[str(v)] for v in spec["values"]]
+    if spec.get("initial") is not None:
+        spec["initial"] = names.get(str(spec["initial"]), spec["initial"])
+    spec["show"] = {n: c.upper() for c, n in names.items()}
