@@ -117,3 +117,65 @@ YOGHURT = """
 def test_only_in_capitals_inside_a_name_in_capitals_is_part_of_the_name() -> None:
     model = read_manual(YOGHURT, ["press_mode", "press_start"]).model
     assert model.variables["mode"].values == ["plain", "greek", "warm only"]
+
+
+# a popcorn maker's legend set with wide spaces; the mode row's cycle trails off ("…"), and the
+# heat knob's row follows with the kind of control after its name
+POPPER = """
+POPCORN STATION PS-3
+
+CONTROLS
+
+  Control       What it does
+  -----------   ----------------------------------------------------------------
+  MODE          Picks what to make: SALTED → SWEET → KETTLE → SALTED …
+  HEAT knob     Sets the kettle temperature. It clicks every 10 °C from 150 °C
+                to 200 °C and stops at both ends.
+  START         Starts or stops popping.
+"""
+
+
+def test_a_legend_row_led_by_a_name_and_its_kind_of_control_is_a_row_of_its_own() -> None:
+    actions = ["press_mode", "turn_heat_cw", "turn_heat_ccw", "press_start"]
+    model = read_manual(POPPER, actions).model
+    assert model.variables["mode"].values == ["salted", "sweet", "kettle"]
+    heat = model.variables["heat"]
+    assert heat.type == "numeric" and heat.ranges[0][:2] == (150, 200)
+
+
+# a step sentence about the time right after the temperature key's line
+STEPS = """
+## Panel
+- **TEMP** — then ▲ / ▼ set the temperature, 40 °C to 90 °C.
+- Times are kept in 30-minute steps.
+- Each press of ▲ / ▼ changes the temperature by 10 °C.
+- **TIME** — then ▲ / ▼ set the time, 1 to 10 hours.
+"""
+
+
+def test_a_step_in_another_unit_is_another_settings_step() -> None:
+    actions = ["press_temp", "press_time", "press_up", "press_down"]
+    model = read_manual(STEPS, actions).model
+    assert model.variables["temp"].ranges == [(40, 90, 10)]
+
+
+# a legend numbered with circled digits: another key's row lends this key nothing
+CIRCLED = """
+KEY FUNCTIONS
+
+ ①  ON/OFF        Switches the unit on or off. Settings are kept while it is
+                  plugged in.
+ ②  LEVEL         Opens level entry. Type the level with the number keys.
+ ③  SPEED         Changes the speed: SLOW → FAST → TURBO → SLOW ...
+ ④  0 – 9         Number keys for the level.
+
+The level goes from 1 to 20.
+"""
+
+
+def test_a_circled_number_does_not_hide_whose_row_it_is() -> None:
+    actions = ["press_power", "press_level", "press_speed", *[f"press_{d}" for d in range(10)]]
+    model = read_manual(CIRCLED, actions).model
+    assert model.variables["speed"].values == ["slow", "fast", "turbo"]
+    level = model.variables["level"]
+    assert level.type == "numeric"

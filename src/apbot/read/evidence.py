@@ -103,7 +103,7 @@ class EvidenceReader(ListReader, AnywhereReader):
                 continue  # a sentence about another key says nothing about this one
             if i not in mentions and any(named_list(text, w) for w in other_words):
                 continue  # "The menu names printed on the panel: …" near KEEP WARM: MENU's
-            if unit.cells and i not in mentions and _cell_key(unit.cells[0]) in other_keys:
+            if unit.cells and i not in mentions and _cell_key(_lead(unit.cells)) in other_keys:
                 continue  # a key table's row about another key ("| SIZE | S, M or L |")
             if unit.cells and unit.header and unit.cells[0].upper() in own:
                 head = unit.header[0].lower()
@@ -156,7 +156,7 @@ class EvidenceReader(ListReader, AnywhereReader):
                 if abs(ranges[0].low - last.high) < 1e-9 and ranges[0].high > last.high:
                     ev.ranges.append(ranges[0])  # the next piece of a piecewise range
             if ev.step is None:
-                step = find_step(text)
+                step = _fitting_step(text, tokens)
                 if step:
                     ev.step, ev.step_at = step, i
             if (
@@ -326,3 +326,22 @@ def _named_only(item: str, text: str) -> bool:
     if not m or text.upper() == text:
         return False
     return bool(re.search(r"\bONLY\b", m.group(0))) and m.group(0).upper() == m.group(0)
+
+
+def _fitting_step(text: str, tokens: list[str]) -> tuple[float, str] | None:
+    """The step of this setting's unit ("Temperature steps: 5 °C … Time: 0:30 to 24:00 in
+    30-minute steps"): a step in another unit is another setting's, even in the same line."""
+    for piece in [text, *re.split(r"(?<=[.;])\s+", text)]:
+        step = find_step(piece)
+        if step and _fits(step[1], tokens):
+            return step
+    return None
+
+
+def _lead(cells: tuple[str, ...]) -> str:
+    """A row's first cell that names something: a legend's circled or plain number ("④ |
+    PUMP | Changes the speed: LO → MED → HI") only counts the rows."""
+    for cell in cells[:2]:
+        if not re.fullmatch(r"\s*(?:[\u2460-\u2473\u2776-\u277f]|\(?\d{1,2}[.)]?)\s*", cell):
+            return cell
+    return cells[0]

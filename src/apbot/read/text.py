@@ -509,4 +509,7 @@ def parse_manual(text: str) -> Manual:
 _FIELD_RE = re.compile(  # "Water level: …", "Cup-size lamps: …": a field of its own
     r"^\s{0,2}[A-Z][a-z]+(?:-[a-z]+)?(?:[ -][A-Za-z]+){0,3}(?: \([^)]{1,30}\))?:\s+\S"
 )
-_TERM_RE = re.compile(r"^\s{0,2}[A-Z0-9][A-Z0-9+/&.'-]*(?: [A-Z0-9+/&.'-]+){0,3}\s{2,}\S")
+_TERM_RE = re.compile(  # "TEMP knob     Sets …", "SET 60°C     Set temperature": a term
+    r"^\s{0,2}[A-Z0-9][A-Z0-9+/&.'°:-]*(?: [A-Z0-9+/&.'°:-]+){0,3}"
+    r"(?: (?:knob|dial|button|key|switch|lever|selector|wheel|ring|lamp|indicator)s?)?\s{2,}\S"
+)
