@@ -179,3 +179,44 @@ def test_a_circled_number_does_not_hide_whose_row_it_is() -> None:
     assert model.variables["speed"].values == ["slow", "fast", "turbo"]
     level = model.variables["level"]
     assert level.type == "numeric"
+
+
+# a kiln controller: a keypad, a spec sheet with dot leaders, a cook timer under TIMER
+KILN = """
+SPECIFICATIONS
+
+  Model ........................ K-1            K-2
+  Firing temperature ........... 600 - 1200 °C  600 - 1200 °C
+  Hold timer ................... 0:00 - 48:00   0:00 - 48:00
+  Weight ....................... 38 kg          52 kg
+
+KEYS
+
+ 1  TEMP     Opens the temperature, set in whole degrees Celsius. Type it with the
+             number keys.
+ 2  TIMER    Opens the hold timer. Type hours and minutes with the number keys.
+ 3  0 – 9    Number keys.
+ 4  START    Starts firing.
+
+The cook timer counts the cooking time at the top temperature.
+"""
+
+KILN_ACTIONS = ["press_temp", "press_timer", "press_start", *[f"press_{d}" for d in range(10)]]
+
+
+def test_whole_degrees_is_a_step_of_one_degree() -> None:
+    model = read_manual(KILN, KILN_ACTIONS).model
+    temp = model.variables["temp"]
+    assert temp.ranges[0][2] == 1
+
+
+def test_dot_leaders_are_a_gap_between_a_spec_sheets_columns() -> None:
+    model = read_manual(KILN, KILN_ACTIONS).model
+    assert model.variables["temp"].ranges[0][:2] == (600, 1200)
+    assert model.variables["timer"].ranges[0][:2] == ("00:00:00", "48:00:00")
+
+
+def test_a_cook_timer_keyed_in_after_timer_is_the_only_time_the_digits_set() -> None:
+    model = read_manual(KILN, KILN_ACTIONS).model
+    times = [n for n, v in model.variables.items() if v.type == "time"]
+    assert times == ["timer"]

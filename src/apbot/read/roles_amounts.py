@@ -26,6 +26,7 @@ ADD_RE = re.compile(r"^(add|plus|extra)_?(\d+)_?(s|sec|secs|seconds|m|min|mins|m
 
 
 _COOK_TIME_RE = re.compile(r"\bcook(?:ing)? time\b", re.I)
+_COOK_TIMER_RE = re.compile(r"\bcook(?:ing)? timer\b", re.I)
 
 
 def assign_amounts(
@@ -165,8 +166,10 @@ def assign_amounts(
                 ],
             )
     cooking = any(_COOK_TIME_RE.search(u.text) for u in b.manual.units)
+    cook_timer = any(_COOK_TIMER_RE.search(u.text) for u in b.manual.units)
     named_cook = keyed_cook or any(  # a cooking time already keyed in after a TIME key is the one
-        spec.get("type") == "time" and ("cook" in v or (v == "time" and "entry" in spec))
+        (spec.get("type") == "time" and ("cook" in v or (v == "time" and "entry" in spec)))
+        or (v == "timer" and "entry" in spec and cook_timer)  # "TIMER … Cook timer": the same
         for v, spec in b.variables.items()
     )  # (AUTO COOK's list of menus is no cooking time)
     direct: str | None = None

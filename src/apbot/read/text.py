@@ -388,6 +388,7 @@ def parse_manual(text: str) -> Manual:
         )
     text = text.replace("\r\n", "\n").replace("\r", "\n").replace("\f", "\n\f\n")
     text = _clean_chars(re.sub(r" ?❄ ?", " ❄ ", text))  # one space each side, not two
+    text = _LEADER_RE.sub("    ", text)  # "Timer ........ 0:00 - 99:59": a gap between columns
     original = text.split("\n")
     raw_lines, line_numbers = _reading_order(original)
     units: list[Unit] = []
@@ -506,6 +507,7 @@ def parse_manual(text: str) -> Manual:
     return Manual(units, original)
 
 
+_LEADER_RE = re.compile(r"(?<=\S)[ \t]*(?:\.[ \t]?){4,}[ \t]*(?=\S)")
 _FIELD_RE = re.compile(  # "Water level: …", "Cup-size lamps: …": a field of its own
     r"^\s{0,2}[A-Z][a-z]+(?:-[a-z]+)?(?:[ -][A-Za-z]+){0,3}(?: \([^)]{1,30}\))?:\s+\S"
 )

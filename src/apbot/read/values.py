@@ -292,6 +292,9 @@ PER_RE = re.compile(
 )
 
 
+_WHOLE_RE = re.compile(
+    r"\bin (?:whole|full) (degrees?|minutes?|hours?|seconds?)(?:\s+(celsius|fahrenheit))?\b", re.I
+)
 _BARE_STEPS_RE = re.compile(rf"(?<![\w-])({NUM})-({UNIT})\s+(?:steps|increments)\b", re.I)
 
 
@@ -305,6 +308,11 @@ def find_step(text: str) -> tuple[float, str] | None:
         bare = _BARE_STEPS_RE.search(text)  # "| up to 15 h ahead, ten-minute steps |"
         if bare and number(bare.group(1)):
             return number(bare.group(1)) or 1.0, unit_name(bare.group(2))
+        whole = _WHOLE_RE.search(text)  # "entered in whole degrees Celsius": one at a time
+        if whole:
+            scale = (whole.group(2) or "").lower()
+            unit = {"fahrenheit": "°F", "celsius": "°C"}.get(scale) or unit_name(whole.group(1))
+            return 1.0, unit
         return None
     groups = m.groups()
     if m.group(0).lower().endswith(("units", "stages")) and not groups[1]:
