@@ -220,3 +220,39 @@ def test_a_cook_timer_keyed_in_after_timer_is_the_only_time_the_digits_set() -> 
     model = read_manual(KILN, KILN_ACTIONS).model
     times = [n for n, v in model.variables.items() if v.type == "time"]
     assert times == ["timer"]
+
+
+# a proving drawer: TEMP and HOURS pick what + and - change; the legend ends with a key the
+# larger model has (LAMP), switched on and off
+DRAWER = """
+CONTROL PANEL
+
+  Key        Name            Function
+  ----------------------------------------------------------------------
+  TEMP       Temperature     Touch once, then use - and + to set the temperature.
+  HOURS      Proving time    Touch once, then use - and + to set the hours.
+  -   +      Minus / plus    Change the value chosen with TEMP or HOURS.
+  LAMP       Lamp            Large model only. Switches the lamp on and off.
+
+SETTING THE TEMPERATURE
+  1. Touch TEMP. The display shows the temperature, e.g. 30°C.
+  2. Touch + to raise or – to lower the temperature by 5 °C with each touch.
+  3. The temperature goes from 25 °C to 45 °C.
+
+SETTING THE HOURS
+  1. Touch HOURS. The hours are counted in whole hours.
+"""
+
+DRAWER_ACTIONS = ["press_temp", "press_hours", "press_minus", "press_plus"]
+
+
+def test_each_touch_of_the_pair_makes_the_key_open_the_setting_for_the_pair() -> None:
+    model = read_manual(DRAWER, DRAWER_ACTIONS).model
+    steps = next(f for f in model.features.values() if f[0].actions == ["press_temp"])
+    assert len(steps) == 2 and set(steps[1].actions) == {"press_plus", "press_minus"}
+
+
+def test_a_key_tables_row_for_a_key_not_on_the_panel_lends_no_toggle() -> None:
+    model = read_manual(DRAWER, DRAWER_ACTIONS).model
+    steps = next(f for f in model.features.values() if f[0].actions == ["press_hours"])
+    assert len(steps) == 2 and set(steps[1].actions) == {"press_plus", "press_minus"}

@@ -105,6 +105,13 @@ class EvidenceReader(ListReader, AnywhereReader):
                 continue  # "The menu names printed on the panel: …" near KEEP WARM: MENU's
             if unit.cells and i not in mentions and _cell_key(_lead(unit.cells)) in other_keys:
                 continue  # a key table's row about another key ("| SIZE | S, M or L |")
+            if (
+                unit.cells
+                and unit.header
+                and i not in mentions
+                and _KEY_HEAD.search(unit.header[0])
+            ):
+                continue  # the next row of a key table: another key's, even one not on this panel
             if unit.cells and unit.header and unit.cells[0].upper() in own:
                 head = unit.header[0].lower()
                 if not re.search(r"key|button|control|pad|dial|knob|symbol|name", head):
@@ -169,6 +176,8 @@ class EvidenceReader(ListReader, AnywhereReader):
             pressed = EACH_PRESS_RE.search(text)
             if pressed and "click" in pressed.group(0).lower() and self._turned(tokens):
                 pressed = None  # "every click changes the time": a dial's clicks, not a key's
+            if pressed and _presses_another(text, other_labels, own):
+                pressed = None  # "Touch + to raise … with each touch": the pair's presses
             if ev.each_press_at is None and not quiet and pressed:
                 ev.each_press_at = i
             if ev.initial is None:
@@ -345,3 +354,21 @@ def _lead(cells: tuple[str, ...]) -> str:
         if not re.fullmatch(r"\s*(?:[\u2460-\u2473\u2776-\u277f]|\(?\d{1,2}[.)]?)\s*", cell):
             return cell
     return cells[0]
+
+
+_KEY_HEAD = re.compile(r"^\W*(?:keys?|buttons?|controls?|elements?|symbols?)\W*$", re.I)
+_PRESS_VERB = r"\b(?:press|touch|tap|push)(?:es|ing)?\s+(?:and\s+hold\s+)?(?:the\s+)?"
+
+
+def _presses_another(text: str, others: list[str], own: set[str]) -> bool:
+    """The sentence tells to press another key ("Touch + to raise or – to lower the temperature
+    by 5 °C with each touch") and never this one: its "each press" is that key's."""
+
+    def pressed(labels: list[str] | set[str]) -> bool:
+        names = "|".join(re.escape(x) for x in sorted(labels, key=len, reverse=True) if x)
+        if not names:
+            return False
+        return bool(re.search(rf"{_PRESS_VERB}(?:{names})(?!\w)", text, re.I))
+
+    symbols = [*others, *("+", "-", "–", "▲", "▼")]
+    return pressed(symbols) and not pressed(own)
