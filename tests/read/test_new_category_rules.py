@@ -256,3 +256,21 @@ def test_a_key_tables_row_for_a_key_not_on_the_panel_lends_no_toggle() -> None:
     model = read_manual(DRAWER, DRAWER_ACTIONS).model
     steps = next(f for f in model.features.values() if f[0].actions == ["press_hours"])
     assert len(steps) == 2 and set(steps[1].actions) == {"press_plus", "press_minus"}
+
+
+def test_each_press_of_keys_named_together_stays_each_keys_own() -> None:
+    manual = """
+## Programmes
+| Programme | Soak | Rinse | Dry |
+|---|---|---|---|
+| Daily | 0 – 10 | 1 – 3 | 0 – 5 |
+| Heavy | 10 – 30 | 2 – 4 | 5 – 9 |
+
+## Changing the settings
+Press **SOAK**, **RINSE** or **DRY** and watch the display: every press gives the next value
+the programme allows. Press **PROGRAMME** to choose the programme.
+"""
+    actions = ["press_programme", "press_soak", "press_rinse", "press_dry", "press_start"]
+    model = read_manual(manual, actions).model
+    steps = next(f for f in model.features.values() if f[0].actions == ["press_rinse"])
+    assert steps[0].effect == "next" and len(steps) == 1

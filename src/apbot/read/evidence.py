@@ -362,7 +362,7 @@ _PRESS_VERB = r"\b(?:press|touch|tap|push)(?:es|ing)?\s+(?:and\s+hold\s+)?(?:the
 
 def _presses_another(text: str, others: list[str], own: set[str]) -> bool:
     """The sentence tells to press another key ("Touch + to raise or – to lower the temperature
-    by 5 °C with each touch") and never this one: its "each press" is that key's."""
+    by 5 °C with each touch") and never names this one: its "each press" is that key's."""
 
     def pressed(labels: list[str] | set[str]) -> bool:
         names = "|".join(re.escape(x) for x in sorted(labels, key=len, reverse=True) if x)
@@ -371,4 +371,5 @@ def _presses_another(text: str, others: list[str], own: set[str]) -> bool:
         return bool(re.search(rf"{_PRESS_VERB}(?:{names})(?!\w)", text, re.I))
 
     symbols = [*others, *("+", "-", "–", "▲", "▼")]
-    return pressed(symbols) and not pressed(own)
+    named = any(re.search(rf"(?<!\w){re.escape(o)}(?!\w)", text, re.I) for o in own if o)
+    return pressed(symbols) and not named  # ("Press WASH, RINSE or SPIN": RINSE's too)
