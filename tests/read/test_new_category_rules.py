@@ -274,3 +274,19 @@ the programme allows. Press **PROGRAMME** to choose the programme.
     model = read_manual(manual, actions).model
     steps = next(f for f in model.features.values() if f[0].actions == ["press_rinse"])
     assert steps[0].effect == "next" and len(steps) == 1
+
+
+def test_a_wait_action_is_no_key_but_time_passing() -> None:
+    manual = """
+## Keys
+- **MODE** — Each press: EASY → DEEP → EASY.
+- **START** — Starts or stops.
+After 5 seconds without a key press the display goes back to the time.
+"""
+    model = read_manual(manual, ["press_mode", "press_start", "wait_5s", "wait_2_min"]).model
+    assert model.actions["wait_5s"].skill == "wait" and model.actions["wait_5s"].seconds == 5
+    assert model.actions["wait_2_min"].seconds == 120
+    assert not any("wait" in name for name in model.variables)
+    assert not any(
+        a.startswith("wait") for steps in model.features.values() for s in steps for a in s.actions
+    )

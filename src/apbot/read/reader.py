@@ -41,7 +41,9 @@ def read_manual(
 ) -> Reading:
     """Read a manual; raise :class:`ReaderError` only for input that is not a manual at all."""
     manual = parse_manual(text)
-    infos = parse_actions(list(actions))
+    waits = {a: _wait_seconds(a) for a in actions if isinstance(a, str)}
+    waits = {a: w for a, w in waits.items() if w is not None}
+    infos = parse_actions([a for a in actions if a not in waits] or list(actions))
     appliance_id = _ident(appliance_id, "read_appliance")
     category = _ident(category, "appliance")
     tokens = sorted({c for i in infos for c in i.controls if i.digit is None})
@@ -52,9 +54,22 @@ def read_manual(
     name_codes(builder)
     apply_resets(builder)
     data = _assemble(builder, appliance_id, category)
+    data["actions"].update({a: {"skill": "wait", "seconds": w} for a, w in waits.items()})
     notes = builder.notes
     model = _checked(data, infos, notes)
     return Reading(model, Report(notes))
+
+
+_WAIT_RE = re.compile(r"wait(?:_(\d{1,4})_?(s|sec|secs|seconds?|m|min|mins|minutes?)?)?")
+
+
+def _wait_seconds(name: str) -> int | None:
+    """An action of waiting, no key at all ("wait_5s", "wait_2_min"): how long it lasts."""
+    m = _WAIT_RE.fullmatch(name)
+    if not m:
+        return None
+    amount = int(m.group(1) or 1)
+    return amount * 60 if (m.group(2) or "s").startswith("m") else amount
 
 
 def _ident(text: str, default: str) -> str:
@@ -251,6 +266,7 @@ def _fallback(data: dict[str, Any], infos: list[ActionInfo]) -> dict[str, Any]:
     for info in infos:
         if info.skill.startswith("turn"):
             controls[info.controls[0]]["kind"] = "knob"
+    actions.update({a: v for a, v in data["actions"].items() if v.get("skill") == "wait"})
     return {
         "appliance": data["appliance"],
         "controls": list(controls.values()),
