@@ -290,3 +290,27 @@ After 5 seconds without a key press the display goes back to the time.
     assert not any(
         a.startswith("wait") for steps in model.features.values() for s in steps for a in s.actions
     )
+
+
+# a towel rail: PRESET switches the warm-by time on and off, ▲ / ▼ then move that time
+RAIL = """
+KEYS
+
+  POWER       Switches the rail on or off.
+  PRESET      Switches the warm-by time on or off.
+  ▲ ▼         Change the value being set.
+
+WARM-BY TIME
+  1. Press PRESET. The display shows the warm-by time (07:00 the first time).
+  2. Press ▲ or ▼ to change the warm-by time by 15 minutes per press. After 23:45 comes 00:00.
+  3. To switch it off, press PRESET again.
+"""
+
+
+def test_a_key_switching_a_time_on_also_opens_that_time_for_the_pair() -> None:
+    model = read_manual(RAIL, ["press_power", "press_preset", "press_up", "press_down"]).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    steps = next(f for f in model.features.values() if f[0].actions == ["press_preset"])
+    assert steps[0].effect == "toggle" and len(steps) == 2
+    time = model.variables[steps[1].variable]
+    assert time.type == "time" and time.ranges == [("00:00:00", "23:45:00", 900)]

@@ -31,6 +31,7 @@ from apbot.read.roles_hourmin import assign_hour_minute, hour_minute_keys
 from apbot.read.roles_keyed import assign_keyed_amounts
 from apbot.read.roles_lists import dial_values, list_evidence, numeric_list, pair_of_names
 from apbot.read.roles_pads import listed_groups, option_keys, pad_group, selecting_keys, shown_codes
+from apbot.read.roles_switched import switched_time
 from apbot.read.shapes import CHOICE_WORDS, GENERIC_DIALS, Evidence, adjuster_direction
 
 
@@ -122,6 +123,8 @@ def assign(b: Builder) -> None:
         ) or (key.token in options and not ev.values)
         if key.token in options and ev.toggle_at is None:
             ev.toggle_at = options[key.token]
+        if own_toggle and switched_time(b, key, shared_pair):
+            continue  # "TIMER switches the ready-time on or off", then ▲ / ▼ move it
         if own_toggle and not set(words(name)) & NUMERIC_WORDS:
             var = b.add_toggle(name, lab, ev.toggle_at)  # "press KEEP WARM to switch it on or off"
             b.feature(var, [{"actions": [key.name], "variable": var, "effect": "toggle"}])
