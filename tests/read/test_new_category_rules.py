@@ -314,3 +314,31 @@ def test_a_key_switching_a_time_on_also_opens_that_time_for_the_pair() -> None:
     assert steps[0].effect == "toggle" and len(steps) == 2
     time = model.variables[steps[1].variable]
     assert time.type == "time" and time.ranges == [("00:00:00", "23:45:00", 900)]
+
+
+def test_a_start_stop_key_only_ever_held_starts_and_stops_and_is_no_lock() -> None:
+    manual = """
+## Keys
+- **LOCK** — Hold 3 s: the key lock goes on or off. While locked, START/STOP does nothing.
+- **START/STOP** — Press and hold for 2 seconds to start pumping; hold again to stop.
+- **SPEED** — Each press: LOW → HIGH → LOW.
+"""
+    model = read_manual(manual, ["hold_lock", "hold_start", "press_speed"]).model
+    steps = next(f for f in model.features.values() if f[0].actions == ["hold_start"])
+    assert steps[0].effect == "toggle" and steps[0].variable == "running"
+
+
+def test_a_lock_sentence_naming_start_stop_does_not_make_its_hold_the_lock() -> None:
+    manual = """
+## Keys
+- **OK** — Confirms an entry. Hold 3 s: key lock on/off.
+- **START/STOP** — Press and hold for 2 seconds to start; hold again to stop.
+
+## Key lock
+Press and hold OK for 3 seconds. LOCK appears and all keys are disabled, including
+START/STOP, so that a running cycle cannot be stopped by mistake. To release the lock, press
+and hold OK for 3 seconds again.
+"""
+    model = read_manual(manual, ["press_ok", "hold_ok", "hold_start"]).model
+    lock = next(f for f in model.features.values() if f[0].variable == "child_lock")
+    assert lock[0].actions == ["hold_ok"]

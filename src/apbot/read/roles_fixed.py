@@ -89,6 +89,8 @@ def assign_locks(b: Builder, done: set[str]) -> list[str]:
             texts = [b.manual.units[i].text for i in b.context(list(info.controls))]
             is_lock = len(info.controls) > 1 or (
                 not named
+                and not set(words(info.token)) & ({"start"} | STOP_WORDS)  # "hold START/STOP
+                # 2 s to start"; "the lock disables START/STOP" speaks of the lock, not of it
                 and any(
                     re.search(r"\bhold\b", t, re.I) and re.search(r"\block", t, re.I) for t in texts
                 )
@@ -134,6 +136,12 @@ def assign_running(
     starts = [
         i for i in infos if i.name not in done and "start" in words(i.token) and i.skill == "press"
     ]
+    if not starts:  # a START/STOP that is only ever held ("press and hold for 2 s to start")
+        starts = [
+            i
+            for i in infos
+            if i.name not in done and "start" in words(i.token) and i.skill == "hold"
+        ]
     stops = [
         i
         for i in infos
