@@ -342,3 +342,14 @@ and hold OK for 3 seconds again.
     model = read_manual(manual, ["press_ok", "hold_ok", "hold_start"]).model
     lock = next(f for f in model.features.values() if f[0].variable == "child_lock")
     assert lock[0].actions == ["hold_ok"]
+
+
+def test_a_hold_of_start_is_still_the_lock_where_no_other_key_is() -> None:
+    manual = """
+## Keys
+- **START** — Starts the kettle. Hold START for 3 s to lock the keys; hold again to unlock.
+- **TEMP** — Each press: 70 → 80 → 90 → 100 °C.
+"""
+    model = read_manual(manual, ["press_start", "hold_start", "press_temp"]).model
+    lock = next(f for f in model.features.values() if f[0].variable == "child_lock")
+    assert lock[0].actions == ["hold_start"]

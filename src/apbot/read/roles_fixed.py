@@ -89,8 +89,7 @@ def assign_locks(b: Builder, done: set[str]) -> list[str]:
             texts = [b.manual.units[i].text for i in b.context(list(info.controls))]
             is_lock = len(info.controls) > 1 or (
                 not named
-                and not set(words(info.token)) & ({"start"} | STOP_WORDS)  # "hold START/STOP
-                # 2 s to start"; "the lock disables START/STOP" speaks of the lock, not of it
+                and not (_runs(info) and any(_held_lock(b, o) for o in infos if not _runs(o)))
                 and any(
                     re.search(r"\bhold\b", t, re.I) and re.search(r"\block", t, re.I) for t in texts
                 )
@@ -124,6 +123,24 @@ def assign_locks(b: Builder, done: set[str]) -> list[str]:
         )
         b.note("guards.child lock", "only the lock action works while locked")
     return lock_actions
+
+
+def _runs(info: ActionInfo) -> bool:
+    """A hold of a START or STOP key (a lock on many panels, or the start itself)."""
+    return info.skill == "hold" and bool(set(words(info.token)) & ({"start"} | STOP_WORDS))
+
+
+def _held_lock(b: Builder, info: ActionInfo) -> bool:
+    """Another hold whose own legend says it is the lock ("OK — Hold 3 s: key lock on/off"):
+    then "the lock disables START/STOP" near START's hold speaks of that lock, not of START."""
+    if info.skill != "hold" or len(info.controls) != 1 or info.controls[0] not in b.labels:
+        return False
+    own = b.labels[info.controls[0]].mentions
+    return any(
+        re.search(r"\bhold\b", b.manual.units[i].text, re.I)
+        and re.search(r"\block\b", b.manual.units[i].text, re.I)
+        for i in own
+    )
 
 
 def assign_running(
