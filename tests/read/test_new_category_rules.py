@@ -353,3 +353,15 @@ def test_a_hold_of_start_is_still_the_lock_where_no_other_key_is() -> None:
     model = read_manual(manual, ["press_start", "hold_start", "press_temp"]).model
     lock = next(f for f in model.features.values() if f[0].variable == "child_lock")
     assert lock[0].actions == ["hold_start"]
+
+
+def test_an_appliance_delivered_switched_on_starts_on() -> None:
+    manual = """
+## Keys
+- **ON/OFF** — Switches the pump on and off.
+- **MODE** — Each press: AUTO → BOOST → AUTO.
+
+When the pump leaves the factory it is in AUTO and switched on.
+"""
+    model = read_manual(manual, ["press_on_off", "press_mode"]).model
+    assert model.variables["power"].initial == "on"

@@ -17,6 +17,12 @@ from apbot.read.roles_common import (
 from apbot.read.shapes import RUNNING_RE, STOP_WORDS
 from apbot.read.shown import LOCK_CUE, RUNNING_CUE, shown_words
 
+_DELIVERED_ON_RE = re.compile(
+    r"\b(?:leaves? the factory|as delivered|on delivery|out of the box|factory (?:state|settings?))"
+    r"\b[^.]*\b(?:is |are )?(?:switched|turned) on\b(?!\s+(?:when|after|by|with|once))",
+    re.I,
+)
+
 
 def assign_power(b: Builder) -> list[str]:
     """The power key (ON/OFF, or POWER unless the manual uses it for a power level) and its
@@ -42,6 +48,12 @@ def assign_power(b: Builder) -> list[str]:
         holds = [i for i in by_token[power_token] if i.skill == "hold"]
         var = b.add_toggle("power", label_of(b, power_token), first_mention(b, [power_token]))
         b.indicators.remove(var) if var in b.indicators else None
+        delivered = next(
+            (i for i, u in enumerate(b.manual.units) if _DELIVERED_ON_RE.search(u.text)), None
+        )
+        if delivered is not None:  # "leaves the factory: mode COMF, …, heater switched on"
+            b.variables[var]["initial"] = "on"
+            b.note(f"variables.{var}.initial", "it is switched on as delivered", delivered)
         if holds and press:
             b.feature(
                 "power_on", [{"actions": [press[0].name], "variable": var, "effect": {"to": "on"}}]
