@@ -365,3 +365,35 @@ When the pump leaves the factory it is in AUTO and switched on.
 """
     model = read_manual(manual, ["press_on_off", "press_mode"]).model
     assert model.variables["power"].initial == "on"
+
+
+RAIL_DISPLAY = (
+    RAIL
+    + """
+DISPLAY
+
+  WARM 07:00      Warm-by time switched on, warm towels at 07:00
+  WARM --:--      No warm-by time
+"""
+)
+
+
+def test_the_display_legend_shows_the_switched_time_and_its_first_value() -> None:
+    model = read_manual(RAIL_DISPLAY, ["press_power", "press_preset", "press_up", "press_down"])
+    steps = next(f for f in model.model.features.values() if f[0].actions == ["press_preset"])
+    toggle = model.model.variables[steps[0].variable]
+    assert toggle.show == {"off": "WARM --:--", "on": "WARM {" + steps[1].variable + "}"}
+    assert model.model.variables[steps[1].variable].initial == "07:00:00"
+
+
+def test_a_two_key_hold_is_the_lock_and_single_holds_near_lock_are_not() -> None:
+    manual = """
+## Keys
+- **CLOCK** — Hold 3 seconds to set the clock.
+- **▲ ▼** — Change the value. Hold ▲ and ▼ together for 3 seconds: key lock on or off.
+While the lock is on, LOCK is shown.
+"""
+    actions = ["press_clock", "hold_clock", "press_up", "press_down", "hold_up_and_down"]
+    model = read_manual(manual, actions).model
+    lock = next(f for f in model.features.values() if f[0].variable == "child_lock")
+    assert lock[0].actions == ["hold_up_and_down"]

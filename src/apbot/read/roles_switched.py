@@ -83,6 +83,12 @@ def switched_time(b: Builder, key: ActionInfo, pair: dict[str, list[str]] | None
         "label": noun.upper(),
     }
     b.variables[var] = spec
+    _shown(b, toggle, var, noun)
+    first = _FIRST_RE.search(" ".join(units[i].text for i in [*moved, *near]))
+    if first and day:  # "(06:00 the first time)"
+        h, mnt = int(first.group(1)), int(first.group(2))
+        if 3600 * h + 60 * mnt <= high and (3600 * h + 60 * mnt - low) % step == 0:
+            spec["initial"] = format_hms(3600 * h + 60 * mnt)
     up, down = pair["up"], pair["down"]
     effect = {**{a: "next" for a in up}, **{a: "prev" for a in down}}
     b.feature(
@@ -97,3 +103,27 @@ def switched_time(b: Builder, key: ActionInfo, pair: dict[str, list[str]] | None
         f"features.set_{var}", f"{lab} switches it on, then the pair moves it ({what})", moved[0]
     )
     return True
+
+
+_FIRST_RE = re.compile(r"\b(\d{1,2}):(\d\d)\s+(?:the first time|at first|by default)\b", re.I)
+_ROW_RE = re.compile(r"^([A-Z][A-Z-]{1,11})\s+(\d{1,2}:\d\d|--:--)\s{2,}(.+)$")
+
+
+def _shown(b: Builder, toggle: str, var: str, noun: str) -> None:
+    """A display legend's rows "READY 06:30   Ready-time switched on, hot water at 06:30" and
+    "READY --:--   No ready-time": what the display shows with the function on (the word and
+    the time) and off."""
+    on = off = None
+    for unit in b.manual.units:
+        m = _ROW_RE.match(unit.text)
+        if not m or noun.split()[0].lower() not in m.group(3).lower():
+            continue
+        if m.group(2) == "--:--":
+            off = f"{m.group(1)} --:--"
+        elif re.search(r"\bon\b", m.group(3), re.I):
+            on = f"{m.group(1)} {{{var}}}"
+    if on:
+        b.variables[toggle]["show"] = {"off": off or "", "on": on}
+        if toggle in b.indicators:
+            b.indicators.remove(toggle)
+        b.note(f"variables.{toggle}.show", f"the display shows {on} while it is on")
