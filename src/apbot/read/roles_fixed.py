@@ -93,6 +93,9 @@ def assign_locks(b: Builder, done: set[str]) -> list[str]:
     # a panel with a key of its own for the lock: another key's hold near the word "lock"
     # (a key table's next row, "| LOCK | Key lock (touch and hold) |") is not the lock
     named = any("lock" in words(i.token) for i in infos)
+    # a two-key hold is the lock where the panel has one ("hold ▲ and ▼ together for 3 s");
+    # a single key's hold near the word "lock" is then something else (the clock, a jump)
+    named = named or any(i.skill == "hold" and len(i.controls) > 1 for i in infos)
     for info in infos:
         if info.name in done:
             continue
