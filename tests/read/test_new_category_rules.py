@@ -397,3 +397,22 @@ While the lock is on, LOCK is shown.
     model = read_manual(manual, actions).model
     lock = next(f for f in model.features.values() if f[0].variable == "child_lock")
     assert lock[0].actions == ["hold_up_and_down"]
+
+
+def test_holding_a_stepping_key_takes_no_list_of_values() -> None:
+    manual = """
+## Keys
+- **TIMER** — Switches the start time on or off.
+- **▲ ▼** — Change the value being set. Hold ▲ and ▼ together for 3 s: key lock.
+
+## Start time
+1. Press TIMER. The start time shows (06:00 the first time).
+2. Press ▲ or ▼ to change the start time by 30 minutes per press.
+
+Start time positions (30-minute steps):
+  00:00  00:30  01:00  …  22:30  23:00  23:30
+"""
+    actions = ["press_timer", "press_up", "press_down", "hold_up", "hold_down", "hold_up_and_down"]
+    model = read_manual(manual, actions).model
+    for name, var in model.variables.items():
+        assert "23:30" not in [str(v) for v in getattr(var, "values", None) or []], name

@@ -105,6 +105,7 @@ def assign(b: Builder) -> None:
     ]
     entry_keys: list[ActionInfo] = []
     silent: list[ActionInfo] = []
+    paired_tokens = {c for i in infos if i.name in paired for c in i.controls}
     for key in keys:
         ev = evidence[key.name]
         name = var_name(b, key)
@@ -115,6 +116,9 @@ def assign(b: Builder) -> None:
             and (shared_pair or digits or generic_dials)
         ):
             entry_keys.append(key)  # "rear timer (touch and hold)", then + / −
+            continue
+        if key.skill == "hold" and set(key.controls) <= paired_tokens:
+            silent.append(key)  # holding ▲ / ▼ moves faster: no list of its own ("00:00 00:30 …")
             continue
         amount = bool(set(words(name)) & NUMERIC_WORDS)
         own_toggle = (
