@@ -170,7 +170,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
                 info.role, info.on, info.off = "switch", switch[0], switch[1]
             if numeric_values(info.values):
                 info.dimension = _dimension_by_name(info)
-            for dimension in quantity_dimensions(info.values):
+            for dimension in sorted(quantity_dimensions(info.values)):
                 _add_vocab(info, _DIMENSION_WORDS.get(dimension, ""), 0.6)  # "450 W": power
         infos[name] = info
     # features and control labels name the variables they adjust
