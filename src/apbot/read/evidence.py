@@ -273,8 +273,9 @@ class EvidenceReader(ListReader, AnywhereReader):
             best = None if _where_it_applies(best, shown) else _without_only(best) or None
         choice = bool({w for t in tokens for w in words(t.replace("_", " "))} & CHOICE_WORDS)
         if best is None or (_numeric_items(best) and (len(best) < 3 or choice)):
-            # two numbers are a range, not a list; a programme key's list is of names
-            column = self._table_column(tokens)
+            # two numbers are a range, not a list; a programme key's list is of names (but
+            # codes it lists, "MENU 1 … MENU 15", stay codes beside a numbered chart)
+            column = self._table_column(tokens, numbered=best is None or len(best) < 3)
             if column:
                 best, ev.values_at = column, self._table_at
             elif best is not None and len(best) < 3:

@@ -1,0 +1,36 @@
+"""Rules found on the third round of styled manuals (written blind: a bread maker's numbered
+programme chart, a rice cooker's touch-count row), each on a small manual of our own."""
+
+from __future__ import annotations
+
+from apbot.model.schema import DiscreteVariable
+from apbot.read import read_manual
+
+
+def _values(model, name: str) -> list[str]:  # type: ignore[no-untyped-def]
+    var = model.variables[name]
+    assert isinstance(var, DiscreteVariable), var
+    return [str(v).lower() for v in var.values]
+
+
+# a steam oven whose PROG key only points to the chart; the chart numbers its rows and heads
+# its names "Programme", not PROG
+STEAMER = """KEYS
+
+PROG      Steps on to the next cooking programme, in the order of the overview in chapter 4.
+START     Starts the chosen programme.
+
+4  PROGRAMME OVERVIEW
+
+No.   Programme        Suitable for                   Time
+1     VEGETABLES       broccoli, carrots, beans       0:15
+2     FISH             fillets up to 3 cm thick       0:12
+3     REHEAT           plated meals, leftovers        0:10
+4     DEFROST          frozen bread and berries       0:30
+"""
+
+
+def test_a_numbered_chart_lends_a_programme_key_its_programme_column() -> None:
+    model = read_manual(STEAMER, ["press_prog", "press_start"]).model
+    name = next(n for n in model.variables if "prog" in n)
+    assert _values(model, name) == ["vegetables", "fish", "reheat", "defrost"]
