@@ -34,3 +34,24 @@ def test_a_numbered_chart_lends_a_programme_key_its_programme_column() -> None:
     model = read_manual(STEAMER, ["press_prog", "press_start"]).model
     name = next(n for n in model.variables if "prog" in n)
     assert _values(model, name) == ["vegetables", "fish", "reheat", "defrost"]
+
+
+# a toaster-grill whose BROWN key's values are quoted as the display prints them, the key's
+# name in front of each level
+GRILL = """KEYS
+
+BROWN     Browning level. Each press goes one level darker and after the darkest back to
+          the lightest. The display reads BROWN 1, BROWN 2, BROWN 3 or BROWN 4.
+START     Starts toasting.
+"""
+
+
+def test_values_quoted_with_the_keys_own_name_in_front_are_the_levels_alone() -> None:
+    model = read_manual(GRILL, ["press_brown", "press_start"]).model
+    name = next(n for n in model.variables if "brown" in n)
+    var = model.variables[name]
+    values = [str(v).lower() for v in getattr(var, "values", [])] or [
+        str(x) for r in getattr(var, "ranges", []) for x in (r[0], r[1])
+    ]
+    assert "brown 1" not in values and "brown 4" not in values, values
+    assert {"1", "4"} <= {v.removesuffix(".0") for v in values}, values

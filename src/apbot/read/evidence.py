@@ -314,6 +314,20 @@ class EvidenceReader(ListReader, AnywhereReader):
                     best = _with_every(best, int(top))
                     break
         if best is not None:
+            best = _without_own_name(best, own)
             ev.values = best if _numeric_items(best) else [v.lower() for v in best]
             self._initial_from_values(ev, tokens)
         return ev
+
+
+def _without_own_name(items: list[str], own: set[str]) -> list[str]:
+    """Values quoted as the display prints them, the key's own name in front of each ("The
+    display reads COLOR 1, COLOR 2 or COLOR 3." for COLOR): the values are what follows it."""
+    for name in own:
+        if not name or len(items) < 2:
+            continue
+        lead = re.compile(rf"^{re.escape(name)}\s+(\S.*)$", re.IGNORECASE)
+        rest = [lead.match(item.strip()) for item in items]
+        if all(rest):
+            return [m.group(1) for m in rest if m]
+    return items
