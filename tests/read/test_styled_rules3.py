@@ -55,3 +55,33 @@ def test_values_quoted_with_the_keys_own_name_in_front_are_the_levels_alone() ->
     ]
     assert "brown 1" not in values and "brown 4" not in values, values
     assert {"1", "4"} <= {v.removesuffix(".0") for v in values}, values
+
+
+# a dehumidifier whose TIMER steps are drawn as a chart printed sideways: a row counting the
+# presses over a row of what the display then shows, with an ellipsis for the columns between
+DRIER = """TIMER
+
+Each press of TIMER moves the switch-off time on by one step:
+
+     presses    1       2       3      ...     12      13
+     shows      1 h     2 h     3 h    ...     12 h    (off)
+
+START     Starts drying.
+"""
+
+
+def test_a_sideways_chart_is_read_upright_with_its_ellipsis_filled() -> None:
+    from apbot.read.text import parse_manual
+
+    rows = [u.cells for u in parse_manual(DRIER).units if u.header]
+    assert rows[0] == ("1", "1 h") and rows[-1] == ("13", "off"), rows
+    assert ("7", "7 h") in rows and len(rows) == 13, rows
+
+
+def test_a_sideways_touch_chart_gives_the_timer_its_hours() -> None:
+    model = read_manual(DRIER, ["press_timer", "press_start"]).model
+    name = next(n for n in model.variables if "timer" in n)
+    ranges = getattr(model.variables[name], "ranges", [])
+    hours = {(str(r[1]), str(r[2])) for r in ranges}
+    # twelve hours in steps of one hour, as a number of hours or as a clock time
+    assert hours & {("12", "1"), ("12.0", "1.0"), ("12:00:00", "3600")}, ranges
