@@ -85,3 +85,23 @@ def test_a_sideways_touch_chart_gives_the_timer_its_hours() -> None:
     hours = {(str(r[1]), str(r[2])) for r in ranges}
     # twelve hours in steps of one hour, as a number of hours or as a clock time
     assert hours & {("12", "1"), ("12.0", "1.0"), ("12:00:00", "3600")}, ranges
+
+
+# a juicer whose program table lists a key whose name is also a function word (QUICK)
+JUICER = """PROGRAM TABLE
+
+Program        Speed     Time
+HARD FRUIT     high      60 s
+SOFT FRUIT     medium    45 s
+GREENS         low       90 s
+QUICK JUICE    high      20 s
+
+Touch the key of the program, then START.
+"""
+
+
+def test_a_key_in_a_programme_tables_first_column_is_one_of_its_choices() -> None:
+    actions = ["press_hard_fruit", "press_soft_fruit", "press_greens", "press_quick"]
+    model = read_manual(JUICER, [*actions, "press_start"]).model
+    group = next(v for v in model.variables.values() if "greens" in getattr(v, "values", []))
+    assert "quick juice" in [str(x) for x in group.values], group  # type: ignore[union-attr]

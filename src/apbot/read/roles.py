@@ -76,8 +76,11 @@ def assign(b: Builder) -> None:
         keys = [k for k in keys if k not in selecting]
         shown_codes(b, var, selecting)
     pads = [k for k in keys if k.skill == "press" and not set(words(k.token)) & FUNCTION_WORDS]
-    for group in listed_groups(b, pads, tables_only=True):
-        if len(group) >= 3:
+    named = [k for k in keys if k.skill == "press" and k not in pads]
+    for group in listed_groups(b, pads + named, tables_only=True):
+        if sum(k in pads for k in group) >= 3:
+            # a row of a programme table names a key a function word would keep out ("QUICK
+            # COOK" among WHITE RICE, BROWN RICE…): one of the choices all the same
             pad_group(b, group)
             keys = [k for k in keys if k not in group]
     evidence = {k.name: b.evidence(list(k.controls)) for k in keys}
