@@ -105,3 +105,24 @@ def test_a_key_in_a_programme_tables_first_column_is_one_of_its_choices() -> Non
     model = read_manual(JUICER, [*actions, "press_start"]).model
     group = next(v for v in model.variables.values() if "greens" in getattr(v, "values", []))
     assert "quick juice" in [str(x) for x in group.values], group  # type: ignore[union-attr]
+
+
+# a bread maker whose delay steps are drawn as a small chart of arrows, each row a piece with
+# its own step; three rows split by a wide gap are a chart, not two columns of prose
+BAKER = """DELAY
+
+Press DELAY once for each further step:
+
+   0 h → 0.5 h → … → 2 h       30 minutes per press
+   2 h → 3 h → … → 10 h        one hour per press
+   after 10 h                  back to no delay
+
+START     Starts the programme.
+"""
+
+
+def test_a_chart_of_arrow_pieces_gives_the_delay_both_steps() -> None:
+    model = read_manual(BAKER, ["press_delay", "press_start"]).model
+    name = next(n for n in model.variables if "delay" in n)
+    ranges = [tuple(str(x) for x in r) for r in getattr(model.variables[name], "ranges", [])]
+    assert ranges == [("00:00:00", "02:00:00", "1800"), ("02:00:00", "10:00:00", "3600")], ranges

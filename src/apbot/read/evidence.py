@@ -45,12 +45,14 @@ from apbot.read.values import (
     EACH_PRESS_RE,
     ON_OFF_RE,
     Range,
+    find_arrow_pieces,
     find_bounds,
     find_initial,
     find_ranges,
     find_step,
     find_stepped_pieces,
     find_two_steps,
+    seconds,
 )
 
 
@@ -143,6 +145,9 @@ class EvidenceReader(ListReader, AnywhereReader):
             if unit.cells:  # "| 1 – 2 |" then "| 3 – 4 |" … "| 9 – 10 |": groups of one setting
                 ranges = [_rows_span(units, i, r) for r in ranges]
             pieces = find_stepped_pieces(text) if ranges and not ev.ranges else []
+            arrows = find_arrow_pieces(text)  # "1 h → … → 12 h one hour per press 12 h → …"
+            if arrows and _fits("s", tokens) and _covers(arrows, ev.ranges):
+                pieces, ev.ranges = arrows, []
             if pieces and _fits("s", tokens):  # "0:30 – 12:00 30 minutes 12:00 – 24:00 1 hour"
                 ev.ranges, ev.range_at = pieces, i
             elif ranges and not ev.ranges:
@@ -331,3 +336,15 @@ def _without_own_name(items: list[str], own: set[str]) -> list[str]:
         if all(rest):
             return [m.group(1) for m in rest if m]
     return items
+
+
+def _covers(pieces: list[Range], ranges: list[Range]) -> bool:
+    """Whether pieces read later span at least what was read before (none, or one range that
+    lies inside them: "1 – 12 h" beside "1 h → … → 12 h, 12 h → … → 24 h")."""
+    if not ranges:
+        return True
+    if any(r.unit not in ("s", "min", "h") for r in ranges):
+        return False
+    low = min(seconds(r.low, r.unit) for r in ranges)
+    high = max(seconds(r.high, r.unit) for r in ranges)
+    return pieces[0].low <= low and high <= pieces[-1].high and len(pieces) > len(ranges)

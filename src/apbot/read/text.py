@@ -390,6 +390,10 @@ def _legend(parts: list[tuple[int, str, str]]) -> bool:
     columns of prose: the left parts are mostly short terms, each starting afresh, and the left
     column's text does not run on from one line to the next."""
     lefts = [p[1] for p in parts]
+    if sum("→" in left or "►" in left for left in lefts) >= 2 and not any(
+        re.search(r"[a-z]{3,} [a-z]{3,}", left) for left in lefts
+    ):
+        return True  # a chart's rows: amounts and arrows on the left ("1 h → … → 12 h")
     terms = sum(
         len(left.split()) <= 4
         and not re.search(r"[,;-]$|\b(?:the|and|or|to|of|a|an)$", left)
