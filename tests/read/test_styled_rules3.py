@@ -126,3 +126,21 @@ def test_a_chart_of_arrow_pieces_gives_the_delay_both_steps() -> None:
     name = next(n for n in model.variables if "delay" in n)
     ranges = [tuple(str(x) for x in r) for r in getattr(model.variables[name], "ranges", [])]
     assert ranges == [("00:00:00", "02:00:00", "1800"), ("02:00:00", "10:00:00", "3600")], ranges
+
+
+# a fan heater whose legend gives FAN one row per way of touching it: the short press picks
+# the fan's level, the hold switches something else on or off
+HEATER = """KEYS
+
+FAN (short press)     changes between LOW and HIGH (display FAN low / FAN high).
+FAN (hold 2 s)        switches the night glow on or off. A short press leaves it as it is.
+START                 starts the heater.
+"""
+
+
+def test_a_legend_row_for_holding_a_key_lends_its_on_off_to_the_hold_only() -> None:
+    model = read_manual(HEATER, ["press_fan", "hold_fan", "press_start"]).model
+    fan = next((v for v in model.variables.values() if "low" in getattr(v, "values", [])), None)
+    assert fan is not None and set(fan.values) == {"low", "high"}, model.variables  # type: ignore[union-attr]
+    glow = [n for n in model.variables if "glow" in n]
+    assert glow, list(model.variables)
