@@ -144,3 +144,17 @@ def test_a_legend_row_for_holding_a_key_lends_its_on_off_to_the_hold_only() -> N
     assert fan is not None and set(fan.values) == {"low", "high"}, model.variables  # type: ignore[union-attr]
     glow = [n for n in model.variables if "glow" in n]
     assert glow, list(model.variables)
+
+
+# a dryer whose MODE list has a mode that shares its name with the FAN key
+DRYER = """KEYS
+
+MODE                  Each press moves on: NORMAL → DRY → FAN → NORMAL.
+FAN                   Press to change between LOW and HIGH (the FAN lamp shows which).
+"""
+
+
+def test_a_list_naming_the_key_itself_among_three_or_more_is_not_that_keys() -> None:
+    model = read_manual(DRYER, ["press_mode", "press_fan"]).model
+    fan = next(v for n, v in model.variables.items() if n.startswith("fan"))
+    assert set(getattr(fan, "values", [])) == {"low", "high"}, fan

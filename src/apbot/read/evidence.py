@@ -116,6 +116,8 @@ class EvidenceReader(ListReader, AnywhereReader):
             for items, prio in lists:
                 if _keyish(items, others, own):
                     continue  # a list of keys ("DELAY, then + / −"), not of values
+                if len(items) >= 3 and any(v.upper().strip(" .") in own for v in items):
+                    continue  # "NORMAL → CONT. → FAN" near FAN: a list with a mode named FAN
                 lamps = LAMP_LIST_RE.match(text)
                 if lamps and not set(words(lamps.group(0))) & {
                     w for t in tokens for w in words(t.replace("_", " "))
