@@ -158,3 +158,26 @@ def test_a_list_naming_the_key_itself_among_three_or_more_is_not_that_keys() -> 
     model = read_manual(DRYER, ["press_mode", "press_fan"]).model
     fan = next(v for n, v in model.variables.items() if n.startswith("fan"))
     assert set(getattr(fan, "values", [])) == {"low", "high"}, fan
+
+
+# a washer whose delay is set with + and − after the delay key; its two steps are told in one
+# sentence, the first piece as "between 0:00 and 4:00", the step as "half an hour"
+WASHER = """KEYS
+
+Key    Name           What it does
+A      Delay key      Opens the delay start setting (clock symbol)
+B      Plus key  +    Lengthens the delay
+C      Minus key  −   Shortens the delay
+
+DELAY START
+Touch the clock key first; the display shows 0:00. Then touch + or −. Between 0:00 and 4:00 each
+touch changes the delay by half an hour; above 4 hours each touch changes it by two hours,
+up to 12:00.
+"""
+
+
+def test_a_delay_whose_step_changes_above_a_bound_told_with_clock_figures() -> None:
+    model = read_manual(WASHER, ["press_delay", "press_plus", "press_minus"]).model
+    delay = next(v for v in model.variables.values() if getattr(v, "ranges", None))
+    ranges = [tuple(str(x) for x in r) for r in delay.ranges]  # type: ignore[union-attr]
+    assert ranges == [("00:00:00", "04:00:00", "1800"), ("04:00:00", "12:00:00", "7200")], ranges

@@ -258,6 +258,7 @@ _PIECE_BOUND_RES = (  # "up to 1 hour", "until 1 hour", "(from 0) to 1 hour"
 _PIECE_CHANGE_RE = re.compile(  # where the second piece begins
     r"\b(?:after that|after this|beyond (?:that|this|it)|above (?:that|this|it)|over (?:that|this)"
     r"|thereafter|then|from there(?: on)?)\b|(?:,|\band)\s+(?=from\b)"
+    r"|\b(?:above|over|beyond|past)\s+(?=\d+(?:[.,]\d+)?\s*(?:hours?|h|minutes?|min)\b)"
     r"|\band\b(?=\s+(?:in|by)\b)",
     re.IGNORECASE,
 )
@@ -283,6 +284,7 @@ def find_two_steps(texts: list[str], names: tuple[str, ...] = ()) -> tuple[list[
     smaller unit (0–60 min by 10, 60–1440 min by 30), and the index of the text that told
     them. The top, unless the sentence gives it, comes from the rest of that sentence, the next
     one, or a later one that names the setting (one of ``names``)."""
+    texts = [_plain_durations(t) for t in texts]
     for k, text in enumerate(texts):
         events = _piece_events(text)
         for change in _PIECE_CHANGE_RE.finditer(text):
@@ -307,6 +309,30 @@ def find_two_steps(texts: list[str], names: tuple[str, ...] = ()) -> tuple[list[
                 return None
             return [Range(0, middle, unit, first), Range(middle, high, unit, then)], k
     return None
+
+
+def split_range(found: Range, texts: list[str], label: str) -> list[Range]:
+    """A time range named elsewhere whose sentence also tells a step that changes part way
+    ("Between 0:00 and 6:00 each touch changes the delay by half an hour; above 6 hours …
+    by one hour, up to 20:00"): both pieces, when both start from nothing; else []."""
+    if found.low != 0 or not (is_time_unit(found.unit) or found.unit == "hmm"):
+        return []
+    two = find_two_steps(texts, (label.lower(),) if label else ())
+    return two[0] if two and two[0] and two[0][0].low == 0 else []
+
+
+def _plain_durations(text: str) -> str:
+    """Durations of a step sentence in one spelling: "half an hour" is 30 minutes, a whole-hour
+    clock after "and" / "up to" ("between 0:00 and 6:00", "up to 20:00") is so many hours, and
+    "between A and B" bounds the piece at B ("up to B")."""
+    text = re.sub(r"\bhalf an hour\b", "30 minutes", text, flags=re.IGNORECASE)
+    text = re.sub(r"\b(and|to|until)\s+(\d{1,2}):00\b", r"\1 \2 hours", text, flags=re.I)
+    return re.sub(
+        rf"\bbetween\s+(?:\d{{1,2}}:\d{{2}}|{NUM}\s*{UNIT}?)\s+and\s+(?=\d)",
+        "up to ",
+        text,
+        flags=re.IGNORECASE,
+    )
 
 
 def _top_after(
