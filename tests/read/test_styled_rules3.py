@@ -181,3 +181,26 @@ def test_a_delay_whose_step_changes_above_a_bound_told_with_clock_figures() -> N
     delay = next(v for v in model.variables.values() if getattr(v, "ranges", None))
     ranges = [tuple(str(x) for x in r) for r in delay.ranges]  # type: ignore[union-attr]
     assert ranges == [("00:00:00", "04:00:00", "1800"), ("04:00:00", "12:00:00", "7200")], ranges
+
+
+# a dryer whose legend names its keys by letters, and whose marks over two keys are printed
+# after those letters
+LETTERED = """THE PANEL
+
+Key    Name              Description
+A      Heat key          Steps the heat down one mark with each touch
+B      Dryness key       Steps the dryness down one mark with each touch
+C      Start key         Starts drying
+
+The marks over keys A and B read:
+  A:  high   medium   low   cool air (fan symbol)
+  B:  extra dry   cupboard dry   iron dry
+"""
+
+
+def test_marks_printed_after_a_keys_legend_letter_are_its_values() -> None:
+    model = read_manual(LETTERED, ["press_heat", "press_dryness", "press_start"]).model
+    heat = next(v for n, v in model.variables.items() if n.startswith("heat"))
+    dry = next(v for n, v in model.variables.items() if n.startswith("dry"))
+    assert getattr(heat, "values", None) == ["high", "medium", "low", "cool air"], heat
+    assert getattr(dry, "values", None) == ["extra dry", "cupboard dry", "iron dry"], dry

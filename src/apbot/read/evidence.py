@@ -19,6 +19,7 @@ from apbot.read.evidence_checks import (
     _with_every,
     _with_midpoints,
     _without_only,
+    lettered_row,
 )
 from apbot.read.evidence_lists import ListReader
 from apbot.read.labels import words
@@ -239,6 +240,12 @@ class EvidenceReader(ListReader, AnywhereReader):
                     if counted and self.labels[alone[0]].line is not None:
                         best, best_prio, ev.values_at = counted[0][0], 2.6, i
                         break
+        if best_prio < 2.4:  # "B | Temperature key" and "B:  90   60   40   30   COLD"
+            names = {w for t in tokens for w in words(t.replace("_", " "))}
+            names |= {w for t in tokens if t in self.labels for w in words(self.labels[t].text)}
+            lettered = lettered_row(units, names)
+            if lettered:
+                best, best_prio, ev.values_at = lettered[0], 2.4, lettered[1]
         if best_prio < 1.85:  # "Drying-time settings available: 10 · 20 · 30 · 60 min."
             for i, unit in enumerate(units):
                 led = None if _aside(units, i) else self._led_list(unit, tokens)
