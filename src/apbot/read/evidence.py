@@ -241,9 +241,9 @@ class EvidenceReader(ListReader, AnywhereReader):
                         best, best_prio, ev.values_at = counted[0][0], 2.6, i
                         break
         if best_prio < 2.4:  # "B | Temperature key" and "B:  90   60   40   30   COLD"
-            names = {w for t in tokens for w in words(t.replace("_", " "))}
-            names |= {w for t in tokens if t in self.labels for w in words(self.labels[t].text)}
-            lettered = lettered_row(units, names)
+            key_words = {w for t in tokens for w in words(t.replace("_", " "))}
+            key_words |= {w for t in tokens if t in self.labels for w in words(self.labels[t].text)}
+            lettered = lettered_row(units, key_words)
             if lettered:
                 best, best_prio, ev.values_at = lettered[0], 2.4, lettered[1]
         if best_prio < 1.85:  # "Drying-time settings available: 10 · 20 · 30 · 60 min."
