@@ -204,3 +204,12 @@ def test_marks_printed_after_a_keys_legend_letter_are_its_values() -> None:
     dry = next(v for n, v in model.variables.items() if n.startswith("dry"))
     assert getattr(heat, "values", None) == ["high", "medium", "low", "cool air"], heat
     assert getattr(dry, "values", None) == ["extra dry", "cupboard dry", "iron dry"], dry
+
+
+def test_an_arrow_cycle_ends_at_an_ellipsis() -> None:
+    from apbot.read.value_lists import find_list
+
+    found = find_list(
+        "Each touch: 0.5 kg → 1 kg → 1.5 kg → 0.5 kg … Then the display reads WEIGHT."
+    )
+    assert found == (["0.5 kg", "1 kg", "1.5 kg"], "arrows"), found
