@@ -97,7 +97,10 @@ def find_list(text: str) -> tuple[list[str], str] | None:
             return [f"{i} {unit}" if known else i for i in items], "list"
     parts = [_clean_item(p) for p in _ARROW.split(text)]
     if len(parts) >= 3:  # "… → HIGH, and from HIGH the next press …": the list ends at the comma
-        last = re.split(r"[,;]\s|\s[—–]\s|(?:^|\s+)(?:and\s+)?(?:then|back|again)\b", parts[-1])[0]
+        last = re.split(  # (an ellipsis: the cycle goes on, "→ 1.5 lb ... The display …")
+            r"[,;]\s|\s[—–]\s|(?:^|\s+)(?:and\s+)?(?:then|back|again)\b|\s*(?:\.\.\.|…)",
+            parts[-1],
+        )[0]
         parts[-1] = _clean_item(last)
     amount = re.search(rf"(?<![\w.])({NUM}\s*{UNIT})\s*$", parts[0], re.I)
     if len(parts) >= 3 or (len(parts) == 2 and all(_value_like(p, True) for p in parts)):
@@ -123,6 +126,8 @@ def find_list(text: str) -> tuple[list[str], str] | None:
             return _dedupe(items), "arrows"
     for m in _CUE.finditer(text):
         segment = re.split(r"[.;]\s|\s[—–]\s|\bwhile\b|\bwhen\b|\bto (?!\d)", m.group(1))[0]
+        # "between STANDARD and QUIET (lamp; display FAN quiet …)": the aside ends the list
+        segment = re.split(r"\s\((?=[^)]*\b(?:display|lamp|shows?|see)\b)", segment)[0]
         segment = re.sub(r"\s+only\W*$", "", segment, flags=re.I)  # "SOFT or FIRM only."
         items = [
             _clean_item(p)
