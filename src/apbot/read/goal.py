@@ -29,7 +29,7 @@ from __future__ import annotations
 from apbot.model.domain import ValueProblem, normalise
 from apbot.model.schema import ApplianceModel, DiscreteVariable
 from apbot.model.values import closest_matches, preview
-from apbot.read.goal_assign import assign_mentions, distinct
+from apbot.read.goal_assign import assign_mentions, distinct, in_weeks
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
 from apbot.read.goal_scales import superlatives
@@ -87,7 +87,7 @@ def parse_instruction(
         claimed.update(range(match.start, match.end))
     restated_codes(view, text, goal, claimed)
     pronoun_ones(text, claimed)
-    mentions = distinct(find_mentions(text.tokens, skip=claimed))
+    mentions = distinct(in_weeks(text, find_mentions(text.tokens, skip=claimed)))
     counting = assign_mentions(view, text, mentions, goal, claimed, where, outside)
     superlatives(view, text, goal, claimed, where)
     zero_settings(view, text, goal, claimed, where)

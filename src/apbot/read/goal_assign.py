@@ -3,6 +3,7 @@ best; a quantity no setting of its kind takes is refused (or kept as said, for a
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import Any
 
 from apbot.model.schema import NumericVariable, TimeVariable
@@ -14,6 +15,31 @@ from apbot.read.goal_values import unit_text
 from apbot.read.goal_view import Goal, Model, VarInfo, domain_values, own_stems
 from apbot.read.goal_vocab import concept, stem
 from apbot.read.numbers import Mention
+
+_WEEKS = {"week": 7, "weeks": 7, "wk": 7, "wks": 7, "fortnight": 14, "fortnights": 14}
+_NOT_COUNTED = frozenset({"month", "months", "year", "years", "yr", "yrs"})
+
+
+def in_weeks(text: Text, mentions: list[Mention]) -> list[Mention]:
+    """ "two weeks", "a fortnight" are durations of 14 days (not a bare 2); a number of months
+    or years is no setting's value (a "two-year-old", "twice a year")."""
+    out: list[Mention] = []
+    covered = {k for m in mentions for k in range(m.start, m.end)}
+    for mention in mentions:
+        unit = text.word(mention.end + (text.word(mention.end) == "-"))
+        if mention.kind == "number" and unit in _NOT_COUNTED:
+            continue
+        if mention.kind == "number" and unit in _WEEKS:
+            days = mention.value * _WEEKS[unit]
+            end = mention.end + 1 + (text.word(mention.end) == "-")
+            mention = replace(mention, kind="duration", value=days * 86400, end=end)
+            mention = replace(mention, dimension="time", unit="")
+        out.append(mention)
+    for k, token in enumerate(text.tokens):  # "a week", "one fortnight": no number of its own
+        if token.text in _WEEKS and k - 1 not in covered and text.word(k - 1) in ("a", "one"):
+            days = 86400.0 * _WEEKS[token.text]
+            out.append(Mention("duration", days, k - 1, k + 1, "time", words=True))
+    return sorted(out, key=lambda m: m.start)
 
 
 def distinct(mentions: list[Mention]) -> list[Mention]:

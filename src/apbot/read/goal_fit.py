@@ -7,8 +7,8 @@ import re
 from typing import Any
 
 from apbot.model.schema import NumericVariable, TimeVariable
-from apbot.model.values import format_hms, unit_of
-from apbot.read.goal_values import parse_quantity, unit_text
+from apbot.model.values import format_hms
+from apbot.read.goal_values import parse_quantity, unit_kind, unit_text
 from apbot.read.goal_view import Goal, Model, VarInfo, domain_values
 from apbot.read.goal_vocab import concept
 from apbot.read.numbers import Mention, find_mentions, tokenize
@@ -145,7 +145,7 @@ def _named_quantity(view: Model, info: VarInfo, mention: Mention, domain: list[A
 
 def number_for(info: VarInfo, unit: str, mention: Mention) -> float | None:
     """The mention as a number in ``unit`` (None when the dimensions differ)."""
-    target = unit_of(unit) if unit else None
+    target = unit_kind(unit) if unit else None
     if mention.kind == "number":
         return mention.value
     if mention.kind == "duration":

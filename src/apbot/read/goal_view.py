@@ -22,7 +22,6 @@ from apbot.model.schema import (
     Step,
     TimeVariable,
 )
-from apbot.model.values import unit_of
 from apbot.read.goal_manual import coded_names, legend_words, title_nouns
 from apbot.read.goal_values import (
     OFF_WORDS,
@@ -34,6 +33,7 @@ from apbot.read.goal_values import (
     parse_quantity,
     phrase_words,
     quantity_dimensions,
+    unit_kind,
     unit_text,
 )
 from apbot.read.goal_vocab import (
@@ -161,7 +161,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
                     _add_vocab(info, text, 0.7)
         if isinstance(var, NumericVariable):
             unit = unit_text(var)
-            info.dimension = (unit_of(unit) or (None, 0))[0] if unit else None
+            info.dimension = (unit_kind(unit) or (None, 0))[0] if unit else None
             if not unit:  # a reader may miss the unit: SPIN 0-1400 still takes "1000 rpm"
                 info.dimension = _dimension_by_name(info)
         if isinstance(var, DiscreteVariable):
@@ -196,7 +196,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         if isinstance(info.var, TimeVariable) or (
             isinstance(info.var, NumericVariable) and info.dimension == "time"
         ):
-            if "clock" in info.vocab:
+            if "clock" in info.vocab and not _in_days(info):
                 info.timing = "clock"
             elif concept("delay") in info.vocab:
                 info.timing = "delay"
@@ -278,6 +278,12 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         if names and not all(w in STOP_WORDS for w in names):
             phrases.append((coded, value, tuple(stem(w) for w in names), 0.95))
     return Model(model, infos, phrases, start_values, frozenset(appliance), named)
+
+
+def _in_days(info: VarInfo) -> bool:
+    """A count of days (DAYS 1-45 of an absence): a duration, though "day" is a clock's word."""
+    unit = unit_kind(unit_text(info.var)) if isinstance(info.var, NumericVariable) else None
+    return unit is not None and unit[0] == "time" and unit[1] >= 86400
 
 
 def _whole_day(info: VarInfo) -> bool:

@@ -1,0 +1,116 @@
+"""General phrasings the goal parser met on appliances of new kinds: units in days and weeks,
+level settings with an OFF value, compounds, waits and times of day. Every sentence and the
+model are written for these tests (a proofing cabinet no suite has)."""
+
+from __future__ import annotations
+
+import pytest
+
+from apbot.model.load import loads_model
+from apbot.model.schema import ApplianceModel
+from apbot.read.goal import parse_instruction
+
+CABINET = """
+appliance:
+  {id: proofer_1, category: proofing_cabinet, name: "Levain PB-3 proofing cabinet", brand: Levain}
+controls:
+  - {id: power_button, kind: button, label: "POWER"}
+  - {id: mode_button, kind: button, label: "MODE"}
+  - {id: mist_button, kind: button, label: "MIST"}
+  - {id: fan_button, kind: button, label: "FAN"}
+  - {id: days_button, kind: button, label: "DAYS"}
+  - {id: up_button, kind: button, label: "+"}
+  - {id: down_button, kind: button, label: "-"}
+  - {id: clock_button, kind: button, label: "CLOCK"}
+  - {id: autostop_button, kind: button, label: "AUTO STOP"}
+  - {id: start_button, kind: button, label: "START"}
+variables:
+  power:
+    type: discrete
+    values: ["off", "on"]
+  mode:
+    type: discrete
+    values: [dough, yogurt, tempeh, cheese]
+  mist:
+    type: discrete
+    values: ["off", gentle, normal, heavy]
+    initial: normal
+  fan:
+    type: discrete
+    values: [low, medium, high]
+  ferment_days:
+    type: numeric
+    unit: d
+    ranges: [[1, 30, 1]]
+    label: "DAYS"
+  clock:
+    type: time
+    ranges: [["00:00:00", "23:59:00", 60]]
+    wrap: true
+    format: "hh:mm"
+  auto_stop:
+    type: discrete
+    values: ["on", "off"]
+  running:
+    type: discrete
+    values: ["off", "on"]
+actions:
+  press_power: {control: power_button}
+  press_mode: {control: mode_button}
+  press_mist: {control: mist_button}
+  press_fan: {control: fan_button}
+  press_days: {control: days_button}
+  press_up: {control: up_button}
+  press_down: {control: down_button}
+  press_clock: {control: clock_button}
+  hold_autostop: {control: autostop_button, skill: hold, seconds: 3}
+  press_start: {control: start_button}
+features:
+  power:
+    - {actions: [press_power], variable: power, effect: toggle}
+  mode:
+    - {actions: [press_mode], variable: mode, effect: next}
+  mist:
+    - {actions: [press_mist], variable: mist, effect: next}
+  fan:
+    - {actions: [press_fan], variable: fan, effect: next}
+  days:
+    - {actions: [press_days]}
+    - actions: [press_up, press_down]
+      variable: ferment_days
+      effect: {press_up: next, press_down: prev}
+  clock:
+    - {actions: [press_clock]}
+    - actions: [press_up, press_down]
+      variable: clock
+      effect: {press_up: next, press_down: prev}
+  auto_stop:
+    - {actions: [hold_autostop], variable: auto_stop, effect: toggle}
+  start:
+    - {actions: [press_start], variable: running, effect: toggle}
+guards:
+  - {name: power off, when: {power: "off"}, only: [press_power], display: "", hide: true}
+display:
+  idle: "{clock}"
+"""
+
+
+@pytest.fixture(scope="module")
+def cabinet() -> ApplianceModel:
+    return loads_model(CABINET)
+
+
+@pytest.mark.parametrize(
+    ("text", "days"),
+    [
+        ("Tempeh for two weeks", 14),
+        ("Cheese for a fortnight", 14),
+        ("Dough, 3 wks", 21),
+        ("Yogurt for a week", 7),
+        ("Tempeh, 4 days", 4),
+    ],
+)
+def test_days_and_weeks_fill_a_setting_counted_in_days(
+    cabinet: ApplianceModel, text: str, days: int
+) -> None:
+    assert parse_instruction(cabinet, text)["ferment_days"] == days
