@@ -114,3 +114,31 @@ def test_days_and_weeks_fill_a_setting_counted_in_days(
     cabinet: ApplianceModel, text: str, days: int
 ) -> None:
     assert parse_instruction(cabinet, text)["ferment_days"] == days
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["Dough, and no mist at all", "Dough without any mist", "Dough, mist off", "Turn off the mist"],
+)
+def test_a_level_setting_said_off_takes_its_off_value(cabinet: ApplianceModel, text: str) -> None:
+    assert parse_instruction(cabinet, text)["mist"] == "off"
+
+
+@pytest.mark.parametrize(
+    ("text", "mist"),
+    [
+        ("Dough with as much mist as it can make", "heavy"),
+        ("Dough, the maximum mist", "heavy"),
+        ("Dough, the lowest mist", "gentle"),  # the lowest that mists, not off
+    ],
+)
+def test_named_levels_from_off_up_are_a_scale(
+    cabinet: ApplianceModel, text: str, mist: str
+) -> None:
+    assert parse_instruction(cabinet, text)["mist"] == mist
+
+
+def test_a_comparison_names_only_the_setting_inside_it(cabinet: ApplianceModel) -> None:
+    assert parse_instruction(cabinet, "Fan as low as it goes")["fan"] == "low"
+    goal = parse_instruction(cabinet, "Proof the dough as much as the mist allows")
+    assert "mist" not in goal and "fan" not in goal

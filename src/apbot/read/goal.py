@@ -35,7 +35,14 @@ from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
 from apbot.read.goal_scales import superlatives
 from apbot.read.goal_spelling import joined_compounds
 from apbot.read.goal_start import power_and_running
-from apbot.read.goal_switches import boil, entry_switches, no_values, switches, zero_settings
+from apbot.read.goal_switches import (
+    boil,
+    entry_switches,
+    no_values,
+    off_levels,
+    switches,
+    zero_settings,
+)
 from apbot.read.goal_text import Text
 from apbot.read.goal_twins import place_twins
 from apbot.read.goal_view import Goal, Model, model_view
@@ -91,6 +98,7 @@ def parse_instruction(
     counting = assign_mentions(view, text, mentions, goal, claimed, where, outside)
     superlatives(view, text, goal, claimed, where)
     zero_settings(view, text, goal, claimed, where)
+    off_levels(view, text, goal, claimed)
     no_values(view, text, goal, claimed)
     switches(view, text, goal, claimed, where)
     place_twins(view, text, goal, where)

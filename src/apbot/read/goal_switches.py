@@ -6,7 +6,7 @@ from __future__ import annotations
 from apbot.model.domain import build_domain
 from apbot.model.schema import DiscreteVariable, NumericVariable, TimeVariable
 from apbot.read.goal_text import CLAUSE_ENDS, Text, negative_around, phrase_here, verb_positions
-from apbot.read.goal_values import generic, magnitude, unit_text
+from apbot.read.goal_values import OFF_WORDS, generic, magnitude, unit_text
 from apbot.read.goal_view import (
     Goal,
     Model,
@@ -164,6 +164,31 @@ def zero_settings(
                     if where is not None:
                         where[homes[0].name] = j
                     claimed.add(j)
+                break
+
+
+def off_levels(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
+    """ "no steam at all", "without any steam", "the mist off": a setting of several levels
+    whose first is OFF (off, eco, normal, turbo) named with a negation is off — not a level."""
+    for info in view.infos.values():
+        if info.name in goal or info.role != "setting":
+            continue
+        if not isinstance(info.var, DiscreteVariable):
+            continue
+        values = domain_values(view, info, goal)
+        offs = [v for v in values if str(v).casefold() in OFF_WORDS]
+        if len(offs) != 1 or len(info.values) < 3:
+            continue
+        own = own_stems(info)
+        mine = own_concepts(info)
+        for k in range(len(text.tokens)):
+            if k in claimed or text.word(k) in STOP_WORDS:
+                continue
+            if not (text.stems[k] in own or text.concepts[k] in mine) or generic(text.concepts[k]):
+                continue
+            if negative_around(text, k):
+                goal[info.name] = offs[0]
+                claimed.add(k)
                 break
 
 
