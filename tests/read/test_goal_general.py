@@ -142,3 +142,54 @@ def test_a_comparison_names_only_the_setting_inside_it(cabinet: ApplianceModel) 
     assert parse_instruction(cabinet, "Fan as low as it goes")["fan"] == "low"
     goal = parse_instruction(cabinet, "Proof the dough as much as the mist allows")
     assert "mist" not in goal and "fan" not in goal
+
+
+EGG_BOILER = """
+appliance: {id: egg_1, category: egg_boiler, name: "Ovo 6 egg boiler", brand: Ovo}
+controls:
+  - {id: timer_button, kind: button, label: "BOIL TIME"}
+  - {id: go_button, kind: button, label: "GO"}
+variables:
+  boil_time:
+    type: time
+    ranges: [["00:04:00", "00:12:00", 60]]
+    format: "mm:ss"
+  boil_time_hold:
+    type: discrete
+    values: ["on", "off"]
+  boiling:
+    type: discrete
+    values: ["off", "on"]
+actions:
+  press_timer: {control: timer_button}
+  hold_timer: {control: timer_button, skill: hold, seconds: 2}
+  press_go: {control: go_button}
+features:
+  boil_time:
+    - {actions: [press_timer], variable: boil_time, effect: next}
+  chime:
+    - {actions: [hold_timer], variable: boil_time_hold, effect: toggle}
+  go:
+    - {actions: [press_go], variable: boiling, effect: toggle}
+"""
+
+EGG_MANUAL = """THE KEYS
+
+BOIL TIME   Steps through the boiling times, one minute a press. Keep it held
+            for two seconds to turn the chime on or off.
+GO          Starts boiling.
+"""
+
+
+def test_a_legend_continued_on_the_next_line_names_what_a_hold_switches() -> None:
+    model = loads_model(EGG_BOILER)
+    goal = parse_instruction(model, "Eight minutes of boil time and no chime", EGG_MANUAL)
+    assert goal["boil_time"] == "00:08:00" and goal["boil_time_hold"] == "off"
+    # its own words still name the timer only
+    assert "boil_time_hold" not in parse_instruction(model, "Boil time 6 minutes", EGG_MANUAL)
+
+
+def test_general_words_for_ends_and_values(cabinet: ApplianceModel) -> None:
+    assert parse_instruction(cabinet, "Dough, the heaviest mist")["mist"] == "heavy"
+    purifier = loads_model(CABINET.replace("tempeh", "purify"))
+    assert parse_instruction(purifier, "Just clean the air")["mode"] == "purify"

@@ -28,8 +28,9 @@ def switches(
         if info.role != "switch" or name in goal:
             continue
         own = own_stems(info)
-        if any(own == own_stems(view.infos[other]) for other in goal):
-            continue  # COOK TIME (on/off) beside a COOK TIME given a value: the words named that
+        # COOK TIME (on/off) beside a COOK TIME given a value: its own words named that one;
+        # only another word of it (the SOUND its legend says it switches) names the switch
+        shadowed = any(own == own_stems(view.infos[other]) for other in goal)
         best: tuple[float, int] | None = None
         left = False  # "leave the auto switched off": as it is, not a setting asked for
         for k in range(len(text.tokens)):
@@ -42,6 +43,8 @@ def switches(
             if weight <= 0 and _abbreviated(text.stems[k], own):
                 key, weight = text.stems[k], 1.0  # "tablets" for a TABS key
             if weight <= 0 or generic(key):
+                continue
+            if shadowed and (text.stems[k] in own or key in own_concepts(info)):
                 continue
             locks = key == concept("lock") or concept("lock") in own_concepts(info)
             if locks and not _locking(text, k):

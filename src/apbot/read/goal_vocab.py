@@ -228,6 +228,10 @@ HIGHEST = frozenset(
         "full",
         "top",
         "warmest",
+        "driest",
+        "heaviest",
+        "hardest",
+        "firmest",
     }
 )
 # Letters that stand for sizes or levels on a display.
@@ -266,6 +270,8 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "store": ("storage", "stored"),
     "eco": ("economy", "economical", "saving"),
     "storage": ("store", "storing"),
+    "purify": ("clean", "cleaning", "purifying", "purification", "purifier"),
+    "cool": ("chill", "chilled", "chilling", "cold"),
 }
 # Counts written as adverbs ("rinse twice").
 TIMES_WORDS = {"once": 1, "twice": 2, "thrice": 3}
