@@ -193,3 +193,44 @@ def test_general_words_for_ends_and_values(cabinet: ApplianceModel) -> None:
     assert parse_instruction(cabinet, "Dough, the heaviest mist")["mist"] == "heavy"
     purifier = loads_model(CABINET.replace("tempeh", "purify"))
     assert parse_instruction(purifier, "Just clean the air")["mode"] == "purify"
+
+
+def test_a_scale_word_grading_another_word_is_no_level(cabinet: ApplianceModel) -> None:
+    assert "fan" not in parse_instruction(cabinet, "Cheese for a medium-rare burger")
+    assert "fan" not in parse_instruction(cabinet, "Low-fat yogurt for 2 days")
+    assert parse_instruction(cabinet, "Cheese with the fan on medium")["fan"] == "medium"
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Tempeh for 2 days, but wait with the start",
+        "Set up tempeh and hold off on starting it",
+    ],
+)
+def test_a_start_put_off_is_no_start(cabinet: ApplianceModel, text: str) -> None:
+    assert parse_instruction(cabinet, text)["running"] == "off"
+
+
+def test_when_something_begins_is_no_start(cabinet: ApplianceModel) -> None:
+    goal = parse_instruction(cabinet, "Our trip starting tomorrow is 3 days long: cheese mode")
+    assert "running" not in goal and goal["ferment_days"] == 3
+
+
+@pytest.mark.parametrize(
+    ("text", "clock"),
+    [
+        ("Cheese, and set the time to 9:05 pm", "21:05:00"),
+        ("The correct time is 7:15 am; yogurt please", "07:15:00"),
+        ("It's 6:40 now, put the clock right", "06:40:00"),
+    ],
+)
+def test_the_time_of_day_is_the_clock(cabinet: ApplianceModel, text: str, clock: str) -> None:
+    goal = parse_instruction(cabinet, text)
+    assert goal["clock"] == clock and "running" not in goal
+
+
+def test_by_a_time_of_day_is_when_it_should_be_ready() -> None:
+    model = loads_model(CABINET.replace("clock", "ready").replace("CLOCK", "READY"))
+    goal = parse_instruction(model, "Have the yogurt set by 7 in the morning")
+    assert goal["ready"] == "07:00:00"

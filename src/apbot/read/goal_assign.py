@@ -79,13 +79,16 @@ def assign_mentions(
             if value is None:
                 continue
             score = near_vocab(info, text, mention.start, mention.end)
+            by = info.timing == "finish" and mention.kind == "clock" and mention.lead == "by"
             if info.timing in ("clock", "finish") and not near_vocab(
                 info, text, mention.start, mention.end, reach=12
             ):
-                named = info.timing == "clock" and concept("clock") in text.concepts
-                if not (named and mention.kind == "clock"):
+                named = info.timing == "clock" and (
+                    concept("clock") in text.concepts or _time_named(text, mention)
+                )
+                if not ((named or by) and mention.kind == "clock"):
                     continue  # a time of day sets the clock only when the clock is named
-            score += _cue_bonus(info, text, mention)
+            score += _cue_bonus(info, text, mention) + (0.5 if by else 0.0)
             options.append((score, -info.order, mi, name, value))
     options.sort(key=lambda o: (-o[0], -o[1]))
     used: set[int] = set()
@@ -117,6 +120,16 @@ def assign_mentions(
                 where[exc.setting] = mention.start
                 outside.append(str(exc))
     return counting
+
+
+def _time_named(text: Text, mention: Mention) -> bool:
+    """ "set the time to 9:05 pm", "the correct time is 7:15": the time of day, i.e. the clock."""
+    for j in range(mention.start - 1, max(-1, mention.start - 4), -1):
+        if text.word(j) == "time":
+            return text.word(j - 1) in ("the", "correct", "right", "current", "exact")
+        if text.word(j) not in ("to", "is", "as", "at", "now", ":"):
+            return False
+    return False
 
 
 def _clock_parts(view: Model, text: Text, mention: Mention, goal: Goal) -> bool:

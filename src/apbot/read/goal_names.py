@@ -20,7 +20,7 @@ from apbot.read.goal_text import (
     verb_positions,
 )
 from apbot.read.goal_view import PARTIAL, Goal, Model, own_stems
-from apbot.read.goal_vocab import HIGHEST, LOWEST, SYNONYMS, similar, stem
+from apbot.read.goal_vocab import HIGHEST, LOWEST, SCALES, SYNONYMS, similar, stem
 from apbot.read.numbers import COUNT_NOUNS
 
 
@@ -72,6 +72,8 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
             score = len(stems) * weight * quality + 0.5 * own
             if i in verbs and len(stems) == 1:
                 score *= 0.5  # "bake a French loaf": the verb is weaker than the noun
+            if len(stems) == 1 and _scale_head(text, i):
+                continue  # "medium-rare", "low-fat": a degree of something else
             if len(stems) == 1 and _compound_tail(text, i):
                 score *= 0.5  # "air-dry", "sterilise-and-dry": the end of another word
             matches.append(_Match(var, value, i, end, score))
@@ -83,6 +85,18 @@ def _compound_tail(text: Text, i: int) -> bool:
     """The word at i ends a hyphenated compound whose first part the match leaves out: "I'll
     air-dry them" is no DRY programme, the automatic "sterilise-and-dry" programme no DRY."""
     return text.word(i - 1) == "-" and text.word(i - 2).isalpha()
+
+
+_SCALE_WORDS = frozenset(w for scale in SCALES for w in scale) | LOWEST | HIGHEST
+
+
+def _scale_head(text: Text, i: int) -> bool:
+    """A scale word that opens a hyphenated compound with a word off the scale ("a medium-rare
+    steak", "low-fat milk") grades that word; it names no level ("medium-high" still does)."""
+    if text.word(i) not in _SCALE_WORDS or text.word(i + 1) != "-":
+        return False
+    after = text.word(i + 2)
+    return after.isalpha() and after not in _SCALE_WORDS
 
 
 def _names_switch(view: Model, var: str, text: Text, i: int) -> bool:
