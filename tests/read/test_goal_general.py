@@ -234,3 +234,23 @@ def test_by_a_time_of_day_is_when_it_should_be_ready() -> None:
     model = loads_model(CABINET.replace("clock", "ready").replace("CLOCK", "READY"))
     goal = parse_instruction(model, "Have the yogurt set by 7 in the morning")
     assert goal["ready"] == "07:00:00"
+
+
+@pytest.mark.parametrize(
+    ("text", "value"),
+    [
+        ("Dough, and stop it from switching itself off overnight", "off"),
+        ("Dough; don't let it shut itself off", "off"),
+        ("Dough, and let it turn itself off when done", "on"),
+    ],
+)
+def test_switching_itself_off_names_the_automatic_switch_off(
+    cabinet: ApplianceModel, text: str, value: str
+) -> None:
+    assert parse_instruction(cabinet, text)["auto_stop"] == value
+
+
+def test_keeping_it_cold_is_a_keep_cool_switch() -> None:
+    model = loads_model(CABINET.replace("auto_stop", "keep_cool").replace("AUTO STOP", "KEEP COOL"))
+    goal = parse_instruction(model, "Start the yogurt and keep it chilled afterwards")
+    assert goal["keep_cool"] == "on"

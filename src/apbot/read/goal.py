@@ -40,6 +40,7 @@ from apbot.read.goal_switches import (
     entry_switches,
     no_values,
     off_levels,
+    self_switching_off,
     switches,
     zero_settings,
 )
@@ -101,6 +102,7 @@ def parse_instruction(
     off_levels(view, text, goal, claimed)
     no_values(view, text, goal, claimed)
     switches(view, text, goal, claimed, where)
+    self_switching_off(view, text, goal, claimed)
     place_twins(view, text, goal, where)
     entry_switches(view, goal)
     boil(view, text, goal)

@@ -110,13 +110,59 @@ def _abbreviated(word: str, own: set[str]) -> bool:
 
 
 def _kept(text: Text, k: int, own: set[str]) -> bool:
-    """ "keep it hot", "keep the water warm": KEEP WARM said with words in between."""
-    if text.stems[k] != stem("keep") or stem("warm") not in own:
+    """ "keep it hot", "keep the water warm", "keep it cold": KEEP WARM (KEEP COOL) said with
+    words in between, or with a word of the same warmth."""
+    rest = own - {stem("keep")}
+    if text.stems[k] != stem("keep") or not rest:
         return False
-    return any(
-        text.stems[j] in (stem("warm"), stem("hot"))
-        for j in range(k + 1, min(k + 4, len(text.tokens)))
-    )
+    said = rest | {s for word in rest for s in _WARMTH.get(word, ())}
+    return any(text.stems[j] in said for j in range(k + 1, min(k + 4, len(text.tokens))))
+
+
+_WARMTH = {
+    stem("warm"): frozenset({stem("hot")}),
+    stem("cool"): frozenset(stem(w) for w in ("cold", "chilled", "chill", "frozen")),
+    stem("cold"): frozenset(stem(w) for w in ("cool", "chilled", "chill", "frozen")),
+}
+
+
+_SELF_OFF_VERBS = frozenset(stem(w) for w in ("switch", "shut", "turn", "power", "cut"))
+_PREVENTED = frozenset({"stop", "prevent", "keep", "don't", "dont", "not", "never", "doesn't"})
+_PREVENTED |= frozenset({"won't", "disable", "no"})
+
+
+def self_switching_off(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
+    """ "stop it from shutting itself off", "let it switch itself off": the automatic
+    switch-off (a switch named AUTO OFF), off when the words prevent it, else on."""
+    found = [
+        info
+        for info in view.infos.values()
+        if info.role == "switch"
+        and info.name not in goal
+        and concept("auto") in info.vocab
+        and {"off", "stop", "shutoff", "shutdown"}
+        & set(info.name.casefold().replace("-", "_").split("_"))
+    ]
+    if len(found) != 1:
+        return
+    info = found[0]
+    for k, token in enumerate(text.tokens):
+        if token.text != "itself" or k in claimed:
+            continue
+        verb = any(text.stems[j] in _SELF_OFF_VERBS for j in (k - 1, k - 2))
+        off = "off" in (text.word(k + 1), text.word(k - 1))
+        if not (verb and off):
+            continue
+        prevented = False
+        for d in range(2, 8):
+            word = text.word(k - d)
+            if word in CLAUSE_ENDS or word == ",":
+                break
+            prevented = prevented or word in _PREVENTED
+        assert info.on is not None and info.off is not None
+        goal[info.name] = info.off if prevented else info.on
+        claimed.add(k)
+        return
 
 
 def entry_switches(view: Model, goal: Goal) -> None:
