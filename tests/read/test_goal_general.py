@@ -254,3 +254,10 @@ def test_keeping_it_cold_is_a_keep_cool_switch() -> None:
     model = loads_model(CABINET.replace("auto_stop", "keep_cool").replace("AUTO STOP", "KEEP COOL"))
     goal = parse_instruction(model, "Start the yogurt and keep it chilled afterwards")
     assert goal["keep_cool"] == "on"
+
+
+def test_a_superlative_restated_by_a_number_leaves_it_to_the_number(
+    cabinet: ApplianceModel,
+) -> None:
+    goal = parse_instruction(cabinet, "Yogurt with the fan at the maximum of 20 days")
+    assert goal == {"mode": "yogurt", "ferment_days": 20}

@@ -45,6 +45,8 @@ def superlatives(
                 scale_index = (scale.index(said), len(scale))
         if end is None and scale_index is None:
             continue
+        if end is not None and _restates(text, k):
+            continue  # "at the maximum of 75 °C": the quantity says it, for its own setting
         if end is not None and _names_set(view, text, k, goal):
             continue  # "the lowest humidity setting, 40%": said of a setting already read
         best: tuple[float, str] | None = None
@@ -95,6 +97,14 @@ def _as_as(text: Text, k: int) -> tuple[int, int] | None:
             end = -1 if word in _MORE else 0
             return end, (j - k - 1 if word in _AMOUNTS else 2)
     return None
+
+
+def _restates(text: Text, k: int) -> bool:
+    """ "the maximum of 75 °C", "its lowest, 40 %": a number right after the superlative."""
+    j = k + 1
+    if text.word(j) in ("of", ",", ":", "-", "("):
+        j += 1
+    return text.word(j)[:1].isdigit()
 
 
 def _beside(info: VarInfo, text: Text, k: int, reach: int) -> bool:
