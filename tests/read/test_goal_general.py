@@ -261,3 +261,8 @@ def test_a_superlative_restated_by_a_number_leaves_it_to_the_number(
 ) -> None:
     goal = parse_instruction(cabinet, "Yogurt with the fan at the maximum of 20 days")
     assert goal == {"mode": "yogurt", "ferment_days": 20}
+
+
+def test_a_value_cut_short_is_named_by_a_synonym_of_its_full_word() -> None:
+    model = loads_model(CABINET.replace("cheese]", '"ster+dry"]'))
+    assert parse_instruction(model, "A steam-and-dry run for the jars")["mode"] == "ster+dry"

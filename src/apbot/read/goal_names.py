@@ -220,6 +220,8 @@ def _match_at(text: Text, i: int, stems: tuple[str, ...]) -> tuple[int, float] |
             quality = min(quality, 0.9)
         elif here in _SYNONYM_STEMS.get(target, ()):
             quality = min(quality, 0.8)
+        elif len(target) >= 3 and _abbreviated_synonym(target, here):
+            quality = min(quality, 0.7)  # "steam" for STER, short for sterilise (and steam)
         elif (
             len(target) >= 4
             and here.startswith(target)
@@ -240,6 +242,15 @@ def _match_at(text: Text, i: int, stems: tuple[str, ...]) -> tuple[int, float] |
 
 
 _SPLIT_VERBS = frozenset({stem("keep")})
+
+
+def _abbreviated_synonym(short: str, word: str) -> bool:
+    """``short`` cuts one word of a synonym group short ("ster" of sterilise) that ``word``
+    belongs to ("steam")."""
+    return any(
+        key.startswith(short) and key != short and word in others
+        for key, others in _SYNONYM_STEMS.items()
+    )
 
 
 _SYNONYM_STEMS: dict[str, frozenset[str]] = {
