@@ -266,3 +266,15 @@ def test_a_superlative_restated_by_a_number_leaves_it_to_the_number(
 def test_a_value_cut_short_is_named_by_a_synonym_of_its_full_word() -> None:
     model = loads_model(CABINET.replace("cheese]", '"ster+dry"]'))
     assert parse_instruction(model, "A steam-and-dry run for the jars")["mode"] == "ster+dry"
+
+
+def test_soft_to_firm_is_a_scale_and_the_least_of_two_levels_is_not_off() -> None:
+    model = loads_model(
+        CABINET.replace("fan: \n", "fan:\n")
+        .replace("values: [low, medium, high]", "values: [soft, medium, firm]")
+        .replace(
+            'values: ["off", gentle, normal, heavy]\n    initial: normal', 'values: ["off", gentle]'
+        )
+    )
+    goal = parse_instruction(model, "Dough with the firmest fan and the least mist")
+    assert goal["fan"] == "firm" and goal["mist"] == "gentle"

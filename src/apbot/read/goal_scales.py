@@ -67,8 +67,10 @@ def superlatives(
         values = _ordered_values(domain_values(view, view.infos[name], goal))
         if not values:
             continue
-        off_first = _is_off_level(view.infos[name], values[0]) or _ladder(values)
-        if end == 0 and len(values) > 2 and off_first:
+        off_first = (len(values) > 2 and _is_off_level(view.infos[name], values[0])) or (
+            len(values) > 1 and bool(_ladder(values))
+        )
+        if end == 0 and off_first:
             goal[name] = values[1]  # "the lowest level": the lowest one that works, not off
         elif end is not None:
             goal[name] = values[end]
@@ -142,7 +144,7 @@ def _ordered(info: VarInfo) -> bool:
             numeric_values(info.values)
             or bool(quantity_dimensions(info.values))
             or len(_scaled(info.values)) >= 2
-            or len(_ladder(info.values)) >= 3
+            or len(_ladder(info.values)) >= 2
         )
     )
 

@@ -192,6 +192,7 @@ SCALES: tuple[tuple[str, ...], ...] = (
     ("light", "medium", "dark"),
     ("low", "medium", "high"),
     ("small", "medium", "large"),
+    ("soft", "medium", "firm"),
 )
 # Superlatives: which end of a domain.
 LOWEST = frozenset(
