@@ -278,3 +278,29 @@ def test_soft_to_firm_is_a_scale_and_the_least_of_two_levels_is_not_off() -> Non
     )
     goal = parse_instruction(model, "Dough with the firmest fan and the least mist")
     assert goal["fan"] == "firm" and goal["mist"] == "gentle"
+
+
+def test_a_programme_number_names_the_value_the_display_codes() -> None:
+    model = loads_model(
+        CABINET.replace(
+            "values: [dough, yogurt, tempeh, cheese]",
+            'values: [dough, yogurt, tempeh, cheese]\n    show: {dough: "F1", yogurt: "F2", '
+            'tempeh: "F3", cheese: "F4"}',
+        )
+    )
+    assert parse_instruction(model, "Put it on mode 3 for two days") == {
+        "mode": "tempeh",
+        "ferment_days": 2,
+    }
+
+
+def test_more_general_words(cabinet: ApplianceModel) -> None:
+    goal = parse_instruction(cabinet, "Dough; don't let it turn off by itself")
+    assert goal["auto_stop"] == "off"
+    away = loads_model(CABINET.replace("tempeh", "holiday"))
+    assert parse_instruction(away, "Vacation mode for a week") == {
+        "mode": "holiday",
+        "ferment_days": 7,
+    }
+    locking = loads_model(CABINET.replace("auto_stop", "child_lock").replace("AUTO STOP", "LOCK"))
+    assert parse_instruction(locking, "Child-proof the buttons")["child_lock"] == "on"

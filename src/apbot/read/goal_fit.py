@@ -73,6 +73,7 @@ def fit(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
             return value
     return (
         _coded(domain, mention)
+        or _coded_show(info, domain, mention)
         or _show_quantity(info, mention)
         or _named_quantity(view, info, mention, domain)
     )
@@ -86,6 +87,19 @@ def _coded(domain: list[Any], mention: Mention) -> Any:
     if mention.kind != "number" or mention.value != int(mention.value):
         return None
     found = [v for v in domain if (m := CODE.fullmatch(str(v))) and int(m[1]) == mention.value]
+    return found[0] if len(found) == 1 else None
+
+
+def _coded_show(info: VarInfo, domain: list[Any], mention: Mention) -> Any:
+    """ "programme 4" for the value the display shows as P4 (a name the panel codes)."""
+    show = info.var.show if isinstance(info.var.show, dict) else {}
+    if not show:
+        return None
+    shown = {v: show[str(v)] for v in domain if str(v) in show and "{" not in show[str(v)]}
+    codes = [v for v, text in shown.items() if CODE.fullmatch(text.strip())]
+    if len(codes) < 2 or len(codes) < len(shown) - 1:
+        return None  # not a coded list ("ICE CREAM", "GELATO")
+    found = [v for v in codes if _coded([show[str(v)].strip()], mention) is not None]
     return found[0] if len(found) == 1 else None
 
 

@@ -91,7 +91,7 @@ def switches(
 
 _LOCK_WORDS = frozenset(
     {"lock", "locked", "locks", "locking", "unlock", "unlocked", "childlock", "lockout", "keylock"}
-    | {"release", "released"}
+    | {"release", "released", "childproof", "proof"}
 )
 
 
@@ -149,8 +149,9 @@ def self_switching_off(view: Model, text: Text, goal: Goal, claimed: set[int]) -
     for k, token in enumerate(text.tokens):
         if token.text != "itself" or k in claimed:
             continue
-        verb = any(text.stems[j] in _SELF_OFF_VERBS for j in (k - 1, k - 2))
-        off = "off" in (text.word(k + 1), text.word(k - 1))
+        by = 1 if text.word(k - 1) == "by" else 0  # "turn off by itself"
+        verb = any(text.stems[j] in _SELF_OFF_VERBS for j in (k - 1 - by, k - 2 - by))
+        off = "off" in (text.word(k + 1), text.word(k - 1 - by))
         if not (verb and off):
             continue
         prevented = False

@@ -207,6 +207,7 @@ LOWEST = frozenset(
         "lightest",
         "palest",
         "coolest",
+        "coldest",
         "weakest",
         "slowest",
         "gentlest",
@@ -273,6 +274,8 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "storage": ("store", "storing"),
     "purify": ("clean", "cleaning", "purifying", "purification", "purifier"),
     "cool": ("chill", "chilled", "chilling", "cold"),
+    "holiday": ("vacation", "away", "absence"),
+    "vacation": ("holiday", "away", "absence"),
 }
 # Counts written as adverbs ("rinse twice").
 TIMES_WORDS = {"once": 1, "twice": 2, "thrice": 3}
