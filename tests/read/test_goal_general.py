@@ -304,3 +304,21 @@ def test_more_general_words(cabinet: ApplianceModel) -> None:
     }
     locking = loads_model(CABINET.replace("auto_stop", "child_lock").replace("AUTO STOP", "LOCK"))
     assert parse_instruction(locking, "Child-proof the buttons")["child_lock"] == "on"
+
+
+@pytest.mark.parametrize(
+    ("text", "power"),
+    [
+        ("Switch the cabinet off.", "off"),
+        ("Turn it off", "off"),
+        ("Dough, and turn it off when it's done", None),
+        ("Dough; switch it off after 2 days", None),
+    ],
+)
+def test_switching_the_appliance_off_now(cabinet: ApplianceModel, text: str, power: str) -> None:
+    assert parse_instruction(cabinet, text).get("power") == power
+
+
+def test_a_word_of_another_settings_name_is_not_a_level_said_off(cabinet: ApplianceModel) -> None:
+    model = loads_model(CABINET.replace("auto_stop", "fan_mist").replace("AUTO STOP", "FAN MIST"))
+    assert "mist" not in parse_instruction(model, "Dough, with the fan mist off")

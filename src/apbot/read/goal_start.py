@@ -39,6 +39,9 @@ def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = Fals
     for name, info in view.infos.items():
         if info.role == "power" and name not in goal and _says_power_on(view, text):
             goal[name] = info.on
+        elif info.role == "power" and name not in goal and _says_power_off(view, text):
+            goal[name] = info.off
+            return  # switched off: nothing is started
     running = [n for n, i in view.infos.items() if i.role == "running"]
     if not running:
         # no running state of its own: the appliance works while it is on ("start cooling")
@@ -149,6 +152,39 @@ def _says_power_on(view: Model, text: Text) -> bool:
                 and text.word(j + 1) in (CLAUSE_ENDS | {",", "and", "then", ""})
             ):
                 return True
+    return False
+
+
+_CONDITIONS = frozenset({"when", "once", "after", "if", "until", "before", "let", "don't", "dont"})
+_CONDITIONS |= frozenset({"not", "never"})
+
+
+def _says_power_off(view: Model, text: Text) -> bool:
+    """ "switch the heater off.", "turn it off", "switch off the machine": the power, off — said
+    of now (not "switch it off when it's done", "after 2 hours", "let it turn itself off")."""
+    n = len(text.tokens)
+    for k, token in enumerate(text.tokens):
+        if token.text not in ("turn", "switch", "power", "shut"):
+            continue
+        j = k + 1
+        while j < n and (concept(text.word(j)) in view.appliance_words or text.word(j) == "the"):
+            j += 1
+        if text.word(j) != "off":
+            continue
+        m = j + 1
+        while m < n and (concept(text.word(m)) in view.appliance_words or text.word(m) == "the"):
+            m += 1
+        if j == k + 1 and m == j + 1:
+            continue  # "switch off" with no appliance named: perhaps a setting's
+        if text.word(m) not in CLAUSE_ENDS | {"", ",", "and", "then"}:
+            continue  # "switch off after 2 hours", "turn it off when done"
+        before = []
+        for d in range(1, 10):
+            if text.word(k - d) in CLAUSE_ENDS or k - d < 0:
+                break
+            before.append(text.word(k - d))
+        if not _CONDITIONS & set(before):
+            return True
     return False
 
 

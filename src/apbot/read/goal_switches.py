@@ -231,11 +231,14 @@ def off_levels(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
             continue
         own = own_stems(info)
         mine = own_concepts(info)
+        others = {s for i in view.infos.values() if i is not info for s in own_stems(i)} - own
         for k in range(len(text.tokens)):
             if k in claimed or text.word(k) in STOP_WORDS:
                 continue
             if not (text.stems[k] in own or text.concepts[k] in mine) or generic(text.concepts[k]):
                 continue
+            if any(text.stems[j] in others for j in (k - 1, k + 1) if 0 <= j < len(text.stems)):
+                continue  # "the vertical steam off": a word of another setting's name
             if negative_around(text, k):
                 goal[info.name] = offs[0]
                 claimed.add(k)
