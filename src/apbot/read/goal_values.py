@@ -80,6 +80,12 @@ def unit_kind(unit: str) -> tuple[str, float] | None:
     return ("time", seconds) if seconds else None
 
 
+def in_days(var: Any) -> bool:
+    """A count of days (DAYS 1-45 of an absence): a duration, though "day" is a clock's word."""
+    unit = unit_kind(unit_text(var)) if isinstance(var, NumericVariable) else None
+    return unit is not None and unit[0] == "time" and unit[1] >= 86400
+
+
 def numeric_values(values: list[Any]) -> bool:
     numeric = [v for v in values if parse_quantity(str(v)) is not None]
     return len(numeric) >= max(1, len(values) - 2)

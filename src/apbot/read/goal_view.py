@@ -26,6 +26,7 @@ from apbot.read.goal_manual import coded_names, legend_words, title_nouns
 from apbot.read.goal_values import (
     OFF_WORDS,
     ON_WORDS,
+    in_days,
     magnitude,
     name_words,
     numeric_values,
@@ -196,7 +197,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         if isinstance(info.var, TimeVariable) or (
             isinstance(info.var, NumericVariable) and info.dimension == "time"
         ):
-            if "clock" in info.vocab and not _in_days(info):
+            if "clock" in info.vocab and not in_days(info.var):
                 info.timing = "clock"
             elif concept("delay") in info.vocab:
                 info.timing = "delay"
@@ -278,12 +279,6 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         if names and not all(w in STOP_WORDS for w in names):
             phrases.append((coded, value, tuple(stem(w) for w in names), 0.95))
     return Model(model, infos, phrases, start_values, frozenset(appliance), named)
-
-
-def _in_days(info: VarInfo) -> bool:
-    """A count of days (DAYS 1-45 of an absence): a duration, though "day" is a clock's word."""
-    unit = unit_kind(unit_text(info.var)) if isinstance(info.var, NumericVariable) else None
-    return unit is not None and unit[0] == "time" and unit[1] >= 86400
 
 
 def _whole_day(info: VarInfo) -> bool:
