@@ -220,8 +220,8 @@ def _match_at(text: Text, i: int, stems: tuple[str, ...]) -> tuple[int, float] |
             quality = min(quality, 0.9)
         elif here in _SYNONYM_STEMS.get(target, ()):
             quality = min(quality, 0.8)
-        elif len(target) >= 3 and _abbreviated_synonym(target, here):
-            quality = min(quality, 0.7)  # "steam" for STER, short for sterilise (and steam)
+        elif len(stems) > 1 and len(target) >= 3 and _abbreviated_synonym(target, here):
+            quality = min(quality, 0.7)  # "steam-and-dry" for STER+DRY (sterilise: steam)
         elif (
             len(target) >= 4
             and here.startswith(target)
