@@ -763,3 +763,32 @@ def test_on_off_options_read_as_lamps_are_shown_on_their_own_screens_only() -> N
     episode, reached = run(truth, belief, {"programme": "wool", "eco": "on", "rinse": "on"})
     assert reached, episode.failure
     assert not any("resets it" in r for r in episode.repairs), episode.repairs
+
+
+def test_an_option_lamp_unlit_twice_on_the_running_screen_is_no_reset_by_start() -> None:
+    # the same washer with START: while it runs the screen says RUN only, twice over, where
+    # the belief expected ECO lit too; that is no sign START switched ECO off
+    head = "appliance: {id: washer, category: test}\n"
+    start = (
+        WASHER_OPTIONS.replace("{id: rinse}]", "{id: rinse}, {id: start}]")
+        .replace(
+            "  rinse: {type: discrete, values",
+            '  running: {type: discrete, values: ["off", "on"], show: {"off": "", "on": RUN}}\n'
+            "  rinse: {type: discrete, values",
+        )
+        .replace("actions:\n", "actions:\n  press_start: {control: start}\n", 1)
+        .replace(
+            "features:\n",
+            "features:\n  start: [{actions: [press_start], variable: running, effect: toggle}]\n",
+        )
+        .replace(
+            "display:\n",
+            "guards:\n  - {name: running, when: {running: 'on'}, only: [press_start],"
+            " display: RUN}\ndisplay:\n",
+        )
+    )
+    truth = loads_model(head + start)
+    belief = loads_model(head + start + "  indicators: [eco, rinse]\n")
+    episode, reached = run(truth, belief, {"eco": "on", "running": "on"})
+    assert reached, episode.failure
+    assert not any("resets it" in r for r in episode.repairs), episode.repairs

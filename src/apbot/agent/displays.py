@@ -181,7 +181,9 @@ class DisplayLearner:
                 continue
             unlit = self._unlit.setdefault(name, set())
             first = not unlit
-            unlit.add(seen.text.strip().casefold())
+            # a lamp that is only the label: two unlit readings, even of one display, suffice
+            guessed = observed is not None
+            unlit.add(seen.text.strip().casefold() + (f"#{len(unlit)}" if guessed else ""))
             if first:
                 # one unlit display: the key may have failed to light a real lamp. Plan again
                 # (once per setting) and see the lamp on the next display before repairing
