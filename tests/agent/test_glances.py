@@ -243,3 +243,43 @@ def test_a_never_shown_setting_behind_a_dark_panel_is_looked_at_with_the_panel_s
     assert reached, [e.text or e.action for e in episode.trace]
     pressed = [e.action for e in episode.trace if e.kind == "action"]
     assert pressed[:2] == ["press_power", "press_temp"]
+
+
+OVEN = """
+controls: [{id: power}, {id: start}, %(keys)s]
+variables:
+  power_level: {type: numeric, unit: "%%", ranges: [[10, 100, 10]], initial: %(initial)s,
+                entry: {format: number, max_digits: 3}, label: P}
+  running: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "*"}}
+actions:
+  press_power: {control: power}
+  press_start: {control: start}
+%(actions)s
+features:
+  set_power_level:
+    - {actions: [press_power]}
+    - {actions: [%(digits)s], variable: power_level}
+  start: [{actions: [press_start], variable: running, effect: {to: "on"}}]
+"""
+
+
+def oven(initial: int) -> ApplianceModel:
+    return model_from(
+        OVEN
+        % {
+            "initial": initial,
+            "keys": ", ".join(f"{{id: k{d}, kind: key}}" for d in range(10)),
+            "actions": "\n".join(f"  press_{d}: {{control: k{d}, digit: {d}}}" for d in range(10)),
+            "digits": ", ".join(f"press_{d}" for d in range(10)),
+        }
+    )
+
+
+def test_a_keypad_setting_never_shown_whose_guessed_start_is_asked_is_typed_anyway() -> None:
+    # the reader guessed the power starts at 10 %; it starts at 100 %. The goal asks for 10 %,
+    # which the belief already "holds": typing it is the only way to be sure
+    episode, reached = run_checked(oven(100), oven(10), {"power_level": 10, "running": "on"})
+    assert reached, [e.text or e.action for e in episode.trace]
+    # the true model costs the same few presses, and claims
+    episode, reached = run_checked(oven(10), oven(10), {"power_level": 10, "running": "on"})
+    assert reached and episode.claimed_success

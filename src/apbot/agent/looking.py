@@ -86,13 +86,17 @@ def glance(session: Session, names: Collection[str]) -> bool:
     looked at only where the look leaves it as it is: moving it would cost a walk round its
     values (and a programme's resets) to settle a doubt; a value never shown is a guess worth
     that step. Not a setting typed on a keypad: its entry key starts a new entry, which may
-    clear what was typed. A never-shown setting behind a dark panel may switch the panel on
+    clear what was typed; one never shown is typed again instead (:func:`_retype`). A never-shown setting behind a dark panel may switch the panel on
     first. Nor through a key that selects a value or sets others
     (:func:`selecting`): choosing the programme already chosen resets its settings on many
     appliances. Where no route shows it, the belief is all there is."""
     model = session.belief.model
     for name in session.unverified(set(names)):
-        if typed(model, name) or not session.budget.once("inspect", f"glance:{name}"):
+        if typed(model, name):
+            if name not in session.ever_seen and _retype(session, name):
+                return True
+            continue
+        if not session.budget.once("inspect", f"glance:{name}"):
             continue
         compiled, state = session.belief.compiled, session.belief.state
         keep = set(model.variables)
@@ -118,6 +122,21 @@ def glance(session: Session, names: Collection[str]) -> bool:
             session.unread.add(name)
         return True
     return False
+
+
+def _retype(session: Session, name: str) -> bool:
+    """A keypad setting the display never showed holds the reader's guess of its start value,
+    which the goal happens to ask for: typing the value is the only way to know (a few presses,
+    once). The belief forgets the guess (takes another value of the domain), so the next plan
+    types the asked one and the check sees it. True when it did."""
+    if not session.budget.once("inspect", f"retype:{name}"):
+        return False
+    held = session.belief.value(name)
+    other = next((v for v in session.domain_values(name) if v != held), None)
+    if other is None or not session.belief.set_value(name, other):
+        return False
+    session.episode.log("repair", f"{name}={held!r} was never shown: to be typed")
+    return True
 
 
 def typed(model: ApplianceModel, name: str) -> bool:
