@@ -14,6 +14,7 @@ from collections.abc import Collection
 from typing import TYPE_CHECKING
 
 from apbot.agent.perception import MISSING
+from apbot.model.domain import ValueProblem, normalise
 from apbot.model.effects import default_effect
 from apbot.model.schema import ApplianceModel, GoTo
 from apbot.sim.compiled import CompiledModel, State
@@ -86,8 +87,9 @@ def glance(session: Session, names: Collection[str]) -> bool:
     looked at only where the look leaves it as it is: moving it would cost a walk round its
     values (and a programme's resets) to settle a doubt; a value never shown is a guess worth
     that step. Not a setting typed on a keypad: its entry key starts a new entry, which may
-    clear what was typed; one never shown is typed again instead (:func:`_retype`). A never-shown setting behind a dark panel may switch the panel on
-    first. Nor through a key that selects a value or sets others
+    clear what was typed; one never shown whose guess the goal asks for is typed again
+    instead (:func:`_retype`). A never-shown setting behind a dark panel may switch the panel
+    on first. Nor through a key that selects a value or sets others
     (:func:`selecting`): choosing the programme already chosen resets its settings on many
     appliances. Where no route shows it, the belief is all there is."""
     model = session.belief.model
@@ -129,9 +131,16 @@ def _retype(session: Session, name: str) -> bool:
     which the goal happens to ask for: typing the value is the only way to know (a few presses,
     once). The belief forgets the guess (takes another value of the domain), so the next plan
     types the asked one and the check sees it. True when it did."""
+    held = session.belief.value(name)
+    raw = session.context.goal.get(name)
+    try:
+        asked = normalise(session.belief.model.variables[name], raw) if raw is not None else None
+    except ValueProblem:
+        return False
+    if asked is None or asked != held:
+        return False  # not asked, or the plan types it anyway
     if not session.budget.once("inspect", f"retype:{name}"):
         return False
-    held = session.belief.value(name)
     other = next((v for v in session.domain_values(name) if v != held), None)
     if other is None or not session.belief.set_value(name, other):
         return False
