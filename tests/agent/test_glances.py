@@ -283,3 +283,43 @@ def test_a_keypad_setting_never_shown_whose_guessed_start_is_asked_is_typed_anyw
     # the true model costs the same few presses, and claims
     episode, reached = run_checked(oven(10), oven(10), {"power_level": 10, "running": "on"})
     assert reached and episode.claimed_success
+
+
+def test_a_look_at_a_running_cycle_never_stops_it() -> None:
+    # START's screen was not what the belief expected; STOP would show "running" (moved to
+    # off), but stopping the cycle to look at it undoes it
+    from apbot.agent.looking import route_to_screen
+    from apbot.sim.compiled import CompiledModel
+
+    text = OVEN % {
+        "initial": 100,
+        "keys": ", ".join(f"{{id: k{d}, kind: key}}" for d in range(10)) + ", {id: stop}",
+        "actions": "\n".join(f"  press_{d}: {{control: k{d}, digit: {d}}}" for d in range(10))
+        + "\n  press_stop: {control: stop}",
+        "digits": ", ".join(f"press_{d}" for d in range(10)),
+    }
+    text += '  stop: [{actions: [press_stop], variable: running, effect: {to: "off"}}]\n'
+    text += "guards:\n  - {name: running, when: {running: 'on'}, only: [press_stop]}\n"
+    model = model_from(text)
+    compiled = CompiledModel(model)
+    state = compiled.apply(compiled.initial_state(), compiled.action_index["press_start"], 0.2)
+    assert state is not None
+    assert route_to_screen(compiled, state, "running", model.variables, model.actions) is None
+
+
+def test_a_go_to_key_that_showed_what_the_belief_cannot_read_sets_no_unreadable_value() -> None:
+    # the oven shows "*" while it runs, the belief "RUN": START set something unreadable,
+    # which is no value START goes to
+    truth = oven(100)
+    belief = model_from(
+        OVEN.replace('"on": "*"', '"on": RUN')
+        % {
+            "initial": 100,
+            "keys": ", ".join(f"{{id: k{d}, kind: key}}" for d in range(10)),
+            "actions": "\n".join(f"  press_{d}: {{control: k{d}, digit: {d}}}" for d in range(10)),
+            "digits": ", ".join(f"press_{d}" for d in range(10)),
+        }
+    )
+    episode, _ = run_checked(truth, belief, {"power_level": 50, "running": "on"})
+    logged = [e.text or "" for e in episode.trace if e.kind == "repair"]
+    assert not any("could not repair press_start" in t for t in logged), logged

@@ -36,7 +36,8 @@ def route_to_screen(
 ) -> list[str] | None:
     """The fewest presses of ``actions`` (at most :data:`MAX_PRESSES`) after which the belief
     shows ``name`` on a lit display and every variable of ``keep`` but ``name`` is unchanged
-    (``still``: ``name`` too); None when there is none within the search's bounds.
+    (``still``, or a state a guard watches: ``name`` too); None when there is none within the
+    search's bounds.
 
     >>> from apbot.examples import load_example
     >>> model = load_example("microwave_keypad")
@@ -49,6 +50,9 @@ def route_to_screen(
     target = compiled.var_index[name]
     kept = [compiled.var_index[n] for n in keep if n != name and n in compiled.var_index]
     model = compiled.model
+    # a state a guard watches (running, a lock, power) never moves for a look: stopping a
+    # cycle to see that it runs undoes it, and a STOP may clear the settings as well
+    still = still or any(name in guard.when for guard in model.guards)
     keys = [
         (compiled.action_index[a], a, model.actions[a].seconds)
         for a in actions
