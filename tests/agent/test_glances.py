@@ -323,3 +323,60 @@ def test_a_go_to_key_that_showed_what_the_belief_cannot_read_sets_no_unreadable_
     episode, _ = run_checked(truth, belief, {"power_level": 50, "running": "on"})
     logged = [e.text or "" for e in episode.trace if e.kind == "repair"]
     assert not any("could not repair press_start" in t for t in logged), logged
+
+
+DEFROST = """
+controls: [{id: defrost}, {id: start}, %(keys)s]
+variables:
+  food: {type: discrete, values: [none, meat, fish], wrap: true, label: dEF}
+  weight:
+    type: numeric
+    unit: g
+    entry: {format: number, max_digits: 4}
+    label: WEIGHT
+%(weight)s
+  running: {type: discrete, values: ["off", "on"], show: {"off": "", "on": RUN}}
+actions:
+  press_defrost: {control: defrost}
+  press_start: {control: start}
+%(actions)s
+features:
+  defrost:
+    - {actions: [press_defrost], variable: food, effect: next}
+    - {actions: [%(digits)s], variable: weight}
+  start: [{actions: [press_start], variable: running, effect: {to: "on"}}]
+"""
+
+
+def defrost(weight: str) -> ApplianceModel:
+    return model_from(
+        DEFROST
+        % {
+            "weight": weight,
+            "keys": ", ".join(f"{{id: k{d}, kind: key}}" for d in range(10)),
+            "actions": "\n".join(f"  press_{d}: {{control: k{d}, digit: {d}}}" for d in range(10)),
+            "digits": ", ".join(f"press_{d}" for d in range(10)),
+        }
+    )
+
+
+def test_choosing_again_what_a_procedure_starts_with_puts_its_later_settings_in_doubt() -> None:
+    # the weight belongs to the food chosen: walking round the foods (and back) brings it back
+    # to the food's own start, though the reader knew nothing of it
+    truth = defrost(
+        "    depends_on: food\n    cases:\n"
+        "      none: {ranges: [[0, 0, 1]]}\n"
+        "      meat: {ranges: [[100, 2000, 10]], initial: 100}\n"
+        "      fish: {ranges: [[100, 1000, 10]], initial: 100}"
+    )
+    belief = defrost("    ranges: [[0, 2000, 10]]")
+    env = SimulatorEnvironment(truth, "display")
+    context = TaskContext("oven", "test", "t", "", {}, belief, actions=tuple(env.actions))
+    s = Session(AgentConfig(), context, env, Budget())
+    s.start()
+    for action in ("press_defrost", "press_5", "press_0", "press_0"):
+        s.press(s.planned(action))
+    assert s.shown("weight") == 500 and s.unverified({"weight"}) == []
+    for _ in range(3):  # round the foods and back to meat
+        s.press(s.planned("press_defrost"))
+    assert s.unverified({"weight"}) == ["weight"]

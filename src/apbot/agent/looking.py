@@ -91,15 +91,15 @@ def glance(session: Session, names: Collection[str]) -> bool:
     looked at only where the look leaves it as it is: moving it would cost a walk round its
     values (and a programme's resets) to settle a doubt; a value never shown is a guess worth
     that step. Not a setting typed on a keypad: its entry key starts a new entry, which may
-    clear what was typed; one never shown whose guess the goal asks for is typed again
-    instead (:func:`_retype`). A never-shown setting behind a dark panel may switch the panel
+    clear what was typed; one whose believed value the goal asks for is typed again instead
+    (:func:`_retype`). A never-shown setting behind a dark panel may switch the panel
     on first. Nor through a key that selects a value or sets others
     (:func:`selecting`): choosing the programme already chosen resets its settings on many
     appliances. Where no route shows it, the belief is all there is."""
     model = session.belief.model
     for name in session.unverified(set(names)):
         if typed(model, name):
-            if name not in session.ever_seen and _retype(session, name):
+            if _retype(session, name):
                 return True
             continue
         if not session.budget.once("inspect", f"glance:{name}"):
@@ -131,10 +131,11 @@ def glance(session: Session, names: Collection[str]) -> bool:
 
 
 def _retype(session: Session, name: str) -> bool:
-    """A keypad setting the display never showed holds the reader's guess of its start value,
-    which the goal happens to ask for: typing the value is the only way to know (a few presses,
-    once). The belief forgets the guess (takes another value of the domain), so the next plan
-    types the asked one and the check sees it. True when it did."""
+    """A keypad setting the display never showed holds the reader's guess of its start value
+    (or was shown only before a press that may have reset it), and the goal asks for what the
+    belief holds: typing the value is the only way to know (a few presses, once). The belief
+    forgets the value (takes another of the domain), so the next plan types the asked one and
+    the check sees it. True when it did."""
     held = session.belief.value(name)
     raw = session.context.goal.get(name)
     try:
@@ -143,6 +144,11 @@ def _retype(session: Session, name: str) -> bool:
         return False
     if asked is None or asked != held:
         return False  # not asked, or the plan types it anyway
+    compiled, state = session.belief.compiled, session.belief.state
+    if any(
+        not g.hide and all(state.values[v] in ok for v, ok in g.conditions) for g in compiled.guards
+    ):
+        return False  # it runs, or the panel is locked: typing would undo that first
     if not session.budget.once("inspect", f"retype:{name}"):
         return False
     other = next((v for v in session.domain_values(name) if v != held), None)
