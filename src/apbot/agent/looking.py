@@ -131,11 +131,11 @@ def glance(session: Session, names: Collection[str]) -> bool:
 
 
 def _retype(session: Session, name: str) -> bool:
-    """A keypad setting the display never showed holds the reader's guess of its start value
-    (or was shown only before a press that may have reset it), and the goal asks for what the
-    belief holds: typing the value is the only way to know (a few presses, once). The belief
-    forgets the value (takes another of the domain), so the next plan types the asked one and
-    the check sees it. True when it did."""
+    """A keypad setting the display never showed holds a default start value (the model
+    states none: the first of its range), or it was shown only before a press that may have
+    reset it, and the goal asks for what the belief holds: typing the value is the only way
+    to know (a few presses, once). The belief forgets the value (takes another of the
+    domain), so the next plan types the asked one and the check sees it. True when it did."""
     held = session.belief.value(name)
     raw = session.context.goal.get(name)
     try:
@@ -144,6 +144,13 @@ def _retype(session: Session, name: str) -> bool:
         return False
     if asked is None or asked != held:
         return False  # not asked, or the plan types it anyway
+    spec = session.belief.model.variables[name]
+    if name in session.ever_seen and name not in session.rechosen:
+        return False  # a doubt of another kind (a programme chosen): a look is not worth it
+    if name not in session.ever_seen and (
+        getattr(spec, "initial", None) is not None or getattr(spec, "cases", None)
+    ):
+        return False  # the model states where it starts: no mere default to doubt
     compiled, state = session.belief.compiled, session.belief.state
     if any(
         not g.hide and all(state.values[v] in ok for v, ok in g.conditions) for g in compiled.guards
@@ -154,6 +161,7 @@ def _retype(session: Session, name: str) -> bool:
     other = next((v for v in session.domain_values(name) if v != held), None)
     if other is None or not session.belief.set_value(name, other):
         return False
+    session.blind.add(name)  # a stand-in, not seen: a screen showing the value is no surprise
     session.episode.log("repair", f"{name}={held!r} was never shown: to be typed")
     return True
 
