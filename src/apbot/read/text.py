@@ -96,7 +96,9 @@ def _clean_chars(text: str) -> str:
 
 def _strip_markup(line: str) -> str:
     line = re.sub(r"\*\*|__|`+", "", line)
-    line = re.sub(r"(?<!\w)\*(?=\S)|(?<=\S)\*(?!\w)", "", line)
+    # a star alone in brackets or quotes is a printed symbol ("the star symbol (*)"), no emphasis
+    alone = r"(?!(?<=[(\"'])\*[)\"'])"
+    line = re.sub(rf"(?<!\w){alone}\*(?=\S)|(?<=\S){alone}\*(?!\w)", "", line)
     line = re.sub(r"^\s*>+\s?", "", line)
     return line
 
