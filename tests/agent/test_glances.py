@@ -243,3 +243,141 @@ def test_a_never_shown_setting_behind_a_dark_panel_is_looked_at_with_the_panel_s
     assert reached, [e.text or e.action for e in episode.trace]
     pressed = [e.action for e in episode.trace if e.kind == "action"]
     assert pressed[:2] == ["press_power", "press_temp"]
+
+
+OVEN = """
+controls: [{id: power}, {id: start}, %(keys)s]
+variables:
+  power_level: {type: numeric, unit: "%%", ranges: [[10, 100, 10]],%(initial)s
+                entry: {format: number, max_digits: 3}, label: P}
+  running: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "*"}}
+actions:
+  press_power: {control: power}
+  press_start: {control: start}
+%(actions)s
+features:
+  set_power_level:
+    - {actions: [press_power]}
+    - {actions: [%(digits)s], variable: power_level}
+  start: [{actions: [press_start], variable: running, effect: {to: "on"}}]
+"""
+
+
+def oven(initial: int | None) -> ApplianceModel:
+    return model_from(
+        OVEN
+        % {
+            "initial": f" initial: {initial}," if initial is not None else "",
+            "keys": ", ".join(f"{{id: k{d}, kind: key}}" for d in range(10)),
+            "actions": "\n".join(f"  press_{d}: {{control: k{d}, digit: {d}}}" for d in range(10)),
+            "digits": ", ".join(f"press_{d}" for d in range(10)),
+        }
+    )
+
+
+def test_a_keypad_setting_never_shown_whose_guessed_start_is_asked_is_typed_anyway() -> None:
+    # the reader read no start value for the power, so the belief starts it at 10 %; it starts
+    # at 100 %. The goal asks for 10 %, which the belief already "holds": typing it is the only
+    # way to be sure
+    episode, reached = run_checked(oven(100), oven(None), {"power_level": 10, "running": "on"})
+    assert reached, [e.text or e.action for e in episode.trace]
+    # a model that states the start value is believed: nothing typed
+    episode, reached = run_checked(oven(10), oven(10), {"power_level": 10, "running": "on"})
+    assert reached and episode.claimed_success and episode.execution_steps == 1
+
+
+def test_a_look_at_a_running_cycle_never_stops_it() -> None:
+    # START's screen was not what the belief expected; STOP would show "running" (moved to
+    # off), but stopping the cycle to look at it undoes it
+    from apbot.agent.looking import route_to_screen
+    from apbot.sim.compiled import CompiledModel
+
+    text = OVEN % {
+        "initial": " initial: 100,",
+        "keys": ", ".join(f"{{id: k{d}, kind: key}}" for d in range(10)) + ", {id: stop}",
+        "actions": "\n".join(f"  press_{d}: {{control: k{d}, digit: {d}}}" for d in range(10))
+        + "\n  press_stop: {control: stop}",
+        "digits": ", ".join(f"press_{d}" for d in range(10)),
+    }
+    text += '  stop: [{actions: [press_stop], variable: running, effect: {to: "off"}}]\n'
+    text += "guards:\n  - {name: running, when: {running: 'on'}, only: [press_stop]}\n"
+    model = model_from(text)
+    compiled = CompiledModel(model)
+    state = compiled.apply(compiled.initial_state(), compiled.action_index["press_start"], 0.2)
+    assert state is not None
+    assert route_to_screen(compiled, state, "running", model.variables, model.actions) is None
+
+
+def test_a_go_to_key_that_showed_what_the_belief_cannot_read_sets_no_unreadable_value() -> None:
+    # the oven shows "*" while it runs, the belief "RUN": START set something unreadable,
+    # which is no value START goes to
+    truth = oven(100)
+    belief = model_from(
+        OVEN.replace('"on": "*"', '"on": RUN')
+        % {
+            "initial": " initial: 100,",
+            "keys": ", ".join(f"{{id: k{d}, kind: key}}" for d in range(10)),
+            "actions": "\n".join(f"  press_{d}: {{control: k{d}, digit: {d}}}" for d in range(10)),
+            "digits": ", ".join(f"press_{d}" for d in range(10)),
+        }
+    )
+    episode, _ = run_checked(truth, belief, {"power_level": 50, "running": "on"})
+    logged = [e.text or "" for e in episode.trace if e.kind == "repair"]
+    assert not any("could not repair press_start" in t for t in logged), logged
+
+
+DEFROST = """
+controls: [{id: defrost}, {id: start}, %(keys)s]
+variables:
+  food: {type: discrete, values: [none, meat, fish], wrap: true, label: dEF}
+  weight:
+    type: numeric
+    unit: g
+    entry: {format: number, max_digits: 4}
+    label: WEIGHT
+%(weight)s
+  running: {type: discrete, values: ["off", "on"], show: {"off": "", "on": RUN}}
+actions:
+  press_defrost: {control: defrost}
+  press_start: {control: start}
+%(actions)s
+features:
+  defrost:
+    - {actions: [press_defrost], variable: food, effect: next}
+    - {actions: [%(digits)s], variable: weight}
+  start: [{actions: [press_start], variable: running, effect: {to: "on"}}]
+"""
+
+
+def defrost(weight: str) -> ApplianceModel:
+    return model_from(
+        DEFROST
+        % {
+            "weight": weight,
+            "keys": ", ".join(f"{{id: k{d}, kind: key}}" for d in range(10)),
+            "actions": "\n".join(f"  press_{d}: {{control: k{d}, digit: {d}}}" for d in range(10)),
+            "digits": ", ".join(f"press_{d}" for d in range(10)),
+        }
+    )
+
+
+def test_choosing_again_what_a_procedure_starts_with_puts_its_later_settings_in_doubt() -> None:
+    # the weight belongs to the food chosen: walking round the foods (and back) brings it back
+    # to the food's own start, though the reader knew nothing of it
+    truth = defrost(
+        "    depends_on: food\n    cases:\n"
+        "      none: {ranges: [[0, 0, 1]]}\n"
+        "      meat: {ranges: [[100, 2000, 10]], initial: 100}\n"
+        "      fish: {ranges: [[100, 1000, 10]], initial: 100}"
+    )
+    belief = defrost("    ranges: [[0, 2000, 10]]")
+    env = SimulatorEnvironment(truth, "display")
+    context = TaskContext("oven", "test", "t", "", {}, belief, actions=tuple(env.actions))
+    s = Session(AgentConfig(), context, env, Budget())
+    s.start()
+    for action in ("press_defrost", "press_5", "press_0", "press_0"):
+        s.press(s.planned(action))
+    assert s.shown("weight") == 500 and s.unverified({"weight"}) == []
+    for _ in range(3):  # round the foods and back to meat
+        s.press(s.planned("press_defrost"))
+    assert s.unverified({"weight"}) == ["weight"]

@@ -733,3 +733,62 @@ def test_a_real_lamp_a_key_failed_to_light_is_kept_and_claims_nothing() -> None:
     episode, reached = run(truth, belief, {"function": "soup", "child_lock": "on"})
     assert episode.claimed_success == reached
     assert not any("has no lamp" in r for r in episode.repairs)
+
+
+WASHER_OPTIONS = """
+controls: [{id: programme}, {id: eco}, {id: rinse}]
+variables:
+  programme: {type: discrete, values: [cotton, wool, quick], wrap: true, label: P}
+  eco: {type: discrete, values: ["off", "on"], label: ECO}
+  rinse: {type: discrete, values: ["off", "on"], label: RINSE+}
+actions:
+  press_programme: {control: programme}
+  press_eco: {control: eco}
+  press_rinse: {control: rinse}
+features:
+  programme: [{actions: [press_programme], variable: programme, effect: next}]
+  eco: [{actions: [press_eco], variable: eco, effect: toggle}]
+  rinse: [{actions: [press_rinse], variable: rinse, effect: toggle}]
+display:
+  idle: "{programme}"
+"""
+
+
+def test_on_off_options_read_as_lamps_are_shown_on_their_own_screens_only() -> None:
+    # the reader took ECO and RINSE+ for lamps lit on every screen; the washer shows each
+    # option only while it is pressed ("RINSE+ on"), so that screen is no sign ECO went off
+    head = "appliance: {id: washer, category: test}\n"
+    truth = loads_model(head + WASHER_OPTIONS)
+    belief = loads_model(head + WASHER_OPTIONS + "  indicators: [eco, rinse]\n")
+    episode, reached = run(truth, belief, {"programme": "wool", "eco": "on", "rinse": "on"})
+    assert reached, episode.failure
+    assert not any("resets it" in r for r in episode.repairs), episode.repairs
+
+
+def test_an_option_lamp_unlit_twice_on_the_running_screen_is_no_reset_by_start() -> None:
+    # the same washer with START: while it runs the screen says RUN only, twice over, where
+    # the belief expected ECO lit too; that is no sign START switched ECO off
+    head = "appliance: {id: washer, category: test}\n"
+    start = (
+        WASHER_OPTIONS.replace("{id: rinse}]", "{id: rinse}, {id: start}]")
+        .replace(
+            "  rinse: {type: discrete, values",
+            '  running: {type: discrete, values: ["off", "on"], show: {"off": "", "on": RUN}}\n'
+            "  rinse: {type: discrete, values",
+        )
+        .replace("actions:\n", "actions:\n  press_start: {control: start}\n", 1)
+        .replace(
+            "features:\n",
+            "features:\n  start: [{actions: [press_start], variable: running, effect: toggle}]\n",
+        )
+        .replace(
+            "display:\n",
+            "guards:\n  - {name: running, when: {running: 'on'}, only: [press_start],"
+            " display: RUN}\ndisplay:\n",
+        )
+    )
+    truth = loads_model(head + start)
+    belief = loads_model(head + start + "  indicators: [eco, rinse]\n")
+    episode, reached = run(truth, belief, {"eco": "on", "running": "on"})
+    assert reached, episode.failure
+    assert not any("resets it" in r for r in episode.repairs), episode.repairs

@@ -28,6 +28,19 @@ def test_the_words_shown_for_running_and_lock_come_from_the_manual():
     assert shown_words("Touch START. RUN appears.", {"START"}) == ["RUN"]
 
 
+def test_an_icon_named_with_its_printed_glyph_shows_the_glyph():
+    # the glyph in brackets after "the ... symbol" is what the screen prints, and a star
+    # alone in brackets is no emphasis mark
+    text = (
+        "Press START to heat.\n\nWhile the grill is heating, other keys are ignored and the sun "
+        "symbol (*) stays lit.\n\n*(Optional)* Press STOP to end.\n"
+    )
+    model = _read(text, ["press_start", "press_stop"])
+    assert model.variables["running"].show == {"off": "", "on": "*"}
+    assert shown_words("the bell symbol (BUZ) lights when the alarm is set") == ["BUZ"]
+    assert shown_words("the bell icon (optional) lights") == ["BELL"]
+
+
 def test_no_sign_of_running_leaves_running_unread_on_the_display():
     model = _read("Press START to begin.", ["press_start"])
     assert model.variables["running"].visible is False

@@ -181,7 +181,8 @@ class Checks:
         effect = self.session.effect(last.pointer, last.action.name)
         if self.session.stepping(last.pointer, last.action.name):
             self.explore(name, last, self.explorer.history(name, last, executed))
-        elif isinstance(effect, GoTo) and observed is not None and not unchanged:
+        elif isinstance(effect, GoTo) and observed not in (None, UNREADABLE) and not unchanged:
+            # (text the belief cannot read is no value the key goes to)
             self.explorer.learn_goto(name, last, observed)
         elif effect == "digit" and observed is not None:
             if self.explorer.learn_entry_format(name, last, observed, unchanged):

@@ -156,23 +156,34 @@ class DisplayLearner:
         "POWER 1000 W" for a lamp). One unlit reading is as well a key that failed to light a
         real lamp, so the lamp goes only after it was unlit on two different displays, and
         only if the repaired belief still has a screen that shows the setting. The setting's
-        value is then the belief's alone until a screen shows it. True when the belief
-        changed, or at the first unlit display (plan again and look once more)."""
+        value is then the belief's alone until a screen shows it. An on/off setting whose lamp
+        is only its label ("ECO") reads "off" where unlit: read so while another setting's
+        screen is up, it is doubted the same way. True when the belief changed, or at the
+        first unlit display (plan again and look once more)."""
         session = self.session
         seen = done.seen
         model = session.belief.model
         if seen is None or seen.unknown or seen.blank or not seen.screens:
             return False
         for name, (predicted, observed) in done.surprises.items():
-            if name not in model.display.indicators or observed is not None or predicted is None:
+            if name not in model.display.indicators or predicted is None:
                 continue
             spec = model.variables[name]
-            lamp = lamp_for(spec, name, predicted, tuple(session.domain_values(name)))
+            domain = tuple(session.domain_values(name))
+            if observed is not None and (
+                spec.show is not None or lamp_for(spec, name, observed, domain)
+            ):
+                # an unlit on/off lamp reads "off": doubted only where the lamp is the label
+                # the belief guessed lit, not a word the manual prints for it ("LOCK")
+                continue
+            lamp = lamp_for(spec, name, predicted, domain)
             if not lamp or lamp.casefold() in seen.text.casefold() or seen.showing(name):
                 continue
             unlit = self._unlit.setdefault(name, set())
             first = not unlit
-            unlit.add(seen.text.strip().casefold())
+            # a lamp that is only the label: two unlit readings, even of one display, suffice
+            guessed = observed is not None
+            unlit.add(seen.text.strip().casefold() + (f"#{len(unlit)}" if guessed else ""))
             if first:
                 # one unlit display: the key may have failed to light a real lamp. Plan again
                 # (once per setting) and see the lamp on the next display before repairing

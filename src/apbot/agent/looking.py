@@ -14,6 +14,7 @@ from collections.abc import Collection
 from typing import TYPE_CHECKING
 
 from apbot.agent.perception import MISSING
+from apbot.model.domain import ValueProblem, normalise
 from apbot.model.effects import default_effect
 from apbot.model.schema import ApplianceModel, GoTo
 from apbot.sim.compiled import CompiledModel, State
@@ -35,7 +36,8 @@ def route_to_screen(
 ) -> list[str] | None:
     """The fewest presses of ``actions`` (at most :data:`MAX_PRESSES`) after which the belief
     shows ``name`` on a lit display and every variable of ``keep`` but ``name`` is unchanged
-    (``still``: ``name`` too); None when there is none within the search's bounds.
+    (``still``, or a state a guard watches: ``name`` too); None when there is none within the
+    search's bounds.
 
     >>> from apbot.examples import load_example
     >>> model = load_example("microwave_keypad")
@@ -48,6 +50,9 @@ def route_to_screen(
     target = compiled.var_index[name]
     kept = [compiled.var_index[n] for n in keep if n != name and n in compiled.var_index]
     model = compiled.model
+    # a state a guard watches (running, a lock, power) never moves for a look: stopping a
+    # cycle to see that it runs undoes it, and a STOP may clear the settings as well
+    still = still or any(name in guard.when for guard in model.guards)
     keys = [
         (compiled.action_index[a], a, model.actions[a].seconds)
         for a in actions
@@ -86,13 +91,18 @@ def glance(session: Session, names: Collection[str]) -> bool:
     looked at only where the look leaves it as it is: moving it would cost a walk round its
     values (and a programme's resets) to settle a doubt; a value never shown is a guess worth
     that step. Not a setting typed on a keypad: its entry key starts a new entry, which may
-    clear what was typed. A never-shown setting behind a dark panel may switch the panel on
-    first. Nor through a key that selects a value or sets others
+    clear what was typed; one whose believed value the goal asks for is typed again instead
+    (:func:`_retype`). A never-shown setting behind a dark panel may switch the panel
+    on first. Nor through a key that selects a value or sets others
     (:func:`selecting`): choosing the programme already chosen resets its settings on many
     appliances. Where no route shows it, the belief is all there is."""
     model = session.belief.model
     for name in session.unverified(set(names)):
-        if typed(model, name) or not session.budget.once("inspect", f"glance:{name}"):
+        if typed(model, name):
+            if _retype(session, name):
+                return True
+            continue
+        if not session.budget.once("inspect", f"glance:{name}"):
             continue
         compiled, state = session.belief.compiled, session.belief.state
         keep = set(model.variables)
@@ -118,6 +128,42 @@ def glance(session: Session, names: Collection[str]) -> bool:
             session.unread.add(name)
         return True
     return False
+
+
+def _retype(session: Session, name: str) -> bool:
+    """A keypad setting the display never showed holds a default start value (the model
+    states none: the first of its range), or it was shown only before a press that may have
+    reset it, and the goal asks for what the belief holds: typing the value is the only way
+    to know (a few presses, once). The belief forgets the value (takes another of the
+    domain), so the next plan types the asked one and the check sees it. True when it did."""
+    held = session.belief.value(name)
+    raw = session.context.goal.get(name)
+    try:
+        asked = normalise(session.belief.model.variables[name], raw) if raw is not None else None
+    except ValueProblem:
+        return False
+    if asked is None or asked != held:
+        return False  # not asked, or the plan types it anyway
+    spec = session.belief.model.variables[name]
+    if name in session.ever_seen and name not in session.rechosen:
+        return False  # a doubt of another kind (a programme chosen): a look is not worth it
+    if name not in session.ever_seen and (
+        getattr(spec, "initial", None) is not None or getattr(spec, "cases", None)
+    ):
+        return False  # the model states where it starts: no mere default to doubt
+    compiled, state = session.belief.compiled, session.belief.state
+    if any(
+        not g.hide and all(state.values[v] in ok for v, ok in g.conditions) for g in compiled.guards
+    ):
+        return False  # it runs, or the panel is locked: typing would undo that first
+    if not session.budget.once("inspect", f"retype:{name}"):
+        return False
+    other = next((v for v in session.domain_values(name) if v != held), None)
+    if other is None or not session.belief.set_value(name, other):
+        return False
+    session.blind.add(name)  # a stand-in, not seen: a screen showing the value is no surprise
+    session.episode.log("repair", f"{name}={held!r} was never shown: to be typed")
+    return True
 
 
 def typed(model: ApplianceModel, name: str) -> bool:

@@ -133,6 +133,14 @@ def press(session: Session, action: PlannedAction, exploring: bool = False) -> E
         # a programme chosen: many appliances bring their settings back to its defaults,
         # whether or not the manual says so: what the display showed of them before is in doubt
         session.doubtful |= set(session.evidence) - seen.shown() - changed
+    if variable in changed - quiet and pointer is not None:
+        # the settings a procedure takes after this choice belong to it (the weight typed for
+        # the food chosen): what the display showed of them before is in doubt
+        steps = model.features.get(pointer[0], [])
+        later = {s.variable for s in steps[pointer[1] + 1 :] if s.variable} - {variable}
+        rechosen = (later & set(session.evidence)) - seen.shown() - changed
+        session.doubtful |= rechosen
+        session.rechosen |= rechosen
     for name in session.guessed_initial:  # its programmes' start values are only guesses
         parent = model.variables[name].depends_on if name in model.variables else None
         if parent is not None and (parent in changed or variable == parent):

@@ -62,6 +62,9 @@ class Session:
         # shown before a press the belief did not predict, not shown since: that press may have
         # changed them too (a CANCEL that also clears the delay), though the belief says not
         self.doubtful: set[str] = set()
+        # of those, settings a procedure takes after a choice made again (the weight typed for
+        # the food chosen): a keypad one is typed again rather than believed
+        self.rechosen: set[str] = set()
         # how often the display moved the belief's state where its own transitions did not go
         self.moved = 0
         self._unshowable: tuple[Any, frozenset[str]] = (None, frozenset())
@@ -136,6 +139,7 @@ class Session:
         self.unread -= set(seen.values) | set(seen.outside) | seen.absent
         self.ever_seen |= set(seen.values) | set(seen.outside) | seen.absent
         self.doubtful -= set(seen.values) | set(seen.outside) | seen.absent
+        self.rechosen -= set(seen.values) | set(seen.outside) | seen.absent
         self.contradicted.update(seen.outside)
         for name in seen.values:
             self.contradicted.pop(name, None)

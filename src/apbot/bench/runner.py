@@ -29,6 +29,7 @@ from apbot.agent.episode import MAX_REASONING_STEPS, Episode, TaskContext, Trace
 from apbot.agent.registry import default_methods, get_method, methods
 from apbot.bench.beliefs import BeliefError, BeliefSpec, belief_model, parse_belief
 from apbot.bench.goals import GoalMode, MethodGoal, method_goal, parse_goal_mode
+from apbot.bench.memory import fits_worse
 from apbot.bench.metrics import summarise
 from apbot.bench.progress import progress as show_progress
 from apbot.bench.provenance import code_version, suite_digest
@@ -267,23 +268,20 @@ def run_task_learning(
     try:
         if chosen.uses_truth:
             model, faults = appliance.model, ()
-        elif learnt is not None:
-            model, faults = learnt, ()
         elif belief_of is not None:
             model, faults = belief_of(spec)
         else:
             model, faults = belief_model(appliance, str(spec), seed)
+        if not chosen.uses_truth:  # the oracle plans on the truth, to the stored goal
+            asked = _asked(goal_mode, model, appliance, task)
+            if learnt is not None:  # the learnt belief, unless it fits the request worse
+                learnt_asked = _asked(goal_mode, learnt, appliance, task)
+                if fits_worse(learnt, learnt_asked, model, asked):
+                    learnt = None
+                else:
+                    model, faults, asked = learnt, (), learnt_asked
         about = facts() if facts is not None and learnt is None and not chosen.uses_truth else None
         digest = about.digest if about is not None else model_digest(model)
-        if not chosen.uses_truth:  # the oracle plans on the truth, to the stored goal
-            asked = method_goal(
-                goal_mode,
-                model,
-                task.instruction,
-                appliance.manual,
-                dict(task.goal),
-                appliance.model,
-            )
     except BudgetSpent:
         raise
     except Exception as exc:
@@ -356,6 +354,15 @@ def run_task_learning(
         learnt_from=index if learnt is not None else 0,
     )
     return record, episode.belief
+
+
+def _asked(
+    mode: GoalMode, model: ApplianceModel, appliance: SuiteAppliance, task: Task
+) -> MethodGoal:
+    """The goal a method working from ``model`` gets for ``task``."""
+    return method_goal(
+        mode, model, task.instruction, appliance.manual, dict(task.goal), appliance.model
+    )
 
 
 def image_environment(appliance: SuiteAppliance, actions: Iterable[str], seed: int) -> Any:

@@ -11,7 +11,8 @@ The heuristic (``apbot.plan.bounds``) is admissible and consistent, so the first
 popped is optimal: the order of macro actions (power before settings, programme before its
 settings, start last) falls out of the search instead of being hard-coded.
 
-The paper's A* kept a constant path cost; ours counts every press.
+The paper's A* kept a constant path cost; ours counts every press. A node's successors (the
+visits one action starts, explored once and cached) are ``apbot.plan.edges``.
 """
 
 from __future__ import annotations
@@ -26,29 +27,19 @@ from typing import Any
 from apbot.plan.abstract import out_of_reach
 from apbot.plan.bounds import LowerBound
 from apbot.plan.distances import INF
+from apbot.plan.edges import CachedVisit, Ends, SearchExhausted, VisitEdges
 from apbot.plan.goals import CompiledGoal
-from apbot.plan.visits import (
-    VisitTooLarge,
-    VisitTree,
-    explore_tree,
-    keypad_exits,
-    keypad_targets,
-)
+from apbot.plan.visits import VisitTree
 from apbot.sim.compiled import DIGIT, CompiledModel, State
 
+__all__ = ["DEFAULT_BUDGET", "SearchExhausted", "SearchResult", "TaskSearch", "Visit"]
+
 DEFAULT_BUDGET = 200_000
-# distinct ends of one visit to one step past which the search gives up (as over budget): every
-# end keeps its path, and a step that stores per-programme values while changing the programme
-# has combinatorially many
-VISIT_LIMIT = 20_000
 # states the search may hold per state of its budget: a node with a thousand-end visit fills
 # memory long before the budget of expanded nodes runs out
 STORED_PER_BUDGET = 2
 # successors the search may generate per state of its budget (each costs a bound evaluation)
 EDGES_PER_BUDGET = 20
-# visit ends the visit cache may hold before it is emptied (a 1,440-minute clock walked one
-# press at a time gives visits of 1,440 ends; an end costs about 200 bytes)
-CACHED_ENDS = 500_000
 # Path cost is lexicographic, packed in one int: presses × PRESS + presses made while a guard
 # keeps the display dark. The plan stays shortest; among equally short plans it prefers to set
 # things where the display shows them, so the closed loop can check what it did.
@@ -61,16 +52,6 @@ ASK_ABSTRACTION_AFTER = 5_000
 PART_WORK = 20_000
 
 
-class SearchExhausted(Exception):
-    """No plan: the reachable space was searched without finding the goal, or the budget ran
-    out. ``expanded`` says how many nodes were expanded."""
-
-    def __init__(self, message: str, expanded: int, budget_hit: bool) -> None:
-        super().__init__(message)
-        self.expanded = expanded
-        self.budget_hit = budget_hit
-
-
 @dataclass(frozen=True)
 class Visit:
     """One visit of the optimal plan: a step id and the actions spent there."""
@@ -78,29 +59,6 @@ class Visit:
     step: int
     actions: tuple[int, ...]
     free: bool = False  # one action that does not move through the pointer (anywhere, wait)
-
-
-# one way out of a visit, cached: (values of the step's writes, buffer, memory, presses, and
-# the presses themselves — an index into the visit's tree, or the presses when it has none)
-Outcome = tuple[tuple[int, ...], str, tuple[int, ...], int, "int | tuple[int, ...]"]
-# a successor: (state, presses, the visit's tree or None, index into it or the presses, free)
-Edge = tuple[State, int, VisitTree | None, "int | tuple[int, ...]", bool]
-# a cached visit: its tree (None: keypad or single presses), outcomes, and per outcome the part
-# of a search key it decides: the relevant written values, and (buffer, what memory keeps)
-CachedVisit = tuple[
-    VisitTree | None, list[Outcome], list[tuple[tuple[int, ...], tuple[Hashable, ...]]]
-]
-
-
-@dataclass(frozen=True)
-class Ends:
-    """The successors one visit gives a node, their states not yet built: most are dropped
-    as no better than a way the search has already found, which their keys alone tell."""
-
-    step: int
-    writes: tuple[int, ...]
-    slots: tuple[int, ...]  # where the relevant writes sit in a search key's projection
-    visit: CachedVisit
 
 
 def _presses(tree: VisitTree | None, way: int | tuple[int, ...]) -> tuple[int, ...]:
@@ -125,12 +83,7 @@ def relevant_variables(compiled: CompiledModel, goal: CompiledGoal) -> list[int]
     return sorted(compiled.influencers(relevant))
 
 
-def _tupled(picked: Any) -> tuple[int, ...]:
-    """What an ``itemgetter`` of one or more items picked, as a tuple."""
-    return picked if isinstance(picked, tuple) else (picked,)
-
-
-class TaskSearch:
+class TaskSearch(VisitEdges):
     """A* from one state to one goal. Build per query; cheap to construct."""
 
     def __init__(
@@ -361,126 +314,3 @@ class TaskSearch:
             visits.append(Visit(step, _presses(tree, way), free))
             link = came_from[previous]
         return tuple(reversed(visits))
-
-    def _edges(self, state: State, may_continue: bool) -> list[Edge | Ends]:
-        """Visits to every step one action reaches (the current step only when ``may_continue``),
-        then each action that acts without the pointer table (anywhere keys, waits) alone."""
-        compiled = self.compiled
-        row = compiled.targets[state.step + 1]
-        by_step: dict[int, list[int]] = {}
-        for action, target in enumerate(row):
-            if target < 0 or (target == state.step and not may_continue):
-                continue
-            if compiled.refusal(state, action) is not None:
-                continue
-            by_step.setdefault(target, []).append(action)
-        edges: list[Edge | Ends] = []
-        for step, entry in by_step.items():
-            edges.extend(self._visit(state, step, entry))
-        for action in compiled.free_actions:
-            after = compiled.apply(state, action)
-            if after is not None and after != state:
-                edges.append((after, 1, None, (action,), True))
-        return edges
-
-    def _visit(self, state: State, step: int, entry: list[int]) -> list[Edge | Ends]:
-        info = self.compiled.steps[step]
-        v = info.variable
-        if v < 0 or v not in self.relevant:
-            after = self.compiled.apply(state, entry[0])
-            return [] if after is None else [(after, 1, None, (entry[0],), False)]
-        reads, writes = self._footprint(step)
-        continuing = state.step == step
-        values = state.values
-        cache_key = (
-            step,
-            tuple(entry),
-            tuple(values[r] for r in reads),
-            state.buffer if continuing else "",
-            continuing,
-            state.memory,  # a programme change takes back what a setting kept
-        )
-        cached = self._visit_cache.get(cache_key)
-        if cached is None:
-            written = itemgetter(*writes)
-            outcomes: list[Outcome]
-            tree: VisitTree | None = None
-            if self.keypad_step[step]:
-                exits = keypad_exits(self.compiled, state, step, entry, self._targets_for(v))
-                outcomes = [
-                    (_tupled(written(after.values)), after.buffer, after.memory, len(path), path)
-                    for after, path in exits
-                ]
-            else:
-
-                def inner_key(s: State) -> Hashable:
-                    # what remembered settings keep tells two ends of a visit apart too (a
-                    # press stored a value for the programme its side effect then left)
-                    return (written(s.values), s.buffer, s.memory)
-
-                try:
-                    tree = explore_tree(
-                        self.compiled, state, step, entry, inner_key, limit=VISIT_LIMIT
-                    )
-                except VisitTooLarge:
-                    raise SearchExhausted("budget", self.budget, True) from None
-                outcomes = [
-                    (_tupled(written(after.values)), after.buffer, after.memory, length, i)
-                    for i, (after, length) in enumerate(zip(tree.ends, tree.lengths, strict=True))
-                ]
-                tree.ends = []  # the paths are all the cache needs of it
-            self._cached_ends += len(outcomes)
-            if self._cached_ends > CACHED_ENDS:  # a cache, not a store: start afresh
-                self._visit_cache.clear()
-                self._cached_ends = 0
-            picks, _ = self._key_slots(step)
-            keypad = self.keypad_step[step]
-            keyed: list[tuple[tuple[int, ...], tuple[Hashable, ...]]] = [
-                (
-                    tuple(changed[i] for i in picks),
-                    (buffer if keypad else "", tuple(memory[m] for m in self._memory))
-                    if self._memory
-                    else (buffer if keypad else "",),
-                )
-                for changed, buffer, memory, _, _ in outcomes
-            ]
-            cached = (tree, outcomes, keyed)
-            self._visit_cache[cache_key] = cached
-        return [Ends(step, writes, self._key_slots(step)[1], cached)]
-
-    def _key_slots(self, step: int) -> tuple[tuple[int, ...], tuple[int, ...]]:
-        """For a visit to ``step``: which of its writes are relevant (indices into the
-        writes), and where each sits in a search key's projection of the values."""
-        found = self._slots.get(step)
-        if found is None:
-            _, writes = self._footprint(step)
-            position = {v: i for i, v in enumerate(self.relevant)}
-            picks = tuple(i for i, w in enumerate(writes) if w in position)
-            found = (picks, tuple(position[writes[i]] for i in picks))
-            self._slots[step] = found
-        return found
-
-    def _footprint(self, step: int) -> tuple[tuple[int, ...], tuple[int, ...]]:
-        """What a visit to ``step`` can change (its variable, side effects, the settings that
-        depend on those) and what its outcome depends on (those, their programmes, guards).
-        Visits are cached on the latter, so other variables never force a re-exploration."""
-        cached = self._footprints.get(step)
-        if cached is None:
-            compiled = self.compiled
-            info = compiled.steps[step]
-            writes = {info.variable} | {target for target, _ in info.side}
-            writes |= {d for w in list(writes) for d in compiled.dependents.get(w, ())}
-            reads = set(writes) | {
-                compiled.vars[w].parent for w in writes if compiled.vars[w].parent >= 0
-            }
-            reads |= {v for guard in compiled.guards for v, _ in guard.conditions}
-            reads |= compiled.condition_variables(info)  # a conditional effect's branch
-            cached = (tuple(sorted(reads)), tuple(sorted(writes)))
-            self._footprints[step] = cached
-        return cached
-
-    def _targets_for(self, v: int) -> list[float]:
-        """Values worth typing into keypad variable ``v`` (see :func:`keypad_targets`)."""
-        if v not in self._keypad_targets:
-            self._keypad_targets[v] = keypad_targets(self.compiled, self.goal, v)
-        return self._keypad_targets[v]

@@ -34,6 +34,7 @@ from apbot.read.values import (
     number,
     rescale,
     seconds,
+    split_range,
     unit_name,
 )
 
@@ -274,7 +275,9 @@ class Builder(EvidenceReader):
             self.note(subject, "a clock: the time of day (its range is the clock's, not read)")
             ranges = [Range(low, high, "s", 60)]
         elif (found := self._range_anywhere(name, label)) is not None:
-            ranges = [found[0]]
+            at = found[1]
+            said = [] if at is None else [u.text for u in self.manual.units[at : at + 3]]
+            ranges = split_range(found[0], said, label) or [found[0]]
             r0 = found[0]
             self.note(
                 subject, f"range {r0.low:g}–{r0.high:g} {r0.unit} (named elsewhere)", found[1]

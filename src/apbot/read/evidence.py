@@ -19,6 +19,7 @@ from apbot.read.evidence_checks import (
     _with_every,
     _with_midpoints,
     _without_only,
+    lettered_row,
 )
 from apbot.read.evidence_lists import ListReader
 from apbot.read.labels import words
@@ -45,12 +46,14 @@ from apbot.read.values import (
     EACH_PRESS_RE,
     ON_OFF_RE,
     Range,
+    find_arrow_pieces,
     find_bounds,
     find_initial,
     find_ranges,
     find_step,
     find_stepped_pieces,
     find_two_steps,
+    seconds,
 )
 
 
@@ -121,6 +124,8 @@ class EvidenceReader(ListReader, AnywhereReader):
             for items, prio in lists:
                 if _keyish(items, others, own):
                     continue  # a list of keys ("DELAY, then + / −"), not of values
+                if len(items) >= 3 and any(v.upper().strip(" .") in own for v in items):
+                    continue  # "NORMAL → CONT. → FAN" near FAN: a list with a mode named FAN
                 lamps = LAMP_LIST_RE.match(text)
                 if lamps and not set(words(lamps.group(0))) & {
                     w for t in tokens for w in words(t.replace("_", " "))
@@ -151,6 +156,9 @@ class EvidenceReader(ListReader, AnywhereReader):
             if unit.cells:  # "| 1 – 2 |" then "| 3 – 4 |" … "| 9 – 10 |": groups of one setting
                 ranges = [_rows_span(units, i, r) for r in ranges]
             pieces = find_stepped_pieces(text) if ranges and not ev.ranges else []
+            arrows = find_arrow_pieces(text)  # "1 h → … → 12 h one hour per press 12 h → …"
+            if arrows and _fits("s", tokens) and _covers(arrows, ev.ranges):
+                pieces, ev.ranges = arrows, []
             if pieces and _fits("s", tokens):  # "0:30 – 12:00 30 minutes 12:00 – 24:00 1 hour"
                 ev.ranges, ev.range_at = pieces, i
             elif ranges and not ev.ranges:
@@ -242,6 +250,12 @@ class EvidenceReader(ListReader, AnywhereReader):
                     if counted and self.labels[alone[0]].line is not None:
                         best, best_prio, ev.values_at = counted[0][0], 2.6, i
                         break
+        if best_prio < 2.4:  # "B | Temperature key" and "B:  90   60   40   30   COLD"
+            key_words = {w for t in tokens for w in words(t.replace("_", " "))}
+            key_words |= {w for t in tokens if t in self.labels for w in words(self.labels[t].text)}
+            lettered = lettered_row(units, key_words)
+            if lettered:
+                best, best_prio, ev.values_at = lettered[0], 2.4, lettered[1]
         if best_prio < 1.85:  # "Drying-time settings available: 10 · 20 · 30 · 60 min."
             for i, unit in enumerate(units):
                 led = None if _aside(units, i) else self._led_list(unit, tokens)
@@ -283,8 +297,9 @@ class EvidenceReader(ListReader, AnywhereReader):
             best = None if _where_it_applies(best, shown) else _without_only(best) or None
         choice = bool({w for t in tokens for w in words(t.replace("_", " "))} & CHOICE_WORDS)
         if best is None or (_numeric_items(best) and (len(best) < 3 or choice)):
-            # two numbers are a range, not a list; a programme key's list is of names
-            column = self._table_column(tokens)
+            # two numbers are a range, not a list; a programme key's list is of names (but
+            # codes it lists, "MENU 1 … MENU 15", stay codes beside a numbered chart)
+            column = self._table_column(tokens, numbered=best is None or len(best) < 3)
             if column:
                 best, ev.values_at = column, self._table_at
             elif best is not None and len(best) < 3:
@@ -323,6 +338,7 @@ class EvidenceReader(ListReader, AnywhereReader):
                     best = _with_every(best, int(top))
                     break
         if best is not None:
+            best = _without_own_name(best, own)
             ev.values = best if _numeric_items(best) else [v.lower() for v in best]
             self._initial_from_values(ev, tokens)
         return ev
@@ -373,3 +389,28 @@ def _presses_another(text: str, others: list[str], own: set[str]) -> bool:
     symbols = [*others, *("+", "-", "–", "▲", "▼")]
     named = any(re.search(rf"(?<!\w){re.escape(o)}(?!\w)", text, re.I) for o in own if o)
     return pressed(symbols) and not named  # ("Press WASH, RINSE or SPIN": RINSE's too)
+
+
+def _without_own_name(items: list[str], own: set[str]) -> list[str]:
+    """Values quoted as the display prints them, the key's own name in front of each ("The
+    display reads COLOR 1, COLOR 2 or COLOR 3." for COLOR): the values are what follows it."""
+    for name in own:
+        if not name or len(items) < 2:
+            continue
+        lead = re.compile(rf"^{re.escape(name)}\s+(\S.*)$", re.IGNORECASE)
+        rest = [lead.match(item.strip()) for item in items]
+        if all(rest):
+            return [m.group(1) for m in rest if m]
+    return items
+
+
+def _covers(pieces: list[Range], ranges: list[Range]) -> bool:
+    """Whether pieces read later span at least what was read before (none, or one range that
+    lies inside them: "1 – 12 h" beside "1 h → … → 12 h, 12 h → … → 24 h")."""
+    if not ranges:
+        return True
+    if any(r.unit not in ("s", "min", "h") for r in ranges):
+        return False
+    low = min(seconds(r.low, r.unit) for r in ranges)
+    high = max(seconds(r.high, r.unit) for r in ranges)
+    return pieces[0].low <= low and high <= pieces[-1].high and len(pieces) > len(ranges)

@@ -10,6 +10,7 @@ import itertools
 import math
 import re
 
+from apbot.read.labels import words
 from apbot.read.text import Unit
 from apbot.read.values import UNIT, Range, number, unit_name
 
@@ -155,3 +156,26 @@ def _with_every(items: list[str], top: int) -> list[str]:
     nums = sorted({int(m.group(1)) for m in parsed if m} | set(range(top + 1)))
     unit = next((m.group(2) for m in parsed if m and m.group(2)), "")
     return [f"{v}" + (f" {unit}" if unit else "") for v in nums]
+
+
+def lettered_row(units: list[Unit], names: set[str]) -> tuple[list[str], int] | None:
+    """The row of marks printed over a key that a legend names by a letter ("| B | Temperature
+    key | …" and "The lamp rows over keys B and C read: B:  90   60   40   COLD  C:  1400 …"):
+    the marks after its letter, split at wide gaps, glosses in brackets dropped; and the unit
+    they stand in. ``names`` are the key's words (action word, printed label)."""
+    for row in units:
+        if len(row.cells) < 2 or not row.header or not re.fullmatch(r"[A-Z]", row.cells[0]):
+            continue
+        first = (words(row.cells[1]) or [""])[0]
+        if len(first) < 3 or not any(first[:4] == n[:4] for n in names if len(n) >= 3):
+            continue
+        marks = re.compile(rf"(?<![\w.]){row.cells[0]}:\s+(.+?)(?=\s+[A-Z]:\s|$)")
+        for k, unit in enumerate(units):
+            m = None if unit.cells else marks.search(unit.text)
+            if not m:
+                continue
+            items = [re.sub(r"\s*\([^)]*\)", "", c).strip() for c in re.split(r"\s{2,}", m[1])]
+            items = [i for i in items if i]
+            if len(items) >= 3 and all(len(i) <= 20 for i in items):
+                return items, k
+    return None

@@ -9,6 +9,8 @@ from apbot.model.values import NUMBER_WORDS
 from apbot.read.actions import ActionInfo
 from apbot.read.labels import Label, words
 from apbot.read.shapes import (
+    CHOICE_WORDS,
+    GROUP_NOUNS,
     ORDER_RE,
     PRESSES_RE,
     QUANTITY_FAMILIES,
@@ -38,6 +40,10 @@ from apbot.read.values import number
 _TYPING_WORDS = frozenset({"type", "typed", "typing", "digits", "keystrokes", "keyed"})
 _KEY_WORDS = frozenset({"key", "keys", "button", "buttons", "number", "numbers"})
 _PRESS_WORDS = frozenset({"press", "pressed", "touch", "touched", "enter", "entered", "input"})
+
+
+# the head of a chart's first column numbering its rows ("No.", "Nr.", "#", "Prog. no.")
+_NUMBER_HEAD_RE = re.compile(r"^\W*(?:(?:prog\w*\.?\s*)?(?:no|nr|n°|number)\.?|#)\W*$", re.I)
 
 
 _COUNTED_RE = re.compile(  # "has seven positions", "with 12 settings" (read by ``number``)
@@ -367,8 +373,9 @@ class ListReader:
 
     _table_at: int | None = None
 
-    def _table_column(self, tokens: list[str]) -> list[str] | None:
-        """The first column of a table headed by the control's own word (a programme table)."""
+    def _table_column(self, tokens: list[str], numbered: bool = True) -> list[str] | None:
+        """The first column of a table headed by the control's own word (a programme table);
+        with ``numbered``, also a numbered chart's programme column."""
         tw = {w for t in tokens for w in words(t.replace("_", " ")) if len(w) >= 4}
         tw |= {
             w for t in tokens if t in self.labels for w in words(self.labels[t].text) if len(w) >= 4
@@ -376,8 +383,12 @@ class ListReader:
         if not tw:
             return None
         units = self.manual.units
+        choice = bool(tw & CHOICE_WORDS)
         for i, unit in enumerate(units):
             if unit.cells and not unit.header:  # a header row
+                chart = self._numbered_chart(i, tw, choice) if numbered else None
+                if chart:
+                    return chart
                 if any(re.search(r"\d", c) for c in unit.cells[1:]):
                     continue  # "Power supply | 230 V": a row of data read as a header
                 hw = words(unit.cells[0])
@@ -387,6 +398,27 @@ class ListReader:
                         self._table_at = i
                         return column
         return None
+
+    def _numbered_chart(self, i: int, tw: set[str], choice: bool) -> list[str] | None:
+        """A chart whose header at unit ``i`` starts with a number column ("| No. | Programme |
+        For | Time |", rows "| 1 | BASIC | …"): its second column, when headed by the key's own
+        word, or by any programme word for a key that chooses a programme (MENU, PROG)."""
+        units = self.manual.units
+        cells = units[i].cells
+        if len(cells) < 3 or not _NUMBER_HEAD_RE.match(cells[0]) or re.search(r"\d", cells[1]):
+            return None
+        hw = words(cells[1])
+        if not any(h[:6] == w[:6] for h in hw for w in tw) and not (
+            choice and set(hw) & set(GROUP_NOUNS)
+        ):
+            return None
+        rows = [u for u in units[i + 1 : i + 4] if u.header == cells]
+        if len(rows) < 2 or not all(re.fullmatch(r"\d{1,2}[.)]?", r.cells[0]) for r in rows):
+            return None
+        column = _next_table_column(units, i - 1, 1)
+        if column:
+            self._table_at = i
+        return column or None
 
     def _initial_from_values(self, ev: Evidence, tokens: list[str]) -> None:
         if ev.initial is not None or not ev.values:

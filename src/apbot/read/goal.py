@@ -29,13 +29,21 @@ from __future__ import annotations
 from apbot.model.domain import ValueProblem, normalise
 from apbot.model.schema import ApplianceModel, DiscreteVariable
 from apbot.model.values import closest_matches, preview
-from apbot.read.goal_assign import assign_mentions, distinct
+from apbot.read.goal_assign import assign_mentions, distinct, in_weeks
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
 from apbot.read.goal_scales import superlatives
 from apbot.read.goal_spelling import joined_compounds
 from apbot.read.goal_start import power_and_running
-from apbot.read.goal_switches import boil, entry_switches, no_values, switches, zero_settings
+from apbot.read.goal_switches import (
+    boil,
+    entry_switches,
+    no_values,
+    off_levels,
+    self_switching_off,
+    switches,
+    zero_settings,
+)
 from apbot.read.goal_text import Text
 from apbot.read.goal_twins import place_twins
 from apbot.read.goal_view import Goal, Model, model_view
@@ -87,12 +95,14 @@ def parse_instruction(
         claimed.update(range(match.start, match.end))
     restated_codes(view, text, goal, claimed)
     pronoun_ones(text, claimed)
-    mentions = distinct(find_mentions(text.tokens, skip=claimed))
+    mentions = distinct(in_weeks(text, find_mentions(text.tokens, skip=claimed)))
     counting = assign_mentions(view, text, mentions, goal, claimed, where, outside)
     superlatives(view, text, goal, claimed, where)
     zero_settings(view, text, goal, claimed, where)
+    off_levels(view, text, goal, claimed)
     no_values(view, text, goal, claimed)
     switches(view, text, goal, claimed, where)
+    self_switching_off(view, text, goal, claimed)
     place_twins(view, text, goal, where)
     entry_switches(view, goal)
     boil(view, text, goal)

@@ -3,6 +3,7 @@ best; a quantity no setting of its kind takes is refused (or kept as said, for a
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import Any
 
 from apbot.model.schema import NumericVariable, TimeVariable
@@ -14,6 +15,31 @@ from apbot.read.goal_values import unit_text
 from apbot.read.goal_view import Goal, Model, VarInfo, domain_values, own_stems
 from apbot.read.goal_vocab import concept, stem
 from apbot.read.numbers import Mention
+
+_WEEKS = {"week": 7, "weeks": 7, "wk": 7, "wks": 7, "fortnight": 14, "fortnights": 14}
+_NOT_COUNTED = frozenset({"month", "months", "year", "years", "yr", "yrs"})
+
+
+def in_weeks(text: Text, mentions: list[Mention]) -> list[Mention]:
+    """ "two weeks", "a fortnight" are durations of 14 days (not a bare 2); a number of months
+    or years is no setting's value (a "two-year-old", "twice a year")."""
+    out: list[Mention] = []
+    covered = {k for m in mentions for k in range(m.start, m.end)}
+    for mention in mentions:
+        unit = text.word(mention.end + (text.word(mention.end) == "-"))
+        if mention.kind == "number" and unit in _NOT_COUNTED:
+            continue
+        if mention.kind == "number" and unit in _WEEKS:
+            days = mention.value * _WEEKS[unit]
+            end = mention.end + 1 + (text.word(mention.end) == "-")
+            mention = replace(mention, kind="duration", value=days * 86400, end=end)
+            mention = replace(mention, dimension="time", unit="")
+        out.append(mention)
+    for k, token in enumerate(text.tokens):  # "a week", "one fortnight": no number of its own
+        if token.text in _WEEKS and k - 1 not in covered and text.word(k - 1) in ("a", "one"):
+            days = 86400.0 * _WEEKS[token.text]
+            out.append(Mention("duration", days, k - 1, k + 1, "time", words=True))
+    return sorted(out, key=lambda m: m.start)
 
 
 def distinct(mentions: list[Mention]) -> list[Mention]:
@@ -53,13 +79,16 @@ def assign_mentions(
             if value is None:
                 continue
             score = near_vocab(info, text, mention.start, mention.end)
+            by = info.timing == "finish" and mention.kind == "clock" and mention.lead == "by"
             if info.timing in ("clock", "finish") and not near_vocab(
                 info, text, mention.start, mention.end, reach=12
             ):
-                named = info.timing == "clock" and concept("clock") in text.concepts
-                if not (named and mention.kind == "clock"):
+                named = info.timing == "clock" and (
+                    concept("clock") in text.concepts or _time_named(text, mention)
+                )
+                if not ((named or by) and mention.kind == "clock"):
                     continue  # a time of day sets the clock only when the clock is named
-            score += _cue_bonus(info, text, mention)
+            score += _cue_bonus(info, text, mention) + (0.5 if by else 0.0)
             options.append((score, -info.order, mi, name, value))
     options.sort(key=lambda o: (-o[0], -o[1]))
     used: set[int] = set()
@@ -91,6 +120,16 @@ def assign_mentions(
                 where[exc.setting] = mention.start
                 outside.append(str(exc))
     return counting
+
+
+def _time_named(text: Text, mention: Mention) -> bool:
+    """ "set the time to 9:05 pm", "the correct time is 7:15": the time of day, i.e. the clock."""
+    for j in range(mention.start - 1, max(-1, mention.start - 4), -1):
+        if text.word(j) == "time":
+            return text.word(j - 1) in ("the", "correct", "right", "current", "exact")
+        if text.word(j) not in ("to", "is", "as", "at", "now", ":"):
+            return False
+    return False
 
 
 def _clock_parts(view: Model, text: Text, mention: Mention, goal: Goal) -> bool:

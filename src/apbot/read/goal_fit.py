@@ -7,8 +7,8 @@ import re
 from typing import Any
 
 from apbot.model.schema import NumericVariable, TimeVariable
-from apbot.model.values import format_hms, unit_of
-from apbot.read.goal_values import parse_quantity, unit_text
+from apbot.model.values import format_hms
+from apbot.read.goal_values import parse_quantity, unit_kind, unit_text
 from apbot.read.goal_view import Goal, Model, VarInfo, domain_values
 from apbot.read.goal_vocab import concept
 from apbot.read.numbers import Mention, find_mentions, tokenize
@@ -73,6 +73,7 @@ def fit(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
             return value
     return (
         _coded(domain, mention)
+        or _coded_show(info, domain, mention)
         or _show_quantity(info, mention)
         or _named_quantity(view, info, mention, domain)
     )
@@ -86,6 +87,19 @@ def _coded(domain: list[Any], mention: Mention) -> Any:
     if mention.kind != "number" or mention.value != int(mention.value):
         return None
     found = [v for v in domain if (m := CODE.fullmatch(str(v))) and int(m[1]) == mention.value]
+    return found[0] if len(found) == 1 else None
+
+
+def _coded_show(info: VarInfo, domain: list[Any], mention: Mention) -> Any:
+    """ "programme 4" for the value the display shows as P4 (a name the panel codes)."""
+    show = info.var.show if isinstance(info.var.show, dict) else {}
+    if not show:
+        return None
+    shown = {v: show[str(v)] for v in domain if str(v) in show and "{" not in show[str(v)]}
+    codes = [v for v, text in shown.items() if CODE.fullmatch(text.strip())]
+    if len(codes) < 2 or len(codes) < len(shown) - 1:
+        return None  # not a coded list ("ICE CREAM", "GELATO")
+    found = [v for v in codes if _coded([show[str(v)].strip()], mention) is not None]
     return found[0] if len(found) == 1 else None
 
 
@@ -145,7 +159,7 @@ def _named_quantity(view: Model, info: VarInfo, mention: Mention, domain: list[A
 
 def number_for(info: VarInfo, unit: str, mention: Mention) -> float | None:
     """The mention as a number in ``unit`` (None when the dimensions differ)."""
-    target = unit_of(unit) if unit else None
+    target = unit_kind(unit) if unit else None
     if mention.kind == "number":
         return mention.value
     if mention.kind == "duration":

@@ -205,21 +205,35 @@ def legend_words(
     out: dict[str, set[str]] = {}
     if not manual:
         return out
-    lines = [line.strip().strip("|*-• ").strip() for line in manual.splitlines()]
+    raw = manual.splitlines()
+    lines = [line.strip().strip("|*-• ").strip() for line in raw]
     for name, keys in labels.items():
         for label in keys:
             if len(label) < 3 or not label.isupper():
                 continue
             pattern = re.compile(rf"^{re.escape(label)}(?:\s{{2,}}|\s*[:|–—]\s*)(.+)$")
-            for line in lines:
+            for index, line in enumerate(lines):
                 found = pattern.match(line)
                 if found is None:
                     continue
-                sentence = re.split(r"[.;(]", found[1])[0]
-                thing = re.search(r"([A-Za-z]{4,})\s+on\s*(?:and|or|/)\s*off\b", sentence)
-                if thing is not None and thing[1].casefold() not in _LEGEND_VERBS:
-                    out.setdefault(name, set()).add(thing[1].casefold())
+                sentences = re.split(r"[.;(]", _continued(found[1], raw, index))
+                held = [x for x in sentences[1:] if re.search(r"\b(?:hold|held)\b", x, re.I)]
+                for sentence in sentences[:1] + held:  # a later one: the key's hold
+                    thing = re.search(r"([A-Za-z]{4,})\s+on\s*(?:and|or|/)\s*off\b", sentence)
+                    if thing is not None and thing[1].casefold() not in _LEGEND_VERBS:
+                        out.setdefault(name, set()).add(thing[1].casefold())
     return out
+
+
+def _continued(text: str, raw: list[str], index: int) -> str:
+    """A legend's description with its indented continuation lines ("COOK TIME  Sets the time.
+    Press and hold for / (indented) 3 seconds to switch the sound on or off"): a key's second
+    use, a hold, is often said in the legend's next sentence."""
+    for line in raw[index + 1 : index + 4]:
+        if not line.strip() or not line.startswith("  "):
+            break
+        text += " " + line.strip()
+    return text
 
 
 _NOT_HEADS = frozenset(

@@ -20,7 +20,7 @@ from apbot.read.goal_text import (
     verb_positions,
 )
 from apbot.read.goal_view import PARTIAL, Goal, Model, own_stems
-from apbot.read.goal_vocab import HIGHEST, LOWEST, SYNONYMS, similar, stem
+from apbot.read.goal_vocab import HIGHEST, LOWEST, SCALES, SYNONYMS, similar, stem
 from apbot.read.numbers import COUNT_NOUNS
 
 
@@ -72,6 +72,8 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
             score = len(stems) * weight * quality + 0.5 * own
             if i in verbs and len(stems) == 1:
                 score *= 0.5  # "bake a French loaf": the verb is weaker than the noun
+            if len(stems) == 1 and _scale_head(text, i):
+                continue  # "medium-rare", "low-fat": a degree of something else
             if len(stems) == 1 and _compound_tail(text, i):
                 score *= 0.5  # "air-dry", "sterilise-and-dry": the end of another word
             matches.append(_Match(var, value, i, end, score))
@@ -83,6 +85,18 @@ def _compound_tail(text: Text, i: int) -> bool:
     """The word at i ends a hyphenated compound whose first part the match leaves out: "I'll
     air-dry them" is no DRY programme, the automatic "sterilise-and-dry" programme no DRY."""
     return text.word(i - 1) == "-" and text.word(i - 2).isalpha()
+
+
+_SCALE_WORDS = frozenset(w for scale in SCALES for w in scale) | LOWEST | HIGHEST
+
+
+def _scale_head(text: Text, i: int) -> bool:
+    """A scale word that opens a hyphenated compound with a word off the scale ("a medium-rare
+    steak", "low-fat milk") grades that word; it names no level ("medium-high" still does)."""
+    if text.word(i) not in _SCALE_WORDS or text.word(i + 1) != "-":
+        return False
+    after = text.word(i + 2)
+    return after.isalpha() and after not in _SCALE_WORDS
 
 
 def _names_switch(view: Model, var: str, text: Text, i: int) -> bool:
@@ -206,6 +220,8 @@ def _match_at(text: Text, i: int, stems: tuple[str, ...]) -> tuple[int, float] |
             quality = min(quality, 0.9)
         elif here in _SYNONYM_STEMS.get(target, ()):
             quality = min(quality, 0.8)
+        elif len(stems) > 1 and len(target) >= 3 and _abbreviated_synonym(target, here):
+            quality = min(quality, 0.7)  # "steam-and-dry" for STER+DRY (sterilise: steam)
         elif (
             len(target) >= 4
             and here.startswith(target)
@@ -226,6 +242,15 @@ def _match_at(text: Text, i: int, stems: tuple[str, ...]) -> tuple[int, float] |
 
 
 _SPLIT_VERBS = frozenset({stem("keep")})
+
+
+def _abbreviated_synonym(short: str, word: str) -> bool:
+    """``short`` cuts one word of a synonym group short ("ster" of sterilise) that ``word``
+    belongs to ("steam")."""
+    return any(
+        key.startswith(short) and key != short and word in others
+        for key, others in _SYNONYM_STEMS.items()
+    )
 
 
 _SYNONYM_STEMS: dict[str, frozenset[str]] = {

@@ -6,9 +6,10 @@ from __future__ import annotations
 from typing import Any
 
 from apbot.model.schema import DiscreteVariable, NumericVariable, TimeVariable
-from apbot.read.goal_text import Text, near_vocab
+from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab
 from apbot.read.goal_twins import find_twins
 from apbot.read.goal_values import (
+    OFF_WORDS,
     generic,
     magnitude,
     numeric_values,
@@ -33,6 +34,10 @@ def superlatives(
             end = 0
         elif word in HIGHEST:
             end = -1
+        reach = 4
+        compared = _as_as(text, k)
+        if end is None and compared is not None:
+            end, reach = compared
         scale_index = None
         for scale in SCALES:
             said = "medium" if word in ("middle", "mid", "med") else word
@@ -40,6 +45,8 @@ def superlatives(
                 scale_index = (scale.index(said), len(scale))
         if end is None and scale_index is None:
             continue
+        if end is not None and _restates(text, k):
+            continue  # "at the maximum of 75 °C": the quantity says it, for its own setting
         if end is not None and _names_set(view, text, k, goal):
             continue  # "the lowest humidity setting, 40%": said of a setting already read
         best: tuple[float, str] | None = None
@@ -49,7 +56,9 @@ def superlatives(
             values = domain_values(view, info, goal)
             if scale_index is not None and end is None and len(values) != scale_index[1]:
                 continue
-            score = near_vocab(info, text, k, k + 1, reach=4)
+            score = near_vocab(info, text, k, k + 1, reach=reach)
+            if _ladder(info.values) and not _beside(info, text, k, reach):
+                continue  # named levels are a weak order: only "the most steam" says it
             if score > 0 and (best is None or score > best[0]):
                 best = (score, name)
         if best is None:
@@ -58,7 +67,10 @@ def superlatives(
         values = _ordered_values(domain_values(view, view.infos[name], goal))
         if not values:
             continue
-        if end == 0 and len(values) > 2 and _is_off_level(view.infos[name], values[0]):
+        off_first = (len(values) > 2 and _is_off_level(view.infos[name], values[0])) or (
+            len(values) > 1 and bool(_ladder(values))
+        )
+        if end == 0 and off_first:
             goal[name] = values[1]  # "the lowest level": the lowest one that works, not off
         elif end is not None:
             goal[name] = values[end]
@@ -66,6 +78,44 @@ def superlatives(
             goal[name] = values[scale_index[0]]
         where[name] = k
         claimed.add(k)
+
+
+_MORE = frozenset({"much", "many", "high", "hot", "long", "strong", "fast", "big", "loud"})
+_LESS = frozenset({"little", "few", "low", "cool", "short", "weak", "slow", "small", "quiet"})
+_AMOUNTS = frozenset({"much", "many", "little", "few"})
+
+
+def _as_as(text: Text, k: int) -> tuple[int, int] | None:
+    """ "as much steam as it can give", "the fan as low as it goes": an end of the scale (-1
+    the top, 0 the bottom) when a second "as" closes the comparison, and how far the setting's
+    words may stand (between the two for "much": "as much as it allows" names nothing)."""
+    word = text.word(k)
+    if text.word(k - 1) != "as" or word not in _MORE | _LESS:
+        return None
+    for j in range(k + 1, min(k + 5, len(text.tokens))):
+        if text.word(j) in CLAUSE_ENDS or text.word(j) == ",":
+            return None
+        if text.word(j) == "as":
+            end = -1 if word in _MORE else 0
+            return end, (j - k - 1 if word in _AMOUNTS else 2)
+    return None
+
+
+def _restates(text: Text, k: int) -> bool:
+    """ "the maximum of 75 °C", "its lowest, 40 %": a number right after the superlative."""
+    j = k + 1
+    if text.word(j) in ("of", ",", ":", "-", "("):
+        j += 1
+    return text.word(j)[:1].isdigit()
+
+
+def _beside(info: VarInfo, text: Text, k: int, reach: int) -> bool:
+    """The setting's own word follows the superlative closely ("maximum steam", "as much
+    steam as"), not a word of it somewhere around ("the full load, with steam")."""
+    if text.word(k) in ("full", "top"):
+        return False
+    ahead = range(k + 1, min(k + 1 + min(reach, 2), len(text.tokens)))
+    return any(info.vocab.get(text.concepts[j], 0.0) >= 0.8 for j in ahead)
 
 
 def _names_set(view: Model, text: Text, k: int, goal: Goal) -> bool:
@@ -94,8 +144,19 @@ def _ordered(info: VarInfo) -> bool:
             numeric_values(info.values)
             or bool(quantity_dimensions(info.values))
             or len(_scaled(info.values)) >= 2
+            or len(_ladder(info.values)) >= 2
         )
     )
+
+
+def _ladder(values: list[Any]) -> list[Any]:
+    """Named levels that start with OFF ("off", "eco", "normal", "turbo"): a scale of strength
+    listed from nothing up, so the last is the most (empty when the values are not that)."""
+    if len(values) < 2 or str(values[0]).casefold() not in (*OFF_WORDS, "none"):
+        return []
+    if any(parse_quantity(str(v)) is not None for v in values) or _scaled(values):
+        return []
+    return list(values)
 
 
 def _scaled(values: list[Any]) -> list[Any]:
@@ -117,4 +178,6 @@ def _ordered_values(values: list[Any]) -> list[Any]:
     sized = [(q[0], v) for v in values if (q := parse_quantity(str(v))) is not None]
     if len(sized) < 2 and _scaled(values):
         return _scaled(values)
+    if len(sized) < 2 and _ladder(values):
+        return _ladder(values)
     return [v for _size, v in sorted(sized, key=lambda pair: pair[0])]

@@ -39,6 +39,9 @@ def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = Fals
     for name, info in view.infos.items():
         if info.role == "power" and name not in goal and _says_power_on(view, text):
             goal[name] = info.on
+        elif info.role == "power" and name not in goal and _says_power_off(view, text):
+            goal[name] = info.off
+            return  # switched off: nothing is started
     running = [n for n, i in view.infos.items() if i.role == "running"]
     if not running:
         # no running state of its own: the appliance works while it is on ("start cooling")
@@ -152,6 +155,39 @@ def _says_power_on(view: Model, text: Text) -> bool:
     return False
 
 
+_CONDITIONS = frozenset({"when", "once", "after", "if", "until", "before", "let", "don't", "dont"})
+_CONDITIONS |= frozenset({"not", "never"})
+
+
+def _says_power_off(view: Model, text: Text) -> bool:
+    """ "switch the heater off.", "turn it off", "switch off the machine": the power, off — said
+    of now (not "switch it off when it's done", "after 2 hours", "let it turn itself off")."""
+    n = len(text.tokens)
+    for k, token in enumerate(text.tokens):
+        if token.text not in ("turn", "switch", "power", "shut"):
+            continue
+        j = k + 1
+        while j < n and (concept(text.word(j)) in view.appliance_words or text.word(j) == "the"):
+            j += 1
+        if text.word(j) != "off":
+            continue
+        m = j + 1
+        while m < n and (concept(text.word(m)) in view.appliance_words or text.word(m) == "the"):
+            m += 1
+        if j == k + 1 and m == j + 1:
+            continue  # "switch off" with no appliance named: perhaps a setting's
+        if text.word(m) not in CLAUSE_ENDS | {"", ",", "and", "then"}:
+            continue  # "switch off after 2 hours", "turn it off when done"
+        before = []
+        for d in range(1, 10):
+            if text.word(k - d) in CLAUSE_ENDS or k - d < 0:
+                break
+            before.append(text.word(k - d))
+        if not _CONDITIONS & set(before):
+            return True
+    return False
+
+
 def _setting_words(view: Model) -> frozenset[str]:
     """Concepts that name a setting outright (its own name or label; not generic words)."""
     return frozenset(
@@ -189,8 +225,15 @@ _GOING = frozenset(
 )
 
 
+_WHEN_LATER = frozenset({"tonight", "tomorrow", "later", "next", "monday", "tuesday", "wednesday"})
+_WHEN_LATER |= frozenset({"thursday", "friday", "saturday", "sunday", "this"})
+
+
 def _later(text: Text, k: int) -> bool:
-    """A start word followed in its clause by "in/after N ..." (a delayed start)."""
+    """A start word followed in its clause by "in/after N ..." (a delayed start), or by a
+    later day ("a holiday starting tonight": when something begins, no request to start)."""
+    if text.word(k + 1) in _WHEN_LATER and text.word(k + 2) not in ("it", "the"):
+        return True
     for j in range(k + 1, min(k + 6, len(text.tokens))):
         word = text.word(j)
         if word in CLAUSE_ENDS or word == ",":
@@ -200,6 +243,21 @@ def _later(text: Text, k: int) -> bool:
             following = text.word(j + 2)
         numeral = following[:1].isdigit() or following in NUMBER_WORDS | {"half", "quarter"}
         if word in ("in", "after") and numeral:
+            return True
+    return False
+
+
+def _held_back(text: Text) -> bool:
+    """ "wait with the heating", "hold off on starting": the start is put off (no time given;
+    "wait 2 hours before heating" is a delay)."""
+    for k, token in enumerate(text.tokens):
+        if not (
+            (token.text == "wait" and text.word(k + 1) in ("with", "on", "before"))
+            or (token.text == "hold" and text.word(k + 1) == "off")
+        ):
+            continue
+        ahead = [text.word(j) for j in range(k + 1, min(k + 6, len(text.tokens)))]
+        if not any(w[:1].isdigit() or w in NUMBER_WORDS for w in ahead):
             return True
     return False
 
@@ -278,7 +336,7 @@ def _says_start(
             negative = True
         else:
             positive = True
-    if " not started " in joined or " but not start" in joined:
+    if " not started " in joined or " but not start" in joined or _held_back(text):
         negative = True
     for k, token in enumerate(text.tokens):  # "don't heat it yet"
         if token.text in _DENIALS and token.text != "without" and k + 1 < len(text.stems):
@@ -290,10 +348,12 @@ def _says_start(
     if positive or any(f" {w} " in joined for w in _NOW_PHRASES):
         return True
     for k, token in enumerate(text.tokens):
+        said_time = text.word(k - 1)[:1].isdigit() or text.word(k - 1) in ("am", "pm", "oclock")
         if (
             token.text == "now"
             and text.word(k - 1) not in ("from", "for")
             and text.word(k + 1) != "on"
+            and not said_time  # "it's 9:50 now": the time of day, to set the clock by
         ):
             return True
     if not verbs:

@@ -6,7 +6,7 @@ from __future__ import annotations
 from apbot.model.domain import build_domain
 from apbot.model.schema import DiscreteVariable, NumericVariable, TimeVariable
 from apbot.read.goal_text import CLAUSE_ENDS, Text, negative_around, phrase_here, verb_positions
-from apbot.read.goal_values import generic, magnitude, unit_text
+from apbot.read.goal_values import OFF_WORDS, generic, magnitude, unit_text
 from apbot.read.goal_view import (
     Goal,
     Model,
@@ -28,8 +28,9 @@ def switches(
         if info.role != "switch" or name in goal:
             continue
         own = own_stems(info)
-        if any(own == own_stems(view.infos[other]) for other in goal):
-            continue  # COOK TIME (on/off) beside a COOK TIME given a value: the words named that
+        # COOK TIME (on/off) beside a COOK TIME given a value: its own words named that one;
+        # only another word of it (the SOUND its legend says it switches) names the switch
+        shadowed = any(own == own_stems(view.infos[other]) for other in goal)
         best: tuple[float, int] | None = None
         left = False  # "leave the auto switched off": as it is, not a setting asked for
         for k in range(len(text.tokens)):
@@ -42,6 +43,8 @@ def switches(
             if weight <= 0 and _abbreviated(text.stems[k], own):
                 key, weight = text.stems[k], 1.0  # "tablets" for a TABS key
             if weight <= 0 or generic(key):
+                continue
+            if shadowed and (text.stems[k] in own or key in own_concepts(info)):
                 continue
             locks = key == concept("lock") or concept("lock") in own_concepts(info)
             if locks and not _locking(text, k):
@@ -88,7 +91,7 @@ def switches(
 
 _LOCK_WORDS = frozenset(
     {"lock", "locked", "locks", "locking", "unlock", "unlocked", "childlock", "lockout", "keylock"}
-    | {"release", "released"}
+    | {"release", "released", "childproof", "proof"}
 )
 
 
@@ -107,13 +110,60 @@ def _abbreviated(word: str, own: set[str]) -> bool:
 
 
 def _kept(text: Text, k: int, own: set[str]) -> bool:
-    """ "keep it hot", "keep the water warm": KEEP WARM said with words in between."""
-    if text.stems[k] != stem("keep") or stem("warm") not in own:
+    """ "keep it hot", "keep the water warm", "keep it cold": KEEP WARM (KEEP COOL) said with
+    words in between, or with a word of the same warmth."""
+    rest = own - {stem("keep")}
+    if text.stems[k] != stem("keep") or not rest:
         return False
-    return any(
-        text.stems[j] in (stem("warm"), stem("hot"))
-        for j in range(k + 1, min(k + 4, len(text.tokens)))
-    )
+    said = rest | {s for word in rest for s in _WARMTH.get(word, ())}
+    return any(text.stems[j] in said for j in range(k + 1, min(k + 4, len(text.tokens))))
+
+
+_WARMTH = {
+    stem("warm"): frozenset({stem("hot")}),
+    stem("cool"): frozenset(stem(w) for w in ("cold", "chilled", "chill", "frozen")),
+    stem("cold"): frozenset(stem(w) for w in ("cool", "chilled", "chill", "frozen")),
+}
+
+
+_SELF_OFF_VERBS = frozenset(stem(w) for w in ("switch", "shut", "turn", "power", "cut"))
+_PREVENTED = frozenset({"stop", "prevent", "keep", "don't", "dont", "not", "never", "doesn't"})
+_PREVENTED |= frozenset({"won't", "disable", "no"})
+
+
+def self_switching_off(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
+    """ "stop it from shutting itself off", "let it switch itself off": the automatic
+    switch-off (a switch named AUTO OFF), off when the words prevent it, else on."""
+    found = [
+        info
+        for info in view.infos.values()
+        if info.role == "switch"
+        and info.name not in goal
+        and concept("auto") in info.vocab
+        and {"off", "stop", "shutoff", "shutdown"}
+        & set(info.name.casefold().replace("-", "_").split("_"))
+    ]
+    if len(found) != 1:
+        return
+    info = found[0]
+    for k, token in enumerate(text.tokens):
+        if token.text != "itself" or k in claimed:
+            continue
+        by = 1 if text.word(k - 1) == "by" else 0  # "turn off by itself"
+        verb = any(text.stems[j] in _SELF_OFF_VERBS for j in (k - 1 - by, k - 2 - by))
+        off = "off" in (text.word(k + 1), text.word(k - 1 - by))
+        if not (verb and off):
+            continue
+        prevented = False
+        for d in range(2, 8):
+            word = text.word(k - d)
+            if word in CLAUSE_ENDS or word == ",":
+                break
+            prevented = prevented or word in _PREVENTED
+        assert info.on is not None and info.off is not None
+        goal[info.name] = info.off if prevented else info.on
+        claimed.add(k)
+        return
 
 
 def entry_switches(view: Model, goal: Goal) -> None:
@@ -164,6 +214,34 @@ def zero_settings(
                     if where is not None:
                         where[homes[0].name] = j
                     claimed.add(j)
+                break
+
+
+def off_levels(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
+    """ "no steam at all", "without any steam", "the mist off": a setting of several levels
+    whose first is OFF (off, eco, normal, turbo) named with a negation is off — not a level."""
+    for info in view.infos.values():
+        if info.name in goal or info.role != "setting":
+            continue
+        if not isinstance(info.var, DiscreteVariable):
+            continue
+        values = domain_values(view, info, goal)
+        offs = [v for v in values if str(v).casefold() in OFF_WORDS]
+        if len(offs) != 1 or len(info.values) < 3:
+            continue
+        own = own_stems(info)
+        mine = own_concepts(info)
+        others = {s for i in view.infos.values() if i is not info for s in own_stems(i)} - own
+        for k in range(len(text.tokens)):
+            if k in claimed or text.word(k) in STOP_WORDS:
+                continue
+            if not (text.stems[k] in own or text.concepts[k] in mine) or generic(text.concepts[k]):
+                continue
+            if any(text.stems[j] in others for j in (k - 1, k + 1) if 0 <= j < len(text.stems)):
+                continue  # "the vertical steam off": a word of another setting's name
+            if negative_around(text, k):
+                goal[info.name] = offs[0]
+                claimed.add(k)
                 break
 
 

@@ -9,6 +9,7 @@ from typing import Any
 
 from apbot.model.schema import NumericVariable
 from apbot.model.values import parse_quantity as _parse_quantity
+from apbot.model.values import unit_of
 from apbot.read.goal_vocab import concept, split_camel
 from apbot.read.numbers import tokenize
 
@@ -52,6 +53,37 @@ def on_off_pair(values: list[Any]) -> tuple[str, str] | None:
 def unit_text(var: NumericVariable) -> str:
     """The variable's unit in plain letters: a one-character "℃" is "°C" (NFKC)."""
     return unicodedata.normalize("NFKC", var.unit).strip()
+
+
+_LONG_UNITS = {
+    "d": 86400,
+    "day": 86400,
+    "days": 86400,
+    "wk": 604800,
+    "wks": 604800,
+    "week": 604800,
+    "weeks": 604800,
+}
+
+
+def unit_kind(unit: str) -> tuple[str, float] | None:
+    """Dimension and factor of a setting's unit: :func:`unit_of`, and days and weeks too, the
+    units of an absence or a fermentation (DAYS 1-45), which are times like hours.
+
+    >>> unit_kind("d"), unit_kind("min")
+    (('time', 86400), ('time', 60))
+    """
+    found = unit_of(unit)
+    if found is not None:
+        return found
+    seconds = _LONG_UNITS.get(unit.strip().casefold().rstrip("."))
+    return ("time", seconds) if seconds else None
+
+
+def in_days(var: Any) -> bool:
+    """A count of days (DAYS 1-45 of an absence): a duration, though "day" is a clock's word."""
+    unit = unit_kind(unit_text(var)) if isinstance(var, NumericVariable) else None
+    return unit is not None and unit[0] == "time" and unit[1] >= 86400
 
 
 def numeric_values(values: list[Any]) -> bool:

@@ -22,11 +22,11 @@ from apbot.model.schema import (
     Step,
     TimeVariable,
 )
-from apbot.model.values import unit_of
 from apbot.read.goal_manual import coded_names, legend_words, title_nouns
 from apbot.read.goal_values import (
     OFF_WORDS,
     ON_WORDS,
+    in_days,
     magnitude,
     name_words,
     numeric_values,
@@ -34,6 +34,7 @@ from apbot.read.goal_values import (
     parse_quantity,
     phrase_words,
     quantity_dimensions,
+    unit_kind,
     unit_text,
 )
 from apbot.read.goal_vocab import (
@@ -161,7 +162,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
                     _add_vocab(info, text, 0.7)
         if isinstance(var, NumericVariable):
             unit = unit_text(var)
-            info.dimension = (unit_of(unit) or (None, 0))[0] if unit else None
+            info.dimension = (unit_kind(unit) or (None, 0))[0] if unit else None
             if not unit:  # a reader may miss the unit: SPIN 0-1400 still takes "1000 rpm"
                 info.dimension = _dimension_by_name(info)
         if isinstance(var, DiscreteVariable):
@@ -170,7 +171,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
                 info.role, info.on, info.off = "switch", switch[0], switch[1]
             if numeric_values(info.values):
                 info.dimension = _dimension_by_name(info)
-            for dimension in quantity_dimensions(info.values):
+            for dimension in sorted(quantity_dimensions(info.values)):
                 _add_vocab(info, _DIMENSION_WORDS.get(dimension, ""), 0.6)  # "450 W": power
         infos[name] = info
     # features and control labels name the variables they adjust
@@ -196,7 +197,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         if isinstance(info.var, TimeVariable) or (
             isinstance(info.var, NumericVariable) and info.dimension == "time"
         ):
-            if "clock" in info.vocab:
+            if "clock" in info.vocab and not in_days(info.var):
                 info.timing = "clock"
             elif concept("delay") in info.vocab:
                 info.timing = "delay"

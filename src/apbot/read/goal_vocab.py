@@ -192,6 +192,7 @@ SCALES: tuple[tuple[str, ...], ...] = (
     ("light", "medium", "dark"),
     ("low", "medium", "high"),
     ("small", "medium", "large"),
+    ("soft", "medium", "firm"),
 )
 # Superlatives: which end of a domain.
 LOWEST = frozenset(
@@ -206,6 +207,7 @@ LOWEST = frozenset(
         "lightest",
         "palest",
         "coolest",
+        "coldest",
         "weakest",
         "slowest",
         "gentlest",
@@ -228,6 +230,10 @@ HIGHEST = frozenset(
         "full",
         "top",
         "warmest",
+        "driest",
+        "heaviest",
+        "hardest",
+        "firmest",
     }
 )
 # Letters that stand for sizes or levels on a display.
@@ -266,6 +272,10 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "store": ("storage", "stored"),
     "eco": ("economy", "economical", "saving"),
     "storage": ("store", "storing"),
+    "purify": ("clean", "cleaning", "purifying", "purification", "purifier"),
+    "cool": ("chill", "chilled", "chilling", "cold"),
+    "holiday": ("vacation", "away", "absence"),
+    "vacation": ("holiday", "away", "absence"),
 }
 # Counts written as adverbs ("rinse twice").
 TIMES_WORDS = {"once": 1, "twice": 2, "thrice": 3}

@@ -206,7 +206,7 @@ def _drop(data: dict[str, Any], path: tuple[Any, ...], notes: list[Note], why: s
                 if any(s.get("variable") == name for s in steps)
             }
             data["variables"].pop(name, None)
-        for feature in victims:
+        for feature in sorted(victims):
             steps = data["features"].pop(feature, None)
             if steps is None:
                 continue

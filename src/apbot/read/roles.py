@@ -77,8 +77,11 @@ def assign(b: Builder) -> None:
         keys = [k for k in keys if k not in selecting]
         shown_codes(b, var, selecting)
     pads = [k for k in keys if k.skill == "press" and not set(words(k.token)) & FUNCTION_WORDS]
-    for group in listed_groups(b, pads, tables_only=True):
-        if len(group) >= 3:
+    named = [k for k in keys if k.skill == "press" and k not in pads]
+    for group in listed_groups(b, pads + named, tables_only=True):
+        if sum(k in pads for k in group) >= 3:
+            # a row of a programme table names a key a function word would keep out ("QUICK
+            # COOK" among WHITE RICE, BROWN RICE…): one of the choices all the same
             pad_group(b, group)
             keys = [k for k in keys if k not in group]
     evidence = {k.name: b.evidence(list(k.controls)) for k in keys}
@@ -121,6 +124,8 @@ def assign(b: Builder) -> None:
             silent.append(key)  # holding ▲ / ▼ moves faster: no list of its own ("00:00 00:30 …")
             continue
         amount = bool(set(words(name)) & NUMERIC_WORDS)
+        if key.skill == "press" and _hold_row(b, key, ev.toggle_at):
+            ev = evidence[key.name] = replace(ev, toggle_at=None)  # the hold's on/off
         own_toggle = (
             ev.toggle_at is not None
             and any(ev.toggle_at in b.labels[c].mentions for c in key.controls if c in b.labels)
@@ -185,6 +190,19 @@ def assign(b: Builder) -> None:
     silent = assign_dials(b, dials, silent)
     assign_leftovers(b, silent, evidence)
     assign_keyed_amounts(b, digits)
+
+
+def _hold_row(b: Builder, key: ActionInfo, at: int | None) -> bool:
+    """Whether unit ``at`` is the legend row for holding this key ("FAN (hold 3 s)  switches
+    the ioniser on or off") on a panel where the key is also held: not the press's on/off."""
+    control = key.controls[0]
+    if at is None or control not in b.labels or not b.labels[control].text:
+        return False
+    if not any(i.skill == "hold" and i.controls == key.controls for i in b.infos):
+        return False
+    label = re.escape(b.labels[control].text)
+    held = re.compile(rf"^\W*{label}\s*\(?\s*(?:(?:press|touch|push)\s+and\s+)?hold", re.I)
+    return bool(held.match(b.manual.units[at].text))
 
 
 def _turned_after_keys(b: Builder, dial: str, keys: list[ActionInfo]) -> bool:

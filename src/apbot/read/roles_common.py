@@ -134,6 +134,15 @@ def hold_use(b: Builder, key: ActionInfo) -> str:
             noun = _of_the(after.group(1).strip(), own)
             if noun and len(noun.split()) <= 3 and not set(words(noun)) & {"lock", "key"}:
                 return noun.lower()
+        label = re.escape(b.labels[key.controls[0]].text)
+        row = re.match(  # "FAN (hold 3 s)  switches the ioniser on or off": the ioniser
+            rf"\W*{label}\s*\((?:(?:press|touch|push)\s+and\s+)?hold[^)]*\)\s*"
+            r"(?:switches|turns)\s+(?:the\s+)?([a-z][a-z -]{2,30}?)\s+(?:on\b|off\b)",
+            text,
+            re.IGNORECASE,
+        )
+        if label and row and not set(words(row.group(1))) & {"lock", "key", "appliance"}:
+            return row.group(1).lower()
         m = HOLD_USE_RE.search(text)
         if m:
             noun = re.split(r"[·;,:|]|\)", m.group(1))[-1].strip()

@@ -267,6 +267,11 @@ def _fits(unit: str, tokens: list[str]) -> bool:
     return True
 
 
+_AMOUNT_CELL_RE = re.compile(
+    r"\d+(?:[.,]\d+)?\s*(?:h|hrs?|hours?|min|mins|s|sec|°[CF]|%|W|g|kg|ml|l|lb)"
+)
+
+
 def _next_table_column(units: list[Unit], i: int, column: int = 0) -> list[str]:
     """The cells of one column (the first by default) of the table that starts right after
     unit ``i`` (header skipped)."""
@@ -281,10 +286,12 @@ def _next_table_column(units: list[Unit], i: int, column: int = 0) -> list[str]:
         if column >= len(units[k].cells):
             k += 1
             continue
-        cell = re.sub(r"^\s*\d{1,2}[.)]?\s+(?=\D)", "", units[k].cells[column]).strip(" *")
+        cell = units[k].cells[column].strip(" *")
+        if not _AMOUNT_CELL_RE.fullmatch(cell):  # "1 h" is an amount, "1  Basic" a numbered name
+            cell = re.sub(r"^\s*\d{1,2}[.)]?\s+(?=\D)", "", cell).strip(" *")
         # "Meat (joints, steaks, minced meat)": the name before its gloss
         cell = re.sub(r"(?<=\w)\s*\([^)]*\)\s*$", "", cell)
-        if find_ranges(cell) or not re.search(r"[A-Za-z]", cell):
+        if find_ranges(cell) or not re.search(r"[A-Za-z]", cell) or _AMOUNT_CELL_RE.fullmatch(cell):
             numbers += 1
         if cell and len(cell) <= 24 and cell not in items:
             items.append(cell)

@@ -28,8 +28,10 @@ _PATTERNS = [
                r"(?:running|cooking|heating|baking|washing|active|on|locked|in progress)\b"),
 ]  # fmt: skip
 _ICON = re.compile(
-    r"\b(?:the|a|an)?\s*([a-z]{3,12})\s+(?:icon|symbol)\b", re.IGNORECASE
-)  # "the flame icon", "a padlock symbol"
+    r"\b(?:the|a|an)?\s*([a-z]{3,12})\s+(?:icon|symbol)\b"
+    r"(?:\s*\(\s*\**([^\w\s()*]{1,3}|\*{1,3}|[A-Z][A-Z0-9-]{0,11})\**\s*\))?",
+    re.IGNORECASE,
+)  # "the flame icon", "a padlock symbol", "the star symbol (*)": the glyph in brackets
 _NOT_WORDS = {
     "THE", "A", "AN", "AND", "OR", "IT", "IF", "TO", "NO", "ON", "OFF", "IN", "AT", "THIS",
     "WHEN", "WHILE", "PRESS", "TOUCH", "HOLD", "PUSH", "TAP", "NOTE", "TIP", "DISPLAY", "SCREEN",
@@ -55,7 +57,13 @@ def shown_words(text: str, keys: set[str] | None = None) -> list[str]:
                 out.append(word)
     for m in _ICON.finditer(text):
         word = m.group(1).lower()
-        if word not in _GENERIC_ICONS and word.upper() not in out:
+        if (
+            m.group(2)
+            and m.group(2) not in out
+            and (m.group(2).isupper() or not m.group(2).isalnum())
+        ):
+            out.append(m.group(2))  # the glyph or word printed for the icon is what shows
+        elif word not in _GENERIC_ICONS and word.upper() not in out:
             out.append(word.upper())
     return out
 

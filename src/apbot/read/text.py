@@ -96,7 +96,9 @@ def _clean_chars(text: str) -> str:
 
 def _strip_markup(line: str) -> str:
     line = re.sub(r"\*\*|__|`+", "", line)
-    line = re.sub(r"(?<!\w)\*(?=\S)|(?<=\S)\*(?!\w)", "", line)
+    # a star alone in brackets or quotes is a printed symbol ("the star symbol (*)"), no emphasis
+    alone = r"(?!(?<=[(\"'])\*[)\"'])"
+    line = re.sub(rf"(?<!\w){alone}\*(?=\S)|(?<=\S){alone}\*(?!\w)", "", line)
     line = re.sub(r"^\s*>+\s?", "", line)
     return line
 
@@ -153,6 +155,88 @@ def _space_tables(lines: list[str]) -> dict[int, tuple[tuple[str, ...], bool]]:
         else:
             i += 1
     return out
+
+
+# the first cell of a chart's row counting the presses ("touch  1  2  3", "No. of presses")
+_COUNT_ROW_RE = re.compile(
+    r"^(?:no\.? of |number of )?(?:press(?:es)?|touch(?:es)?|taps?|clicks?|times?)"
+    r"(?: pressed| touched)?\W*$",
+    re.IGNORECASE,
+)
+
+
+def _row_charts(lines: list[str]) -> dict[int, list[tuple[str, ...]]]:
+    """Charts printed sideways, each row a line led by its name, the first counting the
+    presses: "touch    1      2     3   ...   26" over "display  0.5 h  1 h   2 h  ...  (off)".
+    Read as a table turned upright: a header of the row names, then one row per column
+    ("| touch | display |", "| 1 | 0.5 h |" …); ellipsis columns are left out.
+
+    Returns the first line's index → the table's rows (header first); the other lines of the
+    chart map to no rows."""
+    out: dict[int, list[tuple[str, ...]]] = {}
+    i = 0
+    while i + 1 < len(lines):
+        first = _cells(lines[i])
+        before = lines[i - 1].strip() if i else ""
+        if (
+            len(first) < 4
+            or "|" in lines[i]
+            or not _COUNT_ROW_RE.match(first[0])
+            or (before and not re.search(r"[.:!?]$", before))
+        ):
+            i += 1
+            continue
+        rows = [first]
+        j = i + 1
+        while j < len(lines) and lines[j].strip():
+            cells = _cells(lines[j])
+            if len(cells) != len(first) or not re.match(r"[A-Za-z]", cells[0]):
+                break
+            rows.append(cells)
+            j += 1
+        if len(rows) < 2:
+            i += 1
+            continue
+        table = [tuple(r[0] for r in rows)]
+        columns = [
+            tuple(re.sub(r"^\((.*)\)$", r"\1", r[c]) for r in rows) for c in range(1, len(first))
+        ]
+        for c, cells in enumerate(columns):
+            if all(re.fullmatch(r"\.{3}|…", x) for x in cells):
+                if 0 < c < len(columns) - 1:
+                    table += _elided(columns[c - 1], columns[c + 1])
+                continue
+            table.append(cells)
+        out[i] = table
+        for k in range(i + 1, j):
+            out[k] = []
+        i = j
+    return out
+
+
+_AMOUNT_RE = re.compile(r"(\d+(?:\.\d+)?)\s*([A-Za-z°%]{1,4})")
+
+
+def _elided(before: tuple[str, ...], after: tuple[str, ...]) -> list[tuple[str, ...]]:
+    """The columns an ellipsis stands for in a sideways chart, between touch 5 (4 h) and touch
+    25 (24 h): one a touch, each row's amount in equal steps (6 | 5 h … 24 | 23 h). None when
+    the counts or the amounts do not divide evenly."""
+    if not (before[0].isdigit() and after[0].isdigit()):
+        return []
+    a, b = int(before[0]), int(after[0])
+    if not 1 < b - a <= 200:
+        return []
+    out: list[list[str]] = [[str(n)] for n in range(a + 1, b)]
+    for x, y in zip(before[1:], after[1:], strict=True):
+        mx, my = _AMOUNT_RE.fullmatch(x), _AMOUNT_RE.fullmatch(y)
+        if not mx or not my or mx.group(2) != my.group(2):
+            return []
+        step = (float(my.group(1)) - float(mx.group(1))) / (b - a)
+        if step <= 0 or abs(step * 1000 - round(step * 1000)) > 1e-6:
+            return []
+        for k, row in enumerate(out, start=1):
+            row.append(f"{float(mx.group(1)) + step * k:g} {mx.group(2)}")
+    return [tuple(row) for row in out]
 
 
 def _placed_cells(line: str) -> list[tuple[int, str]]:
@@ -308,6 +392,10 @@ def _legend(parts: list[tuple[int, str, str]]) -> bool:
     columns of prose: the left parts are mostly short terms, each starting afresh, and the left
     column's text does not run on from one line to the next."""
     lefts = [p[1] for p in parts]
+    if sum("→" in left or "►" in left for left in lefts) >= 2 and not any(
+        re.search(r"[a-z]{3,} [a-z]{3,}", left) for left in lefts
+    ):
+        return True  # a chart's rows: amounts and arrows on the left ("1 h → … → 12 h")
     terms = sum(
         len(left.split()) <= 4
         and not re.search(r"[,;-]$|\b(?:the|and|or|to|of|a|an)$", left)
@@ -430,6 +518,7 @@ def parse_manual(text: str) -> Manual:
 
     fenced = False
     spaced = _space_tables(raw_lines)
+    sideways = _row_charts(raw_lines)
     furniture = _furniture(raw_lines)
     passed = _page_breaks(raw_lines, furniture)
     previous, last = "", 0
@@ -440,6 +529,13 @@ def parse_manual(text: str) -> Manual:
         # after a page break passed over, a line in capitals may start a new section
         before, previous = ("" if position > last + 1 else previous), raw.strip()
         last = position
+        if position - 1 in sideways:  # a chart printed sideways: turned upright
+            flush()
+            chart = sideways[position - 1]
+            for row in chart:
+                rows_header = chart[0] if row is not chart[0] else ()
+                units.append(Unit(number, " | ".join(row), row, rows_header, heading=heading))
+            continue
         if position in spaced:
             flush()
             cells, is_header = spaced[position]
@@ -512,6 +608,7 @@ _FIELD_RE = re.compile(  # "Water level: …", "Cup-size lamps: …": a field of
     r"^\s{0,2}[A-Z][a-z]+(?:-[a-z]+)?(?:[ -][A-Za-z]+){0,3}(?: \([^)]{1,30}\))?:\s+\S"
 )
 _TERM_RE = re.compile(  # "TEMP knob     Sets …", "SET 60°C     Set temperature": a term
-    r"^\s{0,2}[A-Z0-9][A-Z0-9+/&.'°:-]*(?: [A-Z0-9+/&.'°:-]+){0,3}"
+    r"^\s{0,2}[A-Z0-9](?:[A-Z0-9+/&.'°-]|(?<=[\d-]):(?=[\d-]))*"  # a colon only in 01:30, --:--
+    r"(?: (?:[A-Z0-9+/&.'°-]|(?<=[\d-]):(?=[\d-]))+){0,3}"
     r"(?: (?:knob|dial|button|key|switch|lever|selector|wheel|ring|lamp|indicator)s?)?\s{2,}\S"
 )

@@ -147,6 +147,8 @@ def find_list(text: str) -> tuple[list[str], str] | None:
             return _dedupe(items), "arrows"
     for m in _CUE.finditer(text):
         segment = re.split(r"[.;]\s|\s[—–]\s|\bwhile\b|\bwhen\b|\bto (?!\d)", m.group(1))[0]
+        # "between STANDARD and QUIET (lamp; display FAN quiet …)": the aside ends the list
+        segment = re.split(r"\s\((?=[^)]*\b(?:display|lamp|shows?|see)\b)", segment)[0]
         segment = re.sub(r"\s+only\W*$", "", segment, flags=re.I)  # "SOFT or FIRM only."
         items = [
             _clean_item(p)

@@ -177,6 +177,50 @@ def find_stepped_pieces(text: str) -> list[Range]:
     return pieces if len(pieces) >= 2 else []
 
 
+_ARROW = r"\s*(?:[-─—–=]*[►→>])\s*"
+_END = r"(\d{1,2}:\d{2}|\d+(?:[.,]\d+)?\s*(?:h|hrs?|hours?|min|mins|minutes?|s|secs?|seconds?)\b)"
+_ARROW_PIECE_RE = re.compile(  # "1 h → 2 h → … → 12 h   one hour per press", "0:00 ──► 1:00  10 s"
+    rf"(?<![\d:.]){_END}{_ARROW}(?:(?:…|\.\.\.|{_END}){_ARROW})*{_END}\s+(?:by\s+)?"
+    rf"({NUM}|an?)\s*(hours?|hrs?|h|minutes?|mins?|min|seconds?|secs?|s)\b",
+    re.IGNORECASE,
+)
+
+
+def _arrow_end(text: str, seconds_clock: bool) -> float | None:
+    """An end of an arrow piece in seconds: "12 h", "30 min", or a clock "10:00" (h:mm, or
+    mm:ss when the chart's steps are seconds or its first figure passes 24)."""
+    clock = re.fullmatch(r"(\d{1,2}):(\d{2})", text.strip())
+    if clock:
+        big, small = int(clock.group(1)), int(clock.group(2))
+        return big * 60 + small if seconds_clock else big * 3600 + small * 60
+    m = re.fullmatch(r"(\d+(?:[.,]\d+)?)\s*(\w+)", text.strip())
+    value = number(m.group(1)) if m else None
+    return None if m is None or value is None else seconds(value, unit_name(m.group(2)))
+
+
+def find_arrow_pieces(text: str) -> list[Range]:
+    """Two or more pieces of a time drawn as arrows, each with its step, the next starting
+    where the last ends ("1 h → 2 h → … → 12 h one hour per press 12 h → 14 h → … → 24 h two
+    hours per press", "0:00 ──► 1:00 10 seconds 1:00 ──► 10:00 30 seconds"), in seconds."""
+    found = list(_ARROW_PIECE_RE.finditer(text))
+    if len(found) < 2:
+        return []
+    clocks = [m.group(1) for m in found] + [m.group(3) for m in found]
+    by_seconds = any(unit_name(m.group(5)) == "s" for m in found) or any(
+        ":" in c and int(c.split(":")[0]) > 24 for c in clocks
+    )
+    pieces: list[Range] = []
+    for m in found:
+        low, high = _arrow_end(m.group(1), by_seconds), _arrow_end(m.group(3), by_seconds)
+        amount = 1.0 if m.group(4).lower() in ("a", "an") else number(m.group(4))
+        if low is None or high is None or amount is None or not low < high:
+            break
+        if pieces and pieces[-1].high != low:
+            break
+        pieces.append(Range(low, high, "s", seconds(amount, unit_name(m.group(5)))))
+    return pieces if len(pieces) >= 2 else []
+
+
 def find_bounds(texts: list[str]) -> Range | None:
     """A range told in two sentences: "the first tap gives 0.5 h" and "the longest
     reservation is 24 h" (the first value is also the step: each tap adds time); a time's
@@ -214,6 +258,7 @@ _PIECE_BOUND_RES = (  # "up to 1 hour", "until 1 hour", "(from 0) to 1 hour"
 _PIECE_CHANGE_RE = re.compile(  # where the second piece begins
     r"\b(?:after that|after this|beyond (?:that|this|it)|above (?:that|this|it)|over (?:that|this)"
     r"|thereafter|then|from there(?: on)?)\b|(?:,|\band)\s+(?=from\b)"
+    r"|\b(?:above|over|beyond|past)\s+(?=\d+(?:[.,]\d+)?\s*(?:hours?|h|minutes?|min)\b)"
     r"|\band\b(?=\s+(?:in|by)\b)",
     re.IGNORECASE,
 )
@@ -239,6 +284,7 @@ def find_two_steps(texts: list[str], names: tuple[str, ...] = ()) -> tuple[list[
     smaller unit (0–60 min by 10, 60–1440 min by 30), and the index of the text that told
     them. The top, unless the sentence gives it, comes from the rest of that sentence, the next
     one, or a later one that names the setting (one of ``names``)."""
+    texts = [_plain_durations(t) for t in texts]
     for k, text in enumerate(texts):
         events = _piece_events(text)
         for change in _PIECE_CHANGE_RE.finditer(text):
@@ -263,6 +309,30 @@ def find_two_steps(texts: list[str], names: tuple[str, ...] = ()) -> tuple[list[
                 return None
             return [Range(0, middle, unit, first), Range(middle, high, unit, then)], k
     return None
+
+
+def split_range(found: Range, texts: list[str], label: str) -> list[Range]:
+    """A time range named elsewhere whose sentence also tells a step that changes part way
+    ("Between 0:00 and 6:00 each touch changes the delay by half an hour; above 6 hours …
+    by one hour, up to 20:00"): both pieces, when both start from nothing; else []."""
+    if found.low != 0 or not (is_time_unit(found.unit) or found.unit == "hmm"):
+        return []
+    two = find_two_steps(texts, (label.lower(),) if label else ())
+    return two[0] if two and two[0] and two[0][0].low == 0 else []
+
+
+def _plain_durations(text: str) -> str:
+    """Durations of a step sentence in one spelling: "half an hour" is 30 minutes, a whole-hour
+    clock after "and" / "up to" ("between 0:00 and 6:00", "up to 20:00") is so many hours, and
+    "between A and B" bounds the piece at B ("up to B")."""
+    text = re.sub(r"\bhalf an hour\b", "30 minutes", text, flags=re.IGNORECASE)
+    text = re.sub(r"\b(and|to|until)\s+(\d{1,2}):00\b", r"\1 \2 hours", text, flags=re.I)
+    return re.sub(
+        rf"\bbetween\s+(?:\d{{1,2}}:\d{{2}}|{NUM}\s*{UNIT}?)\s+and\s+(?=\d)",
+        "up to ",
+        text,
+        flags=re.IGNORECASE,
+    )
 
 
 def _top_after(
