@@ -143,7 +143,7 @@ class EvidenceReader(ListReader, AnywhereReader):
             if unit.cells:  # "| 1 – 2 |" then "| 3 – 4 |" … "| 9 – 10 |": groups of one setting
                 ranges = [_rows_span(units, i, r) for r in ranges]
             pieces = find_stepped_pieces(text) if ranges and not ev.ranges else []
-            if pieces and _fits("s", tokens):  # "0:30 – 12:00 30 minutes 12:00 – 24:00 1 hour"
+            if pieces and _fits(pieces[0].unit, tokens):  # "0:30 – 12:00 30 min 12:00 – 24:00 1 h"
                 ev.ranges, ev.range_at = pieces, i
             elif ranges and not ev.ranges:
                 # "one minute per click up to one hour, and in coarser steps after that, up to
