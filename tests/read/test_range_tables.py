@@ -27,3 +27,27 @@ def test_a_flattened_range_and_step_table_in_hours_gives_each_piece_its_step() -
     steps = [str(r[2]) for r in timer.ranges]
     assert tops in (["4", "16"], ["04:00:00", "16:00:00"]), timer.ranges
     assert steps in (["0.5", "2"], ["1800", "7200"]), timer.ranges
+
+
+# a rice cooker whose preset is told in hours, and shown as hours:minutes in an example
+COOKER = """# Rice cooker RC-3
+
+## Keys
+| Key | Function |
+|---|---|
+| MENU | Chooses the cooking menu: WHITE, BROWN or PORRIDGE. |
+| PRESET | Sets after how long the rice is ready. |
+| START | Starts cooking or the preset countdown. |
+
+## Preset
+The preset can be set up to 15 hours ahead. Press PRESET several times; for example,
+for rice ready at breakfast press PRESET until the display shows 7:40, then press START.
+"""
+
+
+def test_a_setting_in_hours_the_display_shows_as_hours_and_minutes_is_a_time() -> None:
+    model = read_manual(COOKER, ["press_menu", "press_preset", "press_start"]).model
+    preset = model.variables["preset"]
+    assert preset.type == "time", preset
+    assert str(preset.ranges[-1][1]) == "15:00:00"
+    assert int(preset.ranges[0][2]) <= 600  # set in minutes: 7:40 can be reached

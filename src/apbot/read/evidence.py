@@ -48,6 +48,7 @@ from apbot.read.values import (
     find_bounds,
     find_initial,
     find_ranges,
+    find_shown_hmm,
     find_step,
     find_stepped_pieces,
     find_two_steps,
@@ -170,6 +171,8 @@ class EvidenceReader(ListReader, AnywhereReader):
                 pressed = None  # "every click changes the time": a dial's clicks, not a key's
             if ev.each_press_at is None and not quiet and pressed:
                 ev.each_press_at = i
+            if ev.shown_hmm is None and (minutes := find_shown_hmm(text)) is not None:
+                ev.shown_hmm = (minutes, i)
             if ev.initial is None:
                 init = find_initial(text)
                 if init:

@@ -66,6 +66,7 @@ class Evidence:
     initial_at: int | None = None
     keypad_at: int | None = None  # a sentence of its context speaks of the number keys
     longest: tuple[Range, int] | None = None  # "the longest setting is 13 hours", alone
+    shown_hmm: tuple[int, int] | None = None  # (minutes, unit): "the display shows 9:30"
 
 
 _TIMER_WORDS = frozenset({"timer", "delay", "preset", "reserve", "finish"})

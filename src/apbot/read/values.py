@@ -210,6 +210,21 @@ def _stepped_amount_pieces(text: str) -> list[Range]:
     return pieces if len(pieces) >= 2 else []
 
 
+_SHOWN_HMM_RE = re.compile(  # "until the display shows 9:30", "the display reads 2:45"
+    r"\b(?:shows?|showing|reads?|displays?|indicates?)\b[^.;]{0,25}?(?<![\d:.])"
+    r"(\d{1,2}):([0-5]\d)(?![\d:])(?!\s*(?:am|pm|a\.m|p\.m|o'clock)\b)",
+    re.IGNORECASE,
+)
+
+
+def find_shown_hmm(text: str) -> int | None:
+    """The minutes of a setting shown as hours:minutes in an example ("press TIME until the
+    display shows 9:30": 30), or None: a setting told in hours that the display writes h:mm
+    is a time, set in minutes."""
+    m = _SHOWN_HMM_RE.search(text)
+    return int(m.group(2)) if m else None
+
+
 def find_bounds(texts: list[str]) -> Range | None:
     """A range told in two sentences: "the first tap gives 0.5 h" and "the longest
     reservation is 24 h" (the first value is also the step: each tap adds time); a time's
