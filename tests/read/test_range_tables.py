@@ -51,3 +51,26 @@ def test_a_setting_in_hours_the_display_shows_as_hours_and_minutes_is_a_time() -
     assert preset.type == "time", preset
     assert str(preset.ranges[-1][1]) == "15:00:00"
     assert int(preset.ranges[0][2]) <= 600  # set in minutes: 7:40 can be reached
+
+
+# a water boiler: the descaling steps wait an hour or two after a key press
+BOILER = """# Water boiler WB-5
+
+## Keys
+| Key | Function |
+|---|---|
+| BOIL | Brings the water back to the boil. |
+| WARM | Chooses the keep-warm temperature: 60, 80 or 95 °C. |
+| POUR | Pours hot water. |
+
+## Descaling
+1. Fill with water and add two spoons of citric acid.
+2. Press BOIL.
+3. Leave for one to three hours, then empty the boiler and rinse it.
+"""
+
+
+def test_a_wait_after_pressing_a_key_is_no_range_of_that_key() -> None:
+    model = read_manual(BOILER, ["press_boil", "press_warm", "press_pour"]).model
+    boil = model.variables.get("boil")
+    assert boil is None or boil.type == "discrete", boil

@@ -39,6 +39,7 @@ from apbot.read.shapes import (
     _rows_span,
     _without,
     _without_advice,
+    is_wait,
 )
 from apbot.read.value_lists import anchored_lists, bare_list, named_list
 from apbot.read.values import (
@@ -130,9 +131,10 @@ class EvidenceReader(ListReader, AnywhereReader):
                     continue
                 if prio > best_prio:
                     best, best_prio, ev.values_at = items, prio, i
+            waiting = i not in mentions and is_wait(text)  # "Leave for one to two hours."
             ranges = [
                 r
-                for r in find_ranges(_without_advice(unit))
+                for r in find_ranges("" if waiting else _without_advice(unit))
                 if _fits(r.unit, tokens) and not _keypad(r, text)
             ]
             if ev.keypad_at is None and _KEYPAD_WORDS.search(text):

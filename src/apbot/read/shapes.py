@@ -189,6 +189,19 @@ _ADVICE_PROSE_RE = re.compile(  # "45 to 55 % is a sensible target", "ideally 40
 )
 
 
+_WAIT_RE = re.compile(  # "Leave for one to two hours", "let it stand for 5–10 minutes"
+    r"(?:^|[.;:]\s+|^\d+\.\s+)(?:then\s+)?(?:leave|wait|let\s+(?:it|them|the\s+\w+)\s+"
+    r"(?:stand|rest|soak|cool))\b[^.;]{0,20}?\bfor\b",
+    re.IGNORECASE,
+)
+
+
+def is_wait(text: str) -> bool:
+    """A sentence telling the user to wait ("3. Leave for one to two hours, then …"): its
+    times are a wait, not the limits of a setting named nearby."""
+    return bool(_WAIT_RE.search(text))
+
+
 def _without_advice(unit: Unit) -> str:
     """A unit's text without the cells of columns headed as advice ("Suggested °C": what suits
     a food, not the limits of the setting); a sentence of advice ("in most homes 45 to 55 % is
