@@ -74,3 +74,27 @@ def test_a_wait_after_pressing_a_key_is_no_range_of_that_key() -> None:
     model = read_manual(BOILER, ["press_boil", "press_warm", "press_pour"]).model
     boil = model.variables.get("boil")
     assert boil is None or boil.type == "discrete", boil
+
+
+# an oven whose MORE / LESS keys fine-tune an automatic programme
+OVEN = """# Compact oven CO-1
+
+## Keys
+| Key | Function |
+|---|---|
+| AUTO | Chooses an automatic programme: PIZZA, CHIPS or CAKE. |
+| + / − | Change the cooking time. |
+| MORE / LESS | Adjust the result of an automatic programme. |
+| START | Starts the oven. |
+
+## Automatic programmes
+Press AUTO until your dish shows. If the dish usually comes out underdone, press MORE; if it
+comes out overdone, press LESS. Pressing the other key goes back to the normal result.
+"""
+
+
+def test_more_and_less_keys_that_fine_tune_a_result_choose_less_standard_or_more() -> None:
+    actions = ["press_auto", "press_plus", "press_minus", "press_more", "press_less", "press_start"]
+    model = read_manual(OVEN, actions).model
+    adjust = model.variables["adjust"]
+    assert adjust.type == "discrete" and adjust.values == ["less", "standard", "more"]
