@@ -98,3 +98,36 @@ def test_more_and_less_keys_that_fine_tune_a_result_choose_less_standard_or_more
     model = read_manual(OVEN, actions).model
     adjust = model.variables["adjust"]
     assert adjust.type == "discrete" and adjust.values == ["less", "standard", "more"]
+
+
+# a food steamer whose programme table gives each programme its own steaming times
+STEAMER = """# Food steamer FS-2
+
+## Keys
+| Key | Function |
+|---|---|
+| PROG | Chooses the programme: VEG, FISH, EGGS or KEEP. |
+| STEAM TIME | Changes the steaming time. |
+| START | Starts steaming. |
+
+## Programmes
+Each press of PROG selects the next programme.
+
+| Display | Programme | Steam time |
+|---|---|---|
+| VEG | Vegetables | 10 to 40 minutes |
+| FISH | Fish fillets | 5, 10 or 15 minutes |
+| EGGS | Eggs | 6, 9 or 12 minutes |
+| KEEP | Keep warm | — |
+
+Press STEAM TIME to move to the next available time.
+"""
+
+
+def test_a_programme_table_gives_each_programme_its_listed_or_ranged_times() -> None:
+    model = read_manual(STEAMER, ["press_prog", "press_steam_time", "press_start"]).model
+    steam = model.variables["steam_time"]
+    assert steam.depends_on == "prog", steam
+    assert steam.cases is not None
+    assert [str(x) for x in steam.cases["fish"].ranges[0]][:2] == ["00:05:00", "00:15:00"]
+    assert [str(x) for x in steam.cases["eggs"].ranges[0]][:2] == ["00:06:00", "00:12:00"]
