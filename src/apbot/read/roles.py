@@ -26,7 +26,7 @@ from apbot.read.roles_common import (
     used_actions,
     var_name,
 )
-from apbot.read.roles_fixed import assign_locks, assign_power, assign_running
+from apbot.read.roles_fixed import assign_locks, assign_power, assign_running, standby_only
 from apbot.read.roles_hourmin import assign_hour_minute, hour_minute_keys
 from apbot.read.roles_keyed import assign_keyed_amounts
 from apbot.read.roles_lists import (
@@ -184,6 +184,7 @@ def assign(b: Builder) -> None:
     silent = assign_dials(b, dials, silent)
     assign_leftovers(b, silent, evidence)
     assign_keyed_amounts(b, digits)
+    standby_only(b)
 
 
 def _turned_after_keys(b: Builder, dial: str, keys: list[ActionInfo]) -> bool:
