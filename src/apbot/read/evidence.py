@@ -173,7 +173,7 @@ class EvidenceReader(ListReader, AnywhereReader):
                 pressed = None  # "every click changes the time": a dial's clicks, not a key's
             if ev.each_press_at is None and not quiet and pressed:
                 ev.each_press_at = i
-            if ev.shown_hmm is None and (minutes := find_shown_hmm(text)) is not None:
+            if ev.shown_hmm is None and (minutes := find_shown_hmm(text)):  # ("2:00": no minutes)
                 ev.shown_hmm = (minutes, i)
             if ev.initial is None:
                 init = find_initial(text)
