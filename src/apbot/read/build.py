@@ -10,6 +10,7 @@ guess the closed loop repairs most cheaply — a cyclic ``next`` over a small do
 
 from __future__ import annotations
 
+import math
 import re
 from typing import Any
 
@@ -304,7 +305,10 @@ class Builder(EvidenceReader):
         if unit == "°C" and not ranges[0].unit and self.fahrenheit():
             unit = "°F"  # a temperature read without its unit, in a manual that speaks °F
         finer = bool(ev.step and ev.step[1] in ("s", "min") and unit == "h")  # 0–3 h by 1 min
-        as_time = ranges[0].unit == "s" or unit in ("s", "min") or finer
+        hmm = ev.shown_hmm if unit == "h" and not clock else None  # "the display shows 9:30"
+        as_time = ranges[0].unit == "s" or unit in ("s", "min") or finer or hmm is not None
+        if hmm is not None:
+            self.note(f"{subject}.type", "a time: the display shows it as h:mm", hmm[1])
         factor = 1 if ranges[0].unit == "s" else seconds(1, unit) if as_time else 1
 
         def base_step(r: Range) -> float | None:
@@ -332,6 +336,9 @@ class Builder(EvidenceReader):
                     f"step {st / factor:g} {unit}",
                     ev.step_at if not r.step else ev.range_at,
                 )
+            elif hmm is not None:  # "shows 9:30": set in minutes, ten at a time or fewer
+                st = float(seconds(math.gcd(hmm[0], 10) or 10, "min"))
+                self.note(f"{subject}.step", f"step {st / 60:g} min (guessed from h:mm shown)")
             else:
                 st = _guess_step(r.high - r.low, unit) * factor
                 if as_time and st < 60 and lo % 60 == 0 and hi % 60 == 0 and hi - lo >= 600:

@@ -9,6 +9,8 @@ into a dependent one with a case per row; a row that says nothing usable ("—",
 
 from __future__ import annotations
 
+import itertools
+import math
 import re
 from typing import Any
 
@@ -336,6 +338,10 @@ def _case(spec: dict[str, Any], cell: str) -> Any:
         return None
     ranges_read = find_ranges(cell)
     if kind == "time":
+        listed = None if ranges_read else _time_list(cell)
+        if listed:  # "30, 45 or 60 minutes": the times, by the step between them
+            gap = math.gcd(*[b - a for a, b in itertools.pairwise(listed)])
+            return {"ranges": [[format_hms(listed[0]), format_hms(listed[-1]), gap]]}
         if not ranges_read:
             from apbot.model.values import parse_quantity
 
@@ -347,6 +353,8 @@ def _case(spec: dict[str, Any], cell: str) -> Any:
         factor = 1 if r.unit == "s" else {"min": 60, "h": 3600}.get(r.unit or "min", 60)
         t_lo, t_hi = int(r.low * factor), int(r.high * factor)
         t_step = min(int(ranges[0][2]), max(1, t_hi - t_lo))
+        if (t_hi - t_lo) % t_step:  # "20 to 60 minutes" by 15: the step that reaches both ends
+            t_step = math.gcd(t_step, t_hi - t_lo)
         t_hi = t_lo + (t_hi - t_lo) // t_step * t_step
         return {"ranges": [[format_hms(t_lo), format_hms(t_hi), t_step]]}
     step = float(ranges[0][2])
@@ -364,6 +372,23 @@ def _case(spec: dict[str, Any], cell: str) -> Any:
     hi = lo + count * step
     tidy = lambda x: int(x) if float(x).is_integer() else round(x, 4)  # noqa: E731
     return {"ranges": [[tidy(lo), tidy(hi), tidy(step)]]}
+
+
+_TIME_LIST_RE = re.compile(
+    r"\s*(\d+(?:\s*(?:,|\bor\b|\band\b|/)\s*\d+)+)\s*(min(?:ute)?s?|h(?:ou)?rs?|hours?|h)\.?\s*",
+    re.IGNORECASE,
+)
+
+
+def _time_list(cell: str) -> list[int] | None:
+    """Three or more times in a cell ("30, 45 or 60 minutes"), rising, in seconds; else None."""
+    m = _TIME_LIST_RE.fullmatch(cell)
+    if not m:
+        return None
+    per = 3600 if unit_name(m.group(2)) == "h" else 60
+    found = [int(x) * per for x in re.findall(r"\d+", m.group(1))]
+    rising = all(a < b for a, b in itertools.pairwise(found))
+    return found if len(found) >= 3 and rising else None
 
 
 def _defaults(

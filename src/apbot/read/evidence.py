@@ -40,6 +40,7 @@ from apbot.read.shapes import (
     _rows_span,
     _without,
     _without_advice,
+    is_wait,
 )
 from apbot.read.value_lists import anchored_lists, bare_list, named_list
 from apbot.read.values import (
@@ -50,6 +51,7 @@ from apbot.read.values import (
     find_bounds,
     find_initial,
     find_ranges,
+    find_shown_hmm,
     find_step,
     find_stepped_pieces,
     find_two_steps,
@@ -142,9 +144,10 @@ class EvidenceReader(ListReader, AnywhereReader):
                     continue
                 if prio > best_prio:
                     best, best_prio, ev.values_at = items, prio, i
+            waiting = i not in mentions and is_wait(text)  # "Leave for one to two hours."
             ranges = [
                 r
-                for r in find_ranges(_without_advice(unit))
+                for r in find_ranges("" if waiting else _without_advice(unit))
                 if _fits(r.unit, tokens) and not _keypad(r, text)
             ]
             if ev.keypad_at is None and _KEYPAD_WORDS.search(text):
@@ -159,7 +162,7 @@ class EvidenceReader(ListReader, AnywhereReader):
             arrows = find_arrow_pieces(text)  # "1 h → … → 12 h one hour per press 12 h → …"
             if arrows and _fits("s", tokens) and _covers(arrows, ev.ranges):
                 pieces, ev.ranges = arrows, []
-            if pieces and _fits("s", tokens):  # "0:30 – 12:00 30 minutes 12:00 – 24:00 1 hour"
+            if pieces and _fits(pieces[0].unit, tokens):  # "0:30 – 12:00 30 min 12:00 – 24:00 1 h"
                 ev.ranges, ev.range_at = pieces, i
             elif ranges and not ev.ranges:
                 # "one minute per click up to one hour, and in coarser steps after that, up to
@@ -188,6 +191,8 @@ class EvidenceReader(ListReader, AnywhereReader):
                 pressed = None  # "Touch + to raise … with each touch": the pair's presses
             if ev.each_press_at is None and not quiet and pressed:
                 ev.each_press_at = i
+            if ev.shown_hmm is None and (minutes := find_shown_hmm(text)):  # ("2:00": no minutes)
+                ev.shown_hmm = (minutes, i)
             if ev.initial is None:
                 init = find_initial(text)
                 if init:

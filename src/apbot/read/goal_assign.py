@@ -68,7 +68,8 @@ def assign_mentions(
     outside: list[str] | None = None,
 ) -> bool:
     """Give each quantity to the open setting it fits best. True when a delay was set relative
-    to now ("ready in 15 hours", "3 hours from now"): a countdown that must be started."""
+    to now ("ready in 15 hours", "3 hours from now") or a time to finish at ("ready at 7:30"):
+    a countdown that must be started."""
     counting = False
     options: list[tuple[float, int, int, str, Any]] = []
     for mi, mention in enumerate(mentions):
@@ -106,6 +107,8 @@ def assign_mentions(
         claimed.update(range(mention.start, mention.end))
         if view.infos[name].timing == "delay" and _relative(text, mention):
             counting = True
+        if view.infos[name].timing == "finish" and mention.kind == "clock":
+            counting = True  # "ready at 7:30": only a started countdown ends then
     for mi, mention in enumerate(mentions):
         if mi not in used and mention.kind == "clock" and _clock_parts(view, text, mention, goal):
             used.add(mi)

@@ -26,10 +26,16 @@ from apbot.read.roles_common import (
     used_actions,
     var_name,
 )
-from apbot.read.roles_fixed import assign_locks, assign_power, assign_running
+from apbot.read.roles_fixed import assign_locks, assign_power, assign_running, standby_only
 from apbot.read.roles_hourmin import assign_hour_minute, hour_minute_keys
 from apbot.read.roles_keyed import assign_keyed_amounts
-from apbot.read.roles_lists import dial_values, list_evidence, numeric_list, pair_of_names
+from apbot.read.roles_lists import (
+    dial_values,
+    list_evidence,
+    more_less_pair,
+    numeric_list,
+    pair_of_names,
+)
 from apbot.read.roles_pads import listed_groups, option_keys, pad_group, selecting_keys, shown_codes
 from apbot.read.roles_switched import switched_time
 from apbot.read.shapes import CHOICE_WORDS, GENERIC_DIALS, Evidence, adjuster_direction
@@ -58,7 +64,7 @@ def assign(b: Builder) -> None:
         if info.skill.startswith("turn") and info.name not in done:
             dials.setdefault(info.token, []).append(info)
     for base in list(pairs):
-        if pair_of_names(b, base, pairs[base]):
+        if pair_of_names(b, base, pairs[base]) or more_less_pair(b, base, pairs[base]):
             del pairs[base]  # it moves through a list of names: no amount for other keys
     paired = {n for p in pairs.values() for ns in p.values() for n in ns}
     done |= paired | set(digits) | used_actions(b)
@@ -190,6 +196,7 @@ def assign(b: Builder) -> None:
     silent = assign_dials(b, dials, silent)
     assign_leftovers(b, silent, evidence)
     assign_keyed_amounts(b, digits)
+    standby_only(b)
 
 
 def _hold_row(b: Builder, key: ActionInfo, at: int | None) -> bool:

@@ -271,3 +271,42 @@ def _lock_word(b: Builder, info: ActionInfo) -> str:
             if "CLOCK" not in m.group(1):
                 return m.group(1)
     return ""
+
+
+_STANDBY_ONLY_RE = (  # "The timer can only be programmed while the appliance is in standby"
+    r"\b{label}\b(?:\s+(?:key|button))?[^.;]{{0,30}}?\bcan\s+only\s+be\s+"
+    r"(?:programmed|set|used|selected|activated|changed)\s+(?:while|when|in)\b[^.;]{{0,30}}?"
+    r"\b(?:standby|switched\s+off|turned\s+off)\b"
+)
+
+
+def standby_only(b: Builder) -> None:
+    """A key the manual says works only in standby ("The timer can only be programmed while
+    the appliance is in standby") is the one key besides power that works while the appliance
+    is off, and does nothing while it is on."""
+    off = next((g for g in b.guards if g.get("name") == "power off"), None)
+    if off is None:
+        return
+    (power,) = off["when"]
+    for info in b.infos:
+        if info.skill != "press" or info.name in off["only"] or len(info.controls) != 1:
+            continue
+        label = b.labels[info.controls[0]].text if info.controls[0] in b.labels else ""
+        if not label or not re.search(r"\w", label):
+            continue
+        said = re.compile(_STANDBY_ONLY_RE.format(label=re.escape(label)), re.IGNORECASE)
+        at = next((i for i, u in enumerate(b.manual.units) if said.search(u.text)), None)
+        if at is None:
+            continue
+        off["only"].append(info.name)
+        off.pop("hide", None)  # what it sets lights the panel while the rest is dark
+        others = [i.name for i in b.infos if i.name != info.name]
+        b.guards.append(
+            {
+                "name": f"{info.name} in standby only",
+                "when": {power: "on"},
+                "only": others,
+                "display": "",
+            }
+        )
+        b.note(f"guards.{info.name} in standby only", f"{label} works only in standby", at)

@@ -41,6 +41,52 @@ def pair_of_names(b: Builder, base: str, pair: dict[str, list[str]]) -> bool:
     return True
 
 
+_FINE_TUNE_RE = re.compile(  # "MORE and LESS fine-tune the result", "… comes out underdone"
+    r"\b(?:fine[- ]?tunes?|adjusts?\s+the\s+result|underdone|overdone|doneness"
+    r"|standard\s+setting)\b",
+    re.IGNORECASE,
+)
+
+
+def more_less_pair(b: Builder, base: str, pair: dict[str, list[str]]) -> bool:
+    """MORE and LESS keys that fine-tune an automatic programme's result ("press MORE for food
+    that comes out underdone … pressing the other key returns to the standard setting") set
+    a choice of three, less / standard / more, not an amount of another key. They leave the
+    pair (+ and − stay); True when nothing is left of it."""
+    more = [a for a in pair["up"] if token_of(b, a) == "more"]
+    less = [a for a in pair["down"] if token_of(b, a) == "less"]
+    if base or len(more) != 1 or len(less) != 1:
+        return False
+    up, down = "more", "less"
+    told = next(
+        (i for i in b.context([up, down]) if _FINE_TUNE_RE.search(b.manual.units[i].text)), None
+    )
+    if told is None:
+        return False
+    label = (
+        f"{b.labels[up].text}/{b.labels[down].text}"
+        if up in b.labels and down in b.labels
+        else "MORE/LESS"
+    )
+    ev = Evidence(values=["less", "standard", "more"], initial="standard", values_at=told)
+    var = b.add_discrete("adjust", ev.values or [], label, ev)
+    b.variables[var]["wrap"] = False
+    b.feature(
+        f"set_{var}",
+        [
+            {
+                "actions": more + less,
+                "variable": var,
+                "effect": {more[0]: "next", less[0]: "prev"},
+            }
+        ],
+    )
+    b.note(f"variables.{var}.values", "less, standard, more: MORE/LESS fine-tune a result", told)
+    pair["up"].remove(more[0])
+    pair["down"].remove(less[0])
+    return not (pair["up"] or pair["down"])
+
+
 def dial_list(b: Builder, token: str, cw: list[str], ccw: list[str]) -> bool:
     """A generic dial ("SELECT dial: turn to pick a program, or to change the temperature
     after TEMP") whose sentences name a list of names: turning it alone steps that list."""

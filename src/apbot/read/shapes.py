@@ -66,6 +66,7 @@ class Evidence:
     initial_at: int | None = None
     keypad_at: int | None = None  # a sentence of its context speaks of the number keys
     longest: tuple[Range, int] | None = None  # "the longest setting is 13 hours", alone
+    shown_hmm: tuple[int, int] | None = None  # (minutes, unit): "the display shows 9:30"
 
 
 _TIMER_WORDS = frozenset({"timer", "delay", "preset", "reserve", "finish"})
@@ -186,6 +187,19 @@ _ADVICE_PROSE_RE = re.compile(  # "45 to 55 % is a sensible target", "ideally 40
     r"|healthy)\b",
     re.IGNORECASE,
 )
+
+
+_WAIT_RE = re.compile(  # "Leave for one to two hours", "let it stand for 5–10 minutes"
+    r"(?:^|[.;:]\s+|^\d+\.\s+)(?:then\s+)?(?:leave|wait|let\s+(?:it|them|the\s+\w+)\s+"
+    r"(?:stand|rest|soak|cool))\b[^.;]{0,20}?\bfor\b",
+    re.IGNORECASE,
+)
+
+
+def is_wait(text: str) -> bool:
+    """A sentence telling the user to wait ("3. Leave for one to two hours, then …"): its
+    times are a wait, not the limits of a setting named nearby."""
+    return bool(_WAIT_RE.search(text))
 
 
 def _without_advice(unit: Unit) -> str:

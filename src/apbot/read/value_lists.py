@@ -106,6 +106,13 @@ def _filled_codes(parts: list[str]) -> list[str]:
     return out
 
 
+def _range_table_header(items: list[str]) -> bool:
+    """ "Timer settings: Range Step 0.5 – 4 h …": the head of a table of ranges and their
+    steps, not a list of named values."""
+    said = {i.lower() for i in items}
+    return "range" in said and bool(said & {"step", "steps", "increment", "increments"})
+
+
 def find_list(text: str) -> tuple[list[str], str] | None:
     """A list of values in one sentence, and how it was written ("arrows", "list")."""
     numbers = _NUMBER_LIST.search(text)
@@ -155,6 +162,8 @@ def find_list(text: str) -> tuple[list[str], str] | None:
             for p in re.split(r",\s*|\s*/\s*|\s*[·•|]\s*|\s{2,}|\s+or\s+|\s+and\s+", segment)
         ]
         items = [i for i in items if i]
+        if _range_table_header(items):
+            continue
         caps = sum(1 for i in items if i.upper() == i and any(c.isalpha() for c in i))
         if len(items) >= 2 and all(_value_like(i, caps >= 2) for i in items):
             lower_ok = len(items) >= 3 and all(len(i.split()) <= 2 for i in items)

@@ -164,9 +164,23 @@ _STEPPED_PIECE_RE = re.compile(  # "0:30 – 12:00  30 minutes": a range, then i
 )
 
 
+_DIGITS = r"\d+(?:[.,]\d+)?"
+_STEPPED_AMOUNT_PIECE_RE = re.compile(  # "1 – 12 h  1 h": a range in a unit, then its step
+    rf"(?<![\w:.])({_DIGITS})\s*(?:{UNIT})?{_DASH}({_DIGITS})\s*({UNIT})\s+"
+    rf"(?:by\s+|in\s+steps\s+of\s+)?({_DIGITS}|one|an?)\s*({UNIT})(?![\w:])",
+    re.IGNORECASE,
+)
+
+
 def find_stepped_pieces(text: str) -> list[Range]:
-    """Two or more time ranges, each followed by its step, the next starting where the last
-    ends ("Range Step 0:30 - 12:00 30 minutes 12:00 - 24:00 1 hour"), in seconds; else []."""
+    """Two or more ranges, each followed by its step, the next starting where the last ends:
+    clock times in seconds ("Range Step 0:30 - 12:00 30 minutes 12:00 - 24:00 1 hour") or
+    amounts in their unit ("Range Step 1 – 12 h 1 h 12 – 24 h 2 h"); else []."""
+    pieces = _stepped_clock_pieces(text)
+    return pieces or _stepped_amount_pieces(text)
+
+
+def _stepped_clock_pieces(text: str) -> list[Range]:
     pieces: list[Range] = []
     for m in _STEPPED_PIECE_RE.finditer(text):
         low, high = _hmm(m.group(1)), _hmm(m.group(2))
@@ -177,11 +191,37 @@ def find_stepped_pieces(text: str) -> list[Range]:
     return pieces if len(pieces) >= 2 else []
 
 
+def _stepped_amount_pieces(text: str) -> list[Range]:
+    """A table of ranges and steps in one unit flattened into a line; the step may be told in
+    a smaller time unit ("0.5 – 10 h 30 min") and is then converted to the range's."""
+    pieces: list[Range] = []
+    for m in _STEPPED_AMOUNT_PIECE_RE.finditer(text):
+        low, high, unit = number(m.group(1)), number(m.group(2)), unit_name(m.group(3))
+        word = m.group(4).lower()
+        amount = 1.0 if word in ("one", "a", "an") else number(m.group(4))
+        step_unit = unit_name(m.group(5))
+        if amount is not None and step_unit != unit:
+            both_times = is_time_unit(step_unit) and is_time_unit(unit)
+            amount = seconds(amount, step_unit) / seconds(1, unit) if both_times else None
+        joined = not pieces or (pieces[-1].high == low and pieces[-1].unit == unit)
+        if low is None or high is None or amount is None or not low < high or not joined:
+            break
+        pieces.append(Range(low, high, unit, amount))
+    return pieces if len(pieces) >= 2 else []
+
+
 _ARROW = r"\s*(?:[-─—–=]*[►→>])\s*"
 _END = r"(\d{1,2}:\d{2}|\d+(?:[.,]\d+)?\s*(?:h|hrs?|hours?|min|mins|minutes?|s|secs?|seconds?)\b)"
 _ARROW_PIECE_RE = re.compile(  # "1 h → 2 h → … → 12 h   one hour per press", "0:00 ──► 1:00  10 s"
     rf"(?<![\d:.]){_END}{_ARROW}(?:(?:…|\.\.\.|{_END}){_ARROW})*{_END}\s+(?:by\s+)?"
     rf"({NUM}|an?)\s*(hours?|hrs?|h|minutes?|mins?|min|seconds?|secs?|s)\b",
+    re.IGNORECASE,
+)
+
+
+_SHOWN_HMM_RE = re.compile(  # "until the display shows 9:30", "the display reads 2:45"
+    r"\b(?:shows?|showing|reads?|displays?|indicates?)\b[^.;]{0,25}?(?<![\d:.])"
+    r"(\d{1,2}):([0-5]\d)(?![\d:])(?!\s*(?:am|pm|a\.m|p\.m|o'clock)\b)",
     re.IGNORECASE,
 )
 
@@ -219,6 +259,14 @@ def find_arrow_pieces(text: str) -> list[Range]:
             break
         pieces.append(Range(low, high, "s", seconds(amount, unit_name(m.group(5)))))
     return pieces if len(pieces) >= 2 else []
+
+
+def find_shown_hmm(text: str) -> int | None:
+    """The minutes of a setting shown as hours:minutes in an example ("press TIME until the
+    display shows 9:30": 30), or None: a setting told in hours that the display writes h:mm
+    is a time, set in minutes."""
+    m = _SHOWN_HMM_RE.search(text)
+    return int(m.group(2)) if m else None
 
 
 def find_bounds(texts: list[str]) -> Range | None:

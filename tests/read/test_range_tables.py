@@ -1,0 +1,133 @@
+"""Rules about how far a setting goes when a manual tells it in a small table or an example,
+each on a short manual written in our own words the way a converted commercial manual reads."""
+
+from __future__ import annotations
+
+from apbot.read import read_manual
+
+# a fan heater whose off-timer table (range, step) was flattened into one line
+HEATER = """# Fan heater FH-9
+
+## Keys
+| Key | Function |
+|---|---|
+| ON/OFF | Switches the heater on and off. |
+| TIMER | Sets the switch-off timer. |
+
+## Switch-off timer
+Press TIMER repeatedly to choose after how long the heater switches itself off.
+Timer settings:   Range         Step   0.5 – 4 h   30 min   4 – 16 h   2 h
+"""
+
+
+def test_a_flattened_range_and_step_table_in_hours_gives_each_piece_its_step() -> None:
+    model = read_manual(HEATER, ["press_on_off", "press_timer"]).model
+    timer = model.variables["timer"]
+    tops = [str(r[1]) for r in timer.ranges]
+    steps = [str(r[2]) for r in timer.ranges]
+    assert tops in (["4", "16"], ["04:00:00", "16:00:00"]), timer.ranges
+    assert steps in (["0.5", "2"], ["1800", "7200"]), timer.ranges
+
+
+# a rice cooker whose preset is told in hours, and shown as hours:minutes in an example
+COOKER = """# Rice cooker RC-3
+
+## Keys
+| Key | Function |
+|---|---|
+| MENU | Chooses the cooking menu: WHITE, BROWN or PORRIDGE. |
+| PRESET | Sets after how long the rice is ready. |
+| START | Starts cooking or the preset countdown. |
+
+## Preset
+The preset can be set up to 15 hours ahead. Press PRESET several times; for example,
+for rice ready at breakfast press PRESET until the display shows 7:40, then press START.
+"""
+
+
+def test_a_setting_in_hours_the_display_shows_as_hours_and_minutes_is_a_time() -> None:
+    model = read_manual(COOKER, ["press_menu", "press_preset", "press_start"]).model
+    preset = model.variables["preset"]
+    assert preset.type == "time", preset
+    assert str(preset.ranges[-1][1]) == "15:00:00"
+    assert int(preset.ranges[0][2]) <= 600  # set in minutes: 7:40 can be reached
+
+
+# a water boiler: the descaling steps wait an hour or two after a key press
+BOILER = """# Water boiler WB-5
+
+## Keys
+| Key | Function |
+|---|---|
+| BOIL | Brings the water back to the boil. |
+| WARM | Chooses the keep-warm temperature: 60, 80 or 95 °C. |
+| POUR | Pours hot water. |
+
+## Descaling
+1. Fill with water and add two spoons of citric acid.
+2. Press BOIL.
+3. Leave for one to three hours, then empty the boiler and rinse it.
+"""
+
+
+def test_a_wait_after_pressing_a_key_is_no_range_of_that_key() -> None:
+    model = read_manual(BOILER, ["press_boil", "press_warm", "press_pour"]).model
+    boil = model.variables.get("boil")
+    assert boil is None or boil.type == "discrete", boil
+
+
+# an oven whose MORE / LESS keys fine-tune an automatic programme
+OVEN = """# Compact oven CO-1
+
+## Keys
+| Key | Function |
+|---|---|
+| AUTO | Chooses an automatic programme: PIZZA, CHIPS or CAKE. |
+| + / − | Change the cooking time. |
+| MORE / LESS | Adjust the result of an automatic programme. |
+| START | Starts the oven. |
+
+## Automatic programmes
+Press AUTO until your dish shows. If the dish usually comes out underdone, press MORE; if it
+comes out overdone, press LESS. Pressing the other key goes back to the normal result.
+"""
+
+
+def test_more_and_less_keys_that_fine_tune_a_result_choose_less_standard_or_more() -> None:
+    actions = ["press_auto", "press_plus", "press_minus", "press_more", "press_less", "press_start"]
+    model = read_manual(OVEN, actions).model
+    adjust = model.variables["adjust"]
+    assert adjust.type == "discrete" and adjust.values == ["less", "standard", "more"]
+
+
+# a food steamer whose programme table gives each programme its own steaming times
+STEAMER = """# Food steamer FS-2
+
+## Keys
+| Key | Function |
+|---|---|
+| PROG | Chooses the programme: VEG, FISH, EGGS or KEEP. |
+| STEAM TIME | Changes the steaming time. |
+| START | Starts steaming. |
+
+## Programmes
+Each press of PROG selects the next programme.
+
+| Display | Programme | Steam time |
+|---|---|---|
+| VEG | Vegetables | 10 to 40 minutes |
+| FISH | Fish fillets | 5, 10 or 15 minutes |
+| EGGS | Eggs | 6, 9 or 12 minutes |
+| KEEP | Keep warm | — |
+
+Press STEAM TIME to move to the next available time.
+"""
+
+
+def test_a_programme_table_gives_each_programme_its_listed_or_ranged_times() -> None:
+    model = read_manual(STEAMER, ["press_prog", "press_steam_time", "press_start"]).model
+    steam = model.variables["steam_time"]
+    assert steam.depends_on == "prog", steam
+    assert steam.cases is not None
+    assert [str(x) for x in steam.cases["fish"].ranges[0]][:2] == ["00:05:00", "00:15:00"]
+    assert [str(x) for x in steam.cases["eggs"].ranges[0]][:2] == ["00:06:00", "00:12:00"]
