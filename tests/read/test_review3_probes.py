@@ -58,3 +58,30 @@ Press PROG several times to pick a program.
 def test_a_numbered_chart_of_programme_names_is_still_the_programme_list() -> None:
     model = read_manual(NUMBERED_PROGRAMMES, ["press_prog", "press_start"]).model
     assert model.variables["prog"].values == ["smooth", "chunky", "juice"]
+
+
+TWO_SETTINGS = """# Slow steamer ST-4
+
+## Keys
+
+- STEAM TIME: how long the food steams.
+- DELAY: how long to wait before steaming.
+- START: begins.
+
+## Times
+
+The delay may be set from 1 to 8 hours.
+
+The steam time goes up by 2 min until 20 min; past 20 min it goes up by 10 min, up to 120 min.
+
+Press DELAY several times to choose the wait.
+
+Press STEAM TIME, then turn the dial to set the steaming time.
+"""
+ST_ACTIONS = ["press_steam_time", "press_delay", "press_start", "turn_dial_left", "turn_dial_right"]
+
+
+def test_a_changing_step_told_of_another_setting_is_not_this_settings_range() -> None:
+    model = read_manual(TWO_SETTINGS, ST_ACTIONS).model
+    ranges = getattr(model.variables["delay"], "ranges", None) or []
+    assert len(ranges) == 1 and ranges[0][1] in (8, "08:00:00")  # (before: the steam pieces)
