@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from apbot.read import read_manual
 from apbot.read.shown import shown_words
+from apbot.sim.simulator import Simulator
 
 
 def test_a_figure_callout_letter_after_an_icon_is_not_its_glyph() -> None:
@@ -85,3 +86,19 @@ def test_a_changing_step_told_of_another_setting_is_not_this_settings_range() ->
     model = read_manual(TWO_SETTINGS, ST_ACTIONS).model
     ranges = getattr(model.variables["delay"], "ranges", None) or []
     assert len(ranges) == 1 and ranges[0][1] in (8, "08:00:00")  # (before: the steam pieces)
+
+
+SHADES = """KEYS
+
+SHADE     Print shade. Each touch goes one shade deeper, and after the deepest back to the
+          palest. The screen reads SHADE 1, SHADE 2 or SHADE 3.
+GO        Starts printing.
+"""
+
+
+def test_levels_stripped_of_the_keys_name_still_display_with_it() -> None:
+    model = read_manual(SHADES, ["press_shade", "press_go"]).model
+    sim = Simulator(model)
+    sim.reset()
+    shown = [sim.step("press_shade").display for _ in range(3)]
+    assert shown == ["SHADE 2", "SHADE 3", "SHADE 1"]  # as the manual says the screen reads
