@@ -19,6 +19,7 @@ from apbot.read.evidence_checks import (
     _with_every,
     _with_midpoints,
     _without_only,
+    about_another,
     lettered_row,
 )
 from apbot.read.evidence_lists import ListReader
@@ -198,7 +199,12 @@ class EvidenceReader(ListReader, AnywhereReader):
                 if init:
                     ev.initial, ev.initial_at = init, i
         for i in sorted(self.context(tokens)):  # "up to 1 h by 10 min; after that by 30 min"
-            window = [k for k in range(i, min(i + 4, len(units))) if not units[k].cells]
+            window = []
+            for k in range(i, min(i + 4, len(units))):
+                if k not in mentions and about_another(units[k].text, others):
+                    break  # "The cook time changes by 1 minute …" after the delay's range
+                if not units[k].cells:
+                    window.append(k)
             names = tuple(self.labels[t].text.lower() for t in tokens if t in self.labels)
             two = find_two_steps([units[k].text for k in window], names)
             if two and _fits(two[0][0].unit, tokens):

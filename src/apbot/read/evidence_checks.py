@@ -179,3 +179,19 @@ def lettered_row(units: list[Unit], names: set[str]) -> tuple[list[str], int] | 
             if len(items) >= 3 and all(len(i) <= 20 for i in items):
                 return items, k
     return None
+
+
+_USED_KEY_RE = r"(?:press|presses|pressing|touch|tap|push|hold|turn|turning|rotate)\s+(?:the\s+)?"
+
+
+def about_another(text: str, others: set[str]) -> bool:
+    """Whether a sentence is about another setting: it names one (a name with a word of three
+    letters or more) other than as the key pressed or turned ("The cook time changes by 1 minute
+    …" is the cook time's; "Press + or −. Up to 2 hours …" and "turn the dial" only use keys)."""
+    for name in others:
+        if not any(len(w) >= 3 for w in words(name)):
+            continue
+        for m in re.finditer(rf"(?<![\w-]){re.escape(name)}(?![\w-])", text, re.I):
+            if not re.search(rf"\b{_USED_KEY_RE}$", text[: m.start()], re.I):
+                return True
+    return False

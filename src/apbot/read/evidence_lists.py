@@ -416,9 +416,19 @@ class ListReader:
         if len(rows) < 2 or not all(re.fullmatch(r"\d{1,2}[.)]?", r.cells[0]) for r in rows):
             return None
         column = _next_table_column(units, i - 1, 1)
+        if column and self._key_legend(column):
+            return None  # "| 1 | MENU | … |", "| 2 | TIMER | … |": a legend of the panel's keys
         if column:
             self._table_at = i
         return column or None
+
+    def _key_legend(self, cells: list[str]) -> bool:
+        """Whether most cells of a column are the panel's own keys (printed labels or action
+        names): a key legend says what each key does, it lists no values of one key."""
+        keys = {lab.text.strip(" .").upper() for lab in self.labels.values() if lab.text}
+        keys |= {t.upper().replace("_", " ") for t in self.labels}
+        hits = sum(c.strip(" *.").upper() in keys for c in cells)
+        return hits >= 2 and 2 * hits >= len(cells)
 
     def _initial_from_values(self, ev: Evidence, tokens: list[str]) -> None:
         if ev.initial is not None or not ev.values:

@@ -29,9 +29,10 @@ _PATTERNS = [
 ]  # fmt: skip
 _ICON = re.compile(
     r"\b(?:the|a|an)?\s*([a-z]{3,12})\s+(?:icon|symbol)\b"
-    r"(?:\s*\(\s*\**([^\w\s()*]{1,3}|\*{1,3}|[A-Z][A-Z0-9-]{0,11})\**\s*\))?",
+    r"(?:\s*\(\s*\**([^\w\s()*]{1,3}|\*{1,3}|(?-i:[A-Z]{2}[A-Z0-9-]{0,10}))\**\s*\))?",
     re.IGNORECASE,
-)  # "the flame icon", "a padlock symbol", "the star symbol (*)": the glyph in brackets
+)  # "the flame icon", "a padlock symbol", "the star symbol (*)": the glyph in brackets;
+# a lone capital "(A)" is a figure callout, not a glyph
 _NOT_WORDS = {
     "THE", "A", "AN", "AND", "OR", "IT", "IF", "TO", "NO", "ON", "OFF", "IN", "AT", "THIS",
     "WHEN", "WHILE", "PRESS", "TOUCH", "HOLD", "PUSH", "TAP", "NOTE", "TIP", "DISPLAY", "SCREEN",
