@@ -176,16 +176,13 @@ def _mentions(units: list[Unit], token: str, label: Label) -> list[int]:
 
 def _inflected(label: str) -> re.Pattern[str] | None:
     """A key of two or more words named in running prose with its first word inflected:
-    "HEAT TIME" as "the heating time", "DRY TIME" as "drying time". Only for labels of several
-    words, so that a one-word key (HEAT) never claims every "heating" in the manual."""
+    "HEAT TIME" as "the heating time", "DRY TIME" as "drying time". Only the inflected form (the
+    plain words in lower case, "the water level", are the setting, not always this key), and
+    only for labels of several words, so that a one-word key (HEAT) never claims every
+    "heating" in the manual."""
     ws = words(label)
     if len(ws) < 2 or not all(w.isalpha() for w in ws) or len(ws[0]) < 3:
         return None
     first = ws[0][:-1] if ws[0].endswith("e") else ws[0]
-    stem = (
-        rf"{re.escape(first)}(?:e|es|ed|ing|s)?"
-        if first != ws[0]
-        else rf"{re.escape(first)}(?:s|ed|ing)?"
-    )
     rest = r"[\s-]+".join(re.escape(w) for w in ws[1:])
-    return re.compile(rf"\b{stem}[\s-]+{rest}\b", re.IGNORECASE)
+    return re.compile(rf"\b{re.escape(first)}(?:ing|ed)[\s-]+{rest}\b", re.IGNORECASE)
