@@ -44,3 +44,35 @@ def test_a_name_ending_in_time_is_a_time_whatever_its_first_word() -> None:
     model = read_manual(HOB, ["press_heat_time", "press_minus", "press_plus", "press_start"]).model
     timer = model.variables["heat_time"]
     assert [tuple(r) for r in getattr(timer, "ranges", [])] == [("00:01:00", "01:30:00", 60)]
+
+
+# a sandwich toaster whose programme chart puts a code first and the pad's name second; the
+# first pad's name is broken across two lines of the chart and the action name is not its label
+TOASTER = """PANEL
+
+POWER   CHEESE+HAM   CHEESE   PLAIN   START
+
+The display shows the code of the chosen programme.
+
+PROGRAMME CHART
+
+| Code | Pad     | Minutes |
+|------|---------|---------|
+| A1   | CHEESE+ HAM | 4   |
+| A2   | CHEESE  | 3       |
+| A3   | PLAIN   | 2       |
+"""
+
+
+def test_a_chart_with_a_column_of_pads_and_one_of_codes_makes_one_choice() -> None:
+    actions = ["press_power", "press_deluxe", "press_cheese", "press_plain", "press_start"]
+    model = read_manual(TOASTER, actions).model
+    choice = next(
+        n
+        for n, v in model.variables.items()
+        if isinstance(v, DiscreteVariable) and "plain" in [str(x).lower() for x in v.values]
+    )
+    var = model.variables[choice]
+    assert isinstance(var, DiscreteVariable)
+    assert sorted(str(x).lower() for x in var.values) == ["cheese", "cheese+ham", "plain"]
+    assert sorted((var.show or {}).values()) == ["A1", "A2", "A3"]
