@@ -76,3 +76,23 @@ def test_a_chart_with_a_column_of_pads_and_one_of_codes_makes_one_choice() -> No
     assert isinstance(var, DiscreteVariable)
     assert sorted(str(x).lower() for x in var.values) == ["cheese", "cheese+ham", "plain"]
     assert sorted((var.show or {}).values()) == ["A1", "A2", "A3"]
+
+
+# a grill whose timer steps are printed as a list with dot leaders between time span and step
+GRILL_TIMER = """SETTING THE TIMER
+
+Touch TIMER, then + or -.
+     0:00 to 0:20 ........ 1 minute per touch
+     0:20 to 2:00 ........ 10 minutes per touch
+The timer stops at 2:00.
+START    starts grilling.
+"""
+
+
+def test_dot_leaders_between_a_span_and_its_step_keep_both_pieces() -> None:
+    model = read_manual(GRILL_TIMER, ["press_timer", "press_minus", "press_plus", "press_start"])
+    timer = model.model.variables["timer"]
+    assert [tuple(r) for r in getattr(timer, "ranges", [])] == [
+        ("00:00:00", "00:20:00", 60),
+        ("00:20:00", "02:00:00", 600),
+    ]

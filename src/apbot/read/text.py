@@ -98,6 +98,9 @@ def _strip_markup(line: str) -> str:
     line = re.sub(r"\*\*|__|`+", "", line)
     line = re.sub(r"(?<!\w)\*(?=\S)|(?<=\S)\*(?!\w)", "", line)
     line = re.sub(r"^\s*>+\s?", "", line)
+    # a dot leader ("0:00 to 0:30 ........ 1 minute per touch") joins two halves of one
+    # statement; its dots are no sentence end
+    line = re.sub(r"(?<=\S) ?\.{4,} ?(?=\S)", " ", line)
     return line
 
 
