@@ -162,6 +162,9 @@ def _mentions(units: list[Unit], token: str, label: Label) -> list[int]:
     plain = r"[\s-]+".join(re.escape(w) for w in tw)
     if plain:
         patterns.append(re.compile(rf"\b{plain}\w*(?:\s+\w+)?\s+{CONTROL_NOUNS}\b", re.IGNORECASE))
+    spoken = _inflected(label.text if label.line is not None else "")
+    if spoken:
+        patterns.append(spoken)
     symbols = [s for w in (token, *tw[-1:]) for s in SYMBOLS.get(w, ())]
     for symbol in symbols:
         if len(symbol) == 1 and symbol in "+-−–<>":
@@ -169,3 +172,17 @@ def _mentions(units: list[Unit], token: str, label: Label) -> list[int]:
         else:
             patterns.append(re.compile(re.escape(symbol)))
     return [i for i, u in enumerate(units) if any(p.search(u.text) for p in patterns)]
+
+
+def _inflected(label: str) -> re.Pattern[str] | None:
+    """A key of two or more words named in running prose with its first word inflected:
+    "HEAT TIME" as "the heating time", "DRY TIME" as "drying time". Only the inflected form (the
+    plain words in lower case, "the water level", are the setting, not always this key), and
+    only for labels of several words, so that a one-word key (HEAT) never claims every
+    "heating" in the manual."""
+    ws = words(label)
+    if len(ws) < 2 or not all(w.isalpha() for w in ws) or len(ws[0]) < 3:
+        return None
+    first = ws[0][:-1] if ws[0].endswith("e") else ws[0]
+    rest = r"[\s-]+".join(re.escape(w) for w in ws[1:])
+    return re.compile(rf"\b{re.escape(first)}(?:ing|ed)[\s-]+{rest}\b", re.IGNORECASE)

@@ -36,7 +36,15 @@ from apbot.read.roles_lists import (
     numeric_list,
     pair_of_names,
 )
-from apbot.read.roles_pads import listed_groups, option_keys, pad_group, selecting_keys, shown_codes
+from apbot.read.roles_pads import (
+    codes_shown,
+    column_keys,
+    listed_groups,
+    option_keys,
+    pad_group,
+    selecting_keys,
+    shown_codes,
+)
 from apbot.read.roles_switched import switched_time
 from apbot.read.shapes import CHOICE_WORDS, GENERIC_DIALS, Evidence, adjuster_direction
 
@@ -82,6 +90,12 @@ def assign(b: Builder) -> None:
         var = pad_group(b, selecting)
         keys = [k for k in keys if k not in selecting]
         shown_codes(b, var, selecting)
+    else:  # a chart with a column of keys ("Code | Pad | …")
+        selecting, codes = column_keys(b, keys)
+        if selecting:
+            var = pad_group(b, selecting)
+            keys = [k for k in keys if k not in selecting]
+            codes_shown(b, var, selecting, codes)
     pads = [k for k in keys if k.skill == "press" and not set(words(k.token)) & FUNCTION_WORDS]
     named = [k for k in keys if k.skill == "press" and k not in pads]
     for group in listed_groups(b, pads + named, tables_only=True):

@@ -255,3 +255,78 @@ def _group_noun(b: Builder, group: list[ActionInfo]) -> str:
                 if re.search(rf"\b{noun}", text):
                     counts[noun] = counts.get(noun, 0) + 1
     return max(counts, key=lambda n: counts[n]) if counts else "programme"
+
+
+KEY_COLUMN_RE = re.compile(r"^(?:keys?|buttons?|pads?|touch ?pads?|controls?)$", re.IGNORECASE)
+CODE_COLUMN_RE = re.compile(r"^(?:codes?|no\.?|number|display|shown)$", re.IGNORECASE)
+
+
+def column_keys(b: Builder, keys: list[ActionInfo]) -> tuple[list[ActionInfo], dict[str, str]]:
+    """A chart with a column headed for the keys and one for codes ("Code | Pad | Wash | Dry …"):
+    the keys named down it, each with its own code, are the choices of one setting, and the code
+    is what the display shows for each (key name → code). A row whose key is named nowhere
+    else goes to the one key the manual never names, as in :func:`selecting_keys`."""
+    presses = [k for k in keys if k.skill == "press"]
+    tables: list[list[Unit]] = []
+    for unit in b.manual.units:
+        if unit.cells and unit.header and any(KEY_COLUMN_RE.match(h.strip()) for h in unit.header):
+            if tables and tables[-1][-1].header == unit.header:
+                tables[-1].append(unit)
+            else:
+                tables.append([unit])
+    for rows in tables:
+        header = [h.strip() for h in rows[0].header]
+        col = next(i for i, h in enumerate(header) if KEY_COLUMN_RE.match(h))
+        code_col = next((i for i, h in enumerate(header) if CODE_COLUMN_RE.match(h)), None)
+        if code_col is None:
+            continue  # a key table ("Key | What it does"), not a chart of choices
+        found: list[ActionInfo] = []
+        codes: dict[str, str] = {}
+        free: list[Unit] = []
+        for unit in rows:
+            if col >= len(unit.cells):
+                continue
+            cell = re.sub(r"\s+", "", unit.cells[col].strip(" *")).upper()
+            key = next(
+                (
+                    k
+                    for k in presses
+                    if b.labels[k.controls[0]].line is not None
+                    and re.sub(r"\s+", "", b.labels[k.controls[0]].text).upper() == cell
+                ),
+                None,
+            )
+            if key is None:
+                free.append(unit)
+                continue
+            found.append(key)
+            if code_col is not None and code_col < len(unit.cells):
+                codes[key.name] = unit.cells[code_col].strip(" *")
+        unnamed = [k for k in presses if b.labels[k.controls[0]].line is None]
+        if len(found) >= 2 and len(free) == 1 and len(unnamed) == 1:
+            label = b.labels[unnamed[0].controls[0]]
+            text = re.sub(r"(?<=[+/&-])\s+", "", free[0].cells[col].strip(" *"))
+            label.text, label.line = text, free[0].line
+            label.mentions = [i for i, u in enumerate(b.manual.units) if text in u.text]
+            found.append(unnamed[0])
+            if code_col is not None and code_col < len(free[0].cells):
+                codes[unnamed[0].name] = free[0].cells[code_col].strip(" *")
+        found = _dedupe_keys(found)
+        coded = [codes.get(k.name, "") for k in found]
+        if len(found) >= 2 and all(CODE_RE.fullmatch(c) for c in coded):
+            return found, codes  # every key its own code ("P1" … "P4"): the choices of one
+    return [], {}
+
+
+def codes_shown(b: Builder, var: str, keys: list[ActionInfo], codes: dict[str, str]) -> None:
+    """Each value shown by its code, when every key has its own short code ("P1" … "P4")."""
+    if len(codes) != len(keys) or len(set(codes.values())) != len(keys):
+        return
+    if not all(CODE_RE.fullmatch(c) for c in codes.values()):
+        return
+    shown = {b.features[k.token][0]["effect"]["to"]: codes[k.name] for k in keys}
+    b.variables[var]["show"] = shown
+    b.note(
+        f"variables.{var}.show",
+        "the display shows each one's code: " + ", ".join(f"{v} {c}" for v, c in shown.items()),
+    )

@@ -391,7 +391,15 @@ def _value_text(value: str) -> str:
 
 
 def _unit_from_words(name: str) -> str:
-    ws = set(words(name.replace("_", " ")))
+    """The unit a setting's name calls for; its last word, the head noun, decides first
+    ("heat time" is a time, "time temp" a temperature)."""
+    listed = words(name.replace("_", " "))
+    head = listed[-1] if len(listed) >= 2 else ""
+    if head in ("temp", "temperature"):
+        return "°C"
+    if head in ("time", "timer", "delay", "duration"):
+        return "min"
+    ws = set(listed)
     if ws & {"temp", "temperature", "heat"}:
         return "°C"
     if ws & {"humidity", "percent"}:

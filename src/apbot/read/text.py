@@ -100,6 +100,9 @@ def _strip_markup(line: str) -> str:
     alone = r"(?!(?<=[(\"'])\*[)\"'])"
     line = re.sub(rf"(?<!\w){alone}\*(?=\S)|(?<=\S){alone}\*(?!\w)", "", line)
     line = re.sub(r"^\s*>+\s?", "", line)
+    # a dot leader ("0:00 to 0:30 ........ 1 minute per touch") joins two halves of one
+    # statement; its dots are no sentence end
+    line = re.sub(r"(?<=\S) ?\.{4,} ?(?=\S)", " ", line)
     return line
 
 
