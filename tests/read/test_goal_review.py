@@ -21,3 +21,24 @@ def test_a_choice_list_from_off_is_no_scale_of_strength() -> None:
         assert goal.get("mode") != "cheese"
     # the level setting of the same shape still is a scale
     assert parse_instruction(model, "Dough, the maximum mist")["mist"] == "heavy"
+
+
+def test_start_this_or_next_thing_is_a_start_now() -> None:
+    model = loads_model(CABINET)
+    assert parse_instruction(model, "Start this batch on yogurt.")["running"] == "on"
+    assert parse_instruction(model, "Start the next batch on cheese.")["running"] == "on"
+    assert "running" not in parse_instruction(model, "Yogurt, starting next week.")
+
+
+def test_a_negated_verb_near_a_level_does_not_turn_it_off() -> None:
+    model = loads_model(CABINET)
+    assert "mist" not in parse_instruction(model, "Dough; don't touch the mist, just start.")
+    assert parse_instruction(model, "Dough with no mist")["mist"] == "off"
+
+
+def test_waiting_for_something_else_does_not_hold_back_the_start() -> None:
+    model = loads_model(CABINET)
+    assert (
+        parse_instruction(model, "Start the dough; I'll wait before shaping it.")["running"] == "on"
+    )
+    assert parse_instruction(model, "Dough, but hold off on starting")["running"] == "off"
