@@ -42,3 +42,18 @@ def test_waiting_for_something_else_does_not_hold_back_the_start() -> None:
         parse_instruction(model, "Start the dough; I'll wait before shaping it.")["running"] == "on"
     )
     assert parse_instruction(model, "Dough, but hold off on starting")["running"] == "off"
+
+
+def test_how_often_is_no_duration() -> None:
+    model = loads_model(CABINET)
+    goal = parse_instruction(model, "Yogurt, I make it twice a week")
+    assert goal["mode"] == "yogurt" and "ferment_days" not in goal
+    assert "ferment_days" not in parse_instruction(model, "Cheese, three times a week")
+
+
+def test_weeks_are_left_alone_without_a_setting_counted_in_days() -> None:
+    hours = CABINET.replace(
+        "unit: d\n    ranges: [[1, 30, 1]]", "unit: h\n    ranges: [[1, 48, 1]]"
+    )
+    goal = parse_instruction(loads_model(hours), "Tempeh, and start it; back in a week")
+    assert goal["mode"] == "tempeh" and "ferment_days" not in goal
