@@ -23,9 +23,9 @@ _NOT_COUNTED = frozenset({"month", "months", "year", "years", "yr", "yrs"})
 _HOW_OFTEN = frozenset({"once", "twice", "thrice", "times", "every", "per", "each"})
 
 
-def in_weeks(text: Text, mentions: list[Mention], days: bool = True) -> list[Mention]:
+def in_weeks(text: Text, mentions: list[Mention], daily: bool = True) -> list[Mention]:
     """ "two weeks", "a fortnight" are durations of 14 days (not a bare 2) when a setting counts
-    in days (``days``); a number of months or years is no setting's value (a "two-year-old",
+    in days (``daily``); a number of months or years is no setting's value (a "two-year-old",
     "twice a year"). How often ("twice a week", "every two weeks") is no duration at all."""
     out: list[Mention] = []
     covered = {k for m in mentions for k in range(m.start, m.end)}
@@ -36,14 +36,14 @@ def in_weeks(text: Text, mentions: list[Mention], days: bool = True) -> list[Men
         if mention.kind == "number" and _how_often(text, mention):
             continue  # "twice a week", "3 times a day": how often, no setting's value
         often = text.word(mention.start - 1) in _HOW_OFTEN
-        if mention.kind == "number" and unit in _WEEKS and days and not often:
+        if mention.kind == "number" and unit in _WEEKS and daily and not often:
             days = mention.value * _WEEKS[unit]
             end = mention.end + 1 + (text.word(mention.end) == "-")
             mention = replace(mention, kind="duration", value=days * 86400, end=end)
             mention = replace(mention, dimension="time", unit="")
         out.append(mention)
     for k, token in enumerate(text.tokens):  # "a week", "one fortnight": no number of its own
-        if not days or text.word(k - 2) in _HOW_OFTEN:
+        if not daily or text.word(k - 2) in _HOW_OFTEN:
             continue  # "twice a week", "three times a week": how often, no duration
         if token.text in _WEEKS and k - 1 not in covered and text.word(k - 1) in ("a", "one"):
             days = 86400.0 * _WEEKS[token.text]
