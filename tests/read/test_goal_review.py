@@ -57,3 +57,10 @@ def test_weeks_are_left_alone_without_a_setting_counted_in_days() -> None:
     )
     goal = parse_instruction(loads_model(hours), "Tempeh, and start it; back in a week")
     assert goal["mode"] == "tempeh" and "ferment_days" not in goal
+
+
+def test_a_level_word_joined_to_speed_still_names_the_level() -> None:
+    model = loads_model(CABINET.replace("values: [low, medium, high]", "values: [low, high]"))
+    assert parse_instruction(model, "Dough with the fan on high-speed")["fan"] == "high"
+    assert parse_instruction(model, "Yogurt on a low-speed fan")["fan"] == "low"
+    assert "fan" not in parse_instruction(model, "Yogurt from low-fat milk")
