@@ -64,3 +64,10 @@ def test_a_level_word_joined_to_speed_still_names_the_level() -> None:
     assert parse_instruction(model, "Dough with the fan on high-speed")["fan"] == "high"
     assert parse_instruction(model, "Yogurt on a low-speed fan")["fan"] == "low"
     assert "fan" not in parse_instruction(model, "Yogurt from low-fat milk")
+
+
+def test_switching_off_as_a_later_step_is_no_power_off_now() -> None:
+    model = loads_model(CABINET)
+    goal = parse_instruction(model, "Ferment the dough, then switch the cabinet off.")
+    assert goal["mode"] == "dough" and goal.get("power") != "off"
+    assert parse_instruction(model, "Turn it off")["power"] == "off"

@@ -156,19 +156,22 @@ def _says_power_on(view: Model, text: Text) -> bool:
 
 
 _CONDITIONS = frozenset({"when", "once", "after", "if", "until", "before", "let", "don't", "dont"})
-_CONDITIONS |= frozenset({"not", "never"})
+_CONDITIONS |= frozenset({"not", "never", "then", "afterwards", "later"})  # "…, then switch it off"
 
 
 def _says_power_off(view: Model, text: Text) -> bool:
     """ "switch the heater off.", "turn it off", "switch off the machine": the power, off — said
-    of now (not "switch it off when it's done", "after 2 hours", "let it turn itself off")."""
+    of now (not "switch it off when it's done", "after 2 hours", "let it turn itself off", nor
+    "dry the laundry, then switch it off": a later step)."""
     n = len(text.tokens)
     for k, token in enumerate(text.tokens):
         if token.text not in ("turn", "switch", "power", "shut"):
             continue
         j = k + 1
-        while j < n and (concept(text.word(j)) in view.appliance_words or text.word(j) == "the"):
-            j += 1
+        while j < n and (
+            concept(text.word(j)) in view.appliance_words or text.word(j) in ("the", "it")
+        ):
+            j += 1  # "the machine", "it"
         if text.word(j) != "off":
             continue
         m = j + 1
