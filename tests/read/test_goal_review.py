@@ -71,3 +71,9 @@ def test_switching_off_as_a_later_step_is_no_power_off_now() -> None:
     goal = parse_instruction(model, "Ferment the dough, then switch the cabinet off.")
     assert goal["mode"] == "dough" and goal.get("power") != "off"
     assert parse_instruction(model, "Turn it off")["power"] == "off"
+
+
+def test_holding_off_on_a_switch_is_that_switch_off_not_the_start() -> None:
+    model = loads_model(CABINET)
+    goal = parse_instruction(model, "Start the dough, hold off on auto stop.")
+    assert goal["running"] == "on" and goal.get("auto_stop") == "off"
