@@ -46,6 +46,7 @@ from apbot.read.goal_switches import (
 )
 from apbot.read.goal_text import Text
 from apbot.read.goal_twins import place_twins
+from apbot.read.goal_values import in_days
 from apbot.read.goal_view import Goal, Model, model_view
 from apbot.read.goal_vocab import STOP_WORDS, stem
 from apbot.read.numbers import find_mentions
@@ -95,7 +96,8 @@ def parse_instruction(
         claimed.update(range(match.start, match.end))
     restated_codes(view, text, goal, claimed)
     pronoun_ones(text, claimed)
-    mentions = distinct(in_weeks(text, find_mentions(text.tokens, skip=claimed)))
+    days = any(in_days(info.var) for info in view.infos.values() if info.role == "setting")
+    mentions = distinct(in_weeks(text, find_mentions(text.tokens, skip=claimed), days))
     counting = assign_mentions(view, text, mentions, goal, claimed, where, outside)
     superlatives(view, text, goal, claimed, where)
     zero_settings(view, text, goal, claimed, where)

@@ -72,7 +72,7 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
             score = len(stems) * weight * quality + 0.5 * own
             if i in verbs and len(stems) == 1:
                 score *= 0.5  # "bake a French loaf": the verb is weaker than the noun
-            if len(stems) == 1 and _scale_head(text, i):
+            if len(stems) == 1 and _scale_head(text, i, own_stems(info)):
                 continue  # "medium-rare", "low-fat": a degree of something else
             if len(stems) == 1 and _compound_tail(text, i):
                 score *= 0.5  # "air-dry", "sterilise-and-dry": the end of another word
@@ -90,12 +90,18 @@ def _compound_tail(text: Text, i: int) -> bool:
 _SCALE_WORDS = frozenset(w for scale in SCALES for w in scale) | LOWEST | HIGHEST
 
 
-def _scale_head(text: Text, i: int) -> bool:
+_LEVEL_NOUNS = frozenset(stem(w) for w in ("speed", "level", "power", "setting", "intensity"))
+
+
+def _scale_head(text: Text, i: int, own: set[str]) -> bool:
     """A scale word that opens a hyphenated compound with a word off the scale ("a medium-rare
-    steak", "low-fat milk") grades that word; it names no level ("medium-high" still does)."""
+    steak", "low-fat milk") grades that word; it names no level ("medium-high" still does, and
+    so does a compound with the setting's own word or a word for a level: "high-speed")."""
     if text.word(i) not in _SCALE_WORDS or text.word(i + 1) != "-":
         return False
     after = text.word(i + 2)
+    if stem(after) in own | _LEVEL_NOUNS:
+        return False
     return after.isalpha() and after not in _SCALE_WORDS
 
 

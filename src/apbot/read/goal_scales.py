@@ -144,9 +144,21 @@ def _ordered(info: VarInfo) -> bool:
             numeric_values(info.values)
             or bool(quantity_dimensions(info.values))
             or len(_scaled(info.values)) >= 2
-            or len(_ladder(info.values)) >= 2
+            or (len(_ladder(info.values)) >= 2 and not _choice_list(info))
         )
     )
+
+
+_CHOICE_WORDS = frozenset(
+    concept(w) for w in ("program", "programme", "menu", "mode", "function", "food", "course")
+) | frozenset(concept(w) for w in ("cycle", "recipe", "cup", "drink", "dish", "type"))
+
+
+def _choice_list(info: VarInfo) -> bool:
+    """A setting that names a choice of things (a programme, a menu, a food), not an amount:
+    its list may open with OFF/NONE, but "the strongest programme" is no end of it."""
+    words = info.name.replace("_", " ").split() + (info.var.label or "").split()
+    return any(concept(w.casefold()) in _CHOICE_WORDS for w in words)
 
 
 def _ladder(values: list[Any]) -> list[Any]:

@@ -156,19 +156,22 @@ def _says_power_on(view: Model, text: Text) -> bool:
 
 
 _CONDITIONS = frozenset({"when", "once", "after", "if", "until", "before", "let", "don't", "dont"})
-_CONDITIONS |= frozenset({"not", "never"})
+_CONDITIONS |= frozenset({"not", "never", "then", "afterwards", "later"})  # "…, then switch it off"
 
 
 def _says_power_off(view: Model, text: Text) -> bool:
     """ "switch the heater off.", "turn it off", "switch off the machine": the power, off — said
-    of now (not "switch it off when it's done", "after 2 hours", "let it turn itself off")."""
+    of now (not "switch it off when it's done", "after 2 hours", "let it turn itself off", nor
+    "dry the laundry, then switch it off": a later step)."""
     n = len(text.tokens)
     for k, token in enumerate(text.tokens):
         if token.text not in ("turn", "switch", "power", "shut"):
             continue
         j = k + 1
-        while j < n and (concept(text.word(j)) in view.appliance_words or text.word(j) == "the"):
-            j += 1
+        while j < n and (
+            concept(text.word(j)) in view.appliance_words or text.word(j) in ("the", "it")
+        ):
+            j += 1  # "the machine", "it"
         if text.word(j) != "off":
             continue
         m = j + 1
@@ -225,8 +228,10 @@ _GOING = frozenset(
 )
 
 
-_WHEN_LATER = frozenset({"tonight", "tomorrow", "later", "next", "monday", "tuesday", "wednesday"})
-_WHEN_LATER |= frozenset({"thursday", "friday", "saturday", "sunday", "this"})
+_WHEN_LATER = frozenset({"tonight", "tomorrow", "later", "monday", "tuesday", "wednesday"})
+_WHEN_LATER |= frozenset({"thursday", "friday", "saturday", "sunday"})
+_DAY_PARTS = frozenset({"week", "weekend", "month", "year", "morning", "afternoon", "evening"})
+_DAY_PARTS |= frozenset({"night", "time", "day"}) | _WHEN_LATER
 
 
 def _later(text: Text, k: int) -> bool:
@@ -234,6 +239,8 @@ def _later(text: Text, k: int) -> bool:
     later day ("a holiday starting tonight": when something begins, no request to start)."""
     if text.word(k + 1) in _WHEN_LATER and text.word(k + 2) not in ("it", "the"):
         return True
+    if text.word(k + 1) in ("this", "next") and text.word(k + 2) in _DAY_PARTS:
+        return True  # "starting next week" (but "start this wash" is a start now)
     for j in range(k + 1, min(k + 6, len(text.tokens))):
         word = text.word(j)
         if word in CLAUSE_ENDS or word == ",":
@@ -247,14 +254,23 @@ def _later(text: Text, k: int) -> bool:
     return False
 
 
-def _held_back(text: Text) -> bool:
+def _held_back(text: Text, family: frozenset[str] | None = None) -> bool:
     """ "wait with the heating", "hold off on starting": the start is put off (no time given;
-    "wait 2 hours before heating" is a delay)."""
+    "wait 2 hours before heating" is a delay). Only a wait for the start or the appliance's own
+    work counts ("I'll wait before pouring", "hold off on keep warm" start nothing later)."""
     for k, token in enumerate(text.tokens):
         if not (
             (token.text == "wait" and text.word(k + 1) in ("with", "on", "before"))
             or (token.text == "hold" and text.word(k + 1) == "off")
         ):
+            continue
+        j = k + 2
+        while text.word(j) in ("on", "with", "the", "a", "any"):
+            j += 1
+        work = text.word(j) in _START_WORDS or text.word(j) in ("it", "that")
+        verb = text.stems[j] if j < len(text.stems) else ""
+        work = work or verb in (family if family is not None else STRONG_VERBS)
+        if not work and text.word(j) not in CLAUSE_ENDS | {"", ","}:
             continue
         ahead = [text.word(j) for j in range(k + 1, min(k + 6, len(text.tokens)))]
         if not any(w[:1].isdigit() or w in NUMBER_WORDS for w in ahead):
@@ -336,7 +352,7 @@ def _says_start(
             negative = True
         else:
             positive = True
-    if " not started " in joined or " but not start" in joined or _held_back(text):
+    if " not started " in joined or " but not start" in joined or _held_back(text, family):
         negative = True
     for k, token in enumerate(text.tokens):  # "don't heat it yet"
         if token.text in _DENIALS and token.text != "without" and k + 1 < len(text.stems):

@@ -239,10 +239,32 @@ def off_levels(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
                 continue
             if any(text.stems[j] in others for j in (k - 1, k + 1) if 0 <= j < len(text.stems)):
                 continue  # "the vertical steam off": a word of another setting's name
-            if negative_around(text, k):
+            if _said_off(text, k):
                 goal[info.name] = offs[0]
                 claimed.add(k)
                 break
+
+
+_LEVEL_FILLERS = frozenset({"the", "any", "a", "its", "more"})
+
+
+def _said_off(text: Text, k: int) -> bool:
+    """The level named at ``k`` is said to be none: "no mist", "without any mist", "turn off the
+    mist", "the mist off" — not any negation near it ("don't touch the mist" keeps it as is)."""
+    j = k - 1
+    while j >= 0 and text.word(j) in _LEVEL_FILLERS:
+        j -= 1
+    if text.word(j) in ("no", "without", "zero"):
+        return True
+    if text.word(j) == "off" and text.word(j - 1) in ("turn", "switch", "shut", "turning"):
+        return True
+    for d in range(1, 4):
+        word = text.word(k + d)
+        if word in CLAUSE_ENDS or word in (",", "on", ""):
+            return False
+        if word in ("off", "disabled"):
+            return True
+    return False
 
 
 def no_values(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:

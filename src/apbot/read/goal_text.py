@@ -48,6 +48,8 @@ def negated_before(text: Text, start: int, reach: int = 3) -> bool:
             return True
         if word == "of" and text.word(k - 1) == "instead":
             return True  # "switch off at the end instead of keeping warm"
+        if word == "off" and text.word(k - 1) == "hold":
+            return True  # "hold off on keep warm": not that
     return False
 
 
@@ -162,6 +164,10 @@ def negative_around(text: Text, k: int) -> bool:
             return True  # "without the fruit-and-nut beep"
         if word == "of" and text.word(k - d - 1) == "instead":
             return True  # "switch off instead of keeping warm"
+        if word == "off" and text.word(k - d - 1) == "hold":
+            return True  # "hold off the keep warm": not that
+        if word == "on" and text.word(k - d - 1) == "off" and text.word(k - d - 2) == "hold":
+            return True  # "hold off on keep warm"
         if word in ("on", "with", "enable", "add"):
             break
     if text.word(k) in ("mute", "silence", "unlock"):
