@@ -420,7 +420,7 @@ Drying times you can choose: 0:00 (no drying) · 0:20 · 0:40 · 1:00 · 1:30 ·
 
 
 def _dropped(text: str) -> list[str]:
-    from apbot.read.text import _furniture
+    from apbot.read.text_pages import _furniture
 
     lines = text.split("\n")
     return [lines[i].strip() for i in sorted(_furniture(lines))]
@@ -476,7 +476,7 @@ SPIN button            Lowers the spin speed of the programme or turns spinning 
 
 
 def test_a_legend_of_terms_each_with_its_definition_is_read_row_by_row() -> None:
-    from apbot.read.text import _reading_order
+    from apbot.read.text_pages import _reading_order
 
     lines = LEGEND.split("\n")
     order, numbers = _reading_order(lines)

@@ -1,0 +1,217 @@
+"""Page layout: running headers and footers, page breaks, plain headings and reading order.
+
+Split out of ``text.py`` (which turns a manual into units): text flattened out of a PDF carries
+page furniture and side-by-side blocks that must be dropped or put in order before the lines
+become sentences.
+"""
+
+from __future__ import annotations
+
+import itertools
+import re
+
+_PAGE_NUMBER = re.compile(
+    r"^[-—–\s]*(?:page\s+)?\d{1,3}(?:\s*(?:/|of)\s*\d{1,3})?[-—–\s]*$", re.IGNORECASE
+)
+_NUMBER_PREFIX = re.compile(r"^\d{1,2}(?:\.\d{1,2})*\.?\s+")
+_CAPS_HEADING = re.compile(r"[A-Z][A-Z0-9 &/,'’()+-]*")
+
+
+_PAGE_TAG = re.compile(  # "- 3 -", "Page 2 — EN", "EN · 1/14", "p. 3 / 12", "EN-4", "2 en", "6a"
+    r"[-—–·\s]*(?:(?:en|de|fr|es|it|nl|uk|us|gb)\s*[-—–·/]?\s*)?(?:(?:page|p\.)\s*)?\d{1,3}[a-d]?"
+    r"(?:\s*(?:/|of)\s*\d{1,3}|\s*\(\d{1,3}\))?(?:\s*[-—–·]?\s*(?:en|de|fr|es|it|nl))?"
+    r"[-—–·\s]*",
+    re.IGNORECASE,
+)
+_CONTENT_START = re.compile(r"\d{1,2}[.)]\s|\d{1,2}(?:\.\d{1,2})*\s+\S|[-*•·▪●◦–]\s")
+_KEY_WORDS = re.compile(r"\b(?:press|touch|tap|turn|hold|select|push)\b|\[[^\]]+\]", re.I)
+
+
+def _furniture(lines: list[str]) -> set[int]:
+    """Page headers and footers of text flattened from a PDF (0-based line indexes). Only text
+    that shows its pages has them: two or more page markers — a form feed, a page number
+    standing alone by a blank line ("— 2 —", "Page 3", "EN · 2/14"), or one beside a running
+    title that comes back three or more times ("GLIMMERKIN UVC-9    - 3 -"). Then a short line
+    that comes back three or more times (digits aside) is furniture only next to a marker, at
+    the top or bottom of a page, and never when it reads as content: a numbered or bulleted
+    line, one naming a key to press, a single word ("Note"), or a row of a table."""
+
+    def key(line: str) -> str:
+        return re.sub(r"\s+", " ", re.sub(r"\d+", "#", line.strip())).lower()
+
+    cells = [re.split(r"\s{3,}", line.strip()) for line in lines]
+    counts: dict[str, int] = {}
+    for i, line in enumerate(lines):
+        for k in {key(line), key(cells[i][0]) + " …", key(cells[i][-1]) + " …"}:
+            counts[k] = counts.get(k, 0) + 1
+
+    def plain(k: int) -> bool:  # a blank line or a line drawn across the page
+        return not 0 <= k < len(lines) or not re.search(r"[A-Za-z0-9]", lines[k])
+
+    markers: set[int] = set()
+    titles: set[str] = set()  # running titles beside page numbers ("GLIMMERKIN UVC-9")
+    for i, line in enumerate(lines):
+        stripped = line.strip()
+        apart = plain(i - 1) or plain(i + 1) or re.match(r"\s{20,}", line)
+        numbered = bool(stripped and _PAGE_TAG.fullmatch(stripped) and re.search("[1-9]", line))
+        if "\f" in line or (numbered and apart):
+            markers.add(i)
+        elif len(cells[i]) == 2 and "|" not in stripped:
+            for tag, title in (cells[i], reversed(cells[i])):
+                if _PAGE_TAG.fullmatch(tag) and counts[key(title) + " …"] >= 3:
+                    markers.add(i)
+                    titles.add(key(title))
+    if len(markers) < 2:
+        return set()
+    filled = [i for i, line in enumerate(lines) if line.strip() and i not in markers]
+    edge: set[int] = set()
+    for m in markers:  # up to three lines of text above and below each page marker
+        after = [i for i in filled if i > m][:3]
+        before = [i for i in filled if i < m][-3:]
+        edge |= set(after) | set(before)
+    edge |= set(filled[:3])  # the first page's header
+    out = {i for i in markers if "\f" not in lines[i]}
+    for i in sorted(edge):
+        stripped = lines[i].strip()
+        if "|" in stripped or len(stripped) > 90 or counts[key(lines[i])] < 3:
+            continue
+        rule = not re.search(r"[A-Za-z0-9]", stripped)  # a drawn line across the page
+        if rule and len(stripped) >= 10 and not re.match(r"[-*#>|`]", stripped):
+            out.add(i)
+            continue
+        content = (
+            _CONTENT_START.match(stripped)
+            or _KEY_WORDS.search(stripped)
+            or len(stripped.split()) < 2
+            or len(cells[i]) > 2
+            or (len(cells[i]) == 2 and re.match(r"\s{2,}", lines[i]))  # an indented table row
+            or re.search(r"[.!?:;,]$", stripped)
+            or re.match(r"[-*#>|`]", stripped)
+        )
+        if not content:
+            out.add(i)
+    for i, line in enumerate(lines):  # a running title beside the section's name, anywhere
+        if len(cells[i]) == 2 and key(cells[i][0]) in titles and not re.match(r"\s", line):
+            out.add(i)
+    return out
+
+
+def _page_breaks(lines: list[str], furniture: set[int]) -> set[int]:
+    """Lines to pass over so a sentence broken by a page goes on (0-based): a run of blank lines
+    and page furniture, unless the text before it ended a sentence (then it is a paragraph
+    break, and one blank line stays)."""
+    skip: set[int] = set()
+    i = 0
+    while i < len(lines):
+        if i not in furniture and lines[i].strip():
+            i += 1
+            continue
+        j = i
+        while j < len(lines) and (j in furniture or not lines[j].strip()):
+            j += 1
+        run = range(i, j)
+        if any(k in furniture for k in run):
+            before = next((lines[k].strip() for k in range(i - 1, -1, -1) if k not in skip), "")
+            ended = not before or re.search(r"[.!?:]$", before) or _plain_heading(before)
+            skip |= {k for k in run if k in furniture or not ended or k != i}
+            if ended and i in furniture:  # keep one break: the first blank line of the run
+                blank = next((k for k in run if k not in furniture), None)
+                skip -= {blank} if blank is not None else set()
+        i = j
+    return skip
+
+
+def _plain_heading(line: str) -> bool:
+    """A heading of a plain-text manual: a short line in capitals ("PANEL AND KNOBS", "4 CONTROL
+    PANEL", "1. SAFETY INFORMATION") or a section number with a short title ("6.1 Entering the
+    output on the keypad"), never a sentence, a numbered step or a drawing of the panel."""
+    stripped = line.strip()
+    number = _NUMBER_PREFIX.match(stripped)
+    rest = stripped[number.end() :] if number else stripped
+    if not 3 <= len(rest) <= 60 or re.search(r"\s{2,}|[.:;!?,-]$|\[|\|", rest):
+        return False
+    if len(re.findall(r"[A-Za-z]", rest)) < 3 or len(rest.split()) > 8:
+        return False
+    if _CAPS_HEADING.fullmatch(rest) and len(rest.split()) <= 7:
+        return True
+    sub_level = bool(number and re.match(r"\d{1,2}\.\d", stripped))
+    short = len(rest.split()) <= 6  # a title, not a sentence run on after it
+    return sub_level and short and rest[0].isupper() and not re.search(r"\d", rest)
+
+
+def _legend(parts: list[tuple[int, str, str]]) -> bool:
+    """Rows of a legend or a table ("DELAY START button     Sets the finish time …"), not two
+    columns of prose: the left parts are mostly short terms, each starting afresh, and the left
+    column's text does not run on from one line to the next."""
+    lefts = [p[1] for p in parts]
+    if sum("→" in left or "►" in left for left in lefts) >= 2 and not any(
+        re.search(r"[a-z]{3,} [a-z]{3,}", left) for left in lefts
+    ):
+        return True  # a chart's rows: amounts and arrows on the left ("1 h → … → 12 h")
+    terms = sum(
+        len(left.split()) <= 4
+        and not re.search(r"[,;-]$|\b(?:the|and|or|to|of|a|an)$", left)
+        and not left[0].islower()
+        for left in lefts
+    )
+    runs_on = sum(
+        nxt[0].islower() or bool(re.search(r"[,-]$|\b(?:the|and|or|to|of|a|an|with)$", left))
+        for left, nxt in itertools.pairwise(lefts)
+    )
+    return terms * 3 >= 2 * len(lefts) and runs_on * 2 < len(lefts) - 1
+
+
+def _reading_order(lines: list[str]) -> tuple[list[str], list[int]]:
+    """The lines in reading order, each with its 1-based number in the text: prose set in two
+    columns side by side ("5.2 Spin Press the SPIN button to     Spin: no final spin; the…") is
+    read down the left column, then down the right one. A block counts as two columns when
+    three or more lines in a row split at one place by a wide gap into two parts of running
+    text (a table's cells are short; a drawing's are words in capitals)."""
+    splits: list[tuple[int, str, str] | None] = []
+    for line in lines:
+        found = None
+        if "|" not in line:
+            for m in re.finditer(r"\S(\s{3,})(?=\S)", line):
+                left, right = line[: m.start(1)].strip(), line[m.end(1) :].strip()
+                if len(left) >= 18 and len(right) >= 18 and not re.search(r"\s{2,}", right):
+                    found = (m.end(1), left, right)
+                break
+        splits.append(found)
+
+    def at(k: int, column: int) -> tuple[int, str, str] | None:
+        """Line k split by a gap of two or more spaces ending near ``column``."""
+        if splits[k] is not None and abs(splits[k][0] - column) <= 8:  # type: ignore[index]
+            return splits[k]
+        for m in re.finditer(r"\S(\s{2,})(?=\S)", lines[k]):
+            if abs(m.end(1) - column) <= 8 and "|" not in lines[k]:
+                left, right = lines[k][: m.start(1)].strip(), lines[k][m.end(1) :].strip()
+                plain = not re.search(r"\s{2,}", left + "\n" + right)
+                if len(left) >= 10 and len(right) >= 10 and plain:
+                    return (m.end(1), left, right)
+        return None
+
+    out: list[str] = []
+    numbers: list[int] = []
+    i = 0
+    column = 0  # the gap of the block just read: the next section's block may share it
+    while i < len(lines):
+        first = splits[i] or (at(i, column) if column else None)
+        parts: list[tuple[int, str, str]] = []
+        j = i
+        while j < len(lines) and first is not None:
+            here = at(j, first[0])
+            if here is None or (j > i and re.match(r"\d{1,2}\.\d{1,2}\.?\s+[A-Z]", here[1])):
+                break  # a numbered section starting on the left begins a block of its own
+            parts.append(here)
+            j += 1
+        prose = sum(bool(re.search(r"[a-z]{3,} [a-z]{3,}", p[1] + " " + p[2])) for p in parts)
+        if j - i >= 3 and prose * 3 >= 2 * (j - i) and not _legend(parts):
+            out += [p[1] for p in parts] + [p[2] for p in parts]
+            numbers += [k + 1 for k in range(i, j)] * 2
+            i, column = j, parts[0][0]
+        else:
+            out.append(lines[i])
+            numbers.append(i + 1)
+            i += 1
+            column = 0  # only the line right after a block may go on with its gap
+    return out, numbers

@@ -1,0 +1,176 @@
+"""Tables a PDF converter drew with spaces, and charts printed sideways, turned into cells.
+
+Split out of ``text.py`` (which turns a manual into units) because finding a table in text laid
+out with spaces is a job of its own: column positions, wrapped cells, elided rows.
+"""
+
+from __future__ import annotations
+
+import re
+
+
+def _strip_markup(line: str) -> str:
+    line = re.sub(r"\*\*|__|`+", "", line)
+    # a star alone in brackets or quotes is a printed symbol ("the star symbol (*)"), no emphasis
+    alone = r"(?!(?<=[(\"'])\*[)\"'])"
+    line = re.sub(rf"(?<!\w){alone}\*(?=\S)|(?<=\S){alone}\*(?!\w)", "", line)
+    line = re.sub(r"^\s*>+\s?", "", line)
+    # a dot leader ("0:00 to 0:30 ........ 1 minute per touch") joins two halves of one
+    # statement; its dots are no sentence end
+    line = re.sub(r"(?<=\S) ?\.{4,} ?(?=\S)", " ", line)
+    return line
+
+
+def _cells(line: str) -> tuple[str, ...]:
+    return tuple(c for c in re.split(r"\s{2,}|\t+", _strip_markup(line).strip()) if c)
+
+
+def _space_tables(lines: list[str]) -> dict[int, tuple[tuple[str, ...], bool]]:
+    """Tables drawn with spaces (text from a PDF): a header of three or more cells followed by
+    rows of two or more; a row's wrapped lines (set in from the left) go on its cells.
+
+    Returns line number → (cells, is the header row)."""
+    out: dict[int, tuple[tuple[str, ...], bool]] = {}
+    i = 0
+    while i < len(lines):
+        head = _cells(lines[i])
+        before = lines[i - 1].strip() if i else ""
+        if (
+            before
+            and not re.search(r"[.:!?]$", before)
+            and not before.isupper()
+            and not before.startswith("#")  # a Markdown heading ends what came before
+        ):
+            i += 1  # the line goes on with a sentence from the line before: not a table header
+            continue
+        if len(head) < 3 or "|" in lines[i] or len(lines[i]) > 200:
+            i += 1
+            continue
+        rows: list[int] = []
+        more: dict[int, list[tuple[int, str]]] = {}  # row -> wrapped lines' cells, by position
+        indent = len(lines[i]) - len(lines[i].lstrip())
+        j = i + 1
+        while j < len(lines) and lines[j].strip():
+            if re.fullmatch(r"[-=_][-=_\s]{2,}", lines[j].strip()):
+                j += 1  # a rule under the header ("-------  ------  -----")
+                continue
+            cells = _cells(lines[j])
+            inset = len(lines[j]) - len(lines[j].lstrip()) > indent + 2
+            if inset and "|" not in lines[j]:  # a wrapped line: of the header, or of a row
+                more.setdefault(rows[-1] if rows else i, []).extend(_placed_cells(lines[j]))
+            elif len(cells) >= 2 and "|" not in lines[j]:
+                rows.append(j)
+            elif len(cells) != 1 or len(cells[0]) > 40:
+                break
+            j += 1
+        if len(rows) >= 2:
+            out[i + 1] = (_joined_cells(lines[i], more.get(i, [])), True)
+            for r in rows:
+                out[r + 1] = (_joined_cells(lines[r], more.get(r, [])), False)
+            for k in range(i + 1, j):
+                out.setdefault(k + 1, ((), False))
+            i = j
+        else:
+            i += 1
+    return out
+
+
+# the first cell of a chart's row counting the presses ("touch  1  2  3", "No. of presses")
+_COUNT_ROW_RE = re.compile(
+    r"^(?:no\.? of |number of )?(?:press(?:es)?|touch(?:es)?|taps?|clicks?|times?)"
+    r"(?: pressed| touched)?\W*$",
+    re.IGNORECASE,
+)
+
+
+def _row_charts(lines: list[str]) -> dict[int, list[tuple[str, ...]]]:
+    """Charts printed sideways, each row a line led by its name, the first counting the
+    presses: "touch    1      2     3   ...   26" over "display  0.5 h  1 h   2 h  ...  (off)".
+    Read as a table turned upright: a header of the row names, then one row per column
+    ("| touch | display |", "| 1 | 0.5 h |" …); ellipsis columns are left out.
+
+    Returns the first line's index → the table's rows (header first); the other lines of the
+    chart map to no rows."""
+    out: dict[int, list[tuple[str, ...]]] = {}
+    i = 0
+    while i + 1 < len(lines):
+        first = _cells(lines[i])
+        before = lines[i - 1].strip() if i else ""
+        if (
+            len(first) < 4
+            or "|" in lines[i]
+            or not _COUNT_ROW_RE.match(first[0])
+            or (before and not re.search(r"[.:!?]$", before))
+        ):
+            i += 1
+            continue
+        rows = [first]
+        j = i + 1
+        while j < len(lines) and lines[j].strip():
+            cells = _cells(lines[j])
+            if len(cells) != len(first) or not re.match(r"[A-Za-z]", cells[0]):
+                break
+            rows.append(cells)
+            j += 1
+        if len(rows) < 2:
+            i += 1
+            continue
+        table = [tuple(r[0] for r in rows)]
+        columns = [
+            tuple(re.sub(r"^\((.*)\)$", r"\1", r[c]) for r in rows) for c in range(1, len(first))
+        ]
+        for c, cells in enumerate(columns):
+            if all(re.fullmatch(r"\.{3}|…", x) for x in cells):
+                if 0 < c < len(columns) - 1:
+                    table += _elided(columns[c - 1], columns[c + 1])
+                continue
+            table.append(cells)
+        out[i] = table
+        for k in range(i + 1, j):
+            out[k] = []
+        i = j
+    return out
+
+
+_AMOUNT_RE = re.compile(r"(\d+(?:\.\d+)?)\s*([A-Za-z°%]{1,4})")
+
+
+def _elided(before: tuple[str, ...], after: tuple[str, ...]) -> list[tuple[str, ...]]:
+    """The columns an ellipsis stands for in a sideways chart, between touch 5 (4 h) and touch
+    25 (24 h): one a touch, each row's amount in equal steps (6 | 5 h … 24 | 23 h). None when
+    the counts or the amounts do not divide evenly."""
+    if not (before[0].isdigit() and after[0].isdigit()):
+        return []
+    a, b = int(before[0]), int(after[0])
+    if not 1 < b - a <= 200:
+        return []
+    out: list[list[str]] = [[str(n)] for n in range(a + 1, b)]
+    for x, y in zip(before[1:], after[1:], strict=True):
+        mx, my = _AMOUNT_RE.fullmatch(x), _AMOUNT_RE.fullmatch(y)
+        if not mx or not my or mx.group(2) != my.group(2):
+            return []
+        step = (float(my.group(1)) - float(mx.group(1))) / (b - a)
+        if step <= 0 or abs(step * 1000 - round(step * 1000)) > 1e-6:
+            return []
+        for k, row in enumerate(out, start=1):
+            row.append(f"{float(mx.group(1)) + step * k:g} {mx.group(2)}")
+    return [tuple(row) for row in out]
+
+
+def _placed_cells(line: str) -> list[tuple[int, str]]:
+    """A line's cells (split at wide gaps) with the column each starts at."""
+    body = _strip_markup(line).rstrip()
+    return [(m.start(), m.group(0)) for m in re.finditer(r"\S+(?: \S+)*", body)]
+
+
+def _joined_cells(line: str, wrapped: list[tuple[int, str]]) -> tuple[str, ...]:
+    """A row's cells with the text of its wrapped lines added to the cell each piece stands
+    under ("To activate and deactivate the" + "hob.")."""
+    placed = _placed_cells(line)
+    if not wrapped or not placed:
+        return _cells(line)
+    cells = [text for _, text in placed]
+    for at, text in wrapped:
+        k = max((n for n, (start, _) in enumerate(placed) if start <= at + 2), default=0)
+        cells[k] = f"{cells[k]} {text}"
+    return tuple(cells)
