@@ -273,7 +273,7 @@ def test_the_lines_above_a_tables_rule_are_its_header_not_data_rows() -> None:
 
 
 def test_a_table_cell_names_the_programme_it_spells_before_one_it_begins() -> None:
-    from apbot.read.cases import _parent_values
+    from apbot.read.cases_tables import _parent_values
 
     values = ["white quick", "white", "brown"]
     assert _parent_values("White, Brown", values) == ["white", "brown"]

@@ -13,7 +13,7 @@ import re
 from typing import Any
 
 from apbot.read.build import Builder
-from apbot.read.cases import _norm, _tables
+from apbot.read.cases_tables import _norm, _tables
 from apbot.read.text import Unit
 
 _CODE = re.compile(r"[a-z]{1,3}\s?-?\d{1,2}")

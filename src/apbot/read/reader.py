@@ -17,7 +17,8 @@ from apbot.model.schema import ApplianceModel
 from apbot.model.validate import check_model
 from apbot.read.actions import ActionInfo, parse_actions
 from apbot.read.build import Builder
-from apbot.read.cases import apply_cases, apply_resets
+from apbot.read.cases import apply_cases
+from apbot.read.cases_resets import apply_resets
 from apbot.read.codes import name_codes
 from apbot.read.labels import find_labels
 from apbot.read.report import Note, Report

@@ -1,0 +1,214 @@
+"""One programme table column's cells → values per programme, defaults and step durations.
+
+Split out of ``cases.py`` (which decides which table and column make a dependent setting):
+turning a cell ("30-90 min", "Yes", "40, 60 °C", "—") into a case value is a job of its own.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+import re
+from typing import Any
+
+from apbot.model.values import format_hms
+from apbot.read.cases_tables import _norm, _parent_values
+from apbot.read.labels import words
+from apbot.read.text import Unit
+from apbot.read.values import find_ranges, number, unit_name
+
+DEFAULT_WORDS = {"default", "standard", "preset", "initial", "factory"}
+
+
+def _cases(
+    spec: dict[str, Any], rows: list[Unit], column: int, pvalues: list[str]
+) -> dict[str, Any]:
+    cases: dict[str, Any] = {}
+    for row in rows:
+        if column >= len(row.cells):
+            continue
+        cell = row.cells[column]
+        targets = _parent_values(row.cells[0], pvalues)
+        if not targets:
+            continue
+        case = _case(spec, cell)
+        if case is None:
+            continue
+        for target in targets:
+            cases.setdefault(target, case)
+    return cases
+
+
+def _value_span(values: list[str], cell: str) -> list[str] | None:
+    """The listed values from one to another ("COLD – 60 °C" over cold, 20, 30, 40, 60, 90)."""
+    m = re.fullmatch(r"\s*(.+?)\s*(?:–|—|-|\bto\b)\s*(.+?)\s*", cell)
+    if not m or len(values) < 3:
+        return None
+    unit = r"\s*(?:°\s*[cf]|°|rpm|%)?\s*"
+    ends = [re.sub(rf"^{unit}|{unit}$", "", _norm(x)) for x in m.groups()]
+    if not all(e in values for e in ends):
+        return None
+    a, b = values.index(ends[0]), values.index(ends[1])
+    return values[a : b + 1] if a < b else None
+
+
+def _case(spec: dict[str, Any], cell: str) -> Any:
+    kind = spec.get("type")
+    if kind == "discrete":
+        if len(spec.get("values", [])) == 2 and _norm(cell) in spec["values"]:
+            return {"values": list(spec["values"]), "initial": _norm(cell)}  # a default
+        span = _value_span(spec.get("values", []), cell)
+        if span:
+            return {"values": span}  # "cold – 60 °C" over the knob's marks
+        known = spec.get("values", [])
+        spaced = _norm(re.sub(r"\(.*?\)", "", cell)).split()
+        if len(spaced) >= 2 and all(w in known for w in spaced):
+            return {"values": spaced}  # "SOFT MEDIUM FIRM": the values, printed with spaces
+        items = [
+            _norm(re.sub(r"\(.*?\)", "", i)) for i in re.split(r"\s*(?:,|/|·|\bor\b)\s*", cell)
+        ]
+        items = [i for i in items if i and i not in ("—", "-", "–", "n/a") and len(i) <= 24]
+        return {"values": list(dict.fromkeys(items))} if items else None
+    ranges = spec.get("ranges") or []
+    if not ranges:
+        return None
+    ranges_read = find_ranges(cell)
+    if kind == "time":
+        listed = None if ranges_read else _time_list(cell)
+        if listed:  # "30, 45 or 60 minutes": the times, by the step between them
+            gap = math.gcd(*[b - a for a, b in itertools.pairwise(listed)])
+            return {"ranges": [[format_hms(listed[0]), format_hms(listed[-1]), gap]]}
+        if not ranges_read:
+            from apbot.model.values import parse_quantity
+
+            q = parse_quantity(cell.strip().lower())
+            if not q or q[1] != "time" or q[0] <= 0:
+                return None
+            return {"ranges": [[format_hms(int(q[0])), format_hms(int(q[0])), int(ranges[0][2])]]}
+        r = ranges_read[0]
+        factor = 1 if r.unit == "s" else {"min": 60, "h": 3600}.get(r.unit or "min", 60)
+        t_lo, t_hi = int(r.low * factor), int(r.high * factor)
+        t_step = min(int(ranges[0][2]), max(1, t_hi - t_lo))
+        if (t_hi - t_lo) % t_step:  # "20 to 60 minutes" by 15: the step that reaches both ends
+            t_step = math.gcd(t_step, t_hi - t_lo)
+        t_hi = t_lo + (t_hi - t_lo) // t_step * t_step
+        return {"ranges": [[format_hms(t_lo), format_hms(t_hi), t_step]]}
+    step = float(ranges[0][2])
+    if ranges_read:
+        lo, hi = ranges_read[0].low, ranges_read[0].high
+    else:
+        m = re.fullmatch(r"\s*(\d+(?:[.,]\d+)?)\s*(\S*)\s*", cell)
+        if not m or (m.group(2) and unit_name(m.group(2)) not in ("", spec.get("unit", ""))):
+            return None
+        value = number(m.group(1))
+        if value is None:
+            return None
+        lo = hi = value
+    count = int((hi - lo) / step + 1e-9)
+    hi = lo + count * step
+    tidy = lambda x: int(x) if float(x).is_integer() else round(x, 4)  # noqa: E731
+    return {"ranges": [[tidy(lo), tidy(hi), tidy(step)]]}
+
+
+_TIME_LIST_RE = re.compile(
+    r"\s*(\d+(?:\s*(?:,|\bor\b|\band\b|/)\s*\d+)+)\s*(min(?:ute)?s?|h(?:ou)?rs?|hours?|h)\.?\s*",
+    re.IGNORECASE,
+)
+
+
+def _time_list(cell: str) -> list[int] | None:
+    """Three or more times in a cell ("30, 45 or 60 minutes"), rising, in seconds; else None."""
+    m = _TIME_LIST_RE.fullmatch(cell)
+    if not m:
+        return None
+    per = 3600 if unit_name(m.group(2)) == "h" else 60
+    found = [int(x) * per for x in re.findall(r"\d+", m.group(1))]
+    rising = all(a < b for a, b in itertools.pairwise(found))
+    return found if len(found) >= 3 and rising else None
+
+
+def _defaults(
+    spec: dict[str, Any],
+    cases: dict[str, Any],
+    header: tuple[str, ...],
+    rows: list[Unit],
+    column: int,
+    pvalues: list[str],
+) -> None:
+    """A "default"/"standard" column next to the setting's column gives each case's initial."""
+    for c in range(1, len(header)):
+        if c == column or not set(words(header[c])) & DEFAULT_WORDS:
+            continue
+        for row in rows:
+            if c >= len(row.cells):
+                continue
+            for target in _parent_values(row.cells[0], pvalues):
+                case = cases.get(target)
+                if case is None:
+                    continue
+                cell = _norm(row.cells[c])
+                if spec.get("type") == "discrete" and cell in case.get("values", []):
+                    case["initial"] = cell
+                elif spec.get("type") == "time" and case.get("ranges"):
+                    start = _duration(cell)  # "| Preset time | 1:30 |"
+                    if start is not None and _within(case["ranges"], start):
+                        case["initial"] = format_hms(start)
+        break
+
+
+_STEP_HEAD_RE = re.compile(
+    r"\b(?:each|every|per)\b.*\b(?:press|touch|tap|click|step)\b|\bsteps?\b", re.I
+)
+
+
+def _row_steps(
+    spec: dict[str, Any],
+    cases: dict[str, Any],
+    header: tuple[str, ...],
+    rows: list[Unit],
+    column: int,
+    pvalues: list[str],
+) -> None:
+    """A column headed "Each + / – press" (or "Step") next to a time's ranges gives each row's
+    step ("| 0:45 – 2:00 | 15 min |")."""
+    if spec.get("type") != "time":
+        return
+    for c in range(1, len(header)):
+        if c == column or not _STEP_HEAD_RE.search(header[c]):
+            continue
+        for row in rows:
+            step = _duration(_norm(row.cells[c])) if c < len(row.cells) else None
+            if not step:
+                continue
+            for target in _parent_values(row.cells[0], pvalues):
+                case = cases.get(target)
+                if not case or not case.get("ranges") or len(case["ranges"]) != 1:
+                    continue
+                lo, hi, _ = case["ranges"][0]
+                a, b = _seconds(lo), _seconds(hi)
+                if b > a and (b - a) % step == 0:
+                    case["ranges"] = [[lo, hi, step]]
+        break
+
+
+def _duration(cell: str) -> int | None:
+    """Seconds in "15 min", "1:30" (h:mm), "20 s"; None for anything else."""
+    from apbot.model.values import parse_quantity
+
+    m = re.fullmatch(r"\s*(\d{1,2}):([0-5]\d)\s*", cell)
+    if m:
+        return int(m.group(1)) * 3600 + int(m.group(2)) * 60
+    q = parse_quantity(cell.strip().lower())
+    return int(q[0]) if q and q[1] == "time" and q[0] > 0 else None
+
+
+def _seconds(hms: str) -> int:
+    h, m, sec = (int(x) for x in str(hms).split(":"))
+    return h * 3600 + m * 60 + sec
+
+
+def _within(ranges: list[list[Any]], value: int) -> bool:
+    return any(
+        _seconds(lo) <= value <= _seconds(hi) and (value - _seconds(lo)) % int(st) == 0
+        for lo, hi, st in ranges
+    )

@@ -1,0 +1,47 @@
+"""Programme tables found among the units, and the shared cleanup of their cells.
+
+Split out of ``cases.py`` because ``codes.py`` (display codes) reads the same tables: finding
+a table's rows and matching a cell to known values is shared, applying cases is not.
+"""
+
+from __future__ import annotations
+
+import re
+
+from apbot.read.text import Unit
+
+
+def _tables(units: list[Unit]) -> list[tuple[tuple[str, ...], list[Unit]]]:
+    out: list[tuple[tuple[str, ...], list[Unit]]] = []
+    previous: Unit | None = None
+    for unit in units:
+        if unit.cells and unit.header:
+            last = out[-1][1][-1] if out and out[-1][0] == unit.header else None
+            if last is not None and (last.line >= unit.line - 1 or last is previous):
+                out[-1][1].append(unit)  # the next row, also after rows wrapped onto two lines
+            else:
+                out.append((unit.header, [unit]))
+        previous = unit
+    return out
+
+
+def _norm(text: str) -> str:
+    return re.sub(r"\s+", " ", re.sub(r"[*_`]", "", text).strip().lower()).strip(" .")
+
+
+def _parent_values(cell: str, values: list[str]) -> list[str]:
+    """Which of the parent's values a first cell names ("White, Quick Cook" → two)."""
+    found = []
+    for part in re.split(r"\s*(?:,|/|&|\band\b)\s*", _norm(cell)):
+        part = re.sub(r"^\d+[.)]?\s*", "", part)
+        if part in values:  # "White" is WHITE even where WHITE QUICK comes first
+            found.append(part)
+            continue
+        for value in values:
+            if part and len(part) >= 4 and value.startswith(part):
+                found.append(value)
+                break
+    exact = _norm(cell)
+    if exact in values and exact not in found:
+        found = [exact]
+    return found
