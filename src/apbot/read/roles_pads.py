@@ -227,18 +227,7 @@ def shown_codes(b: Builder, var: str, keys: list[ActionInfo]) -> None:
         for k in keys:
             if m and b.labels[k.controls[0]].text.upper() == unit.cells[0].strip(" *").upper():
                 codes[k.name] = m.group(1)
-    if len(codes) != len(keys) or len(set(codes.values())) != len(keys):
-        return
-    spec = b.variables[var]
-    shown = {}
-    for k in keys:
-        effect = b.features[k.token][0]["effect"]
-        shown[effect["to"]] = codes[k.name]
-    spec["show"] = shown
-    b.note(
-        f"variables.{var}.show",
-        "the display shows each one's code: " + ", ".join(f"{v} {c}" for v, c in shown.items()),
-    )
+    _show_codes(b, var, keys, codes)
 
 
 def _dedupe_keys(keys: list[ActionInfo]) -> list[ActionInfo]:
@@ -320,9 +309,14 @@ def column_keys(b: Builder, keys: list[ActionInfo]) -> tuple[list[ActionInfo], d
 
 def codes_shown(b: Builder, var: str, keys: list[ActionInfo], codes: dict[str, str]) -> None:
     """Each value shown by its code, when every key has its own short code ("P1" … "P4")."""
+    if all(CODE_RE.fullmatch(c) for c in codes.values()):
+        _show_codes(b, var, keys, codes)
+
+
+def _show_codes(b: Builder, var: str, keys: list[ActionInfo], codes: dict[str, str]) -> None:
+    """The value each key selects is shown by that key's code (key name → code), when every key
+    has a code of its own."""
     if len(codes) != len(keys) or len(set(codes.values())) != len(keys):
-        return
-    if not all(CODE_RE.fullmatch(c) for c in codes.values()):
         return
     shown = {b.features[k.token][0]["effect"]["to"]: codes[k.name] for k in keys}
     b.variables[var]["show"] = shown
