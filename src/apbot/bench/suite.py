@@ -53,6 +53,7 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "ice_cream_maker": 2,
     "water_heater": 5,
     "steam_iron": 3,
+    "yogurt_maker": 4,
 }
 
 
