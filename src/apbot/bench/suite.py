@@ -54,6 +54,7 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "water_heater": 5,
     "steam_iron": 3,
     "yogurt_maker": 4,
+    "contact_grill": 4,
 }
 
 
