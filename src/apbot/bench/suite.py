@@ -55,6 +55,7 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "steam_iron": 3,
     "yogurt_maker": 4,
     "contact_grill": 4,
+    "sewing_machine": 3,
 }
 
 
