@@ -56,6 +56,7 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "yogurt_maker": 4,
     "contact_grill": 4,
     "sewing_machine": 3,
+    "electric_blanket": 3,
 }
 
 
