@@ -57,6 +57,7 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "contact_grill": 4,
     "sewing_machine": 3,
     "electric_blanket": 3,
+    "humidifier": 3,
 }
 
 
