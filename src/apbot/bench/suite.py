@@ -53,6 +53,11 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "ice_cream_maker": 2,
     "water_heater": 5,
     "steam_iron": 3,
+    "yogurt_maker": 4,
+    "contact_grill": 4,
+    "sewing_machine": 3,
+    "electric_blanket": 3,
+    "humidifier": 3,
 }
 
 
