@@ -15,7 +15,7 @@ from apbot.agent.executed import Executed
 from apbot.agent.looking import selecting
 from apbot.agent.perception import MISSING, UNREADABLE, Seen
 from apbot.agent.quantities import magnitude
-from apbot.model.display import display_value
+from apbot.model.display import display_value, typed_text
 from apbot.model.domain import ValueProblem, parse_value
 from apbot.model.schema import ApplianceModel, DiscreteVariable, TimeVariable
 from apbot.plan.plan import PlannedAction
@@ -24,7 +24,7 @@ from apbot.sim.compiled import State
 if TYPE_CHECKING:
     from apbot.agent.session import Session
 
-__all__ = ["lights_up", "locks", "press", "runs", "silent", "suspect_unread"]
+__all__ = ["lights_up", "locks", "press", "runs", "silent", "suspect_unread", "typing"]
 
 
 def press(session: Session, action: PlannedAction, exploring: bool = False) -> Executed:
@@ -98,6 +98,17 @@ def press(session: Session, action: PlannedAction, exploring: bool = False) -> E
         and lights_up(session, before_state, variable, before_text, feedback.text)
     ):
         seen.values[variable] = predicted
+    typed = (
+        variable is not None
+        and variable not in seen.values
+        and variable not in seen.candidates
+        and typing(session, variable, feedback.text)
+    )
+    if variable is not None and typed:
+        # digits on their way to a value: a keypad that shows the entry as it is typed says
+        # nothing yet of the value (nor of its range); the check waits for the entry to end
+        seen.outside.pop(variable, None)
+        seen.absent.discard(variable)
     surprises = {
         name: (session.belief.value(name), value)
         for name, value in (*seen.values.items(), *seen.outside.items())
@@ -106,7 +117,7 @@ def press(session: Session, action: PlannedAction, exploring: bool = False) -> E
     for name in seen.absent:
         if session.belief.value(name) is not None:
             surprises[name] = (session.belief.value(name), None)
-    if variable and variable in expected.values and variable not in seen.shown():
+    if variable and not typed and variable in expected.values and variable not in seen.shown():
         # expected on the display, and it is dark (or shows what the belief cannot read)
         surprises[variable] = (predicted, UNREADABLE if seen.unknown else None)
         if seen.unknown:
@@ -173,6 +184,25 @@ def press(session: Session, action: PlannedAction, exploring: bool = False) -> E
         unseen,
         shown_before,
     )
+
+
+def typing(session: Session, variable: str, text: str) -> bool:
+    """Whether ``text`` shows the digits being typed into ``variable``'s keypad entry in
+    place of its value. Real keypads print an entry as it is typed ("SET 5" on the way to
+    56) whatever the manual said: the belief in the middle of typing (a non-empty buffer on
+    the setting's step) that finds those digits, as typed, as a word of the display has
+    seen no surprise yet."""
+    spec = session.belief.model.variables.get(variable)
+    entry = getattr(spec, "entry", None)
+    buffer = session.belief.state.buffer
+    if entry is None or not buffer:
+        return False
+    pointer = session.belief.pointer()
+    if pointer is None or session.step_variable(pointer) != variable:
+        return False
+    typed = re.escape(typed_text(entry, buffer))
+    # a word of its own: digits glued to a word ("PL7") are the value printed another way
+    return re.search(rf"(?<![\w:.]){typed}(?![\w:.])", text) is not None
 
 
 def lights_up(session: Session, before: State, variable: str, before_text: str, text: str) -> bool:
