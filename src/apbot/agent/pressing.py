@@ -101,18 +101,6 @@ def press(
         and lights_up(session, before_state, variable, before_text, feedback.text)
     ):
         seen.values[variable] = predicted
-    typed = (
-        typing_on
-        and variable is not None
-        and variable not in seen.values
-        and variable not in seen.candidates
-        and typing(session, variable, feedback.text)
-    )
-    if variable is not None and typed:
-        # digits on their way to a value: a keypad that shows the entry as it is typed says
-        # nothing yet of the value (nor of its range); the check waits for the entry to end
-        seen.outside.pop(variable, None)
-        seen.absent.discard(variable)
     surprises = {
         name: (session.belief.value(name), value)
         for name, value in (*seen.values.items(), *seen.outside.items())
@@ -121,6 +109,20 @@ def press(
     for name in seen.absent:
         if session.belief.value(name) is not None:
             surprises[name] = (session.belief.value(name), None)
+    typed = (
+        typing_on
+        and variable is not None
+        and variable not in seen.values
+        and variable not in seen.candidates
+        and set(surprises) <= {variable}  # a display that surprised elsewhere is judged whole
+        and typing(session, variable, feedback.text)
+    )
+    if variable is not None and typed:
+        # digits on their way to a value: a keypad that shows the entry as it is typed says
+        # nothing yet of the value (nor of its range); the check waits for the entry to end
+        seen.outside.pop(variable, None)
+        seen.absent.discard(variable)
+        surprises.pop(variable, None)
     if variable and not typed and variable in expected.values and variable not in seen.shown():
         # expected on the display, and it is dark (or shows what the belief cannot read)
         surprises[variable] = (predicted, UNREADABLE if seen.unknown else None)
