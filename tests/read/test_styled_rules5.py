@@ -3,8 +3,10 @@ small manual of our own."""
 
 from __future__ import annotations
 
+from apbot.model.load import loads_model
 from apbot.model.schema import DiscreteVariable
 from apbot.read import read_manual
+from apbot.read.goal import parse_instruction
 
 # a fan heater: a dial picks the room and the fan's standard speed, a FAN key steps the fan;
 # the chart says which speeds each position allows, one of them as "LOW only"
@@ -31,3 +33,35 @@ def test_a_cell_that_says_one_value_only_is_that_value() -> None:
     fan = model.variables["fan"]
     assert isinstance(fan, DiscreteVariable)
     assert fan.cases is not None and fan.cases["bath"].values == ["low"], fan.cases
+
+
+# an aquarium pump whose flow key shows its speeds abbreviated (LO, MED, HI)
+AQUARIUM = """
+appliance: {id: aquarium_pump, category: aquarium_pump, name: "Aquarium pump"}
+controls:
+  - {id: power_button, kind: button, label: "POWER"}
+  - {id: flow_button, kind: button, label: "FLOW"}
+variables:
+  power: {type: discrete, values: ["off", "on"], initial: "off"}
+  flow:
+    type: discrete
+    values: [lo, med, hi]
+    initial: hi
+    label: "FLOW"
+actions:
+  press_power: {control: power_button}
+  press_flow: {control: flow_button}
+features:
+  power:
+    - {actions: [press_power], variable: power, effect: toggle}
+  flow:
+    - {actions: [press_flow], variable: flow, effect: next}
+display:
+  idle: "FLOW {flow}"
+"""
+
+
+def test_abbreviated_levels_are_a_scale_with_ends() -> None:
+    model = loads_model(AQUARIUM)
+    assert parse_instruction(model, "Turn the flow down to its lowest speed")["flow"] == "lo"
+    assert parse_instruction(model, "Set the flow as high as it goes")["flow"] == "hi"
