@@ -3,6 +3,8 @@ small manual of our own."""
 
 from __future__ import annotations
 
+import pytest
+
 from apbot.model.load import loads_model
 from apbot.model.schema import DiscreteVariable
 from apbot.read import read_manual
@@ -65,3 +67,25 @@ def test_abbreviated_levels_are_a_scale_with_ends() -> None:
     model = loads_model(AQUARIUM)
     assert parse_instruction(model, "Turn the flow down to its lowest speed")["flow"] == "lo"
     assert parse_instruction(model, "Set the flow as high as it goes")["flow"] == "hi"
+
+
+# a pond pump whose JET key the manual describes, in a legend or in a section title, as the
+# thing a user talks about ("the bubbles")
+POND = AQUARIUM.replace("flow", "jet").replace("FLOW", "JET")
+POND_LEGEND = """KEYS
+
+ 1  POWER     Switches the pump on or off.
+ 2  JET       Sets the bubble strength: LO, MED, HI, then LO again.
+"""
+POND_TITLE = """3. BUBBLE STRENGTH (JET)
+
+Each press of JET gives the next strength: LO, MED, HI.
+"""
+
+
+@pytest.mark.parametrize("manual", [POND_LEGEND, POND_TITLE])
+def test_a_key_legend_or_title_names_what_the_key_sets(manual: str) -> None:
+    model = loads_model(POND)
+    goal = parse_instruction(model, "Bubble strength to the lowest, please", manual)
+    assert goal.get("jet") == "lo", goal
+    assert "jet" not in parse_instruction(model, "Bubble strength to the lowest, please")
