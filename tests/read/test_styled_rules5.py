@@ -6,7 +6,7 @@ from __future__ import annotations
 import pytest
 
 from apbot.model.load import loads_model
-from apbot.model.schema import DiscreteVariable
+from apbot.model.schema import DiscreteVariable, NumericVariable
 from apbot.read import read_manual
 from apbot.read.goal import parse_instruction
 
@@ -89,3 +89,22 @@ def test_a_key_legend_or_title_names_what_the_key_sets(manual: str) -> None:
     goal = parse_instruction(model, "Bubble strength to the lowest, please", manual)
     assert goal.get("jet") == "lo", goal
     assert "jet" not in parse_instruction(model, "Bubble strength to the lowest, please")
+
+
+# a griddle whose POWER key steps the output: fine steps low down, coarser ones above
+GRIDDLE = """KEYS
+
+ON/OFF    switches the griddle on or off.
+POWER     touch, then + or - to change the output.
++  -      change the value shown.
+
+Touch POWER, then + or - to choose the output. The output goes from 300 to 1200 W in 100 W
+steps, above 1200 W in steps of 300 W up to 2400 W.
+"""
+GRIDDLE_ACTIONS = ["press_on_off", "press_power", "press_plus", "press_minus"]
+
+
+def test_an_amount_whose_step_changes_part_way_has_two_pieces() -> None:
+    model = read_manual(GRIDDLE, GRIDDLE_ACTIONS).model
+    power = next(v for v in model.variables.values() if isinstance(v, NumericVariable))
+    assert [tuple(r) for r in power.ranges or []] == [(300, 1200, 100), (1200, 2400, 300)]
