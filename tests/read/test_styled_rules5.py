@@ -108,3 +108,18 @@ def test_an_amount_whose_step_changes_part_way_has_two_pieces() -> None:
     model = read_manual(GRIDDLE, GRIDDLE_ACTIONS).model
     power = next(v for v in model.variables.values() if isinstance(v, NumericVariable))
     assert [tuple(r) for r in power.ranges or []] == [(300, 1200, 100), (1200, 2400, 300)]
+
+
+# a soup maker whose BLEND MODE key (action press_blend) lists BLEND as its own first value
+SOUP = """KEYS
+
+  POWER         Switches the soup maker on or off.
+  BLEND MODE    Each touch moves on to the next texture: BLEND → CHUNKY → SMOOTH → BLEND again.
+"""
+
+
+def test_a_key_named_one_word_longer_than_its_action_heads_the_legend_row() -> None:
+    model = read_manual(SOUP, ["press_power", "press_blend"]).model
+    var = next(v for v in model.variables.values() if v.label == "BLEND MODE")
+    assert isinstance(var, DiscreteVariable)
+    assert var.values == ["blend", "chunky", "smooth"]
