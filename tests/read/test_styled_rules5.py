@@ -123,3 +123,28 @@ def test_a_key_named_one_word_longer_than_its_action_heads_the_legend_row() -> N
     var = next(v for v in model.variables.values() if v.label == "BLEND MODE")
     assert isinstance(var, DiscreteVariable)
     assert var.values == ["blend", "chunky", "smooth"]
+
+
+# a grill whose list of display messages shows the timer as a clock time ("TIMER 0:15")
+GRILL = """KEYS
+
+TIMER   touch, then + or - to set the switch-off time.
++  -    change the value shown.
+
+DISPLAY MESSAGES
+
+  TIMER 0:15        timer being set, hours:minutes
+  HOT               the plate is still hot
+
+SETTING THE TIMER
+
+Touch TIMER, then + or -. The timer goes from 0:00 to 2:00 in steps of 5 minutes.
+"""
+
+
+def test_a_clock_time_in_a_display_message_is_no_list_colon() -> None:
+    model = read_manual(GRILL, ["press_timer", "press_plus", "press_minus"]).model
+    timer = model.variables["timer"]
+    assert [tuple(r) for r in getattr(timer, "ranges", None) or []] == [
+        ("00:00:00", "02:00:00", 300)
+    ], timer
