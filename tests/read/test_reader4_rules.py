@@ -1,0 +1,39 @@
+"""Rules found on the nine dev categories' read beliefs (reader4 round): each on a small manual
+or sentence of our own, in the wording a real manual of any appliance might use."""
+
+from __future__ import annotations
+
+from apbot.model.domain import all_values
+from apbot.read import read_manual
+from apbot.read.values import find_step
+
+
+def test_by_one_step_is_no_step_of_one_second() -> None:
+    # "by one step" is a click of the dial, not "by one s(econd)"
+    assert find_step("Every click moves the setting by one step.") is None
+    assert find_step("Each turn changes the time by 1 s.") == (1.0, "s")
+    assert find_step("Each press changes the time by 5 minutes.") == (5.0, "min")
+
+
+DRYER = """# PEBBLE DB-2 Dish Dryer
+
+## Controls
+
+| Control | Use |
+|---|---|
+| **MODE** knob | Chooses DRY or HEAT. |
+| **TIME** knob | Sets the drying time. |
+| **START** | Starts the cycle. |
+
+## Setting the time
+
+Turn the TIME knob; each click changes the time by one step. You can dry for 10 – 40 min.
+"""
+
+
+def test_a_dial_of_one_step_per_click_keeps_minute_steps() -> None:
+    model = read_manual(
+        DRYER, ["turn_mode_cw", "turn_time_cw", "turn_time_ccw", "press_start"]
+    ).model
+    time = next(v for name, v in model.variables.items() if "time" in name)
+    assert len(all_values(time)) <= 31  # minutes (or coarser), never 1,801 seconds
