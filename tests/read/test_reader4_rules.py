@@ -37,3 +37,46 @@ def test_a_dial_of_one_step_per_click_keeps_minute_steps() -> None:
     ).model
     time = next(v for name, v in model.variables.items() if "time" in name)
     assert len(all_values(time)) <= 31  # minutes (or coarser), never 1,801 seconds
+
+
+# A read belief of a water dispenser: the reader names each switch after its key, so the pour
+# under way is a switch `dispense` toggled by DISPENSE, beside a GENTLE POUR switch.
+URN = """
+appliance: {id: urn_1, category: urn, name: "Kessel HW-5 hot water urn", brand: Kessel}
+controls:
+  - {id: gentle_button, kind: button, label: "GENTLE POUR"}
+  - {id: size_button, kind: button, label: "SIZE"}
+  - {id: dispense_button, kind: button, label: "DISPENSE"}
+variables:
+  gentle_pour: {type: discrete, values: ["off", "on"], label: "GENTLE POUR"}
+  size: {type: discrete, values: [glass, jug], label: "SIZE"}
+  dispense: {type: discrete, values: ["off", "on"], label: "DISPENSE"}
+actions:
+  press_gentle: {control: gentle_button}
+  press_size: {control: size_button}
+  press_dispense: {control: dispense_button}
+features:
+  gentle_pour:
+    - {actions: [press_gentle], variable: gentle_pour, effect: toggle}
+  size:
+    - {actions: [press_size], variable: size, effect: next}
+  dispense:
+    - {actions: [press_dispense], variable: dispense, effect: toggle}
+"""
+
+
+def test_the_verb_of_a_key_named_pour_starts_it() -> None:
+    from apbot.model.load import loads_model
+    from apbot.read.goal import parse_instruction
+
+    urn = loads_model(URN)
+    assert parse_instruction(urn, "Pour me a jug of hot water.") == {
+        "size": "jug",
+        "dispense": "on",
+    }
+    # the operation's verb is not the GENTLE POUR switch, which its own words still name
+    assert parse_instruction(urn, "Choose the glass and start pouring.") == {
+        "size": "glass",
+        "dispense": "on",
+    }
+    assert parse_instruction(urn, "Turn on the gentle pour.") == {"gentle_pour": "on"}
