@@ -80,3 +80,31 @@ def test_the_verb_of_a_key_named_pour_starts_it() -> None:
         "dispense": "on",
     }
     assert parse_instruction(urn, "Turn on the gentle pour.") == {"gentle_pour": "on"}
+
+
+COOKER = """# TAVOLA MC-6 Multicooker
+
+## Controls
+
+The programme names are printed round the PROGRAM dial: RICE, SOUP, STEW, YOGURT, PORRIDGE.
+
+| Control | Use |
+|---|---|
+| **PROGRAM** dial | Chooses the programme. |
+| **COOK TIME** | Changes the cooking time. |
+| **START** | Starts cooking. |
+
+## Cooking time
+
+With SOUP, STEW and PORRIDGE you can choose the cooking time yourself; the other programmes
+time themselves. Press COOK TIME, then turn the PROGRAM dial to change the time, from 0:20 to
+4:00.
+"""
+
+
+def test_menus_named_beside_a_time_key_are_not_its_values() -> None:
+    # the dial's programmes the time applies to are no values of the time
+    actions = ["turn_program_cw", "turn_program_ccw", "press_cook_time", "press_start"]
+    model = read_manual(COOKER, actions).model
+    assert "stew" in all_values(model.variables["program"])
+    assert model.variables["cook_time"].type == "time"

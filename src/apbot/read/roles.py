@@ -105,13 +105,18 @@ def assign(b: Builder) -> None:
             pad_group(b, group)
             keys = [k for k in keys if k not in group]
     evidence = {k.name: b.evidence(list(k.controls)) for k in keys}
+    # (or a dial's: "For PORRIDGE, STEAM and CAKE you can set the time" names the menus)
+    dial_lists = [set(b.evidence([t]).values or []) for t in dials]
     for key in keys:  # "Cooking rice (WHITE RICE, BROWN RICE)" near COOK TIME: FUNCTION's values
         ev = evidence[key.name]
         mine = set(ev.values or [])
         if (
             len(mine) >= 2
             and not numeric_list(list(mine))
-            and any(mine < set(evidence[o.name].values or []) for o in keys if o.name != key.name)
+            and (
+                any(mine < set(evidence[o.name].values or []) for o in keys if o.name != key.name)
+                or any(mine < theirs for theirs in dial_lists)
+            )
         ):
             evidence[key.name] = replace(ev, values=None, values_at=None)
     for key in keys:  # a push-turn dial's list ("a ring of programs round the dial"): its turns'
