@@ -108,3 +108,25 @@ def test_menus_named_beside_a_time_key_are_not_its_values() -> None:
     model = read_manual(COOKER, actions).model
     assert "stew" in all_values(model.variables["program"])
     assert model.variables["cook_time"].type == "time"
+
+
+PURIFIER = """BREEZA AP-7 Air Purifier
+
+CONTROL PANEL
+FAN        Changes the fan speed: LOW, MID, HIGH.
+TIMER      Sets the off-timer, 1 to 8 hours, one hour per press. Press and hold for
+           2 seconds to turn the beep on or off.
+"""
+
+
+def test_holding_a_key_to_switch_something_on_or_off_is_that_switch() -> None:
+    from apbot.read.goal import parse_instruction
+
+    actions = ["press_fan", "press_timer", "hold_timer"]
+    model = read_manual(PURIFIER, actions).model
+    beep = model.variables["beep"]
+    assert all_values(beep) == ["off", "on"]
+    assert beep.label == "BEEP"  # its own name, so "the timer" does not name it
+    held = [s for steps in model.features.values() for s in steps if "hold_timer" in s.actions]
+    assert [s.variable for s in held] == ["beep"]
+    assert parse_instruction(model, "Turn off the beep.") == {"beep": "off"}

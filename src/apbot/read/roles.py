@@ -20,6 +20,7 @@ from apbot.read.roles_common import (
     FUNCTION_WORDS,
     NUMERIC_WORDS,
     TIME_WORDS,
+    held_switch,
     hold_use,
     label_of,
     mentions_of,
@@ -144,6 +145,10 @@ def assign(b: Builder) -> None:
             and (shared_pair or digits or generic_dials)
         ):
             entry_keys.append(key)  # "rear timer (touch and hold)", then + / −
+            continue
+        if (switched := held_switch(b, key)) is not None:  # "hold 3 s to switch the sound off"
+            var = b.add_toggle(name, switched[0].upper(), switched[1])  # not the key's name
+            b.feature(var, [{"actions": [key.name], "variable": var, "effect": "toggle"}])
             continue
         if key.skill == "hold" and set(key.controls) <= paired_tokens:
             silent.append(key)  # holding ▲ / ▼ moves faster: no list of its own ("00:00 00:30 …")
