@@ -130,3 +130,19 @@ def test_holding_a_key_to_switch_something_on_or_off_is_that_switch() -> None:
     held = [s for steps in model.features.values() for s in steps if "hold_timer" in s.actions]
     assert [s.variable for s in held] == ["beep"]
     assert parse_instruction(model, "Turn off the beep.") == {"beep": "off"}
+
+
+HEATER = """ORBIT FH-3 Fan Heater
+
+CONTROL PANEL
+HEAT       Changes the heat level: LOW, MEDIUM, HIGH. Holding HEAT switches the night
+           mode (see below).
+SWING      Turns the oscillation on and off.
+"""
+
+
+def test_holding_a_key_switches_what_its_legend_says() -> None:
+    model = read_manual(HEATER, ["press_heat", "hold_heat", "press_swing"]).model
+    held = [s for steps in model.features.values() for s in steps if "hold_heat" in s.actions]
+    assert [s.variable for s in held] == ["night_mode"]
+    assert all_values(model.variables["night_mode"]) == ["off", "on"]

@@ -119,10 +119,17 @@ def held_switch(b: Builder, key: ActionInfo) -> tuple[str, int] | None:
     if key.skill != "hold" or len(key.controls) != 1 or key.controls[0] not in b.labels:
         return None
     units = b.manual.units
+    label = re.escape(b.labels[key.controls[0]].text)
+    holding = re.compile(  # "Holding FAN switches the ioniser (see 5.6)."
+        rf"\bholding\s+(?:the\s+)?{label}\s+(?:(?:key|button)\s+)?(?:switches|turns|toggles)\s+"
+        r"(?:the\s+)?([a-z][a-z -]{2,30}?)(?:\s+on\s+(?:and|or)\s+off\b|\s*[.;,(]|$)",
+        re.IGNORECASE,
+    )
     for i in b.labels[key.controls[0]].mentions:
         after = units[i + 1].text if i + 1 < len(units) else ""
         for at, said in ((i, HOLD_TO_SWITCH_RE.search(units[i].text)),
-                         (i + 1, HOLD_TO_SWITCH_RE.match(after))):  # fmt: skip
+                         (i + 1, HOLD_TO_SWITCH_RE.match(after)),
+                         (i, holding.search(units[i].text))):  # fmt: skip
             if said and not set(words(said.group(1))) & {"lock", "key", "appliance", "power"}:
                 return said.group(1).lower(), at
     return None
