@@ -146,3 +146,39 @@ def test_holding_a_key_switches_what_its_legend_says() -> None:
     held = [s for steps in model.features.values() for s in steps if "hold_heat" in s.actions]
     assert [s.variable for s in held] == ["night_mode"]
     assert all_values(model.variables["night_mode"]) == ["off", "on"]
+
+
+GRILL = """
+appliance: {id: grill_1, category: contact_grill, name: "Presso CG-2 contact grill", brand: Presso}
+controls:
+  - {id: heat_button, kind: button, label: "HEAT"}
+  - {id: tone_button, kind: button, label: "TONE"}
+variables:
+  heat: {type: discrete, values: [low, medium, high], label: "HEAT"}
+  tone: {type: discrete, values: ["off", "on"], label: "TONE", initial: "on"}
+actions:
+  press_heat: {control: heat_button}
+  press_tone: {control: tone_button}
+features:
+  heat:
+    - {actions: [press_heat], variable: heat, effect: next}
+  tone:
+    - {actions: [press_tone], variable: tone, effect: toggle}
+"""
+
+GRILL_MANUAL = """# Presso CG-2
+
+| Key | Use |
+|---|---|
+| HEAT | Changes the plate heat. |
+| TONE | Chime when the sandwich is ready |
+"""
+
+
+def test_a_legend_that_names_what_a_switch_is_names_it_when_said_without() -> None:
+    from apbot.model.load import loads_model
+    from apbot.read.goal import parse_instruction
+
+    grill = loads_model(GRILL)
+    said = "High heat, and without the ready chime please."
+    assert parse_instruction(grill, said, GRILL_MANUAL) == {"heat": "high", "tone": "off"}
