@@ -222,7 +222,22 @@ def legend_words(
                     thing = re.search(r"([A-Za-z]{4,})\s+on\s*(?:and|or|/)\s*off\b", sentence)
                     if thing is not None and thing[1].casefold() not in _LEGEND_VERBS:
                         out.setdefault(name, set()).add(thing[1].casefold())
+                out.setdefault(name, set()).update(_described(sentences[0]))
     return out
+
+
+def _described(sentence: str) -> set[str]:
+    """The nouns of a legend that only names what the switch is ("ADD-IN | Beep for adding fruit
+    and nuts"): no verb opens it, so its words are the thing switched ("no fruit-and-nut
+    beep"). A legend that says what the key does ("Turns the lamp on") gives none here."""
+    found = re.findall(r"[A-Za-z]+", sentence)
+    if not found or found[0].casefold() in _LEGEND_VERBS or found[0].casefold().endswith("s"):
+        return set()
+    return {
+        w.casefold()
+        for w in found
+        if len(w) >= 4 and w.casefold() not in _LEGEND_VERBS and not w.casefold().endswith("ing")
+    }
 
 
 def _continued(text: str, raw: list[str], index: int) -> str:

@@ -5,7 +5,14 @@ from __future__ import annotations
 
 from apbot.model.domain import build_domain
 from apbot.model.schema import DiscreteVariable, NumericVariable, TimeVariable
-from apbot.read.goal_text import CLAUSE_ENDS, Text, negative_around, phrase_here, verb_positions
+from apbot.read.goal_text import (
+    CLAUSE_ENDS,
+    VERB_FAMILIES,
+    Text,
+    negative_around,
+    phrase_here,
+    verb_positions,
+)
 from apbot.read.goal_values import OFF_WORDS, generic, magnitude, unit_text
 from apbot.read.goal_view import (
     Goal,
@@ -24,6 +31,13 @@ def switches(
 ) -> None:
     """An on/off setting named in the instruction: on, unless its words are negated."""
     verbs = verb_positions(text)
+    # "start pouring" names the operation under way, not a SLOW POUR switch that shares its verb
+    operating = {
+        v
+        for n, i in view.infos.items()
+        if i.role == "running"
+        for v in VERB_FAMILIES.get(stem(n), ())
+    }
     for name, info in view.infos.items():
         if info.role != "switch" or name in goal:
             continue
@@ -57,7 +71,9 @@ def switches(
             ):
                 weight = 1.0
                 # "Warm the water" is not KEEP WARM; "UV light" is not the night light
-                doubtful = len(own) > 1 and (k in verbs or (k - 1) in claimed)
+                doubtful = len(own) > 1 and (
+                    k in verbs or (k - 1) in claimed or text.stems[k] in operating
+                )
                 if doubtful and not (phrase_here(text, k, own) or _kept(text, k, own)):
                     continue
             elif negative_around(text, k):

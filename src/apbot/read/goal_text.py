@@ -236,6 +236,8 @@ VERB_FAMILIES: dict[str, frozenset[str]] = {
     stem("heating"): frozenset(stem(w) for w in ("heat", "warm", "boil", "bring")),
     stem("dispensing"): frozenset(stem(w) for w in ("dispense", "pour", "fill")),
     stem("pouring"): frozenset(stem(w) for w in ("dispense", "pour", "fill")),
+    stem("dispense"): frozenset(stem(w) for w in ("dispense", "pour", "fill")),
+    stem("pour"): frozenset(stem(w) for w in ("dispense", "pour", "fill")),
 }
 
 

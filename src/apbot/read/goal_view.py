@@ -323,6 +323,7 @@ def _mark_power_and_running(model: ApplianceModel, infos: dict[str, VarInfo]) ->
         if not any(word in name_words(labels) for word in _START_LABELS):
             continue
         goes = any(isinstance(effect, GoTo) for _a, effect in step_effects(step))
+        goes = goes or _named_for_key(step.variable or "", labels)
         targets = [step.variable] if step.variable and goes else []
         targets += list(step.set)
         for target in targets:
@@ -343,6 +344,13 @@ def _mark_power_and_running(model: ApplianceModel, infos: dict[str, VarInfo]) ->
             and isinstance(info.var, DiscreteVariable)
         ):
             info.role = "running"
+
+
+def _named_for_key(name: str, labels: str) -> bool:
+    """A switch named for the operation its own key starts (DISPENSE toggles ``dispense``): the
+    operation under way, started by the operation's verbs, not a setting."""
+    own = name_words(name)
+    return bool(own) and all(w in _START_LABELS and w in name_words(labels) for w in own)
 
 
 def _operation(name: str) -> bool:

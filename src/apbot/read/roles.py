@@ -20,6 +20,7 @@ from apbot.read.roles_common import (
     FUNCTION_WORDS,
     NUMERIC_WORDS,
     TIME_WORDS,
+    held_switch,
     hold_use,
     label_of,
     mentions_of,
@@ -105,13 +106,18 @@ def assign(b: Builder) -> None:
             pad_group(b, group)
             keys = [k for k in keys if k not in group]
     evidence = {k.name: b.evidence(list(k.controls)) for k in keys}
+    # (or a dial's: "For PORRIDGE, STEAM and CAKE you can set the time" names the menus)
+    dial_lists = [set(b.evidence([t]).values or []) for t in dials]
     for key in keys:  # "Cooking rice (WHITE RICE, BROWN RICE)" near COOK TIME: FUNCTION's values
         ev = evidence[key.name]
         mine = set(ev.values or [])
         if (
             len(mine) >= 2
             and not numeric_list(list(mine))
-            and any(mine < set(evidence[o.name].values or []) for o in keys if o.name != key.name)
+            and (
+                any(mine < set(evidence[o.name].values or []) for o in keys if o.name != key.name)
+                or any(mine < theirs for theirs in dial_lists)
+            )
         ):
             evidence[key.name] = replace(ev, values=None, values_at=None)
     for key in keys:  # a push-turn dial's list ("a ring of programs round the dial"): its turns'
@@ -139,6 +145,10 @@ def assign(b: Builder) -> None:
             and (shared_pair or digits or generic_dials)
         ):
             entry_keys.append(key)  # "rear timer (touch and hold)", then + / −
+            continue
+        if (switched := held_switch(b, key)) is not None:  # "hold 3 s to switch the sound off"
+            var = b.add_toggle(name, switched[0].upper(), switched[1])  # not the key's name
+            b.feature(var, [{"actions": [key.name], "variable": var, "effect": "toggle"}])
             continue
         if key.skill == "hold" and set(key.controls) <= paired_tokens:
             silent.append(key)  # holding ▲ / ▼ moves faster: no list of its own ("00:00 00:30 …")

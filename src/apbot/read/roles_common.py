@@ -104,6 +104,37 @@ HOLD_THEN_RE = re.compile(
 )
 
 
+HOLD_TO_SWITCH_RE = re.compile(  # "Press and hold for 3 seconds to switch the sound on or off"
+    r"\W*\b(?:touch|press|tap|push)\s+(?:and|&)\s+hold(?:\s+(?:it\s+)?(?:down\s+)?(?:for\s+)?"
+    r"(?:about\s+)?\d+(?:[.,]\d+)?\s*(?:s|sec|secs|seconds?))?\s+to\s+(?:switch|turn)\s+"
+    r"(?:the\s+)?([a-z][a-z -]{2,30}?)\s+(?:on|off)\b",
+    re.IGNORECASE,
+)
+
+
+def held_switch(b: Builder, key: ActionInfo) -> tuple[str, int] | None:
+    """What holding this key switches on and off, and where the manual says so: "COOK TIME
+    Sets the time. Press and hold for 3 s to switch the sound on or off." (the legend's next
+    sentence, when it opens with the hold, is still about this key); else None."""
+    if key.skill != "hold" or len(key.controls) != 1 or key.controls[0] not in b.labels:
+        return None
+    units = b.manual.units
+    label = re.escape(b.labels[key.controls[0]].text)
+    holding = re.compile(  # "Holding FAN switches the ioniser (see 5.6)."
+        rf"\bholding\s+(?:the\s+)?{label}\s+(?:(?:key|button)\s+)?(?:switches|turns|toggles)\s+"
+        r"(?:the\s+)?([a-z][a-z -]{2,30}?)(?:\s+on\s+(?:and|or)\s+off\b|\s*[.;,(]|$)",
+        re.IGNORECASE,
+    )
+    for i in b.labels[key.controls[0]].mentions:
+        after = units[i + 1].text if i + 1 < len(units) else ""
+        for at, said in ((i, HOLD_TO_SWITCH_RE.search(units[i].text)),
+                         (i + 1, HOLD_TO_SWITCH_RE.match(after)),
+                         (i, holding.search(units[i].text))):  # fmt: skip
+            if said and not set(words(said.group(1))) & {"lock", "key", "appliance", "power"}:
+                return said.group(1).lower(), at
+    return None
+
+
 def _of_the(noun: str, own: set[str]) -> str:
     """ "timer of the rear zone" (key REAR) -> "rear timer": the head noun with what names the
     key in the phrase after "of"/"for" (its label's words; else the phrase less its own final
@@ -143,6 +174,9 @@ def hold_use(b: Builder, key: ActionInfo) -> str:
         )
         if label and row and not set(words(row.group(1))) & {"lock", "key", "appliance"}:
             return row.group(1).lower()
+        switched = held_switch(b, key)
+        if switched:
+            return switched[0]
         m = HOLD_USE_RE.search(text)
         if m:
             noun = re.split(r"[·;,:|]|\)", m.group(1))[-1].strip()
