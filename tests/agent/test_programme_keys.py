@@ -69,3 +69,13 @@ def test_a_lone_programme_key_is_not_probed_as_the_stepping_pair() -> None:
     assert reached and episode.claimed_success
     assert "press_level only brings level up; press_up, press_down adjust it" in episode.repairs
 
+
+def test_a_programme_starts_its_setting_where_the_display_first_shows_it() -> None:
+    # BOOST starts the level at 9, where the belief has it start at 1: re-choosing BOOST
+    # looks like the short way down to 2, and brings the level back to 9 every time
+    truth = model_from(_hob(ENTRY_LEVEL, 1, boost_start=", initial: 9"))
+    belief = model_from(_hob(ENTRY_LEVEL, 1))
+    episode, reached = run(truth, belief, {"mode": "boost", "level": 2})
+    assert reached and episode.claimed_success
+    assert "level starts at 9 in mode boost" in episode.repairs
+    assert not any("sets it to" in r for r in episode.repairs)  # not LEVEL's doing
