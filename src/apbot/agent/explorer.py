@@ -85,7 +85,7 @@ class Explorer:
                 else ""
             ),
         )
-        forward, backward = self._read_unread(name, forward, backward)
+        forward, backward = self._read_unread(name, forward, backward, last.predicted)
         seen = [v for v in forward + (backward or []) if not isinstance(v, Dark)]
         if not seen:
             return
@@ -104,12 +104,12 @@ class Explorer:
             self.session.belief.advance(final.name, final.seconds)
 
     def _read_unread(
-        self, name: str, forward: list[Any], backward: list[Any] | None
+        self, name: str, forward: list[Any], backward: list[Any] | None, believed: Any = None
     ) -> tuple[list[Any], list[Any] | None]:
         """Texts the belief could not read: learn how the display prints the setting from them,
         then read them again; what stays unreadable counts as dark."""
         texts = [v.text for v in forward + (backward or []) if isinstance(v, Unread)]
-        if texts and not self.displays.learn_word(name, forward + (backward or [])):
+        if texts and not self.displays.learn_word(name, forward + (backward or []), believed):
             self.displays.learn(name, texts)
 
         def again(trace: list[Any]) -> list[Any]:
