@@ -278,6 +278,9 @@ class Explorer:
         values = fill_dark(values, known, order.wrap)
         if not order.complete:
             values = splice(known, values)
+        renamed = _spelt_out([str(v) for v in known], [str(v) for v in values])
+        if renamed:
+            self.session.renamed.setdefault(name, {}).update(renamed)
         new = redefine_domain(
             self.session.belief.model,
             name,
@@ -547,3 +550,24 @@ def _direction(spec: Any, forward: list[Any], backward: list[Any] | None) -> flo
         opposite = typical_change(numbers(backward))
         change = None if opposite is None else -opposite
     return change
+
+
+def _spelt_out(old: list[str], new: list[str]) -> dict[str, str]:
+    """Each old value the walk showed only spelt out (``lo`` → ``low``), when the walk shows
+    as many values as the belief had and each old one begins exactly one new one: the same
+    values, printed in full. Empty otherwise.
+
+    >>> _spelt_out(["lo", "hi"], ["low", "high"])
+    {'lo': 'low', 'hi': 'high'}
+    >>> _spelt_out(["lo", "hi"], ["low", "medium", "high"])
+    {}
+    """
+    if len(old) != len(new) or set(old) == set(new):
+        return {}
+    found: dict[str, str] = {}
+    for value in old:
+        fits = [n for n in new if n.casefold().startswith(value.casefold())]
+        if len(fits) != 1 or fits[0] in found.values():
+            return {}
+        found[value] = fits[0]
+    return {o: n for o, n in found.items() if o != n}
