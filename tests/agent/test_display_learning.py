@@ -119,3 +119,32 @@ def test_a_time_found_inside_a_longer_time_is_no_template() -> None:
     assert reached and episode.claimed_success
     assert not any("'0{value}'" in r for r in episode.repairs)
     assert any(r.startswith("clock is shown as '{value}' (hh:mm)") for r in episode.repairs)
+
+
+LAMP = """
+controls: [{id: power, label: POWER}, {id: glow, label: NIGHT GLOW}]
+variables:
+  power: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "READY"}}
+  glow: {type: discrete, values: ["off", "on"]{glow_show}}
+actions:
+  press_power: {control: power}
+  press_glow: {control: glow}
+features:
+  power:
+    - {actions: [press_power], variable: power, effect: toggle}
+  glow:
+    - {actions: [press_glow], variable: glow, effect: toggle}
+guards:
+  - {name: power off, when: {power: "off"}, only: [press_power], display: "", hide: true}
+display: {idle: "{power}"}
+"""
+
+
+def test_an_on_off_setting_learns_the_one_word_its_lamp_lights() -> None:
+    # the panel lights GLOW for "on" and prints nothing for "off"; the reader took the
+    # setting for one printed as "NIGHT GLOW on"
+    truth = model_from(LAMP.replace("{glow_show}", ', show: {"off": "", "on": "GLOW"}'))
+    belief = model_from(LAMP.replace("{glow_show}", ", label: NIGHT GLOW"))
+    episode, reached = run(truth, belief, {"power": "on", "glow": "on"})
+    assert reached and episode.claimed_success
+    assert "glow 'on' is shown as 'GLOW'" in episode.repairs

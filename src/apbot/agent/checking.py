@@ -161,6 +161,8 @@ class Checks:
         )
         if self.side_effects.independent(name, executed[upto], observed):
             return
+        if self.side_effects.programme_start(name, executed[upto], observed):
+            return
         adjusting = [e for e in executed[: upto + 1] if e.variable == name and e.believed_accepted]
         if not adjusting:  # changed as a side effect: the step that did it says so now
             self.side_effects.learn_side_effect(name, executed[upto], observed)

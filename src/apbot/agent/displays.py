@@ -106,23 +106,36 @@ class DisplayLearner:
             bare=bare,
         )
 
-    def learn_word(self, name: str, trace: Sequence[Any]) -> bool:
+    def learn_word(self, name: str, trace: Sequence[Any], believed: Any = None) -> bool:
         """A setting printed as one word per value (a lamp ``DRY+``, a screen ``ECO``) with one
         value's word copied wrong: a walk that read every other value, and one text it could
         not, which differs from what the belief prints for the missing value by that word
         alone. The word the display printed becomes the value's ``show`` entry (once per
-        setting); True when the belief changed."""
+        setting); True when the belief changed. An on/off setting the belief prints as
+        "LABEL value" learns the one word its lamp lights (:meth:`_lamp_word`); ``believed``:
+        the value the walk's first press was to give."""
         session = self.session
         model = session.belief.model
         spec = model.variables[name]
-        if not isinstance(spec, DiscreteVariable) or not isinstance(spec.show, dict):
+        if not isinstance(spec, DiscreteVariable):
             return False
         texts = {v.text for v in trace if isinstance(v, Unread)}
         read = {v for v in trace if not isinstance(v, Unread | Dark)}
         missing = [v for v in session.domain_values(name) if v not in read]
+        dark = any(isinstance(v, Dark) for v in trace)
+        if spec.show is None and len(texts) == 1 and not read and dark:
+            # the word and a dark display in turn: the word is the value the walk's first
+            # press was to give (``believed``), the dark display the other
+            others = [v for v in session.domain_values(name) if v != believed]
+            if len(others) == 1 and len(others) < len(session.domain_values(name)):
+                return self._lamp_word(name, texts.pop(), believed, others[0])
         if len(texts) != 1 or len(missing) != 1 or len(read) < 1:
             return False
         text, value = texts.pop(), missing[0]
+        if spec.show is None:
+            return self._lamp_word(name, text, value, read.pop())
+        if not isinstance(spec.show, dict):
+            return False
         before = session.belief.state
         if not session.belief.set_value(name, value):
             return False
@@ -140,6 +153,32 @@ class DisplayLearner:
             return False
         try:
             new = set_display(model, name, {**spec.show, str(value): word})
+        except RepairError as exc:
+            session.episode.log("repair", f"could not repair how {name} is shown: {exc}")
+            return False
+        hypotheses = DisplayReader(new).read(text, {**session.belief.values(), name: value})
+        if not any(h.value(name) == value for h in hypotheses.hypotheses):
+            return False
+        session.adopt(new, f"{name} {value!r} is shown as {word!r}", session.belief.pointer())
+        return True
+
+    def _lamp_word(self, name: str, text: str, value: Any, other: Any) -> bool:
+        """An on/off setting the belief prints as "LABEL value", whose walk read one value
+        (a display without it) and showed the other as one short word it cannot read
+        (``LIGHT``, ``ROT``): the panel lights that word for that value and prints nothing for
+        the other. Only for two values and a word of letters (no number: that is a value of
+        some setting), and only if the repaired belief reads the word back (once)."""
+        session = self.session
+        words = text.split()
+        if len(session.domain_values(name)) != 2 or not 1 <= len(words) <= 2:
+            return False
+        if not all(w.isalpha() for w in words):
+            return False
+        word = " ".join(words)
+        if not session.budget.once("template", f"{name}:{value}:{word}"):
+            return False
+        try:
+            new = set_display(session.belief.model, name, {str(value): word, str(other): ""})
         except RepairError as exc:
             session.episode.log("repair", f"could not repair how {name} is shown: {exc}")
             return False

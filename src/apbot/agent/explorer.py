@@ -85,7 +85,7 @@ class Explorer:
                 else ""
             ),
         )
-        forward, backward = self._read_unread(name, forward, backward)
+        forward, backward = self._read_unread(name, forward, backward, last.predicted)
         seen = [v for v in forward + (backward or []) if not isinstance(v, Dark)]
         if not seen:
             return
@@ -104,12 +104,12 @@ class Explorer:
             self.session.belief.advance(final.name, final.seconds)
 
     def _read_unread(
-        self, name: str, forward: list[Any], backward: list[Any] | None
+        self, name: str, forward: list[Any], backward: list[Any] | None, believed: Any = None
     ) -> tuple[list[Any], list[Any] | None]:
         """Texts the belief could not read: learn how the display prints the setting from them,
         then read them again; what stays unreadable counts as dark."""
         texts = [v.text for v in forward + (backward or []) if isinstance(v, Unread)]
-        if texts and not self.displays.learn_word(name, forward + (backward or [])):
+        if texts and not self.displays.learn_word(name, forward + (backward or []), believed):
             self.displays.learn(name, texts)
 
         def again(trace: list[Any]) -> list[Any]:
@@ -278,6 +278,9 @@ class Explorer:
         values = fill_dark(values, known, order.wrap)
         if not order.complete:
             values = splice(known, values)
+        renamed = _spelt_out([str(v) for v in known], [str(v) for v in values])
+        if renamed:
+            self.session.renamed.setdefault(name, {}).update(renamed)
         new = redefine_domain(
             self.session.belief.model,
             name,
@@ -547,3 +550,24 @@ def _direction(spec: Any, forward: list[Any], backward: list[Any] | None) -> flo
         opposite = typical_change(numbers(backward))
         change = None if opposite is None else -opposite
     return change
+
+
+def _spelt_out(old: list[str], new: list[str]) -> dict[str, str]:
+    """Each old value the walk showed only spelt out (``lo`` → ``low``), when the walk shows
+    as many values as the belief had and each old one begins exactly one new one: the same
+    values, printed in full. Empty otherwise.
+
+    >>> _spelt_out(["lo", "hi"], ["low", "high"])
+    {'lo': 'low', 'hi': 'high'}
+    >>> _spelt_out(["lo", "hi"], ["low", "medium", "high"])
+    {}
+    """
+    if len(old) != len(new) or set(old) == set(new):
+        return {}
+    found: dict[str, str] = {}
+    for value in old:
+        fits = [n for n in new if n.casefold().startswith(value.casefold())]
+        if len(fits) != 1 or fits[0] in found.values():
+            return {}
+        found[value] = fits[0]
+    return {o: n for o, n in found.items() if o != n}

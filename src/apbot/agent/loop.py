@@ -246,6 +246,7 @@ class ClosedLoop(Checks):
                     self.missing[name] = raw  # look again once the rest is set
                     continue
                 variables = self.session.belief.model.variables
+            raw = self.session.renamed.get(name, {}).get(str(raw), raw)
             try:
                 inside[name] = normalise(variables[name], raw)
             except ValueProblem as exc:

@@ -119,6 +119,10 @@ class KeyMover:
             name
         ) in (MISSING, None):
             return False  # the key leaves the setting off the display: no stepping to see
+        # a lone key that cycles the programme is no stepping pair: choosing another programme
+        # moves the probed setting itself (to the new programme's start, or a fixed value)
+        # and resets others. A dial that turns both ways may well adjust the setting too
+        parents = {v.depends_on for v in model.variables.values() if v.depends_on}
         pairs = []
         for other, steps in model.features.items():
             for j, step in enumerate(steps):
@@ -126,6 +130,9 @@ class KeyMover:
                     continue
                 effects = {a: session.effect((other, j), a) for a in step.actions}
                 moving = {a: str(e) for a, e in effects.items() if e in ("next", "prev")}
+                choosing = step.variable in parents or step.set or step.reset
+                if choosing and len(set(moving.values())) < 2:
+                    continue
                 fits = moving and stuck.name not in moving and set(moving) <= session.offered
                 if fits and moving not in pairs:
                     pairs.append(moving)

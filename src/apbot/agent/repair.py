@@ -247,6 +247,19 @@ def drop_dependence(model: ApplianceModel, name: str, case: str) -> ApplianceMod
     return _rebuild(data)
 
 
+def set_start(model: ApplianceModel, name: str, case: str, value: Any) -> ApplianceModel:
+    """Choosing the programme ``case`` starts ``name`` at ``value`` (its case's initial)."""
+    data = _dump(model)
+    cases = data["variables"][name].get("cases", {})
+    own = cases.get(case)
+    if own is None:
+        raise RepairError(f"{name} has no case {case!r}")
+    if isinstance(own, list):
+        own = cases[case] = {"values": own}
+    own["initial"] = value
+    return _rebuild(data)
+
+
 def set_side_effect(
     model: ApplianceModel,
     feature: str,

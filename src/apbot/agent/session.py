@@ -56,6 +56,8 @@ class Session:
         self.discovered: set[str] = set()  # settings the belief lacked, found on the panel
         self.blind: set[str] = set()  # changed while the display was dark, not seen since
         self.guessed_initial: set[str] = set()  # their programmes' start values are guesses
+        # discrete values a walk showed spelt out (the belief's "lo" is the panel's "low")
+        self.renamed: dict[str, dict[str, str]] = {}
         self.contradicted: dict[str, Any] = {}  # last shown as a value the belief cannot hold
         self.unread: set[str] = set()  # due on the display, but shown as the belief cannot read
         self.ever_seen: set[str] = set()  # shown (or shown absent) at least once

@@ -10,7 +10,13 @@ from __future__ import annotations
 
 from typing import Any
 
-from apbot.agent.repair import RepairError, drop_dependence, insert_step, set_side_effect
+from apbot.agent.repair import (
+    RepairError,
+    drop_dependence,
+    insert_step,
+    set_side_effect,
+    set_start,
+)
 from apbot.agent.session import MISSING, UNREADABLE, Executed, Session
 
 __all__ = ["SideEffectLearner"]
@@ -63,6 +69,47 @@ class SideEffectLearner:
             session.episode.log("repair", f"could not change {feature}'s side effect: {exc}")
             return False
         session.adopt(new, f"{feature}: {done.action.name} {change} ({name})", done.pointer)
+        session.belief.set_value(name, observed)
+        return True
+
+    def programme_start(self, name: str, done: Executed, observed: Any) -> bool:
+        """A setting that depends on the programme, changed unseen by a programme choice the
+        belief says starts it at the case's first value, is first shown by a press believed
+        to leave it as it is (an entry key that only shows it) with another value of that
+        case: the programme starts it there (a manual's "starting power" column the reader
+        missed). Without it the planner keeps choosing the programme again to bring the
+        setting back to a start the appliance never gives (once per setting and case)."""
+        session = self.session
+        spec = session.belief.model.variables.get(name)
+        if spec is None or spec.depends_on is None or done.state_before is None:
+            return False
+        if name in session.discovered:
+            return False  # what it depends on is a guess
+        if name in done.shown_before and name not in done.unseen_before:
+            return False  # the display has shown it since it last changed
+        if observed in (MISSING, UNREADABLE, None) or done.refused:
+            return False
+        compiled = session.belief.compiled
+        before = compiled.value(done.state_before, name)
+        if before != session.belief.initial_value(name, done.state_before):
+            return False  # the belief did not put it at the programme's start
+        if name not in done.surprises or done.surprises[name][0] != before:
+            return False  # the press was believed to move it: its start is not what it shows
+        if observed not in session.domain_values(name):
+            return False
+        case = session.case(name)
+        if case is None or not session.budget.once("side", f"start:{name}:{case}"):
+            return False
+        try:
+            new = set_start(session.belief.model, name, case, observed)
+        except RepairError as exc:
+            session.episode.log("repair", f"could not change {name}'s start: {exc}")
+            return False
+        session.adopt(
+            new,
+            f"{name} starts at {observed} in {spec.depends_on} {case}",
+            session.belief.pointer(),
+        )
         session.belief.set_value(name, observed)
         return True
 
