@@ -88,6 +88,7 @@ def _compound_tail(text: Text, i: int) -> bool:
 
 
 _SCALE_WORDS = frozenset(w for scale in SCALES for w in scale) | LOWEST | HIGHEST
+_SCALE_WORDS |= frozenset(w for s in _SCALE_WORDS for w in SYNONYMS.get(s, ()))  # "slow-roast"
 
 
 _LEVEL_NOUNS = frozenset(stem(w) for w in ("speed", "level", "power", "setting", "intensity"))

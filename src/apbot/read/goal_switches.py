@@ -147,8 +147,12 @@ def self_switching_off(view: Model, text: Text, goal: Goal, claimed: set[int]) -
         return
     info = found[0]
     for k, token in enumerate(text.tokens):
-        if token.text != "itself" or k in claimed:
+        if k in claimed:
             continue
+        if token.text != "itself":
+            k = _off_when_done(text, k)
+            if k < 0:
+                continue
         by = 1 if text.word(k - 1) == "by" else 0  # "turn off by itself"
         verb = any(text.stems[j] in _SELF_OFF_VERBS for j in (k - 1 - by, k - 2 - by))
         off = "off" in (text.word(k + 1), text.word(k - 1 - by))
@@ -164,6 +168,22 @@ def self_switching_off(view: Model, text: Text, goal: Goal, claimed: set[int]) -
         goal[info.name] = info.off if prevented else info.on
         claimed.add(k)
         return
+
+
+_DONE = frozenset({"done", "finished", "ready", "over", "through"})
+
+
+def _off_when_done(text: Text, k: int) -> int:
+    """ "let it turn off afterwards", "switch off when it's done", "shut off at the end": an
+    "off" at ``k`` followed by words of finishing reads like "switches itself off". The
+    index one past the "off" (where "itself" would stand), or -1."""
+    if text.word(k) != "off":
+        return -1
+    after = [text.word(k + d) for d in range(1, 5)]
+    at_end = after[:2] == ["at", "the"] and after[2] in ("end", "finish")
+    ends = after[0] in ("afterwards", "afterward") or at_end
+    done = after[0] in ("when", "once") and any(w in _DONE for w in after[1:])
+    return k + 1 if ends or done else -1
 
 
 def entry_switches(view: Model, goal: Goal) -> None:

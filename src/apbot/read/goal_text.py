@@ -176,6 +176,8 @@ def negative_around(text: Text, k: int) -> bool:
         word = text.word(k + d)
         if word in CLAUSE_ENDS or word == ",":
             break
+        if word == "off" and text.word(k + d - 1) == "-":
+            continue  # "the auto-off", "the shut-off": a noun, not the switch said off
         if word in ("off", "disabled", "silenced", "muted"):
             return True
         if word == "on":

@@ -1,0 +1,127 @@
+"""Phrasings the goal parser missed on the second set of new categories, each checked on a
+model and sentences written for these tests (a sandwich press and a tabletop fan-heater no
+suite has): timers whose values are hours shown as "2H", a switch whose own name ends in
+"-off", "let it switch off afterwards", and everyday words for positions and levels."""
+
+from __future__ import annotations
+
+import pytest
+
+from apbot.model.load import loads_model
+from apbot.model.schema import ApplianceModel
+from apbot.read.goal import parse_instruction
+
+PRESS = """
+appliance: {id: press_1, category: sandwich_press, name: "Toastie TP-2 sandwich press", brand: T}
+controls:
+  - {id: power_button, kind: button, label: "POWER"}
+  - {id: side_button, kind: button, label: "SIDE"}
+  - {id: fan_button, kind: button, label: "FAN"}
+  - {id: lamp_button, kind: button, label: "LAMP"}
+  - {id: hours_button, kind: button, label: "HOURS"}
+  - {id: autooff_button, kind: button, label: "AUTO OFF"}
+  - {id: start_button, kind: button, label: "START"}
+variables:
+  power:
+    type: discrete
+    values: ["off", "on"]
+  side:
+    type: discrete
+    values: [both, lower, upper]
+  fan:
+    type: discrete
+    values: [low, mid, high]
+  lamp:
+    type: discrete
+    values: ["off", dim, bright]
+  hours:
+    type: discrete
+    values: ["off", "1", "3", "6"]
+    show: {"off": "", "1": "1H", "3": "3H", "6": "6H"}
+  auto_off:
+    type: discrete
+    values: ["off", "on"]
+    show: {"off": "", "on": "AUTO OFF"}
+  running:
+    type: discrete
+    values: ["off", "on"]
+actions:
+  press_power: {control: power_button}
+  press_side: {control: side_button}
+  press_fan: {control: fan_button}
+  press_lamp: {control: lamp_button}
+  press_hours: {control: hours_button}
+  press_autooff: {control: autooff_button}
+  press_start: {control: start_button}
+features:
+  power:
+    - {actions: [press_power], variable: power, effect: toggle}
+  side:
+    - {actions: [press_side], variable: side, effect: next}
+  fan:
+    - {actions: [press_fan], variable: fan, effect: next}
+  lamp:
+    - {actions: [press_lamp], variable: lamp, effect: next}
+  hours:
+    - {actions: [press_hours], variable: hours, effect: next}
+  auto_off:
+    - {actions: [press_autooff], variable: auto_off, effect: toggle}
+  start:
+    - {actions: [press_start], variable: running, effect: toggle}
+guards:
+  - {name: power off, when: {power: "off"}, only: [press_power], display: "", hide: true}
+display:
+  idle: ""
+"""
+
+
+@pytest.fixture(scope="module")
+def press() -> ApplianceModel:
+    return loads_model(PRESS)
+
+
+@pytest.mark.parametrize(
+    ("text", "hours"),
+    [("Stop after three hours", "3"), ("hours: 6 h", "6"), ("off in an hour", "1")],
+)
+def test_a_timer_of_hours_shown_as_codes_takes_a_duration(
+    press: ApplianceModel, text: str, hours: str
+) -> None:
+    assert parse_instruction(press, text)["hours"] == hours
+
+
+@pytest.mark.parametrize(
+    ("text", "state"),
+    [
+        ("Turn the automatic shut-off on", "on"),
+        ("switch on auto-off", "on"),
+        ("Toast it and let it switch off afterwards", "on"),
+        ("Toast it, and power off when it's done", "on"),
+        ("no auto-off please", "off"),
+        ("turn the auto-off off", "off"),
+    ],
+)
+def test_a_switch_named_off_is_on_unless_said_off(
+    press: ApplianceModel, text: str, state: str
+) -> None:
+    assert parse_instruction(press, text)["auto_off"] == state
+
+
+@pytest.mark.parametrize(
+    ("text", "name", "value"),
+    [
+        ("Heat the bottom side only", "side", "lower"),
+        ("just the top side", "side", "upper"),
+        ("fan on slow", "fan", "low"),
+        ("a medium fan", "fan", "mid"),
+        ("the lamp on full", "lamp", "bright"),
+    ],
+)
+def test_everyday_words_for_positions_and_levels(
+    press: ApplianceModel, text: str, name: str, value: str
+) -> None:
+    assert parse_instruction(press, text)[name] == value
+
+
+def test_a_slow_compound_grades_another_word(press: ApplianceModel) -> None:
+    assert "fan" not in parse_instruction(press, "slow-cook the cheese, both sides")
