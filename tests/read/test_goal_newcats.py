@@ -125,3 +125,80 @@ def test_everyday_words_for_positions_and_levels(
 
 def test_a_slow_compound_grades_another_word(press: ApplianceModel) -> None:
     assert "fan" not in parse_instruction(press, "slow-cook the cheese, both sides")
+
+
+SOUP = """
+appliance: {id: soup_1, category: soup_maker, name: "Potage SM-1 soup maker", brand: P}
+controls:
+  - {id: power_button, kind: button, label: "POWER"}
+  - {id: menu_button, kind: button, label: "MENU"}
+  - {id: cool_button, kind: button, label: "AFTER COOL"}
+  - {id: start_button, kind: button, label: "START"}
+variables:
+  power:
+    type: discrete
+    values: ["off", "on"]
+  programme:
+    type: discrete
+    values: [soup, chunky, compote, sauce]
+  after_cool:
+    type: discrete
+    values: ["off", "on"]
+  running:
+    type: discrete
+    values: ["off", "on"]
+actions:
+  press_power: {control: power_button}
+  press_menu: {control: menu_button}
+  press_cool: {control: cool_button}
+  press_start: {control: start_button}
+features:
+  power:
+    - {actions: [press_power], variable: power, effect: toggle}
+  programme:
+    - {actions: [press_menu], variable: programme, effect: next}
+  after_cool:
+    - {actions: [press_cool], variable: after_cool, effect: toggle}
+  start:
+    - {actions: [press_start], variable: running, effect: toggle}
+display:
+  idle: ""
+"""
+
+
+@pytest.fixture(scope="module")
+def soup() -> ApplianceModel:
+    return loads_model(SOUP)
+
+
+@pytest.mark.parametrize(
+    ("text", "programme"),
+    [
+        ("A chunky soup please", "chunky"),
+        ("Pea soup on the chunky setting", "chunky"),
+        ("Tomato soup", "soup"),
+    ],
+)
+def test_a_value_named_like_the_appliance_gives_way_to_another_said(
+    soup: ApplianceModel, text: str, programme: str
+) -> None:
+    assert parse_instruction(soup, text)["programme"] == programme
+
+
+def test_keep_it_with_a_word_of_the_switchs_warmth(soup: ApplianceModel) -> None:
+    assert parse_instruction(soup, "Compote, and keep it cold once it's done")["after_cool"] == "on"
+
+
+@pytest.mark.parametrize(
+    ("text", "running"),
+    [
+        ("Sauce, and switch it on to run", "on"),
+        ("Chunky soup, then set it running", "on"),
+        ("Sauce, but leave it stopped until I'm back", "off"),
+        ("Soup programme; keep it paused for now", "off"),
+    ],
+)
+def test_running_said_with_other_verbs(soup: ApplianceModel, text: str, running: str) -> None:
+    goal = parse_instruction(soup, text)
+    assert goal["running"] == running
+    assert "power" not in goal

@@ -78,7 +78,36 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
                 score *= 0.5  # "air-dry", "sterilise-and-dry": the end of another word
             matches.append(_Match(var, value, i, end, score))
     matches.sort(key=lambda m: (-m.score, m.start))
-    return _prefer_heads(matches)
+    return _prefer_specific(_prefer_heads(matches), text, itself)
+
+
+def _prefer_specific(matches: list[_Match], text: Text, itself: set[str]) -> list[_Match]:
+    """A value named like the appliance itself (YOGURT on a yogurt maker) is what everything
+    it makes is called: "Greek yogurt", "soy yogurt on the vegan setting" name the other
+    value of that setting said beside it."""
+    best: dict[str, _Match] = {}
+    for match in matches:
+        best.setdefault(match.var, match)
+    changed = False
+    for var, first in best.items():
+        if not all(text.stems[k] in itself for k in range(first.start, first.end)):
+            continue
+        other = next(
+            (
+                m
+                for m in matches
+                if m.var == var
+                and m.value != first.value
+                and not all(text.stems[k] in itself for k in range(m.start, m.end))
+            ),
+            None,
+        )
+        if other is not None:
+            other.score = first.score + 0.01
+            changed = True
+    if changed:
+        matches.sort(key=lambda m: (-m.score, m.start))
+    return matches
 
 
 def _compound_tail(text: Text, i: int) -> bool:

@@ -42,6 +42,10 @@ def switches(
             weight = info.vocab.get(key, 0.0)
             if weight <= 0 and _abbreviated(text.stems[k], own):
                 key, weight = text.stems[k], 1.0  # "tablets" for a TABS key
+            if weight <= 0:
+                warmth = _kept_warmth(text, k, own)
+                if warmth:  # "keep it chilled" for AFTER COOL
+                    key, weight = concept(warmth), 1.0
             if weight <= 0 or generic(key):
                 continue
             if shadowed and (text.stems[k] in own or key in own_concepts(info)):
@@ -117,6 +121,14 @@ def _kept(text: Text, k: int, own: set[str]) -> bool:
         return False
     said = rest | {s for word in rest for s in _WARMTH.get(word, ())}
     return any(text.stems[j] in said for j in range(k + 1, min(k + 4, len(text.tokens))))
+
+
+def _kept_warmth(text: Text, k: int, own: set[str]) -> str:
+    """ "keep it chilled", "keep them cold": a word of the warmth of one of the switch's own
+    words (AFTER COOL), said after "keep"; that own word, or ""."""
+    if not any(text.stems[j] == stem("keep") for j in range(max(0, k - 3), k)):
+        return ""
+    return next((word for word in own if text.stems[k] in _WARMTH.get(word, ())), "")
 
 
 _WARMTH = {
