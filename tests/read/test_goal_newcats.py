@@ -202,3 +202,82 @@ def test_running_said_with_other_verbs(soup: ApplianceModel, text: str, running:
     goal = parse_instruction(soup, text)
     assert goal["running"] == running
     assert "power" not in goal
+
+
+CUSHION = """
+appliance: {id: cushion_1, category: heated_cushion, name: "Cosy HC-5 heated cushion", brand: C}
+controls:
+  - {id: power_button, kind: button, label: "POWER"}
+  - {id: area_button, kind: button, label: "AREA"}
+  - {id: up_button, kind: button, label: "+"}
+  - {id: down_button, kind: button, label: "-"}
+  - {id: hours_button, kind: button, label: "OFF TIMER"}
+  - {id: lock_button, kind: button, label: "LOCK"}
+variables:
+  power:
+    type: discrete
+    values: ["off", "on"]
+  area:
+    type: discrete
+    values: [back, foot]
+  heat:
+    type: numeric
+    depends_on: area
+    cases:
+      back: {ranges: [[1, 5, 1]], initial: 2}
+      foot: {ranges: [[1, 5, 1]], initial: 2}
+  off_timer:
+    type: numeric
+    unit: h
+    ranges: [[1, 8, 1]]
+  key_lock:
+    type: discrete
+    values: ["off", "on"]
+actions:
+  press_power: {control: power_button}
+  press_area: {control: area_button}
+  press_up: {control: up_button}
+  press_down: {control: down_button}
+  press_hours: {control: hours_button}
+  press_lock: {control: lock_button}
+features:
+  power:
+    - {actions: [press_power], variable: power, effect: toggle}
+  area:
+    - {actions: [press_area], variable: area, effect: next}
+  heat:
+    - actions: [press_up, press_down]
+      variable: heat
+      effect: {press_up: next, press_down: prev}
+  off_timer:
+    - {actions: [press_hours], variable: off_timer, effect: next}
+  key_lock:
+    - {actions: [press_lock], variable: key_lock, effect: toggle}
+display:
+  idle: ""
+"""
+
+
+@pytest.fixture(scope="module")
+def cushion() -> ApplianceModel:
+    return loads_model(CUSHION)
+
+
+@pytest.mark.parametrize(
+    ("text", "area", "heat"),
+    [
+        ("the back area at 4", "back", 4),
+        ("My feet are cold: the foot part on maximum", "foot", 5),
+        ("Feet on the lowest, please", "foot", 1),
+    ],
+)
+def test_a_number_or_superlative_after_a_zone_is_that_zones_level(
+    cushion: ApplianceModel, text: str, area: str, heat: int
+) -> None:
+    goal = parse_instruction(cushion, text)
+    assert (goal["area"], goal["heat"]) == (area, heat)
+
+
+def test_a_negation_does_not_reach_over_and_a_new_verb(cushion: ApplianceModel) -> None:
+    goal = parse_instruction(cushion, "Switch off after 3 hours and lock the keys")
+    assert goal == {"off_timer": 3, "key_lock": "on"}

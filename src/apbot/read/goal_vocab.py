@@ -22,6 +22,9 @@ _SPELLING = (
 )
 
 
+_IRREGULAR = {"feet": "foot", "teeth": "tooth", "children": "child", "men": "man"}
+
+
 _CAMEL = re.compile(r"(?<=[a-z])(?=[A-Z][a-z])")
 
 
@@ -46,6 +49,7 @@ def stem(word: str) -> str:
     w = word.casefold()
     if w.endswith("'s"):
         w = w[:-2]  # the clock's hour
+    w = _IRREGULAR.get(w, w)  # "feet" for a FOOT zone
     for pattern, replacement in _SPELLING:
         w = pattern.sub(replacement, w)
     if len(w) <= 3:
