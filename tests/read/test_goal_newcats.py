@@ -21,8 +21,12 @@ controls:
   - {id: hours_button, kind: button, label: "HOURS"}
   - {id: autooff_button, kind: button, label: "AUTO OFF"}
   - {id: start_button, kind: button, label: "START"}
+  - {id: boost_button, kind: button, label: "FAN BOOST"}
 variables:
   power:
+    type: discrete
+    values: ["off", "on"]
+  fan_boost:
     type: discrete
     values: ["off", "on"]
   side:
@@ -53,9 +57,12 @@ actions:
   press_hours: {control: hours_button}
   press_autooff: {control: autooff_button}
   press_start: {control: start_button}
+  hold_boost: {control: boost_button, skill: hold, seconds: 3}
 features:
   power:
     - {actions: [press_power], variable: power, effect: toggle}
+  fan_boost:
+    - {actions: [hold_boost], variable: fan_boost, effect: toggle}
   side:
     - {actions: [press_side], variable: side, effect: next}
   fan:
@@ -121,6 +128,20 @@ def test_everyday_words_for_positions_and_levels(
     press: ApplianceModel, text: str, name: str, value: str
 ) -> None:
     assert parse_instruction(press, text)[name] == value
+
+
+@pytest.mark.parametrize(
+    ("text", "goal"),
+    [
+        ("the fan on high, the lamp dim", {"fan": "high", "lamp": "dim"}),
+        ("a medium fan with the fan boost on", {"fan": "mid", "fan_boost": "on"}),
+        ("fan boost please", {"fan_boost": "on"}),
+    ],
+)
+def test_a_word_shared_with_a_level_given_a_value_is_not_the_switch(
+    press: ApplianceModel, text: str, goal: dict[str, str]
+) -> None:
+    assert parse_instruction(press, text) == goal
 
 
 def test_a_slow_compound_grades_another_word(press: ApplianceModel) -> None:

@@ -70,6 +70,9 @@ def switches(
                 continue
             if any(text.word(k - d) in ("leave", "leaving") for d in range(1, 4)):
                 left = True
+            shared = len(own) > 1 and _names_a_setting(view, goal, text.stems[k])
+            if shared and not phrase_here(text, k, own - {text.stems[k]}):
+                continue  # "medium mist": the MIST level, not the WARM MIST switch
             if best is None or weight > best[0]:
                 best = (weight, k)
         if best is None or left:
@@ -91,6 +94,15 @@ def switches(
         if where is not None:
             where[name] = k
         claimed.add(k)
+
+
+def _names_a_setting(view: Model, goal: Goal, word: str) -> bool:
+    """The word is an own word of a setting of several values that the goal already has
+    (MIST of the mist level, given "mist 2")."""
+    return any(
+        info.role == "setting" and name in goal and word in own_stems(info)
+        for name, info in view.infos.items()
+    )
 
 
 _LOCK_WORDS = frozenset(
