@@ -302,3 +302,88 @@ def test_a_number_or_superlative_after_a_zone_is_that_zones_level(
 def test_a_negation_does_not_reach_over_and_a_new_verb(cushion: ApplianceModel) -> None:
     goal = parse_instruction(cushion, "Switch off after 3 hours and lock the keys")
     assert goal == {"off_timer": 3, "key_lock": "on"}
+
+
+LOOM = """
+appliance: {id: loom_1, category: band_loom, name: "Weft BL-8 band loom", brand: W}
+controls:
+  - {id: k1, kind: key, label: "1"}
+  - {id: k2, kind: key, label: "2"}
+  - {id: ok_button, kind: button, label: "OK"}
+  - {id: wider_button, kind: button, label: "BAND +"}
+  - {id: narrower_button, kind: button, label: "BAND -"}
+  - {id: shuttle_button, kind: button, label: "SHUTTLE"}
+variables:
+  pattern:
+    type: numeric
+    ranges: [[1, 12, 1]]
+    entry: {format: number, max_digits: 2, overflow: shift, other_keys: clear, shows: typed}
+  band_width:
+    type: numeric
+    unit: mm
+    ranges: [[5, 40, 2.5]]
+  shuttle:
+    type: discrete
+    values: [up, down]
+actions:
+  press_1: {control: k1, digit: 1}
+  press_2: {control: k2, digit: 2}
+  press_ok: {control: ok_button}
+  press_wider: {control: wider_button}
+  press_narrower: {control: narrower_button}
+  press_shuttle: {control: shuttle_button}
+features:
+  pattern:
+    - actions: [press_1, press_2, press_ok]
+      variable: pattern
+      effect: {press_1: digit, press_2: digit, press_ok: none}
+  band_width:
+    - actions: [press_wider, press_narrower]
+      variable: band_width
+      effect: {press_wider: next, press_narrower: prev}
+  shuttle:
+    - {actions: [press_shuttle], variable: shuttle, effect: toggle}
+display:
+  idle: "{pattern}"
+"""
+
+LOOM_MANUAL = """
+PATTERN CHART
+
+  No.   Pattern            Suits                    Band (mm)
+  ---   ----------------   ----------------------   ---------
+  01    Plain weave        belts, straps            12.5
+  02    Twill              bag handles              10.0
+  03    Herringbone        guitar straps            25.0
+  04    Chevron            bookmarks                12.5
+  11    Diamond eye        trims                    7.5
+  12    Checkerboard       lanyards                 10.0
+"""
+
+
+@pytest.fixture(scope="module")
+def loom() -> ApplianceModel:
+    return loads_model(LOOM)
+
+
+@pytest.mark.parametrize(
+    ("text", "goal"),
+    [
+        ("Herringbone, 20 mm wide", {"pattern": 3, "band_width": 20}),
+        ("a chevron band", {"pattern": 4}),
+        ("Set up the checkerboard", {"pattern": 12}),
+        ("the diamond eye pattern, 10 mm", {"pattern": 11, "band_width": 10}),
+    ],
+)
+def test_a_numbered_chart_names_the_numbers_of_the_setting_it_heads(
+    loom: ApplianceModel, text: str, goal: dict[str, object]
+) -> None:
+    assert parse_instruction(loom, text, LOOM_MANUAL) == goal
+
+
+def test_a_measure_in_a_chart_is_not_a_code(loom: ApplianceModel) -> None:
+    from apbot.read.goal_manual import coded_names
+
+    names = coded_names(loom, LOOM_MANUAL)
+    assert (("pattern", 12, "Checkerboard")) in names
+    assert all(not name[2][:1].isdigit() for name in names)

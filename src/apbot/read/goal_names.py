@@ -48,6 +48,8 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
             end, quality = found
             if negated_before(text, i) or turned_off_after(text, end):
                 continue
+            if text.word(i) in ("up", "down") and text.word(i - 1) in _PARTICLE_VERBS:
+                continue  # "set up the buttonhole", "warm up": a verb's particle, not UP
             if text.word(i - 1) in ("stay", "stays", "remain", "remains"):
                 continue  # "so the bottles stay dry": a state of the load, not the DRY cycle
             if quality < 1.0 and text.stems[end - 1] in itself and i not in verbs:
@@ -108,6 +110,11 @@ def _prefer_specific(matches: list[_Match], text: Text, itself: set[str]) -> lis
     if changed:
         matches.sort(key=lambda m: (-m.score, m.start))
     return matches
+
+
+_PARTICLE_VERBS = frozenset(
+    {"set", "warm", "heat", "speed", "slow", "cool", "calm", "wind", "shut", "settle", "sit"}
+)
 
 
 def _compound_tail(text: Text, i: int) -> bool:

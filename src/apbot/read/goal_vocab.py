@@ -109,6 +109,8 @@ _GROUPS: tuple[tuple[str, ...], ...] = (
     ("auto", "automatic", "automatically"),
     ("swing", "sweep", "oscillate", "oscillation", "oscillating"),
     ("rotate", "rotation", "rotisserie", "spit"),
+    ("width", "wide", "widen", "narrow"),
+    ("length", "long", "lengthen"),
 )
 _CANON: dict[str, str] = {}
 for _group in _GROUPS:
