@@ -123,6 +123,7 @@ class Checks:
             e
             for e in executed
             if e.variable == name
+            and not e.typed  # the entry as typed says nothing of how the value is shown
             and e.seen is not None
             and e.seen.text.strip()
             and (e.seen.unknown or not e.seen.showing(name))

@@ -72,6 +72,7 @@ class Executed:
     state_before: State | None = None  # the belief's state before the action
     unseen_before: frozenset[str] = frozenset()  # changed unseen (or guessed) before the action
     shown_before: dict[str, Any] = field(default_factory=dict)  # last shown, before the action
+    typed: bool = False  # the display showed the keypad entry as typed, not the value
 
     def observed(self, name: str) -> Any:
         """The value of ``name`` the display showed after this action (MISSING if none)."""

@@ -217,8 +217,12 @@ class ClosedLoop(Checks):
         if not self.config.button_policy:
             return self.greedy.execute_greedily(macro)
         executed = []
-        for action in macro.actions:
-            executed.append(self.session.press(action))
+        actions = self.session.belief.model.actions
+        for action, after in zip(macro.actions, (*macro.actions[1:], None), strict=True):
+            # a digit the plan follows with another is on its way to the value: the entry
+            # is judged at its last digit
+            more = after is not None and getattr(actions.get(after.name), "digit", None) is not None
+            executed.append(self.session.press(action, typing_on=more))
             if self.config.closed_loop and executed[-1].surprising:
                 break  # not as predicted: pressing on would only make things worse
         return executed

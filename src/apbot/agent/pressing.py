@@ -15,21 +15,24 @@ from apbot.agent.executed import Executed
 from apbot.agent.looking import selecting
 from apbot.agent.perception import MISSING, UNREADABLE, Seen
 from apbot.agent.quantities import magnitude
-from apbot.model.display import display_value
+from apbot.model.display import display_value, typed_text
 from apbot.model.domain import ValueProblem, parse_value
-from apbot.model.schema import ApplianceModel, DiscreteVariable, TimeVariable
+from apbot.model.schema import ApplianceModel, DiscreteVariable, Entry, TimeVariable
 from apbot.plan.plan import PlannedAction
 from apbot.sim.compiled import State
 
 if TYPE_CHECKING:
     from apbot.agent.session import Session
 
-__all__ = ["lights_up", "locks", "press", "runs", "silent", "suspect_unread"]
+__all__ = ["lights_up", "locks", "press", "runs", "silent", "suspect_unread", "typing"]
 
 
-def press(session: Session, action: PlannedAction, exploring: bool = False) -> Executed:
+def press(
+    session: Session, action: PlannedAction, exploring: bool = False, typing_on: bool = False
+) -> Executed:
     """Perform ``action`` on the appliance and on the belief; the belief then follows what
-    the display shows, and whatever contradicted its prediction is kept as a surprise."""
+    the display shows, and whatever contradicted its prediction is kept as a surprise
+    (``typing_on``: the plan types more digits of this entry next, see :func:`typing`)."""
     before_state = session.belief.state
     before = session.belief.pointer()
     before_text = session.last.text
@@ -106,7 +109,21 @@ def press(session: Session, action: PlannedAction, exploring: bool = False) -> E
     for name in seen.absent:
         if session.belief.value(name) is not None:
             surprises[name] = (session.belief.value(name), None)
-    if variable and variable in expected.values and variable not in seen.shown():
+    typed = (
+        typing_on
+        and variable is not None
+        and variable not in seen.values
+        and variable not in seen.candidates
+        and set(surprises) <= {variable}  # a display that surprised elsewhere is judged whole
+        and typing(session, variable, feedback.text)
+    )
+    if variable is not None and typed:
+        # digits on their way to a value: a keypad that shows the entry as it is typed says
+        # nothing yet of the value (nor of its range); the check waits for the entry to end
+        seen.outside.pop(variable, None)
+        seen.absent.discard(variable)
+        surprises.pop(variable, None)
+    if variable and not typed and variable in expected.values and variable not in seen.shown():
         # expected on the display, and it is dark (or shows what the belief cannot read)
         surprises[variable] = (predicted, UNREADABLE if seen.unknown else None)
         if seen.unknown:
@@ -172,7 +189,51 @@ def press(session: Session, action: PlannedAction, exploring: bool = False) -> E
         before_state,
         unseen,
         shown_before,
+        typed,
     )
+
+
+def typing(session: Session, variable: str, text: str) -> bool:
+    """Whether ``text`` shows the digits being typed into ``variable``'s keypad entry in
+    place of its value. Real keypads print an entry as it is typed ("SET 5" on the way to
+    56) whatever the manual said, filling it from the right (a clock typed 1, 7 shows
+    ``00:17``) or from the left (``17:--``), and some keep the last fill that made a time
+    while the digits typed since make none (``00:17`` after 1, 7, 0). The belief in the
+    middle of typing (a non-empty buffer on the setting's step) that finds such a fill as a
+    word of the display has seen no surprise yet."""
+    spec = session.belief.model.variables.get(variable)
+    entry = getattr(spec, "entry", None)
+    buffer = session.belief.state.buffer
+    if entry is None or not buffer:
+        return False
+    pointer = session.belief.pointer()
+    if pointer is None or session.step_variable(pointer) != variable:
+        return False
+    return any(re.search(pattern, text) for pattern in _fills(entry, buffer))
+
+
+def _fills(entry: Entry, buffer: str) -> list[str]:
+    """Patterns of the words a keypad may show while ``buffer`` is typed: the digits shifted
+    in from the right (``typed_text``: ``00:17``) or laid in from the left, raw (``170``) or
+    in the entry's clock groups with the rest blank (``17:0-``); and, while the digits shifted
+    in make no time (``01:70``), the last fill that made one (``00:17``)."""
+    words = {typed_text(entry, buffer), buffer}
+    if ":" in entry.format:
+        groups = {"h:mm": (1, 2), "hh:mm:ss": (2, 2, 2)}.get(entry.format, (2, 2))
+        laid, rest = [], buffer
+        for width in groups:
+            if rest:
+                laid.append(rest[:width])
+                rest = rest[width:]
+        words.add(":".join(laid))
+        for end in range(len(buffer), 0, -1):
+            shifted = typed_text(entry, buffer[:end])
+            if all(int(part) < 60 for part in shifted.split(":")[1:]):
+                words.add(shifted)
+                break
+    # a word of its own: digits glued to a word ("PL7") are the value printed another way;
+    # blanks still to fill ("17:0-", "25_") may follow
+    return [rf"(?<![\w:.]){re.escape(word)}(?![^\W_]|\.\d|:\d)" for word in sorted(words)]
 
 
 def lights_up(session: Session, before: State, variable: str, before_text: str, text: str) -> bool:

@@ -77,11 +77,13 @@ class Session:
         self.last_seen = self.perceive(self.last, self.belief.expected())
         self.sync(self.last_seen)
 
-    def press(self, action: PlannedAction, exploring: bool = False) -> Executed:
+    def press(
+        self, action: PlannedAction, exploring: bool = False, typing_on: bool = False
+    ) -> Executed:
         """Perform ``action`` on the appliance and on the belief; the belief then follows what
         the display shows, and whatever contradicted its prediction is kept as a surprise
         (:func:`apbot.agent.pressing.press`)."""
-        return press(self, action, exploring)
+        return press(self, action, exploring, typing_on)
 
     def planned(self, action: str) -> PlannedAction:
         spec = self.belief.model.actions[action]

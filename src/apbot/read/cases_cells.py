@@ -52,6 +52,12 @@ def _value_span(values: list[str], cell: str) -> list[str] | None:
     return values[a : b + 1] if a < b else None
 
 
+def _alone(item: str, known: list[str]) -> str:
+    """ "OFF only", "only ECO": the one value a row allows, said with "only" around it."""
+    bare = re.sub(r"^only\s+|\s+only$", "", item)
+    return bare if bare != item and (bare in known or not known) else item
+
+
 def _case(spec: dict[str, Any], cell: str) -> Any:
     kind = spec.get("type")
     if kind == "discrete":
@@ -67,6 +73,7 @@ def _case(spec: dict[str, Any], cell: str) -> Any:
         items = [
             _norm(re.sub(r"\(.*?\)", "", i)) for i in re.split(r"\s*(?:,|/|·|\bor\b)\s*", cell)
         ]
+        items = [_alone(i, known) for i in items]
         items = [i for i in items if i and i not in ("—", "-", "–", "n/a") and len(i) <= 24]
         return {"values": list(dict.fromkeys(items))} if items else None
     ranges = spec.get("ranges") or []

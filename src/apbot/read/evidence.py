@@ -58,6 +58,7 @@ from apbot.read.values import (
     find_two_steps,
     seconds,
 )
+from apbot.read.values_pieces import find_amount_pieces
 
 
 class EvidenceReader(ListReader, AnywhereReader):
@@ -206,7 +207,8 @@ class EvidenceReader(ListReader, AnywhereReader):
                 if not units[k].cells:
                     window.append(k)
             names = tuple(self.labels[t].text.lower() for t in tokens if t in self.labels)
-            two = find_two_steps([units[k].text for k in window], names)
+            texts = [units[k].text for k in window]
+            two = find_two_steps(texts, names) or find_amount_pieces(texts)
             if two and _fits(two[0][0].unit, tokens):
                 ev.ranges, ev.range_at = two[0], window[two[1]]
                 break

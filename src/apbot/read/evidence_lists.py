@@ -292,7 +292,7 @@ class ListReader:
                 if items and len(items) >= 3:
                     return items
             return None
-        m = re.match(r"\s*([^:.;]{3,50}):\s*(.+)", unit.text)
+        m = re.match(r"\s*([^:.;]{3,50}):(?!\d)\s*(.+)", unit.text)  # ("TIMER 0:10": a time)
         if not m or not self._names_setting(words(m.group(1)), tokens):
             return None
         found = find_list(unit.text)

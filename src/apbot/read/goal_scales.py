@@ -18,7 +18,7 @@ from apbot.read.goal_values import (
     zone_case,
 )
 from apbot.read.goal_view import Goal, Model, VarInfo, domain_values
-from apbot.read.goal_vocab import HIGHEST, LOWEST, SCALES, concept, stem
+from apbot.read.goal_vocab import HIGHEST, LETTER_WORDS, LOWEST, SCALES, concept, stem
 
 
 def superlatives(
@@ -175,12 +175,19 @@ def _ladder(values: list[Any]) -> list[Any]:
 
 
 def _scaled(values: list[Any]) -> list[Any]:
-    """Values that are words of one scale ("low", "medium", "high"), in the scale's order."""
+    """Values that are words of one scale ("low", "medium", "high", or as a display shortens
+    them: "LO", "MED", "HI"), in the scale's order."""
     for scale in SCALES:
-        found = [v for v in values if str(v).casefold() in scale]
+        found = [v for v in values if _scale_word(v) in scale]
         if len(found) >= 2:
-            return sorted(found, key=lambda v: scale.index(str(v).casefold()))
+            return sorted(found, key=lambda v: scale.index(_scale_word(v)))
     return []
+
+
+def _scale_word(value: Any) -> str:
+    """The scale's word a value stands for: "lo" is low, "med" medium (else the value)."""
+    word = str(value).casefold()
+    return LETTER_WORDS.get(word, (word,))[0] if len(word) > 1 else word
 
 
 def _ordered_values(values: list[Any]) -> list[Any]:

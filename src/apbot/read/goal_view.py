@@ -22,6 +22,7 @@ from apbot.model.schema import (
     Step,
     TimeVariable,
 )
+from apbot.read.goal_legends import add_setting_words
 from apbot.read.goal_manual import coded_names, legend_words, title_nouns
 from apbot.read.goal_values import (
     OFF_WORDS,
@@ -259,9 +260,11 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         if stem(w) not in said and not any(concept(w) in i.vocab for i in infos.values())
     }  # "switch the dispenser on": not a setting's or a value's word
     keys: dict[str, list[str]] = {}
+    set_keys: dict[str, list[str]] = {}  # the settings' keys, for what their legends call them
     for _feature, _index, step in _steps_of(model):
-        if step.variable in infos and infos[step.variable].role == "switch":
-            keys.setdefault(step.variable, []).extend(_control_labels(model, step.actions))
+        if step.variable in infos and infos[step.variable].role in ("switch", "setting"):
+            kind = keys if infos[step.variable].role == "switch" else set_keys
+            kind.setdefault(step.variable, []).extend(_control_labels(model, step.actions))
     legends = legend_words(model, manual, keys)
     shared = {w for a, b in itertools.combinations(legends.values(), 2) for w in a & b}
     taken = {key for info in infos.values() for key in info.vocab}
@@ -270,6 +273,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
             key = concept(word)
             if word not in STOP_WORDS and key not in taken:
                 infos[name].vocab[key] = 0.5  # a word only this key's legend in the manual has
+    add_setting_words(infos, manual, set_keys)
     named: dict[str, list[tuple[Any, str]]] = {}
     for coded, value, label in coded_names(model, manual):
         if parse_quantity(label) is not None:

@@ -139,6 +139,10 @@ def find_labels(manual: Manual, tokens: list[str]) -> dict[str, Label]:
                 if any(symbol in u.text for u in manual.units):
                     best = symbol
                     break
+        if best_score == 1.0:
+            head = _row_head(manual, best, tokens)
+            if head is not None:
+                best, line = head
         labels[token] = Label(token, best, line)
     claimed = {label.text for label in labels.values()}
     for label in labels.values():
@@ -150,6 +154,42 @@ def find_labels(manual: Manual, tokens: list[str]) -> dict[str, Label]:
         if label.line is None and label.mentions:
             label.line = manual.units[label.mentions[0]].line
     return labels
+
+
+_ROW_HEAD = re.compile(
+    r"^\s*(?:[①-⑳❶-❿]\s*|\d{1,2}[.)]?\s+)?"  # "④ PUMP", "2. TIMER": a legend row's mark
+    r"([A-Z][A-Z0-9+&'./-]*(?: [A-Z0-9+&'./-]+)*)(?:\s{2,}|\s*:\s)\S"
+)  # a key's name in capitals heading a row, then its description after a gap or a colon
+
+
+def _row_head(manual: Manual, name: str, tokens: list[str]) -> tuple[str, int] | None:
+    """A key's name one word longer than its action's token, when only that longer name heads a
+    legend row and its description lists the short name as a value ("CUP SIZE   Each touch moves
+    to the next amount: CUP → MUG → POT"): CUP is then a value, the key is CUP SIZE."""
+    heads: dict[str, int] = {}
+    listed: set[str] = set()
+    said = re.compile(rf"(?<![A-Za-z0-9]){re.escape(name)}(?![A-Za-z0-9])")
+    for number, raw in enumerate(manual.lines, 1):
+        m = _ROW_HEAD.match(raw)
+        if m is not None:
+            heads.setdefault(m.group(1), number)
+            if said.search(raw, m.end(1)):
+                listed.add(m.group(1))
+    if name in heads:
+        return None
+    short = words(name)
+    longer = [
+        (head, at)
+        for head, at in heads.items()
+        if len(words(head)) == len(short) + 1
+        and words(head)[: len(short)] == short
+        and words(head)[-1].isalpha()
+        and words(head)[-1] not in ("on", "off")
+    ]
+    owned = {squash(t) for t in tokens}
+    if len(longer) != 1 or longer[0][0] not in listed or squash(longer[0][0]) in owned:
+        return None
+    return longer[0]
 
 
 def _mentions(units: list[Unit], token: str, label: Label) -> list[int]:
