@@ -10,8 +10,8 @@ from apbot.model.schema import NumericVariable, TimeVariable
 from apbot.model.values import format_hms, preview
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_fit import fit, number_for
-from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab
-from apbot.read.goal_values import unit_text
+from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab, said_before
+from apbot.read.goal_values import unit_text, zone_case
 from apbot.read.goal_view import Goal, Model, VarInfo, domain_values, own_stems
 from apbot.read.goal_vocab import concept, stem
 from apbot.read.numbers import Mention
@@ -113,6 +113,7 @@ def assign_mentions(
                 if not ((named or by) and mention.kind == "clock"):
                     continue  # a time of day sets the clock only when the clock is named
             score += _cue_bonus(info, text, mention) + (0.5 if by else 0.0)
+            score += _after_its_case(info, text, mention, goal)
             options.append((score, -info.order, mi, name, value))
     options.sort(key=lambda o: (-o[0], -o[1]))
     used: set[int] = set()
@@ -146,6 +147,15 @@ def assign_mentions(
                 where[exc.setting] = mention.start
                 outside.append(str(exc))
     return counting
+
+
+def _after_its_case(info: VarInfo, text: Text, mention: Mention, goal: Goal) -> float:
+    """ "the body zone at 6", "feet on 4": a bare number said right after a value of the
+    setting this one depends on (each zone keeps its own level) is that setting's."""
+    case = zone_case(info.var)
+    if mention.kind != "number" or not case or case not in goal:
+        return 0.0
+    return 1.0 if said_before(text, mention.start, stem(str(goal[case]))) else 0.0
 
 
 def _time_named(text: Text, mention: Mention) -> bool:

@@ -135,13 +135,14 @@ def _base_unit(dimension: str) -> str:
 
 
 def _show_quantity(info: VarInfo, mention: Mention) -> Any:
-    """A discrete value whose display text holds the mentioned quantity ("POT 600mL")."""
+    """A discrete value whose display text holds the mentioned quantity ("POT 600mL"), or
+    the duration (a timer whose values "1", "2", "4" show as "1H", "2H", "4H")."""
     show = info.var.show if isinstance(info.var.show, dict) else {}
-    if mention.kind != "quantity" or not show:
+    if mention.kind not in ("quantity", "duration") or not show:
         return None
     for value, text in show.items():
         for m in find_mentions(tokenize(text)):
-            same = m.kind == "quantity" and m.dimension == mention.dimension
+            same = m.kind == mention.kind and m.dimension == mention.dimension
             if same and abs(m.value - mention.value) < 1e-6:
                 return value
     return None

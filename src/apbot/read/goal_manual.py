@@ -40,12 +40,29 @@ MAX_WORDS = 5
 
 
 def _key(text: str) -> str:
-    return re.sub(r"[\s\-_.]", "", text.casefold())
+    key = re.sub(r"[\s\-_.]", "", text.casefold())
+    return key.lstrip("0") or key if key.isdigit() else key  # "01" in a chart is stitch 1
 
 
-def _coded_variables(model: ApplianceModel) -> dict[str, dict[str, Any]]:
+def _headed(name: str, var: NumericVariable, headings: frozenset[str]) -> bool:
+    """The setting's name (or label) heads a column of a chart: "Stitch" for ``stitch``."""
+    words = {w for w in re.split(r"[\s_]+", f"{name} {var.label or ''}".casefold()) if w}
+    return len(words) == 1 and bool(words & headings)
+
+
+def _headings(manual: str) -> frozenset[str]:
+    """One-word column headings that stand right after a "No." heading ("No.  Stitch  Use"):
+    the thing a numbered chart lists."""
+    found = re.findall(r"(?im)^\s*\|?\s*(?:No\.?|Nr\.?|#)\s*(?:\||\s{2,})\s*([A-Za-z]+)\b", manual)
+    return frozenset(word.casefold() for word in found)
+
+
+def _coded_variables(
+    model: ApplianceModel, headed: frozenset[str] = frozenset()
+) -> dict[str, dict[str, Any]]:
     """Discrete variables whose values are mostly codes, and unitless whole-number settings
-    named for a programme (a menu the reader took for a number; not a count):
+    named for a programme (a menu the reader took for a number; not a count) or named by a
+    chart's column heading (``headed``: "No. | Stitch" over the stitch numbers):
     name -> {normalised value: value}."""
     found: dict[str, dict[str, Any]] = {}
     for name, var in model.variables.items():
@@ -53,7 +70,7 @@ def _coded_variables(model: ApplianceModel) -> dict[str, dict[str, Any]]:
             # a menu numbered 1-15 the reader took for a number: its numbers are codes
             numbers = all_values(var)
             whole = all(float(v) == int(float(v)) for v in numbers)
-            named = _PROGRAMME.search(f"{name} {var.label or ''}")
+            named = _PROGRAMME.search(f"{name} {var.label or ''}") or _headed(name, var, headed)
             if var.unit or not whole or not 2 <= len(numbers) <= 99 or not named:
                 continue
             found[name] = {str(int(float(v))): int(float(v)) for v in numbers}
@@ -117,6 +134,8 @@ def _pairs(block: list[list[str]], variables: dict[str, dict[str, Any]]) -> list
     "Approx. RH  70 %  60 %")."""
 
     def code(cell: str) -> bool:
+        if re.search(r"\d[.,]\d", cell):
+            return False  # "2.5" mm is a measure, not code 25
         return bool(_CODE.fullmatch(cell)) or any(_key(cell) in v for v in variables.values())
 
     rows = [(r[i], r[i + 1]) for r in block for i in range(len(r) - 1) if code(r[i])]
@@ -156,7 +175,7 @@ def _named(pairs: list[Pair], values: dict[str, Any], name: str) -> list[tuple[s
 
 def coded_names(model: ApplianceModel, manual: str) -> list[tuple[str, Any, str]]:
     """(variable, value, name) for each coded value the manual names."""
-    variables = _coded_variables(model)
+    variables = _coded_variables(model, _headings(manual) if manual else frozenset())
     if not variables or not manual:
         return []
     out: list[tuple[str, Any, str]] = []

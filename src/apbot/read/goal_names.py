@@ -48,6 +48,8 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
             end, quality = found
             if negated_before(text, i) or turned_off_after(text, end):
                 continue
+            if text.word(i) in ("up", "down") and text.word(i - 1) in _PARTICLE_VERBS:
+                continue  # "set up the buttonhole", "warm up": a verb's particle, not UP
             if text.word(i - 1) in ("stay", "stays", "remain", "remains"):
                 continue  # "so the bottles stay dry": a state of the load, not the DRY cycle
             if quality < 1.0 and text.stems[end - 1] in itself and i not in verbs:
@@ -78,7 +80,41 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
                 score *= 0.5  # "air-dry", "sterilise-and-dry": the end of another word
             matches.append(_Match(var, value, i, end, score))
     matches.sort(key=lambda m: (-m.score, m.start))
-    return _prefer_heads(matches)
+    return _prefer_specific(_prefer_heads(matches), text, itself)
+
+
+def _prefer_specific(matches: list[_Match], text: Text, itself: set[str]) -> list[_Match]:
+    """A value named like the appliance itself (YOGURT on a yogurt maker) is what everything
+    it makes is called: "Greek yogurt", "soy yogurt on the vegan setting" name the other
+    value of that setting said beside it."""
+    best: dict[str, _Match] = {}
+    for match in matches:
+        best.setdefault(match.var, match)
+    changed = False
+    for var, first in best.items():
+        if not all(text.stems[k] in itself for k in range(first.start, first.end)):
+            continue
+        other = next(
+            (
+                m
+                for m in matches
+                if m.var == var
+                and m.value != first.value
+                and not all(text.stems[k] in itself for k in range(m.start, m.end))
+            ),
+            None,
+        )
+        if other is not None:
+            other.score = first.score + 0.01
+            changed = True
+    if changed:
+        matches.sort(key=lambda m: (-m.score, m.start))
+    return matches
+
+
+_PARTICLE_VERBS = frozenset(
+    {"set", "warm", "heat", "speed", "slow", "cool", "calm", "wind", "shut", "settle", "sit"}
+)
 
 
 def _compound_tail(text: Text, i: int) -> bool:
@@ -88,6 +124,7 @@ def _compound_tail(text: Text, i: int) -> bool:
 
 
 _SCALE_WORDS = frozenset(w for scale in SCALES for w in scale) | LOWEST | HIGHEST
+_SCALE_WORDS |= frozenset(w for s in _SCALE_WORDS for w in SYNONYMS.get(s, ()))  # "slow-roast"
 
 
 _LEVEL_NOUNS = frozenset(stem(w) for w in ("speed", "level", "power", "setting", "intensity"))

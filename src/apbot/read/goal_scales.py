@@ -6,7 +6,7 @@ from __future__ import annotations
 from typing import Any
 
 from apbot.model.schema import DiscreteVariable, NumericVariable, TimeVariable
-from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab
+from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab, said_before
 from apbot.read.goal_twins import find_twins
 from apbot.read.goal_values import (
     OFF_WORDS,
@@ -15,9 +15,10 @@ from apbot.read.goal_values import (
     numeric_values,
     parse_quantity,
     quantity_dimensions,
+    zone_case,
 )
 from apbot.read.goal_view import Goal, Model, VarInfo, domain_values
-from apbot.read.goal_vocab import HIGHEST, LETTER_WORDS, LOWEST, SCALES, concept
+from apbot.read.goal_vocab import HIGHEST, LETTER_WORDS, LOWEST, SCALES, concept, stem
 
 
 def superlatives(
@@ -56,7 +57,9 @@ def superlatives(
             values = domain_values(view, info, goal)
             if scale_index is not None and end is None and len(values) != scale_index[1]:
                 continue
-            score = near_vocab(info, text, k, k + 1, reach=reach)
+            score = near_vocab(info, text, k, k + 1, reach=reach) or _after_its_case(
+                info, text, k, goal
+            )
             if _ladder(info.values) and not _beside(info, text, k, reach):
                 continue  # named levels are a weak order: only "the most steam" says it
             if score > 0 and (best is None or score > best[0]):
@@ -200,3 +203,12 @@ def _ordered_values(values: list[Any]) -> list[Any]:
     if len(sized) < 2 and _ladder(values):
         return _ladder(values)
     return [v for _size, v in sorted(sized, key=lambda pair: pair[0])]
+
+
+def _after_its_case(info: VarInfo, text: Text, k: int, goal: Goal) -> float:
+    """ "the foot zone on maximum": a superlative right after a value of the setting this one
+    depends on (each zone keeps its own level) is said of this setting."""
+    case = zone_case(info.var)
+    if not case or case not in goal:
+        return 0.0
+    return 0.5 if said_before(text, k, stem(str(goal[case]))) else 0.0

@@ -30,6 +30,9 @@ _DENIALS = frozenset({"don't", "dont", "not", "without", "never"})
 _START_WORDS = frozenset({"start", "begin", "started", "starting", "begins", "kick", "launch"})
 
 
+_HELD_STATES = frozenset({"stopped", "paused", "idle", "unstarted"})
+
+
 _NOW_PHRASES = ("right away", "straight away", "immediately")
 
 
@@ -124,6 +127,8 @@ def _says_power_on(view: Model, text: Text) -> bool:
             j += 1
         if text.word(j) not in ("on", "up"):
             continue
+        if text.word(j + 1) == "to" and text.word(j + 2) in _START_WORDS | {"run"}:
+            continue  # "switch it on to run": a start, said with a switch's verb
         if j > k + 1:
             return True  # "turn it on", "power the bread maker up"
         m = j + 1
@@ -334,6 +339,14 @@ def _says_start(
             starts = True
         if word == "run" and text.word(k + 1) == "it" and k in clause_starts(text):
             starts = True  # "Run it in dry mode"
+        on_to_run = word == "run" and text.word(k - 1) == "to" and text.word(k - 2) == "on"
+        set_running = word == "running" and text.word(k - 1) == "it"
+        if on_to_run or (set_running and text.word(k - 2) in ("set", "get", "leave", "keep")):
+            starts = True  # "switch it on to run", "set it running", "leave it running"
+        if word in _HELD_STATES and any(
+            text.word(k - d) in ("leave", "keep", "left", "kept", "stay") for d in (1, 2, 3)
+        ):
+            negative = True  # "leave it stopped for now", "keep it paused"
         if not starts:
             continue
         if _later(text, k):

@@ -56,6 +56,10 @@ def switches(
             weight = info.vocab.get(key, 0.0)
             if weight <= 0 and _abbreviated(text.stems[k], own):
                 key, weight = text.stems[k], 1.0  # "tablets" for a TABS key
+            if weight <= 0:
+                warmth = _kept_warmth(text, k, own)
+                if warmth:  # "keep it chilled" for AFTER COOL
+                    key, weight = concept(warmth), 1.0
             if weight <= 0 or generic(key):
                 continue
             if shadowed and (text.stems[k] in own or key in own_concepts(info)):
@@ -82,6 +86,9 @@ def switches(
                 continue
             if any(text.word(k - d) in ("leave", "leaving") for d in range(1, 4)):
                 left = True
+            shared = len(own) > 1 and _names_a_setting(view, goal, text.stems[k])
+            if shared and not phrase_here(text, k, own - {text.stems[k]}):
+                continue  # "medium mist": the MIST level, not the WARM MIST switch
             if best is None or weight > best[0]:
                 best = (weight, k)
         if best is None or left:
@@ -103,6 +110,15 @@ def switches(
         if where is not None:
             where[name] = k
         claimed.add(k)
+
+
+def _names_a_setting(view: Model, goal: Goal, word: str) -> bool:
+    """The word is an own word of a setting of several values that the goal already has
+    (MIST of the mist level, given "mist 2")."""
+    return any(
+        info.role == "setting" and name in goal and word in own_stems(info)
+        for name, info in view.infos.items()
+    )
 
 
 _LOCK_WORDS = frozenset(
@@ -135,6 +151,14 @@ def _kept(text: Text, k: int, own: set[str]) -> bool:
     return any(text.stems[j] in said for j in range(k + 1, min(k + 4, len(text.tokens))))
 
 
+def _kept_warmth(text: Text, k: int, own: set[str]) -> str:
+    """ "keep it chilled", "keep them cold": a word of the warmth of one of the switch's own
+    words (AFTER COOL), said after "keep"; that own word, or ""."""
+    if not any(text.stems[j] == stem("keep") for j in range(max(0, k - 3), k)):
+        return ""
+    return next((word for word in own if text.stems[k] in _WARMTH.get(word, ())), "")
+
+
 _WARMTH = {
     stem("warm"): frozenset({stem("hot")}),
     stem("cool"): frozenset(stem(w) for w in ("cold", "chilled", "chill", "frozen")),
@@ -163,8 +187,12 @@ def self_switching_off(view: Model, text: Text, goal: Goal, claimed: set[int]) -
         return
     info = found[0]
     for k, token in enumerate(text.tokens):
-        if token.text != "itself" or k in claimed:
+        if k in claimed:
             continue
+        if token.text != "itself":
+            k = _off_when_done(text, k)
+            if k < 0:
+                continue
         by = 1 if text.word(k - 1) == "by" else 0  # "turn off by itself"
         verb = any(text.stems[j] in _SELF_OFF_VERBS for j in (k - 1 - by, k - 2 - by))
         off = "off" in (text.word(k + 1), text.word(k - 1 - by))
@@ -180,6 +208,22 @@ def self_switching_off(view: Model, text: Text, goal: Goal, claimed: set[int]) -
         goal[info.name] = info.off if prevented else info.on
         claimed.add(k)
         return
+
+
+_DONE = frozenset({"done", "finished", "ready", "over", "through"})
+
+
+def _off_when_done(text: Text, k: int) -> int:
+    """ "let it turn off afterwards", "switch off when it's done", "shut off at the end": an
+    "off" at ``k`` followed by words of finishing reads like "switches itself off". The
+    index one past the "off" (where "itself" would stand), or -1."""
+    if text.word(k) != "off":
+        return -1
+    after = [text.word(k + d) for d in range(1, 5)]
+    at_end = after[:2] == ["at", "the"] and after[2] in ("end", "finish")
+    ends = after[0] in ("afterwards", "afterward") or at_end
+    done = after[0] in ("when", "once") and any(w in _DONE for w in after[1:])
+    return k + 1 if ends or done else -1
 
 
 def entry_switches(view: Model, goal: Goal) -> None:

@@ -149,6 +149,12 @@ def phrase_here(text: Text, k: int, own: set[str]) -> bool:
 _LONG_REACH = frozenset({"without", "no", "don't", "dont"})
 
 
+_AND_VERBS = frozenset(
+    {"lock", "set", "turn", "switch", "put", "make", "give", "use", "keep", "start", "add"}
+    | {"select", "choose", "pick", "enable", "activate", "engage", "leave", "have", "let"}
+)
+
+
 def negative_around(text: Text, k: int) -> bool:
     if (
         text.word(k + 1) == "on"
@@ -160,6 +166,8 @@ def negative_around(text: Text, k: int) -> bool:
         word = text.word(k - d)
         if word in CLAUSE_ENDS or word == ",":
             break
+        if word == "and" and text.word(k - d + 1) in _AND_VERBS:
+            break  # "turn off after an hour and lock the keys": a new act, not negated
         if word in NEGATIONS and word not in ("free",) and (d < 6 or word in _LONG_REACH):
             return True  # "without the fruit-and-nut beep"
         if word == "of" and text.word(k - d - 1) == "instead":
@@ -176,6 +184,8 @@ def negative_around(text: Text, k: int) -> bool:
         word = text.word(k + d)
         if word in CLAUSE_ENDS or word == ",":
             break
+        if word == "off" and text.word(k + d - 1) == "-":
+            continue  # "the auto-off", "the shut-off": a noun, not the switch said off
         if word in ("off", "disabled", "silenced", "muted"):
             return True
         if word == "on":
@@ -252,3 +262,14 @@ def clause_starts(text: Text, loose: bool = False) -> list[int]:
         if token.text in ends and k + 1 < len(text.tokens):
             starts.append(k + 1)
     return starts
+
+
+def said_before(text: Text, k: int, word: str, reach: int = 4) -> bool:
+    """The stemmed ``word`` stands within ``reach`` tokens before ``k``, in the same stretch of
+    text (no comma or sentence end between): "the body zone at 6", "the foot section on max"."""
+    for j in range(k - 1, max(-1, k - reach - 1), -1):
+        if text.word(j) in CLAUSE_ENDS or text.word(j) == ",":
+            return False
+        if text.stems[j] == word:
+            return True
+    return False

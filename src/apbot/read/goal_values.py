@@ -118,3 +118,13 @@ _GENERIC = frozenset(
 
 def generic(key: str) -> bool:
     return key in _GENERIC
+
+
+def zone_case(var: Any) -> str | None:
+    """The setting a per-zone level depends on (BODY / FEET each keep a level 1-9): the
+    ``depends_on`` of a numeric setting whose two or more cases all have one range."""
+    cases = getattr(var, "cases", None)
+    depends = getattr(var, "depends_on", None)
+    if not isinstance(var, NumericVariable) or not depends or not cases or len(cases) < 2:
+        return None
+    return depends if len({repr(case.ranges) for case in cases.values()}) == 1 else None

@@ -22,6 +22,9 @@ _SPELLING = (
 )
 
 
+_IRREGULAR = {"feet": "foot", "teeth": "tooth", "children": "child", "men": "man"}
+
+
 _CAMEL = re.compile(r"(?<=[a-z])(?=[A-Z][a-z])")
 
 
@@ -46,6 +49,7 @@ def stem(word: str) -> str:
     w = word.casefold()
     if w.endswith("'s"):
         w = w[:-2]  # the clock's hour
+    w = _IRREGULAR.get(w, w)  # "feet" for a FOOT zone
     for pattern, replacement in _SPELLING:
         w = pattern.sub(replacement, w)
     if len(w) <= 3:
@@ -105,6 +109,8 @@ _GROUPS: tuple[tuple[str, ...], ...] = (
     ("auto", "automatic", "automatically"),
     ("swing", "sweep", "oscillate", "oscillation", "oscillating"),
     ("rotate", "rotation", "rotisserie", "spit"),
+    ("width", "wide", "widen", "narrow"),
+    ("length", "long", "lengthen"),
 )
 _CANON: dict[str, str] = {}
 for _group in _GROUPS:
@@ -252,8 +258,12 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "softer": ("soft", "soften"),
     "light": ("pale", "lighter"),
     "dark": ("darker", "deep"),
-    "low": ("lo", "quiet", "gentle", "quietest"),
+    "low": ("lo", "quiet", "gentle", "quietest", "slow"),
     "high": ("hi", "full", "fast", "strong"),
+    "mid": ("medium", "middle", "moderate"),
+    "lower": ("bottom",),
+    "upper": ("top",),
+    "bright": ("full", "brightest"),
     "large": ("big", "bigger", "largest", "biggest"),
     "small": ("little", "smaller", "smallest"),
     "continuous": ("nonstop", "non", "continuously"),
