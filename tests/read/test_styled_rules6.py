@@ -1,0 +1,50 @@
+"""Rules found on the fifth round of blind styled manuals (a washer's cycle chart whose header
+sits on the page before its rows, ...), each on a small manual of our own."""
+
+from __future__ import annotations
+
+from apbot.model.schema import DiscreteVariable
+from apbot.read import read_manual
+
+
+def _values(model, name: str) -> list[str]:  # type: ignore[no-untyped-def]
+    var = model.variables[name]
+    assert isinstance(var, DiscreteVariable), var
+    return [str(v).lower() for v in var.values]
+
+
+# a dishwasher-like steamer whose programme chart breaks over a page right under its header:
+# the running footer and header of the next page sit between the header and the rows
+PAGED = """Lumo Steamer Guide                                            Page 1 of 6
+==========================================================================
+
+KEYS
+
+PROGRAM   Turns to the next programme in the chart below.
+START     Starts the programme.
+
+PROGRAMME CHART
+
+   Programme        Heat                 Time
+
+Lumo Steamer Guide                                            Page 2 of 6
+==========================================================================
+
+   Greens           Low, Medium          8 min
+   Fish             Medium               12 min
+   Rice             High, Medium         25 min
+   Eggs             Low                  10 min
+
+Lumo Steamer Guide                                            Page 3 of 6
+==========================================================================
+
+CLEANING
+
+Wipe the tray after use.
+"""
+
+
+def test_a_chart_whose_header_is_on_the_page_before_keeps_its_rows() -> None:
+    model = read_manual(PAGED, ["press_program", "press_start"]).model
+    name = next(n for n in model.variables if "prog" in n)
+    assert _values(model, name) == ["greens", "fish", "rice", "eggs"]
