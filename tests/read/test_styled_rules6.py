@@ -48,3 +48,25 @@ def test_a_chart_whose_header_is_on_the_page_before_keeps_its_rows() -> None:
     model = read_manual(PAGED, ["press_program", "press_start"]).model
     name = next(n for n in model.variables if "prog" in n)
     assert _values(model, name) == ["greens", "fish", "rice", "eggs"]
+
+
+# an oven whose specification table labels its clock-like range as minutes and seconds
+LABELLED = """KEYS
+
+COOK TIME   Then type the time on the number keys.
+START       Starts cooking.
+
+SPECIFICATIONS
+
+Output              900 W
+Cooking time        0:01 - 59:59 (min:s)
+"""
+
+
+def test_a_clock_range_labelled_min_s_is_minutes_and_seconds() -> None:
+    digits = [f"press_{d}" for d in range(10)]
+    model = read_manual(LABELLED, ["press_cook_time", "press_start", *digits]).model
+    name = next(n for n in model.variables if "cook" in n)
+    spec = model.variables[name].model_dump()
+    assert spec["type"] == "time", spec
+    assert spec["ranges"][-1][1] == "00:59:59", spec["ranges"]
