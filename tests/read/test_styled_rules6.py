@@ -70,3 +70,25 @@ def test_a_clock_range_labelled_min_s_is_minutes_and_seconds() -> None:
     spec = model.variables[name].model_dump()
     assert spec["type"] == "time", spec
     assert spec["ranges"][-1][1] == "00:59:59", spec["ranges"]
+
+
+# a fan heater whose chart gives the order of one key's presses per mode, each line led by the
+# mode's name in capitals and the orders run together when the lines are joined
+ORDERS = """KEYS
+
+MODE      Chooses the mode: COMFORT, ECO or NIGHT.
+FAN       Changes the fan speed for the mode chosen.
+START     Starts heating.
+
+FAN SPEEDS
+
+Sequence of FAN presses:  COMFORT  gentle → brisk → strong → gentle …
+                          ECO  gentle → brisk → gentle …
+                          NIGHT  gentle → quiet → gentle …
+"""
+
+
+def test_an_order_led_by_a_mode_name_in_capitals_lists_the_lower_case_steps() -> None:
+    model = read_manual(ORDERS, ["press_mode", "press_fan", "press_start"]).model
+    name = next(n for n in model.variables if "fan" in n)
+    assert _values(model, name)[:3] == ["gentle", "brisk", "strong"]
