@@ -92,3 +92,29 @@ def test_an_order_led_by_a_mode_name_in_capitals_lists_the_lower_case_steps() ->
     model = read_manual(ORDERS, ["press_mode", "press_fan", "press_start"]).model
     name = next(n for n in model.variables if "fan" in n)
     assert _values(model, name)[:3] == ["gentle", "brisk", "strong"]
+
+
+# a washer whose chart lists, per programme, the spin speeds it offers; the default is marked
+# with a symbol the text conversion drops, and the SPIN key's own line names no speed
+CHART = """KEYS
+
+PROGRAM knob   Chooses the programme.
+SPIN           Final spin speed. Each touch lights the next one.
+START          Starts the wash.
+
+PROGRAMME CHART
+
+   Program          Spin                     Suitable for
+   Cottons          Low, Medium ◆, High      towels, bed linen
+   Synthetics       Low ◆, Medium            shirts, blouses
+   Wool             Low                      jumpers marked for machine washing
+"""
+
+
+def test_a_chart_listing_a_keys_choices_per_programme_gives_its_values_and_cases() -> None:
+    model = read_manual(CHART, ["turn_program_cw", "press_spin", "press_start"]).model
+    spin = model.variables["spin"].model_dump()
+    assert spin["type"] == "discrete" and spin["depends_on"], spin
+    cases = {k: v["values"] for k, v in spin["cases"].items()}
+    assert cases["cottons"] == ["low", "medium", "high"]
+    assert cases["synthetics"] == ["low", "medium"]

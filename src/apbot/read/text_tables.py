@@ -22,7 +22,8 @@ def _strip_markup(line: str) -> str:
 
 
 def _cells(line: str) -> tuple[str, ...]:
-    return tuple(c for c in re.split(r"\s{2,}|\t+", _strip_markup(line).strip()) if c)
+    # a gap before a comma is no column break: a symbol dropped from "Warm ▣, Hot" left it
+    return tuple(c for c in re.split(r"\s{2,}(?![,;])|\t+", _strip_markup(line).strip()) if c)
 
 
 def _space_tables(
@@ -171,7 +172,7 @@ def _elided(before: tuple[str, ...], after: tuple[str, ...]) -> list[tuple[str, 
 def _placed_cells(line: str) -> list[tuple[int, str]]:
     """A line's cells (split at wide gaps) with the column each starts at."""
     body = _strip_markup(line).rstrip()
-    return [(m.start(), m.group(0)) for m in re.finditer(r"\S+(?: \S+)*", body)]
+    return [(m.start(), m.group(0)) for m in re.finditer(r"\S+(?:(?: |\s{2,}(?=[,;]))\S+)*", body)]
 
 
 def _joined_cells(line: str, wrapped: list[tuple[int, str]]) -> tuple[str, ...]:
