@@ -118,3 +118,24 @@ def test_a_chart_listing_a_keys_choices_per_programme_gives_its_values_and_cases
     cases = {k: v["values"] for k, v in spin["cases"].items()}
     assert cases["cottons"] == ["low", "medium", "high"]
     assert cases["synthetics"] == ["low", "medium"]
+
+
+# a microwave whose longest time (99 minutes 59 seconds) is typed as minutes and seconds: every
+# second can be typed, however long the range
+LONG_TYPED = """KEYS
+
+COOK TIME   Then type the time on the number keys.
+START       Starts cooking.
+
+SPECIFICATIONS
+
+Cooking time        0:01 - 99:59 (min:s)
+"""
+
+
+def test_a_time_typed_as_minutes_and_seconds_steps_by_one_second() -> None:
+    digits = [f"press_{d}" for d in range(10)]
+    model = read_manual(LONG_TYPED, ["press_cook_time", "press_start", *digits]).model
+    name = next(n for n in model.variables if "cook" in n)
+    spec = model.variables[name].model_dump()
+    assert tuple(spec["ranges"][-1][1:]) == ("01:39:59", 1), spec["ranges"]
