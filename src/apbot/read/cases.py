@@ -15,6 +15,7 @@ from typing import Any
 from apbot.model.values import parse_hms
 from apbot.read.build import Builder
 from apbot.read.cases_cells import _STEP_HEAD_RE, DEFAULT_WORDS, _cases, _defaults, _row_steps
+from apbot.read.cases_lists import as_choices, listed_cases, listed_column
 from apbot.read.cases_tables import _parent_values, _tables
 from apbot.read.labels import words
 from apbot.read.shapes import CHOICE_WORDS
@@ -52,8 +53,11 @@ def apply_cases(b: Builder) -> None:
     for header, rows in _tables(b.manual.units):
         if len(rows) < 2:
             continue
-        if sum(h.strip(" *.").upper() in keys for h in header) >= 2:
-            continue  # a column per key ("| TEMP. | SPIN | SOIL |"): each lists its own values
+        guessed_only = False  # only keys read with no values take a column-per-key chart's
+        if sum(h.strip(" *.").upper() in keys for h in header) >= 2:  # lists ("Cold, Warm")
+            if not _guessed_listed(b, header, rows):
+                continue  # a column per key ("| TEMP. | SPIN | SOIL |"): each lists its own values
+            guessed_only = True
         parent, best = None, (1, False)
         for name, spec in b.variables.items():
             if spec.get("type") != "discrete" or spec.get("depends_on") or len(spec["values"]) < 3:
@@ -84,7 +88,16 @@ def apply_cases(b: Builder) -> None:
                     continue
                 if spec.get("type") == "discrete" and _ranges_column(rows, column):
                     _as_number(b, name, spec, rows, column)  # the table says it is an amount
-                cases = _cases(spec, rows, column, pvalues)
+                guessed = name in b.unread and spec.get("type") == "numeric"
+                if guessed_only and not guessed:
+                    break
+                if guessed and listed_column(rows, column):
+                    cases = listed_cases(rows, column, pvalues)  # "Cold, Warm ▣, Hot"
+                    if guessed and len(cases) >= 2:
+                        as_choices(spec, cases)
+                        b.unread.discard(name)
+                else:
+                    cases = _cases(spec, rows, column, pvalues)
                 if len(cases) >= 2 and _presets(b, parent, name, cases, rows[0]):
                     break
                 if len(cases) >= 2:
@@ -110,6 +123,16 @@ def apply_cases(b: Builder) -> None:
 
 
 _YES_NO = {"yes", "no", "y", "n", "—", "-", "–", ""}
+
+
+def _guessed_listed(b: Builder, header: tuple[str, ...], rows: list[Unit]) -> bool:
+    """Whether a column lists choices ("Cold, Warm, Hot") for a key read with none."""
+    return any(
+        listed_column(rows, column) and _matches(header[column], name, spec)
+        for column in range(1, len(header))
+        for name, spec in b.variables.items()
+        if name in b.unread and spec.get("type") == "numeric"
+    )
 
 
 def _named_ranges(header: tuple[str, ...], rows: list[Unit]) -> tuple[str, ...]:

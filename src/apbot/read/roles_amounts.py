@@ -110,6 +110,9 @@ def assign_amounts(
                 spec.pop("unit", None)
                 b.note(f"variables.{var}", "a cooking time typed as minutes and seconds")
             _keypad_entry(spec)
+            if spec.get("entry", {}).get("format") == "mm:ss" and not ev.step:
+                # minutes and seconds typed digit by digit: any second, whatever step was guessed
+                spec["ranges"] = [[lo, hi, 1] for lo, hi, _ in spec["ranges"]]
             b.feature(
                 f"set_{var}", [{"actions": [key.name]}, {"actions": list(digits), "variable": var}]
             )

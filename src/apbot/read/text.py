@@ -147,10 +147,10 @@ def parse_manual(text: str) -> Manual:
         para_step = None
 
     fenced = False
-    spaced = _space_tables(raw_lines)
-    sideways = _row_charts(raw_lines)
     furniture = _furniture(raw_lines)
     passed = _page_breaks(raw_lines, furniture)
+    spaced = _space_tables(raw_lines, passed | furniture)
+    sideways = _row_charts(raw_lines)
     previous, last = "", 0
     for position, raw in enumerate(raw_lines, start=1):
         number = line_numbers[position - 1]

@@ -22,14 +22,20 @@ def _strip_markup(line: str) -> str:
 
 
 def _cells(line: str) -> tuple[str, ...]:
-    return tuple(c for c in re.split(r"\s{2,}|\t+", _strip_markup(line).strip()) if c)
+    # a gap before a comma is no column break: a symbol dropped from "Warm ▣, Hot" left it
+    return tuple(c for c in re.split(r"\s{2,}(?![,;])|\t+", _strip_markup(line).strip()) if c)
 
 
-def _space_tables(lines: list[str]) -> dict[int, tuple[tuple[str, ...], bool]]:
+def _space_tables(
+    lines: list[str], breaks: set[int] | None = None
+) -> dict[int, tuple[tuple[str, ...], bool]]:
     """Tables drawn with spaces (text from a PDF): a header of three or more cells followed by
-    rows of two or more; a row's wrapped lines (set in from the left) go on its cells.
+    rows of two or more; a row's wrapped lines (set in from the left) go on its cells. A page
+    break (``breaks``: 0-based lines the page layout passes over) inside a table — often right
+    under its header — is passed over when a row follows it.
 
     Returns line number → (cells, is the header row)."""
+    breaks = breaks or set()
     out: dict[int, tuple[tuple[str, ...], bool]] = {}
     i = 0
     while i < len(lines):
@@ -50,7 +56,13 @@ def _space_tables(lines: list[str]) -> dict[int, tuple[tuple[str, ...], bool]]:
         more: dict[int, list[tuple[int, str]]] = {}  # row -> wrapped lines' cells, by position
         indent = len(lines[i]) - len(lines[i].lstrip())
         j = i + 1
-        while j < len(lines) and lines[j].strip():
+        while j < len(lines) and (lines[j].strip() or j in breaks):
+            if j in breaks:
+                k = next((k for k in range(j, len(lines)) if k not in breaks), len(lines))
+                if k < len(lines) and len(_cells(lines[k])) >= 2 and "|" not in lines[k]:
+                    j = k  # the table goes on over the page break
+                    continue
+                break
             if re.fullmatch(r"[-=_][-=_\s]{2,}", lines[j].strip()):
                 j += 1  # a rule under the header ("-------  ------  -----")
                 continue
@@ -160,7 +172,7 @@ def _elided(before: tuple[str, ...], after: tuple[str, ...]) -> list[tuple[str, 
 def _placed_cells(line: str) -> list[tuple[int, str]]:
     """A line's cells (split at wide gaps) with the column each starts at."""
     body = _strip_markup(line).rstrip()
-    return [(m.start(), m.group(0)) for m in re.finditer(r"\S+(?: \S+)*", body)]
+    return [(m.start(), m.group(0)) for m in re.finditer(r"\S+(?:(?: |\s{2,}(?=[,;]))\S+)*", body)]
 
 
 def _joined_cells(line: str, wrapped: list[tuple[int, str]]) -> tuple[str, ...]:

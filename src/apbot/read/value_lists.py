@@ -113,6 +113,27 @@ def _range_table_header(items: list[str]) -> bool:
     return "range" in said and bool(said & {"step", "steps", "increment", "increments"})
 
 
+_LOWER_WORD = re.compile(r"[a-z][a-z'-]*")
+
+
+def _after_case_label(head: list[str], rest: list[str]) -> list[str]:
+    """The first item of an arrow list in lower case led by a setting's name in capitals
+    ("WHITE  regular → softer → harder": the order on WHITE): the lower-case words before the
+    first arrow, as many as the other items have; [] when the list is not written so."""
+    rest = [p for p in rest if p]
+    if not rest or any(re.search(r"[A-Z]", p) for p in rest):
+        return []
+    if not any(w.isupper() and any(c.isalpha() for c in w) for w in head):
+        return []
+    size = max(len(p.split()) for p in rest)
+    run: list[str] = []
+    for word in reversed(head):
+        if len(run) >= size or not _LOWER_WORD.fullmatch(word):
+            break
+        run.insert(0, word)
+    return run
+
+
 def find_list(text: str) -> tuple[list[str], str] | None:
     """A list of values in one sentence, and how it was written ("arrows", "list")."""
     numbers = _NUMBER_LIST.search(text)
@@ -123,6 +144,11 @@ def find_list(text: str) -> tuple[list[str], str] | None:
         if len(items) >= 3:
             return [f"{i} {unit}" if known else i for i in items], "list"
     parts = [_clean_item(p) for p in _ARROW.split(text)]
+    for k, part in enumerate(parts[1:-1], start=1):  # "regular → … → regular … SUSHI regular
+        came_round = re.match(r"([a-z][\w ]*?)\s*(?:…|\.\.\.)\s*[A-Z][A-Z,& ]*\s[a-z]", part)
+        if came_round and parts[0].lower().endswith(came_round.group(1).lower()):
+            parts = parts[: k + 1]  # → …": back at its start, then the next order
+            break
     if len(parts) >= 3:  # "… → HIGH, and from HIGH the next press …": the list ends at the comma
         last = re.split(
             r"[,;]\s|\s[—–]\s|(?:^|\s+)(?:and\s+)?(?:then|back|again)\b|\.\s|\s*[()]|\s*(?:…|\.\.\.)",
@@ -141,6 +167,7 @@ def find_list(text: str) -> tuple[list[str], str] | None:
             trailing.insert(0, w)
         if trailing and len(trailing) < len(capital):
             capital = trailing
+        capital = _after_case_label(head, parts[1:]) or capital
         parts[0] = _clean_item(" ".join(capital) or " ".join(head[-2:]) or parts[0])
         if len(head) > 3 and not capital:
             parts[0] = _clean_item(head[-1])

@@ -12,6 +12,7 @@ import re
 from dataclasses import dataclass
 
 from apbot.model.values import unit_of, words_to_number
+from apbot.read.values_labels import clock_seconds, minutes_and_seconds
 
 NUM = (
     r"(?:\d+(?:[.,]\d+)?|one|two|three|four|five|six|seven|eight|nine|ten|twelve|fifteen"
@@ -115,7 +116,8 @@ def find_ranges(text: str) -> list[Range]:
 def _ranges(text: str) -> list[Range]:
     out: list[Range] = []
     for m in TIME_RANGE_RE.finditer(text):
-        a, b = _hmm(m.group(1)), _hmm(m.group(2))
+        min_sec = minutes_and_seconds(text, m.end())  # "0:01 - 99:59 (min:s)"
+        a, b = clock_seconds(m.group(1), min_sec), clock_seconds(m.group(2), min_sec)
         if a < b:
             out.append(Range(a, b, "s"))
     for m in RANGE_RE.finditer(text):
