@@ -233,3 +233,43 @@ def test_a_bare_number_is_not_read_out_of_a_lamp_like_1_4() -> None:
     reader = DisplayReader(model)
     assert not any("keep_warm" in h.values for h in reader.read("1-4  BOLD").hypotheses)
     assert any(h.values.get("keep_warm") == 3 for h in reader.read("3 h  BOLD  1-4").hypotheses)
+
+
+DELAYED_WASHER = """
+controls: [{id: prog}, {id: delay}, {id: up}]
+variables:
+  programme: {type: discrete, values: [cotton, wool, quick], label: PROG}
+  delay_on: {type: discrete, values: ["off", "on"], label: END}
+  end_time: {type: time, ranges: [["00:00:00", "23:30:00", 1800]], format: "hh:mm", label: END}
+actions:
+  press_prog: {control: prog}
+  press_delay: {control: delay}
+  press_up: {control: up}
+features:
+  programme: [{actions: [press_prog], variable: programme, effect: next}]
+  delay:
+    - {actions: [press_delay], variable: delay_on, effect: toggle}
+    - {actions: [press_up], variable: end_time, effect: next}
+display:
+  idle: "{programme}"
+  indicators: [delay_on]
+"""
+
+
+def test_a_time_in_dashes_is_shown_blank_and_its_switch_is_off() -> None:
+    # a finish time switched off shows dashes in its clock's places; the switch's lamp text is
+    # the time's own label, so the words tell the switch only by what follows them
+    reader = DisplayReader(model_from(DELAYED_WASHER))
+    (blank,) = [h for h in reader.read("END --:--").hypotheses if h.screen.variable == "end_time"]
+    assert blank.absent == {"end_time"} and blank.lamps["delay_on"] == {"off"}
+    (shown,) = [h for h in reader.read("END 06:30").hypotheses if h.screen.variable == "end_time"]
+    assert shown.values == {"end_time": "06:30:00"} and shown.lamps["delay_on"] == {"on"}
+
+
+def test_a_label_in_dashes_beside_another_screen_is_no_lit_lamp() -> None:
+    # "END --:--" after the programme: the finish time shown blank, not the delay lamp lit, and
+    # not the finish time's screen either (the programme's is the one on show)
+    reader = DisplayReader(model_from(DELAYED_WASHER))
+    readings = reader.read("PROG wool  MODE 2  END --:--").hypotheses
+    assert readings and all(h.values == {"programme": "wool"} for h in readings)
+    assert all(h.lamps["delay_on"] == {"off"} for h in readings)

@@ -271,6 +271,8 @@ class DisplayReader:
             elif kind == "outside":
                 outside[name] = value
             elif kind == "absent":
+                if partial and raw.strip() != ABSENT_TEXT:
+                    return None  # a time in dashes beside other text: a lamp's, not the screen
                 absent.add(name)
         lamps: dict[str, frozenset[Any]] = {}
         if not partial and not self._dark(screen):
@@ -282,6 +284,8 @@ class DisplayReader:
         elif not self._dark(screen):  # lamps among words the belief does not know
             rest = whole[: match.start()] + "  " + whole[match.end() :] if whole else ""
             lamps = self._lamps_among(rest, screen.variable)
+        if not self._dark(screen):
+            lamps.update(self._switched_by_label(screen, absent))
         for name, allowed in lamps.items():  # a value the screen printed wins over its lamp
             if name in values and values[name] not in allowed:
                 return None
@@ -292,7 +296,7 @@ class DisplayReader:
         None) for digits shown as typed that are no value of the domain, or None."""
         spec = self._specs[name]
         text = raw.strip()
-        if text == ABSENT_TEXT:
+        if text == ABSENT_TEXT or (isinstance(spec, TimeVariable) and _DASHED_TIME.fullmatch(text)):
             return "absent", None
         domain = self._domain(name, known)
         if domain is not None:
@@ -336,10 +340,34 @@ class DisplayReader:
                 allowed[name] = frozenset(chosen)
         return allowed
 
+    def _switched_by_label(self, screen: Screen, absent: set[str]) -> dict[str, frozenset[Any]]:
+        """On/off lamps whose lit text is the label this screen printed for its setting (``READY
+        AT`` is both a finish-time switch's lamp and the finish time's label): the words are
+        the setting's, so they tell the lamp by the value after them: a value shown means the
+        switch is on, dashes (``READY AT --:--``) that it is off."""
+        name = screen.variable
+        if screen.kind != "focus" or name is None or "{label}" not in screen.template:
+            return {}
+        label = _squash(self._specs[name].display_label(name))
+        switched: dict[str, frozenset[Any]] = {}
+        for other, by_value in self._lamp_table.items():
+            if (other, name) not in self._switches:
+                continue  # a lamp of some other part of the panel that happens to share words
+            lit = [(v, t) for v, t in by_value if t]
+            unlit = [v for v, t in by_value if not t]
+            if len(lit) == 1 and len(unlit) == 1 and _squash(lit[0][1]) == label:
+                switched[other] = frozenset(unlit if name in absent else [lit[0][0]])
+        return switched
+
     def _lamps_among(self, rest: str, focus: str | None) -> dict[str, frozenset[Any]]:
         """Indicator values allowed by the lamp words found as whole words in ``rest`` (the
         text around a screen found inside it): a lamp whose words are nowhere on a lit
         display is unlit, whatever else the display shows that the belief cannot print."""
+        blanked = _regex(
+            rf"(?<!\w)(?:{self._lamp_words.pattern})\s+(?:{_DASHED_TIME.pattern}|--)(?![\w:-])",
+            re.IGNORECASE,
+        )
+        rest = blanked.sub("  ", rest)  # a label before dashes is a setting shown blank
         whole_words = _regex(rf"(?<!\w)(?:{self._lamp_words.pattern})(?!\w)", re.IGNORECASE)
         found = " ".join(whole_words.findall(rest))
         allowed = self._lamps(found, focus)
@@ -380,6 +408,18 @@ class DisplayReader:
             if spec.depends_on:  # a setting this programme lacks leaves its lamp unlit too
                 table[name].append((None, lamp_for(spec, name, None, values)))
         return table
+
+    @cached_property
+    def _switches(self) -> frozenset[tuple[str, str]]:
+        """(switch, setting) pairs of one feature: a step toggles the switch, a later step
+        adjusts the setting (a finish-time function switched on, then its time set)."""
+        pairs = set()
+        for steps in self.belief.features.values():
+            for index, step in enumerate(steps):
+                if step.variable is None or step.effect != "toggle":
+                    continue
+                pairs |= {(step.variable, s.variable) for s in steps[index + 1 :] if s.variable}
+        return frozenset(pairs)
 
     @cached_property
     def _lamp_words(self) -> re.Pattern[str]:
@@ -510,12 +550,17 @@ class DisplayReader:
         if isinstance(spec, DiscreteVariable) and loose:
             alternatives.append(r"\S+(?: \S+)*?")
         elif isinstance(spec, TimeVariable):
+            alternatives.append(_DASHED_TIME.pattern)
             alternatives.append(r"\d+(?::\d{1,2}){0,2}(?:\s?(?:h|hr|hrs|min|mins|s|sec))?")
         elif not isinstance(spec, DiscreteVariable):
             unit = rf"(?:\s?{re.escape(spec.unit)})?" if spec.unit else ""
             alternatives.append(rf"[-+]?\d+(?:[.,]\d+)?{unit}")
         return "|".join(alternatives)
 
+
+_DASHED_TIME = re.compile(r"-{1,2}(?::-{2}){1,2}")
+"""A time printed as dashes in its clock's places (``--:--``, ``-:--:--``): a time that is not
+set, shown blank like ``--`` (a finish time switched off, a delay not yet entered)."""
 
 # value patterns by variable kind, definition and looseness
 _VALUE_PATTERNS: dict[tuple[str, str, bool], str] = {}
