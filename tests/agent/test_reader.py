@@ -273,3 +273,39 @@ def test_a_label_in_dashes_beside_another_screen_is_no_lit_lamp() -> None:
     readings = reader.read("PROG wool  MODE 2  END --:--").hypotheses
     assert readings and all(h.values == {"programme": "wool"} for h in readings)
     assert all(h.lamps["delay_on"] == {"off"} for h in readings)
+
+
+def test_settings_shown_side_by_side_are_read_each_by_its_own_screen() -> None:
+    # the belief knows "MENU 2" and "BROWN light" only as screens of their own; the panel
+    # prints them together after a running word. Each is read, and "light" (a browning
+    # value) is not the LIGHT lamp
+    model = model_from(
+        """
+        controls: [{id: menu}, {id: brown}, {id: lamp}, {id: go}]
+        variables:
+          menu: {type: numeric, ranges: [[1, 6, 1]], label: MENU}
+          browning: {type: discrete, values: [light, dark], label: BROWN}
+          lamp: {type: discrete, values: ["off", "on"], label: LIGHT}
+          running: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "WORKING"}}
+        actions:
+          press_menu: {control: menu}
+          press_brown: {control: brown}
+          press_lamp: {control: lamp}
+          press_go: {control: go}
+        features:
+          menu: [{actions: [press_menu], variable: menu, effect: next}]
+          browning: [{actions: [press_brown], variable: browning, effect: next}]
+          lamp: [{actions: [press_lamp], variable: lamp, effect: toggle}]
+          go: [{actions: [press_go], variable: running, effect: toggle}]
+        display:
+          indicators: [lamp]
+        """
+    )
+    reader = DisplayReader(model)
+    (working,) = [
+        h
+        for h in reader.read("WORKING  MENU 2  BROWN light").hypotheses
+        if h.screen.variable == "running"
+    ]
+    assert working.value("menu") == 2 and working.value("browning") == "light"
+    assert working.lamps["lamp"] == {"off"}

@@ -283,7 +283,10 @@ class DisplayReader:
             lamps = allowed_by_lamps
         elif not self._dark(screen):  # lamps among words the belief does not know
             rest = whole[: match.start()] + "  " + whole[match.end() :] if whole else ""
+            beside, rest = self._beside(rest, screen.variable, parents)
             lamps = self._lamps_among(rest, screen.variable)
+            for name, value in beside.items():
+                lamps.setdefault(name, frozenset({value}))
         if not self._dark(screen):
             lamps.update(self._switched_by_label(screen, absent))
         for name, allowed in lamps.items():  # a value the screen printed wins over its lamp
@@ -339,6 +342,36 @@ class DisplayReader:
             if chosen and len(chosen) < len(by_value):
                 allowed[name] = frozenset(chosen)
         return allowed
+
+    def _beside(
+        self, rest: str, focus: str | None, parents: dict[str, Any]
+    ) -> tuple[dict[str, Any], str]:
+        """Other settings printed by their own labelled screen (``CRUST medium``) in the text
+        around a screen found inside it: a panel that shows several settings side by side
+        shows each as it would alone (a value of the belief's domain, found once). Also the
+        text without them: their words are no lamps (``light`` of ``CRUST light``)."""
+        found: dict[str, list[Any]] = {}
+        spans: list[tuple[int, int]] = []
+        for pattern in self._patterns:
+            other = pattern.screen
+            if (
+                other.kind != "focus"
+                or other.variable in (None, focus)
+                or other.fixed
+                or pattern.search is None
+                or "{label}" not in other.template
+                or len(pattern.fields) != 1
+            ):
+                continue
+            ((group, name),) = pattern.fields
+            for match in pattern.search.finditer(rest):
+                outcome = self._interpret(name, match.group(group), parents)
+                if outcome is not None and outcome[0] == "value":
+                    found.setdefault(name, []).append(outcome[1])
+                    spans.append(match.span())
+        for start, end in sorted(spans, reverse=True):
+            rest = rest[:start] + " " * (end - start) + rest[end:]
+        return {name: values[0] for name, values in found.items() if len(set(values)) == 1}, rest
 
     def _switched_by_label(self, screen: Screen, absent: set[str]) -> dict[str, frozenset[Any]]:
         """On/off lamps whose lit text is the label this screen printed for its setting (``READY
