@@ -309,3 +309,30 @@ def test_settings_shown_side_by_side_are_read_each_by_its_own_screen() -> None:
     ]
     assert working.value("menu") == 2 and working.value("browning") == "light"
     assert working.lamps["lamp"] == {"off"}
+
+
+def test_a_one_word_lamp_shortened_on_the_display_is_still_its_lamp() -> None:
+    # the manual names the lamp SPINNING, the panel prints SPIN; a word that merely starts
+    # like it (SPINACH, a menu value) is no lamp
+    model = model_from(
+        """
+        controls: [{id: menu}, {id: spin}]
+        variables:
+          menu: {type: discrete, values: [soup, spinach], label: MENU}
+          spinning: {type: discrete, values: ["off", "on"], label: SPINNING}
+        actions:
+          press_menu: {control: menu}
+          press_spin: {control: spin}
+        features:
+          menu: [{actions: [press_menu], variable: menu, effect: next}]
+          spin: [{actions: [press_spin], variable: spinning, effect: toggle}]
+        display:
+          idle: "{menu}"
+          indicators: [spinning]
+        """
+    )
+    reader = DisplayReader(model)
+    (lit,) = [h for h in reader.read("soup  SPIN").hypotheses if h.screen.kind == "idle"]
+    assert lit.lamps["spinning"] == {"on"}
+    (dark,) = [h for h in reader.read("spinach").hypotheses if h.screen.kind == "idle"]
+    assert dark.values == {"menu": "spinach"} and dark.lamps["spinning"] == {"off"}

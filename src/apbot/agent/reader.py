@@ -331,7 +331,7 @@ class DisplayReader:
         texts = self._lamp_words.findall(lit) if lit.strip() else []
         if lit.strip() and _squash("".join(texts)) != _squash(lit):
             return None
-        on = {_squash(t) for t in texts}
+        on = {self._lamp_shortened.get(_squash(t), _squash(t)) for t in texts}
         allowed: dict[str, frozenset[Any]] = {}
         for name, by_value in self._lamp_table.items():
             if name == focus:
@@ -455,9 +455,24 @@ class DisplayReader:
         return frozenset(pairs)
 
     @cached_property
+    def _lamp_shortened(self) -> dict[str, str]:
+        """A one-word lamp as the panel may shorten it to its first letters (``ROT`` for
+        ``ROTATE``; at least three, as for labels), by the lamp it can only be (case-folded).
+        Never spelt out longer: ``rotisserie`` on a display is no ``ROT`` lamp."""
+        full = {_squash(t) for rows in self._lamp_table.values() for _, t in rows if t}
+        shortened: dict[str, set[str]] = {}
+        for text in full:
+            if text.isalpha():
+                for end in range(3, len(text)):
+                    shortened.setdefault(text[:end], set()).add(text)
+        return {s: next(iter(t)) for s, t in shortened.items() if len(t) == 1 and s not in full}
+
+    @cached_property
     def _lamp_words(self) -> re.Pattern[str]:
         texts = sorted(
-            {t for rows in self._lamp_table.values() for _, t in rows if t}, key=_by_length
+            {t for rows in self._lamp_table.values() for _, t in rows if t}
+            | set(self._lamp_shortened),
+            key=_by_length,
         )
         if not texts:
             return _regex(r"(?!x)x")
