@@ -336,3 +336,30 @@ def test_a_one_word_lamp_shortened_on_the_display_is_still_its_lamp() -> None:
     assert lit.lamps["spinning"] == {"on"}
     (dark,) = [h for h in reader.read("spinach").hypotheses if h.screen.kind == "idle"]
     assert dark.values == {"menu": "spinach"} and dark.lamps["spinning"] == {"off"}
+
+
+def test_a_label_of_two_words_may_be_shown_by_its_last_word_alone() -> None:
+    # the manual calls it DRY TIME, the narrow panel prints TIME; with a COOK TIME beside it
+    # the word alone would say nothing, so it is not read so
+    text = """
+        controls: [{id: dry}, {id: cook}]
+        variables:
+          dry_time: {type: time, ranges: [["00:10:00", "01:00:00", 600]], label: DRY TIME}
+          OTHER
+        actions:
+          press_dry: {control: dry}
+          press_cook: {control: cook}
+        features:
+          dry: [{actions: [press_dry], variable: dry_time, effect: next}]
+          cook: [{actions: [press_cook], variable: cook_level, effect: next}]
+        """
+    alone = DisplayReader(
+        model_from(text.replace("OTHER", "cook_level: {type: discrete, values: [a, b]}"))
+    )
+    assert focus_readings(alone, "TIME 40 min", "dry_time") == [{"dry_time": "00:40:00"}]
+    beside = DisplayReader(
+        model_from(
+            text.replace("OTHER", "cook_level: {type: discrete, values: [a, b], label: COOK TIME}")
+        )
+    )
+    assert focus_readings(beside, "TIME 40 min", "dry_time") == []

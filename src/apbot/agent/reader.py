@@ -455,6 +455,22 @@ class DisplayReader:
         return frozenset(pairs)
 
     @cached_property
+    def _last_words(self) -> dict[str, str]:
+        """Per setting with a label of several words, its last word where it is no word of
+        any other label (a panel too narrow for ``DRY TIME`` prints ``TIME``; with a ``COOK
+        TIME`` beside it, ``TIME`` would say nothing)."""
+        labels = {n: s.display_label(n).split() for n, s in self._specs.items() if s.visible}
+        found = {}
+        for name, words in labels.items():
+            last = words[-1] if len(words) > 1 else ""
+            if len(last) < 3 or not last.isalpha():
+                continue
+            others = [w.casefold() for n, ws in labels.items() if n != name for w in ws]
+            if last.casefold() not in others:
+                found[name] = last
+        return found
+
+    @cached_property
     def _lamp_shortened(self) -> dict[str, str]:
         """A one-word lamp as the panel may shorten it to its first letters (``ROT`` for
         ``ROTATE``; at least three, as for labels), by the lamp it can only be (case-folded).
@@ -540,7 +556,7 @@ class DisplayReader:
             position = match.end()
             name = match.group(1)
             if name == "label":
-                parts.append(_label_pattern(label))
+                parts.append(_label_pattern(label, self._last_words.get(focus or "")))
                 continue
             if name == "value":
                 if focus is None:
@@ -628,14 +644,16 @@ def _focus_templates(spec: AnyVariable) -> list[tuple[str, Any]]:
     return found
 
 
-def _label_pattern(label: str) -> str:
+def _label_pattern(label: str, last: str | None = None) -> str:
     """A setting's label as the display may print it: as written, or shortened or spelt out
     from its first three letters (``TEMP`` for ``TEMPERATURE``, ``WATER`` for ``WATE``) —
-    displays abbreviate, and manuals copy their labels inexactly."""
+    displays abbreviate, and manuals copy their labels inexactly. ``last``: the label's last
+    word, which the display may print alone (``TIME`` for ``DRY TIME``)."""
     first = label.split()[0] if label.split() else ""
+    alone = f"|{re.escape(last)}" if last else ""
     if len(first) < 3 or not first[:3].isalpha():
-        return _literal(label)
-    return rf"(?:{_literal(label)}|{re.escape(first[:3])}[^\W\d_]*)"
+        return rf"(?:{_literal(label)}{alone})" if alone else _literal(label)
+    return rf"(?:{_literal(label)}|{re.escape(first[:3])}[^\W\d_]*{alone})"
 
 
 def _literal(text: str) -> str:
