@@ -110,8 +110,9 @@ def test_bad_inputs_are_messages_not_tracebacks(tmp_path: Path) -> None:
 
 
 def test_run_shows_a_task_live_and_judges_it() -> None:
-    # a belief that prints the cooking time wrong: seen, repaired, done
-    result = runner.invoke(app, ["run", "microwave_3", "t01", "--belief", "faulty:0.3:display"])
+    # a belief that prints a setting wrong: seen, repaired, done (microwave_3's cooking time
+    # labelled "COOK TIME" for the panel's "TIME" is now read as it is, with no repair)
+    result = runner.invoke(app, ["run", "bread_maker_1", "t01", "--belief", "faulty:0.3:display"])
     assert result.exit_code == 0, result.output
     assert "✗ mismatch" in result.output and "repair:" in result.output
     assert "success:" in result.output and "SPL" in result.output

@@ -233,3 +233,133 @@ def test_a_bare_number_is_not_read_out_of_a_lamp_like_1_4() -> None:
     reader = DisplayReader(model)
     assert not any("keep_warm" in h.values for h in reader.read("1-4  BOLD").hypotheses)
     assert any(h.values.get("keep_warm") == 3 for h in reader.read("3 h  BOLD  1-4").hypotheses)
+
+
+DELAYED_WASHER = """
+controls: [{id: prog}, {id: delay}, {id: up}]
+variables:
+  programme: {type: discrete, values: [cotton, wool, quick], label: PROG}
+  delay_on: {type: discrete, values: ["off", "on"], label: END}
+  end_time: {type: time, ranges: [["00:00:00", "23:30:00", 1800]], format: "hh:mm", label: END}
+actions:
+  press_prog: {control: prog}
+  press_delay: {control: delay}
+  press_up: {control: up}
+features:
+  programme: [{actions: [press_prog], variable: programme, effect: next}]
+  delay:
+    - {actions: [press_delay], variable: delay_on, effect: toggle}
+    - {actions: [press_up], variable: end_time, effect: next}
+display:
+  idle: "{programme}"
+  indicators: [delay_on]
+"""
+
+
+def test_a_time_in_dashes_is_shown_blank_and_its_switch_is_off() -> None:
+    # a finish time switched off shows dashes in its clock's places; the switch's lamp text is
+    # the time's own label, so the words tell the switch only by what follows them
+    reader = DisplayReader(model_from(DELAYED_WASHER))
+    (blank,) = [h for h in reader.read("END --:--").hypotheses if h.screen.variable == "end_time"]
+    assert blank.absent == {"end_time"} and blank.lamps["delay_on"] == {"off"}
+    (shown,) = [h for h in reader.read("END 06:30").hypotheses if h.screen.variable == "end_time"]
+    assert shown.values == {"end_time": "06:30:00"} and shown.lamps["delay_on"] == {"on"}
+
+
+def test_a_label_in_dashes_beside_another_screen_is_no_lit_lamp() -> None:
+    # "END --:--" after the programme: the finish time shown blank, not the delay lamp lit, and
+    # not the finish time's screen either (the programme's is the one on show)
+    reader = DisplayReader(model_from(DELAYED_WASHER))
+    readings = reader.read("PROG wool  MODE 2  END --:--").hypotheses
+    assert readings and all(h.values == {"programme": "wool"} for h in readings)
+    assert all(h.lamps["delay_on"] == {"off"} for h in readings)
+
+
+def test_settings_shown_side_by_side_are_read_each_by_its_own_screen() -> None:
+    # the belief knows "MENU 2" and "BROWN light" only as screens of their own; the panel
+    # prints them together after a running word. Each is read, and "light" (a browning
+    # value) is not the LIGHT lamp
+    model = model_from(
+        """
+        controls: [{id: menu}, {id: brown}, {id: lamp}, {id: go}]
+        variables:
+          menu: {type: numeric, ranges: [[1, 6, 1]], label: MENU}
+          browning: {type: discrete, values: [light, dark], label: BROWN}
+          lamp: {type: discrete, values: ["off", "on"], label: LIGHT}
+          running: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "WORKING"}}
+        actions:
+          press_menu: {control: menu}
+          press_brown: {control: brown}
+          press_lamp: {control: lamp}
+          press_go: {control: go}
+        features:
+          menu: [{actions: [press_menu], variable: menu, effect: next}]
+          browning: [{actions: [press_brown], variable: browning, effect: next}]
+          lamp: [{actions: [press_lamp], variable: lamp, effect: toggle}]
+          go: [{actions: [press_go], variable: running, effect: toggle}]
+        display:
+          indicators: [lamp]
+        """
+    )
+    reader = DisplayReader(model)
+    (working,) = [
+        h
+        for h in reader.read("WORKING  MENU 2  BROWN light").hypotheses
+        if h.screen.variable == "running"
+    ]
+    assert working.value("menu") == 2 and working.value("browning") == "light"
+    assert working.lamps["lamp"] == {"off"}
+
+
+def test_a_one_word_lamp_shortened_on_the_display_is_still_its_lamp() -> None:
+    # the manual names the lamp SPINNING, the panel prints SPIN; a word that merely starts
+    # like it (SPINACH, a menu value) is no lamp
+    model = model_from(
+        """
+        controls: [{id: menu}, {id: spin}]
+        variables:
+          menu: {type: discrete, values: [soup, spinach], label: MENU}
+          spinning: {type: discrete, values: ["off", "on"], label: SPINNING}
+        actions:
+          press_menu: {control: menu}
+          press_spin: {control: spin}
+        features:
+          menu: [{actions: [press_menu], variable: menu, effect: next}]
+          spin: [{actions: [press_spin], variable: spinning, effect: toggle}]
+        display:
+          idle: "{menu}"
+          indicators: [spinning]
+        """
+    )
+    reader = DisplayReader(model)
+    (lit,) = [h for h in reader.read("soup  SPIN").hypotheses if h.screen.kind == "idle"]
+    assert lit.lamps["spinning"] == {"on"}
+    (dark,) = [h for h in reader.read("spinach").hypotheses if h.screen.kind == "idle"]
+    assert dark.values == {"menu": "spinach"} and dark.lamps["spinning"] == {"off"}
+
+
+def test_a_label_of_two_words_may_be_shown_by_its_last_word_alone() -> None:
+    # the manual calls it DRY TIME, the narrow panel prints TIME; with a COOK TIME beside it
+    # the word alone would say nothing, so it is not read so
+    text = """
+        controls: [{id: dry}, {id: cook}]
+        variables:
+          dry_time: {type: time, ranges: [["00:10:00", "01:00:00", 600]], label: DRY TIME}
+          OTHER
+        actions:
+          press_dry: {control: dry}
+          press_cook: {control: cook}
+        features:
+          dry: [{actions: [press_dry], variable: dry_time, effect: next}]
+          cook: [{actions: [press_cook], variable: cook_level, effect: next}]
+        """
+    alone = DisplayReader(
+        model_from(text.replace("OTHER", "cook_level: {type: discrete, values: [a, b]}"))
+    )
+    assert focus_readings(alone, "TIME 40 min", "dry_time") == [{"dry_time": "00:40:00"}]
+    beside = DisplayReader(
+        model_from(
+            text.replace("OTHER", "cook_level: {type: discrete, values: [a, b], label: COOK TIME}")
+        )
+    )
+    assert focus_readings(beside, "TIME 40 min", "dry_time") == []

@@ -579,10 +579,11 @@ def test_a_key_that_changed_nothing_shown_is_no_sign_of_a_procedure_entered_wron
 
 def test_a_time_read_in_the_wrong_display_style_is_learnt_from_the_walk() -> None:
     truth = example("toaster_oven_dial")
-    # the reader's label and style both differ from what the panel prints ("TIME 25 min")
+    # the reader's label and style both differ from what the panel prints ("TIME 25 min"; a
+    # label "COOK TIME" would be read by its last word alone, in any style)
     belief = example(
         "toaster_oven_dial",
-        ('    format: "min"\n    label: "TIME"', '    format: "h:mm"\n    label: "COOK TIME"'),
+        ('    format: "min"\n    label: "TIME"', '    format: "h:mm"\n    label: "COOKING TIMER"'),
     )
     goal = {"function": "bake", "temperature": 200, "timer": "00:25:00"}
     episode, reached = run(truth, belief, goal)

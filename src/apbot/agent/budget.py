@@ -27,7 +27,16 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 OnceKind = Literal[
-    "inspect", "guard", "unreachable", "absorbed", "entry", "template", "case", "discover", "side"
+    "inspect",
+    "guard",
+    "unreachable",
+    "absorbed",
+    "entry",
+    "template",
+    "case",
+    "discover",
+    "side",
+    "start",
 ]
 RepeatKind = Literal["value", "procedure", "display"]
 MAX_SAME_REPAIR = 3  # the same thing going wrong this often in a row: give up

@@ -13,6 +13,7 @@ from __future__ import annotations
 from collections.abc import Collection
 from typing import TYPE_CHECKING
 
+from apbot.agent.case_starts import learn_start
 from apbot.agent.perception import MISSING
 from apbot.model.domain import ValueProblem, normalise
 from apbot.model.effects import default_effect
@@ -121,8 +122,11 @@ def glance(session: Session, names: Collection[str]) -> bool:
         )
         if route is None:
             continue
+        before = session.belief.value(name)
+        done = None
         for action in route:
-            session.press(session.planned(action), exploring=True)
+            done = session.press(session.planned(action), exploring=True)
+        learn_start(session, name, before, done)
         if session.shown(name) is MISSING:
             # the look may have moved it, and the display did not say to what
             session.unread.add(name)

@@ -271,6 +271,8 @@ class DisplayReader:
             elif kind == "outside":
                 outside[name] = value
             elif kind == "absent":
+                if partial and raw.strip() != ABSENT_TEXT:
+                    return None  # a time in dashes beside other text: a lamp's, not the screen
                 absent.add(name)
         lamps: dict[str, frozenset[Any]] = {}
         if not partial and not self._dark(screen):
@@ -281,7 +283,12 @@ class DisplayReader:
             lamps = allowed_by_lamps
         elif not self._dark(screen):  # lamps among words the belief does not know
             rest = whole[: match.start()] + "  " + whole[match.end() :] if whole else ""
+            beside, rest = self._beside(rest, screen.variable, parents)
             lamps = self._lamps_among(rest, screen.variable)
+            for name, value in beside.items():
+                lamps.setdefault(name, frozenset({value}))
+        if not self._dark(screen):
+            lamps.update(self._switched_by_label(screen, absent))
         for name, allowed in lamps.items():  # a value the screen printed wins over its lamp
             if name in values and values[name] not in allowed:
                 return None
@@ -292,7 +299,7 @@ class DisplayReader:
         None) for digits shown as typed that are no value of the domain, or None."""
         spec = self._specs[name]
         text = raw.strip()
-        if text == ABSENT_TEXT:
+        if text == ABSENT_TEXT or (isinstance(spec, TimeVariable) and _DASHED_TIME.fullmatch(text)):
             return "absent", None
         domain = self._domain(name, known)
         if domain is not None:
@@ -324,7 +331,7 @@ class DisplayReader:
         texts = self._lamp_words.findall(lit) if lit.strip() else []
         if lit.strip() and _squash("".join(texts)) != _squash(lit):
             return None
-        on = {_squash(t) for t in texts}
+        on = {self._lamp_shortened.get(_squash(t), _squash(t)) for t in texts}
         allowed: dict[str, frozenset[Any]] = {}
         for name, by_value in self._lamp_table.items():
             if name == focus:
@@ -336,10 +343,64 @@ class DisplayReader:
                 allowed[name] = frozenset(chosen)
         return allowed
 
+    def _beside(
+        self, rest: str, focus: str | None, parents: dict[str, Any]
+    ) -> tuple[dict[str, Any], str]:
+        """Other settings printed by their own labelled screen (``CRUST medium``) in the text
+        around a screen found inside it: a panel that shows several settings side by side
+        shows each as it would alone (a value of the belief's domain, found once). Also the
+        text without them: their words are no lamps (``light`` of ``CRUST light``)."""
+        found: dict[str, list[Any]] = {}
+        spans: list[tuple[int, int]] = []
+        for pattern in self._patterns:
+            other = pattern.screen
+            if (
+                other.kind != "focus"
+                or other.variable in (None, focus)
+                or other.fixed
+                or pattern.search is None
+                or "{label}" not in other.template
+                or len(pattern.fields) != 1
+            ):
+                continue
+            ((group, name),) = pattern.fields
+            for match in pattern.search.finditer(rest):
+                outcome = self._interpret(name, match.group(group), parents)
+                if outcome is not None and outcome[0] == "value":
+                    found.setdefault(name, []).append(outcome[1])
+                    spans.append(match.span())
+        for start, end in sorted(spans, reverse=True):
+            rest = rest[:start] + " " * (end - start) + rest[end:]
+        return {name: values[0] for name, values in found.items() if len(set(values)) == 1}, rest
+
+    def _switched_by_label(self, screen: Screen, absent: set[str]) -> dict[str, frozenset[Any]]:
+        """On/off lamps whose lit text is the label this screen printed for its setting (``READY
+        AT`` is both a finish-time switch's lamp and the finish time's label): the words are
+        the setting's, so they tell the lamp by the value after them: a value shown means the
+        switch is on, dashes (``READY AT --:--``) that it is off."""
+        name = screen.variable
+        if screen.kind != "focus" or name is None or "{label}" not in screen.template:
+            return {}
+        label = _squash(self._specs[name].display_label(name))
+        switched: dict[str, frozenset[Any]] = {}
+        for other, by_value in self._lamp_table.items():
+            if (other, name) not in self._switches:
+                continue  # a lamp of some other part of the panel that happens to share words
+            lit = [(v, t) for v, t in by_value if t]
+            unlit = [v for v, t in by_value if not t]
+            if len(lit) == 1 and len(unlit) == 1 and _squash(lit[0][1]) == label:
+                switched[other] = frozenset(unlit if name in absent else [lit[0][0]])
+        return switched
+
     def _lamps_among(self, rest: str, focus: str | None) -> dict[str, frozenset[Any]]:
         """Indicator values allowed by the lamp words found as whole words in ``rest`` (the
         text around a screen found inside it): a lamp whose words are nowhere on a lit
         display is unlit, whatever else the display shows that the belief cannot print."""
+        blanked = _regex(
+            rf"(?<!\w)(?:{self._lamp_words.pattern})\s+(?:{_DASHED_TIME.pattern}|--)(?![\w:-])",
+            re.IGNORECASE,
+        )
+        rest = blanked.sub("  ", rest)  # a label before dashes is a setting shown blank
         whole_words = _regex(rf"(?<!\w)(?:{self._lamp_words.pattern})(?!\w)", re.IGNORECASE)
         found = " ".join(whole_words.findall(rest))
         allowed = self._lamps(found, focus)
@@ -382,9 +443,52 @@ class DisplayReader:
         return table
 
     @cached_property
+    def _switches(self) -> frozenset[tuple[str, str]]:
+        """(switch, setting) pairs of one feature: a step toggles the switch, a later step
+        adjusts the setting (a finish-time function switched on, then its time set)."""
+        pairs = set()
+        for steps in self.belief.features.values():
+            for index, step in enumerate(steps):
+                if step.variable is None or step.effect != "toggle":
+                    continue
+                pairs |= {(step.variable, s.variable) for s in steps[index + 1 :] if s.variable}
+        return frozenset(pairs)
+
+    @cached_property
+    def _last_words(self) -> dict[str, str]:
+        """Per setting with a label of several words, its last word where it is no word of
+        any other label (a panel too narrow for ``DRY TIME`` prints ``TIME``; with a ``COOK
+        TIME`` beside it, ``TIME`` would say nothing)."""
+        labels = {n: s.display_label(n).split() for n, s in self._specs.items() if s.visible}
+        found = {}
+        for name, words in labels.items():
+            last = words[-1] if len(words) > 1 else ""
+            if len(last) < 3 or not last.isalpha():
+                continue
+            others = [w.casefold() for n, ws in labels.items() if n != name for w in ws]
+            if last.casefold() not in others:
+                found[name] = last
+        return found
+
+    @cached_property
+    def _lamp_shortened(self) -> dict[str, str]:
+        """A one-word lamp as the panel may shorten it to its first letters (``ROT`` for
+        ``ROTATE``; at least three, as for labels), by the lamp it can only be (case-folded).
+        Never spelt out longer: ``rotisserie`` on a display is no ``ROT`` lamp."""
+        full = {_squash(t) for rows in self._lamp_table.values() for _, t in rows if t}
+        shortened: dict[str, set[str]] = {}
+        for text in full:
+            if text.isalpha():
+                for end in range(3, len(text)):
+                    shortened.setdefault(text[:end], set()).add(text)
+        return {s: next(iter(t)) for s, t in shortened.items() if len(t) == 1 and s not in full}
+
+    @cached_property
     def _lamp_words(self) -> re.Pattern[str]:
         texts = sorted(
-            {t for rows in self._lamp_table.values() for _, t in rows if t}, key=_by_length
+            {t for rows in self._lamp_table.values() for _, t in rows if t}
+            | set(self._lamp_shortened),
+            key=_by_length,
         )
         if not texts:
             return _regex(r"(?!x)x")
@@ -452,7 +556,7 @@ class DisplayReader:
             position = match.end()
             name = match.group(1)
             if name == "label":
-                parts.append(_label_pattern(label))
+                parts.append(_label_pattern(label, self._last_words.get(focus or "")))
                 continue
             if name == "value":
                 if focus is None:
@@ -510,12 +614,17 @@ class DisplayReader:
         if isinstance(spec, DiscreteVariable) and loose:
             alternatives.append(r"\S+(?: \S+)*?")
         elif isinstance(spec, TimeVariable):
+            alternatives.append(_DASHED_TIME.pattern)
             alternatives.append(r"\d+(?::\d{1,2}){0,2}(?:\s?(?:h|hr|hrs|min|mins|s|sec))?")
         elif not isinstance(spec, DiscreteVariable):
             unit = rf"(?:\s?{re.escape(spec.unit)})?" if spec.unit else ""
             alternatives.append(rf"[-+]?\d+(?:[.,]\d+)?{unit}")
         return "|".join(alternatives)
 
+
+_DASHED_TIME = re.compile(r"-{1,2}(?::-{2}){1,2}")
+"""A time printed as dashes in its clock's places (``--:--``, ``-:--:--``): a time that is not
+set, shown blank like ``--`` (a finish time switched off, a delay not yet entered)."""
 
 # value patterns by variable kind, definition and looseness
 _VALUE_PATTERNS: dict[tuple[str, str, bool], str] = {}
@@ -535,14 +644,16 @@ def _focus_templates(spec: AnyVariable) -> list[tuple[str, Any]]:
     return found
 
 
-def _label_pattern(label: str) -> str:
+def _label_pattern(label: str, last: str | None = None) -> str:
     """A setting's label as the display may print it: as written, or shortened or spelt out
     from its first three letters (``TEMP`` for ``TEMPERATURE``, ``WATER`` for ``WATE``) —
-    displays abbreviate, and manuals copy their labels inexactly."""
+    displays abbreviate, and manuals copy their labels inexactly. ``last``: the label's last
+    word, which the display may print alone (``TIME`` for ``DRY TIME``)."""
     first = label.split()[0] if label.split() else ""
+    alone = f"|{re.escape(last)}" if last else ""
     if len(first) < 3 or not first[:3].isalpha():
-        return _literal(label)
-    return rf"(?:{_literal(label)}|{re.escape(first[:3])}[^\W\d_]*)"
+        return rf"(?:{_literal(label)}{alone})" if alone else _literal(label)
+    return rf"(?:{_literal(label)}|{re.escape(first[:3])}[^\W\d_]*{alone})"
 
 
 def _literal(text: str) -> str:

@@ -107,6 +107,19 @@ def redefine_domain(
     return _rebuild(data)
 
 
+def set_case_start(model: ApplianceModel, name: str, case: str, value: Any) -> ApplianceModel:
+    """The model with the parent's ``case`` starting ``name`` at ``value``."""
+    data = _dump(model)
+    cases = data["variables"][name]["cases"]
+    if isinstance(cases[case], list):  # a discrete case written as its bare list of values
+        cases[case] = {"values": cases[case]}
+    spec = model.variables[name]
+    cases[case]["initial"] = (
+        format_hms(parse_hms(str(value))) if isinstance(spec, TimeVariable) else value
+    )
+    return _rebuild(data)
+
+
 def _magnitude(spec: Any, value: Any) -> float:
     if isinstance(spec, TimeVariable) and isinstance(value, str):
         return float(parse_hms(value))
