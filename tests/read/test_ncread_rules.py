@@ -1,0 +1,37 @@
+"""Rules from the second blind new-category set (benchmarks/data/newcats), each on a small
+manual of our own words."""
+
+from __future__ import annotations
+
+from apbot.model.validate import check_model
+from apbot.read import read_manual
+from apbot.read.value_spans import expand_spans
+
+# a waffle iron whose browning dial is listed in the specification table with its numbered
+# detents written as one span
+WAFFLE = """
+SPECIFICATIONS
+
+  Model                WB-10                      WB-20
+  ------------------   ------------------------   ------------------------
+  Rated power          1200 W                     1400 W
+  Browning levels      OFF, KEEP WARM, 1-6, MAX   OFF, KEEP WARM, 1-6, MAX
+
+CONTROLS
+
+The BROWNING dial clicks into each position and stops at both ends.
+"""
+
+
+def test_a_span_of_numbered_positions_in_a_list_is_one_value_per_position() -> None:
+    model = read_manual(WAFFLE, ["turn_browning_cw", "turn_browning_ccw"]).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    values = [v.values for v in model.variables.values() if v.type == "discrete"]
+    assert ["off", "keep warm", "1", "2", "3", "4", "5", "6", "max"] in values
+
+
+def test_a_span_is_kept_as_it_is_without_a_named_position_or_when_too_long() -> None:
+    assert expand_spans(["1-2", "3-4", "5-6"]) == ["1-2", "3-4", "5-6"]
+    assert expand_spans(["off", "0-60"]) == ["off", "0-60"]
+    assert expand_spans(["low", "2–4", "high"]) == ["low", "2", "3", "4", "high"]
+
