@@ -35,3 +35,35 @@ def test_a_span_is_kept_as_it_is_without_a_named_position_or_when_too_long() -> 
     assert expand_spans(["off", "0-60"]) == ["off", "0-60"]
     assert expand_spans(["low", "2–4", "high"]) == ["low", "2", "3", "4", "high"]
 
+
+# an aroma diffuser's key table: a short-press column with each key's cycle, a hold column
+# where two keys name each other for the key lock and one key's hold switches something
+DIFFUSER = """
+KEYS
+
+  Key        Short press                            Press and hold
+  --------   ------------------------------------   ----------------------------
+  POWER      on / off                               -
+  MODE       CALM → FOCUS → SLEEP → CALM ...        with TIMER, 3 s: key lock
+  GLOW       lamp colour red → green → blue → red   3 s: glow on / off
+  TIMER      off → 1H → 3H → 6H → off               with MODE, 3 s: key lock
+
+The diffuser starts in CALM with the timer off.
+"""
+DIFFUSER_ACTIONS = [
+    "press_power",
+    "press_mode",
+    "press_glow",
+    "hold_glow",
+    "press_timer",
+    "hold_mode_and_timer",
+]
+
+
+def test_a_key_table_row_is_read_within_its_own_cell_and_for_its_own_key() -> None:
+    model = read_manual(DIFFUSER, DIFFUSER_ACTIONS).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    timer = next(v for n, v in model.variables.items() if n.startswith("timer"))
+    assert getattr(timer, "values", None) != ["calm", "focus", "sleep"]  # MODE's row
+    assert timer.type == "numeric" and timer.ranges[-1][1] == 6
+
