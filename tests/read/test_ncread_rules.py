@@ -67,3 +67,29 @@ def test_a_key_table_row_is_read_within_its_own_cell_and_for_its_own_key() -> No
     assert getattr(timer, "values", None) != ["calm", "focus", "sleep"]  # MODE's row
     assert timer.type == "numeric" and timer.ranges[-1][1] == 6
 
+
+def test_an_on_off_in_the_hold_column_leaves_the_short_press_its_cycle() -> None:
+    model = read_manual(DIFFUSER, DIFFUSER_ACTIONS).model
+    pressed = [f for fs in model.features.values() for f in fs if f.actions == ["press_glow"]]
+    assert pressed and pressed[0].effect == "next"
+    assert model.variables[pressed[0].variable].values == ["red", "green", "blue"]
+
+
+# a two-zone griddle: the zone key's cycle is one sentence, an on/off about the zones another
+GRIDDLE = """
+CONTROLS
+
+SIDE   Chooses which half of the griddle heats. Each press moves on by one:
+       BOTH (both lamps lit) > LEFT only > RIGHT only > BOTH ...
+TIMER  Sets the timer in minutes.
+
+TIPS
+
+With AUTO OFF switched on, the heated sides also switch off when the timer ends.
+"""
+
+
+def test_a_cycle_of_named_values_beats_an_on_off_said_elsewhere() -> None:
+    model = read_manual(GRIDDLE, ["press_side", "press_timer_up", "press_timer_down"]).model
+    side = model.variables["side"]
+    assert side.values == ["both", "left", "right"]

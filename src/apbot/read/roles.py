@@ -47,6 +47,8 @@ from apbot.read.roles_pads import (
 )
 from apbot.read.roles_switched import switched_time
 from apbot.read.shapes import CHOICE_WORDS, GENERIC_DIALS, Evidence, adjuster_direction
+from apbot.read.text import Unit
+from apbot.read.values import ON_OFF_RE
 
 
 def assign(b: Builder) -> None:
@@ -149,6 +151,7 @@ def assign(b: Builder) -> None:
         own_toggle = (
             ev.toggle_at is not None
             and any(ev.toggle_at in b.labels[c].mentions for c in key.controls if c in b.labels)
+            and not _named_cycle(ev)
         ) or (key.token in options and not ev.values)
         if key.token in options and ev.toggle_at is None:
             ev.toggle_at = options[key.token]
@@ -213,6 +216,20 @@ def assign(b: Builder) -> None:
     standby_only(b)
 
 
+def _named_cycle(ev: Evidence) -> bool:
+    """Three or more named values the key steps through ("BOTH > LOWER only > UPPER only"), read
+    apart from the on/off wording ("the plates switch off when the timer ends"): a selector,
+    whose list says more than a word about switching somewhere else."""
+    values = ev.values or []
+    return (
+        len(values) >= 3
+        and not {"on", "off"} & set(values)
+        and not numeric_list(values)
+        and ev.values_at is not None
+        and ev.values_at != ev.toggle_at
+    )
+
+
 def _hold_row(b: Builder, key: ActionInfo, at: int | None) -> bool:
     """Whether unit ``at`` is the legend row for holding this key ("FAN (hold 3 s)  switches
     the ioniser on or off") on a panel where the key is also held: not the press's on/off."""
@@ -223,7 +240,21 @@ def _hold_row(b: Builder, key: ActionInfo, at: int | None) -> bool:
         return False
     label = re.escape(b.labels[control].text)
     held = re.compile(rf"^\W*{label}\s*\(?\s*(?:(?:press|touch|push)\s+and\s+)?hold", re.I)
-    return bool(held.match(b.manual.units[at].text))
+    return bool(held.match(b.manual.units[at].text)) or _hold_cell(b.manual.units[at])
+
+
+def _hold_cell(unit: Unit) -> bool:
+    """A key table's row ("| MIST | level 1 → 2 → 3 | 3 s: warm mist on / off |") whose on/off
+    is only in the column for holding the key (headed "hold", or a cell led by the seconds)."""
+    if not unit.cells:
+        return False
+    header = list(unit.header) + [""] * len(unit.cells)
+    said = [k for k, cell in enumerate(unit.cells) if ON_OFF_RE.search(cell)]
+    return bool(said) and all(
+        re.search(r"\bhold|\blong\b", header[k], re.I)
+        or re.match(r"\s*(?:hold\b|\d+(?:[.,]\d+)?\s*s(?:ec\w*)?\b)", unit.cells[k], re.I)
+        for k in said
+    )
 
 
 def _turned_after_keys(b: Builder, dial: str, keys: list[ActionInfo]) -> bool:
