@@ -93,3 +93,20 @@ def test_a_cycle_of_named_values_beats_an_on_off_said_elsewhere() -> None:
     model = read_manual(GRIDDLE, ["press_side", "press_timer_up", "press_timer_down"]).model
     side = model.variables["side"]
     assert side.values == ["both", "left", "right"]
+
+
+# a milk frother whose START key has a long press of its own
+FROTHER = """
+USING THE FROTHER
+
+Press START to begin frothing; press it again to stop.
+Press FOAM to step through LIGHT → DENSE → HOT MILK.
+To turn STAY HOT on or off, press and hold START for 2 seconds. The STAY HOT lamp lights.
+"""
+
+
+def test_holding_start_switches_the_setting_the_manual_names_instead_of_stopping() -> None:
+    model = read_manual(FROTHER, ["press_start", "hold_start", "press_foam"]).model
+    held = [(n, f) for n, fs in model.features.items() for f in fs if f.actions == ["hold_start"]]
+    assert held and held[0][1].effect == "toggle"
+    assert held[0][1].variable == "stay_hot"
