@@ -110,3 +110,22 @@ def test_holding_start_switches_the_setting_the_manual_names_instead_of_stopping
     held = [(n, f) for n, fs in model.features.items() for f in fs if f.actions == ["hold_start"]]
     assert held and held[0][1].effect == "toggle"
     assert held[0][1].variable == "stay_hot"
+
+
+# a two-ring hot plate: the ring key's choice written with a noun after each name, and a row
+# for two keys held together whose on/off is the lock's
+HOTPLATE = """
+KEYS
+
+  RING          Changes between the LEFT ring and the RIGHT ring. Its lamp shows
+                which ring the dial sets.
+  TIMER         Sets the timer.
+  RING + TIMER  Held together for 3 seconds: key lock on / off (LOCK lamp).
+"""
+
+
+def test_names_with_a_shared_noun_are_the_values_and_a_held_pair_row_no_toggle() -> None:
+    model = read_manual(HOTPLATE, ["press_ring", "press_timer", "hold_ring_and_timer"]).model
+    pressed = [f for fs in model.features.values() for f in fs if f.actions == ["press_ring"]]
+    assert pressed and pressed[0].effect in ("next", "toggle")
+    assert model.variables[pressed[0].variable].values == ["left", "right"]

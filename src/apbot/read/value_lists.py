@@ -121,6 +121,16 @@ def _arrow_cell(text: str) -> str:
     return arrowed[0] if len(cells) > 1 and len(arrowed) == 1 else text
 
 
+def _shared_noun_dropped(items: list[str]) -> list[str]:
+    """Names in capitals each followed by the same noun ("between the BODY zone and the FEET
+    zone", "the LEFT burner or the RIGHT burner"): the names alone are the values."""
+    found = [re.fullmatch(r"(?:the\s+)?([A-Z][A-Z0-9-]*)\s+([a-z]{3,})", i) for i in items]
+    if len(items) < 2 or not all(found):
+        return items
+    nouns = {m.group(2) for m in found if m}
+    return [m.group(1) for m in found if m] if len(nouns) == 1 else items
+
+
 def find_list(text: str) -> tuple[list[str], str] | None:
     """A list of values in one sentence, and how it was written ("arrows", "list")."""
     text = _arrow_cell(text)
@@ -176,7 +186,7 @@ def find_list(text: str) -> tuple[list[str], str] | None:
             _clean_item(p)
             for p in re.split(r",\s*|\s*/\s*|\s*[·•|]\s*|\s{2,}|\s+or\s+|\s+and\s+", segment)
         ]
-        items = [i for i in items if i]
+        items = _shared_noun_dropped([i for i in items if i])
         if _range_table_header(items):
             continue
         caps = sum(1 for i in items if i.upper() == i and any(c.isalpha() for c in i))
