@@ -129,3 +129,20 @@ def test_names_with_a_shared_noun_are_the_values_and_a_held_pair_row_no_toggle()
     pressed = [f for fs in model.features.values() for f in fs if f.actions == ["press_ring"]]
     assert pressed and pressed[0].effect in ("next", "toggle")
     assert model.variables[pressed[0].variable].values == ["left", "right"]
+
+
+# an embroidery machine: designs chosen by number on the digit keys, closed with ENTER
+EMBROIDERY = """
+PANEL
+
+  0 - 9     Digit keys: type the design you want (see the design list).
+  ENTER     Ends the entry of a design number.
+  START     Starts stitching the design.
+"""
+
+
+def test_a_key_that_ends_the_entry_of_a_number_names_the_setting_after_that_number() -> None:
+    digits = [f"press_{n}" for n in range(10)]
+    model = read_manual(EMBROIDERY, [*digits, "press_enter", "press_start"]).model
+    assert "design" in model.variables
+    assert "enter" not in model.variables

@@ -8,6 +8,7 @@ import re
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.labels import words
+from apbot.read.roles_confirm import confirmed_noun
 from apbot.read.shapes import GROUP_NOUNS, SETTING_NOUNS, Evidence
 
 
@@ -158,6 +159,9 @@ def var_name(b: Builder, key: ActionInfo) -> str:
     held = hold_use(b, key)
     if held:
         return "_".join(words(held))
+    confirmed = confirmed_noun(b, key)
+    if confirmed:  # "OK  Ends the entry of a stitch number": the stitch
+        return confirmed
     lab = b.labels.get(key.controls[0])
     if key.skill != "press" or lab is None or lab.line is None:
         return base
