@@ -146,3 +146,24 @@ def test_a_key_that_ends_the_entry_of_a_number_names_the_setting_after_that_numb
     model = read_manual(EMBROIDERY, [*digits, "press_enter", "press_start"]).model
     assert "design" in model.variables
     assert "enter" not in model.variables
+
+
+# a toaster-grill whose keep-warm key says on/off in its own row, the programme list nearby
+TOASTER = """
+## Controls
+
+| Control | Use |
+|---|---|
+| MODE dial | Turn to pick a programme. |
+| START | Starts; press again to stop. |
+| WARM | Keep warm on/off. |
+
+The four programmes are printed around the dial, clockwise: GRILL, BAKE, TOAST, DEFROST.
+"""
+
+
+def test_a_key_whose_own_row_says_on_off_stays_a_switch_beside_a_list() -> None:
+    actions = ["turn_mode_cw", "turn_mode_ccw", "press_start", "press_warm"]
+    model = read_manual(TOASTER, actions).model
+    pressed = [f for fs in model.features.values() for f in fs if f.actions == ["press_warm"]]
+    assert pressed and pressed[0].effect == "toggle"

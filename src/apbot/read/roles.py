@@ -151,7 +151,7 @@ def assign(b: Builder) -> None:
         own_toggle = (
             ev.toggle_at is not None
             and any(ev.toggle_at in b.labels[c].mentions for c in key.controls if c in b.labels)
-            and not _named_cycle(ev)
+            and not _named_cycle(b, key, ev)
         ) or (key.token in options and not ev.values)
         if key.token in options and ev.toggle_at is None:
             ev.toggle_at = options[key.token]
@@ -216,17 +216,24 @@ def assign(b: Builder) -> None:
     standby_only(b)
 
 
-def _named_cycle(ev: Evidence) -> bool:
+def _named_cycle(b: Builder, key: ActionInfo, ev: Evidence) -> bool:
     """Three or more named values the key steps through ("BOTH > LOWER only > UPPER only"), read
-    apart from the on/off wording ("the plates switch off when the timer ends"): a selector,
-    whose list says more than a word about switching somewhere else."""
+    apart from an on/off said in passing ("the plates switch off when the timer ends"): a
+    selector. The key's own legend saying on/off ("| PREHEAT | Preheat on/off. |") stays a
+    switch, whatever list lies nearby."""
     values = ev.values or []
+    if ev.toggle_at is None or key.controls[0] not in b.labels:
+        return False
+    label = b.labels[key.controls[0]].text.upper()
+    legend = b.manual.units[ev.toggle_at].text.lstrip(" *|-•").upper()
     return (
         len(values) >= 3
         and not {"on", "off"} & set(values)
         and not numeric_list(values)
         and ev.values_at is not None
         and ev.values_at != ev.toggle_at
+        and bool(label)
+        and not legend.startswith(label)
     )
 
 
