@@ -167,3 +167,32 @@ def test_a_key_whose_own_row_says_on_off_stays_a_switch_beside_a_list() -> None:
     model = read_manual(TOASTER, actions).model
     pressed = [f for fs in model.features.values() for f in fs if f.actions == ["press_warm"]]
     assert pressed and pressed[0].effect == "toggle"
+
+
+# a hand mixer whose speed key's legend has a second line for holding it
+MIXER = """
+KEYS
+
+  SPEED       Short press: LOW > MEDIUM > HIGH > LOW ...
+              Hold for 2 seconds: turbo boost on/off (TURBO lamp).
+  POWER       Switches the mixer on or off.
+"""
+
+# a bedside lamp's key table with a column for holding each key
+BEDSIDE = """
+KEYS
+
+  Key       Short touch                  Touch and hold
+  -------   --------------------------   ----------------------
+  POWER     on / off                     -
+  TONE      warm → neutral → cool        2 s: wake-up sound on / off
+"""
+
+
+def test_the_hold_part_of_a_key_legend_names_the_toggle_the_hold_switches() -> None:
+    model = read_manual(MIXER, ["press_speed", "hold_speed", "press_power"]).model
+    held = [f for fs in model.features.values() for f in fs if f.actions == ["hold_speed"]]
+    assert held and held[0].effect == "toggle" and held[0].variable == "turbo_boost"
+    model = read_manual(BEDSIDE, ["press_power", "press_tone", "hold_tone"]).model
+    held = [f for fs in model.features.values() for f in fs if f.actions == ["hold_tone"]]
+    assert held and held[0].effect == "toggle" and held[0].variable == "wake_up_sound"

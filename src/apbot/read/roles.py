@@ -27,6 +27,7 @@ from apbot.read.roles_common import (
     var_name,
 )
 from apbot.read.roles_fixed import assign_locks, assign_power, assign_running, standby_only
+from apbot.read.roles_holdcell import held_toggle
 from apbot.read.roles_hourmin import assign_hour_minute, hour_minute_keys
 from apbot.read.roles_keyed import assign_keyed_amounts
 from apbot.read.roles_lists import (
@@ -153,6 +154,9 @@ def assign(b: Builder) -> None:
             and any(ev.toggle_at in b.labels[c].mentions for c in key.controls if c in b.labels)
             and not _named_cycle(b, key, ev)
         ) or (key.token in options and not ev.values)
+        if held_toggle(b, key):  # "Hold for 2 seconds: twin-needle mode on/off": the hold's own
+            own_toggle = True
+            ev = evidence[key.name] = replace(ev, toggle_at=ev.toggle_at or ev.values_at)
         if key.token in options and ev.toggle_at is None:
             ev.toggle_at = options[key.token]
         if own_toggle and switched_time(b, key, shared_pair):
