@@ -221,24 +221,32 @@ def assign(b: Builder) -> None:
 
 
 def _named_cycle(b: Builder, key: ActionInfo, ev: Evidence) -> bool:
-    """Three or more named values the key steps through ("BOTH > LOWER only > UPPER only"), read
-    apart from an on/off said in passing ("the plates switch off when the timer ends"): a
-    selector. The key's own legend saying on/off ("| PREHEAT | Preheat on/off. |") stays a
-    switch, whatever list lies nearby."""
+    """Three or more named values the key steps through, read in its own legend ("PLATE
+    Chooses which plates heat. Each press moves on by one: BOTH > LOWER only > UPPER only"),
+    and an on/off said elsewhere ("the plates switch off when the timer ends"): a selector. A
+    list beside another key's row ("| START | … |" then the programmes round the dial) is no
+    evidence against the key's own on/off."""
     values = ev.values or []
-    if ev.toggle_at is None or key.controls[0] not in b.labels:
+    if ev.toggle_at is None or ev.values_at is None or key.controls[0] not in b.labels:
         return False
-    label = b.labels[key.controls[0]].text.upper()
-    legend = b.manual.units[ev.toggle_at].text.lstrip(" *|-•").upper()
+    said = b.labels[key.controls[0]].mentions
+    own = ev.values_at in said or (
+        ev.values_at - 1 in said and not b.manual.units[ev.values_at].cells
+    )
     return (
         len(values) >= 3
         and not {"on", "off"} & set(values)
         and not numeric_list(values)
-        and ev.values_at is not None
         and ev.values_at != ev.toggle_at
-        and bool(label)
-        and not legend.startswith(label)
+        and own
+        and not _own_legend(b, key, ev.toggle_at)
     )
+
+
+def _own_legend(b: Builder, key: ActionInfo, at: int) -> bool:
+    """Unit ``at`` is the key's own legend: it starts with the key's printed name."""
+    label = b.labels[key.controls[0]].text.upper() if key.controls[0] in b.labels else ""
+    return bool(label) and b.manual.units[at].text.lstrip(" *|-•").upper().startswith(label)
 
 
 def _hold_row(b: Builder, key: ActionInfo, at: int | None) -> bool:
