@@ -30,6 +30,7 @@ from apbot.read.shapes import (
 )
 from apbot.read.shown import shown_words
 from apbot.read.text import Manual
+from apbot.read.value_spans import expand_spans
 from apbot.read.values import (
     Range,
     number,
@@ -150,6 +151,7 @@ class Builder(EvidenceReader):
     def add_discrete(self, name: str, values: list[str], label: str, ev: Evidence | None) -> str:
         name = self.unique(name, self.variables)
         values = _dedupe([_value_text(v) for v in values if _value_text(v)])
+        values = expand_spans(values)  # "OFF, WARM, 1-5, SEAR": five numbered positions
         initial = ev.initial if ev is not None else None
         if values in (["0", "i"], ["o", "i"]):  # a switch printed 0 / I: off and on
             values = ["off", "on"]

@@ -124,7 +124,9 @@ class EvidenceReader(ListReader, AnywhereReader):
                 if not re.search(r"key|button|control|pad|dial|knob|symbol|name", head):
                     continue  # a row describing the value the key names, not the key's setting
             quiet = _aside(units, i) or _header_row(units, i)
-            lists = [] if quiet else self._lists(i, i in mentions, tokens)
+            # "| MODE | AUTO → SLEEP | with TIMER, 3 s: lock |": MODE's row, whatever it names
+            theirs = bool(unit.cells) and _cell_key(_lead(unit.cells)) in other_keys
+            lists = [] if quiet or theirs else self._lists(i, i in mentions, tokens)
             for items, prio in lists:
                 if _keyish(items, others, own):
                     continue  # a list of keys ("DELAY, then + / −"), not of values

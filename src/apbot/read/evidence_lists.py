@@ -119,7 +119,7 @@ class ListReader:
         """Whether a sentence tells of holding two keys together, one of them this one, when
         the panel has that two-key hold ("press and hold SPIN and STEAM for 3 seconds: CL
         appears; hold them again to switch it off"): its on/off is the hold's, not the key's."""
-        if len(tokens) != 1 or not re.search(r"\bhold", text, re.IGNORECASE):
+        if len(tokens) != 1 or not re.search(r"\b(?:hold|held)", text, re.IGNORECASE):
             return False
         for info in self.infos:
             if len(info.controls) > 1 and tokens[0] in info.controls:

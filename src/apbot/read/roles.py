@@ -28,6 +28,7 @@ from apbot.read.roles_common import (
     var_name,
 )
 from apbot.read.roles_fixed import assign_locks, assign_power, assign_running, standby_only
+from apbot.read.roles_holdcell import held_toggle
 from apbot.read.roles_hourmin import assign_hour_minute, hour_minute_keys
 from apbot.read.roles_keyed import assign_keyed_amounts
 from apbot.read.roles_lists import (
@@ -48,6 +49,8 @@ from apbot.read.roles_pads import (
 )
 from apbot.read.roles_switched import switched_time
 from apbot.read.shapes import CHOICE_WORDS, GENERIC_DIALS, Evidence, adjuster_direction
+from apbot.read.text import Unit
+from apbot.read.values import ON_OFF_RE
 
 
 def assign(b: Builder) -> None:
@@ -159,7 +162,11 @@ def assign(b: Builder) -> None:
         own_toggle = (
             ev.toggle_at is not None
             and any(ev.toggle_at in b.labels[c].mentions for c in key.controls if c in b.labels)
+            and not _named_cycle(b, key, ev)
         ) or (key.token in options and not ev.values)
+        if held_toggle(b, key):  # "Hold for 2 seconds: twin-needle mode on/off": the hold's own
+            own_toggle = True
+            ev = evidence[key.name] = replace(ev, toggle_at=ev.toggle_at or ev.values_at)
         if key.token in options and ev.toggle_at is None:
             ev.toggle_at = options[key.token]
         if own_toggle and switched_time(b, key, shared_pair):
@@ -223,6 +230,35 @@ def assign(b: Builder) -> None:
     standby_only(b)
 
 
+def _named_cycle(b: Builder, key: ActionInfo, ev: Evidence) -> bool:
+    """Three or more named values the key steps through, read in its own legend ("PLATE
+    Chooses which plates heat. Each press moves on by one: BOTH > LOWER only > UPPER only"),
+    and an on/off said elsewhere ("the plates switch off when the timer ends"): a selector. A
+    list beside another key's row ("| START | … |" then the programmes round the dial) is no
+    evidence against the key's own on/off."""
+    values = ev.values or []
+    if ev.toggle_at is None or ev.values_at is None or key.controls[0] not in b.labels:
+        return False
+    said = b.labels[key.controls[0]].mentions
+    own = ev.values_at in said or (
+        ev.values_at - 1 in said and not b.manual.units[ev.values_at].cells
+    )
+    return (
+        len(values) >= 3
+        and not {"on", "off"} & set(values)
+        and not numeric_list(values)
+        and ev.values_at != ev.toggle_at
+        and own
+        and not _own_legend(b, key, ev.toggle_at)
+    )
+
+
+def _own_legend(b: Builder, key: ActionInfo, at: int) -> bool:
+    """Unit ``at`` is the key's own legend: it starts with the key's printed name."""
+    label = b.labels[key.controls[0]].text.upper() if key.controls[0] in b.labels else ""
+    return bool(label) and b.manual.units[at].text.lstrip(" *|-•").upper().startswith(label)
+
+
 def _hold_row(b: Builder, key: ActionInfo, at: int | None) -> bool:
     """Whether unit ``at`` is the legend row for holding this key ("FAN (hold 3 s)  switches
     the ioniser on or off") on a panel where the key is also held: not the press's on/off."""
@@ -233,7 +269,21 @@ def _hold_row(b: Builder, key: ActionInfo, at: int | None) -> bool:
         return False
     label = re.escape(b.labels[control].text)
     held = re.compile(rf"^\W*{label}\s*\(?\s*(?:(?:press|touch|push)\s+and\s+)?hold", re.I)
-    return bool(held.match(b.manual.units[at].text))
+    return bool(held.match(b.manual.units[at].text)) or _hold_cell(b.manual.units[at])
+
+
+def _hold_cell(unit: Unit) -> bool:
+    """A key table's row ("| MIST | level 1 → 2 → 3 | 3 s: warm mist on / off |") whose on/off
+    is only in the column for holding the key (headed "hold", or a cell led by the seconds)."""
+    if not unit.cells:
+        return False
+    header = list(unit.header) + [""] * len(unit.cells)
+    said = [k for k, cell in enumerate(unit.cells) if ON_OFF_RE.search(cell)]
+    return bool(said) and all(
+        re.search(r"\bhold|\blong\b", header[k], re.I)
+        or re.match(r"\s*(?:hold\b|\d+(?:[.,]\d+)?\s*s(?:ec\w*)?\b)", unit.cells[k], re.I)
+        for k in said
+    )
 
 
 def _turned_after_keys(b: Builder, dial: str, keys: list[ActionInfo]) -> bool:

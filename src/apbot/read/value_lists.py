@@ -134,8 +134,27 @@ def _after_case_label(head: list[str], rest: list[str]) -> list[str]:
     return run
 
 
+def _arrow_cell(text: str) -> str:
+    """A table row's one cell holding a run of arrows ("TIMER | off → 1H → 2H → off | with
+    MODE, 3 s: lock"): the list lies inside that cell, not across the row."""
+    cells = text.split(" | ")
+    arrowed = [c for c in cells if len(_ARROW.split(c)) >= 3]
+    return arrowed[0] if len(cells) > 1 and len(arrowed) == 1 else text
+
+
+def _shared_noun_dropped(items: list[str]) -> list[str]:
+    """Names in capitals each followed by the same noun ("between the BODY zone and the FEET
+    zone", "the LEFT burner or the RIGHT burner"): the names alone are the values."""
+    found = [re.fullmatch(r"(?:the\s+)?([A-Z][A-Z0-9-]*)\s+([a-z]{3,})", i) for i in items]
+    if len(items) < 2 or not all(found):
+        return items
+    nouns = {m.group(2) for m in found if m}
+    return [m.group(1) for m in found if m] if len(nouns) == 1 else items
+
+
 def find_list(text: str) -> tuple[list[str], str] | None:
     """A list of values in one sentence, and how it was written ("arrows", "list")."""
+    text = _arrow_cell(text)
     numbers = _NUMBER_LIST.search(text)
     if numbers:  # "3, 6 or 9 hours"
         items = [*re.split(r"\s*,\s*", numbers.group(1)), numbers.group(2)]
@@ -171,6 +190,12 @@ def find_list(text: str) -> tuple[list[str], str] | None:
         parts[0] = _clean_item(" ".join(capital) or " ".join(head[-2:]) or parts[0])
         if len(head) > 3 and not capital:
             parts[0] = _clean_item(head[-1])
+        if not capital and not _value_like(parts[0], False):
+            # "mist level 1 → 2 → 3", "night light off → dim": as many words as the others
+            size = max(len(p.split()) for p in parts[1:] if p) if any(parts[1:]) else 1
+            parts[0] = _clean_item(" ".join(head[-size:]))
+        # "BOTH → LOWER only → UPPER only": which one alone, the value is its name
+        parts = [re.sub(r"(?<=\S)\s+only$", "", p) for p in parts]
         if amount and len(parts) >= 3:  # "… in the order 1.0 LB → 1.5 LB": the amount first
             parts[0] = amount.group(1)
         items = [p for p in parts if p and re.search(r"\w", p)]  # "… → OFF → …": no item
@@ -188,7 +213,7 @@ def find_list(text: str) -> tuple[list[str], str] | None:
             _clean_item(p)
             for p in re.split(r",\s*|\s*/\s*|\s*[·•|]\s*|\s{2,}|\s+or\s+|\s+and\s+", segment)
         ]
-        items = [i for i in items if i]
+        items = _shared_noun_dropped([i for i in items if i])
         if _range_table_header(items):
             continue
         caps = sum(1 for i in items if i.upper() == i and any(c.isalpha() for c in i))

@@ -1,0 +1,37 @@
+"""What a confirming key's number is: the noun its legend says it ends the entry of.
+
+A key that only closes an entry typed on the number keys ("OK  Ends the entry of a stitch
+number", "ENTER confirms the programme number") names no setting itself; the setting is the
+thing whose number is typed, so the variable takes that noun rather than "ok" or "enter".
+"""
+
+from __future__ import annotations
+
+import re
+
+from apbot.read.actions import ActionInfo
+from apbot.read.build import Builder
+
+_CONFIRMS = re.compile(
+    r"\b(?:ends?|confirms?|completes?|finish(?:es)?|closes?|accepts?)\s+(?:the\s+)?"
+    r"(?:(?:entry|input)\s+of\s+(?:a|an|the)\s+)?([a-z]{3,})\s+(?:number|no\.|code)\b",
+    re.IGNORECASE,
+)
+
+
+def confirmed_noun(b: Builder, key: ActionInfo) -> str:
+    """The noun of the number this key confirms, read from the key's own legend (a row or
+    sentence that starts with its printed name); "" when the legend says no such thing."""
+    if key.skill != "press" or len(key.controls) != 1 or key.controls[0] not in b.labels:
+        return ""
+    label = b.labels[key.controls[0]].text
+    if not label:
+        return ""
+    for i in b.labels[key.controls[0]].mentions:
+        text = b.manual.units[i].text.lstrip(" *|-•")
+        if not text.upper().startswith(label.upper()):
+            continue
+        m = _CONFIRMS.search(text[len(label) :])
+        if m and m.group(1).lower() not in {"the", "your", "this", "key"}:
+            return m.group(1).lower()
+    return ""

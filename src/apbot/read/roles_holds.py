@@ -1,0 +1,42 @@
+"""What holding a start key switches, when the manual says so.
+
+Holding START is guessed to stop the programme when the manual is silent, but many panels give
+the long press a job of its own: "To switch AUTO OFF on: press and hold START/STOP for 3
+seconds", "Hold START 2 s to turn KEEP WARM on or off". A sentence that holds the key and
+switches a setting named in capitals on or off makes that setting a toggle of the hold.
+"""
+
+from __future__ import annotations
+
+import re
+
+from apbot.read.actions import ActionInfo
+from apbot.read.build import Builder
+
+# a setting printed in capitals, switched on or off ("switch AUTO OFF on", "turns KEEP WARM off")
+_SWITCHED = re.compile(
+    r"\b(?:[Ss]witch|[Tt]urn)(?:es|s|ed|ing)?\s+(?:the\s+)?"
+    r"(?P<name>[A-Z][A-Z0-9-]+(?: [A-Z][A-Z0-9-]+){0,2})\s+(?:on|off)\b"
+)
+
+
+def held_switch(b: Builder, info: ActionInfo) -> tuple[str, int] | None:
+    """The setting holding this key switches on or off, and the unit that says so; None when
+    no sentence both holds the key and switches a named setting."""
+    if info.skill != "hold" or not info.controls or info.controls[0] not in b.labels:
+        return None
+    label = b.labels[info.controls[0]].text
+    if not label:
+        return None
+    held = re.compile(
+        rf"\bhold(?:\s+down)?\s+(?:the\s+)?{re.escape(label)}(?!\w)|"
+        rf"(?<!\w){re.escape(label)}\s*\(?\s*(?:(?:press|touch|push)\s+and\s+)?hold",
+        re.IGNORECASE,
+    )
+    for i, unit in enumerate(b.manual.units):
+        if not held.search(unit.text):
+            continue
+        m = _SWITCHED.search(unit.text)
+        if m and m.group("name").upper() != label.upper():
+            return m.group("name"), i
+    return None
