@@ -196,3 +196,38 @@ def test_the_hold_part_of_a_key_legend_names_the_toggle_the_hold_switches() -> N
     model = read_manual(BEDSIDE, ["press_power", "press_tone", "hold_tone"]).model
     held = [f for fs in model.features.values() for f in fs if f.actions == ["hold_tone"]]
     assert held and held[0].effect == "toggle" and held[0].variable == "wake_up_sound"
+
+
+# a hot chocolate maker: TEMP opens a typed entry, OK only closes it and, held, locks the keys
+CHOCO_MAKER = """
+KEY FUNCTIONS
+
+ ①  POWER         Switches the frother on or off; your settings stay as long as it is
+                  plugged in.
+ ②  TEMP          Opens the temperature entry. Type it with the number keys.
+ ③  0 – 9         Number keys for the temperature.
+ ④  OK            Confirms an entry. Hold 3 s: key lock on/off.
+
+SETTING THE TEMPERATURE
+
+The milk is heated to any whole degree from 40 °C to 75 °C.
+
+  1. Press TEMP.
+  2. Type the temperature, e.g. 6 then 5 for 65 °C.
+  3. Press OK to confirm. A value outside 40–75 is refused.
+"""
+CHOCO_MAKER_ACTIONS = ["press_power", "press_temp", "press_ok", "hold_ok"] + [
+    f"press_{d}" for d in range(10)
+]
+
+
+def test_a_key_that_only_confirms_an_entry_is_not_a_setting_the_number_keys_type() -> None:
+    model = read_manual(CHOCO_MAKER, CHOCO_MAKER_ACTIONS).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    typed = [
+        step.variable
+        for steps in model.features.values()
+        for step in steps
+        if "press_6" in step.actions and step.variable
+    ]
+    assert typed and all(model.variables[v].label.upper().startswith("TEMP") for v in typed)

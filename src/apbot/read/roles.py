@@ -27,6 +27,7 @@ from apbot.read.roles_common import (
     used_actions,
     var_name,
 )
+from apbot.read.roles_confirm import ends_entry
 from apbot.read.roles_fixed import assign_locks, assign_power, assign_running, standby_only
 from apbot.read.roles_holdcell import held_toggle
 from apbot.read.roles_hourmin import assign_hour_minute, hour_minute_keys
@@ -194,6 +195,8 @@ def assign(b: Builder) -> None:
             var = b.add_number(name, lab, ev, cyclic=True)
             b.feature(f"set_{var}", [{"actions": [key.name], "variable": var, "effect": "next"}])
             b.note(f"features.set_{var}", "each press steps to the next value", ev.each_press_at)
+        elif ends_entry(b, key):
+            silent.append(key)  # "OK  Confirms an entry": the end of a typed entry, not its own
         elif ev.ranges or (ev.step and ev.toggle_at is None):
             entry_keys.append(key)
         elif digits and ev.keypad_at is not None and (ev.toggle_at is None or amount):
@@ -280,7 +283,9 @@ def _hold_cell(unit: Unit) -> bool:
     header = list(unit.header) + [""] * len(unit.cells)
     said = [k for k, cell in enumerate(unit.cells) if ON_OFF_RE.search(cell)]
     return bool(said) and all(
-        re.search(r"\bhold|\blong\b", header[k], re.I)
+        # (a real column head is short: "Press and hold", "Long press"; a first row taken for
+        # the head may say "kept as long as it is plugged in")
+        (re.search(r"\bhold|\blong\b", header[k], re.I) and len(header[k].split()) <= 4)
         or re.match(r"\s*(?:hold\b|\d+(?:[.,]\d+)?\s*s(?:ec\w*)?\b)", unit.cells[k], re.I)
         for k in said
     )

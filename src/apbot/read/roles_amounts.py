@@ -19,6 +19,7 @@ from apbot.read.roles_common import (
     token_of,
     var_name,
 )
+from apbot.read.roles_confirm import ends_entry
 from apbot.read.roles_lists import dial_amount, dial_ends, dial_list, list_evidence
 from apbot.read.shapes import CHOICE_WORDS, Evidence
 
@@ -55,7 +56,8 @@ def assign_amounts(
             steppers.append((cw, ccw))
     if not any(k.skill == "press" for k in entry_keys) and (steppers or digits):
         # (a key's hold that sets a timer leaves its press to set the key's own amount)
-        entry_keys = entry_keys + [k for k in silent if k.skill == "press"]
+        # (a key that only closes an entry, "OK  Confirms an entry", types nothing itself)
+        entry_keys = entry_keys + [k for k in silent if k.skill == "press" and not ends_entry(b, k)]
         silent = [k for k in silent if k not in entry_keys]
     used_steppers: set[int] = set()
     used_digits = keyed_cook = False

@@ -35,3 +35,27 @@ def confirmed_noun(b: Builder, key: ActionInfo) -> str:
         if m and m.group(1).lower() not in {"the", "your", "this", "key"}:
             return m.group(1).lower()
     return ""
+
+
+# "OK  Confirms an entry", "ENTER  ends the input": a key that closes whatever is being typed
+_ENDS_ENTRY = re.compile(
+    r"\b(?:ends?|confirms?|completes?|finish(?:es)?|closes?|accepts?|stores?)\s+"
+    r"(?:the\s+|an?\s+|your\s+|each\s+)?(?:entry|entries|input|value\s+typed)\b",
+    re.IGNORECASE,
+)
+
+
+def ends_entry(b: Builder, key: ActionInfo) -> bool:
+    """Whether the key's own legend says it closes an entry without naming a setting: such a key
+    is the last step of what the number keys type, never a setting the number keys type."""
+    if key.skill != "press" or len(key.controls) != 1 or key.controls[0] not in b.labels:
+        return False
+    label = b.labels[key.controls[0]].text
+    if not label:
+        return False
+    for i in b.labels[key.controls[0]].mentions:
+        # a legend row, also a table's ("⑥ | OK | Confirms an entry."): its number dropped
+        text = re.sub(r"^[^A-Za-z]*", "", b.manual.units[i].text)
+        if text.upper().startswith(label.upper()) and _ENDS_ENTRY.search(text[len(label) :]):
+            return True
+    return False
