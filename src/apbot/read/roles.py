@@ -46,6 +46,7 @@ from apbot.read.roles_pads import (
     selecting_keys,
     shown_codes,
 )
+from apbot.read.roles_shared import assign_shared
 from apbot.read.roles_switched import switched_time
 from apbot.read.shapes import CHOICE_WORDS, GENERIC_DIALS, Evidence, adjuster_direction
 
@@ -81,6 +82,9 @@ def assign(b: Builder) -> None:
     if hour_minute:  # HOUR / MIN move whichever time CLOCK, TIMER, READY AT… opened
         others = [i for i in infos if i.name not in done and not i.skill.startswith("turn")]
         done |= set(assign_hour_minute(b, others, hour_minute))
+
+    # a key that switches a stepping pair between two settings ("TEMP/TIME") -------------
+    done |= assign_shared(b, [i for i in infos if i.name not in done], pairs)
 
     # setting keys -------------------------------------------------------------------------
     keys = [i for i in infos if i.name not in done and not i.skill.startswith("turn")]

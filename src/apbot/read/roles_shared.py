@@ -1,0 +1,159 @@
+"""A function key that chooses which setting a shared adjuster changes.
+
+Panels often give one pair of + / − keys (or one dial) two settings and a key to switch
+between them: "TEMP/TIME — switches the + and − keys between the cooking time and the
+temperature", "Press TEMP/TIME to switch between temperature and time, then use + / −". Read
+key by key, the switching key looks like a toggle of its own and the pair like one amount; the
+user's temperature then has no way to be set. This rule reads the sentence and gives the pair
+both settings: alone it sets the one it sets by default, and after the key the other one, until
+the key is pressed again (the feature ``[key, pair → first, key, pair → second]``, as the model
+format writes such a switch).
+"""
+
+from __future__ import annotations
+
+import re
+
+from apbot.read.actions import ActionInfo
+from apbot.read.build import Builder
+from apbot.read.labels import words
+from apbot.read.roles_common import label_of, stepped_noun, token_of
+from apbot.read.shapes import Evidence
+
+# the settings a shared adjuster may switch between, as the manual names them → (name, label)
+_NOUNS: dict[str, tuple[str, str]] = {
+    "cooking time": ("time", "TIME"),
+    "cook time": ("time", "TIME"),
+    "time": ("time", "TIME"),
+    "timer": ("timer", "TIMER"),
+    "temperature": ("temperature", "TEMP"),
+    "temp": ("temperature", "TEMP"),
+    "weight": ("weight", "WEIGHT"),
+    "power level": ("power", "POWER"),
+    "power": ("power", "POWER"),
+    "hours": ("hour", "HOUR"),
+    "hour": ("hour", "HOUR"),
+    "minutes": ("minute", "MIN"),
+    "minute": ("minute", "MIN"),
+    "speed": ("speed", "SPEED"),
+    "humidity": ("humidity", "HUMIDITY"),
+    "level": ("level", "LEVEL"),
+}
+_NOUN = "|".join(sorted((re.escape(n) for n in _NOUNS), key=len, reverse=True))
+# "switches the + and − keys of the zone between the cooking time and the temperature",
+# "to switch between temperature and time", "toggles between hours and minutes"
+_DOING = r"(?:[a-z]+ing\s+)?"  # "the grilling time", "the baking temperature"
+_BETWEEN_RE = re.compile(
+    rf"\b(?:switch|toggle|alternate|change|swap)(?:es|s)?\b[^.;]{{0,60}}?\bbetween\s+(?:the\s+)?"
+    rf"{_DOING}(?P<a>{_NOUN})\b(?:\s+setting)?\s+(?:and|or)\s+(?:the\s+)?{_DOING}"
+    rf"(?P<b>{_NOUN})\b",
+    re.IGNORECASE,
+)
+_PAIR_WORDS_RE = re.compile(r"[+−–-]|▲|▼|\b(?:up|down|plus|minus|arrows?|dial|knob|wheel)\b", re.I)
+
+
+def assign_shared(
+    b: Builder, keys: list[ActionInfo], pairs: dict[str, dict[str, list[str]]]
+) -> set[str]:
+    """Give each key whose sentence says it switches a stepping pair between two settings a
+    feature that sets both; returns the actions used (the keys and their pairs)."""
+    used: set[str] = set()
+    for key in keys:
+        if key.skill != "press" or key.name in used or key.controls[0] not in b.labels:
+            continue
+        said = _switch_sentence(b, key)
+        if said is None:
+            continue
+        nouns, at = said
+        base = _pair_of(key, pairs, used)
+        if base is None:
+            continue
+        up, down = pairs[base]["up"], pairs[base]["down"]
+        first, second = _order(b, key, nouns, up + down)
+        suffix = _suffix(key, base)
+        made: list[str] = []
+        for noun in (first, second):
+            name, label = _NOUNS[noun]
+            var = b.add_number(
+                f"{name}_{suffix}" if suffix else name,
+                f"{label} {suffix}" if suffix else label,
+                Evidence(ranges=[]),
+                cyclic=False,
+            )
+            made.append(var)
+        effect = {**{a: "next" for a in up}, **{a: "prev" for a in down}}
+        b.feature(
+            f"{key.token}_{made[0]}",
+            [
+                {"actions": [key.name]},
+                {"actions": up + down, "variable": made[0], "effect": effect},
+                {"actions": [key.name]},
+                {"actions": up + down, "variable": made[1], "effect": dict(effect)},
+            ],
+        )
+        b.feature(
+            f"set_{made[1]}",
+            [{"actions": up + down, "variable": made[1], "effect": dict(effect)}],
+        )
+        b.note(
+            f"features.{key.token}_{made[0]}",
+            f"{label_of(b, key.controls[0])} switches the stepping keys between "
+            f"{made[1]} (alone) and {made[0]}",
+            at,
+        )
+        used |= {key.name, *up, *down}
+        del pairs[base]
+    return used
+
+
+def _switch_sentence(b: Builder, key: ActionInfo) -> tuple[tuple[str, str], int] | None:
+    """The two settings the key's own sentence says it switches the adjuster between."""
+    units = b.manual.units
+    for i in b.labels[key.controls[0]].mentions:
+        text = units[i].text
+        m = _BETWEEN_RE.search(text)
+        if m is None:
+            continue
+        a, c = m.group("a").lower(), m.group("b").lower()
+        if _NOUNS[a][0] == _NOUNS[c][0]:
+            continue
+        if not _PAIR_WORDS_RE.search(text) and not re.search(r"\bthen\b|\buse\b", text, re.I):
+            continue
+        return (a, c), i
+    return None
+
+
+def _pair_of(key: ActionInfo, pairs: dict[str, dict[str, list[str]]], used: set[str]) -> str | None:
+    """The stepping pair the key switches: the one sharing its zone number ("TEMP/TIME 1" and
+    "+ 1"), else the one shared pair."""
+    whole = [b for b, p in pairs.items() if p["up"] and p["down"] and not set(p["up"]) & used]
+    digits = re.search(r"(\d+)$", key.token)
+    if digits:
+        mine = [b for b in whole if b and re.search(rf"(?<!\d){digits.group(1)}$", b)]
+        if len(mine) == 1:
+            return mine[0]
+    return "" if "" in whole else None
+
+
+def _suffix(key: ActionInfo, base: str) -> str:
+    """The zone number both names share ("1" for TEMP/TIME 1 with + 1), or nothing."""
+    m = re.search(r"(\d+)$", base) if base else None
+    return m.group(1) if m else ""
+
+
+def _order(b: Builder, key: ActionInfo, nouns: tuple[str, str], pair: list[str]) -> tuple[str, str]:
+    """(the setting the key's press gives the pair, the one the pair sets alone). The pair's
+    own sentences name its default ("+ and − change the cooking time"); without them the key's
+    printed name gives the order (TEMP/TIME: temperature first), else the sentence's."""
+    a, c = nouns
+    own = stepped_noun(b, [token_of(b, n) for n in pair], None)
+    if own:
+        for x, y in ((a, c), (c, a)):
+            if _NOUNS[y][0] == _NOUNS.get(own, (own, ""))[0]:
+                return x, y
+    label = label_of(b, key.controls[0]).lower()
+    spots = {n: label.find(_NOUNS[n][1].lower()) for n in nouns}
+    if all(p >= 0 for p in spots.values()) and spots[a] != spots[c]:
+        return (a, c) if spots[a] < spots[c] else (c, a)
+    named = set(words(label))
+    return (c, a) if _NOUNS[c][0] in named or _NOUNS[c][1].lower() in named else (a, c)
