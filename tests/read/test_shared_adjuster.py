@@ -45,3 +45,23 @@ def test_a_key_that_switches_the_pair_gives_it_both_settings() -> None:
     assert [("press_set",), pair, ("press_set",), pair] in _steps(model, temps[0])
     # alone they set the time (their own sentence says so)
     assert [pair] in _steps(model, times[0])
+
+
+# a bread oven: a jog dial picks the bake; DELAY and BAKE TIME hand it their time instead
+OVEN = """CONTROLS
+KNOB      Jog knob. Turn it to pick the bake: CRUSTY, SOFT, RYE or QUICK.
+          Once DELAY or BAKE TIME is pressed, turning the knob changes that time.
+DELAY     How many hours until the bread should be ready (1 to 12 hours).
+BAKE TIME The baking time, 20 to 90 minutes.
+START     Starts baking.
+"""
+OVEN_ACTIONS = ["turn_knob_cw", "turn_knob_ccw", "press_delay", "press_bake_time", "press_start"]
+
+
+def test_a_dial_with_its_own_list_also_sets_what_a_key_hands_it() -> None:
+    model = read_manual(OVEN, OVEN_ACTIONS).model
+    turns = ("turn_knob_cw", "turn_knob_ccw")
+    steps = {name: [tuple(s.actions) for s in feature] for name, feature in model.features.items()}
+    assert [("press_delay",), turns] in steps.values(), steps
+    assert [("press_bake_time",), turns] in steps.values(), steps
+    assert [turns] in steps.values(), steps  # turned alone, it picks the bake

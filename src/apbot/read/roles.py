@@ -46,7 +46,7 @@ from apbot.read.roles_pads import (
     selecting_keys,
     shown_codes,
 )
-from apbot.read.roles_shared import assign_shared
+from apbot.read.roles_shared import assign_shared, dial_after_keys
 from apbot.read.roles_switched import switched_time
 from apbot.read.shapes import CHOICE_WORDS, GENERIC_DIALS, Evidence, adjuster_direction
 
@@ -134,7 +134,7 @@ def assign(b: Builder) -> None:
         t
         for t in dials
         if t.split("_")[0] in GENERIC_DIALS
-        and (not dial_values(b, t) or _turned_after_keys(b, t, keys))
+        and (not dial_values(b, t) or _turned_after_keys(b, t, keys) or dial_after_keys(b, t, keys))
     ]
     entry_keys: list[ActionInfo] = []
     silent: list[ActionInfo] = []

@@ -157,3 +157,39 @@ def _order(b: Builder, key: ActionInfo, nouns: tuple[str, str], pair: list[str])
         return (a, c) if spots[a] < spots[c] else (c, a)
     named = set(words(label))
     return (c, a) if _NOUNS[c][0] in named or _NOUNS[c][1].lower() in named else (a, c)
+
+
+_AFTER_RE = re.compile(
+    r"\b(?:after|once|when)\b(?P<keys>[^.;]{1,60}?)\b(?:has|have|is|are)\s+(?:been\s+)?"
+    r"(?:pressed|touched|pushed|selected)\b[^.;]{0,40}?\b(?:dial|knob|wheel|turn\w*)\b",
+    re.IGNORECASE,
+)
+_PRESS_RE = r"\b(?:press|touch|push)\w*\s+(?:the\s+)?(?:{keys})\b"
+
+
+def dial_after_keys(b: Builder, dial: str, keys: list[ActionInfo]) -> bool:
+    """A dial that picks a list of its own and also sets what a key hands it: its legend says
+    so ("After PRESET or COOK TIME has been pressed, turning the dial changes the time"), or
+    a step that presses a key is followed by one that turns the dial ("2. Press COOK TIME." …
+    "3. Turn the SELECT dial to adjust the time")."""
+    labels = [re.escape(label_of(b, k.controls[0])) for k in keys if k.controls[0] in b.labels]
+    if not labels:
+        return False
+    named = re.compile(rf"\b(?:{'|'.join(labels)})\b", re.IGNORECASE)
+    units = b.manual.units
+    for u in units:
+        m = _AFTER_RE.search(u.text)
+        if m and named.search(m.group("keys")):
+            return True
+    noun = re.escape(dial.split("_")[0])
+    pressed = re.compile(_PRESS_RE.format(keys="|".join(labels)), re.IGNORECASE)
+    turned = re.compile(
+        rf"^\W*(?:\d+[.)]\s*)?turn\w*\s+the\s+(?:\w+\s+)?{noun}\b[^.]*\b(?:to\s+)?"
+        rf"(?:adjust|set|change|choose)\w*\s+the\s+(?:\w+\s+)?(?:time|temperature|timer|weight"
+        rf"|hours?|minutes?|level|power|delay|preset)\b",
+        re.IGNORECASE,
+    )
+    return any(
+        pressed.search(units[i].text) and any(turned.search(units[j].text) for j in (i + 1, i + 2))
+        for i in range(len(units) - 2)
+    )
