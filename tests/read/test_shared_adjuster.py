@@ -65,3 +65,23 @@ def test_a_dial_with_its_own_list_also_sets_what_a_key_hands_it() -> None:
     assert [("press_delay",), turns] in steps.values(), steps
     assert [("press_bake_time",), turns] in steps.values(), steps
     assert [turns] in steps.values(), steps  # turned alone, it picks the bake
+
+
+# a waffle maker: the MODE key hands the arrows the browning; its next press hands back the time
+WAFFLE = """WAFFLE MAKER  -  KEYS
+POWER  on and off
+MODE   makes the up and down arrows set the browning level; press it once more and they set the
+       baking time again.
+UP / DOWN  change the value on the display (normally the baking time, 2 to 8 minutes).
+"""
+WAFFLE_ACTIONS = ["press_power", "press_mode", "press_up", "press_down"]
+
+
+def test_a_key_that_hands_the_pair_one_setting_and_then_back() -> None:
+    model = read_manual(WAFFLE, WAFFLE_ACTIONS).model
+    pair = ("press_up", "press_down")
+    level = next((v for v in model.variables if v.startswith("level")), None)
+    time = next((v for v in model.variables if v.startswith("time")), None)
+    assert level and time, list(model.variables)
+    assert [("press_mode",), pair, ("press_mode",), pair] in _steps(model, level)
+    assert [pair] in _steps(model, time)

@@ -49,6 +49,12 @@ _BETWEEN_RE = re.compile(
     rf"(?P<b>{_NOUN})\b",
     re.IGNORECASE,
 )
+_HANDED_RE = re.compile(
+    rf"\b(?:adjust|change|set|control|go(?:es)?\s+back\s+to|return)\w*\s+(?:to\s+)?(?:the\s+)?"
+    rf"(?:zone'?s?\s+)?{_DOING}(?P<n>{_NOUN})\b",
+    re.IGNORECASE,
+)
+_AGAIN_RE = re.compile(r"\b(?:again|once more)\b", re.IGNORECASE)
 _PAIR_WORDS_RE = re.compile(r"[+−–-]|▲|▼|\b(?:up|down|plus|minus|arrows?|dial|knob|wheel)\b", re.I)
 
 
@@ -64,12 +70,12 @@ def assign_shared(
         said = _switch_sentence(b, key)
         if said is None:
             continue
-        nouns, at = said
+        nouns, at, ordered = said
         base = _pair_of(key, pairs, used)
         if base is None:
             continue
         up, down = pairs[base]["up"], pairs[base]["down"]
-        first, second = _order(b, key, nouns, up + down)
+        first, second = nouns if ordered else _order(b, key, nouns, up + down)
         suffix = _suffix(key, base)
         made: list[str] = []
         for noun in (first, second):
@@ -106,20 +112,24 @@ def assign_shared(
     return used
 
 
-def _switch_sentence(b: Builder, key: ActionInfo) -> tuple[tuple[str, str], int] | None:
-    """The two settings the key's own sentence says it switches the adjuster between."""
+def _switch_sentence(b: Builder, key: ActionInfo) -> tuple[tuple[str, str], int, bool] | None:
+    """The two settings the key's own sentence says it switches the adjuster between, and
+    whether the sentence tells their order (the one after the press first)."""
     units = b.manual.units
     for i in b.labels[key.controls[0]].mentions:
         text = units[i].text
         m = _BETWEEN_RE.search(text)
-        if m is None:
-            continue
-        a, c = m.group("a").lower(), m.group("b").lower()
-        if _NOUNS[a][0] == _NOUNS[c][0]:
-            continue
-        if not _PAIR_WORDS_RE.search(text) and not re.search(r"\bthen\b|\buse\b", text, re.I):
-            continue
-        return (a, c), i
+        if m is not None and _PAIR_WORDS_RE.search(text):
+            a, c = m.group("a").lower(), m.group("b").lower()
+            if _NOUNS[a][0] != _NOUNS[c][0]:
+                return (a, c), i, False
+        # "lets the + and − keys adjust the temperature; press once more and they adjust the
+        # time again": the press hands the pair one setting, the next press the other
+        if _PAIR_WORDS_RE.search(text) and _AGAIN_RE.search(text):
+            found = [n.group("n").lower() for n in _HANDED_RE.finditer(text)]
+            named = [n for n in found if _NOUNS[n][0] != _NOUNS[found[0]][0]]
+            if found and named:
+                return (found[0], named[0]), i, True
     return None
 
 
