@@ -85,3 +85,34 @@ def test_a_key_that_hands_the_pair_one_setting_and_then_back() -> None:
     assert level and time, list(model.variables)
     assert [("press_mode",), pair, ("press_mode",), pair] in _steps(model, level)
     assert [pair] in _steps(model, time)
+
+
+# a radio alarm: one SET key and one TUNE wheel; the wheel tunes the radio unless SET handed it
+# the clock's hour, then (SET again) its minutes
+RADIO = """RADIO ALARM
+
+Turn the TUNE wheel to change the station (87.5 to 108 MHz).
+
+Setting the time
+1. Press CLOCK SET. The hour blinks.
+2. Turn the TUNE wheel to set the hour.
+3. Press CLOCK SET. The minutes blink.
+4. Turn the TUNE wheel to set the minutes.
+5. Press CLOCK SET to finish.
+"""
+RADIO_ACTIONS = ["turn_tune_cw", "turn_tune_ccw", "press_clock_set"]
+
+
+def test_a_clock_set_hour_then_minute_with_one_key_and_one_dial() -> None:
+    model = read_manual(RADIO, RADIO_ACTIONS).model
+    turns = ("turn_tune_cw", "turn_tune_ccw")
+    hour = next((v for v in model.variables if v.endswith("hour")), None)
+    minute = next((v for v in model.variables if v.endswith("minute")), None)
+    assert hour and minute, list(model.variables)
+    assert [("press_clock_set",), turns, ("press_clock_set",), turns] in _steps(model, hour)
+    assert _steps(model, minute) == _steps(model, hour)
+    assert any(
+        steps == [turns]
+        for f in model.features.values()
+        for steps in [[tuple(s.actions) for s in f]]
+    ), "turned alone the wheel keeps its own setting"

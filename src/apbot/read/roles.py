@@ -46,7 +46,7 @@ from apbot.read.roles_pads import (
     selecting_keys,
     shown_codes,
 )
-from apbot.read.roles_shared import assign_shared, dial_after_keys
+from apbot.read.roles_shared import add_clock_steps, assign_shared, clock_steps, dial_after_keys
 from apbot.read.roles_switched import switched_time
 from apbot.read.shapes import CHOICE_WORDS, GENERIC_DIALS, Evidence, adjuster_direction
 
@@ -85,6 +85,8 @@ def assign(b: Builder) -> None:
 
     # a key that switches a stepping pair between two settings ("TEMP/TIME") -------------
     done |= assign_shared(b, [i for i in infos if i.name not in done], pairs)
+    clocks = clock_steps(b, [i for i in infos if i.name not in done], dials)
+    done |= {c[0].name for c in clocks}  # (its feature once the dial has its own setting)
 
     # setting keys -------------------------------------------------------------------------
     keys = [i for i in infos if i.name not in done and not i.skill.startswith("turn")]
@@ -222,6 +224,7 @@ def assign(b: Builder) -> None:
         b, entry_keys, silent, evidence, pairs, digits, dials, generic_dials, adders
     )
     silent = assign_dials(b, dials, silent)
+    add_clock_steps(b, clocks)
     assign_leftovers(b, silent, evidence)
     assign_keyed_amounts(b, digits)
     standby_only(b)

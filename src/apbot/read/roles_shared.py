@@ -15,7 +15,7 @@ from __future__ import annotations
 import re
 
 from apbot.read.actions import ActionInfo
-from apbot.read.build import Builder
+from apbot.read.build import Builder, twelve_hour_clock
 from apbot.read.labels import words
 from apbot.read.roles_common import label_of, stepped_noun, token_of
 from apbot.read.shapes import Evidence
@@ -203,3 +203,90 @@ def dial_after_keys(b: Builder, dial: str, keys: list[ActionInfo]) -> bool:
         pressed.search(units[i].text) and any(turned.search(units[j].text) for j in (i + 1, i + 2))
         for i in range(len(units) - 2)
     )
+
+
+_HOUR_RE = re.compile(r"\b(?:set|adjust|choose|select|enter)\w*\s+the\s+hours?\b", re.I)
+_MINUTE_RE = re.compile(r"\b(?:set|adjust|choose|select|enter)\w*\s+the\s+minutes?\b", re.I)
+
+
+def clock_steps(
+    b: Builder, keys: list[ActionInfo], dials: dict[str, list[ActionInfo]]
+) -> list[tuple[ActionInfo, list[str], list[str], int]]:
+    """A clock set as hour then minute with one key and one dial, told as numbered steps
+    ("1. Press CLOCK. 2. Turn TIME to set the hour. 3. Press CLOCK. 4. Turn TIME to set the
+    minutes."): (key, the dial's clockwise and anticlockwise turns, the unit) for each. The
+    key takes no other role; the feature is added by :func:`add_clock_steps` once the dial has
+    its own setting (turned alone it keeps it)."""
+    found: list[tuple[ActionInfo, list[str], list[str], int]] = []
+    units = b.manual.units
+    for key in keys:
+        if key.skill != "press" or key.controls[0] not in b.labels:
+            continue
+        if "clock" not in words(key.controls[0].replace("_", " ")):
+            continue
+        pressed = re.compile(
+            _PRESS_RE.format(keys=re.escape(label_of(b, key.controls[0]))), re.IGNORECASE
+        )
+        for token, turns in dials.items():
+            cw = [i.name for i in turns if i.skill == "turn_cw"]
+            ccw = [i.name for i in turns if i.skill == "turn_ccw"]
+            if not cw or not ccw or token not in b.labels:
+                continue
+            turned = re.compile(
+                rf"\b(?:turn|rotat)\w*\s+(?:the\s+)?(?:{re.escape(label_of(b, token))})\b", re.I
+            )
+            at = _hour_then_minute(units, pressed, turned)
+            if at is not None:
+                found.append((key, cw, ccw, at))
+                break
+    return found
+
+
+def add_clock_steps(b: Builder, found: list[tuple[ActionInfo, list[str], list[str], int]]) -> None:
+    """The features :func:`clock_steps` found: the key, the dial on the hour, the key again,
+    the dial on the minutes (each a number that rolls round)."""
+    for key, cw, ccw, at in found:
+        twelve = twelve_hour_clock(b.manual.units)
+        name = key.controls[0].removesuffix("_button")
+        hour = b.unique(f"{name}_hour", b.variables)
+        b.variables[hour] = {
+            "type": "numeric",
+            "ranges": [[1, 12, 1]] if twelve else [[0, 23, 1]],
+            "wrap": True,
+            "label": "HOUR",
+        }
+        minute = b.unique(f"{name}_minute", b.variables)
+        b.variables[minute] = {"type": "numeric", "ranges": [[0, 59, 1]], "wrap": True,
+                               "label": "MIN"}  # fmt: skip
+        effect = {**{a: "next" for a in cw}, **{a: "prev" for a in ccw}}
+        b.feature(
+            f"set_{name}",
+            [
+                {"actions": [key.name]},
+                {"actions": cw + ccw, "variable": hour, "effect": effect},
+                {"actions": [key.name]},
+                {"actions": cw + ccw, "variable": minute, "effect": dict(effect)},
+            ],
+        )
+        lab = label_of(b, key.controls[0])
+        b.note(f"features.set_{name}", f"{lab}, the hour, {lab} again, the minutes", at)
+
+
+def _hour_then_minute(units: list, pressed: re.Pattern[str], turned: re.Pattern[str]) -> int | None:
+    """Where the steps press the key, turn the dial for the hour, press the key again and turn
+    it for the minutes (each within two units of the last)."""
+    for i, u in enumerate(units):
+        if not pressed.search(u.text):
+            continue
+        h = next((j for j in (i + 1, i + 2) if j < len(units) and turned.search(units[j].text)
+                  and _HOUR_RE.search(units[j].text)), None)  # fmt: skip
+        if h is None:
+            continue
+        again = next((j for j in (h + 1, h + 2) if j < len(units)
+                      and pressed.search(units[j].text)), None)  # fmt: skip
+        if again is None:
+            continue
+        if any(j < len(units) and turned.search(units[j].text) and _MINUTE_RE.search(units[j].text)
+               for j in (again + 1, again + 2)):  # fmt: skip
+            return i
+    return None
