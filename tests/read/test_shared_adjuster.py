@@ -116,3 +116,14 @@ def test_a_clock_set_hour_then_minute_with_one_key_and_one_dial() -> None:
         for f in model.features.values()
         for steps in [[tuple(s.actions) for s in f]]
     ), "turned alone the wheel keeps its own setting"
+
+
+def test_a_clock_set_hour_then_minute_with_the_stepping_pair() -> None:
+    text = RADIO.replace("Turn the TUNE wheel to set", "Press + or - to set").replace(
+        "Turn the TUNE wheel to change the station", "Press + or - to change the volume"
+    )
+    model = read_manual(text, ["press_plus", "press_minus", "press_clock_set"]).model
+    hour = next((v for v in model.variables if v.endswith("hour")), None)
+    assert hour, list(model.variables)
+    pair = ("press_plus", "press_minus")
+    assert [("press_clock_set",), pair, ("press_clock_set",), pair] in _steps(model, hour)

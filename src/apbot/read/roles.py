@@ -85,7 +85,7 @@ def assign(b: Builder) -> None:
 
     # a key that switches a stepping pair between two settings ("TEMP/TIME") -------------
     done |= assign_shared(b, [i for i in infos if i.name not in done], pairs)
-    clocks = clock_steps(b, [i for i in infos if i.name not in done], dials)
+    clocks = clock_steps(b, [i for i in infos if i.name not in done], dials, pairs)
     done |= {c[0].name for c in clocks}  # (its feature once the dial has its own setting)
 
     # setting keys -------------------------------------------------------------------------

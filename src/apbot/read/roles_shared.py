@@ -205,16 +205,25 @@ def dial_after_keys(b: Builder, dial: str, keys: list[ActionInfo]) -> bool:
     )
 
 
+_PAIR_PRESS_RE = re.compile(
+    r"\b(?:press|touch|push|use)\w*\s+(?:the\s+)?(?:[+−–▲▼]|-(?!\w)|up\b|down\b|plus\b|minus\b"
+    r"|arrow)",
+    re.IGNORECASE,
+)
 _HOUR_RE = re.compile(r"\b(?:set|adjust|choose|select|enter)\w*\s+the\s+hours?\b", re.I)
 _MINUTE_RE = re.compile(r"\b(?:set|adjust|choose|select|enter)\w*\s+the\s+minutes?\b", re.I)
 
 
 def clock_steps(
-    b: Builder, keys: list[ActionInfo], dials: dict[str, list[ActionInfo]]
+    b: Builder,
+    keys: list[ActionInfo],
+    dials: dict[str, list[ActionInfo]],
+    pairs: dict[str, dict[str, list[str]]],
 ) -> list[tuple[ActionInfo, list[str], list[str], int]]:
     """A clock set as hour then minute with one key and one dial, told as numbered steps
     ("1. Press CLOCK. 2. Turn TIME to set the hour. 3. Press CLOCK. 4. Turn TIME to set the
-    minutes."): (key, the dial's clockwise and anticlockwise turns, the unit) for each. The
+    minutes."; or "Press + or − to set the hour" with the one stepping pair): (key, the dial's
+    clockwise and anticlockwise turns or the pair's up and down keys, the unit) for each. The
     key takes no other role; the feature is added by :func:`add_clock_steps` once the dial has
     its own setting (turned alone it keeps it)."""
     found: list[tuple[ActionInfo, list[str], list[str], int]] = []
@@ -227,17 +236,22 @@ def clock_steps(
         pressed = re.compile(
             _PRESS_RE.format(keys=re.escape(label_of(b, key.controls[0]))), re.IGNORECASE
         )
+        adjusters: list[tuple[list[str], list[str], re.Pattern[str]]] = []
         for token, turns in dials.items():
             cw = [i.name for i in turns if i.skill == "turn_cw"]
             ccw = [i.name for i in turns if i.skill == "turn_ccw"]
-            if not cw or not ccw or token not in b.labels:
-                continue
-            turned = re.compile(
-                rf"\b(?:turn|rotat)\w*\s+(?:the\s+)?(?:{re.escape(label_of(b, token))})\b", re.I
-            )
-            at = _hour_then_minute(units, pressed, turned)
+            if cw and ccw and token in b.labels:
+                label = re.escape(label_of(b, token))
+                adjusters.append(
+                    (cw, ccw, re.compile(rf"\b(?:turn|rotat)\w*\s+(?:the\s+)?{label}\b", re.I))
+                )
+        shared = pairs.get("")
+        if shared and shared["up"] and shared["down"]:
+            adjusters.append((shared["up"], shared["down"], _PAIR_PRESS_RE))
+        for up, down, adjusted in adjusters:
+            at = _hour_then_minute(units, pressed, adjusted)
             if at is not None:
-                found.append((key, cw, ccw, at))
+                found.append((key, up, down, at))
                 break
     return found
 
