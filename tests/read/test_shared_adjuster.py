@@ -127,3 +127,15 @@ def test_a_clock_set_hour_then_minute_with_the_stepping_pair() -> None:
     assert hour, list(model.variables)
     pair = ("press_plus", "press_minus")
     assert [("press_clock_set",), pair, ("press_clock_set",), pair] in _steps(model, hour)
+
+
+def test_clock_steps_that_run_on_and_name_the_hour_in_passing() -> None:
+    text = RADIO.replace(
+        "2. Turn the TUNE wheel to set the hour.",
+        "2. Turn the TUNE wheel until the right hour shows. Each click is one hour. It rolls round.",
+    ).replace(
+        "4. Turn the TUNE wheel to set the minutes.", "4. Turn the TUNE wheel to the minutes."
+    )
+    model = read_manual(text, RADIO_ACTIONS).model
+    hour = next((v for v in model.variables if v.endswith("hour")), None)
+    assert hour, list(model.variables)

@@ -19,6 +19,7 @@ from apbot.read.build import Builder, twelve_hour_clock
 from apbot.read.labels import words
 from apbot.read.roles_common import label_of, stepped_noun, token_of
 from apbot.read.shapes import Evidence
+from apbot.read.text import Unit
 
 # the settings a shared adjuster may switch between, as the manual names them → (name, label)
 _NOUNS: dict[str, tuple[str, str]] = {
@@ -210,8 +211,10 @@ _PAIR_PRESS_RE = re.compile(
     r"|arrow)",
     re.IGNORECASE,
 )
-_HOUR_RE = re.compile(r"\b(?:set|adjust|choose|select|enter)\w*\s+the\s+hours?\b", re.I)
-_MINUTE_RE = re.compile(r"\b(?:set|adjust|choose|select|enter)\w*\s+the\s+minutes?\b", re.I)
+# the step for the hour names the hour ("to set the hour", "until the correct hour is shown")
+# before any minutes; the step for the minutes names them
+_HOUR_RE = re.compile(r"^(?:(?!\bminutes?\b).)*\bhours?\b", re.IGNORECASE | re.DOTALL)
+_MINUTE_RE = re.compile(r"\bminutes?\b", re.IGNORECASE)
 
 
 def clock_steps(
@@ -286,21 +289,27 @@ def add_clock_steps(b: Builder, found: list[tuple[ActionInfo, list[str], list[st
         b.note(f"features.set_{name}", f"{lab}, the hour, {lab} again, the minutes", at)
 
 
-def _hour_then_minute(units: list, pressed: re.Pattern[str], turned: re.Pattern[str]) -> int | None:
-    """Where the steps press the key, turn the dial for the hour, press the key again and turn
-    it for the minutes (each within two units of the last)."""
+def _hour_then_minute(
+    units: list[Unit], pressed: re.Pattern[str], adjusted: re.Pattern[str]
+) -> int | None:
+    """Where the steps press the key, move the adjuster for the hour, press the key again and
+    move it for the minutes (each within three units of the last: a step may run on)."""
+
+    def after(k: int, test: re.Pattern[str], what: re.Pattern[str] | None) -> int | None:
+        return next(
+            (
+                j
+                for j in range(k + 1, min(k + 4, len(units)))
+                if test.search(units[j].text) and (what is None or what.search(units[j].text))
+            ),
+            None,
+        )
+
     for i, u in enumerate(units):
         if not pressed.search(u.text):
             continue
-        h = next((j for j in (i + 1, i + 2) if j < len(units) and turned.search(units[j].text)
-                  and _HOUR_RE.search(units[j].text)), None)  # fmt: skip
-        if h is None:
-            continue
-        again = next((j for j in (h + 1, h + 2) if j < len(units)
-                      and pressed.search(units[j].text)), None)  # fmt: skip
-        if again is None:
-            continue
-        if any(j < len(units) and turned.search(units[j].text) and _MINUTE_RE.search(units[j].text)
-               for j in (again + 1, again + 2)):  # fmt: skip
+        h = after(i, adjusted, _HOUR_RE)
+        again = None if h is None else after(h, pressed, None)
+        if again is not None and after(again, adjusted, _MINUTE_RE) is not None:
             return i
     return None
