@@ -132,7 +132,7 @@ def test_a_clock_set_hour_then_minute_with_the_stepping_pair() -> None:
 def test_clock_steps_that_run_on_and_name_the_hour_in_passing() -> None:
     text = RADIO.replace(
         "2. Turn the TUNE wheel to set the hour.",
-        "2. Turn the TUNE wheel until the right hour shows. Each click is one hour. It rolls round.",
+        "2. Turn the TUNE wheel until the right hour shows. One click is an hour. It rolls round.",
     ).replace(
         "4. Turn the TUNE wheel to set the minutes.", "4. Turn the TUNE wheel to the minutes."
     )
