@@ -139,3 +139,35 @@ def test_clock_steps_that_run_on_and_name_the_hour_in_passing() -> None:
     model = read_manual(text, RADIO_ACTIONS).model
     hour = next((v for v in model.variables if v.endswith("hour")), None)
     assert hour, list(model.variables)
+
+
+# a two-plate griddle: each plate has PROG and TEMP/TIME keys and its own + / −; one table
+GRIDDLE = """# Twin griddle
+
+| Key | Use |
+|---|---|
+| PROG 1 | Next programme of plate 1: PANCAKE → STEAK → TOAST. |
+| PROG 2 | Next programme of plate 2: PANCAKE → STEAK → TOAST. |
+| TEMP/TIME 1 / TEMP/TIME 2 | Switches + and − of the plate between the time and the temperature. |
+| + 1 / − 1, + 2 / − 2 | Raise or lower the value of the plate. |
+
+The + and − keys of a plate change its time unless TEMP/TIME was pressed.
+
+| Programme | Temperature | Time |
+|---|---|---|
+| PANCAKE | 180–220 °C | 2–6 min |
+| STEAK | 200–250 °C | 3–15 min |
+| TOAST | 160–200 °C | 1–4 min |
+"""
+GRIDDLE_ACTIONS = [
+    "press_prog1", "press_temptime1", "press_plus1", "press_minus1",
+    "press_prog2", "press_temptime2", "press_plus2", "press_minus2",
+]  # fmt: skip
+
+
+def test_the_second_zone_takes_the_programme_table_on_its_own_programme() -> None:
+    model = read_manual(GRIDDLE, GRIDDLE_ACTIONS).model
+    temps = sorted(v for v in model.variables if v.startswith("temp"))
+    assert len(temps) == 2, list(model.variables)
+    parents = [getattr(model.variables[t], "depends_on", None) for t in temps]
+    assert parents == ["prog1", "prog2"], parents
