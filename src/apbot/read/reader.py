@@ -19,6 +19,7 @@ from apbot.read.actions import ActionInfo, parse_actions
 from apbot.read.build import Builder
 from apbot.read.cases import apply_cases
 from apbot.read.cases_resets import apply_resets
+from apbot.read.cases_zones import zone_twins
 from apbot.read.codes import name_codes
 from apbot.read.labels import find_labels
 from apbot.read.report import Note, Report
@@ -52,6 +53,7 @@ def read_manual(
     builder = Builder(manual, infos, labels)
     assign(builder)
     apply_cases(builder)
+    zone_twins(builder)
     name_codes(builder)
     apply_resets(builder)
     data = _assemble(builder, appliance_id, category)

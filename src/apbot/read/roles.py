@@ -48,6 +48,7 @@ from apbot.read.roles_pads import (
     selecting_keys,
     shown_codes,
 )
+from apbot.read.roles_shared import add_clock_steps, assign_shared, clock_steps, dial_after_keys
 from apbot.read.roles_switched import switched_time
 from apbot.read.shapes import CHOICE_WORDS, GENERIC_DIALS, Evidence, adjuster_direction
 from apbot.read.text import Unit
@@ -85,6 +86,11 @@ def assign(b: Builder) -> None:
     if hour_minute:  # HOUR / MIN move whichever time CLOCK, TIMER, READY AT… opened
         others = [i for i in infos if i.name not in done and not i.skill.startswith("turn")]
         done |= set(assign_hour_minute(b, others, hour_minute))
+
+    # a key that switches a stepping pair between two settings ("TEMP/TIME") -------------
+    done |= assign_shared(b, [i for i in infos if i.name not in done], pairs)
+    clocks = clock_steps(b, [i for i in infos if i.name not in done], dials, pairs)
+    done |= {c[0].name for c in clocks}  # (its feature once the dial has its own setting)
 
     # setting keys -------------------------------------------------------------------------
     keys = [i for i in infos if i.name not in done and not i.skill.startswith("turn")]
@@ -134,7 +140,7 @@ def assign(b: Builder) -> None:
         t
         for t in dials
         if t.split("_")[0] in GENERIC_DIALS
-        and (not dial_values(b, t) or _turned_after_keys(b, t, keys))
+        and (not dial_values(b, t) or _turned_after_keys(b, t, keys) or dial_after_keys(b, t, keys))
     ]
     entry_keys: list[ActionInfo] = []
     silent: list[ActionInfo] = []
@@ -228,6 +234,7 @@ def assign(b: Builder) -> None:
         b, entry_keys, silent, evidence, pairs, digits, dials, generic_dials, adders
     )
     silent = assign_dials(b, dials, silent)
+    add_clock_steps(b, clocks)
     assign_leftovers(b, silent, evidence)
     assign_keyed_amounts(b, digits)
     standby_only(b)
