@@ -1,0 +1,45 @@
+"""Rules found on the styled manuals (seventh round), each on a small manual of our own."""
+
+from __future__ import annotations
+
+from apbot.read import read_manual
+from apbot.read.text import parse_manual
+
+# a washer whose chart lists each programme's temperatures and marks the default with a
+# symbol that only the legend above the chart explains
+WASHER = """CONTROL PANEL
+
+TEMP.      Press to change the wash temperature of the chosen programme.
+PROGRAMME  Turn the knob to choose a programme.
+START      Starts the wash.
+
+PROGRAMME CHART
+
+◆ = factory setting of the programme      ✓ = possible
+
+  Programme        Temp.                          Pre-wash
+  ----------------------------------------------------------------
+  Cottons          Cold, 30 °C, 40 °C ◆, 60 °C     ✓
+  Synthetics       Cold ◆, 30 °C, 40 °C            ✓
+  Wool             Cold ◆, 30 °C                   –
+  Towels           40 °C, 60 °C ◆                  ✓
+
+Turn the knob to a programme, press TEMP. until the temperature you want shows, then press START.
+"""
+
+
+def test_a_chart_symbol_the_legend_calls_the_default_gives_each_programme_its_initial() -> None:
+    actions = ["turn_programme_cw", "turn_programme_ccw", "press_temp", "press_start"]
+    model = read_manual(WASHER, actions).model
+    name = next(n for n in model.variables if "temp" in n)
+    cases = model.variables[name].model_dump(mode="json")["cases"]
+    assert cases["cottons"]["initial"] == "40 °c", cases
+    assert cases["synthetics"]["initial"] == "cold", cases
+    assert cases["towels"]["initial"] == "60 °c", cases
+
+
+def test_symbols_no_legend_calls_a_default_still_become_spaces() -> None:
+    text = "● Use a socket of the standard kind.\n\nCottons   Cold ✓, Warm\n"
+    joined = " ".join(u.text for u in parse_manual(text).units)
+    assert "●" not in joined and "✓" not in joined, joined
+
