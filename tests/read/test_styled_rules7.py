@@ -43,3 +43,22 @@ def test_symbols_no_legend_calls_a_default_still_become_spaces() -> None:
     joined = " ".join(u.text for u in parse_manual(text).units)
     assert "●" not in joined and "✓" not in joined, joined
 
+
+# a chart whose caption stands on its own line right above the header, with no full stop
+CAPTIONED = """Choose the steam level with the STEAM key.
+
+Steam chart (more on the back)
+   Touches      Display      Use
+   1            S1           shirts
+   2            S2           linen
+   3            OFF          no steam
+"""
+
+
+def test_a_caption_line_above_a_space_table_does_not_hide_its_header() -> None:
+    units = parse_manual(CAPTIONED).units
+    rows = [u for u in units if u.cells and u.header]
+    assert rows and rows[0].header == ("Touches", "Display", "Use"), [
+        (u.text, u.header) for u in units
+    ]
+    assert not any("Touches" in u.text and not u.cells for u in units)
