@@ -62,3 +62,25 @@ def test_a_caption_line_above_a_space_table_does_not_hide_its_header() -> None:
         (u.text, u.header) for u in units
     ]
     assert not any("Touches" in u.text and not u.cells for u in units)
+
+
+# an oven's minute minder: typed on the number keys, its top written only as one clock figure
+MINDER = """KEYS
+MINDER      Sets the minute minder.
+0-9         Number keys.
+START       Starts the oven or the minder.
+
+MINUTE MINDER
+1. Touch MINDER. The display shows 00:00.
+2. Type the minutes and seconds on the number keys. You can set up to 99:59.
+3. Touch START.
+"""
+
+
+def test_a_top_written_as_one_clock_figure_bounds_a_typed_timer_in_minutes_and_seconds() -> None:
+    actions = ["press_minder", *(f"press_{d}" for d in range(10)), "press_start"]
+    model = read_manual(MINDER, actions).model
+    name = next(n for n in model.variables if "minder" in n)
+    var = model.variables[name].model_dump(mode="json")
+    assert var["format"] == "mm:ss", var
+    assert var["ranges"][-1][1] == "01:39:59", var

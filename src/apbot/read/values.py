@@ -12,7 +12,7 @@ import re
 from dataclasses import dataclass
 
 from apbot.model.values import unit_of, words_to_number
-from apbot.read.values_labels import clock_seconds, minutes_and_seconds
+from apbot.read.values_labels import clock_seconds, clock_tops, minutes_and_seconds
 
 NUM = (
     r"(?:\d+(?:[.,]\d+)?|one|two|three|four|five|six|seven|eight|nine|ten|twelve|fifteen"
@@ -145,6 +145,7 @@ def _ranges(text: str) -> list[Range]:
         hi = number(m.group(1))
         if hi:
             out.append(Range(0, hi, unit_name(m.group(2))))
+    out += [Range(0, top, "s") for top in clock_tops(text) if top]  # "up to 99:59"
     return out
 
 
