@@ -84,3 +84,12 @@ def test_a_top_written_as_one_clock_figure_bounds_a_typed_timer_in_minutes_and_s
     var = model.variables[name].model_dump(mode="json")
     assert var["format"] == "mm:ss", var
     assert var["ranges"][-1][1] == "01:39:59", var
+
+
+def test_a_range_the_sentence_goes_on_past_by_one_level_ends_at_that_level() -> None:
+    from apbot.read.values import find_ranges
+
+    said = "Key in a grill setting from 1 to 4, or hold the key for setting 5."
+    assert [(r.low, r.high) for r in find_ranges(said)] == [(1, 5)]
+    other = "Key in a grill setting from 1 to 4, or 8 for 8 minutes of toasting."
+    assert [(r.low, r.high) for r in find_ranges(other)] == [(1, 4)]

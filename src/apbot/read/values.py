@@ -13,6 +13,7 @@ from dataclasses import dataclass
 
 from apbot.model.values import unit_of, words_to_number
 from apbot.read.values_labels import clock_seconds, clock_tops, minutes_and_seconds
+from apbot.read.values_more import further_top
 
 NUM = (
     r"(?:\d+(?:[.,]\d+)?|one|two|three|four|five|six|seven|eight|nine|ten|twelve|fifteen"
@@ -140,6 +141,8 @@ def _ranges(text: str) -> list[Range]:
             continue  # "press A and B": no unit, "and" joins words more often than numbers
         if unit == "" and (hi > 10_000 or _FOREIGN_UNIT.match(text, m.end())):
             continue  # "220–240 V", "12–32 cm": a rating or a size, not a setting's range
+        if unit == "":
+            hi = further_top(text, m.end(), hi)  # "1 to 9, or 1 and then 0 for level 10"
         out.append(Range(lo, hi, unit))
     for m in UPTO_RE.finditer(text):
         hi = number(m.group(1))
