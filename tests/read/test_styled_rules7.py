@@ -93,3 +93,36 @@ def test_a_range_the_sentence_goes_on_past_by_one_level_ends_at_that_level() -> 
     assert [(r.low, r.high) for r in find_ranges(said)] == [(1, 5)]
     other = "Key in a grill setting from 1 to 4, or 8 for 8 minutes of toasting."
     assert [(r.low, r.high) for r in find_ranges(other)] == [(1, 4)]
+
+
+# a grill whose chart marks, per food, which browning levels its SHADE key offers
+GRILL = """KEYS
+FOOD      Press to choose the food: TOAST, BAGEL, MUFFIN, CRUMPET.
+SHADE     Press to change the browning: LIGHT, MEDIUM, DARK.
+START     Starts toasting.
+
+FOOD AND SHADE CHART
+
+✪ used when the food is chosen (standard)      ✦ can be chosen      – not offered
+
+  Food        LIGHT     MEDIUM     DARK
+  --------------------------------------------
+  TOAST       ✦         ✪          ✦
+  BAGEL       –         ✪          ✦
+  MUFFIN      ✪         ✦          –
+  CRUMPET     –         –          –
+
+Press FOOD, then SHADE until the browning you want shows, then START.
+"""
+
+
+def test_a_chart_of_marks_gives_each_row_the_marked_values_and_the_default_mark_its_initial() -> (
+    None
+):
+    model = read_manual(GRILL, ["press_food", "press_shade", "press_start"]).model
+    name = next(n for n in model.variables if "shade" in n)
+    cases = model.variables[name].model_dump(mode="json")["cases"]
+    assert cases and cases["toast"] == {"values": ["light", "medium", "dark"], "initial": "medium"}
+    assert cases["bagel"] == {"values": ["medium", "dark"], "initial": "medium"}
+    assert cases["muffin"]["values"] == ["light", "medium"], cases
+    assert "crumpet" not in cases, cases

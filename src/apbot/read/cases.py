@@ -16,6 +16,7 @@ from apbot.model.values import parse_hms
 from apbot.read.build import Builder
 from apbot.read.cases_cells import _STEP_HEAD_RE, DEFAULT_WORDS, _cases, _defaults, _row_steps
 from apbot.read.cases_lists import as_choices, listed_cases, listed_column
+from apbot.read.cases_marks import mark_cases
 from apbot.read.cases_tables import _parent_values, _tables
 from apbot.read.labels import words
 from apbot.read.shapes import CHOICE_WORDS
@@ -71,6 +72,12 @@ def apply_cases(b: Builder) -> None:
         if parent is None:
             continue
         pvalues = b.variables[parent]["values"]
+        marked = mark_cases(b, header, rows, parent, fixed | parents | children)
+        if marked:  # "WHITE | ◎ | ● | –" under "Menu | REGULAR | SOFTER | HARDER"
+            parents.add(parent)
+            children.add(marked)
+            _no_toggle(b, marked, b.variables[marked]["cases"])
+            continue
         header = _named_ranges(header, rows)
         for column in range(1, len(header)):
             if set(words(header[column])) & (DEFAULT_WORDS | ADVICE_WORDS):

@@ -88,12 +88,14 @@ def _symbols(text: str) -> set[str]:
     return {c for c in text if unicodedata.category(c) == "So" and c not in _KEEP}
 
 
-def _default_marks(text: str) -> frozenset[str]:
-    """The symbols a legend says mark a default: kept in the text so a chart cell ("Warm ▣")
-    still says which choice is the default (every other pictograph becomes a space). A legend
-    sets the symbol apart ("▣ = …") or explains two symbols on its line; a bullet in a
-    sentence that says "standard" is none."""
-    marks: set[str] = set()
+def _legend_marks(text: str) -> tuple[frozenset[str], frozenset[str]]:
+    """The symbols a legend says mark a default, and every symbol such a legend explains: kept
+    in the text so a chart cell ("Warm ▣", "◎") still says which choice is the default and
+    which are possible (every other pictograph becomes a space). A legend sets the symbol
+    apart ("▣ = …") or explains two symbols on its line; a bullet in a sentence that says
+    "standard" is none."""
+    defaults: set[str] = set()
+    kept: set[str] = set()
     for m in _DEFAULT_LEGEND.finditer(text):
         mark = m.group(1)
         if mark not in _symbols(mark) or _symbols(m.group(0)[m.end(1) - m.start() :]):
@@ -101,14 +103,20 @@ def _default_marks(text: str) -> frozenset[str]:
         end = text.find("\n", m.start(1))
         line = text[text.rfind("\n", 0, m.start(1)) + 1 : end if end >= 0 else len(text)]
         if m.group(2) or len(_symbols(line)) >= 2:
-            marks.add(mark)
-    return frozenset(marks)
+            defaults.add(mark)
+            kept |= _symbols(line) | {mark}  # the legend's other marks ("● selectable")
+    return frozenset(defaults), frozenset(kept)
+
+
+def default_marks(text: str) -> frozenset[str]:
+    """The symbols a chart legend says mark a default ("▣ = default setting")."""
+    return _legend_marks(text)[0]
 
 
 def _clean_chars(text: str) -> str:
     """Drop control characters and pictographs; keep letters, digits, punctuation, ▲▼ and °,
     and the symbols a legend says mark a default."""
-    keep = _KEEP | _default_marks(text)
+    keep = _KEEP | _legend_marks(text)[1]
 
     def one(match: re.Match[str]) -> str:
         ch = match.group(0)
