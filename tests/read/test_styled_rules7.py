@@ -126,3 +126,18 @@ def test_a_chart_of_marks_gives_each_row_the_marked_values_and_the_default_mark_
     assert cases["bagel"] == {"values": ["medium", "dark"], "initial": "medium"}
     assert cases["muffin"]["values"] == ["light", "medium"], cases
     assert "crumpet" not in cases, cases
+
+
+def test_a_programme_whose_chart_row_shows_a_dash_gets_no_case_filled_from_the_others() -> None:
+    washer = WASHER.replace(
+        "  Towels           40 °C, 60 °C ◆                  ✓\n",
+        "  Towels           40 °C, 60 °C ◆                  ✓\n"
+        "  Drain            –                               –\n"
+        "  Refresh          –                               –\n",
+    )
+    actions = ["turn_programme_cw", "turn_programme_ccw", "press_temp", "press_start"]
+    model = read_manual(washer, actions).model
+    name = next(n for n in model.variables if "temp" in n)
+    cases = model.variables[name].model_dump(mode="json")["cases"]
+    assert cases["cottons"]["initial"] == "40 °c", cases
+    assert "drain" not in cases and "refresh" not in cases, cases

@@ -109,8 +109,10 @@ def apply_cases(b: Builder) -> None:
                     break
                 if len(cases) >= 2:
                     if all("initial" in c for c in cases.values()) and spec.get("values"):
+                        said = _dashed(rows, column, pvalues)  # "–": the setting is not offered
                         for value in pvalues:  # defaults per programme: the others keep all
-                            cases.setdefault(value, {"values": list(spec["values"])})
+                            if value not in said:
+                                cases.setdefault(value, {"values": list(spec["values"])})
                     _row_steps(spec, cases, header, rows, column, pvalues)
                     _defaults(spec, cases, header, rows, column, pvalues)
                     for key in ("values", "ranges", "initial"):
@@ -130,6 +132,18 @@ def apply_cases(b: Builder) -> None:
 
 
 _YES_NO = {"yes", "no", "y", "n", "—", "-", "–", ""}
+
+
+def _dashed(rows: list[Unit], column: int, pvalues: list[str]) -> set[str]:
+    """The programmes whose row in the chart has only a dash in this column: a programme
+    that does not offer the setting, which the other programmes' defaults do not fill."""
+    out: set[str] = set()
+    for row in rows:
+        if column < len(row.cells) and re.fullmatch(
+            r"\s*[–—-]+\s*(?:\(.*\))?\s*", row.cells[column]
+        ):
+            out.update(_parent_values(row.cells[0], pvalues))
+    return out
 
 
 def _guessed_listed(b: Builder, header: tuple[str, ...], rows: list[Unit]) -> bool:
