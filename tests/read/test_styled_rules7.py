@@ -141,3 +141,11 @@ def test_a_programme_whose_chart_row_shows_a_dash_gets_no_case_filled_from_the_o
     cases = model.variables[name].model_dump(mode="json")["cases"]
     assert cases["cottons"]["initial"] == "40 °c", cases
     assert "drain" not in cases and "refresh" not in cases, cases
+
+
+def test_a_wait_in_a_step_numbered_without_a_full_stop_is_still_a_wait() -> None:
+    from apbot.read.shapes import is_wait
+
+    assert is_wait("2  Let it soak for 3–4 hours.")
+    assert is_wait("4) Wait for 10 to 20 minutes.")
+    assert not is_wait("Set 2 to 4 hours with the TIMER key.")
