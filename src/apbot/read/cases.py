@@ -16,6 +16,7 @@ from apbot.model.values import parse_hms
 from apbot.read.build import Builder
 from apbot.read.cases_cells import _STEP_HEAD_RE, DEFAULT_WORDS, _cases, _defaults, _row_steps
 from apbot.read.cases_lists import as_choices, listed_cases, listed_column
+from apbot.read.cases_marks import mark_cases
 from apbot.read.cases_tables import _parent_values, _tables
 from apbot.read.labels import words
 from apbot.read.shapes import CHOICE_WORDS
@@ -71,6 +72,12 @@ def apply_cases(b: Builder) -> None:
         if parent is None:
             continue
         pvalues = b.variables[parent]["values"]
+        marked = mark_cases(b, header, rows, parent, fixed | parents | children)
+        if marked:  # "WHITE | ◎ | ● | –" under "Menu | REGULAR | SOFTER | HARDER"
+            parents.add(parent)
+            children.add(marked)
+            _no_toggle(b, marked, b.variables[marked]["cases"])
+            continue
         header = _named_ranges(header, rows)
         for column in range(1, len(header)):
             if set(words(header[column])) & (DEFAULT_WORDS | ADVICE_WORDS):
@@ -102,8 +109,10 @@ def apply_cases(b: Builder) -> None:
                     break
                 if len(cases) >= 2:
                     if all("initial" in c for c in cases.values()) and spec.get("values"):
+                        said = _dashed(rows, column, pvalues)  # "–": the setting is not offered
                         for value in pvalues:  # defaults per programme: the others keep all
-                            cases.setdefault(value, {"values": list(spec["values"])})
+                            if value not in said:
+                                cases.setdefault(value, {"values": list(spec["values"])})
                     _row_steps(spec, cases, header, rows, column, pvalues)
                     _defaults(spec, cases, header, rows, column, pvalues)
                     for key in ("values", "ranges", "initial"):
@@ -123,6 +132,18 @@ def apply_cases(b: Builder) -> None:
 
 
 _YES_NO = {"yes", "no", "y", "n", "—", "-", "–", ""}
+
+
+def _dashed(rows: list[Unit], column: int, pvalues: list[str]) -> set[str]:
+    """The programmes whose row in the chart has only a dash in this column: a programme
+    that does not offer the setting, which the other programmes' defaults do not fill."""
+    out: set[str] = set()
+    for row in rows:
+        if column < len(row.cells) and re.fullmatch(
+            r"\s*[–—-]+\s*(?:\(.*\))?\s*", row.cells[column]
+        ):
+            out.update(_parent_values(row.cells[0], pvalues))
+    return out
 
 
 def _guessed_listed(b: Builder, header: tuple[str, ...], rows: list[Unit]) -> bool:

@@ -6,6 +6,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
+from apbot.model.values import format_hms
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.labels import words
@@ -114,7 +115,13 @@ def assign_amounts(
             _keypad_entry(spec)
             if spec.get("entry", {}).get("format") == "mm:ss" and not ev.step:
                 # minutes and seconds typed digit by digit: any second, whatever step was guessed
-                spec["ranges"] = [[lo, hi, 1] for lo, hi, _ in spec["ranges"]]
+                # (and up to the top read, which a coarse guessed step fell short of)
+                tops = [format_hms(int(r.high)) for r in ev.ranges if r.unit == "s"]
+                if len(tops) != len(spec["ranges"]):
+                    tops = [hi for _, hi, _ in spec["ranges"]]
+                spec["ranges"] = [
+                    [lo, top, 1] for (lo, _, _), top in zip(spec["ranges"], tops, strict=True)
+                ]
             b.feature(
                 f"set_{var}", [{"actions": [key.name]}, {"actions": list(digits), "variable": var}]
             )

@@ -190,7 +190,7 @@ _ADVICE_PROSE_RE = re.compile(  # "45 to 55 % is a sensible target", "ideally 40
 
 
 _WAIT_RE = re.compile(  # "Leave for one to two hours", "let it stand for 5–10 minutes"
-    r"(?:^|[.;:]\s+|^\d+\.\s+)(?:then\s+)?(?:leave|wait|let\s+(?:it|them|the\s+\w+)\s+"
+    r"(?:^|[.;:]\s+|^\d+[.)]?\s+)(?:then\s+)?(?:leave|wait|let\s+(?:it|them|the\s+\w+)\s+"
     r"(?:stand|rest|soak|cool))\b[^.;]{0,20}?\bfor\b",
     re.IGNORECASE,
 )

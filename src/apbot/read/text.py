@@ -76,8 +76,47 @@ _KEEP = frozenset("▲▼△▽◀▶◄►◁▷⏻°↑↓←→⟳⟲↻↺")
 _SPECIAL = re.compile(r"[^\x20-\x7e\n\t]")  # anything outside printable ASCII
 
 
+# a chart legend naming the symbol that marks a default: "▣ = default setting", "◎ set when
+# the menu is chosen (standard)"; no other symbol between the mark and the word
+_DEFAULT_LEGEND = re.compile(
+    r"(?:^|\s)(\S)[ \t]*([=:…]|\.{2,})?[^\n=:]{0,40}?\b(?:default|standard|preset|factory)\b",
+    re.I | re.M,
+)
+
+
+def _symbols(text: str) -> set[str]:
+    return {c for c in text if unicodedata.category(c) == "So" and c not in _KEEP}
+
+
+def _legend_marks(text: str) -> tuple[frozenset[str], frozenset[str]]:
+    """The symbols a legend says mark a default, and every symbol such a legend explains: kept
+    in the text so a chart cell ("Warm ▣", "◎") still says which choice is the default and
+    which are possible (every other pictograph becomes a space). A legend sets the symbol
+    apart ("▣ = …") or explains two symbols on its line; a bullet in a sentence that says
+    "standard" is none."""
+    defaults: set[str] = set()
+    kept: set[str] = set()
+    for m in _DEFAULT_LEGEND.finditer(text):
+        mark = m.group(1)
+        if mark not in _symbols(mark) or _symbols(m.group(0)[m.end(1) - m.start() :]):
+            continue
+        end = text.find("\n", m.start(1))
+        line = text[text.rfind("\n", 0, m.start(1)) + 1 : end if end >= 0 else len(text)]
+        if m.group(2) or len(_symbols(line)) >= 2:
+            defaults.add(mark)
+            kept |= _symbols(line) | {mark}  # the legend's other marks ("● selectable")
+    return frozenset(defaults), frozenset(kept)
+
+
+def default_marks(text: str) -> frozenset[str]:
+    """The symbols a chart legend says mark a default ("▣ = default setting")."""
+    return _legend_marks(text)[0]
+
+
 def _clean_chars(text: str) -> str:
-    """Drop control characters and pictographs; keep letters, digits, punctuation, ▲▼ and °."""
+    """Drop control characters and pictographs; keep letters, digits, punctuation, ▲▼ and °,
+    and the symbols a legend says mark a default."""
+    keep = _KEEP | _legend_marks(text)[1]
 
     def one(match: re.Match[str]) -> str:
         ch = match.group(0)
@@ -88,7 +127,7 @@ def _clean_chars(text: str) -> str:
             return "COLD"  # the snowflake printed for a cold wash or a cold setting
         if "\u2500" <= ch <= "\u257f":
             return "-"  # box drawing: a rule across a table stays a rule
-        if cat == "So" and ch not in _KEEP:
+        if cat == "So" and ch not in keep:
             return " "  # emoji and dingbats
         return ch
 

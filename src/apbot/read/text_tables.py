@@ -26,6 +26,14 @@ def _cells(line: str) -> tuple[str, ...]:
     return tuple(c for c in re.split(r"\s{2,}(?![,;])|\t+", _strip_markup(line).strip()) if c)
 
 
+def _caption(lines: list[str], k: int) -> bool:
+    """A short line standing alone above a table ("Steam chart (continued overleaf)"): a
+    caption, which no table header goes on from as a sentence would."""
+    line = lines[k].strip()
+    alone = k == 0 or not lines[k - 1].strip()
+    return alone and len(line) <= 60 and len(_cells(line)) == 1 and not line.endswith(",")
+
+
 def _space_tables(
     lines: list[str], breaks: set[int] | None = None
 ) -> dict[int, tuple[tuple[str, ...], bool]]:
@@ -46,6 +54,7 @@ def _space_tables(
             and not re.search(r"[.:!?]$", before)
             and not before.isupper()
             and not before.startswith("#")  # a Markdown heading ends what came before
+            and not _caption(lines, i - 1)
         ):
             i += 1  # the line goes on with a sentence from the line before: not a table header
             continue

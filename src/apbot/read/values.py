@@ -12,7 +12,8 @@ import re
 from dataclasses import dataclass
 
 from apbot.model.values import unit_of, words_to_number
-from apbot.read.values_labels import clock_seconds, minutes_and_seconds
+from apbot.read.values_labels import clock_seconds, clock_tops, minutes_and_seconds
+from apbot.read.values_more import further_top
 
 NUM = (
     r"(?:\d+(?:[.,]\d+)?|one|two|three|four|five|six|seven|eight|nine|ten|twelve|fifteen"
@@ -140,11 +141,14 @@ def _ranges(text: str) -> list[Range]:
             continue  # "press A and B": no unit, "and" joins words more often than numbers
         if unit == "" and (hi > 10_000 or _FOREIGN_UNIT.match(text, m.end())):
             continue  # "220–240 V", "12–32 cm": a rating or a size, not a setting's range
+        if unit == "":
+            hi = further_top(text, m.end(), hi)  # "1 to 9, or 1 and then 0 for level 10"
         out.append(Range(lo, hi, unit))
     for m in UPTO_RE.finditer(text):
         hi = number(m.group(1))
         if hi:
             out.append(Range(0, hi, unit_name(m.group(2))))
+    out += [Range(0, top, "s") for top in clock_tops(text) if top]  # "up to 99:59"
     return out
 
 

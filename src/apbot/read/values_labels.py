@@ -24,3 +24,23 @@ def clock_seconds(figure: str, min_sec: bool) -> int:
     """Seconds in a clock figure "m:ss" (``min_sec``) or "h:mm"."""
     first, second = figure.split(":")
     return int(first) * 60 + int(second) if min_sec else int(first) * 3600 + int(second) * 60
+
+
+# only a top written as a clock figure: "up to 99:59", "the longest setting is 99:59"
+_CLOCK_TOP_RE = re.compile(
+    r"\b(?:up to|at most|max(?:imum|\.)?(?:\s+(?:of|is))?|(?:longest|maximum)\b[\w ]{0,24}?\bis)"
+    r"\s+(\d{1,2}:\d{2})(?![\d:])",
+    re.IGNORECASE,
+)
+
+
+def clock_tops(text: str) -> list[int]:
+    """Seconds of each top written as one clock figure ("up to 99:59"). Read as minutes and
+    seconds when labelled so or when the first part passes a day's 23 hours; else h:mm."""
+    out: list[int] = []
+    for m in _CLOCK_TOP_RE.finditer(text):
+        figure = m.group(1)
+        min_sec = minutes_and_seconds(text, m.end()) or int(figure.split(":")[0]) > 23
+        if int(figure.split(":")[1]) < 60:
+            out.append(clock_seconds(figure, min_sec))
+    return out
