@@ -4,6 +4,7 @@ word than the one the reader took)."""
 
 from __future__ import annotations
 
+from apbot.agent.relit import _known_words, new_sign
 from tests.helpers import model_from
 from tests.helpers import run_checked as run
 
@@ -78,3 +79,19 @@ def test_a_lamp_word_whose_qualifier_changes_and_a_new_sign_of_running_are_learn
     assert reached
     assert any("'SHIELD BLUE'" in note for note in episode.repairs)
     assert any("'SPRAYING'" in note for note in episode.repairs)
+
+
+def test_a_programme_name_coming_back_is_no_new_sign_of_a_lamp() -> None:
+    """Switching a lamp off can bring back a screen that names the programme (``grill 180``):
+    a value of one of the belief's lists is a word it knows, not the lamp's new sign."""
+    belief = model_from(
+        BELIEF.replace(
+            "  power: {type",
+            "  mode: {type: discrete, values: [bake, grill]}\n  power: {type",
+        ).replace(
+            "  start:\n",
+            "  mode:\n    - {actions: [press_go], variable: mode, effect: next}\n  start:\n",
+        ),
+        check=False,
+    )
+    assert new_sign("ROT", "ROT", "grill 180", _known_words(belief)) is None

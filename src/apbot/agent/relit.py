@@ -18,6 +18,7 @@ from apbot.agent.reader import DisplayReader
 from apbot.agent.repair import RepairError, set_display
 from apbot.agent.session import Executed, Session
 from apbot.model.display import lamp_for
+from apbot.model.domain import all_values
 from apbot.model.schema import ApplianceModel, DiscreteVariable
 
 
@@ -112,7 +113,8 @@ def new_sign(lamp: str, before: str, after: str, known: set[str]) -> str | None:
 
 
 def _known_words(model: ApplianceModel) -> set[str]:
-    """Every word the belief prints: labels, units and each value's ``show`` text
+    """Every word the belief prints: labels, units, the values of its lists of choices (a
+    programme's ``rotisserie`` is no sign of a lamp) and each value's ``show`` text
     (case-folded)."""
     words: set[str] = set()
     for name, spec in model.variables.items():
@@ -121,6 +123,8 @@ def _known_words(model: ApplianceModel) -> set[str]:
             texts += list(spec.show.values())
         elif spec.show:
             texts.append(spec.show)
+        if isinstance(spec, DiscreteVariable):
+            texts += [str(v) for v in all_values(spec)]
         for text in texts:
             words |= {w.casefold() for w in text.split() if w.isalpha()}
     for guard in model.guards:
