@@ -19,6 +19,7 @@ from apbot.agent.misfiled import KeyMover
 from apbot.agent.mismatch import shown_otherwise, wrong_setting
 from apbot.agent.procedures import ProcedureRepairer
 from apbot.agent.quantities import loose
+from apbot.agent.relit import relit
 from apbot.agent.session import MISSING, UNREADABLE, AgentConfig, Executed, Session, Stop
 from apbot.agent.side_effects import SideEffectLearner
 from apbot.model.schema import GoTo
@@ -71,6 +72,8 @@ class Checks:
         )
         if not done.refused and self.displays.no_lamp(done):
             pass  # plan again, reading the setting on its own screen only
+        elif relit(self.session, done):
+            pass  # the lamp's words were learnt from the press that switched it
         elif not done.refused and self.splitter.split(done):
             pass  # plan again with the procedure the key really starts
         elif (

@@ -256,6 +256,10 @@ class DisplayLearner:
                     return found[name]
         return None
 
+    def main(self, text: str) -> str:
+        """The main display of ``text`` (without the lamps the belief knows at its end)."""
+        return self._main(text)
+
     def _main(self, text: str) -> str:
         """The main display: the text without the lamps the belief knows at its end."""
         lamps = self.session.perceiver.reader.lamp_texts()

@@ -73,6 +73,7 @@ class Executed:
     unseen_before: frozenset[str] = frozenset()  # changed unseen (or guessed) before the action
     shown_before: dict[str, Any] = field(default_factory=dict)  # last shown, before the action
     typed: bool = False  # the display showed the keypad entry as typed, not the value
+    text_before: str = ""  # what the display showed before the action
 
     def observed(self, name: str) -> Any:
         """The value of ``name`` the display showed after this action (MISSING if none)."""

@@ -32,12 +32,14 @@ from apbot.agent.repair import (
     set_on_entry,
 )
 from apbot.agent.session import MISSING, Executed, Session
+from apbot.agent.worded import as_choices, as_text, reads_all, worded_values
 from apbot.model.domain import all_values
 from apbot.model.effects import parse_entry
 from apbot.model.schema import (
     Add,
     ApplianceModel,
     DiscreteVariable,
+    NumericVariable,
     Skip,
     TimeVariable,
     time_step_seconds,
@@ -109,8 +111,13 @@ class Explorer:
         """Texts the belief could not read: learn how the display prints the setting from them,
         then read them again; what stays unreadable counts as dark."""
         texts = [v.text for v in forward + (backward or []) if isinstance(v, Unread)]
-        if texts and not self.displays.learn_word(name, forward + (backward or []), believed):
-            self.displays.learn(name, texts)
+        if (
+            texts
+            and not self.displays.learn_word(name, forward + (backward or []), believed)
+            and not self.displays.learn(name, texts)
+            and self._learn_words(name, texts)
+        ):
+            forward, backward = as_text(forward), None if backward is None else as_text(backward)
 
         def again(trace: list[Any]) -> list[Any]:
             result = []
@@ -122,6 +129,28 @@ class Explorer:
             return result
 
         return again(forward), None if backward is None else again(backward)
+
+    def _learn_words(self, name: str, texts: list[str]) -> bool:
+        """A numeric setting whose walk showed words where numbers were due ("no spin"):
+        its positions become choices, numbers and words alike (:mod:`apbot.agent.worded`)."""
+        session = self.session
+        model = session.belief.model
+        spec = model.variables[name]
+        if not isinstance(spec, NumericVariable):
+            return False
+        mains = [self.displays.main(t) for t in dict.fromkeys(texts)]
+        words = worded_values(spec, name, mains)
+        if words is None or not session.budget.once("template", f"{name}:words"):
+            return False
+        try:
+            new = as_choices(model, name, words)
+        except RepairError as exc:
+            session.episode.log("repair", f"could not repair {name}: {exc}")
+            return False
+        if not reads_all(new, name, mains):
+            return False
+        session.adopt(new, f"{name}: choices, some shown as words ({', '.join(words)})", None)
+        return True
 
     def walk(
         self, name: str, action: PlannedAction, history: list[Any] | None = None

@@ -190,6 +190,7 @@ def press(
         unseen,
         shown_before,
         typed,
+        before_text,
     )
 
 

@@ -1,0 +1,138 @@
+"""An on/off lamp the belief prints other than the panel, learnt from the press meant to switch it.
+
+A manual's words for a lamp fall short of the panel in two common ways. The lamp is a word with
+a qualifier that changes with the state ("LOCK RED" / "LOCK GREEN" where the manual says the
+lock icon turns green): the belief lights "LOCK" and reads both as lit. Or the word the reader
+took as the sign of the state is not the one the panel shows (a descaling "CAL" as the sign of
+running) while the panel prints another ("POURING 400 ml" in place of the temperature). Either
+way the press that was to switch the setting changed the display by one word the belief does
+not read, and the belief saw no change: that word is the setting's new state.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+from apbot.agent.reader import DisplayReader
+from apbot.agent.repair import RepairError, set_display
+from apbot.agent.session import Executed, Session
+from apbot.model.display import lamp_for
+from apbot.model.domain import all_values
+from apbot.model.schema import ApplianceModel, DiscreteVariable
+
+
+def relit(session: Session, done: Executed) -> bool:
+    """Learn how the display shows ``done``'s on/off lamp setting from the press that was to
+    switch it and showed it unswitched (or dark): True when the belief changed."""
+    name = done.variable
+    if done.refused or name is None or name not in done.surprises or done.state_before is None:
+        return False
+    model = session.belief.model
+    spec = model.variables.get(name)
+    if not isinstance(spec, DiscreteVariable) or not spec.visible:
+        return False
+    domain = tuple(session.domain_values(name))
+    old = session.belief.compiled.assignment(done.state_before)[name]
+    predicted, observed = done.surprises[name]
+    if len(domain) != 2 or predicted == old or observed not in (old, None):
+        return False
+    before, after = done.text_before, done.feedback.text
+    if not before.strip() or not after.strip() or before == after:
+        return False
+    known = _known_words(model)
+    show = qualified(lamp_for(spec, name, old, domain), before, after, known)
+    if show is not None and not lamp_for(spec, name, predicted, domain):
+        lit, unlit = show
+        mapping = {str(old): lit, str(predicted): unlit}
+    elif not lamp_for(spec, name, old, domain) and (
+        word := new_sign(lamp_for(spec, name, predicted, domain), before, after, known)
+    ):
+        mapping = {str(predicted): word, str(old): ""}
+    else:
+        return False
+    if not session.budget.once("template", f"relit:{name}"):
+        return False
+    try:
+        new = set_display(model, name, mapping)
+    except RepairError as exc:
+        session.episode.log("repair", f"could not repair how {name} is shown: {exc}")
+        return False
+    if not _reads(new, name, after, predicted, session.belief.values()):
+        return False
+    shown = ", ".join(f"{v!r} as {t!r}" for v, t in mapping.items() if t)
+    session.adopt(new, f"{name} is shown {shown}", session.belief.pointer())
+    session.belief.set_value(name, predicted)
+    session.reread()
+    return True
+
+
+def qualified(lamp: str, before: str, after: str, known: set[str]) -> tuple[str, str] | None:
+    """The lamp with the word beside it before and after the press (``LOCK RED``, ``LOCK
+    GREEN``), when that word alone changed: one word of letters the belief does not know on
+    each side of the press, following the lamp (or, if none follows, before it).
+
+    >>> qualified("LOCK", "55°C  LOCK RED", "LOCK GREEN", set())
+    ('LOCK RED', 'LOCK GREEN')
+    >>> qualified("LOCK", "55°C  LOCK", "LOCK GREEN", set()) is None
+    True
+    """
+    if not lamp:
+        return None
+    word = r"([^\W\d_]+)"
+    for pattern, join in (
+        (rf"(?<!\w){re.escape(lamp)}\s+{word}(?!\w)", lambda w: f"{lamp} {w}"),
+        (rf"(?<!\w){word}\s+{re.escape(lamp)}(?!\w)", lambda w: f"{w} {lamp}"),
+    ):
+        was = {w for w in re.findall(pattern, before, re.IGNORECASE)}
+        now = {w for w in re.findall(pattern, after, re.IGNORECASE)}
+        if len(was) != 1 or len(now) != 1:
+            continue
+        old, new = was.pop(), now.pop()
+        if old.casefold() == new.casefold() or {old.casefold(), new.casefold()} & known:
+            return None
+        return join(old), join(new)
+    return None
+
+
+def new_sign(lamp: str, before: str, after: str, known: set[str]) -> str | None:
+    """The one word of letters the press brought to the display (``POURING``), when the lamp
+    the belief lights for the new state is nowhere on it: a word it did not show before and
+    the belief does not know.
+
+    >>> new_sign("CAL", "45°C 400 ml", "POURING 400 ml", set())
+    'POURING'
+    >>> new_sign("CAL", "45°C 400 ml", "CAL 400 ml", set()) is None
+    True
+    """
+    if not lamp or re.search(rf"(?<!\w){re.escape(lamp)}(?!\w)", after, re.IGNORECASE):
+        return None
+    was = {w.casefold() for w in before.split()}
+    new = [w for w in after.split() if w.isalpha() and w.casefold() not in was | known]
+    return new[0] if len(new) == 1 else None
+
+
+def _known_words(model: ApplianceModel) -> set[str]:
+    """Every word the belief prints: labels, units, the values of its lists of choices (a
+    programme's ``rotisserie`` is no sign of a lamp) and each value's ``show`` text
+    (case-folded)."""
+    words: set[str] = set()
+    for name, spec in model.variables.items():
+        texts = [spec.display_label(name), getattr(spec, "unit", None) or ""]
+        if isinstance(spec.show, dict):
+            texts += list(spec.show.values())
+        elif spec.show:
+            texts.append(spec.show)
+        if isinstance(spec, DiscreteVariable):
+            texts += [str(v) for v in all_values(spec)]
+        for text in texts:
+            words |= {w.casefold() for w in text.split() if w.isalpha()}
+    for guard in model.guards:
+        words |= {w.casefold() for w in (guard.display or "").split() if w.isalpha()}
+    return words
+
+
+def _reads(model: ApplianceModel, name: str, text: str, value: Any, context: Any) -> bool:
+    """Whether ``model`` reads ``text`` as ``name`` = ``value``."""
+    reading = DisplayReader(model).read(text, {**context, name: value})
+    return any(h.value(name) == value for h in reading.hypotheses)
