@@ -1,0 +1,65 @@
+"""Rules a fresh-eyes review found firing on ordinary text, each pinned on a small manual of
+our own: a key legend after a page break is no chart row, a switch named later in a sentence is
+no hold's toggle, punctuation is no default mark, ..."""
+
+from __future__ import annotations
+
+from apbot.model.schema import DiscreteVariable
+from apbot.read import read_manual
+
+
+def _values(model, name: str) -> list[str]:  # type: ignore[no-untyped-def]
+    var = model.variables[name]
+    assert isinstance(var, DiscreteVariable), var
+    return [str(v).lower() for v in var.values]
+
+
+# a dryer's chart ends at a page break; the next page opens with its key legend, laid out
+# in two columns of its own
+LEGEND_AFTER_BREAK = """TUMBLE DRYER TD-4 GUIDE
+
+DRYING CHART
+
+   Cycle            Heat              Minutes
+   Towels           High              90
+   Shirts           Medium            50
+   Delicates        Low               30
+
+                                                   Page 1
+
+HEAT             Picks another heat level.
+DELAY            Puts off the start by an hour.
+START            Begins drying.
+
+                                                   Page 2
+
+CARE
+
+Empty the lint screen after each load.
+
+                                                   Page 3
+"""
+
+
+def test_a_key_legend_after_a_page_break_is_not_read_as_chart_rows() -> None:
+    actions = ["turn_cycle_cw", "press_heat", "press_delay", "press_start"]
+    model = read_manual(LEGEND_AFTER_BREAK, actions).model
+    name = next(n for n in model.variables if "cycle" in n)
+    assert _values(model, name) == ["towels", "shirts", "delicates"]
+
+
+# a soup maker whose long press cancels, and whose next sentence-half switches the mains by hand
+SOUP = """
+KEYS
+
+BLEND     Chooses smooth or chunky.
+START     Begins cooking.
+
+Press and hold START for 2 seconds to stop the programme, then switch the MAINS off at the wall.
+"""
+
+
+def test_a_switch_named_after_then_is_not_what_the_hold_toggles() -> None:
+    model = read_manual(SOUP, ["press_blend", "press_start", "hold_start"]).model
+    held = [f for fs in model.features.values() for f in fs if f.actions == ["hold_start"]]
+    assert held and all(f.effect != "toggle" for f in held), held
