@@ -63,3 +63,18 @@ def test_a_switch_named_after_then_is_not_what_the_hold_toggles() -> None:
     model = read_manual(SOUP, ["press_blend", "press_start", "hold_start"]).model
     held = [f for fs in model.features.values() for f in fs if f.actions == ["hold_start"]]
     assert held and all(f.effect != "toggle" for f in held), held
+
+
+# a desk fan whose legend says what holding a key switches off, the "off" right before the stop
+FAN = """
+KEYS
+
+SPEED     Steps through low, medium and high.
+GLOW      Lights the panel. Holding GLOW turns the panel light off.
+"""
+
+
+def test_the_off_after_a_held_key_s_noun_is_not_part_of_the_toggle_s_name() -> None:
+    model = read_manual(FAN, ["press_speed", "press_glow", "hold_glow"]).model
+    held = [f for fs in model.features.values() for f in fs if f.actions == ["hold_glow"]]
+    assert held and held[0].variable == "panel_light", held

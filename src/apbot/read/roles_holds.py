@@ -24,9 +24,10 @@ _SWITCHED = re.compile(
 _CLAUSE_RE = re.compile(r"(?<=[.!?;])\s+|,?\s+then\b")
 
 
-def held_switch(b: Builder, info: ActionInfo) -> tuple[str, int] | None:
+def held_named_switch(b: Builder, info: ActionInfo) -> tuple[str, int] | None:
     """The setting holding this key switches on or off, and the unit that says so; None when
-    no sentence both holds the key and switches a named setting."""
+    no clause both holds the key and switches a setting named in capitals. (Not
+    ``roles_common.held_switch``, which reads a lower-case noun near the key's own legend.)"""
     if info.skill != "hold" or not info.controls or info.controls[0] not in b.labels:
         return None
     label = b.labels[info.controls[0]].text
