@@ -78,3 +78,27 @@ def test_the_off_after_a_held_key_s_noun_is_not_part_of_the_toggle_s_name() -> N
     model = read_manual(FAN, ["press_speed", "press_glow", "hold_glow"]).model
     held = [f for fs in model.features.values() for f in fs if f.actions == ["hold_glow"]]
     assert held and held[0].variable == "panel_light", held
+
+
+# a washer's chart whose lists end in a full stop: no item is marked as the default
+STOPS = """
+KEYS
+
+PROGRAM knob   Chooses the programme.
+SPIN           Spin strength. Each touch lights the next one.
+START          Starts washing.
+
+PROGRAMME CHART
+
+   Program          Spin                     Load
+   Denim            Gentle, Normal, Fast.    jeans, jackets
+   Mixed            Gentle, Normal.          shirts
+   Silk             Gentle.                  scarves
+"""
+
+
+def test_a_full_stop_after_a_chart_list_is_no_default_mark() -> None:
+    model = read_manual(STOPS, ["turn_program_cw", "press_spin", "press_start"]).model
+    cases = model.variables["spin"].model_dump()["cases"]
+    assert cases["denim"]["values"] == ["gentle", "normal", "fast"]
+    assert all(c.get("initial") in (None, "gentle") for c in cases.values()), cases
