@@ -102,3 +102,25 @@ def test_a_full_stop_after_a_chart_list_is_no_default_mark() -> None:
     cases = model.variables["spin"].model_dump()["cases"]
     assert cases["denim"]["values"] == ["gentle", "normal", "fast"]
     assert all(c.get("initial") in (None, "gentle") for c in cases.values()), cases
+
+
+# a bread maker whose programme legend has a row headed by the key's name and one more word,
+# the key named again in the row's instructions (not as one of a list of values)
+RISE = """
+# Bread maker
+
+## Using it
+
+Press KNEAD to mix the dough. Press START to begin.
+
+## Programmes
+
+KNEAD RISE     Lets the dough prove: cover the pan, wait an hour and press KNEAD.
+QUIET MODE     The beeper stays silent.
+"""
+
+
+def test_a_longer_row_head_naming_the_key_in_its_instructions_is_not_the_key() -> None:
+    model = read_manual(RISE, ["press_knead", "press_start"]).model
+    labels = {c.id: c.label for c in model.controls}
+    assert labels["knead_control"] == "KNEAD", labels
