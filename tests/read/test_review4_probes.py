@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from apbot.model.schema import DiscreteVariable
 from apbot.read import read_manual
+from apbot.read.goal import parse_instruction
 
 
 def _values(model, name: str) -> list[str]:  # type: ignore[no-untyped-def]
@@ -124,3 +125,34 @@ def test_a_longer_row_head_naming_the_key_in_its_instructions_is_not_the_key() -
     model = read_manual(RISE, ["press_knead", "press_start"]).model
     labels = {c.id: c.label for c in model.controls}
     assert labels["knead_control"] == "KNEAD", labels
+
+
+# a pressure cooker with a heat key, and a sewing machine whose stitch length is a setting
+COOKER = """
+## Keys
+
+DISH        Chooses the dish: STEW → BEANS → STEAM.
+HEAT        Chooses the heat: LOW → MEDIUM → HIGH.
+START       Starts cooking.
+"""
+
+SEWER = """
+## Keys
+
+STITCH      Chooses the stitch: STRAIGHT → ZIGZAG → BLIND.
+LENGTH      Switches the long stitch on or off.
+START       Starts sewing.
+"""
+
+
+def test_slowly_is_a_pace_not_a_low_heat() -> None:
+    model = read_manual(COOKER, ["press_dish", "press_heat", "press_start"]).model
+    goal = parse_instruction(model, "Steam the vegetables slowly and start")
+    assert goal.get("dish") == "steam" and "heat" not in goal, goal
+    assert parse_instruction(model, "Steam the vegetables on low heat").get("heat") == "low"
+
+
+def test_long_without_a_number_sets_no_length() -> None:
+    model = read_manual(SEWER, ["press_stitch", "press_length", "press_start"]).model
+    goal = parse_instruction(model, "Sew a long zigzag seam")
+    assert goal.get("stitch") == "zigzag" and "length" not in goal, goal
