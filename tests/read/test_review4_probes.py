@@ -7,6 +7,7 @@ from __future__ import annotations
 from apbot.model.schema import DiscreteVariable
 from apbot.read import read_manual
 from apbot.read.goal import parse_instruction
+from apbot.read.values import find_ranges
 
 
 def _values(model, name: str) -> list[str]:  # type: ignore[no-untyped-def]
@@ -156,3 +157,8 @@ def test_long_without_a_number_sets_no_length() -> None:
     model = read_manual(SEWER, ["press_stitch", "press_length", "press_start"]).model
     goal = parse_instruction(model, "Sew a long zigzag seam")
     assert goal.get("stitch") == "zigzag" and "length" not in goal, goal
+
+
+def test_a_clock_range_labelled_minutes_and_seconds_is_not_also_hours() -> None:
+    found = find_ranges("Grill timer      0:05 - 30:00 (min:s)")
+    assert [(r.low, r.high, r.unit) for r in found] == [(5, 1800, "s")]
