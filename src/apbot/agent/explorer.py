@@ -9,6 +9,7 @@ which way a key moves, how much an ``add`` key adds (``apbot.agent.infer`` does 
 
 from __future__ import annotations
 
+import re
 from typing import Any
 
 from apbot.agent.displays import DisplayLearner
@@ -590,9 +591,13 @@ def _spelt_out(old: list[str], new: list[str]) -> dict[str, str]:
     {'lo': 'low', 'hi': 'high'}
     >>> _spelt_out(["lo", "hi"], ["low", "medium", "high"])
     {}
+    >>> _spelt_out(["1", "2", "3"], ["10", "20", "30"])  # other numbers, not the same ones
+    {}
     """
     if len(old) != len(new) or set(old) == set(new):
         return {}
+    if not all(re.fullmatch(r"[^\W\d_]+(?:[ -][^\W\d_]+)*", v) for v in old):
+        return {}  # only words are shortened on a display; "1" is no short "10"
     found: dict[str, str] = {}
     for value in old:
         fits = [n for n in new if n.casefold().startswith(value.casefold())]

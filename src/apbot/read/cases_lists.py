@@ -14,7 +14,8 @@ from typing import Any
 from apbot.read.cases_tables import _parent_values
 from apbot.read.text import Unit
 
-_MARK_RE = re.compile(r"\s*([^\w\s(),/&'-]+)\s*$")  # "Warm ▣", "High *", "Low ◎"
+# "Warm ▣", "High *", "Low ◎"; a sentence's stop after the last item ("Low, High.") is no mark
+_MARK_RE = re.compile(r"\s*([^\w\s(),/&'.;:!?-]+)\s*[.;:!?]?\s*$")
 
 
 def _items(cell: str) -> list[tuple[str, bool]]:
@@ -23,7 +24,8 @@ def _items(cell: str) -> list[tuple[str, bool]]:
     for raw in re.split(r"\s*,\s*", re.sub(r"\(.*?\)", "", cell)):
         mark = _MARK_RE.search(raw)
         item = raw[: mark.start()] if mark else raw
-        item = re.sub(r"\s+only$", "", re.sub(r"\s+", " ", item.strip().lower()))
+        item = re.sub(r"\s+", " ", item.strip().rstrip(".;:!?").strip().lower())
+        item = re.sub(r"\s+only$", "", item)
         if item and re.search(r"[a-z]", item) and len(item) <= 24:
             out.append((item, bool(mark)))
     return out

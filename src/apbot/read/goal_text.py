@@ -21,6 +21,17 @@ CONNECTORS = frozenset({"and", "+", "-", "/", "&", ",", "then", "with", "n"})
 CLAUSE_ENDS = frozenset({".", ";", "!", "?", "(", ")"})
 
 
+# words that name a measure only beside a number ("a 3 mm long stitch"); alone they describe
+# the task ("sew a long seam"), not a setting
+_MEASURE_WORDS = frozenset({"long"})
+
+
+def _measured(tokens: list[Token], k: int) -> bool:
+    """A number stands just before the word at k (with its unit: "3 mm long") or right after."""
+    near = [tokens[j].text for j in (k - 2, k - 1, k + 1) if 0 <= j < len(tokens)]
+    return any(re.fullmatch(r"\d+(?:[.,]\d+)?", w) or w in NUMBER_WORDS for w in near)
+
+
 @dataclass
 class Text:
     tokens: list[Token]
@@ -30,7 +41,11 @@ class Text:
     @classmethod
     def of(cls, text: str) -> Text:
         tokens = tokenize(split_camel(unhyphen(text)))
-        return cls(tokens, [stem(t.text) for t in tokens], [concept(t.text) for t in tokens])
+        concepts = [concept(t.text) for t in tokens]
+        for k, t in enumerate(tokens):
+            if t.text in _MEASURE_WORDS and not _measured(tokens, k):
+                concepts[k] = stem(t.text)  # "a long seam": no length asked for
+        return cls(tokens, [stem(t.text) for t in tokens], concepts)
 
     def word(self, k: int) -> str:
         return self.tokens[k].text if 0 <= k < len(self.tokens) else ""

@@ -415,6 +415,10 @@ def _first_words(name: str, info: VarInfo) -> list[tuple[str, Any, tuple[str, ..
     ]
 
 
+# words of pace that stand for a level of speed ("run it slow": LOW), never of heat
+_PACE_WORDS = frozenset({"slow", "fast"})
+
+
 def _phrases(
     model: ApplianceModel, infos: dict[str, VarInfo]
 ) -> list[tuple[str, Any, tuple[str, ...], float]]:
@@ -447,6 +451,8 @@ def _phrases(
                     continue
                 phrases.append((name, value, tuple(stem(w) for w in words), 1.0))
                 for synonym in SYNONYMS.get(words[0], ()) if len(words) == 1 else ():
+                    if synonym in _PACE_WORDS and concept("temperature") in info.vocab:
+                        continue  # "steam the fish slowly": a pace, no LOW heat
                     phrases.append((name, value, (stem(synonym),), 0.8))
         phrases += _first_words(name, info)
     # keys that go straight to one value ("GREEN TEA" sets 80 °C)

@@ -12,6 +12,7 @@ import re
 from dataclasses import dataclass, field
 
 from apbot.read.text import Manual, Unit
+from apbot.read.value_lists import find_list
 
 SYMBOLS: dict[str, tuple[str, ...]] = {
     "up": ("▲", "↑", "△", "∧"),
@@ -173,8 +174,9 @@ def _row_head(manual: Manual, name: str, tokens: list[str]) -> tuple[str, int] |
         m = _ROW_HEAD.match(raw)
         if m is not None:
             heads.setdefault(m.group(1), number)
-            if said.search(raw, m.end(1)):
-                listed.add(m.group(1))
+            found = find_list(raw[m.end(1) :]) if said.search(raw, m.end(1)) else None
+            if found and any(said.fullmatch(item.strip()) for item in found[0]):
+                listed.add(m.group(1))  # an item of a list, not any later mention ("press STEAM")
     if name in heads:
         return None
     short = words(name)

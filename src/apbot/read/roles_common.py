@@ -124,7 +124,8 @@ def held_switch(b: Builder, key: ActionInfo) -> tuple[str, int] | None:
     label = re.escape(b.labels[key.controls[0]].text)
     holding = re.compile(  # "Holding FAN switches the ioniser (see 5.6)."
         rf"\bholding\s+(?:the\s+)?{label}\s+(?:(?:key|button)\s+)?(?:switches|turns|toggles)\s+"
-        r"(?:the\s+)?([a-z][a-z -]{2,30}?)(?:\s+on\s+(?:and|or)\s+off\b|\s*[.;,(]|$)",
+        r"(?:the\s+)?([a-z][a-z -]{2,30}?)"
+        r"(?:\s+on\s+(?:and|or)\s+off\b|(?:\s+(?:on|off)\b)?\s*(?:[.;,(]|$))",
         re.IGNORECASE,
     )
     for i in b.labels[key.controls[0]].mentions:

@@ -14,7 +14,7 @@ from apbot.read.roles_common import (
     label_of,
     mentions_of,
 )
-from apbot.read.roles_holds import held_switch
+from apbot.read.roles_holds import held_named_switch
 from apbot.read.shapes import RUNNING_RE, STOP_WORDS
 from apbot.read.shown import LOCK_CUE, RUNNING_CUE, shown_words
 
@@ -227,7 +227,7 @@ def assign_running(
                 and info.name not in done | set(run_actions)
                 and info.token in {s.token for s in starts}
             ):
-                switched = held_switch(b, info)
+                switched = held_named_switch(b, info)
                 if switched:  # "press and hold START/STOP 3 s to switch AUTO OFF on": its own
                     var = b.add_toggle("_".join(words(switched[0])), switched[0], switched[1])
                     b.feature(var, [{"actions": [info.name], "variable": var, "effect": "toggle"}])

@@ -19,10 +19,15 @@ _SWITCHED = re.compile(
     r"(?P<name>[A-Z][A-Z0-9-]+(?: [A-Z][A-Z0-9-]+){0,2})\s+(?:on|off)\b"
 )
 
+# where one clause ends and the next begins: a sentence's end, a semicolon, or "then" — "hold
+# START to cancel heating, then turn the POWER off" switches POWER by hand, not by the hold
+_CLAUSE_RE = re.compile(r"(?<=[.!?;])\s+|,?\s+then\b")
 
-def held_switch(b: Builder, info: ActionInfo) -> tuple[str, int] | None:
+
+def held_named_switch(b: Builder, info: ActionInfo) -> tuple[str, int] | None:
     """The setting holding this key switches on or off, and the unit that says so; None when
-    no sentence both holds the key and switches a named setting."""
+    no clause both holds the key and switches a setting named in capitals. (Not
+    ``roles_common.held_switch``, which reads a lower-case noun near the key's own legend.)"""
     if info.skill != "hold" or not info.controls or info.controls[0] not in b.labels:
         return None
     label = b.labels[info.controls[0]].text
@@ -34,9 +39,10 @@ def held_switch(b: Builder, info: ActionInfo) -> tuple[str, int] | None:
         re.IGNORECASE,
     )
     for i, unit in enumerate(b.manual.units):
-        if not held.search(unit.text):
-            continue
-        m = _SWITCHED.search(unit.text)
-        if m and m.group("name").upper() != label.upper():
-            return m.group("name"), i
+        for clause in _CLAUSE_RE.split(unit.text):
+            if not held.search(clause):
+                continue
+            m = _SWITCHED.search(clause)
+            if m and m.group("name").upper() != label.upper():
+                return m.group("name"), i
     return None

@@ -68,7 +68,7 @@ def _space_tables(
         while j < len(lines) and (lines[j].strip() or j in breaks):
             if j in breaks:
                 k = next((k for k in range(j, len(lines)) if k not in breaks), len(lines))
-                if k < len(lines) and len(_cells(lines[k])) >= 2 and "|" not in lines[k]:
+                if k < len(lines) and "|" not in lines[k] and _lines_up(lines[i], lines[k]):
                     j = k  # the table goes on over the page break
                     continue
                 break
@@ -94,6 +94,19 @@ def _space_tables(
         else:
             i += 1
     return out
+
+
+def _lines_up(head: str, row: str) -> bool:
+    """Whether a line after a page break is a row of the table headed by ``head``: as many
+    cells as the header, or each cell starting under one of the header's. A key legend on the
+    next page ("TEMP   Changes the wash temperature.") is two cells of its own layout."""
+    cells = _cells(row)
+    if len(cells) < 2:
+        return False
+    if len(cells) == len(_cells(head)):
+        return True
+    starts = [at for at, _ in _placed_cells(head)]
+    return all(any(abs(at - s) <= 2 for s in starts) for at, _ in _placed_cells(row))
 
 
 # the first cell of a chart's row counting the presses ("touch  1  2  3", "No. of presses")

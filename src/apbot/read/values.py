@@ -110,7 +110,8 @@ def find_ranges(text: str) -> list[Range]:
     """Ranges written in the text (times h:mm in seconds with unit ``s``); a word or two in
     brackets after a number is an aside ("from 1 (barely warm) to 10 (full power)")."""
     out = _ranges(text)
-    bare = _ASIDE_RE.sub("", text)
+    # a label saying how to read a clock range ("0:01 - 99:59 (min:s)") is no aside to drop
+    bare = _ASIDE_RE.sub(lambda m: m[0] if minutes_and_seconds(text, m.start()) else "", text)
     return out + [r for r in _ranges(bare) if r not in out] if bare != text else out
 
 
