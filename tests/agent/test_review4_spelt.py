@@ -3,7 +3,7 @@ a dial read as 1, 2, 3 that shows 10, 20, 30 has other values, not the same ones
 
 from __future__ import annotations
 
-from apbot.agent.explorer import _spelt_out
+from apbot.agent.walk_learning import _spelt_out
 
 
 def test_short_words_are_spelt_out_but_numbers_are_not_renamed() -> None:
