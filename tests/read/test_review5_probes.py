@@ -28,3 +28,25 @@ def test_a_setting_key_whose_legend_ends_by_confirming_is_not_a_bare_ok_key() ->
         if "press_6" in step.actions and step.variable
     ]
     assert typed and all(model.variables[v].label.upper() == "TIMER" for v in typed)
+
+
+# an air fryer whose DISPLAY key only changes what the display shows while it counts down
+FRYER_DISPLAY = """
+CONTROL PANEL
+
+POWER   | Switches the fryer on or off.
++ / −   | Raise or lower the cooking time, 1 to 60 minutes.
+TEMP    | Picks the temperature: 160, 180 or 200 °C.
+DISPLAY | While the fryer counts down, press to switch between the time and the temperature \
+on the display.
+MODE    | Alternates the auto-mode between the time and the temperature for 1-2 seconds.
+START   | Starts frying.
+"""
+FRYER_ACTIONS = ["press_power", "press_plus", "press_minus", "press_temp", "press_display"]
+
+
+def test_a_key_that_only_switches_the_display_does_not_switch_the_plus_minus_pair() -> None:
+    model = read_manual(FRYER_DISPLAY, [*FRYER_ACTIONS, "press_mode", "press_start"]).model
+    for steps in model.features.values():
+        pressed = {a for s in steps for a in s.actions}
+        assert not ({"press_display", "press_mode"} & pressed and "press_plus" in pressed), steps

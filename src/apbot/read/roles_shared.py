@@ -56,7 +56,18 @@ _HANDED_RE = re.compile(
     re.IGNORECASE,
 )
 _AGAIN_RE = re.compile(r"\b(?:again|once more)\b", re.IGNORECASE)
-_PAIR_WORDS_RE = re.compile(r"[+−–-]|▲|▼|\b(?:up|down|plus|minus|arrows?|dial|knob|wheel)\b", re.I)
+# the sentence must name the adjuster itself as what is switched: a sign standing alone as a
+# key ("+ and −", "+/-", "the − key"; not "auto-mode", "1-2"), the arrows, the up/down keys,
+# a dial, or "they" setting something; "counts down" or "on the display" name no pair
+_SIGN = r"(?<![\w+−–-])[+−–-](?![\w−–-])"
+_PAIR_WORDS_RE = re.compile(
+    rf"{_SIGN}\s*(?:/|and|or|&)\s*{_SIGN}|{_SIGN}\s*(?:keys?|buttons?)\b|\bthe\s+{_SIGN}|[▲▼]"
+    r"|\b(?:up|down)\s*(?:/|and|or|&)\s*(?:up|down)\b"
+    r"|\b(?:up|down|plus|minus|arrow|adjust(?:ing)?|stepping)\s+(?:keys?|buttons?|arrows?)\b"
+    r"|\barrows?\b|\b(?:dial|knob|wheel)\b"
+    r"|\bthey\s+(?:now\s+|then\s+)?(?:adjust|change|set|step|control|raise)\w*",
+    re.IGNORECASE,
+)
 
 
 def assign_shared(
