@@ -4,6 +4,7 @@ own: a setting key whose legend ends by confirming is no bare OK key, ..."""
 from __future__ import annotations
 
 from apbot.read import read_manual
+from apbot.read.values import find_ranges
 
 DIGITS = [f"press_{d}" for d in range(10)]
 
@@ -50,3 +51,10 @@ def test_a_key_that_only_switches_the_display_does_not_switch_the_plus_minus_pai
     for steps in model.features.values():
         pressed = {a for s in steps for a in s.actions}
         assert not ({"press_display", "press_mode"} & pressed and "press_plus" in pressed), steps
+
+
+def test_a_top_of_24_00_is_a_whole_day_not_24_minutes() -> None:
+    assert [r.high for r in find_ranges("The start can be put off by up to 24:00.")] == [86400]
+    # a figure no clock shows is still minutes and seconds
+    assert [r.high for r in find_ranges("The timer runs up to 30:00.")] == [1800]
+    assert [r.high for r in find_ranges("The timer runs up to 24:30.")] == [1470]
