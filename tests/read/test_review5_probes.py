@@ -58,3 +58,32 @@ def test_a_top_of_24_00_is_a_whole_day_not_24_minutes() -> None:
     # a figure no clock shows is still minutes and seconds
     assert [r.high for r in find_ranges("The timer runs up to 30:00.")] == [1800]
     assert [r.high for r in find_ranges("The timer runs up to 24:30.")] == [1470]
+
+
+# a microwave whose SELECT dial picks a programme; a sentence after the kitchen timer's press
+# says the display turns off, and says nothing of the dial
+MICRO = """
+CONTROL PANEL
+
+SELECT        | Turn to pick the programme: POPCORN, PIZZA, SOUP or VEGETABLES.
+KITCHEN TIMER | Counts down 1 to 60 minutes without heating.
+START         | Starts cooking.
+
+KITCHEN TIMER
+
+After KITCHEN TIMER has been pressed, {said}
+"""
+MICRO_ACTIONS = ["turn_select_cw", "turn_select_ccw", "press_kitchen_timer", "press_start"]
+
+
+def _timer_turns_dial(said: str) -> bool:
+    model = read_manual(MICRO.format(said=said), MICRO_ACTIONS).model
+    return any(
+        {"press_kitchen_timer", "turn_select_cw"} <= {a for s in steps for a in s.actions}
+        for steps in model.features.values()
+    )
+
+
+def test_a_dial_is_handed_a_key_s_setting_only_when_the_sentence_turns_that_dial() -> None:
+    assert not _timer_turns_dial("the display will turn off when the time is up.")
+    assert _timer_turns_dial("turning the SELECT dial sets the minutes.")
