@@ -87,3 +87,34 @@ def _timer_turns_dial(said: str) -> bool:
 def test_a_dial_is_handed_a_key_s_setting_only_when_the_sentence_turns_that_dial() -> None:
     assert not _timer_turns_dial("the display will turn off when the time is up.")
     assert _timer_turns_dial("turning the SELECT dial sets the minutes.")
+
+
+# a sandwich toaster whose chart leaves WAFFLE out and has a REHEAT column that is no shade
+TOASTER = """KEYS
+FOOD      Press to choose the food: TOAST, BAGEL, WAFFLE, CRUMPET.
+SHADE     Press to change the browning: LIGHT, MEDIUM, DARK.
+START     Starts toasting.
+
+FOOD AND SHADE CHART
+
+✪ used when the food is chosen (standard)      ✦ can be chosen      – not offered
+
+  Food        LIGHT     MEDIUM     DARK     REHEAT
+  ------------------------------------------------------
+  TOAST       ✦         ✪          ✦        ✦
+  BAGEL       –         ✪          ✦        ✦
+  CRUMPET     –         –          –        ✦
+
+Press FOOD, then SHADE until the browning you want shows, then START.
+"""
+
+
+def test_a_chart_of_marks_keeps_left_out_programmes_and_only_the_setting_s_values() -> None:
+    model = read_manual(TOASTER, ["press_food", "press_shade", "press_start"]).model
+    name = next(n for n in model.variables if "shade" in n)
+    cases = model.variables[name].model_dump(mode="json")["cases"]
+    assert cases and cases["toast"]["values"] == ["light", "medium", "dark"], cases
+    assert cases["bagel"]["values"] == ["medium", "dark"], cases
+    # left out of the chart: the whole list; a row of dashes (bar a non-shade column): none
+    assert cases["waffle"]["values"] == ["light", "medium", "dark"], cases
+    assert "crumpet" not in cases, cases

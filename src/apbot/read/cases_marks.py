@@ -49,8 +49,16 @@ def mark_cases(
             continue
         defaults = default_marks("\n".join(b.manual.lines))
         cases: dict[str, Any] = {}
+        charted: set[str] = set()
         for row in rows:
-            marked = [(h, row.cells[c].strip()) for h, c in zip(heads, columns, strict=True)]
+            # only the heads that are the setting's values ("Pre-wash" is no shade)
+            marked = [
+                (h, row.cells[c].strip())
+                for h, c in zip(heads, columns, strict=True)
+                if h in spec["values"]
+            ]
+            targets = _parent_values(row.cells[0], pvalues)
+            charted.update(targets)
             values = [h for h, cell in marked if _mark(cell)]
             if not values:
                 continue  # no texture on this menu: the key does nothing there
@@ -58,10 +66,18 @@ def mark_cases(
             first = [h for h, cell in marked if cell in defaults]
             if len(first) == 1:
                 case["initial"] = first[0]
-            for target in _parent_values(row.cells[0], pvalues):
+            for target in targets:
                 cases.setdefault(target, case)
         if len(cases) < 2:
             continue
+        # a programme the chart leaves out keeps the whole list: only a row of dashes says
+        # the setting is not offered there
+        for target in pvalues:
+            if target not in charted:
+                whole: dict[str, Any] = {"values": list(spec["values"])}
+                if spec.get("initial") in spec["values"]:
+                    whole["initial"] = spec["initial"]
+                cases[target] = whole
         for key in ("values", "ranges", "initial"):
             spec.pop(key, None)
         spec["depends_on"] = parent
