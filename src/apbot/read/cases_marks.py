@@ -48,14 +48,12 @@ def mark_cases(
         if spec.get("type") != "discrete" or sum(h in spec["values"] for h in heads) < 2:
             continue
         defaults = default_marks("\n".join(b.manual.lines))
+        owned = _owned_heads(b, spec, heads, rows)
         cases: dict[str, Any] = {}
         charted: set[str] = set()
         for row in rows:
-            # only the heads that are the setting's values ("Pre-wash" is no shade)
             marked = [
-                (h, row.cells[c].strip())
-                for h, c in zip(heads, columns, strict=True)
-                if h in spec["values"]
+                (h, row.cells[c].strip()) for h, c in zip(heads, columns, strict=True) if h in owned
             ]
             targets = _parent_values(row.cells[0], pvalues)
             charted.update(targets)
@@ -85,3 +83,18 @@ def mark_cases(
         b.note(f"variables.{name}.cases", f"depends on {parent}: a chart of marks, {len(cases)}")
         return name
     return None
+
+
+def _owned_heads(b: Builder, spec: dict[str, Any], heads: list[str], rows: list[Unit]) -> set[str]:
+    """The heads that are values of the setting: its own values, and a head the text outside
+    the chart names with the setting ("porridge, thick … TEXTURE ×1"); a "Reheat" column
+    the setting never names is no value of it."""
+    label = str(spec.get("label") or "").lower()
+    own = {h for h in heads if h in spec["values"]}
+    chart = {id(r) for r in rows}
+    texts = [u.text.lower() for u in b.manual.units if id(u) not in chart] if label else []
+    for h in heads:
+        said = re.compile(rf"\b{re.escape(h)}\b")
+        if h not in own and any(label in t and said.search(t) for t in texts):
+            own.add(h)
+    return own
