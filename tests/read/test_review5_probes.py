@@ -60,6 +60,11 @@ def test_a_top_of_24_00_is_a_whole_day_not_24_minutes() -> None:
     assert [r.high for r in find_ranges("The timer runs up to 24:30.")] == [1470]
 
 
+def test_a_twelve_hour_clock_top_keeps_its_one_o_clock_bottom() -> None:
+    found = find_ranges("The clock can be set up to 12:59.")
+    assert [(r.low, r.high) for r in found] == [(3600, 46740)]
+
+
 # a microwave whose SELECT dial picks a programme; a sentence after the kitchen timer's press
 # says the display turns off, and says nothing of the dial
 MICRO = """
