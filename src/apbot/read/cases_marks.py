@@ -48,9 +48,15 @@ def mark_cases(
         if spec.get("type") != "discrete" or sum(h in spec["values"] for h in heads) < 2:
             continue
         defaults = default_marks("\n".join(b.manual.lines))
+        owned = _owned_heads(b, spec, heads, rows)
         cases: dict[str, Any] = {}
+        charted: set[str] = set()
         for row in rows:
-            marked = [(h, row.cells[c].strip()) for h, c in zip(heads, columns, strict=True)]
+            marked = [
+                (h, row.cells[c].strip()) for h, c in zip(heads, columns, strict=True) if h in owned
+            ]
+            targets = _parent_values(row.cells[0], pvalues)
+            charted.update(targets)
             values = [h for h, cell in marked if _mark(cell)]
             if not values:
                 continue  # no texture on this menu: the key does nothing there
@@ -58,10 +64,18 @@ def mark_cases(
             first = [h for h, cell in marked if cell in defaults]
             if len(first) == 1:
                 case["initial"] = first[0]
-            for target in _parent_values(row.cells[0], pvalues):
+            for target in targets:
                 cases.setdefault(target, case)
         if len(cases) < 2:
             continue
+        # a programme the chart leaves out keeps the whole list: only a row of dashes says
+        # the setting is not offered there
+        for target in pvalues:
+            if target not in charted:
+                whole: dict[str, Any] = {"values": list(spec["values"])}
+                if spec.get("initial") in spec["values"]:
+                    whole["initial"] = spec["initial"]
+                cases[target] = whole
         for key in ("values", "ranges", "initial"):
             spec.pop(key, None)
         spec["depends_on"] = parent
@@ -69,3 +83,18 @@ def mark_cases(
         b.note(f"variables.{name}.cases", f"depends on {parent}: a chart of marks, {len(cases)}")
         return name
     return None
+
+
+def _owned_heads(b: Builder, spec: dict[str, Any], heads: list[str], rows: list[Unit]) -> set[str]:
+    """The heads that are values of the setting: its own values, and a head the text outside
+    the chart names with the setting ("porridge, thick … TEXTURE ×1"); a "Reheat" column
+    the setting never names is no value of it."""
+    label = str(spec.get("label") or "").lower()
+    own = {h for h in heads if h in spec["values"]}
+    chart = {id(r) for r in rows}
+    texts = [u.text.lower() for u in b.manual.units if id(u) not in chart] if label else []
+    for h in heads:
+        said = re.compile(rf"\b{re.escape(h)}\b")
+        if h not in own and any(label in t and said.search(t) for t in texts):
+            own.add(h)
+    return own

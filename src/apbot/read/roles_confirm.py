@@ -44,6 +44,8 @@ _ENDS_ENTRY = re.compile(
     re.IGNORECASE,
 )
 
+_USED_TO = re.compile(r"^(?:(?:press|touch|push)(?:\s+it)?|used)\s+to\s+", re.IGNORECASE)
+
 
 def ends_entry(b: Builder, key: ActionInfo) -> bool:
     """Whether the key's own legend says it closes an entry without naming a setting: such a key
@@ -56,6 +58,9 @@ def ends_entry(b: Builder, key: ActionInfo) -> bool:
     for i in b.labels[key.controls[0]].mentions:
         # a legend row, also a table's ("⑥ | OK | Confirms an entry."): its number dropped
         text = re.sub(r"^[^A-Za-z]*", "", b.manual.units[i].text)
-        if text.upper().startswith(label.upper()) and _ENDS_ENTRY.search(text[len(label) :]):
+        # the legend must BEGIN with the closing verb: "TIMER | Sets the time …, then press
+        # TIMER again to confirm the entry" is a setting key, not a bare OK
+        legend = re.sub(r"^[\s|:.\-–—=]*", "", text[len(label) :])
+        if text.upper().startswith(label.upper()) and _ENDS_ENTRY.match(_USED_TO.sub("", legend)):
             return True
     return False

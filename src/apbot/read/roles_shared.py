@@ -56,7 +56,18 @@ _HANDED_RE = re.compile(
     re.IGNORECASE,
 )
 _AGAIN_RE = re.compile(r"\b(?:again|once more)\b", re.IGNORECASE)
-_PAIR_WORDS_RE = re.compile(r"[+−–-]|▲|▼|\b(?:up|down|plus|minus|arrows?|dial|knob|wheel)\b", re.I)
+# the sentence must name the adjuster itself as what is switched: a sign standing alone as a
+# key ("+ and −", "+/-", "the − key"; not "auto-mode", "1-2"), the arrows, the up/down keys,
+# a dial, or "they" setting something; "counts down" or "on the display" name no pair
+_SIGN = r"(?<![\w+−–-])[+−–-](?![\w−–-])"
+_PAIR_WORDS_RE = re.compile(
+    rf"{_SIGN}\s*(?:/|and|or|&)\s*{_SIGN}|{_SIGN}\s*(?:keys?|buttons?)\b|\bthe\s+{_SIGN}|[▲▼]"
+    r"|\b(?:up|down)\s*(?:/|and|or|&)\s*(?:up|down)\b"
+    r"|\b(?:up|down|plus|minus|arrow|adjust(?:ing)?|stepping)\s+(?:keys?|buttons?|arrows?)\b"
+    r"|\barrows?\b|\b(?:dial|knob|wheel)\b"
+    r"|\bthey\s+(?:now\s+|then\s+)?(?:adjust|change|set|step|control|raise)\w*",
+    re.IGNORECASE,
+)
 
 
 def assign_shared(
@@ -170,10 +181,12 @@ def _order(b: Builder, key: ActionInfo, nouns: tuple[str, str], pair: list[str])
     return (c, a) if _NOUNS[c][0] in named or _NOUNS[c][1].lower() in named else (a, c)
 
 
-_AFTER_RE = re.compile(
-    r"\b(?:after|once|when)\b(?P<keys>[^.;]{1,60}?)\b(?:has|have|is|are)\s+(?:been\s+)?"
-    r"(?:pressed|touched|pushed|selected)\b[^.;]{0,40}?\b(?:dial|knob|wheel|turn\w*)\b",
-    re.IGNORECASE,
+# "After PRESET has been pressed, turning the SELECT dial changes the time": the turn verb
+# must take the dial itself ("the display will turn off", "the turntable" name no dial)
+_AFTER_RE = (
+    r"\b(?:after|once|when)\b(?P<keys>[^.;]{{1,60}}?)\b(?:has|have|is|are)\s+(?:been\s+)?"
+    r"(?:pressed|touched|pushed|selected)\b[^.;]{{0,40}}?\b(?:turn(?:s|ing)?|rotat(?:e|es|ing))"
+    r"\s+(?!off\b|on\b)(?:the\s+)?(?:\w+\s+)?(?:{dial})\b"
 )
 _PRESS_RE = r"\b(?:press|touch|push)\w*\s+(?:the\s+)?(?:{keys})\b"
 
@@ -187,12 +200,14 @@ def dial_after_keys(b: Builder, dial: str, keys: list[ActionInfo]) -> bool:
     if not labels:
         return False
     named = re.compile(rf"\b(?:{'|'.join(labels)})\b", re.IGNORECASE)
+    noun = re.escape(dial.split("_")[0])
+    own = {noun, re.escape(label_of(b, dial))} if dial in b.labels else {noun}
+    after = re.compile(_AFTER_RE.format(dial="|".join(sorted(own))), re.IGNORECASE)
     units = b.manual.units
     for u in units:
-        m = _AFTER_RE.search(u.text)
+        m = after.search(u.text)
         if m and named.search(m.group("keys")):
             return True
-    noun = re.escape(dial.split("_")[0])
     pressed = re.compile(_PRESS_RE.format(keys="|".join(labels)), re.IGNORECASE)
     turned = re.compile(
         rf"^\W*(?:\d+[.)]\s*)?turn\w*\s+the\s+(?:\w+\s+)?{noun}\b[^.]*\b(?:to\s+)?"

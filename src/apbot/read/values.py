@@ -149,7 +149,9 @@ def _ranges(text: str) -> list[Range]:
         hi = number(m.group(1))
         if hi:
             out.append(Range(0, hi, unit_name(m.group(2))))
-    out += [Range(0, top, "s") for top in clock_tops(text) if top]  # "up to 99:59"
+    # "up to 99:59"; a 12-hour clock's last minute ("up to 12:59") starts at 1:00
+    twelve = 12 * 3600 + 59 * 60
+    out += [Range(3600 if top == twelve else 0, top, "s") for top in clock_tops(text) if top]
     return out
 
 

@@ -36,11 +36,13 @@ _CLOCK_TOP_RE = re.compile(
 
 def clock_tops(text: str) -> list[int]:
     """Seconds of each top written as one clock figure ("up to 99:59"). Read as minutes and
-    seconds when labelled so or when the first part passes a day's 23 hours; else h:mm."""
+    seconds when labelled so or when it cannot be a time of day (30:00, 24:30); else h:mm,
+    "up to 24:00" being a whole day."""
     out: list[int] = []
     for m in _CLOCK_TOP_RE.finditer(text):
         figure = m.group(1)
-        min_sec = minutes_and_seconds(text, m.end()) or int(figure.split(":")[0]) > 23
-        if int(figure.split(":")[1]) < 60:
+        first, second = (int(p) for p in figure.split(":"))
+        min_sec = minutes_and_seconds(text, m.end()) or first > 24 or (first == 24 and second > 0)
+        if second < 60:
             out.append(clock_seconds(figure, min_sec))
     return out
