@@ -162,3 +162,35 @@ def test_long_without_a_number_sets_no_length() -> None:
 def test_a_clock_range_labelled_minutes_and_seconds_is_not_also_hours() -> None:
     found = find_ranges("Grill timer      0:05 - 30:00 (min:s)")
     assert [(r.low, r.high, r.unit) for r in found] == [(5, 1800, "s")]
+
+
+# a dryer's chart whose head is at the foot of one page and whose rows carry an options
+# column the head never named ("Wrinkle ●")
+DRYER_CHART = """
+The dryer starts on Mixed when switched on.
+
+Aster Dryer Guide                                                      Page 4 of 12
+==========================================================================================
+
+SECTION 5   CYCLE CHART
+
+   Cycle          Heat                     Dryness
+
+Aster Dryer Guide                                                      Page 5 of 12
+==========================================================================================
+
+   Mixed          Low, Medium ▣, High      Damp, Normal ▣, Very Dry     Wrinkle ●
+   Towels         Medium, High ▣           Normal, Very Dry ▣           Wrinkle ●
+   Delicates      Low ▣                    Damp ▣, Normal               -
+
+Turn the CYCLE knob to choose a cycle.
+
+Aster Dryer Guide                                                      Page 6 of 12
+==========================================================================================
+"""
+
+
+def test_chart_rows_with_an_unnamed_options_column_go_on_over_a_page_break() -> None:
+    model = read_manual(DRYER_CHART, ["turn_cycle_cw", "turn_cycle_ccw"]).model
+    values = [v.values for v in model.variables.values() if v.type == "discrete"]
+    assert ["mixed", "towels", "delicates"] in values

@@ -106,7 +106,13 @@ def _lines_up(head: str, row: str) -> bool:
     if len(cells) == len(_cells(head)):
         return True
     starts = [at for at, _ in _placed_cells(head)]
-    return all(any(abs(at - s) <= 2 for s in starts) for at, _ in _placed_cells(row))
+    placed = [at for at, _ in _placed_cells(row)]
+    if all(any(abs(at - s) <= 2 for s in starts) for at in placed):
+        return True
+    # a row with a column the header left unnamed ("Steam ●" under no head): all but one of
+    # the header's columns, at least two, have a cell starting under them
+    under = sum(any(abs(at - s) <= 2 for at in placed) for s in starts)
+    return under >= max(2, len(starts) - 1)
 
 
 # the first cell of a chart's row counting the presses ("touch  1  2  3", "No. of presses")
