@@ -149,18 +149,7 @@ class DisplayLearner:
         if len(new_words) != 1 or old_words - {old.casefold()} or new_words & words:
             return False
         word = next(p for p in text.split() if p.casefold() in new_words)
-        if not session.budget.once("template", f"{name}:{value}:{word}"):
-            return False
-        try:
-            new = set_display(model, name, {**spec.show, str(value): word})
-        except RepairError as exc:
-            session.episode.log("repair", f"could not repair how {name} is shown: {exc}")
-            return False
-        hypotheses = DisplayReader(new).read(text, {**session.belief.values(), name: value})
-        if not any(h.value(name) == value for h in hypotheses.hypotheses):
-            return False
-        session.adopt(new, f"{name} {value!r} is shown as {word!r}", session.belief.pointer())
-        return True
+        return self._show_word(name, value, word, {**spec.show, str(value): word}, text)
 
     def _lamp_word(self, name: str, text: str, value: Any, other: Any) -> bool:
         """An on/off setting the belief prints as "LABEL value", whose walk read one value
@@ -175,10 +164,16 @@ class DisplayLearner:
         if not all(w.isalpha() for w in words):
             return False
         word = " ".join(words)
+        return self._show_word(name, value, word, {str(value): word, str(other): ""}, text)
+
+    def _show_word(self, name: str, value: Any, word: str, show: dict[str, str], text: str) -> bool:
+        """Adopt ``show`` as how ``name`` is printed, if it is new (once per word) and the
+        repaired belief reads ``text`` back as ``value``."""
+        session = self.session
         if not session.budget.once("template", f"{name}:{value}:{word}"):
             return False
         try:
-            new = set_display(session.belief.model, name, {str(value): word, str(other): ""})
+            new = set_display(session.belief.model, name, show)
         except RepairError as exc:
             session.episode.log("repair", f"could not repair how {name} is shown: {exc}")
             return False
