@@ -15,7 +15,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 from apbot.agent.perception import MISSING, UNREADABLE
-from apbot.agent.repair import RepairError, set_case_start
+from apbot.agent.repair import RepairError, set_start
 from apbot.model.domain import build_domain
 
 if TYPE_CHECKING:
@@ -47,7 +47,7 @@ def learn_start(session: Session, name: str, before: Any, done: Executed | None)
     if not session.budget.once("start", f"{name}:{case}"):
         return False
     try:
-        new = set_case_start(model, name, case, observed)
+        new = set_start(model, name, case, observed)
     except RepairError as exc:
         session.episode.log("repair", f"could not learn where {case} starts {name}: {exc}")
         return False

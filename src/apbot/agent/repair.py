@@ -47,7 +47,6 @@ __all__ = [
     "plain_keys",
     "plain_steps",
     "redefine_domain",
-    "set_case_start",
     "set_display",
     "set_effects",
     "set_entry_format",
@@ -123,19 +122,6 @@ def redefine_domain(
             )
     if wrap is not None:
         var["wrap"] = wrap
-    return _rebuild(data)
-
-
-def set_case_start(model: ApplianceModel, name: str, case: str, value: Any) -> ApplianceModel:
-    """The model with the parent's ``case`` starting ``name`` at ``value``."""
-    data = _dump(model)
-    cases = data["variables"][name]["cases"]
-    if isinstance(cases[case], list):  # a discrete case written as its bare list of values
-        cases[case] = {"values": cases[case]}
-    spec = model.variables[name]
-    cases[case]["initial"] = (
-        format_hms(parse_hms(str(value))) if isinstance(spec, TimeVariable) else value
-    )
     return _rebuild(data)
 
 
@@ -280,7 +266,8 @@ def drop_dependence(model: ApplianceModel, name: str, case: str) -> ApplianceMod
 
 
 def set_start(model: ApplianceModel, name: str, case: str, value: Any) -> ApplianceModel:
-    """Choosing the programme ``case`` starts ``name`` at ``value`` (its case's initial)."""
+    """Choosing the programme ``case`` starts ``name`` at ``value`` (its case's initial): learnt
+    from the display after the choice (``side_effects``) or from a look (``case_starts``)."""
     data = _dump(model)
     cases = data["variables"][name].get("cases", {})
     own = cases.get(case)
