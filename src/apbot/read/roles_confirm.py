@@ -8,6 +8,7 @@ thing whose number is typed, so the variable takes that noun rather than "ok" or
 from __future__ import annotations
 
 import re
+from collections.abc import Iterator
 
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
@@ -19,19 +20,26 @@ _CONFIRMS = re.compile(
 )
 
 
+def _legend_tails(b: Builder, key: ActionInfo, lead: str) -> Iterator[str]:
+    """What each of the key's own legend rows says after its printed name (a row or sentence
+    that starts with the name once ``lead`` is stripped); nothing for a key that is not one
+    pressed control with a label."""
+    if key.skill != "press" or len(key.controls) != 1 or key.controls[0] not in b.labels:
+        return
+    label = b.labels[key.controls[0]].text
+    if not label:
+        return
+    for i in b.labels[key.controls[0]].mentions:
+        text = re.sub(lead, "", b.manual.units[i].text)
+        if text.upper().startswith(label.upper()):
+            yield text[len(label) :]
+
+
 def confirmed_noun(b: Builder, key: ActionInfo) -> str:
     """The noun of the number this key confirms, read from the key's own legend (a row or
     sentence that starts with its printed name); "" when the legend says no such thing."""
-    if key.skill != "press" or len(key.controls) != 1 or key.controls[0] not in b.labels:
-        return ""
-    label = b.labels[key.controls[0]].text
-    if not label:
-        return ""
-    for i in b.labels[key.controls[0]].mentions:
-        text = b.manual.units[i].text.lstrip(" *|-•")
-        if not text.upper().startswith(label.upper()):
-            continue
-        m = _CONFIRMS.search(text[len(label) :])
+    for tail in _legend_tails(b, key, r"^[ *|\-•]*"):
+        m = _CONFIRMS.search(tail)
         if m and m.group(1).lower() not in {"the", "your", "this", "key"}:
             return m.group(1).lower()
     return ""
@@ -50,17 +58,11 @@ _USED_TO = re.compile(r"^(?:(?:press|touch|push)(?:\s+it)?|used)\s+to\s+", re.IG
 def ends_entry(b: Builder, key: ActionInfo) -> bool:
     """Whether the key's own legend says it closes an entry without naming a setting: such a key
     is the last step of what the number keys type, never a setting the number keys type."""
-    if key.skill != "press" or len(key.controls) != 1 or key.controls[0] not in b.labels:
-        return False
-    label = b.labels[key.controls[0]].text
-    if not label:
-        return False
-    for i in b.labels[key.controls[0]].mentions:
-        # a legend row, also a table's ("⑥ | OK | Confirms an entry."): its number dropped
-        text = re.sub(r"^[^A-Za-z]*", "", b.manual.units[i].text)
+    # a legend row, also a table's ("⑥ | OK | Confirms an entry."): its number dropped
+    for tail in _legend_tails(b, key, r"^[^A-Za-z]*"):
         # the legend must BEGIN with the closing verb: "TIMER | Sets the time …, then press
         # TIMER again to confirm the entry" is a setting key, not a bare OK
-        legend = re.sub(r"^[\s|:.\-–—=]*", "", text[len(label) :])
-        if text.upper().startswith(label.upper()) and _ENDS_ENTRY.match(_USED_TO.sub("", legend)):
+        legend = re.sub(r"^[\s|:.\-–—=]*", "", tail)
+        if _ENDS_ENTRY.match(_USED_TO.sub("", legend)):
             return True
     return False
