@@ -58,6 +58,11 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "sewing_machine": 3,
     "electric_blanket": 3,
     "humidifier": 3,
+    "egg_cooker": 3,
+    "wine_cooler": 3,
+    "electric_smoker": 4,
+    "treadmill": 3,
+    "aquarium_light": 4,
 }
 
 
