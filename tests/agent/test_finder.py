@@ -185,3 +185,19 @@ def test_in_values_mode_a_text_the_belief_cannot_read_is_still_walked() -> None:
     assert env.simulator.satisfies(parse_goal(panel(), {"sync": "on"}))
     assert episode.claimed_success
     assert "sync: found under press_sync; an on/off lamp shown as 'SYNC'" in episode.repairs
+
+
+def test_a_setting_no_key_shows_leaves_the_rest_of_the_goal_set_and_started() -> None:
+    # the words named a setting the panel does not have ("the crumb softness"): the finder
+    # finds no key for it, and the rest of the goal — started — is still what can be done;
+    # the agent must not claim the whole goal
+    truth = panel(
+        ("power: {type: discrete, values", "power: {type: discrete, initial: 'on', values")
+    )
+    env = SimulatorEnvironment(truth, "display")
+    goal = {"fan": 3, "running": "on", "softness": "soft"}
+    context = TaskContext("unit", "test", "t", "", goal, truth, actions=tuple(env.actions))
+    episode = get_method("apbot").run(context, env)
+    assert env.simulator.satisfies(parse_goal(truth, {"fan": 3, "running": "on"}))
+    assert not episode.claimed_success
+    assert "softness" in episode.failure
