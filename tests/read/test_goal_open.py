@@ -53,7 +53,8 @@ def test_a_bare_number_after_a_noun_is_kept_when_stepping_keys_have_no_role() ->
 def test_a_quantity_of_a_kind_the_belief_has_no_setting_for_is_named_by_its_kind() -> None:
     goal = read("Warm the upper zone for 45 minutes")
     assert goal["time"] == "45 min"
-    assert read("Keep the lower zone at 40 W")["wattage"] == "40 w"
+    assert read("Keep the lower zone at 40 W")["wattage"] == "40 W"
+    assert read("Warm the upper zone at 0.5 kW")["wattage"] == "500 W"  # as a display writes it
 
 
 def test_a_quantity_beside_a_keys_own_noun_is_named_after_that_key() -> None:
@@ -118,3 +119,29 @@ def test_a_restated_quantity_of_a_level_the_belief_has_is_no_new_setting() -> No
     )
     goal = parse_instruction(belief, "the lowest heat, 200 W", outside=[])
     assert "wattage" not in goal
+
+
+def test_with_no_key_to_try_a_quantity_is_the_next_step_of_the_choice_beside_it() -> None:
+    # every key has a role: a weight the belief has no setting for, said beside a choice of
+    # an automatic menu, is looked for as that menu's next step (named after it)
+    belief = model_from(
+        """
+        controls: [{id: thaw}, {id: start}]
+        variables:
+          thaw_menu: {type: discrete, values: [meat, fish, bread], label: THAW}
+          running: {type: discrete, values: ["off", "on"]}
+        actions:
+          press_thaw: {control: thaw}
+          press_start: {control: start}
+        features:
+          set_thaw_menu:
+            - {actions: [press_thaw], variable: thaw_menu, effect: next}
+          start:
+            - {actions: [press_start], variable: running, effect: {to: "on"}}
+        """
+    )
+    goal = parse_instruction(belief, "Thaw 1.2 kg of fish and start", outside=[])
+    assert goal["thaw_menu_weight"] == "1200 g"
+    # another clause says nothing of the choice: no name to give it, nothing kept
+    goal = parse_instruction(belief, "Thaw the fish. About 1.2 kg.", outside=[])
+    assert not any(name.endswith("_weight") for name in goal)

@@ -71,10 +71,13 @@ def open_entries(
         name = _key_noun(text, mention, nouns, known)
         if name is None and stepping and mention.kind == "number":
             name = _level_noun(text, mention, known)
-        if name is None and roleless and not _of_its_kind(view, mention, text):
+        if name is None and not _of_its_kind(view, mention, text):
             name = _KIND_NAMES.get(_kind(mention) or "")
             if name == "time" and mention.value % 86400 == 0:
                 name = "days"  # a number of days away, not a cooking time
+            if name is not None and not roleless:  # no key to try: the programme's next step
+                chosen = _chosen_beside(view, text, mention, goal, where)
+                name = None if chosen is None else f"{chosen}_{name}"
         if name is None or name in view.infos or name in goal or name in found:
             continue
         found[name] = value
@@ -185,6 +188,28 @@ def _of_its_kind(view: Model, mention: Mention, text: Text) -> bool:
     return False
 
 
+def _chosen_beside(
+    view: Model, text: Text, mention: Mention, goal: Goal, where: dict[str, int]
+) -> str | None:
+    """The choice the goal makes in the quantity's clause, nearest to it ("450 g of fish" with
+    the automatic defrost: the defrost menu's fish): a weight, a time the belief lacks is
+    likely that choice's next step, as on an automatic menu."""
+    best: tuple[int, str] | None = None
+    for name, at in where.items():
+        info = view.infos.get(name)
+        if name not in goal or info is None or info.role != "setting":
+            continue
+        if not isinstance(info.var, DiscreteVariable):
+            continue
+        low, high = sorted((at, mention.start))
+        if any(text.word(k) in CLAUSE_ENDS for k in range(low, high)):
+            continue
+        distance = abs(at - mention.start)
+        if best is None or distance < best[0]:
+            best = (distance, name)
+    return None if best is None else best[1]
+
+
 def _roleless_keys(model: ApplianceModel) -> list[str]:
     """Keys that start nothing the belief knows — in no procedure's first step that sets
     something, not acting from anywhere, not waiting, no digit — the keys the finder tries
@@ -256,9 +281,13 @@ def _level_noun(text: Text, mention: Mention, known: set[str]) -> str | None:
     return word
 
 
+_BASE_UNITS = {"mass": "g", "volume": "ml", "power": "W"}
+
+
 def _as_said(text: Text, mention: Mention) -> Any:
     """The value as the user said it: a whole number as itself, a duration in its largest
-    whole unit ("45 min", "2 h"), a quantity with the unit said ("600 g")."""
+    whole unit ("45 min", "2 h"), a weight, volume or power in grams, millilitres or watts
+    ("1.25 kg" → "1250 g"), another quantity with the unit said."""
     if mention.kind == "number":
         number = mention.value
         return int(number) if float(number).is_integer() else number
@@ -268,6 +297,9 @@ def _as_said(text: Text, mention: Mention) -> Any:
             if seconds % size == 0 and seconds >= size:
                 return f"{seconds // size} {unit}"
         return f"{seconds} s"
+    base = _BASE_UNITS.get(mention.dimension or "")
+    if mention.kind == "quantity" and base and float(mention.value).is_integer():
+        return f"{int(mention.value)} {base}"  # "1.25 kg" as a display writes it: 1250 g
     if mention.kind == "quantity" and mention.unit:
         said = text.word(mention.start)
         try:
