@@ -258,3 +258,29 @@ def test_a_weight_typed_after_a_menu_is_found_by_choosing_the_menu_again_and_typ
         r.startswith("thaw_menu_weight: found under press_thaw, then the digits")
         for r in episode.repairs
     )
+
+
+def test_a_one_digit_count_typed_after_a_menu_is_found_from_two_typed_digits() -> None:
+    # the same menu, then one digit for how many portions: one digit shows one text, from
+    # which nothing can be read, so another digit goes first and the count replaces it
+    portions = """portions:
+    type: numeric
+    label: QTY
+    depends_on: thaw_menu
+    entry: {format: number, max_digits: 1}
+    cases:
+      meat: {ranges: [[1, 4, 1]], initial: 1}
+      fish: {ranges: [[1, 4, 1]], initial: 1}"""
+    step = f"- {{actions: [{DIGITS}], variable: portions}}"
+    truth = model_from(THAW.replace("WEIGHT_VARIABLE", portions).replace("WEIGHT_STEP", step))
+    belief = model_from(THAW.replace("  WEIGHT_VARIABLE\n", "").replace("    WEIGHT_STEP\n", ""))
+    env = SimulatorEnvironment(truth, "display")
+    goal = {"thaw_menu": "fish", "thaw_menu_quantity": 3, "running": "on"}
+    context = TaskContext("unit", "test", "t", "", goal, belief, actions=tuple(env.actions))
+    episode = get_method("apbot").run(context, env)
+    judged = {"thaw_menu": "fish", "portions": 3, "running": "on"}
+    assert env.simulator.satisfies(parse_goal(truth, judged)), episode.failure
+    assert any(
+        r.startswith("thaw_menu_quantity: found under press_thaw, then the digits")
+        for r in episode.repairs
+    )

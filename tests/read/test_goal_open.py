@@ -142,6 +142,9 @@ def test_with_no_key_to_try_a_quantity_is_the_next_step_of_the_choice_beside_it(
     )
     goal = parse_instruction(belief, "Thaw 1.2 kg of fish and start", outside=[])
     assert goal["thaw_menu_weight"] == "1200 g"
+    # a number of things is a quantity too; "thaw" names the menu, no setting of a number
+    goal = parse_instruction(belief, "Thaw 2 cups of fish stock", outside=[])
+    assert goal["thaw_menu_quantity"] == 2
     # another clause says nothing of the choice: no name to give it, nothing kept
     goal = parse_instruction(belief, "Thaw the fish. About 1.2 kg.", outside=[])
     assert not any(name.endswith("_weight") for name in goal)

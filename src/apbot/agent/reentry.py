@@ -41,7 +41,10 @@ def typed_after_named(finder: VariableFinder, name: str, goal_value: Any) -> boo
         if not _reenter(finder, key, chosen, before[chosen]):
             continue
         texts: list[str] = []
-        for digit in typed:
+        # one digit shows one text, from which no setting can be read: type another digit
+        # first (a one-digit entry takes the last; a longer one shows a value not asked for)
+        keyed = typed if len(typed) > 1 else ("2" if typed == "1" else "1") + typed
+        for digit in keyed:
             action = digits[digit]
             planned = (
                 session.planned(action) if action in session.belief.model.actions else None
@@ -50,7 +53,7 @@ def typed_after_named(finder: VariableFinder, name: str, goal_value: Any) -> boo
             if not done.feedback.accepted:
                 break
             texts.append(_main(done.feedback.text, lamps))
-        if len(texts) < len(typed):
+        if len(texts) < len(keyed):
             continue
         learnt = infer_setting(name, [texts[0], texts[-1]], kind, texts[-1])
         if learnt is None or learnt.current != value or not _fits(learnt.variable, goal_value):

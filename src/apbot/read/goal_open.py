@@ -155,6 +155,7 @@ _KIND_NAMES = {
     "volume": "volume",
     "power": "wattage",
     "length": "length",
+    "count": "quantity",  # how many, typed or stepped as a number
 }
 
 
@@ -164,6 +165,8 @@ def _kind(mention: Mention) -> str | None:
         return "time"
     if mention.kind == "fahrenheit":
         return "temperature"
+    if mention.kind == "number" and mention.unit:
+        return "count"  # "3 cups", "two slices": a number of things
     return mention.dimension if mention.kind == "quantity" else None
 
 
@@ -177,11 +180,11 @@ def _of_its_kind(view: Model, mention: Mention, text: Text) -> bool:
     for info in view.infos.values():
         if info.role != "setting":
             continue
-        if not isinstance(info.var, DiscreteVariable) and near_vocab(
-            info, text, mention.start, mention.end, reach=4
-        ):
-            return True
         timed = isinstance(info.var, TimeVariable) or info.dimension == "time"
+        # a setting that could hold it: a time for a time, a number for any other
+        could = not isinstance(info.var, DiscreteVariable) and timed == (kind == "time")
+        if could and near_vocab(info, text, mention.start, mention.end, reach=4):
+            return True
         lasting = timed and info.timing not in ("clock", "finish")  # not a time of day
         if (kind == "time" and lasting) or (kind != "time" and info.dimension == kind):
             return True
