@@ -185,3 +185,102 @@ def test_in_values_mode_a_text_the_belief_cannot_read_is_still_walked() -> None:
     assert env.simulator.satisfies(parse_goal(panel(), {"sync": "on"}))
     assert episode.claimed_success
     assert "sync: found under press_sync; an on/off lamp shown as 'SYNC'" in episode.repairs
+
+
+def test_a_setting_no_key_shows_leaves_the_rest_of_the_goal_set_and_started() -> None:
+    # the words named a setting the panel does not have ("the crumb softness"): the finder
+    # finds no key for it, and the rest of the goal — started — is still what can be done;
+    # the agent must not claim the whole goal
+    truth = panel(
+        ("power: {type: discrete, values", "power: {type: discrete, initial: 'on', values")
+    )
+    env = SimulatorEnvironment(truth, "display")
+    goal = {"fan": 3, "running": "on", "softness": "soft"}
+    context = TaskContext("unit", "test", "t", "", goal, truth, actions=tuple(env.actions))
+    episode = get_method("apbot").run(context, env)
+    assert env.simulator.satisfies(parse_goal(truth, {"fan": 3, "running": "on"}))
+    assert not episode.claimed_success
+    assert "softness" in episode.failure
+
+
+THAW = f"""
+controls: [{{id: thaw, label: THAW}}, {{id: clock, label: CLOCK}}, {{id: start, label: START}},
+           {CONTROLS}]
+variables:
+  thaw_menu: {{type: discrete, values: [meat, fish], wrap: true, show: "THAW {{value}}"}}
+  WEIGHT_VARIABLE
+  clock: {{type: time, ranges: [["00:00:00", "23:59:00", 60]], initial: "00:00:00",
+          format: "hh:mm", entry: {{format: "hh:mm"}}}}
+  running: {{type: discrete, values: ["off", "on"], show: {{"off": "", "on": "RUN"}}}}
+actions:
+  press_thaw: {{control: thaw}}
+  press_clock: {{control: clock}}
+  press_start: {{control: start}}
+{KEYS}
+features:
+  set_thaw:
+    - {{actions: [press_thaw], variable: thaw_menu, effect: next}}
+    WEIGHT_STEP
+  set_clock:
+    - {{actions: [press_clock]}}
+    - {{actions: [{DIGITS}], variable: clock}}
+  start:
+    - {{actions: [press_start], variable: running, effect: {{to: "on"}}}}
+display: {{idle: "READY", indicators: [running]}}
+"""
+WEIGHT_VARIABLE = """weight:
+    type: numeric
+    unit: g
+    label: WEIGHT
+    depends_on: thaw_menu
+    entry: {format: number, max_digits: 4}
+    cases:
+      meat: {ranges: [[100, 2000, 10]], initial: 100}
+      fish: {ranges: [[100, 1000, 10]], initial: 100}"""
+WEIGHT_STEP = f"- {{actions: [{DIGITS}], variable: weight}}"
+
+
+def test_a_weight_typed_after_a_menu_is_found_by_choosing_the_menu_again_and_typing() -> None:
+    # THAW chooses the food, then the digits give its weight; the reader kept the digits for
+    # the clock only. The goal names the weight after the menu it was said with: THAW is
+    # pressed round to the fish again and 450 typed, and the display shows WEIGHT 450 g
+    truth = model_from(
+        THAW.replace("WEIGHT_VARIABLE", WEIGHT_VARIABLE).replace("WEIGHT_STEP", WEIGHT_STEP)
+    )
+    belief = model_from(THAW.replace("  WEIGHT_VARIABLE\n", "").replace("    WEIGHT_STEP\n", ""))
+    env = SimulatorEnvironment(truth, "display")
+    goal = {"thaw_menu": "fish", "thaw_menu_weight": "450 g", "running": "on"}
+    context = TaskContext("unit", "test", "t", "", goal, belief, actions=tuple(env.actions))
+    episode = get_method("apbot").run(context, env)
+    judged = {"thaw_menu": "fish", "weight": 450, "running": "on"}
+    assert env.simulator.satisfies(parse_goal(truth, judged)), episode.failure
+    assert any(
+        r.startswith("thaw_menu_weight: found under press_thaw, then the digits")
+        for r in episode.repairs
+    )
+
+
+def test_a_one_digit_count_typed_after_a_menu_is_found_from_two_typed_digits() -> None:
+    # the same menu, then one digit for how many portions: one digit shows one text, from
+    # which nothing can be read, so another digit goes first and the count replaces it
+    portions = """portions:
+    type: numeric
+    label: QTY
+    depends_on: thaw_menu
+    entry: {format: number, max_digits: 1}
+    cases:
+      meat: {ranges: [[1, 4, 1]], initial: 1}
+      fish: {ranges: [[1, 4, 1]], initial: 1}"""
+    step = f"- {{actions: [{DIGITS}], variable: portions}}"
+    truth = model_from(THAW.replace("WEIGHT_VARIABLE", portions).replace("WEIGHT_STEP", step))
+    belief = model_from(THAW.replace("  WEIGHT_VARIABLE\n", "").replace("    WEIGHT_STEP\n", ""))
+    env = SimulatorEnvironment(truth, "display")
+    goal = {"thaw_menu": "fish", "thaw_menu_quantity": 3, "running": "on"}
+    context = TaskContext("unit", "test", "t", "", goal, belief, actions=tuple(env.actions))
+    episode = get_method("apbot").run(context, env)
+    judged = {"thaw_menu": "fish", "portions": 3, "running": "on"}
+    assert env.simulator.satisfies(parse_goal(truth, judged)), episode.failure
+    assert any(
+        r.startswith("thaw_menu_quantity: found under press_thaw, then the digits")
+        for r in episode.repairs
+    )

@@ -86,6 +86,19 @@ def add_keypad_setting(
     return _with_setting(model, name, variable, {d: "digit" for d in digits}, entry)
 
 
+def add_keypad_step(
+    model: ApplianceModel,
+    name: str,
+    variable: dict[str, Any],
+    digits: list[str],
+    after: tuple[str, int],
+) -> ApplianceModel:
+    """A setting the model lacked that is typed on the keypad as the next step of a procedure
+    (``after``: the procedure and its step's index): AUTO DEFROST chooses the food, then the
+    digits give its weight, one range per food."""
+    return _after_step(model, name, variable, {d: "digit" for d in digits}, after)
+
+
 def add_choice_setting(
     model: ApplianceModel, name: str, variable: dict[str, Any], keys: dict[str, Any]
 ) -> ApplianceModel:

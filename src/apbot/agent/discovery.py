@@ -17,6 +17,7 @@ from typing import Any
 
 from apbot.agent.guards import GuardLearner
 from apbot.agent.reader import DisplayReader
+from apbot.agent.reentry import typed_after_named
 from apbot.agent.repair import (
     RepairError,
     add_choice_setting,
@@ -100,7 +101,9 @@ class VariableFinder:
         typing_first = bool(keypad) and bool(plain_steps(session.belief.model, keypad))
         if typing_first and self._typed(name, goal_value, None):
             return True
-        return self._after_named(name, goal_value, before)
+        if self._after_named(name, goal_value, before):
+            return True
+        return typed_after_named(self, name, goal_value)
 
     def _after_named(self, name: str, goal_value: Any, before: str) -> bool:
         """A procedure named like the setting (``auto_menu`` for ``auto_weight``) may go on

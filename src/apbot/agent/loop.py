@@ -61,6 +61,7 @@ class ClosedLoop(Checks):
         self.config = config
         self.context = context
         self.missing: dict[str, Any] = {}  # goal settings the belief lacks and has not found
+        self.unfound: dict[str, Any] = {}  # ... and looked for twice: the rest is set without
         self.finding = 1  # the finder's attempt: once at the start, once with the rest set
         self.plans = BeliefPlans(self.session, config)
         self.pending: list[MacroAction] = []  # the rest of the plan, while it holds
@@ -167,6 +168,11 @@ class ClosedLoop(Checks):
                         + ", ".join(unseeable)
                         + ": done as planned, not confirmed"
                     )
+                if self.unfound:
+                    raise Stop(
+                        "the rest of the goal holds; not found on the panel: "
+                        + ", ".join(f"{n}={v!r}" for n, v in self.unfound.items())
+                    )
                 raise Stop("the goal holds", success=True)
             self.pending = list(found.macro_actions)
             self.session.episode.log("plan", " → ".join(m.feature for m in found.macro_actions))
@@ -237,12 +243,20 @@ class ClosedLoop(Checks):
         self.missing = {}
         for name, raw in self.context.goal.items():
             if name not in variables:
+                if name in self.unfound:
+                    continue
                 if not self.finder.find(name, raw, attempt=self.finding):
                     if self.finding >= 2:
-                        raise Stop(
+                        # the words may name a setting the panel does not have (or not as
+                        # read): the rest of the goal may still be all that was asked, so
+                        # set it, and never claim the whole goal
+                        self.unfound[name] = raw
+                        self.session.episode.log(
+                            "explore",
                             f"the goal names {name!r}, which the model does not have, and no "
-                            "key the model gives no role shows it"
+                            "key the model gives no role shows it: setting the rest",
                         )
+                        continue
                     self.missing[name] = raw  # look again once the rest is set
                     continue
                 variables = self.session.belief.model.variables

@@ -18,6 +18,7 @@ from typing import Any
 from apbot.agent.added_settings import (
     add_choice_setting,
     add_keypad_setting,
+    add_keypad_step,
     add_setting,
     plain_keys,
     plain_steps,
@@ -34,6 +35,7 @@ __all__ = [
     "add_guard",
     "add_indicator",
     "add_keypad_setting",
+    "add_keypad_step",
     "add_setting",
     "allow",
     "allow_all",

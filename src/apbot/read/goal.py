@@ -32,6 +32,7 @@ from apbot.model.values import closest_matches, preview
 from apbot.read.goal_assign import assign_mentions, distinct, in_weeks
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
+from apbot.read.goal_open import open_entries
 from apbot.read.goal_scales import superlatives
 from apbot.read.goal_spelling import joined_compounds
 from apbot.read.goal_start import power_and_running
@@ -109,13 +110,14 @@ def parse_instruction(
     entry_switches(view, goal)
     boil(view, text, goal)
     power_and_running(view, text, goal, counting)
+    opened = {} if outside is None else open_entries(view, text, mentions, goal, claimed, where)
     try:
         _unknown_values(view, text, goal, claimed)
     except GoalParseError as exc:
         if outside is None:
             raise
         outside.append(str(exc))
-    return _checked(view, goal, outside)
+    return {**_checked(view, goal, outside), **opened}
 
 
 _KIND_WORDS = frozenset(

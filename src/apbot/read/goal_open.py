@@ -1,0 +1,313 @@
+"""Open goal entries: a setting the user names that a read belief lacks, kept for the closed loop.
+
+A belief read from a manual can miss a setting altogether (its variable, its procedure), while
+the panel still has its key and the display still shows it. When the instruction says a value
+no belief variable took, next to a word that names such a setting, the parser keeps it as an
+*open* entry — a variable the belief does not have, named after that word, with the value as
+said — and the agent's variable finder (:mod:`apbot.agent.discovery`) looks for it on the panel.
+
+Only for a read belief (``parse_instruction(..., outside=[...])``), and only from words the
+instruction says. Precision matters more than recall: the entries are made only where the
+panel itself points at a setting the belief gives no role —
+
+- *a key's own noun*: the quantity stands beside a word of the name of a key the belief gives no
+  role (``press_weight``: "600 g weight", "weight 600 g");
+- *a level on stepping keys*: a bare number right after a noun ("level 7", "heat on 2") when the
+  panel has ▲/▼ (or +/−, a dial) keys the belief gives no role, which is how such a number is
+  set, and the noun is no word of a setting the belief has;
+- *a quantity of a kind the belief has no setting for*: "for 45 minutes", "at 600 W", "for
+  14 days" when no belief setting takes a duration (a power, ...) and none is named beside it
+  (a restatement: "the lowest power, 200 W"), while some key has no role: named by its kind
+  (``time``, ``wattage``, ``days``);
+- *a value word beside a key's own noun*: "the fan to high", "a gentle fan", "the light on".
+
+If the finder cannot find it, the agent sets the rest of the goal (``agent/loop.py``).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from apbot.model.schema import ApplianceModel, DiscreteVariable, TimeVariable
+from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab
+from apbot.read.goal_view import Goal, Model, own_stems
+from apbot.read.goal_vocab import STOP_WORDS, stem
+from apbot.read.numbers import Mention
+
+_KEY_VERBS = frozenset(
+    {"press", "hold", "turn", "push", "touch", "tap", "long", "short", "button", "key", "knob"}
+)
+_STEPPING = frozenset(
+    {"up", "down", "plus", "minus", "cw", "ccw", "next", "prev", "inc", "dec", "more", "less"}
+)
+_LINKS = frozenset({"to", "at", "on", "of"})  # "level to 7", "heat on 2", "weight of 600 g"
+_NOT_NAMES = STOP_WORDS | _LINKS | {"for", "with", "by", "in", "and", "or", "it", "number"}
+
+
+def open_entries(
+    view: Model,
+    text: Text,
+    mentions: list[Mention],
+    goal: Goal,
+    claimed: set[int],
+    where: dict[str, int],
+) -> dict[str, Any]:
+    """Open entries (name → value as said) for the quantities and words no belief variable
+    took; names are new (never a variable the belief has, never one the goal holds)."""
+    model = view.model
+    roleless = _roleless_keys(model)
+    nouns = {w: key for key in roleless for w in _key_words(key)}  # noun -> its key
+    stepping = any(set(key.split("_")) & _STEPPING for key in roleless)
+    known = _belief_stems(view)
+    placed = set(where.values())  # kept as said for a setting the belief has
+    taken = set(claimed) | {k for m in mentions if m.start in placed for k in range(m.start, m.end)}
+    found: dict[str, Any] = {}
+    for mention in mentions:
+        if mention.kind == "clock" or any(k in taken for k in range(mention.start, mention.end)):
+            continue
+        value = _as_said(text, mention)
+        if value is None:
+            continue
+        name = _key_noun(text, mention, nouns, known)
+        if name is None and stepping and mention.kind == "number":
+            name = _level_noun(text, mention, known)
+        if name is None and not _of_its_kind(view, mention, text):
+            name = _KIND_NAMES.get(_kind(mention) or "")
+            if name == "time" and mention.value % 86400 == 0:
+                name = "days"  # a number of days away, not a cooking time
+            if name is not None and not roleless:  # no key to try: the programme's next step
+                chosen = _chosen_beside(view, text, mention, goal, where)
+                name = None if chosen is None else f"{chosen}_{name}"
+        if name is None or name in view.infos or name in goal or name in found:
+            continue
+        found[name] = value
+    for name, value in _worded(text, nouns, known, taken).items():
+        if name not in view.infos and name not in goal and name not in found:
+            found[name] = value
+    return found
+
+
+_VERBS = frozenset(
+    {
+        "set", "turn", "put", "switch", "use", "select", "choose", "press", "make", "start",
+        "run", "give", "keep", "leave", "change", "pick", "want", "need", "get", "have", "do",
+        "please", "then", "also", "just", "now", "go", "let", "like", "would", "could",
+        "bring", "adjust", "raise", "lower", "increase", "decrease", "enable", "disable",
+        "activate", "add", "pour", "cook", "brew", "heat", "wash", "dry", "bake", "only",
+    }
+)  # fmt: skip
+_SWITCHED = frozenset({"on", "off"})
+
+
+def _worded(text: Text, nouns: dict[str, str], known: set[str], taken: set[int]) -> dict[str, str]:
+    """A value word beside a role-less key's noun: "fan to high", "the high fan" (a word no
+    belief variable took), "the light on" (a lamp switched)."""
+    found: dict[str, str] = {}
+    for k in range(len(text.tokens)):
+        if k in taken or text.stems[k] in known:
+            continue
+        noun = _noun_at(text, k, nouns)
+        if noun is None:
+            continue
+        after, later = text.word(k + 1), text.word(k + 2)
+        if after in ("to", "at") and _value_word(text, k + 2, known, taken):
+            found.setdefault(noun, later)
+        elif after in _SWITCHED and (later in CLAUSE_ENDS or later in (",", "and", "")):
+            found.setdefault(noun, after)
+        elif _value_word(text, k - 1, known, taken) and text.word(k - 2) not in _SWITCHED:
+            found.setdefault(noun, text.word(k - 1))
+    return found
+
+
+def _noun_at(text: Text, k: int, nouns: dict[str, str]) -> str | None:
+    """The role-less key noun the word at ``k`` is (``fans`` for FAN), if any."""
+    word = text.word(k)
+    if not word.isalpha() or word in _NOT_NAMES:
+        return None
+    here = text.stems[k]
+    for noun in nouns:
+        key = stem(noun)
+        if len(here) >= 3 and (here.startswith(key) or key.startswith(here)):
+            return noun
+    return None
+
+
+def _value_word(text: Text, k: int, known: set[str], taken: set[int]) -> bool:
+    """A word that can be a value as said: letters, no setting's own word, not read already,
+    no verb of asking."""
+    word = text.word(k)
+    return (
+        0 <= k < len(text.tokens)
+        and k not in taken
+        and word.isalpha()
+        and len(word) >= 2
+        and word not in _NOT_NAMES
+        and word not in _VERBS
+        and word not in _SWITCHED
+        and text.stems[k] not in known
+    )
+
+
+_KIND_NAMES = {
+    "time": "time",
+    "mass": "weight",
+    "temperature": "temperature",
+    "volume": "volume",
+    "power": "wattage",
+    "length": "length",
+    "count": "quantity",  # how many, typed or stepped as a number
+}
+
+
+def _kind(mention: Mention) -> str | None:
+    """What a quantity with a unit measures (None: a bare number, a clock time)."""
+    if mention.kind == "duration":
+        return "time"
+    if mention.kind == "fahrenheit":
+        return "temperature"
+    if mention.kind == "number" and mention.unit:
+        return "count"  # "3 cups", "two slices": a number of things
+    return mention.dimension if mention.kind == "quantity" else None
+
+
+def _of_its_kind(view: Model, mention: Mention, text: Text) -> bool:
+    """The belief has a setting that takes quantities of this kind, or one its words name
+    right there ("the lowest power, 200 W": a restatement of a level the belief has), or the
+    mention has no kind: the parser's own steps gave it, or judged it a remark."""
+    kind = _kind(mention)
+    if kind is None:
+        return True
+    for info in view.infos.values():
+        if info.role != "setting":
+            continue
+        timed = isinstance(info.var, TimeVariable) or info.dimension == "time"
+        # a setting that could hold it: a time for a time, a number for any other
+        could = not isinstance(info.var, DiscreteVariable) and timed == (kind == "time")
+        if could and near_vocab(info, text, mention.start, mention.end, reach=4):
+            return True
+        lasting = timed and info.timing not in ("clock", "finish")  # not a time of day
+        if (kind == "time" and lasting) or (kind != "time" and info.dimension == kind):
+            return True
+    return False
+
+
+def _chosen_beside(
+    view: Model, text: Text, mention: Mention, goal: Goal, where: dict[str, int]
+) -> str | None:
+    """The choice the goal makes in the quantity's clause, nearest to it ("450 g of fish" with
+    the automatic defrost: the defrost menu's fish): a weight, a time the belief lacks is
+    likely that choice's next step, as on an automatic menu."""
+    best: tuple[int, str] | None = None
+    for name, at in where.items():
+        info = view.infos.get(name)
+        if name not in goal or info is None or info.role != "setting":
+            continue
+        if not isinstance(info.var, DiscreteVariable):
+            continue
+        low, high = sorted((at, mention.start))
+        if any(text.word(k) in CLAUSE_ENDS for k in range(low, high)):
+            continue
+        distance = abs(at - mention.start)
+        if best is None or distance < best[0]:
+            best = (distance, name)
+    return None if best is None else best[1]
+
+
+def _roleless_keys(model: ApplianceModel) -> list[str]:
+    """Keys that start nothing the belief knows — in no procedure's first step that sets
+    something, not acting from anywhere, not waiting, no digit — the keys the finder tries
+    (a key met only as a later step may well be the missed setting's)."""
+    roled: set[str] = set()
+    for steps in model.features.values():
+        first = steps[0]
+        if first.variable is not None or first.set or len(steps) > 1:
+            roled.update(first.actions)
+    for entry in model.anywhere:
+        roled.update(entry.actions)
+    return [
+        name
+        for name, spec in model.actions.items()
+        if name not in roled and spec.skill != "wait" and not name.rsplit("_", 1)[-1].isdigit()
+    ]
+
+
+def _key_words(key: str) -> list[str]:
+    """The nouns of a key's name (``press_weight`` → weight; ``turn_time_cw`` → time)."""
+    return [
+        w
+        for w in key.split("_")
+        if len(w) >= 3 and w.isalpha() and w not in _KEY_VERBS and w not in _STEPPING
+    ]
+
+
+def _belief_stems(view: Model) -> set[str]:
+    """Stems of the words that name the belief's variables: a noun among them names a setting
+    the belief has, which the parser's own steps had their chance at."""
+    return {s for info in view.infos.values() for s in own_stems(info)}
+
+
+def _neighbours(text: Text, mention: Mention) -> list[int]:
+    """The word before the quantity (past one linking word) and the word after it, in its
+    clause: where a setting's name stands beside its value."""
+    out: list[int] = []
+    k = mention.start - 1
+    if text.word(k) in _LINKS:
+        k -= 1
+    if k >= 0 and text.word(k) not in CLAUSE_ENDS and text.word(k) != ",":
+        out.append(k)
+    after = mention.end
+    if after < len(text.tokens) and text.word(after) not in CLAUSE_ENDS:
+        out.append(after)
+    return out
+
+
+def _key_noun(text: Text, mention: Mention, nouns: dict[str, str], known: set[str]) -> str | None:
+    """The noun of a role-less key standing beside the quantity."""
+    for k in _neighbours(text, mention):
+        noun = None if text.stems[k] in known else _noun_at(text, k, nouns)
+        if noun is not None:
+            return noun
+    return None
+
+
+def _level_noun(text: Text, mention: Mention, known: set[str]) -> str | None:
+    """ "level 7", "heat on 2": the noun right before a bare whole number (past one linking
+    word), when it names no setting the belief has."""
+    if mention.value != int(mention.value) or mention.words:
+        return None
+    k = mention.start - 1
+    if text.word(k) in _LINKS:
+        k -= 1
+    word = text.word(k)
+    if len(word) < 3 or not word.isalpha() or word in _NOT_NAMES or text.stems[k] in known:
+        return None
+    return word
+
+
+_BASE_UNITS = {"mass": "g", "volume": "ml", "power": "W"}
+
+
+def _as_said(text: Text, mention: Mention) -> Any:
+    """The value as the user said it: a whole number as itself, a duration in its largest
+    whole unit ("45 min", "2 h"), a weight, volume or power in grams, millilitres or watts
+    ("1.25 kg" → "1250 g"), another quantity with the unit said."""
+    if mention.kind == "number":
+        number = mention.value
+        return int(number) if float(number).is_integer() else number
+    if mention.kind == "duration":
+        seconds = round(mention.value)
+        for size, unit in ((86400, "d"), (3600, "h"), (60, "min")):
+            if seconds % size == 0 and seconds >= size:
+                return f"{seconds // size} {unit}"
+        return f"{seconds} s"
+    base = _BASE_UNITS.get(mention.dimension or "")
+    if mention.kind == "quantity" and base and float(mention.value).is_integer():
+        return f"{int(mention.value)} {base}"  # "1.25 kg" as a display writes it: 1250 g
+    if mention.kind == "quantity" and mention.unit:
+        said = text.word(mention.start)
+        try:
+            float(said)
+        except ValueError:
+            return None  # "two kilos": no number written as the display writes it
+        return f"{said} {mention.unit}"
+    return None
