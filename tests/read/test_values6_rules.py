@@ -48,3 +48,39 @@ def test_a_display_column_loses_the_word_every_row_starts_with() -> None:
     values = model.variables["steam"].model_dump(mode="json")["values"]
     assert values == ["2 cups", "4 cups", "off"], values
 
+
+# an embroidery unit whose keypad types the number of a design from a numbered chart, and
+# whose OK key only closes that entry
+EMBROIDERY = """KEYS
+
+  Key          Use
+  0 - 9        Number keys: type the number of the pattern you want.
+  OK           Ends the entry of a pattern number.
+  SPEED        Each press: SLOW > FAST > SLOW ...
+
+PATTERNS
+
+  No.   Pattern          Hoop
+  01    Rose             small
+  02    Anchor           small
+  03    Monogram frame   large
+  04    Star border      large
+  05    Leaf             small
+
+Type the pattern number, then press OK. The display shows the number.
+"""
+
+
+def test_a_confirm_key_naming_a_numbered_chart_makes_the_keypad_type_that_number() -> None:
+    actions = [f"press_{d}" for d in range(10)] + ["press_ok", "press_speed"]
+    model = read_manual(EMBROIDERY, actions).model
+    spec = model.variables["pattern"].model_dump(mode="json")
+    assert spec["type"] == "numeric", spec
+    assert spec["ranges"] == [[1, 5, 1]], spec
+    steps = [s for f in model.features.values() for s in f if "press_ok" in s.actions]
+    assert steps and steps[0].variable == "pattern", steps
+    assert "press_5" in steps[0].actions, steps
+    assert not any(
+        v.model_dump(mode="json").get("type") == "time" for v in model.variables.values()
+    ), "the keypad types the pattern, not a time"
+
