@@ -84,3 +84,20 @@ def test_a_confirm_key_naming_a_numbered_chart_makes_the_keypad_type_that_number
         v.model_dump(mode="json").get("type") == "time" for v in model.variables.values()
     ), "the keypad types the pattern, not a time"
 
+
+# a wind-up timer knob printed every ten minutes, with a small mark between two numbers
+OVEN = """TIMER knob
+The knob is printed OFF 10 20 30 40 50 60 (minutes). Between two numbers the knob also
+clicks at a small mark. Turn it clockwise to add time.
+
+LAMP
+Press to switch the lamp on or off.
+"""
+
+
+def test_a_knob_that_clicks_at_small_marks_stops_halfway_between_its_numbers() -> None:
+    actions = ["turn_timer_cw", "turn_timer_ccw", "press_lamp"]
+    spec = read_manual(OVEN, actions).model.variables["timer"].model_dump(mode="json")
+    steps = {r[2] for r in spec["ranges"]}
+    assert steps == {300} or steps == {5}, spec
+
