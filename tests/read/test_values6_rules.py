@@ -101,3 +101,43 @@ def test_a_knob_that_clicks_at_small_marks_stops_halfway_between_its_numbers() -
     steps = {r[2] for r in spec["ranges"]}
     assert steps == {300} or steps == {5}, spec
 
+
+# a two-drawer cooker whose specification gives the timer in hours and whose programme table
+# gives each programme's times in minutes
+TWO_DRAWERS = """SPECIFICATIONS
+Model                     TD-20                   TD-10
+Heating power             1800 W                  1500 W
+Timer                     up to 10 h              up to 90 min
+
+KEYS
+MENU 1 / MENU 2 button – each press moves that drawer to the next programme:
+  FRIES → CHICKEN → CAKE → DRY FRUIT, then back to FRIES.
+TEMP/TIME 1 / TEMP/TIME 2 button – lets the drawer's + and − keys set the temperature
+  (°C flashes); press again and they set the time again.
++ 1 / − 1, + 2 / − 2 buttons – change the time (or temperature) of that drawer.
+
+PROGRAMMES
+Programme       Preset          Adjustable          Preset      Adjustable
+                temp.           temp.               time        time
+FRIES           200 °C          150 – 200 °C        15 min      1 – 40 min
+CHICKEN         190 °C          150 – 200 °C        30 min      1 min – 2 h
+CAKE            160 °C          120 – 180 °C        35 min      1 – 90 min
+DRY FRUIT       60 °C           40 – 90 °C          5 h         1 – 10 h
+
+The temperature moves in steps of 10 °C.
+"""
+
+
+def test_a_programme_column_in_minutes_makes_an_hours_setting_a_time_in_both_zones() -> None:
+    actions = [
+        "press_menu1", "press_temptime1", "press_plus1", "press_minus1",
+        "press_menu2", "press_temptime2", "press_plus2", "press_minus2",
+    ]  # fmt: skip
+    model = read_manual(TWO_DRAWERS, actions).model
+    times = {
+        n: v.model_dump(mode="json") for n, v in model.variables.items() if n.startswith("time")
+    }
+    assert len(times) == 2, list(model.variables)
+    for name, spec in times.items():
+        assert spec["type"] == "time", (name, spec)
+        assert spec["cases"]["fries"]["ranges"][0][:2] == ["00:01:00", "00:40:00"], (name, spec)

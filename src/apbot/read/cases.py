@@ -95,6 +95,8 @@ def apply_cases(b: Builder) -> None:
                     continue
                 if spec.get("type") == "discrete" and _ranges_column(rows, column):
                     _as_number(b, name, spec, rows, column)  # the table says it is an amount
+                elif _finer_times(spec, rows, column):
+                    _as_number(b, name, spec, rows, column)  # "1 – 60 min" under "up to 12 h"
                 guessed = name in b.unread and spec.get("type") == "numeric"
                 if guessed_only and not guessed:
                     break
@@ -259,12 +261,23 @@ def _ranges_column(rows: list[Unit], column: int) -> bool:
     return sum(bool(column < len(r.cells) and find_ranges(r.cells[column])) for r in rows) >= 2
 
 
+def _finer_times(spec: dict[str, Any], rows: list[Unit], column: int) -> bool:
+    """Whether a setting read as whole hours (a numeric "h") has a column of times in a finer
+    unit ("1 – 60 min", "1 min – 2 h"): it is a time, set in minutes."""
+    if spec.get("type") != "numeric" or spec.get("unit") != "h":
+        return False
+    found = [f[0] for r in rows if column < len(r.cells) and (f := find_ranges(r.cells[column]))]
+    return len(found) >= 2 and any(r.unit in ("min", "s") for r in found)
+
+
 def _as_number(b: Builder, name: str, spec: dict[str, Any], rows: list[Unit], column: int) -> None:
-    """Turn a read-as-discrete setting into the amount the table's ranges say it is."""
+    """Turn a read-as-discrete setting (or whole hours) into the amount the table's ranges say
+    it is, read from the column's first range in the finest unit it uses."""
     from apbot.read.shapes import Evidence
 
     found = [find_ranges(r.cells[column]) for r in rows if column < len(r.cells)]
     first = next(f[0] for f in found if f)
+    first = next((f[0] for f in found if f and f[0].unit in ("min", "s")), first)
     label = spec.get("label", name.upper())
     del b.variables[name]
     new = b.add_number(name, label, Evidence(ranges=[first]), cyclic=False)
