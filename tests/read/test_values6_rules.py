@@ -141,3 +141,21 @@ def test_a_programme_column_in_minutes_makes_an_hours_setting_a_time_in_both_zon
     for name, spec in times.items():
         assert spec["type"] == "time", (name, spec)
         assert spec["cases"]["fries"]["ranges"][0][:2] == ["00:01:00", "00:40:00"], (name, spec)
+
+
+# a thawing key told by how much each tap adds, and its top in a larger unit
+THAW = """KEYS
+THAW        thaw by weight.
+START       starts the oven.
+
+THAW
+Tap THAW once for every 50 g of frozen food, then tap START. The heaviest setting is 1.5 kg.
+"""
+
+
+def test_a_key_tapped_once_for_every_amount_steps_that_amount_up_to_the_heaviest() -> None:
+    model = read_manual(THAW, ["press_thaw", "press_start"]).model
+    spec = model.variables["thaw"].model_dump(mode="json")
+    assert spec["type"] == "numeric" and spec["unit"] == "g", spec
+    assert spec["ranges"] == [[50, 1500, 50]], spec
+
