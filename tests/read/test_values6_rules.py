@@ -159,3 +159,31 @@ def test_a_key_tapped_once_for_every_amount_steps_that_amount_up_to_the_heaviest
     assert spec["type"] == "numeric" and spec["unit"] == "g", spec
     assert spec["ranges"] == [[50, 1500, 50]], spec
 
+
+# a top loader whose chart lists each course's settings joined by hyphens, the standard value
+# in brackets, in the order the key shows them
+TOP_LOADER = """KEYS
+COURSE     each press selects the next course: Normal → Bulky → Fast.
+SOAK       each press shows the next soak time (see the chart).
+RINSE      each press shows the next number of rinses (see the chart).
+START      starts the wash.
+
+COURSE CHART
+Values in the order the key shows them; the standard value is in [ ].
+
+  Course     | SOAK (min)         | RINSE (times)
+  -----------|--------------------|--------------
+  Normal     | 0-10-[20]-30       | 1-[2]-3
+  Bulky      | 0-[30]-60-90       | 2-[3]
+  Fast       | [0]-10             | [1]-2
+"""
+
+
+def test_numbers_joined_by_hyphens_in_a_chart_are_the_values_not_a_range() -> None:
+    actions = ["press_course", "press_soak", "press_rinse", "press_start"]
+    model = read_manual(TOP_LOADER, actions).model
+    soak = model.variables["soak"].model_dump(mode="json")
+    assert soak["cases"]["bulky"] == {"ranges": [[0, 90, 30]], "initial": 30}, soak
+    rinse = model.variables["rinse"].model_dump(mode="json")
+    assert rinse["cases"]["normal"] == {"ranges": [[1, 3, 1]], "initial": 2}, rinse
+    assert rinse["cases"]["bulky"]["ranges"] == [[2, 3, 1]], rinse
