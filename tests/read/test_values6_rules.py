@@ -187,3 +187,29 @@ def test_numbers_joined_by_hyphens_in_a_chart_are_the_values_not_a_range() -> No
     rinse = model.variables["rinse"].model_dump(mode="json")
     assert rinse["cases"]["normal"] == {"ranges": [[1, 3, 1]], "initial": 2}, rinse
     assert rinse["cases"]["bulky"]["ranges"] == [[2, 3, 1]], rinse
+
+
+# a dryer chart whose column says which programmes take the on/off option, a note from the
+# last column run into one of its cells
+DRYER = """KEYS
+PROGRAMME   turn to choose: Cotton → Mixed → Wool → Refresh.
+CREASE      creaseguard on / off.
+START       starts the programme.
+
+PROGRAMMES
+Programme     Load kg   Anti-crease   Notes
+Cotton        8         yes           towels, bedding
+Mixed         4         yes
+Wool          1         –             wool only;
+                                      no anti-crease possible
+Refresh       1         –             no heat
+"""
+
+
+def test_a_yes_or_dash_column_says_which_programmes_offer_an_on_off_option() -> None:
+    actions = ["turn_programme_cw", "turn_programme_ccw", "press_crease", "press_start"]
+    model = read_manual(DRYER, actions).model
+    spec = model.variables["crease"].model_dump(mode="json")
+    assert spec["depends_on"] == "programme", spec
+    assert set(spec["cases"]) == {"cotton", "mixed"}, spec
+    assert all(c["values"] == ["off", "on"] for c in spec["cases"].values()), spec

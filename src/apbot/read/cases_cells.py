@@ -58,8 +58,28 @@ def _alone(item: str, known: list[str]) -> str:
     return bare if bare != item and (bare in known or not known) else item
 
 
+# a mark that a chart's on/off column says the option is offered, or not ("–", "no")
+_OFFERED_RE = re.compile(r"\s*(?:yes|y|✓|✔|●|x)\b\W*(?:\s|$)", re.I)
+_NOT_OFFERED_RE = re.compile(r"\s*(?:no\b|n\b|[–—-](?:\s|$))", re.I)
+
+
+def _toggle_cell(cell: str) -> bool | None:
+    """Whether an on/off option's chart cell says it is offered (True), not offered (False),
+    or neither (None: the cell names values). A note run into the cell from the next column
+    ("– hold not possible") does not change what its first mark says."""
+    if _OFFERED_RE.match(cell + " "):
+        return True
+    if _NOT_OFFERED_RE.match(cell + " ") or not cell.strip():
+        return False
+    return None
+
+
 def _case(spec: dict[str, Any], cell: str) -> Any:
     kind = spec.get("type")
+    if kind == "discrete" and sorted(spec.get("values", [])) == ["off", "on"]:
+        said = _toggle_cell(cell)  # "yes" under STEAM: the key works in that programme
+        if said is not None:
+            return {"values": ["off", "on"]} if said else None
     if kind == "discrete":
         if len(spec.get("values", [])) == 2 and _norm(cell) in spec["values"]:
             return {"values": list(spec["values"]), "initial": _norm(cell)}  # a default
