@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from apbot.read import read_manual
+from apbot.read.shapes import _fits
 
 # a panel drawn with key caps in square brackets, spaced like a table, and a chart of what
 # each touch of one key shows on the display
@@ -213,3 +214,9 @@ def test_a_yes_or_dash_column_says_which_programmes_offer_an_on_off_option() -> 
     assert spec["depends_on"] == "programme", spec
     assert set(spec["cases"]) == {"cotton", "mixed"}, spec
     assert all(c["values"] == ["off", "on"] for c in spec["cases"].values()), spec
+
+
+def test_a_power_setting_takes_no_temperature_or_time_range() -> None:
+    # "PROBE replaces the power setting by a temperature, 50–200 °C" after a POWER sentence
+    assert not _fits("°C", ["power"]) and not _fits("min", ["power"])
+    assert _fits("W", ["power"]) and _fits("%", ["power"]) and _fits("", ["power"])

@@ -266,9 +266,13 @@ def _fits(unit: str, tokens: list[str]) -> bool:
     timer, no watts for a volume (the sentence after a key often gives a neighbouring
     setting's range)."""
     expected = set(_quantity_units(tokens))
+    timeish = {"s", "min", "h"}
+    if not expected and unit and {"power", "wattage"} & {w for t in tokens for w in words(t)}:
+        # a power is a level, a percentage or watts, never degrees or a time ("TEMP replaces
+        # the power setting by a temperature, 60–240 °C" speaks of another setting)
+        return unit not in ("°C", "°F", *timeish)
     if not expected or not unit:
         return True
-    timeish = {"s", "min", "h"}
     if expected & {"°C"}:
         return unit in ("°C", "°F", "")
     if expected & {"min"}:
