@@ -220,3 +220,13 @@ def test_a_power_setting_takes_no_temperature_or_time_range() -> None:
     # "PROBE replaces the power setting by a temperature, 50–200 °C" after a POWER sentence
     assert not _fits("°C", ["power"]) and not _fits("min", ["power"])
     assert _fits("W", ["power"]) and _fits("%", ["power"]) and _fits("", ["power"])
+
+
+def test_a_snowflake_printed_after_a_row_of_temperatures_is_the_value_cold() -> None:
+    text = (
+        "TEMP.\nPress TEMP. to change the wash temperature. The lamps over the key read"
+        " 60 40 30 20 ❄. Each press lights the next lamp.\n"
+    )
+    model = read_manual(text, ["press_temp"]).model
+    spec = model.variables["temp"].model_dump(mode="json")
+    assert spec["values"] == ["60", "40", "30", "20", "cold"], spec
