@@ -230,13 +230,3 @@ def test_a_snowflake_printed_after_a_row_of_temperatures_is_the_value_cold() -> 
     model = read_manual(text, ["press_temp"]).model
     spec = model.variables["temp"].model_dump(mode="json")
     assert spec["values"] == ["60", "40", "30", "20", "cold"], spec
-
-
-def test_named_marks_after_a_row_of_numbers_are_values_too() -> None:
-    text = (
-        "DRY\nPress DRY to choose the drying level. The lamps show 3 2 1 and the two symbols"
-        " Iron Dry and Air Fluff. Each press lights the next lamp.\n"
-    )
-    model = read_manual(text, ["press_dry"]).model
-    spec = model.variables["dry"].model_dump(mode="json")
-    assert spec["values"] == ["3", "2", "1", "iron dry", "air fluff"], spec

@@ -384,7 +384,6 @@ def find_number_run(text: str) -> list[str] | None:
                 elif rest[0].lower() in ("cold", "cool"):  # a wash knob's first mark: a value
                     run.append(rest[0].lower())
                 rest = rest[1:]
-            k = 0
             for k, token in enumerate(rest):
                 if re.fullmatch(r"\d+(?:[.,]\d+)?", token):
                     run.append(token)
@@ -393,28 +392,8 @@ def find_number_run(text: str) -> list[str] | None:
                     run.append(token.lower())  # "printed 90 60 40 30 20 ❄": the last mark, cold
                 break
             if len(run) >= 3:
-                return run + _named_after(row, rest[k - 1] if k else "")
+                return run
     return None
-
-
-# the row goes on with named marks: "… 600 400 and the two symbols No Spin and Rinse Hold"
-_NAMED_AFTER_RE = re.compile(
-    r"^and\s+(?:the\s+)?(?:(?:two|three|four)\s+)?(?:symbols?|settings?|positions?|marks?|lamps?)?"
-    r"\s*((?:[A-Z][a-z]*(?:\s+[A-Z][a-z]*){0,2})(?:\s*(?:,|\band\b)\s*[A-Z][a-z]*(?:\s+[A-Z][a-z]*){0,2})*)"
-)
-
-
-def _named_after(row: str, last: str) -> list[str]:
-    """Named marks printed after a row of numbers (its last one ``last``) and joined to it by
-    "and" (capitalised names of one to three words, up to the sentence's end); none when the
-    row does not go on so."""
-    at = re.search(rf"(?<![\d.,]){re.escape(last)}(?![\d.,])\s+(?=and\b)", row) if last else None
-    if at is None:
-        return []
-    m = _NAMED_AFTER_RE.match(re.split(r"[.;:]", row[at.end() :])[0])
-    if not m:
-        return []
-    return [n.strip().lower() for n in re.split(r"\s*(?:,|\band\b)\s*", m.group(1)) if n.strip()]
 
 
 def _dedupe(items: list[str]) -> list[str]:
