@@ -10,7 +10,6 @@ import re
 
 from apbot.read.evidence_anywhere import AnywhereReader
 from apbot.read.evidence_checks import (
-    _BETWEEN_RE,
     _amount_column,
     _every_minute_top,
     _names_of_pieces,
@@ -20,6 +19,7 @@ from apbot.read.evidence_checks import (
     _with_midpoints,
     _without_only,
     about_another,
+    between_marks,
     lettered_row,
 )
 from apbot.read.evidence_lists import ListReader
@@ -345,7 +345,7 @@ class EvidenceReader(ListReader, AnywhereReader):
                 if units[j].heading == units[i].heading
             }  # the paragraph about the knob: its marks, then how it clicks between them
             said = [units[i].text for i in sorted(near | set(self.context(tokens)))]
-            if any(_BETWEEN_RE.search(t) for t in said):
+            if any(between_marks(t) for t in said):
                 best = _with_midpoints(best)
             for t in said:  # "in the first ten minutes every minute has its own tick"
                 top = _every_minute_top(t)
