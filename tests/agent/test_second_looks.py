@@ -1,0 +1,43 @@
+"""Regression tests for what the closed loop learnt once and the display later contradicted
+(the newcats development set): each runs the agent on a small model against the true
+simulator and judges the outcome on the truth."""
+
+from __future__ import annotations
+
+from tests.helpers import model_from
+from tests.helpers import run_checked as run
+
+# --- an entry key believed to set a value it only showed --------------------------------------
+
+# The warmer's WARMTH key only brings the setting up; the reader guessed it starts at 30, so the
+# first look (40) reads as "WARMTH sets 40". After a walk leaves it at 30, WARMTH shows 30.
+WARMER = """
+controls: [{id: power, label: POWER}, {id: warmth, label: WARMTH}, {id: up, label: "+"},
+           {id: down, label: "-"}, {id: go, label: GO}]
+variables:
+  power: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "HELLO"}}
+  warmth: {type: numeric, unit: "°C", label: WARMTH, ranges: [[30, 45, 1]], initial: 40}
+  running: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "RUN"}}
+actions: {press_power: {control: power}, press_warmth: {control: warmth},
+          press_up: {control: up}, press_down: {control: down}, press_go: {control: go}}
+features:
+  power: [{actions: [press_power], variable: power, effect: toggle}]
+  set_warmth:
+    - {actions: [press_warmth]}
+    - {actions: [press_up, press_down], variable: warmth,
+       effect: {press_up: next, press_down: prev}}
+  start: [{actions: [press_go], variable: running, effect: toggle}]
+guards: [{when: {power: "off"}, only: [press_power], display: ""}]
+display: {indicators: [running]}
+"""
+
+
+def test_an_entry_key_seen_to_leave_a_value_alone_unlearns_the_value_it_was_believed_to_set() -> (
+    None
+):
+    belief = model_from(
+        WARMER.replace("initial: 40", "initial: 30").replace("[[30, 45, 1]]", "[[30, 45, 5]]")
+    )
+    episode, reached = run(model_from(WARMER), belief, {"warmth": 42, "running": "on"})
+    assert reached and episode.claimed_success, episode.failure
+    assert any("press_warmth leaves it alone" in r for r in episode.repairs), episode.repairs
