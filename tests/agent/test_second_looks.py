@@ -4,6 +4,7 @@ simulator and judges the outcome on the truth."""
 
 from __future__ import annotations
 
+from apbot.agent.reader import DisplayReader
 from tests.helpers import model_from
 from tests.helpers import run_checked as run
 
@@ -41,3 +42,28 @@ def test_an_entry_key_seen_to_leave_a_value_alone_unlearns_the_value_it_was_beli
     episode, reached = run(model_from(WARMER), belief, {"warmth": 42, "running": "on"})
     assert reached and episode.claimed_success, episode.failure
     assert any("press_warmth leaves it alone" in r for r in episode.repairs), episode.repairs
+
+
+# --- a label that ends in one of its own values -----------------------------------------------
+
+# The grill's SHUT OFF setting is a lamp lit when on; its own screen would print "SHUT OFF on".
+GRILL = """
+controls: [{id: start, label: START}]
+variables:
+  shut_off: {type: discrete, values: ["off", "on"], label: SHUT OFF}
+  running: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "RUN"}}
+actions: {press_start: {control: start}, hold_start: {control: start, skill: hold, seconds: 3}}
+features:
+  start: [{actions: [press_start], variable: running, effect: toggle}]
+  shut_off: [{actions: [hold_start], variable: shut_off, effect: toggle}]
+display: {indicators: [shut_off]}
+"""
+
+
+def test_a_label_printed_whole_is_not_read_as_its_shortened_self_and_a_value() -> None:
+    reader = DisplayReader(model_from(GRILL))
+    readings = reader.read("SHUT OFF  RUN").hypotheses
+    assert readings and all(h.values.get("shut_off") != "off" for h in readings), readings
+    assert any(h.lamps.get("shut_off") == frozenset({"on"}) for h in readings), readings
+    (shortened,) = reader.read("SHU off").hypotheses  # still read where it is shortened
+    assert shortened.values == {"shut_off": "off"}
