@@ -67,3 +67,25 @@ def test_a_label_printed_whole_is_not_read_as_its_shortened_self_and_a_value() -
     assert any(h.lamps.get("shut_off") == frozenset({"on"}) for h in readings), readings
     (shortened,) = reader.read("SHU off").hypotheses  # still read where it is shortened
     assert shortened.values == {"shut_off": "off"}
+
+
+# --- a value printed in capitals where the belief prints a label and the value ----------------
+
+PRESS = """
+controls: [{id: side, label: SIDE}]
+variables:
+  side: {type: discrete, values: [both, lower, upper], label: SIDE,
+         show: {both: BOTH, lower: LOWER, upper: UPPER}}
+actions: {press_side: {control: side}}
+features:
+  side: [{actions: [press_side], variable: side, effect: next}]
+"""
+
+
+def test_a_single_text_that_prints_the_predicted_value_teaches_the_template_without_a_walk() -> (
+    None
+):
+    belief = model_from(PRESS.replace("show: {both: BOTH, lower: LOWER, upper: UPPER}", ""))
+    episode, reached = run(model_from(PRESS), belief, {"side": "lower"})
+    assert reached and episode.claimed_success, episode.failure
+    assert episode.execution_steps == 1  # no walk away from the value just reached
