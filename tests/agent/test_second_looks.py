@@ -89,3 +89,29 @@ def test_a_single_text_that_prints_the_predicted_value_teaches_the_template_with
     episode, reached = run(model_from(PRESS), belief, {"side": "lower"})
     assert reached and episode.claimed_success, episode.failure
     assert episode.execution_steps == 1  # no walk away from the value just reached
+
+
+# --- a knob believed to go round that stops at its end -------------------------------------------
+
+DRYER = """
+controls: [{id: knob, kind: knob, label: CYCLE}]
+variables:
+  cycle: {type: discrete, values: ["off", cotton, wool, silk, airing], wrap: false,
+          show: {"off": "", cotton: COTTON, wool: WOOL, silk: SILK, airing: AIRING}}
+actions: {turn_cw: {control: knob, skill: turn_cw}, turn_ccw: {control: knob, skill: turn_ccw}}
+features:
+  cycle: [{actions: [turn_cw, turn_ccw], variable: cycle, effect: {turn_cw: next, turn_ccw: prev}}]
+guards: [{when: {cycle: "off"}, only: [turn_cw, turn_ccw], display: "", hide: true}]
+"""
+
+
+def test_a_press_across_a_believed_wrap_that_changes_nothing_makes_the_setting_stop_there() -> None:
+    # the reader took neither the stop nor the words: the dark panel at OFF reads as nothing
+    belief = model_from(
+        DRYER.replace("wrap: false,", "label: CYCLE").replace(
+            'show: {"off": "", cotton: COTTON, wool: WOOL, silk: SILK, airing: AIRING}', ""
+        )
+    )
+    episode, reached = run(model_from(DRYER), belief, {"cycle": "airing"})
+    assert reached and episode.claimed_success, episode.failure
+    assert any("cycle stops at its ends" in r for r in episode.repairs), episode.repairs

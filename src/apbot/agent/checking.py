@@ -12,6 +12,7 @@ from __future__ import annotations
 from typing import Any
 
 from apbot.agent.displays import DisplayLearner
+from apbot.agent.ends import stopped_at_end
 from apbot.agent.explorer import Explorer
 from apbot.agent.guards import GuardLearner
 from apbot.agent.merged import ProcedureSplitter
@@ -94,6 +95,8 @@ class Checks:
                 self.explore(done.variable, done)
             else:
                 self._learn_display(done.variable, executed[: first + 1])
+        elif stopped_at_end(self.session, done):
+            pass  # plan again the long way round
         elif done.refused or wrong_setting(self.session, done):
             self.procedures.repair_procedure(executed[first:])
             name = self.session.step_variable(self.session.belief.pointer())
