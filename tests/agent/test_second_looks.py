@@ -115,3 +115,50 @@ def test_a_press_across_a_believed_wrap_that_changes_nothing_makes_the_setting_s
     episode, reached = run(model_from(DRYER), belief, {"cycle": "airing"})
     assert reached and episode.claimed_success, episode.failure
     assert any("cycle stops at its ends" in r for r in episode.repairs), episode.repairs
+
+
+# --- a setting only some programmes have ------------------------------------------------------
+
+STERILISER = """
+controls: [{id: prog, label: PROG}, {id: up, label: UP}, {id: down, label: DOWN}]
+variables:
+  prog: {type: discrete, values: [auto, dry, keep], show: {auto: AUTO, dry: DRY, keep: KEEP}}
+  minutes:
+    type: time
+    format: h:mm
+    label: TIME
+    depends_on: prog
+    cases:
+      dry: {ranges: [["00:10:00", "01:00:00", 600]], initial: "00:20:00"}
+      keep: {ranges: [["01:00:00", "04:00:00", 3600]], initial: "01:00:00"}
+actions: {press_prog: {control: prog}, press_up: {control: up}, press_down: {control: down}}
+features:
+  prog: [{actions: [press_prog], variable: prog, effect: next}]
+  minutes:
+    - {actions: [press_up, press_down], variable: minutes,
+       effect: {press_up: next, press_down: prev}}
+"""
+
+
+def test_a_setting_its_own_key_shows_as_dashes_is_absent_in_the_programme_chosen() -> None:
+    own = '\n    cases:\n      dry: {ranges: [["00:10:00", "01:00:00", 600]], initial: "00:20:00"}'
+    belief = model_from(
+        STERILISER.replace("    depends_on: prog", "    initial: '00:20:00'")
+        .replace(own, '\n    ranges: [["00:10:00", "01:00:00", 600]]')
+        .replace(
+            '\n      keep: {ranges: [["01:00:00", "04:00:00", 3600]], initial: "01:00:00"}', ""
+        )
+    )
+    assert belief.variables["minutes"].depends_on is None
+    episode, reached = run(model_from(STERILISER), belief, {"minutes": "40 min"})
+    assert reached and episode.claimed_success, episode.failure
+
+
+# --- a time read in minutes:seconds that the display prints in hours:minutes --------------------
+
+
+def test_a_walk_read_in_the_wrong_time_style_is_read_again_in_the_one_that_shows_the_goal() -> None:
+    truth = model_from(STERILISER)
+    belief = model_from(STERILISER.replace("format: h:mm", "format: mm:ss"))
+    episode, reached = run(truth, belief, {"prog": "dry", "minutes": "50 min"})
+    assert reached and episode.claimed_success, episode.failure

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from apbot.agent.absent import absent_here
 from apbot.agent.displays import DisplayLearner
 from apbot.agent.ends import stopped_at_end
 from apbot.agent.explorer import Explorer
@@ -166,6 +167,8 @@ class Checks:
             f"{observed!r}, expected {predicted!r})",
         )
         if self.side_effects.independent(name, executed[upto], observed):
+            return
+        if absent_here(self.session, name, executed[upto], observed):
             return
         if self.side_effects.programme_start(name, executed[upto], observed):
             return
