@@ -162,3 +162,28 @@ def test_a_walk_read_in_the_wrong_time_style_is_read_again_in_the_one_that_shows
     belief = model_from(STERILISER.replace("format: h:mm", "format: mm:ss"))
     episode, reached = run(truth, belief, {"prog": "dry", "minutes": "50 min"})
     assert reached and episode.claimed_success, episode.failure
+
+
+# --- an on/off setting the belief shows on its own screen, that the panel shows as a lamp ------
+
+MISTER = """
+controls: [{id: mist, label: MIST}]
+variables:
+  mist: {type: numeric, ranges: [[1, 3, 1]], wrap: true, label: MIST}
+  warm: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "HOT"}}
+actions: {press_mist: {control: mist}, hold_mist: {control: mist, skill: hold, seconds: 3}}
+features:
+  mist: [{actions: [press_mist], variable: mist, effect: next}]
+  warm: [{actions: [hold_mist], variable: warm, effect: toggle}]
+display: {indicators: [warm, mist]}
+"""
+
+
+def test_a_new_word_lit_by_the_press_that_switches_a_setting_without_a_lamp_is_its_lamp() -> None:
+    belief = model_from(
+        MISTER.replace('show: {"off": "", "on": "HOT"}', "label: MIST").replace(
+            "indicators: [warm, mist]", "indicators: [mist]"
+        )
+    )
+    episode, reached = run(model_from(MISTER), belief, {"mist": 3, "warm": "on"})
+    assert reached and episode.claimed_success, episode.failure
