@@ -187,3 +187,23 @@ def test_a_new_word_lit_by_the_press_that_switches_a_setting_without_a_lamp_is_i
     )
     episode, reached = run(model_from(MISTER), belief, {"mist": 3, "warm": "on"})
     assert reached and episode.claimed_success, episode.failure
+
+
+# --- a choice printed as two of its other choices' words together -------------------------------
+
+ZONES = """
+controls: [{id: zone, label: ZONE}]
+variables:
+  zone: {type: discrete, values: [all, front, back], initial: front,
+         show: {all: "FRONT BACK", front: FRONT, back: BACK}}
+actions: {press_zone: {control: zone}}
+features:
+  zone: [{actions: [press_zone], variable: zone, effect: next}]
+"""
+
+
+def test_two_choices_printed_together_are_no_reading_of_either() -> None:
+    belief = model_from(ZONES.replace('{all: "FRONT BACK", front: FRONT, back: BACK}', "'{value}'"))
+    assert DisplayReader(belief).read("FRONT BACK").unknown
+    episode, reached = run(model_from(ZONES), belief, {"zone": "all"})
+    assert reached and episode.claimed_success, episode.failure
