@@ -3,7 +3,11 @@ spaces by a converter that does not know Markdown, running text broken again."""
 
 from __future__ import annotations
 
+from apbot.model.domain import all_values
+from apbot.model.schema import NumericVariable
+from apbot.read import read_manual
 from apbot.read.text import parse_manual
+from apbot.read.text_sections import boilerplate_heading
 
 TWO_COLUMNS = """\
 ## The keys
@@ -56,3 +60,75 @@ BAGEL · PASTRY · CRUMPET    Bread kinds.
     units = parse_manual(text).units
     light = next(u for u in units if "LIGHT" in u.text)
     assert "Browning levels." in light.text
+
+
+PAN = ["press_power", "press_mode", "press_temp", "press_up", "press_down", "press_start"]
+
+BOILERPLATE_FIRST = """\
+# Hearth HB-9 steam oven
+
+## IMPORTANT SAFEGUARDS
+
+- Never press and hold POWER while you move the oven.
+- A shop may leave it in demonstration mode: press MODE to switch demonstration mode on or
+  off.
+
+## Using the oven
+
+Press MODE to choose STEAM, BAKE or GRILL; each press moves to the next.
+Press TEMP, then set 100 to 230 °C with UP and DOWN, 5 °C a step.
+Press START.
+
+## 9. Warranty and service
+
+Hold MODE for 5 seconds to switch the service display on or off.
+"""
+
+
+def test_safety_and_warranty_sections_lend_no_values() -> None:
+    texts = [u.text for u in parse_manual(BOILERPLATE_FIRST).units]
+    assert not any("POWER" in t or "demonstration" in t or "service" in t for t in texts)
+    assert any(t.startswith("Press MODE to choose") for t in texts)
+    model = read_manual(BOILERPLATE_FIRST, PAN).model
+    assert all_values(model.variables["mode"]) == ["steam", "bake", "grill"]
+
+
+def test_a_section_heading_of_boilerplate_words_alone_is_dropped() -> None:
+    for heading in (
+        "IMPORTANT SAFEGUARDS",
+        "2. Safety instructions",
+        "Warranty and service",
+        "11 Disposal & guarantee",
+        "Explanation of the warning symbols",
+    ):
+        assert boilerplate_heading(heading), heading
+    for heading in (
+        "Child safety lock",
+        "Specifications and guarantee",
+        "Using the oven",
+        "Before you call for service",
+        "Care programme",
+    ):
+        assert not boilerplate_heading(heading), heading
+
+
+ROOM_FIRST = """\
+# Hearth HB-9 steam oven
+
+## Where to put it
+
+Use the oven at an ambient temperature between 5 °C and 35 °C. Store the appliance
+frost-free (0 °C to 40 °C) when it is not used.
+
+## Cooking
+
+Press TEMP and set the temperature with UP and DOWN: 100 to 230 °C, 5 °C a step.
+Press MODE for STEAM, BAKE or GRILL. Press START.
+"""
+
+
+def test_the_room_s_temperature_is_no_setting_s_range() -> None:
+    temp = read_manual(ROOM_FIRST, PAN).model.variables["temp"]
+    assert isinstance(temp, NumericVariable)
+    assert temp.ranges is not None
+    assert (temp.ranges[0][0], temp.ranges[-1][1]) == (100, 230)

@@ -42,6 +42,7 @@ from apbot.read.shapes import (
     _without,
     _without_advice,
     is_wait,
+    surroundings,
 )
 from apbot.read.value_lists import anchored_lists, bare_list, named_list
 from apbot.read.values import (
@@ -149,6 +150,7 @@ class EvidenceReader(ListReader, AnywhereReader):
                 if prio > best_prio:
                     best, best_prio, ev.values_at = items, prio, i
             waiting = i not in mentions and is_wait(text)  # "Leave for one to two hours."
+            waiting = waiting or surroundings(text)  # "at an ambient 5 to 35 °C": the room's
             ranges = [
                 r
                 for r in find_ranges("" if waiting else _without_advice(unit))

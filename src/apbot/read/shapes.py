@@ -196,6 +196,21 @@ _WAIT_RE = re.compile(  # "Leave for one to two hours", "let it stand for 5–10
 )
 
 
+_SURROUNDINGS_RE = re.compile(
+    r"\b(?:ambient|surroundings|frost-free)\b|\bstorage\s+(?:temperature|conditions)\b"
+    r"|\b(?:store|stored|keep|kept)\s+(?:(?:the|this|your)\s+)?(?:appliance|unit|machine|device"
+    r"|product)\b",
+    re.IGNORECASE,
+)
+
+
+def surroundings(text: str) -> bool:
+    """A sentence about where the appliance stands or is kept ("an ambient temperature
+    between 5 °C and 35 °C", "store the appliance frost-free, 0 to 40 °C"): its ranges are
+    the room's, not a setting's."""
+    return bool(_SURROUNDINGS_RE.search(text))
+
+
 def is_wait(text: str) -> bool:
     """A sentence telling the user to wait ("3. Leave for one to two hours, then …"): its
     times are a wait, not the limits of a setting named nearby."""
