@@ -53,7 +53,7 @@ def noisy_suite(
         for name in ("model.yaml", "panel.yaml", "tasks.yaml"):
             shutil.copyfile(appliance.directory / name, target / name)
         text = perturb(appliance.manual, kind, appliance.id, seed)
-        (target / "manual.md").write_text(text, encoding="utf-8")
+        (target / appliance.manual_file).write_text(text, encoding="utf-8")
     return directory
 
 

@@ -118,46 +118,53 @@ def _hyphenate(lines: list[str], rng: random.Random, width: int) -> list[str]:
     return lines
 
 
+def _caps(line: str) -> bool:
+    letters = [c for c in line if c.isalpha()]
+    return bool(letters) and all(c.isupper() for c in letters)
+
+
 def wraps(text: str, rng: random.Random) -> str:
-    """(c) Running text broken again at 60-75 characters (a width per manual), some breaks
-    inside a word with a hyphen; tables, headings and drawings untouched."""
+    """(c) Running text set again at 60-75 characters (a width per manual): a paragraph's lines
+    joined and broken anew, a bullet's next lines hung under its text, some breaks inside a
+    word with a hyphen. Tables, headings, drawings, lines in capitals (a plain-text heading)
+    and lines with columns are left as they are, and no paragraph runs into them."""
     width = rng.randint(60, 75)
     lines = text.split("\n")
     fenced = _fenced(lines)
     out: list[str] = []
     para: list[str] = []
-    lead = ""
+    lead = hang = ""
 
     def flush() -> None:
-        nonlocal para, lead
+        nonlocal para
         if para:
-            joined = " ".join(p.strip() for p in para)
-            indent = " " * len(lead) if lead else ""
             wrapped = textwrap.wrap(
-                joined,
+                " ".join(p.strip() for p in para),
                 width=width,
                 initial_indent=lead,
-                subsequent_indent=indent,
+                subsequent_indent=hang,
                 break_long_words=False,
                 break_on_hyphens=False,
             )
             out.extend(_hyphenate(wrapped, rng, width))
-        para, lead = [], ""
+        para = []
 
     for i, line in enumerate(lines):
-        if fenced[i] or not _prose(line):
+        if fenced[i] or not _prose(line) or _caps(line):
             flush()
             out.append(line)
             continue
         bullet = _BULLET.match(line)
-        if bullet:
+        ended = bool(para) and bool(re.search(r"[.!?:]$", para[-1])) and len(para[-1]) < 60
+        if bullet or not para or ended:  # (a short line ending a sentence ends a paragraph)
             flush()
+            lead = line[: len(line) - len(line.lstrip())]
+            hang = " " * len(bullet.group(1)) if bullet else lead
+        para.append(line[bullet.end() :] if bullet else line)
+        if bullet:
             lead = bullet.group(1)
-            para = [line[bullet.end() :]]
-            continue
-        para.append(line)
     flush()
-    return "\n".join(out) + ("\n" if not text.endswith("\n") else "")
+    return "\n".join(out)
 
 
 _RULE = re.compile(r"^\s*\|?\s*:?-{2,}:?\s*(\|\s*:?-{2,}:?\s*)*\|?\s*$")
