@@ -132,3 +132,19 @@ def test_the_room_s_temperature_is_no_setting_s_range() -> None:
     assert isinstance(temp, NumericVariable)
     assert temp.ranges is not None
     assert (temp.ranges[0][0], temp.ranges[-1][1]) == (100, 230)
+
+
+def test_a_legend_with_lines_set_in_or_a_first_row_of_values_is_no_two_column_table() -> None:
+    set_in = """\
+Part          Job
+POWER         Wakes the fan. A second press sends it to sleep and keeps
+              every setting.
+SPEED         Steps through LOW, MID and HIGH.
+"""
+    shown = """\
+AUTO 24°C        Target temperature in AUTO
+LOCK             Keys locked
+OFF              Fan asleep
+"""
+    for text in (set_in, shown):
+        assert not any(u.header for u in parse_manual(text).units), text

@@ -89,7 +89,7 @@ def _space_tables(
             elif len(cells) != 1 or len(cells[0]) > 40:
                 break
             j += 1
-        if two and not _two_column_rows(lines, rows, j):
+        if two and (more or not _two_column_rows(lines, rows, j)):
             rows = []
         if len(rows) >= 2:
             out[i + 1] = (_joined_cells(lines[i], more.get(i, [])), True)
@@ -106,12 +106,12 @@ def _space_tables(
 def _two_column_head(cells: tuple[str, ...]) -> bool:
     """Two short column names ("Key   What it does", "Roast   Suggested temperature"): no
     sentence, no item of a key legend ("TEMP   Sets the temperature." ends in a stop; a
-    definition starts in lower case)."""
+    definition starts in lower case), no number (a row of a display legend)."""
     return all(
         len(cell) <= 25
         and len(cell.split()) <= 4
         and re.match(r"[A-Z]", cell)
-        and not re.search(r"[.!?:;,]$", cell)
+        and not re.search(r"[.!?:;,]$|\d", cell)  # ("SET 60°C   Set temperature": a row)
         for cell in cells
     )
 
@@ -119,7 +119,7 @@ def _two_column_head(cells: tuple[str, ...]) -> bool:
 def _two_column_rows(lines: list[str], rows: list[int], end: int) -> bool:
     """Rows of a two-column table stand alone: the block ends at a blank line, and no row goes
     on with the row above (a first cell "(flame)" or a cell starting in lower case is a
-    wrapped legend, read as running text)."""
+    wrapped legend, read as running text, as is one with lines set in under a row)."""
     if end < len(lines) and lines[end].strip():
         return False
     for r in rows:
