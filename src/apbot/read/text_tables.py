@@ -106,12 +106,13 @@ def _space_tables(
 def _two_column_head(cells: tuple[str, ...]) -> bool:
     """Two short column names ("Key   What it does", "Roast   Suggested temperature"): no
     sentence, no item of a key legend ("TEMP   Sets the temperature." ends in a stop; a
-    definition starts in lower case), no number (a row of a display legend)."""
-    return all(
+    definition starts in lower case), no number in the first (a row of a display legend; a
+    model's name may head the second column: "Item   TL-70")."""
+    return not re.search(r"\d", cells[0]) and all(  # ("SET 60°C   Set temperature": a row)
         len(cell) <= 25
         and len(cell.split()) <= 4
         and re.match(r"[A-Z]", cell)
-        and not re.search(r"[.!?:;,]$|\d", cell)  # ("SET 60°C   Set temperature": a row)
+        and not re.search(r"[.!?:;,]$", cell)
         for cell in cells
     )
 
