@@ -148,3 +148,25 @@ OFF              Fan asleep
 """
     for text in (set_in, shown):
         assert not any(u.header for u in parse_manual(text).units), text
+
+
+SISTER = """\
+# Brisa WM-6 washer
+
+## Delay
+
+Press DELAY to finish the wash later: 2 to 24 hours, one hour a press.
+Model WM-6 Plus only: a TURBO key sits beside DELAY. TURBO selects AUTO, 1, 2 or 3, and each
+press adds 5 minutes, from 10 to 60.
+
+## Starting
+
+Press START.
+"""
+
+
+def test_a_sister_model_s_paragraph_lends_no_values_to_a_key_near_it() -> None:
+    model = read_manual(SISTER, ["press_power", "press_delay", "press_start"]).model
+    delay = model.variables["delay"]
+    assert isinstance(delay, NumericVariable) and delay.ranges is not None
+    assert (delay.ranges[0][0], delay.ranges[-1][1]) == (2, 24)

@@ -211,6 +211,30 @@ def surroundings(text: str) -> bool:
     return bool(_SURROUNDINGS_RE.search(text))
 
 
+# "Model XY-300 only:", "ZR-2000W and ZR-2100 only —": a lead naming models by number
+_OTHER_MODEL_RE = re.compile(
+    r"^(?:(?:the\s+)?models?\s+)?(?=[^:.]{0,40}?\d)[^:.]{1,40}?\bonly\s*[:—–]", re.IGNORECASE
+)
+
+
+def other_model(units: list[Unit], i: int) -> bool:
+    """A sentence of a paragraph led by "Model XY-300 only:" (a sister model of the range):
+    what it says about keys and values is not about this appliance's other keys."""
+    k = i
+    while k >= 0:
+        unit = units[k]
+        if unit.cells:
+            return False
+        if _OTHER_MODEL_RE.match(unit.text):
+            return True
+        if k == 0 or unit.bullet or units[k - 1].heading != unit.heading:
+            return False
+        if units[k - 1].line < unit.line - 1 or i - k >= 4:
+            return False  # a blank line before it: another paragraph
+        k -= 1
+    return False
+
+
 def is_wait(text: str) -> bool:
     """A sentence telling the user to wait ("3. Leave for one to two hours, then …"): its
     times are a wait, not the limits of a setting named nearby."""
