@@ -170,3 +170,42 @@ def test_a_sister_model_s_paragraph_lends_no_values_to_a_key_near_it() -> None:
     delay = model.variables["delay"]
     assert isinstance(delay, NumericVariable) and delay.ranges is not None
     assert (delay.ranges[0][0], delay.ranges[-1][1]) == (2, 24)
+
+
+PAGED = """\
+HEARTH HB-9 STEAM OVEN
+Thank you for choosing the HB-9. It steams, bakes and grills.
+
+- 1 -
+
+HEARTH HB-9   Operating guide
+KEYS ON THE PANEL
+The panel is on the door, above the handle.
+[ window ]
+
+- 2 -
+
+HEARTH HB-9   Operating guide
+
+[ display ]
+MODE        ( TEMP dial )        START
+CLOCK                            STOP
+MODE       Steps through STEAM, BAKE and GRILL.
+CLOCK      Sets the time of day.
+
+- 3 -
+
+HEARTH HB-9   Operating guide
+CARE
+Wipe the door with a damp cloth.
+
+- 4 -
+"""
+
+
+def test_a_short_line_after_a_page_break_is_no_caption_over_a_table() -> None:
+    # a page break passed over leaves a blank line: "[ display ]" goes on from the page
+    # before, so the panel drawing and the legend under it are no table
+    units = parse_manual(PAGED).units
+    assert not any(u.header for u in units)
+    assert any(u.text.startswith("MODE") and "Steps through" in u.text for u in units)

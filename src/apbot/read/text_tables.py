@@ -26,11 +26,12 @@ def _cells(line: str) -> tuple[str, ...]:
     return tuple(c for c in re.split(r"\s{2,}(?![,;])|\t+", _strip_markup(line).strip()) if c)
 
 
-def _caption(lines: list[str], k: int) -> bool:
+def _caption(lines: list[str], k: int, breaks: set[int] | None = None) -> bool:
     """A short line standing alone above a table ("Steam chart (continued overleaf)"): a
-    caption, which no table header goes on from as a sentence would."""
+    caption, which no table header goes on from as a sentence would. A blank line of a page
+    break passed over (``breaks``) does not set it apart: the text runs on across the page."""
     line = lines[k].strip()
-    alone = k == 0 or not lines[k - 1].strip()
+    alone = k == 0 or (not lines[k - 1].strip() and k - 1 not in (breaks or set()))
     return alone and len(line) <= 60 and len(_cells(line)) == 1 and not line.endswith(",")
 
 
@@ -55,7 +56,7 @@ def _space_tables(
             and not re.search(r"[.:!?]$", before)
             and not before.isupper()
             and not before.startswith("#")  # a Markdown heading ends what came before
-            and not _caption(lines, i - 1)
+            and not _caption(lines, i - 1, breaks)
         ):
             i += 1  # the line goes on with a sentence from the line before: not a table header
             continue
