@@ -209,3 +209,16 @@ def test_a_short_line_after_a_page_break_is_no_caption_over_a_table() -> None:
     units = parse_manual(PAGED).units
     assert not any(u.header for u in units)
     assert any(u.text.startswith("MODE") and "Steps through" in u.text for u in units)
+
+
+def test_a_two_column_table_whose_cells_start_in_lower_case_is_still_a_table() -> None:
+    text = """\
+The hold time is shown in minutes.
+
+Shown    Hold time
+--       no hold (the factory setting)
+30       half an hour
+60       one hour
+"""
+    rows = [u for u in parse_manual(text).units if u.header == ("Shown", "Hold time")]
+    assert [u.cells[0] for u in rows] == ["--", "30", "60"]

@@ -120,15 +120,11 @@ def _two_column_head(cells: tuple[str, ...]) -> bool:
 
 def _two_column_rows(lines: list[str], rows: list[int], end: int) -> bool:
     """Rows of a two-column table stand alone: the block ends at a blank line, and no row goes
-    on with the row above (a first cell "(flame)" or a cell starting in lower case is a
-    wrapped legend, read as running text, as is one with lines set in under a row)."""
+    on with the row above (a first cell "(flame)" or one in lower case is a wrapped legend,
+    read as running text, as is one with lines set in under a row)."""
     if end < len(lines) and lines[end].strip():
         return False
-    for r in rows:
-        first, second = _cells(lines[r])[:2]
-        if re.match(r"[(a-z]", first) or re.match(r"[a-z]", second):
-            return False
-    return True
+    return not any(re.match(r"[(a-z]", _cells(lines[r])[0]) for r in rows)
 
 
 def _lines_up(head: str, row: str) -> bool:
