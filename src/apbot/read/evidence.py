@@ -42,9 +42,8 @@ from apbot.read.shapes import (
     _without,
     _without_advice,
     is_wait,
-    other_model,
-    surroundings,
 )
+from apbot.read.text_sections import other_model, surroundings
 from apbot.read.value_lists import anchored_lists, bare_list, named_list
 from apbot.read.values import (
     EACH_PRESS_RE,

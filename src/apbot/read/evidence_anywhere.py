@@ -9,8 +9,9 @@ from __future__ import annotations
 import re
 
 from apbot.read.labels import Label, words
-from apbot.read.shapes import _TIMER_WORDS, _fits, _quantity_unit, surroundings
+from apbot.read.shapes import _TIMER_WORDS, _fits, _quantity_unit
 from apbot.read.text import Manual
+from apbot.read.text_sections import surroundings
 from apbot.read.values import Range, find_ranges
 
 
