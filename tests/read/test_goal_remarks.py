@@ -66,3 +66,10 @@ def test_a_setting_after_a_comma_is_still_read() -> None:
     assert read("Brown rice on low heat, start in 3 hours")["delay"] == 3
     assert read("Porridge, I want it ready in 3 hours")["delay"] == 3
     assert read("White rice; it should be done in 2 hours")["delay"] == 2
+
+
+def test_a_remark_in_brackets_or_its_own_sentence_changes_nothing() -> None:
+    base = "Brown rice on low heat for 40 minutes"
+    assert read("Brown rice on low heat (it's my 3rd try) for 40 minutes") == read(base)
+    assert read(base + ". We leave in 2 hours.") == read(base)
+    assert read("Porridge (the small pot) for 20 minutes")["time"] == "00:20:00"

@@ -4,11 +4,11 @@ Users say more than what they want set: "Cook the rice, I'll be back in an hour"
 4 at the table", "… — put the dish on the lower rack". The numbers and times in such a clause
 are about the user's day, not a setting, so the parser drops the clause before it reads.
 
-A clause (after the first; clauses part at a comma, semicolon, colon or dash, or at "and",
-"but", "because" … before a new subject) is a remark when
+A clause (after the first; clauses part at a comma, semicolon, colon, dash, bracket or
+sentence end, or at "and", "but", "because" … before a new subject) is a remark when
 
 * its subject is the user or other people, not the appliance: "I'll", "we are", "my kids",
-  "our guests", "dinner is", "the last one", "it's for", "there are" — and it asks for
+  "our guests", "dinner is", "the last one", "it's for", "it's my", "there are" — and it asks for
   nothing ("want", "need", "please", "set", "start", "make sure", "have it ready" keep it) and
   names none of the model's values; or
 * it tells the user to put something somewhere ("put the dish on the lower rack"): a verb of
@@ -31,12 +31,12 @@ _PEOPLE = (
     r"i|i'm|im|i'll|i've|i'd|i was|we|we're|we'll|we've|we'd|they|they're|they'll|he|she|"
     r"he's|she's|my|our|his|her|their|dinner|lunch|breakfast|supper|tea time|the guests|"
     r"guests|the kids|kids|everyone|nobody|the last (?:one|time|batch|load)|last time|"
-    r"the old one|it's for|it is for|this is for|that's for|this one is for|there are|"
+    r"the old one|(?:it|this|that)(?:'s| is) (?:for|my|our|the first)|this one is for|there are|"
     r"there's|there will be"
 )
 _CONJUNCTIONS = r"and|but|because|since|as|while|though|although|cause"
 _SPLIT = re.compile(
-    rf"\s*(?:[,;]|:\s|\s[-–—]+\s|[–—])\s*|\s+(?:{_CONJUNCTIONS})\s+(?=(?:{_PEOPLE})\b)",
+    rf"\s*(?:[,;()]|[.!?:]\s|\s[-–—]+\s|[–—])\s*|\s+(?:{_CONJUNCTIONS})\s+(?=(?:{_PEOPLE})\b)",
     re.IGNORECASE,
 )
 _SUBJECT = re.compile(rf"(?:(?:{_CONJUNCTIONS})\s+)?(?:{_PEOPLE})\b", re.IGNORECASE)
@@ -66,6 +66,9 @@ def without_remarks(view: Model, instruction: str) -> str:
         if not first and clause and _remark(view, clause):
             pieces.append(text[kept_at:last_end])
             kept_at = end
+            if match and ")" in match[0]:  # "… (it's my first try) for 20 minutes"
+                pieces.append(" ")
+                kept_at = match.end()
         if clause:
             first = False
         last_end = end
@@ -74,7 +77,7 @@ def without_remarks(view: Model, instruction: str) -> str:
     if not pieces:
         return instruction
     pieces.append(text[kept_at:])
-    return "".join(pieces)
+    return "".join(pieces).strip()
 
 
 def _remark(view: Model, clause: str) -> bool:
