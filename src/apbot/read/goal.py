@@ -18,7 +18,9 @@ How it works, in order:
    instruction that opens with a cooking verb sets the running variable to what the model's
    START key sets (in the programme that was asked for); "don't start" sets it off.
 
-The steps live in their own modules: ``goal_spelling`` (rewrites before tokenising),
+Before step 1, ``goal_remarks`` drops the clauses that ask nothing of the appliance ("…, I'll be
+back in an hour", "…, we are 4 at the table"). The steps live in their own modules:
+``goal_spelling`` (rewrites before tokenising),
 ``goal_names`` (1), ``goal_assign`` and ``goal_fit`` (2), ``goal_scales`` (3),
 ``goal_switches`` (4), ``goal_start`` (5), ``goal_twins`` (zones and
 sides); ``goal_view`` is the model as the parser sees it.
@@ -33,6 +35,7 @@ from apbot.read.goal_assign import assign_mentions, distinct, in_weeks
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
 from apbot.read.goal_open import open_entries
+from apbot.read.goal_remarks import without_remarks
 from apbot.read.goal_scales import superlatives
 from apbot.read.goal_spelling import joined_compounds
 from apbot.read.goal_start import power_and_running
@@ -85,7 +88,7 @@ def parse_instruction(
             f"{MAX_INSTRUCTION:,} are read",
         )
     view = model_view(model, manual or "")
-    text = Text.of(joined_compounds(view, str(instruction)))
+    text = Text.of(joined_compounds(view, without_remarks(view, str(instruction))))
     goal: Goal = {}
     claimed: set[int] = set()
     where: dict[str, int] = {}  # the token each setting was read from
