@@ -1,6 +1,7 @@
 """What the manual says about a control: values, ranges, steps, toggles, each with the unit
 it came from (the builder asks once per control and keeps the answer). Second looks at a list
-or table are in evidence_checks.py; a setting's range found anywhere, in evidence_anywhere.py.
+or table are in evidence_checks.py; a setting's range found anywhere, in evidence_anywhere.py;
+whose a sentence, row or list is, in evidence_whose.py.
 """
 
 from __future__ import annotations
@@ -23,6 +24,14 @@ from apbot.read.evidence_checks import (
     lettered_row,
 )
 from apbot.read.evidence_lists import ListReader
+from apbot.read.evidence_whose import (
+    _KEY_HEAD,
+    _fitting_step,
+    _lead,
+    _named_only,
+    _presses_another,
+    _without_own_name,
+)
 from apbot.read.labels import words
 from apbot.read.shapes import (
     _KEYPAD_WORDS,
@@ -361,66 +370,6 @@ class EvidenceReader(ListReader, AnywhereReader):
             ev.values = best if _numeric_items(best) else [v.lower() for v in best]
             self._initial_from_values(ev, tokens)
         return ev
-
-
-def _named_only(item: str, text: str) -> bool:
-    """ "ONLY" printed in capitals as part of a name in capitals ("… → COOL ONLY → …") in a
-    sentence in lower case: the value's own name, not a word saying where a list applies."""
-    m = re.search(rf"(?<!\w){re.escape(item.strip())}(?!\w)", text, re.I)
-    if not m or text.upper() == text:
-        return False
-    return bool(re.search(r"\bONLY\b", m.group(0))) and m.group(0).upper() == m.group(0)
-
-
-def _fitting_step(text: str, tokens: list[str]) -> tuple[float, str] | None:
-    """The step of this setting's unit ("Temperature steps: 5 °C … Time: 0:30 to 24:00 in
-    30-minute steps"): a step in another unit is another setting's, even in the same line."""
-    for piece in [text, *re.split(r"(?<=[.;])\s+", text)]:
-        step = find_step(piece)
-        if step and _fits(step[1], tokens):
-            return step
-    return None
-
-
-def _lead(cells: tuple[str, ...]) -> str:
-    """A row's first cell that names something: a legend's circled or plain number ("④ |
-    PUMP | Changes the speed: LO → MED → HI") only counts the rows."""
-    for cell in cells[:2]:
-        if not re.fullmatch(r"\s*(?:[\u2460-\u2473\u2776-\u277f]|\(?\d{1,2}[.)]?)\s*", cell):
-            return cell
-    return cells[0]
-
-
-_KEY_HEAD = re.compile(r"^\W*(?:keys?|buttons?|controls?|elements?|symbols?)\W*$", re.I)
-_PRESS_VERB = r"\b(?:press|touch|tap|push)(?:es|ing)?\s+(?:and\s+hold\s+)?(?:the\s+)?"
-
-
-def _presses_another(text: str, others: list[str], own: set[str]) -> bool:
-    """The sentence tells to press another key ("Touch + to raise or – to lower the temperature
-    by 5 °C with each touch") and never names this one: its "each press" is that key's."""
-
-    def pressed(labels: list[str] | set[str]) -> bool:
-        names = "|".join(re.escape(x) for x in sorted(labels, key=len, reverse=True) if x)
-        if not names:
-            return False
-        return bool(re.search(rf"{_PRESS_VERB}(?:{names})(?!\w)", text, re.I))
-
-    symbols = [*others, *("+", "-", "–", "▲", "▼")]
-    named = any(re.search(rf"(?<!\w){re.escape(o)}(?!\w)", text, re.I) for o in own if o)
-    return pressed(symbols) and not named  # ("Press WASH, RINSE or SPIN": RINSE's too)
-
-
-def _without_own_name(items: list[str], own: set[str]) -> list[str]:
-    """Values quoted as the display prints them, the key's own name in front of each ("The
-    display reads COLOR 1, COLOR 2 or COLOR 3." for COLOR): the values are what follows it."""
-    for name in own:
-        if not name or len(items) < 2:
-            continue
-        lead = re.compile(rf"^{re.escape(name)}\s+(\S.*)$", re.IGNORECASE)
-        rest = [lead.match(item.strip()) for item in items]
-        if all(rest):
-            return [m.group(1) for m in rest if m]
-    return items
 
 
 def _covers(pieces: list[Range], ranges: list[Range]) -> bool:
