@@ -58,17 +58,16 @@ from apbot.read.values import (
     EACH_PRESS_RE,
     ON_OFF_RE,
     Range,
-    find_arrow_pieces,
     find_bounds,
     find_initial,
     find_ranges,
     find_shown_hmm,
     find_step,
-    find_stepped_pieces,
     find_two_steps,
     seconds,
 )
 from apbot.read.values_pieces import find_amount_pieces
+from apbot.read.values_stepped import find_arrow_pieces, find_stepped_pieces
 
 
 class EvidenceReader(ListReader, AnywhereReader):

@@ -1,0 +1,128 @@
+"""Ranges told in pieces on one line, each piece with its own step, the next starting where the
+last ends: a range-and-step table flattened into text ("0:30 - 12:00 30 minutes 12:00 - 24:00
+1 hour") or an arrow chart ("1 h → … → 12 h one hour per press 12 h → … → 24 h two hours").
+Their own job: chart shapes read whole, apart from the single ranges and steps of values.py.
+"""
+
+from __future__ import annotations
+
+import re
+
+from apbot.read.values import (
+    _DASH,
+    _TIME,
+    NUM,
+    UNIT,
+    Range,
+    is_time_unit,
+    number,
+    seconds,
+    unit_name,
+)
+
+_STEPPED_PIECE_RE = re.compile(  # "0:30 – 12:00  30 minutes": a range, then its step
+    rf"(?<![\d:])({_TIME}){_DASH}({_TIME})(?![\d:])\s*(?:h\b)?\s*(?:by\s+)?"
+    r"(\d+(?:[.,]\d+)?|one|an?)\s*(minutes?|mins?|hours?|hrs?|h)\b",
+    re.IGNORECASE,
+)
+
+
+_DIGITS = r"\d+(?:[.,]\d+)?"
+
+
+_STEPPED_AMOUNT_PIECE_RE = re.compile(  # "1 – 12 h  1 h": a range in a unit, then its step
+    rf"(?<![\w:.])({_DIGITS})\s*(?:{UNIT})?{_DASH}({_DIGITS})\s*({UNIT})\s+"
+    rf"(?:by\s+|in\s+steps\s+of\s+)?({_DIGITS}|one|an?)\s*({UNIT})(?![\w:])",
+    re.IGNORECASE,
+)
+
+
+def find_stepped_pieces(text: str) -> list[Range]:
+    """Two or more ranges, each followed by its step, the next starting where the last ends:
+    clock times in seconds ("Range Step 0:30 - 12:00 30 minutes 12:00 - 24:00 1 hour") or
+    amounts in their unit ("Range Step 1 – 12 h 1 h 12 – 24 h 2 h"); else []."""
+    pieces = _stepped_clock_pieces(text)
+    return pieces or _stepped_amount_pieces(text)
+
+
+def _stepped_clock_pieces(text: str) -> list[Range]:
+    pieces: list[Range] = []
+    for m in _STEPPED_PIECE_RE.finditer(text):
+        low, high = _hmm(m.group(1)), _hmm(m.group(2))
+        amount = 1.0 if m.group(3).lower() in ("one", "a", "an") else number(m.group(3))
+        if amount is None or not low < high or (pieces and pieces[-1].high != low):
+            return pieces if len(pieces) >= 2 else []
+        pieces.append(Range(low, high, "s", seconds(amount, unit_name(m.group(4)))))
+    return pieces if len(pieces) >= 2 else []
+
+
+def _stepped_amount_pieces(text: str) -> list[Range]:
+    """A table of ranges and steps in one unit flattened into a line; the step may be told in
+    a smaller time unit ("0.5 – 10 h 30 min") and is then converted to the range's."""
+    pieces: list[Range] = []
+    for m in _STEPPED_AMOUNT_PIECE_RE.finditer(text):
+        low, high, unit = number(m.group(1)), number(m.group(2)), unit_name(m.group(3))
+        word = m.group(4).lower()
+        amount = 1.0 if word in ("one", "a", "an") else number(m.group(4))
+        step_unit = unit_name(m.group(5))
+        if amount is not None and step_unit != unit:
+            both_times = is_time_unit(step_unit) and is_time_unit(unit)
+            amount = seconds(amount, step_unit) / seconds(1, unit) if both_times else None
+        joined = not pieces or (pieces[-1].high == low and pieces[-1].unit == unit)
+        if low is None or high is None or amount is None or not low < high or not joined:
+            break
+        pieces.append(Range(low, high, unit, amount))
+    return pieces if len(pieces) >= 2 else []
+
+
+_ARROW = r"\s*(?:[-─—–=]*[►→>])\s*"
+
+
+_END = r"(\d{1,2}:\d{2}|\d+(?:[.,]\d+)?\s*(?:h|hrs?|hours?|min|mins|minutes?|s|secs?|seconds?)\b)"
+
+
+_ARROW_PIECE_RE = re.compile(  # "1 h → 2 h → … → 12 h   one hour per press", "0:00 ──► 1:00  10 s"
+    rf"(?<![\d:.]){_END}{_ARROW}(?:(?:…|\.\.\.|{_END}){_ARROW})*{_END}\s+(?:by\s+)?"
+    rf"({NUM}|an?)\s*(hours?|hrs?|h|minutes?|mins?|min|seconds?|secs?|s)\b",
+    re.IGNORECASE,
+)
+
+
+def _arrow_end(text: str, seconds_clock: bool) -> float | None:
+    """An end of an arrow piece in seconds: "12 h", "30 min", or a clock "10:00" (h:mm, or
+    mm:ss when the chart's steps are seconds or its first figure passes 24)."""
+    clock = re.fullmatch(r"(\d{1,2}):(\d{2})", text.strip())
+    if clock:
+        big, small = int(clock.group(1)), int(clock.group(2))
+        return big * 60 + small if seconds_clock else big * 3600 + small * 60
+    m = re.fullmatch(r"(\d+(?:[.,]\d+)?)\s*(\w+)", text.strip())
+    value = number(m.group(1)) if m else None
+    return None if m is None or value is None else seconds(value, unit_name(m.group(2)))
+
+
+def find_arrow_pieces(text: str) -> list[Range]:
+    """Two or more pieces of a time drawn as arrows, each with its step, the next starting
+    where the last ends ("1 h → 2 h → … → 12 h one hour per press 12 h → 14 h → … → 24 h two
+    hours per press", "0:00 ──► 1:00 10 seconds 1:00 ──► 10:00 30 seconds"), in seconds."""
+    found = list(_ARROW_PIECE_RE.finditer(text))
+    if len(found) < 2:
+        return []
+    clocks = [m.group(1) for m in found] + [m.group(3) for m in found]
+    by_seconds = any(unit_name(m.group(5)) == "s" for m in found) or any(
+        ":" in c and int(c.split(":")[0]) > 24 for c in clocks
+    )
+    pieces: list[Range] = []
+    for m in found:
+        low, high = _arrow_end(m.group(1), by_seconds), _arrow_end(m.group(3), by_seconds)
+        amount = 1.0 if m.group(4).lower() in ("a", "an") else number(m.group(4))
+        if low is None or high is None or amount is None or not low < high:
+            break
+        if pieces and pieces[-1].high != low:
+            break
+        pieces.append(Range(low, high, "s", seconds(amount, unit_name(m.group(5)))))
+    return pieces if len(pieces) >= 2 else []
+
+
+def _hmm(text: str) -> int:
+    h, m = text.split(":")
+    return int(h) * 3600 + int(m) * 60
