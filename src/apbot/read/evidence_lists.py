@@ -1,5 +1,6 @@
 """Where a control's values are written: its context (the units naming it and what follows),
-and the lists, legends, table columns and runs of numbers in them, each with a priority."""
+and the lists, legends, table columns and runs of numbers in them, each with a priority. Which
+table column holds the values is in evidence_tables.py."""
 
 from __future__ import annotations
 
@@ -7,10 +8,9 @@ import re
 
 from apbot.model.values import NUMBER_WORDS
 from apbot.read.actions import ActionInfo
+from apbot.read.evidence_tables import TableReader
 from apbot.read.labels import Label, words
 from apbot.read.shapes import (
-    CHOICE_WORDS,
-    GROUP_NOUNS,
     ORDER_RE,
     PRESSES_RE,
     QUANTITY_FAMILIES,
@@ -42,10 +42,6 @@ _KEY_WORDS = frozenset({"key", "keys", "button", "buttons", "number", "numbers"}
 _PRESS_WORDS = frozenset({"press", "pressed", "touch", "touched", "enter", "entered", "input"})
 
 
-# the head of a chart's first column numbering its rows ("No.", "Nr.", "#", "Prog. no.")
-_NUMBER_HEAD_RE = re.compile(r"^\W*(?:(?:prog\w*\.?\s*)?(?:no|nr|n°|number)\.?|#)\W*$", re.I)
-
-
 _COUNTED_RE = re.compile(  # "has seven positions", "with 12 settings" (read by ``number``)
     r"\b(?:has|have|with)\s+(\d{1,2}|"
     + "|".join(w for w, n in NUMBER_WORDS.items() if n < 20 and w not in ("a", "an", "single"))
@@ -68,7 +64,7 @@ def _keyed_examples(units: list[Unit], i: int) -> bool:
     )
 
 
-class ListReader:
+class ListReader(TableReader):
     """The manual's units about the controls, and the value lists they hold."""
 
     manual: Manual
@@ -341,96 +337,6 @@ class ListReader:
             if k > start:
                 end = min(end, k)
         return text[start:end]
-
-    def _own_column(self, i: int, tokens: list[str]) -> int:
-        """Which column of the table after unit ``i`` is the key's: one headed by the key's
-        printed name when the header is a row of key names ("| TEMP. | SPIN | SOIL |"), else
-        the first."""
-        units = self.manual.units
-        k = i + 1
-        if k >= len(units) or not units[k].cells or units[k].header:
-            return 0
-        header = [c.strip(" *.").upper() for c in units[k].cells]
-        keys = {lab.text.strip(" .").upper() for lab in self.labels.values() if lab.text}
-        own = {self.labels[t].text.strip(" .").upper() for t in tokens if t in self.labels}
-        if len(header) >= 2 and sum(h in keys for h in header) >= 2:
-            for index, cell in enumerate(header):
-                if cell in own:
-                    return index
-        return 0
-
-    def _header_names(self, i: int, tokens: list[str]) -> bool:
-        """Whether the header of the table after unit ``i`` names the key's word."""
-        units = self.manual.units
-        k = i + 1
-        if k >= len(units) or not units[k].cells:
-            return False
-        header = units[k].header or units[k].cells
-        tw = {w[:5] for t in tokens for w in words(t.replace("_", " ")) if len(w) >= 3}
-        if any(t in self.labels for t in tokens):
-            tw |= {w[:5] for t in tokens if t in self.labels for w in words(self.labels[t].text)}
-        return any(w[:5] in tw for cell in header for w in words(cell) if len(w) >= 3)
-
-    _table_at: int | None = None
-
-    def _table_column(self, tokens: list[str], numbered: bool = True) -> list[str] | None:
-        """The first column of a table headed by the control's own word (a programme table);
-        with ``numbered``, also a numbered chart's programme column."""
-        tw = {w for t in tokens for w in words(t.replace("_", " ")) if len(w) >= 4}
-        tw |= {
-            w for t in tokens if t in self.labels for w in words(self.labels[t].text) if len(w) >= 4
-        }
-        if not tw:
-            return None
-        units = self.manual.units
-        choice = bool(tw & CHOICE_WORDS)
-        for i, unit in enumerate(units):
-            if unit.cells and not unit.header:  # a header row
-                chart = self._numbered_chart(i, tw, choice) if numbered else None
-                if chart:
-                    return chart
-                if any(re.search(r"\d", c) for c in unit.cells[1:]):
-                    continue  # "Power supply | 230 V": a row of data read as a header
-                hw = words(unit.cells[0])
-                if hw and any(h[:6] == w[:6] for h in hw for w in tw):
-                    column = _next_table_column(units, i - 1)
-                    if column and self._key_legend([unit.cells[0], *column]):
-                        continue  # "[ POPCORN ] [ TIME COOK ]" over "[ CLOCK ]": keys drawn
-                    if column:
-                        self._table_at = i
-                        return column
-        return None
-
-    def _numbered_chart(self, i: int, tw: set[str], choice: bool) -> list[str] | None:
-        """A chart whose header at unit ``i`` starts with a number column ("| No. | Programme |
-        For | Time |", rows "| 1 | BASIC | …"): its second column, when headed by the key's own
-        word, or by any programme word for a key that chooses a programme (MENU, PROG)."""
-        units = self.manual.units
-        cells = units[i].cells
-        if len(cells) < 3 or not _NUMBER_HEAD_RE.match(cells[0]) or re.search(r"\d", cells[1]):
-            return None
-        hw = words(cells[1])
-        if not any(h[:6] == w[:6] for h in hw for w in tw) and not (
-            choice and set(hw) & set(GROUP_NOUNS)
-        ):
-            return None
-        rows = [u for u in units[i + 1 : i + 4] if u.header == cells]
-        if len(rows) < 2 or not all(re.fullmatch(r"\d{1,2}[.)]?", r.cells[0]) for r in rows):
-            return None
-        column = _next_table_column(units, i - 1, 1)
-        if column and self._key_legend(column):
-            return None  # "| 1 | MENU | … |", "| 2 | TIMER | … |": a legend of the panel's keys
-        if column:
-            self._table_at = i
-        return column or None
-
-    def _key_legend(self, cells: list[str]) -> bool:
-        """Whether most cells of a column are the panel's own keys (printed labels or action
-        names): a key legend says what each key does, it lists no values of one key."""
-        keys = {lab.text.strip(" .").upper() for lab in self.labels.values() if lab.text}
-        keys |= {t.upper().replace("_", " ") for t in self.labels}
-        hits = sum(c.strip(" *.[]").upper() in keys for c in cells)
-        return hits >= 2 and 2 * hits >= len(cells)
 
     def _initial_from_values(self, ev: Evidence, tokens: list[str]) -> None:
         if ev.initial is not None or not ev.values:
