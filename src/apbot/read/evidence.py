@@ -42,6 +42,8 @@ from apbot.read.shapes import (
     _without,
     _without_advice,
     is_wait,
+    other_model,
+    surroundings,
 )
 from apbot.read.value_lists import anchored_lists, bare_list, named_list
 from apbot.read.values import (
@@ -108,6 +110,8 @@ class EvidenceReader(ListReader, AnywhereReader):
             unit = units[i]
             if i in elsewhere and i not in mentions and not unit.cells:
                 continue  # a sentence about another key says nothing about this one
+            if i not in mentions and other_model(units, i):
+                continue  # "Model XY-300 only: …": another model's keys and their values
             if i not in mentions and any(named_list(text, w) for w in other_words):
                 continue  # "The menu names printed on the panel: …" near KEEP WARM: MENU's
             if unit.cells and i not in mentions and _cell_key(_lead(unit.cells)) in other_keys:
@@ -149,6 +153,7 @@ class EvidenceReader(ListReader, AnywhereReader):
                 if prio > best_prio:
                     best, best_prio, ev.values_at = items, prio, i
             waiting = i not in mentions and is_wait(text)  # "Leave for one to two hours."
+            waiting = waiting or surroundings(text)  # "at an ambient 5 to 35 °C": the room's
             ranges = [
                 r
                 for r in find_ranges("" if waiting else _without_advice(unit))

@@ -196,6 +196,45 @@ _WAIT_RE = re.compile(  # "Leave for one to two hours", "let it stand for 5–10
 )
 
 
+_SURROUNDINGS_RE = re.compile(
+    r"\b(?:ambient|surroundings|frost-free)\b|\bstorage\s+(?:temperature|conditions)\b"
+    r"|\b(?:store|stored|keep|kept)\s+(?:(?:the|this|your)\s+)?(?:appliance|unit|machine|device"
+    r"|product)\b",
+    re.IGNORECASE,
+)
+
+
+def surroundings(text: str) -> bool:
+    """A sentence about where the appliance stands or is kept ("an ambient temperature
+    between 5 °C and 35 °C", "store the appliance frost-free, 0 to 40 °C"): its ranges are
+    the room's, not a setting's."""
+    return bool(_SURROUNDINGS_RE.search(text))
+
+
+# "Model XY-300 only:", "ZR-2000W and ZR-2100 only —": a lead naming models by number
+_OTHER_MODEL_RE = re.compile(
+    r"^(?:(?:the\s+)?models?\s+)?(?=[^:.]{0,40}?\d)[^:.]{1,40}?\bonly\s*[:—–]", re.IGNORECASE
+)
+
+
+def other_model(units: list[Unit], i: int) -> bool:
+    """A sentence of a paragraph led by "Model XY-300 only:" (a sister model of the range):
+    what it says about keys and values is not about this appliance's other keys."""
+    k = i
+    while k >= 0:
+        unit = units[k]
+        if unit.cells:
+            return False
+        if _OTHER_MODEL_RE.match(unit.text):
+            return True
+        if k == 0 or unit.bullet or units[k - 1].heading != unit.heading:
+            return False
+        if units[k - 1].line < unit.line - 1 or i - k >= 4:
+            return False  # a blank line before it: another paragraph
+        k -= 1
+    return False
+
+
 def is_wait(text: str) -> bool:
     """A sentence telling the user to wait ("3. Leave for one to two hours, then …"): its
     times are a wait, not the limits of a setting named nearby."""
