@@ -11,6 +11,7 @@ from typing import Any
 from apbot.read.actions import ActionInfo
 from apbot.read.labels import words
 from apbot.read.text import Unit
+from apbot.read.text_sections import works_key
 from apbot.read.values import (
     Range,
     find_ranges,
@@ -207,13 +208,17 @@ _SURROUNDINGS_RE = re.compile(
 def surroundings(text: str) -> bool:
     """A sentence about where the appliance stands or is kept ("an ambient temperature
     between 5 °C and 35 °C", "store the appliance frost-free, 0 to 40 °C"): its ranges are
-    the room's, not a setting's."""
-    return bool(_SURROUNDINGS_RE.search(text))
+    the room's, not a setting's. A sentence working a key ("press WARM to keep the appliance
+    warm for 1 to 12 hours") is about that key's setting."""
+    return bool(_SURROUNDINGS_RE.search(text)) and not works_key(text)
 
 
-# "Model XY-300 only:", "ZR-2000W and ZR-2100 only —": a lead naming models by number
+# "Model XY-300 only:", "ZR-2000W and ZR-2100 only —": a lead naming models, by the word
+# "model" or by a type number (letters and digits joined by a hyphen); not "Cottons 40 only:"
 _OTHER_MODEL_RE = re.compile(
-    r"^(?:(?:the\s+)?models?\s+)?(?=[^:.]{0,40}?\d)[^:.]{1,40}?\bonly\s*[:—–]", re.IGNORECASE
+    r"^(?=[^:.]{0,40}?(?:\bmodels?\b|\b[A-Za-z]+-\d+[A-Za-z]*\b|\b\d+-[A-Za-z]+\b))"
+    r"[^:.]{1,40}?\bonly\s*[:—–]",
+    re.IGNORECASE,
 )
 
 
