@@ -68,6 +68,21 @@ def test_a_safety_chapter_ends_at_a_numbered_heading_the_parser_ran_on_into() ->
     assert any("LOW, MID and HIGH" in t for t in texts), texts
 
 
+def test_a_key_worked_on_other_models_keeps_no_safety_chapter() -> None:
+    text = """\
+## Safety
+
+Unplug the fryer before cleaning. On model QF-20 press RESET after a power cut.
+
+## Frying
+
+Press HEAT to choose 160 to 200 °C.
+"""
+    texts = [u.text for u in parse_manual(text).units]
+    assert not any("power cut" in t for t in texts), texts
+    assert any("160 to 200" in t for t in texts), texts
+
+
 def test_headings_of_settings_are_no_boilerplate_chapters() -> None:
     for heading in ("Demonstration mode", "Safety mode", "Intended use and first use", "CAUTION"):
         assert not boilerplate_heading(heading), heading

@@ -118,6 +118,7 @@ _WORK_KEY_RE = re.compile(
     r"(?:\s+(?:and|then|down|in|or|the|briefly|again|once|twice)){0,4}"
     r"\s+[\"'“]?(?!(?:OFF|ON|NOT|NEVER)\b)[A-Z][A-Z0-9+/&-]+\b"
 )
+_MODELS_RE = re.compile(r"\bmodels?\s+[A-Z]{1,4}-?\d{2,}", re.IGNORECASE)
 _NEGATED_RE = re.compile(r"\b(?:never|not|don't|avoid)\b", re.IGNORECASE)
 _KEY_RE = re.compile(r"\b[A-Z][A-Z0-9+/&-]+\b")
 _RANGE_UNIT_RE = re.compile(
@@ -144,6 +145,8 @@ def operating(text: str) -> bool:
     with a unit ("TEMP sets 100 to 230 °C"): a setting, whatever heading it stands under."""
     if sum(c.islower() for c in text) < len(text) // 4:
         return False  # a line in capitals: a shouted warning or a heading, not an instruction
+    if _MODELS_RE.search(text):
+        return False  # "on models AX-400 and AX-450 press RESET": other models of the range
     if works_key(text):
         return True
     return bool(_RANGE_UNIT_RE.search(text) and _KEY_RE.search(text))
