@@ -70,8 +70,7 @@ BOILERPLATE_FIRST = """\
 ## IMPORTANT SAFEGUARDS
 
 - Never press and hold POWER while you move the oven.
-- A shop may leave it in demonstration mode: press MODE to switch demonstration mode on or
-  off.
+- Do not press MODE while a shop shows the oven in demonstration mode.
 
 ## Using the oven
 
@@ -81,7 +80,7 @@ Press START.
 
 ## 9. Warranty and service
 
-Hold MODE for 5 seconds to switch the service display on or off.
+The guarantee runs two years; our service centre repairs it, 5 to 10 days.
 """
 
 

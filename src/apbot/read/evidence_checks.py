@@ -101,11 +101,17 @@ _BETWEEN_RE = re.compile(
     r"[^.;]{0,30}\b(?:markings?|marks|numbers|figures)\b",
     re.I,
 )
-# "above 10 the knob clicks at each small mark", "small marks between the printed numbers"
+# "above 10 the knob clicks at each small mark", "small marks between the printed numbers",
+# "between two numbers it also clicks at a small mark"; not one mark named ("turn it back
+# until it stops at the small mark beside 0") nor marks drawn ("settings shown by short lines")
+_SMALL = r"(?:small|intermediate|minor|short)"
 _SMALL_MARK_RE = re.compile(
-    r"\b(?:clicks?|detents?|stops?|notch(?:es)?|settings?)\b[^.;]{0,40}"
-    r"\b(?:small|intermediate|minor|short)\s+(?:marks?|ticks?|lines?|divisions?)\b"
-    r"|\b(?:small|intermediate|minor|short)\s+(?:marks?|ticks?|lines?)\s+between\b",
+    r"\b(?:clicks?|detents?|stops?|notch(?:es)?|settings?|engages?)\b[^.;]{0,40}"
+    rf"\b(?:at|on|into)\s+(?:(?:each|every)\s+{_SMALL}\s+(?:mark|tick|line|division)\b"
+    rf"|(?:the\s+|all\s+)?{_SMALL}\s+(?:marks|ticks|lines|divisions)\b)"
+    rf"|\b{_SMALL}\s+(?:marks|ticks|lines)\s+between\b"
+    rf"|\bbetween\b[^.;]{{0,60}}\b(?:clicks?|stops?|detents?)\b[^.;]{{0,30}}\b{_SMALL}\s+"
+    r"(?:mark|tick|line)",
     re.I,
 )
 

@@ -16,6 +16,8 @@ from __future__ import annotations
 import re
 from typing import TYPE_CHECKING
 
+from apbot.read.text_pages import _plain_heading
+
 if TYPE_CHECKING:  # (text.py imports this module)
     from apbot.read.text import Unit
 
@@ -46,7 +48,6 @@ _CORE = frozenset(
         "licenses",
         "open-source",
         "trademarks",
-        "demonstration",
         "intended",
         "about",
         "conventions",
@@ -79,9 +80,6 @@ _FILLER = frozenset(
         "symbol",
         "explanation",
         "electrical",
-        "energy",
-        "saving",
-        "contents",
         "package",
         "eu",
         "ce",
@@ -89,13 +87,6 @@ _FILLER = frozenset(
         "fcc",
         "notice",
         "notices",
-        "software",
-        "source",
-        "open",
-        "mode",
-        "shop",
-        "shops",
-        "only",
         "this",
         "manual",
         "read",
@@ -105,10 +96,115 @@ _FILLER = frozenset(
 )
 
 
+# the label of a warning box set inside any chapter ("WARNING", "Caution!", "Important note")
+_BOX_WORDS = frozenset(
+    [
+        "warning",
+        "caution",
+        "danger",
+        "important",
+        "note",
+        "notes",
+        "notice",
+        "attention",
+        "tip",
+        "tips",
+        "hint",
+        "hints",
+    ]
+)
+# a key a sentence tells the user to work ("hold LOCK for 3 seconds", "press START/STOP")
+_WORK_KEY_RE = re.compile(
+    r"\b(?:press|presses|pressing|hold|holding|turn|turning|tap|touch|push|rotate|select)\b"
+    r"(?:\s+(?:and|then|down|in|or|the|briefly|again|once|twice)){0,4}"
+    r"\s+[\"'“]?(?!(?:OFF|ON|NOT|NEVER)\b)[A-Z][A-Z0-9+/&-]+\b"
+)
+_MODELS_RE = re.compile(r"\bmodels?\s+[A-Z]{1,4}-?\d{2,}", re.IGNORECASE)
+_NEGATED_RE = re.compile(r"\b(?:never|not|don't|avoid)\b", re.IGNORECASE)
+_KEY_RE = re.compile(r"\b[A-Z][A-Z0-9+/&-]+\b")
+_RANGE_UNIT_RE = re.compile(
+    r"\d+(?:[.,]\d+)?\s*(?:°\s*[CF]\s*)?(?:to|-|–|—|…|\.\.\.)\s*\d+(?:[.,]\d+)?\s*"
+    r"(?:°\s*[CF]|%|min|minutes?|hours?|h|seconds?|s|rpm|W|kW|ml|l|g)\b"
+)
+
+
+def box_label(heading: str) -> bool:
+    """A heading made of warning-box words alone ("CAUTION", "Important note"): the label of a
+    box set inside whatever chapter it stands in, never a chapter of its own."""
+    words = re.findall(r"[a-z][a-z'-]*", heading.lower())
+    return bool(words) and all(w in _BOX_WORDS for w in words)
+
+
+def works_key(text: str) -> bool:
+    """A sentence telling the user to work a panel key ("hold LOCK for 3 seconds"), not one
+    warning against it ("never press POWER while moving it")."""
+    return bool(_WORK_KEY_RE.search(text)) and not _NEGATED_RE.search(text)
+
+
+def operating(text: str) -> bool:
+    """A sentence that works a panel key ("hold LOCK for 3 seconds") or gives a key a range
+    with a unit ("TEMP sets 100 to 230 °C"): a setting, whatever heading it stands under."""
+    if sum(c.islower() for c in text) < len(text) // 4:
+        return False  # a line in capitals: a shouted warning or a heading, not an instruction
+    if _MODELS_RE.search(text):
+        return False  # "on models AX-400 and AX-450 press RESET": other models of the range
+    if works_key(text):
+        return True
+    return bool(_RANGE_UNIT_RE.search(text) and _KEY_RE.search(text))
+
+
+def drop_boilerplate(units: list[Unit], original: list[str]) -> list[Unit]:
+    """The units without the chapters that are boilerplate. A chapter runs from its heading to
+    the next heading-like line (one the parser joined into a paragraph counts too), warning
+    boxes inside it belonging to it; it is dropped only when its heading names a boilerplate
+    chapter and none of its sentences works a key or gives a key a range."""
+    chapters: list[tuple[str, list[Unit]]] = []
+    always: set[int] = set()
+    previous = None
+    for k, unit in enumerate(units):
+        title = None
+        if previous is None or unit.heading != previous.heading:
+            title = unit.heading
+        else:
+            title = _run_in_heading(unit, units[k + 1].line if k + 1 < len(units) else 0, original)
+            if title is not None and not unit.text.startswith(title):
+                always.add(id(unit))  # text of the chapter before the heading runs in with it
+        previous = unit
+        if title is not None and not (chapters and box_label(title)):
+            chapters.append((title, []))
+        if not chapters:
+            chapters.append(("", []))
+        chapters[-1][1].append(unit)
+    kept: list[Unit] = []
+    for title, members in chapters:
+        if boilerplate_heading(title) and not any(operating(u.text) for u in members):
+            kept.extend(u for u in members if id(u) in always)
+            continue
+        kept.extend(members)
+    return kept
+
+
+def _run_in_heading(unit: Unit, next_line: int, original: list[str]) -> str | None:
+    """A heading-like line the parser ran into this unit ("3 INSTALLATION" after a page
+    break): the unit starts a new chapter (and is kept whole when text of the chapter before
+    runs in with the heading)."""
+    last = max(unit.line, min(next_line, unit.line + 8))
+    for number in range(unit.line, last + 1):
+        if not 0 < number <= len(original):
+            break
+        line = original[number - 1].strip().lstrip("#").strip()
+        if line and line != unit.text and line in unit.text and _plain_heading(line):
+            return line
+    return None
+
+
 def boilerplate_heading(heading: str) -> bool:
     """A heading whose words are all boilerplate words, one of them a core word ("IMPORTANT
-    SAFEGUARDS", "11 Disposal and guarantee")."""
+    SAFEGUARDS", "11 Disposal and guarantee"); a warning box's label alone ("CAUTION") is not a
+    chapter, and a chapter on first use is about operating ("Intended use and first use")."""
     words = re.findall(r"[a-z][a-z'-]*", heading.lower().replace("&", " and "))
+    if box_label(heading) or re.search(r"\bfirst\s+(?:use|time|operation)", heading.lower()):
+        return False
     return (
         bool(words)
         and any(w in _CORE for w in words)
@@ -127,13 +223,17 @@ _SURROUNDINGS_RE = re.compile(
 def surroundings(text: str) -> bool:
     """A sentence about where the appliance stands or is kept ("an ambient temperature
     between 5 °C and 35 °C", "store the appliance frost-free, 0 to 40 °C"): its ranges are
-    the room's, not a setting's."""
-    return bool(_SURROUNDINGS_RE.search(text))
+    the room's, not a setting's. A sentence working a key ("press WARM to keep the appliance
+    warm for 1 to 12 hours") is about that key's setting."""
+    return bool(_SURROUNDINGS_RE.search(text)) and not works_key(text)
 
 
-# "Model XY-300 only:", "ZR-2000W and ZR-2100 only —": a lead naming models by number
+# "Model XY-300 only:", "ZR-2000W and ZR-2100 only —": a lead naming models, by the word
+# "model" or by a type number (letters and digits joined by a hyphen); not "Cottons 40 only:"
 _OTHER_MODEL_RE = re.compile(
-    r"^(?:(?:the\s+)?models?\s+)?(?=[^:.]{0,40}?\d)[^:.]{1,40}?\bonly\s*[:—–]", re.IGNORECASE
+    r"^(?=[^:.]{0,40}?(?:\bmodels?\b|\b[A-Za-z]+-\d+[A-Za-z]*\b|\b\d+-[A-Za-z]+\b))"
+    r"[^:.]{1,40}?\bonly\s*[:—–]",
+    re.IGNORECASE,
 )
 
 
