@@ -28,6 +28,8 @@ from __future__ import annotations
 
 from typing import Any
 
+from apbot.model.domain import all_values
+from apbot.model.key_roles import adjusted_by, misread_key
 from apbot.model.schema import ApplianceModel, DiscreteVariable, TimeVariable
 from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab
 from apbot.read.goal_view import Goal, Model, own_stems
@@ -57,6 +59,7 @@ def open_entries(
     model = view.model
     roleless = _roleless_keys(model)
     nouns = {w: key for key in roleless for w in _key_words(key)}  # noun -> its key
+    roled = {w: key for key in _roled_keys(model, roleless) for w in _key_words(key)}
     stepping = any(set(key.split("_")) & _STEPPING for key in roleless)
     known = _belief_stems(view)
     placed = set(where.values())  # kept as said for a setting the belief has
@@ -69,6 +72,8 @@ def open_entries(
         if value is None:
             continue
         name = _key_noun(text, mention, nouns, known)
+        if name is None:
+            name = _misread_noun(view, text, mention, value, roled, goal)
         if name is None and stepping and mention.kind == "number":
             name = _level_noun(text, mention, known)
         if name is None and not _of_its_kind(view, mention, text):
@@ -211,6 +216,49 @@ def _chosen_beside(
         if best is None or distance < best[0]:
             best = (distance, name)
     return None if best is None else best[1]
+
+
+def _roled_keys(model: ApplianceModel, roleless: list[str]) -> list[str]:
+    """Keys the belief gives a setting to adjust (not digits, not waiting)."""
+    return [
+        name
+        for name, spec in model.actions.items()
+        if name not in roleless
+        and spec.skill != "wait"
+        and not name.rsplit("_", 1)[-1].isdigit()
+        and adjusted_by(model, name)
+    ]
+
+
+def _misread_noun(
+    view: Model, text: Text, mention: Mention, value: Any, roled: dict[str, str], goal: Goal
+) -> str | None:
+    """ "Defrost 400 g" with a DEFROST key the belief reads as a switch: the quantity beside
+    a key's own noun, which no setting that key adjusts could hold, is likely the key's real
+    setting. Named after the noun, or after the noun and the quantity's kind where the noun
+    names a belief variable already (``defrost_weight``)."""
+    near = _neighbours(text, mention)
+    if text.word(mention.start - 1) == "for":  # "soak for 8 hours"
+        near.append(mention.start - 2)
+    for k in near:
+        noun = _noun_at(text, k, roled)
+        if noun is None or not misread_key(view.model, roled[noun], value):
+            continue
+        if any(_chose(view, name, goal) for name in adjusted_by(view.model, roled[noun])):
+            return None  # "the lower zone at 40 W": the key chose, the quantity is another's
+        if noun not in view.infos and noun not in goal:
+            return noun
+        return f"{noun}_{_KIND_NAMES.get(_kind(mention) or '', 'level')}"
+    return None
+
+
+def _chose(view: Model, name: str, goal: Goal) -> bool:
+    """The goal sets ``name`` to a word of a list (not a switch on or off): the key's role
+    was taken as read."""
+    spec = view.model.variables.get(name)
+    if name not in goal or not isinstance(spec, DiscreteVariable):
+        return False
+    return not {str(v) for v in all_values(spec)} <= _SWITCHED
 
 
 def _roleless_keys(model: ApplianceModel) -> list[str]:
