@@ -39,7 +39,7 @@ from apbot.agent.setting_texts import (
     infer_setting,
     lamp_word,
 )
-from apbot.model.key_roles import misread_key
+from apbot.model.key_roles import adjusted_by, is_switch, misread_key
 from apbot.model.schema import DiscreteVariable
 from apbot.plan.plan import PlannedAction
 
@@ -413,6 +413,9 @@ class VariableFinder:
             and not _is_digit(a)
             and goal_value is not None
             and misread_key(model, a, goal_value)
+            and not any(  # a choice the goal makes with it: the key's role taken as read
+                v in session.context.goal and not is_switch(model, v) for v in adjusted_by(model, a)
+            )
         ]
         named += self.suspect
         rest = [a for a in ranked if not alike(a)]

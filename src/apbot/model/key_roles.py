@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from apbot.model.domain import ValueProblem, normalise, parse_value
+from apbot.model.domain import ValueProblem, all_values, normalise, parse_value
 from apbot.model.schema import ApplianceModel, DiscreteVariable
 
 
@@ -47,3 +47,12 @@ def misread_key(model: ApplianceModel, key: str, value: Any) -> bool:
     adjusts nothing (a plain step, no role: the finder tries those anyway)."""
     adjusted = adjusted_by(model, key)
     return bool(adjusted) and not any(takes(model, name, value) for name in adjusted)
+
+
+def is_switch(model: ApplianceModel, variable: str) -> bool:
+    """A list of ``off`` and ``on`` only: a switch, which a key is read to toggle."""
+    spec = model.variables.get(variable)
+    return isinstance(spec, DiscreteVariable) and {str(v) for v in all_values(spec)} <= {
+        "off",
+        "on",
+    }

@@ -26,10 +26,10 @@ If the finder cannot find it, the agent sets the rest of the goal (``agent/loop.
 
 from __future__ import annotations
 
+from collections.abc import Collection
 from typing import Any
 
-from apbot.model.domain import all_values
-from apbot.model.key_roles import adjusted_by, misread_key
+from apbot.model.key_roles import adjusted_by, is_switch, misread_key
 from apbot.model.schema import ApplianceModel, DiscreteVariable, TimeVariable
 from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab
 from apbot.read.goal_view import Goal, Model, own_stems
@@ -59,7 +59,10 @@ def open_entries(
     model = view.model
     roleless = _roleless_keys(model)
     nouns = {w: key for key in roleless for w in _key_words(key)}  # noun -> its key
-    roled = {w: key for key in _roled_keys(model, roleless) for w in _key_words(key)}
+    roled: dict[str, list[str]] = {}  # noun -> the keys with a role it names
+    for key in _roled_keys(model, roleless):
+        for w in _key_words(key):
+            roled.setdefault(w, []).append(key)
     stepping = any(set(key.split("_")) & _STEPPING for key in roleless)
     known = _belief_stems(view)
     placed = set(where.values())  # kept as said for a setting the belief has
@@ -124,7 +127,7 @@ def _worded(text: Text, nouns: dict[str, str], known: set[str], taken: set[int])
     return found
 
 
-def _noun_at(text: Text, k: int, nouns: dict[str, str]) -> str | None:
+def _noun_at(text: Text, k: int, nouns: Collection[str]) -> str | None:
     """The role-less key noun the word at ``k`` is (``fans`` for FAN), if any."""
     word = text.word(k)
     if not word.isalpha() or word in _NOT_NAMES:
@@ -231,7 +234,7 @@ def _roled_keys(model: ApplianceModel, roleless: list[str]) -> list[str]:
 
 
 def _misread_noun(
-    view: Model, text: Text, mention: Mention, value: Any, roled: dict[str, str], goal: Goal
+    view: Model, text: Text, mention: Mention, value: Any, roled: dict[str, list[str]], goal: Goal
 ) -> str | None:
     """ "Defrost 400 g" with a DEFROST key the belief reads as a switch: the quantity beside
     a key's own noun, which no setting that key adjusts could hold, is likely the key's real
@@ -242,9 +245,12 @@ def _misread_noun(
         near.append(mention.start - 2)
     for k in near:
         noun = _noun_at(text, k, roled)
-        if noun is None or not misread_key(view.model, roled[noun], value):
+        if noun is None:
             continue
-        if any(_chose(view, name, goal) for name in adjusted_by(view.model, roled[noun])):
+        keys = roled[noun]  # every key it names: "zone" for ZONE and for ZONE+TIMER held
+        if not all(misread_key(view.model, key, value) for key in keys):
+            continue
+        if any(_chose(view, name, goal) for key in keys for name in adjusted_by(view.model, key)):
             return None  # "the lower zone at 40 W": the key chose, the quantity is another's
         if noun not in view.infos and noun not in goal:
             return noun
@@ -256,9 +262,7 @@ def _chose(view: Model, name: str, goal: Goal) -> bool:
     """The goal sets ``name`` to a word of a list (not a switch on or off): the key's role
     was taken as read."""
     spec = view.model.variables.get(name)
-    if name not in goal or not isinstance(spec, DiscreteVariable):
-        return False
-    return not {str(v) for v in all_values(spec)} <= _SWITCHED
+    return name in goal and isinstance(spec, DiscreteVariable) and not is_switch(view.model, name)
 
 
 def _roleless_keys(model: ApplianceModel) -> list[str]:
