@@ -191,3 +191,14 @@ def test_a_value_the_keys_role_holds_or_a_choice_made_there_opens_no_setting_of_
     assert goal == {"rinse": "heavy", "rinse_weight": "300 g"}
     # a true model (no ``outside``) never gets one
     assert "soak_weight" not in parse_instruction(SOAKER, "Soak 300 g of lentils")
+
+
+def test_a_switchs_noun_further_off_in_the_phrase_names_it_for_a_quantity_only() -> None:
+    # "with the soak key" after the weight: a switch holds no quantity, so the weight is its
+    goal = parse_instruction(SOAKER, "Put in 250 g of chickpeas with the soak key", outside=[])
+    assert goal["soak_weight"] == "250 g"
+    # a bare number is no quantity, and a comma ends the phrase: nothing reaches SOAK
+    goal = parse_instruction(SOAKER, "Rinse heavy in bowl 2 with soak", outside=[])
+    assert not any(name.startswith("soak_") for name in goal)
+    goal = parse_instruction(SOAKER, "Add 250 g of chickpeas, then soak", outside=[])
+    assert not any(name.startswith("soak_") for name in goal)

@@ -68,6 +68,7 @@ def open_entries(
     placed = set(where.values())  # kept as said for a setting the belief has
     taken = set(claimed) | {k for m in mentions if m.start in placed for k in range(m.start, m.end)}
     found: dict[str, Any] = {}
+    walked: set[str] = set()  # keys an entry already says the reader misread
     for mention in mentions:
         if mention.kind == "clock" or any(k in taken for k in range(mention.start, mention.end)):
             continue
@@ -76,7 +77,10 @@ def open_entries(
             continue
         name = _key_noun(text, mention, nouns, known)
         if name is None:
-            name = _misread_noun(view, text, mention, value, roled, goal)
+            name, keys = _misread_noun(view, text, mention, value, roled, goal)
+            if keys & walked:
+                continue  # one setting sought under a key: "auto menu A-6, 800 g"
+            walked |= keys
         if name is None and stepping and mention.kind == "number":
             name = _level_noun(text, mention, known)
         if name is None and not _of_its_kind(view, mention, text):
@@ -235,27 +239,54 @@ def _roled_keys(model: ApplianceModel, roleless: list[str]) -> list[str]:
 
 def _misread_noun(
     view: Model, text: Text, mention: Mention, value: Any, roled: dict[str, list[str]], goal: Goal
-) -> str | None:
+) -> tuple[str | None, set[str]]:
     """ "Defrost 400 g" with a DEFROST key the belief reads as a switch: the quantity beside
-    a key's own noun, which no setting that key adjusts could hold, is likely the key's real
-    setting. Named after the noun, or after the noun and the quantity's kind where the noun
-    names a belief variable already (``defrost_weight``)."""
+    a key's own noun (or a switch's, in its clause: "thaw a kilo with the defrost pad"), which
+    no setting that key adjusts could hold, is likely the key's real setting (one per key).
+    Named after the noun, or after the noun and the quantity's kind where the noun names a
+    belief variable already (``defrost_weight``); with the keys it names."""
     near = _neighbours(text, mention)
     if text.word(mention.start - 1) == "for":  # "soak for 8 hours"
         near.append(mention.start - 2)
-    for k in near:
+    beside = len(near)
+    if _kind(mention) is not None:  # a quantity with its unit, not a bare number
+        near += _in_clause(text, mention)
+    for at, k in enumerate(near):
         noun = _noun_at(text, k, roled)
         if noun is None:
             continue
         keys = roled[noun]  # every key it names: "zone" for ZONE and for ZONE+TIMER held
         if not all(misread_key(view.model, key, value) for key in keys):
             continue
+        if at >= beside and not all(
+            is_switch(view.model, name) for key in keys for name in adjusted_by(view.model, key)
+        ):
+            continue  # further off, only a switch's key: it holds no quantity at all
         if any(_chose(view, name, goal) for key in keys for name in adjusted_by(view.model, key)):
-            return None  # "the lower zone at 40 W": the key chose, the quantity is another's
+            return None, set()  # "the lower zone at 40 W": the key chose, the quantity is another's
         if noun not in view.infos and noun not in goal:
-            return noun
-        return f"{noun}_{_KIND_NAMES.get(_kind(mention) or '', 'level')}"
-    return None
+            return noun, set(keys)
+        return f"{noun}_{_KIND_NAMES.get(_kind(mention) or '', 'level')}", set(keys)
+    return None, set()
+
+
+_REACH = 5  # words between a quantity and a switch's noun in its phrase
+_PHRASE_ENDS = CLAUSE_ENDS | {",", "and", "then", "but"}
+
+
+def _in_clause(text: Text, mention: Mention) -> list[int]:
+    """The words of the quantity's phrase (up to a comma, an "and") within reach of it,
+    nearest first ("thaw a kilo of meat with the defrost pad")."""
+    out: list[tuple[int, int]] = []
+    for side in (-1, 1):
+        k = mention.start - 1 if side < 0 else mention.end
+        edge = k
+        while 0 <= k < len(text.tokens) and abs(k - edge) < _REACH:
+            if text.word(k) in _PHRASE_ENDS:
+                break
+            out.append((abs(k - edge), k))
+            k += side
+    return [k for _, k in sorted(out)]
 
 
 def _chose(view: Model, name: str, goal: Goal) -> bool:
