@@ -202,3 +202,49 @@ def test_a_switchs_noun_further_off_in_the_phrase_names_it_for_a_quantity_only()
     assert not any(name.startswith("soak_") for name in goal)
     goal = parse_instruction(SOAKER, "Add 250 g of chickpeas, then soak", outside=[])
     assert not any(name.startswith("soak_") for name in goal)
+
+
+# (found by a review: remarks about people and time around a plain instruction opened settings)
+THROW_MANUAL = """Heated throw. Keep it away from people who cannot feel heat.
+Press ZONE to pick the upper or lower zone, then ▲ / ▼ to set the level 1 to 9.
+SPEED sets the fan."""
+
+
+def test_a_remark_about_the_household_opens_no_setting() -> None:
+    def said(instruction: str) -> dict[str, object]:
+        return dict(parse_instruction(BELIEF, instruction, THROW_MANUAL, outside=[]))
+
+    # "are" is no setting's name, nor is a word the manual never uses ("kids")
+    assert said("Lower zone on, my kids are 5 and 7") == said("Lower zone on")
+    # the manual mentions people but counts none: "2 people" is no quantity to set
+    assert "quantity" not in said("Upper zone please, it's for 2 people")
+    # "in 10 minutes" says when the user is back, not how long anything runs
+    assert "time" not in said("Upper zone, I'll be back in 10 minutes")
+    # a level named with the manual's own word still opens
+    assert said("Lower zone to level 6")["level"] == 6
+
+
+def test_a_count_after_a_comma_is_not_the_menus_servings() -> None:
+    belief = model_from(
+        """
+        controls: [{id: menu}, {id: start}]
+        variables:
+          auto_menu: {type: discrete, values: [soup, rice, tea], label: AUTO MENU}
+          running: {type: discrete, values: ["off", "on"]}
+        actions:
+          press_menu: {control: menu}
+          press_start: {control: start}
+        features:
+          set_auto_menu:
+            - {actions: [press_menu], variable: auto_menu, effect: next}
+          start:
+            - {actions: [press_start], variable: running, effect: {to: "on"}}
+        """
+    )
+    manual = "AUTO MENU: soup 1 - 4 cups, rice 1 - 3 cups, tea 1 - 2 cups. Not for people under 8."
+    goal = parse_instruction(belief, "Auto menu tea for two mugs and start", manual, outside=[])
+    assert goal["auto_menu_quantity"] == 2
+    goal = parse_instruction(
+        belief, "Auto menu soup and start, it's for 2 people", manual, outside=[]
+    )
+    assert "auto_menu_quantity" not in goal

@@ -37,6 +37,7 @@ OnceKind = Literal[
     "discover",
     "side",
     "start",
+    "end",
 ]
 RepeatKind = Literal["value", "procedure", "display"]
 MAX_SAME_REPAIR = 3  # the same thing going wrong this often in a row: give up

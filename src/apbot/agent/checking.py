@@ -11,7 +11,9 @@ from __future__ import annotations
 
 from typing import Any
 
+from apbot.agent.absent import absent_here
 from apbot.agent.displays import DisplayLearner
+from apbot.agent.ends import stopped_at_end
 from apbot.agent.explorer import Explorer
 from apbot.agent.guards import GuardLearner
 from apbot.agent.merged import ProcedureSplitter
@@ -94,6 +96,8 @@ class Checks:
                 self.explore(done.variable, done)
             else:
                 self._learn_display(done.variable, executed[: first + 1])
+        elif stopped_at_end(self.session, done):
+            pass  # plan again the long way round
         elif done.refused or wrong_setting(self.session, done):
             self.procedures.repair_procedure(executed[first:])
             name = self.session.step_variable(self.session.belief.pointer())
@@ -163,6 +167,8 @@ class Checks:
             f"{observed!r}, expected {predicted!r})",
         )
         if self.side_effects.independent(name, executed[upto], observed):
+            return
+        if absent_here(self.session, name, executed[upto], observed):
             return
         if self.side_effects.programme_start(name, executed[upto], observed):
             return

@@ -134,6 +134,8 @@ class DisplayLearner:
         text, value = texts.pop(), missing[0]
         if spec.show is None:
             return self._lamp_word(name, text, value, read.pop())
+        if isinstance(spec.show, str):
+            return self._combined_word(name, text, value, read)
         if not isinstance(spec.show, dict):
             return False
         before = session.belief.state
@@ -150,6 +152,22 @@ class DisplayLearner:
             return False
         word = next(p for p in text.split() if p.casefold() in new_words)
         return self._show_word(name, value, word, {**spec.show, str(value): word}, text)
+
+    def _combined_word(self, name: str, text: str, value: Any, read: set[Any]) -> bool:
+        """A choice printed as its value alone, whose walk read every value but one, shown as
+        the words of the others together (``UPPER LOWER`` for both plates, ``A B C`` for all
+        zones): those words are that value's (once, if read back)."""
+        session = self.session
+        spec = session.belief.model.variables[name]
+        if spec.show is None or str(spec.show).strip() != "{value}":
+            return False
+        words = text.split()
+        printed = {display_value(spec, v).casefold() for v in read}
+        if len(words) < 2 or not all(w.casefold() in printed for w in words):
+            return False
+        show = {str(v): display_value(spec, v) for v in session.domain_values(name)}
+        show[str(value)] = " ".join(words)
+        return self._show_word(name, value, show[str(value)], show, text)
 
     def _lamp_word(self, name: str, text: str, value: Any, other: Any) -> bool:
         """An on/off setting the belief prints as "LABEL value", whose walk read one value

@@ -19,6 +19,7 @@ from apbot.agent.perception import Seen
 from apbot.agent.quantities import summary
 from apbot.agent.repair import RepairError
 from apbot.agent.session import MISSING, Executed, Session
+from apbot.agent.time_styles import restyle_walk
 from apbot.agent.walk_learning import WalkLearning
 from apbot.agent.worded import as_choices, as_text, reads_all, worded_values
 from apbot.model.schema import Add, NumericVariable, Skip
@@ -65,6 +66,7 @@ class Explorer(WalkLearning):
             ),
         )
         forward, backward = self._read_unread(name, forward, backward, last.predicted)
+        forward, backward = restyle_walk(self.session, name, forward, backward)
         seen = [v for v in forward + (backward or []) if not isinstance(v, Dark)]
         if not seen:
             return

@@ -238,6 +238,8 @@ def infer_template(
     'PROG {value}'
     >>> infer_template(["12"], str, lambda t: int(t) if t.isdigit() else None, known=7)
     '{value}'
+    >>> infer_template(["LOWER"], str, str, words=True, known="lower")
+    '{value}'
     >>> clock = lambda v: f"{v // 60}:{v % 60:02d}"
     >>> infer_template(["00:07"], clock, lambda t: None, known=7) is None  # not "0{value}"
     True
@@ -248,9 +250,10 @@ def infer_template(
         return char.isalnum() if words else (char.isdigit() or char in _VALUE_CHARS)
 
     if len(texts) == 1 and known is not None:
-        printed = render(known)
-        if texts[0].count(printed) == 1:
-            start = texts[0].index(printed)
+        # in any case, as the display reader reads it ("LOWER" shows the value lower)
+        printed, text = render(known).lower(), texts[0].lower()
+        if len(text) == len(texts[0]) and text.count(printed) == 1:
+            start = text.index(printed)
             head, tail = texts[0][:start], texts[0][start + len(printed) :]
             # not inside a longer value ("0:07" in "00:07" is no "0{value}")
             if not (head and inside(head[-1])) and not (tail and inside(tail[0])):

@@ -49,8 +49,8 @@ from apbot.agent.screen_patterns import (
     _squash,
 )
 from apbot.model.display import ABSENT_TEXT, display_value
-from apbot.model.domain import Domain, ValueProblem, normalise, parse_value
-from apbot.model.schema import TEMPLATE_FIELD, ApplianceModel, TimeVariable
+from apbot.model.domain import Domain, ValueProblem, all_values, normalise, parse_value
+from apbot.model.schema import TEMPLATE_FIELD, ApplianceModel, DiscreteVariable, TimeVariable
 
 __all__ = ["DisplayReader", "Hypothesis", "Reading", "Screen", "ScreenKind", "is_read"]
 
@@ -167,6 +167,8 @@ class DisplayReader(CompiledDisplay):
                 if partial and raw.strip() != ABSENT_TEXT:
                     return None  # a time in dashes beside other text: a lamp's, not the screen
                 absent.add(name)
+        if partial and self._other_value_beside(values, text[: match.start()], text[match.end() :]):
+            return None
         lamps: dict[str, frozenset[Any]] = {}
         if not partial and not self._dark(screen):
             lit = match.group("_lamps") or ""
@@ -186,6 +188,24 @@ class DisplayReader(CompiledDisplay):
             if name in values and values[name] not in allowed:
                 return None
         return Hypothesis(screen, values, outside, frozenset(absent), lamps, partial)
+
+    def _other_value_beside(self, values: dict[str, Any], before: str, after: str) -> bool:
+        """Whether a choice read inside a longer text has another of its own values printed
+        right beside it (``UPPER LOWER``: both plates, not the upper one): a screen that prints
+        several of them, which no one value's screen explains. Lists of three or more only."""
+        words = {w.casefold() for w in (before.split()[-1:] + after.split()[:1])}  # next to it
+        for name, value in values.items():
+            spec = self._specs.get(name)
+            if not isinstance(spec, DiscreteVariable):
+                continue
+            choices = all_values(spec)
+            if len(choices) < 3:
+                continue  # a switch's "off" is a word of many lamps (AUTO OFF)
+            for other in choices:
+                printed = display_value(spec, other).casefold()
+                if other != value and printed.isalpha() and len(printed) > 1 and printed in words:
+                    return True
+        return False
 
     def _interpret(self, name: str, raw: str, known: Mapping[str, Any]) -> tuple[str, Any] | None:
         """A captured field as ("value", v), ("outside", v), ("absent", None), ("typing",

@@ -4,7 +4,9 @@ A manual's words for a lamp fall short of the panel in two common ways. The lamp
 a qualifier that changes with the state ("LOCK RED" / "LOCK GREEN" where the manual says the
 lock icon turns green): the belief lights "LOCK" and reads both as lit. Or the word the reader
 took as the sign of the state is not the one the panel shows (a descaling "CAL" as the sign of
-running) while the panel prints another ("POURING 400 ml" in place of the temperature). Either
+running) while the panel prints another ("POURING 400 ml" in place of the temperature). A
+third: the belief has no lamp at all (a warm mist shown "MIST on" on its own screen) and the
+panel lights one (``WARM``) beside whatever it showed. Each
 way the press that was to switch the setting changed the display by one word the belief does
 not read, and the belief saw no change: that word is the setting's new state.
 """
@@ -15,8 +17,8 @@ import re
 from typing import Any
 
 from apbot.agent.reader import DisplayReader
-from apbot.agent.repair import RepairError, set_display
-from apbot.agent.session import Executed, Session
+from apbot.agent.repair import RepairError, add_indicator, set_display
+from apbot.agent.session import UNREADABLE, Executed, Session
 from apbot.model.display import lamp_for
 from apbot.model.domain import all_values
 from apbot.model.schema import ApplianceModel, DiscreteVariable
@@ -35,26 +37,35 @@ def relit(session: Session, done: Executed) -> bool:
     domain = tuple(session.domain_values(name))
     old = session.belief.compiled.assignment(done.state_before)[name]
     predicted, observed = done.surprises[name]
-    if len(domain) != 2 or predicted == old or observed not in (old, None):
+    unread = observed is UNREADABLE  # the belief's own screen for it, with other words
+    if len(domain) != 2 or predicted == old or not (unread or observed in (old, None)):
         return False
     before, after = done.text_before, done.feedback.text
     if not before.strip() or not after.strip() or before == after:
         return False
     known = _known_words(model)
-    show = qualified(lamp_for(spec, name, old, domain), before, after, known)
+    kind = "relit"
+    show = None if unread else qualified(lamp_for(spec, name, old, domain), before, after, known)
     if show is not None and not lamp_for(spec, name, predicted, domain):
         lit, unlit = show
         mapping = {str(old): lit, str(predicted): unlit}
-    elif not lamp_for(spec, name, old, domain) and (
-        word := new_sign(lamp_for(spec, name, predicted, domain), before, after, known)
+    elif (
+        not unread
+        and not lamp_for(spec, name, old, domain)
+        and (word := new_sign(lamp_for(spec, name, predicted, domain), before, after, known))
     ):
         mapping = {str(predicted): word, str(old): ""}
+    elif name not in model.display.indicators and (word := new_word(before, after, known)):
+        # the belief shows it on its own screen only ("MIST on"); the panel lights a word
+        mapping, kind = {str(predicted): word, str(old): ""}, "lit"
     else:
         return False
-    if not session.budget.once("template", f"relit:{name}"):
+    if not session.budget.once("template", f"{kind}:{name}"):
         return False
     try:
         new = set_display(model, name, mapping)
+        if kind == "lit":  # a lamp now, on every screen
+            new = add_indicator(new, name)
     except RepairError as exc:
         session.episode.log("repair", f"could not repair how {name} is shown: {exc}")
         return False
@@ -107,6 +118,16 @@ def new_sign(lamp: str, before: str, after: str, known: set[str]) -> str | None:
     """
     if not lamp or re.search(rf"(?<!\w){re.escape(lamp)}(?!\w)", after, re.IGNORECASE):
         return None
+    return new_word(before, after, known)
+
+
+def new_word(before: str, after: str, known: set[str]) -> str | None:
+    """The one word of letters the press brought to the display that it did not show before
+    and the belief does not know (``WARM`` lit beside ``MANUAL MIST 3``).
+
+    >>> new_word("MIST 3  MANUAL", "WARM  MANUAL  MIST 3", {"mist", "manual"})
+    'WARM'
+    """
     was = {w.casefold() for w in before.split()}
     new = [w for w in after.split() if w.isalpha() and w.casefold() not in was | known]
     return new[0] if len(new) == 1 else None

@@ -292,7 +292,9 @@ def _label_pattern(label: str, last: str | None = None) -> str:
     alone = f"|{re.escape(last)}" if last else ""
     if len(first) < 3 or not first[:3].isalpha():
         return rf"(?:{_literal(label)}{alone})" if alone else _literal(label)
-    return rf"(?:{_literal(label)}|{re.escape(first[:3])}[^\W\d_]*{alone})"
+    # never shortened where it is printed whole: AUTO OFF is the label, not AUT + the value OFF
+    whole = rf"(?!{_literal(label)}(?!\w)){re.escape(first[:3])}[^\W\d_]*"
+    return rf"(?:{_literal(label)}|{whole}{alone})"
 
 
 def _literal(text: str) -> str:

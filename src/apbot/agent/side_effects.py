@@ -31,7 +31,10 @@ class SideEffectLearner:
     def learn_side_effect(self, name: str, done: Executed, observed: Any) -> bool:
         """A press of another setting's step changed ``name`` otherwise than the belief said:
         the step leaves it alone (the display kept the value), sets it to what was shown, or
-        resets it to its starting value — once per step and setting."""
+        resets it to its starting value — once per step, setting and kind of change, so that a
+        later press of the same step that contradicts what was learnt revises it (an entry key
+        first seen showing the programme's time, "sets it to 8:00", then showing 0:30 where a
+        walk left it: it leaves it alone)."""
         session = self.session
         if done.pointer is None or done.state_before is None or done.refused:
             return False
@@ -61,7 +64,8 @@ class SideEffectLearner:
             reset, change = True, "resets it"
         else:
             value, change = observed, f"sets it to {observed}"
-        if not session.budget.once("side", f"{feature}:{index}:{name}"):
+        kind = "alone" if value is None and not reset else "reset" if reset else "set"
+        if not session.budget.once("side", f"{feature}:{index}:{name}:{kind}"):
             return False
         try:
             new = set_side_effect(session.belief.model, feature, index, name, value, reset)

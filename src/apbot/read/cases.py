@@ -14,14 +14,21 @@ from typing import Any
 
 from apbot.model.values import parse_hms
 from apbot.read.build import Builder
-from apbot.read.cases_cells import _STEP_HEAD_RE, DEFAULT_WORDS, _cases, _defaults, _row_steps
+from apbot.read.cases_cells import (
+    _STEP_HEAD_RE,
+    DEFAULT_WORDS,
+    _cases,
+    _defaults,
+    _row_steps,
+    chain_values,
+)
 from apbot.read.cases_lists import as_choices, listed_cases, listed_column
 from apbot.read.cases_marks import mark_cases
 from apbot.read.cases_tables import _parent_values, _tables
 from apbot.read.labels import words
 from apbot.read.shapes import CHOICE_WORDS
 from apbot.read.text import Unit
-from apbot.read.values import find_ranges, unit_name
+from apbot.read.values import Range, find_ranges, unit_name
 
 GENERIC = {
     "options", "option", "range", "ranges", "setting", "settings", "available", "values",
@@ -95,6 +102,8 @@ def apply_cases(b: Builder) -> None:
                     continue
                 if spec.get("type") == "discrete" and _ranges_column(rows, column):
                     _as_number(b, name, spec, rows, column)  # the table says it is an amount
+                elif _finer_times(spec, rows, column):
+                    _as_number(b, name, spec, rows, column)  # "1 – 60 min" under "up to 12 h"
                 guessed = name in b.unread and spec.get("type") == "numeric"
                 if guessed_only and not guessed:
                     break
@@ -259,15 +268,36 @@ def _ranges_column(rows: list[Unit], column: int) -> bool:
     return sum(bool(column < len(r.cells) and find_ranges(r.cells[column])) for r in rows) >= 2
 
 
+def _finer_times(spec: dict[str, Any], rows: list[Unit], column: int) -> bool:
+    """Whether a setting read as whole hours (a numeric "h") has a column of times in a finer
+    unit ("1 – 60 min", "1 min – 2 h"): it is a time, set in minutes."""
+    if spec.get("type") != "numeric" or spec.get("unit") != "h":
+        return False
+    found = [f[0] for r in rows if column < len(r.cells) and (f := find_ranges(r.cells[column]))]
+    return len(found) >= 2 and any(r.unit in ("min", "s") for r in found)
+
+
 def _as_number(b: Builder, name: str, spec: dict[str, Any], rows: list[Unit], column: int) -> None:
-    """Turn a read-as-discrete setting into the amount the table's ranges say it is."""
+    """Turn a read-as-discrete setting (or whole hours) into the amount the table's ranges say
+    it is, read from the column's first range in the finest unit it uses."""
     from apbot.read.shapes import Evidence
 
-    found = [find_ranges(r.cells[column]) for r in rows if column < len(r.cells)]
+    cells = [r.cells[column] for r in rows if column < len(r.cells)]
+    found = [find_ranges(c) for c in cells]
+    chains = [chained[0] for c in cells if (chained := chain_values(c))]
     first = next(f[0] for f in found if f)
+    first = next((f[0] for f in found if f and f[0].unit in ("min", "s")), first)
+    if chains:  # "0-1-3-[5]-7-9": the values listed, not a range "0-1"
+        first = Range(min(c[0] for c in chains), max(c[-1] for c in chains), first.unit)
     label = spec.get("label", name.upper())
+    # a key that only steps on ("each press shows the next spin time") comes round again
+    alone = any(
+        st.get("variable") == name and st.get("effect") == "next" and len(st["actions"]) == 1
+        for steps in b.features.values()
+        for st in steps
+    )
     del b.variables[name]
-    new = b.add_number(name, label, Evidence(ranges=[first]), cyclic=False)
+    new = b.add_number(name, label, Evidence(ranges=[first]), cyclic=alone)
     if new != name:  # keep the name the features use
         b.variables[name] = b.variables.pop(new)
     spec.clear()

@@ -58,8 +58,28 @@ def _alone(item: str, known: list[str]) -> str:
     return bare if bare != item and (bare in known or not known) else item
 
 
+# a mark that a chart's on/off column says the option is offered, or not ("–", "no")
+_OFFERED_RE = re.compile(r"\s*(?:yes|y|✓|✔|●|x)\b\W*(?:\s|$)", re.I)
+_NOT_OFFERED_RE = re.compile(r"\s*(?:no\b|n\b|[–—-](?:\s|$))", re.I)
+
+
+def _toggle_cell(cell: str) -> bool | None:
+    """Whether an on/off option's chart cell says it is offered (True), not offered (False),
+    or neither (None: the cell names values). A note run into the cell from the next column
+    ("– hold not possible") does not change what its first mark says."""
+    if _OFFERED_RE.match(cell + " "):
+        return True
+    if _NOT_OFFERED_RE.match(cell + " ") or not cell.strip():
+        return False
+    return None
+
+
 def _case(spec: dict[str, Any], cell: str) -> Any:
     kind = spec.get("type")
+    if kind == "discrete" and sorted(spec.get("values", [])) == ["off", "on"]:
+        said = _toggle_cell(cell)  # "yes" under STEAM: the key works in that programme
+        if said is not None:
+            return {"values": ["off", "on"]} if said else None
     if kind == "discrete":
         if len(spec.get("values", [])) == 2 and _norm(cell) in spec["values"]:
             return {"values": list(spec["values"]), "initial": _norm(cell)}  # a default
@@ -79,6 +99,9 @@ def _case(spec: dict[str, Any], cell: str) -> Any:
     ranges = spec.get("ranges") or []
     if not ranges:
         return None
+    chained = chain_values(cell)
+    if chained is not None:  # "0-1-3-[5]-7-9": the values one by one, the default in brackets
+        return _chain_case(spec, *chained)
     ranges_read = find_ranges(cell)
     if kind == "time":
         listed = None if ranges_read else _time_list(cell)
@@ -115,6 +138,55 @@ def _case(spec: dict[str, Any], cell: str) -> Any:
     hi = lo + count * step
     tidy = lambda x: int(x) if float(x).is_integer() else round(x, 4)  # noqa: E731
     return {"ranges": [[tidy(lo), tidy(hi), tidy(step)]]}
+
+
+# three or more numbers joined by single hyphens, one of them maybe in brackets: the values a
+# key steps through ("6-9-[12]-15-18"), not a range
+_CHAIN_RE = re.compile(r"\s*\[?\d+(?:\.\d+)?\]?(?:\s*-\s*\[?\d+(?:\.\d+)?\]?){2,}\s*")
+
+
+# two numbers so joined, one in brackets ("[1]-2", "2-[3]"): two values, not a range
+_PAIR_RE = re.compile(r"\s*(?:\[\d+\]\s*-\s*\d+|\d+\s*-\s*\[\d+\])\s*")
+
+
+def chain_values(cell: str) -> tuple[list[float], float | None] | None:
+    """The rising numbers of a hyphen-chained cell and the bracketed default; else None."""
+    if not _CHAIN_RE.fullmatch(cell) and not _PAIR_RE.fullmatch(cell):
+        return None
+    items = [x.strip() for x in cell.split("-")]
+    numbers = [float(x.strip("[] ")) for x in items]
+    if any(b <= a for a, b in itertools.pairwise(numbers)):
+        return None
+    default = next((float(x.strip("[] ")) for x in items if x.startswith("[")), None)
+    return numbers, default
+
+
+def _chain_case(spec: dict[str, Any], numbers: list[float], default: float | None) -> Any:
+    """A case of listed numbers: one range per run of equal gaps (0-1-3-5: 0–1 by 1, 1–5 by
+    2), in seconds of the unit the setting was read in when it is a time (minutes if none)."""
+    scale = 1.0
+    if spec.get("type") == "time":
+        scale = {"s": 1, "h": 3600}.get(spec.get("unit", ""), 60)
+    values = [v * scale for v in numbers]
+    pieces: list[list[float]] = []
+    for a, b in itertools.pairwise(values):
+        if pieces and math.isclose(pieces[-1][2], b - a) and pieces[-1][1] == a:
+            pieces[-1][1] = b
+        else:
+            pieces.append([a, b, b - a])
+    tidy = lambda x: int(x) if float(x).is_integer() else round(x, 4)  # noqa: E731
+    case: dict[str, Any] = {}
+    if spec.get("type") == "time":
+        case["ranges"] = [
+            [format_hms(int(lo)), format_hms(int(hi)), int(st)] for lo, hi, st in pieces
+        ]
+        if default is not None:
+            case["initial"] = format_hms(int(default * scale))
+    else:
+        case["ranges"] = [[tidy(lo), tidy(hi), tidy(st)] for lo, hi, st in pieces]
+        if default is not None:
+            case["initial"] = tidy(default)
+    return case
 
 
 _TIME_LIST_RE = re.compile(

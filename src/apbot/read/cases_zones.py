@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import copy
 import re
+from typing import Any
 
 from apbot.read.build import Builder
 
@@ -34,7 +35,7 @@ def zone_twins(b: Builder) -> None:
             other = _split(twin)
             if other is None or other[0] != own[0] or other[1] == own[1]:
                 continue
-            if tspec.get("depends_on") or tspec.get("type") != spec.get("type"):
+            if tspec.get("depends_on") or not _alike(spec, tspec):
                 continue
             zone_parent = next((p for p in b.variables if _split(p) == (mother[0], other[1])), None)
             if zone_parent is None:
@@ -45,7 +46,18 @@ def zone_twins(b: Builder) -> None:
                 tspec.pop(key, None)
             tspec["depends_on"] = zone_parent
             tspec["cases"] = copy.deepcopy(spec["cases"])
+            tspec["type"] = spec["type"]
+            if spec["type"] == "time":
+                tspec.pop("unit", None)
             for key in ("unit", "format"):
                 if key in spec:
                     tspec[key] = spec[key]
             b.note(f"variables.{twin}.cases", f"as {name}'s, on {zone_parent} (zones alike)")
+
+
+def _alike(spec: dict[str, Any], twin: dict[str, Any]) -> bool:
+    """Whether the twin is the same kind of setting: the same type, or whole hours beside a
+    time (the table turned zone 1's hours into a time set in minutes)."""
+    if twin.get("type") == spec.get("type"):
+        return True
+    return spec.get("type") == "time" and twin.get("type") == "numeric" and twin.get("unit") == "h"

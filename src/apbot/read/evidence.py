@@ -10,7 +10,6 @@ import re
 
 from apbot.read.evidence_anywhere import AnywhereReader
 from apbot.read.evidence_checks import (
-    _BETWEEN_RE,
     _amount_column,
     _every_minute_top,
     _names_of_pieces,
@@ -20,6 +19,7 @@ from apbot.read.evidence_checks import (
     _with_midpoints,
     _without_only,
     about_another,
+    between_marks,
     lettered_row,
 )
 from apbot.read.evidence_lists import ListReader
@@ -43,6 +43,7 @@ from apbot.read.shapes import (
     _without_advice,
     is_wait,
 )
+from apbot.read.text_sections import other_model, surroundings
 from apbot.read.value_lists import anchored_lists, bare_list, named_list
 from apbot.read.values import (
     EACH_PRESS_RE,
@@ -108,6 +109,8 @@ class EvidenceReader(ListReader, AnywhereReader):
             unit = units[i]
             if i in elsewhere and i not in mentions and not unit.cells:
                 continue  # a sentence about another key says nothing about this one
+            if i not in mentions and other_model(units, i):
+                continue  # "Model XY-300 only: …": another model's keys and their values
             if i not in mentions and any(named_list(text, w) for w in other_words):
                 continue  # "The menu names printed on the panel: …" near KEEP WARM: MENU's
             if unit.cells and i not in mentions and _cell_key(_lead(unit.cells)) in other_keys:
@@ -149,6 +152,7 @@ class EvidenceReader(ListReader, AnywhereReader):
                 if prio > best_prio:
                     best, best_prio, ev.values_at = items, prio, i
             waiting = i not in mentions and is_wait(text)  # "Leave for one to two hours."
+            waiting = waiting or surroundings(text)  # "at an ambient 5 to 35 °C": the room's
             ranges = [
                 r
                 for r in find_ranges("" if waiting else _without_advice(unit))
@@ -345,7 +349,7 @@ class EvidenceReader(ListReader, AnywhereReader):
                 if units[j].heading == units[i].heading
             }  # the paragraph about the knob: its marks, then how it clicks between them
             said = [units[i].text for i in sorted(near | set(self.context(tokens)))]
-            if any(_BETWEEN_RE.search(t) for t in said):
+            if any(between_marks(t) for t in said):
                 best = _with_midpoints(best)
             for t in said:  # "in the first ten minutes every minute has its own tick"
                 top = _every_minute_top(t)

@@ -11,6 +11,7 @@ import re
 from apbot.read.labels import Label, words
 from apbot.read.shapes import _TIMER_WORDS, _fits, _quantity_unit
 from apbot.read.text import Manual
+from apbot.read.text_sections import surroundings
 from apbot.read.values import Range, find_ranges
 
 
@@ -69,6 +70,8 @@ class AnywhereReader:
 
         for i, unit in enumerate(self.manual.units):
             uw = words(unit.text)
+            if surroundings(unit.text):
+                continue  # "an ambient temperature between 5 °C and 35 °C": the room's
             if unit.cells and unit.header and len(unit.header) == len(unit.cells):
                 # a table row: the setting is named by the column's header
                 for head, cell in zip(unit.header, unit.cells, strict=True):

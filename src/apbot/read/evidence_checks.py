@@ -101,6 +101,18 @@ _BETWEEN_RE = re.compile(
     r"[^.;]{0,30}\b(?:markings?|marks|numbers|figures)\b",
     re.I,
 )
+# "above 10 the knob clicks at each small mark", "small marks between the printed numbers"
+_SMALL_MARK_RE = re.compile(
+    r"\b(?:clicks?|detents?|stops?|notch(?:es)?|settings?)\b[^.;]{0,40}"
+    r"\b(?:small|intermediate|minor|short)\s+(?:marks?|ticks?|lines?|divisions?)\b"
+    r"|\b(?:small|intermediate|minor|short)\s+(?:marks?|ticks?|lines?)\s+between\b",
+    re.I,
+)
+
+
+def between_marks(text: str) -> bool:
+    """Whether a sentence says the knob also stops halfway between two printed marks."""
+    return bool(_BETWEEN_RE.search(text) or _SMALL_MARK_RE.search(text))
 
 
 def _with_midpoints(items: list[str]) -> list[str]:
@@ -150,12 +162,16 @@ def _every_minute_top(text: str) -> float | None:
 
 def _with_every(items: list[str], top: int) -> list[str]:
     """Marks in minutes with every whole minute up to ``top`` added."""
-    parsed = [re.match(r"\s*(\d+)\s*(.*)", v) for v in items]
+    parsed = [re.match(r"\s*(\d+(?:\.\d+)?)\s*(.*)", v) for v in items]
     if not all(parsed):
         return items
-    nums = sorted({int(m.group(1)) for m in parsed if m} | set(range(top + 1)))
+    # (a halfway mark below the bound is one of those minutes: 2.5 between 0 and 5 is no setting)
+    nums = sorted(
+        {v for m in parsed if m if (v := float(m.group(1))) >= top or v == int(v)}
+        | set(range(top + 1))
+    )
     unit = next((m.group(2) for m in parsed if m and m.group(2)), "")
-    return [f"{v}" + (f" {unit}" if unit else "") for v in nums]
+    return [f"{v:g}" + (f" {unit}" if unit else "") for v in nums]
 
 
 def lettered_row(units: list[Unit], names: set[str]) -> tuple[list[str], int] | None:

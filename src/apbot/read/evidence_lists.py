@@ -394,6 +394,8 @@ class ListReader:
                 hw = words(unit.cells[0])
                 if hw and any(h[:6] == w[:6] for h in hw for w in tw):
                     column = _next_table_column(units, i - 1)
+                    if column and self._key_legend([unit.cells[0], *column]):
+                        continue  # "[ POPCORN ] [ TIME COOK ]" over "[ CLOCK ]": keys drawn
                     if column:
                         self._table_at = i
                         return column
@@ -427,7 +429,7 @@ class ListReader:
         names): a key legend says what each key does, it lists no values of one key."""
         keys = {lab.text.strip(" .").upper() for lab in self.labels.values() if lab.text}
         keys |= {t.upper().replace("_", " ") for t in self.labels}
-        hits = sum(c.strip(" *.").upper() in keys for c in cells)
+        hits = sum(c.strip(" *.[]").upper() in keys for c in cells)
         return hits >= 2 and 2 * hits >= len(cells)
 
     def _initial_from_values(self, ev: Evidence, tokens: list[str]) -> None:

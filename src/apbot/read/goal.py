@@ -110,7 +110,11 @@ def parse_instruction(
     entry_switches(view, goal)
     boil(view, text, goal)
     power_and_running(view, text, goal, counting)
-    opened = {} if outside is None else open_entries(view, text, mentions, goal, claimed, where)
+    opened = (
+        {}
+        if outside is None
+        else open_entries(view, text, mentions, goal, claimed, where, manual or "")
+    )
     try:
         _unknown_values(view, text, goal, claimed)
     except GoalParseError as exc:

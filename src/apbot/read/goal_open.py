@@ -26,6 +26,7 @@ If the finder cannot find it, the agent sets the rest of the goal (``agent/loop.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Collection
 from typing import Any
 
@@ -53,10 +54,16 @@ def open_entries(
     goal: Goal,
     claimed: set[int],
     where: dict[str, int],
+    manual: str = "",
 ) -> dict[str, Any]:
     """Open entries (name → value as said) for the quantities and words no belief variable
-    took; names are new (never a variable the belief has, never one the goal holds)."""
+    took; names are new (never a variable the belief has, never one the goal holds). With the
+    ``manual``, a noun that names an entry must be one the manual uses: a user names a setting
+    the way its manual does ("level 7"), and a remark about people ("my kids are 5") uses
+    words no manual has."""
     model = view.model
+    printed = _manual_stems(manual)
+    counted = _counted_stems(manual)
     roleless = _roleless_keys(model)
     nouns = {w: key for key in roleless for w in _key_words(key)}  # noun -> its key
     roled: dict[str, list[str]] = {}  # noun -> the keys with a role it names
@@ -76,20 +83,25 @@ def open_entries(
         if value is None:
             continue
         name = _key_noun(text, mention, nouns, known)
+        if name is None and _remark(text, mention):
+            continue
         if name is None:
             name, keys = _misread_noun(view, text, mention, value, roled, goal)
             if keys & walked:
                 continue  # one setting sought under a key: "auto menu A-6, 800 g"
             walked |= keys
         if name is None and stepping and mention.kind == "number":
-            name = _level_noun(text, mention, known)
+            name = _level_noun(text, mention, known, printed)
         if name is None and not _of_its_kind(view, mention, text):
             name = _KIND_NAMES.get(_kind(mention) or "")
             if name == "time" and mention.value % 86400 == 0:
                 name = "days"  # a number of days away, not a cooking time
+            count = _kind(mention) == "count"
             if name is not None and not roleless:  # no key to try: the programme's next step
-                chosen = _chosen_beside(view, text, mention, goal, where)
+                chosen = _chosen_beside(view, text, mention, goal, where, count)
                 name = None if chosen is None else f"{chosen}_{name}"
+            elif count and manual and stem(mention.unit) not in counted:
+                name = None  # "it's for 2 people": a count of what the manual never counts
         if name is None or name in view.infos or name in goal or name in found:
             continue
         found[name] = value
@@ -204,11 +216,19 @@ def _of_its_kind(view: Model, mention: Mention, text: Text) -> bool:
 
 
 def _chosen_beside(
-    view: Model, text: Text, mention: Mention, goal: Goal, where: dict[str, int]
+    view: Model,
+    text: Text,
+    mention: Mention,
+    goal: Goal,
+    where: dict[str, int],
+    count: bool = False,
 ) -> str | None:
     """The choice the goal makes in the quantity's clause, nearest to it ("450 g of fish" with
     the automatic defrost: the defrost menu's fish): a weight, a time the belief lacks is
-    likely that choice's next step, as on an automatic menu."""
+    likely that choice's next step, as on an automatic menu. A ``count`` must be in the
+    choice's own stretch between commas ("the beverage menu for two mugs"): an aside after
+    a comma ("…, it's for 2 people") counts the household, not the menu's servings."""
+    ends = CLAUSE_ENDS | {","} if count else CLAUSE_ENDS
     best: tuple[int, str] | None = None
     for name, at in where.items():
         info = view.infos.get(name)
@@ -217,7 +237,7 @@ def _chosen_beside(
         if not isinstance(info.var, DiscreteVariable):
             continue
         low, high = sorted((at, mention.start))
-        if any(text.word(k) in CLAUSE_ENDS for k in range(low, high)):
+        if any(text.word(k) in ends for k in range(low, high)):
             continue
         distance = abs(at - mention.start)
         if best is None or distance < best[0]:
@@ -353,9 +373,12 @@ def _key_noun(text: Text, mention: Mention, nouns: dict[str, str], known: set[st
     return None
 
 
-def _level_noun(text: Text, mention: Mention, known: set[str]) -> str | None:
+def _level_noun(
+    text: Text, mention: Mention, known: set[str], printed: frozenset[str] = frozenset()
+) -> str | None:
     """ "level 7", "heat on 2": the noun right before a bare whole number (past one linking
-    word), when it names no setting the belief has."""
+    word), when it names no setting the belief has — a word, not a verb ("the kids are 5"),
+    and one the manual uses when there is a manual."""
     if mention.value != int(mention.value) or mention.words:
         return None
     k = mention.start - 1
@@ -364,7 +387,35 @@ def _level_noun(text: Text, mention: Mention, known: set[str]) -> str | None:
     word = text.word(k)
     if len(word) < 3 or not word.isalpha() or word in _NOT_NAMES or text.stems[k] in known:
         return None
+    if word in _VERBS or word in _NOT_LEVELS or (printed and text.stems[k] not in printed):
+        return None
     return word
+
+
+_NOT_LEVELS = frozenset(
+    {"are", "is", "was", "were", "be", "been", "being", "aged", "age", "ages", "about",
+     "around", "than", "them", "they", "we", "you", "my", "our", "your", "his", "her",
+     "their", "those", "these", "back", "again", "times", "until", "till", "every", "each"}
+)  # fmt: skip
+"""Words that stand before a number without naming a setting ("my kids are 5")."""
+
+
+def _remark(text: Text, mention: Mention) -> bool:
+    """A time from now, not a setting: "I'll be back in 10 minutes" ("in" before a duration
+    says when, not how long)."""
+    return mention.kind == "duration" and text.word(mention.start - 1) == "in"
+
+
+def _counted_stems(manual: str) -> frozenset[str]:
+    """The stems of the nouns a manual counts: the word after a number or a span of numbers
+    ("1 – 4 cups", "up to 6 slices")."""
+    found = re.findall(r"\d\s*(?:[-–]\s*\d+\s*)?([a-z]+)", manual.lower())
+    return frozenset(stem(w) for w in found)
+
+
+def _manual_stems(manual: str) -> frozenset[str]:
+    """The stems of the words a manual uses (empty without a manual)."""
+    return frozenset(stem(w) for w in re.findall(r"[a-z]+", manual.lower()))
 
 
 _BASE_UNITS = {"mass": "g", "volume": "ml", "power": "W"}

@@ -22,6 +22,7 @@ from apbot.read.roles_common import (
 )
 from apbot.read.roles_confirm import ends_entry
 from apbot.read.roles_lists import dial_amount, dial_ends, dial_list, list_evidence
+from apbot.read.roles_numbered import numbered_entry
 from apbot.read.shapes import CHOICE_WORDS, Evidence
 
 ADD_RE = re.compile(r"^(add|plus|extra)_?(\d+)_?(s|sec|secs|seconds|m|min|mins|minutes)?$")
@@ -185,6 +186,9 @@ def assign_amounts(
         for v, spec in b.variables.items()
     )  # (AUTO COOK's list of menus is no cooking time)
     direct: str | None = None
+    if digits and not used_digits and (ended := numbered_entry(b, digits, silent)) is not None:
+        silent = [k for k in silent if k is not ended]  # "OK  Ends the entry of a stitch number"
+        used_digits = named_cook = True
     if digits and (not used_digits or (cooking and not named_cook)):
         var = b.add_number(
             "cook_time" if cooking else "time", "TIME", Evidence(ranges=[], step=(1, "s")), False

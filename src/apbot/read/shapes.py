@@ -266,9 +266,13 @@ def _fits(unit: str, tokens: list[str]) -> bool:
     timer, no watts for a volume (the sentence after a key often gives a neighbouring
     setting's range)."""
     expected = set(_quantity_units(tokens))
+    timeish = {"s", "min", "h"}
+    if not expected and unit and {"power", "wattage"} & {w for t in tokens for w in words(t)}:
+        # a power is a level, a percentage or watts, never degrees or a time ("TEMP replaces
+        # the power setting by a temperature, 60–240 °C" speaks of another setting)
+        return unit not in ("°C", "°F", *timeish)
     if not expected or not unit:
         return True
-    timeish = {"s", "min", "h"}
     if expected & {"°C"}:
         return unit in ("°C", "°F", "")
     if expected & {"min"}:
@@ -290,9 +294,12 @@ def _next_table_column(units: list[Unit], i: int, column: int = 0) -> list[str]:
     """The cells of one column (the first by default) of the table that starts right after
     unit ``i`` (header skipped)."""
     k = i + 1
+    shown = False
     if k < len(units) and units[k].cells and not units[k].header:
         if column == 0 and len(units[k].cells) >= 2 and PRESSES_RE.match(units[k].cells[0]):
             column = 1  # the first column counts presses: the values are in the next one
+        cells = units[k].cells
+        shown = column < len(cells) and bool(_DISPLAY_HEAD_RE.match(cells[column]))
         k += 1  # the header row
     items: list[str] = []
     numbers = 0
@@ -310,9 +317,26 @@ def _next_table_column(units: list[Unit], i: int, column: int = 0) -> list[str]:
         if cell and len(cell) <= 24 and cell not in items:
             items.append(cell)
         k += 1
+    if shown:
+        items = _without_display_word(items)
     if numbers * 2 > len(items):
         return []  # a column of ranges or bare numbers is not a list of names
     return items if len(items) >= 2 else []
+
+
+_DISPLAY_HEAD_RE = re.compile(r"\s*(?:display|screen|shown|shows)\b", re.I)
+
+
+def _without_display_word(items: list[str]) -> list[str]:
+    """A display column's cells that all start with the same word ("POP 3.5 oz", "POP 3.0 oz",
+    "POP none"): that word names the setting on the display, the rest is the value."""
+    firsts = {item.split()[0] for item in items if len(item.split()) >= 2}
+    if len(firsts) != 1 or len(items) < 2 or any(len(item.split()) < 2 for item in items):
+        return items
+    first = firsts.pop()
+    if not first.isalpha():
+        return items
+    return list(dict.fromkeys(item[len(first) :].strip() for item in items))
 
 
 FRACTIONS = {"½": ".5", "¼": ".25", "¾": ".75"}

@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 
 from apbot.read.errors import ReaderError
 from apbot.read.text_pages import _furniture, _page_breaks, _plain_heading, _reading_order
+from apbot.read.text_sections import boilerplate_heading
 from apbot.read.text_tables import _row_charts, _space_tables, _strip_markup
 
 MAX_MANUAL_CHARS = 400_000  # ten times the longest real manual we expect; larger is not a manual
@@ -269,6 +270,7 @@ def parse_manual(text: str) -> Manual:
             flush()  # "WARM      holds cooked food hot": a term and its definition, a new item
         para.append((number, stripped))
     flush()
+    units = [u for u in units if not boilerplate_heading(u.heading)]
     return Manual(units, original)
 
 

@@ -10,6 +10,8 @@ from __future__ import annotations
 import itertools
 import re
 
+from apbot.read.text_tables import _cells, _two_column_head
+
 _PAGE_NUMBER = re.compile(
     r"^[-—–\s]*(?:page\s+)?\d{1,3}(?:\s*(?:/|of)\s*\d{1,3})?[-—–\s]*$", re.IGNORECASE
 )
@@ -161,6 +163,19 @@ def _legend(parts: list[tuple[int, str, str]]) -> bool:
     return terms * 3 >= 2 * len(lefts) and runs_on * 2 < len(lefts) - 1
 
 
+def _column_head(line: str, column: int) -> bool:
+    """A line of two short column names split at ``column`` ("Key      Use"): the lines under
+    it are a table's rows, not prose set side by side."""
+    cells = _cells(line)
+    gap = re.search(r"\S(\s{2,})(?=\S)", line)
+    return (
+        len(cells) == 2
+        and gap is not None
+        and abs(gap.end(1) - column) <= 2
+        and _two_column_head(cells)
+    )
+
+
 def _reading_order(lines: list[str]) -> tuple[list[str], list[int]]:
     """The lines in reading order, each with its 1-based number in the text: prose set in two
     columns side by side ("5.2 Spin Press the SPIN button to     Spin: no final spin; the…") is
@@ -205,7 +220,8 @@ def _reading_order(lines: list[str]) -> tuple[list[str], list[int]]:
             parts.append(here)
             j += 1
         prose = sum(bool(re.search(r"[a-z]{3,} [a-z]{3,}", p[1] + " " + p[2])) for p in parts)
-        if j - i >= 3 and prose * 3 >= 2 * (j - i) and not _legend(parts):
+        headed = bool(parts) and i > 0 and _column_head(lines[i - 1], parts[0][0])
+        if j - i >= 3 and prose * 3 >= 2 * (j - i) and not _legend(parts) and not headed:
             out += [p[1] for p in parts] + [p[2] for p in parts]
             numbers += [k + 1 for k in range(i, j)] * 2
             i, column = j, parts[0][0]

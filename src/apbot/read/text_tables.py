@@ -26,11 +26,12 @@ def _cells(line: str) -> tuple[str, ...]:
     return tuple(c for c in re.split(r"\s{2,}(?![,;])|\t+", _strip_markup(line).strip()) if c)
 
 
-def _caption(lines: list[str], k: int) -> bool:
+def _caption(lines: list[str], k: int, breaks: set[int] | None = None) -> bool:
     """A short line standing alone above a table ("Steam chart (continued overleaf)"): a
-    caption, which no table header goes on from as a sentence would."""
+    caption, which no table header goes on from as a sentence would. A blank line of a page
+    break passed over (``breaks``) does not set it apart: the text runs on across the page."""
     line = lines[k].strip()
-    alone = k == 0 or not lines[k - 1].strip()
+    alone = k == 0 or (not lines[k - 1].strip() and k - 1 not in (breaks or set()))
     return alone and len(line) <= 60 and len(_cells(line)) == 1 and not line.endswith(",")
 
 
@@ -38,7 +39,8 @@ def _space_tables(
     lines: list[str], breaks: set[int] | None = None
 ) -> dict[int, tuple[tuple[str, ...], bool]]:
     """Tables drawn with spaces (text from a PDF): a header of three or more cells followed by
-    rows of two or more; a row's wrapped lines (set in from the left) go on its cells. A page
+    rows of two or more, or a header of two short column names over rows whose second cell
+    starts under the header's; a row's wrapped lines (set in from the left) go on its cells. A page
     break (``breaks``: 0-based lines the page layout passes over) inside a table — often right
     under its header — is passed over when a row follows it.
 
@@ -54,13 +56,15 @@ def _space_tables(
             and not re.search(r"[.:!?]$", before)
             and not before.isupper()
             and not before.startswith("#")  # a Markdown heading ends what came before
-            and not _caption(lines, i - 1)
+            and not _caption(lines, i - 1, breaks)
         ):
             i += 1  # the line goes on with a sentence from the line before: not a table header
             continue
-        if len(head) < 3 or "|" in lines[i] or len(lines[i]) > 200:
+        two = len(head) == 2 and _two_column_head(head)
+        if (len(head) < 3 and not two) or "|" in lines[i] or len(lines[i]) > 200:
             i += 1
             continue
+        column = _placed_cells(lines[i])[-1][0] if two else 0
         rows: list[int] = []
         more: dict[int, list[tuple[int, str]]] = {}  # row -> wrapped lines' cells, by position
         indent = len(lines[i]) - len(lines[i].lstrip())
@@ -79,11 +83,15 @@ def _space_tables(
             inset = len(lines[j]) - len(lines[j].lstrip()) > indent + 2
             if inset and "|" not in lines[j]:  # a wrapped line: of the header, or of a row
                 more.setdefault(rows[-1] if rows else i, []).extend(_placed_cells(lines[j]))
+            elif two and (len(cells) != 2 or abs(_placed_cells(lines[j])[-1][0] - column) > 2):
+                break  # a two-column table's rows keep its second column under the header's
             elif len(cells) >= 2 and "|" not in lines[j]:
                 rows.append(j)
             elif len(cells) != 1 or len(cells[0]) > 40:
                 break
             j += 1
+        if two and (more or not _two_column_rows(lines, rows, j)):
+            rows = []
         if len(rows) >= 2:
             out[i + 1] = (_joined_cells(lines[i], more.get(i, [])), True)
             for r in rows:
@@ -94,6 +102,29 @@ def _space_tables(
         else:
             i += 1
     return out
+
+
+def _two_column_head(cells: tuple[str, ...]) -> bool:
+    """Two short column names ("Key   What it does", "Roast   Suggested temperature"): no
+    sentence, no item of a key legend ("TEMP   Sets the temperature." ends in a stop; a
+    definition starts in lower case), no number in the first (a row of a display legend; a
+    model's name may head the second column: "Item   TL-70")."""
+    return not re.search(r"\d", cells[0]) and all(  # ("SET 60°C   Set temperature": a row)
+        len(cell) <= 25
+        and len(cell.split()) <= 4
+        and re.match(r"[A-Z]", cell)
+        and not re.search(r"[.!?:;,]$", cell)
+        for cell in cells
+    )
+
+
+def _two_column_rows(lines: list[str], rows: list[int], end: int) -> bool:
+    """Rows of a two-column table stand alone: the block ends at a blank line, and no row goes
+    on with the row above (a first cell "(flame)" or one in lower case is a wrapped legend,
+    read as running text, as is one with lines set in under a row)."""
+    if end < len(lines) and lines[end].strip():
+        return False
+    return not any(re.match(r"[(a-z]", _cells(lines[r])[0]) for r in rows)
 
 
 def _lines_up(head: str, row: str) -> bool:

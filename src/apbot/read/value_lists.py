@@ -384,11 +384,13 @@ def find_number_run(text: str) -> list[str] | None:
                 elif rest[0].lower() in ("cold", "cool"):  # a wash knob's first mark: a value
                     run.append(rest[0].lower())
                 rest = rest[1:]
-            for token in rest:
+            for k, token in enumerate(rest):
                 if re.fullmatch(r"\d+(?:[.,]\d+)?", token):
                     run.append(token)
-                else:
-                    break
+                    continue
+                if token.lower() in ("cold", "cool") and k >= 3 and not {"cold", "cool"} & set(run):
+                    run.append(token.lower())  # "printed 90 60 40 30 20 ❄": the last mark, cold
+                break
             if len(run) >= 3:
                 return run
     return None

@@ -161,8 +161,13 @@ _FIRST_RE = re.compile(
     re.IGNORECASE,
 )
 _MOST_RE = re.compile(
-    rf"\b(?:longest|maximum|highest|max\.?)\b[^.;]*?\b(?:is|of)\s+({NUM})\s*({UNIT})(?!\w)",
+    rf"\b(?:longest|maximum|highest|heaviest|largest|max\.?)\b[^.;]*?\b(?:is|of)\s+({NUM})\s*"
+    rf"({UNIT})(?!\w)",
     re.IGNORECASE,
+)
+# "Tap DEFROST once for every 100 g of food": each tap adds 100 g, the first gives 100 g
+_ONCE_FOR_RE = re.compile(
+    rf"\bonce\s+(?:for|per)\s+(?:each|every)\s+({NUM})\s*({UNIT})(?!\w)", re.IGNORECASE
 )
 
 
@@ -284,7 +289,7 @@ def find_bounds(texts: list[str]) -> Range | None:
     longest setting alone ("the longest setting is 13 hours") is a range from 0."""
     first = most = None
     for text in texts:
-        first = first or _FIRST_RE.search(text)
+        first = first or _FIRST_RE.search(text) or _ONCE_FOR_RE.search(text)
         most = most or _MOST_RE.search(text)
     if not most:
         return None
@@ -296,9 +301,12 @@ def find_bounds(texts: list[str]) -> Range | None:
     if low is None or high is None:
         return None
     if unit != top:
-        if not (is_time_unit(unit) and is_time_unit(top)):
+        if is_time_unit(unit) and is_time_unit(top):
+            high = seconds(high, top) / seconds(1, unit)
+        elif (same := rescale(high, top, unit)) is not None:
+            high = same  # "once for every 100 g" … "the heaviest setting is 2 kg": 2000 g
+        else:
             return None
-        high = seconds(high, top) / seconds(1, unit)
     return Range(low, high, unit, low) if low < high else None
 
 
@@ -476,7 +484,8 @@ ON_OFF_RE = re.compile(
     re.IGNORECASE,
 )
 EACH_PRESS_RE = re.compile(
-    r"\b(?:each|every|repeated(?:ly)?|successive)\s+(?:press|touch|tap|push"
+    r"\bonce\s+(?:for|per)\s+(?:each|every)\s+\d"  # "tap it once for every 100 g"
+    r"|\b(?:each|every|repeated(?:ly)?|successive)\s+(?:press|touch|tap|push"
     # ("every click of the dial changes the temperature": the dial's detents, not presses; "each
     # press of the timer knob" is a press all the same)
     r"|click(?!\w*\s+of\s+the\s+(?:\w+\s+)?(?:dial|knob|wheel|ring|selector|encoder)\b))",
