@@ -284,3 +284,45 @@ def test_a_one_digit_count_typed_after_a_menu_is_found_from_two_typed_digits() -
         r.startswith("thaw_menu_quantity: found under press_thaw, then the digits")
         for r in episode.repairs
     )
+
+
+def test_a_key_read_as_a_switch_is_walked_when_the_goal_says_a_number_for_it() -> None:
+    # the reader took FAN for an on/off "boost" switch; the user asks for fan 3, which no
+    # switch holds: the key is walked, the steps it shows are the setting, the switch is gone
+    lit = ("power: {type: discrete, values", "power: {type: discrete, initial: 'on', values")
+    belief = panel(
+        lit,
+        ('"on": "FAN {fan}"', '"on": ""'),
+        without("fan"),
+        ("  sync: {type", '  boost: {type: discrete, values: ["off", "on"]}\n  sync: {type'),
+        ("{actions: [press_fan], variable: fan, effect: next}", "{actions: [press_fan], "
+         "variable: boost, effect: toggle}"),
+    )  # fmt: skip
+    episode = run(panel(lit), belief, {"fan": 3})
+    assert any(r.startswith("fan: found under press_fan") for r in episode.repairs)
+    assert "boost" not in episode.repairs[-1]
+
+
+def test_a_key_whose_role_takes_the_value_is_not_walked_for_another_setting() -> None:
+    # the same switch, and a word it holds: the key keeps its role, nothing found under it
+    from apbot.model.key_roles import misread_key
+
+    belief = model_from(
+        """
+        controls: [{id: fan}]
+        variables:
+          boost: {type: discrete, values: ["off", "on"]}
+          speed: {type: numeric, unit: "%", ranges: [[20, 100, 20]]}
+        actions:
+          press_fan: {control: fan}
+        features:
+          boost:
+            - {actions: [press_fan], variable: boost, effect: toggle}
+          speed:
+            - {actions: [press_fan], variable: speed, effect: next}
+        """,
+        check=False,
+    )
+    assert not misread_key(belief, "press_fan", "on")
+    assert not misread_key(belief, "press_fan", 3)  # the speed it also steps holds a number
+    assert misread_key(belief, "press_fan", "400 g")  # a weight is neither a switch nor a %

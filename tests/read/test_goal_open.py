@@ -150,6 +150,60 @@ def test_with_no_key_to_try_a_quantity_is_the_next_step_of_the_choice_beside_it(
     assert not any(name.endswith("_weight") for name in goal)
 
 
+# a seed soaker: the reader took SOAK for an on/off switch; the panel steps a weight with it
+SOAKER = model_from(
+    """
+    controls: [{id: soak}, {id: rinse}, {id: start}]
+    variables:
+      soak: {type: discrete, values: ["off", "on"], label: SOAK}
+      rinse: {type: discrete, values: [light, heavy], label: RINSE}
+      running: {type: discrete, values: ["off", "on"]}
+    actions:
+      press_soak: {control: soak}
+      press_rinse: {control: rinse}
+      press_start: {control: start}
+    features:
+      soak:
+        - {actions: [press_soak], variable: soak, effect: toggle}
+      set_rinse:
+        - {actions: [press_rinse], variable: rinse, effect: next}
+      start:
+        - {actions: [press_start], variable: running, effect: {to: "on"}}
+    """
+)
+
+
+def test_a_quantity_beside_a_keys_noun_that_its_role_cannot_hold_is_opened() -> None:
+    goal = parse_instruction(SOAKER, "Soak 300 g of lentils, then start", outside=[])
+    assert goal["soak_weight"] == "300 g"  # "soak" names a switch already: noun and kind
+    assert parse_instruction(SOAKER, "Soak for 8 hours", outside=[])["soak_time"] == "8 h"
+
+
+def test_a_value_the_keys_role_holds_or_a_choice_made_there_opens_no_setting_of_the_key() -> None:
+    # the switch holds "on"; no quantity at all
+    assert parse_instruction(SOAKER, "Soak the beans and start", outside=[]) == {
+        "soak": "on",
+        "running": "on",
+    }
+    # RINSE chose a word of its list right there: the weight is that choice's next step (as
+    # before), not a setting of the key itself
+    goal = parse_instruction(SOAKER, "A heavy rinse, 300 g of beans", outside=[])
+    assert goal == {"rinse": "heavy", "rinse_weight": "300 g"}
+    # a true model (no ``outside``) never gets one
+    assert "soak_weight" not in parse_instruction(SOAKER, "Soak 300 g of lentils")
+
+
+def test_a_switchs_noun_further_off_in_the_phrase_names_it_for_a_quantity_only() -> None:
+    # "with the soak key" after the weight: a switch holds no quantity, so the weight is its
+    goal = parse_instruction(SOAKER, "Put in 250 g of chickpeas with the soak key", outside=[])
+    assert goal["soak_weight"] == "250 g"
+    # a bare number is no quantity, and a comma ends the phrase: nothing reaches SOAK
+    goal = parse_instruction(SOAKER, "Rinse heavy in bowl 2 with soak", outside=[])
+    assert not any(name.startswith("soak_") for name in goal)
+    goal = parse_instruction(SOAKER, "Add 250 g of chickpeas, then soak", outside=[])
+    assert not any(name.startswith("soak_") for name in goal)
+
+
 # (found by a review: remarks about people and time around a plain instruction opened settings)
 THROW_MANUAL = """Heated throw. Keep it away from people who cannot feel heat.
 Press ZONE to pick the upper or lower zone, then ▲ / ▼ to set the level 1 to 9.

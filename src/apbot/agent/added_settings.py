@@ -237,3 +237,20 @@ def _control_id(action: str) -> str:
     if name[:1].isdigit():  # press_7: keypad key 7
         return f"key_{name}"
     return f"{name}_control" if name else "learnt_control"
+
+
+def unrole(model: ApplianceModel, key: str) -> ApplianceModel:
+    """The model with ``key``'s steps adjusting nothing: the walk of the key showed a setting
+    of another kind than the one the reader gave it (grams on a key read as a switch), so
+    those steps are plain steps, which the setting found is then written into."""
+    data = _dump(model)
+    dropped: set[str] = set()
+    for steps in data["features"].values():
+        for step in steps:
+            if key in step["actions"] and step.get("variable") is not None:
+                dropped.add(step.pop("variable"))
+                step.pop("effect", None)
+    still = {step.get("variable") for steps in data["features"].values() for step in steps}
+    for name in dropped - still:  # a setting the key alone was read to adjust: none at all
+        data["variables"].pop(name, None)
+    return ApplianceModel.model_validate(data)  # checked once the setting is written in

@@ -15,6 +15,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
+from apbot.agent.added_settings import unrole
 from apbot.agent.guards import GuardLearner
 from apbot.agent.reader import DisplayReader
 from apbot.agent.reentry import typed_after_named
@@ -38,6 +39,7 @@ from apbot.agent.setting_texts import (
     infer_setting,
     lamp_word,
 )
+from apbot.model.key_roles import adjusted_by, is_switch, misread_key
 from apbot.model.schema import DiscreteVariable
 from apbot.plan.plan import PlannedAction
 
@@ -53,6 +55,8 @@ class VariableFinder:
         self.session = session
         self.guards = guards
         self.trail: list[str | None] = []  # the full texts of the last walk (None: refused)
+        self.misread: set[str] = set()  # settings a walk showed the reader gave a wrong key
+        self.suspect: list[str] = []  # keys named like the setting sought, their role unfit
 
     def find(self, name: str, goal_value: Any, attempt: int = 1) -> bool:
         """Look for ``name`` on the panel (once per attempt); True when the belief now has it.
@@ -63,7 +67,7 @@ class VariableFinder:
         session = self.session
         if not session.budget.once("discover", f"{name}:{attempt}"):
             return False
-        keys = self._candidates(name)
+        keys = self._candidates(name, goal_value)
         single: dict[str, str] = {}  # keys that showed one text, again and again
         before = session.last.text
         for key in keys[:MAX_KEYS]:
@@ -187,22 +191,20 @@ class VariableFinder:
                 "explore", f"{name}: {key} shows {learnt.note}, which {goal_value!r} is not"
             )
             return False
+        model = session.belief.model
         try:
+            if entry is None and site is None and key in self.suspect:
+                model = unrole(model, key)  # the walk showed what the key really sets
             new = add_setting(
-                session.belief.model,
-                name,
-                learnt.variable,
-                key,
-                learnt.effect,
-                self._opposite(key),
-                entry=entry,
-                after=site,
-            )
+                model, name, learnt.variable, key, learnt.effect, self._opposite(key),
+                entry=entry, after=site,
+            )  # fmt: skip
         except RepairError as exc:
             session.episode.log("repair", f"could not add {name}: {exc}")
             return False
         new = self._as_lamp(new, name, before)
         under = f"{entry}, then {key}" if entry else key
+        self.misread |= set(session.belief.model.variables) - set(new.variables)
         session.adopt(new, f"{name}: found under {under}; {learnt.note}", setting_step(new, name))
         session.discovered.add(name)
         if new.variables[name].depends_on is not None:
@@ -380,9 +382,11 @@ class VariableFinder:
                     return model
         return model
 
-    def _candidates(self, name: str) -> list[str]:
+    def _candidates(self, name: str, goal_value: Any = None) -> list[str]:
         """Keys that start nothing the belief knows (unknown, unused, or only later steps of a
-        procedure), those named like the setting first; not digits."""
+        procedure), those named like the setting first; not digits. Then a key named like the
+        setting whose role in the belief cannot hold the goal's value ("400 g" on a DEFROST
+        key read as a switch): the reader may have got that key wrong."""
         session = self.session
         model = session.belief.model
         starting = {a for steps in model.features.values() for a in steps[0].actions}
@@ -400,7 +404,22 @@ class VariableFinder:
         # a key the belief gives a plain step only (press it, nothing changes) may be the very
         # key of the setting the reader missed: after the keys with no role at all
         ranked = sorted(unknown, key=lambda a: (not alike(a), a in plain, unknown.index(a)))
-        return [a for a in ranked if not _is_reverse(a)][:MAX_KEYS]
+        named = [a for a in ranked if alike(a)]
+        self.suspect = [
+            a
+            for a in offered
+            if a not in unknown
+            and alike(a)
+            and not _is_digit(a)
+            and goal_value is not None
+            and misread_key(model, a, goal_value)
+            and not any(  # a choice the goal makes with it: the key's role taken as read
+                v in session.context.goal and not is_switch(model, v) for v in adjusted_by(model, a)
+            )
+        ]
+        named += self.suspect
+        rest = [a for a in ranked if not alike(a)]
+        return [a for a in [*named, *rest] if not _is_reverse(a)][:MAX_KEYS]
 
     def _walk(self, key: str) -> list[str]:
         """Press ``key`` until the display repeats a text the belief cannot read; the texts."""

@@ -242,6 +242,8 @@ class ClosedLoop(Checks):
         variables = self.session.belief.model.variables
         self.missing = {}
         for name, raw in self.context.goal.items():
+            if name in self.finder.misread:
+                continue  # what the reader took a key to set, which a walk of it showed wrong
             if name not in variables:
                 if name in self.unfound:
                     continue
@@ -267,6 +269,8 @@ class ClosedLoop(Checks):
                 if loose(variables[name], raw) is None:  # not even a value of that kind
                     raise Stop(f"goal {name}={raw!r}: {exc}") from None
                 outside[name] = raw
+        for name in set(inside) & self.finder.misread:  # found wrong after it was taken
+            del inside[name]
         for problem in check_goal(self.session.belief.model, inside):  # not in the goal programme's
             name = str(problem.path[-1])
             outside[name] = self.context.goal[name]

@@ -27,8 +27,10 @@ If the finder cannot find it, the agent sets the rest of the goal (``agent/loop.
 from __future__ import annotations
 
 import re
+from collections.abc import Collection
 from typing import Any
 
+from apbot.model.key_roles import adjusted_by, is_switch, misread_key
 from apbot.model.schema import ApplianceModel, DiscreteVariable, TimeVariable
 from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab
 from apbot.read.goal_view import Goal, Model, own_stems
@@ -64,11 +66,16 @@ def open_entries(
     counted = _counted_stems(manual)
     roleless = _roleless_keys(model)
     nouns = {w: key for key in roleless for w in _key_words(key)}  # noun -> its key
+    roled: dict[str, list[str]] = {}  # noun -> the keys with a role it names
+    for key in _roled_keys(model, roleless):
+        for w in _key_words(key):
+            roled.setdefault(w, []).append(key)
     stepping = any(set(key.split("_")) & _STEPPING for key in roleless)
     known = _belief_stems(view)
     placed = set(where.values())  # kept as said for a setting the belief has
     taken = set(claimed) | {k for m in mentions if m.start in placed for k in range(m.start, m.end)}
     found: dict[str, Any] = {}
+    walked: set[str] = set()  # keys an entry already says the reader misread
     for mention in mentions:
         if mention.kind == "clock" or any(k in taken for k in range(mention.start, mention.end)):
             continue
@@ -76,10 +83,15 @@ def open_entries(
         if value is None:
             continue
         name = _key_noun(text, mention, nouns, known)
-        if name is None and stepping and mention.kind == "number":
-            name = _level_noun(text, mention, known, printed)
         if name is None and _remark(text, mention):
             continue
+        if name is None:
+            name, keys = _misread_noun(view, text, mention, value, roled, goal)
+            if keys & walked:
+                continue  # one setting sought under a key: "auto menu A-6, 800 g"
+            walked |= keys
+        if name is None and stepping and mention.kind == "number":
+            name = _level_noun(text, mention, known, printed)
         if name is None and not _of_its_kind(view, mention, text):
             name = _KIND_NAMES.get(_kind(mention) or "")
             if name == "time" and mention.value % 86400 == 0:
@@ -131,7 +143,7 @@ def _worded(text: Text, nouns: dict[str, str], known: set[str], taken: set[int])
     return found
 
 
-def _noun_at(text: Text, k: int, nouns: dict[str, str]) -> str | None:
+def _noun_at(text: Text, k: int, nouns: Collection[str]) -> str | None:
     """The role-less key noun the word at ``k`` is (``fans`` for FAN), if any."""
     word = text.word(k)
     if not word.isalpha() or word in _NOT_NAMES:
@@ -231,6 +243,77 @@ def _chosen_beside(
         if best is None or distance < best[0]:
             best = (distance, name)
     return None if best is None else best[1]
+
+
+def _roled_keys(model: ApplianceModel, roleless: list[str]) -> list[str]:
+    """Keys the belief gives a setting to adjust (not digits, not waiting)."""
+    return [
+        name
+        for name, spec in model.actions.items()
+        if name not in roleless
+        and spec.skill != "wait"
+        and not name.rsplit("_", 1)[-1].isdigit()
+        and adjusted_by(model, name)
+    ]
+
+
+def _misread_noun(
+    view: Model, text: Text, mention: Mention, value: Any, roled: dict[str, list[str]], goal: Goal
+) -> tuple[str | None, set[str]]:
+    """ "Defrost 400 g" with a DEFROST key the belief reads as a switch: the quantity beside
+    a key's own noun (or a switch's, in its clause: "thaw a kilo with the defrost pad"), which
+    no setting that key adjusts could hold, is likely the key's real setting (one per key).
+    Named after the noun, or after the noun and the quantity's kind where the noun names a
+    belief variable already (``defrost_weight``); with the keys it names."""
+    near = _neighbours(text, mention)
+    if text.word(mention.start - 1) == "for":  # "soak for 8 hours"
+        near.append(mention.start - 2)
+    beside = len(near)
+    if _kind(mention) is not None:  # a quantity with its unit, not a bare number
+        near += _in_clause(text, mention)
+    for at, k in enumerate(near):
+        noun = _noun_at(text, k, roled)
+        if noun is None:
+            continue
+        keys = roled[noun]  # every key it names: "zone" for ZONE and for ZONE+TIMER held
+        if not all(misread_key(view.model, key, value) for key in keys):
+            continue
+        if at >= beside and not all(
+            is_switch(view.model, name) for key in keys for name in adjusted_by(view.model, key)
+        ):
+            continue  # further off, only a switch's key: it holds no quantity at all
+        if any(_chose(view, name, goal) for key in keys for name in adjusted_by(view.model, key)):
+            return None, set()  # "the lower zone at 40 W": the key chose, the quantity is another's
+        if noun not in view.infos and noun not in goal:
+            return noun, set(keys)
+        return f"{noun}_{_KIND_NAMES.get(_kind(mention) or '', 'level')}", set(keys)
+    return None, set()
+
+
+_REACH = 5  # words between a quantity and a switch's noun in its phrase
+_PHRASE_ENDS = CLAUSE_ENDS | {",", "and", "then", "but"}
+
+
+def _in_clause(text: Text, mention: Mention) -> list[int]:
+    """The words of the quantity's phrase (up to a comma, an "and") within reach of it,
+    nearest first ("thaw a kilo of meat with the defrost pad")."""
+    out: list[tuple[int, int]] = []
+    for side in (-1, 1):
+        k = mention.start - 1 if side < 0 else mention.end
+        edge = k
+        while 0 <= k < len(text.tokens) and abs(k - edge) < _REACH:
+            if text.word(k) in _PHRASE_ENDS:
+                break
+            out.append((abs(k - edge), k))
+            k += side
+    return [k for _, k in sorted(out)]
+
+
+def _chose(view: Model, name: str, goal: Goal) -> bool:
+    """The goal sets ``name`` to a word of a list (not a switch on or off): the key's role
+    was taken as read."""
+    spec = view.model.variables.get(name)
+    return name in goal and isinstance(spec, DiscreteVariable) and not is_switch(view.model, name)
 
 
 def _roleless_keys(model: ApplianceModel) -> list[str]:
