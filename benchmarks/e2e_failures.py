@@ -39,6 +39,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from apbot.bench.suite import READER_DEVELOPMENT_CATEGORIES
 from apbot.model.domain import all_values
 from apbot.model.goal import parse_goal
 from apbot.model.schema import ApplianceModel
@@ -52,17 +53,7 @@ CAUSES = (
     "extra setting",
     "agent",
 )
-NINE = (
-    "air_fryer",
-    "bottle_washer",
-    "bread_maker",
-    "dehumidifier",
-    "induction_cooker",
-    "kettle",
-    "microwave",
-    "rice_cooker",
-    "washing_machine",
-)
+NINE = READER_DEVELOPMENT_CATEGORIES
 MAX_DOMAIN = 10_000  # a belief domain listed beyond this is not listed (a huge numeric range)
 
 

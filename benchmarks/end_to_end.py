@@ -19,15 +19,9 @@ from pathlib import Path
 
 from apbot.bench.records import TaskRecord
 from apbot.bench.runner import BenchOptions, run_benchmark
+from apbot.bench.suite import HELD_OUT_CATEGORIES
 
-HELD_BACK = (
-    "air_conditioner",
-    "blender",
-    "coffee_machine",
-    "dishwasher",
-    "slow_cooker",
-    "toaster_oven",
-)
+HELD_BACK = HELD_OUT_CATEGORIES
 
 
 def _figures(records: list[TaskRecord]) -> str:

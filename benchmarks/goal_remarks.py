@@ -16,21 +16,11 @@ from __future__ import annotations
 import argparse
 from collections import Counter
 
-from apbot.bench.suite import load_suite
+from apbot.bench.suite import READER_DEVELOPMENT_CATEGORIES, load_suite
 from apbot.read.goal import GoalParseError, parse_instruction
 from apbot.read.reader import read_manual
 
-DEV_CATEGORIES = (
-    "air_fryer",
-    "bottle_washer",
-    "bread_maker",
-    "dehumidifier",
-    "induction_cooker",
-    "kettle",
-    "microwave",
-    "rice_cooker",
-    "washing_machine",
-)
+DEV_CATEGORIES = READER_DEVELOPMENT_CATEGORIES
 
 REMARKS = (
     ", I'll be back in 10 minutes",

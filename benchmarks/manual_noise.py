@@ -25,22 +25,12 @@ from pathlib import Path
 
 from apbot.bench.records import TaskRecord
 from apbot.bench.runner import BenchOptions, run_benchmark
-from apbot.bench.suite import SuiteAppliance, load_suite
+from apbot.bench.suite import READER_DEVELOPMENT_CATEGORIES, SuiteAppliance, load_suite
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 from benchmarks.noise_perturb import KINDS, perturb
 
-NINE = (
-    "air_fryer",
-    "bottle_washer",
-    "bread_maker",
-    "dehumidifier",
-    "induction_cooker",
-    "kettle",
-    "microwave",
-    "rice_cooker",
-    "washing_machine",
-)
+NINE = READER_DEVELOPMENT_CATEGORIES
 
 
 def noisy_suite(

@@ -24,16 +24,13 @@ from typing import Any
 from apbot.agent.environment import SimulatorEnvironment
 from apbot.agent.episode import Episode, TaskContext
 from apbot.agent.registry import get_method
-from apbot.bench.suite import load_suite
+from apbot.bench.suite import HELD_OUT_CATEGORIES, READER_DEVELOPMENT_CATEGORIES, load_suite
 from apbot.model.goal import parse_goal
 from apbot.read import read_manual
 from apbot.read.evaluate import translate_goal
 
-NINE = (
-    "air_fryer,bottle_washer,bread_maker,dehumidifier,induction_cooker,kettle,microwave,"
-    "rice_cooker,washing_machine"
-)
-SIX = "blender,coffee_machine,slow_cooker,toaster_oven,dishwasher,air_conditioner"
+NINE = ",".join(READER_DEVELOPMENT_CATEGORIES)
+SIX = ",".join(HELD_OUT_CATEGORIES)
 
 
 def run(appliance: Any, task: Any, belief: Any, goal: dict, method: str) -> tuple[bool, str, Any]:

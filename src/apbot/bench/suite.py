@@ -44,6 +44,17 @@ GOAL_VARIABLES: dict[str, int] = {
     "air_conditioner": 6,
 }
 CATEGORIES = tuple(GOAL_VARIABLES)
+# The split that keeps the offline reader honest: it is developed on the first nine categories
+# and only measured, as aggregates, on the six written later in the style of real manuals.
+HELD_OUT_CATEGORIES = (
+    "blender",
+    "coffee_machine",
+    "slow_cooker",
+    "toaster_oven",
+    "dishwasher",
+    "air_conditioner",
+)
+READER_DEVELOPMENT_CATEGORIES = tuple(c for c in CATEGORIES if c not in HELD_OUT_CATEGORIES)
 # Categories of the development set of new appliance categories (benchmarks/data/newcats): no
 # bundled appliance is of these, so they stay out of CATEGORIES, but their appliances are
 # checked as the bundled ones are, with these goal sizes.
