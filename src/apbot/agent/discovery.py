@@ -35,9 +35,9 @@ from apbot.agent.setting_texts import (
     _fits,
     _kind_of,
     _typing,
-    _whole,
     infer_setting,
     lamp_word,
+    typed_setting,
 )
 from apbot.model.key_roles import adjusted_by, is_switch, misread_key
 from apbot.model.schema import DiscreteVariable
@@ -261,7 +261,7 @@ class VariableFinder:
         typing = _typing(goal_value)
         if typing is None or len(digits) < 10:
             return False
-        kind, typed, value, fmt = typing
+        _, typed, value, _ = typing
         self.guards.lift_all()
         lamps = session.perceiver.reader.lamp_texts()
         texts: list[str] = []
@@ -279,16 +279,10 @@ class VariableFinder:
             if not done.feedback.accepted:
                 return False
             texts.append(_main(done.feedback.text, lamps))
-        learnt = infer_setting(name, [texts[0], texts[-1]], kind, texts[-1])
-        if learnt is None or learnt.current != value or not _fits(learnt.variable, goal_value):
+        found = typed_setting(name, texts, typing, goal_value)
+        if found is None:
             return False
-        variable = dict(learnt.variable)
-        variable.pop("wrap", None)
-        if kind == "numeric":
-            width = max(len(typed), len(str(_whole(variable["initial"]) or "")))
-            variable["entry"] = {"format": fmt, "max_digits": width}
-        else:
-            variable["entry"] = {"format": fmt}
+        learnt, variable = found
         try:
             new = add_keypad_setting(
                 session.belief.model, name, variable, key, [digits[d] for d in sorted(digits)]

@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Any
 
 from apbot.agent.added_settings import add_keypad_step
 from apbot.agent.model_edits import RepairError
-from apbot.agent.setting_texts import _fits, _typing, _whole, infer_setting
+from apbot.agent.setting_texts import _typing, typed_setting
 from apbot.model.schema import DiscreteVariable
 
 if TYPE_CHECKING:
@@ -30,7 +30,7 @@ def typed_after_named(finder: VariableFinder, name: str, goal_value: Any) -> boo
     typing = _typing(goal_value)
     if typing is None or len(digits) < 10:
         return False
-    kind, typed, value, fmt = typing
+    _, typed, value, _ = typing
     lamps = session.perceiver.reader.lamp_texts()
     for key, site in finder._named_steps(name)[:2]:
         feature, index = site
@@ -55,16 +55,10 @@ def typed_after_named(finder: VariableFinder, name: str, goal_value: Any) -> boo
             texts.append(_main(done.feedback.text, lamps))
         if len(texts) < len(keyed):
             continue
-        learnt = infer_setting(name, [texts[0], texts[-1]], kind, texts[-1])
-        if learnt is None or learnt.current != value or not _fits(learnt.variable, goal_value):
+        found = typed_setting(name, texts, typing, goal_value)
+        if found is None:
             continue
-        variable = dict(learnt.variable)
-        variable.pop("wrap", None)
-        if kind == "numeric":
-            width = max(len(typed), len(str(_whole(variable["initial"]) or "")))
-            variable["entry"] = {"format": fmt, "max_digits": width}
-        else:
-            variable["entry"] = {"format": fmt}
+        learnt, variable = found
         try:
             new = add_keypad_step(
                 session.belief.model, name, variable, [digits[d] for d in sorted(digits)], site

@@ -265,3 +265,24 @@ def _whole(value: Any) -> int | None:
         return None
     number = float(match.group(1))
     return int(number) if number.is_integer() and number >= 0 else None
+
+
+def typed_setting(
+    name: str, texts: list[str], typing: tuple[str, str, Any, str], goal_value: Any
+) -> tuple[Learnt, dict[str, Any]] | None:
+    """The setting a typed entry showed (its first and last screens), as a variable typed on
+    the keypad — or None when the display did not end on the value typed. Shared by the
+    finder's two ways to type a missing setting: after an entry key, and after re-entering
+    a procedure."""
+    kind, typed, value, fmt = typing
+    learnt = infer_setting(name, [texts[0], texts[-1]], kind, texts[-1])
+    if learnt is None or learnt.current != value or not _fits(learnt.variable, goal_value):
+        return None
+    variable = dict(learnt.variable)
+    variable.pop("wrap", None)
+    if kind == "numeric":
+        width = max(len(typed), len(str(_whole(variable["initial"]) or "")))
+        variable["entry"] = {"format": fmt, "max_digits": width}
+    else:
+        variable["entry"] = {"format": fmt}
+    return learnt, variable
