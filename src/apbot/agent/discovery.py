@@ -271,11 +271,7 @@ class VariableFinder:
             if not entered.feedback.accepted or not texts[0] or not _unknown(entered):
                 return False
         for digit in typed:
-            action = digits[digit]
-            planned = (
-                session.planned(action) if action in session.belief.model.actions else None
-            ) or _planned(action)
-            done = session.press(planned, exploring=True)
+            done = _press_digit(session, digits[digit])
             if not done.feedback.accepted:
                 return False
             texts.append(_main(done.feedback.text, lamps))
@@ -478,6 +474,13 @@ def _unknown(done: Executed) -> bool:
 def _is_reverse(action: str) -> bool:
     """The backward key of a pair: the finder walks the forward one."""
     return action.endswith(("_ccw", "_down", "_minus", "_prev"))
+
+
+def _press_digit(session: Session, action: str) -> Executed:
+    """One key of a typed entry, as the belief plans it where it knows the key."""
+    known = action in session.belief.model.actions
+    planned = (session.planned(action) if known else None) or _planned(action)
+    return session.press(planned, exploring=True)
 
 
 def _planned(action: str) -> PlannedAction:

@@ -23,7 +23,7 @@ def typed_after_named(finder: VariableFinder, name: str, goal_value: Any) -> boo
     the food, then type the weight"): press its key until the display shows again the
     choice the belief holds (the programme the rest of the goal set), then type the goal's
     value; a display that then shows it is the setting, that procedure's next step."""
-    from apbot.agent.discovery import _digit_keys, _main, _planned  # it imports this module
+    from apbot.agent.discovery import _digit_keys, _main, _press_digit  # it imports this module
 
     session = finder.session
     digits = _digit_keys(session.context.actions or tuple(session.offered))
@@ -45,11 +45,7 @@ def typed_after_named(finder: VariableFinder, name: str, goal_value: Any) -> boo
         # first (a one-digit entry takes the last; a longer one shows a value not asked for)
         keyed = typed if len(typed) > 1 else ("2" if typed == "1" else "1") + typed
         for digit in keyed:
-            action = digits[digit]
-            planned = (
-                session.planned(action) if action in session.belief.model.actions else None
-            ) or _planned(action)
-            done = session.press(planned, exploring=True)
+            done = _press_digit(session, digits[digit])
             if not done.feedback.accepted:
                 break
             texts.append(_main(done.feedback.text, lamps))
