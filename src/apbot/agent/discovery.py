@@ -12,10 +12,18 @@ a data edit the checker validates like any other.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
 from typing import Any
 
 from apbot.agent.added_settings import unrole
+from apbot.agent.finder_keys import (
+    _digit_keys,
+    _is_digit,
+    _is_reverse,
+    _main,
+    _planned,
+    _press_digit,
+    _unknown,
+)
 from apbot.agent.guards import GuardLearner
 from apbot.agent.reader import DisplayReader
 from apbot.agent.reentry import typed_after_named
@@ -41,7 +49,6 @@ from apbot.agent.setting_texts import (
 )
 from apbot.model.key_roles import adjusted_by, is_switch, misread_key
 from apbot.model.schema import DiscreteVariable
-from apbot.plan.plan import PlannedAction
 
 MAX_WALK = 60  # presses of one key while looking at a new setting
 MAX_KEYS = 6  # keys tried for one setting
@@ -448,57 +455,6 @@ class VariableFinder:
                 other = key[: -len(forward)] + backward
                 return other if other in offered else None
         return None
-
-
-def _digit_keys(actions: Sequence[str]) -> dict[str, str]:
-    """The keypad: digit → action (``press_7``)."""
-    return {
-        a.rsplit("_", 1)[-1]: a for a in actions if _is_digit(a) and len(a.rsplit("_", 1)[-1]) == 1
-    }
-
-
-def _is_digit(action: str) -> bool:
-    """A keypad digit: typing is not walking (a missing keypad setting is not looked for)."""
-    return action.rsplit("_", 1)[-1].isdigit()
-
-
-def _unknown(done: Executed) -> bool:
-    """The press showed text the belief cannot read (or reads only in part, or only as a value
-    its setting cannot have: ``DELAY 0:00`` for a ``DELAY MODE`` of standard/intensive)."""
-    seen = done.seen
-    return seen is not None and (
-        seen.unknown or seen.partial or (seen.screen is not None and seen.screen in seen.outside)
-    )
-
-
-def _is_reverse(action: str) -> bool:
-    """The backward key of a pair: the finder walks the forward one."""
-    return action.endswith(("_ccw", "_down", "_minus", "_prev"))
-
-
-def _press_digit(session: Session, action: str) -> Executed:
-    """One key of a typed entry, as the belief plans it where it knows the key."""
-    known = action in session.belief.model.actions
-    planned = (session.planned(action) if known else None) or _planned(action)
-    return session.press(planned, exploring=True)
-
-
-def _planned(action: str) -> PlannedAction:
-    """An action the belief does not know, as the panel would take it (a hold held long)."""
-    if action.startswith("hold"):
-        return PlannedAction(action, "hold", (), 5.0)
-    skill = (
-        "turn_ccw" if action.endswith("_ccw") else "turn_cw" if action.endswith("_cw") else "press"
-    )
-    return PlannedAction(action, skill, (), None)
-
-
-def _main(text: str, lamps: set[str]) -> str:
-    """The main display: what comes before the lamps (two spaces apart), known or not."""
-    parts = GAP.split(text.strip())
-    while len(parts) > 1 and parts[-1].casefold() in lamps:
-        parts.pop()
-    return parts[0]  # a lamp the belief does not know is no part of the setting's screen
 
 
 __all__ = ["DiscreteVariable", "VariableFinder", "infer_setting"]

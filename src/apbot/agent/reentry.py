@@ -10,6 +10,7 @@ import re
 from typing import TYPE_CHECKING, Any
 
 from apbot.agent.added_settings import add_keypad_step
+from apbot.agent.finder_keys import _digit_keys, _main, _planned, _press_digit, _unknown
 from apbot.agent.model_edits import RepairError
 from apbot.agent.setting_texts import _typing, typed_setting
 from apbot.model.schema import DiscreteVariable
@@ -23,8 +24,6 @@ def typed_after_named(finder: VariableFinder, name: str, goal_value: Any) -> boo
     the food, then type the weight"): press its key until the display shows again the
     choice the belief holds (the programme the rest of the goal set), then type the goal's
     value; a display that then shows it is the setting, that procedure's next step."""
-    from apbot.agent.discovery import _digit_keys, _main, _press_digit  # it imports this module
-
     session = finder.session
     digits = _digit_keys(session.context.actions or tuple(session.offered))
     typing = _typing(goal_value)
@@ -81,8 +80,6 @@ def typed_after_named(finder: VariableFinder, name: str, goal_value: Any) -> boo
 def _reenter(finder: VariableFinder, key: str, chosen: str, held: Any) -> bool:
     """Press ``key`` until the display shows ``chosen`` at the value the belief holds again
     (once round its list at most); False when refused or never shown."""
-    from apbot.agent.discovery import _main, _planned, _unknown  # it imports this module
-
     session = finder.session
     spec = session.belief.model.variables.get(chosen)
     if not isinstance(spec, DiscreteVariable):

@@ -1,0 +1,66 @@
+"""The keys the variable finder presses and the screens it reads, apart from the finder itself.
+
+The finder (:mod:`apbot.agent.discovery`) and its last resort, re-entering a procedure
+(:mod:`apbot.agent.reentry`), both type digits, press keys the belief does not know, and read a
+setting's part of a display; these small helpers are that shared ground, kept here so that
+both import them without importing each other.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from apbot.agent.session import Executed, Session
+from apbot.agent.setting_texts import GAP
+from apbot.plan.plan import PlannedAction
+
+
+def _digit_keys(actions: Sequence[str]) -> dict[str, str]:
+    """The keypad: digit → action (``press_7``)."""
+    return {
+        a.rsplit("_", 1)[-1]: a for a in actions if _is_digit(a) and len(a.rsplit("_", 1)[-1]) == 1
+    }
+
+
+def _is_digit(action: str) -> bool:
+    """A keypad digit: typing is not walking (a missing keypad setting is not looked for)."""
+    return action.rsplit("_", 1)[-1].isdigit()
+
+
+def _unknown(done: Executed) -> bool:
+    """The press showed text the belief cannot read (or reads only in part, or only as a value
+    its setting cannot have: ``DELAY 0:00`` for a ``DELAY MODE`` of standard/intensive)."""
+    seen = done.seen
+    return seen is not None and (
+        seen.unknown or seen.partial or (seen.screen is not None and seen.screen in seen.outside)
+    )
+
+
+def _is_reverse(action: str) -> bool:
+    """The backward key of a pair: the finder walks the forward one."""
+    return action.endswith(("_ccw", "_down", "_minus", "_prev"))
+
+
+def _press_digit(session: Session, action: str) -> Executed:
+    """One key of a typed entry, as the belief plans it where it knows the key."""
+    known = action in session.belief.model.actions
+    planned = (session.planned(action) if known else None) or _planned(action)
+    return session.press(planned, exploring=True)
+
+
+def _planned(action: str) -> PlannedAction:
+    """An action the belief does not know, as the panel would take it (a hold held long)."""
+    if action.startswith("hold"):
+        return PlannedAction(action, "hold", (), 5.0)
+    skill = (
+        "turn_ccw" if action.endswith("_ccw") else "turn_cw" if action.endswith("_cw") else "press"
+    )
+    return PlannedAction(action, skill, (), None)
+
+
+def _main(text: str, lamps: set[str]) -> str:
+    """The main display: what comes before the lamps (two spaces apart), known or not."""
+    parts = GAP.split(text.strip())
+    while len(parts) > 1 and parts[-1].casefold() in lamps:
+        parts.pop()
+    return parts[0]  # a lamp the belief does not know is no part of the setting's screen
