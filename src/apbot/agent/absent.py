@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from apbot.agent.model_edits import RepairError, _dump, _rebuild
+from apbot.agent.model_edits import _dump, _rebuild
 from apbot.agent.session import MISSING, Executed, Session
 from apbot.model.schema import ApplianceModel, DiscreteVariable
 
@@ -37,13 +37,12 @@ def absent_here(session: Session, name: str, done: Executed, observed: Any) -> b
     if parent is None or not session.budget.once("case", f"absent:{name}"):
         return False
     here = str(session.belief.value(parent))
-    try:
-        new = depend_on(model, name, parent, here)
-    except RepairError as exc:
-        session.episode.log("repair", f"could not make {name} depend on {parent}: {exc}")
-        return False
-    session.adopt(new, f"{name} has no value in {parent} {here}", session.belief.pointer())
-    return True
+    return session.try_repair(
+        lambda: depend_on(model, name, parent, here),
+        f"{name} has no value in {parent} {here}",
+        session.belief.pointer(),
+        refused=f"could not make {name} depend on {parent}",
+    )
 
 
 def _programme(session: Session, name: str) -> str | None:

@@ -15,7 +15,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 from apbot.agent.perception import MISSING, UNREADABLE
-from apbot.agent.repair import RepairError, set_start
+from apbot.agent.repair import set_start
 from apbot.model.domain import build_domain
 
 if TYPE_CHECKING:
@@ -46,11 +46,12 @@ def learn_start(session: Session, name: str, before: Any, done: Executed | None)
         return False  # the belief did not hold the guess, or the value is no start it can hold
     if not session.budget.once("start", f"{name}:{case}"):
         return False
-    try:
-        new = set_start(model, name, case, observed)
-    except RepairError as exc:
-        session.episode.log("repair", f"could not learn where {case} starts {name}: {exc}")
+    if not session.try_repair(
+        lambda: set_start(model, name, case, observed),
+        f"{name} starts at {observed!r} in {case}",
+        session.belief.pointer(),
+        refused=f"could not learn where {case} starts {name}",
+    ):
         return False
-    session.adopt(new, f"{name} starts at {observed!r} in {case}", session.belief.pointer())
     session.belief.set_value(name, observed)
     return True

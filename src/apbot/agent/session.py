@@ -14,6 +14,7 @@ text means in the belief's terms.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import replace
 from typing import Any
 
@@ -22,6 +23,7 @@ from apbot.agent.budget import Budget
 from apbot.agent.environment import Environment, Feedback
 from apbot.agent.episode import TaskContext
 from apbot.agent.executed import AgentConfig, Executed, Stop
+from apbot.agent.model_edits import RepairError
 from apbot.agent.perception import MISSING, UNREADABLE, Perceiver, Seen
 from apbot.agent.pressing import press
 from apbot.agent.quantities import magnitude
@@ -245,6 +247,23 @@ class Session:
                 del self.contradicted[name]
         self.episode.repairs.append(note)
         self.episode.log("repair", note)
+
+    def try_repair(
+        self,
+        edit: Callable[[], ApplianceModel],
+        note: str,
+        pointer: tuple[str, int] | None,
+        refused: str,
+    ) -> bool:
+        """Adopt the model ``edit`` writes; when the edit is refused (the repaired model would
+        not pass the checker), log why after ``refused`` and keep the belief as it was."""
+        try:
+            new = edit()
+        except RepairError as exc:
+            self.episode.log("repair", f"{refused}: {exc}")
+            return False
+        self.adopt(new, note, pointer)
+        return True
 
     def count_reasoning_step(self) -> None:
         """One more decision; the run ends instead when the limit is reached."""

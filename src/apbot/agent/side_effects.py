@@ -67,12 +67,13 @@ class SideEffectLearner:
         kind = "alone" if value is None and not reset else "reset" if reset else "set"
         if not session.budget.once("side", f"{feature}:{index}:{name}:{kind}"):
             return False
-        try:
-            new = set_side_effect(session.belief.model, feature, index, name, value, reset)
-        except RepairError as exc:
-            session.episode.log("repair", f"could not change {feature}'s side effect: {exc}")
+        if not session.try_repair(
+            lambda: set_side_effect(session.belief.model, feature, index, name, value, reset),
+            f"{feature}: {done.action.name} {change} ({name})",
+            done.pointer,
+            refused=f"could not change {feature}'s side effect",
+        ):
             return False
-        session.adopt(new, f"{feature}: {done.action.name} {change} ({name})", done.pointer)
         session.belief.set_value(name, observed)
         return True
 
@@ -104,16 +105,13 @@ class SideEffectLearner:
         case = session.case(name)
         if case is None or not session.budget.once("side", f"start:{name}:{case}"):
             return False
-        try:
-            new = set_start(session.belief.model, name, case, observed)
-        except RepairError as exc:
-            session.episode.log("repair", f"could not change {name}'s start: {exc}")
-            return False
-        session.adopt(
-            new,
+        if not session.try_repair(
+            lambda: set_start(session.belief.model, name, case, observed),
             f"{name} starts at {observed} in {spec.depends_on} {case}",
             session.belief.pointer(),
-        )
+            refused=f"could not change {name}'s start",
+        ):
+            return False
         session.belief.set_value(name, observed)
         return True
 
@@ -130,14 +128,13 @@ class SideEffectLearner:
         case = session.case(name)
         if case is None or not session.budget.once("side", f"independent:{name}"):
             return False
-        try:
-            new = drop_dependence(session.belief.model, name, case)
-        except RepairError as exc:
-            session.episode.log("repair", f"could not make {name} independent: {exc}")
+        if not session.try_repair(
+            lambda: drop_dependence(session.belief.model, name, case),
+            f"{name} keeps its value whatever the {spec.depends_on}",
+            session.belief.pointer(),
+            refused=f"could not make {name} independent",
+        ):
             return False
-        session.adopt(
-            new, f"{name} keeps its value whatever the {spec.depends_on}", session.belief.pointer()
-        )
         session.belief.set_value(name, observed)
         return True
 
