@@ -74,6 +74,12 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "electric_smoker": 4,
     "treadmill": 3,
     "aquarium_light": 4,
+    # The fourth blind set (helper blind7, 5 December): blind for this round's work.
+    "pet_feeder": 3,
+    "chocolate_tempering_machine": 4,
+    "fridge_freezer": 3,
+    "massage_cushion": 4,
+    "baby_bottle_warmer": 4,
 }
 
 
