@@ -65,3 +65,56 @@ def test_the_pair_is_named_after_what_it_raises_not_a_nearby_noun() -> None:
     (var,) = _setter(model, "press_up") - {None}
     assert var == "target_number"
     assert model.variables[var].type == "numeric"
+
+
+# a heated mattress pad: one pair of arrows for the warmth of whichever side SIDE has chosen
+PAD = """# Heated mattress pad
+
+## Controller keys
+
+| Key | What it does |
+|---|---|
+| POWER | Switches the pad on or off. |
+| SIDE | Changes between the LEFT side and the RIGHT side. |
+| ▲ / ▼ | Raise / lower the warmth of the selected side, from 1 to 5. |
+"""
+PAD_ACTIONS = ["press_power", "press_side", "press_up", "press_down"]
+
+# a rowing console whose arrows set a target whose range depends on what GOAL picked
+ROWER_TABLE = """# Rowing console
+
+## Console keys
+
+| Key | Function |
+|---|---|
+| GOAL | Picks what the workout counts down: time, strokes or metres. |
+| UP / DOWN | Increase / decrease the target number on the display. |
+
+## Choosing the target number
+
+| Lamp | Goal | Range | Step | Value when selected |
+|---|---|---|---|---|
+| T | time | 2 - 60 minutes | 1 minute | 10 |
+| S | strokes | 50 - 2000 strokes | 50 strokes | 500 |
+| M | metres | 100 - 10000 m | 100 m | 2000 |
+"""
+ROWER_TABLE_ACTIONS = ["press_goal", "press_up", "press_down"]
+
+
+def test_an_amount_of_the_selected_side_is_kept_per_side() -> None:
+    model = read_manual(PAD, PAD_ACTIONS).model
+    (var,) = _setter(model, "press_up") - {None}
+    spec = model.variables[var]
+    (side,) = _setter(model, "press_side") - {None}
+    assert spec.depends_on == side and spec.remember
+    assert set(spec.cases) == {"left", "right"}
+    assert all(list(c.ranges[0][:2]) == [1, 5] for c in spec.cases.values())
+
+
+def test_a_bare_range_column_gives_the_pair_its_range_per_choice() -> None:
+    model = read_manual(ROWER_TABLE, ROWER_TABLE_ACTIONS).model
+    (var,) = _setter(model, "press_up") - {None}
+    spec = model.variables[var]
+    assert spec.depends_on is not None
+    assert [list(r) for r in spec.cases["strokes"].ranges] == [[50, 2000, 50]]
+    assert spec.cases["metres"].initial == 2000
