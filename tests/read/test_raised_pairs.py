@@ -118,3 +118,10 @@ def test_a_bare_range_column_gives_the_pair_its_range_per_choice() -> None:
     assert spec.depends_on is not None
     assert [list(r) for r in spec.cases["strokes"].ranges] == [[50, 2000, 50]]
     assert spec.cases["metres"].initial == 2000
+
+
+def test_an_arrow_cycle_in_brackets_starts_at_its_first_code() -> None:
+    from apbot.read.value_lists import find_list
+
+    found = find_list("MENU | Each touch lights the next menu code (M1 → M2 → … → M5 → M1).")
+    assert found is not None and found[0] == ["M1", "M2", "M3", "M4", "M5"]
