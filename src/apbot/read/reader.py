@@ -18,6 +18,7 @@ from apbot.model.validate import check_model
 from apbot.read.actions import ActionInfo, parse_actions
 from apbot.read.build import Builder
 from apbot.read.cases import apply_cases
+from apbot.read.cases_chosen import chosen_cases
 from apbot.read.cases_resets import apply_resets
 from apbot.read.cases_zones import zone_twins
 from apbot.read.codes import name_codes
@@ -53,6 +54,7 @@ def read_manual(
     builder = Builder(manual, infos, labels)
     assign(builder)
     apply_cases(builder)
+    chosen_cases(builder)
     zone_twins(builder)
     name_codes(builder)
     apply_resets(builder)

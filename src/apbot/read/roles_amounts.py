@@ -23,8 +23,11 @@ from apbot.read.roles_common import (
 from apbot.read.roles_confirm import ends_entry
 from apbot.read.roles_lists import dial_amount, dial_ends, dial_list, list_evidence
 from apbot.read.roles_numbered import numbered_entry
+from apbot.read.roles_raised import own_sentence, raised_quantity
 from apbot.read.shapes import CHOICE_WORDS, Evidence
 
+# units that name what a pair sets by themselves (a range in °C is a temperature)
+_UNIT_NOUNS = {"°C", "°F", "%", "min", "h", "s", "W"}
 ADD_RE = re.compile(r"^(add|plus|extra)_?(\d+)_?(s|sec|secs|seconds|m|min|mins|minutes)?$")
 
 
@@ -63,6 +66,11 @@ def assign_amounts(
         silent = [k for k in silent if k not in entry_keys]
     used_steppers: set[int] = set()
     used_digits = keyed_cook = False
+    raised = None  # what the shared pair's legend says it raises and lowers ("heat level")
+    if shared_pair and shared_pair["up"] and shared_pair["down"]:
+        raised = raised_quantity(
+            b, [token_of(b, n) for n in shared_pair["up"] + shared_pair["down"]]
+        )
     if steppers and shared_pair and entry_keys:
         # a stepping pair whose own sentences name what it sets, and no entry key sets that,
         # keeps its own setting: the entry keys then step theirs by themselves
@@ -70,18 +78,25 @@ def assign_amounts(
         pair_noun = stepped_noun(b, pair_tokens, None)
         names = [set(words(var_name(b, k))) for k in entry_keys]
         direct_nouns = {"temperature", "humidity", "volume", "weight", "speed"}  # set alone
-        if pair_noun in direct_nouns and not any(
-            any(
-                pair_noun.startswith(w[:4]) or w.startswith(pair_noun[:4]) for w in n if len(w) >= 3
-            )
-            for n in names
-        ):
+        own_pair = pair_noun in direct_nouns and not _named_by(names, [pair_noun])
+        if not own_pair and raised is not None:
+            # the pair's legend says what it raises ("Raise / lower the heat level"), and no
+            # entry key's name or own sentence names it (TIMER "sets the delay" while + "raises
+            # the delay" stays TIMER's)
+            nouns = raised[0].split("_")
+            for key in entry_keys:
+                said = [own_sentence(b, c, i) for c in key.controls for i in mentions_of(b, c)]
+                names.append({w for t in said for w in words(t) if len(w) >= 4})
+            own_pair = not _named_by(names, nouns)
+            pair_noun = raised[0]
+        if own_pair:
             steppers = steppers[1:] + steppers[:1]
             used_steppers = set()
             for key in entry_keys:
-                var = b.add_number(
-                    var_name(b, key), label_of(b, key.controls[0]), evidence[key.name], True
-                )
+                own = evidence[key.name]
+                if own.values and len(own.values) >= 3 and numeric_list(own.values):
+                    own = list_evidence(own)  # "1 h > 2 h > 3 h > 4 h > 6 h …": each one listed
+                var = b.add_number(var_name(b, key), label_of(b, key.controls[0]), own, True)
                 b.feature(
                     f"set_{var}", [{"actions": [key.name], "variable": var, "effect": "next"}]
                 )
@@ -167,7 +182,16 @@ def assign_amounts(
             tokens_ = [n for n in up + down]
             ev = b.evidence([token_of(b, n) for n in tokens_])
             noun = stepped_noun(b, [token_of(b, n) for n in tokens_], ev) or "level"
+            if (
+                raised is not None
+                and shared_pair
+                and up == shared_pair["up"]
+                and not (ev.ranges and ev.ranges[0].unit in _UNIT_NOUNS)
+            ):
+                noun = raised[0]  # "Raise / lower the goal value": the pair's own quantity
             var = b.add_number(noun, noun.upper(), ev, cyclic=False)
+            if raised is not None and noun == raised[0]:
+                b.note(f"variables.{var}", "the quantity the pair raises and lowers", raised[1])
             b.feature(
                 f"set_{var}",
                 [
@@ -300,6 +324,17 @@ def assign_leftovers(b: Builder, silent: list[ActionInfo], evidence: dict[str, E
             f"features.{var}",
             f"{key.name} toggles a setting of its own (the manual says nothing clear)",
         )
+
+
+def _named_by(names: list[set[str]], nouns: list[str]) -> bool:
+    """Whether a set of words names one of the nouns (a shared stem of four letters)."""
+    return any(
+        noun.startswith(w[:4]) or w.startswith(noun[:4])
+        for n in names
+        for w in n
+        if len(w) >= 3
+        for noun in nouns
+    )
 
 
 def _keypad_entry(spec: dict[str, Any]) -> None:

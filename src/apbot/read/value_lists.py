@@ -178,6 +178,8 @@ def find_list(text: str) -> tuple[list[str], str] | None:
     amount = re.search(rf"(?<![\w.])({NUM}\s*{UNIT})\s*$", parts[0], re.I)
     if len(parts) >= 3 or (len(parts) == 2 and all(_value_like(p, True) for p in parts)):
         head = parts[0].split(":")[-1].split()  # "in this order: AUTO → ...", "Clockwise: Cotton"
+        if head and head[-1].startswith("(") and len(head[-1]) > 1:
+            head[-1] = head[-1][1:]  # "… the next programme code (P0 → P1 → …)": in brackets
         capital = [w for w in head if w.upper() == w and any(c.isalpha() for c in w)]
         trailing: list[str] = []  # "Tap FAN to step through AUTO →": the run before the arrow
         for w in reversed(head):

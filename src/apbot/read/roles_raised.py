@@ -1,0 +1,117 @@
+"""What a pair of keys raises and lowers, named where the manual gives the pair its use.
+
+A key legend or the pair's own sentence often says what the two keys move: "▲ / ▼ — Raise /
+lower the heat level of the selected zone", "− and + lower or raise the water temperature",
+"Increase / decrease the goal value". That quantity is the pair's own setting, even when its
+noun is none the reader knows as an amount (heat level, goal value, brightness): a key beside
+it that cycles its own list (TIMER "1 h > 2 h > …") does not take the pair over, and the
+pair's setting is named after the quantity rather than the most frequent noun nearby.
+"""
+
+from __future__ import annotations
+
+import re
+
+from apbot.read.build import Builder
+from apbot.read.labels import words
+from apbot.read.shapes import SETTING_NOUNS
+
+_VERB = (
+    r"(?:raise|lower|increase|decrease|reduce|turn\s+up|turn\s+down|step\s+up|step\s+down"
+    r"|raises|lowers|increases|decreases|reduces)"
+)
+_VERB_RE = re.compile(rf"\b{_VERB}\b", re.IGNORECASE)
+# "Raise / lower the heat level of …", "lower or raise the set temperature", "increases the …"
+_RAISED_RE = re.compile(
+    rf"\b{_VERB}(?:\s*(?:/|,|or|and)\s*{_VERB})?\s+(?:the\s+|its\s+|your\s+)?"
+    r"(?P<noun>[a-z][a-z-]*(?:\s+[a-z][a-z-]*){0,2})",
+    re.IGNORECASE,
+)
+# words that end the noun phrase ("the heat level OF the selected zone", "the value SHOWN")
+_STOP = {
+    "of", "on", "in", "by", "from", "to", "for", "with", "at", "shown", "that", "which",
+    "while", "when", "one", "each", "and", "or", "as", "is", "are", "a", "an", "the",
+    "until", "per", "step", "steps", "selected", "flashing", "displayed", "set",
+}  # fmt: skip
+# nouns that name no quantity by themselves ("the value that is flashing", "the setting")
+_BARE = {"value", "values", "setting", "settings", "number", "figure", "display", "it", "them"}
+
+
+def raised_quantity(b: Builder, tokens: list[str]) -> tuple[str, int] | None:
+    """The quantity the pair's own legend or sentence says it raises and lowers, as a variable
+    name ("heat_level"), with the unit it was read from; None when no unit naming the pair
+    says so, or when its units name two different quantities."""
+    found: dict[str, int] = {}
+    for token in tokens:
+        lab = b.labels.get(token)
+        if lab is None:
+            continue
+        for i in lab.mentions:
+            text = b.manual.units[i].text
+            pos = _after_label(text, lab.text)
+            for m in _RAISED_RE.finditer(text, pos):
+                if not _leads(text[pos : m.start()]):
+                    continue  # "Next lower output step": an adjective, not what the key does
+                rest = text[m.start("noun") :].split(".")[0]
+                other = re.search(r"\bor\b(.*)", rest)
+                if (
+                    other
+                    and re.search(r"\bthe\b", other.group(1))
+                    and not _VERB_RE.search(other.group(1))
+                ):
+                    return None  # "raises the delay or, on BAKE only, the bake time": two
+                noun = _noun(m.group("noun"))
+                if noun:
+                    found.setdefault(noun, i)
+                break
+    if len(found) != 1:
+        return None
+    noun, at = next(iter(found.items()))
+    return noun, at
+
+
+def _leads(before: str) -> bool:
+    """The verb opens what the unit says of the key: first after its name and a separator
+    ("▲ / ▼ | Raise / lower …", "− and + lower or raise …") or after "to" ("press + to
+    increase the delay")."""
+    ws = words(before)
+    return (
+        not ws
+        or ws[-1] in {"to", "will", "then", "keys", "buttons", "key", "button"}
+        or (bool(before.rstrip()) and before.rstrip()[-1] in "|:;—–")
+    )
+
+
+def _after_label(text: str, label: str) -> int:
+    """Where the key's own part of a unit starts: after its printed name, when it is there."""
+    if label:
+        k = text.upper().find(label.upper())
+        if k >= 0:
+            return k + len(label)
+    return 0
+
+
+def _noun(phrase: str) -> str:
+    """ "heat level of the selected zone" → heat_level; "value shown" → "" (no quantity)."""
+    kept: list[str] = []
+    for w in words(phrase):
+        if w in _STOP:
+            if kept:
+                break
+            continue
+        kept.append(w)
+    if not kept or all(w in _BARE for w in kept):
+        return ""
+    known = [w for w in kept if w in SETTING_NOUNS and w != "setting"]
+    if known:  # "the water temperature", "the heat level": the quantity's own noun
+        return known[-1]
+    return "_".join(kept[:2])
+
+
+def own_sentence(b: Builder, token: str, unit: int) -> str:
+    """The sentence of a unit that names the key, from its name on ("… or, after TIMER, the
+    auto-off time in hours": what TIMER shows, not the heat level before it)."""
+    text = b.manual.units[unit].text
+    lab = b.labels.get(token)
+    start = _after_label(text, lab.text) if lab is not None else 0
+    return text[start:].split(". ")[0]
