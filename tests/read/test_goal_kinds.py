@@ -213,6 +213,10 @@ def test_a_superlative_of_a_kind_names_the_one_setting_of_that_kind(
     assert parse_instruction(light, sentence).get(name) == value
 
 
+def test_as_long_as_a_while_of_the_user_is_no_limit(light: ApplianceModel) -> None:
+    assert "soak" not in parse_instruction(light, "Keep the mat warm as long as I'm away.")
+
+
 def test_a_superlative_of_a_kind_with_two_settings_of_it_names_neither(
     rower: ApplianceModel,
 ) -> None:

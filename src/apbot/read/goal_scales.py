@@ -101,9 +101,15 @@ def _kind_of(text: Text, k: int) -> str | None:
     """The kind of quantity a superlative's own word measures ("the hottest" a temperature,
     "as long as it allows" a duration), whatever setting it is said of."""
     word = text.word(k)
-    if word in ("hot", "warm", "cold", "cool", "long", "short") and text.word(k - 1) != "as":
-        return None  # "a long wash", "hot water": no end of a scale
+    if word in ("hot", "warm", "cold", "cool", "long", "short"):
+        if text.word(k - 1) != "as" or text.word(k + 1) != "as":
+            return None  # "a long wash", "hot water": no end of a scale
+        if text.word(k + 2) not in _ITS_LIMIT:
+            return None  # "as long as I'm away" is a while, not the appliance's limit
     return _KIND_OF_WORD.get(word)
+
+
+_ITS_LIMIT = frozenset({"it", "possible", "allowed", "permitted", "they", "you"})
 
 
 def _named_specifically(info: VarInfo, text: Text, k: int) -> bool:
