@@ -33,10 +33,12 @@ from apbot.model.schema import ApplianceModel, DiscreteVariable
 from apbot.model.values import closest_matches, preview
 from apbot.read.goal_assign import assign_mentions, distinct, in_weeks
 from apbot.read.goal_error import GoalParseError
+from apbot.read.goal_kinds import kind_numbers
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
 from apbot.read.goal_open import open_entries
 from apbot.read.goal_remarks import without_remarks
 from apbot.read.goal_scales import superlatives
+from apbot.read.goal_spans import time_spans
 from apbot.read.goal_spelling import joined_compounds
 from apbot.read.goal_start import power_and_running
 from apbot.read.goal_switches import (
@@ -102,6 +104,8 @@ def parse_instruction(
     pronoun_ones(text, claimed)
     days = any(in_days(info.var) for info in view.infos.values() if info.role == "setting")
     mentions = distinct(in_weeks(text, find_mentions(text.tokens, skip=claimed), days))
+    mentions = time_spans(view, text, mentions, goal, claimed, where)
+    mentions = kind_numbers(view, text, mentions, goal, claimed, where)
     counting = assign_mentions(view, text, mentions, goal, claimed, where, outside)
     superlatives(view, text, goal, claimed, where)
     zero_settings(view, text, goal, claimed, where)

@@ -62,7 +62,7 @@ def fit(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
         if q[1] is not None:
             if q[1] == dimension and abs(q[0] - amount) < 1e-6 * max(1.0, abs(amount)):
                 return value
-        elif dimension is None or dimension == info.dimension:
+        elif dimension is None or dimension == info.dimension or _per_hundred(info, dimension):
             if abs(q[0] - amount) < 1e-6:
                 return value
         elif (
@@ -77,6 +77,15 @@ def fit(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
         or _show_quantity(info, mention)
         or _named_quantity(view, info, mention, domain)
     )
+
+
+def _per_hundred(info: VarInfo, dimension: str | None) -> bool:
+    """ "80 percent brightness" on levels listed 20, 40, … 100 without a unit: a percentage
+    of a setting with no unit of its own whose numbers end at exactly 100."""
+    if dimension != "ratio" or info.dimension is not None:
+        return False
+    numbers = [q[0] for v in info.values if (q := parse_quantity(str(v))) is not None]
+    return len(numbers) == len(info.values) >= 2 and max(numbers) == 100 and min(numbers) >= 0
 
 
 CODE = re.compile(r"[A-Za-z]{1,2}[- ]?(\d+)")

@@ -64,6 +64,9 @@ def superlatives(
                 continue  # named levels are a weak order: only "the most steam" says it
             if score > 0 and (best is None or score > best[0]):
                 best = (score, name)
+        kind = _kind_of(text, k) if end is not None else None
+        if kind and (best is None or not _named_specifically(view.infos[best[1]], text, k)):
+            best = _only_of_kind(view, goal, kind) or best
         if best is None:
             continue
         name = best[1]
@@ -83,8 +86,62 @@ def superlatives(
         claimed.add(k)
 
 
-_MORE = frozenset({"much", "many", "high", "hot", "long", "strong", "fast", "big", "loud"})
-_LESS = frozenset({"little", "few", "low", "cool", "short", "weak", "slow", "small", "quiet"})
+_MORE = frozenset({"much", "many", "high", "hot", "long", "strong", "fast", "big", "loud", "warm"})
+_LESS = frozenset(
+    {"little", "few", "low", "cool", "short", "weak", "slow", "small", "quiet", "cold"}
+)
+_KIND_OF_WORD = {
+    **dict.fromkeys(("hottest", "warmest", "coldest", "coolest"), "temperature"),
+    **dict.fromkeys(("hot", "warm", "cold", "cool"), "temperature"),
+    **dict.fromkeys(("longest", "shortest", "long", "short"), "time"),
+}
+
+
+def _kind_of(text: Text, k: int) -> str | None:
+    """The kind of quantity a superlative's own word measures ("the hottest" a temperature,
+    "as long as it allows" a duration), whatever setting it is said of."""
+    word = text.word(k)
+    if word in ("hot", "warm", "cold", "cool", "long", "short"):
+        if text.word(k - 1) != "as" or text.word(k + 1) != "as":
+            return None  # "a long wash", "hot water": no end of a scale
+        if text.word(k + 2) not in _ITS_LIMIT:
+            return None  # "as long as I'm away" is a while, not the appliance's limit
+    return _KIND_OF_WORD.get(word)
+
+
+_ITS_LIMIT = frozenset({"it", "possible", "allowed", "permitted", "they", "you"})
+
+
+def _named_specifically(info: VarInfo, text: Text, k: int) -> bool:
+    """A word of the setting's own stands near the superlative, not only "setting" or "level"
+    ("the warmest setting" names no LEVEL; "the hottest temperature" names TEMP)."""
+    for j in range(max(0, k - 4), min(len(text.tokens), k + 5)):
+        key = text.concepts[j]
+        if j != k and info.vocab.get(key, 0.0) > 0 and not generic(key):
+            return True
+    return False
+
+
+def _only_of_kind(view: Model, goal: Goal, kind: str) -> tuple[float, str] | None:
+    """ "on its warmest setting", "poach them as long as it allows": a superlative of a
+    temperature or a duration that names no setting is said of the one setting of that kind
+    still open (none when two could be meant: a clock and a timer are not both durations)."""
+    found = [
+        name
+        for name, info in view.infos.items()
+        if name not in goal
+        and info.role == "setting"
+        and _ordered(info)
+        and domain_values(view, info, goal)
+        and (
+            info.dimension == kind
+            or (kind == "temperature" and info.dimension == "fahrenheit")
+            or (kind == "time" and isinstance(info.var, TimeVariable) and info.timing == "duration")
+        )
+    ]
+    return (0.0, found[0]) if len(found) == 1 else None
+
+
 _AMOUNTS = frozenset({"much", "many", "little", "few"})
 
 

@@ -306,6 +306,11 @@ def _clock_at(tokens: list[Token], i: int) -> Mention | None:
             return None
         following = _word(tokens, number.end)
         if following not in _CLOCK_WORDS:
+            # "10 at night": a bare hour followed by the night
+            night = following == "at" and _word(tokens, number.end + 1) == "night"
+            if night and 6 <= number.value < 12:
+                hour = int(number.value) + 12
+                return Mention("clock", hour * 3600, i, number.end + 2, meridiem=True)
             # "7 in the evening": a bare hour followed by a day part
             if following == "in" and _word(tokens, number.end + 1) == "the":
                 part = _word(tokens, number.end + 2)

@@ -1,0 +1,86 @@
+"""Two times of day said as a span ("from 9 am until 7 pm", "on at 7:30 and off at 21:30")
+for a model that keeps a start and an end time of day (lights on and off, sunrise and sunset)."""
+
+from __future__ import annotations
+
+from apbot.model.schema import TimeVariable
+from apbot.read.goal_fit import fit
+from apbot.read.goal_text import Text
+from apbot.read.goal_values import name_words
+from apbot.read.goal_view import Goal, Model, VarInfo
+from apbot.read.numbers import Mention
+
+_STARTS = frozenset({"on", "start", "begin", "sunrise", "dawn", "open", "wake", "morning"})
+_ENDS = frozenset({"off", "end", "stop", "sunset", "dusk", "close", "finish", "night"})
+_FROM = frozenset({"from", "between"})
+_UNTIL = frozenset({"to", "until", "till", "til", "and", "-"})
+
+
+def time_spans(
+    view: Model,
+    text: Text,
+    mentions: list[Mention],
+    goal: Goal,
+    claimed: set[int],
+    where: dict[str, int],
+) -> list[Mention]:
+    """Give a span's two times to the start and the end setting; the mentions left over.
+
+    Only when the model has exactly one pair of times of day (not the clock) whose names say
+    which begins and which ends, and the text says the span: "from A to/until B", "between A
+    and B", or "on at A … off at B"."""
+    pair = _start_and_end(view)
+    if pair is None:
+        return mentions
+    start, end = pair
+    used: set[int] = set()
+    for i in range(len(mentions) - 1):
+        first, second = mentions[i], mentions[i + 1]
+        if first.kind != "clock" or second.kind != "clock" or start in goal or end in goal:
+            continue
+        span = first.lead in _FROM and text.word(first.end) in _UNTIL
+        span = span and second.start == first.end + 1
+        switched = _after(text, first, "on") and _after(text, second, "off")
+        if not (span or switched):
+            continue
+        a = fit(view, view.infos[start], first, goal)
+        b = fit(view, view.infos[end], second, goal)
+        if a is None or b is None:
+            continue
+        goal[start], goal[end] = a, b
+        where[start], where[end] = first.start, second.start
+        for m in (first, second):
+            claimed.update(range(m.start, m.end))
+        used.update((i, i + 1))
+    return [m for i, m in enumerate(mentions) if i not in used]
+
+
+def _after(text: Text, mention: Mention, word: str) -> bool:
+    """ "on at 7:30", "off at 9:30 pm": the time follows ON/OFF and "at"."""
+    return mention.lead == "at" and text.word(mention.start - 2) == word
+
+
+def _start_and_end(view: Model) -> tuple[str, str] | None:
+    """The one time-of-day setting named for a start and the one named for an end."""
+    starts, ends = [], []
+    for name, info in view.infos.items():
+        if info.role != "setting" or not isinstance(info.var, TimeVariable):
+            continue
+        if info.timing == "clock" or not _whole_day(info):
+            continue
+        words = _words(info)
+        if words & _STARTS and not words & _ENDS:
+            starts.append(name)
+        elif words & _ENDS and not words & _STARTS:
+            ends.append(name)
+    return (starts[0], ends[0]) if len(starts) == 1 and len(ends) == 1 else None
+
+
+def _words(info: VarInfo) -> set[str]:
+    return {w.casefold() for w in name_words(info.name) + name_words(info.var.label or "")}
+
+
+def _whole_day(info: VarInfo) -> bool:
+    """A time that runs round the day (a time of day, not a countdown)."""
+    values = info.values
+    return len(values) > 2 and str(values[0]) == "00:00:00" and str(values[-1]) >= "23:00:00"
