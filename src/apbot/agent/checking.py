@@ -146,6 +146,32 @@ class Checks:
         self.session.reread()
         return True
 
+    def _read_again(self, names: list[str]) -> bool:
+        """A goal setting whose screen the last looks brought up as text the belief cannot
+        read: learn how the display prints it from those texts (as after a macro action's
+        press: an on/off lamp's word, :func:`relit`, or a template, :meth:`_learn_display`)
+        rather than give up on it. True when the belief changed."""
+        session = self.session
+        for name in names:
+            presses = session.unread_presses.get(name, [])
+            if name not in session.unread:
+                continue
+            if any(relit(session, done) for done in reversed(presses)):
+                return True  # an on/off lamp's word, from the look that switched it
+            if not self._learn_display(name, presses):
+                continue
+            shown = self.displays.read(name, presses[-1].feedback.text)
+            if (
+                name in session.unread
+                and shown is not None
+                and not session.belief.set_value(name, shown)
+            ):
+                # read now, as a value the belief cannot hold: the walk settles it
+                session.unread.discard(name)
+                session.contradicted[name] = shown
+            return True
+        return False
+
     def _look_at(self, outside: dict[str, Any]) -> bool:
         focused = {
             name: raw

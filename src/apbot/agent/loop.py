@@ -151,6 +151,8 @@ class ClosedLoop(Checks):
                     return  # plan again from what the display showed
                 if not unseen and self._glance(set(inside)):
                     return  # plan again from what the display showed
+                if unseen and self._read_again(unseen):
+                    return  # the display rules repaired from the look's texts: plan again
                 if unseen:  # believed, but the display last said otherwise: it would be a guess
                     raise Stop(
                         "the belief holds the goal, but the display last showed "

@@ -55,6 +55,7 @@ from apbot.model.schema import TEMPLATE_FIELD, ApplianceModel, DiscreteVariable,
 __all__ = ["DisplayReader", "Hypothesis", "Reading", "Screen", "ScreenKind", "is_read"]
 
 _MAX_CACHE = 4096
+_GAP = re.compile(r"\s{2,}")  # between the parts of a display that prints several
 
 
 class DisplayReader(CompiledDisplay):
@@ -122,7 +123,26 @@ class DisplayReader(CompiledDisplay):
             ]
         if not found and text.strip():  # a word the belief does not know
             found = [h for p in self._loose if (h := self._match(p, text, parents, False))]
+        if not found and text.strip():
+            found = self._loose_head(text.strip(), parents)
         return Reading(text, tuple(_unique(found)))
+
+    def _loose_head(self, text: str, parents: dict[str, Any]) -> list[Hypothesis]:
+        """A word the belief does not know in the first part of a display that prints other
+        parts beside it, apart by a wide gap (``MODE continuous  TIMER 2 h``): panels print
+        their main screen first and the rest after it, so the first part is read alone (a
+        partial reading) as it would be with nothing beside it."""
+        gap = _GAP.search(text)
+        if gap is None:
+            return []
+        head = text[: gap.start()]
+        return [
+            h
+            for p in self._loose
+            if p.search is not None
+            and p.search.fullmatch(head)
+            and (h := self._match(p, head, parents, True, text))
+        ]
 
     def _without_lamps(self, text: str) -> str:
         """The text without the lamps the belief knows at its end (a lamp alone is no reading

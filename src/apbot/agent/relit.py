@@ -55,7 +55,11 @@ def relit(session: Session, done: Executed) -> bool:
         and (word := new_sign(lamp_for(spec, name, predicted, domain), before, after, known))
     ):
         mapping = {str(predicted): word, str(old): ""}
-    elif name not in model.display.indicators and (word := new_word(before, after, known)):
+    elif name not in model.display.indicators and (
+        # (its own label lit alone is a lamp too: "WARM" for the keep-warm the belief prints
+        # "WARM on" on its own screen)
+        word := new_word(before, after, known - _own_words(spec, name))
+    ):
         # the belief shows it on its own screen only ("MIST on"); the panel lights a word
         mapping, kind = {str(predicted): word, str(old): ""}, "lit"
     else:
@@ -131,6 +135,11 @@ def new_word(before: str, after: str, known: set[str]) -> str | None:
     was = {w.casefold() for w in before.split()}
     new = [w for w in after.split() if w.isalpha() and w.casefold() not in was | known]
     return new[0] if len(new) == 1 else None
+
+
+def _own_words(spec: Any, name: str) -> set[str]:
+    """The words of a setting's own label (case-folded)."""
+    return {w.casefold() for w in spec.display_label(name).split() if w.isalpha()}
 
 
 def _known_words(model: ApplianceModel) -> set[str]:

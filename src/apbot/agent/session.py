@@ -62,6 +62,9 @@ class Session:
         self.renamed: dict[str, dict[str, str]] = {}
         self.contradicted: dict[str, Any] = {}  # last shown as a value the belief cannot hold
         self.unread: set[str] = set()  # due on the display, but shown as the belief cannot read
+        # per setting, the presses that brought up its step and showed text the belief cannot
+        # read, since the display last showed it readably
+        self.unread_presses: dict[str, list[Executed]] = {}
         self.ever_seen: set[str] = set()  # shown (or shown absent) at least once
         # shown before a press the belief did not predict, not shown since: that press may have
         # changed them too (a CANCEL that also clears the delay), though the belief says not
@@ -87,7 +90,11 @@ class Session:
         """Perform ``action`` on the appliance and on the belief; the belief then follows what
         the display shows, and whatever contradicted its prediction is kept as a surprise
         (:func:`apbot.agent.pressing.press`)."""
-        return press(self, action, exploring, typing_on)
+        done = press(self, action, exploring, typing_on)
+        seen, name = done.seen, done.variable
+        if name is not None and seen is not None and (seen.unknown or not seen.showing(name)):
+            self.unread_presses.setdefault(name, []).append(done)
+        return done
 
     def planned(self, action: str) -> PlannedAction:
         spec = self.belief.model.actions[action]
@@ -143,6 +150,8 @@ class Session:
         self.stale -= set(seen.values) | set(seen.outside) | seen.absent
         self.blind -= set(seen.values) | set(seen.outside) | seen.absent
         self.unread -= set(seen.values) | set(seen.outside) | seen.absent
+        for name in (set(seen.values) | set(seen.outside) | seen.absent) & set(self.unread_presses):
+            del self.unread_presses[name]  # read since
         self.ever_seen |= set(seen.values) | set(seen.outside) | seen.absent
         self.doubtful -= set(seen.values) | set(seen.outside) | seen.absent
         self.rechosen -= set(seen.values) | set(seen.outside) | seen.absent
