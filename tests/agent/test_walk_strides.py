@@ -48,3 +48,17 @@ def test_a_stride_seen_on_the_panel_drops_the_minutes_no_key_reaches(
     )
     assert reached and episode.claimed_success, episode.failure
     assert any("adds 900" in r for r in episode.repairs), episode.repairs
+
+
+# the same panel, its quarter hours offset by five minutes (the grid runs through the values
+# the panel shows, not through midnight)
+OFFSET = OVEN.replace('[["00:00:00", "23:45:00", 900]]', '[["00:05:00", "23:50:00", 900]]')
+OFFSET = OFFSET.replace('initial: "08:00:00"', 'initial: "08:05:00"')
+
+
+def test_the_strides_run_through_the_values_shown() -> None:
+    episode, reached = run(
+        model_from(OFFSET), model_from(GUESSED), {"delay_end": "11:50:00", "baking": "on"}
+    )
+    assert reached and episode.claimed_success, episode.failure
+    assert any("adds 900" in r for r in episode.repairs), episode.repairs

@@ -165,10 +165,12 @@ class WalkLearning:
             # a key that adds more than believed leaves the believed values between its
             # strides unreached: what the step's keys reach from a value seen is the domain
             grid = _grid(new, pointer)
-            strides = _on_grid(numbers, grid, numbers[0] if numbers else 0.0)
+            shown = magnitude(spec, current)  # the grid runs through what the panel showed
+            anchor = shown if shown is not None else (numbers[0] if numbers else 0.0)
+            strides = _on_grid(numbers, grid, anchor)
             if grid is None or strides is None:
                 raise
-            new = self._snap_other_cases(new, name, grid, strides[0])
+            new = self._snap_other_cases(new, name, grid, anchor)
             ranges = ranges_from_values(strides)
             new = redefined(ranges)
         notes.append(f"{name}: ranges {ranges}{_ends(order.wrap)}")
