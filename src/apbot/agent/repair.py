@@ -70,12 +70,14 @@ def redefine_domain(
     wrap: bool | None = None,
     current: Any = None,
     initial: Any = None,
+    checked: bool = True,
 ) -> ApplianceModel:
     """A new domain for ``name`` (for the parent's ``case`` when it depends on one).
 
     Discrete variables take ``values`` in order; numeric and time variables take ``ranges`` of
     magnitudes (seconds for times). The initial value is ``initial`` when given and it fits,
     else kept when it still fits, else the observed ``current`` value (or the first value).
+    ``checked=False``: see :func:`set_effects`.
     """
     data = _dump(model)
     spec = model.variables[name]
@@ -124,7 +126,7 @@ def redefine_domain(
             )
     if wrap is not None:
         var["wrap"] = wrap
-    return _rebuild(data)
+    return _rebuild(data, checked)
 
 
 def _magnitude(spec: Any, value: Any) -> float:
@@ -134,9 +136,16 @@ def _magnitude(spec: Any, value: Any) -> float:
 
 
 def set_effects(
-    model: ApplianceModel, feature: str, step: int, effects: dict[str, Any]
+    model: ApplianceModel,
+    feature: str,
+    step: int,
+    effects: dict[str, Any],
+    checked: bool = True,
 ) -> ApplianceModel:
-    """Give actions of one step new effects (e.g. ``next`` ↔ ``prev``, ``{add: -5}``)."""
+    """Give actions of one step new effects (e.g. ``next`` ↔ ``prev``, ``{add: -5}``).
+
+    ``checked=False`` only validates the schema: for a first edit the caller completes (a
+    domain fitted to the new effect) before the whole model is checked."""
     data = _dump(model)
     entry = data["features"][feature][step]
     spec = model.features[feature][step]
@@ -145,7 +154,7 @@ def set_effects(
     else:
         current = {a: _plain(default_effect(spec, a, model)) for a in spec.actions}
     entry["effect"] = {**current, **effects}
-    return _rebuild(data)
+    return _rebuild(data, checked)
 
 
 def _plain(effect: Any) -> Any:

@@ -32,8 +32,8 @@ from apbot.agent.repair import (
     set_on_entry,
 )
 from apbot.agent.session import Executed, Session
-from apbot.model.domain import all_values
-from apbot.model.effects import parse_entry
+from apbot.model.domain import all_values, case_domains
+from apbot.model.effects import default_effect, parse_entry
 from apbot.model.schema import (
     Add,
     ApplianceModel,
@@ -146,17 +146,52 @@ class WalkLearning:
                     clamped_high=rising if order.wrap is False else None,
                 )
         ranges = ranges_from_values(numbers)
-        new = redefine_domain(
-            new,
-            name,
-            self.session.case(name),
-            ranges=ranges,
-            wrap=order.wrap if effect != "toggle" else None,
-            current=canonical(spec, magnitude(spec, current)),
-            initial=self._first_of_programme(name, forward),
-        )
+        initial = self._first_of_programme(name, forward)
+
+        def redefined(ranges: list[tuple[float, float, float]]) -> ApplianceModel:
+            return redefine_domain(
+                new,
+                name,
+                self.session.case(name),
+                ranges=ranges,
+                wrap=order.wrap if effect != "toggle" else None,
+                current=canonical(spec, magnitude(spec, current)),
+                initial=initial,
+            )
+
+        try:
+            new = redefined(ranges)
+        except RepairError:
+            # a key that adds more than believed leaves the believed values between its
+            # strides unreached: what the step's keys reach from a value seen is the domain
+            grid = _grid(new, pointer)
+            shown = magnitude(spec, current)  # the grid runs through what the panel showed
+            anchor = shown if shown is not None else (numbers[0] if numbers else 0.0)
+            strides = _on_grid(numbers, grid, anchor)
+            if grid is None or strides is None:
+                raise
+            new = self._snap_other_cases(new, name, grid, anchor)
+            ranges = ranges_from_values(strides)
+            new = redefined(ranges)
         notes.append(f"{name}: ranges {ranges}{_ends(order.wrap)}")
         return new, "; ".join(notes)
+
+    def _snap_other_cases(
+        self, model: ApplianceModel, name: str, grid: float, anchor: float
+    ) -> ApplianceModel:
+        """The other programmes' domains of ``name`` on the same grid (the same keys set it
+        there); left unchecked until the current case is written."""
+        spec = model.variables[name]
+        here = self.session.case(name)
+        for case, domain in case_domains(spec).items():
+            numbers = list(domain.magnitudes or ())
+            kept = _on_grid(numbers, grid, anchor)
+            if case == here or kept is None:
+                continue
+            model = redefine_domain(
+                model, name, case, ranges=ranges_from_values(kept), checked=False
+            )
+        return model
 
     def _first_of_programme(self, name: str, trace: list[Any]) -> Any:
         """A programme's starting value of a setting the belief only guessed (one it found on
@@ -184,7 +219,11 @@ class WalkLearning:
         )
         if change is not None and change != believed:
             amount: Any = int(change) if isinstance(spec, TimeVariable) else tidy(change)
-            model = set_effects(model, pointer[0], pointer[1], {action: {"add": amount}})
+            try:
+                model = set_effects(model, pointer[0], pointer[1], {action: {"add": amount}})
+            except RepairError:  # values between the strides: the domain repair drops them
+                change_only = {action: {"add": amount}}
+                model = set_effects(model, pointer[0], pointer[1], change_only, checked=False)
             notes.append(f"{action} adds {amount}")
         known = self.session.magnitudes(self.session.step_variable(pointer) or "")
         return model, sorted(set(known) | set(numbers))
@@ -335,6 +374,37 @@ def _keep_unseen(known: list[float], seen: list[float], clamped_high: bool | Non
         if (m < low and clamped_high is not False) or (m > high and clamped_high is not True)
     ]
     return sorted(set(seen) | set(kept))
+
+
+def _grid(model: ApplianceModel, pointer: tuple[str, int]) -> float | None:
+    """The greatest common divisor of what a step's ``add`` keys add (None: no such key).
+
+    A walk just showed a key's real stride; the belief's finer values between strides came
+    from a manual that gave none (or a guess), and no key of the step reaches them.
+    """
+    feature, index = pointer
+    step = model.features[feature][index]
+    amounts: list[float] = []
+    for action in step.actions:
+        effect = default_effect(step, action, model)
+        if isinstance(effect, Add):
+            add = time_step_seconds(effect.add) if isinstance(effect.add, str) else effect.add
+            amounts.append(abs(float(add)))
+    grid = common_step([0.0, *amounts]) if amounts else 0
+    return float(grid) if grid else None
+
+
+def _on_grid(numbers: list[float], grid: float | None, anchor: float) -> list[float] | None:
+    """The numbers a whole number of ``grid`` strides from ``anchor`` (None: all or fewer
+    than two are).
+
+    >>> _on_grid([0, 60, 600, 660, 1200], 600, 0)
+    [0, 600, 1200]
+    """
+    if not grid:
+        return None
+    kept = [n for n in numbers if abs((n - anchor) / grid - round((n - anchor) / grid)) < 1e-9]
+    return kept if 1 < len(kept) < len(numbers) else None
 
 
 def _direction(spec: Any, forward: list[Any], backward: list[Any] | None) -> float | None:
