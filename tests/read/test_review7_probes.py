@@ -1,0 +1,134 @@
+"""Misfires a fresh-eyes review found in round 7's goal and reader rules, each as a sentence or
+a small manual of our own: a weather word is no setting's scale end, a denied superlative sets
+nothing, a percentage is said of the level, a raised noun must be a quantity the manual gives."""
+
+from __future__ import annotations
+
+import pytest
+
+from apbot.model.load import loads_model
+from apbot.model.schema import ApplianceModel
+from apbot.read.goal import parse_instruction
+from apbot.read.numbers import find_mentions, tokenize
+
+from .test_goal_kinds import GROW_LIGHT, ROWER
+
+# a tea maker: one water temperature, a start key
+TEA = """
+appliance: {id: tea_1, category: kettle, name: "Brewa T2 tea maker", brand: B}
+controls:
+  - {id: heat_button, kind: button, label: "HEAT"}
+  - {id: go_button, kind: button, label: "GO"}
+variables:
+  heat:
+    type: numeric
+    unit: "°C"
+    ranges: [[60, 100, 10]]
+    initial: 100
+    wrap: true
+    label: "HEAT"
+  running:
+    type: discrete
+    values: ["off", "on"]
+actions:
+  press_heat: {control: heat_button}
+  press_go: {control: go_button}
+features:
+  heat:
+    - {actions: [press_heat], variable: heat, effect: next}
+  go:
+    - {actions: [press_go], variable: running, effect: toggle}
+display:
+  idle: "{heat}"
+  indicators: [running]
+"""
+
+
+@pytest.fixture(scope="module")
+def tea() -> ApplianceModel:
+    return loads_model(TEA)
+
+
+@pytest.fixture(scope="module")
+def light() -> ApplianceModel:
+    return loads_model(GROW_LIGHT)
+
+
+@pytest.fixture(scope="module")
+def rower() -> ApplianceModel:
+    return loads_model(ROWER)
+
+
+@pytest.mark.parametrize(
+    "sentence",
+    [
+        "Frostiest, coldest night so far - keep the trays snug.",
+        "The shed is warmest at noon; light at 50 %.",
+        "In the hottest week of July, lamps on at 6 am and off at 10 pm.",
+    ],
+)
+def test_a_superlative_of_the_weather_is_no_setting_end(
+    light: ApplianceModel, sentence: str
+) -> None:
+    assert "mat" not in parse_instruction(light, sentence)
+
+
+@pytest.mark.parametrize(
+    ("sentence", "name"),
+    [
+        ("Keep the trays as warm as you want them.", "mat"),
+        ("It is as cold as it gets out there; soak 10 minutes.", "mat"),
+        ("Light them as long as you can.", "soak"),
+    ],
+)
+def test_as_x_as_the_user_likes_is_no_limit(
+    light: ApplianceModel, sentence: str, name: str
+) -> None:
+    assert name not in parse_instruction(light, sentence)
+
+
+@pytest.mark.parametrize(
+    "sentence",
+    [
+        "On the chilliest, coldest day of winter, make me a pot of tea.",
+        "Hottest summer on record; tea please.",
+    ],
+)
+def test_a_superlative_of_the_day_is_no_temperature(tea: ApplianceModel, sentence: str) -> None:
+    assert "heat" not in parse_instruction(tea, sentence)
+
+
+@pytest.mark.parametrize(
+    "sentence",
+    ["White tea, but not the hottest water.", "Oolong - never the hottest, please."],
+)
+def test_a_denied_superlative_sets_nothing(tea: ApplianceModel, sentence: str) -> None:
+    assert "heat" not in parse_instruction(tea, sentence)
+
+
+def test_the_kind_superlative_with_its_own_word_still_counts(tea: ApplianceModel) -> None:
+    assert parse_instruction(tea, "Black tea at the hottest setting.").get("heat") == 100
+
+
+def test_the_percentage_said_of_the_level_wins_over_an_earlier_one(light: ApplianceModel) -> None:
+    goal = parse_instruction(light, "My tablet is at 50 %, light at 75 %.")
+    assert goal.get("level") == "75"
+
+
+@pytest.mark.parametrize(
+    "sentence", ["The reservoir is 50 % full.", "Humidity in the tent is 75 %, soak 10 minutes."]
+)
+def test_a_percentage_said_of_something_else_is_no_level(
+    light: ApplianceModel, sentence: str
+) -> None:
+    assert "level" not in parse_instruction(light, sentence)
+
+
+def test_a_bare_number_after_a_settings_name_is_its_value(rower: ApplianceModel) -> None:
+    assert parse_instruction(rower, "An evening row, drag 7 at night.").get("drag") == 7
+
+
+@pytest.mark.parametrize(("said", "hour"), [("at 12 at night", 0), ("by 1 at night", 1)])
+def test_midnight_and_the_small_hours_at_night(said: str, hour: int) -> None:
+    mentions = find_mentions(tokenize(f"lights off {said}"))
+    assert [(m.kind, m.value) for m in mentions] == [("clock", hour * 3600)]
