@@ -8,6 +8,7 @@ import pytest
 
 from apbot.model.load import loads_model
 from apbot.model.schema import ApplianceModel
+from apbot.read import read_manual
 from apbot.read.goal import parse_instruction
 from apbot.read.numbers import find_mentions, tokenize
 
@@ -132,3 +133,52 @@ def test_a_bare_number_after_a_settings_name_is_its_value(rower: ApplianceModel)
 def test_midnight_and_the_small_hours_at_night(said: str, hour: int) -> None:
     mentions = find_mentions(tokenize(f"lights off {said}"))
     assert [(m.kind, m.value) for m in mentions] == [("clock", hour * 3600)]
+
+
+def _spa(arrows: str) -> str:
+    """A foot spa manual of our own whose arrow pair's legend is ``arrows``."""
+    return f"""# Foot spa
+
+## The keys
+
+| Key | What it does |
+|---|---|
+| ON/OFF | Switches the spa on or off. |
+| ▲ / ▼ | {arrows} |
+| TIMER | Shows and changes the switch-off time. |
+
+## Switch-off time
+
+Each press of TIMER moves to the next time in this order:
+10 min > 20 min > 30 min > 45 min > 60 min > 10 min ...
+"""
+
+
+_SPA_KEYS = ["press_on_off", "press_up", "press_down", "press_timer"]
+
+
+def _arrow_settings(manual: str) -> set[str]:
+    model = read_manual(manual, _SPA_KEYS).model
+    return {
+        s.variable for steps in model.features.values() for s in steps if "press_up" in s.actions
+    } - {None}  # type: ignore[misc]
+
+
+@pytest.mark.parametrize(
+    ("arrows", "not_named"),
+    [
+        ("Choose the jet power, 1 to 5. Press ▲ to raise the heel rest.", "heel"),
+        ("Raise / lower the cover before filling; then choose the power from 1 to 5.", "cover"),
+        ("Alter the figure. Kept pressed, they will lower the hum of the pump.", "hum"),
+    ],
+)
+def test_a_raised_noun_the_manual_gives_no_amount_names_no_setting(
+    arrows: str, not_named: str
+) -> None:
+    names = _arrow_settings(_spa(arrows))
+    assert not any(not_named in n for n in names), names
+
+
+def test_a_raised_noun_with_its_range_still_names_the_pair() -> None:
+    names = _arrow_settings(_spa("Raise / lower the jet firmness, from 1 to 5."))
+    assert any("firmness" in n for n in names), names
