@@ -182,3 +182,27 @@ def test_a_raised_noun_the_manual_gives_no_amount_names_no_setting(
 def test_a_raised_noun_with_its_range_still_names_the_pair() -> None:
     names = _arrow_settings(_spa("Raise / lower the jet firmness, from 1 to 5."))
     assert any("firmness" in n for n in names), names
+
+
+# a dehumidifier of our own: the arrows set the humidity; MODE chooses how it runs
+_DRYER = """# Room dryer
+
+## Keys
+
+| Key | What it does |
+|---|---|
+| POWER | Switches the dryer on or off. |
+| MODE | Changes between AUTO, CONTINUOUS and LAUNDRY. |
+| ▲ / ▼ | {arrows} |
+""".format(
+    arrows="Set the target humidity from 35 to 75 %, in steps of 5 %. "
+    "▲ and ▼ change nothing in the current mode when it is LAUNDRY."
+)
+
+
+def test_a_condition_on_the_current_mode_does_not_make_the_amount_per_mode() -> None:
+    model = read_manual(_DRYER, ["press_power", "press_mode", "press_up", "press_down"]).model
+    (var,) = {
+        s.variable for steps in model.features.values() for s in steps if "press_up" in s.actions
+    } - {None}
+    assert model.variables[var].depends_on is None, model.variables[var]
