@@ -206,3 +206,15 @@ def test_a_condition_on_the_current_mode_does_not_make_the_amount_per_mode() -> 
         s.variable for steps in model.features.values() for s in steps if "press_up" in s.actions
     } - {None}
     assert model.variables[var].depends_on is None, model.variables[var]
+
+
+def test_a_duration_that_says_when_is_not_the_goal_figure(rower: ApplianceModel) -> None:
+    goal = parse_instruction(rower, "Within 20 minutes, I'd like to burn 250 kcal.")
+    assert goal.get("goal") == 250 and goal.get("goal_kind") == "calories"
+
+
+def test_two_figures_of_different_kinds_set_neither_and_km_is_no_drag(
+    rower: ApplianceModel,
+) -> None:
+    goal = parse_instruction(rower, "Row for 10 minutes to loosen up, then 6 km.")
+    assert "goal" not in goal and "drag" not in goal
