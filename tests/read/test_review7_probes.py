@@ -218,3 +218,13 @@ def test_two_figures_of_different_kinds_set_neither_and_km_is_no_drag(
 ) -> None:
     goal = parse_instruction(rower, "Row for 10 minutes to loosen up, then 6 km.")
     assert "goal" not in goal and "drag" not in goal
+
+
+def test_two_things_switched_on_and_off_are_no_span(light: ApplianceModel) -> None:
+    goal = parse_instruction(light, "Switch the soak on at 8 am, and the clock off at 6 pm.")
+    assert "on_time" not in goal and "off_time" not in goal
+
+
+def test_one_thing_switched_on_and_off_is_a_span(light: ApplianceModel) -> None:
+    goal = parse_instruction(light, "The lamp on at 7 am and the lamp off at 9 pm.")
+    assert (goal.get("on_time"), goal.get("off_time")) == ("07:00:00", "21:00:00")
