@@ -228,3 +228,7 @@ def test_two_things_switched_on_and_off_are_no_span(light: ApplianceModel) -> No
 def test_one_thing_switched_on_and_off_is_a_span(light: ApplianceModel) -> None:
     goal = parse_instruction(light, "The lamp on at 7 am and the lamp off at 9 pm.")
     assert (goal.get("on_time"), goal.get("off_time")) == ("07:00:00", "21:00:00")
+
+
+def test_a_superlative_of_the_day_sets_no_clock(light: ApplianceModel) -> None:
+    assert "clock" not in parse_instruction(light, "Longest day of the summer; light at 75 %.")

@@ -56,6 +56,8 @@ def superlatives(
         for name, info in view.infos.items():
             if name in goal or info.role != "setting" or not _ordered(info):
                 continue
+            if info.timing == "clock":
+                continue  # "the hottest day": the time of day now is no scale to pick an end of
             values = domain_values(view, info, goal)
             if scale_index is not None and end is None and len(values) != scale_index[1]:
                 continue
