@@ -174,9 +174,35 @@ def test_two_times_said_as_a_span_are_the_start_and_the_end(
     assert "clock" not in goal
 
 
-def test_a_span_without_a_start_and_end_pair_sets_neither(rower: ApplianceModel) -> None:
-    # the rower keeps no times of day: "from 7 to 8" is no setting of it
-    assert "goal" not in parse_instruction(rower, "I row from 7 am to 8 am.")
+def _with_variable(model: str, name: str, spec: str, key: str) -> str:
+    """The grow light with one more setting, entered by a key of its own then +/-."""
+    control = f'  - {{id: {name}_button, kind: button, label: "{key}"}}\n'
+    action = f"  press_{name}: {{control: {name}_button}}\n"
+    steps = (
+        f"  {name}:\n    - {{actions: [press_{name}]}}\n"
+        + "    - actions: [press_up, press_down]\n"
+        + f"      variable: {name}\n"
+        + "      effect: {press_up: next, press_down: prev}\n"
+    )
+    return (
+        model.replace("variables:\n", f"variables:\n  {name}:\n{spec}", 1)
+        .replace("controls:\n", "controls:\n" + control, 1)
+        .replace("actions:\n  press_set", "actions:\n" + action + "  press_set", 1)
+        .replace("features:\n", "features:\n" + steps, 1)
+    )
+
+
+_DAY_TIME = (
+    '    type: time\n    ranges: [["00:00:00", "23:30:00", 1800]]\n    initial: "06:00:00"\n'
+    "    wrap: true\n"
+)
+
+
+def test_a_span_without_one_start_and_end_pair_sets_neither() -> None:
+    # a second time of day named for a start (the mat's): which start "from 6 am" is, is unsaid
+    two = loads_model(_with_variable(GROW_LIGHT, "mat_on", _DAY_TIME, "MAT ON"))
+    goal = parse_instruction(two, "Keep the seedlings lit from 6 am until 8 pm.")
+    assert not {"on_time", "off_time", "mat_on"} & set(goal)
 
 
 def test_ten_at_night_is_a_time_of_day() -> None:
@@ -217,12 +243,16 @@ def test_as_long_as_a_while_of_the_user_is_no_limit(light: ApplianceModel) -> No
     assert "soak" not in parse_instruction(light, "Keep the mat warm as long as I'm away.")
 
 
-def test_a_superlative_of_a_kind_with_two_settings_of_it_names_neither(
-    rower: ApplianceModel,
-) -> None:
-    # the rower has no temperature; "as long as it allows" could be no duration of it either
-    goal = parse_instruction(rower, "Row as long as it allows.")
-    assert "goal" not in goal and "drag" not in goal
+def test_a_superlative_of_a_kind_with_two_settings_of_it_names_neither() -> None:
+    # a second duration (a mist time): "as long as it allows" could be either
+    spec = "    type: numeric\n    unit: min\n    ranges: [[1, 15, 1]]\n    initial: 5\n"
+    two = loads_model(_with_variable(GROW_LIGHT, "mist", spec, "MIST"))
+    goal = parse_instruction(two, "Run it as long as it allows.")
+    assert "soak" not in goal and "mist" not in goal
+    # (one duration only: the same sentence names it)
+    assert parse_instruction(loads_model(GROW_LIGHT), "Run it as long as it allows.") == {
+        "soak": 40
+    }
 
 
 @pytest.mark.parametrize(

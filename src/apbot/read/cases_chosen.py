@@ -21,7 +21,7 @@ from apbot.read.labels import words
 from apbot.read.text import Unit
 
 _CHOSEN_RE = re.compile(
-    r"\b(?:of|for|in)\s+the\s+(?:selected|chosen|current|active)\s+(?P<noun>[a-z]+)", re.I
+    r"\b(?:of|for)\s+the\s+(?:selected|chosen|current|active)\s+(?P<noun>[a-z]+)", re.I
 )
 _SPAN_RE = re.compile(r"(\d+(?:\.\d+)?)\s*(?:-|–|—|to)\s*(\d+(?:\.\d+)?)")
 _NUMBER_RE = re.compile(r"\d+(?:\.\d+)?")
@@ -55,7 +55,7 @@ def chosen_cases(b: Builder) -> None:
             if (
                 cases is None
                 and not spec.get("depends_on")
-                and _said_of_the_chosen(b, tokens, parent)
+                and _said_of_the_chosen(b, tokens, parent, name)
             ):
                 cases = {v: {"ranges": spec["ranges"]} for v in pspec["values"]}
                 if "initial" in spec:
@@ -100,9 +100,11 @@ def _paired_amounts(b: Builder) -> list[tuple[str, list[str]]]:
     return out
 
 
-def _said_of_the_chosen(b: Builder, tokens: list[str], parent: str) -> bool:
-    """The pair's own sentence says it sets its amount "of the selected zone", and the choice
-    is the zone's."""
+def _said_of_the_chosen(b: Builder, tokens: list[str], parent: str, name: str) -> bool:
+    """The pair's own sentence says it sets its amount "of the selected zone" (right after the
+    amount's own noun: "do nothing in the current mode" is a condition, not whose amount it
+    is), and the choice is the zone's."""
+    own = set(words(name.replace("_", " ")))
     pwords = set(words(parent.replace("_", " "))) | set(
         words(str(b.variables[parent].get("label", "")))
     )
@@ -113,7 +115,8 @@ def _said_of_the_chosen(b: Builder, tokens: list[str], parent: str) -> bool:
                 if label not in sentence.upper():
                     continue  # (the sentence naming the pair, in a legend of several keys)
                 for m in _CHOSEN_RE.finditer(sentence):
-                    if m.group("noun").lower() in pwords:
+                    said_of = words(sentence[: m.start()])[-3:]  # "the warmth OF the selected side"
+                    if m.group("noun").lower() in pwords and own & set(said_of):
                         return True
     return False
 

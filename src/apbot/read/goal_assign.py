@@ -103,6 +103,8 @@ def assign_mentions(
             if value is None:
                 continue
             score = near_vocab(info, text, mention.start, mention.end)
+            if score <= 0 and _a_state(info, text, mention):
+                continue  # "the tank is 50 % full": a percentage said of something else
             by = info.timing == "finish" and mention.kind == "clock" and mention.lead == "by"
             if info.timing in ("clock", "finish") and not near_vocab(
                 info, text, mention.start, mention.end, reach=12
@@ -147,6 +149,24 @@ def assign_mentions(
                 where[exc.setting] = mention.start
                 outside.append(str(exc))
     return counting
+
+
+_COPULAS = frozenset({"is", "are", "was", "were", "'s", "it's", "stands", "reads", "shows"})
+
+
+def _a_state(info: VarInfo, text: Text, mention: Mention) -> bool:
+    """A percentage its clause states of something ("my battery is at 25 %", "the tank is 50 %
+    full") rather than asks of the appliance: no level without a unit of its own takes it when
+    none of its words stand near."""
+    if mention.dimension != "ratio" or info.dimension is not None:
+        return False
+    for i in range(mention.start - 1, -1, -1):
+        word = text.word(i)
+        if word in CLAUSE_ENDS or word in (",", "-", "and", "but", "then"):
+            return False
+        if word in _COPULAS:
+            return True
+    return False
 
 
 def _after_its_case(info: VarInfo, text: Text, mention: Mention, goal: Goal) -> float:

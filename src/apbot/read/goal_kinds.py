@@ -48,24 +48,41 @@ def kind_numbers(
         kinds = {case: _case_kind(case) for case in var.cases}
         if sum(1 for k in kinds.values() if k) < 2:
             continue
+        found: list[tuple[int, Any, Any]] = []
         for i, mention in enumerate(mentions):
             kind, number = _kind_said(text, mention)
             case = next((c for c, k in kinds.items() if k and k == kind), None)
-            if case is None or number is None:
-                continue
+            if case is None or number is None or _relative(text, mention):
+                continue  # "in 30 minutes" says when, not how long
             if parent in goal and str(goal[parent]) != str(case):
                 continue
             value = _in_case(var, var.cases[case], number)
-            if value is None:
-                continue
+            if value is not None:
+                found.append((i, case, value))
+        if len({str(case) for _i, case, _v in found}) > 1:
+            # "5 minutes to warm up, then 8 km": two kinds, no telling which counts; a figure
+            # with its kind's unit ("8 km") is still this setting's, never another's
+            said = {i for i, _c, _v in found if mentions[i].kind != "duration"}
+            mentions = [m for i, m in enumerate(mentions) if i not in said]
+            continue
+        if found:
+            i, case, value = found[0]
+            mention = mentions[i]
             goal[name] = value
             where[name] = mention.start
             claimed.update(range(mention.start, mention.end))
             if parent not in goal and str(case) != str(_first(view, parent)):
                 goal[parent] = case
             mentions = mentions[:i] + mentions[i + 1 :]
-            break
     return mentions
+
+
+def _relative(text: Text, mention: Mention) -> bool:
+    """A duration counted from now ("in 30 minutes", "5 min from now"): a when, not an amount."""
+    after = " ".join(text.word(mention.end + d) for d in range(2))
+    return mention.kind == "duration" and (
+        text.word(mention.start - 1) in ("in", "within", "after") or after == "from now"
+    )
 
 
 def _case_kind(case: Any) -> str | None:

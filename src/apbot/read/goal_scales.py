@@ -46,6 +46,8 @@ def superlatives(
                 scale_index = (scale.index(said), len(scale))
         if end is None and scale_index is None:
             continue
+        if _denied(text, k):
+            continue  # "not the hottest water": no end of the scale is asked for
         if end is not None and _restates(text, k):
             continue  # "at the maximum of 75 °C": the quantity says it, for its own setting
         if end is not None and _names_set(view, text, k, goal):
@@ -54,6 +56,8 @@ def superlatives(
         for name, info in view.infos.items():
             if name in goal or info.role != "setting" or not _ordered(info):
                 continue
+            if info.timing == "clock":
+                continue  # "the hottest day": the time of day now is no scale to pick an end of
             values = domain_values(view, info, goal)
             if scale_index is not None and end is None and len(values) != scale_index[1]:
                 continue
@@ -66,7 +70,9 @@ def superlatives(
                 best = (score, name)
         kind = _kind_of(text, k) if end is not None else None
         if kind and (best is None or not _named_specifically(view.infos[best[1]], text, k)):
-            best = _only_of_kind(view, goal, kind) or best
+            only = _only_of_kind(view, goal, kind)
+            if only is not None and _of_a_setting(view.infos[only[1]], text, k):
+                best = only
         if best is None:
             continue
         name = best[1]
@@ -104,12 +110,73 @@ def _kind_of(text: Text, k: int) -> str | None:
     if word in ("hot", "warm", "cold", "cool", "long", "short"):
         if text.word(k - 1) != "as" or text.word(k + 1) != "as":
             return None  # "a long wash", "hot water": no end of a scale
-        if text.word(k + 2) not in _ITS_LIMIT:
+        if not _its_limit(text, k + 2):
             return None  # "as long as I'm away" is a while, not the appliance's limit
     return _KIND_OF_WORD.get(word)
 
 
-_ITS_LIMIT = frozenset({"it", "possible", "allowed", "permitted", "they", "you"})
+_ITS_LIMIT = frozenset({"possible", "allowed", "permitted"})
+# what the appliance itself may do at its limit: "as long as it allows", "as cool as it will go"
+_LIMIT_VERBS = frozenset(
+    {"will", "'ll", "can", "could", "may", "would", "allows", "allow", "lets", "let", "permits"}
+) | frozenset({"goes", "go", "gets", "get", "does", "do", "is"})
+# what may follow the limit in its clause: "as cool as it will go FOR the cuttings"
+_AFTER_LIMIT = frozenset({"for", "with", "to", "on", "please", "and", "then", "but"})
+
+
+def _its_limit(text: Text, j: int) -> bool:
+    """ "as long as it allows", "as possible": the comparison is closed by the appliance's own
+    limit, not by the user's wish ("as warm as you like") nor by the weather ("as cold as it
+    gets out there"): after "it"/"they" only a verb of what it can do, up to the clause end."""
+    if text.word(j) in _ITS_LIMIT:
+        return True
+    if text.word(j) not in ("it", "they"):
+        return False
+    seen = False
+    for i in range(j + 1, len(text.tokens)):
+        word = text.word(i)
+        if word in CLAUSE_ENDS or word in (",", "-") or (seen and word in _AFTER_LIMIT):
+            return seen
+        if word not in _LIMIT_VERBS:
+            return False
+        seen = True
+    return seen
+
+
+_DENIALS = frozenset({"not", "never", "don't", "dont", "no", "nothing"})
+
+
+def _denied(text: Text, k: int) -> bool:
+    """ "not the hottest water", "never the longest": a superlative its clause denies."""
+    for i in range(k - 1, max(-1, k - 4), -1):
+        word = text.word(i)
+        if word in CLAUSE_ENDS or word == ",":
+            return False
+        if word in _DENIALS or word.endswith("n't"):
+            return True
+    return False
+
+
+# words that make a superlative said of a setting ("the warmest SETTING", "the lowest LEVEL")
+_OF_SETTING = frozenset(
+    concept(w)
+    for w in ("setting", "settings", "level", "temperature", "heat", "one", "position", "mode")
+)
+
+
+def _of_a_setting(info: VarInfo, text: Text, k: int) -> bool:
+    """A superlative of a kind ("warmest", "as long as it allows") is said of the setting when
+    its own words or "setting"/"level" follow it, when "as ... as" closes it with the
+    appliance's limit, or at "its hottest"; "the coldest night", "warmest in the afternoon" are
+    the weather's."""
+    if text.word(k - 1) == "as":
+        return True  # _kind_of has checked the limit that closes it
+    j = k + 2 if text.word(k + 1) in ("possible", "available", "allowed") else k + 1
+    key = text.concepts[j] if j < len(text.concepts) else ""  # "the longest possible soak"
+    if key in _OF_SETTING or (key and info.vocab.get(key, 0.0) > 0):
+        return True
+    after = text.word(k + 1)
+    return text.word(k - 1) == "its" and (after in CLAUSE_ENDS or after in (",", ""))
 
 
 def _named_specifically(info: VarInfo, text: Text, k: int) -> bool:

@@ -41,6 +41,7 @@ def time_spans(
         span = first.lead in _FROM and text.word(first.end) in _UNTIL
         span = span and second.start == first.end + 1
         switched = _after(text, first, "on") and _after(text, second, "off")
+        switched = switched and _same_switched(text, first, second)
         if not (span or switched):
             continue
         a = fit(view, view.infos[start], first, goal)
@@ -58,6 +59,21 @@ def time_spans(
 def _after(text: Text, mention: Mention, word: str) -> bool:
     """ "on at 7:30", "off at 9:30 pm": the time follows ON/OFF and "at"."""
     return mention.lead == "at" and text.word(mention.start - 2) == word
+
+
+# words before "off" that name nothing switched ("on at 7 AND off at 9", "then TURN it off")
+_NO_THING = frozenset(
+    {"and", ",", "then", "turn", "turns", "turned", "switch", "switched", "switches", "go"}
+) | frozenset({"goes", "it", "them", "they", "back", "be", "but", "later"})
+
+
+def _same_switched(text: Text, first: Mention, second: Mention) -> bool:
+    """ "the mat on at 7 am, and the lights off at 9 pm" switches two things, not one span:
+    the thing named before OFF, when there is one, is the one named before ON."""
+    before_on, before_off = text.word(first.start - 3), text.word(second.start - 3)
+    if before_off in _NO_THING or before_off in ("", "the"):
+        return True
+    return before_off.rstrip("s") == before_on.rstrip("s")
 
 
 def _start_and_end(view: Model) -> tuple[str, str] | None:

@@ -229,6 +229,11 @@ _TIME_UNITS = {
     "day": 86400,
     "days": 86400,
 }
+# words a bare hour follows when it is a time of day ("off AT 10 at night", "FROM 9 in the
+# morning TO 7 in the evening")
+_TIME_LEADS = frozenset(
+    {"at", "by", "until", "till", "til", "to", "from", "and", "or", "before", "after", "around"}
+) | frozenset({"about", "past", "-", "–", "through", "between", "since", "tonight"})
 _DAY_PARTS_PM = ("afternoon", "evening", "tonight", "night")
 _DAY_PARTS_AM = ("morning",)
 _CLOCK_WORDS = ("am", "pm", "oclock")
@@ -306,10 +311,13 @@ def _clock_at(tokens: list[Token], i: int) -> Mention | None:
             return None
         following = _word(tokens, number.end)
         if following not in _CLOCK_WORDS:
-            # "10 at night": a bare hour followed by the night
+            # "10 at night": a bare hour followed by the night, after a word that leads a time
+            # ("drag 8 at night": a bare number after a setting's name is its value)
             night = following == "at" and _word(tokens, number.end + 1) == "night"
-            if night and 6 <= number.value < 12:
-                hour = int(number.value) + 12
+            night = night and (i == 0 or _word(tokens, i - 1) in _TIME_LEADS)
+            if night and (6 <= number.value <= 12 or 1 <= number.value <= 4):
+                hour = {12: 0}.get(int(number.value), int(number.value))
+                hour += 12 if 6 <= hour < 12 else 0  # "1 at night" is 1:00, "12 at night" 0:00
                 return Mention("clock", hour * 3600, i, number.end + 2, meridiem=True)
             # "7 in the evening": a bare hour followed by a day part
             if following == "in" and _word(tokens, number.end + 1) == "the":

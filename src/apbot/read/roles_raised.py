@@ -32,6 +32,8 @@ _STOP = {
     "of", "on", "in", "by", "from", "to", "for", "with", "at", "shown", "that", "which",
     "while", "when", "one", "each", "and", "or", "as", "is", "are", "a", "an", "the",
     "until", "per", "step", "steps", "selected", "flashing", "displayed", "set",
+    "before", "after", "during", "then", "into", "onto", "up", "down", "if", "so", "again",
+    "slightly", "gently", "fully", "only", "once", "use", "using", "it", "them", "you", "your",
 }  # fmt: skip
 # nouns that name no quantity by themselves ("the value that is flashing", "the setting")
 _BARE = {"value", "values", "setting", "settings", "number", "figure", "display", "it", "them"}
@@ -61,6 +63,8 @@ def raised_quantity(b: Builder, tokens: list[str]) -> tuple[str, int] | None:
                 ):
                     return None  # "raises the delay or, on BAKE only, the bake time": two
                 noun = _noun(m.group("noun"))
+                if noun and not _an_amount(noun, rest):
+                    noun = ""  # "raise the footrest", "lower the noise": no amount of the pair
                 if noun:
                     found.setdefault(noun, i)
                 break
@@ -68,6 +72,23 @@ def raised_quantity(b: Builder, tokens: list[str]) -> tuple[str, int] | None:
         return None
     noun, at = next(iter(found.items()))
     return noun, at
+
+
+# endings of nouns that name an amount ("brightness", "intensity", "strength", "warmth")
+_AMOUNT_ENDINGS = ("ness", "ity", "th")
+
+
+def _an_amount(noun: str, clause: str) -> bool:
+    """The raised noun is an amount the pair can set: a quantity noun the reader knows
+    ("temperature", "level"), a noun of an amount ("firmness", "intensity"), a bare "value"
+    or "number" someone's ("the target number"), or a noun the clause gives a range or values
+    for ("the jet height, from 1 to 5"); not a part that moves ("raise the footrest")."""
+    parts = noun.split("_")
+    if any(w in SETTING_NOUNS for w in parts) or parts[-1] in _BARE:
+        return True
+    if any(w.endswith(_AMOUNT_ENDINGS) and len(w) >= 6 for w in parts):
+        return True
+    return re.search(r"\d", re.split(r"[.;]", clause)[0]) is not None
 
 
 def _leads(before: str) -> bool:
