@@ -55,10 +55,17 @@ def relit(session: Session, done: Executed) -> bool:
         and (word := new_sign(lamp_for(spec, name, predicted, domain), before, after, known))
     ):
         mapping = {str(predicted): word, str(old): ""}
-    elif name not in model.display.indicators and (
-        # (its own label lit alone is a lamp too: "WARM" for the keep-warm the belief prints
-        # "WARM on" on its own screen)
-        word := new_word(before, after, known - _own_words(spec, name))
+    elif (
+        name not in model.display.indicators
+        and (
+            # (its own label lit alone is a lamp too: "WARM" for the keep-warm the belief prints
+            # "WARM on" on its own screen; not its own screen showing a value, "WARM off")
+            word := new_word(before, after, known - _own_words(spec, name))
+        )
+        and (
+            word.casefold() not in _own_words(spec, name)
+            or (observed != old and not _labels_a_value(word, after, spec, domain))
+        )
     ):
         # the belief shows it on its own screen only ("MIST on"); the panel lights a word
         mapping, kind = {str(predicted): word, str(old): ""}, "lit"
@@ -140,6 +147,28 @@ def new_word(before: str, after: str, known: set[str]) -> str | None:
 def _own_words(spec: Any, name: str) -> set[str]:
     """The words of a setting's own label (case-folded)."""
     return {w.casefold() for w in spec.display_label(name).split() if w.isalpha()}
+
+
+def _labels_a_value(label: str, text: str, spec: Any, domain: tuple[Any, ...]) -> bool:
+    """Whether ``label`` in ``text`` is followed by a value (``LAMP off``, ``LAMP 0``): the
+    setting's own screen, not its label lit alone as a lamp. A figure counts only in the same
+    field (one space); a value word of the setting, or on/off, anywhere after it.
+
+    >>> _labels_a_value("LAMP", "LAMP 0", None, ("off", "on"))
+    True
+    >>> _labels_a_value("LAMP", "LAMP  160°C", None, ("off", "on"))
+    False
+    """
+    words = {str(v).casefold() for v in domain} | {"on", "off"}
+    shows = getattr(spec, "show", None)
+    for shown in shows.values() if isinstance(shows, dict) else [shows or ""]:
+        words |= {w.casefold() for w in str(shown).split() if w.isalpha()}
+    words.discard(label.casefold())
+    for m in re.finditer(rf"(?<!\w){re.escape(label)}(\s+)(\S+)", text, re.IGNORECASE):
+        gap, follow = m.group(1), m.group(2)
+        if follow.strip(".,:;").casefold() in words or (gap == " " and follow[0].isdigit()):
+            return True
+    return False
 
 
 def _known_words(model: ApplianceModel) -> set[str]:
