@@ -62,3 +62,35 @@ def test_the_strides_run_through_the_values_shown() -> None:
     )
     assert reached and episode.claimed_success, episode.failure
     assert any("adds 900" in r for r in episode.repairs), episode.repairs
+
+
+# a timer whose stride changes: a minute a press up to ten minutes, then five; the reader
+# guessed a minute a press all the way. The walk shows both strides; snapping the domain to the
+# larger one would drop minutes the panel has just shown (3 min, 45 min) and invent others.
+TIMER = """
+controls: [{id: time, label: TIME}, {id: go, label: GO}]
+variables:
+  cook: {type: time, format: "mm:ss", ranges: RANGES, initial: "START", wrap: true,
+         show: "T {value}"}
+  running: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "RUN"}}
+actions: {press_time: {control: time}, press_go: {control: go}}
+features:
+  t: [{actions: [press_time], variable: cook, effect: EFFECT}]
+  go: [{actions: [press_go], variable: running, effect: {to: "on"}}]
+display: {idle: "READY", indicators: [running]}
+"""
+TWO_STRIDES = '[["00:01:00", "00:10:00", 60], ["00:10:00", "01:00:00", 300]]'
+
+
+@pytest.mark.parametrize(("start", "goal"), [("00:30:00", "00:03:00"), ("00:08:00", "00:45:00")])
+def test_a_walk_whose_stride_changes_drops_no_value_it_showed(start: str, goal: str) -> None:
+    truth = TIMER.replace("RANGES", TWO_STRIDES).replace("EFFECT", "next")
+    belief = TIMER.replace("RANGES", '[["00:01:00", "01:00:00", 60]]')
+    belief = belief.replace("EFFECT", "{press_time: {add: 60}}")
+    episode, _ = run(
+        model_from(truth.replace("START", start)),
+        model_from(belief.replace("START", start)),
+        {"cook": goal, "running": "on"},
+    )
+    assert not any("adds 300" in r for r in episode.repairs), episode.repairs
+    assert "not a value the model knows" not in (episode.failure or ""), episode.failure

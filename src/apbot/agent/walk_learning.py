@@ -129,6 +129,7 @@ class WalkLearning:
         change = _direction(spec, forward, backward)
         new = self.session.belief.model
         notes: list[str] = []
+        walked = sorted(set(numbers))  # what the walk showed, never dropped
         if isinstance(effect, Add):
             new, numbers = self._learn_add(new, pointer, action, spec, change, numbers, notes)
         elif effect in ("next", "prev") and change is not None:
@@ -164,11 +165,15 @@ class WalkLearning:
         except RepairError:
             # a key that adds more than believed leaves the believed values between its
             # strides unreached: what the step's keys reach from a value seen is the domain
+            # (only when this walk changed the amount and stepped evenly, by that grid, so
+            # every value it showed stays)
+            if not (isinstance(effect, Add) and new is not self.session.belief.model):
+                raise
             grid = _grid(new, pointer)
             shown = magnitude(spec, current)  # the grid runs through what the panel showed
             anchor = shown if shown is not None else (numbers[0] if numbers else 0.0)
             strides = _on_grid(numbers, grid, anchor)
-            if grid is None or strides is None:
+            if grid is None or strides is None or not _even(walked, grid, strides):
                 raise
             new = self._snap_other_cases(new, name, grid, anchor)
             ranges = ranges_from_values(strides)
@@ -405,6 +410,19 @@ def _on_grid(numbers: list[float], grid: float | None, anchor: float) -> list[fl
         return None
     kept = [n for n in numbers if abs((n - anchor) / grid - round((n - anchor) / grid)) < 1e-9]
     return kept if 1 < len(kept) < len(numbers) else None
+
+
+def _even(walked: list[float], grid: float, kept: list[float]) -> bool:
+    """Whether a walk's values (sorted) step evenly by ``grid`` and all stay in ``kept``: a
+    walk whose stride changes (1 min, then 5) is no grid to snap the domain to.
+
+    >>> _even([300, 600, 900], 300, [300, 600, 900, 1200])
+    True
+    >>> _even([60, 120, 180, 2100, 2400], 300, [2100, 2400])
+    False
+    """
+    steps = {round(b - a, 9) for a, b in zip(walked, walked[1:], strict=False)}
+    return steps <= {round(grid, 9)} and set(walked) <= set(kept)
 
 
 def _direction(spec: Any, forward: list[Any], backward: list[Any] | None) -> float | None:
