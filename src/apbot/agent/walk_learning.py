@@ -11,6 +11,7 @@ class, so the moved code runs as before.
 from __future__ import annotations
 
 import re
+from itertools import pairwise
 from typing import Any
 
 from apbot.agent.infer import (
@@ -421,7 +422,7 @@ def _even(walked: list[float], grid: float, kept: list[float]) -> bool:
     >>> _even([60, 120, 180, 2100, 2400], 300, [2100, 2400])
     False
     """
-    steps = {round(b - a, 9) for a, b in zip(walked, walked[1:], strict=False)}
+    steps = {round(b - a, 9) for a, b in pairwise(walked)}
     return steps <= {round(grid, 9)} and set(walked) <= set(kept)
 
 
