@@ -156,7 +156,7 @@ class Checks:
             presses = session.unread_presses.get(name, [])
             if name not in session.unread:
                 continue
-            if any(relit(session, done) for done in reversed(presses)):
+            if (switched := _latest_switch(name, presses)) and relit(session, switched):
                 return True  # an on/off lamp's word, from the look that switched it
             if not self._learn_display(name, presses):
                 continue
@@ -273,3 +273,15 @@ class Checks:
                 self.session.explored.add(
                     name
                 )  # its setting is up, and no key walks it: seen it all
+
+
+def _latest_switch(name: str, presses: list[Executed]) -> Executed | None:
+    """The latest press that showed ``name`` other than predicted, when the display has not
+    changed since (what it switched ``name`` to is still its value); an older one would set a
+    stale value."""
+    for i in range(len(presses) - 1, -1, -1):
+        if name in presses[i].surprises:
+            text = presses[i].feedback.text
+            later = presses[i + 1 :]
+            return presses[i] if all(p.feedback.text == text for p in later) else None
+    return None
