@@ -51,3 +51,33 @@ def test_the_panel_spelling_a_value_out_beside_a_lamp_is_still_reached() -> None
     episode = get_method("apbot").run(context, env)
     assert env.simulator.satisfies(parse_goal(truth, {"heat": "boost"}))
     assert episode.claimed_success, episode.failure
+
+
+# a second setting the belief reads with its own label, for a part beside the first
+GRILL = HEATER.replace(
+    "{id: swing, label: SWING}", "{id: swing, label: SWING}, {id: fan, label: FAN}"
+)
+GRILL = GRILL.replace(
+    "  swing: {type: discrete",
+    "  fan: {type: discrete, values: [slow, fast], label: FAN, wrap: true}\n  swing: {type: discrete",
+)
+GRILL = GRILL.replace(
+    "  press_swing: {control: swing}",
+    "  press_swing: {control: swing}\n  press_fan: {control: fan}",
+)
+GRILL = GRILL.replace(
+    "  swing:\n",
+    "  set_fan:\n    - {actions: [press_fan], variable: fan, effect: next}\n  swing:\n",
+)
+
+
+def test_a_status_word_or_two_unknown_parts_side_by_side_read_as_no_screen() -> None:
+    belief = model_from(GRILL.replace("{values}", "low, high, boo").replace("{lamps}", ""))
+    reader = DisplayReader(belief)
+    # ON / OFF first is a lamp's status, not a heat value outside the belief's list
+    assert reader.read("HEAT ON  FAN").unknown
+    assert reader.read("HEAT OFF  TIMER 2 h").unknown
+    # two settings each showing a word the belief lacks: which is the main screen is a guess
+    assert reader.read("HEAT boost  FAN turbo").unknown
+    # one unknown word beside a part the belief reads whole stays the first part's reading
+    assert reader.read("HEAT boost  SWING").hypotheses

@@ -135,14 +135,36 @@ class DisplayReader(CompiledDisplay):
         gap = _GAP.search(text)
         if gap is None:
             return []
-        head = text[: gap.start()]
-        return [
+        head, tail = text[: gap.start()], text[gap.end() :]
+        found = [
             h
             for p in self._loose
             if p.search is not None
             and p.search.fullmatch(head)
             and (h := self._match(p, head, parents, True, text))
         ]
+        # (not a status word, ``HEAT ON``, a lamp's; nor when the next part is another such
+        # reading, ``HEAT boost  FAN turbo``: which one is the main screen is a guess)
+        status = {"on", "off"}
+        if any(
+            str(v).casefold() in status or self._lamp_words.fullmatch(str(v))
+            for h in found
+            for v in h.outside.values()
+        ):
+            return []
+        if found and self._loose_reading(_GAP.split(tail)[0], parents):
+            return []
+        return found
+
+    def _loose_reading(self, part: str, parents: dict[str, Any]) -> bool:
+        """Whether ``part`` reads as a setting's screen with a word the belief does not know."""
+        return any(
+            p.search is not None
+            and p.search.fullmatch(part)
+            and (h := self._match(p, part, parents, True, part))
+            and h.outside
+            for p in self._loose
+        )
 
     def _without_lamps(self, text: str) -> str:
         """The text without the lamps the belief knows at its end (a lamp alone is no reading
