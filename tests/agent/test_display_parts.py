@@ -59,7 +59,8 @@ GRILL = HEATER.replace(
 )
 GRILL = GRILL.replace(
     "  swing: {type: discrete",
-    "  fan: {type: discrete, values: [slow, fast], label: FAN, wrap: true}\n  swing: {type: discrete",
+    "  fan: {type: discrete, values: [slow, fast], label: FAN, wrap: true}\n"
+    "  swing: {type: discrete",
 )
 GRILL = GRILL.replace(
     "  press_swing: {control: swing}",
