@@ -12,8 +12,6 @@ from apbot.read import read_manual
 from apbot.read.goal import parse_instruction
 from apbot.read.numbers import find_mentions, tokenize
 
-from .test_goal_kinds import GROW_LIGHT, ROWER
-
 # a tea maker: one water temperature, a start key
 TEA = """
 appliance: {id: tea_1, category: kettle, name: "Brewa T2 tea maker", brand: B}
@@ -48,16 +46,6 @@ display:
 @pytest.fixture(scope="module")
 def tea() -> ApplianceModel:
     return loads_model(TEA)
-
-
-@pytest.fixture(scope="module")
-def light() -> ApplianceModel:
-    return loads_model(GROW_LIGHT)
-
-
-@pytest.fixture(scope="module")
-def rower() -> ApplianceModel:
-    return loads_model(ROWER)
 
 
 @pytest.mark.parametrize(
