@@ -43,3 +43,16 @@ def test_dot_leaders_of_a_specification_list_stay() -> None:
     )
     text = " ".join(u.text for u in parse_manual(specs).units)
     assert "2000 W" in text and "1 - 12 h" in text
+
+
+def test_a_contents_in_two_columns_is_dropped_too() -> None:
+    text = (
+        "CONTENTS\n"
+        "Safety ............... 2     Programmes .......... 5\n"
+        "The panel ............ 3     Cleaning ............ 8\n"
+        "Specifications ....... 4     Guarantee ........... 10\n\n"
+        "Press SPIN to choose 400, 800 or 1200 rpm.\n"
+    )
+    texts = [u.text for u in parse_manual(text).units]
+    assert not any("Guarantee" in t or "Programmes" in t for t in texts)
+    assert any("SPIN" in t for t in texts)
