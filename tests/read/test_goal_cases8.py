@@ -1,0 +1,110 @@
+"""A value only one case of a mode admits implies that mode (goal_cases), checked on a grow box
+written for these tests: a light time free only in CUSTOM, a fan fixed per preset, a watering
+setting chosen by a WHAT key whose cases are named for the settings themselves."""
+
+from __future__ import annotations
+
+from apbot.model.load import loads_model
+from apbot.model.schema import ApplianceModel
+from apbot.read.goal import parse_instruction
+
+GROW_BOX = """
+appliance: {id: grow_1, category: grow_box, name: "Sprout GB-3 grow box", brand: S}
+controls:
+  - {id: prog_button, kind: button, label: "PROG"}
+  - {id: what_button, kind: button, label: "SELECT"}
+  - {id: plus_button, kind: button, label: "+"}
+  - {id: minus_button, kind: button, label: "-"}
+  - {id: fan_button, kind: button, label: "FAN"}
+  - {id: dose_button, kind: button, label: "DOSE"}
+variables:
+  preset:
+    type: discrete
+    values: [seedling, bloom, custom]
+  light_hours:
+    type: numeric
+    unit: h
+    depends_on: preset
+    cases:
+      seedling: {ranges: [[16, 16, 1]], initial: 16}
+      bloom: {ranges: [[12, 12, 1]], initial: 12}
+      custom: {ranges: [[6, 20, 1]], initial: 14}
+    label: "LIGHT"
+  fan_level:
+    type: numeric
+    depends_on: preset
+    cases:
+      custom: {ranges: [[1, 5, 1]], initial: 3}
+    label: "FAN"
+  target:
+    type: discrete
+    values: [humidity, water]
+  humidity:
+    type: numeric
+    unit: "%"
+    depends_on: target
+    cases:
+      humidity: {ranges: [[40, 80, 5]], initial: 60}
+  water:
+    type: numeric
+    unit: ml
+    depends_on: target
+    cases:
+      water: {ranges: [[50, 500, 50]], initial: 100}
+actions:
+  press_prog: {control: prog_button}
+  press_what: {control: what_button}
+  press_plus: {control: plus_button}
+  press_minus: {control: minus_button}
+  press_fan: {control: fan_button}
+  press_dose: {control: dose_button}
+features:
+  preset:
+    - {actions: [press_prog], variable: preset, effect: next}
+    - actions: [press_plus, press_minus]
+      variable: light_hours
+      effect: {press_plus: next, press_minus: prev}
+  fan:
+    - {actions: [press_fan]}
+    - actions: [press_plus, press_minus]
+      variable: fan_level
+      effect: {press_plus: next, press_minus: prev}
+  target:
+    - {actions: [press_what], variable: target, effect: next}
+    - actions: [press_plus, press_minus]
+      variable: humidity
+      effect: {press_plus: next, press_minus: prev}
+  water:
+    - {actions: [press_dose]}
+    - actions: [press_plus, press_minus]
+      variable: water
+      effect: {press_plus: next, press_minus: prev}
+display:
+  idle: "{preset}"
+"""
+
+
+def _model() -> ApplianceModel:
+    return loads_model(GROW_BOX)
+
+
+def test_a_value_only_one_case_admits_sets_that_case() -> None:
+    goal = parse_instruction(_model(), "Give the plants 18 hours of light")
+    assert goal == {"light_hours": 18, "preset": "custom"}
+
+
+def test_a_setting_only_one_case_has_sets_that_case() -> None:
+    goal = parse_instruction(_model(), "Put the fan on level 4")
+    assert goal == {"fan_level": 4, "preset": "custom"}
+
+
+def test_a_value_two_cases_could_hold_leaves_the_mode_alone() -> None:
+    assert parse_instruction(_model(), "12 hours of light a day") == {"light_hours": 12}
+
+
+def test_a_case_the_panel_starts_in_is_not_added() -> None:
+    assert parse_instruction(_model(), "16 hours of light a day") == {"light_hours": 16}
+
+
+def test_a_case_named_for_the_setting_itself_is_not_added() -> None:
+    assert parse_instruction(_model(), "Pour in 200 ml each morning") == {"water": 200}
