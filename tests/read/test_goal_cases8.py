@@ -108,3 +108,73 @@ def test_a_case_the_panel_starts_in_is_not_added() -> None:
 
 def test_a_case_named_for_the_setting_itself_is_not_added() -> None:
     assert parse_instruction(_model(), "Pour in 200 ml each morning") == {"water": 200}
+
+
+OVEN = """
+appliance: {id: oven_8, category: combi_oven, name: "Tessa CO-8 combination oven", brand: T}
+controls:
+  - {id: micro_button, kind: button, label: "MICRO"}
+  - {id: fan_button, kind: button, label: "FAN OVEN"}
+  - {id: thaw_button, kind: button, label: "THAW"}
+  - {id: up_button, kind: button, label: "+"}
+  - {id: down_button, kind: button, label: "-"}
+variables:
+  mode:
+    type: discrete
+    values: [micro, fan, thaw]
+  watts:
+    type: numeric
+    unit: W
+    ranges: [[100, 800, 100]]
+    initial: 800
+  fan_temp:
+    type: numeric
+    unit: "°C"
+    ranges: [[100, 220, 10]]
+    initial: 160
+  thaw_weight:
+    type: numeric
+    unit: g
+    ranges: [[100, 1500, 100]]
+    initial: 500
+actions:
+  press_micro: {control: micro_button}
+  press_fan: {control: fan_button}
+  press_thaw: {control: thaw_button}
+  press_up: {control: up_button}
+  press_down: {control: down_button}
+features:
+  micro:
+    - {actions: [press_micro], variable: mode, effect: {to: micro}}
+    - actions: [press_up, press_down]
+      variable: watts
+      effect: {press_up: next, press_down: prev}
+  fan_oven:
+    - {actions: [press_fan], variable: mode, effect: {to: fan}}
+    - actions: [press_up, press_down]
+      variable: fan_temp
+      effect: {press_up: next, press_down: prev}
+  thaw:
+    - {actions: [press_thaw], variable: mode, effect: {to: thaw}}
+    - actions: [press_up, press_down]
+      variable: thaw_weight
+      effect: {press_up: next, press_down: prev}
+display:
+  idle: "{mode}"
+"""
+
+
+def test_a_setting_entered_through_one_mode_sets_that_mode() -> None:
+    oven = loads_model(OVEN)
+    assert parse_instruction(oven, "Heat the rolls at 180 degrees") == {
+        "fan_temp": 180,
+        "mode": "fan",
+    }
+    assert parse_instruction(oven, "600 g of mince, by weight") == {
+        "thaw_weight": 600,
+        "mode": "thaw",
+    }
+
+
+def test_the_mode_the_oven_starts_in_is_not_added() -> None:
+    assert parse_instruction(loads_model(OVEN), "Warm it at 500 W") == {"watts": 500}
