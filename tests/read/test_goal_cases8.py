@@ -1,6 +1,6 @@
-"""A value only one case of a mode admits implies that mode (goal_cases), checked on a grow box
-written for these tests: a light time free only in CUSTOM, a fan fixed per preset, a watering
-setting chosen by a WHAT key whose cases are named for the settings themselves."""
+"""The mode a setting's value implies (goal_cases), checked on models written for these tests:
+a grow box whose presets fix the light time that only CUSTOM lets the user choose, a fan level
+and a watering dose that other cases lack; an oven whose keys enter a mode before a setting."""
 
 from __future__ import annotations
 
@@ -84,18 +84,18 @@ display:
 """
 
 
-def _model() -> ApplianceModel:
-    return loads_model(GROW_BOX)
+def _model(starts: str = "seedling") -> ApplianceModel:
+    return loads_model(
+        GROW_BOX.replace(
+            "values: [seedling, bloom, custom]",
+            f"values: [seedling, bloom, custom]\n    initial: {starts}",
+        )
+    )
 
 
-def test_a_value_only_one_case_admits_sets_that_case() -> None:
+def test_a_value_only_the_one_free_case_admits_sets_that_case() -> None:
     goal = parse_instruction(_model(), "Give the plants 18 hours of light")
     assert goal == {"light_hours": 18, "preset": "custom"}
-
-
-def test_a_setting_only_one_case_has_sets_that_case() -> None:
-    goal = parse_instruction(_model(), "Put the fan on level 4")
-    assert goal == {"fan_level": 4, "preset": "custom"}
 
 
 def test_a_value_two_cases_could_hold_leaves_the_mode_alone() -> None:
@@ -103,10 +103,12 @@ def test_a_value_two_cases_could_hold_leaves_the_mode_alone() -> None:
 
 
 def test_a_case_the_panel_starts_in_is_not_added() -> None:
-    assert parse_instruction(_model(), "16 hours of light a day") == {"light_hours": 16}
+    goal = parse_instruction(_model("custom"), "Give the plants 18 hours of light")
+    assert goal == {"light_hours": 18}
 
 
-def test_a_case_named_for_the_setting_itself_is_not_added() -> None:
+def test_a_setting_the_other_cases_lack_leaves_the_mode_alone() -> None:
+    assert parse_instruction(_model(), "Put the fan on level 4") == {"fan_level": 4}
     assert parse_instruction(_model(), "Pour in 200 ml each morning") == {"water": 200}
 
 

@@ -1,13 +1,12 @@
-"""The mode a setting implies. A setting that depends on a mode ("MIST 1-3 only in MANUAL", a melt
-temperature free only in MANUAL, fixed in each automatic type) and is given a value only one of
-the mode's cases admits can only be set in that case, so the goal holds the mode too; so does a
-setting whose every procedure first puts a mode to one value (CONVECTION, then the temperature
-typed: the convection temperature is set in the convection mode only).
+"""The mode a setting's value implies. A setting the automatic programmes fix (a melt
+temperature of 50 in DARK, 45 in MILK, 40 in WHITE, free 40-55 only in MANUAL) given a value only
+its one free case admits can only be set there: the goal holds that mode too. So does a setting
+whose every procedure first puts a mode to one value (CONVECTION, then the temperature typed).
 
-Nothing is guessed: when two cases admit the value, or the mode starts in the one case anyway
-(what the panel shows before anything is pressed), the mode is left as the user left it; so it
-is when the case is named for the setting itself (MODE: POWER / TEMPERATURE chooses which of the
-two the keys adjust — saying the temperature is choosing it, not a programme)."""
+Nothing is guessed: when two cases admit the value, or the mode starts in that case anyway (what
+the panel shows before anything is pressed), the mode is left as the user left it. Nor is it
+set for a setting that other cases merely lack (MODE: POWER / TEMPERATURE, each with its own
+setting): such a mode chooses what the keys adjust, and saying the setting is choosing it."""
 
 from __future__ import annotations
 
@@ -15,13 +14,12 @@ from typing import Any
 
 from apbot.model.domain import build_domain
 from apbot.model.schema import DiscreteVariable, GoTo
-from apbot.read.goal_values import name_words
-from apbot.read.goal_view import Goal, Model, own_stems, step_effects
-from apbot.read.goal_vocab import stem
+from apbot.read.goal_view import Goal, Model, step_effects
 
 
 def implied_cases(view: Model, goal: Goal) -> None:
-    """Set the mode of each goal setting whose value only one case of that mode admits."""
+    """Set the mode of each goal setting that only one case of that mode lets the user adjust
+    (the others lack it or fix it at one value), given a value that case admits."""
     for name in list(goal):
         var = view.infos[name].var
         parent = var.depends_on
@@ -33,12 +31,12 @@ def implied_cases(view: Model, goal: Goal) -> None:
         admitting = [
             case for case in mode.values if _admits(var, var.cases.get(str(case)), goal[name])
         ]
-        if len(admitting) != 1 or len(mode.values) < 2:
-            continue
+        sizes = [_size(var, var.cases.get(str(case))) for case in mode.values]
+        free = [case for case, size in zip(mode.values, sizes, strict=True) if size > 1]
+        if len(admitting) != 1 or free != admitting or 1 not in sizes:
+            continue  # adjusted in other cases too (a guess), or no case fixes it
         if str(admitting[0]) == str(_starts_at(mode.var)):
             continue  # the panel is in that case before anything is pressed
-        if {stem(w) for w in name_words(str(admitting[0]))} & own_stems(view.infos[name]):
-            continue  # the TEMPERATURE mode of the temperature: a choice of what to adjust
         goal[parent] = admitting[0]
 
 
@@ -79,6 +77,16 @@ def _entered(earlier: list[Any], name: str) -> set[tuple[str, str]]:
         if effects and len(targets) == 1 and all(isinstance(e, GoTo) for e in effects):
             found.add((step.variable, targets.pop()))
     return found
+
+
+def _size(var: Any, spec: Any) -> int:
+    """Values the setting can take in one case (0: the case lacks it)."""
+    if spec is None:
+        return 0
+    try:
+        return len(build_domain(var, spec).values)
+    except ValueError:
+        return 0
 
 
 def _admits(var: Any, spec: Any, value: Any) -> bool:
