@@ -63,3 +63,54 @@ def test_circulation_names_the_air_switch() -> None:
 def test_circulating_names_the_fan_mode() -> None:
     goal = parse_instruction(_model("chill, fan, mist"), "Only circulate, no chilling")
     assert goal == {"mode": "fan"}
+
+
+FOUNTAIN = """
+appliance: {id: fountain_1, category: chocolate_fountain, name: "Cascade CF-1 fountain", brand: C}
+controls:
+  - {id: start_button, kind: button, label: "START"}
+  - {id: flow_button, kind: button, label: "FLOW"}
+variables:
+  flow:
+    type: discrete
+    values: [gentle, strong]
+  running:
+    type: discrete
+    values: ["off", "on"]
+    show: {"off": "", "on": "RUN"}
+actions:
+  press_start: {control: start_button}
+  press_flow: {control: flow_button}
+features:
+  flow:
+    - {actions: [press_flow], variable: flow, effect: next}
+  start:
+    - {actions: [press_start], variable: running, effect: toggle}
+display:
+  idle: "{flow}"
+"""
+
+
+def test_get_it_moving_starts_it() -> None:
+    fountain = loads_model(FOUNTAIN)
+    assert parse_instruction(fountain, "Strong flow, and get it moving") == {
+        "flow": "strong",
+        "running": "on",
+    }
+    assert parse_instruction(fountain, "Gentle flow; get the tower turning now.") == {
+        "flow": "gentle",
+        "running": "on",
+    }
+
+
+def test_let_it_run_starts_it() -> None:
+    fountain = loads_model(FOUNTAIN)
+    goal = parse_instruction(fountain, "Let it run until the guests leave, strong flow")
+    assert goal == {"flow": "strong", "running": "on"}
+
+
+def test_other_gets_and_lets_start_nothing() -> None:
+    fountain = loads_model(FOUNTAIN)
+    goal = parse_instruction(fountain, "Strong flow, then get the setting saved")
+    assert goal == {"flow": "strong"}
+    assert parse_instruction(fountain, "Let the kids run around, gentle flow") == {"flow": "gentle"}
