@@ -23,7 +23,8 @@ back in an hour", "…, we are 4 at the table"). The steps live in their own mod
 ``goal_spelling`` (rewrites before tokenising),
 ``goal_names`` (1), ``goal_assign`` and ``goal_fit`` (2), ``goal_scales`` (3),
 ``goal_switches`` (4), ``goal_start`` (5), ``goal_twins`` (zones and
-sides); ``goal_view`` is the model as the parser sees it.
+sides), ``goal_cases`` (the mode a setting's value implies); ``goal_view`` is the model as the
+parser sees it.
 """
 
 from __future__ import annotations
