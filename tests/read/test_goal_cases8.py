@@ -180,3 +180,50 @@ def test_a_setting_entered_through_one_mode_sets_that_mode() -> None:
 
 def test_the_mode_the_oven_starts_in_is_not_added() -> None:
     assert parse_instruction(loads_model(OVEN), "Warm it at 500 W") == {"watts": 500}
+
+
+HOB = """
+appliance: {id: hob_8, category: hot_plate, name: "Plato HP-8 hot plate", brand: P}
+controls:
+  - {id: level_button, kind: button, label: "LEVEL"}
+  - {id: temp_button, kind: button, label: "TEMP"}
+  - {id: up_button, kind: button, label: "+"}
+  - {id: down_button, kind: button, label: "-"}
+variables:
+  select:
+    type: discrete
+    values: [level, temp]
+  level:
+    type: numeric
+    depends_on: select
+    cases:
+      level: {ranges: [[1, 9, 1]], initial: 5}
+  temp:
+    type: numeric
+    unit: "°C"
+    depends_on: select
+    cases:
+      temp: {ranges: [[60, 240, 20]], initial: 160}
+actions:
+  press_level: {control: level_button}
+  press_temp: {control: temp_button}
+  press_up: {control: up_button}
+  press_down: {control: down_button}
+features:
+  level:
+    - {actions: [press_level], variable: select, effect: {to: level}}
+    - actions: [press_up, press_down]
+      variable: level
+      effect: {press_up: next, press_down: prev}
+  temp:
+    - {actions: [press_temp], variable: select, effect: {to: temp}}
+    - actions: [press_up, press_down]
+      variable: temp
+      effect: {press_up: next, press_down: prev}
+display:
+  idle: "{select}"
+"""
+
+
+def test_a_selector_key_before_a_setting_other_cases_lack_is_not_added() -> None:
+    assert parse_instruction(loads_model(HOB), "Fry it at 180 degrees") == {"temp": 180}
