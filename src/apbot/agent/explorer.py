@@ -67,12 +67,17 @@ class Explorer(WalkLearning):
                 else ""
             ),
         )
-        renamed = False
+        renamed, learnt = False, None
         if not swapped:
-            walks = self._renamed(name, last, key, opposite, forward, backward, history)
-            renamed = walks is not None
-            forward, backward = walks if walks is not None else (forward, backward)
-        forward, backward = self._read_unread(name, forward, backward, last.predicted)
+            # the belief's own words for the texts first (a template, one value's word); else
+            # the walk may be the belief's own with values printed otherwise
+            if any(isinstance(v, Unread) for v in forward + (backward or [])):
+                learnt = self._template_or_word(name, forward, backward, last.predicted)
+            if not learnt:
+                walks = self._renamed(name, last, key, opposite, forward, backward, history)
+                renamed = walks is not None
+                forward, backward = walks if walks is not None else (forward, backward)
+        forward, backward = self._read_unread(name, forward, backward, last.predicted, learnt)
         forward, backward = restyle_walk(self.session, name, forward, backward)
         seen = [v for v in forward + (backward or []) if not isinstance(v, Dark)]
         if not seen:
@@ -91,18 +96,32 @@ class Explorer(WalkLearning):
         for _ in range(unseen):  # presses taken in the dark: the (repaired) model says where to
             self.session.belief.advance(final.name, final.seconds)
 
+    def _template_or_word(
+        self, name: str, forward: list[Any], backward: list[Any] | None, believed: Any
+    ) -> bool:
+        """Learn how the display prints the setting from the texts a walk could not read: one
+        value's word, or the template they share; True when the belief changed."""
+        texts = [v.text for v in forward + (backward or []) if isinstance(v, Unread)]
+        return self.displays.learn_word(
+            name, forward + (backward or []), believed
+        ) or self.displays.learn(name, texts)
+
     def _read_unread(
-        self, name: str, forward: list[Any], backward: list[Any] | None, believed: Any = None
+        self,
+        name: str,
+        forward: list[Any],
+        backward: list[Any] | None,
+        believed: Any = None,
+        learnt: bool | None = None,
     ) -> tuple[list[Any], list[Any] | None]:
         """Texts the belief could not read: learn how the display prints the setting from them,
-        then read them again; what stays unreadable counts as dark."""
+        then read them again; what stays unreadable counts as dark. ``learnt``: what the word
+        and template learners made of these texts already (:meth:`_template_or_word`; None:
+        not tried yet)."""
         texts = [v.text for v in forward + (backward or []) if isinstance(v, Unread)]
-        if (
-            texts
-            and not self.displays.learn_word(name, forward + (backward or []), believed)
-            and not self.displays.learn(name, texts)
-            and self._learn_words(name, texts)
-        ):
+        if learnt is None and texts:
+            learnt = self._template_or_word(name, forward, backward, believed)
+        if texts and not learnt and self._learn_words(name, texts):
             forward, backward = as_text(forward), None if backward is None else as_text(backward)
 
         def again(trace: list[Any]) -> list[Any]:

@@ -14,8 +14,9 @@ belief predicts, press by press from the value it expected after the walk's firs
 value each press gives. When every shown value the belief can read is the one predicted and
 the other texts pair one-to-one with the predicted values the display never showed as
 themselves, those texts are those values' words (a text the belief reads as another
-setting's screen is no such word, nor digits printed without the setting's label: another
-setting's number, a clock). They become the values' ``show`` templates
+setting's screen is no such word, nor digits printed without the setting's label — another
+setting's number, a clock — nor a text without the label where the walk read the setting's
+other values with it). They become the values' ``show`` templates
 (a data edit, kept only if the repaired belief reads every such text back as its value), and
 the walk is read again in the belief's values, so nothing else is learnt wrong from it.
 """
@@ -128,6 +129,13 @@ def rename_walk(
         for token, text in texts.items()
     ):
         return None  # digits without the label: another setting's number (a clock), no word
+    read = {
+        repr(t): _text(spec, name, pairs.get(t, t), t) for t in tokens if not isinstance(t, tuple)
+    }
+    if any(label in text.casefold() for text in read.values()) and any(
+        isinstance(token, tuple) and label not in text.casefold() for token, text in texts.items()
+    ):
+        return None  # its other values came with its label: a text without it is not its own
     others = {_text(spec, name, v, v).casefold() for v in domain if v not in pairs.values()}
     folded = [t.casefold() for t in texts.values()]
     if len(set(folded)) < len(folded) or others.intersection(folded):
