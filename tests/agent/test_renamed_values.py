@@ -136,34 +136,3 @@ def test_a_walk_in_another_order_is_no_renaming() -> None:
     assert pairing(["b", "X", "b"], ["a", "b", "a"], ["a", "b", "c"]) is None
     assert pairing(["X", "Y"], ["a", "a"], ["a", "b"]) is None  # one value, two words
     assert pairing(["a", "b"], ["a", "b"], ["a", "b"]) is None  # nothing renamed
-
-
-WASHER_TRUTH = """
-controls: [{id: prog, label: PROG}]
-variables:
-  prog:
-    type: discrete
-    values: [rinse, x rinse, spin]
-    label: PROG
-    wrap: false
-    show: {x rinse: "PROG extra rinse"}
-actions:
-  turn_prog_cw: {control: prog}
-  turn_prog_ccw: {control: prog}
-features:
-  prog:
-    - {actions: [turn_prog_cw, turn_prog_ccw], variable: prog,
-       effect: {turn_prog_cw: next, turn_prog_ccw: prev}}
-display:
-  idle: "{prog}"
-"""
-
-
-def test_a_longer_name_ending_in_a_known_value_is_no_reading_of_that_value() -> None:
-    # "PROG extra rinse" is the programme's own screen with a name the belief lacks, not the
-    # value "rinse" found inside it: read so, the walk learns it as the belief's "x rinse"
-    truth = model_from(WASHER_TRUTH)
-    belief = model_from(WASHER_TRUTH.replace('    show: {x rinse: "PROG extra rinse"}\n', ""))
-    episode, reached = run(truth, belief, {"prog": "x rinse"})
-    assert reached
-    assert any("prog prints x rinse" in note for note in episode.repairs)

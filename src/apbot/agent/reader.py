@@ -121,34 +121,11 @@ class DisplayReader(CompiledDisplay):
                 for p in self._patterns
                 if p.search is not None and (h := self._match(p, main, parents, True, text))
             ]
-            found = self._own_screen_first(text, found, parents)
         if not found and text.strip():  # a word the belief does not know
             found = [h for p in self._loose if (h := self._match(p, text, parents, False))]
         if not found and text.strip():
             found = self._loose_head(text.strip(), parents)
         return Reading(text, tuple(_unique(found)))
-
-    def _own_screen_first(
-        self, text: str, partial: list[Hypothesis], parents: dict[str, Any]
-    ) -> list[Hypothesis]:
-        """A text that is a setting's own screen — its label, then words — with a value the
-        belief lacks (``FUNCTION convection bake``) is read as that screen, the value outside
-        the domain: not as a known value found inside it (``bake``), which would hide the
-        value a walk has to learn."""
-        if not partial:
-            return partial
-        own = [
-            h
-            for p in self._loose
-            if p.screen.variable is not None
-            and "{label}" in p.screen.template
-            and (h := self._match(p, text, parents, False))
-            and p.screen.variable in h.outside
-        ]
-        if not own:
-            return partial
-        names = {h.screen.variable for h in own}
-        return [h for h in partial if not names & set(h.values)] + own
 
     def _loose_head(self, text: str, parents: dict[str, Any]) -> list[Hypothesis]:
         """A word the belief does not know in the first part of a display that prints other
