@@ -5,16 +5,13 @@ starting value when the programme is chosen. Manuals give the setting's range pe
 far more often than where each programme starts it: the reader then leaves the start unsaid,
 and the model takes the first value of the range — a guess. When a look at the setting (no key
 of its own pressed since the programme was chosen) shows another value of that programme's
-range, the look is the evidence: the programme starts it there (or, when the belief says the
-look itself steps the value — an entry press that applies its step — where that step
-would have come from). Without this the belief keeps
+range, the look is the evidence: the programme starts it there. Without this the belief keeps
 its guess, and a planner that finds choosing the programme again cheaper than walking the
 setting back goes round in a loop (choose, look, see the same value, choose again).
 """
 
 from __future__ import annotations
 
-from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
 from apbot.agent.perception import MISSING, UNREADABLE
@@ -34,8 +31,8 @@ def learn_start(session: Session, name: str, before: Any, done: Executed | None)
     if done is None or name not in done.surprises:
         return False
     predicted, observed = done.surprises[name]
-    if observed in (MISSING, UNREADABLE, None):
-        return False  # not read
+    if observed in (MISSING, UNREADABLE, None) or predicted != before:
+        return False  # not read, or the look itself moved the setting
     model = session.belief.model
     spec = model.variables[name]
     case = session.case(name)
@@ -47,41 +44,14 @@ def learn_start(session: Session, name: str, before: Any, done: Executed | None)
     domain = build_domain(spec, own)
     if not domain.values or before != domain.values[0] or observed not in domain.index:
         return False  # the belief did not hold the guess, or the value is no start it can hold
-    start = _start_before(domain.values, before, predicted, observed, bool(spec.wrap))
-    if start is None:
-        return False
     if not session.budget.once("start", f"{name}:{case}"):
         return False
     if not session.try_repair(
-        lambda: set_start(model, name, case, start),
-        f"{name} starts at {start!r} in {case}",
+        lambda: set_start(model, name, case, observed),
+        f"{name} starts at {observed!r} in {case}",
         session.belief.pointer(),
         refused=f"could not learn where {case} starts {name}",
     ):
         return False
     session.belief.set_value(name, observed)
     return True
-
-
-def _start_before(
-    values: Sequence[Any], before: Any, predicted: Any, observed: Any, wrap: bool = False
-) -> Any:
-    """The start that, moved as the belief says the look moves it (from ``before`` to
-    ``predicted``: an entry press that steps the value once), gives what was shown — the
-    value shown itself when the look was to leave it alone. None when that start would lie
-    outside the range (the belief's look cannot have given what was shown), unless the values
-    wrap round (``wrap``).
-
-    >>> _start_before([20, 25, 30, 35, 40], 20, 20, 40), _start_before([20, 25, 30, 35], 20, 25, 35)
-    (40, 30)
-    >>> _start_before([20, 25, 30], 20, 25, 20) is None
-    True
-    >>> _start_before([20, 25, 30], 20, 30, 25, wrap=True)
-    30
-    """
-    if predicted not in values:
-        return None
-    index = values.index(observed) - (values.index(predicted) - values.index(before))
-    if wrap:
-        index %= len(values)
-    return values[index] if 0 <= index < len(values) else None

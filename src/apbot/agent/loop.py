@@ -17,7 +17,6 @@ from __future__ import annotations
 from typing import Any
 
 from apbot.agent.budget import Budget
-from apbot.agent.case_starts import learn_start
 from apbot.agent.checking import Checks
 from apbot.agent.discovery import VariableFinder
 from apbot.agent.displays import DisplayLearner
@@ -374,11 +373,9 @@ class ClosedLoop(Checks):
                 session.belief.model.variables,  # a look changes nothing else
                 sorted(session.offered & set(session.belief.model.actions)),
             )
-            before, done = session.belief.value(name), None
             if route is not None:
                 for action in route:
-                    done = session.press(session.planned(action), exploring=True)
-                learn_start(session, name, before, done)  # a programme's start, shown
+                    session.press(session.planned(action), exploring=True)
                 return True
             if self._guarding_the_goal():
                 continue  # getting out would undo the goal (stop a running cycle): no look
