@@ -56,3 +56,39 @@ def test_a_count_that_wraps_to_zero_includes_zero() -> None:
     model = read_manual(CULTURER, ["press_delay"]).model
     spec = model.variables["delay"].model_dump(mode="json")
     assert spec["ranges"][0][0] == 0 and spec["ranges"][-1][1] == 12, spec
+
+
+# a wine chiller: the settings listed with the middle left out, and where the list starts again
+CHILLER = """KEYS
+
+  COLD    one degree colder per touch
+
+COLD
+ Each touch of COLD makes the cellar one degree colder, and after the coldest it starts again:
+
+     -2 → -3 → -4 → ... → -9 → -10 → -2 → ...   (°C)
+"""
+
+# a fan heater's off-timer: two runs of steps, each shortened with an ellipsis
+FAN = """KEYS
+
+  ▲ TIMER   switch-off time in hours
+
+OFF TIMER
+ 1. Press ▲ TIMER. Up to 6 hours the time goes up by half an hour per press; above 6 hours by
+    two hours per press: 1 → 1.5 → 2 → ... → 5.5 → 6 → 8 → 10 → ... → 22 → 24 h
+ 2. One more press after 24 h sets the timer back to 0 (timer off).
+"""
+
+
+def test_a_list_shortened_with_an_ellipsis_is_filled_in_at_its_step() -> None:
+    values = read_manual(CHILLER, ["press_cold"]).model.variables["cold"].model_dump(mode="json")
+    assert values["values"] == [str(-n) for n in range(2, 11)], values
+
+
+def test_two_elided_runs_are_each_filled_at_their_own_step() -> None:
+    spec = read_manual(FAN, ["press_timer"]).model.variables["timer"].model_dump(mode="json")
+    assert spec["ranges"] == [[0, 1, 1], [1, 6, 0.5], [6, 24, 2]] or spec["ranges"] == [
+        [0, 6, 0.5],
+        [6, 24, 2],
+    ], spec

@@ -105,10 +105,11 @@ def with_bottom(values: list[str], wrap: Range) -> list[str]:
     if not values or wrap.unit == "s" or any(m is None for m in parsed):
         return values
     numbers = [float(m.group(1).replace(",", ".")) for m in parsed if m]
-    suffixes = {m.group(2) for m in parsed if m}
-    suffix = next(iter(suffixes)) if len(suffixes) == 1 else None
-    if suffix is None or (wrap.unit and unit_name(suffix or None) != wrap.unit):
+    suffixes = {m.group(2) for m in parsed if m} - {""}  # ("0.5, 1, 1.5 … 24 h": one unit)
+    if len(suffixes) > 1 or (wrap.unit and suffixes and unit_name(min(suffixes)) != wrap.unit):
         return values
+    first = parsed[0]
+    suffix = first.group(2) if first else ""
     if max(numbers) != wrap.high or wrap.low >= min(numbers):
         return values
     low = int(wrap.low) if float(wrap.low).is_integer() else wrap.low
