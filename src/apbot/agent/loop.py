@@ -65,6 +65,7 @@ class ClosedLoop(Checks):
         self.finding = 1  # the finder's attempt: once at the start, once with the rest set
         self.plans = BeliefPlans(self.session, config)
         self.pending: list[MacroAction] = []  # the rest of the plan, while it holds
+        self.after_rest: set[str] = set()  # goal values a walk lacked: looked for again last
         self.values_before: dict[str, Any] = {}  # the belief before the current macro action
 
     def run(self) -> Episode:
@@ -124,6 +125,9 @@ class ClosedLoop(Checks):
         if not self.pending:
             target = dict(inside)
             for name in outside:
+                if name in self.after_rest and self._rest_pending(inside):
+                    target = {n: v for n, v in target.items() if not _starts(n)}
+                    continue  # set the rest first (its programme), then walk this one again
                 proxy = self.proxy(name, inside)
                 if proxy is not MISSING:
                     target[name] = proxy
@@ -202,7 +206,12 @@ class ClosedLoop(Checks):
         if not self.session.budget.once("inspect", f"again:{name}"):
             return False
         self.session.explored.discard(name)
+        self.after_rest.add(name)
         return True
+
+    def _rest_pending(self, inside: dict[str, Any]) -> bool:
+        """A goal setting other than a start is not yet what the goal asks."""
+        return any(self.session.belief.value(n) != v for n, v in inside.items() if not _starts(n))
 
     def _last_reading(self, name: str) -> str:
         if name in self.session.unread:

@@ -66,8 +66,10 @@ from apbot.read.values import (
     find_two_steps,
     seconds,
 )
+from apbot.read.values_elided import filled
 from apbot.read.values_pieces import find_amount_pieces
 from apbot.read.values_stepped import find_arrow_pieces, find_stepped_pieces
+from apbot.read.values_wraps import wrap_ends
 
 
 class EvidenceReader(ListReader, AnywhereReader):
@@ -368,6 +370,12 @@ class EvidenceReader(ListReader, AnywhereReader):
             best = _without_own_name(best, own)
             ev.values = best if _numeric_items(best) else [v.lower() for v in best]
             self._initial_from_values(ev, tokens)
+        if ev.values and ev.values_at is not None:
+            ev.values = filled(ev.values, units[ev.values_at].text)  # "-18 → ... → -23"
+        if ev.ranges or (ev.values and _numeric_items(ev.values)):
+            # "after 23:45 comes 00:00", "after 15 back to 0": the ends of what was read
+            about_it = [i for i in self.context(tokens) if i not in elsewhere or i in mentions]
+            wrap_ends(ev, units, about_it)
         return ev
 
 

@@ -38,6 +38,7 @@ from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_kinds import kind_numbers
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
 from apbot.read.goal_open import open_entries
+from apbot.read.goal_outside import kept_outside
 from apbot.read.goal_remarks import without_remarks
 from apbot.read.goal_scales import superlatives
 from apbot.read.goal_spans import time_spans
@@ -109,6 +110,8 @@ def parse_instruction(
     mentions = time_spans(view, text, mentions, goal, claimed, where)
     mentions = kind_numbers(view, text, mentions, goal, claimed, where)
     counting = assign_mentions(view, text, mentions, goal, claimed, where, outside)
+    if outside is not None:  # a read belief: a number its setting's name stands beside
+        kept_outside(view, text, mentions, goal, claimed, where, outside)
     superlatives(view, text, goal, claimed, where)
     zero_settings(view, text, goal, claimed, where)
     off_levels(view, text, goal, claimed)

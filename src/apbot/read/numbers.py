@@ -454,8 +454,9 @@ _UNIT_LIKE = {"%", "°", "°c", "°f", "degrees", "degree", "percent", "rpm", "w
 
 
 def _quantity_at(tokens: list[Token], i: int) -> Mention | None:
-    """A number with an optional non-time unit: "350 °F", "1.5 kW", "fifty percent", "2 lb"."""
-    number = read_number(tokens, i)
+    """A number with an optional non-time unit: "350 °F", "1.5 kW", "fifty percent", "2 lb";
+    negative after "minus" or a sign ("minus 19", "at -18")."""
+    number = _signed(tokens, i) or read_number(tokens, i)
     if number is None:
         return None
     if number.words and _word(tokens, i) in ("a", "an") and number.end == i + 1:
@@ -489,6 +490,24 @@ def _quantity_at(tokens: list[Token], i: int) -> Mention | None:
     return Mention(
         "quantity", number.value * info[1], i, end, info[0], words=number.words, unit=name
     )
+
+
+# words a sign may follow: "at -18", "to -20", ", -21" (not "C-3", "2-6": a code, a span)
+_SIGN_LEADS = frozenset({"", ",", "at", "to", "of", "is", "on", "from", "about", "around", "and"})
+
+
+def _signed(tokens: list[Token], i: int) -> Number | None:
+    """A negative number: "minus" and a number, or a hyphen straight before digits where no
+    letter or number comes before it (the tokenizer keeps a spaced dash as a clause break)."""
+    sign = _word(tokens, i)
+    if sign not in ("minus", "-"):
+        return None
+    if sign == "-" and _word(tokens, i - 1) not in _SIGN_LEADS:
+        return None
+    number = read_number(tokens, i + 1)
+    if number is None or (sign == "-" and number.words):
+        return None
+    return Number(-number.value, i, number.end, number.words)
 
 
 COUNT_NOUNS = frozenset(
