@@ -46,3 +46,53 @@ def held_named_switch(b: Builder, info: ActionInfo) -> tuple[str, int] | None:
             if m and m.group("name").upper() != label.upper():
                 return m.group("name"), i
     return None
+
+
+# holding: "Hold for 2 seconds:", "touch and hold ⏻", "long press"
+_HOLDING = re.compile(r"\b(?:hold(?:ing)?|held|long[ -]press)\b", re.IGNORECASE)
+# switching the appliance itself (or nothing named) both ways: "switch the cushion on or off",
+# "switch the cooler off or on again", "switches on/off"
+_BOTH_WAYS = re.compile(
+    r"\b(?:switch|turn)(?:es|s|ed|ing)?\s+(?:(?:the|your|this)\s+(?P<noun>[a-z][a-z -]{1,30}?)\s+)?"
+    r"(?:on\s*(?:/|or|and)\s*off|off\s*(?:/|or|and)\s*on)\b",
+    re.IGNORECASE,
+)
+_APPLIANCE_WORDS = {"appliance", "unit", "machine", "device", "product"}
+_TITLE_LINES = 15  # the title block: brand, model, what the product is
+
+
+def _appliance_words(b: Builder) -> set[str]:
+    """Words the manual calls the appliance by: the generic ones, and the words of its title
+    block ("Dual-zone wine cooler", "Massage Seat Cushion") less the names of its controls."""
+    title = " ".join(b.manual.lines[:_TITLE_LINES]).lower()
+    keys = {w for lab in b.labels.values() for w in re.findall(r"[a-z]+", lab.text.lower())}
+    return _APPLIANCE_WORDS | (set(re.findall(r"[a-z]{3,}", title)) - keys)
+
+
+def held_power(b: Builder, info: ActionInfo) -> int | None:
+    """The unit saying that holding this key switches the appliance itself on and off
+    ("①  M   Hold for 2 seconds: switch the cushion on or off.", "⏻ … Touch and hold 3 s:
+    switch the cooler off or on again."): in the key's own legend row, or a sentence that
+    holds the key. None when no such clause, or when what it switches is a setting (the
+    sound, the light: not a word of the title)."""
+    if info.skill != "hold" or len(info.controls) != 1 or info.controls[0] not in b.labels:
+        return None
+    label = b.labels[info.controls[0]].text
+    if not label:
+        return None
+    this = re.compile(
+        rf"\bhold(?:\s+down)?\s+(?:the\s+)?(?:\w+\s+key\s+\(\s*)?{re.escape(label)}(?!\w)",
+        re.IGNORECASE,
+    )
+    named = _appliance_words(b)
+    for i in b.labels[info.controls[0]].mentions:
+        unit = b.manual.units[i]
+        own_row = bool(unit.cells) and label in unit.cells[0]
+        for clause in re.split(r"(?<=[.!?;])\s+|\s+\|\s+", unit.text):
+            if not (own_row and _HOLDING.search(clause)) and not this.search(clause):
+                continue
+            m = _BOTH_WAYS.search(clause)
+            noun = (m.group("noun") or "").lower() if m else ""
+            if m and (not noun or noun.split()[-1] in named):
+                return i
+    return None

@@ -13,6 +13,7 @@ import unicodedata
 from dataclasses import dataclass, field
 
 from apbot.read.errors import ReaderError
+from apbot.read.text_boxes import unbox
 from apbot.read.text_pages import _furniture, _page_breaks, _plain_heading, _reading_order
 from apbot.read.text_sections import drop_boilerplate
 from apbot.read.text_tables import _row_charts, _space_tables, _strip_markup
@@ -145,7 +146,7 @@ def parse_manual(text: str) -> Manual:
             f"{MAX_MANUAL_CHARS:,}"
         )
     text = text.replace("\r\n", "\n").replace("\r", "\n").replace("\f", "\n\f\n")
-    text = _clean_chars(re.sub(r" ?❄ ?", " ❄ ", text))  # one space each side, not two
+    text = _clean_chars(re.sub(r" ?❄ ?", " ❄ ", unbox(text)))  # one space each side, not two
     text = _LEADER_RE.sub("    ", text)  # "Timer ........ 0:00 - 99:59": a gap between columns
     original = text.split("\n")
     raw_lines, line_numbers = _reading_order(original)
@@ -209,6 +210,8 @@ def parse_manual(text: str) -> Manual:
         if position in spaced:
             flush()
             cells, is_header = spaced[position]
+            if is_header is None:  # a legend's first row: a table without a header
+                header = ()
             if is_header:
                 header = cells
                 units.append(Unit(number, " | ".join(cells), cells, (), heading=heading))

@@ -1,0 +1,132 @@
+"""Key legends with several functions per key, callout-numbered legends, box-drawn charts and
+code columns: each rule on a small manual of our own words."""
+
+from __future__ import annotations
+
+from apbot.model.validate import check_model
+from apbot.read import read_manual
+from apbot.read.text import parse_manual
+
+# a foot spa: a one-letter key with two jobs, a callout-numbered legend with a line carried
+# under the key, a box-drawn programme chart whose first column is the display code, a row
+# of level keys 1 to 4, and a programme change that puts the jets back to a named value
+SPA = """
+AquaRest Foot Spa FS-2
+
+THE KEYPAD
+
+  ①  P          Hold for 3 seconds: switch the spa on or off.
+                Press briefly: next programme.
+  ②  JETS       Jets: SOFT → STRONG → SOFT.
+  ③  Level keys Touch a key to choose the warmth at once: 1 (tepid) to 4 (hot).
+
+PROGRAMMES
+
+  ┌──────┬──────────────┬────────────────────────────┐
+  │ Code │ Programme    │ What it does               │
+  ├──────┼──────────────┼────────────────────────────┤
+  │ C1   │ CALM         │ slow bubbles, gentle       │
+  │ VB   │ VIBRATE      │ vibration of the footbed,  │
+  │      │              │ no bubbles                 │
+  │ RF   │ REFRESH      │ cool water pulses          │
+  └──────┴──────────────┴────────────────────────────┘
+
+Press P briefly until the code you want is lit: C1 → VB → RF → C1 ...
+After RF the display goes back to C1.
+Each time you change the programme, the jets go back to SOFT.
+"""
+SPA_ACTIONS = [
+    "hold_p",
+    "press_p",
+    "press_jets",
+    "press_1",
+    "press_2",
+    "press_3",
+    "press_4",
+]
+
+
+def _spa():  # type: ignore[no-untyped-def]
+    model = read_manual(SPA, SPA_ACTIONS).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    return model
+
+
+def test_a_box_drawn_chart_is_a_table_with_its_wrapped_cells_joined() -> None:
+    units = parse_manual(SPA).units
+    rows = [u.cells for u in units if u.cells and u.header and u.header[0] == "Code"]
+    assert rows[1] == ("VB", "VIBRATE", "vibration of the footbed, no bubbles")
+    assert [r[0] for r in rows] == ["C1", "VB", "RF"]
+
+
+def test_a_callout_numbered_legend_has_no_header_and_loses_its_callouts() -> None:
+    units = parse_manual(SPA).units
+    row = next(u for u in units if u.cells and u.cells[0] == "P")
+    assert row.header == ()
+    assert row.cells[1].endswith("Press briefly: next programme.")  # the line carried under
+    assert next(u for u in units if u.cells and u.cells[0] == "JETS").header == ()
+
+
+def test_holding_a_key_that_switches_the_appliance_itself_is_the_power() -> None:
+    model = _spa()
+    power = [f for f in model.features.values() if f[0].variable == "power"]
+    assert power and power[0][0].actions == ["hold_p"]
+    assert any(g.when == {"power": "off"} for g in model.guards)
+
+
+def test_the_short_press_of_a_letter_key_steps_the_charted_programmes_shown_by_code() -> None:
+    model = _spa()
+    prog = model.variables["programme"]
+    assert prog.values == ["calm", "vibrate", "refresh"]
+    assert prog.show == {"calm": "C1", "vibrate": "VB", "refresh": "RF"}
+    step = model.features["set_programme"][0]
+    assert step.actions == ["press_p"] and step.effect == "next"
+
+
+def test_a_programme_change_that_names_a_setting_and_a_value_sets_that_value() -> None:
+    step = _spa().features["set_programme"][0]
+    assert step.set == {"jets": "soft"} and not step.reset
+
+
+def test_a_row_of_level_keys_sets_its_amount_directly_not_a_keypad_time() -> None:
+    model = _spa()
+    warmth = model.variables["warmth"] if "warmth" in model.variables else None
+    level = next(
+        v for n, v in model.variables.items() if n in ("warmth", "level") and v.type == "numeric"
+    )
+    assert warmth is None or warmth is level
+    assert [list(r) for r in level.ranges] == [[1, 4, 1]]
+    assert not [v for v in model.variables.values() if v.type == "time"]
+
+
+# a plant lamp whose only power key is touched and held; it is delivered switched on
+LAMP = """
+GrowBright GL-1 plant lamp
+
+  Symbol        Name            Function
+  ------------  --------------  ---------------------------------------
+  ⏻             power key       Touch and hold 2 s: switch the lamp
+                                off or on again.
+  BRIGHT        bright key      Brightness 1 → 2 → 3 → 1.
+
+The lamp is switched on when it leaves the factory.
+"""
+
+
+def test_a_power_key_that_is_only_held_switches_the_appliance_and_starts_on() -> None:
+    model = read_manual(LAMP, ["hold_power", "press_bright"]).model
+    power = model.variables["power"]
+    assert power.initial == "on"
+    assert model.features["power"][0].actions == ["hold_power"]
+
+
+def test_holding_a_key_that_switches_a_setting_is_not_the_power() -> None:
+    text = """
+Kettle KT-3
+
+  ①  WARM       Press: keep warm on / off.
+                Hold for 2 seconds: switch the sound on or off.
+  ②  START      Starts boiling.
+"""
+    model = read_manual(text, ["press_warm", "hold_warm", "press_start"]).model
+    assert "power" not in model.variables
