@@ -90,12 +90,12 @@ def test_a_programme_change_that_names_a_setting_and_a_value_sets_that_value() -
 
 def test_a_row_of_level_keys_sets_its_amount_directly_not_a_keypad_time() -> None:
     model = _spa()
-    warmth = model.variables["warmth"] if "warmth" in model.variables else None
-    level = next(
-        v for n, v in model.variables.items() if n in ("warmth", "level") and v.type == "numeric"
-    )
-    assert warmth is None or warmth is level
-    assert [list(r) for r in level.ranges] == [[1, 4, 1]]
+    steps = [f[0] for f in model.features.values() if f[0].actions[:1] == ["press_1"]]
+    assert steps and {a: e.to for a, e in steps[0].effect.items()} == {  # type: ignore[union-attr]
+        f"press_{n}": n for n in range(1, 5)
+    }
+    level = model.variables[steps[0].variable]
+    assert level.type == "numeric" and [list(r) for r in level.ranges] == [[1, 4, 1]]
     assert not [v for v in model.variables.values() if v.type == "time"]
 
 
