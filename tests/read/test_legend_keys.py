@@ -130,3 +130,37 @@ Kettle KT-3
 """
     model = read_manual(text, ["press_warm", "hold_warm", "press_start"]).model
     assert "power" not in model.variables
+
+
+# a pasta maker whose start state is printed as one list, and a smoker-like oven whose list
+# gives the values alone
+PASTA = """
+NoodleMate NM-4
+
+  MODE      Shape: SPAGHETTI → PENNE → LASAGNE → SPAGHETTI.
+  SPEED     Speed: 1 → 2 → 3 → 1.
+
+Every time you plug it in, the machine starts with these settings:
+
+      mode SPAGHETTI · speed 2
+"""
+OVEN = """
+Roastline RO-9
+
+  TEMP     Sets the temperature, 100 - 250 °C in steps of 10 °C.
+  TIME     Sets the roasting time, 0:10 - 6:00 (hours and minutes), in 10-minute steps.
+
+The first time, the oven shows its factory settings: 180 °C and 1:30.
+"""
+
+
+def test_a_printed_list_of_start_settings_gives_each_named_setting_its_start() -> None:
+    model = read_manual(PASTA, ["press_mode", "press_speed"]).model
+    assert model.variables["mode"].initial == "spaghetti"
+    assert model.variables["speed"].initial == 2
+
+
+def test_a_start_value_without_its_name_goes_to_the_one_setting_that_holds_it() -> None:
+    model = read_manual(OVEN, ["press_temp", "press_time", "press_up", "press_down"]).model
+    times = [v for v in model.variables.values() if v.type == "time"]
+    assert times and times[0].initial == "01:30:00"
