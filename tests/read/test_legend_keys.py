@@ -164,3 +164,29 @@ def test_a_start_value_without_its_name_goes_to_the_one_setting_that_holds_it() 
     model = read_manual(OVEN, ["press_temp", "press_time", "press_up", "press_down"]).model
     times = [v for v in model.variables.values() if v.type == "time"]
     assert times and times[0].initial == "01:30:00"
+
+
+# a porridge maker whose programme sets the consistency per grain, and puts it back
+PORRIDGE = """
+OatPot OP-1
+
+  PROGRAMME    Grain: OATS → RICE → MILLET → OATS.
+  CONSISTENCY  Each press: the next consistency the table gives for the grain.
+  DELAY        Delayed start, 1 - 12 hours.
+
+  | Programme | Consistency          |
+  |-----------|----------------------|
+  | OATS      | SMOOTH, CHUNKY       |
+  | RICE      | SMOOTH, CREAMY       |
+  | MILLET    | SMOOTH               |
+
+Changing the programme returns the consistency to SMOOTH.
+"""
+
+
+def test_a_reset_to_a_named_value_of_a_per_programme_setting_sets_only_that() -> None:
+    actions = ["press_programme", "press_consistency", "press_delay"]
+    model = read_manual(PORRIDGE, actions).model
+    step = next(f[0] for f in model.features.values() if f[0].actions == ["press_programme"])
+    assert step.set == {"consistency": "smooth"}
+    assert not step.reset

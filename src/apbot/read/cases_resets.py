@@ -101,6 +101,8 @@ def _set_back(b: Builder, text: str, choice: str, fixed: set[str]) -> dict[str, 
     out: dict[str, str] = {}
     for name, spec in b.variables.items():
         values = [str(v) for v in spec.get("values") or []]
+        for case in (spec.get("cases") or {}).values():  # a per-programme setting: any case's
+            values += [str(v) for v in case.get("values") or [] if str(v) not in values]
         if name in (choice, "running") or name in fixed or spec.get("type") != "discrete":
             continue
         noun = r"[\s_-]+".join(re.escape(w) for w in words(name.replace("_", " ")))
