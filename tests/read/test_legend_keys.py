@@ -13,6 +13,8 @@ from apbot.read.text import parse_manual
 SPA = """
 AquaRest Foot Spa FS-2
 
+Fill the spa with warm water before you switch it on. Never move the spa while it is full.
+
 THE KEYPAD
 
   ①  P          Hold for 3 seconds: switch the spa on or off.
@@ -190,3 +192,26 @@ def test_a_reset_to_a_named_value_of_a_per_programme_setting_sets_only_that() ->
     step = next(f[0] for f in model.features.values() if f[0].actions == ["press_programme"])
     assert step.set == {"consistency": "smooth"}
     assert not step.reset
+
+
+# a bean roaster whose knob has three jobs, told on lines set in under its name
+ROASTER = """
+BeanCraft BR-2 coffee roaster
+
+  Control       Use
+  ------------  --------------------------------------------------------
+  POWER         Switch the roaster on or off.
+  TEMP          Select the drum temperature for adjustment.
+  ROAST knob    Turn: change the selected setting.
+                Press: confirm the setting.
+                Press and hold 2 seconds: start or stop roasting.
+
+The display shows ROASTING while the drum turns.
+"""
+
+
+def test_a_knob_held_to_start_or_stop_the_run_toggles_running() -> None:
+    actions = ["press_power", "press_temp", "turn_roast_cw", "turn_roast_ccw", "press_roast"]
+    model = read_manual(ROASTER, [*actions, "hold_roast"]).model
+    steps = [f[0] for f in model.features.values() if f[0].actions == ["hold_roast"]]
+    assert steps and steps[0].variable == "running" and steps[0].effect == "toggle"

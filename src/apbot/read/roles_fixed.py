@@ -14,7 +14,7 @@ from apbot.read.roles_common import (
     label_of,
     mentions_of,
 )
-from apbot.read.roles_holds import held_named_switch, held_power
+from apbot.read.roles_holds import held_named_switch, held_power, held_start
 from apbot.read.shapes import RUNNING_RE, STOP_WORDS
 from apbot.read.shown import LOCK_CUE, RUNNING_CUE, shown_words
 
@@ -198,6 +198,8 @@ def assign_running(
         and not set(words(i.token)) & NUMERIC_WORDS  # END TIME, CLEAR TIMER: a setting
         and i.skill in ("press", "hold")
     ]
+    if not starts and not stops:  # "SELECT dial … Press and hold 2 seconds: start or stop"
+        starts = [i for i in infos if i.name not in done and held_start(b, i) is not None][:1]
     if starts or stops:
         var = b.unique("running", b.variables)
         b.variables[var] = {"type": "discrete", "values": ["off", "on"], "label": "RUN"}
