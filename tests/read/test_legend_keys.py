@@ -215,3 +215,16 @@ def test_a_knob_held_to_start_or_stop_the_run_toggles_running() -> None:
     model = read_manual(ROASTER, [*actions, "hold_roast"]).model
     steps = [f[0] for f in model.features.values() if f[0].actions == ["hold_roast"]]
     assert steps and steps[0].variable == "running" and steps[0].effect == "toggle"
+
+
+def test_a_hold_printed_as_on_off_after_its_colon_is_the_power() -> None:
+    text = """
+Breeze tower fan TF-8
+
+  ①  F          Hold 2 s: ON/OFF.
+                Press: next speed, LOW → MID → HIGH → LOW.
+  ②  SWING      Swing on / off.
+  ③  TIMER      Timer: OFF → 1H → 2H → 4H → OFF.
+"""
+    model = read_manual(text, ["hold_f", "press_f", "press_swing", "press_timer"]).model
+    assert model.features["power"][0].actions == ["hold_f"]

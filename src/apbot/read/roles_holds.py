@@ -56,7 +56,8 @@ _HOLDING = re.compile(
 # "switch the cooler off or on again", "switches on/off"
 _BOTH_WAYS = re.compile(
     r"\b(?:switch|turn)(?:es|s|ed|ing)?\s+(?:(?:the|your|this)\s+(?P<noun>[a-z][a-z -]{1,30}?)\s+)?"
-    r"(?:on\s*(?:/|or|and)\s*off|off\s*(?:/|or|and)\s*on)\b",
+    r"(?:on\s*(?:/|or|and)\s*off|off\s*(?:/|or|and)\s*on)\b"
+    r"|:\s*(?:power\s+)?on\s*/\s*off\b",  # "Hold 2 s: ON/OFF", "Long press: power on/off"
     re.IGNORECASE,
 )
 _APPLIANCE_WORDS = {"appliance", "unit", "machine", "device", "product"}
