@@ -17,6 +17,7 @@ from apbot.agent.displays import DisplayLearner
 from apbot.agent.infer import Dark, Unread
 from apbot.agent.perception import Seen
 from apbot.agent.quantities import summary
+from apbot.agent.renamed import rename_walk, translate
 from apbot.agent.repair import RepairError
 from apbot.agent.session import MISSING, Executed, Session
 from apbot.agent.time_styles import restyle_walk
@@ -48,7 +49,8 @@ class Explorer(WalkLearning):
         opposite = self.opposite(pointer, key.name)
         backward: list[Any] | None = None
         final = key
-        if opposite is not None and len(visible) < 2:
+        swapped = opposite is not None and len(visible) < 2
+        if swapped and opposite is not None:
             # nothing to learn this way (dark, or stuck at once): the other key leads
             key, opposite = opposite, key
             forward, unseen = self.walk(name, key)
@@ -65,7 +67,17 @@ class Explorer(WalkLearning):
                 else ""
             ),
         )
-        forward, backward = self._read_unread(name, forward, backward, last.predicted)
+        renamed, learnt = False, None
+        if not swapped:
+            # the belief's own words for the texts first (a template, one value's word); else
+            # the walk may be the belief's own with values printed otherwise
+            if any(isinstance(v, Unread) for v in forward + (backward or [])):
+                learnt = self._template_or_word(name, forward, backward, last.predicted)
+            if not learnt:
+                walks = self._renamed(name, last, key, opposite, forward, backward, history)
+                renamed = walks is not None
+                forward, backward = walks if walks is not None else (forward, backward)
+        forward, backward = self._read_unread(name, forward, backward, last.predicted, learnt)
         forward, backward = restyle_walk(self.session, name, forward, backward)
         seen = [v for v in forward + (backward or []) if not isinstance(v, Dark)]
         if not seen:
@@ -75,7 +87,7 @@ class Explorer(WalkLearning):
         ]
         current = last_walk[-1] if last_walk else seen[-1]
         self.stuck = None
-        if len(set(map(repr, seen))) >= 2:
+        if len(set(map(repr, seen))) >= 2 and not renamed:  # renamed: the walk was as predicted
             self.learn(name, pointer, key.name, opposite, forward, backward, current)
         elif opposite is None:  # one value over and over, no other key in the step: at an end,
             # or not this key's setting at all — nothing to say about the range
@@ -84,18 +96,32 @@ class Explorer(WalkLearning):
         for _ in range(unseen):  # presses taken in the dark: the (repaired) model says where to
             self.session.belief.advance(final.name, final.seconds)
 
+    def _template_or_word(
+        self, name: str, forward: list[Any], backward: list[Any] | None, believed: Any
+    ) -> bool:
+        """Learn how the display prints the setting from the texts a walk could not read: one
+        value's word, or the template they share; True when the belief changed."""
+        texts = [v.text for v in forward + (backward or []) if isinstance(v, Unread)]
+        return self.displays.learn_word(
+            name, forward + (backward or []), believed
+        ) or self.displays.learn(name, texts)
+
     def _read_unread(
-        self, name: str, forward: list[Any], backward: list[Any] | None, believed: Any = None
+        self,
+        name: str,
+        forward: list[Any],
+        backward: list[Any] | None,
+        believed: Any = None,
+        learnt: bool | None = None,
     ) -> tuple[list[Any], list[Any] | None]:
         """Texts the belief could not read: learn how the display prints the setting from them,
-        then read them again; what stays unreadable counts as dark."""
+        then read them again; what stays unreadable counts as dark. ``learnt``: what the word
+        and template learners made of these texts already (:meth:`_template_or_word`; None:
+        not tried yet)."""
         texts = [v.text for v in forward + (backward or []) if isinstance(v, Unread)]
-        if (
-            texts
-            and not self.displays.learn_word(name, forward + (backward or []), believed)
-            and not self.displays.learn(name, texts)
-            and self._learn_words(name, texts)
-        ):
+        if learnt is None and texts:
+            learnt = self._template_or_word(name, forward, backward, believed)
+        if texts and not learnt and self._learn_words(name, texts):
             forward, backward = as_text(forward), None if backward is None else as_text(backward)
 
         def again(trace: list[Any]) -> list[Any]:
@@ -108,6 +134,33 @@ class Explorer(WalkLearning):
             return result
 
         return again(forward), None if backward is None else again(backward)
+
+    def _renamed(
+        self,
+        name: str,
+        last: Executed,
+        key: PlannedAction,
+        opposite: PlannedAction | None,
+        forward: list[Any],
+        backward: list[Any] | None,
+        history: list[Any] | None,
+    ) -> tuple[list[Any], list[Any] | None] | None:
+        """A walk that is the belief's own with some values printed in other words: learn
+        those words (:mod:`apbot.agent.renamed`) and read the walk in the belief's values
+        (None: not such a walk)."""
+        opened = len(history) - 1 if history and forward[: len(history)] == history else 0
+        if not forward[opened:] or forward[opened] != self._value(name, last.seen):
+            return None  # the walk does not open on the display ``last`` left
+        walks = [(forward[opened:], key.name)]
+        if backward is not None and opposite is not None:
+            walks.append((backward, opposite.name))
+        pairs = rename_walk(self.session, self.displays.main, name, last, walks, key.seconds)
+        if pairs is None:
+            return None
+        main = self.displays.main
+        return translate(forward, pairs, main), (
+            None if backward is None else translate(backward, pairs, main)
+        )
 
     def _learn_words(self, name: str, texts: list[str]) -> bool:
         """A numeric setting whose walk showed words where numbers were due ("no spin"):

@@ -23,7 +23,8 @@ back in an hour", "…, we are 4 at the table"). The steps live in their own mod
 ``goal_spelling`` (rewrites before tokenising),
 ``goal_names`` (1), ``goal_assign`` and ``goal_fit`` (2), ``goal_scales`` (3),
 ``goal_switches`` (4), ``goal_start`` (5), ``goal_twins`` (zones and
-sides); ``goal_view`` is the model as the parser sees it.
+sides), ``goal_cases`` (the mode a setting's value implies); ``goal_view`` is the model as the
+parser sees it.
 """
 
 from __future__ import annotations
@@ -32,6 +33,7 @@ from apbot.model.domain import ValueProblem, normalise
 from apbot.model.schema import ApplianceModel, DiscreteVariable
 from apbot.model.values import closest_matches, preview
 from apbot.read.goal_assign import assign_mentions, distinct, in_weeks
+from apbot.read.goal_cases import entry_modes, implied_cases
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_kinds import kind_numbers
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
@@ -115,6 +117,8 @@ def parse_instruction(
     self_switching_off(view, text, goal, claimed)
     place_twins(view, text, goal, where)
     entry_switches(view, goal)
+    implied_cases(view, goal)
+    entry_modes(view, goal)
     boil(view, text, goal)
     power_and_running(view, text, goal, counting)
     opened = (

@@ -315,6 +315,25 @@ def _named_starts(view: Model, text: Text) -> set[int]:
     return named
 
 
+_AFTER_MOTION = CLAUSE_ENDS | {"", ",", "and", "now", "again", "freely", "until", "till"}
+
+
+def _set_in_motion(text: Text, k: int, family: frozenset[str] | None) -> bool:
+    """A causative that sets the appliance or its load working: "get it moving", "get the
+    belt turning" (GET, then IT or THE and a noun, then a verb in -ing that ends the clause),
+    "let it run", "let the water run freely" (LET, then the same, then RUN or the running
+    state's own verb)."""
+    j = k + 2 if text.word(k + 1) in ("it", "them") else k + 3
+    if j == k + 3 and text.word(k + 1) != "the":
+        return False
+    verb = text.word(j)
+    if text.word(j + 1) not in _AFTER_MOTION or not verb.isalpha():
+        return False
+    if text.word(k) == "get":
+        return verb.endswith("ing") and len(verb) > 5
+    return verb == "run" or (family is not None and stem(verb) in family)
+
+
 def _says_start(
     text: Text,
     family: frozenset[str] | None = None,
@@ -335,6 +354,8 @@ def _says_start(
             for d in range(2 if word == "set" else 1, 7)
         ):
             starts = True  # "get it going", "set the rice cooking" (not "set heating at 21")
+        if word in ("get", "let") and _set_in_motion(text, k, family):
+            starts = True  # "get it moving", "let the water run": the appliance set working
         if word == "go" and text.word(k + 1) in ("ahead", ".", "!", ""):
             starts = True
         if word == "run" and text.word(k + 1) == "it" and k in clause_starts(text):

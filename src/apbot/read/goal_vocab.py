@@ -94,7 +94,7 @@ _GROUPS: tuple[tuple[str, ...], ...] = (
     ("dry", "drying", "dryer"),
     ("sterilize", "steam", "sterilise", "sanitize", "uv"),
     ("humidity", "rh", "humid", "humidistat"),
-    ("fan", "airflow", "air", "blower", "convection"),
+    ("fan", "airflow", "air", "blower", "convection", "circulation", "ventilation"),
     ("power", "watt", "watts", "wattage", "kw", "kilowatt", "output"),
     ("level", "setting", "mark"),
     ("size", "loaf", "portion", "amount", "weight"),
@@ -285,6 +285,7 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "purify": ("clean", "cleaning", "purifying", "purification", "purifier"),
     "cool": ("chill", "chilled", "chilling", "cold"),
     "holiday": ("vacation", "away", "absence"),
+    "fan": ("circulate", "ventilate"),  # the nouns name an AIR switch too (the group)
     "vacation": ("holiday", "away", "absence"),
 }
 # Counts written as adverbs ("rinse twice").

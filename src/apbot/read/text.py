@@ -14,7 +14,13 @@ from dataclasses import dataclass, field
 
 from apbot.read.errors import ReaderError
 from apbot.read.text_boxes import unbox
-from apbot.read.text_pages import _furniture, _page_breaks, _plain_heading, _reading_order
+from apbot.read.text_pages import (
+    _furniture,
+    _page_breaks,
+    _plain_heading,
+    _reading_order,
+    contents_lines,
+)
 from apbot.read.text_sections import drop_boilerplate
 from apbot.read.text_tables import _row_charts, _space_tables, _strip_markup
 
@@ -147,6 +153,9 @@ def parse_manual(text: str) -> Manual:
         )
     text = text.replace("\r\n", "\n").replace("\r", "\n").replace("\f", "\n\f\n")
     text = _clean_chars(re.sub(r" ?❄ ?", " ❄ ", unbox(text)))  # one space each side, not two
+    lines = text.split("\n")
+    contents = contents_lines(lines)  # a table of contents: titles, not text about the keys
+    text = "\n".join("" if i in contents else line for i, line in enumerate(lines))
     text = _LEADER_RE.sub("    ", text)  # "Timer ........ 0:00 - 99:59": a gap between columns
     original = text.split("\n")
     raw_lines, line_numbers = _reading_order(original)

@@ -98,6 +98,39 @@ def _furniture(lines: list[str]) -> set[int]:
     return out
 
 
+# one entry of a table of contents: a title, a dot leader and a page number ("Keep warm ...... 7")
+_CONTENTS_ENTRY = re.compile(r"\S.*?(?:\.[ \t]?){4,}[ \t]*(\d{1,3})(?=\s{2,}\S|\s*$)")
+
+
+def contents_lines(lines: list[str]) -> set[int]:
+    """The lines of a table of contents (0-based): a run of three or more lines, each made of
+    entries that end in a dot leader and a page number ("Special functions: ECO, SUPER ....
+    9"; two entries side by side in a two-column contents), the pages never going back. Its
+    titles name chapters and keys, but say nothing about what a key sets: a title's list of
+    functions is no value list."""
+    out: set[int] = set()
+    run: list[int] = []
+    pages: list[int] = []
+
+    def close() -> None:
+        if len(run) >= 3 and pages == sorted(pages):
+            out.update(run)
+        run.clear()
+        pages.clear()
+
+    for i, line in enumerate([*lines, ""]):
+        stripped = line.strip()
+        entries = list(_CONTENTS_ENTRY.finditer(stripped))
+        if entries and "".join(m.group(0) for m in entries).replace(" ", "") == stripped.replace(
+            " ", ""
+        ):
+            run.append(i)
+            pages.append(int(entries[0].group(1)))
+        elif stripped or not run:
+            close()
+    return out
+
+
 def _page_breaks(lines: list[str], furniture: set[int]) -> set[int]:
     """Lines to pass over so a sentence broken by a page goes on (0-based): a run of blank lines
     and page furniture, unless the text before it ended a sentence (then it is a paragraph

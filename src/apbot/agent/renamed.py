@@ -1,0 +1,219 @@
+"""Renamed values: a walk that follows the belief's order exactly, with some values printed
+in words the belief does not use.
+
+A manual names a setting's values one way and the panel prints them another: a switch the
+manual calls "on"/"off" shows ``I``/``0``; a power scale read as 0..10 ends in ``P`` on the
+display; a choice of "distance" shows as ``DIST``. Walking the setting then shows texts the
+belief cannot read (or reads as values outside its domain), and a repair of the *domain* from
+them would replace the manual's values by the display's words — which the goal, parsed
+against the manual's values, no longer names ("keep_warm='on' is not a value the model
+knows").
+
+The walk itself says which word is which value when the rest of the belief is right: the
+belief predicts, press by press from the value it expected after the walk's first press, the
+value each press gives. When every shown value the belief can read is the one predicted and
+the other texts pair one-to-one with the predicted values the display never showed as
+themselves, those texts are those values' words (a text the belief reads as another
+setting's screen is no such word, nor digits printed without the setting's label — another
+setting's number, a clock — nor a text without the label where the walk read the setting's
+other values with it). They become the values' ``show`` templates
+(a data edit, kept only if the repaired belief reads every such text back as its value), and
+the walk is read again in the belief's values, so nothing else is learnt wrong from it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any
+
+from apbot.agent.infer import Dark, Unread
+from apbot.agent.reader import DisplayReader
+from apbot.agent.repair import RepairError, set_display
+from apbot.agent.session import Executed, Session
+from apbot.model.display import display_value, show_template
+from apbot.model.schema import TEMPLATE_FIELD
+
+_MAX_LISTED = 60  # a template per value for more values than this is no edit worth making
+
+
+def predicted_walk(
+    session: Session, name: str, last: Executed, keys: Sequence[str], seconds: float | None
+) -> list[Any] | None:
+    """The values of ``name`` the belief predicts: the one ``last`` was to give, then one after
+    each of ``keys`` pressed from there (in ``last``'s step). None when it cannot say."""
+    belief = session.belief
+    if last.pointer is None or last.predicted is None:
+        return None
+    saved = belief.state
+    try:
+        belief.set_pointer(last.pointer)
+        if not belief.set_value(name, last.predicted):
+            return None
+        values = [belief.value(name)]
+        for key in keys:
+            belief.advance(key, seconds)
+            values.append(belief.value(name))
+        return values
+    finally:
+        belief.state = saved
+
+
+def pairing(
+    shown: Sequence[Any], predicted: Sequence[Any], domain: Sequence[Any]
+) -> dict[Any, Any] | None:
+    """Shown token → believed value for the tokens the belief cannot read, when the walk is a
+    renaming of the prediction: one-to-one, and every value read as itself where predicted.
+    None otherwise (or when nothing is renamed).
+
+    >>> pairing(["I", "0", "I"], ["on", "off", "on"], ["off", "on"])
+    {'I': 'on', '0': 'off'}
+    >>> pairing([9, "P", "P"], [9, 10, 10], list(range(11)))
+    {'P': 10}
+    >>> pairing([3, "P"], [2, 10], list(range(11))) is None  # 3 where 2 was due: not a renaming
+    True
+    """
+    if len(shown) != len(predicted) or len(shown) < 2:
+        return None
+    known = set(map(repr, domain))
+    forward: dict[Any, Any] = {}
+    backward: dict[Any, Any] = {}
+    for token, value in zip(shown, predicted, strict=True):
+        if value is None or repr(value) not in known:
+            return None
+        if repr(token) in known and token != value:
+            return None
+        if forward.setdefault(token, value) != value or backward.setdefault(value, token) != token:
+            return None
+    renamed = {t: v for t, v in forward.items() if repr(t) not in known}
+    return renamed or None
+
+
+def rename_walk(
+    session: Session,
+    main: Any,
+    name: str,
+    last: Executed,
+    walks: Sequence[tuple[list[Any], str]],
+    seconds: float | None,
+) -> dict[Any, Any] | None:
+    """Learn the words of the values a walk printed otherwise (see the module); ``walks``: each
+    walk with the key it pressed, the first opened by ``last``'s own display; ``main``: the
+    main part of a display text. The tokens learnt (see :func:`translate`) when the belief
+    changed, else None."""
+    trace = [v for walk, _ in walks for v in walk]
+    if not trace or any(isinstance(v, Dark) for v in trace):
+        return None
+    reader = session.perceiver.reader
+    if any(isinstance(v, Unread) and reader.read(v.text).hypotheses for v in trace):
+        return None  # another setting's screen, not this one's in other words
+    spec = session.belief.model.variables[name]
+    if not spec.visible:
+        return None
+    keys = [key for walk, key in walks for _ in walk[1:]]  # each walk opens with no press
+    predicted = predicted_walk(session, name, last, keys, seconds)
+    if predicted is None:
+        return None
+    # each later walk opens with the display the one before it ended on (not a press)
+    shown: list[Any] = []
+    for index, (walk, _) in enumerate(walks):
+        shown += walk if index == 0 else walk[1:]
+    tokens = [_token(v, main) for v in shown]
+    domain = session.domain_values(name)
+    pairs = pairing(tokens, predicted, domain)
+    if pairs is None:
+        return None
+    texts = {token: _text(spec, name, value, token) for token, value in pairs.items()}
+    label = str(spec.display_label(name)).casefold()[:3]
+    if any(
+        isinstance(token, tuple) and any(c.isdigit() for c in text) and label not in text.casefold()
+        for token, text in texts.items()
+    ):
+        return None  # digits without the label: another setting's number (a clock), no word
+    read = {
+        repr(t): _text(spec, name, pairs.get(t, t), t) for t in tokens if not isinstance(t, tuple)
+    }
+    if any(label in text.casefold() for text in read.values()) and any(
+        isinstance(token, tuple) and label not in text.casefold() for token, text in texts.items()
+    ):
+        return None  # its other values came with its label: a text without it is not its own
+    others = {_text(spec, name, v, v).casefold() for v in domain if v not in pairs.values()}
+    folded = [t.casefold() for t in texts.values()]
+    if len(set(folded)) < len(folded) or others.intersection(folded):
+        return None  # two values, one text: the display does not tell them apart
+    if all(_said(t).casefold().startswith(str(v).casefold()) for t, v in pairs.items()):
+        return None  # values spelt out ("lo" as "low"): the walk's domain learns them as such
+    show = _templates(spec, name, domain, pairs)
+    if show is None:
+        return None
+    key = ", ".join(f"{v}={_said(t)}" for t, v in pairs.items())
+    if not session.budget.once("template", f"{name}:renamed:{key}"):
+        return None
+    try:
+        new = set_display(session.belief.model, name, show)
+    except RepairError as exc:
+        session.episode.log("repair", f"could not repair how {name} is shown: {exc}")
+        return None
+    repaired = DisplayReader(new)
+    context = session.belief.values()
+    for token, value in pairs.items():
+        text = _text(spec, name, value, token)
+        reading = repaired.read(text, {**context, name: value})
+        found = {repr(h.value(name)) for h in reading.hypotheses if h.screen.variable == name}
+        if found != {repr(value)}:
+            return None
+    words = ", ".join(f"{v} as {_said(t)!r}" for t, v in pairs.items())
+    session.adopt(new, f"{name} prints {words}", session.belief.pointer())
+    return pairs
+
+
+def translate(walk: Sequence[Any], pairs: dict[Any, Any], main: Any) -> list[Any]:
+    """A walk read again in the belief's values, after :func:`rename_walk` learnt ``pairs``."""
+    return [pairs.get(_token(v, main), v) for v in walk]
+
+
+def _said(token: Any) -> str:
+    return str(token[1]) if isinstance(token, tuple) else str(token)
+
+
+def _token(value: Any, main: Any) -> Any:
+    """A walk's entry as a key: an unread text by its main part, a value as itself."""
+    if isinstance(value, Unread):
+        return ("text", main(value.text))
+    return value
+
+
+def _templates(
+    spec: Any, name: str, domain: Sequence[Any], pairs: dict[Any, Any]
+) -> dict[str, str] | None:
+    """``show`` with each renamed value's own template (the text shown, or the belief's
+    template around the value as read), every other value printed as before."""
+    show: dict[str, str] = {}
+    if isinstance(spec.show, dict):
+        show = dict(spec.show)
+    elif spec.show is not None:
+        if len(domain) > _MAX_LISTED:
+            return None
+        show = {str(v): show_template(spec, v) for v in domain}
+    for token, value in pairs.items():
+        show[str(value)] = _text(spec, name, value, token, template=True)
+    return show
+
+
+def _text(spec: Any, name: str, value: Any, token: Any, template: bool = False) -> str:
+    """The text a renamed value showed (``token``): an unread text as it was, a value read
+    outside the domain in the belief's template for ``value``, the label filled in unless a
+    template is asked for."""
+    if isinstance(token, tuple) and len(token) == 2 and token[0] == "text":
+        return str(token[1])
+    pattern = show_template(spec, value)
+    shown = display_value(spec, token)
+
+    def fill(match: Any) -> str:
+        field = match.group(1)
+        if field == "value":
+            return shown
+        if field == "label" and not template:
+            return str(spec.display_label(name))
+        return str(match.group(0))
+
+    return TEMPLATE_FIELD.sub(fill, pattern)

@@ -1,0 +1,113 @@
+"""The mode a setting's value implies. A setting the automatic programmes fix (a melt
+temperature of 50 in DARK, 45 in MILK, 40 in WHITE, free 40-55 only in MANUAL) given a value only
+its one free case admits can only be set there: the goal holds that mode too. So does a setting
+whose every procedure first puts a mode to one value (CONVECTION, then the temperature typed).
+
+Nothing is guessed: when two cases admit the value, or the mode starts in that case anyway (what
+the panel shows before anything is pressed), the mode is left as the user left it. Nor is it
+set for a setting that other cases merely lack (MODE: POWER / TEMPERATURE, each with its own
+setting): such a mode chooses what the keys adjust, and saying the setting is choosing it."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from apbot.model.domain import build_domain
+from apbot.model.schema import DiscreteVariable, GoTo
+from apbot.read.goal_view import Goal, Model, step_effects
+
+
+def implied_cases(view: Model, goal: Goal) -> None:
+    """Set the mode of each goal setting that only one case of that mode lets the user adjust
+    (the others lack it or fix it at one value), given a value that case admits."""
+    for name in list(goal):
+        var = view.infos[name].var
+        parent = var.depends_on
+        if not parent or not var.cases or parent in goal or parent not in view.infos:
+            continue
+        mode = view.infos[parent]
+        if mode.role != "setting" or not isinstance(mode.var, DiscreteVariable):
+            continue
+        admitting = [
+            case for case in mode.values if _admits(var, var.cases.get(str(case)), goal[name])
+        ]
+        sizes = [_size(var, var.cases.get(str(case))) for case in mode.values]
+        free = [case for case, size in zip(mode.values, sizes, strict=True) if size > 1]
+        if len(admitting) != 1 or free != admitting or 1 not in sizes:
+            continue  # adjusted in other cases too (a guess), or no case fixes it
+        if str(admitting[0]) == str(_starts_at(mode.var)):
+            continue  # the panel is in that case before anything is pressed
+        goal[parent] = admitting[0]
+
+
+def entry_modes(view: Model, goal: Goal) -> None:
+    """Set the mode each goal setting's procedures all enter first (a key that goes to one
+    value of a mode, then the setting's own step), unless the panel starts in it."""
+    for name in list(goal):
+        if view.infos[name].role != "setting":
+            continue
+        common: set[tuple[str, str]] | None = None
+        for steps in view.model.features.values():
+            for index, step in enumerate(steps):
+                if step.variable != name:
+                    continue
+                entered = _entered(steps[:index], name)
+                common = entered if common is None else common & entered
+        for mode_name, value in sorted(common or ()):
+            mode = view.infos.get(mode_name)
+            if mode is None or mode_name in goal or mode.role != "setting":
+                continue
+            if view.infos[name].var.depends_on == mode_name:
+                continue  # a case of that mode: implied_cases has judged it
+            if not isinstance(mode.var, DiscreteVariable):
+                continue
+            chosen = next((v for v in mode.values if str(v) == value), None)
+            if chosen is not None and str(chosen) != str(_starts_at(mode.var)):
+                goal[mode_name] = chosen
+
+
+def _entered(earlier: list[Any], name: str) -> set[tuple[str, str]]:
+    """(mode, value) of each earlier step whose keys all put a mode to the same one value."""
+    found: set[tuple[str, str]] = set()
+    for step in earlier:
+        if step.variable in (None, name):
+            continue
+        effects = [effect for _action, effect in step_effects(step)]
+        targets = {str(e.to) for e in effects if isinstance(e, GoTo)}
+        if effects and len(targets) == 1 and all(isinstance(e, GoTo) for e in effects):
+            found.add((step.variable, targets.pop()))
+    return found
+
+
+def _size(var: Any, spec: Any) -> int:
+    """Values the setting can take in one case (0: the case lacks it)."""
+    if spec is None:
+        return 0
+    try:
+        return len(build_domain(var, spec).values)
+    except ValueError:
+        return 0
+
+
+def _admits(var: Any, spec: Any, value: Any) -> bool:
+    if spec is None:
+        return False
+    try:
+        values = build_domain(var, spec).values
+    except ValueError:
+        return False
+    return any(str(v) == str(value) or _same_number(v, value) for v in values)
+
+
+def _same_number(a: Any, b: Any) -> bool:
+    try:
+        return abs(float(a) - float(b)) < 1e-9
+    except (TypeError, ValueError):
+        return False
+
+
+def _starts_at(var: DiscreteVariable) -> Any:
+    initial = getattr(var, "initial", None)
+    if initial is not None:
+        return initial
+    return var.values[0] if var.values else None

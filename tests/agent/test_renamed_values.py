@@ -1,0 +1,138 @@
+"""Values the panel prints in other words than the manual names them (a switch "on" shown as
+``I``, the top of a power scale shown as ``P``, "distance" shown as ``DIST``): a walk that
+follows the belief's own order teaches the words, and the goal keeps the manual's values."""
+
+from __future__ import annotations
+
+from apbot.agent.renamed import pairing
+from tests.helpers import model_from
+from tests.helpers import run_checked as run
+
+SWITCH_TRUTH = """
+controls: [{id: warm, label: WARM}, {id: heat, label: HEAT}]
+variables:
+  warm:
+    type: discrete
+    values: ["off", "on"]
+    label: WARM
+    show: {"off": "WARM 0", "on": "WARM I"}
+  heat: {type: numeric, ranges: [[60, 90, 10]], initial: 60, label: HEAT, unit: "°C"}
+actions:
+  slide_warm: {control: warm}
+  press_heat: {control: heat}
+features:
+  warm:
+    - {actions: [slide_warm], variable: warm, effect: next}
+  heat:
+    - {actions: [press_heat], variable: heat, effect: next}
+display:
+  idle: "HEAT {heat}"
+"""
+
+SWITCH_BELIEF = """
+controls: [{id: warm, label: WARM}, {id: heat, label: HEAT}]
+variables:
+  warm: {type: discrete, values: ["off", "on"], label: WARM}
+  heat: {type: numeric, ranges: [[60, 90, 10]], initial: 60, label: HEAT, unit: "°C"}
+actions:
+  slide_warm: {control: warm}
+  press_heat: {control: heat}
+features:
+  warm:
+    - {actions: [slide_warm], variable: warm, effect: next}
+  heat:
+    - {actions: [press_heat], variable: heat, effect: next}
+display:
+  idle: "HEAT {heat}"
+"""
+
+SCALE_TRUTH = """
+controls: [{id: zone, label: ZONE}, {id: up, label: "+"}, {id: down, label: "-"}]
+variables:
+  zone:
+    type: numeric
+    ranges: [[0, 6, 1]]
+    label: ZONE
+    show: {"6": "ZONE P"}
+actions:
+  press_zone: {control: zone}
+  press_up: {control: up}
+  press_down: {control: down}
+features:
+  zone:
+    - {actions: [press_zone]}
+    - {actions: [press_up, press_down], variable: zone, effect: {press_up: next, press_down: prev}}
+display:
+  idle: "READY"
+"""
+
+SCALE_BELIEF = """
+controls: [{id: zone, label: ZONE}, {id: up, label: "+"}, {id: down, label: "-"}]
+variables:
+  zone: {type: numeric, ranges: [[0, 6, 1]], label: ZONE}
+actions:
+  press_zone: {control: zone}
+  press_up: {control: up}
+  press_down: {control: down}
+features:
+  zone:
+    - {actions: [press_zone]}
+    - {actions: [press_up, press_down], variable: zone, effect: {press_up: next, press_down: prev}}
+display:
+  idle: "READY"
+"""
+
+CHOICE_TRUTH = """
+controls: [{id: target, label: TARGET}]
+variables:
+  target:
+    type: discrete
+    values: [time, distance, energy]
+    label: TARGET
+    show: {time: "TIME", distance: "DIST", energy: "KCAL"}
+actions:
+  press_target: {control: target}
+features:
+  target:
+    - {actions: [press_target], variable: target, effect: next}
+display:
+  idle: "READY"
+"""
+
+CHOICE_BELIEF = """
+controls: [{id: target, label: TARGET}]
+variables:
+  target: {type: discrete, values: [time, distance, energy], label: TARGET}
+actions:
+  press_target: {control: target}
+features:
+  target:
+    - {actions: [press_target], variable: target, effect: next}
+display:
+  idle: "READY"
+"""
+
+
+def test_a_switch_shown_as_i_and_0_keeps_its_on_and_off() -> None:
+    episode, reached = run(model_from(SWITCH_TRUTH), model_from(SWITCH_BELIEF), {"warm": "on"})
+    assert reached
+    assert any("warm prints" in note for note in episode.repairs)
+
+
+def test_the_top_of_a_scale_shown_as_a_letter_is_still_the_top() -> None:
+    episode, reached = run(model_from(SCALE_TRUTH), model_from(SCALE_BELIEF), {"zone": 6})
+    assert reached
+    assert any("zone prints 6" in note for note in episode.repairs)
+
+
+def test_choices_shown_in_short_words_alone_are_learnt_by_their_order() -> None:
+    goal = {"target": "energy"}
+    episode, reached = run(model_from(CHOICE_TRUTH), model_from(CHOICE_BELIEF), goal)
+    assert reached
+    assert any("target prints" in note for note in episode.repairs)
+
+
+def test_a_walk_in_another_order_is_no_renaming() -> None:
+    assert pairing(["b", "X", "b"], ["a", "b", "a"], ["a", "b", "c"]) is None
+    assert pairing(["X", "Y"], ["a", "a"], ["a", "b"]) is None  # one value, two words
+    assert pairing(["a", "b"], ["a", "b"], ["a", "b"]) is None  # nothing renamed
