@@ -90,7 +90,7 @@ def _paired_amounts(b: Builder) -> list[tuple[str, list[str]]]:
         var = steps[0].get("variable")
         if (
             isinstance(effect, dict)
-            and {"next", "prev"} <= set(effect.values())
+            and {"next", "prev"} <= {e for e in effect.values() if isinstance(e, str)}
             and var in b.variables
             and b.variables[var].get("type") == "numeric"
             and var not in {o[0] for o in out}

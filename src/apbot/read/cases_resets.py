@@ -27,11 +27,24 @@ RESET_RE = re.compile(
 )
 
 
+# the list wrapping round, no reset: "after TA the display returns to A1", "after the last
+# menu the display goes back to the beginning of the list"
+WRAP_RE = re.compile(
+    r"\bafter\s+(?:the\s+)?[\w -]{1,20}?,?\s+(?:the\s+)?(?:display|list|it)\s+"
+    r"(?:returns|goes back|comes back|starts again)\b",
+    re.IGNORECASE,
+)
+
+
 def apply_resets(b: Builder) -> None:
     """ "Choosing a programme loads its defaults": the programme's steps reset the settings."""
     units = b.manual.units
     at = next(
-        (i for i, u in enumerate(units) if RESET_RE.search(u.text) and not STAY_RE.search(u.text)),
+        (
+            i
+            for i, u in enumerate(units)
+            if RESET_RE.search(u.text) and not STAY_RE.search(u.text) and not WRAP_RE.search(u.text)
+        ),
         None,
     )
     if at is None:
@@ -64,6 +77,15 @@ def apply_resets(b: Builder) -> None:
         and s.get("depends_on") is None
         and n != "running"
     ]
+    sets = _set_back(b, units[at].text, choice, fixed)
+    if sets:  # "the zone goes back to FULL": that setting to that value, the others stay
+        for steps in b.features.values():
+            for step in steps:
+                if step.get("variable") == choice:
+                    step["set"] = {**step.get("set", {}), **sets}
+        shown = ", ".join(f"{n} to {v}" for n, v in sets.items())
+        b.note(f"variables.{choice}", f"choosing it sets {shown}", at)
+        return
     if not others:
         return
     for steps in b.features.values():
@@ -71,3 +93,30 @@ def apply_resets(b: Builder) -> None:
             if step.get("variable") == choice:
                 step["reset"] = [n for n in others if n != step.get("variable")]
     b.note(f"variables.{choice}", f"choosing it resets {', '.join(others)}", at)
+
+
+def _set_back(b: Builder, text: str, choice: str, fixed: set[str]) -> dict[str, str]:
+    """The settings a reset sentence puts back to a value it names, by name ("the zone goes
+    back to FULL", "resets the texture to Regular"): each such setting and that value."""
+    out: dict[str, str] = {}
+    for name, spec in b.variables.items():
+        values = [str(v) for v in spec.get("values") or []]
+        for case in (spec.get("cases") or {}).values():  # a per-programme setting: any case's
+            values += [str(v) for v in case.get("values") or [] if str(v) not in values]
+        if name in (choice, "running") or name in fixed or spec.get("type") != "discrete":
+            continue
+        noun = r"[\s_-]+".join(re.escape(w) for w in words(name.replace("_", " ")))
+        if not noun:
+            continue
+        said = re.search(
+            rf"\b{noun}\b[^.;]{{0,30}}?\b(?:back\s+)?to\s+(?:the\s+)?([\w+-]+(?: [\w+-]+)?)",
+            text,
+            re.IGNORECASE,
+        )
+        if not said:
+            continue
+        told = said.group(1).lower()
+        value = next((v for v in values if v == told or told.split()[0] == v), None)
+        if value is not None:
+            out[name] = value
+    return out

@@ -3,8 +3,10 @@
 Panels with a small display show a programme as a code ("P1 → P2 → … → P6"), and the manual's
 programme chart pairs each code with its name ("| P3 | JERKY / MEAT | 70 °C |"). A user asks
 for the name ("dry some jerky"), never the code, so a setting read as codes takes the names
-from the chart as its values and keeps the codes as what the display shows. A name given
-two ways ("JERKY / MEAT") is called by the first: the goal parser matches whole names.
+from the chart as its values and keeps the codes as what the display shows. Codes of
+letters alone ("A1 → A2 → SH → KN") are read so only from a chart column headed as the code
+("| Code | Programme |"), where they cannot be names themselves. A name given two ways
+("JERKY / MEAT") is called by the first: the goal parser matches whole names.
 """
 
 from __future__ import annotations
@@ -18,6 +20,8 @@ from apbot.read.text import Unit
 
 _CODE = re.compile(r"[a-z]{1,3}\s?-?\d{1,2}")
 _NAME = re.compile(r"[a-z][a-z '&/+-]{1,30}")
+_SHORT = re.compile(r"[a-z0-9]{1,3}|[a-z]{1,3}\s?-?\d{1,2}")  # "sh", "a1", "p 3"
+_CODE_HEAD = re.compile(r"\b(?:codes?|display|shown|indication)\b", re.IGNORECASE)
 
 
 def name_codes(b: Builder) -> None:
@@ -26,9 +30,10 @@ def name_codes(b: Builder) -> None:
         values = [str(v) for v in spec.get("values") or []]
         if spec.get("type") != "discrete" or len(values) < 3:
             continue
-        if not all(_CODE.fullmatch(v) for v in values) or spec.get("show"):
+        if spec.get("show") or not all(_SHORT.fullmatch(v) for v in values):
             continue
-        found = _chart_names(b, values)
+        # codes of letters alone ("SH", "KN") only from a column headed as the code
+        found = _chart_names(b, values, headed=not all(_CODE.fullmatch(v) for v in values))
         if found:
             names, row = found
             _rename(spec, names)
@@ -43,11 +48,16 @@ def name_codes(b: Builder) -> None:
             )
 
 
-def _chart_names(b: Builder, codes: list[str]) -> tuple[dict[str, str], Unit] | None:
-    """The names beside the codes in the first table with a column of every one of them."""
-    for _header, rows in _tables(b.manual.units):
+def _chart_names(
+    b: Builder, codes: list[str], headed: bool = False
+) -> tuple[dict[str, str], Unit] | None:
+    """The names beside the codes in the first table with a column of every one of them
+    (``headed``: a column whose header says it holds the codes, "Code", "Display")."""
+    for header, rows in _tables(b.manual.units):
         width = min(len(r.cells) for r in rows)
         for column in range(width - 1):
+            if headed and not (column < len(header) and _CODE_HEAD.search(header[column])):
+                continue
             cells = [_norm(r.cells[column]) for r in rows]
             if not set(codes) <= set(cells):
                 continue

@@ -133,6 +133,10 @@ def find_labels(manual: Manual, tokens: list[str]) -> dict[str, Label]:
             named = _named_by_noun(manual, tw[-1])  # "the HUMIDISTAT knob" for ``knob``
             if named is not None:
                 best, best_score, line = named[0], 0.6, named[1]
+        if best_score < 0.6 and len(tw) == 1 and len(tw[0]) == 1 and tw[0].isalpha():
+            letter = _letter_key(manual, tw[0].upper())  # a key printed as one letter ("M")
+            if letter is not None:
+                best, best_score, line = tw[0].upper(), 0.6, letter
         if best_score < 0.6:
             best, line = " ".join(tw).upper() or token.upper(), None
             symbols = [s for w in (token, *tw[-1:]) for s in SYMBOLS.get(w, ())]
@@ -194,9 +198,38 @@ def _row_head(manual: Manual, name: str, tokens: list[str]) -> tuple[str, int] |
     return longer[0]
 
 
+def _letter_said(letter: str) -> re.Pattern[str]:
+    """A key printed as one capital letter, where the text shows it is a key: pressed, held
+    or touched ("Press M briefly", "hold the M key"), or called a key or button."""
+    return re.compile(
+        rf"\b(?i:press|hold|touch|push|tap)\w*\s+(?:the\s+)?{letter}(?![\w'.-])|"
+        rf"(?<![\w.-]){letter}\s+(?i:key|button)\b",
+    )
+
+
+def _letter_key(manual: Manual, letter: str) -> int | None:
+    """The line of the first unit that names a one-letter key ("M") as a key: a legend row
+    it heads (its first cell), or a sentence that presses or holds it. A capital letter
+    alone is otherwise a size, a grade or a callout, never taken for a key."""
+    said = _letter_said(letter)
+    for unit in manual.units:
+        if (unit.cells and unit.cells[0] == letter and len(unit.cells) >= 2) or said.search(
+            unit.text
+        ):
+            return unit.line
+    return None
+
+
 def _mentions(units: list[Unit], token: str, label: Label) -> list[int]:
     tw = words(token.replace("_", " "))
     patterns = []
+    if label.line is not None and len(label.text) == 1 and label.text.isalpha():
+        said = _letter_said(label.text)
+        return [
+            i
+            for i, u in enumerate(units)
+            if (u.cells and u.cells[0] == label.text and len(u.cells) >= 2) or said.search(u.text)
+        ]
     if label.line is not None:
         for text in {label.text, *re.split(r"\s*/\s*", label.text)} - {""}:
             if len(text) >= 2 or not text.isalnum():

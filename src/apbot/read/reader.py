@@ -22,6 +22,7 @@ from apbot.read.cases_chosen import chosen_cases
 from apbot.read.cases_resets import apply_resets
 from apbot.read.cases_zones import zone_twins
 from apbot.read.codes import name_codes
+from apbot.read.initials import read_initials
 from apbot.read.labels import find_labels
 from apbot.read.report import Note, Report
 from apbot.read.roles import assign
@@ -57,6 +58,7 @@ def read_manual(
     chosen_cases(builder)
     zone_twins(builder)
     name_codes(builder)
+    read_initials(builder)
     apply_resets(builder)
     data = _assemble(builder, appliance_id, category)
     data["actions"].update({a: {"skill": "wait", "seconds": w} for a, w in waits.items()})

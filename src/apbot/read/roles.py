@@ -28,6 +28,7 @@ from apbot.read.roles_common import (
     var_name,
 )
 from apbot.read.roles_confirm import ends_entry
+from apbot.read.roles_digits import assign_direct_digits
 from apbot.read.roles_fixed import assign_locks, assign_power, assign_running, standby_only
 from apbot.read.roles_holdcell import held_toggle
 from apbot.read.roles_hourmin import assign_hour_minute, hour_minute_keys
@@ -73,6 +74,8 @@ def assign(b: Builder) -> None:
         if d:
             pairs.setdefault(d[0], {"up": [], "down": []})[d[1]].append(info.name)
     digits = [i.name for i in infos if i.digit is not None and i.name not in done]
+    if assign_direct_digits(b, [i for i in infos if i.name in digits]):
+        digits = []  # a row of levels 1–5: no keypad
     dials: dict[str, list[ActionInfo]] = {}
     for info in infos:
         if info.skill.startswith("turn") and info.name not in done:

@@ -201,6 +201,13 @@ def var_name(b: Builder, key: ActionInfo) -> str:
     lab = b.labels.get(key.controls[0])
     if key.skill != "press" or lab is None or lab.line is None:
         return base
+    if len(key.token) == 1:  # a key printed as a letter ("M"): what its sentences say it picks
+        nouns = "|".join(GROUP_NOUNS)
+        moves = re.compile(rf"\b(?:next|previous|choose|select)\w*\s+(?:the\s+)?({nouns})\b", re.I)
+        for i in lab.mentions:
+            m = moves.search(b.manual.units[i].text)
+            if m:
+                return m.group(1).lower()
     lw = [w for w in words(lab.text) if w.isalpha()]
     tw = words(key.token.replace("_", " "))
     if 1 < len(lw) <= 3 and all(any(x == t or x.startswith(t) for x in lw) for t in tw):
@@ -248,8 +255,12 @@ def stepped_noun(b: Builder, tokens: list[str], ev: Evidence | None = None) -> s
     # another key's name ("while the TIMER is being set they change the hours") is what the
     # pair sets for that key, not its own setting
     keys = {lab.text.lower() for t, lab in b.labels.items() if t not in tokens and lab.text}
+    units = b.manual.units
+    own_rows = {i for t in tokens for i in mentions_of(b, t) if units[i].cells and units[i].header}
     for i in b.context(tokens):
-        text = b.manual.units[i].text.lower()
+        if i not in own_rows and any(units[i].header == units[r].header for r in own_rows):
+            continue  # the key table's next row is about the next key
+        text = units[i].text.lower()
         for noun in (n for n in SETTING_NOUNS if n not in keys):
             counts[noun] = counts.get(noun, 0) + len(re.findall(rf"\b{noun}\b", text))
     best = max(SETTING_NOUNS, key=lambda n: (counts.get(n, 0), -SETTING_NOUNS.index(n)))

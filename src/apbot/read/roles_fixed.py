@@ -14,13 +14,15 @@ from apbot.read.roles_common import (
     label_of,
     mentions_of,
 )
-from apbot.read.roles_holds import held_named_switch
+from apbot.read.roles_holds import held_named_switch, held_power, held_start
 from apbot.read.shapes import RUNNING_RE, STOP_WORDS
 from apbot.read.shown import LOCK_CUE, RUNNING_CUE, shown_words
 
 _DELIVERED_ON_RE = re.compile(
     r"\b(?:leaves? the factory|as delivered|on delivery|out of the box|factory (?:state|settings?))"
-    r"\b[^.]*\b(?:is |are )?(?:switched|turned) on\b(?!\s+(?:when|after|by|with|once))",
+    r"\b[^.]*\b(?:is |are )?(?:switched|turned) on\b(?!\s+(?:when|after|by|with|once))"
+    # the other way round: "The cooler is switched on when it leaves the factory"
+    r"|\b(?:is|are) (?:switched|turned) on (?:when|as) (?:it|they) leaves? the factory\b",
     re.I,
 )
 
@@ -44,17 +46,20 @@ def assign_power(b: Builder) -> list[str]:
             r"\b(?:switch|turn)\w*\b[^.]*\b(?:on|off)\b", ctx, re.I
         ):
             power_token = "power"
-    if power_token:
+    var = ""
+    if power_token is None:  # a key held to switch the appliance on and off ("M: hold 2 s")
+        for info in infos:
+            at = held_power(b, info)
+            if at is not None:
+                var = b.add_toggle("power", label_of(b, info.token), at)
+                b.feature("power", [{"actions": [info.name], "variable": var, "effect": "toggle"}])
+                b.note("features.power", f"holding {label_of(b, info.token)} switches it", at)
+                power_actions.append(info.name)
+                break
+    else:
         press = [i for i in by_token[power_token] if i.skill == "press"]
         holds = [i for i in by_token[power_token] if i.skill == "hold"]
         var = b.add_toggle("power", label_of(b, power_token), first_mention(b, [power_token]))
-        b.indicators.remove(var) if var in b.indicators else None
-        delivered = next(
-            (i for i, u in enumerate(b.manual.units) if _DELIVERED_ON_RE.search(u.text)), None
-        )
-        if delivered is not None:  # "leaves the factory: mode COMF, …, heater switched on"
-            b.variables[var]["initial"] = "on"
-            b.note(f"variables.{var}.initial", "it is switched on as delivered", delivered)
         if holds and press:
             b.feature(
                 "power_on", [{"actions": [press[0].name], "variable": var, "effect": {"to": "on"}}]
@@ -73,6 +78,14 @@ def assign_power(b: Builder) -> list[str]:
             acts = [i.name for i in press]
             b.feature("power", [{"actions": acts, "variable": var, "effect": "toggle"}])
             power_actions += acts
+    if var:
+        b.indicators.remove(var) if var in b.indicators else None
+        delivered = next(
+            (i for i, u in enumerate(b.manual.units) if _DELIVERED_ON_RE.search(u.text)), None
+        )
+        if delivered is not None:  # "leaves the factory: mode COMF, …, heater switched on"
+            b.variables[var]["initial"] = "on"
+            b.note(f"variables.{var}.initial", "it is switched on as delivered", delivered)
         b.guards.append(
             {
                 "name": "power off",
@@ -185,6 +198,8 @@ def assign_running(
         and not set(words(i.token)) & NUMERIC_WORDS  # END TIME, CLEAR TIMER: a setting
         and i.skill in ("press", "hold")
     ]
+    if not starts and not stops:  # "SELECT dial … Press and hold 2 seconds: start or stop"
+        starts = [i for i in infos if i.name not in done and held_start(b, i) is not None][:1]
     if starts or stops:
         var = b.unique("running", b.variables)
         b.variables[var] = {"type": "discrete", "values": ["off", "on"], "label": "RUN"}

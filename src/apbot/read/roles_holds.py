@@ -46,3 +46,100 @@ def held_named_switch(b: Builder, info: ActionInfo) -> tuple[str, int] | None:
             if m and m.group("name").upper() != label.upper():
                 return m.group("name"), i
     return None
+
+
+# holding: "Hold for 2 seconds:", "touch and hold ⏻", "long press"
+_HOLDING = re.compile(
+    r"\b(?:(?:press|touch|push)\s+and\s+)?(?:hold(?:ing)?|held|long[ -]press)\b", re.IGNORECASE
+)
+# switching the appliance itself (or nothing named) both ways: "switch the cushion on or off",
+# "switch the cooler off or on again", "switches on/off"
+_BOTH_WAYS = re.compile(
+    r"\b(?:switch|turn)(?:es|s|ed|ing)?\s+(?:(?:the|your|this)\s+(?P<noun>[a-z][a-z -]{1,30}?)\s+)?"
+    r"(?:on\s*(?:/|or|and)\s*off|off\s*(?:/|or|and)\s*on)\b"
+    r"|:\s*(?:power\s+)?on\s*/\s*off\b",  # "Hold 2 s: ON/OFF", "Long press: power on/off"
+    re.IGNORECASE,
+)
+_APPLIANCE_WORDS = {"appliance", "unit", "machine", "device", "product"}
+_TITLE_LINES = 15  # the title block: brand, model, what the product is
+
+
+def _appliance_words(b: Builder) -> set[str]:
+    """Words the manual calls the appliance by: the generic ones, and the word of its title
+    block ("Dual-zone wine cooler", "Massage Seat Cushion") that the text most often says
+    with "the" ("the cooler", "the cushion"); a setting named in a contents list (Sound
+    setting) is said less often than the appliance."""
+    title = " ".join(b.manual.lines[:_TITLE_LINES]).lower()
+    keys = {w for lab in b.labels.values() for w in re.findall(r"[a-z]+", lab.text.lower())}
+    candidates = set(re.findall(r"[a-z]{3,}", title)) - keys - _APPLIANCE_WORDS
+    said: dict[str, int] = {}
+    for unit in b.manual.units:
+        for word in re.findall(r"\bthe\s+([a-z]{3,})\b", unit.text.lower()):
+            if word in candidates:
+                said[word] = said.get(word, 0) + 1
+    best = max(said, key=lambda w: said[w], default="")
+    return _APPLIANCE_WORDS | ({best} if best else set())
+
+
+# starting and stopping both: "start or stop smoking", "starts / stops the cycle"
+_START_STOP = re.compile(
+    r"\b(?:start|stop)(?:s|ing)?\s*(?:or|and|/)\s*(?:start|stop)(?:s|ing)?\b", re.IGNORECASE
+)
+
+
+def _held_clauses(b: Builder, info: ActionInfo) -> list[tuple[int, str]]:
+    """The clauses that hold this one key, with their unit: in the key's own legend row a
+    clause led by holding ("SELECT dial | Turn: …. Press: …. Press and hold 2 seconds: start or
+    stop smoking."), elsewhere a clause that holds the key by name ("Hold M for 2 seconds")."""
+    if info.skill != "hold" or len(info.controls) != 1 or info.controls[0] not in b.labels:
+        return []
+    label = b.labels[info.controls[0]].text
+    if not label:
+        return []
+    this = re.compile(
+        rf"\bhold(?:\s+down)?\s+(?:the\s+)?(?:\w+\s+key\s+\(\s*)?{re.escape(label)}(?!\w)",
+        re.IGNORECASE,
+    )
+    units = b.manual.units
+    others = [lab.text for t, lab in b.labels.items() if t != info.controls[0] and lab.text]
+    out = []
+    for i in b.labels[info.controls[0]].mentions:
+        unit = units[i]
+        own_row = bool(unit.cells) and label in unit.cells[0]
+        own_line = not unit.cells and unit.text.startswith(label)  # "SELECT dial    Turn: …"
+        said = [(i, unit.text)]
+        if own_line:  # the legend's next lines, up to the next key's ("Press and hold 2 s: …")
+            for k in range(i + 1, min(i + 3, len(units))):
+                if units[k].cells or units[k].line > unit.line + 2:
+                    break
+                if any(units[k].text.startswith(o) for o in others) or not _HOLDING.match(
+                    units[k].text
+                ):
+                    continue
+                said.append((k, units[k].text))
+        for at, text in said:
+            for clause in re.split(r"(?<=[.!?;])\s+|\s+\|\s+", text):
+                if ((own_row or own_line) and _HOLDING.search(clause)) or this.search(clause):
+                    out.append((at, clause))
+    return out
+
+
+def held_start(b: Builder, info: ActionInfo) -> int | None:
+    """The unit saying that holding this key starts and stops the appliance's run ("Press
+    and hold 2 seconds: start or stop smoking."), for a key not named START; else None."""
+    return next((i for i, clause in _held_clauses(b, info) if _START_STOP.search(clause)), None)
+
+
+def held_power(b: Builder, info: ActionInfo) -> int | None:
+    """The unit saying that holding this key switches the appliance itself on and off
+    ("①  M   Hold for 2 seconds: switch the cushion on or off.", "⏻ … Touch and hold 3 s:
+    switch the cooler off or on again."): in the key's own legend row, or a sentence that
+    holds the key. None when no such clause, or when what it switches is a setting (the
+    sound, the light: not a word of the title)."""
+    named = _appliance_words(b)
+    for i, clause in _held_clauses(b, info):
+        m = _BOTH_WAYS.search(clause)
+        noun = (m.group("noun") or "").lower() if m else ""
+        if m and (not noun or noun.split()[-1] in named):
+            return i
+    return None

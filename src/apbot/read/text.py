@@ -13,6 +13,7 @@ import unicodedata
 from dataclasses import dataclass, field
 
 from apbot.read.errors import ReaderError
+from apbot.read.text_boxes import unbox
 from apbot.read.text_pages import (
     _furniture,
     _page_breaks,
@@ -151,7 +152,7 @@ def parse_manual(text: str) -> Manual:
             f"{MAX_MANUAL_CHARS:,}"
         )
     text = text.replace("\r\n", "\n").replace("\r", "\n").replace("\f", "\n\f\n")
-    text = _clean_chars(re.sub(r" ?❄ ?", " ❄ ", text))  # one space each side, not two
+    text = _clean_chars(re.sub(r" ?❄ ?", " ❄ ", unbox(text)))  # one space each side, not two
     lines = text.split("\n")
     contents = contents_lines(lines)  # a table of contents: titles, not text about the keys
     text = "\n".join("" if i in contents else line for i, line in enumerate(lines))
@@ -218,6 +219,8 @@ def parse_manual(text: str) -> Manual:
         if position in spaced:
             flush()
             cells, is_header = spaced[position]
+            if is_header is None:  # a legend's first row: a table without a header
+                header = ()
             if is_header:
                 header = cells
                 units.append(Unit(number, " | ".join(cells), cells, (), heading=heading))

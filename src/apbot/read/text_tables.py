@@ -35,18 +35,31 @@ def _caption(lines: list[str], k: int, breaks: set[int] | None = None) -> bool:
     return alone and len(line) <= 60 and len(_cells(line)) == 1 and not line.endswith(",")
 
 
+# a callout printed beside a part of the drawing: "①", "❸", "(4)"
+CALLOUT_RE = re.compile(r"[①-⑳❶-❿➀-➉]|\(\d{1,2}\)")
+
+
+def _uncalled(cells: tuple[str, ...]) -> tuple[str, ...]:
+    """A legend row's cells without its callout ("①", "M", "Hold …" → "M", "Hold …")."""
+    return cells[1:] if len(cells) > 2 and CALLOUT_RE.fullmatch(cells[0]) else cells
+
+
 def _space_tables(
     lines: list[str], breaks: set[int] | None = None
-) -> dict[int, tuple[tuple[str, ...], bool]]:
+) -> dict[int, tuple[tuple[str, ...], bool | None]]:
     """Tables drawn with spaces (text from a PDF): a header of three or more cells followed by
     rows of two or more, or a header of two short column names over rows whose second cell
     starts under the header's; a row's wrapped lines (set in from the left) go on its cells. A page
     break (``breaks``: 0-based lines the page layout passes over) inside a table — often right
     under its header — is passed over when a row follows it.
 
-    Returns line number → (cells, is the header row)."""
+    A table whose first line is led by a callout ("①  M   Hold for 2 seconds: …") is a legend
+    of the panel drawing: it has no header, that line is its first row, and each row's callout
+    is left out, so the key's name leads its row.
+
+    Returns line number → (cells, is the header row; None for the first row of a legend)."""
     breaks = breaks or set()
-    out: dict[int, tuple[tuple[str, ...], bool]] = {}
+    out: dict[int, tuple[tuple[str, ...], bool | None]] = {}
     i = 0
     while i < len(lines):
         head = _cells(lines[i])
@@ -93,9 +106,12 @@ def _space_tables(
         if two and (more or not _two_column_rows(lines, rows, j)):
             rows = []
         if len(rows) >= 2:
-            out[i + 1] = (_joined_cells(lines[i], more.get(i, [])), True)
+            head_cells = _joined_cells(lines[i], more.get(i, []))
+            legend = bool(CALLOUT_RE.fullmatch(head_cells[0]))  # "①  M   Hold 2 s: …": a row
+            out[i + 1] = (_uncalled(head_cells), None) if legend else (head_cells, True)
             for r in rows:
-                out[r + 1] = (_joined_cells(lines[r], more.get(r, [])), False)
+                cells = _joined_cells(lines[r], more.get(r, []))
+                out[r + 1] = (_uncalled(cells) if legend else cells, False)
             for k in range(i + 1, j):
                 out.setdefault(k + 1, ((), False))
             i = j

@@ -1,0 +1,133 @@
+"""The settings an appliance starts with, read from the list a manual prints of them.
+
+Manuals often list the start state in one line after a colon: "Every time you switch on, the
+cushion starts with these settings: programme A1 · zone FULL · heat off · timer 15 min ·
+intensity 3", "The appliance starts with the factory settings: fridge +5 °C, freezer -18 °C,
+…", "the smoker shows its factory settings: 225°F, 3:00 and …". Each item names a setting
+and its value (the value alone when only one setting can hold it: the one time setting for
+"3:00"). The plan starts from the belief, so a wrong start value costs presses or a goal;
+this reads the start values printed, leaving every setting the list does not name as it was.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+from apbot.model.values import format_hms, parse_hms
+from apbot.read.build import Builder
+from apbot.read.labels import words
+
+_START_LIST = re.compile(
+    r"\b(?:starts?(?:\s+up)?\s+(?:with|in|on)|shows?)\s+(?:these|the|its)\s+"
+    r"(?:factory\s+|default\s+|standard\s+|basic\s+)?settings\s*:\s*(?P<items>.*)$",
+    re.IGNORECASE,
+)
+_NUMBER = re.compile(r"[+-]?\d+(?:[.,]\d+)?")
+_CLOCK = re.compile(r"\b(\d{1,2}):([0-5]\d)\b")
+_DURATION = re.compile(r"\b(\d+(?:[.,]\d+)?)\s*(h|hours?|min|mins|minutes?|s|sec|seconds?)\b", re.I)
+
+
+def read_initials(b: Builder) -> None:
+    """Give the settings a start-settings list names their start values."""
+    units = b.manual.units
+    for i, unit in enumerate(units):
+        m = _START_LIST.search(unit.text)
+        if m is None:
+            continue
+        listed = m.group("items").strip()
+        if not listed and i + 1 < len(units):
+            listed = units[i + 1].text  # the list on the line after the colon
+        if _apply(b, listed, i):
+            return
+
+
+def _apply(b: Builder, listed: str, at: int) -> bool:
+    items = [s for s in re.split(r"\s*(?:·|,|;|\band\b)\s*", listed) if s.strip()]
+    set_any = False
+    named: set[str] = set()
+    for item in items:
+        var = _named_in(b, item)
+        if var is not None:
+            named.add(var)
+            value = _value(b.variables[var], item)
+        else:
+            var, value = _by_value(b, item, named)
+        if var is None or value is None:
+            continue
+        b.variables[var]["initial"] = value
+        b.note(f"variables.{var}.initial", f"starts at {value} (the start settings listed)", at)
+        named.add(var)
+        set_any = True
+    return set_any
+
+
+def _named_in(b: Builder, item: str) -> str | None:
+    """The setting an item names by its name or its label ("zone FULL", "timer 15 min")."""
+    said = set(words(item))
+    for name, spec in b.variables.items():
+        if name in ("power", "running"):
+            continue
+        names = words(name.replace("_", " "))
+        label = [w for w in words(str(spec.get("label", ""))) if w.isalpha() and len(w) >= 3]
+        if (names and set(names) <= said) or (label and set(label) <= said):
+            return name
+    return None
+
+
+def _value(spec: dict[str, Any], item: str) -> Any:
+    """The value an item gives a setting, when the setting can hold it; else None."""
+    text = item.lower()
+    kind = spec.get("type")
+    if kind == "discrete":
+        values = [str(v) for v in spec.get("values") or []]
+        shown = {str(c).lower(): v for v, c in (spec.get("show") or {}).items()}
+        for token in [*re.findall(r"[+-]?[\w.]+", text)]:
+            if token in values:
+                return token
+            if token in shown and shown[token] in values:
+                return shown[token]
+        return None
+    if kind == "time":
+        return _time(spec, text)
+    if kind == "numeric":
+        ranges = spec.get("ranges") or []
+        for m in _NUMBER.finditer(text):
+            x = float(m.group(0).replace(",", "."))
+            if any(r[0] <= x <= r[1] for r in ranges):
+                return int(x) if x.is_integer() else x
+    return None
+
+
+def _time(spec: dict[str, Any], text: str) -> str | None:
+    """A start time in the setting's range: "15 min", "2 h", or "3:00" read as h:mm or
+    mm:ss, whichever the range holds."""
+    bounds = [(parse_hms(str(r[0])), parse_hms(str(r[1]))) for r in spec.get("ranges") or []]
+    candidates: list[int] = []
+    if (m := _CLOCK.search(text)) is not None:
+        a, b_ = int(m.group(1)), int(m.group(2))
+        candidates += [a * 3600 + b_ * 60, a * 60 + b_]
+    elif (m := _DURATION.search(text)) is not None:
+        x = float(m.group(1).replace(",", "."))
+        unit = m.group(2).lower()
+        scale = 3600 if unit.startswith("h") else 60 if unit.startswith("m") else 1
+        candidates.append(int(x * scale))
+    for seconds in candidates:
+        if any(lo <= seconds <= hi for lo, hi in bounds):
+            return format_hms(seconds)
+    return None
+
+
+def _by_value(b: Builder, item: str, named: set[str]) -> tuple[str | None, Any]:
+    """An item that names no setting: the one setting not yet given a start value that can
+    hold its value ("3:00" and a single time setting); None when none or several can."""
+    if not re.search(r"\d", item):
+        return None, None
+    fits = [
+        (name, value)
+        for name, spec in b.variables.items()
+        if name not in named
+        and spec.get("type") in ("numeric", "time")
+        and (value := _value(spec, item)) is not None
+    ]
+    return fits[0] if len(fits) == 1 else (None, None)

@@ -1,0 +1,83 @@
+"""Tables drawn with box characters, turned into pipe tables before the text is cleaned.
+
+Manuals converted from a PDF, or laid out for a fixed-width page, draw their charts with box
+characters: a top border with column marks (┌──┬──┐), rows between vertical bars (│ A1 │ …
+│), a rule under the header (├──┼──┤), and a cell too long for its column wrapped onto the
+next line with the other cells of that line left empty. Read character by character, the
+bars become dashes and each drawn line a sentence of its own, so a programme chart loses its
+columns and a key table its rows. Here a box with column marks becomes the pipe table it
+draws: the bars become pipes, a rule becomes a Markdown rule, and a line whose first cell is
+empty continues the row above, cell by cell. A box without column marks (a drawing of the
+panel) is left as it is. Lines keep their numbers (a line merged into the row above becomes a
+rule line the table reader passes over), so the report still quotes the right line.
+"""
+
+from __future__ import annotations
+
+import re
+
+_TOP = re.compile(r"^\s*┌[─━┬]*┬[─━┬]*┐\s*$")  # a top border with column marks
+_RULE = re.compile(r"^\s*[├╞┝][─━═┼╪┿]*[┤╡┥]\s*$")
+_BOTTOM = re.compile(r"^\s*└[─━┴]*┘\s*$")
+_ROW = re.compile(r"^\s*│.*│\s*$")
+
+
+def _cells(line: str) -> list[str]:
+    return [c.strip() for c in line.strip().strip("│").split("│")]
+
+
+def _rule(width: int) -> str:
+    return "|" + "---|" * width
+
+
+def unbox(text: str) -> str:
+    """``text`` with every box table that has column marks written as a pipe table."""
+    lines = text.split("\n")
+    k = 0
+    while k < len(lines):
+        if not _TOP.match(lines[k]):
+            k += 1
+            continue
+        end = k + 1
+        while end < len(lines) and (_ROW.match(lines[end]) or _RULE.match(lines[end])):
+            end += 1
+        if end >= len(lines) or not _BOTTOM.match(lines[end]) or end == k + 1:
+            k = end
+            continue
+        _rewrite(lines, k, end)
+        k = end + 1
+    return "\n".join(lines)
+
+
+def _rewrite(lines: list[str], top: int, bottom: int) -> None:
+    """Lines ``top``..``bottom`` (the borders) of one box table, rewritten in place. Header
+    lines above the table's rule stay rows of their own (the table reader joins a header
+    written on two lines); below it, a wrapped line joins its row and becomes a rule line the
+    reader passes over. A box with no rule gets one under its first row, that row moving up
+    onto the top border's line, so its wrapped lines can be passed over too."""
+    inside = range(top + 1, bottom)
+    width = max(len(_cells(lines[i])) for i in inside if _ROW.match(lines[i]))
+    first_rule = next((i for i in inside if _RULE.match(lines[i])), None)
+    rows: list[tuple[int, list[str]]] = []  # (line index, cells) of each row started
+    for i in inside:
+        if _RULE.match(lines[i]):
+            lines[i] = _rule(width)
+            continue
+        cells = (_cells(lines[i]) + [""] * width)[:width]
+        in_header = first_rule is not None and i < first_rule
+        if rows and not cells[0] and any(cells) and not in_header:
+            last = rows[-1][1]
+            for c, cell in enumerate(cells):
+                if cell:
+                    last[c] = f"{last[c]} {cell}".strip()
+            lines[i] = _rule(width)
+            continue
+        rows.append((i, cells))
+    if first_rule is None and rows:  # the first row up one line, a rule under it
+        rows[0] = (top, rows[0][1])
+        lines[top + 1] = _rule(width)
+    else:
+        lines[top] = ""
+    for i, cells in rows:
+        lines[i] = "| " + " | ".join(cells) + " |"
+    lines[bottom] = ""
