@@ -13,7 +13,7 @@ import pytest
 
 import apbot
 from apbot.bench import provenance, runner
-from apbot.bench.provenance import code_version, describe_code, suite_digest
+from apbot.bench.provenance import code_version, describe_code, same_code, suite_digest
 from apbot.bench.runner import BenchError, BenchOptions, cached_suite, run_benchmark
 from apbot.bench.suite import Suite, bundled_suite_dir
 
@@ -36,11 +36,27 @@ def package_in(directory: Path) -> Path:
 
 
 def test_outside_a_repository_there_is_a_version_and_no_revision(tmp_path: Path) -> None:
-    assert version_of(package_in(tmp_path)) == {
+    version = version_of(package_in(tmp_path))
+    assert version == {
         "apbot": apbot.__version__,
+        "source": version["source"],
         "git": None,
         "git_dirty": None,
     }
+    assert version["source"].startswith("sha256:")
+
+
+def test_an_edited_copy_without_git_is_another_version(tmp_path: Path) -> None:
+    """A copy made by ``git archive`` (or an installed one) has no revision: only the source
+    digest tells two states of its code apart, so their results never mix in one run."""
+    package = package_in(tmp_path)
+    before = version_of(package)
+    (package / "__init__.py").write_text("# changed\n")
+    after = version_of(package)
+    assert after["git"] is None and after["source"] != before["source"]
+    assert not same_code(before, after)
+    assert same_code(after, version_of(package))
+    assert describe_code(after) == f"apbot {apbot.__version__} (source {after['source'][7:19]})"
 
 
 def test_without_git_there_is_no_revision_and_no_error(
@@ -58,9 +74,16 @@ def test_the_revision_is_that_of_the_repository_tracking_the_package(tmp_path: P
     git(tmp_path, "add", ".")
     git(tmp_path, "commit", "-qm", "x")
     head = git(tmp_path, "rev-parse", "HEAD")
-    assert version_of(package) == {"apbot": apbot.__version__, "git": head, "git_dirty": False}
+    clean = version_of(package)
+    assert clean == {
+        "apbot": apbot.__version__,
+        "source": clean["source"],
+        "git": head,
+        "git_dirty": False,
+    }
     (package / "__init__.py").write_text("# changed\n")
     assert version_of(package)["git_dirty"] is True
+    assert not same_code(clean, version_of(package))  # an edited working tree does not resume
     assert describe_code(version_of(package)) == f"apbot {apbot.__version__} (git {head[:12]})"
 
 
