@@ -11,6 +11,7 @@ from apbot.model.values import format_hms, preview
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_fit import fit, number_for
 from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab, said_before
+from apbot.read.goal_unitless import unitless_named
 from apbot.read.goal_values import unit_text, zone_case
 from apbot.read.goal_view import Goal, Model, VarInfo, domain_values, own_stems
 from apbot.read.goal_vocab import concept, stem
@@ -140,6 +141,12 @@ def assign_mentions(
             used.add(mi)
     for mi, mention in enumerate(mentions):
         if mi not in used:
+            unitless = unitless_named(view, text, mention, goal)
+            if unitless is not None:  # "fridge at 3 degrees", FRIDGE read without its unit
+                where[unitless] = mention.start
+                used.add(mi)
+                claimed.update(range(mention.start, mention.end))
+                continue
             try:
                 _unplaced(view, text, mention, goal)
             except GoalParseError as exc:

@@ -1,0 +1,75 @@
+"""A quantity said with a unit, for a numeric setting read without one and named beside it.
+
+Readers miss units: a manual prints "FRIDGE 4°C" on the display and "+5 °C" in a list, and the
+belief ends up with a FRIDGE setting 2…8 and no unit. The user then says "fridge at 3 degrees"
+and no setting takes a temperature, so the goal lost the fridge altogether. A setting of no
+known kind (no unit, none guessed from its name) named right beside the quantity takes its
+number — only when no open setting has the quantity's kind (that one would be meant) and the
+number is one of the setting's values.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from apbot.model.schema import DiscreteVariable, NumericVariable
+from apbot.read.goal_text import Text, near_vocab
+from apbot.read.goal_values import unit_text
+from apbot.read.goal_view import Goal, Model, VarInfo, domain_values
+from apbot.read.numbers import Mention
+
+_NAMED = 0.3
+"""How strongly the words beside the quantity must name the setting: an own word of it within
+three words ("the fridge to 3 °C", "6 °C in the fridge")."""
+
+
+def unitless_named(view: Model, text: Text, mention: Mention, goal: Goal) -> str | None:
+    """The setting the quantity goes to (set in ``goal``), or None when none is named so."""
+    if mention.kind != "quantity" or mention.dimension is None:
+        return None
+    open_settings = [
+        info for name, info in view.infos.items() if info.role == "setting" and name not in goal
+    ]
+    if any(info.dimension == mention.dimension for info in open_settings):
+        return None
+    scored = sorted(
+        (
+            (near_vocab(info, text, mention.start, mention.end), info)
+            for info in open_settings
+            if _of_no_kind(info)
+        ),
+        key=lambda pair: -pair[0],
+    )
+    if not scored or scored[0][0] < _NAMED or (len(scored) > 1 and scored[1][0] == scored[0][0]):
+        return None
+    info = scored[0][1]
+    value = _value(view, info, mention, goal)
+    if value is None:
+        return None
+    goal[info.name] = value
+    return info.name
+
+
+def _of_no_kind(info: VarInfo) -> bool:
+    """A number range without a unit, or a list of bare numbers ("-16", "-17" …), of no kind."""
+    var = info.var
+    if info.dimension is not None:
+        return False
+    if isinstance(var, NumericVariable):
+        return not unit_text(var)
+    return isinstance(var, DiscreteVariable) and all(_number(v) is not None for v in info.values)
+
+
+def _value(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
+    for value in domain_values(view, info, goal):
+        number = _number(value)
+        if number is not None and abs(number - mention.value) < 1e-6:
+            return value
+    return None
+
+
+def _number(value: Any) -> float | None:
+    try:
+        return float(str(value).replace("+", "", 1))
+    except ValueError:
+        return None
