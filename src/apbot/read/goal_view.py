@@ -394,20 +394,22 @@ def _start_values(
 
 
 PARTIAL = 0.6
-"""Weight of a value named by its first word alone ("the eco programme" for eco 40-60); such a
-match needs the setting's own word beside it."""
+"""Weight of a value named by one of its words alone ("the eco programme" for eco 40-60, "the
+sleep programme" for AUTO SLEEP); such a match needs the setting's own word beside it."""
 
 
 def _first_words(name: str, info: VarInfo) -> list[tuple[str, Any, tuple[str, ...], float]]:
-    """The first word of a many-word value, where no other value of the setting uses it."""
+    """Each word of a many-word value that no other value of the setting uses: people name a
+    programme by its distinctive word, first or not (AUTO SLEEP, AUTO RELAX: "sleep", "relax")."""
     firsts: dict[str, list[Any]] = {}
     used: dict[str, int] = {}
     for value in info.values:
         words = [stem(w) for w in phrase_words(str(value))]
         for word in words:
             used[word] = used.get(word, 0) + 1
-        if len(words) > 1 and words[0].isalpha() and len(words[0]) >= 3:
-            firsts.setdefault(words[0], []).append(value)
+        for word in words if len(words) > 1 else []:
+            if word.isalpha() and len(word) >= 3:
+                firsts.setdefault(word, []).append(value)
     return [
         (name, values[0], (word,), PARTIAL)
         for word, values in firsts.items()

@@ -1,4 +1,5 @@
-"""A quantity with a unit, for a setting the reader left without one (``goal_unitless.py``).
+"""A quantity with a unit, for a setting the reader left without one (``goal_unitless.py``); a
+value named by a later word of its name (``goal_view._first_words``).
 
 The cabinet below was read the way readers often read: its CELLAR setting has the right range
 but no unit, and its CHILL setting is a list of bare numbers. The user says degrees.
@@ -67,3 +68,34 @@ def test_an_unnamed_or_impossible_quantity_is_not_given_to_it() -> None:
 
 def test_a_setting_of_the_quantitys_kind_is_meant_instead() -> None:
     assert parse_instruction(DIALLED, "Set 9 degrees.") == {"temp": 9}
+
+
+# a foot massager whose automatic programmes share their first word
+MASSAGER = model_from(
+    """
+    controls: [{id: mode}]
+    variables:
+      programme: {type: discrete, values: [auto calm, auto revive, auto warm up, kneading],
+                  label: PROGRAMME}
+    actions:
+      press_mode: {control: mode}
+    features:
+      set_programme:
+        - {actions: [press_mode], variable: programme, effect: next}
+    """
+)
+
+
+def test_a_later_word_of_a_value_names_it_beside_the_settings_word() -> None:
+    """Users name AUTO REVIVE "the revive programme"; the shared AUTO names none of them, and
+    a distinctive word without the setting's own word beside it names nothing."""
+    assert parse_instruction(MASSAGER, "The revive programme, please.") == {
+        "programme": "auto revive"
+    }
+    assert parse_instruction(MASSAGER, "The calm programme.") == {"programme": "auto calm"}
+    for said in ("Keep me calm and start it.", "The auto programme."):
+        try:
+            goal = parse_instruction(MASSAGER, said)
+        except ValueError:
+            continue
+        assert "programme" not in goal, (said, goal)
