@@ -40,3 +40,30 @@ def test_a_table_of_contents_without_a_heading_still_goes() -> None:
     )
     text = " ".join(u.text for u in parse_manual("Tower fan\n\n" + toc + "\nPress SPEED.\n").units)
     assert "Warranty" not in text and "SPEED" in text
+
+
+# a fan always on while plugged in, whose LOCK key is held to lock the keys
+FAN = """Breeze Tower Fan TF-3
+
+The fan runs as soon as it is plugged in.
+
+KEYS
+
+SPEED     Press to go from speed 1 to 2 and 3.
+LOCK      Hold for 3 seconds: on/off.
+TIMER     Press to set the timer from 1 to 8 hours.
+"""
+FAN_ACTIONS = ["press_speed", "hold_lock", "press_timer"]
+
+
+def test_a_lock_key_held_on_off_is_no_power_key() -> None:
+    model = read_manual(FAN, FAN_ACTIONS).model
+    assert "power" not in model.variables
+
+
+def test_holding_a_key_to_switch_on_or_off_the_child_lock_is_no_power() -> None:
+    text = FAN.replace("Hold for 3 seconds: on/off.", "Locks the keys.") + (
+        "\nHold TIMER for 3 seconds to switch on or off the child lock.\n"
+    )
+    model = read_manual(text, ["press_speed", "hold_timer", "press_timer"]).model
+    assert "power" not in model.variables

@@ -12,6 +12,7 @@ import re
 
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
+from apbot.read.shown import LOCK_CUE
 
 # a setting printed in capitals, switched on or off ("switch AUTO OFF on", "turns KEEP WARM off")
 _SWITCHED = re.compile(
@@ -57,6 +58,8 @@ _HOLDING = re.compile(
 _BOTH_WAYS = re.compile(
     r"\b(?:switch|turn)(?:es|s|ed|ing)?\s+(?:(?:the|your|this)\s+(?P<noun>[a-z][a-z -]{1,30}?)\s+)?"
     r"(?:on\s*(?:/|or|and)\s*off|off\s*(?:/|or|and)\s*on)\b"
+    # what it switches may follow: "switch on or off the child lock"
+    r"(?:\s+(?:the|your|this)\s+(?P<after>[a-z][a-z -]{1,30}?)(?=[.,;:!)]|\s*$))?"
     r"|:\s*(?:power\s+)?on\s*/\s*off\b",  # "Hold 2 s: ON/OFF", "Long press: power on/off"
     re.IGNORECASE,
 )
@@ -136,10 +139,18 @@ def held_power(b: Builder, info: ActionInfo) -> int | None:
     switch the cooler off or on again."): in the key's own legend row, or a sentence that
     holds the key. None when no such clause, or when what it switches is a setting (the
     sound, the light: not a word of the title)."""
+    if (
+        info.controls
+        and info.controls[0] in b.labels
+        and LOCK_CUE.search(b.labels[info.controls[0]].text)
+    ):
+        return None  # LOCK held 3 s "on/off": the key lock, not the appliance
     named = _appliance_words(b)
     for i, clause in _held_clauses(b, info):
         m = _BOTH_WAYS.search(clause)
-        noun = (m.group("noun") or "").lower() if m else ""
-        if m and (not noun or noun.split()[-1] in named):
+        if m is None:
+            continue
+        nouns = [(m.group(g) or "").lower() for g in ("noun", "after")]  # "… the child lock"
+        if all(not n or n.split()[-1] in named for n in nouns):
             return i
     return None
