@@ -67,3 +67,17 @@ def test_holding_a_key_to_switch_on_or_off_the_child_lock_is_no_power() -> None:
     )
     model = read_manual(text, ["press_speed", "hold_timer", "press_timer"]).model
     assert "power" not in model.variables
+
+
+# a microwave whose keypad types the time; its zero key has a name of its own
+OVEN = """Speedy Microwave MW-30
+
+Press TIME, then type the cooking time with the number keys 1 to 9 and 0.
+Press START to begin.
+"""
+OVEN_ACTIONS = ["press_time", "press_start", *[f"press_{d}" for d in range(1, 10)], "press_zero"]
+
+
+def test_number_keys_that_type_a_time_stay_a_keypad() -> None:
+    model = read_manual(OVEN, OVEN_ACTIONS).model
+    assert "level" not in model.variables
