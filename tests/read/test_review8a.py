@@ -81,3 +81,11 @@ OVEN_ACTIONS = ["press_time", "press_start", *[f"press_{d}" for d in range(1, 10
 def test_number_keys_that_type_a_time_stay_a_keypad() -> None:
     model = read_manual(OVEN, OVEN_ACTIONS).model
     assert "level" not in model.variables
+
+
+def test_a_time_out_after_minutes_names_no_wrap() -> None:
+    from apbot.read.values_wraps import find_wrap
+
+    assert find_wrap("After 10 minutes without a key press the display goes back to 0.") is None
+    assert find_wrap("After 2 hours of keep warm the cooker returns to 1.") is None
+    assert find_wrap("One more press after 15 h sets the timer back to 0.") is not None
