@@ -89,3 +89,23 @@ def test_a_time_out_after_minutes_names_no_wrap() -> None:
     assert find_wrap("After 10 minutes without a key press the display goes back to 0.") is None
     assert find_wrap("After 2 hours of keep warm the cooker returns to 1.") is None
     assert find_wrap("One more press after 15 h sets the timer back to 0.") is not None
+
+
+# a diffuser with no power key whose title names its display, said more often than the product
+DIFFUSER = """Aroma Diffuser AD-5 with LED display
+
+Plug in the diffuser. The mist starts at once.
+
+KEYS
+
+MIST      Press to choose the mist: LOW or HIGH.
+LIGHT     Press to choose the colour: WARM, COOL or RAINBOW.
+          Hold for 2 seconds: switch the display on or off.
+
+The display shows the mist level. When the display is off, the light stays on.
+"""
+
+
+def test_switching_the_display_a_title_names_is_no_power() -> None:
+    model = read_manual(DIFFUSER, ["press_mist", "press_light", "hold_light"]).model
+    assert "power" not in model.variables

@@ -12,6 +12,7 @@ import re
 
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
+from apbot.read.shapes import GROUP_NOUNS, SETTING_NOUNS
 from apbot.read.shown import LOCK_CUE
 
 # a setting printed in capitals, switched on or off ("switch AUTO OFF on", "turns KEEP WARM off")
@@ -64,6 +65,14 @@ _BOTH_WAYS = re.compile(
     re.IGNORECASE,
 )
 _APPLIANCE_WORDS = {"appliance", "unit", "machine", "device", "product"}
+# parts and settings a title may name beside the product ("… with LED display"): switching
+# one of them on or off is no power, however often the text says "the display" (a fan, a
+# lamp, a clock can be the appliance itself: not here)
+_PART_WORDS = {
+    *SETTING_NOUNS, *GROUP_NOUNS, "display", "screen", "led", "sound", "beep", "buzzer",
+    "signal", "lock", "tank", "water", "lid", "door", "plug", "cable", "cord", "key", "keys",
+    "button", "panel", "memory", "remote", "control", "wifi", "app",
+}  # fmt: skip
 _TITLE_LINES = 15  # the title block: brand, model, what the product is
 
 
@@ -74,7 +83,7 @@ def _appliance_words(b: Builder) -> set[str]:
     setting) is said less often than the appliance."""
     title = " ".join(b.manual.lines[:_TITLE_LINES]).lower()
     keys = {w for lab in b.labels.values() for w in re.findall(r"[a-z]+", lab.text.lower())}
-    candidates = set(re.findall(r"[a-z]{3,}", title)) - keys - _APPLIANCE_WORDS
+    candidates = set(re.findall(r"[a-z]{3,}", title)) - keys - _APPLIANCE_WORDS - _PART_WORDS
     said: dict[str, int] = {}
     for unit in b.manual.units:
         for word in re.findall(r"\bthe\s+([a-z]{3,})\b", unit.text.lower()):
