@@ -109,3 +109,33 @@ The display shows the mist level. When the display is off, the light stays on.
 def test_switching_the_display_a_title_names_is_no_power() -> None:
     model = read_manual(DIFFUSER, ["press_mist", "press_light", "hold_light"]).model
     assert "power" not in model.variables
+
+
+# a heater whose mode change both clears the timer and names the fan's value
+HEATER = """Cosy Heater H-6
+
+Press POWER to switch the heater on or off.
+Press MODE to choose the mode: ECO, COMFORT or BOOST.
+Press FAN to choose the fan: AUTO, LOW or HIGH.
+Press TEMP to set the temperature from 5 to 30 °C.
+Press TIMER to set the timer from 1 to 12 hours.
+
+Each time you change the mode, the timer is cleared and the fan goes back to AUTO.
+"""
+HEATER_ACTIONS = ["press_power", "press_mode", "press_fan", "press_temp", "press_timer"]
+
+
+def _mode_step(text: str):  # type: ignore[no-untyped-def]
+    model = read_manual(text, HEATER_ACTIONS).model
+    return next(s for f in model.features.values() for s in f if s.variable == "mode")
+
+
+def test_a_named_value_beside_a_clear_keeps_the_reset() -> None:
+    step = _mode_step(HEATER)
+    assert step.set == {"fan": "auto"} and "timer" in step.reset
+
+
+def test_a_named_value_alone_resets_nothing_else() -> None:
+    text = HEATER.replace("the timer is cleared and the fan goes back to", "it resets the fan to")
+    step = _mode_step(text)
+    assert step.set == {"fan": "auto"} and not step.reset

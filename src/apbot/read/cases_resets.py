@@ -36,6 +36,17 @@ WRAP_RE = re.compile(
 )
 
 
+# a reset beside a named value: "the timer is cleared and the fan goes back to AUTO"
+_CLEARS_RE = re.compile(
+    r"\b(?:defaults?|standard values|reset\w*|clear\w*|cancel\w*|wipe\w*|lost|forget\w*|"
+    r"all (?:other )?settings)\b",
+    re.IGNORECASE,
+)
+_NAMED_RESET_RE = re.compile(
+    r"\bresets?\s+(?:the\s+)?[\w-]+(?:\s[\w-]+)?\s+(?:back\s+)?to\b", re.IGNORECASE
+)
+
+
 def apply_resets(b: Builder) -> None:
     """ "Choosing a programme loads its defaults": the programme's steps reset the settings."""
     units = b.manual.units
@@ -85,7 +96,9 @@ def apply_resets(b: Builder) -> None:
                     step["set"] = {**step.get("set", {}), **sets}
         shown = ", ".join(f"{n} to {v}" for n, v in sets.items())
         b.note(f"variables.{choice}", f"choosing it sets {shown}", at)
-        return
+        if not _CLEARS_RE.search(_NAMED_RESET_RE.sub("", units[at].text)):
+            return  # ("resets the texture to Regular" names its value: no other reset)
+        others = [n for n in others if n not in sets]  # "… the timer is cleared and the fan …"
     if not others:
         return
     for steps in b.features.values():
