@@ -139,3 +139,22 @@ def test_a_named_value_alone_resets_nothing_else() -> None:
     text = HEATER.replace("the timer is cleared and the fan goes back to", "it resets the fan to")
     step = _mode_step(text)
     assert step.set == {"fan": "auto"} and not step.reset
+
+
+# a foot spa whose one-letter key P starts a sentence that holds another key
+SPA = """Calm Foot Spa FS-9
+
+KEYS
+
+P       Press briefly: next programme.
+HEAT    Press to switch the heat on or off.
+
+Programmes: CALM, PULSE or WAVE.
+Press P to choose the programme; hold P for 2 seconds to save it as your favourite.
+Press P, then hold HEAT for 3 seconds to switch the spa on or off.
+"""
+
+
+def test_a_sentence_starting_with_press_p_is_no_legend_line_of_p() -> None:
+    model = read_manual(SPA, ["press_p", "hold_p", "press_heat", "hold_heat"]).model
+    assert [s.actions for s in model.features["power"]] == [["hold_heat"]]

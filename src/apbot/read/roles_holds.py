@@ -112,13 +112,15 @@ def _held_clauses(b: Builder, info: ActionInfo) -> list[tuple[int, str]]:
         rf"\bhold(?:\s+down)?\s+(?:the\s+)?(?:\w+\s+key\s+\(\s*)?{re.escape(label)}(?!\w)",
         re.IGNORECASE,
     )
+    whole = re.compile(rf"(?<!\w){re.escape(label)}(?!\w)")
     units = b.manual.units
     others = [lab.text for t, lab in b.labels.items() if t != info.controls[0] and lab.text]
     out = []
     for i in b.labels[info.controls[0]].mentions:
         unit = units[i]
-        own_row = bool(unit.cells) and label in unit.cells[0]
-        own_line = not unit.cells and unit.text.startswith(label)  # "SELECT dial    Turn: …"
+        # the label as a whole word: a "P" key does not lead "Press P, then hold HEAT …"
+        own_row = bool(unit.cells) and bool(whole.search(unit.cells[0]))
+        own_line = not unit.cells and bool(whole.match(unit.text))  # "SELECT dial    Turn: …"
         said = [(i, unit.text)]
         if own_line:  # the legend's next lines, up to the next key's ("Press and hold 2 s: …")
             for k in range(i + 1, min(i + 3, len(units))):
