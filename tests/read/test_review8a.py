@@ -158,3 +158,12 @@ Press P, then hold HEAT for 3 seconds to switch the spa on or off.
 def test_a_sentence_starting_with_press_p_is_no_legend_line_of_p() -> None:
     model = read_manual(SPA, ["press_p", "hold_p", "press_heat", "hold_heat"]).model
     assert [s.actions for s in model.features["power"]] == [["hold_heat"]]
+
+
+def test_dial_positions_with_dot_leaders_are_no_table_of_contents() -> None:
+    dial = "".join(
+        f"{t} .......... {p}\n"
+        for p, t in enumerate(["Cotton", "Synthetics", "Wool", "Quick", "Rinse"], start=1)
+    )
+    text = " ".join(u.text for u in parse_manual("Washer\n\nDial positions:\n" + dial).units)
+    assert "Wool" in text and "Rinse" in text

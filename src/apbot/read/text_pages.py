@@ -147,9 +147,10 @@ def _headed(lines: list[str], first: int) -> bool:
 def _paged(pages: list[int]) -> bool:
     """Numbers that read as pages without a heading: five or more, from an early page, a few
     pages apart. A chart with dot leaders ("Steam ...... 120": minutes, watts) counts up in
-    bigger steps, or from further on, or has fewer rows."""
+    bigger steps, or from further on, or has fewer rows; a dial's positions count one by one."""
     steps = [b - a for a, b in itertools.pairwise(pages)]
-    return len(pages) >= 5 and pages[0] <= 10 and max(steps) <= 6
+    counted = set(steps) == {1}  # "Cotton ..... 1", "Wool ..... 2": dial positions, not pages
+    return len(pages) >= 5 and pages[0] <= 10 and max(steps) <= 6 and not counted
 
 
 def _page_breaks(lines: list[str], furniture: set[int]) -> set[int]:
