@@ -165,5 +165,8 @@ def test_dial_positions_with_dot_leaders_are_no_table_of_contents() -> None:
         f"{t} .......... {p}\n"
         for p, t in enumerate(["Cotton", "Synthetics", "Wool", "Quick", "Rinse"], start=1)
     )
-    text = " ".join(u.text for u in parse_manual("Washer\n\nDial positions:\n" + dial).units)
+    text = " ".join(
+        u.text
+        for u in parse_manual("Washer\n\nDial positions:\n" + dial + "\nTurn the dial.\n").units
+    )
     assert "Wool" in text and "Rinse" in text

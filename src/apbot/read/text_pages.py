@@ -128,6 +128,7 @@ def contents_lines(lines: list[str]) -> set[int]:
             pages.append(int(entries[0].group(1)))
         elif stripped or not run:
             close()
+    close()  # a run the text ends with
     return out
 
 
