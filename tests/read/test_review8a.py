@@ -170,3 +170,22 @@ def test_dial_positions_with_dot_leaders_are_no_table_of_contents() -> None:
         for u in parse_manual("Washer\n\nDial positions:\n" + dial + "\nTurn the dial.\n").units
     )
     assert "Wool" in text and "Rinse" in text
+
+
+# an air fryer whose programme, not the fryer, starts with a printed list of settings
+FRYER = """Crispy Air Fryer AF-9
+
+Press POWER to switch the fryer on or off. It starts at 200 °C and 15 min.
+Press MENU to choose a programme: FRIES, CHICKEN or FISH.
+Press TEMP to set the temperature from 80 to 200 °C.
+Press TIME to set the time from 1 to 60 minutes.
+
+The FISH programme starts with these settings: 160 °C, 12 min.
+"""
+
+
+def test_a_programmes_start_settings_are_not_the_appliances() -> None:
+    actions = ["press_power", "press_menu", "press_temp", "press_time"]
+    model = read_manual(FRYER, actions).model
+    assert model.variables["temp"].initial != 160
+    assert str(model.variables["time"].initial or "") != "00:12:00"
