@@ -189,3 +189,11 @@ def test_a_programmes_start_settings_are_not_the_appliances() -> None:
     model = read_manual(FRYER, actions).model
     assert model.variables["temp"].initial != 160
     assert str(model.variables["time"].initial or "") != "00:12:00"
+
+
+def test_a_return_to_the_defaults_after_a_mode_change_is_a_reset_not_a_wrap() -> None:
+    text = HEATER.replace(
+        "Each time you change the mode, the timer is cleared and the fan goes back to AUTO.",
+        "After a mode change, it returns to the default temperature and timer of that mode.",
+    )
+    assert "timer" in _mode_step(text).reset

@@ -47,6 +47,13 @@ _NAMED_RESET_RE = re.compile(
 )
 
 
+def _wraps(text: str) -> bool:
+    """A list wrapping round ("after TA the display returns to A1"), not a reset: a sentence
+    that returns to defaults ("After a mode change, it returns to the default temperature")
+    is a reset however it starts."""
+    return bool(WRAP_RE.search(text)) and not _CLEARS_RE.search(_NAMED_RESET_RE.sub("", text))
+
+
 def apply_resets(b: Builder) -> None:
     """ "Choosing a programme loads its defaults": the programme's steps reset the settings."""
     units = b.manual.units
@@ -54,7 +61,7 @@ def apply_resets(b: Builder) -> None:
         (
             i
             for i, u in enumerate(units)
-            if RESET_RE.search(u.text) and not STAY_RE.search(u.text) and not WRAP_RE.search(u.text)
+            if RESET_RE.search(u.text) and not STAY_RE.search(u.text) and not _wraps(u.text)
         ),
         None,
     )
