@@ -197,3 +197,21 @@ def test_a_return_to_the_defaults_after_a_mode_change_is_a_reset_not_a_wrap() ->
         "After a mode change, it returns to the default temperature and timer of that mode.",
     )
     assert "timer" in _mode_step(text).reset
+
+
+# a cushion with no power key, whose HEAT and SOUND keys are held to switch themselves
+CUSHION = """Warm Seat Cushion SC-2
+
+Plug the cushion in; it is ready at once.
+
+KEYS
+
+MODE      Press briefly: next massage mode (WAVE, KNEAD, TAP).
+HEAT      Hold for 2 seconds: on/off.
+SOUND     Hold for 2 seconds: on/off.
+"""
+
+
+def test_a_heat_key_held_on_off_switches_the_heat_not_the_appliance() -> None:
+    model = read_manual(CUSHION, ["press_mode", "hold_heat", "hold_sound"]).model
+    assert "power" not in model.variables

@@ -157,11 +157,19 @@ def held_power(b: Builder, info: ActionInfo) -> int | None:
     ):
         return None  # LOCK held 3 s "on/off": the key lock, not the appliance
     named = _appliance_words(b)
+    label = (
+        b.labels[info.controls[0]].text if info.controls and info.controls[0] in b.labels else ""
+    )
+    # a HEAT or SOUND key held "on/off" switches its own setting: only a clause naming the
+    # appliance ("switch the cushion on or off") makes such a key the power
+    own_setting = bool(set(re.findall(r"[a-z]+", label.lower())) & _PART_WORDS)
     for i, clause in _held_clauses(b, info):
         m = _BOTH_WAYS.search(clause)
         if m is None:
             continue
         nouns = [(m.group(g) or "").lower() for g in ("noun", "after")]  # "… the child lock"
+        if own_setting and not any(nouns):
+            continue
         if all(not n or n.split()[-1] in named for n in nouns):
             return i
     return None
