@@ -88,6 +88,7 @@ def test_a_time_out_after_minutes_names_no_wrap() -> None:
 
     assert find_wrap("After 10 minutes without a key press the display goes back to 0.") is None
     assert find_wrap("After 2 hours of keep warm the cooker returns to 1.") is None
+    assert find_wrap("After 10 minutes the power level falls back to 9.") is None
     assert find_wrap("One more press after 15 h sets the timer back to 0.") is not None
 
 

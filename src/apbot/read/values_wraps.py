@@ -42,10 +42,12 @@ _WRAP_RES = (
 
 
 # time passing, not a press past the top: "after 10 minutes without a key press the display
-# goes back to 0", "after 2 hours of keep warm it returns to 0"
+# goes back to 0", "after 2 hours of keep warm it returns to 0", "… falls back to 9"
 _ELAPSED = re.compile(
     r"\b(?:without|if\s+no|no\s+(?:key|button|press)|inactiv\w*|idle|elapsed?|passe[sd]|later|"
-    r"of\s+(?:cooking|operation|use|running|keep[- ]warm|standby|inactivity))\b",
+    r"of\s+(?:cooking|operation|use|running|keep[- ]warm|standby|inactivity)|"
+    # a boost that runs out: "after 10 minutes the power level falls back to 9"
+    r"falls?|fell|drops?|dropped|reduced?|reduces|lowered|lowers)\b",
     re.IGNORECASE,
 )
 
