@@ -81,6 +81,8 @@ OVEN_ACTIONS = ["press_time", "press_start", *[f"press_{d}" for d in range(1, 10
 def test_number_keys_that_type_a_time_stay_a_keypad() -> None:
     model = read_manual(OVEN, OVEN_ACTIONS).model
     assert "level" not in model.variables
+    said = OVEN.replace("then type the cooking time", "then set the cooking time")
+    assert "level" not in read_manual(said, OVEN_ACTIONS).model.variables
 
 
 def test_a_time_out_after_minutes_names_no_wrap() -> None:

@@ -40,7 +40,10 @@ def _named(b: Builder, low: int, high: int) -> tuple[str, int | None]:
 # (a heading "THE KEYPAD" is only the panel)
 _TYPED = re.compile(
     r"\b(?:numeric|number|digit)\s*(?:key)?pad\b|\b(?:type|key\s+in|enter)\w*\b[^.]{0,40}?\b(?:numbers?|digits?|"
-    r"figures?|time|weight|amount|minutes|seconds)\b",
+    r"figures?|time|weight|amount|minutes|seconds)\b"
+    # "set the cooking time with the number keys", "number buttons … the clock"
+    r"|\b(?:time|weight|clock)\b[^.]{0,40}?\b(?:number|digit|numeric)\s+(?:keys|buttons|pads)\b"
+    r"|\b(?:number|digit|numeric)\s+(?:keys|buttons|pads)\b[^.]{0,40}?\b(?:time|weight|clock)\b",
     re.IGNORECASE,
 )
 
