@@ -133,7 +133,7 @@ def contents_lines(lines: list[str]) -> set[int]:
 
 
 _CONTENTS_HEAD = re.compile(
-    r"^\W*(?:table\s+of\s+)?(?:contents?|index|overview)\b|^\W*in\s+this\s+(?:manual|booklet)\b",
+    r"^\W*(?:table\s+of\s+)?(?:contents?|index)\b|^\W*in\s+this\s+(?:manual|booklet)\b",
     re.IGNORECASE,
 )
 
