@@ -36,6 +36,24 @@ WRAP_RE = re.compile(
 )
 
 
+# a reset beside a named value: "the timer is cleared and the fan goes back to AUTO"
+_CLEARS_RE = re.compile(
+    r"\b(?:defaults?|standard values|reset\w*|clear\w*|cancel\w*|wipe\w*|lost|forget\w*|"
+    r"all (?:other )?settings)\b",
+    re.IGNORECASE,
+)
+_NAMED_RESET_RE = re.compile(
+    r"\bresets?\s+(?:the\s+)?[\w-]+(?:\s[\w-]+)?\s+(?:back\s+)?to\b", re.IGNORECASE
+)
+
+
+def _wraps(text: str) -> bool:
+    """A list wrapping round ("after TA the display returns to A1"), not a reset: a sentence
+    that returns to defaults ("After a mode change, it returns to the default temperature")
+    is a reset however it starts."""
+    return bool(WRAP_RE.search(text)) and not _CLEARS_RE.search(_NAMED_RESET_RE.sub("", text))
+
+
 def apply_resets(b: Builder) -> None:
     """ "Choosing a programme loads its defaults": the programme's steps reset the settings."""
     units = b.manual.units
@@ -43,7 +61,7 @@ def apply_resets(b: Builder) -> None:
         (
             i
             for i, u in enumerate(units)
-            if RESET_RE.search(u.text) and not STAY_RE.search(u.text) and not WRAP_RE.search(u.text)
+            if RESET_RE.search(u.text) and not STAY_RE.search(u.text) and not _wraps(u.text)
         ),
         None,
     )
@@ -85,7 +103,9 @@ def apply_resets(b: Builder) -> None:
                     step["set"] = {**step.get("set", {}), **sets}
         shown = ", ".join(f"{n} to {v}" for n, v in sets.items())
         b.note(f"variables.{choice}", f"choosing it sets {shown}", at)
-        return
+        if not _CLEARS_RE.search(_NAMED_RESET_RE.sub("", units[at].text)):
+            return  # ("resets the texture to Regular" names its value: no other reset)
+        others = [n for n in others if n not in sets]  # "… the timer is cleared and the fan …"
     if not others:
         return
     for steps in b.features.values():

@@ -17,6 +17,7 @@ from typing import Any
 from apbot.model.values import format_hms, parse_hms
 from apbot.read.build import Builder
 from apbot.read.labels import words
+from apbot.read.shapes import GROUP_NOUNS
 
 _START_LIST = re.compile(
     r"\b(?:starts?(?:\s+up)?\s+(?:with|in|on)|shows?)\s+(?:these|the|its)\s+"
@@ -33,13 +34,30 @@ def read_initials(b: Builder) -> None:
     units = b.manual.units
     for i, unit in enumerate(units):
         m = _START_LIST.search(unit.text)
-        if m is None:
+        if m is None or _of_a_choice(b, unit.text[: m.start()]):
             continue
         listed = m.group("items").strip()
         if not listed and i + 1 < len(units):
             listed = units[i + 1].text  # the list on the line after the colon
         if _apply(b, listed, i):
             return
+
+
+def _of_a_choice(b: Builder, subject: str) -> bool:
+    """Whether what starts with the list is a programme, not the appliance: "The FISH
+    programme starts with these settings: 160 °C, 12 min" gives that programme's values."""
+    said = set(words(subject))
+    if said & set(GROUP_NOUNS):
+        return True
+    values = {
+        w
+        for spec in b.variables.values()
+        if spec.get("type") == "discrete"
+        for v in spec.get("values") or []
+        for w in words(str(v))
+        if len(w) >= 3 and w not in ("off", "on")
+    }
+    return bool(said & values)
 
 
 def _apply(b: Builder, listed: str, at: int) -> bool:

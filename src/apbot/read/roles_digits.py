@@ -36,6 +36,18 @@ def _named(b: Builder, low: int, high: int) -> tuple[str, int | None]:
     return "level", None
 
 
+# a manual that types numbers: "type the cooking time with the number keys", "numeric keypad"
+# (a heading "THE KEYPAD" is only the panel)
+_TYPED = re.compile(
+    r"\b(?:numeric|number|digit)\s*(?:key)?pad\b|\b(?:type|key\s+in|enter)\w*\b[^.]{0,40}?\b(?:numbers?|digits?|"
+    r"figures?|time|weight|amount|minutes|seconds)\b"
+    # "set the cooking time with the number keys", "number buttons … the clock"
+    r"|\b(?:time|weight|clock)\b[^.]{0,40}?\b(?:number|digit|numeric)\s+(?:keys|buttons|pads)\b"
+    r"|\b(?:number|digit|numeric)\s+(?:keys|buttons|pads)\b[^.]{0,40}?\b(?:time|weight|clock)\b",
+    re.IGNORECASE,
+)
+
+
 def assign_direct_digits(b: Builder, digits: list[ActionInfo]) -> bool:
     """Digit keys that are not a full keypad become one amount they set directly; True when
     they did (the caller then has no keypad)."""
@@ -45,6 +57,8 @@ def assign_direct_digits(b: Builder, digits: list[ActionInfo]) -> bool:
     low, high = min(numbers), max(numbers)
     if numbers != set(range(low, high + 1)):
         return False  # gaps: a keypad missing keys, not a row of levels
+    if any(_TYPED.search(u.text) for u in b.manual.units):
+        return False  # keys 1 to 9 that type a time: a keypad whose 0 has another name
     noun, at = _named(b, low, high)
     var = b.unique(noun, b.variables)
     b.variables[var] = {"label": noun.upper(), "type": "numeric", "ranges": [[low, high, 1]]}

@@ -12,6 +12,8 @@ import re
 
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
+from apbot.read.shapes import GROUP_NOUNS, SETTING_NOUNS
+from apbot.read.shown import LOCK_CUE
 
 # a setting printed in capitals, switched on or off ("switch AUTO OFF on", "turns KEEP WARM off")
 _SWITCHED = re.compile(
@@ -57,10 +59,20 @@ _HOLDING = re.compile(
 _BOTH_WAYS = re.compile(
     r"\b(?:switch|turn)(?:es|s|ed|ing)?\s+(?:(?:the|your|this)\s+(?P<noun>[a-z][a-z -]{1,30}?)\s+)?"
     r"(?:on\s*(?:/|or|and)\s*off|off\s*(?:/|or|and)\s*on)\b"
+    # what it switches may follow: "switch on or off the child lock"
+    r"(?:\s+(?:the|your|this)\s+(?P<after>[a-z][a-z -]{1,30}?)(?=[.,;:!)]|\s*$))?"
     r"|:\s*(?:power\s+)?on\s*/\s*off\b",  # "Hold 2 s: ON/OFF", "Long press: power on/off"
     re.IGNORECASE,
 )
 _APPLIANCE_WORDS = {"appliance", "unit", "machine", "device", "product"}
+# parts and settings a title may name beside the product ("… with LED display"): switching
+# one of them on or off is no power, however often the text says "the display" (a fan, a
+# lamp, a clock can be the appliance itself: not here)
+_PART_WORDS = {
+    *SETTING_NOUNS, *GROUP_NOUNS, "display", "screen", "led", "sound", "beep", "buzzer",
+    "signal", "lock", "tank", "water", "lid", "door", "plug", "cable", "cord", "key", "keys",
+    "button", "panel", "memory", "remote", "control", "wifi", "app",
+}  # fmt: skip
 _TITLE_LINES = 15  # the title block: brand, model, what the product is
 
 
@@ -71,7 +83,7 @@ def _appliance_words(b: Builder) -> set[str]:
     setting) is said less often than the appliance."""
     title = " ".join(b.manual.lines[:_TITLE_LINES]).lower()
     keys = {w for lab in b.labels.values() for w in re.findall(r"[a-z]+", lab.text.lower())}
-    candidates = set(re.findall(r"[a-z]{3,}", title)) - keys - _APPLIANCE_WORDS
+    candidates = set(re.findall(r"[a-z]{3,}", title)) - keys - _APPLIANCE_WORDS - _PART_WORDS
     said: dict[str, int] = {}
     for unit in b.manual.units:
         for word in re.findall(r"\bthe\s+([a-z]{3,})\b", unit.text.lower()):
@@ -100,13 +112,15 @@ def _held_clauses(b: Builder, info: ActionInfo) -> list[tuple[int, str]]:
         rf"\bhold(?:\s+down)?\s+(?:the\s+)?(?:\w+\s+key\s+\(\s*)?{re.escape(label)}(?!\w)",
         re.IGNORECASE,
     )
+    whole = re.compile(rf"(?<!\w){re.escape(label)}(?!\w)")
     units = b.manual.units
     others = [lab.text for t, lab in b.labels.items() if t != info.controls[0] and lab.text]
     out = []
     for i in b.labels[info.controls[0]].mentions:
         unit = units[i]
-        own_row = bool(unit.cells) and label in unit.cells[0]
-        own_line = not unit.cells and unit.text.startswith(label)  # "SELECT dial    Turn: …"
+        # the label as a whole word: a "P" key does not lead "Press P, then hold HEAT …"
+        own_row = bool(unit.cells) and bool(whole.search(unit.cells[0]))
+        own_line = not unit.cells and bool(whole.match(unit.text))  # "SELECT dial    Turn: …"
         said = [(i, unit.text)]
         if own_line:  # the legend's next lines, up to the next key's ("Press and hold 2 s: …")
             for k in range(i + 1, min(i + 3, len(units))):
@@ -136,10 +150,26 @@ def held_power(b: Builder, info: ActionInfo) -> int | None:
     switch the cooler off or on again."): in the key's own legend row, or a sentence that
     holds the key. None when no such clause, or when what it switches is a setting (the
     sound, the light: not a word of the title)."""
+    if (
+        info.controls
+        and info.controls[0] in b.labels
+        and LOCK_CUE.search(b.labels[info.controls[0]].text)
+    ):
+        return None  # LOCK held 3 s "on/off": the key lock, not the appliance
     named = _appliance_words(b)
+    label = (
+        b.labels[info.controls[0]].text if info.controls and info.controls[0] in b.labels else ""
+    )
+    # a HEAT or SOUND key held "on/off" switches its own setting: only a clause naming the
+    # appliance ("switch the cushion on or off") makes such a key the power
+    own_setting = bool(set(re.findall(r"[a-z]+", label.lower())) & _PART_WORDS)
     for i, clause in _held_clauses(b, info):
         m = _BOTH_WAYS.search(clause)
-        noun = (m.group("noun") or "").lower() if m else ""
-        if m and (not noun or noun.split()[-1] in named):
+        if m is None:
+            continue
+        nouns = [(m.group(g) or "").lower() for g in ("noun", "after")]  # "… the child lock"
+        if own_setting and not any(nouns):
+            continue
+        if all(not n or n.split()[-1] in named for n in nouns):
             return i
     return None

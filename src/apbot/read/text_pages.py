@@ -113,7 +113,7 @@ def contents_lines(lines: list[str]) -> set[int]:
     pages: list[int] = []
 
     def close() -> None:
-        if len(run) >= 3 and pages == sorted(pages):
+        if len(run) >= 3 and pages == sorted(pages) and (_headed(lines, run[0]) or _paged(pages)):
             out.update(run)
         run.clear()
         pages.clear()
@@ -128,7 +128,30 @@ def contents_lines(lines: list[str]) -> set[int]:
             pages.append(int(entries[0].group(1)))
         elif stripped or not run:
             close()
+    close()  # a run the text ends with
     return out
+
+
+_CONTENTS_HEAD = re.compile(
+    r"^\W*(?:table\s+of\s+)?(?:contents?|index)\b|^\W*in\s+this\s+(?:manual|booklet)\b",
+    re.IGNORECASE,
+)
+
+
+def _headed(lines: list[str], first: int) -> bool:
+    """A contents heading ("Contents", "TABLE OF CONTENTS", "Index") among the two written lines
+    above a run of leader lines."""
+    above = [line for line in lines[max(0, first - 4) : first] if line.strip()][-2:]
+    return any(_CONTENTS_HEAD.match(line.strip()) for line in above)
+
+
+def _paged(pages: list[int]) -> bool:
+    """Numbers that read as pages without a heading: five or more, from an early page, a few
+    pages apart. A chart with dot leaders ("Steam ...... 120": minutes, watts) counts up in
+    bigger steps, or from further on, or has fewer rows; a dial's positions count one by one."""
+    steps = [b - a for a, b in itertools.pairwise(pages)]
+    counted = set(steps) == {1}  # "Cotton ..... 1", "Wool ..... 2": dial positions, not pages
+    return len(pages) >= 5 and pages[0] <= 10 and max(steps) <= 6 and not counted
 
 
 def _page_breaks(lines: list[str], furniture: set[int]) -> set[int]:

@@ -41,11 +41,25 @@ _WRAP_RES = (
 )
 
 
+# time passing, not a press past the top: "after 10 minutes without a key press the display
+# goes back to 0", "after 2 hours of keep warm it returns to 0", "… falls back to 9"
+_ELAPSED = re.compile(
+    r"\b(?:without|if\s+no|no\s+(?:key|button|press)|inactiv\w*|idle|elapsed?|passe[sd]|later|"
+    r"of\s+(?:cooking|operation|use|running|keep[- ]warm|standby|inactivity)|"
+    # a boost that runs out: "after 10 minutes the power level falls back to 9"
+    r"falls?|fell|drops?|dropped|reduced?|reduces|lowered|lowers)\b",
+    re.IGNORECASE,
+)
+
+
 def find_wrap(text: str) -> Range | None:
     """The ends a wrap sentence names, bottom to top (clock times in seconds, unit ``s``), or
-    None when the text names no wrap from a larger value to a smaller one."""
+    None when the text names no wrap from a larger value to a smaller one (nor when it says
+    time passed before the change: a time-out, not a wrap)."""
     for pattern in _WRAP_RES:
         for m in pattern.finditer(text):
+            if _ELAPSED.search(m.group(0)):
+                continue
             found = _ends(m)
             if found is not None:
                 return found
