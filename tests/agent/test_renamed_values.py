@@ -136,3 +136,31 @@ def test_a_walk_in_another_order_is_no_renaming() -> None:
     assert pairing(["b", "X", "b"], ["a", "b", "a"], ["a", "b", "c"]) is None
     assert pairing(["X", "Y"], ["a", "a"], ["a", "b"]) is None  # one value, two words
     assert pairing(["a", "b"], ["a", "b"], ["a", "b"]) is None  # nothing renamed
+
+
+# a steamer's timer read as levels 1 … 7 where the panel counts 30 … 90 minutes: as many
+# values, in the same order, but numbers — a range read wrong, which no renaming may keep
+STEAMER_TRUTH = """
+controls: [{id: time, label: TIME}, {id: up, label: "+"}, {id: down, label: "-"}]
+variables:
+  steam_time: {type: numeric, ranges: [[30, 90, 10]], initial: 30, label: TIME, unit: min}
+actions:
+  press_time: {control: time}
+  press_up: {control: up}
+  press_down: {control: down}
+features:
+  steam_time:
+    - {actions: [press_time]}
+    - actions: [press_up, press_down]
+      variable: steam_time
+      effect: {press_up: next, press_down: prev}
+display:
+  idle: "STEAM"
+"""
+
+
+def test_numbers_shown_for_other_numbers_repair_the_range_not_the_words() -> None:
+    belief = STEAMER_TRUTH.replace("[[30, 90, 10]], initial: 30", "[[1, 7, 1]], initial: 1")
+    episode, reached = run(model_from(STEAMER_TRUTH), model_from(belief), {"steam_time": 60})
+    assert reached, episode.repairs
+    assert not any("steam_time prints" in note for note in episode.repairs), episode.repairs

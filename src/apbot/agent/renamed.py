@@ -140,6 +140,8 @@ def rename_walk(
     folded = [t.casefold() for t in texts.values()]
     if len(set(folded)) < len(folded) or others.intersection(folded):
         return None  # two values, one text: the display does not tell them apart
+    if any(_number_for_number(spec, name, t, v) for t, v in pairs.items()):
+        return None  # a number where another was due: the numbers read are wrong, not words
     if all(_said(t).casefold().startswith(str(v).casefold()) for t, v in pairs.items()):
         return None  # values spelt out ("lo" as "low"): the walk's domain learns them as such
     show = _templates(spec, name, domain, pairs)
@@ -169,6 +171,26 @@ def rename_walk(
 def translate(walk: Sequence[Any], pairs: dict[Any, Any], main: Any) -> list[Any]:
     """A walk read again in the belief's values, after :func:`rename_walk` learnt ``pairs``."""
     return [pairs.get(_token(v, main), v) for v in walk]
+
+
+def _number_for_number(spec: Any, name: str, token: Any, value: Any) -> bool:
+    """A number shown (bare, or beside the setting's label or unit) where the belief predicted
+    another number: a range read wrong (30 … 90 read as 1 … 7), which the walk's range repair
+    learns; as words for the values it would keep the wrong numbers the goal cannot name."""
+    if _as_number(value) is None:
+        return False
+    said = _said(token).casefold()
+    for part in (str(spec.display_label(name)), str(getattr(spec, "unit", "") or "")):
+        if part:
+            said = said.replace(part.casefold(), " ")
+    return _as_number(said.strip()) is not None
+
+
+def _as_number(value: Any) -> float | None:
+    try:
+        return float(str(value).replace(",", "."))
+    except ValueError:
+        return None
 
 
 def _said(token: Any) -> str:
