@@ -164,3 +164,62 @@ def test_numbers_shown_for_other_numbers_repair_the_range_not_the_words() -> Non
     episode, reached = run(model_from(STEAMER_TRUTH), model_from(belief), {"steam_time": 60})
     assert reached, episode.repairs
     assert not any("steam_time prints" in note for note in episode.repairs), episode.repairs
+
+
+# a tea urn whose HOLD and boiling marks stand before the water's temperature ("HOLD 95", "95"):
+# the 95 is the water's, and no word for HOLD's off, however the walk pairs up
+URN_TRUTH = """
+controls: [{id: temp, label: TEMP}, {id: hold, label: HOLD}, {id: go, label: GO}]
+variables:
+  water:
+    {type: numeric, unit: "°C", ranges: [[70, 80, 10], [80, 95, 5]], initial: 95, wrap: true,
+     label: TEMP}
+  hold:
+    type: discrete
+    values: ["off", "on"]
+    show: {"off": "{water}", "on": "HOLD {water}"}
+  running:
+    type: discrete
+    values: ["off", "on"]
+    show: {"off": "{water}", "on": "BOILING {water}"}
+actions:
+  press_temp: {control: temp}
+  press_hold: {control: hold}
+  press_go: {control: go}
+features:
+  water:
+    - {actions: [press_temp], variable: water, effect: next}
+  hold:
+    - {actions: [press_hold], variable: hold, effect: toggle}
+  go:
+    - {actions: [press_go], variable: running, effect: toggle}
+display:
+  idle: "{water}"
+  indicators: [hold, running]
+"""
+
+URN_BELIEF = """
+controls: [{id: temp, label: TEMP}, {id: hold, label: HOLD}, {id: go, label: GO}]
+variables:
+  running: {type: discrete, values: ["off", "on"], visible: false, label: RUN}
+  water: {type: numeric, unit: "°C", ranges: [[70, 80, 10], [80, 95, 5]], wrap: true, label: TEMP}
+  hold: {type: discrete, values: ["off", "on"], label: HOLD}
+actions:
+  press_temp: {control: temp}
+  press_hold: {control: hold}
+  press_go: {control: go}
+features:
+  water:
+    - {actions: [press_temp], variable: water, effect: next}
+  hold:
+    - {actions: [press_hold], variable: hold, effect: toggle}
+  go:
+    - {actions: [press_go], variable: running, effect: toggle}
+"""
+
+
+def test_a_number_of_another_setting_is_no_word_for_a_switchs_value() -> None:
+    goal = {"hold": "on", "running": "on"}
+    episode, reached = run(model_from(URN_TRUTH), model_from(URN_BELIEF), goal)
+    assert reached, episode.repairs
+    assert not any("hold prints" in note for note in episode.repairs), episode.repairs

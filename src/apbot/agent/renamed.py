@@ -23,6 +23,7 @@ the walk is read again in the belief's values, so nothing else is learnt wrong f
 
 from __future__ import annotations
 
+import re
 from collections.abc import Sequence
 from typing import Any
 
@@ -129,6 +130,8 @@ def rename_walk(
         for token, text in texts.items()
     ):
         return None  # digits without the label: another setting's number (a clock), no word
+    if any(re.search(r"\d\d", text) and label not in text.casefold() for text in texts.values()):
+        return None  # "100°C" for keep-warm off: the temperature's number, no word for a value
     read = {
         repr(t): _text(spec, name, pairs.get(t, t), t) for t in tokens if not isinstance(t, tuple)
     }
