@@ -223,3 +223,36 @@ def test_a_number_of_another_setting_is_no_word_for_a_switchs_value() -> None:
     episode, reached = run(model_from(URN_TRUTH), model_from(URN_BELIEF), goal)
     assert reached, episode.repairs
     assert not any("hold prints" in note for note in episode.repairs), episode.repairs
+
+
+# a hand dryer's power printed ECO / STD / PRO, none of them like low / mid / high; the panel
+# starts at mid where the belief guesses low, so the walk's order alone pairs them one off
+DRYER_TRUTH = """
+controls: [{id: power, label: POWER}, {id: go, label: GO}]
+variables:
+  power:
+    type: discrete
+    values: [low, mid, high]
+    initial: mid
+    show: {low: "ECO", mid: "STD", high: "PRO"}
+  running: {type: discrete, values: ["off", "on"]}
+actions:
+  press_power: {control: power}
+  press_go: {control: go}
+features:
+  power:
+    - {actions: [press_power], variable: power, effect: next}
+  go:
+    - {actions: [press_go], variable: running, effect: toggle}
+display:
+  idle: "READY"
+"""
+
+
+def test_words_unlike_their_values_with_none_read_are_not_paired_by_order_alone() -> None:
+    belief = DRYER_TRUTH.replace("    initial: mid\n", "").replace(
+        '    show: {low: "ECO", mid: "STD", high: "PRO"}\n', ""
+    )
+    # (run_checked fails on the false claim of success the shifted pairing led to)
+    episode, _ = run(model_from(DRYER_TRUTH), model_from(belief), {"power": "high"})
+    assert not any("power prints" in note for note in episode.repairs), episode.repairs

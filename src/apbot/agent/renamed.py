@@ -123,6 +123,10 @@ def rename_walk(
     pairs = pairing(tokens, predicted, domain)
     if pairs is None:
         return None
+    if not any(repr(t) in set(map(repr, domain)) for t in tokens) and not any(
+        _resembles(spec, name, t, v) for t, v in pairs.items()
+    ):
+        return None  # nothing read as itself, no word like its value: the order has no anchor
     texts = {token: _text(spec, name, value, token) for token, value in pairs.items()}
     label = str(spec.display_label(name)).casefold()[:3]
     if any(
@@ -174,6 +178,22 @@ def rename_walk(
 def translate(walk: Sequence[Any], pairs: dict[Any, Any], main: Any) -> list[Any]:
     """A walk read again in the belief's values, after :func:`rename_walk` learnt ``pairs``."""
     return [pairs.get(_token(v, main), v) for v in walk]
+
+
+_ON_MARKS = {"i", "1", "|"}  # the power symbols a switch prints for on, for off
+_OFF_MARKS = {"0", "o"}
+
+
+def _resembles(spec: Any, name: str, token: Any, value: Any) -> bool:
+    """The text names its value by itself: an abbreviation of it ("DIST" for distance), or
+    the on / off marks of a switch ("I" / "0")."""
+    said = _said(token).casefold()
+    label = str(spec.display_label(name)).casefold()
+    said = said.replace(label, " ").strip() if label else said.strip()
+    word = str(value).casefold()
+    if len(said) >= 2 and word.startswith(said):
+        return True
+    return (word == "on" and said in _ON_MARKS) or (word == "off" and said in _OFF_MARKS)
 
 
 def _number_for_number(spec: Any, name: str, token: Any, value: Any) -> bool:
