@@ -117,6 +117,12 @@ def test_other_gets_and_lets_start_nothing() -> None:
     assert parse_instruction(fountain, "Let the kids run around, gentle flow") == {"flow": "gentle"}
 
 
+def test_letting_water_run_until_clear_is_a_rinse_not_a_start() -> None:
+    fountain = loads_model(FOUNTAIN)
+    goal = parse_instruction(fountain, "Let the water run until it comes out clear, gentle flow")
+    assert goal == {"flow": "gentle"}
+
+
 def test_a_fan_word_naming_an_opening_of_the_body_sets_no_switch() -> None:
     """'Ventilation' and 'circulation' name the fan switch, but "the ventilation slots" or
     "the air circulation vents" in a cleaning remark are openings of the body: no switch."""
