@@ -136,3 +136,123 @@ def test_a_walk_in_another_order_is_no_renaming() -> None:
     assert pairing(["b", "X", "b"], ["a", "b", "a"], ["a", "b", "c"]) is None
     assert pairing(["X", "Y"], ["a", "a"], ["a", "b"]) is None  # one value, two words
     assert pairing(["a", "b"], ["a", "b"], ["a", "b"]) is None  # nothing renamed
+
+
+# a steamer's timer read as levels 1 … 7 where the panel counts 30 … 90 minutes: as many
+# values, in the same order, but numbers — a range read wrong, which no renaming may keep
+STEAMER_TRUTH = """
+controls: [{id: time, label: TIME}, {id: up, label: "+"}, {id: down, label: "-"}]
+variables:
+  steam_time: {type: numeric, ranges: [[30, 90, 10]], initial: 30, label: TIME, unit: min}
+actions:
+  press_time: {control: time}
+  press_up: {control: up}
+  press_down: {control: down}
+features:
+  steam_time:
+    - {actions: [press_time]}
+    - actions: [press_up, press_down]
+      variable: steam_time
+      effect: {press_up: next, press_down: prev}
+display:
+  idle: "STEAM"
+"""
+
+
+def test_numbers_shown_for_other_numbers_repair_the_range_not_the_words() -> None:
+    belief = STEAMER_TRUTH.replace("[[30, 90, 10]], initial: 30", "[[1, 7, 1]], initial: 1")
+    episode, reached = run(model_from(STEAMER_TRUTH), model_from(belief), {"steam_time": 60})
+    assert reached, episode.repairs
+    assert not any("steam_time prints" in note for note in episode.repairs), episode.repairs
+
+
+# a tea urn whose HOLD and boiling marks stand before the water's temperature ("HOLD 95", "95"):
+# the 95 is the water's, and no word for HOLD's off, however the walk pairs up
+URN_TRUTH = """
+controls: [{id: temp, label: TEMP}, {id: hold, label: HOLD}, {id: go, label: GO}]
+variables:
+  water:
+    {type: numeric, unit: "°C", ranges: [[70, 80, 10], [80, 95, 5]], initial: 95, wrap: true,
+     label: TEMP}
+  hold:
+    type: discrete
+    values: ["off", "on"]
+    show: {"off": "{water}", "on": "HOLD {water}"}
+  running:
+    type: discrete
+    values: ["off", "on"]
+    show: {"off": "{water}", "on": "BOILING {water}"}
+actions:
+  press_temp: {control: temp}
+  press_hold: {control: hold}
+  press_go: {control: go}
+features:
+  water:
+    - {actions: [press_temp], variable: water, effect: next}
+  hold:
+    - {actions: [press_hold], variable: hold, effect: toggle}
+  go:
+    - {actions: [press_go], variable: running, effect: toggle}
+display:
+  idle: "{water}"
+  indicators: [hold, running]
+"""
+
+URN_BELIEF = """
+controls: [{id: temp, label: TEMP}, {id: hold, label: HOLD}, {id: go, label: GO}]
+variables:
+  running: {type: discrete, values: ["off", "on"], visible: false, label: RUN}
+  water: {type: numeric, unit: "°C", ranges: [[70, 80, 10], [80, 95, 5]], wrap: true, label: TEMP}
+  hold: {type: discrete, values: ["off", "on"], label: HOLD}
+actions:
+  press_temp: {control: temp}
+  press_hold: {control: hold}
+  press_go: {control: go}
+features:
+  water:
+    - {actions: [press_temp], variable: water, effect: next}
+  hold:
+    - {actions: [press_hold], variable: hold, effect: toggle}
+  go:
+    - {actions: [press_go], variable: running, effect: toggle}
+"""
+
+
+def test_a_number_of_another_setting_is_no_word_for_a_switchs_value() -> None:
+    goal = {"hold": "on", "running": "on"}
+    episode, reached = run(model_from(URN_TRUTH), model_from(URN_BELIEF), goal)
+    assert reached, episode.repairs
+    assert not any("hold prints" in note for note in episode.repairs), episode.repairs
+
+
+# a hand dryer's power printed ECO / STD / PRO, none of them like low / mid / high; the panel
+# starts at mid where the belief guesses low, so the walk's order alone pairs them one off
+DRYER_TRUTH = """
+controls: [{id: power, label: POWER}, {id: go, label: GO}]
+variables:
+  power:
+    type: discrete
+    values: [low, mid, high]
+    initial: mid
+    show: {low: "ECO", mid: "STD", high: "PRO"}
+  running: {type: discrete, values: ["off", "on"]}
+actions:
+  press_power: {control: power}
+  press_go: {control: go}
+features:
+  power:
+    - {actions: [press_power], variable: power, effect: next}
+  go:
+    - {actions: [press_go], variable: running, effect: toggle}
+display:
+  idle: "READY"
+"""
+
+
+def test_words_unlike_their_values_with_none_read_are_not_paired_by_order_alone() -> None:
+    belief = DRYER_TRUTH.replace("    initial: mid\n", "").replace(
+        '    show: {low: "ECO", mid: "STD", high: "PRO"}\n', ""
+    )
+    # (run_checked fails on the false claim of success the shifted pairing led to)
+    episode, _ = run(model_from(DRYER_TRUTH), model_from(belief), {"power": "high"})
+    assert not any("power prints" in note for note in episode.repairs), episode.repairs

@@ -78,3 +78,15 @@ def test_a_negative_setting_keeps_its_sign() -> None:
     assert goal == {"cold": "-19"}, goal
     goal = parse_instruction(CHEST, "cold at 19 please", outside=[])
     assert "cold" not in goal, goal  # a sign lost, not a value to try
+
+
+def test_a_number_refused_bounded_or_counted_is_not_kept() -> None:
+    """Beside KEEP, but no value asked for it: refused, a limit, or a count of events."""
+    for said in (
+        "base at 80, but not keep at 45",
+        "base at 80, keep never below 45",
+        "base at 80, I opened the keep lid 25 times",
+    ):
+        notes: list[str] = []
+        goal = parse_instruction(POT, said, outside=notes)
+        assert goal.get("keep") is None and not notes, (said, goal, notes)

@@ -6,6 +6,7 @@ from __future__ import annotations
 from apbot.model.load import loads_model
 from apbot.model.schema import ApplianceModel
 from apbot.read.goal import parse_instruction
+from tests.helpers import model_from
 
 CABINET = """
 appliance: {id: cave_1, category: cheese_cabinet, name: "Affine CC-2 ripening cabinet", brand: A}
@@ -114,3 +115,39 @@ def test_other_gets_and_lets_start_nothing() -> None:
     goal = parse_instruction(fountain, "Strong flow, then get the setting saved")
     assert goal == {"flow": "strong"}
     assert parse_instruction(fountain, "Let the kids run around, gentle flow") == {"flow": "gentle"}
+
+
+def test_letting_water_run_until_clear_is_a_rinse_not_a_start() -> None:
+    fountain = loads_model(FOUNTAIN)
+    goal = parse_instruction(fountain, "Let the water run until it comes out clear, gentle flow")
+    assert goal == {"flow": "gentle"}
+
+
+def test_a_fan_word_naming_an_opening_of_the_body_sets_no_switch() -> None:
+    """'Ventilation' and 'circulation' name the fan switch, but "the ventilation slots" or
+    "the air circulation vents" in a cleaning remark are openings of the body: no switch."""
+    cooler = model_from(
+        """
+        controls: [{id: fan, label: FAN}, {id: up, label: "+"}, {id: down, label: "-"}]
+        variables:
+          fan: {type: discrete, values: ["off", "on"], label: FAN}
+          cold: {type: numeric, ranges: [[1, 7, 1]], initial: 4, label: COLD}
+        actions:
+          press_fan: {control: fan}
+          press_up: {control: up}
+          press_down: {control: down}
+        features:
+          fan:
+            - {actions: [press_fan], variable: fan, effect: next}
+          cold:
+            - actions: [press_up, press_down]
+              variable: cold
+              effect: {press_up: next, press_down: prev}
+        """
+    )
+    for said in (
+        "Don't block the ventilation slots. Cold at 3",
+        "Cold at 3, then dust the air circulation vents",
+    ):
+        assert "fan" not in parse_instruction(cooler, said), said
+    assert parse_instruction(cooler, "Cold at 3 with the ventilation on")["fan"] == "on"

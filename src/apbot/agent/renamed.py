@@ -23,6 +23,7 @@ the walk is read again in the belief's values, so nothing else is learnt wrong f
 
 from __future__ import annotations
 
+import re
 from collections.abc import Sequence
 from typing import Any
 
@@ -122,6 +123,10 @@ def rename_walk(
     pairs = pairing(tokens, predicted, domain)
     if pairs is None:
         return None
+    if not any(repr(t) in set(map(repr, domain)) for t in tokens) and not any(
+        _resembles(spec, name, t, v) for t, v in pairs.items()
+    ):
+        return None  # nothing read as itself, no word like its value: the order has no anchor
     texts = {token: _text(spec, name, value, token) for token, value in pairs.items()}
     label = str(spec.display_label(name)).casefold()[:3]
     if any(
@@ -129,6 +134,8 @@ def rename_walk(
         for token, text in texts.items()
     ):
         return None  # digits without the label: another setting's number (a clock), no word
+    if any(re.search(r"\d\d", text) and label not in text.casefold() for text in texts.values()):
+        return None  # "100°C" for keep-warm off: the temperature's number, no word for a value
     read = {
         repr(t): _text(spec, name, pairs.get(t, t), t) for t in tokens if not isinstance(t, tuple)
     }
@@ -140,6 +147,8 @@ def rename_walk(
     folded = [t.casefold() for t in texts.values()]
     if len(set(folded)) < len(folded) or others.intersection(folded):
         return None  # two values, one text: the display does not tell them apart
+    if any(_number_for_number(spec, name, t, v) for t, v in pairs.items()):
+        return None  # a number where another was due: the numbers read are wrong, not words
     if all(_said(t).casefold().startswith(str(v).casefold()) for t, v in pairs.items()):
         return None  # values spelt out ("lo" as "low"): the walk's domain learns them as such
     show = _templates(spec, name, domain, pairs)
@@ -169,6 +178,42 @@ def rename_walk(
 def translate(walk: Sequence[Any], pairs: dict[Any, Any], main: Any) -> list[Any]:
     """A walk read again in the belief's values, after :func:`rename_walk` learnt ``pairs``."""
     return [pairs.get(_token(v, main), v) for v in walk]
+
+
+_ON_MARKS = {"i", "1", "|"}  # the power symbols a switch prints for on, for off
+_OFF_MARKS = {"0", "o"}
+
+
+def _resembles(spec: Any, name: str, token: Any, value: Any) -> bool:
+    """The text names its value by itself: an abbreviation of it ("DIST" for distance), or
+    the on / off marks of a switch ("I" / "0")."""
+    said = _said(token).casefold()
+    label = str(spec.display_label(name)).casefold()
+    said = said.replace(label, " ").strip() if label else said.strip()
+    word = str(value).casefold()
+    if len(said) >= 2 and word.startswith(said):
+        return True
+    return (word == "on" and said in _ON_MARKS) or (word == "off" and said in _OFF_MARKS)
+
+
+def _number_for_number(spec: Any, name: str, token: Any, value: Any) -> bool:
+    """A number shown (bare, or beside the setting's label or unit) where the belief predicted
+    another number: a range read wrong (30 … 90 read as 1 … 7), which the walk's range repair
+    learns; as words for the values it would keep the wrong numbers the goal cannot name."""
+    if _as_number(value) is None:
+        return False
+    said = _said(token).casefold()
+    for part in (str(spec.display_label(name)), str(getattr(spec, "unit", "") or "")):
+        if part:
+            said = said.replace(part.casefold(), " ")
+    return _as_number(said.strip()) is not None
+
+
+def _as_number(value: Any) -> float | None:
+    try:
+        return float(str(value).replace(",", "."))
+    except ValueError:
+        return None
 
 
 def _said(token: Any) -> str:

@@ -42,6 +42,8 @@ def kept_outside(
             continue
         if any(k in claimed for k in range(mention.start, mention.end)):
             continue
+        if _not_a_value(text, mention):
+            continue  # "not fridge 9", "above 9", "opened 20 times": no value asked for
         info = _nearest_setting(view, text, mention, goal)
         if info is None or fit(view, info, mention, goal) is not None:
             continue  # (a value it has was left for a reason of its own)
@@ -58,6 +60,30 @@ def kept_outside(
             f"{preview(values, quote=False)}; kept as said, for the words beside it name it"
         )
         outside.append(str(GoalParseError(text.span(mention.start, mention.end), reason)))
+
+
+# words that make a number something other than the value asked for: a value refused, a limit
+# or a comparison ("not 9", "no more than 9", "above 9"), or a count of events ("20 times")
+_NOT_ASKED = frozenset(
+    {"not", "no", "never", "don't", "dont", "without", "except", "instead", "than"}
+    | {"above", "below", "over", "under", "beyond", "exceed", "exceeds", "past", "max"}
+    | {"maximum", "least", "most", "until", "till", "since", "ago"}
+)
+_COUNTED_AFTER = frozenset({"times", "time", "x", "more", "less", "fewer", "ago", "or"})
+
+
+def _not_a_value(text: Text, mention: Mention) -> bool:
+    """The number is refused, bounds a value, compares or counts something (a word of
+    :data:`_NOT_ASKED` in its clause before it, or a count word right after it)."""
+    if text.word(mention.end) in _COUNTED_AFTER:
+        return True
+    for k in range(mention.start - 1, max(-1, mention.start - 1 - 2 * REACH), -1):
+        word = text.word(k)
+        if word in CLAUSE_ENDS or word in (",", "and", "then"):
+            break
+        if word in _NOT_ASKED:
+            return True
+    return False
 
 
 def _nearest_setting(view: Model, text: Text, mention: Mention, goal: Goal) -> VarInfo | None:

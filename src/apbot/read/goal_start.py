@@ -329,6 +329,8 @@ def _set_in_motion(text: Text, k: int, family: frozenset[str] | None) -> bool:
     verb = text.word(j)
     if text.word(j + 1) not in _AFTER_MOTION or not verb.isalpha():
         return False
+    if j == k + 3 and text.word(j + 1) in ("until", "till"):
+        return False  # "let the water run until it runs clear": a tap rinsing, not the appliance
     if text.word(k) == "get":
         return verb.endswith("ing") and len(verb) > 5
     return verb == "run" or (family is not None and stem(verb) in family)

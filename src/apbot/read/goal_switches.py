@@ -62,6 +62,8 @@ def switches(
                     key, weight = concept(warmth), 1.0
             if weight <= 0 or generic(key):
                 continue
+            if _part_after(text, k, info.vocab):
+                continue  # "clean the ventilation slots": a part of the body, not the switch
             if shadowed and (text.stems[k] in own or key in own_concepts(info)):
                 continue
             locks = key == concept("lock") or concept("lock") in own_concepts(info)
@@ -110,6 +112,23 @@ def switches(
         if where is not None:
             where[name] = k
         claimed.add(k)
+
+
+# openings and parts of the body a switch's word may name ("fan vents", "ventilation slots")
+_PARTS = frozenset(
+    {"slot", "slots", "opening", "openings", "vent", "vents", "grille", "grilles", "hole"}
+    | {"holes", "outlet", "outlets", "inlet", "inlets", "duct", "ducts", "louvre", "louvres"}
+    | {"louver", "louvers", "intake", "intakes"}
+)
+
+
+def _part_after(text: Text, k: int, vocab: dict[str, float]) -> bool:
+    """The switch's words at ``k`` (and the ones right after it) name a part: a word of
+    openings or covers follows them ("the ventilation slots", "air circulation vents")."""
+    j = k + 1
+    while j < len(text.tokens) and vocab.get(text.concepts[j], 0.0) > 0:
+        j += 1
+    return j < len(text.tokens) and text.word(j) in _PARTS
 
 
 def _names_a_setting(view: Model, goal: Goal, word: str) -> bool:

@@ -33,6 +33,8 @@ _REWRITES = (
     (re.compile(r"(?<=\d)(?=[a-z°%])"), " "),  # 12min -> 12 min
     (re.compile(r"\s[-\u2013\u2014]+\s|\u2014"), " ; "),  # a dash between clauses
     (re.compile(r"[\u2010-\u2015\u2212]"), "-"),  # typographic dashes and minus
+    # a sign spaced off the word before and glued to the digits: "freezer -20" (not "XR-18")
+    (re.compile(r"(?<=[a-z]) -(?=\d)"), " minus "),
     (re.compile(r"[\u2018\u2019`]"), "'"),
     (re.compile(r"º"), "°"),
     (re.compile(r"½"), " and a half "),
