@@ -248,3 +248,21 @@ def test_a_count_after_a_comma_is_not_the_menus_servings() -> None:
         belief, "Auto menu soup and start, it's for 2 people", manual, outside=[]
     )
     assert "auto_menu_quantity" not in goal
+
+
+def test_no_entry_is_named_by_a_negation_a_verb_a_tally_or_a_rating() -> None:
+    # each names no setting: a negation, a verb's past, a count of events, a score
+    for said in (
+        "Warm the upper zone, but not 30 please",
+        "Warm the lower zone, the door opened 20 times today",
+        "Warm the upper zone. 5 stars for this throw!",
+        "Warm the upper zone, it deserves four out of five",
+    ):
+        goal = read(said)
+        assert set(goal) <= {"zone", "running"}, (said, goal)
+
+
+def test_a_duration_is_named_days_only_when_said_in_days() -> None:
+    assert read("Warm the upper zone for 48 hours")["time"] == "48 h"
+    assert "days" not in read("Warm the upper zone for 48 hours")
+    assert read("Warm the upper zone for 3 days")["days"] == "3 d"

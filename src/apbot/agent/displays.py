@@ -106,14 +106,17 @@ class DisplayLearner:
             bare=bare,
         )
 
-    def learn_word(self, name: str, trace: Sequence[Any], believed: Any = None) -> bool:
+    def learn_word(
+        self, name: str, trace: Sequence[Any], believed: Any = None, start_read: bool = False
+    ) -> bool:
         """A setting printed as one word per value (a lamp ``DRY+``, a screen ``ECO``) with one
         value's word copied wrong: a walk that read every other value, and one text it could
         not, which differs from what the belief prints for the missing value by that word
         alone. The word the display printed becomes the value's ``show`` entry (once per
         setting); True when the belief changed. An on/off setting the belief prints as
         "LABEL value" learns the one word its lamp lights (:meth:`_lamp_word`); ``believed``:
-        the value the walk's first press was to give."""
+        the value the walk's first press was to give, which is known only if the value that
+        press moved from was read (``start_read``) — else the word must name it itself."""
         session = self.session
         model = session.belief.model
         spec = model.variables[name]
@@ -126,8 +129,12 @@ class DisplayLearner:
         if spec.show is None and len(texts) == 1 and not read and dark:
             # the word and a dark display in turn: the word is the value the walk's first
             # press was to give (``believed``), the dark display the other
-            others = [v for v in session.domain_values(name) if v != believed]
-            if len(others) == 1 and len(others) < len(session.domain_values(name)):
+            domain = session.domain_values(name)
+            others = [v for v in domain if v != believed]
+            word = next(iter(texts))
+            if not start_read and not names_value(spec, name, word, believed, domain):
+                return False  # from a guessed start the press may have given the other value
+            if len(others) == 1 and len(others) < len(domain):
                 return self._lamp_word(name, texts.pop(), believed, others[0])
         if len(texts) != 1 or len(missing) != 1 or len(read) < 1:
             return False
@@ -280,6 +287,32 @@ class DisplayLearner:
         while len(parts) > 1 and parts[-1].casefold() in lamps:
             parts.pop()
         return parts[0]  # a lamp the belief does not know is no part of a template either
+
+
+_OFF = {"off", "no", "none", "0", "false"}
+_MARKS = {"on": {"on", "i", "1", "|"}, "off": {"off", "0", "o"}}
+
+
+def names_value(spec: Any, name: str, word: str, value: Any, domain: Sequence[Any]) -> bool:
+    """Whether a display word says by itself that it shows ``value``: the value's own word or
+    an abbreviation of it (``ECO`` for eco, ``I`` for on), or, for the one value of an on/off
+    setting that is not "off", the setting's own name or a word of its label lit (``GLOW`` for
+    a night glow). A word like neither (``STD``) could show either value.
+
+    >>> names_value(None, "glow", "GLOW", "on", ["off", "on"])
+    True
+    >>> names_value(None, "boost", "STD", "on", ["off", "on"])
+    False
+    """
+    said, word_of = word.strip().casefold(), str(value).casefold()
+    if (len(said) >= 2 and word_of.startswith(said)) or said in _MARKS.get(word_of, set()):
+        return True
+    if word_of in _OFF or not any(str(v).casefold() in _OFF for v in domain):
+        return False
+    label = str(spec.display_label(name)) if spec is not None else name
+    own = {w.casefold() for w in re.split(r"[\W_]+", f"{label} {name}") if len(w) >= 2}
+    parts = [w for w in re.split(r"[\W_]+", said) if w]
+    return bool(parts) and all(p in own for p in parts)
 
 
 def _parts(text: str) -> set[str]:

@@ -79,6 +79,12 @@ class Executed:
         """The value of ``name`` the display showed after this action (MISSING if none)."""
         return MISSING if self.seen is None else self.seen.observed(name)
 
+    def start_shown(self, name: str) -> bool:
+        """Whether the display had shown ``name``'s value and nothing changed it unseen since:
+        the value the action moved from was read, not the belief's guess."""
+        shown = self.shown_before.get(name, MISSING)
+        return name not in self.unseen_before and shown is not MISSING and shown is not None
+
     @property
     def refused(self) -> bool:
         """The appliance refused what the belief expected to work."""

@@ -72,12 +72,16 @@ class Explorer(WalkLearning):
             # the belief's own words for the texts first (a template, one value's word); else
             # the walk may be the belief's own with values printed otherwise
             if any(isinstance(v, Unread) for v in forward + (backward or [])):
-                learnt = self._template_or_word(name, forward, backward, last.predicted)
+                learnt = self._template_or_word(
+                    name, forward, backward, last.predicted, self._start_read(name, last)
+                )
             if not learnt:
                 walks = self._renamed(name, last, key, opposite, forward, backward, history)
                 renamed = walks is not None
                 forward, backward = walks if walks is not None else (forward, backward)
-        forward, backward = self._read_unread(name, forward, backward, last.predicted, learnt)
+        forward, backward = self._read_unread(
+            name, forward, backward, last.predicted, learnt, self._start_read(name, last)
+        )
         forward, backward = restyle_walk(self.session, name, forward, backward)
         seen = [v for v in forward + (backward or []) if not isinstance(v, Dark)]
         if not seen:
@@ -97,14 +101,25 @@ class Explorer(WalkLearning):
             self.session.belief.advance(final.name, final.seconds)
 
     def _template_or_word(
-        self, name: str, forward: list[Any], backward: list[Any] | None, believed: Any
+        self,
+        name: str,
+        forward: list[Any],
+        backward: list[Any] | None,
+        believed: Any,
+        start_read: bool = False,
     ) -> bool:
         """Learn how the display prints the setting from the texts a walk could not read: one
         value's word, or the template they share; True when the belief changed."""
         texts = [v.text for v in forward + (backward or []) if isinstance(v, Unread)]
         return self.displays.learn_word(
-            name, forward + (backward or []), believed
+            name, forward + (backward or []), believed, start_read
         ) or self.displays.learn(name, texts)
+
+    @staticmethod
+    def _start_read(name: str, last: Executed) -> bool:
+        """Whether the value ``last`` moved ``name`` from was read on the display (so what it
+        was to give is known), not the belief's guess."""
+        return last.start_shown(name)
 
     def _read_unread(
         self,
@@ -113,6 +128,7 @@ class Explorer(WalkLearning):
         backward: list[Any] | None,
         believed: Any = None,
         learnt: bool | None = None,
+        start_read: bool = False,
     ) -> tuple[list[Any], list[Any] | None]:
         """Texts the belief could not read: learn how the display prints the setting from them,
         then read them again; what stays unreadable counts as dark. ``learnt``: what the word
@@ -120,7 +136,7 @@ class Explorer(WalkLearning):
         not tried yet)."""
         texts = [v.text for v in forward + (backward or []) if isinstance(v, Unread)]
         if learnt is None and texts:
-            learnt = self._template_or_word(name, forward, backward, believed)
+            learnt = self._template_or_word(name, forward, backward, believed, start_read)
         if texts and not learnt and self._learn_words(name, texts):
             forward, backward = as_text(forward), None if backward is None else as_text(backward)
 

@@ -16,6 +16,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
+from apbot.agent.displays import names_value
 from apbot.agent.reader import DisplayReader
 from apbot.agent.repair import RepairError, add_indicator, set_display
 from apbot.agent.session import UNREADABLE, Executed, Session
@@ -70,6 +71,14 @@ def relit(session: Session, done: Executed) -> bool:
         # the belief shows it on its own screen only ("MIST on"); the panel lights a word
         mapping, kind = {str(predicted): word, str(old): ""}, "lit"
     else:
+        return False
+    if kind == "lit" and not (
+        done.start_shown(name)
+        or names_value(spec, name, mapping[str(predicted)], predicted, domain)
+    ):
+        # nothing says which value lights a word (a sign of running does: the manual's lamp),
+        # and the press moved from the belief's guess of the start: the word may show the
+        # other value (a boost that starts on, lit STD when switched off)
         return False
     if not session.budget.once("template", f"{kind}:{name}"):
         return False

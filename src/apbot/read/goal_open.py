@@ -79,6 +79,8 @@ def open_entries(
     for mention in mentions:
         if mention.kind == "clock" or any(k in taken for k in range(mention.start, mention.end)):
             continue
+        if _tally(text, mention):
+            continue
         value = _as_said(text, mention)
         if value is None:
             continue
@@ -94,19 +96,21 @@ def open_entries(
             name = _level_noun(text, mention, known, printed)
         if name is None and not _of_its_kind(view, mention, text):
             name = _KIND_NAMES.get(_kind(mention) or "")
-            if name == "time" and mention.value % 86400 == 0:
-                name = "days"  # a number of days away, not a cooking time
+            if name == "time" and _in_days(text, mention):
+                name = "days"  # a number of days away, not a cooking time ("48 hours" is one)
             count = _kind(mention) == "count"
             if name is not None and not roleless:  # no key to try: the programme's next step
                 chosen = _chosen_beside(view, text, mention, goal, where, count)
                 name = None if chosen is None else f"{chosen}_{name}"
             elif count and manual and stem(mention.unit) not in counted:
                 name = None  # "it's for 2 people": a count of what the manual never counts
-        if name is None or name in view.infos or name in goal or name in found:
+        if name is None or name in _NEVER_NAMES or name in view.infos or name in goal:
+            continue
+        if name in found:
             continue
         found[name] = value
     for name, value in _worded(text, nouns, known, taken).items():
-        if name not in view.infos and name not in goal and name not in found:
+        if not ({name} & (set(view.infos) | set(found) | _NEVER_NAMES | set(goal))):
             found[name] = value
     return found
 
@@ -389,6 +393,8 @@ def _level_noun(
         return None
     if word in _VERBS or word in _NOT_LEVELS or (printed and text.stems[k] not in printed):
         return None
+    if word.endswith("ed") and not word.endswith("eed"):
+        return None  # a verb's past ("the door opened 20 times"), not a setting's noun
     return word
 
 
@@ -398,6 +404,34 @@ _NOT_LEVELS = frozenset(
      "their", "those", "these", "back", "again", "times", "until", "till", "every", "each"}
 )  # fmt: skip
 """Words that stand before a number without naming a setting ("my kids are 5")."""
+
+
+_NEVER_NAMES = frozenset(
+    {"not", "no", "never", "nor", "without", "start", "stop", "pause", "cancel", "begin",
+     "resume", "reset", "clear", "enter", "confirm", "ok"}
+)  # fmt: skip
+"""Words that name no setting, whichever way they were found: a negation ("not 30"), a key
+that acts rather than holds a value ("start")."""
+
+_TALLIES = frozenset({"times", "stars", "star", "points", "votes", "reviews", "ratings"})
+"""Nouns after a number that count events or score something ("opened 20 times", "5 stars"):
+a remark, never a value to set."""
+
+
+def _tally(text: Text, mention: Mention) -> bool:
+    """The number counts events or rates ("20 times", "5 stars", "4 out of 5"), it sets
+    nothing."""
+    if mention.kind != "number":
+        return False
+    after = text.word(mention.end)
+    noun = mention.unit.casefold() or after
+    return noun in _TALLIES or (after == "out" and text.word(mention.end + 1) == "of")
+
+
+def _in_days(text: Text, mention: Mention) -> bool:
+    """A duration said in days ("for 14 days"), not one that adds up to whole days ("48
+    hours")."""
+    return any(text.word(k).startswith("day") for k in range(mention.start, mention.end))
 
 
 def _remark(text: Text, mention: Mention) -> bool:
@@ -430,7 +464,8 @@ def _as_said(text: Text, mention: Mention) -> Any:
         return int(number) if float(number).is_integer() else number
     if mention.kind == "duration":
         seconds = round(mention.value)
-        for size, unit in ((86400, "d"), (3600, "h"), (60, "min")):
+        sizes = ((86400, "d"), (3600, "h"), (60, "min"))
+        for size, unit in sizes if _in_days(text, mention) else sizes[1:]:
             if seconds % size == 0 and seconds >= size:
                 return f"{seconds // size} {unit}"
         return f"{seconds} s"
