@@ -27,6 +27,7 @@ from apbot.agent.model_edits import RepairError
 from apbot.agent.perception import MISSING, UNREADABLE, Perceiver, Seen
 from apbot.agent.pressing import press
 from apbot.agent.quantities import magnitude
+from apbot.agent.unlit import lit_lamps, unproven_dark
 from apbot.model.display import can_show
 from apbot.model.effects import default_effect
 from apbot.model.schema import Add, ApplianceModel, Skip
@@ -66,6 +67,7 @@ class Session:
         # read, since the display last showed it readably
         self.unread_presses: dict[str, list[Executed]] = {}
         self.ever_seen: set[str] = set()  # shown (or shown absent) at least once
+        self.lit: set[str] = set()  # indicators whose lamp the display has shown lit
         # shown before a press the belief did not predict, not shown since: that press may have
         # changed them too (a CANCEL that also clears the delay), though the belief says not
         self.doubtful: set[str] = set()
@@ -134,6 +136,12 @@ class Session:
     def sync(self, seen: Seen) -> None:
         """Believe what the display shows; what it showed is confirmed, and a value the belief
         cannot hold is kept as a contradiction until the setting is seen with one it can."""
+        if not self.last.values:  # a dark lamp whose lit words were never seen says nothing
+            model, domain = self.belief.model, lambda n: tuple(self.domain_values(n))
+            self.lit |= lit_lamps(model, seen.text, domain)
+            dark = unproven_dark(model, seen.values, self.lit, domain)
+            if dark:
+                seen = replace(seen, values={n: v for n, v in seen.values.items() if n not in dark})
         self.last_seen = seen
         before = self.belief.state
         for name, value in seen.values.items():
