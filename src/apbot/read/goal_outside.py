@@ -19,6 +19,7 @@ from apbot.model.values import preview
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_fit import fit
 from apbot.read.goal_text import CLAUSE_ENDS, Text
+from apbot.read.goal_values import bare_number
 from apbot.read.goal_view import Goal, Model, VarInfo, domain_values, own_concepts
 from apbot.read.numbers import Mention
 
@@ -48,7 +49,7 @@ def kept_outside(
         if info is None or fit(view, info, mention, goal) is not None:
             continue  # (a value it has was left for a reason of its own)
         values = domain_values(view, info, goal)
-        numbers = [n for n in (_number(v) for v in values) if n is not None]
+        numbers = [n for n in (bare_number(v) for v in values) if n is not None]
         if numbers and all((n < 0) != (mention.value < 0) for n in numbers if n):
             continue  # "19" for a freezer read as -16 … -24: a sign lost, not a value to try
         value = _as_said(info, mention.value)
@@ -131,7 +132,7 @@ def _numeric(info: VarInfo) -> bool:
     if isinstance(var, NumericVariable):
         return True
     if isinstance(var, DiscreteVariable):
-        return bool(info.values) and all(_number(v) is not None for v in info.values)
+        return bool(info.values) and all(bare_number(v) is not None for v in info.values)
     return False
 
 
@@ -141,10 +142,3 @@ def _as_said(info: VarInfo, value: float) -> Any:
     if isinstance(info.var, NumericVariable):
         return number
     return str(number)
-
-
-def _number(value: Any) -> float | None:
-    try:
-        return float(str(value))
-    except ValueError:
-        return None

@@ -14,7 +14,7 @@ from typing import Any
 
 from apbot.model.schema import DiscreteVariable, NumericVariable
 from apbot.read.goal_text import Text, near_vocab
-from apbot.read.goal_values import unit_text
+from apbot.read.goal_values import bare_number, unit_text
 from apbot.read.goal_view import Goal, Model, VarInfo, domain_values
 from apbot.read.numbers import Mention
 
@@ -57,19 +57,14 @@ def _of_no_kind(info: VarInfo) -> bool:
         return False
     if isinstance(var, NumericVariable):
         return not unit_text(var)
-    return isinstance(var, DiscreteVariable) and all(_number(v) is not None for v in info.values)
+    return isinstance(var, DiscreteVariable) and all(
+        bare_number(v) is not None for v in info.values
+    )
 
 
 def _value(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
     for value in domain_values(view, info, goal):
-        number = _number(value)
+        number = bare_number(value)
         if number is not None and abs(number - mention.value) < 1e-6:
             return value
     return None
-
-
-def _number(value: Any) -> float | None:
-    try:
-        return float(str(value).replace("+", "", 1))
-    except ValueError:
-        return None

@@ -101,6 +101,12 @@ def quantity_dimensions(values: list[Any]) -> set[str]:
     return {d for d, c in counts.items() if c >= 2}
 
 
+def bare_number(value: Any) -> float | None:
+    """A value that is a plain number ("-16", "+4", "3.5"), without a unit; else None."""
+    q = parse_quantity(str(value))
+    return q[0] if q is not None and q[1] is None else None
+
+
 def magnitude(value: Any) -> float | None:
     if isinstance(value, int | float):
         return float(value)
