@@ -293,6 +293,17 @@ _OFF = {"off", "no", "none", "0", "false"}
 _MARKS = {"on": {"on", "i", "1", "|"}, "off": {"off", "0", "o"}}
 
 
+def spells_value(said: str, value: Any) -> bool:
+    """Whether a shown word is the value's own word or an abbreviation of it (``DIST`` for
+    distance), or the mark a switch prints for it (``I`` / ``0`` for on / off).
+
+    >>> spells_value("dist", "distance"), spells_value("i", "on"), spells_value("std", "on")
+    (True, True, False)
+    """
+    said, word = said.strip().casefold(), str(value).casefold()
+    return (len(said) >= 2 and word.startswith(said)) or said in _MARKS.get(word, set())
+
+
 def names_value(spec: Any, name: str, word: str, value: Any, domain: Sequence[Any]) -> bool:
     """Whether a display word says by itself that it shows ``value``: the value's own word or
     an abbreviation of it (``ECO`` for eco, ``I`` for on), or, for the one value of an on/off
@@ -305,7 +316,7 @@ def names_value(spec: Any, name: str, word: str, value: Any, domain: Sequence[An
     False
     """
     said, word_of = word.strip().casefold(), str(value).casefold()
-    if (len(said) >= 2 and word_of.startswith(said)) or said in _MARKS.get(word_of, set()):
+    if spells_value(said, value):
         return True
     if word_of in _OFF or not any(str(v).casefold() in _OFF for v in domain):
         return False

@@ -27,6 +27,7 @@ import re
 from collections.abc import Sequence
 from typing import Any
 
+from apbot.agent.displays import spells_value
 from apbot.agent.infer import Dark, Unread
 from apbot.agent.reader import DisplayReader
 from apbot.agent.repair import RepairError, set_display
@@ -180,20 +181,13 @@ def translate(walk: Sequence[Any], pairs: dict[Any, Any], main: Any) -> list[Any
     return [pairs.get(_token(v, main), v) for v in walk]
 
 
-_ON_MARKS = {"i", "1", "|"}  # the power symbols a switch prints for on, for off
-_OFF_MARKS = {"0", "o"}
-
-
 def _resembles(spec: Any, name: str, token: Any, value: Any) -> bool:
     """The text names its value by itself: an abbreviation of it ("DIST" for distance), or
-    the on / off marks of a switch ("I" / "0")."""
+    the on / off marks of a switch ("I" / "0"), once the setting's label is taken out."""
     said = _said(token).casefold()
     label = str(spec.display_label(name)).casefold()
-    said = said.replace(label, " ").strip() if label else said.strip()
-    word = str(value).casefold()
-    if len(said) >= 2 and word.startswith(said):
-        return True
-    return (word == "on" and said in _ON_MARKS) or (word == "off" and said in _OFF_MARKS)
+    said = said.replace(label, " ") if label else said
+    return spells_value(said, value)
 
 
 def _number_for_number(spec: Any, name: str, token: Any, value: Any) -> bool:
