@@ -86,6 +86,12 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "robot_lawnmower": 3,
     "water_softener": 3,
     "battery_charger": 3,
+    # The sixth blind set (helper blind9n, 5 December): blind for this round's work.
+    "waffle_maker": 4,
+    "ice_maker": 3,
+    "pasta_maker": 4,
+    "plug_timer": 3,
+    "popcorn_maker": 3,
 }
 
 
