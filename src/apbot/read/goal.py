@@ -33,7 +33,7 @@ from apbot.model.domain import ValueProblem, normalise
 from apbot.model.schema import ApplianceModel, DiscreteVariable
 from apbot.model.values import closest_matches, preview
 from apbot.read.goal_assign import assign_mentions, distinct, in_weeks
-from apbot.read.goal_cases import entry_modes, implied_cases
+from apbot.read.goal_cases import entry_modes, implied_cases, set_by_hand
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_kinds import kind_numbers
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
@@ -120,6 +120,7 @@ def parse_instruction(
     self_switching_off(view, text, goal, claimed)
     place_twins(view, text, goal, where)
     entry_switches(view, goal)
+    set_by_hand(view, text, goal)
     implied_cases(view, goal)
     entry_modes(view, goal)
     boil(view, text, goal)

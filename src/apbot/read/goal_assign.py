@@ -115,6 +115,8 @@ def assign_mentions(
                 )
                 if not ((named or by) and mention.kind == "clock"):
                     continue  # a time of day sets the clock only when the clock is named
+            if info.timing == "at" and not _its_time_of_day(view, info, text, mention):
+                continue
             score += _cue_bonus(info, text, mention) + (0.5 if by else 0.0)
             score += _after_its_case(info, text, mention, goal)
             options.append((score, -info.order, mi, name, value))
@@ -193,6 +195,15 @@ def _time_named(text: Text, mention: Mention) -> bool:
         if text.word(j) not in ("to", "is", "as", "at", "now", ":"):
             return False
     return False
+
+
+def _its_time_of_day(view: Model, info: VarInfo, text: Text, mention: Mention) -> bool:
+    """A time of day goes to a day-dial setting (a start time, a feeding time) its words name,
+    or to the model's only setting that is a time of day ("mow at 7 in the morning")."""
+    if near_vocab(info, text, mention.start, mention.end, reach=12):
+        return True
+    days = [i for i in view.infos.values() if i.timing in ("at", "clock", "finish")]
+    return mention.kind == "clock" and days == [info]
 
 
 def _clock_parts(view: Model, text: Text, mention: Mention, goal: Goal) -> bool:

@@ -14,7 +14,9 @@ from typing import Any
 
 from apbot.model.domain import build_domain
 from apbot.model.schema import DiscreteVariable, GoTo
-from apbot.read.goal_view import Goal, Model, step_effects
+from apbot.read.goal_text import CLAUSE_ENDS, Text
+from apbot.read.goal_view import Goal, Model, own_concepts, step_effects
+from apbot.read.goal_vocab import stem
 
 
 def implied_cases(view: Model, goal: Goal) -> None:
@@ -111,3 +113,51 @@ def _starts_at(var: DiscreteVariable) -> Any:
     if initial is not None:
         return initial
     return var.values[0] if var.values else None
+
+
+_BY_HAND = frozenset({"myself", "ourselves"})
+_MANUAL = frozenset({stem("manual"), stem("man")})
+
+
+def set_by_hand(view: Model, text: Text, goal: Goal) -> None:
+    """ "I'll set the hours myself", "set the mist myself": the user sets that setting by hand,
+    so the mode it depends on is its MANUAL case (the automatic ones choose it themselves) —
+    unless the panel starts in MANUAL anyway. Only a setting named in the same clause."""
+    for k, token in enumerate(text.tokens):
+        own = token.text == "own" and text.word(k - 1) in ("my", "our")
+        if token.text not in _BY_HAND and not own:
+            continue
+        clause = _clause(text, k)
+        for info in view.infos.values():
+            parent = info.var.depends_on
+            mode = view.infos.get(parent or "")
+            if mode is None or parent in goal or not info.var.cases:
+                continue
+            if mode.role != "setting" or not isinstance(mode.var, DiscreteVariable):
+                continue
+            manual = [v for v in mode.values if _manual(mode.var, v)]
+            if len(manual) != 1 or str(manual[0]) not in info.var.cases:
+                continue
+            if str(manual[0]) == str(_starts_at(mode.var)):
+                continue
+            if own_concepts(info) & {text.concepts[j] for j in clause}:
+                goal[mode.name] = manual[0]
+
+
+def _clause(text: Text, k: int) -> range:
+    """The positions of the clause around k, up to a full stop, a comma or a dash."""
+    ends = CLAUSE_ENDS | {"-", ":", ","}
+    start = k
+    while start > 0 and text.word(start - 1) not in ends:
+        start -= 1
+    end = k
+    while end + 1 < len(text.tokens) and text.word(end + 1) not in ends:
+        end += 1
+    return range(start, end + 1)
+
+
+def _manual(var: DiscreteVariable, value: Any) -> bool:
+    """The value is MANUAL (or its display's MAN)."""
+    show = var.show.get(str(value), "") if isinstance(var.show, dict) else ""
+    words = f"{value} {show}".casefold().replace("_", " ").split()
+    return any(stem(w) in _MANUAL for w in words)

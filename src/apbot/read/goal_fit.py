@@ -22,7 +22,7 @@ def fit(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
     domain = domain_values(view, info, goal)
     var = info.var
     if isinstance(var, TimeVariable):
-        if mention.kind == "duration" and info.timing not in ("clock", "finish"):
+        if mention.kind == "duration" and info.timing not in ("clock", "finish", "at"):
             seconds = round(mention.value)
         elif mention.kind == "clock" and info.timing in ("duration", "delay"):
             if not mention.colon or mention.meridiem or mention.lead not in ("for", "to", "of"):

@@ -213,7 +213,7 @@ def _of_its_kind(view: Model, mention: Mention, text: Text) -> bool:
         could = not isinstance(info.var, DiscreteVariable) and timed == (kind == "time")
         if could and near_vocab(info, text, mention.start, mention.end, reach=4):
             return True
-        lasting = timed and info.timing not in ("clock", "finish")  # not a time of day
+        lasting = timed and info.timing not in ("clock", "finish", "at")  # not a time of day
         if (kind == "time" and lasting) or (kind != "time" and info.dimension == kind):
             return True
     return False

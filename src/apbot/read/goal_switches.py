@@ -378,7 +378,7 @@ def _starts_at_zero(info: VarInfo) -> bool:
     """A setting whose "none" is 0: any number, or a duration that starts empty (not a clock)."""
     if isinstance(info.var, NumericVariable):
         return True
-    if isinstance(info.var, TimeVariable) and info.timing not in ("clock", "finish"):
+    if isinstance(info.var, TimeVariable) and info.timing not in ("clock", "finish", "at"):
         domain = build_domain(info.var) if not info.var.depends_on else None
         return domain is None or magnitude(domain.values[domain.initial]) == 0
     return False

@@ -80,7 +80,9 @@ class VarInfo:
     role: str = "setting"  # setting, switch, power, running
     on: str | None = None
     off: str | None = None
-    timing: str = "duration"  # for time-like variables: duration, delay, finish (at), clock
+    # for time-like variables: duration, delay, finish (at), clock, or "at": a time of day
+    # something happens at (a start time, a feeding time) on a model without a clock
+    timing: str = "duration"
     dimension: str | None = None
     order: int = 0
     turns: str | None = None  # a timer that switches the appliance "on" or "off" at its end
@@ -214,6 +216,8 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
             # beside the clock, a TIMER that wraps at 23:59 is a time of day: when it is done
             info.timing = "finish"
             info.vocab.setdefault(concept("finish"), 0.5)
+        elif info.timing == "duration" and _day_dial(info):
+            info.timing = "at"  # no clock beside it, yet a dial of the day's hours
     for info in infos.values():
         if info.timing in ("duration", "delay") and (
             isinstance(info.var, TimeVariable) or info.dimension == "time"
@@ -293,6 +297,13 @@ def _whole_day(info: VarInfo) -> bool:
         return False
     first, last = magnitude(values[0]), magnitude(values[-1])
     return first == 0 and last is not None and last >= 23 * 3600
+
+
+def _day_dial(info: VarInfo) -> bool:
+    """A whole-day time setting that stops short of 24:00 (00:00 to 23:xx): the hours of a day
+    on a 24-hour dial, not a count of up to 24 hours (a 0-24 h timer ends at 24:00)."""
+    last = magnitude(info.values[-1]) if _whole_day(info) else None
+    return last is not None and last < 24 * 3600
 
 
 _DIMENSION_WORDS = {"power": "power", "temperature": "temperature", "mass": "weight"}
