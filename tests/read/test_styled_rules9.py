@@ -81,3 +81,52 @@ def test_a_chart_goes_on_after_the_footer_and_the_drawn_line_of_a_page_break() -
     assert [u.cells[0] for u in rows] == ["0 min", "15 min", "30 min", "60 min"], [
         (u.text, u.header) for u in units
     ]
+
+
+# a hob's timer: the steps of each span told in lettered items under a numbered step, and a
+# worked example elsewhere that presses TIMER beside a temperature run
+HOB = """KEYS
+TIMER      Sets the cooking timer.
+KNOB       Turn to change the value shown.
+START      Starts cooking.
+
+SETTING THE TIMER
+1. Press TIMER. The display shows TIMER 0:00.
+2. Turn the knob clockwise to set the time.
+   a) From 0:00 to 1:00 each click is one minute.
+   b) From 1:00 to 4:00 each click is fifteen minutes.
+3. Press START.
+
+EXAMPLE
+Can I keep soup at 85 °C for two hours?
+Yes: knob 2 clicks anticlockwise (95 → 90 → 85 °C), TIMER, knob 64 clicks clockwise.
+"""
+
+HOB_ACTIONS = ["press_timer", "turn_knob_cw", "turn_knob_ccw", "press_start"]
+
+
+def test_spans_of_a_timer_each_with_what_a_click_adds_are_its_pieces() -> None:
+    spec = read_manual(HOB, HOB_ACTIONS).model.variables["timer"].model_dump(mode="json")
+    assert spec["type"] == "time", spec
+    assert spec["ranges"] == [["00:00:00", "01:00:00", 60], ["01:00:00", "04:00:00", 900]], spec
+
+
+# a cooker's delay, set with + and −, its steps told in the items under that step
+COOKER = """BUTTONS
+DELAY      Delays the end of cooking.
++ / –      Change the value shown.
+START      Starts cooking.
+
+DELAYED START
+1. Press DELAY. 0:00 flashes.
+2. Press + to lengthen the delay, – to shorten it.
+   - from 0:00 to 2:00 each press changes the delay by 15 minutes;
+   - from 2:00 to 12:00 each press changes it by one hour.
+3. Press START.
+"""
+
+
+def test_steps_told_in_the_items_under_a_press_of_the_stepping_keys_are_the_settings() -> None:
+    actions = ["press_delay", "press_plus", "press_minus", "press_start"]
+    spec = read_manual(COOKER, actions).model.variables["delay"].model_dump(mode="json")
+    assert spec["ranges"] == [["00:00:00", "02:00:00", 900], ["02:00:00", "12:00:00", 3600]], spec
