@@ -16,11 +16,11 @@ from apbot.model.values import parse_hms
 from apbot.read.build import Builder
 from apbot.read.cases_cells import (
     _STEP_HEAD_RE,
-    DEFAULT_WORDS,
     _cases,
     _defaults,
     _row_steps,
     chain_values,
+    defaults_head,
 )
 from apbot.read.cases_lists import as_choices, listed_cases, listed_column
 from apbot.read.cases_marks import mark_cases
@@ -87,7 +87,8 @@ def apply_cases(b: Builder) -> None:
             continue
         header = _named_ranges(header, rows)
         for column in range(1, len(header)):
-            if set(words(header[column])) & (DEFAULT_WORDS | ADVICE_WORDS):
+            cells = [r.cells[column] if column < len(r.cells) else "" for r in rows]
+            if defaults_head(header[column], cells) or set(words(header[column])) & ADVICE_WORDS:
                 continue
             if _STEP_HEAD_RE.search(header[column]):
                 continue  # "Time step": each row's step (read by _row_steps), not its values

@@ -20,6 +20,27 @@ from apbot.read.values import find_ranges, number, unit_name
 DEFAULT_WORDS = {"default", "standard", "preset", "initial", "factory"}
 
 
+_BRACKETED = re.compile(r"\[[^\]]*\]|\([^)]*\)")
+
+
+def defaults_head(head: str, cells: list[str]) -> bool:
+    """A column of defaults ("Default", "Standard time", "max (preset)" over "1400 (1200)"),
+    not a column of a setting's values whose default is marked in its cells and named in
+    brackets in its head ("Temperatures [default]" over "20 30 [40] 60", "Cooking time
+    [standard]" over "0:20 – 1:30 [0:40]"): there the cells, the marked part aside, list
+    several values or a range."""
+    if not set(words(head)) & DEFAULT_WORDS:
+        return False
+    if set(words(_BRACKETED.sub(" ", head))) & DEFAULT_WORDS:
+        return True
+    filled = [c for c in cells if re.search(r"[^\W_]", c)]
+    several = sum(
+        bool(find_ranges(c)) or len(re.split(r"\s*,\s*|\s+", _BRACKETED.sub(" ", c).strip())) >= 2
+        for c in filled
+    )
+    return several * 2 <= len(filled)
+
+
 def _cases(
     spec: dict[str, Any], rows: list[Unit], column: int, pvalues: list[str]
 ) -> dict[str, Any]:
@@ -207,6 +228,10 @@ def _time_list(cell: str) -> list[int] | None:
     return found if len(found) >= 3 and rising else None
 
 
+def _cell(row: Unit, column: int) -> str:
+    return row.cells[column] if column < len(row.cells) else ""
+
+
 def _defaults(
     spec: dict[str, Any],
     cases: dict[str, Any],
@@ -217,7 +242,7 @@ def _defaults(
 ) -> None:
     """A "default"/"standard" column next to the setting's column gives each case's initial."""
     for c in range(1, len(header)):
-        if c == column or not set(words(header[c])) & DEFAULT_WORDS:
+        if c == column or not defaults_head(header[c], [_cell(r, c) for r in rows]):
             continue
         for row in rows:
             if c >= len(row.cells):

@@ -1,4 +1,5 @@
-"""Programme charts whose cells list a setting's choices, the default marked with a symbol.
+"""Programme charts whose cells list a setting's choices, the default marked with a symbol
+or set in square brackets.
 
 Split out of ``cases.py``: a chart row such as "Normal   Tap Cold, Cold, Warm ▣, Hot" gives the
 choices the programme offers and marks its default; the legend ("▣ = default") only names the
@@ -22,12 +23,13 @@ def _items(cell: str) -> list[tuple[str, bool]]:
     """The choices of a cell, each with whether a symbol marks it."""
     out: list[tuple[str, bool]] = []
     for raw in re.split(r"\s*,\s*", re.sub(r"\(.*?\)", "", cell)):
-        mark = _MARK_RE.search(raw)
-        item = raw[: mark.start()] if mark else raw
+        bracketed = re.fullmatch(r"\s*\[([^\]]+)\]\s*[.;]?\s*", raw)  # "low, [medium], high"
+        mark = None if bracketed else _MARK_RE.search(raw)
+        item = bracketed.group(1) if bracketed else raw[: mark.start()] if mark else raw
         item = re.sub(r"\s+", " ", item.strip().rstrip(".;:!?").strip().lower())
         item = re.sub(r"\s+only$", "", item)
         if item and re.search(r"[a-z]", item) and len(item) <= 24:
-            out.append((item, bool(mark)))
+            out.append((item, bool(mark or bracketed)))
     return out
 
 

@@ -27,9 +27,11 @@ from apbot.read.evidence_lists import ListReader
 from apbot.read.evidence_whose import (
     _KEY_HEAD,
     _fitting_step,
+    _foreign_units,
     _lead,
     _named_only,
     _presses_another,
+    _with_items,
     _without_own_name,
 )
 from apbot.read.labels import words
@@ -117,7 +119,8 @@ class EvidenceReader(ListReader, AnywhereReader):
         for i in self.context(tokens):
             text = units[i].text
             unit = units[i]
-            if i in elsewhere and i not in mentions and not unit.cells:
+            pieced = len(find_stepped_pieces(_with_items(units, i))) >= 2  # its steps, item by item
+            if i in elsewhere and i not in mentions and not unit.cells and not pieced:
                 continue  # a sentence about another key says nothing about this one
             if i not in mentions and other_model(units, i):
                 continue  # "Model XY-300 only: …": another model's keys and their values
@@ -141,7 +144,7 @@ class EvidenceReader(ListReader, AnywhereReader):
             theirs = bool(unit.cells) and _cell_key(_lead(unit.cells)) in other_keys
             lists = [] if quiet or theirs else self._lists(i, i in mentions, tokens)
             for items, prio in lists:
-                if _keyish(items, others, own):
+                if _keyish(items, others, own) or _foreign_units(items, tokens):
                     continue  # a list of keys ("DELAY, then + / −"), not of values
                 if len(items) >= 3 and any(v.upper().strip(" .") in own for v in items):
                     continue  # "NORMAL → CONT. → FAN" near FAN: a list with a mode named FAN
@@ -176,7 +179,7 @@ class EvidenceReader(ListReader, AnywhereReader):
                     ranges = [Range(ranges[0].low, ranges[0].high, ranges[0].unit, row_step)]
             if unit.cells:  # "| 1 – 2 |" then "| 3 – 4 |" … "| 9 – 10 |": groups of one setting
                 ranges = [_rows_span(units, i, r) for r in ranges]
-            pieces = find_stepped_pieces(text) if ranges and not ev.ranges else []
+            pieces = find_stepped_pieces(_with_items(units, i)) if not ev.ranges else []
             arrows = find_arrow_pieces(text)  # "1 h → … → 12 h one hour per press 12 h → …"
             if arrows and _fits("s", tokens) and _covers(arrows, ev.ranges):
                 pieces, ev.ranges = arrows, []

@@ -8,7 +8,8 @@ from __future__ import annotations
 import re
 
 from apbot.read.shapes import _fits
-from apbot.read.values import find_step
+from apbot.read.text import Unit
+from apbot.read.values import find_step, unit_name
 
 
 def _named_only(item: str, text: str) -> bool:
@@ -71,3 +72,28 @@ def _without_own_name(items: list[str], own: set[str]) -> list[str]:
         if all(rest):
             return [m.group(1) for m in rest if m]
     return items
+
+
+_UNIT_ITEM = re.compile(r"\s*\d+(?:[.,]\d+)?\s*(°\s?[cf]|%|mins?|h|s|w|g|kg|ml)\s*", re.IGNORECASE)
+
+
+def _foreign_units(items: list[str], tokens: list[str]) -> bool:
+    """A list whose items carry a unit this control's setting cannot have ("95 → 90 → 85 °C"
+    in a sentence that also presses TIMER): another setting's values, as a range in that
+    unit would be."""
+    for item in items:
+        m = _UNIT_ITEM.fullmatch(item)
+        if m and not _fits(unit_name(m.group(1)), tokens):
+            return True
+    return False
+
+
+def _with_items(units: list[Unit], i: int) -> str:
+    """A sentence with the list items right under it ("Press + … it." then "- from 0:00 to
+    1:00 each press …", "- from 1:00 to 24:00 …"): a step told in pieces, an item a piece."""
+    texts = [units[i].text]
+    for unit in units[i + 1 : i + 5]:
+        if not unit.bullet or unit.step is not None or unit.cells:
+            break
+        texts.append(unit.text)
+    return " ".join(texts)

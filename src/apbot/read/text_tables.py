@@ -82,10 +82,23 @@ def _space_tables(
         more: dict[int, list[tuple[int, str]]] = {}  # row -> wrapped lines' cells, by position
         indent = len(lines[i]) - len(lines[i].lstrip())
         j = i + 1
-        while j < len(lines) and (lines[j].strip() or j in breaks):
-            if j in breaks:
-                k = next((k for k in range(j, len(lines)) if k not in breaks), len(lines))
-                if k < len(lines) and "|" not in lines[k] and _lines_up(lines[i], lines[k]):
+        while j < len(lines):
+            if j in breaks or not lines[j].strip():
+                k = next(
+                    (k for k in range(j, len(lines)) if not _passed(lines, k, breaks)), len(lines)
+                )
+                # a blank line, then a drawn line and page furniture: only a full row goes on
+                paged = j in breaks or (
+                    any(m in breaks for m in range(j, k))
+                    and k < len(lines)
+                    and len(_cells(lines[k])) >= max(3, len(head) - 1)
+                )
+                if (
+                    paged
+                    and k < len(lines)
+                    and "|" not in lines[k]
+                    and _lines_up(lines[i], lines[k])
+                ):
                     j = k  # the table goes on over the page break
                     continue
                 break
@@ -118,6 +131,12 @@ def _space_tables(
         else:
             i += 1
     return out
+
+
+def _passed(lines: list[str], k: int, breaks: set[int]) -> bool:
+    """A line of a page break a table goes on over: one the page layout passes over, or a
+    blank or drawn line ("-------" under the page's footer) that follows them."""
+    return k in breaks or not re.search(r"[^\W_]", lines[k])
 
 
 def _two_column_head(cells: tuple[str, ...]) -> bool:

@@ -39,10 +39,37 @@ _STEPPED_AMOUNT_PIECE_RE = re.compile(  # "1 – 12 h  1 h": a range in a unit, 
 
 def find_stepped_pieces(text: str) -> list[Range]:
     """Two or more ranges, each followed by its step, the next starting where the last ends:
-    clock times in seconds ("Range Step 0:30 - 12:00 30 minutes 12:00 - 24:00 1 hour") or
-    amounts in their unit ("Range Step 1 – 12 h 1 h 12 – 24 h 2 h"); else []."""
-    pieces = _stepped_clock_pieces(text)
+    clock times in seconds ("Range Step 0:30 - 12:00 30 minutes 12:00 - 24:00 1 hour"), each
+    told as the span a press covers ("from 0:00 to 1:00 each click is one minute; from 1:00
+    to 3:00 each click is ten minutes") or amounts in their unit ("Range Step 1 – 12 h 1 h 12
+    – 24 h 2 h"); else []."""
+    pieces = _stepped_clock_pieces(text) or _each_press_pieces(text)
     return pieces or _stepped_amount_pieces(text)
+
+
+_EACH_PRESS_PIECE_RE = re.compile(  # "from 1:00 to 3:00 each click is ten minutes"
+    rf"\b(?:from|between)\s+({_TIME}){_DASH}({_TIME})\b[^.;:]{{0,12}}?\beach\s+"
+    r"(?:press|touch|click|tap|turn|step)\w*\b[^.;:\d]{0,40}?\b(?:is|by|adds|of)\s+"
+    r"(\d+(?:[.,]\d+)?|one|an?|two|five|ten|fifteen|twenty|thirty|half\s+an?)\s*"
+    r"(minutes?|mins?|hours?|hrs?|h)\b",
+    re.IGNORECASE,
+)
+_STEP_WORDS = {"one": 1.0, "a": 1.0, "an": 1.0, "two": 2.0, "five": 5.0, "ten": 10.0}
+_STEP_WORDS |= {"fifteen": 15.0, "twenty": 20.0, "thirty": 30.0}
+
+
+def _each_press_pieces(text: str) -> list[Range]:
+    """Spans of a clock time, each with what one press adds inside it, the next starting
+    where the last ends: the steps of a timer told in list items, one span an item."""
+    pieces: list[Range] = []
+    for m in _EACH_PRESS_PIECE_RE.finditer(text):
+        low, high = _hmm(m.group(1)), _hmm(m.group(2))
+        word = re.sub(r"\s+", " ", m.group(3).lower())
+        amount = 0.5 if word.startswith("half") else _STEP_WORDS.get(word) or number(word)
+        if amount is None or not low < high or (pieces and pieces[-1].high != low):
+            break
+        pieces.append(Range(low, high, "s", seconds(amount, unit_name(m.group(4)))))
+    return pieces if len(pieces) >= 2 else []
 
 
 def _stepped_clock_pieces(text: str) -> list[Range]:
