@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 
 import apbot
-from apbot.bench import provenance, runner
+from apbot.bench import provenance, runner, task_run
 from apbot.bench.provenance import code_version, describe_code, same_code, suite_digest
 from apbot.bench.runner import BenchError, BenchOptions, cached_suite, run_benchmark
 from apbot.bench.suite import Suite, bundled_suite_dir
@@ -136,7 +136,7 @@ def test_another_state_of_the_suite_does_not_resume_the_directory(
     assert first.ran == 1
     manual = suite / "kettle_1" / "manual.md"
     manual.write_text(manual.read_text() + "\nDescale it monthly.\n")
-    monkeypatch.setattr(runner, "_SUITES", {})  # as a new process would: load it again
+    monkeypatch.setattr(task_run, "_SUITES", {})  # as a new process would: load it again
     with pytest.raises(BenchError, match=r"its suite digest is sha256:\w+… and the suite's is now"):
         run_benchmark(options, progress=False)
     assert run_benchmark(dataclasses.replace(options, rerun=True), progress=False).ran == 1

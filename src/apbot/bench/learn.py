@@ -18,7 +18,7 @@ from collections.abc import Iterator
 
 from apbot.bench.memory import keeps_belief
 from apbot.bench.records import TaskRecord
-from apbot.bench.runner import RunSettings, WorkItem, run_item
+from apbot.bench.task_run import RunSettings, WorkItem, run_item
 from apbot.model.schema import ApplianceModel
 
 

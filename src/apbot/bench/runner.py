@@ -13,39 +13,35 @@ than shipping it; only the main process writes files.
 from __future__ import annotations
 
 import os
-import time
-from collections import deque
-from collections.abc import Callable, Iterable, Iterator
-from concurrent.futures import FIRST_COMPLETED, Future, wait
-from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
-from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
 import apbot.vision.llm_policy  # noqa: F401  registers llm-policy-image (base deps only)
-from apbot.agent.environment import FeedbackMode, SimulatorEnvironment
-from apbot.agent.episode import MAX_REASONING_STEPS, Episode, TaskContext, TraceEvent
-from apbot.agent.registry import default_methods, get_method, methods
-from apbot.bench.beliefs import BeliefError, BeliefSpec, belief_model, parse_belief
-from apbot.bench.goals import GoalMode, MethodGoal, method_goal, parse_goal_mode
-from apbot.bench.memory import fits_worse
+from apbot.agent.environment import FeedbackMode
+from apbot.agent.registry import default_methods, methods
+from apbot.bench.beliefs import BeliefError, parse_belief
+from apbot.bench.execute import LLM_BUDGET as LLM_BUDGET
+from apbot.bench.execute import Batch as Batch
+from apbot.bench.execute import _execute, _work_batches
+from apbot.bench.goals import parse_goal_mode
 from apbot.bench.metrics import summarise
 from apbot.bench.progress import progress as show_progress
 from apbot.bench.provenance import code_version, suite_digest
-from apbot.bench.reading import BeliefFacts, belief_differences, model_digest
-from apbot.bench.records import TaskRecord, record_key, spl
+from apbot.bench.records import TaskRecord, record_key
 from apbot.bench.results import RESULTS_FILE, ResultStore, describe_recovery
 from apbot.bench.rundir import BenchError, exclusive, prepare, run_directory, write_json
-from apbot.bench.stopping import WORKER_DIED, Stop, handling_signals
-from apbot.bench.suite import Suite, SuiteAppliance, Task, load_suite
-from apbot.bench.workers import worker_pool
-from apbot.llm.limits import BudgetSpent
-from apbot.model.goal import parse_goal
-from apbot.model.schema import ApplianceModel
+from apbot.bench.stopping import Stop, handling_signals
+from apbot.bench.suite import Suite
+from apbot.bench.task_run import RunSettings, WorkItem, cached_suite
+from apbot.bench.task_run import _find as _find
+from apbot.bench.task_run import image_environment as image_environment
+from apbot.bench.task_run import run_item as run_item
+from apbot.bench.task_run import run_one as run_one
+from apbot.bench.task_run import run_task as run_task
+from apbot.bench.task_run import run_task_learning as run_task_learning
 
 SUMMARY_FILE = "summary.json"
-LLM_BUDGET = "LLM budget"
 
 
 def _default_methods() -> list[str]:
@@ -89,308 +85,6 @@ class BenchOutcome:
     stopped_by: str = ""
     exit_code: int = 0
     notes: list[str] = field(default_factory=list)  # warnings given during the run
-
-
-@dataclass(frozen=True)
-class WorkItem:
-    method: str
-    appliance: str
-    task: str
-
-
-@dataclass(frozen=True)
-class RunSettings:
-    """What every task of a run shares (pinned in ``run.json``)."""
-
-    belief: str = "read"
-    seed: int = 0
-    suite: str = "bundled"
-    feedback: FeedbackMode = "display"
-    goal: GoalMode = "read"
-    learn: bool = False
-
-
-# --- one task (runs in the workers) -----------------------------------------------------------
-
-_SUITES: dict[str, Suite] = {}
-
-
-def cached_suite(name: str) -> Suite:
-    """The suite, loaded once per process (forked workers inherit the main process's copy)."""
-    if name not in _SUITES:
-        _SUITES[name] = load_suite(name)
-    return _SUITES[name]
-
-
-def _find(suite: str, appliance_id: str, task_id: str) -> tuple[SuiteAppliance, Task]:
-    appliance = cached_suite(suite).get(appliance_id)
-    for task in appliance.tasks:
-        if task.id == task_id:
-            return appliance, task
-    raise KeyError(f"appliance {appliance_id!r} has no task {task_id!r}")
-
-
-@lru_cache(maxsize=256)
-def _belief(
-    suite: str, appliance_id: str, spec: BeliefSpec, seed: int
-) -> tuple[ApplianceModel, tuple[str, ...]]:
-    """The belief model for an appliance (models are frozen, so one copy serves every task)."""
-    model, faults = belief_model(cached_suite(suite).get(appliance_id), spec, seed)
-    return model, tuple(faults)
-
-
-@lru_cache(maxsize=256)
-def _about_belief(suite: str, appliance_id: str, spec: BeliefSpec, seed: int) -> BeliefFacts:
-    """The belief's hash and, for a read one, its differences from the truth (for reports)."""
-    model, _faults = _belief(suite, appliance_id, spec, seed)
-    truth = cached_suite(suite).get(appliance_id).model
-    differences = belief_differences(model, truth) if spec.kind == "read" else []
-    return BeliefFacts(model_digest(model), tuple(differences))
-
-
-def _optimal(appliance: SuiteAppliance, task: Task, goal: dict[str, Any]) -> int:
-    """The task's stored optimum, or the planner's on the ground truth when it is missing."""
-    if task.optimal_steps is not None:
-        return task.optimal_steps
-    from apbot.plan.plan import plan
-
-    return len(plan(appliance.model, None, goal))
-
-
-def _describe(exc: BaseException) -> str:
-    return f"{type(exc).__name__}: {exc}"
-
-
-def run_one(
-    method: str,
-    belief: str,
-    seed: int,
-    appliance_id: str,
-    task_id: str,
-    suite: str,
-    feedback: FeedbackMode = "display",
-    goal: GoalMode = "given",
-) -> TaskRecord:
-    """Run one method on one task and judge the result on the true simulator.
-
-    Success means the task's goal (normalised on the true model) holds in the environment's
-    final state and the method stayed within the reasoning-step limit; what the method claims
-    is recorded but not trusted. An exception in the method gives a failed record.
-    """
-    settings = RunSettings(belief, seed, suite, feedback, goal)
-    return run_item(WorkItem(method, appliance_id, task_id), settings)[0]
-
-
-def run_item(
-    item: WorkItem, settings: RunSettings, learnt: ApplianceModel | None = None, index: int = 0
-) -> tuple[TaskRecord, ApplianceModel | None]:
-    """:func:`run_one` on a work item; with ``learnt``, the method starts from that belief
-    (``index`` tasks before this one left it). Also returns the belief the method ended with."""
-    appliance, task = _find(settings.suite, item.appliance, item.task)
-    spec = parse_belief(settings.belief)
-    return run_task_learning(
-        appliance,
-        task,
-        item.method,
-        settings.belief,
-        settings.seed,
-        belief_of=lambda s: _belief(settings.suite, appliance.id, s, settings.seed),
-        feedback=settings.feedback,
-        goal_mode=settings.goal,
-        facts=lambda: _about_belief(settings.suite, appliance.id, spec, settings.seed),
-        learnt=learnt,
-        index=index,
-    )
-
-
-def run_task(
-    appliance: SuiteAppliance,
-    task: Task,
-    method: str,
-    belief: str = "true",
-    seed: int = 0,
-    observer: Callable[[TraceEvent], None] | None = None,
-    belief_of: Callable[[BeliefSpec], tuple[ApplianceModel, Any]] | None = None,
-    feedback: FeedbackMode = "display",
-    goal: GoalMode = "given",
-) -> TaskRecord:
-    """:func:`run_one` on objects: also for a task that is not in a suite (``apbot run``).
-
-    ``observer`` sees every trace event as it happens; ``belief_of`` builds (or fetches a
-    cached) belief model for the parsed belief spec; ``goal`` says whether the method gets
-    the task's goal or reads it from the instruction. Raises :class:`ValueError` before
-    anything runs when the stored goal is not a reachable state of the true appliance.
-    """
-    return run_task_learning(
-        appliance, task, method, belief, seed, observer, belief_of, feedback, goal
-    )[0]
-
-
-def run_task_learning(
-    appliance: SuiteAppliance,
-    task: Task,
-    method: str,
-    belief: str = "true",
-    seed: int = 0,
-    observer: Callable[[TraceEvent], None] | None = None,
-    belief_of: Callable[[BeliefSpec], tuple[ApplianceModel, Any]] | None = None,
-    feedback: FeedbackMode = "display",
-    goal_mode: GoalMode = "given",
-    facts: Callable[[], BeliefFacts] | None = None,
-    learnt: ApplianceModel | None = None,
-    index: int = 0,
-) -> tuple[TaskRecord, ApplianceModel | None]:
-    """:func:`run_task`, optionally from a learnt belief, returning the belief it ended with."""
-    from apbot.model.goal import GoalError
-    from apbot.plan.plan import Unreachable
-
-    try:
-        goal = parse_goal(appliance.model, task.goal)
-        optimal = _optimal(appliance, task, goal)
-    except (GoalError, Unreachable) as exc:
-        raise ValueError(
-            f"{appliance.id}/{task.id}: the goal is not reachable on the appliance: {exc}"
-        ) from None
-    started = time.perf_counter()
-    spec = parse_belief(belief)
-    chosen = get_method(method)
-    env: Any = (
-        image_environment(appliance, appliance.model.actions, seed)
-        if feedback == "image"
-        else SimulatorEnvironment(appliance.model, feedback)
-    )
-    episode, error = Episode(), ""
-    faults: tuple[str, ...] | list[str] = ()
-    context: TaskContext | None = None
-    asked = MethodGoal(dict(task.goal))
-    digest = ""
-    about: BeliefFacts | None = None
-    try:
-        if chosen.uses_truth:
-            model, faults = appliance.model, ()
-        elif belief_of is not None:
-            model, faults = belief_of(spec)
-        else:
-            model, faults = belief_model(appliance, str(spec), seed)
-        if not chosen.uses_truth:  # the oracle plans on the truth, to the stored goal
-            asked = _asked(goal_mode, model, appliance, task)
-            if learnt is not None:  # the learnt belief, unless it fits the request worse
-                learnt_asked = _asked(goal_mode, learnt, appliance, task)
-                if fits_worse(learnt, learnt_asked, model, asked):
-                    learnt = None
-                else:
-                    model, faults, asked = learnt, (), learnt_asked
-        about = facts() if facts is not None and learnt is None and not chosen.uses_truth else None
-        digest = about.digest if about is not None else model_digest(model)
-    except BudgetSpent:
-        raise
-    except Exception as exc:
-        error = f"error: building the belief: {_describe(exc)}"
-    else:
-        if feedback == "image" and list(model.actions) != list(appliance.model.actions):
-            env = image_environment(appliance, model.actions, seed)  # ground the belief's names
-        if asked.goal is None:
-            episode = Episode(failure=asked.error)
-        else:
-            context = TaskContext(
-                appliance.id,
-                appliance.category,
-                task.id,
-                task.instruction,
-                asked.goal,
-                model,
-                appliance.manual,
-                tuple(env.actions),
-                observer=observer,
-            )
-            try:
-                result = chosen.run(context, env)
-                if not isinstance(result, Episode):
-                    raise TypeError(f"method returned {type(result).__name__}, not an Episode")
-                episode = result
-            except BudgetSpent:
-                raise  # not the task's failure: the run stops here and this task runs again later
-            except Exception as exc:
-                error = f"error: {_describe(exc)}"
-    limit = context.max_reasoning_steps if context is not None else MAX_REASONING_STEPS
-    final = {name: env.simulator.value(name) for name in goal}
-    reached = all(final[name] == value for name, value in goal.items())
-    within = episode.reasoning_steps <= limit
-    success = not error and reached and within
-    failure = "" if success else error or _failure(episode, goal, final, reached, limit)
-    record = TaskRecord(
-        key=record_key(method, str(spec), appliance.id, task.id),
-        method=method,
-        belief=str(spec),
-        feedback=feedback,
-        appliance=appliance.id,
-        category=appliance.category,
-        task=task.id,
-        instruction=task.instruction,
-        goal=dict(task.goal),
-        goal_variables=len(task.goal),
-        success=success,
-        claimed_success=episode.claimed_success,
-        reasoning_steps=episode.reasoning_steps,
-        execution_steps=env.steps,
-        optimal_steps=optimal,
-        spl=spl(success, optimal, env.steps),
-        failure=failure,
-        repairs=list(episode.repairs),
-        faults=list(faults),
-        final_values=final,
-        trace=[event.to_dict() for event in episode.trace],
-        timings={"seconds": round(time.perf_counter() - started, 6)},
-        llm_usage={
-            k: episode.llm_usage.get(k, 0) + asked.usage.get(k, 0)
-            for k in {**episode.llm_usage, **asked.usage}
-        },
-        goal_mode=goal_mode if not chosen.uses_truth else "given",
-        parsed_goal=asked.parsed,
-        goal_exact=asked.exact,
-        goal_outside=list(asked.outside),
-        belief_hash=digest,
-        belief_diff=list(about.differences) if about is not None else [],
-        learnt_from=index if learnt is not None else 0,
-    )
-    return record, episode.belief
-
-
-def _asked(
-    mode: GoalMode, model: ApplianceModel, appliance: SuiteAppliance, task: Task
-) -> MethodGoal:
-    """The goal a method working from ``model`` gets for ``task``."""
-    return method_goal(
-        mode, model, task.instruction, appliance.manual, dict(task.goal), appliance.model
-    )
-
-
-def image_environment(appliance: SuiteAppliance, actions: Iterable[str], seed: int) -> Any:
-    """Image mode: the appliance as a rendered panel, grounded once per appliance and process
-    (``apbot.vision``; needs the ``vision`` extra)."""
-    from apbot.vision.mode import image_environment as build
-
-    return build(appliance, list(actions), seed)
-
-
-def _failure(
-    episode: Episode, goal: dict[str, Any], final: dict[str, Any], reached: bool, limit: int
-) -> str:
-    """One line saying why a run failed, the method's own reason first."""
-    parts = []
-    if episode.reasoning_steps > limit:
-        parts.append(f"over the reasoning-step limit ({episode.reasoning_steps} > {limit})")
-    if episode.failure:
-        parts.append(episode.failure)
-    if not reached:
-        wrong = ", ".join(
-            f"{name}={final[name]!r} (want {value!r})"
-            for name, value in goal.items()
-            if final[name] != value
-        )
-        claim = "claimed success but " if episode.claimed_success and not episode.failure else ""
-        parts.append(f"{claim}goal not met: {wrong}")
-    return "; ".join(parts)
 
 
 # --- selecting the work -----------------------------------------------------------------------
@@ -453,12 +147,6 @@ def select_work(options: BenchOptions, suite: Suite) -> list[WorkItem]:
 
 
 # --- the run ----------------------------------------------------------------------------------
-
-
-def _batches(items: list[WorkItem], workers: int) -> list[list[WorkItem]]:
-    """Small enough to balance and to stop quickly; big enough that shipping is cheap."""
-    size = max(1, min(16, len(items) // (workers * 8)))
-    return [items[i : i + size] for i in range(0, len(items), size)]
 
 
 def run_benchmark(options: BenchOptions, progress: bool = True) -> BenchOutcome:
@@ -565,95 +253,3 @@ def _run_benchmark(options: BenchOptions, progress: bool) -> BenchOutcome:
             exit_code=stop.exit_code if stop.requested else 0,
             notes=notes,
         )
-
-
-Batch = tuple[list[WorkItem], frozenset[str] | None]
-"""Items run in one go, and (learning) the task ids whose records are wanted (None: all)."""
-
-
-def _work_batches(
-    pending: list[WorkItem], work: list[WorkItem], settings: RunSettings, workers: int
-) -> list[Batch]:
-    """Small batches of pending items; when learning, one batch per (method, appliance) chain
-    holding every selected task up to the last pending one (earlier tasks are run again, not
-    recorded again: the belief a task starts from is the one the tasks before it left)."""
-    if not settings.learn:
-        return [(items, None) for items in _batches(pending, workers)]
-    wanted: dict[tuple[str, str], set[str]] = {}
-    for item in pending:
-        wanted.setdefault((item.method, item.appliance), set()).add(item.task)
-    batches: list[Batch] = []
-    for (method, appliance), tasks in wanted.items():
-        chain = [w for w in work if (w.method, w.appliance) == (method, appliance)]
-        last = max(i for i, w in enumerate(chain) if w.task in tasks)
-        batches.append((chain[: last + 1], frozenset(tasks)))
-    return batches
-
-
-def _run_batch(batch: Batch, settings: RunSettings) -> list[TaskRecord]:
-    items, wanted = batch
-    if settings.learn:
-        from apbot.bench.learn import run_chain
-
-        return list(run_chain(items, settings, wanted))
-    return [run_item(item, settings)[0] for item in items]
-
-
-def _execute(
-    batches: list[Batch], settings: RunSettings, workers: int, stop: Stop
-) -> Iterator[TaskRecord]:
-    """Yield records as tasks finish, in this process or a pool, until done or stopped.
-
-    Once a stop is requested, batches no worker has started are cancelled and the running
-    ones finish; a second signal abandons those too. A worker that dies (killed, out of
-    memory) stops the run the same way, keeping what finished.
-    """
-    if workers == 1 or sum(len(items) for items, _ in batches) <= 1:
-        try:
-            for items, wanted in batches:
-                if settings.learn:
-                    from apbot.bench.learn import run_chain
-
-                    for record in run_chain(items, settings, wanted):
-                        yield record
-                        if stop.requested:
-                            return
-                    continue
-                for item in items:
-                    if stop.requested:
-                        return
-                    yield run_item(item, settings)[0]
-        except KeyboardInterrupt:
-            stop.request("SIGINT")
-        except BudgetSpent as exc:
-            stop.request(f"{LLM_BUDGET}: {exc}")
-        return
-    queue = deque(batches)
-    window = workers * 2
-    pool = worker_pool(min(workers, len(queue)))
-    running: set[Future[list[TaskRecord]]] = set()
-    try:
-        while queue or running:
-            while queue and len(running) < window and not stop.requested:
-                running.add(pool.submit(_run_batch, queue.popleft(), settings))
-            if stop.requested:
-                running = {future for future in running if not future.cancel()}
-            if not running or stop.hard:
-                break
-            finished, _ = wait(running, timeout=0.25, return_when=FIRST_COMPLETED)
-            for future in finished:
-                running.discard(future)
-                try:
-                    records = future.result()
-                except BrokenProcessPool:  # the others fail alike, soon: keep what finished
-                    stop.request(WORKER_DIED)
-                    continue
-                except BudgetSpent as exc:  # the batch's finished tasks run again next time
-                    stop.request(f"{LLM_BUDGET}: {exc}")
-                    continue
-                yield from records
-    finally:
-        if running:  # abandoned after a second signal (or an error): end the workers now
-            for process in list(getattr(pool, "_processes", {}).values()):
-                process.kill()
-        pool.shutdown(wait=True, cancel_futures=True)

@@ -34,104 +34,56 @@ Guards
 
 from __future__ import annotations
 
-from collections.abc import Iterable
-from dataclasses import dataclass
-from typing import Any, NamedTuple
+from typing import Any
 
 from apbot.model.display import display_value
-from apbot.model.domain import Domain, build_domain
-from apbot.model.effects import (
-    condition_indices,
-    constant_table,
-    default_effect,
-    effect_table,
-    parse_entry,
-    type_digit,
-)
-from apbot.model.schema import (
-    ApplianceModel,
-    Conditional,
-    DiscreteVariable,
-    GoTo,
-    NumericVariable,
-    TimeVariable,
-)
-from apbot.model.validate import CYCLE_UNITS
+from apbot.model.domain import Domain
+from apbot.model.effects import parse_entry, type_digit
+from apbot.model.schema import ApplianceModel, DiscreteVariable
 from apbot.model.values import format_hms, tidy_number
+from apbot.sim.compiler import (
+    compile_anywhere,
+    compile_cycles,
+    compile_guards,
+    compile_steps,
+    compile_targets,
+    compile_variable,
+    first_steps,
+)
+from apbot.sim.parts import (
+    CLEAR,
+    COND,
+    DIGIT,
+    NONE,
+    NOT_HERE,
+    TABLE,
+    TOO_SHORT,
+    CycleInfo,
+    GuardInfo,
+    State,
+    StepInfo,
+    VarInfo,
+    leaves,
+)
+from apbot.sim.state_check import check_state
 
-NONE, TABLE, DIGIT, CLEAR, COND = 0, 1, 2, 3, 4
-
-# rejection reasons (negative codes; a guard's refusal is its index >= 0)
-NOT_HERE = -1
-TOO_SHORT = -2
-
-
-class State(NamedTuple):
-    """An appliance state: value indices, feature-pointer step id, keypad buffer, and the
-    value each ``remember`` setting keeps for each programme (see ``memory_slots``). Hashable."""
-
-    values: tuple[int, ...]
-    step: int
-    buffer: str
-    memory: tuple[int, ...] = ()
-
-
-@dataclass(frozen=True)
-class VarInfo:
-    """A variable with its domains: one, or one per value of the parent (``None`` = absent)."""
-
-    name: str
-    spec: DiscreteVariable | NumericVariable | TimeVariable
-    domains: tuple[Domain | None, ...]
-    parent: int  # index of the variable selecting the case, or -1
-
-    def domain(self, values: tuple[int, ...] | list[int]) -> Domain | None:
-        """The domain in force for these values."""
-        return self.domains[values[self.parent]] if self.parent >= 0 else self.domains[0]
-
-    def case(self, values: tuple[int, ...] | list[int]) -> int:
-        return values[self.parent] if self.parent >= 0 else 0
-
-
-@dataclass(frozen=True)
-class StepInfo:
-    """A compiled feature step."""
-
-    feature: str
-    index: int
-    variable: int  # -1 when the step adjusts no variable
-    actions: frozenset[int]
-    effects: dict[int, tuple[Any, ...]]  # action -> (kind, per-case tables | digit)
-    side: tuple[tuple[int, tuple[tuple[int, ...] | None, ...]], ...]  # (var, per-case tables)
-    next_step: int  # the next step of the same feature, or -1
-    show_on_entry: bool = False  # the entering action only shows the value
-    optional: bool = False  # the step may be skipped (``Step.optional``)
-    timeout: float | None = None  # seconds without a key that return to no feature
-    leave: bool = False  # an anywhere step that returns the pointer to no feature
-    blank_clears: bool = False  # a non-digit key of this keypad step empties the buffer
-    forgets: frozenset[int] = frozenset()  # variables the step's side effects ``reset``
-
-
-@dataclass(frozen=True)
-class CycleInfo:
-    """A compiled cycle: while ``conditions`` hold for ``lasts`` × ``scale`` seconds, then the
-    side effects ``side`` (as a step's) apply."""
-
-    name: str
-    conditions: tuple[tuple[int, frozenset[int]], ...]
-    lasts: int
-    scale: float
-    side: tuple[tuple[int, tuple[tuple[int, ...] | None, ...]], ...]
-    forgets: frozenset[int]
-
-
-@dataclass(frozen=True)
-class GuardInfo:
-    conditions: tuple[tuple[int, frozenset[int]], ...]
-    allowed: frozenset[int]
-    display: str
-    name: str
-    hide: bool = False
+__all__ = [
+    "CLEAR",
+    "COND",
+    "DIGIT",
+    "NONE",
+    "NOT_HERE",
+    "TABLE",
+    "TOO_SHORT",
+    "CompiledModel",
+    "CycleInfo",
+    "GuardInfo",
+    "State",
+    "StepInfo",
+    "VarInfo",
+    "compiled_model",
+    "leaves",
+]
 
 
 class CompiledModel:
@@ -143,14 +95,14 @@ class CompiledModel:
         self.var_index = {name: i for i, name in enumerate(names)}
         self.action_names = list(model.actions)
         self.action_index = {name: i for i, name in enumerate(self.action_names)}
-        self.vars = tuple(self._compile_variable(name) for name in names)
+        self.vars = tuple(compile_variable(self, name) for name in names)
         self.dependents: dict[int, tuple[int, ...]] = {}
         for i, var in enumerate(self.vars):
             if var.parent >= 0:
                 self.dependents.setdefault(var.parent, ())
                 self.dependents[var.parent] += (i,)
-        self.steps = self._compile_steps()
-        self.anywhere_steps = self._compile_anywhere()
+        self.steps = compile_steps(self)
+        self.anywhere_steps = compile_anywhere(self)
         # every step an analysis must know about: features' (ids as in State.step), then anywhere
         self.all_steps = self.steps + self.anywhere_steps
         self.anywhere = {a: info for info in self.anywhere_steps for a in sorted(info.actions)}
@@ -166,10 +118,10 @@ class CompiledModel:
             for name, spec in model.actions.items()
             if spec.too_short == "enters"
         )
-        self.cycles = self._compile_cycles()
-        self.first_steps = self._first_steps()
-        self.targets = self._compile_targets()
-        self.guards = self._compile_guards()
+        self.cycles = compile_cycles(self)
+        self.first_steps = first_steps(self)
+        self.targets = compile_targets(self)
+        self.guards = compile_guards(self)
         self.hold_seconds = tuple(
             model.actions[a].seconds if model.actions[a].skill == "hold" else None
             for a in self.action_names
@@ -192,152 +144,6 @@ class CompiledModel:
                 self.memory_slots[v] = tuple(slots)
         self.memory_defaults = tuple(defaults)
         self.cache: dict[str, Any] = {}  # planner data derived from this model, built lazily
-
-    # --- building ------------------------------------------------------------------------
-
-    def _compile_variable(self, name: str) -> VarInfo:
-        spec = self.model.variables[name]
-        if spec.depends_on is None:
-            return VarInfo(name, spec, (build_domain(spec),), -1)
-        parent_index = self.var_index[spec.depends_on]
-        parent = build_domain(self.model.variables[spec.depends_on])
-        cases = spec.cases or {}
-        domains = tuple(
-            build_domain(spec, cases[value]) if value in cases else None for value in parent.values
-        )
-        return VarInfo(name, spec, domains, parent_index)
-
-    def _effect(self, effect: Any, var: VarInfo | None, action: int) -> tuple[Any, ...]:
-        if var is None or effect in (None, "none"):
-            return (NONE,)
-        if isinstance(effect, Conditional):  # (COND, conditions, then, otherwise)
-            return (
-                COND,
-                self._conditions(effect.when),
-                self._effect(effect.then, var, action),
-                self._effect(effect.otherwise, var, action),
-            )
-        if effect == "digit":
-            return (DIGIT, self.model.actions[self.action_names[action]].digit)
-        if effect == "clear":
-            reset = tuple(None if d is None else constant_table(d, d.initial) for d in var.domains)
-            return (CLEAR, reset)
-        tables = tuple(
-            None if d is None else effect_table(effect, d, var.spec) for d in var.domains
-        )
-        assigns = effect == "reset" or isinstance(effect, GoTo)  # choosing, not stepping
-        return (TABLE, tables, assigns, effect == "reset")
-
-    def _step_parts(
-        self, step: Any
-    ) -> tuple[
-        list[int],
-        dict[int, tuple[Any, ...]],
-        tuple[tuple[int, tuple[tuple[int, ...] | None, ...]], ...],
-    ]:
-        """A step's action ids, their compiled effects and its side effects."""
-        var = self.vars[self.var_index[step.variable]] if step.variable else None
-        action_ids = [self.action_index[a] for a in step.actions]
-        effects = {
-            a: self._effect(default_effect(step, self.action_names[a], self.model), var, a)
-            for a in action_ids
-        }
-        return action_ids, effects, self._side_tables(step.set, step.reset)
-
-    def _compile_steps(self) -> tuple[StepInfo, ...]:
-        steps: list[StepInfo] = []
-        for feature, feature_steps in self.model.features.items():
-            base = len(steps)
-            for index, step in enumerate(feature_steps):
-                action_ids, effects, side = self._step_parts(step)
-                next_step = base + index + 1 if index + 1 < len(feature_steps) else -1
-                entry = (
-                    getattr(self.model.variables[step.variable], "entry", None)
-                    if step.variable
-                    else None
-                )
-                steps.append(
-                    StepInfo(
-                        feature,
-                        index,
-                        self.var_index[step.variable] if step.variable else -1,
-                        frozenset(action_ids),
-                        effects,
-                        side,
-                        next_step,
-                        step.on_entry == "show",
-                        optional=step.optional,
-                        timeout=step.timeout,
-                        blank_clears=entry is not None and entry.other_keys == "clear",
-                        forgets=frozenset(self.var_index[t] for t in step.reset),
-                    )
-                )
-        return tuple(steps)
-
-    def _compile_anywhere(self) -> tuple[StepInfo, ...]:
-        """The ``anywhere`` entries, as steps of no feature (index -1, no next step)."""
-        compiled = []
-        for step in self.model.anywhere:
-            action_ids, effects, side = self._step_parts(step)
-            compiled.append(
-                StepInfo(
-                    "",
-                    -1,
-                    self.var_index[step.variable] if step.variable else -1,
-                    frozenset(action_ids),
-                    effects,
-                    side,
-                    -1,
-                    leave=step.leave,
-                    forgets=frozenset(self.var_index[t] for t in step.reset),
-                )
-            )
-        return tuple(compiled)
-
-    def _side_tables(
-        self, assigned: dict[str, Any], reset: list[str]
-    ) -> tuple[tuple[int, tuple[tuple[int, ...] | None, ...]], ...]:
-        """(variable, per-case tables) for ``set`` and ``reset`` side effects, in that order."""
-        side = []
-        for target, value in assigned.items():
-            info = self.vars[self.var_index[target]]
-            side.append(
-                (
-                    self.var_index[target],
-                    tuple(
-                        None if d is None else effect_table(GoTo(to=value), d, info.spec)
-                        for d in info.domains
-                    ),
-                )
-            )
-        for target in reset:
-            info = self.vars[self.var_index[target]]
-            side.append(
-                (
-                    self.var_index[target],
-                    tuple(
-                        None if d is None else constant_table(d, d.initial) for d in info.domains
-                    ),
-                )
-            )
-        return tuple(side)
-
-    def _compile_cycles(self) -> tuple[CycleInfo, ...]:
-        cycles = []
-        for cycle in self.model.cycles:
-            spec = self.model.variables[cycle.lasts]
-            scale = 1.0 if spec.type == "time" else CYCLE_UNITS[getattr(spec, "unit", "s")]
-            cycles.append(
-                CycleInfo(
-                    cycle.name,
-                    self._conditions(cycle.when),
-                    self.var_index[cycle.lasts],
-                    float(scale),
-                    self._side_tables(cycle.set, cycle.reset),
-                    frozenset(self.var_index[t] for t in cycle.reset),
-                )
-            )
-        return tuple(cycles)
 
     def cycle_running(self, state: State, c: int) -> bool:
         """Whether cycle ``c``'s condition holds in ``state``."""
@@ -374,62 +180,6 @@ class CompiledModel:
         if memory is None:
             return ended
         return self.kept_in_sync(ended._replace(memory=tuple(memory)))
-
-    def _first_steps(self) -> dict[int, int]:
-        """Action -> the step id of the first feature (in order) whose first step has it."""
-        first: dict[int, int] = {}
-        for sid, step in enumerate(self.steps):
-            if step.index == 0:
-                for action in sorted(step.actions):
-                    first.setdefault(action, sid)
-        return first
-
-    def _compile_targets(self) -> tuple[tuple[int, ...], ...]:
-        """``targets[pointer + 1][action]``: the step an action moves the pointer to, or -1."""
-        rows = []
-        for pointer in range(-1, len(self.steps)):
-            row = []
-            for action in range(len(self.action_names)):
-                target = self.first_steps.get(action, -1)
-                if pointer >= 0:
-                    step = self.steps[pointer]
-                    if action in step.actions:
-                        target = pointer
-                    else:
-                        later = step.next_step  # the next step, or past optional ones
-                        while later >= 0:
-                            if action in self.steps[later].actions:
-                                target = later
-                                break
-                            later = (
-                                self.steps[later].next_step if self.steps[later].optional else -1
-                            )
-                if action in self.anywhere or action in self.waits:
-                    target = -1  # these never move the pointer through this table
-                row.append(target)
-            rows.append(tuple(row))
-        return tuple(rows)
-
-    def _conditions(self, when: dict[str, Any]) -> tuple[tuple[int, frozenset[int]], ...]:
-        """(variable, accepted value indices) per condition of a guard or conditional effect
-        (conditions read independent variables, so their one domain)."""
-        conditions = []
-        for name, wanted in when.items():
-            domain = self.vars[self.var_index[name]].domains[0]
-            assert domain is not None
-            conditions.append((self.var_index[name], condition_indices(domain, wanted)))
-        return tuple(conditions)
-
-    def _compile_guards(self) -> tuple[GuardInfo, ...]:
-        guards = []
-        for guard in self.model.guards:
-            allowed = frozenset(self.action_index[a] for a in guard.only)
-            guards.append(
-                GuardInfo(
-                    self._conditions(guard.when), allowed, guard.display, guard.name, guard.hide
-                )
-            )
-        return tuple(guards)
 
     def kept_in_sync(self, state: State) -> State:
         """``state`` with each ``remember`` setting's kept value for the current programme set
@@ -505,74 +255,7 @@ class CompiledModel:
         earlier plan): one value index per variable within its domain (``-1`` for a setting
         absent in the current programme), a step id or ``-1``, and a buffer of digits.
         """
-        if not isinstance(state, State):
-            raise TypeError(
-                f"{argument} must be a State (Simulator.state, CompiledModel.initial_state()) "
-                f"or None, not {type(state).__name__}"
-            )
-        values, step, buffer = state.values, state.step, state.buffer
-        if not isinstance(values, tuple) or len(values) != len(self.vars):
-            raise ValueError(
-                f"{argument}.values must hold one value index for each of the model's "
-                f"{len(self.vars)} variables"
-            )
-        for i, var in enumerate(self.vars):
-            index = values[i]
-            if isinstance(index, bool) or not isinstance(index, int):
-                raise ValueError(f"{argument}.values[{i}] ({var.name}) is not an index: {index!r}")
-        for i, var in enumerate(self.vars):  # parents first: a case depends on its parent
-            if var.parent < 0 and not 0 <= values[i] < len(var.domains[0] or ()):
-                raise ValueError(
-                    f"{argument}.values[{i}]: {values[i]} is not an index of {var.name}'s "
-                    f"{len(var.domains[0] or ())} values"
-                )
-        for i, var in enumerate(self.vars):
-            if var.parent >= 0:
-                domain = var.domain(values)
-                allowed = f"0 to {len(domain) - 1}" if domain is not None else "-1 (absent)"
-                if (domain is None and values[i] != -1) or (
-                    domain is not None and not 0 <= values[i] < len(domain)
-                ):
-                    raise ValueError(
-                        f"{argument}.values[{i}]: {values[i]} is not an index of {var.name} "
-                        f"in this programme ({allowed})"
-                    )
-        if isinstance(step, bool) or not isinstance(step, int) or not -1 <= step < len(self.steps):
-            raise ValueError(
-                f"{argument}.step must be -1 or a step id below {len(self.steps)}, not {step!r}"
-            )
-        if not isinstance(buffer, str) or not (buffer == "" or buffer.isdigit()):
-            raise ValueError(f"{argument}.buffer must be a string of typed digits, not {buffer!r}")
-        self._check_memory(state, argument)
-
-    def _check_memory(self, state: State, argument: str) -> None:
-        """The kept values of ``remember`` settings: one index per (setting, programme) in
-        that programme's domain, and the current programme's equal to what is shown."""
-        memory = state.memory
-        if not isinstance(memory, tuple) or len(memory) != len(self.memory_defaults):
-            raise ValueError(
-                f"{argument}.memory must hold {len(self.memory_defaults)} kept values (one per "
-                "remembered setting and programme); start from initial_state()"
-            )
-        for v, slots in self.memory_slots.items():
-            var = self.vars[v]
-            for case, slot in enumerate(slots):
-                domain = var.domains[case]
-                if slot < 0 or domain is None:
-                    continue
-                index = memory[slot]
-                if isinstance(index, bool) or not isinstance(index, int):
-                    raise ValueError(f"{argument}.memory[{slot}] is not an index: {index!r}")
-                if not 0 <= index < len(domain):
-                    raise ValueError(
-                        f"{argument}.memory[{slot}]: {index} is not an index of {var.name}'s "
-                        f"{len(domain)} values in case {case}"
-                    )
-                if case == state.values[var.parent] and index != state.values[v]:
-                    raise ValueError(
-                        f"{argument}.memory[{slot}] keeps {index} for {var.name} in the current "
-                        f"programme, but {var.name} is {state.values[v]}"
-                    )
+        check_state(self, state, argument)
 
     def hiding_guard(self, state: State) -> GuardInfo | None:
         """A guard with ``hide`` that holds now: the display shows only its text."""
@@ -790,20 +473,6 @@ def _canonical(domain: Domain, magnitude: float) -> Any:
 
 
 _COMPILED: dict[int, tuple[ApplianceModel, CompiledModel]] = {}
-
-
-def leaves(effects: Iterable[tuple[Any, ...]]) -> list[tuple[Any, ...]]:
-    """Compiled effects with every conditional replaced by the effects it may apply: what an
-    analysis over all states (a lower bound, reachable values) must consider."""
-    found: list[tuple[Any, ...]] = []
-    pending = list(effects)
-    while pending:
-        effect = pending.pop()
-        if effect[0] == COND:
-            pending += [effect[2], effect[3]]
-        else:
-            found.append(effect)
-    return found
 
 
 def compiled_model(model: ApplianceModel | CompiledModel) -> CompiledModel:
