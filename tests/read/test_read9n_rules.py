@@ -1,0 +1,65 @@
+"""Settings the reader missed on new categories, each on a small manual written in our own words
+the way a flattened commercial manual reads: a key table's column for holding whose cells name
+the switched thing without repeating "hold" ("end signal on / off"), or under a heading such as
+"Keep touching"; a time of day whose range is only said by where it wraps."""
+
+from __future__ import annotations
+
+from apbot.model.validate import check_model
+from apbot.read import read_manual
+
+# a key table whose last column is for holding: the cells name what the hold switches
+HOLD_COLUMN = """PRESSO CB-2 CLOTHES AIRER
+Instructions
+
+CONTROL PANEL
+
+  No.  Key            Press briefly                     Press and hold (3 s)
+  ---  -------------  --------------------------------  --------------------------
+  1    POWER          switches the airer on or off      --
+  2    HEAT           warm air on / off                 night quiet on / off
+  3    FAN            fan speed LOW / HIGH              --
+
+Switch on with POWER. Press FAN to change between LOW and HIGH.
+"""
+HOLD_COLUMN_ACTIONS = ["press_power", "press_heat", "hold_heat", "press_fan"]
+
+# the same structure under another heading, each cell led by the time to hold
+KEEP_TOUCHING = """GLACIA CHEST FREEZER CF-9
+User guide
+
+TOUCH FIELDS
+
+  Field          Touch briefly                  Keep touching (printed below)
+  -------------  -----------------------------  ------------------------------
+  COLD           freezer one degree colder      -
+  BOOST          quick freeze on / off          3 s: PARTY mode on / off
+  BEEP           door alarm off / on            -
+
+The freezer keeps -16 to -24 °C. Each touch of COLD makes it one degree colder.
+"""
+KEEP_TOUCHING_ACTIONS = ["press_cold", "press_boost", "hold_boost", "press_beep"]
+
+
+def test_a_hold_column_cell_names_the_toggle_without_saying_hold() -> None:
+    model = read_manual(HOLD_COLUMN, HOLD_COLUMN_ACTIONS).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    held = [f for f, steps in model.features.items() if steps[0].actions == ["hold_heat"]]
+    assert held and model.features[held[0]][0].variable == "night_quiet"
+    assert model.variables["night_quiet"].values == ["off", "on"]
+
+
+def test_a_keep_touching_column_is_a_column_for_holding() -> None:
+    model = read_manual(KEEP_TOUCHING, KEEP_TOUCHING_ACTIONS).model
+    held = [f for f, steps in model.features.items() if steps[0].actions == ["hold_boost"]]
+    assert held and model.features[held[0]][0].variable == "party"
+
+
+def test_a_hold_cell_naming_the_key_lock_makes_that_hold_the_lock() -> None:
+    manual = KEEP_TOUCHING.replace(
+        "  BEEP           door alarm off / on            -",
+        "  BEEP           door alarm off / on            5 s: key lock on / off",
+    )
+    model = read_manual(manual, [*KEEP_TOUCHING_ACTIONS, "hold_beep"]).model
+    assert model.features["child_lock"][0].actions == ["hold_beep"]
+    assert model.features["child_lock"][0].variable == "child_lock"
