@@ -63,3 +63,38 @@ def test_a_hold_cell_naming_the_key_lock_makes_that_hold_the_lock() -> None:
     model = read_manual(manual, [*KEEP_TOUCHING_ACTIONS, "hold_beep"]).model
     assert model.features["child_lock"][0].actions == ["hold_beep"]
     assert model.features["child_lock"][0].variable == "child_lock"
+
+
+# a start time whose section gives only its step and where it goes round the clock
+CLOCK_WRAP = """VERDA GARDEN PUMP TIMER GT-4
+Operating instructions
+
+KEYS
+
+  Key        Function
+  ---------  --------------------------------
+  TIME       select the daily watering start
+  ▲          value up
+  ▼          value down
+  RUN        water now
+
+DAILY START
+
+  1  Press TIME: the start time blinks on the display.
+  2  Press ▲ or ▼. Each press moves the time by 15 minutes.
+  3  The time goes round the clock: after 23:45 comes 00:00, and before 00:00 comes 23:45.
+
+The factory setting is 06:00.
+"""
+CLOCK_WRAP_ACTIONS = ["press_time", "press_up", "press_down", "press_run"]
+
+
+def test_a_wrap_between_clock_times_is_the_range_of_a_time_of_day() -> None:
+    model = read_manual(CLOCK_WRAP, CLOCK_WRAP_ACTIONS).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    start = model.variables["time"]
+    assert start.type == "time"
+    assert [list(r) for r in start.ranges] == [["00:00:00", "23:45:00", 900]]
+    steps = model.features["set_time"]
+    assert steps[0].actions == ["press_time"]
+    assert set(steps[1].actions) == {"press_up", "press_down"}

@@ -207,6 +207,15 @@ class EvidenceReader(ListReader, AnywhereReader):
                 pressed = None  # "every click changes the time": a dial's clicks, not a key's
             if pressed and _presses_another(text, other_labels, own):
                 pressed = None  # "Touch + to raise … with each touch": the pair's presses
+            elif (
+                pressed
+                and pressed.start() < 3
+                and i > 0
+                and units[i - 1].line == unit.line
+                and not unit.cells
+                and _presses_another(units[i - 1].text, other_labels, own)
+            ):
+                pressed = None  # "Press ▲ or ▼. Each press moves the time …": the pair's
             if ev.each_press_at is None and not quiet and pressed:
                 ev.each_press_at = i
             if ev.shown_hmm is None and (minutes := find_shown_hmm(text)):  # ("2:00": no minutes)
@@ -372,7 +381,7 @@ class EvidenceReader(ListReader, AnywhereReader):
             self._initial_from_values(ev, tokens)
         if ev.values and ev.values_at is not None:
             ev.values = filled(ev.values, units[ev.values_at].text)  # "-18 → ... → -23"
-        if ev.ranges or (ev.values and _numeric_items(ev.values)):
+        if ev.ranges or not ev.values or _numeric_items(ev.values):
             # "after 23:45 comes 00:00", "after 15 back to 0": the ends of what was read
             about_it = [i for i in self.context(tokens) if i not in elsewhere or i in mentions]
             wrap_ends(ev, units, about_it)
