@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from apbot.model.validate import check_model
 from apbot.read import read_manual
+from apbot.read.values import find_ranges
 
 # a key table whose last column is for holding: the cells name what the hold switches
 HOLD_COLUMN = """PRESSO CB-2 CLOTHES AIRER
@@ -98,3 +99,10 @@ def test_a_wrap_between_clock_times_is_the_range_of_a_time_of_day() -> None:
     steps = model.features["set_time"]
     assert steps[0].actions == ["press_time"]
     assert set(steps[1].actions) == {"press_up", "press_down"}
+
+
+def test_a_range_in_ampere_hours_or_square_metres_is_a_rating_not_a_setting() -> None:
+    # "4 - 14 Ah  1 A" in a capacity guide, "200 - 400 m²  4 h" in a lawn-area guide
+    assert find_ranges("3 - 12 Ah (6 V)      1 A") == []
+    assert find_ranges("up to 150 - 300 m²   3 h") == []
+    assert find_ranges("set 1 - 9") != []

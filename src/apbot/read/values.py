@@ -98,7 +98,8 @@ class Range:
 
 
 _FOREIGN_UNIT = re.compile(
-    r"\s*(?:V|VAC|Hz|kHz|mm|cm|m|nm|µm|mA|mAh|dB|dBA|kWh|VA|bar|MPa|kPa|psi|Pa|lux)(?![\w])"
+    r"\s*(?:V|VAC|Hz|kHz|mm|cm|m[²³23]?|ft[²2]|nm|µm|mA|mAh|Ah|dB|dBA|kWh|VA|bar|MPa|kPa|psi|Pa|lux)"
+    r"(?![\w])"
 )  # units no setting of a household appliance is set in: ratings and sizes
 
 
