@@ -5,6 +5,7 @@ the switched thing without repeating "hold" ("end signal on / off"), or under a 
 
 from __future__ import annotations
 
+from apbot.model.domain import all_values
 from apbot.model.validate import check_model
 from apbot.read import read_manual
 from apbot.read.values import find_ranges
@@ -106,3 +107,38 @@ def test_a_range_in_ampere_hours_or_square_metres_is_a_rating_not_a_setting() ->
     assert find_ranges("3 - 12 Ah (6 V)      1 A") == []
     assert find_ranges("up to 150 - 300 m²   3 h") == []
     assert find_ranges("set 1 - 9") != []
+
+
+# numbered steps: press the key, then press the pair with the range (the pair's step is the key's)
+PAIR_STEP = """FLORA DRIP CONTROLLER DC-3
+Operating manual
+
+   Key          Use
+   -----------  ------------------------------------
+   CYCLE        choose the watering cycle
+   SOAK         choose the soak length
+   ▲            up
+   ▼            down
+   RUN          water now
+
+WATERING CYCLE
+
+ 1. Press CYCLE. The display shows C and the cycle.
+ 2. Press ▲ or ▼ to set 1 to 14 days. The value stops at both ends.
+
+SOAK LENGTH
+
+ 1. Press SOAK. The display shows S and the length.
+ 2. Press ▲ or ▼ to set 2 to 20 minutes, in steps of 2 minutes.
+"""
+PAIR_STEP_ACTIONS = ["press_cycle", "press_soak", "press_up", "press_down", "press_run"]
+
+
+def test_the_pair_step_after_a_key_step_gives_that_key_its_range() -> None:
+    model = read_manual(PAIR_STEP, PAIR_STEP_ACTIONS).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    cycle = all_values(model.variables["cycle"])
+    assert cycle[0] == 1 and cycle[-1] == 14 and len(cycle) == 14
+    soak = all_values(model.variables["soak"])
+    assert soak[0] == "00:02:00" and soak[-1] == "00:20:00" and len(soak) == 10
+    assert set(model.features["set_cycle"][1].actions) == {"press_up", "press_down"}

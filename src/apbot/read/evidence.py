@@ -102,6 +102,7 @@ class EvidenceReader(ListReader, AnywhereReader):
         best: list[str] | None = None
         best_prio = 0.0
         elsewhere = {i for t, lab in self.labels.items() if t not in tokens for i in lab.mentions}
+        elsewhere -= self._pair_steps(tokens, mentions)
         other_labels = [
             lab.text
             for t, lab in self.labels.items()
