@@ -8,7 +8,8 @@ from __future__ import annotations
 from apbot.model.domain import all_values
 from apbot.model.validate import check_model
 from apbot.read import read_manual
-from apbot.read.values import find_ranges
+from apbot.read.text import parse_manual
+from apbot.read.values import Range, find_ranges
 
 # a key table whose last column is for holding: the cells name what the hold switches
 HOLD_COLUMN = """PRESSO CB-2 CLOTHES AIRER
@@ -142,3 +143,48 @@ def test_the_pair_step_after_a_key_step_gives_that_key_its_range() -> None:
     soak = all_values(model.variables["soak"])
     assert soak[0] == "00:02:00" and soak[-1] == "00:20:00" and len(soak) == 10
     assert set(model.features["set_cycle"][1].actions) == {"press_up", "press_down"}
+
+
+def test_a_spec_table_whose_first_column_has_no_name_is_a_table() -> None:
+    manual = parse_manual(
+        "TECHNICAL DATA\n\n"
+        "   -------------------------------------------------------------\n"
+        "                          Model S-3            Model S-6\n"
+        "   -------------------------------------------------------------\n"
+        "   Power                  400 W                700 W\n"
+        "   Bath temperature       40 - 60 °C           35 - 70 °C\n"
+        "   Keys                   BATH TIME            as S-3, plus LIGHT\n"
+    )
+    rows = [u for u in manual.units if u.cells]
+    assert rows and rows[-1].header == ("", "Model S-3", "Model S-6")
+    assert rows[-1].cells[0] == "Keys"
+
+
+def test_stops_at_two_values_and_a_chain_of_values_are_ranges() -> None:
+    assert find_ranges("the value stops at 35 °C and at 50 °C") == [Range(35, 50, "°C")]
+    assert find_ranges("in steps: 0.5 - 1 - 1.5 - 2 h.") == [Range(0.5, 2, "h", 0.5)]
+    assert find_ranges("it stops at both ends") == []
+
+
+# the key is printed HOLD and its setting is a "holding time": no hold of the key
+HOLDING_TIME = """WARMA SAUCE STATION
+Guide
+
+  Key      Use
+  -------  ------------------------------
+  HOLD     select the holding time
+  −        lower
+  +        raise
+
+HOLDING TIME
+
+ 1. Press HOLD. The holding time is shown.
+ 2. Press − or + in steps of half an hour: 0.5 - 1 - 1.5 - 2 - 2.5 - 3 h.
+"""
+HOLDING_TIME_ACTIONS = ["press_hold", "press_minus", "press_plus"]
+
+
+def test_a_key_printed_hold_steps_its_holding_time_with_the_pair() -> None:
+    model = read_manual(HOLDING_TIME, HOLDING_TIME_ACTIONS).model
+    values = all_values(model.variables["hold"])
+    assert values[0] in (0.5, "00:30:00") and values[-1] in (3, "03:00:00") and len(values) == 6

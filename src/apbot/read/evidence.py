@@ -102,7 +102,8 @@ class EvidenceReader(ListReader, AnywhereReader):
         best: list[str] | None = None
         best_prio = 0.0
         elsewhere = {i for t, lab in self.labels.items() if t not in tokens for i in lab.mentions}
-        elsewhere -= self._pair_steps(tokens, mentions)
+        steps = self._pair_steps(tokens, mentions)  # "Press ▲ or ▼ to set …" after its step
+        elsewhere, mentions = elsewhere - steps, mentions | steps
         other_labels = [
             lab.text
             for t, lab in self.labels.items()

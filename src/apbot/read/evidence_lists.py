@@ -137,7 +137,11 @@ class ListReader(TableReader):
                 if units[k].heading != units[i].heading or units[k].cells:
                     break
                 if k in mentions:
-                    held = re.search(r"\b(?:hold|held|holding)\b", units[k].text, re.I)
+                    text = units[k].text
+                    for t in tokens:  # (a key printed HOLD is no hold of it)
+                        if t in self.labels and self.labels[t].text:
+                            text = text.replace(self.labels[t].text, " ")
+                    held = re.search(r"\b(?:hold|held)\b", text, re.I)  # ("holding time")
                     if by_unit.get(k, set()) - pair <= set(tokens) and not held:
                         found.add(i)  # (a step after holding the key is the hold's)
                     break
