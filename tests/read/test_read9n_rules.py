@@ -188,3 +188,29 @@ def test_a_key_printed_hold_steps_its_holding_time_with_the_pair() -> None:
     model = read_manual(HOLDING_TIME, HOLDING_TIME_ACTIONS).model
     values = all_values(model.variables["hold"])
     assert values[0] in (0.5, "00:30:00") and values[-1] in (3, "03:00:00") and len(values) == 6
+
+
+# the key's step runs over several sentences: the pair's step comes after them
+LONG_STEP = """TERRA MOWER M-2
+Guide
+
+  Key      Use
+  -------  ------------------------------
+  HOURS    select the mowing hours
+  ▲        up
+  ▼        down
+  GO       mow now
+
+DAILY SCHEDULE
+
+  1  Press HOURS. The display shows D and the hours. They blink.
+  2  Press ▲ or ▼ to change the hours by 1 h, from 2 h to 10 h.
+"""
+LONG_STEP_ACTIONS = ["press_hours", "press_up", "press_down", "press_go"]
+
+
+def test_the_pair_step_after_a_key_step_of_several_sentences_is_the_keys() -> None:
+    model = read_manual(LONG_STEP, LONG_STEP_ACTIONS).model
+    values = all_values(model.variables["hours"])
+    assert values[0] == 2 and values[-1] == 10 and len(values) == 9
+    assert set(model.features["set_hours"][1].actions) == {"press_up", "press_down"}

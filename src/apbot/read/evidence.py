@@ -116,7 +116,8 @@ class EvidenceReader(ListReader, AnywhereReader):
             if t not in tokens
             for w in [x for x in words(t.replace("_", " ")) if len(x) >= 4][:1]
         }
-        for i in self.context(tokens):
+        context = self.context(tokens)
+        for i in [*context, *sorted(steps - set(context))]:  # (a step further down: its own)
             text = units[i].text
             unit = units[i]
             if i in elsewhere and i not in mentions and not unit.cells:
