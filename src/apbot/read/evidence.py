@@ -104,6 +104,8 @@ class EvidenceReader(ListReader, AnywhereReader):
         best: list[str] | None = None
         best_prio = 0.0
         elsewhere = {i for t, lab in self.labels.items() if t not in tokens for i in lab.mentions}
+        steps = self._pair_steps(tokens, mentions)  # "Press ▲ or ▼ to set …" after its step
+        elsewhere, mentions = elsewhere - steps, mentions | steps
         other_labels = [
             lab.text
             for t, lab in self.labels.items()
@@ -116,7 +118,8 @@ class EvidenceReader(ListReader, AnywhereReader):
             if t not in tokens
             for w in [x for x in words(t.replace("_", " ")) if len(x) >= 4][:1]
         }
-        for i in self.context(tokens):
+        context = self.context(tokens)
+        for i in [*context, *sorted(steps - set(context))]:  # (a step further down: its own)
             text = units[i].text
             unit = units[i]
             pieced = len(find_stepped_pieces(_with_items(units, i))) >= 2  # its steps, item by item
@@ -210,6 +213,15 @@ class EvidenceReader(ListReader, AnywhereReader):
                 pressed = None  # "every click changes the time": a dial's clicks, not a key's
             if pressed and _presses_another(text, other_labels, own):
                 pressed = None  # "Touch + to raise … with each touch": the pair's presses
+            elif (
+                pressed
+                and pressed.start() < 3
+                and i > 0
+                and units[i - 1].line == unit.line
+                and not unit.cells
+                and _presses_another(units[i - 1].text, other_labels, own)
+            ):
+                pressed = None  # "Press ▲ or ▼. Each press moves the time …": the pair's
             if ev.each_press_at is None and not quiet and pressed:
                 ev.each_press_at = i
             if ev.shown_hmm is None and (minutes := find_shown_hmm(text)):  # ("2:00": no minutes)
@@ -375,7 +387,7 @@ class EvidenceReader(ListReader, AnywhereReader):
             self._initial_from_values(ev, tokens)
         if ev.values and ev.values_at is not None:
             ev.values = filled(ev.values, units[ev.values_at].text)  # "-18 → ... → -23"
-        if ev.ranges or (ev.values and _numeric_items(ev.values)):
+        if ev.ranges or not ev.values or _numeric_items(ev.values):
             # "after 23:45 comes 00:00", "after 15 back to 0": the ends of what was read
             about_it = [i for i in self.context(tokens) if i not in elsewhere or i in mentions]
             wrap_ends(ev, units, about_it)

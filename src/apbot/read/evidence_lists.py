@@ -11,11 +11,13 @@ from apbot.read.actions import ActionInfo
 from apbot.read.evidence_tables import TableReader
 from apbot.read.labels import Label, words
 from apbot.read.shapes import (
+    DOWN_WORDS,
     ORDER_RE,
     PRESSES_RE,
     QUANTITY_FAMILIES,
     RUN_RE,
     TABLE_POINTER_RE,
+    UP_WORDS,
     Evidence,
     _all_names,
     _aside,
@@ -110,6 +112,42 @@ class ListReader(TableReader):
                         if j not in seen:
                             seen.append(j)
         return seen
+
+    def _pair_steps(self, tokens: list[str], mentions: set[int]) -> set[int]:
+        """Units that press only the stepping pair right after a unit pressing this key ("1.
+        Press DAYS. …" then "2. Press ▲ or ▼ to set 1 to 14 days"): the pair moves what the
+        key opened, so that step speaks of this key's setting, not of another key's."""
+        pair = {
+            t
+            for t in self.labels
+            if t not in tokens and set(t.split("_")) & (UP_WORDS | DOWN_WORDS)
+        }
+        if not pair or not mentions:
+            return set()
+        by_unit: dict[int, set[str]] = {}
+        for t, lab in self.labels.items():
+            for i in lab.mentions:
+                by_unit.setdefault(i, set()).add(t)
+        units = self.manual.units
+        found: set[int] = set()
+        for i, named in by_unit.items():
+            if i in mentions or not named or not named <= pair or units[i].cells:
+                continue
+            for k in range(i - 1, max(i - 4, -1), -1):
+                if units[k].heading != units[i].heading or units[k].cells:
+                    break
+                if k in mentions:
+                    text = units[k].text
+                    for t in tokens:  # (a key printed HOLD is no hold of it)
+                        if t in self.labels and self.labels[t].text:
+                            text = text.replace(self.labels[t].text, " ")
+                    held = re.search(r"\b(?:hold|held)\b", text, re.I)  # ("holding time")
+                    if by_unit.get(k, set()) - pair <= set(tokens) and not held:
+                        found.add(i)  # (a step after holding the key is the hold's)
+                    break
+                if by_unit.get(k, set()) - pair:
+                    break  # another key's step came in between
+        return found
 
     def _two_key_hold(self, text: str, tokens: list[str]) -> bool:
         """Whether a sentence tells of holding two keys together, one of them this one, when

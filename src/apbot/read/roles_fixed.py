@@ -14,6 +14,7 @@ from apbot.read.roles_common import (
     label_of,
     mentions_of,
 )
+from apbot.read.roles_holdcell import held_lock
 from apbot.read.roles_holds import held_named_switch, held_power, held_start
 from apbot.read.shapes import RUNNING_RE, STOP_WORDS
 from apbot.read.shown import LOCK_CUE, RUNNING_CUE, shown_words
@@ -116,11 +117,18 @@ def assign_locks(b: Builder, done: set[str]) -> list[str]:
         is_lock = "lock" in words(info.token) and info.skill in ("hold", "press")
         if info.skill == "hold" and not is_lock:
             texts = [b.manual.units[i].text for i in b.context(list(info.controls))]
-            is_lock = len(info.controls) > 1 or (
-                not named
-                and not (_runs(info) and any(_held_lock(b, o) for o in infos if not _runs(o)))
-                and any(
-                    re.search(r"\bhold\b", t, re.I) and re.search(r"\block", t, re.I) for t in texts
+            is_lock = (
+                len(info.controls) > 1
+                or (
+                    not named and held_lock(b, info)  # "| ALARM | … | 5 s: key lock on / off |"
+                )
+                or (
+                    not named
+                    and not (_runs(info) and any(_held_lock(b, o) for o in infos if not _runs(o)))
+                    and any(
+                        re.search(r"\bhold\b", t, re.I) and re.search(r"\block", t, re.I)
+                        for t in texts
+                    )
                 )
             )
         if not is_lock:

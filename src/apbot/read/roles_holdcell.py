@@ -12,6 +12,7 @@ import re
 
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
+from apbot.read.evidence_whose import _lead
 from apbot.read.text import Unit
 
 _SECONDS = r"(?:for\s+)?\d+(?:[.,]\d+)?\s*(?:s|sec|secs|seconds?)\b"
@@ -20,32 +21,67 @@ _HELD = re.compile(  # "Hold for 2 seconds: twin-needle mode on/off", "3 s: warm
     r"(?P<noun>[a-z][a-z -]{2,30}?)\s+(?:mode\s+)?(?:on\s*(?:/|or)\s*off|off\s*(?:/|or)\s*on)\b",
     re.IGNORECASE,
 )
+# a cell under a column kept for holding names the thing alone: "end signal on / off"
+_CELL = re.compile(
+    rf"^\W*(?:{_SECONDS}\s*:\s*)?(?P<noun>[a-z][a-z -]{{2,30}}?)\s+(?:mode\s+)?"
+    r"(?:on\s*(?:/|or)\s*off|off\s*(?:/|or)\s*on)\W*$",
+    re.IGNORECASE,
+)
+# a header for holding: "Touch and hold", "Long press", "Keep touching (printed below)"
+_HOLD_HEAD = re.compile(r"\bhold|\blong\b|\bkeep\s+(?:touching|pressing|pushing)\b", re.I)
 
 
 def _hold_cells(unit: Unit) -> list[str]:
     """A row's cells under a header for holding ("Touch and hold", "Long press")."""
     return [
-        cell
-        for head, cell in zip(unit.header, unit.cells, strict=False)
-        if re.search(r"\bhold|\blong\b", head, re.IGNORECASE)
+        cell for head, cell in zip(unit.header, unit.cells, strict=False) if _HOLD_HEAD.search(head)
     ]
+
+
+def _own_rows(b: Builder, key: ActionInfo) -> list[int]:
+    """The units of the key's own legend: a line or row led by its printed name (a row may be
+    numbered first: "2 | HEAT | …")."""
+    if len(key.controls) != 1 or key.controls[0] not in b.labels:
+        return []
+    label = b.labels[key.controls[0]].text.upper()
+    if not label:
+        return []
+    rows = []
+    for i in b.labels[key.controls[0]].mentions:
+        unit = b.manual.units[i]
+        led = _lead(unit.cells).strip(" *").upper() if unit.cells else ""
+        if unit.text.lstrip(" *|-•").upper().startswith(label) or led == label:
+            rows.append(i)
+    return rows
+
+
+def held_lock(b: Builder, key: ActionInfo) -> bool:
+    """The key's row in a key table says, in its column for holding, that the hold is the
+    lock ("| ALARM | door alarm off / on | 5 s: key lock on / off |")."""
+    if key.skill != "hold":
+        return False
+    units = b.manual.units
+    return any(
+        re.search(r"\block\b", cell, re.I)
+        for i in _own_rows(b, key)
+        if units[i].cells
+        for cell in _hold_cells(units[i])
+    )
 
 
 def held_toggle(b: Builder, key: ActionInfo) -> str:
     """The on/off thing holding this key switches, read from its legend's hold part; ""."""
-    if key.skill != "hold" or len(key.controls) != 1 or key.controls[0] not in b.labels:
+    if key.skill != "hold":
         return ""
-    label = b.labels[key.controls[0]].text.upper()
     units = b.manual.units
-    for i in b.labels[key.controls[0]].mentions:
+    for i in _own_rows(b, key):
         unit = units[i]
-        if not label or not unit.text.lstrip(" *|-•").upper().startswith(label):
-            continue  # only the key's own legend
         candidates = _hold_cells(unit) if unit.cells else []
         if not unit.cells:  # the legend's next line, when it names no key of its own
             candidates += [units[k].text for k in (i + 1, i + 2) if k < len(units)]
+        cells = set(_hold_cells(unit)) if unit.cells else set()
         for text in candidates:
-            m = _HELD.match(text)
+            m = _HELD.match(text) or (_CELL.match(text) if text in cells else None)
             if m and not re.search(r"\b(?:lock|key|appliance)\b", m.group("noun"), re.I):
                 return m.group("noun").strip(" -").lower()
     return ""

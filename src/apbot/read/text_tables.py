@@ -66,6 +66,7 @@ def _space_tables(
         before = lines[i - 1].strip() if i else ""
         if (
             before
+            and not re.fullmatch(r"[-=_][-=_\s]{2,}", before)  # a rule above a header
             and not re.search(r"[.:!?]$", before)
             and not before.isupper()
             and not before.startswith("#")  # a Markdown heading ends what came before
@@ -73,6 +74,7 @@ def _space_tables(
         ):
             i += 1  # the line goes on with a sentence from the line before: not a table header
             continue
+        head = _unnamed_first(lines, i, head)
         two = len(head) == 2 and _two_column_head(head)
         if (len(head) < 3 and not two) or "|" in lines[i] or len(lines[i]) > 200:
             i += 1
@@ -120,6 +122,8 @@ def _space_tables(
             rows = []
         if len(rows) >= 2:
             head_cells = _joined_cells(lines[i], more.get(i, []))
+            if not head[0] and head_cells[0]:
+                head_cells = ("", *head_cells)
             legend = bool(CALLOUT_RE.fullmatch(head_cells[0]))  # "①  M   Hold 2 s: …": a row
             out[i + 1] = (_uncalled(head_cells), None) if legend else (head_cells, True)
             for r in rows:
@@ -137,6 +141,26 @@ def _passed(lines: list[str], k: int, breaks: set[int]) -> bool:
     """A line of a page break a table goes on over: one the page layout passes over, or a
     blank or drawn line ("-------" under the page's footer) that follows them."""
     return k in breaks or not re.search(r"[^\W_]", lines[k])
+
+
+def _unnamed_first(lines: list[str], i: int, head: tuple[str, ...]) -> tuple[str, ...]:
+    """A header whose first column has no name ("            Model 3     Model 6" over
+    "Power       550 W       900 W"): its cells start under the rows' second and later
+    cells, so it heads those, and the first column's name is empty."""
+    if len(head) < 2:
+        return head
+    j = i + 1
+    while j < len(lines) and re.fullmatch(r"[-=_][-=_\s]{2,}", lines[j].strip()):
+        j += 1
+    if j >= len(lines) or len(_cells(lines[j])) != len(head) + 1:
+        return head
+    starts = [at for at, _ in _placed_cells(lines[i])]
+    placed = [at for at, _ in _placed_cells(lines[j])]
+    if starts[0] > placed[0] + 4 and all(
+        any(abs(at - s) <= 2 for at in placed[1:]) for s in starts
+    ):
+        return ("", *head)
+    return head
 
 
 def _two_column_head(cells: tuple[str, ...]) -> bool:

@@ -9,6 +9,7 @@ own step (a flattened range table, an arrow chart), in values_stepped.py.
 
 from __future__ import annotations
 
+import itertools
 import re
 from dataclasses import dataclass
 
@@ -28,6 +29,17 @@ _TIME = r"\d{1,2}:\d{2}"
 _DASH = r"\s*(?:–|—|-|to|and|~|until)\s*"
 RANGE_RE = re.compile(
     rf"(?<![\w:.])({NUM})\s*({UNIT})?{_DASH}({NUM})\s*({UNIT})?(?![\w:])", re.IGNORECASE
+)
+# three or more values joined by dashes, the unit after the last: "35 - 40 - 45 - 50 %"
+CHAIN_RE = re.compile(
+    rf"(?<![\w:.])(?P<run>{NUM}(?:\s*-\s*{NUM}){{2,}})\s*(?P<unit>{UNIT})?(?![\w:])",
+    re.IGNORECASE,
+)
+# a setting that "stops at 1 h and at 12 h" (no wrap): those are its ends
+STOPS_RE = re.compile(
+    rf"\bstops?\s+at\s+({NUM})\s*({UNIT})?(?!\w)\s*(?:,\s*)?and\s+(?:at\s+)?({NUM})\s*({UNIT})?"
+    r"(?![\w:])",
+    re.IGNORECASE,
 )
 TIME_RANGE_RE = re.compile(rf"(?<![\d:])({_TIME}){_DASH}({_TIME})(?![\d:])")
 UPTO_RE = re.compile(rf"\bup to\s+({NUM})\s*({UNIT})(?!\w)", re.IGNORECASE)
@@ -98,7 +110,8 @@ class Range:
 
 
 _FOREIGN_UNIT = re.compile(
-    r"\s*(?:V|VAC|Hz|kHz|mm|cm|m|nm|µm|mA|mAh|dB|dBA|kWh|VA|bar|MPa|kPa|psi|Pa|lux)(?![\w])"
+    r"\s*(?:V|VAC|Hz|kHz|mm|cm|m[²³23]?|ft[²2]|nm|µm|mA|mAh|Ah|dB|dBA|kWh|VA|bar|MPa|kPa|psi|Pa|lux)"
+    r"(?![\w])"
 )  # units no setting of a household appliance is set in: ratings and sizes
 
 
@@ -123,9 +136,20 @@ def _ranges(text: str) -> list[Range]:
         a, b = clock_seconds(m.group(1), min_sec), clock_seconds(m.group(2), min_sec)
         if a < b:
             out.append(Range(a, b, "s"))
+    chains = [(m.start(), m.end()) for m in CHAIN_RE.finditer(text)]
+    for m in CHAIN_RE.finditer(text):  # "0.5 - 1 - 1.5 - 2 h": the values one by one
+        read = [number(x) for x in re.findall(NUM, m.group("run"))]
+        figures = [x for x in read if x is not None]
+        if len(figures) != len(read) or figures != sorted(set(figures)):
+            continue
+        gaps = {round(b - a, 6) for a, b in itertools.pairwise(figures)}
+        step = gaps.pop() if len(gaps) == 1 else None
+        out.append(Range(figures[0], figures[-1], unit_name(m.group("unit")), step))
     for m in RANGE_RE.finditer(text):
         if TIME_RANGE_RE.search(m.group(0)):
             continue
+        if any(a <= m.start() < b for a, b in chains):
+            continue  # a pair of values in a chain of them, not a range
         lo, hi = number(m.group(1)), number(m.group(3))
         unit = unit_name(m.group(4) or m.group(2))
         first = unit_name(m.group(2))
@@ -150,6 +174,13 @@ def _ranges(text: str) -> list[Range]:
         hi = number(m.group(1))
         if hi:
             out.append(Range(0, hi, unit_name(m.group(2))))
+    for m in STOPS_RE.finditer(text):  # "the value stops at 40 °C and at 55 °C": its ends
+        lo, hi = number(m.group(1)), number(m.group(3))
+        units = {unit_name(u) for u in (m.group(2), m.group(4)) if u}
+        if lo is not None and hi is not None and lo < hi and len(units) <= 1:
+            found = Range(lo, hi, units.pop() if units else "")
+            if found not in out:
+                out.append(found)
     # "up to 99:59"; a 12-hour clock's last minute ("up to 12:59") starts at 1:00
     twelve = 12 * 3600 + 59 * 60
     out += [Range(3600 if top == twelve else 0, top, "s") for top in clock_tops(text) if top]

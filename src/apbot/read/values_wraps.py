@@ -130,13 +130,22 @@ def with_bottom(values: list[str], wrap: Range) -> list[str]:
     return [f"{low} {suffix}".strip(), *values]
 
 
+def _day(wrap: Range, step: tuple[float, str] | None) -> Range:
+    """The clock times a wrap names, in the step read when it is a whole number of seconds."""
+    every = step[0] * {"s": 1, "min": 60, "h": 3600}.get(step[1], 0) if step else 0
+    if every <= 0 or (wrap.high - wrap.low) % every:
+        return Range(wrap.low, wrap.high, "s")
+    return Range(wrap.low, wrap.high, "s", every)
+
+
 def wrap_ends(ev: Evidence, units: list[Unit], context: list[int]) -> None:
     """Widen ``ev``'s range (or listed count) to the ends the first wrap sentence names: one
     of the few units right after where the range or list was read, else one of ``context``
-    (the units about the control)."""
+    (the units about the control). With nothing read, a wrap between two clock times ("after
+    23:30 comes 00:00") is the range itself: a time of day whose steps only were given."""
     following = [
         k
-        for at in (ev.range_at, ev.values_at)
+        for at in (ev.range_at, ev.values_at, ev.step_at)
         if at is not None
         for k in range(at, min(at + 4, len(units)))
         if units[k].heading == units[at].heading
@@ -144,6 +153,10 @@ def wrap_ends(ev: Evidence, units: list[Unit], context: list[int]) -> None:
     for i in [*following, *context]:
         wrap = find_wrap(units[i].text)
         if wrap is not None:
+            if not ev.ranges and not ev.values:
+                if wrap.unit == "s":  # "after 23:30 comes 00:00": a time of day, nothing else
+                    ev.ranges, ev.range_at = [_day(wrap, ev.step)], i
+                return
             ev.ranges = widened(ev.ranges, wrap, ev.step)
             ev.values = with_bottom(ev.values, wrap) if ev.values else ev.values
             return
