@@ -12,7 +12,9 @@ from collections.abc import Hashable
 from typing import Any
 
 from apbot.agent.executed import AgentConfig
+from apbot.agent.looking import selecting
 from apbot.agent.session import Session
+from apbot.model.schema import ApplianceModel, DiscreteVariable
 from apbot.plan.plan import Plan, Unreachable, plan
 from apbot.sim.compiled import CompiledModel, State
 
@@ -58,9 +60,11 @@ class BeliefPlans:
         most easily, and nothing on the display shows it happen; a plan that sets a delay and
         then turns the programme dial succeeds on the belief and fails on the appliance. Setting
         the programmes first costs nothing when the lengths tie, and is as sound either way.
+        A programme is one the goal names or one the plan chooses on its way (a menu chosen
+        for the texture the goal asks, which starts there): see :func:`programmes`.
         """
-        model = self.session.belief.model
-        parents = {v.depends_on for v in model.variables.values() if v.depends_on} & set(target)
+        chosen = _chosen_programmes(self.session, found, target)
+        parents = set(chosen)
         macros = found.macro_actions
         last = max((i for i, m in enumerate(macros) if parents & set(m.expect)), default=0)
         if not any(set(m.expect) & (set(target) - parents) for m in macros[:last]):
@@ -69,7 +73,7 @@ class BeliefPlans:
         work = self.config.plan_work
         try:
             state: State | None = self.session.belief.state
-            head = plan(compiled, state, {n: target[n] for n in parents}, budget, work, len(found))
+            head = plan(compiled, state, chosen, budget, work, len(found))
             if not head.actions:  # the programmes hold: the rest is the search just made
                 return found
             for action in head.actions:
@@ -129,3 +133,46 @@ class BeliefPlans:
         except Unreachable:
             return False
         return True
+
+
+def programmes(model: ApplianceModel) -> set[str]:
+    """The belief's programme-like settings: those others depend on, and choices among several
+    named values made by a key that goes to one of them or sets other settings as it does (a
+    programme key). Choosing one of them is what brings other settings back to its defaults on
+    many appliances, said in the manual or not."""
+    found = {v.depends_on for v in model.variables.values() if v.depends_on}
+    chooser = selecting(model)
+    for steps in model.features.values():
+        for step in steps:
+            name = step.variable
+            spec = model.variables.get(name) if name else None
+            if (
+                name
+                and isinstance(spec, DiscreteVariable)
+                and len(spec.values or ()) > 2
+                and chooser & set(step.actions)
+            ):
+                found.add(name)
+    return {n for n in found if n is not None}
+
+
+def _chosen_programmes(session: Session, found: Plan, target: dict[str, Any]) -> dict[str, Any]:
+    """The programmes the goal names, and those the plan changes on its way, each with the
+    value the plan leaves it at."""
+    compiled = session.belief.compiled
+    named = programmes(session.belief.model)
+    chosen = {n: target[n] for n in named & set(target)}
+    state: State | None = session.belief.state
+    for action in found.actions:
+        assert state is not None
+        state = compiled.apply(state, compiled.action_index[action.name], action.seconds)
+        if state is None:
+            return chosen
+    start = session.belief.values()
+    for name in sorted(named - set(target)):
+        if name not in compiled.var_index or state is None:
+            continue
+        value = compiled.value(state, name)
+        if value != start.get(name) and value is not None:
+            chosen[name] = value
+    return chosen
