@@ -158,3 +158,40 @@ def test_a_menu_the_goal_does_not_name_is_chosen_before_the_time() -> None:
     belief = model_from(BAKER.replace("{reset}", ""))
     episode, reached = run(truth, belief, {"crust": "light", "time": 25})
     assert reached and episode.claimed_success
+
+
+WARMER = """
+controls: [{id: power, label: POWER}, {id: mode, label: MODE}, {id: up, label: UP},
+           {id: down, label: DOWN}]
+variables:
+  power: {type: discrete, values: ["off", "on"], label: POWER, show: {"off": "", "on": "{mode}"}}
+  mode: {type: discrete, values: [milk, formula, food], label: MODE}
+  volume: {type: numeric, ranges: [[1, 9, 1]], unit: oz, initial: 4, label: VOL}
+actions:
+  press_power: {control: power}
+  press_up: {control: up}
+  press_down: {control: down}
+  press_mode: {control: mode}
+features:
+  power:
+    - {actions: [press_power], variable: power, effect: toggle}
+  set_volume:
+    - actions: [press_up, press_down]
+      variable: volume
+      effect: {press_up: next, press_down: prev}
+  set_mode:
+    - {actions: [press_mode], variable: mode, effect: next{reset}}
+guards:
+  - {name: power off, when: {power: "off"}, only: [press_power], hide: true}
+display: {idle: "{mode}"}
+"""
+
+
+def test_a_mode_stepped_round_by_one_key_is_chosen_before_the_volume() -> None:
+    # no setting depends on the mode and its key only steps round the names: still a choice
+    # among named values, which this warmer answers by putting the volume back to 6 oz; the
+    # display then shows the mode's name only
+    truth = model_from(WARMER.replace("{reset}", ", set: {volume: 6}"))
+    belief = model_from(WARMER.replace("{reset}", ""))
+    episode, reached = run(truth, belief, {"mode": "food", "volume": 2})
+    assert reached and episode.claimed_success

@@ -8,11 +8,11 @@ one that selects the programmes first is taken (see :meth:`BeliefPlans.programme
 
 from __future__ import annotations
 
+import re
 from collections.abc import Hashable
 from typing import Any
 
 from apbot.agent.executed import AgentConfig
-from apbot.agent.looking import selecting
 from apbot.agent.session import Session
 from apbot.model.schema import ApplianceModel, DiscreteVariable
 from apbot.plan.plan import Plan, Unreachable, plan
@@ -137,23 +137,20 @@ class BeliefPlans:
 
 def programmes(model: ApplianceModel) -> set[str]:
     """The belief's programme-like settings: those others depend on, and choices among several
-    named values made by a key that goes to one of them or sets other settings as it does (a
-    programme key). Choosing one of them is what brings other settings back to its defaults on
-    many appliances, said in the manual or not."""
+    named values (a mode, a menu, a programme: three or more values, not figures). Choosing
+    one of them is what brings other settings back to its defaults on many appliances, said in
+    the manual or not; choosing one first costs nothing when the plans' lengths tie."""
     found = {v.depends_on for v in model.variables.values() if v.depends_on}
-    chooser = selecting(model)
-    for steps in model.features.values():
-        for step in steps:
-            name = step.variable
-            spec = model.variables.get(name) if name else None
-            if (
-                name
-                and isinstance(spec, DiscreteVariable)
-                and len(spec.values or ()) > 2
-                and chooser & set(step.actions)
-            ):
-                found.add(name)
+    for name, spec in model.variables.items():
+        values = [str(v) for v in (spec.values or ())] if isinstance(spec, DiscreteVariable) else []
+        if len(values) > 2 and sum(not _figure(v) for v in values) > len(values) // 2:
+            found.add(name)
     return {n for n in found if n is not None}
+
+
+def _figure(value: str) -> bool:
+    """Whether a value is a number (``3``, ``1.5``, ``40%``): a level, not a named choice."""
+    return bool(re.fullmatch(r"[\d.,:]+\s*\S{0,3}", value.strip()))
 
 
 def _chosen_programmes(session: Session, found: Plan, target: dict[str, Any]) -> dict[str, Any]:
