@@ -8,13 +8,12 @@ one that selects the programmes first is taken (see :meth:`BeliefPlans.programme
 
 from __future__ import annotations
 
-import re
 from collections.abc import Hashable
 from typing import Any
 
 from apbot.agent.executed import AgentConfig
+from apbot.agent.programmes import programmes
 from apbot.agent.session import Session
-from apbot.model.schema import ApplianceModel, DiscreteVariable
 from apbot.plan.plan import Plan, Unreachable, plan
 from apbot.sim.compiled import CompiledModel, State
 
@@ -133,24 +132,6 @@ class BeliefPlans:
         except Unreachable:
             return False
         return True
-
-
-def programmes(model: ApplianceModel) -> set[str]:
-    """The belief's programme-like settings: those others depend on, and choices among several
-    named values (a mode, a menu, a programme: three or more values, not figures). Choosing
-    one of them is what brings other settings back to its defaults on many appliances, said in
-    the manual or not; choosing one first costs nothing when the plans' lengths tie."""
-    found = {v.depends_on for v in model.variables.values() if v.depends_on}
-    for name, spec in model.variables.items():
-        values = [str(v) for v in (spec.values or ())] if isinstance(spec, DiscreteVariable) else []
-        if len(values) > 2 and sum(not _figure(v) for v in values) > len(values) // 2:
-            found.add(name)
-    return {n for n in found if n is not None}
-
-
-def _figure(value: str) -> bool:
-    """Whether a value is a number (``3``, ``1.5``, ``40%``): a level, not a named choice."""
-    return bool(re.fullmatch(r"[\d.,:]+\s*\S{0,3}", value.strip()))
 
 
 def _chosen_programmes(session: Session, found: Plan, target: dict[str, Any]) -> dict[str, Any]:
