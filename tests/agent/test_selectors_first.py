@@ -195,3 +195,15 @@ def test_a_mode_stepped_round_by_one_key_is_chosen_before_the_volume() -> None:
     belief = model_from(WARMER.replace("{reset}", ""))
     episode, reached = run(truth, belief, {"mode": "food", "volume": 2})
     assert reached and episode.claimed_success
+
+
+def test_the_panel_is_switched_on_before_the_mode_is_chosen() -> None:
+    # the mode key works on a dark panel too; chosen first, before POWER, it would be chosen
+    # unseen and need a look: what the plan does before it sets anything of the goal stays first
+    text = WARMER.replace("{reset}", "").replace(
+        "only: [press_power]", "only: [press_power, press_mode]"
+    )
+    model = model_from(text)
+    episode, reached = run(model, model, {"mode": "food", "volume": 2})
+    assert reached and episode.claimed_success
+    assert episode.execution_steps == 5  # POWER, MODE twice, DOWN twice
