@@ -103,7 +103,7 @@ def glance(session: Session, names: Collection[str]) -> bool:
             if _retype(session, name):
                 return True
             continue
-        if not session.budget.once("inspect", f"glance:{name}"):
+        if not _may_glance(session, name):
             continue
         compiled, state = session.belief.compiled, session.belief.state
         keep = set(model.variables)
@@ -132,6 +132,16 @@ def glance(session: Session, names: Collection[str]) -> bool:
             session.unread.add(name)
         return True
     return False
+
+
+def _may_glance(session: Session, name: str) -> bool:
+    """Once per setting, and once more when a programme chosen after the display showed it put
+    it in doubt (:attr:`Session.reprogrammed`): the first look may have been spent before that
+    choice, which may have brought the setting back to the programme's default — even to the
+    very value the belief holds."""
+    if session.budget.once("inspect", f"glance:{name}"):
+        return True
+    return name in session.reprogrammed and session.budget.once("inspect", f"reglance:{name}")
 
 
 def _retype(session: Session, name: str) -> bool:

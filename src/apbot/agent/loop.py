@@ -25,6 +25,7 @@ from apbot.agent.episode import Episode, TaskContext
 from apbot.agent.explorer import Explorer
 from apbot.agent.greedy import GreedyExecutor
 from apbot.agent.guards import GuardLearner
+from apbot.agent.guessed_choice import forget_guessed_choices
 from apbot.agent.looking import glance, route_to_screen
 from apbot.agent.merged import ProcedureSplitter
 from apbot.agent.planning import BeliefPlans
@@ -74,6 +75,7 @@ class ClosedLoop(Checks):
             self.session.start()
             if not self.config.closed_loop:
                 self.open_loop()
+            forget_guessed_choices(self.session, self.goal()[0])
             stalled = 0
             while True:
                 mark = (episode.reasoning_steps, episode.execution_steps, len(episode.repairs))

@@ -8,12 +8,14 @@ one that selects the programmes first is taken (see :meth:`BeliefPlans.programme
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Hashable
 from typing import Any
 
 from apbot.agent.executed import AgentConfig
+from apbot.agent.programmes import programmes
 from apbot.agent.session import Session
-from apbot.plan.plan import Plan, Unreachable, plan
+from apbot.plan.plan import MacroAction, Plan, Unreachable, plan
 from apbot.sim.compiled import CompiledModel, State
 
 __all__ = ["BeliefPlans"]
@@ -58,18 +60,31 @@ class BeliefPlans:
         most easily, and nothing on the display shows it happen; a plan that sets a delay and
         then turns the programme dial succeeds on the belief and fails on the appliance. Setting
         the programmes first costs nothing when the lengths tie, and is as sound either way.
+        A programme is one the goal names or one the plan chooses on its way (a menu chosen
+        for the texture the goal asks, which starts there): see :func:`programmes`.
         """
-        model = self.session.belief.model
-        parents = {v.depends_on for v in model.variables.values() if v.depends_on} & set(target)
+        chosen = _chosen_programmes(self.session, found, target)
+        parents = set(chosen)
         macros = found.macro_actions
         last = max((i for i, m in enumerate(macros) if parents & set(m.expect)), default=0)
         if not any(set(m.expect) & (set(target) - parents) for m in macros[:last]):
             return found
         compiled, budget = self.session.belief.compiled, self.config.plan_budget
         work = self.config.plan_work
+        # what the plan does before it sets a goal value or a programme (switching the panel
+        # on, which may clear the delay on the way) stays first: a programme dial turned on a
+        # dark panel shows nothing
+        now = self.session.belief.values()
+        lead = list(itertools.takewhile(lambda m: not _sets(m, target, parents, now), macros))
+        state: State | None = self.session.belief.state
+        for action in [a for m in lead for a in m.actions]:
+            assert state is not None
+            state = compiled.apply(state, compiled.action_index[action.name], action.seconds)
+            if state is None:
+                return found
+        length = len(found) - sum(len(m.actions) for m in lead)
         try:
-            state: State | None = self.session.belief.state
-            head = plan(compiled, state, {n: target[n] for n in parents}, budget, work, len(found))
+            head = plan(compiled, state, chosen, budget, work, length)
             if not head.actions:  # the programmes hold: the rest is the search just made
                 return found
             for action in head.actions:
@@ -77,15 +92,16 @@ class BeliefPlans:
                 state = compiled.apply(state, compiled.action_index[action.name], action.seconds)
                 if state is None:
                     return found
-            if len(head) > len(found):
+            if len(head) > length:
                 return found
             # only a rest as short as the found plan's is of use: search no further
-            rest = plan(compiled, state, target, budget, work, len(found) - len(head))
+            rest = plan(compiled, state, target, budget, work, length - len(head))
         except Unreachable:
             return found
-        if len(head) + len(rest) != len(found):
+        if len(head) + len(rest) != length:
             return found
-        return Plan(found.goal, head.macro_actions + rest.macro_actions, found.expanded)
+        macro_actions = (*lead, *head.macro_actions, *rest.macro_actions)
+        return Plan(found.goal, macro_actions, found.expanded)
 
     def start_anyway(self, name: str, value: Any, target: dict[str, Any]) -> Plan | None:
         """The rest of the goal holds, and the belief says starting undoes part of it (a
@@ -129,3 +145,39 @@ class BeliefPlans:
         except Unreachable:
             return False
         return True
+
+
+def _sets(
+    macro: MacroAction, target: dict[str, Any], parents: set[str], now: dict[str, Any]
+) -> bool:
+    """Whether ``macro`` chooses a programme or brings a setting to its goal value (one it
+    does not hold ``now``)."""
+    return any(
+        n in parents or (target.get(n, _NONE) == v and now.get(n, _NONE) != v)
+        for n, v in macro.expect.items()
+    )
+
+
+_NONE = object()
+
+
+def _chosen_programmes(session: Session, found: Plan, target: dict[str, Any]) -> dict[str, Any]:
+    """The programmes the goal names, and those the plan changes on its way, each with the
+    value the plan leaves it at."""
+    compiled = session.belief.compiled
+    named = programmes(session.belief.model)
+    chosen = {n: target[n] for n in named & set(target)}
+    state: State | None = session.belief.state
+    for action in found.actions:
+        assert state is not None
+        state = compiled.apply(state, compiled.action_index[action.name], action.seconds)
+        if state is None:
+            return chosen
+    start = session.belief.values()
+    for name in sorted(named - set(target)):
+        if name not in compiled.var_index or state is None:
+            continue
+        value = compiled.value(state, name)
+        if value != start.get(name) and value is not None:
+            chosen[name] = value
+    return chosen

@@ -149,7 +149,9 @@ def press(
     if variable in changed - quiet and action.name in selecting(model):
         # a programme chosen: many appliances bring their settings back to its defaults,
         # whether or not the manual says so: what the display showed of them before is in doubt
-        session.doubtful |= set(session.evidence) - seen.shown() - changed
+        reprogrammed = set(session.evidence) - seen.shown() - changed
+        session.doubtful |= reprogrammed
+        session.reprogrammed |= reprogrammed
     if variable in changed - quiet and pointer is not None:
         # the settings a procedure takes after this choice belong to it (the weight typed for
         # the food chosen): what the display showed of them before is in doubt

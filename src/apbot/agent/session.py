@@ -74,6 +74,9 @@ class Session:
         # of those, settings a procedure takes after a choice made again (the weight typed for
         # the food chosen): a keypad one is typed again rather than believed
         self.rechosen: set[str] = set()
+        # of those, settings shown before a programme was chosen again (a programme key): the
+        # choice may have brought them back to its defaults, so they are worth a second look
+        self.reprogrammed: set[str] = set()
         # how often the display moved the belief's state where its own transitions did not go
         self.moved = 0
         self._unshowable: tuple[Any, frozenset[str]] = (None, frozenset())
@@ -163,6 +166,7 @@ class Session:
         self.ever_seen |= set(seen.values) | set(seen.outside) | seen.absent
         self.doubtful -= set(seen.values) | set(seen.outside) | seen.absent
         self.rechosen -= set(seen.values) | set(seen.outside) | seen.absent
+        self.reprogrammed -= set(seen.values) | set(seen.outside) | seen.absent
         self.contradicted.update(seen.outside)
         for name in seen.values:
             self.contradicted.pop(name, None)

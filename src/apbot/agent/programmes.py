@@ -1,0 +1,32 @@
+"""Which settings of a belief are programmes: choosing one may bring others back to defaults.
+
+A manual says far less often than the panel does that choosing a programme (a menu, a mode)
+puts its settings back to that programme's defaults; nothing on the display shows it happen.
+The agent therefore orders programmes first when plans tie (:mod:`apbot.agent.planning`) and
+doubts what the display showed of other settings once a programme was chosen again
+(:mod:`apbot.agent.pressing`).
+"""
+
+from __future__ import annotations
+
+import re
+
+from apbot.model.schema import ApplianceModel, DiscreteVariable
+
+
+def programmes(model: ApplianceModel) -> set[str]:
+    """The belief's programme-like settings: those others depend on, and choices among several
+    named values (a mode, a menu, a programme: three or more values, not figures). Choosing
+    one of them is what brings other settings back to its defaults on many appliances, said in
+    the manual or not; choosing one first costs nothing when the plans' lengths tie."""
+    found = {v.depends_on for v in model.variables.values() if v.depends_on}
+    for name, spec in model.variables.items():
+        values = [str(v) for v in (spec.values or ())] if isinstance(spec, DiscreteVariable) else []
+        if len(values) > 2 and sum(not _figure(v) for v in values) > len(values) // 2:
+            found.add(name)
+    return {n for n in found if n is not None}
+
+
+def _figure(value: str) -> bool:
+    """Whether a value is a number (``3``, ``1.5``, ``40%``): a level, not a named choice."""
+    return bool(re.fullmatch(r"[\d.,:]+\s*\S{0,3}", value.strip()))
