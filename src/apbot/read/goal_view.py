@@ -301,9 +301,20 @@ def _whole_day(info: VarInfo) -> bool:
 
 def _day_dial(info: VarInfo) -> bool:
     """A whole-day time setting that stops short of 24:00 (00:00 to 23:xx): the hours of a day
-    on a 24-hour dial, not a count of up to 24 hours (a 0-24 h timer ends at 24:00)."""
+    on a 24-hour dial, not a count of up to 24 hours (a 0-24 h timer ends at 24:00). One the
+    model says starts at 00:00 is a timer counting from empty (a keep-warm of 0 to 23 hours):
+    a time of day to feed or to start at starts at a time of day (07:00), or is not stated."""
     last = magnitude(info.values[-1]) if _whole_day(info) else None
-    return last is not None and last < 24 * 3600
+    return last is not None and last < 24 * 3600 and not _starts_empty(info.var)
+
+
+def _starts_empty(var: AnyVariable) -> bool:
+    """Whether the model states that a time setting starts at 00:00 (in each of its cases)."""
+    cases = getattr(var, "cases", None) or {}
+    starts = [getattr(c, "initial", None) for c in cases.values()] or [
+        getattr(var, "initial", None)
+    ]
+    return all(s is not None and magnitude(s) == 0 for s in starts)
 
 
 _DIMENSION_WORDS = {"power": "power", "temperature": "temperature", "mass": "weight"}
