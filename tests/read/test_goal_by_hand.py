@@ -73,3 +73,17 @@ def test_a_setting_set_by_hand_is_in_manual(pump: ApplianceModel, text: str) -> 
 )
 def test_no_manual_case_unless_the_setting_is_said_by_hand(pump: ApplianceModel, text: str) -> None:
     assert parse_instruction(pump, text).get("mode") in (None, "night")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "I don't want to pick the speed myself, let it choose",
+        "I'd rather not set the speed myself",
+        "No need for me to set the speed myself",
+        "Let it decide; I won't choose the speed myself",
+    ],
+)
+def test_a_setting_not_set_by_hand_leaves_the_mode(pump: ApplianceModel, text: str) -> None:
+    """A denial before 'myself' says the user will NOT set it: no MANUAL case from that."""
+    assert parse_instruction(pump, text).get("mode") != "manual"

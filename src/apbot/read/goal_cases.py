@@ -128,6 +128,8 @@ def set_by_hand(view: Model, text: Text, goal: Goal) -> None:
         if token.text not in _BY_HAND and not own:
             continue
         clause = _clause(text, k)
+        if any(_denial(text.word(j)) for j in clause if j < k):
+            continue  # "I don't want to pick the speed myself": not by hand
         for info in view.infos.values():
             parent = info.var.depends_on
             mode = view.infos.get(parent or "")
@@ -142,6 +144,14 @@ def set_by_hand(view: Model, text: Text, goal: Goal) -> None:
                 continue
             if own_concepts(info) & {text.concepts[j] for j in clause}:
                 goal[mode.name] = manual[0]
+
+
+_DENIALS = frozenset({"not", "no", "never", "nor", "without", "dont", "cannot"})
+
+
+def _denial(word: str) -> bool:
+    """A word that denies what follows it ("don't", "won't", "never", "no need")."""
+    return word in _DENIALS or word.endswith("n't")
 
 
 def _clause(text: Text, k: int) -> range:
