@@ -28,6 +28,7 @@ from typing import Any
 
 from apbot.model.domain import all_values
 from apbot.model.schema import ApplianceModel, DiscreteVariable, NumericVariable
+from apbot.read.goal_vocab import stem
 
 _CODE = re.compile(r"[a-z]{0,2}[- ]?\d{1,3}", re.IGNORECASE)
 _BOLD = re.compile(r"\*\*\s*([A-Za-z]{0,2}[- ]?\d{1,3})\s+([^*\n]{2,40}?)\s*\*\*")
@@ -128,17 +129,76 @@ def _aligned_blocks(manual: str) -> list[list[list[str]]]:
     return blocks
 
 
-def _pairs(block: list[list[str]], variables: dict[str, dict[str, Any]]) -> list[list[Pair]]:
+def _setting_words(model: ApplianceModel) -> dict[str, frozenset[str]]:
+    """Each setting's own words (its name's and its label's, stemmed): what a chart's column
+    heading says when the column holds that setting ("Massage", "Bubbles", "Heating")."""
+    out = {}
+    for name, var in model.variables.items():
+        text = f"{name} {getattr(var, 'label', '') or ''}"
+        out[name] = frozenset(stem(w) for w in re.findall(r"[A-Za-z]{3,}", text))
+    return out
+
+
+def _heads(block: list[list[str]], settings: dict[str, frozenset[str]]) -> list[set[str]] | None:
+    """The settings each column of a chart holds, by its heading row (the block's first row
+    that is not a rule): a heading of one or two words that are a setting's own words names
+    it. None when the first row names no setting (a chart without such headings)."""
+    first = next((r for r in block if not all(_RULE.match(c) for c in r)), None)
+    if first is None:
+        return None
+    heads = []
+    for cell in first:
+        words = {stem(w) for w in re.findall(r"[A-Za-z]{3,}", cell)}
+        named = len(words) <= 2 and len(re.findall(r"\S+", cell)) <= 3
+        heads.append({n for n, own in settings.items() if named and words and words <= own})
+    return heads if any(heads) else None
+
+
+def _in_column(
+    row: list[str],
+    i: int,
+    heads: list[set[str]] | None,
+    holds: dict[str, set[str]],
+) -> bool:
+    """Whether cell ``i`` and the next of ``row`` may be a code and its name under the chart's
+    headings: in a chart that gives one setting per column ("Purpose | Heating | Massage |
+    Bubbles | Timer"), a cell is a value of ITS column's setting, so a code stands only under a
+    heading of a setting that has it, and the next cell names it only when no other setting
+    heads that column. ``holds``: setting -> the codes (keyed) it has."""
+    if heads is None:
+        return True
+    if len(row) != len(heads):
+        return sum(1 for h in heads if h) < 2  # its cells' columns are not known
+    key = _key(row[i])
+    code_heads, name_heads = heads[i], heads[i + 1]
+    if code_heads and not any(key in holds.get(n, set()) for n in code_heads):
+        return False
+    return not name_heads or any(key in holds.get(n, set()) for n in name_heads)
+
+
+def _pairs(
+    block: list[list[str]],
+    variables: dict[str, dict[str, Any]],
+    settings: dict[str, frozenset[str]] | None = None,
+) -> list[list[Pair]]:
     """The (code, name) pairs a block can give: along its rows ("| 2 | French |"), and down
     its columns where a row of codes sits over a row of names ("Knob mark  1  2" over
-    "Approx. RH  70 %  60 %")."""
+    "Approx. RH  70 %  60 %"). ``settings`` (each setting's own words) lets a heading row
+    keep a row's cells to their columns (see ``_in_column``)."""
 
     def code(cell: str) -> bool:
         if re.search(r"\d[.,]\d", cell):
             return False  # "2.5" mm is a measure, not code 25
         return bool(_CODE.fullmatch(cell)) or any(_key(cell) in v for v in variables.values())
 
-    rows = [(r[i], r[i + 1]) for r in block for i in range(len(r) - 1) if code(r[i])]
+    heads = _heads(block, settings) if settings else None
+    holds = {name: set(values) for name, values in variables.items()}
+    rows = [
+        (r[i], r[i + 1])
+        for r in block
+        for i in range(len(r) - 1)
+        if code(r[i]) and _in_column(r, i, heads, holds)
+    ]
     columns = [
         (top[i], below[i])
         for top, below in pairwise(block)
@@ -178,9 +238,10 @@ def coded_names(model: ApplianceModel, manual: str) -> list[tuple[str, Any, str]
     variables = _coded_variables(model, _headings(manual) if manual else frozenset())
     if not variables or not manual:
         return []
+    settings = _setting_words(model)
     out: list[tuple[str, Any, str]] = []
     for block in _table_blocks(manual):
-        for pairs in _pairs(block, variables)[:1]:
+        for pairs in _pairs(block, variables, settings)[:1]:
             best, score = _best(pairs, variables)
             if best is not None and score[0] >= 0.6:
                 out.extend(_named(pairs, variables[best], best))
@@ -190,7 +251,7 @@ def coded_names(model: ApplianceModel, manual: str) -> list[tuple[str, Any, str]
     named = {name for name, _, _ in out}
     chosen: dict[str, tuple[tuple[float, float, int], list[Pair]]] = {}
     for block in _aligned_blocks(manual):
-        for pairs in _pairs(block, variables):
+        for pairs in _pairs(block, variables, settings):
             best, score = _best(pairs, variables)
             if best is None or best in named or score[0] < 0.6 or score[1] < 0.5:
                 continue

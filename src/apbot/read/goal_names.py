@@ -8,6 +8,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from apbot.read.goal_fit import CODE
+from apbot.read.goal_scales import at_its_limit
 from apbot.read.goal_text import (
     CLAUSE_ENDS,
     CONNECTORS,
@@ -69,6 +70,8 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
                 continue  # "manual speed 3": the speed, in its manual kind
             if len(stems) == 1 and text.stems[i] in running and not own:
                 continue  # "Brew six cups", "get it brewing": the operation, not a BREW mode
+            if weight * quality < 1.0 and len(stems) == 1 and at_its_limit(text, i):
+                continue  # "as strong as it goes": an end of a scale, not the HIGH it means
             if len(stems) == 1 and _names_setting(view, var, text, i):
                 continue  # "low fan", "fan on quiet": the FAN setting, not the FAN mode
             score = len(stems) * weight * quality + 0.5 * own

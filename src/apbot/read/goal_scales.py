@@ -10,6 +10,7 @@ from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab, said_before
 from apbot.read.goal_twins import find_twins
 from apbot.read.goal_values import (
     OFF_WORDS,
+    bare_number,
     generic,
     magnitude,
     numeric_values,
@@ -59,8 +60,8 @@ def superlatives(
             if info.timing == "clock":
                 continue  # "the hottest day": the time of day now is no scale to pick an end of
             values = domain_values(view, info, goal)
-            if scale_index is not None and end is None and len(values) != scale_index[1]:
-                continue
+            if scale_index is not None and end is None and len(_levels(values)) != scale_index[1]:
+                continue  # "a medium massage" of OFF, 1, 2, 3: medium of the three levels
             score = near_vocab(info, text, k, k + 1, reach=reach) or _after_its_case(
                 info, text, k, goal
             )
@@ -87,7 +88,7 @@ def superlatives(
         elif end is not None:
             goal[name] = values[end]
         elif scale_index is not None:
-            goal[name] = values[scale_index[0]]
+            goal[name] = _levels(values)[scale_index[0]]
         where[name] = k
         claimed.add(k)
 
@@ -95,19 +96,24 @@ def superlatives(
 _MORE = frozenset({"much", "many", "high", "hot", "long", "strong", "fast", "big", "loud", "warm"})
 _LESS = frozenset(
     {"little", "few", "low", "cool", "short", "weak", "slow", "small", "quiet", "cold"}
-)
+) | frozenset({"gentle", "soft", "mild"})
 _KIND_OF_WORD = {
     **dict.fromkeys(("hottest", "warmest", "coldest", "coolest"), "temperature"),
     **dict.fromkeys(("hot", "warm", "cold", "cool"), "temperature"),
     **dict.fromkeys(("longest", "shortest", "long", "short"), "time"),
+    **dict.fromkeys(("strongest", "weakest", "gentlest", "softest", "mildest"), "level"),
+    **dict.fromkeys(("strong", "weak", "gentle", "soft", "mild"), "level"),
 }
+"""The kind a superlative's own word measures; "level": a strength, counted in numbered
+levels (an intensity 1-5, a massage OFF/1/2/3), whatever the setting is called."""
+_AS_AS_KINDS = frozenset(w for w, kind in _KIND_OF_WORD.items() if not w.endswith("est"))
 
 
 def _kind_of(text: Text, k: int) -> str | None:
     """The kind of quantity a superlative's own word measures ("the hottest" a temperature,
     "as long as it allows" a duration), whatever setting it is said of."""
     word = text.word(k)
-    if word in ("hot", "warm", "cold", "cool", "long", "short"):
+    if word in _AS_AS_KINDS:
         if text.word(k - 1) != "as" or text.word(k + 1) != "as":
             return None  # "a long wash", "hot water": no end of a scale
         if not _its_limit(text, k + 2):
@@ -204,9 +210,35 @@ def _only_of_kind(view: Model, goal: Goal, kind: str) -> tuple[float, str] | Non
             info.dimension == kind
             or (kind == "temperature" and info.dimension == "fahrenheit")
             or (kind == "time" and isinstance(info.var, TimeVariable) and info.timing == "duration")
+            or (kind == "level" and _numbered_levels(info))
         )
     ]
     return (0.0, found[0]) if len(found) == 1 else None
+
+
+def _numbered_levels(info: VarInfo) -> bool:
+    """A strength counted in levels: a unitless setting of plain numbers (1-5), or of OFF and
+    numbers (OFF, 1, 2, 3), that no word of heat or time names — what "the gentlest level" or
+    "as strong as it goes" picks an end of when no setting is named."""
+    if info.dimension is not None or isinstance(info.var, TimeVariable):
+        return False
+    if isinstance(info.var, NumericVariable) and info.var.unit:
+        return False
+    if {concept("temperature"), concept("time")} & set(info.vocab):
+        return False
+    numbers = [v for v in info.values if bare_number(v) is not None]
+    rest = [v for v in info.values if bare_number(v) is None]
+    return len(numbers) >= 2 and all(str(v).casefold() in (*OFF_WORDS, "none") for v in rest)
+
+
+def _levels(values: list[Any]) -> list[Any]:
+    """The levels of a setting in order, without the OFF a numbered list opens with (OFF, 1,
+    2, 3 has three levels: "medium" is 2); other lists as they are."""
+    rest = [v for v in values if bare_number(v) is None]
+    offs = all(str(v).casefold() in (*OFF_WORDS, "none") for v in rest)
+    if rest and len(rest) < len(values) - 1 and offs:
+        return _ordered_values([v for v in values if bare_number(v) is not None])
+    return values
 
 
 _AMOUNTS = frozenset({"much", "many", "little", "few"})
@@ -226,6 +258,20 @@ def _as_as(text: Text, k: int) -> tuple[int, int] | None:
             end = -1 if word in _MORE else 0
             return end, (j - k - 1 if word in _AMOUNTS else 2)
     return None
+
+
+def at_its_limit(text: Text, k: int) -> bool:
+    """ "as strong as it goes", "as hot as possible": the word at ``k`` is compared with the
+    appliance's own limit, so it asks for an end of a scale, not for a value the word names
+    (a heat's HIGH that "strong" stands for)."""
+    if text.word(k - 1) != "as" or text.word(k) not in _MORE | _LESS:
+        return False
+    for j in range(k + 1, min(k + 5, len(text.tokens))):
+        if text.word(j) in CLAUSE_ENDS or text.word(j) == ",":
+            return False
+        if text.word(j) == "as":
+            return _its_limit(text, j + 1)
+    return False
 
 
 def _restates(text: Text, k: int) -> bool:
