@@ -144,6 +144,38 @@ def set_by_hand(view: Model, text: Text, goal: Goal) -> None:
                 continue
             if own_concepts(info) & {text.concepts[j] for j in clause}:
                 goal[mode.name] = manual[0]
+        if not any(i.var.depends_on for i in view.infos.values()):
+            _by_hand_unlinked(view, text, goal, clause)
+
+
+def _by_hand_unlinked(view: Model, text: Text, goal: Goal, clause: range) -> None:
+    """The same on a model that says nothing of which mode a setting depends on (a belief read
+    from a manual seldom does): the one selector with a MANUAL value beside others (AUTO, the
+    presets) is set to MANUAL when the clause of "myself" names another adjustable setting, or
+    the quantity it measures — not a clock, which no mode chooses — unless the panel starts in
+    MANUAL."""
+    modes = [
+        i
+        for i in view.infos.values()
+        if i.role == "setting"
+        and isinstance(i.var, DiscreteVariable)
+        and len(i.values) > 1
+        and sum(_manual(i.var, v) for v in i.values) == 1
+    ]
+    if len(modes) != 1 or modes[0].name in goal:
+        return
+    mode, var = modes[0], modes[0].var
+    assert isinstance(var, DiscreteVariable)
+    manual = next(v for v in mode.values if _manual(var, v))
+    if str(manual) == str(_starts_at(var)):
+        return
+    said = {text.concepts[j] for j in clause}
+    for info in view.infos.values():
+        if info is mode or info.role != "setting" or info.timing in ("clock", "at"):
+            continue
+        if own_concepts(info) & said or (info.dimension and stem(info.dimension) in said):
+            goal[mode.name] = manual  # "the mist", or what it measures: "the temperatures"
+            return
 
 
 _DENIALS = frozenset({"not", "no", "never", "nor", "without", "dont", "cannot"})
