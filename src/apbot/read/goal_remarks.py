@@ -53,6 +53,11 @@ _PLACING = re.compile(
     re.IGNORECASE,
 )
 
+# "on the gentlest level", "on its highest setting": what is put there is set to a level
+_ON_A_LEVEL = re.compile(
+    r"\b(?:on|at|to)\s+(?:the|its|their)\s+(?:\w+\s+){0,2}(?:level|setting)s?\b", re.IGNORECASE
+)
+
 
 def without_remarks(view: Model, instruction: str) -> str:
     """The instruction without its remark clauses (unchanged when it has none)."""
@@ -84,6 +89,8 @@ def _remark(view: Model, clause: str) -> bool:
     """A clause about the user or others that asks nothing and names no value, or one that
     tells the user where to put something."""
     if _PLACING.match(clause):
+        if _ON_A_LEVEL.search(clause):
+            return False  # "put the rollers on the gentlest level": a level, not a place
         said = set(Text.of(clause).stems)
         return not any(own_stems(info) & said for info in view.infos.values())
     if not _SUBJECT.match(clause) or _ASKS.search(clause):
