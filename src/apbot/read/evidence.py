@@ -26,6 +26,7 @@ from apbot.read.evidence_checks import (
 from apbot.read.evidence_lists import ListReader
 from apbot.read.evidence_whose import (
     _KEY_HEAD,
+    _after_own,
     _fitting_step,
     _foreign_units,
     _lead,
@@ -219,9 +220,10 @@ class EvidenceReader(ListReader, AnywhereReader):
                 and i > 0
                 and units[i - 1].line == unit.line
                 and not unit.cells
-                and _presses_another(units[i - 1].text, other_labels, own)
+                and _presses_another(_after_own(units[i - 1].text, own), other_labels, own)
             ):
                 pressed = None  # "Press ▲ or ▼. Each press moves the time …": the pair's
+                # (also "Press HOURS, then press ▲ or ▼. Each press …": the last pressed)
             if ev.each_press_at is None and not quiet and pressed:
                 ev.each_press_at = i
             if ev.shown_hmm is None and (minutes := find_shown_hmm(text)):  # ("2:00": no minutes)
