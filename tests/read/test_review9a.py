@@ -33,3 +33,30 @@ def test_each_press_after_a_key_then_the_pair_in_one_sentence_is_the_pairs() -> 
     assert any(
         set(s.actions) == {"press_up", "press_down"} and s.variable == "hours" for s in steps
     )
+
+
+# a key table whose hold column releases the door lock: no lock of the keys
+WASHER = """Aquaclean Washer WM-5
+
+KEYS
+
+| Key | Press | Hold 3 s |
+|---|---|---|
+| SPIN | spin speed 400 / 800 / 1200 | - |
+| PAUSE | pause / go on | door lock released |
+| START | start the programme | - |
+
+Press SPIN to choose the spin speed.
+"""
+
+
+def test_a_hold_cell_releasing_the_door_lock_is_no_key_lock() -> None:
+    actions = ["press_spin", "press_pause", "hold_pause", "press_start"]
+    model = read_manual(WASHER, actions).model
+    assert "child_lock" not in model.variables, list(model.variables)
+
+
+def test_a_hold_cell_naming_the_key_lock_still_is_the_lock() -> None:
+    text = WASHER.replace("door lock released", "key lock on / off")
+    model = read_manual(text, ["press_spin", "press_pause", "hold_pause", "press_start"]).model
+    assert "child_lock" in model.variables, list(model.variables)
