@@ -60,3 +60,24 @@ def test_a_hold_cell_naming_the_key_lock_still_is_the_lock() -> None:
     text = WASHER.replace("door lock released", "key lock on / off")
     model = read_manual(text, ["press_spin", "press_pause", "hold_pause", "press_start"]).model
     assert "child_lock" in model.variables, list(model.variables)
+
+
+# a delay told span by span under DELAY's own sentence, next to COOK TIME with no range
+RICE = """Ricey Cooker RC-8
+
+TIMERS
+
+Press COOK TIME to set how long it cooks.
+Press DELAY to set when the rice is ready:
+- from 1:00 to 4:00 each press adds 30 minutes;
+- from 4:00 to 12:00 each press adds 1 hour.
+Press START to begin.
+"""
+
+
+def test_spans_under_another_keys_sentence_are_not_this_keys() -> None:
+    model = read_manual(RICE, ["press_cook_time", "press_delay", "press_start"]).model
+    delay = model.variables["delay"].model_dump(mode="json")
+    assert len(delay["ranges"]) == 2, delay
+    cook = model.variables["cook_time"].model_dump(mode="json")
+    assert cook.get("ranges") != delay["ranges"], cook
