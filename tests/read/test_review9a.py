@@ -81,3 +81,12 @@ def test_spans_under_another_keys_sentence_are_not_this_keys() -> None:
     assert len(delay["ranges"]) == 2, delay
     cook = model.variables["cook_time"].model_dump(mode="json")
     assert cook.get("ranges") != delay["ranges"], cook
+
+
+def test_a_capacity_the_user_is_told_to_choose_in_ah_still_is_a_setting() -> None:
+    from apbot.read.values import find_ranges
+
+    told = find_ranges("Press SIZE to choose the battery capacity from 20 - 200 Ah.")
+    assert [(r.low, r.high) for r in told] == [(20, 200)], told
+    assert find_ranges("Battery sizes  4 - 14 Ah   charging current 1 A") == []
+    assert find_ranges("Set the room size, 10 - 50 m², with + and -.")
