@@ -90,16 +90,3 @@ def test_a_capacity_the_user_is_told_to_choose_in_ah_still_is_a_setting() -> Non
     assert [(r.low, r.high) for r in told] == [(20, 200)], told
     assert find_ranges("Battery sizes  4 - 14 Ah   charging current 1 A") == []
     assert find_ranges("Set the room size, 10 - 50 m², with + and -.")
-
-
-def test_a_bracketed_default_column_of_one_value_each_in_words_or_a_unit_is_defaults() -> None:
-    from apbot.read.cases_cells import defaults_head
-
-    assert defaults_head("Dryness (default)", ["Cupboard dry", "Iron dry", "Extra dry"])
-    assert defaults_head("Temperature (default)", ["200 °C", "180 °C", "160 °C"])
-    assert not defaults_head(
-        "Temperatures [default]", ["20 30 [40] 60", "30 [40] 50", "[20] 30 40"]
-    )
-    assert defaults_head("Spin (default)", ["1400 (1200)", "1000 (800)", "800"])
-    assert not defaults_head("Steam [default]", ["low, [medium], high", "[low], medium"])
-    assert not defaults_head("Time [standard]", ["0:20 – 1:30 [0:40]", "0:30 – 2:00 [1:00]"])

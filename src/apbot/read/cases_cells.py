@@ -23,17 +23,6 @@ DEFAULT_WORDS = {"default", "standard", "preset", "initial", "factory"}
 _BRACKETED = re.compile(r"\[[^\]]*\]|\([^)]*\)")
 
 
-def _several(cell: str) -> bool:
-    """Whether a cell lists two or more values ("20 30 [40] 60", "low, [medium], high"): two
-    numbers, or two items between commas, slashes or arrows, the bracketed part aside; one
-    value in words or with its unit ("Extra dry", "200 °C", "1400 (1200)") is one."""
-    # a default in round brackets aside ("1400 (1200)" is one), one in square ones an item
-    bare = re.sub(r"\(([^)]*)\)", " ", re.sub(r"\[([^\]]*)\]", r"\1", cell))
-    if len(re.findall(r"\d+(?:[.,:]\d+)?", bare)) >= 2:
-        return True
-    return len([x for x in re.split(r"\s*(?:,|/|→|->)\s*", bare) if x.strip()]) >= 2
-
-
 def defaults_head(head: str, cells: list[str]) -> bool:
     """A column of defaults ("Default", "Standard time", "max (preset)" over "1400 (1200)"),
     not a column of a setting's values whose default is marked in its cells and named in
@@ -45,7 +34,10 @@ def defaults_head(head: str, cells: list[str]) -> bool:
     if set(words(_BRACKETED.sub(" ", head))) & DEFAULT_WORDS:
         return True
     filled = [c for c in cells if re.search(r"[^\W_]", c)]
-    several = sum(bool(find_ranges(c)) or _several(c) for c in filled)
+    several = sum(
+        bool(find_ranges(c)) or len(re.split(r"\s*,\s*|\s+", _BRACKETED.sub(" ", c).strip())) >= 2
+        for c in filled
+    )
     return several * 2 <= len(filled)
 
 
