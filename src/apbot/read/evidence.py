@@ -26,6 +26,7 @@ from apbot.read.evidence_checks import (
 from apbot.read.evidence_lists import ListReader
 from apbot.read.evidence_whose import (
     _KEY_HEAD,
+    _after_own,
     _fitting_step,
     _foreign_units,
     _lead,
@@ -38,7 +39,9 @@ from apbot.read.labels import words
 from apbot.read.shapes import (
     _KEYPAD_WORDS,
     CHOICE_WORDS,
+    DOWN_WORDS,
     LAMP_LIST_RE,
+    UP_WORDS,
     Evidence,
     _aside,
     _cell_key,
@@ -86,6 +89,16 @@ class EvidenceReader(ListReader, AnywhereReader):
             self._evidence[key] = self._read_evidence(tokens)
         return self._evidence[key]
 
+    def _only_pair_named(self, i: int, tokens: list[str]) -> bool:
+        """Whether the keys unit ``i`` names, this one aside, are all the stepping pair ("Press
+        + to set it:" then its steps span by span): then its steps are this key's, while under
+        "Press DELAY to set …:" they are DELAY's."""
+        return all(
+            set(t.split("_")) & (UP_WORDS | DOWN_WORDS)
+            for t, lab in self.labels.items()
+            if t not in tokens and i in lab.mentions
+        )
+
     def _turned(self, tokens: list[str]) -> bool:
         """The panel has a knob or dial other than these controls (its turns are clicks)."""
         return any(
@@ -122,7 +135,12 @@ class EvidenceReader(ListReader, AnywhereReader):
         for i in [*context, *sorted(steps - set(context))]:  # (a step further down: its own)
             text = units[i].text
             unit = units[i]
-            pieced = len(find_stepped_pieces(_with_items(units, i))) >= 2  # its steps, item by item
+            item = unit.bullet and unit.step is None  # (an item's spans are its lead's)
+            told = text if item else _with_items(units, i)
+            pieced = (
+                len(find_stepped_pieces(told)) >= 2  # its steps, item by item, pressing
+                and self._only_pair_named(i, tokens)  # the pair, not another key's setting
+            )
             if i in elsewhere and i not in mentions and not unit.cells and not pieced:
                 continue  # a sentence about another key says nothing about this one
             if i not in mentions and other_model(units, i):
@@ -182,7 +200,7 @@ class EvidenceReader(ListReader, AnywhereReader):
                     ranges = [Range(ranges[0].low, ranges[0].high, ranges[0].unit, row_step)]
             if unit.cells:  # "| 1 – 2 |" then "| 3 – 4 |" … "| 9 – 10 |": groups of one setting
                 ranges = [_rows_span(units, i, r) for r in ranges]
-            pieces = find_stepped_pieces(_with_items(units, i)) if not ev.ranges else []
+            pieces = find_stepped_pieces(told) if not ev.ranges else []
             arrows = find_arrow_pieces(text)  # "1 h → … → 12 h one hour per press 12 h → …"
             if arrows and _fits("s", tokens) and _covers(arrows, ev.ranges):
                 pieces, ev.ranges = arrows, []
@@ -219,9 +237,10 @@ class EvidenceReader(ListReader, AnywhereReader):
                 and i > 0
                 and units[i - 1].line == unit.line
                 and not unit.cells
-                and _presses_another(units[i - 1].text, other_labels, own)
+                and _presses_another(_after_own(units[i - 1].text, own), other_labels, own)
             ):
                 pressed = None  # "Press ▲ or ▼. Each press moves the time …": the pair's
+                # (also "Press HOURS, then press ▲ or ▼. Each press …": the last pressed)
             if ev.each_press_at is None and not quiet and pressed:
                 ev.each_press_at = i
             if ev.shown_hmm is None and (minutes := find_shown_hmm(text)):  # ("2:00": no minutes)

@@ -61,6 +61,16 @@ def _presses_another(text: str, others: list[str], own: set[str]) -> bool:
     return pressed(symbols) and not named  # ("Press WASH, RINSE or SPIN": RINSE's too)
 
 
+def _after_own(text: str, own: set[str]) -> str:
+    """What a sentence says after its last naming of this key ("Press HOURS, then press ▲ or
+    ▼." → ", then press ▲ or ▼."): the keys pressed there are pressed after it, so an "each
+    press" told next is theirs."""
+    ends = [
+        m.end() for o in own if o for m in re.finditer(rf"(?<!\w){re.escape(o)}(?!\w)", text, re.I)
+    ]
+    return text[max(ends) :] if ends else text
+
+
 def _without_own_name(items: list[str], own: set[str]) -> list[str]:
     """Values quoted as the display prints them, the key's own name in front of each ("The
     display reads COLOR 1, COLOR 2 or COLOR 3." for COLOR): the values are what follows it."""

@@ -55,6 +55,10 @@ def _own_rows(b: Builder, key: ActionInfo) -> list[int]:
     return rows
 
 
+# the lock of a door or lid ("door lock released"), not of the keys
+_DOOR_LOCK = re.compile(r"\b(?:door|lid|hatch|cover|drawer)\s+(?:is\s+)?lock", re.I)
+
+
 def held_lock(b: Builder, key: ActionInfo) -> bool:
     """The key's row in a key table says, in its column for holding, that the hold is the
     lock ("| ALARM | door alarm off / on | 5 s: key lock on / off |")."""
@@ -62,7 +66,7 @@ def held_lock(b: Builder, key: ActionInfo) -> bool:
         return False
     units = b.manual.units
     return any(
-        re.search(r"\block\b", cell, re.I)
+        re.search(r"\block\b", cell, re.I) and not _DOOR_LOCK.search(cell)
         for i in _own_rows(b, key)
         if units[i].cells
         for cell in _hold_cells(units[i])

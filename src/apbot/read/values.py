@@ -110,9 +110,12 @@ class Range:
 
 
 _FOREIGN_UNIT = re.compile(
-    r"\s*(?:V|VAC|Hz|kHz|mm|cm|m[²³23]?|ft[²2]|nm|µm|mA|mAh|Ah|dB|dBA|kWh|VA|bar|MPa|kPa|psi|Pa|lux)"
-    r"(?![\w])"
+    r"\s*(?:V|VAC|Hz|kHz|mm|cm|m|nm|µm|mA|mAh|dB|dBA|kWh|VA|bar|MPa|kPa|psi|Pa|lux)(?![\w])"
 )  # units no setting of a household appliance is set in: ratings and sizes
+# units of a rating or a size ("4 - 14 Ah", "20 - 30 m²") that a charger's or a room
+# appliance's setting may still be chosen in when the sentence tells to ("choose … 20 - 200 Ah")
+_RATED_UNIT = re.compile(r"\s*(?:Ah|m[²³23]|ft[²2])(?![\w])")
+_SET_VERB = re.compile(r"\b(?:set|sets|setting|choose|select|adjust)\b", re.IGNORECASE)
 
 
 _ASIDE_RE = re.compile(  # "1 (barely warm)": words in brackets, no number and no unit
@@ -167,6 +170,8 @@ def _ranges(text: str) -> list[Range]:
             continue  # "press A and B": no unit, "and" joins words more often than numbers
         if unit == "" and (hi > 10_000 or _FOREIGN_UNIT.match(text, m.end())):
             continue  # "220–240 V", "12–32 cm": a rating or a size, not a setting's range
+        if unit == "" and _RATED_UNIT.match(text, m.end()) and not _SET_VERB.search(text):
+            continue  # "4 - 14 Ah  1 A": a capacity guide, not a capacity to choose
         if unit == "":
             hi = further_top(text, m.end(), hi)  # "1 to 9, or 1 and then 0 for level 10"
         out.append(Range(lo, hi, unit))
