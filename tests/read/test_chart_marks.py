@@ -96,3 +96,12 @@ def test_a_mark_the_legend_calls_on_or_off_is_each_presets_default() -> None:
     assert turner.cases["burger"].initial == "on"
     assert turner.cases["salmon"].initial == "off"
     assert turner.cases["toast"].initial == "off"
+
+
+def test_an_ellipsis_between_two_amounts_spans_a_range_but_not_in_a_list() -> None:
+    from apbot.read.values import find_ranges
+
+    assert [(r.low, r.high, r.unit) for r in find_ranges("2 min … 45 min")] == [(2, 45, "min")]
+    assert [(r.low, r.high) for r in find_ranges("(warm air, 40 … 70 °C)")] == [(40, 70)]
+    assert find_ranges("steps of 5: 10, 15, 20 … 60 °C") == []
+    assert find_ranges("then the digits 1 … 9") == []
