@@ -10,6 +10,7 @@ into a dependent one with a case per row; a row that says nothing usable ("—",
 from __future__ import annotations
 
 import re
+from dataclasses import replace
 from typing import Any
 
 from apbot.model.values import parse_hms
@@ -23,9 +24,10 @@ from apbot.read.cases_cells import (
     defaults_head,
 )
 from apbot.read.cases_lists import as_choices, listed_cases, listed_column
-from apbot.read.cases_marks import mark_cases
+from apbot.read.cases_marks import _mark, mark_cases
 from apbot.read.cases_tables import _parent_values, _tables
 from apbot.read.labels import words
+from apbot.read.marks_legend import legend_meanings, read_mark
 from apbot.read.shapes import CHOICE_WORDS
 from apbot.read.text import Unit
 from apbot.read.values import Range, find_ranges, unit_name
@@ -62,7 +64,12 @@ def apply_cases(b: Builder) -> None:
         if len(rows) < 2:
             continue
         guessed_only = False  # only keys read with no values take a column-per-key chart's
-        if sum(h.strip(" *.").upper() in keys for h in header) >= 2:  # lists ("Cold, Warm")
+        keyed = [  # a key heading a column of marks ("RINSE+" over "● / –") lists no values
+            c
+            for c, h in enumerate(header)
+            if h.strip(" *.").upper() in keys and not _marks_column(rows, c)
+        ]
+        if len(keyed) >= 2:  # lists ("Cold, Warm")
             if not _guessed_listed(b, header, rows):
                 continue  # a column per key ("| TEMP. | SPIN | SOIL |"): each lists its own values
             guessed_only = True
@@ -113,6 +120,8 @@ def apply_cases(b: Builder) -> None:
                     if guessed and len(cases) >= 2:
                         as_choices(spec, cases)
                         b.unread.discard(name)
+                elif sorted(spec.get("values", [])) == ["off", "on"]:
+                    cases = _cases(spec, _marks_told(b, rows, column), column, pvalues)
                 else:
                     cases = _cases(spec, rows, column, pvalues)
                 if len(cases) >= 2 and _presets(b, parent, name, cases, rows[0]):
@@ -139,6 +148,26 @@ def apply_cases(b: Builder) -> None:
                         b.manual.units.index(rows[0]),
                     )
                 break
+
+
+def _marks_column(rows: list[Unit], column: int) -> bool:
+    """Whether every row has a mark or a dash in the column ("●", "–", "✓"), one with a mark."""
+    cells = [r.cells[column] if column < len(r.cells) else "" for r in rows]
+    return all(_mark(c) is not None for c in cells) and any(_mark(c) for c in cells)
+
+
+def _marks_told(b: Builder, rows: list[Unit], column: int) -> list[Unit]:
+    """The rows with an on/off option's column of marks told in the words of the chart's
+    legend ("●" → "on" where "● = starts ON", "✗" → "no" where "✗ = not available")."""
+    meanings = legend_meanings("\n".join(b.manual.lines))
+    out = []
+    for row in rows:
+        if column < len(row.cells):
+            cells = list(row.cells)
+            cells[column] = read_mark(cells[column], meanings)
+            row = replace(row, cells=tuple(cells))
+        out.append(row)
+    return out
 
 
 _YES_NO = {"yes", "no", "y", "n", "—", "-", "–", ""}

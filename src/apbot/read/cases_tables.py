@@ -34,6 +34,9 @@ def _parent_values(cell: str, values: list[str]) -> list[str]:
     found = []
     for part in re.split(r"\s*(?:,|/|&|\band\b)\s*", _norm(cell)):
         part = re.sub(r"^\d+[.)]?\s*", "", part)
+        bare = re.sub(r"\s*\([^)]*\)?$", "", part)  # "PIZZA (slice)": the name, its picture aside
+        if part not in values and bare in values:
+            part = bare
         if part in values:  # "White" is WHITE even where WHITE QUICK comes first
             found.append(part)
             continue

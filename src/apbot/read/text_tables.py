@@ -302,5 +302,8 @@ def _joined_cells(line: str, wrapped: list[tuple[int, str]]) -> tuple[str, ...]:
     cells = [text for _, text in placed]
     for at, text in wrapped:
         k = max((n for n, (start, _) in enumerate(placed) if start <= at + 2), default=0)
-        cells[k] = f"{cells[k]} {text}"
+        if re.search(r"[A-Za-z]-$", cells[k]) and text[:1].isalpha():
+            cells[k] = f"{cells[k][:-1]}{text}"  # "PRE-" over "WASH": a word broken in two
+        else:
+            cells[k] = f"{cells[k]} {text}"
     return tuple(cells)

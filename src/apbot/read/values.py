@@ -123,9 +123,28 @@ _ASIDE_RE = re.compile(  # "1 (barely warm)": words in brackets, no number and n
 )
 
 
+# "5 min … 30 min", "80 … 200 °C": an ellipsis between two lone amounts spans a range; in a
+# list ("10, 15, 20 … 60", "0:35, 0:40 … 2:55") it stands for the items left out
+_ELLIPSIS_SPAN_RE = re.compile(
+    rf"(?<![\d:.])(\d+(?:[.,]\d+)?(?:\s*{UNIT})?)\s+(?:…|\.{{3}})\s+"
+    rf"(?=\d+(?:[.,]\d+)?(?:\s*{UNIT})?(?![\d:,]|\s*,))",
+    re.IGNORECASE,
+)
+
+
+def _spanned(m: re.Match[str]) -> str:
+    listed = re.search(r"\d\s*\S{0,3}\s*,\s*$", m.string[: m.start()])  # "10, 15, 20 … 60"
+    # a bare "1 … 10" may be a key sequence's digits; an amount names its unit
+    unit = re.match(rf"\s*\d+(?:[.,]\d+)?\s*{UNIT}(?!\w)", m.string[m.end() :], re.I)
+    if listed or not (unit or re.search(r"[^\d\s.,]", m.group(1))):
+        return m.group(0)
+    return f"{m.group(1)} – "
+
+
 def find_ranges(text: str) -> list[Range]:
     """Ranges written in the text (times h:mm in seconds with unit ``s``); a word or two in
     brackets after a number is an aside ("from 1 (barely warm) to 10 (full power)")."""
+    text = _ELLIPSIS_SPAN_RE.sub(_spanned, text)
     out = _ranges(text)
     # a label saying how to read a clock range ("0:01 - 99:59 (min:s)") is no aside to drop
     bare = _ASIDE_RE.sub(lambda m: m[0] if minutes_and_seconds(text, m.start()) else "", text)

@@ -1,0 +1,64 @@
+"""A chart's legend of marks ("● = option possible   – = not possible"), read as meanings.
+
+Commercial charts print a symbol per cell and explain the symbols once, on a line of their
+own above the chart. The same symbol means "offered" in one manual and "starts on" in
+another (``● = reminder starts ON   ○ = … OFF``), and a cross is "not available" as often as
+it is "selected", so a cell's mark is read through its own manual's legend.
+"""
+
+from __future__ import annotations
+
+import re
+
+# a symbol set apart as the head of a legend entry: no letter, digit, bracket or stop
+_SYMBOL = r"[^\w\s\[\](){}.,;:'\"/|<>=+#]"
+_ENTRY_RE = re.compile(rf"({_SYMBOL})(?:\s*[=:]\s*|\s+)([A-Za-z][^=]*)")
+_NOT_RE = re.compile(
+    r"\b(?:not?|n/a|none|unavailable|excluded|omitted|skipped|left out|without|cannot)\b", re.I
+)
+
+
+def _meaning(text: str) -> str:
+    """What a legend entry says a mark stands for: on, off, no (not offered) or yes."""
+    if re.search(r"\boff\b", text, re.I):
+        return "off"
+    if re.search(r"\bon\b", text, re.I):
+        return "on"
+    return "no" if _NOT_RE.search(text) else "yes"
+
+
+def legend_meanings(text: str) -> dict[str, str]:
+    """Symbol → meaning, from lines explaining two or more symbols, each symbol followed by a
+    short explanation and set off from the next entry by a wide gap ("✓ = can be set    ✗ =
+    not available", "● yes    – no"). A symbol explained two ways is left out."""
+    out: dict[str, str] = {}
+    clash: set[str] = set()
+    for line in text.split("\n"):
+        pieces = re.split(r"\s{2,}", line.strip())
+        entries: list[tuple[str, str]] = []
+        k = 0
+        while k < len(pieces):
+            piece = pieces[k]
+            if len(piece) == 1 and k + 1 < len(pieces):  # "●  phase included": one entry
+                piece = f"{piece} {pieces[k + 1]}"
+                k += 1
+            k += 1
+            m = _ENTRY_RE.fullmatch(piece)
+            if m and len(m.group(2).split()) <= 10:
+                entries.append((m.group(1), _meaning(m.group(2))))
+        if len(entries) < 2 or not any(ord(s) > 0x7F for s, _ in entries):
+            continue
+        for symbol, meaning in entries:
+            if out.get(symbol, meaning) != meaning:
+                clash.add(symbol)
+            out[symbol] = meaning
+    return {s: m for s, m in out.items() if s not in clash}
+
+
+def read_mark(cell: str, meanings: dict[str, str]) -> str:
+    """A cell led by a legend's mark with the mark told in words ("✗ (DELAY --)" → "no
+    (DELAY --)", "●" → "on" where ● means "starts ON"); other cells as they are."""
+    text = cell.strip()
+    if text and text[0] in meanings and (len(text) == 1 or text[1] == " "):
+        return f"{meanings[text[0]]}{text[1:]}"
+    return cell
