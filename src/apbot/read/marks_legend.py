@@ -18,11 +18,18 @@ _NOT_RE = re.compile(
 )
 
 
+# "on" as a preposition ("available on this cycle", "depends on load") or both states named
+# ("can be switched on or off") says nothing about how the option starts
+_ON_WORD_RE = re.compile(r"\bon\s+(?!by\b|at\b|when\b|after\b|until\b|for\b|in\b|as\b)[a-z]", re.I)
+_BOTH_RE = re.compile(r"\b(?:on\s*(?:/|or|and)\s*off|off\s*(?:/|or|and)\s*on)\b", re.I)
+
+
 def _meaning(text: str) -> str:
     """What a legend entry says a mark stands for: on, off, no (not offered) or yes."""
-    if re.search(r"\boff\b", text, re.I):
+    state = _ON_WORD_RE.sub(" ", _BOTH_RE.sub(" ", text))
+    if re.search(r"\boff\b", state, re.I):
         return "off"
-    if re.search(r"\bon\b", text, re.I):
+    if re.search(r"\bon\b", state, re.I):
         return "on"
     return "no" if _NOT_RE.search(text) else "yes"
 

@@ -1,0 +1,52 @@
+"""Chart legends and marks read only for what they say (review of the chart-mark rules).
+
+A legend's "on" is a state only when it says how the option starts: "available on this
+cycle" or "can be switched on or off" tells which cycles offer it, not that it starts on.
+"""
+
+from __future__ import annotations
+
+from apbot.read import read_manual
+from apbot.read.marks_legend import legend_meanings
+
+STEAMER = """
+PANEL
+The MENU selector picks a menu. KEEP WARM is a button: each press turns keeping warm
+on or off. START begins cooking.
+
+MENU CHART
+
+  ● = keep warm available on this menu      – = not available
+
+  Menu         Time (min)    KEEP WARM
+  ----------   -----------   ---------
+  Rice         40            ●
+  Fish         15            ●
+  Eggs         12            –
+  Greens       8             –
+
+Turn MENU to choose Rice, Fish, Eggs or Greens.
+"""
+
+
+def test_on_as_a_preposition_or_both_states_is_no_starting_state() -> None:
+    assert legend_meanings("  ● = available on this cycle      – = not available") == {
+        "●": "yes",
+        "–": "no",
+    }
+    assert legend_meanings("  ✓ = can be switched on or off    ✗ = not possible") == {
+        "✓": "yes",
+        "✗": "no",
+    }
+    assert legend_meanings("  ● = starts ON for this menu      ○ = starts OFF") == {
+        "●": "on",
+        "○": "off",
+    }
+
+
+def test_a_mark_offered_on_a_menu_does_not_start_the_option_on() -> None:
+    model = read_manual(STEAMER, ["turn_menu", "press_keep_warm", "press_start"]).model
+    warm = model.variables["keep_warm"]
+    assert warm.depends_on == "menu"
+    assert set(warm.cases) == {"rice", "fish"}
+    assert all(case.initial != "on" for case in warm.cases.values())
