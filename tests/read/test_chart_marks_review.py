@@ -50,3 +50,33 @@ def test_a_mark_offered_on_a_menu_does_not_start_the_option_on() -> None:
     assert warm.depends_on == "menu"
     assert set(warm.cases) == {"rice", "fish"}
     assert all(case.initial != "on" for case in warm.cases.values())
+
+
+LAMPS = """
+THE DISPLAY
+
+  ●  lamp on: heating      ○  lamp off: standby
+
+PANEL
+The MENU selector picks a menu. KEEP WARM is a button: each press turns keeping warm
+on or off. START begins cooking.
+
+MENU CHART
+
+  Menu         Time (min)    KEEP WARM
+  ----------   -----------   ---------
+  Rice         40            ●
+  Fish         15            ●
+  Eggs         12            –
+  Greens       8             –
+
+Turn MENU to choose Rice, Fish, Eggs or Greens.
+"""
+
+
+def test_a_legend_of_another_section_does_not_read_a_charts_marks() -> None:
+    model = read_manual(LAMPS, ["turn_menu", "press_keep_warm", "press_start"]).model
+    warm = model.variables["keep_warm"]
+    assert warm.depends_on == "menu"
+    assert set(warm.cases) == {"rice", "fish"}
+    assert all(case.initial != "on" for case in warm.cases.values())

@@ -27,7 +27,7 @@ from apbot.read.cases_lists import as_choices, listed_cases, listed_column
 from apbot.read.cases_marks import _mark, mark_cases
 from apbot.read.cases_tables import _parent_values, _tables
 from apbot.read.labels import words
-from apbot.read.marks_legend import legend_meanings, read_mark
+from apbot.read.marks_legend import chart_legend, read_mark
 from apbot.read.shapes import CHOICE_WORDS
 from apbot.read.text import Unit
 from apbot.read.values import Range, find_ranges, unit_name
@@ -159,7 +159,8 @@ def _marks_column(rows: list[Unit], column: int) -> bool:
 def _marks_told(b: Builder, rows: list[Unit], column: int) -> list[Unit]:
     """The rows with an on/off option's column of marks told in the words of the chart's
     legend ("●" → "on" where "● = starts ON", "✗" → "no" where "✗ = not available")."""
-    meanings = legend_meanings("\n".join(b.manual.lines))
+    lines = [r.line - 1 for r in rows]
+    meanings = chart_legend(b.manual.lines, min(lines), max(lines))
     out = []
     for row in rows:
         if column < len(row.cells):

@@ -69,3 +69,26 @@ def read_mark(cell: str, meanings: dict[str, str]) -> str:
     if text and text[0] in meanings and (len(text) == 1 or text[1] == " "):
         return f"{meanings[text[0]]}{text[1:]}"
     return cell
+
+
+def _title(lines: list[str], k: int) -> bool:
+    """A short line standing alone between blank lines, without a stop: a section's title."""
+    text = lines[k].strip()
+    alone = (k == 0 or not lines[k - 1].strip()) and (
+        k + 1 >= len(lines) or not lines[k + 1].strip()
+    )
+    return bool(text) and alone and len(text.split()) <= 5 and not text.endswith((".", ":", ","))
+
+
+def chart_legend(lines: list[str], first: int, last: int) -> dict[str, str]:
+    """The meanings of the legend printed with a chart whose rows run from line ``first`` to
+    ``last`` (0-based): above it up to its section's title, or just below it. A legend of
+    another section (the display's "● lamp on   ○ lamp off") says nothing of this chart."""
+    above: list[str] = []
+    for k in range(min(first, len(lines)) - 1, max(first - 30, -1), -1):
+        if legend_meanings(lines[k]):
+            above.append(lines[k])
+        elif _title(lines, k):
+            break
+    below = lines[last + 1 : last + 6]
+    return legend_meanings("\n".join(above)) or legend_meanings("\n".join(below))
