@@ -80,3 +80,10 @@ def test_a_legend_of_another_section_does_not_read_a_charts_marks() -> None:
     assert warm.depends_on == "menu"
     assert set(warm.cases) == {"rice", "fish"}
     assert all(case.initial != "on" for case in warm.cases.values())
+
+
+def test_an_ellipsis_between_two_kinds_of_amount_spans_nothing() -> None:
+    from apbot.read.values import find_ranges
+
+    assert find_ranges("Fish: 20 min … 180 °C") == []  # a time and a heat side by side
+    assert [(r.low, r.high, r.unit) for r in find_ranges("250 g … 1.5 kg")] == [(250, 1500, "g")]

@@ -138,7 +138,16 @@ def _spanned(m: re.Match[str]) -> str:
     unit = re.match(rf"\s*\d+(?:[.,]\d+)?\s*{UNIT}(?!\w)", m.string[m.end() :], re.I)
     if listed or not (unit or re.search(r"[^\d\s.,]", m.group(1))):
         return m.group(0)
+    left = unit_name(re.sub(r"^[\d.,]+\s*", "", m.group(1)))
+    right = unit_name(re.sub(r"^\s*[\d.,]+\s*", "", unit.group(0))) if unit else ""
+    if left and right and not _same_kind(left, right):
+        return m.group(0)  # "20 min … 180 °C": two settings side by side, no span
     return f"{m.group(1)} – "
+
+
+def _same_kind(a: str, b: str) -> bool:
+    """Whether two canonical units measure the same thing (min and h; g and kg)."""
+    return a == b or (is_time_unit(a) and is_time_unit(b)) or rescale(1, a, b) is not None
 
 
 def find_ranges(text: str) -> list[Range]:
