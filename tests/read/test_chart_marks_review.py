@@ -87,3 +87,21 @@ def test_an_ellipsis_between_two_kinds_of_amount_spans_nothing() -> None:
 
     assert find_ranges("Fish: 20 min … 180 °C") == []  # a time and a heat side by side
     assert [(r.low, r.high, r.unit) for r in find_ranges("250 g … 1.5 kg")] == [(250, 1500, "g")]
+
+
+def test_a_header_word_broken_at_its_hyphen_stays_a_compound_unless_printed_whole() -> None:
+    from apbot.read.text import parse_manual
+
+    chart = """
+OPTIONS CHART
+
+  Programme    EXTRA-    PRE-
+               RINSE     WASH
+  ----------   -------   ------
+  Cotton       ●         ●
+  Wool         –         –
+
+PREWASH adds a short wash first; EXTRA RINSE adds a rinse.
+"""
+    heads = {u.header for u in parse_manual(chart).units if u.header}
+    assert heads == {("Programme", "EXTRA-RINSE", "PREWASH")}

@@ -59,6 +59,7 @@ def _space_tables(
 
     Returns line number → (cells, is the header row; None for the first row of a legend)."""
     breaks = breaks or set()
+    whole = set(re.findall(r"[A-Z]+", "\n".join(lines).upper()))  # words printed unbroken
     out: dict[int, tuple[tuple[str, ...], bool | None]] = {}
     i = 0
     while i < len(lines):
@@ -121,13 +122,13 @@ def _space_tables(
         if two and (more or not _two_column_rows(lines, rows, j)):
             rows = []
         if len(rows) >= 2:
-            head_cells = _joined_cells(lines[i], more.get(i, []))
+            head_cells = _joined_cells(lines[i], more.get(i, []), whole)
             if not head[0] and head_cells[0]:
                 head_cells = ("", *head_cells)
             legend = bool(CALLOUT_RE.fullmatch(head_cells[0]))  # "①  M   Hold 2 s: …": a row
             out[i + 1] = (_uncalled(head_cells), None) if legend else (head_cells, True)
             for r in rows:
-                cells = _joined_cells(lines[r], more.get(r, []))
+                cells = _joined_cells(lines[r], more.get(r, []), whole)
                 out[r + 1] = (_uncalled(cells) if legend else cells, False)
             for k in range(i + 1, j):
                 out.setdefault(k + 1, ((), False))
@@ -293,7 +294,9 @@ def _placed_cells(line: str) -> list[tuple[int, str]]:
     return [(m.start(), m.group(0)) for m in re.finditer(r"\S+(?:(?: |\s{2,}(?=[,;]))\S+)*", body)]
 
 
-def _joined_cells(line: str, wrapped: list[tuple[int, str]]) -> tuple[str, ...]:
+def _joined_cells(
+    line: str, wrapped: list[tuple[int, str]], whole: frozenset[str] | set[str] = frozenset()
+) -> tuple[str, ...]:
     """A row's cells with the text of its wrapped lines added to the cell each piece stands
     under ("To activate and deactivate the" + "hob.")."""
     placed = _placed_cells(line)
@@ -303,7 +306,12 @@ def _joined_cells(line: str, wrapped: list[tuple[int, str]]) -> tuple[str, ...]:
     for at, text in wrapped:
         k = max((n for n, (start, _) in enumerate(placed) if start <= at + 2), default=0)
         if re.search(r"[A-Za-z]-$", cells[k]) and text[:1].isalpha():
-            cells[k] = f"{cells[k][:-1]}{text}"  # "PRE-" over "WASH": a word broken in two
+            # "PRE-" over "WASH": one word where the manual prints it whole elsewhere
+            # ("PREWASH"), else a compound keeping its hyphen ("EXTRA-RINSE", "TIME-DELAY")
+            broken = re.search(r"[A-Za-z]+-$", cells[k])
+            one = f"{broken[0][:-1] if broken else ''}{re.split(r'[^A-Za-z]', text)[0]}"
+            cut = 1 if one.upper() in whole else 0
+            cells[k] = f"{cells[k][: len(cells[k]) - cut]}{text}"
         else:
             cells[k] = f"{cells[k]} {text}"
     return tuple(cells)
