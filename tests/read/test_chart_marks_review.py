@@ -105,3 +105,22 @@ PREWASH adds a short wash first; EXTRA RINSE adds a rinse.
 """
     heads = {u.header for u in parse_manual(chart).units if u.header}
     assert heads == {("Programme", "EXTRA-RINSE", "PREWASH")}
+
+
+def test_a_legend_under_the_next_charts_title_is_that_charts() -> None:
+    from apbot.read.marks_legend import chart_legend
+
+    lines = [
+        "FIRST CHART",
+        "",
+        "  Menu    KEEP WARM",
+        "  Rice    ●",
+        "  Eggs    –",
+        "",
+        "SECOND CHART",
+        "",
+        "  ● = starts ON      ○ = starts OFF",
+        "",
+    ]
+    assert chart_legend(lines, 3, 4) == {}
+    assert chart_legend(lines[:6] + lines[8:], 3, 4) == {"●": "on", "○": "off"}

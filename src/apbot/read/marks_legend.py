@@ -90,5 +90,10 @@ def chart_legend(lines: list[str], first: int, last: int) -> dict[str, str]:
             above.append(lines[k])
         elif _title(lines, k):
             break
-    below = lines[last + 1 : last + 6]
+    below: list[str] = []
+    for k in range(last + 1, min(last + 6, len(lines))):
+        if legend_meanings(lines[k]):
+            below.append(lines[k])
+        elif _title(lines, k):
+            break  # the next chart's title: a legend under it is that chart's
     return legend_meanings("\n".join(above)) or legend_meanings("\n".join(below))
