@@ -246,7 +246,7 @@ def coded_names(model: ApplianceModel, manual: str) -> list[tuple[str, Any, str]
         return []
     settings = _setting_words(model)
     plain = {
-        name: {_key(str(v)) for v in var.values}
+        name: {_key(str(v)) for v in var.values or ()}
         for name, var in model.variables.items()
         if isinstance(var, DiscreteVariable)
     }
