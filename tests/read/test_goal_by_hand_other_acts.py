@@ -1,6 +1,7 @@
 """ "Myself" on a read belief (no ``depends_on``) means the MANUAL case only when the user sets
 or picks something by hand: checking, cleaning or topping up a part of the appliance oneself
-is not choosing its setting. Checked on a small plant-lamp model written for these tests."""
+is not choosing its setting. The same holds where the model says the mister depends on the
+mode. Checked on a small plant-lamp model written for these tests."""
 
 from __future__ import annotations
 
@@ -56,3 +57,16 @@ def test_doing_something_else_by_hand_is_no_manual_mode(text: str) -> None:
 )
 def test_setting_it_by_hand_is_still_manual(text: str) -> None:
     assert parse_instruction(loads_model(LAMP), text).get("mode") == "manual"
+
+
+LINKED = LAMP.replace(
+    "  mister:\n    type: numeric\n    ranges: [[0, 3, 1]]",
+    "  mister:\n    type: numeric\n    depends_on: mode\n    cases:\n"
+    "      manual: {ranges: [[1, 3, 1]], initial: 1}",
+)
+
+
+def test_refilling_a_linked_setting_is_no_manual_mode() -> None:
+    model = loads_model(LINKED)
+    assert parse_instruction(model, "I'll refill the mister myself.").get("mode") is None
+    assert parse_instruction(model, "I'll pick the mister myself - 2").get("mode") == "manual"

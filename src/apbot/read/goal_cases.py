@@ -130,6 +130,8 @@ def set_by_hand(view: Model, text: Text, goal: Goal) -> None:
         clause = _clause(text, k)
         if any(_denial(text.word(j)) for j in clause if j < k):
             continue  # "I don't want to pick the speed myself": not by hand
+        if not own and not _chooses(text, clause):
+            continue  # "I'll refill the tank myself": something else done by hand
         for info in view.infos.values():
             parent = info.var.depends_on
             mode = view.infos.get(parent or "")
@@ -144,8 +146,7 @@ def set_by_hand(view: Model, text: Text, goal: Goal) -> None:
                 continue
             if own_concepts(info) & {text.concepts[j] for j in clause}:
                 goal[mode.name] = manual[0]
-        unlinked = not any(i.var.depends_on for i in view.infos.values())
-        if unlinked and (own or _chooses(text, clause)):
+        if not any(i.var.depends_on for i in view.infos.values()):
             _by_hand_unlinked(view, text, goal, clause)
 
 
