@@ -87,3 +87,38 @@ def test_a_numbered_chart_still_names_its_codes() -> None:
     manual += "\n| 3 | Storm | hard |"
     names = [c for c in coded_names(model, manual) if c[0] == "pulse"]
     assert ("pulse", "2", "Wave") in names
+
+
+HOB = """
+appliance: {id: hob_1, category: hotplate, name: "Ember HP-1 hotplate", brand: E}
+controls:
+  - {id: on_button, kind: button, label: "ON/OFF"}
+  - {id: step_button, kind: button, label: "STEP"}
+variables:
+  power:
+    type: discrete
+    values: ["off", "on"]
+  step:
+    type: discrete
+    values: ["S1", "S2", "S3"]
+actions:
+  press_on: {control: on_button}
+  press_step: {control: step_button}
+features:
+  power:
+    - {actions: [press_on], variable: power, effect: toggle}
+  step:
+    - {actions: [press_step], variable: step, effect: next}
+"""
+
+
+def test_a_heading_naming_an_uncoded_setting_keeps_the_codes() -> None:
+    """ "Power" over "S1": the chart calls the coded step "power", while the model's POWER is
+    only on/off and shows no S1 — the codes are still named (dropped since 2f6953f)."""
+    model = loads_model(HOB)
+    for manual in (
+        "| Power | Good for |\n|---|---|\n| S1 | Melting |\n| S2 | Frying |\n| S3 | Boiling |",
+        "    Power   Good for\n    S1      Melting\n    S2      Frying\n    S3      Boiling",
+    ):
+        names = [c for c in coded_names(model, manual) if c[0] == "step"]
+        assert ("step", "S2", "Frying") in names

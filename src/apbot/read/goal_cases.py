@@ -130,6 +130,8 @@ def set_by_hand(view: Model, text: Text, goal: Goal) -> None:
         clause = _clause(text, k)
         if any(_denial(text.word(j)) for j in clause if j < k):
             continue  # "I don't want to pick the speed myself": not by hand
+        if not own and not _chooses(text, clause):
+            continue  # "I'll refill the tank myself": something else done by hand
         for info in view.infos.values():
             parent = info.var.depends_on
             mode = view.infos.get(parent or "")
@@ -146,6 +148,24 @@ def set_by_hand(view: Model, text: Text, goal: Goal) -> None:
                 goal[mode.name] = manual[0]
         if not any(i.var.depends_on for i in view.infos.values()):
             _by_hand_unlinked(view, text, goal, clause)
+
+
+# what one does to a setting by hand: "set", "pick", "adjust" it ("check the fan myself",
+# "add the water myself", "clean the filter myself" do something else with it)
+_CHOOSING = frozenset(
+    stem(w)
+    for w in (
+        "set", "setting", "choose", "choosing", "pick", "picking", "select", "selecting",
+        "adjust", "adjusting", "control", "controlling", "decide", "deciding", "program",
+        "programme", "dial", "tune", "change", "changing", "regulate", "manage", "tweak",
+        "fiddle",
+    )
+)  # fmt: skip
+
+
+def _chooses(text: Text, clause: range) -> bool:
+    """The clause of "myself" says the user sets something ("I'll pick the fan myself")."""
+    return any(stem(text.word(j)) in _CHOOSING for j in clause)
 
 
 def _by_hand_unlinked(view: Model, text: Text, goal: Goal, clause: range) -> None:

@@ -159,18 +159,23 @@ def _in_column(
     i: int,
     heads: list[set[str]] | None,
     holds: dict[str, set[str]],
+    plain: dict[str, set[str]],
 ) -> bool:
     """Whether cell ``i`` and the next of ``row`` may be a code and its name under the chart's
     headings: in a chart that gives one setting per column ("Purpose | Heating | Massage |
     Bubbles | Timer"), a cell is a value of ITS column's setting, so a code stands only under a
     heading of a setting that has it, and the next cell names it only when no other setting
-    heads that column. ``holds``: setting -> the codes (keyed) it has."""
+    heads that column. ``holds``: setting -> the codes (keyed) it has; ``plain``: a listed
+    setting -> its own values (keyed)."""
     if heads is None:
         return True
     if len(row) != len(heads):
         return sum(1 for h in heads if h) < 2  # its cells' columns are not known
     key = _key(row[i])
-    code_heads, name_heads = heads[i], heads[i + 1]
+    # "Power" over "P1" where POWER is only on/off: the heading calls the coded level by
+    # another word; the column is still the on/off setting's when the cell is one of its values
+    code_heads = {n for n in heads[i] if holds.get(n) or key in plain.get(n, {key})}
+    name_heads = heads[i + 1]
     if code_heads and not any(key in holds.get(n, set()) for n in code_heads):
         return False
     return not name_heads or any(key in holds.get(n, set()) for n in name_heads)
@@ -180,6 +185,7 @@ def _pairs(
     block: list[list[str]],
     variables: dict[str, dict[str, Any]],
     settings: dict[str, frozenset[str]] | None = None,
+    plain: dict[str, set[str]] | None = None,
 ) -> list[list[Pair]]:
     """The (code, name) pairs a block can give: along its rows ("| 2 | French |"), and down
     its columns where a row of codes sits over a row of names ("Knob mark  1  2" over
@@ -197,7 +203,7 @@ def _pairs(
         (r[i], r[i + 1])
         for r in block
         for i in range(len(r) - 1)
-        if code(r[i]) and _in_column(r, i, heads, holds)
+        if code(r[i]) and _in_column(r, i, heads, holds, plain or {})
     ]
     columns = [
         (top[i], below[i])
@@ -239,9 +245,14 @@ def coded_names(model: ApplianceModel, manual: str) -> list[tuple[str, Any, str]
     if not variables or not manual:
         return []
     settings = _setting_words(model)
+    plain = {
+        name: {_key(str(v)) for v in var.values or ()}
+        for name, var in model.variables.items()
+        if isinstance(var, DiscreteVariable)
+    }
     out: list[tuple[str, Any, str]] = []
     for block in _table_blocks(manual):
-        for pairs in _pairs(block, variables, settings)[:1]:
+        for pairs in _pairs(block, variables, settings, plain)[:1]:
             best, score = _best(pairs, variables)
             if best is not None and score[0] >= 0.6:
                 out.extend(_named(pairs, variables[best], best))
@@ -251,7 +262,7 @@ def coded_names(model: ApplianceModel, manual: str) -> list[tuple[str, Any, str]
     named = {name for name, _, _ in out}
     chosen: dict[str, tuple[tuple[float, float, int], list[Pair]]] = {}
     for block in _aligned_blocks(manual):
-        for pairs in _pairs(block, variables, settings):
+        for pairs in _pairs(block, variables, settings, plain):
             best, score = _best(pairs, variables)
             if best is None or best in named or score[0] < 0.6 or score[1] < 0.5:
                 continue

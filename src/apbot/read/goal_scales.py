@@ -18,7 +18,7 @@ from apbot.read.goal_values import (
     quantity_dimensions,
     zone_case,
 )
-from apbot.read.goal_view import Goal, Model, VarInfo, domain_values
+from apbot.read.goal_view import Goal, Model, VarInfo, domain_values, own_concepts
 from apbot.read.goal_vocab import HIGHEST, LETTER_WORDS, LOWEST, SCALES, concept, stem
 
 
@@ -72,7 +72,11 @@ def superlatives(
         kind = _kind_of(text, k) if end is not None else None
         if kind and (best is None or not _named_specifically(view.infos[best[1]], text, k)):
             only = _only_of_kind(view, goal, kind)
-            if only is not None and _of_a_setting(view.infos[only[1]], text, k):
+            if (
+                only is not None
+                and _of_a_setting(view.infos[only[1]], text, k)
+                and (kind != "level" or not _names_another(view, only[1], text, k))
+            ):
                 best = only
         if best is None:
             continue
@@ -210,7 +214,7 @@ def _only_of_kind(view: Model, goal: Goal, kind: str) -> tuple[float, str] | Non
             info.dimension == kind
             or (kind == "temperature" and info.dimension == "fahrenheit")
             or (kind == "time" and isinstance(info.var, TimeVariable) and info.timing == "duration")
-            or (kind == "level" and _numbered_levels(info))
+            or (kind == "level" and (_numbered_levels(info) or _worded_levels(info)))
         )
     ]
     return (0.0, found[0]) if len(found) == 1 else None
@@ -226,9 +230,48 @@ def _numbered_levels(info: VarInfo) -> bool:
         return False
     if {concept("temperature"), concept("time")} & set(info.vocab):
         return False
+    if _COUNTED & {stem(w) for w in info.name.replace("_", " ").split()}:
+        return False  # "cups 1-12", "rinse 1-3": a number of things, not how strong
     numbers = [v for v in info.values if bare_number(v) is not None]
     rest = [v for v in info.values if bare_number(v) is None]
     return len(numbers) >= 2 and all(str(v).casefold() in (*OFF_WORDS, "none") for v in rest)
+
+
+# things a setting counts ("cups", "rinses", "slices"): more of them is not a stronger level
+_COUNTED = frozenset(
+    stem(w)
+    for w in (
+        "cup", "cups", "rinse", "rinses", "slice", "slices", "serving", "servings", "portion",
+        "portions", "egg", "eggs", "loaf", "loaves", "piece", "pieces", "person", "people",
+        "persons", "time", "times", "repeat", "repeats", "batch", "batches", "bottle",
+        "bottles", "load", "loads", "glass", "glasses", "mug", "mugs", "bowl", "bowls",
+        "scoop", "scoops", "spoon", "spoons", "count", "number", "quantity", "amount",
+    )
+)  # fmt: skip
+
+
+def _names_another(view: Model, name: str, text: Text, k: int) -> bool:
+    """ "the gentlest cycle", "the strongest programme": the word after the superlative names
+    another setting (a choice of programmes), so no numbered level is meant."""
+    key = text.concepts[k + 1] if k + 1 < len(text.concepts) else ""
+    return bool(key) and any(
+        key in own_concepts(info) for other, info in view.infos.items() if other != name
+    )
+
+
+def _worded_levels(info: VarInfo) -> bool:
+    """A strength in words (LOW, MEDIUM, HIGH) that no word of heat or time names: as much a
+    level as a numbered one, so "as strong as it goes" beside it names neither alone."""
+    if info.dimension is not None or not isinstance(info.var, DiscreteVariable):
+        return False
+    if {concept("temperature"), concept("time")} & set(info.vocab):
+        return False
+    if _HEAT & {stem(w) for w in info.name.replace("_", " ").split()}:
+        return False  # "warmth", "heating": a heat, not a strength
+    return len(_scaled(info.values)) >= 2
+
+
+_HEAT = frozenset(stem(w) for w in ("heat", "heating", "heater", "warmth", "warm", "hot", "temp"))
 
 
 def _levels(values: list[Any]) -> list[Any]:
