@@ -98,8 +98,8 @@ OPTIONS CHART
   Programme    EXTRA-    PRE-
                RINSE     WASH
   ----------   -------   ------
-  Cotton       ●         ●
-  Wool         –         –
+  Cotton       yes       yes
+  Wool         no        no
 
 PREWASH adds a short wash first; EXTRA RINSE adds a rinse.
 """

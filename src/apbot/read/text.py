@@ -122,28 +122,10 @@ def default_marks(text: str) -> frozenset[str]:
     return _legend_marks(text)[0]
 
 
-# a mark standing alone in a cell of a chart row ("Cottons   8 kg   ●   –"): set off by a wide
-# gap after some text on its line, then a wide gap or the line's end. Erased, it would leave its
-# column empty and the row's later cells would move left under the wrong heads.
-_CELL_MARK_RE = re.compile(r"(?<=\S)( {2,})(\S)(?= {2,}|[ \t]*$)", re.M)
-
-
-def _cell_marks(text: str) -> set[int]:
-    """Offsets of one-character cells after the first cell of a row laid out with spaces."""
-    out: set[int] = set()
-    for line in re.finditer(r"[^\n]+", text):
-        pos = 0
-        while m := _CELL_MARK_RE.search(line.group(0), pos):
-            out.add(line.start() + m.start(2))
-            pos = m.start(2)
-    return out
-
-
 def _clean_chars(text: str) -> str:
     """Drop control characters and pictographs; keep letters, digits, punctuation, ▲▼ and °,
     and the symbols a legend says mark a default."""
     keep = _KEEP | _legend_marks(text)[1] | set(legend_meanings(text))
-    alone = _cell_marks(text)
 
     def one(match: re.Match[str]) -> str:
         ch = match.group(0)
@@ -154,7 +136,7 @@ def _clean_chars(text: str) -> str:
             return "COLD"  # the snowflake printed for a cold wash or a cold setting
         if "\u2500" <= ch <= "\u257f":
             return "-"  # box drawing: a rule across a table stays a rule
-        if cat == "So" and ch not in keep and match.start() not in alone:
+        if cat == "So" and ch not in keep:
             return " "  # emoji and dingbats
         return ch
 
