@@ -6,6 +6,7 @@ without a sign — that no guard of the belief explains is a guard the reader mi
 a key the belief's guard lets through is struck from it; otherwise the learner looks for the
 setting that blocks the key (a switched-off appliance behind a dark display, a lock behind a
 beep), changes it, presses the key again, and writes the guard it found into the belief.
+Bringing the appliance out of the guards the belief thinks hold is in guards_lift.py.
 """
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
+from apbot.agent.guards_lift import GuardLifter
 from apbot.agent.repair import RepairError, add_guard, allow, allow_all, disallow
 from apbot.agent.session import MISSING, Executed, Session
 from apbot.model.display import OFF_WORDS
@@ -29,7 +31,7 @@ MAX_RELAXATIONS = 12  # guard/key pairs tried when a guard keeps the goal out of
 RELAX_BUDGET = 1_000  # search nodes for each (5,000 took 40 of 210 s on read beliefs, won nothing)
 
 
-class GuardLearner:
+class GuardLearner(GuardLifter):
     """Explain refusals by the belief's guards; learn the guards it lacks."""
 
     def __init__(self, session: Session) -> None:
@@ -358,76 +360,6 @@ class GuardLearner:
             self._hopeless_for.add(key)
             return True
         return False
-
-    def lift_all(self) -> None:
-        """Bring the appliance out of every guard the belief thinks holds (switch it on,
-        unlock it): a key the belief does not know can then tell something."""
-        compiled = self.session.belief.compiled
-        for guard in compiled.guards:
-            holds = all(self.session.belief.state.values[v] in ok for v, ok in guard.conditions)
-            blocked = [a for i, a in enumerate(compiled.action_names) if i not in guard.allowed]
-            # a guard that getting out of puts the panel under another ("unit on": switching
-            # off lands in "unit off") is no blocker to lift
-            if holds and blocked and not self._swaps(guard):
-                self.lift(blocked[0])
-
-    def _swaps(self, guard: Any) -> bool:
-        """Whether leaving ``guard`` (its first condition changed) makes another guard hold."""
-        compiled = self.session.belief.compiled
-        values = list(self.session.belief.state.values)
-        for v, ok in guard.conditions:
-            domain = compiled.vars[v].domain(self.session.belief.state.values)
-            others = [i for i in range(len(domain.values) if domain else 0) if i not in ok]
-            if not others:
-                continue
-            values[v] = others[0]
-            return any(
-                other is not guard and all(values[u] in allowed for u, allowed in other.conditions)
-                for other in compiled.guards
-            )
-        return False
-
-    def lift(self, action: str) -> None:
-        """Bring the appliance out of any guard that would refuse ``action`` (switch it on,
-        unlock it), so that a probe with ``action`` can tell something."""
-        compiled = self.session.belief.compiled
-        index = compiled.action_index[action]
-        for guard in compiled.guards:
-            holds = all(self.session.belief.state.values[v] in ok for v, ok in guard.conditions)
-            if index in guard.allowed or not holds:
-                continue
-            for v, ok in guard.conditions:
-                domain = compiled.vars[v].domain(self.session.belief.state.values)
-                others = [
-                    value for i, value in enumerate(domain.values if domain else ()) if i not in ok
-                ]
-                if not others:
-                    continue
-                try:
-                    found = plan(
-                        compiled,
-                        self.session.belief.state,
-                        {compiled.vars[v].name: others[0]},
-                        self.session.config.plan_budget,
-                        self.session.config.plan_work,
-                    )
-                except Unreachable:
-                    continue
-                before = self.session.last.text
-                for planned in found.actions:
-                    self.session.press(planned, exploring=True)
-                name = compiled.vars[v].name
-                after = self.session.last
-                if (
-                    self.session.belief.value(name) != others[0]
-                    and after.accepted
-                    and after.text.strip()
-                    and after.text != before
-                ):
-                    # the panel answered (lit up, left the guard's message) with a screen the
-                    # belief cannot read: it did come out of the guard
-                    self.session.belief.set_value(name, others[0])
-                break
 
 
 def _condition(when: dict[str, Any]) -> str:
