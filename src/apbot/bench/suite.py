@@ -92,6 +92,12 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "pasta_maker": 4,
     "plug_timer": 3,
     "popcorn_maker": 3,
+    # The seventh blind set (helper blind10n, 5 December): blind for this round's work.
+    "irrigation_timer": 3,
+    "hot_tub": 3,
+    "stand_mixer": 4,
+    "digital_shower": 3,
+    "sterilising_cabinet": 4,
 }
 
 
