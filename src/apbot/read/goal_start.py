@@ -22,7 +22,7 @@ from apbot.read.goal_text import (
 from apbot.read.goal_values import generic
 from apbot.read.goal_view import Goal, Model, own_stems, step_effects
 from apbot.read.goal_vocab import concept, stem
-from apbot.read.numbers import tokenize
+from apbot.read.numbers import find_mentions, tokenize
 
 _DENIALS = frozenset({"don't", "dont", "not", "without", "never"})
 
@@ -253,9 +253,12 @@ _DAY_PARTS |= frozenset({"night", "time", "day"}) | _WHEN_LATER
 
 
 def _later(text: Text, k: int) -> bool:
-    """A start word followed in its clause by "in/after N ..." (a delayed start), or by a
-    later day ("a holiday starting tonight": when something begins, no request to start)."""
+    """A start word followed in its clause by "in/after N ..." (a delayed start), by a later
+    day ("a holiday starting tonight": when something begins, no request to start), or by
+    "at" a time of day ("start mowing at 7 in the morning": when it starts, as scheduled)."""
     if text.word(k + 1) in _WHEN_LATER and text.word(k + 2) not in ("it", "the"):
+        return True
+    if _at_a_time_of_day(text, k):
         return True
     if text.word(k + 1) in ("this", "next") and text.word(k + 2) in _DAY_PARTS:
         return True  # "starting next week" (but "start this wash" is a start now)
@@ -270,6 +273,17 @@ def _later(text: Text, k: int) -> bool:
         if word in ("in", "after") and numeral:
             return True
     return False
+
+
+def _at_a_time_of_day(text: Text, k: int) -> bool:
+    """A time of day said with "at" in the start word's clause, within a few words."""
+    end = k + 1
+    while end < min(k + 7, len(text.tokens)) and text.word(end) not in CLAUSE_ENDS | {","}:
+        end += 1
+    return any(
+        mention.kind == "clock" and mention.lead == "at" and mention.start < end
+        for mention in find_mentions(text.tokens[:end], skip=set(range(k + 1)))
+    )
 
 
 def _held_back(text: Text, family: frozenset[str] | None = None) -> bool:
@@ -402,6 +416,8 @@ def _says_start(
         else:
             positive = True
     if " not started " in joined or " but not start" in joined or _held_back(text, family):
+        negative = True
+    if " not now " in joined:  # "at midnight, not now"
         negative = True
     for k, token in enumerate(text.tokens):  # "don't heat it yet"
         if token.text in _DENIALS and token.text != "without" and k + 1 < len(text.stems):
