@@ -21,7 +21,8 @@ How it works, in order:
 Before step 1, ``goal_remarks`` drops the clauses that ask nothing of the appliance ("…, I'll be
 back in an hour", "…, we are 4 at the table"). The steps live in their own modules:
 ``goal_spelling`` (rewrites before tokenising),
-``goal_names`` (1), ``goal_assign`` and ``goal_fit`` (2), ``goal_scales`` (3),
+``goal_names`` (1), ``goal_fractions`` (parts of a cup, before 2), ``goal_assign`` and
+``goal_fit`` (2), ``goal_scales`` (3),
 ``goal_switches`` (4), ``goal_start`` (5), ``goal_twins`` (zones and
 sides), ``goal_cases`` (the mode a setting's value implies); ``goal_view`` is the model as the
 parser sees it.
@@ -35,6 +36,7 @@ from apbot.model.values import closest_matches, preview
 from apbot.read.goal_assign import assign_mentions, distinct, in_weeks
 from apbot.read.goal_cases import entry_modes, implied_cases, set_by_hand
 from apbot.read.goal_error import GoalParseError
+from apbot.read.goal_fractions import fractions
 from apbot.read.goal_kinds import kind_numbers
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
 from apbot.read.goal_open import open_entries
@@ -105,6 +107,7 @@ def parse_instruction(
         claimed.update(range(match.start, match.end))
     restated_codes(view, text, goal, claimed)
     pronoun_ones(text, claimed)
+    fractions(view, text, goal, claimed, where)
     days = any(in_days(info.var) for info in view.infos.values() if info.role == "setting")
     mentions = distinct(in_weeks(text, find_mentions(text.tokens, skip=claimed), days))
     mentions = time_spans(view, text, mentions, goal, claimed, where)

@@ -132,6 +132,8 @@ def set_by_hand(view: Model, text: Text, goal: Goal) -> None:
             continue  # "I don't want to pick the speed myself": not by hand
         if not own and not _chooses(text, clause):
             continue  # "I'll refill the tank myself": something else done by hand
+        if own and _own_programme(view, text, goal, k):
+            continue  # "my own recipe": the CUSTOM (MANUAL, USER) programme
         for info in view.infos.values():
             parent = info.var.depends_on
             mode = view.infos.get(parent or "")
@@ -148,6 +150,38 @@ def set_by_hand(view: Model, text: Text, goal: Goal) -> None:
                 goal[mode.name] = manual[0]
         if not any(i.var.depends_on for i in view.infos.values()):
             _by_hand_unlinked(view, text, goal, clause)
+
+
+_OWN_KINDS = frozenset(
+    stem(w) for w in ("setting", "settings", "recipe", "recipes", "programme", "program", "mode")
+)
+_OWN_VALUES = _MANUAL | frozenset({stem("custom"), stem("user"), stem("personal")})
+
+
+def _own_programme(view: Model, text: Text, goal: Goal, k: int) -> bool:
+    """ "my own settings", "my own recipe" (own at k): the one selector with a value kept for
+    the user's own settings — CUSTOM, MANUAL, USER beside presets — is set to it."""
+    following = text.stems[k + 1] if k + 1 < len(text.stems) else ""
+    if following not in _OWN_KINDS:
+        return False  # "I'll do it on my own": no programme named
+    found = []
+    for info in view.infos.values():
+        if info.role != "setting" or not isinstance(info.var, DiscreteVariable):
+            continue
+        own = [v for v in info.values if _own_value(info.var, v)]
+        if len(own) == 1 and len(info.values) > 2:
+            found.append((info.name, own[0]))
+    if len(found) != 1 or found[0][0] in goal:
+        return False
+    goal[found[0][0]] = found[0][1]
+    return True
+
+
+def _own_value(var: DiscreteVariable, value: Any) -> bool:
+    """The value is the user's own (CUSTOM, MANUAL, USER, or shown so)."""
+    show = var.show.get(str(value), "") if isinstance(var.show, dict) else ""
+    words = f"{value} {show}".casefold().replace("_", " ").split()
+    return any(stem(w) in _OWN_VALUES for w in words)
 
 
 # what one does to a setting by hand: "set", "pick", "adjust" it ("check the fan myself",

@@ -20,7 +20,7 @@ from apbot.read.goal_text import (
     turned_off_after,
     verb_positions,
 )
-from apbot.read.goal_view import PARTIAL, Goal, Model, own_stems
+from apbot.read.goal_view import PARTIAL, Goal, Model, own_stems, phrase_words
 from apbot.read.goal_vocab import HIGHEST, LOWEST, SCALES, SYNONYMS, similar, stem
 from apbot.read.numbers import COUNT_NOUNS
 
@@ -59,9 +59,15 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
                 continue  # "auto-off" names a timer, not the AUTO mode
             own = near_vocab(info, text, i, end, reach=2)
             opening = i == 0 or text.word(i - 1) in (".", ";", "!")
-            if weight <= PARTIAL and not (own or (opening and text.word(end) in ("with", ","))):
-                continue  # a first word alone names a value only beside "programme"
-                # (or opening the sentence: "Auto with ExtraDry")
+            if weight <= PARTIAL:
+                rest = {stem(w) for w in phrase_words(str(value))} - set(stems)
+                turned = end + 1 if text.stems[end : end + 1] and text.stems[end] in rest else end
+                if not (own or (opening and text.word(end) in ("with", ","))):
+                    if not _heads(text, turned, itself):
+                        continue  # a first word alone names a value only beside "programme"
+                        # (or opening the sentence: "Auto with ExtraDry"; or before what the
+                        # appliance works on: "an AGM battery" on a battery charger)
+                    end = turned  # "a relaxing auto massage": AUTO RELAX, its words turned round
             if _names_other(view, var, text, i, end):
                 continue  # "power level 8" is not the POWER mode
             if len(stems) == 1 and _names_switch(view, var, text, i):
@@ -118,6 +124,13 @@ def _prefer_specific(matches: list[_Match], text: Text, itself: set[str]) -> lis
 _PARTICLE_VERBS = frozenset(
     {"set", "warm", "heat", "speed", "slow", "cool", "calm", "wind", "shut", "settle", "sit"}
 )
+
+
+def _heads(text: Text, k: int, itself: set[str]) -> bool:
+    """The word at k is what the appliance is named for ("an AGM battery" on a battery
+    charger, "a relaxing auto massage" on a massage cushion with AUTO RELAX): the value's
+    distinctive word before it says which kind of it."""
+    return k < len(text.tokens) and text.stems[k] in itself and text.word(k).isalpha()
 
 
 def _compound_tail(text: Text, i: int) -> bool:

@@ -22,7 +22,7 @@ from apbot.read.goal_text import (
 from apbot.read.goal_values import generic
 from apbot.read.goal_view import Goal, Model, own_stems, step_effects
 from apbot.read.goal_vocab import concept, stem
-from apbot.read.numbers import tokenize
+from apbot.read.numbers import find_mentions, tokenize
 
 _DENIALS = frozenset({"don't", "dont", "not", "without", "never"})
 
@@ -40,7 +40,7 @@ def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = Fals
     """Power on when asked; the running variable on (or off) when the instruction says so, a
     goal setting's procedure starts it, or a delay counts down from now (``counting``)."""
     for name, info in view.infos.items():
-        if info.role == "power" and name not in goal and _says_power_on(view, text):
+        if info.role == "power" and name not in goal and _says_power_on(view, text, goal):
             goal[name] = info.on
         elif info.role == "power" and name not in goal and _says_power_off(view, text):
             goal[name] = info.off
@@ -50,7 +50,7 @@ def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = Fals
         # no running state of its own: the appliance works while it is on ("start cooling")
         power = [n for n, i in view.infos.items() if i.role == "power" and n not in goal]
         said = _says_start(text, None, _named_starts(view, text), verbs=False)
-        if power and (said or _running_now(text)):
+        if power and (said or _running_now(view, text, goal)):
             goal[power[0]] = view.infos[power[0]].on
         return
     if any(n in goal for n in running):
@@ -113,7 +113,7 @@ def _procedure_start(view: Model, goal: Goal) -> tuple[str, Any] | None:
     return None
 
 
-def _says_power_on(view: Model, text: Text) -> bool:
+def _says_power_on(view: Model, text: Text, goal: Goal) -> bool:
     """ "turn the machine on", "switch on, ...", "power the bread maker up"."""
     n = len(text.tokens)
     switch_words = {s for i in view.infos.values() if i.role == "switch" for s in own_stems(i)}
@@ -155,6 +155,7 @@ def _says_power_on(view: Model, text: Text) -> bool:
                 text.word(j) == "on"
                 and (j > k + 1 or before)
                 and text.word(j + 1) in (CLAUSE_ENDS | {",", "and", "then", ""})
+                and not _a_switch_state(view, text, goal, j)
             ):
                 return True
     return False
@@ -207,13 +208,25 @@ def _setting_words(view: Model) -> frozenset[str]:
     )
 
 
-def _running_now(text: Text) -> bool:
-    """ "…, locked, and running": the appliance asked to be running (not "running low")."""
+def _running_now(view: Model, text: Text, goal: Goal) -> bool:
+    """ "…, locked, and running": the appliance asked to be running (not "running low", nor
+    "with the circulation running": a switch's state)."""
     return any(
         token.text == "running"
         and text.word(k + 1) in CLAUSE_ENDS | {"", ","}
         and not any(text.word(k - d) in _DENIALS for d in range(1, 4))
+        and not _a_switch_state(view, text, goal, k)
         for k, token in enumerate(text.tokens)
+    )
+
+
+def _a_switch_state(view: Model, text: Text, goal: Goal, k: int) -> bool:
+    """The word before k names a switch the goal sets, so the state said at k ("keep warm on",
+    "with the circulation running") is that switch's, not the appliance's power."""
+    key = text.concepts[k - 1] if k >= 1 else ""
+    return any(
+        info.role == "switch" and name in goal and info.vocab.get(key, 0.0) >= 0.8
+        for name, info in view.infos.items()
     )
 
 
@@ -240,9 +253,12 @@ _DAY_PARTS |= frozenset({"night", "time", "day"}) | _WHEN_LATER
 
 
 def _later(text: Text, k: int) -> bool:
-    """A start word followed in its clause by "in/after N ..." (a delayed start), or by a
-    later day ("a holiday starting tonight": when something begins, no request to start)."""
+    """A start word followed in its clause by "in/after N ..." (a delayed start), by a later
+    day ("a holiday starting tonight": when something begins, no request to start), or by
+    "at" a time of day ("start mowing at 7 in the morning": when it starts, as scheduled)."""
     if text.word(k + 1) in _WHEN_LATER and text.word(k + 2) not in ("it", "the"):
+        return True
+    if _at_a_time_of_day(text, k):
         return True
     if text.word(k + 1) in ("this", "next") and text.word(k + 2) in _DAY_PARTS:
         return True  # "starting next week" (but "start this wash" is a start now)
@@ -257,6 +273,17 @@ def _later(text: Text, k: int) -> bool:
         if word in ("in", "after") and numeral:
             return True
     return False
+
+
+def _at_a_time_of_day(text: Text, k: int) -> bool:
+    """A time of day said with "at" in the start word's clause, within a few words."""
+    end = k + 1
+    while end < min(k + 7, len(text.tokens)) and text.word(end) not in CLAUSE_ENDS | {","}:
+        end += 1
+    return any(
+        mention.kind == "clock" and mention.lead == "at" and mention.start < end
+        for mention in find_mentions(text.tokens[:end], skip=set(range(k + 1)))
+    )
 
 
 def _held_back(text: Text, family: frozenset[str] | None = None) -> bool:
@@ -389,6 +416,8 @@ def _says_start(
         else:
             positive = True
     if " not started " in joined or " but not start" in joined or _held_back(text, family):
+        negative = True
+    if " not now " in joined:  # "at midnight, not now"
         negative = True
     for k, token in enumerate(text.tokens):  # "don't heat it yet"
         if token.text in _DENIALS and token.text != "without" and k + 1 < len(text.stems):

@@ -90,7 +90,7 @@ _GROUPS: tuple[tuple[str, ...], ...] = (
     ("timer", "timers"),
     ("time", "duration", "times"),
     ("light", "lamp"),
-    ("buzzer", "beep", "beeps", "sound", "signal", "mute", "silence", "quiet", "alarm"),
+    ("buzzer", "beep", "beeps", "beeper", "sound", "signal", "mute", "silence", "quiet", "alarm"),
     ("dry", "drying", "dryer"),
     ("sterilize", "steam", "sterilise", "sanitize", "uv"),
     ("humidity", "rh", "humid", "humidistat"),
