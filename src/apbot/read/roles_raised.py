@@ -31,7 +31,7 @@ _RAISED_RE = re.compile(
 _STOP = {
     "of", "on", "in", "by", "from", "to", "for", "with", "at", "shown", "that", "which",
     "while", "when", "one", "each", "and", "or", "as", "is", "are", "a", "an", "the",
-    "until", "per", "step", "steps", "selected", "flashing", "displayed", "set",
+    "until", "per", "step", "steps", "selected", "chosen", "flashing", "displayed", "set",
     "before", "after", "during", "then", "into", "onto", "up", "down", "if", "so", "again",
     "slightly", "gently", "fully", "only", "once", "use", "using", "it", "them", "you", "your",
 }  # fmt: skip

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from apbot.model.values import unit_of, words_to_number
 from apbot.read.values_labels import clock_seconds, clock_tops, minutes_and_seconds
 from apbot.read.values_more import further_top
+from apbot.read.values_tails import listed_amounts, listed_tail, worked_example
 
 NUM = (
     r"(?:\d+(?:[.,]\d+)?|one|two|three|four|five|six|seven|eight|nine|ten|twelve|fifteen"
@@ -153,8 +154,11 @@ def _same_kind(a: str, b: str) -> bool:
 def find_ranges(text: str) -> list[Range]:
     """Ranges written in the text (times h:mm in seconds with unit ``s``); a word or two in
     brackets after a number is an aside ("from 1 (barely warm) to 10 (full power)")."""
+    if worked_example(text):
+        return []
     text = _ELLIPSIS_SPAN_RE.sub(_spanned, text)
     out = _ranges(text)
+    out += [Range(a, b, unit_name(u), gap) for a, b, u, gap in listed_amounts(text)]
     # a label saying how to read a clock range ("0:01 - 99:59 (min:s)") is no aside to drop
     bare = _ASIDE_RE.sub(lambda m: m[0] if minutes_and_seconds(text, m.start()) else "", text)
     return out + [r for r in _ranges(bare) if r not in out] if bare != text else out
@@ -196,6 +200,8 @@ def _ranges(text: str) -> list[Range]:
             continue
         if not unit and m.group(0).strip().lower().split()[1:2] == ["and"]:
             continue  # "press A and B": no unit, "and" joins words more often than numbers
+        if listed_tail(text, m):
+            continue  # "40 %, 50 %, 60 % and 70 %": the last two items of a list, no range
         if unit == "" and (hi > 10_000 or _FOREIGN_UNIT.match(text, m.end())):
             continue  # "220–240 V", "12–32 cm": a rating or a size, not a setting's range
         if unit == "" and _RATED_UNIT.match(text, m.end()) and not _SET_VERB.search(text):
