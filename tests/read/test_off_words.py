@@ -44,3 +44,34 @@ def test_a_legend_line_saying_other_things_are_off_changes_nothing() -> None:
     assert held
     tone = model.variables[model.features[held[0]][0].variable]
     assert tone.values == ["off", "on"]
+
+
+# a held key read with no setting of its own: the legend's off word and a sentence holding the
+# key name the same thing
+STEAMER = """VAPO S-3 FOOD STEAMER
+Instructions
+
+  Key / element        What it does
+  -------------------  ---------------------------------------------------------------
+  ON/OFF               Switches the steamer on or off.
+  MENU                 Each press selects the next menu in the order
+                       FISH → RICE → VEG → EGGS → FISH. Hold MENU for 3 seconds to silence
+                       the beeper.
+  START                Starts the selected menu; press again to stop.
+
+  Display symbols
+  ---------------
+  FISH        the selected menu
+  QUIET       the beeper is silenced
+"""
+STEAMER_ACTIONS = ["press_on_off", "press_menu", "hold_menu", "press_start"]
+
+
+def test_a_held_key_with_no_setting_of_its_own_switches_what_the_off_word_names() -> None:
+    model = read_manual(STEAMER, STEAMER_ACTIONS).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    held = [f for f, steps in model.features.items() if steps[0].actions == ["hold_menu"]]
+    assert held
+    beeper = model.variables[model.features[held[0]][0].variable]
+    assert beeper.values == ["on", "off"] and beeper.initial == "on"
+    assert beeper.show == {"on": "", "off": "QUIET"}

@@ -6,6 +6,10 @@ word in its first column and a description saying the setting is off ("the door 
 sound"). Read as a plain toggle the setting would start off and show a lamp while on, so the
 agent would believe a silenced buzzer is already silent and misread the display. Such a setting
 starts on, shows nothing while on and the word while off.
+
+A held key that switches such a setting ("Hold MODE for 3 seconds to mute the buzzer") is often
+read with no setting of its own — a copy of the key's press list, or a chart column — and then
+becomes that on/off setting, named by the legend's noun.
 """
 
 from __future__ import annotations
@@ -46,6 +50,90 @@ def read_off_words(b: Builder) -> None:
             f"the display shows {word} while it is off; it starts on",
             _unit_at(b, line),
         )
+
+
+def read_held_off_words(b: Builder) -> None:
+    """A hold read with no on/off setting of its own becomes the setting a legend's off word
+    names, when a sentence holding that key names the same thing."""
+    for steps in list(b.features.values()):
+        if len(steps) != 1 or len(steps[0].get("actions") or []) != 1:
+            continue
+        action, var = steps[0]["actions"][0], steps[0].get("variable")
+        info = next((i for i in b.infos if i.name == action), None)
+        spec = b.variables.get(str(var))
+        if info is None or info.skill != "hold" or not info.controls or spec is None:
+            continue
+        if not _borrowed(b, str(var), spec) or info.controls[0] not in b.labels:
+            continue
+        label = b.labels[info.controls[0]].text
+        found = _held_off_word(b, label)
+        if found is None:
+            continue
+        word, noun, line = found
+        del b.variables[str(var)]
+        if var in b.indicators:
+            b.indicators.remove(str(var))
+        name = b.unique(noun.replace(" ", "_"), b.variables)
+        b.variables[name] = {"type": "discrete", "values": ["on", "off"], "label": word}
+        _set_off_word(b, name, b.variables[name], word)
+        steps[0] = {"actions": [action], "variable": name, "effect": "toggle"}
+        b.note(
+            f"variables.{name}",
+            f"holding {label} switches the {noun}; the display shows {word} while it is off",
+            _unit_at(b, line),
+        )
+
+
+def _borrowed(b: Builder, var: str, spec: dict[str, Any]) -> bool:
+    """Whether a setting has no on/off reading of its own: another setting's list again, or
+    values from a chart column."""
+    if "cases" in spec:
+        return True
+    values = list(spec.get("values") or [])
+    return len(values) >= 3 and any(
+        other != var and list(o.get("values") or []) == values for other, o in b.variables.items()
+    )
+
+
+def _held_off_word(b: Builder, label: str) -> tuple[str, str, int] | None:
+    """A legend off word ("MUTE  the buzzer is muted") whose noun a sentence holding the key
+    names ("Hold MODE for 3 seconds to mute the buzzer"): the word, the noun, the legend line."""
+    held = re.compile(
+        rf"\bhold\b[^.]*?(?<![A-Za-z]){re.escape(label)}(?![A-Za-z])"
+        rf"|(?<![A-Za-z]){re.escape(label)}(?![A-Za-z])[^.]*?\bhold",
+        re.IGNORECASE,
+    )
+    sentences = [
+        u.text.lower()
+        for u in b.manual.units
+        if held.search(u.text)  # a sentence, or the key's own legend row that speaks of holding
+        or (u.cells and u.cells[0].strip() == label and re.search(r"\bhold", u.text, re.I))
+    ]
+    for number, line in enumerate(b.manual.lines, 1):
+        match = _LEGEND.match(line)
+        if not match:
+            continue
+        word = match.group(1).strip()
+        what = re.split(r"[.;:]\s", match.group(2) + " ")[0]
+        if len(what.split()) > _SHORT or not _OFF.search(what) or _ON.search(what):
+            continue
+        noun = _noun(what)
+        if noun and any(re.search(rf"\b{re.escape(noun)}\b", t) for t in sentences):
+            return word, noun, number
+    return None
+
+
+_FILLER = frozenset({"the", "is", "are", "was", "switched", "turned", "will", "does", "not", "no"})
+
+
+def _noun(what: str) -> str:
+    """The thing a legend's off description names: its words before the off phrase, without
+    articles and verbs ("the buzzer is muted" → "buzzer", "stirring arm switched off" →
+    "stirring arm")."""
+    off = _OFF.search(what)
+    head = what[: off.start()] if off else what
+    kept = [w for w in re.findall(r"[a-z]+", head.lower()) if w not in _FILLER]
+    return " ".join(kept[-2:])
 
 
 def _off_word(lines: list[str], var: str, label: str) -> tuple[str, int] | None:
