@@ -61,3 +61,17 @@ def test_codes_whose_lines_do_not_abbreviate_words_stay_codes() -> None:
     text = LEGEND.replace("(small, medium, large)", "(see the table)")
     model = read_manual(text, LEGEND_ACTIONS).model
     assert model.variables["size"].values == ["s", "m", "l"]
+
+
+def test_three_letter_codes_are_words_users_say_and_stay() -> None:
+    text = (
+        LEGEND.replace("S → M → L → S", "ECO → MAX → ECO")
+        .replace(
+            "S / M / L    cube size chosen (small, medium, large)",
+            "ECO / MAX    (economy, maximum)",
+        )
+        .replace("SIZE ", "MODE ")
+        .replace("size you want", "mode you want")
+    )
+    model = read_manual(text, ["press_mode", "press_power"]).model
+    assert model.variables["mode"].values == ["eco", "max"]

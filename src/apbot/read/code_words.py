@@ -18,8 +18,9 @@ from typing import Any
 
 from apbot.read.build import Builder
 
-# a display code: one to three letters, or letter groups joined by "+" ("W+B")
-_CODE = re.compile(r"[a-z]{1,3}(?:\+[a-z]{1,3})*")
+# a display code: one or two letters, or such groups joined by "+" ("W+B"); not three ("ECO",
+# "MAX" are words users say themselves)
+_CODE = re.compile(r"[a-z]{1,2}(?:\+[a-z]{1,2})*")
 _WORD = re.compile(r"[A-Za-z][A-Za-z'-]*")
 _NOT_CODES = frozenset({"on", "off"})
 _LEAD = 4  # a definition's words: the code's meaning comes first ("S - small cubes, …")
