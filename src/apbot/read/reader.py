@@ -21,9 +21,11 @@ from apbot.read.cases import apply_cases
 from apbot.read.cases_chosen import chosen_cases
 from apbot.read.cases_resets import apply_resets
 from apbot.read.cases_zones import zone_twins
+from apbot.read.code_words import name_code_words
 from apbot.read.codes import name_codes
 from apbot.read.initials import read_initials
 from apbot.read.labels import find_labels
+from apbot.read.off_words import read_held_off_words, read_off_words
 from apbot.read.report import Note, Report
 from apbot.read.roles import assign
 from apbot.read.shapes import CHOICE_WORDS
@@ -58,6 +60,9 @@ def read_manual(
     chosen_cases(builder)
     zone_twins(builder)
     name_codes(builder)
+    name_code_words(builder)
+    read_off_words(builder)
+    read_held_off_words(builder)
     read_initials(builder)
     apply_resets(builder)
     data = _assemble(builder, appliance_id, category)

@@ -1,0 +1,126 @@
+"""Display codes the manual spells out as words: "S / M / L  cube size (small, medium, large)".
+
+A panel with lamps or a small display prints a setting as letter codes (S / M / L, W+B / W / B,
+LO / HI), and the manual says once what each code stands for: a legend line that lists the codes
+and then the words in the same order, or a line per code ("S - small cubes", "W   white LEDs
+only"). The user says the word ("large cubes", "blue only"), never the code, so a setting read as
+codes takes the words as its values and keeps the codes as what the display shows.
+
+Only words the codes abbreviate count: every letter group of a code must begin a word of its
+meaning, in order ("W+B" → "white and blue", "LO" → "low"). Charts pairing codes that abbreviate
+nothing (A1 → CLASSIC) are :mod:`apbot.read.codes`' job.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+from apbot.read.build import Builder
+
+# a display code: one or two letters, or such groups joined by "+" ("W+B"); not three ("ECO",
+# "MAX" are words users say themselves)
+_CODE = re.compile(r"[a-z]{1,2}(?:\+[a-z]{1,2})*")
+_WORD = re.compile(r"[A-Za-z][A-Za-z'-]*")
+_NOT_CODES = frozenset({"on", "off"})
+_LEAD = 4  # a definition's words: the code's meaning comes first ("S - small cubes, …")
+_ITEMS = re.compile(r"\s*[/,;]\s*|\s+or\s+")
+
+
+def name_code_words(b: Builder) -> None:
+    """Give a setting whose values are all letter codes the words the manual spells them as."""
+    for var, spec in b.variables.items():
+        values = [str(v) for v in spec.get("values") or []]
+        if spec.get("type") != "discrete" or not 2 <= len(values) <= 8 or spec.get("show"):
+            continue
+        if not all(_CODE.fullmatch(v) for v in values) or set(values) <= _NOT_CODES:
+            continue
+        found = _legend_words(b.manual.lines, values) or _definition_words(b.manual.lines, values)
+        if not found:
+            continue
+        names, line = found
+        _rename(b, var, spec, names)
+        b.note(
+            f"variables.{var}.values",
+            "codes spelt out by the manual: " + ", ".join(f"{c} {n}" for c, n in names.items()),
+            _unit_at(b, line),
+        )
+
+
+def _meaning(code: str, words: list[str]) -> str | None:
+    """The words from the first to the last that the code's letter groups begin, in order
+    ("W+B", "white and blue LEDs" → "white and blue"), or None."""
+    parts = code.split("+")
+    lowered = [w.lower() for w in words]
+    first = last = -1
+    k = 0
+    for i, word in enumerate(lowered):
+        if k < len(parts) and len(word) > len(parts[k]) and word.startswith(parts[k]):
+            first = i if first < 0 else first
+            last = i
+            k += 1
+    if k < len(parts):
+        return None
+    return " ".join(lowered[first : last + 1])
+
+
+def _legend_words(lines: list[str], codes: list[str]) -> tuple[dict[str, str], int] | None:
+    """A line listing the codes ("S / M / L", "W+B / W / B") then, after a colon or in
+    brackets, as many items in the same order, each one the words a code abbreviates."""
+    printed = r"\s*/\s*".join(re.escape(c.upper()) for c in codes)
+    head = re.compile(rf"(?<![\w+]){printed}(?![\w+])")
+    for number, line in enumerate(lines, 1):
+        match = head.search(line)
+        if not match:
+            continue
+        rest = line[match.end() :]
+        for segment in re.split(r"[():]", rest):
+            items = [i for i in _ITEMS.split(segment.strip(" .")) if i]
+            if len(items) != len(codes):
+                continue
+            names = [_meaning(c, _WORD.findall(i)) for c, i in zip(codes, items, strict=True)]
+            if all(names) and len(set(names)) == len(codes):
+                return {c: str(n) for c, n in zip(codes, names, strict=True)}, number
+    return None
+
+
+def _definition_words(lines: list[str], codes: list[str]) -> tuple[dict[str, str], int] | None:
+    """Lines each led by one code and its meaning ("S - small cubes", "W   white LEDs only")."""
+    names: dict[str, str] = {}
+    first = 0
+    for code in codes:
+        lead = re.compile(rf"^\s*(?:[-•▪*]\s*)?{re.escape(code.upper())}(?:\s*[-–—:=]\s*|\s+)(.*)")
+        for number, line in enumerate(lines, 1):
+            match = lead.match(line)
+            if not match:
+                continue
+            name = _meaning(code, _WORD.findall(match.group(1))[:_LEAD])
+            if name:
+                names[code] = name
+                first = first or number
+                break
+    if len(names) == len(codes) and len(set(names.values())) == len(codes):
+        return names, first
+    return None
+
+
+def _rename(b: Builder, var: str, spec: dict[str, Any], names: dict[str, str]) -> None:
+    """Values become the words; the display shows each one's code as the manual prints it;
+    per-value settings depending on this one are keyed by the words too."""
+    spec["values"] = [names[str(v)] for v in spec["values"]]
+    if spec.get("initial") is not None:
+        spec["initial"] = names.get(str(spec["initial"]), spec["initial"])
+    spec["show"] = {n: c.upper() for c, n in names.items()}
+    for child in b.variables.values():
+        if child.get("depends_on") == var and "cases" in child:
+            child["cases"] = {names.get(str(k), k): c for k, c in child["cases"].items()}
+
+
+def _unit_at(b: Builder, line: int) -> int | None:
+    """The unit on (or last before) a raw line, for the note's quote."""
+    at = None
+    for i, unit in enumerate(b.manual.units):
+        if unit.line > line:
+            break
+        at = i
+    return at

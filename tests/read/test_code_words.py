@@ -1,0 +1,77 @@
+"""Letter codes the manual spells out as words, each on a small manual written in our own words:
+a lamp legend listing the codes and then their words in the same order, and a line per code
+("S - small cubes"). The value is the word the user says; the display keeps the code."""
+
+from __future__ import annotations
+
+from apbot.model.validate import check_model
+from apbot.read import read_manual
+
+# a legend line: the codes, then their words in brackets in the same order
+LEGEND = """FROSTA CUBE-3 ICE MACHINE
+Instructions
+
+CONTROL PANEL
+
+  SIZE      next cube size: S → M → L → S
+  POWER     switches the machine on or off
+
+Lamps
+  S / M / L    cube size chosen (small, medium, large)
+  RUN          making ice
+
+Press SIZE until the lamp of the size you want lights, then press POWER.
+"""
+LEGEND_ACTIONS = ["press_size", "press_power"]
+
+# a line per code, the code first and its meaning after it
+DEFINITIONS = """LUMO TANK LIGHT T-40
+User guide
+
+KEYS
+  TINT      which LEDs light: R+G → R → G → R+G
+  ON/OFF    light on or off
+
+Tint
+  Press TINT until the lamp of the tint you want lights:
+    R+G   red and green together (the factory setting)
+    R     red LEDs only
+    G     green LEDs only, for plants
+"""
+DEFINITIONS_ACTIONS = ["press_tint", "press_on_off"]
+
+
+def test_codes_a_legend_spells_out_become_words_and_the_display_shows_the_codes() -> None:
+    model = read_manual(LEGEND, LEGEND_ACTIONS).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    size = model.variables["size"]
+    assert size.values == ["small", "medium", "large"]
+    assert size.show == {"small": "S", "medium": "M", "large": "L"}
+
+
+def test_a_line_per_code_names_each_code_by_the_words_it_abbreviates() -> None:
+    model = read_manual(DEFINITIONS, DEFINITIONS_ACTIONS).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    tint = model.variables["tint"]
+    assert tint.values == ["red and green", "red", "green"]
+    assert tint.show == {"red and green": "R+G", "red": "R", "green": "G"}
+
+
+def test_codes_whose_lines_do_not_abbreviate_words_stay_codes() -> None:
+    text = LEGEND.replace("(small, medium, large)", "(see the table)")
+    model = read_manual(text, LEGEND_ACTIONS).model
+    assert model.variables["size"].values == ["s", "m", "l"]
+
+
+def test_three_letter_codes_are_words_users_say_and_stay() -> None:
+    text = (
+        LEGEND.replace("S → M → L → S", "ECO → MAX → ECO")
+        .replace(
+            "S / M / L    cube size chosen (small, medium, large)",
+            "ECO / MAX    (economy, maximum)",
+        )
+        .replace("SIZE ", "MODE ")
+        .replace("size you want", "mode you want")
+    )
+    model = read_manual(text, ["press_mode", "press_power"]).model
+    assert model.variables["mode"].values == ["eco", "max"]

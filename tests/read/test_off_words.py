@@ -1,0 +1,77 @@
+"""An on/off setting the display legend names only while it is off ("SILENT  sound switched
+off"), on a small manual written in our own words: it starts on and shows the word while off."""
+
+from __future__ import annotations
+
+from apbot.model.validate import check_model
+from apbot.read import read_manual
+
+SCALE = """LIBRA KS-7 KITCHEN SCALE
+Instructions
+
+CONTROL PANEL
+
+  No.  Key            Press briefly                     Press and hold (3 s)
+  ---  -------------  --------------------------------  --------------------------
+  1    ON/OFF         switches the scale on or off      --
+  2    TARE           sets the weight to zero           sound off / on
+  3    UNIT           grams or ounces                   --
+
+DISPLAY
+  0 g          the weight on the platform
+  SILENT       sound switched off
+  LO           battery low
+
+Each touch of a key gives a short beep. To silence it, hold TARE for 3 seconds.
+"""
+SCALE_ACTIONS = ["press_on_off", "press_tare", "hold_tare", "press_unit"]
+
+
+def test_a_toggle_the_legend_shows_only_while_off_starts_on() -> None:
+    model = read_manual(SCALE, SCALE_ACTIONS).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    held = [f for f, steps in model.features.items() if steps[0].actions == ["hold_tare"]]
+    assert held
+    tone = model.variables[model.features[held[0]][0].variable]
+    assert tone.values == ["on", "off"] and tone.initial == "on"
+    assert tone.show == {"on": "", "off": "SILENT"}
+
+
+def test_a_legend_line_saying_other_things_are_off_changes_nothing() -> None:
+    text = SCALE.replace("SILENT       sound switched off", "CAL          calibrating. Keys off")
+    model = read_manual(text, SCALE_ACTIONS).model
+    held = [f for f, steps in model.features.items() if steps[0].actions == ["hold_tare"]]
+    assert held
+    tone = model.variables[model.features[held[0]][0].variable]
+    assert tone.values == ["off", "on"]
+
+
+# a held key read with no setting of its own: the legend's off word and a sentence holding the
+# key name the same thing
+STEAMER = """VAPO S-3 FOOD STEAMER
+Instructions
+
+  Key / element        What it does
+  -------------------  ---------------------------------------------------------------
+  ON/OFF               Switches the steamer on or off.
+  MENU                 Each press selects the next menu in the order
+                       FISH → RICE → VEG → EGGS → FISH. Hold MENU for 3 seconds to silence
+                       the beeper.
+  START                Starts the selected menu; press again to stop.
+
+  Display symbols
+  ---------------
+  FISH        the selected menu
+  QUIET       the beeper is silenced
+"""
+STEAMER_ACTIONS = ["press_on_off", "press_menu", "hold_menu", "press_start"]
+
+
+def test_a_held_key_with_no_setting_of_its_own_switches_what_the_off_word_names() -> None:
+    model = read_manual(STEAMER, STEAMER_ACTIONS).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    held = [f for f, steps in model.features.items() if steps[0].actions == ["hold_menu"]]
+    assert held
+    beeper = model.variables[model.features[held[0]][0].variable]
+    assert beeper.values == ["on", "off"] and beeper.initial == "on"
+    assert beeper.show == {"on": "", "off": "QUIET"}
