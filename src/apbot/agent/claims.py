@@ -71,6 +71,10 @@ class Claims(Checks):
                 "the rest of the goal holds; not found on the panel: "
                 + ", ".join(f"{n}={v!r}" for n, v in self.unfound.items())
             )
+        if not inside:  # a request read as nothing: nothing was set, so nothing is confirmed
+            raise Stop(
+                "the request names no setting the model knows: nothing set, nothing to claim"
+            )
         raise Stop("the goal holds", success=True)
 
     def _look(self, names: list[str]) -> bool:
