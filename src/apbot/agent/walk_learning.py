@@ -293,9 +293,11 @@ class WalkLearning:
         session.belief.set_value(name, again.observed(name))  # where the confirming press left it
         return True
 
-    def learn_entry_format(self, name: str, last: Executed, observed: Any, unchanged: bool) -> bool:
+    def learn_entry_format(
+        self, name: str, last: Executed, observed: Any, unchanged: bool, typed: list[Executed]
+    ) -> bool:
         """:func:`apbot.agent.entry_learning.learn_entry_format` on this session."""
-        return learn_entry_format(self.session, name, last, observed, unchanged)
+        return learn_entry_format(self.session, name, last, observed, unchanged, typed)
 
     def widen(self, name: str, observed: list[Any]) -> None:
         """Let a keypad setting take values the belief's ranges missed."""
