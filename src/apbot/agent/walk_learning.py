@@ -11,6 +11,7 @@ class, so the moved code runs as before.
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 from itertools import pairwise
 from typing import Any
 
@@ -294,7 +295,12 @@ class WalkLearning:
         return True
 
     def learn_entry_format(
-        self, name: str, last: Executed, observed: Any, unchanged: bool, typed: list[Executed]
+        self,
+        name: str,
+        last: Executed,
+        observed: Any,
+        unchanged: bool,
+        typed: Sequence[Executed] = (),
     ) -> bool:
         """:func:`apbot.agent.entry_learning.learn_entry_format` on this session."""
         return learn_entry_format(self.session, name, last, observed, unchanged, typed)
