@@ -223,7 +223,7 @@ class Checks:
             # (text the belief cannot read is no value the key goes to)
             self.explorer.learn_goto(name, last, observed)
         elif effect == "digit" and observed is not None:
-            if self.explorer.learn_entry_format(name, last, observed, unchanged):
+            if self.explorer.learn_entry_format(name, last, observed, unchanged, adjusting):
                 return
             shown = [e.observed(name) for e in executed[upto:]]
             self.explorer.widen(name, [observed, *(v for v in shown if v not in (MISSING, None))])

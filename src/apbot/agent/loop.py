@@ -17,7 +17,7 @@ from __future__ import annotations
 from typing import Any
 
 from apbot.agent.budget import Budget
-from apbot.agent.checking import Checks
+from apbot.agent.claims import Claims, _locks, _starts
 from apbot.agent.discovery import VariableFinder
 from apbot.agent.displays import DisplayLearner
 from apbot.agent.environment import Environment
@@ -26,13 +26,11 @@ from apbot.agent.explorer import Explorer
 from apbot.agent.greedy import GreedyExecutor
 from apbot.agent.guards import GuardLearner
 from apbot.agent.guessed_choice import forget_guessed_choices
-from apbot.agent.looking import glance, route_to_screen
 from apbot.agent.merged import ProcedureSplitter
 from apbot.agent.planning import BeliefPlans
 from apbot.agent.procedures import ProcedureRepairer
 from apbot.agent.quantities import loose, magnitude, summary
 from apbot.agent.session import MISSING, AgentConfig, Executed, Session, Stop
-from apbot.model.display import can_show
 from apbot.model.domain import ValueProblem, all_values, build_domain, normalise
 from apbot.model.goal import GoalError
 from apbot.model.schema import DiscreteVariable
@@ -42,11 +40,12 @@ from apbot.plan.plan import MacroAction, Plan, Unreachable
 __all__ = ["AgentConfig", "run_agent"]
 
 
-class ClosedLoop(Checks):
+class ClosedLoop(Claims):
     """One episode of the agent: plans, executes, checks and dispatches repairs to its
     collaborators (the explorer, the procedure repairer, the greedy executor), which share one
     :class:`Session`. The check after each macro action, and the repairs it dispatches, are
-    :class:`apbot.agent.checking.Checks`."""
+    :class:`apbot.agent.checking.Checks`; the claim at the end,
+    :class:`apbot.agent.claims.Claims`."""
 
     def __init__(self, config: AgentConfig, context: TaskContext, env: Environment) -> None:
         self.session = Session(config, context, env, Budget())
@@ -150,38 +149,8 @@ class ClosedLoop(Checks):
                     return
                 if any(self.session.belief.value(n) != v for n, v in inside.items()):
                     raise Stop("the rest of the goal cannot be reached on the belief model")
-                if self.settle_contradictions(inside):
-                    return  # the belief now holds what was shown: plan again
-                unseen = self.session.unconfirmed(set(inside))
-                if unseen and self._look(unseen):
-                    return  # plan again from what the display showed
-                if not unseen and self._glance(set(inside)):
-                    return  # plan again from what the display showed
-                if unseen and self._read_again(unseen):
-                    return  # the display rules repaired from the look's texts: plan again
-                if unseen:  # believed, but the display last said otherwise: it would be a guess
-                    raise Stop(
-                        "the belief holds the goal, but the display last showed "
-                        + ", ".join(f"{n}={self._last_reading(n)}" for n in unseen)
-                    )
-                unseeable = [
-                    n
-                    for n in sorted(inside)
-                    if n not in self.session.ever_seen
-                    and not can_show(self.session.belief.model, n)
-                ]
-                if unseeable:  # an oven lamp: the plan may have done it, nothing can tell
-                    raise Stop(
-                        "the belief holds the goal, but the display cannot show "
-                        + ", ".join(unseeable)
-                        + ": done as planned, not confirmed"
-                    )
-                if self.unfound:
-                    raise Stop(
-                        "the rest of the goal holds; not found on the panel: "
-                        + ", ".join(f"{n}={v!r}" for n, v in self.unfound.items())
-                    )
-                raise Stop("the goal holds", success=True)
+                if self.settle_or_claim(inside):
+                    return  # looked at the display (or settled what it showed): plan again
             self.pending = list(found.macro_actions)
             self.session.episode.log("plan", " → ".join(m.feature for m in found.macro_actions))
         if any(_starts(n) or _locks(n) for n in self.pending[0].expect):
@@ -214,11 +183,6 @@ class ClosedLoop(Checks):
     def _rest_pending(self, inside: dict[str, Any]) -> bool:
         """A goal setting other than a start is not yet what the goal asks."""
         return any(self.session.belief.value(n) != v for n, v in inside.items() if not _starts(n))
-
-    def _last_reading(self, name: str) -> str:
-        if name in self.session.unread:
-            return "(unreadable)"
-        return repr(self.session.evidence.get(name, "?"))
 
     def explore(self, name: str, last: Executed, history: list[Any] | None = None) -> None:
         """Walk ``name`` with ``last``'s key; a walk stuck on one value looks for the key
@@ -370,50 +334,6 @@ class ClosedLoop(Checks):
                 ) from None
             raise Stop(f"no plan on the belief model: {exc.reason}") from None
 
-    def _look(self, names: list[str]) -> bool:
-        """Bring up a goal setting the display has not confirmed since the belief last changed
-        it (once each): enter its step and press its key once, and read what it shows."""
-        for name in names:
-            if not self.session.budget.once("inspect", f"look:{name}"):
-                continue
-            session = self.session
-            route = route_to_screen(
-                session.belief.compiled,
-                session.belief.state,
-                name,
-                session.belief.model.variables,  # a look changes nothing else
-                sorted(session.offered & set(session.belief.model.actions)),
-            )
-            if route is not None:
-                for action in route:
-                    session.press(session.planned(action), exploring=True)
-                return True
-            if self._guarding_the_goal():
-                continue  # getting out would undo the goal (stop a running cycle): no look
-            for feature, steps in self.session.belief.model.features.items():
-                index = next((i for i, s in enumerate(steps) if s.variable == name), None)
-                if index is None:
-                    continue
-                self.guards.lift_all()  # a dark panel shows nothing
-                self.procedures.enter_step(feature, index)
-                self.session.press(self.session.planned(steps[index].actions[0]), exploring=True)
-                return True
-        return False
-
-    def _glance(self, names: set[str]) -> bool:
-        """Look at a goal setting the display may not have confirmed (:func:`glance`)."""
-        return glance(self.session, {n for n in names if not (_starts(n) or _locks(n))})
-
-    def _guarding_the_goal(self) -> bool:
-        """A guard holds whose condition the goal itself asks for (running, locked)."""
-        compiled, state = self.session.belief.compiled, self.session.belief.state
-        goal = set(self.context.goal)
-        return any(
-            all(state.values[v] in ok for v, ok in guard.conditions)
-            and any(compiled.vars[v].name in goal for v, _ in guard.conditions)
-            for guard in compiled.guards
-        )
-
     def inspect(self, name: str) -> bool:
         """A goal setting the belief cannot reach: go through the procedure that adjusts it
         and walk its values, in case its keys do something else than believed. Once."""
@@ -441,19 +361,6 @@ class ClosedLoop(Checks):
                 )
                 return True
         return False
-
-
-RUN_STATES = ("running", "heating", "dispensing", "status", "start")
-
-
-def _starts(name: str) -> bool:
-    """A goal setting that starts the appliance (left for last while settings are missing)."""
-    return any(word in name for word in RUN_STATES)
-
-
-def _locks(name: str) -> bool:
-    """A goal setting that locks the panel (a child lock): the belief may lack its guard."""
-    return "lock" in name.split("_")
 
 
 def _outside_text(outside: dict[str, Any]) -> str:

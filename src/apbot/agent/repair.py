@@ -195,10 +195,22 @@ def entry_then_keys(
     return _rebuild(data)
 
 
-def set_entry_format(model: ApplianceModel, name: str, fmt: str) -> ApplianceModel:
-    """Read a keypad variable's typed digits in another format (``mm:ss`` for ``minutes``)."""
+def set_entry_format(
+    model: ApplianceModel,
+    name: str,
+    fmt: str,
+    max_digits: int | None = None,
+    overflow: str | None = None,
+) -> ApplianceModel:
+    """Read a keypad variable's typed digits in another format (``mm:ss`` for ``minutes``);
+    ``max_digits`` / ``overflow``: how many digits it keeps, and what a digit past them does."""
     data = _dump(model)
-    data["variables"][name].setdefault("entry", {})["format"] = fmt
+    entry = data["variables"][name].setdefault("entry", {})
+    entry["format"] = fmt
+    if max_digits is not None:
+        entry["max_digits"] = max_digits
+    if overflow is not None:
+        entry["overflow"] = overflow
     return _rebuild(data)
 
 

@@ -11,9 +11,11 @@ class, so the moved code runs as before.
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 from itertools import pairwise
 from typing import Any
 
+from apbot.agent.entry_learning import learn_entry_format
 from apbot.agent.infer import (
     Dark,
     Unread,
@@ -29,12 +31,11 @@ from apbot.agent.repair import (
     RepairError,
     redefine_domain,
     set_effects,
-    set_entry_format,
     set_on_entry,
 )
 from apbot.agent.session import Executed, Session
 from apbot.model.domain import all_values, case_domains
-from apbot.model.effects import default_effect, parse_entry
+from apbot.model.effects import default_effect
 from apbot.model.schema import (
     Add,
     ApplianceModel,
@@ -293,39 +294,16 @@ class WalkLearning:
         session.belief.set_value(name, again.observed(name))  # where the confirming press left it
         return True
 
-    def learn_entry_format(self, name: str, last: Executed, observed: Any, unchanged: bool) -> bool:
-        """Digits typed gave another value than the belief's entry format reads: find the
-        format that reads them as shown (``minutes`` for what is really ``mm:ss``). A value
-        that did not change at all fits every format that reads the digits as no value of the
-        setting (typing 5 on an ``mm:ss`` keypad for a setting in whole minutes)."""
-        spec = self.session.belief.model.variables[name]
-        entry = getattr(spec, "entry", None)
-        shown = magnitude(spec, observed)
-        if entry is None or shown is None or not last.buffer:
-            return False
-        possible = set(self.session.magnitudes(name))
-
-        def fits(fmt: str) -> bool:
-            reading = parse_entry(last.buffer, entry.model_copy(update={"format": fmt}))
-            return reading == shown or (unchanged and (reading is None or reading not in possible))
-
-        if fits(entry.format):
-            return False  # the format reads the digits as shown: the fault is elsewhere
-        fitting = [f for f in _entry_formats(spec) if fits(f)]
-        if not fitting or not self.session.budget.once("entry", name):
-            return False
-        try:
-            new = set_entry_format(self.session.belief.model, name, fitting[0])
-        except RepairError as exc:
-            self.session.episode.log("repair", f"could not repair {name}'s entry: {exc}")
-            return False
-        self.session.adopt(
-            new,
-            f"{name}: digits are read as {fitting[0]} (typed {last.buffer}, shown {observed})",
-            last.pointer,
-        )
-        self.session.belief.set_value(name, observed)
-        return True
+    def learn_entry_format(
+        self,
+        name: str,
+        last: Executed,
+        observed: Any,
+        unchanged: bool,
+        typed: Sequence[Executed] = (),
+    ) -> bool:
+        """:func:`apbot.agent.entry_learning.learn_entry_format` on this session."""
+        return learn_entry_format(self.session, name, last, observed, unchanged, typed)
 
     def widen(self, name: str, observed: list[Any]) -> None:
         """Let a keypad setting take values the belief's ranges missed."""
@@ -354,16 +332,6 @@ class WalkLearning:
             f"{name}: allow {low:g}..{high:g} in steps of {step:g}",
             self.session.belief.pointer(),
         )
-
-
-def _entry_formats(spec: Any) -> list[str]:
-    """The keypad formats a variable could use, the one matching its display first."""
-    if not isinstance(spec, TimeVariable):
-        return ["number"]
-    order = ["mm:ss", "hh:mm", "h:mm", "hh:mm:ss", "minutes", "seconds"]
-    preferred = {"mm:ss": "mm:ss", "hh:mm": "hh:mm", "h:mm": "h:mm", "min": "minutes"}
-    first = preferred.get(spec.format)
-    return ([first] if first else []) + [f for f in order if f != first]
 
 
 def _ends(wrap: bool | None) -> str:

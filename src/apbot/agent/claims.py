@@ -1,0 +1,127 @@
+"""The claim at the end of an episode: the belief holds the goal, but does the display say so?
+
+When the plan to the goal is empty, the loop does not claim success on the belief's word alone:
+a goal setting the display last showed otherwise, never showed, or showed only before a press
+the belief did not foresee is looked at first (a look presses nothing that changes it); a
+setting no screen can show, or one the panel lacks, is reported as done but not confirmed.
+Kept apart from the loop's planning (:mod:`apbot.agent.loop`), whose part it is.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from apbot.agent.checking import Checks
+from apbot.agent.episode import TaskContext
+from apbot.agent.looking import glance, route_to_screen
+from apbot.agent.session import Stop
+from apbot.model.display import can_show
+
+RUN_STATES = ("running", "heating", "dispensing", "status", "start")
+
+
+def _starts(name: str) -> bool:
+    """A goal setting that starts the appliance (left for last while settings are missing)."""
+    return any(word in name for word in RUN_STATES)
+
+
+def _locks(name: str) -> bool:
+    """A goal setting that locks the panel (a child lock): the belief may lack its guard."""
+    return "lock" in name.split("_")
+
+
+class Claims(Checks):
+    """The claim of success and the looks before it (a part of
+    :class:`apbot.agent.loop.ClosedLoop`)."""
+
+    context: TaskContext
+    unfound: dict[str, Any]
+
+    def settle_or_claim(self, inside: dict[str, Any]) -> bool:
+        """The belief holds ``inside`` and no press is left: settle what the display showed,
+        look at what it has not confirmed (True: it pressed or repaired, plan again), or stop
+        with the claim the display allows."""
+        if self.settle_contradictions(inside):
+            return True  # the belief now holds what was shown: plan again
+        unseen = self.session.unconfirmed(set(inside))
+        if unseen and self._look(unseen):
+            return True  # plan again from what the display showed
+        if not unseen and self._glance(set(inside)):
+            return True  # plan again from what the display showed
+        if unseen and self._read_again(unseen):
+            return True  # the display rules repaired from the look's texts: plan again
+        if unseen:  # believed, but the display last said otherwise: it would be a guess
+            raise Stop(
+                "the belief holds the goal, but the display last showed "
+                + ", ".join(f"{n}={self._last_reading(n)}" for n in unseen)
+            )
+        unseeable = [
+            n
+            for n in sorted(inside)
+            if n not in self.session.ever_seen and not can_show(self.session.belief.model, n)
+        ]
+        if unseeable:  # an oven lamp: the plan may have done it, nothing can tell
+            raise Stop(
+                "the belief holds the goal, but the display cannot show "
+                + ", ".join(unseeable)
+                + ": done as planned, not confirmed"
+            )
+        if self.unfound:
+            raise Stop(
+                "the rest of the goal holds; not found on the panel: "
+                + ", ".join(f"{n}={v!r}" for n, v in self.unfound.items())
+            )
+        if not inside:  # a request read as nothing: nothing was set, so nothing is confirmed
+            raise Stop(
+                "the request names no setting the model knows: nothing set, nothing to claim"
+            )
+        raise Stop("the goal holds", success=True)
+
+    def _look(self, names: list[str]) -> bool:
+        """Bring up a goal setting the display has not confirmed since the belief last changed
+        it (once each): enter its step and press its key once, and read what it shows."""
+        for name in names:
+            if not self.session.budget.once("inspect", f"look:{name}"):
+                continue
+            session = self.session
+            route = route_to_screen(
+                session.belief.compiled,
+                session.belief.state,
+                name,
+                session.belief.model.variables,  # a look changes nothing else
+                sorted(session.offered & set(session.belief.model.actions)),
+            )
+            if route is not None:
+                for action in route:
+                    session.press(session.planned(action), exploring=True)
+                return True
+            if self._guarding_the_goal():
+                continue  # getting out would undo the goal (stop a running cycle): no look
+            for feature, steps in self.session.belief.model.features.items():
+                index = next((i for i, s in enumerate(steps) if s.variable == name), None)
+                if index is None:
+                    continue
+                self.guards.lift_all()  # a dark panel shows nothing
+                self.procedures.enter_step(feature, index)
+                self.session.press(self.session.planned(steps[index].actions[0]), exploring=True)
+                return True
+        return False
+
+    def _glance(self, names: set[str]) -> bool:
+        """Look at a goal setting the display may not have confirmed (:func:`glance`)."""
+        return glance(self.session, {n for n in names if not (_starts(n) or _locks(n))})
+
+    def _guarding_the_goal(self) -> bool:
+        """A guard holds whose condition the goal itself asks for (running, locked)."""
+        compiled, state = self.session.belief.compiled, self.session.belief.state
+        goal = set(self.context.goal)
+        return any(
+            all(state.values[v] in ok for v, ok in guard.conditions)
+            and any(compiled.vars[v].name in goal for v, _ in guard.conditions)
+            for guard in compiled.guards
+        )
+
+    def _last_reading(self, name: str) -> str:
+        if name in self.session.unread:
+            return "(unreadable)"
+        return repr(self.session.evidence.get(name, "?"))

@@ -1,0 +1,44 @@
+"""The claim of success rests on what the display confirmed of what was asked: a request read
+as no setting at all confirms nothing, so it is no success whatever the appliance shows."""
+
+from __future__ import annotations
+
+from apbot.agent.environment import SimulatorEnvironment
+from apbot.agent.episode import TaskContext
+from apbot.agent.registry import get_method
+from tests.helpers import model_from
+
+LAMP = """
+controls: [{id: mode, label: MODE}]
+variables:
+  mode: {type: discrete, values: [low, high], label: MODE}
+actions:
+  press_mode: {control: mode}
+features:
+  set_mode: [{actions: [press_mode], variable: mode, effect: next}]
+display:
+  idle: "{mode}"
+"""
+
+
+def test_a_request_read_as_nothing_is_not_claimed() -> None:
+    # the user asked for something the goal reader could not place ("the cosy setting"): the
+    # goal handed to the agent is empty, which the appliance trivially "holds"
+    model = model_from(LAMP)
+    env = SimulatorEnvironment(model, "display")
+    context = TaskContext(
+        "lamp", "test", "t", "the cosy one", {}, model, actions=tuple(env.actions)
+    )
+    episode = get_method("apbot").run(context, env)
+    assert not episode.claimed_success
+    assert "nothing" in episode.failure
+    assert episode.execution_steps == 0
+
+
+def test_a_request_read_as_a_setting_is_still_claimed_when_shown() -> None:
+    model = model_from(LAMP)
+    env = SimulatorEnvironment(model, "display")
+    goal = {"mode": "high"}
+    context = TaskContext("lamp", "test", "t", "high", goal, model, actions=tuple(env.actions))
+    episode = get_method("apbot").run(context, env)
+    assert episode.claimed_success, episode.failure
