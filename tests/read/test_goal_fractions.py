@@ -126,3 +126,35 @@ def test_a_part_of_an_hour_stays_a_duration(drinks: ApplianceModel) -> None:
     goal = parse_instruction(drinks, "Cocoa, and hold it for a quarter of an hour")
     assert goal.get("hold_time") == 15
     assert "fill" not in goal
+
+
+RINSER = """
+appliance: {id: rinser_1, category: parts_rinser, name: "Clearo C2 parts rinser", brand: C}
+controls:
+  - {id: cycle_button, kind: button, label: "CYCLE"}
+  - {id: fill_button, kind: button, label: "FILL"}
+variables:
+  cycle:
+    type: discrete
+    values: [gentle, heavy]
+  fill:
+    type: discrete
+    values: [full, half]
+actions:
+  press_cycle: {control: cycle_button}
+  press_fill: {control: fill_button}
+features:
+  cycle:
+    - {actions: [press_cycle], variable: cycle, effect: next}
+  fill:
+    - {actions: [press_fill], variable: fill, effect: next}
+display:
+  idle: ""
+"""
+
+
+def test_a_part_of_a_cup_of_something_else_is_no_half_level() -> None:
+    """HALF beside FULL is a level ("half fill"), not a scale of parts of a cup: half a cup
+    of soap poured in by the user leaves it alone."""
+    goal = parse_instruction(loads_model(RINSER), "Heavy cycle with half a cup of soap")
+    assert goal == {"cycle": "heavy"}

@@ -64,3 +64,41 @@ def test_a_distinctive_word_before_the_appliances_own_thing_names_the_value(
 def test_the_word_elsewhere_names_no_value(inflator: ApplianceModel) -> None:
     goal = parse_instruction(inflator, "3 bar, we ride in the mountain on Sunday")
     assert goal == {"pressure": 3}
+
+
+ROASTER = """
+appliance: {id: roaster_1, category: bench_oven, name: "Hotbox H3 bench oven", brand: H}
+controls:
+  - {id: mode_button, kind: button, label: "MODE"}
+  - {id: temp_button, kind: button, label: "TEMP"}
+variables:
+  mode:
+    type: discrete
+    values: [roast, fan_roast, toast]
+  temperature:
+    type: numeric
+    unit: C
+    ranges: [[100, 240, 20]]
+    wrap: true
+    initial: 180
+actions:
+  press_mode: {control: mode_button}
+  press_temp: {control: temp_button}
+features:
+  mode:
+    - {actions: [press_mode], variable: mode, effect: next}
+  temperature:
+    - {actions: [press_temp], variable: temperature, effect: next}
+display:
+  idle: ""
+"""
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["Roast the chicken in my fan oven at 200", "Roast at 200 in the fan bench oven"],
+)
+def test_a_word_before_the_appliance_itself_names_no_value(text: str) -> None:
+    """ "the fan oven" is what kind of oven it is, not the FAN ROAST programme: the oven is the
+    appliance, not something it works on."""
+    assert parse_instruction(loads_model(ROASTER), text).get("mode") == "roast"

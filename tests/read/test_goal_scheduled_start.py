@@ -65,3 +65,11 @@ def test_not_now_holds_the_start_back(sprinkler: ApplianceModel) -> None:
 
 def test_a_start_now_still_starts(sprinkler: ApplianceModel) -> None:
     assert parse_instruction(sprinkler, "Start watering now, at full flow.")["running"] == "on"
+
+
+@pytest.mark.parametrize("text", ["Start watering and stop at 9 pm", "Begin and be done at 10 pm"])
+def test_a_time_joined_on_to_another_verb_is_no_schedule(
+    sprinkler: ApplianceModel, text: str
+) -> None:
+    """The time after "and stop" is when it stops: the start itself is now."""
+    assert parse_instruction(sprinkler, text).get("running") == "on"

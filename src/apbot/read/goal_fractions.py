@@ -67,6 +67,7 @@ def fractions(
             if name not in goal
             and info.role == "setting"
             and isinstance(info.var, DiscreteVariable)
+            and _a_measure(info.var, info.values)
             for value in info.values
             if _part_of(info.var, value) == part
         ]
@@ -104,6 +105,13 @@ def _fraction_at(text: Text, k: int) -> tuple[Fraction, int] | None:
     if text.word(j) not in _MEASURES or text.word(j) in CLAUSE_ENDS:
         return None
     return part, j + 1
+
+
+def _a_measure(var: DiscreteVariable, values: list[Any]) -> bool:
+    """The setting steps through parts of a measure (1/4, 1/2, 3/4 cup): two parts at least.
+    A HALF beside FULL is a level of something else ("half load", "half power"), and "half a
+    cup of detergent" says nothing about it."""
+    return len({_part_of(var, value) for value in values} - {None}) >= 2
 
 
 def _part_of(var: DiscreteVariable, value: Any) -> Fraction | None:

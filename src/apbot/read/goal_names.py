@@ -39,6 +39,8 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
     n = len(text.tokens)
     verbs = verb_positions(text)
     itself = {stem(w) for w in re.findall(r"[a-z]+", _appliance_name(view))}
+    heads = _head_nouns(view)
+    works_on = itself - heads
     running = {stem(n) for n, info in view.infos.items() if info.role == "running"}
     for var, value, stems, weight in view.phrases:
         info = view.infos[var]
@@ -63,7 +65,7 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
                 rest = {stem(w) for w in phrase_words(str(value))} - set(stems)
                 turned = end + 1 if text.stems[end : end + 1] and text.stems[end] in rest else end
                 if not (own or (opening and text.word(end) in ("with", ","))):
-                    if not _heads(text, turned, itself):
+                    if not _heads(text, turned, works_on, heads):
                         continue  # a first word alone names a value only beside "programme"
                         # (or opening the sentence: "Auto with ExtraDry"; or before what the
                         # appliance works on: "an AGM battery" on a battery charger)
@@ -126,11 +128,26 @@ _PARTICLE_VERBS = frozenset(
 )
 
 
-def _heads(text: Text, k: int, itself: set[str]) -> bool:
+def _heads(text: Text, k: int, works_on: set[str], heads: set[str]) -> bool:
     """The word at k is what the appliance is named for ("an AGM battery" on a battery
     charger, "a relaxing auto massage" on a massage cushion with AUTO RELAX): the value's
     distinctive word before it says which kind of it."""
-    return k < len(text.tokens) and text.stems[k] in itself and text.word(k).isalpha()
+    if k + 1 < len(text.stems) and text.stems[k + 1] in works_on | heads:
+        return False  # "the convection countertop oven": the appliance's own name goes on
+    return k < len(text.tokens) and text.stems[k] in works_on and text.word(k).isalpha()
+
+
+def _head_nouns(view: Model) -> set[str]:
+    """The nouns naming the appliance itself, the last word of its name and of its category
+    ("oven", "charger"): a word before them says what kind of appliance it is ("the
+    convection oven"), not which programme to run."""
+    appliance = view.model.appliance
+    found = set()
+    for said in (appliance.name, appliance.category.replace("_", " ")):
+        words = re.findall(r"[a-z]+", said.casefold())
+        if words:
+            found.add(stem(words[-1]))
+    return found
 
 
 def _compound_tail(text: Text, i: int) -> bool:

@@ -275,10 +275,14 @@ def _later(text: Text, k: int) -> bool:
     return False
 
 
+_TIME_STOPS = CLAUSE_ENDS | {",", "and", "then", "but", "so", "until", "till", "when"}
+
+
 def _at_a_time_of_day(text: Text, k: int) -> bool:
-    """A time of day said with "at" in the start word's clause, within a few words."""
+    """A time of day said with "at" in the start word's clause, within a few words, before
+    another verb is joined on ("start it and stop at 7 pm": the time is the stop's)."""
     end = k + 1
-    while end < min(k + 7, len(text.tokens)) and text.word(end) not in CLAUSE_ENDS | {","}:
+    while end < min(k + 7, len(text.tokens)) and text.word(end) not in _TIME_STOPS:
         end += 1
     return any(
         mention.kind == "clock" and mention.lead == "at" and mention.start < end
