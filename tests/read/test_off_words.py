@@ -75,3 +75,31 @@ def test_a_held_key_with_no_setting_of_its_own_switches_what_the_off_word_names(
     beeper = model.variables[model.features[held[0]][0].variable]
     assert beeper.values == ["on", "off"] and beeper.initial == "on"
     assert beeper.show == {"on": "", "off": "QUIET"}
+
+
+# a legend word whose meaning is another thing and only mentions a setting going off: the
+# setting is still an ordinary toggle that starts off
+OVEN = """BRIO K-5 MINI OVEN
+Instructions
+
+CONTROL PANEL
+
+  No.  Key            Press briefly
+  ---  -------------  --------------------------------
+  1    POWER          switches the oven on or off
+  2    LAMP           oven lamp on or off
+  3    FAN            convection fan on or off
+
+DISPLAY
+  180          the temperature
+  ECO          energy saving, lamp off after 2 min
+
+Press LAMP to switch the oven lamp on or off. The lamp is off when the oven is switched on.
+"""
+
+
+def test_a_legend_word_naming_something_else_leaves_the_toggle_alone() -> None:
+    model = read_manual(OVEN, ["press_power", "press_lamp", "press_fan"]).model
+    lamp = model.variables["lamp"]
+    assert lamp.show != {"on": "", "off": "ECO"}
+    assert lamp.initial != "on"

@@ -22,6 +22,7 @@ from apbot.read.build import Builder
 # a legend line: a display word in capitals, two spaces or more, what it means
 _LEGEND = re.compile(r"^\s*(?:[-•▪*]\s*)?([A-Z][A-Z0-9+]+(?: [A-Z0-9+]+)?)\s{2,}(\S.*)$")
 _SHORT = 8  # words: a legend's meaning, not a paragraph that happens to say "off"
+_SUBJECT = 3  # words naming what is off ("the door alarm", "end signal")
 _OFF = re.compile(
     r"\b(?:off|muted?|silenced|silent|disabled|will\s+not|won't|does\s+not|no\s+longer)\b",
     re.IGNORECASE,
@@ -149,10 +150,21 @@ def _off_word(lines: list[str], var: str, label: str) -> tuple[str, int] | None:
             continue
         if word == label.upper() or not _OFF.search(what) or _ON.search(what):
             continue
-        said = {w.lower() for w in re.findall(r"[A-Za-z]+", what)}
-        if nouns & said:
+        if nouns & set(_subject(what)):
             return word, number
     return None
+
+
+def _subject(what: str) -> list[str]:
+    """The words a legend's meaning says are off, when they open it as one short clause
+    ("the buzzer is muted", "end signal switched off"); none when the meaning first names
+    something else ("energy saving, lamp off after 2 min": the word is the saving's)."""
+    off = _OFF.search(what)
+    head = what[: off.start()] if off else ""
+    if re.search(r"[,;:()]", head):
+        return []
+    kept = [w for w in re.findall(r"[a-z]+", head.lower()) if w not in _FILLER]
+    return kept if len(kept) <= _SUBJECT else []
 
 
 def _set_off_word(b: Builder, var: str, spec: dict[str, Any], word: str) -> None:
