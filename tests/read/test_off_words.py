@@ -103,3 +103,30 @@ def test_a_legend_word_naming_something_else_leaves_the_toggle_alone() -> None:
     lamp = model.variables["lamp"]
     assert lamp.show != {"on": "", "off": "ECO"}
     assert lamp.initial != "on"
+
+
+# a held key whose own setting copies another's list, in a sentence that only mentions the beep:
+# the hold keeps its setting (the beep is switched by another key)
+HEATER = """AERO H-2 HEATER FAN
+Instructions
+
+CONTROL PANEL
+
+  Key          What it does
+  -----------  ---------------------------------------------
+  POWER        switches the heater on or off
+  SPEED        fan speed: LOW, MED or HIGH
+  NIGHT        hold 3 s: night speed LOW, MED or HIGH
+
+Hold NIGHT for 3 seconds to choose the night speed; each beep confirms a change.
+
+DISPLAY
+  88           the room temperature
+  SILENT       beep switched off
+"""
+
+
+def test_a_hold_that_only_mentions_the_muted_thing_keeps_its_setting() -> None:
+    model = read_manual(HEATER, ["press_power", "press_speed", "hold_night"]).model
+    (steps,) = [s for s in model.features.values() if s[0].actions == ["hold_night"]]
+    assert model.variables[steps[0].variable].values == ["low", "med", "high"]

@@ -28,6 +28,12 @@ _OFF = re.compile(
     re.IGNORECASE,
 )
 _ON = re.compile(r"\bon\b", re.IGNORECASE)
+# a sentence holding a key that switches a thing off or on, not one that only mentions it
+# ("Hold NIGHT 3 s to choose the night speed; each beep confirms" switches no beep)
+_SWITCHING = re.compile(
+    r"\b(?:mute|unmute|silence|switch(?:es)?|turns?|off|disables?|enables?|toggles?)\b",
+    re.IGNORECASE,
+)
 _SKIP = frozenset({"power", "running", "child_lock"})
 
 
@@ -104,11 +110,16 @@ def _held_off_word(b: Builder, label: str) -> tuple[str, str, int] | None:
         rf"|(?<![A-Za-z]){re.escape(label)}(?![A-Za-z])[^.]*?\bhold",
         re.IGNORECASE,
     )
-    sentences = [
-        u.text.lower()
-        for u in b.manual.units
-        if held.search(u.text)  # a sentence, or the key's own legend row that speaks of holding
-        or (u.cells and u.cells[0].strip() == label and re.search(r"\bhold", u.text, re.I))
+    own_row = [  # the key's own legend row that speaks of holding
+        u.text for u in b.manual.units if u.cells and u.cells[0].strip() == label
+    ]
+    texts = [u.text for u in b.manual.units if held.search(u.text)]
+    sentences = [  # the sentence holding the key, and it switches something off
+        t.lower()
+        for text in texts + own_row
+        for t in re.split(r"(?<=[.;!?])\s+", text)
+        if (held.search(t) or (text in own_row and re.search(r"\bhold", t, re.I)))
+        and _SWITCHING.search(t)
     ]
     for number, line in enumerate(b.manual.lines, 1):
         match = _LEGEND.match(line)
