@@ -130,3 +130,31 @@ def test_a_hold_that_only_mentions_the_muted_thing_keeps_its_setting() -> None:
     model = read_manual(HEATER, ["press_power", "press_speed", "hold_night"]).model
     (steps,) = [s for s in model.features.values() if s[0].actions == ["hold_night"]]
     assert model.variables[steps[0].variable].values == ["low", "med", "high"]
+
+
+# a fault code in the troubleshooting list saying a thing will not start is no display word
+# of that thing's off state: the toggle stays an ordinary one
+COOKER = """CALDA S-1 SOUS VIDE
+Instructions
+
+CONTROL PANEL
+
+  Key          What it does
+  -----------  ---------------------------------------------
+  POWER        switches the cooker on or off
+  PUMP         circulation pump on or off
+  START        starts heating
+
+Press PUMP to switch the circulation pump on or off. The pump is off when you switch on.
+
+TROUBLESHOOTING
+  E2           pump will not start: clean the impeller
+  E3           water too low
+"""
+
+
+def test_a_fault_code_is_no_off_word() -> None:
+    model = read_manual(COOKER, ["press_power", "press_pump", "press_start"]).model
+    pump = model.variables["pump"]
+    assert pump.show != {"on": "", "off": "E2"}
+    assert pump.initial != "on"

@@ -18,6 +18,7 @@ import re
 from typing import Any
 
 from apbot.read.build import Builder
+from apbot.read.shapes import ASIDE_HEADING
 
 # a legend line: a display word in capitals, two spaces or more, what it means
 _LEGEND = re.compile(r"^\s*(?:[-•▪*]\s*)?([A-Z][A-Z0-9+]+(?: [A-Z0-9+]+)?)\s{2,}(\S.*)$")
@@ -47,7 +48,7 @@ def read_off_words(b: Builder) -> None:
         show = spec.get("show")
         if isinstance(show, dict) and show.get("on"):
             continue  # the display already names it while on
-        found = _off_word(b.manual.lines, var, str(spec.get("label") or ""))
+        found = _off_word(_legend_lines(b), var, str(spec.get("label") or ""))
         if found is None:
             continue
         word, line = found
@@ -121,7 +122,7 @@ def _held_off_word(b: Builder, label: str) -> tuple[str, str, int] | None:
         if (held.search(t) or (text in own_row and re.search(r"\bhold", t, re.I)))
         and _SWITCHING.search(t)
     ]
-    for number, line in enumerate(b.manual.lines, 1):
+    for number, line in enumerate(_legend_lines(b), 1):
         match = _LEGEND.match(line)
         if not match:
             continue
@@ -176,6 +177,21 @@ def _subject(what: str) -> list[str]:
         return []
     kept = [w for w in re.findall(r"[a-z]+", head.lower()) if w not in _FILLER]
     return kept if len(kept) <= _SUBJECT else []
+
+
+def _legend_lines(b: Builder) -> list[str]:
+    """The manual's lines, blanked under a troubleshooting, error-code or safety heading: a
+    fault's code there ("E2  pump will not start") is no word the display shows while a
+    setting is off."""
+    heading: dict[int, str] = {}
+    for unit in b.manual.units:
+        heading.setdefault(unit.line, unit.heading)
+    out: list[str] = []
+    last = ""
+    for number, line in enumerate(b.manual.lines, 1):
+        last = heading.get(number, last)
+        out.append("" if last and ASIDE_HEADING.search(last) else line)
+    return out
 
 
 def _set_off_word(b: Builder, var: str, spec: dict[str, Any], word: str) -> None:
