@@ -75,3 +75,33 @@ def test_three_letter_codes_are_words_users_say_and_stay() -> None:
     )
     model = read_manual(text, ["press_mode", "press_power"]).model
     assert model.variables["mode"].values == ["eco", "max"]
+
+
+# letter codes that are a fault's (under a troubleshooting heading) or the models' ("Models
+# S / M / L") do not spell out a setting's codes
+ICE = """FRIO I-2 ICE MAKER
+Instructions
+
+CONTROL PANEL
+
+  Key          What it does
+  -----------  ---------------------------------------------
+  POWER        switches the ice maker on or off
+  SIZE         cube size S, M or L
+
+MODELS
+Models S / M / L (standard, maxi, large tank).
+
+TROUBLESHOOTING
+  S  Sensor fault: call service.
+  M  Motor blocked: remove the ice.
+  L  Low water: fill the tank.
+"""
+
+
+def test_fault_codes_and_model_codes_are_no_setting_words() -> None:
+    model = read_manual(ICE, ["press_power", "press_size"]).model
+    assert model.variables["size"].values == ["s", "m", "l"]
+    without_models = ICE.replace("Models S / M / L (standard, maxi, large tank).", "")
+    model = read_manual(without_models, ["press_power", "press_size"]).model
+    assert model.variables["size"].values == ["s", "m", "l"]

@@ -17,6 +17,7 @@ import re
 from typing import Any
 
 from apbot.read.build import Builder
+from apbot.read.shapes import ASIDE_HEADING
 
 # a display code: one or two letters, or such groups joined by "+" ("W+B"); not three ("ECO",
 # "MAX" are words users say themselves)
@@ -25,6 +26,8 @@ _WORD = re.compile(r"[A-Za-z][A-Za-z'-]*")
 _NOT_CODES = frozenset({"on", "off"})
 _LEAD = 4  # a definition's words: the code's meaning comes first ("S - small cubes, …")
 _ITEMS = re.compile(r"\s*[/,;]\s*|\s+or\s+")
+# a line naming models or versions: its codes are the models' ("Models S / M / L (standard, …)")
+_MODELS = re.compile(r"\b(?:models?|versions?|variants?)\b", re.IGNORECASE)
 
 
 def name_code_words(b: Builder) -> None:
@@ -35,7 +38,8 @@ def name_code_words(b: Builder) -> None:
             continue
         if not all(_CODE.fullmatch(v) for v in values) or set(values) <= _NOT_CODES:
             continue
-        found = _legend_words(b.manual.lines, values) or _definition_words(b.manual.lines, values)
+        lines = _own_lines(b)
+        found = _legend_words(lines, values) or _definition_words(lines, values)
         if not found:
             continue
         names, line = found
@@ -45,6 +49,22 @@ def name_code_words(b: Builder) -> None:
             "codes spelt out by the manual: " + ", ".join(f"{c} {n}" for c, n in names.items()),
             _unit_at(b, line),
         )
+
+
+def _own_lines(b: Builder) -> list[str]:
+    """The manual's lines, blanked where codes are no setting's: under a troubleshooting,
+    error-code or safety heading ("L  low water: fill the tank" is a fault's code), or on a
+    line naming models ("Models S / M / L")."""
+    heading: dict[int, str] = {}
+    for unit in b.manual.units:
+        heading.setdefault(unit.line, unit.heading)
+    out: list[str] = []
+    last = ""
+    for number, line in enumerate(b.manual.lines, 1):
+        last = heading.get(number, last)
+        aside = bool(last) and bool(ASIDE_HEADING.search(last))
+        out.append("" if aside or _MODELS.search(line) else line)
+    return out
 
 
 def _meaning(code: str, words: list[str]) -> str | None:

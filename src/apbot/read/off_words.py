@@ -18,15 +18,23 @@ import re
 from typing import Any
 
 from apbot.read.build import Builder
+from apbot.read.shapes import ASIDE_HEADING
 
 # a legend line: a display word in capitals, two spaces or more, what it means
 _LEGEND = re.compile(r"^\s*(?:[-•▪*]\s*)?([A-Z][A-Z0-9+]+(?: [A-Z0-9+]+)?)\s{2,}(\S.*)$")
 _SHORT = 8  # words: a legend's meaning, not a paragraph that happens to say "off"
+_SUBJECT = 3  # words naming what is off ("the door alarm", "end signal")
 _OFF = re.compile(
     r"\b(?:off|muted?|silenced|silent|disabled|will\s+not|won't|does\s+not|no\s+longer)\b",
     re.IGNORECASE,
 )
 _ON = re.compile(r"\bon\b", re.IGNORECASE)
+# a sentence holding a key that switches a thing off or on, not one that only mentions it
+# ("Hold NIGHT 3 s to choose the night speed; each beep confirms" switches no beep)
+_SWITCHING = re.compile(
+    r"\b(?:mute|unmute|silence|switch(?:es)?|turns?|off|disables?|enables?|toggles?)\b",
+    re.IGNORECASE,
+)
 _SKIP = frozenset({"power", "running", "child_lock"})
 
 
@@ -40,7 +48,7 @@ def read_off_words(b: Builder) -> None:
         show = spec.get("show")
         if isinstance(show, dict) and show.get("on"):
             continue  # the display already names it while on
-        found = _off_word(b.manual.lines, var, str(spec.get("label") or ""))
+        found = _off_word(_legend_lines(b), var, str(spec.get("label") or ""))
         if found is None:
             continue
         word, line = found
@@ -103,13 +111,18 @@ def _held_off_word(b: Builder, label: str) -> tuple[str, str, int] | None:
         rf"|(?<![A-Za-z]){re.escape(label)}(?![A-Za-z])[^.]*?\bhold",
         re.IGNORECASE,
     )
-    sentences = [
-        u.text.lower()
-        for u in b.manual.units
-        if held.search(u.text)  # a sentence, or the key's own legend row that speaks of holding
-        or (u.cells and u.cells[0].strip() == label and re.search(r"\bhold", u.text, re.I))
+    own_row = [  # the key's own legend row that speaks of holding
+        u.text for u in b.manual.units if u.cells and u.cells[0].strip() == label
     ]
-    for number, line in enumerate(b.manual.lines, 1):
+    texts = [u.text for u in b.manual.units if held.search(u.text)]
+    sentences = [  # the sentence holding the key, and it switches something off
+        t.lower()
+        for text in texts + own_row
+        for t in re.split(r"(?<=[.;!?])\s+", text)
+        if (held.search(t) or (text in own_row and re.search(r"\bhold", t, re.I)))
+        and _SWITCHING.search(t)
+    ]
+    for number, line in enumerate(_legend_lines(b), 1):
         match = _LEGEND.match(line)
         if not match:
             continue
@@ -149,10 +162,36 @@ def _off_word(lines: list[str], var: str, label: str) -> tuple[str, int] | None:
             continue
         if word == label.upper() or not _OFF.search(what) or _ON.search(what):
             continue
-        said = {w.lower() for w in re.findall(r"[A-Za-z]+", what)}
-        if nouns & said:
+        if nouns & set(_subject(what)):
             return word, number
     return None
+
+
+def _subject(what: str) -> list[str]:
+    """The words a legend's meaning says are off, when they open it as one short clause
+    ("the buzzer is muted", "end signal switched off"); none when the meaning first names
+    something else ("energy saving, lamp off after 2 min": the word is the saving's)."""
+    off = _OFF.search(what)
+    head = what[: off.start()] if off else ""
+    if re.search(r"[,;:()]", head):
+        return []
+    kept = [w for w in re.findall(r"[a-z]+", head.lower()) if w not in _FILLER]
+    return kept if len(kept) <= _SUBJECT else []
+
+
+def _legend_lines(b: Builder) -> list[str]:
+    """The manual's lines, blanked under a troubleshooting, error-code or safety heading: a
+    fault's code there ("E2  pump will not start") is no word the display shows while a
+    setting is off."""
+    heading: dict[int, str] = {}
+    for unit in b.manual.units:
+        heading.setdefault(unit.line, unit.heading)
+    out: list[str] = []
+    last = ""
+    for number, line in enumerate(b.manual.lines, 1):
+        last = heading.get(number, last)
+        out.append("" if last and ASIDE_HEADING.search(last) else line)
+    return out
 
 
 def _set_off_word(b: Builder, var: str, spec: dict[str, Any], word: str) -> None:

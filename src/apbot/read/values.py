@@ -110,6 +110,7 @@ class Range:
     step: float | None = None
 
 
+_UNIT_ONLY = re.compile(UNIT, re.IGNORECASE)
 _FOREIGN_UNIT = re.compile(
     r"\s*(?:V|VAC|Hz|kHz|mm|cm|m|nm|µm|mA|mAh|dB|dBA|kWh|VA|bar|MPa|kPa|psi|Pa|lux)(?![\w])"
 )  # units no setting of a household appliance is set in: ratings and sizes
@@ -158,7 +159,11 @@ def find_ranges(text: str) -> list[Range]:
         return []
     text = _ELLIPSIS_SPAN_RE.sub(_spanned, text)
     out = _ranges(text)
-    out += [Range(a, b, unit_name(u), gap) for a, b, u, gap in listed_amounts(text)]
+    out += [  # a list's unit is a unit, not the word after it ("pages 2, 4, 6 and 8 show …")
+        Range(a, b, unit_name(u), gap)
+        for a, b, u, gap in listed_amounts(text)
+        if _UNIT_ONLY.fullmatch(u.strip())
+    ]
     # a label saying how to read a clock range ("0:01 - 99:59 (min:s)") is no aside to drop
     bare = _ASIDE_RE.sub(lambda m: m[0] if minutes_and_seconds(text, m.start()) else "", text)
     return out + [r for r in _ranges(bare) if r not in out] if bare != text else out
