@@ -80,3 +80,21 @@ def test_a_hold_that_switches_the_unit_or_opens_the_keys_own_setting() -> None:
     names = _names(WARMER, actions)
     assert "unit" in names and "warm_hold" not in names
     assert "clock_2" not in names  # "hold CLOCK to set the clock": the key's own name says it
+
+
+HEATER = """# Tepor TH-4 towel heater
+
+## Keys
+
+POWER    switches the heater on and off.
+MODE     next mode: COMFORT, ECO, DRY.
+
+## Night level
+
+Hold MODE for 3 seconds to select the night level. The moon lamp lights while it is chosen.
+"""
+
+
+def test_a_sentence_hold_key_to_verb_a_setting_names_it() -> None:
+    names = _names(HEATER, ["press_power", "press_mode", "hold_mode"])
+    assert "night_level" in names and "mode_hold" not in names
