@@ -17,7 +17,7 @@ import re
 from typing import Any
 
 from apbot.read.build import Builder
-from apbot.read.shapes import ASIDE_HEADING
+from apbot.read.off_words import lines_outside_asides
 
 # a display code: one or two letters, or such groups joined by "+" ("W+B"); not three ("ECO",
 # "MAX" are words users say themselves)
@@ -53,18 +53,8 @@ def name_code_words(b: Builder) -> None:
 
 def _own_lines(b: Builder) -> list[str]:
     """The manual's lines, blanked where codes are no setting's: under a troubleshooting,
-    error-code or safety heading ("L  low water: fill the tank" is a fault's code), or on a
-    line naming models ("Models S / M / L")."""
-    heading: dict[int, str] = {}
-    for unit in b.manual.units:
-        heading.setdefault(unit.line, unit.heading)
-    out: list[str] = []
-    last = ""
-    for number, line in enumerate(b.manual.lines, 1):
-        last = heading.get(number, last)
-        aside = bool(last) and bool(ASIDE_HEADING.search(last))
-        out.append("" if aside or _MODELS.search(line) else line)
-    return out
+    error-code or safety heading, or on a line naming models ("Models S / M / L")."""
+    return ["" if _MODELS.search(line) else line for line in lines_outside_asides(b)]
 
 
 def _meaning(code: str, words: list[str]) -> str | None:

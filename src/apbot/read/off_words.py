@@ -48,7 +48,7 @@ def read_off_words(b: Builder) -> None:
         show = spec.get("show")
         if isinstance(show, dict) and show.get("on"):
             continue  # the display already names it while on
-        found = _off_word(_legend_lines(b), var, str(spec.get("label") or ""))
+        found = _off_word(lines_outside_asides(b), var, str(spec.get("label") or ""))
         if found is None:
             continue
         word, line = found
@@ -122,7 +122,7 @@ def _held_off_word(b: Builder, label: str) -> tuple[str, str, int] | None:
         if (held.search(t) or (text in own_row and re.search(r"\bhold", t, re.I)))
         and _SWITCHING.search(t)
     ]
-    for number, line in enumerate(_legend_lines(b), 1):
+    for number, line in enumerate(lines_outside_asides(b), 1):
         match = _LEGEND.match(line)
         if not match:
             continue
@@ -179,10 +179,10 @@ def _subject(what: str) -> list[str]:
     return kept if len(kept) <= _SUBJECT else []
 
 
-def _legend_lines(b: Builder) -> list[str]:
+def lines_outside_asides(b: Builder) -> list[str]:
     """The manual's lines, blanked under a troubleshooting, error-code or safety heading: a
-    fault's code there ("E2  pump will not start") is no word the display shows while a
-    setting is off."""
+    fault's code there ("E2  pump will not start", "L  low water") is no word the display
+    shows while a setting is off, nor a setting's code spelled out."""
     heading: dict[int, str] = {}
     for unit in b.manual.units:
         heading.setdefault(unit.line, unit.heading)
