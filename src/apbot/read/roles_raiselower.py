@@ -1,0 +1,104 @@
+"""Two keys named for what they do, not for a direction (WARMER / COOLER, a sun and a snowflake,
+MORE / LESS under other names), whose own legend rows or sentences say one raises and the other
+lowers the SAME quantity ("Raise the temperature of the zone" / "Lower the temperature …"): one
+stepped pair on that quantity, exactly as ▲ / ▼ keys are. The rule reads the structure — a verb
+of direction and the noun it acts on, in rows that name one key and not the other — never the
+keys' own words."""
+
+from __future__ import annotations
+
+import re
+
+from apbot.read.actions import ActionInfo
+from apbot.read.build import Builder
+from apbot.read.labels import words
+
+UP_VERBS = {
+    "raise", "raises", "increase", "increases", "higher", "more", "longer", "warmer", "hotter",
+    "faster", "extend", "extends", "lengthen", "lengthens",
+}  # fmt: skip
+DOWN_VERBS = {
+    "lower", "lowers", "decrease", "decreases", "reduce", "reduces", "less", "shorter", "cooler",
+    "colder", "slower", "shorten", "shortens",
+}  # fmt: skip
+_SKIP = {"the", "a", "an", "its", "your", "set", "selected", "current", "it"}
+_STOP = {
+    "of", "by", "for", "in", "on", "to", "at", "from", "with", "and", "or", "while", "when",
+    "until", "each", "per", "one", "step", "steps",
+}  # fmt: skip
+_CONTROLS = {"key", "keys", "button", "buttons", "pad", "field", "symbol", "icon", "switch", "knob"}
+_CLAUSE_RE = re.compile(r"[.;:!?]|\|")
+
+
+def _object(tokens: list[str]) -> str | None:
+    """The head noun of the phrase after a verb: "the cooking time by 1 min" → ``time``."""
+    phrase: list[str] = []
+    for w in tokens:
+        if w in _STOP or w in _CONTROLS or w.isdigit():
+            break
+        if w in _SKIP and not phrase:
+            continue
+        if w in _SKIP:
+            break
+        phrase.append(w)
+        if len(phrase) == 3:
+            break
+    return phrase[-1] if phrase else None
+
+
+def directions(text: str) -> set[tuple[str, str]]:
+    """Every (direction, quantity) a text states: "Raise the temperature" → (up, temperature)."""
+    found: set[tuple[str, str]] = set()
+    for clause in _CLAUSE_RE.split(text):
+        ws = words(clause)
+        for i, w in enumerate(ws):
+            way = "up" if w in UP_VERBS else "down" if w in DOWN_VERBS else None
+            if way is None:
+                continue
+            noun = _object(ws[i + 1 :])
+            if noun and noun not in UP_VERBS | DOWN_VERBS | _CONTROLS and len(noun) > 2:
+                found.add((way, noun))
+    return found
+
+
+def _own_rows(b: Builder, key: ActionInfo, other: ActionInfo) -> set[tuple[str, str]]:
+    """What the rows naming ``key`` and not ``other`` say it does (its legend row, its
+    sentences); a row naming both keys says nothing about either alone."""
+    mine = {i for t in key.controls if t in b.labels for i in b.labels[t].mentions}
+    theirs = {i for t in other.controls if t in b.labels for i in b.labels[t].mentions}
+    said: set[tuple[str, str]] = set()
+    for i in sorted(mine - theirs):
+        said |= directions(b.manual.units[i].text)
+    return said
+
+
+def raise_lower_pairs(b: Builder, keys: list[ActionInfo]) -> dict[str, dict[str, list[str]]]:
+    """Pairs of press keys, one raising and one lowering a quantity no other key moves: the
+    quantity's name → {"up": [...], "down": [...]}. A key that says both ways is no half."""
+    keys = [k for k in keys if k.skill == "press" and k.digit is None]
+    found: dict[str, list[tuple[str, str]]] = {}
+    for k in keys:
+        for o in keys:
+            if o.name >= k.name:
+                continue
+            ks, os_ = _own_rows(b, k, o), _own_rows(b, o, k)
+            for way, noun in sorted(ks):
+                other_way = "down" if way == "up" else "up"
+                if (
+                    (other_way, noun) in os_
+                    and (other_way, noun) not in ks
+                    and (way, noun) not in os_
+                ):
+                    up, down = (k.name, o.name) if way == "up" else (o.name, k.name)
+                    found.setdefault(noun, []).append((up, down))
+    pairs: dict[str, dict[str, list[str]]] = {}
+    used: set[str] = set()
+    for noun, twos in sorted(found.items()):
+        if len(set(twos)) != 1:
+            continue  # more than one pair claims the quantity: not read
+        up, down = twos[0]
+        if {up, down} & used:
+            continue
+        used |= {up, down}
+        pairs[noun] = {"up": [up], "down": [down]}
+    return pairs
