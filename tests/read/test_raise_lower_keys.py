@@ -55,4 +55,9 @@ def test_keys_that_move_different_quantities_are_no_pair() -> None:
 def test_the_quantity_is_the_noun_the_verb_acts_on_not_a_key_word() -> None:
     assert directions("Raise the temperature of the selected zone.") == {("up", "temperature")}
     assert directions("Lower the cooking time by 1 min") == {("down", "time")}
+    assert directions("Makes the crust darker.") == set()  # darker: no direction of its own
+    assert directions("Each touch makes the mist stronger.") == {("up", "mist")}
     assert directions("warmer key") == set()
+    # a bare comparative names a level a key selects, not a step
+    assert directions("Lower temperature for cooking all day.") == set()
+    assert directions("Longer time, gentler heat.") == set()

@@ -2,8 +2,9 @@
 MORE / LESS under other names), whose own legend rows or sentences say one raises and the other
 lowers the SAME quantity ("Raise the temperature of the zone" / "Lower the temperature …"): one
 stepped pair on that quantity, exactly as ▲ / ▼ keys are. The rule reads the structure — a verb
-of direction and the noun it acts on, in rows that name one key and not the other — never the
-keys' own words."""
+of direction and the noun it acts on ("Raise the temperature", "makes the crust darker"), in
+rows that name one key and not the other — never the keys' own words. A bare comparative
+("lower temperature for all-day cooking") describes a level a key selects, not a step."""
 
 from __future__ import annotations
 
@@ -14,17 +15,20 @@ from apbot.read.build import Builder
 from apbot.read.labels import words
 
 UP_VERBS = {
-    "raise", "raises", "increase", "increases", "higher", "more", "longer", "warmer", "hotter",
-    "faster", "extend", "extends", "lengthen", "lengthens",
+    "raise", "raises", "increase", "increases", "extend", "extends", "lengthen", "lengthens",
 }  # fmt: skip
 DOWN_VERBS = {
-    "lower", "lowers", "decrease", "decreases", "reduce", "reduces", "less", "shorter", "cooler",
-    "colder", "slower", "shorten", "shortens",
+    "lower", "lowers", "decrease", "decreases", "reduce", "reduces", "shorten", "shortens",
 }  # fmt: skip
-_SKIP = {"the", "a", "an", "its", "your", "set", "selected", "current", "it"}
+UP_MORE = {"warmer", "hotter", "longer", "higher", "stronger", "faster", "more"}
+DOWN_MORE = {"cooler", "colder", "shorter", "lower", "weaker", "slower", "less"}
+_MAKE = {"make", "makes"}
+# a verb acts on an object: "Lower THE temperature", not "lower temperature" (a LOW key's level)
+_DETERMINERS = {"the", "its", "your"}
+_SKIP = {"the", "a", "an", "its", "your", "set", "selected", "current"}
 _STOP = {
     "of", "by", "for", "in", "on", "to", "at", "from", "with", "and", "or", "while", "when",
-    "until", "each", "per", "one", "step", "steps",
+    "until", "each", "per", "one", "step", "steps", "it",
 }  # fmt: skip
 _CONTROLS = {"key", "keys", "button", "buttons", "pad", "field", "symbol", "icon", "switch", "knob"}
 _CLAUSE_RE = re.compile(r"[.;:!?]|\|")
@@ -52,11 +56,19 @@ def directions(text: str) -> set[tuple[str, str]]:
     for clause in _CLAUSE_RE.split(text):
         ws = words(clause)
         for i, w in enumerate(ws):
-            way = "up" if w in UP_VERBS else "down" if w in DOWN_VERBS else None
-            if way is None:
-                continue
-            noun = _object(ws[i + 1 :])
-            if noun and noun not in UP_VERBS | DOWN_VERBS | _CONTROLS and len(noun) > 2:
+            nxt = ws[i + 1] if i + 1 < len(ws) else ""
+            way: str | None = None
+            noun: str | None = None
+            if nxt in _DETERMINERS and w in UP_VERBS | DOWN_VERBS:  # "Raise the temperature"
+                way, noun = ("up" if w in UP_VERBS else "down"), _object(ws[i + 1 :])
+            elif w in _MAKE and nxt in _DETERMINERS:  # "makes the toast darker"
+                more = next(
+                    (j for j in range(i + 2, min(i + 6, len(ws))) if ws[j] in UP_MORE | DOWN_MORE),
+                    None,
+                )
+                if more is not None:
+                    way, noun = ("up" if ws[more] in UP_MORE else "down"), _object(ws[i + 1 : more])
+            if way and noun and noun not in UP_MORE | DOWN_MORE | _CONTROLS and len(noun) > 2:
                 found.add((way, noun))
     return found
 
