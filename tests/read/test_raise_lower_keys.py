@@ -61,3 +61,24 @@ def test_the_quantity_is_the_noun_the_verb_acts_on_not_a_key_word() -> None:
     # a bare comparative names a level a key selects, not a step
     assert directions("Lower temperature for cooking all day.") == set()
     assert directions("Longer time, gentler heat.") == set()
+
+
+KETTLE = """\
+# Tea kettle TK-3
+
+| Key              | Use                                    |
+|------------------|----------------------------------------|
+| BOIL             | Start or stop heating.                 |
+| COOLER / WARMER  | Lower / raise the water temperature.   |
+
+The water temperature can be set from 60 to 100 °C in steps of 5 °C.
+"""
+
+
+def test_one_row_naming_both_keys_and_both_verbs_in_order_pairs_them() -> None:
+    actions = ["press_boil", "press_cooler", "press_warmer"]
+    data = read_manual(KETTLE, actions).model.model_dump(mode="json")
+    steps = [s for f in data["features"].values() for s in f if "press_warmer" in s["actions"]]
+    assert steps and steps[0]["effect"] == {"press_warmer": "next", "press_cooler": "prev"}, steps
+    var = data["variables"][steps[0]["variable"]]
+    assert var["ranges"][0][:2] == [60, 100], var

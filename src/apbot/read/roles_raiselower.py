@@ -84,6 +84,31 @@ def _own_rows(b: Builder, key: ActionInfo, other: ActionInfo) -> set[tuple[str, 
     return said
 
 
+_VERB = r"(raise|lower|increase|decrease|reduce|extend|shorten|lengthen)s?"
+_SLASHED_RE = re.compile(rf"\b{_VERB}\s*/\s*{_VERB}\s+(?=(?:the|its|your)\b)", re.IGNORECASE)
+
+
+def _shared_row(b: Builder, key: ActionInfo, other: ActionInfo) -> tuple[str, str] | None:
+    """A row naming both keys in order and two verbs in the same order ("COOLER / WARMER |
+    Lower / raise the temperature"): (``key``'s direction, the quantity)."""
+    mine = {i for t in key.controls if t in b.labels for i in b.labels[t].mentions}
+    theirs = {i for t in other.controls if t in b.labels for i in b.labels[t].mentions}
+    a = b.labels[key.controls[0]].text if key.controls[0] in b.labels else ""
+    c = b.labels[other.controls[0]].text if other.controls[0] in b.labels else ""
+    for i in sorted(mine & theirs):
+        text = b.manual.units[i].text
+        m = _SLASHED_RE.search(text)
+        if not (m and a and c and a in text and c in text):
+            continue
+        first, second = (m.group(1).lower(), m.group(2).lower())
+        ways = ["up" if v in UP_VERBS else "down" for v in (first, second)]
+        noun = _object(words(text[m.end() :]))
+        if ways[0] == ways[1] or not noun or noun in _CONTROLS:
+            continue
+        return (ways[0] if text.index(a) < text.index(c) else ways[1]), noun
+    return None
+
+
 def raise_lower_pairs(b: Builder, keys: list[ActionInfo]) -> dict[str, dict[str, list[str]]]:
     """Pairs of press keys, one raising and one lowering a quantity no other key moves: the
     quantity's name → {"up": [...], "down": [...]}. A key that says both ways is no half."""
@@ -94,6 +119,9 @@ def raise_lower_pairs(b: Builder, keys: list[ActionInfo]) -> dict[str, dict[str,
             if o.name >= k.name:
                 continue
             ks, os_ = _own_rows(b, k, o), _own_rows(b, o, k)
+            if (shared := _shared_row(b, k, o)) is not None:
+                ks.add(shared)
+                os_.add(("down" if shared[0] == "up" else "up", shared[1]))
             for way, noun in sorted(ks):
                 other_way = "down" if way == "up" else "up"
                 if (
