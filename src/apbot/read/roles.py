@@ -49,6 +49,7 @@ from apbot.read.roles_pads import (
     selecting_keys,
     shown_codes,
 )
+from apbot.read.roles_raiselower import raise_lower_pairs
 from apbot.read.roles_shared import add_clock_steps, assign_shared, clock_steps, dial_after_keys
 from apbot.read.roles_switched import switched_time
 from apbot.read.shapes import CHOICE_WORDS, GENERIC_DIALS, Evidence, adjuster_direction
@@ -73,6 +74,9 @@ def assign(b: Builder) -> None:
         d = adjuster_direction(info)
         if d:
             pairs.setdefault(d[0], {"up": [], "down": []})[d[1]].append(info.name)
+    unnamed = [i for i in infos if i.name not in done and not adjuster_direction(i)]
+    for noun, pair in raise_lower_pairs(b, unnamed).items():  # WARMER / COOLER, ☀ / ❄
+        pairs.setdefault(noun, pair)
     digits = [i.name for i in infos if i.digit is not None and i.name not in done]
     if assign_direct_digits(b, [i for i in infos if i.name in digits]):
         digits = []  # a row of levels 1–5: no keypad

@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 from apbot.read.errors import ReaderError
 from apbot.read.marks_legend import legend_meanings
 from apbot.read.text_boxes import unbox
+from apbot.read.text_icons import name_icons
 from apbot.read.text_pages import (
     _furniture,
     _page_breaks,
@@ -153,7 +154,8 @@ def parse_manual(text: str) -> Manual:
             f"{MAX_MANUAL_CHARS:,}"
         )
     text = text.replace("\r\n", "\n").replace("\r", "\n").replace("\f", "\n\f\n")
-    text = _clean_chars(re.sub(r" ?❄ ?", " ❄ ", unbox(text)))  # one space each side, not two
+    text = name_icons(unbox(text), _KEEP)  # "touch ❄" → "touch COLDER" when a legend names it
+    text = _clean_chars(re.sub(r" ?❄ ?", " ❄ ", text))  # one space each side, not two
     lines = text.split("\n")
     contents = contents_lines(lines)  # a table of contents: titles, not text about the keys
     text = "\n".join("" if i in contents else line for i, line in enumerate(lines))
