@@ -49,6 +49,8 @@ def superlatives(
             continue
         if _denied(text, k):
             continue  # "not the hottest water": no end of the scale is asked for
+        if end is not None and k + 1 in claimed:
+            continue  # "full boost": said of the value read from the next word, no end
         if end is not None and _restates(text, k):
             continue  # "at the maximum of 75 °C": the quantity says it, for its own setting
         if end is not None and _names_set(view, text, k, goal):
