@@ -108,3 +108,12 @@ def test_a_superlative_before_a_value_word_is_part_of_its_name() -> None:
         assert parse_instruction(model, said, PLATES_LEGEND, []) == {"right": "T"}
     highest = parse_instruction(model, "Right plate on the highest heat.", PLATES_LEGEND, [])
     assert highest == {"right": "6"}
+
+
+def test_the_top_of_a_scale_with_a_code_past_it_is_the_code() -> None:
+    """ "full heat" on a grill whose manual puts T one step beyond 6: T is the top of the panel's
+    scale; with no such sentence the top stays the highest number (above)."""
+    model = read_manual(GRILL, GRILL_ACTIONS).model
+    name, _heat = _scale(model, {"press_plus"})
+    assert parse_instruction(model, "Grill at full heat.", GRILL, []).get(name) == "T"
+    assert parse_instruction(model, "Grill at the lowest heat.", GRILL, []).get(name) == "1"

@@ -86,6 +86,9 @@ def superlatives(
         values = _ordered_values(domain_values(view, view.infos[name], goal))
         if not values:
             continue
+        top = view.top_codes.get(name)
+        if end == -1 and top is not None and top not in values:
+            values = [*values, top]  # "full": the hob's P, one step past 9
         off_first = (len(values) > 2 and _is_off_level(view.infos[name], values[0])) or (
             len(values) > 1 and bool(_ladder(values))
         )

@@ -104,3 +104,28 @@ def _make_list(spec: dict[str, Any], values: list[str]) -> None:
 
 def _tidy(x: Any) -> Any:
     return int(x) if isinstance(x, float) and x.is_integer() else x
+
+
+def code_past_top(manual: str, values: list[Any]) -> str | None:
+    """The code a sentence of the manual puts one step past the highest number of this list
+    of values, right after it in the list (the hob's P after 9): the top of the panel's scale
+    for "full" or "the highest", as the reader made it. A code below the lowest number (CO,
+    continuous drying) is left out: it names a way of working more than a lower value."""
+    texts = [str(v) for v in values]
+    numbers = [float(t) for t in texts if _NUMBER.fullmatch(t)]
+    if len(numbers) < 3:
+        return None
+    top = max(numbers)
+    for match in _PAST.finditer(manual):
+        end, code = match.group("end"), match.group("code")
+        if end in _LOW or code not in texts or texts.index(code) == 0:
+            continue
+        before = texts[texts.index(code) - 1]
+        if end.isdigit() and float(end) != top:
+            continue
+        if _NUMBER.fullmatch(before) and float(before) == top:
+            return code
+    return None
+
+
+_NUMBER = re.compile(r"-?\d+(?:\.\d+)?")
