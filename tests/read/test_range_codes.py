@@ -65,6 +65,15 @@ def test_a_code_below_the_lowest_value_comes_before_the_numbers() -> None:
     assert humidity.values == ["CN", "40", "50", "60", "70"]
 
 
+def test_the_scale_s_end_may_be_named_as_a_level() -> None:
+    text = GRILL.replace(
+        "Press + beyond 6 and the display\nshows T", "Pressing + Past level 6\ndisplays T"
+    )
+    model = read_manual(text, GRILL_ACTIONS).model
+    _name, heat = _scale(model, {"press_plus"})
+    assert heat.values == ["1", "2", "3", "4", "5", "6", "T"]
+
+
 def test_a_sentence_with_no_code_changes_nothing() -> None:
     text = GRILL.replace("and the display\nshows T: turbo heat", "and nothing more\nhappens: the")
     model = read_manual(text, GRILL_ACTIONS).model

@@ -15,8 +15,9 @@ from typing import Any
 from apbot.read.build import Builder
 
 _PAST = re.compile(
-    r"\b(?:past|beyond)\s+(?:the\s+)?(?P<end>\d+|lowest|highest|smallest|largest)\b[^.]{0,60}?"
-    r"\b(?:reach(?:es)?|changes?\s+to|shows?|switch(?:es)?\s+to|get|until)\s+\**"
+    r"\b(?i:past|beyond)\s+(?:the\s+)?(?:(?i:level|setting|step|value|number)\s+)?"
+    r"(?P<end>\d+|lowest|highest|smallest|largest)\b[^.]{0,60}?"
+    r"\b(?:reach(?:es)?|changes?\s+to|shows?|displays?|switch(?:es)?\s+to|get|until)\s+\**"
     r"(?P<code>[A-Z]{1,3})\b"
 )
 _LOW = frozenset({"lowest", "smallest"})
