@@ -41,6 +41,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from apbot.agent.readings import Hypothesis, Reading, Screen, ScreenKind, is_read
+from apbot.agent.scale_codes import off_scale
 from apbot.agent.screen_patterns import (
     _DASHED_TIME,
     CompiledDisplay,
@@ -265,6 +266,8 @@ class DisplayReader(CompiledDisplay):
         entry = getattr(spec, "entry", None)
         if entry is not None and entry.shows == "typed" and re.fullmatch(r"[\d:]+", text):
             return "typing", None  # digits on their way to a value: they tell nothing yet
+        if isinstance(spec, DiscreteVariable) and off_scale(all_values(spec), text):
+            return None  # words of another screen, not a value of a scale with codes
         try:
             value = parse_value(spec, text)
         except ValueProblem:

@@ -49,6 +49,8 @@ def superlatives(
             continue
         if _denied(text, k):
             continue  # "not the hottest water": no end of the scale is asked for
+        if end is not None and k + 1 in claimed:
+            continue  # "full boost": said of the value read from the next word, no end
         if end is not None and _restates(text, k):
             continue  # "at the maximum of 75 °C": the quantity says it, for its own setting
         if end is not None and _names_set(view, text, k, goal):
@@ -84,6 +86,9 @@ def superlatives(
         values = _ordered_values(domain_values(view, view.infos[name], goal))
         if not values:
             continue
+        top = view.top_codes.get(name)
+        if end == -1 and top is not None and top not in values:
+            values = [*values, top]  # "full": the hob's P, one step past 9
         off_first = (len(values) > 2 and _is_off_level(view.infos[name], values[0])) or (
             len(values) > 1 and bool(_ladder(values))
         )

@@ -45,6 +45,7 @@ from apbot.read.goal_vocab import (
     concept,
     stem,
 )
+from apbot.read.range_codes import code_past_top
 
 Goal = dict[str, Any]
 
@@ -103,6 +104,8 @@ class Model:
     appliance_words: frozenset[str]
     named_quantities: dict[str, list[tuple[Any, str]]] = field(default_factory=dict)
     # var -> (value, "60 %"): a coded value the manual gives as a quantity (knob mark 2: 60 %)
+    top_codes: dict[str, Any] = field(default_factory=dict)
+    # var -> the code the manual puts one step past its highest number (P after 9)
 
 
 MAX_PHRASE_VALUES = 2_000
@@ -286,7 +289,13 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         names = [w for w in phrase_words(label) if w != "and"]
         if names and not all(w in STOP_WORDS for w in names):
             phrases.append((coded, value, tuple(stem(w) for w in names), 0.95))
-    return Model(model, infos, phrases, start_values, frozenset(appliance), named)
+    tops = {
+        name: code
+        for name, info in infos.items()
+        if isinstance(info.var, DiscreteVariable)
+        and (code := code_past_top(manual, list(info.values))) is not None
+    }
+    return Model(model, infos, phrases, start_values, frozenset(appliance), named, tops)
 
 
 def _whole_day(info: VarInfo) -> bool:

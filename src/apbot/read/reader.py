@@ -26,6 +26,7 @@ from apbot.read.codes import name_codes
 from apbot.read.initials import read_initials
 from apbot.read.labels import find_labels
 from apbot.read.off_words import read_held_off_words, read_off_words
+from apbot.read.range_codes import read_range_codes
 from apbot.read.report import Note, Report
 from apbot.read.roles import assign
 from apbot.read.shapes import CHOICE_WORDS
@@ -63,6 +64,7 @@ def read_manual(
     name_code_words(builder)
     read_off_words(builder)
     read_held_off_words(builder)
+    read_range_codes(builder)
     read_initials(builder)
     apply_resets(builder)
     data = _assemble(builder, appliance_id, category)
