@@ -29,6 +29,7 @@ from apbot.read.roles_common import (
 )
 from apbot.read.roles_confirm import ends_entry
 from apbot.read.roles_digits import assign_direct_digits
+from apbot.read.roles_fasthold import fold_fast_holds
 from apbot.read.roles_fixed import assign_locks, assign_power, assign_running, standby_only
 from apbot.read.roles_holdcell import held_toggle
 from apbot.read.roles_hourmin import assign_hour_minute, hour_minute_keys
@@ -245,6 +246,7 @@ def assign(b: Builder) -> None:
     assign_leftovers(b, silent, evidence)
     assign_keyed_amounts(b, digits)
     standby_only(b)
+    fold_fast_holds(b)  # "hold ▲ for 2 s: ten steps at once", not a switch of its own
 
 
 def _named_cycle(b: Builder, key: ActionInfo, ev: Evidence) -> bool:
