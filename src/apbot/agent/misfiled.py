@@ -10,6 +10,7 @@ from __future__ import annotations
 from apbot.agent.keys import effect_shown, keys_like
 from apbot.agent.repair import RepairError, entry_then_keys, move_action, set_effects
 from apbot.agent.session import MISSING, Executed, Session
+from apbot.model.schema import ApplianceModel
 from apbot.plan.plan import PlannedAction
 
 __all__ = ["KeyMover"]
@@ -42,6 +43,8 @@ class KeyMover:
         first = [(f, i) for f, i in places if i == 0]
         entered = [(f, i) for f, i in places if i > 0 and model.features[f][i - 1].variable is None]
         if not first and not entered:
+            return False
+        if _held_too(model, done):
             return False
         before = session.belief.compiled.value(done.state_before, target)
         shown = seen.observed(target)
@@ -198,3 +201,22 @@ class KeyMover:
                 and values[(values.index(before) + 1) % len(values)] == shown
             )
         )
+
+
+def _held_too(model: ApplianceModel, done: Executed) -> bool:
+    """The step also has the key's other touch (▼ pressed and ▼ held for a bigger step of
+    the same setting): the key is that setting's stepping key; a screen taken for another
+    setting's says nothing against it (moving one touch alone would split the key)."""
+    if done.pointer is None:
+        return False
+    feature, index = done.pointer
+    action = model.actions.get(done.action.name)
+    if action is None or action.control is None:
+        return False
+    return any(
+        other != done.action.name
+        and (a := model.actions.get(other)) is not None
+        and "hold" in (a.skill, action.skill)
+        and a.control == action.control
+        for other in model.features[feature][index].actions
+    )
