@@ -109,6 +109,8 @@ def attach_fast_holds(b: Builder, holds: list[ActionInfo]) -> set[str]:
                     None,
                 )
                 fast = _fast_effect(b.variables[step["variable"]], effect, said)
+                if fast is None:
+                    continue  # "the time jumps by 2 hours": not the temperature's step
                 step["actions"] = [*step["actions"], hold.name]
                 step["effect"] = {**step["effect"], hold.name: fast}
                 b.note(
@@ -153,7 +155,8 @@ def _count(word: str) -> int:
 
 def _fast_effect(spec: dict[str, Any], effect: Any, said: tuple[str, int] | None) -> Any:
     """The hold's effect: the press's direction with the manual's size (a count of steps,
-    or a time for a time setting), else the press's own effect repeated."""
+    or a time for a time setting), else the press's own effect repeated; None when the size
+    is a time and the setting is none (the hold is said of another setting the pair steps)."""
     sign = -1 if effect == "prev" or (isinstance(effect, dict) and _negative(effect["add"])) else 1
     if said is None:
         return effect
@@ -164,6 +167,8 @@ def _fast_effect(spec: dict[str, Any], effect: Any, said: tuple[str, int] | None
         unit = (m.group(2) or m.group(4) or m.group(5)).lower()
         seconds = amount * (3600 if unit.startswith("h") else 60)
         return {"add": sign * seconds}
+    if m and not _STEPS_RE.search(text):
+        return None
     m = _STEPS_RE.search(text)
     if m:
         n = _count(m.group(1) or m.group(2))
