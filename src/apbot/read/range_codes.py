@@ -39,7 +39,7 @@ def read_range_codes(b: Builder) -> None:
                 continue
             if not keys & _actions_of(b, var):
                 continue
-            values = _with_code(spec, match.group("end"), match.group("code"))
+            values = _with_code(spec, match.group("end"), match.group("code"), var in b.unread)
             if values is None:
                 continue
             _make_list(spec, values)
@@ -72,9 +72,12 @@ def _actions_of(b: Builder, var: str) -> set[str]:
     }
 
 
-def _with_code(spec: dict[str, Any], end: str, code: str) -> list[str] | None:
+def _with_code(
+    spec: dict[str, Any], end: str, code: str, guessed: bool = False
+) -> list[str] | None:
     """The numbers up to the end the sentence names, and the code beyond it; None when the end
-    is not on the scale or the scale is not of whole numbers."""
+    is not on the scale, or is inside a range the manual gave (``guessed``: the reader's own
+    default range, which the sentence's end corrects), or the scale is not of whole numbers."""
     low, high, step = spec["ranges"][0]
     if not all(float(x).is_integer() for x in (low, high, step)) or step <= 0:
         return None
@@ -86,6 +89,8 @@ def _with_code(spec: dict[str, Any], end: str, code: str) -> list[str] | None:
     if end.isdigit():
         if int(end) not in numbers or int(end) == numbers[0]:
             return None
+        if int(end) != numbers[-1] and not guessed:
+            return None  # "+ beyond 6" of a 1..6 heat says nothing of a read 1..9 smoke level
         return [*map(str, numbers[: numbers.index(int(end)) + 1]), code]
     return [*map(str, numbers), code]  # past the highest
 
