@@ -98,3 +98,19 @@ Hold MODE for 3 seconds to select the night level. The moon lamp lights while it
 def test_a_sentence_hold_key_to_verb_a_setting_names_it() -> None:
     names = _names(HEATER, ["press_power", "press_mode", "hold_mode"])
     assert "night_level" in names and "mode_hold" not in names
+
+
+STEAMER = """# Vapo S2 food steamer
+
+## Keys
+
+POWER     Switches the steamer on or off.
+TIME      Press to set the steaming time from 5 to 60 minutes.
+          Press and hold TIME for 3 s to change rapidly.
+START     Starts steaming.
+"""
+
+
+def test_a_hold_that_only_steps_faster_names_no_setting() -> None:
+    names = _names(STEAMER, ["press_power", "press_time", "hold_time", "press_start"])
+    assert "rapidly" not in names, names

@@ -63,6 +63,8 @@ def _meaning(noun: str) -> str:
     said = [w for w in words(noun) if w.isalpha()]
     if not said or len(said) > 3 or set(said) & _NOT_A_SETTING or "°" in noun or "/" in noun:
         return ""
+    if said[0].endswith("ly") and len(said[0]) > 4:
+        return ""  # "hold to change quickly": how the hold steps, not what it opens
     if len(said) > 1 and said[0].endswith("ed") and len(said[0]) > 5:
         said[0] = said[0][:-2]  # "delayed start": the delay's start (a time, as "delay" says)
     return " ".join(said)
