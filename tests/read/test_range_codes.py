@@ -153,3 +153,20 @@ def test_a_code_past_one_scale_s_top_leaves_a_longer_scale_on_the_same_keys_whol
     assert smoke, list(model.variables)
     assert all(not isinstance(v, DiscreteVariable) or "9" in v.values for v in smoke)
     assert all(not isinstance(v, DiscreteVariable) or "T" not in v.values for v in smoke)
+
+
+def test_a_code_shown_when_the_press_past_the_end_is_refused_is_no_value() -> None:
+    refused = (
+        "Press + beyond 6 and the display\nshows ERR for a moment: the heat stays at 6.",
+        "Pressing + past the highest setting only beeps and shows HI.",
+    )
+    for sentence in refused:
+        text = GRILL.replace(
+            "Press + beyond 6 and the display\nshows T: turbo heat, for searing.", sentence
+        )
+        assert sentence in text
+        model = read_manual(text, GRILL_ACTIONS).model
+        assert not any(
+            isinstance(v, DiscreteVariable) and {"ERR", "HI"} & set(v.values)
+            for v in model.variables.values()
+        ), sentence

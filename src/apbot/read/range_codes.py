@@ -21,12 +21,33 @@ _PAST = re.compile(
     r"(?P<code>[A-Z]{1,3})\b"
 )
 _LOW = frozenset({"lowest", "smallest"})
+# a sentence saying the press past the end is refused: the code is a warning, no position
+_REFUSED = re.compile(
+    r"\b(?:stays?|remains?|does\s+nothing|changes\s+nothing|nothing\s+happens|no\s+effect|"
+    r"cannot|can\s*not|can't|not\s+possible|only\s+beeps?|error|fault)\b",
+    re.I,
+)
+
+
+def _sentence(text: str, match: re.Match[str]) -> str:
+    """The sentence of ``text`` the match stands in."""
+    start = max(text.rfind(". ", 0, match.start()), text.rfind(".\n", 0, match.start())) + 1
+    end = text.find(".", match.end())
+    return text[start : end if end >= 0 else len(text)]
+
+
+def _past_end(text: str) -> re.Match[str] | None:
+    """The first sentence stepping past a scale's end to a code, when it is no refusal."""
+    for match in _PAST.finditer(text):
+        if not _REFUSED.search(_sentence(text, match)):
+            return match
+    return None
 
 
 def read_range_codes(b: Builder) -> None:
     """Give a numbered scale the code a sentence puts one step past its end."""
     for unit in b.manual.units:
-        match = _PAST.search(unit.text)
+        match = _past_end(unit.text)
         if not match:
             continue
         keys = {a for a in _actions_said(b, unit.text)}
@@ -123,6 +144,8 @@ def code_past_top(manual: str, values: list[Any]) -> str | None:
         return None
     top = max(numbers)
     for match in _PAST.finditer(manual):
+        if _REFUSED.search(_sentence(manual, match)):
+            continue
         end, code = match.group("end"), match.group("code")
         if end in _LOW or code not in texts or texts.index(code) == 0:
             continue
