@@ -3,7 +3,8 @@
 from __future__ import annotations
 
 from apbot.read.labels import find_labels
-from apbot.read.text import parse_manual
+from apbot.read.text import _KEEP, parse_manual
+from apbot.read.text_icons import name_icons
 
 FAN_HEATER = """# Bathroom fan heater
 
@@ -61,3 +62,16 @@ def test_a_legend_of_marks_that_are_no_keys_is_left_alone() -> None:
 def test_a_warning_sign_before_a_sentence_names_no_key() -> None:
     texts = _texts("  ⚠  Caution      touch the power key\n\nTouch ⚠ now.\n")
     assert "POWER" not in " ".join(texts)
+
+
+def test_a_legend_s_description_said_of_a_lamp_stays_a_lamp() -> None:
+    text = (
+        "| Icon | Look | Name     | Function           |\n"
+        "|------|------|----------|--------------------|\n"
+        "| ☀    | sun  | WARM key | warm mist on / off |\n"
+        "\n"
+        "The sun lights while the water heats. Touch the sun to switch warm mist on.\n"
+    )
+    named = name_icons(text, _KEEP)
+    assert "The sun lights while the water heats" in named
+    assert "Touch the WARM key to switch" in named

@@ -98,3 +98,37 @@ Hold MODE for 3 seconds to select the night level. The moon lamp lights while it
 def test_a_sentence_hold_key_to_verb_a_setting_names_it() -> None:
     names = _names(HEATER, ["press_power", "press_mode", "hold_mode"])
     assert "night_level" in names and "mode_hold" not in names
+
+
+STEAMER = """# Vapo S2 food steamer
+
+## Keys
+
+POWER     Switches the steamer on or off.
+TIME      Press to set the steaming time from 5 to 60 minutes.
+          Press and hold TIME for 3 s to change rapidly.
+START     Starts steaming.
+"""
+
+
+def test_a_hold_that_only_steps_faster_names_no_setting() -> None:
+    names = _names(STEAMER, ["press_power", "press_time", "hold_time", "press_start"])
+    assert "rapidly" not in names, names
+
+
+LOADER = """# Vela W7 washing machine
+
+## Keys
+
+POWER     Switches the washer on or off.
+PROGRAM   Press to select the programme: cotton, synthetics, wool.
+TEMP      Press to select the temperature: 20, 30, 40, 60 °C.
+          Hold TEMP for 3 seconds to open the door.
+START     Starts or pauses the programme.
+"""
+
+
+def test_a_hold_that_opens_a_part_of_the_appliance_names_no_setting() -> None:
+    actions = ["press_power", "press_program", "press_temp", "hold_temp", "press_start"]
+    names = _names(LOADER, actions)
+    assert "door" not in names, names

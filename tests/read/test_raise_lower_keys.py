@@ -82,3 +82,30 @@ def test_one_row_naming_both_keys_and_both_verbs_in_order_pairs_them() -> None:
     assert steps and steps[0]["effect"] == {"press_warmer": "next", "press_cooler": "prev"}, steps
     var = data["variables"][steps[0]["variable"]]
     assert var["ranges"][0][:2] == [60, 100], var
+
+
+DEEP_FRYER = """\
+# Olio DF-3 deep fryer
+
+## The keys
+
+| Key    | What it does                            |
+|--------|-----------------------------------------|
+| POWER  | Switches the fryer on or off.           |
+| UPLIFT | Raises the basket.                      |
+| DIP    | Lowers the basket.                      |
+| HEAT   | Selects 150, 170 or 190 °C.             |
+"""
+
+
+def test_keys_that_raise_and_lower_a_part_are_no_stepped_pair() -> None:
+    actions = ["press_power", "press_uplift", "press_dip", "press_heat"]
+    model = read_manual(DEEP_FRYER, actions).model
+    paired = [
+        s
+        for f in model.features.values()
+        for s in f
+        if {"press_uplift", "press_dip"} <= set(s.actions)
+    ]
+    assert not paired, paired
+    assert "basket" not in model.variables

@@ -126,3 +126,47 @@ def test_the_top_of_a_scale_with_a_code_past_it_is_the_code() -> None:
     name, _heat = _scale(model, {"press_plus"})
     assert parse_instruction(model, "Grill at full heat.", GRILL, []).get(name) == "T"
     assert parse_instruction(model, "Grill at the lowest heat.", GRILL, []).get(name) == "1"
+
+
+SMOKER = """KETO S-9 SMOKER GRILL
+User guide
+
+KEYS
+  POWER     switches the grill on or off
+  HEAT      selects the heat setting
+  SMOKE     selects the smoke level
+  + / -     change the selected setting
+
+HEAT
+Press HEAT, then + or - to choose a heat setting from 1 to 6. Press + beyond 6 and the display
+shows T: turbo heat.
+
+SMOKE
+Press SMOKE, then + or - to choose a smoke level from 1 to 9.
+"""
+
+
+def test_a_code_past_one_scale_s_top_leaves_a_longer_scale_on_the_same_keys_whole() -> None:
+    actions = ["press_power", "press_heat", "press_smoke", "press_plus", "press_minus"]
+    model = read_manual(SMOKER, actions).model
+    smoke = [v for n, v in model.variables.items() if "smoke" in n]
+    assert smoke, list(model.variables)
+    assert all(not isinstance(v, DiscreteVariable) or "9" in v.values for v in smoke)
+    assert all(not isinstance(v, DiscreteVariable) or "T" not in v.values for v in smoke)
+
+
+def test_a_code_shown_when_the_press_past_the_end_is_refused_is_no_value() -> None:
+    refused = (
+        "Press + beyond 6 and the display\nshows ERR for a moment: the heat stays at 6.",
+        "Pressing + past the highest setting only beeps and shows HI.",
+    )
+    for sentence in refused:
+        text = GRILL.replace(
+            "Press + beyond 6 and the display\nshows T: turbo heat, for searing.", sentence
+        )
+        assert sentence in text
+        model = read_manual(text, GRILL_ACTIONS).model
+        assert not any(
+            isinstance(v, DiscreteVariable) and {"ERR", "HI"} & set(v.values)
+            for v in model.variables.values()
+        ), sentence

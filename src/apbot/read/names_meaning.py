@@ -38,6 +38,10 @@ _NOT_A_SETTING = {
     "appliance", "power", "unit's", "on", "off", "now", "cancel", "it", "them", "this", "that",
     "digits", "digit", "hours", "minutes", "hour", "minute", "display",
 }  # fmt: skip
+# what a hold opens that is a part of the appliance, not a setting ("hold 3 s to open the door")
+_PARTS = {
+    "door", "lid", "drawer", "hatch", "cover", "flap", "valve", "basket", "tray", "tank", "latch",
+}  # fmt: skip
 _CLOCKS = {"clock", "time", "timer"}
 _UNIT = re.compile(r"^\s*°\s*[cf]\s*/\s*°\s*[cf]\s*$", re.I)
 
@@ -61,8 +65,16 @@ def _meaning(noun: str) -> str:
     if _UNIT.match(noun):  # "change °C / °F": the temperature unit
         return "unit"
     said = [w for w in words(noun) if w.isalpha()]
-    if not said or len(said) > 3 or set(said) & _NOT_A_SETTING or "°" in noun or "/" in noun:
+    if (
+        not said
+        or len(said) > 3
+        or set(said) & (_NOT_A_SETTING | _PARTS)
+        or "°" in noun
+        or "/" in noun
+    ):
         return ""
+    if said[0].endswith("ly") and len(said[0]) > 4:
+        return ""  # "hold to change quickly": how the hold steps, not what it opens
     if len(said) > 1 and said[0].endswith("ed") and len(said[0]) > 5:
         said[0] = said[0][:-2]  # "delayed start": the delay's start (a time, as "delay" says)
     return " ".join(said)

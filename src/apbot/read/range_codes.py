@@ -21,12 +21,33 @@ _PAST = re.compile(
     r"(?P<code>[A-Z]{1,3})\b"
 )
 _LOW = frozenset({"lowest", "smallest"})
+# a sentence saying the press past the end is refused: the code is a warning, no position
+_REFUSED = re.compile(
+    r"\b(?:stays?|remains?|does\s+nothing|changes\s+nothing|nothing\s+happens|no\s+effect|"
+    r"cannot|can\s*not|can't|not\s+possible|only\s+beeps?|error|fault)\b",
+    re.I,
+)
+
+
+def _sentence(text: str, match: re.Match[str]) -> str:
+    """The sentence of ``text`` the match stands in."""
+    start = max(text.rfind(". ", 0, match.start()), text.rfind(".\n", 0, match.start())) + 1
+    end = text.find(".", match.end())
+    return text[start : end if end >= 0 else len(text)]
+
+
+def _past_end(text: str) -> re.Match[str] | None:
+    """The first sentence stepping past a scale's end to a code, when it is no refusal."""
+    for match in _PAST.finditer(text):
+        if not _REFUSED.search(_sentence(text, match)):
+            return match
+    return None
 
 
 def read_range_codes(b: Builder) -> None:
     """Give a numbered scale the code a sentence puts one step past its end."""
     for unit in b.manual.units:
-        match = _PAST.search(unit.text)
+        match = _past_end(unit.text)
         if not match:
             continue
         keys = {a for a in _actions_said(b, unit.text)}
@@ -39,7 +60,7 @@ def read_range_codes(b: Builder) -> None:
                 continue
             if not keys & _actions_of(b, var):
                 continue
-            values = _with_code(spec, match.group("end"), match.group("code"))
+            values = _with_code(spec, match.group("end"), match.group("code"), var in b.unread)
             if values is None:
                 continue
             _make_list(spec, values)
@@ -72,9 +93,12 @@ def _actions_of(b: Builder, var: str) -> set[str]:
     }
 
 
-def _with_code(spec: dict[str, Any], end: str, code: str) -> list[str] | None:
+def _with_code(
+    spec: dict[str, Any], end: str, code: str, guessed: bool = False
+) -> list[str] | None:
     """The numbers up to the end the sentence names, and the code beyond it; None when the end
-    is not on the scale or the scale is not of whole numbers."""
+    is not on the scale, or is inside a range the manual gave (``guessed``: the reader's own
+    default range, which the sentence's end corrects), or the scale is not of whole numbers."""
     low, high, step = spec["ranges"][0]
     if not all(float(x).is_integer() for x in (low, high, step)) or step <= 0:
         return None
@@ -86,6 +110,8 @@ def _with_code(spec: dict[str, Any], end: str, code: str) -> list[str] | None:
     if end.isdigit():
         if int(end) not in numbers or int(end) == numbers[0]:
             return None
+        if int(end) != numbers[-1] and not guessed:
+            return None  # "+ beyond 6" of a 1..6 heat says nothing of a read 1..9 smoke level
         return [*map(str, numbers[: numbers.index(int(end)) + 1]), code]
     return [*map(str, numbers), code]  # past the highest
 
@@ -118,6 +144,8 @@ def code_past_top(manual: str, values: list[Any]) -> str | None:
         return None
     top = max(numbers)
     for match in _PAST.finditer(manual):
+        if _REFUSED.search(_sentence(manual, match)):
+            continue
         end, code = match.group("end"), match.group("code")
         if end in _LOW or code not in texts or texts.index(code) == 0:
             continue

@@ -109,6 +109,16 @@ def _shared_row(b: Builder, key: ActionInfo, other: ActionInfo) -> tuple[str, st
     return None
 
 
+def _measured(text: str, noun: str) -> bool:
+    """Whether the manual gives the noun a number anywhere ("the temperature by 1 °C", "fan
+    speed can be set from 1 to 8", "5 levels of brightness"): a quantity has one, a part the
+    keys move (a lid, a basket) has none."""
+    n = re.escape(noun)
+    after = rf"\b{n}s?\b[^.;:!?|\n]{{0,40}}?\d"
+    before = rf"\d+\s+(?:levels?|settings?|steps?|stages?)\s+(?:of\s+)?(?:the\s+)?{n}\b"
+    return re.search(f"{after}|{before}", text, re.I) is not None
+
+
 def raise_lower_pairs(b: Builder, keys: list[ActionInfo]) -> dict[str, dict[str, list[str]]]:
     """Pairs of press keys, one raising and one lowering a quantity no other key moves: the
     quantity's name → {"up": [...], "down": [...]}. A key that says both ways is no half."""
@@ -136,6 +146,8 @@ def raise_lower_pairs(b: Builder, keys: list[ActionInfo]) -> dict[str, dict[str,
     for noun, twos in sorted(found.items()):
         if len(set(twos)) != 1:
             continue  # more than one pair claims the quantity: not read
+        if not _measured("\n".join(u.text for u in b.manual.units), noun):
+            continue  # "raise the lid" / "lower the lid": a part moved, not a quantity stepped
         up, down = twos[0]
         if {up, down} & used:
             continue

@@ -25,6 +25,14 @@ _GENERIC = frozenset(
 )
 
 
+# a description followed by a lamp's verb is the lamp the picture also marks, not the key:
+# "the sun lights while the water heats" stays prose about a lamp
+_NOT_LIT = (
+    r"(?!\s+(?:lamps?|lights?\b|lit\b|indicators?|flash|flashes|blinks?|glows?|appears?|"
+    r"is\s+lit|comes\s+on|goes\s+out|turns\s+on))"
+)
+
+
 def _icon(ch: str, keep: frozenset[str]) -> bool:
     """A pictograph the reader would drop (not an arrow or mark it keeps)."""
     return (
@@ -94,6 +102,6 @@ def name_icons(text: str, keep: frozenset[str]) -> str:
     for name, desc in names.values():
         if not desc:
             continue
-        said = re.compile(rf"\b(the|a|each|with)(\s+){re.escape(desc)}\b", re.I)
+        said = re.compile(rf"\b(the|a|each|with)(\s+){re.escape(desc)}\b{_NOT_LIT}", re.I)
         text = said.sub(rf"\1\2{name} key", text)
     return text
