@@ -13,7 +13,7 @@ from apbot.read.goal_text import (
     phrase_here,
     verb_positions,
 )
-from apbot.read.goal_values import OFF_WORDS, generic, magnitude, unit_text
+from apbot.read.goal_values import OFF_WORDS, generic, magnitude, name_words, unit_text
 from apbot.read.goal_view import (
     Goal,
     Model,
@@ -23,7 +23,7 @@ from apbot.read.goal_view import (
     own_stems,
     step_effects,
 )
-from apbot.read.goal_vocab import NEGATIONS, STOP_WORDS, concept, stem
+from apbot.read.goal_vocab import NEGATIONS, STOP_WORDS, SYNONYMS, concept, stem
 
 
 def switches(
@@ -60,8 +60,12 @@ def switches(
                 warmth = _kept_warmth(text, k, own)
                 if warmth:  # "keep it chilled" for AFTER COOL
                     key, weight = concept(warmth), 1.0
+            if weight <= 0 and _mode_synonym(text, k, own):
+                key, weight = next(iter(own)), 1.0  # "holiday mode" for a VACATION switch
             if weight <= 0 or generic(key):
                 continue
+            if _anothers_name(view, goal, info, text.stems[k]):
+                continue  # "eco" names the ECO switch, not HOLIDAY that wears ECO's label
             if _part_after(text, k, info.vocab):
                 continue  # "clean the ventilation slots": a part of the body, not the switch
             if shadowed and (text.stems[k] in own or key in own_concepts(info)):
@@ -129,6 +133,35 @@ def _part_after(text: Text, k: int, vocab: dict[str, float]) -> bool:
     while j < len(text.tokens) and vocab.get(text.concepts[j], 0.0) > 0:
         j += 1
     return j < len(text.tokens) and text.word(j) in _PARTS
+
+
+_MODE_NOUNS = frozenset(stem(w) for w in ("mode", "setting", "programme", "function"))
+
+
+def _mode_synonym(text: Text, k: int, own: set[str]) -> bool:
+    """A word of the same meaning as a one-word switch's name, said as a mode ("holiday mode"
+    for VACATION, "energy-saving mode" for ECO): a mode's value that the panel has as a switch
+    of its own."""
+    if len(own) != 1 or k + 1 >= len(text.tokens) or text.stems[k + 1] not in _MODE_NOUNS:
+        return False
+    name = next(iter(own))
+    return any(
+        stem(w) == text.stems[k] for n, ws in SYNONYMS.items() if stem(n) == name for w in ws
+    )
+
+
+def _anothers_name(view: Model, goal: Goal, info: VarInfo, word: str) -> bool:
+    """The word is only on this switch's label, and it is another switch's own name: the
+    other key's second function (HOLIDAY behind a held ECO) does not take ECO's word."""
+    if word in {stem(w) for w in name_words(info.name)}:
+        return False
+    return any(
+        other is not info
+        and other.role == "switch"
+        and name not in goal
+        and word in {stem(w) for w in name_words(other.name)}
+        for name, other in view.infos.items()
+    )
 
 
 def _names_a_setting(view: Model, goal: Goal, word: str) -> bool:

@@ -23,6 +23,7 @@ from apbot.read.cases_resets import apply_resets
 from apbot.read.cases_zones import zone_twins
 from apbot.read.code_words import name_code_words
 from apbot.read.codes import name_codes
+from apbot.read.hold_seconds import hold_seconds
 from apbot.read.initials import read_initials
 from apbot.read.labels import find_labels
 from apbot.read.off_words import read_held_off_words, read_off_words
@@ -132,6 +133,18 @@ def _action(info: ActionInfo) -> dict[str, Any]:
     return spec
 
 
+def _actions(b: Builder) -> dict[str, dict[str, Any]]:
+    """Each action's spec; a hold lasts as long as the manual says for its key."""
+    actions = {i.name: _action(i) for i in b.infos}
+    for info in b.infos:
+        if info.skill != "hold" or len(info.controls) != 1 or info.controls[0] not in b.labels:
+            continue
+        held = hold_seconds(b.manual.lines, b.labels[info.controls[0]].text)
+        if held is not None and held > 0:
+            actions[info.name]["seconds"] = held
+    return actions
+
+
 def _main_variable(b: Builder) -> str | None:
     """What the display most likely shows when idle: the programme, else the first amount."""
     fixed = {v for g in b.guards for v in g["when"]} | {"running"}
@@ -162,7 +175,7 @@ def _assemble(b: Builder, appliance_id: str, category: str) -> dict[str, Any]:
         "appliance": {"id": appliance_id, "category": category, "name": "read from the manual"},
         "controls": _controls(b),
         "variables": b.variables,
-        "actions": {i.name: _action(i) for i in b.infos},
+        "actions": _actions(b),
         "features": b.features,
         "guards": b.guards,
         "display": {
