@@ -112,3 +112,23 @@ def test_a_hold_the_manual_gives_another_job_is_not_a_faster_step() -> None:
     assert not _held_in_step(SCALE, scale, "press_minus", "hold_minus")
     lamp = ["press_power", "press_up", "press_down", "hold_up", "hold_down"]
     assert not _held_in_step(LAMP, lamp, "press_down", "hold_down")
+
+
+# a bread oven: holding + / − runs the clock faster; the 2 hours belong to the START key
+OVEN = """
+## Keys
+- **CLOCK** — Shows the clock so that + and − set it.
+- **+** / **−** — Change the value shown by one minute per press.
+- **START** — Starts the oven.
+
+Hold + or − to set the clock faster, and press START to add a delay of 2 hours.
+"""
+
+
+def test_a_size_said_of_another_key_in_the_same_sentence_is_not_the_holds() -> None:
+    actions = ["press_clock", "press_plus", "press_minus", "hold_plus", "hold_minus", "press_start"]
+    model = read_manual(OVEN, actions).model
+    steps = [s for f in model.features.values() for s in f if "hold_plus" in s.actions]
+    assert steps
+    for s in steps:
+        assert s.effect["hold_plus"] == s.effect["press_plus"]  # type: ignore[index]

@@ -42,6 +42,10 @@ _FASTER_RE = re.compile(
     r"|\bat\s+(?:once|a\s+time)\b",
     re.I,
 )
+# where the hold's clause ends: another gesture, a new clause
+_CLAUSE_END_RE = re.compile(
+    r";|\b(?:press|presses|pressing|touch|turn)\b|,\s*(?:and|but|while|whereas)\b", re.I
+)
 # "hold + for 3 s to switch the unit": what the hold is for
 _PURPOSE_RE = re.compile(r"\bto\s+([a-z]+)", re.I)
 _STEP_VERBS = frozenset(
@@ -172,10 +176,16 @@ def _said_step(b: Builder, hold: ActionInfo) -> tuple[str, int] | None:
         return None
     for i in label.mentions:
         held = _HOLD_RE.search(b.manual.units[i].text)
-        text = b.manual.units[i].text[held.start() :] if held else ""
+        text = _hold_clause(b.manual.units[i].text[held.start() :]) if held else ""
         if held and (_STEPS_RE.search(text) or _TIME_RE.search(text)):
             return text, i  # (what follows the hold: not the press's own step before it)
     return None
+
+
+def _hold_clause(text: str) -> str:
+    """The hold's own clause: up to another gesture or clause ("hold + to set the clock
+    faster, and press START to add a delay of 2 hours": the 2 hours are START's)."""
+    return _CLAUSE_END_RE.split(text, maxsplit=1)[0]
 
 
 def _hold_has_own_job(b: Builder, hold: ActionInfo) -> bool:
