@@ -77,3 +77,58 @@ def test_a_hold_the_manual_never_mentions_repeats_the_press() -> None:
     steps = [s for f in model.features.values() for s in f if "hold_plus" in s.actions]
     assert steps
     assert all(s.effect["hold_plus"] == s.effect["press_plus"] for s in steps)  # type: ignore[index]
+
+
+# a bathroom scale: + / − set the user's height; holding + switches the unit, holding − clears
+SCALE = """
+## Keys
+- **SET** — Switches the scale on or off.
+- **+** / **−** — Raise or lower the height shown (100 to 220 cm, 1 cm per press).
+
+## Units and memory
+Hold + for 3 seconds to show inches instead. Hold − for 5 seconds to clear the stored users.
+"""
+
+# a desk lamp: holding ▼ puts the display out, it is no faster brightness step
+LAMP = """
+## Keys
+- **POWER** — Switches the lamp on or off.
+- **▲** / **▼** — Brighter or dimmer (levels 1 to 7).
+
+Hold ▼ to turn the display off; any key lights it again.
+"""
+
+
+def _held_in_step(manual: str, actions: list[str], press: str, hold: str) -> bool:
+    model = read_manual(manual, actions).model
+    steps = [s for f in model.features.values() for s in f if press in s.actions]
+    assert steps
+    return any(hold in s.actions for s in steps)
+
+
+def test_a_hold_the_manual_gives_another_job_is_not_a_faster_step() -> None:
+    scale = ["press_set", "press_plus", "press_minus", "hold_plus", "hold_minus"]
+    assert not _held_in_step(SCALE, scale, "press_plus", "hold_plus")
+    assert not _held_in_step(SCALE, scale, "press_minus", "hold_minus")
+    lamp = ["press_power", "press_up", "press_down", "hold_up", "hold_down"]
+    assert not _held_in_step(LAMP, lamp, "press_down", "hold_down")
+
+
+# a bread oven: holding + / − runs the clock faster; the 2 hours belong to the START key
+OVEN = """
+## Keys
+- **CLOCK** — Shows the clock so that + and − set it.
+- **+** / **−** — Change the value shown by one minute per press.
+- **START** — Starts the oven.
+
+Hold + or − to set the clock faster, and press START to add a delay of 2 hours.
+"""
+
+
+def test_a_size_said_of_another_key_in_the_same_sentence_is_not_the_holds() -> None:
+    actions = ["press_clock", "press_plus", "press_minus", "hold_plus", "hold_minus", "press_start"]
+    model = read_manual(OVEN, actions).model
+    steps = [s for f in model.features.values() for s in f if "hold_plus" in s.actions]
+    assert steps
+    for s in steps:
+        assert s.effect["hold_plus"] == s.effect["press_plus"]  # type: ignore[index]

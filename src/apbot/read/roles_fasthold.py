@@ -36,6 +36,37 @@ _TIME_RE = re.compile(
     re.I,
 )
 _HOLD_RE = re.compile(r"\b(?:hold|held|holding|long[- ]press)", re.I)
+# "hold to change it faster", "2 s: large steps", "by a whole hour": a hold that steps
+_FASTER_RE = re.compile(
+    r"\b(?:fast|quick|rapid|scroll|continu|repeat|speed|large|big|whole|jump|keeps?\s+\w+ing)"
+    r"|\bat\s+(?:once|a\s+time)\b",
+    re.I,
+)
+# where the hold's clause ends: another gesture, a new clause
+_CLAUSE_END_RE = re.compile(
+    r";|\b(?:press|presses|pressing|touch|turn)\b|,\s*(?:and|but|while|whereas)\b", re.I
+)
+# "hold + for 3 s to switch the unit": what the hold is for
+_PURPOSE_RE = re.compile(r"\bto\s+([a-z]+)", re.I)
+_STEP_VERBS = frozenset(
+    [
+        "change",
+        "move",
+        "set",
+        "adjust",
+        "raise",
+        "lower",
+        "increase",
+        "decrease",
+        "step",
+        "advance",
+        "go",
+        "reach",
+        "count",
+    ]
+)
+# "hold ▲ and ▼ together": a hold of two keys, a gesture of its own (not this key's hold)
+_BOTH_RE = re.compile(r"\b(?:together|both|same\s+time|simultaneous)", re.I)
 
 
 def fold_fast_holds(b: Builder) -> None:
@@ -60,6 +91,8 @@ def fold_fast_holds(b: Builder) -> None:
             continue
         if not any(i.skill == "press" and i.controls == hold.controls for i in b.infos):
             continue
+        if _said_step(b, hold) is None and _hold_has_own_job(b, hold):
+            continue  # "hold + for 3 s to switch to °F": a job of its own, not a faster step
         holds.append((hold, var, own))
     attached = attach_fast_holds(b, [h for h, _, _ in holds])
     for hold, var, own in holds:
@@ -143,10 +176,43 @@ def _said_step(b: Builder, hold: ActionInfo) -> tuple[str, int] | None:
         return None
     for i in label.mentions:
         held = _HOLD_RE.search(b.manual.units[i].text)
-        text = b.manual.units[i].text[held.start() :] if held else ""
+        text = _hold_clause(b.manual.units[i].text[held.start() :]) if held else ""
         if held and (_STEPS_RE.search(text) or _TIME_RE.search(text)):
             return text, i  # (what follows the hold: not the press's own step before it)
     return None
+
+
+def _hold_clause(text: str) -> str:
+    """The hold's own clause: up to another gesture or clause ("hold + to set the clock
+    faster, and press START to add a delay of 2 hours": the 2 hours are START's)."""
+    return _CLAUSE_END_RE.split(text, maxsplit=1)[0]
+
+
+def _hold_has_own_job(b: Builder, hold: ActionInfo) -> bool:
+    """The manual tells what holding this key alone is for, and it is not a step ("hold −
+    for 5 s to reset", "hold ▼ to switch the display off"): folding it into the press's step
+    would have the planner reach a value with a key that does something else."""
+    label = b.labels.get(hold.controls[0])
+    if label is None or not label.text.strip():
+        return False
+    key = re.escape(label.text.strip())
+    own = re.compile(
+        rf"\b(?:hold|holding|long[- ]press)\s+(?:down\s+)?(?:the\s+)?{key}(?![\w/])"
+        r"(?P<rest>[^.;]*)",
+        re.I,
+    )
+    for i in label.mentions:
+        text = b.manual.units[i].text
+        if _BOTH_RE.search(text):
+            continue
+        for m in own.finditer(text):
+            rest = m.group("rest")
+            if _FASTER_RE.search(rest) or _STEPS_RE.search(rest) or _TIME_RE.search(rest):
+                continue
+            purpose = _PURPOSE_RE.search(rest)
+            if purpose and purpose.group(1).lower() not in _STEP_VERBS:
+                return True
+    return False
 
 
 def _count(word: str) -> int:
