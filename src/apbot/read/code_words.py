@@ -17,7 +17,7 @@ import re
 from typing import Any
 
 from apbot.read.build import Builder
-from apbot.read.off_words import lines_outside_asides
+from apbot.read.off_words import lines_outside_asides, unit_at
 
 # a display code: one or two letters, or such groups joined by "+" ("W+B"); not three ("ECO",
 # "MAX" are words users say themselves)
@@ -47,7 +47,7 @@ def name_code_words(b: Builder) -> None:
         b.note(
             f"variables.{var}.values",
             "codes spelt out by the manual: " + ", ".join(f"{c} {n}" for c, n in names.items()),
-            _unit_at(b, line),
+            unit_at(b, line),
         )
 
 
@@ -124,13 +124,3 @@ def _rename(b: Builder, var: str, spec: dict[str, Any], names: dict[str, str]) -
     for child in b.variables.values():
         if child.get("depends_on") == var and "cases" in child:
             child["cases"] = {names.get(str(k), k): c for k, c in child["cases"].items()}
-
-
-def _unit_at(b: Builder, line: int) -> int | None:
-    """The unit on (or last before) a raw line, for the note's quote."""
-    at = None
-    for i, unit in enumerate(b.manual.units):
-        if unit.line > line:
-            break
-        at = i
-    return at

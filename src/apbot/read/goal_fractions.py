@@ -15,19 +15,13 @@ from fractions import Fraction
 from typing import Any
 
 from apbot.model.schema import DiscreteVariable
+from apbot.model.values import NUMBER_WORDS
 from apbot.read.goal_text import CLAUSE_ENDS, Text
 from apbot.read.goal_view import Goal, Model
 
-_NUMERATORS = {
-    "a": 1,
-    "an": 1,
-    "one": 1,
-    "two": 2,
-    "three": 3,
-    "four": 4,
-    "five": 5,
-    "six": 6,
-    "seven": 7,
+# "a quarter", "three quarters": the article and the counting words one to seven
+_NUMERATORS = {"a": 1, "an": 1} | {
+    w: n for w, n in NUMBER_WORDS.items() if 1 <= n <= 7 and w not in ("single", "couple")
 }
 _PARTS = {
     "half": 2,

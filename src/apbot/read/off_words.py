@@ -56,7 +56,7 @@ def read_off_words(b: Builder) -> None:
         b.note(
             f"variables.{var}.show",
             f"the display shows {word} while it is off; it starts on",
-            _unit_at(b, line),
+            unit_at(b, line),
         )
 
 
@@ -88,7 +88,7 @@ def read_held_off_words(b: Builder) -> None:
         b.note(
             f"variables.{name}",
             f"holding {label} switches the {noun}; the display shows {word} while it is off",
-            _unit_at(b, line),
+            unit_at(b, line),
         )
 
 
@@ -202,7 +202,7 @@ def _set_off_word(b: Builder, var: str, spec: dict[str, Any], word: str) -> None
         b.indicators.append(var)  # the word is a lamp beside the main display
 
 
-def _unit_at(b: Builder, line: int) -> int | None:
+def unit_at(b: Builder, line: int) -> int | None:
     """The unit on (or last before) a raw line, for the note's quote."""
     at = None
     for i, unit in enumerate(b.manual.units):
