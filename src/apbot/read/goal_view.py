@@ -8,13 +8,11 @@ remembered, since an agent parses many sentences against one belief.
 from __future__ import annotations
 
 import itertools
-from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import Any
 
 from apbot.model.domain import AnyVariable, all_values, build_domain
 from apbot.model.schema import (
-    AnywhereStep,
     ApplianceModel,
     DiscreteVariable,
     GoTo,
@@ -24,6 +22,14 @@ from apbot.model.schema import (
 )
 from apbot.read.goal_legends import add_setting_words
 from apbot.read.goal_manual import coded_names, legend_words, title_nouns
+from apbot.read.goal_roles import (
+    START_LABELS,
+    control_labels,
+    mark_power_and_running,
+    start_values_of,
+    step_effects,
+    steps_of,
+)
 from apbot.read.goal_values import (
     OFF_WORDS,
     ON_WORDS,
@@ -48,27 +54,6 @@ from apbot.read.goal_vocab import (
 from apbot.read.range_codes import code_past_top
 
 Goal = dict[str, Any]
-
-_OPERATION_NAMES = frozenset(
-    w
-    for w in (
-        "running",
-        "run",
-        "heating",
-        "cooking",
-        "dispensing",
-        "pouring",
-        "status",
-        "state",
-        "operation",
-        "washing",
-        "brewing",
-        "working",
-    )
-)
-
-
-_START_LABELS = ("start", "run", "go", "begin", "dispense", "pour")
 
 
 @dataclass
@@ -112,37 +97,6 @@ MAX_PHRASE_VALUES = 2_000
 """Values of one discrete variable matched as phrases; a longer list is matched by numbers only."""
 
 
-def _steps_of(model: ApplianceModel) -> Iterable[tuple[str, int, Step | AnywhereStep]]:
-    """Every step of every feature, and the keys that act from anywhere (START, CANCEL) as
-    one-step procedures of their own."""
-    for feature, steps in model.features.items():
-        for index, step in enumerate(steps):
-            yield feature, index, step
-    for index, anywhere in enumerate(model.anywhere):
-        yield f"anywhere_{index}", 0, anywhere
-
-
-def _control_labels(model: ApplianceModel, actions: Iterable[str]) -> list[str]:
-    labels: list[str] = []
-    controls = {c.id: c for c in model.controls}
-    for action_id in actions:
-        action = model.actions.get(action_id)
-        if action is None:
-            continue
-        for cid in [action.control] if action.control else list(action.controls or []):
-            control = controls.get(cid or "")
-            if control is not None and control.label:
-                labels.append(control.label)
-    return labels
-
-
-def step_effects(step: Step | AnywhereStep) -> list[tuple[str, Any]]:
-    """(action, effect) pairs of a step."""
-    if isinstance(step.effect, dict):
-        return list(step.effect.items())
-    return [(a, step.effect) for a in step.actions]
-
-
 def _add_vocab(info: VarInfo, text: str, weight: float) -> None:
     for word in name_words(text):
         if word in STOP_WORDS or len(word) < 2:
@@ -181,7 +135,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
                 _add_vocab(info, _DIMENSION_WORDS.get(dimension, ""), 0.6)  # "450 W": power
         infos[name] = info
     # features and control labels name the variables they adjust
-    for feature, index, step in _steps_of(model):
+    for feature, index, step in steps_of(model):
         if step.variable and step.variable in infos:
             info = infos[step.variable]
             steps: list[Step] = model.features.get(feature, [])
@@ -195,10 +149,10 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
             ]
             if info.role == "switch":
                 continue  # a switch's key is often shared (hold TIMER to lock)
-            for label in _control_labels(model, entry + own):
-                if not any(w in _START_LABELS for w in name_words(label)):
+            for label in control_labels(model, entry + own):
+                if not any(w in START_LABELS for w in name_words(label)):
                     _add_vocab(info, label, 0.8)
-    _mark_power_and_running(model, infos)
+    mark_power_and_running(model, infos)
     for info in infos.values():
         if isinstance(info.var, TimeVariable) or (
             isinstance(info.var, NumericVariable) and info.dimension == "time"
@@ -228,7 +182,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
             words = set(name_words(f"{info.name} {info.var.label or ''}".casefold()))
             info.turns = "off" if "off" in words else "on" if "on" in words else None
     phrases = _phrases(model, infos)
-    start_values = _start_values(model, infos)
+    start_values = start_values_of(model, infos)
     appliance = {
         concept(w) for w in name_words(model.appliance.name + " " + model.appliance.category)
     }
@@ -268,10 +222,10 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
     }  # "switch the dispenser on": not a setting's or a value's word
     keys: dict[str, list[str]] = {}
     set_keys: dict[str, list[str]] = {}  # the settings' keys, for what their legends call them
-    for _feature, _index, step in _steps_of(model):
+    for _feature, _index, step in steps_of(model):
         if step.variable in infos and infos[step.variable].role in ("switch", "setting"):
             kind = keys if infos[step.variable].role == "switch" else set_keys
-            kind.setdefault(step.variable, []).extend(_control_labels(model, step.actions))
+            kind.setdefault(step.variable, []).extend(control_labels(model, step.actions))
     legends = legend_words(model, manual, keys)
     shared = {w for a, b in itertools.combinations(legends.values(), 2) for w in a & b}
     taken = {key for info in infos.values() for key in info.vocab}
@@ -339,91 +293,6 @@ def _dimension_by_name(info: VarInfo) -> str | None:
     return None
 
 
-def _mark_power_and_running(model: ApplianceModel, infos: dict[str, VarInfo]) -> None:
-    """The power switch hides the panel (or is called power); the running variable is what a
-    START key sets, or is named for an operation (heating, dispensing, status)."""
-    hiding = {name for guard in model.guards if guard.hide for name in guard.when}
-    for name, info in infos.items():
-        dark = name in hiding and concept("lock") not in info.vocab  # a panel that goes dark
-        named = name in ("power", "on_off", "power_switch") or dark
-        if info.role == "switch" and named:
-            info.role = "power"
-    for _feature, _index, step in _steps_of(model):
-        pressed = [a for a in step.actions if model.actions[a].skill == "press"]
-        labels = " ".join(_control_labels(model, pressed)).casefold()
-        if not any(word in name_words(labels) for word in _START_LABELS):
-            continue
-        goes = any(isinstance(effect, GoTo) for _a, effect in step_effects(step))
-        goes = goes or _named_for_key(step.variable or "", labels)
-        targets = [step.variable] if step.variable and goes else []
-        targets += list(step.set)
-        for target in targets:
-            found = infos.get(target or "")
-            if (
-                found is not None
-                and isinstance(found.var, DiscreteVariable)
-                and found.role != "power"
-                and concept("lock") not in found.vocab
-                and (_operation(target or "") or found.role == "switch")
-            ):
-                found.role = "running"
-    for name, info in infos.items():
-        operation = _operation(name)
-        if (
-            operation
-            and info.role in ("switch", "setting")
-            and isinstance(info.var, DiscreteVariable)
-        ):
-            info.role = "running"
-
-
-def _named_for_key(name: str, labels: str) -> bool:
-    """A switch named for the operation its own key starts (DISPENSE toggles ``dispense``): the
-    operation under way, started by the operation's verbs, not a setting."""
-    own = name_words(name)
-    return bool(own) and all(w in _START_LABELS and w in name_words(labels) for w in own)
-
-
-def _operation(name: str) -> bool:
-    """A variable named for an operation under way ("running", "heating", "brew_status"), not
-    a setting that shares a stem with one ("heat" is a level, "heating" is running)."""
-    return bool(set(name.casefold().split("_")) & _OPERATION_NAMES)
-
-
-def _start_values(
-    model: ApplianceModel, infos: dict[str, VarInfo]
-) -> dict[str | None, tuple[str, Any]]:
-    """What START sets the running variable to: by the variable whose feature ends with it
-    (a timer programme ends in "timer" rather than "cooking"), and in general (key None)."""
-    found: dict[str | None, tuple[str, Any]] = {}
-    running = [n for n, i in infos.items() if i.role == "running"]
-    procedures: list[list[Step | AnywhereStep]] = [list(s) for s in model.features.values()]
-    procedures += [[anywhere] for anywhere in model.anywhere]
-    for steps in procedures:
-        adjusted = [s.variable for s in steps if s.variable and s.variable not in running]
-        for step in steps:
-            for action, effect in step_effects(step):
-                if not isinstance(effect, GoTo) or step.variable not in running:
-                    continue
-                labels = " ".join(_control_labels(model, [action])).casefold()
-                if not any(word in name_words(labels) for word in _START_LABELS):
-                    continue
-                if str(effect.to).casefold() in OFF_WORDS:
-                    continue  # START held to cancel: it stops, it does not start
-                value = (step.variable, effect.to)
-                if len(steps) == 1 or not adjusted:
-                    found.setdefault(None, value)
-                for var in adjusted:
-                    found.setdefault(var, value)
-    for name in running:
-        info = infos[name]
-        known = all_values(info.var)  # a dependent running state has its values per case
-        on = info.on or next((v for v in info.values if known and v != known[0]), None)
-        if on is not None:
-            found.setdefault(None, (name, on))
-    return found
-
-
 PARTIAL = 0.6
 """Weight of a value named by one of its words alone ("the eco programme" for eco 40-60, "the
 sleep programme" for AUTO SLEEP); such a match needs the setting's own word beside it."""
@@ -489,7 +358,7 @@ def _phrases(
                     phrases.append((name, value, (stem(synonym),), 0.8))
         phrases += _first_words(name, info)
     # keys that go straight to one value ("GREEN TEA" sets 80 °C)
-    for _feature, _index, step in _steps_of(model):
+    for _feature, _index, step in steps_of(model):
         if not step.variable or step.variable not in infos:
             continue
         info = infos[step.variable]
@@ -498,7 +367,7 @@ def _phrases(
         for action, effect in step_effects(step):
             if not isinstance(effect, GoTo):
                 continue
-            for label in _control_labels(model, [action]):
+            for label in control_labels(model, [action]):
                 words = name_words(label)
                 if words and not any(w in STOP_WORDS for w in words):
                     phrases.append((step.variable, effect.to, tuple(stem(w) for w in words), 0.95))
