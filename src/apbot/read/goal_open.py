@@ -26,12 +26,21 @@ If the finder cannot find it, the agent sets the rest of the goal (``agent/loop.
 
 from __future__ import annotations
 
-import re
 from collections.abc import Collection
 from typing import Any
 
 from apbot.model.key_roles import adjusted_by, is_switch, misread_key
 from apbot.model.schema import ApplianceModel, DiscreteVariable, TimeVariable
+from apbot.read.goal_said import (
+    NEVER_NAMES,
+    NOT_LEVELS,
+    as_said,
+    counted_stems,
+    in_days,
+    manual_stems,
+    remark,
+    tally,
+)
 from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab
 from apbot.read.goal_view import Goal, Model, own_stems
 from apbot.read.goal_vocab import STOP_WORDS, stem
@@ -62,8 +71,8 @@ def open_entries(
     the way its manual does ("level 7"), and a remark about people ("my kids are 5") uses
     words no manual has."""
     model = view.model
-    printed = _manual_stems(manual)
-    counted = _counted_stems(manual)
+    printed = manual_stems(manual)
+    counted = counted_stems(manual)
     roleless = _roleless_keys(model)
     nouns = {w: key for key in roleless for w in _key_words(key)}  # noun -> its key
     roled: dict[str, list[str]] = {}  # noun -> the keys with a role it names
@@ -79,13 +88,13 @@ def open_entries(
     for mention in mentions:
         if mention.kind == "clock" or any(k in taken for k in range(mention.start, mention.end)):
             continue
-        if _tally(text, mention):
+        if tally(text, mention):
             continue
-        value = _as_said(text, mention)
+        value = as_said(text, mention)
         if value is None:
             continue
         name = _key_noun(text, mention, nouns, known)
-        if name is None and _remark(text, mention):
+        if name is None and remark(text, mention):
             continue
         if name is None:
             name, keys = _misread_noun(view, text, mention, value, roled, goal)
@@ -96,7 +105,7 @@ def open_entries(
             name = _level_noun(text, mention, known, printed)
         if name is None and not _of_its_kind(view, mention, text):
             name = _KIND_NAMES.get(_kind(mention) or "")
-            if name == "time" and _in_days(text, mention):
+            if name == "time" and in_days(text, mention):
                 name = "days"  # a number of days away, not a cooking time ("48 hours" is one)
             count = _kind(mention) == "count"
             if name is not None and not roleless:  # no key to try: the programme's next step
@@ -104,13 +113,13 @@ def open_entries(
                 name = None if chosen is None else f"{chosen}_{name}"
             elif count and manual and stem(mention.unit) not in counted:
                 name = None  # "it's for 2 people": a count of what the manual never counts
-        if name is None or name in _NEVER_NAMES or name in view.infos or name in goal:
+        if name is None or name in NEVER_NAMES or name in view.infos or name in goal:
             continue
         if name in found:
             continue
         found[name] = value
     for name, value in _worded(text, nouns, known, taken).items():
-        if not ({name} & (set(view.infos) | set(found) | _NEVER_NAMES | set(goal))):
+        if not ({name} & (set(view.infos) | set(found) | NEVER_NAMES | set(goal))):
             found[name] = value
     return found
 
@@ -391,92 +400,8 @@ def _level_noun(
     word = text.word(k)
     if len(word) < 3 or not word.isalpha() or word in _NOT_NAMES or text.stems[k] in known:
         return None
-    if word in _VERBS or word in _NOT_LEVELS or (printed and text.stems[k] not in printed):
+    if word in _VERBS or word in NOT_LEVELS or (printed and text.stems[k] not in printed):
         return None
     if word.endswith("ed") and not word.endswith("eed"):
         return None  # a verb's past ("the door opened 20 times"), not a setting's noun
     return word
-
-
-_NOT_LEVELS = frozenset(
-    {"are", "is", "was", "were", "be", "been", "being", "aged", "age", "ages", "about",
-     "around", "than", "them", "they", "we", "you", "my", "our", "your", "his", "her",
-     "their", "those", "these", "back", "again", "times", "until", "till", "every", "each"}
-)  # fmt: skip
-"""Words that stand before a number without naming a setting ("my kids are 5")."""
-
-
-_NEVER_NAMES = frozenset(
-    {"not", "no", "never", "nor", "without", "start", "stop", "pause", "cancel", "begin",
-     "resume", "reset", "clear", "enter", "confirm", "ok"}
-)  # fmt: skip
-"""Words that name no setting, whichever way they were found: a negation ("not 30"), a key
-that acts rather than holds a value ("start")."""
-
-_TALLIES = frozenset({"times", "stars", "star", "points", "votes", "reviews", "ratings"})
-"""Nouns after a number that count events or score something ("opened 20 times", "5 stars"):
-a remark, never a value to set."""
-
-
-def _tally(text: Text, mention: Mention) -> bool:
-    """The number counts events or rates ("20 times", "5 stars", "4 out of 5"), it sets
-    nothing."""
-    if mention.kind != "number":
-        return False
-    after = text.word(mention.end)
-    noun = mention.unit.casefold() or after
-    return noun in _TALLIES or (after == "out" and text.word(mention.end + 1) == "of")
-
-
-def _in_days(text: Text, mention: Mention) -> bool:
-    """A duration said in days ("for 14 days"), not one that adds up to whole days ("48
-    hours")."""
-    return any(text.word(k).startswith("day") for k in range(mention.start, mention.end))
-
-
-def _remark(text: Text, mention: Mention) -> bool:
-    """A time from now, not a setting: "I'll be back in 10 minutes" ("in" before a duration
-    says when, not how long)."""
-    return mention.kind == "duration" and text.word(mention.start - 1) == "in"
-
-
-def _counted_stems(manual: str) -> frozenset[str]:
-    """The stems of the nouns a manual counts: the word after a number or a span of numbers
-    ("1 – 4 cups", "up to 6 slices")."""
-    found = re.findall(r"\d\s*(?:[-–]\s*\d+\s*)?([a-z]+)", manual.lower())
-    return frozenset(stem(w) for w in found)
-
-
-def _manual_stems(manual: str) -> frozenset[str]:
-    """The stems of the words a manual uses (empty without a manual)."""
-    return frozenset(stem(w) for w in re.findall(r"[a-z]+", manual.lower()))
-
-
-_BASE_UNITS = {"mass": "g", "volume": "ml", "power": "W"}
-
-
-def _as_said(text: Text, mention: Mention) -> Any:
-    """The value as the user said it: a whole number as itself, a duration in its largest
-    whole unit ("45 min", "2 h"), a weight, volume or power in grams, millilitres or watts
-    ("1.25 kg" → "1250 g"), another quantity with the unit said."""
-    if mention.kind == "number":
-        number = mention.value
-        return int(number) if float(number).is_integer() else number
-    if mention.kind == "duration":
-        seconds = round(mention.value)
-        sizes = ((86400, "d"), (3600, "h"), (60, "min"))
-        for size, unit in sizes if _in_days(text, mention) else sizes[1:]:
-            if seconds % size == 0 and seconds >= size:
-                return f"{seconds // size} {unit}"
-        return f"{seconds} s"
-    base = _BASE_UNITS.get(mention.dimension or "")
-    if mention.kind == "quantity" and base and float(mention.value).is_integer():
-        return f"{int(mention.value)} {base}"  # "1.25 kg" as a display writes it: 1250 g
-    if mention.kind == "quantity" and mention.unit:
-        said = text.word(mention.start)
-        try:
-            float(said)
-        except ValueError:
-            return None  # "two kilos": no number written as the display writes it
-        return f"{said} {mention.unit}"
-    return None
