@@ -20,12 +20,12 @@ from apbot.model.display import can_show
 RUN_STATES = ("running", "heating", "dispensing", "status", "start")
 
 
-def _starts(name: str) -> bool:
+def starts_appliance(name: str) -> bool:
     """A goal setting that starts the appliance (left for last while settings are missing)."""
     return any(word in name for word in RUN_STATES)
 
 
-def _locks(name: str) -> bool:
+def locks_panel(name: str) -> bool:
     """A goal setting that locks the panel (a child lock): the belief may lack its guard."""
     return "lock" in name.split("_")
 
@@ -109,7 +109,9 @@ class Claims(Checks):
 
     def _glance(self, names: set[str]) -> bool:
         """Look at a goal setting the display may not have confirmed (:func:`glance`)."""
-        return glance(self.session, {n for n in names if not (_starts(n) or _locks(n))})
+        return glance(
+            self.session, {n for n in names if not (starts_appliance(n) or locks_panel(n))}
+        )
 
     def _guarding_the_goal(self) -> bool:
         """A guard holds whose condition the goal itself asks for (running, locked)."""

@@ -17,7 +17,7 @@ from __future__ import annotations
 from typing import Any
 
 from apbot.agent.budget import Budget
-from apbot.agent.claims import Claims, _locks, _starts
+from apbot.agent.claims import Claims, locks_panel, starts_appliance
 from apbot.agent.discovery import VariableFinder
 from apbot.agent.displays import DisplayLearner
 from apbot.agent.environment import Environment
@@ -114,7 +114,9 @@ class ClosedLoop(Claims):
     def reasoning_step(self) -> None:
         inside, outside = self.goal()
         if self.missing:  # set the rest first (the missing setting may need its programme),
-            inside = {n: v for n, v in inside.items() if not _starts(n)}  # but do not start
+            inside = {
+                n: v for n, v in inside.items() if not starts_appliance(n)
+            }  # but do not start
         for name in outside:
             if name in self.session.explored:
                 if self._again_after_the_rest(name, inside):
@@ -127,7 +129,7 @@ class ClosedLoop(Claims):
             target = dict(inside)
             for name in outside:
                 if name in self.after_rest and self._rest_pending(inside):
-                    target = {n: v for n, v in target.items() if not _starts(n)}
+                    target = {n: v for n, v in target.items() if not starts_appliance(n)}
                     continue  # set the rest first (its programme), then walk this one again
                 proxy = self.proxy(name, inside)
                 if proxy is not MISSING:
@@ -135,7 +137,7 @@ class ClosedLoop(Claims):
                 elif name not in self.session.explored:
                     # the setting is to be looked for in its programme: starting first would
                     # lock it out
-                    target = {n: v for n, v in target.items() if not _starts(n)}
+                    target = {n: v for n, v in target.items() if not starts_appliance(n)}
             found = self.make_plan(target)
             if not found.macro_actions:
                 if self.missing:
@@ -153,10 +155,10 @@ class ClosedLoop(Claims):
                     return  # looked at the display (or settled what it showed): plan again
             self.pending = list(found.macro_actions)
             self.session.episode.log("plan", " → ".join(m.feature for m in found.macro_actions))
-        if any(_starts(n) or _locks(n) for n in self.pending[0].expect):
+        if any(starts_appliance(n) or locks_panel(n) for n in self.pending[0].expect):
             # once it runs (or the lock is on), most keys are locked out: see what is
             # unconfirmed first
-            settings = {n for n in inside if not (_starts(n) or _locks(n))}
+            settings = {n for n in inside if not (starts_appliance(n) or locks_panel(n))}
             unseen = self.session.unconfirmed(settings)
             if (unseen and self._look(unseen)) or (not unseen and self._glance(settings)):
                 self.pending.clear()
@@ -172,7 +174,7 @@ class ClosedLoop(Claims):
         programme) is still to be set: the value may exist there. Walk it again once the rest
         holds (once per setting)."""
         pending = [n for n, v in inside.items() if self.session.belief.value(n) != v]
-        if not [n for n in pending if not _starts(n)]:
+        if not [n for n in pending if not starts_appliance(n)]:
             return False
         if not self.session.budget.once("inspect", f"again:{name}"):
             return False
@@ -182,7 +184,9 @@ class ClosedLoop(Claims):
 
     def _rest_pending(self, inside: dict[str, Any]) -> bool:
         """A goal setting other than a start is not yet what the goal asks."""
-        return any(self.session.belief.value(n) != v for n, v in inside.items() if not _starts(n))
+        return any(
+            self.session.belief.value(n) != v for n, v in inside.items() if not starts_appliance(n)
+        )
 
     def explore(self, name: str, last: Executed, history: list[Any] | None = None) -> None:
         """Walk ``name`` with ``last``'s key; a walk stuck on one value looks for the key
@@ -289,11 +293,11 @@ class ClosedLoop(Claims):
             reachable: dict[str, Any] = {}
             kept = ""  # a run state the appliance is in as asked: nothing may undo it
             # the goal variable that breaks planning (a run state last: it locks the rest)
-            for name, value in sorted(target.items(), key=lambda item: _starts(item[0])):
+            for name, value in sorted(target.items(), key=lambda item: starts_appliance(item[0])):
                 if self.plans.plannable({**reachable, name: value}):
                     reachable[name] = value
                     continue
-                if _starts(name):
+                if starts_appliance(name):
                     others = {n: v for n, v in target.items() if n != name}
                     # running as asked, a way to the rest that stops the cycle is no progress:
                     # starting again would undo it (a reset the start is believed to make,
