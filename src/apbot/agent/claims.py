@@ -25,7 +25,7 @@ def starts_appliance(name: str) -> bool:
     return any(word in name for word in RUN_STATES)
 
 
-def locks_panel(name: str) -> bool:
+def is_lock_setting(name: str) -> bool:
     """A goal setting that locks the panel (a child lock): the belief may lack its guard."""
     return "lock" in name.split("_")
 
@@ -110,7 +110,7 @@ class Claims(Checks):
     def _glance(self, names: set[str]) -> bool:
         """Look at a goal setting the display may not have confirmed (:func:`glance`)."""
         return glance(
-            self.session, {n for n in names if not (starts_appliance(n) or locks_panel(n))}
+            self.session, {n for n in names if not (starts_appliance(n) or is_lock_setting(n))}
         )
 
     def _guarding_the_goal(self) -> bool:

@@ -17,7 +17,7 @@ from __future__ import annotations
 from typing import Any
 
 from apbot.agent.budget import Budget
-from apbot.agent.claims import Claims, locks_panel, starts_appliance
+from apbot.agent.claims import Claims, is_lock_setting, starts_appliance
 from apbot.agent.discovery import VariableFinder
 from apbot.agent.displays import DisplayLearner
 from apbot.agent.environment import Environment
@@ -155,10 +155,10 @@ class ClosedLoop(Claims):
                     return  # looked at the display (or settled what it showed): plan again
             self.pending = list(found.macro_actions)
             self.session.episode.log("plan", " → ".join(m.feature for m in found.macro_actions))
-        if any(starts_appliance(n) or locks_panel(n) for n in self.pending[0].expect):
+        if any(starts_appliance(n) or is_lock_setting(n) for n in self.pending[0].expect):
             # once it runs (or the lock is on), most keys are locked out: see what is
             # unconfirmed first
-            settings = {n for n in inside if not (starts_appliance(n) or locks_panel(n))}
+            settings = {n for n in inside if not (starts_appliance(n) or is_lock_setting(n))}
             unseen = self.session.unconfirmed(settings)
             if (unseen and self._look(unseen)) or (not unseen and self._glance(settings)):
                 self.pending.clear()

@@ -14,9 +14,9 @@ nothing (A1 → CLASSIC) are :mod:`apbot.read.codes`' job.
 from __future__ import annotations
 
 import re
-from typing import Any
 
 from apbot.read.build import Builder
+from apbot.read.codes import rename_codes
 from apbot.read.off_words import lines_outside_asides, unit_at
 
 # a display code: one or two letters, or such groups joined by "+" ("W+B"); not three ("ECO",
@@ -43,7 +43,7 @@ def name_code_words(b: Builder) -> None:
         if not found:
             continue
         names, line = found
-        _rename(b, var, spec, names)
+        rename_codes(b, var, spec, names)
         b.note(
             f"variables.{var}.values",
             "codes spelt out by the manual: " + ", ".join(f"{c} {n}" for c, n in names.items()),
@@ -112,15 +112,3 @@ def _definition_words(lines: list[str], codes: list[str]) -> tuple[dict[str, str
     if len(names) == len(codes) and len(set(names.values())) == len(codes):
         return names, first
     return None
-
-
-def _rename(b: Builder, var: str, spec: dict[str, Any], names: dict[str, str]) -> None:
-    """Values become the words; the display shows each one's code as the manual prints it;
-    per-value settings depending on this one are keyed by the words too."""
-    spec["values"] = [names[str(v)] for v in spec["values"]]
-    if spec.get("initial") is not None:
-        spec["initial"] = names.get(str(spec["initial"]), spec["initial"])
-    spec["show"] = {n: c.upper() for c, n in names.items()}
-    for child in b.variables.values():
-        if child.get("depends_on") == var and "cases" in child:
-            child["cases"] = {names.get(str(k), k): c for k, c in child["cases"].items()}

@@ -36,10 +36,7 @@ def name_codes(b: Builder) -> None:
         found = _chart_names(b, values, headed=not all(_CODE.fullmatch(v) for v in values))
         if found:
             names, row = found
-            _rename(spec, names)
-            for child in b.variables.values():  # per-programme settings, keyed by the names
-                if child.get("depends_on") == var and "cases" in child:
-                    child["cases"] = {names.get(str(k), k): c for k, c in child["cases"].items()}
+            rename_codes(b, var, spec, names)
             at = b.manual.units.index(row)
             b.note(
                 f"variables.{var}.values",
@@ -71,9 +68,13 @@ def _chart_names(
     return None
 
 
-def _rename(spec: dict[str, Any], names: dict[str, str]) -> None:
-    """Values become names; the display shows each one's code as the manual prints it."""
+def rename_codes(b: Builder, var: str, spec: dict[str, Any], names: dict[str, str]) -> None:
+    """Values become names; the display shows each one's code as the manual prints it;
+    settings that depend on this one (per programme) are keyed by the names too."""
     spec["values"] = [names[str(v)] for v in spec["values"]]
     if spec.get("initial") is not None:
         spec["initial"] = names.get(str(spec["initial"]), spec["initial"])
     spec["show"] = {n: c.upper() for c, n in names.items()}
+    for child in b.variables.values():
+        if child.get("depends_on") == var and "cases" in child:
+            child["cases"] = {names.get(str(k), k): c for k, c in child["cases"].items()}

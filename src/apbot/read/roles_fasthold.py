@@ -13,17 +13,12 @@ from __future__ import annotations
 import re
 from typing import Any
 
+from apbot.model.values import NUMBER_WORDS
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 
 _NUMBER_WORDS = {
-    "two": 2,
-    "three": 3,
-    "four": 4,
-    "five": 5,
-    "six": 6,
-    "ten": 10,
-    "twenty": 20,
+    w: NUMBER_WORDS[w] for w in ("two", "three", "four", "five", "six", "ten", "twenty")
 }
 _N = r"(\d+|" + "|".join(_NUMBER_WORDS) + r")"
 # "ten steps at once", "moves 5 values", "in steps of 10", "10 steps"

@@ -84,7 +84,7 @@ def _own_rows(b: Builder, key: ActionInfo, other: ActionInfo) -> set[tuple[str, 
     return said
 
 
-_VERB = r"(raise|lower|increase|decrease|reduce|extend|shorten|lengthen)s?"
+_VERB = "(" + "|".join(sorted(v for v in UP_VERBS | DOWN_VERBS if not v.endswith("s"))) + ")s?"
 _SLASHED_RE = re.compile(rf"\b{_VERB}\s*/\s*{_VERB}\s+(?=(?:the|its|your)\b)", re.IGNORECASE)
 
 
