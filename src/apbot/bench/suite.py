@@ -98,6 +98,12 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "stand_mixer": 4,
     "digital_shower": 3,
     "sterilising_cabinet": 4,
+    # The eighth blind set (helper blind11n, 5 December): blind for this round's work.
+    "bidet_seat": 3,
+    "ultrasonic_cleaner": 4,
+    "egg_incubator": 3,
+    "vacuum_sealer": 3,
+    "cat_litter_box": 3,
 }
 
 
