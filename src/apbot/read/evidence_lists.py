@@ -220,7 +220,7 @@ class ListReader(TableReader):
                 break
         if run:
             out.append((run, 2.2 if mention else 1.2))
-        if text.rstrip().endswith(":") and i + 1 < len(units) and not units[i + 1].cells:
+        if text.rstrip().endswith(":") and i + 1 < len(units) and _lone_line(units, i + 1):
             after = bare_list(units[i + 1].text)  # "Printed round the knob:" then the marks
             # a long line is a list only when it is all short names ("OFF · Cottons · Eco …")
             if after and (len(units[i + 1].text) <= 120 or _all_names(after, units[i + 1].text)):
@@ -390,3 +390,11 @@ class ListReader(TableReader):
                     if re.search(rf"\b{re.escape(v)}\b", m.group(1), re.I):
                         ev.initial, ev.initial_at = v, i
                         return
+
+
+def _lone_line(units: list[Unit], k: int) -> bool:
+    """Unit ``k`` stands alone: no table, or a table of that one row ("The marks round the
+    knob:" then "WARM | BAKE | BROIL | TOAST"), which is a row of names, not a header."""
+    if not units[k].cells:
+        return True
+    return not units[k].header and (k + 1 == len(units) or units[k + 1].header != units[k].cells)

@@ -11,6 +11,7 @@ from apbot.read.build import Builder
 from apbot.read.labels import words
 from apbot.read.roles_common import clock_list, numeric_list, stepped_noun, token_of
 from apbot.read.shapes import Evidence, _fits, _next_table_column
+from apbot.read.text import Unit
 from apbot.read.values import find_ranges, find_step
 
 LIST_WORDS = {"left", "right", "prev", "previous", "next", "forward"}
@@ -238,10 +239,10 @@ def dial_ends(b: Builder, token: str, var: str) -> None:
         and _IT_RE.match(units[i + 1].text)
         and _KNOB_TALK_RE.search(units[i + 1].text)
     ]
-    near = b.context([token]) + sorted(named)
     own = set(b.labels[token].mentions if token in b.labels else []) | set(named)
     names = [lab.text for t, lab in b.labels.items() if t != token and lab.line is not None]
     others = {i for t, lab in b.labels.items() if t != token for i in lab.mentions}
+    near = b.context([token]) + sorted(named) + _paragraph(units, own, others)
     for i in dict.fromkeys(near):
         text = units[i].text
         if i in others and i not in own:
@@ -260,6 +261,18 @@ def dial_ends(b: Builder, token: str, var: str) -> None:
             b.variables[var]["wrap"] = False
             b.note(f"variables.{var}.wrap", "the knob stops at its ends", i)
             return
+
+
+def _paragraph(units: list[Unit], own: set[int], others: set[int]) -> list[int]:
+    """The units after each place the knob is named, up to the next control's name, in the same
+    section (its marks drawn in a row, then "The knob has a stop at each end.")."""
+    out: list[int] = []
+    for i in sorted(own):
+        for k in range(i + 1, min(i + 6, len(units))):
+            if k in others or k in own or units[k].heading != units[i].heading:
+                break
+            out.append(k)
+    return out
 
 
 AMOUNT_NOUNS = ("temperature", "heat", "power", "speed", "volume", "level", "strength")

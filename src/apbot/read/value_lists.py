@@ -299,12 +299,29 @@ def bare_list(text: str) -> list[str] | None:
         _clean_item(p)
         for p in re.split(r"\s*[·•|,]\s*|\s*/\s*|\s{2,}|\s+or\s+|\s*[→>]\s*", text.strip())
     ]
-    items = [i for i in items if i]
+    items = _uncounted([i for i in items if i])
     if len(items) < 3 or len(items) > 16:
         return None
     if all(len(i) <= 20 and len(i.split()) <= 3 and not i.endswith(":") for i in items):
         return _dedupe(items)
     return None
+
+
+_COUNTED_ITEM_RE = re.compile(r"(.*?\D)\s+(\d{1,2})")
+
+
+def _uncounted(items: list[str]) -> list[str]:
+    """Names each followed by how many presses or clicks reach it, counting up from 0 or 1
+    ("AUTO 0 | STER+DRY 1 | STER 2", "WARM 0 · BAKE 1 · CONV BAKE 2"): the names alone. The
+    counts must run on one by one, so "P 1 · P 2" style codes are left as they are."""
+    found = [_COUNTED_ITEM_RE.fullmatch(i) for i in items]
+    if len(items) < 3 or not all(found):
+        return items
+    counts = [int(m.group(2)) for m in found if m]
+    if counts[0] not in (0, 1) or counts != list(range(counts[0], counts[0] + len(counts))):
+        return items
+    names = [m.group(1).strip() for m in found if m]
+    return names if len({n.lower() for n in names}) == len(names) else items
 
 
 def cell_list(text: str) -> list[str] | None:
