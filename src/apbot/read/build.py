@@ -101,6 +101,9 @@ _DISPLAY_RE = re.compile(
 """A section that explains what the panel shows."""
 
 
+PLACEHOLDERS = "placeholders: the manual lists no choices"  # (the note on such a selector)
+
+
 class Builder(EvidenceReader):
     """Collects variables, features, guards and notes; ``data()`` gives the model as plain data."""
 
@@ -261,7 +264,7 @@ class Builder(EvidenceReader):
             # a programme/mode selector the manual lists no values for: a few placeholder
             # choices the loop replaces with what the display shows (a number would stop it)
             var = self.add_discrete(name, ["1", "2", "3", "4", "5"], label, None)
-            self.note(f"variables.{var}.values", "placeholders: the manual lists no choices")
+            self.note(f"variables.{var}.values", PLACEHOLDERS)
             return var
         name = self.unique(name, self.variables)
         subject = f"variables.{name}"

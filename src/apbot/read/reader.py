@@ -16,7 +16,7 @@ from pydantic import ValidationError
 from apbot.model.schema import ApplianceModel
 from apbot.model.validate import check_model
 from apbot.read.actions import ActionInfo, parse_actions
-from apbot.read.build import Builder
+from apbot.read.build import PLACEHOLDERS, Builder
 from apbot.read.cases import apply_cases
 from apbot.read.cases_chosen import chosen_cases
 from apbot.read.cases_resets import apply_resets
@@ -148,6 +148,9 @@ def _actions(b: Builder) -> dict[str, dict[str, Any]]:
 def _main_variable(b: Builder) -> str | None:
     """What the display most likely shows when idle: the programme, else the first amount."""
     fixed = {v for g in b.guards for v in g["when"]} | {"running"}
+    # (nor a selector whose choices are placeholders: the manual never says it is shown, and a
+    # lit screen predicted to show one would read as the power still off)
+    fixed |= {n.subject.split(".")[1] for n in b.notes if n.what == PLACEHOLDERS}
     names = [n for n in b.variables if n not in fixed and not b.variables[n].get("depends_on")]
     for name in names:
         spec = b.variables[name]
