@@ -129,7 +129,7 @@ _ASIDE_RE = re.compile(  # "1 (barely warm)": words in brackets, no number and n
 # list ("10, 15, 20 … 60", "0:35, 0:40 … 2:55") it stands for the items left out
 _ELLIPSIS_SPAN_RE = re.compile(
     rf"(?<![\d:.])(\d+(?:[.,]\d+)?(?:\s*{UNIT})?)\s+(?:…|\.{{3}})\s+"
-    rf"(?=\d+(?:[.,]\d+)?(?:\s*{UNIT})?(?![\d:,]|\s*,))",
+    rf"(?=\d+(?:[.,]\d+)?(?:\s*{UNIT})?(?!\d|[.,]\d|\s*,))",
     re.IGNORECASE,
 )
 
@@ -152,11 +152,19 @@ def _same_kind(a: str, b: str) -> bool:
     return a == b or (is_time_unit(a) and is_time_unit(b)) or rescale(1, a, b) is not None
 
 
+# "repeat steps 2 to 4", "(steps 1–5 above)": the manual's own numbered steps, no values
+_STEP_REFS_RE = re.compile(  # (not "in steps 1 to 9 minutes": a unit follows)
+    r"\bsteps\s+\d+\s*(?:to|through|[-–])\s*\d+(?!\d|[.,]\d|\s*(?:%|°|min|h\b|s\b|sec|hours?\b|minutes?\b|seconds?\b))",
+    re.IGNORECASE,
+)
+
+
 def find_ranges(text: str) -> list[Range]:
     """Ranges written in the text (times h:mm in seconds with unit ``s``); a word or two in
     brackets after a number is an aside ("from 1 (barely warm) to 10 (full power)")."""
     if worked_example(text):
         return []
+    text = _STEP_REFS_RE.sub("steps", text)
     text = _ELLIPSIS_SPAN_RE.sub(_spanned, text)
     out = _ranges(text)
     out += [  # a list's unit is a unit, not the word after it ("pages 2, 4, 6 and 8 show …")
