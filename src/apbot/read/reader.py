@@ -31,6 +31,7 @@ from apbot.read.range_codes import read_range_codes
 from apbot.read.report import Note, Report
 from apbot.read.roles import assign
 from apbot.read.shapes import CHOICE_WORDS
+from apbot.read.shown_bars import read_bar_shows
 from apbot.read.text import parse_manual
 
 MAX_REPAIRS = 40
@@ -67,6 +68,7 @@ def read_manual(
     read_held_off_words(builder)
     read_range_codes(builder)
     read_initials(builder)
+    read_bar_shows(builder)
     apply_resets(builder)
     data = _assemble(builder, appliance_id, category)
     data["actions"].update({a: {"skill": "wait", "seconds": w} for a, w in waits.items()})

@@ -75,6 +75,7 @@ class Manual:
 
     units: list[Unit]
     lines: list[str] = field(default_factory=list)
+    glyph_lines: list[str] = field(default_factory=list)  # the lines before glyphs are dropped
 
     def quote(self, line: int) -> str:
         if 1 <= line <= len(self.lines):
@@ -155,6 +156,7 @@ def parse_manual(text: str) -> Manual:
         )
     text = text.replace("\r\n", "\n").replace("\r", "\n").replace("\f", "\n\f\n")
     text = name_icons(unbox(text), _KEEP)  # "touch ❄" → "touch COLDER" when a legend names it
+    glyphs = text.split("\n")  # (a level shown as segments, "▮▮▯", is read from these)
     text = _clean_chars(re.sub(r" ?❄ ?", " ❄ ", text))  # one space each side, not two
     lines = text.split("\n")
     contents = contents_lines(lines)  # a table of contents: titles, not text about the keys
@@ -286,7 +288,7 @@ def parse_manual(text: str) -> Manual:
         para.append((number, stripped))
     flush()
     units = drop_boilerplate(units, original)
-    return Manual(units, original)
+    return Manual(units, original, glyphs)
 
 
 _LEADER_RE = re.compile(r"(?<=\S)[ \t]*(?:\.[ \t]?){4,}[ \t]*(?=\S)")

@@ -1,0 +1,97 @@
+"""Settings the display shows as a bar of segments, read from the manual's legend.
+
+Small displays often show a level as a row of filled and empty segments rather than a word:
+"▮▯▯ soft   ▮▮▯ medium   ▮▮▮ hard", "▮▯▯▯▯ 20 %  ▮▮▯▯▯ 40 % …". The text cleaner drops such
+glyphs from the units, so the setting's values are read but not how they look; the loop then
+sees a display it cannot read and keeps pressing. This rule reads the raw lines: a run of two
+or more segment glyphs followed by one of a discrete setting's values (the setting's own name
+may stand between: "▮▯▯  flow LOW") pairs that value with the bar. Two or more values so
+paired, each with its own bar and all bars of one length, become what the display shows; a
+numeric setting of a few stepped levels (20–100 % by 20) does so when every level has its bar.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+from apbot.read.build import Builder
+from apbot.read.labels import words
+from apbot.read.report import Note
+
+_GLYPHS = "▮▯■□▰▱█░"
+_BAR_RE = re.compile(rf"(?<![{_GLYPHS}])[{_GLYPHS}]{{2,}}(?![{_GLYPHS}])")
+_AFTER_RE = re.compile(r"[^\S\n]*([A-Za-z0-9][\w+/-]*(?:[^\S\n][A-Za-z0-9][\w+/-]*){0,3})")
+
+
+def read_bar_shows(b: Builder) -> None:
+    """Give each setting whose values the manual prints beside bars those bars (a numeric one
+    of a few stepped levels, every level with its bar, becomes the list of its levels)."""
+    lines = b.manual.glyph_lines
+    for var, spec in b.variables.items():
+        values = [str(v) for v in spec.get("values") or []] or _levels(spec)
+        if spec.get("type") not in ("discrete", "numeric") or len(values) < 2 or spec.get("show"):
+            continue
+        if {v.lower() for v in values} <= {"on", "off"}:
+            continue
+        bars, at = _paired(lines, var, values)
+        if len(bars) < 2 or len({len(s) for s in bars.values()}) != 1:
+            continue
+        if len(set(bars.values())) != len(bars):
+            continue
+        if spec["type"] == "numeric":  # "▮▯▯▯▯ 20 %  ▮▮▯▯▯ 40 % …": a few levels, each a bar
+            if len(bars) < len(values):
+                continue
+            _as_levels(spec, values)
+        spec["show"] = {v: bars[v] for v in values if v in bars}
+        shown = ", ".join(f"{v} {s}" for v, s in spec["show"].items())
+        quote = lines[at - 1].strip()[:160]
+        b.notes.append(Note(f"variables.{var}.show", f"shown as bars: {shown}", at, quote))
+
+
+def _paired(lines: list[str], var: str, values: list[str]) -> tuple[dict[str, str], int]:
+    """Each value the lines print right after a bar, with that bar (a value printed after two
+    different bars is dropped), and the line of the first pairing."""
+    own = set(words(var.replace("_", " ")))
+    by_words = {tuple(words(v)): v for v in values}
+    found: dict[str, set[str]] = {}
+    first = 0
+    for n, line in enumerate(lines, start=1):
+        for m in _BAR_RE.finditer(line):
+            after = _AFTER_RE.match(line, m.end())
+            if after is None:
+                continue
+            ws = words(after.group(1))
+            if ws and ws[0] in own:
+                ws = ws[1:]  # "▮▯▯  flow LOW": the setting's own name, then the value
+            value = next(
+                (by_words[tuple(ws[:k])] for k in (3, 2, 1) if tuple(ws[:k]) in by_words), None
+            )
+            if value is not None:
+                found.setdefault(value, set()).add(m.group(0))
+                first = first or n
+    return {v: next(iter(s)) for v, s in found.items() if len(s) == 1}, first
+
+
+def _levels(spec: dict[str, Any]) -> list[str]:
+    """A numeric setting's few values, when it has one stepped range (20–100 % by 20)."""
+    ranges = spec.get("ranges") or []
+    if spec.get("type") != "numeric" or len(ranges) != 1 or spec.get("cases"):
+        return []
+    low, high, step = ranges[0]
+    if not step or step <= 0 or (high - low) / step > 12:
+        return []
+    count = round((high - low) / step)
+    return [f"{low + k * step:g}" for k in range(count + 1)]
+
+
+def _as_levels(spec: dict[str, Any], values: list[str]) -> None:
+    """The numeric setting becomes the list of its levels (what a bar can show)."""
+    for key in ("ranges", "unit", "format"):
+        spec.pop(key, None)
+    spec["type"] = "discrete"
+    spec["values"] = values
+    if "initial" in spec:
+        spec["initial"] = (
+            f"{spec['initial']:g}" if isinstance(spec["initial"], float | int) else spec["initial"]
+        )
