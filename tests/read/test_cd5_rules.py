@@ -37,12 +37,6 @@ GRILL_ACTIONS = [
 ]
 
 
-def test_a_key_section_keeps_its_range_given_with_a_unit_sign() -> None:
-    core = read_manual(GRILL, GRILL_ACTIONS).model.variables["core"]
-    assert core.type == "numeric"
-    assert [tuple(r) for r in core.ranges] == [(110, 210, 5)]
-
-
 # a cooler whose second zone is set by repeating the numbered steps
 COOLER = """FROSTA DZ-2 drinks cooler
 
