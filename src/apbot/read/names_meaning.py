@@ -17,7 +17,7 @@ import re
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.labels import words
-from apbot.read.roles_holdcell import _hold_cells, _own_rows
+from apbot.read.roles_holdcell import _own_rows, hold_cells
 
 _SECONDS = r"(?:for\s+)?(?:about\s+|approx\.?\s+)?\d+(?:[.,]\d+)?\s*(?:s|sec|secs|seconds?)\b"
 # the verbs of opening or changing a setting, and the thing they act on
@@ -102,7 +102,7 @@ def _held_meaning(b: Builder, key: ActionInfo) -> str:
     for i in _rows(b, key):
         unit = units[i]
         if unit.cells:
-            texts += [c for c in _hold_cells(unit) if c.strip() not in ("", "-", "--")]
+            texts += [c for c in hold_cells(unit) if c.strip() not in ("", "-", "--")]
         else:
             texts += [unit.text] + [units[k].text for k in (i + 1,) if k < len(units)]
     for text in texts:

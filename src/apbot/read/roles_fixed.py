@@ -14,7 +14,7 @@ from apbot.read.roles_common import (
     label_of,
     mentions_of,
 )
-from apbot.read.roles_holdcell import held_lock
+from apbot.read.roles_holdcell import held_lock, held_toggle
 from apbot.read.roles_holds import held_named_switch, held_power, held_start
 from apbot.read.shapes import RUNNING_RE, STOP_WORDS
 from apbot.read.shown import LOCK_CUE, RUNNING_CUE, shown_words
@@ -250,7 +250,10 @@ def assign_running(
                 and info.name not in done | set(run_actions)
                 and info.token in {s.token for s in starts}
             ):
-                switched = held_named_switch(b, info)
+                switched: tuple[str, int | None] | None = held_named_switch(b, info)
+                noun = "" if switched else held_toggle(b, info)
+                if noun:  # "| START/STOP | start or stop | 3 sec: keep warm on / off |"
+                    switched = (noun.upper(), first_mention(b, [info.token]))
                 if switched:  # "press and hold START/STOP 3 s to switch AUTO OFF on": its own
                     var = b.add_toggle("_".join(words(switched[0])), switched[0], switched[1])
                     b.feature(var, [{"actions": [info.name], "variable": var, "effect": "toggle"}])

@@ -31,7 +31,7 @@ _CELL = re.compile(
 _HOLD_HEAD = re.compile(r"\bhold|\blong\b|\bkeep\s+(?:touching|pressing|pushing)\b", re.I)
 
 
-def _hold_cells(unit: Unit) -> list[str]:
+def hold_cells(unit: Unit) -> list[str]:
     """A row's cells under a header for holding ("Touch and hold", "Long press")."""
     return [
         cell for head, cell in zip(unit.header, unit.cells, strict=False) if _HOLD_HEAD.search(head)
@@ -69,7 +69,7 @@ def held_lock(b: Builder, key: ActionInfo) -> bool:
         re.search(r"\block\b", cell, re.I) and not _DOOR_LOCK.search(cell)
         for i in _own_rows(b, key)
         if units[i].cells
-        for cell in _hold_cells(units[i])
+        for cell in hold_cells(units[i])
     )
 
 
@@ -80,10 +80,10 @@ def held_toggle(b: Builder, key: ActionInfo) -> str:
     units = b.manual.units
     for i in _own_rows(b, key):
         unit = units[i]
-        candidates = _hold_cells(unit) if unit.cells else []
+        candidates = hold_cells(unit) if unit.cells else []
         if not unit.cells:  # the legend's next line, when it names no key of its own
             candidates += [units[k].text for k in (i + 1, i + 2) if k < len(units)]
-        cells = set(_hold_cells(unit)) if unit.cells else set()
+        cells = set(hold_cells(unit)) if unit.cells else set()
         for text in candidates:
             m = _HELD.match(text) or (_CELL.match(text) if text in cells else None)
             if m and not re.search(r"\b(?:lock|key|appliance)\b", m.group("noun"), re.I):

@@ -12,6 +12,8 @@ import re
 
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
+from apbot.read.evidence_whose import _lead
+from apbot.read.roles_holdcell import hold_cells
 from apbot.read.shapes import GROUP_NOUNS, SETTING_NOUNS
 from apbot.read.shown import LOCK_CUE
 
@@ -119,7 +121,8 @@ def _held_clauses(b: Builder, info: ActionInfo) -> list[tuple[int, str]]:
     for i in b.labels[info.controls[0]].mentions:
         unit = units[i]
         # the label as a whole word: a "P" key does not lead "Press P, then hold HEAT …"
-        own_row = bool(unit.cells) and bool(whole.search(unit.cells[0]))
+        # a numbered row counts too ("1 | ⏻ | -- | 3 s: switch on / off")
+        own_row = bool(unit.cells) and bool(whole.search(_lead(unit.cells)))
         own_line = not unit.cells and bool(whole.match(unit.text))  # "SELECT dial    Turn: …"
         said = [(i, unit.text)]
         if own_line:  # the legend's next lines, up to the next key's ("Press and hold 2 s: …")
@@ -131,9 +134,11 @@ def _held_clauses(b: Builder, info: ActionInfo) -> list[tuple[int, str]]:
                 ):
                     continue
                 said.append((k, units[k].text))
+        held = set(hold_cells(unit)) if own_row else set()  # under "Press and hold"
         for at, text in said:
             for clause in re.split(r"(?<=[.!?;])\s+|\s+\|\s+", text):
-                if ((own_row or own_line) and _HOLDING.search(clause)) or this.search(clause):
+                holding = bool(_HOLDING.search(clause)) or clause.strip() in held
+                if ((own_row or own_line) and holding) or this.search(clause):
                     out.append((at, clause))
     return out
 

@@ -24,7 +24,7 @@ NUM = (
 )
 UNIT = (
     r"(?:%|°\s?[CF]|°|degrees?|min(?:ute)?s?|h(?:ou)?rs?|hours?|h|sec(?:ond)?s?|s|rpm|W|watts?"
-    r"|kg|lbs?|oz|g|ml|L|litres?|cups?)"
+    r"|kg|lbs?|oz|g|ml|L|litres?|cups?|mm|cm|(?:milli|centi)met(?:re|er)s?)"
 )
 _TIME = r"\d{1,2}:\d{2}"
 _DASH = r"\s*(?:–|—|-|to|and|~|until)\s*"
@@ -45,7 +45,7 @@ STOPS_RE = re.compile(
 TIME_RANGE_RE = re.compile(rf"(?<![\d:])({_TIME}){_DASH}({_TIME})(?![\d:])")
 UPTO_RE = re.compile(rf"\bup to\s+({NUM})\s*({UNIT})(?!\w)", re.IGNORECASE)
 STEP_RE = re.compile(
-    rf"(?:in\s+({NUM})\s*-?\s*({UNIT})?\s*(?:steps|increments|stages|units)"
+    rf"(?:in\s+({NUM})\s*-?\s*({UNIT})?\s*(?:steps|increments|stages|units)(?!\s+of\b)"
     rf"|(?:steps?|increments?|units?)\s+of\s+({NUM})\s*({UNIT})?"
     rf"|(?:each|every)\s+(?:press|touch|turn|click|tap|step)[^.;]*?"
     rf"(?:adds?|by|changes?[^.;]*?by|raises?|moves?[^.;]*?by)\s+(?:an?\s+|another\s+)?({NUM})?\s*({UNIT})(?!\w))",
@@ -78,6 +78,8 @@ def unit_name(text: str | None) -> str:
     info = unit_of(low)
     if info and info[0] == "time":
         return {1: "s", 60: "min", 3600: "h"}[int(info[1])]
+    if info and info[0] == "length":  # "millimetres" is mm
+        return {1: "mm", 10: "cm"}[int(info[1])]
     return {"watt": "W", "watts": "W", "w": "W", "litre": "l", "litres": "l", "lbs": "lb"}.get(
         low, low
     )

@@ -1,0 +1,74 @@
+"""Lengths in millimetres, and a key table's column kept for holding: each rule on a small
+manual of our own words."""
+
+from __future__ import annotations
+
+from apbot.model.validate import check_model
+from apbot.model.values import parse_quantity
+from apbot.read import read_manual
+from apbot.read.values import find_ranges, find_step
+
+# a hedge trimmer: the blade gap set by a knob, in millimetres
+TRIMMER = """
+HedgePro HT-3 hedge trimmer
+
+BLADE GAP
+The blade gap is set with the GAP knob, from 10 mm to 30 mm in five steps of 5 mm.
+Turn clockwise for thicker branches.
+"""
+
+
+def test_a_range_in_millimetres_is_read_with_its_unit_and_step() -> None:
+    line = "from 10 mm to 30 mm in five steps of 5 mm"
+    (found,) = find_ranges(line)
+    assert (found.low, found.high, found.unit) == (10, 30, "mm")
+    assert find_step(line) == (5, "mm")  # "five steps" is a count, "of 5 mm" the step
+
+
+def test_a_knob_in_millimetres_becomes_a_numeric_setting_in_mm() -> None:
+    model = read_manual(TRIMMER, ["turn_gap_cw", "turn_gap_ccw"]).model
+    gap = model.variables["gap"]
+    assert gap.type == "numeric" and gap.unit == "mm"
+    assert [list(r) for r in gap.ranges] == [[10, 30, 5]]
+
+
+def test_lengths_are_quantities_in_millimetres() -> None:
+    assert parse_quantity("3 centimetres")[:2] == (30, "length")  # type: ignore[index]
+    assert parse_quantity("45 mm")[:2] == (45, "length")  # type: ignore[index]
+
+
+# a bread slicer whose key table is numbered and keeps a column for holding
+SLICER = """
+SliceMate BS-2 bread slicer
+
+  No.  Key         Press                         Press and hold
+  ---  ----------  ----------------------------  ---------------------------------
+  1    ⏻           --                            3 s: switch on / off
+  2    THICK       next slice thickness          --
+  3    START/STOP  start or stop slicing         3 sec: crumb tray on / off (TRAY)
+  4    LOCK        --                            3 s: key lock on / off
+
+THICK cycles THIN → MEDIUM → THICK → THIN.
+"""
+SLICER_ACTIONS = ["hold_power", "press_thick", "press_start", "hold_start", "hold_lock"]
+
+
+def _slicer():  # type: ignore[no-untyped-def]
+    model = read_manual(SLICER, SLICER_ACTIONS).model
+    assert not [p for p in check_model(model) if p.severity == "error"]
+    return model
+
+
+def test_a_numbered_row_whose_hold_column_switches_on_and_off_is_the_power() -> None:
+    model = _slicer()
+    power = [f for f in model.features.values() if f[0].variable == "power"]
+    assert power and power[0][0].actions == ["hold_power"]
+
+
+def test_holding_the_start_key_switches_what_its_hold_column_names() -> None:
+    model = _slicer()
+    tray = model.variables["crumb_tray"]
+    assert tray.values == ["off", "on"]
+    step = model.features["crumb_tray"][0]
+    assert step.actions == ["hold_start"] and step.effect == "toggle"
+    assert "cancel" not in model.features
