@@ -31,6 +31,7 @@ from apbot.read.roles_confirm import ends_entry
 from apbot.read.roles_digits import assign_direct_digits
 from apbot.read.roles_fasthold import fold_fast_holds
 from apbot.read.roles_fixed import assign_locks, assign_power, assign_running, standby_only
+from apbot.read.roles_functions import assign_functions, function_keys
 from apbot.read.roles_holdcell import held_toggle
 from apbot.read.roles_hourmin import assign_hour_minute, hour_minute_keys
 from apbot.read.roles_keyed import assign_keyed_amounts
@@ -104,12 +105,18 @@ def assign(b: Builder) -> None:
     keys = [i for i in infos if i.name not in done and not i.skill.startswith("turn")]
     adders = [k for k in keys if k.skill == "press" and ADD_RE.match(k.token)]
     keys = [k for k in keys if k not in adders]
-    selecting = selecting_keys(b, keys)
+    functions = function_keys(b, keys)
+    keyed_time: str | None = None
+    if functions:  # MICRO, GRILL, CONVECTION…: each starts its own procedure, then START
+        keyed_time = assign_functions(b, functions[0], functions[1], digits)
+        chosen = [p.key for p in functions[1]]
+        keys = [k for k in keys if k not in chosen]
+    selecting = [] if functions else selecting_keys(b, keys)
     if selecting:
         var = pad_group(b, selecting)
         keys = [k for k in keys if k not in selecting]
         shown_codes(b, var, selecting)
-    else:  # a chart with a column of keys ("Code | Pad | …")
+    elif not functions:  # a chart with a column of keys ("Code | Pad | …")
         selecting, codes = column_keys(b, keys)
         if selecting:
             var = pad_group(b, selecting)
@@ -239,7 +246,7 @@ def assign(b: Builder) -> None:
         pad_group(b, group)
         silent = [k for k in silent if k not in group]
     silent = assign_amounts(
-        b, entry_keys, silent, evidence, pairs, digits, dials, generic_dials, adders
+        b, entry_keys, silent, evidence, pairs, digits, dials, generic_dials, adders, keyed_time
     )
     silent = assign_dials(b, dials, silent)
     add_clock_steps(b, clocks)

@@ -45,10 +45,11 @@ def assign_amounts(
     dials: dict[str, list[ActionInfo]],
     generic_dials: list[str],
     adders: list[ActionInfo],
+    keyed_time: str | None = None,
 ) -> list[ActionInfo]:
     """Entry keys take the stepping pair, a generic dial or the keypad; then the steppers no key
     took, the keypad alone, add-time keys and named stepping pairs; returns the keys still
-    without a role."""
+    without a role. ``keyed_time``: the time function keys' procedures already type."""
     infos = b.infos
     shared_pair = pairs.get("")
     steppers: list[tuple[list[str], list[str]]] = []
@@ -65,7 +66,7 @@ def assign_amounts(
         entry_keys = entry_keys + [k for k in silent if k.skill == "press" and not ends_entry(b, k)]
         silent = [k for k in silent if k not in entry_keys]
     used_steppers: set[int] = set()
-    used_digits = keyed_cook = False
+    used_digits = keyed_cook = keyed_time is not None
     raised = None  # what the shared pair's legend says it raises and lowers ("heat level")
     if shared_pair and shared_pair["up"] and shared_pair["down"]:
         raised = raised_quantity(
@@ -229,8 +230,10 @@ def assign_amounts(
         amount = int(m.group(2)) if m else 30
         minutes = bool(m and m.group(3) and m.group(3).startswith("m"))
         seconds_ = amount * (60 if minutes else 1)
-        target = direct or next(
-            (v for v, spec in b.variables.items() if spec.get("type") == "time"), None
+        target = (
+            direct
+            or keyed_time
+            or next((v for v, spec in b.variables.items() if spec.get("type") == "time"), None)
         )
         if target is None:
             target = b.add_number("cook_time", "TIME", Evidence(ranges=[], step=(1, "s")), False)
