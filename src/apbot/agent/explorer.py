@@ -23,6 +23,7 @@ from apbot.agent.session import MISSING, Executed, Session
 from apbot.agent.time_styles import restyle_walk
 from apbot.agent.walk_learning import WalkLearning
 from apbot.agent.worded import as_choices, as_text, reads_all, worded_values
+from apbot.model.domain import ValueProblem, normalise
 from apbot.model.schema import Add, NumericVariable, Skip
 from apbot.plan.plan import PlannedAction
 
@@ -56,7 +57,9 @@ class Explorer(WalkLearning):
             forward, unseen = self.walk(name, key)
             final = key
         elif opposite is not None and forward[-1] == forward[-2]:  # an end: walk back
-            backward, unseen = self.walk(name, opposite)
+            # no further than the goal's value: the walk has found the step and one end, and
+            # what lies beyond the goal is not asked for
+            backward, unseen = self.walk(name, opposite, stop_at=self._goal_value(name))
             final = opposite
         self.session.episode.log(
             "explore",
@@ -200,10 +203,29 @@ class Explorer(WalkLearning):
         session.adopt(new, f"{name}: choices, some shown as words ({', '.join(words)})", None)
         return True
 
+    def _goal_value(self, name: str) -> Any:
+        """The goal's value for a numeric setting ``name`` in the belief's terms (MISSING: none,
+        or not one its domain has: a walk that stops there would learn a range around a
+        value the belief never expected). Times are left out: a walk of a time is also how
+        its display style (``m:ss`` or ``h:mm``) is told apart."""
+        raw = self.session.context.goal.get(name)
+        spec = self.session.belief.model.variables.get(name)
+        if raw is None or not isinstance(spec, NumericVariable):
+            return MISSING
+        raw = self.session.renamed.get(name, {}).get(str(raw), raw)
+        try:
+            return normalise(spec, raw)
+        except ValueProblem:
+            return MISSING
+
     def walk(
-        self, name: str, action: PlannedAction, history: list[Any] | None = None
+        self,
+        name: str,
+        action: PlannedAction,
+        history: list[Any] | None = None,
+        stop_at: Any = MISSING,
     ) -> tuple[list[Any], int]:
-        """Press ``action`` until the value of ``name`` shown repeats.
+        """Press ``action`` until the value of ``name`` shown repeats (or is ``stop_at``).
 
         ``history`` (values shown under the same key just before) opens the walk. A press after
         which the display shows nothing for ``name`` (an OFF position) is recorded as
@@ -230,7 +252,7 @@ class Explorer(WalkLearning):
                 continue
             dark = 0
             values.append(value)
-            if value in values[:-1]:
+            if value in values[:-1] or (stop_at is not MISSING and value == stop_at):
                 break
             unread = [v.text for v in values if isinstance(v, Unread)]
             if len(unread) >= 2 and self.displays.learn(name, unread):
