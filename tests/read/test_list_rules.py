@@ -353,30 +353,3 @@ def test_a_sentence_naming_another_keys_values_in_passing_keeps_this_keys_own_li
     actions = ["press_program", "press_pulp", "press_start"]
     model = read_manual(JUICER_STRENGTH, actions).model
     assert model.variables["pulp"].values == ["none", "some", "lots"]
-
-
-CABINET = """KEYS
-  POWER    switch on or off
-  MODE     next programme
-  DRY      select the drying time
-  STORE    show the storing hours
-  − / +    change the selected time
-
-PROGRAMMES
-Touch MODE to step through the programmes in this order:
-AUTO → DRY → STORE → QUICK → AUTO
-"""
-CABINET_ACTIONS = [
-    "press_power",
-    "press_mode",
-    "press_dry",
-    "press_store",
-    "press_minus",
-    "press_plus",
-]
-
-
-def test_an_arrow_list_that_comes_round_is_a_cycle_even_with_key_names_in_it() -> None:
-    model = read_manual(CABINET, CABINET_ACTIONS).model
-    mode = model.variables["mode"]
-    assert mode.values == ["auto", "dry", "store", "quick"]  # type: ignore[attr-defined]

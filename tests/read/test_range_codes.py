@@ -170,26 +170,3 @@ def test_a_code_shown_when_the_press_past_the_end_is_refused_is_no_value() -> No
             isinstance(v, DiscreteVariable) and {"ERR", "HI"} & set(v.values)
             for v in model.variables.values()
         ), sentence
-
-
-# a fan heater: ▲ / ▼ set the room temperature alone, and the timer after TIMER
-HEATER = """KEYS
-  POWER    switches the heater on or off
-  ▲ / ▼    raise or lower the room temperature
-  TIMER    sets the switch-off timer with ▲ / ▼
-
-TEMPERATURE
-The room temperature can be set from 10 to 30 °C in steps of 5 °C. Keep pressing ▼ past the
-lowest value until FP appears: the heater then only keeps the room frost-free.
-
-TIMER
-Press TIMER, then ▲ or ▼ to set 1 to 8 hours.
-"""
-HEATER_ACTIONS = ["press_power", "press_up", "press_down", "press_timer"]
-
-
-def test_a_code_past_the_pair_s_end_is_its_own_setting_s_not_the_one_after_a_key() -> None:
-    model = read_manual(HEATER, HEATER_ACTIONS).model
-    scales = {n: v.values for n, v in model.variables.items() if isinstance(v, DiscreteVariable)}
-    assert [v for v in scales.values() if v[:2] == ["FP", "10"] and v[-1] == "30"], scales
-    assert not [n for n, values in scales.items() if "FP" in values and "8" in values]

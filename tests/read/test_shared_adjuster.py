@@ -171,29 +171,3 @@ def test_the_second_zone_takes_the_programme_table_on_its_own_programme() -> Non
     assert len(temps) == 2, list(model.variables)
     parents = [getattr(model.variables[t], "depends_on", None) for t in temps]
     assert parents == ["prog1", "prog2"], parents
-
-
-# a juicer: − / + set the speed alone; TIMER opens the timer, which the same pair then sets
-JUICER = """KEYS
-  Key     Touch                                   Hold 3 s
-  ON      Switch on or off                        -
-  −       Slower (lower the speed)                -
-  +       Faster (raise the speed)                -
-  TIMER   Set the run time with − / +             Key lock on / off
-
-SPEED
-The speed can be set from 1 to 8 with + and −.
-
-TIMER
-Touch TIMER, then + or − to change the run time from 1 to 15 minutes.
-"""
-JUICER_ACTIONS = ["press_on", "press_minus", "press_plus", "press_timer", "hold_timer"]
-
-
-def test_a_key_whose_sentence_names_the_pair_sets_its_own_setting_with_it() -> None:
-    model = read_manual(JUICER, JUICER_ACTIONS).model
-    pair = ("press_plus", "press_minus")
-    assert [("press_timer",), pair] in _steps(model, "timer")
-    assert [pair] in _steps(model, "speed")  # alone the pair keeps its own setting
-    speed = model.variables["speed"]
-    assert tuple(speed.ranges[0][:2]) == (1, 8)  # type: ignore[attr-defined]

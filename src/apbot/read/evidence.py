@@ -58,7 +58,7 @@ from apbot.read.shapes import (
     is_wait,
 )
 from apbot.read.text_sections import other_model, surroundings
-from apbot.read.value_lists import comes_round, named_list
+from apbot.read.value_lists import named_list
 from apbot.read.values import (
     EACH_PRESS_RE,
     ON_OFF_RE,
@@ -165,8 +165,7 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
             theirs = bool(unit.cells) and _cell_key(_lead(unit.cells)) in other_keys
             lists = [] if quiet or theirs else self._lists(i, i in mentions, tokens)
             for items, prio in lists:
-                keyish = _keyish(items, others, own) and not comes_round(text, items)
-                if keyish or _foreign_units(items, tokens):
+                if _keyish(items, others, own) or _foreign_units(items, tokens):
                     continue  # a list of keys ("DELAY, then + / −"), not of values
                 if len(items) >= 3 and any(v.upper().strip(" .") in own for v in items):
                     continue  # "NORMAL → CONT. → FAN" near FAN: a list with a mode named FAN

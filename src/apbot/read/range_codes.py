@@ -51,19 +51,15 @@ def read_range_codes(b: Builder) -> None:
         if not match:
             continue
         keys = {a for a in _actions_said(b, unit.text)}
-        stepped = [
-            var
-            for var, spec in b.variables.items()
-            if spec.get("type") == "numeric"
-            and "cases" not in spec
-            and len(spec.get("ranges") or []) == 1
-            and keys & _actions_of(b, var)
-        ]
-        alone = [v for v in stepped if keys & _actions_of(b, v, alone=True)]
-        if alone and len(alone) < len(stepped):
-            stepped = alone  # "press ▼ past the lowest" is the pair's own setting, not TIMER's
-        for var in stepped:
-            spec = b.variables[var]
+        for var, spec in b.variables.items():
+            if (
+                spec.get("type") != "numeric"
+                or "cases" in spec
+                or len(spec.get("ranges") or []) != 1
+            ):
+                continue
+            if not keys & _actions_of(b, var):
+                continue
             values = _with_code(spec, match.group("end"), match.group("code"), var in b.unread)
             if values is None:
                 continue
@@ -87,14 +83,12 @@ def _actions_said(b: Builder, text: str) -> set[str]:
     return found
 
 
-def _actions_of(b: Builder, var: str, alone: bool = False) -> set[str]:
-    """The actions that step the setting (``alone``: with no other key's press first)."""
+def _actions_of(b: Builder, var: str) -> set[str]:
     return {
         a
         for steps in b.features.values()
-        for k, step in enumerate(steps)
+        for step in steps
         if step.get("variable") == var
-        and not (alone and any(s.get("variable") is None for s in steps[:k]))
         for a in step.get("actions") or []
     }
 

@@ -23,7 +23,7 @@ from apbot.read.roles_common import (
 from apbot.read.roles_confirm import ends_entry
 from apbot.read.roles_lists import dial_amount, dial_ends, dial_list, list_evidence
 from apbot.read.roles_numbered import numbered_entry
-from apbot.read.roles_raised import hands_pair, own_sentence, raised_quantity
+from apbot.read.roles_raised import own_sentence, raised_quantity
 from apbot.read.shapes import CHOICE_WORDS, Evidence
 
 # units that name what a pair sets by themselves (a range in °C is a temperature)
@@ -67,8 +67,6 @@ def assign_amounts(
     used_steppers: set[int] = set()
     used_digits = keyed_cook = False
     raised = None  # what the shared pair's legend says it raises and lowers ("heat level")
-    own_noun: str | None = None  # the pair's own setting, when entry keys step theirs apart
-    handed = False  # an entry key sets its own setting with the pair all the same
     if shared_pair and shared_pair["up"] and shared_pair["down"]:
         raised = raised_quantity(
             b, [token_of(b, n) for n in shared_pair["up"] + shared_pair["down"]]
@@ -94,13 +92,8 @@ def assign_amounts(
         if own_pair:
             steppers = steppers[1:] + steppers[:1]
             used_steppers = set()
-            own_noun = pair_noun
             for key in entry_keys:
                 own = evidence[key.name]
-                if key.skill == "press" and hands_pair(b, key.controls[0], pair_tokens):
-                    handed = True  # "TIMER  Set the timer with − / +": the pair, after the key
-                    _after_key(b, key, own, steppers[-1])
-                    continue
                 if own.values and len(own.values) >= 3 and numeric_list(own.values):
                     own = list_evidence(own)  # "1 h > 2 h > 3 h > 4 h > 6 h …": each one listed
                 var = b.add_number(var_name(b, key), label_of(b, key.controls[0]), own, True)
@@ -196,9 +189,6 @@ def assign_amounts(
                 and not (ev.ranges and ev.ranges[0].unit in _UNIT_NOUNS)
             ):
                 noun = raised[0]  # "Raise / lower the goal value": the pair's own quantity
-            if handed and own_noun and up == (shared_pair or {}).get("up"):
-                noun = own_noun  # (the ranges near the pair are the entry key's: not its own)
-                ev = Evidence(**{**ev.__dict__, **_untimed(ev)})
             var = b.add_number(noun, noun.upper(), ev, cyclic=False)
             if raised is not None and noun == raised[0]:
                 b.note(f"variables.{var}", "the quantity the pair raises and lowers", raised[1])
@@ -334,30 +324,6 @@ def assign_leftovers(b: Builder, silent: list[ActionInfo], evidence: dict[str, E
             f"features.{var}",
             f"{key.name} toggles a setting of its own (the manual says nothing clear)",
         )
-
-
-def _after_key(
-    b: Builder, key: ActionInfo, ev: Evidence, pair: tuple[list[str], list[str]]
-) -> None:
-    """The key, then the stepping pair, sets the key's own setting (not stepped by itself)."""
-    up, down = pair
-    if ev.values and len(ev.values) >= 3 and numeric_list(ev.values):
-        ev = list_evidence(ev)  # the settings listed one by one, not only the ends
-    var = b.add_number(var_name(b, key), label_of(b, key.controls[0]), ev, cyclic=False)
-    effect = {**{a: "next" for a in up}, **{a: "prev" for a in down}}
-    b.feature(
-        f"set_{var}",
-        [{"actions": [key.name]}, {"actions": up + down, "variable": var, "effect": effect}],
-    )
-    b.note(f"features.set_{var}", f"{key.name}, then the stepping keys its sentence names")
-
-
-def _untimed(ev: Evidence) -> dict[str, Any]:
-    """The ranges and step of the evidence that are no time (a pair's own setting, not the
-    timer a key hands it)."""
-    ranges = [r for r in ev.ranges if r.unit not in ("s", "min", "h")]
-    step = ev.step if ev.step and ev.step[1] not in ("s", "min", "h") else None
-    return {"ranges": ranges, "step": step, "longest": None}
 
 
 def _named_by(names: list[set[str]], nouns: list[str]) -> bool:

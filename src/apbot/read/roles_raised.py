@@ -136,17 +136,3 @@ def own_sentence(b: Builder, token: str, unit: int) -> str:
     lab = b.labels.get(token)
     start = _after_label(text, lab.text) if lab is not None else 0
     return text[start:].split(". ")[0]
-
-
-def hands_pair(b: Builder, token: str, pair: list[str]) -> bool:
-    """The key's own sentence names the stepping pair as the way to set what it opens ("TIMER
-    Set the timer with − / +", "DELAY, then + or −"): the pair sets that after the key, even
-    where it has a setting of its own when pressed alone (the speed, the heat level)."""
-    lab = b.labels.get(token)
-    signs = [b.labels[t].text for t in pair if t in b.labels and b.labels[t].text]
-    if lab is None or len(signs) < 2:
-        return False
-    a, c = (rf"(?<![\w+−–-]){re.escape(s)}(?![\w+−–-])" for s in signs[:2])
-    joined = rf"(?:{a}\s*(?:/|or|and|&)\s*{c}|{c}\s*(?:/|or|and|&)\s*{a})"
-    handed = re.compile(rf"\b(?:with|then|using|use|via)\s+(?:the\s+)?{joined}", re.I)
-    return any(handed.search(own_sentence(b, token, i)) for i in lab.mentions)

@@ -404,13 +404,3 @@ def _dedupe(items: list[str]) -> list[str]:
         if item.lower() not in (s.lower() for s in seen):
             seen.append(item)
     return seen
-
-
-def comes_round(text: str, items: list[str]) -> bool:
-    """An arrow list back at its start ("AUTO → STERI+DRY → STERI → DRY → STORE → AUTO"): the
-    cycle a key steps through, even where some values share their names with keys. A row of
-    keys pressed in turn never comes back to the first."""
-    if len(items) < 3:
-        return False
-    first, last = (re.escape(items[0]), re.escape(items[-1]))
-    return bool(re.search(rf"(?<!\w){last}\s*(?:→|->|⇒|»|⟶)\s*{first}(?!\w)", text))
