@@ -228,3 +228,24 @@ Breeze tower fan TF-8
 """
     model = read_manual(text, ["hold_f", "press_f", "press_swing", "press_timer"]).model
     assert model.features["power"][0].actions == ["hold_f"]
+
+
+# a food processor: rows counted by letters, a hold column headed with its seconds, and the
+# hold's on/off cell followed by the sign the display shows
+PROCESSOR = """KEYS
+
+  Item  Key     Short touch                       Touch and hold 3 seconds
+  ----  ------  --------------------------------  ---------------------------------
+  A     ON      Switch on / off                   -
+  B     BLADE   Next blade: CHOP → SLICE → GRATE → CHOP   Pulse mode on / off (PLS)
+  C     GO      Start or stop                     -
+"""
+PROCESSOR_ACTIONS = ["press_on", "press_blade", "hold_blade", "press_go"]
+
+
+def test_a_hold_column_s_on_off_is_the_hold_s_toggle_not_the_press_s() -> None:
+    model = read_manual(PROCESSOR, PROCESSOR_ACTIONS).model
+    blade = model.variables["blade"]
+    assert blade.values == ["chop", "slice", "grate"]  # type: ignore[attr-defined]
+    held = [f for f in model.features.values() if f[0].actions == ["hold_blade"]]
+    assert held and held[0][0].variable == "pulse", model.features

@@ -308,10 +308,15 @@ def _hold_cell(unit: Unit) -> bool:
     return bool(said) and all(
         # (a real column head is short: "Press and hold", "Long press"; a first row taken for
         # the head may say "kept as long as it is plugged in")
-        (re.search(r"\bhold|\blong\b", header[k], re.I) and len(header[k].split()) <= 4)
+        (re.search(r"\bhold|\blong\b", header[k], re.I) and len(_timeless(header[k])) <= 4)
         or re.match(r"\s*(?:hold\b|\d+(?:[.,]\d+)?\s*s(?:ec\w*)?\b)", unit.cells[k], re.I)
         for k in said
     )
+
+
+def _timeless(head: str) -> list[str]:
+    """A column head's words less how long to hold ("Touch and hold (3 s)", "… 3 seconds")."""
+    return re.sub(r"\(?\b\d+(?:[.,]\d+)?\s*(?:s|sec\w*)\b\)?", " ", head, flags=re.I).split()
 
 
 def _turned_after_keys(b: Builder, dial: str, keys: list[ActionInfo]) -> bool:

@@ -24,7 +24,7 @@ _HELD = re.compile(  # "Hold for 2 seconds: twin-needle mode on/off", "3 s: warm
 # a cell under a column kept for holding names the thing alone: "end signal on / off"
 _CELL = re.compile(
     rf"^\W*(?:{_SECONDS}\s*:\s*)?(?P<noun>[a-z][a-z -]{{2,30}}?)\s+(?:mode\s+)?"
-    r"(?:on\s*(?:/|or)\s*off|off\s*(?:/|or)\s*on)\W*$",
+    r"(?:on\s*(?:/|or)\s*off|off\s*(?:/|or)\s*on)\W*(?:\([^()]*\)\W*)?$",  # "(SOFT)": its sign
     re.IGNORECASE,
 )
 # a header for holding: "Touch and hold", "Long press", "Keep touching (printed below)"
@@ -50,6 +50,9 @@ def _own_rows(b: Builder, key: ActionInfo) -> list[int]:
     for i in b.labels[key.controls[0]].mentions:
         unit = b.manual.units[i]
         led = _lead(unit.cells).strip(" *").upper() if unit.cells else ""
+        lettered = len(unit.cells) >= 3 and re.fullmatch(r"[A-Z]", unit.cells[0].strip())
+        if lettered:  # "| C | PROG | Next programme | …": the rows counted by letters
+            led = unit.cells[1].strip(" *").upper()
         if unit.text.lstrip(" *|-•").upper().startswith(label) or led == label:
             rows.append(i)
     return rows
