@@ -55,6 +55,9 @@ def test_a_reference_to_numbered_steps_is_no_range() -> None:
     assert find_ranges("To set the other zone, touch ZONE and repeat steps 2 to 4.") == []
     assert find_ranges("Repeat steps 3–5 for the right drawer.") == []
     assert find_ranges("Set it in steps 1 to 9 minutes.") != []  # a unit: an amount
+    assert find_ranges("Choose the crust (steps 1–5 above).") == []
+    # levels said as steps, no reference to the manual's numbered steps: a range
+    assert [(r.low, r.high) for r in find_ranges("Set the heat in steps 1 to 9.")] == [(1, 9)]
     zone = read_manual(COOLER, COOLER_ACTIONS).model.variables["zone"]
     assert [2.0, 3.0] not in [list(r[:2]) for r in zone.ranges or []]
 
@@ -81,6 +84,26 @@ JUICER_ACTIONS = ["press_pulp", "press_light"]
 def test_a_setting_shown_as_bars_takes_the_bars() -> None:
     model = read_manual(JUICER, JUICER_ACTIONS).model
     assert model.variables["pulp"].show == {"low": "▮▯▯", "medium": "▮▮▯", "high": "▮▮▮"}
+
+
+# a dehumidifier whose fan speed is shown as bars, and whose dryness of the same three values
+# is shown in words
+DRYER = """AIRDRY D4 dehumidifier
+
+KEYS
+  FAN       fan speed: LOW → MEDIUM → HIGH → LOW
+  DRY       dryness: LOW → MEDIUM → HIGH → LOW (the display shows LOW, MEDIUM or HIGH)
+
+FAN SPEED
+The fan speed is shown as bars:
+  ▮▯▯ LOW    ▮▮▯ MEDIUM    ▮▮▮ HIGH
+"""
+
+
+def test_bars_go_to_the_setting_named_with_them() -> None:
+    model = read_manual(DRYER, ["press_fan", "press_dry"]).model
+    assert model.variables["fan"].show == {"low": "▮▯▯", "medium": "▮▮▯", "high": "▮▮▮"}
+    assert not model.variables["dry"].show
 
 
 def test_a_few_stepped_levels_shown_as_bars_become_their_list() -> None:

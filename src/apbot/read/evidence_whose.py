@@ -31,7 +31,7 @@ def _fitting_step(text: str, tokens: list[str]) -> tuple[float, str] | None:
     return None
 
 
-def _lead(cells: tuple[str, ...]) -> str:
+def lead_cell(cells: tuple[str, ...]) -> str:
     """A row's first cell that names something: a legend's circled or plain number ("④ |
     PUMP | Changes the speed: LO → MED → HI") only counts the rows."""
     for cell in cells[:2]:

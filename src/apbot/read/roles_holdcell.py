@@ -12,7 +12,7 @@ import re
 
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
-from apbot.read.evidence_whose import _lead
+from apbot.read.evidence_whose import lead_cell
 from apbot.read.text import Unit
 
 _SECONDS = r"(?:for\s+)?\d+(?:[.,]\d+)?\s*(?:s|sec|secs|seconds?)\b"
@@ -49,7 +49,7 @@ def _own_rows(b: Builder, key: ActionInfo) -> list[int]:
     rows = []
     for i in b.labels[key.controls[0]].mentions:
         unit = b.manual.units[i]
-        led = _lead(unit.cells).strip(" *").upper() if unit.cells else ""
+        led = lead_cell(unit.cells).strip(" *").upper() if unit.cells else ""
         lettered = len(unit.cells) >= 3 and re.fullmatch(r"[A-Z]", unit.cells[0].strip())
         if lettered:  # "| C | PROG | Next programme | …": the rows counted by letters
             led = unit.cells[1].strip(" *").upper()

@@ -12,7 +12,7 @@ import re
 
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
-from apbot.read.evidence_whose import _lead
+from apbot.read.evidence_whose import lead_cell
 from apbot.read.roles_holdcell import hold_cells
 from apbot.read.shapes import GROUP_NOUNS, SETTING_NOUNS
 from apbot.read.shown import LOCK_CUE
@@ -122,7 +122,7 @@ def _held_clauses(b: Builder, info: ActionInfo) -> list[tuple[int, str]]:
         unit = units[i]
         # the label as a whole word: a "P" key does not lead "Press P, then hold HEAT …"
         # a numbered row counts too ("1 | ⏻ | -- | 3 s: switch on / off")
-        own_row = bool(unit.cells) and bool(whole.search(_lead(unit.cells)))
+        own_row = bool(unit.cells) and bool(whole.search(lead_cell(unit.cells)))
         own_line = not unit.cells and bool(whole.match(unit.text))  # "SELECT dial    Turn: …"
         said = [(i, unit.text)]
         if own_line:  # the legend's next lines, up to the next key's ("Press and hold 2 s: …")

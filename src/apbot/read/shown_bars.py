@@ -8,6 +8,8 @@ or more segment glyphs followed by one of a discrete setting's values (the setti
 may stand between: "▮▯▯  flow LOW") pairs that value with the bar. Two or more values so
 paired, each with its own bar and all bars of one length, become what the display shows; a
 numeric setting of a few stepped levels (20–100 % by 20) does so when every level has its bar.
+When the same bars pair with several settings of the same values (a fan speed and a dryness,
+both LOW / MEDIUM / HIGH), only those named on the bar lines or just above them take them.
 """
 
 from __future__ import annotations
@@ -28,6 +30,7 @@ def read_bar_shows(b: Builder) -> None:
     """Give each setting whose values the manual prints beside bars those bars (a numeric one
     of a few stepped levels, every level with its bar, becomes the list of its levels)."""
     lines = b.manual.glyph_lines
+    found: dict[str, tuple[list[str], dict[str, str], int]] = {}
     for var, spec in b.variables.items():
         values = [str(v) for v in spec.get("values") or []] or _levels(spec)
         if spec.get("type") not in ("discrete", "numeric") or len(values) < 2 or spec.get("show"):
@@ -39,6 +42,12 @@ def read_bar_shows(b: Builder) -> None:
             continue
         if len(set(bars.values())) != len(bars):
             continue
+        found[var] = (values, bars, at)
+    for var, (values, bars, at) in found.items():
+        spec = b.variables[var]
+        alike = [v for v in found if found[v][1] == bars]
+        if len(alike) > 1 and not _named_near(lines, var, bars, at):
+            continue  # the bars of another setting of the same values
         if spec["type"] == "numeric":  # "▮▯▯▯▯ 20 %  ▮▮▯▯▯ 40 % …": a few levels, each a bar
             if len(bars) < len(values):
                 continue
@@ -71,6 +80,14 @@ def _paired(lines: list[str], var: str, values: list[str]) -> tuple[dict[str, st
                 found.setdefault(value, set()).add(m.group(0))
                 first = first or n
     return {v: next(iter(s)) for v, s in found.items() if len(s) == 1}, first
+
+
+def _named_near(lines: list[str], var: str, bars: dict[str, str], at: int) -> bool:
+    """The setting's own name is on a line of its bars or on one of the three lines above the
+    first ("The fan speed is shown as bars:")."""
+    own = set(words(var.replace("_", " ")))
+    near = lines[max(at - 4, 0) : at] + [ln for ln in lines if any(s in ln for s in bars.values())]
+    return any(own & set(words(ln)) for ln in near)
 
 
 def _levels(spec: dict[str, Any]) -> list[str]:

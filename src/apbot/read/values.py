@@ -154,9 +154,14 @@ def _same_kind(a: str, b: str) -> bool:
     return a == b or (is_time_unit(a) and is_time_unit(b)) or rescale(1, a, b) is not None
 
 
-# "repeat steps 2 to 4", "(steps 1–5 above)": the manual's own numbered steps, no values
-_STEP_REFS_RE = re.compile(  # (not "in steps 1 to 9 minutes": a unit follows)
-    r"\bsteps\s+\d+\s*(?:to|through|[-–])\s*\d+(?!\d|[.,]\d|\s*(?:%|°|min|h\b|s\b|sec|hours?\b|minutes?\b|seconds?\b))",
+# "repeat steps 2 to 4", "(steps 1–5 above)": the manual's own numbered steps, no values; a
+# reference is said as one ("repeat", "see", "as in", a bracket, "above"), since "set the heat
+# in steps 1 to 9" and "in steps 1 to 9 minutes" are levels
+_STEPS_SPAN = r"steps\s+\d+\s*(?:to|through|[-–])\s*\d+(?!\d|[.,]\d)"
+_STEP_REFS_RE = re.compile(
+    r"(?:(?<=\()|\b(?:repeat(?:ing)?|see|follow(?:ing)?|perform|complete|carry\s+out|redo"
+    rf"|(?:as|described|given|shown)\s+in)\s+){_STEPS_SPAN}(?!\s*{UNIT}(?!\w))"
+    rf"|\b{_STEPS_SPAN}(?=\s+(?:above|below|again|earlier)\b)",
     re.IGNORECASE,
 )
 
@@ -166,7 +171,7 @@ def find_ranges(text: str) -> list[Range]:
     brackets after a number is an aside ("from 1 (barely warm) to 10 (full power)")."""
     if worked_example(text):
         return []
-    text = _STEP_REFS_RE.sub("steps", text)
+    text = _STEP_REFS_RE.sub(lambda m: re.sub(r"(?i)steps.*", "steps", m.group(0)), text)
     text = _ELLIPSIS_SPAN_RE.sub(_spanned, text)
     out = _ranges(text)
     out += [  # a list's unit is a unit, not the word after it ("pages 2, 4, 6 and 8 show …")
