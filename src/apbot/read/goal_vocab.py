@@ -290,3 +290,8 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
 }
 # Counts written as adverbs ("rinse twice").
 TIMES_WORDS = {"once": 1, "twice": 2, "thrice": 3}
+
+SPAN_STARTS = frozenset({"on", "start", "begin", "sunrise", "dawn", "open", "wake", "morning"})
+"""A time-of-day setting's words that name when something begins (ON TIME, SUNRISE)."""
+SPAN_ENDS = frozenset({"off", "end", "stop", "sunset", "dusk", "close", "finish", "night"})
+"""… and when it ends (OFF TIME, SUNSET)."""
