@@ -319,12 +319,12 @@ def _clock_at(tokens: list[Token], i: int) -> Mention | None:
             return None
         following = _word(tokens, number.end)
         led = i == 0 or _word(tokens, i - 1) in _TIME_LEADS
-        part = None
+        said = None
         if led and number.value <= 12 and following != "at":  # "10 at night": below
-            part = _day_part_span(tokens, number.end)
-        if following not in _CLOCK_WORDS and part is not None:  # "at eight tonight"
-            hour = int(number.value) % 12 + (12 if part[0] == "pm" else 0)
-            return Mention("clock", hour * 3600, i, number.end + part[1], meridiem=True)
+            said = _day_part_span(tokens, number.end)
+        if following not in _CLOCK_WORDS and said is not None:  # "at eight tonight"
+            hour = int(number.value) % 12 + (12 if said[0] == "pm" else 0)
+            return Mention("clock", hour * 3600, i, number.end + said[1], meridiem=True)
         if following not in _CLOCK_WORDS:
             # "10 at night": a bare hour followed by the night, after a word that leads a time
             # ("drag 8 at night": a bare number after a setting's name is its value)
