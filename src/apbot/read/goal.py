@@ -58,6 +58,7 @@ from apbot.read.goal_switches import (
 )
 from apbot.read.goal_text import Text
 from apbot.read.goal_twins import place_twins
+from apbot.read.goal_unit_cases import unit_cases
 from apbot.read.goal_values import in_days
 from apbot.read.goal_view import Goal, Model, model_view
 from apbot.read.goal_vocab import STOP_WORDS, stem
@@ -110,6 +111,7 @@ def parse_instruction(
     pronoun_ones(text, claimed)
     fractions(view, text, goal, claimed, where)
     quantity_values(view, text, goal, claimed, where)
+    unit_cases(view, text, goal, claimed, where)
     days = any(in_days(info.var) for info in view.infos.values() if info.role == "setting")
     mentions = distinct(in_weeks(text, find_mentions(text.tokens, skip=claimed), days))
     mentions = time_spans(view, text, mentions, goal, claimed, where)
