@@ -287,6 +287,9 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "holiday": ("vacation", "away", "absence"),
     "fan": ("circulate", "ventilate"),  # the nouns name an AIR switch too (the group)
     "vacation": ("holiday", "away", "absence"),
+    "economy": ("eco", "economical", "saving"),
+    "repair": ("recovery", "recover", "recondition", "revive"),
+    "refresh": ("freshen", "refreshing"),
 }
 # Counts written as adverbs ("rinse twice").
 TIMES_WORDS = {"once": 1, "twice": 2, "thrice": 3}
