@@ -208,7 +208,7 @@ def _its_time_of_day(view: Model, info: VarInfo, text: Text, mention: Mention) -
         return mention.kind == "clock" and days == [info]
     if _said_now(text, mention):
         return False  # "it's 7:40 pm right now": the clock's time
-    if stem(text.word(mention.start - 2)) in _switch_stems(info) and mention.lead in ("at", "from"):
+    if _switched_then(view, info, text, mention):
         return True  # "the lights on at 7:30", "off at 10 pm", "starting at 6"
     return [i for i in days if i.timing != "clock"] == [info]  # beside a clock: "water at 7 pm"
 
@@ -220,9 +220,22 @@ def _scheduled_bonus(view: Model, info: VarInfo, text: Text, mention: Mention) -
         return 0.0
     if info.timing == "clock":
         return 0.5 if _said_now(text, mention) else 0.0
-    if info.timing == "at" and mention.lead in ("at", "from"):
-        return 0.5 if stem(text.word(mention.start - 2)) in _switch_stems(info) else 0.0
+    if info.timing == "at":
+        return 0.5 if _switched_then(view, info, text, mention) else 0.0
     return 0.0
+
+
+def _switched_then(view: Model, info: VarInfo, text: Text, mention: Mention) -> bool:
+    """The time follows the schedule's word and "at"/"from" ("the lamp on at 7", "starting at
+    6"), said of the appliance — not of another setting ("the soak on at 8 am")."""
+    if mention.lead not in ("at", "from"):
+        return False
+    if stem(text.word(mention.start - 2)) not in _switch_stems(info):
+        return False
+    thing = text.concepts[mention.start - 3] if mention.start >= 3 else ""
+    return not any(
+        other is not info and other.vocab.get(thing, 0.0) >= 0.8 for other in view.infos.values()
+    )
 
 
 def _switch_stems(info: VarInfo) -> set[str]:
