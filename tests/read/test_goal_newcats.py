@@ -217,6 +217,8 @@ def test_keep_it_with_a_word_of_the_switchs_warmth(soup: ApplianceModel) -> None
         ("Chunky soup, then set it running", "on"),
         ("Sauce, but leave it stopped until I'm back", "off"),
         ("Soup programme; keep it paused for now", "off"),
+        ("Sauce. Leave it off for now.", "off"),
+        ("Smooth soup - set it up but wait for me to start.", "off"),
     ],
 )
 def test_running_said_with_other_verbs(soup: ApplianceModel, text: str, running: str) -> None:

@@ -124,3 +124,23 @@ def test_british_and_named_clock_times() -> None:
     assert mentions("at midnight") == [("clock", 0)]
     assert mentions("bake for 2.5 hours") == [("duration", 9000)]
     assert mentions("a 1.75 oz bag")[0][0] == "quantity"
+
+
+def test_minutes_past_and_to_an_hour() -> None:
+    """A clock face's words: "twenty past one", "ten to eight"; "5 to 8" and "from five to
+    eight minutes" stay a range."""
+    assert mentions("it's twenty past one") == [("clock", 3600 + 20 * 60)]
+    assert mentions("at ten to eight") == [("clock", 7 * 3600 + 50 * 60)]
+    assert mentions("twenty-five past six in the evening") == [("clock", 18 * 3600 + 25 * 60)]
+    assert mentions("from five to eight minutes") == [("number", 5), ("duration", 480)]
+    assert mentions("ten to twelve minutes") == [("number", 10), ("duration", 720)]
+
+
+def test_a_dotted_time_with_its_half_of_the_day_and_a_bare_hour_with_a_day_part() -> None:
+    assert mentions("from 7 am to 9.30 pm") == [("clock", 7 * 3600), ("clock", 21 * 3600 + 1800)]
+    assert mentions("water at eight tonight") == [("clock", 20 * 3600)]
+    assert mentions("from 10 in the morning to 10 at night") == [
+        ("clock", 10 * 3600),
+        ("clock", 22 * 3600),
+    ]
+    assert mentions("cook 2.50 kg") == [("quantity", 2500)]

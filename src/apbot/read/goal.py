@@ -41,6 +41,7 @@ from apbot.read.goal_kinds import kind_numbers
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
 from apbot.read.goal_open import open_entries
 from apbot.read.goal_outside import kept_outside
+from apbot.read.goal_quantity_values import quantity_values
 from apbot.read.goal_remarks import without_remarks
 from apbot.read.goal_scales import superlatives
 from apbot.read.goal_spans import time_spans
@@ -57,6 +58,7 @@ from apbot.read.goal_switches import (
 )
 from apbot.read.goal_text import Text
 from apbot.read.goal_twins import place_twins
+from apbot.read.goal_unit_cases import unit_cases
 from apbot.read.goal_values import in_days
 from apbot.read.goal_view import Goal, Model, model_view
 from apbot.read.goal_vocab import STOP_WORDS, stem
@@ -108,6 +110,8 @@ def parse_instruction(
     restated_codes(view, text, goal, claimed)
     pronoun_ones(text, claimed)
     fractions(view, text, goal, claimed, where)
+    quantity_values(view, text, goal, claimed, where)
+    unit_cases(view, text, goal, claimed, where)
     days = any(in_days(info.var) for info in view.infos.values() if info.role == "setting")
     mentions = distinct(in_weeks(text, find_mentions(text.tokens, skip=claimed), days))
     mentions = time_spans(view, text, mentions, goal, claimed, where)

@@ -12,9 +12,9 @@ from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_fit import fit, number_for
 from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab, said_before
 from apbot.read.goal_unitless import unitless_named
-from apbot.read.goal_values import unit_text, zone_case
+from apbot.read.goal_values import name_words, unit_text, zone_case
 from apbot.read.goal_view import Goal, Model, VarInfo, domain_values, own_stems
-from apbot.read.goal_vocab import concept, stem
+from apbot.read.goal_vocab import SPAN_ENDS, SPAN_STARTS, concept, stem
 from apbot.read.numbers import Mention
 
 _WEEKS = {"week": 7, "weeks": 7, "wk": 7, "wks": 7, "fortnight": 14, "fortnights": 14}
@@ -118,6 +118,7 @@ def assign_mentions(
             if info.timing == "at" and not _its_time_of_day(view, info, text, mention):
                 continue
             score += _cue_bonus(info, text, mention) + (0.5 if by else 0.0)
+            score += _scheduled_bonus(view, info, text, mention)
             score += _after_its_case(info, text, mention, goal)
             options.append((score, -info.order, mi, name, value))
     options.sort(key=lambda o: (-o[0], -o[1]))
@@ -203,7 +204,51 @@ def _its_time_of_day(view: Model, info: VarInfo, text: Text, mention: Mention) -
     if near_vocab(info, text, mention.start, mention.end, reach=12):
         return True
     days = [i for i in view.infos.values() if i.timing in ("at", "clock", "finish")]
-    return mention.kind == "clock" and days == [info]
+    if mention.kind != "clock" or days == [info]:
+        return mention.kind == "clock" and days == [info]
+    if _said_now(text, mention):
+        return False  # "it's 7:40 pm right now": the clock's time
+    if _switched_then(view, info, text, mention):
+        return True  # "the lights on at 7:30", "off at 10 pm", "starting at 6"
+    return [i for i in days if i.timing != "clock"] == [info]  # beside a clock: "water at 7 pm"
+
+
+def _scheduled_bonus(view: Model, info: VarInfo, text: Text, mention: Mention) -> float:
+    """Beside a schedule (ON TIME, START TIME), the time it is now ("it's 7:40 pm") is the
+    clock's, and a time said after the schedule's word ("on at 7", "starting at 6") its own."""
+    if mention.kind != "clock" or not any(i.timing == "at" for i in view.infos.values()):
+        return 0.0
+    if info.timing == "clock":
+        return 0.5 if _said_now(text, mention) else 0.0
+    if info.timing == "at":
+        return 0.5 if _switched_then(view, info, text, mention) else 0.0
+    return 0.0
+
+
+def _switched_then(view: Model, info: VarInfo, text: Text, mention: Mention) -> bool:
+    """The time follows the schedule's word and "at"/"from" ("the lamp on at 7", "starting at
+    6"), said of the appliance — not of another setting ("the soak on at 8 am")."""
+    if mention.lead not in ("at", "from"):
+        return False
+    if stem(text.word(mention.start - 2)) not in _switch_stems(info):
+        return False
+    thing = text.concepts[mention.start - 3] if mention.start >= 3 else ""
+    return not any(
+        other is not info and other.vocab.get(thing, 0.0) >= 0.8 for other in view.infos.values()
+    )
+
+
+def _switch_stems(info: VarInfo) -> set[str]:
+    """The words ON TIME, OFF TIME, START TIME are named for, as stems."""
+    words = name_words(f"{info.name} {info.var.label or ''}".casefold())
+    return {stem(w) for w in words if w in SPAN_STARTS | SPAN_ENDS}
+
+
+def _said_now(text: Text, mention: Mention) -> bool:
+    """ "it's 6:05", "the time is 7:15", "7:40 right now": the time it is, not one to act at."""
+    before = text.word(mention.start - 1)
+    after = {text.word(mention.end + d) for d in range(3)}
+    return before in ("it's", "is", "its") or "now" in after
 
 
 def _clock_parts(view: Model, text: Text, mention: Mention, goal: Goal) -> bool:

@@ -8,10 +8,11 @@ from apbot.read.goal_fit import fit
 from apbot.read.goal_text import Text
 from apbot.read.goal_values import name_words
 from apbot.read.goal_view import Goal, Model, VarInfo
+from apbot.read.goal_vocab import SPAN_ENDS, SPAN_STARTS
 from apbot.read.numbers import Mention
 
-_STARTS = frozenset({"on", "start", "begin", "sunrise", "dawn", "open", "wake", "morning"})
-_ENDS = frozenset({"off", "end", "stop", "sunset", "dusk", "close", "finish", "night"})
+_STARTS = SPAN_STARTS
+_ENDS = SPAN_ENDS
 _FROM = frozenset({"from", "between"})
 _UNTIL = frozenset({"to", "until", "till", "til", "and", "-"})
 

@@ -317,6 +317,28 @@ def _held_back(text: Text, family: frozenset[str] | None = None) -> bool:
 _NOT_ASKED = frozenset({"can't", "cannot", "couldn't", "won't", "i'll", "i", "we'll", "we"})
 
 
+def _users_own(text: Text, k: int) -> bool:
+    """The user waits to start it themselves ("wait for me to start", "until we tell it to
+    start"): it is to be left unstarted. ("I'll start it myself" is said either way.)"""
+    for d in range(1, 4):
+        word = text.word(k - d)
+        if word in CLAUSE_ENDS or word == ",":
+            return False
+        if word == "to" and text.word(k - d - 1) in ("me", "us"):
+            return True
+    return False
+
+
+def _left_off_for_now(text: Text, k: int) -> bool:
+    """ "leave it off for now", "keep it off until I'm back": the appliance itself kept off."""
+    return (
+        text.word(k) == "off"
+        and text.word(k - 1) == "it"
+        and text.word(k - 2) in ("leave", "keep", "left", "kept")
+        and (text.word(k + 1), text.word(k + 2)) in (("for", "now"), ("until", "i"))
+    )
+
+
 def _someone_else(text: Text, k: int) -> bool:
     """The start is said of someone else or of what may not happen ("so the kids can't start
     it", "I'll start it myself"): not a request to start."""
@@ -401,12 +423,17 @@ def _says_start(
             text.word(k - d) in ("leave", "keep", "left", "kept", "stay") for d in (1, 2, 3)
         ):
             negative = True  # "leave it stopped for now", "keep it paused"
+        if _left_off_for_now(text, k):
+            negative = True  # "leave it off for now"
         if not starts:
             continue
         if _later(text, k):
             continue  # "start by itself in six hours": a timer, not now
+        if _users_own(text, k):
+            negative = True  # "wait for me to start": not now
+            continue
         if _someone_else(text, k):
-            continue  # "so the kids can't start it", "I'll start it myself"
+            continue  # "so the kids can't start it"
         if text.word(k - 1) in ("delayed", "delay", "timed", "auto"):
             continue  # "arm the delayed start": the timer's name
         before = []

@@ -46,6 +46,8 @@ from apbot.read.goal_values import (
 )
 from apbot.read.goal_vocab import (
     LETTER_WORDS,
+    SPAN_ENDS,
+    SPAN_STARTS,
     STOP_WORDS,
     SYNONYMS,
     concept,
@@ -169,7 +171,9 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
                 info.timing = "finish" if at else "delay"
     clocked = any(info.timing == "clock" for info in infos.values())
     for info in infos.values():
-        if clocked and info.timing == "duration" and _whole_day(info):
+        if clocked and info.timing == "duration" and _whole_day(info) and _switch_time(info):
+            info.timing = "at"  # beside the clock, ON TIME / START: when it switches
+        elif clocked and info.timing == "duration" and _whole_day(info):
             # beside the clock, a TIMER that wraps at 23:59 is a time of day: when it is done
             info.timing = "finish"
             info.vocab.setdefault(concept("finish"), 0.5)
@@ -260,6 +264,15 @@ def _whole_day(info: VarInfo) -> bool:
         return False
     first, last = magnitude(values[0]), magnitude(values[-1])
     return first == 0 and last is not None and last >= 23 * 3600
+
+
+_SWITCH_TIMES = (SPAN_STARTS | SPAN_ENDS) - {"end", "finish", "morning", "night"}
+
+
+def _switch_time(info: VarInfo) -> bool:
+    """A time of day named for when something starts or stops (ON TIME, OFF, START, SUNRISE):
+    a schedule the appliance keeps, not the time a started programme is done at."""
+    return bool(set(name_words(f"{info.name} {info.var.label or ''}".casefold())) & _SWITCH_TIMES)
 
 
 def _day_dial(info: VarInfo) -> bool:

@@ -287,6 +287,14 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "holiday": ("vacation", "away", "absence"),
     "fan": ("circulate", "ventilate"),  # the nouns name an AIR switch too (the group)
     "vacation": ("holiday", "away", "absence"),
+    "economy": ("eco", "economical", "saving"),
+    "repair": ("recovery", "recover", "recondition", "revive"),
+    "refresh": ("freshen", "refreshing"),
 }
 # Counts written as adverbs ("rinse twice").
 TIMES_WORDS = {"once": 1, "twice": 2, "thrice": 3}
+
+SPAN_STARTS = frozenset({"on", "start", "begin", "sunrise", "dawn", "open", "wake", "morning"})
+"""A time-of-day setting's words that name when something begins (ON TIME, SUNRISE)."""
+SPAN_ENDS = frozenset({"off", "end", "stop", "sunset", "dusk", "close", "finish", "night"})
+"""… and when it ends (OFF TIME, SUNSET)."""

@@ -281,11 +281,17 @@ def _clock_at(tokens: list[Token], i: int) -> Mention | None:
         return Mention("clock", 0 if w == "midnight" else 12 * 3600, i, i + 1, meridiem=True)
     dotted = (
         re.fullmatch(r"\d{1,2}\.\d{2}", w) is not None
-        and _word(tokens, i - 1) in ("at", "by", "until", "till")
+        and (
+            _word(tokens, i - 1) in ("at", "by", "until", "till")
+            or _word(tokens, i + 1) in ("am", "pm")
+        )
         and (_word(tokens, i + 1) in ("am", "pm", "") or _unit_at(tokens, i + 1) is None)
         and _time_unit(tokens, i + 1) is None
-    )  # "ready by 7.30" (a British clock time, not seven point three)
-    if re.fullmatch(r"\d{1,2}:\d{2}", w) or dotted:
+    )  # "ready by 7.30", "to 9.30 pm" (a British clock time, not seven point three)
+    minutes = _minutes_past(tokens, i)
+    if minutes is not None:
+        hour, minute, end = minutes
+    elif re.fullmatch(r"\d{1,2}:\d{2}", w) or dotted:
         hour, minute = (int(x) for x in w.replace(".", ":").split(":"))
         end = i + 1
         if minute >= 60 or hour > 24:
@@ -312,6 +318,13 @@ def _clock_at(tokens: list[Token], i: int) -> Mention | None:
         if number.words and _word(tokens, i) in ("a", "an", "single", "half", "quarter"):
             return None
         following = _word(tokens, number.end)
+        led = i == 0 or _word(tokens, i - 1) in _TIME_LEADS
+        said = None
+        if led and number.value <= 12 and following != "at":  # "10 at night": below
+            said = _day_part_span(tokens, number.end)
+        if following not in _CLOCK_WORDS and said is not None:  # "at eight tonight"
+            hour = int(number.value) % 12 + (12 if said[0] == "pm" else 0)
+            return Mention("clock", hour * 3600, i, number.end + said[1], meridiem=True)
         if following not in _CLOCK_WORDS:
             # "10 at night": a bare hour followed by the night, after a word that leads a time
             # ("drag 8 at night": a bare number after a setting's name is its value)
@@ -360,19 +373,52 @@ def _clock_at(tokens: list[Token], i: int) -> Mention | None:
     return Mention("clock", hour * 3600 + minute * 60, i, end, meridiem=meridiem, colon=colon)
 
 
+_PAST_MINUTES = frozenset({5, 10, 20, 25})
+"""Minutes said before "past"/"to" an hour ("twenty past one"); a quarter and a half are read
+on their own, and other counts before "to" are a range ("from 5 to 8")."""
+
+
+def _minutes_past(tokens: list[Token], i: int) -> tuple[int, int, int] | None:
+    """ "twenty past one", "ten to eight", "twenty-five past six": (hour, minute, end). Only
+    five, ten, twenty and twenty-five in words (a clock face's words), since "5 to 8" is a
+    range."""
+    number = read_number(tokens, i)
+    if number is None or not number.words or number.value not in _PAST_MINUTES:
+        return None
+    k = number.end + (_word(tokens, number.end) in ("minutes", "mins"))
+    past = _word(tokens, k)
+    if past not in ("past", "to") or _word(tokens, i - 1) in ("from", "between"):
+        return None
+    hour = read_number(tokens, k + 1)
+    if hour is None or hour.value != int(hour.value) or not 1 <= hour.value <= 12:
+        return None
+    if _word(tokens, hour.end) != "oclock" and _unit_at(tokens, hour.end) is not None:
+        return None  # "ten to twelve minutes"
+    if _time_unit(tokens, hour.end) is not None:
+        return None
+    minute = int(number.value)
+    if past == "past":
+        return int(hour.value), minute, hour.end
+    return (int(hour.value) - 1) % 24, 60 - minute, hour.end
+
+
 def _day_part(tokens: list[Token], k: int) -> str | None:
     """ "in the evening", "this afternoon", "tomorrow morning", "tonight" just after a time."""
+    part = _day_part_span(tokens, k)
+    return part[0] if part is not None else None
+
+
+def _day_part_span(tokens: list[Token], k: int) -> tuple[str, int] | None:
+    """The half of the day a day part names, and the words it takes."""
     words = [_word(tokens, k + d) for d in range(3)]
     for size in (1, 2, 3):
         tail = words[size - 1]
         lead = words[: size - 1]
         if all(x in ("in", "the", "this", "tomorrow", "tonight", "at") for x in lead):
             if tail in _DAY_PARTS_PM:
-                return "pm"
+                return "pm", size
             if tail in _DAY_PARTS_AM:
-                return "am"
-    if words[0] == "tonight":
-        return "pm"
+                return "am", size
     return None
 
 

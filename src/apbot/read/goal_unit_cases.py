@@ -1,0 +1,158 @@
+"""A setting kept in the unit a selector chooses (TEMPERATURE in °C or °F, HARDNESS in °dH,
+ppm or gpg): a number said with one of the selector's units ("110 °F", "100 degrees
+Fahrenheit", "18 grains per gallon") is the setting's value in that unit's case, and the
+selector goes to that unit — unless it already shows it (the unit the panel starts in is how
+the number was said, not a request). A unit written as initials is named by its words ("grains
+per gallon" for GPG)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from apbot.model.domain import build_domain
+from apbot.model.schema import DiscreteVariable, NumericVariable
+from apbot.read.goal_fit import fit
+from apbot.read.goal_text import Text
+from apbot.read.goal_values import phrase_words
+from apbot.read.goal_view import Goal, Model
+from apbot.read.numbers import Mention, read_number
+
+_DEGREES = frozenset({"degrees", "degree", "deg", "°"})
+_UNITS = frozenset(
+    {"celsius", "fahrenheit", "c", "f", "dh", "fh", "ppm", "gpg", "mmol", "kg", "lb", "lbs"}
+) | frozenset({"g", "oz", "ml", "l", "km", "mi", "miles", "kcal", "cal", "kj", "mph", "kmh"})
+"""Units a selector may offer for one quantity (a scale of temperature, of water hardness, of
+weight or distance): the values of a unit selector, never of a programme."""
+
+
+def unit_cases(
+    view: Model, text: Text, goal: Goal, claimed: set[int], where: dict[str, int]
+) -> None:
+    """Read "<number> <unit of the selector>" for each setting kept per unit."""
+    for name, info in view.infos.items():
+        var = info.var
+        selector = getattr(var, "depends_on", None)
+        if name in goal or not isinstance(var, NumericVariable) or not selector:
+            continue
+        chooser = view.infos.get(selector)
+        if chooser is None or not isinstance(chooser.var, DiscreteVariable):
+            continue
+        names = {u: _unit_names(chooser.var, u) for u in chooser.values}
+        if not all(names.values()) or not all(_a_unit(chooser.var, u) for u in chooser.values):
+            continue
+        for unit, said in names.items():
+            found = _said_with(text, claimed, said)
+            if found is None:
+                continue
+            number, end = found
+            trial = {**goal, selector: unit}
+            value = fit(view, info, Mention("number", number.value, number.start, end), trial)
+            if value is None:
+                continue
+            goal[name] = value
+            where[name] = number.start
+            claimed.update(range(number.start, end))
+            if unit == _starting(chooser.var):
+                if goal.get(selector) == unit and where.get(selector, -1) >= number.end:
+                    del goal[selector]  # "22 °dH" on a panel that shows °dH: no switch
+            else:
+                goal[selector] = unit
+                where[selector] = number.start
+            break
+        if selector not in goal:
+            _initials_named(text, claimed, names, goal, where, selector)
+
+
+def _unit_names(var: DiscreteVariable, unit: Any) -> list[list[str]]:
+    """The word sequences a unit is said by: its name, its display text, and for a name of
+    initials (GPG) the words they stand for, matched by their first letters."""
+    out = []
+    for label in (str(unit), (var.show or {}).get(unit) if isinstance(var.show, dict) else None):
+        if label:
+            words = [w.casefold() for w in phrase_words(str(label).replace("°", " "))]
+            if words and all(w.isalpha() for w in words):
+                out.append(words)
+    return out
+
+
+def _a_unit(var: DiscreteVariable, value: Any) -> bool:
+    """A value that is a unit (FAHRENHEIT, °dH, PPM), by its name or its display text."""
+    show = var.show.get(value) if isinstance(var.show, dict) else None
+    return any(
+        label is not None and str(label).casefold().lstrip("°").strip() in _UNITS
+        for label in (value, show)
+    )
+
+
+def _starting(var: DiscreteVariable) -> Any:
+    try:
+        domain = build_domain(var)
+    except ValueError:
+        return None
+    return domain.values[domain.initial]
+
+
+def _said_with(text: Text, claimed: set[int], names: list[list[str]]) -> tuple[Any, int] | None:
+    """A number followed by (degrees and) one of the unit's names: the number and the end."""
+    for i in range(len(text.tokens)):
+        if i in claimed:
+            continue
+        number = read_number(text.tokens, i)
+        if number is None or any(k in claimed for k in range(number.start, number.end)):
+            continue
+        if text.word(i) in ("a", "an"):
+            continue  # "over a distance": no number
+        j = number.end
+        while text.word(j) in _DEGREES:
+            j += 1
+        word = text.word(j).lstrip("°")
+        for words in names:
+            if _words_at(text, j, words, word):
+                return number, j + _length(text, j, words, word)
+    return None
+
+
+def _words_at(text: Text, j: int, words: list[str], first: str) -> bool:
+    if [first, *(text.word(j + d) for d in range(1, len(words)))] == words:
+        return True
+    return _initials_at(text, j, words) > 0
+
+
+def _length(text: Text, j: int, words: list[str], first: str) -> int:
+    initials = _initials_at(text, j, words)
+    return initials if initials else len(words)
+
+
+def _initials_at(text: Text, j: int, words: list[str]) -> int:
+    """ "grains per gallon" for GPG: words from j whose first letters spell a 2–4 letter name
+    (each at least three letters long, or a joining word); the number of words, or 0."""
+    if len(words) != 1 or not 2 <= len(words[0]) <= 4:
+        return 0
+    letters = words[0]
+    said = [text.word(j + d) for d in range(len(letters))]
+    if all(w[:1] == c for w, c in zip(said, letters, strict=True)) and all(
+        len(w) >= 3 and w.isalpha() for w in said
+    ):
+        return len(letters)
+    return 0
+
+
+def _initials_named(
+    text: Text,
+    claimed: set[int],
+    names: dict[Any, list[list[str]]],
+    goal: Goal,
+    where: dict[str, int],
+    selector: str,
+) -> None:
+    """ "switch to grains per gallon": the unit named by its words alone."""
+    for j in range(len(text.tokens)):
+        if j in claimed:
+            continue
+        for unit, said in names.items():
+            size = max((_initials_at(text, j, words) for words in said), default=0)
+            if size:
+                goal[selector] = unit
+                where[selector] = j
+                claimed.update(range(j, j + size))
+                return
