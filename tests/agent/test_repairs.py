@@ -793,3 +793,28 @@ def test_an_option_lamp_unlit_twice_on_the_running_screen_is_no_reset_by_start()
     episode, reached = run(truth, belief, {"eco": "on", "running": "on"})
     assert reached, episode.failure
     assert not any("resets it" in r for r in episode.repairs), episode.repairs
+
+
+def test_a_choices_values_learnt_carry_its_dependents_cases_along() -> None:
+    # the manual's table named a category "Bread and cakes"; the panel shows "bread": the
+    # weight's case follows the value the panel shows, and a case never shown is dropped
+    from apbot.agent.repair import redefine_domain
+
+    belief = suite_model(
+        "microwave_2",
+        (
+            "values: [none, meat, poultry, fish, bread]",
+            "values: [meat, poultry, fish, bread and cakes, game]",
+        ),
+        (
+            "      bread: {ranges: [[50, 500, 10]], initial: 50}",
+            "      bread and cakes: {ranges: [[50, 500, 10]], initial: 50}\n"
+            "      game: {ranges: [[100, 900, 10]], initial: 100}",
+        ),
+    )
+    new = redefine_domain(
+        belief, "defrost_food", None, values=["none", "meat", "poultry", "fish", "bread"]
+    )
+    cases = new.variables["defrost_weight"].model_dump(mode="json")["cases"]
+    assert sorted(cases) == ["bread", "fish", "meat", "poultry"]
+    assert cases["bread"]["initial"] == 50

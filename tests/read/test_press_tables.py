@@ -97,8 +97,11 @@ def test_an_amount_typed_after_a_choice_key_is_the_second_step_of_its_feature() 
     steps = next(f for f in model.features.values() if f[0].variable == "thaw")
     assert len(steps) == 2 and steps[1].variable == "weight"
     assert set(steps[1].actions) == {f"press_{d}" for d in range(10)}
-    weight = model.variables["weight"]
-    assert weight.unit == "g" and weight.ranges[0][0] == 50 and weight.ranges[0][1] == 2000
+    weight = model.variables["weight"].model_dump(mode="json")
+    # the chart's first column counts presses: each food's row gives its own weights
+    assert weight["unit"] == "g" and weight["depends_on"] == "thaw"
+    assert weight["cases"]["rolls"]["ranges"][0][:2] == [50, 400]
+    assert weight["cases"]["chicken pieces"]["ranges"][0][:2] == [200, 2000]
 
 
 def test_a_range_from_grams_to_kilograms_is_read_in_grams() -> None:

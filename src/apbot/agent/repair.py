@@ -99,6 +99,8 @@ def redefine_domain(
             target["initial"] = start
         elif not fits and ("initial" in target or case is None):
             target["initial"] = str(current) if str(current) in new_values else new_values[0]
+        if case is None:
+            _rekey_dependents(data, name, new_values)
     else:
         assert ranges is not None
         allowed = set(expand_ranges([list(r) for r in ranges]))
@@ -127,6 +129,29 @@ def redefine_domain(
     if wrap is not None:
         var["wrap"] = wrap
     return _rebuild(data, checked)
+
+
+def _rekey_dependents(data: dict[str, Any], name: str, values: list[str]) -> None:
+    """The settings that depend on ``name`` follow its new values: a case named in other
+    words of a value the display showed ("bread and cakes" where the panel shows "bread":
+    the same first word, no other value so named) takes that value's name; a case for a
+    value the panel never shows is dropped. A dependent left with no case stays as it was
+    (the repair then fails as before rather than lose the setting)."""
+    for var in data["variables"].values():
+        if not isinstance(var, dict) or var.get("depends_on") != name:
+            continue
+        cases = var.get("cases") or {}
+        kept: dict[str, Any] = {}
+        for key, spec in cases.items():
+            if key in values:
+                kept.setdefault(key, spec)
+                continue
+            first = key.split()[:1]
+            named = [v for v in values if v.split()[:1] == first and v not in cases]
+            if len(named) == 1:
+                kept.setdefault(named[0], spec)
+        if kept:
+            var["cases"] = kept
 
 
 def _magnitude(spec: Any, value: Any) -> float:

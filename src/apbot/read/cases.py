@@ -22,10 +22,11 @@ from apbot.read.cases_cells import (
     _row_steps,
     chain_values,
     defaults_head,
+    time_list,
 )
 from apbot.read.cases_lists import as_choices, listed_cases, listed_column
 from apbot.read.cases_marks import _mark, mark_cases
-from apbot.read.cases_tables import _parent_values, _tables
+from apbot.read.cases_tables import _parent_values, _tables, unnumbered
 from apbot.read.labels import words
 from apbot.read.marks_legend import chart_legend, read_mark
 from apbot.read.shapes import CHOICE_WORDS
@@ -60,9 +61,10 @@ def apply_cases(b: Builder) -> None:
     parents: set[str] = set()
     children: set[str] = set()
     keys = {lab.text.strip(" .").upper() for lab in b.labels.values() if lab.text}
-    for header, rows in _tables(b.manual.units):
-        if len(rows) < 2:
+    for header, table in _tables(b.manual.units):
+        if len(table) < 2:
             continue
+        header, rows = unnumbered(header, table)
         guessed_only = False  # only keys read with no values take a column-per-key chart's
         keyed = [  # a key heading a column of marks ("RINSE+" over "● / –") lists no values
             c
@@ -124,7 +126,7 @@ def apply_cases(b: Builder) -> None:
                     cases = _cases(spec, _marks_told(b, rows, column), column, pvalues)
                 else:
                     cases = _cases(spec, rows, column, pvalues)
-                if len(cases) >= 2 and _presets(b, parent, name, cases, rows[0]):
+                if len(cases) >= 2 and _presets(b, parent, name, cases, table[0]):
                     break
                 if len(cases) >= 2:
                     if all("initial" in c for c in cases.values()) and spec.get("values"):
@@ -145,7 +147,7 @@ def apply_cases(b: Builder) -> None:
                     b.note(
                         f"variables.{name}.cases",
                         f"depends on {parent}: {len(cases)} cases",
-                        b.manual.units.index(rows[0]),
+                        b.manual.units.index(table[0]),
                     )
                 break
 
@@ -304,8 +306,18 @@ def _finer_times(spec: dict[str, Any], rows: list[Unit], column: int) -> bool:
     unit ("1 – 60 min", "1 min – 2 h"): it is a time, set in minutes."""
     if spec.get("type") != "numeric" or spec.get("unit") != "h":
         return False
-    found = [f[0] for r in rows if column < len(r.cells) and (f := find_ranges(r.cells[column]))]
+    found = [
+        f[0] for r in rows if column < len(r.cells) and (f := _ranges_or_list(r.cells[column]))
+    ]
     return len(found) >= 2 and any(r.unit in ("min", "s") for r in found)
+
+
+def _ranges_or_list(cell: str) -> list[Range]:
+    """The ranges a cell gives, or the span of the times it lists ("20 / 30 / 40 min")."""
+    listed = time_list(cell)
+    if listed and not find_ranges(cell):
+        return [Range(listed[0][0] // 60, listed[0][-1] // 60, "min")]
+    return find_ranges(cell)
 
 
 def _as_number(b: Builder, name: str, spec: dict[str, Any], rows: list[Unit], column: int) -> None:
@@ -314,7 +326,7 @@ def _as_number(b: Builder, name: str, spec: dict[str, Any], rows: list[Unit], co
     from apbot.read.shapes import Evidence
 
     cells = [r.cells[column] for r in rows if column < len(r.cells)]
-    found = [find_ranges(c) for c in cells]
+    found = [_ranges_or_list(c) for c in cells]
     chains = [chained[0] for c in cells if (chained := chain_values(c))]
     first = next(f[0] for f in found if f)
     first = next((f[0] for f in found if f and f[0].unit in ("min", "s")), first)

@@ -103,6 +103,8 @@ def _case(spec: dict[str, Any], cell: str) -> Any:
         if said is not None:
             return {"values": ["off", "on"]} if said else None
     if kind == "discrete":
+        if len(cell.strip()) == 1 and not cell.strip().isalnum():
+            return None  # "●" / "–": offered or not, no values (cases_marks reads such charts)
         if len(spec.get("values", [])) == 2 and _norm(cell) in spec["values"]:
             return {"values": list(spec["values"]), "initial": _norm(cell)}  # a default
         span = _value_span(spec.get("values", []), cell)
@@ -126,10 +128,12 @@ def _case(spec: dict[str, Any], cell: str) -> Any:
         return _chain_case(spec, *chained)
     ranges_read = find_ranges(cell)
     if kind == "time":
-        listed = None if ranges_read else _time_list(cell)
-        if listed:  # "30, 45 or 60 minutes": the times, by the step between them
+        times = None if ranges_read else time_list(cell)
+        if times:  # "30, 45 or 60 minutes": the times, by the step between them
+            listed, standard = times
             gap = math.gcd(*[b - a for a, b in itertools.pairwise(listed)])
-            return {"ranges": [[format_hms(listed[0]), format_hms(listed[-1]), gap]]}
+            case = {"ranges": [[format_hms(listed[0]), format_hms(listed[-1]), gap]]}
+            return case | ({"initial": format_hms(standard)} if standard is not None else {})
         if not ranges_read:
             from apbot.model.values import parse_quantity
 
@@ -211,21 +215,32 @@ def _chain_case(spec: dict[str, Any], numbers: list[float], default: float | Non
     return case
 
 
+# (one of them may be in brackets, the standard one: "20 / 30 / [40] / 50 / 60 min")
 _TIME_LIST_RE = re.compile(
-    r"\s*(\d+(?:\s*(?:,|\bor\b|\band\b|/)\s*\d+)+)\s*(min(?:ute)?s?|h(?:ou)?rs?|hours?|h)\.?\s*",
+    r"\s*(\[?\d+\]?(?:\s*(?:,|\bor\b|\band\b|/)\s*\[?\d+\]?)+)\s*"
+    r"(min(?:ute)?s?|h(?:ou)?rs?|hours?|h)\.?\s*",
     re.IGNORECASE,
 )
 
 
 def _time_list(cell: str) -> list[int] | None:
     """Three or more times in a cell ("30, 45 or 60 minutes"), rising, in seconds; else None."""
+    listed = time_list(cell)
+    return listed[0] if listed else None
+
+
+def time_list(cell: str) -> tuple[list[int], int | None] | None:
+    """Three or more rising times in a cell ("30, 45 or 60 minutes", "[30] / 45 / 60 min") in
+    seconds, and the one in brackets (the standard time) if any; else None."""
     m = _TIME_LIST_RE.fullmatch(cell)
-    if not m:
+    if not m or m.group(1).count("[") > 1:
         return None
     per = 3600 if unit_name(m.group(2)) == "h" else 60
     found = [int(x) * per for x in re.findall(r"\d+", m.group(1))]
     rising = all(a < b for a, b in itertools.pairwise(found))
-    return found if len(found) >= 3 and rising else None
+    marked = re.search(r"\[(\d+)\]", m.group(1))
+    default = int(marked.group(1)) * per if marked else None
+    return (found, default) if len(found) >= 3 and rising else None
 
 
 def _cell(row: Unit, column: int) -> str:

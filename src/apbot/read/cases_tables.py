@@ -7,6 +7,7 @@ a table's rows and matching a cell to known values is shared, applying cases is 
 from __future__ import annotations
 
 import re
+from dataclasses import replace
 
 from apbot.read.text import Unit
 
@@ -23,6 +24,18 @@ def _tables(units: list[Unit]) -> list[tuple[tuple[str, ...], list[Unit]]]:
                 out.append((unit.header, [unit]))
         previous = unit
     return out
+
+
+_ORDINAL_RE = re.compile(r"\s*(?:no\.?\s*)?\d{1,2}[.)]?\s*", re.I)
+
+
+def unnumbered(header: tuple[str, ...], rows: list[Unit]) -> tuple[tuple[str, ...], list[Unit]]:
+    """A chart whose first column only numbers its rows ("| Order | Display | Mode | Drying
+    time |" with rows "1 | AUTO | …"): the names are in the next column, so the numbering is
+    dropped. Each returned row keeps its line; the cells lose their first one."""
+    if len(header) < 3 or not all(r.cells and _ORDINAL_RE.fullmatch(r.cells[0]) for r in rows):
+        return header, rows
+    return header[1:], [replace(r, cells=r.cells[1:]) for r in rows]
 
 
 def _norm(text: str) -> str:

@@ -1,0 +1,37 @@
+"""Rules found on the styled manuals (session 12), each on a small manual of our own."""
+
+from __future__ import annotations
+
+from apbot.read import read_manual
+from apbot.read.cases_cells import time_list
+
+# a food warmer whose programme chart numbers its rows in a first column, the names next to
+# it, and lists each programme's holding times with the standard one in brackets
+WARMER = """PROGRAMMES
+
+Each press of PROG goes to the next programme: SOUP, STEW, BABY, GRAVY.
+
+ No.   Programme   Lid    Warm time
+ 1     SOUP        yes    15 / [30] / 45 / 60 min
+ 2     STEW        yes    [20] / 40 / 60 min
+ 3     BABY        no     -
+ 4     GRAVY       no     kept warm, up to 2 h
+
+Press WARM TIME to step the warm time. Press START to begin.
+"""
+
+
+def test_a_chart_whose_first_column_numbers_its_rows_gives_each_programme_its_times() -> None:
+    actions = ["press_prog", "press_warm_time", "press_start"]
+    model = read_manual(WARMER, actions).model
+    spec = model.variables["warm_time"].model_dump(mode="json")
+    assert spec["depends_on"] == "prog"
+    assert spec["cases"]["soup"]["ranges"] == [["00:15:00", "01:00:00", 900]]
+    assert spec["cases"]["soup"]["initial"] == "00:30:00"
+    assert spec["cases"]["stew"]["ranges"] == [["00:20:00", "01:00:00", 1200]]
+
+
+def test_a_list_of_times_may_mark_its_standard_one_in_brackets() -> None:
+    assert time_list("20 / 30 / [40] / 50 / 60 min") == ([1200, 1800, 2400, 3000, 3600], 2400)
+    assert time_list("30, 45 or 60 minutes") == ([1800, 2700, 3600], None)
+    assert time_list("[20] / [30] / 40 min") is None  # two standards: not such a list
