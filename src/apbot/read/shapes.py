@@ -79,15 +79,11 @@ def _all_names(items: list[str], text: str) -> bool:
 
 
 def _keyish(items: list[str], others: set[str], own: set[str]) -> bool:
-    """A list naming two or more keys (other keys, the key itself, symbols such as + and −),
-    and keys at least half of it: "AUTO → STERI+DRY → STERI → DRY → STORE" is a list of
-    programmes, two of which have keys of their own (numbers count for neither: "TEMP → 1 → 8 →
-    0 → TIMER → 2 → 0 → START" is keys pressed)."""
+    """A list naming two or more keys (other keys, the key itself, symbols such as + and −)."""
     named = sum(
         v.lower() in others or v.upper() in own or not re.search(r"[^\W_]", v) for v in items
     )
-    words = [v for v in items if not re.fullmatch(r"\s*\d+\s*", v)]
-    return named >= 2 and 2 * named >= len(words)
+    return named >= 2
 
 
 def _without(text: str, labels: list[str]) -> str:
