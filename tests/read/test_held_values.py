@@ -64,22 +64,3 @@ def test_a_row_s_touch_list_is_not_the_hold_s() -> None:
     ]
     assert "dry" in model.variables[touched[0]].values
     assert not held or "dry" not in (model.variables[held[0]].values or [])
-
-
-# a juicer whose legend says both jobs of a key in one cell, the held one after the touch
-JUICER = """
-PressaJ-1 slow juicer
-
-  ①  ⏻ Power               Touch: switch on / off.
-  ②  PULP                 Touch: next pulp setting (P1 → P2 → P3 → P1).
-                          Touch & hold 3 seconds: key lock on / off.
-  ③  START / STOP         Touch: start / stop.
-"""
-
-
-def test_an_on_off_said_after_touch_and_hold_in_a_legend_cell_is_the_hold_s() -> None:
-    model = read_manual(JUICER, ["press_power", "press_pulp", "hold_pulp", "press_start"]).model
-    touched = [
-        f.variable for fs in model.features.values() for f in fs if "press_pulp" in f.actions
-    ]
-    assert model.variables[touched[0]].values == ["p1", "p2", "p3"]

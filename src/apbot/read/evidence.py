@@ -34,8 +34,6 @@ from apbot.read.evidence_whose import (
     _presses_another,
     _with_items,
     _without_own_name,
-    led_by_another,
-    own_columns,
 )
 from apbot.read.labels import words
 from apbot.read.shapes import (
@@ -133,7 +131,6 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
             if t not in tokens
             for w in [x for x in words(t.replace("_", " ")) if len(x) >= 4][:1]
         }
-        mine = {w for t in tokens for w in words(t.replace("_", " ")) if len(w) >= 4}
         context = self.context(tokens)
         for i in [*context, *sorted(steps - set(context))]:  # (a step further down: its own)
             text = units[i].text
@@ -152,8 +149,6 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
                 continue  # "The menu names printed on the panel: …" near KEEP WARM: MENU's
             if unit.cells and i not in mentions and _cell_key(_lead(unit.cells)) in other_keys:
                 continue  # a key table's row about another key ("| SIZE | S, M or L |")
-            if unit.cells and i not in mentions and led_by_another(unit.cells, other_words, mine):
-                continue  # "| Delayed start | 0 - 12 h |" after STERI's row: DELAY's range
             if (
                 unit.cells
                 and unit.header
@@ -194,10 +189,7 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
             waiting = waiting or surroundings(text)  # "at an ambient 5 to 35 °C": the room's
             ranges = [
                 r
-                # (a row's amounts under the column named for this setting, if one is)
-                for r in find_ranges(
-                    "" if waiting else own_columns(unit, _without_advice(unit), tokens)
-                )
+                for r in find_ranges("" if waiting else _without_advice(unit))
                 if _fits(r.unit, tokens) and not _keypad(r, text)
             ]
             if ev.keypad_at is None and _KEYPAD_WORDS.search(text):

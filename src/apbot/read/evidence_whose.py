@@ -7,8 +7,7 @@ from __future__ import annotations
 
 import re
 
-from apbot.read.labels import words
-from apbot.read.shapes import _fits, _same_word
+from apbot.read.shapes import _fits
 from apbot.read.text import Unit
 from apbot.read.values import find_step, unit_name
 
@@ -108,29 +107,3 @@ def _with_items(units: list[Unit], i: int) -> str:
             break
         texts.append(unit.text)
     return " ".join(texts)
-
-
-def led_by_another(cells: tuple[str, ...], others: set[str], own: set[str]) -> bool:
-    """A table row whose naming cell names another key's setting and not this one's ("|
-    Delayed start | 0 - 12 h |" the row after the one listing STERI): the row's amounts are
-    the named setting's, whichever key the row before mentioned."""
-    led = [w for w in words(_lead(cells)) if len(w) >= 4][:2]
-    if any(_same_word(w, o) for w in led for o in own):
-        return False
-    return any(_same_word(w, o) for w in led for o in others)
-
-
-def own_columns(unit: Unit, text: str, tokens: list[str]) -> str:
-    """A table row's cells under a column named for this setting ("| STERI+DRY | 10 - 30 min |
-    20 - 90 min |" under "Sterilising time" and "Drying time": DRY's amounts are the drying
-    column's), or ``text`` when no column is named for it or several columns hold amounts."""
-    own = {w for t in tokens for w in words(t.replace("_", " ")) if len(w) >= 3}
-    if not unit.cells or len(unit.header) != len(unit.cells) or not own:
-        return text
-    named = [
-        cell
-        for head, cell in zip(unit.header, unit.cells, strict=True)
-        if any(h.startswith(w[:5]) for h in words(head) for w in own)
-    ]
-    # ("| Timer setting | Range |" then "| Short | 0.5 – 10 hours |": a name column, no amount)
-    return named[0] if len(named) == 1 and re.search(r"\d", named[0]) else text

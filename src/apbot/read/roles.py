@@ -312,19 +312,9 @@ def _hold_cell(unit: Unit) -> bool:
         # (a real column head is short: "Press and hold", "Long press"; a first row taken for
         # the head may say "kept as long as it is plugged in")
         (re.search(r"\bhold|\blong\b", header[k], re.I) and len(_timeless(header[k])) <= 4)
-        or all(  # "Touch: next menu. Touch & hold 3 seconds: key lock on / off."
-            _HELD_CLAUSE.match(clause)
-            for clause in re.split(r"(?<=[.;])\s+", unit.cells[k])
-            if ON_OFF_RE.search(clause)
-        )
+        or re.match(r"\s*(?:hold\b|\d+(?:[.,]\d+)?\s*s(?:ec\w*)?\b)", unit.cells[k], re.I)
         for k in said
     )
-
-
-# a clause led by holding the key: "hold …", "3 s: …", "Touch & hold 3 seconds: …"
-_HELD_CLAUSE = re.compile(
-    r"\s*(?:(?:(?:press|touch|push)\s*(?:and|&)\s*)?hold\b|\d+(?:[.,]\d+)?\s*s(?:ec\w*)?\b)", re.I
-)
 
 
 def _timeless(head: str) -> list[str]:
