@@ -32,6 +32,7 @@ from apbot.read.roles_digits import assign_direct_digits
 from apbot.read.roles_fasthold import fold_fast_holds
 from apbot.read.roles_fixed import assign_locks, assign_power, assign_running, standby_only
 from apbot.read.roles_functions import assign_functions, function_keys
+from apbot.read.roles_heldvalues import others_list
 from apbot.read.roles_holdcell import held_toggle
 from apbot.read.roles_hourmin import assign_hour_minute, hour_minute_keys
 from apbot.read.roles_keyed import assign_keyed_amounts
@@ -178,6 +179,8 @@ def assign(b: Builder) -> None:
         if key.skill == "hold" and set(key.controls) <= paired_tokens:
             silent.append(key)  # holding ▲ / ▼ moves faster: no list of its own ("00:00 00:30 …")
             continue
+        if others_list(b, key, ev.values or [], ev.values_at):  # "Hold LIGHT …: WHT, BLU …"
+            ev = evidence[key.name] = replace(ev, values=None, values_at=None)
         amount = bool(set(words(name)) & NUMERIC_WORDS)
         if key.skill == "press" and _hold_row(b, key, ev.toggle_at):
             ev = evidence[key.name] = replace(ev, toggle_at=None)  # the hold's on/off

@@ -1,0 +1,91 @@
+"""Whose a key's list is when the key is both touched and held.
+
+The manual's evidence is gathered per key, but a key with two jobs says which job a list
+belongs to: "Hold LIGHT for 3 seconds to change the colour. Each hold selects the next colour:
+WHT, BLU, …" gives the hold its colours (a touch switches the light on and off), and the key
+table's row "| MODE | Next heating mode ST → EC → SL | 3 s: filter cycle programming |" gives
+the modes to the touch (holding MODE programmes something else). A list read where only the
+other way of working the key is said is not this action's.
+"""
+
+from __future__ import annotations
+
+import re
+
+from apbot.read.actions import ActionInfo
+from apbot.read.build import Builder
+from apbot.read.roles_holdcell import hold_cells
+
+# a short press said as such: "Touch LIGHT", "press MODE briefly"
+_PRESSING = r"(?:press|touch|push|tap)(?:es|ed|ing)?"
+
+
+def _twin(b: Builder, key: ActionInfo) -> bool:
+    """The same key is also worked the other way (a hold beside the press, or the reverse)."""
+    other = "hold" if key.skill == "press" else "press"
+    return any(i.skill == other and i.controls == key.controls for i in b.infos)
+
+
+def _in_cells(values: list[str], cells: list[str]) -> bool:
+    """Every value is written in one of these cells."""
+    text = " ".join(cells).lower()
+    return bool(cells) and all(v.lower() in text for v in values)
+
+
+def others_list(b: Builder, key: ActionInfo, values: list[str], at: int | None) -> bool:
+    """Whether the list ``values`` read at unit ``at`` belongs to the other way of working this
+    key: for a press, a sentence (or the sentence before it in its paragraph) that holds the
+    key by name and never presses it, or a key-table row with the list only in its "hold"
+    cells; for a hold, a key-table row whose list stands outside its "hold" cells."""
+    if at is None or not values or key.skill not in ("press", "hold") or len(key.controls) != 1:
+        return False
+    if key.controls[0] not in b.labels or not _twin(b, key):
+        return False
+    label = re.escape(b.labels[key.controls[0]].text)
+    if not label:
+        return False
+    unit = b.manual.units[at]
+    held = hold_cells(unit) + [
+        c for c in unit.cells if re.match(r"\W*(?:hold\b|\d+(?:[.,]\d+)?\s*s(?:ec\w*)?\b)", c, re.I)
+    ]
+    if unit.cells:
+        if key.skill == "press":
+            return (
+                bool(held)
+                and _in_cells(values, held)
+                and not _in_cells(values, [c for c in unit.cells if c not in held])
+            )
+        return bool(held) and not _in_cells(values, held)
+    if key.skill == "hold":
+        return False
+    text = _said_with(b, at, b.labels[key.controls[0]].text)
+    holds = re.search(
+        rf"\bhold(?:s|ing)?(?:\s+down)?\s+(?:the\s+)?{label}(?!\w)"
+        rf"|(?<!\w){label}\s*\(?\s*(?:(?:press|touch|push)\s+and\s+)?hold",
+        text,
+        re.I,
+    )
+    presses = re.search(
+        rf"\b{_PRESSING}\s+(?:the\s+)?{label}(?!\w)(?!\s+(?:and|to)\s+hold)", text, re.I
+    )
+    return bool(holds) and not presses
+
+
+def _said_with(b: Builder, at: int, label: str) -> str:
+    """Unit ``at`` with the sentences before it in the same paragraph or item, back to the one
+    naming the key ("Hold LIGHT for 3 s to change the colour. Each hold selects …")."""
+    units = b.manual.units
+    said = [units[at].text]
+    k = at
+    while label.lower() not in said[0].lower() and k > 0 and len(said) < 3:
+        before = units[k - 1]
+        if (
+            units[k].bullet
+            or before.cells
+            or before.heading != units[at].heading
+            or units[k].line - before.line > 1
+        ):
+            break
+        said.insert(0, before.text)
+        k -= 1
+    return " ".join(said)
