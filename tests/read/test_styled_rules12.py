@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from apbot.read import read_manual
 from apbot.read.cases_cells import time_list
+from apbot.read.cases_tables import unnumbered
+from apbot.read.text import Unit
 
 # a food warmer whose programme chart numbers its rows in a first column, the names next to
 # it, and lists each programme's holding times with the standard one in brackets
@@ -35,3 +37,15 @@ def test_a_list_of_times_may_mark_its_standard_one_in_brackets() -> None:
     assert time_list("20 / 30 / [40] / 50 / 60 min") == ([1200, 1800, 2400, 3000, 3600], 2400)
     assert time_list("30, 45 or 60 minutes") == ([1800, 2700, 3600], None)
     assert time_list("[20] / [30] / 40 min") is None  # two standards: not such a list
+
+
+def test_a_chart_printed_as_two_halves_keeps_its_columns() -> None:
+    """ "No. | Dish | Weight | No. | Dish | Weight": the numbers lead each half, so dropping the
+    first column would shift the right half's columns under the wrong heads."""
+    header = ("No.", "Dish", "Weight", "Rack", "No.", "Dish", "Weight")
+    cells = ("1", "Chicken pieces", "400-1200 g", "low rack", "4", "Frozen pizza", "200-600 g")
+    rows = [Unit(line=3, text=" | ".join(cells), cells=cells, header=header)]
+    assert unnumbered(header, rows) == (header, rows)
+    single = ("No.", "Dish", "Weight")
+    row = Unit(line=3, text="1 | Chicken | 400 g", cells=("1", "Chicken", "400 g"), header=single)
+    assert unnumbered(single, [row])[0] == ("Dish", "Weight")  # one half: the numbers go

@@ -32,8 +32,12 @@ _ORDINAL_RE = re.compile(r"\s*(?:no\.?\s*)?\d{1,2}[.)]?\s*", re.I)
 def unnumbered(header: tuple[str, ...], rows: list[Unit]) -> tuple[tuple[str, ...], list[Unit]]:
     """A chart whose first column only numbers its rows ("| Order | Display | Mode | Drying
     time |" with rows "1 | AUTO | …"): the names are in the next column, so the numbering is
-    dropped. Each returned row keeps its line; the cells lose their first one."""
+    dropped. Each returned row keeps its line; the cells lose their first one. A chart printed
+    as two halves side by side ("No. | Programme | Weight | No. | Programme | Weight") is left
+    alone: its columns mean one thing in the left half and another in the right."""
     if len(header) < 3 or not all(r.cells and _ORDINAL_RE.fullmatch(r.cells[0]) for r in rows):
+        return header, rows
+    if _norm(header[0]) in {_norm(cell) for cell in header[1:]}:
         return header, rows
     return header[1:], [replace(r, cells=r.cells[1:]) for r in rows]
 
