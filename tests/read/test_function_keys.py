@@ -114,3 +114,47 @@ def test_keys_the_manual_never_names_as_one_kind_keep_their_own_settings() -> No
     )
     model = read_manual(text, COOKER_ACTIONS).model
     assert not any("stew" in (getattr(v, "values", None) or []) for v in model.variables.values())
+
+
+# a microwave whose CLOCK, KITCHEN TIMER and TIME COOK each take a time and START, with a
+# MODE key named "the MODE button": one key so called names no row of keys (review2)
+CLOCKED = """CONTROL PANEL
+
+CLOCK sets the time of day. KITCHEN TIMER counts down without cooking. TIME COOK cooks by time.
+POWER LEVEL changes the power. The number pads 0-9 enter times. START begins; STOP/CANCEL clears.
+Press the MODE button to show the clock in 12 or 24 hours.
+
+SETTING THE CLOCK
+
+1. Press CLOCK.
+2. Enter the time of day with the number pads.
+3. Press START to confirm.
+
+KITCHEN TIMER
+
+1. Press KITCHEN TIMER.
+2. Enter the time to count down (up to 99:99).
+3. Press START. The timer counts down and beeps at the end.
+
+COOKING BY TIME
+
+1. Press TIME COOK.
+2. Enter the cooking time, up to 99 minutes 99 seconds.
+3. Press POWER LEVEL and a number pad 1 to 10 for the power, if you want less than full power.
+4. Press START.
+"""
+CLOCKED_ACTIONS = [
+    "press_clock",
+    "press_kitchen_timer",
+    "press_time_cook",
+    "press_power_level",
+    "press_mode",
+    "press_start",
+    "press_stop_cancel",
+] + [f"press_{d}" for d in range(10)]
+
+
+def test_a_key_named_mode_button_makes_no_row_of_function_keys() -> None:
+    model = read_manual(CLOCKED, CLOCKED_ACTIONS).model
+    assert model.variables["clock"].type == "time"  # the time of day, not a function's value
+    assert "kitchen_timer" in model.variables and "time_cook" in model.variables

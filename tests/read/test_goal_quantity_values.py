@@ -69,6 +69,17 @@ def test_a_number_glued_to_its_unit_is_said_in_words() -> None:
     assert "mode" not in parse_instruction(charger, "a 12 volt battery for 4 hours")  # 2 values
 
 
+def test_a_quantity_shared_by_several_values_is_no_timer() -> None:
+    """ "a 12-volt gel battery": GEL picks among the 12 V values, and the 12 volts are never
+    read as 12 hours (review2: the timer got 12 h)."""
+    charger = loads_model(CHARGER)
+    assert parse_instruction(charger, "charge my 12-volt car battery, it's a gel type") == {
+        "mode": "12v gel"
+    }
+    assert parse_instruction(charger, "a 12-volt gel battery") == {"mode": "12v gel"}
+    assert parse_instruction(charger, "a 12 volt battery for 4 hours") == {"hours": 4}
+
+
 def test_a_programme_holding_minutes_is_named_by_a_duration_beside_its_word() -> None:
     dryer = loads_model(DRYER)
     assert parse_instruction(dryer, "Forty minutes of timed drying, done in 3 hours") == {

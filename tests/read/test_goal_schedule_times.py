@@ -109,6 +109,8 @@ def sprinkler() -> ApplianceModel:
             {"clock": "13:20:00"},
         ),
         ("Fish tank light from 7 am to 9.30 pm.", {"on_time": "07:00:00", "off_time": "21:30:00"}),
+        # "now" opening the next clause is no time said as now (review2: the 7 pm was lost)
+        ("Lamp on at 7 pm, now off at 11 pm.", {"on_time": "19:00:00", "off_time": "23:00:00"}),
     ],
 )
 def test_socket_times(socket: ApplianceModel, instruction: str, goal: dict[str, str]) -> None:

@@ -136,6 +136,13 @@ def test_minutes_past_and_to_an_hour() -> None:
     assert mentions("ten to twelve minutes") == [("number", 10), ("duration", 720)]
 
 
+def test_minutes_to_one_are_before_one_not_after_midnight() -> None:
+    """ "ten to one" is 12:50 (noon or, said so, midnight), never 00:50 on a 12-hour clock."""
+    assert mentions("set the clock to ten to one") == [("clock", 12 * 3600 + 50 * 60)]
+    assert mentions("at ten to one in the morning") == [("clock", 50 * 60)]
+    assert mentions("at ten to one in the afternoon") == [("clock", 12 * 3600 + 50 * 60)]
+
+
 def test_a_dotted_time_with_its_half_of_the_day_and_a_bare_hour_with_a_day_part() -> None:
     assert mentions("from 7 am to 9.30 pm") == [("clock", 7 * 3600), ("clock", 21 * 3600 + 1800)]
     assert mentions("water at eight tonight") == [("clock", 20 * 3600)]

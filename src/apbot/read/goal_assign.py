@@ -247,8 +247,9 @@ def _switch_stems(info: VarInfo) -> set[str]:
 def _said_now(text: Text, mention: Mention) -> bool:
     """ "it's 6:05", "the time is 7:15", "7:40 right now": the time it is, not one to act at."""
     before = text.word(mention.start - 1)
-    after = {text.word(mention.end + d) for d in range(3)}
-    return before in ("it's", "is", "its") or "now" in after
+    after = [text.word(mention.end + d) for d in range(3)]
+    said = after[: next((d for d, w in enumerate(after) if w in CLAUSE_ENDS or w == ","), 3)]
+    return before in ("it's", "is", "its") or "now" in said  # not "on at 7 pm; now …"
 
 
 def _clock_parts(view: Model, text: Text, mention: Mention, goal: Goal) -> bool:

@@ -30,7 +30,12 @@ def quantity_values(
 ) -> None:
     """Set each selector a quantity-holding value of which the words name."""
     for name, info in view.infos.items():
-        if name in goal or info.role != "setting" or not isinstance(info.var, DiscreteVariable):
+        if info.role != "setting" or not isinstance(info.var, DiscreteVariable):
+            continue
+        if name in goal:  # "a 12-volt AGM battery": AGM named it; the 12 volts are its own
+            said = _glued(info, text, claimed)
+            if said is not None:
+                claimed.update(range(said[1], said[2]))
             continue
         found = _glued(info, text, claimed) or _minutes(info, text, claimed)
         if found is not None:
@@ -41,7 +46,9 @@ def quantity_values(
 
 
 def _glued(info: VarInfo, text: Text, claimed: set[int]) -> tuple[object, int, int] | None:
-    """ "6-volt", "six volts", "6 V" for the one value with the word 6V."""
+    """ "6-volt", "six volts", "6 V" for the one value with the word 6V; among several
+    (12V NORMAL, 12V AGM) the one whose other words are said too ("a 12-volt AGM battery"),
+    else none — but the quantity is still taken, never a timer's 12 hours."""
     holders: dict[tuple[float, str], list[object]] = {}
     for value in info.values:
         for word in str(value).casefold().split():
@@ -56,9 +63,24 @@ def _glued(info: VarInfo, text: Text, claimed: set[int]) -> tuple[object, int, i
             continue
         j = number.end + (text.word(number.end) == "-")
         for (amount, unit), values in holders.items():
-            if amount == number.value and text.word(j) in _UNIT_NAMES[unit] and len(values) == 1:
-                return values[0], number.start, j + 1
+            if amount == number.value and text.word(j) in _UNIT_NAMES[unit]:
+                said = values if len(values) == 1 else _others_said(values, text, claimed)
+                if len(said) != 1:
+                    claimed.update(range(number.start, j + 1))
+                    return None
+                return said[0], number.start, j + 1
     return None
+
+
+def _others_said(values: list[object], text: Text, claimed: set[int]) -> list[object]:
+    """The values whose words besides the quantity are all said ("AGM" for 12V AGM)."""
+    said = {text.stems[k] for k in range(len(text.tokens)) if k not in claimed}
+    out = []
+    for value in values:
+        rest = [w for w in str(value).casefold().split() if _GLUED.fullmatch(w) is None]
+        if rest and all(stem(w) in said for w in rest):
+            out.append(value)
+    return out
 
 
 def _minutes(info: VarInfo, text: Text, claimed: set[int]) -> tuple[object, int, int] | None:

@@ -367,6 +367,8 @@ def _clock_at(tokens: list[Token], i: int) -> Mention | None:
             meridiem = True
             if half == "pm" and hour < 12:
                 hour += 12
+            if half == "am" and hour == 12:
+                hour = 0  # "ten to one in the morning": 00:50
     if hour > 24:
         return None
     colon = ":" in _word(tokens, i) or "." in _word(tokens, i)
@@ -399,7 +401,7 @@ def _minutes_past(tokens: list[Token], i: int) -> tuple[int, int, int] | None:
     minute = int(number.value)
     if past == "past":
         return int(hour.value), minute, hour.end
-    return (int(hour.value) - 1) % 24, 60 - minute, hour.end
+    return (int(hour.value) - 2) % 12 + 1, 60 - minute, hour.end  # "ten to one": 12:50
 
 
 def _day_part(tokens: list[Token], k: int) -> str | None:

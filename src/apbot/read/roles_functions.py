@@ -61,7 +61,7 @@ def function_keys(b: Builder, keys: list[ActionInfo]) -> tuple[str, list[_Proced
     """Three or more keys each starting a procedure of their own that types values and ends
     with START, in a manual naming them as one kind of key; with the kind's noun."""
     units = b.manual.units
-    said = next((m for u in units if (m := GROUP_RE.search(u.text))), None)
+    said = next((m for u in units if (m := _group_named(b, u.text))), None)
     starts = [label_of(b, i.token) for i in b.infos if "start" in words(i.token)]
     if said is None or not starts:
         return None
@@ -76,6 +76,16 @@ def function_keys(b: Builder, keys: list[ActionInfo]) -> tuple[str, list[_Proced
         return None
     noun = said.group(1).lower()
     return ("function" if noun == "cooking" else noun), found
+
+
+def _group_named(b: Builder, text: str) -> re.Match[str] | None:
+    """The kind named for the row ("touch the function key first"), not one key called so
+    ("press the MODE button": a key labelled MODE names no row of keys)."""
+    labels = {lab.text.strip(" .").casefold() for lab in b.labels.values() if lab.text}
+    for m in GROUP_RE.finditer(text):
+        if m.group(1).casefold() not in labels:
+            return m
+    return None
 
 
 def _procedure(b: Builder, key: ActionInfo, starts: list[str]) -> _Procedure | None:
