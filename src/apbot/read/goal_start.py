@@ -36,6 +36,9 @@ _HELD_STATES = frozenset({"stopped", "paused", "idle", "unstarted"})
 _NOW_PHRASES = ("right away", "straight away", "immediately")
 
 
+_KEEPING = frozenset({"leave", "left", "keep", "kept"})  # "leave it off", "kept running"
+
+
 def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = False) -> None:
     """Power on when asked; the running variable on (or off) when the instruction says so, a
     goal setting's procedure starts it, or a delay counts down from now (``counting``)."""
@@ -144,7 +147,7 @@ def _says_power_on(view: Model, text: Text, goal: Goal) -> bool:
         if text.stems[k] == stem("wake") and (k == 0 or text.word(k - 1) in CLAUSE_ENDS | {","}):
             return True
     for k, token in enumerate(text.tokens):  # "with the machine left on", "leave it on"
-        if token.text in ("leave", "left", "keep", "kept", "stay", "stays"):
+        if token.text in _KEEPING | {"stay", "stays"}:
             j = k + 1
             while j < n and (
                 concept(text.word(j)) in view.appliance_words or text.word(j) == "the"
@@ -334,7 +337,7 @@ def _left_off_for_now(text: Text, k: int) -> bool:
     return (
         text.word(k) == "off"
         and text.word(k - 1) == "it"
-        and text.word(k - 2) in ("leave", "keep", "left", "kept")
+        and text.word(k - 2) in _KEEPING
         and (text.word(k + 1), text.word(k + 2)) in (("for", "now"), ("until", "i"))
     )
 
@@ -419,9 +422,7 @@ def _says_start(
         set_running = word == "running" and text.word(k - 1) == "it"
         if on_to_run or (set_running and text.word(k - 2) in ("set", "get", "leave", "keep")):
             starts = True  # "switch it on to run", "set it running", "leave it running"
-        if word in _HELD_STATES and any(
-            text.word(k - d) in ("leave", "keep", "left", "kept", "stay") for d in (1, 2, 3)
-        ):
+        if word in _HELD_STATES and any(text.word(k - d) in _KEEPING | {"stay"} for d in (1, 2, 3)):
             negative = True  # "leave it stopped for now", "keep it paused"
         if _left_off_for_now(text, k):
             negative = True  # "leave it off for now"
