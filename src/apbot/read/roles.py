@@ -33,7 +33,7 @@ from apbot.read.roles_fasthold import fold_fast_holds
 from apbot.read.roles_fixed import assign_locks, assign_power, assign_running, standby_only
 from apbot.read.roles_functions import assign_functions, function_keys
 from apbot.read.roles_heldvalues import others_list
-from apbot.read.roles_holdcell import held_toggle
+from apbot.read.roles_holdcell import HELD_SECONDS, HOLD_CELL, held_toggle
 from apbot.read.roles_hourmin import assign_hour_minute, hour_minute_keys
 from apbot.read.roles_keyed import assign_keyed_amounts
 from apbot.read.roles_lists import (
@@ -312,14 +312,14 @@ def _hold_cell(unit: Unit) -> bool:
         # (a real column head is short: "Press and hold", "Long press"; a first row taken for
         # the head may say "kept as long as it is plugged in")
         (re.search(r"\bhold|\blong\b", header[k], re.I) and len(_timeless(header[k])) <= 4)
-        or re.match(r"\s*(?:hold\b|\d+(?:[.,]\d+)?\s*s(?:ec\w*)?\b)", unit.cells[k], re.I)
+        or re.match(rf"\s*{HOLD_CELL}", unit.cells[k], re.I)
         for k in said
     )
 
 
 def _timeless(head: str) -> list[str]:
     """A column head's words less how long to hold ("Touch and hold (3 s)", "… 3 seconds")."""
-    return re.sub(r"\(?\b\d+(?:[.,]\d+)?\s*(?:s|sec\w*)\b\)?", " ", head, flags=re.I).split()
+    return re.sub(rf"\(?\b{HELD_SECONDS}\)?", " ", head, flags=re.I).split()
 
 
 def _turned_after_keys(b: Builder, dial: str, keys: list[ActionInfo]) -> bool:

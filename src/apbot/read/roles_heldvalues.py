@@ -14,7 +14,7 @@ import re
 
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
-from apbot.read.roles_holdcell import hold_cells
+from apbot.read.roles_holdcell import HOLD_CELL, hold_cells
 
 # a short press said as such: "Touch LIGHT", "press MODE briefly"
 _PRESSING = r"(?:press|touch|push|tap)(?:es|ed|ing)?"
@@ -45,9 +45,7 @@ def others_list(b: Builder, key: ActionInfo, values: list[str], at: int | None) 
     if not label:
         return False
     unit = b.manual.units[at]
-    held = hold_cells(unit) + [
-        c for c in unit.cells if re.match(r"\W*(?:hold\b|\d+(?:[.,]\d+)?\s*s(?:ec\w*)?\b)", c, re.I)
-    ]
+    held = hold_cells(unit) + [c for c in unit.cells if re.match(rf"\W*{HOLD_CELL}", c, re.I)]
     if unit.cells:
         if key.skill == "press":
             return (
