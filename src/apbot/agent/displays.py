@@ -19,7 +19,7 @@ from apbot.agent.quantities import loose
 from apbot.agent.reader import DisplayReader
 from apbot.agent.repair import RepairError, drop_indicator, set_display
 from apbot.agent.session import Executed, Session
-from apbot.model.display import can_show, display_value, lamp_for
+from apbot.model.display import OFF_WORDS, can_show, display_value, lamp_for
 from apbot.model.domain import AnyVariable
 from apbot.model.schema import (
     ApplianceModel,
@@ -236,6 +236,12 @@ class DisplayLearner:
                 # the belief guessed lit, not a word the manual prints for it ("LOCK")
                 continue
             lamp = lamp_for(spec, name, predicted, domain)
+            if lamp and str(observed).casefold() in OFF_WORDS and _spelt(lamp, observed, seen.text):
+                # "SOUND OFF": the lamp's word lit beside the off value — spelt out on a
+                # screen of its own, not a lamp whose absence elsewhere says "off"
+                if self._spelt_out(name, observed):
+                    return True
+                continue
             if not lamp or lamp.casefold() in seen.text.casefold() or seen.showing(name):
                 continue
             unlit = self._unlit.setdefault(name, set())
@@ -265,6 +271,22 @@ class DisplayLearner:
             session.unread.add(name)
             return True
         return False
+
+    def _spelt_out(self, name: str, observed: Any) -> bool:
+        """Drop ``name``'s lamp where a screen of its own still shows it (once); True when
+        the belief changed."""
+        session = self.session
+        try:
+            new = drop_indicator(session.belief.model, name)
+        except RepairError:
+            return False
+        if not can_show(new, name) or not _has_screen(new, name):
+            return False
+        if not session.budget.once("template", f"lamp:{name}"):
+            return False
+        session.adopt(new, f"{name} is spelt out on its own screen, not a lamp", None)
+        session.belief.set_value(name, observed)
+        return True
 
     def read(self, name: str, text: str) -> Any:
         """``name``'s value in ``text`` under the (repaired) belief, or None."""
@@ -335,3 +357,13 @@ def _has_screen(model: ApplianceModel, name: str) -> bool:
     """Whether a feature step of ``model`` adjusts ``name``: its own screen comes up while it
     does (a key acting from anywhere brings up no screen)."""
     return any(step.variable == name for steps in model.features.values() for step in steps)
+
+
+def _spelt(lamp: str, value: Any, text: str) -> bool:
+    """Whether the display spells the lamp's words out with the value's own word after them.
+
+    >>> _spelt("SOUND", "off", "SOUND OFF"), _spelt("READY AT", "off", "READY AT --:--")
+    (True, False)
+    """
+    words = rf"{re.escape(lamp)}\s+{re.escape(str(value))}"
+    return re.search(rf"(?<!\w){words}(?!\w)", text, re.I) is not None

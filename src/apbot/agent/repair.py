@@ -313,10 +313,14 @@ def drop_dependence(model: ApplianceModel, name: str, case: str) -> ApplianceMod
     return _rebuild(data)
 
 
-def set_start(model: ApplianceModel, name: str, case: str, value: Any) -> ApplianceModel:
+def set_start(model: ApplianceModel, name: str, case: str | None, value: Any) -> ApplianceModel:
     """Choosing the programme ``case`` starts ``name`` at ``value`` (its case's initial): learnt
-    from the display after the choice (``side_effects``) or from a look (``case_starts``)."""
+    from the display after the choice (``side_effects``) or from a look (``case_starts``). With
+    no case, ``name`` itself starts there (where a reset brings it back)."""
     data = _dump(model)
+    if case is None:
+        data["variables"][name]["initial"] = value
+        return _rebuild(data)
     cases = data["variables"][name].get("cases", {})
     own = cases.get(case)
     if own is None:

@@ -123,14 +123,18 @@ def assign_amounts(
                 cyclic=False,
             )
             spec = b.variables[var]
-            if var in b.unread and not ev.step and "cook" in words(name.replace("_", " ")):
-                # a cooking time typed on the keypad with no range read: minutes and seconds,
-                # as the number keys alone enter one
+            cook = not ev.step and "cook" in words(name.replace("_", " "))
+            if var in b.unread and (cook or (not ev.ranges and keyed == (1.0, "s"))):
+                # a cooking time typed on the keypad with no range read (or any time keyed
+                # in seconds, "enter the minutes and seconds"): minutes and seconds, as the
+                # four number keys enter them
                 spec.update(type="time", ranges=[["00:00:00", "01:39:59", 1]], format="mm:ss")
                 spec.pop("unit", None)
                 b.note(f"variables.{var}", "a cooking time typed as minutes and seconds")
             _keypad_entry(spec)
-            if spec.get("entry", {}).get("format") == "mm:ss" and not ev.step:
+            if spec.get("entry", {}).get("format") == "mm:ss" and (
+                not ev.step or keyed == (1.0, "s")
+            ):
                 # minutes and seconds typed digit by digit: any second, whatever step was guessed
                 # (and up to the top read, which a coarse guessed step fell short of)
                 tops = [format_hms(int(r.high)) for r in ev.ranges if r.unit == "s"]

@@ -419,6 +419,10 @@ PER_RE = re.compile(
 _WHOLE_RE = re.compile(
     r"\bin (?:whole|full) (degrees?|minutes?|hours?|seconds?)(?:\s+(celsius|fahrenheit))?\b", re.I
 )
+# "Enter the minutes and seconds.", "type the time in minutes and seconds": any second is keyed
+_KEYED_MIN_SEC_RE = re.compile(
+    r"\b(?:enter|type|key)(?:s|ed|ing)?\b[^.;]{0,40}?\bminutes\s+and\s+seconds\b", re.I
+)
 _BARE_STEPS_RE = re.compile(rf"(?<![\w-])({NUM})-({UNIT})\s+(?:steps|increments)\b", re.I)
 
 
@@ -437,6 +441,8 @@ def find_step(text: str) -> tuple[float, str] | None:
             scale = (whole.group(2) or "").lower()
             unit = {"fahrenheit": "°F", "celsius": "°C"}.get(scale) or unit_name(whole.group(1))
             return 1.0, unit
+        if _KEYED_MIN_SEC_RE.search(text):
+            return 1.0, "s"
         return None
     groups = m.groups()
     if m.group(0).lower().endswith(("units", "stages")) and not groups[1]:
