@@ -86,3 +86,21 @@ def test_a_list_of_where_a_setting_cannot_be_used_is_no_list_of_its_values() -> 
 
 def test_a_longest_value_given_as_a_field_is_the_top_of_the_range() -> None:
     assert clock_tops("Longest: 9:00. Further presses do nothing.") == [9 * 3600]
+
+
+SIDEWAYS = """\
+Steaming by weight
+
+Touch STEAM once for every 50 g of vegetables. Above 300 g each touch adds 100 g:
+
+   touches   1     2     3    …   6       7       8
+   weight    50 g  100 g 150 g …  300 g   400 g   500 g
+
+Touch START.
+"""
+
+
+def test_a_sideways_chart_of_touches_is_the_keys_range_with_its_steps() -> None:
+    model = read_manual(SIDEWAYS, ["press_steam", "press_start"]).model
+    steam = model.variables["steam"].model_dump(mode="json")
+    assert steam["ranges"] == [[50, 300, 50], [300, 500, 100]], steam

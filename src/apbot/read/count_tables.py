@@ -207,12 +207,51 @@ def _read_chart(
     return CountChart(pieces, labels.pop(), heads, k)
 
 
+# a sideways chart's first line: what is counted, then the counts ("touches   1   2   3   …   14",
+# "Presses of END TIME    1     2  …  18"); the next line gives the readings in the same order
+_COUNT_ROW_RE = re.compile(
+    r"^\s*(?P<head>(?:no\.?\s+of\s+|number\s+of\s+)?(?:press(?:es)?|touch(?:es)?|taps?|clicks?)"
+    r"\b[^\d…]{0,30}?)\s{2,}(?P<counts>\d{1,3}(?:\s+(?:\d{1,3}|…|\.\.\.))+)\s*$",
+    re.IGNORECASE,
+)
+
+
+def sideways_charts(units: list[Unit], lines: list[str]) -> list[CountChart]:
+    """Charts printed sideways, a line of counts over a line of readings ("touches  1  2  …
+    14" over "weight  100 g 200 g … 2000 g"), read from the lines as printed (single spaces
+    inside the readings defeat a table's columns); an ellipsis stands in both lines alike.
+    A last reading that falls back below the one before ("… 19 h 0 h") is the wrap to off."""
+    out: list[CountChart] = []
+    for n, line in enumerate(lines[:-1]):
+        m = _COUNT_ROW_RE.match(line)
+        if not m:
+            continue
+        counts = [int(c) for c in re.findall(r"\d{1,3}", m.group("counts"))]
+        readings = [_reading(r) for r in _READINGS_RE.findall(lines[n + 1])]
+        said = [r for r in readings if r]
+        if len(said) != len(counts) or len({(r[0], r[2]) for r in said}) != 1:
+            continue
+        if len(said) >= 2 and said[-1][1] < said[-2][1]:
+            counts, said = counts[:-1], said[:-1]
+        points = {c: r[1] for c, r in zip(counts, said, strict=True)}
+        pieces = _pieces(points, said[0][2]) if len(points) >= 3 else []
+        at = [k for k, u in enumerate(units) if u.line <= n + 1]
+        if pieces and at:
+            out.append(CountChart(pieces, said[0][0], (m.group("head").strip(),), at[-1]))
+    return out
+
+
 def chart_for(
-    charts: list[CountChart], own: set[str], turned: bool, other_turned: bool
+    charts: list[CountChart],
+    own: set[str],
+    turned: bool,
+    other_turned: bool,
+    context: list[int],
 ) -> CountChart | None:
     """The chart about a control: its readings carry the control's label ("PRESET 7:00" for
-    PRESET), or, unlabelled, its head names the control ("Touches of +") or counts clicks of
-    the panel's only dial when that is the control (``turned``, no ``other_turned``)."""
+    PRESET), or, unlabelled, its head names the control ("Touches of +"), counts clicks of
+    the panel's only dial when that is the control (``turned``, no ``other_turned``) or
+    counts bare touches right after a sentence about the control (in its ``context``)."""
     for chart in charts:
         if chart.label:
             if chart.label.upper() in own:
@@ -223,5 +262,8 @@ def chart_for(
             return chart
         dial = turned and not other_turned and re.search(r"clicks?|turns?", heads, re.I)
         if dial and not re.search(r"\bof\b", heads):  # ("Touches of +": that key's)
+            return chart
+        near = chart.at in context or chart.at - 1 in context  # (the sentence before it)
+        if near and not re.search(r"\bof\b", heads):  # ("touches": its own)
             return chart
     return None

@@ -10,7 +10,7 @@ from __future__ import annotations
 import itertools
 import re
 
-from apbot.read.count_tables import chart_for, count_charts
+from apbot.read.count_tables import chart_for, count_charts, sideways_charts
 from apbot.read.evidence_anywhere import AnywhereReader
 from apbot.read.evidence_checks import (
     _amount_column,
@@ -271,8 +271,9 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
             if two and _fits(two[0][0].unit, tokens):
                 ev.ranges, ev.range_at = two[0], window[two[1]]
                 break
+        charts = count_charts(units) + sideways_charts(units, self.manual.lines)
         chart = chart_for(
-            count_charts(units), own, self._turns(tokens), self._turned(tokens)
+            charts, own, self._turns(tokens), self._turned(tokens), context
         )  # "| Clicks clockwise | Display |" "| 1 | 300 ml |": every setting, by example
         if chart and _fits(chart.pieces[0].unit, tokens):
             ev.ranges, ev.range_at = chart.pieces, chart.at
