@@ -10,6 +10,7 @@ from __future__ import annotations
 import itertools
 import re
 
+from apbot.read.count_tables import chart_for, count_charts, sideways_charts
 from apbot.read.evidence_anywhere import AnywhereReader
 from apbot.read.evidence_checks import (
     _amount_column,
@@ -22,6 +23,7 @@ from apbot.read.evidence_checks import (
     _without_only,
     about_another,
     between_marks,
+    excluded_list,
 )
 from apbot.read.evidence_elsewhere import ElsewhereReader
 from apbot.read.evidence_whose import (
@@ -97,6 +99,13 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
             set(t.split("_")) & (UP_WORDS | DOWN_WORDS)
             for t, lab in self.labels.items()
             if t not in tokens and i in lab.mentions
+        )
+
+    def _turns(self, tokens: list[str]) -> bool:
+        """One of these controls is a knob or dial (its turns are clicks)."""
+        return any(
+            i.skill.startswith("turn") and set(i.controls) & set(tokens)
+            for i in getattr(self, "infos", [])
         )
 
     def _turned(self, tokens: list[str]) -> bool:
@@ -262,6 +271,12 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
             if two and _fits(two[0][0].unit, tokens):
                 ev.ranges, ev.range_at = two[0], window[two[1]]
                 break
+        charts = count_charts(units) + sideways_charts(units, self.manual.lines)
+        chart = chart_for(
+            charts, own, self._turns(tokens), self._turned(tokens), context
+        )  # "| Clicks clockwise | Display |" "| 1 | 300 ml |": every setting, by example
+        if chart and _fits(chart.pieces[0].unit, tokens):
+            ev.ranges, ev.range_at = chart.pieces, chart.at
         if not ev.ranges:  # "Rough guide to power:" and a column of 100 % … 10 %
             for i in sorted(self.context(tokens)):
                 guide = None if _aside(units, i) else _amount_column(units, i)
@@ -293,6 +308,8 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
         if best and re.search(r"\bonly\W*$", best[-1], re.I) and not _named_only(best[-1], shown):
             # "(STEW, JAM, BROTH only)": where the setting applies, not its values
             best = None if _where_it_applies(best, shown) else _without_only(best) or None
+        if best and shown and excluded_list(best, shown):
+            best = None  # "PRESET cannot be used on QUICK, STEAM or CAKE": the other menus
         choice = bool({w for t in tokens for w in words(t.replace("_", " "))} & CHOICE_WORDS)
         if best is None or (_numeric_items(best) and (len(best) < 3 or choice)):
             # two numbers are a range, not a list; a programme key's list is of names (but

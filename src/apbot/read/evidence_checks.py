@@ -71,6 +71,24 @@ def _where_it_applies(items: list[str], text: str) -> bool:
     return (closed or led) and bool(_APPLIES_BEFORE_RE.search(before))
 
 
+# "cannot be used on", "is not available with", "does not work for": what follows is where the
+# setting is missing
+_EXCLUDED_BEFORE_RE = re.compile(
+    r"\b(?:cannot|can\s?not|can't|not|never)\s+(?:be\s+)?(?:used|set|available|possible|"
+    r"selected|chosen|work)\s+(?:on|with|for|in|at)\s+(?:the\s+)?(?:programmes?\s+|menus?\s+)?$",
+    re.IGNORECASE,
+)
+
+
+def excluded_list(items: list[str], text: str) -> bool:
+    """A list the sentence names as where the setting cannot be used ("PRESET cannot be used
+    on QUICK, STEAM or CAKE"): the other menus' names, never the setting's own values."""
+    first = re.search(rf"(?<!\w){re.escape(items[0].strip())}(?!\w)", text, re.I)
+    return bool(
+        first and _EXCLUDED_BEFORE_RE.search(text[max(0, first.start() - 60) : first.start()])
+    )
+
+
 def _names_of_pieces(items: list[str], units: list[Unit], at: int | None) -> bool:
     """The list is the first cells of the table rows the range's pieces were read from."""
     if at is None or not units[at].cells:

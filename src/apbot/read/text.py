@@ -23,7 +23,7 @@ from apbot.read.text_pages import (
     _reading_order,
     contents_lines,
 )
-from apbot.read.text_sections import drop_boilerplate
+from apbot.read.text_sections import drop_boilerplate, drop_tagged_models
 from apbot.read.text_tables import _row_charts, _space_tables, _strip_markup
 
 MAX_MANUAL_CHARS = 400_000  # ten times the longest real manual we expect; larger is not a manual
@@ -287,7 +287,7 @@ def parse_manual(text: str) -> Manual:
             flush()  # "WARM      holds cooked food hot": a term and its definition, a new item
         para.append((number, stripped))
     flush()
-    units = drop_boilerplate(units, original)
+    units = drop_tagged_models(drop_boilerplate(units, original), original)
     return Manual(units, original, glyphs)
 
 

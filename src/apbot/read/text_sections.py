@@ -253,3 +253,59 @@ def other_model(units: list[Unit], i: int) -> bool:
             return False  # a blank line before it: another paragraph
         k -= 1
     return False
+
+
+# "[BM-14] The BM-14 timer goes up to 15 hours.": a sentence led by a type number in square
+# brackets; "BM-10 · BM-12 · BM-14": a line naming two or more types of one family
+_TYPE = r"[A-Z]{2,5}-\d{2,4}[A-Z]{0,3}"
+_TAG_LEAD_RE = re.compile(rf"^\[({_TYPE})\]\s")
+_TYPE_RE = re.compile(rf"(?<![\w-])({_TYPE})(?![\w-])")
+
+
+def _families(lines: list[str]) -> set[str]:
+    """Type numbers the manual names side by side with a sister of the same letters ("Models
+    BM-10 · BM-12 · BM-14", "PK-06 / PK-06B / PK-08"): the models a manual of a range covers."""
+    found: set[str] = set()
+    for line in lines:
+        types = _TYPE_RE.findall(line)
+        for t in types:
+            prefix = t.split("-")[0]
+            if sum(1 for u in types if u != t and u.split("-")[0] == prefix):
+                found.add(t)
+    return found
+
+
+def drop_tagged_models(units: list[Unit], original: list[str]) -> list[Unit]:
+    """The units without paragraphs a manual of several models marks as one model's own
+    ("[BM-10] The BM-10 has no LOAF key…", "[PK-08] OOLONG jumps to 88 °C."): the text left
+    untagged is what every model of the range does, the tagged remarks a sister's extras or
+    lacks, which read as evidence give keys the sister's values and ranges. The tag must be a
+    type the manual names beside a sister (so an error code "[E-01]" never counts); the
+    sentences after a tagged one in its paragraph go with it."""
+    families = _families(original) if any(_TAG_LEAD_RE.match(u.text) for u in units) else set()
+    if not families:
+        return units
+    kept: list[Unit] = []
+    tagged: Unit | None = None
+    for unit in units:
+        lead = _TAG_LEAD_RE.match(unit.text)
+        if lead and lead.group(1) in families and not unit.cells:
+            tagged = unit
+            continue
+        if (
+            tagged is not None
+            and not unit.cells
+            and not unit.bullet
+            and unit.heading == tagged.heading
+            and not _new_paragraph(original, tagged.line, unit.line)
+        ):
+            tagged = unit
+            continue
+        tagged = None
+        kept.append(unit)
+    return kept
+
+
+def _new_paragraph(original: list[str], after: int, line: int) -> bool:
+    """A blank line between two 1-based lines: the second starts another paragraph."""
+    return any(not original[k - 1].strip() for k in range(after + 1, line) if k <= len(original))

@@ -26,9 +26,11 @@ def clock_seconds(figure: str, min_sec: bool) -> int:
     return int(first) * 60 + int(second) if min_sec else int(first) * 3600 + int(second) * 60
 
 
-# only a top written as a clock figure: "up to 99:59", "the longest setting is 99:59"
+# only a top written as a clock figure: "up to 99:59", "the longest setting is 99:59",
+# "Longest: 13:00" (a field of a setting's description)
 _CLOCK_TOP_RE = re.compile(
-    r"\b(?:up to|at most|max(?:imum|\.)?(?:\s+(?:of|is))?|(?:longest|maximum)\b[\w ]{0,24}?\bis)"
+    r"\b(?:up to|at most|max(?:imum|\.)?(?:\s+(?:of|is))?|(?:longest|maximum)\b[\w ]{0,24}?\bis"
+    r"|(?:longest|maximum)\s*:)"
     r"\s+(\d{1,2}:\d{2})(?![\d:])",
     re.IGNORECASE,
 )
