@@ -23,6 +23,7 @@ from apbot.read.cases_resets import apply_resets
 from apbot.read.cases_zones import zone_twins
 from apbot.read.code_words import name_code_words
 from apbot.read.codes import name_codes
+from apbot.read.held_walks import read_held_walks
 from apbot.read.hold_seconds import hold_seconds
 from apbot.read.initials import read_initials
 from apbot.read.labels import find_labels
@@ -70,6 +71,7 @@ def read_manual(
     read_initials(builder)
     read_bar_shows(builder)
     apply_resets(builder)
+    read_held_walks(builder)  # (after the resets: those were read for the switch it replaces)
     data = _assemble(builder, appliance_id, category)
     data["actions"].update({a: {"skill": "wait", "seconds": w} for a, w in waits.items()})
     notes = builder.notes
