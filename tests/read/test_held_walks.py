@@ -44,6 +44,29 @@ def test_held_key_walks_a_start_time_and_a_length() -> None:
     start, length = steps[1].variable, steps[3].variable
     assert start is not None and length is not None
     assert model.variables[start].type == "time"
-    assert [tuple(r) for r in model.variables[start].ranges or []][0][1:] == ("23:45:00", 900)
+    assert next(tuple(r) for r in model.variables[start].ranges or [])[1:] == ("23:45:00", 900)
     assert model.variables[length].unit == "h"
     assert all(s.timeout == 5 for s in steps)
+
+
+# a spa panel (our own words): the lock's word is LOCK, though a sleep mode's code SL stands
+# nearer the keys' rows
+SPA = """AQUA S-2 spa panel
+
+KEYS
+  UP / DOWN   Raise / lower the set temperature.
+  MODE        Next heating mode ST, EC, SL.
+  UP + DOWN   Hold both 5 s: panel lock on / off.
+
+  Heating modes: ST standard, EC economy, SL sleep. The keys UP and DOWN set 26 to 40 °C.
+
+PANEL LOCK
+  Hold UP and DOWN together for 5 seconds. LOCK appears and the keys are locked.
+"""
+SPA_ACTIONS = ["press_up", "press_down", "press_mode", "hold_up_down"]
+
+
+def test_the_lock_word_is_lock_before_a_two_letter_code() -> None:
+    model = read_manual(SPA, SPA_ACTIONS).model
+    locks = [v for v in model.variables.values() if (v.show or {}).get("on") in ("LOCK", "SL")]
+    assert locks and all(v.show["on"] == "LOCK" for v in locks)
