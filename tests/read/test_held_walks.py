@@ -70,3 +70,13 @@ def test_the_lock_word_is_lock_before_a_two_letter_code() -> None:
     model = read_manual(SPA, SPA_ACTIONS).model
     locks = [v for v in model.variables.values() if (v.show or {}).get("on") in ("LOCK", "SL")]
     assert locks and all(v.show["on"] == "LOCK" for v in locks)
+
+
+def test_two_keys_held_together_take_the_hold_time_the_manual_gives() -> None:
+    from apbot.read.hold_seconds import pair_hold_seconds
+
+    lines = ["  2+3  WARM ▲ and COOL ▼ together      5 s: panel lock on / off",
+             "Hold WARM ▲ and COOL ▼ together for 5 seconds. LOCK appears."]  # fmt: skip
+    assert pair_hold_seconds(lines, "COOL ▼", "WARM ▲") == 5
+    assert pair_hold_seconds(["ZONE + TIMER  Held together for 3 seconds"], "ZONE", "TIMER") == 3
+    assert pair_hold_seconds(["Hold ZONE for 5 seconds."], "ZONE", "TIMER") is None
