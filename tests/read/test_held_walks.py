@@ -78,5 +78,6 @@ def test_two_keys_held_together_take_the_hold_time_the_manual_gives() -> None:
     lines = ["  2+3  WARM ▲ and COOL ▼ together      5 s: panel lock on / off",
              "Hold WARM ▲ and COOL ▼ together for 5 seconds. LOCK appears."]  # fmt: skip
     assert pair_hold_seconds(lines, "COOL ▼", "WARM ▲") == 5
+    assert pair_hold_seconds(lines, "WARM", "COOL") == 5  # names printed without their arrows
     assert pair_hold_seconds(["ZONE + TIMER  Held together for 3 seconds"], "ZONE", "TIMER") == 3
     assert pair_hold_seconds(["Hold ZONE for 5 seconds."], "ZONE", "TIMER") is None

@@ -18,6 +18,7 @@ _HOLD = (
 )
 _ABOUT = r"(?:for\s+)?(?:about\s+|at\s+least\s+|approx\.?\s+|approximately\s+|around\s+)?"
 _KEY = r"(?:\s+(?:key|button|pad|field|touch\s+field))?"
+_ARROW = r"(?:\s*[▲▼△▽◀▶◄►↑↓])?"
 _CELL_SPLIT = re.compile(r"\s{2,}|\s*[|│]\s*")
 _CELL_SECONDS = re.compile(rf"^(?:{_HOLD}\s+)?{_ABOUT}{_NUMBER}\s*{_UNIT}", re.IGNORECASE)
 _ROW_MARK = re.compile(r"^(?:\(\d{1,2}\)|\d{1,2}[.)]|[A-Z][.)]?)\s+")
@@ -80,9 +81,9 @@ def pair_hold_seconds(lines: list[str], first: str, second: str) -> float | None
     for a, b in ((first, second), (second, first)):
         one = re.escape(a.strip()).replace(r"\ ", r"\s+")
         two = re.escape(b.strip()).replace(r"\ ", r"\s+")
-        keys = (
-            rf"(?:the\s+)?(?<![\w]){one}(?![\w]){_KEY}\s*(?:and|\+|&)\s*"
-            rf"(?:the\s+)?(?<![\w]){two}(?![\w]){_KEY}"
+        keys = (  # (a key's printed arrow may follow its name: "WARM ▲ and COOL ▼")
+            rf"(?:the\s+)?(?<![\w]){one}(?![\w]){_ARROW}{_KEY}\s*(?:and|\+|&)\s*"
+            rf"(?:the\s+)?(?<![\w]){two}(?![\w]){_ARROW}{_KEY}"
         )
         pattern = re.compile(
             rf"(?:{_HOLD}\s+)?{keys}\s*,?\s*(?:(?:are\s+)?held\s+)?together\s*[,:]?\s*{_ABOUT}"
