@@ -326,3 +326,12 @@ def test_a_key_whose_role_takes_the_value_is_not_walked_for_another_setting() ->
     assert not misread_key(belief, "press_fan", "on")
     assert not misread_key(belief, "press_fan", 3)  # the speed it also steps holds a number
     assert misread_key(belief, "press_fan", "400 g")  # a weight is neither a switch nor a %
+
+
+def test_a_walk_round_midnight_is_a_time_of_day_not_a_duration() -> None:
+    from apbot.agent.setting_texts import day_walk
+
+    walk = ["SL 22:30  AUTO", "SL 23:00  AUTO", "SL 23:30  AUTO", "SL 00:00  AUTO"]
+    assert day_walk(walk, "2 h") and day_walk(walk, "15 min")
+    assert not day_walk(walk, "23:00:00")  # a time of day fits it
+    assert not day_walk(["WAIT 2 h", "WAIT 4 h", "WAIT 6 h"], "2 h")

@@ -43,6 +43,7 @@ from apbot.agent.setting_texts import (
     _fits,
     _kind_of,
     _typing,
+    day_walk,
     infer_setting,
     lamp_word,
     typed_setting,
@@ -187,6 +188,9 @@ class VariableFinder:
         the goal's value could be one of its values (a walk of grams is not a power level);
         with ``site``, as the step after that step of a procedure."""
         session = self.session
+        if day_walk(texts, goal_value):
+            session.episode.log("explore", f"{name}: {key} shows a time of day, not {goal_value!r}")
+            return False
         learnt = infer_setting(name, texts, _kind_of(goal_value), last)
         if learnt is not None and not _fits(learnt.variable, goal_value):
             # each text a value of its own, named by its first word (MUG 300mL)?

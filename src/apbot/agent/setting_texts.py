@@ -6,6 +6,7 @@ adds to a display.
 
 from __future__ import annotations
 
+import itertools
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -197,6 +198,21 @@ def _fits(variable: dict[str, Any], goal_value: Any) -> bool:
     except (ValueProblem, ValueError):
         return False
     return True
+
+
+_CLOCK_RE = re.compile(r"(?<![\d:])([01]?\d|2[0-3]):([0-5]\d)(?![\d:])")
+_LASTING_RE = re.compile(
+    r"^\s*\d+(?:\.\d+)?\s*(?:h|hr|hrs|hours?|min|mins|minutes?|s|sec|seconds?)\s*$"
+)
+
+
+def day_walk(texts: list[str], goal_value: Any) -> bool:
+    """A walk whose clock times go round midnight (… 23:30, 00:00 …) shows a time of day: a
+    duration the goal asks for ("2 h", "15 min") is not one of its values."""
+    if not _LASTING_RE.match(str(goal_value)):
+        return False
+    hours = [int(m.group(1)) if (m := _CLOCK_RE.search(t)) else None for t in texts]
+    return any(a == 23 and b == 0 for a, b in itertools.pairwise(hours))
 
 
 def _kind_of(goal_value: Any) -> str:

@@ -10,7 +10,7 @@ from apbot.model.schema import NumericVariable, TimeVariable
 from apbot.model.values import format_hms, preview
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_fit import fit, number_for
-from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab, said_before
+from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab, repeat_for_a_length, said_before
 from apbot.read.goal_unitless import unitless_named
 from apbot.read.goal_values import name_words, unit_text, zone_case
 from apbot.read.goal_view import Goal, Model, VarInfo, domain_values, own_stems
@@ -106,6 +106,8 @@ def assign_mentions(
             score = near_vocab(info, text, mention.start, mention.end)
             if score <= 0 and _a_state(info, text, mention):
                 continue  # "the tank is 50 % full": a percentage said of something else
+            if score < 0.5 and repeat_for_a_length(text, mention, info):
+                continue  # "cleaning every two hours": how often, not how long something lasts
             by = info.timing == "finish" and mention.kind == "clock" and mention.lead == "by"
             if info.timing in ("clock", "finish") and not near_vocab(
                 info, text, mention.start, mention.end, reach=12
@@ -407,6 +409,13 @@ def _unplaced(view: Model, text: Text, mention: Mention, goal: Goal) -> None:
         return  # a time of day said in passing ("a 3 a.m. feed")
     if any(name in goal for name in kinds) and (near in goal or closeness[near] < 0.5):
         return  # another setting of its kind was given; this may be a remark
+    if mention.kind == "duration":  # a time of day (the clock, when something starts) lasts not
+        kinds = [n for n in kinds if view.infos[n].timing not in ("clock", "at")]
+        if not kinds:
+            return
+        near = max(kinds, key=lambda n: closeness[n])
+    if closeness[near] < 0.5 and repeat_for_a_length(text, mention, view.infos[near]):
+        return  # how often something comes round, said of none of these settings
     info = view.infos[near]
     values = domain_values(view, info, goal)
     parent = info.var.depends_on

@@ -41,7 +41,7 @@ from apbot.read.goal_said import (
     remark,
     tally,
 )
-from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab
+from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab, repeat_for_a_length
 from apbot.read.goal_view import Goal, Model, own_stems
 from apbot.read.goal_vocab import STOP_WORDS, stem
 from apbot.read.numbers import Mention
@@ -220,8 +220,14 @@ def _of_its_kind(view: Model, mention: Mention, text: Text) -> bool:
         timed = isinstance(info.var, TimeVariable) or info.dimension == "time"
         # a setting that could hold it: a time for a time, a number for any other
         could = not isinstance(info.var, DiscreteVariable) and timed == (kind == "time")
-        if could and near_vocab(info, text, mention.start, mention.end, reach=4):
+        # (a time of day, the clock or when something starts, holds no duration)
+        could = could and not (mention.kind == "duration" and info.timing in ("clock", "at"))
+        near = near_vocab(info, text, mention.start, mention.end, reach=4)
+        repeat = repeat_for_a_length(text, mention, info)
+        if could and near and not (repeat and near < 0.5):
             return True
+        if repeat:
+            continue  # "cleaning every two hours" is no sleep period's LENGTH
         lasting = timed and info.timing not in ("clock", "finish", "at")  # not a time of day
         if (kind == "time" and lasting) or (kind != "time" and info.dimension == kind):
             return True

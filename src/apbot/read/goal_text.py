@@ -13,7 +13,7 @@ from apbot.read.goal_vocab import (
     split_camel,
     stem,
 )
-from apbot.read.numbers import Token, tokenize
+from apbot.read.numbers import Mention, Token, tokenize
 
 CONNECTORS = frozenset({"and", "+", "-", "/", "&", ",", "then", "with", "n"})
 
@@ -288,3 +288,15 @@ def said_before(text: Text, k: int, word: str, reach: int = 4) -> bool:
         if text.stems[j] == word:
             return True
     return False
+
+
+_LENGTH_WORDS = frozenset({"length", "duration", "long"})
+
+
+def repeat_for_a_length(text: Text, mention: Mention, info: VarInfo) -> bool:
+    """A duration said as how often something comes round ("every two hours", "each 6 h") beside
+    a setting named for how long something lasts (a LENGTH, a DURATION): not what it asks, unless
+    the setting's own words stand right there (an interval setting may take it)."""
+    if mention.kind != "duration" or text.word(mention.start - 1) not in ("every", "each"):
+        return False
+    return bool(set(info.name.split("_")) & _LENGTH_WORDS)

@@ -18,6 +18,7 @@ _HOLD = (
 )
 _ABOUT = r"(?:for\s+)?(?:about\s+|at\s+least\s+|approx\.?\s+|approximately\s+|around\s+)?"
 _KEY = r"(?:\s+(?:key|button|pad|field|touch\s+field))?"
+_ARROW = r"(?:\s*[▲▼△▽◀▶◄►↑↓])?"
 _CELL_SPLIT = re.compile(r"\s{2,}|\s*[|│]\s*")
 _CELL_SECONDS = re.compile(rf"^(?:{_HOLD}\s+)?{_ABOUT}{_NUMBER}\s*{_UNIT}", re.IGNORECASE)
 _ROW_MARK = re.compile(r"^(?:\(\d{1,2}\)|\d{1,2}[.)]|[A-Z][.)]?)\s+")
@@ -68,3 +69,30 @@ def _legend_row(line: str, label: str) -> float | None:
 
 def _number(text: str) -> float:
     return float(text.replace(",", "."))
+
+
+def pair_hold_seconds(lines: list[str], first: str, second: str) -> float | None:
+    """The hold time for two keys held at once: "Hold WARM ▲ and COOL ▼ together for 5
+    seconds", "+ and − together 5 s", a legend's "ZONE + TIMER  Held together for 3 seconds"
+    (either key named first); the most often written one, None when none is."""
+    if not first.strip() or not second.strip():
+        return None
+    found: Counter[float] = Counter()
+    for a, b in ((first, second), (second, first)):
+        one = re.escape(a.strip()).replace(r"\ ", r"\s+")
+        two = re.escape(b.strip()).replace(r"\ ", r"\s+")
+        keys = (  # (a key's printed arrow may follow its name: "WARM ▲ and COOL ▼")
+            rf"(?:the\s+)?(?<![\w]){one}(?![\w]){_ARROW}{_KEY}\s*(?:and|\+|&)\s*"
+            rf"(?:the\s+)?(?<![\w]){two}(?![\w]){_ARROW}{_KEY}"
+        )
+        pattern = re.compile(
+            rf"(?:{_HOLD}\s+)?{keys}\s*,?\s*(?:(?:are\s+)?held\s+)?together\s*[,:]?\s*{_ABOUT}"
+            rf"{_NUMBER}\s*{_UNIT}|{_HOLD}\s+{keys}\s+{_ABOUT}{_NUMBER}\s*{_UNIT}",
+            re.IGNORECASE,
+        )
+        for line in lines:
+            for match in pattern.finditer(line):
+                found[_number(match.group(1) or match.group(2))] += 1
+    if not found:
+        return None
+    return max(found, key=lambda s: (found[s], s))

@@ -23,7 +23,8 @@ from apbot.read.cases_resets import apply_resets
 from apbot.read.cases_zones import zone_twins
 from apbot.read.code_words import name_code_words
 from apbot.read.codes import name_codes
-from apbot.read.hold_seconds import hold_seconds
+from apbot.read.held_walks import read_held_walks
+from apbot.read.hold_seconds import hold_seconds, pair_hold_seconds
 from apbot.read.initials import read_initials
 from apbot.read.labels import find_labels
 from apbot.read.off_words import read_held_off_words, read_off_words
@@ -70,6 +71,7 @@ def read_manual(
     read_initials(builder)
     read_bar_shows(builder)
     apply_resets(builder)
+    read_held_walks(builder)  # (after the resets: those were read for the switch it replaces)
     data = _assemble(builder, appliance_id, category)
     data["actions"].update({a: {"skill": "wait", "seconds": w} for a, w in waits.items()})
     notes = builder.notes
@@ -139,9 +141,15 @@ def _actions(b: Builder) -> dict[str, dict[str, Any]]:
     """Each action's spec; a hold lasts as long as the manual says for its key."""
     actions = {i.name: _action(i) for i in b.infos}
     for info in b.infos:
-        if info.skill != "hold" or len(info.controls) != 1 or info.controls[0] not in b.labels:
+        if info.skill != "hold" or not all(c in b.labels for c in info.controls):
             continue
-        held = hold_seconds(b.manual.lines, b.labels[info.controls[0]].text)
+        texts = [b.labels[c].text for c in info.controls]
+        if len(texts) == 1:
+            held = hold_seconds(b.manual.lines, texts[0])
+        elif len(texts) == 2:  # two keys held at once ("hold ▲ and ▼ together for 5 s")
+            held = pair_hold_seconds(b.manual.lines, *texts)
+        else:
+            continue
         if held is not None and held > 0:
             actions[info.name]["seconds"] = held
     return actions

@@ -297,12 +297,15 @@ def _state_word(
 
 
 def _lock_word(b: Builder, info: ActionInfo) -> str:
-    for i in b.context(list(info.controls)):
-        for m in re.finditer(
-            r"\b([A-Z][A-Z-]*LOC[A-Z]*|LOC|LOCK(?:ED)?|[A-Z]-?L)\b", b.manual.units[i].text
-        ):
-            if "CLOCK" not in m.group(1):
-                return m.group(1)
+    """The word the display shows while locked: one spelling LOCK first, anywhere in the key's
+    context, else a two-letter code (C-L, LL) — a code near the keys may be another setting's
+    (SL for a sleep mode the same keys' section lists)."""
+    context = b.context(list(info.controls))
+    for pattern in (r"\b([A-Z][A-Z-]*LOC[A-Z]*|LOC|LOCK(?:ED)?)\b", r"\b([A-Z]-?L)\b"):
+        for i in context:
+            for m in re.finditer(pattern, b.manual.units[i].text):
+                if "CLOCK" not in m.group(1):
+                    return m.group(1)
     return ""
 
 

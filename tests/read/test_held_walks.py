@@ -1,0 +1,83 @@
+"""A held key opening two settings walked with the stepping pair (`held_walks.py`)."""
+
+from __future__ import annotations
+
+from apbot.read import read_manual
+
+# a pond pump (our own words): QUIET held opens its start time, then its length
+POND = """BRIOLA PP-3 pond pump controller
+
+KEYS
+  QUIET     Press: quiet period on / off.   Hold 3 s: set the quiet period.
+  UP        Raise the value shown.
+  DOWN      Lower the value shown.
+  FLOW      Next flow level: LOW, MID, HIGH.
+
+QUIET PERIOD
+  During the quiet period the pump runs at its lowest flow.
+
+  Press QUIET to switch the quiet period on; press it again to switch it off.
+
+  1. Hold QUIET for 3 seconds. The display shows the start time, e.g. Q 21:00.
+  2. Press UP or DOWN to change the start time in steps of 15 minutes. After 23:45
+     comes 00:00.
+  3. Press QUIET briefly. The display shows the length, e.g. Q 6 h.
+  4. Press UP or DOWN to change the length, from 1 to 10 hours in steps of 1 hour.
+  5. Do not touch any key for 5 seconds: the setting is stored.
+
+FLOW
+  Press FLOW to choose LOW, MID or HIGH. Press UP or DOWN to raise or lower the flow.
+"""
+POND_ACTIONS = ["press_quiet", "hold_quiet", "press_up", "press_down", "press_flow", "wait_5s"]
+
+
+def test_held_key_walks_a_start_time_and_a_length() -> None:
+    model = read_manual(POND, POND_ACTIONS).model
+    walks = [
+        steps
+        for steps in model.features.values()
+        if [s.actions for s in steps][:1] == [["hold_quiet"]]
+    ]
+    assert len(walks) == 1
+    steps = walks[0]
+    assert [s.actions[0] for s in steps] == ["hold_quiet", "press_up", "press_quiet", "press_up"]
+    start, length = steps[1].variable, steps[3].variable
+    assert start is not None and length is not None
+    assert model.variables[start].type == "time"
+    assert next(tuple(r) for r in model.variables[start].ranges or [])[1:] == ("23:45:00", 900)
+    assert model.variables[length].unit == "h"
+    assert all(s.timeout == 5 for s in steps)
+
+
+# a spa panel (our own words): the lock's word is LOCK, though a sleep mode's code SL stands
+# nearer the keys' rows
+SPA = """AQUA S-2 spa panel
+
+KEYS
+  UP / DOWN   Raise / lower the set temperature.
+  MODE        Next heating mode ST, EC, SL.
+  UP + DOWN   Hold both 5 s: panel lock on / off.
+
+  Heating modes: ST standard, EC economy, SL sleep. The keys UP and DOWN set 26 to 40 °C.
+
+PANEL LOCK
+  Hold UP and DOWN together for 5 seconds. LOCK appears and the keys are locked.
+"""
+SPA_ACTIONS = ["press_up", "press_down", "press_mode", "hold_up_down"]
+
+
+def test_the_lock_word_is_lock_before_a_two_letter_code() -> None:
+    model = read_manual(SPA, SPA_ACTIONS).model
+    locks = [v for v in model.variables.values() if (v.show or {}).get("on") in ("LOCK", "SL")]
+    assert locks and all(v.show["on"] == "LOCK" for v in locks)
+
+
+def test_two_keys_held_together_take_the_hold_time_the_manual_gives() -> None:
+    from apbot.read.hold_seconds import pair_hold_seconds
+
+    lines = ["  2+3  WARM ▲ and COOL ▼ together      5 s: panel lock on / off",
+             "Hold WARM ▲ and COOL ▼ together for 5 seconds. LOCK appears."]  # fmt: skip
+    assert pair_hold_seconds(lines, "COOL ▼", "WARM ▲") == 5
+    assert pair_hold_seconds(lines, "WARM", "COOL") == 5  # names printed without their arrows
+    assert pair_hold_seconds(["ZONE + TIMER  Held together for 3 seconds"], "ZONE", "TIMER") == 3
+    assert pair_hold_seconds(["Hold ZONE for 5 seconds."], "ZONE", "TIMER") is None
