@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from apbot.read.text import parse_manual
 from apbot.read.text_boxes import unbox
+from apbot.read.values_stepped import find_stepped_pieces
 
 GRID = """
 SETTINGS
@@ -35,3 +36,12 @@ def test_an_ascii_grid_table_is_read_as_a_table() -> None:
 def test_a_panel_drawing_boxed_in_ascii_is_left_alone() -> None:
     text = "+-----------------+\n|  [ A ]   [ B ]  |\n+-----------------+\n"
     assert unbox(text) == text  # no column marks: a drawing, not a table
+
+
+def test_a_clock_range_stepped_in_seconds_is_minutes_and_seconds() -> None:
+    pieces = find_stepped_pieces("0:30 to 5:00 | 30 seconds 5:00 to 30:00 | 1 minute")
+    assert [(p.low, p.high, p.step) for p in pieces] == [(30, 300, 30), (300, 1800, 60)]
+    said = "0:00 to 5:00   in 30-second steps 5:00 to 20:00   in 1-minute steps"
+    assert [(p.low, p.high) for p in find_stepped_pieces(said)] == [(0, 300), (300, 1200)]
+    hours = find_stepped_pieces("0:30 - 12:00 30 minutes 12:00 - 24:00 1 hour")
+    assert [(p.low, p.high) for p in hours] == [(1800, 43200), (43200, 86400)]  # still h:mm

@@ -32,6 +32,7 @@ from apbot.read.evidence_whose import (
     _named_only,
     _presses_another,
     _with_items,
+    _with_rows,
     _without_own_name,
     lead_cell,
 )
@@ -136,7 +137,7 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
             text = units[i].text
             unit = units[i]
             item = unit.bullet and unit.step is None  # (an item's spans are its lead's)
-            told = text if item else _with_items(units, i)
+            told = text if item else _with_rows(units, i) if unit.cells else _with_items(units, i)
             pieced = (
                 len(find_stepped_pieces(told)) >= 2  # its steps, item by item, pressing
                 and self._only_pair_named(i, tokens)  # the pair, not another key's setting

@@ -98,6 +98,17 @@ def _foreign_units(items: list[str], tokens: list[str]) -> bool:
     return False
 
 
+def _with_rows(units: list[Unit], i: int) -> str:
+    """A table's row with the rows under it ("| 0:30 to 5:00 | 30 seconds |" then "| 5:00 to
+    30:00 | 1 minute |"): a range told in pieces, a row a piece."""
+    texts = [units[i].text]
+    for unit in units[i + 1 : i + 5]:
+        if not unit.cells or unit.header != units[i].header:
+            break
+        texts.append(unit.text)
+    return " ".join(texts)
+
+
 def _with_items(units: list[Unit], i: int) -> str:
     """A sentence with the list items right under it ("Press + … it." then "- from 0:00 to
     1:00 each press …", "- from 1:00 to 24:00 …"): a step told in pieces, an item a piece."""
