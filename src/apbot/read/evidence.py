@@ -154,9 +154,10 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
                 unit.cells
                 and unit.header
                 and i not in mentions
-                and _KEY_HEAD.search(unit.header[0])
+                and _KEY_HEAD.search(unit.header[_lead_index(unit.cells)])
             ):
                 continue  # the next row of a key table: another key's, even one not on this panel
+                # (after a column that numbers the rows: "| No. | Key / part | Touch |")
             if unit.cells and unit.header and unit.cells[0].upper() in own:
                 head = unit.header[0].lower()
                 if not re.search(r"key|button|control|pad|dial|knob|symbol|name", head):
@@ -347,6 +348,12 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
             about_it = [i for i in self.context(tokens) if i not in elsewhere or i in mentions]
             wrap_ends(ev, units, about_it)
         return ev
+
+
+def _lead_index(cells: tuple[str, ...]) -> int:
+    """The column of a row's :func:`lead_cell` (1 when a first column only numbers the rows)."""
+    lead = lead_cell(cells)
+    return next(k for k, cell in enumerate(cells) if cell is lead)
 
 
 def _covers(pieces: list[Range], ranges: list[Range]) -> bool:

@@ -40,7 +40,9 @@ def lead_cell(cells: tuple[str, ...]) -> str:
     return cells[0]
 
 
-_KEY_HEAD = re.compile(r"^\W*(?:keys?|buttons?|controls?|elements?|symbols?)\W*$", re.I)
+# a table column of keys: "Key", "Buttons", "Key(s)", "Key / element"
+_KEY_NOUN = r"(?:key|button|control|element|symbol|part)(?:s|\(s\))?"
+_KEY_HEAD = re.compile(rf"^\W*{_KEY_NOUN}(?:\s*/\s*{_KEY_NOUN})?\W*$", re.I)
 
 
 _PRESS_VERB = r"\b(?:press|touch|tap|push)(?:es|ing)?\s+(?:and\s+hold\s+)?(?:the\s+)?"
