@@ -7,8 +7,6 @@ from __future__ import annotations
 from apbot.read import read_manual
 from apbot.read.text import parse_manual
 from apbot.read.text_boxes import unbox
-from apbot.read.value_lists import comes_round
-from apbot.read.values import ON_OFF_RE
 from apbot.read.values_stepped import find_stepped_pieces
 
 GRID = """
@@ -104,51 +102,3 @@ def test_a_push_and_turn_knob_sets_its_own_time() -> None:
         ("00:00:30", "00:04:00", 30),
         ("00:04:00", "00:20:00", 60),
     ]
-
-
-def test_a_cycle_of_settings_may_share_a_name_with_a_key() -> None:
-    text = "Touch MODE to step through: AUTO → STERI+DRY → STERI → DRY → STORE → AUTO"
-    assert comes_round(text, ["AUTO", "STERI+DRY", "STERI", "DRY", "STORE"])
-    assert not comes_round("MODE → DRY → START", ["MODE", "DRY", "START"])  # keys in turn
-
-
-CABINET = """
-KEYS
-
-  Touch MODE to step through the programmes in this order:
-  AUTO → HOT+DRY → HOT → DRY → KEEP → AUTO
-
-  Touch DRY to set the drying time with − and +, 10 to 60 minutes.
-"""
-
-
-def test_the_programme_cycle_is_read_though_dry_is_also_a_key() -> None:
-    model = read_manual(CABINET, ["press_mode", "press_dry", "press_minus", "press_plus"]).model
-    values = [v.values for v in model.variables.values() if hasattr(v, "values")]
-    assert ["auto", "hot+dry", "hot", "dry", "keep"] in values
-
-
-def test_power_cycled_is_no_toggle() -> None:
-    assert not ON_OFF_RE.search("The choices are kept when it is switched off and on again.")
-    assert ON_OFF_RE.search("Press LIGHT to switch the lamp on and off.")
-
-
-SEALER = """
-KEYS
-
-  | No. | Key   | Function                                                            |
-  |-----|-------|---------------------------------------------------------------------|
-  | 1   | POWER | On / off.                                                           |
-  | 2   | FOOD  | Touch: DRY <-> MOIST. | Touch and hold 3 seconds: double seal on / off. |
-
-  Touch FOOD to change between DRY and MOIST. Default: DRY.
-  Hold FOOD for 3 seconds again to switch the double seal off.
-"""
-
-
-def test_the_keys_hold_cell_leaves_its_press_two_named_settings() -> None:
-    """ "Touch and hold 3 seconds: … on / off" is the hold's on/off; the press switches between
-    the two settings named in its sentence."""
-    model = read_manual(SEALER, ["press_power", "press_food", "hold_food"]).model
-    pressed = next(f for f in model.features.values() if f[0].actions == ["press_food"])
-    assert model.variables[pressed[0].variable].values == ["dry", "moist"]

@@ -59,7 +59,7 @@ from apbot.read.shapes import (
     is_wait,
 )
 from apbot.read.text_sections import other_model, surroundings
-from apbot.read.value_lists import comes_round, named_list
+from apbot.read.value_lists import named_list
 from apbot.read.values import (
     EACH_PRESS_RE,
     ON_OFF_RE,
@@ -167,9 +167,7 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
             theirs = bool(unit.cells) and _cell_key(lead_cell(unit.cells)) in other_keys
             lists = [] if quiet or theirs else self._lists(i, i in mentions, tokens)
             for items, prio in lists:
-                if _foreign_units(items, tokens) or (
-                    _keyish(items, others, own) and not _own_cycle(items, text, others)
-                ):
+                if _keyish(items, others, own) or _foreign_units(items, tokens):
                     continue  # a list of keys ("DELAY, then + / −"), not of values
                 if len(items) >= 3 and any(v.upper().strip(" .") in own for v in items):
                     continue  # "NORMAL → CONT. → FAN" near FAN: a list with a mode named FAN
@@ -356,13 +354,6 @@ def _lead_index(cells: tuple[str, ...]) -> int:
     """The column of a row's :func:`lead_cell` (1 when a first column only numbers the rows)."""
     lead = lead_cell(cells)
     return next(k for k, cell in enumerate(cells) if cell is lead)
-
-
-def _own_cycle(items: list[str], text: str, others: set[str]) -> bool:
-    """A cycle of settings ("AUTO → STERI+DRY → STERI → DRY → STORE → AUTO") most of which are
-    no key's name: the settings a key steps through, though one or two are named as keys are."""
-    keys = sum(v.lower() in others for v in items)
-    return comes_round(text, items) and 2 * keys < len(items)
 
 
 def _covers(pieces: list[Range], ranges: list[Range]) -> bool:

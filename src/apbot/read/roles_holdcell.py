@@ -19,8 +19,7 @@ _SECONDS = r"(?:for\s+)?\d+(?:[.,]\d+)?\s*(?:s|sec|secs|seconds?)\b"
 # how long to hold, as a key table writes it: "3 s", "2 sec", "5 seconds"
 HELD_SECONDS = r"\d+(?:[.,]\d+)?\s*s(?:ec\w*)?\b"
 # a cell of the column kept for holding: it says "hold" or leads with the seconds
-# ("Touch and hold 3 seconds: double seal on / off" says it too)
-HOLD_CELL = rf"(?:(?:(?:press|touch|push)\s+and\s+)?hold\b|{HELD_SECONDS})"
+HOLD_CELL = rf"(?:hold\b|{HELD_SECONDS})"
 _HELD = re.compile(  # "Hold for 2 seconds: twin-needle mode on/off", "3 s: warm mist on / off"
     rf"^\W*(?:(?:(?:press|touch|push)\s+and\s+)?hold\s*(?:{_SECONDS})?|{_SECONDS})\s*:\s*"
     r"(?P<noun>[a-z][a-z -]{2,30}?)\s+(?:mode\s+)?(?:on\s*(?:/|or)\s*off|off\s*(?:/|or)\s*on)\b",

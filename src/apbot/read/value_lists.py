@@ -152,17 +152,6 @@ def _shared_noun_dropped(items: list[str]) -> list[str]:
     return [m.group(1) for m in found if m] if len(nouns) == 1 else items
 
 
-def comes_round(text: str, items: list[str]) -> bool:
-    """The arrows go on from the last item back to the first ("AUTO → STERI+DRY → … → STORE →
-    AUTO"): one key's cycle of settings, which a run of keys pressed one after another ("MODE →
-    START") never is, even when some settings share a key's name (a DRY programme, a DRY key)."""
-    if len(items) < 3:
-        return False
-    last, first = re.escape(items[-1]), re.escape(items[0])
-    arrow = _ARROW.pattern
-    return bool(re.search(rf"(?<!\w){last}{arrow}{first}(?!\w)", text, re.IGNORECASE))
-
-
 def find_list(text: str) -> tuple[list[str], str] | None:
     """A list of values in one sentence, and how it was written ("arrows", "list")."""
     text = _arrow_cell(text)
