@@ -34,6 +34,7 @@ from apbot.read.evidence_whose import (
     _named_only,
     _presses_another,
     _with_items,
+    _with_rows,
     _without_own_name,
     lead_cell,
 )
@@ -145,7 +146,7 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
             text = units[i].text
             unit = units[i]
             item = unit.bullet and unit.step is None  # (an item's spans are its lead's)
-            told = text if item else _with_items(units, i)
+            told = text if item else _with_rows(units, i) if unit.cells else _with_items(units, i)
             pieced = (
                 len(find_stepped_pieces(told)) >= 2  # its steps, item by item, pressing
                 and self._only_pair_named(i, tokens)  # the pair, not another key's setting
@@ -162,9 +163,10 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
                 unit.cells
                 and unit.header
                 and i not in mentions
-                and _KEY_HEAD.search(unit.header[0])
+                and _KEY_HEAD.search(unit.header[_lead_index(unit.cells)])
             ):
                 continue  # the next row of a key table: another key's, even one not on this panel
+                # (after a column that numbers the rows: "| No. | Key / part | Touch |")
             if unit.cells and unit.header and unit.cells[0].upper() in own:
                 head = unit.header[0].lower()
                 if not re.search(r"key|button|control|pad|dial|knob|symbol|name", head):
@@ -363,6 +365,12 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
             about_it = [i for i in self.context(tokens) if i not in elsewhere or i in mentions]
             wrap_ends(ev, units, about_it)
         return ev
+
+
+def _lead_index(cells: tuple[str, ...]) -> int:
+    """The column of a row's :func:`lead_cell` (1 when a first column only numbers the rows)."""
+    lead = lead_cell(cells)
+    return next(k for k, cell in enumerate(cells) if cell is lead)
 
 
 def _covers(pieces: list[Range], ranges: list[Range]) -> bool:

@@ -88,13 +88,7 @@ class ListReader(TableReader):
                     if j not in seen:
                         seen.append(j)
                     if re.search(r"\btable\b", units[j].text, re.I):
-                        k = j + 1
-                        while k < len(units) and not units[k].cells and k < j + 3:
-                            k += 1
-                        while k < len(units) and units[k].cells:
-                            if k not in seen:
-                                seen.append(k)
-                            k += 1
+                        self._table_after(j, seen, 3)
         for token in tokens:
             tw = [w for w in words(token.replace("_", " ")) if len(w) >= 4]
             for i, unit in enumerate(units):
@@ -111,7 +105,21 @@ class ListReader(TableReader):
                             break
                         if j not in seen:
                             seen.append(j)
+                        if units[j].text.rstrip().endswith(":"):
+                            self._table_after(j, seen, 1)  # "The time changes in these steps:"
         return seen
+
+    def _table_after(self, j: int, seen: list[int], gap: int) -> None:
+        """The rows of the table that starts within ``gap`` units after unit ``j``, added to
+        ``seen``: the table a sentence points to."""
+        units = self.manual.units
+        k = j + 1
+        while k < len(units) and not units[k].cells and k < j + gap:
+            k += 1
+        while k < len(units) and units[k].cells:
+            if k not in seen:
+                seen.append(k)
+            k += 1
 
     def _pair_steps(self, tokens: list[str], mentions: set[int]) -> set[int]:
         """Units that press only the stepping pair right after a unit pressing this key ("1.

@@ -40,7 +40,9 @@ def lead_cell(cells: tuple[str, ...]) -> str:
     return cells[0]
 
 
-_KEY_HEAD = re.compile(r"^\W*(?:keys?|buttons?|controls?|elements?|symbols?)\W*$", re.I)
+# a table column of keys: "Key", "Buttons", "Key(s)", "Key / element"
+_KEY_NOUN = r"(?:key|button|control|element|symbol|part)(?:s|\(s\))?"
+_KEY_HEAD = re.compile(rf"^\W*{_KEY_NOUN}(?:\s*/\s*{_KEY_NOUN})?\W*$", re.I)
 
 
 _PRESS_VERB = r"\b(?:press|touch|tap|push)(?:es|ing)?\s+(?:and\s+hold\s+)?(?:the\s+)?"
@@ -96,6 +98,17 @@ def _foreign_units(items: list[str], tokens: list[str]) -> bool:
         if m and not _fits(unit_name(m.group(1)), tokens):
             return True
     return False
+
+
+def _with_rows(units: list[Unit], i: int) -> str:
+    """A table's row with the rows under it ("| 0:30 to 5:00 | 30 seconds |" then "| 5:00 to
+    30:00 | 1 minute |"): a range told in pieces, a row a piece."""
+    texts = [units[i].text]
+    for unit in units[i + 1 : i + 5]:
+        if not unit.cells or unit.header != units[i].header:
+            break
+        texts.append(unit.text)
+    return " ".join(texts)
 
 
 def _with_items(units: list[Unit], i: int) -> str:

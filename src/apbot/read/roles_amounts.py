@@ -60,6 +60,7 @@ def assign_amounts(
         ccw = [i.name for i in dials[t] if i.skill == "turn_ccw"]
         if cw and ccw:
             steppers.append((cw, ccw))
+    entry_keys = _pushed_dials(b, entry_keys, evidence, dials, generic_dials, steppers)
     if not any(k.skill == "press" for k in entry_keys) and (steppers or digits):
         # (a key's hold that sets a timer leaves its press to set the key's own amount)
         # (a key that only closes an entry, "OK  Confirms an entry", types nothing itself)
@@ -262,6 +263,49 @@ def assign_amounts(
             f"set_{var}", [{"actions": pair["up"] + pair["down"], "variable": var, "effect": eff}]
         )
     return silent
+
+
+def _pushed_dials(
+    b: Builder,
+    entry_keys: list[ActionInfo],
+    evidence: dict[str, Evidence],
+    dials: dict[str, list[ActionInfo]],
+    generic_dials: list[str],
+    steppers: list[tuple[list[str], list[str]]],
+) -> list[ActionInfo]:
+    """A push-and-turn knob whose push opens an amount ("Push the TIME knob: the time flashes;
+    turn it to change the time"): the push, then the knob's own turns, set it, not a stepping
+    pair elsewhere on the panel (unless the knob is the only way the other entry keys have to
+    set theirs). Its turns leave ``steppers``; returns the entry keys left."""
+    left: list[ActionInfo] = []
+    for key in entry_keys:
+        token = key.controls[0]
+        if key.skill != "press" or len(key.controls) != 1 or token not in dials:
+            left.append(key)
+            continue
+        cw = [i.name for i in dials[token] if i.skill == "turn_cw"]
+        ccw = [i.name for i in dials[token] if i.skill == "turn_ccw"]
+        others = [k for k in entry_keys if k is not key]
+        if not (cw and ccw) or (others and [(cw, ccw)] == steppers):
+            left.append(key)  # (the knob is also how the other keys' amounts are set)
+            continue
+        if (cw, ccw) in steppers:
+            steppers.remove((cw, ccw))
+        ev = evidence[key.name]
+        if ev.values and len(ev.values) >= 3 and numeric_list(ev.values):
+            ev = list_evidence(ev)
+        name, lab = var_name(b, key), label_of(b, token)
+        named = [w for w in words(lab) if w not in CHOICE_WORDS]
+        if set(words(name)) & CHOICE_WORDS and named:
+            name = "_".join(named)  # the knob printed TIME sets a time, not a "knob"
+        var = b.add_number(name, lab, ev, cyclic=False)
+        eff = {**{a: "next" for a in cw}, **{a: "prev" for a in ccw}}
+        b.feature(
+            f"set_{var}",
+            [{"actions": [key.name]}, {"actions": cw + ccw, "variable": var, "effect": eff}],
+        )
+        b.note(f"features.set_{var}", f"{key.name} then the knob's own turns", ev.range_at)
+    return left
 
 
 def assign_dials(

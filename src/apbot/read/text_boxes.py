@@ -20,10 +20,13 @@ _TOP = re.compile(r"^\s*┌[─━┬]*┬[─━┬]*┐\s*$")  # a top border 
 _RULE = re.compile(r"^\s*[├╞┝][─━═┼╪┿]*[┤╡┥]\s*$")
 _BOTTOM = re.compile(r"^\s*└[─━┴]*┘\s*$")
 _ROW = re.compile(r"^\s*│.*│\s*$")
+# the same box typed in ASCII ("+------+----+", "| A1 | … |"): every border is the same line
+_GRID = re.compile(r"^\s*\+(?:[-=]{2,}\+){2,}\s*$")
+_GRID_ROW = re.compile(r"^\s*\|.*\|\s*$")
 
 
-def _cells(line: str) -> list[str]:
-    return [c.strip() for c in line.strip().strip("│").split("│")]
+def _cells(line: str, bar: str = "│") -> list[str]:
+    return [c.strip() for c in line.strip().strip(bar).split(bar)]
 
 
 def _rule(width: int) -> str:
@@ -35,6 +38,9 @@ def unbox(text: str) -> str:
     lines = text.split("\n")
     k = 0
     while k < len(lines):
+        if _GRID.match(lines[k]):
+            k = _grid(lines, k)
+            continue
         if not _TOP.match(lines[k]):
             k += 1
             continue
@@ -49,21 +55,43 @@ def unbox(text: str) -> str:
     return "\n".join(lines)
 
 
-def _rewrite(lines: list[str], top: int, bottom: int) -> None:
+def _grid(lines: list[str], top: int) -> int:
+    """The ASCII box whose top border is line ``top``, rewritten as :func:`_rewrite` does (its
+    last border is the bottom, the ones between are rules); the line to go on from."""
+    end = top + 1
+    while end < len(lines) and (_GRID_ROW.match(lines[end]) or _GRID.match(lines[end])):
+        end += 1
+    bottom = end - 1
+    while bottom > top and not _GRID.match(lines[bottom]):
+        bottom -= 1
+    if bottom - top < 2 or not any(_GRID_ROW.match(lines[i]) for i in range(top, bottom)):
+        return top + 1
+    _rewrite(lines, top, bottom, bar="|", rule=_GRID, row=_GRID_ROW)
+    return bottom + 1
+
+
+def _rewrite(
+    lines: list[str],
+    top: int,
+    bottom: int,
+    bar: str = "│",
+    rule: re.Pattern[str] = _RULE,
+    row: re.Pattern[str] = _ROW,
+) -> None:
     """Lines ``top``..``bottom`` (the borders) of one box table, rewritten in place. Header
     lines above the table's rule stay rows of their own (the table reader joins a header
     written on two lines); below it, a wrapped line joins its row and becomes a rule line the
     reader passes over. A box with no rule gets one under its first row, that row moving up
     onto the top border's line, so its wrapped lines can be passed over too."""
     inside = range(top + 1, bottom)
-    width = max(len(_cells(lines[i])) for i in inside if _ROW.match(lines[i]))
-    first_rule = next((i for i in inside if _RULE.match(lines[i])), None)
+    width = max(len(_cells(lines[i], bar)) for i in inside if row.match(lines[i]))
+    first_rule = next((i for i in inside if rule.match(lines[i])), None)
     rows: list[tuple[int, list[str]]] = []  # (line index, cells) of each row started
     for i in inside:
-        if _RULE.match(lines[i]):
+        if rule.match(lines[i]):
             lines[i] = _rule(width)
             continue
-        cells = (_cells(lines[i]) + [""] * width)[:width]
+        cells = (_cells(lines[i], bar) + [""] * width)[:width]
         in_header = first_rule is not None and i < first_rule
         if rows and not cells[0] and any(cells) and not in_header:
             last = rows[-1][1]

@@ -21,8 +21,9 @@ from apbot.read.values import (
 )
 
 _STEPPED_PIECE_RE = re.compile(  # "0:30 – 12:00  30 minutes": a range, then its step
-    rf"(?<![\d:])({_TIME}){_DASH}({_TIME})(?![\d:])\s*(?:h\b)?\s*(?:by\s+)?"
-    r"(\d+(?:[.,]\d+)?|one|an?)\s*(minutes?|mins?|hours?|hrs?|h)\b",
+    # (or a table's row "| 0:30 to 5:00 | 30 seconds |", "0:00 to 5:00  in 30-second steps")
+    rf"(?<![\d:])({_TIME}){_DASH}({_TIME})(?![\d:])\s*(?:h\b)?\s*\|?\s*(?:by\s+|in\s+)?"
+    r"(\d+(?:[.,]\d+)?|one|an?)[\s-]*(minutes?|mins?|hours?|hrs?|h|seconds?|secs?|s)\b",
     re.IGNORECASE,
 )
 
@@ -74,8 +75,13 @@ def _each_press_pieces(text: str) -> list[Range]:
 
 def _stepped_clock_pieces(text: str) -> list[Range]:
     pieces: list[Range] = []
-    for m in _STEPPED_PIECE_RE.finditer(text):
-        low, high = _hmm(m.group(1)), _hmm(m.group(2))
+    found = list(_STEPPED_PIECE_RE.finditer(text))
+    # a clock stepped in seconds, or one past 24 ("5:00 to 30:00"), is minutes and seconds
+    min_sec = any(unit_name(m.group(4)) == "s" for m in found) or any(
+        int(m.group(2).split(":")[0]) > 24 for m in found
+    )
+    for m in found:
+        low, high = _clock(m.group(1), min_sec), _clock(m.group(2), min_sec)
         amount = 1.0 if m.group(3).lower() in ("one", "a", "an") else number(m.group(3))
         if amount is None or not low < high or (pieces and pieces[-1].high != low):
             return pieces if len(pieces) >= 2 else []
@@ -148,6 +154,12 @@ def find_arrow_pieces(text: str) -> list[Range]:
             break
         pieces.append(Range(low, high, "s", seconds(amount, unit_name(m.group(5)))))
     return pieces if len(pieces) >= 2 else []
+
+
+def _clock(text: str, min_sec: bool) -> int:
+    """Seconds in a clock figure, read as m:ss or h:mm."""
+    first, second = text.split(":")
+    return int(first) * 60 + int(second) if min_sec else _hmm(text)
 
 
 def _hmm(text: str) -> int:
