@@ -420,3 +420,12 @@ def own_concepts(info: VarInfo) -> set[str]:
 def own_stems(info: VarInfo) -> set[str]:
     words = name_words(info.name) + (name_words(info.var.label) if info.var.label else [])
     return {stem(w) for w in words if w not in STOP_WORDS}
+
+
+def its_own_word(view: Model, info: VarInfo, word: str) -> bool:
+    """A word of the setting's own name that no other setting's name has: it names that one
+    setting even when it is as general a word as "heat" or "water" (a HEAT switch beside a
+    TEMPERATURE, a WATER level beside a SEAT level)."""
+    return word in own_stems(info) and not any(
+        other is not info and word in own_stems(other) for other in view.infos.values()
+    )
