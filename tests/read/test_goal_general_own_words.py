@@ -89,3 +89,33 @@ def test_a_negated_heating_names_no_switch(pool: ApplianceModel) -> None:
 def test_the_water_off_is_the_water_level(pool: ApplianceModel) -> None:
     goal = parse_instruction(loads_model(WARMER), "Water off and the seat on high.")
     assert goal == {"water_level": "off", "seat_level": "high"}
+
+
+LOAVES = """
+appliance: {id: loaves_1, category: bread_maker, name: "Mika B1 bread maker", brand: M}
+controls:
+  - {id: loaf_button, kind: button, label: "LOAF"}
+  - {id: menu_button, kind: button, label: "MENU"}
+variables:
+  loaf:
+    type: discrete
+    values: ["off", "on"]
+  menu:
+    type: discrete
+    values: [basic, french]
+actions:
+  press_loaf: {control: loaf_button}
+  press_menu: {control: menu_button}
+features:
+  loaf:
+    - {actions: [press_loaf], variable: loaf, effect: toggle}
+  menu:
+    - {actions: [press_menu], variable: menu, effect: next}
+display:
+  idle: ""
+"""
+
+
+def test_a_word_of_a_kind_of_setting_names_no_switch() -> None:
+    """ "a French loaf": the bread, not a LOAF switch (a loaf is a size, a word for a kind)."""
+    assert parse_instruction(loads_model(LOAVES), "A French loaf, please.") == {"menu": "french"}
