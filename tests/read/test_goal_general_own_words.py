@@ -119,3 +119,18 @@ display:
 def test_a_word_of_a_kind_of_setting_names_no_switch() -> None:
     """ "a French loaf": the bread, not a LOAF switch (a loaf is a size, a word for a kind)."""
     assert parse_instruction(loads_model(LOAVES), "A French loaf, please.") == {"menu": "french"}
+
+
+def test_a_label_worn_by_a_held_keys_second_function_does_not_count() -> None:
+    """HEAT held 3 s switches °C / °F: a reader labels that switch HEAT too, yet "heating on"
+    still names the HEAT switch, whose name it is."""
+    held = (
+        POOL.replace("  pump:\n    type", '  unit:\n    label: "HEAT"\n    type: discrete\n'
+                     '    values: ["off", "on"]\n  pump:\n    type', 1)
+        .replace("  press_pump:", "  hold_heat: {control: heat_button, skill: hold, seconds: 3}\n"
+                 "  press_pump:", 1)
+        .replace("  pump:\n    - {", "  unit:\n    - {actions: [hold_heat], variable: unit, "
+                 "effect: toggle}\n  pump:\n    - {", 1)
+    )  # fmt: skip
+    goal = parse_instruction(loads_model(held), "Heating on at 28 °C.")
+    assert goal.get("heat") == "on" and "unit" not in goal

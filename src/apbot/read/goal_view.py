@@ -431,5 +431,6 @@ def its_own_word(view: Model, info: VarInfo, word: str) -> bool:
     if kind_noun(concept(word)):
         return False  # "the loaf", "the mode": what kind of setting, never one setting's name
     return word in own_stems(info) and not any(
-        other is not info and word in own_stems(other) for other in view.infos.values()
-    )
+        other is not info and word in {stem(w) for w in name_words(other.name)}
+        for other in view.infos.values()
+    )  # a label another variable only wears (a held key's second function) does not count
