@@ -40,6 +40,7 @@ from apbot.read.goal_fractions import fractions
 from apbot.read.goal_kinds import kind_numbers
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
 from apbot.read.goal_open import open_entries
+from apbot.read.goal_ordinals import ordinal_numbers
 from apbot.read.goal_outside import kept_outside
 from apbot.read.goal_quantity_values import quantity_values
 from apbot.read.goal_remarks import without_remarks
@@ -97,7 +98,9 @@ def parse_instruction(
             f"{MAX_INSTRUCTION:,} are read",
         )
     view = model_view(model, manual or "")
-    text = Text.of(joined_compounds(view, without_remarks(view, str(instruction))))
+    text = Text.of(
+        ordinal_numbers(view, joined_compounds(view, without_remarks(view, str(instruction))))
+    )
     goal: Goal = {}
     claimed: set[int] = set()
     where: dict[str, int] = {}  # the token each setting was read from

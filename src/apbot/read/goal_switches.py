@@ -19,6 +19,7 @@ from apbot.read.goal_view import (
     Model,
     VarInfo,
     domain_values,
+    its_own_word,
     own_concepts,
     own_stems,
     step_effects,
@@ -62,8 +63,8 @@ def switches(
                     key, weight = concept(warmth), 1.0
             if weight <= 0 and _mode_synonym(text, k, own):
                 key, weight = next(iter(own)), 1.0  # "holiday mode" for a VACATION switch
-            if weight <= 0 or generic(key):
-                continue
+            if weight <= 0 or (generic(key) and not _general_own(view, info, text, k)):
+                continue  # "heating on" names a HEAT switch; "hold off the watering" no switch
             if _anothers_name(view, goal, info, text.stems[k]):
                 continue  # "eco" names the ECO switch, not HOLIDAY that wears ECO's label
             if _part_after(text, k, info.vocab):
@@ -136,6 +137,10 @@ def _part_after(text: Text, k: int, vocab: dict[str, float]) -> bool:
 
 
 _MODE_NOUNS = frozenset(stem(w) for w in ("mode", "setting", "programme", "function"))
+
+
+def _general_own(view: Model, info: VarInfo, text: Text, k: int) -> bool:
+    return its_own_word(view, info, text.stems[k]) and not negative_around(text, k)
 
 
 def _mode_synonym(text: Text, k: int, own: set[str]) -> bool:
@@ -347,8 +352,10 @@ def off_levels(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
         for k in range(len(text.tokens)):
             if k in claimed or text.word(k) in STOP_WORDS:
                 continue
-            if not (text.stems[k] in own or text.concepts[k] in mine) or generic(text.concepts[k]):
+            if not (text.stems[k] in own or text.concepts[k] in mine):
                 continue
+            if generic(text.concepts[k]) and not its_own_word(view, info, text.stems[k]):
+                continue  # "the water off": WATER TEMP, where no other setting says "water"
             if any(text.stems[j] in others for j in (k - 1, k + 1) if 0 <= j < len(text.stems)):
                 continue  # "the vertical steam off": a word of another setting's name
             if _said_off(text, k):

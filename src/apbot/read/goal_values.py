@@ -122,8 +122,17 @@ _GENERIC = frozenset(
 )
 
 
+_KIND_NOUNS = frozenset(concept(w) for w in ("program", "time", "level", "power", "size"))
+"""Of the general words, those that say what kind of setting is meant (any setting may be
+"the time", "the level"), not what it acts on (heat, water)."""
+
+
 def generic(key: str) -> bool:
     return key in _GENERIC
+
+
+def kind_noun(key: str) -> bool:
+    return key in _KIND_NOUNS
 
 
 def zone_case(var: Any) -> str | None:

@@ -34,6 +34,7 @@ from apbot.read.goal_values import (
     OFF_WORDS,
     ON_WORDS,
     in_days,
+    kind_noun,
     magnitude,
     name_words,
     numeric_values,
@@ -420,3 +421,16 @@ def own_concepts(info: VarInfo) -> set[str]:
 def own_stems(info: VarInfo) -> set[str]:
     words = name_words(info.name) + (name_words(info.var.label) if info.var.label else [])
     return {stem(w) for w in words if w not in STOP_WORDS}
+
+
+def its_own_word(view: Model, info: VarInfo, word: str) -> bool:
+    """A word of the setting's own name that no other setting's name has: it names that one
+    setting even when it is as general a word as "heat" or "water" (a HEAT switch beside a
+    TEMPERATURE, a WATER level beside a SEAT level) — unless it only says what kind of setting
+    is meant (a LOAF switch is not named by "a 750 g loaf")."""
+    if kind_noun(concept(word)):
+        return False  # "the loaf", "the mode": what kind of setting, never one setting's name
+    return word in own_stems(info) and not any(
+        other is not info and word in {stem(w) for w in name_words(other.name)}
+        for other in view.infos.values()
+    )  # a label another variable only wears (a held key's second function) does not count

@@ -1,0 +1,48 @@
+"""An ordinal before a setting's noun is that setting's number: "the second meal" is meal 2
+(a feeder's M2), "the first slot" slot 1, "it's the third day" day 3 (an incubator's day
+count). People count slots, meals and days by ordinals as often as by numbers; the rest of the
+parser reads "meal 2" (a code by its number, a number beside its setting's word), so the
+ordinal is written that way first. Only before a word of a setting that holds numbers or
+numbered codes, and never after a number ("a 30 second rinse" keeps its seconds)."""
+
+from __future__ import annotations
+
+import re
+
+from apbot.model.schema import DiscreteVariable, NumericVariable
+from apbot.read.goal_fit import CODE
+from apbot.read.goal_view import Model, VarInfo
+from apbot.read.goal_vocab import concept
+
+_ORDINALS = {
+    "first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5,
+    "sixth": 6, "seventh": 7, "eighth": 8, "ninth": 9, "tenth": 10,
+}  # fmt: skip
+_ORDINAL_NOUN = re.compile(r"\b(" + "|".join(_ORDINALS) + r")\s+([A-Za-z]+)\b", re.IGNORECASE)
+_NUMBER_BEFORE = re.compile(r"(\d|\b(?:one|two|three|four|five|six|seven|eight|nine|ten))\W*$")
+
+
+def ordinal_numbers(view: Model, instruction: str) -> str:
+    """ "the second meal" as "the meal 2" where MEAL holds numbered values or a number."""
+    nouns = {key for info in view.infos.values() if _numbered(info) for key in info.vocab if key}
+
+    def number(match: re.Match[str]) -> str:
+        if _NUMBER_BEFORE.search(instruction[: match.start()]):
+            return match[0]  # "30 second rinse", "one second": a unit of time
+        if concept(match[2].casefold()) not in nouns:
+            return match[0]
+        return f"{match[2]} {_ORDINALS[match[1].casefold()]}"
+
+    return _ORDINAL_NOUN.sub(number, instruction)
+
+
+def _numbered(info: VarInfo) -> bool:
+    """A setting of numbers (a day count) or of values coded with numbers (M1 … M4)."""
+    if info.role != "setting":
+        return False
+    if isinstance(info.var, NumericVariable):
+        return info.dimension is None
+    if isinstance(info.var, DiscreteVariable):
+        values = [str(v) for v in info.values]
+        return len(values) >= 2 and all(CODE.fullmatch(v) or v.isdigit() for v in values)
+    return False
