@@ -134,3 +134,14 @@ def test_bracketed_fault_codes_listed_together_far_from_the_cover_stay() -> None
     text = f"{intro}\n\nERRORS\n\n{codes}"
     texts = [u.text for u in parse_manual(text).units]
     assert any("tank is empty" in t for t in texts), texts
+
+
+def test_a_paragraph_after_a_tagged_one_without_a_blank_line_stays() -> None:
+    text = (
+        "Models BM-10 · BM-12 · BM-14\n\nTHE TIMER\n\n"
+        "[BM-14] The BM-14 timer goes up to 15 hours.\n"
+        "The TIMER key sets the delay from 1 to 13 hours in steps of 10 minutes.\n"
+    )
+    texts = [u.text for u in parse_manual(text).units]
+    assert any(t.startswith("The TIMER key") for t in texts), texts  # (a flattened PDF's layout)
+    assert not any("15 hours" in t for t in texts), texts

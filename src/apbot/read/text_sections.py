@@ -314,6 +314,7 @@ def drop_tagged_models(
             and not unit.bullet
             and unit.heading == tagged.heading
             and not _new_paragraph(original, tagged.line, unit.line)
+            and not _own_line(original, unit)
         ):
             tagged = unit
             marks.append(marks[-1])
@@ -334,6 +335,17 @@ def _own_model(units: list[Unit], marks: list[str | None], keys: Sequence[str]) 
         if None not in named:
             found |= {m for m in named if m is not None}
     return found.pop() if len(found) == 1 else None
+
+
+def _own_line(original: list[str], unit: Unit) -> bool:
+    """A sentence starting a line of its own after a line ending a sentence: a paragraph of
+    its own though no blank line parts them (as a flattened PDF prints paragraphs), not the
+    rest of the tagged one."""
+    if not 2 <= unit.line <= len(original):
+        return False
+    line = " ".join(original[unit.line - 1].split())
+    before = original[unit.line - 2].rstrip()
+    return line.startswith(" ".join(unit.text.split())[:12]) and before.endswith((".", "!", "?"))
 
 
 def _new_paragraph(original: list[str], after: int, line: int) -> bool:
