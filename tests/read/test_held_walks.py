@@ -100,3 +100,11 @@ While the keys are locked, the CHILD LOCK symbol is lit. Hold CANCEL again for 3
 def test_the_lock_word_is_the_one_the_display_is_said_to_show() -> None:
     model = read_manual(CANCEL_LOCK, ["press_cancel", "hold_cancel", "press_temp"]).model
     assert model.variables["child_lock"].show == {"off": "", "on": "C-L"}
+
+
+def test_the_lock_word_that_lights_before_the_one_a_touched_key_shows() -> None:
+    text = CANCEL_LOCK.replace(
+        "The display shows C-L.", "LOCK lights; touching a key then shows LOC."
+    )
+    model = read_manual(text, ["press_cancel", "hold_cancel", "press_temp"]).model
+    assert model.variables["child_lock"].show == {"off": "", "on": "LOCK"}

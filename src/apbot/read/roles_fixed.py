@@ -297,10 +297,11 @@ def _state_word(
 
 
 _LOCK_WORDS = (r"[A-Z][A-Z-]*LOC[A-Z]*|LOC|LOCK(?:ED)?", r"[A-Z]-?L")
-# the word the display is said to show: "The display shows C-L.", "LOCK appears"
+# the word the display is said to show: "The display shows C-L.", "LOCK appears", "LOCK lights"
 _SHOWN = (
     r"\b(?:shows?|displays?|reads?)\s+(?:the\s+)?(?:(?:word|code|symbol)\s+)?[\"'“‘]?\b({word})\b"
-    r"|\b({word})\b[\"'”’]?\s+(?:appears|is\s+(?:shown|displayed)|flashes|lights\s+up)"
+    r"|\b({word})\b[\"'”’]?\s+"
+    r"(?:appears|is\s+(?:shown|displayed|lit)|flashes|lights(?:\s+up)?|comes\s+on)"
 )
 
 
