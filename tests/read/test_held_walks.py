@@ -81,3 +81,30 @@ def test_two_keys_held_together_take_the_hold_time_the_manual_gives() -> None:
     assert pair_hold_seconds(lines, "WARM", "COOL") == 5  # names printed without their arrows
     assert pair_hold_seconds(["ZONE + TIMER  Held together for 3 seconds"], "ZONE", "TIMER") == 3
     assert pair_hold_seconds(["Hold ZONE for 5 seconds."], "ZONE", "TIMER") is None
+
+
+# the lock's section names a CHILD LOCK symbol, but the display is said to show C-L
+CANCEL_LOCK = """CONTROL PANEL
+
+CANCEL   Stops a programme.
+TEMP     Sets the temperature from 40 to 90 °C in steps of 5 °C.
+
+CHILD LOCK
+
+Hold CANCEL for 3 seconds to lock the keys. The display shows C-L.
+
+While the keys are locked, the CHILD LOCK symbol is lit. Hold CANCEL again for 3 s to unlock.
+"""
+
+
+def test_the_lock_word_is_the_one_the_display_is_said_to_show() -> None:
+    model = read_manual(CANCEL_LOCK, ["press_cancel", "hold_cancel", "press_temp"]).model
+    assert model.variables["child_lock"].show == {"off": "", "on": "C-L"}
+
+
+def test_the_lock_word_that_lights_before_the_one_a_touched_key_shows() -> None:
+    text = CANCEL_LOCK.replace(
+        "The display shows C-L.", "LOCK lights; touching a key then shows LOC."
+    )
+    model = read_manual(text, ["press_cancel", "hold_cancel", "press_temp"]).model
+    assert model.variables["child_lock"].show == {"off": "", "on": "LOCK"}

@@ -46,3 +46,9 @@ def test_a_countdown_entered_in_minutes_and_seconds_is_typed_to_the_second() -> 
     assert any(
         parse_hms(lo) <= 12 <= parse_hms(hi) and int(step) == 1 for lo, hi, step in spec.ranges
     )
+
+
+def test_minutes_and_seconds_worked_out_after_a_weight_is_keyed_are_no_keyed_time() -> None:
+    said = "Enter the weight with the number keys, and the oven works out the minutes and seconds."
+    assert find_step(said) is None
+    assert find_step("Times are always entered as minutes and seconds.") == (1.0, "s")

@@ -104,3 +104,44 @@ def test_a_sideways_chart_of_touches_is_the_keys_range_with_its_steps() -> None:
     model = read_manual(SIDEWAYS, ["press_steam", "press_start"]).model
     steam = model.variables["steam"].model_dump(mode="json")
     assert steam["ranges"] == [[50, 300, 50], [300, 500, 100]], steam
+
+
+# review: a range's manual read for the tagged model's own panel, and a list of fault codes
+FLAVOUR_RANGE = """\
+Models YG-20 · YG-30
+
+THE KEYS
+
+JAR    Steps through the jar sizes: 150 ml, 250 ml, 500 ml.
+
+[YG-30] The YG-30 also has a FLAVOUR key. FLAVOUR steps through PLAIN, GREEK and SKYR.
+
+HOURS  Sets the fermenting time from 4 to 12 hours in steps of 1 hour.
+"""
+
+
+def test_the_tagged_paragraphs_of_the_model_whose_key_only_they_name_stay() -> None:
+    model = read_manual(FLAVOUR_RANGE, ["press_jar", "press_hours", "press_flavour"]).model
+    flavour = model.variables["flavour"].model_dump(mode="json")
+    assert flavour.get("values") == ["plain", "greek", "skyr"], flavour  # (off/on without)
+    texts = [u.text for u in parse_manual(FLAVOUR_RANGE).units]
+    assert not any("FLAVOUR" in t for t in texts), texts  # (a panel without it: left out)
+
+
+def test_bracketed_fault_codes_listed_together_far_from_the_cover_stay() -> None:
+    intro = "\n\n".join(f"Step {n}. Fill the tank and close the lid." for n in range(1, 14))
+    codes = "Codes EH-01, EH-02 and EH-03 may appear.\n\n[EH-01] The tank is empty.\n"
+    text = f"{intro}\n\nERRORS\n\n{codes}"
+    texts = [u.text for u in parse_manual(text).units]
+    assert any("tank is empty" in t for t in texts), texts
+
+
+def test_a_paragraph_after_a_tagged_one_without_a_blank_line_stays() -> None:
+    text = (
+        "Models BM-10 · BM-12 · BM-14\n\nTHE TIMER\n\n"
+        "[BM-14] The BM-14 timer goes up to 15 hours.\n"
+        "The TIMER key sets the delay from 1 to 13 hours in steps of 10 minutes.\n"
+    )
+    texts = [u.text for u in parse_manual(text).units]
+    assert any(t.startswith("The TIMER key") for t in texts), texts  # (a flattened PDF's layout)
+    assert not any("15 hours" in t for t in texts), texts

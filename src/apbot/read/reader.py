@@ -33,7 +33,7 @@ from apbot.read.report import Note, Report
 from apbot.read.roles import assign
 from apbot.read.shapes import CHOICE_WORDS
 from apbot.read.shown_bars import read_bar_shows
-from apbot.read.text import parse_manual
+from apbot.read.text import check_text, parse_manual
 
 MAX_REPAIRS = 40
 
@@ -50,10 +50,11 @@ def read_manual(
     text: str, actions: list[str], appliance_id: str = "read_appliance", category: str = "appliance"
 ) -> Reading:
     """Read a manual; raise :class:`ReaderError` only for input that is not a manual at all."""
-    manual = parse_manual(text)
+    check_text(text)  # (before the actions: a manual that is none is the first error)
     waits = {a: _wait_seconds(a) for a in actions if isinstance(a, str)}
     waits = {a: w for a, w in waits.items() if w is not None}
     infos = parse_actions([a for a in actions if a not in waits] or list(actions))
+    manual = parse_manual(text, [c for i in infos for c in i.controls])
     appliance_id = _ident(appliance_id, "read_appliance")
     category = _ident(category, "appliance")
     tokens = sorted({c for i in infos for c in i.controls if i.digit is None})

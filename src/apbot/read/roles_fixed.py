@@ -296,16 +296,29 @@ def _state_word(
     return "", None
 
 
+_LOCK_WORDS = (r"[A-Z][A-Z-]*LOC[A-Z]*|LOC|LOCK(?:ED)?", r"[A-Z]-?L")
+# the word the display is said to show: "The display shows C-L.", "LOCK appears", "LOCK lights"
+_SHOWN = (
+    r"\b(?:shows?|displays?|reads?)\s+(?:the\s+)?(?:(?:word|code|symbol)\s+)?[\"'“‘]?\b({word})\b"
+    r"|\b({word})\b[\"'”’]?\s+"
+    r"(?:appears|is\s+(?:shown|displayed|lit)|flashes|lights(?:\s+up)?|comes\s+on)"
+)
+
+
 def _lock_word(b: Builder, info: ActionInfo) -> str:
-    """The word the display shows while locked: one spelling LOCK first, anywhere in the key's
-    context, else a two-letter code (C-L, LL) — a code near the keys may be another setting's
-    (SL for a sleep mode the same keys' section lists)."""
+    """The word the display shows while locked: one the text says it shows (C-L in "the
+    display shows C-L", beside a CHILD LOCK symbol), else one spelling LOCK anywhere in the
+    key's context, else a two-letter code (C-L, LL) — a code near the keys may be another
+    setting's (SL for a sleep mode the same keys' section lists)."""
     context = b.context(list(info.controls))
-    for pattern in (r"\b([A-Z][A-Z-]*LOC[A-Z]*|LOC|LOCK(?:ED)?)\b", r"\b([A-Z]-?L)\b"):
+    either = "|".join(_LOCK_WORDS)
+    patterns = [_SHOWN.format(word=either), *(rf"\b({w})\b" for w in _LOCK_WORDS)]
+    for pattern in patterns:
         for i in context:
             for m in re.finditer(pattern, b.manual.units[i].text):
-                if "CLOCK" not in m.group(1):
-                    return m.group(1)
+                word = next(g for g in m.groups() if g)
+                if "CLOCK" not in word:
+                    return word
     return ""
 
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import re
 import unicodedata
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 from apbot.read.errors import ReaderError
@@ -145,8 +146,8 @@ def _clean_chars(text: str) -> str:
     return _SPECIAL.sub(one, text)
 
 
-def parse_manual(text: str) -> Manual:
-    """Split a manual into units; raise :class:`ReaderError` for input that is not text."""
+def check_text(text: object) -> None:
+    """Raise :class:`ReaderError` for input that is no text, or too long to be a manual."""
     if not isinstance(text, str):
         raise ReaderError(f"a manual is text, got {type(text).__name__}")
     if len(text) > MAX_MANUAL_CHARS:
@@ -154,6 +155,12 @@ def parse_manual(text: str) -> Manual:
             f"the manual has {len(text):,} characters; the reader accepts at most "
             f"{MAX_MANUAL_CHARS:,}"
         )
+
+
+def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
+    """Split a manual into units; raise :class:`ReaderError` for input that is not text.
+    ``keys``: the words of the panel's keys, which tell a range's model its own paragraphs."""
+    check_text(text)
     text = text.replace("\r\n", "\n").replace("\r", "\n").replace("\f", "\n\f\n")
     text = name_icons(unbox(text), _KEEP)  # "touch ❄" → "touch COLDER" when a legend names it
     glyphs = text.split("\n")  # (a level shown as segments, "▮▮▯", is read from these)
@@ -287,7 +294,7 @@ def parse_manual(text: str) -> Manual:
             flush()  # "WARM      holds cooked food hot": a term and its definition, a new item
         para.append((number, stripped))
     flush()
-    units = drop_tagged_models(drop_boilerplate(units, original), original)
+    units = drop_tagged_models(drop_boilerplate(units, original), original, keys)
     return Manual(units, original, glyphs)
 
 

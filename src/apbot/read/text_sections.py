@@ -14,6 +14,7 @@ words alone: "Safety first", "2. Important safety instructions", "Warranty and s
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 from apbot.read.text_pages import _plain_heading
@@ -262,12 +263,22 @@ _TAG_LEAD_RE = re.compile(rf"^\[({_TYPE})\]\s")
 _TYPE_RE = re.compile(rf"(?<![\w-])({_TYPE})(?![\w-])")
 
 
+# a line that introduces the types as models ("Models BM-10 · BM-12", "Type PK-06 / PK-08")
+_MODEL_WORD_RE = re.compile(r"\b(?:models?|types?|versions?|variants?)\b", re.I)
+_COVER_LINES = 12  # a range's types stand on the cover, among a manual's first lines
+
+
 def _families(lines: list[str]) -> set[str]:
     """Type numbers the manual names side by side with a sister of the same letters ("Models
-    BM-10 · BM-12 · BM-14", "PK-06 / PK-06B / PK-08"): the models a manual of a range covers."""
+    BM-10 · BM-12 · BM-14", "PK-06 / PK-06B / PK-08"): the models a manual of a range covers.
+    The line must stand on the cover or call them models, types or versions — a list of codes
+    further in ("Codes EH-01, EH-02 and EH-03 may appear") names faults, not models."""
     found: set[str] = set()
-    for line in lines:
+    said = [line for line in lines if line.strip()]
+    for n, line in enumerate(said):
         types = _TYPE_RE.findall(line)
+        if len(types) < 2 or (n >= _COVER_LINES and not _MODEL_WORD_RE.search(line)):
+            continue
         for t in types:
             prefix = t.split("-")[0]
             if sum(1 for u in types if u != t and u.split("-")[0] == prefix):
@@ -275,22 +286,27 @@ def _families(lines: list[str]) -> set[str]:
     return found
 
 
-def drop_tagged_models(units: list[Unit], original: list[str]) -> list[Unit]:
+def drop_tagged_models(
+    units: list[Unit], original: list[str], keys: Sequence[str] = ()
+) -> list[Unit]:
     """The units without paragraphs a manual of several models marks as one model's own
     ("[BM-10] The BM-10 has no LOAF key…", "[PK-08] OOLONG jumps to 88 °C."): the text left
     untagged is what every model of the range does, the tagged remarks a sister's extras or
     lacks, which read as evidence give keys the sister's values and ranges. The tag must be a
     type the manual names beside a sister (so an error code "[E-01]" never counts); the
-    sentences after a tagged one in its paragraph go with it."""
+    sentences after a tagged one in its paragraph go with it. Where the panel's own ``keys``
+    (the action names' words) show it is one of the tagged models — a key only that model's
+    paragraphs name — its paragraphs are its own and stay."""
     families = _families(original) if any(_TAG_LEAD_RE.match(u.text) for u in units) else set()
     if not families:
         return units
-    kept: list[Unit] = []
+    marks: list[str | None] = []  # the model each unit is tagged with, None for all models
     tagged: Unit | None = None
     for unit in units:
         lead = _TAG_LEAD_RE.match(unit.text)
         if lead and lead.group(1) in families and not unit.cells:
             tagged = unit
+            marks.append(lead.group(1))
             continue
         if (
             tagged is not None
@@ -298,12 +314,38 @@ def drop_tagged_models(units: list[Unit], original: list[str]) -> list[Unit]:
             and not unit.bullet
             and unit.heading == tagged.heading
             and not _new_paragraph(original, tagged.line, unit.line)
+            and not _own_line(original, unit)
         ):
             tagged = unit
+            marks.append(marks[-1])
             continue
         tagged = None
-        kept.append(unit)
-    return kept
+        marks.append(None)
+    own = _own_model(units, marks, keys)
+    return [u for u, mark in zip(units, marks, strict=True) if mark is None or mark == own]
+
+
+def _own_model(units: list[Unit], marks: list[str | None], keys: Sequence[str]) -> str | None:
+    """The one tagged model whose paragraphs alone name a key of the panel ("[YG-30] The YG-30
+    also has a FLAVOUR key" on a panel with FLAVOUR), or None."""
+    found: set[str] = set()
+    for key in {k.replace("_", " ") for k in keys if len(k) >= 3}:
+        pattern = re.compile(rf"(?<!\w){re.escape(key)}(?!\w)", re.I)
+        named = {mark for u, mark in zip(units, marks, strict=True) if pattern.search(u.text)}
+        if None not in named:
+            found |= {m for m in named if m is not None}
+    return found.pop() if len(found) == 1 else None
+
+
+def _own_line(original: list[str], unit: Unit) -> bool:
+    """A sentence starting a line of its own after a line ending a sentence: a paragraph of
+    its own though no blank line parts them (as a flattened PDF prints paragraphs), not the
+    rest of the tagged one."""
+    if not 2 <= unit.line <= len(original):
+        return False
+    line = " ".join(original[unit.line - 1].split())
+    before = original[unit.line - 2].rstrip()
+    return line.startswith(" ".join(unit.text.split())[:12]) and before.endswith((".", "!", "?"))
 
 
 def _new_paragraph(original: list[str], after: int, line: int) -> bool:

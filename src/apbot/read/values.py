@@ -420,8 +420,11 @@ _WHOLE_RE = re.compile(
     r"\bin (?:whole|full) (degrees?|minutes?|hours?|seconds?)(?:\s+(celsius|fahrenheit))?\b", re.I
 )
 # "Enter the minutes and seconds.", "type the time in minutes and seconds": any second is keyed
+# (a few words apart: "enter the weight, and the oven works out the minutes and seconds" keys
+# a weight)
 _KEYED_MIN_SEC_RE = re.compile(
-    r"\b(?:enter|type|key)(?:s|ed|ing)?\b[^.;]{0,40}?\bminutes\s+and\s+seconds\b", re.I
+    r"\b(?:enter|type|key)(?:s|ed|ing)?\b(?:[\s:]+[\w'-]+){0,5}?[\s:]+minutes\s+and\s+seconds\b",
+    re.I,
 )
 _BARE_STEPS_RE = re.compile(rf"(?<![\w-])({NUM})-({UNIT})\s+(?:steps|increments)\b", re.I)
 
