@@ -38,7 +38,7 @@ from apbot.read.evidence_whose import (
     _without_own_name,
     lead_cell,
 )
-from apbot.read.labels import words
+from apbot.read.labels import unit_only_mention, words
 from apbot.read.shapes import (
     _KEYPAD_WORDS,
     CHOICE_WORDS,
@@ -126,7 +126,13 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
         mentions = {i for t in tokens if t in self.labels for i in self.labels[t].mentions}
         best: list[str] | None = None
         best_prio = 0.0
-        elsewhere = {i for t, lab in self.labels.items() if t not in tokens for i in lab.mentions}
+        elsewhere = {
+            i
+            for t, lab in self.labels.items()
+            if t not in tokens
+            for i in lab.mentions
+            if not unit_only_mention(lab, units[i].text)  # "… in 5 °F steps": not TEMP's
+        }
         steps = self._pair_steps(tokens, mentions)  # "Press ▲ or ▼ to set …" after its step
         elsewhere, mentions = elsewhere - steps, mentions | steps
         other_labels = [

@@ -261,3 +261,20 @@ def _inflected(label: str) -> re.Pattern[str] | None:
     first = ws[0][:-1] if ws[0].endswith("e") else ws[0]
     rest = r"[\s-]+".join(re.escape(w) for w in ws[1:])
     return re.compile(rf"\b{re.escape(first)}(?:ing|ed)[\s-]+{rest}\b", re.IGNORECASE)
+
+
+# the units among SYMBOLS: a key printed TEMP is also found by the "°F" of its sentences
+_UNIT_SYMBOLS = ("°C", "°F", "RPM")
+
+
+def unit_only_mention(label: Label, text: str) -> bool:
+    """Whether ``text`` names this key (printed as a word) only by a unit ("the probe target
+    changes in 5 °F steps" for TEMP): another setting's sentence in the same unit."""
+    if label.line is None or not label.text or label.text in _UNIT_SYMBOLS:
+        return False
+    if not any(u in text for u in _UNIT_SYMBOLS):
+        return False
+    printed = re.compile(rf"(?<![A-Za-z0-9]){re.escape(label.text)}(?![A-Za-z0-9])", re.I)
+    return not printed.search(text) and not any(
+        re.search(rf"\b{re.escape(w)}", text, re.I) for w in words(label.token) if len(w) >= 4
+    )

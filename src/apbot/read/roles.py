@@ -33,7 +33,7 @@ from apbot.read.roles_fasthold import fold_fast_holds
 from apbot.read.roles_fixed import assign_locks, assign_power, assign_running, standby_only
 from apbot.read.roles_functions import assign_functions, function_keys
 from apbot.read.roles_heldvalues import others_list
-from apbot.read.roles_holdcell import HELD_SECONDS, HOLD_CELL, held_toggle
+from apbot.read.roles_holdcell import HELD_SECONDS, HOLD_CELL, held_toggle, held_values
 from apbot.read.roles_hourmin import assign_hour_minute, hour_minute_keys
 from apbot.read.roles_keyed import assign_keyed_amounts
 from apbot.read.roles_lists import (
@@ -184,6 +184,10 @@ def assign(b: Builder) -> None:
         amount = bool(set(words(name)) & NUMERIC_WORDS)
         if key.skill == "press" and _hold_row(b, key, ev.toggle_at):
             ev = evidence[key.name] = replace(ev, toggle_at=None)  # the hold's on/off
+        if held := held_values(b, key, ev.toggle_at):  # the touch's on/off; held: °C / °F
+            ev = evidence[key.name] = replace(
+                ev, toggle_at=None, values=held, values_at=ev.toggle_at
+            )
         own_toggle = (
             ev.toggle_at is not None
             and any(ev.toggle_at in b.labels[c].mentions for c in key.controls if c in b.labels)
@@ -298,7 +302,21 @@ def _hold_row(b: Builder, key: ActionInfo, at: int | None) -> bool:
         return False
     label = re.escape(b.labels[control].text)
     held = re.compile(rf"^\W*{label}\s*\(?\s*(?:(?:press|touch|push)\s+and\s+)?hold", re.I)
-    return bool(held.match(b.manual.units[at].text)) or _hold_cell(b.manual.units[at])
+    text = b.manual.units[at].text
+    return bool(held.match(text)) or _hold_cell(b.manual.units[at]) or _held_clause(text)
+
+
+# "… Touch and hold 3 seconds: …", "Hold for 2 s to …": where a legend turns to the hold
+_HOLD_CLAUSE = re.compile(
+    r"\b(?:(?:press|touch|push)\s+and\s+)?hold\b(?:\s+(?:it|the\s+key|for))?\s+\d", re.I
+)
+
+
+def _held_clause(text: str) -> bool:
+    """A key's legend whose on/off comes only after the clause for holding it ("Touch: DRY <->
+    MOIST. Touch and hold 3 seconds: double seal on / off."): the hold's on/off."""
+    clause = _HOLD_CLAUSE.search(text)
+    return clause is not None and not ON_OFF_RE.search(text[: clause.start()])
 
 
 def _hold_cell(unit: Unit) -> bool:

@@ -14,6 +14,8 @@ from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.evidence_whose import lead_cell
 from apbot.read.text import Unit
+from apbot.read.value_lists import find_list
+from apbot.read.values import ON_OFF_RE
 
 _SECONDS = r"(?:for\s+)?\d+(?:[.,]\d+)?\s*(?:s|sec|secs|seconds?)\b"
 # how long to hold, as a key table writes it: "3 s", "2 sec", "5 seconds"
@@ -96,3 +98,20 @@ def held_toggle(b: Builder, key: ActionInfo) -> str:
             if m and not re.search(r"\b(?:lock|key|appliance)\b", m.group("noun"), re.I):
                 return m.group("noun").strip(" -").lower()
     return ""
+
+
+def held_values(b: Builder, key: ActionInfo, at: int | None) -> list[str]:
+    """The values holding this key flips between, when row ``at`` of a key table gives its
+    on/off to the short touch and names the values in the column for holding ("| HEAT |
+    heating on / off | change °C / °F |"): °C and °F; else []."""
+    if key.skill != "hold" or at is None or at not in _own_rows(b, key):
+        return []
+    unit = b.manual.units[at]
+    held = hold_cells(unit) if unit.cells else []
+    if not held or any(ON_OFF_RE.search(cell) for cell in held):
+        return []
+    for cell in held:
+        found = find_list(cell)
+        if found and len(found[0]) >= 2 and not {"on", "off"} & {v.lower() for v in found[0]}:
+            return found[0]
+    return []

@@ -13,6 +13,8 @@ import re
 from apbot.read.values import NUM, UNIT
 
 _ARROW = re.compile(r"\s*(?:→|->|⇒|>|»|⟶)\s*")
+# "Touch: DRY <-> MOIST": a key that flips between two values, both ways
+_BOTH_WAYS = re.compile(r"\s*(?:<->|<=>|↔|⇄|⇔)\s*")
 _CUE = re.compile(  # a lookahead, so that every cue in a sentence is tried
     r"(?=(?:\bbetween|\bamong|\bchoose(?: from)?|\bselect(?:s| from)?|\bcycles?(?: through)?|"
     r"\boptions?(?: are)?|\bsettings?(?: are)?|\blevels?(?: are)?|\bmodes?(?: are)?|\border|"
@@ -155,6 +157,8 @@ def _shared_noun_dropped(items: list[str]) -> list[str]:
 def find_list(text: str) -> tuple[list[str], str] | None:
     """A list of values in one sentence, and how it was written ("arrows", "list")."""
     text = _arrow_cell(text)
+    both = bool(_BOTH_WAYS.search(text))
+    text = _BOTH_WAYS.sub(" → ", text)
     numbers = _NUMBER_LIST.search(text)
     if numbers:  # "3, 6 or 9 hours"
         items = [*re.split(r"\s*,\s*", numbers.group(1)), numbers.group(2)]
@@ -168,7 +172,9 @@ def find_list(text: str) -> tuple[list[str], str] | None:
         if came_round and parts[0].lower().endswith(came_round.group(1).lower()):
             parts = parts[: k + 1]  # → …": back at its start, then the next order
             break
-    if len(parts) >= 3:  # "… → HIGH, and from HIGH the next press …": the list ends at the comma
+    if (
+        len(parts) >= 3 or both
+    ):  # "… → HIGH, and from HIGH the next press …": the list ends at the comma
         last = re.split(
             r"[,;]\s|\s[—–]\s|(?:^|\s+)(?:and\s+)?(?:then|back|again)\b|\.\s|\s*[()]|\s*(?:…|\.\.\.)",
             parts[-1],
@@ -176,7 +182,7 @@ def find_list(text: str) -> tuple[list[str], str] | None:
         parts[-1] = _clean_item(last)
         parts = _filled_codes(parts)
     amount = re.search(rf"(?<![\w.])({NUM}\s*{UNIT})\s*$", parts[0], re.I)
-    if len(parts) >= 3 or (len(parts) == 2 and all(_value_like(p, True) for p in parts)):
+    if len(parts) >= 3 or both or (len(parts) == 2 and all(_value_like(p, True) for p in parts)):
         head = parts[0].split(":")[-1].split()  # "in this order: AUTO → ...", "Clockwise: Cotton"
         if head and head[-1].startswith("(") and len(head[-1]) > 1:
             head[-1] = head[-1][1:]  # "… the next programme code (P0 → P1 → …)": in brackets

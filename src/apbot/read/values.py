@@ -475,10 +475,12 @@ def find_initial(text: str) -> tuple[float, str] | None:
 
 
 ON_OFF_RE = re.compile(
-    r"\bon\s*(?:/|or|and)\s*off\b|\boff\s*(?:/|or|and)\s*on\b|\btoggles?\b"
+    r"\bon\s*(?:/|or|and)\s*off\b|\boff\s*(?:/|or|and)\s*on\b(?!\s+again\b)|\btoggles?\b"
     r"|\b(?:enable|disable|activate|deactivate)s?\b[^.]*\b(?:or|and|/)\b"
     r"|\bagain to (?:switch|turn|cancel|deactivate|disable)\b"
-    r"|\b(?:switch|turn)\w*\s+(?:\w+\s+){0,3}(?:on|off)\s+(?:or|and|/)\s+(?:\w+\s+){0,2}(?:on|off)\b",
+    # ("kept when the sealer is switched off and on again": the appliance's power, no toggle)
+    r"|\b(?:switch|turn)\w*\s+(?:\w+\s+){0,3}(?:on|off)\s+(?:or|and|/)\s+(?:\w+\s+){0,2}(?:on|off)\b"
+    r"(?!\s+again\b)",
     re.IGNORECASE,
 )
 EACH_PRESS_RE = re.compile(
