@@ -104,6 +104,12 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "egg_incubator": 3,
     "vacuum_sealer": 3,
     "cat_litter_box": 3,
+    # The ninth blind set (helper blind12n, 5 December): blind for this round's work.
+    "sauna_controller": 3,
+    "label_printer": 3,
+    "soda_maker": 3,
+    "towel_warmer": 3,
+    "clock_radio": 4,
 }
 
 
