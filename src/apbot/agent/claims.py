@@ -13,6 +13,7 @@ from typing import Any
 
 from apbot.agent.checking import Checks
 from apbot.agent.episode import TaskContext
+from apbot.agent.locks import is_lock_setting
 from apbot.agent.looking import glance, route_to_screen
 from apbot.agent.session import Stop
 from apbot.model.display import can_show
@@ -23,11 +24,6 @@ RUN_STATES = ("running", "heating", "dispensing", "status", "start")
 def starts_appliance(name: str) -> bool:
     """A goal setting that starts the appliance (left for last while settings are missing)."""
     return any(word in name for word in RUN_STATES)
-
-
-def is_lock_setting(name: str) -> bool:
-    """A goal setting that locks the panel (a child lock): the belief may lack its guard."""
-    return "lock" in name.split("_")
 
 
 class Claims(Checks):
