@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import re
 
+from apbot.agent.repair import RepairError, set_display
 from apbot.agent.session import Executed, Session
 
 _WORD = re.compile(r"\S+")
@@ -67,8 +68,31 @@ def believe_lock_shown(session: Session, refused: Executed) -> bool:
             f"refused with {refused.feedback.text.strip()!r}: the panel is locked "
             f"('{guard.name or guard.display}')",
         )
+        for v, _ in guard.conditions:
+            _unlock_lamp(session, compiled.vars[v].name)
         return True
     return False
+
+
+def _unlock_lamp(session: Session, name: str) -> None:
+    """A lock the belief lights as UNLOCK (or another un-word of locking) while on: that
+    lamp is the lifted lock's, lit when it is off — swap the two values' words."""
+    spec = session.belief.model.variables[name]
+    show = getattr(spec, "show", None)
+    on = session.belief.value(name)
+    if not isinstance(show, dict) or len(show) != 2 or str(on) not in show:
+        return
+    word = show[str(on)]
+    if not (word.casefold().startswith("un") and shows_lock(word[2:])):
+        return
+    off = next(k for k in show if k != str(on))
+    if show[off]:
+        return
+    try:
+        model = set_display(session.belief.model, name, {str(on): "", off: word})
+    except RepairError:
+        return
+    session.adopt(model, f"{name}: {word} is lit while it is {off}", session.belief.pointer())
 
 
 def lit_not_dark(session: Session) -> bool:
