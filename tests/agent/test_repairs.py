@@ -820,46 +820,26 @@ def test_a_choices_values_learnt_carry_its_dependents_cases_along() -> None:
     assert cases["bread"]["initial"] == 50
 
 
-INVERTED_LOCK = (
-    (
-        'values: [locked, unlocked]\n    show: {"locked": "", "unlocked": "UNLOCK"}',
-        "values: [locked, unlocked]\n    initial: unlocked\n"
-        '    show: {"locked": "UNLOCK", "unlocked": ""}',
-    ),
-    (
-        '    when: {hot_water_lock: locked, dispensing: "off"}\n'
-        "    only: [hold_unlock, press_reboil, press_temp, press_cup, press_slow]\n"
-        '    display: "LOCK"\n',
-        '    when: {hot_water_lock: locked}\n    only: [hold_unlock]\n    display: "UNLOCK"\n',
-    ),
-)
-
-
 def test_a_key_refused_under_a_lock_word_believes_the_lock_on() -> None:
-    # the reader guessed the lock starts released and missed its lamp: DISPENSE refused under
-    # "LOCK" (not the message the belief gives the lock) tells the lock is on; its key lifts it
+    # the reader took the UNLOCK lamp for the lock's and guessed the lock starts released:
+    # DISPENSE refused under "LOCK" tells the lock is on, and its key lifts it
     belief = suite_model(
         "kettle_3",
-        (INVERTED_LOCK[0][0], INVERTED_LOCK[0][0].replace("]", "]\n    initial: unlocked", 1)),
-        INVERTED_LOCK[1],
         (
-            "indicators: [amount, pour_speed, reboil, hot_water_lock,",
-            "indicators: [amount, pour_speed, reboil,",
+            'values: [locked, unlocked]\n    show: {"locked": "", "unlocked": "UNLOCK"}',
+            "values: [locked, unlocked]\n    initial: unlocked\n"
+            '    show: {"locked": "UNLOCK", "unlocked": ""}',
+        ),
+        (
+            '    when: {hot_water_lock: locked, dispensing: "off"}\n'
+            "    only: [hold_unlock, press_reboil, press_temp, press_cup, press_slow]\n"
+            '    display: "LOCK"\n',
+            '    when: {hot_water_lock: locked}\n    only: [hold_unlock]\n    display: "UNLOCK"\n',
         ),
     )
     episode, reached = run(suite_model("kettle_3"), belief, {"amount": "mug", "dispensing": "on"})
     assert reached and episode.claimed_success
     assert any("the panel is locked" in e.text for e in episode.trace if e.kind == "repair")
-
-
-def test_a_lock_lit_unlock_while_on_has_the_lifted_locks_lamp() -> None:
-    # the reader took the UNLOCK lamp for the lock's and guessed the lock starts released:
-    # read the other way round, the dark lamp at the start says the lock is on
-    belief = suite_model("kettle_3", *INVERTED_LOCK)
-    goal = {"hot_water_lock": "unlocked", "amount": "free"}
-    episode, reached = run(suite_model("kettle_3"), belief, goal)
-    assert reached and episode.claimed_success
-    assert "hot_water_lock: UNLOCK is lit while it is unlocked" in episode.repairs
 
 
 def test_lock_words_on_a_display() -> None:

@@ -157,10 +157,15 @@ class DisplayLearner:
         words = {w.casefold() for w in spec.show.values() if w}
         if len(new_words) != 1 or old_words - {old.casefold()} or new_words & words:
             return False
-        if old and old.casefold() in printed_words(session):
+        if old and old.casefold() in self._printed():
             return False  # the panel has printed the belief's word: it was not copied wrong
         word = next(p for p in text.split() if p.casefold() in new_words)
         return self._show_word(name, value, word, {**spec.show, str(value): word}, text)
+
+    def _printed(self) -> set[str]:
+        """The words the display printed so far in this episode."""
+        trace = self.session.episode.trace
+        return {w for e in trace if e.kind == "action" and e.display for w in _parts(e.display)}
 
     def _combined_word(self, name: str, text: str, value: Any, read: set[Any]) -> bool:
         """A choice printed as its value alone, whose walk read every value but one, shown as
@@ -348,13 +353,6 @@ def names_value(spec: Any, name: str, word: str, value: Any, domain: Sequence[An
     own = {w.casefold() for w in re.split(r"[\W_]+", f"{label} {name}") if len(w) >= 2}
     parts = [w for w in re.split(r"[\W_]+", said) if w]
     return bool(parts) and all(p in own for p in parts)
-
-
-def printed_words(session: Session) -> set[str]:
-    """The words the display printed so far in this episode (case-folded): a word the belief
-    prints that the panel has printed too was not copied wrong."""
-    trace = session.episode.trace
-    return {w for e in trace if e.kind == "action" and e.display for w in _parts(e.display)}
 
 
 def _parts(text: str) -> set[str]:

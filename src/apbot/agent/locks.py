@@ -16,7 +16,6 @@ Two beliefs a refusal's screen can correct, both as settings of the belief (no m
 from __future__ import annotations
 
 import re
-from typing import Any
 
 from apbot.agent.repair import RepairError, set_display
 from apbot.agent.session import Executed, Session
@@ -75,43 +74,25 @@ def believe_lock_shown(session: Session, refused: Executed) -> bool:
     return False
 
 
-def unlock_lamps(session: Session) -> bool:
-    """Before the first press: each lock of the belief (a guard on a lock setting alone)
-    lit UNLOCK while on gets its words swapped (:func:`_unlock_lamp`); True if any was."""
-    compiled = session.belief.compiled
-    swapped = False
-    for guard in compiled.guards:
-        if len(guard.conditions) != 1:
-            continue
-        ((v, ok),) = guard.conditions
-        domain = compiled.vars[v].domain(session.belief.state.values)
-        name = compiled.vars[v].name
-        if domain is None or len(ok) != 1 or not is_lock_setting(name):
-            continue
-        swapped |= _unlock_lamp(session, name, domain.values[min(ok)])
-    return swapped
-
-
-def _unlock_lamp(session: Session, name: str, on: Any = None) -> bool:
+def _unlock_lamp(session: Session, name: str) -> None:
     """A lock the belief lights as UNLOCK (or another un-word of locking) while on: that
     lamp is the lifted lock's, lit when it is off — swap the two values' words."""
     spec = session.belief.model.variables[name]
     show = getattr(spec, "show", None)
-    on = session.belief.value(name) if on is None else on
+    on = session.belief.value(name)
     if not isinstance(show, dict) or len(show) != 2 or str(on) not in show:
-        return False
+        return
     word = show[str(on)]
     if not (word.casefold().startswith("un") and shows_lock(word[2:])):
-        return False
+        return
     off = next(k for k in show if k != str(on))
     if show[off]:
-        return False
+        return
     try:
         model = set_display(session.belief.model, name, {str(on): "", off: word})
     except RepairError:
-        return False
+        return
     session.adopt(model, f"{name}: {word} is lit while it is {off}", session.belief.pointer())
-    return True
 
 
 def lit_not_dark(session: Session) -> bool:

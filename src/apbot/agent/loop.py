@@ -26,7 +26,7 @@ from apbot.agent.explorer import Explorer
 from apbot.agent.greedy import GreedyExecutor
 from apbot.agent.guards import GuardLearner
 from apbot.agent.guessed_choice import forget_guessed_choices
-from apbot.agent.locks import is_lock_setting, lit_not_dark, unlock_lamps
+from apbot.agent.locks import is_lock_setting, lit_not_dark
 from apbot.agent.merged import ProcedureSplitter
 from apbot.agent.planning import BeliefPlans
 from apbot.agent.procedures import ProcedureRepairer
@@ -75,8 +75,6 @@ class ClosedLoop(Claims):
             self.session.start()
             if not self.config.closed_loop:
                 self.open_loop()
-            elif unlock_lamps(self.session):
-                self.session.reread()  # the lock's lamp read the other way round
             forget_guessed_choices(self.session, self.goal()[0])
             stalled = 0
             while True:

@@ -16,7 +16,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
-from apbot.agent.displays import names_value, printed_words
+from apbot.agent.displays import names_value
 from apbot.agent.reader import DisplayReader
 from apbot.agent.repair import RepairError, add_indicator, set_display
 from apbot.agent.session import UNREADABLE, Executed, Session
@@ -80,9 +80,6 @@ def relit(session: Session, done: Executed) -> bool:
         # and the press moved from the belief's guess of the start: the word may show the
         # other value (a boost that starts on, lit STD when switched off)
         return False
-    lamp = lamp_for(spec, name, predicted, domain)
-    if kind != "lit" and lamp and lamp.casefold() in printed_words(session):
-        return False  # the panel has printed the belief's lamp: it was not copied wrong
     if not session.budget.once("template", f"{kind}:{name}"):
         return False
     try:
