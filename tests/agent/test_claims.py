@@ -42,3 +42,39 @@ def test_a_request_read_as_a_setting_is_still_claimed_when_shown() -> None:
     context = TaskContext("lamp", "test", "t", "high", goal, model, actions=tuple(env.actions))
     episode = get_method("apbot").run(context, env)
     assert episode.claimed_success, episode.failure
+
+
+TOASTER = """
+controls: [{id: mode, label: MODE}, {id: shade, label: SHADE}]
+variables:
+  mode: {type: discrete, values: [toast, bagel], show: {toast: "TOAST", bagel: "BAGEL"}}
+  shade: {type: discrete, values: [light, dark], label: SHADE}
+actions:
+  press_mode: {control: mode}
+  press_shade: {control: shade}
+features:
+  set_mode: [{actions: [press_mode], variable: mode, effect: next}]
+  set_shade: [{actions: [press_shade], variable: shade, effect: next, set: {mode: toast}}]
+display:
+  idle: "{shade}"
+  indicators: [mode]
+"""
+
+
+def test_a_goal_setting_the_display_prints_at_another_value_is_not_claimed() -> None:
+    # the reader missed that choosing the shade resets the mode, and that the mode's lamp
+    # stays lit on the shade's screen: after SHADE the display prints the toast mode's word,
+    # which the claim must not overlook
+    truth = model_from(TOASTER)
+    belief = model_from(
+        TOASTER.replace(", set: {mode: toast}", "").replace("  indicators: [mode]\n", "")
+    )
+    env = SimulatorEnvironment(truth, "display")
+    goal = {"shade": "dark", "mode": "bagel"}
+    context = TaskContext(
+        "toaster", "test", "t", "dark bagel", goal, belief, actions=tuple(env.actions)
+    )
+    episode = get_method("apbot").run(context, env)
+    assert episode.claimed_success
+    assert env.simulator.assignment()["mode"] == "bagel"
+    assert any("prints mode=toast" in e.text for e in episode.trace if e.kind == "repair")

@@ -818,3 +818,53 @@ def test_a_choices_values_learnt_carry_its_dependents_cases_along() -> None:
     cases = new.variables["defrost_weight"].model_dump(mode="json")["cases"]
     assert sorted(cases) == ["bread", "fish", "meat", "poultry"]
     assert cases["bread"]["initial"] == 50
+
+
+def test_a_key_refused_under_a_lock_word_believes_the_lock_on() -> None:
+    # the reader took the UNLOCK lamp for the lock's and guessed the lock starts released:
+    # DISPENSE refused under "LOCK" tells the lock is on, and its key lifts it
+    belief = suite_model(
+        "kettle_3",
+        (
+            'values: [locked, unlocked]\n    show: {"locked": "", "unlocked": "UNLOCK"}',
+            "values: [locked, unlocked]\n    initial: unlocked\n"
+            '    show: {"locked": "UNLOCK", "unlocked": ""}',
+        ),
+        (
+            '    when: {hot_water_lock: locked, dispensing: "off"}\n'
+            "    only: [hold_unlock, press_reboil, press_temp, press_cup, press_slow]\n"
+            '    display: "LOCK"\n',
+            '    when: {hot_water_lock: locked}\n    only: [hold_unlock]\n    display: "UNLOCK"\n',
+        ),
+    )
+    episode, reached = run(suite_model("kettle_3"), belief, {"amount": "mug", "dispensing": "on"})
+    assert reached and episode.claimed_success
+    assert any("the panel is locked" in e.text for e in episode.trace if e.kind == "repair")
+
+
+def test_lock_words_on_a_display() -> None:
+    from apbot.agent.locks import shows_lock
+
+    assert shows_lock("LOCK  MUG 300mL") and shows_lock("LOC") and shows_lock("KEYLOCK  12")
+    assert shows_lock("🔒 40°C") and shows_lock("Locked")
+    assert not shows_lock("UNLOCK  MUG") and not shows_lock("CLOCK 12:00") and not shows_lock("")
+
+
+def test_a_lit_panel_is_not_switched_off() -> None:
+    # the appliance was left on and locked; the belief guessed it off and cannot read power:
+    # off (only POWER works) and locked (only the lock's keys) leave no key, but the display
+    # is lit, so it is not off — the lock is lifted and the mode set
+    on = (
+        'values: ["off", "on"]\n    show: {"off": "", "on": "RH {humidity}"}',
+        'values: ["off", "on"]\n    initial: "on"\n    show: {"off": "", "on": "RH {humidity}"}',
+    )
+    locked = (
+        'values: ["off", "on"]\n    show: {"off": "", "on": "LOC"}',
+        'values: ["off", "on"]\n    initial: "on"\n    show: {"off": "", "on": "LOC"}',
+    )
+    truth = suite_model("dehumidifier_1", on, locked)
+    unread = ('show: {"off": "", "on": "RH {humidity}"}', 'show: {"off": "", "on": ""}')
+    belief = suite_model("dehumidifier_1", unread, locked)
+    episode, reached = run(truth, belief, {"mode": "laundry"})
+    assert reached and episode.claimed_success
+    assert any("the display is lit" in e.text for e in episode.trace if e.kind == "repair")

@@ -9,25 +9,25 @@ Kept apart from the loop's planning (:mod:`apbot.agent.loop`), whose part it is.
 
 from __future__ import annotations
 
+import re
+from collections import Counter
 from typing import Any
 
 from apbot.agent.checking import Checks
 from apbot.agent.episode import TaskContext
+from apbot.agent.locks import is_lock_setting
 from apbot.agent.looking import glance, route_to_screen
 from apbot.agent.session import Stop
 from apbot.model.display import can_show
+from apbot.model.schema import DiscreteVariable
 
+_GAP = re.compile(r"\s{2,}")
 RUN_STATES = ("running", "heating", "dispensing", "status", "start")
 
 
 def starts_appliance(name: str) -> bool:
     """A goal setting that starts the appliance (left for last while settings are missing)."""
     return any(word in name for word in RUN_STATES)
-
-
-def is_lock_setting(name: str) -> bool:
-    """A goal setting that locks the panel (a child lock): the belief may lack its guard."""
-    return "lock" in name.split("_")
 
 
 class Claims(Checks):
@@ -75,7 +75,69 @@ class Claims(Checks):
             raise Stop(
                 "the request names no setting the model knows: nothing set, nothing to claim"
             )
+        if self._shown_otherwise(inside):
+            return True  # the display prints a goal setting at another value: plan again
         raise Stop("the goal holds", success=True)
+
+    def _shown_otherwise(self, inside: dict[str, Any]) -> bool:
+        """The display prints, as a part of its own, the word the belief prints for another
+        value of a goal setting, and not the believed value's word — a press reset it, and the
+        screen's reading kept only the setting the press was for: believe the display, once
+        per setting (True: plan again). Only words no other setting of the belief prints."""
+        session = self.session
+        belief = session.belief
+        shown = set(_segments(session.last.text))
+        printed = _printed_words(belief.model)
+        for name in sorted(inside):
+            spec = belief.model.variables.get(name)
+            if not isinstance(spec, DiscreteVariable) or not isinstance(spec.show, dict):
+                continue
+            words = {v: w.casefold() for v, w in spec.show.items() if w and "{" not in w}
+            if len(set(words.values())) != len(words) or any(
+                printed[w] > 1 for w in words.values()
+            ):
+                continue
+            believed = belief.value(name)
+            if words.get(str(believed)) in shown:
+                continue
+            hits = [v for v in session.domain_values(name) if words.get(str(v)) in shown]
+            if len(hits) != 1 or not session.budget.once("inspect", f"shown otherwise:{name}"):
+                continue
+            if not belief.set_value(name, hits[0]):
+                continue
+            session.evidence[name] = hits[0]
+            session.episode.log(
+                "repair",
+                f"the display {session.last.text.strip()!r} prints {name}={hits[0]}, "
+                f"not {believed}",
+            )
+            return True
+        return False
+        before = belief.state
+        for name in sorted(inside):
+            spec = belief.model.variables.get(name)
+            if not isinstance(spec, DiscreteVariable):
+                continue
+            believed = belief.value(name)
+            match = None
+            for value in session.domain_values(name):
+                if value != believed and belief.set_value(name, value):
+                    if _segments(belief.expected().text) == shown:
+                        match = value
+                    belief.state = before
+                if match is not None:
+                    break
+            if match is None or not session.budget.once("inspect", f"shown otherwise:{name}"):
+                continue
+            belief.set_value(name, match)
+            session.evidence[name] = match
+            session.episode.log(
+                "repair",
+                f"the display {session.last.text.strip()!r} is what the belief prints with "
+                f"{name}={match}, not {believed}",
+            )
+            return True
+        return False
 
     def _look(self, names: list[str]) -> bool:
         """Bring up a goal setting the display has not confirmed since the belief last changed
@@ -127,3 +189,19 @@ class Claims(Checks):
         if name in self.session.unread:
             return "(unreadable)"
         return repr(self.session.evidence.get(name, "?"))
+
+
+def _segments(text: str) -> list[str]:
+    """A display's parts (the main text and each lamp), in any order."""
+    return sorted(part.casefold() for part in _GAP.split(text.strip()) if part)
+
+
+def _printed_words(model: Any) -> Counter[str]:
+    """How many settings of ``model`` print each whole word of their ``show``."""
+    return Counter(
+        w.casefold()
+        for spec in model.variables.values()
+        if isinstance(getattr(spec, "show", None), dict)
+        for w in set(spec.show.values())
+        if w and "{" not in w
+    )

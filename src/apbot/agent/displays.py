@@ -157,8 +157,15 @@ class DisplayLearner:
         words = {w.casefold() for w in spec.show.values() if w}
         if len(new_words) != 1 or old_words - {old.casefold()} or new_words & words:
             return False
+        if old and old.casefold() in self._printed():
+            return False  # the panel has printed the belief's word: it was not copied wrong
         word = next(p for p in text.split() if p.casefold() in new_words)
         return self._show_word(name, value, word, {**spec.show, str(value): word}, text)
+
+    def _printed(self) -> set[str]:
+        """The words the display printed so far in this episode."""
+        trace = self.session.episode.trace
+        return {w for e in trace if e.kind == "action" and e.display for w in _parts(e.display)}
 
     def _combined_word(self, name: str, text: str, value: Any, read: set[Any]) -> bool:
         """A choice printed as its value alone, whose walk read every value but one, shown as

@@ -15,6 +15,7 @@ import re
 from typing import Any
 
 from apbot.agent.guards_lift import GuardLifter
+from apbot.agent.locks import believe_lock_shown
 from apbot.agent.repair import RepairError, add_guard, allow, allow_all, disallow
 from apbot.agent.session import MISSING, Executed, Session
 from apbot.model.display import OFF_WORDS
@@ -70,7 +71,7 @@ class GuardLearner(GuardLifter):
                 (_condition(self.session.belief.model.guards[index].when), refused.action.name)
             )
             return True
-        return False
+        return believe_lock_shown(self.session, refused)  # a lock word its guard lacks
 
     def _guards_shown(self, text: str) -> set[int]:
         """The belief's guards whose screen this text is (a message, or a dark panel)."""

@@ -17,7 +17,7 @@ from __future__ import annotations
 from typing import Any
 
 from apbot.agent.budget import Budget
-from apbot.agent.claims import Claims, is_lock_setting, starts_appliance
+from apbot.agent.claims import Claims, starts_appliance
 from apbot.agent.discovery import VariableFinder
 from apbot.agent.displays import DisplayLearner
 from apbot.agent.environment import Environment
@@ -26,6 +26,7 @@ from apbot.agent.explorer import Explorer
 from apbot.agent.greedy import GreedyExecutor
 from apbot.agent.guards import GuardLearner
 from apbot.agent.guessed_choice import forget_guessed_choices
+from apbot.agent.locks import is_lock_setting, lit_not_dark
 from apbot.agent.merged import ProcedureSplitter
 from apbot.agent.planning import BeliefPlans
 from apbot.agent.procedures import ProcedureRepairer
@@ -288,6 +289,8 @@ class ClosedLoop(Claims):
         except GoalError as exc:
             raise Stop(f"the goal does not fit the belief model: {exc}") from None
         except Unreachable as exc:
+            if self.config.closed_loop and lit_not_dark(self.session):
+                return self.make_plan(target)  # the panel is lit: it is not switched off
             if not self.config.closed_loop or exc.budget_hit:
                 raise Stop(f"no plan on the belief model: {exc.reason}") from None
             reachable: dict[str, Any] = {}
