@@ -312,7 +312,7 @@ def _apply_clock(b: Builder, hold: str, press: str, walk: dict[str, Any]) -> Non
             and old[0].get("actions") == [press]
             and "variable" not in old[0]
             and set(up + down) <= set(old[1].get("actions", []))
-            and _day_clock(b.variables.get(old[1].get("variable"), {}))
+            and _day_clock(b.variables.get(str(old[1].get("variable")), {}))
         ):
             var = old[1]["variable"]
             del b.features[fname]
