@@ -108,3 +108,47 @@ def test_the_lock_word_that_lights_before_the_one_a_touched_key_shows() -> None:
     )
     model = read_manual(text, ["press_cancel", "hold_cancel", "press_temp"]).model
     assert model.variables["child_lock"].show == {"off": "", "on": "LOCK"}
+
+
+# a greenhouse vent controller (our own words): TIME held opens the clock's hours, then its
+# minutes
+VENT = """VENTRA GV-1 greenhouse vent controller
+
+KEYS
+  TIME      Press: show the opening time.   Hold 3 s: set the clock.
+  +         Raise the value shown.
+  -         Lower the value shown.
+  VENT      Open or close the vent now.
+
+OPENING TIME
+  Press TIME. Press + or - to move the opening time by 30 minutes per press.
+
+SETTING THE CLOCK
+  1. Hold TIME for 3 seconds. The hours flash.
+  2. Press + or - to set the hours, one hour per press.
+  3. Press TIME briefly. The minutes flash.
+  4. Press + or - to set the minutes. Hold + or - for 2 seconds to move 10 minutes at a time.
+  5. Press TIME to confirm.
+"""
+VENT_ACTIONS = ["press_time", "hold_time", "press_plus", "press_minus", "hold_plus",
+                "hold_minus", "press_vent"]  # fmt: skip
+
+
+def test_held_key_walks_the_hours_then_the_minutes_of_a_clock() -> None:
+    model = read_manual(VENT, VENT_ACTIONS).model
+    walks = [
+        steps
+        for steps in model.features.values()
+        if [s.actions for s in steps][:1] == [["hold_time"]]
+    ]
+    assert len(walks) == 1
+    steps = walks[0]
+    assert [s.actions[0] for s in steps] == [
+        "hold_time", "press_plus", "press_time", "press_plus", "press_time"
+    ]  # fmt: skip
+    clock = steps[1].variable
+    assert clock is not None and steps[3].variable == clock
+    assert model.variables[clock].type == "time" and model.variables[clock].wrap
+    assert steps[1].effect["press_plus"].add == 3600
+    assert steps[3].effect["press_minus"].add == -60
+    assert steps[3].effect["hold_plus"].add == 600

@@ -7,8 +7,10 @@ from 2 to 12 hours." The hold opens the first setting, a short press of the same
 to the second, and the pair sets each. Without this reading the hold was guessed as a switch
 of its own and both settings were missing.
 
-A walk whose two fields are the hours and the minutes of one clock ("the hours flash … the
-minutes flash") is another shape, left to the clock rules.
+The same steps may walk the hours, then the minutes, of one clock: "1. Hold CLOCK for 3
+seconds. The hours flash. 2. Press ▲ or ▼ to set the hours. 3. Press CLOCK. The minutes
+flash. 4. Press ▲ or ▼ to set the minutes (hold for 2 seconds: 10 minutes at a time)." The
+pair then moves the time of day by an hour, and after the press by a minute.
 """
 
 from __future__ import annotations
@@ -18,6 +20,7 @@ from typing import Any
 
 from apbot.model.values import format_hms
 from apbot.read.build import Builder
+from apbot.read.roles_fasthold import held_time_step
 from apbot.read.shapes import Evidence
 from apbot.read.text import Unit
 from apbot.read.values import find_ranges, find_step
@@ -39,6 +42,8 @@ _STORED_RE = re.compile(
     r"\b(?:for|after)\s+(?:(\d+)|a few)\s+seconds?\b[^.]*|\bstored\b[^.]*\bseconds\b", re.I
 )
 _CLOCK_FIELDS_RE = re.compile(r"\bhours?\b[^.]*\bflash", re.I)
+_HOURS_RE = re.compile(r"\bhours?\b", re.I)
+_MINUTES_RE = re.compile(r"\bminutes?\b", re.I)
 
 
 def _says(text: str, label: str) -> bool:
@@ -151,22 +156,13 @@ def _walk(
     if len(groups) < 4:
         return None
     opened, first, moved, second = (g[1] for g in groups[:4])
-    if _CLOCK_FIELDS_RE.search(opened):
-        return None  # the hours, then the minutes, of one clock
-    if not re.match(rf"^(?:press|touch)\s+{re.escape(label)}(?!\w)(?!\s+and\b)", moved, re.I):
+    if not _moves_on(moved, label):
         return None
-
-    def pair_of(text: str) -> tuple[list[str], list[str]] | None:
-        for up, down in pairs:
-            ups = [b.labels[t].text for a in up for t in _controls(b, a) if t in b.labels]
-            downs = [b.labels[t].text for a in down for t in _controls(b, a) if t in b.labels]
-            if any(_says(text, x) for x in ups) and any(_says(text, x) for x in downs):
-                return up, down
+    pair = _pair_of(b, pairs, first)
+    if pair is None or _pair_of(b, pairs, second) != pair:
         return None
-
-    pair = pair_of(first)
-    if pair is None or pair_of(second) != pair:
-        return None
+    if _CLOCK_FIELDS_RE.search(opened):  # the hours, then the minutes, of one clock
+        return _clock_walk(b, groups, label, pair, at)
     one = _field(b, opened, f"{opened} {first}", at)
     two = _field(b, moved, f"{moved} {second}", at)
     if one is None or two is None or one["name"] == two["name"]:
@@ -178,24 +174,93 @@ def _walk(
     return {"pair": pair, "fields": [one, two], "at": at, "timeout": timeout}
 
 
+def _moves_on(text: str, label: str) -> bool:
+    """A step that is a short press of the walk's key ("Press CLOCK briefly.")."""
+    return (
+        re.match(rf"^(?:press|touch)\s+{re.escape(label)}(?!\w)(?!\s+and\b)", text, re.I)
+        is not None
+    )
+
+
+def _pair_of(
+    b: Builder, pairs: list[tuple[list[str], list[str]]], text: str
+) -> tuple[list[str], list[str]] | None:
+    """The stepping pair a step names with both its keys ("Press ▲ or ▼ to …")."""
+    for up, down in pairs:
+        ups = [b.labels[t].text for a in up for t in _controls(b, a) if t in b.labels]
+        downs = [b.labels[t].text for a in down for t in _controls(b, a) if t in b.labels]
+        if any(_says(text, x) for x in ups) and any(_says(text, x) for x in downs):
+            return up, down
+    return None
+
+
+def _clock_walk(
+    b: Builder,
+    groups: list[tuple[int, str]],
+    label: str,
+    pair: tuple[list[str], list[str]],
+    at: int,
+) -> dict[str, Any] | None:
+    """The hours, then (after a press of the key) the minutes of one time of day: the pair
+    moves it by an hour, then by a minute (and a hold of the pair by what the manual says)."""
+    opened, first, moved, second = (g[1] for g in groups[:4])
+    if not _HOURS_RE.search(first) or not _MINUTES_RE.search(f"{moved} {second}"):
+        return None
+    held = held_time_step(second)
+    holds: dict[str, int] = {}
+    for k, side in enumerate(pair):
+        for action in side:
+            controls = _controls(b, action)
+            for info in b.infos:
+                if held and info.skill == "hold" and info.controls == controls:
+                    holds[info.name] = held if k == 0 else -held
+    last = groups[4][1] if len(groups) > 4 else ""
+    confirm = _moves_on(last, label)
+    stored = None if confirm else _STORED_RE.search(last)
+    timeout = float(stored.group(1) or 5) if stored else None
+    return {
+        "pair": pair,
+        "clock": _label(opened, label),
+        "holds": holds,
+        "confirm": confirm,
+        "at": at,
+        "timeout": timeout,
+    }
+
+
 def _controls(b: Builder, action: str) -> tuple[str, ...]:
     return next((i.controls for i in b.infos if i.name == action), ())
+
+
+def _drop_guess(b: Builder, hold: str) -> str:
+    """Drop the setting the hold alone was guessed to set; return its name as a prefix
+    ("sleep_period_") when that was more than the key's name and "hold"."""
+    prefix = ""
+    for fname, old in list(b.features.items()):
+        if not old or old[0].get("actions") != [hold]:
+            continue
+        names = [s.get("variable") for s in old]
+        if len(old) > 1 and not all(v is None or v.endswith("_hold") for v in names):
+            continue  # (a hold opening a setting read as the key's own "…_hold" is a guess)
+        del b.features[fname]
+        for var in names:
+            used = any(s.get("variable") == var for st in b.features.values() for s in st)
+            if var in b.variables and not used:
+                del b.variables[var]
+        var = names[0]
+        if len(old) == 1 and isinstance(var, str) and not var.endswith("_hold"):
+            prefix = f"{var}_"
+    return prefix
 
 
 def _apply(b: Builder, hold: str, press: str, walk: dict[str, Any]) -> None:
     """Drop the hold's guessed setting; add the two fields and the feature walking them (named
     after what the hold was read to set, "sleep_period", when that was more than the key's name
     and "hold")."""
-    prefix = ""
-    for fname, old in list(b.features.items()):
-        if len(old) == 1 and old[0].get("actions") == [hold]:
-            var = old[0].get("variable")
-            del b.features[fname]
-            used = any(s.get("variable") == var for st in b.features.values() for s in st)
-            if var in b.variables and not used:
-                del b.variables[var]
-            if isinstance(var, str) and not var.endswith("_hold"):
-                prefix = f"{var}_"
+    if "clock" in walk:
+        _apply_clock(b, hold, press, walk)
+        return
+    prefix = _drop_guess(b, hold)
     up, down = walk["pair"]
     effect = {**{a: "next" for a in up}, **{a: "prev" for a in down}}
     steps: list[dict[str, Any]] = [{"actions": [hold]}]
@@ -220,4 +285,64 @@ def _apply(b: Builder, hold: str, press: str, walk: dict[str, Any]) -> None:
     b.feature(feature, steps)
     b.note(
         f"features.{feature}", f"{hold} opens {names[0]}, {press} moves to {names[1]}", walk["at"]
+    )
+
+
+def _day_clock(spec: dict[str, Any]) -> bool:
+    """A time of day set to the minute (00:00–23:59 by one minute), not a duration or a time
+    set in steps of half an hour."""
+    ranges = spec.get("ranges") or []
+    return (
+        spec.get("type") == "time"
+        and len(ranges) == 1
+        and str(ranges[0][1]) >= "23:59"
+        and ranges[0][2] == 60
+    )
+
+
+def _apply_clock(b: Builder, hold: str, press: str, walk: dict[str, Any]) -> None:
+    """Add the clock walk; the time it sets is the time the key's press was read to open with
+    the pair (that reading, a press alone opening the minutes, is dropped), else a new one."""
+    _drop_guess(b, hold)
+    up, down = walk["pair"]
+    var = None
+    for fname, old in list(b.features.items()):
+        if (
+            len(old) == 2
+            and old[0].get("actions") == [press]
+            and "variable" not in old[0]
+            and set(up + down) <= set(old[1].get("actions", []))
+            and _day_clock(b.variables.get(str(old[1].get("variable")), {}))
+        ):
+            var = old[1]["variable"]
+            del b.features[fname]
+            break
+    if var is None:
+        var = b.unique("clock", b.variables)
+        b.variables[var] = {
+            "label": walk["clock"],
+            "type": "time",
+            "ranges": [["00:00:00", "23:59:00", 60]],
+            "format": "hh:mm",
+        }
+        b.note(f"variables.{var}", "a time of day the held key's steps set", walk["at"])
+    b.variables[var]["wrap"] = True
+    hours = {**{a: {"add": 3600} for a in up}, **{a: {"add": -3600} for a in down}}
+    minutes = {**{a: {"add": 60} for a in up}, **{a: {"add": -60} for a in down}}
+    minutes.update({a: {"add": n} for a, n in walk["holds"].items()})
+    steps: list[dict[str, Any]] = [
+        {"actions": [hold]},
+        {"actions": up + down, "variable": var, "effect": hours},
+        {"actions": [press]},
+        {"actions": list(minutes), "variable": var, "effect": minutes},
+    ]
+    if walk["confirm"]:
+        steps.append({"actions": [press]})
+    if walk["timeout"] is not None:
+        for step in steps:
+            step["timeout"] = walk["timeout"]
+    feature = b.unique(f"set_{var}", b.features)
+    b.feature(feature, steps)
+    b.note(
+        f"features.{feature}", f"{hold} opens the hours of {var}, {press} its minutes", walk["at"]
     )

@@ -27,7 +27,8 @@ _STEPS_RE = re.compile(rf"\b{_N}\s+(?:steps?|values?|positions?)\b|\bsteps?\s+of
 _TIME_RE = re.compile(
     r"(?:\bby\s+|\+\s*|\bof\s+)(\d+)\s*-?\s*(hours?|hrs?|h|minutes?|mins?)\b"
     r"|\b(\d+)\s*-\s*(hour|minute|min)\s+(?:steps?|jumps?|increments?)\b"
-    r"|\b(hours?|minutes?)\s+by\s+(\d+)\b",
+    r"|\b(hours?|minutes?)\s+by\s+(\d+)\b"
+    r"|\b(\d+)\s+(hours?|minutes?)\s+at\s+a\s+time\b",  # "to move 10 minutes at a time"
     re.I,
 )
 _HOLD_RE = re.compile(r"\b(?:hold|held|holding|long[- ]press)", re.I)
@@ -177,6 +178,21 @@ def _said_step(b: Builder, hold: ActionInfo) -> tuple[str, int] | None:
     return None
 
 
+def held_time_step(text: str) -> int | None:
+    """The seconds a hold moves a time by, from the hold's own clause in ``text`` ("Holding ▲
+    or ▼ for 2 seconds moves the minutes by 10": 600); None when no hold gives a time."""
+    held = _HOLD_RE.search(text)
+    m = _TIME_RE.search(_hold_clause(text[held.start() :])) if held else None
+    return _seconds(m) if m else None
+
+
+def _seconds(m: re.Match[str]) -> int:
+    """The seconds a match of ``_TIME_RE`` gives."""
+    amount = int(m.group(1) or m.group(3) or m.group(6) or m.group(7))
+    unit = (m.group(2) or m.group(4) or m.group(5) or m.group(8)).lower()
+    return amount * (3600 if unit.startswith("h") else 60)
+
+
 def _hold_clause(text: str) -> str:
     """The hold's own clause: up to another gesture or clause ("hold + to set the clock
     faster, and press START to add a delay of 2 hours": the 2 hours are START's)."""
@@ -224,10 +240,7 @@ def _fast_effect(spec: dict[str, Any], effect: Any, said: tuple[str, int] | None
     text = said[0]
     m = _TIME_RE.search(text)
     if m and spec.get("type") == "time":
-        amount = int(m.group(1) or m.group(3) or m.group(6))
-        unit = (m.group(2) or m.group(4) or m.group(5)).lower()
-        seconds = amount * (3600 if unit.startswith("h") else 60)
-        return {"add": sign * seconds}
+        return {"add": sign * _seconds(m)}
     if m and not _STEPS_RE.search(text):
         return None
     m = _STEPS_RE.search(text)
