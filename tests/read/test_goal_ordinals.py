@@ -55,3 +55,29 @@ def test_an_ordinal_before_a_numbered_setting_is_its_number(sprouter: ApplianceM
 
 def test_seconds_after_a_number_stay_seconds(sprouter: ApplianceModel) -> None:
     assert parse_instruction(sprouter, "A 30 second soak on tray 1.") == {"soak": 30, "tray": "T1"}
+
+
+def test_an_ordinal_that_orders_the_steps_is_no_number(sprouter: ApplianceModel) -> None:
+    """ "First tray 2, …" says the number itself: the ordinal only orders the steps."""
+    assert parse_instruction(sprouter, "First tray 2, second a 20 second soak.") == {
+        "tray": "T2",
+        "soak": 20,
+    }
+
+
+_PROGRAM_FEATURE = "  program:\n    - {actions: [press_program], variable: program, effect: next}\n"
+PROGRAMMED = (
+    SPROUTER.replace(
+        "variables:\n", "variables:\n  program:\n    type: discrete\n    values: [P1, P2, P3]\n"
+    )
+    .replace("features:\n", "features:\n" + _PROGRAM_FEATURE)
+    .replace("actions:\n", "actions:\n  press_program: {control: program_button}\n")
+    .replace("controls:\n", 'controls:\n  - {id: program_button, kind: button, label: "PROGRAM"}\n')
+)
+
+
+def test_an_ordinal_before_a_verb_and_its_object_is_no_number() -> None:
+    """ "First program the soak …": "program" is the verb, the ordinal the step's order."""
+    model = loads_model(PROGRAMMED)
+    assert parse_instruction(model, "First program the soak for 20 seconds.") == {"soak": 20}
+    assert parse_instruction(model, "Run the second program.") == {"program": "P2"}

@@ -48,6 +48,13 @@ def test_a_clock_range_stepped_in_seconds_is_minutes_and_seconds() -> None:
     assert [(p.low, p.high) for p in hours] == [(1800, 43200), (43200, 86400)]  # still h:mm
 
 
+def test_a_clock_past_24_stepped_in_hours_stays_hours() -> None:
+    """A long delay ("24:00 to 72:00 in 1-hour steps") is hours, though its clock passes 24."""
+    said = "0:00 to 24:00 in 10-minute steps, 24:00 to 72:00 in 1-hour steps"
+    pieces = find_stepped_pieces(said)
+    assert [(p.low, p.high, p.step) for p in pieces] == [(0, 86400, 600), (86400, 259200, 3600)]
+
+
 CLEANER = """
 CONTROL PANEL
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 import re
 
 from apbot.model.schema import DiscreteVariable, NumericVariable
+from apbot.model.values import NUMBER_WORDS
 from apbot.read.goal_fit import CODE
 from apbot.read.goal_view import Model, VarInfo
 from apbot.read.goal_vocab import concept
@@ -19,7 +20,13 @@ _ORDINALS = {
     "sixth": 6, "seventh": 7, "eighth": 8, "ninth": 9, "tenth": 10,
 }  # fmt: skip
 _ORDINAL_NOUN = re.compile(r"\b(" + "|".join(_ORDINALS) + r")\s+([A-Za-z]+)\b", re.IGNORECASE)
-_NUMBER_BEFORE = re.compile(r"(\d|\b(?:one|two|three|four|five|six|seven|eight|nine|ten))\W*$")
+_COUNTS = "|".join(w for w in NUMBER_WORDS if w not in ("a", "an", "single", "couple"))
+_NUMBER_BEFORE = re.compile(rf"(\d|\b(?:{_COUNTS}))\W*$", re.IGNORECASE)
+_NUMBER_AFTER = re.compile(rf"^\s*(?:\d|(?:{_COUNTS})\b)", re.IGNORECASE)
+# an ordinal opening a clause before a verb and its object ("First program the timer …",
+# "then first program it"): the order of the steps, not a setting's number
+_CLAUSE_START = re.compile(r"(?:^|[.;:!?,]|\b(?:then|and|next))\s*$", re.IGNORECASE)
+_OBJECT_AFTER = re.compile(r"^\s*(?:the|a|an|it|its|my|this|that|them)\b", re.IGNORECASE)
 
 
 def ordinal_numbers(view: Model, instruction: str) -> str:
@@ -27,8 +34,13 @@ def ordinal_numbers(view: Model, instruction: str) -> str:
     nouns = {key for info in view.infos.values() if _numbered(info) for key in info.vocab if key}
 
     def number(match: re.Match[str]) -> str:
-        if _NUMBER_BEFORE.search(instruction[: match.start()]):
+        before, after = instruction[: match.start()], instruction[match.end() :]
+        if _NUMBER_BEFORE.search(before):
             return match[0]  # "30 second rinse", "one second": a unit of time
+        if _NUMBER_AFTER.match(after):
+            return match[0]  # "first tray 2, then …": the number is said; the ordinal orders
+        if _CLAUSE_START.search(before) and _OBJECT_AFTER.match(after):
+            return match[0]  # "First program the delay": a step's order, the noun a verb
         if concept(match[2].casefold()) not in nouns:
             return match[0]
         return f"{match[2]} {_ORDINALS[match[1].casefold()]}"

@@ -18,11 +18,13 @@ from apbot.read.roles_common import (
     numeric_list,
     stepped_noun,
     token_of,
+    turns,
     var_name,
 )
 from apbot.read.roles_confirm import ends_entry
 from apbot.read.roles_lists import dial_amount, dial_ends, dial_list, list_evidence
 from apbot.read.roles_numbered import numbered_entry
+from apbot.read.roles_pushed import pushed_dials
 from apbot.read.roles_raised import own_sentence, raised_quantity
 from apbot.read.shapes import CHOICE_WORDS, Evidence
 
@@ -56,11 +58,10 @@ def assign_amounts(
     if shared_pair and shared_pair["up"] and shared_pair["down"]:
         steppers.append((shared_pair["up"], shared_pair["down"]))
     for t in generic_dials:
-        cw = [i.name for i in dials[t] if i.skill == "turn_cw"]
-        ccw = [i.name for i in dials[t] if i.skill == "turn_ccw"]
+        cw, ccw = turns(dials[t])
         if cw and ccw:
             steppers.append((cw, ccw))
-    entry_keys = _pushed_dials(b, entry_keys, evidence, dials, generic_dials, steppers)
+    entry_keys = pushed_dials(b, entry_keys, evidence, dials, generic_dials, steppers)
     if not any(k.skill == "press" for k in entry_keys) and (steppers or digits):
         # (a key's hold that sets a timer leaves its press to set the key's own amount)
         # (a key that only closes an entry, "OK  Confirms an entry", types nothing itself)
@@ -179,8 +180,7 @@ def assign_amounts(
                 "each press steps to the next value (the manual names no other way)",
             )
     for t in generic_dials:  # turned by itself, the dial picks the list its sentence names
-        cw = [i.name for i in dials[t] if i.skill == "turn_cw"]
-        ccw = [i.name for i in dials[t] if i.skill == "turn_ccw"]
+        cw, ccw = turns(dials[t])
         if cw and ccw and (dial_list(b, t, cw, ccw) or dial_amount(b, t, cw, ccw)):
             used_steppers |= {k for k, pair in enumerate(steppers) if pair == (cw, ccw)}
     for index, (up, down) in enumerate(steppers):
@@ -265,57 +265,13 @@ def assign_amounts(
     return silent
 
 
-def _pushed_dials(
-    b: Builder,
-    entry_keys: list[ActionInfo],
-    evidence: dict[str, Evidence],
-    dials: dict[str, list[ActionInfo]],
-    generic_dials: list[str],
-    steppers: list[tuple[list[str], list[str]]],
-) -> list[ActionInfo]:
-    """A push-and-turn knob whose push opens an amount ("Push the TIME knob: the time flashes;
-    turn it to change the time"): the push, then the knob's own turns, set it, not a stepping
-    pair elsewhere on the panel (unless the knob is the only way the other entry keys have to
-    set theirs). Its turns leave ``steppers``; returns the entry keys left."""
-    left: list[ActionInfo] = []
-    for key in entry_keys:
-        token = key.controls[0]
-        if key.skill != "press" or len(key.controls) != 1 or token not in dials:
-            left.append(key)
-            continue
-        cw = [i.name for i in dials[token] if i.skill == "turn_cw"]
-        ccw = [i.name for i in dials[token] if i.skill == "turn_ccw"]
-        others = [k for k in entry_keys if k is not key]
-        if not (cw and ccw) or (others and [(cw, ccw)] == steppers):
-            left.append(key)  # (the knob is also how the other keys' amounts are set)
-            continue
-        if (cw, ccw) in steppers:
-            steppers.remove((cw, ccw))
-        ev = evidence[key.name]
-        if ev.values and len(ev.values) >= 3 and numeric_list(ev.values):
-            ev = list_evidence(ev)
-        name, lab = var_name(b, key), label_of(b, token)
-        named = [w for w in words(lab) if w not in CHOICE_WORDS]
-        if set(words(name)) & CHOICE_WORDS and named:
-            name = "_".join(named)  # the knob printed TIME sets a time, not a "knob"
-        var = b.add_number(name, lab, ev, cyclic=False)
-        eff = {**{a: "next" for a in cw}, **{a: "prev" for a in ccw}}
-        b.feature(
-            f"set_{var}",
-            [{"actions": [key.name]}, {"actions": cw + ccw, "variable": var, "effect": eff}],
-        )
-        b.note(f"features.set_{var}", f"{key.name} then the knob's own turns", ev.range_at)
-    return left
-
-
 def assign_dials(
     b: Builder, dials: dict[str, list[ActionInfo]], silent: list[ActionInfo]
 ) -> list[ActionInfo]:
     """Dials with their own values (a generic dial already taken as a stepper is skipped), and
     a key pressed before turning its dial; returns the keys still without a role."""
-    for token, turns in dials.items():
-        cw = [i.name for i in turns if i.skill == "turn_cw"]
-        ccw = [i.name for i in turns if i.skill == "turn_ccw"]
+    for token, moves in dials.items():
+        cw, ccw = turns(moves)
         used = {a for steps in b.features.values() for st in steps for a in st["actions"]}
         if set(cw + ccw) & used:
             continue

@@ -216,6 +216,14 @@ def var_name(b: Builder, key: ActionInfo) -> str:
     return base
 
 
+def turns(actions: list[ActionInfo]) -> tuple[list[str], list[str]]:
+    """A dial's clockwise and counter-clockwise turns (the action names), for stepping."""
+    return (
+        [i.name for i in actions if i.skill == "turn_cw"],
+        [i.name for i in actions if i.skill == "turn_ccw"],
+    )
+
+
 def dedupe(items: list[str]) -> list[str]:
     return list(dict.fromkeys(items))
 

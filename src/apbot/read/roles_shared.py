@@ -17,7 +17,7 @@ import re
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder, twelve_hour_clock
 from apbot.read.labels import words
-from apbot.read.roles_common import label_of, stepped_noun, token_of
+from apbot.read.roles_common import label_of, stepped_noun, token_of, turns
 from apbot.read.shapes import Evidence
 from apbot.read.text import Unit
 
@@ -255,9 +255,8 @@ def clock_steps(
             _PRESS_RE.format(keys=re.escape(label_of(b, key.controls[0]))), re.IGNORECASE
         )
         adjusters: list[tuple[list[str], list[str], re.Pattern[str]]] = []
-        for token, turns in dials.items():
-            cw = [i.name for i in turns if i.skill == "turn_cw"]
-            ccw = [i.name for i in turns if i.skill == "turn_ccw"]
+        for token, moves in dials.items():
+            cw, ccw = turns(moves)
             if cw and ccw and token in b.labels:
                 label = re.escape(label_of(b, token))
                 adjusters.append(

@@ -76,9 +76,11 @@ def _each_press_pieces(text: str) -> list[Range]:
 def _stepped_clock_pieces(text: str) -> list[Range]:
     pieces: list[Range] = []
     found = list(_STEPPED_PIECE_RE.finditer(text))
-    # a clock stepped in seconds, or one past 24 ("5:00 to 30:00"), is minutes and seconds
-    min_sec = any(unit_name(m.group(4)) == "s" for m in found) or any(
-        int(m.group(2).split(":")[0]) > 24 for m in found
+    # a clock stepped in seconds, or one past 24 ("5:00 to 30:00"), is minutes and seconds;
+    # never one stepped in hours ("24:00 to 72:00 in 1-hour steps": a long delay's hours)
+    steps = {unit_name(m.group(4)) for m in found}
+    min_sec = "s" in steps or (
+        "h" not in steps and any(int(m.group(2).split(":")[0]) > 24 for m in found)
     )
     for m in found:
         low, high = _clock(m.group(1), min_sec), _clock(m.group(2), min_sec)
