@@ -848,6 +848,7 @@ def test_lock_words_on_a_display() -> None:
     assert shows_lock("LOCK  MUG 300mL") and shows_lock("LOC") and shows_lock("KEYLOCK  12")
     assert shows_lock("🔒 40°C") and shows_lock("Locked")
     assert not shows_lock("UNLOCK  MUG") and not shows_lock("CLOCK 12:00") and not shows_lock("")
+    assert not shows_lock("FILTER BLOCKED") and not shows_lock("E3  BLOCK")  # a fault
 
 
 def test_a_lit_panel_is_not_switched_off() -> None:

@@ -152,3 +152,19 @@ def test_held_key_walks_the_hours_then_the_minutes_of_a_clock() -> None:
     assert steps[1].effect["press_plus"].add == 3600
     assert steps[3].effect["press_minus"].add == -60
     assert steps[3].effect["hold_plus"].add == 600
+
+
+# the same controller's held key setting a delay of hours and minutes (a duration, not a clock)
+VENT_DELAY = (
+    VENT.replace("Hold 3 s: set the clock.", "Hold 3 s: set the vent delay.")
+    .replace("SETTING THE CLOCK", "VENT DELAY")
+    .replace("to set the hours, one hour per press.", "to set the hours, from 0 to 12 hours.")
+)
+
+
+def test_held_key_walking_hours_of_a_delay_makes_no_clock() -> None:
+    model = read_manual(VENT_DELAY, VENT_ACTIONS).model
+    assert not any(
+        v.type == "time" and v.wrap and v.ranges[0][1] == "23:59:00"
+        for v in model.variables.values()
+    )

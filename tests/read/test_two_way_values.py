@@ -37,6 +37,7 @@ def test_a_two_way_arrow_names_the_two_values() -> None:
         ["LEAN", "RICH"], "arrows"
     )  # fmt: skip
     assert find_list("Press it: °C ↔ °F") == (["°C", "°F"], "arrows")
+    assert find_list("Keep warm at 40 °C ↔ 90 °C.") == (["40 °C", "90 °C"], "arrows")
 
 
 def test_switched_off_and_on_again_is_the_power_not_a_toggle() -> None:

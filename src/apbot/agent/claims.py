@@ -113,31 +113,6 @@ class Claims(Checks):
             )
             return True
         return False
-        before = belief.state
-        for name in sorted(inside):
-            spec = belief.model.variables.get(name)
-            if not isinstance(spec, DiscreteVariable):
-                continue
-            believed = belief.value(name)
-            match = None
-            for value in session.domain_values(name):
-                if value != believed and belief.set_value(name, value):
-                    if _segments(belief.expected().text) == shown:
-                        match = value
-                    belief.state = before
-                if match is not None:
-                    break
-            if match is None or not session.budget.once("inspect", f"shown otherwise:{name}"):
-                continue
-            belief.set_value(name, match)
-            session.evidence[name] = match
-            session.episode.log(
-                "repair",
-                f"the display {session.last.text.strip()!r} is what the belief prints with "
-                f"{name}={match}, not {believed}",
-            )
-            return True
-        return False
 
     def _look(self, names: list[str]) -> bool:
         """Bring up a goal setting the display has not confirmed since the belief last changed

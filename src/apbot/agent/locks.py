@@ -31,14 +31,18 @@ def is_lock_setting(name: str) -> bool:
 
 def shows_lock(text: str) -> bool:
     """Whether a display text prints a lock word: LOCK, LOC, LOCKED, a compound ending in
-    lock (KEYLOCK, C-LOCK) or a padlock — not UNLOCK (the lock lifted) nor CLOCK."""
+    lock (KEYLOCK, C-LOCK) or a padlock — not UNLOCK (the lock lifted), CLOCK nor BLOCKED."""
     for match in _WORD.finditer(text):
         word = match.group(0).strip(".,:;!?()[]").casefold()
         if "🔒" in word or word in _LOCK_WORDS:
             return True
         stem = word.removesuffix("ed")
-        if stem.endswith("lock") and not stem.startswith("un") and not stem.endswith("clock"):
-            return True
+        if (
+            stem.endswith("lock")
+            and not stem.startswith("un")
+            and not stem.endswith(("clock", "block"))
+        ):
+            return True  # (FILTER BLOCKED is a fault, not a lock)
     return False
 
 

@@ -206,6 +206,8 @@ def _clock_walk(
     opened, first, moved, second = (g[1] for g in groups[:4])
     if not _HOURS_RE.search(first) or not _MINUTES_RE.search(f"{moved} {second}"):
         return None
+    if any(r.unit in ("h", "") and r.high < 23 for r in find_ranges(f"{opened} {first}")):
+        return None  # "from 0 to 12 hours": a duration (a delay), not a time of day
     held = held_time_step(second)
     holds: dict[str, int] = {}
     for k, side in enumerate(pair):

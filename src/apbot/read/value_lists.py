@@ -204,7 +204,7 @@ def find_list(text: str) -> tuple[list[str], str] | None:
             parts[0] = _clean_item(" ".join(head[-size:]))
         # "BOTH → LOWER only → UPPER only": which one alone, the value is its name
         parts = [re.sub(r"(?<=\S)\s+only$", "", p) for p in parts]
-        if amount and len(parts) >= 3:  # "… in the order 1.0 LB → 1.5 LB": the amount first
+        if amount and (len(parts) >= 3 or both):  # "… 1.0 LB → 1.5 LB": the amount first
             parts[0] = amount.group(1)
         items = [p for p in parts if p and re.search(r"\w", p)]  # "… → OFF → …": no item
         if items and items[0] in items[1:]:
