@@ -33,7 +33,7 @@ from __future__ import annotations
 from apbot.model.domain import ValueProblem, normalise
 from apbot.model.schema import ApplianceModel, DiscreteVariable
 from apbot.model.values import closest_matches, preview
-from apbot.read.goal_assign import assign_mentions, distinct, in_weeks
+from apbot.read.goal_assign import assign_mentions
 from apbot.read.goal_cases import entry_modes, implied_cases, set_by_hand
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_fractions import fractions
@@ -42,6 +42,7 @@ from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
 from apbot.read.goal_open import open_entries
 from apbot.read.goal_ordinals import ordinal_numbers
 from apbot.read.goal_outside import kept_outside
+from apbot.read.goal_periods import distinct, in_weeks
 from apbot.read.goal_quantity_values import quantity_values
 from apbot.read.goal_remarks import without_remarks
 from apbot.read.goal_scales import superlatives
