@@ -9,6 +9,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from apbot.read.actions import ActionInfo
+from apbot.read.fault_tables import fault_table
 from apbot.read.labels import words
 from apbot.read.text import Unit
 from apbot.read.values import (
@@ -303,6 +304,7 @@ def _next_table_column(units: list[Unit], i: int, column: int = 0) -> list[str]:
         k += 1  # the header row
     items: list[str] = []
     numbers = 0
+    start = k
     while k < len(units) and units[k].cells and units[k].header:
         if column >= len(units[k].cells):
             k += 1
@@ -319,6 +321,8 @@ def _next_table_column(units: list[Unit], i: int, column: int = 0) -> list[str]:
         k += 1
     if shown:
         items = _without_display_word(items)
+    if k > start and fault_table(units[start].header, [u.cells for u in units[start:k]], column):
+        return []  # "E1 | Sensor fault": the codes of faults, no setting's values
     if numbers * 2 > len(items):
         return []  # a column of ranges or bare numbers is not a list of names
     return items if len(items) >= 2 else []

@@ -70,6 +70,27 @@ def _grid(lines: list[str], top: int) -> int:
     return bottom + 1
 
 
+def _ruled_rows(
+    lines: list[str], inside: range, first_rule: int | None, rule: re.Pattern[str]
+) -> bool:
+    """Whether the rules below the header close each row ("+----+" under every key of a grid):
+    most runs of lines between two rules are one line, so a run of two or more is one row
+    wrapped ("CHILD" over "LOCK"), even when its second line fills the first cell."""
+    if first_rule is None:
+        return False
+    runs: list[int] = []
+    count = 0
+    for i in range(first_rule + 1, inside.stop):
+        if rule.match(lines[i]):
+            runs.append(count)
+            count = 0
+        else:
+            count += 1
+    runs.append(count)
+    runs = [n for n in runs if n]
+    return len(runs) >= 3 and 2 * sum(n == 1 for n in runs) > len(runs)
+
+
 def _rewrite(
     lines: list[str],
     top: int,
@@ -86,6 +107,8 @@ def _rewrite(
     inside = range(top + 1, bottom)
     width = max(len(_cells(lines[i], bar)) for i in inside if row.match(lines[i]))
     first_rule = next((i for i in inside if rule.match(lines[i])), None)
+    ruled = _ruled_rows(lines, inside, first_rule, rule)
+    rules = {i for i in inside if rule.match(lines[i])}
     rows: list[tuple[int, list[str]]] = []  # (line index, cells) of each row started
     for i in inside:
         if rule.match(lines[i]):
@@ -93,7 +116,9 @@ def _rewrite(
             continue
         cells = (_cells(lines[i], bar) + [""] * width)[:width]
         in_header = first_rule is not None and i < first_rule
-        if rows and not cells[0] and any(cells) and not in_header:
+        # under rules that close every row, a line right under another is its row's wrap
+        wrapped = not cells[0] or (ruled and i - 1 not in rules)
+        if rows and wrapped and any(cells) and not in_header:
             last = rows[-1][1]
             for c, cell in enumerate(cells):
                 if cell:
