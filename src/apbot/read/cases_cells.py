@@ -112,8 +112,11 @@ def _case(spec: dict[str, Any], cell: str) -> Any:
             return {"values": span}  # "cold – 60 °C" over the knob's marks
         known = spec.get("values", [])
         spaced = _norm(re.sub(r"\(.*?\)", "", cell)).split()
+        marked = [w[1:-1] for w in spaced if re.fullmatch(r"\[[^\]]+\]", w)]
+        spaced = [w.strip("[]") for w in spaced]
         if len(spaced) >= 2 and all(w in known for w in spaced):
-            return {"values": spaced}  # "SOFT MEDIUM FIRM": the values, printed with spaces
+            # "SOFT MEDIUM FIRM": the values, printed with spaces ("[40]": the default)
+            return {"values": spaced} | ({"initial": marked[0]} if len(marked) == 1 else {})
         items = [
             _norm(re.sub(r"\(.*?\)", "", i)) for i in re.split(r"\s*(?:,|/|·|\bor\b)\s*", cell)
         ]

@@ -10,6 +10,7 @@ from __future__ import annotations
 import itertools
 import re
 
+from apbot.read.chart_cells import own_cells, row_names, without_names
 from apbot.read.count_tables import chart_for, count_charts, sideways_charts
 from apbot.read.evidence_anywhere import AnywhereReader
 from apbot.read.evidence_checks import (
@@ -148,6 +149,9 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
             for w in [x for x in words(t.replace("_", " ")) if len(x) >= 4][:1]
         }
         context = self.context(tokens)
+        own_words = {w for t in tokens for w in words(t.replace("_", " ")) if len(w) >= 3}
+        own_words |= {w for o in own for w in words(o) if len(w) >= 3}
+        chart_names = row_names(units)
         for i in [*context, *sorted(steps - set(context))]:  # (a step further down: its own)
             text = units[i].text
             unit = units[i]
@@ -206,7 +210,11 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
             waiting = waiting or surroundings(text)  # "at an ambient 5 to 35 °C": the room's
             ranges = [
                 r
-                for r in find_ranges("" if waiting else _without_advice(unit))
+                for r in find_ranges(
+                    ""
+                    if waiting
+                    else without_names(_without_advice(own_cells(unit, own_words)), chart_names)
+                )
                 if _fits(r.unit, tokens) and not _keypad(r, text)
             ]
             if ev.keypad_at is None and _KEYPAD_WORDS.search(text):

@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 from apbot.read.errors import ReaderError
 from apbot.read.marks_legend import legend_meanings
 from apbot.read.text_boxes import unbox
-from apbot.read.text_icons import name_icons
+from apbot.read.text_icons import _put, name_icons
 from apbot.read.text_pages import (
     _furniture,
     _page_breaks,
@@ -164,7 +164,12 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
     text = text.replace("\r\n", "\n").replace("\r", "\n").replace("\f", "\n\f\n")
     text = name_icons(unbox(text), _KEEP)  # "touch ❄" → "touch COLDER" when a legend names it
     glyphs = text.split("\n")  # (a level shown as segments, "▮▮▯", is read from these)
-    text = _clean_chars(re.sub(r" ?❄ ?", " ❄ ", text))  # one space each side, not two
+    text = re.sub(r" ?❄ ?", " ❄ ", text)  # one space each side, not two
+    # the snowflake is a cold setting: named COLD, the width it adds taken out of the next wide
+    # gap, so a chart drawn with spaces keeps its columns (a wrapped cell stays under its own)
+    text = _clean_chars(
+        "\n".join(_put(x, "❄", "COLD") if "❄" in x else x for x in text.split("\n"))
+    )
     lines = text.split("\n")
     contents = contents_lines(lines)  # a table of contents: titles, not text about the keys
     text = "\n".join("" if i in contents else line for i, line in enumerate(lines))
