@@ -196,7 +196,7 @@ def test_a_walk_s_fields_are_named_beside_their_display_words_and_a_listed_one_i
     start, pause = steps[1].variable, steps[3].variable
     assert start == "feed_time" and pause == "pause"
     assert model.variables[start].label == "FT" and model.variables[pause].label == "PA"
-    assert tuple(list(model.variables[pause].ranges or [])[0])[:2] == (1, 4)
+    assert tuple(next(iter(model.variables[pause].ranges or [])))[:2] == (1, 4)
     assert all(s.timeout == 5 for s in steps)
 
 
@@ -229,7 +229,7 @@ def test_a_clock_walk_is_named_beside_its_display_word_and_steps_the_minutes_it_
     (steps,) = [s for s in model.features.values() if s[0].actions == ["hold_wake"]]
     assert steps[1].variable == "wake_time" == steps[3].variable
     assert steps[3].effect["press_up"].add == 300
-    assert tuple(list(model.variables["wake_time"].ranges or [])[0])[1:] == ("23:55:00", 300)
+    assert tuple(next(iter(model.variables["wake_time"].ranges or [])))[1:] == ("23:55:00", 300)
 
 
 def test_a_hold_opening_one_setting_the_pair_steps_is_that_setting() -> None:

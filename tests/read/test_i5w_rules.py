@@ -54,3 +54,35 @@ def test_a_hold_is_not_the_lock_when_another_key_s_own_row_says_its_hold_is() ->
     (lock,) = [s for s in model.features.values() if s[0].variable == "child_lock"]
     assert lock[0].actions == ["hold_fan"]
     assert model.variables["child_lock"].show == {"off": "", "on": "Loc"}
+
+
+def test_a_chain_of_values_joined_by_en_dashes_is_one_stepped_list() -> None:
+    from apbot.read.values import find_ranges
+
+    (found,) = find_ranges("Each press changes it by 5 ml: 10 – 15 – 20 – 25 – 30 ml")
+    assert (found.low, found.high, found.unit, found.step) == (10, 30, "ml", 5)
+
+
+# a key table with a column for holding; a mode word ending in -UP beside the ▲ key
+SHOWER = """RIVA DS-1 shower panel
+
+  Key legend
+
+   No.  Key      Touch                          Touch and hold 3 seconds
+   ---  -------  -----------------------------  ------------------------------
+   1    FLOW     next flow: LOW → HIGH → LOW    -
+   2    OUTLET   next outlet: RAIN → HAND       WARM-UP on / off
+   3    ▲        warmer, + 0.5 °C               release / restore the 40 °C stop
+   4    ▼        cooler, − 0.5 °C               -
+
+  WARM-UP appears while the warm-up is on.
+"""
+SHOWER_ACTIONS = ["press_flow", "press_outlet", "hold_outlet", "press_up", "hold_up",
+                  "press_down"]  # fmt: skip
+
+
+def test_a_token_is_not_a_part_of_a_hyphenated_word_and_a_held_cell_s_job_is_no_fast_step() -> None:
+    model = read_manual(SHOWER, SHOWER_ACTIONS).model
+    assert {c.id: c.label for c in model.controls}["up_control"] == "▲"
+    stepping = [s for steps in model.features.values() for s in steps if "press_up" in s.actions]
+    assert stepping and all("hold_up" not in s.actions for s in stepping)

@@ -21,9 +21,9 @@ from typing import Any
 from apbot.model.values import format_hms
 from apbot.read.build import Builder
 from apbot.read.roles_fasthold import held_time_step
+from apbot.read.roles_lists import list_range, list_step
 from apbot.read.shapes import Evidence
 from apbot.read.text import Unit
-from apbot.read.roles_lists import list_range, list_step
 from apbot.read.value_lists import find_list
 from apbot.read.values import NUM, UNIT, find_ranges, find_step
 
@@ -128,7 +128,9 @@ def _field_name(shown: str) -> str:
     m = _SHOWS_RE.search(shown) or _BESIDE_RE.match(_after_key(shown))
     if not m:
         return ""
-    return "_".join(w for w in m.group(m.lastindex or 1).lower().split() if w not in {"current", "set"})
+    return "_".join(
+        w for w in m.group(m.lastindex or 1).lower().split() if w not in {"current", "set"}
+    )
 
 
 def _after_key(shown: str) -> str:
