@@ -105,3 +105,27 @@ def test_fault_codes_and_model_codes_are_no_setting_words() -> None:
     without_models = ICE.replace("Models S / M / L (standard, maxi, large tank).", "")
     model = read_manual(without_models, ["press_power", "press_size"]).model
     assert model.variables["size"].values == ["s", "m", "l"]
+
+
+# a run of arrows glossing each code in brackets: the codes need not abbreviate the words
+GLOSSED = """NOVA CL-2 bedside clock
+Instructions
+
+KEYS
+  GLOW      display brightness
+  SIDE      which side the text sits on
+
+Press GLOW to change the brightness:
+    g2 (bright) → g1 (dim) → g0 (dark) → g2 …
+
+Press SIDE to move the text:
+    SIDE L (left) → SIDE M (middle) → SIDE R (right) → SIDE L …
+"""
+GLOSSED_ACTIONS = ["press_glow", "press_side"]
+
+
+def test_codes_glossed_in_brackets_along_their_arrows_become_the_glossed_words() -> None:
+    model = read_manual(GLOSSED, GLOSSED_ACTIONS).model
+    values = {tuple(v.values or []) for v in model.variables.values()}
+    assert ("bright", "dim", "dark") in values
+    assert ("left", "middle", "right") in values

@@ -168,3 +168,74 @@ def test_held_key_walking_hours_of_a_delay_makes_no_clock() -> None:
         v.type == "time" and v.wrap and v.ranges[0][1] == "23:59:00"
         for v in model.variables.values()
     )
+
+
+# a bird-feeder timer (our own words): FEED held opens the feed time, named beside its display
+# word, then the pause after it, listed value by value; waiting stores it
+FEEDER = """PIKKU BF-2 bird feeder timer
+
+KEYS
+  FEED      Press: feeding on / off.   Hold 3 s: set the feeding.
+  ▲         Later / more.
+  ▼         Earlier / less.
+
+FEEDING
+  1. Hold FEED for 3 seconds. FT and the feed time flash, e.g. FT 07:00.
+  2. Set the feed time with ▲ and ▼. Each press moves it by 30 minutes. After 23:30
+     comes 00:00.
+  3. Press FEED. PA and the pause flash, e.g. PA 2 h.
+  4. Set the pause with ▲ / ▼: 1, 2, 3 or 4 hours.
+  5. Wait 5 seconds. The values are stored.
+"""
+FEEDER_ACTIONS = ["press_feed", "hold_feed", "press_up", "press_down", "wait_5s"]
+
+
+def test_a_walk_s_fields_are_named_beside_their_display_words_and_a_listed_one_is_read() -> None:
+    model = read_manual(FEEDER, FEEDER_ACTIONS).model
+    (steps,) = [s for s in model.features.values() if s[0].actions == ["hold_feed"]]
+    start, pause = steps[1].variable, steps[3].variable
+    assert start == "feed_time" and pause == "pause"
+    assert model.variables[start].label == "FT" and model.variables[pause].label == "PA"
+    assert tuple(next(iter(model.variables[pause].ranges or [])))[:2] == (1, 4)
+    assert all(s.timeout == 5 for s in steps)
+
+
+# a kitchen radio (our own words): WAKE held walks the hours, then the minutes in steps of 5,
+# of a time named beside its display word; NAP held opens one setting only
+RADIO = """TOKI KR-1 kitchen radio
+
+KEYS
+  WAKE      Press: wake-up on / off.   Hold 3 s: set the wake-up time.
+  ▲ / ▼     Up / down.
+  NAP       Hold 3 s: set the nap length.
+
+WAKE-UP TIME
+  1. Hold WAKE for 3 seconds. WK and the wake time appear, the hour flashes.
+  2. Press ▲ or ▼ to set the hour.
+  3. Press WAKE. The minutes flash.
+  4. Press ▲ or ▼ to set the minutes. Each press moves the time by 5 minutes.
+  5. Press WAKE to confirm.
+
+NAP LENGTH
+  1. Hold NAP for 3 seconds. NP and the length appear.
+  2. Press ▲ or ▼: 10, 20, 30 or 40 minutes.
+  3. Wait 5 seconds; the setting is stored.
+"""
+RADIO_ACTIONS = ["press_wake", "hold_wake", "press_up", "press_down", "hold_nap", "wait_5s"]
+
+
+def test_a_clock_walk_is_named_beside_its_display_word_and_steps_the_minutes_it_says() -> None:
+    model = read_manual(RADIO, RADIO_ACTIONS).model
+    (steps,) = [s for s in model.features.values() if s[0].actions == ["hold_wake"]]
+    assert steps[1].variable == "wake_time" == steps[3].variable
+    assert steps[3].effect["press_up"].add == 300
+    assert tuple(next(iter(model.variables["wake_time"].ranges or [])))[1:] == ("23:55:00", 300)
+
+
+def test_a_hold_opening_one_setting_the_pair_steps_is_that_setting() -> None:
+    model = read_manual(RADIO, RADIO_ACTIONS).model
+    (steps,) = [s for s in model.features.values() if s[0].actions == ["hold_nap"]]
+    assert [s.actions[0] for s in steps] == ["hold_nap", "press_up"]
+    nap = steps[1].variable
+    assert nap == "nap_length" and model.variables[nap].label == "NP"
+    assert model.variables[nap].type == "time" and steps[1].timeout == 5

@@ -22,6 +22,9 @@ from apbot.read.off_words import lines_outside_asides, unit_at
 # a display code: one or two letters, or such groups joined by "+" ("W+B"); not three ("ECO",
 # "MAX" are words users say themselves)
 _CODE = re.compile(r"[a-z]{1,2}(?:\+[a-z]{1,2})*")
+# a code of letters, maybe with a digit ("d2"), each glossed in brackets in a run of arrows
+_NUMBERED = re.compile(r"[a-z]{1,2}\d?")
+_GLOSS = r"\s*\(([a-z][a-z' -]{1,20})\)"
 _WORD = re.compile(r"[A-Za-z][A-Za-z'-]*")
 _NOT_CODES = frozenset({"on", "off"})
 _LEAD = 4  # a definition's words: the code's meaning comes first ("S - small cubes, …")
@@ -36,10 +39,15 @@ def name_code_words(b: Builder) -> None:
         values = [str(v) for v in spec.get("values") or []]
         if spec.get("type") != "discrete" or not 2 <= len(values) <= 8 or spec.get("show"):
             continue
-        if not all(_CODE.fullmatch(v) for v in values) or set(values) <= _NOT_CODES:
+        if set(values) <= _NOT_CODES:
             continue
         lines = _own_lines(b)
-        found = _legend_words(lines, values) or _definition_words(lines, values)
+        if all(_CODE.fullmatch(v) for v in values):
+            found = _legend_words(lines, values) or _definition_words(lines, values)
+        else:
+            found = None
+        if not found and all(_NUMBERED.fullmatch(v) for v in values):
+            found = _bracketed_words(lines, values)
         if not found:
             continue
         names, line = found
@@ -111,4 +119,21 @@ def _definition_words(lines: list[str], codes: list[str]) -> tuple[dict[str, str
                 break
     if len(names) == len(codes) and len(set(names.values())) == len(codes):
         return names, first
+    return None
+
+
+def _bracketed_words(lines: list[str], codes: list[str]) -> tuple[dict[str, str], int] | None:
+    """A line stepping through the codes, each with its word in brackets ("d2 (high) → d1
+    (low) → d0 (off)", "L (left) → C (centre)"): the bracket pairs them, so a code need not
+    abbreviate its word."""
+    for number, line in enumerate(lines, 1):
+        if "→" not in line and "->" not in line:
+            continue
+        names: dict[str, str] = {}
+        for code in codes:
+            m = re.search(rf"(?<![\w+]){re.escape(code)}{_GLOSS}", line, re.IGNORECASE)
+            if m:
+                names[code] = m.group(1).strip().lower()
+        if len(names) == len(codes) and len(set(names.values())) == len(codes):
+            return names, number
     return None

@@ -21,9 +21,11 @@ from typing import Any
 from apbot.model.values import format_hms
 from apbot.read.build import Builder
 from apbot.read.roles_fasthold import held_time_step
+from apbot.read.roles_lists import list_range, list_step
 from apbot.read.shapes import Evidence
 from apbot.read.text import Unit
-from apbot.read.values import find_ranges, find_step
+from apbot.read.value_lists import find_list
+from apbot.read.values import NUM, UNIT, find_ranges, find_step
 
 # "after 23:30 comes 00:00", "After 23:45 the time continues at 00:00": the last time of a day
 _DAY_WRAP_RE = re.compile(
@@ -35,11 +37,21 @@ _SHOWS_RE = re.compile(
     r"(?=\s*(?:[,.(]|\bof\b|\bbeing\b|\be\.g\.|$))",
     re.I,
 )
+# the field named beside the display word that stands for it: "ON and the start time flash",
+# "AL and the alarm time appear"
+_BESIDE_RE = re.compile(
+    r"^([A-Za-z][A-Za-z0-9]{0,5})\s+and\s+the\s+((?:[a-z]+\s){0,2}?[a-z]+)\s+"
+    r"(?:flash|appear|blink|light)s?\b"
+)
 # a display word standing before "appears": "F START appears with …"
 _APPEARS_RE = re.compile(r"^([A-Z][A-Z0-9 ]{0,12}?)\s+appears\b")
+# a display word and a number: "The display shows dL 0 h."
+_SHOWS_CODE_RE = re.compile(r"\bshows\s+([A-Za-z]{1,4})\s+\d")
+# a field's name that says nothing of what it is: its key's name leads it ("snooze length")
+_BARE = frozenset({"length", "duration", "time", "setting", "value", "level"})
 # "Do not touch any key for 5 seconds: the setting is stored", "stored after a few seconds"
 _STORED_RE = re.compile(
-    r"\b(?:for|after)\s+(?:(\d+)|a few)\s+seconds?\b[^.]*|\bstored\b[^.]*\bseconds\b", re.I
+    r"\b(?:for|after|wait)\s+(?:(\d+)|a few)\s+seconds?\b[^.]*|\bstored\b[^.]*\bseconds\b", re.I
 )
 _CLOCK_FIELDS_RE = re.compile(r"\bhours?\b[^.]*\bflash", re.I)
 _HOURS_RE = re.compile(r"\bhours?\b", re.I)
@@ -101,22 +113,34 @@ def _field(b: Builder, shown: str, text: str, at: int) -> dict[str, Any] | None:
         }
         return {"name": name or "time", "spec": spec}
     ranges = find_ranges(text)
+    step = find_step(text)
+    listed = find_list(text) if not ranges else None
+    if listed and all(re.fullmatch(rf"{NUM}\s*{UNIT}", v, re.I) for v in listed[0]):
+        ranges = [list_range(listed[0])]  # "Set the length: 1, 2, 3 or 4 hours."
+        step = step or list_step(listed[0])
     if len(ranges) != 1 or not ranges[0].unit:
         return None
-    step = find_step(text)
     ev = Evidence(ranges=ranges, range_at=at, step=step, step_at=at if step else None)
     return {"name": name or "setting", "evidence": ev}
 
 
 def _field_name(shown: str) -> str:
-    m = _SHOWS_RE.search(shown)
+    m = _SHOWS_RE.search(shown) or _BESIDE_RE.match(_after_key(shown))
     if not m:
         return ""
-    return "_".join(w for w in m.group(1).lower().split() if w not in {"current", "set"})
+    return "_".join(
+        w for w in m.group(m.lastindex or 1).lower().split() if w not in {"current", "set"}
+    )
+
+
+def _after_key(shown: str) -> str:
+    """The step's sentence after the key press that opens it ("Hold X for 3 s. AL and …")."""
+    return shown.split(". ", 1)[-1].strip() if ". " in shown else ""
 
 
 def _label(shown: str, fallback: str) -> str:
-    m = _APPEARS_RE.match(shown.split(". ", 1)[-1].strip()) if ". " in shown else None
+    after = _after_key(shown)
+    m = _APPEARS_RE.match(after) or _BESIDE_RE.match(after) or _SHOWS_CODE_RE.search(after)
     return m.group(1).strip() if m else fallback
 
 
@@ -134,13 +158,14 @@ def read_held_walks(b: Builder) -> None:
             (i.name for i in b.infos if i.skill == "press" and i.controls == (token,)), None
         )
         label = b.labels[token].text
-        if press is None:
-            continue
         opener = re.compile(rf"^(?:press and |touch and )?hold\s+{re.escape(label)}(?!\w)", re.I)
         for i, unit in enumerate(units):
             if unit.step is None or not opener.match(unit.text):
                 continue
-            walk = _walk(b, _groups(units, i), label, pairs, i)
+            groups = _groups(units, i)
+            walk = (_walk(b, groups, label, pairs, i) if press else None) or _one_walk(
+                b, groups, label, pairs, i
+            )
             if walk is not None:
                 _apply(b, info.name, press, walk)
                 break
@@ -172,6 +197,39 @@ def _walk(
     stored = _STORED_RE.search(groups[4][1]) if len(groups) > 4 else None
     timeout = float(stored.group(1) or 5) if stored else None
     return {"pair": pair, "fields": [one, two], "at": at, "timeout": timeout}
+
+
+def _one_walk(
+    b: Builder,
+    groups: list[tuple[int, str]],
+    label: str,
+    pairs: list[tuple[list[str], list[str]]],
+    at: int,
+) -> dict[str, Any] | None:
+    """A hold opening one setting the pair then steps ("1. Hold SNOOZE for 3 seconds. SNZ and
+    the length appear. 2. Press ▲ or ▼: 5, 10 … 30 minutes. 3. Wait 5 seconds."), named by
+    what the display shows, else by its section ("PRE-SET TIMER"), a bare "length" by its key."""
+    if len(groups) < 2:
+        return None
+    opened, first = groups[0][1], groups[1][1]
+    rest = [g[1] for g in groups[2:]]
+    if _CLOCK_FIELDS_RE.search(opened) or (
+        len(rest) >= 2 and _moves_on(rest[0], label) and _pair_of(b, pairs, rest[1])
+    ):
+        return None  # the hours of a clock, or a walk through two settings
+    pair = _pair_of(b, pairs, first)
+    field = _field(b, opened, f"{opened} {first}", at) if pair else None
+    if pair is None or field is None:
+        return None
+    own = _field_name(opened)
+    heading = re.sub(r"\([^)]*\)|\d", " ", b.manual.units[at].heading).lower()
+    name = own or "_".join(re.findall(r"[a-z]+", heading)[:3])
+    if not name or name in _BARE:
+        name = "_".join([*re.findall(r"[a-z]+", label.lower()), name or "setting"])
+    field.update(name=name, label=_label(opened, label))
+    stored = _STORED_RE.search(rest[0]) if rest else None
+    timeout = float(stored.group(1) or 5) if stored else None
+    return {"pair": pair, "fields": [field], "at": at, "timeout": timeout, "own": bool(own)}
 
 
 def _moves_on(text: str, label: str) -> bool:
@@ -209,6 +267,8 @@ def _clock_walk(
     if any(r.unit in ("h", "") and r.high < 23 for r in find_ranges(f"{opened} {first}")):
         return None  # "from 0 to 12 hours": a duration (a delay), not a time of day
     held = held_time_step(second)
+    step = find_step(second)  # "Each press moves the time by 5 minutes"
+    minute = int(step[0] * 60) if step and step[1] == "min" and 3600 % (step[0] * 60) == 0 else 60
     holds: dict[str, int] = {}
     for k, side in enumerate(pair):
         for action in side:
@@ -223,6 +283,8 @@ def _clock_walk(
     return {
         "pair": pair,
         "clock": _label(opened, label),
+        "name": _field_name(opened),  # "AL and the alarm time appear": the alarm time
+        "minute": minute,
         "holds": holds,
         "confirm": confirm,
         "at": at,
@@ -249,13 +311,17 @@ def _drop_guess(b: Builder, hold: str) -> str:
             used = any(s.get("variable") == var for st in b.features.values() for s in st)
             if var in b.variables and not used:
                 del b.variables[var]
+                for steps in b.features.values():  # nor does a choice reset it any more
+                    for step in steps:
+                        if var in step.get("reset", []):
+                            step["reset"] = [r for r in step["reset"] if r != var]
         var = names[0]
         if len(old) == 1 and isinstance(var, str) and not var.endswith("_hold"):
             prefix = f"{var}_"
     return prefix
 
 
-def _apply(b: Builder, hold: str, press: str, walk: dict[str, Any]) -> None:
+def _apply(b: Builder, hold: str, press: str | None, walk: dict[str, Any]) -> None:
     """Drop the hold's guessed setting; add the two fields and the feature walking them (named
     after what the hold was read to set, "sleep_period", when that was more than the key's name
     and "hold")."""
@@ -263,6 +329,10 @@ def _apply(b: Builder, hold: str, press: str, walk: dict[str, Any]) -> None:
         _apply_clock(b, hold, press, walk)
         return
     prefix = _drop_guess(b, hold)
+    if len(walk["fields"]) == 1:  # one setting: the name the hold was read with, else its own
+        field = walk["fields"][0]
+        field["name"] = field["name"] if walk.get("own") or not prefix else prefix[:-1]
+        prefix = ""
     up, down = walk["pair"]
     effect = {**{a: "next" for a in up}, **{a: "prev" for a in down}}
     steps: list[dict[str, Any]] = [{"actions": [hold]}]
@@ -285,9 +355,8 @@ def _apply(b: Builder, hold: str, press: str, walk: dict[str, Any]) -> None:
             step["timeout"] = walk["timeout"]
     feature = f"set_{names[0]}"
     b.feature(feature, steps)
-    b.note(
-        f"features.{feature}", f"{hold} opens {names[0]}, {press} moves to {names[1]}", walk["at"]
-    )
+    said = f"{hold} opens {names[0]}" + (f", {press} moves to {names[1]}" if names[1:] else "")
+    b.note(f"features.{feature}", said, walk["at"])
 
 
 def _day_clock(spec: dict[str, Any]) -> bool:
@@ -302,7 +371,7 @@ def _day_clock(spec: dict[str, Any]) -> bool:
     )
 
 
-def _apply_clock(b: Builder, hold: str, press: str, walk: dict[str, Any]) -> None:
+def _apply_clock(b: Builder, hold: str, press: str | None, walk: dict[str, Any]) -> None:
     """Add the clock walk; the time it sets is the time the key's press was read to open with
     the pair (that reading, a press alone opening the minutes, is dropped), else a new one."""
     _drop_guess(b, hold)
@@ -319,18 +388,19 @@ def _apply_clock(b: Builder, hold: str, press: str, walk: dict[str, Any]) -> Non
             var = old[1]["variable"]
             del b.features[fname]
             break
+    minute = walk["minute"]
     if var is None:
-        var = b.unique("clock", b.variables)
+        var = b.unique(walk["name"] or "clock", b.variables)
         b.variables[var] = {
             "label": walk["clock"],
             "type": "time",
-            "ranges": [["00:00:00", "23:59:00", 60]],
+            "ranges": [["00:00:00", format_hms(24 * 3600 - minute), minute]],
             "format": "hh:mm",
         }
         b.note(f"variables.{var}", "a time of day the held key's steps set", walk["at"])
     b.variables[var]["wrap"] = True
     hours = {**{a: {"add": 3600} for a in up}, **{a: {"add": -3600} for a in down}}
-    minutes = {**{a: {"add": 60} for a in up}, **{a: {"add": -60} for a in down}}
+    minutes = {**{a: {"add": minute} for a in up}, **{a: {"add": -minute} for a in down}}
     minutes.update({a: {"add": n} for a, n in walk["holds"].items()})
     steps: list[dict[str, Any]] = [
         {"actions": [hold]},

@@ -95,6 +95,7 @@ def _score(token_words: list[str], phrase: str) -> float:
     if (
         all(any(p == t or (len(t) >= 3 and p.startswith(t)) for p in pw) for t in tw)
         and len(pw) <= len(tw) + 1
+        and not _part_of_compound(tw, phrase)
     ):
         return 0.75
     if len(tw) == 1 and len(tw[0]) >= 3 and pw[0].startswith(tw[0]) and len(pw) == 1:
@@ -102,6 +103,16 @@ def _score(token_words: list[str], phrase: str) -> float:
     if len(tw) == 1 and len(pw) == 1 and len(pw[0]) >= 5 and tw[0].startswith(pw[0]):
         return 0.65  # PROGRAM for programme
     return 0.0
+
+
+def _part_of_compound(token_words: list[str], phrase: str) -> bool:
+    """A token word that is only a part of a hyphenated word ("up" of WARM-UP): one word, which
+    the token does not name."""
+    for compound in re.findall(r"[a-z0-9]+(?:-[a-z0-9]+)+", phrase.lower()):
+        parts = compound.split("-")
+        if any(t in parts for t in token_words) and not set(parts) <= set(token_words):
+            return True
+    return False
 
 
 NOUN_TOKENS = frozenset({"knob", "dial", "selector", "switch", "wheel", "ring", "lever"})

@@ -276,11 +276,13 @@ def _named_cycle(b: Builder, key: ActionInfo, ev: Evidence) -> bool:
     own = ev.values_at in said or (
         ev.values_at - 1 in said and not b.manual.units[ev.values_at].cells
     )
+    # "OFF → BUZZ → RADIO": the switching on and off said with it is a step of the cycle
+    off_cycle = "off" in values and "on" not in values
     return (
         len(values) >= 3
-        and not {"on", "off"} & set(values)
+        and (off_cycle or not {"on", "off"} & set(values))
         and not numeric_list(values)
-        and ev.values_at != ev.toggle_at
+        and (off_cycle or ev.values_at != ev.toggle_at)
         and own
         and not _own_legend(b, key, ev.toggle_at)
     )

@@ -16,6 +16,7 @@ from typing import Any
 from apbot.model.values import NUMBER_WORDS
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
+from apbot.read.roles_holdcell import own_hold_cells
 
 _NUMBER_WORDS = {
     w: NUMBER_WORDS[w] for w in ("two", "three", "four", "five", "six", "ten", "twenty")
@@ -87,7 +88,7 @@ def fold_fast_holds(b: Builder) -> None:
             continue
         if not any(i.skill == "press" and i.controls == hold.controls for i in b.infos):
             continue
-        if _said_step(b, hold) is None and _hold_has_own_job(b, hold):
+        if (_said_step(b, hold) is None and _hold_has_own_job(b, hold)) or _cell_job(b, hold):
             continue  # "hold + for 3 s to switch to °F": a job of its own, not a faster step
         holds.append((hold, var, own))
     attached = attach_fast_holds(b, [h for h, _, _ in holds])
@@ -197,6 +198,16 @@ def _hold_clause(text: str) -> str:
     """The hold's own clause: up to another gesture or clause ("hold + to set the clock
     faster, and press START to add a delay of 2 hours": the 2 hours are START's)."""
     return _CLAUSE_END_RE.split(text, maxsplit=1)[0]
+
+
+def _cell_job(b: Builder, hold: ActionInfo) -> bool:
+    """The key's row in a key table gives holding a job in its column for holding ("| ▲ |
+    warmer | release / restore the 40 °C stop |"), and it is no faster step."""
+    return any(
+        re.search(r"[a-z]{3}", cell, re.I)
+        and not (_FASTER_RE.search(cell) or _STEPS_RE.search(cell) or _TIME_RE.search(cell))
+        for cell in own_hold_cells(b, hold)
+    )
 
 
 def _hold_has_own_job(b: Builder, hold: ActionInfo) -> bool:

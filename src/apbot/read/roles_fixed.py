@@ -125,6 +125,9 @@ def assign_locks(b: Builder, done: set[str]) -> list[str]:
                 or (
                     not named
                     and not (_runs(info) and any(_held_lock(b, o) for o in infos if not _runs(o)))
+                    # another key's own row says its hold is the lock ("LIGHT | Touch and hold
+                    # 3 s: key lock"): that row, next to this key's, speaks of that one
+                    and not any(_held_lock(b, o) for o in infos if o.token != info.token)
                     and any(
                         re.search(r"\bhold\b", t, re.I) and re.search(r"\block", t, re.I)
                         for t in texts
@@ -296,7 +299,7 @@ def _state_word(
     return "", None
 
 
-_LOCK_WORDS = (r"[A-Z][A-Z-]*LOC[A-Z]*|LOC|LOCK(?:ED)?", r"[A-Z]-?L")
+_LOCK_WORDS = (r"[A-Z][A-Z-]*LOC[A-Z]*|LOC|Loc|LOCK(?:ED)?", r"[A-Z]-?L")
 # the word the display is said to show: "The display shows C-L.", "LOCK appears", "LOCK lights"
 _SHOWN = (
     r"\b(?:shows?|displays?|reads?)\s+(?:the\s+)?(?:(?:word|code|symbol)\s+)?[\"'“‘]?\b({word})\b"

@@ -44,6 +44,12 @@ def hold_cells(unit: Unit) -> list[str]:
     ]
 
 
+def own_hold_cells(b: Builder, key: ActionInfo) -> list[str]:
+    """The cells under a header for holding in the key's own table rows."""
+    units = b.manual.units
+    return [cell for i in _own_rows(b, key) if units[i].cells for cell in hold_cells(units[i])]
+
+
 def _own_rows(b: Builder, key: ActionInfo) -> list[int]:
     """The units of the key's own legend: a line or row led by its printed name (a row may be
     numbered first: "2 | HEAT | …")."""

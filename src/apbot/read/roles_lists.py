@@ -170,14 +170,14 @@ def list_evidence(ev: Evidence) -> Evidence:
         else:
             pieces.append(Range(lo, hi, unit, gap))
     return Evidence(
-        ranges=pieces or [_list_range(ev.values or [])],
+        ranges=pieces or [list_range(ev.values or [])],
         range_at=ev.values_at,
         initial=ev.initial,
         initial_at=ev.initial_at,
     )
 
 
-def _list_range(values: list[str]) -> Any:
+def list_range(values: list[str]) -> Any:
     from apbot.read.values import Range, unit_name
 
     nums = _nums(values)
@@ -185,7 +185,7 @@ def _list_range(values: list[str]) -> Any:
     return Range(nums[0], nums[-1], unit)
 
 
-def _list_step(values: list[str]) -> tuple[float, str] | None:
+def list_step(values: list[str]) -> tuple[float, str] | None:
     nums = _nums(values)
     if len(nums) < 2:
         return None

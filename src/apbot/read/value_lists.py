@@ -300,11 +300,14 @@ def caps_run(text: str, exclude: set[str]) -> list[str] | None:
 
 def bare_list(text: str) -> list[str] | None:
     """A line that is nothing but a list ("OFF · 1 · 2 · 3 · CONT", "WARM   BAKE   TOAST"), as
-    printed round a knob or under a key after a sentence ending in a colon."""
+    printed round a knob or under a key after a sentence ending in a colon. An aside in
+    brackets is no item ("BUZZ (🔔 bell icon)": its spaces and slashes split nothing)."""
+    text = re.sub(r"\s*\([^()]*\)", "", text)
     items = [
         _clean_item(p)
         for p in re.split(r"\s*[·•|,]\s*|\s*/\s*|\s{2,}|\s+or\s+|\s*[→>]\s*", text.strip())
     ]
+    items = [re.sub(r"\s*(?:…|\.\.\.)$", "", i) for i in items]  # "… → OFF …": and so on
     items = _uncounted([i for i in items if i])
     if len(items) < 3 or len(items) > 16:
         return None

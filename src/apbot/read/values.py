@@ -33,7 +33,7 @@ RANGE_RE = re.compile(
 )
 # three or more values joined by dashes, the unit after the last: "35 - 40 - 45 - 50 %"
 CHAIN_RE = re.compile(
-    rf"(?<![\w:.])(?P<run>{NUM}(?:\s*-\s*{NUM}){{2,}})\s*(?P<unit>{UNIT})?(?![\w:])",
+    rf"(?<![\w:.])(?P<run>{NUM}(?:\s*[-–]\s*{NUM}){{2,}})\s*(?P<unit>{UNIT})?(?![\w:])",
     re.IGNORECASE,
 )
 # a setting that "stops at 1 h and at 12 h" (no wrap): those are its ends

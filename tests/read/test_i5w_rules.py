@@ -1,0 +1,88 @@
+"""Rules drawn from last session's blind set I5, each on a small manual in our own words: a
+cycle with OFF among its names, an aside in brackets inside a bare list, the lock that another
+key's own row claims."""
+
+from __future__ import annotations
+
+from apbot.read import read_manual
+from apbot.read.value_lists import bare_list
+
+# a key stepping through OFF and two names, said to switch the thing on and off
+WAKE = """TOKI WR-2 wake-up light
+Instructions
+
+KEYS
+  CALL      wake-up OFF / LIGHT / SOUND
+  LAMP      lamp on / off
+
+Wake-up (switching the wake-up on and off)
+  Press CALL to choose how you wake up:
+      OFF → LIGHT (☀ sun icon) → SOUND (♪ note icon) → OFF …
+"""
+WAKE_ACTIONS = ["press_call", "press_lamp"]
+
+
+def test_a_cycle_with_off_among_its_names_is_a_selector_not_a_switch() -> None:
+    model = read_manual(WAKE, WAKE_ACTIONS).model
+    values = {tuple(v.values or []) for v in model.variables.values()}
+    assert ("off", "light", "sound") in values
+
+
+def test_a_bare_list_skips_bracketed_asides_and_a_trailing_ellipsis() -> None:
+    items = bare_list("OFF → LIGHT (  sun icon) → SOUND (  note icon) → OFF …")
+    assert items == ["OFF", "LIGHT", "SOUND"]
+
+
+# two held keys, the lock's own row next to the other key's
+PANEL = """KIVA H-3 steam room panel
+
+  ①  ⏻        Switches the panel on and off.
+  ②  ▲        Raises the value being set.
+  ③  ▼        Lowers the value being set.
+  ④  TIME     Touch: session time.  Touch and hold 3 s: start delay.
+  ⑤  FAN      Touch: fan on / off.  Touch and hold 3 s: key lock.
+
+Key lock
+  Touch and hold FAN for 3 seconds. The display shows Loc.
+"""
+PANEL_ACTIONS = ["press_power", "press_up", "press_down", "press_time", "hold_time",
+                 "press_fan", "hold_fan"]  # fmt: skip
+
+
+def test_a_hold_is_not_the_lock_when_another_key_s_own_row_says_its_hold_is() -> None:
+    model = read_manual(PANEL, PANEL_ACTIONS).model
+    (lock,) = [s for s in model.features.values() if s[0].variable == "child_lock"]
+    assert lock[0].actions == ["hold_fan"]
+    assert model.variables["child_lock"].show == {"off": "", "on": "Loc"}
+
+
+def test_a_chain_of_values_joined_by_en_dashes_is_one_stepped_list() -> None:
+    from apbot.read.values import find_ranges
+
+    (found,) = find_ranges("Each press changes it by 5 ml: 10 – 15 – 20 – 25 – 30 ml")
+    assert (found.low, found.high, found.unit, found.step) == (10, 30, "ml", 5)
+
+
+# a key table with a column for holding; a mode word ending in -UP beside the ▲ key
+SHOWER = """RIVA DS-1 shower panel
+
+  Key legend
+
+   No.  Key      Touch                          Touch and hold 3 seconds
+   ---  -------  -----------------------------  ------------------------------
+   1    FLOW     next flow: LOW → HIGH → LOW    -
+   2    OUTLET   next outlet: RAIN → HAND       WARM-UP on / off
+   3    ▲        warmer, + 0.5 °C               release / restore the 40 °C stop
+   4    ▼        cooler, − 0.5 °C               -
+
+  WARM-UP appears while the warm-up is on.
+"""
+SHOWER_ACTIONS = ["press_flow", "press_outlet", "hold_outlet", "press_up", "hold_up",
+                  "press_down"]  # fmt: skip
+
+
+def test_a_token_is_not_a_part_of_a_hyphenated_word_and_a_held_cell_s_job_is_no_fast_step() -> None:
+    model = read_manual(SHOWER, SHOWER_ACTIONS).model
+    assert {c.id: c.label for c in model.controls}["up_control"] == "▲"
+    stepping = [s for steps in model.features.values() for s in steps if "press_up" in s.actions]
+    assert stepping and all("hold_up" not in s.actions for s in stepping)
