@@ -62,7 +62,7 @@ from apbot.read.goal_switches import (
 )
 from apbot.read.goal_text import Text
 from apbot.read.goal_twins import place_twins
-from apbot.read.goal_unit_cases import unit_cases
+from apbot.read.goal_unit_cases import said_units, unit_cases
 from apbot.read.goal_values import in_days
 from apbot.read.goal_view import Goal, Model, model_view
 from apbot.read.goal_vocab import STOP_WORDS, stem
@@ -129,6 +129,7 @@ def parse_instruction(
     if outside is not None:  # a read belief: a number its setting's name stands beside
         kept_outside(view, text, mentions, goal, claimed, where, outside)
     superlatives(view, text, goal, claimed, where)
+    said_units(view, goal)
     zero_settings(view, text, goal, claimed, where)
     off_levels(view, text, goal, claimed)
     no_values(view, text, goal, claimed)
