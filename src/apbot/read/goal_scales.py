@@ -8,6 +8,7 @@ from typing import Any
 from apbot.model.schema import DiscreteVariable, NumericVariable, TimeVariable
 from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab, said_before
 from apbot.read.goal_twins import find_twins
+from apbot.read.goal_unit_cases import unit_selector
 from apbot.read.goal_values import (
     OFF_WORDS,
     bare_number,
@@ -18,7 +19,6 @@ from apbot.read.goal_values import (
     quantity_dimensions,
     zone_case,
 )
-from apbot.read.goal_unit_cases import unit_selector
 from apbot.read.goal_view import Goal, Model, VarInfo, domain_values, own_concepts
 from apbot.read.goal_vocab import HIGHEST, LETTER_WORDS, LOWEST, SCALES, concept, stem
 

@@ -365,9 +365,9 @@ def _phrases(
             if text.casefold() in ON_WORDS + OFF_WORDS + ("none", "----", "--"):
                 continue
             forms = [text]
-            if show.get(text) and "{" not in show[text]:
-                if tuple(phrase_words(show[text])) not in shown:
-                    forms.append(show[text])
+            label_only = tuple(phrase_words(show.get(text, ""))) in shown
+            if show.get(text) and "{" not in show[text] and not label_only:
+                forms.append(show[text])
             for form in forms:
                 words = [w for w in phrase_words(form) if w != "and"]  # read as a connector
                 if parse_quantity(form) is not None:
