@@ -132,10 +132,11 @@ _KIND_OF_WORD = {
     **dict.fromkeys(("longest", "shortest", "long", "short"), "time"),
     **dict.fromkeys(("strongest", "weakest", "gentlest", "softest", "mildest"), "level"),
     **dict.fromkeys(("strong", "weak", "gentle", "soft", "mild"), "level"),
-    **dict.fromkeys(("fastest", "slowest", "fast", "slow"), "level"),  # a speed's levels
+    **dict.fromkeys(("fastest", "slowest", "fast", "slow"), "speed"),
 }
 """The kind a superlative's own word measures; "level": a strength, counted in numbered
-levels (an intensity 1-5, a massage OFF/1/2/3), whatever the setting is called."""
+levels (an intensity 1-5, a massage OFF/1/2/3), whatever the setting is called; "speed": the
+levels of a setting named for its speed (a SOFT START 1-2 is not how fast it runs)."""
 _AS_AS_KINDS = frozenset(w for w, kind in _KIND_OF_WORD.items() if not w.endswith("est"))
 
 
@@ -241,6 +242,7 @@ def _only_of_kind(view: Model, goal: Goal, kind: str) -> tuple[float, str] | Non
             or (kind == "temperature" and info.dimension == "fahrenheit")
             or (kind == "time" and isinstance(info.var, TimeVariable) and info.timing == "duration")
             or (kind == "level" and (_numbered_levels(info) or _worded_levels(info)))
+            or (kind == "speed" and concept("speed") in own_concepts(info))
         )
     ]
     return (0.0, found[0]) if len(found) == 1 else None
