@@ -232,37 +232,3 @@ def test_an_end_of_the_scale_in_the_unit_the_panel_shows() -> None:
 
 def test_the_slowest_setting_is_the_first_speed() -> None:
     assert _goal(MIXER, "Mix on the slowest setting") == {"speed": 1}
-
-
-MOWER = """
-appliance: {id: mower_1, category: mower, name: "Grasso G-1 robot mower", brand: G}
-controls:
-  - {id: time_button, kind: button, label: "TIME"}
-  - {id: hours_button, kind: button, label: "HOURS"}
-variables:
-  time:
-    type: time
-    ranges: [["00:00:00", "23:30:00", 1800]]
-    format: "h:mm"
-    label: "TIME"
-  hours:
-    type: numeric
-    unit: h
-    ranges: [[1, 12, 1]]
-    wrap: true
-actions:
-  press_time: {control: time_button}
-  press_hours: {control: hours_button}
-features:
-  time:
-    - {actions: [press_time], variable: time, effect: next}
-  hours:
-    - {actions: [press_hours], variable: hours, effect: next}
-display:
-  idle: "{time}"
-"""
-
-
-def test_a_dial_of_the_days_hours_is_a_time_of_day_even_unwrapped() -> None:
-    assert _goal(MOWER, "Eight hours of mowing from 6 am") == {"hours": 8, "time": "06:00:00"}
-    assert _goal(MOWER, "Start at noon, five hours per day") == {"hours": 5, "time": "12:00:00"}
