@@ -257,12 +257,11 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
     return Model(model, infos, phrases, start_values, frozenset(appliance), named, tops)
 
 
-def _whole_day(info: VarInfo, wrapping: bool = True) -> bool:
-    """A time setting that wraps round a whole day (00:00 to 23:xx): a time of day.
-    ``wrapping=False``: any setting over those hours, whether or not it is said to wrap."""
+def _whole_day(info: VarInfo) -> bool:
+    """A time setting that wraps round a whole day (00:00 to 23:xx): a time of day."""
     var = info.var
     values = info.values
-    if not isinstance(var, TimeVariable) or (wrapping and not var.wrap) or not values:
+    if not isinstance(var, TimeVariable) or not var.wrap or not values:
         return False
     first, last = magnitude(values[0]), magnitude(values[-1])
     return first == 0 and last is not None and last >= 23 * 3600
@@ -279,11 +278,10 @@ def _switch_time(info: VarInfo) -> bool:
 
 def _day_dial(info: VarInfo) -> bool:
     """A whole-day time setting that stops short of 24:00 (00:00 to 23:xx): the hours of a day
-    on a 24-hour dial, not a count of up to 24 hours (a 0-24 h timer ends at 24:00), whether
-    or not the model says it wraps (a read belief seldom knows). One the
+    on a 24-hour dial, not a count of up to 24 hours (a 0-24 h timer ends at 24:00). One the
     model says starts at 00:00 is a timer counting from empty (a keep-warm of 0 to 23 hours):
     a time of day to feed or to start at starts at a time of day (07:00), or is not stated."""
-    last = magnitude(info.values[-1]) if _whole_day(info, wrapping=False) else None
+    last = magnitude(info.values[-1]) if _whole_day(info) else None
     return last is not None and last < 24 * 3600 and not _starts_empty(info.var)
 
 
