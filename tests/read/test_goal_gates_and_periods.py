@@ -1,8 +1,8 @@
 """Rules of the goal parser checked on small models written for these tests: a setting that
 only a switch lets the user set implies that switch on; "every other day" and its kin are a
-number of days or hours; a display text every level shares names no level; an end of a scale is
-taken in the unit the panel shows, and the unit it starts in, said beside it, is no request;
-"the slowest setting" is the first step of a setting named for its speed."""
+number of days or hours; an end of a scale is taken in the unit the panel shows, and the unit
+it starts in, said beside it, is no request; "the slowest setting" is the first step of a
+setting named for its speed."""
 
 from __future__ import annotations
 
@@ -87,7 +87,10 @@ features:
   jets:
     - {actions: [press_jets], variable: jets, effect: toggle}
 guards:
-  - {name: heating off, when: {heat: "off"}, only: [press_heat, hold_heat, press_jets], display: "HEAT"}
+  - name: heating off
+    when: {heat: "off"}
+    only: [press_heat, hold_heat, press_jets]
+    display: "HEAT"
 display:
   idle: "{temperature}"
 """
@@ -128,34 +131,6 @@ features:
     - {actions: [press_turn], variable: turn_interval, effect: next}
 display:
   idle: "{turn_interval}"
-"""
-
-SEAT = """
-appliance: {id: seat_1, category: bidet_seat, name: "Lavo L-1 seat", brand: L}
-controls:
-  - {id: water_button, kind: button, label: "WATER"}
-  - {id: seat_button, kind: button, label: "SEAT"}
-variables:
-  water_temp:
-    type: discrete
-    values: ["off", low, mid, high]
-    initial: mid
-    show: {"off": "WATER □□□", low: "WATER ■□□", mid: "WATER ■■□", high: "WATER ■■■"}
-  seat_temp:
-    type: discrete
-    values: ["off", low, mid, high]
-    initial: mid
-    show: {"off": "SEAT □□□", low: "SEAT ■□□", mid: "SEAT ■■□", high: "SEAT ■■■"}
-actions:
-  press_water: {control: water_button}
-  press_seat: {control: seat_button}
-features:
-  water_temp:
-    - {actions: [press_water], variable: water_temp, effect: next}
-  seat_temp:
-    - {actions: [press_seat], variable: seat_temp, effect: next}
-display:
-  idle: "{water_temp}"
 """
 
 MIXER = """
@@ -215,13 +190,6 @@ def test_how_often_said_in_words_is_a_number() -> None:
     assert _goal(SPRINKLER, "once a week") == {"interval": "every 7 days"}
     assert _goal(SPRINKLER, "every day") == {"interval": "every day"}  # its own name
     assert _goal(HATCHER, "turn the eggs every hour") == {"turn_interval": 1}
-
-
-def test_a_display_label_every_level_shares_names_no_level() -> None:
-    assert _goal(SEAT, "Water temperature off, seat on high") == {
-        "water_temp": "off",
-        "seat_temp": "high",
-    }
 
 
 def test_an_end_of_the_scale_in_the_unit_the_panel_shows() -> None:

@@ -335,17 +335,6 @@ def _first_words(name: str, info: VarInfo) -> list[tuple[str, Any, tuple[str, ..
 _PACE_WORDS = frozenset({"slow", "fast"})
 
 
-def _shared_show_words(show: dict[str, str]) -> set[tuple[str, ...]]:
-    """The words two values' display texts both reduce to ("WATER ■□□", "WATER ■■□": WATER):
-    the setting's own label beside a gauge, which names neither value."""
-    seen: dict[tuple[str, ...], int] = {}
-    for form in show.values():
-        if form and "{" not in form:
-            words = tuple(phrase_words(form))
-            seen[words] = seen.get(words, 0) + 1
-    return {words for words, count in seen.items() if count > 1}
-
-
 def _phrases(
     model: ApplianceModel, infos: dict[str, VarInfo]
 ) -> list[tuple[str, Any, tuple[str, ...], float]]:
@@ -359,14 +348,12 @@ def _phrases(
         show = info.var.show if isinstance(info.var.show, dict) else {}
         if len(info.values) > MAX_PHRASE_VALUES:
             continue
-        shown = _shared_show_words(show)
         for value in info.values:
             text = str(value)
             if text.casefold() in ON_WORDS + OFF_WORDS + ("none", "----", "--"):
                 continue
             forms = [text]
-            label_only = tuple(phrase_words(show.get(text, ""))) in shown
-            if show.get(text) and "{" not in show[text] and not label_only:
+            if show.get(text) and "{" not in show[text]:
                 forms.append(show[text])
             for form in forms:
                 words = [w for w in phrase_words(form) if w != "and"]  # read as a connector
