@@ -36,6 +36,7 @@ from apbot.model.values import closest_matches, preview
 from apbot.read.goal_assign import assign_mentions
 from apbot.read.goal_cases import entry_modes, implied_cases, set_by_hand
 from apbot.read.goal_error import GoalParseError
+from apbot.read.goal_every import every_periods
 from apbot.read.goal_fractions import fractions
 from apbot.read.goal_kinds import kind_numbers
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
@@ -52,6 +53,7 @@ from apbot.read.goal_start import power_and_running
 from apbot.read.goal_switches import (
     boil,
     entry_switches,
+    gated_switches,
     no_values,
     off_levels,
     self_switching_off,
@@ -60,7 +62,7 @@ from apbot.read.goal_switches import (
 )
 from apbot.read.goal_text import Text
 from apbot.read.goal_twins import place_twins
-from apbot.read.goal_unit_cases import unit_cases
+from apbot.read.goal_unit_cases import said_units, unit_cases
 from apbot.read.goal_values import in_days
 from apbot.read.goal_view import Goal, Model, model_view
 from apbot.read.goal_vocab import STOP_WORDS, stem
@@ -100,7 +102,10 @@ def parse_instruction(
         )
     view = model_view(model, manual or "")
     text = Text.of(
-        ordinal_numbers(view, joined_compounds(view, without_remarks(view, str(instruction))))
+        ordinal_numbers(
+            view,
+            every_periods(view, joined_compounds(view, without_remarks(view, str(instruction)))),
+        )
     )
     goal: Goal = {}
     claimed: set[int] = set()
@@ -124,6 +129,7 @@ def parse_instruction(
     if outside is not None:  # a read belief: a number its setting's name stands beside
         kept_outside(view, text, mentions, goal, claimed, where, outside)
     superlatives(view, text, goal, claimed, where)
+    said_units(view, goal)
     zero_settings(view, text, goal, claimed, where)
     off_levels(view, text, goal, claimed)
     no_values(view, text, goal, claimed)
@@ -131,6 +137,7 @@ def parse_instruction(
     self_switching_off(view, text, goal, claimed)
     place_twins(view, text, goal, where)
     entry_switches(view, goal)
+    gated_switches(view, goal)
     set_by_hand(view, text, goal)
     implied_cases(view, goal)
     entry_modes(view, goal)

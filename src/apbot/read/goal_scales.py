@@ -8,6 +8,7 @@ from typing import Any
 from apbot.model.schema import DiscreteVariable, NumericVariable, TimeVariable
 from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab, said_before
 from apbot.read.goal_twins import find_twins
+from apbot.read.goal_unit_cases import unit_selector
 from apbot.read.goal_values import (
     OFF_WORDS,
     bare_number,
@@ -83,7 +84,7 @@ def superlatives(
         if best is None:
             continue
         name = best[1]
-        values = _ordered_values(domain_values(view, view.infos[name], goal))
+        values = _ordered_values(_scale_domain(view, view.infos[name], goal))
         if not values:
             continue
         top = view.top_codes.get(name)
@@ -102,6 +103,25 @@ def superlatives(
         claimed.add(k)
 
 
+def _scale_domain(view: Model, info: VarInfo, goal: Goal) -> list[Any]:
+    """The values an end of the scale is taken from: those of the case the goal puts the
+    setting's mode in, or else of the case the panel starts in ("as hot as it goes" on a
+    spa showing °C is 48 °C, not the 118 of its °F case). Only for a selector of units: the
+    cases of another mode are what the user may pick ("as hot as it will go" past a safety
+    stop)."""
+    var = info.var
+    parent = var.depends_on
+    if parent and parent not in goal and var.cases and unit_selector(view, parent):
+        mode = view.infos[parent].var
+        start = getattr(mode, "initial", None)
+        if start is None and isinstance(mode, DiscreteVariable) and mode.values:
+            start = mode.values[0]
+        case = var.cases.get(str(start))
+        if case is not None:
+            return domain_values(view, info, {**goal, parent: start})
+    return domain_values(view, info, goal)
+
+
 _MORE = frozenset({"much", "many", "high", "hot", "long", "strong", "fast", "big", "loud", "warm"})
 _LESS = frozenset(
     {"little", "few", "low", "cool", "short", "weak", "slow", "small", "quiet", "cold"}
@@ -112,9 +132,11 @@ _KIND_OF_WORD = {
     **dict.fromkeys(("longest", "shortest", "long", "short"), "time"),
     **dict.fromkeys(("strongest", "weakest", "gentlest", "softest", "mildest"), "level"),
     **dict.fromkeys(("strong", "weak", "gentle", "soft", "mild"), "level"),
+    **dict.fromkeys(("fastest", "slowest", "fast", "slow"), "speed"),
 }
 """The kind a superlative's own word measures; "level": a strength, counted in numbered
-levels (an intensity 1-5, a massage OFF/1/2/3), whatever the setting is called."""
+levels (an intensity 1-5, a massage OFF/1/2/3), whatever the setting is called; "speed": the
+levels of a setting named for its speed (a SOFT START 1-2 is not how fast it runs)."""
 _AS_AS_KINDS = frozenset(w for w, kind in _KIND_OF_WORD.items() if not w.endswith("est"))
 
 
@@ -136,7 +158,7 @@ _LIMIT_VERBS = frozenset(
     {"will", "'ll", "can", "could", "may", "would", "allows", "allow", "lets", "let", "permits"}
 ) | frozenset({"goes", "go", "gets", "get", "does", "do", "is"})
 # what may follow the limit in its clause: "as cool as it will go FOR the cuttings"
-_AFTER_LIMIT = frozenset({"for", "with", "to", "on", "please", "and", "then", "but"})
+_AFTER_LIMIT = frozenset({"for", "with", "to", "on", "please", "and", "then", "but", "in", "at"})
 
 
 def _its_limit(text: Text, j: int) -> bool:
@@ -220,6 +242,7 @@ def _only_of_kind(view: Model, goal: Goal, kind: str) -> tuple[float, str] | Non
             or (kind == "temperature" and info.dimension == "fahrenheit")
             or (kind == "time" and isinstance(info.var, TimeVariable) and info.timing == "duration")
             or (kind == "level" and (_numbered_levels(info) or _worded_levels(info)))
+            or (kind == "speed" and concept("speed") in own_concepts(info))
         )
     ]
     return (0.0, found[0]) if len(found) == 1 else None

@@ -25,6 +25,30 @@ _UNITS = frozenset(
 weight or distance): the values of a unit selector, never of a programme."""
 
 
+def said_units(view: Model, goal: Goal) -> None:
+    """ "as hot as it goes in Celsius" on a panel that shows °C: the unit it starts in, named
+    beside a setting kept in it, is how the user counts, not a switch asked for."""
+    for name in list(goal):
+        if not unit_selector(view, name):
+            continue
+        chooser = view.infos[name].var
+        assert isinstance(chooser, DiscreteVariable)
+        kept = any(
+            getattr(info.var, "depends_on", None) == name and other in goal
+            for other, info in view.infos.items()
+        )
+        if kept and str(goal[name]) == str(_starting(chooser)):
+            del goal[name]
+
+
+def unit_selector(view: Model, name: str) -> bool:
+    """``name`` is a selector of units for one quantity (°C / °F), not a programme."""
+    chooser = view.infos.get(name)
+    if chooser is None or not isinstance(chooser.var, DiscreteVariable):
+        return False
+    return all(_unit_names(chooser.var, u) and _a_unit(chooser.var, u) for u in chooser.values)
+
+
 def unit_cases(
     view: Model, text: Text, goal: Goal, claimed: set[int], where: dict[str, int]
 ) -> None:

@@ -1,0 +1,47 @@
+"""How often, said the way people say it: "every other day" is every 2 days, "every third day"
+every 3 days, "once a week" every 7 days, "turning every hour" every 1 hour. A panel's interval
+is a number of hours or days ("EVERY 2D", a turning interval of 1-12 h), and the rest of the
+parser reads "every 2 days" (a value holding that quantity, or a number beside its unit), so the
+phrase is written that way first. A phrase a value of the model is literally named by ("every
+day", "every week") is left as it is: that value's own name reads it.
+"""
+
+from __future__ import annotations
+
+import re
+
+from apbot.model.schema import DiscreteVariable
+from apbot.read.goal_view import Model
+
+_ORDINALS = {
+    "other": 2, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "sixth": 6, "seventh": 7,
+}  # fmt: skip
+_UNITS = r"(minute|hour|day|week)"
+_ONCE = re.compile(rf"\bonce\s+(?:a|an|per|every)\s+{_UNITS}\b", re.IGNORECASE)
+_EVERY = re.compile(
+    rf"\bevery\s+(?:({'|'.join(_ORDINALS)})\s+)?{_UNITS}\b(?!\s*[-/]?\s*(?:long|old))",
+    re.IGNORECASE,
+)
+
+
+def every_periods(view: Model, instruction: str) -> str:
+    """Rewrite "every other day", "every third day", "once a week", "every hour" with a number
+    ("every 2 days", "every 3 days", "every 7 days", "every 1 hour")."""
+    named = {
+        str(value).casefold()
+        for info in view.infos.values()
+        if isinstance(info.var, DiscreteVariable)
+        for value in info.values
+    }
+    instruction = _ONCE.sub(lambda m: f"every {m[1]}", instruction)
+
+    def number(match: re.Match[str]) -> str:
+        if any(match[0].casefold() in value for value in named):
+            return match[0]
+        count = _ORDINALS[match[1].casefold()] if match[1] else 1
+        unit = match[2].casefold()
+        if unit == "week":
+            count, unit = count * 7, "day"
+        return f"every {count} {unit}{'s' if count > 1 else ''}"
+
+    return _EVERY.sub(number, instruction)
