@@ -34,7 +34,6 @@ from apbot.read.report import Note, Report
 from apbot.read.roles import assign
 from apbot.read.shapes import CHOICE_WORDS
 from apbot.read.shown_bars import read_bar_shows
-from apbot.read.shown_setting import read_shown_settings
 from apbot.read.text import check_text, parse_manual
 
 MAX_REPAIRS = 40
@@ -76,7 +75,6 @@ def read_manual(
     apply_resets(builder)
     read_held_walks(builder)  # (after the resets: those were read for the switch it replaces)
     read_enabling_switches(builder)
-    read_shown_settings(builder)
     data = _assemble(builder, appliance_id, category)
     data["actions"].update({a: {"skill": "wait", "seconds": w} for a, w in waits.items()})
     notes = builder.notes

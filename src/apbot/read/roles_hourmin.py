@@ -11,7 +11,6 @@ from apbot.model.values import format_hms
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder, twelve_hour_clock
 from apbot.read.roles_common import label_of, var_name
-from apbot.read.shapes import ASIDE_HEADING, _without
 from apbot.read.values import ON_OFF_RE, find_step
 
 _HOUR = {"hour", "hours", "hr", "hrs"}
@@ -67,7 +66,6 @@ def assign_hour_minute(b: Builder, keys: list[ActionInfo], pair: tuple[str, str]
     if not timed:
         return []
     used = [hour, minute]
-    printed = [lab.text for lab in b.labels.values() if lab.text and lab.text.upper() == lab.text]
     for key in timed:
         token = key.controls[0]
         name = var_name(b, key).removesuffix("_hold")
@@ -99,14 +97,7 @@ def assign_hour_minute(b: Builder, keys: list[ActionInfo], pair: tuple[str, str]
         b.variables[var] = spec
         effect = {hour: {"add": "01:00:00"}, minute: {"add": format_hms(step)}}
         first: dict[str, Any] = {"actions": [key.name]}
-        # (without the keys' printed names: "ON TIME or OFF TIME first" switches nothing; nor
-        # does a troubleshooting row: "mode is ON or OFF: press MODE until AUTO")
-        switched = [
-            i
-            for i in mentions
-            if ON_OFF_RE.search(_without(b.manual.units[i].text, printed))
-            and not ASIDE_HEADING.search(b.manual.units[i].heading)
-        ]
+        switched = [i for i in mentions if ON_OFF_RE.search(b.manual.units[i].text)]
         if switched and not clock:  # "READY AT switches the finish-time function on or off"
             toggle = b.add_toggle(f"{var}_on", label_of(b, token), switched[0])
             first = {"actions": [key.name], "variable": toggle, "effect": "toggle"}
