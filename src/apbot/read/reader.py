@@ -23,6 +23,7 @@ from apbot.read.cases_resets import apply_resets
 from apbot.read.cases_zones import zone_twins
 from apbot.read.code_words import name_code_words
 from apbot.read.codes import name_codes
+from apbot.read.guards_enabled import read_enabling_switches
 from apbot.read.held_walks import read_held_walks
 from apbot.read.hold_seconds import hold_seconds, pair_hold_seconds
 from apbot.read.initials import read_initials
@@ -73,6 +74,7 @@ def read_manual(
     read_bar_shows(builder)
     apply_resets(builder)
     read_held_walks(builder)  # (after the resets: those were read for the switch it replaces)
+    read_enabling_switches(builder)
     data = _assemble(builder, appliance_id, category)
     data["actions"].update({a: {"skill": "wait", "seconds": w} for a, w in waits.items()})
     notes = builder.notes
