@@ -39,6 +39,7 @@ from apbot.read.values import (
     split_range,
     unit_name,
 )
+from apbot.read.values_zero import from_zero, zero_told
 
 _PRINTED_UNITS = r"kg|g|lbs?|ml|l|litres?|W|watts?|rpm|%"  # quantities, not times or degrees
 
@@ -254,6 +255,20 @@ class Builder(EvidenceReader):
                 return Range(0, top, {"seconds": "s", "minutes": "min", "hours": "h"}[spans[0]]), i
         return None
 
+    def _zero_for_none(
+        self, subject: str, name: str, label: str, ranges: list[Range], ev: Evidence
+    ) -> list[Range]:
+        """A timer read from its first real value whose zero a sentence naming it says is none
+        ("0 h = no timer"): zero is one of its settings."""
+        names = {w for w in words(name.replace("_", " ")) + words(label) if len(w) >= 3}
+        texts = [u.text for u in self.manual.units]
+        at = zero_told(texts, names, ranges[0].unit)
+        if at is None:
+            return ranges
+        step = ev.step[0] if ev.step and ev.step[1] == ranges[0].unit else None
+        self.note(subject, "zero is one of its settings (none)", at)
+        return from_zero(ranges, step)
+
     def add_number(self, name: str, label: str, ev: Evidence, cyclic: bool) -> str:
         """A numeric or time variable from the ranges and steps read (guessed where absent)."""
         named = set(words(name.replace("_", " ")))
@@ -306,6 +321,8 @@ class Builder(EvidenceReader):
             self.note(subject, f"range {low:g}–{high:g} {unit} (the manual gives none)")
             ranges = [Range(low, high, unit)]
             self.unread.add(name)
+        if ranges[0].low > 0 and not clock and name not in self.unread:
+            ranges = self._zero_for_none(subject, name, label, ranges, ev)
         unit = ranges[0].unit or (ev.step[1] if ev.step else "") or _unit_from_words(name)
         if unit == "°C" and not ranges[0].unit and self.fahrenheit():
             unit = "°F"  # a temperature read without its unit, in a manual that speaks °F

@@ -7,6 +7,7 @@ Their own job: chart shapes read whole, apart from the single ranges and steps o
 from __future__ import annotations
 
 import re
+from collections.abc import Iterable
 
 from apbot.read.values import (
     _DASH,
@@ -21,9 +22,17 @@ from apbot.read.values import (
 )
 
 _STEPPED_PIECE_RE = re.compile(  # "0:30 – 12:00  30 minutes": a range, then its step
-    # (or a table's row "| 0:30 to 5:00 | 30 seconds |", "0:00 to 5:00  in 30-second steps")
-    rf"(?<![\d:])({_TIME}){_DASH}({_TIME})(?![\d:])\s*(?:h\b)?\s*\|?\s*(?:by\s+|in\s+)?"
+    # (or a table's row "| 0:30 to 5:00 | 30 seconds |", "0:00 to 5:00  in 30-second steps",
+    # "from 0:10 to 1:00 in steps of 10 minutes")
+    rf"(?<![\d:])({_TIME}){_DASH}({_TIME})(?![\d:])\s*(?:h\b)?\s*\|?\s*"
+    r"(?:by\s+|in\s+(?:steps\s+of\s+)?)?"
     r"(\d+(?:[.,]\d+)?|one|an?)[\s-]*(minutes?|mins?|hours?|hrs?|h|seconds?|secs?|s)\b",
+    re.IGNORECASE,
+)
+_STEP_FIRST_PIECE_RE = re.compile(  # "in 15-minute steps between 0:15 and 2:00": step, then range
+    r"\b(?:in|by)\s+(?:steps\s+of\s+)?(\d+(?:[.,]\d+)?|one|an?)[\s-]*"
+    r"(minutes?|mins?|hours?|hrs?|h|seconds?|secs?|s)(?:\s+(?:steps|increments))?\s+"
+    rf"(?:from|between)\s+({_TIME}){_DASH}({_TIME})(?![\d:])",
     re.IGNORECASE,
 )
 
@@ -74,21 +83,34 @@ def _each_press_pieces(text: str) -> list[Range]:
 
 
 def _stepped_clock_pieces(text: str) -> list[Range]:
-    pieces: list[Range] = []
-    found = list(_STEPPED_PIECE_RE.finditer(text))
+    found = _as_written(_STEPPED_PIECE_RE.finditer(text))
+    if len(found) < 2:
+        found = _as_written(_STEP_FIRST_PIECE_RE.finditer(text), step_first=True)
     # a clock stepped in seconds, or one past 24 ("5:00 to 30:00"), is minutes and seconds;
     # never one stepped in hours ("24:00 to 72:00 in 1-hour steps": a long delay's hours)
-    steps = {unit_name(m.group(4)) for m in found}
+    steps = {unit_name(step_unit) for _lo, _hi, _amount, step_unit in found}
     min_sec = "s" in steps or (
-        "h" not in steps and any(int(m.group(2).split(":")[0]) > 24 for m in found)
+        "h" not in steps and any(int(hi.split(":")[0]) > 24 for _lo, hi, _a, _u in found)
     )
-    for m in found:
-        low, high = _clock(m.group(1), min_sec), _clock(m.group(2), min_sec)
-        amount = 1.0 if m.group(3).lower() in ("one", "a", "an") else number(m.group(3))
+    pieces: list[Range] = []
+    for lo, hi, said, step_unit in found:
+        low, high = _clock(lo, min_sec), _clock(hi, min_sec)
+        amount = 1.0 if said.lower() in ("one", "a", "an") else number(said)
         if amount is None or not low < high or (pieces and pieces[-1].high != low):
             return pieces if len(pieces) >= 2 else []
-        pieces.append(Range(low, high, "s", seconds(amount, unit_name(m.group(4)))))
+        pieces.append(Range(low, high, "s", seconds(amount, unit_name(step_unit))))
     return pieces if len(pieces) >= 2 else []
+
+
+def _as_written(
+    found: Iterable[re.Match[str]], step_first: bool = False
+) -> list[tuple[str, str, str, str]]:
+    """Each piece's (low, high, step amount, step unit) as written, whichever came first."""
+    out = []
+    for m in found:
+        g = m.groups()
+        out.append((g[2], g[3], g[0], g[1]) if step_first else (g[0], g[1], g[2], g[3]))
+    return out
 
 
 def _stepped_amount_pieces(text: str) -> list[Range]:
