@@ -86,3 +86,32 @@ def test_a_token_is_not_a_part_of_a_hyphenated_word_and_a_held_cell_s_job_is_no_
     assert {c.id: c.label for c in model.controls}["up_control"] == "▲"
     stepping = [s for steps in model.features.values() for s in steps if "press_up" in s.actions]
     assert stepping and all("hold_up" not in s.actions for s in stepping)
+
+
+# the lock's key says its hold is the lock, and so does another key's row (only to say that
+# hold is barred while locked): neither claim rules out the other, the lock stays reachable
+PURIFIER = """ORBA P-2 purifier
+
+Controls
+  MODE     Press to choose AUTO, SLEEP or TURBO.
+  TIMER    Press to set the off timer. Touch and hold TIMER for 3 s to clear the timer
+           (not possible while the key lock is on).
+  LIGHT    Press to dim the light.
+
+Key lock
+  Touch and hold LIGHT for 3 seconds to lock the keys. LOC appears.
+"""
+PURIFIER_ACTIONS = ["press_mode", "press_timer", "hold_timer", "press_light", "hold_light"]
+
+
+def test_a_hold_whose_own_rows_say_lock_stays_the_lock_when_another_row_says_so_too() -> None:
+    model = read_manual(PURIFIER, PURIFIER_ACTIONS).model
+    (lock,) = [s for s in model.features.values() if s[0].variable == "child_lock"]
+    assert "hold_light" in lock[0].actions
+
+
+def test_two_ranges_side_by_side_joined_by_a_spaced_dash_are_no_chain() -> None:
+    from apbot.read.values import find_ranges
+
+    found = [(r.low, r.high, r.unit) for r in find_ranges("Rice 1–4 – 30–45 min")]
+    assert found == [(1, 4, ""), (30, 45, "min")]
