@@ -115,3 +115,26 @@ def test_two_ranges_side_by_side_joined_by_a_spaced_dash_are_no_chain() -> None:
 
     found = [(r.low, r.high, r.unit) for r in find_ranges("Rice 1–4 – 30–45 min")]
     assert found == [(1, 4, ""), (30, 45, "min")]
+
+
+# a quick reference flattened column by column: the lock word sits before TIMER's hold, which
+# says nothing of the lock; the lock is SIZE's hold, said after it
+FLATTENED = """FROSTA IM-1 ice maker
+
+Controls
+  SIZE     Press to choose S, M or L cubes.
+  TIMER    Press to set the hours. Press and hold TIMER for 3 seconds to clear the timer.
+
+QUICK REFERENCE
+  I want to ... lock / unlock the keys clear the timer Press hold TIMER 3 s hold SIZE 3 s
+
+Key lock
+  Press and hold SIZE for 3 seconds: LOCK lights and every key is blocked.
+"""
+FLATTENED_ACTIONS = ["press_size", "hold_size", "press_timer", "hold_timer"]
+
+
+def test_a_lock_word_before_a_key_s_hold_in_a_flattened_table_is_not_that_hold_s() -> None:
+    model = read_manual(FLATTENED, FLATTENED_ACTIONS).model
+    (lock,) = [s for s in model.features.values() if s[0].variable == "child_lock"]
+    assert lock[0].actions == ["hold_size"]

@@ -190,16 +190,18 @@ def _held_lock(b: Builder, info: ActionInfo) -> bool:
 
 def _holds_itself_to_lock(b: Builder, info: ActionInfo) -> bool:
     """A sentence of the key's own that holds this very key and speaks of the lock ("Touch and
-    hold LIGHT for 3 seconds to lock the keys"); a trouble table's row beside it ("LOCK shown |
-    Hold TIMER for 3 seconds.") speaks of another key's hold."""
+    hold LIGHT for 3 seconds to lock the keys"); a table's cells are apart ("LOCK shown |
+    Hold TIMER for 3 seconds." speaks of another key's hold)."""
     if info.skill != "hold" or len(info.controls) != 1 or info.controls[0] not in b.labels:
         return False
     label = b.labels[info.controls[0]]
-    held = re.compile(rf"\bhold\s+{re.escape(label.text)}(?!\w)", re.I)
+    # the lock after this key's hold, no other hold between ("hold TIMER 3 s … hold SIZE 3 s")
+    held = re.compile(rf"\bhold\s+{re.escape(label.text)}(?!\w)(?:(?!\bhold\b).)*?\block\b", re.I)
     return any(
-        held.search(s) and re.search(r"\block\b", s, re.I)
+        held.search(s)
         for i in label.mentions
-        for s in SENTENCE_END_RE.split(b.manual.units[i].text)
+        if not b.manual.units[i].cells
+        for s in re.split(rf"{SENTENCE_END_RE.pattern}|\s{{3,}}", b.manual.units[i].text)
     )
 
 
