@@ -129,3 +129,24 @@ def test_codes_glossed_in_brackets_along_their_arrows_become_the_glossed_words()
     values = {tuple(v.values or []) for v in model.variables.values()}
     assert ("bright", "dim", "dark") in values
     assert ("left", "middle", "right") in values
+
+
+# two keys stepping through the same codes, each glossed its own way: which is which is open
+TWO_GLOSSES = """NOVA CL-3 bedside fan clock
+Instructions
+
+KEYS
+  GLOW      display brightness
+  FAN       fan speed
+
+Press FAN to change the fan speed:
+    F1 (gentle) → F2 (breeze) → F3 (storm) → F1 …
+
+Press GLOW to change the brightness:
+    F1 (dim) → F2 (soft) → F3 (full) → F1 …
+"""
+
+
+def test_the_same_codes_glossed_apart_on_two_lines_stay_codes() -> None:
+    model = read_manual(TWO_GLOSSES, ["press_glow", "press_fan"]).model
+    assert all("gentle" not in (v.values or []) for v in model.variables.values())

@@ -86,3 +86,55 @@ def test_a_token_is_not_a_part_of_a_hyphenated_word_and_a_held_cell_s_job_is_no_
     assert {c.id: c.label for c in model.controls}["up_control"] == "▲"
     stepping = [s for steps in model.features.values() for s in steps if "press_up" in s.actions]
     assert stepping and all("hold_up" not in s.actions for s in stepping)
+
+
+# the lock's key says its hold is the lock, and so does another key's row (only to say that
+# hold is barred while locked): neither claim rules out the other, the lock stays reachable
+PURIFIER = """ORBA P-2 purifier
+
+Controls
+  MODE     Press to choose AUTO, SLEEP or TURBO.
+  TIMER    Press to set the off timer. Touch and hold TIMER for 3 s to clear the timer
+           (not possible while the key lock is on).
+  LIGHT    Press to dim the light.
+
+Key lock
+  Touch and hold LIGHT for 3 seconds to lock the keys. LOC appears.
+"""
+PURIFIER_ACTIONS = ["press_mode", "press_timer", "hold_timer", "press_light", "hold_light"]
+
+
+def test_a_hold_whose_own_rows_say_lock_stays_the_lock_when_another_row_says_so_too() -> None:
+    model = read_manual(PURIFIER, PURIFIER_ACTIONS).model
+    (lock,) = [s for s in model.features.values() if s[0].variable == "child_lock"]
+    assert "hold_light" in lock[0].actions
+
+
+def test_two_ranges_side_by_side_joined_by_a_spaced_dash_are_no_chain() -> None:
+    from apbot.read.values import find_ranges
+
+    found = [(r.low, r.high, r.unit) for r in find_ranges("Rice 1–4 – 30–45 min")]
+    assert found == [(1, 4, ""), (30, 45, "min")]
+
+
+# a quick reference flattened column by column: the lock word sits before TIMER's hold, which
+# says nothing of the lock; the lock is SIZE's hold, said after it
+FLATTENED = """FROSTA IM-1 ice maker
+
+Controls
+  SIZE     Press to choose S, M or L cubes.
+  TIMER    Press to set the hours. Press and hold TIMER for 3 seconds to clear the timer.
+
+QUICK REFERENCE
+  I want to ... lock / unlock the keys clear the timer Press hold TIMER 3 s hold SIZE 3 s
+
+Key lock
+  Press and hold SIZE for 3 seconds: LOCK lights and every key is blocked.
+"""
+FLATTENED_ACTIONS = ["press_size", "hold_size", "press_timer", "hold_timer"]
+
+
+def test_a_lock_word_before_a_key_s_hold_in_a_flattened_table_is_not_that_hold_s() -> None:
+    model = read_manual(FLATTENED, FLATTENED_ACTIONS).model
+    (lock,) = [s for s in model.features.values() if s[0].variable == "child_lock"]
+    assert lock[0].actions == ["hold_size"]

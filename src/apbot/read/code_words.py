@@ -125,7 +125,9 @@ def _definition_words(lines: list[str], codes: list[str]) -> tuple[dict[str, str
 def _bracketed_words(lines: list[str], codes: list[str]) -> tuple[dict[str, str], int] | None:
     """A line stepping through the codes, each with its word in brackets ("d2 (high) → d1
     (low) → d0 (off)", "L (left) → C (centre)"): the bracket pairs them, so a code need not
-    abbreviate its word."""
+    abbreviate its word. Two lines glossing the same codes apart (two keys showing F1 … F3)
+    leave it open which one is this setting's: no words then."""
+    found: list[tuple[dict[str, str], int]] = []
     for number, line in enumerate(lines, 1):
         if "→" not in line and "->" not in line:
             continue
@@ -135,5 +137,5 @@ def _bracketed_words(lines: list[str], codes: list[str]) -> tuple[dict[str, str]
             if m:
                 names[code] = m.group(1).strip().lower()
         if len(names) == len(codes) and len(set(names.values())) == len(codes):
-            return names, number
-    return None
+            found.append((names, number))
+    return found[0] if found and all(f[0] == found[0][0] for f in found) else None

@@ -167,12 +167,12 @@ _MINUTE_BOUND_RE = re.compile(
     r"(\d{1,2}|[a-z]+)\s*(?:minutes|mins?)\b",
     re.I,
 )
-_SENTENCE_END_RE = re.compile(r"(?<=[.;!?])\s+")
+SENTENCE_END_RE = re.compile(r"(?<=[.;!?])\s+")
 
 
 def _every_minute_top(text: str) -> float | None:
     """The bound of a run of one-minute settings a sentence describes, else None."""
-    for sentence in _SENTENCE_END_RE.split(text):
+    for sentence in SENTENCE_END_RE.split(text):
         fine = _EVERY_MINUTE_RE.search(sentence)
         if fine is None:
             continue

@@ -6,6 +6,7 @@ import re
 
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
+from apbot.read.evidence_checks import SENTENCE_END_RE
 from apbot.read.labels import words
 from apbot.read.roles_common import (
     NUMERIC_WORDS,
@@ -126,8 +127,12 @@ def assign_locks(b: Builder, done: set[str]) -> list[str]:
                     not named
                     and not (_runs(info) and any(_held_lock(b, o) for o in infos if not _runs(o)))
                     # another key's own row says its hold is the lock ("LIGHT | Touch and hold
-                    # 3 s: key lock"): that row, next to this key's, speaks of that one
-                    and not any(_held_lock(b, o) for o in infos if o.token != info.token)
+                    # 3 s: key lock"): that row, next to this key's, speaks of that one, unless
+                    # this key's own rows say so too (then neither claim rules the other out)
+                    and (
+                        _holds_itself_to_lock(b, info)
+                        or not any(_held_lock(b, o) for o in infos if o.token != info.token)
+                    )
                     and any(
                         re.search(r"\bhold\b", t, re.I) and re.search(r"\block", t, re.I)
                         for t in texts
@@ -180,6 +185,23 @@ def _held_lock(b: Builder, info: ActionInfo) -> bool:
         re.search(r"\bhold\b", b.manual.units[i].text, re.I)
         and re.search(r"\block\b", b.manual.units[i].text, re.I)
         for i in own
+    )
+
+
+def _holds_itself_to_lock(b: Builder, info: ActionInfo) -> bool:
+    """A sentence of the key's own that holds this very key and speaks of the lock ("Touch and
+    hold LIGHT for 3 seconds to lock the keys"); a table's cells are apart ("LOCK shown |
+    Hold TIMER for 3 seconds." speaks of another key's hold)."""
+    if info.skill != "hold" or len(info.controls) != 1 or info.controls[0] not in b.labels:
+        return False
+    label = b.labels[info.controls[0]]
+    # the lock after this key's hold, no other hold between ("hold TIMER 3 s … hold SIZE 3 s")
+    held = re.compile(rf"\bhold\s+{re.escape(label.text)}(?!\w)(?:(?!\bhold\b).)*?\block\b", re.I)
+    return any(
+        held.search(s)
+        for i in label.mentions
+        if not b.manual.units[i].cells
+        for s in re.split(rf"{SENTENCE_END_RE.pattern}|\s{{3,}}", b.manual.units[i].text)
     )
 
 

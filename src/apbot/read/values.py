@@ -31,9 +31,11 @@ _DASH = r"\s*(?:–|—|-|to|and|~|until)\s*"
 RANGE_RE = re.compile(
     rf"(?<![\w:.])({NUM})\s*({UNIT})?{_DASH}({NUM})\s*({UNIT})?(?![\w:])", re.IGNORECASE
 )
-# three or more values joined by dashes, the unit after the last: "35 - 40 - 45 - 50 %"
+# three or more values joined by dashes, the unit after the last: "35 - 40 - 45 - 50 %"; the
+# same dash each time ("1–4 – 30–45 min" is two ranges side by side, no chain)
 CHAIN_RE = re.compile(
-    rf"(?<![\w:.])(?P<run>{NUM}(?:\s*[-–]\s*{NUM}){{2,}})\s*(?P<unit>{UNIT})?(?![\w:])",
+    rf"(?<![\w:.])(?P<run>{NUM}(?P<sep>\s*[-–]\s*){NUM}(?:(?P=sep){NUM})+)\s*(?P<unit>{UNIT})?"
+    r"(?![\w:])",
     re.IGNORECASE,
 )
 # a setting that "stops at 1 h and at 12 h" (no wrap): those are its ends
