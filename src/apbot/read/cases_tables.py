@@ -11,6 +11,9 @@ from dataclasses import replace
 
 from apbot.read.text import Unit
 
+# A name's trailing remark in brackets, maybe cut short by the cell: "Soft steam (bio / combi)".
+TRAILING_REMARK_RE = re.compile(r"\s*\([^)]*\)?$")
+
 
 def _tables(units: list[Unit]) -> list[tuple[tuple[str, ...], list[Unit]]]:
     out: list[tuple[tuple[str, ...], list[Unit]]] = []
@@ -51,7 +54,7 @@ def _parent_values(cell: str, values: list[str]) -> list[str]:
     found = []
     for part in re.split(r"\s*(?:,|/|&|\band\b)\s*", _norm(cell)):
         part = re.sub(r"^\d+[.)]?\s*", "", part)
-        bare = re.sub(r"\s*\([^)]*\)?$", "", part)  # "PIZZA (slice)": the name, its picture aside
+        bare = TRAILING_REMARK_RE.sub("", part)  # "PIZZA (slice)": the name, its picture aside
         if part not in values and bare in values:
             part = bare
         if part in values:  # "White" is WHITE even where WHITE QUICK comes first

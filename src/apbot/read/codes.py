@@ -15,13 +15,12 @@ import re
 from typing import Any
 
 from apbot.read.build import Builder
-from apbot.read.cases_tables import _norm, _tables
+from apbot.read.cases_tables import TRAILING_REMARK_RE, _norm, _tables
 from apbot.read.text import Unit
 
 _CODE = re.compile(r"[a-z]{1,3}\s?-?\d{1,2}")
 _NAME = re.compile(r"[a-z][a-z '&/+-]{1,30}")
 _SHORT = re.compile(r"[a-z0-9]{1,3}|[a-z]{1,3}\s?-?\d{1,2}")  # "sh", "a1", "p 3"
-_REMARK = re.compile(r"\s*\([^)]*\)?$")  # a name's trailing remark in brackets, maybe cut short
 _CODE_HEAD = re.compile(r"\b(?:codes?|display|shown|indication)\b", re.IGNORECASE)
 
 
@@ -62,7 +61,9 @@ def _chart_names(
             names: dict[str, str] = {}
             for row, cell in zip(rows, cells, strict=True):
                 name = _norm(row.cells[column + 1]).split(" / ")[0]  # "JERKY / MEAT": jerky
-                name = _REMARK.sub("", name)  # "Soft steam (bio / combi)": a remark on it
+                name = TRAILING_REMARK_RE.sub(
+                    "", name
+                )  # "Soft steam (bio / combi)": a remark on it
                 if cell in codes and _NAME.fullmatch(name) and not _CODE.fullmatch(name):
                     names.setdefault(cell, name)
             if len(names) == len(codes) and len(set(names.values())) == len(codes):
