@@ -253,7 +253,8 @@ def test_a_keypad_cooking_time_is_minutes_and_seconds_only_when_no_range_was_rea
 
 
 def test_a_step_that_changes_part_way_is_read_in_other_wordings() -> None:
-    from apbot.read.values import Range, find_two_steps
+    from apbot.read.values import Range
+    from apbot.read.values_pieces import find_two_steps
 
     expected = [Range(0, 60, "min", 10), Range(60, 1440, "min", 30)]
     for wording in (

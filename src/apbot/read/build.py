@@ -36,9 +36,9 @@ from apbot.read.values import (
     number,
     rescale,
     seconds,
-    split_range,
     unit_name,
 )
+from apbot.read.values_pieces import split_range
 from apbot.read.values_zero import from_zero, zero_told
 
 _PRINTED_UNITS = r"kg|g|lbs?|ml|l|litres?|W|watts?|rpm|%"  # quantities, not times or degrees

@@ -72,11 +72,10 @@ from apbot.read.values import (
     find_ranges,
     find_shown_hmm,
     find_step,
-    find_two_steps,
     seconds,
 )
 from apbot.read.values_elided import filled
-from apbot.read.values_pieces import find_amount_pieces
+from apbot.read.values_pieces import find_amount_pieces, find_two_steps
 from apbot.read.values_stepped import find_arrow_pieces, find_stepped_pieces
 from apbot.read.values_wraps import wrap_ends
 
