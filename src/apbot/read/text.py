@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 from apbot.read.errors import ReaderError
 from apbot.read.marks_legend import legend_meanings
 from apbot.read.text_boxes import unbox
+from apbot.read.text_html import html_tables
 from apbot.read.text_icons import _put, name_icons
 from apbot.read.text_pages import (
     _furniture,
@@ -218,6 +219,7 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
     passed = _page_breaks(raw_lines, furniture)
     spaced = _space_tables(raw_lines, passed | furniture)
     sideways = _row_charts(raw_lines)
+    markup = html_tables(raw_lines)
     previous, last = "", 0
     for position, raw in enumerate(raw_lines, start=1):
         number = line_numbers[position - 1]
@@ -232,6 +234,20 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
             for row in chart:
                 rows_header = chart[0] if row is not chart[0] else ()
                 units.append(Unit(number, " | ".join(row), row, rows_header, heading=heading))
+            continue
+        if position - 1 in markup.starts:
+            flush()
+            header = ()  # a table of its own, not rows of a pipe table above
+        if position - 1 in markup.rows:
+            flush()
+            for cells, heads in markup.rows[position - 1]:
+                if heads or not header:
+                    header = cells
+                    units.append(Unit(number, " | ".join(cells), cells, (), heading=heading))
+                else:
+                    units.append(Unit(number, " | ".join(cells), cells, header, heading=heading))
+            continue
+        if position - 1 in markup.skipped:
             continue
         if position in spaced:
             flush()
