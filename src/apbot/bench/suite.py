@@ -110,6 +110,12 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "soda_maker": 3,
     "towel_warmer": 3,
     "clock_radio": 4,
+    # The tenth blind set (helper blind13n, 5 December, third session): blind for this round's work.
+    "clothes_care_cabinet": 3,
+    "bread_proofer": 3,
+    "water_dispenser": 3,
+    "laminator": 3,
+    "garage_door_opener": 3,
 }
 
 
