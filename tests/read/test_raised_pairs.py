@@ -125,3 +125,66 @@ def test_an_arrow_cycle_in_brackets_starts_at_its_first_code() -> None:
 
     found = find_list("MENU | Each touch lights the next menu code (M1 → M2 → … → M5 → M1).")
     assert found is not None and found[0] == ["M1", "M2", "M3", "M4", "M5"]
+
+
+# a hand mixer: + / − raise the speed alone; after TIMER (whose cell says so) they set the timer
+MIXER = """# Hand mixer
+
+## The keys
+
+| Key | What it does |
+|---|---|
+| POWER | Switches the mixer on or off. |
+| − | Lowers the speed (or the timer, see below). |
+| + | Raises the speed (or the timer, see below). |
+| TIMER | Set the timer with − / +. |
+
+## The timer
+
+1. Touch TIMER. The timer flashes.
+2. Touch + or − to change the time from 0:00 to 10:00 in 30-second steps.
+"""
+MIXER_ACTIONS = ["press_power", "press_minus", "press_plus", "press_timer"]
+
+
+def test_a_key_set_with_the_pair_shares_it_with_the_pairs_own_quantity() -> None:
+    model = read_manual(MIXER, MIXER_ACTIONS).model
+    alone = [s for s in model.features.values() if s[0].actions[0] == "press_plus"]
+    (speed,) = {steps[0].variable for steps in alone}
+    assert speed == "speed"
+    after = [s for s in model.features.values() if s[0].actions == ["press_timer"]]
+    (steps,) = after
+    assert len(steps) == 2 and "press_plus" in steps[1].actions
+    assert model.variables[steps[1].variable].type == "time"
+
+
+# a heated rail: the arrows set the temperature alone; after a held TIMER they set the times
+RAIL = """# Heated towel rail
+
+## Keys
+
+| Key | What it does |
+|---|---|
+| ON/OFF | Switches the rail on or off. |
+| ▲ | warmer (or later, while the drying time is being set) |
+| ▼ | cooler (or earlier, while the drying time is being set) |
+| TIMER | hold 3 s: set the drying time |
+
+## Temperature
+
+The temperature of the rail is set with ▲ and ▼ – no other key is needed. It goes from
+30 to 65 °C.
+
+## Drying time
+
+1. Hold TIMER for 3 seconds. The start time flashes.
+2. Set the start time with ▲ (later) and ▼ (earlier). Each touch moves the time by 30 minutes.
+3. Wait 5 seconds: the time is stored.
+"""
+RAIL_ACTIONS = ["press_on_off", "press_up", "press_down", "hold_timer"]
+
+
+def test_the_pair_sets_alone_what_its_no_other_key_sentence_names() -> None:
+    model = read_manual(RAIL, RAIL_ACTIONS).model
+    alone = {s[0].variable for s in model.features.values() if s[0].actions[0] == "press_up"}
+    assert "temperature" in alone

@@ -25,7 +25,7 @@ from apbot.read.roles_confirm import ends_entry
 from apbot.read.roles_lists import dial_amount, dial_ends, dial_list, list_evidence
 from apbot.read.roles_numbered import numbered_entry
 from apbot.read.roles_pushed import pushed_dials
-from apbot.read.roles_raised import own_sentence, raised_quantity
+from apbot.read.roles_raised import own_sentence, raised_quantity, set_alone, sets_with_pair
 from apbot.read.shapes import CHOICE_WORDS, Evidence
 
 # units that name what a pair sets by themselves (a range in °C is a temperature)
@@ -70,6 +70,7 @@ def assign_amounts(
     used_steppers: set[int] = set()
     used_digits = keyed_cook = keyed_time is not None
     raised = None  # what the shared pair's legend says it raises and lowers ("heat level")
+    own_noun: str | None = None  # the pair's own quantity when entry keys share it too
     if shared_pair and shared_pair["up"] and shared_pair["down"]:
         raised = raised_quantity(
             b, [token_of(b, n) for n in shared_pair["up"] + shared_pair["down"]]
@@ -95,7 +96,9 @@ def assign_amounts(
         if own_pair:
             steppers = steppers[1:] + steppers[:1]
             used_steppers = set()
-            for key in entry_keys:
+            # an entry key set "with − / +" keeps the pair after it (the pair alone sets its own)
+            shared_too = [k for k in entry_keys if sets_with_pair(b, k.controls[0], pair_tokens)]
+            for key in (k for k in entry_keys if k not in shared_too):
                 own = evidence[key.name]
                 if own.values and len(own.values) >= 3 and numeric_list(own.values):
                     own = list_evidence(own)  # "1 h > 2 h > 3 h > 4 h > 6 h …": each one listed
@@ -104,7 +107,14 @@ def assign_amounts(
                     f"set_{var}", [{"actions": [key.name], "variable": var, "effect": "next"}]
                 )
                 b.note(f"features.set_{var}", f"{key.name} steps its setting (+/− set {pair_noun})")
-            entry_keys = []
+            entry_keys = shared_too
+            own_noun = pair_noun if shared_too else None
+    if shared_pair and own_noun is None:
+        # "the temperature is set with ▲ and ▼ – no other key is needed": the pair keeps that
+        # setting alone, whatever keys it serves after them
+        alone = set_alone(b, [token_of(b, n) for n in shared_pair["up"] + shared_pair["down"]])
+        if alone and not _named_by([set(words(var_name(b, k))) for k in entry_keys], [alone]):
+            own_noun = alone
     for key in entry_keys:
         ev = evidence[key.name]
         name = var_name(b, key)
@@ -156,7 +166,10 @@ def assign_amounts(
                 keyed_cook = True  # "TIMER — the keypad then takes the cooking time"
         elif steppers:
             up, down = steppers[0]
-            used_steppers.add(0)
+            if own_noun is None:
+                used_steppers.add(0)
+            else:  # the pair also keeps its own quantity
+                up, down = shared_pair["up"], shared_pair["down"]  # type: ignore[index]
             if ev.values and len(ev.values) >= 3 and numeric_list(ev.values):
                 ev = list_evidence(ev)  # the settings listed one by one, not only the ends
             var = b.add_number(name, lab, ev, cyclic=False)
@@ -188,8 +201,13 @@ def assign_amounts(
             tokens_ = [n for n in up + down]
             ev = b.evidence([token_of(b, n) for n in tokens_])
             noun = stepped_noun(b, [token_of(b, n) for n in tokens_], ev) or "level"
+            own_here = own_noun if shared_pair and up == shared_pair["up"] else None
+            if own_here is not None and own_here != noun:
+                noun = own_here  # (its sentences' ranges and steps are the other settings')
+                ev = Evidence(values=None if ev.ranges else ev.values)
             if (
-                raised is not None
+                own_here is None
+                and raised is not None
                 and shared_pair
                 and up == shared_pair["up"]
                 and not (ev.ranges and ev.ranges[0].unit in _UNIT_NOUNS)

@@ -14,6 +14,7 @@ import re
 
 from apbot.read.build import Builder
 from apbot.read.labels import words
+from apbot.read.roles_common import mentions_of
 from apbot.read.shapes import SETTING_NOUNS
 
 _VERB = (
@@ -136,3 +137,44 @@ def own_sentence(b: Builder, token: str, unit: int) -> str:
     lab = b.labels.get(token)
     start = _after_label(text, lab.text) if lab is not None else 0
     return text[start:].split(". ")[0]
+
+
+def sets_with_pair(b: Builder, key: str, pair: list[str]) -> bool:
+    """The key's own sentence says its setting is set with the stepping pair ("TIMER  Set the
+    timer with − / +"): a pair that also raises a quantity of its own ("+  Raise the speed (or
+    the timer)") serves both — alone its own quantity, after the key the key's setting."""
+    signs = [b.labels[t].text for t in pair if t in b.labels and b.labels[t].text]
+    if not signs:
+        return False
+    sign_re = re.compile(
+        r"\bwith\s+(?:the\s+)?(?:" + "|".join(re.escape(s) for s in signs) + r")(?!\w)", re.I
+    )
+    return any(sign_re.search(own_sentence(b, key, i)) for i in mentions_of(b, key))
+
+
+_ALONE_RE = re.compile(
+    r"\bno other (?:key|button)s?\b|\bwithout (?:any|another) (?:key|button)", re.I
+)
+
+
+def set_alone(b: Builder, pair: list[str]) -> str:
+    """The setting a sentence says the pair sets by itself ("The temperature is set with ▲ and
+    ▼ – no other key is needed"): what the pair changes when no key chose anything else, even
+    when its other sentences speak of the times it sets after such a key; "" if none says so."""
+    signs = [b.labels[t].text for t in pair if t in b.labels and b.labels[t].text]
+    if not signs:
+        return ""
+    sign_re = re.compile("|".join(rf"(?<!\w){re.escape(s)}(?!\w)" for s in signs))
+    for unit in b.manual.units:
+        for sentence in re.split(r"(?<=[.;:])\s+", unit.text):
+            alone = _ALONE_RE.search(sentence)
+            if alone is None or not sign_re.search(sentence[: alone.start()]):
+                continue
+            found = [
+                (m.start(), n)
+                for n in SETTING_NOUNS
+                if (m := re.search(rf"\b{n}\b", sentence[: alone.start()], re.I))
+            ]
+            if found:
+                return min(found)[1]
+    return ""
