@@ -96,14 +96,6 @@ def _toggle_cell(cell: str) -> bool | None:
     return None
 
 
-def _mark_only(cell: str) -> bool:
-    """A cell that is nothing but an offered / not-offered mark ("yes", "No", "✓", "–"), maybe
-    with a note in brackets ("– (Fuzzy decides)"): it says whether a programme has the setting,
-    never which value it takes there."""
-    bare = _BRACKETED.sub(" ", cell).strip()
-    return bool(bare) and _toggle_cell(bare) is not None and len(bare.split()) == 1
-
-
 def _case(spec: dict[str, Any], cell: str) -> Any:
     kind = spec.get("type")
     if kind == "discrete" and sorted(spec.get("values", [])) == ["off", "on"]:
@@ -113,8 +105,6 @@ def _case(spec: dict[str, Any], cell: str) -> Any:
     if kind == "discrete":
         if len(cell.strip()) == 1 and not cell.strip().isalnum():
             return None  # "●" / "–": offered or not, no values (cases_marks reads such charts)
-        if _mark_only(cell) and _norm(cell) not in spec.get("values", []):
-            return None  # "yes" / "no" under STEAM: the setting is there or not, no value
         if len(spec.get("values", [])) == 2 and _norm(cell) in spec["values"]:
             return {"values": list(spec["values"]), "initial": _norm(cell)}  # a default
         span = _value_span(spec.get("values", []), cell)
