@@ -3,20 +3,9 @@
 from __future__ import annotations
 
 from apbot.read import read_manual
-from apbot.read.cases_cells import _case
 from apbot.read.list_lines import wrapped_list
 from apbot.read.text import parse_manual
 from apbot.read.value_lists import bare_list
-
-
-def test_a_bare_yes_or_dash_cell_gives_a_many_valued_setting_no_value() -> None:
-    spec = {"type": "discrete", "values": ["mild", "hot", "extra hot"]}
-    assert _case(spec, "yes") is None  # the programme has the setting: no value said
-    assert _case(spec, "No") is None
-    assert _case(spec, "– (chosen by the sensor)") is None
-    assert _case(spec, "mild, hot") == {"values": ["mild", "hot"]}  # values still read
-    toggle = {"type": "discrete", "values": ["off", "on"]}
-    assert _case(toggle, "yes") == {"values": ["off", "on"]}  # an on/off option is offered
 
 
 def test_a_lone_dash_between_wide_spaced_marks_is_no_mark() -> None:
