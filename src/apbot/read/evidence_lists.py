@@ -10,6 +10,7 @@ from apbot.model.values import NUMBER_WORDS
 from apbot.read.actions import ActionInfo
 from apbot.read.evidence_tables import TableReader
 from apbot.read.labels import Label, words
+from apbot.read.list_lines import wrapped_list
 from apbot.read.shapes import (
     DOWN_WORDS,
     ORDER_RE,
@@ -229,7 +230,7 @@ class ListReader(TableReader):
         if run:
             out.append((run, 2.2 if mention else 1.2))
         if text.rstrip().endswith(":") and i + 1 < len(units) and _lone_line(units, i + 1):
-            after = bare_list(units[i + 1].text)  # "Printed round the knob:" then the marks
+            after = wrapped_list(self.manual, i + 1)  # "Printed round the knob:", the marks
             # a long line is a list only when it is all short names ("OFF · Cottons · Eco …")
             if after and (len(units[i + 1].text) <= 120 or _all_names(after, units[i + 1].text)):
                 out.append((after, 2.6))

@@ -308,7 +308,9 @@ def bare_list(text: str) -> list[str] | None:
         for p in re.split(r"\s*[·•|,]\s*|\s*/\s*|\s{2,}|\s+or\s+|\s*[→>]\s*", text.strip())
     ]
     items = [re.sub(r"\s*(?:…|\.\.\.)$", "", i) for i in items]  # "… → OFF …": and so on
-    items = _uncounted([i for i in items if i])
+    # a lone dash between wide-spaced marks ("100 W  –  DEFROST") or an icon's remains ("+")
+    # is a separator, never a mark
+    items = _uncounted([i for i in items if re.search(r"[^\W_]", i)])
     if len(items) < 3 or len(items) > 16:
         return None
     if all(len(i) <= 20 and len(i.split()) <= 3 and not i.endswith(":") for i in items):
