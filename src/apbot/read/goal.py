@@ -137,7 +137,7 @@ def parse_instruction(
     self_switching_off(view, text, goal, claimed)
     place_twins(view, text, goal, where)
     entry_switches(view, goal)
-    gated_switches(view, goal)
+    gated_switches(view, text, goal)
     set_by_hand(view, text, goal)
     implied_cases(view, goal)
     entry_modes(view, goal)

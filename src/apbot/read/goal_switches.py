@@ -302,18 +302,35 @@ def entry_switches(view: Model, goal: Goal) -> None:
                     goal[info.name] = info.on
 
 
-def gated_switches(view: Model, goal: Goal) -> None:
+def gated_switches(view: Model, text: Text, goal: Goal) -> None:
     """A setting that exists or moves only while a switch is on (a temperature kept only with
     the HEATER on; ▲ / ▼ refused while HEAT is off) implies that switch on: "heat the bath to
     60 degrees" asks for the heater. Not when the instruction names the switch, nor when the
-    panel starts with it on."""
+    panel starts with it on, nor when a word of the switch is said negated ("switch off the
+    heat, 42 degrees is fine": a word too general for :func:`switches` to read, still no)."""
     for name in list(goal):
         info = view.infos.get(name)
         if info is None or info.role != "setting":
             continue
         for gate in _gates(view, info):
-            if gate.name not in goal and str(_initial(gate)) != str(gate.on):
+            if gate.name in goal or str(_initial(gate)) == str(gate.on):
+                continue
+            if not _said_negated(text, gate):
                 goal[gate.name] = gate.on
+
+
+def _said_negated(text: Text, info: VarInfo) -> bool:
+    """A word of the switch, or one it begins ("heat" of HEATER), stands in the instruction
+    with a negation around it ("no heating", "don't heat it")."""
+    own, mine = own_stems(info), own_concepts(info)
+
+    def of_it(k: int) -> bool:
+        word = text.stems[k]
+        if word in own or text.concepts[k] in mine:
+            return True
+        return len(word) >= 4 and any(o.startswith(word) or word.startswith(o) for o in own)
+
+    return any(of_it(k) and negative_around(text, k) for k in range(len(text.tokens)))
 
 
 def _gates(view: Model, info: VarInfo) -> list[VarInfo]:
