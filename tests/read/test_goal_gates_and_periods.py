@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from apbot.model.load import loads_model
 from apbot.read.goal import parse_instruction
+from apbot.read.goal_error import GoalParseError
 
 CLEANER = """
 appliance: {id: cleaner_1, category: cleaner, name: "Sonix C-1 cleaner", brand: S}
@@ -200,3 +201,67 @@ def test_an_end_of_the_scale_in_the_unit_the_panel_shows() -> None:
 
 def test_the_slowest_setting_is_the_first_speed() -> None:
     assert _goal(MIXER, "Mix on the slowest setting") == {"speed": 1}
+
+
+WASHER = """
+appliance: {id: washer_1, category: washer, name: "Sudsy W-1 washer", brand: W}
+controls:
+  - {id: prog_button, kind: button, label: "PROGRAMME"}
+  - {id: spin_button, kind: button, label: "SPIN"}
+  - {id: delay_button, kind: button, label: "DELAY"}
+variables:
+  programme:
+    type: discrete
+    values: [cotton, synthetics, quick, wool]
+  spin_speed:
+    type: numeric
+    unit: rpm
+    ranges: [[400, 1400, 200]]
+    initial: 1000
+    wrap: true
+  delay:
+    type: time
+    ranges: [["00:00:00", "24:00:00", 3600]]
+    initial: "00:00:00"
+    wrap: true
+actions:
+  press_prog: {control: prog_button}
+  press_spin: {control: spin_button}
+  press_delay: {control: delay_button}
+features:
+  programme:
+    - {actions: [press_prog], variable: programme, effect: next}
+  spin_speed:
+    - {actions: [press_spin], variable: spin_speed, effect: next}
+  delay:
+    - {actions: [press_delay], variable: delay, effect: next}
+display:
+  idle: "{programme}"
+"""
+
+
+def test_a_switch_said_off_is_not_implied_on() -> None:
+    # "heat" is too general a word for the switch reader; said off, it still is no "on"
+    assert _goal(SPA, "Switch off the heat; 42 degrees is fine") == {"temperature": 42}
+    assert _goal(CLEANER, "Without heating, sweep at 50 degrees") == {
+        "temperature": 50,
+        "sweep": "on",
+    }
+
+
+def test_how_often_is_a_habit_on_a_panel_with_no_interval() -> None:
+    assert _goal(WASHER, "I wash every day, so cotton please") == {"programme": "cotton"}
+    assert _goal(WASHER, "Cotton, it is the wash I do every other day") == {"programme": "cotton"}
+
+
+def test_as_fast_as_possible_is_a_hurry_and_the_fastest_programme_no_speed() -> None:
+    assert _goal(WASHER, "Cotton, as fast as possible") == {"programme": "cotton"}
+    assert _goal(WASHER, "Quick wash at the slowest spin") == {
+        "programme": "quick",
+        "spin_speed": 400,
+    }
+    try:  # the programme has no fastest: an error asking which, never the spin's top speed
+        goal = _goal(WASHER, "The fastest programme, with a 2 hour delay")
+    except GoalParseError:
+        goal = {}
+    assert "spin_speed" not in goal

@@ -54,3 +54,27 @@ def test_keys_with_no_effect_while_the_switch_is_off() -> None:
 
 def test_no_such_sentence_gives_no_guard() -> None:
     assert _warm_guard(WARMER.format(rule="The temperature is kept when switched off.")) is None
+
+
+TIMED = WARMER.replace(
+    "  -        Lowers the plate temperature by 5 degrees.\n",
+    "  -        Lowers the plate temperature by 5 degrees.\n"
+    "  TIMER    Sets the switch-off time, 1 to 8 hours.\n",
+)
+
+
+def _refused(rule: str) -> set[str]:
+    actions = [*ACTIONS, "press_timer"]
+    model = read_manual(TIMED.format(rule=rule), actions).model
+    only = next((g.only for g in model.guards if list(g.when) == ["warm"]), None)
+    return set() if only is None else set(actions) - set(only)
+
+
+def test_a_key_named_in_the_next_clause_is_not_refused() -> None:
+    rule = "+ and - only work while warming is on; TIMER works at any time."
+    assert _refused(rule) == {"press_plus", "press_minus"}
+
+
+def test_no_effect_said_of_something_else_after_but_refuses_no_key() -> None:
+    rule = "With warming off, TIMER still counts down but the plate does not change its heat."
+    assert "press_timer" not in _refused(rule)

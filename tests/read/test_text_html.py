@@ -91,3 +91,18 @@ def test_a_legend_in_html_gives_the_key_its_values() -> None:
     model = read_manual(ONE_ROW_PER_LINE, actions).model
     sear = model.variables["sear"]
     assert [str(x).lower() for x in sear.values] == ["low", "mid", "high"]
+
+
+def test_text_beside_a_table_on_its_line_is_kept() -> None:
+    text = (
+        "Keys: <table><tr><th>Key</th><th>Function</th></tr>"
+        "<tr><td>START</td><td>Starts heating</td></tr></table> Press START to boil the water.\n"
+    )
+    units = parse_manual(text).units
+    assert [u.text for u in units] == [
+        "Keys:",
+        "Key | Function",
+        "START | Starts heating",
+        "Press START to boil the water.",
+    ]
+    assert {u.line for u in units} == {1}

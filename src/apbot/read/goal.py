@@ -38,6 +38,7 @@ from apbot.read.goal_cases import entry_modes, implied_cases, set_by_hand
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_every import every_periods
 from apbot.read.goal_fractions import fractions
+from apbot.read.goal_gates import entry_switches, gated_switches
 from apbot.read.goal_kinds import kind_numbers
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
 from apbot.read.goal_open import open_entries
@@ -52,8 +53,6 @@ from apbot.read.goal_spelling import joined_compounds
 from apbot.read.goal_start import power_and_running
 from apbot.read.goal_switches import (
     boil,
-    entry_switches,
-    gated_switches,
     no_values,
     off_levels,
     self_switching_off,
@@ -137,7 +136,7 @@ def parse_instruction(
     self_switching_off(view, text, goal, claimed)
     place_twins(view, text, goal, where)
     entry_switches(view, goal)
-    gated_switches(view, goal)
+    gated_switches(view, text, goal)
     set_by_hand(view, text, goal)
     implied_cases(view, goal)
     entry_modes(view, goal)

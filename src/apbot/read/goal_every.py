@@ -3,7 +3,9 @@ every 3 days, "once a week" every 7 days, "turning every hour" every 1 hour. A p
 is a number of hours or days ("EVERY 2D", a turning interval of 1-12 h), and the rest of the
 parser reads "every 2 days" (a value holding that quantity, or a number beside its unit), so the
 phrase is written that way first. A phrase a value of the model is literally named by ("every
-day", "every week") is left as it is: that value's own name reads it.
+day", "every week") is left as it is: that value's own name reads it. Only on a panel with a
+setting of how often (named for its interval or frequency, or with values said "every …"): on
+another, "I wash every day" is a habit, not a 24-hour delay.
 """
 
 from __future__ import annotations
@@ -24,6 +26,21 @@ _EVERY = re.compile(
 )
 
 
+_PERIOD_WORDS = frozenset({"interval", "intervals", "often", "frequency", "every", "period"})
+
+
+def _has_period(view: Model, named: set[str]) -> bool:
+    """A setting of how often: its name or label says an interval ("TURN INTERVAL", "HOW
+    OFTEN"), or its values are said "every …" ("every 2 days")."""
+    if any(value.startswith(("every ", "once ")) for value in named):
+        return True
+    return any(
+        _PERIOD_WORDS & set(re.findall(r"[a-z]+", f"{name} {info.var.label or ''}".casefold()))
+        for name, info in view.infos.items()
+        if info.role == "setting"
+    )
+
+
 def every_periods(view: Model, instruction: str) -> str:
     """Rewrite "every other day", "every third day", "once a week", "every hour" with a number
     ("every 2 days", "every 3 days", "every 7 days", "every 1 hour")."""
@@ -33,6 +50,8 @@ def every_periods(view: Model, instruction: str) -> str:
         if isinstance(info.var, DiscreteVariable)
         for value in info.values
     }
+    if not _has_period(view, named):
+        return instruction
     instruction = _ONCE.sub(lambda m: f"every {m[1]}", instruction)
 
     def number(match: re.Match[str]) -> str:

@@ -78,7 +78,7 @@ def superlatives(
             if (
                 only is not None
                 and _of_a_setting(view.infos[only[1]], text, k)
-                and (kind != "level" or not _names_another(view, only[1], text, k))
+                and (kind not in ("level", "speed") or not _names_another(view, only[1], text, k))
             ):
                 best = only
         if best is None:
@@ -132,7 +132,7 @@ _KIND_OF_WORD = {
     **dict.fromkeys(("longest", "shortest", "long", "short"), "time"),
     **dict.fromkeys(("strongest", "weakest", "gentlest", "softest", "mildest"), "level"),
     **dict.fromkeys(("strong", "weak", "gentle", "soft", "mild"), "level"),
-    **dict.fromkeys(("fastest", "slowest", "fast", "slow"), "speed"),
+    **dict.fromkeys(("fastest", "slowest"), "speed"),  # "as fast as possible": in a hurry
 }
 """The kind a superlative's own word measures; "level": a strength, counted in numbered
 levels (an intensity 1-5, a massage OFF/1/2/3), whatever the setting is called; "speed": the

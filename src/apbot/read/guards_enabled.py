@@ -35,10 +35,11 @@ def _conditions(stem: str) -> list[re.Pattern[str]]:
         ),
         # a key legend's "(heater on only)"
         re.compile(rf"\(\s*{w}\s+on\s+only\s*\)", re.I),
-        # "With the heater off ▲ and ▼ have no effect"
+        # "With the heater off ▲ and ▼ have no effect" (in one clause: not "…, TIMER still
+        # counts down but the plate does not change")
         re.compile(
             rf"\b(?:with|while|when|if)\s+{w}\s+(?:is\s+|are\s+)?(?:switched\s+)?off\b"
-            rf"[^.]{{0,80}}\b(?:{_REFUSED})\b",
+            rf"(?:(?!\bbut\b)[^.;]){{0,80}}\b(?:{_REFUSED})\b",
             re.I,
         ),
     ]
@@ -79,6 +80,25 @@ def _setting_actions(b: Builder, switch: str) -> dict[str, set[str]]:
     return out
 
 
+_CLAUSE_END = re.compile(r"[.;:]\s|\bbut\b", re.I)
+
+
+def _clause(text: str, match: re.Match[str]) -> str:
+    """The clause a condition stands in, from the clause's start up to the condition's end:
+    the keys it names ("+ and - only work while warming is on"), not those of the next
+    clause ("; TIMER works at any time")."""
+    start = max((m.end() for m in _CLAUSE_END.finditer(text, 0, match.start())), default=0)
+    return text[start : match.end()]
+
+
+def _said_elsewhere(label: str, text: str, clauses: list[str]) -> bool:
+    """The key's printed label stands in the sentence, but in none of the condition's clauses."""
+    if not label:
+        return False
+    printed = re.compile(rf"(?<![A-Za-z0-9]){re.escape(label)}(?![A-Za-z0-9])")
+    return bool(printed.search(text)) and not any(printed.search(c) for c in clauses)
+
+
 def read_enabling_switches(b: Builder) -> None:
     """Guard a setting's keys with the switch the manual says they need switched on."""
     for switch, stems in _switches(b).items():
@@ -99,9 +119,16 @@ def read_enabling_switches(b: Builder) -> None:
         at: int | None = None
         patterns = [p for stem in stems for p in _conditions(stem)]
         for index, unit in enumerate(b.manual.units):
-            if not any(p.search(unit.text) for p in patterns):
+            clauses = [_clause(unit.text, m) for p in patterns for m in p.finditer(unit.text)]
+            if not clauses:
                 continue
-            named = {t for t in b.labels if t not in own and index in mentions_of(b, t)}
+            named = {
+                t
+                for t in b.labels
+                if t not in own
+                and index in mentions_of(b, t)
+                and not _said_elsewhere(b.labels[t].text, unit.text, clauses)
+            }
             hit = {a for a, tokens in actions.items() if tokens and tokens <= named}
             if hit:
                 refused |= hit

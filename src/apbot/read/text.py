@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 from apbot.read.errors import ReaderError
 from apbot.read.marks_legend import legend_meanings
 from apbot.read.text_boxes import unbox
-from apbot.read.text_html import html_tables
+from apbot.read.text_html import html_tables, tables_apart
 from apbot.read.text_icons import _put, name_icons
 from apbot.read.text_pages import (
     _furniture,
@@ -176,7 +176,7 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
     text = "\n".join("" if i in contents else line for i, line in enumerate(lines))
     text = _LEADER_RE.sub("    ", text)  # "Timer ........ 0:00 - 99:59": a gap between columns
     original = text.split("\n")
-    raw_lines, line_numbers = _reading_order(original)
+    raw_lines, line_numbers = tables_apart(*_reading_order(original))
     units: list[Unit] = []
     heading = ""
     header: tuple[str, ...] = ()

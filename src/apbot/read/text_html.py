@@ -38,6 +38,24 @@ class HtmlTables:
     starts: set[int] = field(default_factory=set)
 
 
+_EDGE = re.compile(r"(?=<table\b)|(?<=</table>)", re.IGNORECASE)
+
+
+def tables_apart(lines: list[str], numbers: list[int]) -> tuple[list[str], list[int]]:
+    """The lines with a table's start and end each beginning and ending a line of its own (at
+    the same line number): "Keys: <table>…</table> Press START to boil." keeps "Keys:" and the
+    sentence after the table as text, instead of losing them with the table's tag lines."""
+    out: list[str] = []
+    outnums: list[int] = []
+    for line, number in zip(lines, numbers, strict=True):
+        pieces = [line]
+        if "table" in line.casefold():
+            pieces = [x for x in _EDGE.split(line) if x.strip()] or [line]
+        out.extend(pieces)
+        outnums.extend([number] * len(pieces))
+    return out, outnums
+
+
 def html_tables(lines: list[str]) -> HtmlTables:
     """The HTML tables of ``lines`` (see the module docstring)."""
     found = HtmlTables()
