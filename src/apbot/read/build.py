@@ -39,6 +39,7 @@ from apbot.read.values import (
     unit_name,
 )
 from apbot.read.values_pieces import split_range
+from apbot.read.values_upto import stated_low
 from apbot.read.values_zero import from_zero, zero_told
 
 _PRINTED_UNITS = r"kg|g|lbs?|ml|l|litres?|W|watts?|rpm|%"  # quantities, not times or degrees
@@ -287,6 +288,9 @@ class Builder(EvidenceReader):
         clock = "clock" in words(name.replace("_", " "))
         if clock and any(r.unit not in ("s", "h") for r in ranges):
             ranges = []  # a clock's range is the day, whatever numbers stand nearby
+        if len(ranges) == 1 and ranges[0].low == 0 and ev.range_at is not None:
+            told = self._range_anywhere(name, label)  # "up to 45 °C", "set from 30 °C to 40 °C"
+            ranges = [stated_low(ranges[0], self.manual.units[ev.range_at].text, told)]
         if ranges:
             shown = ", ".join(f"{r.low:g}–{r.high:g}" for r in ranges)
             self.note(subject, f"range {shown} {ranges[0].unit}", ev.range_at)

@@ -234,7 +234,7 @@ def _ranges(text: str) -> list[Range]:
     for m in UPTO_RE.finditer(text):
         hi = number(m.group(1))
         if hi:
-            out.append(Range(0, hi, unit_name(m.group(2))))
+            out.append(_from_up_to(text, m.start(), hi, unit_name(m.group(2))))
     for m in STOPS_RE.finditer(text):  # "the value stops at 40 °C and at 55 °C": its ends
         lo, hi = number(m.group(1)), number(m.group(3))
         units = {unit_name(u) for u in (m.group(2), m.group(4)) if u}
@@ -244,8 +244,45 @@ def _ranges(text: str) -> list[Range]:
                 out.append(found)
     # "up to 99:59"; a 12-hour clock's last minute ("up to 12:59") starts at 1:00
     twelve = 12 * 3600 + 59 * 60
-    out += [Range(3600 if top == twelve else 0, top, "s") for top in clock_tops(text) if top]
+    for top, at, min_sec in clock_tops(text):
+        if top:
+            low = _from_clock(text, at, min_sec)
+            out.append(Range(3600 if top == twelve else low if low < top else 0, top, "s"))
     return out
+
+
+# the low end said before an "up to" in its own clause: "from 30 °C up to 45 °C", "from 2:00
+# (TIME 02:00) up to 8:00"; an "up to" alone starts from nothing
+_FROM_RE = re.compile(
+    rf"\bfrom\s+(?:(\d{{1,2}}:\d{{2}})(?![\d:])|({NUM})\s*({UNIT})?(?![\w:]))", re.IGNORECASE
+)
+
+
+def _from_match(text: str, at: int) -> re.Match[str] | None:
+    head = re.split(r"[.;!?](?:\s|$)|:\s", text[:at])[-1]
+    found = list(_FROM_RE.finditer(head))
+    return found[-1] if found else None
+
+
+def _from_up_to(text: str, at: int, high: float, unit: str) -> Range:
+    """An "up to" amount's range: from the clause's "from" amount in a unit of the same
+    kind, else from 0."""
+    m = _from_match(text, at)
+    low = number(m.group(2)) if m and m.group(2) else None
+    first = unit_name(m.group(3)) if m and m.group(3) else unit
+    if low is None or not _same_kind(first, unit):
+        return Range(0, high, unit)
+    if first != unit and is_time_unit(unit):
+        high, unit = seconds(high, unit) / seconds(1, first), first
+    elif first != unit and (same := rescale(high, unit, first)) is not None:
+        high, unit = same, first
+    return Range(low, high, unit) if low < high else Range(0, high, unit)
+
+
+def _from_clock(text: str, at: int, min_sec: bool) -> int:
+    """The seconds of a clock figure said "from" before an "up to" clock top, else 0."""
+    m = _from_match(text, at)
+    return clock_seconds(m.group(1), min_sec) if m and m.group(1) else 0
 
 
 _FIRST_RE = re.compile(

@@ -36,15 +36,25 @@ _CLOCK_TOP_RE = re.compile(
 )
 
 
-def clock_tops(text: str) -> list[int]:
-    """Seconds of each top written as one clock figure ("up to 99:59"). Read as minutes and
-    seconds when labelled so or when it cannot be a time of day (30:00, 24:30); else h:mm,
-    "up to 24:00" being a whole day."""
-    out: list[int] = []
+# a sentence stepping in seconds ("in 30-second steps", "steps of 10 s") sets minutes and
+# seconds: an h:mm setting never moves by seconds
+_SECOND_STEPS_RE = re.compile(
+    r"\b\d+\s*-?\s*(?:s|secs?|seconds?)\s+(?:steps?|increments?)\b"
+    r"|\b(?:steps?|increments?)\s+of\s+\d+\s*(?:s|secs?|seconds?)\b",
+    re.IGNORECASE,
+)
+
+
+def clock_tops(text: str) -> list[tuple[int, int, bool]]:
+    """Seconds of each top written as one clock figure ("up to 99:59"), where it is said, and
+    whether it is minutes and seconds: so when labelled so or when it cannot be a time of day
+    (30:00, 24:30); else h:mm, "up to 24:00" being a whole day."""
+    out: list[tuple[int, int, bool]] = []
     for m in _CLOCK_TOP_RE.finditer(text):
         figure = m.group(1)
         first, second = (int(p) for p in figure.split(":"))
         min_sec = minutes_and_seconds(text, m.end()) or first > 24 or (first == 24 and second > 0)
+        min_sec = min_sec or bool(_SECOND_STEPS_RE.search(text))
         if second < 60:
-            out.append(clock_seconds(figure, min_sec))
+            out.append((clock_seconds(figure, min_sec), m.start(), min_sec))
     return out
