@@ -13,11 +13,11 @@ from __future__ import annotations
 import re
 
 from apbot.model.schema import DiscreteVariable
+from apbot.read.goal_ordinals import ORDINALS
 from apbot.read.goal_view import Model
 
-_ORDINALS = {
-    "other": 2, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "sixth": 6, "seventh": 7,
-}  # fmt: skip
+# "every other day", "every third day": the ordinals that count days apart ("first" does not)
+_ORDINALS = {"other": 2, **{word: n for word, n in ORDINALS.items() if n >= 2}}
 _UNITS = r"(minute|hour|day|week)"
 _ONCE = re.compile(rf"\bonce\s+(?:a|an|per|every)\s+{_UNITS}\b", re.IGNORECASE)
 _EVERY = re.compile(

@@ -15,11 +15,11 @@ from apbot.read.goal_fit import CODE
 from apbot.read.goal_view import Model, VarInfo
 from apbot.read.goal_vocab import concept
 
-_ORDINALS = {
+ORDINALS = {
     "first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5,
     "sixth": 6, "seventh": 7, "eighth": 8, "ninth": 9, "tenth": 10,
 }  # fmt: skip
-_ORDINAL_NOUN = re.compile(r"\b(" + "|".join(_ORDINALS) + r")\s+([A-Za-z]+)\b", re.IGNORECASE)
+_ORDINAL_NOUN = re.compile(r"\b(" + "|".join(ORDINALS) + r")\s+([A-Za-z]+)\b", re.IGNORECASE)
 _COUNTS = "|".join(w for w in NUMBER_WORDS if w not in ("a", "an", "single", "couple"))
 _NUMBER_BEFORE = re.compile(rf"(\d|\b(?:{_COUNTS}))\W*$", re.IGNORECASE)
 _NUMBER_AFTER = re.compile(rf"^\s*(?:\d|(?:{_COUNTS})\b)", re.IGNORECASE)
@@ -43,7 +43,7 @@ def ordinal_numbers(view: Model, instruction: str) -> str:
             return match[0]  # "First program the delay": a step's order, the noun a verb
         if concept(match[2].casefold()) not in nouns:
             return match[0]
-        return f"{match[2]} {_ORDINALS[match[1].casefold()]}"
+        return f"{match[2]} {ORDINALS[match[1].casefold()]}"
 
     return _ORDINAL_NOUN.sub(number, instruction)
 
