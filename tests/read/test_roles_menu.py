@@ -156,3 +156,26 @@ def test_an_item_ranged_per_value_of_an_earlier_item() -> None:
     spec = model.variables[temp]
     assert spec.depends_on == unit
     assert set(spec.cases) == {"celsius", "fahrenheit"}
+
+
+# items listed one a line with their choices in brackets, the menu opened by a press
+FRIDGE = """Wine cabinet
+
+Press MODE: the display shows U1 and its value. Press MODE again for the next setting;
++ and - change it.
+
+User settings:
+
+- U1: display unit (C/F)
+- U2: door alarm (on/off)
+"""
+FRIDGE_ACTIONS = ["press_mode", "press_plus", "press_minus"]
+
+
+def test_choices_in_brackets_after_the_item_name() -> None:
+    model = read_manual(FRIDGE, FRIDGE_ACTIONS).model
+    steps = _menu_steps(model)
+    assert steps[0] == (("press_mode",), None)
+    unit, alarm = (v for _a, v in steps if v)
+    assert model.variables[unit].values == ["c", "f"]
+    assert model.variables[alarm].values == ["on", "off"]

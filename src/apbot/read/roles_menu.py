@@ -40,7 +40,7 @@ _CODE_RE = re.compile(rf"^{_CODE}$")
 _LEAD_RE = re.compile(rf"^\s*{_CODE}\b\s*[:.=–-]?\s+(?P<rest>[A-Za-z][^|]*)$")
 _MENU_RE = re.compile(
     r"\b(?:menu|programming|program(?:me)?\s+mode|settings?\s+mode|set-?up\s+mode|"
-    r"parameters?|user\s+settings|settings?\s+items?)\b",
+    r"parameters?|settings|set-?up|options|functions?\s+codes?)\b",
     re.IGNORECASE,
 )
 _SHOWS_RE = re.compile(r"\b(?:shows?|appears?|displays?|reads?|flash(?:es)?)\b", re.IGNORECASE)
@@ -130,7 +130,7 @@ def find_items(b: Builder) -> list[MenuItem]:
         nums = sorted(items)
         if len(nums) < 2 or nums[0] not in (0, 1) or nums != list(range(nums[0], nums[-1] + 1)):
             continue
-        if not _tied_to_menu(b, pre):
+        if not _tied_to_menu(b, pre, items[nums[0]].at):
             continue
         return [items[n] for n in nums]
     return []
@@ -148,9 +148,13 @@ def _body(b: Builder, i: int, pre: str, tail: str) -> list[tuple[int, str]]:
     return out
 
 
-def _tied_to_menu(b: Builder, pre: str) -> bool:
+def _tied_to_menu(b: Builder, pre: str, first: int) -> bool:
     """A sentence or heading ties the codes to a settings menu ("THE SETTING MENU (F1 - F5)",
-    "P1 … / P2 …  programming, parameter and value")."""
+    "P1 … / P2 …  programming, parameter and value"), or the line that leads into the first
+    item names one ("User settings:")."""
+    lead = b.manual.units[first - 1].text if first else ""
+    if lead.rstrip().endswith(":") and _MENU_RE.search(lead):
+        return True
     code = re.compile(rf"\b{re.escape(pre)}-?[01]\b")
     return any(
         code.search(u.text) and _MENU_RE.search(u.text) for u in b.manual.units if not u.cells
@@ -259,7 +263,6 @@ def _item_variable(b: Builder, item: MenuItem) -> str | None:
     name = re.sub(r"\s*\(.*?\)", "", item.name).strip()
     ranges: list[Range] = []
     step: tuple[float, str] | None = None
-    initial: tuple[float, str] | None = None
     initial = next((f for _i, t in item.texts if (f := find_initial(t))), None)
     if (cases := _cases(b, item)) is not None:
         return cases
@@ -272,6 +275,9 @@ def _item_variable(b: Builder, item: MenuItem) -> str | None:
             return _listed(b, item, name, parts)
         found = find_list(text)
         listed = found[0] if found else bare_list(text) or []
+        aside = re.search(r"\(([^()]*[/·,][^()]*)\)", text)  # "F1: temperature unit (C/F)"
+        if not listed and aside and i == item.at:
+            listed = [p.strip() for p in re.split(r"\s*[/·,]\s*", aside.group(1)) if p.strip()]
         if len(listed) >= 2 and not numeric_list(listed):
             values = []
             for v in listed:
