@@ -26,7 +26,10 @@ HEATER = """# Pond heater PH-2
 
 d1  Water temperature
 
-Adjustable from 4 °C to 20 °C in steps of 1 °C. Default 8 °C.
+Adjustable from 4 °C to 20 °C. Default 8 °C.
+It changes in steps of 1 °C.
+
+AQUAHEAT    OWNER GUIDE    PAGE
 
 d2  Pump speed
 

@@ -269,6 +269,9 @@ def _item_variable(b: Builder, item: MenuItem) -> str | None:
     for i, text in item.texts:
         if b.manual.units[i].cells and i != item.at:
             continue  # (a table under the item: its cases, read above)
+        if ranges:  # (a range read first is the item's: no list after it, only its step)
+            step = step or find_step(text)
+            continue
         run = re.search(r"(?<![\w.])(?:--|\d)", text)  # "The setback runs 0 h - 2 h - …"
         parts = _parts(text) or (_parts(text[run.start() :]) if run else None)
         if parts:
