@@ -90,6 +90,7 @@ PROGRAMMING (C1 - C2)
 |---|---|---|---|
 | C1 | pause before closing | -- (off) · 30 · 60 · 120 s | -- |
 | C2 | motor force | 1 · 2 · 3 … 6 | 4 |
+| C3 | courtesy light | 1.5 · 2.5 · 3.5 min | 2.5 |
 
 Hold PROG for 3 seconds. The display shows C1 and the pause.
 Press UP or DOWN, then PROG to go on to C2.
@@ -101,10 +102,13 @@ def test_table_rows_give_the_items_and_their_values() -> None:
     model = read_manual(GATE, GATE_ACTIONS).model
     steps = _menu_steps(model)
     assert steps[0] == (("hold_prog",), None)
-    pause, force = (model.variables[v] for _a, v in steps if v)
+    pause, force, light = (model.variables[v] for _a, v in steps if v)
     assert pause.values[0] == "off" and len(pause.values) == 4
     assert pause.initial == "off"
     assert force.ranges == [(1, 6, 1)] and force.initial == 4
+    # minutes printed as bare numbers ("C3 2.5") stay numbers, not a clock shown as 02:30
+    assert light.type == "numeric" and light.unit == "min"
+    assert light.ranges == [(1.5, 3.5, 1)] and light.initial == 2.5
 
 
 # a programme chart with codes is no settings menu: MENU steps the programmes themselves

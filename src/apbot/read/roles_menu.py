@@ -298,11 +298,31 @@ def _item_variable(b: Builder, item: MenuItem) -> str | None:
         r = Range(r.low, r.high, r.unit or step[1], r.step or step[0])
     ev = Evidence(ranges=[r], range_at=item.at, step=step, step_at=item.at)
     var = b.add_number(name, item.code, ev, cyclic=False)
+    _as_printed(b, var, r.unit)
     if initial is not None:
         _start(b, var, initial[0], r.unit, item.at)
     elif item.initial and (num := re.match(r"[-−]?\d+(?:\.\d+)?", item.initial)):
         _start(b, var, float(num.group(0)), r.unit, item.at)
     return var
+
+
+def _as_printed(b: Builder, var: str, unit: str) -> None:
+    """A duration the menu prints as a bare number ("P1 2.5" for 2.5 min) stays a number in
+    its printed unit: read as a time it would be shown as 02:30, which the display never
+    shows."""
+    spec = b.variables[var]
+    if spec["type"] != "time" or unit not in ("s", "min", "h"):
+        return
+    per = seconds(1, unit)
+    spec["type"] = "numeric"
+    spec["unit"] = unit
+    spec.pop("format", None)
+    spec["ranges"] = [
+        [_tidy(parse_hms(lo) / per), _tidy(parse_hms(hi) / per), _tidy(st / per)]
+        for lo, hi, st in spec["ranges"]
+    ]
+    if "initial" in spec:
+        spec["initial"] = _tidy(parse_hms(spec["initial"]) / per)
 
 
 def _start(b: Builder, var: str, value: float, unit: str, at: int) -> None:
@@ -401,8 +421,10 @@ def _listed(b: Builder, item: MenuItem, name: str, parts: list[str]) -> str:
         initial = next((p for p in parts if p.split()[0] == f"{told[0]:g}"), None)
     if "off" not in parts and numeric_list(parts):
         var = b.add_number(name, item.code, list_evidence(Evidence(values=parts)), cyclic=False)
+        unit = unit_name(parts[-1].split()[-1]) if " " in parts[-1] else ""
+        _as_printed(b, var, unit)
         if initial is not None:
-            _start(b, var, float(initial.split()[0]), unit_name(parts[-1].split()[-1]), item.at)
+            _start(b, var, float(initial.split()[0]), unit, item.at)
         return var
     ev2 = Evidence(values=parts, values_at=item.at, initial=initial, initial_at=item.at)
     var = b.add_discrete(name, parts, item.code, ev2)
