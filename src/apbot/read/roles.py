@@ -43,6 +43,7 @@ from apbot.read.roles_lists import (
     numeric_list,
     pair_of_names,
 )
+from apbot.read.roles_menu import assign_menu
 from apbot.read.roles_pads import (
     codes_shown,
     column_keys,
@@ -90,6 +91,8 @@ def assign(b: Builder) -> None:
     for base in list(pairs):
         if pair_of_names(b, base, pairs[base]) or more_less_pair(b, base, pairs[base]):
             del pairs[base]  # it moves through a list of names: no amount for other keys
+    # a numbered settings menu ("hold SET 3 s: F1 … F5") takes its keys and the pair
+    done |= assign_menu(b, [i for i in infos if i.name not in done], pairs)
     paired = {n for p in pairs.values() for ns in p.values() for n in ns}
     done |= paired | set(digits) | used_actions(b)
     hour_minute = hour_minute_keys(infos, done)

@@ -1,0 +1,252 @@
+"""Settings reached through a numbered menu: "hold SET for 3 s; the display shows F1 …".
+
+Many panels have no key per setting. A held key opens a settings menu whose items carry codes
+(F1 … F5, P1 … P3, d1 … d4), the stepping pair changes the item shown, and a press of the
+same key moves on to the next item (after the last one it leaves the menu). Read key by key,
+the held key looks like a toggle of its own, the short press like an amount of its own, and
+the pair like one more amount, so no item can be set. This rule reads the menu as one
+feature whose steps follow the manual's procedure: enter, pair on the first item, next key,
+pair on the second item, …, next key (the model format's sequential steps; the
+"SET/TIME then ▲/▼" switch of ``roles_shared`` is written the same way).
+
+What marks a menu (structural, whatever the appliance): a family of codes of one prefix
+numbered from 1 (or 0) without gaps, each led by its own line or table row that names a
+setting ("F3  Humidity target", "| P2 | automatic close | -- · 1 · 2 · 5 · 10 min |"); a
+sentence tying the codes to a menu, programming or settings mode; and the key that opens it,
+from the step that opens it ("Hold PROG for 3 seconds. The display shows P1 …") or from its
+own legend ("| SET | … | 3 s: open the setting menu |"). Each item's values come from its own
+row or the lines under its heading. The display shows the code with the value, so each
+item's label is its code.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+from apbot.read.actions import ActionInfo
+from apbot.read.build import Builder
+from apbot.read.labels import words
+from apbot.read.menu_values import DEFAULT_HEAD, MenuItem, item_variable
+
+_CODE = r"(?P<pre>[A-Za-z]{1,2})-?(?P<num>\d{1,2})"
+_CODE_RE = re.compile(rf"^{_CODE}$")
+_LEAD_RE = re.compile(rf"^\s*{_CODE}\b\s*[:.=–-]?\s+(?P<rest>[A-Za-z][^|]*)$")
+_MENU_RE = re.compile(
+    r"\b(?:menu|programming|program(?:me)?\s+mode|settings?\s+mode|set-?up\s+mode|"
+    r"parameters?|settings|set-?up|options|functions?\s+codes?)\b",
+    re.IGNORECASE,
+)
+_SHOWS_RE = re.compile(r"\b(?:shows?|appears?|displays?|reads?|flash(?:es)?)\b", re.IGNORECASE)
+_HOLD_CLAUSE = re.compile(r"\b(?:hold\w*|\d+\s*s(?:ec\w*)?)\b[^.;|]*", re.IGNORECASE)
+_NEXT_RE = re.compile(r"\bnext\s+(?:item|parameter|setting|function|code|menu\s+item|step)\b", re.I)
+_VALUES_HEAD = re.compile(r"\b(?:values?|range|settings?|options?|choices?)\b", re.IGNORECASE)
+
+
+def _name_of(rest: str) -> str:
+    """The setting a lead line names: its words up to a new sentence or a value ("Light time
+    How long …" → "Light time"; "Incubation temperature" stays)."""
+    out: list[str] = []
+    for k, w in enumerate(rest.split()):
+        if k and ((w[:1].isupper() and not w.isupper()) or re.match(r"[\d(.\-–]", w)):
+            break
+        if k >= 5:
+            break
+        out.append(w)
+    return " ".join(out).strip(" .:,")
+
+
+def _row_item(unit: Any) -> tuple[str, str, int, int] | None:
+    """(prefix, name, number, code cell) of a table row led by a code ("| P1 | light time … |")."""
+    for k, cell in enumerate(unit.cells[:2]):
+        m = _CODE_RE.match(cell.strip())
+        if m and k + 1 < len(unit.cells) and re.match(r"[A-Za-z]", unit.cells[k + 1].strip()):
+            return m.group("pre"), unit.cells[k + 1].strip(), int(m.group("num")), k
+    return None
+
+
+def find_items(b: Builder) -> list[MenuItem]:
+    """The menu's items in order, or [] when the manual has no numbered settings menu."""
+    units = b.manual.units
+    found: dict[str, dict[int, MenuItem]] = {}
+    for i, unit in enumerate(units):
+        if unit.cells:
+            row = _row_item(unit)
+            if row is None:
+                continue
+            pre, name, num, k = row
+            code = unit.cells[k].strip()
+            item = found.setdefault(pre, {}).setdefault(num, MenuItem(code, name, i))
+            cells = unit.cells[k + 2 :]
+            heads = unit.header[k + 2 :] if unit.header else ()
+            for c, cell in enumerate(cells):
+                head = heads[c] if c < len(heads) else ""
+                if DEFAULT_HEAD.search(head):
+                    item.initial = cell.strip()
+                elif not head or _VALUES_HEAD.search(head) or c == 0:
+                    item.texts.append((i, cell))
+            if len(name.split()) < len(item.name.split()):
+                item.name = name
+            continue
+        m = _LEAD_RE.match(unit.text)
+        if m is None:
+            continue
+        rest = m.group("rest")
+        if re.search(rf"\b{re.escape(m.group('pre'))}-?\d", rest):
+            continue  # "F1 unit C F2 temperature …": a list of several items, not one's lead
+        name = _name_of(rest)
+        if not name or len(words(name)) == 0:
+            continue
+        pre, num = m.group("pre"), int(m.group("num"))
+        code = unit.text.strip().split()[0].rstrip(":.=")
+        item = found.setdefault(pre, {}).setdefault(num, MenuItem(code, name, i))
+        if len(name.split()) < len(item.name.split()) or (item.at != i and not item.texts):
+            item.name = name
+        item.texts += _body(b, i, pre, rest[len(name) :])
+    for pre, items in found.items():
+        nums = sorted(items)
+        if len(nums) < 2 or nums[0] not in (0, 1) or nums != list(range(nums[0], nums[-1] + 1)):
+            continue
+        if not _tied_to_menu(b, pre, items[nums[0]].at):
+            continue
+        return [items[n] for n in nums]
+    return []
+
+
+def _body(b: Builder, i: int, pre: str, tail: str) -> list[tuple[int, str]]:
+    """The text under an item's own lead line, up to the next item or heading (at most 6 units)."""
+    units = b.manual.units
+    out = [(i, tail)] if tail.strip() else []
+    for j in range(i + 1, min(i + 7, len(units))):
+        text = units[j].text
+        if _LEAD_RE.match(text) or units[j].heading != units[i].heading:
+            break
+        out.append((j, text))
+    return out
+
+
+def _tied_to_menu(b: Builder, pre: str, first: int) -> bool:
+    """A sentence or heading ties the codes to a settings menu ("THE SETTING MENU (F1 - F5)",
+    "P1 … / P2 …  programming, parameter and value"), or the line that leads into the first
+    item names one ("User settings:")."""
+    lead = b.manual.units[first - 1].text if first else ""
+    if lead.rstrip().endswith(":") and _MENU_RE.search(lead):
+        return True
+    code = re.compile(rf"\b{re.escape(pre)}-?[01]\b")
+    return any(
+        code.search(u.text) and _MENU_RE.search(u.text) for u in b.manual.units if not u.cells
+    ) or any(code.search(u.heading) and _MENU_RE.search(u.heading) for u in b.manual.units)
+
+
+def _label_at(b: Builder, token: str, text: str) -> bool:
+    lab = b.labels.get(token)
+    return bool(lab and lab.text and re.search(rf"(?<!\w){re.escape(lab.text)}(?!\w)", text))
+
+
+def find_entry(b: Builder, keys: list[ActionInfo], first: str) -> ActionInfo | None:
+    """The action that opens the menu: the held (or pressed) key of the step after which the
+    display shows the first item ("Hold PROG for 3 seconds. The display shows P1 …"), else a
+    hold whose own legend opens the menu ("| SET | … | 3 s: open the setting menu |")."""
+    units = b.manual.units
+    code = re.compile(rf"(?<!\w){re.escape(first)}(?!\w)")
+    for i, unit in enumerate(units):
+        if not (code.search(unit.text) and _SHOWS_RE.search(unit.text)):
+            continue
+        for j in (i, i - 1):
+            if j < 0:
+                continue
+            text = units[j].text
+            for skill in ("hold", "press"):
+                verb = re.search(
+                    r"\bhold\b|\bkeep\b.*\bpressed\b"
+                    if skill == "hold"
+                    else r"\b(?:press|touch|push|tap)\b",
+                    text,
+                    re.IGNORECASE,
+                )
+                if verb is None:
+                    continue
+                for key in keys:
+                    if (
+                        key.skill == skill
+                        and len(key.controls) == 1
+                        and _label_at(b, key.controls[0], text[verb.start() :])
+                    ):
+                        return key
+    for key in keys:
+        if key.skill != "hold" or len(key.controls) != 1:
+            continue
+        lab = b.labels.get(key.controls[0])
+        for i in lab.mentions if lab else []:
+            unit = units[i]
+            told = " ".join(unit.cells) if unit.cells else unit.text
+            if any(_MENU_RE.search(c.group(0)) for c in _HOLD_CLAUSE.finditer(told)):
+                return (
+                    key  # "| SET | … | 3 s: open the setting menu |", "Hold 3 seconds: programming"
+                )
+    return None
+
+
+def _next_key(b: Builder, keys: list[ActionInfo], entry: ActionInfo) -> ActionInfo | None:
+    """The key that moves to the next item: a press of the entry's own key (or the entry
+    itself when it is a press), else a key whose sentence says it goes to the next item."""
+    for key in keys:
+        if key.skill == "press" and key.controls == entry.controls:
+            return key
+    for key in keys:
+        lab = b.labels.get(key.controls[0]) if key.skill == "press" else None
+        if lab and any(_NEXT_RE.search(b.manual.units[i].text) for i in lab.mentions):
+            return key
+    return None
+
+
+def assign_menu(
+    b: Builder, keys: list[ActionInfo], pairs: dict[str, dict[str, list[str]]]
+) -> set[str]:
+    """Read a numbered settings menu into one feature; returns the actions it took (and drops
+    the stepping pair it uses from ``pairs``)."""
+    items = find_items(b)
+    if not items or not pairs:
+        return set()
+    entry = find_entry(b, keys, items[0].code)
+    if entry is None:
+        return set()
+    nxt = _next_key(b, [k for k in keys if k.name != entry.name], entry) or (
+        entry if entry.skill == "press" else None
+    )
+    if nxt is None:
+        return set()
+    by_name = {k.name: k for k in b.infos}
+    base = "" if "" in pairs else next(iter(pairs))
+    pair = pairs[base]
+    ups = [a for a in pair["up"] if by_name[a].skill == "press"]
+    downs = [a for a in pair["down"] if by_name[a].skill == "press"]
+    if len(ups) != 1 or len(downs) != 1:
+        return set()
+    steps: list[dict[str, Any]] = [{"actions": [entry.name]}]
+    made = 0
+    for k, item in enumerate(items):
+        if k:
+            steps.append({"actions": [nxt.name]})
+        var = item_variable(b, item)
+        if var is None:  # an item the manual gives no values for: passed with ▲ / ▼ all the same
+            steps.append({"actions": [ups[0], downs[0]]})
+            continue
+        made += 1
+        steps.append(
+            {
+                "actions": [ups[0], downs[0]],
+                "variable": var,
+                "effect": {ups[0]: "next", downs[0]: "prev"},
+            }
+        )
+        b.note(f"variables.{var}", f"menu item {item.code}", item.at)
+    if made == 0:
+        return set()
+    steps.append({"actions": [nxt.name]})
+    b.feature("settings_menu", steps)
+    b.note(
+        "features.settings_menu", f"{entry.name} opens the menu, {nxt.name} goes on", items[0].at
+    )
+    del pairs[base]
+    return {entry.name, nxt.name, ups[0], downs[0]}
