@@ -24,6 +24,7 @@ from apbot.read.roles_common import (
     hold_use,
     label_of,
     mentions_of,
+    token_of,
     used_actions,
     var_name,
 )
@@ -53,6 +54,7 @@ from apbot.read.roles_pads import (
     selecting_keys,
     shown_codes,
 )
+from apbot.read.roles_pairafter import lists_own, pair_follows
 from apbot.read.roles_raiselower import raise_lower_pairs
 from apbot.read.roles_shared import add_clock_steps, assign_shared, clock_steps, dial_after_keys
 from apbot.read.roles_switched import switched_time
@@ -164,6 +166,11 @@ def assign(b: Builder) -> None:
     entry_keys: list[ActionInfo] = []
     silent: list[ActionInfo] = []
     paired_tokens = {c for i in infos if i.name in paired for c in i.controls}
+    pair_tokens = (
+        [token_of(b, n) for n in shared_pair["up"] + shared_pair["down"]]
+        if shared_pair and shared_pair["up"] and shared_pair["down"]
+        else []
+    )
     for key in keys:
         ev = evidence[key.name]
         name = var_name(b, key)
@@ -206,6 +213,13 @@ def assign(b: Builder) -> None:
         if own_toggle and not set(words(name)) & NUMERIC_WORDS:
             var = b.add_toggle(name, lab, ev.toggle_at)  # "press KEEP WARM to switch it on or off"
             b.feature(var, [{"actions": [key.name], "variable": var, "effect": "toggle"}])
+        elif (
+            key.skill == "press"
+            and pair_tokens
+            and pair_follows(b, key, pair_tokens) is not None
+            and not lists_own(b, key, ev.values_at)
+        ):
+            entry_keys.append(key)  # "1. Press RUN TIME." "2. Press ▲ or ▼ …": the pair's
         elif (
             ev.values
             and len(ev.values) >= 2

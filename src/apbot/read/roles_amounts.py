@@ -24,6 +24,7 @@ from apbot.read.roles_common import (
 from apbot.read.roles_confirm import ends_entry
 from apbot.read.roles_lists import dial_amount, dial_ends, dial_list, list_evidence
 from apbot.read.roles_numbered import numbered_entry
+from apbot.read.roles_pairafter import pair_follows
 from apbot.read.roles_pushed import pushed_dials
 from apbot.read.roles_raised import own_sentence, raised_quantity, set_alone, sets_with_pair
 from apbot.read.shapes import CHOICE_WORDS, Evidence
@@ -97,7 +98,12 @@ def assign_amounts(
             steppers = steppers[1:] + steppers[:1]
             used_steppers = set()
             # an entry key set "with − / +" keeps the pair after it (the pair alone sets its own)
-            shared_too = [k for k in entry_keys if sets_with_pair(b, k.controls[0], pair_tokens)]
+            shared_too = [
+                k
+                for k in entry_keys
+                if sets_with_pair(b, k.controls[0], pair_tokens)
+                or pair_follows(b, k, pair_tokens) is not None  # "1. Touch TIME. 2. Use ▲ / ▼"
+            ]
             for key in (k for k in entry_keys if k not in shared_too):
                 own = evidence[key.name]
                 if own.values and len(own.values) >= 3 and numeric_list(own.values):
@@ -172,7 +178,10 @@ def assign_amounts(
                 up, down = shared_pair["up"], shared_pair["down"]  # type: ignore[index]
             if ev.values and len(ev.values) >= 3 and numeric_list(ev.values):
                 ev = list_evidence(ev)  # the settings listed one by one, not only the ends
-            var = b.add_number(name, lab, ev, cyclic=False)
+            if ev.values and len(ev.values) >= 2 and not numeric_list(ev.values) and not ev.ranges:
+                var = b.add_discrete(name, ev.values, lab, ev)  # "0 … 9, P": the pair walks it
+            else:
+                var = b.add_number(name, lab, ev, cyclic=False)
             b.feature(
                 f"set_{var}",
                 [

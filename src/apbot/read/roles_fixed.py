@@ -213,7 +213,12 @@ def assign_running(
     infos = b.infos
     run_actions: list[str] = []
     starts = [
-        i for i in infos if i.name not in done and "start" in words(i.token) and i.skill == "press"
+        i
+        for i in infos
+        if i.name not in done
+        and "start" in words(i.token)
+        and i.skill == "press"
+        and not set(words(i.token)) & NUMERIC_WORDS  # START TIME: when it starts, a setting
     ]
     if not starts:  # a START/STOP that is only ever held ("press and hold for 2 s to start")
         starts = [

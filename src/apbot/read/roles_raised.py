@@ -35,9 +35,13 @@ _STOP = {
     "until", "per", "step", "steps", "selected", "chosen", "flashing", "displayed", "set",
     "before", "after", "during", "then", "into", "onto", "up", "down", "if", "so", "again",
     "slightly", "gently", "fully", "only", "once", "use", "using", "it", "them", "you", "your",
+    "blinking", "being", "current", "currently", "active", "highlighted", "now",
 }  # fmt: skip
 # nouns that name no quantity by themselves ("the value that is flashing", "the setting")
-_BARE = {"value", "values", "setting", "settings", "number", "figure", "display", "it", "them"}
+_BARE = {
+    "value", "values", "setting", "settings", "number", "figure", "display", "it", "them",
+    "field", "fields", "item", "items", "digit", "digits", "entry",
+}  # fmt: skip
 
 
 def raised_quantity(b: Builder, tokens: list[str]) -> tuple[str, int] | None:

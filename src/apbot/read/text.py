@@ -31,7 +31,7 @@ from apbot.read.text_tables import _row_charts, _space_tables, _strip_markup
 MAX_MANUAL_CHARS = 400_000  # ten times the longest real manual we expect; larger is not a manual
 
 _BULLETS = "•●○◦▪▫■□►▶➤➢✓✔✗✘–—·*-"
-_BULLET_RE = re.compile(rf"^\s*(?:[{re.escape(_BULLETS)}]|\d{{1,2}}[.)])\s+")
+_BULLET_RE = re.compile(rf"^\s*(?:[{re.escape(_BULLETS)}]|\d{{1,2}}[.)]|\(\d{{1,2}}\))\s+")
 _NUMBERED_RE = re.compile(r"^\s*(\d{1,2})[.)]\s+")
 _TABLE_RULE = re.compile(r"^\s*\|?\s*:?-{2,}:?\s*(\|\s*:?-{2,}:?\s*)*\|?\s*$")
 # (not inside a run of numbers: "50, 55, 60 ... 95, 100")
