@@ -14,6 +14,7 @@ from apbot.read.goal_text import (
     CONNECTORS,
     NUMBER_WORDS,
     Text,
+    done_later,
     near_vocab,
     negated_before,
     phrase_here,
@@ -32,6 +33,7 @@ class _Match:
     start: int
     end: int
     score: float
+    near: float = 0.0  # between settings that share the words: the one named nearest wins
 
 
 def value_matches(view: Model, text: Text) -> list[_Match]:
@@ -59,6 +61,8 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
                 continue  # "turn on the air fryer": the appliance, not its AIR FRY programme
             if text.word(end) == "-" and text.word(end + 1) in ("off", "on"):
                 continue  # "auto-off" names a timer, not the AUTO mode
+            if len(stems) == 1 and done_later(text, end):
+                continue  # "auto-close after 2 minutes": a timer's work, not CLOSED now
             own = near_vocab(info, text, i, end, reach=2)
             opening = i == 0 or text.word(i - 1) in (".", ";", "!")
             if weight <= PARTIAL:
@@ -89,9 +93,16 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
                 continue  # "medium-rare", "low-fat": a degree of something else
             if len(stems) == 1 and _compound_tail(text, i):
                 score *= 0.5  # "air-dry", "sterilise-and-dry": the end of another word
-            matches.append(_Match(var, value, i, end, score))
-    matches.sort(key=lambda m: (-m.score, m.start))
+            near = near_vocab(info, text, i, end, reach=6)
+            matches.append(_Match(var, value, i, end, score, near))
+    matches.sort(key=_order)
     return _prefer_specific(_prefer_heads(matches), text, itself)
+
+
+def _order(match: _Match) -> tuple[float, int, float]:
+    """Best first; at one place, the setting whose own words stand nearest ("the water warmth
+    on the low setting" is the WATER level's LOW, not the DRYER's)."""
+    return (-match.score, match.start, -match.near)
 
 
 def _prefer_specific(matches: list[_Match], text: Text, itself: set[str]) -> list[_Match]:
@@ -119,7 +130,7 @@ def _prefer_specific(matches: list[_Match], text: Text, itself: set[str]) -> lis
             other.score = first.score + 0.01
             changed = True
     if changed:
-        matches.sort(key=lambda m: (-m.score, m.start))
+        matches.sort(key=_order)
     return matches
 
 

@@ -348,6 +348,7 @@ def _phrases(
         show = info.var.show if isinstance(info.var.show, dict) else {}
         if len(info.values) > MAX_PHRASE_VALUES:
             continue
+        shared = _shown_label(show)
         for value in info.values:
             text = str(value)
             if text.casefold() in ON_WORDS + OFF_WORDS + ("none", "----", "--"):
@@ -357,6 +358,10 @@ def _phrases(
                 forms.append(show[text])
             for form in forms:
                 words = [w for w in phrase_words(form) if w != "and"]  # read as a connector
+                if form is not text and shared:
+                    words = [w for w in words if w not in shared]  # "WATER ■■■": no HIGH's word
+                    if not any(c.isalpha() for w in words for c in w):
+                        continue  # "SLP 15": its number is read as a quantity, not a name
                 if parse_quantity(form) is not None:
                     continue  # a number or a quantity ("3.0 oz"): read as a quantity
                 if not words:
@@ -386,6 +391,18 @@ def _phrases(
                 if words and not any(w in STOP_WORDS for w in words):
                     phrases.append((step.variable, effect.to, tuple(stem(w) for w in words), 0.95))
     return phrases
+
+
+def _shown_label(show: dict[Any, Any]) -> set[str]:
+    """Words every value's display text shares ("WATER ■□□", "WATER ■■□", "WATER ■■■"): the
+    setting's own label beside its level, which names no one value of it."""
+    texts = [str(t) for t in show.values() if t and "{" not in str(t)]
+    if len(texts) < 2:
+        return set()
+    shared = set(phrase_words(texts[0]))
+    for text in texts[1:]:
+        shared &= set(phrase_words(text))
+    return shared
 
 
 _VIEWS: dict[tuple[int, int], tuple[ApplianceModel, str, Model]] = {}
