@@ -20,6 +20,7 @@ from apbot.model.schema import (
     Step,
     TimeVariable,
 )
+from apbot.read.goal_aliases import bracket_aliases
 from apbot.read.goal_legends import add_setting_words
 from apbot.read.goal_manual import coded_names, legend_words, title_nouns
 from apbot.read.goal_roles import (
@@ -248,6 +249,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         names = [w for w in phrase_words(label) if w != "and"]
         if names and not all(w in STOP_WORDS for w in names):
             phrases.append((coded, value, tuple(stem(w) for w in names), 0.95))
+    phrases += [(n, v, stems, 0.9) for n, v, stems in bracket_aliases(_forms(infos), manual)]
     tops = {
         name: code
         for name, info in infos.items()
@@ -255,6 +257,22 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         and (code := code_past_top(manual, list(info.values))) is not None
     }
     return Model(model, infos, phrases, start_values, frozenset(appliance), named, tops)
+
+
+def _forms(infos: dict[str, VarInfo]) -> dict[str, dict[Any, list[str]]]:
+    """setting -> value -> how it is written (its name, its display text), for the manual's
+    bracketed names of it."""
+    out: dict[str, dict[Any, list[str]]] = {}
+    for name, info in infos.items():
+        if info.role != "setting" or not isinstance(info.var, DiscreteVariable):
+            continue
+        show = info.var.show if isinstance(info.var.show, dict) else {}
+        out[name] = {
+            value: [str(value)] + ([str(show[str(value)])] if show.get(str(value)) else [])
+            for value in info.values
+            if str(value).casefold() not in ON_WORDS + OFF_WORDS
+        }
+    return out
 
 
 def _whole_day(info: VarInfo) -> bool:
