@@ -1,6 +1,6 @@
-"""Words a panel shows beside every level of a setting, settings that share a value word, a
-state a timer brings about later, and a switch's word that qualifies a timing word. The model
-and every sentence are written for these tests (a greenhouse vent controller no suite has)."""
+"""Words a panel shows beside every level of a setting, and settings that share a value word.
+The model and every sentence are written for these tests (a greenhouse vent controller no suite
+has)."""
 
 from __future__ import annotations
 
@@ -89,36 +89,3 @@ def test_a_word_shown_beside_every_level_names_no_one_level(
 ) -> None:
     """ "HEAT ■■■" names the HEAT setting, not its HIGH: the level is the word said with it."""
     assert parse_instruction(greenhouse, text) == goal
-
-
-@pytest.mark.parametrize(
-    "text",
-    [
-        "Auto-close after ten minutes",
-        "Make it close by itself after 10 minutes",
-        "Have the vent close itself after ten minutes",
-    ],
-)
-def test_a_state_a_timer_brings_about_later_is_not_set_now(
-    greenhouse: ApplianceModel, text: str
-) -> None:
-    assert parse_instruction(greenhouse, text) == {"auto_close": "10 min"}
-
-
-def test_a_state_said_now_beside_a_timer_is_still_set(greenhouse: ApplianceModel) -> None:
-    goal = parse_instruction(greenhouse, "Open the vent, and auto-close after 20 minutes")
-    assert goal == {"vent": "open", "auto_close": "20 min"}
-
-
-@pytest.mark.parametrize(
-    "text", ["Set the lamp timer to 3 minutes", "Lamp delay 3 min", "the shortest lamp time"]
-)
-def test_a_switch_word_before_a_timing_word_names_the_timed_setting(
-    greenhouse: ApplianceModel, text: str
-) -> None:
-    assert "lamp" not in parse_instruction(greenhouse, text)
-
-
-def test_the_switch_said_alone_is_still_turned_on(greenhouse: ApplianceModel) -> None:
-    goal = parse_instruction(greenhouse, "Lamp on, with the lamp timer at 5 minutes")
-    assert goal == {"lamp": "on", "lamp_time": "5 min"}

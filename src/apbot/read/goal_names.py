@@ -14,7 +14,6 @@ from apbot.read.goal_text import (
     CONNECTORS,
     NUMBER_WORDS,
     Text,
-    done_later,
     near_vocab,
     negated_before,
     phrase_here,
@@ -61,8 +60,6 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
                 continue  # "turn on the air fryer": the appliance, not its AIR FRY programme
             if text.word(end) == "-" and text.word(end + 1) in ("off", "on"):
                 continue  # "auto-off" names a timer, not the AUTO mode
-            if len(stems) == 1 and done_later(text, end):
-                continue  # "auto-close after 2 minutes": a timer's work, not CLOSED now
             own = near_vocab(info, text, i, end, reach=2)
             opening = i == 0 or text.word(i - 1) in (".", ";", "!")
             if weight <= PARTIAL:

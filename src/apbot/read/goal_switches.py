@@ -68,8 +68,6 @@ def switches(
                 continue  # "eco" names the ECO switch, not HOLIDAY that wears ECO's label
             if _part_after(text, k, info.vocab):
                 continue  # "clean the ventilation slots": a part of the body, not the switch
-            if _timed_by(view, goal, info, text, k):
-                continue  # "the light timer to 3 minutes": LIGHT TIME's words, not the LIGHT
             if shadowed and (text.stems[k] in own or key in own_concepts(info)):
                 continue
             locks = key == concept("lock") or concept("lock") in own_concepts(info)
@@ -135,22 +133,6 @@ def _part_after(text: Text, k: int, vocab: dict[str, float]) -> bool:
     while j < len(text.tokens) and vocab.get(text.concepts[j], 0.0) > 0:
         j += 1
     return j < len(text.tokens) and text.word(j) in _PARTS
-
-
-_TIMING_NOUNS = frozenset(
-    stem(w) for w in ("time", "timer", "timeout", "delay", "duration", "period", "runtime")
-)
-
-
-def _timed_by(view: Model, goal: Goal, info: VarInfo, text: Text, k: int) -> bool:
-    """The switch's word qualifies a word of timing ("light timer", "light delay") and a goal
-    setting has the switch's word in its own name (LIGHT TIME): the words name that setting."""
-    if k + 1 >= len(text.tokens) or text.stems[k + 1] not in _TIMING_NOUNS:
-        return False
-    return any(
-        other is not info and name in goal and text.stems[k] in own_stems(other)
-        for name, other in view.infos.items()
-    )
 
 
 _MODE_NOUNS = frozenset(stem(w) for w in ("mode", "setting", "programme", "function"))

@@ -77,32 +77,6 @@ def turned_off_after(text: Text, end: int) -> bool:
     return text.word(k) in ("off", "disabled")
 
 
-_LATER_STOPS = CLAUSE_ENDS | {",", "and", "then", "but", "with", "at", "to", "for", "on", "in", ""}
-
-
-def done_later(text: Text, end: int, reach: int = 6) -> bool:
-    """The state named before ``end`` is what the appliance will do by itself later, a timer's
-    work: "close the door by itself after five minutes", "auto-close after 2 minutes", "make it
-    close itself after one minute" — "itself" or "after" and an amount of time in its phrase
-    ("cold mode with auto-off after 2 h" is the COLD mode now)."""
-    for k in range(end, min(end + reach, len(text.tokens))):
-        word = text.word(k)
-        if word in _LATER_STOPS:
-            return False
-        if word in ("itself", "automatically"):
-            return True
-        after = text.word(k + 1)
-        if after in ("a", "an", "one"):
-            after = text.word(k + 2)
-        amount = after[:1].isdigit() or after in NUMBER_WORDS or after in _TIME_UNITS
-        if word == "after" and amount:
-            return True
-    return False
-
-
-_TIME_UNITS = frozenset({"half", "quarter", "minute", "hour", "second", "day", "few"})
-
-
 _HYPHENED = re.compile(
     r"\b(a|an|one|two|three|four|five|six|seven|eight|nine|ten|eleven|twelve)-and-(a|an)-"
     r"(half|quarter)(?:-(hours?|minutes?))?\b",
