@@ -35,6 +35,7 @@ GRIND SETTINGS
              (pastry)
   MED        wholemeal bread                  3 min
   COARSE     porridge, groats                 2 min
+  MED (portion)
   FLK (muesli, oat)    rolled grain (spelt) for breakfast
 Press GRIND to go from FINE (default) to FLK (or back to FINE); COARSE (coolest) grinds slowly.
 The fine setting (sifted) suits sponge cakes.
@@ -57,8 +58,8 @@ def test_a_bracketed_everyday_name_names_the_value(
 
 
 def test_only_plain_names_in_brackets_count(mill: ApplianceModel) -> None:
-    """No remark ("or back"), no default, no superlative, no prose word ("fine setting"), no
-    bracket inside a description ("rolled grain (spelt)")."""
+    """No remark ("or back"), no default, no superlative, no count noun ("portion"), no prose
+    word ("fine setting"), no bracket inside a description ("rolled grain (spelt)")."""
     shown = {"fine": "FINE", "medium": "MED", "coarse": "COARSE", "flakes": "FLK"}
     forms = {"grind": {value: [value, text] for value, text in shown.items()}}
     names = {stems for _n, _v, stems in bracket_aliases(forms, MANUAL)}

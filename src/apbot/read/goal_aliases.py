@@ -2,7 +2,8 @@
 salted)", "CO (continuous)". Manuals put a programme's everyday name in brackets right after
 its panel name (written as the panel writes it), or alone on the line below its row; a user
 says the everyday name ("winter mode", "plain popcorn"), so the goal parser names the value by
-it too. A superlative ("SYNTH (coolest)") says where it sits on a scale, not what it is.
+it too. A superlative ("SYNTH (coolest)") says where it sits on a scale, and a count noun
+("PIZZA (slice)") how it is counted, not what it is.
 
 >>> manual = "  NORMAL   12 V\\n  COLD     below 5 °C\\n  (winter)\\nthe NORMAL (everyday) mode"
 >>> sorted(bracket_aliases({"mode": {"normal": ["normal"], "cold": ["cold", "12V COLD"]}}, manual))
@@ -16,6 +17,7 @@ from typing import Any
 
 from apbot.read.goal_values import kind_noun
 from apbot.read.goal_vocab import STOP_WORDS, concept, stem
+from apbot.read.numbers import COUNT_NOUNS
 
 _BRACKET = re.compile(r"\(([^()]{3,40})\)")
 _SPLIT = re.compile(r",|/|;|\bor\b")
@@ -101,6 +103,8 @@ def _names(inside: str) -> list[list[str]]:
         words = [w for w in words if not kind_noun(concept(w))] or words
         if len(words) != 1 or words[0] in STOP_WORDS or words[0].endswith("est"):
             continue  # one plain word: "(winter mode)", not "(right stop)" nor "(coolest)"
+        if words[0] in COUNT_NOUNS:
+            continue  # "PIZZA (slice)": how it is counted, not a name ("apple slices")
         out.append(words)
     return out
 
