@@ -32,6 +32,7 @@ class _Match:
     start: int
     end: int
     score: float
+    near: float = 0.0  # between settings that share the words: the one named nearest wins
 
 
 def value_matches(view: Model, text: Text) -> list[_Match]:
@@ -89,9 +90,16 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
                 continue  # "medium-rare", "low-fat": a degree of something else
             if len(stems) == 1 and _compound_tail(text, i):
                 score *= 0.5  # "air-dry", "sterilise-and-dry": the end of another word
-            matches.append(_Match(var, value, i, end, score))
-    matches.sort(key=lambda m: (-m.score, m.start))
+            near = near_vocab(info, text, i, end, reach=6)
+            matches.append(_Match(var, value, i, end, score, near))
+    matches.sort(key=_order)
     return _prefer_specific(_prefer_heads(matches), text, itself)
+
+
+def _order(match: _Match) -> tuple[float, int, float]:
+    """Best first; at one place, the setting whose own words stand nearest ("the water warmth
+    on the low setting" is the WATER level's LOW, not the DRYER's)."""
+    return (-match.score, match.start, -match.near)
 
 
 def _prefer_specific(matches: list[_Match], text: Text, itself: set[str]) -> list[_Match]:
@@ -119,7 +127,7 @@ def _prefer_specific(matches: list[_Match], text: Text, itself: set[str]) -> lis
             other.score = first.score + 0.01
             changed = True
     if changed:
-        matches.sort(key=lambda m: (-m.score, m.start))
+        matches.sort(key=_order)
     return matches
 
 

@@ -20,6 +20,7 @@ from apbot.model.schema import (
     Step,
     TimeVariable,
 )
+from apbot.read.goal_aliases import bracket_aliases
 from apbot.read.goal_legends import add_setting_words
 from apbot.read.goal_manual import coded_names, legend_words, title_nouns
 from apbot.read.goal_roles import (
@@ -248,6 +249,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         names = [w for w in phrase_words(label) if w != "and"]
         if names and not all(w in STOP_WORDS for w in names):
             phrases.append((coded, value, tuple(stem(w) for w in names), 0.95))
+    phrases += [(n, v, stems, 0.9) for n, v, stems in bracket_aliases(_forms(infos), manual)]
     tops = {
         name: code
         for name, info in infos.items()
@@ -255,6 +257,22 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         and (code := code_past_top(manual, list(info.values))) is not None
     }
     return Model(model, infos, phrases, start_values, frozenset(appliance), named, tops)
+
+
+def _forms(infos: dict[str, VarInfo]) -> dict[str, dict[Any, list[str]]]:
+    """setting -> value -> how it is written (its name, its display text), for the manual's
+    bracketed names of it."""
+    out: dict[str, dict[Any, list[str]]] = {}
+    for name, info in infos.items():
+        if info.role != "setting" or not isinstance(info.var, DiscreteVariable):
+            continue
+        show = info.var.show if isinstance(info.var.show, dict) else {}
+        out[name] = {
+            value: [str(value)] + ([str(show[str(value)])] if show.get(str(value)) else [])
+            for value in info.values
+            if str(value).casefold() not in ON_WORDS + OFF_WORDS
+        }
+    return out
 
 
 def _whole_day(info: VarInfo) -> bool:
@@ -348,6 +366,7 @@ def _phrases(
         show = info.var.show if isinstance(info.var.show, dict) else {}
         if len(info.values) > MAX_PHRASE_VALUES:
             continue
+        shared = _shown_label(show)
         for value in info.values:
             text = str(value)
             if text.casefold() in ON_WORDS + OFF_WORDS + ("none", "----", "--"):
@@ -357,6 +376,10 @@ def _phrases(
                 forms.append(show[text])
             for form in forms:
                 words = [w for w in phrase_words(form) if w != "and"]  # read as a connector
+                if form is not text and shared:
+                    words = [w for w in words if w not in shared]  # "WATER ■■■": no HIGH's word
+                    if not any(c.isalpha() for w in words for c in w):
+                        continue  # "SLP 15": its number is read as a quantity, not a name
                 if parse_quantity(form) is not None:
                     continue  # a number or a quantity ("3.0 oz"): read as a quantity
                 if not words:
@@ -386,6 +409,18 @@ def _phrases(
                 if words and not any(w in STOP_WORDS for w in words):
                     phrases.append((step.variable, effect.to, tuple(stem(w) for w in words), 0.95))
     return phrases
+
+
+def _shown_label(show: dict[Any, Any]) -> set[str]:
+    """Words every value's display text shares ("WATER ■□□", "WATER ■■□", "WATER ■■■"): the
+    setting's own label beside its level, which names no one value of it."""
+    texts = [str(t) for t in show.values() if t and "{" not in str(t)]
+    if len(texts) < 2:
+        return set()
+    shared = set(phrase_words(texts[0]))
+    for text in texts[1:]:
+        shared &= set(phrase_words(text))
+    return shared
 
 
 _VIEWS: dict[tuple[int, int], tuple[ApplianceModel, str, Model]] = {}
