@@ -174,6 +174,8 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
     lines = text.split("\n")
     contents = contents_lines(lines)  # a table of contents: titles, not text about the keys
     text = "\n".join("" if i in contents else line for i, line in enumerate(lines))
+    # a line a dot leader joins ("RUN ........ heating and feeding"): a term and its meaning
+    leadered = {k + 1 for k, line in enumerate(text.split("\n")) if _LEADER_RE.search(line)}
     text = _LEADER_RE.sub("    ", text)  # "Timer ........ 0:00 - 99:59": a gap between columns
     original = text.split("\n")
     raw_lines, line_numbers = tables_apart(*_reading_order(original))
@@ -309,6 +311,10 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
             continue
         if re.match(r"\s{3,}\S", line) and len(re.findall(r"\S\s+·\s+\S", line)) >= 2:
             flush()  # an indented row of marks ("   OFF · 1 · 2 · CONT") drawn in a figure
+            units.append(Unit(number, stripped, heading=heading))
+            continue
+        if number in leadered:  # a legend's row of its own, never run on into the next
+            flush()
             units.append(Unit(number, stripped, heading=heading))
             continue
         if para and (_TERM_RE.match(line) or _FIELD_RE.match(line)):
