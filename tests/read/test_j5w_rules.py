@@ -127,3 +127,26 @@ def test_a_display_word_with_dashes_for_its_blank_value_shows_the_setting_off() 
     var = model.variables[steps[0].variable]
     assert var.show == {"on": "", "off": "AUTO OFF --"}
     assert var.initial == "on"
+
+
+# a recipe names the settings in passing, beside the key: no list of the key's values
+PROOFER = """LEVAIN P-2 dough proofer
+
+   ⏻        switch on / off
+   MODE     proof / slow rise
+   MIST     Humidity (water tray) on / off.
+
+Humidity
+   Touch MIST to switch the humidity on or off.
+
+RECIPES
+   Farmhouse loaf
+     1. First rise: PROOF, 30 °C / 86 °F, MIST on, about 1:00.
+"""
+PROOFER_ACTIONS = ["press_power", "press_mode", "press_mist"]
+
+
+def test_a_recipe_naming_settings_in_passing_gives_no_key_a_list() -> None:
+    model = read_manual(PROOFER, PROOFER_ACTIONS).model
+    (steps,) = [s for s in model.features.values() if s[0].actions == ["press_mist"]]
+    assert model.variables[steps[0].variable].values == ["off", "on"]
