@@ -67,10 +67,12 @@ def apply_resets(b: Builder) -> None:
     )
     if at is None:
         return
-    kept = {  # "your taste choice stays the same when you change the mode"
+    kept = {  # "your taste choice stays the same when you change the mode"; the sentence
+        # right after the reset ("… return to their standard values. The dial position and the
+        # auto switch-off setting are kept.")
         n
-        for u in units
-        if STAY_RE.search(u.text) and RESET_NOUN_RE.search(u.text)
+        for k, u in enumerate(units)
+        if STAY_RE.search(u.text) and (RESET_NOUN_RE.search(u.text) or at < k <= at + 2)
         for n in b.variables
         if set(words(n.replace("_", " "))) & set(words(u.text))
     }

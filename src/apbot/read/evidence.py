@@ -65,6 +65,7 @@ from apbot.read.text_sections import other_model, surroundings
 from apbot.read.value_lists import named_list
 from apbot.read.values import (
     EACH_PRESS_RE,
+    NUM,
     ON_OFF_RE,
     Range,
     find_bounds,
@@ -160,7 +161,13 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
                 len(find_stepped_pieces(told)) >= 2  # its steps, item by item, pressing
                 and self._only_pair_named(i, tokens)  # the pair, not another key's setting
             )
-            if i in elsewhere and i not in mentions and not unit.cells and not pieced:
+            if (
+                i in elsewhere
+                and i not in mentions
+                and not unit.cells
+                and not pieced
+                and not _named_range(text, own_words)
+            ):
                 continue  # a sentence about another key says nothing about this one
             if i not in mentions and other_model(units, i):
                 continue  # "Model XY-300 only: …": another model's keys and their values
@@ -378,6 +385,15 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
             about_it = [i for i in self.context(tokens) if i not in elsewhere or i in mentions]
             wrap_ends(ev, units, about_it)
         return ev
+
+
+def _named_range(text: str, own_words: set[str]) -> bool:
+    """The setting's own noun right before a range ("HOT has the speeds 1 to 5" near COLD):
+    the range is this setting's, whatever key the sentence also names."""
+    if not own_words:
+        return False
+    nouns = "|".join(map(re.escape, sorted(own_words)))
+    return bool(re.search(rf"\b(?:{nouns})s?\s+{NUM}\s*(?:to|–|-)\s*{NUM}\b", text, re.I))
 
 
 def _lead_index(cells: tuple[str, ...]) -> int:

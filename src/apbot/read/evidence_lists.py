@@ -229,7 +229,12 @@ class ListReader(TableReader):
                 break
         if run:
             out.append((run, 2.2 if mention else 1.2))
-        if text.rstrip().endswith(":") and i + 1 < len(units) and _lone_line(units, i + 1):
+        if (
+            text.rstrip().endswith(":")
+            and i + 1 < len(units)
+            and _lone_line(units, i + 1)
+            and (mention or not self._about_another(text, tokens))
+        ):
             after = wrapped_list(self.manual, i + 1)  # "Printed round the knob:", the marks
             # a long line is a list only when it is all short names ("OFF · Cottons · Eco …")
             if after and (len(units[i + 1].text) <= 120 or _all_names(after, units[i + 1].text)):
@@ -280,6 +285,16 @@ class ListReader(TableReader):
                 related = mention or text != unit.heading or self._header_names(i, tokens)
                 out.append((column, 2.5 if related else 1.2))
         return out
+
+    def _about_another(self, text: str, tokens: list[str]) -> bool:
+        """A sentence led by another key's noun ("Pouch sizes the laminator accepts:" near
+        COLD): the list it introduces is about that, not this key's values."""
+        lead = words(text)[:1]
+        own = {w for t in tokens for w in words(t.replace("_", " "))}
+        theirs = {
+            w for t in self.labels if t not in tokens for w in words(t.replace("_", " "))
+        } - own
+        return bool(lead) and lead[0] in theirs
 
     def _counted_chart(self, i: int) -> list[str]:
         """Under the key's own heading ("AUTO COOK CHART"), a sentence or two on, a table whose
@@ -390,13 +405,15 @@ class ListReader(TableReader):
             return
         for i in self.context(tokens):
             m = re.search(
-                r"\b(?:starts?|default|factory|initially|normally)\b(.*)",
+                r"\b(?:(?-i:(?!STARTS?\b))starts?|default|factory|initially|normally|delivered)\b"
+                r"(.*)",  # (the word, not the key: "▶ START")
                 self.manual.units[i].text,
                 re.I,
             )
-            if m:
+            if m:  # ("… starts in HOT. c) Press ⏻ again to switch off.": its own sentence)
+                said = re.split(r"[.;!?]\s", m.group(1))[0]
                 for v in ev.values:
-                    if re.search(rf"\b{re.escape(v)}\b", m.group(1), re.I):
+                    if re.search(rf"\b{re.escape(v)}\b", said, re.I):
                         ev.initial, ev.initial_at = v, i
                         return
 

@@ -24,8 +24,8 @@ class TableReader:
 
     def _own_column(self, i: int, tokens: list[str]) -> int:
         """Which column of the table after unit ``i`` is the key's: one headed by the key's
-        printed name when the header is a row of key names ("| TEMP. | SPIN | SOIL |"), else
-        the first."""
+        printed name when the header is a row of key names ("| TEMP. | SPIN | SOIL |") or
+        another key's column leads it, else the first."""
         units = self.manual.units
         k = i + 1
         if k >= len(units) or not units[k].cells or units[k].header:
@@ -37,7 +37,12 @@ class TableReader:
             for index, cell in enumerate(header):
                 if cell in own:
                     return index
-        return 0
+        # "| Pouch | Document | Mode | Speed |" under "POUCH AND SPEED GUIDE": a table led by
+        # another key's column (POUCH +/−), SPEED's column is the one its name heads
+        named = [index for index, cell in enumerate(header) if cell in own]
+        theirs = {w for t in self.labels if t not in tokens for w in words(t.replace("_", " "))}
+        led = bool(set(words(header[0])) & (theirs - set(words(" ".join(own)))))
+        return named[0] if named and led else 0
 
     def _header_names(self, i: int, tokens: list[str]) -> bool:
         """Whether the header of the table after unit ``i`` names the key's word."""

@@ -61,16 +61,27 @@ def caps_phrases(manual: Manual) -> tuple[dict[str, int], dict[str, str]]:
     slashed key name (START of START/PAUSE) the whole name."""
     found: dict[str, int] = {}
     whole: dict[str, str] = {}
+    seen: dict[str, int] = {}  # how often each phrase is printed
     for unit in manual.units:
         for match in _CAPS.finditer(unit.text):
             phrase = match.group(1).strip(" ./-'")
             if len(phrase) >= 2 and any(c.isalpha() for c in phrase):
                 found.setdefault(phrase, unit.line)
+                seen[phrase] = seen.get(phrase, 0) + 1
                 for part in re.split(r"\s*/\s*", phrase):  # START/PAUSE also names START
                     if len(part) >= 2 and part != phrase:
                         found.setdefault(part, unit.line)
                         if re.search(r"\S/\S", phrase) and len(phrase) <= 24:
                             whole.setdefault(part, phrase)
+    # "Speed levels HOT/COLD" once in a data table, COLD alone all through the text: the
+    # slashed phrase names two values, not the key
+    text = "\n".join(u.text for u in manual.units)
+    whole = {
+        p: w
+        for p, w in whole.items()
+        if seen.get(p, 0) < 2
+        or len(re.findall(r"\s*/\s*".join(map(re.escape, w.split("/"))), text)) > 1
+    }
     return found, whole
 
 
@@ -129,6 +140,25 @@ def _named_by_noun(manual: Manual, noun: str) -> tuple[str, int] | None:
     return None
 
 
+# the signs printed after a setting's name on a key of a stepping pair ("TEMP +", "POUCH −")
+_SIGNS: dict[str, str] = {
+    "up": "+▲", "plus": "+", "more": "+", "down": "−–-▼", "minus": "−–-", "less": "−–-"
+}  # fmt: skip
+
+
+def _signed_name(manual: Manual, token_words: list[str]) -> tuple[str, int] | None:
+    """The key printed as a setting's name and a sign ("POUCH +", "POUCH −") for a token
+    naming the setting and a direction (``pouch_up``): that printing, where first seen."""
+    name = r"\s+".join(re.escape(w.upper()) for w in token_words[:-1])
+    signs = re.escape(_SIGNS[token_words[-1]])
+    pattern = re.compile(rf"(?<![A-Za-z0-9]){name}\s?([{signs}])(?![\w+−–-])")
+    for unit in manual.units:
+        m = pattern.search(unit.text)
+        if m:
+            return m.group(0), unit.line
+    return None
+
+
 def find_labels(manual: Manual, tokens: list[str]) -> dict[str, Label]:
     """The label and mentions of each control token."""
     phrases, whole = caps_phrases(manual)
@@ -144,6 +174,10 @@ def find_labels(manual: Manual, tokens: list[str]) -> dict[str, Label]:
             named = _named_by_noun(manual, tw[-1])  # "the HUMIDISTAT knob" for ``knob``
             if named is not None:
                 best, best_score, line = named[0], 0.6, named[1]
+        if best_score < 0.6 and len(tw) >= 2 and tw[-1] in _SIGNS:
+            signed = _signed_name(manual, tw)  # "POUCH +" for ``pouch_up``
+            if signed is not None:
+                best, best_score, line = signed[0], 0.6, signed[1]
         if best_score < 0.6 and len(tw) == 1 and len(tw[0]) == 1 and tw[0].isalpha():
             letter = _letter_key(manual, tw[0].upper())  # a key printed as one letter ("M")
             if letter is not None:

@@ -21,7 +21,11 @@ from apbot.read.build import Builder
 from apbot.read.shapes import ASIDE_HEADING
 
 # a legend line: a display word in capitals, two spaces or more, what it means
-_LEGEND = re.compile(r"^\s*(?:[-•▪*]\s*)?([A-Z][A-Z0-9+]+(?: [A-Z0-9+]+)?)\s{2,}(\S.*)$")
+# (a word with dashes for its blank value, "AUTO OFF --  the auto switch-off is disabled", is
+# that word while off)
+_LEGEND = re.compile(
+    r"^\s*(?:[-•▪*]\s*)?([A-Z][A-Z0-9+]+(?: [A-Z0-9+]+)?(?: -{1,3}(?=\s))?)\s{2,}(\S.*)$"
+)
 _SHORT = 8  # words: a legend's meaning, not a paragraph that happens to say "off"
 _SUBJECT = 3  # words naming what is off ("the door alarm", "end signal")
 _OFF = re.compile(

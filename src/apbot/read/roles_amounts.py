@@ -284,6 +284,8 @@ def assign_amounts(
             continue
         toks = [token_of(b, n) for n in pair["up"] + pair["down"]]
         ev = b.evidence(toks + ([base] if base in b.labels else []))
+        if ev.values and len(ev.values) >= 3 and numeric_list(ev.values):
+            ev = list_evidence(ev)  # "75 ◄► 80 ◄► 100 … 250 mic": the settings one by one
         var = b.add_number(base, base.upper(), ev, cyclic=False)
         eff = {**{a: "next" for a in pair["up"]}, **{a: "prev" for a in pair["down"]}}
         b.feature(

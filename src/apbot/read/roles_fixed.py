@@ -234,6 +234,7 @@ def assign_running(
         and i.digit is None
         and (set(words(i.token)) & STOP_WORDS)
         and not set(words(i.token)) & NUMERIC_WORDS  # END TIME, CLEAR TIMER: a setting
+        and "auto" not in words(i.token)  # AUTO OFF: when it switches itself off, a setting
         and i.skill in ("press", "hold")
     ]
     if not starts and not stops:  # "SELECT dial … Press and hold 2 seconds: start or stop"

@@ -170,7 +170,7 @@ RUN_RE = re.compile(r"\d+(?:[.,]\d+)?(?:\s*[·•]\s*(?:\|\s*)?\d+(?:[.,]\d+)?){
 ASIDE_HEADING = re.compile(
     r"\b(?:safety|safeguards?|warnings?|cautions?|precautions?|trouble-?\s?shooting|faults?"
     r"|fault finding|problems?|error codes?|cleaning|maintenance|warranty|guarantee"
-    r"|disposal|customer)\b"
+    r"|disposal|customer|examples|recipes)\b"  # (worked key sequences: values in passing)
     # "care" only as the section's own word ("Care", "Care and cleaning", "Cleaning and care"),
     # never inside a programme's name ("Easy Care", "Baby care")
     r"|^[\W\d.]*care\b(?!\s+(?:programs?|programmes?|cycles?|modes?|settings?)\b)"

@@ -174,6 +174,13 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
     lines = text.split("\n")
     contents = contents_lines(lines)  # a table of contents: titles, not text about the keys
     text = "\n".join("" if i in contents else line for i, line in enumerate(lines))
+    # a line a dot leader joins to its word in capitals ("RUN ........ heating and feeding"): a
+    # display word or key and its meaning (not an amount's row, "0:00 to 0:30 …. 1 minute")
+    leadered = {
+        k + 1
+        for k, line in enumerate(text.split("\n"))
+        if _LEADER_RE.search(line) and re.match(r"\s*[A-Z][A-Z]+\b", line)
+    }
     text = _LEADER_RE.sub("    ", text)  # "Timer ........ 0:00 - 99:59": a gap between columns
     original = text.split("\n")
     raw_lines, line_numbers = tables_apart(*_reading_order(original))
@@ -310,6 +317,10 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
         if re.match(r"\s{3,}\S", line) and len(re.findall(r"\S\s+·\s+\S", line)) >= 2:
             flush()  # an indented row of marks ("   OFF · 1 · 2 · CONT") drawn in a figure
             units.append(Unit(number, stripped, heading=heading))
+            continue
+        if para and number in leadered:  # a legend's row starts afresh (its wrapped lines
+            flush()  # go on with it), never running on from the row above
+            para.append((number, stripped))
             continue
         if para and (_TERM_RE.match(line) or _FIELD_RE.match(line)):
             flush()  # "WARM      holds cooked food hot": a term and its definition, a new item

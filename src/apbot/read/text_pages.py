@@ -190,7 +190,9 @@ def _plain_heading(line: str) -> bool:
         return False
     if len(re.findall(r"[A-Za-z]", rest)) < 3 or len(rest.split()) > 8:
         return False
-    if _CAPS_HEADING.fullmatch(rest) and len(rest.split()) <= 7:
+    # "EXAMPLES (after switching on)": a title in capitals and a short remark in brackets
+    title = re.sub(r"\s+\([a-z][^()]{0,30}\)$", "", rest)
+    if _CAPS_HEADING.fullmatch(title) and len(title.split()) <= 7 and len(title) >= 3:
         return True
     sub_level = bool(number and re.match(r"\d{1,2}\.\d", stripped))
     short = len(rest.split()) <= 6  # a title, not a sentence run on after it

@@ -12,9 +12,11 @@ import re
 
 from apbot.read.values import NUM, UNIT
 
-_ARROW = re.compile(r"\s*(?:→|->|⇒|>|»|⟶)\s*")
-# "Touch: DRY <-> MOIST": a key that flips between two values, both ways
-_BOTH_WAYS = re.compile(r"\s*(?:<->|<=>|↔|⇄|⇔)\s*")
+# "──►" is drawn "--►" once box characters are cleaned: a shaft of dashes and a head
+_ARROW = re.compile(r"\s*(?:→|->|⇒|>|»|⟶|[-─—]*►)\s*")
+# "Touch: DRY <-> MOIST", "75 ◄► 80 ◄► 100": a key that flips between two values, or a pair
+# stepping one list both ways
+_BOTH_WAYS = re.compile(r"\s*(?:<->|<=>|↔|⇄|⇔|◄[-─—]*►|◀[-─—]*▶)\s*")
 _CUE = re.compile(  # a lookahead, so that every cue in a sentence is tried
     r"(?=(?:\bbetween|\bamong|\bchoose(?: from)?|\bselect(?:s| from)?|\bcycles?(?: through)?|"
     r"\boptions?(?: are)?|\bsettings?(?: are)?|\blevels?(?: are)?|\bmodes?(?: are)?|\border|"
@@ -25,13 +27,21 @@ _STOP_WORDS = {"the", "a", "an", "your", "this", "that", "it", "you", "to", "is"
 
 
 def _clean_item(item: str) -> str:
+    gloss = re.fullmatch(r"\s*[-–—]+\s*\(\s*([A-Za-z]+)\s*\)\s*", item)
+    if gloss:  # "-- (off)": a dashed screen glossed by its word, the value is the word
+        return gloss.group(1)
     item = re.sub(r"\(.*?\)", "", item)
     item = re.sub(r"^(?:back to|then|and|or|finally)\s+", "", item.strip(), flags=re.I)
     return item.strip(" .;:!?\"'“”‘’*_")
 
 
+_PER_NAME = re.compile(r"[A-Za-z]\s*:\s*\d")  # "(HOT: 3, COLD: 2)": a value per name, no list
+
+
 def _value_like(item: str, caps_context: bool) -> bool:
     if not item or len(item) > 24 or re.search(r"[()\[\]{}]", item):
+        return False
+    if _PER_NAME.search(item):
         return False
     ws = item.split()
     if len(ws) > 3 or ws[0].lower() in _STOP_WORDS:
@@ -108,6 +118,43 @@ def _filled_codes(parts: list[str]) -> list[str]:
     return out
 
 
+_AMOUNT = re.compile(rf"({NUM})\s*({UNIT})?", re.IGNORECASE)
+
+
+def _filled_amounts(parts: list[str]) -> list[str]:
+    """An ellipsis after an amount in an arrow run ("2 h → 3 h → 4 h … → 12 h", "1 → 2 → … →
+    9"): the amounts it skips, on the step of the two before it."""
+    out: list[str] = []
+    for i, part in enumerate(parts):
+        base = re.sub(r"\s*(?:…|\.\.\.)$", "", part)
+        if base == part and part not in ("…", "..."):
+            out.append(part)
+            continue
+        if base and base not in ("…", "..."):
+            out.append(base)
+        ends = [_AMOUNT.fullmatch(p) for p in (*out[-2:], *parts[i + 1 : i + 2])]
+        if len(out) < 2 or i + 1 >= len(parts) or not all(ends):
+            continue
+        a, b, c = (float(m.group(1).replace(",", ".")) for m in ends if m)
+        unit = next((m.group(2) for m in ends if m and m.group(2)), None)
+        step = b - a
+        if step > 0 and c > b and (c - b) / step <= 40 and abs((c - b) / step % 1) < 1e-6:
+            k = 1
+            while b + k * step < c - 1e-6:
+                v = f"{b + k * step:g}"
+                out.append(f"{v} {unit}" if unit else v)
+                k += 1
+    return out
+
+
+def _unit_tail(items: list[str]) -> list[str]:
+    """Numbers in a row with a unit of their own after the last ("75 ◄► 80 ◄► … 250 mic"): the
+    unit, short and in lower case, is the row's whatever it is; judge the numbers alone."""
+    tail = re.fullmatch(rf"({NUM})\s+[a-zµ]{{1,4}}", items[-1]) if items else None
+    bare = all(re.fullmatch(NUM, i) for i in items[:-1])
+    return [*items[:-1], tail.group(1)] if tail and bare and len(items) >= 3 else items
+
+
 def _range_table_header(items: list[str]) -> bool:
     """ "Timer settings: Range Step 0.5 – 4 h …": the head of a table of ranges and their
     steps, not a list of named values."""
@@ -180,7 +227,7 @@ def find_list(text: str) -> tuple[list[str], str] | None:
             parts[-1],
         )[0]  # "… → P1. The display …", "FIRM → SOFT … (not every …)": nor at a sentence's end
         parts[-1] = _clean_item(last)
-        parts = _filled_codes(parts)
+        parts = _filled_amounts(_filled_codes(parts))
     amount = re.search(rf"(?<![\w.])({NUM}\s*{UNIT})\s*$", parts[0], re.I)
     if len(parts) >= 3 or both or (len(parts) == 2 and all(_value_like(p, True) for p in parts)):
         head = parts[0].split(":")[-1].split()  # "in this order: AUTO → ...", "Clockwise: Cotton"
@@ -210,7 +257,7 @@ def find_list(text: str) -> tuple[list[str], str] | None:
         if items and items[0] in items[1:]:
             items = items[: items.index(items[0], 1)]  # "OFF → 2H → 4H → OFF": the cycle, once
         items = _nothing_as_zero(items)
-        if all(_value_like(p, False) for p in items) and len(items) >= 2:
+        if all(_value_like(p, False) for p in _unit_tail(items)) and len(items) >= 2:
             return _dedupe(items), "arrows"
     for m in _CUE.finditer(text):
         segment = re.split(r"[.;]\s|\s[—–]\s|\bwhile\b|\bwhen\b|\bto (?!\d)", m.group(1))[0]
@@ -361,7 +408,9 @@ def anchored_lists(text: str, word: str) -> list[list[str]]:
         if _ASIDE_PAREN_RE.match(m.group(1)):
             continue  # "choose the menu (and texture, if needed)": an aside, not the values
         items = [_clean_item(i) for i in re.split(r"\s*/\s*|,\s*|\s+or\s+", m.group(1))]
-        if len(items) >= 2 and all(i and len(i) <= 16 and len(i.split()) <= 2 for i in items):
+        if len(items) >= 2 and all(
+            i and len(i) <= 16 and len(i.split()) <= 2 and not _PER_NAME.search(i) for i in items
+        ):
             out.append(items)
     pattern = (
         r"\b(?:choose|select|set|pick)\s+(?:an?\s+|the\s+)?"

@@ -397,7 +397,8 @@ def find_step(text: str) -> tuple[float, str] | None:
 
 def find_initial(text: str) -> tuple[float, str] | None:
     m = re.search(
-        rf"\b(?:default|factory setting|preset|standard|starts? (?:at|on)|initially)\b[^.;]*?"
+        rf"\b(?:default|factory setting|preset|standard|starts? (?:at|on)|initially|delivered)\b"
+        rf"[^.;]*?"
         rf"({NUM})\s*({UNIT})?(?![\w:])",
         text,
         re.IGNORECASE,
