@@ -138,3 +138,20 @@ def test_a_lock_word_before_a_key_s_hold_in_a_flattened_table_is_not_that_hold_s
     model = read_manual(FLATTENED, FLATTENED_ACTIONS).model
     (lock,) = [s for s in model.features.values() if s[0].variable == "child_lock"]
     assert lock[0].actions == ["hold_size"]
+
+
+# a held key whose hold switches an incubation stage named "lockdown", and no key lock at all
+BROODER = """HATCHA B-4 brooder
+
+  KEYS
+  ⏻       switches the brooder on and off
+  TURN    press: egg turning on / off.  Hold 3 s: lockdown on / off (the last three days,
+          turning stops and the humidity rises)
+  ▲ / ▼   change the temperature
+"""
+BROODER_ACTIONS = ["press_power", "press_turn", "hold_turn", "press_up", "press_down"]
+
+
+def test_a_hold_that_starts_a_lockdown_stage_is_not_the_key_lock() -> None:
+    model = read_manual(BROODER, BROODER_ACTIONS).model
+    assert "child_lock" not in model.variables

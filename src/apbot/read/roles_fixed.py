@@ -134,7 +134,9 @@ def assign_locks(b: Builder, done: set[str]) -> list[str]:
                         or not any(_held_lock(b, o) for o in infos if o.token != info.token)
                     )
                     and any(
-                        re.search(r"\bhold\b", t, re.I) and re.search(r"\block", t, re.I)
+                        re.search(r"\bhold\b", t, re.I)
+                        # "lockdown" (the last days of an incubation) is no key lock
+                        and re.search(r"\block(?!down)", t, re.I)
                         for t in texts
                     )
                 )
