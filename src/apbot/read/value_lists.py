@@ -12,9 +12,11 @@ import re
 
 from apbot.read.values import NUM, UNIT
 
-_ARROW = re.compile(r"\s*(?:→|->|⇒|>|»|⟶)\s*")
-# "Touch: DRY <-> MOIST": a key that flips between two values, both ways
-_BOTH_WAYS = re.compile(r"\s*(?:<->|<=>|↔|⇄|⇔)\s*")
+# an arrow, typed or drawn with a line before its head ("0 ──► 15 ──► 30 min"); a head alone
+# ("touch ►") is a key
+_ARROW = re.compile(r"\s*(?:→|->|⇒|>|»|⟶|[─━—–-]+\s*►)\s*")
+# "Touch: DRY <-> MOIST", "75 ◄► 80 ◄► 100": a key that flips between values, both ways
+_BOTH_WAYS = re.compile(r"\s*(?:<->|<=>|↔|⇄|⇔|◄►)\s*")
 _CUE = re.compile(  # a lookahead, so that every cue in a sentence is tried
     r"(?=(?:\bbetween|\bamong|\bchoose(?: from)?|\bselect(?:s| from)?|\bcycles?(?: through)?|"
     r"\boptions?(?: are)?|\bsettings?(?: are)?|\blevels?(?: are)?|\bmodes?(?: are)?|\border|"
@@ -28,6 +30,12 @@ def _clean_item(item: str) -> str:
     item = re.sub(r"\(.*?\)", "", item)
     item = re.sub(r"^(?:back to|then|and|or|finally)\s+", "", item.strip(), flags=re.I)
     return item.strip(" .;:!?\"'“”‘’*_")
+
+
+def _elision_apart(item: str) -> list[str]:
+    """An item with the ellipsis of a gap after it ("4 h …"): the item, then the gap."""
+    m = re.fullmatch(r"(.*\w)\s*(…|\.\.\.)", item)
+    return [m.group(1), m.group(2)] if m else [item]
 
 
 def _value_like(item: str, caps_context: bool) -> bool:
@@ -167,6 +175,7 @@ def find_list(text: str) -> tuple[list[str], str] | None:
         if len(items) >= 3:
             return [f"{i} {unit}" if known else i for i in items], "list"
     parts = [_clean_item(p) for p in _ARROW.split(text)]
+    parts = [q for p in parts for q in _elision_apart(p)]  # "4 h … → 12 h": "4 h", "…"
     for k, part in enumerate(parts[1:-1], start=1):  # "regular → … → regular … SUSHI regular
         came_round = re.match(r"([a-z][\w ]*?)\s*(?:…|\.\.\.)\s*[A-Z][A-Z,& ]*\s[a-z]", part)
         if came_round and parts[0].lower().endswith(came_round.group(1).lower()):
