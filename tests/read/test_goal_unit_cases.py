@@ -88,3 +88,17 @@ def test_the_starting_unit_and_a_unit_in_initials() -> None:
         "hardness": 18,
     }
     assert parse_instruction(softener, "Switch to parts per million")["unit"] == "ppm"
+
+
+def test_a_scale_read_as_its_letter_is_said_by_its_name() -> None:
+    """A reader names the scales by their signs (°c, °f): "degrees Fahrenheit" still says °f."""
+    text = BATH.replace("[celsius, fahrenheit]", '["°c", "°f"]')
+    text = text.replace('{celsius: "°C", fahrenheit: "°F"}', '{"°c": "°C", "°f": "°F"}')
+    text = text.replace("celsius: {ranges", '"°c": {ranges').replace(
+        "fahrenheit: {ranges", '"°f": {ranges'
+    )
+    bath = loads_model(text)
+    assert parse_instruction(bath, "Water at 95 degrees Fahrenheit") == {
+        "scale": "°f",
+        "temperature": 95,
+    }

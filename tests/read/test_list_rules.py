@@ -353,3 +353,22 @@ def test_a_sentence_naming_another_keys_values_in_passing_keeps_this_keys_own_li
     actions = ["press_program", "press_pulp", "press_start"]
     model = read_manual(JUICER_STRENGTH, actions).model
     assert model.variables["pulp"].values == ["none", "some", "lots"]
+
+
+def test_a_row_drawn_with_line_arrows_and_a_gap_before_its_end() -> None:
+    """ "0 h ──► 2 h ──► 3 h ──► 4 h … ──► 12 h": arrows drawn as a line and a head (a
+    plain-text manual turns the line into dashes), and the ellipsis after the unit of the item
+    before the gap; the two steps before the gap say how it is filled."""
+    from apbot.read.value_lists import find_list
+    from apbot.read.values_elided import filled
+
+    row = "0 h (no delay) --► 2 h --► 3 h --► 4 h … --► 12 h --► 0 h"
+    found = find_list(row)
+    assert found is not None
+    assert filled(found[0], row) == ["0 h", "2 h", *[f"{h} h" for h in range(3, 13)]]
+    assert find_list("0 ──► 15 ──► 30 ──► 60 min ──► 0") == (["0", "15", "30", "60 min"], "arrows")
+    assert find_list("Touch ► to go to the next one, ◄ to go back.") is None
+    assert find_list("Each touch: P1 → P2 → … → P5 → P1.") == (
+        ["P1", "P2", "P3", "P4", "P5"],
+        "arrows",
+    )

@@ -188,3 +188,34 @@ def test_the_pair_sets_alone_what_its_no_other_key_sentence_names() -> None:
     model = read_manual(RAIL, RAIL_ACTIONS).model
     alone = {s[0].variable for s in model.features.values() if s[0].actions[0] == "press_up"}
     assert "temperature" in alone
+
+
+# a twin-zone cellar whose table writes each range with its unit at both ends
+CELLAR = """# Wine cellar
+
+## Keys
+
+| Key | Use |
+|---|---|
+| ZONE | Changes between the TOP zone and the BOTTOM zone. |
+| ▲ / ▼ | Raise / lower the temperature of the selected zone. |
+
+## Setting the temperature
+
+| Zone | Range | Step |
+|---|---|---|
+| TOP | 6 °C to 11 °C | 1 °C |
+| BOTTOM | 11 °C to 17 °C | 1 °C |
+
+Install the cellar where the room stays between 10 and 32 °C.
+"""
+CELLAR_ACTIONS = ["press_zone", "press_up", "press_down"]
+
+
+def test_a_range_cell_with_the_unit_at_both_ends_is_the_zones_range() -> None:
+    model = read_manual(CELLAR, CELLAR_ACTIONS).model
+    (var,) = _setter(model, "press_up") - {None}
+    spec = model.variables[var]
+    assert spec.depends_on is not None and spec.remember
+    assert [list(r) for r in spec.cases["top"].ranges] == [[6, 11, 1]]
+    assert [list(r) for r in spec.cases["bottom"].ranges] == [[11, 17, 1]]

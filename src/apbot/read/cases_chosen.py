@@ -23,7 +23,10 @@ from apbot.read.text import Unit
 _CHOSEN_RE = re.compile(
     r"\b(?:of|for)\s+the\s+(?:selected|chosen|current|active)\s+(?P<noun>[a-z]+)", re.I
 )
-_SPAN_RE = re.compile(r"(\d+(?:\.\d+)?)\s*(?:-|–|—|to)\s*(\d+(?:\.\d+)?)")
+# "12 - 18", "5 °C to 12 °C": the low end may carry the unit too
+_SPAN_RE = re.compile(
+    r"(\d+(?:\.\d+)?)\s*(?:°\s?[CF]\b|%|[a-zA-Z]{1,3}\b)?\s*(?:-|–|—|to)\s*(\d+(?:\.\d+)?)"
+)
 _NUMBER_RE = re.compile(r"\d+(?:\.\d+)?")
 _RANGE_HEAD = {"range", "ranges", "setting", "settings", "adjustable", "available", "possible"}
 _START_HEAD = {"default", "factory", "initial", "start", "starts", "selected", "preset"}
@@ -51,17 +54,13 @@ def chosen_cases(b: Builder) -> None:
             if spec.get("depends_on") not in (None, parent):
                 continue
             cases = _table_cases(b, name, parent, pspec["values"])
-            remember = False
-            if (
-                cases is None
-                and not spec.get("depends_on")
-                and _said_of_the_chosen(b, tokens, parent, name)
-            ):
+            # "of the selected zone": each keeps its own, whether a table gives the ranges or not
+            remember = not spec.get("depends_on") and _said_of_the_chosen(b, tokens, parent, name)
+            if cases is None and remember:
                 cases = {v: {"ranges": spec["ranges"]} for v in pspec["values"]}
                 if "initial" in spec:
                     for case in cases.values():
                         case["initial"] = spec["initial"]
-                remember = True  # "of the selected zone": each keeps its own
             if not cases:
                 continue
             for key in ("ranges", "initial", "values"):

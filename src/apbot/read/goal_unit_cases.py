@@ -18,7 +18,7 @@ from apbot.read.goal_view import Goal, Model
 from apbot.read.numbers import Mention, read_number
 
 _DEGREES = frozenset({"degrees", "degree", "deg", "°"})
-_UNITS = frozenset(
+UNIT_WORDS = frozenset(
     {"celsius", "fahrenheit", "c", "f", "dh", "fh", "ppm", "gpg", "mmol", "kg", "lb", "lbs"}
 ) | frozenset({"g", "oz", "ml", "l", "km", "mi", "miles", "kcal", "cal", "kj", "mph", "kmh"})
 """Units a selector may offer for one quantity (a scale of temperature, of water hardness, of
@@ -88,22 +88,28 @@ def unit_cases(
 
 
 def _unit_names(var: DiscreteVariable, unit: Any) -> list[list[str]]:
-    """The word sequences a unit is said by: its name, its display text, and for a name of
-    initials (GPG) the words they stand for, matched by their first letters."""
+    """The word sequences a unit is said by: its name, its display text (a scale's letter by
+    the scale's name), and for a name of initials (GPG) the words they stand for, matched by
+    their first letters."""
     out = []
     for label in (str(unit), (var.show or {}).get(unit) if isinstance(var.show, dict) else None):
         if label:
             words = [w.casefold() for w in phrase_words(str(label).replace("°", " "))]
             if words and all(w.isalpha() for w in words):
                 out.append(words)
+                if words in (["c"], ["f"]):  # °F is said "degrees Fahrenheit"
+                    out.append([_SCALES[words[0]]])
     return out
+
+
+_SCALES = {"c": "celsius", "f": "fahrenheit"}
 
 
 def _a_unit(var: DiscreteVariable, value: Any) -> bool:
     """A value that is a unit (FAHRENHEIT, °dH, PPM), by its name or its display text."""
     show = var.show.get(value) if isinstance(var.show, dict) else None
     return any(
-        label is not None and str(label).casefold().lstrip("°").strip() in _UNITS
+        label is not None and str(label).casefold().lstrip("°").strip() in UNIT_WORDS
         for label in (value, show)
     )
 

@@ -20,6 +20,7 @@ from apbot.read.build import PLACEHOLDERS, Builder
 from apbot.read.cases import apply_cases
 from apbot.read.cases_chosen import chosen_cases
 from apbot.read.cases_resets import apply_resets
+from apbot.read.cases_units import unit_ranges
 from apbot.read.cases_zones import zone_twins
 from apbot.read.code_words import name_code_words
 from apbot.read.codes import name_codes
@@ -65,6 +66,7 @@ def read_manual(
     apply_cases(builder)
     chosen_cases(builder)
     zone_twins(builder)
+    unit_ranges(builder)
     name_codes(builder)
     name_code_words(builder)
     read_off_words(builder)

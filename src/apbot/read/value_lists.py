@@ -12,8 +12,9 @@ import re
 
 from apbot.read.values import NUM, UNIT
 
-# "──►" is drawn "--►" once box characters are cleaned: a shaft of dashes and a head
-_ARROW = re.compile(r"\s*(?:→|->|⇒|>|»|⟶|[-─—]*►)\s*")
+# an arrow, typed or drawn with a line before its head ("0 ──► 15 ──► 30 min", "--►" once box
+# characters are cleaned); a head alone ("touch ►") is a key
+_ARROW = re.compile(r"\s*(?:→|->|⇒|>|»|⟶|[─━—–-]+\s*►)\s*")
 # "Touch: DRY <-> MOIST", "75 ◄► 80 ◄► 100": a key that flips between two values, or a pair
 # stepping one list both ways
 _BOTH_WAYS = re.compile(r"\s*(?:<->|<=>|↔|⇄|⇔|◄[-─—]*►|◀[-─—]*▶)\s*")
@@ -36,6 +37,12 @@ def _clean_item(item: str) -> str:
 
 
 _PER_NAME = re.compile(r"[A-Za-z]\s*:\s*\d")  # "(HOT: 3, COLD: 2)": a value per name, no list
+
+
+def _elision_apart(item: str) -> list[str]:
+    """An item with the ellipsis of a gap after it ("4 h …"): the item, then the gap."""
+    m = re.fullmatch(r"(.*\w)\s*(…|\.\.\.)", item)
+    return [m.group(1), m.group(2)] if m else [item]
 
 
 def _value_like(item: str, caps_context: bool) -> bool:
@@ -214,6 +221,7 @@ def find_list(text: str) -> tuple[list[str], str] | None:
         if len(items) >= 3:
             return [f"{i} {unit}" if known else i for i in items], "list"
     parts = [_clean_item(p) for p in _ARROW.split(text)]
+    parts = [q for p in parts for q in _elision_apart(p)]  # "4 h … → 12 h": "4 h", "…"
     for k, part in enumerate(parts[1:-1], start=1):  # "regular → … → regular … SUSHI regular
         came_round = re.match(r"([a-z][\w ]*?)\s*(?:…|\.\.\.)\s*[A-Z][A-Z,& ]*\s[a-z]", part)
         if came_round and parts[0].lower().endswith(came_round.group(1).lower()):

@@ -4,7 +4,8 @@ A manual lists a long run of settings by its first few, an ellipsis and its last
 step is the one on both sides of the gap. Read item by item the list keeps only what it prints,
 so a freezer set to -20 °C, or a timer at 4 h, is missing from the belief. Filled in, each gap
 takes the values its neighbours step through (only where the text has the ellipsis, and only
-when the step before the gap and the step after it agree).
+when the step before the gap and the step after it agree — or, before the last item, the two
+steps before the gap).
 """
 
 from __future__ import annotations
@@ -12,7 +13,8 @@ from __future__ import annotations
 import re
 
 _ITEM_RE = re.compile(r"\s*([-−]?\d+(?:[.,]\d+)?)\s*(.*?)\s*")
-_GAP = r"\s*[^\w\s]{0,2}\s*(?:\.\.\.|…)\s*[^\w\s]{0,2}\s*"
+# (the left item's unit may stand before the gap: "4 h … ──► 12 h"; an arrow may be drawn long)
+_GAP = r"(?:\s*[^\W\d]{1,4}\b)?\s*[^\w\s]{0,3}\s*(?:\.\.\.|…)\s*[^\w\s]{0,3}\s*"
 MAX_FILLED = 200
 
 
@@ -35,10 +37,12 @@ def _gap(
     values: list[str], figures: list[str], numbers: list[float], k: int, text: str
 ) -> list[str]:
     """The values elided between items k-1 and k (none when the text shows no gap there)."""
-    if k < 2 or k + 1 >= len(values):
+    if k < 2 or k + 1 > len(values) or (k + 1 == len(values) and k < 3):
         return []
     before = numbers[k - 1] - numbers[k - 2]
-    after = numbers[k + 1] - numbers[k]
+    # the step after the gap, or before the last item's gap the step before the step before
+    # ("0 → 2 → 3 → 4 … → 12": two equal steps say how the run goes on)
+    after = numbers[k + 1] - numbers[k] if k + 1 < len(values) else numbers[k - 2] - numbers[k - 3]
     span = numbers[k] - numbers[k - 1]
     if not before or abs(before - after) > 1e-9 or abs(span) <= abs(before) + 1e-9:
         return []
