@@ -45,7 +45,6 @@ from apbot.read.roles_lists import (
     pair_of_names,
 )
 from apbot.read.roles_menu import assign_menu
-from apbot.read.roles_offered import offered_groups
 from apbot.read.roles_pads import (
     codes_shown,
     column_keys,
@@ -129,9 +128,6 @@ def assign(b: Builder) -> None:
             var = pad_group(b, selecting)
             keys = [k for k in keys if k not in selecting]
             codes_shown(b, var, selecting, codes)
-    for noun, group in offered_groups(b, keys):  # "Touch ROOM, COLD or HOT": the water chosen
-        pad_group(b, group, noun)
-        keys = [k for k in keys if k not in group]
     pads = [k for k in keys if k.skill == "press" and not set(words(k.token)) & FUNCTION_WORDS]
     named = [k for k in keys if k.skill == "press" and k not in pads]
     for group in listed_groups(b, pads + named, tables_only=True):

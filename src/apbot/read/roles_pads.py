@@ -12,10 +12,9 @@ from apbot.read.shapes import GROUP_NOUNS
 from apbot.read.text import Unit
 
 
-def pad_group(b: Builder, group: list[ActionInfo], noun: str | None = None) -> str:
-    """Keys the manual lists together: one variable, each key going to its own value (named
-    ``noun`` when the manual names what they choose, else by the nearest programme word)."""
-    noun = noun or _group_noun(b, group)
+def pad_group(b: Builder, group: list[ActionInfo]) -> str:
+    """Keys the manual lists together: one variable, each key going to its own value."""
+    noun = _group_noun(b, group)
     var = b.unique(noun, b.variables)
     values = [plain(label_of(b, k.controls[0])) for k in group]
     values = [v if values.count(v) == 1 else f"{v}_{i}" for i, v in enumerate(values)]
