@@ -200,6 +200,13 @@ def _next_key(b: Builder, keys: list[ActionInfo], entry: ActionInfo) -> ActionIn
     return None
 
 
+def _own_pair(b: Builder, base: str, entry: ActionInfo) -> bool:
+    """A stepping pair printed with a name of its own ("TEMP +", "TEMP −") changes that
+    quantity; it serves the menu only when that name is the menu key's own ("SET ▲ / SET ▼")."""
+    lab = b.labels.get(entry.controls[0])
+    return bool(lab and set(words(base)) <= set(words(lab.text)))
+
+
 def assign_menu(
     b: Builder, keys: list[ActionInfo], pairs: dict[str, dict[str, list[str]]]
 ) -> set[str]:
@@ -218,6 +225,8 @@ def assign_menu(
         return set()
     by_name = {k.name: k for k in b.infos}
     base = "" if "" in pairs else next(iter(pairs))
+    if base and not _own_pair(b, base, entry):
+        return set()  # "TEMP + / TEMP −" sets the temperature, not the menu's items
     pair = pairs[base]
     ups = [a for a in pair["up"] if by_name[a].skill == "press"]
     downs = [a for a in pair["down"] if by_name[a].skill == "press"]
