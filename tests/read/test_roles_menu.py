@@ -212,3 +212,29 @@ def test_a_pair_named_for_its_own_quantity_serves_no_menu() -> None:
     model = read_manual(WASHER, WASHER_ACTIONS).model
     assert "settings_menu" not in model.features
     assert any(s.variable == "temp" for s in model.features["set_temp"])
+
+
+# a chart of foods under a pressed AUTO MENU key, each weighed with ▲ / ▼: a press that steps
+# the chart ("the next food") is no menu of settings
+AUTO = """# Microwave
+
+| Key | Function |
+|---|---|
+| AUTO MENU | Chooses an automatic programme. |
+| ▲ | More weight. |
+| ▼ | Less weight. |
+
+## Auto menu (A1 - A3)
+
+Press AUTO MENU: the display shows A1. Press AUTO MENU again for the next food, then set the
+weight with ▲ or ▼.
+
+A1  Popcorn        1.75 · 3.0 · 3.5 oz
+A2  Potato         1 · 2 · 3 · 4 pieces
+A3  Pizza          1 · 2 · 3 slices
+"""
+
+
+def test_a_pressed_key_stepping_a_chart_of_foods_is_no_menu() -> None:
+    model = read_manual(AUTO, ["press_auto_menu", "press_up", "press_down"]).model
+    assert "settings_menu" not in model.features
