@@ -150,3 +150,88 @@ def test_a_recipe_naming_settings_in_passing_gives_no_key_a_list() -> None:
     model = read_manual(PROOFER, PROOFER_ACTIONS).model
     (steps,) = [s for s in model.features.values() if s[0].actions == ["press_mist"]]
     assert model.variables[steps[0].variable].values == ["off", "on"]
+
+
+# "Power levels available:" near MODE names MODE's levels, though a POWER key leads the words
+HEATER = """# Heater H-3
+
+| Key | Function |
+|---|---|
+| POWER | Switches the heater on or off. |
+| MODE | Changes the heat output. |
+
+## Heat output
+
+Press MODE to change the heat output.
+
+Power levels available:
+
+LOW · MEDIUM · HIGH · TURBO
+"""
+
+
+def test_levels_led_by_another_keys_noun_are_still_this_keys_list() -> None:
+    model = read_manual(HEATER, ["press_power", "press_mode"]).model
+    assert model.variables["mode"].values == ["low", "medium", "high", "turbo"]
+
+
+# a heading naming the setting it shows examples of keeps its list ("Power level examples")
+OVEN = """# Microwave MW-20
+
+| Key | Function |
+|---|---|
+| POWER LEVEL | Sets the power of the next cooking. |
+| START | Starts cooking. |
+
+## Power level examples
+
+Each press of POWER LEVEL changes the level: HIGH → MED-HIGH → MED → LOW → DEFROST.
+"""
+
+
+def test_a_settings_own_examples_heading_is_no_aside() -> None:
+    model = read_manual(OVEN, ["press_power_level", "press_start"]).model
+    assert model.variables["power_level"].values[:2] == ["high", "med-high"]
+
+
+# the sentence after a reset giving the value a setting is reset to ("stays at 0") keeps nothing
+FRYER = """# Fryer AF-3
+
+| Key | Function |
+|---|---|
+| MODE | Chooses the programme: FRIES → CHICKEN → FISH → CAKE. |
+| TEMP + | Raises the temperature. |
+| TEMP − | Lowers the temperature. |
+| TIMER | Adds 5 minutes to the timer. |
+
+Set the temperature from 80 to 200 °C in steps of 10 °C. The timer runs from 0 to 60 minutes in
+steps of 5 minutes.
+
+Changing the programme returns all settings to their standard values. The timer stays at 0
+until you press TIMER.
+"""
+
+
+def test_a_setting_said_to_stay_at_a_value_after_a_reset_is_reset() -> None:
+    actions = ["press_mode", "press_temp_up", "press_temp_down", "press_timer"]
+    model = read_manual(FRYER, actions).model
+    assert "timer" in model.features["set_mode"][0].reset
+
+
+# the appliance's own stored recipes, chosen with a key, are no recipe section to skip
+AUTO = """# Microwave MW-30
+
+| Key | Function |
+|---|---|
+| AUTO MENU | Chooses an automatic recipe. |
+| START | Starts cooking. |
+
+## Automatic recipes
+
+Press AUTO MENU repeatedly to choose: POPCORN → POTATO → PIZZA → BEVERAGE.
+"""
+
+
+def test_automatic_recipes_chosen_with_a_key_keep_their_list() -> None:
+    model = read_manual(AUTO, ["press_auto_menu", "press_start"]).model
+    assert model.variables["auto_menu"].values[:2] == ["popcorn", "potato"]

@@ -186,3 +186,55 @@ def test_choices_in_brackets_after_the_item_name() -> None:
     unit, alarm = (v for _a, v in steps if v)
     assert model.variables[unit].values == ["c", "f"]
     assert model.variables[alarm].values == ["on", "off"]
+
+
+# a programme chart under a MENU key, its temperature set with a pair named TEMP: no menu
+WASHER = """# Washer
+
+| Key | Function |
+|---|---|
+| MENU | Press to choose the next programme. |
+| TEMP + | Raises the wash temperature. |
+| TEMP - | Lowers the wash temperature. |
+
+Press MENU: the display shows P1. Each further press shows the next programme.
+
+| Code | Programme | Temperatures |
+|---|---|---|
+| P1 | Cotton | 20 - 40 - 60 - 90 °C |
+| P2 | Synthetics | 20 - 30 - 40 °C |
+| P3 | Wool | 20 - 30 - 40 °C |
+"""
+WASHER_ACTIONS = ["press_menu", "press_temp_plus", "press_temp_minus"]
+
+
+def test_a_pair_named_for_its_own_quantity_serves_no_menu() -> None:
+    model = read_manual(WASHER, WASHER_ACTIONS).model
+    assert "settings_menu" not in model.features
+    assert any(s.variable == "temp" for s in model.features["set_temp"])
+
+
+# a chart of foods under a pressed AUTO MENU key, each weighed with ▲ / ▼: a press that steps
+# the chart ("the next food") is no menu of settings
+AUTO = """# Microwave
+
+| Key | Function |
+|---|---|
+| AUTO MENU | Chooses an automatic programme. |
+| ▲ | More weight. |
+| ▼ | Less weight. |
+
+## Auto menu (A1 - A3)
+
+Press AUTO MENU: the display shows A1. Press AUTO MENU again for the next food, then set the
+weight with ▲ or ▼.
+
+A1  Popcorn        1.75 · 3.0 · 3.5 oz
+A2  Potato         1 · 2 · 3 · 4 pieces
+A3  Pizza          1 · 2 · 3 slices
+"""
+
+
+def test_a_pressed_key_stepping_a_chart_of_foods_is_no_menu() -> None:
+    model = read_manual(AUTO, ["press_auto_menu", "press_up", "press_down"]).model
+    assert "settings_menu" not in model.features

@@ -42,6 +42,8 @@ _CLEARS_RE = re.compile(
     r"all (?:other )?settings)\b",
     re.IGNORECASE,
 )
+# "The timer stays at 0 until you press TIMER": the value a setting is reset to, not kept
+_STAYS_AT = re.compile(r"\b(?:stays?|remains?)\s+(?:at\s+)?(?:\d|off\b|zero\b|blank\b)", re.I)
 _NAMED_RESET_RE = re.compile(
     r"\bresets?\s+(?:the\s+)?[\w-]+(?:\s[\w-]+)?\s+(?:back\s+)?to\b", re.IGNORECASE
 )
@@ -72,7 +74,8 @@ def apply_resets(b: Builder) -> None:
         # auto switch-off setting are kept.")
         n
         for k, u in enumerate(units)
-        if STAY_RE.search(u.text) and (RESET_NOUN_RE.search(u.text) or at < k <= at + 2)
+        if STAY_RE.search(u.text)
+        and (RESET_NOUN_RE.search(u.text) or (at < k <= at + 2 and not _STAYS_AT.search(u.text)))
         for n in b.variables
         if set(words(n.replace("_", " "))) & set(words(u.text))
     }

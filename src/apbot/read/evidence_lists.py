@@ -40,6 +40,7 @@ from apbot.read.value_lists import (
 )
 from apbot.read.values import number
 
+_LEVELS_RE = re.compile(r"(?:levels?|settings?|modes?|options?|stages?|steps?)")  # of a setting
 _TYPING_WORDS = frozenset({"type", "typed", "typing", "digits", "keystrokes", "keyed"})
 _KEY_WORDS = frozenset({"key", "keys", "button", "buttons", "number", "numbers"})
 _PRESS_WORDS = frozenset({"press", "pressed", "touch", "touched", "enter", "entered", "input"})
@@ -288,12 +289,15 @@ class ListReader(TableReader):
 
     def _about_another(self, text: str, tokens: list[str]) -> bool:
         """A sentence led by another key's noun ("Pouch sizes the laminator accepts:" near
-        COLD): the list it introduces is about that, not this key's values."""
-        lead = words(text)[:1]
+        COLD): the list it introduces is about that, not this key's values. "Power levels
+        available:" (near MODE, beside a POWER key) names levels, whichever key steps them."""
+        lead = words(text)[:2]
         own = {w for t in tokens for w in words(t.replace("_", " "))}
         theirs = {
             w for t in self.labels if t not in tokens for w in words(t.replace("_", " "))
         } - own
+        if len(lead) > 1 and _LEVELS_RE.fullmatch(lead[1]):
+            return False
         return bool(lead) and lead[0] in theirs
 
     def _counted_chart(self, i: int) -> list[str]:

@@ -135,8 +135,8 @@ def assign_locks(b: Builder, done: set[str]) -> list[str]:
                     )
                     and any(
                         re.search(r"\bhold\b", t, re.I)
-                        # "lockdown" (the last days of an incubation) is no key lock
-                        and re.search(r"\block(?!down)", t, re.I)
+                        # the word lock, not a compound ("lockdown": an incubation's last days)
+                        and LOCK_CUE.search(t)
                         for t in texts
                     )
                 )

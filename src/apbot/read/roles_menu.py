@@ -187,6 +187,13 @@ def find_entry(b: Builder, keys: list[ActionInfo], first: str) -> ActionInfo | N
     return None
 
 
+def _says_next(b: Builder, key: ActionInfo) -> bool:
+    """Whether a sentence naming ``key`` says it goes to the next item or setting ("Press MODE
+    again for the next setting"), not to the next programme or food of a chart."""
+    lab = b.labels.get(key.controls[0])
+    return bool(lab and any(_NEXT_RE.search(b.manual.units[i].text) for i in lab.mentions))
+
+
 def _next_key(b: Builder, keys: list[ActionInfo], entry: ActionInfo) -> ActionInfo | None:
     """The key that moves to the next item: a press of the entry's own key (or the entry
     itself when it is a press), else a key whose sentence says it goes to the next item."""
@@ -194,10 +201,16 @@ def _next_key(b: Builder, keys: list[ActionInfo], entry: ActionInfo) -> ActionIn
         if key.skill == "press" and key.controls == entry.controls:
             return key
     for key in keys:
-        lab = b.labels.get(key.controls[0]) if key.skill == "press" else None
-        if lab and any(_NEXT_RE.search(b.manual.units[i].text) for i in lab.mentions):
+        if key.skill == "press" and _says_next(b, key):
             return key
     return None
+
+
+def _own_pair(b: Builder, base: str, entry: ActionInfo) -> bool:
+    """A stepping pair printed with a name of its own ("TEMP +", "TEMP −") changes that
+    quantity; it serves the menu only when that name is the menu key's own ("SET ▲ / SET ▼")."""
+    lab = b.labels.get(entry.controls[0])
+    return bool(lab and set(words(base)) <= set(words(lab.text)))
 
 
 def assign_menu(
@@ -212,12 +225,14 @@ def assign_menu(
     if entry is None:
         return set()
     nxt = _next_key(b, [k for k in keys if k.name != entry.name], entry) or (
-        entry if entry.skill == "press" else None
+        entry if entry.skill == "press" and _says_next(b, entry) else None
     )
-    if nxt is None:
+    if nxt is None:  # (a press that steps a chart, "AUTO MENU … the next food", is no menu)
         return set()
     by_name = {k.name: k for k in b.infos}
     base = "" if "" in pairs else next(iter(pairs))
+    if base and not _own_pair(b, base, entry):
+        return set()  # "TEMP + / TEMP −" sets the temperature, not the menu's items
     pair = pairs[base]
     ups = [a for a in pair["up"] if by_name[a].skill == "press"]
     downs = [a for a in pair["down"] if by_name[a].skill == "press"]

@@ -170,7 +170,14 @@ RUN_RE = re.compile(r"\d+(?:[.,]\d+)?(?:\s*[·•]\s*(?:\|\s*)?\d+(?:[.,]\d+)?){
 ASIDE_HEADING = re.compile(
     r"\b(?:safety|safeguards?|warnings?|cautions?|precautions?|trouble-?\s?shooting|faults?"
     r"|fault finding|problems?|error codes?|cleaning|maintenance|warranty|guarantee"
-    r"|disposal|customer|examples|recipes)\b"  # (worked key sequences: values in passing)
+    r"|disposal|customer)\b"
+    # recipes to make by hand ("RECIPES", "Tips and recipes"), not the appliance's own stored
+    # ones, which its keys choose ("Automatic recipes: POPCORN → POTATO → …")
+    r"|^(?!.*\b(?:auto(?:matic)?|preset|programmed|built-in|stored|one-touch)\s+recipes)"
+    r".*\brecipes\b"
+    # worked key sequences, values in passing ("EXAMPLES", "PROGRAMMING EXAMPLES"); not a
+    # setting's own examples ("Power level examples": its list)
+    r"|^[\W\d.]*(?:\w+ing\s+|worked\s+)?examples\b"
     # "care" only as the section's own word ("Care", "Care and cleaning", "Cleaning and care"),
     # never inside a programme's name ("Easy Care", "Baby care")
     r"|^[\W\d.]*care\b(?!\s+(?:programs?|programmes?|cycles?|modes?|settings?)\b)"
