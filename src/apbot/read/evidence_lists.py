@@ -29,13 +29,13 @@ from apbot.read.shapes import (
     _same_word,
 )
 from apbot.read.text import Manual, Unit
+from apbot.read.value_gaps import find_progression
 from apbot.read.value_lists import (
     bare_list,
     caps_run,
     cell_list,
     find_list,
     find_number_run,
-    find_progression,
     quantity_run,
 )
 from apbot.read.values import number

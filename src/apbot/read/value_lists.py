@@ -10,6 +10,12 @@ from __future__ import annotations
 
 import re
 
+from apbot.read.value_gaps import (
+    elision_apart,
+    filled_amounts,
+    filled_codes,
+    unit_tail,
+)
 from apbot.read.values import NUM, UNIT
 
 # an arrow, typed or drawn with a line before its head ("0 ──► 15 ──► 30 min", "--►" once box
@@ -37,12 +43,6 @@ def _clean_item(item: str) -> str:
 
 
 _PER_NAME = re.compile(r"[A-Za-z]\s*:\s*\d")  # "(HOT: 3, COLD: 2)": a value per name, no list
-
-
-def _elision_apart(item: str) -> list[str]:
-    """An item with the ellipsis of a gap after it ("4 h …"): the item, then the gap."""
-    m = re.fullmatch(r"(.*\w)\s*(…|\.\.\.)", item)
-    return [m.group(1), m.group(2)] if m else [item]
 
 
 def _value_like(item: str, caps_context: bool) -> bool:
@@ -79,87 +79,6 @@ def _nothing_as_zero(items: list[str]) -> list[str]:
         return items
     unit = rest[0].group(2) if rest[0] else "h"
     return [f"0 {unit}"] + [f"{m.group(1)} {m.group(2)}" for m in rest if m]
-
-
-_PROGRESSION_RE = re.compile(  # "50, 55, 60 ... 95, 100", "MENU 1, MENU 2 … MENU 15"
-    r"(?<![\d.])(?:([A-Z]{2,12}) )?(\d+(?:\.\d+)?),\s*(?:\1 )?(\d+(?:\.\d+)?)"
-    r"(?:,\s*(?:\1 )?\d+(?:\.\d+)?)*,?\s*(?:\.\.\.|…)\s*(?:(?:up )?to\s+)?"
-    r"(?:(?:\1 )?\d+(?:\.\d+)?,\s*)*(?:\1 )?(\d+(?:\.\d+)?)(?!\d|\.\d)\s*([A-Za-z%°]{1,8})?"
-)
-
-
-def find_progression(text: str) -> list[str] | None:
-    """Settings written as the first few, an ellipsis and the last ("50, 55, 60 ... 95, 100"):
-    every one of them, the step being the first gap."""
-    m = _PROGRESSION_RE.search(text)
-    if not m:
-        return None
-    first, second, last = float(m.group(2)), float(m.group(3)), float(m.group(4))
-    gap = second - first
-    if gap <= 0 or last <= second or (last - first) / gap > 400:
-        return None
-    count = round((last - first) / gap)
-    if abs(first + count * gap - last) > 1e-6:
-        return None  # the last is off the step: no progression
-    unit = m.group(5) if m.group(5) and re.fullmatch(UNIT, m.group(5), re.I) else ""
-    return [f"{first + k * gap:g}" + (f" {unit}" if unit else "") for k in range(count + 1)]
-
-
-_CODED = re.compile(r"([A-Za-z]{1,4}\s?-?)(\d{1,2})")
-
-
-def _filled_codes(parts: list[str]) -> list[str]:
-    """An ellipsis between two codes of one kind ("P1 → P2 → … → P6"): the codes it skips."""
-    out: list[str] = []
-    for i, part in enumerate(parts):
-        if part not in ("…", "...") or not out or i + 1 >= len(parts):
-            out.append(part)
-            continue
-        before, after = _CODED.fullmatch(out[-1]), _CODED.fullmatch(parts[i + 1])
-        if before and after and before.group(1) == after.group(1):
-            lo, hi = int(before.group(2)), int(after.group(2))
-            if 1 < hi - lo <= 40:
-                out += [f"{before.group(1)}{n}" for n in range(lo + 1, hi)]
-                continue
-        out.append(part)
-    return out
-
-
-_AMOUNT = re.compile(rf"({NUM})\s*({UNIT})?", re.IGNORECASE)
-
-
-def _filled_amounts(parts: list[str]) -> list[str]:
-    """An ellipsis after an amount in an arrow run ("2 h → 3 h → 4 h … → 12 h", "1 → 2 → … →
-    9"): the amounts it skips, on the step of the two before it."""
-    out: list[str] = []
-    for i, part in enumerate(parts):
-        base = re.sub(r"\s*(?:…|\.\.\.)$", "", part)
-        if base == part and part not in ("…", "..."):
-            out.append(part)
-            continue
-        if base and base not in ("…", "..."):
-            out.append(base)
-        ends = [_AMOUNT.fullmatch(p) for p in (*out[-2:], *parts[i + 1 : i + 2])]
-        if len(out) < 2 or i + 1 >= len(parts) or not all(ends):
-            continue
-        a, b, c = (float(m.group(1).replace(",", ".")) for m in ends if m)
-        unit = next((m.group(2) for m in ends if m and m.group(2)), None)
-        step = b - a
-        if step > 0 and c > b and (c - b) / step <= 40 and abs((c - b) / step % 1) < 1e-6:
-            k = 1
-            while b + k * step < c - 1e-6:
-                v = f"{b + k * step:g}"
-                out.append(f"{v} {unit}" if unit else v)
-                k += 1
-    return out
-
-
-def _unit_tail(items: list[str]) -> list[str]:
-    """Numbers in a row with a unit of their own after the last ("75 ◄► 80 ◄► … 250 mic"): the
-    unit, short and in lower case, is the row's whatever it is; judge the numbers alone."""
-    tail = re.fullmatch(rf"({NUM})\s+[a-zµ]{{1,4}}", items[-1]) if items else None
-    bare = all(re.fullmatch(NUM, i) for i in items[:-1])
-    return [*items[:-1], tail.group(1)] if tail and bare and len(items) >= 3 else items
 
 
 def _range_table_header(items: list[str]) -> bool:
@@ -221,7 +140,7 @@ def find_list(text: str) -> tuple[list[str], str] | None:
         if len(items) >= 3:
             return [f"{i} {unit}" if known else i for i in items], "list"
     parts = [_clean_item(p) for p in _ARROW.split(text)]
-    parts = [q for p in parts for q in _elision_apart(p)]  # "4 h … → 12 h": "4 h", "…"
+    parts = [q for p in parts for q in elision_apart(p)]  # "4 h … → 12 h": "4 h", "…"
     for k, part in enumerate(parts[1:-1], start=1):  # "regular → … → regular … SUSHI regular
         came_round = re.match(r"([a-z][\w ]*?)\s*(?:…|\.\.\.)\s*[A-Z][A-Z,& ]*\s[a-z]", part)
         if came_round and parts[0].lower().endswith(came_round.group(1).lower()):
@@ -235,7 +154,7 @@ def find_list(text: str) -> tuple[list[str], str] | None:
             parts[-1],
         )[0]  # "… → P1. The display …", "FIRM → SOFT … (not every …)": nor at a sentence's end
         parts[-1] = _clean_item(last)
-        parts = _filled_amounts(_filled_codes(parts))
+        parts = filled_amounts(filled_codes(parts))
     amount = re.search(rf"(?<![\w.])({NUM}\s*{UNIT})\s*$", parts[0], re.I)
     if len(parts) >= 3 or both or (len(parts) == 2 and all(_value_like(p, True) for p in parts)):
         head = parts[0].split(":")[-1].split()  # "in this order: AUTO → ...", "Clockwise: Cotton"
@@ -265,7 +184,7 @@ def find_list(text: str) -> tuple[list[str], str] | None:
         if items and items[0] in items[1:]:
             items = items[: items.index(items[0], 1)]  # "OFF → 2H → 4H → OFF": the cycle, once
         items = _nothing_as_zero(items)
-        if all(_value_like(p, False) for p in _unit_tail(items)) and len(items) >= 2:
+        if all(_value_like(p, False) for p in unit_tail(items)) and len(items) >= 2:
             return _dedupe(items), "arrows"
     for m in _CUE.finditer(text):
         segment = re.split(r"[.;]\s|\s[—–]\s|\bwhile\b|\bwhen\b|\bto (?!\d)", m.group(1))[0]
