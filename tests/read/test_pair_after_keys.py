@@ -137,3 +137,18 @@ def test_numbered_callouts_are_items_of_their_own() -> None:
     model = read_manual(HEATER, HEATER_ACTIONS).model
     # MODE's legend does not take ON/OFF's "on / off": its list is read
     assert model.variables["mode"].values == ["comfort", "eco", "frost"]
+
+
+def test_current_after_a_noun_is_the_quantity_not_a_stop() -> None:
+    """ "the current value" names no quantity, but "the charging current" is one: the pair
+    sets the charging current, not a "charging"."""
+    manual = """# Battery charger
+
+## Keys
+
+| Key | Use |
+|---|---|
+| ▲ / ▼ | Raise or lower the charging current, 1 A to 10 A |
+"""
+    model = read_manual(manual, ["press_up", "press_down"]).model
+    assert "charging_current" in model.variables
