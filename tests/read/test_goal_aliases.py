@@ -64,3 +64,12 @@ def test_only_plain_names_in_brackets_count(mill: ApplianceModel) -> None:
     forms = {"grind": {value: [value, text] for value, text in shown.items()}}
     names = {stems for _n, _v, stems in bracket_aliases(forms, MANUAL)}
     assert names == {("pastry",), ("muesli",), ("oat",)}
+
+
+def test_a_bracket_naming_a_setting_names_no_value() -> None:
+    """ "AUTO (humidity)": the setting AUTO follows, not another name of AUTO ("set the
+    humidity to 50" would choose AUTO too)."""
+    forms = {"mode": {"auto": ["auto", "AUTO"]}, "humidity": {"40": ["40"]}}
+    manual = "  AUTO (humidity)   keeps the room at the humidity you set\n"
+    assert [a for _n, _v, a in bracket_aliases(forms, manual)] == [("humidity",)]
+    assert bracket_aliases(forms, manual, ("mode", "humidity")) == []

@@ -89,3 +89,14 @@ def test_a_word_shown_beside_every_level_names_no_one_level(
 ) -> None:
     """ "HEAT ■■■" names the HEAT setting, not its HIGH: the level is the word said with it."""
     assert parse_instruction(greenhouse, text) == goal
+
+
+def test_a_value_word_is_not_drawn_to_a_setting_named_in_the_next_act() -> None:
+    """ "… on medium and leave the seat at the lowest setting": the seat is named by the act
+    after "and leave", not by the one "medium" is said in; it keeps its own "lowest"."""
+    text = GREENHOUSE.replace("HEAT", "SEAT").replace("heat", "seat")
+    model = loads_model(text.replace("FAN", "WATER").replace("fan", "water"))
+    goal = parse_instruction(
+        model, "Put the blower on medium and leave the seat at the lowest setting"
+    )
+    assert goal.get("seat_level") == "low"

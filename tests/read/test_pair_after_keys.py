@@ -137,3 +137,68 @@ def test_numbered_callouts_are_items_of_their_own() -> None:
     model = read_manual(HEATER, HEATER_ACTIONS).model
     # MODE's legend does not take ON/OFF's "on / off": its list is read
     assert model.variables["mode"].values == ["comfort", "eco", "frost"]
+
+
+def test_current_after_a_noun_is_the_quantity_not_a_stop() -> None:
+    """ "the current value" names no quantity, but "the charging current" is one: the pair
+    sets the charging current, not a "charging"."""
+    manual = """# Battery charger
+
+## Keys
+
+| Key | Use |
+|---|---|
+| ▲ / ▼ | Raise or lower the charging current, 1 A to 10 A |
+"""
+    model = read_manual(manual, ["press_up", "press_down"]).model
+    assert "charging_current" in model.variables
+
+
+# a bread maker: MENU walks the programme table by itself before the pair sets the time
+BREAD = """# Bread maker
+
+## Control panel
+
+| Key | Use |
+|---|---|
+| MENU | Chooses the programme |
+| + | Adds time |
+| − | Takes time off |
+| START/STOP | Starts or stops the programme |
+
+## Programmes
+
+| No. | Programme | Time |
+|---|---|---|
+| 1 | BASIC | 3:00 |
+| 2 | FRENCH | 3:50 |
+| 3 | DOUGH | 1:30 |
+
+## Delayed baking
+
+1. Press MENU repeatedly to choose a programme from the table.
+2. Press + or − to set when the bread should be ready, up to 13 hours.
+3. Press START/STOP.
+"""
+
+
+def test_a_key_pressed_repeatedly_before_the_pair_keeps_its_own_list() -> None:
+    model = read_manual(BREAD, ["press_menu", "press_plus", "press_minus", "press_start_stop"])
+    assert model.model.variables["menu"].values == ["basic", "french", "dough"]  # type: ignore[union-attr]
+
+
+def test_a_start_key_that_also_adds_a_minute_still_starts() -> None:
+    """START/+1 MIN starts cooking; only a START TIME names a time of its own."""
+    manual = """# Microwave
+
+| Key | Use |
+|---|---|
+| TIME | Sets the cooking time |
+| START/+1 MIN | Starts cooking; each further press adds one minute |
+"""
+    model = read_manual(manual, ["press_time", "press_start_1_min"]).model
+    assert any(
+        "press_start_1_min" in s.actions and s.variable == "running"
+        for steps in model.features.values()
+        for s in steps
+    )

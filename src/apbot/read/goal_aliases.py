@@ -31,11 +31,13 @@ MAX_ALIAS_WORDS = 2
 
 
 def bracket_aliases(
-    forms: dict[str, dict[Any, list[str]]], manual: str
+    forms: dict[str, dict[Any, list[str]]], manual: str, settings: tuple[str, ...] = ()
 ) -> list[tuple[str, Any, tuple[str, ...]]]:
     """(setting, value, stems) for each name a bracket gives one value. ``forms``: setting ->
-    value -> the texts it is written as (its name, its display text). A name two values would
-    share, or one with a word of a value's own name, is dropped."""
+    value -> the texts it is written as (its name, its display text); ``settings``: the
+    names of every setting. A name two values would share, or one with a word of a value's
+    own name or of a setting's name ("AUTO (humidity)": what AUTO follows, not AUTO), is
+    dropped."""
     if not manual:
         return []
     lines = manual.splitlines()
@@ -45,7 +47,7 @@ def bracket_aliases(
         for texts in values.values()
         for t in texts
         for w in _words(t)
-    }
+    } | {stem(w) for name in settings for w in _words(name)}
     found: dict[tuple[str, ...], set[tuple[str, Any]]] = {}
     for name, values in forms.items():
         for value, texts in values.items():

@@ -90,7 +90,7 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
                 continue  # "medium-rare", "low-fat": a degree of something else
             if len(stems) == 1 and _compound_tail(text, i):
                 score *= 0.5  # "air-dry", "sterilise-and-dry": the end of another word
-            near = near_vocab(info, text, i, end, reach=6)
+            near = near_vocab(info, text, i, end, reach=6, acts=True)
             matches.append(_Match(var, value, i, end, score, near))
     matches.sort(key=_order)
     return _prefer_specific(_prefer_heads(matches), text, itself)

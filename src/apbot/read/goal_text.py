@@ -133,9 +133,13 @@ def verb_positions(text: Text) -> set[int]:
 FILLERS = ("just", "please", "then", "now", "also", "first")
 
 
-def near_vocab(info: VarInfo, text: Text, start: int, end: int, reach: int = 8) -> float:
+def near_vocab(
+    info: VarInfo, text: Text, start: int, end: int, reach: int = 8, acts: bool = False
+) -> float:
     """How strongly the words around a span name the variable: each of its words found
-    counts once, nearer counts more, and a comma in between halves it."""
+    counts once, nearer counts more, and a comma in between halves it. With ``acts``, an
+    "and" that opens a new act ("… on medium warmth and leave the seat …") ends the search:
+    the setting named in the next act is not the one this value is said of."""
     found: dict[str, float] = {}
     for direction, first in ((-1, start - 1), (1, end)):
         k = first
@@ -145,6 +149,8 @@ def near_vocab(info: VarInfo, text: Text, start: int, end: int, reach: int = 8) 
                 break
             word = text.word(k)
             if word in CLAUSE_ENDS:
+                break
+            if acts and word == "and" and text.word(k + 1) in _AND_VERBS:
                 break
             if word == ",":
                 factor *= 0.4

@@ -249,7 +249,9 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         names = [w for w in phrase_words(label) if w != "and"]
         if names and not all(w in STOP_WORDS for w in names):
             phrases.append((coded, value, tuple(stem(w) for w in names), 0.95))
-    phrases += [(n, v, stems, 0.9) for n, v, stems in bracket_aliases(_forms(infos), manual)]
+    settings = tuple(f"{n} {i.var.label}".replace("_", " ") for n, i in infos.items())
+    aliases = bracket_aliases(_forms(infos), manual, settings)
+    phrases += [(n, v, stems, 0.9) for n, v, stems in aliases]
     tops = {
         name: code
         for name, info in infos.items()

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import itertools
 import re
 
 from apbot.read.actions import ActionInfo
@@ -207,6 +208,13 @@ def _holds_itself_to_lock(b: Builder, info: ActionInfo) -> bool:
     )
 
 
+def _start_setting(token: str) -> bool:
+    """START TIME, START DELAY: "start" names an amount the key sets, not the start itself
+    ("START/+1 MIN" still starts: its amount is what a further press adds)."""
+    ws = words(token)
+    return any(w == "start" and nxt in NUMERIC_WORDS for w, nxt in itertools.pairwise(ws))
+
+
 def assign_running(
     b: Builder, done: set[str], power_actions: list[str], lock_actions: list[str]
 ) -> list[str]:
@@ -220,7 +228,7 @@ def assign_running(
         if i.name not in done
         and "start" in words(i.token)
         and i.skill == "press"
-        and not set(words(i.token)) & NUMERIC_WORDS  # START TIME: when it starts, a setting
+        and not _start_setting(i.token)  # START TIME: when it starts, a setting
     ]
     if not starts:  # a START/STOP that is only ever held ("press and hold for 2 s to start")
         starts = [

@@ -7,7 +7,9 @@ setting of its own (a list printed nearby, a toggle, even START/STOP for START T
 pair like one amount; the user's setting then has no way to be set. A key pressed in a step
 whose next step (or the rest of its own sentence) presses the pair is an entry key of the
 pair, unless the key's own sentence gives it a list it cycles by itself ("Press MODE to choose
-AUTO, DRY or STORE, then + / −": MODE keeps its list; the pair then sets another amount).
+AUTO, DRY or STORE, then + / −": MODE keeps its list; the pair then sets another amount) or
+its step presses it over and over ("Press MENU repeatedly to choose a programme", its list in
+a table of its own).
 """
 
 from __future__ import annotations
@@ -18,6 +20,8 @@ from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.roles_common import label_of, mentions_of
 
+# "Press MENU repeatedly to choose a programme": the key walks a list of its own in its step
+_CYCLES_RE = re.compile(r"\s*(?:repeatedly|several times|until)\b", re.IGNORECASE)
 _STEP_RE = re.compile(
     r"^\W*(?:\d+[.)]\s*)?(?:press|touch|push|use)\w*\s+(?:the\s+)?", re.IGNORECASE
 )
@@ -48,7 +52,7 @@ def pair_follows(b: Builder, key: ActionInfo, pair: list[str]) -> int | None:
     units = b.manual.units
     for i in mentions_of(b, key.controls[0]):
         m = pressed.search(units[i].text)
-        if m is None:
+        if m is None or _CYCLES_RE.match(units[i].text, m.end()):
             continue
         if then.search(units[i].text[m.end() :]):
             return i

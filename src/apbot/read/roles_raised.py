@@ -37,6 +37,9 @@ _STOP = {
     "slightly", "gently", "fully", "only", "once", "use", "using", "it", "them", "you", "your",
     "blinking", "being", "current", "currently", "active", "highlighted", "now",
 }  # fmt: skip
+# stop words that are also a quantity's noun after another ("the charging current"): they end
+# nothing once the noun has begun, and only lead it ("the current value") when they open it
+_LEADING_ONLY = {"current"}
 # nouns that name no quantity by themselves ("the value that is flashing", "the setting")
 _BARE = {
     "value", "values", "setting", "settings", "number", "figure", "display", "it", "them",
@@ -121,7 +124,7 @@ def _noun(phrase: str) -> str:
     """ "heat level of the selected zone" → heat_level; "value shown" → "" (no quantity)."""
     kept: list[str] = []
     for w in words(phrase):
-        if w in _STOP:
+        if w in _STOP and not (kept and w in _LEADING_ONLY):
             if kept:
                 break
             continue
