@@ -116,6 +116,13 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "water_dispenser": 3,
     "laminator": 3,
     "garage_door_opener": 3,
+    # The eleventh blind set (helper blind14n, 5 December, fourth session): blind for this
+    # round's work.
+    "crepe_maker": 3,
+    "shoe_dryer": 3,
+    "baby_formula_maker": 3,
+    "pottery_kiln": 4,
+    "water_flosser": 3,
 }
 
 
