@@ -15,7 +15,8 @@ from __future__ import annotations
 import re
 from typing import Any
 
-from apbot.read.build import Builder, _tidy
+from apbot.model.values import tidy_number
+from apbot.read.build import Builder
 from apbot.read.goal_unit_cases import UNIT_WORDS
 from apbot.read.values import NUM, find_step, number
 
@@ -140,7 +141,7 @@ def _take_cases(
             told += vstep is not None
             st = vstep or step
             top = vlo + int((vhi - vlo) / st + 1e-9) * st
-            cases[value] = {"ranges": [[_tidy(vlo), _tidy(top), _tidy(st)]]}
+            cases[value] = {"ranges": [[tidy_number(vlo), tidy_number(top), tidy_number(st)]]}
             if value == tag and "initial" in spec:
                 cases[value]["initial"] = spec["initial"]
         else:
@@ -185,5 +186,5 @@ def _starts(b: Builder, cases: dict[str, Any]) -> None:
             for said in re.finditer(rf"(?<![\w.])({NUM})\s*(?:{pattern})", rest, re.I):
                 figure = number(said.group(1))
                 if figure is not None and lo <= figure <= hi and not (figure - lo) % step:
-                    case["initial"] = _tidy(figure)
+                    case["initial"] = tidy_number(figure)
                     break

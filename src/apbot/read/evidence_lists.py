@@ -293,9 +293,7 @@ class ListReader(TableReader):
         available:" (near MODE, beside a POWER key) names levels, whichever key steps them."""
         lead = words(text)[:2]
         own = {w for t in tokens for w in words(t.replace("_", " "))}
-        theirs = {
-            w for t in self.labels if t not in tokens for w in words(t.replace("_", " "))
-        } - own
+        theirs = self._other_keys_words(tokens) - own
         if len(lead) > 1 and _LEVELS_RE.fullmatch(lead[1]):
             return False
         return bool(lead) and lead[0] in theirs

@@ -40,9 +40,14 @@ class TableReader:
         # "| Pouch | Document | Mode | Speed |" under "POUCH AND SPEED GUIDE": a table led by
         # another key's column (POUCH +/−), SPEED's column is the one its name heads
         named = [index for index, cell in enumerate(header) if cell in own]
-        theirs = {w for t in self.labels if t not in tokens for w in words(t.replace("_", " "))}
-        led = bool(set(words(header[0])) & (theirs - set(words(" ".join(own)))))
+        led = bool(
+            set(words(header[0])) & (self._other_keys_words(tokens) - set(words(" ".join(own))))
+        )
         return named[0] if named and led else 0
+
+    def _other_keys_words(self, tokens: list[str]) -> set[str]:
+        """The words naming the panel's other keys (a table or a sentence they lead is theirs)."""
+        return {w for t in self.labels if t not in tokens for w in words(t.replace("_", " "))}
 
     def _header_names(self, i: int, tokens: list[str]) -> bool:
         """Whether the header of the table after unit ``i`` names the key's word."""

@@ -10,7 +10,7 @@ import re
 from dataclasses import dataclass, field
 from typing import Any
 
-from apbot.model.values import format_hms, parse_hms
+from apbot.model.values import format_hms, parse_hms, tidy_number
 from apbot.read.build import Builder
 from apbot.read.roles_common import numeric_list
 from apbot.read.roles_lists import list_evidence
@@ -134,11 +134,11 @@ def _as_printed(b: Builder, var: str, unit: str) -> None:
     spec["unit"] = unit
     spec.pop("format", None)
     spec["ranges"] = [
-        [_tidy(parse_hms(lo) / per), _tidy(parse_hms(hi) / per), _tidy(st / per)]
+        [tidy_number(parse_hms(lo) / per), tidy_number(parse_hms(hi) / per), tidy_number(st / per)]
         for lo, hi, st in spec["ranges"]
     ]
     if "initial" in spec:
-        spec["initial"] = _tidy(parse_hms(spec["initial"]) / per)
+        spec["initial"] = tidy_number(parse_hms(spec["initial"]) / per)
 
 
 def _start(b: Builder, var: str, value: float, unit: str, at: int) -> None:
@@ -200,9 +200,11 @@ def _cases(b: Builder, item: MenuItem) -> str | None:
                 start = float(num.group(1))
         r = found[0]
         st = r.step or step or 1.0
-        case: dict[str, Any] = {"ranges": [[_tidy(r.low), _tidy(r.high), _tidy(st)]]}
+        case: dict[str, Any] = {
+            "ranges": [[tidy_number(r.low), tidy_number(r.high), tidy_number(st)]]
+        }
         if start is not None and r.low <= start <= r.high:
-            case["initial"] = _tidy(start)
+            case["initial"] = tidy_number(start)
         cases[match[0]] = case
     if not cases:
         return None
@@ -215,10 +217,6 @@ def _cases(b: Builder, item: MenuItem) -> str | None:
     }
     b.note(f"variables.{name}.cases", f"its range per {parent}", b.manual.units.index(rows[0]))
     return name
-
-
-def _tidy(x: float) -> float | int:
-    return int(x) if float(x).is_integer() else round(x, 6)
 
 
 def _listed(b: Builder, item: MenuItem, name: str, parts: list[str]) -> str:
