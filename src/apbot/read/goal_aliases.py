@@ -85,9 +85,8 @@ def _aliases(text: str, lines: list[str]) -> list[list[str]]:
 
 
 def _skip_spaces(line: str, k: int) -> int:
-    while k < len(line) and line[k] == " " and k - 1 < len(line):
-        k += 1
-    return k
+    """The first place at or after ``k`` that is not a space."""
+    return len(line) - len(line[k:].lstrip(" "))
 
 
 def _names(inside: str) -> list[list[str]]:
