@@ -99,8 +99,9 @@ _KEYPAD_WORDS = re.compile(r"\b(?:numbers?|numeric|digits?|keypad|numerals?)\b",
 
 
 def _cell_key(cell: str) -> str:
-    """A table cell as a key's printed name compares (no markup, case or end dots)."""
-    return re.sub(r"[*_`]+", "", cell).strip(" .:").upper()
+    """A table cell as a key's printed name compares (no markup, case or end dots, nor the
+    letter a lettered legend puts before the name: "(C) SPEED")."""
+    return re.sub(r"^\s*\([A-Za-z]\)\s+(?=\S)|[*_`]+", "", cell).strip(" .:").upper()
 
 
 def _keypad(r: Range, text: str) -> bool:

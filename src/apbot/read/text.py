@@ -21,6 +21,7 @@ from apbot.read.text_icons import _put, name_icons
 from apbot.read.text_pages import (
     _furniture,
     _page_breaks,
+    _page_title,
     _plain_heading,
     _reading_order,
     contents_lines,
@@ -228,11 +229,13 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
     sideways = _row_charts(raw_lines)
     markup = html_tables(raw_lines)
     previous, last = "", 0
+    rule_above = False
     for position, raw in enumerate(raw_lines, start=1):
         number = line_numbers[position - 1]
         if position - 1 in passed or position - 1 in furniture:
             continue
         # after a page break passed over, a line in capitals may start a new section
+        rule_above = rule_above or position > last + 1  # a page break passed over
         before, previous = ("" if position > last + 1 else previous), raw.strip()
         last = position
         if position - 1 in sideways:  # a chart printed sideways: turned upright
@@ -280,12 +283,14 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
         if not stripped or re.fullmatch(r"[-=_*~`#]{3,}", stripped):
             flush()
             header = ()
+            rule_above = rule_above or bool(raw.strip())  # (blank lines after the rule too)
             continue
+        page_top, rule_above = rule_above, False  # the first line of a page
         plain = (
             not stripped.startswith(("#", "-", "*", ">"))
             and (not before or re.search(r"[.!?:]$", before) or _plain_heading(before))
             and _plain_heading(stripped)
-        )
+        ) or (page_top and _page_title(stripped))
         if stripped.startswith("#") or plain:
             flush()
             header = ()

@@ -199,6 +199,23 @@ def _plain_heading(line: str) -> bool:
     return sub_level and short and rest[0].isupper() and not re.search(r"\d", rest)
 
 
+_TITLE_SMALL = {"of", "and", "the", "for", "to", "a", "an", "in", "on", "&"}
+
+
+def _page_title(line: str) -> bool:
+    """A page's first line written as a title in Title Case ("Control Panel", "Names of Parts"):
+    a plain-text manual's section heading, which names no capitals to tell it by; without it the
+    heading before the break ("CAUTION" of the safety pages) would hold for the whole manual."""
+    ws = line.split()
+    if (
+        not 1 <= len(ws) <= 5
+        or not 3 <= len(line) <= 40
+        or re.search(r"\d|\s{2,}|[.:;,!?|]$", line)
+    ):
+        return False
+    return ws[0][:1].isupper() and all(w[:1].isupper() or w in _TITLE_SMALL for w in ws)
+
+
 def _legend(parts: list[tuple[int, str, str]]) -> bool:
     """Rows of a legend or a table ("DELAY START button     Sets the finish time …"), not two
     columns of prose: the left parts are mostly short terms, each starting afresh, and the left

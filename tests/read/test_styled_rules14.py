@@ -1,0 +1,49 @@
+"""Rules found on styled manuals where a key's values went unread: a plain-text manual whose Title Case page headings were not seen (the safety page's
+"CAUTION" then held for the whole manual), on a small manual of our own."""
+
+from __future__ import annotations
+
+from apbot.model.schema import DiscreteVariable
+from apbot.read import read_manual
+from apbot.read.shapes import _cell_key
+from apbot.read.text import parse_manual
+
+
+def _values(model, name: str) -> list[str]:  # type: ignore[no-untyped-def]
+    var = model.variables[name]
+    assert isinstance(var, DiscreteVariable), var
+    return [str(v).lower() for v in var.values]
+
+
+# a fan heater's manual as text from a PDF: a safety page ending in "CAUTION", a rule, then
+# pages headed in Title Case
+HEATER = """Safety Precautions
+
+  WARNING
+Do not cover the heater.
+
+  CAUTION
+Do not touch the grille while it is hot.
+
+                                                     HT-20  2
+________________________________________________________________________________
+
+Control Panel
+Press HEAT to step through the output: LOW -> MID -> HIGH -> LOW ...
+"""
+
+
+def test_a_title_case_line_heading_a_page_starts_a_section() -> None:
+    units = parse_manual(HEATER).units
+    heat = next(u for u in units if "HEAT to step" in u.text)
+    assert heat.heading == "Control Panel"
+
+
+def test_a_page_heading_ends_the_safety_section_so_the_keys_values_are_read() -> None:
+    model = read_manual(HEATER, ["press_heat"]).model
+    assert _values(model, "heat") == ["low", "mid", "high"]
+
+
+def test_a_lettered_legend_row_names_its_key_without_the_letter() -> None:
+    assert _cell_key("(C) SPEED") == "SPEED"
+    assert _cell_key("(1) SPEED") == "(1) SPEED"  # (a number is the row's count, read apart)
