@@ -1,5 +1,6 @@
-"""Rules found on styled manuals where a key's values went unread: a plain-text manual whose Title Case page headings were not seen (the safety page's
-"CAUTION" then held for the whole manual), on a small manual of our own."""
+"""A rule found on styled manuals where a key's values went unread: a plain-text manual whose
+Title Case page headings were not seen (the safety page's "CAUTION" then held for the whole
+manual), on a small manual of our own."""
 
 from __future__ import annotations
 
