@@ -236,7 +236,8 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
             arrows = find_arrow_pieces(text)  # "1 h → … → 12 h one hour per press 12 h → …"
             if arrows and _fits("s", tokens) and _covers(arrows, ev.ranges):
                 pieces, ev.ranges = arrows, []
-            scale = scale_pieces(units, i)  # "Available temperatures (°C):" 160 ── 180 ── 200 ── 210
+            # "Available temperatures (°C):" then "160 ── 180 ── 200 ── 210 ── …": uneven stops
+            scale = scale_pieces(units, i)
             if scale and _fits(scale[0].unit, tokens) and spans_read(scale, ev.ranges):
                 pieces, ev.ranges = scale, []
             if pieces and _fits(pieces[0].unit, tokens):  # "0:30 – 12:00 30 min 12:00 – 24:00 1 h"
