@@ -41,7 +41,7 @@ def name_code_words(b: Builder) -> None:
             continue
         if set(values) <= _NOT_CODES:
             continue
-        lines = _own_lines(b)
+        lines = own_lines(b)
         if all(_CODE.fullmatch(v) for v in values):
             found = _legend_words(lines, values) or _definition_words(lines, values)
         else:
@@ -59,7 +59,7 @@ def name_code_words(b: Builder) -> None:
         )
 
 
-def _own_lines(b: Builder) -> list[str]:
+def own_lines(b: Builder) -> list[str]:
     """The manual's lines, blanked where codes are no setting's: under a troubleshooting,
     error-code or safety heading, or on a line naming models ("Models S / M / L")."""
     return ["" if _MODELS.search(line) else line for line in lines_outside_asides(b)]

@@ -77,6 +77,7 @@ from apbot.read.values import (
 )
 from apbot.read.values_elided import filled
 from apbot.read.values_pieces import find_amount_pieces, find_two_steps
+from apbot.read.values_scales import scale_pieces, spans_read
 from apbot.read.values_stepped import find_arrow_pieces, find_stepped_pieces
 from apbot.read.values_wraps import wrap_ends
 
@@ -235,6 +236,10 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
             arrows = find_arrow_pieces(text)  # "1 h → … → 12 h one hour per press 12 h → …"
             if arrows and _fits("s", tokens) and _covers(arrows, ev.ranges):
                 pieces, ev.ranges = arrows, []
+            # "Available temperatures (°C):" then "160 ── 180 ── 200 ── 210 ── …": uneven stops
+            scale = scale_pieces(units, i)
+            if scale and _fits(scale[0].unit, tokens) and spans_read(scale, ev.ranges):
+                pieces, ev.ranges = scale, []
             if pieces and _fits(pieces[0].unit, tokens):  # "0:30 – 12:00 30 min 12:00 – 24:00 1 h"
                 ev.ranges, ev.range_at = pieces, i
             elif ranges and not ev.ranges:

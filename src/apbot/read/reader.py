@@ -22,6 +22,7 @@ from apbot.read.cases_chosen import chosen_cases
 from apbot.read.cases_resets import apply_resets
 from apbot.read.cases_units import unit_ranges
 from apbot.read.cases_zones import zone_twins
+from apbot.read.code_amounts import read_code_amounts
 from apbot.read.code_words import name_code_words
 from apbot.read.codes import name_codes
 from apbot.read.guards_enabled import read_enabling_switches
@@ -69,6 +70,7 @@ def read_manual(
     unit_ranges(builder)
     name_codes(builder)
     name_code_words(builder)
+    read_code_amounts(builder)
     read_off_words(builder)
     read_held_off_words(builder)
     read_range_codes(builder)

@@ -1,0 +1,70 @@
+"""A scale of values printed on a line of its own under a sentence that introduces it, its
+steps uneven: "Available temperatures (°C):" then "160 ── 180 ── 200 ── 210 ── 220 ── 230 ──
+240", or "The available times are:" then a one-row table "| minutes | 4 | 6 | 8 | 10 | 15 |
+20 | 25 | 30 |". Every value is one stop of the setting, so the scale is its pieces, each run
+of equal gaps one piece with that step (160–200 by 20, 200–240 by 10). An even scale is one
+range, which values.py already reads; only the uneven ones are read here.
+"""
+
+from __future__ import annotations
+
+import itertools
+import re
+
+from apbot.read.text import Unit
+from apbot.read.values import UNIT, Range, number, unit_name
+
+# a run of one separator between numbers: dashes drawn as a line ("──", "--", "–"), arrows
+# ("→", "->") or table cells ("|"), the same one each time
+_SEPARATOR = r"\s*(?:[-─—–]+>?|→|►|\|)\s*"
+_NUMBER = r"\d+(?:[.,]\d+)?"
+_SCALE_RE = re.compile(
+    rf"^(?:(?P<lead>{UNIT})\s*\|\s*)?(?P<run>{_NUMBER}(?:{_SEPARATOR}{_NUMBER}){{3,}})"
+    rf"\s*(?P<unit>{UNIT}(?![\w]))?",
+    re.IGNORECASE,
+)
+_BRACKET_UNIT_RE = re.compile(rf"\(\s*({UNIT})\s*\)\s*:\s*$", re.IGNORECASE)
+
+
+def scale_pieces(units: list[Unit], i: int) -> list[Range]:
+    """The pieces of an uneven scale printed right under the sentence ``units[i]`` that ends
+    with a colon (its unit after the last value, in a first cell, or in brackets before the
+    colon: "Available temperatures (°C):"); else []."""
+    said = units[i].text.rstrip()
+    if not said.endswith(":") or i + 1 >= len(units):
+        return []
+    m = _SCALE_RE.match(units[i + 1].text.strip())
+    if m is None:
+        return []
+    separators = {s.strip() for s in re.findall(_SEPARATOR, m.group("run"))}
+    if len(separators) != 1:
+        return []  # "4 – 6 | 8": two kinds of joins, no one scale
+    figures = [number(x) for x in re.findall(_NUMBER, m.group("run"))]
+    values = [x for x in figures if x is not None]
+    if len(values) != len(figures) or values != sorted(set(values)):
+        return []  # a scale climbs; "022 → 018 → 010" are codes, not stops
+    bracket = _BRACKET_UNIT_RE.search(said)
+    unit = unit_name(m.group("unit") or m.group("lead") or (bracket and bracket.group(1)))
+    return uneven_pieces(values, unit)
+
+
+def uneven_pieces(values: list[float], unit: str) -> list[Range]:
+    """Runs of equal gaps as pieces, each with its gap as the step, when there are two or more
+    of them (160, 180, 200, 210, 220 → 160–200 by 20, 200–220 by 10); else []."""
+    pieces: list[Range] = []
+    for a, b in itertools.pairwise(values):
+        gap = round(b - a, 6)
+        if pieces and pieces[-1].step == gap:
+            pieces[-1] = Range(pieces[-1].low, b, unit, gap)
+        else:
+            pieces.append(Range(a, b, unit, gap))
+    return pieces if len(pieces) >= 2 else []
+
+
+def spans_read(pieces: list[Range], ranges: list[Range]) -> bool:
+    """Whether a scale spans what was read before it (nothing, or ranges in its unit, or in
+    none, lying inside its ends): the scale then says more, its steps included."""
+    return all(
+        r.unit in ("", pieces[0].unit) and pieces[0].low <= r.low and r.high <= pieces[-1].high
+        for r in ranges
+    )

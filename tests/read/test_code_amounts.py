@@ -1,0 +1,74 @@
+"""Display codes that carry an amount of time (code_amounts), on short manuals in our own
+words: the values become the amounts the display legend counts, the codes what it shows."""
+
+from __future__ import annotations
+
+from apbot.read import read_manual
+
+HEATER = """# WARMA FH-1 fan heater
+
+## Keys
+
+| Key | What it does |
+|---|---|
+| ⏻ | Switches the heater on and off. |
+| TURBO | Turbo heating: each touch adds 15 minutes. |
+
+## Display
+
+    t15 … t60 ....... turbo minutes left
+
+## Turbo
+
+Touch TURBO. Each touch adds 15 minutes, up to one hour:
+
+    off → t15 → t30 → t45 → t60 → off
+"""
+
+
+def test_codes_counting_minutes_become_the_minutes() -> None:
+    model = read_manual(HEATER, ["press_power", "press_turbo"]).model
+    turbo = model.variables["turbo"]
+    assert turbo.values == ["off", "15 min", "30 min", "45 min", "60 min"]
+    assert turbo.show == {"15 min": "t15", "30 min": "t30", "45 min": "t45", "60 min": "t60"}
+
+
+RADIO = """# NOTA CR-2 clock radio
+
+## Keys
+
+| Key | What it does |
+|---|---|
+| SNOOZE | Silences the alarm for a while. |
+| NAP | Nap timer. |
+
+## Display
+
+    NP 60 … NP 20 ....... nap timer minutes; NP OFF = no nap timer
+
+## Nap timer
+
+Press NAP repeatedly:
+
+    NP OFF → NP 60 → NP 40 → NP 20 → NP OFF …
+"""
+
+
+def test_a_code_for_none_is_off() -> None:
+    model = read_manual(RADIO, ["press_snooze", "press_nap"]).model
+    nap = next(v for n, v in model.variables.items() if "nap" in n)
+    assert nap.values == ["off", "60 min", "40 min", "20 min"]
+    assert nap.show == {"60 min": "NP 60", "40 min": "NP 40", "20 min": "NP 20", "off": "NP OFF"}
+
+
+PROGRAMMES = """BAKA BM-3 bread maker
+
+KEYS
+   MENU    next programme: P1 → P2 → P3 → P4 → P1
+"""
+
+
+def test_programme_codes_without_a_counting_legend_stay_codes() -> None:
+    model = read_manual(PROGRAMMES, ["press_menu"]).model
+    menu = next(v for n, v in model.variables.items() if "menu" in n)
+    assert menu.values == ["p1", "p2", "p3", "p4"]
