@@ -20,7 +20,15 @@ from apbot.read.goal_text import (
     turned_off_after,
     verb_positions,
 )
-from apbot.read.goal_view import PARTIAL, Goal, Model, own_stems, phrase_words
+from apbot.read.goal_view import (
+    PARTIAL,
+    UNNAMED,
+    Goal,
+    Model,
+    appliance_said,
+    own_stems,
+    phrase_words,
+)
 from apbot.read.goal_vocab import HIGHEST, LOWEST, SCALES, SYNONYMS, similar, stem
 from apbot.read.numbers import COUNT_NOUNS
 
@@ -39,7 +47,7 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
     matches: list[_Match] = []
     n = len(text.tokens)
     verbs = verb_positions(text)
-    itself = {stem(w) for w in re.findall(r"[a-z]+", _appliance_name(view))}
+    itself = {stem(w) for w in re.findall(r"[a-z]+", appliance_said(view.model))}
     heads = _head_nouns(view)
     works_on = itself - heads
     running = {stem(n) for n, info in view.infos.items() if info.role == "running"}
@@ -150,8 +158,9 @@ def _head_nouns(view: Model) -> set[str]:
     ("oven", "charger"): a word before them says what kind of appliance it is ("the
     convection oven"), not which programme to run."""
     appliance = view.model.appliance
+    name = "" if appliance.name == UNNAMED else appliance.name
     found = set()
-    for said in (appliance.name, appliance.category.replace("_", " ")):
+    for said in (name, appliance.category.replace("_", " ")):
         words = re.findall(r"[a-z]+", said.casefold())
         if words:
             found.add(stem(words[-1]))
@@ -212,11 +221,6 @@ def _qualifies_other(view: Model, var: str, text: Text, end: int) -> bool:
     following = text.word(end + 1)
     before = text.word(end - 2)
     return following[:1].isdigit() or following in NUMBER_WORDS or before in LOWEST | HIGHEST
-
-
-def _appliance_name(view: Model) -> str:
-    appliance = view.model.appliance
-    return f"{appliance.name} {appliance.category.replace('_', ' ')}".casefold()
 
 
 def _names_setting(view: Model, var: str, text: Text, i: int) -> bool:
@@ -319,6 +323,8 @@ def _match_at(text: Text, i: int, stems: tuple[str, ...]) -> tuple[int, float] |
             quality = min(quality, 0.8)  # "the air fryer" for AIR FRY
         elif len(stems) > 1 and len(here) >= 3 and target.startswith(here):
             quality = min(quality, 0.7)  # "frozen veg" for frozen vegetables
+        elif len(stems) == 1 and display_abbreviation(target, text.word(k)):
+            quality = min(quality, 0.7)  # "on slow" for SLO, "in green" for GRN
         else:
             return None
         k += 1
@@ -326,6 +332,29 @@ def _match_at(text: Text, i: int, stems: tuple[str, ...]) -> tuple[int, float] |
 
 
 _SPLIT_VERBS = frozenset({stem("keep")})
+_VOWELS = frozenset("aeiouy")
+
+
+def display_abbreviation(code: str, word: str) -> bool:
+    """A three-letter panel code is ``word`` cut short: its first three letters ("SLO" for slow,
+    "MAN" for manual, of a word at most twice as long) or its consonants ("FST" for fast, "GRN"
+    for green, "WHT" for white). A time unit, a number or an ordinal is never cut short so:
+    "a minute" is no MIN, "midnight" no MID, "second" no SEC."""
+    if len(code) != 3 or not code.isalpha() or len(word) <= 3 or word[0] != code[0]:
+        return False
+    if word in NUMBER_WORDS or word in _NOT_CUT or word.endswith("ly"):
+        return False
+    if word.startswith(code):
+        return len(word) <= 2 * len(code)
+    consonants = word[0] + "".join(c for c in word[1:] if c not in _VOWELS)
+    squeezed = re.sub(r"(.)\1+", r"\1", consonants)
+    return squeezed == code
+
+
+_NOT_CUT = frozenset(
+    {"minute", "minutes", "second", "seconds", "hour", "hours", "month", "months", "week", "weeks"}
+    | {"midday", "maxi", "mini", "lower", "higher", "highest", "lowest", "topped", "fryer"}
+)
 
 
 def _abbreviated_synonym(short: str, word: str) -> bool:

@@ -101,6 +101,18 @@ MAX_PHRASE_VALUES = 2_000
 """Values of one discrete variable matched as phrases; a longer list is matched by numbers only."""
 
 
+UNNAMED = "read from the manual"
+"""The name the reader gives the appliance it reads: it names nothing, and its words ("manual",
+"read") are no words for the appliance (a MANUAL mode is not "the appliance")."""
+
+
+def appliance_said(model: ApplianceModel) -> str:
+    """The appliance's name and category as a user may say them (casefolded; a read belief's
+    placeholder name left out)."""
+    name = "" if model.appliance.name == UNNAMED else model.appliance.name
+    return f"{name} {model.appliance.category.replace('_', ' ')}".strip().casefold()
+
+
 def _add_vocab(info: VarInfo, text: str, weight: float) -> None:
     for word in name_words(text):
         if word in STOP_WORDS or len(word) < 2:
@@ -189,9 +201,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
             info.turns = "off" if "off" in words else "on" if "on" in words else None
     phrases = _phrases(model, infos)
     start_values = start_values_of(model, infos)
-    appliance = {
-        concept(w) for w in name_words(model.appliance.name + " " + model.appliance.category)
-    }
+    appliance = {concept(w) for w in name_words(appliance_said(model))}
     appliance |= {
         concept(w)
         for w in (
