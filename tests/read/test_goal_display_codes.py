@@ -61,3 +61,25 @@ def test_time_units_and_other_words_are_no_codes() -> None:
 
 def test_manual_is_no_word_for_a_read_belief_appliance() -> None:
     assert parse_instruction(READ, "Manual mode, fan on slow.") == {"mode": "man", "fan": "slo"}
+
+
+def test_only_a_value_written_as_three_letters_is_a_code() -> None:
+    """FREE (stem "fre") is no code for "french"; PRE is no "press"."""
+    words = model_from(
+        """
+        controls: [{id: flow}, {id: wash}]
+        variables:
+          flow: {type: discrete, values: [free, metered], label: FLOW}
+          wash: {type: discrete, values: [pre, main], label: WASH}
+        actions:
+          press_flow: {control: flow}
+          press_wash: {control: wash}
+        features:
+          flow:
+            - {actions: [press_flow], variable: flow, effect: next}
+          wash:
+            - {actions: [press_wash], variable: wash, effect: next}
+        """
+    )
+    assert "flow" not in parse_instruction(words, "A French press of coffee.")
+    assert "wash" not in parse_instruction(words, "Press the wash key.")

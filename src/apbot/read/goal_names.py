@@ -29,7 +29,7 @@ from apbot.read.goal_view import (
     own_stems,
     phrase_words,
 )
-from apbot.read.goal_vocab import HIGHEST, LOWEST, SCALES, SYNONYMS, similar, stem
+from apbot.read.goal_vocab import HIGHEST, LOWEST, SCALES, STOP_WORDS, SYNONYMS, similar, stem
 from apbot.read.numbers import COUNT_NOUNS
 
 
@@ -54,7 +54,7 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
     for var, value, stems, weight in view.phrases:
         info = view.infos[var]
         for i in range(n):
-            found = _match_at(text, i, stems)
+            found = _match_at(text, i, stems, coded=_panel_code(value))
             if found is None:
                 continue
             end, quality = found
@@ -281,9 +281,12 @@ def _names_other(view: Model, var: str, text: Text, i: int, end: int) -> bool:
     return any(info.vocab.get(key, 0.0) for info in others)
 
 
-def _match_at(text: Text, i: int, stems: tuple[str, ...]) -> tuple[int, float] | None:
+def _match_at(
+    text: Text, i: int, stems: tuple[str, ...], coded: bool = False
+) -> tuple[int, float] | None:
     """End and quality of the phrase ``stems`` matched from token i (connectors may sit
-    between words; a synonym or a longer word that starts like the value counts less)."""
+    between words; a synonym or a longer word that starts like the value counts less; a
+    ``coded`` value, a three-letter panel code, also by the word it cuts short)."""
     k = i
     quality = 1.0
     for index, target in enumerate(stems):
@@ -323,7 +326,7 @@ def _match_at(text: Text, i: int, stems: tuple[str, ...]) -> tuple[int, float] |
             quality = min(quality, 0.8)  # "the air fryer" for AIR FRY
         elif len(stems) > 1 and len(here) >= 3 and target.startswith(here):
             quality = min(quality, 0.7)  # "frozen veg" for frozen vegetables
-        elif len(stems) == 1 and display_abbreviation(target, text.word(k)):
+        elif coded and display_abbreviation(target, text.word(k)):
             quality = min(quality, 0.7)  # "on slow" for SLO, "in green" for GRN
         else:
             return None
@@ -335,14 +338,20 @@ _SPLIT_VERBS = frozenset({stem("keep")})
 _VOWELS = frozenset("aeiouy")
 
 
+def _panel_code(value: Any) -> bool:
+    """A value written as three letters ("SLO", "GRN"): a code that may cut a word short (not
+    a longer word whose stem has three letters: "free", "time")."""
+    return isinstance(value, str) and len(value) == 3 and value.isalpha()
+
+
 def display_abbreviation(code: str, word: str) -> bool:
     """A three-letter panel code is ``word`` cut short: its first three letters ("SLO" for slow,
     "MAN" for manual, of a word at most twice as long) or its consonants ("FST" for fast, "GRN"
-    for green, "WHT" for white). A time unit, a number or an ordinal is never cut short so:
-    "a minute" is no MIN, "midnight" no MID, "second" no SEC."""
+    for green, "WHT" for white). A time unit, a number, an ordinal or a key's verb is never
+    cut short so: "a minute" is no MIN, "midnight" no MID, "second" no SEC, "press" no PRE."""
     if len(code) != 3 or not code.isalpha() or len(word) <= 3 or word[0] != code[0]:
         return False
-    if word in NUMBER_WORDS or word in _NOT_CUT or word.endswith("ly"):
+    if word in NUMBER_WORDS or word in _NOT_CUT or word in STOP_WORDS or word.endswith("ly"):
         return False
     if word.startswith(code):
         return len(word) <= 2 * len(code)
