@@ -106,3 +106,16 @@ def test_a_timer_up_to_24_hours_is_a_duration() -> None:
     lamp = loads_model(LAMP)
     assert parse_instruction(lamp, "Light for 14 hours")["timer"] == "14:00:00"
     assert "timer" not in parse_instruction(lamp, "Light at 7 in the morning")
+
+
+def test_a_read_dial_that_does_not_say_it_wraps_is_still_the_day() -> None:
+    """A reader seldom knows whether a dial wraps: a belief's FEED TIME 0:00-23:00 without
+    ``wrap`` is still the hours of a day, and a duration still goes elsewhere."""
+    read = loads_model(
+        SPRINKLER.replace("    wrap: true\n", "", 1).replace('"23:30:00", 1800', '"23:00:00", 60')
+    )
+    assert parse_instruction(read, "Water at 10 pm for 20 minutes") == {
+        "water_at": "22:00:00",
+        "minutes": 20,
+    }
+    assert parse_instruction(read, "at midnight")["water_at"] == "00:00:00"

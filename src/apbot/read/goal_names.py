@@ -20,8 +20,16 @@ from apbot.read.goal_text import (
     turned_off_after,
     verb_positions,
 )
-from apbot.read.goal_view import PARTIAL, Goal, Model, own_stems, phrase_words
-from apbot.read.goal_vocab import HIGHEST, LOWEST, SCALES, SYNONYMS, similar, stem
+from apbot.read.goal_view import (
+    PARTIAL,
+    UNNAMED,
+    Goal,
+    Model,
+    appliance_said,
+    own_stems,
+    phrase_words,
+)
+from apbot.read.goal_vocab import HIGHEST, LOWEST, SCALES, STOP_WORDS, SYNONYMS, similar, stem
 from apbot.read.numbers import COUNT_NOUNS
 
 
@@ -39,14 +47,14 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
     matches: list[_Match] = []
     n = len(text.tokens)
     verbs = verb_positions(text)
-    itself = {stem(w) for w in re.findall(r"[a-z]+", _appliance_name(view))}
+    itself = {stem(w) for w in re.findall(r"[a-z]+", appliance_said(view.model))}
     heads = _head_nouns(view)
     works_on = itself - heads
     running = {stem(n) for n, info in view.infos.items() if info.role == "running"}
     for var, value, stems, weight in view.phrases:
         info = view.infos[var]
         for i in range(n):
-            found = _match_at(text, i, stems)
+            found = _match_at(text, i, stems, coded=_panel_code(value))
             if found is None:
                 continue
             end, quality = found
@@ -150,8 +158,9 @@ def _head_nouns(view: Model) -> set[str]:
     ("oven", "charger"): a word before them says what kind of appliance it is ("the
     convection oven"), not which programme to run."""
     appliance = view.model.appliance
+    name = "" if appliance.name == UNNAMED else appliance.name
     found = set()
-    for said in (appliance.name, appliance.category.replace("_", " ")):
+    for said in (name, appliance.category.replace("_", " ")):
         words = re.findall(r"[a-z]+", said.casefold())
         if words:
             found.add(stem(words[-1]))
@@ -214,11 +223,6 @@ def _qualifies_other(view: Model, var: str, text: Text, end: int) -> bool:
     return following[:1].isdigit() or following in NUMBER_WORDS or before in LOWEST | HIGHEST
 
 
-def _appliance_name(view: Model) -> str:
-    appliance = view.model.appliance
-    return f"{appliance.name} {appliance.category.replace('_', ' ')}".casefold()
-
-
 def _names_setting(view: Model, var: str, text: Text, i: int) -> bool:
     """The word at i is another setting's own name and one of that setting's values stands
     right beside it ("low fan", "fan on quiet", "high fan")."""
@@ -277,9 +281,12 @@ def _names_other(view: Model, var: str, text: Text, i: int, end: int) -> bool:
     return any(info.vocab.get(key, 0.0) for info in others)
 
 
-def _match_at(text: Text, i: int, stems: tuple[str, ...]) -> tuple[int, float] | None:
+def _match_at(
+    text: Text, i: int, stems: tuple[str, ...], coded: bool = False
+) -> tuple[int, float] | None:
     """End and quality of the phrase ``stems`` matched from token i (connectors may sit
-    between words; a synonym or a longer word that starts like the value counts less)."""
+    between words; a synonym or a longer word that starts like the value counts less; a
+    ``coded`` value, a three-letter panel code, also by the word it cuts short)."""
     k = i
     quality = 1.0
     for index, target in enumerate(stems):
@@ -319,6 +326,8 @@ def _match_at(text: Text, i: int, stems: tuple[str, ...]) -> tuple[int, float] |
             quality = min(quality, 0.8)  # "the air fryer" for AIR FRY
         elif len(stems) > 1 and len(here) >= 3 and target.startswith(here):
             quality = min(quality, 0.7)  # "frozen veg" for frozen vegetables
+        elif coded and display_abbreviation(target, text.word(k)):
+            quality = min(quality, 0.7)  # "on slow" for SLO, "in green" for GRN
         else:
             return None
         k += 1
@@ -326,6 +335,35 @@ def _match_at(text: Text, i: int, stems: tuple[str, ...]) -> tuple[int, float] |
 
 
 _SPLIT_VERBS = frozenset({stem("keep")})
+_VOWELS = frozenset("aeiouy")
+
+
+def _panel_code(value: Any) -> bool:
+    """A value written as three letters ("SLO", "GRN"): a code that may cut a word short (not
+    a longer word whose stem has three letters: "free", "time")."""
+    return isinstance(value, str) and len(value) == 3 and value.isalpha()
+
+
+def display_abbreviation(code: str, word: str) -> bool:
+    """A three-letter panel code is ``word`` cut short: its first three letters ("SLO" for slow,
+    "MAN" for manual, of a word at most twice as long) or its consonants ("FST" for fast, "GRN"
+    for green, "WHT" for white). A time unit, a number, an ordinal or a key's verb is never
+    cut short so: "a minute" is no MIN, "midnight" no MID, "second" no SEC, "press" no PRE."""
+    if len(code) != 3 or not code.isalpha() or len(word) <= 3 or word[0] != code[0]:
+        return False
+    if word in NUMBER_WORDS or word in _NOT_CUT or word in STOP_WORDS or word.endswith("ly"):
+        return False
+    if word.startswith(code):
+        return len(word) <= 2 * len(code)
+    consonants = word[0] + "".join(c for c in word[1:] if c not in _VOWELS)
+    squeezed = re.sub(r"(.)\1+", r"\1", consonants)
+    return squeezed == code
+
+
+_NOT_CUT = frozenset(
+    {"minute", "minutes", "second", "seconds", "hour", "hours", "month", "months", "week", "weeks"}
+    | {"midday", "maxi", "mini", "lower", "higher", "highest", "lowest", "topped", "fryer"}
+)
 
 
 def _abbreviated_synonym(short: str, word: str) -> bool:

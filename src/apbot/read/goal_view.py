@@ -101,6 +101,18 @@ MAX_PHRASE_VALUES = 2_000
 """Values of one discrete variable matched as phrases; a longer list is matched by numbers only."""
 
 
+UNNAMED = "read from the manual"
+"""The name the reader gives the appliance it reads: it names nothing, and its words ("manual",
+"read") are no words for the appliance (a MANUAL mode is not "the appliance")."""
+
+
+def appliance_said(model: ApplianceModel) -> str:
+    """The appliance's name and category as a user may say them (casefolded; a read belief's
+    placeholder name left out)."""
+    name = "" if model.appliance.name == UNNAMED else model.appliance.name
+    return f"{name} {model.appliance.category.replace('_', ' ')}".strip().casefold()
+
+
 def _add_vocab(info: VarInfo, text: str, weight: float) -> None:
     for word in name_words(text):
         if word in STOP_WORDS or len(word) < 2:
@@ -189,9 +201,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
             info.turns = "off" if "off" in words else "on" if "on" in words else None
     phrases = _phrases(model, infos)
     start_values = start_values_of(model, infos)
-    appliance = {
-        concept(w) for w in name_words(model.appliance.name + " " + model.appliance.category)
-    }
+    appliance = {concept(w) for w in name_words(appliance_said(model))}
     appliance |= {
         concept(w)
         for w in (
@@ -277,11 +287,12 @@ def _forms(infos: dict[str, VarInfo]) -> dict[str, dict[Any, list[str]]]:
     return out
 
 
-def _whole_day(info: VarInfo) -> bool:
-    """A time setting that wraps round a whole day (00:00 to 23:xx): a time of day."""
+def _whole_day(info: VarInfo, wraps: bool = True) -> bool:
+    """A time setting that wraps round a whole day (00:00 to 23:xx): a time of day. With
+    ``wraps`` False, one that only spans it (a read belief seldom knows whether it wraps)."""
     var = info.var
     values = info.values
-    if not isinstance(var, TimeVariable) or not var.wrap or not values:
+    if not isinstance(var, TimeVariable) or (wraps and not var.wrap) or not values:
         return False
     first, last = magnitude(values[0]), magnitude(values[-1])
     return first == 0 and last is not None and last >= 23 * 3600
@@ -300,8 +311,10 @@ def _day_dial(info: VarInfo) -> bool:
     """A whole-day time setting that stops short of 24:00 (00:00 to 23:xx): the hours of a day
     on a 24-hour dial, not a count of up to 24 hours (a 0-24 h timer ends at 24:00). One the
     model says starts at 00:00 is a timer counting from empty (a keep-warm of 0 to 23 hours):
-    a time of day to feed or to start at starts at a time of day (07:00), or is not stated."""
-    last = magnitude(info.values[-1]) if _whole_day(info) else None
+    a time of day to feed or to start at starts at a time of day (07:00), or is not stated.
+    Whether it wraps is not asked: a read belief (REGEN TIME 0:00-23:00, a mowing START
+    0:00-23:30) seldom knows, and the day's last hour, not 24:00, already says a dial."""
+    last = magnitude(info.values[-1]) if _whole_day(info, wraps=False) else None
     return last is not None and last < 24 * 3600 and not _starts_empty(info.var)
 
 

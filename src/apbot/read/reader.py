@@ -25,6 +25,7 @@ from apbot.read.cases_zones import zone_twins
 from apbot.read.code_amounts import read_code_amounts
 from apbot.read.code_words import name_code_words
 from apbot.read.codes import name_codes
+from apbot.read.goal_view import UNNAMED
 from apbot.read.guards_enabled import read_enabling_switches
 from apbot.read.held_walks import read_held_walks
 from apbot.read.hold_seconds import hold_seconds, pair_hold_seconds
@@ -192,7 +193,7 @@ def _assemble(b: Builder, appliance_id: str, category: str) -> dict[str, Any]:
                 "variables.power.show", "switching on lights the display (what it shows: not read)"
             )
     return {
-        "appliance": {"id": appliance_id, "category": category, "name": "read from the manual"},
+        "appliance": {"id": appliance_id, "category": category, "name": UNNAMED},
         "controls": _controls(b),
         "variables": b.variables,
         "actions": _actions(b),

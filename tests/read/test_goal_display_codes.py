@@ -1,0 +1,85 @@
+"""Values a panel shows as three-letter codes ("SLO", "FST", "GRN", "MAN"), named by the words
+they cut short (``goal_names.display_abbreviation``); and a read belief's placeholder name,
+whose words ("read from the manual") are no words for the appliance (``goal_view.UNNAMED``)."""
+
+from __future__ import annotations
+
+from apbot.read.goal import parse_instruction
+from apbot.read.goal_names import display_abbreviation
+from apbot.read.goal_view import UNNAMED
+from tests.helpers import model_from
+
+# a drying cabinet whose display abbreviates: fan SLO / MED / FST, lamp WHT / GRN, AUTO / MAN
+CABINET = """
+    controls: [{id: fan}, {id: lamp}, {id: mode}, {id: level}, {id: time}]
+    variables:
+      fan: {type: discrete, values: [slo, med, fst], label: FAN}
+      lamp: {type: discrete, values: [wht, grn, red], label: LAMP}
+      mode: {type: discrete, values: [auto, man], label: MODE}
+      level: {type: discrete, values: [min, mid, max], label: LEVEL}
+      time: {type: numeric, ranges: [[1, 60, 1]], unit: min, label: TIME}
+    actions:
+      press_fan: {control: fan}
+      press_lamp: {control: lamp}
+      press_mode: {control: mode}
+      press_level: {control: level}
+      press_time: {control: time}
+    features:
+      fan:
+        - {actions: [press_fan], variable: fan, effect: next}
+      lamp:
+        - {actions: [press_lamp], variable: lamp, effect: next}
+      mode:
+        - {actions: [press_mode], variable: mode, effect: next}
+      level:
+        - {actions: [press_level], variable: level, effect: next}
+      time:
+        - {actions: [press_time], variable: time, effect: next}
+    """
+SHORT = model_from(CABINET)
+READ = model_from(f"\n    appliance: {{id: t, category: dryer, name: {UNNAMED}}}" + CABINET)
+
+
+def test_a_code_is_the_word_it_cuts_short() -> None:
+    assert parse_instruction(SHORT, "The fan on fast and the lamp in green.") == {
+        "fan": "fst",
+        "lamp": "grn",
+    }
+    assert parse_instruction(SHORT, "A slow fan with white light.") == {
+        "fan": "slo",
+        "lamp": "wht",
+    }
+
+
+def test_time_units_and_other_words_are_no_codes() -> None:
+    assert display_abbreviation("min", "minute") is False
+    assert display_abbreviation("mid", "midnight") is False
+    assert display_abbreviation("fst", "first") is False
+    assert display_abbreviation("man", "manually") is False
+    assert parse_instruction(SHORT, "Run it for a minute.") == {"time": 1}
+
+
+def test_manual_is_no_word_for_a_read_belief_appliance() -> None:
+    assert parse_instruction(READ, "Manual mode, fan on slow.") == {"mode": "man", "fan": "slo"}
+
+
+def test_only_a_value_written_as_three_letters_is_a_code() -> None:
+    """FREE (stem "fre") is no code for "french"; PRE is no "press"."""
+    words = model_from(
+        """
+        controls: [{id: flow}, {id: wash}]
+        variables:
+          flow: {type: discrete, values: [free, metered], label: FLOW}
+          wash: {type: discrete, values: [pre, main], label: WASH}
+        actions:
+          press_flow: {control: flow}
+          press_wash: {control: wash}
+        features:
+          flow:
+            - {actions: [press_flow], variable: flow, effect: next}
+          wash:
+            - {actions: [press_wash], variable: wash, effect: next}
+        """
+    )
+    assert "flow" not in parse_instruction(words, "A French press of coffee.")
+    assert "wash" not in parse_instruction(words, "Press the wash key.")
