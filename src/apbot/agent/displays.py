@@ -83,10 +83,15 @@ class DisplayLearner:
             session.episode.log("repair", f"could not repair how {name} is shown: {exc}")
             return False
         reader = DisplayReader(new)
-        if any(
-            not any(h.screen.variable == name for h in reader.read(text).hypotheses)
-            for text in mains
-        ):
+        readings = [
+            [h for h in reader.read(t).hypotheses if h.screen.variable == name] for t in mains
+        ]
+        if not all(readings):
+            return False
+        words = isinstance(spec, DiscreteVariable) and len(mains) > 1
+        if words and not any(name in h.values for found in readings for h in found):
+            # no text shows a value the setting has: the panel's own words for its values,
+            # which the walk pairs with them (``apbot.agent.renamed``), not new values
             return False
         how = f"{template!r} ({style})" if style else repr(template)
         how += " (no unit)" if unitless else ""
