@@ -19,6 +19,11 @@ setting's number, a clock — nor a text without the label where the walk read t
 other values with it). They become the values' ``show`` templates
 (a data edit, kept only if the repaired belief reads every such text back as its value), and
 the walk is read again in the belief's values, so nothing else is learnt wrong from it.
+
+A panel that lights a setting beside the others (``M1  40 °C``, a lamp ``KEEP WARM`` after the
+programme) and prints nothing for its "off" shows texts the belief reads as the other
+settings' screens: what the walk's texts do not all share is the setting's own part
+(:func:`own_parts`), and the part printed as nothing anchors the pairing at "off".
 """
 
 from __future__ import annotations
