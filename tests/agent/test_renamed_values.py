@@ -256,3 +256,76 @@ def test_words_unlike_their_values_with_none_read_are_not_paired_by_order_alone(
     # (run_checked fails on the false claim of success the shifted pairing led to)
     episode, _ = run(model_from(DRYER_TRUTH), model_from(belief), {"power": "high"})
     assert not any("power prints" in note for note in episode.repairs), episode.repairs
+
+
+# a foot bath whose roller level is lit beside the water's temperature as M1 … M3, and nothing
+# at all for rollers off; the manual's reader knows only the levels and the key's order
+BATH_TRUTH = """
+controls: [{id: rollers, label: ROLLERS}, {id: temp, label: TEMP}]
+variables:
+  rollers:
+    type: discrete
+    values: ["off", "1", "2", "3"]
+    label: ROLLERS
+    show: {"off": "", "1": "M1", "2": "M2", "3": "M3"}
+  water: {type: numeric, ranges: [[35, 45, 1]], initial: 40, wrap: true, label: TEMP, unit: "°C"}
+actions:
+  press_rollers: {control: rollers}
+  press_temp: {control: temp}
+features:
+  rollers:
+    - {actions: [press_rollers], variable: rollers, effect: next}
+  water:
+    - {actions: [press_temp], variable: water, effect: next}
+display:
+  idle: "READY"
+  indicators: [water, rollers]
+"""
+
+BATH_BELIEF = """
+controls: [{id: rollers, label: ROLLERS}, {id: temp, label: TEMP}]
+variables:
+  rollers: {type: discrete, values: ["off", "1", "2", "3"], label: ROLLERS}
+  water: {type: numeric, ranges: [[35, 45, 1]], initial: 40, wrap: true, label: TEMP, unit: "°C"}
+actions:
+  press_rollers: {control: rollers}
+  press_temp: {control: temp}
+features:
+  rollers:
+    - {actions: [press_rollers], variable: rollers, effect: next}
+  water:
+    - {actions: [press_temp], variable: water, effect: next}
+display:
+  idle: "READY"
+  indicators: [water]
+"""
+
+
+def test_levels_lit_beside_another_setting_are_learnt_from_the_part_that_changes() -> None:
+    episode, reached = run(model_from(BATH_TRUTH), model_from(BATH_BELIEF), {"rollers": "3"})
+    assert reached, episode.repairs
+    assert any("rollers prints" in n and "'nothing'" in n for n in episode.repairs)
+
+
+def test_a_warmer_lamp_in_two_words_is_its_on_and_nothing_its_off() -> None:
+    truth = (
+        BATH_TRUTH.replace('"1", "2", "3"]', '"on"]')
+        .replace('"1": "M1", "2": "M2", "3": "M3"', '"on": "KEEP WARM"')
+        .replace("effect: next}\n  water", "effect: toggle}\n  water", 1)
+    )
+    belief = BATH_BELIEF.replace('"1", "2", "3"]', '"on"]').replace(
+        "effect: next}\n  water", "effect: toggle}\n  water", 1
+    )
+    episode, reached = run(model_from(truth), model_from(belief), {"rollers": "on"})
+    assert reached, episode.repairs
+
+
+def test_colours_for_heat_levels_are_words_for_them_not_new_values() -> None:
+    # HEAT AMBER for low, HEAT RED for high: the goal's "high" must stay a value
+    truth = BATH_TRUTH.replace('"1", "2", "3"]', "low, high]").replace(
+        '"1": "M1", "2": "M2", "3": "M3"', 'low: "HEAT AMBER", high: "HEAT RED"'
+    )
+    belief = BATH_BELIEF.replace('"1", "2", "3"]', "low, high]")
+    episode, reached = run(model_from(truth), model_from(belief), {"rollers": "high"})
+    assert reached, episode.repairs
+    assert not any("values" in n and "AMBER" in n for n in episode.repairs), episode.repairs

@@ -75,12 +75,20 @@ class DisplayLearner:
             return False
         template, style, unitless = found
         key = f"{name}:{template}:{style}" if style else f"{name}:{template}"
+        try:
+            new: ApplianceModel | None = set_display(
+                model, name, template, style, drop_unit=unitless
+            )
+        except RepairError as exc:
+            new, problem = None, exc
+        if new is not None and _no_value_shown(new, name, mains):
+            # the panel's own words for its values, which the walk pairs with them
+            # (``apbot.agent.renamed``), not new values; asked again after more texts
+            return False
         if not session.budget.once("template", key):
             return False
-        try:
-            new = set_display(model, name, template, style, drop_unit=unitless)
-        except RepairError as exc:
-            session.episode.log("repair", f"could not repair how {name} is shown: {exc}")
+        if new is None:
+            session.episode.log("repair", f"could not repair how {name} is shown: {problem}")
             return False
         reader = DisplayReader(new)
         if any(
@@ -353,6 +361,20 @@ def names_value(spec: Any, name: str, word: str, value: Any, domain: Sequence[An
     own = {w.casefold() for w in re.split(r"[\W_]+", f"{label} {name}") if len(w) >= 2}
     parts = [w for w in re.split(r"[\W_]+", said) if w]
     return bool(parts) and all(p in own for p in parts)
+
+
+def _no_value_shown(model: ApplianceModel, name: str, mains: Sequence[str]) -> bool:
+    """Whether several texts of a choice, read through ``model``'s new template, show none of
+    its values: every word they put in the value's place is one the setting lacks."""
+    if not isinstance(model.variables[name], DiscreteVariable) or len(mains) < 2:
+        return False
+    reader = DisplayReader(model)
+    return not any(
+        name in h.values
+        for text in mains
+        for h in reader.read(text).hypotheses
+        if h.screen.variable == name
+    )
 
 
 def _parts(text: str) -> set[str]:

@@ -17,7 +17,7 @@ from apbot.agent.displays import DisplayLearner
 from apbot.agent.infer import Dark, Unread
 from apbot.agent.perception import Seen
 from apbot.agent.quantities import summary
-from apbot.agent.renamed import rename_walk, translate
+from apbot.agent.renamed import by_own_parts, rename_walk, translate
 from apbot.agent.repair import RepairError
 from apbot.agent.session import MISSING, Executed, Session
 from apbot.agent.time_styles import restyle_walk
@@ -36,6 +36,8 @@ class Explorer(WalkLearning):
         self.displays = displays
         # the last walk stayed on one value with no other key to try: (setting, step, key)
         self.stuck: tuple[str, tuple[str, int], PlannedAction] | None = None
+        # the last walk renamed was learnt by its parts of the display that changed
+        self._by_own_parts = False
 
     def explore(self, name: str, last: Executed, history: list[Any] | None = None) -> None:
         """Explore ``name`` with ``last``'s key (from the step ``last`` left the belief in)."""
@@ -70,7 +72,7 @@ class Explorer(WalkLearning):
                 else ""
             ),
         )
-        renamed, learnt = False, None
+        renamed, learnt, every = False, None, False
         if not swapped:
             # the belief's own words for the texts first (a template, one value's word); else
             # the walk may be the belief's own with values printed otherwise
@@ -81,6 +83,7 @@ class Explorer(WalkLearning):
             if not learnt:
                 walks = self._renamed(name, last, key, opposite, forward, backward, history)
                 renamed = walks is not None
+                every = self._by_own_parts  # the walk went round every value: nothing is stuck
                 forward, backward = walks if walks is not None else (forward, backward)
         forward, backward = self._read_unread(
             name, forward, backward, last.predicted, learnt, self._start_read(name, last)
@@ -96,8 +99,8 @@ class Explorer(WalkLearning):
         self.stuck = None
         if len(set(map(repr, seen))) >= 2 and not renamed:  # renamed: the walk was as predicted
             self.learn(name, pointer, key.name, opposite, forward, backward, current)
-        elif opposite is None:  # one value over and over, no other key in the step: at an end,
-            # or not this key's setting at all — nothing to say about the range
+        elif opposite is None and not every:  # one value over and over, no other key in the
+            # step: at an end, or not this key's setting at all — nothing to say about the range
             self.stuck = (name, pointer, key)
         self.session.belief.set_value(name, current)
         for _ in range(unseen):  # presses taken in the dark: the (repaired) model says where to
@@ -167,6 +170,7 @@ class Explorer(WalkLearning):
         """A walk that is the belief's own with some values printed in other words: learn
         those words (:mod:`apbot.agent.renamed`) and read the walk in the belief's values
         (None: not such a walk)."""
+        self._by_own_parts = False
         opened = len(history) - 1 if history and forward[: len(history)] == history else 0
         if not forward[opened:] or forward[opened] != self._value(name, last.seen):
             return None  # the walk does not open on the display ``last`` left
@@ -174,6 +178,7 @@ class Explorer(WalkLearning):
         if backward is not None and opposite is not None:
             walks.append((backward, opposite.name))
         pairs = rename_walk(self.session, self.displays.main, name, last, walks, key.seconds)
+        self._by_own_parts = pairs is not None and by_own_parts(pairs)
         if pairs is None:
             return None
         main = self.displays.main

@@ -19,6 +19,11 @@ setting's number, a clock — nor a text without the label where the walk read t
 other values with it). They become the values' ``show`` templates
 (a data edit, kept only if the repaired belief reads every such text back as its value), and
 the walk is read again in the belief's values, so nothing else is learnt wrong from it.
+
+A panel that lights a setting beside the others (``M1  40 °C``, a lamp ``KEEP WARM`` after the
+programme) and prints nothing for its "off" shows texts the belief reads as the other
+settings' screens: what the walk's texts do not all share is the setting's own part
+(:func:`own_parts`), and the part printed as nothing anchors the pairing at "off".
 """
 
 from __future__ import annotations
@@ -27,12 +32,13 @@ import re
 from collections.abc import Sequence
 from typing import Any
 
-from apbot.agent.displays import spells_value
+from apbot.agent.displays import names_value, spells_value
 from apbot.agent.infer import Dark, Unread
 from apbot.agent.reader import DisplayReader
-from apbot.agent.repair import RepairError, set_display
+from apbot.agent.repair import RepairError, add_indicator, set_display
 from apbot.agent.session import Executed, Session
-from apbot.model.display import display_value, show_template
+from apbot.agent.setting_texts import GAP
+from apbot.model.display import OFF_WORDS, display_value, show_template
 from apbot.model.schema import TEMPLATE_FIELD
 
 _MAX_LISTED = 60  # a template per value for more values than this is no edit worth making
@@ -107,7 +113,9 @@ def rename_walk(
         return None
     reader = session.perceiver.reader
     if any(isinstance(v, Unread) and reader.read(v.text).hypotheses for v in trace):
-        return None  # another setting's screen, not this one's in other words
+        # another setting's screen, not this one's in other words — unless the walk's texts
+        # differ only by a part of their own (the others' parts stay put): that part is it
+        return _rename_own(session, name, last, walks, seconds)
     spec = session.belief.model.variables[name]
     if not spec.visible:
         return None
@@ -123,7 +131,7 @@ def rename_walk(
     domain = session.domain_values(name)
     pairs = pairing(tokens, predicted, domain)
     if pairs is None:
-        return None
+        return _rename_own(session, name, last, walks, seconds)
     if not any(repr(t) in set(map(repr, domain)) for t in tokens) and not any(
         _resembles(spec, name, t, v) for t, v in pairs.items()
     ):
@@ -177,8 +185,126 @@ def rename_walk(
 
 
 def translate(walk: Sequence[Any], pairs: dict[Any, Any], main: Any) -> list[Any]:
-    """A walk read again in the belief's values, after :func:`rename_walk` learnt ``pairs``."""
-    return [pairs.get(_token(v, main), v) for v in walk]
+    """A walk read again in the belief's values, after :func:`rename_walk` learnt ``pairs``
+    (an unread text by the whole of it where its own part was learnt)."""
+    return [
+        pairs.get(("whole", v.text), pairs.get(_token(v, main), v))
+        if isinstance(v, Unread)
+        else pairs.get(v, v)
+        for v in walk
+    ]
+
+
+def by_own_parts(pairs: dict[Any, Any]) -> bool:
+    """Whether :func:`rename_walk` learnt ``pairs`` from the walk's own parts
+    (:func:`own_parts`): such a walk went round every value of the setting."""
+    return any(isinstance(t, tuple) and t[0] == "whole" for t in pairs)
+
+
+def own_parts(texts: Sequence[str]) -> dict[str, str] | None:
+    """Each text's own part: its parts (as the display spaces them) that are not in every
+    text — a setting walked on a display that also prints other settings, which stay put.
+    None unless some text has no such part (the setting's value printed as nothing) and
+    some text has one.
+
+    >>> own_parts(["M1  40  °C", "M2  40  °C", "40  °C"])
+    {'M1  40  °C': 'M1', 'M2  40  °C': 'M2', '40  °C': ''}
+    >>> own_parts(["KEEP WARM  FORMULA", "FORMULA"])
+    {'KEEP WARM  FORMULA': 'KEEP WARM', 'FORMULA': ''}
+    >>> own_parts(["A  1", "B  2"]) is None  # every part changes: no part stays put
+    True
+    """
+    split = {t: [p for p in GAP.split(t.strip()) if p] for t in dict.fromkeys(texts)}
+    if len(split) < 2:
+        return None
+    common = set.intersection(*(set(parts) for parts in split.values()))
+    own = {t: "  ".join(p for p in parts if p not in common) for t, parts in split.items()}
+    if not common or all(own.values()) or not any(own.values()):
+        return None
+    return own
+
+
+def _named(spec: Any, name: str, pairs: dict[Any, Any], domain: Sequence[Any]) -> bool:
+    """Whether a word paired with a value names it: the value's own word among its words
+    ("FLOW ON" for on), or the setting's name or label ("KEEP WARM" for keep-warm on)."""
+    return any(
+        part
+        and (
+            names_value(spec, name, part, value, domain)
+            or any(spells_value(word, value) for word in part.split())
+        )
+        for part, value in pairs.items()
+    )
+
+
+def _rename_own(
+    session: Session,
+    name: str,
+    last: Executed,
+    walks: Sequence[tuple[list[Any], str]],
+    seconds: float | None,
+) -> dict[Any, Any] | None:
+    """A walk of texts the belief cannot read as the setting, which differ only by a part of
+    their own (:func:`own_parts`), printed as nothing for the setting's "off": those parts
+    are its values' words, paired with the values the belief predicts press by press. Kept
+    only where the walk went round (each part came back as the same value), the part printed
+    as nothing is the one off value, no part reads as another setting, and the repaired
+    belief reads every whole text back as its value. The pairs learnt, by whole text."""
+    trace = [v for walk, _ in walks for v in walk]
+    if not all(isinstance(v, Unread) for v in trace):
+        return None
+    spec = session.belief.model.variables[name]
+    if not spec.visible:
+        return None
+    own = own_parts([v.text for v in trace])
+    if own is None:
+        return None
+    keys = [key for walk, key in walks for _ in walk[1:]]
+    predicted = predicted_walk(session, name, last, keys, seconds)
+    if predicted is None:
+        return None
+    shown: list[str] = []
+    for index, (walk, _) in enumerate(walks):
+        shown += [v.text for v in (walk if index == 0 else walk[1:])]
+    tokens = [own[text] for text in shown]
+    if tokens[-1] not in tokens[:-1]:
+        return None  # the walk never came round: no second sight of any part
+    domain = session.domain_values(name)
+    pairs = pairing(tokens, predicted, domain)
+    if pairs is None or set(map(repr, pairs.values())) != set(map(repr, domain)):
+        return None  # every value, each with its own part
+    if str(pairs.get("", "")).casefold() not in OFF_WORDS:
+        return None  # nothing printed is "off", or the walk has no anchor
+    if len(domain) == 2 and not last.start_shown(name) and not _named(spec, name, pairs, domain):
+        return None  # from a guessed start either value may be the word's: it must say which
+    reader = session.perceiver.reader
+    for part in pairs:
+        if part and any(h.screen.variable != name for h in reader.read(part).hypotheses):
+            return None  # another setting's screen: not this one's word
+    if not session.budget.once("template", f"{name}:own:" + "|".join(map(str, pairs))):
+        return None
+    show = {str(value): part for part, value in pairs.items()}
+    try:
+        # always on the display beside the others, as a lamp is: its absence is "off"
+        new = add_indicator(set_display(session.belief.model, name, show), name)
+    except RepairError as exc:
+        session.episode.log("repair", f"could not repair how {name} is shown: {exc}")
+        return None
+    repaired = DisplayReader(new)
+    context = session.belief.values()
+    for text in own:
+        value = pairs[own[text]]
+        reading = repaired.read(text, {**context, name: value})
+        found = {repr(v) for v in reading.candidates(name)}
+        # a part read as its value (a partial reading may also take it for the lamp unlit);
+        # a text without one, as nothing else
+        if repr(value) not in found or (not own[text] and found != {repr(value)}):
+            session.episode.log("repair", f"own part: {text!r} reads {found} not {value!r}")
+            return None
+    words = ", ".join(f"{v} as {part or 'nothing'!r}" for part, v in pairs.items())
+    session.adopt(new, f"{name} prints {words}", session.belief.pointer())
+    session.reread()  # the display now, read with the words learnt: the setting is seen
+    return {("whole", text): pairs[part] for text, part in own.items()}
 
 
 def _resembles(spec: Any, name: str, token: Any, value: Any) -> bool:
