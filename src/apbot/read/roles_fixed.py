@@ -17,10 +17,15 @@ from apbot.read.roles_common import (
     mentions_of,
 )
 from apbot.read.roles_holdcell import held_lock, held_toggle
-from apbot.read.roles_holds import held_named_switch, held_other_job, held_power, held_start
+from apbot.read.roles_holds import (
+    add_held_setting,
+    held_named_switch,
+    held_other_job,
+    held_power,
+    held_start,
+)
 from apbot.read.shapes import RUNNING_RE, STOP_WORDS
 from apbot.read.shown import LOCK_CUE, RUNNING_CUE, shown_words
-from apbot.read.values import UNIT
 
 _DELIVERED_ON_RE = re.compile(
     r"\b(?:leaves? the factory|as delivered|on delivery|out of the box|factory (?:state|settings?))"
@@ -66,7 +71,7 @@ def assign_power(b: Builder) -> list[str]:
         holds = [i for i in by_token[power_token] if i.skill == "hold"]
         job = held_other_job(b, holds[0]) if holds and press else None
         if job is not None:  # "hold 3 s: window detection on / off": a setting's, not power off
-            _held_setting(b, holds[0], *job[:3])
+            add_held_setting(b, holds[0], *job[:3])
             standby_hold = (holds[0].name, job[0]) if job[3] else None
             holds = []
         var = b.add_toggle("power", label_of(b, power_token), first_mention(b, [power_token]))
@@ -111,19 +116,6 @@ def assign_power(b: Builder) -> list[str]:
                 b, b.guards[-1], *standby_hold[:1], label_of(b, power_token or ""), standby_hold[1]
             )
     return power_actions
-
-
-def _held_setting(b: Builder, hold: ActionInfo, at: int, noun: str, values: list[str]) -> None:
-    """The setting the power key's hold has in its legend: a toggle named by the noun, or the
-    values it flips between ("°C / °F"), named after what the display shows them for."""
-    if noun:
-        var = b.add_toggle("_".join(words(noun)), noun.upper(), at)
-        b.feature(var, [{"actions": [hold.name], "variable": var, "effect": "toggle"}])
-        return
-    units = all(re.fullmatch(UNIT, v, re.IGNORECASE) for v in values)
-    var = b.add_discrete("unit" if units else "setting", values, "", None)
-    b.note(f"variables.{var}.values", ", ".join(b.variables[var]["values"]), at)
-    b.feature(f"set_{var}", [{"actions": [hold.name], "variable": var, "effect": "next"}])
 
 
 def assign_locks(b: Builder, done: set[str]) -> list[str]:

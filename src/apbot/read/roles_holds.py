@@ -16,6 +16,7 @@ from apbot.read.evidence_whose import lead_cell
 from apbot.read.roles_holdcell import hold_cells
 from apbot.read.shapes import GROUP_NOUNS, SETTING_NOUNS
 from apbot.read.shown import LOCK_CUE
+from apbot.read.values import UNIT
 
 # a setting printed in capitals, switched on or off ("switch AUTO OFF on", "turns KEEP WARM off")
 _SWITCHED = re.compile(
@@ -216,3 +217,16 @@ def held_other_job(b: Builder, info: ActionInfo) -> tuple[int, str, list[str], b
         if _FLIPPED.match(job) and not set(re.findall(r"[a-z]+", job.lower())) & _NOT_A_JOB:
             return i, "", [v.strip() for v in job.split("/")], bool(_WHILE_OFF.search(clause))
     return None
+
+
+def add_held_setting(b: Builder, hold: ActionInfo, at: int, noun: str, values: list[str]) -> None:
+    """The setting the power key's hold has in its legend (:func:`held_other_job`): a toggle
+    named by the noun, or the values it flips between ("°C / °F": a unit when they are units)."""
+    if noun:
+        var = b.add_toggle("_".join(re.findall(r"[a-z0-9]+", noun)), noun.upper(), at)
+        b.feature(var, [{"actions": [hold.name], "variable": var, "effect": "toggle"}])
+        return
+    units = all(re.fullmatch(UNIT, v, re.IGNORECASE) for v in values)
+    var = b.add_discrete("unit" if units else "setting", values, "", None)
+    b.note(f"variables.{var}.values", ", ".join(b.variables[var]["values"]), at)
+    b.feature(f"set_{var}", [{"actions": [hold.name], "variable": var, "effect": "next"}])
