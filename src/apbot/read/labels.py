@@ -11,6 +11,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
+from apbot.read.labels_legend import legend_name
 from apbot.read.text import Manual, Unit
 from apbot.read.value_lists import find_list
 
@@ -194,6 +195,7 @@ def find_labels(manual: Manual, tokens: list[str]) -> dict[str, Label]:
             if head is not None:
                 best, line = head
         labels[token] = Label(token, best, line)
+    _legend_names(manual, labels)
     claimed = {label.text for label in labels.values()}
     for label in labels.values():
         full = whole.get(label.text)
@@ -204,6 +206,19 @@ def find_labels(manual: Manual, tokens: list[str]) -> dict[str, Label]:
         if label.line is None and label.mentions:
             label.line = manual.units[label.mentions[0]].line
     return labels
+
+
+def _legend_names(manual: Manual, labels: dict[str, Label]) -> None:
+    """Keys still unnamed, printed as signs or icons ("A-", "POSITION <"): the name their key
+    table's row gives them (:func:`legend_name`)."""
+    claimed = {label.text.upper() for label in labels.values() if label.line is not None}
+    for token, label in labels.items():
+        if label.line is not None or any(label.text == s for w in SYMBOLS.values() for s in w):
+            continue
+        found = legend_name(manual, words(token.replace("_", " ")), claimed)
+        if found is not None:
+            label.text, label.line = found
+            claimed.add(found[0].upper())
 
 
 _ROW_HEAD = re.compile(

@@ -55,7 +55,7 @@ from apbot.read.roles_pads import (
     shown_codes,
 )
 from apbot.read.roles_pairafter import lists_own, pair_follows
-from apbot.read.roles_raiselower import raise_lower_pairs
+from apbot.read.roles_raiselower import raise_lower_pairs, signed_pairs
 from apbot.read.roles_shared import add_clock_steps, assign_shared, clock_steps, dial_after_keys
 from apbot.read.roles_switched import switched_time
 from apbot.read.shapes import CHOICE_WORDS, GENERIC_DIALS, Evidence, adjuster_direction
@@ -83,6 +83,9 @@ def assign(b: Builder) -> None:
     unnamed = [i for i in infos if i.name not in done and not adjuster_direction(i)]
     for noun, pair in raise_lower_pairs(b, unnamed).items():  # WARMER / COOLER, ☀ / ❄
         pairs.setdefault(noun, pair)
+    taken = {n for p in pairs.values() for ns in p.values() for n in ns}
+    for noun, pair in signed_pairs(b, [i for i in unnamed if i.name not in taken]).items():
+        pairs.setdefault(noun, pair)  # A- / A+, POSITION < / POSITION >
     digits = [i.name for i in infos if i.digit is not None and i.name not in done]
     if assign_direct_digits(b, [i for i in infos if i.name in digits]):
         digits = []  # a row of levels 1–5: no keypad

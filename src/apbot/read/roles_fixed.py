@@ -17,7 +17,13 @@ from apbot.read.roles_common import (
     mentions_of,
 )
 from apbot.read.roles_holdcell import held_lock, held_toggle
-from apbot.read.roles_holds import held_named_switch, held_power, held_start
+from apbot.read.roles_holds import (
+    add_held_setting,
+    held_named_switch,
+    held_other_job,
+    held_power,
+    held_start,
+)
 from apbot.read.shapes import RUNNING_RE, STOP_WORDS
 from apbot.read.shown import LOCK_CUE, RUNNING_CUE, shown_words
 
@@ -38,6 +44,7 @@ def assign_power(b: Builder) -> list[str]:
     for info in infos:
         by_token.setdefault(info.token, []).append(info)
     power_actions: list[str] = []
+    standby_hold: tuple[str, int] | None = None  # "Hold 3 seconds while OFF: °C / °F"
 
     tokens = {i.token for i in infos if i.skill == "press" and i.digit is None}
     power_token: str | None = next(
@@ -62,6 +69,11 @@ def assign_power(b: Builder) -> list[str]:
     else:
         press = [i for i in by_token[power_token] if i.skill == "press"]
         holds = [i for i in by_token[power_token] if i.skill == "hold"]
+        job = held_other_job(b, holds[0]) if holds and press else None
+        if job is not None:  # "hold 3 s: window detection on / off": a setting's, not power off
+            add_held_setting(b, holds[0], *job[:3])
+            standby_hold = (holds[0].name, job[0]) if job[3] else None
+            holds = []
         var = b.add_toggle("power", label_of(b, power_token), first_mention(b, [power_token]))
         if holds and press:
             b.feature(
@@ -99,6 +111,10 @@ def assign_power(b: Builder) -> list[str]:
             }
         )
         b.note("guards.power off", "keys do nothing while the appliance is off")
+        if standby_hold:
+            _only_in_standby(
+                b, b.guards[-1], *standby_hold[:1], label_of(b, power_token or ""), standby_hold[1]
+            )
     return power_actions
 
 
@@ -377,7 +393,6 @@ def standby_only(b: Builder) -> None:
     off = next((g for g in b.guards if g.get("name") == "power off"), None)
     if off is None:
         return
-    (power,) = off["when"]
     for info in b.infos:
         if info.skill != "press" or info.name in off["only"] or len(info.controls) != 1:
             continue
@@ -388,15 +403,16 @@ def standby_only(b: Builder) -> None:
         at = next((i for i, u in enumerate(b.manual.units) if said.search(u.text)), None)
         if at is None:
             continue
-        off["only"].append(info.name)
-        off.pop("hide", None)  # what it sets lights the panel while the rest is dark
-        others = [i.name for i in b.infos if i.name != info.name]
-        b.guards.append(
-            {
-                "name": f"{info.name} in standby only",
-                "when": {power: "on"},
-                "only": others,
-                "display": "",
-            }
-        )
-        b.note(f"guards.{info.name} in standby only", f"{label} works only in standby", at)
+        _only_in_standby(b, off, info.name, label, at)
+
+
+def _only_in_standby(b: Builder, off: dict, name: str, label: str, at: int) -> None:
+    """Action ``name`` works while the appliance is off (guard ``off``), and only then."""
+    (power,) = off["when"]
+    off["only"].append(name)
+    off.pop("hide", None)  # what it sets lights the panel while the rest is dark
+    others = [i.name for i in b.infos if i.name != name]
+    b.guards.append(
+        {"name": f"{name} in standby only", "when": {power: "on"}, "only": others, "display": ""}
+    )
+    b.note(f"guards.{name} in standby only", f"{label} works only in standby", at)

@@ -33,6 +33,7 @@ _CELL = re.compile(
     r"(?:on\s*(?:/|or)\s*off|off\s*(?:/|or)\s*on)\W*(?:\([^()]*\)\W*)?$",  # "(SOFT)": its sign
     re.IGNORECASE,
 )
+_SENTENCE_RE = re.compile(r"(?<=[.;])\s+")
 # a header for holding: "Touch and hold", "Long press", "Keep touching (printed below)"
 _HOLD_HEAD = re.compile(r"\bhold|\blong\b|\bkeep\s+(?:touching|pressing|pushing)\b", re.I)
 
@@ -98,6 +99,8 @@ def held_toggle(b: Builder, key: ActionInfo) -> str:
         candidates = hold_cells(unit) if unit.cells else []
         if not unit.cells:  # the legend's next line, when it names no key of its own
             candidates += [units[k].text for k in (i + 1, i + 2) if k < len(units)]
+        else:  # a sentence of the row led by the hold ("Character style. Hold 2 s: … on / off")
+            candidates += [said for cell in unit.cells[1:] for said in _SENTENCE_RE.split(cell)[1:]]
         cells = set(hold_cells(unit)) if unit.cells else set()
         for text in candidates:
             m = _HELD.match(text) or (_CELL.match(text) if text in cells else None)

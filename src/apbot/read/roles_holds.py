@@ -16,6 +16,7 @@ from apbot.read.evidence_whose import lead_cell
 from apbot.read.roles_holdcell import hold_cells
 from apbot.read.shapes import GROUP_NOUNS, SETTING_NOUNS
 from apbot.read.shown import LOCK_CUE
+from apbot.read.values import UNIT
 
 # a setting printed in capitals, switched on or off ("switch AUTO OFF on", "turns KEEP WARM off")
 _SWITCHED = re.compile(
@@ -178,3 +179,54 @@ def held_power(b: Builder, info: ActionInfo) -> int | None:
         if all(not n or n.split()[-1] in named for n in nouns):
             return i
     return None
+
+
+# what a hold's clause says after its colon: "Hold 3 s while OFF: °C / °F"
+_HELD_JOB = re.compile(r"\bhold\w*\b[^:|]{0,40}:\s*(?P<job>[^|]+?)\W*$", re.IGNORECASE)
+# ... a setting switched ("open-window detection on / off") or values flipped ("°C / °F")
+_SWITCHED_NOUN = re.compile(
+    r"^(?P<noun>[a-z][a-z -]{2,30}?)\s+(?:on\s*(?:/|or)\s*off|off\s*(?:/|or)\s*on)$", re.I
+)
+_FLIPPED = re.compile(r"^[^\s/]{1,12}(?:\s*/\s*[^\s/]{1,12})+$")
+_WHILE_OFF = re.compile(
+    r"\b(?:while|when)\s+(?:it\s+is\s+|switched\s+)?(?:off|in\s+standby)\b", re.I
+)
+_NOT_A_JOB = {"lock", "key", "keys", "appliance", "power", "standby", "on", "off"}
+
+
+def held_other_job(b: Builder, info: ActionInfo) -> tuple[int, str, list[str], bool] | None:
+    """The unit where the power key's own legend gives its hold a job of its own ("⏻  touch:
+    on / off  hold 3 s: open-window detection on / off", "Touch: on / off. Hold 3 seconds
+    while OFF: °C / °F"): a setting it switches or values it flips between, not switching
+    off: (unit, the setting's noun or "", the values it flips between or [], whether only while
+    the appliance is off: "while OFF"). None when the
+    hold only switches the appliance (or the legend says nothing)."""
+    for i, clause in _held_clauses(b, info):
+        m = _HELD_JOB.search(clause)
+        job = m.group("job").strip() if m else ""
+        switched = _SWITCHED_NOUN.match(job)
+        if switched and not set(re.findall(r"[a-z]+", switched.group("noun").lower())) & (
+            _NOT_A_JOB | _appliance_words(b)
+        ):
+            return (
+                i,
+                switched.group("noun").strip(" -").lower(),
+                [],
+                bool(_WHILE_OFF.search(clause)),
+            )
+        if _FLIPPED.match(job) and not set(re.findall(r"[a-z]+", job.lower())) & _NOT_A_JOB:
+            return i, "", [v.strip() for v in job.split("/")], bool(_WHILE_OFF.search(clause))
+    return None
+
+
+def add_held_setting(b: Builder, hold: ActionInfo, at: int, noun: str, values: list[str]) -> None:
+    """The setting the power key's hold has in its legend (:func:`held_other_job`): a toggle
+    named by the noun, or the values it flips between ("°C / °F": a unit when they are units)."""
+    if noun:
+        var = b.add_toggle("_".join(re.findall(r"[a-z0-9]+", noun)), noun.upper(), at)
+        b.feature(var, [{"actions": [hold.name], "variable": var, "effect": "toggle"}])
+        return
+    units = all(re.fullmatch(UNIT, v, re.IGNORECASE) for v in values)
+    var = b.add_discrete("unit" if units else "setting", values, "", None)
+    b.note(f"variables.{var}.values", ", ".join(b.variables[var]["values"]), at)
+    b.feature(f"set_{var}", [{"actions": [hold.name], "variable": var, "effect": "next"}])

@@ -154,3 +154,53 @@ def raise_lower_pairs(b: Builder, keys: list[ActionInfo]) -> dict[str, dict[str,
         used |= {up, down}
         pairs[noun] = {"up": [up], "down": [down]}
     return pairs
+
+
+# a key printed as a name and a sign: "A+", "A-", "POSITION <", "TEMP −"
+_SIGNED_RE = re.compile(r"^(?P<stem>.*?[^\s+−–<>-])\s?(?P<sign>[+−–<>-])$")
+_UP_SIGNS = "+>"
+
+
+def signed_pairs(b: Builder, keys: list[ActionInfo]) -> dict[str, dict[str, list[str]]]:
+    """Pairs of press keys printed as the same name with opposite signs ("A- / A+",
+    "POSITION < / POSITION >"), whatever their actions are called (``smaller``, ``larger``): one
+    stepped pair, named by the stem's words → {"up": [...], "down": [...]}. A stem printed with
+    one sign only, or more than two keys on a stem, is no pair."""
+    by_stem: dict[str, dict[str, list[str]]] = {}
+    for k in keys:
+        if k.skill != "press" or k.digit is not None or k.controls[0] not in b.labels:
+            continue
+        label = b.labels[k.controls[0]]
+        m = _SIGNED_RE.match(label.text.strip()) if label.line is not None else None
+        if m is None:
+            continue
+        way = "up" if m.group("sign") in _UP_SIGNS else "down"
+        by_stem.setdefault(m.group("stem").strip(), {"up": [], "down": []})[way].append(k.name)
+    pairs: dict[str, dict[str, list[str]]] = {}
+    for stem, pair in by_stem.items():
+        if len(pair["up"]) == 1 and len(pair["down"]) == 1:
+            named = _pair_noun(b, pair["up"][0], pair["down"][0])
+            pairs[named or "_".join(words(stem)) or "setting"] = pair
+    return pairs
+
+
+def _pair_noun(b: Builder, up: str, down: str) -> str:
+    """What a signed pair sets, when a heading or sentence names it before the two keys in
+    brackets ("Character size (A- / A+)"): "character_size"; else ""."""
+    labels = [
+        re.escape(b.labels[c].text)
+        for n in (down, up)
+        for i in b.infos
+        if i.name == n
+        for c in i.controls[:1]
+        if c in b.labels
+    ]
+    if len(labels) != 2:
+        return ""
+    keys = rf"\(\s*(?:{labels[0]}\s*/\s*{labels[1]}|{labels[1]}\s*/\s*{labels[0]})\s*\)"
+    said = re.compile(rf"\b([A-Za-z][a-z]+(?: [a-z]+)?)\s*{keys}")
+    for unit in b.manual.units:
+        m = said.search(unit.text)
+        if m:
+            return "_".join(words(m.group(1)))
+    return ""
