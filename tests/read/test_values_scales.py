@@ -123,3 +123,8 @@ def test_a_scale_reaching_past_the_range_stated_before_it_is_not_this_settings()
     model = read_manual(XL, ["press_power", "press_temp_plus", "press_temp_minus"]).model
     temp = next(v for n, v in model.variables.items() if "temp" in n)
     assert [tuple(r) for r in temp.ranges] == [(80, 200, 10)]
+
+
+def test_a_row_of_numbers_in_no_unit_is_no_scale() -> None:
+    assert _scale("The heater is sold in these sizes:\n\n   1200 ── 1500 ── 1800 ── 2000\n") == []
+    assert _scale("This manual covers the years:\n\n   2019 ── 2020 ── 2021 ── 2023\n") == []

@@ -29,7 +29,8 @@ _BRACKET_UNIT_RE = re.compile(rf"\(\s*({UNIT})\s*\)\s*:\s*$", re.IGNORECASE)
 def scale_pieces(units: list[Unit], i: int) -> list[Range]:
     """The pieces of an uneven scale printed right under the sentence ``units[i]`` that ends
     with a colon (its unit after the last value, in a first cell, or in brackets before the
-    colon: "Available temperatures (°C):"); else []."""
+    colon: "Available temperatures (°C):"); else [], and [] for a scale in no unit (a row of
+    wattages, years or pages under a sentence is no setting's stops)."""
     said = units[i].text.rstrip()
     if not said.endswith(":") or i + 1 >= len(units):
         return []
@@ -45,6 +46,8 @@ def scale_pieces(units: list[Unit], i: int) -> list[Range]:
         return []  # a scale climbs; "022 → 018 → 010" are codes, not stops
     bracket = _BRACKET_UNIT_RE.search(said)
     unit = unit_name(m.group("unit") or m.group("lead") or (bracket and bracket.group(1)))
+    if not unit:
+        return []  # "sold in these sizes:" 1200 ── 1500 ── …, "the years:" 2019 ── 2020 ── …
     return uneven_pieces(values, unit)
 
 
