@@ -72,3 +72,29 @@ def test_programme_codes_without_a_counting_legend_stay_codes() -> None:
     model = read_manual(PROGRAMMES, ["press_menu"]).model
     menu = next(v for n, v in model.variables.items() if "menu" in n)
     assert menu.values == ["p1", "p2", "p3", "p4"]
+
+
+WASHER = """# KOKO WM-7 washer
+
+## Keys
+
+| Key | What it does |
+|---|---|
+| ⏻ | On and off. |
+| PROG | Chooses the programme. |
+
+## Display
+
+    P1 … P4 ....... programmes (P4: 30 minutes quick wash)
+    L1 … L3 ....... spin levels; the drum runs on 2 minutes after a stop
+
+## Programmes
+
+Press PROG: P1 → P2 → P3 → P4 → P1.
+"""
+
+
+def test_minutes_said_past_the_legends_first_clause_count_nothing() -> None:
+    model = read_manual(WASHER, ["press_power", "press_prog"]).model
+    prog = next(v for n, v in model.variables.items() if "prog" in n)
+    assert prog.values == ["p1", "p2", "p3", "p4"]

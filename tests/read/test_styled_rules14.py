@@ -48,3 +48,27 @@ def test_a_page_heading_ends_the_safety_section_so_the_keys_values_are_read() ->
 def test_a_lettered_legend_row_names_its_key_without_the_letter() -> None:
     assert _cell_key("(C) SPEED") == "SPEED"
     assert _cell_key("(1) SPEED") == "(1) SPEED"  # (a number is the row's count, read apart)
+
+
+_RULE = "_" * 80
+# a running header "Owner's Manual" heading every page, a procedure going over a page
+RUNNING = f"""Owner's Manual
+USING THE TIMER
+1. Press ON/OFF.
+2. Press TIMER to choose the hours: 1H -> 2H -> 4H -> 8H.
+{_RULE}
+Owner's Manual
+3. Press START.
+4. The timer lamp lights.
+{_RULE}
+Owner's Manual
+FAN SPEED
+Press FAN to step through LOW -> HIGH.
+"""
+
+
+def test_a_title_heading_every_page_alike_is_a_running_header_no_section() -> None:
+    units = parse_manual(RUNNING).units
+    assert next(u for u in units if u.step == 3).heading == "USING THE TIMER"
+    assert next(u for u in units if "Press FAN" in u.text).heading == "FAN SPEED"
+    assert not any("Owner's Manual" in u.text for u in units)

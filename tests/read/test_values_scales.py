@@ -71,3 +71,60 @@ def test_the_griddle_heat_is_read_in_its_pieces() -> None:
     model = read_manual(GRIDDLE, ["press_power", "press_heat_minus", "press_heat_plus"]).model
     heat = next(v for n, v in model.variables.items() if "heat" in n)
     assert [tuple(r) for r in heat.ranges] == [(150, 190, 20), (190, 220, 10)]
+
+
+FRYER = """# KOKO AF-5 air fryer
+
+## Keys
+
+| Key | What it does |
+|---|---|
+| ⏻ | On and off. |
+| TIME + | Adds a minute to the cooking time. |
+| TIME − | Takes a minute off the cooking time. |
+
+## Cooking time
+
+Set the cooking time with TIME + and TIME −. Suggested times for common foods (minutes):
+
+    8 ── 12 ── 15 ── 18 ── 25
+
+The cooking time can be set from 1 to 60 minutes in steps of 1 minute.
+"""
+
+
+def test_a_range_stated_after_a_guides_stops_and_reaching_past_them_holds() -> None:
+    model = read_manual(FRYER, ["press_power", "press_time_plus", "press_time_minus"]).model
+    time = next(v for n, v in model.variables.items() if "time" in n)
+    assert [tuple(r) for r in time.ranges] == [("00:01:00", "01:00:00", 60)]
+
+
+XL = """# KOKO AF-6 air fryer
+
+## Keys
+
+| Key | What it does |
+|---|---|
+| ⏻ | On and off. |
+| TEMP + | Raises the temperature. |
+| TEMP − | Lowers the temperature. |
+
+## Temperature
+
+Press TEMP + or TEMP − to set the temperature from 80 to 200 °C in 10 °C steps.
+
+On the larger model the temperatures are (°C):
+
+    80 ── 100 ── 120 ── 140 ── 180 ── 200 ── 230
+"""
+
+
+def test_a_scale_reaching_past_the_range_stated_before_it_is_not_this_settings() -> None:
+    model = read_manual(XL, ["press_power", "press_temp_plus", "press_temp_minus"]).model
+    temp = next(v for n, v in model.variables.items() if "temp" in n)
+    assert [tuple(r) for r in temp.ranges] == [(80, 200, 10)]
+
+
+def test_a_row_of_numbers_in_no_unit_is_no_scale() -> None:
+    assert _scale("The heater is sold in these sizes:\n\n   1200 ── 1500 ── 1800 ── 2000\n") == []
+    assert _scale("This manual covers the years:\n\n   2019 ── 2020 ── 2021 ── 2023\n") == []

@@ -65,7 +65,10 @@ def _legend_unit(lines: list[str], first: str, last: str) -> tuple[str, int, str
         m = pattern.search(line)
         if m is None:
             continue
-        counts = _COUNTS.search(line, m.end())
+        # the legend's first clause names what it counts, no number in it ("… programmes
+        # (P4: 30 minutes quick wash)", "… levels; the fan runs on 2 minutes" count no minutes)
+        clause = re.split(r"[;:(),=]", line[m.end() :])[0]
+        counts = None if re.search(r"\d", clause) else _COUNTS.search(clause)
         if counts is not None:
             unit = "h" if counts.group(1).lower().startswith("h") else "min"
             return unit, i, line[m.start() : m.start() + letters]

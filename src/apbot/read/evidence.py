@@ -77,7 +77,7 @@ from apbot.read.values import (
 )
 from apbot.read.values_elided import filled
 from apbot.read.values_pieces import find_amount_pieces, find_two_steps
-from apbot.read.values_scales import scale_pieces, spans_read
+from apbot.read.values_scales import beyond, scale_pieces, spans_read
 from apbot.read.values_stepped import find_arrow_pieces, find_stepped_pieces
 from apbot.read.values_wraps import wrap_ends
 
@@ -153,6 +153,7 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
         own_words = {w for t in tokens for w in words(t.replace("_", " ")) if len(w) >= 3}
         own_words |= {w for o in own for w in words(o) if len(w) >= 3}
         chart_names = row_names(units)
+        scaled: list[Range] = []  # the pieces of a scale, once read
         for i in [*context, *sorted(steps - set(context))]:  # (a step further down: its own)
             text = units[i].text
             unit = units[i]
@@ -239,7 +240,10 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
             # "Available temperatures (°C):" then "160 ── 180 ── 200 ── 210 ── …": uneven stops
             scale = scale_pieces(units, i)
             if scale and _fits(scale[0].unit, tokens) and spans_read(scale, ev.ranges):
-                pieces, ev.ranges = scale, []
+                pieces, ev.ranges, scaled = scale, [], scale
+            wider = beyond(scaled, ranges) if scaled and ev.ranges is scaled else None
+            if wider:  # "Suggested times (min):" 8 | 12 | … 25, then "1 to 60 minutes"
+                ev.ranges, ev.range_at = [wider], i
             if pieces and _fits(pieces[0].unit, tokens):  # "0:30 – 12:00 30 min 12:00 – 24:00 1 h"
                 ev.ranges, ev.range_at = pieces, i
             elif ranges and not ev.ranges:

@@ -24,6 +24,7 @@ from apbot.read.text_pages import (
     _page_title,
     _plain_heading,
     _reading_order,
+    _running_titles,
     contents_lines,
 )
 from apbot.read.text_sections import drop_boilerplate, drop_tagged_models
@@ -223,7 +224,7 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
         para_step = None
 
     fenced = False
-    furniture = _furniture(raw_lines)
+    furniture = _furniture(raw_lines) | _running_titles(raw_lines)
     passed = _page_breaks(raw_lines, furniture)
     spaced = _space_tables(raw_lines, passed | furniture)
     sideways = _row_charts(raw_lines)

@@ -216,6 +216,25 @@ def _page_title(line: str) -> bool:
     return ws[0][:1].isupper() and all(w[:1].isupper() or w in _TITLE_SMALL for w in ws)
 
 
+def _running_titles(lines: list[str]) -> set[int]:
+    """A title heading two or more pages alike ("Owner's Manual" after each rule): the running
+    header a PDF prints on every page, no section; were it read as one, it would cut a
+    procedure running over the page in two and hide the headings under it (0-based lines)."""
+    tops: dict[str, list[int]] = {}
+    ruled = True  # (the first line of the text heads its first page)
+    for i, line in enumerate(lines):
+        stripped = line.strip()
+        if not stripped:
+            continue
+        if "\f" in line or re.fullmatch(r"[-=_*~`#]{3,}", stripped):
+            ruled = True
+            continue
+        if ruled and _page_title(stripped):
+            tops.setdefault(stripped, []).append(i)
+        ruled = False
+    return {i for at in tops.values() if len(at) >= 2 for i in at}
+
+
 def _legend(parts: list[tuple[int, str, str]]) -> bool:
     """Rows of a legend or a table ("DELAY START button     Sets the finish time …"), not two
     columns of prose: the left parts are mostly short terms, each starting afresh, and the left

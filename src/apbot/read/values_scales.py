@@ -29,7 +29,8 @@ _BRACKET_UNIT_RE = re.compile(rf"\(\s*({UNIT})\s*\)\s*:\s*$", re.IGNORECASE)
 def scale_pieces(units: list[Unit], i: int) -> list[Range]:
     """The pieces of an uneven scale printed right under the sentence ``units[i]`` that ends
     with a colon (its unit after the last value, in a first cell, or in brackets before the
-    colon: "Available temperatures (°C):"); else []."""
+    colon: "Available temperatures (°C):"); else [], and [] for a scale in no unit (a row of
+    wattages, years or pages under a sentence is no setting's stops)."""
     said = units[i].text.rstrip()
     if not said.endswith(":") or i + 1 >= len(units):
         return []
@@ -45,6 +46,8 @@ def scale_pieces(units: list[Unit], i: int) -> list[Range]:
         return []  # a scale climbs; "022 → 018 → 010" are codes, not stops
     bracket = _BRACKET_UNIT_RE.search(said)
     unit = unit_name(m.group("unit") or m.group("lead") or (bracket and bracket.group(1)))
+    if not unit:
+        return []  # "sold in these sizes:" 1200 ── 1500 ── …, "the years:" 2019 ── 2020 ── …
     return uneven_pieces(values, unit)
 
 
@@ -63,8 +66,29 @@ def uneven_pieces(values: list[float], unit: str) -> list[Range]:
 
 def spans_read(pieces: list[Range], ranges: list[Range]) -> bool:
     """Whether a scale spans what was read before it (nothing, or ranges in its unit, or in
-    none, lying inside its ends): the scale then says more, its steps included."""
-    return all(
-        r.unit in ("", pieces[0].unit) and pieces[0].low <= r.low and r.high <= pieces[-1].high
-        for r in ranges
-    )
+    none, from its low end to its high end): the scale then says more, its steps included. A
+    scale reaching past a range read before it is another's ("On the XL the temperatures
+    are:"), or the range says less than the scale's ends; the range stated holds."""
+    if not ranges:
+        return True
+    unit = pieces[0].unit
+    return all(r.unit in ("", unit) for r in ranges) and (
+        min(r.low for r in ranges),
+        max(r.high for r in ranges),
+    ) == (pieces[0].low, pieces[-1].high)
+
+
+def beyond(pieces: list[Range], ranges: list[Range]) -> Range | None:
+    """A range read after a scale that reaches past its ends in its unit ("Suggested times
+    (min):" 8 | 12 | 15 | 25, then "from 1 to 60 minutes"): the scale was a guide's stops,
+    the range is the setting's; else None."""
+    low, high, unit = pieces[0].low, pieces[-1].high, pieces[0].unit
+    for r in ranges:
+        if (
+            r.unit in ("", unit)
+            and r.low <= low
+            and high <= r.high
+            and (r.low, r.high) != (low, high)
+        ):
+            return r
+    return None
