@@ -119,3 +119,15 @@ def test_a_read_dial_that_does_not_say_it_wraps_is_still_the_day() -> None:
         "minutes": 20,
     }
     assert parse_instruction(read, "at midnight")["water_at"] == "00:00:00"
+
+
+def test_a_read_timer_over_the_day_that_does_not_say_it_wraps_counts_down() -> None:
+    """A read TIMER of 0:00-23:30 that does not say it wraps is a countdown by its name:
+    "for 10 hours" sets it, "at 7 am" does not (a dial named a start or a time still is one)."""
+    timer = loads_model(
+        SPRINKLER.replace("    wrap: true\n", "", 1)
+        .replace("  water_at:\n", '  water_at:\n    label: "OFF TIMER"\n', 1)
+        .replace('initial: "06:00:00"', 'initial: "01:00:00"', 1)
+    )
+    assert parse_instruction(timer, "Water for 10 hours")["water_at"] == "10:00:00"
+    assert "water_at" not in parse_instruction(timer, "Water at 7 in the morning")

@@ -83,3 +83,15 @@ def test_only_a_value_written_as_three_letters_is_a_code() -> None:
     )
     assert "flow" not in parse_instruction(words, "A French press of coffee.")
     assert "wash" not in parse_instruction(words, "Press the wash key.")
+
+
+def test_with_a_manual_a_code_is_cut_only_from_a_word_the_manual_uses() -> None:
+    """Given the manual, a word that merely starts like a code ("mango", "autumn") or shares
+    its consonants ("grain") names it no more; the words the manual explains it by still do."""
+    manual = "FAN: SLO (slow) or FST (fast). LAMP: WHT (white) or GRN (green). MODE: AUTO or MAN."
+    assert parse_instruction(SHORT, "A mango smoothie in autumn.", manual) == {}
+    assert parse_instruction(SHORT, "Whole grain, feast for 5 minutes.", manual) == {"time": 5}
+    assert parse_instruction(SHORT, "Fan on fast, lamp in green.", manual) == {
+        "fan": "fst",
+        "lamp": "grn",
+    }

@@ -54,7 +54,7 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
     for var, value, stems, weight in view.phrases:
         info = view.infos[var]
         for i in range(n):
-            found = _match_at(text, i, stems, coded=_panel_code(value))
+            found = _match_at(text, i, stems, _panel_code(value), view.manual_words)
             if found is None:
                 continue
             end, quality = found
@@ -282,11 +282,16 @@ def _names_other(view: Model, var: str, text: Text, i: int, end: int) -> bool:
 
 
 def _match_at(
-    text: Text, i: int, stems: tuple[str, ...], coded: bool = False
+    text: Text,
+    i: int,
+    stems: tuple[str, ...],
+    coded: bool = False,
+    known: frozenset[str] = frozenset(),
 ) -> tuple[int, float] | None:
     """End and quality of the phrase ``stems`` matched from token i (connectors may sit
     between words; a synonym or a longer word that starts like the value counts less; a
-    ``coded`` value, a three-letter panel code, also by the word it cuts short)."""
+    ``coded`` value, a three-letter panel code, also by the word it cuts short, one of the
+    manual's ``known`` words when it is given: "hotel" is no HOT, "mango" no MAN)."""
     k = i
     quality = 1.0
     for index, target in enumerate(stems):
@@ -326,7 +331,11 @@ def _match_at(
             quality = min(quality, 0.8)  # "the air fryer" for AIR FRY
         elif len(stems) > 1 and len(here) >= 3 and target.startswith(here):
             quality = min(quality, 0.7)  # "frozen veg" for frozen vegetables
-        elif coded and display_abbreviation(target, text.word(k)):
+        elif (
+            coded
+            and (not known or text.word(k) in known)
+            and display_abbreviation(target, text.word(k))
+        ):
             quality = min(quality, 0.7)  # "on slow" for SLO, "in green" for GRN
         else:
             return None

@@ -8,6 +8,7 @@ remembered, since an agent parses many sentences against one belief.
 from __future__ import annotations
 
 import itertools
+import re
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -95,6 +96,8 @@ class Model:
     # var -> (value, "60 %"): a coded value the manual gives as a quantity (knob mark 2: 60 %)
     top_codes: dict[str, Any] = field(default_factory=dict)
     # var -> the code the manual puts one step past its highest number (P after 9)
+    manual_words: frozenset[str] = frozenset()
+    # the manual's words: a three-letter panel code is named only by a word it uses ("slow")
 
 
 MAX_PHRASE_VALUES = 2_000
@@ -268,7 +271,10 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         if isinstance(info.var, DiscreteVariable)
         and (code := code_past_top(manual, list(info.values))) is not None
     }
-    return Model(model, infos, phrases, start_values, frozenset(appliance), named, tops)
+    manual_words = frozenset(re.findall(r"[a-z]+", manual.casefold()))
+    return Model(
+        model, infos, phrases, start_values, frozenset(appliance), named, tops, manual_words
+    )
 
 
 def _forms(infos: dict[str, VarInfo]) -> dict[str, dict[Any, list[str]]]:
@@ -313,9 +319,19 @@ def _day_dial(info: VarInfo) -> bool:
     model says starts at 00:00 is a timer counting from empty (a keep-warm of 0 to 23 hours):
     a time of day to feed or to start at starts at a time of day (07:00), or is not stated.
     Whether it wraps is not asked: a read belief (REGEN TIME 0:00-23:00, a mowing START
-    0:00-23:30) seldom knows, and the day's last hour, not 24:00, already says a dial."""
+    0:00-23:30) seldom knows, and the day's last hour, not 24:00, already says a dial; but one
+    that does not say it wraps and is named a timer (a TIMER, an OFF TIMER of 0:00-23:59)
+    counts down a duration ("run for 10 hours")."""
     last = magnitude(info.values[-1]) if _whole_day(info, wraps=False) else None
-    return last is not None and last < 24 * 3600 and not _starts_empty(info.var)
+    if last is None or last >= 24 * 3600 or _starts_empty(info.var):
+        return False
+    return _whole_day(info) or not _named_timer(info)
+
+
+def _named_timer(info: VarInfo) -> bool:
+    """The setting's own name or label calls it a timer: a countdown, not a time of day."""
+    words = name_words(f"{info.name} {info.var.label or ''}".casefold())
+    return any(concept(w) == concept("timer") for w in words)
 
 
 def _starts_empty(var: AnyVariable) -> bool:
