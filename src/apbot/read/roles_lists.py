@@ -153,7 +153,7 @@ def _nums(values: list[str]) -> list[float]:
 def list_evidence(ev: Evidence) -> Evidence:
     """A printed row of numbers as piecewise ranges, exactly those numbers (equal gaps share a
     piece: 20 30 40 60 90 is 20–40 by 10, 40–60 by 20, 60–90 by 30)."""
-    from apbot.read.values import Range, unit_name
+    from apbot.read.values import gap_pieces, unit_name
 
     nums = _nums(ev.values or [])
     unit = unit_name(re.sub(r"[\d.,\s]", "", (ev.values or [""])[-1]))
@@ -162,13 +162,7 @@ def list_evidence(ev: Evidence) -> Evidence:
             {int(h) * 3600 + int(m) * 60 for h, m in (v.split(":") for v in ev.values or [])}
         )
         unit = "s"
-    pieces: list[Range] = []
-    for lo, hi in itertools.pairwise(nums):
-        gap = round(hi - lo, 6)
-        if pieces and pieces[-1].step == gap:
-            pieces[-1] = Range(pieces[-1].low, hi, unit, gap)
-        else:
-            pieces.append(Range(lo, hi, unit, gap))
+    pieces = gap_pieces(nums, unit)
     return Evidence(
         ranges=pieces or [list_range(ev.values or [])],
         range_at=ev.values_at,

@@ -114,6 +114,19 @@ class Range:
     step: float | None = None
 
 
+def gap_pieces(values: list[float], unit: str) -> list[Range]:
+    """Climbing numbers as pieces, each run of equal gaps one piece with its gap as the step
+    (160, 180, 200, 210, 220 → 160–200 by 20, 200–220 by 10): a scale printed stop by stop."""
+    pieces: list[Range] = []
+    for low, high in itertools.pairwise(values):
+        gap = round(high - low, 6)
+        if pieces and pieces[-1].step == gap:
+            pieces[-1] = Range(pieces[-1].low, high, unit, gap)
+        else:
+            pieces.append(Range(low, high, unit, gap))
+    return pieces
+
+
 _UNIT_ONLY = re.compile(UNIT, re.IGNORECASE)
 _FOREIGN_UNIT = re.compile(
     r"\s*(?:V|VAC|Hz|kHz|mm|cm|m|nm|µm|mA|mAh|dB|dBA|kWh|VA|bar|MPa|kPa|psi|Pa|lux)(?![\w])"

@@ -8,11 +8,10 @@ range, which values.py already reads; only the uneven ones are read here.
 
 from __future__ import annotations
 
-import itertools
 import re
 
 from apbot.read.text import Unit
-from apbot.read.values import UNIT, Range, number, unit_name
+from apbot.read.values import UNIT, Range, gap_pieces, number, unit_name
 
 # a run of one separator between numbers: dashes drawn as a line ("──", "--", "–"), arrows
 # ("→", "->") or table cells ("|"), the same one each time
@@ -54,13 +53,7 @@ def scale_pieces(units: list[Unit], i: int) -> list[Range]:
 def uneven_pieces(values: list[float], unit: str) -> list[Range]:
     """Runs of equal gaps as pieces, each with its gap as the step, when there are two or more
     of them (160, 180, 200, 210, 220 → 160–200 by 20, 200–220 by 10); else []."""
-    pieces: list[Range] = []
-    for a, b in itertools.pairwise(values):
-        gap = round(b - a, 6)
-        if pieces and pieces[-1].step == gap:
-            pieces[-1] = Range(pieces[-1].low, b, unit, gap)
-        else:
-            pieces.append(Range(a, b, unit, gap))
+    pieces = gap_pieces(values, unit)
     return pieces if len(pieces) >= 2 else []
 
 
