@@ -22,6 +22,7 @@ from apbot.model.schema import (
     TimeVariable,
 )
 from apbot.read.goal_aliases import bracket_aliases
+from apbot.read.goal_daytimes import day_dial, switch_time, whole_day
 from apbot.read.goal_legends import add_setting_words
 from apbot.read.goal_manual import coded_names, legend_words, title_nouns
 from apbot.read.goal_roles import (
@@ -37,7 +38,6 @@ from apbot.read.goal_values import (
     ON_WORDS,
     in_days,
     kind_noun,
-    magnitude,
     name_words,
     numeric_values,
     on_off_pair,
@@ -49,8 +49,6 @@ from apbot.read.goal_values import (
 )
 from apbot.read.goal_vocab import (
     LETTER_WORDS,
-    SPAN_ENDS,
-    SPAN_STARTS,
     STOP_WORDS,
     SYNONYMS,
     concept,
@@ -188,13 +186,13 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
                 info.timing = "finish" if at else "delay"
     clocked = any(info.timing == "clock" for info in infos.values())
     for info in infos.values():
-        if clocked and info.timing == "duration" and _whole_day(info) and _switch_time(info):
+        if clocked and info.timing == "duration" and whole_day(info) and switch_time(info):
             info.timing = "at"  # beside the clock, ON TIME / START: when it switches
-        elif clocked and info.timing == "duration" and _whole_day(info):
+        elif clocked and info.timing == "duration" and whole_day(info):
             # beside the clock, a TIMER that wraps at 23:59 is a time of day: when it is done
             info.timing = "finish"
             info.vocab.setdefault(concept("finish"), 0.5)
-        elif info.timing == "duration" and _day_dial(info):
+        elif info.timing == "duration" and day_dial(info):
             info.timing = "at"  # no clock beside it, yet a dial of the day's hours
     for info in infos.values():
         if info.timing in ("duration", "delay") and (
@@ -291,56 +289,6 @@ def _forms(infos: dict[str, VarInfo]) -> dict[str, dict[Any, list[str]]]:
             if str(value).casefold() not in ON_WORDS + OFF_WORDS
         }
     return out
-
-
-def _whole_day(info: VarInfo, wraps: bool = True) -> bool:
-    """A time setting that wraps round a whole day (00:00 to 23:xx): a time of day. With
-    ``wraps`` False, one that only spans it (a read belief seldom knows whether it wraps)."""
-    var = info.var
-    values = info.values
-    if not isinstance(var, TimeVariable) or (wraps and not var.wrap) or not values:
-        return False
-    first, last = magnitude(values[0]), magnitude(values[-1])
-    return first == 0 and last is not None and last >= 23 * 3600
-
-
-_SWITCH_TIMES = (SPAN_STARTS | SPAN_ENDS) - {"end", "finish", "morning", "night"}
-
-
-def _switch_time(info: VarInfo) -> bool:
-    """A time of day named for when something starts or stops (ON TIME, OFF, START, SUNRISE):
-    a schedule the appliance keeps, not the time a started programme is done at."""
-    return bool(set(name_words(f"{info.name} {info.var.label or ''}".casefold())) & _SWITCH_TIMES)
-
-
-def _day_dial(info: VarInfo) -> bool:
-    """A whole-day time setting that stops short of 24:00 (00:00 to 23:xx): the hours of a day
-    on a 24-hour dial, not a count of up to 24 hours (a 0-24 h timer ends at 24:00). One the
-    model says starts at 00:00 is a timer counting from empty (a keep-warm of 0 to 23 hours):
-    a time of day to feed or to start at starts at a time of day (07:00), or is not stated.
-    Whether it wraps is not asked: a read belief (REGEN TIME 0:00-23:00, a mowing START
-    0:00-23:30) seldom knows, and the day's last hour, not 24:00, already says a dial; but one
-    that does not say it wraps and is named a timer (a TIMER, an OFF TIMER of 0:00-23:59)
-    counts down a duration ("run for 10 hours")."""
-    last = magnitude(info.values[-1]) if _whole_day(info, wraps=False) else None
-    if last is None or last >= 24 * 3600 or _starts_empty(info.var):
-        return False
-    return _whole_day(info) or not _named_timer(info)
-
-
-def _named_timer(info: VarInfo) -> bool:
-    """The setting's own name or label calls it a timer: a countdown, not a time of day."""
-    words = name_words(f"{info.name} {info.var.label or ''}".casefold())
-    return any(concept(w) == concept("timer") for w in words)
-
-
-def _starts_empty(var: AnyVariable) -> bool:
-    """Whether the model states that a time setting starts at 00:00 (in each of its cases)."""
-    cases = getattr(var, "cases", None) or {}
-    starts = [getattr(c, "initial", None) for c in cases.values()] or [
-        getattr(var, "initial", None)
-    ]
-    return all(s is not None and magnitude(s) == 0 for s in starts)
 
 
 _DIMENSION_WORDS = {"power": "power", "temperature": "temperature", "mass": "weight"}
