@@ -329,3 +329,11 @@ def test_colours_for_heat_levels_are_words_for_them_not_new_values() -> None:
     episode, reached = run(model_from(truth), model_from(belief), {"rollers": "high"})
     assert reached, episode.repairs
     assert not any("values" in n and "AMBER" in n for n in episode.repairs), episode.repairs
+
+
+def test_levels_lit_in_another_order_than_the_manual_lists_them_are_not_paired_by_order() -> None:
+    # the panel steps M1, M3, M2: pairing press by press would take M3 for level 2 and claim
+    # level 2 reached on M3 (run_checked fails on that false claim of success)
+    truth = BATH_TRUTH.replace('values: ["off", "1", "2", "3"]', 'values: ["off", "1", "3", "2"]')
+    episode, _ = run(model_from(truth), model_from(BATH_BELIEF), {"rollers": "2"})
+    assert not any("rollers prints" in note for note in episode.repairs), episode.repairs

@@ -237,6 +237,24 @@ def _named(spec: Any, name: str, pairs: dict[Any, Any], domain: Sequence[Any]) -
     )
 
 
+def _names_other(part: str, value: Any, domain: Sequence[Any]) -> bool:
+    """Whether a part says it shows another value of the setting than the one the walk
+    paired it with (``M3`` or ``HI`` paired with low): the pairing rests on the belief's
+    order of the values, which a part naming its own value cannot contradict.
+
+    >>> _names_other("M3", "2", ["off", "1", "2", "3"]), _names_other("M2", "2", ["2", "3"])
+    (True, False)
+    >>> _names_other("HI", "low", ["off", "low", "high"])
+    True
+    """
+    words = re.findall(r"[^\W\d_]+|\d+", part.casefold())
+
+    def says(value: Any) -> bool:
+        return any(w == str(value).casefold() or spells_value(w, value) for w in words)
+
+    return not says(value) and any(says(other) for other in domain if repr(other) != repr(value))
+
+
 def _rename_own(
     session: Session,
     name: str,
@@ -275,6 +293,8 @@ def _rename_own(
         return None  # every value, each with its own part
     if str(pairs.get("", "")).casefold() not in OFF_WORDS:
         return None  # nothing printed is "off", or the walk has no anchor
+    if any(_names_other(part, value, domain) for part, value in pairs.items()):
+        return None  # the belief's order is not the panel's: ``M3`` paired with 2
     if len(domain) == 2 and not last.start_shown(name) and not _named(spec, name, pairs, domain):
         return None  # from a guessed start either value may be the word's: it must say which
     reader = session.perceiver.reader
