@@ -75,3 +75,11 @@ def test_a_power_hold_that_switches_off_stays_the_power() -> None:
     model = read_manual(FAN, FAN_ACTIONS).model
     step = _feature_of(model, "hold_power")
     assert step is not None and step.variable == "power"
+
+
+def test_a_power_hold_that_switches_on_and_off_by_a_verb_or_a_lock_stays_the_power() -> None:
+    # "switch on / off" names no setting, "childlock" is the lock: both leave the power its hold
+    for job in ("switch on / off", "turn on / off", "childlock on / off"):
+        manual = HEATER.replace("flame guard on / off", job)
+        step = _feature_of(read_manual(manual, HEATER_ACTIONS).model, "hold_power")
+        assert step is not None and step.variable == "power", job

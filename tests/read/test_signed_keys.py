@@ -51,6 +51,7 @@ def test_an_action_word_is_found_in_a_row_by_itself_its_start_or_its_letters() -
     assert _said("pos", ["position"])
     assert _said("fwd", ["arm", "further", "forward"])
     assert not _said("fwd", ["arm", "further", "back"])
+    assert not _said("set", ["sweet"])  # letters with vowels abbreviate only as a word's start
 
 
 def test_a_key_printed_as_a_sign_is_named_by_its_row_and_paired_with_its_opposite() -> None:
@@ -73,3 +74,31 @@ def test_a_hold_written_as_a_sentence_of_the_keys_row_switches_its_own_setting()
     model = read_manual(SIGN_MAKER, SIGN_ACTIONS).model
     step = _step_of(model, "hold_mode")
     assert step.variable == "mirror_writing" and step.effect == "toggle"
+
+
+def test_a_hold_sentence_that_switches_on_and_off_by_a_verb_is_no_setting() -> None:
+    manual = SIGN_MAKER.replace("mirror writing on / off", "switch on / off")
+    step = _step_of(read_manual(manual, SIGN_ACTIONS).model, "hold_mode")
+    assert step.variable != "switch"
+
+
+# a steamer whose parts list (not a key table) says "steam" in the lid's row
+STEAMER = """
+Vapora V-1 food steamer
+
+| No. | Part | Description |
+|---|---|---|
+| 1 | Lid | lets the steam out through its vent |
+| 2 | Basket | holds the food |
+
+Keys: ⏻ switches the steamer on and off. ♨ starts steaming.
+Open the lid before you fill the tank.
+"""
+
+
+def test_a_parts_list_names_no_key() -> None:
+    from apbot.read.labels import find_labels
+    from apbot.read.text import parse_manual
+
+    labels = find_labels(parse_manual(STEAMER), ["power", "steam"])
+    assert labels["steam"].text != "Lid"

@@ -15,10 +15,12 @@ import re
 
 from apbot.read.text import Manual, Unit
 
-# a table column of keys or of their printed names: "Key", "Key / part", "Name / icon", "Button"
+# a table column of keys or of their printed names: "Key", "Key / part", "Name / icon", "Button";
+# "Part" alone heads a list of the appliance's parts (lid, basket), whose rows name no key
+_KEY_OR_NAME = r"(?:keys?|buttons?|controls?|symbols?|names?)"
 _KEY_HEAD = re.compile(
-    r"^\W*(?:keys?|buttons?|controls?|elements?|symbols?|parts?|names?)"
-    r"(?:\s*/\s*(?:keys?|buttons?|parts?|elements?|names?|icons?|symbols?))?\W*$",
+    rf"^\W*(?:{_KEY_OR_NAME}(?:\s*/\s*(?:{_KEY_OR_NAME}|icons?|parts?|elements?))?"
+    rf"|(?:parts?|elements?)\s*/\s*(?:{_KEY_OR_NAME}|icons?))\W*$",
     re.IGNORECASE,
 )
 # a cell that only counts or letters the rows: "3", "(2)", "④", "(G)", "c"
@@ -31,11 +33,13 @@ def _words(text: str) -> list[str]:
 
 def _said(word: str, said: list[str]) -> bool:
     """The action's word among a row's words: itself, a word it begins ("pos" of "position"), or
-    a word it abbreviates by its letters in order ("fwd" of "forward")."""
+    a word it abbreviates by its consonants in order ("fwd" of "forward"; "set" is no
+    abbreviation of "sweet")."""
+    skeleton = not re.search(r"[aeiou]", word[1:])
     for w in said:
         if w == word or (len(word) >= 3 and w.startswith(word)):
             return True
-        if len(word) >= 3 and w[:1] == word[:1] and len(w) > len(word):
+        if skeleton and len(word) >= 3 and w[:1] == word[:1] and len(w) > len(word):
             rest = iter(w)
             if all(c in rest for c in word):
                 return True

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import re
 
-from apbot.read.actions import ActionInfo
+from apbot.read.actions import PRESS_VERBS, TURN_VERBS, ActionInfo
 from apbot.read.build import Builder
 from apbot.read.evidence_whose import lead_cell
 from apbot.read.text import Unit
@@ -89,6 +89,14 @@ def held_lock(b: Builder, key: ActionInfo) -> bool:
     )
 
 
+def names_a_setting(noun: str) -> bool:
+    """Whether what a hold switches on / off is a setting's name: "switch on / off", "turn on /
+    off" lead with the verb and switch the appliance itself."""
+    first = re.findall(r"[a-z]+", noun.lower())[:1]
+    verbs = {*PRESS_VERBS, *TURN_VERBS}
+    return bool(first) and not {first[0], first[0][:-1], first[0][:-2]} & verbs  # "switches"
+
+
 def held_toggle(b: Builder, key: ActionInfo) -> str:
     """The on/off thing holding this key switches, read from its legend's hold part; ""."""
     if key.skill != "hold":
@@ -104,7 +112,11 @@ def held_toggle(b: Builder, key: ActionInfo) -> str:
         cells = set(hold_cells(unit)) if unit.cells else set()
         for text in candidates:
             m = _HELD.match(text) or (_CELL.match(text) if text in cells else None)
-            if m and not re.search(r"\b(?:lock|key|appliance)\b", m.group("noun"), re.I):
+            if (
+                m
+                and not re.search(r"\b(?:lock|key|appliance)\b", m.group("noun"), re.I)
+                and names_a_setting(m.group("noun"))
+            ):
                 return m.group("noun").strip(" -").lower()
     return ""
 

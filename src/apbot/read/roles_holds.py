@@ -13,7 +13,7 @@ import re
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.evidence_whose import lead_cell
-from apbot.read.roles_holdcell import hold_cells
+from apbot.read.roles_holdcell import hold_cells, names_a_setting
 from apbot.read.shapes import GROUP_NOUNS, SETTING_NOUNS
 from apbot.read.shown import LOCK_CUE
 from apbot.read.values import UNIT
@@ -205,8 +205,12 @@ def held_other_job(b: Builder, info: ActionInfo) -> tuple[int, str, list[str], b
         m = _HELD_JOB.search(clause)
         job = m.group("job").strip() if m else ""
         switched = _SWITCHED_NOUN.match(job)
-        if switched and not set(re.findall(r"[a-z]+", switched.group("noun").lower())) & (
-            _NOT_A_JOB | _appliance_words(b)
+        said = re.findall(r"[a-z]+", switched.group("noun").lower()) if switched else []
+        if (  # not the lock ("childlock"), the appliance, nor a verb ("switch on / off")
+            switched
+            and not set(said) & (_NOT_A_JOB | _appliance_words(b))
+            and not any(w.endswith("lock") for w in said)
+            and names_a_setting(switched.group("noun"))
         ):
             return (
                 i,
