@@ -123,6 +123,13 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "baby_formula_maker": 3,
     "pottery_kiln": 4,
     "water_flosser": 3,
+    # The twelfth blind set (helper blind15n, 6 December, fifth session): blind for this
+    # round's work.
+    "cotton_candy_machine": 3,
+    "nail_dryer": 3,
+    "exercise_bike": 4,
+    "cheese_maker": 4,
+    "slush_machine": 3,
 }
 
 
