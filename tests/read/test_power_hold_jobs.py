@@ -83,3 +83,24 @@ def test_a_power_hold_that_switches_on_and_off_by_a_verb_or_a_lock_stays_the_pow
         manual = HEATER.replace("flame guard on / off", job)
         step = _feature_of(read_manual(manual, HEATER_ACTIONS).model, "hold_power")
         assert step is not None and step.variable == "power", job
+
+
+# a fan whose legend holds ⏻ to switch off, and a sentence elsewhere holds ⏻ with ▲ for the sound
+TWO_KEY_FAN = """
+Breeza DF-2 desk fan
+
+  ⏻        touch: on
+           hold 3 s: off
+  ▲        faster
+  ▼        slower
+
+Hold ⏻ and ▲ together for 3 seconds: sound on / off.
+The speed goes from 1 to 5.
+"""
+
+
+def test_a_two_key_hold_elsewhere_does_not_take_the_power_keys_own_hold() -> None:
+    model = read_manual(TWO_KEY_FAN, ["press_power", "hold_power", "press_up", "press_down"]).model
+    step = _feature_of(model, "hold_power")
+    assert step is not None and step.variable == "power"
+    assert "sound" not in model.variables

@@ -203,7 +203,9 @@ def held_other_job(b: Builder, info: ActionInfo) -> tuple[int, str, list[str], b
     hold only switches the appliance (or the legend says nothing)."""
     for i, clause in _held_clauses(b, info):
         m = _HELD_JOB.search(clause)
-        job = m.group("job").strip() if m else ""
+        if m is None or _with_another_key(b, info, clause[: m.start("job")]):
+            continue  # "Hold ⏻ and ▲ together for 3 seconds: sound on / off" is a two-key hold
+        job = m.group("job").strip()
         switched = _SWITCHED_NOUN.match(job)
         said = re.findall(r"[a-z]+", switched.group("noun").lower()) if switched else []
         if (  # not the lock ("childlock"), the appliance, nor a verb ("switch on / off")
@@ -221,6 +223,18 @@ def held_other_job(b: Builder, info: ActionInfo) -> tuple[int, str, list[str], b
         if _FLIPPED.match(job) and not set(re.findall(r"[a-z]+", job.lower())) & _NOT_A_JOB:
             return i, "", [v.strip() for v in job.split("/")], bool(_WHILE_OFF.search(clause))
     return None
+
+
+def _with_another_key(b: Builder, info: ActionInfo, held: str) -> bool:
+    """The words before a hold's colon hold another key with this one ("hold ⏻ and ▲
+    together", "hold both keys"): the job is the pair's, not this key's own."""
+    if re.search(r"\b(?:together|both)\b", held, re.IGNORECASE):
+        return True
+    return any(
+        re.search(rf"(?<!\w){re.escape(label.text)}(?!\w)", held)
+        for control, label in b.labels.items()
+        if control not in info.controls and label.text
+    )
 
 
 def add_held_setting(b: Builder, hold: ActionInfo, at: int, noun: str, values: list[str]) -> None:
