@@ -104,3 +104,11 @@ def test_a_two_key_hold_elsewhere_does_not_take_the_power_keys_own_hold() -> Non
     step = _feature_of(model, "hold_power")
     assert step is not None and step.variable == "power"
     assert "sound" not in model.variables
+
+
+def test_a_power_hold_flipping_words_that_are_no_units_names_no_setting() -> None:
+    for job in ("I / O", "1 / 2 / 3", "reset / clear"):
+        manual = GERMINATOR.replace("°C / °F", job)
+        model = read_manual(manual, GERMINATOR_ACTIONS).model
+        assert "setting" not in model.variables, job
+        assert "unit" not in model.variables, job

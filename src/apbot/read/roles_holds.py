@@ -220,8 +220,10 @@ def held_other_job(b: Builder, info: ActionInfo) -> tuple[int, str, list[str], b
                 [],
                 bool(_WHILE_OFF.search(clause)),
             )
-        if _FLIPPED.match(job) and not set(re.findall(r"[a-z]+", job.lower())) & _NOT_A_JOB:
-            return i, "", [v.strip() for v in job.split("/")], bool(_WHILE_OFF.search(clause))
+        flipped = [v.strip() for v in job.split("/")] if _FLIPPED.match(job) else []
+        if flipped and all(re.fullmatch(UNIT, v, re.IGNORECASE) for v in flipped):
+            # units only ("°C / °F"): "I / O", "1 / 2 / 3" or "reset / clear" name no setting
+            return i, "", flipped, bool(_WHILE_OFF.search(clause))
     return None
 
 
@@ -239,12 +241,11 @@ def _with_another_key(b: Builder, info: ActionInfo, held: str) -> bool:
 
 def add_held_setting(b: Builder, hold: ActionInfo, at: int, noun: str, values: list[str]) -> None:
     """The setting the power key's hold has in its legend (:func:`held_other_job`): a toggle
-    named by the noun, or the values it flips between ("°C / °F": a unit when they are units)."""
+    named by the noun, or the units it flips between ("°C / °F")."""
     if noun:
         var = b.add_toggle("_".join(re.findall(r"[a-z0-9]+", noun)), noun.upper(), at)
         b.feature(var, [{"actions": [hold.name], "variable": var, "effect": "toggle"}])
         return
-    units = all(re.fullmatch(UNIT, v, re.IGNORECASE) for v in values)
-    var = b.add_discrete("unit" if units else "setting", values, "", None)
+    var = b.add_discrete("unit", values, "", None)
     b.note(f"variables.{var}.values", ", ".join(b.variables[var]["values"]), at)
     b.feature(f"set_{var}", [{"actions": [hold.name], "variable": var, "effect": "next"}])
