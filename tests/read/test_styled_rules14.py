@@ -72,3 +72,23 @@ def test_a_title_heading_every_page_alike_is_a_running_header_no_section() -> No
     assert next(u for u in units if u.step == 3).heading == "USING THE TIMER"
     assert next(u for u in units if "Press FAN" in u.text).heading == "FAN SPEED"
     assert not any("Owner's Manual" in u.text for u in units)
+
+
+# a procedure running over a page break: the page's first line goes on with the sentence
+TIMER_OVER_PAGES = """Using the Timer
+
+1. Press TIMER.
+2. Set the hours with + and -, for example 8H, then
+
+                                                     HT-20  4
+________________________________________________________________________________
+
+Press START
+3. The timer lamp lights.
+"""
+
+
+def test_a_page_that_goes_on_with_an_unfinished_sentence_starts_no_section() -> None:
+    units = parse_manual(TIMER_OVER_PAGES).units
+    start = next(u for u in units if u.text == "Press START")
+    assert start.heading != "Press START"

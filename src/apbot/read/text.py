@@ -25,6 +25,7 @@ from apbot.read.text_pages import (
     _plain_heading,
     _reading_order,
     _running_titles,
+    _unfinished,
     contents_lines,
 )
 from apbot.read.text_sections import drop_boilerplate, drop_tagged_models
@@ -230,7 +231,7 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
     sideways = _row_charts(raw_lines)
     markup = html_tables(raw_lines)
     previous, last = "", 0
-    rule_above = False
+    rule_above, said_last = False, ""
     for position, raw in enumerate(raw_lines, start=1):
         number = line_numbers[position - 1]
         if position - 1 in passed or position - 1 in furniture:
@@ -287,6 +288,10 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
             rule_above = rule_above or bool(raw.strip())  # (blank lines after the rule too)
             continue
         page_top, rule_above = rule_above, False  # the first line of a page
+        # ... unless the page before stopped mid-sentence ("…, then" | "Press START")
+        page_top = page_top and not _unfinished(said_last)
+        if re.search(r"[a-z]", stripped):  # prose, not a footer's "HT-20  4"
+            said_last = stripped
         plain = (
             not stripped.startswith(("#", "-", "*", ">"))
             and (not before or re.search(r"[.!?:]$", before) or _plain_heading(before))
