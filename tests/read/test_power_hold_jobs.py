@@ -112,3 +112,9 @@ def test_a_power_hold_flipping_words_that_are_no_units_names_no_setting() -> Non
         model = read_manual(manual, GERMINATOR_ACTIONS).model
         assert "setting" not in model.variables, job
         assert "unit" not in model.variables, job
+
+
+def test_a_power_hold_for_the_child_safety_or_for_everything_names_no_setting() -> None:
+    for job in ("child safety on / off", "all on / off"):
+        model = read_manual(HEATER.replace("flame guard on / off", job), HEATER_ACTIONS).model
+        assert set(model.variables) == {"power", "heat"}, job

@@ -191,7 +191,8 @@ _FLIPPED = re.compile(r"^[^\s/]{1,12}(?:\s*/\s*[^\s/]{1,12})+$")
 _WHILE_OFF = re.compile(
     r"\b(?:while|when)\s+(?:it\s+is\s+|switched\s+)?(?:off|in\s+standby)\b", re.I
 )
-_NOT_A_JOB = {"lock", "key", "keys", "appliance", "power", "standby", "on", "off"}
+_NOT_A_JOB = {"lock", "key", "keys", "appliance", "power", "standby", "on", "off", "all"}
+_LOCK_NOUNS = {"safety", "lockout"}  # "child safety on / off": the key lock by another name
 
 
 def held_other_job(b: Builder, info: ActionInfo) -> tuple[int, str, list[str], bool] | None:
@@ -211,7 +212,7 @@ def held_other_job(b: Builder, info: ActionInfo) -> tuple[int, str, list[str], b
         if (  # not the lock ("childlock"), the appliance, nor a verb ("switch on / off")
             switched
             and not set(said) & (_NOT_A_JOB | _appliance_words(b))
-            and not any(w.endswith("lock") for w in said)
+            and not any(w.endswith("lock") or w in _LOCK_NOUNS for w in said)
             and names_a_setting(switched.group("noun"))
         ):
             return (
