@@ -36,8 +36,6 @@ class Explorer(WalkLearning):
         self.displays = displays
         # the last walk stayed on one value with no other key to try: (setting, step, key)
         self.stuck: tuple[str, tuple[str, int], PlannedAction] | None = None
-        # the last walk renamed was learnt by its parts of the display that changed
-        self._by_own_parts = False
 
     def explore(self, name: str, last: Executed, history: list[Any] | None = None) -> None:
         """Explore ``name`` with ``last``'s key (from the step ``last`` left the belief in)."""
@@ -83,8 +81,8 @@ class Explorer(WalkLearning):
             if not learnt:
                 walks = self._renamed(name, last, key, opposite, forward, backward, history)
                 renamed = walks is not None
-                every = self._by_own_parts  # the walk went round every value: nothing is stuck
-                forward, backward = walks if walks is not None else (forward, backward)
+                if walks is not None:  # ``every``: the walk went round every value, not stuck
+                    forward, backward, every = walks
         forward, backward = self._read_unread(
             name, forward, backward, last.predicted, learnt, self._start_read(name, last)
         )
@@ -166,11 +164,11 @@ class Explorer(WalkLearning):
         forward: list[Any],
         backward: list[Any] | None,
         history: list[Any] | None,
-    ) -> tuple[list[Any], list[Any] | None] | None:
+    ) -> tuple[list[Any], list[Any] | None, bool] | None:
         """A walk that is the belief's own with some values printed in other words: learn
-        those words (:mod:`apbot.agent.renamed`) and read the walk in the belief's values
+        those words (:mod:`apbot.agent.renamed`) and read the walk in the belief's values,
+        with whether they were learnt from its own parts, having gone round every value
         (None: not such a walk)."""
-        self._by_own_parts = False
         opened = len(history) - 1 if history and forward[: len(history)] == history else 0
         if not forward[opened:] or forward[opened] != self._value(name, last.seen):
             return None  # the walk does not open on the display ``last`` left
@@ -178,12 +176,13 @@ class Explorer(WalkLearning):
         if backward is not None and opposite is not None:
             walks.append((backward, opposite.name))
         pairs = rename_walk(self.session, self.displays.main, name, last, walks, key.seconds)
-        self._by_own_parts = pairs is not None and by_own_parts(pairs)
         if pairs is None:
             return None
         main = self.displays.main
-        return translate(forward, pairs, main), (
-            None if backward is None else translate(backward, pairs, main)
+        return (
+            translate(forward, pairs, main),
+            None if backward is None else translate(backward, pairs, main),
+            by_own_parts(pairs),
         )
 
     def _learn_words(self, name: str, texts: list[str]) -> bool:
