@@ -22,10 +22,10 @@ from apbot.read.goal_text import (
 )
 from apbot.read.goal_view import (
     PARTIAL,
-    UNNAMED,
     Goal,
     Model,
     appliance_said,
+    own_name,
     own_stems,
     phrase_words,
 )
@@ -157,10 +157,8 @@ def _head_nouns(view: Model) -> set[str]:
     """The nouns naming the appliance itself, the last word of its name and of its category
     ("oven", "charger"): a word before them says what kind of appliance it is ("the
     convection oven"), not which programme to run."""
-    appliance = view.model.appliance
-    name = "" if appliance.name == UNNAMED else appliance.name
     found = set()
-    for said in (name, appliance.category.replace("_", " ")):
+    for said in (own_name(view.model), view.model.appliance.category.replace("_", " ")):
         words = re.findall(r"[a-z]+", said.casefold())
         if words:
             found.add(stem(words[-1]))

@@ -107,11 +107,15 @@ UNNAMED = "read from the manual"
 "read") are no words for the appliance (a MANUAL mode is not "the appliance")."""
 
 
+def own_name(model: ApplianceModel) -> str:
+    """The appliance's name, "" for a read belief's placeholder (:data:`UNNAMED`)."""
+    return "" if model.appliance.name == UNNAMED else model.appliance.name
+
+
 def appliance_said(model: ApplianceModel) -> str:
     """The appliance's name and category as a user may say them (casefolded; a read belief's
     placeholder name left out)."""
-    name = "" if model.appliance.name == UNNAMED else model.appliance.name
-    return f"{name} {model.appliance.category.replace('_', ' ')}".strip().casefold()
+    return f"{own_name(model)} {model.appliance.category.replace('_', ' ')}".strip().casefold()
 
 
 def _add_vocab(info: VarInfo, text: str, weight: float) -> None:

@@ -112,9 +112,8 @@ def assign_power(b: Builder) -> list[str]:
         )
         b.note("guards.power off", "keys do nothing while the appliance is off")
         if standby_hold:
-            _only_in_standby(
-                b, b.guards[-1], *standby_hold[:1], label_of(b, power_token or ""), standby_hold[1]
-            )
+            held, at = standby_hold
+            _only_in_standby(b, b.guards[-1], held, label_of(b, power_token or ""), at)
     return power_actions
 
 
