@@ -22,15 +22,18 @@ _SECONDS = r"(?:for\s+)?\d+(?:[.,]\d+)?\s*(?:s|sec|secs|seconds?)\b"
 HELD_SECONDS = r"\d+(?:[.,]\d+)?\s*s(?:ec\w*)?\b"
 # a cell of the column kept for holding: it says "hold" or leads with the seconds
 HOLD_CELL = rf"(?:hold\b|{HELD_SECONDS})"
+# a thing switched: "warm mist on / off", "sound off or on" (the thing as ``noun``)
+NOUN_ON_OFF = r"(?P<noun>[a-z][a-z -]{2,30}?)\s+"
+ON_OR_OFF = r"(?:on\s*(?:/|or)\s*off|off\s*(?:/|or)\s*on)"
 _HELD = re.compile(  # "Hold for 2 seconds: twin-needle mode on/off", "3 s: warm mist on / off"
     rf"^\W*(?:(?:(?:press|touch|push)\s+and\s+)?hold\s*(?:{_SECONDS})?|{_SECONDS})\s*:\s*"
-    r"(?P<noun>[a-z][a-z -]{2,30}?)\s+(?:mode\s+)?(?:on\s*(?:/|or)\s*off|off\s*(?:/|or)\s*on)\b",
+    rf"{NOUN_ON_OFF}(?:mode\s+)?{ON_OR_OFF}\b",
     re.IGNORECASE,
 )
 # a cell under a column kept for holding names the thing alone: "end signal on / off"
 _CELL = re.compile(
-    rf"^\W*(?:{_SECONDS}\s*:\s*)?(?P<noun>[a-z][a-z -]{{2,30}}?)\s+(?:mode\s+)?"
-    r"(?:on\s*(?:/|or)\s*off|off\s*(?:/|or)\s*on)\W*(?:\([^()]*\)\W*)?$",  # "(SOFT)": its sign
+    rf"^\W*(?:{_SECONDS}\s*:\s*)?{NOUN_ON_OFF}(?:mode\s+)?"
+    rf"{ON_OR_OFF}\W*(?:\([^()]*\)\W*)?$",  # "(SOFT)": its sign
     re.IGNORECASE,
 )
 _SENTENCE_RE = re.compile(r"(?<=[.;])\s+")
