@@ -92,6 +92,15 @@ def held_lock(b: Builder, key: ActionInfo) -> bool:
     )
 
 
+_NOT_HELD = frozenset({"lock", "lockout", "safety", "key", "keys", "appliance", "power"})
+
+
+def lock_or_appliance(noun: str) -> bool:
+    """What a hold switches names the key lock ("key lock", "childlock", "child safety": the lock
+    by another name) or the appliance itself ("appliance on / off"), not a setting of its own."""
+    return any(w in _NOT_HELD or w.endswith("lock") for w in re.findall(r"[a-z]+", noun.lower()))
+
+
 def names_a_setting(noun: str) -> bool:
     """Whether what a hold switches on / off is a setting's name: "switch on / off", "turn on /
     off" lead with the verb and switch the appliance itself."""
@@ -115,11 +124,7 @@ def held_toggle(b: Builder, key: ActionInfo) -> str:
         cells = set(hold_cells(unit)) if unit.cells else set()
         for text in candidates:
             m = _HELD.match(text) or (_CELL.match(text) if text in cells else None)
-            if (
-                m
-                and not re.search(r"\b(?:lock|key|appliance)\b", m.group("noun"), re.I)
-                and names_a_setting(m.group("noun"))
-            ):
+            if m and not lock_or_appliance(m.group("noun")) and names_a_setting(m.group("noun")):
                 return m.group("noun").strip(" -").lower()
     return ""
 
