@@ -1,12 +1,12 @@
 """Values a panel shows as three-letter codes ("SLO", "FST", "GRN", "MAN"), named by the words
 they cut short (``goal_names.display_abbreviation``); and a read belief's placeholder name,
-whose words ("read from the manual") are no words for the appliance (``goal_view.UNNAMED``)."""
+whose words ("read from the manual") are no words for the appliance (``belief_name.UNNAMED``)."""
 
 from __future__ import annotations
 
+from apbot.read.belief_name import UNNAMED
 from apbot.read.goal import parse_instruction
 from apbot.read.goal_names import display_abbreviation
-from apbot.read.goal_view import UNNAMED
 from tests.helpers import model_from
 
 # a drying cabinet whose display abbreviates: fan SLO / MED / FST, lamp WHT / GRN, AUTO / MAN

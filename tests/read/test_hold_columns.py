@@ -6,6 +6,7 @@ from __future__ import annotations
 from apbot.model.validate import check_model
 from apbot.model.values import parse_quantity
 from apbot.read import read_manual
+from apbot.read.roles_holdcell import lock_or_appliance
 from apbot.read.values import find_ranges, find_step
 
 # a hedge trimmer: the blade gap set by a knob, in millimetres
@@ -72,3 +73,11 @@ def test_holding_the_start_key_switches_what_its_hold_column_names() -> None:
     step = model.features["crumb_tray"][0]
     assert step.actions == ["hold_start"] and step.effect == "toggle"
     assert "cancel" not in model.features
+
+
+def test_a_hold_switching_the_lock_or_the_appliance_names_no_setting() -> None:
+    """One list for every hold: the key lock by any of its names, or the appliance itself."""
+    for noun in ("key lock", "childlock", "child safety", "keys", "appliance", "power"):
+        assert lock_or_appliance(noun), noun
+    for noun in ("crumb tray", "warm mist", "end signal"):
+        assert not lock_or_appliance(noun), noun

@@ -10,19 +10,17 @@ import re
 
 from apbot.read.build import Builder
 from apbot.read.labels import words
-from apbot.read.shapes import CHOICE_WORDS
+from apbot.read.shapes import CHOICE_WORDS, GROUP_PLURALS
 
 STAY_RE = re.compile(
     r"\b(?:stays?|remains?|kept|keeps?|unchanged|not (?:reset|lost|changed?|cleared))\b", re.I
 )
-RESET_NOUN_RE = re.compile(
-    r"\b(?:programmes?|programs?|menus?|modes?|presets?|functions?|cycles?|courses?)\b", re.I
-)
+RESET_NOUN_RE = re.compile(rf"\b(?:{GROUP_PLURALS})\b", re.I)
 RESET_RE = re.compile(
-    r"\b(?:programmes?|programs?|menus?|modes?|presets?|functions?|cycles?|courses?|selector)\b"
+    rf"\b(?:{GROUP_PLURALS}|selector)\b"
     r"[^.]*\b(?:defaults?|standard values|reset|go(?:es)? back|return|wipes?|clear|lost|forget)"
     r"|\b(?:defaults?|reset|go(?:es)? back|return|wipes?|clear|lost)\b[^.]*"
-    r"\b(?:programmes?|programs?|menus?|modes?|presets?|functions?|cycles?|courses?)\b",
+    rf"\b(?:{GROUP_PLURALS})\b",
     re.IGNORECASE,
 )
 

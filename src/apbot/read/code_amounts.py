@@ -17,12 +17,13 @@ from typing import Any
 from apbot.read.build import Builder
 from apbot.read.code_words import own_lines
 from apbot.read.off_words import unit_at
+from apbot.read.values_stepped import MINUTES_HOURS
 
 # a code of one to three letters and a number, the same letters on every value ("b30", "slp 90")
 _CODE = re.compile(r"([a-z]{1,3}) ?(\d{1,3})")
 _OFF = re.compile(r"(?:([a-z]{1,3}) )?off")
 # the legend's count after the codes: "… boost minutes remaining", "… sleep timer minutes"
-_COUNTS = re.compile(r"\b(minutes?|mins?|hours?|hrs?)\b", re.IGNORECASE)
+_COUNTS = re.compile(rf"\b({MINUTES_HOURS})\b", re.IGNORECASE)
 
 
 def read_code_amounts(b: Builder) -> None:

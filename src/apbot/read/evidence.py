@@ -7,7 +7,6 @@ sentences, in evidence_elsewhere.py.
 
 from __future__ import annotations
 
-import itertools
 import re
 
 from apbot.read.chart_cells import own_cells, row_names, without_names
@@ -73,6 +72,7 @@ from apbot.read.values import (
     find_ranges,
     find_shown_hmm,
     find_step,
+    gap_pieces,
     seconds,
 )
 from apbot.read.values_elided import filled
@@ -361,12 +361,7 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
             if runs is not None:  # the settings one by one: pieces of equal steps
                 amounts, at = runs
                 symbol = _quantity_units(tokens)[0]
-                for lo, hi in itertools.pairwise(amounts):
-                    gap = round(hi - lo, 6)
-                    if ev.ranges and ev.ranges[-1].step == gap:
-                        ev.ranges[-1] = Range(ev.ranges[-1].low, hi, symbol, gap)
-                    else:
-                        ev.ranges.append(Range(lo, hi, symbol, gap))
+                ev.ranges.extend(gap_pieces(amounts, symbol))
                 ev.range_at = at
         if best is not None and _numeric_items(best) and len(best) >= 3:
             near = {

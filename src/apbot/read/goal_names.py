@@ -355,8 +355,12 @@ def display_abbreviation(code: str, word: str) -> bool:
     """A three-letter panel code is ``word`` cut short: its first three letters ("SLO" for slow,
     "MAN" for manual, of a word at most twice as long) or its consonants ("FST" for fast, "GRN"
     for green, "WHT" for white). A time unit, a number, an ordinal or a key's verb is never
-    cut short so: "a minute" is no MIN, "midnight" no MID, "second" no SEC, "press" no PRE."""
+    cut short so: "a minute" is no MIN, "midnight" no MID, "second" no SEC, "press" no PRE. Nor
+    is the code's doer ("fryer" for FRY, "the air fryer": the appliance, not its AIR FRY), which
+    :func:`_match_at` reads before as the code's word and "-er"."""
     if len(code) != 3 or not code.isalpha() or len(word) <= 3 or word[0] != code[0]:
+        return False
+    if word == code + "er":
         return False
     if word in NUMBER_WORDS or word in _NOT_CUT or word in STOP_WORDS or word.endswith("ly"):
         return False
@@ -369,7 +373,7 @@ def display_abbreviation(code: str, word: str) -> bool:
 
 _NOT_CUT = frozenset(
     {"minute", "minutes", "second", "seconds", "hour", "hours", "month", "months", "week", "weeks"}
-    | {"midday", "maxi", "mini", "lower", "higher", "highest", "lowest", "topped", "fryer"}
+    | {"midday", "maxi", "mini", "lower", "higher", "highest", "lowest", "topped"}
 )
 
 

@@ -4,6 +4,7 @@ for a model that keeps a start and an end time of day (lights on and off, sunris
 from __future__ import annotations
 
 from apbot.model.schema import TimeVariable
+from apbot.read.goal_daytimes import whole_day
 from apbot.read.goal_fit import fit
 from apbot.read.goal_text import Text
 from apbot.read.goal_values import name_words
@@ -83,7 +84,8 @@ def _start_and_end(view: Model) -> tuple[str, str] | None:
     for name, info in view.infos.items():
         if info.role != "setting" or not isinstance(info.var, TimeVariable):
             continue
-        if info.timing == "clock" or not _whole_day(info):
+        # two values are no dial of the day's hours, only its ends
+        if info.timing == "clock" or len(info.values) <= 2 or not whole_day(info, wraps=False):
             continue
         words = _words(info)
         if words & _STARTS and not words & _ENDS:
@@ -95,9 +97,3 @@ def _start_and_end(view: Model) -> tuple[str, str] | None:
 
 def _words(info: VarInfo) -> set[str]:
     return {w.casefold() for w in name_words(info.name) + name_words(info.var.label or "")}
-
-
-def _whole_day(info: VarInfo) -> bool:
-    """A time that runs round the day (a time of day, not a countdown)."""
-    values = info.values
-    return len(values) > 2 and str(values[0]) == "00:00:00" and str(values[-1]) >= "23:00:00"

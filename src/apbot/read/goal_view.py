@@ -21,6 +21,7 @@ from apbot.model.schema import (
     Step,
     TimeVariable,
 )
+from apbot.read.belief_name import UNNAMED
 from apbot.read.goal_aliases import bracket_aliases
 from apbot.read.goal_daytimes import day_dial, switch_time, whole_day
 from apbot.read.goal_legends import add_setting_words
@@ -100,11 +101,6 @@ class Model:
 
 MAX_PHRASE_VALUES = 2_000
 """Values of one discrete variable matched as phrases; a longer list is matched by numbers only."""
-
-
-UNNAMED = "read from the manual"
-"""The name the reader gives the appliance it reads: it names nothing, and its words ("manual",
-"read") are no words for the appliance (a MANUAL mode is not "the appliance")."""
 
 
 def own_name(model: ApplianceModel) -> str:

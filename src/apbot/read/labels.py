@@ -141,7 +141,9 @@ def _named_by_noun(manual: Manual, noun: str) -> tuple[str, int] | None:
     return None
 
 
-# the signs printed after a setting's name on a key of a stepping pair ("TEMP +", "POUCH −")
+# the signs printed after a setting's name on a key of a stepping pair ("TEMP +", "POUCH −");
+# not SYMBOLS, which a key prints alone: after a name "+" is up and "–" (a dash) down, and the
+# arrows of up and down keys other than ▲ ▼ (↑ △ ∧) do not follow a name
 _SIGNS: dict[str, str] = {
     "up": "+▲", "plus": "+", "more": "+", "down": "−–-▼", "minus": "−–-", "less": "−–-"
 }  # fmt: skip

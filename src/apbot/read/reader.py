@@ -16,6 +16,7 @@ from pydantic import ValidationError
 from apbot.model.schema import ApplianceModel
 from apbot.model.validate import check_model
 from apbot.read.actions import ActionInfo, parse_actions
+from apbot.read.belief_name import UNNAMED
 from apbot.read.build import PLACEHOLDERS, Builder
 from apbot.read.cases import apply_cases
 from apbot.read.cases_chosen import chosen_cases
@@ -25,7 +26,6 @@ from apbot.read.cases_zones import zone_twins
 from apbot.read.code_amounts import read_code_amounts
 from apbot.read.code_words import name_code_words
 from apbot.read.codes import name_codes
-from apbot.read.goal_view import UNNAMED
 from apbot.read.guards_enabled import read_enabling_switches
 from apbot.read.held_walks import read_held_walks
 from apbot.read.hold_seconds import hold_seconds, pair_hold_seconds

@@ -10,7 +10,7 @@ from apbot.read.build import Builder
 from apbot.read.labels import words
 from apbot.read.names_meaning import held_meaning
 from apbot.read.roles_confirm import confirmed_noun
-from apbot.read.roles_holdcell import held_toggle
+from apbot.read.roles_holdcell import held_toggle, lock_or_appliance
 from apbot.read.shapes import GROUP_NOUNS, SETTING_NOUNS, Evidence
 
 
@@ -134,7 +134,7 @@ def held_switch(b: Builder, key: ActionInfo) -> tuple[str, int] | None:
         for at, said in ((i, HOLD_TO_SWITCH_RE.search(units[i].text)),
                          (i + 1, HOLD_TO_SWITCH_RE.match(after)),
                          (i, holding.search(units[i].text))):  # fmt: skip
-            if said and not set(words(said.group(1))) & {"lock", "key", "appliance", "power"}:
+            if said and not lock_or_appliance(said.group(1)):
                 return said.group(1).lower(), at
     return None
 
@@ -167,7 +167,7 @@ def hold_use(b: Builder, key: ActionInfo) -> str:
         if after:
             own = set(words(b.labels[key.controls[0]].text))
             noun = _of_the(after.group(1).strip(), own)
-            if noun and len(noun.split()) <= 3 and not set(words(noun)) & {"lock", "key"}:
+            if noun and len(noun.split()) <= 3 and not lock_or_appliance(noun):
                 return noun.lower()
         label = re.escape(b.labels[key.controls[0]].text)
         row = re.match(  # "FAN (hold 3 s)  switches the ioniser on or off": the ioniser
@@ -176,7 +176,7 @@ def hold_use(b: Builder, key: ActionInfo) -> str:
             text,
             re.IGNORECASE,
         )
-        if label and row and not set(words(row.group(1))) & {"lock", "key", "appliance"}:
+        if label and row and not lock_or_appliance(row.group(1)):
             return row.group(1).lower()
         switched = held_switch(b, key)
         if switched:
@@ -184,7 +184,7 @@ def hold_use(b: Builder, key: ActionInfo) -> str:
         m = HOLD_USE_RE.search(text)
         if m:
             noun = re.split(r"[·;,:|]|\)", m.group(1))[-1].strip()
-            if noun and len(noun.split()) <= 3 and not set(words(noun)) & {"lock", "key"}:
+            if noun and len(noun.split()) <= 3 and not lock_or_appliance(noun):
                 return noun.lower()
     return ""
 

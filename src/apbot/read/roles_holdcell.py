@@ -22,15 +22,18 @@ _SECONDS = r"(?:for\s+)?\d+(?:[.,]\d+)?\s*(?:s|sec|secs|seconds?)\b"
 HELD_SECONDS = r"\d+(?:[.,]\d+)?\s*s(?:ec\w*)?\b"
 # a cell of the column kept for holding: it says "hold" or leads with the seconds
 HOLD_CELL = rf"(?:hold\b|{HELD_SECONDS})"
+# a thing switched: "warm mist on / off", "sound off or on" (the thing as ``noun``)
+NOUN_ON_OFF = r"(?P<noun>[a-z][a-z -]{2,30}?)\s+"
+ON_OR_OFF = r"(?:on\s*(?:/|or)\s*off|off\s*(?:/|or)\s*on)"
 _HELD = re.compile(  # "Hold for 2 seconds: twin-needle mode on/off", "3 s: warm mist on / off"
     rf"^\W*(?:(?:(?:press|touch|push)\s+and\s+)?hold\s*(?:{_SECONDS})?|{_SECONDS})\s*:\s*"
-    r"(?P<noun>[a-z][a-z -]{2,30}?)\s+(?:mode\s+)?(?:on\s*(?:/|or)\s*off|off\s*(?:/|or)\s*on)\b",
+    rf"{NOUN_ON_OFF}(?:mode\s+)?{ON_OR_OFF}\b",
     re.IGNORECASE,
 )
 # a cell under a column kept for holding names the thing alone: "end signal on / off"
 _CELL = re.compile(
-    rf"^\W*(?:{_SECONDS}\s*:\s*)?(?P<noun>[a-z][a-z -]{{2,30}}?)\s+(?:mode\s+)?"
-    r"(?:on\s*(?:/|or)\s*off|off\s*(?:/|or)\s*on)\W*(?:\([^()]*\)\W*)?$",  # "(SOFT)": its sign
+    rf"^\W*(?:{_SECONDS}\s*:\s*)?{NOUN_ON_OFF}(?:mode\s+)?"
+    rf"{ON_OR_OFF}\W*(?:\([^()]*\)\W*)?$",  # "(SOFT)": its sign
     re.IGNORECASE,
 )
 _SENTENCE_RE = re.compile(r"(?<=[.;])\s+")
@@ -89,6 +92,15 @@ def held_lock(b: Builder, key: ActionInfo) -> bool:
     )
 
 
+_NOT_HELD = frozenset({"lock", "lockout", "safety", "key", "keys", "appliance", "power"})
+
+
+def lock_or_appliance(noun: str) -> bool:
+    """What a hold switches names the key lock ("key lock", "childlock", "child safety": the lock
+    by another name) or the appliance itself ("appliance on / off"), not a setting of its own."""
+    return any(w in _NOT_HELD or w.endswith("lock") for w in re.findall(r"[a-z]+", noun.lower()))
+
+
 def names_a_setting(noun: str) -> bool:
     """Whether what a hold switches on / off is a setting's name: "switch on / off", "turn on /
     off" lead with the verb and switch the appliance itself."""
@@ -112,11 +124,7 @@ def held_toggle(b: Builder, key: ActionInfo) -> str:
         cells = set(hold_cells(unit)) if unit.cells else set()
         for text in candidates:
             m = _HELD.match(text) or (_CELL.match(text) if text in cells else None)
-            if (
-                m
-                and not re.search(r"\b(?:lock|key|appliance)\b", m.group("noun"), re.I)
-                and names_a_setting(m.group("noun"))
-            ):
+            if m and not lock_or_appliance(m.group("noun")) and names_a_setting(m.group("noun")):
                 return m.group("noun").strip(" -").lower()
     return ""
 

@@ -13,7 +13,13 @@ import re
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.evidence_whose import lead_cell
-from apbot.read.roles_holdcell import hold_cells, names_a_setting
+from apbot.read.roles_holdcell import (
+    NOUN_ON_OFF,
+    ON_OR_OFF,
+    hold_cells,
+    lock_or_appliance,
+    names_a_setting,
+)
 from apbot.read.shapes import GROUP_NOUNS, SETTING_NOUNS
 from apbot.read.shown import LOCK_CUE
 from apbot.read.values import UNIT
@@ -183,16 +189,15 @@ def held_power(b: Builder, info: ActionInfo) -> int | None:
 
 # what a hold's clause says after its colon: "Hold 3 s while OFF: °C / °F"
 _HELD_JOB = re.compile(r"\bhold\w*\b[^:|]{0,40}:\s*(?P<job>[^|]+?)\W*$", re.IGNORECASE)
-# ... a setting switched ("open-window detection on / off") or values flipped ("°C / °F")
-_SWITCHED_NOUN = re.compile(
-    r"^(?P<noun>[a-z][a-z -]{2,30}?)\s+(?:on\s*(?:/|or)\s*off|off\s*(?:/|or)\s*on)$", re.I
-)
+# ... a setting switched ("open-window detection on / off") or values flipped ("°C / °F"); the
+# whole job, its "mode" kept in the noun (a key table's hold cell, roles_holdcell's _CELL, drops
+# it, and may lead with seconds and end with a sign in brackets)
+_SWITCHED_NOUN = re.compile(rf"^{NOUN_ON_OFF}{ON_OR_OFF}$", re.I)
 _FLIPPED = re.compile(r"^[^\s/]{1,12}(?:\s*/\s*[^\s/]{1,12})+$")
 _WHILE_OFF = re.compile(
     r"\b(?:while|when)\s+(?:it\s+is\s+|switched\s+)?(?:off|in\s+standby)\b", re.I
 )
-_NOT_A_JOB = {"lock", "key", "keys", "appliance", "power", "standby", "on", "off", "all"}
-_LOCK_NOUNS = {"safety", "lockout"}  # "child safety on / off": the key lock by another name
+_NOT_A_JOB = {"standby", "on", "off", "all"}
 
 
 def held_other_job(b: Builder, info: ActionInfo) -> tuple[int, str, list[str], bool] | None:
@@ -212,7 +217,7 @@ def held_other_job(b: Builder, info: ActionInfo) -> tuple[int, str, list[str], b
         if (  # not the lock ("childlock"), the appliance, nor a verb ("switch on / off")
             switched
             and not set(said) & (_NOT_A_JOB | _appliance_words(b))
-            and not any(w.endswith("lock") or w in _LOCK_NOUNS for w in said)
+            and not lock_or_appliance(switched.group("noun"))
             and names_a_setting(switched.group("noun"))
         ):
             return (

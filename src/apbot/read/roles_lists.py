@@ -3,7 +3,6 @@ dials over a named list, printed rows of numbers as ranges, knobs' end stops."""
 
 from __future__ import annotations
 
-import itertools
 import re
 from typing import Any
 
@@ -13,6 +12,7 @@ from apbot.read.roles_common import clock_list, numeric_list, stepped_noun, toke
 from apbot.read.shapes import Evidence, _fits, _next_table_column
 from apbot.read.text import Unit
 from apbot.read.values import find_ranges, find_step
+from apbot.read.values_tails import gaps
 
 LIST_WORDS = {"left", "right", "prev", "previous", "next", "forward"}
 
@@ -183,7 +183,7 @@ def list_step(values: list[str]) -> tuple[float, str] | None:
     nums = _nums(values)
     if len(nums) < 2:
         return None
-    diffs = {round(b - a, 6) for a, b in itertools.pairwise(nums)}
+    diffs = gaps(nums)
     return (min(diffs), "") if diffs else None
 
 

@@ -8,7 +8,7 @@ import re
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.roles_common import first_mention, label_of, plain
-from apbot.read.shapes import GROUP_NOUNS
+from apbot.read.shapes import GROUP_NOUNS, GROUP_PLURALS
 from apbot.read.text import Unit
 
 
@@ -92,8 +92,8 @@ def option_keys(b: Builder, keys: list[ActionInfo]) -> dict[str, int]:
 
 
 SELECTS_ONE = re.compile(
-    r"\s*(?:selects?|chooses?|picks?|starts?)\s+(?:the\s+)?(?:programs?|programmes?|menus?|modes?"
-    r"|functions?|cycles?|courses?|presets?)\s+(?!you\b|that\b|which\b|the\b)[\w\"'“]",
+    rf"\s*(?:selects?|chooses?|picks?|starts?)\s+(?:the\s+)?(?:{GROUP_PLURALS})"
+    r"\s+(?!you\b|that\b|which\b|the\b)[\w\"'“]",
     re.IGNORECASE,
 )
 
@@ -109,8 +109,7 @@ CODE_SHOWN_RE = re.compile(
 
 
 PAD_NOUNS = re.compile(
-    r"\b(?:programs?|programmes?|menus?|modes?|functions?|cycles?|courses?|presets?|foods?|"
-    r"recipes?|dish(?:es)?|auto\w*)\b",
+    rf"\b(?:{GROUP_PLURALS}|foods?|recipes?|dish(?:es)?|auto\w*)\b",
     re.IGNORECASE,
 )
 

@@ -35,6 +35,7 @@ SETTING_NOUNS = (
 CHOICE_WORDS = {"programme", "program", "prog", "menu", "mode", "function", "cycle", "course",
                 "dial", "knob", "selector", "select"}  # fmt: skip
 GROUP_NOUNS = ("programme", "program", "menu", "mode", "function", "cycle", "course", "preset")
+GROUP_PLURALS = "|".join(f"{w}s?" for w in GROUP_NOUNS)  # in a pattern: "programmes?|…"
 RUNNING_RE = re.compile(
     r"\b(?:while|during|when)\b[^.]*\b(?:running|cooking|operat\w*|works?|working|heating|"
     r"washing|in progress|runs)\b[^.]*\b(?:only|ignored|not respond|do not work|disabled|no effect"

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from apbot.model.values import unit_of, words_to_number
 from apbot.read.values_labels import clock_seconds, clock_tops, minutes_and_seconds
 from apbot.read.values_more import further_top
-from apbot.read.values_tails import listed_amounts, listed_tail, worked_example
+from apbot.read.values_tails import gaps, listed_amounts, listed_tail, worked_example
 
 NUM = (
     r"(?:\d+(?:[.,]\d+)?|one|two|three|four|five|six|seven|eight|nine|ten|twelve|fifteen"
@@ -212,8 +212,8 @@ def _ranges(text: str) -> list[Range]:
         figures = [x for x in read if x is not None]
         if len(figures) != len(read) or figures != sorted(set(figures)):
             continue
-        gaps = {round(b - a, 6) for a, b in itertools.pairwise(figures)}
-        step = gaps.pop() if len(gaps) == 1 else None
+        between = gaps(figures)
+        step = between.pop() if len(between) == 1 else None
         out.append(Range(figures[0], figures[-1], unit_name(m.group("unit")), step))
     for m in RANGE_RE.finditer(text):
         if TIME_RANGE_RE.search(m.group(0)):

@@ -21,17 +21,20 @@ from apbot.read.values import (
     unit_name,
 )
 
+# the words a step of minutes or hours is counted in ("30 minutes", "2 hrs"), as written out
+MINUTES_HOURS = r"minutes?|mins?|hours?|hrs?"
+
 _STEPPED_PIECE_RE = re.compile(  # "0:30 – 12:00  30 minutes": a range, then its step
     # (or a table's row "| 0:30 to 5:00 | 30 seconds |", "0:00 to 5:00  in 30-second steps",
     # "from 0:10 to 1:00 in steps of 10 minutes")
     rf"(?<![\d:])({_TIME}){_DASH}({_TIME})(?![\d:])\s*(?:h\b)?\s*\|?\s*"
     r"(?:by\s+|in\s+(?:steps\s+of\s+)?)?"
-    r"(\d+(?:[.,]\d+)?|one|an?)[\s-]*(minutes?|mins?|hours?|hrs?|h|seconds?|secs?|s)\b",
+    rf"(\d+(?:[.,]\d+)?|one|an?)[\s-]*({MINUTES_HOURS}|h|seconds?|secs?|s)\b",
     re.IGNORECASE,
 )
 _STEP_FIRST_PIECE_RE = re.compile(  # "in 15-minute steps between 0:15 and 2:00": step, then range
     r"\b(?:in|by)\s+(?:steps\s+of\s+)?(\d+(?:[.,]\d+)?|one|an?)[\s-]*"
-    r"(minutes?|mins?|hours?|hrs?|h|seconds?|secs?|s)(?:\s+(?:steps|increments))?\s+"
+    rf"({MINUTES_HOURS}|h|seconds?|secs?|s)(?:\s+(?:steps|increments))?\s+"
     rf"(?:from|between)\s+({_TIME}){_DASH}({_TIME})(?![\d:])",
     re.IGNORECASE,
 )
@@ -61,7 +64,7 @@ _EACH_PRESS_PIECE_RE = re.compile(  # "from 1:00 to 3:00 each click is ten minut
     rf"\b(?:from|between)\s+({_TIME}){_DASH}({_TIME})\b[^.;:]{{0,12}}?\beach\s+"
     r"(?:press|touch|click|tap|turn|step)\w*\b[^.;:\d]{0,40}?\b(?:is|by|adds|of)\s+"
     r"(\d+(?:[.,]\d+)?|one|an?|two|five|ten|fifteen|twenty|thirty|half\s+an?)\s*"
-    r"(minutes?|mins?|hours?|hrs?|h)\b",
+    rf"({MINUTES_HOURS}|h)\b",
     re.IGNORECASE,
 )
 _STEP_WORDS = {"one": 1.0, "a": 1.0, "an": 1.0, "two": 2.0, "five": 5.0, "ten": 10.0}

@@ -35,6 +35,11 @@ def listed_tail(text: str, match: re.Match[str]) -> bool:
     return bool(joined) and bool(_ITEM_BEFORE.search(text[: match.start()]))
 
 
+def gaps(figures: list[float]) -> set[float]:
+    """The gaps between neighbouring figures, rounded past float noise: one gap, an even list."""
+    return {round(b - a, 6) for a, b in itertools.pairwise(figures)}
+
+
 def listed_amounts(text: str) -> list[tuple[float, float, str, float]]:
     """Evenly spaced lists of amounts ("40 %, 50 %, 60 % and 70 %"), rising, in one unit:
     (first, last, unit as printed, gap) each."""
@@ -47,8 +52,8 @@ def listed_amounts(text: str) -> list[tuple[float, float, str, float]]:
         if len(signs) != 1:
             continue  # a unit must be named, and only one
         figures = [float(a.replace(",", ".")) for a, _ in items]
-        gaps = {round(b - a, 6) for a, b in itertools.pairwise(figures)}
-        if len(gaps) == 1 and (gap := gaps.pop()) > 0:
+        between = gaps(figures)
+        if len(between) == 1 and (gap := between.pop()) > 0:
             out.append((figures[0], figures[-1], m.group(2) or items[-1][1], gap))
     return out
 
