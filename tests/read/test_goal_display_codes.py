@@ -95,3 +95,28 @@ def test_with_a_manual_a_code_is_cut_only_from_a_word_the_manual_uses() -> None:
         "fan": "fst",
         "lamp": "grn",
     }
+
+
+# a sealer whose pressure is NORMAL or GENTLE, with the same fan codes
+SEALER = model_from("""
+    controls: [{id: fan}, {id: pressure}]
+    variables:
+      fan: {type: discrete, values: [slo, med, fst], label: FAN}
+      pressure: {type: discrete, values: [normal, gentle], label: PRESSURE}
+    actions:
+      press_fan: {control: fan}
+      press_pressure: {control: pressure}
+    features:
+      fan:
+        - {actions: [press_fan], variable: fan, effect: next}
+      pressure:
+        - {actions: [press_pressure], variable: pressure, effect: next}
+    """)
+
+
+def test_an_adverb_names_the_value_of_its_adjective() -> None:
+    # "gently" drops GENTLE's final e; "slowly" is slow, which SLO cuts short
+    assert parse_instruction(SEALER, "Seal the crackers gently.") == {"pressure": "gentle"}
+    assert parse_instruction(SEALER, "Dry the herbs slowly.") == {"fan": "slo"}
+    # an adverb of another adjective names nothing
+    assert "fan" not in parse_instruction(SEALER, "Seal it gently, it stops automatically.")

@@ -308,6 +308,8 @@ def _match_at(
         here = text.stems[k]
         if here == target:
             pass
+        elif len(stems) == 1 and _adverb_of(text.word(k), target, coded):
+            quality = min(quality, 0.8)  # "seal it gently" for GENTLE, "fire slowly" for SLO
         elif text.word(k).endswith("ly") and len(text.word(k)) > 5:
             return None  # "automatically" says how, it does not name AUTO
         elif similar(here, target):
@@ -339,6 +341,17 @@ def _match_at(
             return None
         k += 1
     return k, quality
+
+
+def _adverb_of(word: str, target: str, coded: bool) -> bool:
+    """``word`` is the adverb of the value's adjective: "gently" of GENTLE (the adjective's
+    final e dropped before -ly), or "slowly" of a panel code that cuts "slow" short (SLO).
+    An adverb whose adjective is another word ("automatically") names no value."""
+    if not word.endswith("ly") or len(word) <= 5:
+        return False
+    if stem(word[:-1] + "e") == target and word[-3] not in _VOWELS:
+        return True
+    return coded and display_abbreviation(target, word[:-2])
 
 
 _SPLIT_VERBS = frozenset({stem("keep")})
