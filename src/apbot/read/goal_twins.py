@@ -51,7 +51,7 @@ _PHRASES: dict[str, tuple[tuple[str, ...], ...]] = {
     ),
     "v": (("vertical",), ("up", "-", "down"), ("up", "and", "down")),
 }
-_NOUNS = frozenset(
+PART_NOUNS = frozenset(  # parts of an appliance that each hold their own settings
     {"zone", "zones", "basket", "baskets", "drawer", "drawers", "side", "sides", "ring", "rings"}
     | {"burner", "burners", "plate", "plates", "element", "compartment", "z", "pot", "one"}
 )
@@ -115,7 +115,7 @@ def _find_twins(model: ApplianceModel) -> list[Twins]:
                 continue
             labels = " ".join(model.variables[n].label or "" for n in marks)
             named = (set(key) | set(_tokens(labels))) - {"*"}
-            nouns = frozenset(w for w in named if not w.isdigit()) | _NOUNS
+            nouns = frozenset(w for w in named if not w.isdigit()) | PART_NOUNS
             groups.append(Twins(tuple(marks), marks, nouns))
     return groups
 

@@ -45,6 +45,7 @@ from apbot.read.roles_lists import (
     pair_of_names,
 )
 from apbot.read.roles_menu import assign_menu
+from apbot.read.roles_nounpads import noun_pads
 from apbot.read.roles_pads import (
     codes_shown,
     column_keys,
@@ -131,6 +132,11 @@ def assign(b: Builder) -> None:
             var = pad_group(b, selecting)
             keys = [k for k in keys if k not in selecting]
             codes_shown(b, var, selecting, codes)
+        else:  # "| HOT | selects hot water |": keys selecting kinds of one thing
+            noun, selecting, idle = noun_pads(b, keys)
+            if selecting:
+                pad_group(b, selecting, noun, idle)
+                keys = [k for k in keys if k not in selecting]
     pads = [k for k in keys if k.skill == "press" and not set(words(k.token)) & FUNCTION_WORDS]
     named = [k for k in keys if k.skill == "press" and k not in pads]
     for group in listed_groups(b, pads + named, tables_only=True):

@@ -12,9 +12,11 @@ from apbot.read.shapes import GROUP_NOUNS, GROUP_PLURALS
 from apbot.read.text import Unit
 
 
-def pad_group(b: Builder, group: list[ActionInfo]) -> str:
-    """Keys the manual lists together: one variable, each key going to its own value."""
-    noun = _group_noun(b, group)
+def pad_group(b: Builder, group: list[ActionInfo], noun: str = "", idle: str = "") -> str:
+    """Keys the manual lists together: one variable, each key going to its own value (named
+    ``noun`` when the caller read what they select; starting at ``idle``, a state no key
+    selects, when the keys each start something and the manual names no start)."""
+    noun = noun or _group_noun(b, group)
     var = b.unique(noun, b.variables)
     values = [plain(label_of(b, k.controls[0])) for k in group]
     values = [v if values.count(v) == 1 else f"{v}_{i}" for i, v in enumerate(values)]
@@ -25,6 +27,8 @@ def pad_group(b: Builder, group: list[ActionInfo]) -> str:
         first_mention(b, [g.token for g in group]),
     )
     start, at = _pad_initial(b, values)
+    if start is None and idle:
+        start, at = idle, first_mention(b, [g.token for g in group])
     if start is None:
         b.note(f"variables.{var}.initial", f"starts at {values[0]} (the manual does not say)")
     elif start in values:
