@@ -30,7 +30,7 @@ def said_choices(
     >>> from apbot.model.schema import ApplianceModel
     >>> model = ApplianceModel.model_validate({
     ...     "appliance": {"id": "m", "category": "c", "name": "m"},
-    ...     "variables": {"style": {"type": "discrete", "values": ["off", "on"]}},
+    ...     "variables": {"style": {"type": "discrete", "values": ["off", "on"], "label": "STYLE"}},
     ...     "controls": [{"id": "style", "kind": "button", "label": "STYLE"}],
     ...     "actions": {"press_style": {"control": "style"}},
     ...     "features": {"style": [
@@ -43,16 +43,21 @@ def said_choices(
     True
     >>> said_choices(model, "style", ["L", "R"], "right") is None
     True
+    >>> said_choices(model, "style", ["STYLE FETA", "STYLE BRIE"], "brie") is not None
+    True
     """
     spec = model.variables[name]
     if not isinstance(spec, DiscreteVariable) or spec.cases:
         return None
     words: dict[str, str] = {}  # value -> the text as shown
+    label = (spec.label or "").strip().casefold()
     for text in texts:
-        shown = text.strip()
-        if not _WORD.fullmatch(shown):
+        shown = word = text.strip()
+        if label and word.casefold().startswith(label + " "):
+            word = word[len(label) :].strip()  # STYLE FETA: the setting's label, then its value
+        if not _WORD.fullmatch(word):
             return None  # a text with numbers or marks: not a list of names
-        words.setdefault(shown.casefold(), shown)
+        words.setdefault(word.casefold(), shown)
     if len(words) < 2 or said.strip().casefold() not in words:
         return None  # (R for RIGHT is left alone: a letter may stand for more than one word)
     known = [str(v) for v in all_values(spec)]
