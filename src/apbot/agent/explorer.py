@@ -19,6 +19,7 @@ from apbot.agent.perception import Seen
 from apbot.agent.quantities import summary
 from apbot.agent.renamed import by_own_parts, rename_walk, translate
 from apbot.agent.repair import RepairError
+from apbot.agent.said_choices import said_choices
 from apbot.agent.session import MISSING, Executed, Session
 from apbot.agent.time_styles import restyle_walk
 from apbot.agent.walk_learning import WalkLearning
@@ -143,6 +144,8 @@ class Explorer(WalkLearning):
             learnt = self._template_or_word(name, forward, backward, believed, start_read)
         if texts and not learnt and self._learn_words(name, texts):
             forward, backward = as_text(forward), None if backward is None else as_text(backward)
+        elif texts and not learnt:
+            self._learn_said(name, texts)
 
         def again(trace: list[Any]) -> list[Any]:
             result = []
@@ -205,6 +208,21 @@ class Explorer(WalkLearning):
         if not reads_all(new, name, mains):
             return False
         session.adopt(new, f"{name}: choices, some shown as words ({', '.join(words)})", None)
+        return True
+
+    def _learn_said(self, name: str, texts: list[str]) -> bool:
+        """A list setting whose walk showed the user's word among words the belief cannot
+        read: they are its values (:mod:`apbot.agent.said_choices`)."""
+        said = self.session.context.goal.get(name)
+        if said is None or said in self.session.domain_values(name):
+            return False
+        mains = [self.displays.main(t) for t in dict.fromkeys(texts)]
+        new = said_choices(self.session.belief.model, name, mains, str(said))
+        if new is None or not reads_all(new, name, mains):
+            return False
+        if not self.session.budget.once("template", f"{name}:said"):
+            return False
+        self.session.adopt(new, f"{name}: choices as shown ({', '.join(mains)})", None)
         return True
 
     def _goal_value(self, name: str) -> Any:

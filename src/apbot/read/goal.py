@@ -40,6 +40,7 @@ from apbot.read.goal_every import every_periods
 from apbot.read.goal_fractions import fractions
 from apbot.read.goal_gates import entry_switches, gated_switches
 from apbot.read.goal_kinds import kind_numbers
+from apbot.read.goal_listed import listed_outside
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
 from apbot.read.goal_open import open_entries
 from apbot.read.goal_ordinals import ordinal_numbers
@@ -127,6 +128,7 @@ def parse_instruction(
     counting = assign_mentions(view, text, mentions, goal, claimed, where, outside)
     if outside is not None:  # a read belief: a number its setting's name stands beside
         kept_outside(view, text, mentions, goal, claimed, where, outside)
+        listed_outside(view, text, goal, claimed, where, outside, manual or "")
     superlatives(view, text, goal, claimed, where)
     said_units(view, goal)
     zero_settings(view, text, goal, claimed, where)
