@@ -94,14 +94,20 @@ def test_a_clock_list_told_in_seconds_is_minutes_and_seconds() -> None:
 # a twin-plate grill: a section titled "Plate mode" is about MODE, not about PLATE
 GRILL = """SIZZLE TG-2 twin grill
 
-PLATE    picks the plate the keys act on: FRONT or REAR
-MODE     mode of the chosen plate
+3   THE KEYS
 
-Plate mode: sear, warm or off
+   PLATE     picks the plate the keys act on: FRONT or REAR
+   MODE      mode of the chosen plate
 
-Press MODE to step the chosen plate through its modes:
+4   OPERATION
 
-   OFF → SEAR → WARM → OFF …
+4.1  Plate mode: sear, warm or off
+
+   Press MODE to step the chosen plate through its three modes:
+
+         OFF  ─►  SEAR  ─►  WARM  ─►  OFF …
+
+   The plate keeps its mode when you choose the other plate.
 """
 
 
