@@ -114,11 +114,13 @@ class ListReader(TableReader):
         return seen
 
     def _other_head(self, token: str, tw: list[str], heading: str) -> bool:
-        """A heading whose title names this key's word before another key's name ("Bowl mode:
-        slush, chill or off" beside BOWL and MODE): the title's last noun says what it is
-        about, here the other key's setting, so its section lends this key nothing."""
+        """A heading whose title names this key's word right before another key's name ("Bowl
+        mode: slush, chill or off" beside BOWL and MODE): the compound's last noun says what it
+        is about, here the other key's setting, so its section lends this key nothing."""
         title = words(heading.split(":")[0])
-        at = [k for k, h in enumerate(title) if len(h) >= 4 and any(_same_word(h, t) for t in tw)]
+        # the key's word itself, then the other's: a compound ("Bowl mode"), where the second
+        # noun is the head; an inflected word ("Delayed start") is no compound of the two keys
+        at = [k for k, h in enumerate(title) if h in tw]
         others = {
             w
             for t, lab in self.labels.items()
@@ -126,7 +128,7 @@ class ListReader(TableReader):
             for w in words(lab.text)
             if len(w) >= 4 and w not in tw
         }
-        return bool(at) and any(h in others for h in title[at[0] + 1 :])
+        return any(k + 1 < len(title) and title[k + 1] in others for k in at)
 
     def _table_after(self, j: int, seen: list[int], gap: int) -> None:
         """The rows of the table that starts within ``gap`` units after unit ``j``, added to
