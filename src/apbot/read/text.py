@@ -344,16 +344,14 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
             # "WARM      holds cooked food hot": a term and its definition, a new item; a
             # legend set in as a block has its terms at one indent (a wrapped line further in)
             flush()
-        if not para:  # a set-in legend starts with a term too (a key's name or its symbol)
-            para_indent = indent if _SET_TERM_RE.match(stripped) or _TERM_RE.match(stripped) else -1
+        if not para:
+            para_indent = indent
         para.append((number, stripped))
     flush()
     units = drop_tagged_models(drop_boilerplate(units, original), original, keys)
     return Manual(units, original, glyphs)
 
 
-# a key printed as a symbol, then its meaning after a wide gap ("⏻        on / off")
-_SET_TERM_RE = re.compile(r"[^\w\s]{1,2}\s{2,}\S")
 _LEADER_RE = re.compile(r"(?<=\S)[ \t]*(?:\.[ \t]?){4,}[ \t]*(?=\S)")
 _FIELD_RE = re.compile(  # "Water level: …", "Cup-size lamps: …": a field of its own
     r"^\s{0,2}[A-Z][a-z]+(?:-[a-z]+)?(?:[ -][A-Za-z]+){0,3}(?: \([^)]{1,30}\))?:\s+\S"
