@@ -11,6 +11,7 @@ from apbot.read.actions import ActionInfo
 from apbot.read.evidence_tables import TableReader
 from apbot.read.labels import Label, words
 from apbot.read.list_lines import wrapped_list
+from apbot.read.model_columns import own_column
 from apbot.read.shapes import (
     DOWN_WORDS,
     ORDER_RE,
@@ -99,7 +100,8 @@ class ListReader(TableReader):
                 hw = words(unit.heading)
                 if any(
                     _same_word(h, t) for t in tw for h in hw if len(h) >= 4
-                ):  # ("Cookware" is no heading of COOK: a word, not a prefix)
+                ) and not self._other_head(token, tw, unit.heading):
+                    # ("Cookware" is no heading of COOK: a word, not a prefix)
                     if i not in seen:
                         seen.append(i)  # the heading itself: bullets below it list values
                     for j in range(i + 1, min(i + 6, len(units))):
@@ -110,6 +112,23 @@ class ListReader(TableReader):
                         if units[j].text.rstrip().endswith(":"):
                             self._table_after(j, seen, 1)  # "The time changes in these steps:"
         return seen
+
+    def _other_head(self, token: str, tw: list[str], heading: str) -> bool:
+        """A heading whose title names this key's word right before another key's name ("Bowl
+        mode: slush, chill or off" beside BOWL and MODE): the compound's last noun says what it
+        is about, here the other key's setting, so its section lends this key nothing."""
+        title = words(heading.split(":")[0])
+        # the key's word itself, then the other's: a compound ("Bowl mode"), where the second
+        # noun is the head; an inflected word ("Delayed start") is no compound of the two keys
+        at = [k for k, h in enumerate(title) if h in tw]
+        others = {
+            w
+            for t, lab in self.labels.items()
+            if t != token and lab.line is not None
+            for w in words(lab.text)
+            if len(w) >= 4 and w not in tw
+        }
+        return any(k + 1 < len(title) and title[k + 1] in others for k in at)
 
     def _table_after(self, j: int, seen: list[int], gap: int) -> None:
         """The rows of the table that starts within ``gap`` units after unit ``j``, added to
@@ -205,7 +224,7 @@ class ListReader(TableReader):
         sentence naming the key beats prose nearby, a table the sentence introduces...)."""
         units = self.manual.units
         unit = units[i]
-        text = unit.text
+        text = self._own_model_row(unit)
         out: list[tuple[list[str], float]] = []
         found = find_list(text)
         if found:
@@ -340,6 +359,14 @@ class ListReader(TableReader):
                 return items
         return []
 
+    def _own_model_row(self, unit: Unit) -> str:
+        """A table row's text; in a table comparing the models of a range, only its first cell
+        and this manual's own model's cell (a sister's cells name what this one lacks)."""
+        if not unit.cells or len(unit.header) != len(unit.cells):
+            return unit.text
+        own = own_column(unit.header, self.manual.lines)
+        return unit.text if own is None else f"{unit.cells[0]} | {unit.cells[own]}"
+
     def _led_list(self, unit: Unit, tokens: list[str]) -> list[str] | None:
         """A list after a colon in a sentence that starts by naming the setting ("Drying-time
         settings available: …" for DRY TIME, "Timer steps: …" for TIMER), or in the next cell
@@ -347,7 +374,8 @@ class ListReader(TableReader):
         if len(unit.cells) >= 2:
             if not self._names_setting(words(unit.cells[0]), tokens):
                 return None
-            for cell in unit.cells[1:]:  # "| SIZE | Loaf size | 1.0 LB, 1.5 LB, 2.0 LB |"
+            cells = self._own_model_row(unit).split(" | ")[1:]
+            for cell in cells:  # "| SIZE | Loaf size | 1.0 LB, 1.5 LB, 2.0 LB |"
                 items = cell_list(cell)
                 if items and len(items) >= 3:
                     return items

@@ -24,6 +24,7 @@ from apbot.read.cases_resets import apply_resets
 from apbot.read.cases_units import unit_ranges
 from apbot.read.cases_zones import zone_twins
 from apbot.read.code_amounts import read_code_amounts
+from apbot.read.code_levels import read_code_levels
 from apbot.read.code_words import name_code_words
 from apbot.read.codes import name_codes
 from apbot.read.guards_enabled import read_enabling_switches
@@ -72,6 +73,7 @@ def read_manual(
     name_codes(builder)
     name_code_words(builder)
     read_code_amounts(builder)
+    read_code_levels(builder)
     read_off_words(builder)
     read_held_off_words(builder)
     read_range_codes(builder)
@@ -129,7 +131,10 @@ def _controls(b: Builder) -> list[dict[str, Any]]:
 
 
 def _control_id(token: str) -> str:
-    return _ident(token, "control") + ("" if token.startswith("key_") else "_control")
+    """The control's id; a key named by its amount ("10s", "3h") keeps that amount in its id,
+    so that several such keys stay apart."""
+    named = token if token[:1].isalpha() else f"key_{token}"
+    return _ident(named, "control") + ("" if token.startswith("key_") else "_control")
 
 
 def _action(info: ActionInfo) -> dict[str, Any]:

@@ -40,6 +40,7 @@ from apbot.read.roles_keyed import assign_keyed_amounts
 from apbot.read.roles_lists import (
     dial_values,
     list_evidence,
+    listed_min_sec,
     more_less_pair,
     numeric_list,
     pair_of_names,
@@ -237,7 +238,7 @@ def assign(b: Builder) -> None:
         ):
             numbered = set(words(name)) & CHOICE_WORDS and all(v.isdigit() for v in ev.values)
             if numeric_list(ev.values) and not (numbered and len(ev.values) <= 40):
-                ev2 = list_evidence(ev)
+                ev2 = list_evidence(ev, listed_min_sec(b, key, ev.values_at))
                 var = b.add_number(name, lab, ev2, cyclic=True)
             else:
                 var = b.add_discrete(name, ev.values, lab, ev)

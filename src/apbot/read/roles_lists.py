@@ -6,12 +6,14 @@ from __future__ import annotations
 import re
 from typing import Any
 
+from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.labels import words
 from apbot.read.roles_common import clock_list, numeric_list, stepped_noun, token_of
 from apbot.read.shapes import Evidence, _fits, _next_table_column
 from apbot.read.text import Unit
 from apbot.read.values import find_ranges, find_step
+from apbot.read.values_labels import seconds_said
 from apbot.read.values_tails import gaps
 
 LIST_WORDS = {"left", "right", "prev", "previous", "next", "forward"}
@@ -150,16 +152,33 @@ def _nums(values: list[str]) -> list[float]:
     return sorted({float(m.group(0).replace(",", ".")) for m in found if m})
 
 
-def list_evidence(ev: Evidence) -> Evidence:
+def listed_min_sec(b: Builder, key: ActionInfo, at: int | None) -> bool:
+    """Whether the clock figures a key's list gives at unit ``at`` are minutes and seconds
+    ("0:30 → 1:00 → … 5:00" and "Up to 2 minutes the steps are 30 seconds", or the key's
+    time "shown as minutes:seconds")."""
+    if at is None:
+        return False
+    units = b.manual.units
+    label = b.labels.get(key.controls[0])
+    about = [units[i].text for i in (label.mentions if label else [])]
+    return seconds_said([u.text for u in units[at : at + 3]], about)
+
+
+def list_evidence(ev: Evidence, min_sec: bool = False) -> Evidence:
     """A printed row of numbers as piecewise ranges, exactly those numbers (equal gaps share a
-    piece: 20 30 40 60 90 is 20–40 by 10, 40–60 by 20, 60–90 by 30)."""
+    piece: 20 30 40 60 90 is 20–40 by 10, 40–60 by 20, 60–90 by 30). Clock figures are h:mm,
+    or m:ss when ``min_sec`` (the text around them says so)."""
     from apbot.read.values import gap_pieces, unit_name
 
     nums = _nums(ev.values or [])
     unit = unit_name(re.sub(r"[\d.,\s]", "", (ev.values or [""])[-1]))
-    if clock_list(ev.values or []):  # h:mm: in seconds
+    if clock_list(ev.values or []):  # h:mm (or m:ss): in seconds
+        scale = 60 if min_sec else 3600
         nums = sorted(
-            {int(h) * 3600 + int(m) * 60 for h, m in (v.split(":") for v in ev.values or [])}
+            {
+                int(h) * scale + int(m) * scale // 60
+                for h, m in (v.split(":") for v in ev.values or [])
+            }
         )
         unit = "s"
     pieces = gap_pieces(nums, unit)

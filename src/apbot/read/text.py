@@ -194,9 +194,10 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
     para: list[tuple[int, str]] = []
     para_bullet = False
     para_step: int | None = None
+    para_indent = -1  # how far the paragraph's first line is set in (-1: a bullet, a unit)
 
     def flush() -> None:
-        nonlocal para, para_bullet, para_step
+        nonlocal para, para_bullet, para_step, para_indent
         offsets: list[tuple[int, int]] = []  # (character offset in the paragraph, line)
         acc = 0
         for line_no, piece in para:
@@ -223,6 +224,7 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
         para = []
         para_bullet = False
         para_step = None
+        para_indent = -1
 
     fenced = False
     furniture = _furniture(raw_lines) | _running_titles(raw_lines)
@@ -333,8 +335,17 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
             flush()  # go on with it), never running on from the row above
             para.append((number, stripped))
             continue
-        if para and (_TERM_RE.match(line) or _FIELD_RE.match(line)):
-            flush()  # "WARM      holds cooked food hot": a term and its definition, a new item
+        indent = len(line) - len(line.lstrip())
+        if para and (
+            _TERM_RE.match(line)
+            or _FIELD_RE.match(line)
+            or (indent == para_indent and _TERM_RE.match(line.lstrip()))
+        ):
+            # "WARM      holds cooked food hot": a term and its definition, a new item; a
+            # legend set in as a block has its terms at one indent (a wrapped line further in)
+            flush()
+        if not para:
+            para_indent = indent
         para.append((number, stripped))
     flush()
     units = drop_tagged_models(drop_boilerplate(units, original), original, keys)
@@ -346,7 +357,7 @@ _FIELD_RE = re.compile(  # "Water level: …", "Cup-size lamps: …": a field of
     r"^\s{0,2}[A-Z][a-z]+(?:-[a-z]+)?(?:[ -][A-Za-z]+){0,3}(?: \([^)]{1,30}\))?:\s+\S"
 )
 _TERM_RE = re.compile(  # "TEMP knob     Sets …", "SET 60°C     Set temperature": a term
-    r"^\s{0,2}[A-Z0-9](?:[A-Z0-9+/&.'°-]|(?<=[\d-]):(?=[\d-]))*"  # a colon only in 01:30, --:--
-    r"(?: (?:[A-Z0-9+/&.'°-]|(?<=[\d-]):(?=[\d-]))+){0,3}"
+    r"^\s{0,2}[A-Z0-9](?:[A-Z0-9+/&.'°−-]|(?<=[\d-]):(?=[\d-]))*"  # a colon only in 01:30, --:--
+    r"(?: (?:[A-Z0-9+/&.'°−▲▼-]|(?<=[\d-]):(?=[\d-]))+){0,3}"
     r"(?: (?:knob|dial|button|key|switch|lever|selector|wheel|ring|lamp|indicator)s?)?\s{2,}\S"
 )

@@ -30,6 +30,8 @@ _CUE = re.compile(  # a lookahead, so that every cue in a sentence is tried
     r"\bpositions?(?: are)?|\bpick|\bsteps? through|\bchanges?|:)\s+(.*))",
     re.IGNORECASE,
 )
+# the colon ending a lead-in ("Order: LOW → HIGH"), not one inside a clock time ("0:30")
+_LEAD_COLON = re.compile(r"(?<!\d):|:(?!\d)")
 _STOP_WORDS = {"the", "a", "an", "your", "this", "that", "it", "you", "to", "is", "are", "of"}
 
 
@@ -157,7 +159,8 @@ def find_list(text: str) -> tuple[list[str], str] | None:
         parts = filled_amounts(filled_codes(parts))
     amount = re.search(rf"(?<![\w.])({NUM}\s*{UNIT})\s*$", parts[0], re.I)
     if len(parts) >= 3 or both or (len(parts) == 2 and all(_value_like(p, True) for p in parts)):
-        head = parts[0].split(":")[-1].split()  # "in this order: AUTO → ...", "Clockwise: Cotton"
+        # "in this order: AUTO → ...", "Clockwise: Cotton"; a clock's colon ("0:30 → 1:00") stays
+        head = _LEAD_COLON.split(parts[0])[-1].split()
         if head and head[-1].startswith("(") and len(head[-1]) > 1:
             head[-1] = head[-1][1:]  # "… the next programme code (P0 → P1 → …)": in brackets
         capital = [w for w in head if w.upper() == w and any(c.isalpha() for c in w)]
@@ -236,7 +239,7 @@ def _dotted_run(text: str) -> list[str] | None:
         return None
     counts = [len(p.split()) for p in middle]
     k = max(set(counts), key=lambda c: (counts.count(c), -c))
-    first = _clean_item(" ".join(parts[0].split(":")[-1].split()[-k:]))
+    first = _clean_item(" ".join(_LEAD_COLON.split(parts[0])[-1].split()[-k:]))
     last = _clean_item(" ".join(parts[-1].split()[:k]))
     items = [i for i in [first, *middle, last] if i]
     return _dedupe(items)

@@ -20,6 +20,21 @@ def minutes_and_seconds(text: str, end: int) -> bool:
     return bool(_MIN_SEC_LABEL.match(text, end))
 
 
+# a clock figure's reading said in words: "(minutes:seconds)", "mm:ss"; or, beside a list of
+# them, its steps told in seconds ("the steps are 30 seconds"): h:mm times are told in minutes
+# and hours, never in seconds
+_MIN_SEC_SAID_RE = re.compile(r"\b(?:mins?|minutes?)\s*[:/]\s*(?:secs?|seconds?)\b|\bmm:ss\b", re.I)
+_SECONDS_RE = re.compile(r"\b\d+\s*(?:secs?|seconds?)\b", re.IGNORECASE)
+
+
+def seconds_said(beside: list[str], about: list[str]) -> bool:
+    """Whether a list of clock figures is minutes and seconds: the texts ``beside`` it tell its
+    steps in seconds, or the texts ``about`` its setting label its figures so."""
+    return any(_SECONDS_RE.search(t) or _MIN_SEC_SAID_RE.search(t) for t in beside) or any(
+        _MIN_SEC_SAID_RE.search(t) for t in about
+    )
+
+
 def clock_seconds(figure: str, min_sec: bool) -> int:
     """Seconds in a clock figure "m:ss" (``min_sec``) or "h:mm"."""
     first, second = figure.split(":")
