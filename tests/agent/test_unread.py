@@ -40,6 +40,8 @@ def test_numbers_held_in_any_form_are_read() -> None:
 def test_numbers_that_ask_nothing_are_not_unread() -> None:
     assert unplaced_numbers("Toast two slices", {"mode": "toast"}) == []  # a count of things
     assert unplaced_numbers("Run P4 now", {"running": "on"}) == []  # a code
+    assert unplaced_numbers("Programme 5, the sweet bread", {"menu": "sweet"}) == []
+    assert unplaced_numbers("At 50% power (level 5)", {"power": "50%"}) == []
     assert unplaced_numbers("Day 5 of 17", {"day": 5}) == []  # the whole
     assert unplaced_numbers("Bake at 190... no, make it 180", {"temp": 180}) == []
     assert unplaced_numbers("A kilo and a half of meat", {"weight": 1500}) == []

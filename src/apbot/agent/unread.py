@@ -13,8 +13,9 @@ kinds of words are counted as unread, from the user's sentence and the belief al
 
 Numbers that ask nothing are left alone: counts of things ("two slices"), a number written as an
 article or a fraction word ("a kilo and a half": the whole is what was placed), a code glued to
-a letter ("P4"), the whole in "day 5 of 17", and a number the user corrected ("190… no, make
-it 180").
+a letter ("P4") or following a programme's kind word ("programme 5 for sweet bread"), a number in
+brackets ("50 % power (level 5)"), the whole in "day 5 of 17", and a number the user corrected
+("190… no, make it 180").
 """
 
 from __future__ import annotations
@@ -29,6 +30,7 @@ from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_remarks import without_remarks
 from apbot.read.goal_view import model_view
 from apbot.read.numbers import Mention, Token, find_mentions, read_number, tokenize
+from apbot.read.shapes import GROUP_NOUNS
 
 _NUMBER = re.compile(r"\d+(?:\.\d+)?")
 _CLOCK = re.compile(r"^(\d+):(\d\d)(?::(\d\d))?$")
@@ -94,6 +96,10 @@ def _asks_nothing(mention: Mention, tokens: list[Token]) -> bool:
         before = tokens[mention.start - 1].text.casefold()
         if len(before) == 1 and before.isalpha() and before not in ("a", "i"):
             return True  # "P4": a code, named as a value if at all
+        if mention.kind == "number" and before in GROUP_NOUNS:
+            return True  # "programme 5 for sweet bread": a code, the name beside it
+    if after == ")" and "(" in {t.text for t in tokens[max(0, mention.start - 2) : mention.start]}:
+        return True  # "50 % power (level 5)": an aside, the request said outside it
     if (
         mention.start > 1
         and tokens[mention.start - 1].text.casefold() == "of"
