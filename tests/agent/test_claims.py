@@ -78,3 +78,18 @@ def test_a_goal_setting_the_display_prints_at_another_value_is_not_claimed() -> 
     assert episode.claimed_success
     assert env.simulator.assignment()["mode"] == "bagel"
     assert any("prints mode=toast" in e.text for e in episode.trace if e.kind == "repair")
+
+
+def test_a_number_the_goal_does_not_hold_is_not_claimed() -> None:
+    # "high, for 3 hours": the lamp has no timer the reader found, so the goal holds only the
+    # mode; the robot sets it but must say the hours were not understood
+    model = model_from(LAMP)
+    env = SimulatorEnvironment(model, "display")
+    goal = {"mode": "high"}
+    context = TaskContext(
+        "lamp", "test", "t", "high, for 3 hours", goal, model, actions=tuple(env.actions)
+    )
+    episode = get_method("apbot").run(context, env)
+    assert not episode.claimed_success
+    assert env.simulator.assignment()["mode"] == "high"
+    assert "not understood: 3 hours" in episode.failure

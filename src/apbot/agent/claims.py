@@ -18,6 +18,7 @@ from apbot.agent.episode import TaskContext
 from apbot.agent.locks import is_lock_setting
 from apbot.agent.looking import glance, route_to_screen
 from apbot.agent.session import Stop
+from apbot.agent.unread import unread_parts
 from apbot.model.display import can_show
 from apbot.model.schema import DiscreteVariable
 
@@ -77,6 +78,10 @@ class Claims(Checks):
             )
         if self._shown_otherwise(inside):
             return True  # the display prints a goal setting at another value: plan again
+        context = self.context
+        unread = unread_parts(context.belief, context.instruction, context.goal, context.manual)
+        if unread:  # the goal as read holds, but it is not all the user asked for
+            raise Stop("partly done: the goal as read holds; not understood: " + ", ".join(unread))
         raise Stop("the goal holds", success=True)
 
     def _shown_otherwise(self, inside: dict[str, Any]) -> bool:

@@ -1,0 +1,59 @@
+"""What the user said that the goal as read does not hold (:mod:`apbot.agent.unread`)."""
+
+from __future__ import annotations
+
+from apbot.agent.unread import unknown_names, unplaced_numbers, unread_parts
+from tests.helpers import model_from
+
+CHARGER = """
+controls: [{id: mode, label: MODE}, {id: timer, label: TIMER}]
+variables:
+  mode: {type: discrete, values: [normal, cold], label: MODE}
+  timer: {type: discrete, values: ["2 h", "4 h", "8 h", "12 h"], label: TIMER}
+actions:
+  press_mode: {control: mode}
+  press_timer: {control: timer}
+features:
+  set_mode: [{actions: [press_mode], variable: mode, effect: next}]
+  set_timer: [{actions: [press_timer], variable: timer, effect: next}]
+display:
+  idle: "{mode}"
+"""
+
+
+def test_a_quantity_no_goal_value_holds_is_unread() -> None:
+    goal = {"style": "mozzarella", "ripen": "01:00:00", "running": "on"}
+    said = "Mozzarella with 4 litres of milk and a one hour ripening time, then start."
+    assert unplaced_numbers(said, goal) == ["4 litres"]
+
+
+def test_numbers_held_in_any_form_are_read() -> None:
+    # a duration as minutes or hours, a clock's hour and minute apart, the other scale, a zone
+    assert unplaced_numbers("Heat for two and a half hours", {"time": 150}) == []
+    assert unplaced_numbers("Set the clock to 21:50", {"hour": 21, "minute": 50}) == []
+    assert unplaced_numbers("Reds at 64 °F", {"temperature": 18}) == []
+    assert unplaced_numbers("Smoke at 93 °C", {"temperature": 200}) == []
+    assert unplaced_numbers("Zone 2 at 190 degrees", {"temperature_2": 190}) == []
+    assert unplaced_numbers("The freezer at minus 20", {"freezer": "-20"}) == []
+
+
+def test_numbers_that_ask_nothing_are_not_unread() -> None:
+    assert unplaced_numbers("Toast two slices", {"mode": "toast"}) == []  # a count of things
+    assert unplaced_numbers("Run P4 now", {"running": "on"}) == []  # a code
+    assert unplaced_numbers("Programme 5, the sweet bread", {"menu": "sweet"}) == []
+    assert unplaced_numbers("At 50% power (level 5)", {"power": "50%"}) == []
+    assert unplaced_numbers("Day 5 of 17", {"day": 5}) == []  # the whole
+    assert unplaced_numbers("Bake at 190... no, make it 180", {"temp": 180}) == []
+    assert unplaced_numbers("A kilo and a half of meat", {"weight": 1500}) == []
+
+
+def test_a_corrected_number_left_in_the_goal_is_unread() -> None:
+    # the parser kept the first figure: the corrected one is what the user wants
+    assert unplaced_numbers("Speed 8 - no, make it seven", {"speed": 8}) == ["seven"]
+
+
+def test_a_named_value_the_setting_lacks_is_unread() -> None:
+    model = model_from(CHARGER)
+    assert unknown_names(model, "The winter mode for 8 hours") == ["winter mode"]
+    assert unread_parts(model, "The winter mode for 8 hours", {"timer": "8 h"}) == ["winter mode"]
+    assert unread_parts(model, "The cold mode for 8 hours", {"mode": "cold", "timer": "8 h"}) == []
