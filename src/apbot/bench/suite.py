@@ -130,6 +130,13 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "exercise_bike": 4,
     "cheese_maker": 4,
     "slush_machine": 3,
+    # The thirteenth blind set (helper blind16n, 6 December 2026, the session of 6 December
+    # 03:44 UTC): blind for this round's work.
+    "plant_growing_cabinet": 3,
+    "beer_brewing_system": 4,
+    "baby_swing": 3,
+    "doorbell_chime": 3,
+    "pool_cleaner_robot": 3,
 }
 
 
