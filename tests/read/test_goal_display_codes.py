@@ -120,3 +120,22 @@ def test_an_adverb_names_the_value_of_its_adjective() -> None:
     assert parse_instruction(SEALER, "Dry the herbs slowly.") == {"fan": "slo"}
     # an adverb of another adjective names nothing
     assert "fan" not in parse_instruction(SEALER, "Seal it gently, it stops automatically.")
+
+
+def test_an_adverb_opening_a_sentence_or_not_in_the_manual_names_no_code() -> None:
+    """ "Finally," comments on the sentence; "manually" names MAN only in a manual that says
+    "manual" (as a code is cut only from a word the manual uses)."""
+    stages = model_from("""
+        controls: [{id: stage}]
+        variables:
+          stage: {type: discrete, values: [pre, fin], label: STAGE}
+        actions:
+          press_stage: {control: stage}
+        features:
+          stage:
+            - {actions: [press_stage], variable: stage, effect: next}
+        """)
+    assert "stage" not in parse_instruction(stages, "Finally, rinse the cups.")
+    manual = "FAN: SLO (slow) or FST (fast). LAMP: WHT (white) or GRN (green). MODE: AUTO or MAN."
+    said = parse_instruction(SHORT, "Dry the herbs slowly, I will stop it manually.", manual)
+    assert said == {"fan": "slo"}

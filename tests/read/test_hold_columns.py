@@ -79,5 +79,26 @@ def test_a_hold_switching_the_lock_or_the_appliance_names_no_setting() -> None:
     """One list for every hold: the key lock by any of its names, or the appliance itself."""
     for noun in ("key lock", "childlock", "child safety", "keys", "appliance", "power"):
         assert lock_or_appliance(noun), noun
-    for noun in ("crumb tray", "warm mist", "end signal"):
+    for noun in ("crumb tray", "warm mist", "end signal", "clock display", "power saving"):
         assert not lock_or_appliance(noun), noun
+    assert lock_or_appliance("main power")
+
+
+# a panel heater whose hold column switches the clock display and power saving
+HEATER = """HEATA panel heater
+
+| Key | Press | Hold 3 s |
+|-----|-------|----------|
+| MODE | comfort / eco / frost | clock display on / off |
+| TIMER | timer 1–24 h | power saving on / off |
+| + | up | |
+| − | down | |
+"""
+
+
+def test_a_clock_or_power_saving_held_on_and_off_is_a_setting() -> None:
+    """A clock is no lock, and "power saving" no power switch: each a setting of its own."""
+    actions = ["press_mode", "hold_mode", "press_timer", "hold_timer", "press_plus", "press_minus"]
+    model = read_manual(HEATER, actions).model
+    assert model.features["clock_display"][0].actions == ["hold_mode"]
+    assert model.features["power_saving"][0].actions == ["hold_timer"]

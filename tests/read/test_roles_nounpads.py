@@ -67,3 +67,19 @@ def test_keys_that_each_start_one_begin_at_off() -> None:
 def test_keys_selecting_an_amount_to_adjust_are_no_choice() -> None:
     model = read_manual(ADJUSTERS, ADJUSTERS_ACTIONS).model
     assert "time" not in model.variables
+
+
+# a clock radio whose keys step through the stations: no choice of a kind of station
+RADIO = """TUNA clock radio
+
+| Key | Function |
+|-----|----------|
+| SKIP | Selects the next station |
+| BACK | Selects the previous station |
+| ALARM | Switches the alarm on or off |
+"""
+
+
+def test_keys_selecting_the_next_or_previous_one_are_no_choice() -> None:
+    model = read_manual(RADIO, ["press_skip", "press_back", "press_alarm"]).model
+    assert "station" not in model.variables

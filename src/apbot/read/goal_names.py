@@ -308,7 +308,7 @@ def _match_at(
         here = text.stems[k]
         if here == target:
             pass
-        elif len(stems) == 1 and _adverb_of(text.word(k), target, coded):
+        elif len(stems) == 1 and _adverb_of(text, k, target, coded, known):
             quality = min(quality, 0.8)  # "seal it gently" for GENTLE, "fire slowly" for SLO
         elif text.word(k).endswith("ly") and len(text.word(k)) > 5:
             return None  # "automatically" says how, it does not name AUTO
@@ -343,15 +343,21 @@ def _match_at(
     return k, quality
 
 
-def _adverb_of(word: str, target: str, coded: bool) -> bool:
-    """``word`` is the adverb of the value's adjective: "gently" of GENTLE (the adjective's
-    final e dropped before -ly), or "slowly" of a panel code that cuts "slow" short (SLO).
-    An adverb whose adjective is another word ("automatically") names no value."""
+def _adverb_of(text: Text, k: int, target: str, coded: bool, known: frozenset[str]) -> bool:
+    """Token k is the adverb of the value's adjective: "gently" of GENTLE (the adjective's
+    final e dropped before -ly), or "slowly" of a panel code that cuts "slow" short (SLO), a
+    word the manual uses, as for the code itself (:func:`_match_at`). An adverb whose adjective
+    is another word ("automatically") names no value, nor does one that opens a clause before a
+    comma: "Finally, …", "Normally, …" comment on the sentence, not on how the job is done."""
+    word = text.word(k)
     if not word.endswith("ly") or len(word) <= 5:
+        return False
+    if text.word(k + 1) == "," and (k == 0 or text.word(k - 1) in (".", ";", "!", ",")):
         return False
     if stem(word[:-1] + "e") == target and word[-3] not in _VOWELS:
         return True
-    return coded and display_abbreviation(target, word[:-2])
+    adjective = word[:-2]
+    return coded and (not known or adjective in known) and display_abbreviation(target, adjective)
 
 
 _SPLIT_VERBS = frozenset({stem("keep")})

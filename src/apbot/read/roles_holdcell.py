@@ -92,13 +92,20 @@ def held_lock(b: Builder, key: ActionInfo) -> bool:
     )
 
 
-_NOT_HELD = frozenset({"lock", "lockout", "safety", "key", "keys", "appliance", "power"})
+_LOCK_WORDS = frozenset({"lock", "lockout", "safety", "key", "keys"})
+_ITSELF = frozenset({"appliance", "power"})
 
 
 def lock_or_appliance(noun: str) -> bool:
     """What a hold switches names the key lock ("key lock", "childlock", "child safety": the lock
-    by another name) or the appliance itself ("appliance on / off"), not a setting of its own."""
-    return any(w in _NOT_HELD or w.endswith("lock") for w in re.findall(r"[a-z]+", noun.lower()))
+    by another name) or the appliance itself ("appliance on / off", "main power"), not a setting
+    of its own. The appliance only as the head, the noun's last word: "power saving" is a
+    setting; and a clock is no lock ("clock display on / off")."""
+    said = re.findall(r"[a-z]+", noun.lower())
+    return bool(said) and (
+        said[-1] in _ITSELF
+        or any(w in _LOCK_WORDS or (w.endswith("lock") and w != "clock") for w in said)
+    )
 
 
 def names_a_setting(noun: str) -> bool:

@@ -4,7 +4,7 @@ rows share the noun of what they select, and each key names one choice of it, so
 one setting named by that noun (water: room, cold, hot), though no word such as "programme" or
 "mode" says so (``roles_pads.SELECTS_ONE`` reads those). Not a noun for an amount or a part of
 the appliance: "selects the drying time", "selects the rear zone" pick what the other keys then
-adjust, not a choice of their own."""
+adjust, not a choice of their own; nor "selects the next station", a step through a list."""
 
 from __future__ import annotations
 
@@ -14,6 +14,7 @@ from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.goal_twins import PART_NOUNS
 from apbot.read.labels import words
+from apbot.read.roles_lists import LIST_WORDS
 from apbot.read.shapes import SETTING_NOUNS
 
 # "selects chilled water", "starts the rear wash": the verb, then what it selects
@@ -68,6 +69,8 @@ def noun_pads(b: Builder, keys: list[ActionInfo]) -> tuple[str, list[ActionInfo]
     for key, obj, starts in rows:  # each word of what a row selects that names no key
         if set(obj) & (set(SETTING_NOUNS) | PART_NOUNS):
             continue  # "the drying time", "the rear zone": which to adjust, no choice
+        if set(obj) & LIST_WORDS:
+            continue  # "the next station", "the previous track": a step through a list
         for w in obj:
             if w in own or len(w) < 3:
                 continue
