@@ -88,3 +88,21 @@ def test_a_word_listed_for_two_settings_is_left_alone() -> None:
     manual = MANUAL + "\n   MODE      keeps the last style (GOUDA or BRIE)\n"
     goal, _ = _parse("Brie please.", manual)
     assert "style" not in goal and "mode" not in goal, goal
+
+
+def test_a_safety_legend_below_a_line_naming_the_setting_lists_no_choices() -> None:
+    manual = MANUAL + "\n   Read this page before you press STYLE.\n   DANGER / WARNING / CAUTION\n"
+    goal, notes = _parse("Caution, then start it.", manual)
+    assert "style" not in goal and not notes, goal
+
+
+def test_a_row_with_a_label_of_its_own_takes_no_setting_from_above() -> None:
+    manual = MANUAL + "\n   STYLE     see above\n   Model     PRO / MAX / ULTRA\n"
+    goal, notes = _parse("Max, then start it.", manual)
+    assert "style" not in goal and not notes, goal
+
+
+def test_a_list_in_another_column_flattened_onto_a_keys_row_is_not_its_choices() -> None:
+    manual = MANUAL + "\n   STYLE     picks a cheese          Model     PRO / MAX / ULTRA\n"
+    goal, notes = _parse("Pro, then start it.", manual)
+    assert "style" not in goal and not notes, goal

@@ -11,14 +11,12 @@ among them, nothing is learnt here and the loop stops on the missing value, as b
 
 from __future__ import annotations
 
-import re
 from collections.abc import Sequence
 
 from apbot.agent.repair import RepairError, _dump, _rebuild
+from apbot.agent.worded import WORDS
 from apbot.model.domain import all_values
 from apbot.model.schema import ApplianceModel, DiscreteVariable
-
-_WORD = re.compile(r"[^\W\d_]+(?:[ '/-][^\W\d_]+)*")
 
 
 def said_choices(
@@ -55,7 +53,7 @@ def said_choices(
         shown = word = text.strip()
         if label and word.casefold().startswith(label + " "):
             word = word[len(label) :].strip()  # STYLE FETA: the setting's label, then its value
-        if not _WORD.fullmatch(word):
+        if not WORDS.fullmatch(word):
             return None  # a text with numbers or marks: not a list of names
         words.setdefault(word.casefold(), shown)
     if len(words) < 2 or said.strip().casefold() not in words:

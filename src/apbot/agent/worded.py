@@ -20,7 +20,8 @@ from apbot.agent.repair import RepairError, _dump, _rebuild
 from apbot.model.domain import all_values
 from apbot.model.schema import ApplianceModel, NumericVariable
 
-_WORDS = re.compile(r"[^\W\d_]+(?:[ /-][^\W\d_]+)*")
+WORDS = re.compile(r"[^\W\d_]+(?:[ '/-][^\W\d_]+)*")
+"""Words of letters only, one or a few (``no spin``, ``rinse hold``, ``chef's``): a name."""
 
 
 def worded_values(spec: NumericVariable, name: str, texts: Sequence[str]) -> list[str] | None:
@@ -53,7 +54,7 @@ def worded_values(spec: NumericVariable, name: str, texts: Sequence[str]) -> lis
         else:
             return None
         rest = text[len(start) :].strip()
-        if not _WORDS.fullmatch(rest):
+        if not WORDS.fullmatch(rest):
             return None
         if rest not in words:
             words.append(rest)

@@ -27,6 +27,7 @@ from apbot.read.goal_text import Text, negative_around
 from apbot.read.goal_values import OFF_WORDS, ON_WORDS, kind_noun, name_words
 from apbot.read.goal_view import Goal, Model, domain_values, own_stems
 from apbot.read.goal_vocab import STOP_WORDS, stem
+from apbot.read.text_sections import box_label
 
 _TOKENS = re.compile(r"[A-Za-z][A-Za-z'-]*|\d+|→|->|\.\.\.|…|\s{2,}|[^\sA-Za-z\d]")
 _JOINS = frozenset({"→", "->", ",", "/", "|", "…", "...", "or"})
@@ -146,9 +147,11 @@ def _choices(
         if not tokens:
             continue
         for run, at in _runs(tokens):
-            if any(stem(word.lower()) in named for word in run):
-                continue
-            owner = _owner(tokens, at, own) or _owner_above(above, own)
+            if any(stem(word.lower()) in named for word in run) or box_label(" ".join(run)):
+                continue  # (a safety legend's "DANGER / WARNING / CAUTION" lists no choices)
+            owner = _owner(tokens, at, own)
+            if owner is None and not any(t[0].isalnum() for t in tokens[:at]):
+                owner = _owner_above(above, own)  # "Model  PRO / MAX": its own row's, not above's
             if owner is not None:
                 for word in run:
                     if word.isupper() and len(word) >= 3:  # as the panel prints it
@@ -196,11 +199,16 @@ def _lone_word(tokens: list[str], j: int) -> bool:
 
 def _owner(tokens: list[str], at: int, own: dict[str, str]) -> str | None:
     """The setting a line names: its first word when that is a setting's, else the nearest
-    setting word to the run."""
+    setting word to the run — in the run's cell or the one before it (a key's row: its name,
+    then what it does), not across a page's columns flattened onto one line ("MODE  selects
+    a programme      Model  PRO / MAX")."""
+    cell = [0]
+    for t in tokens:
+        cell.append(cell[-1] + (t == "  "))
     places = [
         (k, own[s])
         for k, t in enumerate(tokens)
-        if t[0].isalpha() and (s := stem(t.lower())) in own
+        if t[0].isalpha() and (s := stem(t.lower())) in own and 0 <= cell[at] - cell[k] <= 1
     ]
     if not places:
         return None
