@@ -145,3 +145,56 @@ Press ZONE to choose the zone.
 def test_a_range_s_table_gives_only_the_own_model_s_values() -> None:
     model = read_manual(RANGE, ["press_zone"]).model
     assert "middle" not in model.variables["zone"].values
+
+
+# a fan whose trouble row names the fan speed beside its error codes
+FAN = """BREEZE fan
+
+Press SPEED + or SPEED − to change the fan speed.
+
+TROUBLESHOOTING
+E1 … E9   The fan speed sensor reports a fault. Unplug the fan and call service.
+"""
+
+
+def test_error_codes_naming_the_setting_are_no_scale_of_it() -> None:
+    model = read_manual(FAN, ["press_speed_up", "press_speed_down"]).model
+    assert model.variables["speed"].show != "E{value}"
+
+
+# a heater's indented, justified prose: a wrapped line starting "8  hours" is no legend row
+HEATER = """HEATER
+
+USING THE TIMER
+
+    Press TIMER to choose how long the heater runs. Each press adds one
+    hour, up to 8 hours; the display counts down the remaining time. Press TIMER again after
+    8  hours to cancel the timer and return to continuous heating.
+"""
+
+
+def test_an_indented_paragraph_of_prose_is_not_split_at_a_justified_line() -> None:
+    texts = [u.text for u in parse_manual(HEATER).units]
+    assert not any(t.startswith("8  hours") for t in texts)
+
+
+# a rice cooker's delay list in hours and minutes, beside a wait told in seconds
+COOKER = """AROMA RC-1 rice cooker
+
+DELAY TIMER
+
+Press DELAY to set when cooking finishes: 0:30 → 1:00 → 1:30 → 2:00 → 3:00 → 4:00.
+The display flashes for 5 seconds, then the timer starts.
+Press START to begin.
+"""
+
+
+def test_a_wait_in_seconds_beside_a_clock_list_keeps_it_hours_and_minutes() -> None:
+    model = read_manual(COOKER, ["press_delay", "press_start"]).model
+    delay = next(v for v in model.variables.values() if v.type == "time")
+    assert delay.ranges is not None and str(delay.ranges[-1][1]) == "04:00:00"
+
+
+def test_columns_of_programme_codes_are_no_models() -> None:
+    lines = ["Use P1 for rice. P1 is quick. Choose P1 often.", "P2 is slow."]
+    assert own_column(["Setting", "P1", "P2", "P3"], lines) is None

@@ -6,7 +6,8 @@ scale only as its first and last code, in a display legend or beside the setting
 setting the manual gives no range for in numbers (the reader would guess one) takes the numbers
 of the widest such span written where the setting is named, each shown as the code. A code
 span standing for programmes (P1–P6) is left alone: it is read only for a numeric setting, and
-only in a sentence or legend row naming that setting.
+only in a sentence or legend row naming that setting. Fault codes ("E1 … E9" in a trouble
+table or a sentence about errors) and model ranges ("models HP1 – HP5") are no scale.
 """
 
 from __future__ import annotations
@@ -14,7 +15,12 @@ from __future__ import annotations
 import re
 
 from apbot.read.build import Builder
+from apbot.read.code_words import MODELS_RE
 from apbot.read.labels import words
+from apbot.read.shapes import ASIDE_HEADING
+
+# a sentence about faults: its codes are error codes, not a setting's levels
+_FAULT_RE = re.compile(r"\b(?:errors?|faults?|faulty|malfunction\w*|failures?)\b", re.IGNORECASE)
 
 # "H2 … H9", "T1 - T7", "L1 (easiest) … L16 (hardest)": one prefix, its first and last number
 _SPAN = re.compile(
@@ -43,7 +49,7 @@ def read_code_levels(b: Builder) -> None:
             continue
         best: tuple[int, str, int, int, int] | None = None  # (width, code, low, high, unit)
         for i, unit in enumerate(b.manual.units):
-            if not own & {w[:5] for w in words(unit.text)}:
+            if not own & {w[:5] for w in words(unit.text)} or _aside(unit.text, unit.heading):
                 continue
             for code, low, high in code_spans(unit.text):
                 if best is None or high - low > best[0]:
@@ -62,3 +68,9 @@ def read_code_levels(b: Builder) -> None:
             n for n in b.notes if not (n.guess and n.subject in (subject, f"{subject}.step"))
         ]
         b.note(subject, f"levels {low}–{high}, shown {code}{low} … {code}{high}", at)
+
+
+def _aside(text: str, heading: str) -> bool:
+    """Whether a unit's codes are faults or models: under a trouble or safety heading, or in a
+    sentence about errors or naming models."""
+    return bool(ASIDE_HEADING.search(heading) or _FAULT_RE.search(text) or MODELS_RE.search(text))

@@ -30,7 +30,7 @@ _NOT_CODES = frozenset({"on", "off"})
 _LEAD = 4  # a definition's words: the code's meaning comes first ("S - small cubes, …")
 _ITEMS = re.compile(r"\s*[/,;]\s*|\s+or\s+")
 # a line naming models or versions: its codes are the models' ("Models S / M / L (standard, …)")
-_MODELS = re.compile(r"\b(?:models?|versions?|variants?)\b", re.IGNORECASE)
+MODELS_RE = re.compile(r"\b(?:models?|versions?|variants?)\b", re.IGNORECASE)
 
 
 def name_code_words(b: Builder) -> None:
@@ -62,7 +62,7 @@ def name_code_words(b: Builder) -> None:
 def own_lines(b: Builder) -> list[str]:
     """The manual's lines, blanked where codes are no setting's: under a troubleshooting,
     error-code or safety heading, or on a line naming models ("Models S / M / L")."""
-    return ["" if _MODELS.search(line) else line for line in lines_outside_asides(b)]
+    return ["" if MODELS_RE.search(line) else line for line in lines_outside_asides(b)]
 
 
 def _meaning(code: str, words: list[str]) -> str | None:

@@ -15,13 +15,19 @@ from collections.abc import Sequence
 # a type number: letters and digits joined by a hyphen or a space ("SM-2", "RB-20U", "CM-3
 # Plus" keeps its word), as a comparison table's header names the models
 _TYPE_RE = re.compile(r"[A-Z]{1,5}[- ]?\d{1,4}[A-Z]{0,3}(?: [A-Z][a-z]+)?")
+# one letter and a number ("P1", "L3", "H2") heads a programme's or a level's column, no model's
+_CODE_RE = re.compile(r"[A-Z]\d{1,2}")
 
 
 def own_column(header: Sequence[str], lines: Sequence[str]) -> int | None:
     """The index of the header cell naming the manual's own model: the model the text names
     most often (page titles repeat it), clearly more than each sister; None when the header
     names no two models or no model stands out."""
-    models = [(k, c.strip()) for k, c in enumerate(header) if k and _TYPE_RE.fullmatch(c.strip())]
+    models = [
+        (k, c.strip())
+        for k, c in enumerate(header)
+        if k and _TYPE_RE.fullmatch(c.strip()) and not _CODE_RE.fullmatch(c.strip())
+    ]
     if len(models) < 2 or len(models) < len(header) - 1:
         return None
     text = "\n".join(lines)

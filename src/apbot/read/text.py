@@ -339,10 +339,16 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
         if para and (
             _TERM_RE.match(line)
             or _FIELD_RE.match(line)
-            or (indent == para_indent and _TERM_RE.match(line.lstrip()))
+            or (
+                indent == para_indent
+                and _TERM_RE.match(line.lstrip())
+                and not any(_STOP_RE.search(piece) for _, piece in para)
+            )
         ):
             # "WARM      holds cooked food hot": a term and its definition, a new item; a
-            # legend set in as a block has its terms at one indent (a wrapped line further in)
+            # legend set in as a block has its terms at one indent (a wrapped line further in);
+            # a paragraph of prose set in (its sentences end in full stops) is no legend, though
+            # a justified line of it may start "8  hours to …"
             flush()
         if not para:
             para_indent = indent
@@ -356,6 +362,7 @@ _LEADER_RE = re.compile(r"(?<=\S)[ \t]*(?:\.[ \t]?){4,}[ \t]*(?=\S)")
 _FIELD_RE = re.compile(  # "Water level: …", "Cup-size lamps: …": a field of its own
     r"^\s{0,2}[A-Z][a-z]+(?:-[a-z]+)?(?:[ -][A-Za-z]+){0,3}(?: \([^)]{1,30}\))?:\s+\S"
 )
+_STOP_RE = re.compile(r"[.!?](?:\s|$)")  # a sentence's end: legend rows have none
 _TERM_RE = re.compile(  # "TEMP knob     Sets …", "SET 60°C     Set temperature": a term
     r"^\s{0,2}[A-Z0-9](?:[A-Z0-9+/&.'°−-]|(?<=[\d-]):(?=[\d-]))*"  # a colon only in 01:30, --:--
     r"(?: (?:[A-Z0-9+/&.'°−▲▼-]|(?<=[\d-]):(?=[\d-]))+){0,3}"

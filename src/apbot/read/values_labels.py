@@ -24,7 +24,13 @@ def minutes_and_seconds(text: str, end: int) -> bool:
 # them, its steps told in seconds ("the steps are 30 seconds"): h:mm times are told in minutes
 # and hours, never in seconds
 _MIN_SEC_SAID_RE = re.compile(r"\b(?:mins?|minutes?)\s*[:/]\s*(?:secs?|seconds?)\b|\bmm:ss\b", re.I)
-_SECONDS_RE = re.compile(r"\b\d+\s*(?:secs?|seconds?)\b", re.IGNORECASE)
+# steps told in seconds ("the steps are 30 seconds", "adds 15 s", "in 10-second steps"), not a
+# wait ("flashes for 5 seconds", "hold 3 seconds"), which any clock's text may name
+_SECONDS_RE = re.compile(
+    r"\b(?:steps?|increments?|intervals?|by|adds?)\b[^.;\d]{0,20}\d+\s*(?:s|secs?|seconds?)\b"
+    r"|\b\d+[- ]?(?:s|secs?|seconds?)\s+(?:steps?|increments?|intervals?)\b",
+    re.IGNORECASE,
+)
 
 
 def seconds_said(beside: list[str], about: list[str]) -> bool:
