@@ -8,10 +8,9 @@ import re
 
 from apbot.model.values import NUMBER_WORDS
 from apbot.read.actions import ActionInfo
-from apbot.read.evidence_tables import TableReader
+from apbot.read.evidence_owners import OwnWords
 from apbot.read.labels import Label, words
 from apbot.read.list_lines import wrapped_list
-from apbot.read.model_columns import own_column
 from apbot.read.shapes import (
     DOWN_WORDS,
     ORDER_RE,
@@ -41,7 +40,6 @@ from apbot.read.value_lists import (
 )
 from apbot.read.values import number
 
-_LEVELS_RE = re.compile(r"(?:levels?|settings?|modes?|options?|stages?|steps?)")  # of a setting
 _TYPING_WORDS = frozenset({"type", "typed", "typing", "digits", "keystrokes", "keyed"})
 _KEY_WORDS = frozenset({"key", "keys", "button", "buttons", "number", "numbers"})
 _PRESS_WORDS = frozenset({"press", "pressed", "touch", "touched", "enter", "entered", "input"})
@@ -69,7 +67,7 @@ def _keyed_examples(units: list[Unit], i: int) -> bool:
     )
 
 
-class ListReader(TableReader):
+class ListReader(OwnWords):
     """The manual's units about the controls, and the value lists they hold."""
 
     manual: Manual
@@ -112,23 +110,6 @@ class ListReader(TableReader):
                         if units[j].text.rstrip().endswith(":"):
                             self._table_after(j, seen, 1)  # "The time changes in these steps:"
         return seen
-
-    def _other_head(self, token: str, tw: list[str], heading: str) -> bool:
-        """A heading whose title names this key's word right before another key's name ("Bowl
-        mode: slush, chill or off" beside BOWL and MODE): the compound's last noun says what it
-        is about, here the other key's setting, so its section lends this key nothing."""
-        title = words(heading.split(":")[0])
-        # the key's word itself, then the other's: a compound ("Bowl mode"), where the second
-        # noun is the head; an inflected word ("Delayed start") is no compound of the two keys
-        at = [k for k, h in enumerate(title) if h in tw]
-        others = {
-            w
-            for t, lab in self.labels.items()
-            if t != token and lab.line is not None
-            for w in words(lab.text)
-            if len(w) >= 4 and w not in tw
-        }
-        return any(k + 1 < len(title) and title[k + 1] in others for k in at)
 
     def _table_after(self, j: int, seen: list[int], gap: int) -> None:
         """The rows of the table that starts within ``gap`` units after unit ``j``, added to
@@ -306,17 +287,6 @@ class ListReader(TableReader):
                 out.append((column, 2.5 if related else 1.2))
         return out
 
-    def _about_another(self, text: str, tokens: list[str]) -> bool:
-        """A sentence led by another key's noun ("Pouch sizes the laminator accepts:" near
-        COLD): the list it introduces is about that, not this key's values. "Power levels
-        available:" (near MODE, beside a POWER key) names levels, whichever key steps them."""
-        lead = words(text)[:2]
-        own = {w for t in tokens for w in words(t.replace("_", " "))}
-        theirs = self._other_keys_words(tokens) - own
-        if len(lead) > 1 and _LEVELS_RE.fullmatch(lead[1]):
-            return False
-        return bool(lead) and lead[0] in theirs
-
     def _counted_chart(self, i: int) -> list[str]:
         """Under the key's own heading ("AUTO COOK CHART"), a sentence or two on, a table whose
         first column counts the touches ("Touches | Menu | Quantity"): its next column is what
@@ -359,14 +329,6 @@ class ListReader(TableReader):
                 return items
         return []
 
-    def _own_model_row(self, unit: Unit) -> str:
-        """A table row's text; in a table comparing the models of a range, only its first cell
-        and this manual's own model's cell (a sister's cells name what this one lacks)."""
-        if not unit.cells or len(unit.header) != len(unit.cells):
-            return unit.text
-        own = own_column(unit.header, self.manual.lines)
-        return unit.text if own is None else f"{unit.cells[0]} | {unit.cells[own]}"
-
     def _led_list(self, unit: Unit, tokens: list[str]) -> list[str] | None:
         """A list after a colon in a sentence that starts by naming the setting ("Drying-time
         settings available: …" for DRY TIME, "Timer steps: …" for TIMER), or in the next cell
@@ -386,49 +348,6 @@ class ListReader(TableReader):
         found = find_list(unit.text)
         items = found[0] if found else bare_list(m.group(2))
         return items if items and len(items) >= 3 else None
-
-    def _names_setting(self, lead: list[str], tokens: list[str]) -> bool:
-        """Whether words start by naming the control's setting (by its action word or its printed
-        label; "Water levels" names WATER LEVEL)."""
-        names = [words(t.replace("_", " ")) for t in tokens]
-        names += [words(self.labels[t].text) for t in tokens if t in self.labels]
-        return any(
-            name
-            and len(name) <= len(lead)
-            and all(lw.startswith(nw) and len(nw) >= 3 for nw, lw in zip(name, lead, strict=False))
-            for name in names
-        )
-
-    def _own_spans(self, text: str, tokens: list[str]) -> list[str]:
-        """:meth:`_own_span` from each place the key's label stands in the sentence."""
-        own = [self.labels[t].text for t in tokens if t in self.labels and self.labels[t].text]
-        starts = sorted({m.start() for lab in own for m in re.finditer(re.escape(lab), text)})
-        if len(starts) <= 1:
-            return [self._own_span(text, tokens)]
-        return [self._own_span(text[k:], tokens) for k in starts]
-
-    def _own_span(self, text: str, tokens: list[str]) -> str:
-        """The part of a sentence about the key: from its label to the next other key's label
-        ("below TEMP. a row printed 20 30 40, and below SPIN a row printed 400 800")."""
-        own = [self.labels[t].text for t in tokens if t in self.labels and self.labels[t].text]
-        starts = [text.find(lab) for lab in own if lab and text.find(lab) >= 0]
-        if not starts:
-            return text
-        start = min(starts)
-        others = [
-            lab.text
-            for t, lab in self.labels.items()
-            if t not in tokens
-            and lab.text
-            and lab.text not in own
-            and not any(lab.text in o for o in own)
-        ]
-        end = len(text)
-        for lab in others:
-            k = text.find(lab, start + 1)
-            if k > start:
-                end = min(end, k)
-        return text[start:end]
 
     def _initial_from_values(self, ev: Evidence, tokens: list[str]) -> None:
         if ev.initial is not None or not ev.values:
