@@ -93,3 +93,22 @@ def test_a_number_the_goal_does_not_hold_is_not_claimed() -> None:
     assert not episode.claimed_success
     assert env.simulator.assignment()["mode"] == "high"
     assert "not understood: 3 hours" in episode.failure
+
+
+def test_a_goal_handed_over_is_claimed_whatever_the_sentence_says() -> None:
+    # a benchmark's stored goal (goal_read=False) answers for itself: the sentence's "3 hours"
+    # is not a part the goal reader left, so reaching the goal is claimed
+    model = model_from(LAMP)
+    env = SimulatorEnvironment(model, "display")
+    context = TaskContext(
+        "lamp",
+        "test",
+        "t",
+        "high, for 3 hours",
+        {"mode": "high"},
+        model,
+        actions=tuple(env.actions),
+        goal_read=False,
+    )
+    episode = get_method("apbot").run(context, env)
+    assert episode.claimed_success

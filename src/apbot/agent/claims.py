@@ -79,7 +79,11 @@ class Claims(Checks):
         if self._shown_otherwise(inside):
             return True  # the display prints a goal setting at another value: plan again
         context = self.context
-        unread = unread_parts(context.belief, context.instruction, context.goal, context.manual)
+        unread = (
+            unread_parts(context.belief, context.instruction, context.goal, context.manual)
+            if context.goal_read
+            else []
+        )
         if unread:  # the goal as read holds, but it is not all the user asked for
             raise Stop("partly done: the goal as read holds; not understood: " + ", ".join(unread))
         raise Stop("the goal holds", success=True)

@@ -36,6 +36,10 @@ class TaskContext:
     manual: str = ""
     actions: tuple[str, ...] = ()
     max_reasoning_steps: int = MAX_REASONING_STEPS
+    goal_read: bool = True
+    """The goal was read from ``instruction`` (False: handed over, e.g. a benchmark's stored
+    goal — then the sentence is not what the goal answers for, and a number it says that the
+    goal does not hold is no part left unread)."""
     observer: Callable[[TraceEvent], None] | None = field(default=None, compare=False)
     """Called with every trace event as it happens (``apbot run`` shows them live)."""
 

@@ -237,6 +237,7 @@ def run_task_learning(
                 model,
                 appliance.manual,
                 tuple(env.actions),
+                goal_read=goal_mode == "read" and not chosen.uses_truth,
                 observer=observer,
             )
             try:
