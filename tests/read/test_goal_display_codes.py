@@ -139,3 +139,32 @@ def test_an_adverb_opening_a_sentence_or_not_in_the_manual_names_no_code() -> No
     manual = "FAN: SLO (slow) or FST (fast). LAMP: WHT (white) or GRN (green). MODE: AUTO or MAN."
     said = parse_instruction(SHORT, "Dry the herbs slowly, I will stop it manually.", manual)
     assert said == {"fan": "slo"}
+
+
+def test_a_time_adverb_or_the_users_own_act_names_no_code() -> None:
+    """ "shortly" says when, not how: no SHT even where the manual reads SHT as "short"; and
+    "manually" of the user stopping it names no MAN even where the manual says "manual"."""
+    cycles = model_from("""
+        controls: [{id: cycle}]
+        variables:
+          cycle: {type: discrete, values: [sht, lng], label: CYCLE}
+        actions:
+          press_cycle: {control: cycle}
+        features:
+          cycle:
+            - {actions: [press_cycle], variable: cycle, effect: next}
+        """)
+    manual = "CYCLE: SHT (short) or LNG (long)."
+    assert "cycle" not in parse_instruction(
+        cycles, "Wash the jars, it should be done shortly.", manual
+    )
+    manual = "FAN: SLO (slow) or FST (fast). MODE: AUTO (automatic) or MAN (manual)."
+    for said in (
+        "Dry the herbs slowly, I will stop it manually.",
+        "Dry the herbs slowly and stop it manually.",
+        "Dry the herbs slowly; I'll stop it manually.",
+    ):
+        assert parse_instruction(SHORT, said, manual) == {"fan": "slo"}
+    # a wish is no act of the user's: "I want it …slowly" still names SLO
+    said = parse_instruction(SHORT, "I want the herbs dried slowly.", manual)
+    assert said == {"fan": "slo"}

@@ -106,3 +106,11 @@ def test_a_list_in_another_column_flattened_onto_a_keys_row_is_not_its_choices()
     manual = MANUAL + "\n   STYLE     picks a cheese          Model     PRO / MAX / ULTRA\n"
     goal, notes = _parse("Pro, then start it.", manual)
     assert "style" not in goal and not notes, goal
+
+
+def test_a_list_of_what_the_lamps_show_gives_no_setting() -> None:
+    """A run under a sentence saying what the lamps show is the states they light, not the
+    choices of the key the sentence names."""
+    manual = "After you press MODE, the lamps show:\n\n   HEATING / READY / DONE\n"
+    goal, notes = _parse("Get it ready for tonight.", manual)
+    assert "mode" not in goal and not notes, goal

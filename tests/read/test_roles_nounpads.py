@@ -83,3 +83,19 @@ RADIO = """TUNA clock radio
 def test_keys_selecting_the_next_or_previous_one_are_no_choice() -> None:
     model = read_manual(RADIO, ["press_skip", "press_back", "press_alarm"]).model
     assert "station" not in model.variables
+
+
+# a drinks machine whose rows share an adjective, not the noun of what they select
+DRINKS = """BREWA drinks machine
+
+| Key | Touch |
+|-----|-------|
+| ESPRESSO | Selects hot coffee |
+| MILK | Selects hot milk |
+| TEA | Selects hot water for tea |
+"""
+
+
+def test_rows_sharing_only_an_adjective_are_no_setting() -> None:
+    model = read_manual(DRINKS, ["press_espresso", "press_milk", "press_tea"]).model
+    assert "hot" not in model.variables

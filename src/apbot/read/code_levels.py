@@ -7,7 +7,8 @@ setting the manual gives no range for in numbers (the reader would guess one) ta
 of the widest such span written where the setting is named, each shown as the code. A code
 span standing for programmes (P1–P6) is left alone: it is read only for a numeric setting, and
 only in a sentence or legend row naming that setting. Fault codes ("E1 … E9" in a trouble
-table or a sentence about errors) and model ranges ("models HP1 – HP5") are no scale.
+table or a sentence about errors) and model ranges ("models HP1 – HP5", "BM1 - BM3 series",
+"type TR2 - TR4") are no scale.
 """
 
 from __future__ import annotations
@@ -21,6 +22,9 @@ from apbot.read.shapes import ASIDE_HEADING
 
 # a sentence about faults: its codes are error codes, not a setting's levels
 _FAULT_RE = re.compile(r"\b(?:errors?|faults?|faulty|malfunction\w*|failures?)\b", re.IGNORECASE)
+
+# a range of parts or products, like a model range: "BM1 - BM3 series", "type TR2 - TR4"
+_SERIES_RE = re.compile(r"\bseries\b|\btypes?\s+[A-Z]{1,2}\d", re.IGNORECASE)
 
 # "H2 … H9", "T1 - T7", "L1 (easiest) … L16 (hardest)": one prefix, its first and last number
 _SPAN = re.compile(
@@ -72,5 +76,10 @@ def read_code_levels(b: Builder) -> None:
 
 def _aside(text: str, heading: str) -> bool:
     """Whether a unit's codes are faults or models: under a trouble or safety heading, or in a
-    sentence about errors or naming models."""
-    return bool(ASIDE_HEADING.search(heading) or _FAULT_RE.search(text) or MODELS_RE.search(text))
+    sentence about errors or naming models, a series or a type."""
+    return bool(
+        ASIDE_HEADING.search(heading)
+        or _FAULT_RE.search(text)
+        or MODELS_RE.search(text)
+        or _SERIES_RE.search(text)
+    )

@@ -7,7 +7,8 @@ word, and the word would be dropped — so the closed loop never looks for it. T
 robot holds still says what the setting's choices are, the way manuals list them: a run of
 single words joined by arrows, commas, slashes or "or" ("LEFT or RIGHT", "MOZZARELLA →
 RICOTTA → FETA", "(REPAIR, SUPPLY)"), on a line that names the setting (a key's row in a
-legend, a sentence) or right below one ("… the next style. Order:" then the run).
+legend, a sentence) or right below one ("… the next style. Order:" then the run) — not one
+saying what the lamps or display show.
 
 A word of the instruction that no step took, that names no setting or key and is no value of
 the belief, is given to the one setting whose listed choices hold it, as said; the reason is
@@ -34,6 +35,12 @@ _JOINS = frozenset({"→", "->", ",", "/", "|", "…", "...", "or"})
 _OBJECTS = frozenset({"the", "a", "an", "it", "them", "my", "our", "your", "some", "this", "these"})
 _ROLES = frozenset({"setting", "switch"})  # a switch too: a STYLE key read as off/on
 _ABOVE = 2
+# a lead line saying what lamps or a display show: the run below is states, not choices
+_SHOWN = re.compile(
+    r"\b(?:lamps?|indicators?|lights|LEDs?|display|screen)\s+(?:\w+\s+){0,2}"
+    r"(?:shows?|showing|reads?|lights?\s+up)\b",
+    re.IGNORECASE,
+)
 """Non-blank lines above a run (with no setting's word of its own) that may name its setting."""
 
 
@@ -219,9 +226,11 @@ def _owner(tokens: list[str], at: int, own: dict[str, str]) -> str | None:
 
 
 def _owner_above(above: list[list[str]], own: dict[str, str]) -> str | None:
-    """The setting the nearest line above names last (a sentence that leads into a list)."""
+    """The setting the nearest line above names last (a sentence that leads into a list), unless
+    that line says what lamps or the display show ("After you press MODE, the lamps show:"):
+    the run is then the states they show, not the setting's choices."""
     for tokens in reversed(above):
         places = [own[s] for t in tokens if t[0].isalpha() and (s := stem(t.lower())) in own]
         if places:
-            return places[-1]
+            return None if _SHOWN.search(" ".join(tokens)) else places[-1]
     return None

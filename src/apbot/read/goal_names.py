@@ -7,6 +7,7 @@ import re
 from dataclasses import dataclass
 from typing import Any
 
+from apbot.read.goal_adverbs import adverb_of_no_value
 from apbot.read.goal_fit import CODE
 from apbot.read.goal_scales import at_its_limit
 from apbot.read.goal_text import (
@@ -306,6 +307,8 @@ def _match_at(
         if k >= len(text.tokens):
             return None
         here = text.stems[k]
+        if adverb_of_no_value(text, k):
+            return None  # "done shortly" is no SHT (short), "I'll stop it manually" no MAN
         if here == target:
             pass
         elif len(stems) == 1 and _adverb_of(text, k, target, coded, known):

@@ -4,7 +4,10 @@ rows share the noun of what they select, and each key names one choice of it, so
 one setting named by that noun (water: room, cold, hot), though no word such as "programme" or
 "mode" says so (``roles_pads.SELECTS_ONE`` reads those). Not a noun for an amount or a part of
 the appliance: "selects the drying time", "selects the rear zone" pick what the other keys then
-adjust, not a choice of their own; nor "selects the next station", a step through a list."""
+adjust, not a choice of their own; nor "selects the next station", a step through a list.
+The shared noun is one some object ends in (its head, "sparkling water"), so a shared adjective
+("selects hot coffee", "selects hot milk", "selects hot water") names no setting; a row whose
+object runs on past it ("still water straight") still holds it."""
 
 from __future__ import annotations
 
@@ -64,6 +67,7 @@ def noun_pads(b: Builder, keys: list[ActionInfo]) -> tuple[str, list[ActionInfo]
         header = unit.header
         rows.append((key, obj, starts))
     own = {w for k, _, _ in rows for w in words(b.labels[k.controls[0]].text)}
+    heads = {obj[-1] for _, obj, _ in rows}  # the nouns the objects end in
     groups: dict[str, list[ActionInfo]] = {}
     started: dict[str, bool] = {}
     for key, obj, starts in rows:  # each word of what a row selects that names no key
@@ -72,7 +76,7 @@ def noun_pads(b: Builder, keys: list[ActionInfo]) -> tuple[str, list[ActionInfo]
         if set(obj) & LIST_WORDS:
             continue  # "the next station", "the previous track": a step through a list
         for w in obj:
-            if w in own or len(w) < 3:
+            if w in own or len(w) < 3 or w not in heads:
                 continue
             if key not in groups.get(w, []):
                 groups.setdefault(w, []).append(key)
