@@ -168,3 +168,21 @@ def test_a_time_adverb_or_the_users_own_act_names_no_code() -> None:
     # a wish is no act of the user's: "I want it …slowly" still names SLO
     said = parse_instruction(SHORT, "I want the herbs dried slowly.", manual)
     assert said == {"fan": "slo"}
+
+
+def test_an_interval_named_by_a_time_adverb_is_still_named() -> None:
+    """ "daily" and "weekly" say how often, and an interval setting's values are named so:
+    only "shortly" and "lately" say when rather than which."""
+    interval = model_from("""
+        controls: [{id: every}]
+        variables:
+          every: {type: discrete, values: [daily, weekly], label: EVERY}
+        actions:
+          press_every: {control: every}
+        features:
+          every:
+            - {actions: [press_every], variable: every, effect: next}
+        """)
+    manual = "EVERY: DAILY or WEEKLY watering."
+    assert parse_instruction(interval, "Water the beds weekly.", manual) == {"every": "weekly"}
+    assert parse_instruction(interval, "I'd like it daily.", manual) == {"every": "daily"}

@@ -8,8 +8,9 @@ from __future__ import annotations
 from apbot.read.goal_text import CLAUSE_ENDS, Text
 from apbot.read.goal_vocab import stem
 
-# adverbs saying when, never how: "done shortly" names no SHT (short)
-_TIME_ADVERBS = frozenset({"shortly", "lately", "hourly", "daily", "nightly", "weekly", "monthly"})
+# adverbs saying when, never how: "done shortly" names no SHT (short). Not "daily", "weekly",
+# "nightly", "hourly": an interval setting's values are named so ("water daily" is DAILY)
+_TIME_ADVERBS = frozenset({"shortly", "lately"})
 # the user's own act in a clause: "I will …", "we'll …", "… myself"; or stopping it oneself
 _OWN_ACT = frozenset({"i'll", "we'll", "myself", "ourselves"})
 _WILL = frozenset({"will", "'ll", "ll", "shall"})
@@ -18,7 +19,7 @@ _STOP_STEMS = frozenset({stem("stop"), stem("end"), stem("finish"), stem("cancel
 
 def adverb_of_no_value(text: Text, k: int) -> bool:
     """Whether token k is an adverb that names no value even where its stem is one: a time
-    adverb ("shortly", "daily") says when, not how; an adverb of the user's own act says how
+    adverb ("shortly") says when, not how; an adverb of the user's own act says how
     the user acts, not what the appliance runs: its clause says what the user will do ("I will
     stop it manually", not "I want it dried gently") or has a verb of stopping ("stop it
     manually": the user stopping it)."""
