@@ -4,6 +4,7 @@ whose words ("read from the manual") are no words for the appliance (``belief_na
 
 from __future__ import annotations
 
+from apbot.model.schema import ApplianceModel
 from apbot.read.belief_name import UNNAMED
 from apbot.read.goal import parse_instruction
 from apbot.read.goal_names import display_abbreviation
@@ -97,6 +98,20 @@ def test_with_a_manual_a_code_is_cut_only_from_a_word_the_manual_uses() -> None:
     }
 
 
+def one_key_setting(name: str, values: str, label: str) -> ApplianceModel:
+    """A panel of one key stepping one coded setting through ``values`` (a YAML list's items)."""
+    return model_from(f"""
+        controls: [{{id: {name}}}]
+        variables:
+          {name}: {{type: discrete, values: [{values}], label: {label}}}
+        actions:
+          press_{name}: {{control: {name}}}
+        features:
+          {name}:
+            - {{actions: [press_{name}], variable: {name}, effect: next}}
+        """)
+
+
 # a sealer whose pressure is NORMAL or GENTLE, with the same fan codes
 SEALER = model_from("""
     controls: [{id: fan}, {id: pressure}]
@@ -125,16 +140,7 @@ def test_an_adverb_names_the_value_of_its_adjective() -> None:
 def test_an_adverb_opening_a_sentence_or_not_in_the_manual_names_no_code() -> None:
     """ "Finally," comments on the sentence; "manually" names MAN only in a manual that says
     "manual" (as a code is cut only from a word the manual uses)."""
-    stages = model_from("""
-        controls: [{id: stage}]
-        variables:
-          stage: {type: discrete, values: [pre, fin], label: STAGE}
-        actions:
-          press_stage: {control: stage}
-        features:
-          stage:
-            - {actions: [press_stage], variable: stage, effect: next}
-        """)
+    stages = one_key_setting("stage", "pre, fin", "STAGE")
     assert "stage" not in parse_instruction(stages, "Finally, rinse the cups.")
     manual = "FAN: SLO (slow) or FST (fast). LAMP: WHT (white) or GRN (green). MODE: AUTO or MAN."
     said = parse_instruction(SHORT, "Dry the herbs slowly, I will stop it manually.", manual)
@@ -144,16 +150,7 @@ def test_an_adverb_opening_a_sentence_or_not_in_the_manual_names_no_code() -> No
 def test_a_time_adverb_or_the_users_own_act_names_no_code() -> None:
     """ "shortly" says when, not how: no SHT even where the manual reads SHT as "short"; and
     "manually" of the user stopping it names no MAN even where the manual says "manual"."""
-    cycles = model_from("""
-        controls: [{id: cycle}]
-        variables:
-          cycle: {type: discrete, values: [sht, lng], label: CYCLE}
-        actions:
-          press_cycle: {control: cycle}
-        features:
-          cycle:
-            - {actions: [press_cycle], variable: cycle, effect: next}
-        """)
+    cycles = one_key_setting("cycle", "sht, lng", "CYCLE")
     manual = "CYCLE: SHT (short) or LNG (long)."
     assert "cycle" not in parse_instruction(
         cycles, "Wash the jars, it should be done shortly.", manual
@@ -173,16 +170,7 @@ def test_a_time_adverb_or_the_users_own_act_names_no_code() -> None:
 def test_an_interval_named_by_a_time_adverb_is_still_named() -> None:
     """ "daily" and "weekly" say how often, and an interval setting's values are named so:
     only "shortly" and "lately" say when rather than which."""
-    interval = model_from("""
-        controls: [{id: every}]
-        variables:
-          every: {type: discrete, values: [daily, weekly], label: EVERY}
-        actions:
-          press_every: {control: every}
-        features:
-          every:
-            - {actions: [press_every], variable: every, effect: next}
-        """)
+    interval = one_key_setting("every", "daily, weekly", "EVERY")
     manual = "EVERY: DAILY or WEEKLY watering."
     assert parse_instruction(interval, "Water the beds weekly.", manual) == {"every": "weekly"}
     assert parse_instruction(interval, "I'd like it daily.", manual) == {"every": "daily"}
