@@ -25,6 +25,7 @@ from apbot.agent.added_settings import (
     setting_step,
 )
 from apbot.agent.model_edits import RepairError, _dump, _rebuild
+from apbot.model.domain import all_values
 from apbot.model.effects import default_effect
 from apbot.model.schema import ApplianceModel, DiscreteVariable, TimeVariable
 from apbot.model.values import expand_ranges, format_hms, parse_hms
@@ -46,6 +47,7 @@ __all__ = [
     "entry_then_keys",
     "insert_step",
     "move_action",
+    "name_values",
     "plain_keys",
     "plain_steps",
     "redefine_domain",
@@ -466,4 +468,24 @@ def drop_action(model: ApplianceModel, action: str, where: tuple[str, int]) -> A
     step["actions"] = [a for a in step["actions"] if a != action]
     if isinstance(step.get("effect"), dict):
         step["effect"].pop(action, None)
+    return _rebuild(data)
+
+
+def name_values(model: ApplianceModel, name: str, shown: dict[str, str]) -> ApplianceModel:
+    """A list setting's values as the display named them: each of ``shown`` (value → the text
+    printed for it) joins the values the belief had, printed as shown; a key read as flipping
+    a switch (``toggle``) steps through the list instead, round."""
+    data = _dump(model)
+    var = data["variables"][name]
+    known = [str(v) for v in all_values(model.variables[name])]
+    show = dict(var.get("show") or {})
+    for value, text in shown.items():
+        show.setdefault(value, text)
+    var["values"] = known + [v for v in shown if v not in known]
+    var["show"] = show
+    for steps in data["features"].values():
+        for step in steps:
+            if step.get("variable") == name and step.get("effect") == "toggle":
+                step["effect"] = "next"
+                var["wrap"] = True
     return _rebuild(data)

@@ -13,9 +13,8 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-from apbot.agent.repair import RepairError, _dump, _rebuild
+from apbot.agent.repair import RepairError, name_values
 from apbot.agent.worded import WORDS
-from apbot.model.domain import all_values
 from apbot.model.schema import ApplianceModel, DiscreteVariable
 
 
@@ -58,20 +57,7 @@ def said_choices(
         words.setdefault(word.casefold(), shown)
     if len(words) < 2 or said.strip().casefold() not in words:
         return None  # (R for RIGHT is left alone: a letter may stand for more than one word)
-    known = [str(v) for v in all_values(spec)]
-    data = _dump(model)
-    var = data["variables"][name]
-    show = dict(var.get("show") or {})
-    for value, shown in words.items():
-        show.setdefault(value, shown)
-    var["values"] = known + [v for v in words if v not in known]
-    var["show"] = show
-    for steps in data["features"].values():
-        for step in steps:  # a key read as flipping a switch steps through a list
-            if step.get("variable") == name and step.get("effect") == "toggle":
-                step["effect"] = "next"
-                var["wrap"] = True
     try:
-        return _rebuild(data)
+        return name_values(model, name, words)
     except RepairError:
         return None

@@ -35,13 +35,13 @@ _JOINS = frozenset({"→", "->", ",", "/", "|", "…", "...", "or"})
 _OBJECTS = frozenset({"the", "a", "an", "it", "them", "my", "our", "your", "some", "this", "these"})
 _ROLES = frozenset({"setting", "switch"})  # a switch too: a STYLE key read as off/on
 _ABOVE = 2
+"""Non-blank lines above a run (with no setting's word of its own) that may name its setting."""
 # a lead line saying what lamps or a display show: the run below is states, not choices
 _SHOWN = re.compile(
     r"\b(?:lamps?|indicators?|lights|LEDs?|display|screen)\s+(?:\w+\s+){0,2}"
     r"(?:shows?|showing|reads?|lights?\s+up)\b",
     re.IGNORECASE,
 )
-"""Non-blank lines above a run (with no setting's word of its own) that may name its setting."""
 
 
 def listed_outside(
