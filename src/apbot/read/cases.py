@@ -27,6 +27,7 @@ from apbot.read.cases_cells import (
 from apbot.read.cases_lists import as_choices, listed_cases, listed_column
 from apbot.read.cases_marks import _mark, mark_cases
 from apbot.read.cases_tables import _parent_values, _tables, unnumbered
+from apbot.read.goal_vocab import stem
 from apbot.read.labels import words
 from apbot.read.marks_legend import chart_legend, read_mark
 from apbot.read.shapes import CHOICE_WORDS
@@ -46,7 +47,9 @@ def _matches(header: str, name: str, spec: dict[str, Any]) -> bool:
         return False
     vw = set(words(name.replace("_", " "))) | set(words(str(spec.get("label", ""))))
     if any(
-        h == v or (min(len(h), len(v)) >= 4 and (h.startswith(v) or v.startswith(h)))
+        h == v
+        or (min(len(h), len(v)) >= 4 and (h.startswith(v) or v.startswith(h)))
+        or stem(h) == stem(v)  # "Drying time" over DRY's own time
         for h in hw
         for v in vw
     ):
@@ -102,8 +105,13 @@ def apply_cases(b: Builder) -> None:
             if _STEP_HEAD_RE.search(header[column]):
                 continue  # "Time step": each row's step (read by _row_steps), not its values
             head = [w for w in words(header[column]) if w not in GENERIC][:1]
+            ranged = _ranges_column(rows, column)
             named = sorted(  # "Wash (min)": the variable named wash before any other "min" one
-                b.variables.items(), key=lambda item: not set(head) & set(words(item[0]))
+                b.variables.items(),
+                key=lambda item: (
+                    ranged and _switch(item[1]),  # a column of ranges: an amount before a switch
+                    not set(head) & set(words(item[0])),
+                ),
             )
             for name, spec in named:
                 if name == parent or name in fixed | parents or spec.get("depends_on"):
@@ -150,6 +158,12 @@ def apply_cases(b: Builder) -> None:
                         b.manual.units.index(table[0]),
                     )
                 break
+
+
+def _switch(spec: dict[str, Any]) -> bool:
+    """An on/off setting ("Low-heat drying on / off" held on DRY): a column of times under
+    "Drying time" is DRY's own amount, not this switch's, where both answer to the word."""
+    return sorted(spec.get("values") or []) == ["off", "on"]
 
 
 def _marks_column(rows: list[Unit], column: int) -> bool:

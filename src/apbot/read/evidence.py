@@ -194,7 +194,7 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
             theirs = bool(unit.cells) and _cell_key(lead_cell(unit.cells)) in other_keys
             lists = [] if quiet or theirs else self._lists(i, i in mentions, tokens)
             for items, prio in lists:
-                if _keyish(items, others, own) or _foreign_units(items, tokens):
+                if _keyish(items, others, own, text) or _foreign_units(items, tokens):
                     continue  # a list of keys ("DELAY, then + / −"), not of values
                 if len(items) >= 3 and any(v.upper().strip(" .") in own for v in items):
                     continue  # "NORMAL → CONT. → FAN" near FAN: a list with a mode named FAN

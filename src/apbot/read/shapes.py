@@ -80,12 +80,25 @@ def _all_names(items: list[str], text: str) -> bool:
     return len(items) >= 5 and max(map(len, items)) <= 24 and covered >= 0.7 * len(text)
 
 
-def _keyish(items: list[str], others: set[str], own: set[str]) -> bool:
-    """A list naming two or more keys (other keys, the key itself, symbols such as + and −)."""
+def _keyish(items: list[str], others: set[str], own: set[str], text: str = "") -> bool:
+    """A list naming two or more keys (other keys, the key itself, symbols such as + and −) —
+    unless the arrows come back round to its first item ("AUTO → STERI+DRY → STERI → DRY →
+    STORE → AUTO"): keys pressed one after another never wrap, values a key steps through do,
+    so a cycle is a list of values even where some share a name with a key."""
     named = sum(
         v.lower() in others or v.upper() in own or not re.search(r"[^\W_]", v) for v in items
     )
-    return named >= 2
+    return named >= 2 and not (named < len(items) and comes_round(items, text))
+
+
+def comes_round(items: list[str], text: str) -> bool:
+    """The text steps from the list's last item back to its first by an arrow ("… → STORE →
+    AUTO" after "AUTO → …")."""
+    if len(items) < 3 or not text:
+        return False
+    first, last = (re.escape(v.strip()) for v in (items[0], items[-1]))
+    arrow = r"\s*(?:→|->|⟶|►|▶)\s*"
+    return bool(re.search(rf"(?<!\w){last}{arrow}{first}(?!\w)", text, re.IGNORECASE))
 
 
 def _without(text: str, labels: list[str]) -> str:

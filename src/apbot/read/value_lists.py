@@ -111,6 +111,18 @@ def _after_case_label(head: list[str], rest: list[str]) -> list[str]:
     return run
 
 
+_TRIANGLE_RUN = re.compile(r"(?:[\w+]{1,12}[ \t]*[►▶][ \t]*){2,}[\w+]{1,12}")
+
+
+def _triangle_arrows(text: str) -> str:
+    """A run of short names joined by the next key's triangle ("P1 ► P2 ► P3 ► P1", on a
+    panel whose keys are ◄ and ►): the triangles draw the order the key steps, as arrows do;
+    one triangle alone stays the key ("Press ► to go on"). The run ends the list ("… ► P1 …
+    P1 ◄ P6 ◄ P5": what follows is the other key's way round)."""
+    run = _TRIANGLE_RUN.search(text)
+    return text[: run.start()] + re.sub(r"[►▶]", "→", run.group(0)) if run else text
+
+
 def _arrow_cell(text: str) -> str:
     """A table row's one cell holding a run of arrows ("TIMER | off → 1H → 2H → off | with
     MODE, 3 s: lock"): the list lies inside that cell, not across the row."""
@@ -131,7 +143,7 @@ def _shared_noun_dropped(items: list[str]) -> list[str]:
 
 def find_list(text: str) -> tuple[list[str], str] | None:
     """A list of values in one sentence, and how it was written ("arrows", "list")."""
-    text = _arrow_cell(text)
+    text = _arrow_cell(_triangle_arrows(text))
     both = bool(_BOTH_WAYS.search(text))
     text = _BOTH_WAYS.sub(" → ", text)
     numbers = _NUMBER_LIST.search(text)
