@@ -86,3 +86,38 @@ def test_an_interval_shown_with_a_unit_letter_takes_every_so_many_days() -> None
 def test_a_key_that_steps_a_setting_names_it_not_the_value_it_jumps_to() -> None:
     assert _goal(JET, "soft mode, pressure 8") == {"mode": "soft", "pressure": 8}
     assert _goal(JET, "pressure two") == {"pressure": 2}
+
+
+SWING = """
+appliance: {id: swing_1, category: rocker, name: "Lull R-1 rocker", brand: L}
+controls:
+  - {id: timer_key, kind: button, label: "TIMER"}
+  - {id: pouch_key, kind: button, label: "POUCH"}
+variables:
+  timer:
+    type: discrete
+    values: ["off", "8", "15", "30", "60"]
+    show: {"off": "t OFF", "8": "t8", "15": "t15", "30": "t30", "60": "t60"}
+  pouch:
+    type: numeric
+    unit: mic
+    ranges: [[75, 175, 25]]
+actions:
+  press_timer: {control: timer_key}
+  press_pouch: {control: pouch_key}
+features:
+  timer:
+    - {actions: [press_timer], variable: timer, effect: next}
+  pouch:
+    - {actions: [press_pouch], variable: pouch, effect: next}
+"""
+
+
+def test_a_timer_of_bare_numbers_counts_minutes_or_hours_whichever_gives_a_value() -> None:
+    assert _goal(SWING, "a 15-minute timer") == {"timer": "15"}
+    assert _goal(SWING, "set the timer for an hour") == {"timer": "60"}
+
+
+def test_micrometres_are_a_length_not_minutes() -> None:
+    assert _goal(SWING, "175 µm pouches") == {"pouch": 175}
+    assert _goal(SWING, "pouches of 100 microns") == {"pouch": 100}
