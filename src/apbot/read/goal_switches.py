@@ -13,7 +13,14 @@ from apbot.read.goal_text import (
     phrase_here,
     verb_positions,
 )
-from apbot.read.goal_values import OFF_WORDS, generic, magnitude, name_words, unit_text
+from apbot.read.goal_values import (
+    OFF_WORDS,
+    ON_WORDS,
+    generic,
+    magnitude,
+    name_words,
+    unit_text,
+)
 from apbot.read.goal_view import (
     Goal,
     Model,
@@ -78,6 +85,7 @@ def switches(
                 or key in own_concepts(info)
                 or key == concept("lock")
                 or _abbreviated(text.stems[k], own)
+                or _lamp_word(view, info, text.word(k))
             ):
                 weight = 1.0
                 # "Warm the water" is not KEEP WARM; "UV light" is not the night light
@@ -116,6 +124,24 @@ def switches(
         if where is not None:
             where[name] = k
         claimed.add(k)
+
+
+def _lamp_word(view: Model, info: VarInfo, word: str) -> bool:
+    """The one word the display lights while the switch is on (PUMP for a RECIRC key's
+    recirculation): what the user sees it called, so "the pump on" names it — when it is no
+    general word (AUTO, ON) and no other setting's own word or value."""
+    show = info.var.show if isinstance(info.var.show, dict) else {}
+    lit = str(show.get(str(info.on), "")).strip().casefold()
+    if not lit.isalpha() or len(lit) < 3 or word.casefold() not in (lit, f"{lit}s"):
+        return False  # the word as lit, a noun: "nearly boiling" is no BOIL lamp
+    said = stem(lit)
+    if generic(concept(said)) or lit in ON_WORDS + OFF_WORDS or lit == "auto":
+        return False
+    return not any(
+        other is not info
+        and (said in own_stems(other) or any(stem(str(v).casefold()) == said for v in other.values))
+        for other in view.infos.values()
+    )
 
 
 # openings and parts of the body a switch's word may name ("fan vents", "ventilation slots")
