@@ -37,7 +37,6 @@ _REWRITES = (
     (re.compile(r"(?<=[a-z]) -(?=\d)"), " minus "),
     (re.compile(r"[\u2018\u2019`]"), "'"),
     (re.compile(r"º"), "°"),
-    (re.compile(r"μm\b"), " micron "),  # µ casefolds to μ; µm is no "m" (minutes)
     (re.compile(r"½"), " and a half "),
     (re.compile(r"¼"), " and a quarter "),
 )
