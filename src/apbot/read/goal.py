@@ -57,6 +57,7 @@ from apbot.read.goal_switches import (
     no_values,
     off_levels,
     self_switching_off,
+    switched_off_values,
     switches,
     zero_settings,
 )
@@ -133,6 +134,7 @@ def parse_instruction(
     said_units(view, goal)
     zero_settings(view, text, goal, claimed, where)
     off_levels(view, text, goal, claimed)
+    switched_off_values(view, text, goal, where)
     no_values(view, text, goal, claimed)
     switches(view, text, goal, claimed, where)
     self_switching_off(view, text, goal, claimed)

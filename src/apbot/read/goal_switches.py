@@ -383,8 +383,8 @@ def _said_off(text: Text, k: int) -> bool:
         j -= 1
     if text.word(j) in ("no", "without", "zero"):
         return True
-    if text.word(j) == "off" and text.word(j - 1) in ("turn", "switch", "shut", "turning"):
-        return True
+    if _turned_off(text, j) or (text.word(j).isalpha() and _turned_off(text, _before(text, j))):
+        return True  # "turn off the mist", "turn off the automatic watering"
     for d in range(1, 4):
         word = text.word(k + d)
         if word in CLAUSE_ENDS or word in (",", "on", ""):
@@ -392,6 +392,35 @@ def _said_off(text: Text, k: int) -> bool:
         if word in ("off", "disabled"):
             return True
     return False
+
+
+_OFF_VERBS = frozenset({"turn", "switch", "shut", "turning", "switching"})
+
+
+def _turned_off(text: Text, j: int) -> bool:
+    """ "turn off" / "switch off" ends at ``j``."""
+    return text.word(j) == "off" and text.word(j - 1) in _OFF_VERBS
+
+
+def _before(text: Text, j: int) -> int:
+    """The word before ``j`` and the fillers before it ("the", "any")."""
+    j -= 1
+    while j >= 0 and text.word(j) in _LEVEL_FILLERS:
+        j -= 1
+    return j
+
+
+def switched_off_values(view: Model, text: Text, goal: Goal, where: dict[str, int]) -> None:
+    """ "turn off automatic watering" where AUTO / OFF is the schedule: a value said right
+    after "turn off" names what is switched off — its setting goes to its one OFF value."""
+    for name, value in list(goal.items()):
+        info = view.infos[name]
+        k = where.get(name)
+        if k is None or info.role != "setting" or not isinstance(info.var, DiscreteVariable):
+            continue
+        offs = [v for v in domain_values(view, info, goal) if str(v).casefold() in OFF_WORDS]
+        if len(offs) == 1 and value != offs[0] and _turned_off(text, _before(text, k)):
+            goal[name] = offs[0]
 
 
 def no_values(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
