@@ -76,26 +76,7 @@ def fit(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
         or _coded_show(info, domain, mention)
         or _show_quantity(info, mention)
         or _named_quantity(view, info, mention, domain)
-        or _counted_duration(info, domain, mention)
     )
-
-
-_TIME_WORDS = frozenset(concept(w) for w in ("timer", "time", "minutes", "hours"))
-
-
-def _counted_duration(info: VarInfo, domain: list[Any], mention: Mention) -> Any:
-    """ "a 15-minute timer" on a TIMER of bare numbers 8, 15, 30, 60: a setting named for time
-    whose values carry no unit counts minutes or hours — whichever alone gives a value."""
-    if mention.kind != "duration" or not _TIME_WORDS & set(info.vocab):
-        return None
-    found = set()
-    for per in (60, 3600):
-        amount = mention.value / per
-        for value in domain:
-            q = parse_quantity(str(value))
-            if q is not None and q[1] is None and abs(q[0] - amount) < 1e-6:
-                found.add(value)
-    return found.pop() if len(found) == 1 else None
 
 
 def _per_hundred(info: VarInfo, dimension: str | None) -> bool:

@@ -1,5 +1,5 @@
 """Spellings rewritten before the instruction is tokenised: a hyphenated compound the model
-writes as one word, fractions in words ("half a litre"), "half power", "µm"."""
+writes as one word, fractions in words ("half a litre"), "half power"."""
 
 from __future__ import annotations
 
@@ -21,11 +21,7 @@ def joined_compounds(view: Model, instruction: str) -> str:
         return whole if stem(whole) in words else match[0]
 
     text = _HALF_POWER.sub("50% power", _HYPHEN_PAIR.sub(join, instruction))
-    return _MICRONS.sub(" microns", _fractions(text))
-
-
-# "175 µm" (micro sign or Greek mu): a thickness, not the "m" of minutes the tokenizer keeps
-_MICRONS = re.compile(r"\s*[µμ]m\b")
+    return _fractions(text)
 
 
 _UNIT_WORDS = r"(litres?|liters?|kilos?|kg|pounds?|lbs?|cups?|hours?|minutes?)"

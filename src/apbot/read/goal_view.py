@@ -374,7 +374,6 @@ def _phrases(
                     phrases.append((name, value, (stem(synonym),), 0.8))
         phrases += _first_words(name, info)
     # keys that go straight to one value ("GREEN TEA" sets 80 °C)
-    stepping = _stepping_labels(model)
     for _feature, _index, step in steps_of(model):
         if not step.variable or step.variable not in infos:
             continue
@@ -385,27 +384,10 @@ def _phrases(
             if not isinstance(effect, GoTo):
                 continue
             for label in control_labels(model, [action]):
-                if (step.variable, label) in stepping:
-                    continue  # PRESSURE pressed steps, held jumps to 1: "pressure 8" is no 1
                 words = name_words(label)
                 if words and not any(w in STOP_WORDS for w in words):
                     phrases.append((step.variable, effect.to, tuple(stem(w) for w in words), 0.95))
     return phrases
-
-
-def _stepping_labels(model: ApplianceModel) -> set[tuple[str, str]]:
-    """(variable, key label) of the keys that also step a variable along its values: such a
-    key is the setting's own key, its label the setting's name, even when a press held longer
-    jumps to one value — so the label names that setting, not the value it jumps to."""
-    stepping: set[tuple[str, str]] = set()
-    for _feature, _index, step in steps_of(model):
-        if not step.variable:
-            continue
-        for action, effect in step_effects(step):
-            if not isinstance(effect, GoTo):
-                for label in control_labels(model, [action]):
-                    stepping.add((step.variable, label))
-    return stepping
 
 
 def _shown_label(show: dict[Any, Any]) -> set[str]:
