@@ -1,6 +1,7 @@
 """Rules of the goal parser checked on small models written for these tests: an interval the
 display shows as counts with a unit letter ("W 3d", "d2") takes "every 3 days", "every other
-day", "once a week" (and nothing not said "every")."""
+day", "once a week" (and nothing not said "every"); the unit a display prints after a value
+("SIZE {value}pt") names that setting ("8 pt writing")."""
 
 from __future__ import annotations
 
@@ -52,3 +53,29 @@ def test_an_interval_shown_with_a_unit_letter_takes_every_so_many_days() -> None
     assert _goal(GARDEN, "again every other day") == {"again": "2"}
     # a span not said "every" is no interval: a pause of two days
     assert _goal(GARDEN, "pause the watering for two days") == {"pause": "48 h"}
+
+
+PRINTER = """
+appliance: {id: printer_1, category: label_printer, name: "Tag P-1 printer", brand: T}
+controls:
+  - {id: size_key, kind: button, label: "SIZE"}
+  - {id: copies_key, kind: button, label: "COPIES"}
+variables:
+  font_size:
+    type: discrete
+    values: ["6", "8", "10", "12"]
+    show: "SIZE {value}pt"
+  copies: {type: numeric, ranges: [[1, 20, 1]], initial: 1, wrap: true}
+actions:
+  press_size: {control: size_key}
+  press_copies: {control: copies_key}
+features:
+  font_size:
+    - {actions: [press_size], variable: font_size, effect: next}
+  copies:
+    - {actions: [press_copies], variable: copies, effect: next}
+"""
+
+
+def test_the_unit_a_display_prints_after_the_value_names_its_setting() -> None:
+    assert _goal(PRINTER, "small 8 pt writing, three copies") == {"font_size": "8", "copies": 3}
