@@ -50,3 +50,27 @@ def test_two_values_said_together_name_the_value_for_both() -> None:
 def test_one_value_alone_names_itself() -> None:
     assert parse_instruction(loads_model(BELL), "just the flash, please") == {"alert": "flash"}
     assert parse_instruction(loads_model(SHOWER), "the handset only") == {"outlet": "handset"}
+
+
+LAMP = """
+appliance: {id: lamp_1, category: tank_light, name: "Reef L-1 light", brand: R}
+controls:
+  - {id: kind_key, kind: button, label: "TYPE"}
+  - {id: colour_key, kind: button, label: "COLOUR"}
+variables:
+  kind: {type: discrete, values: [white and blue, red]}
+  colour: {type: discrete, values: [white, blue, white and blue]}
+actions:
+  press_kind: {control: kind_key}
+  press_colour: {control: colour_key}
+features:
+  kind:
+    - {actions: [press_kind], variable: kind, effect: next}
+  colour:
+    - {actions: [press_colour], variable: colour, effect: next}
+"""
+
+
+def test_two_values_read_whole_as_another_settings_value_name_no_both() -> None:
+    goal = parse_instruction(loads_model(LAMP), "100 % in white and blue")
+    assert len([v for v in goal.values() if v == "white and blue"]) == 1

@@ -65,6 +65,9 @@ def both_values(
                 continue
             # the first value's noun may follow it: "the rain head and the handset"
             rest = between[1:] if between and text.word(e1).isalpha() else between
+            span = range(s1, e2)
+            if any(k in claimed for k in span) and where.get(name) not in span:
+                continue  # "in white and blue" read whole as another setting's value
             if all(text.word(k) in _BETWEEN for k in rest) and any(
                 text.word(k) in ("and", "&", "+", "with") for k in between
             ):
