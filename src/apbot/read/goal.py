@@ -34,6 +34,7 @@ from apbot.model.domain import ValueProblem, normalise
 from apbot.model.schema import ApplianceModel, DiscreteVariable
 from apbot.model.values import closest_matches, preview
 from apbot.read.goal_assign import assign_mentions
+from apbot.read.goal_both import both_values
 from apbot.read.goal_cases import entry_modes, implied_cases, set_by_hand
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_every import every_periods
@@ -57,6 +58,7 @@ from apbot.read.goal_switches import (
     no_values,
     off_levels,
     self_switching_off,
+    switched_off_values,
     switches,
     zero_settings,
 )
@@ -110,12 +112,14 @@ def parse_instruction(
     goal: Goal = {}
     claimed: set[int] = set()
     where: dict[str, int] = {}  # the token each setting was read from
-    for match in value_matches(view, text):
+    matches = value_matches(view, text)
+    for match in matches:
         if match.var in goal or any(k in claimed for k in range(match.start, match.end)):
             continue
         goal[match.var] = match.value
         where[match.var] = match.start
         claimed.update(range(match.start, match.end))
+    both_values(view, text, matches, goal, claimed, where)
     restated_codes(view, text, goal, claimed)
     pronoun_ones(text, claimed)
     fractions(view, text, goal, claimed, where)
@@ -133,6 +137,7 @@ def parse_instruction(
     said_units(view, goal)
     zero_settings(view, text, goal, claimed, where)
     off_levels(view, text, goal, claimed)
+    switched_off_values(view, text, goal, where)
     no_values(view, text, goal, claimed)
     switches(view, text, goal, claimed, where)
     self_switching_off(view, text, goal, claimed)

@@ -4,7 +4,8 @@ is a number of hours or days ("EVERY 2D", a turning interval of 1-12 h), and the
 parser reads "every 2 days" (a value holding that quantity, or a number beside its unit), so the
 phrase is written that way first. A phrase a value of the model is literally named by ("every
 day", "every week") is left as it is: that value's own name reads it. Only on a panel with a
-setting of how often (named for its interval or frequency, or with values said "every …"): on
+setting of how often (named for its interval or frequency, with values said "every …", or
+shown as counts of days or hours, "W 2d", "d3"): on
 another, "I wash every day" is a habit, not a 24-hour delay.
 """
 
@@ -14,7 +15,8 @@ import re
 
 from apbot.model.schema import DiscreteVariable
 from apbot.read.goal_ordinals import ORDINALS
-from apbot.read.goal_view import Model
+from apbot.read.goal_values import shown_count
+from apbot.read.goal_view import Model, VarInfo
 
 # "every other day", "every third day": the ordinals that count days apart ("first" does not)
 _ORDINALS = {"other": 2, **{word: n for word, n in ORDINALS.items() if n >= 2}}
@@ -29,10 +31,19 @@ _EVERY = re.compile(
 _PERIOD_WORDS = frozenset({"interval", "intervals", "often", "frequency", "every", "period"})
 
 
+def _shows_counts(info: VarInfo) -> bool:
+    """A list setting whose values the display shows as counts of days or hours ("W 2d")."""
+    show = info.var.show if isinstance(info.var.show, dict) else {}
+    counted = [t for t in show.values() if isinstance(t, str) and shown_count(t) is not None]
+    return len(counted) >= 2
+
+
 def _has_period(view: Model, named: set[str]) -> bool:
     """A setting of how often: its name or label says an interval ("TURN INTERVAL", "HOW
     OFTEN"), or its values are said "every …" ("every 2 days")."""
     if any(value.startswith(("every ", "once ")) for value in named):
+        return True
+    if any(_shows_counts(info) for info in view.infos.values() if info.role == "setting"):
         return True
     return any(
         _PERIOD_WORDS & set(re.findall(r"[a-z]+", f"{name} {info.var.label or ''}".casefold()))

@@ -8,7 +8,7 @@ from typing import Any
 
 from apbot.model.schema import NumericVariable, TimeVariable
 from apbot.model.values import format_hms
-from apbot.read.goal_values import parse_quantity, unit_kind, unit_text
+from apbot.read.goal_values import parse_quantity, shown_count, unit_kind, unit_text
 from apbot.read.goal_view import Goal, Model, VarInfo, domain_values
 from apbot.read.goal_vocab import concept
 from apbot.read.numbers import Mention, find_mentions, tokenize
@@ -154,6 +154,9 @@ def _show_quantity(info: VarInfo, mention: Mention) -> Any:
             same = m.kind == mention.kind and m.dimension == mention.dimension
             if same and abs(m.value - mention.value) < 1e-6:
                 return value
+    if mention.kind == "duration" and mention.lead == "every":  # "every 3 days": "d3", "W 3d"
+        found = [v for v, t in show.items() if shown_count(str(t)) == round(mention.value)]
+        return found[0] if len(found) == 1 else None
     return None
 
 

@@ -72,9 +72,13 @@ def _coded_variables(
             numbers = all_values(var)
             whole = all(float(v) == int(float(v)) for v in numbers)
             named = _PROGRAMME.search(f"{name} {var.label or ''}") or _headed(name, var, headed)
-            if var.unit or not whole or not 2 <= len(numbers) <= 99 or not named:
+            if var.unit or not whole or not 2 <= len(numbers) <= 99:
                 continue
-            found[name] = {str(int(float(v))): int(float(v)) for v in numbers}
+            prefix = _shown_prefix(var)
+            if prefix:  # shown "M{value}": the chart lists M3, M18 …
+                found[name] = {_key(f"{prefix}{int(float(v))}"): int(float(v)) for v in numbers}
+            elif named:
+                found[name] = {str(int(float(v))): int(float(v)) for v in numbers}
             continue
         if not isinstance(var, DiscreteVariable):
             continue
@@ -83,6 +87,14 @@ def _coded_variables(
         if len(coded) >= 2 and len(coded) >= 0.6 * len(values):
             found[name] = {_key(v): v for v in values}
     return found
+
+
+def _shown_prefix(var: NumericVariable) -> str:
+    """The letters a display puts before a number it shows as a code ("M{value}" for melody
+    18 shown M18), or "": such numbers are codes, named in the manual's chart by that code."""
+    show = var.show if isinstance(var.show, str) else ""
+    m = re.fullmatch(r"\s*([A-Za-z]{1,2})-?\{value\}\s*", show)
+    return m[1] if m else ""
 
 
 def _name(cell: str) -> str:
@@ -116,17 +128,33 @@ def _aligned_blocks(manual: str) -> list[list[list[str]]]:
     or a line of prose ends a block."""
     blocks: list[list[list[str]]] = []
     current: list[list[str]] = []
+    indent = 0  # the block's first line's
     for line in manual.splitlines():
         cells = [c.strip() for c in _GAP.split(line.strip())] if "|" not in line else []
         if len(cells) >= 2:
+            indent = indent if current else _indent(line)
             current.append(cells)
             continue
+        if current and line.strip() and _indent(line) >= indent + 4:
+            continue  # a description's second line, indented under its column
         if len(current) >= 2:
             blocks.append(current)
         current = []
     if len(current) >= 2:
         blocks.append(current)
     return blocks
+
+
+def _indent(line: str) -> int:
+    return len(line) - len(line.lstrip())
+
+
+def _spelled_out(cell: str) -> str:
+    """The name a description cell opens with, before its colon ("heart rate control: the
+    console keeps…"): a chart of codes whose short name is an abbreviation (HRC) spells it
+    out where it says what the code does. Two to five words, else no name."""
+    m = re.match(r"([A-Za-z][A-Za-z'-]*(?: [A-Za-z'-]+){1,4}):\s", cell)
+    return m[1] if m else ""
 
 
 def _setting_words(model: ApplianceModel) -> dict[str, frozenset[str]]:
@@ -204,6 +232,12 @@ def _pairs(
         for r in block
         for i in range(len(r) - 1)
         if code(r[i]) and _in_column(r, i, heads, holds, plain or {})
+    ]
+    rows += [
+        (r[i], said)
+        for r in block
+        for i in range(len(r) - 2)
+        if code(r[i]) and not code(r[i + 1]) and (said := _spelled_out(r[i + 2]))
     ]
     columns = [
         (top[i], below[i])

@@ -3,6 +3,7 @@ ordered setting."""
 
 from __future__ import annotations
 
+import re
 from typing import Any
 
 from apbot.model.schema import DiscreteVariable, NumericVariable, TimeVariable
@@ -41,6 +42,8 @@ def superlatives(
         compared = _as_as(text, k)
         if end is None and compared is not None:
             end, reach = compared
+        if end is None and _own_superlative(view, goal, word) is not None:
+            end = -1  # "the thickest setting" on THICK ▲ / ▼, "the brightest" for BRIGHTNESS
         scale_index = None
         for scale in SCALES:
             said = "medium" if word in ("middle", "mid", "med") else word
@@ -72,6 +75,9 @@ def superlatives(
                 continue  # named levels are a weak order: only "the most steam" says it
             if score > 0 and (best is None or score > best[0]):
                 best = (score, name)
+        own = _own_superlative(view, goal, word)
+        if own is not None and best is None:
+            best = (0.0, own)
         kind = _kind_of(text, k) if end is not None else None
         if kind and (best is None or not _named_specifically(view.infos[best[1]], text, k)):
             only = _only_of_kind(view, goal, kind)
@@ -101,6 +107,32 @@ def superlatives(
             goal[name] = _levels(values)[scale_index[0]]
         where[name] = k
         claimed.add(k)
+
+
+def _own_superlative(view: Model, goal: Goal, word: str) -> str | None:
+    """The one open ordered setting a superlative is made of the setting's own word for
+    ("thickest" of a THICK ▲ / ▼ thickness, "brightest" of BRIGHTNESS): the most of it."""
+    if not word.endswith("est") or word in LOWEST or word in HIGHEST or len(word) < 6:
+        return None
+    base = word[:-3]
+    if len(base) > 3 and base[-1] == base[-2]:
+        base = base[:-1]  # "hottest": hot
+    bases = {base, base[:-1] + "y" if base.endswith("i") else base}  # "heaviest": heavy
+    found = [
+        name
+        for name, info in view.infos.items()
+        if name not in goal
+        and info.role == "setting"
+        and _ordered(info)
+        and any(w in bases or w in {f"{b}ness" for b in bases} for w in _own_words(info))
+    ]
+    return found[0] if len(found) == 1 else None
+
+
+def _own_words(info: VarInfo) -> set[str]:
+    """The setting's name's and label's words, and its keys' labels' (THICK ▲)."""
+    words = set(re.findall(r"[a-z]+", f"{info.name} {info.var.label or ''}".casefold()))
+    return words | {w for w, weight in info.vocab.items() if weight >= 0.8}
 
 
 def _scale_domain(view: Model, info: VarInfo, goal: Goal) -> list[Any]:

@@ -13,7 +13,14 @@ from apbot.read.goal_text import (
     phrase_here,
     verb_positions,
 )
-from apbot.read.goal_values import OFF_WORDS, generic, magnitude, name_words, unit_text
+from apbot.read.goal_values import (
+    OFF_WORDS,
+    ON_WORDS,
+    generic,
+    magnitude,
+    name_words,
+    unit_text,
+)
 from apbot.read.goal_view import (
     Goal,
     Model,
@@ -78,6 +85,7 @@ def switches(
                 or key in own_concepts(info)
                 or key == concept("lock")
                 or _abbreviated(text.stems[k], own)
+                or _lamp_word(view, info, text.word(k))
             ):
                 weight = 1.0
                 # "Warm the water" is not KEEP WARM; "UV light" is not the night light
@@ -116,6 +124,24 @@ def switches(
         if where is not None:
             where[name] = k
         claimed.add(k)
+
+
+def _lamp_word(view: Model, info: VarInfo, word: str) -> bool:
+    """The one word the display lights while the switch is on (PUMP for a RECIRC key's
+    recirculation): what the user sees it called, so "the pump on" names it — when it is no
+    general word (AUTO, ON) and no other setting's own word or value."""
+    show = info.var.show if isinstance(info.var.show, dict) else {}
+    lit = str(show.get(str(info.on), "")).strip().casefold()
+    if not lit.isalpha() or len(lit) < 3 or word.casefold() not in (lit, f"{lit}s"):
+        return False  # the word as lit, a noun: "nearly boiling" is no BOIL lamp
+    said = stem(lit)
+    if generic(concept(said)) or lit in ON_WORDS + OFF_WORDS or lit == "auto":
+        return False
+    return not any(
+        other is not info
+        and (said in own_stems(other) or any(stem(str(v).casefold()) == said for v in other.values))
+        for other in view.infos.values()
+    )
 
 
 # openings and parts of the body a switch's word may name ("fan vents", "ventilation slots")
@@ -357,8 +383,8 @@ def _said_off(text: Text, k: int) -> bool:
         j -= 1
     if text.word(j) in ("no", "without", "zero"):
         return True
-    if text.word(j) == "off" and text.word(j - 1) in ("turn", "switch", "shut", "turning"):
-        return True
+    if _turned_off(text, j) or (text.word(j).isalpha() and _turned_off(text, _before(text, j))):
+        return True  # "turn off the mist", "turn off the automatic watering"
     for d in range(1, 4):
         word = text.word(k + d)
         if word in CLAUSE_ENDS or word in (",", "on", ""):
@@ -366,6 +392,35 @@ def _said_off(text: Text, k: int) -> bool:
         if word in ("off", "disabled"):
             return True
     return False
+
+
+_OFF_VERBS = frozenset({"turn", "switch", "shut", "turning", "switching"})
+
+
+def _turned_off(text: Text, j: int) -> bool:
+    """ "turn off" / "switch off" ends at ``j``."""
+    return text.word(j) == "off" and text.word(j - 1) in _OFF_VERBS
+
+
+def _before(text: Text, j: int) -> int:
+    """The word before ``j`` and the fillers before it ("the", "any")."""
+    j -= 1
+    while j >= 0 and text.word(j) in _LEVEL_FILLERS:
+        j -= 1
+    return j
+
+
+def switched_off_values(view: Model, text: Text, goal: Goal, where: dict[str, int]) -> None:
+    """ "turn off automatic watering" where AUTO / OFF is the schedule: a value said right
+    after "turn off" names what is switched off — its setting goes to its one OFF value."""
+    for name, value in list(goal.items()):
+        info = view.infos[name]
+        k = where.get(name)
+        if k is None or info.role != "setting" or not isinstance(info.var, DiscreteVariable):
+            continue
+        offs = [v for v in domain_values(view, info, goal) if str(v).casefold() in OFF_WORDS]
+        if len(offs) == 1 and value != offs[0] and _turned_off(text, _before(text, k)):
+            goal[name] = offs[0]
 
 
 def no_values(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:

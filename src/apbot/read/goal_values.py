@@ -3,6 +3,7 @@ words and numbers of a value's name, quantities and magnitudes, an on/off pair."
 
 from __future__ import annotations
 
+import re
 import unicodedata
 from functools import lru_cache
 from typing import Any
@@ -143,3 +144,19 @@ def zone_case(var: Any) -> str | None:
     if not isinstance(var, NumericVariable) or not depends or not cases or len(cases) < 2:
         return None
     return depends if len({repr(case.ranges) for case in cases.values()}) == 1 else None
+
+
+# a count shown with its unit's letter glued on, either side: "W 3d", "d2", "12H"
+_SHOWN_COUNT = re.compile(r"(?<![A-Za-z0-9])(?:(\d+)([dh])|([dh])(\d+))(?![A-Za-z0-9])", re.I)
+_LETTER_SECONDS = {"d": 86400, "h": 3600}
+
+
+def shown_count(text: str) -> float | None:
+    """The seconds a display text counts with a unit letter glued to its number ("W 3d" is
+    3 days, "d2" 2 days: an interval lamp), or None. A panel too narrow for "days" writes the
+    letter; the manual's legend says what it counts, the display is how the user sees it."""
+    found = _SHOWN_COUNT.findall(text)
+    if len(found) != 1:
+        return None
+    number, letter, prefix, digits = found[0]
+    return int(number or digits) * _LETTER_SECONDS[(letter or prefix).casefold()]

@@ -133,6 +133,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
             _add_vocab(info, var.label, 1.0)
         if isinstance(var.show, str):
             _add_vocab(info, var.show.split("{")[0], 0.7)
+            _add_vocab(info, var.show.rsplit("}", 1)[-1], 0.7)  # "{value}pt": "8 pt" names it
         elif isinstance(var.show, dict):
             for value, text in var.show.items():
                 if "{" not in text and str(value).casefold() not in OFF_WORDS:

@@ -240,6 +240,7 @@ HIGHEST = frozenset(
         "heaviest",
         "hardest",
         "firmest",
+        "loudest",
     }
 )
 # Letters that stand for sizes or levels on a display.
