@@ -65,6 +65,37 @@ def test_the_key_covers_manual_actions_labels_and_reader_version() -> None:
     assert len(reader_version()) == 16 and base == cache_key("m", ["a", "b"], "x", "c")
 
 
+def test_the_reader_version_follows_the_model_package_but_not_the_goal_parser(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """An edit to the model package's unit table reads the manuals again; a goal rule does not."""
+    import shutil
+
+    import apbot.model
+
+    copies = {}
+    for package in (apbot.read, apbot.model):
+        source = Path(package.__file__).resolve().parent
+        copy = tmp_path / "apbot" / source.name
+        shutil.copytree(source, copy, ignore=shutil.ignore_patterns("__pycache__"))
+        monkeypatch.setattr(package, "__file__", str(copy / "__init__.py"))
+        copies[source.name] = copy
+
+    def version() -> str:
+        reader_version.cache_clear()
+        return reader_version()
+
+    monkeypatch.setattr("apbot.bench.reading.reader_version", reader_version)
+    before = version()
+    goal_module = next(copies["read"].glob("goal*.py"))
+    goal_module.write_text(goal_module.read_text() + "\n# a goal rule\n")
+    assert version() == before
+    units = copies["model"] / "values.py"
+    units.write_text(units.read_text() + "\n# a new unit\n")
+    assert version() != before
+    reader_version.cache_clear()
+
+
 def test_a_damaged_cache_entry_is_read_again(cache: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     appliance = cached_suite("bundled").get("microwave_1")
     actions = list(appliance.model.actions)

@@ -5,9 +5,10 @@ Reading a manual is deterministic: the same manual text, the same action names a
 reader give the same model. A read model is therefore kept in a small cache directory under a
 key made of exactly those three things — the manual, the action list (and the appliance id and
 category the model is labelled with) and the reader's version, a digest of the reader's own
-source files — so a benchmark reads each appliance once, every worker and every later run reuses
-it, and a changed reader reads again. Cached models are data: they are validated and checked on
-the way back in, and a damaged entry is read afresh.
+source files and of the model package it builds with — so a benchmark reads each appliance
+once, every worker and every later run reuses it, and a changed reader reads again. Cached
+models are data: they are validated and checked on the way back in, and a damaged entry is read
+afresh.
 
 ``APBOT_CACHE_DIR`` moves the cache (default ``~/.cache/apbot``; ``off`` disables it).
 """
@@ -50,15 +51,20 @@ class BeliefFacts:
 
 @lru_cache(maxsize=1)
 def reader_version() -> str:
-    """A digest of the reader's source (``apbot.read`` without the goal parser's modules)."""
+    """A digest of the reader's source: ``apbot.read`` without the goal parser's modules, and
+    ``apbot.model``, whose unit table, value helpers and checks shape every read model (an edit
+    there must read the manuals again, not serve a model the old code read)."""
+    import apbot.model
     import apbot.read
 
-    folder = Path(apbot.read.__file__).resolve().parent
+    reader = Path(apbot.read.__file__).resolve().parent
+    model = Path(apbot.model.__file__).resolve().parent
+    # the goal parser's modules do not change the read model
+    sources = [p for p in sorted(reader.glob("*.py")) if not p.name.startswith("goal")]
+    sources += sorted(model.rglob("*.py"))
     digest = hashlib.sha256()
-    for path in sorted(folder.glob("*.py")):
-        if path.name.startswith("goal"):
-            continue  # the goal parser does not change the read model
-        digest.update(path.name.encode())
+    for path in sources:
+        digest.update(path.relative_to(reader.parent).as_posix().encode())
         digest.update(path.read_bytes())
     return digest.hexdigest()[:16]
 
