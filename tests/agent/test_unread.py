@@ -91,7 +91,9 @@ def test_a_setting_named_but_left_out_of_the_goal_is_unread() -> None:
     assert unnamed_settings(model, said, {"mode": "stout", "boil": "90", "recirc": "on"}) == []
     # one word of a two-word name is not the name ("light" of a lager's light body)
     assert unnamed_settings(model, "A light lager", {"mode": "lager"}) == []
-    # a word beside the goal's own describes that setting
-    assert (
-        unnamed_settings(model, "The stout mode boil of 90", {"mode": "stout", "boil": "90"}) == []
-    )
+    # a word beside the goal's own describes that setting (the boil's recirculation)
+    assert unnamed_settings(model, "Boil recirculation 90", {"boil": "90"}) == []
+    # a setting the user sets aside is not asked for
+    assert unnamed_settings(model, "A stout, ignoring the recirculation", {"mode": "stout"}) == []
+    # the unread part stops a claim of success: the goal as read is only a part
+    assert unread_parts(model, said, {"mode": "stout", "boil": "90"}) == ["recirculation"]

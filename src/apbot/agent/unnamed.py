@@ -11,7 +11,8 @@ sentence. A word of the user's is counted as naming a setting the goal leaves ou
 - no setting of the goal has it among its words or its values' words (the "water" of
   "extra water" names no other setting when EXTRA WATER is in the goal);
 - it is not part of a quantity the user said ("two days"), nor beside a word of the goal's own
-  ("the coffee preset temperature" describes the preset the goal holds).
+  ("the coffee preset temperature" describes the preset the goal holds), nor set aside
+  ("ignoring the humidity target", "regardless of humidity").
 
 Only names are counted, never values: a value word ("hot", "dry") is too often said of the
 food or the result to be a request of its own.
@@ -29,7 +30,11 @@ from apbot.read.goal_vocab import STOP_WORDS, concept, stem
 from apbot.read.numbers import Token, find_mentions, tokenize
 
 SHORTEST_NAME = 4  # a shortened name ("regen", "recirc") is at least this long
-_ROLES = ("setting", "switch")  # power and running are read from "start", "go", "switch on"
+_ROLES = ("setting", "switch")
+# words that set a setting aside rather than ask for it ("ignoring the humidity target",
+# "regardless of humidity"), a couple of words before its name
+_DISMISSING = frozenset({"ignoring", "ignore", "regardless", "disregarding"})
+_DISMISSING_REACH = 3  # power and running are read from "start", "go", "switch on"
 
 
 def unnamed_settings(
@@ -49,7 +54,7 @@ def unnamed_settings(
         key = concept(word)
         if _names(key, held) or key in view.appliance_words or kind_noun(key):
             continue
-        if _beside_the_goal(tokens, k, held):
+        if _beside_the_goal(tokens, k, held) or _dismissed(tokens, k):
             continue
         named = [
             name
@@ -100,3 +105,9 @@ def _beside_the_goal(tokens: list[Token], k: int, held: set[str]) -> bool:
         0 <= j < len(tokens) and _content(tokens[j].text) and _names(concept(tokens[j].text), held)
         for j in (k - 1, k + 1)
     )
+
+
+def _dismissed(tokens: list[Token], k: int) -> bool:
+    """The user sets the named setting aside ("ignoring the humidity target")."""
+    before = tokens[max(0, k - _DISMISSING_REACH) : k]
+    return any(t.text.casefold() in _DISMISSING for t in before)
