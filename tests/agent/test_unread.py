@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from apbot.agent.unnamed import unnamed_settings
 from apbot.agent.unread import unknown_names, unplaced_numbers, unread_parts
 from tests.helpers import model_from
 
@@ -57,3 +58,42 @@ def test_a_named_value_the_setting_lacks_is_unread() -> None:
     assert unknown_names(model, "The winter mode for 8 hours") == ["winter mode"]
     assert unread_parts(model, "The winter mode for 8 hours", {"timer": "8 h"}) == ["winter mode"]
     assert unread_parts(model, "The cold mode for 8 hours", {"mode": "cold", "timer": "8 h"}) == []
+
+
+BREWER = """
+controls: [{id: mode, label: MODE}, {id: boil, label: BOIL}, {id: pump, label: RECIRC},
+  {id: light, label: NIGHT LIGHT}]
+variables:
+  mode: {type: discrete, values: [stout, lager], label: MODE}
+  boil: {type: discrete, values: ["60", "90"], label: BOIL}
+  recirc: {type: discrete, values: ["off", "on"], label: RECIRC}
+  night_light: {type: discrete, values: ["off", "on"], label: NIGHT LIGHT}
+actions:
+  press_mode: {control: mode}
+  press_boil: {control: boil}
+  press_pump: {control: pump}
+  press_light: {control: light}
+features:
+  set_mode: [{actions: [press_mode], variable: mode, effect: next}]
+  set_boil: [{actions: [press_boil], variable: boil, effect: next}]
+  pump: [{actions: [press_pump], variable: recirc, effect: toggle}]
+  light: [{actions: [press_light], variable: night_light, effect: toggle}]
+display:
+  idle: "{mode}"
+"""
+
+
+def test_a_setting_named_but_left_out_of_the_goal_is_unread() -> None:
+    model = model_from(BREWER)
+    said = "A stout with a 90 minute boil and the recirculation pump on"
+    # a shortened name said in full; the rest of the goal placed
+    assert unnamed_settings(model, said, {"mode": "stout", "boil": "90"}) == ["recirculation"]
+    assert unnamed_settings(model, said, {"mode": "stout", "boil": "90", "recirc": "on"}) == []
+    # one word of a two-word name is not the name ("light" of a lager's light body)
+    assert unnamed_settings(model, "A light lager", {"mode": "lager"}) == []
+    # a word beside the goal's own describes that setting (the boil's recirculation)
+    assert unnamed_settings(model, "Boil recirculation 90", {"boil": "90"}) == []
+    # a setting the user sets aside is not asked for
+    assert unnamed_settings(model, "A stout, ignoring the recirculation", {"mode": "stout"}) == []
+    # the unread part stops a claim of success: the goal as read is only a part
+    assert unread_parts(model, said, {"mode": "stout", "boil": "90"}) == ["recirculation"]

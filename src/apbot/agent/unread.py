@@ -9,7 +9,9 @@ kinds of words are counted as unread, from the user's sentence and the belief al
   goal holds in any of its forms (seconds, minutes or hours of a duration, the hour and minute
   of a clock, a temperature in the other scale) — the setting it was for was not found;
 - a value the user named for a kind of setting the belief has no such value for ("the winter
-  mode" where the modes read are others): the parser's own note says so.
+  mode" where the modes read are others): the parser's own note says so;
+- a setting the user named that the goal leaves out ("the recirculation pump on" where only
+  the boil was placed): :mod:`apbot.agent.unnamed`.
 
 Numbers that ask nothing are left alone: counts of things ("two slices"), a number written as an
 article or a fraction word ("a kilo and a half": the whole is what was placed), a code glued to
@@ -24,6 +26,7 @@ import re
 from collections.abc import Iterable, Mapping
 from typing import Any
 
+from apbot.agent.unnamed import unnamed_settings
 from apbot.model.schema import ApplianceModel
 from apbot.read.goal import parse_instruction
 from apbot.read.goal_error import GoalParseError
@@ -57,7 +60,11 @@ def unread_parts(
         for value, label in pairs
         if name in goal and str(value) == str(goal[name])
     }
-    return [*unplaced_numbers(text, {**goal, **named}), *unknown_names(belief, instruction, manual)]
+    return [
+        *unplaced_numbers(text, {**goal, **named}),
+        *unknown_names(belief, instruction, manual),
+        *unnamed_settings(belief, text, goal, manual),
+    ]
 
 
 def unplaced_numbers(instruction: str, goal: Mapping[str, Any]) -> list[str]:
