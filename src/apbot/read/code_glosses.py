@@ -29,6 +29,7 @@ _GLOSS = r"([A-Za-z][A-Za-z' -]{2,40})"
 _WORDS = 4  # a gloss names the value; a longer text describes it
 _FILLER = frozenset({"the", "a", "an"})
 _TRAILING = frozenset({"only"})
+_JOINERS = frozenset({"to", "and", "or", "of", "with"})
 # a switch's words gloss what is switched ("OFF = appliance off"), not a value of its own
 _SWITCH_WORDS = frozenset({"on", "off"})  # "LINE – waterline only": the name is "waterline"
 
@@ -93,8 +94,11 @@ def _name(gloss: str, code: str, own: set[str]) -> str | None:
         words = words[:-1]
     if not words or len(words) > _WORDS or [w for w in words if w not in own] == [code]:
         return None
-    # the display word heads the name at one end: "white noise", "head to toe", "floor and
-    # walls", "waterline" — not a sentence about it ("the ring flashes", "overhead rain head")
-    if not (words[0] in (code, code + "s") or words[-1].endswith(code) or words[-1] == code + "s"):
+    # the display word ends the name ("white noise", "floor and walls", "waterline") or leads
+    # a pair joined by a small word ("head to toe"): not a sentence about it ("the ring
+    # flashes", "overhead rain head", "both lamps lit")
+    last = words[-1].endswith(code) or words[-1] == code + "s"
+    paired = len(words) >= 3 and words[0] in (code, code + "s") and words[1] in _JOINERS
+    if not (last or paired):
         return None
     return " ".join(words)
