@@ -29,7 +29,7 @@ _CODE = re.compile(r"([a-z]{1,3}) ?(\d{1,3})([dh])?")
 _OFF = re.compile(r"(?:([a-z]{1,3}) )?off|no [a-z]+")
 # the legend's count after the codes: "… boost minutes remaining", "… sleep timer minutes"
 _COUNTS = re.compile(rf"\b({MINUTES_HOURS}|days?)\b", re.IGNORECASE)
-_UNIT_LETTER = {"d": "d", "h": "h"}
+_UNIT_WORD = {"min": "minutes", "h": "hours", "d": "days"}
 
 
 def read_code_amounts(b: Builder) -> None:
@@ -49,7 +49,7 @@ def read_code_amounts(b: Builder) -> None:
             continue
         suffix = suffixes.pop()
         if suffix:  # the codes print their unit: no legend needed
-            found = _printed_unit(own_lines(b), coded[0].group(0), _UNIT_LETTER[suffix])
+            found = _printed_unit(own_lines(b), coded[0].group(0), suffix)
         else:
             numbers = [m.group(2) for m in coded]
             found = _legend_unit(own_lines(b), coded[0].group(0), coded[-1].group(0), numbers)
@@ -65,9 +65,6 @@ def read_code_amounts(b: Builder) -> None:
             + ", ".join(f"{c} {n}" for c, n in names.items()),
             unit_at(b, line + 1),
         )  # fmt: skip
-
-
-_UNIT_WORD = {"min": "minutes", "h": "hours", "d": "days"}
 
 
 def _printed_unit(lines: list[str], first: str, unit: str) -> tuple[str, int, str] | None:
