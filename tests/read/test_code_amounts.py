@@ -98,3 +98,77 @@ def test_minutes_said_past_the_legends_first_clause_count_nothing() -> None:
     model = read_manual(WASHER, ["press_power", "press_prog"]).model
     prog = next(v for n, v in model.variables.items() if "prog" in n)
     assert prog.values == ["p1", "p2", "p3", "p4"]
+
+
+SWING = """ROKKA BS-2 baby swing
+
+THE KEYS
+
+  Key      Function
+  ⏻        Switches the unit on or off.
+  TIMER    Swing timer: s OFF, s10, s20, s40 (minutes).
+
+SETTING THE TIMER
+
+  Press TIMER repeatedly:
+
+        s OFF → s10 → s20 → s40 → s OFF → …
+
+  s10 is ten minutes, s40 forty minutes.
+"""
+
+
+def test_a_unit_in_brackets_after_the_codes_counts_them() -> None:
+    model = read_manual(SWING, ["press_power", "press_timer"]).model
+    timer = next(v for n, v in model.variables.items() if "timer" in n)
+    assert timer.values == ["off", "10 min", "20 min", "40 min"]
+    assert timer.show == {"10 min": "s10", "20 min": "s20", "40 min": "s40", "off": "s OFF"}
+
+
+FEEDER = """KIBA PF-1 plant feeder
+
+THE KEYS
+
+  Key      Function
+  ⏻        Switches the unit on or off.
+  REPEAT   Repeats the feed automatically (lamps r1, r2, r4).
+
+DISPLAY
+
+  r1 / r2 / r4        feed every 1 / 2 / 4 days (no lamp: no repeat)
+
+REPEAT
+
+  Press REPEAT to choose:
+
+       no repeat → r1 → r2 → r4 → no repeat
+"""
+
+
+def test_codes_legend_may_repeat_their_numbers_and_none_said_in_words_is_off() -> None:
+    model = read_manual(FEEDER, ["press_power", "press_repeat"]).model
+    repeat = next(v for n, v in model.variables.items() if "repeat" in n)
+    assert repeat.values == ["off", "1 d", "2 d", "4 d"]
+    assert repeat.show == {"1 d": "r1", "2 d": "r2", "4 d": "r4"}
+
+
+MISTER = """# NEBBI GM-3 greenhouse mister
+
+## Keys
+
+| Key | What it does |
+|---|---|
+| ⏻ | On and off. |
+| MIST | How often it mists. |
+
+## Misting
+
+Touch MIST: M OFF → M 1d → M 2d → M 4d → M OFF …
+"""
+
+
+def test_codes_printing_their_unit_letter_count_it() -> None:
+    model = read_manual(MISTER, ["press_power", "press_mist"]).model
+    mist = next(v for n, v in model.variables.items() if "mist" in n)
+    assert mist.values == ["off", "1 d", "2 d", "4 d"]
+    assert mist.show == {"1 d": "M 1d", "2 d": "M 2d", "4 d": "M 4d", "off": "M OFF"}

@@ -114,6 +114,24 @@ display:
   idle: "{interval}"
 """
 
+MISTER = """
+appliance: {id: mister_1, category: mister, name: "Nebbi M-1 greenhouse mister", brand: N}
+controls:
+  - {id: mist_button, kind: button, label: "MIST"}
+variables:
+  mist:
+    type: discrete
+    values: ["off", "1 d", "2 d", "4 d"]
+    show: {"off": "M OFF", "1 d": "M 1d", "2 d": "M 2d", "4 d": "M 4d"}
+actions:
+  press_mist: {control: mist_button}
+features:
+  mist:
+    - {actions: [press_mist], variable: mist, effect: next}
+display:
+  idle: "{mist}"
+"""
+
 HATCHER = """
 appliance: {id: hatcher_1, category: incubator, name: "Brood B-1 incubator", brand: B}
 controls:
@@ -191,6 +209,12 @@ def test_how_often_said_in_words_is_a_number() -> None:
     assert _goal(SPRINKLER, "once a week") == {"interval": "every 7 days"}
     assert _goal(SPRINKLER, "every day") == {"interval": "every day"}  # its own name
     assert _goal(HATCHER, "turn the eggs every hour") == {"turn_interval": 1}
+
+
+def test_choices_counted_in_days_are_how_often() -> None:
+    assert _goal(MISTER, "mist the seedlings every day") == {"mist": "1 d"}
+    assert _goal(MISTER, "mist every other day") == {"mist": "2 d"}
+    assert _goal(MISTER, "mist every 4 days") == {"mist": "4 d"}
 
 
 def test_an_end_of_the_scale_in_the_unit_the_panel_shows() -> None:

@@ -15,7 +15,7 @@ import re
 
 from apbot.model.schema import DiscreteVariable
 from apbot.read.goal_ordinals import ORDINALS
-from apbot.read.goal_values import shown_count
+from apbot.read.goal_values import parse_quantity, shown_count
 from apbot.read.goal_view import Model, VarInfo
 
 # "every other day", "every third day": the ordinals that count days apart ("first" does not)
@@ -28,6 +28,7 @@ _EVERY = re.compile(
 )
 
 
+_DAY = 86400
 _PERIOD_WORDS = frozenset({"interval", "intervals", "often", "frequency", "every", "period"})
 
 
@@ -40,10 +41,14 @@ def _shows_counts(info: VarInfo) -> bool:
 
 def _has_period(view: Model, named: set[str]) -> bool:
     """A setting of how often: its name or label says an interval ("TURN INTERVAL", "HOW
-    OFTEN"), or its values are said "every …" ("every 2 days")."""
+    OFTEN"), or its values are said "every …" ("every 2 days") or counted in whole days
+    ("1 d", "3 d": a panel's choices of days are how often, a stay of days is a number)."""
     if any(value.startswith(("every ", "once ")) for value in named):
         return True
     if any(_shows_counts(info) for info in view.infos.values() if info.role == "setting"):
+        return True
+    days = [q for value in named if (q := parse_quantity(value)) and q[1] == "time"]
+    if len(days) >= 2 and all(q[0] >= _DAY and q[0] % _DAY == 0 for q in days):
         return True
     return any(
         _PERIOD_WORDS & set(re.findall(r"[a-z]+", f"{name} {info.var.label or ''}".casefold()))

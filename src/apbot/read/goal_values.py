@@ -22,8 +22,16 @@ OFF_WORDS = ("off", "no", "disabled", "false")
 
 @lru_cache(maxsize=65536)
 def parse_quantity(text: str) -> tuple[float, str | None, float] | None:
-    """:func:`apbot.model.values.parse_quantity`, remembered: value lists are read per mention."""
-    return _parse_quantity(text)
+    """:func:`apbot.model.values.parse_quantity`, remembered: value lists are read per mention;
+    a value counting days or weeks ("2 d", an interval "every 2 days") is a time too, as
+    :func:`unit_kind` reads a setting's unit."""
+    found = _parse_quantity(text)
+    if found is None:
+        long = _LONG_QUANTITY.fullmatch(text.strip())
+        seconds = _LONG_UNITS.get(long[2].casefold()) if long else None
+        if long and seconds:
+            return float(long[1]) * seconds, "time", 1.0
+    return found
 
 
 def name_words(text: str) -> list[str]:
@@ -65,6 +73,9 @@ _LONG_UNITS = {
     "week": 604800,
     "weeks": 604800,
 }
+
+
+_LONG_QUANTITY = re.compile(r"(\d+(?:\.\d+)?)\s?([A-Za-z]+)\.?")
 
 
 def unit_kind(unit: str) -> tuple[str, float] | None:

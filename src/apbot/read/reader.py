@@ -24,6 +24,7 @@ from apbot.read.cases_resets import apply_resets
 from apbot.read.cases_units import unit_ranges
 from apbot.read.cases_zones import zone_twins
 from apbot.read.code_amounts import read_code_amounts
+from apbot.read.code_glosses import name_glossed_words
 from apbot.read.code_levels import read_code_levels
 from apbot.read.code_words import name_code_words
 from apbot.read.codes import name_codes
@@ -72,6 +73,7 @@ def read_manual(
     unit_ranges(builder)
     name_codes(builder)
     name_code_words(builder)
+    name_glossed_words(builder)
     read_code_amounts(builder)
     read_code_levels(builder)
     read_off_words(builder)

@@ -1,0 +1,104 @@
+"""Display words the manual glosses with a longer name: "SIDE = side to side", "WALL – floor
+and walls", "NOISE (white noise)".
+
+A panel with lamps or a small display prints a setting's values as one short word each, and the
+manual says once what each word stands for, after an equals sign or a dash or in brackets. The
+user says the longer name ("head-to-toe swinging", "white noise", "clean the floor and the
+walls"), so a value read as the display word takes the gloss as its name and keeps the word as
+what the display shows. A gloss counts only when it holds the display word itself — as a word
+("head to toe"), its plural ("floor and walls") or the end of a compound ("waterline"), at
+either end of the gloss — so the gloss names the same thing and is not a description ("the
+ring flashes", "the overhead rain head", "LULLABY (10 lullabies in a row)", "NATURE (birds,
+stream, rain)"); letter codes that abbreviate their words ("LO low") are
+:mod:`apbot.read.code_words`' job.
+"""
+
+from __future__ import annotations
+
+import re
+
+from apbot.read.build import Builder
+from apbot.read.code_words import own_lines
+from apbot.read.codes import rename_codes
+from apbot.read.labels import words as name_words
+from apbot.read.off_words import unit_at
+
+_WORD_CODE = re.compile(r"[a-z]{3,10}")  # a display word: "side", "wall", "noise"
+_MARK = r"\s*(?:=|–|—|-{1,2})\s*"
+_GLOSS = r"([A-Za-z][A-Za-z' -]{2,40})"
+_WORDS = 4  # a gloss names the value; a longer text describes it
+_FILLER = frozenset({"the", "a", "an"})
+_TRAILING = frozenset({"only"})
+_JOINERS = frozenset({"to", "and", "or", "of", "with"})
+# a switch's words gloss what is switched ("OFF = appliance off"), not a value of its own
+_SWITCH_WORDS = frozenset({"on", "off"})  # "LINE – waterline only": the name is "waterline"
+
+
+def name_glossed_words(b: Builder) -> None:
+    """Give each display word of a setting the longer name the manual glosses it with."""
+    lines = own_lines(b)
+    # a value a key is named by ("FISH" pad of a fish preset) is the key's printed name: its
+    # gloss describes the key's picture ("FISH (fish outline)")
+    keys = {token for info in b.infos for token in info.controls}
+    for var, spec in b.variables.items():
+        values = [str(v) for v in spec.get("values") or []]
+        if spec.get("type") != "discrete" or not 2 <= len(values) <= 8 or spec.get("show"):
+            continue
+        names: dict[str, str] = {}
+        first = 0
+        own = set(name_words(f"{var} {spec.get('label') or ''}"))
+        for value in values:
+            if not _WORD_CODE.fullmatch(value) or value in _SWITCH_WORDS or value in keys:
+                continue
+            found = _gloss(lines, value, own)
+            if found is not None:
+                names[value] = found[0]
+                first = first or found[1]
+        if not names or len(set(names.values()) | set(values)) != len(values) + len(names):
+            continue  # nothing glossed, or two values glossed alike
+        rename_codes(b, var, spec, {v: names.get(v, v) for v in values})
+        b.note(
+            f"variables.{var}.values",
+            "display words glossed by the manual: "
+            + ", ".join(f"{c.upper()} {n}" for c, n in names.items()),
+            unit_at(b, first),
+        )
+
+
+def _gloss(lines: list[str], code: str, own: set[str]) -> tuple[str, int] | None:
+    """The first gloss of the display word ``code`` (printed in capitals) that names it, and
+    its line's index; a gloss adding only the setting's ``own`` words ("LOW = low heat" of
+    HEAT) names nothing new."""
+    printed = re.escape(code.upper())
+    patterns = (
+        re.compile(rf"(?<![\w+-]){printed}{_MARK}{_GLOSS}"),
+        re.compile(rf"(?<![\w+-]){printed}\s*\(\s*{_GLOSS}\)"),
+    )
+    for number, line in enumerate(lines):
+        for pattern in patterns:
+            for match in pattern.finditer(line):
+                name = _name(match.group(1), code, own)
+                if name is not None:
+                    return name, number
+    return None
+
+
+def _name(gloss: str, code: str, own: set[str]) -> str | None:
+    """The gloss's leading words as a name when they hold the code ("walls", "waterline"), else
+    None: a gloss up to its first bracket, comma or stop, without an article or "only"."""
+    text = re.split(r"\s*(?:[(,.;:]|\s-\s|\s–\s|\s{2,})", gloss.strip())[0]
+    words = [w for w in text.casefold().split() if w]
+    while words and words[0] in _FILLER:
+        words = words[1:]
+    while words and words[-1] in _TRAILING:
+        words = words[:-1]
+    if not words or len(words) > _WORDS or [w for w in words if w not in own] == [code]:
+        return None
+    # the display word ends the name ("white noise", "floor and walls", "waterline") or leads
+    # a pair joined by a small word ("head to toe"): not a sentence about it ("the ring
+    # flashes", "overhead rain head", "both lamps lit")
+    last = words[-1].endswith(code) or words[-1] == code + "s"
+    paired = len(words) >= 3 and words[0] in (code, code + "s") and words[1] in _JOINERS
+    if not (last or paired):
+        return None
+    return " ".join(words)

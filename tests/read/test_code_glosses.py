@@ -1,0 +1,67 @@
+"""Display words the manual glosses with a longer name (code_glosses), on short manuals in our
+own words: the values become the glosses, the display words what the display shows."""
+
+from __future__ import annotations
+
+from apbot.read import read_manual
+
+ROCKER = """ROKKA BR-3 baby rocker
+
+THE KEYS
+
+  Key      Function
+  ⏻        Switches the unit on or off.
+  MOTION   Chooses the motion; one of the lamps lights:
+             ↔ SWAY = gentle sway
+             ↕ BOUNCE = up and down bounce (soft)
+  SOUND    Chooses the sound: CHIME → RAIN → HUM → CHIME …
+             HUM (deep hum), RAIN (rain on leaves), CHIME (music box, bells)
+
+MOTION
+
+  Press MOTION: SWAY → BOUNCE → SWAY …
+"""
+
+
+def test_display_words_take_the_glosses_holding_them() -> None:
+    model = read_manual(ROCKER, ["press_power", "press_motion", "press_sound"]).model
+    motion = next(v for n, v in model.variables.items() if "motion" in n)
+    assert motion.values == ["gentle sway", "up and down bounce"]
+    assert motion.show == {"gentle sway": "SWAY", "up and down bounce": "BOUNCE"}
+
+
+def test_a_gloss_not_naming_the_display_word_is_left() -> None:
+    model = read_manual(ROCKER, ["press_power", "press_motion", "press_sound"]).model
+    sound = next(v for n, v in model.variables.items() if "sound" in n)
+    assert sound.values == ["chime", "rain", "deep hum"]  # "rain on leaves" describes it
+
+
+CLEANER = """POLO R-2 pool robot
+
+AREA   What the robot cleans:
+         FLOOR  – the floor only
+         WALL   – floor and walls
+         LINE   – the waterline only
+
+Press AREA: FLOOR → WALL → LINE → FLOOR …
+"""
+
+
+def test_a_plural_or_a_compound_holds_the_display_word() -> None:
+    model = read_manual(CLEANER, ["press_area"]).model
+    area = next(v for n, v in model.variables.items() if "area" in n)
+    assert area.values == ["floor", "floor and walls", "waterline"]
+    assert area.show == {"floor": "FLOOR", "floor and walls": "WALL", "waterline": "LINE"}
+
+
+GRILL = """TOSTA CG-2 contact grill
+
+HEAT   Chooses the heat: OFF → LOW → HIGH → OFF …
+         OFF = appliance off, LOW = low heat, HIGH = high heat
+"""
+
+
+def test_a_switch_word_or_the_settings_own_name_adds_nothing() -> None:
+    model = read_manual(GRILL, ["press_heat"]).model
+    heat = next(v for n, v in model.variables.items() if "heat" in n)
+    assert heat.values == ["off", "low", "high"]
