@@ -239,3 +239,35 @@ def test_a_hold_opening_one_setting_the_pair_steps_is_that_setting() -> None:
     nap = steps[1].variable
     assert nap == "nap_length" and model.variables[nap].label == "NP"
     assert model.variables[nap].type == "time" and steps[1].timeout == 5
+
+
+# an aquarium light (our own words): MOON held opens the moonlight's start hour, then its end
+# hour, which the steps say is set "in the same way"
+AQUARIUM = """LUMA AQ-5 aquarium light
+
+KEYS
+  ▲        Brighter; while setting the moonlight: one hour later.
+  ▼        Dimmer; while setting the moonlight: one hour earlier.
+  MOON     Press: moonlight on / off.   Hold 3 s: set the moonlight hours.
+
+MOONLIGHT HOURS
+  1. Hold MOON for 3 seconds. The display shows the start hour, e.g. M-ON 20:00.
+  2. Press ▲ (one hour later) or ▼ (one hour earlier). After 23:00 comes 00:00.
+  3. Press MOON briefly. The display shows the end hour, e.g. M-OFF 06:00.
+  4. Set the end hour with ▲ / ▼ in the same way.
+  5. Wait 5 seconds without touching a key: both hours are stored.
+"""
+AQUARIUM_ACTIONS = ["press_up", "press_down", "press_moon", "hold_moon", "wait_5s"]
+
+
+def test_a_second_field_set_in_the_same_way_takes_the_first_fields_kind() -> None:
+    model = read_manual(AQUARIUM, AQUARIUM_ACTIONS).model
+    walks = [s for s in model.features.values() if [x.actions for x in s][:1] == [["hold_moon"]]]
+    assert len(walks) == 1
+    steps = walks[0]
+    assert [s.actions[0] for s in steps] == ["hold_moon", "press_up", "press_moon", "press_up"]
+    start, end = steps[1].variable, steps[3].variable
+    assert start and end and start != end
+    for var in (start, end):
+        assert model.variables[var].type == "time"
+        assert next(tuple(r) for r in model.variables[var].ranges or [])[1:] == ("23:00:00", 3600)

@@ -53,6 +53,8 @@ _BARE = frozenset({"length", "duration", "time", "setting", "value", "level"})
 _STORED_RE = re.compile(
     r"\b(?:for|after|wait)\s+(?:(\d+)|a few)\s+seconds?\b[^.]*|\bstored\b[^.]*\bseconds\b", re.I
 )
+# a field set as the one before it: "Set the end hour with ► / ◄ in the same way."
+_SAME_WAY_RE = re.compile(r"\b(?:(?:in\s+)?the\s+same\s+way|likewise|as\s+before)\b", re.I)
 _CLOCK_FIELDS_RE = re.compile(r"\bhours?\b[^.]*\bflash", re.I)
 _HOURS_RE = re.compile(r"\bhours?\b", re.I)
 _MINUTES_RE = re.compile(r"\bminutes?\b", re.I)
@@ -124,6 +126,16 @@ def _field(b: Builder, shown: str, text: str, at: int) -> dict[str, Any] | None:
     return {"name": name or "setting", "evidence": ev}
 
 
+def _like(one: dict[str, Any], name: str) -> dict[str, Any] | None:
+    """The second field of a walk whose step says it is set "in the same way" as the first:
+    the first's kind of value under its own name ("the end hour" of a time of day: end_time)."""
+    if not name:
+        return None
+    if "spec" in one:
+        return {"name": re.sub(r"(^|_)hours?$", r"\1time", name), "spec": dict(one["spec"])}
+    return {"name": name, "evidence": one["evidence"]}
+
+
 def _field_name(shown: str) -> str:
     m = _SHOWS_RE.search(shown) or _BESIDE_RE.match(_after_key(shown))
     if not m:
@@ -190,6 +202,8 @@ def _walk(
         return _clock_walk(b, groups, label, pair, at)
     one = _field(b, opened, f"{opened} {first}", at)
     two = _field(b, moved, f"{moved} {second}", at)
+    if two is None and one is not None and _SAME_WAY_RE.search(second):
+        two = _like(one, _field_name(moved))
     if one is None or two is None or one["name"] == two["name"]:
         return None
     one["label"] = _label(opened, label)
