@@ -130,22 +130,3 @@ def test_a_hold_named_by_the_thing_its_legend_switches() -> None:
     assert model.features["cup_sensor"][0].actions == ["hold_sensor"]
     assert model.features["auto_switch_off"][0].actions == ["hold_auto_off"]
     assert not {"spin_hold", "sensor_hold", "auto_off_hold"} & set(model.variables)
-
-
-# a foot massager whose key table letters its rows "(A)" and brackets a word inside a hold's name
-MASSAGER = """RelaxStep FM-2 foot massager
-
-  Key   Name       Touch briefly            Hold 3 seconds
-  ----  ---------  -----------------------  -------------------------
-  (A)   ROLL       rollers on / off         -
-  (B)   HEAT       next heat level          -
-  (C)   AIR        air pressure on / off    squeezing (calf) cuffs on / off
-"""
-
-
-def test_a_lettered_rows_hold_names_its_thing_less_a_bracketed_aside() -> None:
-    """Row "(C)" is AIR's own row; its hold switches the "squeezing cuffs" ("(calf)" an aside)."""
-    actions = ["press_roll", "press_heat", "press_air", "hold_air"]
-    model = read_manual(MASSAGER, actions).model
-    assert model.features["squeezing_cuffs"][0].actions == ["hold_air"]
-    assert "air_hold" not in model.variables

@@ -40,8 +40,6 @@ _CELL = re.compile(
     rf"{ON_OR_OFF}\W*(?:\([^()]*\)\W*)?$",  # "(SOFT)": its sign
     re.IGNORECASE,
 )
-# a bracketed aside inside the thing's name, more of the name after it ("pulsating (massage) wash")
-_ASIDE = re.compile(r"\s*\([^()]*\)(?=\s+[a-z])")
 _SENTENCE_RE = re.compile(r"(?<=[.;])\s+")
 # a header for holding: "Touch and hold", "Long press", "Keep touching (printed below)"
 _HOLD_HEAD = re.compile(r"\bhold|\blong\b|\bkeep\s+(?:touching|pressing|pushing)\b", re.I)
@@ -72,7 +70,7 @@ def _own_rows(b: Builder, key: ActionInfo) -> list[int]:
     for i in b.labels[key.controls[0]].mentions:
         unit = b.manual.units[i]
         led = lead_cell(unit.cells).strip(" *").upper() if unit.cells else ""
-        lettered = len(unit.cells) >= 3 and re.fullmatch(r"\(?[A-Z]\)?", unit.cells[0].strip())
+        lettered = len(unit.cells) >= 3 and re.fullmatch(r"[A-Z]", unit.cells[0].strip())
         if lettered:  # "| C | PROG | Next programme | …": the rows counted by letters
             led = unit.cells[1].strip(" *").upper()
         if unit.text.lstrip(" *|-•").upper().startswith(label) or led == label:
@@ -138,9 +136,8 @@ def held_toggle(b: Builder, key: ActionInfo) -> str:
             # the first one too ("| SENSOR | Hold for 2 seconds: switches the hand sensor … |")
             candidates += [said for cell in unit.cells[1:] for said in _SENTENCE_RE.split(cell)]
         cells = set(hold_cells(unit)) if unit.cells else set()
-        for said in candidates:
-            text = _ASIDE.sub("", said)  # "pulsating (massage) wash on / off"
-            m = _HELD.match(text) or (_CELL.match(text) if said in cells else None)
+        for text in candidates:
+            m = _HELD.match(text) or (_CELL.match(text) if text in cells else None)
             if m and not lock_or_appliance(m.group("noun")) and names_a_setting(m.group("noun")):
                 return m.group("noun").strip(" -").lower()
     return ""
