@@ -72,3 +72,84 @@ def test_a_state_after_a_switchs_name_is_the_switchs(
 
 def test_the_appliance_kept_running_is_still_powered(warmer: ApplianceModel) -> None:
     assert parse_instruction(warmer, "Level 3, and keep it running.")["power"] == "on"
+
+
+# a smoker whose numbered key legend says what its CIRC key switches (the user names the fan),
+# and whose automatic switch-off a read belief names by the manual's words
+SMOKER = """
+appliance: {id: smoker_9, category: smoker, name: "Emberline S9 electric smoker", brand: E}
+controls:
+  - {id: power_button, kind: button, label: "POWER"}
+  - {id: level_button, kind: button, label: "LEVEL"}
+  - {id: circ_button, kind: button, label: "CIRC"}
+  - {id: off_button, kind: button, label: "AUTO OFF"}
+variables:
+  power:
+    type: discrete
+    values: ["off", "on"]
+  level:
+    type: discrete
+    values: ["1", "2", "3"]
+  circ:
+    type: discrete
+    values: ["off", "on"]
+  auto_switch_off:
+    type: discrete
+    values: ["off", "on"]
+actions:
+  press_power: {control: power_button}
+  press_level: {control: level_button}
+  press_circ: {control: circ_button}
+  hold_auto_off: {control: off_button}
+features:
+  power:
+    - {actions: [press_power], variable: power, effect: toggle}
+  level:
+    - {actions: [press_level], variable: level, effect: next}
+  circ:
+    - {actions: [press_circ], variable: circ, effect: toggle}
+  auto_switch_off:
+    - {actions: [hold_auto_off], variable: auto_switch_off, effect: toggle}
+guards:
+  - {name: power off, when: {power: "off"}, only: [press_power], display: "", hide: true}
+display:
+  idle: ""
+"""
+SMOKER_MANUAL = """Emberline S9 electric smoker
+
+KEYS
+  ①  POWER       switches the smoker on or off
+  ②  LEVEL       smoke level 1 → 2 → 3
+  ③  CIRC        Convection fan on / off (FAN in the display).
+"""
+
+
+@pytest.fixture(scope="module")
+def smoker() -> ApplianceModel:
+    return loads_model(SMOKER)
+
+
+@pytest.mark.parametrize(
+    ("text", "goal"),
+    [
+        ("Level 2 with the convection fan on.", {"level": "2", "circ": "on"}),
+        (
+            "Level 3, the fan running, and switch it on.",
+            {"level": "3", "circ": "on", "power": "on"},
+        ),
+        ("Level 1, the fan on the lowest speed.", {"level": "1"}),
+    ],
+)
+def test_a_numbered_legends_thing_with_its_state_names_the_switch(
+    smoker: ApplianceModel, text: str, goal: dict[str, str]
+) -> None:
+    """The legend led by ③ names the CIRC switch the fan; "the fan on" said as a state sets it,
+    "the fan on the lowest speed" is no state of it."""
+    assert parse_instruction(smoker, text, SMOKER_MANUAL) == goal
+
+
+def test_the_verb_of_switching_is_no_word_of_an_auto_switch_off(smoker: ApplianceModel) -> None:
+    assert parse_instruction(smoker, "Switch the smoker on, level 2.") == {
+        "power": "on",
+        "level": "2",
+    }

@@ -102,3 +102,31 @@ def test_a_clock_or_power_saving_held_on_and_off_is_a_setting() -> None:
     model = read_manual(HEATER, actions).model
     assert model.features["clock_display"][0].actions == ["hold_mode"]
     assert model.features["power_saving"][0].actions == ["hold_timer"]
+
+
+# a juicer whose key legend says each hold's job in a sentence of its own
+JUICER = """PressFresh J-4 slow juicer
+
+KEYS
+
+  PULP          short press: pulp level 1 → 2 → 3
+  SPIN          hold 3 seconds: froth mode on / off
+
+| Key | What it does |
+|-----|--------------|
+| SENSOR | Hold for 2 seconds: switches the cup sensor on or off. |
+
+  AUTO OFF      Hold 3 seconds to switch the auto switch-off off or on.
+"""
+
+
+def test_a_hold_named_by_the_thing_its_legend_switches() -> None:
+    """The hold's job after the key's name on its line, as a row's first sentence, or said with
+    the verb ("switches the cup sensor on or off", "to switch the auto switch-off off or on"):
+    the setting is named by that thing, never by the gesture ("sensor_hold")."""
+    actions = ["press_pulp", "hold_spin", "hold_sensor", "hold_auto_off"]
+    model = read_manual(JUICER, actions).model
+    assert model.features["froth"][0].actions == ["hold_spin"]
+    assert model.features["cup_sensor"][0].actions == ["hold_sensor"]
+    assert model.features["auto_switch_off"][0].actions == ["hold_auto_off"]
+    assert not {"spin_hold", "sensor_hold", "auto_off_hold"} & set(model.variables)

@@ -11,7 +11,8 @@ from typing import Any
 from apbot.read.goal_vocab import STOP_WORDS, concept
 
 _VERBS = r"(?:changes?|sets?|selects?|adjusts?|chooses?|controls?|regulates?|varies)"
-_MARK = re.compile(r"^\s*(?:[①-⑳❶-❿➀-➉]|\(?\d{1,2}[.)]?|[|*•-])\s+")
+# what numbers or marks a legend line before the key's name: "⑧", "(6)", "4.", "|", "•"
+LEGEND_MARK = re.compile(r"^\s*(?:[①-⑳❶-❿➀-➉]|\(?\d{1,2}[.)]?|[|*•-])\s+")
 _ENDS = frozenset(
     {"from", "in", "of", "between", "to", "by", "with", "and", "or", "for", "on", "at", "per"}
     | {"up", "down", "while", "when", "if", "until", "each", "every", "one"}
@@ -37,7 +38,7 @@ def setting_words(manual: str, labels: dict[str, list[str]]) -> dict[str, set[st
     if not manual:
         return out
     raw = manual.splitlines()
-    lines = [_MARK.sub("", line).strip() for line in raw]
+    lines = [LEGEND_MARK.sub("", line).strip() for line in raw]
     for name, keys in labels.items():
         for label in {k for k in keys if len(k) >= 3 and k.isupper()}:
             said = re.escape(label)

@@ -28,6 +28,7 @@ from typing import Any
 
 from apbot.model.domain import all_values
 from apbot.model.schema import ApplianceModel, DiscreteVariable, NumericVariable
+from apbot.read.goal_legends import LEGEND_MARK
 from apbot.read.goal_vocab import stem
 
 _CODE = re.compile(r"[a-z]{0,2}[- ]?\d{1,3}", re.IGNORECASE)
@@ -331,7 +332,7 @@ def legend_words(
     if not manual:
         return out
     raw = manual.splitlines()
-    lines = [line.strip().strip("|*-• ").strip() for line in raw]
+    lines = [LEGEND_MARK.sub("", line.strip().strip("|*-• ")).strip() for line in raw]
     for name, keys in labels.items():
         for label in keys:
             if len(label) < 3 or not label.isupper():

@@ -71,6 +71,8 @@ def switches(
                 key, weight = next(iter(own)), 1.0  # "holiday mode" for a VACATION switch
             if weight <= 0 or (generic(key) and not _general_own(view, info, text, k)):
                 continue  # "heating on" names a HEAT switch; "hold off the watering" no switch
+            if _switching_verb(view, text, k):
+                continue  # "Switch the iron on": the verb, not an AUTO SWITCH-OFF's own word
             if _anothers_name(view, goal, info, text.stems[k]):
                 continue  # "eco" names the ECO switch, not HOLIDAY that wears ECO's label
             if _part_after(text, k, info.vocab):
@@ -96,6 +98,8 @@ def switches(
                     continue
             elif negative_around(text, k):
                 weight = 0.5  # a feature's word only says "without" ("no finish time")
+            elif _state_after(text, k, info.vocab) and key not in view.appliance_words:
+                weight = 0.5  # "the recirculation pump on": its legend's thing, its state said
             else:
                 continue
             if any(text.word(k - d) in ("leave", "leaving") for d in range(1, 4)):
@@ -159,6 +163,17 @@ def _part_after(text: Text, k: int, vocab: dict[str, float]) -> bool:
     while j < len(text.tokens) and vocab.get(text.concepts[j], 0.0) > 0:
         j += 1
     return j < len(text.tokens) and text.word(j) in _PARTS
+
+
+def _state_after(text: Text, k: int, vocab: dict[str, float]) -> bool:
+    """The switch's words at ``k`` (and the ones right after it) are followed by the state
+    asked for, which ends the phrase: "the recirculation pump on, …", "with the pump running."
+    ("kernels on the butter programme" is no state)."""
+    j = k + 1
+    while j < len(text.tokens) and vocab.get(text.concepts[j], 0.0) > 0:
+        j += 1
+    ends = CLAUSE_ENDS | {"", ",", "and", "then"}
+    return text.word(j) in ("on", "running") and text.word(j + 1) in ends
 
 
 _MODE_NOUNS = frozenset(stem(w) for w in ("mode", "setting", "programme", "function"))
@@ -246,6 +261,20 @@ _WARMTH = {
     stem("cool"): frozenset(stem(w) for w in ("cold", "chilled", "chill", "frozen")),
     stem("cold"): frozenset(stem(w) for w in ("cool", "chilled", "chill", "frozen")),
 }
+
+
+_SWITCHING = frozenset(stem(w) for w in ("switch", "turn"))
+
+
+def _switching_verb(view: Model, text: Text, k: int) -> bool:
+    """Token ``k`` is the verb of switching something on or off ("switch the iron on", "turn it
+    off", "switch off the light"), not a word of a switch's name (AUTO SWITCH-OFF)."""
+    if text.stems[k] not in _SWITCHING:
+        return False
+    j = k + 1
+    while text.word(j) in ("it", "the") or concept(text.word(j)) in view.appliance_words:
+        j += 1
+    return text.word(j) in ("on", "off", "up")
 
 
 _SELF_OFF_VERBS = frozenset(stem(w) for w in ("switch", "shut", "turn", "power", "cut"))

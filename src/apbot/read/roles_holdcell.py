@@ -25,8 +25,12 @@ HOLD_CELL = rf"(?:hold\b|{HELD_SECONDS})"
 # a thing switched: "warm mist on / off", "sound off or on" (the thing as ``noun``)
 NOUN_ON_OFF = r"(?P<noun>[a-z][a-z -]{2,30}?)\s+"
 ON_OR_OFF = r"(?:on\s*(?:/|or)\s*off|off\s*(?:/|or)\s*on)"
-_HELD = re.compile(  # "Hold for 2 seconds: twin-needle mode on/off", "3 s: warm mist on / off"
-    rf"^\W*(?:(?:(?:press|touch|push)\s+and\s+)?hold\s*(?:{_SECONDS})?|{_SECONDS})\s*:\s*"
+# the verb a hold's job may be said with: "switches the hand sensor on or off"
+_SWITCH_VERB = r"(?:(?:switch|turn|toggle)(?:e?s)?\s+(?:the\s+)?)"
+_HELD = re.compile(  # "Hold for 2 seconds: twin-needle mode on/off", "3 s: warm mist on / off",
+    # "Hold 3 seconds to switch the auto switch-off off or on"
+    rf"^\W*(?:(?:(?:press|touch|push)\s+and\s+)?hold\s*(?:{_SECONDS})?|{_SECONDS})"
+    rf"(?:\s*:\s*{_SWITCH_VERB}?|\s+to\s+{_SWITCH_VERB})"
     rf"{NOUN_ON_OFF}(?:mode\s+)?{ON_OR_OFF}\b",
     re.IGNORECASE,
 )
@@ -124,16 +128,25 @@ def held_toggle(b: Builder, key: ActionInfo) -> str:
     for i in _own_rows(b, key):
         unit = units[i]
         candidates = hold_cells(unit) if unit.cells else []
-        if not unit.cells:  # the legend's next line, when it names no key of its own
+        if not unit.cells:  # the line after the key's name ("STIR  hold 3 s: slow stir on/off"),
+            # and the legend's next lines, when they name no key of their own
+            candidates.append(_after_label(b, key, unit.text))
             candidates += [units[k].text for k in (i + 1, i + 2) if k < len(units)]
-        else:  # a sentence of the row led by the hold ("Character style. Hold 2 s: … on / off")
-            candidates += [said for cell in unit.cells[1:] for said in _SENTENCE_RE.split(cell)[1:]]
+        else:  # a sentence of the row led by the hold ("Character style. Hold 2 s: … on / off"),
+            # the first one too ("| SENSOR | Hold for 2 seconds: switches the hand sensor … |")
+            candidates += [said for cell in unit.cells[1:] for said in _SENTENCE_RE.split(cell)]
         cells = set(hold_cells(unit)) if unit.cells else set()
         for text in candidates:
             m = _HELD.match(text) or (_CELL.match(text) if text in cells else None)
             if m and not lock_or_appliance(m.group("noun")) and names_a_setting(m.group("noun")):
                 return m.group("noun").strip(" -").lower()
     return ""
+
+
+def _after_label(b: Builder, key: ActionInfo, text: str) -> str:
+    """A legend line less the key's printed name that leads it ("AUGER  hold 3 seconds: …")."""
+    label = b.labels[key.controls[0]].text
+    return re.sub(rf"^[\s*|•-]*{re.escape(label)}\b", "", text, count=1, flags=re.I)
 
 
 def held_values(b: Builder, key: ActionInfo, at: int | None) -> list[str]:
