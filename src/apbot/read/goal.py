@@ -23,7 +23,7 @@ back in an hour", "…, we are 4 at the table"). The steps live in their own mod
 ``goal_spelling`` (rewrites before tokenising),
 ``goal_names`` (1), ``goal_fractions`` (parts of a cup, before 2), ``goal_assign`` and
 ``goal_fit`` (2), ``goal_scales`` (3),
-``goal_switches`` (4), ``goal_start`` (5), ``goal_twins`` (zones and
+``goal_switches`` and ``goal_offs`` (4), ``goal_start`` (5), ``goal_twins`` (zones and
 sides), ``goal_cases`` (the mode a setting's value implies); ``goal_view`` is the model as the
 parser sees it.
 """
@@ -43,6 +43,14 @@ from apbot.read.goal_gates import entry_switches, gated_switches
 from apbot.read.goal_kinds import kind_numbers
 from apbot.read.goal_listed import listed_outside
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
+from apbot.read.goal_offs import (
+    boil,
+    no_values,
+    off_levels,
+    self_switching_off,
+    switched_off_values,
+    zero_settings,
+)
 from apbot.read.goal_open import open_entries
 from apbot.read.goal_ordinals import ordinal_numbers
 from apbot.read.goal_outside import kept_outside
@@ -53,15 +61,7 @@ from apbot.read.goal_scales import superlatives
 from apbot.read.goal_spans import time_spans
 from apbot.read.goal_spelling import joined_compounds
 from apbot.read.goal_start import power_and_running
-from apbot.read.goal_switches import (
-    boil,
-    no_values,
-    off_levels,
-    self_switching_off,
-    switched_off_values,
-    switches,
-    zero_settings,
-)
+from apbot.read.goal_switches import switches
 from apbot.read.goal_text import Text
 from apbot.read.goal_twins import place_twins
 from apbot.read.goal_unit_cases import said_units, unit_cases
