@@ -238,7 +238,8 @@ def assign(b: Builder) -> None:
         ):
             numbered = set(words(name)) & CHOICE_WORDS and all(v.isdigit() for v in ev.values)
             if numeric_list(ev.values) and not (numbered and len(ev.values) <= 40):
-                ev2 = list_evidence(ev, listed_min_sec(b, key, ev.values_at))
+                said = b.manual.units[ev.values_at].text if ev.values_at is not None else ""
+                ev2 = list_evidence(ev, listed_min_sec(b, key, ev.values_at), said)
                 var = b.add_number(name, lab, ev2, cyclic=True)
             else:
                 var = b.add_discrete(name, ev.values, lab, ev)

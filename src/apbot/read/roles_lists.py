@@ -164,11 +164,18 @@ def listed_min_sec(b: Builder, key: ActionInfo, at: int | None) -> bool:
     return seconds_said([u.text for u in units[at : at + 3]], about)
 
 
-def list_evidence(ev: Evidence, min_sec: bool = False) -> Evidence:
+def list_evidence(ev: Evidence, min_sec: bool = False, said: str = "") -> Evidence:
     """A printed row of numbers as piecewise ranges, exactly those numbers (equal gaps share a
     piece: 20 30 40 60 90 is 20–40 by 10, 40–60 by 20, 60–90 by 30). Clock figures are h:mm,
-    or m:ss when ``min_sec`` (the text around them says so)."""
+    or m:ss when ``min_sec`` (the text around them says so); times of day that trail off in
+    ``said`` (the row's text: "07:00 → 07:30 → 08:00 …") go on round the whole day."""
+    from apbot.read.clock_rows import open_day_row
     from apbot.read.values import gap_pieces, unit_name
+
+    day = None if min_sec else open_day_row(ev.values or [], said)
+    if day is not None:
+        return Evidence(ranges=[day], range_at=ev.values_at, initial=ev.initial,
+                        initial_at=ev.initial_at)  # fmt: skip
 
     nums = _nums(ev.values or [])
     unit = unit_name(re.sub(r"[\d.,\s]", "", (ev.values or [""])[-1]))
