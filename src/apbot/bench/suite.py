@@ -137,6 +137,13 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "baby_swing": 3,
     "doorbell_chime": 3,
     "pool_cleaner_robot": 3,
+    # The fourteenth blind set (helper blind17n, 6 December 2026, the session of 6 December
+    # 06:21 UTC): blind for this round's work.
+    "paper_shredder": 3,
+    "rowing_machine": 4,
+    "hand_dryer": 3,
+    "milk_pasteuriser": 3,
+    "knife_sharpener": 3,
 }
 
 
