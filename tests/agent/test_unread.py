@@ -95,5 +95,16 @@ def test_a_setting_named_but_left_out_of_the_goal_is_unread() -> None:
     assert unnamed_settings(model, "Boil recirculation 90", {"boil": "90"}) == []
     # a setting the user sets aside is not asked for
     assert unnamed_settings(model, "A stout, ignoring the recirculation", {"mode": "stout"}) == []
+    # nor one left as it is, or said to matter not
+    for left in (
+        "A stout, but don't change the recirculation",
+        "A stout and leave the recirculation as it is",
+        "A stout; the recirculation does not matter",
+        "A stout at any recirculation",
+    ):
+        assert unnamed_settings(model, left, {"mode": "stout"}) == [], left
+    # a reason said after the request leaves it a request
+    said = "A stout with the recirculation on as it is cold"
+    assert unnamed_settings(model, said, {"mode": "stout"}) == ["recirculation"]
     # the unread part stops a claim of success: the goal as read is only a part
     assert unread_parts(model, said, {"mode": "stout", "boil": "90"}) == ["recirculation"]

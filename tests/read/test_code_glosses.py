@@ -65,3 +65,36 @@ def test_a_switch_word_or_the_settings_own_name_adds_nothing() -> None:
     model = read_manual(GRILL, ["press_heat"]).model
     heat = next(v for n, v in model.variables.items() if "heat" in n)
     assert heat.values == ["off", "low", "high"]
+
+
+FAN = """AIRO F3 tower fan
+
+SPEED  Chooses the speed: LOW → MID → HIGH → LOW …
+MODE   Chooses the mode: NORMAL → SLEEP → NATURE → NORMAL …
+
+Display messages
+  HIGH  – room temperature too high
+  SLEEP – display goes dark for a quiet sleep
+"""
+
+
+def test_a_display_message_away_from_the_settings_legend_names_no_value() -> None:
+    model = read_manual(FAN, ["press_speed", "press_mode"]).model
+    speed = next(v for n, v in model.variables.items() if "speed" in n)
+    assert speed.values == ["low", "mid", "high"]  # not "room temperature too high"
+
+
+HEATER = """WARMA H-2 panel heater
+
+LEVEL  Chooses the heat: LOW → HIGH → LOW …
+
+Messages the display gives:
+  HIGH – temperature too high
+  LOW  – temperature too low
+"""
+
+
+def test_glosses_sharing_one_frame_around_the_words_name_nothing() -> None:
+    model = read_manual(HEATER, ["press_level"]).model
+    level = next(v for n, v in model.variables.items() if "level" in n)
+    assert level.values == ["low", "high"]

@@ -43,6 +43,11 @@ def test_the_next_keys_triangles_drawn_between_names_are_arrows() -> None:
     assert find_list("Press ► to go on, then ► again.") is None
 
 
+def test_a_path_through_a_menu_drawn_with_triangles_is_no_list() -> None:
+    # a path never comes back round to its first name: not a key stepping its values
+    assert find_list("To change the format go to MENU ▶ Clock ▶ Format and press OK.") is None
+
+
 # the plate warmer's modes with a time chart; holding DRY switches low heat on and off
 PLATES_CHART = (
     PLATES.replace(

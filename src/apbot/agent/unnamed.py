@@ -12,7 +12,9 @@ sentence. A word of the user's is counted as naming a setting the goal leaves ou
   "extra water" names no other setting when EXTRA WATER is in the goal);
 - it is not part of a quantity the user said ("two days"), nor beside a word of the goal's own
   ("the coffee preset temperature" describes the preset the goal holds), nor set aside
-  ("ignoring the humidity target", "regardless of humidity").
+  ("ignoring the humidity target", "regardless of humidity", "at any fan speed") or left as
+  it is ("don't change the fan speed", "leave the timer as it is", "the mode does not
+  matter").
 
 Only names are counted, never values: a value word ("hot", "dry") is too often said of the
 food or the result to be a request of its own.
@@ -26,15 +28,22 @@ from typing import Any
 from apbot.model.schema import ApplianceModel
 from apbot.read.goal_values import kind_noun, name_words
 from apbot.read.goal_view import Model, VarInfo, model_view, own_stems
-from apbot.read.goal_vocab import STOP_WORDS, concept, stem
+from apbot.read.goal_vocab import NEGATIONS, STOP_WORDS, concept, stem
 from apbot.read.numbers import Token, find_mentions, tokenize
 
 SHORTEST_NAME = 4  # a shortened name ("regen", "recirc") is at least this long
 _ROLES = ("setting", "switch")
 # words that set a setting aside rather than ask for it ("ignoring the humidity target",
 # "regardless of humidity"), a couple of words before its name
-_DISMISSING = frozenset({"ignoring", "ignore", "regardless", "disregarding"})
+_DISMISSING = frozenset(
+    {"ignoring", "ignore", "regardless", "disregarding", "any", "whatever", "whichever"}
+)
 _DISMISSING_REACH = 3  # power and running are read from "start", "go", "switch on"
+# a setting left as it is: a change said with a negation before its name ("don't change the
+# fan speed", "without touching the timer"), or these words after it in its clause
+_CHANGING = frozenset({"change", "changing", "touch", "touching", "alter", "altering", "adjust"})
+_AS_IT_IS = frozenset({"unchanged", "alone", "matter", "matters"})
+_CLAUSE_BREAKS = frozenset({".", ";", "!", "?", ",", "but", "and", "while"})
 
 
 def unnamed_settings(
@@ -54,7 +63,7 @@ def unnamed_settings(
         key = concept(word)
         if _names(key, held) or key in view.appliance_words or kind_noun(key):
             continue
-        if _beside_the_goal(tokens, k, held) or _dismissed(tokens, k):
+        if _beside_the_goal(tokens, k, held) or _dismissed(tokens, k) or _left(tokens, k):
             continue
         named = [
             name
@@ -111,3 +120,18 @@ def _dismissed(tokens: list[Token], k: int) -> bool:
     """The user sets the named setting aside ("ignoring the humidity target")."""
     before = tokens[max(0, k - _DISMISSING_REACH) : k]
     return any(t.text.casefold() in _DISMISSING for t in before)
+
+
+def _left(tokens: list[Token], k: int) -> bool:
+    """The user leaves the named setting as it is ("don't change the fan speed", "leave the
+    timer as it is", "the mode does not matter"): no request, so nothing left undone."""
+    words = [t.text.casefold() for t in tokens]
+    start = max((j + 1 for j in range(k) if words[j] in _CLAUSE_BREAKS), default=0)
+    end = next((j for j in range(k + 1, len(words)) if words[j] in _CLAUSE_BREAKS), len(words))
+    before, after = words[start:k], words[k + 1 : end]
+    negated = [j for j, w in enumerate(before) if w in NEGATIONS]
+    if negated and any(w in _CHANGING for w in before[negated[0] + 1 :]):
+        return True
+    # "as it is" / "as is" ending the clause, not "on as it is cold"
+    as_is = after[-3:] == ["as", "it", "is"] or after[-2:] == ["as", "is"]
+    return as_is or any(w in _AS_IT_IS for w in after)

@@ -50,12 +50,14 @@ def name_glossed_words(b: Builder) -> None:
         for value in values:
             if not _WORD_CODE.fullmatch(value) or value in _SWITCH_WORDS or value in keys:
                 continue
-            found = _gloss(lines, value, own)
+            found = _gloss(lines, value, own, values)
             if found is not None:
                 names[value] = found[0]
                 first = first or found[1]
         if not names or len(set(names.values()) | set(values)) != len(values) + len(names):
             continue  # nothing glossed, or two values glossed alike
+        if _shared_frame(names):
+            continue  # "temperature too high / too low": one frame around each word, no names
         rename_codes(b, var, spec, {v: names.get(v, v) for v in values})
         b.note(
             f"variables.{var}.values",
@@ -65,22 +67,37 @@ def name_glossed_words(b: Builder) -> None:
         )
 
 
-def _gloss(lines: list[str], code: str, own: set[str]) -> tuple[str, int] | None:
+def _gloss(lines: list[str], code: str, own: set[str], values: list[str]) -> tuple[str, int] | None:
     """The first gloss of the display word ``code`` (printed in capitals) that names it, and
     its line's index; a gloss adding only the setting's ``own`` words ("LOW = low heat" of
-    HEAT) names nothing new."""
+    HEAT) names nothing new. The gloss is one of a legend of the setting's ``values``: another
+    of them is printed on its line or the next or last one ("SIDE = …" over "HEAD = …"), not
+    a display message elsewhere that happens to end in the word ("HIGH – room too hot")."""
     printed = re.escape(code.upper())
     patterns = (
         re.compile(rf"(?<![\w+-]){printed}{_MARK}{_GLOSS}"),
         re.compile(rf"(?<![\w+-]){printed}\s*\(\s*{_GLOSS}\)"),
     )
+    others = [
+        re.compile(rf"(?<![\w+-]){re.escape(v.upper())}(?![\w+-])") for v in values if v != code
+    ]
     for number, line in enumerate(lines):
+        near = lines[max(0, number - 1) : number + 2]
+        if not any(o.search(text) for o in others for text in near):
+            continue
         for pattern in patterns:
             for match in pattern.finditer(line):
                 name = _name(match.group(1), code, own)
                 if name is not None:
                     return name, number
     return None
+
+
+def _shared_frame(names: dict[str, str]) -> bool:
+    """Two glosses that are one text around their display words ("temperature too high",
+    "temperature too low"): the frame names no value, it tells of a state."""
+    frames = [re.sub(rf"\b{re.escape(code)}\w*", "", name) for code, name in names.items()]
+    return len(frames) != len(set(frames))
 
 
 def _name(gloss: str, code: str, own: set[str]) -> str | None:

@@ -115,12 +115,14 @@ _TRIANGLE_RUN = re.compile(r"(?:[\w+]{1,12}[ \t]*[►▶][ \t]*){2,}[\w+]{1,12}"
 
 
 def _triangle_arrows(text: str) -> str:
-    """A run of short names joined by the next key's triangle ("P1 ► P2 ► P3 ► P1", on a
-    panel whose keys are ◄ and ►): the triangles draw the order the key steps, as arrows do;
-    one triangle alone stays the key ("Press ► to go on"). The run ends the list ("… ► P1 …
-    P1 ◄ P6 ◄ P5": what follows is the other key's way round)."""
-    run = _TRIANGLE_RUN.search(text)
-    return text[: run.start()] + re.sub(r"[►▶]", "→", run.group(0)) if run else text
+    """A run of names joined by the next key's triangle that comes back round ("P1 ► P2 ►
+    P1"): the order the key steps, as arrows; a menu path never comes round ("MENU ▶ Clock ▶
+    Format"), one triangle stays the key. The run ends the list (then "P1 ◄ P6 ◄ …")."""
+    for run in _TRIANGLE_RUN.finditer(text):
+        names = re.split(r"[ \t]*[►▶][ \t]*", run.group(0))
+        if names[0].casefold() == names[-1].casefold():
+            return text[: run.start()] + re.sub(r"[►▶]", "→", run.group(0))
+    return text
 
 
 def _arrow_cell(text: str) -> str:
