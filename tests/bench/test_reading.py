@@ -65,10 +65,11 @@ def test_the_key_covers_manual_actions_labels_and_reader_version() -> None:
     assert len(reader_version()) == 16 and base == cache_key("m", ["a", "b"], "x", "c")
 
 
-def test_the_reader_version_follows_the_model_package_but_not_the_goal_parser(
+def test_the_reader_version_follows_the_model_package_and_the_goal_modules(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    """An edit to the model package's unit table reads the manuals again; a goal rule does not."""
+    """An edit to the model's unit table or to the goal parser's stemmer (both of which the reader
+    borrows) reads the manuals again."""
     import shutil
 
     import apbot.model
@@ -87,12 +88,14 @@ def test_the_reader_version_follows_the_model_package_but_not_the_goal_parser(
 
     monkeypatch.setattr("apbot.bench.reading.reader_version", reader_version)
     before = version()
-    goal_module = next(copies["read"].glob("goal*.py"))
-    goal_module.write_text(goal_module.read_text() + "\n# a goal rule\n")
     assert version() == before
     units = copies["model"] / "values.py"
     units.write_text(units.read_text() + "\n# a new unit\n")
-    assert version() != before
+    after_units = version()
+    assert after_units != before
+    stemmer = copies["read"] / "goal_vocab.py"
+    stemmer.write_text(stemmer.read_text() + "\n# a new stem\n")
+    assert version() not in (before, after_units)
     reader_version.cache_clear()
 
 
