@@ -6,22 +6,25 @@ from __future__ import annotations
 import re
 from typing import Any
 
-from apbot.model.schema import DiscreteVariable, NumericVariable, TimeVariable
+from apbot.model.schema import DiscreteVariable, TimeVariable
+from apbot.read.goal_ladders import (
+    is_off_level,
+    ladder,
+    levels,
+    numbered_levels,
+    ordered,
+    ordered_values,
+    worded_levels,
+)
 from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab, said_before
 from apbot.read.goal_twins import find_twins
 from apbot.read.goal_unit_cases import unit_selector
 from apbot.read.goal_values import (
-    OFF_WORDS,
-    bare_number,
     generic,
-    magnitude,
-    numeric_values,
-    parse_quantity,
-    quantity_dimensions,
     zone_case,
 )
 from apbot.read.goal_view import Goal, Model, VarInfo, domain_values, own_concepts
-from apbot.read.goal_vocab import HIGHEST, LETTER_WORDS, LOWEST, SCALES, concept, stem
+from apbot.read.goal_vocab import HIGHEST, LOWEST, SCALES, concept, stem
 
 
 def superlatives(
@@ -61,17 +64,17 @@ def superlatives(
             continue  # "the lowest humidity setting, 40%": said of a setting already read
         best: tuple[float, str] | None = None
         for name, info in view.infos.items():
-            if name in goal or info.role != "setting" or not _ordered(info):
+            if name in goal or info.role != "setting" or not ordered(info):
                 continue
             if info.timing == "clock":
                 continue  # "the hottest day": the time of day now is no scale to pick an end of
             values = domain_values(view, info, goal)
-            if scale_index is not None and end is None and len(_levels(values)) != scale_index[1]:
+            if scale_index is not None and end is None and len(levels(values)) != scale_index[1]:
                 continue  # "a medium massage" of OFF, 1, 2, 3: medium of the three levels
             score = near_vocab(info, text, k, k + 1, reach=reach) or _after_its_case(
                 info, text, k, goal
             )
-            if _ladder(info.values) and not _beside(info, text, k, reach):
+            if ladder(info.values) and not _beside(info, text, k, reach):
                 continue  # named levels are a weak order: only "the most steam" says it
             if score > 0 and (best is None or score > best[0]):
                 best = (score, name)
@@ -90,21 +93,21 @@ def superlatives(
         if best is None:
             continue
         name = best[1]
-        values = _ordered_values(_scale_domain(view, view.infos[name], goal))
+        values = ordered_values(_scale_domain(view, view.infos[name], goal))
         if not values:
             continue
         top = view.top_codes.get(name)
         if end == -1 and top is not None and top not in values:
             values = [*values, top]  # "full": the hob's P, one step past 9
-        off_first = (len(values) > 2 and _is_off_level(view.infos[name], values[0])) or (
-            len(values) > 1 and bool(_ladder(values))
+        off_first = (len(values) > 2 and is_off_level(view.infos[name], values[0])) or (
+            len(values) > 1 and bool(ladder(values))
         )
         if end == 0 and off_first:
             goal[name] = values[1]  # "the lowest level": the lowest one that works, not off
         elif end is not None:
             goal[name] = values[end]
         elif scale_index is not None:
-            goal[name] = _levels(values)[scale_index[0]]
+            goal[name] = levels(values)[scale_index[0]]
         where[name] = k
         claimed.add(k)
 
@@ -123,7 +126,7 @@ def _own_superlative(view: Model, goal: Goal, word: str) -> str | None:
         for name, info in view.infos.items()
         if name not in goal
         and info.role == "setting"
-        and _ordered(info)
+        and ordered(info)
         and any(w in bases or w in {f"{b}ness" for b in bases} for w in _own_words(info))
     ]
     return found[0] if len(found) == 1 else None
@@ -267,47 +270,17 @@ def _only_of_kind(view: Model, goal: Goal, kind: str) -> tuple[float, str] | Non
         for name, info in view.infos.items()
         if name not in goal
         and info.role == "setting"
-        and _ordered(info)
+        and ordered(info)
         and domain_values(view, info, goal)
         and (
             info.dimension == kind
             or (kind == "temperature" and info.dimension == "fahrenheit")
             or (kind == "time" and isinstance(info.var, TimeVariable) and info.timing == "duration")
-            or (kind == "level" and (_numbered_levels(info) or _worded_levels(info)))
+            or (kind == "level" and (numbered_levels(info) or worded_levels(info)))
             or (kind == "speed" and concept("speed") in own_concepts(info))
         )
     ]
     return (0.0, found[0]) if len(found) == 1 else None
-
-
-def _numbered_levels(info: VarInfo) -> bool:
-    """A strength counted in levels: a unitless setting of plain numbers (1-5), or of OFF and
-    numbers (OFF, 1, 2, 3), that no word of heat or time names — what "the gentlest level" or
-    "as strong as it goes" picks an end of when no setting is named."""
-    if info.dimension is not None or isinstance(info.var, TimeVariable):
-        return False
-    if isinstance(info.var, NumericVariable) and info.var.unit:
-        return False
-    if {concept("temperature"), concept("time")} & set(info.vocab):
-        return False
-    if _COUNTED & {stem(w) for w in info.name.replace("_", " ").split()}:
-        return False  # "cups 1-12", "rinse 1-3": a number of things, not how strong
-    numbers = [v for v in info.values if bare_number(v) is not None]
-    rest = [v for v in info.values if bare_number(v) is None]
-    return len(numbers) >= 2 and all(str(v).casefold() in (*OFF_WORDS, "none") for v in rest)
-
-
-# things a setting counts ("cups", "rinses", "slices"): more of them is not a stronger level
-_COUNTED = frozenset(
-    stem(w)
-    for w in (
-        "cup", "cups", "rinse", "rinses", "slice", "slices", "serving", "servings", "portion",
-        "portions", "egg", "eggs", "loaf", "loaves", "piece", "pieces", "person", "people",
-        "persons", "time", "times", "repeat", "repeats", "batch", "batches", "bottle",
-        "bottles", "load", "loads", "glass", "glasses", "mug", "mugs", "bowl", "bowls",
-        "scoop", "scoops", "spoon", "spoons", "count", "number", "quantity", "amount",
-    )
-)  # fmt: skip
 
 
 def _names_another(view: Model, name: str, text: Text, k: int) -> bool:
@@ -317,31 +290,6 @@ def _names_another(view: Model, name: str, text: Text, k: int) -> bool:
     return bool(key) and any(
         key in own_concepts(info) for other, info in view.infos.items() if other != name
     )
-
-
-def _worded_levels(info: VarInfo) -> bool:
-    """A strength in words (LOW, MEDIUM, HIGH) that no word of heat or time names: as much a
-    level as a numbered one, so "as strong as it goes" beside it names neither alone."""
-    if info.dimension is not None or not isinstance(info.var, DiscreteVariable):
-        return False
-    if {concept("temperature"), concept("time")} & set(info.vocab):
-        return False
-    if _HEAT & {stem(w) for w in info.name.replace("_", " ").split()}:
-        return False  # "warmth", "heating": a heat, not a strength
-    return len(_scaled(info.values)) >= 2
-
-
-_HEAT = frozenset(stem(w) for w in ("heat", "heating", "heater", "warmth", "warm", "hot", "temp"))
-
-
-def _levels(values: list[Any]) -> list[Any]:
-    """The levels of a setting in order, without the OFF a numbered list opens with (OFF, 1,
-    2, 3 has three levels: "medium" is 2); other lists as they are."""
-    rest = [v for v in values if bare_number(v) is None]
-    offs = all(str(v).casefold() in (*OFF_WORDS, "none") for v in rest)
-    if rest and len(rest) < len(values) - 1 and offs:
-        return _ordered_values([v for v in values if bare_number(v) is not None])
-    return values
 
 
 _AMOUNTS = frozenset({"much", "many", "little", "few"})
@@ -401,81 +349,6 @@ def _names_set(view: Model, text: Text, k: int, goal: Goal) -> bool:
         if key and not generic(key) and any(view.infos[n].vocab.get(key, 0.0) >= 0.8 for n in goal):
             return True
     return False
-
-
-def _is_off_level(info: VarInfo, lowest: Any) -> bool:
-    """A power or level setting whose lowest value, 0, is off rather than a level."""
-    return (
-        isinstance(info.var, NumericVariable)
-        and info.dimension in (None, "power")
-        and bool({concept("power"), concept("level")} & set(info.vocab))
-        and magnitude(lowest) == 0
-    )
-
-
-def _ordered(info: VarInfo) -> bool:
-    return isinstance(info.var, NumericVariable | TimeVariable) or (
-        isinstance(info.var, DiscreteVariable)
-        and (
-            numeric_values(info.values)
-            or bool(quantity_dimensions(info.values))
-            or len(_scaled(info.values)) >= 2
-            or (len(_ladder(info.values)) >= 2 and not _choice_list(info))
-        )
-    )
-
-
-_CHOICE_WORDS = frozenset(
-    concept(w) for w in ("program", "programme", "menu", "mode", "function", "food", "course")
-) | frozenset(concept(w) for w in ("cycle", "recipe", "cup", "drink", "dish", "type"))
-
-
-def _choice_list(info: VarInfo) -> bool:
-    """A setting that names a choice of things (a programme, a menu, a food), not an amount:
-    its list may open with OFF/NONE, but "the strongest programme" is no end of it."""
-    words = info.name.replace("_", " ").split() + (info.var.label or "").split()
-    return any(concept(w.casefold()) in _CHOICE_WORDS for w in words)
-
-
-def _ladder(values: list[Any]) -> list[Any]:
-    """Named levels that start with OFF ("off", "eco", "normal", "turbo"): a scale of strength
-    listed from nothing up, so the last is the most (empty when the values are not that)."""
-    if len(values) < 2 or str(values[0]).casefold() not in (*OFF_WORDS, "none"):
-        return []
-    if any(parse_quantity(str(v)) is not None for v in values) or _scaled(values):
-        return []
-    return list(values)
-
-
-def _scaled(values: list[Any]) -> list[Any]:
-    """Values that are words of one scale ("low", "medium", "high", or as a display shortens
-    them: "LO", "MED", "HI"), in the scale's order."""
-    for scale in SCALES:
-        found = [v for v in values if _scale_word(v) in scale]
-        if len(found) >= 2:
-            return sorted(found, key=lambda v: scale.index(_scale_word(v)))
-    return []
-
-
-def _scale_word(value: Any) -> str:
-    """The scale's word a value stands for: "lo" is low, "med" medium (else the value)."""
-    word = str(value).casefold()
-    return LETTER_WORDS.get(word, (word,))[0] if len(word) > 1 else word
-
-
-def _ordered_values(values: list[Any]) -> list[Any]:
-    """Values in order of size: numbers and times as they are; of a discrete list, the ones
-    that are quantities ("100 W" < "450 W"), by size, or the words of a scale (low < high)."""
-    if all(isinstance(v, int | float) for v in values) or all(
-        str(v).count(":") == 2 for v in values
-    ):
-        return values
-    sized = [(q[0], v) for v in values if (q := parse_quantity(str(v))) is not None]
-    if len(sized) < 2 and _scaled(values):
-        return _scaled(values)
-    if len(sized) < 2 and _ladder(values):
-        return _ladder(values)
-    return [v for _size, v in sorted(sized, key=lambda pair: pair[0])]
 
 
 def _after_its_case(info: VarInfo, text: Text, k: int, goal: Goal) -> float:
