@@ -18,14 +18,12 @@ from apbot.model.values import format_hms
 from apbot.read.actions import ActionInfo
 from apbot.read.evidence import EvidenceReader
 from apbot.read.labels import Label, words
+from apbot.read.quantity_units import _guess_step, _tidy, _unit_from_words
 from apbot.read.report import Note
 from apbot.read.shapes import (
     CHOICE_WORDS,
     Evidence,
     _dedupe,
-    _guess_step,
-    _tidy,
-    _unit_from_words,
     _value_text,
 )
 from apbot.read.shown import shown_words

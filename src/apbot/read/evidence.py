@@ -39,6 +39,7 @@ from apbot.read.evidence_whose import (
     lead_cell,
 )
 from apbot.read.labels import unit_only_mention, words
+from apbot.read.quantity_units import _quantity_units
 from apbot.read.shapes import (
     _KEYPAD_WORDS,
     CHOICE_WORDS,
@@ -53,7 +54,6 @@ from apbot.read.shapes import (
     _keyish,
     _keypad,
     _numeric_items,
-    _quantity_units,
     _row_step,
     _rows_span,
     _without,

@@ -9,7 +9,8 @@ from __future__ import annotations
 import re
 
 from apbot.read.labels import Label, words
-from apbot.read.shapes import _TIMER_WORDS, _fits, _quantity_unit
+from apbot.read.quantity_units import _quantity_unit
+from apbot.read.shapes import _TIMER_WORDS, _fits
 from apbot.read.text import Manual
 from apbot.read.text_sections import surroundings
 from apbot.read.values import Range, find_ranges

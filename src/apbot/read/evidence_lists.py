@@ -11,11 +11,11 @@ from apbot.read.actions import ActionInfo
 from apbot.read.evidence_owners import OwnWords
 from apbot.read.labels import Label, words
 from apbot.read.list_lines import wrapped_list
+from apbot.read.quantity_units import QUANTITY_FAMILIES, _quantity_units
 from apbot.read.shapes import (
     DOWN_WORDS,
     ORDER_RE,
     PRESSES_RE,
-    QUANTITY_FAMILIES,
     RUN_RE,
     TABLE_POINTER_RE,
     UP_WORDS,
@@ -25,7 +25,6 @@ from apbot.read.shapes import (
     _bullet_items,
     _next_table_column,
     _quantity_column,
-    _quantity_units,
     _same_word,
 )
 from apbot.read.text import Manual, Unit
