@@ -11,7 +11,8 @@ import pytest
 from apbot.model.load import loads_model
 from apbot.model.schema import ApplianceModel
 from apbot.read.goal import parse_instruction
-from apbot.read.numbers import find_mentions, tokenize
+from apbot.read.number_tokens import tokenize
+from apbot.read.numbers import find_mentions
 
 from .goal_kind_models import GROW_LIGHT
 

@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from apbot.read.numbers import find_mentions, read_number, tokenize
+from apbot.read.number_tokens import read_number, tokenize
+from apbot.read.numbers import find_mentions
 
 
 def mentions(text: str) -> list[tuple[str, float]]:

@@ -10,7 +10,8 @@ from apbot.model.load import loads_model
 from apbot.model.schema import ApplianceModel
 from apbot.read import read_manual
 from apbot.read.goal import parse_instruction
-from apbot.read.numbers import find_mentions, tokenize
+from apbot.read.number_tokens import tokenize
+from apbot.read.numbers import find_mentions
 
 # a tea maker: one water temperature, a start key
 TEA = """

@@ -29,7 +29,8 @@ from apbot.model.schema import ApplianceModel
 from apbot.read.goal_values import kind_noun, name_words
 from apbot.read.goal_view import Model, VarInfo, model_view, own_stems
 from apbot.read.goal_vocab import NEGATIONS, STOP_WORDS, concept, stem
-from apbot.read.numbers import Token, find_mentions, tokenize
+from apbot.read.number_tokens import Token, tokenize
+from apbot.read.numbers import find_mentions
 
 SHORTEST_NAME = 4  # a shortened name ("regen", "recirc") is at least this long
 _ROLES = ("setting", "switch")

@@ -32,7 +32,8 @@ from apbot.read.goal import parse_instruction
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_remarks import without_remarks
 from apbot.read.goal_view import model_view
-from apbot.read.numbers import Mention, Token, find_mentions, read_number, tokenize
+from apbot.read.number_tokens import Token, read_number, tokenize
+from apbot.read.numbers import Mention, find_mentions
 from apbot.read.shapes import GROUP_NOUNS
 
 _NUMBER = re.compile(r"\d+(?:\.\d+)?")

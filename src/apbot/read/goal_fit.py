@@ -11,7 +11,8 @@ from apbot.model.values import format_hms
 from apbot.read.goal_values import parse_quantity, shown_count, unit_kind, unit_text
 from apbot.read.goal_view import Goal, Model, VarInfo, domain_values
 from apbot.read.goal_vocab import concept
-from apbot.read.numbers import Mention, find_mentions, tokenize
+from apbot.read.number_tokens import tokenize
+from apbot.read.numbers import Mention, find_mentions
 
 
 def fit(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:

@@ -11,7 +11,8 @@ from apbot.model.schema import DiscreteVariable
 from apbot.read.goal_text import Text
 from apbot.read.goal_view import Goal, Model, VarInfo
 from apbot.read.goal_vocab import stem
-from apbot.read.numbers import find_mentions, read_number
+from apbot.read.number_tokens import read_number
+from apbot.read.numbers import find_mentions
 
 _UNIT_NAMES = {
     "v": ("v", "volt", "volts"),

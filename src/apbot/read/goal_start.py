@@ -22,7 +22,8 @@ from apbot.read.goal_text import (
 from apbot.read.goal_values import generic
 from apbot.read.goal_view import Goal, Model, own_stems, step_effects
 from apbot.read.goal_vocab import concept, stem
-from apbot.read.numbers import find_mentions, tokenize
+from apbot.read.number_tokens import tokenize
+from apbot.read.numbers import find_mentions
 
 _DENIALS = frozenset({"don't", "dont", "not", "without", "never"})
 

@@ -13,7 +13,8 @@ from apbot.read.goal_vocab import (
     split_camel,
     stem,
 )
-from apbot.read.numbers import Mention, Token, tokenize
+from apbot.read.number_tokens import Token, tokenize
+from apbot.read.numbers import Mention
 
 CONNECTORS = frozenset({"and", "+", "-", "/", "&", ",", "then", "with", "n"})
 

@@ -15,7 +15,8 @@ from apbot.read.goal_fit import fit
 from apbot.read.goal_text import Text
 from apbot.read.goal_values import phrase_words
 from apbot.read.goal_view import Goal, Model
-from apbot.read.numbers import Mention, read_number
+from apbot.read.number_tokens import read_number
+from apbot.read.numbers import Mention
 
 _DEGREES = frozenset({"degrees", "degree", "deg", "°"})
 UNIT_WORDS = frozenset(

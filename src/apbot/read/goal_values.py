@@ -12,7 +12,7 @@ from apbot.model.schema import NumericVariable
 from apbot.model.values import parse_quantity as _parse_quantity
 from apbot.model.values import unit_of
 from apbot.read.goal_vocab import concept, split_camel
-from apbot.read.numbers import tokenize
+from apbot.read.number_tokens import tokenize
 
 ON_WORDS = ("on", "yes", "enabled", "true")
 
