@@ -8,10 +8,18 @@ from typing import Any
 
 from apbot.model.domain import build_domain
 from apbot.model.schema import DiscreteVariable, GoTo
+from apbot.read.goal_held import (
+    KEEPING,
+    START_WORDS,
+    held_back,
+    left_off_for_now,
+    said_later,
+    someone_else,
+    users_own,
+)
 from apbot.read.goal_text import (
     CLAUSE_ENDS,
     FILLERS,
-    NUMBER_WORDS,
     STRONG_VERBS,
     VERB_FAMILIES,
     WEAK_VERBS,
@@ -23,21 +31,14 @@ from apbot.read.goal_values import generic
 from apbot.read.goal_view import Goal, Model, own_stems, step_effects
 from apbot.read.goal_vocab import concept, stem
 from apbot.read.number_tokens import tokenize
-from apbot.read.numbers import find_mentions
 
 _DENIALS = frozenset({"don't", "dont", "not", "without", "never"})
-
-
-_START_WORDS = frozenset({"start", "begin", "started", "starting", "begins", "kick", "launch"})
 
 
 _HELD_STATES = frozenset({"stopped", "paused", "idle", "unstarted"})
 
 
 _NOW_PHRASES = ("right away", "straight away", "immediately")
-
-
-_KEEPING = frozenset({"leave", "left", "keep", "kept"})  # "leave it off", "kept running"
 
 
 def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = False) -> None:
@@ -131,7 +132,7 @@ def _says_power_on(view: Model, text: Text, goal: Goal) -> bool:
             j += 1
         if text.word(j) not in ("on", "up"):
             continue
-        if text.word(j + 1) == "to" and text.word(j + 2) in _START_WORDS | {"run"}:
+        if text.word(j + 1) == "to" and text.word(j + 2) in START_WORDS | {"run"}:
             continue  # "switch it on to run": a start, said with a switch's verb
         if j > k + 1:
             return True  # "turn it on", "power the bread maker up"
@@ -148,7 +149,7 @@ def _says_power_on(view: Model, text: Text, goal: Goal) -> bool:
         if text.stems[k] == stem("wake") and (k == 0 or text.word(k - 1) in CLAUSE_ENDS | {","}):
             return True
     for k, token in enumerate(text.tokens):  # "with the machine left on", "leave it on"
-        if token.text in _KEEPING | {"stay", "stays"}:
+        if token.text in KEEPING | {"stay", "stays"}:
             j = k + 1
             while j < n and (
                 concept(text.word(j)) in view.appliance_words or text.word(j) == "the"
@@ -250,111 +251,6 @@ _GOING = frozenset(
 )
 
 
-_WHEN_LATER = frozenset({"tonight", "tomorrow", "later", "monday", "tuesday", "wednesday"})
-_WHEN_LATER |= frozenset({"thursday", "friday", "saturday", "sunday"})
-_DAY_PARTS = frozenset({"week", "weekend", "month", "year", "morning", "afternoon", "evening"})
-_DAY_PARTS |= frozenset({"night", "time", "day"}) | _WHEN_LATER
-
-
-def _later(text: Text, k: int) -> bool:
-    """A start word followed in its clause by "in/after N ..." (a delayed start), by a later
-    day ("a holiday starting tonight": when something begins, no request to start), or by
-    "at" a time of day ("start mowing at 7 in the morning": when it starts, as scheduled)."""
-    if text.word(k + 1) in _WHEN_LATER and text.word(k + 2) not in ("it", "the"):
-        return True
-    if _at_a_time_of_day(text, k):
-        return True
-    if text.word(k + 1) in ("this", "next") and text.word(k + 2) in _DAY_PARTS:
-        return True  # "starting next week" (but "start this wash" is a start now)
-    for j in range(k + 1, min(k + 6, len(text.tokens))):
-        word = text.word(j)
-        if word in CLAUSE_ENDS or word == ",":
-            return False
-        following = text.word(j + 1)
-        if following in ("a", "an"):
-            following = text.word(j + 2)
-        numeral = following[:1].isdigit() or following in NUMBER_WORDS | {"half", "quarter"}
-        if word in ("in", "after") and numeral:
-            return True
-    return False
-
-
-_TIME_STOPS = CLAUSE_ENDS | {",", "and", "then", "but", "so", "until", "till", "when"}
-
-
-def _at_a_time_of_day(text: Text, k: int) -> bool:
-    """A time of day said with "at" in the start word's clause, within a few words, before
-    another verb is joined on ("start it and stop at 7 pm": the time is the stop's)."""
-    end = k + 1
-    while end < min(k + 7, len(text.tokens)) and text.word(end) not in _TIME_STOPS:
-        end += 1
-    return any(
-        mention.kind == "clock" and mention.lead == "at" and mention.start < end
-        for mention in find_mentions(text.tokens[:end], skip=set(range(k + 1)))
-    )
-
-
-def _held_back(text: Text, family: frozenset[str] | None = None) -> bool:
-    """ "wait with the heating", "hold off on starting": the start is put off (no time given;
-    "wait 2 hours before heating" is a delay). Only a wait for the start or the appliance's own
-    work counts ("I'll wait before pouring", "hold off on keep warm" start nothing later)."""
-    for k, token in enumerate(text.tokens):
-        if not (
-            (token.text == "wait" and text.word(k + 1) in ("with", "on", "before"))
-            or (token.text == "hold" and text.word(k + 1) == "off")
-        ):
-            continue
-        j = k + 2
-        while text.word(j) in ("on", "with", "the", "a", "any"):
-            j += 1
-        work = text.word(j) in _START_WORDS or text.word(j) in ("it", "that")
-        verb = text.stems[j] if j < len(text.stems) else ""
-        work = work or verb in (family if family is not None else STRONG_VERBS)
-        if not work and text.word(j) not in CLAUSE_ENDS | {"", ","}:
-            continue
-        ahead = [text.word(j) for j in range(k + 1, min(k + 6, len(text.tokens)))]
-        if not any(w[:1].isdigit() or w in NUMBER_WORDS for w in ahead):
-            return True
-    return False
-
-
-_NOT_ASKED = frozenset({"can't", "cannot", "couldn't", "won't", "i'll", "i", "we'll", "we"})
-
-
-def _users_own(text: Text, k: int) -> bool:
-    """The user waits to start it themselves ("wait for me to start", "until we tell it to
-    start"): it is to be left unstarted. ("I'll start it myself" is said either way.)"""
-    for d in range(1, 4):
-        word = text.word(k - d)
-        if word in CLAUSE_ENDS or word == ",":
-            return False
-        if word == "to" and text.word(k - d - 1) in ("me", "us"):
-            return True
-    return False
-
-
-def _left_off_for_now(text: Text, k: int) -> bool:
-    """ "leave it off for now", "keep it off until I'm back": the appliance itself kept off."""
-    return (
-        text.word(k) == "off"
-        and text.word(k - 1) == "it"
-        and text.word(k - 2) in _KEEPING
-        and (text.word(k + 1), text.word(k + 2)) in (("for", "now"), ("until", "i"))
-    )
-
-
-def _someone_else(text: Text, k: int) -> bool:
-    """The start is said of someone else or of what may not happen ("so the kids can't start
-    it", "I'll start it myself"): not a request to start."""
-    for d in range(1, 4):
-        word = text.word(k - d)
-        if word in CLAUSE_ENDS or word == ",":
-            return False
-        if word in _NOT_ASKED or (word == "can" and text.word(k - d + 1) == "not"):
-            return True
-    return False
-
-
 _AFTER_ON = frozenset({"in", "at", "to", "with", "for"})
 
 
@@ -362,7 +258,7 @@ def _named_starts(view: Model, text: Text) -> set[int]:
     """Positions of "start" that belong to a setting's name ("the delay start", "start time")."""
     named = set()
     for k, token in enumerate(text.tokens):
-        if token.text not in _START_WORDS:
+        if token.text not in START_WORDS:
             continue
         for info in view.infos.values():
             label = info.var.label or ""
@@ -407,7 +303,7 @@ def _says_start(
     positive = False
     for k, token in enumerate(text.tokens):
         word = token.text
-        starts = word in _START_WORDS and k not in named
+        starts = word in START_WORDS and k not in named
         if word in ("get", "set") and any(
             text.word(k + d) in (_GOING if word == "get" else _SET_GOING)
             for d in range(2 if word == "set" else 1, 7)
@@ -423,18 +319,18 @@ def _says_start(
         set_running = word == "running" and text.word(k - 1) == "it"
         if on_to_run or (set_running and text.word(k - 2) in ("set", "get", "leave", "keep")):
             starts = True  # "switch it on to run", "set it running", "leave it running"
-        if word in _HELD_STATES and any(text.word(k - d) in _KEEPING | {"stay"} for d in (1, 2, 3)):
+        if word in _HELD_STATES and any(text.word(k - d) in KEEPING | {"stay"} for d in (1, 2, 3)):
             negative = True  # "leave it stopped for now", "keep it paused"
-        if _left_off_for_now(text, k):
+        if left_off_for_now(text, k):
             negative = True  # "leave it off for now"
         if not starts:
             continue
-        if _later(text, k):
+        if said_later(text, k):
             continue  # "start by itself in six hours": a timer, not now
-        if _users_own(text, k):
+        if users_own(text, k):
             negative = True  # "wait for me to start": not now
             continue
-        if _someone_else(text, k):
+        if someone_else(text, k):
             continue  # "so the kids can't start it"
         if text.word(k - 1) in ("delayed", "delay", "timed", "auto"):
             continue  # "arm the delayed start": the timer's name
@@ -448,7 +344,7 @@ def _says_start(
             negative = True
         else:
             positive = True
-    if " not started " in joined or " but not start" in joined or _held_back(text, family):
+    if " not started " in joined or " but not start" in joined or held_back(text, family):
         negative = True
     if " not now " in joined:  # "at midnight, not now"
         negative = True
