@@ -22,10 +22,9 @@ Before step 1, ``goal_remarks`` drops the clauses that ask nothing of the applia
 back in an hour", "…, we are 4 at the table"). The steps live in their own modules:
 ``goal_spelling`` (rewrites before tokenising),
 ``goal_names`` (1), ``goal_fractions`` (parts of a cup, before 2), ``goal_assign`` and
-``goal_fit`` (2), ``goal_scales`` and ``goal_ladders`` (3),
-``goal_switches`` and ``goal_offs`` (4), ``goal_start`` and ``goal_held`` (5), ``goal_twins`` (zones and
-sides), ``goal_cases`` (the mode a setting's value implies); ``goal_view`` is the model as the
-parser sees it.
+``goal_fit`` (2), ``goal_scales`` and ``goal_ladders`` (3), ``goal_switches`` and ``goal_offs``
+(4), ``goal_start`` and ``goal_held`` (5), ``goal_twins`` (zones and sides), ``goal_cases``
+(the mode a setting's value implies); ``goal_view`` is the model as the parser sees it.
 """
 
 from __future__ import annotations
