@@ -4,7 +4,7 @@ its own ends (not "the end of the heating period")."""
 import pytest
 
 from apbot.read import read_manual
-from apbot.read.build import twelve_hour_clock
+from apbot.read.clock_format import twelve_hour_clock
 from apbot.read.text import parse_manual
 
 

@@ -8,7 +8,7 @@ from hypothesis import strategies as st
 
 from apbot.model.validate import check_model
 from apbot.read import ReaderError, read_manual
-from apbot.read.build import twelve_hour_clock
+from apbot.read.clock_format import twelve_hour_clock
 from apbot.read.text import parse_manual
 from apbot.read.values import Range, find_ranges
 

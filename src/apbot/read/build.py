@@ -16,6 +16,7 @@ from typing import Any
 
 from apbot.model.values import format_hms
 from apbot.read.actions import ActionInfo
+from apbot.read.clock_format import twelve_hour_clock
 from apbot.read.evidence import EvidenceReader
 from apbot.read.labels import Label, words
 from apbot.read.quantity_units import _guess_step, _tidy, _unit_from_words
@@ -43,52 +44,10 @@ from apbot.read.values_zero import from_zero, zero_told
 _PRINTED_UNITS = r"kg|g|lbs?|ml|l|litres?|W|watts?|rpm|%"  # quantities, not times or degrees
 
 
-_HOURS = r"(?:[- ]?h(?:ou)?rs?\b|[- ]?h\b|[- ]hours?\b)"  # "12-hour", "12 h", "12hr", "24-hours"
-_CLOCK_RE = re.compile(
-    r"\bclock\b|\btime of (?:the )?day\b|\bcurrent time\b|\btime (?:display|format)\b", re.I
-)
 """What a sentence about the clock itself names ("mode", "display" alone are any feature's)."""
 
 
-def _hour_clock_re(number: str) -> re.Pattern[str]:
-    """ "12-hour" (any spelling); "12-hour format/clock" says it of a clock by itself."""
-    return re.compile(rf"{number}{_HOURS}(?:\s+(?:time\s+)?(?:format|clock)\b)?", re.I)
-
-
-_TWELVE_RE = _hour_clock_re(r"(?:\b12|\btwelve)")
-_TWENTY_FOUR_RE = _hour_clock_re(r"(?:\b24|\btwenty[- ]four)")
-_AM_PM_RE = re.compile(  # "AM", "7:30 pm", "8 a.m.", "am/pm" (not the verb "am", not "PM 2.5")
-    r"(?-i:\bAM\b|\bPM\b(?!\s?\d))|\d(?::\d\d)?\s*[ap]\.?m\b"
-    r"|\b(?:am|a\.m\.)\s*/\s*(?:pm|p\.m\.)",
-    re.I,
-)
-
-
-def _of_the_clock(sentence: str, hours: re.Pattern[str], am_pm: bool) -> bool:
-    """A sentence giving the clock's format: its hours (or AM/PM) beside the clock, or "12-hour
-    format". "Keeps warm for 12 hours" or "ready at 6 a.m." speaks of no clock."""
-    said = hours.search(sentence)
-    if said and said.group(0).lower().endswith(("format", "clock")):
-        return True
-    format_said = bool(said or (am_pm and _AM_PM_RE.search(sentence)))
-    return format_said and bool(_CLOCK_RE.search(sentence))
-
-
-_SENTENCE_RE = re.compile(r"(?<=[.;!?])\s+(?=[A-Z])")
-_CUT_SHORT_RE = re.compile(r"\b(?:e\.g|i\.e|approx|ca|eg|ie)\.$", re.I)
 """A unit the parser ended at an abbreviation ("… time of day, e.g." + "7:30 pm.")."""
-
-
-def twelve_hour_clock(units: list[Any]) -> bool:
-    """Whether the clock counts 1–12 (AM/PM, "12-hour clock"): "keeps warm for 12 hours" is no
-    such clock, and a manual that speaks of a 24-hour clock has none."""
-    texts = [s for u in units for s in _SENTENCE_RE.split(u.text)]  # (its clock in the sentence)
-    for i in range(len(texts) - 1):
-        if _CUT_SHORT_RE.search(texts[i]):
-            texts[i + 1] = f"{texts[i]} {texts[i + 1]}"
-    if any(_of_the_clock(t, _TWENTY_FOUR_RE, am_pm=False) for t in texts):
-        return False
-    return any(_of_the_clock(t, _TWELVE_RE, am_pm=True) for t in texts)
 
 
 _DIGITS_RE = re.compile(r"\b(one|two|three|1|2|3)[- ]digits?\b", re.I)

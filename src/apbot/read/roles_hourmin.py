@@ -9,7 +9,8 @@ from typing import Any
 
 from apbot.model.values import format_hms
 from apbot.read.actions import ActionInfo
-from apbot.read.build import Builder, twelve_hour_clock
+from apbot.read.build import Builder
+from apbot.read.clock_format import twelve_hour_clock
 from apbot.read.roles_common import label_of, var_name
 from apbot.read.values import ON_OFF_RE, find_step
 

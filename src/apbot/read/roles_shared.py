@@ -15,7 +15,8 @@ from __future__ import annotations
 import re
 
 from apbot.read.actions import ActionInfo
-from apbot.read.build import Builder, twelve_hour_clock
+from apbot.read.build import Builder
+from apbot.read.clock_format import twelve_hour_clock
 from apbot.read.labels import words
 from apbot.read.roles_common import label_of, stepped_noun, token_of, turns
 from apbot.read.shapes import Evidence

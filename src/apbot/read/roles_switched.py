@@ -13,7 +13,8 @@ from typing import Any
 
 from apbot.model.values import format_hms
 from apbot.read.actions import ActionInfo
-from apbot.read.build import Builder, twelve_hour_clock
+from apbot.read.build import Builder
+from apbot.read.clock_format import twelve_hour_clock
 from apbot.read.labels import words
 from apbot.read.roles_common import TIME_WORDS, label_of
 from apbot.read.values import find_step
