@@ -98,3 +98,36 @@ def test_glosses_sharing_one_frame_around_the_words_name_nothing() -> None:
     model = read_manual(HEATER, ["press_level"]).model
     level = next(v for n, v in model.variables.items() if "level" in n)
     assert level.values == ["low", "high"]
+
+
+KETTLE = """VARMA TK-2 tea kettle
+
+THE KEYS
+  ⏻       Switches the kettle on or off.
+  TEMP    Chooses the water: WARM → HOT → BOIL → WARM …
+
+INDICATOR LAMPS
+  BOIL = rolling boil
+  HOT (surface hot) – do not touch
+"""
+
+
+def test_a_gloss_followed_by_a_warning_tells_of_a_state() -> None:
+    """ "HOT (surface hot) – do not touch" warns of the lamp's state: no name for HOT."""
+    for text in (KETTLE, KETTLE.replace("HOT (surface hot) – do", "HOT – surface hot, do")):
+        temp = read_manual(text, ["press_power", "press_temp"]).model.variables["temp"]
+        assert temp.values == ["warm", "hot", "rolling boil"]
+
+
+STEAMER = """PARO S-1 garment steamer
+
+MODE   Chooses the mode; one of the lamps lights:
+         STEAM – with steam
+         MIST  – with a fine mist
+Press MODE: STEAM → MIST → STEAM …
+"""
+
+
+def test_a_leading_with_is_no_part_of_the_name() -> None:
+    mode = read_manual(STEAMER, ["press_power", "press_mode"]).model.variables["mode"]
+    assert mode.values == ["steam", "fine mist"]

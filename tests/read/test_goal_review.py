@@ -77,3 +77,17 @@ def test_holding_off_on_a_switch_is_that_switch_off_not_the_start() -> None:
     model = loads_model(CABINET)
     goal = parse_instruction(model, "Start the dough, hold off on auto stop.")
     assert goal["running"] == "on" and goal.get("auto_stop") == "off"
+
+
+def test_a_negated_verb_of_handling_leaves_a_number_as_it_is() -> None:
+    """ "without touching the days" keeps the count as it is; "no days" zeroes it."""
+    model = loads_model(CABINET.replace("ranges: [[1, 30, 1]]", "ranges: [[0, 30, 1]]"))
+    for text in (
+        "Tempeh, without touching the ferment days",
+        "Tempeh; don't change the ferment days",
+        "Tempeh without adjusting the days",
+    ):
+        assert "ferment_days" not in parse_instruction(model, text), text
+    assert parse_instruction(model, "Tempeh with no ferment days")["ferment_days"] == 0
+    assert parse_instruction(model, "Tempeh without using the ferment days")["ferment_days"] == 0
+    assert "mist" not in parse_instruction(model, "Dough without changing the mist")

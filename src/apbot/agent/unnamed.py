@@ -28,7 +28,7 @@ from typing import Any
 from apbot.model.schema import ApplianceModel
 from apbot.read.goal_values import kind_noun, name_words
 from apbot.read.goal_view import Model, VarInfo, model_view, own_stems
-from apbot.read.goal_vocab import NEGATIONS, STOP_WORDS, concept, stem
+from apbot.read.goal_vocab import HANDLING, NEGATIONS, STOP_WORDS, concept, stem
 from apbot.read.number_tokens import Token, tokenize
 from apbot.read.numbers import find_mentions
 
@@ -42,7 +42,6 @@ _DISMISSING = frozenset(
 _DISMISSING_REACH = 3  # power and running are read from "start", "go", "switch on"
 # a setting left as it is: a change said with a negation before its name ("don't change the
 # fan speed", "without touching the timer"), or these words after it in its clause
-_CHANGING = frozenset({"change", "changing", "touch", "touching", "alter", "altering", "adjust"})
 _AS_IT_IS = frozenset({"unchanged", "alone", "matter", "matters"})
 _CLAUSE_BREAKS = frozenset({".", ";", "!", "?", ",", "but", "and", "while"})
 
@@ -131,7 +130,7 @@ def _left(tokens: list[Token], k: int) -> bool:
     end = next((j for j in range(k + 1, len(words)) if words[j] in _CLAUSE_BREAKS), len(words))
     before, after = words[start:k], words[k + 1 : end]
     negated = [j for j, w in enumerate(before) if w in NEGATIONS]
-    if negated and any(w in _CHANGING for w in before[negated[0] + 1 :]):
+    if negated and any(stem(w) in HANDLING for w in before[negated[0] + 1 :]):
         return True
     # "as it is" / "as is" ending the clause, not "on as it is cold"
     as_is = after[-3:] == ["as", "it", "is"] or after[-2:] == ["as", "is"]

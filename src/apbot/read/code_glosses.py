@@ -27,11 +27,17 @@ _WORD_CODE = re.compile(r"[a-z]{3,10}")  # a display word: "side", "wall", "nois
 _MARK = r"\s*(?:=|–|—|-{1,2})\s*"
 _GLOSS = r"([A-Za-z][A-Za-z' -]{2,40})"
 _WORDS = 4  # a gloss names the value; a longer text describes it
-_FILLER = frozenset({"the", "a", "an"})
+# leading words a name drops ("STEAM – with steam" names no more than "steam")
+_FILLER = frozenset({"the", "a", "an", "with"})
 _TRAILING = frozenset({"only"})
 _JOINERS = frozenset({"to", "and", "or", "of", "with"})
 # a switch's words gloss what is switched ("OFF = appliance off"), not a value of its own
 _SWITCH_WORDS = frozenset({"on", "off"})  # "LINE – waterline only": the name is "waterline"
+_CUT = re.compile(r"\s*(?:[(,.;:]|\s-\s|\s–\s|\s{2,})")  # where a gloss's name ends
+# a gloss followed by a warning tells of a state ("HOT (surface hot) – do not touch"): no name
+_WARNING = re.compile(
+    r"[\s–—:;,.!-]*(?:do\s+not|don't|never|caution|warning|danger)\b", re.IGNORECASE
+)
 
 
 def name_glossed_words(b: Builder) -> None:
@@ -88,9 +94,20 @@ def _gloss(lines: list[str], code: str, own: set[str], values: list[str]) -> tup
         for pattern in patterns:
             for match in pattern.finditer(line):
                 name = _name(match.group(1), code, own)
-                if name is not None:
+                if name is not None and not _warned(line, match, pattern is patterns[1]):
                     return name, number
     return None
+
+
+def _warned(line: str, match: re.Match[str], bracketed: bool) -> bool:
+    """The gloss's line goes on with a warning ("HOT (surface hot) – do not touch", "HOT –
+    surface hot, never touch"): the gloss tells of a state to beware of, not a value's name."""
+    if bracketed:
+        rest = line[match.end() :]
+    else:
+        parts = _CUT.split(line[match.start(1) :], maxsplit=1)
+        rest = parts[1] if len(parts) > 1 else line[match.end() :]
+    return _WARNING.match(rest) is not None
 
 
 def _shared_frame(names: dict[str, str]) -> bool:
@@ -103,7 +120,7 @@ def _shared_frame(names: dict[str, str]) -> bool:
 def _name(gloss: str, code: str, own: set[str]) -> str | None:
     """The gloss's leading words as a name when they hold the code ("walls", "waterline"), else
     None: a gloss up to its first bracket, comma or stop, without an article or "only"."""
-    text = re.split(r"\s*(?:[(,.;:]|\s-\s|\s–\s|\s{2,})", gloss.strip())[0]
+    text = _CUT.split(gloss.strip())[0]
     words = [w for w in text.casefold().split() if w]
     while words and words[0] in _FILLER:
         words = words[1:]

@@ -25,7 +25,7 @@ from apbot.read.goal_view import (
     own_concepts,
     own_stems,
 )
-from apbot.read.goal_vocab import NEGATIONS, STOP_WORDS, concept, stem
+from apbot.read.goal_vocab import HANDLING, NEGATIONS, STOP_WORDS, concept, stem
 
 _SELF_OFF_VERBS = frozenset(stem(w) for w in ("switch", "shut", "turn", "power", "cut"))
 _PREVENTED = frozenset({"stop", "prevent", "keep", "don't", "dont", "not", "never", "doesn't"})
@@ -90,7 +90,8 @@ def _off_when_done(text: Text, k: int) -> int:
 def zero_settings(
     view: Model, text: Text, goal: Goal, claimed: set[int], where: dict[str, int] | None = None
 ) -> None:
-    """ "no delay", "no final spin", "skip the rinse": a numeric setting that can be 0 is 0."""
+    """ "no delay", "no final spin", "skip the rinse": a numeric setting that can be 0 is 0 —
+    not "without touching the timer", "don't change the delay" (left as they are)."""
     for k, token in enumerate(text.tokens):
         if token.text not in NEGATIONS or token.text in ("off", "free", "stop", "cancel"):
             continue
@@ -98,6 +99,8 @@ def zero_settings(
             j = k + d
             if j >= len(text.tokens) or text.word(j) in CLAUSE_ENDS or text.word(j) == ",":
                 break
+            if text.stems[j] in HANDLING:
+                break  # "without touching the timer": left as it is, not none
             key = text.concepts[j]
             homes = [
                 info

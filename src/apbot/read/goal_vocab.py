@@ -149,6 +149,11 @@ NEGATIONS = frozenset(
         "release",
     }
 )
+# Stems of verbs of handling a setting: negated, they leave it as it is ("without touching the
+# timer", "don't change the delay"), where "no delay", "without using the delay" want none.
+HANDLING = frozenset(
+    stem(w) for w in ("touch", "change", "alter", "adjust", "modify", "tweak", "fiddle", "mess")
+)
 # Words that carry no meaning for matching a variable by name.
 STOP_WORDS = frozenset(
     {
