@@ -26,7 +26,7 @@ from apbot.read.goal_view import (
     own_concepts,
     own_stems,
 )
-from apbot.read.goal_vocab import STOP_WORDS, SYNONYMS, concept, stem
+from apbot.read.goal_vocab import STOP_WORDS, SYNONYMS, concept, cut_short, stem
 
 
 def switches(
@@ -228,10 +228,9 @@ def _locking(text: Text, k: int) -> bool:
 
 
 def _abbreviated(word: str, own: set[str]) -> bool:
-    """The switch's one-word name is a short form of the word ("TABS" for tablets)."""
-    return len(own) == 1 and any(
-        len(short) >= 3 and word.startswith(short) and len(word) <= len(short) + 4 for short in own
-    )
+    """The switch's one-word name is a short form of the word ("TABS" for tablets, "OSC"
+    for oscillation)."""
+    return len(own) == 1 and any(cut_short(short, word) for short in own)
 
 
 def _kept(text: Text, k: int, own: set[str]) -> bool:
