@@ -55,3 +55,27 @@ def test_a_cut_ends_a_syllable() -> None:
     assert not cut_short("temp", "temptation")
     assert not cut_short("set", "settings")
     assert not cut_short("fan", "fantastically")
+
+
+# a water softener whose REGEN key starts a regeneration and REGEN TIME sets when it runs
+SOFTENER = model_from(
+    """
+    controls: [{id: regen}, {id: regen_time}]
+    variables:
+      regen: {type: discrete, values: ["off", "on"], label: REGEN}
+      regen_time: {type: numeric, ranges: [[0, 23, 1]], unit: h, label: REGEN TIME}
+    actions:
+      press_regen: {control: regen}
+      press_regen_time: {control: regen_time}
+    features:
+      regen:
+        - {actions: [press_regen], variable: regen, effect: toggle}
+      set_regen_time:
+        - {actions: [press_regen_time], variable: regen_time, effect: next}
+    """
+)
+
+
+def test_the_long_word_of_a_setting_given_is_not_the_switch() -> None:
+    assert parse_instruction(SOFTENER, "Start a regeneration now.") == {"regen": "on"}
+    assert "regen" not in parse_instruction(SOFTENER, "Move the regeneration time to 4 h.")

@@ -57,7 +57,8 @@ def switches(
             if text.stems[k] == stem("unlock") and stem("lock") in own:
                 key = concept("lock")  # "unlock the keys": the lock, off
             weight = info.vocab.get(key, 0.0)
-            if weight <= 0 and _abbreviated(text.stems[k], own):
+            cut = _abbreviated(text.stems[k], own) and not _worn_by_setting(view, goal, own)
+            if weight <= 0 and cut:
                 key, weight = text.stems[k], 1.0  # "tablets" for a TABS key
             if weight <= 0:
                 warmth = _kept_warmth(text, k, own)
@@ -82,7 +83,7 @@ def switches(
                 text.stems[k] in own
                 or key in own_concepts(info)
                 or key == concept("lock")
-                or _abbreviated(text.stems[k], own)
+                or cut
                 or _lamp_word(view, info, text.word(k))
             ):
                 weight = 1.0
@@ -231,6 +232,16 @@ def _abbreviated(word: str, own: set[str]) -> bool:
     """The switch's one-word name is a short form of the word ("TABS" for tablets, "OSC"
     for oscillation)."""
     return len(own) == 1 and any(cut_short(short, word) for short in own)
+
+
+def _worn_by_setting(view: Model, goal: Goal, own: set[str]) -> bool:
+    """A setting the goal already has wears the switch's name among its own words (REGEN
+    TIME beside REGEN): the longer word the user said ("move the regeneration to 1 am")
+    named that setting, not the switch."""
+    return any(
+        info.role == "setting" and name in goal and own < own_stems(info)
+        for name, info in view.infos.items()
+    )
 
 
 def _kept(text: Text, k: int, own: set[str]) -> bool:
