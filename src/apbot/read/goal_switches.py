@@ -57,7 +57,7 @@ def switches(
             if text.stems[k] == stem("unlock") and stem("lock") in own:
                 key = concept("lock")  # "unlock the keys": the lock, off
             weight = info.vocab.get(key, 0.0)
-            cut = _abbreviated(text.stems[k], own) and not _worn_by_setting(view, goal, own)
+            cut = _abbreviated(view, goal, text.stems[k], own)
             if weight <= 0 and cut:
                 key, weight = text.stems[k], 1.0  # "tablets" for a TABS key
             if weight <= 0:
@@ -228,10 +228,16 @@ def _locking(text: Text, k: int) -> bool:
     return any(text.word(j) in _LOCK_WORDS or "lock" in text.word(j) for j in window)
 
 
-def _abbreviated(word: str, own: set[str]) -> bool:
+def _abbreviated(view: Model, goal: Goal, word: str, own: set[str]) -> bool:
     """The switch's one-word name is a short form of the word ("TABS" for tablets, "OSC"
-    for oscillation)."""
-    return len(own) == 1 and any(cut_short(short, word) for short in own)
+    for oscillation). A name cut at a syllable of a much longer word ("REGEN" of
+    regeneration) yields to a setting the goal has that wears the same name."""
+    if len(own) != 1:
+        return False
+    short = next(iter(own))
+    if not cut_short(short, word):
+        return False
+    return len(word) <= len(short) + 4 or not _worn_by_setting(view, goal, own)
 
 
 def _worn_by_setting(view: Model, goal: Goal, own: set[str]) -> bool:
