@@ -30,7 +30,16 @@ from apbot.read.goal_view import (
     own_stems,
     phrase_words,
 )
-from apbot.read.goal_vocab import HIGHEST, LOWEST, SCALES, STOP_WORDS, SYNONYMS, similar, stem
+from apbot.read.goal_vocab import (
+    HIGHEST,
+    LOWEST,
+    SCALES,
+    STOP_WORDS,
+    SYNONYMS,
+    cut_short,
+    similar,
+    stem,
+)
 from apbot.read.numbers import COUNT_NOUNS
 
 
@@ -55,7 +64,9 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
     for var, value, stems, weight in view.phrases:
         info = view.infos[var]
         for i in range(n):
-            found = _match_at(text, i, stems, _panel_code(value), view.manual_words)
+            found = _match_at(
+                text, i, stems, _panel_code(value), view.manual_words, _raw_words(value, stems)
+            )
             if found is None:
                 continue
             end, quality = found
@@ -286,6 +297,7 @@ def _match_at(
     stems: tuple[str, ...],
     coded: bool = False,
     known: frozenset[str] = frozenset(),
+    words: tuple[str, ...] = (),
 ) -> tuple[int, float] | None:
     """End and quality of the phrase ``stems`` matched from token i (connectors may sit
     between words; a synonym or a longer word that starts like the value counts less; a
@@ -330,6 +342,10 @@ def _match_at(
             quality = min(quality, 0.8)  # "storage" for STORE, "convection bake" for CONV BAKE
         elif len(stems) == 1 and len(target) >= 5 and here.endswith(target):
             quality = min(quality, 0.7)  # "multigrain" for GRAINS
+        elif words and _cut_short(words[index], target, text.word(k)):
+            quality = min(quality, 0.8)  # "buzzer" for BUZZ (whose stem is "buz")
+        elif len(stems) == 1 and words and _compound_head(words[0], text.word(k), known):
+            quality = min(quality, 0.7)  # "teapot" for POT ("tea" a word of the manual)
         elif len(target) >= 3 and here == target + "er":
             quality = min(quality, 0.8)  # "the air fryer" for AIR FRY
         elif len(stems) > 1 and len(here) >= 3 and target.startswith(here):
@@ -344,6 +360,43 @@ def _match_at(
             return None
         k += 1
     return k, quality
+
+
+def _raw_words(value: Any, stems: tuple[str, ...]) -> tuple[str, ...]:
+    """The value's own words as the panel prints them, one per stem (or none): a stem may
+    cut the word shorter than the panel does ("buzz" stems to "buz")."""
+    words = tuple(w.casefold() for w in phrase_words(str(value)))
+    return words if len(words) == len(stems) else ()
+
+
+def _cut_short(short: str, stemmed: str, word: str) -> bool:
+    """The panel's word of at least four letters, longer than its stem, starts the user's
+    word and is most of it ("buzzer" for BUZZ): the stem alone is too short to be trusted
+    as a prefix ("buz")."""
+    return (
+        len(short) >= 4
+        and short != stemmed
+        and len(word) <= len(short) + 4
+        and cut_short(short, word)
+        and word not in LOWEST | HIGHEST
+    )
+
+
+def _compound_head(short: str, word: str, known: frozenset[str]) -> bool:
+    """The user's word is a compound ending in the value's word, its first part a word of
+    the manual of three letters or more ("teapot" for POT where the manual speaks of tea):
+    the value is the compound's head noun. A word that merely ends in the same letters
+    ("spot", "depot", "hotspot") has no such first part."""
+    rest = word[: len(word) - len(short)]
+    return (
+        len(short) >= 3
+        and short.isalpha()
+        and word.endswith(short)
+        and len(rest) >= 3
+        and rest in known
+        and rest not in STOP_WORDS
+        and rest not in NUMBER_WORDS
+    )
 
 
 def _adverb_of(text: Text, k: int, target: str, coded: bool, known: frozenset[str]) -> bool:

@@ -26,7 +26,7 @@ from apbot.read.goal_view import (
     own_concepts,
     own_stems,
 )
-from apbot.read.goal_vocab import STOP_WORDS, SYNONYMS, concept, stem
+from apbot.read.goal_vocab import STOP_WORDS, SYNONYMS, concept, cut_short, stem
 
 
 def switches(
@@ -57,7 +57,8 @@ def switches(
             if text.stems[k] == stem("unlock") and stem("lock") in own:
                 key = concept("lock")  # "unlock the keys": the lock, off
             weight = info.vocab.get(key, 0.0)
-            if weight <= 0 and _abbreviated(text.stems[k], own):
+            cut = _abbreviated(view, goal, text.stems[k], own)
+            if weight <= 0 and cut:
                 key, weight = text.stems[k], 1.0  # "tablets" for a TABS key
             if weight <= 0:
                 warmth = _kept_warmth(text, k, own)
@@ -82,7 +83,7 @@ def switches(
                 text.stems[k] in own
                 or key in own_concepts(info)
                 or key == concept("lock")
-                or _abbreviated(text.stems[k], own)
+                or cut
                 or _lamp_word(view, info, text.word(k))
             ):
                 weight = 1.0
@@ -227,10 +228,25 @@ def _locking(text: Text, k: int) -> bool:
     return any(text.word(j) in _LOCK_WORDS or "lock" in text.word(j) for j in window)
 
 
-def _abbreviated(word: str, own: set[str]) -> bool:
-    """The switch's one-word name is a short form of the word ("TABS" for tablets)."""
-    return len(own) == 1 and any(
-        len(short) >= 3 and word.startswith(short) and len(word) <= len(short) + 4 for short in own
+def _abbreviated(view: Model, goal: Goal, word: str, own: set[str]) -> bool:
+    """The switch's one-word name is a short form of the word ("TABS" for tablets, "OSC"
+    for oscillation). A name cut at a syllable of a much longer word ("REGEN" of
+    regeneration) yields to a setting the goal has that wears the same name."""
+    if len(own) != 1:
+        return False
+    short = next(iter(own))
+    if not cut_short(short, word):
+        return False
+    return len(word) <= len(short) + 4 or not _worn_by_setting(view, goal, own)
+
+
+def _worn_by_setting(view: Model, goal: Goal, own: set[str]) -> bool:
+    """A setting the goal already has wears the switch's name among its own words (REGEN
+    TIME beside REGEN): the longer word the user said ("move the regeneration to 1 am")
+    named that setting, not the switch."""
+    return any(
+        info.role == "setting" and name in goal and own < own_stems(info)
+        for name, info in view.infos.items()
     )
 
 

@@ -80,6 +80,22 @@ def similar(a: str, b: str) -> bool:
     return SequenceMatcher(None, a, b).ratio() >= 0.85
 
 
+def cut_short(short: str, word: str) -> bool:
+    """``short`` is ``word`` cut short as a panel prints it: the word's start, of three
+    letters or more, and either most of the word ("TABS" for tablets, "BUZZ" for buzzer) or
+    cut where a syllable ends, on a consonant before a vowel ("OSC" for oscillation, "REGEN"
+    for regeneration): "temptation" is no TEMP, "settings" no SET (a short word that merely
+    starts alike, "temple", is still taken: most of it is the name)."""
+    if len(short) < 3 or len(word) <= len(short) or not word.startswith(short):
+        return False
+    if len(word) <= len(short) + 4:
+        return True
+    return short[-1] not in _VOWELS and word[len(short)] in _VOWELS
+
+
+_VOWELS = frozenset("aeiou")
+
+
 # Words that mean the same setting on many panels: each group maps to its first word's stem.
 _GROUPS: tuple[tuple[str, ...], ...] = (
     ("program", "programme", "prog", "prg", "course", "cycle", "menu", "function", "func", "mode"),

@@ -1,0 +1,81 @@
+"""Panel names that cut the user's word short (``goal_vocab.cut_short``): a value whose stem is
+shorter than the panel's word ("BUZZ", stem "buz", for buzzer), a switch cut at a syllable
+("OSC" for oscillation, "REGEN" for regeneration), and a value that is the head noun of the
+user's compound ("teapot" for POT, where the manual speaks of tea)."""
+
+from __future__ import annotations
+
+from apbot.read.goal import parse_instruction
+from apbot.read.goal_vocab import cut_short
+from tests.helpers import model_from
+
+# a bedside water station: an alarm sound, a serving size, a swirling spray and a filter rinse
+STATION = model_from(
+    """
+    controls: [{id: sound}, {id: size}, {id: osc}, {id: regen}]
+    variables:
+      sound: {type: discrete, values: ["off", buzz, radio], label: SOUND}
+      size: {type: discrete, values: [cup, mug, pot], label: SIZE}
+      osc: {type: discrete, values: ["off", "on"], label: OSC}
+      regen: {type: discrete, values: ["off", "on"], label: REGEN}
+    actions:
+      press_sound: {control: sound}
+      press_size: {control: size}
+      press_osc: {control: osc}
+      press_regen: {control: regen}
+    features:
+      set_sound:
+        - {actions: [press_sound], variable: sound, effect: next}
+      set_size:
+        - {actions: [press_size], variable: size, effect: next}
+      osc:
+        - {actions: [press_osc], variable: osc, effect: toggle}
+      regen:
+        - {actions: [press_regen], variable: regen, effect: toggle}
+    """
+)
+MANUAL = "Pour hot water for tea or coffee. SIZE picks CUP, MUG or POT. OSC swirls the spray."
+
+
+def test_a_panel_word_is_the_start_of_the_users_word() -> None:
+    assert parse_instruction(STATION, "Wake me with the buzzer.", MANUAL) == {"sound": "buzz"}
+    assert parse_instruction(STATION, "Turn the oscillation on.", MANUAL) == {"osc": "on"}
+    assert parse_instruction(STATION, "Run a regeneration.", MANUAL) == {"regen": "on"}
+
+
+def test_a_value_heads_the_users_compound() -> None:
+    assert parse_instruction(STATION, "Fill the teapot.", MANUAL) == {"size": "pot"}
+    # "spot" and "depot" merely end in its letters: no word of the manual comes first
+    assert "size" not in parse_instruction(STATION, "Fill it on the spot.", MANUAL)
+
+
+def test_a_cut_ends_a_syllable() -> None:
+    assert cut_short("temp", "temperature")
+    assert cut_short("recirc", "recirculation")
+    assert not cut_short("temp", "temptation")
+    assert not cut_short("set", "settings")
+    assert not cut_short("fan", "fantastically")
+
+
+# a water softener whose REGEN key starts a regeneration and REGEN TIME sets when it runs
+SOFTENER = model_from(
+    """
+    controls: [{id: regen}, {id: regen_time}]
+    variables:
+      regen: {type: discrete, values: ["off", "on"], label: REGEN}
+      regen_time: {type: numeric, ranges: [[0, 23, 1]], unit: h, label: REGEN TIME}
+    actions:
+      press_regen: {control: regen}
+      press_regen_time: {control: regen_time}
+    features:
+      regen:
+        - {actions: [press_regen], variable: regen, effect: toggle}
+      set_regen_time:
+        - {actions: [press_regen_time], variable: regen_time, effect: next}
+    """
+)
+
+
+def test_the_long_word_of_a_setting_given_is_not_the_switch() -> None:
+    assert parse_instruction(SOFTENER, "Start a regeneration now.") == {"regen": "on"}
+    assert "regen" not in parse_instruction(SOFTENER, "Move the regeneration time to 4 h.")
