@@ -1,5 +1,5 @@
 """Values a panel shows as three-letter codes ("SLO", "FST", "GRN", "MAN"), named by the words
-they cut short (``goal_names.display_abbreviation``); and a read belief's placeholder name,
+they cut short (``goal_shortened.display_abbreviation``); and a read belief's placeholder name,
 whose words ("read from the manual") are no words for the appliance (``belief_name.UNNAMED``)."""
 
 from __future__ import annotations
@@ -7,7 +7,7 @@ from __future__ import annotations
 from apbot.model.schema import ApplianceModel
 from apbot.read.belief_name import UNNAMED
 from apbot.read.goal import parse_instruction
-from apbot.read.goal_names import display_abbreviation
+from apbot.read.goal_shortened import display_abbreviation
 from tests.helpers import model_from
 
 # a drying cabinet whose display abbreviates: fan SLO / MED / FST, lamp WHT / GRN, AUTO / MAN

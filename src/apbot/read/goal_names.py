@@ -10,6 +10,16 @@ from typing import Any
 from apbot.read.goal_adverbs import adverb_of_no_value
 from apbot.read.goal_fit import CODE
 from apbot.read.goal_scales import at_its_limit
+from apbot.read.goal_shortened import (
+    SYNONYM_STEMS,
+    abbreviated_synonym,
+    adverb_of,
+    compound_head,
+    cut_short_word,
+    display_abbreviation,
+    panel_code,
+    raw_words,
+)
 from apbot.read.goal_text import (
     CLAUSE_ENDS,
     CONNECTORS,
@@ -34,9 +44,7 @@ from apbot.read.goal_vocab import (
     HIGHEST,
     LOWEST,
     SCALES,
-    STOP_WORDS,
     SYNONYMS,
-    cut_short,
     similar,
     stem,
 )
@@ -65,7 +73,7 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
         info = view.infos[var]
         for i in range(n):
             found = _match_at(
-                text, i, stems, _panel_code(value), view.manual_words, _raw_words(value, stems)
+                text, i, stems, panel_code(value), view.manual_words, raw_words(value, stems)
             )
             if found is None:
                 continue
@@ -242,7 +250,7 @@ def _names_setting(view: Model, var: str, text: Text, i: int) -> bool:
         if name == var or info.role != "setting" or text.stems[i] not in own_stems(info):
             continue
         values = {stem(str(v)) for v in info.values if str(v).isalpha()}
-        said = values | {s for v in values for s in _SYNONYM_STEMS.get(v, ())}
+        said = values | {s for v in values for s in SYNONYM_STEMS.get(v, ())}
         after = i + 2 if text.word(i + 1) in ("on", "at", "to") else i + 1
         after += 1 if text.word(after) in ("the", "a") else 0
         for j in (i - 1, i + 1, after):
@@ -323,15 +331,15 @@ def _match_at(
             return None  # "done shortly" is no SHT (short), "I'll stop it manually" no MAN
         if here == target:
             pass
-        elif len(stems) == 1 and _adverb_of(text, k, target, coded, known):
+        elif len(stems) == 1 and adverb_of(text, k, target, coded, known):
             quality = min(quality, 0.8)  # "seal it gently" for GENTLE, "fire slowly" for SLO
         elif text.word(k).endswith("ly") and len(text.word(k)) > 5:
             return None  # "automatically" says how, it does not name AUTO
         elif similar(here, target):
             quality = min(quality, 0.9)
-        elif here in _SYNONYM_STEMS.get(target, ()):
+        elif here in SYNONYM_STEMS.get(target, ()):
             quality = min(quality, 0.8)
-        elif len(stems) > 1 and len(target) >= 3 and _abbreviated_synonym(target, here):
+        elif len(stems) > 1 and len(target) >= 3 and abbreviated_synonym(target, here):
             quality = min(quality, 0.7)  # "steam-and-dry" for STER+DRY (sterilise: steam)
         elif (
             len(target) >= 4
@@ -342,9 +350,9 @@ def _match_at(
             quality = min(quality, 0.8)  # "storage" for STORE, "convection bake" for CONV BAKE
         elif len(stems) == 1 and len(target) >= 5 and here.endswith(target):
             quality = min(quality, 0.7)  # "multigrain" for GRAINS
-        elif words and _cut_short(words[index], target, text.word(k)):
+        elif words and cut_short_word(words[index], target, text.word(k)):
             quality = min(quality, 0.8)  # "buzzer" for BUZZ (whose stem is "buz")
-        elif len(stems) == 1 and words and _compound_head(words[0], text.word(k), known):
+        elif len(stems) == 1 and words and compound_head(words[0], text.word(k), known):
             quality = min(quality, 0.7)  # "teapot" for POT ("tea" a word of the manual)
         elif len(target) >= 3 and here == target + "er":
             quality = min(quality, 0.8)  # "the air fryer" for AIR FRY
@@ -362,108 +370,7 @@ def _match_at(
     return k, quality
 
 
-def _raw_words(value: Any, stems: tuple[str, ...]) -> tuple[str, ...]:
-    """The value's own words as the panel prints them, one per stem (or none): a stem may
-    cut the word shorter than the panel does ("buzz" stems to "buz")."""
-    words = tuple(w.casefold() for w in phrase_words(str(value)))
-    return words if len(words) == len(stems) else ()
-
-
-def _cut_short(short: str, stemmed: str, word: str) -> bool:
-    """The panel's word of at least four letters, longer than its stem, starts the user's
-    word and is most of it ("buzzer" for BUZZ): the stem alone is too short to be trusted
-    as a prefix ("buz")."""
-    return (
-        len(short) >= 4
-        and short != stemmed
-        and len(word) <= len(short) + 4
-        and cut_short(short, word)
-        and word not in LOWEST | HIGHEST
-    )
-
-
-def _compound_head(short: str, word: str, known: frozenset[str]) -> bool:
-    """The user's word is a compound ending in the value's word, its first part a word of
-    the manual of three letters or more ("teapot" for POT where the manual speaks of tea):
-    the value is the compound's head noun. A word that merely ends in the same letters
-    ("spot", "depot", "hotspot") has no such first part."""
-    rest = word[: len(word) - len(short)]
-    return (
-        len(short) >= 3
-        and short.isalpha()
-        and word.endswith(short)
-        and len(rest) >= 3
-        and rest in known
-        and rest not in STOP_WORDS
-        and rest not in NUMBER_WORDS
-    )
-
-
-def _adverb_of(text: Text, k: int, target: str, coded: bool, known: frozenset[str]) -> bool:
-    """Token k is the adverb of the value's adjective: "gently" of GENTLE (the adjective's
-    final e dropped before -ly), or "slowly" of a panel code that cuts "slow" short (SLO), a
-    word the manual uses, as for the code itself (:func:`_match_at`). An adverb whose adjective
-    is another word ("automatically") names no value, nor does one that opens a clause before a
-    comma: "Finally, …", "Normally, …" comment on the sentence, not on how the job is done."""
-    word = text.word(k)
-    if not word.endswith("ly") or len(word) <= 5:
-        return False
-    if text.word(k + 1) == "," and (k == 0 or text.word(k - 1) in (".", ";", "!", ",")):
-        return False
-    if stem(word[:-1] + "e") == target and word[-3] not in _VOWELS:
-        return True
-    adjective = word[:-2]
-    return coded and (not known or adjective in known) and display_abbreviation(target, adjective)
-
-
 _SPLIT_VERBS = frozenset({stem("keep")})
-_VOWELS = frozenset("aeiouy")
-
-
-def _panel_code(value: Any) -> bool:
-    """A value written as three letters ("SLO", "GRN"): a code that may cut a word short (not
-    a longer word whose stem has three letters: "free", "time")."""
-    return isinstance(value, str) and len(value) == 3 and value.isalpha()
-
-
-def display_abbreviation(code: str, word: str) -> bool:
-    """A three-letter panel code is ``word`` cut short: its first three letters ("SLO" for slow,
-    "MAN" for manual, of a word at most twice as long) or its consonants ("FST" for fast, "GRN"
-    for green, "WHT" for white). A time unit, a number, an ordinal or a key's verb is never
-    cut short so: "a minute" is no MIN, "midnight" no MID, "second" no SEC, "press" no PRE. Nor
-    is the code's doer ("fryer" for FRY, "the air fryer": the appliance, not its AIR FRY), which
-    :func:`_match_at` reads before as the code's word and "-er"."""
-    if len(code) != 3 or not code.isalpha() or len(word) <= 3 or word[0] != code[0]:
-        return False
-    if word == code + "er":
-        return False
-    if word in NUMBER_WORDS or word in _NOT_CUT or word in STOP_WORDS or word.endswith("ly"):
-        return False
-    if word.startswith(code):
-        return len(word) <= 2 * len(code)
-    consonants = word[0] + "".join(c for c in word[1:] if c not in _VOWELS)
-    squeezed = re.sub(r"(.)\1+", r"\1", consonants)
-    return squeezed == code
-
-
-_NOT_CUT = frozenset(
-    {"minute", "minutes", "second", "seconds", "hour", "hours", "month", "months", "week", "weeks"}
-    | {"midday", "maxi", "mini", "lower", "higher", "highest", "lowest", "topped"}
-)
-
-
-def _abbreviated_synonym(short: str, word: str) -> bool:
-    """``short`` cuts one word of a synonym group short ("ster" of sterilise) that ``word``
-    belongs to ("steam")."""
-    return any(
-        key.startswith(short) and key != short and word in others
-        for key, others in _SYNONYM_STEMS.items()
-    )
-
-
-_SYNONYM_STEMS: dict[str, frozenset[str]] = {
-    stem(word): frozenset(stem(w) for w in others) for word, others in SYNONYMS.items()
-}
 
 
 def pronoun_ones(text: Text, claimed: set[int]) -> None:
