@@ -79,3 +79,24 @@ SOFTENER = model_from(
 def test_the_long_word_of_a_setting_given_is_not_the_switch() -> None:
     assert parse_instruction(SOFTENER, "Start a regeneration now.") == {"regen": "on"}
     assert "regen" not in parse_instruction(SOFTENER, "Move the regeneration time to 4 h.")
+
+
+# a small oven whose HEAT key picks the elements; its manual speaks of the counter it stands on
+OVEN = model_from(
+    """
+    controls: [{id: heat}]
+    variables:
+      heat: {type: discrete, values: [top, bottom, both], label: HEAT}
+    actions:
+      press_heat: {control: heat}
+    features:
+      set_heat:
+        - {actions: [press_heat], variable: heat, effect: next}
+    """
+)
+OVEN_MANUAL = "Stand the oven on a flat counter. HEAT picks TOP, BOTTOM or BOTH elements."
+
+
+def test_a_compound_said_as_a_place_names_no_value() -> None:
+    """ "on the countertop" says where the oven stands, not the TOP element."""
+    assert "heat" not in parse_instruction(OVEN, "Leave it on the countertop.", OVEN_MANUAL)

@@ -153,3 +153,19 @@ def test_the_verb_of_switching_is_no_word_of_an_auto_switch_off(smoker: Applianc
         "power": "on",
         "level": "2",
     }
+
+
+@pytest.mark.parametrize(
+    "text", ["Level 2, never with the fan running.", "Level 3, not with the fan on."]
+)
+def test_a_legends_thing_with_its_state_negated_sets_no_switch(
+    smoker: ApplianceModel, text: str
+) -> None:
+    """The state said of the legend's thing is negated: the user does not ask for the fan."""
+    assert "circ" not in parse_instruction(smoker, text, SMOKER_MANUAL)
+
+
+def test_no_need_for_the_legends_thing_on_sets_no_switch(smoker: ApplianceModel) -> None:
+    assert parse_instruction(smoker, "Level 2 - no need for the fan on.", SMOKER_MANUAL) == {
+        "level": "2"
+    }

@@ -19,6 +19,7 @@ from apbot.read.goal_shortened import (
     display_abbreviation,
     panel_code,
     raw_words,
+    said_as_place,
 )
 from apbot.read.goal_text import (
     CLAUSE_ENDS,
@@ -352,7 +353,12 @@ def _match_at(
             quality = min(quality, 0.7)  # "multigrain" for GRAINS
         elif words and cut_short_word(words[index], target, text.word(k)):
             quality = min(quality, 0.8)  # "buzzer" for BUZZ (whose stem is "buz")
-        elif len(stems) == 1 and words and compound_head(words[0], text.word(k), known):
+        elif (
+            len(stems) == 1
+            and words
+            and compound_head(words[0], text.word(k), known)
+            and not said_as_place(text, k)
+        ):
             quality = min(quality, 0.7)  # "teapot" for POT ("tea" a word of the manual)
         elif len(target) >= 3 and here == target + "er":
             quality = min(quality, 0.8)  # "the air fryer" for AIR FRY

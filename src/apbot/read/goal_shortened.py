@@ -57,6 +57,20 @@ def compound_head(short: str, word: str, known: frozenset[str]) -> bool:
     )
 
 
+# prepositions saying where the appliance or a thing stands: "on the countertop", "by the door"
+_PLACED = frozenset({"on", "onto", "at", "by", "near", "beside", "under", "against", "behind"})
+_DETERMINERS = frozenset({"the", "a", "an", "your", "my", "our", "this", "that"})
+
+
+def said_as_place(text: Text, k: int) -> bool:
+    """The compound at ``k`` is where something is put ("leave it on the countertop"), not the
+    thing filled or chosen ("fill the teapot"): a compound said so names no value's head noun."""
+    j = k - 1
+    while j >= 0 and text.word(j) in _DETERMINERS:
+        j -= 1
+    return j >= 0 and text.word(j) in _PLACED
+
+
 def adverb_of(text: Text, k: int, target: str, coded: bool, known: frozenset[str]) -> bool:
     """Token k is the adverb of the value's adjective: "gently" of GENTLE (the adjective's
     final e dropped before -ly), or "slowly" of a panel code that cuts "slow" short (SLO), a

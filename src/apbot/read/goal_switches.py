@@ -8,6 +8,7 @@ from apbot.read.goal_text import (
     CLAUSE_ENDS,
     VERB_FAMILIES,
     Text,
+    negated_before,
     negative_around,
     phrase_here,
     verb_positions,
@@ -165,7 +166,10 @@ def _part_after(text: Text, k: int, vocab: dict[str, float]) -> bool:
 def _state_after(text: Text, k: int, vocab: dict[str, float]) -> bool:
     """The switch's words at ``k`` (and the ones right after it) are followed by the state
     asked for, which ends the phrase: "the recirculation pump on, …", "with the pump running."
-    ("kernels on the butter programme" is no state)."""
+    ("kernels on the butter programme" is no state); a state negated is not asked for ("never
+    with the pump running", "no need for the pump on")."""
+    if negated_before(text, k, reach=5):
+        return False
     j = k + 1
     while j < len(text.tokens) and vocab.get(text.concepts[j], 0.0) > 0:
         j += 1
