@@ -1,6 +1,7 @@
 """What a manual calls the thing a key sets: "PUMP   Changes the circulation speed" in a key
-legend, or a section titled "CIRCULATION SPEED (PUMP)". A user names the setting by that
-thing ("slow the water circulation"), not by the key's printed label."""
+legend, or a section titled "CIRCULATION SPEED (PUMP)", and the thing a legend says a switch
+turns on and off ("LIGHT   Turns the LED display on and off"). A user names the setting by that
+thing ("slow the water circulation", "the display off"), not by the key's printed label."""
 
 from __future__ import annotations
 
@@ -8,6 +9,7 @@ import itertools
 import re
 from typing import Any
 
+from apbot.model.schema import ApplianceModel
 from apbot.read.goal_vocab import STOP_WORDS, concept
 
 _VERBS = r"(?:changes?|sets?|selects?|adjusts?|chooses?|controls?|regulates?|varies)"
@@ -68,3 +70,66 @@ def _phrase(text: str) -> list[str]:
         if bare != word.casefold():
             break  # "speed:" ends the phrase
     return [w for w in words if len(w) >= 3]
+
+
+_LEGEND_VERBS = frozenset(
+    {"turns", "turn", "switches", "switch", "sets", "set", "selects", "select", "press", "presses"}
+    | {"changes", "change", "shows", "show", "starts", "start", "stops", "stop", "each", "when"}
+    | {"with", "from", "into", "this", "that", "then", "also", "only", "between", "unit's"}
+)
+
+
+def legend_words(
+    model: ApplianceModel, manual: str, labels: dict[str, list[str]]
+) -> dict[str, set[str]]:
+    """The thing a manual's key legend says a switch turns on and off: "LIGHT   Turns the
+    indoor unit's LED display on and off." — the LIGHT switch is the *display*. ``labels``:
+    setting -> its keys' labels. Only legend lines count (a key's label opening a line, then
+    its description), and only the word right before "on and off"."""
+    out: dict[str, set[str]] = {}
+    if not manual:
+        return out
+    raw = manual.splitlines()
+    lines = [LEGEND_MARK.sub("", line.strip().strip("|*-• ")).strip() for line in raw]
+    for name, keys in labels.items():
+        for label in keys:
+            if len(label) < 3 or not label.isupper():
+                continue
+            pattern = re.compile(rf"^{re.escape(label)}(?:\s{{2,}}|\s*[:|–—]\s*)(.+)$")
+            for index, line in enumerate(lines):
+                found = pattern.match(line)
+                if found is None:
+                    continue
+                sentences = re.split(r"[.;(]", _continued(found[1], raw, index))
+                held = [x for x in sentences[1:] if re.search(r"\b(?:hold|held)\b", x, re.I)]
+                for sentence in sentences[:1] + held:  # a later one: the key's hold
+                    thing = re.search(r"([A-Za-z]{4,})\s+on\s*(?:and|or|/)\s*off\b", sentence)
+                    if thing is not None and thing[1].casefold() not in _LEGEND_VERBS:
+                        out.setdefault(name, set()).add(thing[1].casefold())
+                out.setdefault(name, set()).update(_described(sentences[0]))
+    return out
+
+
+def _described(sentence: str) -> set[str]:
+    """The nouns of a legend that only names what the switch is ("ADD-IN | Beep for adding fruit
+    and nuts"): no verb opens it, so its words are the thing switched ("no fruit-and-nut
+    beep"). A legend that says what the key does ("Turns the lamp on") gives none here."""
+    found = re.findall(r"[A-Za-z]+", sentence)
+    if not found or found[0].casefold() in _LEGEND_VERBS or found[0].casefold().endswith("s"):
+        return set()
+    return {
+        w.casefold()
+        for w in found
+        if len(w) >= 4 and w.casefold() not in _LEGEND_VERBS and not w.casefold().endswith("ing")
+    }
+
+
+def _continued(text: str, raw: list[str], index: int) -> str:
+    """A legend's description with its indented continuation lines ("COOK TIME  Sets the time.
+    Press and hold for / (indented) 3 seconds to switch the sound on or off"): a key's second
+    use, a hold, is often said in the legend's next sentence."""
+    for line in raw[index + 1 : index + 4]:
+        if not line.strip() or not line.startswith("  "):
+            break
+        text += " " + line.strip()
+    return text

@@ -24,8 +24,8 @@ from apbot.model.schema import (
 from apbot.read.belief_name import UNNAMED
 from apbot.read.goal_aliases import bracket_aliases
 from apbot.read.goal_daytimes import day_dial, switch_time, whole_day
-from apbot.read.goal_legends import add_setting_words
-from apbot.read.goal_manual import coded_names, legend_words, title_nouns
+from apbot.read.goal_legends import add_setting_words, legend_words
+from apbot.read.goal_manual import coded_names, title_nouns
 from apbot.read.goal_roles import (
     START_LABELS,
     control_labels,
