@@ -11,6 +11,7 @@ from apbot.read.actions import ActionInfo
 from apbot.read.evidence_owners import OwnWords
 from apbot.read.labels import Label, words
 from apbot.read.list_lines import wrapped_list
+from apbot.read.number_runs import find_number_run
 from apbot.read.quantity_units import QUANTITY_FAMILIES, _quantity_units
 from apbot.read.shapes import (
     DOWN_WORDS,
@@ -34,7 +35,6 @@ from apbot.read.value_lists import (
     caps_run,
     cell_list,
     find_list,
-    find_number_run,
     quantity_run,
 )
 from apbot.read.values import number
