@@ -85,9 +85,12 @@ def cut_short(short: str, word: str) -> bool:
     letters or more, and either most of the word ("TABS" for tablets, "BUZZ" for buzzer) or
     cut where a syllable ends, on a consonant before a vowel ("OSC" for oscillation, "REGEN"
     for regeneration): "temptation" is no TEMP, "settings" no SET (a short word that merely
-    starts alike, "temple", is still taken: most of it is the name)."""
+    starts alike, "temple", is still taken: most of it is the name; but not an adjective's
+    ending after three letters: "fancy" is no FAN, "ionic" no ION)."""
     if len(short) < 3 or len(word) <= len(short) or not word.startswith(short):
         return False
+    if len(short) == 3 and len(word) <= 5 and word.endswith(("y", "ic")):
+        return False  # an adjective of its own after a three-letter name: "fancy", "ionic"
     if len(word) <= len(short) + 4:
         return True
     return short[-1] not in _VOWELS and word[len(short)] in _VOWELS
