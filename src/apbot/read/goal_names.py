@@ -19,6 +19,7 @@ from apbot.read.goal_shortened import (
     display_abbreviation,
     panel_code,
     raw_words,
+    said_as_past_place,
     said_as_place,
 )
 from apbot.read.goal_text import (
@@ -83,6 +84,8 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
                 continue
             if text.word(i) in ("up", "down") and text.word(i - 1) in _PARTICLE_VERBS:
                 continue  # "set up the buttonhole", "warm up": a verb's particle, not UP
+            if said_as_past_place(text, i):
+                continue  # "the bowl was in the freezer": where it stood, not the FREEZE mode
             if text.word(i - 1) in ("stay", "stays", "remain", "remains"):
                 continue  # "so the bottles stay dry": a state of the load, not the DRY cycle
             if quality < 1.0 and text.stems[end - 1] in itself and i not in verbs:

@@ -71,6 +71,20 @@ def said_as_place(text: Text, k: int) -> bool:
     return j >= 0 and text.word(j) in _PLACED
 
 
+# "was in the freezer", "had been inside the oven": where a thing stood before, a remark
+_PAST = frozenset({"was", "were", "been"})
+_INSIDE = frozenset({"in", "inside"})
+
+
+def said_as_past_place(text: Text, k: int) -> bool:
+    """The word at ``k`` says where something was ("the bowl was in the freezer"): a past-tense
+    remark on the load names no value (FREEZE), unlike a request ("put it on freeze")."""
+    j = k - 1
+    while j >= 0 and text.word(j) in _DETERMINERS:
+        j -= 1
+    return j >= 1 and text.word(j) in _INSIDE and text.word(j - 1) in _PAST
+
+
 def adverb_of(text: Text, k: int, target: str, coded: bool, known: frozenset[str]) -> bool:
     """Token k is the adverb of the value's adjective: "gently" of GENTLE (the adjective's
     final e dropped before -ly), or "slowly" of a panel code that cuts "slow" short (SLO), a
