@@ -67,9 +67,14 @@ def read_code_amounts(b: Builder) -> None:
         )  # fmt: skip
 
 
+def _printed(code: str) -> str:
+    """A pattern for a code as a manual prints it, the space between letters and number optional."""
+    return r"\b" + re.escape(code).replace(r"\ ", r"\s?") + r"\b"
+
+
 def _printed_unit(lines: list[str], first: str, unit: str) -> tuple[str, int, str] | None:
     """The unit a code prints itself ("W 1d"), the first line printing the code, its letters."""
-    pattern = re.compile(r"\b" + re.escape(first).replace(r"\ ", r"\s?") + r"\b", re.IGNORECASE)
+    pattern = re.compile(_printed(first), re.IGNORECASE)
     letters = len(first.split(" ")[0].rstrip("0123456789dh"))
     for i, line in enumerate(lines):
         m = pattern.search(line)
@@ -84,11 +89,7 @@ def _legend_unit(
     """The unit a legend line counts after printing the first and the last code ("b30 … b120
     ....... boost minutes remaining", "t8, t15, t30 (minutes)"), the line's index and the
     codes' letters as printed."""
-
-    def printed(code: str) -> str:
-        return r"\b" + re.escape(code).replace(r"\ ", r"\s?") + r"\b"
-
-    pattern = re.compile(printed(first) + r".{0,12}?" + printed(last), re.IGNORECASE)
+    pattern = re.compile(_printed(first) + r".{0,12}?" + _printed(last), re.IGNORECASE)
     letters = len(first.split(" ")[0].rstrip("0123456789"))
     for i, line in enumerate(lines):
         m = pattern.search(line)
