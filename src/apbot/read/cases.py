@@ -130,7 +130,7 @@ def apply_cases(b: Builder) -> None:
                     if guessed and len(cases) >= 2:
                         as_choices(spec, cases)
                         b.unread.discard(name)
-                elif sorted(spec.get("values", [])) == ["off", "on"]:
+                elif _switch(spec):
                     cases = _cases(spec, _marks_told(b, rows, column), column, pvalues)
                 else:
                     cases = _cases(spec, rows, column, pvalues)
