@@ -130,3 +130,53 @@ def test_a_hold_named_by_the_thing_its_legend_switches() -> None:
     assert model.features["cup_sensor"][0].actions == ["hold_sensor"]
     assert model.features["auto_switch_off"][0].actions == ["hold_auto_off"]
     assert not {"spin_hold", "sensor_hold", "auto_off_hold"} & set(model.variables)
+
+
+# a hair clipper: one key, a job per way of touching, the held job switching a "speed" mode
+CLIPPER = """
+TrimLine C-5 hair clipper
+
+KEYS
+  ⏻          Switch on / off.
+  GUARD      Press: next guard length. Hold 2 seconds: turbo speed on / off.
+
+GUARD steps 3 mm → 6 mm → 9 mm → 12 mm → 3 mm.
+"""
+
+
+def test_a_held_job_said_as_on_off_is_a_toggle_though_its_noun_names_an_amount() -> None:
+    model = read_manual(CLIPPER, ["press_power", "press_guard", "hold_guard"]).model
+    turbo = model.variables["turbo_speed"]
+    assert list(turbo.values) == ["off", "on"]  # type: ignore[union-attr]
+    assert any(
+        s.variable == "turbo_speed" and s.effect == "toggle" and s.actions == ["hold_guard"]
+        for steps in model.features.values()
+        for s in steps
+    )
+
+
+# a radiator: the touch switches the weekly timer on and off, the hold sets its time
+RADIATOR = """
+WarmWall R-9 radiator
+
+Touch keys
+  (1) ⏻       touch: on / off (standby)
+  (2) ▲       warmer
+  (3) ▼       cooler
+  (4) CLOCK   touch: weekly heating timer on / off
+              hold 3 s: set the start of the heating time
+
+The heating time starts between 0:00 and 23:30, in half-hour steps.
+"""
+
+
+def test_a_touch_said_as_on_off_beside_a_hold_is_a_toggle_though_it_names_a_timer() -> None:
+    actions = ["press_power", "press_up", "press_down", "press_clock", "hold_clock"]
+    model = read_manual(RADIATOR, actions).model
+    timer = model.variables["weekly_heating_timer"]
+    assert list(timer.values) == ["off", "on"]  # type: ignore[union-attr]
+    assert any(
+        s.variable == "weekly_heating_timer" and s.actions == ["press_clock"]
+        for steps in model.features.values()
+        for s in steps
+    )

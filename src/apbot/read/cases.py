@@ -26,7 +26,7 @@ from apbot.read.cases_cells import (
 )
 from apbot.read.cases_lists import as_choices, listed_cases, listed_column
 from apbot.read.cases_marks import _mark, mark_cases
-from apbot.read.cases_tables import _parent_values, _tables, unnumbered
+from apbot.read.cases_tables import _parent_values, _tables, advice_table, unnumbered
 from apbot.read.goal_vocab import stem
 from apbot.read.labels import words
 from apbot.read.marks_legend import chart_legend, read_mark
@@ -65,7 +65,7 @@ def apply_cases(b: Builder) -> None:
     children: set[str] = set()
     keys = {lab.text.strip(" .").upper() for lab in b.labels.values() if lab.text}
     for header, table in _tables(b.manual.units):
-        if len(table) < 2:
+        if len(table) < 2 or advice_table(b.manual.units, table):
             continue
         header, rows = unnumbered(header, table)
         guessed_only = False  # only keys read with no values take a column-per-key chart's

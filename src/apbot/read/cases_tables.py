@@ -68,3 +68,28 @@ def _parent_values(cell: str, values: list[str]) -> list[str]:
     if exact in values and exact not in found:
         found = [exact]
     return found
+
+
+# a note that the whole table is advice: "These are suggestions only; the console does not set
+# them for you.", "The following values are recommendations.", "The guide is a recommendation"
+# (not a column's: "The suggested temperatures are only suggestions" leaves the rest of the table)
+_ADVICE_NOTE_RE = re.compile(
+    r"^\W*(?:the\s+(?:guide|table|chart|following\s+values|values"
+    r"(?:\s+(?:in|of)\s+(?:this|the)\s+(?:table|chart|guide))?)|these(?:\s+values|\s+settings)?)"
+    r"\s+(?:are|is)\s+(?:only\s+)?(?:a\s+)?(?:suggestions?|recommendations?|guidance)\b",
+    re.IGNORECASE,
+)
+
+
+def advice_table(units: list[Unit], rows: list[Unit]) -> bool:
+    """Whether the manual says, just before or after the table (in its section), that its values
+    are only advice: a guide to choosing settings (knife → angle, pool → cycle), whose rows are
+    then no programmes each setting depends on, however its first column happens to read."""
+    ids = {id(u) for u in rows}
+    at = [i for i, u in enumerate(units) if id(u) in ids]
+    if not at:
+        return False
+    near = [*range(max(0, at[0] - 2), at[0]), *range(at[-1] + 1, min(at[-1] + 5, len(units)))]
+    return any(  # (a footnote or two may come between: "* A very dull knife: …")
+        _ADVICE_NOTE_RE.match(units[i].text) and units[i].heading == rows[0].heading for i in near
+    )

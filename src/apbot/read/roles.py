@@ -34,7 +34,13 @@ from apbot.read.roles_fasthold import fold_fast_holds
 from apbot.read.roles_fixed import assign_locks, assign_power, assign_running, standby_only
 from apbot.read.roles_functions import assign_functions, function_keys
 from apbot.read.roles_heldvalues import others_list
-from apbot.read.roles_holdcell import HELD_SECONDS, HOLD_CELL, held_toggle, held_values
+from apbot.read.roles_holdcell import (
+    HELD_SECONDS,
+    HOLD_CELL,
+    held_toggle,
+    held_values,
+    way_switched,
+)
 from apbot.read.roles_hourmin import assign_hour_minute, hour_minute_keys
 from apbot.read.roles_keyed import assign_keyed_amounts
 from apbot.read.roles_lists import (
@@ -220,7 +226,10 @@ def assign(b: Builder) -> None:
             ev.toggle_at = options[key.token]
         if own_toggle and switched_time(b, key, shared_pair):
             continue  # "TIMER switches the ready-time on or off", then ▲ / ▼ move it
-        if own_toggle and not set(words(name)) & NUMERIC_WORDS:
+        way = way_switched(b, key) if own_toggle and set(words(name)) & NUMERIC_WORDS else ""
+        if way:  # "touch: daily drying timer on / off  hold 3 s: set the time": a way's own
+            name, lab = "_".join(words(way)), way.upper()  # (not the key's name: its setting's)
+        if own_toggle and (way or not set(words(name)) & NUMERIC_WORDS):
             var = b.add_toggle(name, lab, ev.toggle_at)  # "press KEEP WARM to switch it on or off"
             b.feature(var, [{"actions": [key.name], "variable": var, "effect": "toggle"}])
         elif (

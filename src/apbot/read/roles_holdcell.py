@@ -143,6 +143,38 @@ def held_toggle(b: Builder, key: ActionInfo) -> str:
     return ""
 
 
+# the part of a legend kept for a short touch: "touch: daily drying timer on / off"
+_TOUCHED = re.compile(
+    rf"(?:^|[\s.;])(?:short\s+|brief\s+)?(?:touch|press|tap|push)(?:\s+briefly)?\s*:\s*"
+    rf"{NOUN_ON_OFF}(?:mode\s+)?{ON_OR_OFF}\b",
+    re.IGNORECASE,
+)
+_HOLD_PART = re.compile(rf"\bhold\b[^.;:]{{0,20}}:|^\W*{HELD_SECONDS}\s*:", re.IGNORECASE)
+
+
+def way_switched(b: Builder, key: ActionInfo) -> str:
+    """What this way of touching the key switches on and off, when the key's own legend gives a
+    use per way ("TIMER  touch: daily drying timer on / off  hold 3 s: set the drying time",
+    "STAGE  Press: next stage. Hold 2 seconds: slow speed on / off"): the noun; else "".
+
+    Said so, the on/off is the job of that way of touching even when its noun names an amount
+    (a timer, a speed): the amount itself is what the other way sets, or the noun is a mode
+    ("slow speed"), not a value to step."""
+    if key.skill == "hold":
+        return held_toggle(b, key)
+    if key.skill != "press":
+        return ""
+    units = b.manual.units
+    for i in _own_rows(b, key):
+        held = hold_cells(units[i]) if units[i].cells else []
+        if not held and not _HOLD_PART.search(units[i].text):
+            continue  # no use kept for holding: the legend gives no way of touching its own
+        m = _TOUCHED.search(units[i].text)
+        if m and not lock_or_appliance(m.group("noun")) and names_a_setting(m.group("noun")):
+            return m.group("noun").strip(" -").lower()
+    return ""
+
+
 def _after_label(b: Builder, key: ActionInfo, text: str) -> str:
     """A legend line less the key's printed name that leads it ("AUGER  hold 3 seconds: …")."""
     label = b.labels[key.controls[0]].text
