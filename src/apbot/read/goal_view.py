@@ -254,7 +254,6 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
                 infos[name].vocab[key] = 0.5  # a word only this key's legend in the manual has
     add_setting_words(infos, manual, set_keys)
     named: dict[str, list[tuple[Any, str]]] = {}
-    told: dict[str, list[tuple[Any, list[str]]]] = {}
     for coded, value, label in coded_names(model, manual):
         if parse_quantity(label) is not None:
             named.setdefault(coded, []).append((value, label))
@@ -262,10 +261,6 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         names = [w for w in phrase_words(label) if w != "and"]
         if names and not all(w in STOP_WORDS for w in names):
             phrases.append((coded, value, tuple(stem(w) for w in names), 0.95))
-            told.setdefault(coded, []).append((value, names))
-    phrases += [
-        p for coded, said in told.items() if _parallel(said) for p in distinct_words(coded, said)
-    ]
     settings = tuple(f"{n} {i.var.label}".replace("_", " ") for n, i in infos.items())
     aliases = bracket_aliases(_forms(infos), manual, settings)
     phrases += [(n, v, stems, 0.9) for n, v, stems in aliases]
@@ -318,29 +313,10 @@ sleep programme" for AUTO SLEEP); such a match needs the setting's own word besi
 def _first_words(name: str, info: VarInfo) -> list[tuple[str, Any, tuple[str, ...], float]]:
     """Each word of a many-word value that no other value of the setting uses: people name a
     programme by its distinctive word, first or not (AUTO SLEEP, AUTO RELAX: "sleep", "relax")."""
-    return distinct_words(name, [(v, phrase_words(str(v))) for v in info.values])
-
-
-def _parallel(said: list[tuple[Any, list[str]]]) -> bool:
-    """Names built alike, two or more of several words sharing one ("Cross-cut head",
-    "Micro-cut head"): each is told from the others by its own word. A lone description
-    ("Zone on standby") is not."""
-    stems = [{stem(w) for w in words} for _, words in said]
-    if len(stems) < 2 or any(len(s) < 2 for s in stems):
-        return False
-    return bool(set.intersection(*stems))
-
-
-def distinct_words(
-    name: str, said: list[tuple[Any, list[str]]]
-) -> list[tuple[str, Any, tuple[str, ...], float]]:
-    """(setting, value, (word,), PARTIAL) for each word of a many-word name (value, its words)
-    that no other name uses — a value's own, or one the manual gives a coded value: "micro-cut"
-    for P-5, which the manual calls the "Micro-cut head" beside a "Cross-cut head"."""
     firsts: dict[str, list[Any]] = {}
     used: dict[str, int] = {}
-    for value, said_words in said:
-        words = [stem(w) for w in said_words]
+    for value in info.values:
+        words = [stem(w) for w in phrase_words(str(value))]
         for word in words:
             used[word] = used.get(word, 0) + 1
         for word in words if len(words) > 1 else []:
@@ -405,18 +381,10 @@ def _phrases(
         info = infos[step.variable]
         if info.role in ("power", "running"):
             continue
-        stepping = {
-            label
-            for action, effect in step_effects(step)
-            if not isinstance(effect, GoTo)
-            for label in control_labels(model, [action])
-        }
         for action, effect in step_effects(step):
             if not isinstance(effect, GoTo):
                 continue
             for label in control_labels(model, [action]):
-                if label in stepping:
-                    continue  # PRESSURE steps the level, held goes to 1: the setting's name
                 words = name_words(label)
                 if words and not any(w in STOP_WORDS for w in words):
                     phrases.append((step.variable, effect.to, tuple(stem(w) for w in words), 0.95))
