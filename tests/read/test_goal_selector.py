@@ -115,3 +115,7 @@ def test_a_switch_word_in_another_settings_name_is_no_switch() -> None:
         "buzzer": "off",
     }
     assert _garden("Glow on for 5 minutes.") == {"glow": "on", "glow_time": "5 min"}
+    assert _garden("Switch on glow mode for 3 minutes.") == {
+        "glow": "on",
+        "glow_time": "3 min",
+    }

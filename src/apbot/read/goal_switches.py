@@ -238,6 +238,7 @@ def _in_anothers_name(
             continue  # "daily drying at 7 pm": the switch's own name said whole
         head = text.word(k + 1)  # the noun the switch's word qualifies: "light timer"
         compound = head.isalpha() and head not in STOP_WORDS | CLAUSE_ENDS
+        compound = compound and text.stems[k + 1] not in _MODE_NOUNS  # "night mode": the switch
         named = other.vocab.get(text.concepts[k], 0.0) > 0
         if compound and named and at is not None and k < at <= k + 5:
             return True
