@@ -57,6 +57,7 @@ from apbot.read.goal_periods import distinct, in_weeks
 from apbot.read.goal_quantity_values import quantity_values
 from apbot.read.goal_remarks import without_remarks
 from apbot.read.goal_scales import superlatives
+from apbot.read.goal_selector import on_auto_off
 from apbot.read.goal_spans import time_spans
 from apbot.read.goal_spelling import joined_compounds
 from apbot.read.goal_start import power_and_running
@@ -148,6 +149,7 @@ def parse_instruction(
     entry_modes(view, goal)
     boil(view, text, goal)
     power_and_running(view, text, goal, counting)
+    on_auto_off(view, text, goal)
     opened = (
         {}
         if outside is None

@@ -17,6 +17,7 @@ from apbot.read.goal_values import (
     OFF_WORDS,
     ON_WORDS,
     generic,
+    kind_noun,
     name_words,
 )
 from apbot.read.goal_view import (
@@ -75,6 +76,8 @@ def switches(
                 continue  # "eco" names the ECO switch, not HOLIDAY that wears ECO's label
             if _part_after(text, k, info.vocab):
                 continue  # "clean the ventilation slots": a part of the body, not the switch
+            if _in_anothers_name(view, goal, info, text, k, where):
+                continue  # "the light timer to 3.5 minutes": LIGHT TIME's word, no LIGHT switch
             if shadowed and (text.stems[k] in own or key in own_concepts(info)):
                 continue
             locks = key == concept("lock") or concept("lock") in own_concepts(info)
@@ -208,6 +211,38 @@ def _anothers_name(view: Model, goal: Goal, info: VarInfo, word: str) -> bool:
         and word in {stem(w) for w in name_words(other.name)}
         for name, other in view.infos.items()
     )
+
+
+def _in_anothers_name(
+    view: Model, goal: Goal, info: VarInfo, text: Text, k: int, where: dict[str, int] | None
+) -> bool:
+    """The switch's word at ``k`` is said in the name of another setting the goal gives a
+    value: beside a word of that setting's own that is none of the switch's ("the bin alarm
+    at 100 %"), or as that setting's word right before its value, no state said ("the light
+    timer to 3.5 minutes", "light timeout 1.5 min"): that setting's name, not the switch."""
+    if text.word(k + 1) in ON_WORDS + OFF_WORDS:
+        return False  # "the light on for 2 minutes": the switch, its state said
+    for name, other in view.infos.items():
+        if other is info or name not in goal or other.role != "setting":
+            continue
+        for j in (k - 1, k + 1):
+            if not 0 <= j < len(text.tokens) or text.word(j) in STOP_WORDS:
+                continue
+            key = text.concepts[j]
+            if generic(key) or kind_noun(key) or info.vocab.get(key, 0.0) > 0:
+                continue  # "night mode", "eco mode": a kind of setting, said of the switch
+            if text.stems[j] in own_stems(other):
+                return True
+        at = (where or {}).get(name)
+        if info.vocab.get(text.concepts[k + 1] if k + 1 < len(text.tokens) else "", 0.0) > 0:
+            continue  # "daily drying at 7 pm": the switch's own name said whole
+        head = text.word(k + 1)  # the noun the switch's word qualifies: "light timer"
+        compound = head.isalpha() and head not in STOP_WORDS | CLAUSE_ENDS
+        compound = compound and text.stems[k + 1] not in _MODE_NOUNS  # "night mode": the switch
+        named = other.vocab.get(text.concepts[k], 0.0) > 0
+        if compound and named and at is not None and k < at <= k + 5:
+            return True
+    return False
 
 
 def _names_a_setting(view: Model, goal: Goal, word: str) -> bool:
