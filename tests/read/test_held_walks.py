@@ -352,3 +352,6 @@ def test_a_menu_walk_may_be_set_with_the_knob() -> None:
     assert foam == "foam_level"
     assert [tuple(r) for r in model.variables[foam].ranges or []] == [(1, 5, 1)]
     assert walk[3].variable == "whisk_speed"
+    # each labelled by the letters of the display's example ("e.g. FL 3", "e.g. SP 2")
+    assert model.variables[foam].label == "FL"
+    assert model.variables["whisk_speed"].label == "SP"

@@ -148,7 +148,8 @@ def _walk(
             field = like(fields[-1], field_name(opened, beside=True))
         if field is None or any(f["name"] == field["name"] for f in fields):
             break
-        field.update(label=field_label(opened, label), optional=bool(_SKIP_RE.search(text)))
+        shown = field_label(opened, label, example="values" not in field)
+        field.update(label=shown, optional=bool(_SKIP_RE.search(text)))
         pair = own
         fields.append(field)
     if len(fields) < 2 or pair is None:

@@ -53,6 +53,8 @@ _SHOWS_CODE_RE = re.compile(
     r"\bshows\s+(?:([A-Za-z]{1,4})\s+\d|([A-Z][A-Z0-9]{0,5})\s+and\s+the\b"
     r"|([A-Z][A-Z0-9]{1,5})\s+(?:on|off)\b)"
 )
+# the display's example of a field: "e.g. t30 s", "for example PS 6"
+_EXAMPLE_RE = re.compile(r"\b(?:e\.g\.|for example)\s+([A-Za-z]{1,5})\s?\d")
 # a field set as the one before it: "Set the end hour with ► / ◄ in the same way."
 SAME_WAY_RE = re.compile(r"\b(?:(?:in\s+)?the\s+same\s+way|likewise|as\s+before)\b", re.I)
 # a switch the pair turns on and off: "Press ▲ to switch the key beep on, ▼ to switch it off"
@@ -88,10 +90,14 @@ def field_name(shown: str, beside: bool = False) -> str:
     )
 
 
-def field_label(shown: str, fallback: str) -> str:
-    """The word the display shows for the field ("BIN", "AO"), else the walk key's label."""
+def field_label(shown: str, fallback: str, example: bool = False) -> str:
+    """The word the display shows for the field ("BIN", "AO"), else (``example``) the letters
+    before the number of the display's example ("e.g. t30 s", "e.g. PS 6"), else the walk key's
+    label."""
     after = after_key(shown)
     m = _APPEARS_RE.match(after) or _BESIDE_RE.match(after) or _SHOWS_CODE_RE.search(after)
+    if not m and example:
+        m = _EXAMPLE_RE.search(after)
     if not m:
         return fallback
     return next(g for g in m.groups() if g).strip()
