@@ -355,3 +355,30 @@ def test_a_menu_walk_may_be_set_with_the_knob() -> None:
     # each labelled by the letters of the display's example ("e.g. FL 3", "e.g. SP 2")
     assert model.variables[foam].label == "FL"
     assert model.variables["whisk_speed"].label == "SP"
+
+
+# a room thermostat (our own words): ▲ / ▼ set the temperature (no range given) and also the
+# items of the menu SET opens; the temperature is theirs, not a guess the menu replaces
+THERMOSTAT = """CALORA RT-1 room thermostat
+
+  ▲ / ▼    raise or lower the room temperature
+  SET      hold 3 s: installer menu
+
+INSTALLER MENU
+  1. Hold SET for 3 seconds. The display shows the switching gap, e.g. SG 0.5.
+  2. Press ▲ or ▼ to choose the gap: 0.2, 0.5 or 1.0 °C.
+  3. Press SET briefly. The display shows the frost guard, e.g. FG 5.
+  4. Press ▲ or ▼ to choose 5, 7 or 10 °C.
+  5. Wait 5 seconds. The menu closes.
+"""
+THERMOSTAT_ACTIONS = ["press_up", "press_down", "hold_set", "press_set", "wait_5s"]
+
+
+def test_the_pair_s_own_setting_named_outside_the_walk_stays() -> None:
+    model = read_manual(THERMOSTAT, THERMOSTAT_ACTIONS).model
+    walk = next(s for s in model.features.values() if s[0].actions == ["hold_set"])
+    assert [walk[k].variable for k in (1, 3)] == ["switching_gap", "frost_guard"]
+    own = [
+        s[0].variable for s in model.features.values() if s[0].actions == ["press_up", "press_down"]
+    ]
+    assert own and "temperature" in str(own[0])

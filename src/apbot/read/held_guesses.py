@@ -7,6 +7,8 @@ Once the walk is read, those guesses are its job, and are dropped.
 
 from __future__ import annotations
 
+import re
+
 from apbot.read.build import PLACEHOLDERS, Builder
 
 
@@ -35,16 +37,24 @@ def drop_guess(b: Builder, hold: str) -> str:
     return prefix
 
 
-def drop_key_guesses(b: Builder, keys: set[str | None]) -> None:
+def drop_key_guesses(b: Builder, keys: set[str], said: str) -> None:
     """Drop what the walk's keys alone were guessed to set — a range the manual never gave, or
-    placeholder choices ("▲ and ▼ have no function outside the menu"): the walk is their job."""
+    placeholder choices ("▲ and ▼ have no function outside the menu"): the walk is their job.
+    Only a setting named for one of those keys or by words of the walk's own steps (``said``:
+    "Press ▲ for a longer time" gave ▲ / ▼ a "time"); a setting of their own named elsewhere
+    (a temperature whose range the manual leaves out) stays."""
     placeholders = {n.subject.split(".")[1] for n in b.notes if n.what == PLACEHOLDERS}
+    tokens = {c for i in b.infos if i.name in keys for c in i.controls}
+    named = {w.lower() for w in re.findall(r"[A-Za-z]+", said)} | {
+        w for t in tokens for w in t.split("_")
+    }
     for fname, steps in list(b.features.items()):
         names = [s.get("variable") for s in steps if s.get("variable")]
         if (
             names
             and all(set(s.get("actions", [])) <= keys for s in steps)
             and all(v in b.unread or v in placeholders for v in names)
+            and all(set(str(v).split("_")) <= named for v in names)
         ):
             del b.features[fname]
             for var in names:

@@ -156,7 +156,8 @@ def _walk(
         return None
     if len(fields) < len(segments):
         end = ""  # (the walk read stops before its end: no pause read after it)
-    return {"pair": pair, "fields": fields, "at": at, "timeout": _timeout(b, end, at)}
+    said = " ".join(t for _, t in segments)
+    return {"pair": pair, "fields": fields, "at": at, "timeout": _timeout(b, end, at), "said": said}
 
 
 def _segments(
@@ -223,7 +224,15 @@ def _one_walk(
     field.update(name=name, label=field_label(opened, label))
     stored = _STORED_RE.search(rest[0]) if rest else None
     timeout = float(stored.group(1) or 5) if stored else None
-    return {"pair": pair, "fields": [field], "at": at, "timeout": timeout, "own": bool(own)}
+    said = " ".join(g[1] for g in groups[:2])
+    return {
+        "pair": pair,
+        "fields": [field],
+        "at": at,
+        "timeout": timeout,
+        "own": bool(own),
+        "said": said,
+    }
 
 
 def _moves_on(text: str, label: str) -> bool:
@@ -340,7 +349,7 @@ def _apply(b: Builder, hold: str, press: str | None, walk: dict[str, Any]) -> No
     if walk["timeout"] is not None:  # the walk ends by itself once no key is touched
         for step in steps:
             step["timeout"] = walk["timeout"]
-    drop_key_guesses(b, {press, *up, *down} - {None})
+    drop_key_guesses(b, {a for a in (press, *up, *down) if a}, walk["said"])
     feature = f"set_{names[0]}"
     b.feature(feature, steps)
     said = f"{hold} opens {names[0]}" + (f", {press} moves to {names[1]}" if names[1:] else "")
