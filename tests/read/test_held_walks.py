@@ -271,3 +271,114 @@ def test_a_second_field_set_in_the_same_way_takes_the_first_fields_kind() -> Non
     for var in (start, end):
         assert model.variables[var].type == "time"
         assert next(tuple(r) for r in model.variables[var].ranges or [])[1:] == ("23:00:00", 3600)
+
+
+# a fan heater's service menu (our own words): three settings walked by MODE, each read in
+# another shape — uneven stops with the unit after the last, codes the manual glosses with
+# words, a switch the pair turns on and off — the first one skippable, the pause in a note
+HEATER = """THERMA FH-7 fan heater
+
+KEYS
+  MODE      Next heating mode: ECO, COMFORT, BOOST.
+  UP        Menu: next value.
+  DOWN      Menu: previous value.
+
+  Overheat guard    g1 low (40 °C) – g2 normal (50 °C) – g3 high (60 °C)
+
+SERVICE MENU
+
+  1. Press and hold MODE for 3 seconds. The display shows the fan run-on, e.g. Ro 30 s.
+  2. Press UP or DOWN to change the run-on: 10, 20, 30, 60 or 120 seconds. To keep it,
+     go straight to step 3.
+  3. Press MODE briefly. The display shows the overheat guard, e.g. g2.
+  4. Press UP for a higher guard, DOWN for a lower one (g1, g2, g3; stops at both ends).
+  5. Press MODE briefly. The display shows TONE on or TONE off.
+  6. Press UP to switch the key tone on, DOWN to switch it off.
+
+  Notes
+  If you touch no key for 6 seconds, the menu closes and the settings are stored.
+"""
+HEATER_ACTIONS = ["press_mode", "hold_mode", "press_up", "press_down", "wait_6s"]
+
+
+def test_held_key_walks_three_settings_of_several_kinds() -> None:
+    model = read_manual(HEATER, HEATER_ACTIONS).model
+    walk = next(s for s in model.features.values() if s[0].actions == ["hold_mode"])
+    assert [s.actions[0] for s in walk] == [
+        "hold_mode",
+        "press_up",
+        "press_mode",
+        "press_up",
+        "press_mode",
+        "press_up",
+    ]
+    run_on, guard, tone = (walk[k].variable for k in (1, 3, 5))
+    assert run_on and guard and tone
+    assert walk[1].optional and not walk[3].optional
+    assert all(s.timeout == 6 for s in walk)
+    stops = [(r[0], r[1]) for r in model.variables[run_on].ranges or []]
+    assert stops[0][0] == "00:00:10" and stops[-1][1] == "00:02:00" and len(stops) == 3
+    assert model.variables[guard].values == ["low", "normal", "high"]
+    assert model.variables[guard].show == {"low": "g1", "normal": "g2", "high": "g3"}
+    assert model.variables[guard].wrap is False
+    assert model.variables[tone].values == ["off", "on"]
+    assert model.variables[tone].label == "TONE"
+
+
+# a milk frother (our own words): the menu's items set with the knob, one a range of bare levels
+FROTHER = """LATTA MF-2 milk frother
+
+  ⏻        switches the frother on and off
+  Knob     turn: the milk temperature; in the menu, the value shown
+  MENU     hold 3 s: settings menu; press inside the menu: next item
+
+  The milk temperature is set from 40 to 70 °C in steps of 5 °C.
+
+SETTINGS MENU
+  1. Press and hold MENU for 3 seconds. The display shows the foam level, e.g. FL 3.
+  2. Turn the knob to choose the foam level (1 to 5).
+  3. Press MENU briefly. The display shows the whisk speed, e.g. SP 2.
+  4. Turn the knob to choose the speed: 1, 2 or 3 (it stops at 1 and at 3).
+  5. Wait 8 seconds. The menu closes.
+"""
+FROTHER_ACTIONS = ["press_power", "turn_knob_cw", "turn_knob_ccw", "hold_menu", "press_menu"]
+
+
+def test_a_menu_walk_may_be_set_with_the_knob() -> None:
+    model = read_manual(FROTHER, FROTHER_ACTIONS).model
+    walk = next(s for s in model.features.values() if s[0].actions == ["hold_menu"])
+    assert [s.actions for s in walk][1] == ["turn_knob_cw", "turn_knob_ccw"]
+    foam = walk[1].variable
+    assert foam == "foam_level"
+    assert [tuple(r) for r in model.variables[foam].ranges or []] == [(1, 5, 1)]
+    assert walk[3].variable == "whisk_speed"
+    # each labelled by the letters of the display's example ("e.g. FL 3", "e.g. SP 2")
+    assert model.variables[foam].label == "FL"
+    assert model.variables["whisk_speed"].label == "SP"
+
+
+# a room thermostat (our own words): ▲ / ▼ set the temperature (no range given) and also the
+# items of the menu SET opens; the temperature is theirs, not a guess the menu replaces
+THERMOSTAT = """CALORA RT-1 room thermostat
+
+  ▲ / ▼    raise or lower the room temperature
+  SET      hold 3 s: installer menu
+
+INSTALLER MENU
+  1. Hold SET for 3 seconds. The display shows the switching gap, e.g. SG 0.5.
+  2. Press ▲ or ▼ to choose the gap: 0.2, 0.5 or 1.0 °C.
+  3. Press SET briefly. The display shows the frost guard, e.g. FG 5.
+  4. Press ▲ or ▼ to choose 5, 7 or 10 °C.
+  5. Wait 5 seconds. The menu closes.
+"""
+THERMOSTAT_ACTIONS = ["press_up", "press_down", "hold_set", "press_set", "wait_5s"]
+
+
+def test_the_pair_s_own_setting_named_outside_the_walk_stays() -> None:
+    model = read_manual(THERMOSTAT, THERMOSTAT_ACTIONS).model
+    walk = next(s for s in model.features.values() if s[0].actions == ["hold_set"])
+    assert [walk[k].variable for k in (1, 3)] == ["switching_gap", "frost_guard"]
+    own = [
+        s[0].variable for s in model.features.values() if s[0].actions == ["press_up", "press_down"]
+    ]
+    assert own and "temperature" in str(own[0])

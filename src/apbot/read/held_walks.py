@@ -20,41 +20,35 @@ from typing import Any
 
 from apbot.model.values import format_hms
 from apbot.read.build import Builder
+from apbot.read.code_words import own_lines
+from apbot.read.held_guesses import drop_guess, drop_key_guesses
 from apbot.read.roles_fasthold import held_time_step
-from apbot.read.roles_lists import list_range, list_step
-from apbot.read.shapes import Evidence
 from apbot.read.text import Unit
-from apbot.read.value_lists import find_list
-from apbot.read.values import NUM, UNIT, find_ranges, find_step
+from apbot.read.values import find_ranges, find_step
+from apbot.read.walk_fields import (
+    SAME_WAY_RE,
+    code_words,
+    field_label,
+    field_name,
+    like,
+    read_field,
+    read_more_field,
+)
 
-# "after 23:30 comes 00:00", "After 23:45 the time continues at 00:00": the last time of a day
-_DAY_WRAP_RE = re.compile(
-    r"\b(?:after|past)\s+([01]?\d|2[0-3]):([0-5]\d)\b[^.;]{0,40}?\b0?0:00\b", re.I
-)
-# what the display shows on opening a field: "shows the start time", "appears with the length"
-_SHOWS_RE = re.compile(
-    r"\b(?:shows|displays|appears with|flashes with)\s+the\s+((?:[a-z]+\s){0,2}?[a-z]+)"
-    r"(?=\s*(?:[,.(]|\bof\b|\bbeing\b|\be\.g\.|$))",
-    re.I,
-)
-# the field named beside the display word that stands for it: "ON and the start time flash",
-# "AL and the alarm time appear"
-_BESIDE_RE = re.compile(
-    r"^([A-Za-z][A-Za-z0-9]{0,5})\s+and\s+the\s+((?:[a-z]+\s){0,2}?[a-z]+)\s+"
-    r"(?:flash|appear|blink|light)s?\b"
-)
-# a display word standing before "appears": "F START appears with …"
-_APPEARS_RE = re.compile(r"^([A-Z][A-Z0-9 ]{0,12}?)\s+appears\b")
-# a display word and a number: "The display shows dL 0 h."
-_SHOWS_CODE_RE = re.compile(r"\bshows\s+([A-Za-z]{1,4})\s+\d")
 # a field's name that says nothing of what it is: its key's name leads it ("snooze length")
 _BARE = frozenset({"length", "duration", "time", "setting", "value", "level"})
 # "Do not touch any key for 5 seconds: the setting is stored", "stored after a few seconds"
 _STORED_RE = re.compile(
     r"\b(?:for|after|wait)\s+(?:(\d+)|a few)\s+seconds?\b[^.]*|\bstored\b[^.]*\bseconds\b", re.I
 )
-# a field set as the one before it: "Set the end hour with ► / ◄ in the same way."
-_SAME_WAY_RE = re.compile(r"\b(?:(?:in\s+)?the\s+same\s+way|likewise|as\s+before)\b", re.I)
+# a step the walk may pass over: "To keep it unchanged, go straight to step 3."
+_SKIP_RE = re.compile(
+    r"\bgo\s+(?:straight|directly)\s+(?:on\s+)?to\s+step\b|\bskip\s+(?:this|the)\s+step\b", re.I
+)
+# what a pause does at the end of a walk: "If you press no key for 8 seconds, the menu closes"
+_CLOSES_RE = re.compile(r"\b(?:closes?|stored|returns?|leaves?|exits?)\b", re.I)
+# a dial named by its kind rather than its label: "Turn the knob to choose …"
+_TURN_RE = re.compile(r"\bturn\s+the\s+(?:\w+\s+)?(?:knob|dial|wheel|ring|selector)\b", re.I)
 _CLOCK_FIELDS_RE = re.compile(r"\bhours?\b[^.]*\bflash", re.I)
 _HOURS_RE = re.compile(r"\bhours?\b", re.I)
 _MINUTES_RE = re.compile(r"\bminutes?\b", re.I)
@@ -65,8 +59,9 @@ def _says(text: str, label: str) -> bool:
 
 
 def _pairs(b: Builder) -> list[tuple[list[str], list[str]]]:
-    """The stepping pairs the model already has: presses that step one setting up and down."""
-    press = {i.name for i in b.infos if i.skill == "press"}
+    """The stepping pairs the model already has: presses (or a dial's two turns) that step one
+    setting up and down."""
+    press = {i.name for i in b.infos if i.skill == "press" or i.skill.startswith("turn")}
     out: list[tuple[list[str], list[str]]] = []
     for steps in b.features.values():
         for step in steps:
@@ -86,7 +81,7 @@ def _groups(units: list[Unit], i: int) -> list[tuple[int, str]]:
     first = units[i].step
     for u in units[i:]:
         if u.step is not None:
-            if first is None or u.step != first + len(out) or len(out) >= 5:
+            if first is None or u.step != first + len(out) or len(out) >= 9:
                 break
             out.append((u.step, u.text))
         elif u.cells or u.heading != units[i].heading:
@@ -94,66 +89,6 @@ def _groups(units: list[Unit], i: int) -> list[tuple[int, str]]:
         else:
             out[-1] = (out[-1][0], f"{out[-1][1]} {u.text}")
     return out
-
-
-def _field(b: Builder, shown: str, text: str, at: int) -> dict[str, Any] | None:
-    """The setting a field holds: a time of day that wraps at midnight, else a range in a unit."""
-    name = _field_name(shown)
-    m = _DAY_WRAP_RE.search(text)
-    if m:
-        last = int(m.group(1)) * 3600 + int(m.group(2)) * 60
-        every = 24 * 3600 - last
-        if every <= 0 or every > 3 * 3600:
-            return None
-        if name:  # "the start hour" of a time of day: its start time
-            name = re.sub(r"(^|_)hours?$", r"\1time", name)
-        spec = {
-            "type": "time",
-            "ranges": [["00:00:00", format_hms(last), every]],
-            "format": "hh:mm",
-            "wrap": True,
-        }
-        return {"name": name or "time", "spec": spec}
-    ranges = find_ranges(text)
-    step = find_step(text)
-    listed = find_list(text) if not ranges else None
-    if listed and all(re.fullmatch(rf"{NUM}\s*{UNIT}", v, re.I) for v in listed[0]):
-        ranges = [list_range(listed[0])]  # "Set the length: 1, 2, 3 or 4 hours."
-        step = step or list_step(listed[0])
-    if len(ranges) != 1 or not ranges[0].unit:
-        return None
-    ev = Evidence(ranges=ranges, range_at=at, step=step, step_at=at if step else None)
-    return {"name": name or "setting", "evidence": ev}
-
-
-def _like(one: dict[str, Any], name: str) -> dict[str, Any] | None:
-    """The second field of a walk whose step says it is set "in the same way" as the first:
-    the first's kind of value under its own name ("the end hour" of a time of day: end_time)."""
-    if not name:
-        return None
-    if "spec" in one:
-        return {"name": re.sub(r"(^|_)hours?$", r"\1time", name), "spec": dict(one["spec"])}
-    return {"name": name, "evidence": one["evidence"]}
-
-
-def _field_name(shown: str) -> str:
-    m = _SHOWS_RE.search(shown) or _BESIDE_RE.match(_after_key(shown))
-    if not m:
-        return ""
-    return "_".join(
-        w for w in m.group(m.lastindex or 1).lower().split() if w not in {"current", "set"}
-    )
-
-
-def _after_key(shown: str) -> str:
-    """The step's sentence after the key press that opens it ("Hold X for 3 s. AL and …")."""
-    return shown.split(". ", 1)[-1].strip() if ". " in shown else ""
-
-
-def _label(shown: str, fallback: str) -> str:
-    after = _after_key(shown)
-    m = _APPEARS_RE.match(after) or _BESIDE_RE.match(after) or _SHOWS_CODE_RE.search(after)
-    return m.group(1).strip() if m else fallback
 
 
 def read_held_walks(b: Builder) -> None:
@@ -190,27 +125,73 @@ def _walk(
     pairs: list[tuple[list[str], list[str]]],
     at: int,
 ) -> dict[str, Any] | None:
-    if len(groups) < 4:
+    """Two or more settings the held key's steps walk: the hold opens the first, each short
+    press of the key the next, and the pair sets each."""
+    if len(groups) < 3:
         return None
-    opened, first, moved, second = (g[1] for g in groups[:4])
-    if not _moves_on(moved, label):
-        return None
-    pair = _pair_of(b, pairs, first)
-    if pair is None or _pair_of(b, pairs, second) != pair:
-        return None
-    if _CLOCK_FIELDS_RE.search(opened):  # the hours, then the minutes, of one clock
+    if _CLOCK_FIELDS_RE.search(groups[0][1]):  # the hours, then the minutes, of one clock
+        if len(groups) < 4 or not _moves_on(groups[2][1], label):
+            return None
+        pair = _pair_of(b, pairs, groups[1][1])
+        if pair is None or _pair_of(b, pairs, groups[3][1]) != pair:
+            return None
         return _clock_walk(b, groups, label, pair, at)
-    one = _field(b, opened, f"{opened} {first}", at)
-    two = _field(b, moved, f"{moved} {second}", at)
-    if two is None and one is not None and _SAME_WAY_RE.search(second):
-        two = _like(one, _field_name(moved))
-    if one is None or two is None or one["name"] == two["name"]:
+    segments, end = _segments(b, groups, label, pairs)
+    fields: list[dict[str, Any]] = []
+    pair = None
+    for opened, text in segments:
+        own = _pair_of(b, pairs, text)
+        if own is None or (pair is not None and own != pair):
+            break
+        field = read_field(opened, text, at, beside=True) or read_more_field(opened, text, at)
+        if field is None and fields and "values" not in fields[-1] and SAME_WAY_RE.search(text):
+            field = like(fields[-1], field_name(opened, beside=True))
+        if field is None or any(f["name"] == field["name"] for f in fields):
+            break
+        shown = field_label(opened, label, example="values" not in field)
+        field.update(label=shown, optional=bool(_SKIP_RE.search(text)))
+        pair = own
+        fields.append(field)
+    if len(fields) < 2 or pair is None:
         return None
-    one["label"] = _label(opened, label)
-    two["label"] = _label(moved, label)
-    stored = _STORED_RE.search(groups[4][1]) if len(groups) > 4 else None
-    timeout = float(stored.group(1) or 5) if stored else None
-    return {"pair": pair, "fields": [one, two], "at": at, "timeout": timeout}
+    if len(fields) < len(segments):
+        end = ""  # (the walk read stops before its end: no pause read after it)
+    said = " ".join(t for _, t in segments)
+    return {"pair": pair, "fields": fields, "at": at, "timeout": _timeout(b, end, at), "said": said}
+
+
+def _segments(
+    b: Builder, groups: list[tuple[int, str]], label: str, pairs: list[tuple[list[str], list[str]]]
+) -> tuple[list[tuple[str, str]], str]:
+    """The walk's fields as (the step opening it, that step with the steps setting it), and
+    the step after the last one (how the walk ends). A step setting a field names the pair in
+    its first sentence (a worked example run into the last step names it later)."""
+    out: list[list[str]] = [[groups[0][1], groups[0][1]]]
+    for _, text in groups[1:]:
+        if _moves_on(text, label):
+            out.append([text, text])
+        elif _pair_of(b, pairs, text.split(". ")[0]) or _pair_of(b, pairs, out[-1][1]) is None:
+            out[-1][1] = f"{out[-1][1]} {text}"
+        else:
+            return [(o, t) for o, t in out], text
+    return [(o, t) for o, t in out], ""
+
+
+def _timeout(b: Builder, end: str, at: int) -> float | None:
+    """The pause after which the walk ends by itself: said in its last step ("Wait 10 seconds
+    without touching a key"), else in a note of its section ("If you press no key for 8
+    seconds, the menu closes by itself")."""
+    stored = _STORED_RE.search(end)
+    if stored:
+        return float(stored.group(1) or 5)
+    units = b.manual.units
+    for u in units[at : at + 25]:
+        if u.heading != units[at].heading:
+            break
+        stored = _STORED_RE.search(u.text)
+        if stored and u.step is None and _CLOSES_RE.search(u.text):
+            return float(stored.group(1) or 5)
+    return None
 
 
 def _one_walk(
@@ -232,18 +213,26 @@ def _one_walk(
     ):
         return None  # the hours of a clock, or a walk through two settings
     pair = _pair_of(b, pairs, first)
-    field = _field(b, opened, f"{opened} {first}", at) if pair else None
+    field = read_field(opened, f"{opened} {first}", at) if pair else None
     if pair is None or field is None:
         return None
-    own = _field_name(opened)
+    own = field_name(opened)
     heading = re.sub(r"\([^)]*\)|\d", " ", b.manual.units[at].heading).lower()
     name = own or "_".join(re.findall(r"[a-z]+", heading)[:3])
     if not name or name in _BARE:
         name = "_".join([*re.findall(r"[a-z]+", label.lower()), name or "setting"])
-    field.update(name=name, label=_label(opened, label))
+    field.update(name=name, label=field_label(opened, label))
     stored = _STORED_RE.search(rest[0]) if rest else None
     timeout = float(stored.group(1) or 5) if stored else None
-    return {"pair": pair, "fields": [field], "at": at, "timeout": timeout, "own": bool(own)}
+    said = " ".join(g[1] for g in groups[:2])
+    return {
+        "pair": pair,
+        "fields": [field],
+        "at": at,
+        "timeout": timeout,
+        "own": bool(own),
+        "said": said,
+    }
 
 
 def _moves_on(text: str, label: str) -> bool:
@@ -263,7 +252,14 @@ def _pair_of(
         downs = [b.labels[t].text for a in down for t in _controls(b, a) if t in b.labels]
         if any(_says(text, x) for x in ups) and any(_says(text, x) for x in downs):
             return up, down
+    dials = [p for p in pairs if all(_turned(b, a) for a in p[0] + p[1])]
+    if len(dials) == 1 and _TURN_RE.search(text):  # "Turn the knob to choose …"
+        return dials[0]
     return None
+
+
+def _turned(b: Builder, action: str) -> bool:
+    return any(i.name == action and i.skill.startswith("turn") for i in b.infos)
 
 
 def _clock_walk(
@@ -296,8 +292,8 @@ def _clock_walk(
     timeout = float(stored.group(1) or 5) if stored else None
     return {
         "pair": pair,
-        "clock": _label(opened, label),
-        "name": _field_name(opened),  # "AL and the alarm time appear": the alarm time
+        "clock": field_label(opened, label),
+        "name": field_name(opened),  # "AL and the alarm time appear": the alarm time
         "minute": minute,
         "holds": holds,
         "confirm": confirm,
@@ -310,31 +306,6 @@ def _controls(b: Builder, action: str) -> tuple[str, ...]:
     return next((i.controls for i in b.infos if i.name == action), ())
 
 
-def _drop_guess(b: Builder, hold: str) -> str:
-    """Drop the setting the hold alone was guessed to set; return its name as a prefix
-    ("sleep_period_") when that was more than the key's name and "hold"."""
-    prefix = ""
-    for fname, old in list(b.features.items()):
-        if not old or old[0].get("actions") != [hold]:
-            continue
-        names = [s.get("variable") for s in old]
-        if len(old) > 1 and not all(v is None or v.endswith("_hold") for v in names):
-            continue  # (a hold opening a setting read as the key's own "…_hold" is a guess)
-        del b.features[fname]
-        for var in names:
-            used = any(s.get("variable") == var for st in b.features.values() for s in st)
-            if var in b.variables and not used:
-                del b.variables[var]
-                for steps in b.features.values():  # nor does a choice reset it any more
-                    for step in steps:
-                        if var in step.get("reset", []):
-                            step["reset"] = [r for r in step["reset"] if r != var]
-        var = names[0]
-        if len(old) == 1 and isinstance(var, str) and not var.endswith("_hold"):
-            prefix = f"{var}_"
-    return prefix
-
-
 def _apply(b: Builder, hold: str, press: str | None, walk: dict[str, Any]) -> None:
     """Drop the hold's guessed setting; add the two fields and the feature walking them (named
     after what the hold was read to set, "sleep_period", when that was more than the key's name
@@ -342,7 +313,7 @@ def _apply(b: Builder, hold: str, press: str | None, walk: dict[str, Any]) -> No
     if "clock" in walk:
         _apply_clock(b, hold, press, walk)
         return
-    prefix = _drop_guess(b, hold)
+    prefix = drop_guess(b, hold)
     if len(walk["fields"]) == 1:  # one setting: the name the hold was read with, else its own
         field = walk["fields"][0]
         field["name"] = field["name"] if walk.get("own") or not prefix else prefix[:-1]
@@ -356,6 +327,15 @@ def _apply(b: Builder, hold: str, press: str | None, walk: dict[str, Any]) -> No
             var = b.unique(prefix + field["name"], b.variables)
             b.variables[var] = {"label": field["label"], **field["spec"]}
             b.note(f"variables.{var}", "a time of day the held key's steps set", walk["at"])
+        elif "values" in field:
+            var = b.add_discrete(prefix + field["name"], field["values"], field["label"], None)
+            glossed = code_words(own_lines(b), field["values"])
+            if glossed:  # "r1 near – r2 middle – r3 far": the words, the codes shown
+                b.variables[var]["values"] = [glossed[c] for c in field["values"]]
+                b.variables[var]["show"] = {w: c for c, w in glossed.items()}
+            if field.get("stops"):
+                b.variables[var]["wrap"] = False
+            b.note(f"variables.{var}", "the values the held key's walk steps through", walk["at"])
         else:
             var = b.add_number(
                 prefix + field["name"], field["label"], field["evidence"], cyclic=False
@@ -363,10 +343,13 @@ def _apply(b: Builder, hold: str, press: str | None, walk: dict[str, Any]) -> No
         if k:
             steps.append({"actions": [press]})
         steps.append({"actions": up + down, "variable": var, "effect": dict(effect)})
+        if field.get("optional") and k < len(walk["fields"]) - 1:
+            steps[-1]["optional"] = True  # "to keep it, go straight to step 3"
         names.append(var)
     if walk["timeout"] is not None:  # the walk ends by itself once no key is touched
         for step in steps:
             step["timeout"] = walk["timeout"]
+    drop_key_guesses(b, {a for a in (press, *up, *down) if a}, walk["said"])
     feature = f"set_{names[0]}"
     b.feature(feature, steps)
     said = f"{hold} opens {names[0]}" + (f", {press} moves to {names[1]}" if names[1:] else "")
@@ -388,7 +371,7 @@ def _day_clock(spec: dict[str, Any]) -> bool:
 def _apply_clock(b: Builder, hold: str, press: str | None, walk: dict[str, Any]) -> None:
     """Add the clock walk; the time it sets is the time the key's press was read to open with
     the pair (that reading, a press alone opening the minutes, is dropped), else a new one."""
-    _drop_guess(b, hold)
+    drop_guess(b, hold)
     up, down = walk["pair"]
     var = None
     for fname, old in list(b.features.items()):

@@ -1,0 +1,63 @@
+"""What a held walk's keys were guessed to set before the walk was read (see ``held_walks``).
+
+Read key by key, the hold that opens a walk looks like a switch of its own, and the short press
+and the stepping pair that set its fields like amounts whose range the manual never gives.
+Once the walk is read, those guesses are its job, and are dropped.
+"""
+
+from __future__ import annotations
+
+import re
+
+from apbot.read.build import PLACEHOLDERS, Builder
+
+
+def drop_guess(b: Builder, hold: str) -> str:
+    """Drop the setting the hold alone was guessed to set; return its name as a prefix
+    ("sleep_period_") when that was more than the key's name and "hold"."""
+    prefix = ""
+    for fname, old in list(b.features.items()):
+        if not old or old[0].get("actions") != [hold]:
+            continue
+        names = [s.get("variable") for s in old]
+        if len(old) > 1 and not all(v is None or v.endswith("_hold") for v in names):
+            continue  # (a hold opening a setting read as the key's own "…_hold" is a guess)
+        del b.features[fname]
+        for var in names:
+            used = any(s.get("variable") == var for st in b.features.values() for s in st)
+            if var in b.variables and not used:
+                del b.variables[var]
+                for steps in b.features.values():  # nor does a choice reset it any more
+                    for step in steps:
+                        if var in step.get("reset", []):
+                            step["reset"] = [r for r in step["reset"] if r != var]
+        var = names[0]
+        if len(old) == 1 and isinstance(var, str) and not var.endswith("_hold"):
+            prefix = f"{var}_"
+    return prefix
+
+
+def drop_key_guesses(b: Builder, keys: set[str], said: str) -> None:
+    """Drop what the walk's keys alone were guessed to set — a range the manual never gave, or
+    placeholder choices ("▲ and ▼ have no function outside the menu"): the walk is their job.
+    Only a setting named for one of those keys or by words of the walk's own steps (``said``:
+    "Press ▲ for a longer time" gave ▲ / ▼ a "time"); a setting of their own named elsewhere
+    (a temperature whose range the manual leaves out) stays."""
+    placeholders = {n.subject.split(".")[1] for n in b.notes if n.what == PLACEHOLDERS}
+    tokens = {c for i in b.infos if i.name in keys for c in i.controls}
+    named = {w.lower() for w in re.findall(r"[A-Za-z]+", said)} | {
+        w for t in tokens for w in t.split("_")
+    }
+    for fname, steps in list(b.features.items()):
+        names = [s.get("variable") for s in steps if s.get("variable")]
+        if (
+            names
+            and all(set(s.get("actions", [])) <= keys for s in steps)
+            and all(v in b.unread or v in placeholders for v in names)
+            and all(set(str(v).split("_")) <= named for v in names)
+        ):
+            del b.features[fname]
+            for var in names:
+                used = any(s.get("variable") == var for st in b.features.values() for s in st)
+                if not used:
+                    b.variables.pop(str(var), None)
