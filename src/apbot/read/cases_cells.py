@@ -42,8 +42,14 @@ def defaults_head(head: str, cells: list[str]) -> bool:
 
 
 def _cases(
-    spec: dict[str, Any], rows: list[Unit], column: int, pvalues: list[str]
+    spec: dict[str, Any],
+    rows: list[Unit],
+    column: int,
+    pvalues: list[str],
+    marks: frozenset[str] = frozenset(),
 ) -> dict[str, Any]:
+    """A case per row of the column; ``marks``: the symbols the chart's legend says mark a
+    default ("★ = factory setting")."""
     cases: dict[str, Any] = {}
     for row in rows:
         if column >= len(row.cells):
@@ -52,7 +58,7 @@ def _cases(
         targets = _parent_values(row.cells[0], pvalues)
         if not targets:
             continue
-        case = _case(spec, cell)
+        case = _case(spec, cell, marks)
         if case is None:
             continue
         for target in targets:
@@ -96,7 +102,17 @@ def _toggle_cell(cell: str) -> bool | None:
     return None
 
 
-def _case(spec: dict[str, Any], cell: str) -> Any:
+def _marked(item: str, marks: frozenset[str]) -> tuple[str, bool]:
+    """A listed choice without the legend's default mark printed on it ("55 °C★", "★ Low"),
+    and whether it bore one."""
+    bare = item.strip()
+    for mark in marks:
+        if bare.endswith(mark) or bare.startswith(mark):
+            return bare.strip(mark).strip(), True
+    return bare, False
+
+
+def _case(spec: dict[str, Any], cell: str, marks: frozenset[str] = frozenset()) -> Any:
     kind = spec.get("type")
     if kind == "discrete" and sorted(spec.get("values", [])) == ["off", "on"]:
         said = _toggle_cell(cell)  # "yes" under STEAM: the key works in that programme
@@ -117,12 +133,19 @@ def _case(spec: dict[str, Any], cell: str) -> Any:
         if len(spaced) >= 2 and all(w in known for w in spaced):
             # "SOFT MEDIUM FIRM": the values, printed with spaces ("[40]": the default)
             return {"values": spaced} | ({"initial": marked[0]} if len(marked) == 1 else {})
-        items = [
-            _norm(re.sub(r"\(.*?\)", "", i)) for i in re.split(r"\s*(?:,|/|·|\bor\b)\s*", cell)
+        pieces = [
+            _marked(_norm(re.sub(r"\(.*?\)", "", i)), marks)
+            for i in re.split(r"\s*(?:,|/|·|\bor\b)\s*", cell)
         ]
-        items = [_alone(i, known) for i in items]
+        starred = [i for i, mark in pieces if mark]  # "55 °C★ / 65 °C": 55 °C, the default
+        items = [_alone(i, known) for i, _ in pieces]
         items = [i for i in items if i and i not in ("—", "-", "–", "n/a") and len(i) <= 24]
-        return {"values": list(dict.fromkeys(items))} if items else None
+        if not items:
+            return None
+        choices: dict[str, Any] = {"values": list(dict.fromkeys(items))}
+        if len(starred) == 1 and len(items) > 1:
+            choices["initial"] = starred[0]
+        return choices
     ranges = spec.get("ranges") or []
     if not ranges:
         return None
