@@ -100,3 +100,23 @@ def test_a_value_bearing_the_legends_default_mark_is_the_programmes_default() ->
     assert cases["daily"].initial == "50 °c"
     assert list(cases["strong"].values) == ["60 °c", "70 °c"]
     assert cases["strong"].initial == "70 °c"
+
+
+RULED = """
+PROGRAMME CHART
+
+  ✓ = can be set    ✗ = not available    [ ] = standard value
+
+  Programme   Cooking time          Delay          Keep warm
+  ---------   -------------------   ------------   ---------
+  WHITE       automatic  ✗          up to 24:00    ✓
+  SOUP        0:30 – 3:00           up to 12:00    ✓
+  a  CAKE     0:40 – 1:20           –              –
+"""
+
+
+def test_a_gap_inside_one_run_of_the_rule_does_not_split_the_cell() -> None:
+    rows = [u.cells for u in parse_manual(RULED).units if u.cells]
+    assert rows[1] == ("WHITE", "automatic ✗", "up to 24:00", "✓")  # no column shifted left
+    assert rows[2] == ("SOUP", "0:30 – 3:00", "up to 12:00", "✓")
+    assert rows[3][:2] == ("a", "CAKE")  # the lead cell's own gap (a callout) stays
