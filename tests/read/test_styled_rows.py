@@ -5,6 +5,7 @@ value in another key's cycle, and a chart cell's value bearing the legend's defa
 from __future__ import annotations
 
 from apbot.read import read_manual
+from apbot.read.cases_cells import _toggle_cell
 from apbot.read.cycle_mentions import named_in_cycle_only
 from apbot.read.text import parse_manual
 from apbot.read.text_rows import wrapped_cells
@@ -120,3 +121,9 @@ def test_a_gap_inside_one_run_of_the_rule_does_not_split_the_cell() -> None:
     assert rows[1] == ("WHITE", "automatic ✗", "up to 24:00", "✓")  # no column shifted left
     assert rows[2] == ("SOUP", "0:30 – 3:00", "up to 12:00", "✓")
     assert rows[3][:2] == ("a", "CAKE")  # the lead cell's own gap (a callout) stays
+
+
+def test_a_chart_cell_saying_not_used_leaves_the_option_out_of_that_programme() -> None:
+    assert _toggle_cell("not used") is False
+    assert _toggle_cell("✓") is True
+    assert _toggle_cell("normal") is None
