@@ -72,37 +72,6 @@ def test_a_key_named_only_as_a_value_of_another_keys_cycle_gives_that_key_its_va
     assert list(shade.values) == ["lamp", "mid", "deep"]  # type: ignore[union-attr]
 
 
-STARRED = """
-PANEL
-Turn PROGRAMME to choose the programme. Press TEMP to change the wash temperature: each press
-gives the other one the programme offers:  DAILY 50 °C ⇄ 60 °C   STRONG 70 °C ⇄ 60 °C
-
-PROGRAMME CHART
-
-★ = factory setting of the programme
-
- Programme   Items                    Wash temp.
- ---------   ----------------------   ----------------
- DAILY       everyday bottles         50 °C★ / 60 °C
- STRONG      dried-on milk            60 °C / 70 °C★
- GENTLE      teats and soothers       40 °C★ / 50 °C
- RINSE       a rinse only             –
-
-Press START to begin.
-"""
-
-
-def test_a_value_bearing_the_legends_default_mark_is_the_programmes_default() -> None:
-    model = read_manual(
-        STARRED, ["turn_programme_cw", "turn_programme_ccw", "press_temp", "press_start"]
-    ).model
-    temp = next(v for n, v in model.variables.items() if "temp" in n)
-    cases = temp.cases or {}  # type: ignore[union-attr]
-    assert cases["daily"].initial == "50 °c"
-    assert list(cases["strong"].values) == ["60 °c", "70 °c"]
-    assert cases["strong"].initial == "70 °c"
-
-
 RULED = """
 PROGRAMME CHART
 

@@ -31,7 +31,7 @@ from apbot.read.goal_vocab import stem
 from apbot.read.labels import words
 from apbot.read.marks_legend import chart_legend, read_mark
 from apbot.read.shapes import CHOICE_WORDS
-from apbot.read.text import Unit, default_marks
+from apbot.read.text import Unit
 from apbot.read.values import Range, find_ranges, unit_name
 
 GENERIC = {
@@ -64,7 +64,6 @@ def apply_cases(b: Builder) -> None:
     parents: set[str] = set()
     children: set[str] = set()
     keys = {lab.text.strip(" .").upper() for lab in b.labels.values() if lab.text}
-    stars = default_marks("\n".join(b.manual.lines))  # "★ = factory setting"
     for header, table in _tables(b.manual.units):
         if len(table) < 2:
             continue
@@ -134,7 +133,7 @@ def apply_cases(b: Builder) -> None:
                 elif _switch(spec):
                     cases = _cases(spec, _marks_told(b, rows, column), column, pvalues)
                 else:
-                    cases = _cases(spec, rows, column, pvalues, stars)
+                    cases = _cases(spec, rows, column, pvalues)
                 if len(cases) >= 2 and _presets(b, parent, name, cases, table[0]):
                     break
                 if len(cases) >= 2:

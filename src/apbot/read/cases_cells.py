@@ -42,14 +42,8 @@ def defaults_head(head: str, cells: list[str]) -> bool:
 
 
 def _cases(
-    spec: dict[str, Any],
-    rows: list[Unit],
-    column: int,
-    pvalues: list[str],
-    marks: frozenset[str] = frozenset(),
+    spec: dict[str, Any], rows: list[Unit], column: int, pvalues: list[str]
 ) -> dict[str, Any]:
-    """A case per row of the column; ``marks``: the symbols the chart's legend says mark a
-    default ("★ = factory setting")."""
     cases: dict[str, Any] = {}
     for row in rows:
         if column >= len(row.cells):
@@ -58,7 +52,7 @@ def _cases(
         targets = _parent_values(row.cells[0], pvalues)
         if not targets:
             continue
-        case = _case(spec, cell, marks)
+        case = _case(spec, cell)
         if case is None:
             continue
         for target in targets:
@@ -103,17 +97,7 @@ def _toggle_cell(cell: str) -> bool | None:
     return None
 
 
-def _marked(item: str, marks: frozenset[str]) -> tuple[str, bool]:
-    """A listed choice without the legend's default mark printed on it ("55 °C★", "★ Low"),
-    and whether it bore one."""
-    bare = item.strip()
-    for mark in marks:
-        if bare.endswith(mark) or bare.startswith(mark):
-            return bare.strip(mark).strip(), True
-    return bare, False
-
-
-def _case(spec: dict[str, Any], cell: str, marks: frozenset[str] = frozenset()) -> Any:
+def _case(spec: dict[str, Any], cell: str) -> Any:
     kind = spec.get("type")
     if kind == "discrete" and sorted(spec.get("values", [])) == ["off", "on"]:
         said = _toggle_cell(cell)  # "yes" under STEAM: the key works in that programme
@@ -134,19 +118,12 @@ def _case(spec: dict[str, Any], cell: str, marks: frozenset[str] = frozenset()) 
         if len(spaced) >= 2 and all(w in known for w in spaced):
             # "SOFT MEDIUM FIRM": the values, printed with spaces ("[40]": the default)
             return {"values": spaced} | ({"initial": marked[0]} if len(marked) == 1 else {})
-        pieces = [
-            _marked(_norm(re.sub(r"\(.*?\)", "", i)), marks)
-            for i in re.split(r"\s*(?:,|/|·|\bor\b)\s*", cell)
+        items = [
+            _norm(re.sub(r"\(.*?\)", "", i)) for i in re.split(r"\s*(?:,|/|·|\bor\b)\s*", cell)
         ]
-        starred = [i for i, mark in pieces if mark]  # "55 °C★ / 65 °C": 55 °C, the default
-        items = [_alone(i, known) for i, _ in pieces]
+        items = [_alone(i, known) for i in items]
         items = [i for i in items if i and i not in ("—", "-", "–", "n/a") and len(i) <= 24]
-        if not items:
-            return None
-        choices: dict[str, Any] = {"values": list(dict.fromkeys(items))}
-        if len(starred) == 1 and len(items) > 1:
-            choices["initial"] = starred[0]
-        return choices
+        return {"values": list(dict.fromkeys(items))} if items else None
     ranges = spec.get("ranges") or []
     if not ranges:
         return None
