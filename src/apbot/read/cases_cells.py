@@ -79,10 +79,11 @@ def _alone(item: str, known: list[str]) -> str:
     return bare if bare != item and (bare in known or not known) else item
 
 
-# a mark that a chart's on/off column says the option is offered, or not ("–", "no"); a cross
-# ("x", "✗") is "not possible" in as many charts as it is "offered" in others: neither
+# a mark that a chart's on/off column says the option is offered, or not ("–", "no",
+# "not used"); a cross ("x", "✗") is "not possible" in as many charts as it is "offered" in
+# others: neither
 _OFFERED_RE = re.compile(r"\s*(?:(?:yes|y)\b|[✓✔●])\W*(?:\s|$)", re.I)
-_NOT_OFFERED_RE = re.compile(r"\s*(?:no\b|n\b|[–—-](?:\s|$))", re.I)
+_NOT_OFFERED_RE = re.compile(r"\s*(?:no\b|not\b|n\b|[–—-](?:\s|$))", re.I)
 
 
 def _toggle_cell(cell: str) -> bool | None:

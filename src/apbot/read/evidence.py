@@ -11,6 +11,7 @@ import re
 
 from apbot.read.chart_cells import own_cells, row_names, without_names
 from apbot.read.count_tables import chart_for, count_charts, sideways_charts
+from apbot.read.cycle_mentions import named_in_cycle_only
 from apbot.read.evidence_anywhere import AnywhereReader
 from apbot.read.evidence_checks import (
     _amount_column,
@@ -134,6 +135,7 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
             if t not in tokens
             for i in lab.mentions
             if not unit_only_mention(lab, units[i].text)  # "… in 5 °F steps": not TEMP's
+            and not named_in_cycle_only(lab.text, units[i].text)  # "LIGHT → DARK → LIGHT"
         }
         steps = self._pair_steps(tokens, mentions)  # "Press ▲ or ▼ to set …" after its step
         elsewhere, mentions = elsewhere - steps, mentions | steps

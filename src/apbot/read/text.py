@@ -28,6 +28,7 @@ from apbot.read.text_pages import (
     _unfinished,
     contents_lines,
 )
+from apbot.read.text_rows import GRID_RULE, wrapped_cells
 from apbot.read.text_sections import drop_boilerplate, drop_tagged_models
 from apbot.read.text_tables import _row_charts, _space_tables, _strip_markup
 
@@ -191,6 +192,7 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
     heading = ""
     header: tuple[str, ...] = ()
     ruled: tuple[str, ...] = ()  # the header of the table whose rule has been read
+    led = True  # the table's header line starts with a bar
     para: list[tuple[int, str]] = []
     para_bullet = False
     para_step: int | None = None
@@ -305,6 +307,11 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
             heading = stripped.lstrip("#").strip()
             units.append(Unit(number, heading, heading=heading))
             continue
+        if header and GRID_RULE.match(stripped):  # "-----+-----": the table's rule all the same
+            flush()
+            if header != ruled:
+                header = ruled = _header_lines(units, header)
+            continue
         if "|" in stripped and stripped.count("|") >= 2:
             flush()
             if _TABLE_RULE.match(stripped):
@@ -313,8 +320,15 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
                 continue
             cells = tuple(c.strip() for c in stripped.strip("|").split("|"))
             if not header:
-                header = cells
+                header, led = cells, stripped.startswith("|")
                 units.append(Unit(number, " | ".join(cells), cells, (), heading=heading))
+                continue
+            if stripped.startswith("|") and not led:  # a table without outer bars: its first
+                cells = ("", *cells)  # cell left empty ("      |    | rice")
+            above = units[-1] if units and units[-1].header == header else None
+            joined = wrapped_cells(above.cells, cells) if above is not None else None
+            if above is not None and joined is not None:  # a row's wrapped ends: that row
+                units[-1] = Unit(above.line, " | ".join(joined), joined, header, heading=heading)
             else:
                 units.append(Unit(number, " | ".join(cells), cells, header, heading=heading))
             continue

@@ -280,6 +280,13 @@ def _column_head(line: str, column: int) -> bool:
     )
 
 
+def _left_runs_on(above: str) -> int:
+    """How long the left part of the line under ``above`` must be to be a column's: any
+    length when the left column's line above runs on to it (a sentence ends there, "Default:"
+    then "MEDIUM."), else ten characters."""
+    return 1 if re.search(r"[a-z,:]\s{3,}\S", above) else 10
+
+
 def _reading_order(lines: list[str]) -> tuple[list[str], list[int]]:
     """The lines in reading order, each with its 1-based number in the text: prose set in two
     columns side by side ("5.2 Spin Press the SPIN button to     Spin: no final spin; the…") is
@@ -297,15 +304,17 @@ def _reading_order(lines: list[str]) -> tuple[list[str], list[int]]:
                 break
         splits.append(found)
 
-    def at(k: int, column: int) -> tuple[int, str, str] | None:
-        """Line k split by a gap of two or more spaces ending near ``column``."""
+    def at(k: int, column: int, short: int = 10) -> tuple[int, str, str] | None:
+        """Line k split by a gap of two or more spaces ending near ``column`` (a left part
+        shorter than ``short`` characters is no column's)."""
         if splits[k] is not None and abs(splits[k][0] - column) <= 8:  # type: ignore[index]
             return splits[k]
         for m in re.finditer(r"\S(\s{2,})(?=\S)", lines[k]):
             if abs(m.end(1) - column) <= 8 and "|" not in lines[k]:
                 left, right = lines[k][: m.start(1)].strip(), lines[k][m.end(1) :].strip()
                 plain = not re.search(r"\s{2,}", left + "\n" + right)
-                if len(left) >= 10 and len(right) >= 10 and plain:
+                # (a paragraph's last line in the left column may be short: "MEDIUM.")
+                if len(left) >= short and len(right) >= 10 and plain:
                     return (m.end(1), left, right)
         return None
 
@@ -318,7 +327,7 @@ def _reading_order(lines: list[str]) -> tuple[list[str], list[int]]:
         parts: list[tuple[int, str, str]] = []
         j = i
         while j < len(lines) and first is not None:
-            here = at(j, first[0])
+            here = at(j, first[0], 10 if j == i else _left_runs_on(lines[j - 1]))
             if here is None or (j > i and re.match(r"\d{1,2}\.\d{1,2}\.?\s+[A-Z]", here[1])):
                 break  # a numbered section starting on the left begins a block of its own
             parts.append(here)

@@ -82,6 +82,7 @@ def _space_tables(
             continue
         column = _placed_cells(lines[i])[-1][0] if two else 0
         rows: list[int] = []
+        spans: list[tuple[int, int]] = []  # the columns a rule under the header marks
         more: dict[int, list[tuple[int, str]]] = {}  # row -> wrapped lines' cells, by position
         indent = len(lines[i]) - len(lines[i].lstrip())
         j = i + 1
@@ -106,6 +107,7 @@ def _space_tables(
                     continue
                 break
             if re.fullmatch(r"[-=_][-=_\s]{2,}", lines[j].strip()):
+                spans = spans or rule_spans(lines[j])  # (its runs of dashes: the columns)
                 j += 1  # a rule under the header ("-------  ------  -----")
                 continue
             cells = _cells(lines[j])
@@ -128,7 +130,7 @@ def _space_tables(
             legend = bool(CALLOUT_RE.fullmatch(head_cells[0]))  # "①  M   Hold 2 s: …": a row
             out[i + 1] = (_uncalled(head_cells), None) if legend else (head_cells, True)
             for r in rows:
-                cells = _joined_cells(lines[r], more.get(r, []), whole)
+                cells = _joined_cells(lines[r], more.get(r, []), whole, spans)
                 out[r + 1] = (_uncalled(cells) if legend else cells, False)
             for k in range(i + 1, j):
                 out.setdefault(k + 1, ((), False))
@@ -294,12 +296,46 @@ def _placed_cells(line: str) -> list[tuple[int, str]]:
     return [(m.start(), m.group(0)) for m in re.finditer(r"\S+(?:(?: |\s{2,}(?=[,;]))\S+)*", body)]
 
 
+def rule_spans(line: str) -> list[tuple[int, int]]:
+    """The columns a rule under a table's header marks, one run of dashes each ("-------
+    ------  -----"): where each column starts and ends."""
+    return [(m.start(), m.end()) for m in re.finditer(r"[-=_]{2,}", line)]
+
+
+def _within_rule(
+    placed: list[tuple[int, str]], spans: list[tuple[int, int]]
+) -> list[tuple[int, str]]:
+    """A row's pieces, those that start inside one column of the rule joined into its cell
+    ("automatic  ✗" under one run of dashes: one cell), when the row has more pieces than the
+    rule has columns; else the pieces as they are."""
+    if len(spans) < 2 or len(placed) <= len(spans):
+        return placed
+    merged: list[tuple[int, str]] = []
+    column = -1
+    for at, text in placed:
+        inside = max((n for n, (start, _) in enumerate(spans) if start <= at + 1), default=0)
+        if merged and inside == column and inside > 0:  # (a lead cell "a  ROOM": callout, name)
+            merged[-1] = (merged[-1][0], f"{merged[-1][1]} {text}")
+        else:
+            merged.append((at, text))
+        column = inside
+    return merged
+
+
 def _joined_cells(
-    line: str, wrapped: list[tuple[int, str]], whole: frozenset[str] | set[str] = frozenset()
+    line: str,
+    wrapped: list[tuple[int, str]],
+    whole: frozenset[str] | set[str] = frozenset(),
+    spans: list[tuple[int, int]] | None = None,
 ) -> tuple[str, ...]:
     """A row's cells with the text of its wrapped lines added to the cell each piece stands
-    under ("To activate and deactivate the" + "hob.")."""
+    under ("To activate and deactivate the" + "hob."); ``spans``: the columns the rule under
+    the header marks, which a cell's inner gap does not split."""
     placed = _placed_cells(line)
+    ruled = _within_rule(placed, spans or [])
+    if not wrapped and ruled is not placed:
+        return tuple(text for _, text in ruled)
+    placed = ruled
     if not wrapped or not placed:
         return _cells(line)
     cells = [text for _, text in placed]

@@ -1,0 +1,54 @@
+"""Pipe-table rows as a PDF's text leaves them: a rule drawn with "+" at the column joints, and
+a row whose cells wrapped onto a line of their own.
+
+A table printed with bars between its columns often comes out of the conversion with its rule
+drawn as dashes crossed by plus signs ("-------+--------+------") instead of bars. That line
+is the table's rule all the same: the lines above it are the header (one header row, however
+many lines it takes), the lines under it are rows. Read as prose, it ends the table, and the
+first data row is taken for the header of the rest.
+
+A cell too long for its column wraps onto the next line, and that line holds nothing but the
+wrapped ends ("100 | 0 | black tea, herbal tea," then "    |   | instant soups, pasta"): a row
+with more cells empty than filled, each filled cell under a filled cell of the row above that
+runs on to it (a comma, a hyphen, a word that needs one more, or a word in lower case). It
+belongs to the row above, cell by cell; read as a row of its own it is a row of blanks, which
+ends a chart's run of levels and adds nothing a setting could be.
+"""
+
+from __future__ import annotations
+
+import re
+
+# a rule with "+" at the joints: "------+------+-----", "+-----+-----+", ":---+---:"
+GRID_RULE = re.compile(r"^\s*\+?\s*:?-{2,}:?\s*(?:\+\s*:?-{2,}:?\s*)+\+?\s*$")
+
+# the end of a cell that runs on onto the next line: a comma, a hyphen, an opening bracket, or
+# a word that needs the next one ("for", "in", "and", "the" …)
+_RUNS_ON = re.compile(
+    r"(?:[,(/&+-]|\b(?:a|an|the|and|or|of|for|in|on|to|with|by|at|from|than|into|when|if))$",
+    re.IGNORECASE,
+)
+
+
+def _continues(above: str, below: str) -> bool:
+    """Whether ``below`` goes on with the cell ``above`` (its wrapped end)."""
+    return bool(above) and (bool(_RUNS_ON.search(above)) or below[:1].islower())
+
+
+def wrapped_cells(above: tuple[str, ...], row: tuple[str, ...]) -> tuple[str, ...] | None:
+    """The row above with ``row``'s wrapped ends joined on, when ``row`` is only that: more of
+    its cells empty than filled, each filled one running on from the cell above it. None when
+    ``row`` is a row of its own."""
+    if len(row) > len(above) or not above:
+        return None
+    row = row + ("",) * (len(above) - len(row))  # (the empty cells at the end left out)
+    filled = [k for k, cell in enumerate(row) if cell]
+    if not filled or len(filled) * 2 > len(row):
+        return None
+    if not all(_continues(above[k], row[k]) for k in filled):
+        return None
+    merged = list(above)
+    for k in filled:
+        glue = "" if re.search(r"\w-$", above[k]) else " "  # "pour-" + "over)": one word
+        merged[k] = f"{above[k]}{glue}{row[k]}"
+    return tuple(merged)
