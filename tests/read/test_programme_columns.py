@@ -131,3 +131,29 @@ def test_a_chart_column_naming_range_and_step_gives_each_row_its_range() -> None
     assert smoke.cases is not None
     assert _secs(smoke.cases["apple"].ranges[0][0]) == 1800, smoke.cases
     assert _secs(smoke.cases["hickory"].ranges[-1][1]) == 10800, smoke.cases
+
+
+# a boot warmer whose chart gives each mode's fan levels as the FAN key steps through them
+BOOT_WARMER = """
+# Boot warmer BW-2
+
+## Panel
+| Key | Use |
+|---|---|
+| **MODE** | Next mode: HOT → MILD → AIR → HOT … |
+| **FAN** | Next fan level of the mode: LOW, MID, HIGH or MAX (see the chart). |
+
+## Fan levels per mode
+| Mode | Fan levels, in the order FAN gives them | After MODE |
+|---|---|---|
+| HOT | LOW → MID → HIGH → LOW … | MID |
+| MILD | LOW → MID → HIGH → MAX → LOW … | LOW |
+| AIR | HIGH → MAX → HIGH … | MAX |
+"""
+
+
+def test_a_chart_cell_stepping_with_arrows_lists_each_value_once() -> None:
+    model = read_manual(BOOT_WARMER, ["press_mode", "press_fan"]).model
+    fan = model.variables["fan"]
+    assert fan.depends_on == "mode" and fan.cases is not None, fan
+    assert fan.cases["mild"].values == ["low", "mid", "high", "max"], fan.cases
