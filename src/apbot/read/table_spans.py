@@ -13,15 +13,17 @@ from __future__ import annotations
 import re
 from itertools import pairwise
 
+from apbot.read.labels import words
 from apbot.read.text import Unit
 from apbot.read.values import Range, find_ranges, number
 
 _BARE_RE = re.compile(r"\s*(\d+(?:[.,]\d+)?)\s*")  # a cell that is one number: "1", "10"
 
 
-def column_span(units: list[Unit], i: int, first: Range) -> Range:
-    """``first``, read from a later cell of table row ``i``, widened to every amount the same
-    column gives in the table's other rows; ``first`` itself when it came from no such cell."""
+def column_span(units: list[Unit], i: int, first: Range, own: set[str]) -> Range:
+    """``first``, read from a later cell of table row ``i`` in the column the setting's own
+    word heads (``own``: its words), widened to every amount that column gives in the table's
+    other rows; ``first`` itself when it came from no such cell."""
     cells = units[i].cells
     column = next(
         (
@@ -32,8 +34,9 @@ def column_span(units: list[Unit], i: int, first: Range) -> Range:
         ),
         None,
     )
-    if column is None or not units[i].header:
-        return first
+    header = units[i].header
+    if column is None or column >= len(header) or not own & set(words(header[column])):
+        return first  # ("| Goal | Workout | Resist. |": another setting's column)
     amounts: list[tuple[float, float]] = []
     for row in _table_rows(units, i):
         cell = row.cells[column] if column < len(row.cells) else ""
