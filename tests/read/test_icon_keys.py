@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from apbot.read import read_manual
 from apbot.read.labels import find_labels
 from apbot.read.text import _KEEP, parse_manual
 from apbot.read.text_icons import name_icons
@@ -75,3 +76,20 @@ def test_a_legend_s_description_said_of_a_lamp_stays_a_lamp() -> None:
     named = name_icons(text, _KEEP)
     assert "The sun lights while the water heats" in named
     assert "Touch the WARM key to switch" in named
+
+
+# a plate warmer whose mode lamps carry a picture before each mode's name
+PLATE_WARMER = """# Plate warmer PW-1
+
+Lamps: ☀ sun symbol = HOT, ◐ half sun = WARM, ❄ snowflake = KEEP.
+
+| Key | Function |
+|---|---|
+| POWER | Switches the warmer on and off. |
+| MODE | Next mode: ☀ HOT → ◐ WARM → ❄ KEEP → ☀ HOT … |
+"""
+
+
+def test_a_picture_printed_before_a_value_name_is_no_part_of_the_name() -> None:
+    model = read_manual(PLATE_WARMER, ["press_power", "press_mode"]).model
+    assert model.variables["mode"].values == ["hot", "warm", "keep"], model.variables["mode"]

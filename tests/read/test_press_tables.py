@@ -173,3 +173,28 @@ def test_a_captioned_guide_table_gives_the_range_and_a_data_row_is_no_header() -
     level = next(v for v in model.variables.values() if v.label == "LEVEL")
     assert level.type == "numeric" and level.unit == "%"
     assert level.ranges == [(30, 90, 30)]  # not the specifications' row names, no "two" step
+
+
+# a pencil sharpener whose guide lists pencils, each with the point the POINT dial is set to
+PENCIL = """# Pencil sharpener PS-2
+
+## Keys
+| Key | Function |
+|---|---|
+| POWER | Switches the sharpener on and off. |
+| POINT | Dial with three positions: blunt · medium · fine. |
+| SPEED | Next motor speed. |
+
+## POINT guide
+| Pencil | Point | Turns |
+|---|---|---|
+| Carpenter pencil | blunt | 10 |
+| Coloured pencils, soft | medium | 5 to 8 |
+| Drawing pencils, hard | fine | 12 |
+"""
+
+
+def test_a_guide_led_by_other_things_gives_the_key_no_values_in_its_first_column() -> None:
+    model = read_manual(PENCIL, ["press_power", "turn_point", "press_speed"]).model
+    point = model.variables["point"]
+    assert point.values == ["blunt", "medium", "fine"], point.values

@@ -131,3 +131,29 @@ def test_a_programme_table_gives_each_programme_its_listed_or_ranged_times() -> 
     assert steam.cases is not None
     assert [str(x) for x in steam.cases["fish"].ranges[0]][:2] == ["00:05:00", "00:15:00"]
     assert [str(x) for x in steam.cases["eggs"].ranges[0]][:2] == ["00:06:00", "00:12:00"]
+
+
+# a hair clipper whose guard guide advises a few lengths per hair type, row by row
+CLIPPER = """# Hair clipper HC-4
+
+## Keys
+| Key | Function |
+|---|---|
+| POWER | Switches the clipper on and off. |
+| STYLE | Chooses the cutting style: EVEN, FADE or TRIM. |
+| LENGTH | Next cutting length. After the longest it goes back to the shortest. |
+
+## Length guide
+| Hair | Style | Length |
+|---|---|---|
+| Thin hair, first cut | EVEN | 3 – 4, go shorter later |
+| Children | EVEN | 2 |
+| Thick curls | FADE | 9 – 12 |
+| Beard outline | TRIM | 5 – 6 |
+"""
+
+
+def test_a_guide_column_of_advised_amounts_spans_every_row_not_the_first() -> None:
+    model = read_manual(CLIPPER, ["press_power", "press_style", "press_length"]).model
+    length = model.variables["length"]
+    assert [float(x) for x in length.ranges[0][:2]] == [2, 12], length.ranges

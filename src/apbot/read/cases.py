@@ -102,8 +102,10 @@ def apply_cases(b: Builder) -> None:
             cells = [r.cells[column] if column < len(r.cells) else "" for r in rows]
             if defaults_head(header[column], cells) or set(words(header[column])) & ADVICE_WORDS:
                 continue
-            if _STEP_HEAD_RE.search(header[column]):
+            both = {"range", "ranges"} & set(words(header[column])) and _ranges_column(rows, column)
+            if _STEP_HEAD_RE.search(header[column]) and not both:
                 continue  # "Time step": each row's step (read by _row_steps), not its values
+                # ("Ripening time (range, step)" over "0:30 – 1:30, 15 min": both)
             head = [w for w in words(header[column]) if w not in GENERIC][:1]
             ranged = _ranges_column(rows, column)
             named = sorted(  # "Wash (min)": the variable named wash before any other "min" one

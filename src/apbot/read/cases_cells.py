@@ -73,6 +73,16 @@ def _value_span(values: list[str], cell: str) -> list[str] | None:
     return values[a : b + 1] if a < b else None
 
 
+def _stepped(cell: str) -> list[str]:
+    """The values of a cell that steps through them with arrows, each once: the one the last
+    arrow comes round to ("→ 1 …" after "1 COARSE") is the first again."""
+    items = [_norm(i).strip(" -–—…") for i in re.split(r"\s*→\s*", cell)]
+    items = [i for i in items if i]
+    if len(items) >= 3 and (items[-1] == items[0] or items[0].startswith(items[-1] + " ")):
+        items.pop()
+    return items
+
+
 def _alone(item: str, known: list[str]) -> str:
     """ "OFF only", "only ECO": the one value a row allows, said with "only" around it."""
     bare = re.sub(r"^only\s+|\s+only$", "", item)
@@ -121,6 +131,8 @@ def _case(spec: dict[str, Any], cell: str) -> Any:
         items = [
             _norm(re.sub(r"\(.*?\)", "", i)) for i in re.split(r"\s*(?:,|/|·|\bor\b)\s*", cell)
         ]
+        if "→" in cell:  # "30 → 60 → 90 → 120", "1 COARSE → 2 FINE → 1 …": the key's order
+            items = _stepped(cell)
         items = [_alone(i, known) for i in items]
         items = [i for i in items if i and i not in ("—", "-", "–", "n/a") and len(i) <= 24]
         return {"values": list(dict.fromkeys(items))} if items else None

@@ -15,10 +15,13 @@ from __future__ import annotations
 import re
 from typing import Any
 
+from apbot.model.values import format_hms, parse_quantity
 from apbot.read.build import Builder
 from apbot.read.cases_tables import _parent_values, _tables
+from apbot.read.goal_vocab import stem
 from apbot.read.labels import words
 from apbot.read.text import Unit
+from apbot.read.values import find_ranges, seconds
 
 _CHOSEN_RE = re.compile(
     r"\b(?:of|for)\s+the\s+(?:selected|chosen|current|active)\s+(?P<noun>[a-z]+)", re.I
@@ -54,6 +57,8 @@ def chosen_cases(b: Builder) -> None:
             if spec.get("depends_on") not in (None, parent):
                 continue
             cases = _table_cases(b, name, parent, pspec["values"])
+            if cases and spec.get("type") == "time" and not _timed(cases):
+                cases = None  # a time takes only rows told as times
             # "of the selected zone": each keeps its own, whether a table gives the ranges or not
             remember = not spec.get("depends_on") and _said_of_the_chosen(b, tokens, parent, name)
             if cases is None and remember:
@@ -65,6 +70,7 @@ def chosen_cases(b: Builder) -> None:
                 continue
             for key in ("ranges", "initial", "values"):
                 spec.pop(key, None)
+            _as_time(spec, cases)
             spec["depends_on"] = parent
             spec["cases"] = cases
             if remember:
@@ -91,7 +97,7 @@ def _paired_amounts(b: Builder) -> list[tuple[str, list[str]]]:
             isinstance(effect, dict)
             and {"next", "prev"} <= {e for e in effect.values() if isinstance(e, str)}
             and var in b.variables
-            and b.variables[var].get("type") == "numeric"
+            and b.variables[var].get("type") in ("numeric", "time")
             and var not in {o[0] for o in out}
         ):
             tokens = [c for i in b.infos if i.name in effect for c in i.controls]
@@ -125,9 +131,9 @@ def _table_cases(
 ) -> dict[str, dict[str, Any]] | None:
     """A table with a column of the choice's values and a bare "Range" column, in a section
     that names the amount: each row's range, step and starting value."""
-    own = {w for w in words(name.replace("_", " ")) if len(w) >= 4}
+    own = {stem(w) for w in words(name.replace("_", " ")) if len(w) >= 4}  # HOLD: "Holding"
     for header, rows in _tables(b.manual.units):
-        if len(rows) < 2 or not own & set(words(rows[0].heading or "")):
+        if len(rows) < 2 or not own & {stem(w) for w in words(rows[0].heading or "")}:
             continue
         hits = [
             sum(len(_parent_values(_cell(r, c), values)) == 1 for r in rows)
@@ -151,11 +157,15 @@ def _table_cases(
         step = next((c for c in range(len(header)) if "step" in words(header[c])), None)
         start = next((c for c in range(len(header)) if set(words(header[c])) & _START_HEAD), None)
         cases: dict[str, dict[str, Any]] = {}
+        times: dict[str, dict[str, Any]] = {}  # the same rows, when each is a time in words
         for row in rows:
             found = _parent_values(_cell(row, keyed), values)
             m = _SPAN_RE.search(_cell(row, span))
             if len(found) != 1 or m is None:
                 continue
+            timed = _time_case(row, span, step, start)
+            if timed is not None:
+                times[found[0]] = timed
             low, high = _num(m.group(1)), _num(m.group(2))
             by = _first_number(_cell(row, step)) if step is not None else None
             case: dict[str, Any] = {"ranges": [[low, high, by or 1]]}
@@ -164,8 +174,47 @@ def _table_cases(
                 case["initial"] = first
             cases[found[0]] = case
         if len(cases) >= 2:
-            return cases
+            return times if times.keys() == cases.keys() else cases
     return None
+
+
+def _time_case(row: Unit, span: int, step: int | None, start: int | None) -> dict[str, Any] | None:
+    """A row whose range is a time in words ("15 – 45 minutes", "15 – 60 seconds"): its range,
+    step and start in seconds (rows of one table may count in different units), or None."""
+    found = find_ranges(_cell(row, span))
+    if len(found) != 1 or found[0].unit not in ("s", "min", "h"):
+        return None
+    r = found[0]
+    low, high = seconds(r.low, r.unit), seconds(r.high, r.unit)
+    by = _quantity(_cell(row, step), r.unit) if step is not None else None
+    case: dict[str, Any] = {"ranges": [[format_hms(low), format_hms(high), by or 60]]}
+    first = _quantity(_cell(row, start), r.unit) if start is not None else None
+    if first is not None and low <= first <= high:
+        case["initial"] = format_hms(first)
+    return case
+
+
+def _quantity(cell: str, unit: str) -> int | None:
+    """A cell's amount of time in seconds ("5 minutes"; a bare "5" in the range's unit)."""
+    told = parse_quantity(cell.strip().lower())
+    if told and told[1] == "time":
+        return int(told[0])
+    n = _first_number(cell)
+    return seconds(n, unit) if n is not None else None
+
+
+def _as_time(spec: dict[str, Any], cases: dict[str, dict[str, Any]]) -> None:
+    """A setting whose cases were read as times: a time, shown as minutes:seconds when a step
+    is under a minute."""
+    if _timed(cases):
+        spec["type"] = "time"
+        spec.pop("unit", None)
+        steps = [c["ranges"][0][2] for c in cases.values()]
+        spec["format"] = "mm:ss" if min(steps) < 60 else "h:mm"
+
+
+def _timed(cases: dict[str, dict[str, Any]]) -> bool:
+    return all(isinstance(c["ranges"][0][0], str) for c in cases.values())
 
 
 def _cell(row: Unit, column: int) -> str:

@@ -61,6 +61,7 @@ from apbot.read.shapes import (
     _without_advice,
     is_wait,
 )
+from apbot.read.table_spans import column_span
 from apbot.read.text_sections import other_model, surroundings
 from apbot.read.value_lists import named_list
 from apbot.read.values import (
@@ -235,6 +236,8 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
                     ranges = [Range(ranges[0].low, ranges[0].high, ranges[0].unit, row_step)]
             if unit.cells:  # "| 1 – 2 |" then "| 3 – 4 |" … "| 9 – 10 |": groups of one setting
                 ranges = [_rows_span(units, i, r) for r in ranges]
+                if len(ranges) == 1:  # "| Situation | Mode | Pressure |": the whole column's
+                    ranges = [column_span(units, i, ranges[0], own_words)]
             pieces = find_stepped_pieces(told) if not ev.ranges else []
             arrows = find_arrow_pieces(text)  # "1 h → … → 12 h one hour per press 12 h → …"
             if arrows and _fits("s", tokens) and _covers(arrows, ev.ranges):

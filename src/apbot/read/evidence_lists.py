@@ -275,8 +275,9 @@ class ListReader(OwnWords):
             column = _next_table_column(units, i, index) or (
                 [] if index else _quantity_column(units, i)
             )
-            if _keyed_examples(units, i):
-                column = []  # "| You type | Display | Cooking time |": worked examples
+            if _keyed_examples(units, i) or self._guide_of_others(i, tokens):
+                column = []  # "| You type | Display | Cooking time |": worked examples; a
+                # guide's rows ("| Knife | Angle |"): knives, each with the angle advised
             if not column and text == unit.heading:
                 column = self._counted_chart(i)
             if column:

@@ -9,7 +9,7 @@ from __future__ import annotations
 import re
 
 from apbot.read.labels import Label, words
-from apbot.read.shapes import CHOICE_WORDS, GROUP_NOUNS, _next_table_column
+from apbot.read.shapes import _DISPLAY_HEAD_RE, CHOICE_WORDS, GROUP_NOUNS, _next_table_column
 from apbot.read.text import Manual
 
 # the head of a chart's first column numbering its rows ("No.", "Nr.", "#", "Prog. no.")
@@ -44,6 +44,28 @@ class TableReader:
             set(words(header[0])) & (self._other_keys_words(tokens) - set(words(" ".join(own))))
         )
         return named[0] if named and led else 0
+
+    def _guide_of_others(self, i: int, tokens: list[str]) -> bool:
+        """Whether the table after unit ``i`` is a guide of other things: its header names the
+        key in a later column only ("| Knife | Angle | Stages |" under "ANGLE AND STAGE
+        GUIDE"), so each row is a knife, a food or a situation with the setting advised for
+        it, and its first column holds no value of the key (a column numbering the rows, or
+        printing each value as the display shows it, is left to the chart readers)."""
+        units = self.manual.units
+        k = i + 1
+        if k >= len(units) or not units[k].cells or units[k].header:
+            return False
+        header = [c.strip(" *.").upper() for c in units[k].cells]
+        own = {self.labels[t].text.strip(" .").upper() for t in tokens if t in self.labels}
+        lead = header[0]
+        if (
+            len(header) < 3
+            or lead in own
+            or _NUMBER_HEAD_RE.match(lead)
+            or _DISPLAY_HEAD_RE.match(lead)
+        ):
+            return False  # ("| Display | Mode |": each mode as shown, then what it does)
+        return any(cell in own for cell in header[1:]) and self._own_column(i, tokens) == 0
 
     def _other_keys_words(self, tokens: list[str]) -> set[str]:
         """The words naming the panel's other keys (a table or a sentence they lead is theirs)."""

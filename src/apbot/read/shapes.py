@@ -351,7 +351,7 @@ def _next_table_column(units: list[Unit], i: int, column: int = 0) -> list[str]:
     return items if len(items) >= 2 else []
 
 
-_DISPLAY_HEAD_RE = re.compile(r"\s*(?:display|screen|shown|shows)\b", re.I)
+_DISPLAY_HEAD_RE = re.compile(r"\s*(?:disp(?:lay)?|screen|shown|shows)\b", re.I)  # ("Disp.")
 
 
 def _without_display_word(items: list[str]) -> list[str]:

@@ -17,7 +17,7 @@ from apbot.read.errors import ReaderError
 from apbot.read.marks_legend import legend_meanings
 from apbot.read.text_boxes import unbox
 from apbot.read.text_html import html_tables, tables_apart
-from apbot.read.text_icons import _put, name_icons
+from apbot.read.text_icons import _put, name_icons, named_beside
 from apbot.read.text_pages import (
     _furniture,
     _page_breaks,
@@ -170,6 +170,7 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
     text = name_icons(unbox(text), _KEEP)  # "touch ❄" → "touch COLDER" when a legend names it
     glyphs = text.split("\n")  # (a level shown as segments, "▮▮▯", is read from these)
     text = re.sub(r" ?❄ ?", " ❄ ", text)  # one space each side, not two
+    text = named_beside(text, _KEEP | default_marks(text))  # "☀ HOT": HOT
     # the snowflake is a cold setting: named COLD, the width it adds taken out of the next wide
     # gap, so a chart drawn with spaces keeps its columns (a wrapped cell stays under its own)
     text = _clean_chars(

@@ -44,6 +44,18 @@ def _icon(ch: str, keep: frozenset[str]) -> bool:
     )
 
 
+def named_beside(text: str, keep: frozenset[str]) -> str:
+    """Each icon printed right before the name of what it pictures ("☀ HOT → ◐ WARM → ❄ COOL",
+    "❄ DEFROST") turned into a space: the lamp's picture of a value whose name stands beside
+    it, so the name is read alone (a snowflake alone still reads COLD), at the same width."""
+
+    def one(m: re.Match[str]) -> str:
+        picture = _icon(m.group(1), keep) and unicodedata.category(m.group(1)) == "So"
+        return " " * len(m.group(0)) if picture else m.group(0)  # ("LO ↔ HI": a sign)
+
+    return re.sub(r"(?<![^\s(|\[])(\S)\ufe0f?(?= [A-Z][A-Z]+\b)", one, text)
+
+
 def _legend(text: str, keep: frozenset[str]) -> dict[str, tuple[str, str]]:
     """Icon → (the guide's name for it, its description) from legend rows: a line (or a pipe
     table row) that starts with the icon and has a cell of its own naming a key ("colder

@@ -1,0 +1,70 @@
+"""A setting's span read across a table's column, not from the one row that named it.
+
+Guides and charts give one row per situation, food or programme and, in a later column, the
+setting each row calls for ("| Situation | Mode | Pressure |" with "1 – 2", "5 – 7", "8 – 10"
+…). The row that first mentions the setting gives only a part of what it can do: the setting
+reaches at least every amount its column names, so its span runs from the column's lowest to
+its highest (in the row's own unit; a row in another unit says nothing of it). Programme
+tables read as cases (``cases.py``) still give each programme its own range afterwards.
+"""
+
+from __future__ import annotations
+
+import re
+from itertools import pairwise
+
+from apbot.read.labels import words
+from apbot.read.text import Unit
+from apbot.read.values import Range, find_ranges, number
+
+_BARE_RE = re.compile(r"\s*(\d+(?:[.,]\d+)?)\s*")  # a cell that is one number: "1", "10"
+
+
+def column_span(units: list[Unit], i: int, first: Range, own: set[str]) -> Range:
+    """``first``, read from a later cell of table row ``i`` in the column the setting's own
+    word heads (``own``: its words), widened to every amount that column gives in the table's
+    other rows; ``first`` itself when it came from no such cell."""
+    cells = units[i].cells
+    column = next(
+        (
+            c
+            for c in range(1, len(cells))
+            if [(r.low, r.high, r.unit) for r in find_ranges(cells[c])]
+            == [(first.low, first.high, first.unit)]
+        ),
+        None,
+    )
+    header = units[i].header
+    if column is None or column >= len(header) or not own & set(words(header[column])):
+        return first  # ("| Goal | Workout | Resist. |": another setting's column)
+    amounts: list[tuple[float, float]] = []
+    for row in _table_rows(units, i):
+        cell = row.cells[column] if column < len(row.cells) else ""
+        amounts += [(r.low, r.high) for r in find_ranges(cell) if r.unit == first.unit]
+        bare = _BARE_RE.fullmatch(cell) if not first.unit else None
+        if bare and (n := number(bare.group(1))) is not None:
+            amounts.append((n, n))
+    if _pieces(amounts):
+        return first  # "| Short | 0.5 – 10 h |", "| Long | 10 – 24 h |": pieces, read as such
+    low = min([first.low, *(a for a, _ in amounts)])
+    high = max([first.high, *(b for _, b in amounts)])
+    if (low, high) == (first.low, first.high):
+        return first
+    return Range(low, high, first.unit, first.step)
+
+
+def _pieces(amounts: list[tuple[float, float]]) -> bool:
+    """Whether the column's amounts follow on from one another, row by row, without overlap:
+    the pieces of one range, each with its own step (a guide's advice overlaps and jumps)."""
+    return all(b[0] >= a[1] for a, b in pairwise(amounts))
+
+
+def _table_rows(units: list[Unit], i: int) -> list[Unit]:
+    """The rows of the table row ``i`` stands in: the units around it under the same header."""
+    header = units[i].header
+    start, end = i, i
+    while start > 0 and units[start - 1].cells and units[start - 1].header == header:
+        start -= 1
+    while end + 1 < len(units) and units[end + 1].cells and units[end + 1].header == header:
+        end += 1
+    return units[start : end + 1]
