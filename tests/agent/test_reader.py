@@ -126,6 +126,19 @@ def test_more_on_the_display_than_the_belief_prints_is_a_partial_reading(
     assert hypothesis.partial and hypothesis.values == {"mode": "fan"}
 
 
+def test_an_unknown_word_in_the_first_part_is_read_beside_a_screen_found_after_it(
+    reader: DisplayReader,
+) -> None:
+    # the main screen comes first; another setting's screen printed after it (PL7) must not
+    # hide a word there that spells a value short (GR for grill): both are kept as readings
+    assert {"mode": "GR"} in focus_readings(reader, "MODE GR  PL7", "mode")
+    assert {"level": 7} in focus_readings(reader, "MODE GR  PL7", "level")
+    # a word like none of the values stays unread: it may be a part, not a value
+    assert focus_readings(reader, "MODE turbo  PL7", "mode") == []
+    # a first part the belief reads itself needs nothing more
+    assert focus_readings(reader, "MODE grill  PL7", "mode") == [{"mode": "grill"}]
+
+
 def test_lamps_are_read_around_a_screen_found_inside_unknown_text(
     reader: DisplayReader,
 ) -> None:

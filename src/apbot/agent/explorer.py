@@ -96,10 +96,13 @@ class Explorer(WalkLearning):
         ]
         current = last_walk[-1] if last_walk else seen[-1]
         self.stuck = None
-        if len(set(map(repr, seen))) >= 2 and not renamed:  # renamed: the walk was as predicted
+        several = len(set(map(repr, seen))) >= 2
+        if several and not renamed:  # renamed: the walk was as predicted
             self.learn(name, pointer, key.name, opposite, forward, backward, current)
-        elif opposite is None and not every:  # one value over and over, no other key in the
-            # step: at an end, or not this key's setting at all — nothing to say about the range
+        elif opposite is None and not every and not several:
+            # one value over and over, no other key in the step: at an end, or not this key's
+            # setting at all — nothing to say about the range. A renamed walk that read several
+            # values went round: it is not stuck, and probing other keys would only move them
             self.stuck = (name, pointer, key)
         self.session.belief.set_value(name, current)
         for _ in range(unseen):  # presses taken in the dark: the (repaired) model says where to

@@ -122,6 +122,8 @@ class DisplayReader(CompiledDisplay):
                 for p in self._patterns
                 if p.search is not None and (h := self._match(p, main, parents, True, text))
             ]
+            if found and not self._head_read(text.strip()):
+                found += [h for h in self._loose_head(text.strip(), parents) if self._shortens(h)]
         if not found and text.strip():  # a word the belief does not know
             found = [h for p in self._loose if (h := self._match(p, text, parents, False))]
         if not found and text.strip():
@@ -156,6 +158,30 @@ class DisplayReader(CompiledDisplay):
         if found and self._loose_reading(_GAP.split(tail)[0], parents):
             return []
         return found
+
+    def _head_read(self, text: str) -> bool:
+        """Whether the first part of a display that prints several (``FAN HI  W 2d``) is a
+        screen the belief prints: when it is not, a reading found only among the other parts
+        (the water's ``W 2d``) leaves the main screen unread, and its word the belief does
+        not know (``HI``) is evidence worth reading as well (:meth:`_loose_head`)."""
+        gap = _GAP.search(text)
+        if gap is None:
+            return True
+        head = text[: gap.start()]
+        return any(p.search is not None and p.search.fullmatch(head) for p in self._patterns)
+
+    def _shortens(self, hypothesis: Hypothesis) -> bool:
+        """Whether every word the belief does not know in ``hypothesis`` spells one of its
+        setting's values short (``HI`` for high): read beside another screen, only such a word
+        is surely that setting's; others (``ORANGE`` for a heat level) are left unread, for
+        the walk to learn as the parts they are, not as new values the goal cannot name."""
+        from apbot.agent.displays import spells_value  # (displays reads through this module)
+
+        return all(
+            isinstance(spec := self._specs[name], DiscreteVariable)
+            and any(spells_value(str(word), value) for value in all_values(spec))
+            for name, word in hypothesis.outside.items()
+        )
 
     def _loose_reading(self, part: str, parents: dict[str, Any]) -> bool:
         """Whether ``part`` reads as a setting's screen with a word the belief does not know."""
