@@ -382,3 +382,17 @@ def test_the_pair_s_own_setting_named_outside_the_walk_stays() -> None:
         s[0].variable for s in model.features.values() if s[0].actions == ["press_up", "press_down"]
     ]
     assert own and "temperature" in str(own[0])
+
+
+def test_a_key_held_to_save_is_no_pause_ending_the_walk() -> None:
+    # the walk ends by holding its key ("hold MODE for 2 seconds to save"), and a note says how
+    # to leave by a hold: neither is a pause of 2 seconds after which the menu closes by itself
+    end = "  7. Press and hold MODE for 2 seconds to save the settings and leave the menu.\n"
+    note = "To go back, hold MODE for 2 seconds; the display returns to the room temperature."
+    text = HEATER.replace(
+        "If you touch no key for 6 seconds, the menu closes and the settings are stored.", note
+    ).replace("switch it off.\n", f"switch it off.\n{end}")
+    model = read_manual(text, HEATER_ACTIONS).model
+    walk = next(s for s in model.features.values() if s[0].actions == ["hold_mode"])
+    assert len(walk) == 6
+    assert all(s.timeout is None for s in walk)
