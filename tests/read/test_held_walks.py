@@ -396,3 +396,14 @@ def test_a_key_held_to_save_is_no_pause_ending_the_walk() -> None:
     walk = next(s for s in model.features.values() if s[0].actions == ["hold_mode"])
     assert len(walk) == 6
     assert all(s.timeout is None for s in walk)
+
+
+def test_the_pair_s_own_setting_stays_though_a_field_shares_its_word() -> None:
+    # the frost guard's field says "temperature" too: the room temperature the legend gives
+    # ▲ / ▼ is still theirs, not a guess the walk's words made
+    text = THERMOSTAT.replace("shows the frost guard,", "shows the frost guard temperature,")
+    model = read_manual(text, THERMOSTAT_ACTIONS).model
+    own = [
+        s[0].variable for s in model.features.values() if s[0].actions == ["press_up", "press_down"]
+    ]
+    assert own and "temperature" in str(own[0])

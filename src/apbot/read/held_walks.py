@@ -21,7 +21,7 @@ from typing import Any
 from apbot.model.values import format_hms
 from apbot.read.build import Builder
 from apbot.read.code_words import own_lines
-from apbot.read.held_guesses import drop_guess, drop_key_guesses
+from apbot.read.held_guesses import drop_guess, drop_key_guesses, says
 from apbot.read.roles_fasthold import held_time_step
 from apbot.read.text import Unit
 from apbot.read.values import find_ranges, find_step
@@ -64,10 +64,6 @@ def _pause(text: str) -> float | None:
         if not _HELD_FOR_RE.search(text[: m.start()]):
             return float(m.group(1) or 5)
     return None
-
-
-def _says(text: str, label: str) -> bool:
-    return re.search(rf"(?<!\w){re.escape(label)}(?!\w)", text, re.I) is not None
 
 
 def _pairs(b: Builder) -> list[tuple[list[str], list[str]]]:
@@ -261,7 +257,7 @@ def _pair_of(
     for up, down in pairs:
         ups = [b.labels[t].text for a in up for t in _controls(b, a) if t in b.labels]
         downs = [b.labels[t].text for a in down for t in _controls(b, a) if t in b.labels]
-        if any(_says(text, x) for x in ups) and any(_says(text, x) for x in downs):
+        if any(says(text, x) for x in ups) and any(says(text, x) for x in downs):
             return up, down
     dials = [p for p in pairs if all(_turned(b, a) for a in p[0] + p[1])]
     if len(dials) == 1 and _TURN_RE.search(text):  # "Turn the knob to choose …"
