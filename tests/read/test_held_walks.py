@@ -407,3 +407,15 @@ def test_the_pair_s_own_setting_stays_though_a_field_shares_its_word() -> None:
         s[0].variable for s in model.features.values() if s[0].actions == ["press_up", "press_down"]
     ]
     assert own and "temperature" in str(own[0])
+
+
+def test_a_page_or_model_span_in_a_step_is_no_range_of_levels() -> None:
+    # "see pages 12-14" and "models 200-300" beside the pair are references, not the field's
+    # bare levels 12 to 14 or 200 to 300: the walk does not read a field from them
+    for aside in ("(see pages 12-14)", "(models 200-300 only)"):
+        text = HEATER.replace("(g1, g2, g3; stops at both ends)", aside)
+        model = read_manual(text, HEATER_ACTIONS).model
+        walks = [s for s in model.features.values() if s[0].actions == ["hold_mode"]]
+        fields = {s.variable for w in walks for s in w if s.variable}
+        lows = {r[0] for v in fields for r in getattr(model.variables[v], "ranges", None) or []}
+        assert not lows & {12, 200}, aside
