@@ -125,3 +125,12 @@ def test_a_switch_word_in_another_settings_name_is_no_switch() -> None:
         "glow": "on",
         "glow_time": "3 min",
     }
+
+
+def test_a_switch_said_on_after_its_compound_stays_the_switch() -> None:
+    # "the glow light on for 5 minutes": GLOW's word before a noun, then its state said
+    assert _garden("Switch the glow light on for 5 minutes.") == {
+        "glow": "on",
+        "glow_time": "5 min",
+    }
+    assert _garden("Put the glow timer on 5 minutes.") == {"glow_time": "5 min"}
