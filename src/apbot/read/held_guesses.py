@@ -24,13 +24,7 @@ def drop_guess(b: Builder, hold: str) -> str:
             continue  # (a hold opening a setting read as the key's own "…_hold" is a guess)
         del b.features[fname]
         for var in names:
-            used = any(s.get("variable") == var for st in b.features.values() for s in st)
-            if var in b.variables and not used:
-                del b.variables[var]
-                for steps in b.features.values():  # nor does a choice reset it any more
-                    for step in steps:
-                        if var in step.get("reset", []):
-                            step["reset"] = [r for r in step["reset"] if r != var]
+            _drop_unused(b, str(var))
         var = names[0]
         if len(old) == 1 and isinstance(var, str) and not var.endswith("_hold"):
             prefix = f"{var}_"
@@ -67,9 +61,20 @@ def drop_key_guesses(b: Builder, keys: set[str], said: str) -> None:
         ):
             del b.features[fname]
             for var in names:
-                used = any(s.get("variable") == var for st in b.features.values() for s in st)
-                if not used:
-                    b.variables.pop(str(var), None)
+                _drop_unused(b, str(var))
+
+
+def _drop_unused(b: Builder, var: str) -> None:
+    """Drop a guessed setting no feature sets any more, and every choice's reset of it."""
+    if var not in b.variables or any(
+        s.get("variable") == var for st in b.features.values() for s in st
+    ):
+        return
+    del b.variables[var]
+    for steps in b.features.values():
+        for step in steps:
+            if var in step.get("reset", []):
+                step["reset"] = [r for r in step["reset"] if r != var]
 
 
 def _legend_names(b: Builder, var: str, labels: list[str], said: str) -> bool:
