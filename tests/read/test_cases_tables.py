@@ -42,3 +42,10 @@ def test_only_a_note_about_the_whole_table_makes_it_advice() -> None:
         units = parse_manual(DRYER.format(note=note), ["mode", "temp"]).units
         ((_, rows),) = _tables(units)
         assert advice_table(units, rows) is advice
+
+
+def test_a_chart_called_recommended_but_not_left_to_the_user_stays_per_programme() -> None:
+    # "recommendations only; adjust them": each mode still sets them, the user may change them
+    note = "  These settings are recommendations only; adjust them to the amount of food.\n"
+    model = read_manual(DRYER.format(note=note), ACTIONS).model
+    assert model.variables["temp"].depends_on == "mode"

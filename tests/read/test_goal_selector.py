@@ -99,6 +99,12 @@ def test_a_switching_time_sets_auto() -> None:
     assert _garden("Dusk on at half past eight in the evening.")["mode"] == "auto"
 
 
+def test_on_before_an_article_is_a_preposition() -> None:
+    # "on the timer" is its programmed times, "on the patio" a place: neither says it on now
+    assert _garden("Keep the lights on the timer.") == {"mode": "auto"}
+    assert _garden("Put the light on the patio table.").get("mode") != "on"
+
+
 def test_a_switch_named_or_the_clock_is_no_selector() -> None:
     assert _garden("It's 10:20 now, set the clock, and switch on the glow.") == {
         "clock": "10:20:00",
@@ -119,3 +125,12 @@ def test_a_switch_word_in_another_settings_name_is_no_switch() -> None:
         "glow": "on",
         "glow_time": "3 min",
     }
+
+
+def test_a_switch_said_on_after_its_compound_stays_the_switch() -> None:
+    # "the glow light on for 5 minutes": GLOW's word before a noun, then its state said
+    assert _garden("Switch the glow light on for 5 minutes.") == {
+        "glow": "on",
+        "glow_time": "5 min",
+    }
+    assert _garden("Put the glow timer on 5 minutes.") == {"glow_time": "5 min"}

@@ -382,3 +382,40 @@ def test_the_pair_s_own_setting_named_outside_the_walk_stays() -> None:
         s[0].variable for s in model.features.values() if s[0].actions == ["press_up", "press_down"]
     ]
     assert own and "temperature" in str(own[0])
+
+
+def test_a_key_held_to_save_is_no_pause_ending_the_walk() -> None:
+    # the walk ends by holding its key ("hold MODE for 2 seconds to save"), and a note says how
+    # to leave by a hold: neither is a pause of 2 seconds after which the menu closes by itself
+    end = "  7. Press and hold MODE for 2 seconds to save the settings and leave the menu.\n"
+    note = "To go back, hold MODE for 2 seconds; the display returns to the room temperature."
+    text = HEATER.replace(
+        "If you touch no key for 6 seconds, the menu closes and the settings are stored.", note
+    ).replace("switch it off.\n", f"switch it off.\n{end}")
+    model = read_manual(text, HEATER_ACTIONS).model
+    walk = next(s for s in model.features.values() if s[0].actions == ["hold_mode"])
+    assert len(walk) == 6
+    assert all(s.timeout is None for s in walk)
+
+
+def test_the_pair_s_own_setting_stays_though_a_field_shares_its_word() -> None:
+    # the frost guard's field says "temperature" too: the room temperature the legend gives
+    # ▲ / ▼ is still theirs, not a guess the walk's words made
+    text = THERMOSTAT.replace("shows the frost guard,", "shows the frost guard temperature,")
+    model = read_manual(text, THERMOSTAT_ACTIONS).model
+    own = [
+        s[0].variable for s in model.features.values() if s[0].actions == ["press_up", "press_down"]
+    ]
+    assert own and "temperature" in str(own[0])
+
+
+def test_a_page_or_model_span_in_a_step_is_no_range_of_levels() -> None:
+    # "see pages 12-14" and "models 200-300" beside the pair are references, not the field's
+    # bare levels 12 to 14 or 200 to 300: the walk does not read a field from them
+    for aside in ("(see pages 12-14)", "(models 200-300 only)"):
+        text = HEATER.replace("(g1, g2, g3; stops at both ends)", aside)
+        model = read_manual(text, HEATER_ACTIONS).model
+        walks = [s for s in model.features.values() if s[0].actions == ["hold_mode"]]
+        fields = {s.variable for w in walks for s in w if s.variable}
+        lows = {r[0] for v in fields for r in getattr(model.variables[v], "ranges", None) or []}
+        assert not lows & {12, 200}, aside

@@ -81,15 +81,29 @@ _ADVICE_NOTE_RE = re.compile(
 )
 
 
+# ... said with the appliance leaving them to the user: "the sharpener does not choose these
+# settings itself", "the console does not set them for you" (a preset chart "recommended" but
+# set by each preset, "These settings are recommendations only; adjust them", stays)
+_NOT_SET_RE = re.compile(
+    r"\b(?:does\s+not|doesn't|do\s+not|don't|will\s+not|won't|cannot|can't|is\s+not|are\s+not)"
+    r"\s+(?:\w+\s+){0,2}?(?:set|sets|choose|select|apply|store|adjust|make)\b",
+    re.IGNORECASE,
+)
+
+
 def advice_table(units: list[Unit], rows: list[Unit]) -> bool:
     """Whether the manual says, just before or after the table (in its section), that its values
-    are only advice: a guide to choosing settings (knife → angle, pool → cycle), whose rows are
-    then no programmes each setting depends on, however its first column happens to read."""
+    are only advice that the appliance does not set itself: a guide to choosing settings (knife
+    → angle, pool → cycle), whose rows are then no programmes each setting depends on, however
+    its first column happens to read."""
     ids = {id(u) for u in rows}
     at = [i for i, u in enumerate(units) if id(u) in ids]
     if not at:
         return False
     near = [*range(max(0, at[0] - 2), at[0]), *range(at[-1] + 1, min(at[-1] + 5, len(units)))]
     return any(  # (a footnote or two may come between: "* A very dull knife: …")
-        _ADVICE_NOTE_RE.match(units[i].text) and units[i].heading == rows[0].heading for i in near
+        _ADVICE_NOTE_RE.match(units[i].text)
+        and units[i].heading == rows[0].heading
+        and any(_NOT_SET_RE.search(u.text) for u in units[i : i + 2])
+        for i in near
     )

@@ -23,6 +23,8 @@ _VERBS = frozenset({"turn", "switch", "keep", "leave", "put", "power", "have", "
 _VERBS |= frozenset({"turned", "switched", "kept", "left"})
 _BETWEEN = frozenset({"the", "it", "them", "all", "my", "our"})
 _STOPS = CLAUSE_ENDS | {",", "and", "then", "but", "so", "until", "till", "when", "with"}
+# "on the timer", "on a 12 hour programme", "on the shelf": a place or a mode, not a state
+_ARTICLES = frozenset({"the", "a", "an", "its", "my", "our", "their", "this", "that"})
 _AUTO = frozenset(concept(w) for w in ("auto", "automatic", "timer", "programme", "program"))
 
 
@@ -80,6 +82,11 @@ def on_auto_off(view: Model, text: Text, goal: Goal) -> None:
         return
     name, on, off, auto = selector
     for k, token in enumerate(text.tokens):
+        if token.text == "on" and text.word(k + 1) in _ARTICLES:
+            if concept(text.word(k + 2)) in _AUTO and _state_said(view, text, k):
+                goal[name] = auto  # "keep the lights on the timer": its programmed times
+                return
+            continue  # "put it on the shelf": "on" a preposition
         if token.text in ("on", "off") and _state_said(view, text, k) and not _at_a_time(text, k):
             goal[name] = on if token.text == "on" else off
             return

@@ -241,6 +241,8 @@ def _in_anothers_name(
         compound = compound and text.stems[k + 1] not in _MODE_NOUNS  # "night mode": the switch
         named = other.vocab.get(text.concepts[k], 0.0) > 0
         if compound and named and at is not None and k < at <= k + 5:
+            if any(text.word(x) in ON_WORDS + OFF_WORDS for x in range(k + 2, at - 1)):
+                continue  # "the glow light on for 5 minutes": the switch, its state said
             return True
     return False
 

@@ -21,7 +21,7 @@ from typing import Any
 from apbot.model.values import format_hms
 from apbot.read.build import Builder
 from apbot.read.code_words import own_lines
-from apbot.read.held_guesses import drop_guess, drop_key_guesses
+from apbot.read.held_guesses import drop_guess, drop_key_guesses, says
 from apbot.read.roles_fasthold import held_time_step
 from apbot.read.text import Unit
 from apbot.read.values import find_ranges, find_step
@@ -41,6 +41,9 @@ _BARE = frozenset({"length", "duration", "time", "setting", "value", "level"})
 _STORED_RE = re.compile(
     r"\b(?:for|after|wait)\s+(?:(\d+)|a few)\s+seconds?\b[^.]*|\bstored\b[^.]*\bseconds\b", re.I
 )
+# a key held for those seconds is no pause: "Press and hold MODE for 2 seconds to save",
+# "hold MODE for 2 seconds; the display returns to …", "keep SET pressed for 3 seconds"
+_HELD_FOR_RE = re.compile(r"\b(?:hold|holding|held|keep\s+\S+\s+pressed)\b[^.;:]*$", re.I)
 # a step the walk may pass over: "To keep it unchanged, go straight to step 3."
 _SKIP_RE = re.compile(
     r"\bgo\s+(?:straight|directly)\s+(?:on\s+)?to\s+step\b|\bskip\s+(?:this|the)\s+step\b", re.I
@@ -54,8 +57,13 @@ _HOURS_RE = re.compile(r"\bhours?\b", re.I)
 _MINUTES_RE = re.compile(r"\bminutes?\b", re.I)
 
 
-def _says(text: str, label: str) -> bool:
-    return re.search(rf"(?<!\w){re.escape(label)}(?!\w)", text, re.I) is not None
+def _pause(text: str) -> float | None:
+    """The seconds of a pause without a key after which the walk ends ("Do not touch any key
+    for 5 seconds: the setting is stored"), not a key held that long."""
+    for m in _STORED_RE.finditer(text):
+        if not _HELD_FOR_RE.search(text[: m.start()]):
+            return float(m.group(1) or 5)
+    return None
 
 
 def _pairs(b: Builder) -> list[tuple[list[str], list[str]]]:
@@ -181,16 +189,16 @@ def _timeout(b: Builder, end: str, at: int) -> float | None:
     """The pause after which the walk ends by itself: said in its last step ("Wait 10 seconds
     without touching a key"), else in a note of its section ("If you press no key for 8
     seconds, the menu closes by itself")."""
-    stored = _STORED_RE.search(end)
-    if stored:
-        return float(stored.group(1) or 5)
+    pause = _pause(end)
+    if pause is not None:
+        return pause
     units = b.manual.units
     for u in units[at : at + 25]:
         if u.heading != units[at].heading:
             break
-        stored = _STORED_RE.search(u.text)
-        if stored and u.step is None and _CLOSES_RE.search(u.text):
-            return float(stored.group(1) or 5)
+        pause = _pause(u.text)
+        if pause is not None and u.step is None and _CLOSES_RE.search(u.text):
+            return pause
     return None
 
 
@@ -222,8 +230,7 @@ def _one_walk(
     if not name or name in _BARE:
         name = "_".join([*re.findall(r"[a-z]+", label.lower()), name or "setting"])
     field.update(name=name, label=field_label(opened, label))
-    stored = _STORED_RE.search(rest[0]) if rest else None
-    timeout = float(stored.group(1) or 5) if stored else None
+    timeout = _pause(rest[0]) if rest else None
     said = " ".join(g[1] for g in groups[:2])
     return {
         "pair": pair,
@@ -250,7 +257,7 @@ def _pair_of(
     for up, down in pairs:
         ups = [b.labels[t].text for a in up for t in _controls(b, a) if t in b.labels]
         downs = [b.labels[t].text for a in down for t in _controls(b, a) if t in b.labels]
-        if any(_says(text, x) for x in ups) and any(_says(text, x) for x in downs):
+        if any(says(text, x) for x in ups) and any(says(text, x) for x in downs):
             return up, down
     dials = [p for p in pairs if all(_turned(b, a) for a in p[0] + p[1])]
     if len(dials) == 1 and _TURN_RE.search(text):  # "Turn the knob to choose …"
@@ -288,8 +295,7 @@ def _clock_walk(
                     holds[info.name] = held if k == 0 else -held
     last = groups[4][1] if len(groups) > 4 else ""
     confirm = _moves_on(last, label)
-    stored = None if confirm else _STORED_RE.search(last)
-    timeout = float(stored.group(1) or 5) if stored else None
+    timeout = None if confirm else _pause(last)
     return {
         "pair": pair,
         "clock": field_label(opened, label),

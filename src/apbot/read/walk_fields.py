@@ -66,6 +66,12 @@ _SWITCHED_RE = re.compile(
 _STOPS_RE = re.compile(
     r"\bstops\b|\bno\s+wrap|\bdoes\s+not\s+(?:go\s+round|wrap)|\bend\s+stops?\b", re.I
 )
+# a span of numbers that refers elsewhere, no levels: "(see pages 12-14)", "models 200-300 only"
+_REFERENCE_RE = re.compile(
+    r"\b(?:pages?|pp?\.|models?|types?|sections?|chapters?|fig(?:ure)?s?\.?)\s*\d+\s*"
+    r"(?:-|–|to|and)\s*\d+",
+    re.I,
+)
 _NOT_WORDS = frozenset({"and", "the", "for", "with", "then", "only"})
 _CODE_RE = re.compile(r"[A-Za-z]{1,3}-?\d{1,2}|[A-Za-z][A-Za-z-]{1,15}")
 
@@ -148,7 +154,7 @@ def read_more_field(shown: str, text: str, at: int) -> dict[str, Any] | None:
     run = _amount_run(text)
     if run is not None:
         return {"name": name or "setting", "evidence": Evidence(ranges=run, range_at=at)}
-    ranges = find_ranges(text)
+    ranges = find_ranges(_REFERENCE_RE.sub(" ", text))
     if len(ranges) == 1 and not ranges[0].unit and ranges[0].high > ranges[0].low:
         ev = Evidence(ranges=ranges, range_at=at)
         return {"name": name or "setting", "evidence": ev}
