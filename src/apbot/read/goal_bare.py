@@ -10,9 +10,10 @@ row of drying, cooking or run times is counted in).
 
 from __future__ import annotations
 
+import re
 from typing import Any
 
-from apbot.read.goal_values import parse_quantity, unit_kind
+from apbot.read.goal_values import parse_quantity
 from apbot.read.goal_view import VarInfo
 from apbot.read.goal_vocab import concept
 from apbot.read.numbers import Mention
@@ -21,14 +22,17 @@ _TIME_WORDS = frozenset(concept(w) for w in ("time", "timer", "duration"))
 
 _MINUTE = 60.0
 
+_PRINTED = re.compile(r"[-+]?\d+(?:\.\d+)?")
+
 
 def _listed_unit(info: VarInfo) -> tuple[str, float] | None:
     """The one (dimension, factor) the list's unit-bearing values share, if they all share one."""
     found = set()
     for value in info.values:
         q = parse_quantity(str(value))
-        if q is not None and q[1] is not None:
-            found.add((q[1], q[2]))
+        printed = _PRINTED.match(str(value).strip())
+        if q is not None and q[1] is not None and printed and float(printed[0]):
+            found.add((q[1], round(q[0] / float(printed[0]), 9)))  # "6 cm": 60 mm per unit 10
     return found.pop() if len(found) == 1 else None
 
 
@@ -42,10 +46,7 @@ def bare_value_fits(info: VarInfo, number: float, mention: Mention) -> bool:
             listed = ("time", _MINUTE)
         said = mention.value  # seconds
     elif mention.kind == "quantity" and mention.dimension is not None and mention.unit:
-        kind = unit_kind(mention.unit)
-        if kind is None:
-            return False
-        said = mention.value * kind[1]
+        said = mention.value  # in the dimension's base unit, as parse_quantity gives values
     else:
         return False
     if listed is None or listed[0] != (mention.dimension or "time"):
