@@ -8,6 +8,7 @@ from typing import Any
 
 from apbot.model.schema import NumericVariable, TimeVariable
 from apbot.model.values import format_hms
+from apbot.read.goal_bare import bare_choice
 from apbot.read.goal_values import parse_quantity, shown_count, unit_kind, unit_text
 from apbot.read.goal_view import Goal, Model, VarInfo, domain_values
 from apbot.read.goal_vocab import concept
@@ -77,6 +78,7 @@ def fit(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
         or _coded_show(info, domain, mention)
         or _show_quantity(info, mention)
         or _named_quantity(view, info, mention, domain)
+        or bare_choice(info, domain, mention)
     )
 
 
