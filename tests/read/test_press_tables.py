@@ -198,3 +198,29 @@ def test_a_guide_led_by_other_things_gives_the_key_no_values_in_its_first_column
     model = read_manual(PENCIL, ["press_power", "turn_point", "press_speed"]).model
     point = model.variables["point"]
     assert point.values == ["blunt", "medium", "fine"], point.values
+
+
+# a hob whose POWER section lists its levels, each with the watts it gives and what it suits
+HOB_LEVELS = """# Induction hob IH-1
+
+## Keys
+| Key | Function |
+|---|---|
+| ON/OFF | Switches the hob on and off. |
+| POWER | Chooses the power level. |
+| TIMER | Sets the timer. |
+
+## POWER
+Press POWER repeatedly to choose the level:
+| Level | Power | Suitable for |
+|---|---|---|
+| P1 | 300 W | Keeping warm |
+| P2 | 800 W | Simmering |
+| P3 | 1200 W | Frying |
+| P4 | 2000 W | Boiling |
+"""
+
+
+def test_a_table_led_by_level_lists_the_keys_own_steps_not_a_guide() -> None:
+    model = read_manual(HOB_LEVELS, ["press_on_off", "press_power", "press_timer"]).model
+    assert any(v.values == ["p1", "p2", "p3", "p4"] for v in model.variables.values())

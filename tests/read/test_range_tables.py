@@ -157,3 +157,26 @@ def test_a_guide_column_of_advised_amounts_spans_every_row_not_the_first() -> No
     model = read_manual(CLIPPER, ["press_power", "press_style", "press_length"]).model
     length = model.variables["length"]
     assert [float(x) for x in length.ranges[0][:2]] == [2, 12], length.ranges
+
+
+# a kettle whose technical data give each model of the range its own temperature span
+KETTLE_MODELS = """# Kettle K-3
+
+## Keys
+| Key | Function |
+|---|---|
+| POWER | Switches the kettle on and off. |
+| TEMP | Next water temperature. |
+
+## Technical data
+| Model | Capacity | Temp |
+|---|---|---|
+| K-3 | 1.0 l | 60 – 90 °C |
+| K-5 | 1.7 l | 40 – 100 °C |
+| K-7 | 1.7 l | 100 °C |
+"""
+
+
+def test_a_table_of_models_gives_no_span_beyond_the_models_own_row() -> None:
+    model = read_manual(KETTLE_MODELS, ["press_power", "press_temp"]).model
+    assert [float(x) for x in model.variables["temp"].ranges[0][:2]] == [60, 90]

@@ -96,3 +96,13 @@ def test_a_chart_cell_saying_not_used_leaves_the_option_out_of_that_programme() 
     assert _toggle_cell("not used") is False
     assert _toggle_cell("✓") is True
     assert _toggle_cell("normal") is None
+
+
+def test_a_lower_case_row_name_under_another_starts_a_row_of_its_own() -> None:
+    # a mode chart whose rows are named in lower case and whose later columns are left blank
+    assert wrapped_cells(("eco", "low", "", "", ""), ("boost", "high", "", "", "")) is None
+    assert wrapped_cells(("", "black tea,", ""), ("", "green tea", "")) == (
+        "",
+        "black tea, green tea",
+        "",
+    )

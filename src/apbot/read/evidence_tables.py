@@ -14,6 +14,9 @@ from apbot.read.text import Manual
 
 # the head of a chart's first column numbering its rows ("No.", "Nr.", "#", "Prog. no.")
 _NUMBER_HEAD_RE = re.compile(r"^\W*(?:(?:prog\w*\.?\s*)?(?:no|nr|n°|number)\.?|#)\W*$", re.I)
+# the head of a first column listing a key's own steps ("| Level | Power | Suitable for |"):
+# its rows are the key's values, each with what it gives, not things the setting is advised for
+_STEP_HEAD_RE = re.compile(r"^\W*(?:levels?|settings?|positions?)\W*$", re.I)
 
 
 class TableReader:
@@ -50,7 +53,8 @@ class TableReader:
         key in a later column only ("| Knife | Angle | Stages |" under "ANGLE AND STAGE
         GUIDE"), so each row is a knife, a food or a situation with the setting advised for
         it, and its first column holds no value of the key (a column numbering the rows, or
-        printing each value as the display shows it, is left to the chart readers)."""
+        printing each value as the display shows it, or headed "Level" or "Setting" as a list of
+        the key's own steps, is left to the chart readers)."""
         units = self.manual.units
         k = i + 1
         if k >= len(units) or not units[k].cells or units[k].header:
@@ -62,6 +66,7 @@ class TableReader:
             len(header) < 3
             or lead in own
             or _NUMBER_HEAD_RE.match(lead)
+            or _STEP_HEAD_RE.match(lead)
             or _DISPLAY_HEAD_RE.match(lead)
         ):
             return False  # ("| Display | Mode |": each mode as shown, then what it does)

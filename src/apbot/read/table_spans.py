@@ -4,7 +4,9 @@ Guides and charts give one row per situation, food or programme and, in a later 
 setting each row calls for ("| Situation | Mode | Pressure |" with "1 – 2", "5 – 7", "8 – 10"
 …). The row that first mentions the setting gives only a part of what it can do: the setting
 reaches at least every amount its column names, so its span runs from the column's lowest to
-its highest (in the row's own unit; a row in another unit says nothing of it). Programme
+its highest (in the row's own unit; a row in another unit says nothing of it). A table whose
+rows are the models of a range ("| Model | Capacity | Temp |") gives each model its own span,
+none of which this appliance reaches beyond its own row. Programme
 tables read as cases (``cases.py``) still give each programme its own range afterwards.
 """
 
@@ -15,6 +17,7 @@ from itertools import pairwise
 
 from apbot.read.labels import words
 from apbot.read.text import Unit
+from apbot.read.text_sections import _MODEL_WORD_RE
 from apbot.read.values import Range, find_ranges, number
 
 _BARE_RE = re.compile(r"\s*(\d+(?:[.,]\d+)?)\s*")  # a cell that is one number: "1", "10"
@@ -37,6 +40,8 @@ def column_span(units: list[Unit], i: int, first: Range, own: set[str]) -> Range
     header = units[i].header
     if column is None or column >= len(header) or not own & set(words(header[column])):
         return first  # ("| Goal | Workout | Resist. |": another setting's column)
+    if header and _MODEL_WORD_RE.search(header[0]):
+        return first  # "| Model | Capacity | Temp |": each row another model's own span
     amounts: list[tuple[float, float]] = []
     for row in _table_rows(units, i):
         cell = row.cells[column] if column < len(row.cells) else ""

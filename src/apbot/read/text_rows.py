@@ -10,7 +10,8 @@ first data row is taken for the header of the rest.
 A cell too long for its column wraps onto the next line, and that line holds nothing but the
 wrapped ends ("100 | 0 | black tea, herbal tea," then "    |   | instant soups, pasta"): a row
 with more cells empty than filled, each filled cell under a filled cell of the row above that
-runs on to it (a comma, a hyphen, a word that needs one more, or a word in lower case). It
+runs on to it (a comma, a hyphen, a word that needs one more, or a word in lower case outside
+the first column, whose lower-case words name rows of their own: "eco", then "boost"). It
 belongs to the row above, cell by cell; read as a row of its own it is a row of blanks, which
 ends a chart's run of levels and adds nothing a setting could be.
 """
@@ -30,9 +31,12 @@ _RUNS_ON = re.compile(
 )
 
 
-def _continues(above: str, below: str) -> bool:
-    """Whether ``below`` goes on with the cell ``above`` (its wrapped end)."""
-    return bool(above) and (bool(_RUNS_ON.search(above)) or below[:1].islower())
+def _continues(above: str, below: str, lead: bool = False) -> bool:
+    """Whether ``below`` goes on with the cell ``above`` (its wrapped end). In the first
+    column (``lead``), which names each row, a word in lower case is the next row's name
+    ("eco" then "boost"): only a cell that needs more runs on there."""
+    runs_on = bool(_RUNS_ON.search(above))
+    return bool(above) and (runs_on or (below[:1].islower() and not lead))
 
 
 def wrapped_cells(above: tuple[str, ...], row: tuple[str, ...]) -> tuple[str, ...] | None:
@@ -45,7 +49,7 @@ def wrapped_cells(above: tuple[str, ...], row: tuple[str, ...]) -> tuple[str, ..
     filled = [k for k, cell in enumerate(row) if cell]
     if not filled or len(filled) * 2 > len(row):
         return None
-    if not all(_continues(above[k], row[k]) for k in filled):
+    if not all(_continues(above[k], row[k], k == 0) for k in filled):
         return None
     merged = list(above)
     for k in filled:
