@@ -95,3 +95,10 @@ def test_signs_and_ranges(text: str, number: float | None) -> None:
 def test_negative_quantities_keep_their_sign() -> None:
     assert parse_quantity("-5 °C") == (-5, "temperature", 1.0)
     assert parse_quantity("-18") == (-18, None, 1.0)
+
+
+def test_micrometres_are_a_length() -> None:
+    """Pouches and films are sold by the micron ("80 mic", "150 µm"): a length, never minutes."""
+    assert parse_quantity("150 µm") == (0.15, "length", 1.0)
+    assert parse_quantity("80 mic") == parse_quantity("80 microns") == (0.08, "length", 1.0)
+    assert parse_quantity("150µm") == (0.15, "length", 1.0)

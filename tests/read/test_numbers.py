@@ -152,3 +152,10 @@ def test_a_dotted_time_with_its_half_of_the_day_and_a_bare_hour_with_a_day_part(
         ("clock", 22 * 3600),
     ]
     assert mentions("cook 2.50 kg") == [("quantity", 2500)]
+
+
+def test_a_thickness_in_micrometres_is_no_duration() -> None:
+    """The micro sign is no word letter: "150 µm" once read as 150 minutes (its bare "m")."""
+    assert [t.text for t in tokenize("150 µm pouches")] == ["150", "micron", "pouches"]
+    assert [t.text for t in tokenize("175μm")] == ["175", "micron"]  # Greek mu, no space
+    assert not [m for m in find_mentions(tokenize("150 µm pouches")) if m.kind == "duration"]

@@ -215,6 +215,7 @@ _units("mass", 28.349523125, "oz", "ounce", "ounces")
 _units("volume", 1, "ml", "millilitre", "millilitres", "milliliter", "milliliters")
 _units("volume", 1000, "l", "litre", "litres", "liter", "liters")
 _units("length", 1, "mm", "millimetre", "millimetres", "millimeter", "millimeters")
+_units("length", 0.001, "µm", "μm", "micron", "microns", "micrometre", "micrometres", "mic")
 _units("length", 10, "cm", "centimetre", "centimetres", "centimeter", "centimeters")
 _units("power", 1, "w", "watt", "watts")
 _units("power", 1000, "kw", "kilowatt", "kilowatts")
@@ -238,7 +239,7 @@ def unit_of(text: str) -> tuple[str, float] | None:
 def _split_quantities(text: str) -> list[tuple[float, str]] | None:
     """Split "1 h 30 min", "2hrs", "half an hour", "fifty percent" into (number, unit) pairs."""
     cleaned = text.strip().lower().replace("°c", " °c").replace("°f", " °f").replace("%", " %")
-    cleaned = re.sub(r"(\d)([a-z°])", r"\1 \2", cleaned)
+    cleaned = re.sub(r"(\d)([a-z°µμ])", r"\1 \2", cleaned)
     tokens = [t for t in re.split(r"[\s,]+", cleaned) if t]
     pairs: list[tuple[float, str]] = []
     words: list[str] = []

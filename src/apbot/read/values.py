@@ -81,7 +81,7 @@ def unit_name(text: str | None) -> str:
     if info and info[0] == "time":
         return {1: "s", 60: "min", 3600: "h"}[int(info[1])]
     if info and info[0] == "length":  # "millimetres" is mm
-        return {1: "mm", 10: "cm"}[int(info[1])]
+        return {0.001: "µm", 1: "mm", 10: "cm"}[info[1]]
     return {"watt": "W", "watts": "W", "w": "W", "litre": "l", "litres": "l", "lbs": "lb"}.get(
         low, low
     )
