@@ -249,3 +249,50 @@ def test_a_hold_column_s_on_off_is_the_hold_s_toggle_not_the_press_s() -> None:
     assert blade.values == ["chop", "slice", "grate"]  # type: ignore[attr-defined]
     held = [f for f in model.features.values() if f[0].actions == ["hold_blade"]]
     assert held and held[0][0].variable == "pulse", model.features
+
+
+# a fan heater's legends: a dial whose positions are written "L1 to L4" (no list of its own)
+# in the row above a key's arrow cycle, and a numbered legend where a key's range is followed
+# by the next key's list of days
+LEGEND_NEIGHBOURS = """
+Breeze FH-3 fan heater
+
+Keep the heater 1 m from curtains. Do not cover the grille.
+
+THE PANEL
+
+| Ref | Description |
+|-----|-------------|
+| ① | LEVEL dial — fan level L1 to L4 (4 click positions). |
+| ② | SWING — louvre swing on / off. |
+| ③ | MODE — heating OFF → LOW → HIGH → OFF. |
+
+| Item | What it does |
+|------|--------------|
+| (4) DELAY | Start the heater later: 0 to 9 hours. |
+| (5) REPEAT | Repeat the start every 1, 2 or 3 days. |
+
+USE
+
+Turn the LEVEL dial clockwise for a stronger fan; it stops at L1 and at L4.
+Press MODE to step through the heating settings.
+Press DELAY: each press adds one hour, up to 9 hours.
+"""
+
+NEIGHBOUR_ACTIONS = [
+    "turn_level_cw",
+    "turn_level_ccw",
+    "press_swing",
+    "press_mode",
+    "press_delay",
+    "press_repeat",
+]
+
+
+def test_a_legend_row_glossing_another_key_gives_this_one_no_values() -> None:
+    model = read_manual(LEGEND_NEIGHBOURS, NEIGHBOUR_ACTIONS).model
+    level = next(v for v in model.variables.values() if v.label == "LEVEL")
+    assert "off" not in (getattr(level, "values", None) or [])  # MODE's cycle is not the dial's
+    assert not [g for g in model.guards if "level" in g.when]  # so no "dial at OFF" power guard
+    delay = next(v for v in model.variables.values() if v.label == "DELAY")
+    assert delay.type == "numeric" and delay.ranges[-1][1] == 9  # not REPEAT's days 1, 2, 3

@@ -38,6 +38,7 @@ from apbot.read.evidence_whose import (
     _with_rows,
     _without_own_name,
     lead_cell,
+    names_another,
 )
 from apbot.read.labels import unit_only_mention, words
 from apbot.read.quantity_units import _quantity_units
@@ -178,7 +179,7 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
                 continue  # "Model XY-300 only: …": another model's keys and their values
             if i not in mentions and any(named_list(text, w) for w in other_words):
                 continue  # "The menu names printed on the panel: …" near KEEP WARM: MENU's
-            if unit.cells and i not in mentions and _cell_key(lead_cell(unit.cells)) in other_keys:
+            if unit.cells and i not in mentions and names_another(unit.cells, other_keys):
                 continue  # a key table's row about another key ("| SIZE | S, M or L |")
             if (
                 unit.cells
@@ -194,7 +195,7 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
                     continue  # a row describing the value the key names, not the key's setting
             quiet = _aside(units, i) or _header_row(units, i)
             # "| MODE | AUTO → SLEEP | with TIMER, 3 s: lock |": MODE's row, whatever it names
-            theirs = bool(unit.cells) and _cell_key(lead_cell(unit.cells)) in other_keys
+            theirs = bool(unit.cells) and names_another(unit.cells, other_keys)
             lists = [] if quiet or theirs else self._lists(i, i in mentions, tokens)
             for items, prio in lists:
                 if _keyish(items, others, own, text) or _foreign_units(items, tokens):

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import re
 
-from apbot.read.shapes import _fits
+from apbot.read.shapes import _cell_key, _fits
 from apbot.read.text import Unit
 from apbot.read.values import find_step, unit_name
 
@@ -38,6 +38,24 @@ def lead_cell(cells: tuple[str, ...]) -> str:
         if not re.fullmatch(r"\s*(?:[\u2460-\u2473\u2776-\u277f]|\(?\d{1,2}[.)]?)\s*", cell):
             return cell
     return cells[0]
+
+
+def lead_names(cell: str) -> list[str]:
+    """What a row's naming cell may name: the whole cell, the name after the legend's number
+    ("(5) REPEAT") and the name before a dash or colon that glosses it ("HEAT — heater OFF →
+    ECO → FULL": a legend row's key is HEAT)."""
+    bare = _LEGEND_MARK_RE.sub("", cell, count=1)
+    head = re.match(r"\s*([^\s—–:][^—–:]{0,24}?)\s*(?:\s[—–-]|:)\s+\S", bare)
+    return [cell, bare] + ([head.group(1)] if head and not head.group(1).isdigit() else [])
+
+
+# the number or letter a legend puts before a part's name: "③", "(5)", "5.", "(C)"
+_LEGEND_MARK_RE = re.compile(r"^\s*(?:[\u2460-\u2473\u2776-\u277f]|\(?\d{1,2}[.)]|\([A-Za-z]\))\s+")
+
+
+def names_another(cells: tuple[str, ...], other_keys: set[str]) -> bool:
+    """The row's naming cell names another key, alone or glossed ("③ | HEAT — heater …")."""
+    return any(_cell_key(n) in other_keys for n in lead_names(lead_cell(cells)))
 
 
 # a table column of keys: "Key", "Buttons", "Key(s)", "Key / element"
