@@ -144,6 +144,13 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "hand_dryer": 3,
     "milk_pasteuriser": 3,
     "knife_sharpener": 3,
+    # The fifteenth blind set (helper blind18n, 2026-12-06, the 6 December late-morning session):
+    # blind for this round's work.
+    "aroma_diffuser": 3,
+    "insect_zapper": 3,
+    "meat_thermometer": 3,
+    "fermentation_crock": 3,
+    "smart_lock": 3,
 }
 
 
