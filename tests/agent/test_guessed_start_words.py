@@ -60,3 +60,13 @@ def test_a_word_names_a_value_by_its_own_word_or_as_the_setting_lit() -> None:
     assert names_value(None, "night_glow", "GLOW", "on", ["off", "on"])  # its own name lit
     assert not names_value(None, "night_glow", "GLOW", "off", ["off", "on"])  # lit is not off
     assert not names_value(None, "boost", "STD", "on", ["off", "on"])
+
+
+def test_a_word_names_a_switch_by_its_name_cut_short() -> None:
+    # an incubator lights "Ld" while its lockdown runs: the setting's name cut short, so the
+    # word shows "on" even when the press was made from a start never shown
+    assert names_value(None, "lockdown", "Ld", "on", ["off", "on"])
+    assert names_value(None, "super_freeze", "SF", "on", ["off", "on"])  # the name run together
+    assert not names_value(None, "lockdown", "Ld", "off", ["off", "on"])
+    assert not names_value(None, "lockdown", "DL", "on", ["off", "on"])  # not its first letter
+    assert not names_value(None, "boost", "BOOST2", "on", ["off", "on"])

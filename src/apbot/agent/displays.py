@@ -360,7 +360,23 @@ def names_value(spec: Any, name: str, word: str, value: Any, domain: Sequence[An
     label = str(spec.display_label(name)) if spec is not None else name
     own = {w.casefold() for w in re.split(r"[\W_]+", f"{label} {name}") if len(w) >= 2}
     parts = [w for w in re.split(r"[\W_]+", said) if w]
-    return bool(parts) and all(p in own for p in parts)
+    if bool(parts) and all(p in own for p in parts):
+        return True
+    whole = {re.sub(r"[\W_]+", "", t.casefold()) for t in (label, name)}
+    return len(parts) == 1 and any(_cuts_short(parts[0], w) for w in own | whole)
+
+
+def _cuts_short(short: str, word: str) -> bool:
+    """Whether ``short`` is ``word`` cut short as panels print a setting's name: its first
+    letter, then letters of it in order (``LD`` for lockdown, ``SF`` for superfreeze).
+
+    >>> _cuts_short("ld", "lockdown"), _cuts_short("std", "boost"), _cuts_short("dl", "lockdown")
+    (True, False, False)
+    """
+    if not 2 <= len(short) < len(word) or not short.isalpha() or short[0] != word[0]:
+        return False
+    rest = iter(word[1:])
+    return all(c in rest for c in short[1:])
 
 
 def _no_value_shown(model: ApplianceModel, name: str, mains: Sequence[str]) -> bool:
