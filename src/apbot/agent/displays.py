@@ -363,14 +363,16 @@ def names_value(spec: Any, name: str, word: str, value: Any, domain: Sequence[An
     if bool(parts) and all(p in own for p in parts):
         return True
     whole = {re.sub(r"[\W_]+", "", t.casefold()) for t in (label, name)}
-    return len(parts) == 1 and any(_cuts_short(parts[0], w) for w in own | whole)
+    return len(parts) == 1 and any(_abbreviates(parts[0], w) for w in own | whole)
 
 
-def _cuts_short(short: str, word: str) -> bool:
-    """Whether ``short`` is ``word`` cut short as panels print a setting's name: its first
-    letter, then letters of it in order (``LD`` for lockdown, ``SF`` for superfreeze).
+def _abbreviates(short: str, word: str) -> bool:
+    """Whether ``short`` abbreviates ``word`` as panels print a setting's name: its first
+    letter, then letters of it in order (``LD`` for lockdown, ``SF`` for superfreeze) — looser
+    than the goal parser's ``goal_vocab.cut_short`` (a word's start), because here a lit word is
+    only matched against the one setting whose key was pressed.
 
-    >>> _cuts_short("ld", "lockdown"), _cuts_short("std", "boost"), _cuts_short("dl", "lockdown")
+    >>> _abbreviates("ld", "lockdown"), _abbreviates("std", "boost"), _abbreviates("dl", "lockdown")
     (True, False, False)
     """
     if not 2 <= len(short) < len(word) or not short.isalpha() or short[0] != word[0]:
