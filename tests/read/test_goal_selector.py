@@ -94,6 +94,12 @@ def test_said_on_or_off_now_sets_the_selector() -> None:
     assert _garden("Light off manually, please.")["mode"] == "off"
 
 
+def test_a_state_said_with_a_negation_sets_nothing() -> None:
+    """ "Don't switch it on": no state is asked of the selector (it once read ON)."""
+    assert "mode" not in _garden("Don't switch it on, just put the glow on.")
+    assert "mode" not in _garden("Please do not turn the lights on yet.")
+
+
 def test_a_switching_time_sets_auto() -> None:
     assert _garden("Turn the lights on at 7 pm.") == {"dusk": "19:00:00", "mode": "auto"}
     assert _garden("Dusk on at half past eight in the evening.")["mode"] == "auto"

@@ -13,7 +13,7 @@ from typing import Any
 
 from apbot.model.domain import build_domain
 from apbot.model.schema import DiscreteVariable
-from apbot.read.goal_text import CLAUSE_ENDS, Text
+from apbot.read.goal_text import CLAUSE_ENDS, Text, negated_before
 from apbot.read.goal_values import OFF_WORDS, ON_WORDS
 from apbot.read.goal_view import Goal, Model
 from apbot.read.goal_vocab import concept
@@ -88,6 +88,8 @@ def on_auto_off(view: Model, text: Text, goal: Goal) -> None:
                 return
             continue  # "put it on the shelf": "on" a preposition
         if token.text in ("on", "off") and _state_said(view, text, k) and not _at_a_time(text, k):
+            if negated_before(text, k, reach=5):
+                continue  # "don't switch it on": no state asked of it
             goal[name] = on if token.text == "on" else off
             return
     domain = build_domain(view.infos[name].var)
