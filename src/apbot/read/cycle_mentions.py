@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import re
 
-from apbot.read.shapes import comes_round
+from apbot.read.shapes import CYCLE_ARROW, comes_round
 from apbot.read.value_lists import find_list
 
 
@@ -26,9 +26,8 @@ def named_in_cycle_only(name: str, text: str) -> bool:
         return False
     if name.upper() not in {item.strip(" .").upper() for item in found[0]}:
         return False
-    arrow = r"\s*(?:→|->|⟶|►|▶)\s*"
     item = r"[A-Za-z0-9][\w+/ .'-]{0,20}?"
-    run = re.search(rf"{item}(?:{arrow}{item})+(?={arrow}|[.,;)]|\s*$)", text)
+    run = re.search(rf"{item}(?:{CYCLE_ARROW}{item})+(?={CYCLE_ARROW}|[.,;)]|\s*$)", text)
     rest = text[: run.start()] + " " + text[run.end() :] if run else text
     printed = re.compile(rf"(?<![A-Za-z0-9]){re.escape(name)}(?![A-Za-z0-9])", re.IGNORECASE)
     return not printed.search(rest.replace("→", " "))

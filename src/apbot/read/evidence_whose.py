@@ -31,11 +31,15 @@ def _fitting_step(text: str, tokens: list[str]) -> tuple[float, str] | None:
     return None
 
 
+# a legend's circled number: "③", "❹"
+_CIRCLED = r"[\u2460-\u2473\u2776-\u277f]"
+
+
 def lead_cell(cells: tuple[str, ...]) -> str:
     """A row's first cell that names something: a legend's circled or plain number ("④ |
     PUMP | Changes the speed: LO → MED → HI") only counts the rows."""
     for cell in cells[:2]:
-        if not re.fullmatch(r"\s*(?:[\u2460-\u2473\u2776-\u277f]|\(?\d{1,2}[.)]?)\s*", cell):
+        if not re.fullmatch(rf"\s*(?:{_CIRCLED}|\(?\d{{1,2}}[.)]?)\s*", cell):
             return cell
     return cells[0]
 
@@ -50,7 +54,7 @@ def lead_names(cell: str) -> list[str]:
 
 
 # the number or letter a legend puts before a part's name: "③", "(5)", "5.", "(C)"
-_LEGEND_MARK_RE = re.compile(r"^\s*(?:[\u2460-\u2473\u2776-\u277f]|\(?\d{1,2}[.)]|\([A-Za-z]\))\s+")
+_LEGEND_MARK_RE = re.compile(rf"^\s*(?:{_CIRCLED}|\(?\d{{1,2}}[.)]|\([A-Za-z]\))\s+")
 
 
 def names_another(cells: tuple[str, ...], other_keys: set[str]) -> bool:

@@ -13,14 +13,14 @@ from typing import Any
 
 from apbot.model.domain import build_domain
 from apbot.model.schema import DiscreteVariable
+from apbot.read.goal_held import KEEPING
 from apbot.read.goal_text import CLAUSE_ENDS, Text, negated_before
 from apbot.read.goal_values import OFF_WORDS, ON_WORDS
 from apbot.read.goal_view import Goal, Model
 from apbot.read.goal_vocab import concept
 from apbot.read.numbers import find_mentions
 
-_VERBS = frozenset({"turn", "switch", "keep", "leave", "put", "power", "have", "get"})
-_VERBS |= frozenset({"turned", "switched", "kept", "left"})
+_VERBS = KEEPING | {"turn", "switch", "put", "power", "have", "get", "turned", "switched"}
 _BETWEEN = frozenset({"the", "it", "them", "all", "my", "our"})
 _STOPS = CLAUSE_ENDS | {",", "and", "then", "but", "so", "until", "till", "when", "with"}
 # "on the timer", "on a 12 hour programme", "on the shelf": a place or a mode, not a state

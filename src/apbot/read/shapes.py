@@ -92,14 +92,17 @@ def _keyish(items: list[str], others: set[str], own: set[str], text: str = "") -
     return named >= 2 and not (named < len(items) and comes_round(items, text))
 
 
+# the arrows a cycle is drawn with: "AUTO → DRY → AUTO", "P1 ► P2 ► P1"
+CYCLE_ARROW = r"\s*(?:→|->|⟶|►|▶)\s*"
+
+
 def comes_round(items: list[str], text: str) -> bool:
     """The text steps from the list's last item back to its first by an arrow ("… → STORE →
     AUTO" after "AUTO → …")."""
     if len(items) < 3 or not text:
         return False
     first, last = (re.escape(v.strip()) for v in (items[0], items[-1]))
-    arrow = r"\s*(?:→|->|⟶|►|▶)\s*"
-    return bool(re.search(rf"(?<!\w){last}{arrow}{first}(?!\w)", text, re.IGNORECASE))
+    return bool(re.search(rf"(?<!\w){last}{CYCLE_ARROW}{first}(?!\w)", text, re.IGNORECASE))
 
 
 def _without(text: str, labels: list[str]) -> str:
