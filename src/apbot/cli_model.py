@@ -26,8 +26,9 @@ def check(
     ] = None,
 ) -> None:
     """Validate a model (or a suite appliance directory); exit 1 if it has errors."""
-    from apbot.model.load import line_of, load_model
+    from apbot.model.load import load_model
     from apbot.model.validate import check_goal
+    from apbot.model.yaml_text import line_of
     from apbot.sim.checks import check_model
 
     path = Path(model)

@@ -40,7 +40,8 @@ def read_command(
     ] = False,
 ) -> None:
     """Read a manual into a model (offline, or --llm); print where each part came from."""
-    from apbot.model.load import model_to_yaml, read_text
+    from apbot.model.load import model_to_yaml
+    from apbot.model.yaml_text import read_text
     from apbot.read import ReaderError, read_manual
     from apbot.read.commands import action_names
 

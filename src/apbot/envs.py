@@ -178,7 +178,7 @@ def step_budget(optimal: list[int]) -> int:
 def register_envs() -> list[str]:
     """Register ``apbot/<id>-v0`` for every bundled appliance; returns the ids."""
     from apbot.bench.suite import TaskFile
-    from apbot.model.load import read_yaml
+    from apbot.model.yaml_text import read_yaml
 
     ids = []
     for directory in sorted(bundled_suite_dir().iterdir()):

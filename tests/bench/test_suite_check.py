@@ -9,7 +9,7 @@ import pytest
 
 from apbot.bench.suite import SuiteAppliance, Task, bundled_suite_dir, load_appliance
 from apbot.bench.suite_check import FillError, check_appliance, fill_optimal
-from apbot.model.load import read_yaml
+from apbot.model.yaml_text import read_yaml
 
 
 def _appliance() -> SuiteAppliance:

@@ -10,13 +10,9 @@ import pytest
 
 from apbot.bench.suite import bundled_suite_dir
 from apbot.model.limits import MAX_FILE_BYTES, MAX_YAML_DEPTH, MAX_YAML_NODES
-from apbot.model.load import (
-    load_model,
-    loads_model,
-    model_to_yaml,
-    read_yaml,
-)
+from apbot.model.load import load_model, loads_model, model_to_yaml
 from apbot.model.problems import ModelError
+from apbot.model.yaml_text import read_yaml
 from tests.helpers import model_from
 
 GOOD = """\

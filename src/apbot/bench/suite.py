@@ -20,9 +20,10 @@ from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
-from apbot.model.load import line_of, parse_model, read_text, read_yaml, schema_problems
+from apbot.model.load import parse_model, schema_problems
 from apbot.model.problems import ModelError, Problem
 from apbot.model.schema import IDENT, ApplianceModel, Box, Scalar
+from apbot.model.yaml_text import line_of, read_text, read_yaml
 
 # Goal variables per task, by category: the paper's six, then our three, then six more written
 # in the style of real manuals (growing again from two to six).

@@ -21,8 +21,8 @@ from apbot.bench.suite import (
     TaskFile,
 )
 from apbot.model.goal import Goal, GoalError, parse_goal
-from apbot.model.load import dump_yaml, read_yaml
 from apbot.model.problems import Problem
+from apbot.model.yaml_text import dump_yaml, read_yaml
 from apbot.plan.plan import Unreachable
 from apbot.sim.checks import check_model
 

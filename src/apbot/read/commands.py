@@ -6,7 +6,7 @@ from pathlib import Path
 
 import yaml
 
-from apbot.model.load import read_text
+from apbot.model.yaml_text import read_text
 from apbot.read.errors import ReaderError
 from apbot.read.evaluate import SuiteScore
 
