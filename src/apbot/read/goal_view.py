@@ -114,6 +114,14 @@ def appliance_said(model: ApplianceModel) -> str:
     return f"{own_name(model)} {model.appliance.category.replace('_', ' ')}".strip().casefold()
 
 
+def _add_quality_nouns(info: VarInfo, text: str) -> None:
+    """A setting a panel names by its adjective (BRIGHT, THICK, DRY) is said by its noun
+    ("full brightness", "the thickness", "more dryness")."""
+    for word in name_words(text.casefold()):
+        if word.isalpha() and len(word) >= 3 and word not in STOP_WORDS:
+            info.vocab.setdefault(concept(f"{word}ness"), 1.0)
+
+
 def _add_vocab(info: VarInfo, text: str, weight: float) -> None:
     for word in name_words(text):
         if word in STOP_WORDS or len(word) < 2:
@@ -131,6 +139,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         _add_vocab(info, name, 1.0)
         if var.label:
             _add_vocab(info, var.label, 1.0)
+        _add_quality_nouns(info, f"{name} {var.label or ''}")
         if isinstance(var.show, str):
             _add_vocab(info, var.show.split("{")[0], 0.7)
             _add_vocab(info, var.show.rsplit("}", 1)[-1], 0.7)  # "{value}pt": "8 pt" names it
@@ -139,6 +148,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
                 if "{" not in text and str(value).casefold() not in OFF_WORDS:
                     _add_vocab(info, text, 0.7)
         if isinstance(var, NumericVariable):
+            var = info.var = _counted_by_name(name, var)
             unit = unit_text(var)
             info.dimension = (unit_kind(unit) or (None, 0))[0] if unit else None
             if not unit:  # a reader may miss the unit: SPIN 0-1400 still takes "1000 rpm"
@@ -290,6 +300,23 @@ def _forms(infos: dict[str, VarInfo]) -> dict[str, dict[Any, list[str]]]:
             if str(value).casefold() not in ON_WORDS + OFF_WORDS
         }
     return out
+
+
+# a count named for its unit: DAYS 1-14 counts days ("every 5 days", "for two weeks")
+_NAMED_UNITS = {"days": "d", "weeks": "wk"}
+
+
+def _counted_by_name(name: str, var: NumericVariable) -> NumericVariable:
+    """A unitless count whose name ends in a plural unit of days (DAYS, INTERVAL DAYS) counts in
+    it: a reader or a panel leaves that unit out, the name says it. Plural only: a DAY setting is
+    as often a day of the week."""
+    if unit_text(var):
+        return var
+    for text in (var.label or "", name):
+        words = name_words(text.casefold())
+        if words and words[-1] in _NAMED_UNITS:
+            return var.model_copy(update={"unit": _NAMED_UNITS[words[-1]]})
+    return var
 
 
 _DIMENSION_WORDS = {"power": "power", "temperature": "temperature", "mass": "weight"}
