@@ -1,6 +1,6 @@
-"""Settings said by what their name says: a unitless count named DAYS counts days, a setting
-named by its adjective (BRIGHT) is said by its noun ("brightness"), and silence said of an
-appliance with a volume but no sound switch mutes the volume. Models written for these tests."""
+"""Settings said by what their name says: a unitless count named DAYS counts days, and silence
+said of an appliance with a volume but no sound switch mutes the volume. Models written for
+these tests."""
 
 from __future__ import annotations
 
@@ -47,10 +47,6 @@ def crock() -> ApplianceModel:
 )
 def test_a_count_named_days_takes_days(crock: ApplianceModel, text: str, days: int) -> None:
     assert parse_instruction(crock, text) == {"days": days}
-
-
-def test_a_setting_named_by_its_adjective_is_said_by_its_noun(crock: ApplianceModel) -> None:
-    assert parse_instruction(crock, "Full brightness for 7 days") == {"bright": "100", "days": 7}
 
 
 @pytest.mark.parametrize("text", ["Mute it, 7 days", "7 days, silent please"])

@@ -114,14 +114,6 @@ def appliance_said(model: ApplianceModel) -> str:
     return f"{own_name(model)} {model.appliance.category.replace('_', ' ')}".strip().casefold()
 
 
-def _add_quality_nouns(info: VarInfo, text: str) -> None:
-    """A setting a panel names by its adjective (BRIGHT, THICK, DRY) is said by its noun
-    ("full brightness", "the thickness", "more dryness")."""
-    for word in name_words(text.casefold()):
-        if word.isalpha() and len(word) >= 3 and word not in STOP_WORDS:
-            info.vocab.setdefault(concept(f"{word}ness"), 1.0)
-
-
 def _add_vocab(info: VarInfo, text: str, weight: float) -> None:
     for word in name_words(text):
         if word in STOP_WORDS or len(word) < 2:
@@ -139,7 +131,6 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         _add_vocab(info, name, 1.0)
         if var.label:
             _add_vocab(info, var.label, 1.0)
-        _add_quality_nouns(info, f"{name} {var.label or ''}")
         if isinstance(var.show, str):
             _add_vocab(info, var.show.split("{")[0], 0.7)
             _add_vocab(info, var.show.rsplit("}", 1)[-1], 0.7)  # "{value}pt": "8 pt" names it
