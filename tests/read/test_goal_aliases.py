@@ -73,19 +73,3 @@ def test_a_bracket_naming_a_setting_names_no_value() -> None:
     manual = "  AUTO (humidity)   keeps the room at the humidity you set\n"
     assert [a for _n, _v, a in bracket_aliases(forms, manual)] == [("humidity",)]
     assert bracket_aliases(forms, manual, ("mode", "humidity")) == []
-
-
-def test_a_bracket_of_one_value_kept_by_two_settings_names_it() -> None:
-    """A MODE key pressed and held keeps the same list twice (a read belief's MODE and MODE
-    hold): the bracketed name still names that one value, for the first of them."""
-    forms = {
-        "mode": {"12v cold": ["12v cold", "12V COLD"], "12v agm": ["12v agm"]},
-        "mode_hold": {"12v cold": ["12v cold", "12V COLD"], "12v agm": ["12v agm"]},
-    }
-    manual = "  12V COLD    lead-acid below 5 °C\n              (winter mode)\n"
-    assert bracket_aliases(forms, manual) == [
-        ("mode", "12v cold", ("winter",)),
-        ("mode_hold", "12v cold", ("winter",)),
-    ]
-    forms["mode_hold"] = {"12v agm": ["12V COLD"]}  # two values: no name of either
-    assert bracket_aliases(forms, manual) == []

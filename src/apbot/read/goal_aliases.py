@@ -58,20 +58,7 @@ def bracket_aliases(
                     stems = tuple(stem(w) for w in alias)
                     if stems and not set(stems) & own:
                         found.setdefault(stems, set()).add((name, value))
-    # one value, though kept by two settings with the same list (a MODE pressed and held)
-    order = {name: k for k, name in enumerate(forms)}  # the settings' own order, as for names
-    return [
-        (n, v, stems)
-        for stems, said in found.items()
-        if _one_value(said)
-        for n, v in sorted(said, key=lambda pair: order[pair[0]])
-    ]
-
-
-def _one_value(said: set[tuple[str, Any]]) -> bool:
-    """The bracket names one value: of one setting, or the same value of settings that list
-    it alike (the alias is then as plain as the value's own name)."""
-    return len({str(value).casefold() for _, value in said}) == 1
+    return [(n, v, stems) for stems, said in found.items() if len(said) == 1 for n, v in said]
 
 
 def _aliases(text: str, lines: list[str]) -> list[list[str]]:
