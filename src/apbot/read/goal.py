@@ -41,6 +41,7 @@ from apbot.read.goal_fractions import fractions
 from apbot.read.goal_gates import entry_switches, gated_switches
 from apbot.read.goal_kinds import kind_numbers
 from apbot.read.goal_listed import listed_outside
+from apbot.read.goal_mute import muted_volume
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
 from apbot.read.goal_offs import (
     boil,
@@ -141,6 +142,7 @@ def parse_instruction(
     no_values(view, text, goal, claimed)
     switches(view, text, goal, claimed, where)
     self_switching_off(view, text, goal, claimed)
+    muted_volume(view, text, goal, claimed)
     place_twins(view, text, goal, where)
     entry_switches(view, goal)
     gated_switches(view, text, goal)

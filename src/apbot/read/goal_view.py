@@ -139,6 +139,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
                 if "{" not in text and str(value).casefold() not in OFF_WORDS:
                     _add_vocab(info, text, 0.7)
         if isinstance(var, NumericVariable):
+            var = info.var = _counted_by_name(name, var)
             unit = unit_text(var)
             info.dimension = (unit_kind(unit) or (None, 0))[0] if unit else None
             if not unit:  # a reader may miss the unit: SPIN 0-1400 still takes "1000 rpm"
@@ -290,6 +291,23 @@ def _forms(infos: dict[str, VarInfo]) -> dict[str, dict[Any, list[str]]]:
             if str(value).casefold() not in ON_WORDS + OFF_WORDS
         }
     return out
+
+
+# a count named for its unit: DAYS 1-14 counts days ("every 5 days", "for two weeks")
+_NAMED_UNITS = {"days": "d", "weeks": "wk"}
+
+
+def _counted_by_name(name: str, var: NumericVariable) -> NumericVariable:
+    """A unitless count whose name ends in a plural unit of days (DAYS, INTERVAL DAYS) counts in
+    it: a reader or a panel leaves that unit out, the name says it. Plural only: a DAY setting is
+    as often a day of the week."""
+    if unit_text(var):
+        return var
+    for text in (var.label or "", name):
+        words = name_words(text.casefold())
+        if words and words[-1] in _NAMED_UNITS:
+            return var.model_copy(update={"unit": _NAMED_UNITS[words[-1]]})
+    return var
 
 
 _DIMENSION_WORDS = {"power": "power", "temperature": "temperature", "mass": "weight"}

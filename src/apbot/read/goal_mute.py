@@ -1,0 +1,52 @@
+"""Silence said of an appliance that has a volume but no sound switch: "mute the doorbell",
+"silent, with one-touch locking", "mute the beeps" set the one VOLUME setting to its silent
+value (0 on a 0-10 scale, MUTE or OFF among its levels). Where a switch of sound exists (BEEP
+on/off) the word is that switch's, read elsewhere; a volume the goal already sets is left."""
+
+from __future__ import annotations
+
+from apbot.model.schema import DiscreteVariable, NumericVariable
+from apbot.read.goal_text import Text
+from apbot.read.goal_values import magnitude
+from apbot.read.goal_view import Goal, Model, VarInfo, domain_values, own_concepts, own_stems
+from apbot.read.goal_vocab import concept, stem
+
+_SILENT_WORDS = frozenset({"mute", "muted", "silence", "silenced", "silent"})
+# the names a level list gives its silent level
+_SILENT_VALUES = frozenset({"mute", "muted", "silent", "off", "0"})
+
+
+def muted_volume(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
+    """Set the one volume setting silent when the instruction says silence and nothing else
+    of the model is a sound to switch off."""
+    said = [k for k, t in enumerate(text.tokens) if t.text in _SILENT_WORDS and k not in claimed]
+    if not said or _sound_switch(view):
+        return
+    volumes = [
+        info
+        for info in view.infos.values()
+        if info.role == "setting" and stem("volume") in own_stems(info)
+    ]
+    if len(volumes) != 1 or volumes[0].name in goal:
+        return
+    silent = _silent_value(view, volumes[0], goal)
+    if silent is not None:
+        goal[volumes[0].name] = silent
+        claimed.add(said[0])
+
+
+def _sound_switch(view: Model) -> bool:
+    """A switch of sound (BEEP, BUZZER, SOUND on/off), which "mute" switches off."""
+    buzzer = concept("buzzer")
+    return any(i.role == "switch" and buzzer in own_concepts(i) for i in view.infos.values())
+
+
+def _silent_value(view: Model, info: VarInfo, goal: Goal) -> object:
+    """0 of a numeric volume, or the level named MUTE / OFF / SILENT."""
+    values = domain_values(view, info, goal)
+    if isinstance(info.var, NumericVariable):
+        return next((v for v in values if magnitude(v) == 0), None)
+    if isinstance(info.var, DiscreteVariable):
+        silent = [v for v in values if str(v).casefold() in _SILENT_VALUES]
+        return silent[0] if len(silent) == 1 else None
+    return None
