@@ -49,3 +49,13 @@ def test_a_chart_called_recommended_but_not_left_to_the_user_stays_per_programme
     note = "  These settings are recommendations only; adjust them to the amount of food.\n"
     model = read_manual(DRYER.format(note=note), ACTIONS).model
     assert model.variables["temp"].depends_on == "mode"
+
+
+def test_an_order_to_the_reader_after_the_advice_note_leaves_the_chart_per_programme() -> None:
+    # "Do not select …", "Do not set the dryer …": the reader is told, the dryer still sets them
+    for note in (
+        "  These values are recommendations only. Do not select JERKY for fish.\n",
+        "  These settings are only guidance.\n  Do not set the dryer on a soft surface.\n",
+    ):
+        model = read_manual(DRYER.format(note=note), ACTIONS).model
+        assert model.variables["temp"].depends_on == "mode", note

@@ -180,3 +180,23 @@ KETTLE_MODELS = """# Kettle K-3
 def test_a_table_of_models_gives_no_span_beyond_the_models_own_row() -> None:
     model = read_manual(KETTLE_MODELS, ["press_power", "press_temp"]).model
     assert [float(x) for x in model.variables["temp"].ranges[0][:2]] == [60, 90]
+
+
+def test_a_guide_column_spans_every_row_whichever_order_its_rows_come_in() -> None:
+    # rows in rising order are still advice (single amounts, gaps): no pieces of one range
+    rising = CLIPPER.replace(
+        "| Thin hair, first cut | EVEN | 3 – 4, go shorter later |\n| Children | EVEN | 2 |\n"
+        "| Thick curls | FADE | 9 – 12 |\n| Beard outline | TRIM | 5 – 6 |",
+        "| Children | EVEN | 2 |\n| Thin hair, first cut | EVEN | 3 – 4, go shorter later |\n"
+        "| Beard outline | TRIM | 5 – 6 |\n| Thick curls | FADE | 9 – 12 |",
+    )
+    assert rising != CLIPPER
+    model = read_manual(rising, ["press_power", "press_style", "press_length"]).model
+    assert [float(x) for x in model.variables["length"].ranges[0][:2]] == [2, 12]
+
+
+def test_a_table_whose_rows_are_type_numbers_is_a_table_of_models_whatever_its_head() -> None:
+    for head in ("|  |", "| Item no. |"):
+        text = KETTLE_MODELS.replace("| Model |", head)
+        model = read_manual(text, ["press_power", "press_temp"]).model
+        assert [float(x) for x in model.variables["temp"].ranges[0][:2]] == [60, 90], head

@@ -104,6 +104,17 @@ def advice_table(units: list[Unit], rows: list[Unit]) -> bool:
     return any(  # (a footnote or two may come between: "* A very dull knife: …")
         _ADVICE_NOTE_RE.match(units[i].text)
         and units[i].heading == rows[0].heading
-        and any(_NOT_SET_RE.search(u.text) for u in units[i : i + 2])
+        and any(_left_to_user(u.text) for u in units[i : i + 2])
         for i in near
     )
+
+
+# what stands before an order to the reader: a sentence's start, "please"
+_ORDER_LEAD_RE = re.compile(r"(?:^|[.!?;:]|please)\W*$", re.IGNORECASE)
+
+
+def _left_to_user(text: str) -> bool:
+    """Whether ``text`` says the appliance does not set the values itself ("the console does
+    not set them for you"): a negation with its subject, not an order to the reader ("Do not
+    select JERKY for fish.", "Do not set the dryer on a soft surface.")."""
+    return any(not _ORDER_LEAD_RE.search(text[: m.start()]) for m in _NOT_SET_RE.finditer(text))

@@ -16,7 +16,7 @@ from apbot.read.text import Manual
 _NUMBER_HEAD_RE = re.compile(r"^\W*(?:(?:prog\w*\.?\s*)?(?:no|nr|n°|number)\.?|#)\W*$", re.I)
 # the head of a first column listing a key's own steps ("| Level | Power | Suitable for |"):
 # its rows are the key's values, each with what it gives, not things the setting is advised for
-_STEP_HEAD_RE = re.compile(r"^\W*(?:levels?|settings?|positions?)\W*$", re.I)
+_LEVEL_HEAD_RE = re.compile(r"^\W*(?:levels?|settings?|positions?)\W*$", re.I)
 
 
 class TableReader:
@@ -66,7 +66,7 @@ class TableReader:
             len(header) < 3
             or lead in own
             or _NUMBER_HEAD_RE.match(lead)
-            or _STEP_HEAD_RE.match(lead)
+            or _LEVEL_HEAD_RE.match(lead)
             or _DISPLAY_HEAD_RE.match(lead)
         ):
             return False  # ("| Display | Mode |": each mode as shown, then what it does)

@@ -19,15 +19,16 @@ _TYPE_RE = re.compile(r"[A-Z]{1,5}[- ]?\d{1,4}[A-Z]{0,3}(?: [A-Z][a-z]+)?")
 _CODE_RE = re.compile(r"[A-Z]\d{1,2}")
 
 
+def is_type_number(cell: str) -> bool:
+    """Whether ``cell`` is a model's type number ("K-3", "RB-20U"), not a programme's code."""
+    return bool(_TYPE_RE.fullmatch(cell.strip())) and not _CODE_RE.fullmatch(cell.strip())
+
+
 def own_column(header: Sequence[str], lines: Sequence[str]) -> int | None:
     """The index of the header cell naming the manual's own model: the model the text names
     most often (page titles repeat it), clearly more than each sister; None when the header
     names no two models or no model stands out."""
-    models = [
-        (k, c.strip())
-        for k, c in enumerate(header)
-        if k and _TYPE_RE.fullmatch(c.strip()) and not _CODE_RE.fullmatch(c.strip())
-    ]
+    models = [(k, c.strip()) for k, c in enumerate(header) if k and is_type_number(c)]
     if len(models) < 2 or len(models) < len(header) - 1:
         return None
     text = "\n".join(lines)

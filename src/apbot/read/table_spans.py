@@ -16,6 +16,7 @@ import re
 from itertools import pairwise
 
 from apbot.read.labels import words
+from apbot.read.model_columns import is_type_number
 from apbot.read.text import Unit
 from apbot.read.text_sections import _MODEL_WORD_RE
 from apbot.read.values import Range, find_ranges, number
@@ -40,16 +41,20 @@ def column_span(units: list[Unit], i: int, first: Range, own: set[str]) -> Range
     header = units[i].header
     if column is None or column >= len(header) or not own & set(words(header[column])):
         return first  # ("| Goal | Workout | Resist. |": another setting's column)
-    if header and _MODEL_WORD_RE.search(header[0]):
+    rows = _table_rows(units, i)
+    if (header and _MODEL_WORD_RE.search(header[0])) or all(
+        is_type_number(r.cells[0]) for r in rows
+    ):
         return first  # "| Model | Capacity | Temp |": each row another model's own span
+        # (so too "| | Capacity | Temp |" over "| K-3 | …", "| K-5 | …": rows of type numbers)
     amounts: list[tuple[float, float]] = []
-    for row in _table_rows(units, i):
+    for row in rows:
         cell = row.cells[column] if column < len(row.cells) else ""
         amounts += [(r.low, r.high) for r in find_ranges(cell) if r.unit == first.unit]
         bare = _BARE_RE.fullmatch(cell) if not first.unit else None
         if bare and (n := number(bare.group(1))) is not None:
             amounts.append((n, n))
-    if _pieces(amounts):
+    if _pieces(amounts, first.step):
         return first  # "| Short | 0.5 – 10 h |", "| Long | 10 – 24 h |": pieces, read as such
     low = min([first.low, *(a for a, _ in amounts)])
     high = max([first.high, *(b for _, b in amounts)])
@@ -58,10 +63,15 @@ def column_span(units: list[Unit], i: int, first: Range, own: set[str]) -> Range
     return Range(low, high, first.unit, first.step)
 
 
-def _pieces(amounts: list[tuple[float, float]]) -> bool:
-    """Whether the column's amounts follow on from one another, row by row, without overlap:
-    the pieces of one range, each with its own step (a guide's advice overlaps and jumps)."""
-    return all(b[0] >= a[1] for a, b in pairwise(amounts))
+def _pieces(amounts: list[tuple[float, float]], step: float | None) -> bool:
+    """Whether the column's amounts follow on from one another, row by row, each a span that
+    starts where the one above ends (or a step on): the pieces of one range, each with its own
+    step. A guide's advice overlaps and jumps, and gives single amounts ("2", "3 – 4", "9 – 12":
+    in whichever order its rows come)."""
+    gap = max(1.0, step or 0.0)  # (as shapes._rows_span: a gap wider than the step ends a run)
+    return all(a < b for a, b in amounts) and all(
+        0 <= b[0] - a[1] <= gap for a, b in pairwise(amounts)
+    )
 
 
 def _table_rows(units: list[Unit], i: int) -> list[Unit]:

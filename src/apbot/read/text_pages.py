@@ -216,14 +216,16 @@ def _page_title(line: str) -> bool:
     return ws[0][:1].isupper() and all(w[:1].isupper() or w in _TITLE_SMALL for w in ws)
 
 
-_OPEN_ENDS = _TITLE_SMALL | {"then", "or", "with", "by", "at", "from", "until", "press"}
+# a word no line of a sentence ends on: the next line goes on with it (a page's, a table cell's)
+OPEN_ENDS = _TITLE_SMALL | {"then", "or", "with", "by", "at", "from", "until", "press"}
+OPEN_ENDS |= {"than", "into", "when", "if"}
 
 
 def _unfinished(line: str) -> bool:
     """A line that stops mid-sentence (a comma, a hyphen, "…, then"): the page after it goes
     on with the sentence, and its first line ("Press START") is no page title."""
     words = line.rstrip().split()
-    return bool(words) and (line.rstrip()[-1] in ",-–" or words[-1].lower() in _OPEN_ENDS)
+    return bool(words) and (line.rstrip()[-1] in ",-–" or words[-1].lower() in OPEN_ENDS)
 
 
 def _running_titles(lines: list[str]) -> set[int]:

@@ -20,22 +20,27 @@ from __future__ import annotations
 
 import re
 
+from apbot.read.text_pages import OPEN_ENDS
+
 # a rule with "+" at the joints: "------+------+-----", "+-----+-----+", ":---+---:"
 GRID_RULE = re.compile(r"^\s*\+?\s*:?-{2,}:?\s*(?:\+\s*:?-{2,}:?\s*)+\+?\s*$")
 
 # the end of a cell that runs on onto the next line: a comma, a hyphen, an opening bracket, or
-# a word that needs the next one ("for", "in", "and", "the" …)
-_RUNS_ON = re.compile(
-    r"(?:[,(/&+-]|\b(?:a|an|the|and|or|of|for|in|on|to|with|by|at|from|than|into|when|if))$",
-    re.IGNORECASE,
-)
+# a word that needs the next one ("for", "in", "and", "the" …: text_pages.OPEN_ENDS)
+_RUNS_ON_MARK = re.compile(r"[,(/&+-]$")
+
+
+def _runs_on(cell: str) -> bool:
+    """Whether ``cell`` stops where its text cannot end."""
+    last = re.search(r"\w+$", cell)
+    return bool(_RUNS_ON_MARK.search(cell)) or bool(last and last.group(0).lower() in OPEN_ENDS)
 
 
 def _continues(above: str, below: str, lead: bool = False) -> bool:
     """Whether ``below`` goes on with the cell ``above`` (its wrapped end). In the first
     column (``lead``), which names each row, a word in lower case is the next row's name
     ("eco" then "boost"): only a cell that needs more runs on there."""
-    runs_on = bool(_RUNS_ON.search(above))
+    runs_on = _runs_on(above)
     return bool(above) and (runs_on or (below[:1].islower() and not lead))
 
 
