@@ -27,6 +27,7 @@ from apbot.read.goal_text import (
     clause_starts,
     phrase_here,
 )
+from apbot.read.goal_roles import doing_name
 from apbot.read.goal_values import generic
 from apbot.read.goal_view import Goal, Model, own_stems, step_effects
 from apbot.read.goal_vocab import concept, stem
@@ -61,15 +62,21 @@ def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = Fals
     if any(n in goal for n in running):
         return
     family = next((VERB_FAMILIES[stem(n)] for n in running if stem(n) in VERB_FAMILIES), None)
+    doing = [n for n in running if doing_name(n)]
+    if family is None and doing:
+        family = frozenset({stem(doing[0])})  # PRINTING is started by "print", no other verb
     start = _says_start(text, family, _named_starts(view, text), settings=_setting_words(view))
+    if start is None and doing and _own_verb(text, doing[0]):
+        start = True  # "… and print.": the doing's own verb asks for it
     started_by = _procedure_start(view, goal)
     if start is None and started_by is not None:
         start = True  # the procedure for a goal setting ends by starting (TIME DEFROST)
     delayed = any(view.infos[n].timing == "delay" for n in goal)
     if start is None and (counting or delayed) and _timer_mode(view, goal):
         return  # a countdown armed by choosing the TIMER mode: it starts by itself
-    if start is None and counting:
-        start = True  # "ready in 15 hours": only a started countdown ends then
+    if start is None and counting and not doing:
+        start = True  # "ready in 15 hours": only a started countdown ends then (by START,
+        # not the key of a doing: "hold off the watering for two days" waters nothing now)
     if start is None:
         return
     key = next((v for v in goal if v in view.start_values), None)
@@ -86,6 +93,17 @@ def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = Fals
         elif info.var.depends_on is None:  # its start value (a dependent one has no own)
             domain = build_domain(info.var)
             goal[name] = domain.values[domain.initial]
+
+
+def _own_verb(text: Text, name: str) -> bool:
+    """The verb of a doing ("print" for PRINTING) opens a clause, not negated ("… and print.",
+    "carbonate it now"; not "don't print yet" — that is said by ``_says_start``)."""
+    own = stem(name)
+    return any(
+        text.stems[k] == own and text.word(k - 1) not in _DENIALS
+        for k in clause_starts(text, loose=True)
+        if k < len(text.stems)
+    )
 
 
 def _timer_mode(view: Model, goal: Goal) -> bool:
