@@ -66,8 +66,8 @@ def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = Fals
     if family is None and doing:
         family = frozenset({stem(doing[0])})  # PRINTING is started by "print", no other verb
     start = _says_start(text, family, _named_starts(view, text), settings=_setting_words(view))
-    if start is None and doing and _own_verb(text, doing[0]):
-        start = True  # "… and print.": the doing's own verb asks for it
+    if start is None and doing:
+        start = _own_verb(text, doing[0])  # "… and print.", "don't print yet"
     started_by = _procedure_start(view, goal)
     if start is None and started_by is not None:
         start = True  # the procedure for a goal setting ends by starting (TIME DEFROST)
@@ -95,15 +95,14 @@ def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = Fals
             goal[name] = domain.values[domain.initial]
 
 
-def _own_verb(text: Text, name: str) -> bool:
-    """The verb of a doing ("print" for PRINTING) opens a clause, not negated ("… and print.",
-    "carbonate it now"; not "don't print yet" — that is said by ``_says_start``)."""
+def _own_verb(text: Text, name: str) -> bool | None:
+    """The verb of a doing ("print" for PRINTING) denied ("don't print yet": False) or opening
+    a clause ("… and print.", "carbonate it now": True); None when it is not said so."""
     own = stem(name)
-    return any(
-        text.stems[k] == own and text.word(k - 1) not in _DENIALS
-        for k in clause_starts(text, loose=True)
-        if k < len(text.stems)
-    )
+    if any(s == own and text.word(k - 1) in _DENIALS for k, s in enumerate(text.stems)):
+        return False
+    opens = clause_starts(text, loose=True)
+    return True if any(k < len(text.stems) and text.stems[k] == own for k in opens) else None
 
 
 def _timer_mode(view: Model, goal: Goal) -> bool:
