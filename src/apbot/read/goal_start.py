@@ -17,6 +17,7 @@ from apbot.read.goal_held import (
     someone_else,
     users_own,
 )
+from apbot.read.goal_roles import doing_name
 from apbot.read.goal_text import (
     CLAUSE_ENDS,
     FILLERS,
@@ -27,7 +28,6 @@ from apbot.read.goal_text import (
     clause_starts,
     phrase_here,
 )
-from apbot.read.goal_roles import doing_name
 from apbot.read.goal_values import generic
 from apbot.read.goal_view import Goal, Model, own_stems, step_effects
 from apbot.read.goal_vocab import concept, stem
