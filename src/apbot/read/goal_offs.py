@@ -14,7 +14,6 @@ from apbot.read.goal_values import (
     OFF_WORDS,
     generic,
     magnitude,
-    name_words,
     unit_text,
 )
 from apbot.read.goal_view import (
@@ -26,7 +25,7 @@ from apbot.read.goal_view import (
     own_concepts,
     own_stems,
 )
-from apbot.read.goal_vocab import HANDLING, NEGATIONS, STOP_WORDS, concept, cut_short, stem
+from apbot.read.goal_vocab import HANDLING, NEGATIONS, STOP_WORDS, concept, stem
 
 _SELF_OFF_VERBS = frozenset(stem(w) for w in ("switch", "shut", "turn", "power", "cut"))
 _PREVENTED = frozenset({"stop", "prevent", "keep", "don't", "dont", "not", "never", "doesn't"})
@@ -134,7 +133,7 @@ def off_levels(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
         if not isinstance(info.var, DiscreteVariable):
             continue
         values = domain_values(view, info, goal)
-        offs = [v for v in values if str(v).casefold() in _OFF_LEVELS]
+        offs = [v for v in values if str(v).casefold() in OFF_WORDS]
         if len(offs) != 1 or len(info.values) < 3:
             continue
         own = own_stems(info)
@@ -143,7 +142,7 @@ def off_levels(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
         for k in range(len(text.tokens)):
             if k in claimed or text.word(k) in STOP_WORDS:
                 continue
-            if not (text.stems[k] in own or text.concepts[k] in mine or _longer(info, text, k)):
+            if not (text.stems[k] in own or text.concepts[k] in mine):
                 continue
             if generic(text.concepts[k]) and not its_own_word(view, info, text.stems[k]):
                 continue  # "the water off": WATER TEMP, where no other setting says "water"
@@ -154,17 +153,6 @@ def off_levels(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
                 claimed.add(k)
                 break
 
-
-def _longer(info: VarInfo, text: Text, k: int) -> bool:
-    """The word at ``k`` is the longer word the setting's one-word name cuts short ("the heater
-    off" for HEAT OFF / ECO / FULL), as a switch is named (``goal_switches``)."""
-    label = info.var.label or ""
-    words = {w for w in name_words(f"{info.name} {label}") if w not in STOP_WORDS}
-    return len(words) == 1 and cut_short(next(iter(words)), text.word(k))
-
-
-_OFF_LEVELS = (*OFF_WORDS, "mute")
-"""A level that is none: OFF, or a sound's MUTE (MUTE, LOW, HIGH: "sound off", "no beeping")."""
 
 _LEVEL_FILLERS = frozenset({"the", "any", "a", "its", "more"})
 

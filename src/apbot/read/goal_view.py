@@ -386,8 +386,6 @@ def _phrases(
                 continue
             for label in control_labels(model, [action]):
                 words = name_words(label)
-                if {stem(w) for w in words} <= own_stems(info):
-                    continue  # PRESSURE held goes to P 1: the key's label names the setting
                 if words and not any(w in STOP_WORDS for w in words):
                     phrases.append((step.variable, effect.to, tuple(stem(w) for w in words), 0.95))
     return phrases
