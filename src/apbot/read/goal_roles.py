@@ -107,6 +107,19 @@ def mark_power_and_running(model: ApplianceModel, infos: dict[str, VarInfo]) -> 
             and isinstance(info.var, DiscreteVariable)
         ):
             info.role = "running"
+    if not any(info.role == "running" for info in infos.values()):
+        doing = [i for n, i in infos.items() if i.role == "switch" and doing_name(n)]
+        if len(doing) == 1:
+            doing[0].role = "running"  # PRINTING, CARBONATING: the work under way
+
+
+def doing_name(name: str) -> bool:
+    """A one-word name of a doing ("printing", "carbonating", "swinging"): on a model with no
+    running state otherwise, the switch that is the work under way, which "start" sets — not a
+    thing named with it ("candling light", "daily drying"), nor a general RUNNING, HEATING."""
+    words = name.casefold().split("_")
+    one = len(words) == 1 and words[0] not in _OPERATION_NAMES
+    return one and words[0].endswith("ing") and len(words[0]) > 5
 
 
 def _named_for_key(name: str, labels: str) -> bool:

@@ -17,6 +17,7 @@ from apbot.read.goal_held import (
     someone_else,
     users_own,
 )
+from apbot.read.goal_roles import doing_name
 from apbot.read.goal_text import (
     CLAUSE_ENDS,
     FILLERS,
@@ -61,15 +62,21 @@ def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = Fals
     if any(n in goal for n in running):
         return
     family = next((VERB_FAMILIES[stem(n)] for n in running if stem(n) in VERB_FAMILIES), None)
+    doing = [n for n in running if doing_name(n)]
+    if family is None and doing:
+        family = frozenset({stem(doing[0])})  # PRINTING is started by "print", no other verb
     start = _says_start(text, family, _named_starts(view, text), settings=_setting_words(view))
+    if start is None and doing:
+        start = _own_verb(text, doing[0])  # "… and print.", "don't print yet"
     started_by = _procedure_start(view, goal)
     if start is None and started_by is not None:
         start = True  # the procedure for a goal setting ends by starting (TIME DEFROST)
     delayed = any(view.infos[n].timing == "delay" for n in goal)
     if start is None and (counting or delayed) and _timer_mode(view, goal):
         return  # a countdown armed by choosing the TIMER mode: it starts by itself
-    if start is None and counting:
-        start = True  # "ready in 15 hours": only a started countdown ends then
+    if start is None and counting and not doing:
+        start = True  # "ready in 15 hours": only a started countdown ends then (by START,
+        # not the key of a doing: "hold off the watering for two days" waters nothing now)
     if start is None:
         return
     key = next((v for v in goal if v in view.start_values), None)
@@ -86,6 +93,16 @@ def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = Fals
         elif info.var.depends_on is None:  # its start value (a dependent one has no own)
             domain = build_domain(info.var)
             goal[name] = domain.values[domain.initial]
+
+
+def _own_verb(text: Text, name: str) -> bool | None:
+    """The verb of a doing ("print" for PRINTING) denied ("don't print yet": False) or opening
+    a clause ("… and print.", "carbonate it now": True); None when it is not said so."""
+    own = stem(name)
+    if any(s == own and text.word(k - 1) in _DENIALS for k, s in enumerate(text.stems)):
+        return False
+    opens = clause_starts(text, loose=True)
+    return True if any(k < len(text.stems) and text.stems[k] == own for k in opens) else None
 
 
 def _timer_mode(view: Model, goal: Goal) -> bool:
