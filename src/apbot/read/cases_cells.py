@@ -83,6 +83,23 @@ def _stepped(cell: str) -> list[str]:
     return items
 
 
+# a fraction of a measure ("1/4", "3/8 cup"): its slash joins, it does not part two items
+_FRACTION = re.compile(r"(?<![\d/.])([1-9])/([2-9]|1[0-6])(?![\d/])")
+
+
+def _cell_items(cell: str) -> list[str]:
+    """A chart cell's items ("LOW / HIGH", "1/4, 1/2, 3/4 cup"): parted at commas, slashes
+    and "or", a fraction kept whole; a unit said once after the last amount is each one's."""
+    kept = _FRACTION.sub("\\1\u2044\\2", cell)
+    items = [i.replace("\u2044", "/") for i in re.split(r"\s*(?:,|/|·|\bor\b)\s*", kept)]
+    if kept == cell:
+        return items
+    tail = re.fullmatch(r"(\d+/\d+)\s+([a-z]{1,5})\.?", items[-1].strip(), re.I)
+    if tail and all(_FRACTION.fullmatch(i.strip()) or i.strip().isdigit() for i in items[:-1]):
+        items[-1] = tail.group(1)  # "1/4, 1/2, 3/4 cup": the measure's parts, its noun aside
+    return items
+
+
 def _alone(item: str, known: list[str]) -> str:
     """ "OFF only", "only ECO": the one value a row allows, said with "only" around it."""
     bare = re.sub(r"^only\s+|\s+only$", "", item)
@@ -128,9 +145,7 @@ def _case(spec: dict[str, Any], cell: str) -> Any:
         if len(spaced) >= 2 and all(w in known for w in spaced):
             # "SOFT MEDIUM FIRM": the values, printed with spaces ("[40]": the default)
             return {"values": spaced} | ({"initial": marked[0]} if len(marked) == 1 else {})
-        items = [
-            _norm(re.sub(r"\(.*?\)", "", i)) for i in re.split(r"\s*(?:,|/|·|\bor\b)\s*", cell)
-        ]
+        items = [_norm(re.sub(r"\(.*?\)", "", i)) for i in _cell_items(cell)]
         if "→" in cell:  # "30 → 60 → 90 → 120", "1 COARSE → 2 FINE → 1 …": the key's order
             items = _stepped(cell)
         items = [_alone(i, known) for i in items]

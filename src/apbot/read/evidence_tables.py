@@ -124,7 +124,9 @@ class TableReader:
         word, or by any programme word for a key that chooses a programme (MENU, PROG)."""
         units = self.manual.units
         cells = units[i].cells
-        if len(cells) < 3 or not _NUMBER_HEAD_RE.match(cells[0]) or re.search(r"\d", cells[1]):
+        if len(cells) < 3 or re.search(r"\d", cells[1]):
+            return None
+        if not _NUMBER_HEAD_RE.match(cells[0]) and not self._counted_rows(i):
             return None
         hw = words(cells[1])
         if not any(h[:6] == w[:6] for h in hw for w in tw) and not (
@@ -140,6 +142,16 @@ class TableReader:
         if column:
             self._table_at = i
         return column or None
+
+    def _counted_rows(self, i: int) -> bool:
+        """Whether the rows of the table headed at unit ``i`` are numbered one by one from 1
+        in their first column ("| Knob pos. | Programme |" over "| 1 | … |", "| 2 | … |"): a
+        number column whatever its head says."""
+        units = self.manual.units
+        firsts = [u.cells[0] for u in units[i + 1 :] if u.header == units[i].cells and u.cells]
+        if len(firsts) < 3 or not all(re.fullmatch(r"\d{1,2}[.)]?", c) for c in firsts):
+            return False
+        return [int(c.rstrip(".)")) for c in firsts] == list(range(1, len(firsts) + 1))
 
     def _key_legend(self, cells: list[str]) -> bool:
         """Whether most cells of a column are the panel's own keys (printed labels or action

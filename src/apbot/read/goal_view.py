@@ -136,7 +136,11 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
             _add_vocab(info, var.show.rsplit("}", 1)[-1], 0.7)  # "{value}pt": "8 pt" names it
         elif isinstance(var.show, dict):
             for value, text in var.show.items():
-                if "{" not in text and str(value).casefold() not in OFF_WORDS:
+                if (
+                    "{" not in text
+                    and str(value).casefold() not in OFF_WORDS
+                    and (text.casefold() not in ON_WORDS + OFF_WORDS)
+                ):
                     _add_vocab(info, text, 0.7)
         if isinstance(var, NumericVariable):
             var = info.var = _counted_by_name(name, var)
@@ -370,8 +374,10 @@ def _phrases(
             if text.casefold() in ON_WORDS + OFF_WORDS + ("none", "----", "--"):
                 continue
             forms = [text]
-            if show.get(text) and "{" not in show[text]:
-                forms.append(show[text])
+            shown = show.get(text)
+            # a code spelled as a switch's word ("On" for ALWAYS ON) names no value in a request
+            if shown and "{" not in shown and shown.casefold() not in ON_WORDS + OFF_WORDS:
+                forms.append(shown)
             for form in forms:
                 words = [w for w in phrase_words(form) if w != "and"]  # read as a connector
                 if form is not text and shared:

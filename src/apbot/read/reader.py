@@ -40,6 +40,7 @@ from apbot.read.roles import assign
 from apbot.read.shapes import CHOICE_WORDS
 from apbot.read.shown_bars import read_bar_shows
 from apbot.read.text import check_text, parse_manual
+from apbot.read.value_codes import read_value_codes
 
 MAX_REPAIRS = 40
 
@@ -81,6 +82,7 @@ def read_manual(
     read_range_codes(builder)
     read_initials(builder)
     read_bar_shows(builder)
+    read_value_codes(builder)  # (after the other display words: only where none was read)
     apply_resets(builder)
     read_held_walks(builder)  # (after the resets: those were read for the switch it replaces)
     read_enabling_switches(builder)

@@ -337,7 +337,7 @@ def _hold_row(b: Builder, key: ActionInfo, at: int | None) -> bool:
     control = key.controls[0]
     if at is None or control not in b.labels or not b.labels[control].text:
         return False
-    if not any(i.skill == "hold" and i.controls == key.controls for i in b.infos):
+    if not any(i.skill == "hold" and set(key.controls) <= set(i.controls) for i in b.infos):
         return False
     label = re.escape(b.labels[control].text)
     held = re.compile(rf"^\W*{label}\s*\(?\s*(?:(?:press|touch|push)\s+and\s+)?hold", re.I)
