@@ -1,6 +1,6 @@
 """A stepping pair that also serves settings other keys open keeps a setting of its own when
-the manual says what it moves alone, or when the two keys' legends share its noun
-(roles_raised.set_alone / alone_range, roles_legendnoun), each on a small manual of our own."""
+the manual says what it moves alone (roles_raised.set_alone / alone_range), each on a small
+manual of our own."""
 
 from __future__ import annotations
 
@@ -58,29 +58,6 @@ Without pressing any other key first, ▲ and ▼ change the resistance level: 1
 BIKE_ACTIONS = ["press_time", "press_up", "press_down"]
 
 
-# a probe thermometer whose legend gives both arrows the same noun
-PROBE = """# Probe thermometer
-
-## Keys
-
-| Key | Press |
-|---|---|
-| MEAT | next meat: BEEF, PORK, CHICKEN |
-| ▲ | alarm target one step up |
-| ▼ | alarm target one step down |
-
-## Alarm target
-
-Press ▲ or ▼ until the display shows the target you want.
-"""
-PROBE_ACTIONS = ["press_meat", "press_up", "press_down"]
-
-
-def _setter(model: object, action: str) -> set[str]:
-    feats = model.features  # type: ignore[attr-defined]
-    return {s.variable for steps in feats.values() for s in steps if action in s.actions}
-
-
 def _alone(model: object, action: str) -> set[str]:
     """The variables ``action`` sets as the first step of a feature (pressed alone)."""
     feats = model.features  # type: ignore[attr-defined]
@@ -98,8 +75,3 @@ def test_the_pair_alone_sets_the_days_it_sets_while_no_other_setting_is_open() -
 def test_without_any_other_key_the_pair_sets_the_level_its_sentence_names() -> None:
     model = read_manual(BIKE, BIKE_ACTIONS).model
     assert "level" in _alone(model, "press_up")
-
-
-def test_the_noun_both_arrow_legends_share_names_the_pairs_setting() -> None:
-    model = read_manual(PROBE, PROBE_ACTIONS).model
-    assert "alarm_target" in _setter(model, "press_up")

@@ -22,7 +22,6 @@ from apbot.read.roles_common import (
     var_name,
 )
 from apbot.read.roles_confirm import ends_entry
-from apbot.read.roles_legendnoun import legend_noun
 from apbot.read.roles_lists import dial_amount, dial_ends, dial_list, list_evidence
 from apbot.read.roles_numbered import numbered_entry
 from apbot.read.roles_pairafter import pair_follows
@@ -217,9 +216,6 @@ def assign_amounts(
             tokens_ = [n for n in up + down]
             ev = b.evidence([token_of(b, n) for n in tokens_])
             noun = stepped_noun(b, [token_of(b, n) for n in tokens_], ev) or "level"
-            told = legend_noun(b, [token_of(b, n) for n in up], [token_of(b, n) for n in down])
-            if told and not (ev.ranges and ev.ranges[0].unit):  # (a range's unit names it)
-                noun = told  # "▲ custom target one step up" / "▼ … down": the pair's own
             own_here = own_noun if shared_pair and up == shared_pair["up"] else None
             if own_here is not None and own_here != noun:
                 noun = own_here  # (its sentences' ranges and steps are the other settings')

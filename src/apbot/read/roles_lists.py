@@ -10,7 +10,6 @@ from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.labels import words
 from apbot.read.roles_common import clock_list, numeric_list, stepped_noun, token_of
-from apbot.read.roles_legendnoun import legend_noun
 from apbot.read.shapes import Evidence, _fits, _next_table_column
 from apbot.read.text import Unit
 from apbot.read.values import find_ranges, find_step
@@ -35,10 +34,7 @@ def pair_of_names(b: Builder, base: str, pair: dict[str, list[str]]) -> bool:
             ev = Evidence(values=[v.lower() for v in named[0]], values_at=named[1])
     if not ev.values or len(ev.values) < 3 or numeric_list(ev.values):
         return False
-    told = legend_noun(
-        b, [token_of(b, n) for n in pair["up"]], [token_of(b, n) for n in pair["down"]]
-    )
-    noun = base or told or _list_noun(b, ev) or stepped_noun(b, tokens, None) or "selection"
+    noun = base or _list_noun(b, ev) or stepped_noun(b, tokens, None) or "selection"
     var = b.add_discrete(noun, ev.values, noun.upper(), ev)
     eff = {**{a: "next" for a in pair["up"]}, **{a: "prev" for a in pair["down"]}}
     b.feature(
