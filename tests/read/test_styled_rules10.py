@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from apbot.read import read_manual
-from apbot.read.roles_raised import _noun
+from apbot.read.roles_raised import quantity_noun
 from apbot.read.values import Range, find_ranges
 
 # a fan heater whose temperature setting is listed one by one, the unit after every item, and
@@ -54,6 +54,6 @@ def test_a_short_list_may_be_a_sample_and_is_no_range() -> None:
 
 def test_a_pair_that_raises_the_chosen_value_names_no_quantity_of_its_own() -> None:
     # "− lowers the chosen value": the value another key chose, like "the selected value"
-    assert _noun("chosen value") == ""
-    assert _noun("selected value") == ""
-    assert _noun("goal value") == "goal_value"
+    assert quantity_noun("chosen value") == ""
+    assert quantity_noun("selected value") == ""
+    assert quantity_noun("goal value") == "goal_value"

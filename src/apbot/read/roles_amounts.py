@@ -26,7 +26,13 @@ from apbot.read.roles_lists import dial_amount, dial_ends, dial_list, list_evide
 from apbot.read.roles_numbered import numbered_entry
 from apbot.read.roles_pairafter import pair_follows
 from apbot.read.roles_pushed import pushed_dials
-from apbot.read.roles_raised import own_sentence, raised_quantity, set_alone, sets_with_pair
+from apbot.read.roles_raised import (
+    alone_range,
+    own_sentence,
+    raised_quantity,
+    set_alone,
+    sets_with_pair,
+)
 from apbot.read.shapes import CHOICE_WORDS, Evidence
 
 # units that name what a pair sets by themselves (a range in °C is a temperature)
@@ -213,7 +219,9 @@ def assign_amounts(
             own_here = own_noun if shared_pair and up == shared_pair["up"] else None
             if own_here is not None and own_here != noun:
                 noun = own_here  # (its sentences' ranges and steps are the other settings')
-                ev = Evidence(values=None if ev.ranges else ev.values)
+                ev = alone_range(b, [token_of(b, n) for n in tokens_], noun) or Evidence(
+                    values=None if ev.ranges else ev.values
+                )
             if (
                 own_here is None
                 and raised is not None

@@ -11,11 +11,13 @@ pair's setting is named after the quantity rather than the most frequent noun ne
 from __future__ import annotations
 
 import re
+from dataclasses import replace
 
 from apbot.read.build import Builder
 from apbot.read.labels import words
 from apbot.read.roles_common import mentions_of
-from apbot.read.shapes import SETTING_NOUNS
+from apbot.read.shapes import SETTING_NOUNS, Evidence
+from apbot.read.values import find_ranges
 
 _VERB = (
     r"(?:raise|lower|increase|decrease|reduce|turn\s+up|turn\s+down|step\s+up|step\s+down"
@@ -70,7 +72,7 @@ def raised_quantity(b: Builder, tokens: list[str]) -> tuple[str, int] | None:
                     and not _VERB_RE.search(other.group(1))
                 ):
                     return None  # "raises the delay or, on BAKE only, the bake time": two
-                noun = _noun(m.group("noun"))
+                noun = quantity_noun(m.group("noun"))
                 if noun and not _an_amount(noun, rest):
                     noun = ""  # "raise the footrest", "lower the noise": no amount of the pair
                 if noun:
@@ -120,7 +122,7 @@ def _after_label(text: str, label: str) -> int:
     return 0
 
 
-def _noun(phrase: str) -> str:
+def quantity_noun(phrase: str) -> str:
     """ "heat level of the selected zone" → heat_level; "value shown" → "" (no quantity)."""
     kept: list[str] = []
     for w in words(phrase):
@@ -159,15 +161,28 @@ def sets_with_pair(b: Builder, key: str, pair: list[str]) -> bool:
     return any(sign_re.search(own_sentence(b, key, i)) for i in mentions_of(b, key))
 
 
+# "no other key is needed", "without pressing any other key first", "while no other setting
+# is open", "while no menu is open": the pair's bare use, when no key chose anything else
 _ALONE_RE = re.compile(
-    r"\bno other (?:key|button)s?\b|\bwithout (?:any|another) (?:key|button)", re.I
+    r"\bno other (?:key|button|setting|menu)s?\b"
+    r"|\bwithout (?:(?:pressing|touching|using)\s+)?(?:any|another)\s+(?:other\s+)?(?:key|button)"
+    r"|\bno (?:menu|setting) is (?:open|shown|opened)\b",
+    re.I,
+)
+# "▲ and ▼ change the resistance level", "▲ / ▼ only set the days": what the pair moves
+_MOVED_RE = re.compile(
+    r"^\W*(?:(?:only|then|also|just)\s+)?(?:change|changes|set|sets|adjust|adjusts|move|moves)"
+    r"\s+(?:the\s+|its\s+)?(?P<noun>[a-z][a-z-]*(?:\s+[a-z][a-z-]*){0,2})",
+    re.I,
 )
 
 
 def set_alone(b: Builder, pair: list[str]) -> str:
     """The setting a sentence says the pair sets by itself ("The temperature is set with ▲ and
-    ▼ – no other key is needed"): what the pair changes when no key chose anything else, even
-    when its other sentences speak of the times it sets after such a key; "" if none says so."""
+    ▼ – no other key is needed", "Without pressing any other key first, ▲ and ▼ change the
+    resistance level", "▲ / ▼ only set the days while no other setting is open"): what the
+    pair changes when no key chose anything else, even when its other sentences speak of the
+    times it sets after such a key; "" if none says so."""
     signs = [b.labels[t].text for t in pair if t in b.labels and b.labels[t].text]
     if not signs:
         return ""
@@ -175,8 +190,18 @@ def set_alone(b: Builder, pair: list[str]) -> str:
     for unit in b.manual.units:
         for sentence in re.split(r"(?<=[.;:])\s+", unit.text):
             alone = _ALONE_RE.search(sentence)
-            if alone is None or not sign_re.search(sentence[: alone.start()]):
+            if alone is None:
                 continue
+            found_signs = list(sign_re.finditer(sentence))
+            if not found_signs:
+                continue
+            sign = found_signs[-1]  # the last sign: its verb follows it ("▲ and ▼ change …")
+            moved = _MOVED_RE.match(re.sub(r"\([^)]*\)", " ", sentence[sign.end() :]))
+            noun = quantity_noun(moved.group("noun")) if moved is not None else ""
+            if noun:
+                return noun
+            if sign.start() > alone.start():
+                continue  # (a noun before the sign is another thing's: "without any key …")
             found = [
                 (m.start(), n)
                 for n in SETTING_NOUNS
@@ -185,3 +210,38 @@ def set_alone(b: Builder, pair: list[str]) -> str:
             if found:
                 return min(found)[1]
     return ""
+
+
+_DAYS_RE = re.compile(r"\d\s*days?\b", re.I)
+_BY_ONE_RE = re.compile(r"\b(?:by|in steps of)\s+(?:one|1|a single)\b", re.I)  # "by one day"
+
+
+def alone_range(b: Builder, pair: list[str], noun: str) -> Evidence | None:
+    """The range of the pair's own setting, from a sentence naming both the pair and that
+    setting ("Press ▲ or ▼. The display shows DAYS … the range is 1 to 45 days"), not the
+    ranges of the settings other keys open with the same pair; None when no sentence gives it.
+    The sentences after one naming the pair count too ("2. Press ▲ or ▼." "The range is …")."""
+    stem = noun.split("_")[-1].rstrip("s")
+    if len(stem) < 3:
+        return None
+    named = re.compile(rf"\b{re.escape(stem)}s?\b", re.I)
+    units = b.manual.units
+    mentions = sorted({i for t in pair if t in b.labels for i in b.labels[t].mentions})
+    near = [  # (a step's next sentences too)
+        j
+        for i in mentions
+        for j in range(i, min(i + 4, len(units)))
+        if units[j].heading == units[i].heading
+    ]
+    for i in dict.fromkeys(near):
+        if not named.search(units[i].text):
+            continue
+        found = [r for r in find_ranges(units[i].text) if r.high > r.low]
+        if len(found) == 1:
+            r = found[0]
+            if r.step is None and _BY_ONE_RE.search(units[i].text):
+                r = replace(r, step=1.0)
+            if not r.unit and _DAYS_RE.search(units[i].text):
+                r = replace(r, unit="d")  # "1 to 45 days": a count of days (the goal's "2 weeks")
+            return Evidence(ranges=[r], range_at=i)
+    return None
