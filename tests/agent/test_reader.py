@@ -410,26 +410,3 @@ def test_a_value_is_not_read_out_of_a_longer_name_it_ends() -> None:
     reader = DisplayReader(model_from(SHARPENER.replace("conv bake", "grill")))
     assert all(h.values != {"function": "bake"} for h in reader.read("fan bake").hypotheses)
     assert any(h.values == {"function": "bake"} for h in reader.read("bake  DOOR").hypotheses)
-
-
-def test_a_label_of_a_letter_or_two_may_stand_against_its_value() -> None:
-    # the manual labels the run limit "t"; the panel prints t45 s, as it prints S5 or P3
-    reader = DisplayReader(
-        model_from(
-            """
-controls: [{id: set}, {id: word}]
-variables:
-  run_limit: {type: time, ranges: [["00:00:20", "00:01:30", 5]], format: "mm:ss", label: t}
-  level: {type: numeric, ranges: [[1, 9, 1]], label: LEVEL}
-actions:
-  press_set: {control: set}
-  press_word: {control: word}
-features:
-  set_limit: [{actions: [press_set], variable: run_limit, effect: next}]
-  set_level: [{actions: [press_word], variable: level, effect: next}]
-"""
-        )
-    )
-    assert focus_readings(reader, "t45 s", "run_limit") == [{"run_limit": "00:00:45"}]
-    assert focus_readings(reader, "t 45 s", "run_limit") == [{"run_limit": "00:00:45"}]
-    assert focus_readings(reader, "LEVEL5", "level") == []  # a word is set apart by a space

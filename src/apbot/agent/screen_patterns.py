@@ -190,16 +190,10 @@ class CompiledDisplay:
         position = 0
         template = screen.template.strip()
         label = self._specs[focus].display_label(focus) if focus else ""
-        after_label = False
         for match in TEMPLATE_FIELD.finditer(template):
-            between = template[position : match.start()]
-            if after_label and match.group(1) == "value" and _glued(label, between):
-                parts.append(r"\s*")  # a letter or two printed against the value: S5, t45 s
-            else:
-                parts.append(_literal(between))
+            parts.append(_literal(template[position : match.start()]))
             position = match.end()
             name = match.group(1)
-            after_label = name == "label"
             if name == "label":
                 parts.append(_label_pattern(label, self._last_words.get(focus or "")))
                 continue
@@ -301,13 +295,6 @@ def _label_pattern(label: str, last: str | None = None) -> str:
     # never shortened where it is printed whole: AUTO OFF is the label, not AUT + the value OFF
     whole = rf"(?!{_literal(label)}(?!\w)){re.escape(first[:3])}[^\W\d_]*"
     return rf"(?:{_literal(label)}|{whole}{alone})"
-
-
-def _glued(label: str, between: str) -> bool:
-    """Whether a label of one or two letters may stand against the value it labels, with no
-    space between (``S5``, ``t45 s``, ``P3``): panels print short labels so, and a label that
-    short is no word of its own for the space to set apart."""
-    return between.isspace() and label.isalpha() and len(label) <= 2
 
 
 def _literal(text: str) -> str:
