@@ -41,6 +41,7 @@ from collections.abc import Mapping
 from functools import cached_property
 from typing import Any
 
+from apbot.agent.name_spellings import ends_longer_name, known_words, spelt_otherwise
 from apbot.agent.readings import Hypothesis, Reading, Screen, ScreenKind, is_read
 from apbot.agent.scale_codes import off_scale
 from apbot.agent.screen_patterns import (
@@ -58,7 +59,6 @@ __all__ = ["DisplayReader", "Hypothesis", "Reading", "Screen", "ScreenKind", "is
 
 _MAX_CACHE = 4096
 _GAP = re.compile(r"\s{2,}")  # between the parts of a display that prints several
-_WORD_BEFORE = re.compile(r"(?:^|\s)([^\W\d_]{2,}) $")  # a word one space before the end
 
 
 class DisplayReader(CompiledDisplay):
@@ -240,7 +240,7 @@ class DisplayReader(CompiledDisplay):
                 absent.add(name)
         if partial and self._other_value_beside(values, text[: match.start()], text[match.end() :]):
             return None
-        if partial and self._inside_longer_name(values, text[: match.start()]):
+        if partial and ends_longer_name(text[: match.start()], values, self._known_words):
             return None
         lamps: dict[str, frozenset[Any]] = {}
         if not partial and not self._dark(screen):
@@ -280,34 +280,9 @@ class DisplayReader(CompiledDisplay):
                     return True
         return False
 
-    def _inside_longer_name(self, values: dict[str, Any], before: str) -> bool:
-        """Whether a choice read inside a longer text is the last word of a longer name the
-        belief does not print (``convection bake`` read as bake): a word the belief knows nowhere
-        stands right before it, one space apart — displays part their screens by wider gaps, and
-        a name qualifies its head word from the front. The text is then a value the belief lacks
-        or spells otherwise, for the loose screens (and a walk) to read, not this value."""
-        word = _WORD_BEFORE.search(before)
-        if word is None or word.group(1).casefold() in self._known_words:
-            return False
-        return any(
-            isinstance(self._specs.get(name), DiscreteVariable) and str(value)[:1].isalpha()
-            for name, value in values.items()
-        )
-
     @cached_property
     def _known_words(self) -> set[str]:
-        """Every word the belief prints or names: labels, show texts, values, lamps."""
-        texts: list[str] = [self.belief.display.idle or ""]
-        for name, spec in self._specs.items():
-            texts += [name, str(spec.display_label(name))]
-            show = getattr(spec, "show", None)
-            texts += list(show.values()) if isinstance(show, dict) else [str(show or "")]
-            if isinstance(spec, DiscreteVariable):
-                texts += [str(v) for v in all_values(spec)]
-        texts += [str(g.display or "") for g in self.belief.guards]
-        return {w.casefold() for t in texts for w in re.findall(r"[^\W\d_]+", t)} | set(
-            self.lamp_texts()
-        )
+        return known_words(self.belief) | self.lamp_texts()
 
     def _interpret(self, name: str, raw: str, known: Mapping[str, Any]) -> tuple[str, Any] | None:
         """A captured field as ("value", v), ("outside", v), ("absent", None), ("typing",
@@ -443,41 +418,3 @@ def _unique(found: list[Hypothesis]) -> list[Hypothesis]:
             seen.add(key)
             result.append(h)
     return result
-
-
-def spelt_otherwise(text: str, values: tuple[Any, ...] | list[Any]) -> Any | None:
-    """The one value of a choice that ``text`` spells in the other length: panels print a
-    long name short (``3`` for "3 hone", ``conv bake`` for "convection bake") and manuals do
-    too, the other way round. Word by word, each is the other's start (a figure whole, a word
-    cut to two letters at least), and one list of words begins the other; a name of two words
-    or more on one side (one word for another is an abbreviation, which the walk learns as the
-    value's word: :mod:`apbot.agent.renamed`). None when no value or several fit.
-
-    >>> spelt_otherwise("STAGE 3", ["1 coarse", "3 hone"]) is None
-    True
-    >>> spelt_otherwise("3", ["1 coarse", "2 fine", "3 hone"])
-    '3 hone'
-    >>> spelt_otherwise("convection bake", ["bake", "conv bake", "broil"])
-    'conv bake'
-    >>> spelt_otherwise("low", ["low fan", "low heat"]) is None
-    True
-    """
-    shown = text.casefold().split()
-    found = [
-        value
-        for value in values
-        if isinstance(value, str) and _same_words(shown, value.casefold().split())
-    ]
-    return found[0] if len(found) == 1 else None
-
-
-def _same_words(shown: list[str], named: list[str]) -> bool:
-    if not shown or not named or shown == named or len(shown) + len(named) < 3:
-        return False  # one word for one word is an abbreviation, learnt as such elsewhere
-    for a, b in zip(shown, named, strict=False):
-        short, long = sorted((a, b), key=len)
-        if short == long:
-            continue
-        if not (short.isalpha() and len(short) >= 2 and long.startswith(short)):
-            return False
-    return True
