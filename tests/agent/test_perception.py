@@ -93,3 +93,27 @@ def test_a_clock_is_no_count_of_hours_where_the_belief_shows_a_time_of_day() -> 
         Feedback("12:45", {}, True, ""), {"delay": 1, "clock": "12:45:00"}, ("focus", "delay")
     )
     assert "delay" not in seen.values and "delay" not in seen.outside
+
+
+TWO_SCREENS = """
+controls: [{id: a}, {id: b}]
+variables:
+  cook: {type: numeric, ranges: [[1, 9, 1]], label: TIME, show: "T {value}"}
+  alarm: {type: numeric, ranges: [[1, 9, 1]], label: TIMER, show: "T {value}"}
+actions:
+  press_a: {control: a}
+  press_b: {control: b}
+features:
+  set_cook: [{actions: [press_a], variable: cook, effect: next}]
+  set_alarm: [{actions: [press_b], variable: alarm, effect: next}]
+"""
+
+
+def test_a_display_every_reading_of_which_contradicts_the_belief_doubts_them_all() -> None:
+    # T 2 is the cook time or the alarm; the belief holds 5 and 7: one of them is wrong, and
+    # neither may count as confirmed. Where the belief holds 2 for one of them, it is read so.
+    perceiver = Perceiver(model_from(TWO_SCREENS))
+    seen = perceiver.perceive(Feedback("T 2", {}, True, ""), {"cook": 5, "alarm": 7}, None)
+    assert seen.doubted == {"cook", "alarm"} and not seen.values
+    seen = perceiver.perceive(Feedback("T 2", {}, True, ""), {"cook": 2, "alarm": 7}, None)
+    assert not seen.doubted and seen.values == {"cook": 2}

@@ -376,3 +376,37 @@ def test_a_label_of_two_words_may_be_shown_by_its_last_word_alone() -> None:
         )
     )
     assert focus_readings(beside, "TIME 40 min", "dry_time") == []
+
+
+SHARPENER = """
+controls: [{id: stage, label: STAGE}, {id: fn, label: FUNCTION}]
+variables:
+  stage: {type: discrete, values: [1 coarse, 2 fine, 3 hone], label: STAGE, wrap: true}
+  function: {type: discrete, values: [bake, conv bake, broil], label: FUNCTION}
+actions:
+  press_stage: {control: stage}
+  press_function: {control: fn}
+features:
+  set_stage: [{actions: [press_stage], variable: stage, effect: next}]
+  set_function: [{actions: [press_function], variable: function, effect: next}]
+display:
+  idle: "{function}"
+"""
+
+
+def test_a_name_printed_in_its_other_length_is_read_as_that_value() -> None:
+    # the manual names the stages "3 hone", the panel prints STAGE 3; the manual abbreviates
+    # "conv bake", the panel spells "convection bake": each is the one value spelt otherwise
+    reader = DisplayReader(model_from(SHARPENER))
+    assert focus_readings(reader, "STAGE 3", "stage") == [{"stage": "3 hone"}]
+    assert focus_readings(reader, "FUNCTION convection bake", "function") == [
+        {"function": "conv bake"}
+    ]
+
+
+def test_a_value_is_not_read_out_of_a_longer_name_it_ends() -> None:
+    # "convection bake" holds the word bake, but as the end of a name the belief does not
+    # print: no partial reading of bake (a gap, or a word the belief knows, would allow one)
+    reader = DisplayReader(model_from(SHARPENER.replace("conv bake", "grill")))
+    assert all(h.values != {"function": "bake"} for h in reader.read("fan bake").hypotheses)
+    assert any(h.values == {"function": "bake"} for h in reader.read("bake  DOOR").hypotheses)

@@ -46,7 +46,9 @@ class Seen:
     main display shows (``focus``, ``idle``, ``guard``; None when the readings disagree or in
     values mode, where there is no screen to read); ``screens`` every (kind, variable) the
     best readings allow. ``unknown``: the text fits none of the belief's
-    screens; ``blank``: the display shows nothing.
+    screens; ``blank``: the display shows nothing. ``doubted``: ambiguous settings of a display
+    every reading of which contradicts the belief on one of them (``TIME 00:02``, the cook time
+    or the timer, where the belief holds neither): which one is wrong is not known, but one is.
     """
 
     text: str = ""
@@ -60,6 +62,7 @@ class Seen:
     unknown: bool = False
     blank: bool = False
     partial: bool = False
+    doubted: frozenset[str] = frozenset()
 
     def observed(self, name: str) -> Any:
         """The value shown for ``name``: MISSING if not shown, None if shown as ``--``."""
@@ -224,6 +227,9 @@ def choose(
             seen.values[name] = context[name]  # the belief's value is one of them: keep it
         elif allowed:
             seen.candidates[name] = frozenset(allowed)
+    if seen.candidates and all(any(is_read(h.value(n)) for n in seen.candidates) for h in best):
+        # every reading shows one of them at a value the belief does not hold
+        seen.doubted = frozenset(seen.candidates)
     return seen
 
 

@@ -38,8 +38,10 @@ from __future__ import annotations
 
 import re
 from collections.abc import Mapping
+from functools import cached_property
 from typing import Any
 
+from apbot.agent.name_spellings import ends_longer_name, known_words, spelt_otherwise
 from apbot.agent.readings import Hypothesis, Reading, Screen, ScreenKind, is_read
 from apbot.agent.scale_codes import off_scale
 from apbot.agent.screen_patterns import (
@@ -238,6 +240,8 @@ class DisplayReader(CompiledDisplay):
                 absent.add(name)
         if partial and self._other_value_beside(values, text[: match.start()], text[match.end() :]):
             return None
+        if partial and ends_longer_name(text[: match.start()], values, self._known_words):
+            return None
         lamps: dict[str, frozenset[Any]] = {}
         if not partial and not self._dark(screen):
             lit = match.group("_lamps") or ""
@@ -276,6 +280,10 @@ class DisplayReader(CompiledDisplay):
                     return True
         return False
 
+    @cached_property
+    def _known_words(self) -> set[str]:
+        return known_words(self.belief) | self.lamp_texts()
+
     def _interpret(self, name: str, raw: str, known: Mapping[str, Any]) -> tuple[str, Any] | None:
         """A captured field as ("value", v), ("outside", v), ("absent", None), ("typing",
         None) for digits shown as typed that are no value of the domain, or None."""
@@ -289,6 +297,10 @@ class DisplayReader(CompiledDisplay):
                 return "value", normalise(spec, text, domain)
             except ValueProblem:
                 pass
+            if isinstance(spec, DiscreteVariable):
+                spelt = spelt_otherwise(text, domain.values)
+                if spelt is not None:
+                    return "value", spelt
         entry = getattr(spec, "entry", None)
         if entry is not None and entry.shows == "typed" and re.fullmatch(r"[\d:]+", text):
             return "typing", None  # digits on their way to a value: they tell nothing yet

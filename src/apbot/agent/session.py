@@ -170,6 +170,8 @@ class Session:
         self.contradicted.update(seen.outside)
         for name in seen.values:
             self.contradicted.pop(name, None)
+        # a display that contradicts the belief one way or another confirms none of them
+        self.stale |= seen.doubted & set(self.evidence)
 
     def unshowable(self) -> frozenset[str]:
         """The belief's settings no screen tells apart (:func:`apbot.model.display.can_show`)."""
