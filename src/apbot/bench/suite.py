@@ -152,6 +152,13 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "meat_thermometer": 3,
     "fermentation_crock": 3,
     "smart_lock": 3,
+    # The sixteenth blind set (helper blind19n, 6 December 2026, the 6 December midday session):
+    # blind for this round's work.
+    "bathroom_scale": 4,
+    "curtain_motor": 3,
+    "massage_gun": 4,
+    "tortilla_press": 4,
+    "sun_lamp": 4,
 }
 
 
