@@ -51,6 +51,7 @@ from apbot.agent.screen_patterns import (
     _regex,
     _squash,
 )
+from apbot.agent.value_words import spells_value
 from apbot.model.display import ABSENT_TEXT, display_value
 from apbot.model.domain import Domain, ValueProblem, all_values, normalise, parse_value
 from apbot.model.schema import TEMPLATE_FIELD, ApplianceModel, DiscreteVariable, TimeVariable
@@ -177,8 +178,6 @@ class DisplayReader(CompiledDisplay):
         setting's values short (``HI`` for high): read beside another screen, only such a word
         is surely that setting's; others (``ORANGE`` for a heat level) are left unread, for
         the walk to learn as the parts they are, not as new values the goal cannot name."""
-        from apbot.agent.displays import spells_value  # (displays reads through this module)
-
         return all(
             isinstance(spec := self._specs[name], DiscreteVariable)
             and any(spells_value(str(word), value) for value in all_values(spec))

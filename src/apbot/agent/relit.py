@@ -16,10 +16,10 @@ from __future__ import annotations
 import re
 from typing import Any
 
-from apbot.agent.displays import names_value
 from apbot.agent.reader import DisplayReader
 from apbot.agent.repair import RepairError, add_indicator, set_display
 from apbot.agent.session import UNREADABLE, Executed, Session
+from apbot.agent.value_words import names_value
 from apbot.model.display import lamp_for
 from apbot.model.domain import all_values
 from apbot.model.schema import ApplianceModel, DiscreteVariable

@@ -32,12 +32,12 @@ import re
 from collections.abc import Sequence
 from typing import Any
 
-from apbot.agent.displays import names_value, spells_value
 from apbot.agent.infer import Dark, Unread
 from apbot.agent.reader import DisplayReader
 from apbot.agent.repair import RepairError, add_indicator, set_display
 from apbot.agent.session import Executed, Session
 from apbot.agent.setting_texts import GAP
+from apbot.agent.value_words import names_value, spells_value
 from apbot.model.display import OFF_WORDS, display_value, show_template
 from apbot.model.schema import TEMPLATE_FIELD
 
