@@ -20,6 +20,7 @@ from apbot.read.goal_view import (
     Goal,
     Model,
     VarInfo,
+    doer_stems,
     domain_values,
     its_own_word,
     own_concepts,
@@ -136,7 +137,7 @@ def off_levels(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
         offs = [v for v in values if str(v).casefold() in OFF_WORDS]
         if len(offs) != 1 or len(info.values) < 3:
             continue
-        own = own_stems(info)
+        own = doer_stems(info)
         mine = own_concepts(info)
         others = {s for i in view.infos.values() if i is not info for s in own_stems(i)} - own
         for k in range(len(text.tokens)):

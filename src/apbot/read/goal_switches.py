@@ -24,6 +24,7 @@ from apbot.read.goal_view import (
     Goal,
     Model,
     VarInfo,
+    doer_stems,
     its_own_word,
     own_concepts,
     own_stems,
@@ -47,6 +48,7 @@ def switches(
         if info.role != "switch" or name in goal:
             continue
         own = own_stems(info)
+        doers = doer_stems(info)  # "dim it" for a DIMMER: names it, makes it no longer name
         # COOK TIME (on/off) beside a COOK TIME given a value: its own words named that one;
         # only another word of it (the SOUND its legend says it switches) names the switch
         shadowed = any(own == own_stems(view.infos[other]) for other in goal)
@@ -84,7 +86,7 @@ def switches(
             if locks and not _locking(text, k):
                 continue  # "wake the panel", "hot water": not the (hot-water) lock
             if (
-                text.stems[k] in own
+                text.stems[k] in doers
                 or key in own_concepts(info)
                 or key == concept("lock")
                 or cut

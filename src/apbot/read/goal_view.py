@@ -53,6 +53,7 @@ from apbot.read.goal_vocab import (
     STOP_WORDS,
     SYNONYMS,
     concept,
+    doer_forms,
     stem,
 )
 from apbot.read.range_codes import code_past_top
@@ -67,6 +68,7 @@ class VarInfo:
     name: str
     var: AnyVariable
     vocab: dict[str, float] = field(default_factory=dict)
+    doers: set[str] = field(default_factory=set)  # stems of its name words' doer forms
     role: str = "setting"  # setting, switch, power, running
     on: str | None = None
     off: str | None = None
@@ -122,15 +124,28 @@ def _add_vocab(info: VarInfo, text: str, weight: float) -> None:
         info.vocab[key] = max(info.vocab.get(key, 0.0), weight)
 
 
+def _add_doers(info: VarInfo, text: str, appliance: set[str]) -> None:
+    """ "the heater" for HEAT, "dim" for DIMMER: a name word's doer form names it less surely
+    (never a word of the appliance's own name: "cook" is no COOKER)."""
+    for word in name_words(text):
+        if word not in STOP_WORDS:
+            for form in doer_forms(word):
+                if stem(form) not in appliance:
+                    info.doers.add(stem(form))
+                    _add_vocab(info, form, 0.6)
+
+
 def build(model: ApplianceModel, manual: str = "") -> Model:
     """Gather each variable's words and role from the model (and the names the manual gives
     to coded values, when it is given)."""
     infos: dict[str, VarInfo] = {}
+    appliance = {stem(w) for w in name_words(appliance_said(model))}
     for order, (name, var) in enumerate(model.variables.items()):
         info = VarInfo(name, var, order=order)
         _add_vocab(info, name, 1.0)
         if var.label:
             _add_vocab(info, var.label, 1.0)
+        _add_doers(info, f"{name} {var.label or ''}", appliance)
         if isinstance(var.show, str):
             _add_vocab(info, var.show.split("{")[0], 0.7)
             _add_vocab(info, var.show.rsplit("}", 1)[-1], 0.7)  # "{value}pt": "8 pt" names it
@@ -460,6 +475,12 @@ def own_concepts(info: VarInfo) -> set[str]:
 def own_stems(info: VarInfo) -> set[str]:
     words = name_words(info.name) + (name_words(info.var.label) if info.var.label else [])
     return {stem(w) for w in words if w not in STOP_WORDS}
+
+
+def doer_stems(info: VarInfo) -> set[str]:
+    """The setting's own stems and their doer forms' ("heater" for HEAT, "dim" for DIMMER):
+    what names a switch or a setting said off."""
+    return own_stems(info) | info.doers
 
 
 def its_own_word(view: Model, info: VarInfo, word: str) -> bool:

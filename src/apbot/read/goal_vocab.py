@@ -71,6 +71,33 @@ def stem(word: str) -> str:
     return w
 
 
+_DOUBLED = "bdgmnpt"  # consonants a short word doubles before "-er": dim, dimmer
+
+
+def doer_forms(word: str) -> list[str]:
+    """The other half of a word and the name of what does it, which people swap when they
+    name a setting: a HEAT setting is "the heater", a DIMMER is "dim it". A setting's name
+    word in one form is said in the other (a word of five letters or fewer ending in "-er",
+    TIMER, WATER, POWER, is no doer of a shorter word; nor is a word in "-e" made one).
+
+    >>> doer_forms("heat"), doer_forms("dimmer"), doer_forms("timer")
+    (['heater'], ['dim'], [])
+    """
+    w = word.casefold()
+    if not w.isalpha() or len(w) < 3:
+        return []
+    if w.endswith("er"):
+        if len(w) <= 5:
+            return []
+        base = w[:-2]
+        if base[-1] == base[-2] and base[-1] in _DOUBLED:
+            base = base[:-1]
+        return [base]
+    if w.endswith("e"):
+        return []  # TIME is no TIMER, FREEZE no FREEZER: a word in "-e" names a thing of its own
+    return [f"{w}er"]
+
+
 def similar(a: str, b: str) -> bool:
     """Two stems close enough to be one word misspelt or inflected ("steriliser", "sterilize")."""
     if a == b:
