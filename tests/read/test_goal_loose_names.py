@@ -1,5 +1,5 @@
 """A quantity with a unit, for a setting the reader left without one (``goal_unitless.py``); a
-value named by a later word of its name (``goal_view._first_words``).
+value named by a later word of its name (``goal_phrases._first_words``).
 
 The cabinet below was read the way readers often read: its CELLAR setting has the right range
 but no unit, and its CHILL setting is a list of bare numbers. The user says degrees.

@@ -9,6 +9,7 @@ from typing import Any
 
 from apbot.read.goal_adverbs import adverb_of_no_value
 from apbot.read.goal_fit import CODE
+from apbot.read.goal_phrases import PARTIAL
 from apbot.read.goal_scales import at_its_limit
 from apbot.read.goal_shortened import (
     SYNONYM_STEMS,
@@ -34,7 +35,6 @@ from apbot.read.goal_text import (
     verb_positions,
 )
 from apbot.read.goal_view import (
-    PARTIAL,
     Goal,
     Model,
     appliance_said,
