@@ -246,12 +246,14 @@ class DisplayReader(CompiledDisplay):
         if not partial and not self._dark(screen):
             lit = match.group("_lamps") or ""
             allowed_by_lamps = self._lamps(lit, screen.variable)
-            if allowed_by_lamps is None:
+            if allowed_by_lamps is None or self._own_lamp_denies(lit, screen.variable, values):
                 return None
             lamps = allowed_by_lamps
         elif not self._dark(screen):  # lamps among words the belief does not know
             rest = whole[: match.start()] + "  " + whole[match.end() :] if whole else ""
             beside, rest = self._beside(rest, screen.variable, parents)
+            if self._own_lamp_denies(rest, screen.variable, values):
+                return None
             lamps = self._lamps_among(rest, screen.variable)
             for name, value in beside.items():
                 lamps.setdefault(name, frozenset({value}))

@@ -11,6 +11,7 @@ them; :class:`CompiledDisplay` is the reader's base class, so the moved code run
 from __future__ import annotations
 
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass
 from functools import cached_property, lru_cache
 from typing import Any
@@ -80,6 +81,18 @@ class CompiledDisplay:
             if spec.depends_on:  # a setting this programme lacks leaves its lamp unlit too
                 table[name].append((None, lamp_for(spec, name, None, values)))
         return table
+
+    def _own_lamp_denies(self, text: str, focus: str | None, read: Mapping[str, Any]) -> bool:
+        """Whether ``text`` lights the lamp of the setting being shown (``focus``) for none
+        of the values the screen read for it: ``LOCK`` beside a lock whose off screen is
+        blank says the lock is on, so that screen is not what the display shows."""
+        if focus is None or focus not in read or focus not in self._lamp_table:
+            return False
+        words = _regex(rf"(?<!\w)(?:{self._lamp_words.pattern})(?!\w)", re.IGNORECASE)
+        on = {_squash(t) for t in words.findall(text)}
+        on = {self._lamp_shortened.get(t, t) for t in on}
+        lit = [v for v, t in self._lamp_table[focus] if t and _squash(t) in on]
+        return bool(lit) and read[focus] not in lit
 
     @cached_property
     def _switches(self) -> frozenset[tuple[str, str]]:
