@@ -264,24 +264,6 @@ class DisplayReader(CompiledDisplay):
                 return None
         return Hypothesis(screen, values, outside, frozenset(absent), lamps, partial)
 
-    def _other_value_beside(self, values: dict[str, Any], before: str, after: str) -> bool:
-        """Whether a choice read inside a longer text has another of its own values printed
-        right beside it (``UPPER LOWER``: both plates, not the upper one): a screen that prints
-        several of them, which no one value's screen explains. Lists of three or more only."""
-        words = {w.casefold() for w in (before.split()[-1:] + after.split()[:1])}  # next to it
-        for name, value in values.items():
-            spec = self._specs.get(name)
-            if not isinstance(spec, DiscreteVariable):
-                continue
-            choices = all_values(spec)
-            if len(choices) < 3:
-                continue  # a switch's "off" is a word of many lamps (AUTO OFF)
-            for other in choices:
-                printed = display_value(spec, other).casefold()
-                if other != value and printed.isalpha() and len(printed) > 1 and printed in words:
-                    return True
-        return False
-
     @cached_property
     def _known_words(self) -> set[str]:
         return known_words(self.belief) | self.lamp_texts()

@@ -94,6 +94,24 @@ class CompiledDisplay:
         lit = [v for v, t in self._lamp_table[focus] if t and _squash(t) in on]
         return bool(lit) and read[focus] not in lit
 
+    def _other_value_beside(self, values: dict[str, Any], before: str, after: str) -> bool:
+        """Whether a choice read inside a longer text has another of its own values printed
+        right beside it (``UPPER LOWER``: both plates, not the upper one): a screen that prints
+        several of them, which no one value's screen explains. Lists of three or more only."""
+        words = {w.casefold() for w in (before.split()[-1:] + after.split()[:1])}  # next to it
+        for name, value in values.items():
+            spec = self._specs.get(name)
+            if not isinstance(spec, DiscreteVariable):
+                continue
+            choices = all_values(spec)
+            if len(choices) < 3:
+                continue  # a switch's "off" is a word of many lamps (AUTO OFF)
+            for other in choices:
+                printed = display_value(spec, other).casefold()
+                if other != value and printed.isalpha() and len(printed) > 1 and printed in words:
+                    return True
+        return False
+
     @cached_property
     def _switches(self) -> frozenset[tuple[str, str]]:
         """(switch, setting) pairs of one feature: a step toggles the switch, a later step
