@@ -410,3 +410,31 @@ def test_a_value_is_not_read_out_of_a_longer_name_it_ends() -> None:
     reader = DisplayReader(model_from(SHARPENER.replace("conv bake", "grill")))
     assert all(h.values != {"function": "bake"} for h in reader.read("fan bake").hypotheses)
     assert any(h.values == {"function": "bake"} for h in reader.read("bake  DOOR").hypotheses)
+
+
+def test_a_switch_shown_blank_when_off_is_not_read_off_beside_its_own_lit_lamp() -> None:
+    # the manual's legend: "PAUSE — the child guard is on"; the panel prints nothing when it
+    # is off, so a screen of the guard being switched is blank for off: PAUSE beside a blank
+    # (here beside the ECO lamp) is the guard on, never the guard switched off
+    model = model_from(
+        """
+        controls: [{id: eco}, {id: key}]
+        variables:
+          eco: {type: discrete, values: ["off", "on"], label: ECO, show: {"off": "", "on": ECO}}
+          guard: {type: discrete, values: ["off", "on"], label: PAUSE,
+                  show: {"off": "", "on": PAUSE}}
+        actions:
+          press_eco: {control: eco}
+          hold_key: {control: key, skill: hold, seconds: 3}
+        features:
+          eco: [{actions: [press_eco], variable: eco, effect: toggle}]
+          guard: [{actions: [hold_key], variable: guard, effect: toggle}]
+        display:
+          indicators: [eco, guard]
+        """
+    )
+    reader = DisplayReader(model)
+    for text in ("ECO  PAUSE", "PAUSE"):
+        readings = reader.read(text).hypotheses
+        assert readings and all(h.value("guard") == "on" for h in readings)
+    assert any(h.value("guard") == "off" for h in reader.read("ECO").hypotheses)

@@ -245,12 +245,14 @@ class DisplayReader(CompiledDisplay):
         if not partial and not self._dark(screen):
             lit = match.group("_lamps") or ""
             allowed_by_lamps = self._lamps(lit, screen.variable)
-            if allowed_by_lamps is None:
+            if allowed_by_lamps is None or self._own_lamp_denies(lit, screen.variable, values):
                 return None
             lamps = allowed_by_lamps
         elif not self._dark(screen):  # lamps among words the belief does not know
             rest = whole[: match.start()] + "  " + whole[match.end() :] if whole else ""
             beside, rest = self._beside(rest, screen.variable, parents)
+            if self._own_lamp_denies(rest, screen.variable, values):
+                return None
             lamps = self._lamps_among(rest, screen.variable)
             for name, value in beside.items():
                 lamps.setdefault(name, frozenset({value}))
@@ -260,24 +262,6 @@ class DisplayReader(CompiledDisplay):
             if name in values and values[name] not in allowed:
                 return None
         return Hypothesis(screen, values, outside, frozenset(absent), lamps, partial)
-
-    def _other_value_beside(self, values: dict[str, Any], before: str, after: str) -> bool:
-        """Whether a choice read inside a longer text has another of its own values printed
-        right beside it (``UPPER LOWER``: both plates, not the upper one): a screen that prints
-        several of them, which no one value's screen explains. Lists of three or more only."""
-        words = {w.casefold() for w in (before.split()[-1:] + after.split()[:1])}  # next to it
-        for name, value in values.items():
-            spec = self._specs.get(name)
-            if not isinstance(spec, DiscreteVariable):
-                continue
-            choices = all_values(spec)
-            if len(choices) < 3:
-                continue  # a switch's "off" is a word of many lamps (AUTO OFF)
-            for other in choices:
-                printed = display_value(spec, other).casefold()
-                if other != value and printed.isalpha() and len(printed) > 1 and printed in words:
-                    return True
-        return False
 
     @cached_property
     def _known_words(self) -> set[str]:

@@ -11,6 +11,7 @@ them; :class:`CompiledDisplay` is the reader's base class, so the moved code run
 from __future__ import annotations
 
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass
 from functools import cached_property, lru_cache
 from typing import Any
@@ -80,6 +81,36 @@ class CompiledDisplay:
             if spec.depends_on:  # a setting this programme lacks leaves its lamp unlit too
                 table[name].append((None, lamp_for(spec, name, None, values)))
         return table
+
+    def _own_lamp_denies(self, text: str, focus: str | None, read: Mapping[str, Any]) -> bool:
+        """Whether ``text`` lights the lamp of the setting being shown (``focus``) for none
+        of the values the screen read for it: ``LOCK`` beside a lock whose off screen is
+        blank says the lock is on, so that screen is not what the display shows."""
+        if focus is None or focus not in read or focus not in self._lamp_table:
+            return False
+        words = _regex(rf"(?<!\w)(?:{self._lamp_words.pattern})(?!\w)", re.IGNORECASE)
+        on = {_squash(t) for t in words.findall(text)}
+        on = {self._lamp_shortened.get(t, t) for t in on}
+        lit = [v for v, t in self._lamp_table[focus] if t and _squash(t) in on]
+        return bool(lit) and read[focus] not in lit
+
+    def _other_value_beside(self, values: dict[str, Any], before: str, after: str) -> bool:
+        """Whether a choice read inside a longer text has another of its own values printed
+        right beside it (``UPPER LOWER``: both plates, not the upper one): a screen that prints
+        several of them, which no one value's screen explains. Lists of three or more only."""
+        words = {w.casefold() for w in (before.split()[-1:] + after.split()[:1])}  # next to it
+        for name, value in values.items():
+            spec = self._specs.get(name)
+            if not isinstance(spec, DiscreteVariable):
+                continue
+            choices = all_values(spec)
+            if len(choices) < 3:
+                continue  # a switch's "off" is a word of many lamps (AUTO OFF)
+            for other in choices:
+                printed = display_value(spec, other).casefold()
+                if other != value and printed.isalpha() and len(printed) > 1 and printed in words:
+                    return True
+        return False
 
     @cached_property
     def _switches(self) -> frozenset[tuple[str, str]]:
