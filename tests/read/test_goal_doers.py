@@ -66,3 +66,37 @@ def test_doer_forms() -> None:
     assert doer_forms("dimmer") == ["dim"]
     assert doer_forms("buzzer") == ["buzz"]
     assert doer_forms("timer") == doer_forms("time") == doer_forms("freeze") == []
+
+
+WARMER = """
+appliance: {id: kettle_9, category: kettle, name: "Boilo K9 kettle", brand: B}
+controls:
+  - {id: warm_button, kind: button, label: "KEEP WARM"}
+  - {id: temp_button, kind: button, label: "TEMP"}
+variables:
+  keep_warm: {type: discrete, values: ["off", "on"]}
+  temperature: {type: numeric, ranges: [[40, 100, 10]], unit: "°C", initial: 100, wrap: true}
+actions:
+  press_warm: {control: warm_button}
+  press_temp: {control: temp_button}
+features:
+  warm:
+    - {actions: [press_warm], variable: keep_warm, effect: toggle}
+  temp:
+    - {actions: [press_temp], variable: temperature, effect: next}
+display:
+  idle: ""
+"""
+
+
+@pytest.mark.parametrize(
+    ("instruction", "expected"),
+    [
+        ("Water at 80 °C, a bit warmer than usual.", {"temperature": 80}),
+        ("Make it warmer today: 90 degrees.", {"temperature": 90}),
+        ("Keep it warm at 80.", {"temperature": 80, "keep_warm": "on"}),
+    ],
+)
+def test_a_comparative_is_no_doer(instruction: str, expected: dict[str, object]) -> None:
+    """ "warmer" is WARM's "-er" form, but said as a comparative it names no KEEP WARM."""
+    assert dict(parse_instruction(loads_model(WARMER), instruction)) == expected

@@ -17,14 +17,13 @@ from apbot.read.goal_held import KEEPING
 from apbot.read.goal_text import CLAUSE_ENDS, Text, negated_before
 from apbot.read.goal_values import OFF_WORDS, ON_WORDS
 from apbot.read.goal_view import Goal, Model
-from apbot.read.goal_vocab import concept
+from apbot.read.goal_vocab import DETERMINERS, concept
 from apbot.read.numbers import find_mentions
 
 _VERBS = KEEPING | {"turn", "switch", "put", "power", "have", "get", "turned", "switched"}
 _BETWEEN = frozenset({"the", "it", "them", "all", "my", "our"})
 _STOPS = CLAUSE_ENDS | {",", "and", "then", "but", "so", "until", "till", "when", "with"}
 # "on the timer", "on a 12 hour programme", "on the shelf": a place or a mode, not a state
-_ARTICLES = frozenset({"the", "a", "an", "its", "my", "our", "their", "this", "that"})
 _AUTO = frozenset(concept(w) for w in ("auto", "automatic", "timer", "programme", "program"))
 
 
@@ -82,7 +81,7 @@ def on_auto_off(view: Model, text: Text, goal: Goal) -> None:
         return
     name, on, off, auto = selector
     for k, token in enumerate(text.tokens):
-        if token.text == "on" and text.word(k + 1) in _ARTICLES:
+        if token.text == "on" and text.word(k + 1) in DETERMINERS:
             if concept(text.word(k + 2)) in _AUTO and _state_said(view, text, k):
                 goal[name] = auto  # "keep the lights on the timer": its programmed times
                 return

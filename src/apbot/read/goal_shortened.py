@@ -11,6 +11,7 @@ from typing import Any
 from apbot.read.goal_text import NUMBER_WORDS, Text
 from apbot.read.goal_view import phrase_words
 from apbot.read.goal_vocab import (
+    DETERMINERS,
     HIGHEST,
     LOWEST,
     STOP_WORDS,
@@ -59,14 +60,13 @@ def compound_head(short: str, word: str, known: frozenset[str]) -> bool:
 
 # prepositions saying where the appliance or a thing stands: "on the countertop", "by the door"
 _PLACED = frozenset({"on", "onto", "at", "by", "near", "beside", "under", "against", "behind"})
-_DETERMINERS = frozenset({"the", "a", "an", "your", "my", "our", "this", "that"})
 
 
 def said_as_place(text: Text, k: int) -> bool:
     """The compound at ``k`` is where something is put ("leave it on the countertop"), not the
     thing filled or chosen ("fill the teapot"): a compound said so names no value's head noun."""
     j = k - 1
-    while j >= 0 and text.word(j) in _DETERMINERS:
+    while j >= 0 and text.word(j) in DETERMINERS:
         j -= 1
     return j >= 0 and text.word(j) in _PLACED
 
@@ -80,7 +80,7 @@ def said_as_past_place(text: Text, k: int) -> bool:
     """The word at ``k`` says where something was ("the bowl was in the freezer"): a past-tense
     remark on the load names no value (FREEZE), unlike a request ("put it on freeze")."""
     j = k - 1
-    while j >= 0 and text.word(j) in _DETERMINERS:
+    while j >= 0 and text.word(j) in DETERMINERS:
         j -= 1
     return j >= 1 and text.word(j) in _INSIDE and text.word(j - 1) in _PAST
 

@@ -29,7 +29,7 @@ from apbot.read.goal_view import (
     own_concepts,
     own_stems,
 )
-from apbot.read.goal_vocab import STOP_WORDS, SYNONYMS, concept, cut_short, stem
+from apbot.read.goal_vocab import STOP_WORDS, SYNONYMS, concept, cut_short, said_as_doer, stem
 
 
 def switches(
@@ -85,6 +85,10 @@ def switches(
             locks = key == concept("lock") or concept("lock") in own_concepts(info)
             if locks and not _locking(text, k):
                 continue  # "wake the panel", "hot water": not the (hot-water) lock
+            if text.stems[k] in doers - own and not said_as_doer(
+                text.word(k), text.word(k - 1), text.word(k + 1), ON_WORDS + OFF_WORDS
+            ):
+                continue  # "a bit warmer than usual": a comparative, no KEEP WARM switch
             if (
                 text.stems[k] in doers
                 or key in own_concepts(info)

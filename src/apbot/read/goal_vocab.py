@@ -71,6 +71,10 @@ def stem(word: str) -> str:
     return w
 
 
+DETERMINERS = frozenset({"the", "a", "an", "its", "my", "our", "their", "your", "this", "that"})
+"""Words that open a noun phrase: what follows them is a thing named ("the heater", "on the
+low setting"), not a quality said of one ("a bit warmer")."""
+
 _DOUBLED = "bdgmnpt"  # consonants a short word doubles before "-er": dim, dimmer
 
 
@@ -82,6 +86,9 @@ def doer_forms(word: str) -> list[str]:
 
     >>> doer_forms("heat"), doer_forms("dimmer"), doer_forms("timer")
     (['heater'], ['dim'], [])
+
+    A form made by adding "-er" is also a comparative ("warmer", "quicker"): it names the
+    setting only where it stands as a noun (:func:`said_as_doer`).
     """
     w = word.casefold()
     if not w.isalpha() or len(w) < 3:
@@ -350,3 +357,13 @@ SPAN_STARTS = frozenset({"on", "start", "begin", "sunrise", "dawn", "open", "wak
 """A time-of-day setting's words that name when something begins (ON TIME, SUNRISE)."""
 SPAN_ENDS = frozenset({"off", "end", "stop", "sunset", "dusk", "close", "finish", "night"})
 """… and when it ends (OFF TIME, SUNSET)."""
+
+
+def said_as_doer(word: str, before: str, after: str, states: tuple[str, ...]) -> bool:
+    """Whether a doer form made by adding "-er" stands as the thing's name — after a
+    determiner or before its state ("the heater", "heater off") — rather than as a comparative
+    ("a bit warmer than usual", "make it quicker"). Forms made by taking "-er" off ("dim" for a
+    DIMMER) are verbs and adjectives already, and always count."""
+    if not word.endswith("er"):
+        return True
+    return before in DETERMINERS or after in states
