@@ -85,6 +85,15 @@ def test_unknown_key_suggests_the_right_one() -> None:
     ) in problems
 
 
+def test_a_key_in_the_wrong_place_says_where_it_belongs() -> None:
+    """``wrap`` is a variable's key: on a feature step it is misplaced, not misspelt (the hint
+    used to be "did you mean 'wrap'?")."""
+    bad = GOOD.replace("variable: speed, effect: next", "variable: speed, effect: next, wrap: true")
+    [(where, message, _)] = errors_of(bad)
+    assert where == "features.set_speed[0].wrap"
+    assert message == "unknown key 'wrap'; 'wrap' is a key of a variable, not of this part"
+
+
 def test_bad_effect_lists_the_vocabulary() -> None:
     bad = GOOD.replace("effect: next}", "effect: up}")
     [(where, message, _)] = errors_of(bad)

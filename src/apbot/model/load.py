@@ -91,9 +91,29 @@ def _message(error: Any, model_fields: dict[str, list[str]]) -> str:
 
 
 def _hint_for_key(key: str, loc: tuple[Any, ...], fields: dict[str, list[str]]) -> str:
+    """A near spelling of a known key, or, for a key that is right but in the wrong place
+    (``wrap`` on a feature step, where it belongs to the variable), where it belongs."""
+    owners = [_OWNER_WORDS.get(owner, owner) for owner, names in fields.items() if key in names]
+    if owners:
+        return f"; {key!r} is a key of {' or '.join(dict.fromkeys(owners))}, not of this part"
     options = [f for names in fields.values() for f in names]
     close = closest_matches(key, options, limit=1)
     return f"; did you mean {close[0]!r}?" if close else ""
+
+
+_OWNER_WORDS = {
+    "Appliance": "`appliance`",
+    "Control": "a control",
+    "Action": "an action",
+    "Entry": "an entry",
+    "DiscreteVariable": "a variable",
+    "NumericVariable": "a variable",
+    "TimeVariable": "a variable",
+    "Step": "a feature step",
+    "Guard": "a guard",
+    "Display": "`display`",
+    "ApplianceModel": "the model's top level",
+}
 
 
 def _known_fields() -> dict[str, list[str]]:
