@@ -157,3 +157,51 @@ ZAPPER = model_from(
 def test_a_code_spelled_as_a_switch_word_names_no_value_in_a_request() -> None:
     goal = parse_instruction(ZAPPER, "Keep the lure on, please.")
     assert "mode" not in goal
+
+
+# amounts in brackets or in a Display column, and a fault chart's Code column, name no code
+WASHER = """AQUAWASH COMPACT WASHER
+Operating instructions
+
+KEYS
+  PROG     next programme
+  START    start or pause
+
+PROGRAMMES
+
+  Press PROG to move to the next programme:
+
+     COTTON  →  SYNTHETIC  →  WOOL  →  COTTON ...
+
+{extra}
+"""
+WASHER_EXTRAS = [
+    "  The wash temperatures are COTTON (60 °C), SYNTHETIC (40 °C) and WOOL (30 °C).",
+    "  Typical run times: COTTON (2 h), SYNTHETIC (90 min), WOOL (45 min).",
+    """SPECIFICATIONS
+
+  Programme   Display   Max load
+  ----------  --------  --------
+  COTTON      1:59      6 kg
+  SYNTHETIC   1:30      3 kg
+  WOOL        0:45      2 kg
+""",
+    """WHEN SOMETHING GOES WRONG
+
+  Programme   Code   Cause
+  ----------  -----  ------------------------------
+  COTTON      E1     door not closed when cotton starts
+  SYNTHETIC   E2     water tap closed
+  WOOL        E3     drain blocked
+  ----------  -----  ------------------------------
+""",
+]
+
+
+def test_amounts_and_a_fault_chart_s_codes_are_no_display_codes_of_the_names() -> None:
+    for extra in WASHER_EXTRAS:
+        model = read_manual(WASHER.format(extra=extra), ["press_prog", "press_start"]).model
+        (spec,) = [
+            v for v in model.variables.values() if "wool" in (getattr(v, "values", None) or [])
+        ]
+        assert spec.show is None, extra

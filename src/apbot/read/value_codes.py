@@ -14,17 +14,24 @@ import re
 
 from apbot.read.build import Builder
 from apbot.read.cases_tables import TRAILING_REMARK_RE, _norm, _tables
+from apbot.read.code_levels import _FAULT_RE
 from apbot.read.codes import _CODE_HEAD
+from apbot.read.shapes import ASIDE_HEADING
+from apbot.read.values import UNIT
 
 # a code as printed: short, no comma, each word short or in capitals ("On", "dd", "VOL LO",
 # "L-WA", "MIST H"); a bracket holding a lower-case word of four letters or more ("(full
 # power)", "(candle)") glosses the name instead
 _CODE_TEXT = re.compile(r"[^\s,;()]+(?: [^\s,;()]+)?")
 _LAMP_HEAD = re.compile(r"\b(?:lamps?|leds?|lights?|icons?|symbols?)\b", re.IGNORECASE)
+# an amount ("60 °C", "90 min", "1:59") says what a value does, not how the display names it
+_AMOUNT = re.compile(rf"\d+(?:[.,]\d+)?\s*{UNIT}|\d{{1,2}}:\d{{2}}", re.IGNORECASE)
+# a fault chart's heads ("| Programme | Code | Cause |"): its codes are error codes
+_FAULT_HEAD = re.compile(r"\b(?:causes?|remed(?:y|ies)|solutions?)\b", re.IGNORECASE)
 
 
 def _code_like(text: str) -> bool:
-    if not 1 <= len(text) <= 8 or not _CODE_TEXT.fullmatch(text):
+    if not 1 <= len(text) <= 8 or not _CODE_TEXT.fullmatch(text) or _AMOUNT.fullmatch(text):
         return False
     return all(len(w) <= 3 or w.upper() == w for w in re.findall(r"[A-Za-z]+", text))
 
@@ -49,9 +56,13 @@ def read_value_codes(b: Builder) -> None:
 
 def _column_codes(b: Builder, values: list[str]) -> tuple[dict[str, str], int] | None:
     """A chart with a column naming every value and a column headed as the code (not a lamp
-    column): each value's code is the cell in its row."""
+    column, nor a fault chart's): each value's code is the cell in its row."""
     wanted = {v.lower() for v in values}
     for header, rows in _tables(b.manual.units):
+        if ASIDE_HEADING.search(rows[0].heading or "") or any(
+            _FAULT_RE.search(h) or _FAULT_HEAD.search(h) for h in header
+        ):
+            continue  # "TROUBLESHOOTING | Programme | Code | Cause": error codes
         width = min(len(r.cells) for r in rows)
         for column in range(width):
             names = [TRAILING_REMARK_RE.sub("", _norm(r.cells[column])) for r in rows]
