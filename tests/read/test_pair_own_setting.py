@@ -75,3 +75,14 @@ def test_the_pair_alone_sets_the_days_it_sets_while_no_other_setting_is_open() -
 def test_without_any_other_key_the_pair_sets_the_level_its_sentence_names() -> None:
     model = read_manual(BIKE, BIKE_ACTIONS).model
     assert "level" in _alone(model, "press_up")
+
+
+def test_a_range_in_another_quantity_s_unit_beside_the_days_is_not_their_range() -> None:
+    text = BOILER.replace(
+        "The display shows DAYS and how many days you are away.",
+        "The display shows DAYS and how many days you are away.\n"
+        "On away days the water is held at 5 to 10 °C against frost.",
+    )
+    spec = read_manual(text, BOILER_ACTIONS).model.variables["days"]
+    assert [list(r) for r in spec.ranges] == [[2, 30, 1]]
+    assert spec.unit == "d"

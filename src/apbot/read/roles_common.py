@@ -252,14 +252,17 @@ def clock_list(values: list[str]) -> bool:
     return len(values) >= 2 and all(re.fullmatch(r"\d{1,2}:[0-5]\d", v.strip()) for v in values)
 
 
+# the quantity a range in a unit measures (a range in °C is a temperature)
+UNIT_QUANTITY = {"°C": "temperature", "°F": "temperature", "%": "humidity", "min": "time",
+                 "h": "time", "s": "time", "W": "power"}  # fmt: skip
+
+
 def stepped_noun(b: Builder, tokens: list[str], ev: Evidence | None = None) -> str:
     """What a pair of stepping keys sets: the quantity its range is in, else the setting noun
     its sentences name most often."""
     unit = ev.ranges[0].unit if ev is not None and ev.ranges else ""
-    by_unit = {"°C": "temperature", "°F": "temperature", "%": "humidity", "min": "time",
-               "h": "time", "s": "time", "W": "power"}  # fmt: skip
-    if unit in by_unit:
-        return by_unit[unit]
+    if unit in UNIT_QUANTITY:
+        return UNIT_QUANTITY[unit]
     counts: dict[str, int] = {}
     # another key's name ("while the TIMER is being set they change the hours") is what the
     # pair sets for that key, not its own setting

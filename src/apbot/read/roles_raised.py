@@ -15,7 +15,7 @@ from dataclasses import replace
 
 from apbot.read.build import Builder
 from apbot.read.labels import words
-from apbot.read.roles_common import mentions_of
+from apbot.read.roles_common import UNIT_QUANTITY, mentions_of
 from apbot.read.shapes import SETTING_NOUNS, Evidence
 from apbot.read.values import find_ranges
 
@@ -219,7 +219,8 @@ _BY_ONE_RE = re.compile(r"\b(?:by|in steps of)\s+(?:one|1|a single)\b", re.I)  #
 def alone_range(b: Builder, pair: list[str], noun: str) -> Evidence | None:
     """The range of the pair's own setting, from a sentence naming both the pair and that
     setting ("Press ▲ or ▼. The display shows DAYS … the range is 1 to 45 days"), not the
-    ranges of the settings other keys open with the same pair; None when no sentence gives it.
+    ranges of the settings other keys open with the same pair, nor a range in a unit measuring
+    another quantity; None when no sentence gives it.
     The sentences after one naming the pair count too ("2. Press ▲ or ▼." "The range is …")."""
     stem = noun.split("_")[-1].rstrip("s")
     if len(stem) < 3:
@@ -236,7 +237,11 @@ def alone_range(b: Builder, pair: list[str], noun: str) -> Evidence | None:
     for i in dict.fromkeys(near):
         if not named.search(units[i].text):
             continue
-        found = [r for r in find_ranges(units[i].text) if r.high > r.low]
+        found = [
+            r
+            for r in find_ranges(units[i].text)
+            if r.high > r.low and UNIT_QUANTITY.get(r.unit, noun)[:4] in noun
+        ]  # (not "away days … held at 5 to 10 °C": a temperature is no count of days)
         if len(found) == 1:
             r = found[0]
             if r.step is None and _BY_ONE_RE.search(units[i].text):
