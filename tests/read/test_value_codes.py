@@ -205,3 +205,25 @@ def test_amounts_and_a_fault_chart_s_codes_are_no_display_codes_of_the_names() -
             v for v in model.variables.values() if "wool" in (getattr(v, "values", None) or [])
         ]
         assert spec.show is None, extra
+
+
+# a numbered table of steps to do, before the chart, lists no programmes
+DESCALE_STEPS = """DESCALING
+
+  Step  Programme use         What to do
+  ----  --------------------  ------------------------------
+  1     Empty the crock       pour out the brine
+  2     Fill with vinegar     half a litre
+  3     Rinse twice           with warm water
+  ----  --------------------  ------------------------------
+
+"""
+
+
+def test_a_numbered_table_of_steps_to_do_is_no_programme_chart() -> None:
+    at = CROCK.index("PROGRAMME CHART")
+    model = read_manual(CROCK[:at] + DESCALE_STEPS + CROCK[at:], CROCK_ACTIONS).model
+    (spec,) = [
+        v for v in model.variables.values() if "tempeh" in (getattr(v, "values", None) or [])
+    ]
+    assert list(spec.values or []) == ["yoghurt", "tempeh", "kombucha"]

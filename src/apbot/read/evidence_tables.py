@@ -11,6 +11,7 @@ import re
 from apbot.read.labels import Label, words
 from apbot.read.shapes import _DISPLAY_HEAD_RE, CHOICE_WORDS, GROUP_NOUNS, _next_table_column
 from apbot.read.text import Manual
+from apbot.read.text_pages import OPEN_ENDS
 
 # the head of a chart's first column numbering its rows ("No.", "Nr.", "#", "Prog. no.")
 _NUMBER_HEAD_RE = re.compile(r"^\W*(?:(?:prog\w*\.?\s*)?(?:no|nr|n°|number)\.?|#)\W*$", re.I)
@@ -146,10 +147,15 @@ class TableReader:
     def _counted_rows(self, i: int) -> bool:
         """Whether the rows of the table headed at unit ``i`` are numbered one by one from 1
         in their first column ("| Knob pos. | Programme |" over "| 1 | … |", "| 2 | … |"): a
-        number column whatever its head says."""
+        number column whatever its head says; not steps to do, whose cells are sentences
+        ("| Step | … |": "Empty the crock", "Turn to position 1")."""
         units = self.manual.units
-        firsts = [u.cells[0] for u in units[i + 1 :] if u.header == units[i].cells and u.cells]
+        rows = [u.cells for u in units[i + 1 :] if u.header == units[i].cells and u.cells]
+        firsts = [c[0] for c in rows]
         if len(firsts) < 3 or not all(re.fullmatch(r"\d{1,2}[.)]?", c) for c in firsts):
+            return False
+        said = [c for c in rows if len(c) > 1 and OPEN_ENDS & {w.lower() for w in c[1].split()}]
+        if 2 * len(said) >= len(rows):
             return False
         return [int(c.rstrip(".)")) for c in firsts] == list(range(1, len(firsts) + 1))
 
