@@ -89,8 +89,13 @@ _FRACTION = re.compile(r"(?<![\d/.])([1-9])/([2-9]|1[0-6])(?![\d/])")
 
 def _cell_items(cell: str) -> list[str]:
     """A chart cell's items ("LOW / HIGH", "1/4, 1/2, 3/4 cup"): parted at commas, slashes
-    and "or", a fraction kept whole; a unit said once after the last amount is each one's."""
-    kept = _FRACTION.sub("\\1\u2044\\2", cell)
+    and "or", a fraction kept whole where fractions are meant (two or more, or one before its
+    measure: "1/2 cup"; a lone "1/2" is levels 1 or 2); a unit said once after the last amount
+    is each one's."""
+    fractions = _FRACTION.findall(cell)
+    measured = re.search(_FRACTION.pattern + r"\s+(?!or\b|and\b|to\b)[a-z]", cell, re.I)
+    # one "1/2" alone is levels 1 or 2; fractions are two or more, or one of a measure
+    kept = _FRACTION.sub("\\1\u2044\\2", cell) if len(fractions) >= 2 or measured else cell
     items = [i.replace("\u2044", "/") for i in re.split(r"\s*(?:,|/|·|\bor\b)\s*", kept)]
     if kept == cell:
         return items
