@@ -77,3 +77,31 @@ display:
 
 def test_silence_is_a_sound_switch_s_where_there_is_one() -> None:
     assert parse_instruction(loads_model(BEEPER), "Mute it") == {"beep": "off"}
+
+
+CLOCK = """
+appliance: {id: clock_1, category: bedside_clock, name: "Dorm C3 clock", brand: Dorm}
+controls:
+  - {id: alarm_key, kind: button, label: "ALARM"}
+  - {id: vol_key, kind: button, label: "VOLUME"}
+variables:
+  alarm: {type: discrete, values: ["off", buzz, chime], label: ALARM}
+  volume: {type: numeric, ranges: [[0, 9, 1]], initial: 4, label: VOLUME, wrap: true}
+actions:
+  press_alarm: {control: alarm_key}
+  press_vol: {control: vol_key}
+features:
+  alarm:
+    - {actions: [press_alarm], variable: alarm, effect: next}
+  volume:
+    - {actions: [press_vol], variable: volume, effect: next}
+display:
+  idle: "{volume}"
+"""
+
+
+def test_silence_of_another_setting_leaves_the_volume() -> None:
+    """'silence the alarm' silences the alarm: the volume is not turned down to nothing."""
+    clock = loads_model(CLOCK)
+    assert "volume" not in parse_instruction(clock, "Silence the alarm")
+    assert parse_instruction(clock, "Mute it") == {"volume": 0}

@@ -29,10 +29,29 @@ def muted_volume(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None
     ]
     if len(volumes) != 1 or volumes[0].name in goal:
         return
+    said = [k for k in said if not _of_another(view, text, k, volumes[0])]
+    if not said:
+        return
     silent = _silent_value(view, volumes[0], goal)
     if silent is not None:
         goal[volumes[0].name] = silent
         claimed.add(said[0])
+
+
+_DETERMINERS = frozenset({"the", "a", "an", "its", "my", "your", "that", "this"})
+
+
+def _of_another(view: Model, text: Text, k: int, volume: VarInfo) -> bool:
+    """The silence word's object names another setting of the model ("silence the alarm",
+    "mute the radio"): that thing is silenced, not the volume turned down to nothing."""
+    n = k + 1
+    while n < len(text.tokens) and text.tokens[n].text in _DETERMINERS:
+        n += 1
+    if n >= len(text.tokens):
+        return False
+    said = text.stems[n]
+    others = (i for i in view.infos.values() if i.name != volume.name)
+    return any(said in own_stems(i) for i in others)
 
 
 def _sound_switch(view: Model) -> bool:
