@@ -208,7 +208,7 @@ def _ranges(text: str) -> list[Range]:
     timed = [(m.start(), m.end()) for m in TIME_CHAIN_RE.finditer(text)]
     for m in TIME_CHAIN_RE.finditer(text):
         min_sec = minutes_and_seconds(text, m.end())
-        stops = [clock_seconds(x, min_sec) for x in re.findall(_TIME, m.group("run"))]
+        stops: list[float] = [clock_seconds(x, min_sec) for x in re.findall(_TIME, m.group("run"))]
         if stops == sorted(set(stops)):
             between = gaps(stops)
             out.append(
