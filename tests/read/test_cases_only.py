@@ -18,7 +18,7 @@ KEYS
 
    Lamps
    ☀ STEADY        steady mode
-   ✧ GLOW OFF      glow off          the glow ring is off; only the lantern shines
+   ⚡̸ GLOW OFF      glow off          the glow ring is off; only the lantern shines
 
 MODES
    Press MODE to move to the next mode:
