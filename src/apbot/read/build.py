@@ -312,6 +312,8 @@ class Builder(EvidenceReader):
         pieces: list[list[float]] = []
         for index, r in enumerate(ranges):
             lo, hi = r.low * factor, r.high * factor
+            if as_time:  # whole seconds: "10 s" read in minutes is 0.166667 min, not 10.00002 s
+                lo, hi = float(round(lo)), float(round(hi))
             st = base_step(r)
             if st:
                 self.note(

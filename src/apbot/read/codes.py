@@ -21,6 +21,7 @@ from apbot.read.text import Unit
 _CODE = re.compile(r"[a-z]{1,3}\s?-?\d{1,2}")
 _NAME = re.compile(r"[a-z][a-z '&/+-]{1,30}")
 _SHORT = re.compile(r"[a-z0-9]{1,3}|[a-z]{1,3}\s?-?\d{1,2}")  # "sh", "a1", "p 3"
+_BLANK = re.compile(r"-{1,3}")
 _CODE_HEAD = re.compile(r"\b(?:codes?|display|shown|indication)\b", re.IGNORECASE)
 
 
@@ -30,10 +31,14 @@ def name_codes(b: Builder) -> None:
         values = [str(v) for v in spec.get("values") or []]
         if spec.get("type") != "discrete" or len(values) < 3:
             continue
-        if spec.get("show") or not all(_SHORT.fullmatch(v) for v in values):
+        # dashes among the codes are the display's blank ("FRAME --": no frame), named too
+        codes = [v for v in values if not _BLANK.fullmatch(v)]
+        if spec.get("show") or len(values) - len(codes) > 1:
+            continue
+        if not all(_SHORT.fullmatch(v) for v in codes):
             continue
         # codes of letters alone ("SH", "KN") only from a column headed as the code
-        found = _chart_names(b, values, headed=not all(_CODE.fullmatch(v) for v in values))
+        found = _chart_names(b, values, headed=not all(_CODE.fullmatch(v) for v in codes))
         if found:
             names, row = found
             rename_codes(b, var, spec, names)

@@ -23,8 +23,10 @@ from apbot.read.shapes import ASIDE_HEADING
 # a legend line: a display word in capitals, two spaces or more, what it means
 # (a word with dashes for its blank value, "AUTO OFF --  the auto switch-off is disabled", is
 # that word while off)
+# (the panel's icon may stand before the word, as drawn beside it: "⚡̸ GRID OFF   grid off")
 _LEGEND = re.compile(
-    r"^\s*(?:[-•▪*]\s*)?([A-Z][A-Z0-9+]+(?: [A-Z0-9+]+)?(?: -{1,3}(?=\s))?)\s{2,}(\S.*)$"
+    r"^\s*(?:[-•▪*]\s*)?(?:[^\w\s()\[\]]{1,3}\s+)?"
+    r"([A-Z][A-Z0-9+]+(?: [A-Z0-9+]+)?(?: -{1,3}(?=\s))?)\s{2,}(\S.*)$"
 )
 _SHORT = 8  # words: a legend's meaning, not a paragraph that happens to say "off"
 _SUBJECT = 3  # words naming what is off ("the door alarm", "end signal")

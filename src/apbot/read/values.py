@@ -45,6 +45,10 @@ STOPS_RE = re.compile(
     re.IGNORECASE,
 )
 TIME_RANGE_RE = re.compile(rf"(?<![\d:])({_TIME}){_DASH}({_TIME})(?![\d:])")
+# "0:30 – 0:45 – 1:00 – 1:15": a chain of clock values one by one, not the range of its first two
+TIME_CHAIN_RE = re.compile(
+    rf"(?<![\d:])(?P<run>{_TIME}(?P<sep>\s*[-–]\s*){_TIME}(?:(?P=sep){_TIME})+)(?![\d:])"
+)
 UPTO_RE = re.compile(rf"\bup to\s+({NUM})\s*({UNIT})(?!\w)", re.IGNORECASE)
 STEP_RE = re.compile(
     rf"(?:in\s+({NUM})\s*-?\s*({UNIT})?\s*(?:steps|increments|stages|units)(?!\s+of\b)"
@@ -201,7 +205,18 @@ def find_ranges(text: str) -> list[Range]:
 
 def _ranges(text: str) -> list[Range]:
     out: list[Range] = []
+    timed = [(m.start(), m.end()) for m in TIME_CHAIN_RE.finditer(text)]
+    for m in TIME_CHAIN_RE.finditer(text):
+        min_sec = minutes_and_seconds(text, m.end())
+        stops: list[float] = [clock_seconds(x, min_sec) for x in re.findall(_TIME, m.group("run"))]
+        if stops == sorted(set(stops)):
+            between = gaps(stops)
+            out.append(
+                Range(stops[0], stops[-1], "s", between.pop() if len(between) == 1 else None)
+            )
     for m in TIME_RANGE_RE.finditer(text):
+        if any(a <= m.start() < b for a, b in timed):
+            continue  # a pair of values in a chain of them, not a range
         min_sec = minutes_and_seconds(text, m.end())  # "0:01 - 99:59 (min:s)"
         a, b = clock_seconds(m.group(1), min_sec), clock_seconds(m.group(2), min_sec)
         if a < b:
