@@ -48,6 +48,12 @@ def test_numbers_that_ask_nothing_are_not_unread() -> None:
     assert unplaced_numbers("A kilo and a half of meat", {"weight": 1500}) == []
 
 
+def test_a_whole_hour_is_not_held_by_the_zero_of_another_value() -> None:
+    # "6 am" is 6:00; its minute 0 is no form of it where only a 20-minute run was placed
+    assert unplaced_numbers("Mist at 6 am for 20 minutes", {"run": "00:20:00"}) == ["6 am"]
+    assert unplaced_numbers("Wake me at 6:00", {"hour": 6, "minute": 0}) == []
+
+
 def test_a_corrected_number_left_in_the_goal_is_unread() -> None:
     # the parser kept the first figure: the corrected one is what the user wants
     assert unplaced_numbers("Speed 8 - no, make it seven", {"speed": 8}) == ["seven"]

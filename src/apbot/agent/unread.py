@@ -123,7 +123,10 @@ def _held(mention: Mention, tokens: list[Token], held: set[float]) -> bool:
     if mention.kind == "duration":
         forms |= {mention.value / 60, mention.value / 3600}
     if mention.kind == "clock":
-        forms |= {float(mention.value // 3600), float(mention.value % 3600 // 60)}
+        # its hour and minute, where the goal holds them apart (an alarm's hour and minute);
+        # a whole hour's minute 0 is no form of it: every duration under an hour holds a 0
+        hours, minutes = divmod(int(mention.value) // 60, 60)
+        forms |= {float(hours)} | ({float(minutes)} if minutes else set())
     said = read_number(tokens, mention.start)
     if said is not None:
         forms.add(said.value)
