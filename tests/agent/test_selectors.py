@@ -55,3 +55,35 @@ def test_a_switch_or_a_lock_is_no_selector() -> None:
         """
     )
     assert programmes(model) == set()
+
+
+# The same plates with a mode each (off, warm, boil): the plate is chosen before its mode.
+MODES = """
+controls: [{id: plate, label: PLATE}, {id: mode, label: MODE}]
+variables:
+  plate: {type: discrete, values: [left, right], show: {left: "L", right: "R"}}
+  mode:
+    type: discrete
+    label: MODE
+    depends_on: plate
+    remember: true
+    cases:
+      left: {values: ["off", warm, boil]}
+      right: {values: ["off", warm, boil]}
+actions: {press_plate: {control: plate}, press_mode: {control: mode}}
+features:
+  mode: [{actions: [press_mode], variable: mode, effect: next}]
+  plate: [{actions: [press_plate], variable: plate, effect: toggle}]
+display: {idle: "{plate}"}
+"""
+
+
+def test_a_part_is_chosen_before_the_programme_it_may_keep_its_own_of() -> None:
+    belief = model_from(
+        MODES.replace("    depends_on: plate\n    remember: true\n", "")
+        .replace('      left: {values: ["off", warm, boil]}\n', "")
+        .replace('      right: {values: ["off", warm, boil]}\n', "")
+        .replace("    cases:\n", '    values: ["off", warm, boil]\n')
+    )
+    episode, reached = run(model_from(MODES), belief, {"plate": "right", "mode": "boil"})
+    assert reached and episode.claimed_success, episode.failure

@@ -28,6 +28,18 @@ def programmes(model: ApplianceModel) -> set[str]:
     return {n for n in found if n is not None}
 
 
+def selectors(model: ApplianceModel) -> set[str]:
+    """The programmes that choose a part (two named values, :func:`_selector`): chosen before
+    the other programmes, for a part (the right bowl) may keep its own mode as well."""
+    return {
+        name
+        for name, spec in model.variables.items()
+        if isinstance(spec, DiscreteVariable)
+        and len(spec.values or ()) == 2
+        and _selector([str(v) for v in spec.values or ()])
+    }
+
+
 _SWITCH_WORDS = frozenset({"off", "on", "no", "yes", "none", "0", "1"})
 
 
