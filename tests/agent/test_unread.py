@@ -48,6 +48,12 @@ def test_numbers_that_ask_nothing_are_not_unread() -> None:
     assert unplaced_numbers("A kilo and a half of meat", {"weight": 1500}) == []
 
 
+def test_a_whole_hour_is_not_held_by_the_zero_of_another_value() -> None:
+    # "6 am" is 6:00; its minute 0 is no form of it where only a 20-minute run was placed
+    assert unplaced_numbers("Mist at 6 am for 20 minutes", {"run": "00:20:00"}) == ["6 am"]
+    assert unplaced_numbers("Wake me at 6:00", {"hour": 6, "minute": 0}) == []
+
+
 def test_a_corrected_number_left_in_the_goal_is_unread() -> None:
     # the parser kept the first figure: the corrected one is what the user wants
     assert unplaced_numbers("Speed 8 - no, make it seven", {"speed": 8}) == ["seven"]
@@ -108,3 +114,18 @@ def test_a_setting_named_but_left_out_of_the_goal_is_unread() -> None:
     assert unnamed_settings(model, said, {"mode": "stout"}) == ["recirculation"]
     # the unread part stops a claim of success: the goal as read is only a part
     assert unread_parts(model, said, {"mode": "stout", "boil": "90"}) == ["recirculation"]
+
+
+def test_an_end_of_a_range_asked_in_words_must_be_placed() -> None:
+    from apbot.agent.extremes import unmet_extremes
+
+    belief = model_from(CHARGER)
+    said = "Charge on the longest timer"
+    assert unmet_extremes(belief, said, {"timer": "4 h"}) == ["the longest"]
+    assert unmet_extremes(belief, said, {"timer": "12 h"}) == []
+    assert unmet_extremes(belief, "Charge as long as it can go", {"timer": "8 h"}) == [
+        "as long as it can go"
+    ]
+    # said beside its figure, the number check answers for it; a request for no end is none
+    assert unmet_extremes(belief, "Timer at 4 h, the longest I need", {"timer": "4 h"}) == []
+    assert unmet_extremes(belief, "Timer 4 h, the best for the battery", {"timer": "4 h"}) == []

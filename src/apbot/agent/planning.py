@@ -13,7 +13,7 @@ from collections.abc import Hashable
 from typing import Any
 
 from apbot.agent.executed import AgentConfig
-from apbot.agent.programmes import programmes
+from apbot.agent.programmes import programmes, selectors
 from apbot.agent.session import Session
 from apbot.plan.plan import MacroAction, Plan, Unreachable, plan
 from apbot.sim.compiled import CompiledModel, State
@@ -67,7 +67,11 @@ class BeliefPlans:
         parents = set(chosen)
         macros = found.macro_actions
         last = max((i for i, m in enumerate(macros) if parents & set(m.expect)), default=0)
-        if not any(set(m.expect) & (set(target) - parents) for m in macros[:last]):
+        parts = parents & selectors(self.session.belief.model)
+        part = max((i for i, m in enumerate(macros) if parts & set(m.expect)), default=0)
+        if not any(set(m.expect) & (set(target) - parents) for m in macros[:last]) and not any(
+            set(m.expect) & (parents - parts) for m in macros[:part]
+        ):
             return found
         compiled, budget = self.session.belief.compiled, self.config.plan_budget
         work = self.config.plan_work
@@ -83,24 +87,35 @@ class BeliefPlans:
             if state is None:
                 return found
         length = len(found) - sum(len(m.actions) for m in lead)
+        # the part chosen first (the right bowl), then its programme (its mode): each layer
+        # holds the ones before it
+        first = {n: v for n, v in chosen.items() if n in parts}
+        layers = [first, chosen] if first and len(first) < len(chosen) else [chosen]
+        heads: list[MacroAction] = []
+        used = 0
         try:
-            head = plan(compiled, state, chosen, budget, work, length)
-            if not head.actions:  # the programmes hold: the rest is the search just made
+            for layer in layers:
+                head = plan(compiled, state, layer, budget, work, length - used)
+                for action in head.actions:
+                    assert state is not None
+                    state = compiled.apply(
+                        state, compiled.action_index[action.name], action.seconds
+                    )
+                    if state is None:
+                        return found
+                heads += head.macro_actions
+                used += len(head)
+            if not heads:  # the programmes hold: the rest is the search just made
                 return found
-            for action in head.actions:
-                assert state is not None
-                state = compiled.apply(state, compiled.action_index[action.name], action.seconds)
-                if state is None:
-                    return found
-            if len(head) > length:
+            if used > length:
                 return found
             # only a rest as short as the found plan's is of use: search no further
-            rest = plan(compiled, state, target, budget, work, length - len(head))
+            rest = plan(compiled, state, target, budget, work, length - used)
         except Unreachable:
             return found
-        if len(head) + len(rest) != length:
+        if used + len(rest) != length:
             return found
-        macro_actions = (*lead, *head.macro_actions, *rest.macro_actions)
+        macro_actions = (*lead, *heads, *rest.macro_actions)
         return Plan(found.goal, macro_actions, found.expanded)
 
     def start_anyway(self, name: str, value: Any, target: dict[str, Any]) -> Plan | None:

@@ -11,7 +11,9 @@ kinds of words are counted as unread, from the user's sentence and the belief al
 - a value the user named for a kind of setting the belief has no such value for ("the winter
   mode" where the modes read are others): the parser's own note says so;
 - a setting the user named that the goal leaves out ("the recirculation pump on" where only
-  the boil was placed): :mod:`apbot.agent.unnamed`.
+  the boil was placed): :mod:`apbot.agent.unnamed`;
+- an end of a range asked in words ("the hottest setting") where no goal setting stands at
+  an end of its range: :mod:`apbot.agent.extremes`.
 
 Numbers that ask nothing are left alone: counts of things ("two slices"), a number written as an
 article or a fraction word ("a kilo and a half": the whole is what was placed), a code glued to
@@ -26,6 +28,7 @@ import re
 from collections.abc import Iterable, Mapping
 from typing import Any
 
+from apbot.agent.extremes import unmet_extremes
 from apbot.agent.unnamed import unnamed_settings
 from apbot.model.schema import ApplianceModel
 from apbot.read.goal import parse_instruction
@@ -65,6 +68,7 @@ def unread_parts(
         *unplaced_numbers(text, {**goal, **named}),
         *unknown_names(belief, instruction, manual),
         *unnamed_settings(belief, text, goal, manual),
+        *unmet_extremes(belief, text, goal),
     ]
 
 
@@ -123,7 +127,10 @@ def _held(mention: Mention, tokens: list[Token], held: set[float]) -> bool:
     if mention.kind == "duration":
         forms |= {mention.value / 60, mention.value / 3600}
     if mention.kind == "clock":
-        forms |= {float(mention.value // 3600), float(mention.value % 3600 // 60)}
+        # its hour and minute, where the goal holds them apart (an alarm's hour and minute);
+        # a whole hour's minute 0 is no form of it: every duration under an hour holds a 0
+        hours, minutes = divmod(int(mention.value) // 60, 60)
+        forms |= {float(hours)} | ({float(minutes)} if minutes else set())
     said = read_number(tokens, mention.start)
     if said is not None:
         forms.add(said.value)
