@@ -160,3 +160,21 @@ def test_a_letter_key_is_its_letter_not_a_phrase_holding_it() -> None:
     manual = parse_manual(GRILL)
     labels = find_labels(manual, ["power", "beef", "fish", "v"])
     assert labels["v"].text == "V"
+
+
+HEATER = """WARMO H-2 panel heater
+
+KEYS
+
+  ⏻   on / off
+  ✺   heat output
+
+2.1 Warmth
+
+Touch ✺ to change the output: LOW → MEDIUM → HIGH → LOW ...
+"""
+
+
+def test_a_key_printed_as_an_icon_is_named_by_the_heading_its_word_begins() -> None:
+    model = read_manual(HEATER, ["press_power", "press_warm"]).model
+    assert "warmth" in model.variables  # not "warm", the action's clipped word
