@@ -178,3 +178,25 @@ Touch ✺ to change the output: LOW → MEDIUM → HIGH → LOW ...
 def test_a_key_printed_as_an_icon_is_named_by_the_heading_its_word_begins() -> None:
     model = read_manual(HEATER, ["press_power", "press_warm"]).model
     assert "warmth" in model.variables  # not "warm", the action's clipped word
+
+
+ROLLER = """ROLLA R-1 foam roller
+
+PARTS
+
+  (A) Display
+  (B) Dial: turn to choose a pattern; push (click) to start or stop
+  (C) ⏻ (hold 2 seconds)
+
+Turn the dial: WAVE → PULSE → WAVE ...
+"""
+
+
+def test_a_key_whose_push_starts_and_stops_is_the_start() -> None:
+    model = read_manual(ROLLER, ["hold_power", "turn_dial_cw", "turn_dial_ccw", "press_dial"]).model
+    assert "running" in model.variables
+    assert any(
+        step.actions == ["press_dial"] and step.variable == "running"
+        for steps in model.features.values()
+        for step in steps
+    )
