@@ -200,3 +200,25 @@ def test_a_key_whose_push_starts_and_stops_is_the_start() -> None:
         for steps in model.features.values()
         for step in steps
     )
+
+
+PURIFIER = """AIRO P-3 air purifier
+
+KEYS
+
+  ⏻      on / off
+  MODE   chooses the mode: AUTO → SLEEP → TURBO → AUTO ...
+  LIGHT  night light: OFF → DIM → BRIGHT → OFF ...
+
+SWITCHING OFF
+
+When you switch off:
+  • the night light is kept (it comes back as it was);
+  • the mode always returns to AUTO, so the next start is quiet.
+"""
+
+
+def test_an_item_before_the_reset_in_its_list_says_what_is_kept() -> None:
+    model = read_manual(PURIFIER, ["press_power", "press_mode", "press_light"]).model
+    resets = {v for steps in model.features.values() for s in steps for v in s.reset or []}
+    assert "light" not in resets
