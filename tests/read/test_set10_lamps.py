@@ -222,3 +222,9 @@ def test_an_item_before_the_reset_in_its_list_says_what_is_kept() -> None:
     model = read_manual(PURIFIER, ["press_power", "press_mode", "press_light"]).model
     resets = {v for steps in model.features.values() for s in steps for v in s.reset or []}
     assert "light" not in resets
+
+
+def test_dot_lamps_beside_uneven_levels_are_what_the_display_shows() -> None:
+    text = LAMP + "\nLEVEL LAMPS\n\n    ●○○  1,500 lux\n    ●●○  3,000 lux\n    ●●●  6,000 lux\n"
+    level = read_manual(text, ACTIONS).model.variables["level"]
+    assert level.show == {"1500": "●○○", "3000": "●●○", "6000": "●●●"}
