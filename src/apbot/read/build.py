@@ -122,6 +122,8 @@ class Builder(EvidenceReader):
         if own and [p.lower() for p in own.group(2).split("/")] == values:
             label = own.group(1)  # the display names the setting, not the printed choices
         spec: dict[str, Any] = {"type": "discrete", "values": values, "label": label}
+        if ev is not None and ev.shows and set(ev.shows) == set(values):
+            spec["show"] = dict(ev.shows)  # "warm": "3000K", the figure its lamp prints
         if ev is not None and initial in values:
             spec["initial"] = initial
             self.note(f"variables.{name}.initial", f"starts at {initial}", ev.initial_at)

@@ -11,6 +11,7 @@ import re
 from apbot.read.build import Builder
 from apbot.read.labels import words
 from apbot.read.shapes import CHOICE_WORDS, GROUP_PLURALS
+from apbot.read.text import Unit
 
 STAY_RE = re.compile(
     r"\b(?:stays?|remains?|kept|keeps?|unchanged|not (?:reset|lost|changed?|cleared))\b", re.I
@@ -69,11 +70,15 @@ def apply_resets(b: Builder) -> None:
         return
     kept = {  # "your taste choice stays the same when you change the mode"; the sentence
         # right after the reset ("… return to their standard values. The dial position and the
-        # auto switch-off setting are kept.")
+        # auto switch-off setting are kept."), or an item of its list before it ("When you
+        # switch off: • brightness and colour are kept; • the mode returns to therapy")
         n
         for k, u in enumerate(units)
         if STAY_RE.search(u.text)
-        and (RESET_NOUN_RE.search(u.text) or (at < k <= at + 2 and not _STAYS_AT.search(u.text)))
+        and (
+            RESET_NOUN_RE.search(u.text)
+            or (0 < abs(k - at) <= 2 and not _STAYS_AT.search(u.text) and _one_list(units, at, k))
+        )
         for n in b.variables
         if set(words(n.replace("_", " "))) & set(words(u.text))
     }
@@ -143,3 +148,11 @@ def _set_back(b: Builder, text: str, choice: str, fixed: set[str]) -> dict[str, 
         if value is not None:
             out[name] = value
     return out
+
+
+def _one_list(units: list[Unit], at: int, k: int) -> bool:
+    """Unit ``k`` speaks with the reset at ``at``: after it, as before; before it only as an
+    item of the same bulleted list (the reset an item too, no other sentence between)."""
+    if k > at:
+        return True
+    return all(units[j].bullet for j in range(k, at + 1))

@@ -23,6 +23,10 @@ _NAME = re.compile(r"[a-z][a-z '&/+-]{1,30}")
 _SHORT = re.compile(r"[a-z0-9]{1,3}|[a-z]{1,3}\s?-?\d{1,2}")  # "sh", "a1", "p 3"
 _BLANK = re.compile(r"-{1,3}")
 _CODE_HEAD = re.compile(r"\b(?:codes?|display|shown|indication)\b", re.IGNORECASE)
+# a word a small display prints, read only from a column headed as the code: up to four
+# letters in one piece ("tHr", "rEAd", "SUN"), which may be words themselves
+_HEADED_SHORT = re.compile(r"[a-z0-9]{1,4}")
+_SEGMENT_CASE = re.compile(r"[a-z][A-Z]")  # "rEAd", "tHr": a capital after a small letter
 
 
 def name_codes(b: Builder) -> None:
@@ -35,10 +39,12 @@ def name_codes(b: Builder) -> None:
         codes = [v for v in values if not _BLANK.fullmatch(v)]
         if spec.get("show") or len(values) - len(codes) > 1:
             continue
-        if not all(_SHORT.fullmatch(v) for v in codes):
+        if not all(_HEADED_SHORT.fullmatch(v) for v in codes):
             continue
         # codes of letters alone ("SH", "KN") only from a column headed as the code
-        found = _chart_names(b, values, headed=not all(_CODE.fullmatch(v) for v in codes))
+        short = all(_SHORT.fullmatch(v) for v in codes)
+        headed = not all(_CODE.fullmatch(v) for v in codes)
+        found = _chart_names(b, values, headed=headed, segments=not short)
         if found:
             names, row = found
             rename_codes(b, var, spec, names)
@@ -51,29 +57,42 @@ def name_codes(b: Builder) -> None:
 
 
 def _chart_names(
-    b: Builder, codes: list[str], headed: bool = False
+    b: Builder, codes: list[str], headed: bool = False, segments: bool = False
 ) -> tuple[dict[str, str], Unit] | None:
     """The names beside the codes in the first table with a column of every one of them
-    (``headed``: a column whose header says it holds the codes, "Code", "Display")."""
+    (``headed``: a column whose header says it holds the codes, "Code", "Display";
+    ``segments``: codes of four letters, which may be words, only where the column prints
+    one as a segment display spells it, "rEAd", "tHr")."""
     for header, rows in _tables(b.manual.units):
         width = min(len(r.cells) for r in rows)
-        for column in range(width - 1):
+        for column in range(width):
             if headed and not (column < len(header) and _CODE_HEAD.search(header[column])):
                 continue
             cells = [_norm(r.cells[column]) for r in rows]
             if not set(codes) <= set(cells):
                 continue
-            names: dict[str, str] = {}
-            for row, cell in zip(rows, cells, strict=True):
-                name = _norm(row.cells[column + 1]).split(" / ")[0]  # "JERKY / MEAT": jerky
-                name = TRAILING_REMARK_RE.sub(
-                    "", name
-                )  # "Soft steam (bio / combi)": a remark on it
-                if cell in codes and _NAME.fullmatch(name) and not _CODE.fullmatch(name):
-                    names.setdefault(cell, name)
+            if segments and not any(_SEGMENT_CASE.search(r.cells[column]) for r in rows):
+                continue
+            names = _beside(rows, cells, codes, column + 1) if column + 1 < width else {}
+            if headed and column > 0 and len(names) < len(codes):
+                # "| Mode | Display |": a column headed as the code may follow the names
+                names = _beside(rows, cells, codes, column - 1)
             if len(names) == len(codes) and len(set(names.values())) == len(codes):
                 return names, rows[0]
     return None
+
+
+def _beside(rows: list[Unit], cells: list[str], codes: list[str], column: int) -> dict[str, str]:
+    """Each code's name in ``column`` of its row, where that cell is a name and no code."""
+    names: dict[str, str] = {}
+    for row, cell in zip(rows, cells, strict=True):
+        if column >= len(row.cells):
+            continue
+        name = _norm(row.cells[column]).split(" / ")[0]  # "JERKY / MEAT": jerky
+        name = TRAILING_REMARK_RE.sub("", name)  # "Soft steam (bio / combi)": a remark on it
+        if cell in codes and _NAME.fullmatch(name) and not _CODE.fullmatch(name):
+            names.setdefault(cell, name)
+    return names
 
 
 def rename_codes(b: Builder, var: str, spec: dict[str, Any], names: dict[str, str]) -> None:

@@ -40,6 +40,7 @@ from apbot.read.evidence_whose import (
     lead_cell,
     names_another,
 )
+from apbot.read.figure_names import figures_named
 from apbot.read.labels import unit_only_mention, words
 from apbot.read.quantity_units import _quantity_units
 from apbot.read.shapes import (
@@ -131,6 +132,7 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
         mentions = {i for t in tokens if t in self.labels for i in self.labels[t].mentions}
         best: list[str] | None = None
         best_prio = 0.0
+        candidates: list[list[str]] = []  # every list read for the key, for names of figures
         elsewhere = {
             i
             for t, lab in self.labels.items()
@@ -216,6 +218,7 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
                 items = items if named else _without_only(items)  # "SOFT or FIRM only": values
                 if not items:
                     continue
+                candidates.append(items)
                 if prio > best_prio:
                     best, best_prio, ev.values_at = items, prio, i
             waiting = i not in mentions and is_wait(text)  # "Leave for one to two hours."
@@ -383,6 +386,12 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
                 top = _every_minute_top(t)
                 if top and 2 <= top <= 30 and top == int(top):
                     best = _with_every(best, int(top))
+                    break
+        if best is not None and _numeric_items(best):
+            for listed in candidates:  # "3000K → 4500K" and a chart "WARM  3000K": by name
+                shows = figures_named(best, listed, units)
+                if shows:
+                    best, ev.shows = listed, shows
                     break
         if best is not None:
             best = _without_own_name(best, own)

@@ -89,6 +89,8 @@ class ListReader(OwnWords):
                         seen.append(j)
                     if re.search(r"\btable\b", units[j].text, re.I):
                         self._table_after(j, seen, 3)
+                if units[i].text.rstrip().endswith(":"):
+                    self._table_after(i, seen, 1)  # "Touch COLOUR to change the colour:"
         for token in tokens:
             tw = [w for w in words(token.replace("_", " ")) if len(w) >= 4]
             for i, unit in enumerate(units):
@@ -207,6 +209,8 @@ class ListReader(OwnWords):
         text = self._own_model_row(unit)
         out: list[tuple[list[str], float]] = []
         found = find_list(text)
+        if found and found[1] == "arrows" and mention and self._arrows_of_another(text, tokens):
+            found = None  # "COLOUR x2 · TIMER x4 (30 → 45 → 60)": TIMER's steps, not COLOUR's
         if found:
             out.append((found[0], 3.0 if found[1] == "arrows" else 2.0 if mention else 1.0))
         else:

@@ -97,3 +97,34 @@ class OwnWords(TableReader):
             if k > start:
                 end = min(end, k)
         return text[start:end]
+
+    def _arrows_of_another(self, text: str, tokens: list[str]) -> bool:
+        """A run of arrows that another key's label leads, nearer than this key's ("COLOUR x2 ·
+        TIMER x4 (30 → 45 → 60)"): the run is the steps of the key named right before it."""
+        first = re.search(r"→|->|⇒", text)
+        if not first:
+            return False
+        head = text[: first.start()]
+        own = [self.labels[t].text for t in tokens if t in self.labels and self.labels[t].text]
+        at_own = max((m.start() for lab in own for m in _label_at(lab, head)), default=-1)
+        if at_own < 0:
+            return False
+        others = [
+            lab.text
+            for t, lab in self.labels.items()
+            if t not in tokens and lab.text and lab.text not in own
+        ]
+        own_ends = [m.end() for lab in own for m in _label_at(lab, head) if m.start() == at_own]
+        after = max(own_ends, default=at_own)
+        return any(
+            m.start() > at_own
+            # "MENU 1 / MENU 2 button – …": labels joined by a slash or "or" share the run
+            and not re.fullmatch(r"[\s/,&+]*(?:(?:and|or)\s*)?", head[after : m.start()])
+            for lab in others
+            for m in _label_at(lab, head)
+        )
+
+
+def _label_at(label: str, text: str) -> list[re.Match[str]]:
+    """Where a key's printed label stands in a text as a word of its own, in the same case."""
+    return list(re.finditer(rf"(?<!\w){re.escape(label)}(?!\w)", text))

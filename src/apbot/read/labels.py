@@ -181,8 +181,11 @@ def find_labels(manual: Manual, tokens: list[str]) -> dict[str, Label]:
             signed = _signed_name(manual, tw)  # "POUCH +" for ``pouch_up``
             if signed is not None:
                 best, best_score, line = signed[0], 0.6, signed[1]
-        if best_score < 0.6 and len(tw) == 1 and len(tw[0]) == 1 and tw[0].isalpha():
-            letter = _letter_key(manual, tw[0].upper())  # a key printed as one letter ("M")
+        one_letter = len(tw) == 1 and len(tw[0]) == 1 and tw[0].isalpha()
+        if one_letter and best.upper() != tw[0].upper():
+            # a key printed as one letter ("M"): the letter where the text shows it is a key,
+            # not a phrase that holds the letter among others ("Example C - P at 130 °C")
+            letter = _letter_key(manual, tw[0].upper())
             if letter is not None:
                 best, best_score, line = tw[0].upper(), 0.6, letter
         if best_score < 0.6:

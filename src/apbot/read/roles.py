@@ -57,6 +57,7 @@ from apbot.read.roles_pads import (
     codes_shown,
     column_keys,
     listed_groups,
+    named_choice_keys,
     option_keys,
     pad_group,
     selecting_keys,
@@ -144,6 +145,11 @@ def assign(b: Builder) -> None:
             if selecting:
                 pad_group(b, selecting, noun, idle)
                 keys = [k for k in keys if k not in selecting]
+    if not functions and not selecting:  # "The keys CORN, FLOUR and P choose the programme"
+        selecting, noun = named_choice_keys(b, keys)
+        if selecting:
+            pad_group(b, selecting, noun)
+            keys = [k for k in keys if k not in selecting]
     pads = [k for k in keys if k.skill == "press" and not set(words(k.token)) & FUNCTION_WORDS]
     named = [k for k in keys if k.skill == "press" and k not in pads]
     for group in listed_groups(b, pads + named, tables_only=True):

@@ -200,6 +200,8 @@ def var_name(b: Builder, key: ActionInfo) -> str:
     if confirmed:  # "OK  Ends the entry of a stitch number": the stitch
         return confirmed
     lab = b.labels.get(key.controls[0])
+    if key.skill == "press" and (lab is None or lab.line is None):
+        return _heading_word(b, key.token) or base
     if key.skill != "press" or lab is None or lab.line is None:
         return base
     if len(key.token) == 1:  # a key printed as a letter ("M"): what its sentences say it picks
@@ -277,3 +279,19 @@ def stepped_noun(b: Builder, tokens: list[str], ev: Evidence | None = None) -> s
             counts[noun] = counts.get(noun, 0) + len(re.findall(rf"\b{noun}\b", text))
     best = max(SETTING_NOUNS, key=lambda n: (counts.get(n, 0), -SETTING_NOUNS.index(n)))
     return best if counts.get(best) else ""
+
+
+def _heading_word(b: Builder, token: str) -> str | None:
+    """A key whose name is printed nowhere (an icon, "☼"): the word of a heading that the
+    action's clipped word begins ("6.3 Brightness" for ``bright``), the setting's own name
+    as the manual and its users say it; None where no heading or more than one word fits."""
+    if "_" in token or len(token) < 4:
+        return None
+    found = {
+        w
+        for u in b.manual.units
+        if u.heading and u.text == u.heading
+        for w in words(u.heading)
+        if w.startswith(token) and w != token and w.isalpha() and len(w) <= len(token) + 6
+    }
+    return found.pop() if len(found) == 1 else None

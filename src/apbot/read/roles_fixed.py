@@ -23,6 +23,7 @@ from apbot.read.roles_holds import (
     held_other_job,
     held_power,
     held_start,
+    pushed_start,
 )
 from apbot.read.shapes import RUNNING_RE, STOP_WORDS
 from apbot.read.shown import LOCK_CUE, RUNNING_CUE, shown_words
@@ -264,6 +265,8 @@ def assign_running(
     ]
     if not starts and not stops:  # "SELECT dial … Press and hold 2 seconds: start or stop"
         starts = [i for i in infos if i.name not in done and held_start(b, i) is not None][:1]
+    if not starts and not stops:  # "Thumb wheel: turn to choose …; push (click) to start or stop"
+        starts = [i for i in infos if i.name not in done and pushed_start(b, i) is not None][:1]
     if starts or stops:
         var = b.unique("running", b.variables)
         b.variables[var] = {"type": "discrete", "values": ["off", "on"], "label": "RUN"}

@@ -255,3 +255,32 @@ def add_held_setting(b: Builder, hold: ActionInfo, at: int, noun: str, values: l
     var = b.add_discrete("unit", values, "", None)
     b.note(f"variables.{var}.values", ", ".join(b.variables[var]["values"]), at)
     b.feature(f"set_{var}", [{"actions": [hold.name], "variable": var, "effect": "next"}])
+
+
+# a push said to start and stop: "push (click) to start or stop", "press it to start or stop"
+_PUSH_STARTS = re.compile(
+    r"\b(?:push|press|click)\w*\b[^.;:]{0,24}?\bto\s+(?:start|stop)\w*\s*(?:or|and|/)\s*"
+    r"(?:start|stop)\w*\b",
+    re.IGNORECASE,
+)
+
+
+def pushed_start(b: Builder, info: ActionInfo) -> int | None:
+    """The legend line of a key not named START that says a push of it starts and stops the
+    run ("(E) Thumb wheel: turn to choose a programme; push (click) to start or stop"): the
+    line names the key's word before the clause; else None."""
+    if info.skill != "press" or len(info.controls) != 1:
+        return None
+    word = info.token.split("_")[0]
+    if len(word) < 3:
+        return None
+    named = re.compile(rf"\b{re.escape(word)}\b", re.IGNORECASE)
+    for i, unit in enumerate(b.manual.units):
+        if unit.cells:
+            continue
+        for clause in re.split(r"(?<=[.;])\s+", unit.text):
+            push = _PUSH_STARTS.search(clause)
+            lead = named.search(unit.text)
+            if push and lead and lead.start() < unit.text.find(clause) + push.start():
+                return i
+    return None

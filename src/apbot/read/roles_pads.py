@@ -327,3 +327,37 @@ def _show_codes(b: Builder, var: str, keys: list[ActionInfo], codes: dict[str, s
         f"variables.{var}.show",
         "the display shows each one's code: " + ", ".join(f"{v} {c}" for v, c in shown.items()),
     )
+
+
+# "The three keys CORN, FLOUR and P share one job: they choose the programme."
+_CHOOSE_ONE = re.compile(
+    rf"\b(?:choose|chooses|select|selects|pick|picks)\s+(?:the|a|one|your)?\s*"
+    rf"(?P<noun>{GROUP_PLURALS})\b",
+    re.IGNORECASE,
+)
+
+
+def named_choice_keys(b: Builder, keys: list[ActionInfo]) -> tuple[list[ActionInfo], str]:
+    """Three or more keys one sentence names as the keys that choose one thing ("The keys CORN,
+    FLOUR and P choose the programme"): each key goes to its own choice. Read before the keys'
+    own evidence, where the sentence listing them reads as each key's list of values."""
+    for unit in b.manual.units:
+        chosen = _CHOOSE_ONE.search(unit.text)
+        if unit.cells or not chosen or not re.search(r"\b(?:keys|buttons|pads)\b", unit.text):
+            continue
+        head = unit.text[: chosen.start()]
+        named = [
+            k
+            for k in keys
+            if k.skill == "press"
+            and b.labels[k.controls[0]].line is not None
+            and re.search(
+                rf"(?<![\w]){re.escape(b.labels[k.controls[0]].text)}(?![\w])",
+                head,
+            )
+        ]
+        named = _dedupe_keys(named)
+        if len(named) >= 3:
+            noun = chosen.group("noun").lower().rstrip("s")
+            return named, "programme" if noun == "program" else noun
+    return [], ""

@@ -69,6 +69,7 @@ class Evidence:
     initial_at: int | None = None
     keypad_at: int | None = None  # a sentence of its context speaks of the number keys
     longest: tuple[Range, int] | None = None  # "the longest setting is 13 hours", alone
+    shows: dict[str, str] | None = None  # each value's figure printed for it ("warm": "3000K")
     shown_hmm: tuple[int, int] | None = None  # (minutes, unit): "the display shows 9:30"
 
 
@@ -321,17 +322,19 @@ def _next_table_column(units: list[Unit], i: int, column: int = 0) -> list[str]:
     """The cells of one column (the first by default) of the table that starts right after
     unit ``i`` (header skipped)."""
     k = i + 1
-    shown = False
+    shown = headless = False
     if k < len(units) and units[k].cells and not units[k].header:
         if column == 0 and len(units[k].cells) >= 2 and PRESSES_RE.match(units[k].cells[0]):
             column = 1  # the first column counts presses: the values are in the next one
         cells = units[k].cells
         shown = column < len(cells) and bool(_DISPLAY_HEAD_RE.match(cells[column]))
-        k += 1  # the header row
+        headless = _data_first_row(units, k)
+        if not headless:
+            k += 1  # the header row
     items: list[str] = []
     numbers = 0
     start = k
-    while k < len(units) and units[k].cells and units[k].header:
+    while k < len(units) and units[k].cells and (units[k].header or (headless and k == start)):
         if column >= len(units[k].cells):
             k += 1
             continue
@@ -352,6 +355,28 @@ def _next_table_column(units: list[Unit], i: int, column: int = 0) -> list[str]:
     if numbers * 2 > len(items):
         return []  # a column of ranges or bare numbers is not a list of names
     return items if len(items) >= 2 else []
+
+
+_FIGURE_CELL_RE = re.compile(r"\d[\d.,]*\s*[A-Za-z°%]{0,3}")
+
+
+def _data_first_row(units: list[Unit], k: int) -> bool:
+    """A table drawn without a header ("WARM  3000K  yellowish …" then "NEUTRAL  4500K …"):
+    its first row holds a figure where every row below holds one in the same column, and a
+    header names its columns with words ("Colour | Kelvin"), never with figures."""
+    rows = []
+    j = k + 1
+    while j < len(units) and units[j].cells and units[j].header == units[k].cells:
+        rows.append(units[j].cells)
+        j += 1
+    first = units[k].cells
+    if len(rows) < 2:
+        return False
+    return any(
+        _FIGURE_CELL_RE.fullmatch(first[c].strip())
+        and all(c < len(r) and _FIGURE_CELL_RE.fullmatch(r[c].strip()) for r in rows)
+        for c in range(len(first))
+    )
 
 
 _DISPLAY_HEAD_RE = re.compile(r"\s*(?:disp(?:lay)?|screen|shown|shows)\b", re.I)  # ("Disp.")

@@ -21,7 +21,7 @@ from apbot.read.build import Builder
 from apbot.read.labels import words
 from apbot.read.report import Note
 
-_GLYPHS = "▮▯■□▰▱█░"
+_GLYPHS = "▮▯■□▰▱█░●○"  # (dot lamps too: "●○○  2,500 lux")
 _BAR_RE = re.compile(rf"(?<![{_GLYPHS}])[{_GLYPHS}]{{2,}}(?![{_GLYPHS}])")
 _AFTER_RE = re.compile(r"[^\S\n]*([A-Za-z0-9][\w+/-]*(?:[^\S\n][A-Za-z0-9][\w+/-]*){0,3})")
 
@@ -66,6 +66,7 @@ def _paired(lines: list[str], var: str, values: list[str]) -> tuple[dict[str, st
     found: dict[str, set[str]] = {}
     first = 0
     for n, line in enumerate(lines, start=1):
+        line = re.sub(r"(?<=\d),(?=\d{3}\b)", "", line)  # "●○○  2,500 lux": 2500
         for m in _BAR_RE.finditer(line):
             after = _AFTER_RE.match(line, m.end())
             if after is None:
@@ -93,13 +94,15 @@ def _named_near(lines: list[str], var: str, bars: dict[str, str], at: int) -> bo
 def _levels(spec: dict[str, Any]) -> list[str]:
     """A numeric setting's few values, when it has one stepped range (20–100 % by 20)."""
     ranges = spec.get("ranges") or []
-    if spec.get("type") != "numeric" or len(ranges) != 1 or spec.get("cases"):
+    if spec.get("type") != "numeric" or not ranges or spec.get("cases"):
         return []
-    low, high, step = ranges[0]
-    if not step or step <= 0 or (high - low) / step > 12:
-        return []
-    count = round((high - low) / step)
-    return [f"{low + k * step:g}" for k in range(count + 1)]
+    levels: list[str] = []  # (uneven pieces too: 2500–5000 by 2500, 5000–10000 by 5000)
+    for low, high, step in ranges:
+        if not isinstance(step, int | float) or step <= 0 or (high - low) / step > 12:
+            return []
+        count = round((high - low) / step)
+        levels += [x for k in range(count + 1) if (x := f"{low + k * step:g}") not in levels]
+    return levels if len(levels) <= 12 else []
 
 
 def _as_levels(spec: dict[str, Any], values: list[str]) -> None:

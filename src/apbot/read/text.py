@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 import unicodedata
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from apbot.read.errors import ReaderError
 from apbot.read.marks_legend import legend_meanings
@@ -35,7 +35,11 @@ from apbot.read.text_tables import _row_charts, _space_tables, _strip_markup
 MAX_MANUAL_CHARS = 400_000  # ten times the longest real manual we expect; larger is not a manual
 
 _BULLETS = "•●○◦▪▫■□►▶➤➢✓✔✗✘–—·*-"
-_BULLET_RE = re.compile(rf"^\s*(?:[{re.escape(_BULLETS)}]|\d{{1,2}}[.)]|\(\d{{1,2}}\))\s+")
+_CALLOUTS_RE = re.compile(r"[①-⑳❶-❿➀-➉]")
+# a callout number leads a legend's item as a bullet does ("① ⏻ - lamp on / off")
+_BULLET_RE = re.compile(
+    rf"^\s*(?:[{re.escape(_BULLETS)}]|\d{{1,2}}[.)]|\(\d{{1,2}}\)|[①-⑳❶-❿➀-➉])\s+"
+)
 _NUMBERED_RE = re.compile(r"^\s*(\d{1,2})[.)]\s+")
 _TABLE_RULE = re.compile(r"^\s*\|?\s*:?-{2,}:?\s*(\|\s*:?-{2,}:?\s*)*\|?\s*$")
 # (not inside a run of numbers: "50, 55, 60 ... 95, 100")
@@ -335,6 +339,8 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
             continue
         header = ()
         bullet = _BULLET_RE.match(line)
+        if bullet and len(_CALLOUTS_RE.findall(line)) > 1:
+            bullet = None  # "① PROGRAM knob · ② °C knob · …": the drawing's parts on one line
         if bullet:
             flush()
             step = _NUMBERED_RE.match(line)
@@ -370,7 +376,33 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
         para.append((number, stripped))
     flush()
     units = drop_tagged_models(drop_boilerplate(units, original), original, keys)
-    return Manual(units, original, glyphs)
+    return Manual([_grouped_digits(u) for u in units], original, glyphs)
+
+
+# a figure with its thousands set apart by commas ("2,500", "10,000 lux"): never a first group
+# that starts with 0 ("0,500" is a decimal), never a group run on by more digits or a decimal
+_THOUSANDS_RE = re.compile(r"(?<![\d.,])([1-9]\d{0,2})((?:,\d{3})+)(?![\d]|[.,]\d)")
+
+
+def _grouped_digits(unit: Unit) -> Unit:
+    """Write "2,500" as 2500: a comma before exactly three digits groups thousands (English
+    figures), where the decimal comma is written before one or two ("1,5 kg"). Read as a
+    decimal it made 2,500 / 5,000 / 10,000 lux levels of 2.5, 5 and 10."""
+    if "," not in unit.text:
+        return unit
+
+    def join(text: str) -> str:
+        return _THOUSANDS_RE.sub(lambda m: m.group(1) + m.group(2).replace(",", ""), text)
+
+    text = join(unit.text)
+    if text == unit.text:
+        return unit
+    return replace(
+        unit,
+        text=text,
+        cells=tuple(join(c) for c in unit.cells),
+        header=tuple(join(c) for c in unit.header),
+    )
 
 
 _LEADER_RE = re.compile(r"(?<=\S)[ \t]*(?:\.[ \t]?){4,}[ \t]*(?=\S)")

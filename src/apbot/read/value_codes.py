@@ -33,7 +33,12 @@ _FAULT_HEAD = re.compile(r"\b(?:causes?|remed(?:y|ies)|solutions?)\b", re.IGNORE
 def _code_like(text: str) -> bool:
     if not 1 <= len(text) <= 8 or not _CODE_TEXT.fullmatch(text) or _AMOUNT.fullmatch(text):
         return False
-    return all(len(w) <= 3 or w.upper() == w for w in re.findall(r"[A-Za-z]+", text))
+    # a word in capitals, a short one, or one a segment display spells in mixed case ("rEAd",
+    # "StdY": a capital after a small letter, as no word is written)
+    return all(
+        len(w) <= 3 or w.upper() == w or re.search(r"[a-z][A-Z]", w)
+        for w in re.findall(r"[A-Za-z]+", text)
+    )
 
 
 def read_value_codes(b: Builder) -> None:

@@ -177,7 +177,15 @@ def find_list(text: str) -> tuple[list[str], str] | None:
         head = _LEAD_COLON.split(parts[0])[-1].split()
         if head and head[-1].startswith("(") and len(head[-1]) > 1:
             head[-1] = head[-1][1:]  # "… the next programme code (P0 → P1 → …)": in brackets
+        # "COLOUR 3000K → 4500K → 6500K": a figure with its unit before the first arrow, where
+        # every other item is one too, is the list's first item, not a key's name
+        figure_first = bool(head) and all(
+            re.fullmatch(rf"{NUM}[a-z°%]{{1,3}}", w, re.IGNORECASE)
+            for w in [head[-1], *(p.split()[0] for p in parts[1:] if p)]
+        )
         capital = [w for w in head if w.upper() == w and any(c.isalpha() for c in w)]
+        if figure_first and len(capital) >= 2:  # (two capitals: which key's is unsure)
+            capital = [head[-1]]
         trailing: list[str] = []  # "Tap FAN to step through AUTO →": the run before the arrow
         for w in reversed(head):
             if w.upper() != w or not any(c.isalpha() for c in w):
