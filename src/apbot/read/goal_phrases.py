@@ -100,11 +100,19 @@ def value_phrases(
         info = infos[step.variable]
         if info.role in ("power", "running"):
             continue
+        stepping = {
+            label.casefold()
+            for action, effect in step_effects(step)
+            if not isinstance(effect, GoTo)
+            for label in control_labels(model, [action])
+        }  # PRESSURE pressed steps the pressure, held goes to 1: its label names the setting
         for action, effect in step_effects(step):
             if not isinstance(effect, GoTo):
                 continue
             for label in control_labels(model, [action]):
                 words = name_words(label)
+                if label.casefold() in stepping:
+                    continue
                 if words and not any(w in STOP_WORDS for w in words):
                     phrases.append((step.variable, effect.to, tuple(stem(w) for w in words), 0.95))
     return phrases
