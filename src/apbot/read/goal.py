@@ -32,6 +32,7 @@ from __future__ import annotations
 from apbot.model.domain import ValueProblem, normalise
 from apbot.model.schema import ApplianceModel, DiscreteVariable
 from apbot.model.values import closest_matches, preview
+from apbot.read.goal_ages import said_ages
 from apbot.read.goal_assign import assign_mentions
 from apbot.read.goal_both import both_values
 from apbot.read.goal_cases import entry_modes, implied_cases, set_by_hand
@@ -65,7 +66,7 @@ from apbot.read.goal_start import power_and_running
 from apbot.read.goal_switches import switches
 from apbot.read.goal_text import Text
 from apbot.read.goal_twins import place_twins
-from apbot.read.goal_unit_cases import said_units, unit_cases
+from apbot.read.goal_unit_cases import named_units, said_units, unit_cases
 from apbot.read.goal_values import in_days
 from apbot.read.goal_view import Goal, Model, model_view
 from apbot.read.goal_vocab import STOP_WORDS, stem
@@ -107,7 +108,10 @@ def parse_instruction(
     text = Text.of(
         ordinal_numbers(
             view,
-            every_periods(view, joined_compounds(view, without_remarks(view, str(instruction)))),
+            every_periods(
+                view,
+                joined_compounds(view, said_ages(view, without_remarks(view, str(instruction)))),
+            ),
         )
     )
     goal: Goal = {}
@@ -135,6 +139,7 @@ def parse_instruction(
         kept_outside(view, text, mentions, goal, claimed, where, outside)
         listed_outside(view, text, goal, claimed, where, outside, manual or "")
     superlatives(view, text, goal, claimed, where)
+    named_units(view, text, goal, claimed, where)
     said_units(view, goal)
     zero_settings(view, text, goal, claimed, where)
     off_levels(view, text, goal, claimed)

@@ -349,6 +349,8 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "economy": ("eco", "economical", "saving"),
     "repair": ("recovery", "recover", "recondition", "revive"),
     "refresh": ("freshen", "refreshing"),
+    "female": ("woman", "lady", "girl"),  # a profile's sex said of the person
+    "male": ("man", "gentleman", "boy"),
 }
 # Counts written as adverbs ("rinse twice").
 TIMES_WORDS = {"once": 1, "twice": 2, "thrice": 3}
