@@ -36,6 +36,7 @@ from apbot.read.goal_ages import said_ages
 from apbot.read.goal_assign import assign_mentions
 from apbot.read.goal_both import both_values
 from apbot.read.goal_cases import entry_modes, implied_cases, set_by_hand
+from apbot.read.goal_digits import spelled_codes
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_every import every_periods
 from apbot.read.goal_fractions import fractions
@@ -49,6 +50,7 @@ from apbot.read.goal_offs import (
     no_values,
     off_levels,
     self_switching_off,
+    switched_off_numbers,
     switched_off_values,
     zero_settings,
 )
@@ -110,7 +112,10 @@ def parse_instruction(
             view,
             every_periods(
                 view,
-                joined_compounds(view, said_ages(view, without_remarks(view, str(instruction)))),
+                joined_compounds(
+                    view,
+                    said_ages(view, spelled_codes(view, without_remarks(view, str(instruction)))),
+                ),
             ),
         )
     )
@@ -142,6 +147,7 @@ def parse_instruction(
     named_units(view, text, goal, claimed, where)
     said_units(view, goal)
     zero_settings(view, text, goal, claimed, where)
+    switched_off_numbers(view, text, goal, claimed, where)
     off_levels(view, text, goal, claimed)
     switched_off_values(view, text, goal, where)
     no_values(view, text, goal, claimed)

@@ -318,7 +318,7 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "light": ("pale", "lighter"),
     "dark": ("darker", "deep"),
     "low": ("lo", "quiet", "gentle", "quietest", "slow"),
-    "high": ("hi", "full", "fast", "strong"),
+    "high": ("hi", "full", "fast", "strong", "loud", "louder", "loudest"),
     "mid": ("medium", "middle", "moderate"),
     "lower": ("bottom",),
     "upper": ("top",),
