@@ -36,6 +36,7 @@ from apbot.read.goal_ages import said_ages
 from apbot.read.goal_assign import assign_mentions
 from apbot.read.goal_both import both_values
 from apbot.read.goal_cases import entry_modes, implied_cases, set_by_hand
+from apbot.read.goal_copies import confirmed_choices
 from apbot.read.goal_digits import spelled_codes
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_every import every_periods
@@ -61,6 +62,7 @@ from apbot.read.goal_periods import distinct, in_weeks
 from apbot.read.goal_quantity_values import quantity_values
 from apbot.read.goal_remarks import without_remarks
 from apbot.read.goal_scales import superlatives
+from apbot.read.goal_scheduled_states import scheduled_states
 from apbot.read.goal_selector import on_auto_off
 from apbot.read.goal_spans import time_spans
 from apbot.read.goal_spelling import joined_compounds
@@ -129,6 +131,7 @@ def parse_instruction(
         goal[match.var] = match.value
         where[match.var] = match.start
         claimed.update(range(match.start, match.end))
+    confirmed_choices(view, goal, where)
     both_values(view, text, matches, goal, claimed, where)
     restated_codes(view, text, goal, claimed)
     pronoun_ones(text, claimed)
@@ -155,6 +158,7 @@ def parse_instruction(
     self_switching_off(view, text, goal, claimed)
     muted_volume(view, text, goal, claimed)
     place_twins(view, text, goal, where)
+    scheduled_states(view, text, goal, where)
     entry_switches(view, goal)
     gated_switches(view, text, goal)
     set_by_hand(view, text, goal)

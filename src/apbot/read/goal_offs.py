@@ -152,13 +152,15 @@ def switched_off_numbers(
     view: Model, text: Text, goal: Goal, claimed: set[int], where: dict[str, int] | None = None
 ) -> None:
     """ "auto-lock off", "turn off the automatic locking", "the auto-relock disabled": a
-    numeric setting named for what it does automatically, whose lowest value 0 is its "none",
-    switched off is 0 — only where "off" is no word of its own name (AUTO OFF keeps its
-    minutes) and no number is said for it."""
+    numeric setting whose lowest value 0 is its "none", switched off is 0 — only where "off"
+    is no word of its own name (AUTO OFF keeps its minutes) and no number is said for it; said
+    with the state after it, only a setting named for what it does automatically (AUTO …):
+    "the timer off" may mean the timer left as it is."""
     for k, token in enumerate(text.tokens):
         if token.text in ("disabled", "off") and k > 0 and k - 1 not in claimed:
             home = _zero_home(view, text, goal, k - 1)
-            if home is not None and stem("off") not in own_stems(home):
+            automatic = home is not None and concept("auto") in own_concepts(home)
+            if home is not None and automatic and stem("off") not in own_stems(home):
                 _set_zero(view, goal, claimed, where, k - 1, home)
                 continue
         after = token.text == "off" and text.word(k - 1) in _SWITCHING
