@@ -140,11 +140,3 @@ features:
 def test_the_confirmed_course_is_the_one_meant() -> None:
     model = loads_model(CABINET)
     assert parse_instruction(model, "the deep course") == {"course": "deep"}
-
-
-def test_silent_names_a_quiet_switch() -> None:
-    model = loads_model(CABINET)
-    assert parse_instruction(model, "soft course, silent operation please") == {
-        "course": "soft",
-        "quiet": "on",
-    }

@@ -154,8 +154,6 @@ _GROUPS: tuple[tuple[str, ...], ...] = (
         "silence",
         "quiet",
         "alarm",
-        "silent",
-        "silently",
     ),
     ("dry", "drying", "dryer"),
     ("sterilize", "steam", "sterilise", "sanitize", "uv"),
