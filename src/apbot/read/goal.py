@@ -32,9 +32,12 @@ from __future__ import annotations
 from apbot.model.domain import ValueProblem, normalise
 from apbot.model.schema import ApplianceModel, DiscreteVariable
 from apbot.model.values import closest_matches, preview
+from apbot.read.goal_ages import said_ages
 from apbot.read.goal_assign import assign_mentions
 from apbot.read.goal_both import both_values
 from apbot.read.goal_cases import entry_modes, implied_cases, set_by_hand
+from apbot.read.goal_copies import confirmed_choices
+from apbot.read.goal_digits import spelled_codes
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_every import every_periods
 from apbot.read.goal_fractions import fractions
@@ -48,6 +51,7 @@ from apbot.read.goal_offs import (
     no_values,
     off_levels,
     self_switching_off,
+    switched_off_numbers,
     switched_off_values,
     zero_settings,
 )
@@ -58,6 +62,7 @@ from apbot.read.goal_periods import distinct, in_weeks
 from apbot.read.goal_quantity_values import quantity_values
 from apbot.read.goal_remarks import without_remarks
 from apbot.read.goal_scales import superlatives
+from apbot.read.goal_scheduled_states import scheduled_states
 from apbot.read.goal_selector import on_auto_off
 from apbot.read.goal_spans import time_spans
 from apbot.read.goal_spelling import joined_compounds
@@ -65,7 +70,7 @@ from apbot.read.goal_start import power_and_running
 from apbot.read.goal_switches import switches
 from apbot.read.goal_text import Text
 from apbot.read.goal_twins import place_twins
-from apbot.read.goal_unit_cases import said_units, unit_cases
+from apbot.read.goal_unit_cases import named_units, said_units, unit_cases
 from apbot.read.goal_values import in_days
 from apbot.read.goal_view import Goal, Model, model_view
 from apbot.read.goal_vocab import STOP_WORDS, stem
@@ -107,7 +112,13 @@ def parse_instruction(
     text = Text.of(
         ordinal_numbers(
             view,
-            every_periods(view, joined_compounds(view, without_remarks(view, str(instruction)))),
+            every_periods(
+                view,
+                joined_compounds(
+                    view,
+                    said_ages(view, spelled_codes(view, without_remarks(view, str(instruction)))),
+                ),
+            ),
         )
     )
     goal: Goal = {}
@@ -120,6 +131,7 @@ def parse_instruction(
         goal[match.var] = match.value
         where[match.var] = match.start
         claimed.update(range(match.start, match.end))
+    confirmed_choices(view, goal, where)
     both_values(view, text, matches, goal, claimed, where)
     restated_codes(view, text, goal, claimed)
     pronoun_ones(text, claimed)
@@ -135,8 +147,10 @@ def parse_instruction(
         kept_outside(view, text, mentions, goal, claimed, where, outside)
         listed_outside(view, text, goal, claimed, where, outside, manual or "")
     superlatives(view, text, goal, claimed, where)
+    named_units(view, text, goal, claimed, where)
     said_units(view, goal)
     zero_settings(view, text, goal, claimed, where)
+    switched_off_numbers(view, text, goal, claimed, where)
     off_levels(view, text, goal, claimed)
     switched_off_values(view, text, goal, where)
     no_values(view, text, goal, claimed)
@@ -144,6 +158,7 @@ def parse_instruction(
     self_switching_off(view, text, goal, claimed)
     muted_volume(view, text, goal, claimed)
     place_twins(view, text, goal, where)
+    scheduled_states(view, text, goal, where)
     entry_switches(view, goal)
     gated_switches(view, text, goal)
     set_by_hand(view, text, goal)

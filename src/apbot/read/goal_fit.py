@@ -57,7 +57,7 @@ def fit(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
     if measured is None:
         return None
     amount, dimension = measured
-    for value in domain:
+    for value in sorted(domain, key=lambda v: _zero_led(v) != mention.zero_led):
         q = parse_quantity(str(value))
         if q is None:
             continue
@@ -80,6 +80,13 @@ def fit(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
         or _named_quantity(view, info, mention, domain)
         or bare_choice(info, domain, mention)
     )
+
+
+def _zero_led(value: Any) -> bool:
+    """A code written with a leading zero ("06" beside "6" on a kiln's cone list): the user
+    who says "cone 6" means 6, and "cone 06" means 06."""
+    text = str(value)
+    return len(text) > 1 and text[0] == "0" and text.isdigit()
 
 
 def _per_hundred(info: VarInfo, dimension: str | None) -> bool:

@@ -95,7 +95,7 @@ def legend_words(
         for label in keys:
             if len(label) < 3 or not label.isupper():
                 continue
-            pattern = re.compile(rf"^{re.escape(label)}(?:\s{{2,}}|\s*[:|–—]\s*)(.+)$")
+            pattern = re.compile(rf"^{re.escape(label)}(?:\s{{2,}}|\s*[:|–—]\s*|\s+-\s+)(.+)$")
             for index, line in enumerate(lines):
                 found = pattern.match(line)
                 if found is None:

@@ -28,6 +28,7 @@ from typing import Any
 
 from apbot.model.domain import all_values
 from apbot.model.schema import ApplianceModel, DiscreteVariable, NumericVariable
+from apbot.read.goal_legend_lines import legend_line_names
 from apbot.read.goal_vocab import stem
 
 _CODE = re.compile(r"[a-z]{0,2}[- ]?\d{1,3}", re.IGNORECASE)
@@ -310,6 +311,9 @@ def coded_names(model: ApplianceModel, manual: str) -> list[tuple[str, Any, str]
         label = _name(text)
         if len(homes) == 1 and label:
             out.append((homes[0], variables[homes[0]][_key(code)], label))
+    named = {name for name, _, _ in out}
+    unnamed = {name: values for name, values in variables.items() if name not in named}
+    out += legend_line_names(unnamed, settings, manual)
     return list(dict.fromkeys(out))
 
 

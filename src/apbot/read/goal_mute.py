@@ -1,7 +1,8 @@
 """Silence said of an appliance that has a volume but no sound switch: "mute the doorbell",
-"silent, with one-touch locking", "mute the beeps" set the one VOLUME setting to its silent
-value (0 on a 0-10 scale, MUTE or OFF among its levels). Where a switch of sound exists (BEEP
-on/off) the word is that switch's, read elsewhere; a volume the goal already sets is left."""
+"silent, with one-touch locking", "mute the beeps", "no beeping", "sound off" set the one
+VOLUME setting to its silent value (0 on a 0-10 scale, MUTE or OFF among its levels). Where
+a switch of sound exists (BEEP on/off) the word is that switch's, read elsewhere; a volume the
+goal already sets is left."""
 
 from __future__ import annotations
 
@@ -19,7 +20,7 @@ _SILENT_VALUES = frozenset({"mute", "muted", "silent", "off", "0"})
 def muted_volume(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
     """Set the one volume setting silent when the instruction says silence and nothing else
     of the model is a sound to switch off."""
-    said = [k for k, t in enumerate(text.tokens) if t.text in _SILENT_WORDS and k not in claimed]
+    said = [k for k in range(len(text.tokens)) if _silence_at(text, k) and k not in claimed]
     if not said or _sound_switch(view):
         return
     volumes = [
@@ -39,6 +40,20 @@ def muted_volume(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None
 
 
 _DETERMINERS = frozenset({"the", "a", "an", "its", "my", "your", "that", "this"})
+_SOUNDS = frozenset({"sound", "sounds", "beep", "beeps", "beeping", "tone", "tones"})
+"""What a panel's sound is called: "no beeping", "sound off", "without the key tones"."""
+
+
+def _silence_at(text: Text, k: int) -> bool:
+    """Silence said at ``k``: a word of silence, or the sound denied ("no beeping", "without
+    the beeps") or switched off ("sound off", "beeps off")."""
+    word = text.word(k)
+    if word in _SILENT_WORDS:
+        return True
+    if word not in _SOUNDS:
+        return False
+    before = text.word(k - 2) if text.word(k - 1) in _DETERMINERS else text.word(k - 1)
+    return before in ("no", "without") or text.word(k + 1) == "off"
 
 
 def _of_another(view: Model, text: Text, k: int, volume: VarInfo) -> bool:

@@ -102,27 +102,76 @@ def zero_settings(
                 break
             if text.stems[j] in HANDLING:
                 break  # "without touching the timer": left as it is, not none
-            key = text.concepts[j]
-            homes = [
-                info
-                for info in view.infos.values()
-                if info.name not in goal
-                and info.role == "setting"
-                and not isinstance(info.var, DiscreteVariable)
-                and (text.stems[j] in own_stems(info) or key in own_concepts(info))
-                and _starts_at_zero(info)
-            ]
-            if len(homes) == 1:
-                values = domain_values(view, homes[0], goal)
-                zero = next((v for v in values if magnitude(v) == 0), None)
-                if zero is None and homes[0].timing in ("delay", "finish") and values:
-                    zero = min(values, key=lambda v: magnitude(v) or 0.0)  # the soonest end
-                if zero is not None:
-                    goal[homes[0].name] = zero
-                    if where is not None:
-                        where[homes[0].name] = j
-                    claimed.add(j)
+            home = _zero_home(view, text, goal, j)
+            if home is not None:
+                _set_zero(view, goal, claimed, where, j, home)
                 break
+
+
+def _zero_home(view: Model, text: Text, goal: Goal, j: int) -> VarInfo | None:
+    """The one numeric setting not yet in the goal that the word at ``j`` names and whose
+    "none" is 0."""
+    key = text.concepts[j]
+    homes = [
+        info
+        for info in view.infos.values()
+        if info.name not in goal
+        and info.role == "setting"
+        and not isinstance(info.var, DiscreteVariable)
+        and (text.stems[j] in own_stems(info) or key in own_concepts(info))
+        and _starts_at_zero(info)
+    ]
+    return homes[0] if len(homes) == 1 else None
+
+
+def _set_zero(
+    view: Model,
+    goal: Goal,
+    claimed: set[int],
+    where: dict[str, int] | None,
+    j: int,
+    home: VarInfo | None,
+) -> None:
+    if home is None:
+        return
+    values = domain_values(view, home, goal)
+    zero = next((v for v in values if magnitude(v) == 0), None)
+    if zero is None and home.timing in ("delay", "finish") and values:
+        zero = min(values, key=lambda v: magnitude(v) or 0.0)  # the soonest end
+    if zero is not None:
+        goal[home.name] = zero
+        if where is not None:
+            where[home.name] = j
+        claimed.add(j)
+
+
+_SWITCHING = frozenset({"turn", "switch", "turned", "switched", "set", "put"})
+
+
+def switched_off_numbers(
+    view: Model, text: Text, goal: Goal, claimed: set[int], where: dict[str, int] | None = None
+) -> None:
+    """ "auto-lock off", "turn off the automatic locking", "the auto-relock disabled": a
+    numeric setting whose lowest value 0 is its "none", switched off is 0 — only where "off"
+    is no word of its own name (AUTO OFF keeps its minutes) and no number is said for it; said
+    with the state after it, only a setting named for what it does automatically (AUTO …):
+    "the timer off" may mean the timer left as it is."""
+    for k, token in enumerate(text.tokens):
+        if token.text in ("disabled", "off") and k > 0 and k - 1 not in claimed:
+            home = _zero_home(view, text, goal, k - 1)
+            automatic = home is not None and concept("auto") in own_concepts(home)
+            if home is not None and automatic and stem("off") not in own_stems(home):
+                _set_zero(view, goal, claimed, where, k - 1, home)
+                continue
+        after = token.text == "off" and text.word(k - 1) in _SWITCHING
+        if after or token.text == "disable":
+            j = k + 1
+            while text.word(j) in ("the", "its", "my", "that"):
+                j += 1
+            if j < len(text.tokens) and j not in claimed:
+                home = _zero_home(view, text, goal, j)
+                if home is not None and stem("off") not in own_stems(home):
+                    _set_zero(view, goal, claimed, where, j, home)
 
 
 def off_levels(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:

@@ -46,6 +46,9 @@ def _first_words(name: str, info: VarInfo) -> list[tuple[str, Any, tuple[str, ..
     ]
 
 
+# words of a scale's ends, whose superlatives the parser reads as ends of any setting
+_SCALE_WORDS = frozenset({"high", "low", "hi", "lo", "max", "min", "top", "long", "short"})
+
 # words of pace that stand for a level of speed ("run it slow": LOW), never of heat
 _PACE_WORDS = frozenset({"slow", "fast"})
 
@@ -88,6 +91,11 @@ def value_phrases(
                         phrases.append((name, value, (stem(alias),), 0.9))
                     continue
                 phrases.append((name, value, tuple(stem(w) for w in words), 1.0))
+                ends = (str(info.values[0]), str(info.values[-1]))
+                scale = words[0] in _SCALE_WORDS  # "the highest humidity": read as an end
+                if len(words) == 1 and text in ends and len(info.values) >= 3 and not scale:
+                    for most in superlatives(words[0]):  # "the slowest speed": SLOW of three
+                        phrases.append((name, value, (stem(most),), 0.9))
                 for synonym in SYNONYMS.get(words[0], ()) if len(words) == 1 else ():
                     if synonym in _PACE_WORDS and concept("temperature") in info.vocab:
                         continue  # "steam the fish slowly": a pace, no LOW heat
@@ -100,11 +108,19 @@ def value_phrases(
         info = infos[step.variable]
         if info.role in ("power", "running"):
             continue
+        stepping = {
+            label.casefold()
+            for action, effect in step_effects(step)
+            if not isinstance(effect, GoTo)
+            for label in control_labels(model, [action])
+        }  # PRESSURE pressed steps the pressure, held goes to 1: its label names the setting
         for action, effect in step_effects(step):
             if not isinstance(effect, GoTo):
                 continue
             for label in control_labels(model, [action]):
                 words = name_words(label)
+                if label.casefold() in stepping:
+                    continue
                 if words and not any(w in STOP_WORDS for w in words):
                     phrases.append((step.variable, effect.to, tuple(stem(w) for w in words), 0.95))
     return phrases
@@ -120,3 +136,20 @@ def _shown_label(show: dict[Any, Any]) -> set[str]:
     for text in texts[1:]:
         shared &= set(phrase_words(text))
     return shared
+
+
+def superlatives(word: str) -> list[str]:
+    """The superlative forms an adjective may take ("slow" → slowest, "big" → biggest,
+    "gentle" → gentlest, "dry" → driest); none for a word of under three letters or one
+    already ending in "-est"."""
+    w = word.casefold()
+    if len(w) < 3 or not w.isalpha() or w.endswith("est"):
+        return []
+    if w.endswith("e"):
+        return [f"{w}st"]
+    if w.endswith("y"):
+        return [f"{w[:-1]}iest"]
+    forms = [f"{w}est"]
+    if len(w) <= 4 and w[-1] not in "aeiouwxy" and w[-2] in "aeiou" and w[-3] not in "aeiou":
+        forms.append(f"{w}{w[-1]}est")  # big → biggest, hot → hottest
+    return forms

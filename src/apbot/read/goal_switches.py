@@ -29,7 +29,15 @@ from apbot.read.goal_view import (
     own_concepts,
     own_stems,
 )
-from apbot.read.goal_vocab import STOP_WORDS, SYNONYMS, concept, cut_short, said_as_doer, stem
+from apbot.read.goal_vocab import (
+    NEGATIONS,
+    STOP_WORDS,
+    SYNONYMS,
+    concept,
+    cut_short,
+    said_as_doer,
+    stem,
+)
 
 
 def switches(
@@ -183,7 +191,21 @@ def _state_after(text: Text, k: int, vocab: dict[str, float]) -> bool:
     while j < len(text.tokens) and vocab.get(text.concepts[j], 0.0) > 0:
         j += 1
     ends = CLAUSE_ENDS | {"", ",", "and", "then"}
-    return text.word(j) in ("on", "running") and text.word(j + 1) in ends
+    if text.word(j) in ("on", "running") and text.word(j + 1) in ends:
+        return True
+    # "switch on the daily timer", "enable the timer": the state asked just before the thing
+    said = False
+    for i in range(k - 1, max(-1, k - 4), -1):
+        word = text.word(i)
+        if word in _ENABLING or (word == "on" and text.word(i - 1) in ("switch", "turn", "put")):
+            said = True
+            break
+        if word in CLAUSE_ENDS or word in (",", "and", "off") or word in NEGATIONS:
+            break
+    return said and text.word(j) in ends | {"too", "as", "now"}
+
+
+_ENABLING = frozenset({"enable", "activate"})
 
 
 _MODE_NOUNS = frozenset(stem(w) for w in ("mode", "setting", "programme", "function"))

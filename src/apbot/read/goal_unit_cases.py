@@ -20,7 +20,7 @@ from apbot.read.numbers import Mention
 
 _DEGREES = frozenset({"degrees", "degree", "deg", "°"})
 UNIT_WORDS = frozenset(
-    {"celsius", "fahrenheit", "c", "f", "dh", "fh", "ppm", "gpg", "mmol", "kg", "lb", "lbs"}
+    {"celsius", "fahrenheit", "c", "f", "dh", "fh", "ppm", "gpg", "mmol", "kg", "lb", "lbs", "st"}
 ) | frozenset({"g", "oz", "ml", "l", "km", "mi", "miles", "kcal", "cal", "kj", "mph", "kmh"})
 """Units a selector may offer for one quantity (a scale of temperature, of water hardness, of
 weight or distance): the values of a unit selector, never of a programme."""
@@ -154,6 +154,10 @@ def _length(text: Text, j: int, words: list[str], first: str) -> int:
     return initials if initials else len(words)
 
 
+_NOT_INITIALS = frozenset({"the", "and", "for", "you", "your", "its", "this", "that", "with"})
+"""Words no unit's initials stand for ("Switch the" is no ST)."""
+
+
 def _initials_at(text: Text, j: int, words: list[str]) -> int:
     """ "grains per gallon" for GPG: words from j whose first letters spell a 2–4 letter name
     (each at least three letters long, or a joining word); the number of words, or 0."""
@@ -162,7 +166,7 @@ def _initials_at(text: Text, j: int, words: list[str]) -> int:
     letters = words[0]
     said = [text.word(j + d) for d in range(len(letters))]
     if all(w[:1] == c for w, c in zip(said, letters, strict=True)) and all(
-        len(w) >= 3 and w.isalpha() for w in said
+        len(w) >= 3 and w.isalpha() and w not in _NOT_INITIALS for w in said
     ):
         return len(letters)
     return 0
@@ -187,3 +191,48 @@ def _initials_named(
                 where[selector] = j
                 claimed.update(range(j, j + size))
                 return
+
+
+_MORE_NAMES = {"st": ["stone", "stones"], "lb": ["pound", "pounds", "lbs"]}
+_MORE_NAMES |= {"kg": ["kilogram", "kilograms", "kilo", "kilos"], "g": ["gram", "grams"]}
+_MORE_NAMES |= {"oz": ["ounce", "ounces"], "ml": ["millilitre", "millilitres", "milliliters"]}
+_MORE_NAMES |= {"mi": ["mile", "miles"], "km": ["kilometre", "kilometres", "kilometers"]}
+"""The words a unit symbol a selector offers is said by ("in stones" for ST)."""
+
+
+def _said_unit_names(var: DiscreteVariable, unit: Any) -> set[str]:
+    """One-word names of a selector's unit: its own, its display text's, and the words the
+    symbol stands for."""
+    names = {words[0] for words in _unit_names(var, unit) if len(words) == 1}
+    for name in list(names):
+        names.update(_MORE_NAMES.get(name, ()))
+    return names
+
+
+def named_units(
+    view: Model, text: Text, goal: Goal, claimed: set[int], where: dict[str, int]
+) -> None:
+    """ "readings in Fahrenheit", "switch the scale to pounds", "I weigh myself in stones": a
+    unit said with no number before it names the value of the one unit selector that offers
+    it (a number's unit, "300 ml", is the number's), unless negated ("instead of kg")."""
+    selectors = [n for n in view.infos if n not in goal and unit_selector(view, n)]
+    if len(selectors) != 1:
+        return
+    name = selectors[0]
+    var = view.infos[name].var
+    assert isinstance(var, DiscreteVariable)
+    names = {unit: _said_unit_names(var, unit) for unit in var.values or []}
+    for j, token in enumerate(text.tokens):
+        word = token.text.lstrip("°")
+        if j in claimed or read_number(text.tokens, j - 1) is not None:
+            continue
+        if text.word(j - 1) in ("°",) and read_number(text.tokens, j - 2) is not None:
+            continue
+        if text.word(j - 1) == "of" and text.word(j - 2) == "instead":
+            continue
+        units = [unit for unit, said in names.items() if word in said]
+        if len(units) == 1:
+            goal[name] = units[0]
+            where[name] = j
+            claimed.add(j)
+            return

@@ -269,11 +269,14 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
                 infos[name].vocab[key] = 0.5  # a word only this key's legend in the manual has
     add_setting_words(infos, manual, set_keys)
     named: dict[str, list[tuple[Any, str]]] = {}
-    for coded, value, label in coded_names(model, manual):
+    coded_list = coded_names(model, manual)
+    shared_words = _words_all_names_share(coded_list)
+    for coded, value, label in coded_list:
         if parse_quantity(label) is not None:
             named.setdefault(coded, []).append((value, label))
             continue
         names = [w for w in phrase_words(label) if w != "and"]
+        names = [w for w in names if w not in shared_words.get(coded, ())] or names
         if names and not all(w in STOP_WORDS for w in names):
             phrases.append((coded, value, tuple(stem(w) for w in names), 0.95))
     settings = tuple(f"{n} {i.var.label}".replace("_", " ") for n, i in infos.items())
@@ -289,6 +292,23 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
     return Model(
         model, infos, phrases, start_values, frozenset(appliance), named, tops, manual_words
     )
+
+
+def _words_all_names_share(coded: list[tuple[str, Any, str]]) -> dict[str, set[str]]:
+    """setting -> the words every name the manual gives its codes shares ("Cross-cut head",
+    "Micro-cut head"): the kind of thing the setting picks, no name of one value — the user
+    says "micro-cut". Only for settings with two or more different names, none with a
+    figure ("300 W + grill": what is left would be a quantity)."""
+    labels: dict[str, set[str]] = {}
+    for name, _value, label in coded:
+        if parse_quantity(label) is None:
+            labels.setdefault(name, set()).add(label)
+    out: dict[str, set[str]] = {}
+    for name, said in labels.items():
+        if len(said) >= 2 and not any(c.isdigit() for label in said for c in label):
+            words = [set(phrase_words(label)) for label in said]
+            out[name] = set.intersection(*words)
+    return out
 
 
 def _forms(infos: dict[str, VarInfo]) -> dict[str, dict[Any, list[str]]]:

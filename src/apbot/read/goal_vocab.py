@@ -143,7 +143,18 @@ _GROUPS: tuple[tuple[str, ...], ...] = (
     ("timer", "timers"),
     ("time", "duration", "times"),
     ("light", "lamp"),
-    ("buzzer", "beep", "beeps", "beeper", "sound", "signal", "mute", "silence", "quiet", "alarm"),
+    (
+        "buzzer",
+        "beep",
+        "beeps",
+        "beeper",
+        "sound",
+        "signal",
+        "mute",
+        "silence",
+        "quiet",
+        "alarm",
+    ),
     ("dry", "drying", "dryer"),
     ("sterilize", "steam", "sterilise", "sanitize", "uv"),
     ("humidity", "rh", "humid", "humidistat"),
@@ -318,7 +329,7 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "light": ("pale", "lighter"),
     "dark": ("darker", "deep"),
     "low": ("lo", "quiet", "gentle", "quietest", "slow"),
-    "high": ("hi", "full", "fast", "strong"),
+    "high": ("hi", "full", "fast", "strong", "loud", "louder", "loudest"),
     "mid": ("medium", "middle", "moderate"),
     "lower": ("bottom",),
     "upper": ("top",),
@@ -349,6 +360,8 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "economy": ("eco", "economical", "saving"),
     "repair": ("recovery", "recover", "recondition", "revive"),
     "refresh": ("freshen", "refreshing"),
+    "female": ("woman", "lady", "girl"),  # a profile's sex said of the person
+    "male": ("man", "gentleman", "boy"),
 }
 # Counts written as adverbs ("rinse twice").
 TIMES_WORDS = {"once": 1, "twice": 2, "thrice": 3}

@@ -36,6 +36,7 @@ class Mention:
     unit: str = ""
     colon: bool = False  # written with a colon ("1:30"): a duration after "for"
     lead: str = ""  # the word just before
+    zero_led: bool = False  # written with a leading zero ("cone 06"): not the same code as 6
 
 
 _TIME_UNITS = {
@@ -345,7 +346,11 @@ def _quantity_at(tokens: list[Token], i: int) -> Mention | None:
     unit = _unit_at(tokens, j)
     if unit is None:
         counted = _word(tokens, j) if _word(tokens, j) in COUNT_NOUNS else ""
-        return Mention("number", number.value, i, j, words=number.words, unit=counted)
+        said = _word(tokens, i)
+        zero_led = j == i + 1 and len(said) > 1 and said[0] == "0" and said.isdigit()
+        return Mention(
+            "number", number.value, i, j, words=number.words, unit=counted, zero_led=zero_led
+        )
     name, used = unit
     end = j + used
     if name in ("degrees", "degree", "°", "deg"):
