@@ -24,10 +24,10 @@ from apbot.read.cases_only import read_only_modes
 from apbot.read.cases_resets import apply_resets
 from apbot.read.cases_units import unit_ranges
 from apbot.read.cases_zones import zone_twins
+from apbot.read.closing_start import close_with_start
 from apbot.read.code_amounts import read_code_amounts
 from apbot.read.code_glosses import name_glossed_words
 from apbot.read.code_levels import read_code_levels
-from apbot.read.closing_start import close_with_start
 from apbot.read.code_words import name_code_words
 from apbot.read.codes import name_codes
 from apbot.read.guards_enabled import read_enabling_switches
