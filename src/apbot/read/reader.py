@@ -24,6 +24,7 @@ from apbot.read.cases_only import read_only_modes
 from apbot.read.cases_resets import apply_resets
 from apbot.read.cases_units import unit_ranges
 from apbot.read.cases_zones import zone_twins
+from apbot.read.closing_start import close_with_start
 from apbot.read.code_amounts import read_code_amounts
 from apbot.read.code_glosses import name_glossed_words
 from apbot.read.code_levels import read_code_levels
@@ -88,6 +89,7 @@ def read_manual(
     apply_resets(builder)
     read_held_walks(builder)  # (after the resets: those were read for the switch it replaces)
     read_enabling_switches(builder)
+    close_with_start(builder)  # (last: the keypad entries as built, whatever renamed them)
     data = _assemble(builder, appliance_id, category)
     data["actions"].update({a: {"skill": "wait", "seconds": w} for a, w in waits.items()})
     notes = builder.notes
