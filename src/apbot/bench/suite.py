@@ -159,6 +159,13 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "massage_gun": 4,
     "tortilla_press": 4,
     "sun_lamp": 4,
+    # The seventeenth blind set (helper blind20n, 6 December 2026, the 6 December afternoon
+    # session): blind for this round's work.
+    "ev_charger": 3,
+    "vibration_plate": 4,
+    "electric_toothbrush": 3,
+    "tyre_inflator": 3,
+    "embroidery_machine": 4,
 }
 
 
