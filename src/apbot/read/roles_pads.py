@@ -201,16 +201,7 @@ def selecting_keys(b: Builder, keys: list[ActionInfo]) -> list[ActionInfo]:
         m = PAD_NOUNS.search(unit.cells[1])
         if not m or len(unit.cells[1].split()) > 4:
             continue  # a short cell that only says what they are
-        named = [
-            k
-            for k in keys
-            if k.skill == "press"
-            and b.labels[k.controls[0]].line is not None
-            and re.search(
-                rf"(?<![A-Z0-9]){re.escape(b.labels[k.controls[0]].text.upper())}(?![A-Z0-9])",
-                unit.cells[0].upper(),
-            )
-        ]
+        named = _pressed_keys_in(b, keys, unit.cells[0].upper(), upper=True)
         if len(named) >= 2:
             by_noun.setdefault(m.group(0).lower().rstrip("s"), []).extend(named)
     best = max(by_noun.values(), key=len, default=[])
@@ -231,6 +222,25 @@ def shown_codes(b: Builder, var: str, keys: list[ActionInfo]) -> None:
             if m and b.labels[k.controls[0]].text.upper() == unit.cells[0].strip(" *").upper():
                 codes[k.name] = m.group(1)
     _show_codes(b, var, keys, codes)
+
+
+def _pressed_keys_in(
+    b: Builder, keys: list[ActionInfo], text: str, upper: bool = False
+) -> list[ActionInfo]:
+    """The pressed keys whose printed label stands as a word of ``text`` (``upper``: compared
+    in capitals, the label bounded by no capital or digit; else by no word character)."""
+    found = []
+    for k in keys:
+        label = b.labels[k.controls[0]]
+        if k.skill != "press" or label.line is None:
+            continue
+        if upper:
+            pattern = rf"(?<![A-Z0-9]){re.escape(label.text.upper())}(?![A-Z0-9])"
+        else:
+            pattern = rf"(?<![\w]){re.escape(label.text)}(?![\w])"
+        if re.search(pattern, text):
+            found.append(k)
+    return found
 
 
 def _dedupe_keys(keys: list[ActionInfo]) -> list[ActionInfo]:
@@ -346,16 +356,7 @@ def named_choice_keys(b: Builder, keys: list[ActionInfo]) -> tuple[list[ActionIn
         if unit.cells or not chosen or not re.search(r"\b(?:keys|buttons|pads)\b", unit.text):
             continue
         head = unit.text[: chosen.start()]
-        named = [
-            k
-            for k in keys
-            if k.skill == "press"
-            and b.labels[k.controls[0]].line is not None
-            and re.search(
-                rf"(?<![\w]){re.escape(b.labels[k.controls[0]].text)}(?![\w])",
-                head,
-            )
-        ]
+        named = _pressed_keys_in(b, keys, head)
         named = _dedupe_keys(named)
         if len(named) >= 3:
             noun = chosen.group("noun").lower().rstrip("s")
