@@ -152,6 +152,11 @@ NUMBER_WORDS: dict[str, int] = {
     "single": 1,
     "couple": 2,
 }
+# the ten digits as words ("zero" … "nine"), for numbers read out one digit at a time
+DIGIT_WORDS: dict[str, int] = {
+    w: NUMBER_WORDS[w]
+    for w in ("zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine")
+}
 _WORD_NUMBERS = NUMBER_WORDS
 _FRACTIONS = {"half": 0.5, "quarter": 0.25}
 _NUMBER_TOKEN = r"\d+(?:[.,]\d+)?"

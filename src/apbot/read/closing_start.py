@@ -16,6 +16,7 @@ import re
 from apbot.read.build import Builder
 from apbot.read.labels import words
 from apbot.read.roles_common import label_of, mentions_of
+from apbot.read.roles_functions import section_units
 from apbot.read.text import Unit
 
 _VERB = r"(?:press|touch|push|tap|hit)(?:es)?\s+(?:the\s+)?"
@@ -123,14 +124,7 @@ def _runs_nothing(b: Builder, token: str, at: int) -> bool:
     """Whether the procedure's section, or the key's own legend row, says the setting runs
     nothing ("does not cook", "no heating", "does not switch the microwave on")."""
     units = b.manual.units
-    heading = units[at].heading
-    lo = at
-    while lo > 0 and units[lo - 1].heading == heading:
-        lo -= 1
-    hi = at
-    while hi + 1 < len(units) and units[hi + 1].heading == heading:
-        hi += 1
-    section = [u.text for u in units[lo : hi + 1]] if heading else [units[at].text]
+    section = [u.text for u in section_units(b, at)] if units[at].heading else [units[at].text]
     label = label_of(b, token).upper()
     legend = [
         units[i].text

@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 
 from apbot.model.schema import NumericVariable
-from apbot.model.values import NUMBER_WORDS
+from apbot.model.values import DIGIT_WORDS, NUMBER_WORDS
 from apbot.read.goal_view import Model
 
 _NUMBER = (
@@ -19,7 +19,9 @@ _NUMBER = (
     + "|".join(
         sorted((w for w in NUMBER_WORDS if w not in ("a", "an", "single", "couple")), key=len)[::-1]
     )
-    + r")(?:[- ](?:one|two|three|four|five|six|seven|eight|nine))?"
+    + r")(?:[- ](?:"
+    + "|".join(w for w, n in DIGIT_WORDS.items() if n)
+    + "))?"
 )
 _YEARS_OLD = re.compile(
     rf"\b(?:an?\s+)?({_NUMBER})[- ]years?[- ]olds?\b|\b({_NUMBER})\s+years\s+of\s+age\b",

@@ -13,12 +13,11 @@ import re
 
 from apbot.model.domain import all_values
 from apbot.model.schema import NumericVariable
+from apbot.model.values import DIGIT_WORDS
 from apbot.read.goal_view import Model
 
-_DIGIT_WORDS = {
-    "zero": "0", "oh": "0", "one": "1", "two": "2", "three": "3", "four": "4",
-    "five": "5", "six": "6", "seven": "7", "eight": "8", "nine": "9",
-}  # fmt: skip
+# "oh" as people read a 0 aloud ("four oh nine six")
+_DIGIT_WORDS = {w: str(n) for w, n in DIGIT_WORDS.items()} | {"oh": "0"}
 _DIGIT = r"(?:\d|" + "|".join(_DIGIT_WORDS) + r")"
 _RUN = re.compile(rf"\b{_DIGIT}(?:[ -]{_DIGIT}){{3,}}\b", re.IGNORECASE)
 

@@ -183,7 +183,8 @@ def _legend_cycles(b: Builder, key: ActionInfo) -> int | None:
     return None
 
 
-def _section(b: Builder, at: int) -> list[Unit]:
+def section_units(b: Builder, at: int) -> list[Unit]:
+    """The units under the heading of unit ``at`` (its section)."""
     heading = b.manual.units[at].heading
     return [u for u in b.manual.units if u.heading == heading]
 
@@ -193,7 +194,7 @@ def _cycled(b: Builder, proc: _Procedure, at: int) -> tuple[str, Any] | None:
     C-4"), the programmes a numbered chart names, or the amounts of the noun it picks printed
     as a run ("output … 900 / 800 / … / 100 W")."""
     token = proc.key.token
-    section = _section(b, proc.first)
+    section = section_units(b, proc.first)
     codes: list[str] = []
     for unit in section:
         if unit.cells and (m := CODE_RE.fullmatch(unit.cells[0].strip())):
@@ -286,7 +287,7 @@ def _entered(b: Builder, proc: _Procedure, at: int, shared: dict[str, str]) -> s
     ranges = [r for r in find_ranges(text) if r.unit in units]
     if not ranges:
         ranges = [
-            r for u in _section(b, proc.first) for r in find_ranges(u.text) if r.unit in units
+            r for u in section_units(b, proc.first) for r in find_ranges(u.text) if r.unit in units
         ]
     step = next((r.step for r in ranges if r.step), None)
     if not step and kind == "temperature":
