@@ -7,6 +7,7 @@ step's effects through :func:`default_effect`: one definition, so none of them c
 
 from __future__ import annotations
 
+from functools import lru_cache
 from typing import Any
 
 from apbot.model.domain import Domain
@@ -181,10 +182,32 @@ def entry_digits(magnitude: float, entry: Entry) -> str | None:
     >>> entry_digits(90, Entry(format="mm:ss")), entry_digits(5400, Entry(format="h:mm"))
     ('130', '130')
     """
+    return _entry_text(magnitude, entry.format, entry.digits())
+
+
+def typed_lengths(magnitudes: tuple[float, ...], entry: Entry) -> tuple[int | None, ...]:
+    """Per magnitude, how many digits type it (None: not typeable).
+
+    Cached by domain and entry: every repair rebuilds and re-checks the model, and the
+    planner weighs keypad values on every plan, each time over the same long ranges.
+
+    >>> typed_lengths((30.0, 90.0, 95.5), Entry(format="mm:ss"))
+    (2, 3, None)
+    """
+    return _typed_lengths(magnitudes, entry.format, entry.digits())
+
+
+@lru_cache(maxsize=512)
+def _typed_lengths(magnitudes: tuple[float, ...], fmt: str, width: int) -> tuple[int | None, ...]:
+    return tuple(
+        None if (text := _entry_text(m, fmt, width)) is None else len(text) for m in magnitudes
+    )
+
+
+def _entry_text(magnitude: float, fmt: str, width: int) -> str | None:
     if magnitude < 0 or abs(magnitude - round(magnitude)) > 1e-9:
         return None
     total = round(magnitude)
-    fmt = entry.format
     if fmt in ("number", "seconds"):
         text = str(total)
     elif fmt == "minutes":
@@ -200,4 +223,4 @@ def entry_digits(magnitude: float, entry: Entry) -> str | None:
     else:
         hours, rest = divmod(total, 3600)
         text = str(hours * 10000 + (rest // 60) * 100 + rest % 60)
-    return text if len(text) <= entry.digits() else None
+    return text if len(text) <= width else None

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Hashable, Sequence
 
-from apbot.model.effects import entry_digits
+from apbot.model.effects import entry_digits, typed_lengths
 from apbot.model.schema import Entry
 from apbot.plan.distances import INF, distances_to, typeable_values
 from apbot.plan.goals import CompiledGoal
@@ -282,14 +282,16 @@ def _fewest_digit_values(compiled: CompiledModel, v: int) -> list[float]:
         if len(domain) <= SMALL_DOMAIN:
             found.update(dict.fromkeys(domain.magnitudes))
             continue
+        if entry is None:
+            continue
         cheapest: dict[tuple[bool, ...], tuple[int, float]] = {}
-        for i, magnitude in enumerate(domain.magnitudes):
-            digits = entry_digits(magnitude, entry) if entry is not None else None
-            if digits is None:
+        lengths = typed_lengths(domain.magnitudes, entry)
+        for i, (magnitude, length) in enumerate(zip(domain.magnitudes, lengths, strict=True)):
+            if length is None:
                 continue
             seen_by_guards = tuple(i in ok for ok in guard_sets)
-            if seen_by_guards not in cheapest or len(digits) < cheapest[seen_by_guards][0]:
-                cheapest[seen_by_guards] = (len(digits), magnitude)
+            if seen_by_guards not in cheapest or length < cheapest[seen_by_guards][0]:
+                cheapest[seen_by_guards] = (length, magnitude)
         found.update(dict.fromkeys(m for _, m in cheapest.values()))
     cache[v] = list(found)
     return cache[v]

@@ -17,8 +17,8 @@ from apbot.model.effects import (
     constant_table,
     default_effect,
     effect_table,
-    entry_digits,
     leaf_effects,
+    typed_lengths,
 )
 from apbot.model.problems import Problem
 from apbot.model.schema import (
@@ -139,7 +139,7 @@ def reachable_indices(model: ApplianceModel, name: str, domain: Domain) -> set[i
     if typed and entry is not None:  # once, not once per digit key
         assert domain.magnitudes is not None
         typeable = {
-            i for i, m in enumerate(domain.magnitudes) if entry_digits(m, entry) is not None
+            i for i, n in enumerate(typed_lengths(domain.magnitudes, entry)) if n is not None
         }
     reached = {domain.initial} | typeable
     frontier = list(reached)
