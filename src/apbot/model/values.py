@@ -15,6 +15,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable, Sequence
 from decimal import Decimal
+from functools import lru_cache
 
 Number = int | float
 
@@ -24,8 +25,12 @@ _HMS = re.compile(r"^\s*(\d+):([0-5]?\d):([0-5]?\d)\s*$")
 _TWO = re.compile(r"^\s*(\d+):([0-5]?\d)\s*$")
 
 
+@lru_cache(maxsize=1 << 17)
 def format_hms(seconds: int) -> str:
     """Canonical ``HH:MM:SS`` for a number of seconds.
+
+    Cached: a repaired model rebuilds its time domains (a day in seconds is 86,400 values),
+    and the benchmark's belief comparisons parse the same times again and again.
 
     >>> format_hms(5400)
     '01:30:00'
@@ -35,6 +40,7 @@ def format_hms(seconds: int) -> str:
     return f"{hours:02d}:{minutes:02d}:{secs:02d}"
 
 
+@lru_cache(maxsize=1 << 17)
 def parse_hms(text: str) -> int:
     """Seconds in a strict ``HH:MM:SS`` string (the model's own notation for times).
 
