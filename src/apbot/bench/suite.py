@@ -166,6 +166,13 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "electric_toothbrush": 3,
     "tyre_inflator": 3,
     "embroidery_machine": 4,
+    # The eighteenth blind set (helper blind21n, 6 December 2026, the 6 December evening
+    # session): blind for this round's work.
+    "hair_straightener": 3,
+    "robot_vacuum": 3,
+    "ebike_display": 3,
+    "kitchen_scale": 3,
+    "adjustable_bed": 3,
 }
 
 
