@@ -27,6 +27,12 @@ It prints the counts per cause (first cause, and any cause), then examples per c
 appliance/task and the setting and value concerned, with a glimpse of the read domain.
 The belief is read again (through the read cache); a belief whose hash is not the record's is
 counted and said, since the reader changed after the run.
+
+``--claims`` judges the false claims instead (records whose method claimed success on a goal
+that does not hold), on the settings the claim got wrong only: a claim whose wrong setting the
+parsed goal left out or set otherwise was an honest claim on the goal the method was given
+(the parser's or the reader's error); one whose wrong setting the parsed goal held as asked is
+the agent's own (it believed a display, or its belief, that did not show the truth).
 """
 
 from __future__ import annotations
@@ -135,6 +141,27 @@ def classify(
     return sorted(causes, key=lambda c: CAUSES.index(c.kind))
 
 
+def wrong_settings(
+    belief: ApplianceModel, truth: ApplianceModel, stored: dict[str, Any], final: dict[str, Any]
+) -> set[str]:
+    """The stored goal's settings whose final value is not the one asked for, in the belief's
+    names (a truth name when the belief has no partner for it)."""
+    from apbot.read.evaluate import align_variables
+
+    back = {t: b for b, t in align_variables(belief, truth).items()}
+    return {
+        back.get(name, name)
+        for name, value in stored.items()
+        if _canonical(truth, name, value) != _canonical(truth, name, final.get(name))
+    }
+
+
+def claim_causes(causes: list[Cause], wrong: set[str]) -> list[Cause]:
+    """The causes that bear on a false claim: those of the settings it got wrong (none: the
+    parsed goal held them as asked, so the claim is the agent's own)."""
+    return [c for c in causes if c.setting in wrong]
+
+
 def first_cause(causes: list[Cause]) -> str:
     return causes[0].kind if causes else "agent"
 
@@ -147,10 +174,14 @@ class Tally:
     failed: int
     records: int
     stale: int
+    label: str = "failed"
 
 
-def tally(records: Iterable[dict[str, Any]], suite_name: str = "bundled") -> Tally:
-    """Classify the failed records (dicts as in results.jsonl)."""
+def tally(
+    records: Iterable[dict[str, Any]], suite_name: str = "bundled", claims: bool = False
+) -> Tally:
+    """Classify the failed records (dicts as in results.jsonl); ``claims``: only the false
+    claims, on the settings they got wrong (:func:`claim_causes`)."""
     from apbot.bench.reading import read_belief
     from apbot.bench.runner import cached_suite
 
@@ -162,7 +193,7 @@ def tally(records: Iterable[dict[str, Any]], suite_name: str = "bundled") -> Tal
     failed = total = stale = 0
     for record in records:
         total += 1
-        if record["success"]:
+        if record["success"] or (claims and not record.get("claimed_success")):
             continue
         failed += 1
         appliance = suite.get(record["appliance"])
@@ -174,6 +205,11 @@ def tally(records: Iterable[dict[str, Any]], suite_name: str = "bundled") -> Tal
         belief, digest = beliefs[appliance.id]
         stale += record.get("belief_hash", digest) != digest
         causes = classify(belief, appliance.model, record["goal"], record.get("parsed_goal"))
+        if claims:
+            final = record.get("final_values", {})
+            causes = claim_causes(
+                causes, wrong_settings(belief, appliance.model, record["goal"], final)
+            )
         kind = first_cause(causes)
         first[kind] += 1
         for k in {c.kind for c in causes} or {kind}:
@@ -185,11 +221,13 @@ def tally(records: Iterable[dict[str, Any]], suite_name: str = "bundled") -> Tal
         else:
             text = f"{where}: {record.get('failure', '')[:90]}"
         examples[kind].append(text)
-    return Tally(first, anyc, examples, failed, total, stale)
+    return Tally(
+        first, anyc, examples, failed, total, stale, "false claims" if claims else "failed"
+    )
 
 
 def render(t: Tally, examples: int) -> str:
-    lines = [f"failed {t.failed} of {t.records} records"]
+    lines = [f"{t.label} {t.failed} of {t.records} records"]
     if t.stale:
         lines.append(
             f"NOTE: {t.stale} failed records ran on a belief other than the one read now "
@@ -248,6 +286,11 @@ def main(argv: list[str] | None = None) -> None:
     )
     parser.add_argument("--suite", default=None, help="'bundled' or a suite directory")
     parser.add_argument("--examples", type=int, default=6, help="examples printed per cause")
+    parser.add_argument(
+        "--claims",
+        action="store_true",
+        help="judge the false claims only, on the settings each got wrong",
+    )
     args = parser.parse_args(argv)
     suite = args.suite or run_suite(args.run)
     if args.categories is None:
@@ -267,7 +310,7 @@ def main(argv: list[str] | None = None) -> None:
         raise SystemExit(
             f"e2e_failures: no {args.method} records in {args.run} for those categories"
         )
-    print(render(tally(records, suite), args.examples))
+    print(render(tally(records, suite, claims=args.claims), args.examples))
 
 
 if __name__ == "__main__":

@@ -6,6 +6,7 @@ from __future__ import annotations
 from apbot.agent.budget import Budget
 from apbot.agent.environment import SimulatorEnvironment
 from apbot.agent.episode import TaskContext
+from apbot.agent.loop import ClosedLoop
 from apbot.agent.session import AgentConfig, Session
 from apbot.model.schema import ApplianceModel
 from tests.helpers import model_from, run_checked
@@ -381,3 +382,41 @@ def test_choosing_again_what_a_procedure_starts_with_puts_its_later_settings_in_
     for _ in range(3):  # round the foods and back to meat
         s.press(s.planned("press_defrost"))
     assert s.unverified({"weight"}) == ["weight"]
+
+
+KETTLE_WARM = """
+controls: [{id: temp, label: TEMP}, {id: warm, label: WARM}, {id: start, label: START}]
+variables:
+  running: {type: discrete, values: ["off", "on"], visible: false}
+  warm: {type: discrete, values: ["off", "on"], label: WARM}
+  temp: {type: numeric, unit: "°C", ranges: [[40, 100, 10]], wrap: true, initial: %(initial)s,
+         label: TEMP}
+actions:
+  press_temp: {control: temp}
+  press_warm: {control: warm}
+  press_start: {control: start}
+features:
+  set_temp: [{actions: [press_temp], variable: temp, effect: next}]
+  warm: [{actions: [press_warm], variable: warm, effect: toggle}]
+  start: [{actions: [press_start], variable: running, effect: toggle}]
+display:
+  idle: "%(idle)s"
+"""
+
+
+def test_an_unreadable_setting_does_not_spare_a_never_shown_one_its_look() -> None:
+    # the keep-warm setting showed what the belief cannot read and its one look is spent;
+    # the temperature was never shown (the reader guessed 40): it is still looked at before
+    # START locks the panel
+    truth = model_from(KETTLE_WARM % {"initial": 100, "idle": "{temp}"})
+    belief = model_from(KETTLE_WARM % {"initial": 40, "idle": ""})
+    env = SimulatorEnvironment(truth, "display")
+    goal = {"temp": 40, "warm": "off", "running": "on"}
+    context = TaskContext("unit", "test", "t", "", goal, belief, actions=tuple(env.actions))
+    loop = ClosedLoop(AgentConfig(), context, env)
+    loop.session.start()
+    loop.session.unread.add("warm")
+    loop.session.budget.once("inspect", "look:warm")
+    loop.reasoning_step()
+    pressed = [e.action for e in loop.session.episode.trace if e.kind == "action"]
+    assert pressed == ["press_temp"]

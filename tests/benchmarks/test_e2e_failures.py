@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from apbot.model.schema import ApplianceModel
-from benchmarks.e2e_failures import classify, first_cause
+from benchmarks.e2e_failures import claim_causes, classify, first_cause, wrong_settings
 from tests.helpers import model_from
 
 NEWCATS = Path(__file__).resolve().parents[2] / "benchmarks" / "data" / "newcats"
@@ -94,3 +94,22 @@ def test_the_run_names_its_suite_and_another_suite_judges_every_category(
     assert "failed 0 of 1 records" in capsys.readouterr().out
     with pytest.raises(SystemExit, match="no apbot records"):
         main([str(tmp_path), "--suite", "bundled"])
+
+
+def test_a_false_claim_is_judged_on_the_settings_it_got_wrong() -> None:
+    # the parser dropped the fan, but the claim went wrong on the mode it was given right:
+    # the agent's own false claim, whatever else the parser missed
+    belief = _model("auto, dry, sleep")
+    stored = {"mode": "dry", "fan": "high"}
+    causes = classify(belief, TRUTH, stored, {"mode": "dry"})
+    wrong = wrong_settings(belief, TRUTH, stored, {"mode": "auto", "fan": "high"})
+    assert wrong == {"mode"}
+    assert first_cause(claim_causes(causes, wrong)) == "agent"
+
+
+def test_a_claim_wrong_only_where_the_parser_was_wrong_is_the_parsers() -> None:
+    belief = _model("auto, dry, sleep")
+    stored = {"mode": "dry", "fan": "high"}
+    causes = classify(belief, TRUTH, stored, {"mode": "dry"})
+    wrong = wrong_settings(belief, TRUTH, stored, {"mode": "dry", "fan": "low"})
+    assert first_cause(claim_causes(causes, wrong)) == "parser dropped"

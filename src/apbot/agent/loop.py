@@ -161,7 +161,9 @@ class ClosedLoop(Claims):
             # unconfirmed first
             settings = {n for n in inside if not (starts_appliance(n) or is_lock_setting(n))}
             unseen = self.session.unconfirmed(settings)
-            if (unseen and self._look(unseen)) or (not unseen and self._glance(settings)):
+            # a setting the display cannot confirm (no look left) does not excuse leaving one
+            # it never showed unlooked at before the start locks the panel
+            if (unseen and self._look(unseen)) or self._glance(settings - set(unseen)):
                 self.pending.clear()
                 return
         macro = self.pending.pop(0)
