@@ -33,6 +33,7 @@ from apbot.read.roles_digits import assign_direct_digits
 from apbot.read.roles_fasthold import fold_fast_holds
 from apbot.read.roles_fixed import assign_locks, assign_power, assign_running, standby_only
 from apbot.read.roles_functions import assign_functions, function_keys
+from apbot.read.roles_heldshown import show_held_word
 from apbot.read.roles_heldvalues import others_list
 from apbot.read.roles_holdcell import (
     HELD_SECONDS,
@@ -238,6 +239,7 @@ def assign(b: Builder) -> None:
         if own_toggle and (way or not set(words(name)) & NUMERIC_WORDS):
             var = b.add_toggle(name, lab, ev.toggle_at)  # "press KEEP WARM to switch it on or off"
             b.feature(var, [{"actions": [key.name], "variable": var, "effect": "toggle"}])
+            show_held_word(b, key, var)  # "hold DRY for 3 seconds: LOW appears"
         elif (
             key.skill == "press"
             and pair_tokens
