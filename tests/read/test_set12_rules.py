@@ -102,3 +102,72 @@ def test_a_held_toggle_is_shown_by_the_word_its_hold_sentence_says_appears() -> 
     )
     assert var is not None
     assert model.variables[var].show == {"off": "", "on": "SOFT"}
+
+
+# a juicer: a knob turned for the speed and pushed to start, a pair held together for the lock,
+# a key pressed on and "pressed again" off, speed lamps beside a display that prints the figure
+JUICER = """
+Pressa J-7 slow juicer
+
+Panel
+
+   ⏻          on / off
+   PULP - / PULP +   less / more pulp (hold both 3 s: child lock)
+   COOL       cool the juice (snowflake lamp)
+   SPEED      knob. Turn: speed level. Push: start / stop juicing
+
+   Display texts
+
+     SPEED 2         speed level while the knob is turned
+     LOCK            child lock on
+
+Speed
+   Turn the SPEED knob to the right for a higher speed (1 – 3). Each click is one level.
+   The speed lamps show the level:
+   ●○○   1   gentle
+   ●●○   2   normal
+   ●●●   3   fast
+
+Cooling
+   Press COOL: the snowflake lamp lights and the juice is cooled.
+   Press again to switch it off. Cooling adds 1 – 2 minutes.
+
+Juicing
+   1. Check the settings.
+   2. Push the SPEED knob. The juicer starts.
+   To stop early, push the SPEED knob again.
+
+Child lock
+   Press and hold PULP - and PULP + together for 3 seconds. LOCK appears.
+"""
+JUICER_ACTIONS = [
+    "press_power", "turn_speed_cw", "turn_speed_ccw", "push_speed", "press_pulp_minus",
+    "press_pulp_plus", "hold_pulp_both", "press_cool",
+]  # fmt: skip
+
+
+def _step_of(model, action: str):  # type: ignore[no-untyped-def]
+    return next(s for ss in model.features.values() for s in ss if action in s.actions)
+
+
+def test_a_pair_held_both_is_the_child_lock() -> None:
+    model = read_manual(JUICER, JUICER_ACTIONS).model
+    assert any(g.name == "child lock" and g.only == ["hold_pulp_both"] for g in model.guards)
+
+
+def test_a_knob_whose_legend_says_push_start_stop_starts_and_stops() -> None:
+    model = read_manual(JUICER, JUICER_ACTIONS).model
+    step = _step_of(model, "push_speed")
+    assert step.variable == "running" and step.effect == "toggle"
+
+
+def test_press_again_to_switch_it_off_makes_the_key_a_toggle() -> None:
+    model = read_manual(JUICER, JUICER_ACTIONS).model
+    step = _step_of(model, "press_cool")
+    assert step.effect == "toggle" and model.variables[str(step.variable)].values == ["off", "on"]
+
+
+def test_lamps_as_bars_give_way_to_a_display_text_with_the_figure() -> None:
+    model = read_manual(JUICER, JUICER_ACTIONS).model
+    shows = [v.show for v in model.variables.values() if v.label == "SPEED"]
+    assert shows and not any(isinstance(s, dict) and "●○○" in s.values() for s in shows)

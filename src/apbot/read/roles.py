@@ -15,6 +15,7 @@ from dataclasses import replace
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.labels import words
+from apbot.read.roles_again import toggled_again
 from apbot.read.roles_amounts import ADD_RE, assign_amounts, assign_dials, assign_leftovers
 from apbot.read.roles_common import (
     FUNCTION_WORDS,
@@ -226,6 +227,7 @@ def assign(b: Builder) -> None:
             and any(ev.toggle_at in b.labels[c].mentions for c in key.controls if c in b.labels)
             and not _named_cycle(b, key, ev)
         ) or (key.token in options and not ev.values)
+        own_toggle = own_toggle or toggled_again(b, key, ev.toggle_at)  # "Press again to …"
         if held_toggle(b, key):  # "Hold for 2 seconds: twin-needle mode on/off": the hold's own
             own_toggle = True
             ev = evidence[key.name] = replace(ev, toggle_at=ev.toggle_at or ev.values_at)

@@ -284,8 +284,8 @@ def add_held_setting(b: Builder, hold: ActionInfo, at: int, noun: str, values: l
 
 # a push said to start and stop: "push (click) to start or stop", "press it to start or stop"
 _PUSH_STARTS = re.compile(
-    r"\b(?:push|press|click)\w*\b[^.;:]{0,24}?\bto\s+(?:start|stop)\w*\s*(?:or|and|/)\s*"
-    r"(?:start|stop)\w*\b",
+    r"\b(?:push|press|click)\w*\b(?:[^.;:]{0,24}?\bto|\s*:)\s+(?:start|stop)\w*\s*(?:or|and|/)\s*"
+    r"(?:start|stop)\w*\b",  # ("Push: start / stop carbonating", a knob's legend)
     re.IGNORECASE,
 )
 
@@ -300,12 +300,20 @@ def pushed_start(b: Builder, info: ActionInfo) -> int | None:
     if len(word) < 3:
         return None
     named = re.compile(rf"\b{re.escape(word)}\b", re.IGNORECASE)
-    for i, unit in enumerate(b.manual.units):
+    units = b.manual.units
+    for i, unit in enumerate(units):
         if unit.cells:
             continue
+        # the legend line's start, cut off as a sentence of its own ("FIZZ  knob. Turn: …")
+        first = i
+        while first and units[first - 1].line == unit.line and not units[first - 1].cells:
+            first -= 1
+        before = units[first].text if first < i else ""
         for clause in re.split(r"(?<=[.;])\s+", unit.text):
             push = _PUSH_STARTS.search(clause)
             lead = named.search(unit.text)
             if push and lead and lead.start() < unit.text.find(clause) + push.start():
+                return i
+            if push and push.start() == 0 and named.match(before.lstrip(" *|•-")):
                 return i
     return None
