@@ -171,3 +171,9 @@ def test_lamps_as_bars_give_way_to_a_display_text_with_the_figure() -> None:
     model = read_manual(JUICER, JUICER_ACTIONS).model
     shows = [v.show for v in model.variables.values() if v.label == "SPEED"]
     assert shows and not any(isinstance(s, dict) and "●○○" in s.values() for s in shows)
+
+
+def test_steps_written_out_are_numbered_steps() -> None:
+    text = "Setting the time\n\n  Step 1  Touch SET. The hours flash.\n  Step 2: Touch ▲ or ▼.\n"
+    steps = [u.step for u in parse_manual(text).units if u.step is not None]
+    assert steps == [1, 2]
