@@ -177,3 +177,28 @@ def test_steps_written_out_are_numbered_steps() -> None:
     text = "Setting the time\n\n  Step 1  Touch SET. The hours flash.\n  Step 2: Touch ▲ or ▼.\n"
     steps = [u.step for u in parse_manual(text).units if u.step is not None]
     assert steps == [1, 2]
+
+
+# a treadmill: the incline alert's values printed as the display shows them, word and figure
+TREADMILL = """
+Stridon T-4 treadmill
+
+Keys: ⏻  ALERT  START
+
+Heart-rate alert
+  Press ALERT to choose the heart rate above which the console beeps. Each press moves
+  one step:
+
+    BPM OFF → BPM 120 → BPM 140 → BPM 160 → BPM OFF ...
+"""
+TREADMILL_ACTIONS = ["press_power", "press_alert", "press_start"]
+
+
+def test_values_printed_as_a_display_word_and_a_figure_are_the_figures() -> None:
+    model = read_manual(TREADMILL, TREADMILL_ACTIONS).model
+    var = next(
+        s.variable for ss in model.features.values() for s in ss if s.actions == ["press_alert"]
+    )
+    spec = model.variables[str(var)]
+    assert spec.values == ["off", "120", "140", "160"]
+    assert spec.show == {"off": "BPM OFF", "120": "BPM 120", "140": "BPM 140", "160": "BPM 160"}
