@@ -28,7 +28,6 @@ from apbot.read.shapes import (
     _value_text,
 )
 from apbot.read.shown import shown_words
-from apbot.read.shown_figures import prefixed_figures
 from apbot.read.text import Manual
 from apbot.read.value_spans import expand_spans
 from apbot.read.values import (
@@ -123,9 +122,6 @@ class Builder(EvidenceReader):
         if own and [p.lower() for p in own.group(2).split("/")] == values:
             label = own.group(1)  # the display names the setting, not the printed choices
         spec: dict[str, Any] = {"type": "discrete", "values": values, "label": label}
-        figures = prefixed_figures(values)
-        if figures is not None:  # "SPM OFF → SPM 20 → SPM 24": the display's word, then the value
-            spec["values"], spec["show"] = list(figures), figures
         if ev is not None and ev.shows and set(ev.shows) == set(values):
             spec["show"] = dict(ev.shows)  # "warm": "3000K", the figure its lamp prints
         if ev is not None and initial in values:

@@ -10,6 +10,8 @@ from __future__ import annotations
 
 import re
 
+from apbot.read.build import Builder
+
 _FIGURE_OR_OFF = re.compile(r"\d+(?:\.\d+)?|off|on|--")
 
 
@@ -31,3 +33,21 @@ def prefixed_figures(values: list[str]) -> dict[str, str] | None:
     if not any(r[0].isdigit() for r in rests):
         return None
     return {r: f"{word} {r}".upper() for r in rests}
+
+
+def read_prefixed_figures(b: Builder) -> None:
+    """Give every discrete setting still listed as word-and-figure items (no other stage read
+    how they are shown, nor a unit in them) the figures as values, shown as printed."""
+    for var, spec in b.variables.items():
+        if spec.get("type") != "discrete" or spec.get("show"):
+            continue
+        figures = prefixed_figures([str(v) for v in spec.get("values") or []])
+        if figures is None:
+            continue
+        old = [str(v) for v in spec["values"]]
+        spec["values"], spec["show"] = list(figures), figures
+        if spec.get("initial") in old:
+            spec["initial"] = list(figures)[old.index(spec["initial"])]
+        b.note(
+            f"variables.{var}.values", "the figures after the display's word " + old[0].split()[0]
+        )
