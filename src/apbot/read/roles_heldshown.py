@@ -17,6 +17,8 @@ from apbot.read.shown import shown_words
 
 # where the hold's sentence ends: the word must be said of this hold, not of a later step
 _SENTENCE_END = re.compile(r"(?<=[.!?;])\s+")
+# what the word is then said to mean: something switched off
+_SAYS_OFF = re.compile(r"\b(?:off|disabled|deactivated|silenced|muted)\b", re.IGNORECASE)
 
 
 def held_shown(b: Builder, key: ActionInfo) -> tuple[str, int] | None:
@@ -37,8 +39,11 @@ def held_shown(b: Builder, key: ActionInfo) -> tuple[str, int] | None:
             m = holding.search(sentence)
             if m is None:
                 continue
-            words = shown_words(sentence[m.end() :], keys)
+            rest = sentence[m.end() :]
+            words = shown_words(rest, keys)
             if words and words[0].upper() != label.upper():
+                if _SAYS_OFF.search(rest[rest.find(words[0]) + len(words[0]) :]):
+                    return None  # "MUTE lights up, the end signal is off": the word marks off
                 return words[0], i
     return None
 
