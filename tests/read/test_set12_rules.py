@@ -202,3 +202,12 @@ def test_values_printed_as_a_display_word_and_a_figure_are_the_figures() -> None
     spec = model.variables[str(var)]
     assert spec.values == ["off", "120", "140", "160"]
     assert spec.show == {"off": "BPM OFF", "120": "BPM 120", "140": "BPM 140", "160": "BPM 160"}
+
+
+def test_a_held_toggle_whose_word_marks_off_gets_no_on_word() -> None:
+    text = YOGHURT.replace("SOFT appears and the cultures ferment at 36 °C", "SOFT OFF appears")
+    model = read_manual(text, YOGHURT_ACTIONS).model
+    var = next(
+        s.variable for ss in model.features.values() for s in ss if s.actions == ["hold_set"]
+    )
+    assert model.variables[str(var)].show != {"off": "", "on": "SOFT OFF"}

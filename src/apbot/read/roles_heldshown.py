@@ -42,8 +42,9 @@ def held_shown(b: Builder, key: ActionInfo) -> tuple[str, int] | None:
             rest = sentence[m.end() :]
             words = shown_words(rest, keys)
             if words and words[0].upper() != label.upper():
-                if _SAYS_OFF.search(rest[rest.find(words[0]) + len(words[0]) :]):
-                    return None  # "MUTE lights up, the end signal is off": the word marks off
+                after = rest[rest.find(words[0]) + len(words[0]) :]
+                if _SAYS_OFF.search(words[0]) or _SAYS_OFF.search(after):
+                    return None  # "MUTE lights up, the end signal is off", "SOUND OFF": off
                 return words[0], i
     return None
 
