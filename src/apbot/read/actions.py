@@ -90,10 +90,16 @@ def _turn_base(rest: str) -> str:
 
 
 def _hold_controls(rest: str, single: set[str]) -> tuple[str, ...]:
-    """``minus_and_plus`` → (minus, plus) when both are other actions' controls."""
+    """``minus_and_plus`` → (minus, plus) when both are other actions' controls; ``dose_both``
+    → the two controls named ``dose_…`` (a pair held together, named for what they share)."""
     if rest in single:
         return (rest,)
     parts = [p for p in rest.split("_") if p]
+    if len(parts) > 1 and "both" in (parts[0], parts[-1]):  # hold_dose_both: DOSE - and DOSE +
+        base = "_".join(p for p in parts if p != "both")
+        pair = sorted(s for s in single if s.startswith(base + "_"))
+        if len(pair) == 2:
+            return (pair[0], pair[1])
     for cut in range(1, len(parts)):
         left = "_".join(parts[:cut])
         right_parts = parts[cut:]

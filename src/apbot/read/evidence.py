@@ -276,6 +276,8 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
             ):
                 ev.toggle_at = i  # (another key's name, ON/OFF in a panel drawing, is no toggle)
             pressed = EACH_PRESS_RE.search(text)
+            if pressed and pressed.group("further") and not find_ranges(text):
+                pressed = None  # "each further press … in this order:" leads a list, no amount
             if pressed and "click" in pressed.group(0).lower() and self._turned(tokens):
                 pressed = None  # "every click changes the time": a dial's clicks, not a key's
             if pressed and _presses_another(text, other_labels, own):

@@ -41,6 +41,7 @@ from apbot.read.report import Note, Report
 from apbot.read.roles import assign
 from apbot.read.shapes import CHOICE_WORDS
 from apbot.read.shown_bars import read_bar_shows
+from apbot.read.shown_figures import read_prefixed_figures
 from apbot.read.text import check_text, parse_manual
 from apbot.read.value_codes import read_value_codes
 
@@ -86,6 +87,7 @@ def read_manual(
     read_initials(builder)
     read_bar_shows(builder)
     read_value_codes(builder)  # (after the other display words: only where none was read)
+    read_prefixed_figures(builder)  # ("SPM 20": only where no stage read a show or a unit)
     apply_resets(builder)
     read_held_walks(builder)  # (after the resets: those were read for the switch it replaces)
     read_enabling_switches(builder)

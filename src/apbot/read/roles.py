@@ -15,6 +15,7 @@ from dataclasses import replace
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.labels import words
+from apbot.read.roles_again import toggled_again
 from apbot.read.roles_amounts import ADD_RE, assign_amounts, assign_dials, assign_leftovers
 from apbot.read.roles_common import (
     FUNCTION_WORDS,
@@ -33,6 +34,7 @@ from apbot.read.roles_digits import assign_direct_digits
 from apbot.read.roles_fasthold import fold_fast_holds
 from apbot.read.roles_fixed import assign_locks, assign_power, assign_running, standby_only
 from apbot.read.roles_functions import assign_functions, function_keys
+from apbot.read.roles_heldshown import show_held_word
 from apbot.read.roles_heldvalues import others_list
 from apbot.read.roles_holdcell import (
     HELD_SECONDS,
@@ -225,6 +227,7 @@ def assign(b: Builder) -> None:
             and any(ev.toggle_at in b.labels[c].mentions for c in key.controls if c in b.labels)
             and not _named_cycle(b, key, ev)
         ) or (key.token in options and not ev.values)
+        own_toggle = own_toggle or toggled_again(b, key, ev.toggle_at)  # "Press again to …"
         if held_toggle(b, key):  # "Hold for 2 seconds: twin-needle mode on/off": the hold's own
             own_toggle = True
             ev = evidence[key.name] = replace(ev, toggle_at=ev.toggle_at or ev.values_at)
@@ -238,6 +241,7 @@ def assign(b: Builder) -> None:
         if own_toggle and (way or not set(words(name)) & NUMERIC_WORDS):
             var = b.add_toggle(name, lab, ev.toggle_at)  # "press KEEP WARM to switch it on or off"
             b.feature(var, [{"actions": [key.name], "variable": var, "effect": "toggle"}])
+            show_held_word(b, key, var)  # "hold DRY for 3 seconds: LOW appears"
         elif (
             key.skill == "press"
             and pair_tokens

@@ -73,6 +73,13 @@ _BOTH_WAYS = re.compile(
     r"|:\s*(?:power\s+)?on\s*/\s*off\b",  # "Hold 2 s: ON/OFF", "Long press: power on/off"
     re.IGNORECASE,
 )
+# one way only, the other said in a sentence of its own: "Press and hold ⏻ for 2 seconds to
+# switch on." … "Press and hold ⏻ for 2 seconds to switch off."
+_ONE_WAY = re.compile(
+    r"\bto\s+(?:switch|turn)\s+(?:(?:the|your|this|it)\s+(?P<noun>[a-z][a-z -]{0,30}?)\s*)?"
+    r"(?P<way>on|off)\b(?!\s*(?:/|or|and)\s*o)",
+    re.IGNORECASE,
+)
 _APPLIANCE_WORDS = {"appliance", "unit", "machine", "device", "product"}
 # parts and settings a title may name beside the product ("… with LED display"): switching
 # one of them on or off is no power, however often the text says "the display" (a fan, a
@@ -184,7 +191,25 @@ def held_power(b: Builder, info: ActionInfo) -> int | None:
             continue
         if all(not n or n.split()[-1] in named for n in nouns):
             return i
-    return None
+    return _held_each_way(b, info, named, own_setting)
+
+
+def _held_each_way(b: Builder, info: ActionInfo, named: set[str], own_setting: bool) -> int | None:
+    """The first of two clauses holding this key, one "to switch on", the other "to switch
+    off" (the appliance, or nothing named): manuals often give switching on and switching off a
+    sentence each, and a key held both ways is the power however the two are worded."""
+    ways: dict[str, int] = {}
+    for i, clause in _held_clauses(b, info):
+        m = _ONE_WAY.search(clause)
+        if m is None:
+            continue
+        noun = (m.group("noun") or "").lower().strip()
+        if noun and noun.split()[-1] != "it" and noun.split()[-1] not in named:
+            continue
+        if own_setting and not noun:
+            continue
+        ways.setdefault(m.group("way").lower(), i)
+    return min(ways.values()) if len(ways) == 2 else None
 
 
 # what a hold's clause says after its colon: "Hold 3 s while OFF: °C / °F"
@@ -259,8 +284,8 @@ def add_held_setting(b: Builder, hold: ActionInfo, at: int, noun: str, values: l
 
 # a push said to start and stop: "push (click) to start or stop", "press it to start or stop"
 _PUSH_STARTS = re.compile(
-    r"\b(?:push|press|click)\w*\b[^.;:]{0,24}?\bto\s+(?:start|stop)\w*\s*(?:or|and|/)\s*"
-    r"(?:start|stop)\w*\b",
+    r"\b(?:push|press|click)\w*\b(?:[^.;:]{0,24}?\bto|\s*:)\s+(?:start|stop)\w*\s*(?:or|and|/)\s*"
+    r"(?:start|stop)\w*\b",  # ("Push: start / stop carbonating", a knob's legend)
     re.IGNORECASE,
 )
 
@@ -275,12 +300,20 @@ def pushed_start(b: Builder, info: ActionInfo) -> int | None:
     if len(word) < 3:
         return None
     named = re.compile(rf"\b{re.escape(word)}\b", re.IGNORECASE)
-    for i, unit in enumerate(b.manual.units):
+    units = b.manual.units
+    for i, unit in enumerate(units):
         if unit.cells:
             continue
+        # the legend line's start, cut off as a sentence of its own ("FIZZ  knob. Turn: …")
+        first = i
+        while first and units[first - 1].line == unit.line and not units[first - 1].cells:
+            first -= 1
+        before = units[first].text if first < i else ""
         for clause in re.split(r"(?<=[.;])\s+", unit.text):
             push = _PUSH_STARTS.search(clause)
             lead = named.search(unit.text)
             if push and lead and lead.start() < unit.text.find(clause) + push.start():
+                return i
+            if push and push.start() == 0 and named.match(before.lstrip(" *|•-")):
                 return i
     return None

@@ -37,6 +37,8 @@ def read_bar_shows(b: Builder) -> None:
             continue
         if {v.lower() for v in values} <= {"on", "off"}:
             continue
+        if _shown_as_figure(lines, str(spec.get("label") or "")):
+            continue  # "FIZZ 3   fizz level": the display prints the figure; the bars are lamps
         bars, at = _paired(lines, var, values)
         if len(bars) < 2 or len({len(s) for s in bars.values()}) != 1:
             continue
@@ -56,6 +58,16 @@ def read_bar_shows(b: Builder) -> None:
         shown = ", ".join(f"{v} {s}" for v, s in spec["show"].items())
         quote = lines[at - 1].strip()[:160]
         b.notes.append(Note(f"variables.{var}.show", f"shown as bars: {shown}", at, quote))
+
+
+def _shown_as_figure(lines: list[str], label: str) -> bool:
+    """A display legend line that gives the setting as its name and a figure ("FIZZ 3   fizz
+    level while the knob is turned"): the display prints the level, whatever lamps beside it
+    show as bars."""
+    if len(label) < 2:
+        return False
+    row = re.compile(rf"^\s*{re.escape(label)}\s\d{{1,3}}\s{{2,}}[A-Za-z]")
+    return any(row.match(line) for line in lines)
 
 
 def _paired(lines: list[str], var: str, values: list[str]) -> tuple[dict[str, str], int]:

@@ -37,10 +37,12 @@ MAX_MANUAL_CHARS = 400_000  # ten times the longest real manual we expect; large
 _BULLETS = "•●○◦▪▫■□►▶➤➢✓✔✗✘–—·*-"
 _CALLOUTS_RE = re.compile(r"[①-⑳❶-❿➀-➉]")
 # a callout number leads a legend's item as a bullet does ("① ⏻ - lamp on / off")
+# ... and so does a step written out: "Step 2  Touch SET." ("Step 2:", "STEP 2.")
 _BULLET_RE = re.compile(
-    rf"^\s*(?:[{re.escape(_BULLETS)}]|\d{{1,2}}[.)]|\(\d{{1,2}}\)|[①-⑳❶-❿➀-➉])\s+"
+    rf"^\s*(?:[{re.escape(_BULLETS)}]|\d{{1,2}}[.)]|\(\d{{1,2}}\)|[①-⑳❶-❿➀-➉]"
+    r"|(?:Step|STEP)\s+\d{1,2}\s*[:.)]?)\s+"
 )
-_NUMBERED_RE = re.compile(r"^\s*(\d{1,2})[.)]\s+")
+_NUMBERED_RE = re.compile(r"^\s*(?:(?:Step|STEP)\s+)?(\d{1,2})(?:[.)]|(?<=\d)\s*:|(?=\s))\s+")
 _TABLE_RULE = re.compile(r"^\s*\|?\s*:?-{2,}:?\s*(\|\s*:?-{2,}:?\s*)*\|?\s*$")
 # (not inside a run of numbers: "50, 55, 60 ... 95, 100")
 _SENTENCE_END = re.compile(r"(?<=[.!?])(?<!\d \.\.\.)(?<!\d\.\.\.)\s+(?=[A-Z0-9\"'(*])")

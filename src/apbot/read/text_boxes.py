@@ -23,6 +23,8 @@ _ROW = re.compile(r"^\s*│.*│\s*$")
 # the same box typed in ASCII ("+------+----+", "| A1 | … |"): every border is the same line
 _GRID = re.compile(r"^\s*\+(?:[-=]{2,}\+){2,}\s*$")
 _GRID_ROW = re.compile(r"^\s*\|.*\|\s*$")
+# a box drawn with double lines (╔══╦══╗, ║ A1 ║ … ║, ╠══╬══╣) is the same table: read as single
+_SINGLE = str.maketrans("╔╦╗╠╬╣╚╩╝║═", "┌┬┐├┼┤└┴┘│─")
 
 
 def _cells(line: str, bar: str = "│") -> list[str]:
@@ -35,7 +37,7 @@ def _rule(width: int) -> str:
 
 def unbox(text: str) -> str:
     """``text`` with every box table that has column marks written as a pipe table."""
-    lines = text.split("\n")
+    lines = text.translate(_SINGLE).split("\n")
     k = 0
     while k < len(lines):
         if _GRID.match(lines[k]):

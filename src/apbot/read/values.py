@@ -448,7 +448,9 @@ ON_OFF_RE = re.compile(
 )
 EACH_PRESS_RE = re.compile(
     r"\bonce\s+(?:for|per)\s+(?:each|every)\s+\d"  # "tap it once for every 100 g"
-    r"|\b(?:each|every|repeated(?:ly)?|successive)\s+(?:press|touch|tap|push"
+    # ("each further touch adds one hour": the presses after a first one that only shows it)
+    r"|\b(?:each|every|repeated(?:ly)?|successive)\s+"
+    r"(?P<further>(?:further|more|additional|subsequent|following|extra)\s+)?(?:press|touch|tap|push"
     # ("every click of the dial changes the temperature": the dial's detents, not presses; "each
     # press of the timer knob" is a press all the same)
     r"|click(?!\w*\s+of\s+the\s+(?:\w+\s+)?(?:dial|knob|wheel|ring|selector|encoder)\b))",
