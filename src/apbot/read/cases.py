@@ -112,6 +112,8 @@ def apply_cases(b: Builder) -> None:
                 b.variables.items(),
                 key=lambda item: (
                     ranged and _switch(item[1]),  # a column of ranges: an amount before a switch
+                    # "Design size range" over "70 - 100 %": the setting in % before DESIGN
+                    not _unit_in_cells(str(item[1].get("unit", "")), cells),
                     not set(head) & set(words(item[0])),
                 ),
             )
@@ -160,6 +162,15 @@ def apply_cases(b: Builder) -> None:
                         b.manual.units.index(table[0]),
                     )
                 break
+
+
+def _unit_in_cells(unit: str, cells: list[str]) -> bool:
+    """Whether every figure cell of a column (two or more) carries the setting's unit."""
+    figures = [c for c in cells if re.search(r"\d", c)]
+    if not unit or len(figures) < 2:
+        return False
+    after = re.compile(rf"\d\s*{re.escape(unit)}(?![A-Za-z])")
+    return all(after.search(c) for c in figures)
 
 
 def _switch(spec: dict[str, Any]) -> bool:

@@ -42,6 +42,7 @@ from apbot.read.roles import assign
 from apbot.read.shapes import CHOICE_WORDS
 from apbot.read.shown_bars import read_bar_shows
 from apbot.read.text import check_text, parse_manual
+from apbot.read.typed_prefix import read_typed_prefixes
 from apbot.read.value_codes import read_value_codes
 
 MAX_REPAIRS = 40
@@ -80,6 +81,7 @@ def read_manual(
     name_glossed_words(builder)
     read_code_amounts(builder)
     read_code_levels(builder)
+    read_typed_prefixes(builder)
     read_off_words(builder)
     read_held_off_words(builder)
     read_range_codes(builder)

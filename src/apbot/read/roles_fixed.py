@@ -8,7 +8,7 @@ import re
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.evidence_checks import SENTENCE_END_RE
-from apbot.read.labels import words
+from apbot.read.labels import squash, words
 from apbot.read.roles_common import (
     NUMERIC_WORDS,
     dedupe,
@@ -51,6 +51,11 @@ def assign_power(b: Builder) -> list[str]:
     power_token: str | None = next(
         (t for t in ("on_off", "onoff", "power_on_off", "standby") if t in tokens), None
     )
+    if power_token is None:  # a key printed I / O or ON/OFF, whatever its action calls it
+        power_token = next(
+            (t for t in sorted(tokens) if t in b.labels and _printed_power(b.labels[t].text)),
+            None,
+        )
     if power_token is None and "power" in tokens:
         ctx = " ".join(b.manual.units[i].text for i in b.context(["power"]))
         if not re.search(r"\b(?:level|watt|output)\b", ctx, re.I) or re.search(
@@ -116,6 +121,11 @@ def assign_power(b: Builder) -> list[str]:
             held, at = standby_hold
             _only_in_standby(b, b.guards[-1], held, label_of(b, power_token or ""), at)
     return power_actions
+
+
+def _printed_power(label: str) -> bool:
+    """Whether a key's printing is the on/off mark itself ("I / O", "ON/OFF")."""
+    return "/" in label and squash(label) in ("io", "onoff")
 
 
 def assign_locks(b: Builder, done: set[str]) -> list[str]:
