@@ -357,6 +357,13 @@ class ListReader(OwnWords):
         if ev.initial is not None or not ev.values:
             return
         for i in self.context(tokens):
+            for v in ev.values:  # "600 (start setting) → 800 → 400": the value marked so
+                if re.search(
+                    rf"(?<![\w.]){re.escape(v)}\s*{_MARKED_START}", self.manual.units[i].text
+                ):
+                    ev.initial, ev.initial_at = v, i
+                    return
+        for i in self.context(tokens):
             m = re.search(
                 r"\b(?:(?-i:(?!STARTS?\b))starts?|default|factory|initially|normally|delivered)\b"
                 r"(.*)",  # (the word, not the key: "▶ START")
@@ -369,6 +376,11 @@ class ListReader(OwnWords):
                     if re.search(rf"\b{re.escape(v)}\b", said, re.I):
                         ev.initial, ev.initial_at = v, i
                         return
+
+
+# a value's own bracket saying it is where the setting starts: "(start setting)", "(default)",
+# "(factory setting)"
+_MARKED_START = r"\(\s*(?:start(?:ing)?|default|factory|initial)(?:\s+(?:setting|value))?\s*\)"
 
 
 def _lone_line(units: list[Unit], k: int) -> bool:

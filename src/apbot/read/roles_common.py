@@ -249,6 +249,19 @@ def numeric_list(values: list[str]) -> bool:
     ) or clock_list(values)
 
 
+def shown_prefix(values: list[str]) -> str:
+    """The letter or two every item of a list prints before its amount ("r0°, r90°, r180°":
+    an angle the display writes after an r); "" when the items differ in it or carry no unit
+    after the number (P1, P2 … are named programmes, not amounts)."""
+    found = [
+        re.fullmatch(r"([A-Za-z]{1,2})(\d+(?:[.,]\d+)?)\s*([°%]\w*)", v.strip()) for v in values
+    ]
+    if len(values) < 2 or not all(found):
+        return ""
+    prefixes = {m.group(1) for m in found if m}
+    return prefixes.pop() if len(prefixes) == 1 else ""
+
+
 def clock_list(values: list[str]) -> bool:
     """Durations written h:mm, every one ("0:00, 0:20, 0:40, 1:00, 1:30, 2:00")."""
     return len(values) >= 2 and all(re.fullmatch(r"\d{1,2}:[0-5]\d", v.strip()) for v in values)

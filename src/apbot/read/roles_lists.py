@@ -199,10 +199,13 @@ def list_evidence(ev: Evidence, min_sec: bool = False, said: str = "") -> Eviden
     if clock_list(ev.values or []) or not any(":" in v for v in ev.values or []):
         nums = fill_ellipses(nums, said, value_of)  # "3:00 … 9:00": 4:00 to 8:00 left out
     pieces = gap_pieces(nums, unit)
+    initial = ev.initial
+    if isinstance(initial, str) and re.fullmatch(r"\d{1,2}:\d{2}|\d+(?:[.,]\d+)?", initial):
+        initial = (value_of(initial), unit)  # "600 (start setting)": a number, as ranges give it
     return Evidence(
         ranges=pieces or [list_range(ev.values or [])],
         range_at=ev.values_at,
-        initial=ev.initial,
+        initial=initial,
         initial_at=ev.initial_at,
     )
 
