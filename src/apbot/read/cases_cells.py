@@ -309,7 +309,22 @@ def _defaults(
                     start = _duration(cell)  # "| Preset time | 1:30 |"
                     if start is not None and _within(case["ranges"], start):
                         case["initial"] = format_hms(start)
+                elif spec.get("type") == "numeric" and case.get("ranges"):
+                    start_n = _figure(cell)  # "| Factory | 35 |": within the case's range
+                    if start_n is not None and any(
+                        lo <= start_n <= hi for lo, hi, _ in case["ranges"]
+                    ):
+                        case["initial"] = start_n
         break
+
+
+def _figure(cell: str) -> float | None:
+    """The one figure a cell gives ("35", "8.0", "0,5"), or None."""
+    m = re.fullmatch(r"\s*(\d+(?:[.,]\d+)?)\s*", cell)
+    if not m:
+        return None
+    value = float(m.group(1).replace(",", "."))
+    return int(value) if value.is_integer() else value
 
 
 _STEP_HEAD_RE = re.compile(
@@ -327,13 +342,15 @@ def _row_steps(
 ) -> None:
     """A column headed "Each + / – press" (or "Step") next to a time's ranges gives each row's
     step ("| 0:45 – 2:00 | 15 min |")."""
-    if spec.get("type") != "time":
+    if spec.get("type") not in ("time", "numeric"):
         return
+    timed = spec.get("type") == "time"
     for c in range(1, len(header)):
         if c == column or not _STEP_HEAD_RE.search(header[c]):
             continue
         for row in rows:
-            step = _duration(_norm(row.cells[c])) if c < len(row.cells) else None
+            cell = _norm(row.cells[c]) if c < len(row.cells) else ""
+            step = _duration(cell) if timed else _figure(cell)  # "| Step | 0.5 |"
             if not step:
                 continue
             for target in _parent_values(row.cells[0], pvalues):
@@ -341,8 +358,8 @@ def _row_steps(
                 if not case or not case.get("ranges") or len(case["ranges"]) != 1:
                     continue
                 lo, hi, _ = case["ranges"][0]
-                a, b = _seconds(lo), _seconds(hi)
-                if b > a and (b - a) % step == 0:
+                a, b = (_seconds(lo), _seconds(hi)) if timed else (lo, hi)
+                if b > a and round((b - a) / step, 6) % 1 == 0:
                     case["ranges"] = [[lo, hi, step]]
         break
 
