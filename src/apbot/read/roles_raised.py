@@ -105,7 +105,9 @@ def _set_section(b: Builder, noun: str) -> bool:
     """The manual gives the noun a section of its own for setting it ("Setting the target
     pressure", "Set the goal"): an amount someone sets, though no number stands beside it."""
     first = noun.split("_")[0]
-    heading = re.compile(rf"^\W*(?:\d+(?:\.\d+)*\.?\s+)?set(?:ting)?\s+(?:the\s+|a\s+)?{first}\b", re.I)
+    heading = re.compile(
+        rf"^\W*(?:\d+(?:\.\d+)*\.?\s+)?set(?:ting)?\s+(?:the\s+|a\s+)?{first}\b", re.I
+    )
     return any(heading.search(u.heading) for u in b.manual.units if u.heading)
 
 
