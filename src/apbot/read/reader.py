@@ -44,6 +44,7 @@ from apbot.read.shown_bars import read_bar_shows
 from apbot.read.text import check_text, parse_manual
 from apbot.read.typed_prefix import read_typed_prefixes
 from apbot.read.value_codes import read_value_codes
+from apbot.read.value_shows import read_bracket_shows
 
 MAX_REPAIRS = 40
 
@@ -87,6 +88,7 @@ def read_manual(
     read_range_codes(builder)
     read_initials(builder)
     read_bar_shows(builder)
+    read_bracket_shows(builder)
     read_value_codes(builder)  # (after the other display words: only where none was read)
     apply_resets(builder)
     read_held_walks(builder)  # (after the resets: those were read for the switch it replaces)

@@ -438,7 +438,9 @@ def find_initial(text: str) -> tuple[float, str] | None:
 
 
 ON_OFF_RE = re.compile(
-    r"\bon\s*(?:/|or|and)\s*off\b|\boff\s*(?:/|or|and)\s*on\b(?!\s+again\b)|\btoggles?\b"
+    # ("off / on / flashing", "on / off / auto": a third state makes it a selector)
+    r"\bon\s*(?:/|or|and)\s*off\b(?!\s*/\s*\w)|\boff\s*(?:/|or|and)\s*on\b(?!\s+again\b)(?!\s*/\s*\w)"
+    r"|\btoggles?\b"
     r"|\b(?:enable|disable|activate|deactivate)s?\b[^.]*\b(?:or|and|/)\b"
     r"|\bagain to (?:switch|turn|cancel|deactivate|disable)\b"
     # ("kept when the sealer is switched off and on again": the appliance's power, no toggle)
