@@ -105,6 +105,14 @@ def _cell_items(cell: str) -> list[str]:
     return items
 
 
+def _spelled_out(item: str, known: list[str]) -> str:
+    """A value a chart cell shortens ("med" for medium): the one known value it begins."""
+    if item in known or len(item) < 3:
+        return item
+    longer = [k for k in known if isinstance(k, str) and k.startswith(item)]
+    return longer[0] if len(longer) == 1 else item
+
+
 def _alone(item: str, known: list[str]) -> str:
     """ "OFF only", "only ECO": the one value a row allows, said with "only" around it."""
     bare = re.sub(r"^only\s+|\s+only$", "", item)
@@ -153,7 +161,7 @@ def _case(spec: dict[str, Any], cell: str) -> Any:
         items = [_norm(re.sub(r"\(.*?\)", "", i)) for i in _cell_items(cell)]
         if "→" in cell:  # "30 → 60 → 90 → 120", "1 COARSE → 2 FINE → 1 …": the key's order
             items = _stepped(cell)
-        items = [_alone(i, known) for i in items]
+        items = [_spelled_out(_alone(i, known), known) for i in items]
         items = [i for i in items if i and i not in ("—", "-", "–", "n/a") and len(i) <= 24]
         return {"values": list(dict.fromkeys(items))} if items else None
     ranges = spec.get("ranges") or []
@@ -302,7 +310,7 @@ def _defaults(
                 case = cases.get(target)
                 if case is None:
                     continue
-                cell = _norm(row.cells[c])
+                cell = _spelled_out(_norm(row.cells[c]), case.get("values", []))
                 if spec.get("type") == "discrete" and cell in case.get("values", []):
                     case["initial"] = cell
                 elif spec.get("type") == "time" and case.get("ranges"):

@@ -89,6 +89,15 @@ class ListReader(OwnWords):
                         seen.append(j)
                     if re.search(r"\btable\b", units[j].text, re.I):
                         self._table_after(j, seen, 3)
+                    nxt = j + 1
+                    if (  # "The order is:" then the list it introduces, one unit further on
+                        j > i
+                        and units[j].text.rstrip().endswith(":")
+                        and nxt < len(units)
+                        and units[nxt].heading == units[i].heading
+                        and nxt not in seen
+                    ):
+                        seen.append(nxt)
                 if units[i].text.rstrip().endswith(":"):
                     self._table_after(i, seen, 1)  # "Touch COLOUR to change the colour:"
         for token in tokens:

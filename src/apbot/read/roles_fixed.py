@@ -9,6 +9,7 @@ from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.evidence_checks import SENTENCE_END_RE
 from apbot.read.labels import squash, words
+from apbot.read.power_starts import power_starts_work
 from apbot.read.roles_common import (
     NUMERIC_WORDS,
     dedupe,
@@ -62,6 +63,12 @@ def assign_power(b: Builder) -> list[str]:
             r"\b(?:switch|turn)\w*\b[^.]*\b(?:on|off)\b", ctx, re.I
         ):
             power_token = "power"
+    if (
+        power_token is not None
+        and all(power_starts_work(b, i) for i in by_token[power_token] if i.skill == "press")
+        and any(i.skill == "press" for i in by_token[power_token])
+    ):
+        return []  # "press ⏻. The brush starts": the key starts the work (assign_running)
     var = ""
     if power_token is None:  # a key held to switch the appliance on and off ("M: hold 2 s")
         for info in infos:
@@ -277,6 +284,8 @@ def assign_running(
         starts = [i for i in infos if i.name not in done and held_start(b, i) is not None][:1]
     if not starts and not stops:  # "Thumb wheel: turn to choose …; push (click) to start or stop"
         starts = [i for i in infos if i.name not in done and pushed_start(b, i) is not None][:1]
+    if not starts and not stops:  # "then press ⏻. The brush starts": no START, ⏻ starts it
+        starts = [i for i in infos if i.name not in done and power_starts_work(b, i)][:1]
     if starts or stops:
         var = b.unique("running", b.variables)
         b.variables[var] = {"type": "discrete", "values": ["off", "on"], "label": "RUN"}

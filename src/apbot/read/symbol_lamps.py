@@ -30,3 +30,26 @@ def symbol_lamp(units: Sequence[Unit], label: str) -> tuple[str, int] | None:
         if m:
             return m.group(1), i
     return None
+
+
+# "The PACER lamp is lit when the pacer is on (factory setting)": a lamp printed with the
+# setting's name, lit while it is on; the bracket after "on" says it starts on
+_WORD_LAMP = (
+    r"(?<![\w])(?P<word>[A-Z][A-Z0-9+-]{1,11})\s+(?:lamp|light|indicator|LED)\s+(?:is\s+)?"
+    r"(?:lit|lights(?:\s+up)?|on)\s+(?:when|while)\s+(?:the\s+)?{name}\s+is\s+on\b"
+    r"(?P<start>\s*\(\s*(?:factory|default|start)[^)]*\))?"
+)
+
+
+def word_lamp(units: Sequence[Unit], name: str) -> tuple[str, bool, int] | None:
+    """The word of the setting's own lamp, lit while it is on, whether the manual says it
+    starts on, and where; None when no sentence says so."""
+    if not re.fullmatch(r"[a-z][a-z ]{2,30}", name):
+        return None
+    noun = r"\s+".join(re.escape(w) for w in name.split())
+    pattern = re.compile(_WORD_LAMP.replace("{name}", noun), re.IGNORECASE)
+    for i, unit in enumerate(units):
+        m = pattern.search(unit.text)
+        if m and m.group("word").isupper() and m.group("word").lower().startswith(name[:4]):
+            return m.group("word"), bool(m.group("start")), i
+    return None
