@@ -99,6 +99,12 @@ def apply_cases(b: Builder) -> None:
             continue
         header = _named_ranges(header, rows)
         lone = _lone_amount(b.variables, fixed | parents | {parent})
+        if lone and (
+            _names_another(table[0].heading, b.variables, {parent, lone})
+            or not _every_choice(rows, b.variables[parent]["values"])
+            or not _matches(header[0], parent, b.variables[parent])  # keyed by the choice itself
+        ):
+            lone = None  # "6.3 Target" over a Range column: the target's, not the lone amount's
         pressure = _pressure_unit(rows) if lone and any(map(_bare_range, header)) else ""
         if pressure:  # "CAR | 20 - 50 psi | 1 psi | 35 psi": the lone amount is a pressure
             rows = [replace(r, cells=tuple(_PRESSURE_RE.sub("", c) for c in r.cells)) for r in rows]
@@ -188,6 +194,23 @@ def _pressure_unit(rows: list[Unit]) -> str:
     """The one pressure unit the rows' cells give their figures in ("20 - 50 psi"), or ""."""
     found = {m.group(1) for r in rows for c in r.cells for m in _PRESSURE_RE.finditer(c)}
     return found.pop() if len(found) == 1 else ""
+
+
+def _every_choice(rows: list[Unit], pvalues: list[str]) -> bool:
+    """Whether the rows give three or more choices, nearly every one the parent has (a chart
+    of all the presets, not of two programmes among many)."""
+    named = {v for r in rows for v in _parent_values(r.cells[0], pvalues)}
+    return len(named) >= 3 and len(named) >= 0.8 * len(pvalues)
+
+
+def _names_another(heading: str, variables: dict[str, dict[str, Any]], own: set[str]) -> bool:
+    """Whether a heading names a setting other than those in ``own``."""
+    hw = {w[:5] for w in words(heading) if len(w) >= 4}
+    return any(
+        {w[:5] for w in words(name.replace("_", " ")) if len(w) >= 4} & hw
+        for name in variables
+        if name not in own
+    )
 
 
 def _lone_amount(variables: dict[str, dict[str, Any]], skip: set[str]) -> str | None:

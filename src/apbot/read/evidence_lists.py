@@ -93,6 +93,9 @@ class ListReader(OwnWords):
                     if (  # "The order is:" then the list it introduces, one unit further on
                         j > i
                         and units[j].text.rstrip().endswith(":")
+                        and not any(  # ("Press MOTION to go on:": MOTION's list)
+                            j in lab.mentions for t, lab in self.labels.items() if t not in tokens
+                        )
                         and nxt < len(units)
                         and units[nxt].heading == units[i].heading
                         and nxt not in seen
@@ -367,9 +370,7 @@ class ListReader(OwnWords):
             return
         for i in self.context(tokens):
             for v in ev.values:  # "600 (start setting) → 800 → 400": the value marked so
-                if re.search(
-                    rf"(?<![\w.]){re.escape(v)}\s*{_MARKED_START}", self.manual.units[i].text
-                ):
+                if marked_start(v, self.manual.units[i].text):
                     ev.initial, ev.initial_at = v, i
                     return
         for i in self.context(tokens):
@@ -390,6 +391,13 @@ class ListReader(OwnWords):
 # a value's own bracket saying it is where the setting starts: "(start setting)", "(default)",
 # "(factory setting)"
 _MARKED_START = r"\(\s*(?:start(?:ing)?|default|factory|initial)(?:\s+(?:setting|value))?\s*\)"
+
+
+def marked_start(value: str, text: str) -> bool:
+    """Whether the text marks the value as where the setting starts ("600 (start setting)",
+    "60 % (factory)")."""
+    unit = r"(?:\s*(?:%|°\s?[CF]?|[a-zA-Z]{1,3}\b))?"
+    return bool(re.search(rf"(?<![\w.]){re.escape(value)}{unit}\s*{_MARKED_START}", text))
 
 
 def _lone_line(units: list[Unit], k: int) -> bool:

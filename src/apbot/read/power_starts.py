@@ -30,6 +30,8 @@ def power_starts_work(b: Builder, info: ActionInfo) -> bool:
     other key starts or stops anything."""
     if info.skill != "press" or len(info.controls) != 1 or info.controls[0] not in b.labels:
         return False
+    if not _power_key(info.token, b.labels[info.controls[0]].text):
+        return False
     if any(
         "start" in words(i.token) or set(words(i.token)) & STOP_WORDS
         for i in b.infos
@@ -43,11 +45,21 @@ def power_starts_work(b: Builder, info: ActionInfo) -> bool:
     pressed = re.compile(rf"\bpress\s+(?:the\s+)?{re.escape(label.text)}(?!\w)", re.IGNORECASE)
     starts = False
     for i in label.mentions:
-        if _SWITCHED_ON_RE.search(units[i].text):
-            return False
+        after = units[i + 1].text if i + 1 < len(units) else ""
+        if _SWITCHED_ON_RE.search(units[i].text) or _SWITCHED_ON_RE.search(after):
+            return False  # "ON/OFF — … Switches the cooker on and off": a power switch
         if not pressed.search(units[i].text):
             continue
-        after = units[i + 1].text if i + 1 < len(units) else ""
         if _STARTS_RE.search(units[i].text) or _STARTS_RE.search(after):
             starts = True
     return starts
+
+
+def _power_key(token: str, label: str) -> bool:
+    """Whether the key is the power key by its action name or its printing (⏻, ON/OFF, I/O)."""
+    squashed = "".join(words(label))
+    return (
+        token in ("power", "on_off", "onoff", "power_on_off")
+        or label.strip() == "⏻"
+        or squashed in ("onoff", "io", "power")
+    )

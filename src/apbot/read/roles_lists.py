@@ -8,6 +8,7 @@ from typing import Any
 
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
+from apbot.read.evidence_lists import marked_start
 from apbot.read.labels import words
 from apbot.read.list_ellipsis import fill_ellipses
 from apbot.read.roles_common import clock_list, numeric_list, stepped_noun, token_of
@@ -200,7 +201,11 @@ def list_evidence(ev: Evidence, min_sec: bool = False, said: str = "") -> Eviden
         nums = fill_ellipses(nums, said, value_of)  # "3:00 … 9:00": 4:00 to 8:00 left out
     pieces = gap_pieces(nums, unit)
     initial = ev.initial
-    if isinstance(initial, str) and re.fullmatch(r"\d{1,2}:\d{2}|\d+(?:[.,]\d+)?", initial):
+    if (
+        isinstance(initial, str)
+        and re.fullmatch(r"\d{1,2}:\d{2}|\d+(?:[.,]\d+)?", initial)
+        and marked_start(initial, said)
+    ):
         initial = (value_of(initial), unit)  # "600 (start setting)": a number, as ranges give it
     return Evidence(
         ranges=pieces or [list_range(ev.values or [])],
