@@ -36,6 +36,7 @@ from apbot.read.hold_seconds import hold_seconds, pair_hold_seconds
 from apbot.read.initials import read_initials
 from apbot.read.labels import find_labels
 from apbot.read.off_words import read_held_off_words, read_off_words
+from apbot.read.position_charts import read_position_charts
 from apbot.read.range_codes import read_range_codes
 from apbot.read.report import Note, Report
 from apbot.read.roles import assign
@@ -82,6 +83,7 @@ def read_manual(
     name_glossed_words(builder)
     read_code_amounts(builder)
     read_code_levels(builder)
+    read_position_charts(builder)
     read_typed_prefixes(builder)
     read_off_words(builder)
     read_held_off_words(builder)
