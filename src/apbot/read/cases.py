@@ -182,7 +182,7 @@ def apply_cases(b: Builder) -> None:
 def _bare_range(header: str) -> bool:
     """A column head that says only "Range" ("Setting range", "Range"): no setting's name."""
     hw = words(header)
-    return bool(hw) and {"range", "ranges"} & set(hw) and set(hw) <= GENERIC
+    return bool(hw) and bool({"range", "ranges"} & set(hw)) and set(hw) <= GENERIC
 
 
 # a pressure after a figure: a rating in most manuals (a pump's "15 bar"), which a table of

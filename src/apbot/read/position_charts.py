@@ -46,8 +46,8 @@ def read_position_charts(b: Builder) -> None:
             if found is None:
                 continue
             amounts, unit_text, codes = found
-            spec["ranges"] = [[_tidy(r.low), _tidy(r.high), _tidy(r.step)] for r in
-                              gap_pieces(amounts, unit_text)]  # fmt: skip
+            pieces = gap_pieces(amounts, unit_text)
+            spec["ranges"] = [[_tidy(r.low), _tidy(r.high), _tidy(r.step or 1)] for r in pieces]
             spec["unit"] = unit_text
             if codes:
                 spec["show"] = {f"{a:g}": c for a, c in zip(amounts, codes, strict=True)}
@@ -87,10 +87,11 @@ def _chart(
         cells = [r.cells[c] if c < len(r.cells) else "" for r in rows]
         read = [_AMOUNT.match(x) for x in cells]
         if all(read):
-            figures = [number(m.group(1)) for m in read if m]
+            read_figures = [number(m.group(1)) for m in read if m]
+            figures = [f for f in read_figures if f is not None]
             units = {m.group(2) for m in read if m}  # (as printed: "A", not a unit's name)
-            if len(units) == 1 and None not in figures and figures == sorted(set(figures)):
-                columns.append((c, [float(f) for f in figures if f is not None], units.pop()))
+            if len(units) == 1 and len(figures) == len(rows) and figures == sorted(set(figures)):
+                columns.append((c, figures, units.pop()))
         elif all(_CODE.match(x) for x in cells) and len(set(cells)) == len(cells) and not codes:
             codes = [x.strip() for x in cells]
     named = [col for col in columns if {w[:5] for w in words(header[col[0]])} & own]

@@ -47,7 +47,7 @@ def confirmed_noun(b: Builder, key: ActionInfo) -> str:
 
 # the number keys named in a legend: "Number keys 0-9 and OK - design number", "0 – 9: the
 # programme number"
-_KEYPAD_RE = re.compile(
+KEYPAD_RE = re.compile(
     r"(?:number|digit|numeric|numeral)\s+(?:keys|buttons|pad)|keypad"
     r"|(?<![\d.,])0\s*(?:-|–|to)\s*9(?![\d.,])",
     re.IGNORECASE,
@@ -66,7 +66,7 @@ def keypad_noun(b: Builder, key: ActionInfo) -> str:
         return ""
     named = re.compile(rf"(?<!\w){re.escape(label)}(?!\w)")
     for unit in b.manual.units:
-        if not (_KEYPAD_RE.search(unit.text) and named.search(unit.text)):
+        if not (KEYPAD_RE.search(unit.text) and named.search(unit.text)):
             continue
         for m in _NOUN_NUMBER_RE.finditer(unit.text):
             if m.group(1).lower() not in _NOT_NOUNS:
