@@ -28,6 +28,7 @@ from apbot.read.shapes import (
     _value_text,
 )
 from apbot.read.shown import shown_words
+from apbot.read.symbol_lamps import symbol_lamp, word_lamp
 from apbot.read.text import Manual
 from apbot.read.value_spans import expand_spans
 from apbot.read.values import (
@@ -142,6 +143,19 @@ class Builder(EvidenceReader):
         if shown is not None:  # "FRESH ON appears": what the display prints while it is on
             self.variables[name]["show"] = {"off": "", "on": shown[0]}
             self.note(f"variables.{name}.show", f"the display shows {shown[0]} while on", shown[1])
+            return name
+        glyph = symbol_lamp(self.manual.units, label)
+        if glyph is not None:  # "Mirror lamp ⇋ (lit when …)": the symbol lit while it is on
+            self.variables[name]["show"] = {"off": "", "on": glyph[0]}
+            self.note(f"variables.{name}.show", f"the {glyph[0]} lamp is lit while on", glyph[1])
+            return name
+        lit = word_lamp(self.manual.units, name.replace("_", " "))
+        if lit is not None:  # "The PACER lamp is lit when the pacer is on (factory setting)"
+            self.variables[name]["show"] = {"off": "", "on": lit[0]}
+            self.note(f"variables.{name}.show", f"the {lit[0]} lamp is lit while on", lit[2])
+            if lit[1]:
+                self.variables[name]["initial"] = "on"
+                self.note(f"variables.{name}.initial", "on as delivered", lit[2])
             return name
         lamp = self.lamp_unit(label)
         if lamp is not None:  # only a lamp the manual names: a wrong lamp misleads the reading

@@ -98,6 +98,16 @@ def apply_cases(b: Builder) -> None:
             _no_toggle(b, marked, b.variables[marked]["cases"])
             continue
         header = _named_ranges(header, rows)
+        lone = _lone_amount(b.variables, fixed | parents | {parent})
+        if lone and (
+            _names_another(table[0].heading, b.variables, {parent, lone})
+            or not _every_choice(rows, b.variables[parent]["values"])
+            or not _matches(header[0], parent, b.variables[parent])  # keyed by the choice itself
+        ):
+            lone = None  # "6.3 Target" over a Range column: the target's, not the lone amount's
+        pressure = _pressure_unit(rows) if lone and any(map(_bare_range, header)) else ""
+        if pressure:  # "CAR | 20 - 50 psi | 1 psi | 35 psi": the lone amount is a pressure
+            rows = [replace(r, cells=tuple(_PRESSURE_RE.sub("", c) for c in r.cells)) for r in rows]
         for column in range(1, len(header)):
             cells = [r.cells[column] if column < len(r.cells) else "" for r in rows]
             if defaults_head(header[column], cells) or set(words(header[column])) & ADVICE_WORDS:
@@ -112,14 +122,19 @@ def apply_cases(b: Builder) -> None:
                 b.variables.items(),
                 key=lambda item: (
                     ranged and _switch(item[1]),  # a column of ranges: an amount before a switch
+                    # "Design size range" over "70 - 100 %": the setting in % before DESIGN
+                    not _unit_in_cells(str(item[1].get("unit", "")), cells),
                     not set(head) & set(words(item[0])),
                 ),
             )
             for name, spec in named:
                 if name == parent or name in fixed | parents or spec.get("depends_on"):
                     continue
-                if not _matches(header[column], name, spec):
-                    continue
+                if not (
+                    _matches(header[column], name, spec)
+                    or (name == lone and ranged and _bare_range(header[column]))
+                ):
+                    continue  # (a bare "Range" column of ranges: the one amount there is)
                 if spec.get("type") == "discrete" and _ranges_column(rows, column):
                     _as_number(b, name, spec, rows, column)  # the table says it is an amount
                 elif _finer_times(spec, rows, column):
@@ -151,6 +166,8 @@ def apply_cases(b: Builder) -> None:
                     spec["depends_on"] = parent
                     spec["cases"] = cases
                     _header_unit(spec, header[column])
+                    if pressure and name == lone:
+                        spec["unit"] = pressure
                     parents.add(parent)
                     children.add(name)
                     _no_toggle(b, name, cases)
@@ -160,6 +177,59 @@ def apply_cases(b: Builder) -> None:
                         b.manual.units.index(table[0]),
                     )
                 break
+
+
+def _bare_range(header: str) -> bool:
+    """A column head that says only "Range" ("Setting range", "Range"): no setting's name."""
+    hw = words(header)
+    return bool(hw) and bool({"range", "ranges"} & set(hw)) and set(hw) <= GENERIC
+
+
+# a pressure after a figure: a rating in most manuals (a pump's "15 bar"), which a table of
+# per-choice ranges shows to be the setting's unit instead
+_PRESSURE_RE = re.compile(r"(?<=\d)\s*(psi|bar|kPa)(?![\w])")
+
+
+def _pressure_unit(rows: list[Unit]) -> str:
+    """The one pressure unit the rows' cells give their figures in ("20 - 50 psi"), or ""."""
+    found = {m.group(1) for r in rows for c in r.cells for m in _PRESSURE_RE.finditer(c)}
+    return found.pop() if len(found) == 1 else ""
+
+
+def _every_choice(rows: list[Unit], pvalues: list[str]) -> bool:
+    """Whether the rows give three or more choices, nearly every one the parent has (a chart
+    of all the presets, not of two programmes among many)."""
+    named = {v for r in rows for v in _parent_values(r.cells[0], pvalues)}
+    return len(named) >= 3 and len(named) >= 0.8 * len(pvalues)
+
+
+def _names_another(heading: str, variables: dict[str, dict[str, Any]], own: set[str]) -> bool:
+    """Whether a heading names a setting other than those in ``own``."""
+    hw = {w[:5] for w in words(heading) if len(w) >= 4}
+    return any(
+        {w[:5] for w in words(name.replace("_", " ")) if len(w) >= 4} & hw
+        for name in variables
+        if name not in own
+    )
+
+
+def _lone_amount(variables: dict[str, dict[str, Any]], skip: set[str]) -> str | None:
+    """The only numeric setting of the appliance (none per programme yet), or None."""
+    amounts = [
+        n
+        for n, spec in variables.items()
+        if n not in skip and spec.get("type") == "numeric" and not spec.get("depends_on")
+    ]
+    return amounts[0] if len(amounts) == 1 else None
+
+
+def _unit_in_cells(unit: str, cells: list[str]) -> bool:
+    """Whether every figure cell of a column (two or more) carries the setting's unit."""
+    figures = [c for c in cells if re.search(r"\d", c)]
+    if not unit or len(figures) < 2:
+        return False
+    after = re.compile(rf"\d\s*{re.escape(unit)}(?![A-Za-z])")
+    return all(after.search(c) for c in figures)
 
 
 def _switch(spec: dict[str, Any]) -> bool:

@@ -105,6 +105,14 @@ def _cell_items(cell: str) -> list[str]:
     return items
 
 
+def _spelled_out(item: str, known: list[str]) -> str:
+    """A value a chart cell shortens ("med" for medium): the one known value it begins."""
+    if item in known or len(item) < 3:
+        return item
+    longer = [k for k in known if isinstance(k, str) and k.startswith(item)]
+    return longer[0] if len(longer) == 1 else item
+
+
 def _alone(item: str, known: list[str]) -> str:
     """ "OFF only", "only ECO": the one value a row allows, said with "only" around it."""
     bare = re.sub(r"^only\s+|\s+only$", "", item)
@@ -153,7 +161,7 @@ def _case(spec: dict[str, Any], cell: str) -> Any:
         items = [_norm(re.sub(r"\(.*?\)", "", i)) for i in _cell_items(cell)]
         if "→" in cell:  # "30 → 60 → 90 → 120", "1 COARSE → 2 FINE → 1 …": the key's order
             items = _stepped(cell)
-        items = [_alone(i, known) for i in items]
+        items = [_spelled_out(_alone(i, known), known) for i in items]
         items = [i for i in items if i and i not in ("—", "-", "–", "n/a") and len(i) <= 24]
         return {"values": list(dict.fromkeys(items))} if items else None
     ranges = spec.get("ranges") or []
@@ -302,14 +310,29 @@ def _defaults(
                 case = cases.get(target)
                 if case is None:
                     continue
-                cell = _norm(row.cells[c])
+                cell = _spelled_out(_norm(row.cells[c]), case.get("values", []))
                 if spec.get("type") == "discrete" and cell in case.get("values", []):
                     case["initial"] = cell
                 elif spec.get("type") == "time" and case.get("ranges"):
                     start = _duration(cell)  # "| Preset time | 1:30 |"
                     if start is not None and _within(case["ranges"], start):
                         case["initial"] = format_hms(start)
+                elif spec.get("type") == "numeric" and case.get("ranges"):
+                    start_n = _figure(cell)  # "| Factory | 35 |": within the case's range
+                    if start_n is not None and any(
+                        lo <= start_n <= hi for lo, hi, _ in case["ranges"]
+                    ):
+                        case["initial"] = start_n
         break
+
+
+def _figure(cell: str) -> float | None:
+    """The one figure a cell gives ("35", "8.0", "0,5"), or None."""
+    m = re.fullmatch(r"\s*(\d+(?:[.,]\d+)?)\s*", cell)
+    if not m:
+        return None
+    value = float(m.group(1).replace(",", "."))
+    return int(value) if value.is_integer() else value
 
 
 _STEP_HEAD_RE = re.compile(
@@ -327,13 +350,15 @@ def _row_steps(
 ) -> None:
     """A column headed "Each + / – press" (or "Step") next to a time's ranges gives each row's
     step ("| 0:45 – 2:00 | 15 min |")."""
-    if spec.get("type") != "time":
+    if spec.get("type") not in ("time", "numeric"):
         return
+    timed = spec.get("type") == "time"
     for c in range(1, len(header)):
         if c == column or not _STEP_HEAD_RE.search(header[c]):
             continue
         for row in rows:
-            step = _duration(_norm(row.cells[c])) if c < len(row.cells) else None
+            cell = _norm(row.cells[c]) if c < len(row.cells) else ""
+            step = _duration(cell) if timed else _figure(cell)  # "| Step | 0.5 |"
             if not step:
                 continue
             for target in _parent_values(row.cells[0], pvalues):
@@ -341,8 +366,8 @@ def _row_steps(
                 if not case or not case.get("ranges") or len(case["ranges"]) != 1:
                     continue
                 lo, hi, _ = case["ranges"][0]
-                a, b = _seconds(lo), _seconds(hi)
-                if b > a and (b - a) % step == 0:
+                a, b = (_seconds(lo), _seconds(hi)) if timed else (lo, hi)
+                if b > a and round((b - a) / step, 6) % 1 == 0:
                     case["ranges"] = [[lo, hi, step]]
         break
 

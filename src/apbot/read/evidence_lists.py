@@ -89,6 +89,18 @@ class ListReader(OwnWords):
                         seen.append(j)
                     if re.search(r"\btable\b", units[j].text, re.I):
                         self._table_after(j, seen, 3)
+                    nxt = j + 1
+                    if (  # "The order is:" then the list it introduces, one unit further on
+                        j > i
+                        and units[j].text.rstrip().endswith(":")
+                        and not any(  # ("Press MOTION to go on:": MOTION's list)
+                            j in lab.mentions for t, lab in self.labels.items() if t not in tokens
+                        )
+                        and nxt < len(units)
+                        and units[nxt].heading == units[i].heading
+                        and nxt not in seen
+                    ):
+                        seen.append(nxt)
                 if units[i].text.rstrip().endswith(":"):
                     self._table_after(i, seen, 1)  # "Touch COLOUR to change the colour:"
         for token in tokens:
@@ -357,6 +369,11 @@ class ListReader(OwnWords):
         if ev.initial is not None or not ev.values:
             return
         for i in self.context(tokens):
+            for v in ev.values:  # "600 (start setting) → 800 → 400": the value marked so
+                if marked_start(v, self.manual.units[i].text):
+                    ev.initial, ev.initial_at = v, i
+                    return
+        for i in self.context(tokens):
             m = re.search(
                 r"\b(?:(?-i:(?!STARTS?\b))starts?|default|factory|initially|normally|delivered)\b"
                 r"(.*)",  # (the word, not the key: "▶ START")
@@ -369,6 +386,18 @@ class ListReader(OwnWords):
                     if re.search(rf"\b{re.escape(v)}\b", said, re.I):
                         ev.initial, ev.initial_at = v, i
                         return
+
+
+# a value's own bracket saying it is where the setting starts: "(start setting)", "(default)",
+# "(factory setting)"
+_MARKED_START = r"\(\s*(?:start(?:ing)?|default|factory|initial)(?:\s+(?:setting|value))?\s*\)"
+
+
+def marked_start(value: str, text: str) -> bool:
+    """Whether the text marks the value as where the setting starts ("600 (start setting)",
+    "60 % (factory)")."""
+    unit = r"(?:\s*(?:%|°\s?[CF]?|[a-zA-Z]{1,3}\b))?"
+    return bool(re.search(rf"(?<![\w.]){re.escape(value)}{unit}\s*{_MARKED_START}", text))
 
 
 def _lone_line(units: list[Unit], k: int) -> bool:

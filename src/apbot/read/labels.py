@@ -141,6 +141,25 @@ def _named_by_noun(manual: Manual, noun: str) -> tuple[str, int] | None:
     return None
 
 
+# "the main switch I / O", "the power button ⏻": a control called by its words and a noun, then
+# its printing (capitals or a symbol, a slashed pair spaced or not)
+_PRINTED = r"((?:[A-Z0-9⏻]{1,6})(?:\s?/\s?[A-Z0-9]{1,6})?)(?![\w/])"
+
+
+def _printed_after_noun(manual: Manual, token_words: list[str]) -> tuple[str, int] | None:
+    """The printing named right after the token's words and a control noun ("main switch
+    I / O"): the manual saying which printed control the token is, rather than a longer word
+    the token only begins (MAINTENANCE for ``main``)."""
+    name = r"\s+".join(re.escape(w) for w in token_words)
+    nouns = "switch|key|button|knob|dial|selector"
+    pattern = re.compile(rf"\b{name}\s+(?:{nouns})\s+{_PRINTED}", re.IGNORECASE)
+    for unit in manual.units:
+        m = pattern.search(unit.text)
+        if m and (m.group(1).isupper() or not m.group(1).isalpha()):
+            return m.group(1), unit.line
+    return None
+
+
 # the signs printed after a setting's name on a key of a stepping pair ("TEMP +", "POUCH −");
 # not SYMBOLS, which a key prints alone: after a name "+" is up and "–" (a dash) down, and the
 # arrows of up and down keys other than ▲ ▼ (↑ △ ∧) do not follow a name
@@ -173,6 +192,10 @@ def find_labels(manual: Manual, tokens: list[str]) -> dict[str, Label]:
             score = _score(tw, phrase)
             if score > best_score or (score == best_score and score and len(phrase) < len(best)):
                 best, best_score, line = phrase, score, at
+        if best_score < 0.85 and tw:
+            printed = _printed_after_noun(manual, tw)  # "main switch I / O" for ``main``
+            if printed is not None:
+                best, best_score, line = printed[0], 0.85, printed[1]
         if best_score < 0.6 and tw and tw[-1] in NOUN_TOKENS:
             named = _named_by_noun(manual, tw[-1])  # "the HUMIDISTAT knob" for ``knob``
             if named is not None:

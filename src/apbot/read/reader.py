@@ -36,6 +36,7 @@ from apbot.read.hold_seconds import hold_seconds, pair_hold_seconds
 from apbot.read.initials import read_initials
 from apbot.read.labels import find_labels
 from apbot.read.off_words import read_held_off_words, read_off_words
+from apbot.read.position_charts import read_position_charts
 from apbot.read.range_codes import read_range_codes
 from apbot.read.report import Note, Report
 from apbot.read.roles import assign
@@ -43,7 +44,9 @@ from apbot.read.shapes import CHOICE_WORDS
 from apbot.read.shown_bars import read_bar_shows
 from apbot.read.shown_figures import read_prefixed_figures
 from apbot.read.text import check_text, parse_manual
+from apbot.read.typed_prefix import read_typed_prefixes
 from apbot.read.value_codes import read_value_codes
+from apbot.read.value_shows import read_bracket_shows
 
 MAX_REPAIRS = 40
 
@@ -81,11 +84,14 @@ def read_manual(
     name_glossed_words(builder)
     read_code_amounts(builder)
     read_code_levels(builder)
+    read_position_charts(builder)
+    read_typed_prefixes(builder)
     read_off_words(builder)
     read_held_off_words(builder)
     read_range_codes(builder)
     read_initials(builder)
     read_bar_shows(builder)
+    read_bracket_shows(builder)
     read_value_codes(builder)  # (after the other display words: only where none was read)
     read_prefixed_figures(builder)  # ("SPM 20": only where no stage read a show or a unit)
     apply_resets(builder)

@@ -25,6 +25,7 @@ from apbot.read.roles_common import (
     hold_use,
     label_of,
     mentions_of,
+    shown_prefix,
     token_of,
     used_actions,
     var_name,
@@ -35,7 +36,7 @@ from apbot.read.roles_fasthold import fold_fast_holds
 from apbot.read.roles_fixed import assign_locks, assign_power, assign_running, standby_only
 from apbot.read.roles_functions import assign_functions, function_keys
 from apbot.read.roles_heldshown import show_held_word
-from apbot.read.roles_heldvalues import others_list
+from apbot.read.roles_heldvalues import list_of_earlier_key, others_list
 from apbot.read.roles_holdcell import (
     HELD_SECONDS,
     HOLD_CELL,
@@ -213,7 +214,9 @@ def assign(b: Builder) -> None:
         if key.skill == "hold" and set(key.controls) <= paired_tokens:
             silent.append(key)  # holding ▲ / ▼ moves faster: no list of its own ("00:00 00:30 …")
             continue
-        if others_list(b, key, ev.values or [], ev.values_at):  # "Hold LIGHT …: WHT, BLU …"
+        if others_list(b, key, ev.values or [], ev.values_at) or (
+            ev.values and list_of_earlier_key(b, key, ev.values_at)  # ROTATE's angles, not MIRROR's
+        ):  # "Hold LIGHT …: WHT, BLU …"
             ev = evidence[key.name] = replace(ev, values=None, values_at=None)
         amount = bool(set(words(name)) & NUMERIC_WORDS)
         if key.skill == "press" and _hold_row(b, key, ev.toggle_at):
@@ -256,10 +259,17 @@ def assign(b: Builder) -> None:
             and not _numbered(b, key, ev)
         ):
             numbered = set(words(name)) & CHOICE_WORDS and all(v.isdigit() for v in ev.values)
-            if numeric_list(ev.values) and not (numbered and len(ev.values) <= 40):
+            prefix = shown_prefix(ev.values)  # "r0° → r90° …": angles the display marks r
+            amounts = [v.strip()[len(prefix) :] for v in ev.values]
+            if numeric_list(amounts) and not (numbered and len(ev.values) <= 40):
                 said = b.manual.units[ev.values_at].text if ev.values_at is not None else ""
-                ev2 = list_evidence(ev, listed_min_sec(b, key, ev.values_at), said)
+                ev2 = replace(ev, values=amounts)
+                ev2 = list_evidence(ev2, listed_min_sec(b, key, ev.values_at), said)
                 var = b.add_number(name, lab, ev2, cyclic=True)
+                if prefix:
+                    b.variables[var]["show"] = prefix + "{value}"
+                    if all(v.strip().endswith("°") for v in amounts):
+                        b.variables[var]["unit"] = "°"  # "r90°": an angle, no temperature
             else:
                 var = b.add_discrete(name, ev.values, lab, ev)
                 b.note(

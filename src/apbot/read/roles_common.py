@@ -211,11 +211,33 @@ def var_name(b: Builder, key: ActionInfo) -> str:
             m = moves.search(b.manual.units[i].text)
             if m:
                 return m.group(1).lower()
+    said = _unit_key_sets(b, key, lab.mentions)
+    if said:  # "HOUR key - sets the start time": a key named for its step sets that time
+        return said
     lw = [w for w in words(lab.text) if w.isalpha()]
     tw = words(key.token.replace("_", " "))
     if 1 < len(lw) <= 3 and all(any(x == t or x.startswith(t) for x in lw) for t in tw):
         return "_".join(lw)
     return base
+
+
+_UNIT_KEYS = frozenset({"hour", "hours", "hr", "min", "minute", "minutes"})
+_SETS_TIME_RE = re.compile(
+    r"\bsets?\s+(?:the\s+)?((?:[a-z]+[\s-]+)?(?:time|delay|timer))\b", re.IGNORECASE
+)
+
+
+def _unit_key_sets(b: Builder, key: ActionInfo, mentions: list[int]) -> str:
+    """What a key named by a unit of time (HOUR, MIN) sets, when its own sentence says so
+    ("HOUR key - sets the start time in TIMER mode"): the setting is that time, the key only
+    its step; "" when the key is no such key or no sentence names it."""
+    if key.token not in _UNIT_KEYS:
+        return ""
+    for i in mentions:
+        m = _SETS_TIME_RE.search(b.manual.units[i].text)
+        if m:
+            return "_".join(words(m.group(1)))
+    return ""
 
 
 def turns(actions: list[ActionInfo]) -> tuple[list[str], list[str]]:
@@ -247,6 +269,19 @@ def numeric_list(values: list[str]) -> bool:
     return all(
         re.fullmatch(r"\d+(?:[.,]\d+)?\s*[a-z%°]*", v.strip().lower()) for v in values
     ) or clock_list(values)
+
+
+def shown_prefix(values: list[str]) -> str:
+    """The letter or two every item of a list prints before its amount ("r0°, r90°, r180°":
+    an angle the display writes after an r); "" when the items differ in it or carry no unit
+    after the number (P1, P2 … are named programmes, not amounts)."""
+    found = [
+        re.fullmatch(r"([A-Za-z]{1,2})(\d+(?:[.,]\d+)?)\s*([°%]\w*)", v.strip()) for v in values
+    ]
+    if len(values) < 2 or not all(found):
+        return ""
+    prefixes = {m.group(1) for m in found if m}
+    return prefixes.pop() if len(prefixes) == 1 else ""
 
 
 def clock_list(values: list[str]) -> bool:

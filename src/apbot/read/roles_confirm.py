@@ -42,6 +42,35 @@ def confirmed_noun(b: Builder, key: ActionInfo) -> str:
         m = _CONFIRMS.search(tail)
         if m and m.group(1).lower() not in {"the", "your", "this", "key"}:
             return m.group(1).lower()
+    return keypad_noun(b, key) if ends_entry(b, key) else ""
+
+
+# the number keys named in a legend: "Number keys 0-9 and OK - design number", "0 – 9: the
+# programme number"
+KEYPAD_RE = re.compile(
+    r"(?:number|digit|numeric|numeral)\s+(?:keys|buttons|pad)|keypad"
+    r"|(?<![\d.,])0\s*(?:-|–|to)\s*9(?![\d.,])",
+    re.IGNORECASE,
+)
+_NOUN_NUMBER_RE = re.compile(r"\b([a-z]{3,})\s+(?:number|no\.)(?!\s+keys)\b", re.IGNORECASE)
+_NOT_NOUNS = frozenset({"the", "your", "this", "key", "keys", "phone", "serial", "model", "part"})
+
+
+def keypad_noun(b: Builder, key: ActionInfo) -> str:
+    """The noun of the number the number keys type, when a legend row naming the number keys
+    and this key says it ("Number keys 0-9 and OK - design number"); "" when none does."""
+    if key.skill != "press" or len(key.controls) != 1 or key.controls[0] not in b.labels:
+        return ""
+    label = b.labels[key.controls[0]].text
+    if not label:
+        return ""
+    named = re.compile(rf"(?<!\w){re.escape(label)}(?!\w)")
+    for unit in b.manual.units:
+        if not (KEYPAD_RE.search(unit.text) and named.search(unit.text)):
+            continue
+        for m in _NOUN_NUMBER_RE.finditer(unit.text):
+            if m.group(1).lower() not in _NOT_NOUNS:
+                return m.group(1).lower()
     return ""
 
 
@@ -59,10 +88,33 @@ def ends_entry(b: Builder, key: ActionInfo) -> bool:
     """Whether the key's own legend says it closes an entry without naming a setting: such a key
     is the last step of what the number keys type, never a setting the number keys type."""
     # a legend row, also a table's ("⑥ | OK | Confirms an entry."): its number dropped
+    if _pressed_to_end(b, key):
+        return True
     for tail in _legend_tails(b, key, r"^[^A-Za-z]*"):
         # the legend must BEGIN with the closing verb: "TIMER | Sets the time …, then press
         # TIMER again to confirm the entry" is a setting key, not a bare OK
         legend = re.sub(r"^[\s|:.\-–—=]*", "", tail)
         if _ENDS_ENTRY.match(_USED_TO.sub("", legend)):
+            return True
+    return False
+
+
+# "Press OK to close the entry.": a step whose only job for the key is to end what was typed
+_PRESS_TO_END = r"^\W*(?:\d+\.\s*)?(?:press|touch|push)\s+{label}\s+to\s+"
+
+
+def _pressed_to_end(b: Builder, key: ActionInfo) -> bool:
+    """Whether a sentence tells to press the key to end the entry ("Press OK to close the
+    entry."), the key having no legend of its own that says otherwise."""
+    if key.skill != "press" or len(key.controls) != 1 or key.controls[0] not in b.labels:
+        return False
+    label = b.labels[key.controls[0]]
+    if not label.text:
+        return False
+    lead = re.compile(_PRESS_TO_END.format(label=re.escape(label.text)), re.IGNORECASE)
+    for i in label.mentions:
+        text = b.manual.units[i].text
+        m = lead.match(text)
+        if m and _ENDS_ENTRY.match(text[m.end() :]):
             return True
     return False

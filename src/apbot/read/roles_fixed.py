@@ -8,7 +8,8 @@ import re
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.evidence_checks import SENTENCE_END_RE
-from apbot.read.labels import words
+from apbot.read.labels import squash, words
+from apbot.read.power_starts import power_starts_work
 from apbot.read.roles_common import (
     NUMERIC_WORDS,
     dedupe,
@@ -51,12 +52,23 @@ def assign_power(b: Builder) -> list[str]:
     power_token: str | None = next(
         (t for t in ("on_off", "onoff", "power_on_off", "standby") if t in tokens), None
     )
+    if power_token is None:  # a key printed I / O or ON/OFF, whatever its action calls it
+        power_token = next(
+            (t for t in sorted(tokens) if t in b.labels and _printed_power(b.labels[t].text)),
+            None,
+        )
     if power_token is None and "power" in tokens:
         ctx = " ".join(b.manual.units[i].text for i in b.context(["power"]))
         if not re.search(r"\b(?:level|watt|output)\b", ctx, re.I) or re.search(
             r"\b(?:switch|turn)\w*\b[^.]*\b(?:on|off)\b", ctx, re.I
         ):
             power_token = "power"
+    if (
+        power_token is not None
+        and all(power_starts_work(b, i) for i in by_token[power_token] if i.skill == "press")
+        and any(i.skill == "press" for i in by_token[power_token])
+    ):
+        return []  # "press ⏻. The brush starts": the key starts the work (assign_running)
     var = ""
     if power_token is None:  # a key held to switch the appliance on and off ("M: hold 2 s")
         for info in infos:
@@ -116,6 +128,11 @@ def assign_power(b: Builder) -> list[str]:
             held, at = standby_hold
             _only_in_standby(b, b.guards[-1], held, label_of(b, power_token or ""), at)
     return power_actions
+
+
+def _printed_power(label: str) -> bool:
+    """Whether a key's printing is the on/off mark itself ("I / O", "ON/OFF")."""
+    return "/" in label and squash(label) in ("io", "onoff")
 
 
 def assign_locks(b: Builder, done: set[str]) -> list[str]:
@@ -267,6 +284,8 @@ def assign_running(
         starts = [i for i in infos if i.name not in done and held_start(b, i) is not None][:1]
     if not starts and not stops:  # "Thumb wheel: turn to choose …; push (click) to start or stop"
         starts = [i for i in infos if i.name not in done and pushed_start(b, i) is not None][:1]
+    if not starts and not stops:  # "then press ⏻. The brush starts": no START, ⏻ starts it
+        starts = [i for i in infos if i.name not in done and power_starts_work(b, i)][:1]
     if starts or stops:
         var = b.unique("running", b.variables)
         b.variables[var] = {"type": "discrete", "values": ["off", "on"], "label": "RUN"}

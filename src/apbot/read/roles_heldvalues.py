@@ -87,3 +87,26 @@ def _said_with(b: Builder, at: int, label: str) -> str:
         said.insert(0, before.text)
         k -= 1
     return " ".join(said)
+
+
+def list_of_earlier_key(b: Builder, key: ActionInfo, at: int | None) -> bool:
+    """Whether the list at unit ``at`` belongs to another key told just before it: a line naming
+    no key, whose nearest key sentence above it in its section names another key only, while
+    this key is named in that section only below the list ("ROTATE turns the design … r0° →
+    r90° … MIRROR flips it": under "Rotating and mirroring" the angles are ROTATE's)."""
+    if at is None or len(key.controls) != 1 or key.controls[0] not in b.labels:
+        return False
+    units = b.manual.units
+    heading = units[at].heading
+    named: dict[int, set[str]] = {}
+    for token, label in b.labels.items():
+        for i in label.mentions:
+            if units[i].heading == heading:
+                named.setdefault(i, set()).add(token)
+    own = key.controls[0]
+    if at in named or not any(own in t for t in named.values()):
+        return False
+    if any(i < at and own in t for i, t in named.items()):
+        return False
+    before = [i for i in named if i < at]
+    return bool(before) and own not in named[max(before)]

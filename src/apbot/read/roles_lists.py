@@ -8,12 +8,14 @@ from typing import Any
 
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
+from apbot.read.evidence_lists import marked_start
 from apbot.read.labels import words
+from apbot.read.list_ellipsis import fill_ellipses
 from apbot.read.roles_common import clock_list, numeric_list, stepped_noun, token_of
 from apbot.read.shapes import Evidence, _fits, _next_table_column
 from apbot.read.text import Unit
 from apbot.read.values import find_ranges, find_step
-from apbot.read.values_labels import seconds_said
+from apbot.read.values_labels import seconds_said, whole_minutes_said
 from apbot.read.values_tails import gaps
 
 LIST_WORDS = {"left", "right", "prev", "previous", "next", "forward"}
@@ -161,7 +163,12 @@ def listed_min_sec(b: Builder, key: ActionInfo, at: int | None) -> bool:
     units = b.manual.units
     label = b.labels.get(key.controls[0])
     about = [units[i].text for i in (label.mentions if label else [])]
-    return seconds_said([u.text for u in units[at : at + 3]], about)
+    if seconds_said([u.text for u in units[at : at + 3]], about):
+        return True
+    # "The session time is 1 to 10 minutes … Each press adds one minute": 10:00 is ten minutes
+    section = [u.text for u in units[max(0, at - 6) : at + 3] if u.heading == units[at].heading]
+    figures = re.findall(r"(?<![\d:])\d{1,2}:\d{2}(?![\d:])", units[at].text)
+    return whole_minutes_said(figures, section + about)
 
 
 def list_evidence(ev: Evidence, min_sec: bool = False, said: str = "") -> Evidence:
@@ -179,20 +186,31 @@ def list_evidence(ev: Evidence, min_sec: bool = False, said: str = "") -> Eviden
 
     nums = _nums(ev.values or [])
     unit = unit_name(re.sub(r"[\d.,\s]", "", (ev.values or [""])[-1]))
+    scale = 60 if min_sec else 3600
+
+    def value_of(figure: str) -> float:
+        if ":" not in figure:
+            return float(figure.replace(",", "."))
+        first, second = figure.split(":")
+        return int(first) * scale + int(second) * scale // 60
+
     if clock_list(ev.values or []):  # h:mm (or m:ss): in seconds
-        scale = 60 if min_sec else 3600
-        nums = sorted(
-            {
-                int(h) * scale + int(m) * scale // 60
-                for h, m in (v.split(":") for v in ev.values or [])
-            }
-        )
+        nums = sorted({value_of(v) for v in ev.values or []})
         unit = "s"
+    if clock_list(ev.values or []) or not any(":" in v for v in ev.values or []):
+        nums = fill_ellipses(nums, said, value_of)  # "3:00 … 9:00": 4:00 to 8:00 left out
     pieces = gap_pieces(nums, unit)
+    initial = ev.initial
+    if (
+        isinstance(initial, str)
+        and re.fullmatch(r"\d{1,2}:\d{2}|\d+(?:[.,]\d+)?", initial)
+        and marked_start(initial, said)
+    ):
+        initial = (value_of(initial), unit)  # "600 (start setting)": a number, as ranges give it
     return Evidence(
         ranges=pieces or [list_range(ev.values or [])],
         range_at=ev.values_at,
-        initial=ev.initial,
+        initial=initial,
         initial_at=ev.initial_at,
     )
 

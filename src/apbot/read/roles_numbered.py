@@ -9,7 +9,7 @@ import re
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.labels import words
-from apbot.read.roles_confirm import confirmed_noun
+from apbot.read.roles_confirm import KEYPAD_RE, confirmed_noun
 from apbot.read.values import find_ranges
 
 # the head of a chart's number column: "No.", "Nr", "#", "Number"
@@ -49,6 +49,8 @@ def said_numbers(b: Builder, noun: str) -> tuple[int, int, int] | None:
         if unit.cells or not _same_noun(unit.text, noun):
             continue
         for r in find_ranges(unit.text):
+            if (r.low, r.high) == (0, 9) and KEYPAD_RE.search(unit.text):
+                continue  # "Number keys 0-9 and OK - motif number": the keys, not the range
             if not r.unit and r.low >= 0 and r.high > r.low and float(r.low).is_integer():
                 return int(r.low), int(r.high), i
     return None

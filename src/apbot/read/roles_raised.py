@@ -73,7 +73,7 @@ def raised_quantity(b: Builder, tokens: list[str]) -> tuple[str, int] | None:
                 ):
                     return None  # "raises the delay or, on BAKE only, the bake time": two
                 noun = quantity_noun(m.group("noun"))
-                if noun and not _an_amount(noun, rest):
+                if noun and not (_an_amount(noun, rest) or _set_section(b, noun)):
                     noun = ""  # "raise the footrest", "lower the noise": no amount of the pair
                 if noun:
                     found.setdefault(noun, i)
@@ -99,6 +99,16 @@ def _an_amount(noun: str, clause: str) -> bool:
     if any(w.endswith(_AMOUNT_ENDINGS) and len(w) >= 6 for w in parts):
         return True
     return re.search(r"\d", re.split(r"[.;]", clause)[0]) is not None
+
+
+def _set_section(b: Builder, noun: str) -> bool:
+    """The manual gives the noun a section of its own for setting it ("Setting the target
+    pressure", "Set the goal"): an amount someone sets, though no number stands beside it."""
+    first = noun.split("_")[0]
+    heading = re.compile(
+        rf"^\W*(?:\d+(?:\.\d+)*\.?\s+)?set(?:ting)?\s+(?:the\s+|a\s+)?{first}\b", re.I
+    )
+    return any(heading.search(u.heading) for u in b.manual.units if u.heading)
 
 
 def _leads(before: str) -> bool:

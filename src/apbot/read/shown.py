@@ -29,7 +29,8 @@ _PATTERNS = [
 ]  # fmt: skip
 _ICON = re.compile(
     r"\b(?:the|a|an)?\s*([a-z]{3,12})\s+(?:icon|symbol)\b"
-    r"(?:\s*\(\s*\**([^\w\s()*]{1,3}|\*{1,3}|(?-i:[A-Z]{2}[A-Z0-9-]{0,10}))\**\s*\))?",
+    r"(?:\s*\(\s*\**([^\w\s()*]{1,3}|\*{1,3}|(?-i:[A-Z]{2}[A-Z0-9-]{0,10}))\**\s*\)"
+    r"|\s+([^\w\s()*.,;:!?'\"|/-]{1,3})(?=\s|$))?",  # "the brushing symbol ≋ lights": the glyph
     re.IGNORECASE,
 )  # "the flame icon", "a padlock symbol", "the star symbol (*)": the glyph in brackets;
 # a lone capital "(A)" is a figure callout, not a glyph
@@ -58,7 +59,9 @@ def shown_words(text: str, keys: set[str] | None = None) -> list[str]:
                 out.append(word)
     for m in _ICON.finditer(text):
         word = m.group(1).lower()
-        if (
+        if m.group(3) and m.group(3) not in out:
+            out.append(m.group(3))  # the glyph printed right after the icon's name
+        elif (
             m.group(2)
             and m.group(2) not in out
             and (m.group(2).isupper() or not m.group(2).isalnum())

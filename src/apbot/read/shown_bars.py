@@ -32,7 +32,7 @@ def read_bar_shows(b: Builder) -> None:
     lines = b.manual.glyph_lines
     found: dict[str, tuple[list[str], dict[str, str], int]] = {}
     for var, spec in b.variables.items():
-        values = [str(v) for v in spec.get("values") or []] or _levels(spec)
+        values = [str(v) for v in spec.get("values") or _case_values(spec)] or _levels(spec)
         if spec.get("type") not in ("discrete", "numeric") or len(values) < 2 or spec.get("show"):
             continue
         if {v.lower() for v in values} <= {"on", "off"}:
@@ -68,6 +68,15 @@ def _shown_as_figure(lines: list[str], label: str) -> bool:
         return False
     row = re.compile(rf"^\s*{re.escape(label)}\s\d{{1,3}}\s{{2,}}[A-Za-z]")
     return any(row.match(line) for line in lines)
+
+
+def _case_values(spec: dict[str, Any]) -> list[str]:
+    """Every value a per-programme choice has in some programme, in the order first met
+    (intensity low / medium / high in one mode, low / medium in another)."""
+    if spec.get("type") != "discrete":
+        return []
+    cases = spec.get("cases") or {}
+    return list(dict.fromkeys(str(v) for c in cases.values() for v in c.get("values") or []))
 
 
 def _paired(lines: list[str], var: str, values: list[str]) -> tuple[dict[str, str], int]:

@@ -136,10 +136,19 @@ def default_marks(text: str) -> frozenset[str]:
     return _legend_marks(text)[0]
 
 
+# "Mirror lamp ⇋ (lit when …)": a symbol a legend names as a setting's lamp, which the display
+# then shows while the setting is on (``symbol_lamps``)
+_LAMP_SYMBOL_RE = re.compile(r"\b[A-Za-z]{3,}\s+(?:lamp|symbol|icon|indicator)\s+(\S)(?=\s)")
+
+
+def _lamp_symbols(text: str) -> set[str]:
+    return {m.group(1) for m in _LAMP_SYMBOL_RE.finditer(text)} & _symbols(text)
+
+
 def _clean_chars(text: str) -> str:
     """Drop control characters and pictographs; keep letters, digits, punctuation, ▲▼ and °,
     and the symbols a legend says mark a default."""
-    keep = _KEEP | _legend_marks(text)[1] | set(legend_meanings(text))
+    keep = _KEEP | _legend_marks(text)[1] | set(legend_meanings(text)) | _lamp_symbols(text)
 
     def one(match: re.Match[str]) -> str:
         ch = match.group(0)

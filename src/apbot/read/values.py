@@ -54,7 +54,10 @@ STEP_RE = re.compile(
     rf"(?:in\s+({NUM})\s*-?\s*({UNIT})?\s*(?:steps|increments|stages|units)(?!\s+of\b)"
     rf"|(?:steps?|increments?|units?)\s+of\s+({NUM})\s*({UNIT})?"
     rf"|(?:each|every)\s+(?:press|touch|turn|click|tap|step)[^.;]*?"
-    rf"(?:adds?|by|changes?[^.;]*?by|raises?|moves?[^.;]*?by)\s+(?:an?\s+|another\s+)?({NUM})?\s*({UNIT})(?!\w))",
+    rf"(?:adds?|by|changes?[^.;]*?by|raises?|moves?[^.;]*?by)\s+(?:an?\s+|another\s+)?({NUM})?\s*({UNIT})(?!\w)"
+    # "Each press moves the start time one hour later": the step, said as how far it moves
+    rf"|(?:each|every)\s+(?:press|touch|turn|click|tap)\s+moves?\s+(?:the\s+|it\s+)?(?:[a-z]+\s+){{0,2}}?"
+    rf"({NUM})\s*({UNIT})\s+(?:later|earlier|forward|ahead|back)\b)",
     re.IGNORECASE,
 )
 
@@ -412,7 +415,7 @@ def find_step(text: str) -> tuple[float, str] | None:
     groups = m.groups()
     if m.group(0).lower().endswith(("units", "stages")) and not groups[1]:
         return None  # "in half-hour units" is a step, "sold in 2 units", "in two stages" not
-    for i in (0, 2, 4):
+    for i in (0, 2, 4, 6):
         raw, unit = groups[i], groups[i + 1]
         if raw is None and i == 4 and unit:
             raw = "1"
@@ -438,7 +441,9 @@ def find_initial(text: str) -> tuple[float, str] | None:
 
 
 ON_OFF_RE = re.compile(
-    r"\bon\s*(?:/|or|and)\s*off\b|\boff\s*(?:/|or|and)\s*on\b(?!\s+again\b)|\btoggles?\b"
+    # ("off / on / flashing", "on / off / auto": a third state makes it a selector)
+    r"\bon\s*(?:/|or|and)\s*off\b(?!\s*/\s*\w)|\boff\s*(?:/|or|and)\s*on\b(?!\s+again\b)(?!\s*/\s*\w)"
+    r"|\btoggles?\b"
     r"|\b(?:enable|disable|activate|deactivate)s?\b[^.]*\b(?:or|and|/)\b"
     r"|\bagain to (?:switch|turn|cancel|deactivate|disable)\b"
     # ("kept when the sealer is switched off and on again": the appliance's power, no toggle)

@@ -79,3 +79,31 @@ def clock_tops(text: str) -> list[tuple[int, int, bool]]:
         if second < 60:
             out.append((clock_seconds(figure, min_sec), m.start(), min_sec))
     return out
+
+
+# a clock setting told in whole minutes: "adds one minute", "in 1-minute steps", "one minute per
+# press", or its span "1 to 10 minutes" — the figures "10:00", "1:00" it shows are then minutes
+# and seconds (an h:mm setting steps by minutes as 0:01, never as 1:00)
+_MINUTE_STEP_RE = re.compile(
+    r"\b(?:adds?|steps?|moves?|increases?|by|of)\b[^.;\d]{0,20}\b(?:one|a|1)[- ]minute\b"
+    r"|\b(?:one|1)[- ]minute\s+(?:steps?|increments?|per\s+press)\b",
+    re.IGNORECASE,
+)
+_MINUTE_SPAN_RE = re.compile(
+    r"\b\d{1,2}\s*(?:to|-|–|…)\s*(\d{1,2})\s*(?:whole\s+)?(?:minutes?|mins?)\b", re.IGNORECASE
+)
+_HOURS_RE = re.compile(r"\b(?:hours?|hrs?)\b|\d\s*h\b", re.IGNORECASE)
+
+
+def whole_minutes_said(figures: list[str], texts: list[str]) -> bool:
+    """Whether clock figures that all end in ":00" are minutes: the texts about the setting
+    step it by one minute or span it in minutes up to the largest figure, and none of them
+    speaks of hours."""
+    firsts = [int(f.split(":")[0]) for f in figures if re.fullmatch(r"\d{1,2}:00", f.strip())]
+    if not firsts or len(firsts) != len(figures) or any(_HOURS_RE.search(t) for t in texts):
+        return False
+    return any(
+        _MINUTE_STEP_RE.search(t)
+        or any(int(m.group(1)) == max(firsts) for m in _MINUTE_SPAN_RE.finditer(t))
+        for t in texts
+    )

@@ -1,0 +1,55 @@
+"""A lamp drawn as a symbol and named for its setting: "Mirror lamp ⇋ (lit when the design is
+mirrored)", "the ❄ symbol of EXTRA COLD".
+
+A panel often lights a small symbol for an on/off setting instead of printing a word, and the
+legend gives the setting's name, "lamp" (or symbol, icon, indicator) and the symbol. The symbol
+is then what the display shows while the setting is on; without it the agent reads the setting
+as unreadable and keeps pressing its key.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Sequence
+
+from apbot.read.text import Unit
+
+_GLYPH = r"([^\w\s()\[\]{}.,;:!?'\"/\\|*-]{1,3})"
+_NOUNS = r"(?:lamp|light|symbol|icon|indicator|LED)"
+
+
+def symbol_lamp(units: Sequence[Unit], label: str) -> tuple[str, int] | None:
+    """The symbol of the setting's own lamp ("Mirror lamp ⇋" for MIRROR) and where it is said,
+    or None."""
+    if not label or not re.search(r"[A-Za-z]{3}", label):
+        return None
+    name = r"\s+".join(re.escape(w) for w in label.split())
+    pattern = re.compile(rf"(?<![\w]){name}\s+{_NOUNS}\s+{_GLYPH}(?=\s|$)", re.IGNORECASE)
+    for i, unit in enumerate(units):
+        m = pattern.search(unit.text)
+        if m:
+            return m.group(1), i
+    return None
+
+
+# "The PACER lamp is lit when the pacer is on (factory setting)": a lamp printed with the
+# setting's name, lit while it is on; the bracket after "on" says it starts on
+_WORD_LAMP = (
+    r"(?<![\w])(?P<word>[A-Z][A-Z0-9+-]{1,11})\s+(?:lamp|light|indicator|LED)\s+(?:is\s+)?"
+    r"(?:lit|lights(?:\s+up)?|on)\s+(?:when|while)\s+(?:the\s+)?{name}\s+is\s+on\b"
+    r"(?P<start>\s*\(\s*(?:factory|default|start)[^)]*\))?"
+)
+
+
+def word_lamp(units: Sequence[Unit], name: str) -> tuple[str, bool, int] | None:
+    """The word of the setting's own lamp, lit while it is on, whether the manual says it
+    starts on, and where; None when no sentence says so."""
+    if not re.fullmatch(r"[a-z][a-z ]{2,30}", name):
+        return None
+    noun = r"\s+".join(re.escape(w) for w in name.split())
+    pattern = re.compile(_WORD_LAMP.replace("{name}", noun), re.IGNORECASE)
+    for i, unit in enumerate(units):
+        m = pattern.search(unit.text)
+        if m and m.group("word").isupper() and m.group("word").lower().startswith(name[:4]):
+            return m.group("word"), bool(m.group("start")), i
+    return None
