@@ -6,7 +6,9 @@ whose every procedure first puts a mode to one value (CONVECTION, then the tempe
 Nothing is guessed: when two cases admit the value, or the mode starts in that case anyway (what
 the panel shows before anything is pressed), the mode is left as the user left it. Nor is it
 set for a setting that other cases merely lack (MODE: POWER / TEMPERATURE, each with its own
-setting): such a mode chooses what the keys adjust, and saying the setting is choosing it."""
+setting): such a mode chooses what the keys adjust, and saying the setting is choosing it —
+unless the setting's case is the only one of three or more ways of working with a setting at
+all (ALWAYS ON / DUSK TO DAWN / DUSK TIMER with its hours): then the setting asks for it."""
 
 from __future__ import annotations
 
@@ -35,8 +37,10 @@ def implied_cases(view: Model, goal: Goal) -> None:
         ]
         sizes = [_size(var, var.cases.get(str(case))) for case in mode.values]
         free = [case for case, size in zip(mode.values, sizes, strict=True) if size > 1]
-        if len(admitting) != 1 or free != admitting or 1 not in sizes:
-            continue  # adjusted in other cases too (a guess), or no case fixes it
+        if len(admitting) != 1 or free != admitting:
+            continue  # adjusted in other cases too (a guess)
+        if 1 not in sizes and not _way_of_working(view, parent, admitting[0]):
+            continue  # no case fixes it: the mode may only choose what the keys adjust
         if str(admitting[0]) == str(_starts_at(mode.var)):
             continue  # the panel is in that case before anything is pressed
         goal[parent] = admitting[0]
@@ -79,6 +83,22 @@ def _entered(earlier: list[Any], name: str) -> set[tuple[str, str]]:
         if effects and len(targets) == 1 and all(isinstance(e, GoTo) for e in effects):
             found.add((step.variable, targets.pop()))
     return found
+
+
+def _way_of_working(view: Model, parent: str, case: Any) -> bool:
+    """``case`` is the only one of three or more cases of mode ``parent`` with a setting of its
+    own (DUSK TIMER's hours beside ALWAYS ON and DUSK TO DAWN): the mode is a way of working,
+    and saying that setting asks for it. Not a mode whose cases each have their own setting
+    (POWER / TEMPERATURE: it chooses what the keys adjust), nor a two-way AUTO / MAN whose
+    other case only works the setting out itself (saying the hours is choosing them)."""
+    values = view.infos[parent].values
+    dependents = [i.var for i in view.infos.values() if i.var.depends_on == parent]
+    owning = [
+        value
+        for value in values
+        if any(_size(var, (var.cases or {}).get(str(value))) > 0 for var in dependents)
+    ]
+    return len(values) >= 3 and owning == [case]
 
 
 def _size(var: Any, spec: Any) -> int:
