@@ -61,3 +61,39 @@ def test_a_two_way_auto_or_manual_mode_is_left_alone() -> None:
     )
     goal = parse_instruction(two_way, "Run for 3 hours at level 2")
     assert goal["hours"] == 3 and "mode" not in goal
+
+
+TAP = """
+appliance: {id: tap_9, category: water_tap, name: "Fonta WT-9 water tap", brand: F}
+controls:
+  - {id: water_button, kind: button, label: "WATER"}
+  - {id: temp_button, kind: button, label: "TEMP"}
+variables:
+  water:
+    type: discrete
+    values: [room, cold, hot]
+  temperature:
+    type: numeric
+    unit: "°C"
+    depends_on: water
+    wrap: true
+    label: "TEMP"
+    cases:
+      hot: {ranges: [[50, 90, 10]], initial: 70}
+      cold: {ranges: [[4, 10, 3]], initial: 7}
+actions:
+  press_water: {control: water_button}
+  press_temp: {control: temp_button}
+features:
+  water:
+    - {actions: [press_water], variable: water, effect: next}
+  temperature:
+    - {actions: [press_temp], variable: temperature, effect: next}
+display:
+  idle: "{water}"
+"""
+
+
+def test_a_value_only_one_case_has_tells_the_case() -> None:
+    goal = parse_instruction(loads_model(TAP), "A glass at 60 °C")
+    assert goal == {"temperature": 60, "water": "hot"}

@@ -37,9 +37,10 @@ def implied_cases(view: Model, goal: Goal) -> None:
         ]
         sizes = [_size(var, var.cases.get(str(case))) for case in mode.values]
         free = [case for case, size in zip(mode.values, sizes, strict=True) if size > 1]
-        if len(admitting) != 1 or free != admitting:
+        apart = len(free) > 1 and _apart(var, mode.values)  # the value tells the case
+        if len(admitting) != 1 or (free != admitting and not apart):
             continue  # adjusted in other cases too (a guess)
-        if 1 not in sizes and not _way_of_working(view, parent, admitting[0]):
+        if 1 not in sizes and not (apart or _way_of_working(view, parent, admitting[0])):
             continue  # no case fixes it: the mode may only choose what the keys adjust
         if str(admitting[0]) == str(_starts_at(mode.var)):
             continue  # the panel is in that case before anything is pressed
@@ -83,6 +84,24 @@ def _entered(earlier: list[Any], name: str) -> set[tuple[str, str]]:
         if effects and len(targets) == 1 and all(isinstance(e, GoTo) for e in effects):
             found.add((step.variable, targets.pop()))
     return found
+
+
+def _apart(var: Any, cases: list[Any]) -> bool:
+    """Every case that has the setting gives it values no other case has (COLD 4-10 °C, HOT
+    45-100 °C): a value then tells the case, as a unit would."""
+    seen: set[str] = set()
+    for case in cases:
+        spec = (var.cases or {}).get(str(case))
+        if spec is None:
+            continue
+        try:
+            values = {str(v) for v in build_domain(var, spec).values}
+        except ValueError:
+            return False
+        if values & seen:
+            return False
+        seen |= values
+    return True
 
 
 def _way_of_working(view: Model, parent: str, case: Any) -> bool:
