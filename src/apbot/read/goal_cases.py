@@ -109,8 +109,12 @@ def _way_of_working(view: Model, parent: str, case: Any) -> bool:
     own (DUSK TIMER's hours beside ALWAYS ON and DUSK TO DAWN): the mode is a way of working,
     and saying that setting asks for it. Not a mode whose cases each have their own setting
     (POWER / TEMPERATURE: it chooses what the keys adjust), nor a two-way AUTO / MAN whose
-    other case only works the setting out itself (saying the hours is choosing them)."""
-    values = view.infos[parent].values
+    other case only works the setting out itself (saying the hours is choosing them), nor a
+    MANUAL case beside automatic ones (asked for only when the user says they set it)."""
+    mode = view.infos[parent]
+    if isinstance(mode.var, DiscreteVariable) and _manual(mode.var, case):
+        return False  # MANUAL beside automatic ways: set only when said by hand (set_by_hand)
+    values = mode.values
     dependents = [i.var for i in view.infos.values() if i.var.depends_on == parent]
     owning = [
         value
