@@ -66,3 +66,9 @@ def test_minutes_are_no_time_of_day() -> None:
     model = loads_model(POND)
     goal = parse_instruction(model, "Pause three minutes after each feed.", outside=[])
     assert "quiet_start_time" not in goal
+
+
+def test_every_n_hours_is_no_setting_counted_in_hours() -> None:
+    model = loads_model(POND.replace("quiet_length", "quiet_hours"))
+    goal = parse_instruction(model, "Flush the pump every two hours, and quiet on.", outside=[])
+    assert "quiet_hours" not in goal and goal.get("quiet") == "on"

@@ -10,7 +10,7 @@ from apbot.model.values import format_hms, preview
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_fit import fit, number_for
 from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab, repeat_for_a_length, said_before
-from apbot.read.goal_unitless import unitless_named
+from apbot.read.goal_unitless import unitless_duration, unitless_named
 from apbot.read.goal_values import name_words, unit_text, zone_case
 from apbot.read.goal_view import Goal, Model, VarInfo, domain_values, own_stems
 from apbot.read.goal_vocab import SPAN_ENDS, SPAN_STARTS, concept, stem
@@ -81,7 +81,9 @@ def assign_mentions(
             used.add(mi)
     for mi, mention in enumerate(mentions):
         if mi not in used:
-            unitless = unitless_named(view, text, mention, goal)
+            unitless = unitless_named(view, text, mention, goal) or unitless_duration(
+                view, text, mention, goal
+            )
             if unitless is not None:  # "fridge at 3 degrees", FRIDGE read without its unit
                 where[unitless] = mention.start
                 used.add(mi)

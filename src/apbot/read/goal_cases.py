@@ -6,7 +6,9 @@ whose every procedure first puts a mode to one value (CONVECTION, then the tempe
 Nothing is guessed: when two cases admit the value, or the mode starts in that case anyway (what
 the panel shows before anything is pressed), the mode is left as the user left it. Nor is it
 set for a setting that other cases merely lack (MODE: POWER / TEMPERATURE, each with its own
-setting): such a mode chooses what the keys adjust, and saying the setting is choosing it."""
+setting): such a mode chooses what the keys adjust, and saying the setting is choosing it —
+unless the setting's case is the only one of three or more ways of working with a setting at
+all (ALWAYS ON / DUSK TO DAWN / DUSK TIMER with its hours): then the setting asks for it."""
 
 from __future__ import annotations
 
@@ -35,8 +37,11 @@ def implied_cases(view: Model, goal: Goal) -> None:
         ]
         sizes = [_size(var, var.cases.get(str(case))) for case in mode.values]
         free = [case for case, size in zip(mode.values, sizes, strict=True) if size > 1]
-        if len(admitting) != 1 or free != admitting or 1 not in sizes:
-            continue  # adjusted in other cases too (a guess), or no case fixes it
+        apart = len(free) > 1 and _apart(var, mode.values)  # the value tells the case
+        if len(admitting) != 1 or (free != admitting and not apart):
+            continue  # adjusted in other cases too (a guess)
+        if 1 not in sizes and not (apart or _way_of_working(view, parent, admitting[0])):
+            continue  # no case fixes it: the mode may only choose what the keys adjust
         if str(admitting[0]) == str(_starts_at(mode.var)):
             continue  # the panel is in that case before anything is pressed
         goal[parent] = admitting[0]
@@ -79,6 +84,44 @@ def _entered(earlier: list[Any], name: str) -> set[tuple[str, str]]:
         if effects and len(targets) == 1 and all(isinstance(e, GoTo) for e in effects):
             found.add((step.variable, targets.pop()))
     return found
+
+
+def _apart(var: Any, cases: list[Any]) -> bool:
+    """Every case that has the setting gives it values no other case has (COLD 4-10 °C, HOT
+    45-100 °C): a value then tells the case, as a unit would."""
+    seen: set[str] = set()
+    for case in cases:
+        spec = (var.cases or {}).get(str(case))
+        if spec is None:
+            continue
+        try:
+            values = {str(v) for v in build_domain(var, spec).values}
+        except ValueError:
+            return False
+        if values & seen:
+            return False
+        seen |= values
+    return True
+
+
+def _way_of_working(view: Model, parent: str, case: Any) -> bool:
+    """``case`` is the only one of three or more cases of mode ``parent`` with a setting of its
+    own (DUSK TIMER's hours beside ALWAYS ON and DUSK TO DAWN): the mode is a way of working,
+    and saying that setting asks for it. Not a mode whose cases each have their own setting
+    (POWER / TEMPERATURE: it chooses what the keys adjust), nor a two-way AUTO / MAN whose
+    other case only works the setting out itself (saying the hours is choosing them), nor a
+    MANUAL case beside automatic ones (asked for only when the user says they set it)."""
+    mode = view.infos[parent]
+    if isinstance(mode.var, DiscreteVariable) and _manual(mode.var, case):
+        return False  # MANUAL beside automatic ways: set only when said by hand (set_by_hand)
+    values = mode.values
+    dependents = [i.var for i in view.infos.values() if i.var.depends_on == parent]
+    owning = [
+        value
+        for value in values
+        if any(_size(var, (var.cases or {}).get(str(value))) > 0 for var in dependents)
+    ]
+    return len(values) >= 3 and owning == [case]
 
 
 def _size(var: Any, spec: Any) -> int:

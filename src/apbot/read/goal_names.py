@@ -105,6 +105,10 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
                     end = turned  # "a relaxing auto massage": AUTO RELAX, its words turned round
             if _names_other(view, var, text, i, end):
                 continue  # "power level 8" is not the POWER mode
+            if len(stems) == 1 and _tail_of_other_name(view, var, text, i):
+                continue  # "auto-close after 2 minutes": the AUTO CLOSE setting, not CLOSED
+            if _by_itself(text, end):
+                continue  # "close itself after one minute": what it does on its own, later
             if len(stems) == 1 and _names_switch(view, var, text, i):
                 continue  # "switch the light on" is the LIGHT, not a light crust
             if len(stems) == 1 and _qualifies_other(view, var, text, end):
@@ -301,6 +305,34 @@ def _names_other(view: Model, var: str, text: Text, i: int, end: int) -> bool:
         return True
     key = text.concepts[k] if k < len(text.concepts) else ""
     return any(info.vocab.get(key, 0.0) for info in others)
+
+
+def _tail_of_other_name(view: Model, var: str, text: Text, i: int) -> bool:
+    """The word at i ends another setting's two-word name said just before it ("auto-close",
+    "AUTO CLOSE"), a word that is not this variable's own."""
+    k = i - 2 if text.word(i - 1) == "-" else i - 1
+    if k < 0 or view.infos[var].vocab.get(text.concepts[k], 0.0) > 0:
+        return False
+    pair = (text.concepts[k], text.concepts[i])
+    return any(
+        name != var and all(info.vocab.get(key, 0.0) >= 0.8 for key in pair)
+        for name, info in view.infos.items()
+    )
+
+
+_ITSELF = frozenset({"itself", "themselves", "automatically"})
+
+
+def _by_itself(text: Text, end: int) -> bool:
+    """A state the appliance is to reach on its own ("close itself after one minute", "close
+    the door by itself after five minutes"): a setting for later, not the state to set now."""
+    for k in range(end, end + 5):
+        word = text.word(k)
+        if word in CLAUSE_ENDS or word in ("", ",", "and"):
+            return False
+        if word in _ITSELF:
+            return True
+    return False
 
 
 def _match_at(

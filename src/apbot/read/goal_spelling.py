@@ -1,5 +1,6 @@
 """Spellings rewritten before the instruction is tokenised: a hyphenated compound the model
-writes as one word, fractions in words ("half a litre"), "half power"."""
+writes as one word, fractions in words ("half a litre"), "half power", and a number its speaker
+corrects at once ("speed 8 - no, make it seven": seven)."""
 
 from __future__ import annotations
 
@@ -20,8 +21,27 @@ def joined_compounds(view: Model, instruction: str) -> str:
         whole = match[1] + match[2]
         return whole if stem(whole) in words else match[0]
 
-    text = _HALF_POWER.sub("50% power", _HYPHEN_PAIR.sub(join, instruction))
+    text = _HALF_POWER.sub("50% power", _HYPHEN_PAIR.sub(join, _corrected(instruction)))
     return _fractions(text)
+
+
+_CORRECTED = re.compile(
+    r"\b\d+(?:\.\d+)?\s*(?:\.\.\.|…|-|–|—|,)\s*(?:no|sorry)\b(?:,?\s*wait\b)?[,!]?\s*"
+    r"(?:make (?:it|that)\s+)?(?=([a-z]+|\d))",
+    re.IGNORECASE,
+)
+
+
+def _corrected(text: str) -> str:
+    """A number taken back as soon as it is said ("at 190... no, make it 180", "speed 8 - no,
+    make it seven"): only the correction is meant, so the first number goes."""
+    from apbot.model.values import NUMBER_WORDS as WORDS
+
+    def drop(match: re.Match[str]) -> str:
+        said = match[1]
+        return "" if said.isdigit() or said.lower() in WORDS else match[0]
+
+    return _CORRECTED.sub(drop, text)
 
 
 _UNIT_WORDS = r"(litres?|liters?|kilos?|kg|pounds?|lbs?|cups?|hours?|minutes?)"

@@ -65,7 +65,9 @@ def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = Fals
     doing = [n for n in running if doing_name(n)]
     if family is None and doing:
         family = frozenset({stem(doing[0])})  # PRINTING is started by "print", no other verb
-    start = _says_start(text, family, _named_starts(view, text), settings=_setting_words(view))
+    start = _says_start(
+        text, family, _named_starts(view, text), settings=_setting_words(view), names=_names(view)
+    )
     if start is None and doing:
         start = _own_verb(text, doing[0])  # "… and print.", "don't print yet"
     started_by = _procedure_start(view, goal)
@@ -230,6 +232,17 @@ def _setting_words(view: Model) -> frozenset[str]:
     )
 
 
+def _names(view: Model) -> frozenset[str]:
+    """Every word that names a setting ("heat" of HEAT 3-9), generic ones too."""
+    return frozenset(
+        key
+        for info in view.infos.values()
+        if info.role == "setting"
+        for key, weight in info.vocab.items()
+        if weight >= 0.8
+    )
+
+
 def _running_now(view: Model, text: Text, goal: Goal) -> bool:
     """ "…, locked, and running": the appliance asked to be running (not "running low", nor
     "with the circulation running": a switch's state)."""
@@ -312,9 +325,12 @@ def _says_start(
     named: set[int] | frozenset[int] = frozenset(),
     verbs: bool = True,
     settings: frozenset[str] = frozenset(),
+    names: frozenset[str] = frozenset(),
 ) -> bool | None:
     """True for "start it", False for "don't start", None when the instruction says neither.
-    ``verbs``: an instruction that opens with a doing verb ("Bake a cake") says start too."""
+    ``verbs``: an instruction that opens with a doing verb ("Bake a cake") says start too —
+    not a setting's own word a bare number follows ("Granulated sugar, heat 7", "melt 42"):
+    that names the setting and its value."""
     joined = " " + " ".join(t.text for t in text.tokens) + " "
     negative = False
     positive = False
@@ -392,6 +408,8 @@ def _says_start(
         verb = text.stems[k2]
         if family is not None and verb not in family:
             continue
+        if _named_with_a_number(names, text, k2):
+            continue  # "heat 7": a setting named with its value, not a doing
         if verb in STRONG_VERBS:
             return True
         if verb in WEAK_VERBS and (k == 0 or text.word(k - 1) in (".", ";", "!")):
@@ -403,3 +421,14 @@ def _says_start(
         if verb in WEAK_VERBS and text.word(k2 + 1) == "me":
             return True  # "... and make me an espresso"
     return None
+
+
+def _named_with_a_number(names: frozenset[str], text: Text, k: int) -> bool:
+    """The word at k is a setting's own name and a bare number follows it, ending the clause
+    ("heat 7,", "melt 42,"): not "defrost 750 g" (an amount to work on)."""
+    number = text.word(k + 1).replace(".", "", 1)
+    return (
+        text.concepts[k] in names
+        and number.isdigit()
+        and text.word(k + 2) in CLAUSE_ENDS | {"", ",", "and"}
+    )

@@ -86,6 +86,8 @@ def switches(
                 continue  # "eco" names the ECO switch, not HOLIDAY that wears ECO's label
             if _part_after(text, k, info.vocab):
                 continue  # "clean the ventilation slots": a part of the body, not the switch
+            if _another_switchs_phrase(view, info, text, k):
+                continue  # "super freeze": SUPER FREEZE, not SUPER COOL that shares SUPER
             if _in_anothers_name(view, goal, info, text, k, where):
                 continue  # "the light timer to 3.5 minutes": LIGHT TIME's word, no LIGHT switch
             if shadowed and (text.stems[k] in own or key in own_concepts(info)):
@@ -356,3 +358,18 @@ def _switching_verb(view: Model, text: Text, k: int) -> bool:
     while text.word(j) in ("it", "the") or concept(text.word(j)) in view.appliance_words:
         j += 1
     return text.word(j) in ("on", "off", "up")
+
+
+def _another_switchs_phrase(view: Model, info: VarInfo, text: Text, k: int) -> bool:
+    """The word at k and the word after it are both another switch's own words, and the
+    second is not this one's: the two name that switch ("super freeze" beside SUPER COOL)."""
+    here, after = text.concepts[k], text.concepts[k + 1] if k + 1 < len(text.concepts) else ""
+    if not after or info.vocab.get(after, 0.0) > 0:
+        return False
+    return any(
+        other is not info
+        and other.role == "switch"
+        and other.vocab.get(here, 0.0) >= 0.8
+        and other.vocab.get(after, 0.0) >= 0.8
+        for other in view.infos.values()
+    )

@@ -297,13 +297,14 @@ def said_before(text: Text, k: int, word: str, reach: int = 4) -> bool:
     return False
 
 
-_LENGTH_WORDS = frozenset({"length", "duration", "long"})
+_LENGTH_WORDS = frozenset({"length", "duration", "long", "hours", "minutes", "time"})
 
 
 def repeat_for_a_length(text: Text, mention: Mention, info: VarInfo) -> bool:
     """A duration said as how often something comes round ("every two hours", "each 6 h") beside
-    a setting named for how long something lasts (a LENGTH, a DURATION): not what it asks, unless
-    the setting's own words stand right there (an interval setting may take it)."""
+    a setting named for how long something lasts (a LENGTH, a DURATION, SLEEP HOURS, RUN TIME): not
+    what it asks, unless the setting's own words stand right there (an interval setting may take
+    it)."""
     if mention.kind != "duration" or text.word(mention.start - 1) not in ("every", "each"):
         return False
     return bool(set(info.name.split("_")) & _LENGTH_WORDS)

@@ -6,17 +6,21 @@ and no setting takes a temperature, so the goal lost the fridge altogether. A se
 known kind (no unit, none guessed from its name) named right beside the quantity takes its
 number — only when no open setting has the quantity's kind (that one would be meant) and the
 number is one of the setting's values.
+
+So with a length of time: a number setting without a unit whose own name calls it a time or a
+duration (SESSION TIME 1-10, shown "5:00") takes a duration said without naming it ("ten
+minutes at speed 15"), as the number said, when no setting has a unit of time to take it.
 """
 
 from __future__ import annotations
 
 from typing import Any
 
-from apbot.model.schema import DiscreteVariable, NumericVariable
+from apbot.model.schema import DiscreteVariable, NumericVariable, TimeVariable
 from apbot.read.goal_text import Text, near_vocab
-from apbot.read.goal_values import bare_number, unit_text
+from apbot.read.goal_values import bare_number, name_words, unit_text
 from apbot.read.goal_view import Goal, Model, VarInfo, domain_values
-from apbot.read.numbers import Mention
+from apbot.read.numbers import TIME_UNITS, Mention
 
 _NAMED = 0.3
 """How strongly the words beside the quantity must name the setting: an own word of it within
@@ -68,3 +72,41 @@ def _value(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
         if number is not None and abs(number - mention.value) < 1e-6:
             return value
     return None
+
+
+_TIME_NAMES = frozenset({"time", "duration"})
+
+
+def unitless_duration(view: Model, text: Text, mention: Mention, goal: Goal) -> str | None:
+    """A duration for the one open number setting named a time but read without a unit (set in
+    ``goal``, the number as said: "five minutes" is 5), or None."""
+    unit = mention.unit or text.word(mention.end - 1)  # "ten minutes": the word said
+    if mention.kind != "duration" or unit.casefold() not in TIME_UNITS:
+        return None
+    open_settings = [
+        info for name, info in view.infos.items() if info.role == "setting" and name not in goal
+    ]
+    if any(isinstance(i.var, TimeVariable) or i.dimension == "time" for i in open_settings):
+        return None
+    said = mention.value / _seconds_per(unit)
+    fits = [
+        (info, value)
+        for info in open_settings
+        if _of_no_kind(info) and isinstance(info.var, NumericVariable) and _named_a_time(info)
+        for value in domain_values(view, info, goal)
+        if abs(float(value) - said) < 1e-6
+    ]
+    if len(fits) != 1:
+        return None
+    info, value = fits[0]
+    goal[info.name] = value
+    return info.name
+
+
+def _named_a_time(info: VarInfo) -> bool:
+    words = name_words(info.var.label or "") + name_words(info.name)
+    return any(word.casefold() in _TIME_NAMES for word in words)
+
+
+def _seconds_per(unit: str) -> float:
+    return float(TIME_UNITS.get(unit.casefold(), 1))

@@ -212,10 +212,13 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
             info.timing = "at"  # no clock beside it, yet a dial of the day's hours
     for info in infos.values():
         if info.timing in ("duration", "delay") and (
-            isinstance(info.var, TimeVariable) or info.dimension == "time"
+            isinstance(info.var, TimeVariable)
+            or info.dimension == "time"
+            or quantity_dimensions(info.values) == {"time"}
         ):
             words = set(name_words(f"{info.name} {info.var.label or ''}".casefold()))
-            info.turns = "off" if "off" in words else "on" if "on" in words else None
+            # a SLEEP timer lets the appliance go to sleep: off at its end
+            info.turns = "off" if words & {"off", "sleep"} else "on" if "on" in words else None
     phrases = value_phrases(model, infos)
     start_values = start_values_of(model, infos)
     appliance = {concept(w) for w in name_words(appliance_said(model))}

@@ -39,7 +39,7 @@ class Mention:
     zero_led: bool = False  # written with a leading zero ("cone 06"): not the same code as 6
 
 
-_TIME_UNITS = {
+TIME_UNITS = {
     "s": 1,
     "sec": 1,
     "secs": 1,
@@ -259,8 +259,8 @@ def _time_unit(tokens: list[Token], k: int) -> tuple[int, int] | None:
     if w == "-":
         used = 1
         w = _word(tokens, k + 1)
-    if w in _TIME_UNITS:
-        return _TIME_UNITS[w], used + 1
+    if w in TIME_UNITS:
+        return TIME_UNITS[w], used + 1
     return None
 
 
@@ -430,7 +430,7 @@ def _unit_at(tokens: list[Token], j: int) -> tuple[str, int] | None:
         w = _word(tokens, j + 1)
     if w in ("°", "degrees", "degree", "deg"):
         return w, used + 1
-    if w in _TIME_UNITS:
+    if w in TIME_UNITS:
         return None
     if w in ("level", "levels", "lvl", "cup", "cups", "slice", "slices", "piece", "pieces"):
         return None  # counts are read as bare numbers
