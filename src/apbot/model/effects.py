@@ -197,7 +197,7 @@ def typed_lengths(magnitudes: tuple[float, ...], entry: Entry) -> tuple[int | No
     return _typed_lengths(magnitudes, entry.format, entry.digits())
 
 
-@lru_cache(maxsize=512)
+@lru_cache(maxsize=64)  # a day in seconds keeps ~3.5 MB alive: few entries
 def _typed_lengths(magnitudes: tuple[float, ...], fmt: str, width: int) -> tuple[int | None, ...]:
     return tuple(
         None if (text := _entry_text(m, fmt, width)) is None else len(text) for m in magnitudes

@@ -152,10 +152,12 @@ def _printed_after_noun(manual: Manual, token_words: list[str]) -> tuple[str, in
     the token only begins (MAINTENANCE for ``main``)."""
     name = r"\s+".join(re.escape(w) for w in token_words)
     nouns = "switch|key|button|knob|dial|selector"
-    pattern = re.compile(rf"\b{name}\s+(?:{nouns})\s+{_PRINTED}", re.IGNORECASE)
+    # the words in any case, the printing in capitals as printed: "hold the timer button 3
+    # seconds" prints no "3", and "the power button on the left" no "ON"
+    pattern = re.compile(rf"\b(?i:{name}\s+(?:{nouns}))\s+{_PRINTED}")
     for unit in manual.units:
         m = pattern.search(unit.text)
-        if m and (m.group(1).isupper() or not m.group(1).isalpha()):
+        if m and (m.group(1).isupper() or "⏻" in m.group(1)):
             return m.group(1), unit.line
     return None
 

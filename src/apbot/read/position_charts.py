@@ -18,7 +18,9 @@ from apbot.read.build import Builder
 from apbot.read.labels import words
 from apbot.read.values import gap_pieces, number
 
-_POSITION_HEAD = re.compile(r"^\W*(?:position|pos\.?|setting|step|no\.?|number)\W*$", re.I)
+_POSITION_HEAD = re.compile(
+    r"^\W*(?:position|pos\.?)\W*$", re.I
+)  # not "Setting", "No.": a row number
 _AMOUNT = re.compile(r"^\s*(\d+(?:[.,]\d+)?)\s*([A-Za-z%°][\w°/%]{0,4})\s*$")
 _CODE = re.compile(r"^\s*([A-Za-z]{1,3}-?\d{1,3})\s*$")
 

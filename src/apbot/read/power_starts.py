@@ -19,7 +19,15 @@ from apbot.read.shapes import STOP_WORDS
 
 _STARTS_RE = re.compile(r"\b(?:starts|begins|starts running|runs)\b", re.IGNORECASE)
 _SWITCHED_ON_RE = re.compile(
-    r"\b(?:switch(?:es|ed)?|turn(?:s|ed)?)\s+(?:it\s+|the\s+\w+\s+)?on\b|\bswitch(?:es)?\s+on\b",
+    r"\b(?:switch(?:es|ed)?|turn(?:s|ed)?)\s+(?:it\s+|the\s+(?:[\w-]+\s+){1,3})?on\b"
+    r"|\bswitch(?:es)?\s+on\b|\bpower(?:s|ed)?\s+(?:it\s+)?(?:on|up)\b",
+    re.IGNORECASE,
+)
+# "SPEED and OSC work only while the fan is running": the other keys wait for the power, as a
+# power switch's guard says; a start/stop key leaves them free while stopped
+_ONLY_WHILE_ON_RE = re.compile(
+    r"\bonly\s+(?:while|when|if|once)\s+(?:the\s+)?(?:[\w-]+\s+){0,3}(?:is\s+)?"
+    r"(?:running|on|switched\s+on|turned\s+on|operating|working)\b",
     re.IGNORECASE,
 )
 
@@ -42,6 +50,8 @@ def power_starts_work(b: Builder, info: ActionInfo) -> bool:
     if not label.text:
         return False
     units = b.manual.units
+    if any(_ONLY_WHILE_ON_RE.search(u.text) for u in units):
+        return False
     pressed = re.compile(rf"\bpress\s+(?:the\s+)?{re.escape(label.text)}(?!\w)", re.IGNORECASE)
     starts = False
     for i in label.mentions:

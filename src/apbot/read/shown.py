@@ -27,10 +27,13 @@ _PATTERNS = [
     re.compile(rf"(?<![\w/]){_WORD}\s*(?:=|:|—|–)\s*(?:\w+\s+){{0,3}}"
                r"(?:running|cooking|heating|baking|washing|active|on|locked|in progress)\b"),
 ]  # fmt: skip
+# punctuation that separates a legend's name from its meaning ("the lock symbol – locked",
+# "Heat indicator = heating"), never a lamp's glyph
+NOT_GLYPHS = r"\-–—−=+<>~^&%#@$·•→←"
 _ICON = re.compile(
     r"\b(?:the|a|an)?\s*([a-z]{3,12})\s+(?:icon|symbol)\b"
     r"(?:\s*\(\s*\**([^\w\s()*]{1,3}|\*{1,3}|(?-i:[A-Z]{2}[A-Z0-9-]{0,10}))\**\s*\)"
-    r"|\s+([^\w\s()*.,;:!?'\"|/-]{1,3})(?=\s|$))?",  # "the brushing symbol ≋ lights": the glyph
+    rf"|\s+([^\w\s()*.,;:!?'\"|/{NOT_GLYPHS}]{{1,3}})(?=\s|$))?",  # "the brushing symbol ≋ lights"
     re.IGNORECASE,
 )  # "the flame icon", "a padlock symbol", "the star symbol (*)": the glyph in brackets;
 # a lone capital "(A)" is a figure callout, not a glyph

@@ -12,9 +12,10 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 
+from apbot.read.shown import NOT_GLYPHS
 from apbot.read.text import Unit
 
-_GLYPH = r"([^\w\s()\[\]{}.,;:!?'\"/\\|*-]{1,3})"
+_GLYPH = rf"([^\w\s()\[\]{{}}.,;:!?'\"/\\|*{NOT_GLYPHS}]{{1,3}})"
 _NOUNS = r"(?:lamp|light|symbol|icon|indicator|LED)"
 
 
