@@ -53,6 +53,9 @@ def _mentions(b: Builder, name: str, spec: dict[str, Any]) -> list[tuple[int, st
 def _only_mode(texts: list[tuple[int, str]], values: list[str]) -> tuple[str, int] | None:
     """The one mode value these texts say the setting works in only, and the unit saying it;
     None when none or two."""
+    texts = [(i, t) for i, t in texts if "only" in t.lower()]  # both patterns need it
+    if not texts:
+        return None  # (compiling a pattern per value was a tenth of reading the manuals)
     found: dict[str, int] = {}
     for value in values:
         v = _value_pattern(value)

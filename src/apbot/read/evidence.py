@@ -8,6 +8,7 @@ sentences, in evidence_elsewhere.py.
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 
 from apbot.read.chart_cells import own_cells, row_names, without_names
 from apbot.read.count_tables import chart_for, count_charts, sideways_charts
@@ -411,10 +412,15 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
 def _named_range(text: str, own_words: set[str]) -> bool:
     """The setting's own noun right before a range ("HOT has the speeds 1 to 5" near COLD):
     the range is this setting's, whatever key the sentence also names."""
-    if not own_words:
+    if not own_words or not any(c.isdigit() for c in text):
         return False
-    nouns = "|".join(map(re.escape, sorted(own_words)))
-    return bool(re.search(rf"\b(?:{nouns})s?\s+{NUM}\s*(?:to|–|-)\s*{NUM}\b", text, re.I))
+    return bool(_range_after(tuple(sorted(own_words))).search(text))
+
+
+@lru_cache(maxsize=256)
+def _range_after(own_words: tuple[str, ...]) -> re.Pattern[str]:
+    nouns = "|".join(map(re.escape, own_words))
+    return re.compile(rf"\b(?:{nouns})s?\s+{NUM}\s*(?:to|–|-)\s*{NUM}\b", re.I)
 
 
 def _lead_index(cells: tuple[str, ...]) -> int:

@@ -78,6 +78,11 @@ def pair_hold_seconds(lines: list[str], first: str, second: str) -> float | None
     if not first.strip() or not second.strip():
         return None
     found: Counter[float] = Counter()
+    # only lines naming both keys can match; most manuals have none, and the pattern is long
+    named = [w.lower() for w in (*first.split(), *second.split())]
+    lines = [line for line in lines if all(w in line.lower() for w in named)]
+    if not lines:
+        return None
     for a, b in ((first, second), (second, first)):
         one = re.escape(a.strip()).replace(r"\ ", r"\s+")
         two = re.escape(b.strip()).replace(r"\ ", r"\s+")

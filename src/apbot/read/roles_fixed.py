@@ -407,12 +407,21 @@ _STANDBY_ONLY_RE = (  # "The timer can only be programmed while the appliance is
 )
 
 
+_STANDBY_WORDS_RE = re.compile(r"\b(?:standby|switched\s+off|turned\s+off)\b", re.IGNORECASE)
+
+
 def standby_only(b: Builder) -> None:
     """A key the manual says works only in standby ("The timer can only be programmed while
     the appliance is in standby") is the one key besides power that works while the appliance
     is off, and does nothing while it is on."""
     off = next((g for g in b.guards if g.get("name") == "power off"), None)
     if off is None:
+        return
+    # every wording ends in standby or off: only those sentences are searched, per key
+    said_off = [
+        (i, u.text) for i, u in enumerate(b.manual.units) if _STANDBY_WORDS_RE.search(u.text)
+    ]
+    if not said_off:
         return
     for info in b.infos:
         if info.skill != "press" or info.name in off["only"] or len(info.controls) != 1:
@@ -421,7 +430,7 @@ def standby_only(b: Builder) -> None:
         if not label or not re.search(r"\w", label):
             continue
         said = re.compile(_STANDBY_ONLY_RE.format(label=re.escape(label)), re.IGNORECASE)
-        at = next((i for i, u in enumerate(b.manual.units) if said.search(u.text)), None)
+        at = next((i for i, text in said_off if said.search(text)), None)
         if at is None:
             continue
         _only_in_standby(b, off, info.name, label, at)
