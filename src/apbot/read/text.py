@@ -107,6 +107,9 @@ _DEFAULT_LEGEND = re.compile(
 )
 
 
+_DEFAULT_WORD = re.compile(r"\b(?:default|standard|preset|factory)\b", re.I)
+
+
 def _symbols(text: str) -> set[str]:
     return {c for c in text if unicodedata.category(c) == "So" and c not in _KEEP}
 
@@ -119,15 +122,18 @@ def _legend_marks(text: str) -> tuple[frozenset[str], frozenset[str]]:
     "standard" is none."""
     defaults: set[str] = set()
     kept: set[str] = set()
-    for m in _DEFAULT_LEGEND.finditer(text):
-        mark = m.group(1)
-        if mark not in _symbols(mark) or _symbols(m.group(0)[m.end(1) - m.start() :]):
+    # a legend lies on one line: only the lines saying "default" are searched (the pattern,
+    # tried at every space of a whole manual, was the slowest step of cleaning its text)
+    for line in text.split("\n"):
+        if not _DEFAULT_WORD.search(line):
             continue
-        end = text.find("\n", m.start(1))
-        line = text[text.rfind("\n", 0, m.start(1)) + 1 : end if end >= 0 else len(text)]
-        if m.group(2) or len(_symbols(line)) >= 2:
-            defaults.add(mark)
-            kept |= _symbols(line) | {mark}  # the legend's other marks ("● selectable")
+        for m in _DEFAULT_LEGEND.finditer(line):
+            mark = m.group(1)
+            if mark not in _symbols(mark) or _symbols(m.group(0)[m.end(1) - m.start() :]):
+                continue
+            if m.group(2) or len(_symbols(line)) >= 2:
+                defaults.add(mark)
+                kept |= _symbols(line) | {mark}  # the legend's other marks ("● selectable")
     return frozenset(defaults), frozenset(kept)
 
 

@@ -20,15 +20,23 @@ _SHOWS_RE = re.compile(
 def read_bracket_shows(b: Builder) -> None:
     """Give a discrete setting read without display words the words its list's brackets say
     the display shows for two or more of its values (the others: off shows nothing)."""
+    # only a sentence saying what the display shows can give a bracket's word
+    said_shown = [
+        (i, u.text)
+        for i, u in enumerate(b.manual.units)
+        if "(" in u.text and _SHOWS_RE.search(u.text)
+    ]
+    if not said_shown:
+        return
     for var, spec in b.variables.items():
         if spec.get("type") != "discrete" or "show" in spec or spec.get("cases"):
             continue
         values = [str(v) for v in spec.get("values", [])]
-        for i, unit in enumerate(b.manual.units):
+        for i, text in said_shown:
             shown: dict[str, str] = {}
             for value in values:
                 pattern = rf"(?<![\w]){re.escape(value)}\s*\(([^()]*)\)"
-                for m in re.finditer(pattern, unit.text, re.IGNORECASE):
+                for m in re.finditer(pattern, text, re.IGNORECASE):
                     said = _SHOWS_RE.search(m.group(1))
                     if said:
                         shown.setdefault(value, said.group(1))
