@@ -396,6 +396,8 @@ _MARKED_START = r"\(\s*(?:start(?:ing)?|default|factory|initial)(?:\s+(?:setting
 def marked_start(value: str, text: str) -> bool:
     """Whether the text marks the value as where the setting starts ("600 (start setting)",
     "60 % (factory)")."""
+    if "(" not in text:
+        return False  # (most texts: no pattern to build for them)
     unit = r"(?:\s*(?:%|°\s?[CF]?|[a-zA-Z]{1,3}\b))?"
     return bool(re.search(rf"(?<![\w.]){re.escape(value)}{unit}\s*{_MARKED_START}", text))
 
