@@ -14,6 +14,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
+from apbot.model.values import tidy_number
 from apbot.read.build import Builder
 from apbot.read.labels import words
 from apbot.read.values import gap_pieces, number
@@ -49,7 +50,9 @@ def read_position_charts(b: Builder) -> None:
                 continue
             amounts, unit_text, codes = found
             pieces = gap_pieces(amounts, unit_text)
-            spec["ranges"] = [[_tidy(r.low), _tidy(r.high), _tidy(r.step or 1)] for r in pieces]
+            spec["ranges"] = [
+                [tidy_number(r.low), tidy_number(r.high), tidy_number(r.step or 1)] for r in pieces
+            ]
             spec["unit"] = unit_text
             if codes:
                 spec["show"] = {f"{a:g}": c for a, c in zip(amounts, codes, strict=True)}
@@ -102,7 +105,3 @@ def _chart(
         return None
     _, amounts, unit_text = chosen[0]
     return amounts, unit_text, codes
-
-
-def _tidy(x: float) -> float | int:
-    return int(x) if float(x).is_integer() else x

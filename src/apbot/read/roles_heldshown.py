@@ -13,10 +13,10 @@ import re
 
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
+from apbot.read.evidence_checks import SENTENCE_END_RE
 from apbot.read.shown import shown_words
 
 # where the hold's sentence ends: the word must be said of this hold, not of a later step
-_SENTENCE_END = re.compile(r"(?<=[.!?;])\s+")
 # what the word is then said to mean: something switched off
 _SAYS_OFF = re.compile(r"\b(?:off|disabled|deactivated|silenced|muted)\b", re.IGNORECASE)
 
@@ -35,7 +35,7 @@ def held_shown(b: Builder, key: ActionInfo) -> tuple[str, int] | None:
     for i, unit in enumerate(b.manual.units):
         if unit.cells:
             continue
-        for sentence in _SENTENCE_END.split(unit.text):
+        for sentence in SENTENCE_END_RE.split(unit.text):
             m = holding.search(sentence)
             if m is None:
                 continue
