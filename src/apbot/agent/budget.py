@@ -59,6 +59,10 @@ class Budget:
         done.add(key)
         return True
 
+    def spent_on(self, kind: OnceKind, key: str) -> bool:
+        """``(kind, key)`` was asked for already (without asking now)."""
+        return key in self.spent.get(kind, set())
+
     def again(self, kind: RepeatKind, key: str) -> bool:
         """Count one more occurrence; False once it has come back more than ``limit`` times."""
         streak = self.streaks.setdefault(kind, Counter())

@@ -345,8 +345,14 @@ class ClosedLoop(Claims):
 
     def inspect(self, name: str) -> bool:
         """A goal setting the belief cannot reach: go through the procedure that adjusts it
-        and walk its values, in case its keys do something else than believed. Once."""
-        if not self.session.budget.once("inspect", name):
+        and walk its values, in case its keys do something else than believed. Once per case
+        of a setting whose values depend on another (each hair type, programme, ... its own
+        range): a walk in one case says nothing of another's values."""
+        cases = self.session.belief.model.variables[name].cases or {}
+        budget = self.session.budget
+        if budget.spent_on("inspect", self._walk_key(name)) or not any(
+            budget.once("inspect", f"{name} walk {n}") for n in range(len(cases) + 1)
+        ):  # one walk per case at most, even when the believed case stays wrong
             return False
         for feature, steps in self.session.belief.model.features.items():
             for index, step in enumerate(steps):
@@ -368,8 +374,15 @@ class ClosedLoop(Claims):
                         True,
                     ),
                 )
+                # the case the walk showed it was in (the belief's may have been wrong)
+                self.session.budget.once("inspect", self._walk_key(name))
                 return True
         return False
+
+    def _walk_key(self, name: str) -> str:
+        """What one walk of ``name`` covers: the setting, in the case it is in now."""
+        case = self.session.case(name)
+        return name if case is None else f"{name} when {case}"
 
 
 def _outside_text(outside: dict[str, Any]) -> str:
