@@ -12,7 +12,7 @@ from __future__ import annotations
 from collections import deque
 from typing import Any
 
-from apbot.model.effects import entry_digits
+from apbot.model.effects import typed_lengths
 from apbot.sim.compiled import CLEAR, DIGIT, TABLE, CompiledModel, leaves
 
 INF = float("inf")
@@ -108,10 +108,10 @@ def typeable_values(compiled: CompiledModel, v: int) -> list[tuple[Any, int]]:
         for domain in var.domains:
             if entry is None or domain is None or domain.magnitudes is None:
                 continue
-            for value, magnitude in zip(domain.values, domain.magnitudes, strict=True):
-                digits = entry_digits(magnitude, entry)
-                if digits is not None:
-                    found[value] = len(digits)
+            lengths = typed_lengths(domain.magnitudes, entry)
+            for value, length in zip(domain.values, lengths, strict=True):
+                if length is not None:
+                    found[value] = length
         cache[v] = list(found.items())
     return cache[v]
 

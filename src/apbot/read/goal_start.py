@@ -223,13 +223,7 @@ def _says_power_off(view: Model, text: Text) -> bool:
 
 def _setting_words(view: Model) -> frozenset[str]:
     """Concepts that name a setting outright (its own name or label; not generic words)."""
-    return frozenset(
-        key
-        for info in view.infos.values()
-        if info.role == "setting"
-        for key, weight in info.vocab.items()
-        if weight >= 0.8 and (not generic(key) or key == concept("program"))
-    )
+    return frozenset(k for k in _names(view) if not generic(k) or k == concept("program"))
 
 
 def _names(view: Model) -> frozenset[str]:
