@@ -120,7 +120,10 @@ def contents_lines(lines: list[str]) -> set[int]:
 
     for i, line in enumerate([*lines, ""]):
         stripped = line.strip()
-        entries = list(_CONTENTS_ENTRY.finditer(stripped))
+        # a dot leader has four dots with at most a space or tab between: the pattern's
+        # lazy title scan is slow on long lines, so lines without one are passed over
+        leader = "...." in stripped.replace(" ", "").replace("\t", "")
+        entries = list(_CONTENTS_ENTRY.finditer(stripped)) if leader else []
         if entries and "".join(m.group(0) for m in entries).replace(" ", "") == stripped.replace(
             " ", ""
         ):
