@@ -3,11 +3,14 @@
 The environment names its actions (``press_menu``, ``hold_minus_plus``, ``turn_dial_cw``,
 ``press_5``); the name is all the reader knows of the panel before it reads the manual. The verb
 gives the skill, the rest names the control; a hold whose rest splits into the names of two other
-controls is a two-key hold.
+controls is a two-key hold. Environments spell these many ways (``press_menu_button``,
+``press_and_hold_lock_button``, ``turn_timer_dial_clockwise``, ``long_press_x_key``): the kind of
+control said after its name is dropped, since the manual names the control without it.
 """
 
 from __future__ import annotations
 
+import functools
 import re
 from dataclasses import dataclass
 
@@ -19,6 +22,9 @@ HOLD_VERBS = ("hold", "long_press", "press_and_hold", "long")
 TURN_VERBS = ("turn", "rotate", "twist", "spin")
 CW_WORDS = ("cw", "clockwise", "right", "up", "forward", "next", "plus")
 CCW_WORDS = ("ccw", "anticlockwise", "counterclockwise", "left", "down", "back", "minus")
+# what kind of control it is, said after its name ("press_menu_button", "turn_timer_dial_cw"):
+# the manual calls the control MENU or TIMER, so the kind is no part of its name
+KIND_WORDS = re.compile(r"_(?:buttons?|keys?|knobs?|dials?|switch(?:es)?|btns?|pads?)$")
 MAX_ACTIONS = 1000
 
 
@@ -63,23 +69,47 @@ def parse_actions(names: list[str]) -> list[ActionInfo]:
     first: list[tuple[str, str, str]] = []
     for name in names:
         verb, rest = _split_verb(name)
-        first.append((name, verb, rest))
+        first.append((name, verb, _without_kind(rest, verb)))
     single = {rest for _, verb, rest in first if rest and verb not in HOLD_VERBS}
     single |= {_turn_base(rest) for _, verb, rest in first if verb in TURN_VERBS}
     single.discard("")
     out: list[ActionInfo] = []
     for name, verb, rest in first:
-        if verb in TURN_VERBS:
-            base = _turn_base(rest)
-            ccw = rest != base and rest.rsplit("_", 1)[-1] in CCW_WORDS
-            out.append(ActionInfo(name, "turn_ccw" if ccw else "turn_cw", (base or "dial",)))
-        elif verb in HOLD_VERBS:
-            out.append(ActionInfo(name, "hold", _hold_controls(rest or name, single)))
-        elif re.fullmatch(r"\d", rest):
-            out.append(ActionInfo(name, "press", (f"key_{rest}",), int(rest)))
-        else:
-            out.append(ActionInfo(name, "press", (rest or name,)))
+        info = action_info(name)
+        if verb in HOLD_VERBS:  # a two-key hold names two of the other keys
+            info = ActionInfo(name, "hold", _hold_controls(rest or name, single))
+        out.append(info)
     return out
+
+
+@functools.lru_cache(maxsize=4096)
+def action_info(name: str) -> ActionInfo:
+    """One action name on its own (no list to find a two-key hold's partners in): what the
+    agent needs to press a key the belief does not know — its skill, its control, its digit."""
+    verb, rest = _split_verb(name)
+    rest = _without_kind(rest, verb)
+    if verb in TURN_VERBS:
+        base = _turn_base(rest)
+        ccw = rest != base and rest.rsplit("_", 1)[-1] in CCW_WORDS
+        return ActionInfo(name, "turn_ccw" if ccw else "turn_cw", (base or "dial",))
+    if verb in HOLD_VERBS:
+        return ActionInfo(name, "hold", (rest or name,))
+    if re.fullmatch(r"\d", rest):
+        return ActionInfo(name, "press", (f"key_{rest}",), int(rest))
+    return ActionInfo(name, "press", (rest or name,))
+
+
+def _without_kind(rest: str, verb: str) -> str:
+    """The control's name without the kind of control said after it (``menu_button`` →
+    ``menu``; a turn's ``timer_dial_clockwise`` → ``timer_clockwise``); a name that is only
+    the kind (``press_button``, ``turn_dial_cw``) stays."""
+    if verb in TURN_VERBS:
+        parts = rest.split("_")
+        way = parts[-1] if len(parts) > 1 and parts[-1] in (*CW_WORDS, *CCW_WORDS) else ""
+        base = _without_kind("_".join(parts[:-1]) if way else rest, "")
+        return "_".join(p for p in (base, way) if p)
+    kind = KIND_WORDS.search(rest)
+    return rest[: kind.start()] if kind and kind.start() > 0 else rest
 
 
 def _turn_base(rest: str) -> str:
