@@ -74,6 +74,7 @@ from apbot.read.goal_unit_cases import named_units, said_units, unit_cases
 from apbot.read.goal_values import in_days
 from apbot.read.goal_view import Goal, Model, model_view
 from apbot.read.goal_vocab import STOP_WORDS, stem
+from apbot.read.goal_wording import plain_order
 from apbot.read.numbers import find_mentions
 
 __all__ = ["MAX_INSTRUCTION", "GoalParseError", "parse_instruction"]
@@ -116,7 +117,10 @@ def parse_instruction(
                 view,
                 joined_compounds(
                     view,
-                    said_ages(view, spelled_codes(view, without_remarks(view, str(instruction)))),
+                    said_ages(
+                        view,
+                        spelled_codes(view, without_remarks(view, plain_order(str(instruction)))),
+                    ),
                 ),
             ),
         )
