@@ -15,6 +15,7 @@ from typing import Any
 from apbot.agent.model_edits import _dump, _rebuild
 from apbot.model.domain import all_values
 from apbot.model.schema import ApplianceModel, DiscreteVariable
+from apbot.read.actions import action_info
 
 
 def add_setting(
@@ -206,37 +207,20 @@ def setting_step(model: ApplianceModel, name: str) -> tuple[str, int] | None:
 
 def _add_action(data: dict[str, Any], action: str) -> None:
     """An action the model did not know, on a control named after it."""
-    control = _control_id(action)
-    digit = action.rsplit("_", 1)[-1]
-    keypad = len(digit) == 1 and digit.isdigit()  # press_7: a keypad key
+    info = action_info(action)
+    control = f"{info.token}_control" if not info.token.startswith("key_") else info.token
     if not any(c["id"] == control for c in data["controls"]):
-        turning = action.endswith(("_cw", "_ccw"))
-        kind = "key" if keypad else "dial" if turning else "button"
+        turning = info.skill.startswith("turn")
+        kind = "key" if info.digit is not None else "dial" if turning else "button"
         data["controls"].append({"id": control, "kind": kind})
     spec: dict[str, Any] = {"control": control}
-    if keypad:
-        spec["digit"] = int(digit)
-    if action.startswith("hold"):
+    if info.digit is not None:
+        spec["digit"] = info.digit
+    if info.skill == "hold":
         spec.update(skill="hold", seconds=3)
-    elif action.endswith("_ccw"):
-        spec["skill"] = "turn_ccw"
-    elif action.endswith("_cw"):
-        spec["skill"] = "turn_cw"
+    elif info.skill != "press":
+        spec["skill"] = info.skill
     data["actions"][action] = spec
-
-
-def _control_id(action: str) -> str:
-    """A control id for an action the model did not know: its name without the skill."""
-    name = action
-    for prefix in ("press_", "hold_", "turn_"):
-        if name.startswith(prefix):
-            name = name[len(prefix) :]
-    for suffix in ("_cw", "_ccw"):
-        if name.endswith(suffix):
-            name = name[: -len(suffix)]
-    if name[:1].isdigit():  # press_7: keypad key 7
-        return f"key_{name}"
-    return f"{name}_control" if name else "learnt_control"
 
 
 def unrole(model: ApplianceModel, key: str) -> ApplianceModel:

@@ -50,6 +50,7 @@ from apbot.agent.setting_texts import (
 )
 from apbot.model.key_roles import adjusted_by, is_switch, misread_key
 from apbot.model.schema import DiscreteVariable
+from apbot.read.actions import action_info
 
 MAX_WALK = 60  # presses of one key while looking at a new setting
 MAX_KEYS = 6  # keys tried for one setting
@@ -399,7 +400,7 @@ class VariableFinder:
         words = {w for w in name.split("_") if len(w) >= 3}
 
         def alike(action: str) -> bool:
-            parts = [p for p in action.split("_") if len(p) >= 3]
+            parts = [p for p in action_info(action).token.split("_") if len(p) >= 3]
             return any(w.startswith(p) or p.startswith(w) for w in words for p in parts)
 
         # a key the belief gives a plain step only (press it, nothing changes) may be the very

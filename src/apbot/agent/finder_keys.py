@@ -13,18 +13,17 @@ from collections.abc import Sequence
 from apbot.agent.session import Executed, Session
 from apbot.agent.setting_texts import GAP
 from apbot.plan.plan import PlannedAction
+from apbot.read.actions import action_info
 
 
 def _digit_keys(actions: Sequence[str]) -> dict[str, str]:
-    """The keypad: digit → action (``press_7``)."""
-    return {
-        a.rsplit("_", 1)[-1]: a for a in actions if _is_digit(a) and len(a.rsplit("_", 1)[-1]) == 1
-    }
+    """The keypad: digit → action (``press_7``, ``press_7_button``)."""
+    return {str(action_info(a).digit): a for a in actions if _is_digit(a)}
 
 
 def _is_digit(action: str) -> bool:
     """A keypad digit: typing is not walking (a missing keypad setting is not looked for)."""
-    return action.rsplit("_", 1)[-1].isdigit()
+    return action_info(action).digit is not None
 
 
 def _unknown(done: Executed) -> bool:
@@ -38,7 +37,8 @@ def _unknown(done: Executed) -> bool:
 
 def _is_reverse(action: str) -> bool:
     """The backward key of a pair: the finder walks the forward one."""
-    return action.endswith(("_ccw", "_down", "_minus", "_prev"))
+    info = action_info(action)
+    return info.skill == "turn_ccw" or f"_{info.token}".endswith(("_down", "_minus", "_prev"))
 
 
 def _press_digit(session: Session, action: str) -> Executed:
@@ -50,12 +50,8 @@ def _press_digit(session: Session, action: str) -> Executed:
 
 def _planned(action: str) -> PlannedAction:
     """An action the belief does not know, as the panel would take it (a hold held long)."""
-    if action.startswith("hold"):
-        return PlannedAction(action, "hold", (), 5.0)
-    skill = (
-        "turn_ccw" if action.endswith("_ccw") else "turn_cw" if action.endswith("_cw") else "press"
-    )
-    return PlannedAction(action, skill, (), None)
+    skill = action_info(action).skill
+    return PlannedAction(action, skill, (), 5.0 if skill == "hold" else None)
 
 
 def _main(text: str, lamps: set[str]) -> str:

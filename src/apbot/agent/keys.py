@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING, Any
 
 from apbot.agent.perception import MISSING
 from apbot.model.schema import GoTo
+from apbot.read.actions import action_info
 
 if TYPE_CHECKING:
     from apbot.agent.session import Session
@@ -77,7 +78,7 @@ def keys_like(session: Session, name: str, exclude: set[str]) -> list[str]:
             continue
         if locks_panel(session, action):
             continue  # a lock hold named like the setting (hold TIMER ▲) would lock out
-        parts = set(action.split("_"))
+        parts = set(action_info(action).token.split("_"))  # its control's words, not its verb's
         if words & parts or any(
             w.startswith(p) or p.startswith(w) for w in words for p in parts if len(p) >= 3
         ):
