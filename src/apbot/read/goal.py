@@ -41,7 +41,7 @@ from apbot.read.goal_digits import spelled_codes
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_every import every_periods
 from apbot.read.goal_fractions import fractions
-from apbot.read.goal_gates import entry_switches, gated_switches
+from apbot.read.goal_gates import closing_switches, entry_switches, gated_switches
 from apbot.read.goal_kinds import kind_numbers
 from apbot.read.goal_listed import listed_outside
 from apbot.read.goal_mute import muted_volume
@@ -59,6 +59,7 @@ from apbot.read.goal_open import open_entries
 from apbot.read.goal_ordinals import ordinal_numbers
 from apbot.read.goal_outside import kept_outside
 from apbot.read.goal_periods import distinct, in_weeks
+from apbot.read.goal_presets import preset_companions
 from apbot.read.goal_quantity_values import quantity_values
 from apbot.read.goal_remarks import without_remarks
 from apbot.read.goal_scales import superlatives
@@ -160,7 +161,9 @@ def parse_instruction(
     place_twins(view, text, goal, where)
     scheduled_states(view, text, goal, where)
     entry_switches(view, goal)
+    closing_switches(view, goal)
     gated_switches(view, text, goal)
+    preset_companions(view, text, goal, where)
     set_by_hand(view, text, goal)
     implied_cases(view, goal)
     entry_modes(view, goal)

@@ -3,6 +3,7 @@ best; a quantity no setting of its kind takes is refused (or kept as said, for a
 
 from __future__ import annotations
 
+import re
 from typing import Any
 
 from apbot.model.schema import NumericVariable, TimeVariable
@@ -225,6 +226,8 @@ def _clock_parts(view: Model, text: Text, mention: Mention, goal: Goal) -> bool:
         if part == "hour" and not _has_number(domain, number) and number > 12:
             number -= 12
         found = next((v for v in domain if _as_int(v) == number), None)
+        if found is None and part == "hour":
+            found = twelve_hour_value(domain, hour)
         if found is None:
             return False
         values[parts[part].name] = found
@@ -233,6 +236,20 @@ def _clock_parts(view: Model, text: Text, mention: Mention, goal: Goal) -> bool:
 
 
 _PARTS = {"hour": {"hour", "hours", "hr", "h"}, "minute": {"minute", "minutes", "min", "m"}}
+
+
+_TWELVE_HOUR = re.compile(r"^\s*(\d{1,2})\s*([ap])\.?\s*m\.?\s*$", re.IGNORECASE)
+
+
+def twelve_hour_value(domain: list[Any], hour: int) -> Any:
+    """The value of an hour setting written on a 12-hour clock ("7 AM", "12 PM") that is the
+    day's ``hour`` (0-23); None when the values are not so written."""
+    want = (hour % 12 or 12, "a" if hour < 12 else "p")
+    for value in domain:
+        found = _TWELVE_HOUR.match(str(value))
+        if found and (int(found.group(1)), found.group(2).casefold()) == want:
+            return value
+    return None
 
 
 def _as_int(value: Any) -> int | None:
