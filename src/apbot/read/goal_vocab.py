@@ -287,6 +287,7 @@ LOWEST = frozenset(
         "slowest",
         "gentlest",
         "softest",
+        "dimmest",
     }
 )
 HIGHEST = frozenset(
