@@ -63,3 +63,29 @@ def test_levels_up_to_max_are_a_scale() -> None:
 def test_a_number_setting_named_for_sleeping_takes_minutes() -> None:
     model = loads_model(SCOOTER)
     assert parse_instruction(model, "Let it sleep after six minutes.")["sleep"] == 6
+
+
+LANTERN = """
+appliance: {id: lantern_1, category: lantern, name: "Trail L2 camping lantern", brand: T}
+controls:
+  - {id: beam_key, kind: button, label: "BEAM"}
+  - {id: fan_key, kind: button, label: "FAN"}
+variables:
+  beam: {type: discrete, values: ["off", "on", strobe]}
+  fan: {type: discrete, values: [low, high]}
+actions:
+  press_beam: {control: beam_key}
+  press_fan: {control: fan_key}
+features:
+  beam:
+    - {actions: [press_beam], variable: beam, effect: next}
+  fan:
+    - {actions: [press_fan], variable: fan, effect: next}
+"""
+
+
+def test_a_setting_of_off_on_and_more_takes_its_state_said() -> None:
+    model = loads_model(LANTERN)
+    assert parse_instruction(model, "Fan high, beam on.") == {"fan": "high", "beam": "on"}
+    assert parse_instruction(model, "Please turn off the beam.") == {"beam": "off"}
+    assert parse_instruction(model, "Beam strobe.") == {"beam": "strobe"}

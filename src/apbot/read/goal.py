@@ -55,6 +55,7 @@ from apbot.read.goal_offs import (
     switched_off_values,
     zero_settings,
 )
+from apbot.read.goal_on_values import on_values
 from apbot.read.goal_open import open_entries
 from apbot.read.goal_ordinals import ordinal_numbers
 from apbot.read.goal_outside import kept_outside
@@ -156,6 +157,7 @@ def parse_instruction(
     switched_off_values(view, text, goal, where)
     no_values(view, text, goal, claimed)
     switches(view, text, goal, claimed, where)
+    on_values(view, text, goal, claimed, where)
     self_switching_off(view, text, goal, claimed)
     muted_volume(view, text, goal, claimed)
     place_twins(view, text, goal, where)
