@@ -135,3 +135,27 @@ def test_times_said_in_words() -> None:
     assert clocks("a quarter past midnight") == [15 * 60]
     assert clocks("eight twenty in the evening") == [20 * 3600 + 20 * 60]
     assert clocks("cook it for two fifteen minutes") == []
+
+
+def test_a_name_then_at_binds_the_number_after_it() -> None:
+    model = loads_model(RECLINER)
+    goal = parse_instruction(model, "Footrest raised to twenty degrees, back at forty-five.")
+    assert goal == {"back": 45, "footrest": 20}
+    goal = parse_instruction(model, "Put up to 25 degrees, back at 10, the footrest.")
+    assert goal["back"] == 10
+
+
+POOL_LEVELS = POOL_ROBOT.replace(
+    "  status: {type: discrete, values: [idle, cleaning]}",
+    "  status: {type: discrete, values: [idle, cleaning]}\n"
+    '  brush: {type: discrete, values: ["off", low, medium, high]}',
+).replace(
+    "  go:\n",
+    "  brush:\n    - {actions: [press_minus], variable: brush, effect: next}\n  go:\n",
+)
+
+
+def test_a_little_of_a_setting_is_its_least_working_level() -> None:
+    model = loads_model(POOL_LEVELS)
+    assert parse_instruction(model, "Sweep with a little brush.")["brush"] == "low"
+    assert parse_instruction(model, "Sweep with a bit of brush.")["brush"] == "low"

@@ -13,7 +13,7 @@ from apbot.read.goal_fit import fit, number_for
 from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab, repeat_for_a_length, said_before
 from apbot.read.goal_unitless import unitless_duration, unitless_named
 from apbot.read.goal_values import name_words, unit_text, zone_case
-from apbot.read.goal_view import Goal, Model, VarInfo, domain_values, own_stems
+from apbot.read.goal_view import Goal, Model, VarInfo, domain_values, own_concepts, own_stems
 from apbot.read.goal_vocab import SPAN_ENDS, SPAN_STARTS, concept, stem
 from apbot.read.numbers import Mention
 
@@ -58,6 +58,7 @@ def assign_mentions(
             score += _cue_bonus(info, text, mention) + (0.5 if by else 0.0)
             score += _scheduled_bonus(view, info, text, mention)
             score += _after_its_case(info, text, mention, goal)
+            score += _named_right_before(info, text, mention)
             options.append((score, -info.order, mi, name, value))
     options.sort(key=lambda o: (-o[0], -o[1]))
     used: set[int] = set()
@@ -126,6 +127,15 @@ def _after_its_case(info: VarInfo, text: Text, mention: Mention, goal: Goal) -> 
     if mention.kind != "number" or not case or case not in goal:
         return 0.0
     return 1.0 if said_before(text, mention.start, stem(str(goal[case]))) else 0.0
+
+
+def _named_right_before(info: VarInfo, text: Text, mention: Mention) -> float:
+    """ "head at twenty", "fan to 3": a setting's own name, then "at" / "to", then the
+    quantity binds the two more tightly than any name standing after the quantity ("legs up
+    to forty degrees, head at twenty": the forty is not the head's)."""
+    if text.word(mention.start - 1) not in ("at", "to") or mention.start < 2:
+        return 0.0
+    return 0.5 if text.concepts[mention.start - 2] in own_concepts(info) else 0.0
 
 
 def _time_named(text: Text, mention: Mention) -> bool:

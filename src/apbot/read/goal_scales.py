@@ -49,6 +49,8 @@ def superlatives(
             end = -1  # "the thickest setting" on THICK ▲ / ▼, "the brightest" for BRIGHTNESS
         if end is None and _superlative_before_name(view, text, k, goal):
             end, reach = -1, 1  # "the brightest backlight": the most of the setting named
+        if end is None and _little_of(view, text, k, goal):
+            end, reach = 0, 2  # "with just a little water": the least of it that works
         scale_index = None
         for scale in SCALES:
             said = "medium" if word in ("middle", "mid", "med") else word
@@ -147,6 +149,23 @@ def _superlative_before_name(view: Model, text: Text, k: int, goal: Goal) -> boo
         and info.role == "setting"
         and ordered(info)
         and after in own_concepts(info)
+        for name, info in view.infos.items()
+    )
+
+
+def _little_of(view: Model, text: Text, k: int, goal: Goal) -> bool:
+    """ "a little water", "a bit of steam": an amount said as small, right before an open
+    ordered setting's own name, is its least level (the lowest that works, not OFF)."""
+    word, after = text.word(k), k + 1
+    if word == "bit" and text.word(after) == "of":
+        after += 1
+    if word not in ("little", "bit") or text.word(k - 1) != "a" or after >= len(text.tokens):
+        return False
+    return any(
+        name not in goal
+        and info.role == "setting"
+        and ordered(info)
+        and text.concepts[after] in own_concepts(info)
         for name, info in view.infos.items()
     )
 
