@@ -41,7 +41,7 @@ from apbot.read.goal_digits import spelled_codes
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_every import every_periods
 from apbot.read.goal_fractions import fractions
-from apbot.read.goal_gates import entry_switches, gated_switches
+from apbot.read.goal_gates import closing_switches, entry_switches, gated_switches
 from apbot.read.goal_kinds import kind_numbers
 from apbot.read.goal_listed import listed_outside
 from apbot.read.goal_mute import muted_volume
@@ -55,10 +55,12 @@ from apbot.read.goal_offs import (
     switched_off_values,
     zero_settings,
 )
+from apbot.read.goal_on_values import on_values
 from apbot.read.goal_open import open_entries
 from apbot.read.goal_ordinals import ordinal_numbers
 from apbot.read.goal_outside import kept_outside
 from apbot.read.goal_periods import distinct, in_weeks
+from apbot.read.goal_presets import preset_companions
 from apbot.read.goal_quantity_values import quantity_values
 from apbot.read.goal_remarks import without_remarks
 from apbot.read.goal_scales import superlatives
@@ -159,12 +161,15 @@ def parse_instruction(
     switched_off_values(view, text, goal, where)
     no_values(view, text, goal, claimed)
     switches(view, text, goal, claimed, where)
+    on_values(view, text, goal, claimed, where)
     self_switching_off(view, text, goal, claimed)
     muted_volume(view, text, goal, claimed)
     place_twins(view, text, goal, where)
     scheduled_states(view, text, goal, where)
     entry_switches(view, goal)
+    closing_switches(view, goal)
     gated_switches(view, text, goal)
+    preset_companions(view, text, goal, where)
     set_by_hand(view, text, goal)
     implied_cases(view, goal)
     entry_modes(view, goal)

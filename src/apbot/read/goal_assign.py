@@ -3,6 +3,7 @@ best; a quantity no setting of its kind takes is refused (or kept as said, for a
 
 from __future__ import annotations
 
+import re
 from typing import Any
 
 from apbot.model.schema import NumericVariable, TimeVariable
@@ -12,7 +13,7 @@ from apbot.read.goal_fit import fit, number_for
 from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab, repeat_for_a_length, said_before
 from apbot.read.goal_unitless import unitless_duration, unitless_named
 from apbot.read.goal_values import name_words, unit_text, zone_case
-from apbot.read.goal_view import Goal, Model, VarInfo, domain_values, own_stems
+from apbot.read.goal_view import Goal, Model, VarInfo, domain_values, own_concepts, own_stems
 from apbot.read.goal_vocab import SPAN_ENDS, SPAN_STARTS, concept, stem
 from apbot.read.numbers import Mention
 
@@ -57,6 +58,7 @@ def assign_mentions(
             score += _cue_bonus(info, text, mention) + (0.5 if by else 0.0)
             score += _scheduled_bonus(view, info, text, mention)
             score += _after_its_case(info, text, mention, goal)
+            score += _named_right_before(info, text, mention)
             options.append((score, -info.order, mi, name, value))
     options.sort(key=lambda o: (-o[0], -o[1]))
     used: set[int] = set()
@@ -125,6 +127,15 @@ def _after_its_case(info: VarInfo, text: Text, mention: Mention, goal: Goal) -> 
     if mention.kind != "number" or not case or case not in goal:
         return 0.0
     return 1.0 if said_before(text, mention.start, stem(str(goal[case]))) else 0.0
+
+
+def _named_right_before(info: VarInfo, text: Text, mention: Mention) -> float:
+    """ "head at twenty", "fan to 3": a setting's own name, then "at" / "to", then the
+    quantity binds the two more tightly than any name standing after the quantity ("legs up
+    to forty degrees, head at twenty": the forty is not the head's)."""
+    if text.word(mention.start - 1) not in ("at", "to") or mention.start < 2:
+        return 0.0
+    return 0.5 if text.concepts[mention.start - 2] in own_concepts(info) else 0.0
 
 
 def _time_named(text: Text, mention: Mention) -> bool:
@@ -225,6 +236,8 @@ def _clock_parts(view: Model, text: Text, mention: Mention, goal: Goal) -> bool:
         if part == "hour" and not _has_number(domain, number) and number > 12:
             number -= 12
         found = next((v for v in domain if _as_int(v) == number), None)
+        if found is None and part == "hour":
+            found = twelve_hour_value(domain, hour)
         if found is None:
             return False
         values[parts[part].name] = found
@@ -233,6 +246,20 @@ def _clock_parts(view: Model, text: Text, mention: Mention, goal: Goal) -> bool:
 
 
 _PARTS = {"hour": {"hour", "hours", "hr", "h"}, "minute": {"minute", "minutes", "min", "m"}}
+
+
+_TWELVE_HOUR = re.compile(r"^\s*(\d{1,2})\s*([ap])\.?\s*m\.?\s*$", re.IGNORECASE)
+
+
+def twelve_hour_value(domain: list[Any], hour: int) -> Any:
+    """The value of an hour setting written on a 12-hour clock ("7 AM", "12 PM") that is the
+    day's ``hour`` (0-23); None when the values are not so written."""
+    want = (hour % 12 or 12, "a" if hour < 12 else "p")
+    for value in domain:
+        found = _TWELVE_HOUR.match(str(value))
+        if found and (int(found.group(1)), found.group(2).casefold()) == want:
+            return value
+    return None
 
 
 def _as_int(value: Any) -> int | None:

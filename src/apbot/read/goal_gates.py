@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from apbot.model.schema import DiscreteVariable
+from apbot.model.schema import DiscreteVariable, GoTo
 from apbot.read.goal_text import Text, negative_around
 from apbot.read.goal_view import Goal, Model, VarInfo, own_concepts, own_stems, step_effects
 
@@ -25,6 +25,25 @@ def entry_switches(view: Model, goal: Goal) -> None:
                     continue
                 effects = [effect for _a, effect in step_effects(earlier)]
                 if all(effect == "toggle" for effect in effects) and effects:
+                    goal[info.name] = info.on
+
+
+def closing_switches(view: Model, goal: Goal) -> None:
+    """A setting whose procedure ends by turning a switch on (a schedule's hour and minute,
+    then OK arms the schedule) implies that switch on: the confirmation is part of setting it.
+    Not when the instruction already gave the switch a value."""
+    for _feature, steps in view.model.features.items():
+        for index, step in enumerate(steps):
+            if step.variable not in goal or view.infos[step.variable].role != "setting":
+                continue
+            for later in steps[index + 1 :]:
+                info = view.infos.get(later.variable or "")
+                if info is None or info.role != "switch" or info.name in goal:
+                    continue
+                effects = [effect for _a, effect in step_effects(later)]
+                if effects and all(
+                    isinstance(e, GoTo) and str(e.to) == str(info.on) for e in effects
+                ):
                     goal[info.name] = info.on
 
 

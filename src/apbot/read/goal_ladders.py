@@ -96,6 +96,7 @@ def ordered(info: VarInfo) -> bool:
             or bool(quantity_dimensions(info.values))
             or len(scaled(info.values)) >= 2
             or (len(ladder(info.values)) >= 2 and not choice_list(info))
+            or (len(capped(info.values)) >= 2 and not choice_list(info))
         )
     )
 
@@ -119,6 +120,22 @@ def ladder(values: list[Any]) -> list[Any]:
         return []
     if any(parse_quantity(str(v)) is not None for v in values) or scaled(values):
         return []
+    return list(values)
+
+
+_TOPS = frozenset({"max", "maximum", "turbo", "boost"})
+
+
+def capped(values: list[Any]) -> list[Any]:
+    """Named levels listed up to a top (ECO, STD, MAX; QUIET, NORMAL, TURBO): a panel steps
+    through its levels from the least and writes the most as MAX, so the list is the scale's
+    order (empty when the last value is no such top, or a value is a quantity)."""
+    if len(values) < 2 or str(values[-1]).casefold() not in _TOPS:
+        return []
+    if any(parse_quantity(str(v)) is not None for v in values) or scaled(values):
+        return []
+    if str(values[0]).casefold() in (*OFF_WORDS, "none"):
+        return []  # OFF … TURBO is a ladder, read by :func:`ladder`
     return list(values)
 
 
@@ -150,4 +167,6 @@ def ordered_values(values: list[Any]) -> list[Any]:
         return scaled(values)
     if len(sized) < 2 and ladder(values):
         return ladder(values)
+    if len(sized) < 2 and capped(values):
+        return capped(values)
     return [v for _size, v in sorted(sized, key=lambda pair: pair[0])]

@@ -395,6 +395,15 @@ def _match_at(
             and not said_as_place(text, k)
         ):
             quality = min(quality, 0.7)  # "teapot" for POT ("tea" a word of the manual)
+        elif (
+            index == len(stems) - 1
+            and index > 0
+            and len(target) == 1
+            and target.isalpha()
+            and len(here) >= 4
+            and here.startswith(target)
+        ):
+            quality = min(quality, 0.8)  # "zero gravity" for ZERO G: a last word cut to its initial
         elif len(target) >= 3 and here == target + "er":
             quality = min(quality, 0.8)  # "the air fryer" for AIR FRY
         elif len(stems) > 1 and len(here) >= 3 and target.startswith(here):

@@ -117,6 +117,8 @@ def value_phrases(
         for action, effect in step_effects(step):
             if not isinstance(effect, GoTo):
                 continue
+            if info.role == "switch" and str(effect.to) == str(info.off):
+                continue  # SCHEDULE held cancels the schedule: saying its name asks for it on
             for label in control_labels(model, [action]):
                 words = name_words(label)
                 if label.casefold() in stepping:

@@ -47,6 +47,10 @@ def superlatives(
             end, reach = compared
         if end is None and _own_superlative(view, goal, word) is not None:
             end = -1  # "the thickest setting" on THICK ▲ / ▼, "the brightest" for BRIGHTNESS
+        if end is None and _superlative_before_name(view, text, k, goal):
+            end, reach = -1, 1  # "the brightest backlight": the most of the setting named
+        if end is None and _little_of(view, text, k, goal):
+            end, reach = 0, 2  # "with just a little water": the least of it that works
         scale_index = None
         for scale in SCALES:
             said = "medium" if word in ("middle", "mid", "med") else word
@@ -130,6 +134,40 @@ def _own_superlative(view: Model, goal: Goal, word: str) -> str | None:
         and any(w in bases or w in {f"{b}ness" for b in bases} for w in _own_words(info))
     ]
     return found[0] if len(found) == 1 else None
+
+
+def _superlative_before_name(view: Model, text: Text, k: int, goal: Goal) -> bool:
+    """A superlative adjective ("brightest", "deepest"; seven letters or more, so no "best",
+    "rest") right before an open ordered setting's own name asks for the most of it: an
+    adjective of degree before the thing it grades. The least is said with LOWEST's words."""
+    word = text.word(k)
+    if len(word) < 7 or not word.endswith("est") or not word.isalpha() or word in LOWEST:
+        return False
+    after = text.concepts[k + 1] if k + 1 < len(text.tokens) else ""
+    return any(
+        name not in goal
+        and info.role == "setting"
+        and ordered(info)
+        and after in own_concepts(info)
+        for name, info in view.infos.items()
+    )
+
+
+def _little_of(view: Model, text: Text, k: int, goal: Goal) -> bool:
+    """ "a little water", "a bit of steam": an amount said as small, right before an open
+    ordered setting's own name, is its least level (the lowest that works, not OFF)."""
+    word, after = text.word(k), k + 1
+    if word == "bit" and text.word(after) == "of":
+        after += 1
+    if word not in ("little", "bit") or text.word(k - 1) != "a" or after >= len(text.tokens):
+        return False
+    return any(
+        name not in goal
+        and info.role == "setting"
+        and ordered(info)
+        and text.concepts[after] in own_concepts(info)
+        for name, info in view.infos.items()
+    )
 
 
 def _own_words(info: VarInfo) -> set[str]:

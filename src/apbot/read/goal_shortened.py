@@ -9,13 +9,14 @@ import re
 from typing import Any
 
 from apbot.read.goal_text import NUMBER_WORDS, Text
-from apbot.read.goal_view import phrase_words
+from apbot.read.goal_view import Model, VarInfo, name_words, own_stems, phrase_words
 from apbot.read.goal_vocab import (
     DETERMINERS,
     HIGHEST,
     LOWEST,
     STOP_WORDS,
     SYNONYMS,
+    concept,
     cut_short,
     stem,
 )
@@ -150,3 +151,23 @@ def abbreviated_synonym(short: str, word: str) -> bool:
 SYNONYM_STEMS: dict[str, frozenset[str]] = {
     stem(word): frozenset(stem(w) for w in others) for word, others in SYNONYMS.items()
 }
+
+
+def compound_of_name(view: Model, info: VarInfo, word: str) -> bool:
+    """The user's word is a compound whose head is the switch's one-word name ("headlight"
+    for LIGHT, "nightlight" for LAMP) and which the manual itself uses for it: what the
+    panel labels by its head noun, the manual and the user call by the whole compound. Not
+    a word another setting is named by ("backlight" beside BACKLIGHT)."""
+    own = own_stems(info)
+    if len(own) != 1 or word not in view.manual_words:
+        return False
+    names = [w.casefold() for w in name_words(f"{info.name} {info.var.label or ''}")]
+    short = next((w for w in names if stem(w) in own), "")
+    rest = word[: len(word) - len(short)]
+    if len(short) < 4 or not word.endswith(short) or len(rest) < 3 or not rest.isalpha():
+        return False
+    return not any(
+        concept(word) in other.vocab or stem(word) in own_stems(other)
+        for other in view.infos.values()
+        if other is not info
+    )

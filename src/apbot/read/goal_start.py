@@ -70,6 +70,8 @@ def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = Fals
     )
     if start is None and doing:
         start = _own_verb(text, doing[0])  # "… and print.", "don't print yet"
+    if start is None and _running_now(view, text, goal):
+        start = True  # "with a one-minute countdown running.": asked to be under way
     started_by = _procedure_start(view, goal)
     if start is None and started_by is not None:
         start = True  # the procedure for a goal setting ends by starting (TIME DEFROST)

@@ -4,6 +4,7 @@ said to be none or off by a negation or a verb ("no delay", "skip the rinse") ar
 
 from __future__ import annotations
 
+from apbot.read.goal_shortened import compound_of_name
 from apbot.read.goal_text import (
     CLAUSE_ENDS,
     VERB_FAMILIES,
@@ -72,6 +73,8 @@ def switches(
             cut = _abbreviated(view, goal, text.stems[k], own)
             if weight <= 0 and cut:
                 key, weight = text.stems[k], 1.0  # "tablets" for a TABS key
+            if weight <= 0 and compound_of_name(view, info, text.word(k)):
+                key, weight = next(iter(own)), 1.0  # "the headlight on" for a LIGHT switch
             if weight <= 0:
                 warmth = _kept_warmth(text, k, own)
                 if warmth:  # "keep it chilled" for AFTER COOL

@@ -7,6 +7,7 @@ per gallon" for GPG)."""
 
 from __future__ import annotations
 
+import re
 from typing import Any
 
 from apbot.model.domain import build_domain
@@ -110,9 +111,20 @@ def _a_unit(var: DiscreteVariable, value: Any) -> bool:
     """A value that is a unit (FAHRENHEIT, °dH, PPM), by its name or its display text."""
     show = var.show.get(value) if isinstance(var.show, dict) else None
     return any(
-        label is not None and str(label).casefold().lstrip("°").strip() in UNIT_WORDS
+        label is not None
+        and (
+            str(label).casefold().lstrip("°").strip() in UNIT_WORDS
+            or len(_unit_parts(str(label))) > 1  # "fl oz", "lb:oz": units joined
+        )
         for label in (value, show)
     )
+
+
+def _unit_parts(label: str) -> list[str]:
+    """The units a compound unit joins ("lb:oz" pounds and ounces, "fl oz" fluid ounces), or
+    [] when one part is no unit."""
+    parts = [p for p in re.split(r"[\s:./+-]+", label.casefold().lstrip("°")) if p]
+    return parts if parts and all(p in UNIT_WORDS or p == "fl" for p in parts) else []
 
 
 def _starting(var: DiscreteVariable) -> Any:
@@ -221,7 +233,9 @@ def named_units(
     name = selectors[0]
     var = view.infos[name].var
     assert isinstance(var, DiscreteVariable)
-    names = {unit: _said_unit_names(var, unit) for unit in var.values or []}
+    values = view.infos[name].values  # a selector kept per mode lists its units per case
+    names = {unit: _said_unit_names(var, unit) for unit in values}
+    compounds = {unit: _said_compound(unit) for unit in values}
     for j, token in enumerate(text.tokens):
         word = token.text.lstrip("°")
         if j in claimed or read_number(text.tokens, j - 1) is not None:
@@ -230,9 +244,38 @@ def named_units(
             continue
         if text.word(j - 1) == "of" and text.word(j - 2) == "instead":
             continue
+        joined = [unit for unit, said in compounds.items() if _says_all(text, j, said)]
+        if len(joined) == 1:  # "in fluid ounces", "pounds and ounces": the joined unit
+            goal[name] = joined[0]
+            where[name] = j
+            claimed.update(range(j, j + 3))
+            return
         units = [unit for unit, said in names.items() if word in said]
         if len(units) == 1:
             goal[name] = units[0]
             where[name] = j
             claimed.add(j)
             return
+
+
+def _said_compound(unit: Any) -> list[set[str]]:
+    """Per part of a joined unit ("fl oz", "lb:oz"), the words it is said by ("fluid",
+    "ounces"); [] for a unit of one part."""
+    parts = _unit_parts(str(unit))
+    if len(parts) < 2:
+        return []
+    return [{p, *_MORE_NAMES.get(p, ()), *(("fluid",) if p == "fl" else ())} for p in parts]
+
+
+def _says_all(text: Text, j: int, said: list[set[str]]) -> bool:
+    """The words from ``j`` name every part of a joined unit in turn ("and" may join them)."""
+    if not said:
+        return False
+    k = j
+    for index, words in enumerate(said):
+        if index and text.word(k) in ("and", "&", "+"):
+            k += 1
+        if text.word(k) not in words:
+            return False
+        k += 1
+    return True

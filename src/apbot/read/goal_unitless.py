@@ -8,8 +8,9 @@ number — only when no open setting has the quantity's kind (that one would be 
 number is one of the setting's values.
 
 So with a length of time: a number setting without a unit whose own name calls it a time or a
-duration (SESSION TIME 1-10, shown "5:00") takes a duration said without naming it ("ten
-minutes at speed 15"), as the number said, when no setting has a unit of time to take it.
+duration (SESSION TIME 1-10, shown "5:00"), or for switching itself off after a while (AUTO
+OFF 1-10, SLEEP), takes a duration said without naming it ("ten minutes at speed 15"), as the
+number said, when no setting has a unit of time to take it.
 """
 
 from __future__ import annotations
@@ -74,7 +75,9 @@ def _value(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
     return None
 
 
-_TIME_NAMES = frozenset({"time", "duration"})
+_TIME_NAMES = frozenset({"time", "duration", "timer", "timeout"})
+# a setting named for switching itself off after a while (AUTO OFF, SHUT-OFF, SLEEP) counts time
+_SWITCH_OFF_NAMES = frozenset({"off", "sleep"})
 
 
 def unitless_duration(view: Model, text: Text, mention: Mention, goal: Goal) -> str | None:
@@ -104,8 +107,8 @@ def unitless_duration(view: Model, text: Text, mention: Mention, goal: Goal) -> 
 
 
 def _named_a_time(info: VarInfo) -> bool:
-    words = name_words(info.var.label or "") + name_words(info.name)
-    return any(word.casefold() in _TIME_NAMES for word in words)
+    words = [w.casefold() for w in name_words(info.var.label or "") + name_words(info.name)]
+    return any(word in _TIME_NAMES or word in _SWITCH_OFF_NAMES for word in words)
 
 
 def _seconds_per(unit: str) -> float:

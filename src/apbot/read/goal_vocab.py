@@ -142,7 +142,7 @@ _GROUPS: tuple[tuple[str, ...], ...] = (
     ("finish", "end", "ready", "done", "finished"),
     ("timer", "timers"),
     ("time", "duration", "times"),
-    ("light", "lamp"),
+    ("light", "lamp", "torch"),
     (
         "buzzer",
         "beep",
@@ -287,6 +287,7 @@ LOWEST = frozenset(
         "slowest",
         "gentlest",
         "softest",
+        "dimmest",
     }
 )
 HIGHEST = frozenset(

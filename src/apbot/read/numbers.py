@@ -130,7 +130,11 @@ def _clock_at(tokens: list[Token], i: int) -> Mention | None:
         if past not in ("past", "to"):
             return None
         number = read_number(tokens, k + 1)
-        if number is None or number.value != int(number.value) or not 1 <= number.value <= 12:
+        named = _word(tokens, k + 1)
+        if number is None and named in ("midnight", "noon", "midday"):
+            # "half past midnight": 00:30, "a quarter past noon": 12:15
+            number = Number(0 if named == "midnight" else 12, k + 1, k + 2, True)
+        if number is None or number.value != int(number.value) or not 0 <= number.value <= 12:
             return None
         quarter = 15 if (w == "quarter" or w == "a") else 30
         hour = int(number.value)
@@ -147,6 +151,12 @@ def _clock_at(tokens: list[Token], i: int) -> Mention | None:
             return None
         following = _word(tokens, number.end)
         led = i == 0 or _word(tokens, i - 1) in _TIME_LEADS
+        spoken = _spoken_minutes(tokens, number)
+        if spoken is not None:  # "seven thirty in the morning", "at six forty-five"
+            following = _word(tokens, spoken.end)
+            if following in _CLOCK_WORDS or _day_part(tokens, spoken.end) is not None or led:
+                number, minute = replace(number, end=spoken.end), int(spoken.value)
+                following = "oclock" if following not in _CLOCK_WORDS else following
         said = None
         if led and number.value <= 12 and following != "at":  # "10 at night": below
             said = _day_part_span(tokens, number.end)
@@ -173,7 +183,7 @@ def _clock_at(tokens: list[Token], i: int) -> Mention | None:
             return None
         hour = int(number.value)
         end = number.end
-        # "nine o'clock" also covered; minute stays 0
+        # "nine o'clock" also covered; minute stays 0 (or the spoken minutes read above)
     assert hour is not None
     meridiem = False
     nxt = _word(tokens, end)
@@ -201,6 +211,21 @@ def _clock_at(tokens: list[Token], i: int) -> Mention | None:
         return None
     colon = ":" in _word(tokens, i) or "." in _word(tokens, i)
     return Mention("clock", hour * 3600 + minute * 60, i, end, meridiem=meridiem, colon=colon)
+
+
+def _spoken_minutes(tokens: list[Token], hour: Number) -> Number | None:
+    """The minutes of a time said as two numbers in words, the hour then the minutes ("seven
+    thirty", "six forty-five"): an hour 1-12 and minutes 10-59, both in words, no unit after."""
+    if not hour.words or not 1 <= hour.value <= 12:
+        return None
+    minutes = read_number(tokens, hour.end)
+    if minutes is None or not minutes.words or minutes.start != hour.end:
+        return None
+    if minutes.value != int(minutes.value) or not 10 <= minutes.value <= 59:
+        return None
+    if _unit_at(tokens, minutes.end) is not None or _time_unit(tokens, minutes.end) is not None:
+        return None  # "seven thirty-second runs", "two fifteen minutes"
+    return minutes
 
 
 _PAST_MINUTES = frozenset({5, 10, 20, 25})
