@@ -107,3 +107,16 @@ def test_without_the_setting_on_the_panel_the_run_sets_the_rest_and_claims_nothi
     episode = get_method("apbot").run(context, env)
     assert env.simulator.satisfies(parse_goal(truth, {"fan": 3}))
     assert not episode.claimed_success
+
+
+def test_a_goal_made_only_of_said_quantities_is_not_claimed() -> None:
+    # the goal reader placed nothing of "warm water only, 250 ml, and pour it": the cup found
+    # and set is all the agent can show, and what else was asked is unknown
+    truth = model_from(PANEL)
+    env = SimulatorEnvironment(truth, "display")
+    instruction = "Warm water only, 250 ml, and pour it."
+    context = TaskContext("unit", "test", "t", instruction, {}, _belief(), actions=env.actions)
+    episode = get_method("apbot").run(context, env)
+    assert env.simulator.satisfies(parse_goal(truth, {"cup": 250}))
+    assert not episode.claimed_success
+    assert "only what was said as a quantity" in episode.failure

@@ -37,6 +37,7 @@ class Claims(Checks):
 
     context: TaskContext
     unfound: dict[str, Any]
+    said: dict[str, Any]  # entries the agent made of quantities the goal held nowhere
 
     def settle_or_claim(self, inside: dict[str, Any]) -> bool:
         """The belief holds ``inside`` and no press is left: settle what the display showed,
@@ -75,6 +76,12 @@ class Claims(Checks):
         if not inside:  # a request read as nothing: nothing was set, so nothing is confirmed
             raise Stop(
                 "the request names no setting the model knows: nothing set, nothing to claim"
+            )
+        if set(inside) <= set(self.said):  # the goal reader placed nothing of the request
+            raise Stop(
+                "partly done: only what was said as a quantity was found and set ("
+                + ", ".join(sorted(inside))
+                + "); the rest of the request was not understood"
             )
         if self._shown_otherwise(inside):
             return True  # the display prints a goal setting at another value: plan again

@@ -72,6 +72,7 @@ class ClosedLoop(Claims):
         self.config = config
         self.context = context
         self.missing: dict[str, Any] = {}  # goal settings the belief lacks and has not found
+        self.said = said
         self.unfound: dict[str, Any] = {}  # ... and looked for twice: the rest is set without
         self.finding = 1  # the finder's attempt: once at the start, once with the rest set
         self.plans = BeliefPlans(self.session, config)
