@@ -77,14 +77,14 @@ class Claims(Checks):
             raise Stop(
                 "the request names no setting the model knows: nothing set, nothing to claim"
             )
-        if set(inside) <= set(self.said):  # the goal reader placed nothing of the request
-            raise Stop(
-                "partly done: only what was said as a quantity was found and set ("
-                + ", ".join(sorted(inside))
-                + "); the rest of the request was not understood"
-            )
         if self._shown_otherwise(inside):
             return True  # the display prints a goal setting at another value: plan again
+        if said := sorted(set(inside) & set(self.said)):  # the agent's own reading of the words
+            raise Stop(
+                "partly done: the goal as read holds; said as a quantity and found on the "
+                "panel, but whose setting it is was the agent's guess: "
+                + ", ".join(f"{n}={self.said[n]!r}" for n in said)
+            )
         context = self.context
         unread = (
             unread_parts(context.belief, context.instruction, context.goal, context.manual)
