@@ -82,7 +82,8 @@ def test_a_goal_setting_the_display_prints_at_another_value_is_not_claimed() -> 
 
 def test_a_number_the_goal_does_not_hold_is_not_claimed() -> None:
     # "high, for 3 hours": the lamp has no timer the reader found, so the goal holds only the
-    # mode; the robot sets it but must say the hours were not understood
+    # mode; the robot looks for the hours on the panel (agent/said_entries.py), sets the mode
+    # and must say the hours were not found
     model = model_from(LAMP)
     env = SimulatorEnvironment(model, "display")
     goal = {"mode": "high"}
@@ -92,7 +93,7 @@ def test_a_number_the_goal_does_not_hold_is_not_claimed() -> None:
     episode = get_method("apbot").run(context, env)
     assert not episode.claimed_success
     assert env.simulator.assignment()["mode"] == "high"
-    assert "not understood: 3 hours" in episode.failure
+    assert "not found on the panel: time='3 h'" in episode.failure
 
 
 def test_a_goal_handed_over_is_claimed_whatever_the_sentence_says() -> None:

@@ -37,6 +37,7 @@ class Claims(Checks):
 
     context: TaskContext
     unfound: dict[str, Any]
+    said: dict[str, Any]  # entries the agent made of quantities the goal held nowhere
 
     def settle_or_claim(self, inside: dict[str, Any]) -> bool:
         """The belief holds ``inside`` and no press is left: settle what the display showed,
@@ -78,6 +79,12 @@ class Claims(Checks):
             )
         if self._shown_otherwise(inside):
             return True  # the display prints a goal setting at another value: plan again
+        if said := sorted(set(inside) & set(self.said)):  # the agent's own reading of the words
+            raise Stop(
+                "partly done: the goal as read holds; said as a quantity and found on the "
+                "panel, but whose setting it is was the agent's guess: "
+                + ", ".join(f"{n}={self.said[n]!r}" for n in said)
+            )
         context = self.context
         unread = (
             unread_parts(context.belief, context.instruction, context.goal, context.manual)

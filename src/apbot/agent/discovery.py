@@ -23,6 +23,7 @@ from apbot.agent.finder_keys import (
     _planned,
     _press_digit,
     _unknown,
+    stepping_suspects,
 )
 from apbot.agent.guards import GuardLearner
 from apbot.agent.reader import DisplayReader
@@ -419,9 +420,14 @@ class VariableFinder:
                 v in session.context.goal and not is_switch(model, v) for v in adjusted_by(model, a)
             )
         ]
+        # last, a forward stepping key (▲, +, a dial) whose role cannot hold the goal's value
+        stepping = stepping_suspects(session, [a for a in offered if a not in unknown], goal_value)
+        stepping = [a for a in stepping if a not in self.suspect]
         named += self.suspect
+        self.suspect += stepping
         rest = [a for a in ranked if not alike(a)]
-        return [a for a in [*named, *rest] if not _is_reverse(a)][:MAX_KEYS]
+        keys = [a for a in [*named, *rest] if not _is_reverse(a)][:MAX_KEYS]
+        return keys + [a for a in stepping if a not in keys][: max(0, MAX_KEYS + 1 - len(keys))]
 
     def _walk(self, key: str) -> list[str]:
         """Press ``key`` until the display repeats a text the belief cannot read; the texts."""

@@ -9,9 +9,11 @@ both import them without importing each other.
 from __future__ import annotations
 
 from collections.abc import Sequence
+from typing import Any
 
 from apbot.agent.session import Executed, Session
 from apbot.agent.setting_texts import GAP
+from apbot.model.key_roles import adjusted_by, is_switch, misread_key
 from apbot.plan.plan import PlannedAction
 from apbot.read.actions import action_info
 
@@ -60,3 +62,25 @@ def _main(text: str, lamps: set[str]) -> str:
     while len(parts) > 1 and parts[-1].casefold() in lamps:
         parts.pop()
     return parts[0]  # a lamp the belief does not know is no part of the setting's screen
+
+
+_FORWARD = ("_up", "_plus", "_cw", "_next")  # the forward key of a stepping pair
+
+
+def stepping_suspects(session: Session, roled: Sequence[str], goal_value: Any) -> list[str]:
+    """The forward stepping keys (▲, +, a dial turned clockwise) among ``roled`` whose role in
+    the belief cannot hold ``goal_value`` ("57 °C" on ▲/▼ read as a timer's), the goal making
+    no choice with them: a level is stepped on such keys, whatever the reader gave them to, so
+    the finder walks them last. Never a long press: it does something else (a lock, a boost)."""
+    model = session.belief.model
+    goal = session.context.goal
+    return [
+        key
+        for key in roled
+        if key.endswith(_FORWARD)
+        and not key.startswith("hold")
+        and not _is_digit(key)
+        and goal_value is not None
+        and misread_key(model, key, goal_value)
+        and not any(v in goal and not is_switch(model, v) for v in adjusted_by(model, key))
+    ]

@@ -14,6 +14,7 @@ physical action, exploration included, is an execution step.
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import Any
 
 from apbot.agent.budget import Budget
@@ -31,6 +32,7 @@ from apbot.agent.merged import ProcedureSplitter
 from apbot.agent.planning import BeliefPlans
 from apbot.agent.procedures import ProcedureRepairer
 from apbot.agent.quantities import loose, magnitude, summary
+from apbot.agent.said_entries import said_entries
 from apbot.agent.session import MISSING, AgentConfig, Executed, Session, Stop
 from apbot.model.domain import ValueProblem, all_values, build_domain, normalise
 from apbot.model.goal import GoalError
@@ -49,7 +51,15 @@ class ClosedLoop(Claims):
     :class:`apbot.agent.claims.Claims`."""
 
     def __init__(self, config: AgentConfig, context: TaskContext, env: Environment) -> None:
+        said: dict[str, Any] = {}
+        if config.closed_loop and context.goal_read:
+            # quantities the user said that the goal holds nowhere: look for them on the panel
+            said = said_entries(context.belief, context.instruction, context.goal, context.manual)
+            context = replace(context, goal={**context.goal, **said}) if said else context
         self.session = Session(config, context, env, Budget())
+        if said:
+            entries = ", ".join(f"{n}={v!r}" for n, v in said.items())
+            self.session.episode.log("explore", f"said, held by no goal setting: {entries}")
         self.displays = DisplayLearner(self.session)
         self.explorer = Explorer(self.session, self.displays)
         self.guards = GuardLearner(self.session)
@@ -62,6 +72,7 @@ class ClosedLoop(Claims):
         self.config = config
         self.context = context
         self.missing: dict[str, Any] = {}  # goal settings the belief lacks and has not found
+        self.said = said
         self.unfound: dict[str, Any] = {}  # ... and looked for twice: the rest is set without
         self.finding = 1  # the finder's attempt: once at the start, once with the rest set
         self.plans = BeliefPlans(self.session, config)

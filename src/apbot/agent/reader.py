@@ -213,7 +213,7 @@ class DisplayReader(CompiledDisplay):
         regex = pattern.search if partial else pattern.regex
         assert regex is not None
         match = regex.search(text) if partial else regex.fullmatch(text)
-        if match is None:
+        if match is None or (partial and _inside_marks(text, *match.span())):
             return None
         screen = pattern.screen
         values: dict[str, Any] = dict(screen.fixed)
@@ -384,6 +384,24 @@ class DisplayReader(CompiledDisplay):
         found = " ".join(whole_words.findall(rest))
         allowed = self._lamps(found, focus)
         return allowed or {}
+
+
+def _inside_marks(text: str, start: int, end: int) -> bool:
+    """Whether a match found inside a longer text is only a piece of a run of marks there
+    (``~`` of ``~~``, ``▮▮▮`` of ``▮▮▮▯``): a count shown in marks is read whole, the longest
+    match — one wave lit is not two. A run: the same mark again, or marks outside ASCII."""
+    if start >= end:
+        return False
+    return (start > 0 and _marks(text[start - 1], text[start])) or (
+        end < len(text) and _marks(text[end - 1], text[end])
+    )
+
+
+def _marks(a: str, b: str) -> bool:
+    """Two neighbouring characters of one run of marks (no letters, digits or spaces)."""
+    if not all(c.strip() and not c.isalnum() for c in (a, b)):
+        return False
+    return a == b or (not a.isascii() and not b.isascii())
 
 
 def _unique(found: list[Hypothesis]) -> list[Hypothesis]:
