@@ -64,7 +64,10 @@ def _main(text: str, lamps: set[str]) -> str:
     return parts[0]  # a lamp the belief does not know is no part of the setting's screen
 
 
-_FORWARD = ("_up", "_plus", "_cw", "_next")  # the forward key of a stepping pair
+def _is_forward(action: str) -> bool:
+    """The forward key of a stepping pair (▲, +, a dial turned clockwise), as named."""
+    info = action_info(action)
+    return info.skill == "turn_cw" or f"_{info.token}".endswith(("_up", "_plus", "_next"))
 
 
 def stepping_suspects(session: Session, roled: Sequence[str], goal_value: Any) -> list[str]:
@@ -77,8 +80,8 @@ def stepping_suspects(session: Session, roled: Sequence[str], goal_value: Any) -
     return [
         key
         for key in roled
-        if key.endswith(_FORWARD)
-        and not key.startswith("hold")
+        if _is_forward(key)
+        and action_info(key).skill != "hold"
         and not _is_digit(key)
         and goal_value is not None
         and misread_key(model, key, goal_value)
