@@ -375,7 +375,8 @@ class ListReader(OwnWords):
                     return
         for i in self.context(tokens):
             m = re.search(
-                r"\b(?:(?-i:(?!STARTS?\b))starts?|default|factory|initially|normally|delivered)\b"
+                r"\b(?:(?-i:(?!STARTS?\b))starts?|default|factory|initially|normally|delivered"
+                r"|on delivery|out of the box|as supplied|unpack(?:ed|ing)?)\b"
                 r"(.*)",  # (the word, not the key: "▶ START")
                 self.manual.units[i].text,
                 re.I,
