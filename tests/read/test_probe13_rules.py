@@ -76,3 +76,14 @@ def test_a_step_is_said_as_what_each_press_adds_or_removes() -> None:
     assert find_step("It climbs from 40 to 80 °C, 10 °C at a time.") == (10.0, "°C")
     # a hold's fast steps are no step of a press
     assert find_step("Hold ▲ for 2 seconds to move 10 minutes at a time.") is None
+
+
+def test_choices_said_after_the_sentence_naming_the_key_are_its_values() -> None:
+    manual = """# Lumo Night Light
+
+## Keys
+GLOW: picks the colour of the light. The choices are: warm white, amber, soft blue, rose.
+POWER: switches the light on or off.
+"""
+    glow = read_manual(manual, ["glow_key", "power_key"]).model.variables["glow"]
+    assert glow.values == ["warm white", "amber", "soft blue", "rose"]
