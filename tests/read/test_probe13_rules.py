@@ -87,3 +87,20 @@ POWER: switches the light on or off.
 """
     glow = read_manual(manual, ["glow_key", "power_key"]).model.variables["glow"]
     assert glow.values == ["warm white", "amber", "soft blue", "rose"]
+
+
+def test_two_amounts_a_key_switches_between_are_its_two_choices() -> None:
+    manual = """# Crispa Waffle Iron
+
+## Keys
+- POWER: on or off.
+- BATTER: switches the batter dose between 150 ml and 250 ml.
+"""
+    model = read_manual(manual, ["power_key", "batter_key"]).model
+    batter = model.variables["batter"]
+    assert batter.type == "numeric" and batter.ranges is not None
+    assert [list(r) for r in batter.ranges] == [[150, 250, 100]]
+    # a range said with "between" stays a range
+    from apbot.read.two_choices import two_choices
+
+    assert not two_choices("The batter can be set between 100 ml and 300 ml.")
