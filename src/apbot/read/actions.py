@@ -26,6 +26,11 @@ CCW_WORDS = ("ccw", "anticlockwise", "counterclockwise", "left", "down", "back",
 # the manual calls the control MENU or TIMER, so the kind is no part of its name
 KIND_WORDS = re.compile(r"_(?:buttons?|keys?|knobs?|dials?|switch(?:es)?|btns?|pads?)$")
 MAX_ACTIONS = 1000
+# a number key however its name is spelled: the digit alone, or with the word for a key or a
+# digit before or after it ("key_5", "digit_5", "number_5_button")
+_DIGIT_KEY = re.compile(
+    r"(?:(?:keys?|digit|number|num|numpad|buttons?|btn)_)?(\d)(?:_(?:keys?|buttons?|btn))?"
+)
 
 
 @dataclass(frozen=True)
@@ -94,8 +99,8 @@ def action_info(name: str) -> ActionInfo:
         return ActionInfo(name, "turn_ccw" if ccw else "turn_cw", (base or "dial",))
     if verb in HOLD_VERBS:
         return ActionInfo(name, "hold", (rest or name,))
-    if re.fullmatch(r"\d", rest):
-        return ActionInfo(name, "press", (f"key_{rest}",), int(rest))
+    if digit := _DIGIT_KEY.fullmatch(rest):  # "press_5", "key_5", "press_digit_5", "5_key"
+        return ActionInfo(name, "press", (f"key_{digit[1]}",), int(digit[1]))
     return ActionInfo(name, "press", (rest or name,))
 
 

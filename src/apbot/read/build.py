@@ -28,6 +28,7 @@ from apbot.read.shapes import (
     _value_text,
 )
 from apbot.read.shown import shown_words
+from apbot.read.start_values import on_grid, said_after, start_in, with_said_step
 from apbot.read.symbol_lamps import symbol_lamp, word_lamp
 from apbot.read.text import Manual
 from apbot.read.value_spans import expand_spans
@@ -258,6 +259,7 @@ class Builder(EvidenceReader):
         name = self.unique(name, self.variables)
         subject = f"variables.{name}"
         ranges = list(ev.ranges)
+        found: tuple[Range, int] | None = None
         clock = "clock" in words(name.replace("_", " "))
         if clock and any(r.unit not in ("s", "h") for r in ranges):
             ranges = []  # a clock's range is the day, whatever numbers stand nearby
@@ -274,6 +276,7 @@ class Builder(EvidenceReader):
             ranges = [Range(low, high, "s", 60)]
         elif (found := self._range_anywhere(name, label)) is not None:
             at = found[1]
+            ev = with_said_step(ev, found[0], self.manual.units[at].text, at)
             said = [] if at is None else [u.text for u in self.manual.units[at : at + 3]]
             ranges = split_range(found[0], said, label) or [found[0]]
             r0 = found[0]
@@ -383,14 +386,16 @@ class Builder(EvidenceReader):
                 "unit": unit,
                 "label": label,
             }
-            if ev.initial and isinstance(ev.initial, tuple):
-                value = ev.initial[0]
-                for lo, hi, st in pieces:
-                    off = (value - lo) / st
-                    if lo <= value <= hi and abs(off - round(off)) < 1e-9:
-                        spec["initial"] = _tidy(value)
-                        self.note(f"{subject}.initial", f"starts at {value:g}", ev.initial_at)
-                        break
+        read_at = ev.range_at if ev.range_at is not None else found[1] if found else None
+        after = said_after(self.manual.units, read_at) if read_at is not None else None
+        if ev.initial is None and after:
+            ev = Evidence(**{**ev.__dict__, "initial": after[0], "initial_at": after[1]})
+        if ev.initial and isinstance(ev.initial, tuple):
+            start = start_in(ev.initial[0], ev.initial[1], unit, as_time)
+            if start is not None and on_grid(start, pieces):
+                spec["initial"] = format_hms(int(start)) if as_time else _tidy(start)
+                start_said = f"{ev.initial[0]:g}" + (f" {ev.initial[1]}" if as_time else "")
+                self.note(f"{subject}.initial", f"starts at {start_said}", ev.initial_at)
         if cyclic:
             spec["wrap"] = True
             self.note(f"{subject}.wrap", "stepping past the end wraps around (each press adds)")

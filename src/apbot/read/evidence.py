@@ -66,6 +66,7 @@ from apbot.read.shapes import (
 )
 from apbot.read.table_spans import column_span
 from apbot.read.text_sections import other_model, surroundings
+from apbot.read.two_choices import two_choices
 from apbot.read.value_lists import named_list
 from apbot.read.values import (
     EACH_PRESS_RE,
@@ -98,6 +99,10 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
         if key not in self._evidence:
             self._evidence[key] = self._read_evidence(tokens)
         return self._evidence[key]
+
+    def _flips_between(self, at: int | None) -> bool:
+        """The list of two amounts was read where the key flips between them: two choices."""
+        return at is not None and two_choices(self.manual.units[at].text)
 
     def _only_pair_named(self, i: int, tokens: list[str]) -> bool:
         """Whether the keys unit ``i`` names, this one aside, are all the stepping pair ("Press
@@ -211,8 +216,8 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
                 }:
                     continue  # "Lamps (top row): FAN HI, FAN LO, 2H…": what lights, not values
                     # ("Mode lamps: NORMAL CONT. …" are the mode key's values)
-                if _numeric_items(items) and len(items) < 3:
-                    continue
+                if _numeric_items(items) and len(items) < 3 and not two_choices(text):
+                    continue  # (two amounts a key flips between are its two choices)
                 named = _named_only(items[-1], text)  # "… → COOL ONLY →": a name
                 if not named and _where_it_applies(items, text):
                     continue  # "(PORRIDGE, STEAM, SOUP only)": where it applies, not its values
@@ -224,6 +229,7 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
                     best, best_prio, ev.values_at = items, prio, i
             waiting = i not in mentions and is_wait(text)  # "Leave for one to two hours."
             waiting = waiting or surroundings(text)  # "at an ambient 5 to 35 °C": the room's
+            waiting = waiting or two_choices(text)  # "toggles between 1.5 lb and 2.0 lb": two
             ranges = [
                 r
                 for r in find_ranges(
@@ -273,6 +279,7 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
                 ev.toggle_at is None
                 and not quiet  # ("The hob deactivates." under Troubleshooting)
                 and ON_OFF_RE.search(_without(text, other_labels))
+                and not two_choices(text)  # "toggles between 1.5 lb and 2.0 lb": no on/off
                 and not self._two_key_hold(text, tokens)
             ):
                 ev.toggle_at = i  # (another key's name, ON/OFF in a panel drawing, is no toggle)
@@ -360,7 +367,7 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
             column = self._table_column(tokens, numbered=best is None or len(best) < 3)
             if column:
                 best, ev.values_at = column, self._table_at
-            elif best is not None and len(best) < 3:
+            elif best is not None and len(best) < 3 and not self._flips_between(ev.values_at):
                 best = None
         elif not _numeric_items(best):
             column = self._table_column(tokens)

@@ -77,16 +77,22 @@ class AnywhereReader:
                 # a table row: the setting is named by the column's header
                 for head, cell in zip(unit.header, unit.cells, strict=True):
                     hw = words(head)
-                    if set(hw) & advice or not any(h[:5] == w[:5] for h in hw for w in ws):
+                    if set(hw) & advice or not any(_same_word(h, w) for h in hw for w in ws):
                         continue
                     consider(1 + 2 * bool(limits.search(head)), cell, i)
                 first = words(unit.cells[0])
-                if any(u[:5] == w[:5] for u in first for w in ws) and not set(first) & advice:
+                if any(_same_word(u, w) for u in first for w in ws) and not set(first) & advice:
                     consider(1 + 2 * bool(limits.search(unit.cells[0])), unit.text, i)
                 continue
-            if not any(u[:5] == w[:5] for u in uw for w in ws) or set(uw) & advice:
+            if not any(_same_word(u, w) for u in uw for w in ws) or set(uw) & advice:
                 continue
             if "clock" in uw and "clock" not in ws:
                 continue  # "any time from 1:00 to 12:59": the clock's day, not a duration
             consider(2 * bool(limits.search(unit.text)), unit.text, i)
         return (best[1], best[2]) if best else None
+
+
+def _same_word(word: str, name: str) -> bool:
+    """A word of the text naming the setting: the same first five letters, or, for a name
+    printed shortened to four letters (TEMP, FREQ), the word it shortens ("temperature")."""
+    return word[:5] == name[:5] or (len(name) == 4 and word.startswith(name))

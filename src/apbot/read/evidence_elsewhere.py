@@ -68,7 +68,8 @@ class ElsewhereReader(ListReader):
                 best, best_prio, ev.values_at = lettered[0], 2.4, lettered[1]
         if best_prio < 1.85:  # "Drying-time settings available: 10 · 20 · 30 · 60 min."
             for i, unit in enumerate(units):
-                led = None if _aside(units, i) else self._led_list(unit, tokens)
+                before = units[i - 1] if i and units[i - 1].line == unit.line else None
+                led = None if _aside(units, i) else self._led_list(unit, tokens, before)
                 if led and not _keyish(led, others, own):
                     best, best_prio, ev.values_at = led, 1.85, i
                     break

@@ -345,7 +345,16 @@ class ListReader(OwnWords):
                 return items
         return []
 
-    def _led_list(self, unit: Unit, tokens: list[str]) -> list[str] | None:
+    def _key_named(self, unit: Unit | None, tokens: list[str]) -> bool:
+        """Whether the sentence prints the key's own name."""
+        labels = [self.labels[t].text for t in tokens if t in self.labels and self.labels[t].text]
+        return unit is not None and any(
+            re.search(rf"(?<!\w){re.escape(label)}(?!\w)", unit.text) for label in labels
+        )
+
+    def _led_list(
+        self, unit: Unit, tokens: list[str], before: Unit | None = None
+    ) -> list[str] | None:
         """A list after a colon in a sentence that starts by naming the setting ("Drying-time
         settings available: …" for DRY TIME, "Timer steps: …" for TIMER), or in the next cell
         of a table row that does (a specifications table: "| Water levels | 22, 26 … 58 L |")."""
@@ -359,7 +368,14 @@ class ListReader(OwnWords):
                     return items
             return None
         m = re.match(r"\s*([^:.;]{3,50}):(?!\d)\s*(.+)", unit.text)  # ("TIMER 0:10": a time)
-        if not m or not self._names_setting(words(m.group(1)), tokens):
+        if not m:
+            return None
+        # "FREQ: selects how often to water. Options are: daily, …": choices said right after
+        # the sentence naming the key, in the same line, are that key's
+        generic = bool(_CHOICES_LEAD.fullmatch(m.group(1).strip())) and self._key_named(
+            before, tokens
+        )
+        if not generic and not self._names_setting(words(m.group(1)), tokens):
             return None
         found = find_list(unit.text)
         items = found[0] if found else bare_list(m.group(2))
@@ -375,7 +391,8 @@ class ListReader(OwnWords):
                     return
         for i in self.context(tokens):
             m = re.search(
-                r"\b(?:(?-i:(?!STARTS?\b))starts?|default|factory|initially|normally|delivered)\b"
+                r"\b(?:(?-i:(?!STARTS?\b))starts?|default|factory|initially|normally|delivered"
+                r"|on delivery|out of the box|as supplied|unpack(?:ed|ing)?)\b"
                 r"(.*)",  # (the word, not the key: "▶ START")
                 self.manual.units[i].text,
                 re.I,
@@ -386,6 +403,13 @@ class ListReader(OwnWords):
                     if re.search(rf"\b{re.escape(v)}\b", said, re.I):
                         ev.initial, ev.initial_at = v, i
                         return
+
+
+# a lead naming no setting, only that choices follow: "Options are:", "The choices are:"
+_CHOICES_LEAD = re.compile(
+    r"(?:the\s+)?(?:available\s+)?(?:options|choices|settings|positions)(?:\s+(?:are|available))?",
+    re.I,
+)
 
 
 # a value's own bracket saying it is where the setting starts: "(start setting)", "(default)",

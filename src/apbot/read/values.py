@@ -54,7 +54,7 @@ STEP_RE = re.compile(
     rf"(?:in\s+({NUM})\s*-?\s*({UNIT})?\s*(?:steps|increments|stages|units)(?!\s+of\b)"
     rf"|(?:steps?|increments?|units?)\s+of\s+({NUM})\s*({UNIT})?"
     rf"|(?:each|every)\s+(?:press|touch|turn|click|tap|step)[^.;]*?"
-    rf"(?:adds?|by|changes?[^.;]*?by|raises?|moves?[^.;]*?by)\s+(?:an?\s+|another\s+)?({NUM})?\s*({UNIT})(?!\w)"
+    rf"(?:adds?|removes?|subtracts?|by|changes?[^.;]*?by|raises?|moves?[^.;]*?by)\s+(?:an?\s+|another\s+)?({NUM})?\s*({UNIT})(?!\w)"
     # "Each press moves the start time one hour later": the step, said as how far it moves
     rf"|(?:each|every)\s+(?:press|touch|turn|click|tap)\s+moves?\s+(?:the\s+|it\s+)?(?:[a-z]+\s+){{0,2}}?"
     rf"({NUM})\s*({UNIT})\s+(?:later|earlier|forward|ahead|back)\b)",
@@ -394,9 +394,27 @@ _KEYED_MIN_SEC_RE = re.compile(
 _BARE_STEPS_RE = re.compile(rf"(?<![\w-])({NUM})-({UNIT})\s+(?:steps|increments)\b", re.I)
 
 
+# "from 35 °C to 70 °C, 5 degrees at a time": the step, said as how much goes at once (not
+# a hold's fast steps: "hold for 2 s to move 10 minutes at a time", "2 s: raise 5 °F at a time")
+_AT_A_TIME_RE = re.compile(rf"\b({NUM})\s*({UNIT})\s+at\s+a\s+time\b", re.I)
+# "Pressing TEMP ▲ or TEMP ▼ moves it by 5 °C": a press said once, what it changes said by how
+# much (without "each"/"every")
+_PRESSING_BY_RE = re.compile(
+    rf"\b(?:pressing|touching|tapping|a\s+(?:press|touch|tap)\s+(?:of|on))\b[^.;]{{0,40}}?"
+    rf"\b(?:raises?|lowers?|moves?|changes?|increases?|decreases?|adjusts?|shifts?)\b[^.;]{{0,20}}?"
+    rf"\bby\s+({NUM})\s*({UNIT})(?!\w)",
+    re.I,
+)
+_HELD_RE = re.compile(
+    r"\b(?:hold|held|holding|keep|fast|faster|quick|quickly|rapid)\b|\d\s*s\b", re.I
+)
+
+
 def find_step(text: str) -> tuple[float, str] | None:
     """A step size: (number, canonical unit)."""
     per = PER_RE.search(text)
+    if per is None and not _HELD_RE.search(text):
+        per = _AT_A_TIME_RE.search(text)
     if per and number(per.group(1)):
         return number(per.group(1)) or 1.0, unit_name(per.group(2))
     m = STEP_RE.search(text)
@@ -411,6 +429,9 @@ def find_step(text: str) -> tuple[float, str] | None:
             return 1.0, unit
         if _KEYED_MIN_SEC_RE.search(text):
             return 1.0, "s"
+        pressing = None if _HELD_RE.search(text) else _PRESSING_BY_RE.search(text)
+        if pressing and (value := number(pressing.group(1))):
+            return value, unit_name(pressing.group(2))
         return None
     groups = m.groups()
     if m.group(0).lower().endswith(("units", "stages")) and not groups[1]:
@@ -426,10 +447,12 @@ def find_step(text: str) -> tuple[float, str] | None:
     return None
 
 
-def find_initial(text: str) -> tuple[float, str] | None:
+def find_initial(text: str, more: str = "") -> tuple[float, str] | None:
+    """A start value said in the text: (number, canonical unit); ``more`` adds ways of
+    saying it."""
     m = re.search(
-        rf"\b(?:default|factory setting|preset|standard|starts? (?:at|on)|initially|delivered)\b"
-        rf"[^.;]*?"
+        rf"\b(?:default|factory setting|preset|standard|starts? (?:at|on)|initially|delivered"
+        rf"{more})\b[^.;]*?"
         rf"({NUM})\s*({UNIT})?(?![\w:])",
         text,
         re.IGNORECASE,
