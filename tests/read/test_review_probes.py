@@ -33,7 +33,7 @@ def test_a_knob_with_zero_positions_is_read_without_a_list() -> None:
 def test_a_counted_knob_in_words_takes_the_row_of_that_many_names() -> None:
     text = "# T\n\nThe MODE knob has three positions.\n\nDRY · STEAM · GRILL\n"
     model = read_manual(text, KNOB).model
-    assert model.variables["mode_knob"].values == ["dry", "steam", "grill"]
+    assert model.variables["mode"].values == ["dry", "steam", "grill"]
 
 
 _COUNT = st.sampled_from(["zero", "0", "00", "one", "nineteen", "12", "99", "no", "a"])
@@ -75,14 +75,14 @@ TIMER_ACTIONS = ["turn_timer_knob_clockwise", "turn_timer_knob_counterclockwise"
 )
 def test_a_dial_marked_minute_by_minute_up_to_a_bound_has_every_minute_there(said: str) -> None:
     model = read_manual(TIMER_DIAL.format(said=said), TIMER_ACTIONS).model
-    timer = model.variables["timer_knob"]
+    timer = model.variables["timer"]
     assert timer.ranges[0] == ("00:00:00", "00:05:00", 60)
 
 
 def test_a_minute_counted_down_is_no_minute_by_minute_dial() -> None:
     said = "The display counts each minute down."
     model = read_manual(TIMER_DIAL.format(said=said), TIMER_ACTIONS).model
-    assert model.variables["timer_knob"].ranges[0][2] == 300
+    assert model.variables["timer"].ranges[0][2] == 300
 
 
 HOB = """# Hob
