@@ -1,0 +1,88 @@
+"""Rules of the set13 session, each on a small manual of our own in words unlike the manuals
+that showed the need: a choice's name cell carrying its lamp's sign, a step or factory cell
+carrying its unit, a bare "hold" among a key legend's uses, and a cleaner's "Cleaning modes"
+heading that is no care section."""
+
+from __future__ import annotations
+
+from apbot.read import read_manual
+
+# a milk frother: a choice cell printed with its lamp's sign ("LATTE ◐"), per-choice ranges,
+# and step / factory cells that carry the unit
+FROTHER = """# Milk frother
+
+## Keys
+
+| Key | Use |
+|---|---|
+| DRINK | Picks the drink: LATTE, CAPPU, COCOA, one after the other. |
+| + / - | Warmer or cooler. |
+
+## Temperature per drink
+
+| Drink | Range | Step | Factory setting |
+|---|---|---|---|
+| LATTE ◐ | 50 – 65 °C | 5 °C | 60 °C |
+| CAPPU ◑ | 55 – 70 °C | 5 °C | 65 °C |
+| COCOA ● | 60 – 80 °C | 5 °C | 70 °C |
+"""
+FROTHER_ACTIONS = ["press_drink", "press_plus", "press_minus"]
+
+
+def test_a_choice_cell_with_its_lamp_sign_still_names_the_choice() -> None:
+    model = read_manual(FROTHER, FROTHER_ACTIONS).model
+    temps = [v for v in model.variables.values() if v.depends_on == "drink"]
+    assert temps and temps[0].depends_on is not None
+    cases = temps[0].cases
+    assert tuple(cases["cocoa"].ranges[0][:2]) == (60, 80)
+
+
+def test_step_and_factory_cells_may_carry_their_unit() -> None:
+    model = read_manual(FROTHER, FROTHER_ACTIONS).model
+    temps = [v for v in model.variables.values() if v.depends_on == "drink"]
+    latte = temps[0].cases["latte"]
+    assert latte.ranges[0][2] == 5
+    assert latte.initial == 60
+
+
+# a fan heater: the key's legend gives one use per gesture, the hold's use a noun after "hold"
+HEATER = """# Fan heater
+
+## The panel
+
+1. POWER – switches the heater on and off.
+2. FAN (tap: fan speed; hold 2 seconds: eco timer)
+
+## Fan speed
+
+Each tap of FAN moves on: LOW → MID → HIGH → LOW.
+"""
+HEATER_ACTIONS = ["press_power", "press_fan", "hold_fan"]
+
+
+def test_a_bare_hold_among_the_legend_uses_names_the_held_setting() -> None:
+    model = read_manual(HEATER, HEATER_ACTIONS).model
+    held = [s.variable for s in model.features.get("set_eco_timer", [])]
+    assert "eco_timer" in held, list(model.features)
+
+
+# a window-cleaning robot: its settings under a heading "Cleaning modes", which is operation
+WINDOW_ROBOT = """# Window robot
+
+## Cleaning modes
+
+Press PATH to change the path. The paths follow each other in a ring:
+
+ZIGZAG → SPIRAL → FRAME → ZIGZAG …
+
+## Cleaning and care
+
+Wipe the pads with a damp cloth.
+"""
+WINDOW_ACTIONS = ["press_path"]
+
+
+def test_a_cleaning_modes_heading_is_not_a_care_section() -> None:
+    model = read_manual(WINDOW_ROBOT, WINDOW_ACTIONS).model
+    path = model.variables["path"]
+    assert path.values == ["zigzag", "spiral", "frame"]
