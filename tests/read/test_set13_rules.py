@@ -15,16 +15,18 @@ FROTHER = """# Milk frother
 
 | Key | Use |
 |---|---|
-| DRINK | Picks the drink: LATTE, CAPPU, COCOA, one after the other. |
+| DRINK | Picks the drink. |
 | + / - | Warmer or cooler. |
+
+Each press of DRINK: LATTE → CAPPU → COCOA → LATTE.
 
 ## Temperature per drink
 
 | Drink | Range | Step | Factory setting |
 |---|---|---|---|
-| LATTE ◐ | 50 – 65 °C | 5 °C | 60 °C |
-| CAPPU ◑ | 55 – 70 °C | 5 °C | 65 °C |
-| COCOA ● | 60 – 80 °C | 5 °C | 70 °C |
+| LATTE ~ | 50 – 65 °C | 5 °C | 60 °C |
+| CAPPU ≈ | 55 – 70 °C | 5 °C | 65 °C |
+| COCOA ≋ | 60 – 80 °C | 5 °C | 70 °C |
 """
 FROTHER_ACTIONS = ["press_drink", "press_plus", "press_minus"]
 
@@ -86,3 +88,51 @@ def test_a_cleaning_modes_heading_is_not_a_care_section() -> None:
     model = read_manual(WINDOW_ROBOT, WINDOW_ACTIONS).model
     path = model.variables["path"]
     assert path.values == ["zigzag", "spiral", "frame"]
+
+
+# a desk fan: TIMER is touched for the oscillation and held for the sleep timer, each job in a
+# section of its own, the held job's list told before the key is named
+DESK_FAN = """# Desk fan
+
+## Swing
+
+Touch TIMER to change the swing: OFF → NARROW → WIDE → OFF.
+
+## Sleep timer
+
+The fan can stop by itself after a while:
+
+2 h → 4 h → 8 h → 2 h …
+
+Hold TIMER for 2 seconds; each further hold moves to the next time.
+
+## Settings
+
+As delivered, the swing is NARROW.
+"""
+DESK_FAN_ACTIONS = ["press_timer", "hold_timer"]
+
+
+def test_a_list_in_a_section_where_the_key_is_only_held_is_the_holds() -> None:
+    model = read_manual(DESK_FAN, DESK_FAN_ACTIONS).model
+    held = [s.variable for f in model.features.values() for s in f if "hold_timer" in s.actions]
+    assert held and held[0] is not None
+    spec = model.variables[held[0]]
+    lows = [r[0] for r in spec.ranges or []]
+    assert lows and lows[0] in (2, "02:00:00"), spec
+
+
+# a heated blanket: its start values told in a sentence about how it comes
+BLANKET = """# Heated blanket
+
+## Zones
+
+Each press of ZONE moves on: FEET → BODY → FULL → FEET.
+
+On delivery the zone is BODY.
+"""
+
+
+def test_a_sentence_about_how_it_comes_gives_the_start_value() -> None:
+    model = read_manual(BLANKET, ["press_zone"]).model
+    assert model.variables["zone"].initial == "body"
