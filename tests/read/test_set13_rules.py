@@ -136,3 +136,32 @@ On delivery the zone is BODY.
 def test_a_sentence_about_how_it_comes_gives_the_start_value() -> None:
     model = read_manual(BLANKET, ["press_zone"]).model
     assert model.variables["zone"].initial == "body"
+
+
+# a power recliner: a guide's row gives a span in passing before the table of each part's range
+RECLINER = """# Power recliner
+
+## Comfort guide
+
+| Activity | Back | How |
+|---|---|---|
+| Reading | 110–120° | press BACK + a few times |
+| Napping | 140–150° | hold BACK + |
+
+## Moving the back and the legs
+
+| Adjustment | Range | Each press |
+|---|---|---|
+| Back (BACK) | 100° – 160° | 10° |
+| Legs (LEGS) | 0° – 80° | 10° |
+
+Press BACK + or BACK - to move the back by 10 degrees.
+"""
+RECLINER_ACTIONS = ["press_back_plus", "press_back_minus", "press_legs_plus", "press_legs_minus"]
+
+
+def test_a_settings_own_row_of_a_range_table_gives_its_range() -> None:
+    model = read_manual(RECLINER, RECLINER_ACTIONS).model
+    back = [v for n, v in model.variables.items() if n.startswith("back")]
+    assert back and back[0].ranges, list(model.variables)
+    assert (back[0].ranges[0][0], back[0].ranges[-1][1]) == (100, 160)
