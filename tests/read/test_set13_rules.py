@@ -165,32 +165,3 @@ def test_a_settings_own_row_of_a_range_table_gives_its_range() -> None:
     back = [v for n, v in model.variables.items() if n.startswith("back")]
     assert back and back[0].ranges, list(model.variables)
     assert (back[0].ranges[0][0], back[0].ranges[-1][1]) == (100, 160)
-
-
-# a standing desk: preset keys charted with the height and tilt each one sets
-DESK = """# Standing desk
-
-## Height and tilt
-
-Press HEIGHT + or HEIGHT - to move the top between 60 and 120 cm, 1 cm per press.
-Press TILT + or TILT - to tilt the top between 0 and 20 degrees, 5 degrees per press.
-
-## One-touch keys
-
-| Key | Height | Tilt |
-|---|---|---|
-| SIT | 72 cm | 0 |
-| STAND | 110 cm | 10 |
-| DRAW | 90 cm | 20 |
-"""
-DESK_ACTIONS = ["press_height_plus", "press_height_minus", "press_tilt_plus", "press_tilt_minus",
-                "press_sit", "press_stand", "press_draw"]  # fmt: skip
-
-
-def test_charted_preset_keys_set_the_settings_of_their_row() -> None:
-    model = read_manual(DESK, DESK_ACTIONS).model
-    steps = [s for f in model.features.values() for s in f if s.actions == ["press_stand"]]
-    assert steps, list(model.features)
-    told = {steps[0].variable: steps[0].effect, **(steps[0].set or {})}
-    assert "stand" not in model.variables
-    assert any(getattr(v, "to", None) == 110 for v in told.values()), told

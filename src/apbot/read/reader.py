@@ -37,7 +37,6 @@ from apbot.read.initials import read_initials
 from apbot.read.labels import find_labels
 from apbot.read.off_words import read_held_off_words, read_off_words
 from apbot.read.position_charts import read_position_charts
-from apbot.read.preset_keys import read_preset_keys
 from apbot.read.range_codes import read_range_codes
 from apbot.read.report import Note, Report
 from apbot.read.roles import assign
@@ -91,7 +90,6 @@ def read_manual(
     read_held_off_words(builder)
     read_range_codes(builder)
     read_initials(builder)
-    read_preset_keys(builder)
     read_bar_shows(builder)
     read_bracket_shows(builder)
     read_value_codes(builder)  # (after the other display words: only where none was read)
