@@ -327,8 +327,11 @@ def _defaults(
 
 
 def _figure(cell: str) -> float | None:
-    """The one figure a cell gives ("35", "8.0", "0,5"), or None."""
-    m = re.fullmatch(r"\s*(\d+(?:[.,]\d+)?)\s*", cell)
+    """The one figure a cell gives ("35", "8.0", "0,5"), or None; a unit after it is the
+    column's own ("| Step | 10 °C |", "| Factory | 150 °C |")."""
+    m = re.fullmatch(
+        r"\s*(\d+(?:[.,]\d+)?)\s*(?:°\s*[cf]?|%|[a-zμ]{1,3}(?:/[a-z]{1,3})?)?\s*", cell, re.I
+    )
     if not m:
         return None
     value = float(m.group(1).replace(",", "."))

@@ -29,6 +29,9 @@ def _tables(units: list[Unit]) -> list[tuple[tuple[str, ...], list[Unit]]]:
     return out
 
 
+# a sign printed after a name cell: the lamp or symbol that shows the value ("FINE   ~", "ECO ✱")
+_TRAILING_MARK_RE = re.compile(r"(?<=\w)\s+[^\w\s()\[\]]{1,4}$")
+
 _ORDINAL_RE = re.compile(r"\s*(?:no\.?\s*)?\d{1,2}[.)]?\s*", re.I)
 
 
@@ -55,6 +58,7 @@ def _parent_values(cell: str, values: list[str]) -> list[str]:
     for part in re.split(r"\s*(?:,|/|&|\band\b)\s*", _norm(cell)):
         part = re.sub(r"^\d+[.)]?\s*", "", part)
         bare = TRAILING_REMARK_RE.sub("", part)  # "PIZZA (slice)": the name, its picture aside
+        bare = _TRAILING_MARK_RE.sub("", bare)  # "FINE ~", "ECO ✱": the name, its lamp's sign aside
         if part not in values and bare in values:
             part = bare
         if part in values:  # "White" is WHITE even where WHITE QUICK comes first

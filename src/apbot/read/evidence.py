@@ -64,7 +64,7 @@ from apbot.read.shapes import (
     _without_advice,
     is_wait,
 )
-from apbot.read.table_spans import column_span
+from apbot.read.table_spans import column_span, own_range_row
 from apbot.read.text_sections import other_model, surroundings
 from apbot.read.two_choices import two_choices
 from apbot.read.value_lists import named_list
@@ -249,6 +249,13 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
                 ranges = [_rows_span(units, i, r) for r in ranges]
                 if len(ranges) == 1:  # "| Situation | Mode | Pressure |": the whole column's
                     ranges = [column_span(units, i, ranges[0], own_words)]
+            if (
+                ranges
+                and ev.range_at not in (None, i)
+                and own_range_row(unit, own_words)
+                and not own_range_row(units[ev.range_at], own_words)
+            ):
+                ev.ranges, ev.range_at = [], None  # the setting's own row of a range table
             pieces = find_stepped_pieces(told) if not ev.ranges else []
             arrows = find_arrow_pieces(text)  # "1 h → … → 12 h one hour per press 12 h → …"
             if arrows and _fits("s", tokens) and _covers(arrows, ev.ranges):

@@ -40,7 +40,53 @@ def read_initials(b: Builder) -> None:
         if not listed and i + 1 < len(units):
             listed = units[i + 1].text  # the list on the line after the colon
         if _apply(b, listed, i):
-            return
+            break
+    read_delivered(b)
+
+
+# a sentence saying how the appliance comes: "On delivery the hair type is NORMAL.", "When
+# delivered, the remote shows AUTO STD.", "As supplied, the unit is °C."
+_DELIVERED = re.compile(
+    r"^\W*(?:on\s+delivery|(?:when|as)\s+(?:delivered|supplied|shipped)|out\s+of\s+the\s+box"
+    r"|from\s+the\s+factory|ex\s+works)\b[,:]?\s*(?P<rest>[^.;]+)",
+    re.IGNORECASE,
+)
+
+
+def read_delivered(b: Builder) -> None:
+    """Start values said in a sentence about how the appliance comes, for the settings that have
+    none yet, item by item ("cone 04, speed MED, hold 0"): the setting an item names ("the hair
+    type is NORMAL"), or else each word that is a value of exactly one setting ("the remote
+    shows AUTO STD": the mode AUTO, the suction STD)."""
+    for i, unit in enumerate(b.manual.units):
+        m = _DELIVERED.match(unit.text)
+        if m is None or unit.cells:
+            continue
+        for item in re.split(r"\s*(?:·|,|;|\band\b)\s*", m.group("rest")):
+            var = _named_in(b, item)
+            if var is not None:
+                spec = b.variables[var]
+                value = _value(spec, item)
+                if "initial" not in spec and not spec.get("depends_on") and value is not None:
+                    _start(b, var, value, i)
+                continue
+            for token in re.findall(r"[\w.+-]+", item.lower()):
+                owners = [
+                    name
+                    for name, spec in b.variables.items()
+                    if spec.get("type") == "discrete"
+                    and not spec.get("depends_on")
+                    and token in [str(v).lower() for v in spec.get("values") or []]
+                    and token not in ("on", "off")
+                ]
+                if len(owners) == 1 and "initial" not in b.variables[owners[0]]:
+                    values = b.variables[owners[0]]["values"]
+                    _start(b, owners[0], next(v for v in values if str(v).lower() == token), i)
+
+
+def _start(b: Builder, var: str, value: Any, at: int) -> None:
+    b.variables[var]["initial"] = value
+    b.note(f"variables.{var}.initial", f"starts at {value} (as delivered)", at)
 
 
 def _of_a_choice(b: Builder, subject: str) -> bool:

@@ -36,7 +36,7 @@ from apbot.read.roles_fasthold import fold_fast_holds
 from apbot.read.roles_fixed import assign_locks, assign_power, assign_running, standby_only
 from apbot.read.roles_functions import assign_functions, function_keys
 from apbot.read.roles_heldshown import show_held_word
-from apbot.read.roles_heldvalues import list_of_earlier_key, others_list
+from apbot.read.roles_heldvalues import held_section_list, list_of_earlier_key, others_list
 from apbot.read.roles_holdcell import (
     HELD_SECONDS,
     HOLD_CELL,
@@ -200,8 +200,12 @@ def assign(b: Builder) -> None:
         ev = evidence[key.name]
         name = var_name(b, key)
         lab = label_of(b, key.controls[0])
+        held_list = held_section_list(b, key)
+        if held_list:  # "Automatic switch-off: 30 min → 60 min → …" where HAIR TYPE is only held
+            ev = evidence[key.name] = replace(ev, values=held_list[0], values_at=held_list[1])
         if (
-            key.skill == "hold"
+            not held_list
+            and key.skill == "hold"
             and set(words(hold_use(b, key))) & TIME_WORDS
             and (shared_pair or digits or generic_dials)
         ):

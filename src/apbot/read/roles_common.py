@@ -100,9 +100,13 @@ HOLD_USE_RE = re.compile(
 )
 
 
-HOLD_THEN_RE = re.compile(
-    r"\b(?:touch|press|tap|push)\s+(?:and|&)\s+hold(?:\s+(?:for\s+)?\d+(?:[.,]\d+)?\s*"
-    r"(?:s|sec|secs|seconds?))?\s*:\s*([A-Za-z][A-Za-z -]{2,40})",
+HOLD_THEN_RE = re.compile(  # also a bare "hold" opening one of a legend's uses per gesture:
+    # "(short press: hair type; hold 3 seconds: auto-off time)", "(tap: timer, long press: delay)"
+    r"(?:\b(?:touch|press|tap|push)\s+(?:and|&)\s+hold|(?:(?<=[(;,·])|(?<=[(;,·]\s))"
+    r"(?:hold|long\s+press))(?:\s+(?:for\s+)?\d+(?:[.,]\d+)?\s*"
+    r"(?:s|sec|secs|seconds?))?\s*:\s*"
+    r"(?!(?:switch|turn)(?:es|s)?\s+(?:on|off)\b)"  # "hold 3 s: switch off": the appliance itself
+    r"([A-Za-z][A-Za-z -]{2,40})",
     re.IGNORECASE,
 )
 

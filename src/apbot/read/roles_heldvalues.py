@@ -15,6 +15,7 @@ import re
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.roles_holdcell import HOLD_CELL, hold_cells
+from apbot.read.shapes import comes_round
 
 # a short press said as such: "Touch LIGHT", "press MODE briefly"
 _PRESSING = r"(?:press|touch|push|tap)(?:es|ed|ing)?"
@@ -110,3 +111,54 @@ def list_of_earlier_key(b: Builder, key: ActionInfo, at: int | None) -> bool:
         return False
     before = [i for i in named if i < at]
     return bool(before) and own not in named[max(before)]
+
+
+def held_section_list(b: Builder, key: ActionInfo) -> tuple[list[str], int] | None:
+    """The list of a section where this key is only held, for a key also pressed short: a
+    manual gives each job of the key its own section ("Automatic switch-off: 30 min → 60 min →
+    90 min → 30 min …", then "Press and hold HAIR TYPE for 3 seconds"), and there the list is
+    the hold's, wherever it stands in the section, even before the key is named. A section that
+    also presses the key short is the press's (or both keys'): nothing is read from it; a
+    sentence setting the press against the hold ("A short press still changes the type; only
+    the hold sets the time") is about both."""
+    from apbot.read.value_lists import find_list
+
+    if key.skill != "hold" or len(key.controls) != 1 or key.controls[0] not in b.labels:
+        return None
+    if not _twin(b, key):
+        return None
+    label = b.labels[key.controls[0]].text
+    if not label:
+        return None
+    lab = re.escape(label)
+    holds = re.compile(
+        rf"\bhold(?:s|ing)?(?:\s+down)?\s+(?:the\s+)?{lab}(?!\w)"
+        rf"|\b(?:press|touch|push|tap)\s+and\s+hold\s+(?:the\s+)?{lab}(?!\w)",
+        re.I,
+    )
+    presses = re.compile(
+        rf"\b{_PRESSING}\s+(?:of\s+)?(?:the\s+)?{lab}(?!\w)(?!\s+(?:and|to)\s+hold)", re.I
+    )
+    units = b.manual.units
+    sections: dict[str, list[int]] = {}
+    for i, unit in enumerate(units):
+        if unit.heading and unit.text != unit.heading:
+            sections.setdefault(unit.heading, []).append(i)
+    for i in b.labels[key.controls[0]].mentions:
+        heading = units[i].heading
+        if not heading or not holds.search(units[i].text):
+            continue
+        body = sections.get(heading, [])
+        if any(
+            presses.search(units[k].text) and not re.search(r"\bhold", units[k].text, re.I)
+            for k in body
+            if key.controls[0] in {t for t, lb in b.labels.items() if k in lb.mentions}
+        ):
+            continue  # the section presses the key too: not the hold's alone
+        for k in body:
+            if units[k].cells:
+                continue
+            found = find_list(units[k].text)
+            if found and found[1] == "arrows" and comes_round(found[0], units[k].text):
+                return found[0], k
+    return None

@@ -189,7 +189,10 @@ def _row_step(cells: tuple[str, ...], unit: str) -> float | None:
 RUN_RE = re.compile(r"\d+(?:[.,]\d+)?(?:\s*[·•]\s*(?:\|\s*)?\d+(?:[.,]\d+)?){2,}")
 ASIDE_HEADING = re.compile(
     r"\b(?:safety|safeguards?|warnings?|cautions?|precautions?|trouble-?\s?shooting|faults?"
-    r"|fault finding|problems?|error codes?|cleaning|maintenance|warranty|guarantee"
+    r"|fault finding|problems?|error codes?|maintenance|warranty|guarantee"
+    # cleaning the appliance is care; a cleaner's own "Cleaning modes" is what it is set to do
+    r"|cleaning(?!\s+(?:modes?|programm?e?s?|cycles?|levels?|settings?|options?|functions?"
+    r"|power|types?|patterns?|paths?|areas?|zones?|schedules?)\b)"
     r"|disposal|customer)\b"
     # recipes to make by hand ("RECIPES", "Tips and recipes"), not the appliance's own stored
     # ones, which its keys choose ("Automatic recipes: POPCORN → POTATO → …")

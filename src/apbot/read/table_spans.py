@@ -83,3 +83,22 @@ def _table_rows(units: list[Unit], i: int) -> list[Unit]:
     while end + 1 < len(units) and units[end + 1].cells and units[end + 1].header == header:
         end += 1
     return units[start : end + 1]
+
+
+_RANGE_HEAD_RE = re.compile(r"^\W*(?:setting\s+|adjustment\s+|possible\s+)?ranges?\W*$", re.I)
+
+
+def own_range_row(unit: Unit, own: set[str]) -> bool:
+    """A row of a table that gives one setting per row ("| Section | Range | Step |" over
+    "| Head (HEAD) | 0° – 60° | 5° |"): its first cell names the setting by one of its own
+    words and its "Range" column holds a range. The manual's own statement of that setting's
+    limits, above a range read in passing in a guide's row ("| Reflux | 15–20° | FLAT |")."""
+    if not unit.cells or not unit.header or not own:
+        return False
+    if not own & set(words(unit.cells[0])):
+        return False
+    return any(
+        _RANGE_HEAD_RE.match(head) and c < len(unit.cells) and find_ranges(unit.cells[c])
+        for c, head in enumerate(unit.header)
+        if c > 0
+    )
