@@ -173,6 +173,13 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "ebike_display": 3,
     "kitchen_scale": 3,
     "adjustable_bed": 3,
+    # The nineteenth blind set (helper blind22n, 6 December 2026, the 6 December night session):
+    # blind for this round's work.
+    "bp_monitor": 3,
+    "digital_piano": 3,
+    "alarm_keypad": 2,
+    "pill_dispenser": 4,
+    "pet_door": 3,
 }
 
 
