@@ -23,6 +23,7 @@ from apbot.agent.finder_keys import (
     _planned,
     _press_digit,
     _unknown,
+    opposite_key,
     stepping_suspects,
 )
 from apbot.agent.guards import GuardLearner
@@ -457,15 +458,8 @@ class VariableFinder:
         return texts
 
     def _opposite(self, key: str) -> str | None:
-        """The key that walks the other way (``turn_x_ccw`` for ``turn_x_cw``), if the panel
-        has it."""
-        pairs = (("_cw", "_ccw"), ("_up", "_down"), ("_plus", "_minus"), ("_next", "_prev"))
-        offered = self.session.context.actions or tuple(self.session.offered)
-        for forward, backward in pairs:
-            if key.endswith(forward):
-                other = key[: -len(forward)] + backward
-                return other if other in offered else None
-        return None
+        """The key that walks the other way, if the panel has it."""
+        return opposite_key(key, self.session.context.actions or tuple(self.session.offered))
 
 
 __all__ = ["DiscreteVariable", "VariableFinder", "infer_setting"]

@@ -87,3 +87,20 @@ def stepping_suspects(session: Session, roled: Sequence[str], goal_value: Any) -
         and misread_key(model, key, goal_value)
         and not any(v in goal and not is_switch(model, v) for v in adjusted_by(model, key))
     ]
+
+
+def opposite_key(key: str, offered: Sequence[str]) -> str | None:
+    """The key among ``offered`` that walks the other way from ``key`` (``turn_x_ccw`` for
+    ``turn_x_cw``, ``press_vol_down`` for ``press_vol_up``), however the panel spells its
+    names (``press_vol_down_button``); none for a key that is no forward key of a pair."""
+    info = action_info(key)
+    if info.skill == "turn_cw":
+        wanted = ("turn_ccw", info.token)
+    else:
+        pairs = {"up": "down", "plus": "minus", "next": "prev"}
+        *head, last = info.token.split("_")
+        if last not in pairs:
+            return None
+        wanted = (info.skill, "_".join([*head, pairs[last]]))
+    found = [a for a in offered if (action_info(a).skill, action_info(a).token) == wanted]
+    return found[0] if found else None
