@@ -7,7 +7,8 @@ from apbot.model.validate import check_model
 from apbot.model.values import parse_quantity
 from apbot.read import read_manual
 from apbot.read.roles_holdcell import lock_or_appliance
-from apbot.read.values import find_ranges, find_step
+from apbot.read.value_steps import find_step
+from apbot.read.values import find_ranges
 
 # a hedge trimmer: the blade gap set by a knob, in millimetres
 TRIMMER = """

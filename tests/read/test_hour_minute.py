@@ -5,7 +5,7 @@ from __future__ import annotations
 from apbot.model.validate import check_model
 from apbot.read import read_manual
 from apbot.read.goal import parse_instruction
-from apbot.read.values import find_step
+from apbot.read.value_steps import find_step
 
 PORRIDGE_POT = """
 SAFETY NOTES

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from apbot.model.values import parse_hms
 from apbot.read import read_manual
-from apbot.read.values import find_step
+from apbot.read.value_steps import find_step
 
 STEAMER = """Steam Oven SO-4
 

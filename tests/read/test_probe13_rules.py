@@ -70,7 +70,7 @@ a time. Out of the box it is set to 26 °C.
 
 
 def test_a_step_is_said_as_what_each_press_adds_or_removes() -> None:
-    from apbot.read.values import find_step
+    from apbot.read.value_steps import find_step
 
     assert find_step("Every tap adds or removes two minutes.") == (2.0, "min")
     assert find_step("It climbs from 40 to 80 °C, 10 °C at a time.") == (10.0, "°C")

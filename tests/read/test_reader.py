@@ -12,7 +12,8 @@ from apbot.read import ReaderError, read_manual
 from apbot.read.actions import parse_actions
 from apbot.read.evaluate import evaluate, score_reading
 from apbot.read.value_lists import find_list
-from apbot.read.values import find_ranges, find_step
+from apbot.read.value_steps import find_step
+from apbot.read.values import find_ranges
 
 SUITE = load_suite("bundled")
 NINE = {

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from apbot.model.domain import all_values
 from apbot.read import read_manual
-from apbot.read.values import find_step
+from apbot.read.value_steps import find_step
 
 
 def test_by_one_step_is_no_step_of_one_second() -> None:

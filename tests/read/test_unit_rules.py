@@ -159,7 +159,7 @@ def test_a_step_in_half_hour_units_told_by_a_sentence_led_by_the_settings_name()
 
 
 def test_units_without_a_unit_of_measure_are_no_step() -> None:
-    from apbot.read.values import find_step
+    from apbot.read.value_steps import find_step
 
     assert find_step("The delay is set in half-hour units.") == (0.5, "h")
     assert find_step("The filters are sold in 2 units.") is None

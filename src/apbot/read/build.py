@@ -32,13 +32,7 @@ from apbot.read.start_values import on_grid, said_after, start_in, with_said_ste
 from apbot.read.symbol_lamps import symbol_lamp, word_lamp
 from apbot.read.text import Manual
 from apbot.read.value_spans import expand_spans
-from apbot.read.values import (
-    Range,
-    number,
-    rescale,
-    seconds,
-    unit_name,
-)
+from apbot.read.values import Range, number, rescale, seconds, unit_name
 from apbot.read.values_pieces import split_range
 from apbot.read.values_upto import stated_low
 from apbot.read.values_zero import from_zero, zero_told

@@ -18,7 +18,8 @@ from typing import Any
 from apbot.model.values import tidy_number
 from apbot.read.build import Builder
 from apbot.read.goal_unit_cases import UNIT_WORDS
-from apbot.read.values import NUM, find_step, number
+from apbot.read.value_steps import find_step
+from apbot.read.values import NUM, number
 
 _NEAR = 3  # the ranges of one setting per unit stand within this many sentences or rows
 _SPELLED = {"c": r"celsius|centigrade", "f": r"fahrenheit"}  # a scale said by its letter

@@ -68,16 +68,15 @@ from apbot.read.table_spans import column_span, own_range_row
 from apbot.read.text_sections import other_model, surroundings
 from apbot.read.two_choices import two_choices
 from apbot.read.value_lists import named_list
+from apbot.read.value_steps import find_initial, find_step
 from apbot.read.values import (
     EACH_PRESS_RE,
     NUM,
     ON_OFF_RE,
     Range,
     find_bounds,
-    find_initial,
     find_ranges,
     find_shown_hmm,
-    find_step,
     gap_pieces,
     seconds,
 )

@@ -9,7 +9,8 @@ import re
 
 from apbot.read.shapes import _cell_key, _fits
 from apbot.read.text import Unit
-from apbot.read.values import find_step, unit_name
+from apbot.read.value_steps import find_step
+from apbot.read.values import unit_name
 
 
 def _named_only(item: str, text: str) -> bool:

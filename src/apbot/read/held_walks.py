@@ -24,7 +24,8 @@ from apbot.read.code_words import own_lines
 from apbot.read.held_guesses import drop_guess, drop_key_guesses, says
 from apbot.read.roles_fasthold import held_time_step
 from apbot.read.text import Unit
-from apbot.read.values import find_ranges, find_step
+from apbot.read.value_steps import find_step
+from apbot.read.values import find_ranges
 from apbot.read.walk_fields import (
     SAME_WAY_RE,
     code_words,

@@ -16,7 +16,8 @@ from apbot.read.roles_common import numeric_list
 from apbot.read.roles_lists import list_evidence
 from apbot.read.shapes import Evidence
 from apbot.read.value_lists import bare_list, find_list
-from apbot.read.values import Range, find_initial, find_ranges, find_step, seconds, unit_name
+from apbot.read.value_steps import find_initial, find_step
+from apbot.read.values import Range, find_ranges, seconds, unit_name
 
 _OFF_MARK = re.compile(r"^(?:--+|-|off|oFF|OFF)(?:\s*\((?:off|none)\))?$", re.IGNORECASE)
 _ELLIPSIS = re.compile(r"\s*(?:…|\.\.\.)\s*")

@@ -12,7 +12,8 @@ from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.clock_format import twelve_hour_clock
 from apbot.read.roles_common import label_of, var_name
-from apbot.read.values import ON_OFF_RE, find_step
+from apbot.read.value_steps import find_step
+from apbot.read.values import ON_OFF_RE
 
 _HOUR = {"hour", "hours", "hr", "hrs"}
 _MINUTE = {"min", "mins", "minute", "minutes"}

@@ -14,7 +14,8 @@ from apbot.read.list_ellipsis import fill_ellipses
 from apbot.read.roles_common import clock_list, numeric_list, stepped_noun, token_of
 from apbot.read.shapes import Evidence, _fits, _next_table_column
 from apbot.read.text import Unit
-from apbot.read.values import find_ranges, find_step
+from apbot.read.value_steps import find_step
+from apbot.read.values import find_ranges
 from apbot.read.values_labels import seconds_said, whole_minutes_said
 from apbot.read.values_tails import gaps
 

@@ -17,7 +17,7 @@ from apbot.read.build import Builder
 from apbot.read.clock_format import twelve_hour_clock
 from apbot.read.labels import words
 from apbot.read.roles_common import TIME_WORDS, label_of
-from apbot.read.values import find_step
+from apbot.read.value_steps import find_step
 
 _SWITCHED_RE = re.compile(
     r"\bswitch(?:es)?\s+(?:the\s+)?([a-z][\w-]*(?:\s[a-z][\w-]*)?)\s+(?:function\s+)?"

@@ -13,11 +13,8 @@ from apbot.read.fault_tables import fault_table
 from apbot.read.labels import words
 from apbot.read.quantity_units import QUANTITY_FAMILIES, _quantity_units
 from apbot.read.text import Unit
-from apbot.read.values import (
-    Range,
-    find_ranges,
-    find_step,
-)
+from apbot.read.value_steps import find_step
+from apbot.read.values import Range, find_ranges
 
 LAMP_LIST_RE = re.compile(
     r"^\W*(?:the\s+)?(?:[\w-]+\s+){0,2}(?:lamps?|indicators?|symbols?|icons?|LEDs?|lights)\b"

@@ -8,7 +8,8 @@ from __future__ import annotations
 from apbot.model.values import unit_of
 from apbot.read.shapes import Evidence
 from apbot.read.text import Unit
-from apbot.read.values import Range, find_initial, find_step, is_time_unit, rescale, seconds
+from apbot.read.value_steps import find_initial, find_step
+from apbot.read.values import Range, is_time_unit, rescale, seconds
 
 
 def start_in(value: float, said: str, unit: str, as_time: bool) -> float | None:

@@ -4,7 +4,8 @@
 24 hours": the few shapes manuals use to say how far a setting goes and how it moves. Every
 finder returns what it read and nothing it did not (None), so the builder can tell evidence
 from guesses. Lists of named values are in value_lists.py; ranges told in pieces, each with its
-own step (a flattened range table, an arrow chart), in values_stepped.py.
+own step (a flattened range table, an arrow chart), in values_stepped.py; a step or a start
+value said in a sentence ("5 °C per press", "the default is 30 minutes") in value_steps.py.
 """
 
 from __future__ import annotations
@@ -372,95 +373,6 @@ def find_bounds(texts: list[str]) -> Range | None:
         else:
             return None
     return Range(low, high, unit, low) if low < high else None
-
-
-PER_RE = re.compile(
-    rf"\b({NUM})\s*({UNIT})\s+(?:per|for each|each|with each|with every|a)\s+"
-    rf"(?:press|click|turn|touch|detent|step|tap|notch)",
-    re.IGNORECASE,
-)
-
-
-_WHOLE_RE = re.compile(
-    r"\bin (?:whole|full) (degrees?|minutes?|hours?|seconds?)(?:\s+(celsius|fahrenheit))?\b", re.I
-)
-# "Enter the minutes and seconds.", "type the time in minutes and seconds": any second is keyed
-# (a few words apart: "enter the weight, and the oven works out the minutes and seconds" keys
-# a weight)
-_KEYED_MIN_SEC_RE = re.compile(
-    r"\b(?:enter|type|key)(?:s|ed|ing)?\b(?:[\s:]+[\w'-]+){0,5}?[\s:]+minutes\s+and\s+seconds\b",
-    re.I,
-)
-_BARE_STEPS_RE = re.compile(rf"(?<![\w-])({NUM})-({UNIT})\s+(?:steps|increments)\b", re.I)
-
-
-# "from 35 °C to 70 °C, 5 degrees at a time": the step, said as how much goes at once (not
-# a hold's fast steps: "hold for 2 s to move 10 minutes at a time", "2 s: raise 5 °F at a time")
-_AT_A_TIME_RE = re.compile(rf"\b({NUM})\s*({UNIT})\s+at\s+a\s+time\b", re.I)
-# "Pressing TEMP ▲ or TEMP ▼ moves it by 5 °C": a press said once, what it changes said by how
-# much (without "each"/"every")
-_PRESSING_BY_RE = re.compile(
-    rf"\b(?:pressing|touching|tapping|a\s+(?:press|touch|tap)\s+(?:of|on))\b[^.;]{{0,40}}?"
-    rf"\b(?:raises?|lowers?|moves?|changes?|increases?|decreases?|adjusts?|shifts?)\b[^.;]{{0,20}}?"
-    rf"\bby\s+({NUM})\s*({UNIT})(?!\w)",
-    re.I,
-)
-_HELD_RE = re.compile(
-    r"\b(?:hold|held|holding|keep|fast|faster|quick|quickly|rapid)\b|\d\s*s\b", re.I
-)
-
-
-def find_step(text: str) -> tuple[float, str] | None:
-    """A step size: (number, canonical unit)."""
-    per = PER_RE.search(text)
-    if per is None and not _HELD_RE.search(text):
-        per = _AT_A_TIME_RE.search(text)
-    if per and number(per.group(1)):
-        return number(per.group(1)) or 1.0, unit_name(per.group(2))
-    m = STEP_RE.search(text)
-    if not m:
-        bare = _BARE_STEPS_RE.search(text)  # "| up to 15 h ahead, ten-minute steps |"
-        if bare and number(bare.group(1)):
-            return number(bare.group(1)) or 1.0, unit_name(bare.group(2))
-        whole = _WHOLE_RE.search(text)  # "entered in whole degrees Celsius": one at a time
-        if whole:
-            scale = (whole.group(2) or "").lower()
-            unit = {"fahrenheit": "°F", "celsius": "°C"}.get(scale) or unit_name(whole.group(1))
-            return 1.0, unit
-        if _KEYED_MIN_SEC_RE.search(text):
-            return 1.0, "s"
-        pressing = None if _HELD_RE.search(text) else _PRESSING_BY_RE.search(text)
-        if pressing and (value := number(pressing.group(1))):
-            return value, unit_name(pressing.group(2))
-        return None
-    groups = m.groups()
-    if m.group(0).lower().endswith(("units", "stages")) and not groups[1]:
-        return None  # "in half-hour units" is a step, "sold in 2 units", "in two stages" not
-    for i in (0, 2, 4, 6):
-        raw, unit = groups[i], groups[i + 1]
-        if raw is None and i == 4 and unit:
-            raw = "1"
-        if raw is not None:
-            value = number(raw)
-            if value:
-                return value, unit_name(unit)
-    return None
-
-
-def find_initial(text: str, more: str = "") -> tuple[float, str] | None:
-    """A start value said in the text: (number, canonical unit); ``more`` adds ways of
-    saying it."""
-    m = re.search(
-        rf"\b(?:default|factory setting|preset|standard|starts? (?:at|on)|initially|delivered"
-        rf"{more})\b[^.;]*?"
-        rf"({NUM})\s*({UNIT})?(?![\w:])",
-        text,
-        re.IGNORECASE,
-    )
-    if not m:
-        return None
-    value = number(m.group(1))
-    return (value, unit_name(m.group(2))) if value is not None else None
 
 
 ON_OFF_RE = re.compile(

@@ -20,7 +20,8 @@ from apbot.model.values import format_hms
 from apbot.read.roles_lists import _nums, list_range, list_step
 from apbot.read.shapes import Evidence
 from apbot.read.value_lists import bare_list, find_list
-from apbot.read.values import NUM, UNIT, find_ranges, find_step, gap_pieces, unit_name
+from apbot.read.value_steps import find_step
+from apbot.read.values import NUM, UNIT, find_ranges, gap_pieces, unit_name
 
 # "after 23:30 comes 00:00", "After 23:45 the time continues at 00:00": the last time of a day
 _DAY_WRAP_RE = re.compile(
