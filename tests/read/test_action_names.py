@@ -27,6 +27,8 @@ from benchmarks.renamed_actions import rename_map, renamed_model
         ("turn_timer_dial_clockwise", "turn_cw", ("timer",), None),
         ("turn_timer_dial_counterclockwise", "turn_ccw", ("timer",), None),
         ("rotate_temp_knob_left", "turn_ccw", ("temp",), None),
+        ("turn_dial_counter_clockwise", "turn_ccw", ("dial",), None),
+        ("turn_timer_knob_anti_clockwise", "turn_ccw", ("timer",), None),
         ("turn_dial_clockwise", "turn_cw", ("dial",), None),
         ("press_7_button", "press", ("key_7",), 7),
         ("press_button", "press", ("button",), None),  # nothing but the kind: it stays

@@ -109,6 +109,8 @@ def _without_kind(rest: str, verb: str) -> str:
     ``menu``; a turn's ``timer_dial_clockwise`` → ``timer_clockwise``); a name that is only
     the kind (``press_button``, ``turn_dial_cw``) stays."""
     if verb in TURN_VERBS:
+        # "counter_clockwise", "anti_clockwise": one way written as two words
+        rest = re.sub(r"(?:counter|anti)_clockwise$", "counterclockwise", rest)
         parts = rest.split("_")
         way = parts[-1] if len(parts) > 1 and parts[-1] in (*CW_WORDS, *CCW_WORDS) else ""
         base = _without_kind("_".join(parts[:-1]) if way else rest, "")

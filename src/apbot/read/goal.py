@@ -167,7 +167,7 @@ def parse_instruction(
     place_twins(view, text, goal, where)
     scheduled_states(view, text, goal, where)
     entry_switches(view, goal)
-    closing_switches(view, goal)
+    closing_switches(view, text, goal)
     gated_switches(view, text, goal)
     preset_companions(view, text, goal, where)
     set_by_hand(view, text, goal)

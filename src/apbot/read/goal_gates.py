@@ -28,10 +28,11 @@ def entry_switches(view: Model, goal: Goal) -> None:
                     goal[info.name] = info.on
 
 
-def closing_switches(view: Model, goal: Goal) -> None:
+def closing_switches(view: Model, text: Text, goal: Goal) -> None:
     """A setting whose procedure ends by turning a switch on (a schedule's hour and minute,
     then OK arms the schedule) implies that switch on: the confirmation is part of setting it.
-    Not when the instruction already gave the switch a value."""
+    Not when the instruction already gave the switch a value, nor when a word of the switch is
+    said negated ("set the alarm hour to 6 but leave the alarm off")."""
     for _feature, steps in view.model.features.items():
         for index, step in enumerate(steps):
             if step.variable not in goal or view.infos[step.variable].role != "setting":
@@ -41,8 +42,10 @@ def closing_switches(view: Model, goal: Goal) -> None:
                 if info is None or info.role != "switch" or info.name in goal:
                     continue
                 effects = [effect for _a, effect in step_effects(later)]
-                if effects and all(
-                    isinstance(e, GoTo) and str(e.to) == str(info.on) for e in effects
+                if (
+                    effects
+                    and all(isinstance(e, GoTo) and str(e.to) == str(info.on) for e in effects)
+                    and not _said_negated(text, info)
                 ):
                     goal[info.name] = info.on
 

@@ -288,6 +288,11 @@ LOWEST = frozenset(
         "gentlest",
         "softest",
         "dimmest",
+        "faintest",
+        "mildest",
+        "subtlest",
+        "slightest",
+        "tiniest",
     }
 )
 HIGHEST = frozenset(
