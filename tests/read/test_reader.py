@@ -33,10 +33,14 @@ def test_every_bundled_manual_reads_into_a_checked_model(appliance):
 
 
 def test_reading_all_manuals_is_fast():
-    start = time.process_time()  # CPU time: other processes on a shared machine do not count
+    """The issue's bound (all 75 manuals in under 15 s) as a guard against a slow rule; the
+    figure itself is `benchmarks/read_time.py`'s. CPU time, so other processes on a shared
+    machine count less — though not nothing: a bound of 10 s failed once at 10.9 s on code
+    that reads in 12.4 s wall beside 13.2 s for the code before it."""
+    start = time.process_time()
     for a in BUNDLED:
         read_manual(a.manual, list(a.model.actions))
-    assert time.process_time() - start < 10
+    assert time.process_time() - start < 15
 
 
 def test_sources_point_at_lines_that_say_it():
