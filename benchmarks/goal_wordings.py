@@ -18,19 +18,8 @@ from collections.abc import Callable
 
 from apbot.bench.goal_eval import GoalScore, evaluate_goals
 from apbot.bench.runner import cached_suite
+from apbot.bench.suite import READER_DEVELOPMENT_CATEGORIES
 from apbot.read.goal import parse_instruction
-
-DEVELOPMENT = [
-    "air_fryer",
-    "bottle_washer",
-    "bread_maker",
-    "dehumidifier",
-    "induction_cooker",
-    "kettle",
-    "microwave",
-    "rice_cooker",
-    "washing_machine",
-]
 
 
 def _low(text: str) -> str:
@@ -63,7 +52,7 @@ def main(argv: list[str] | None = None) -> None:
     parser = argparse.ArgumentParser(
         description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
     )
-    parser.add_argument("--categories", default=",".join(DEVELOPMENT))
+    parser.add_argument("--categories", default=",".join(READER_DEVELOPMENT_CATEGORIES))
     parser.add_argument("--show", default="", choices=["", *WORDINGS], help="list its losses")
     args = parser.parse_args(argv)
     categories = [c for c in args.categories.split(",") if c]

@@ -35,20 +35,9 @@ from typing import Any
 import yaml
 
 from apbot.bench.runner import BenchOptions, run_benchmark
-from apbot.bench.suite import SuiteAppliance, load_suite
+from apbot.bench.suite import READER_DEVELOPMENT_CATEGORIES, SuiteAppliance, load_suite
 from apbot.read.evaluate import evaluate
 
-DEVELOPMENT = (
-    "air_fryer",
-    "bottle_washer",
-    "bread_maker",
-    "dehumidifier",
-    "induction_cooker",
-    "kettle",
-    "microwave",
-    "rice_cooker",
-    "washing_machine",
-)
 TURN_ENDS = ("cw", "ccw", "clockwise", "anticlockwise", "counterclockwise", "left", "right")
 STYLES = ("button", "key")
 METRICS = ("variables", "discrete_values", "numeric_ranges", "placements", "features")
@@ -162,7 +151,11 @@ def main(argv: list[str] | None = None) -> dict[str, Any]:
     chosen = [
         a
         for a in suite.appliances
-        if (a.id in wanted if wanted else args.suite != "bundled" or a.category in DEVELOPMENT)
+        if (
+            a.id in wanted
+            if wanted
+            else args.suite != "bundled" or a.category in READER_DEVELOPMENT_CATEGORIES
+        )
     ]
     if not chosen:
         print("error: no appliance chosen", file=sys.stderr)

@@ -37,10 +37,14 @@ def _unknown(done: Executed) -> bool:
     )
 
 
+# the last word of a stepping pair's forward key's name → its backward key's (▲ ▼, + −)
+_PAIRS = {"up": "down", "plus": "minus", "next": "prev"}
+
+
 def _is_reverse(action: str) -> bool:
     """The backward key of a pair: the finder walks the forward one."""
     info = action_info(action)
-    return info.skill == "turn_ccw" or f"_{info.token}".endswith(("_down", "_minus", "_prev"))
+    return info.skill == "turn_ccw" or info.token.rsplit("_", 1)[-1] in _PAIRS.values()
 
 
 def _press_digit(session: Session, action: str) -> Executed:
@@ -67,7 +71,7 @@ def _main(text: str, lamps: set[str]) -> str:
 def _is_forward(action: str) -> bool:
     """The forward key of a stepping pair (▲, +, a dial turned clockwise), as named."""
     info = action_info(action)
-    return info.skill == "turn_cw" or f"_{info.token}".endswith(("_up", "_plus", "_next"))
+    return info.skill == "turn_cw" or info.token.rsplit("_", 1)[-1] in _PAIRS
 
 
 def stepping_suspects(session: Session, roled: Sequence[str], goal_value: Any) -> list[str]:
@@ -97,10 +101,9 @@ def opposite_key(key: str, offered: Sequence[str]) -> str | None:
     if info.skill == "turn_cw":
         wanted = ("turn_ccw", info.token)
     else:
-        pairs = {"up": "down", "plus": "minus", "next": "prev"}
         *head, last = info.token.split("_")
-        if last not in pairs:
+        if last not in _PAIRS:
             return None
-        wanted = (info.skill, "_".join([*head, pairs[last]]))
+        wanted = (info.skill, "_".join([*head, _PAIRS[last]]))
     found = [a for a in offered if (action_info(a).skill, action_info(a).token) == wanted]
     return found[0] if found else None

@@ -24,30 +24,12 @@ from typing import Any
 from apbot.agent.unread import _asks_nothing, _goal_numbers, _held
 from apbot.model.schema import ApplianceModel
 from apbot.read.goal_error import GoalParseError
+from apbot.read.goal_open import KIND_NAMES, quantity_kind
 from apbot.read.goal_remarks import without_remarks
 from apbot.read.goal_said import as_said, in_days
 from apbot.read.goal_text import Text
 from apbot.read.goal_view import model_view
-from apbot.read.numbers import Mention, find_mentions
-
-KIND_NAMES = {
-    "time": "time",
-    "mass": "weight",
-    "temperature": "temperature",
-    "volume": "volume",
-    "power": "wattage",
-    "length": "length",
-}
-"""The name of an entry after the kind of quantity said (the parser's open entries' names)."""
-
-
-def _kind(mention: Mention) -> str | None:
-    """What a quantity with a unit measures (None: a bare number, a clock, a count)."""
-    if mention.kind == "duration":
-        return "time"
-    if mention.kind == "fahrenheit":
-        return "temperature"
-    return mention.dimension if mention.kind == "quantity" else None
+from apbot.read.numbers import find_mentions
 
 
 def said_entries(
@@ -73,8 +55,8 @@ def said_entries(
     taken = set(belief.variables) | set(goal)
     entries: dict[str, Any] = {}
     for mention in find_mentions(tokens):
-        kind = _kind(mention)
-        if kind is None or kind not in KIND_NAMES:
+        kind = quantity_kind(mention)  # a number of things ("3 cups") is no quantity here
+        if kind is None or kind == "count" or kind not in KIND_NAMES:
             continue
         if _asks_nothing(mention, tokens) or _held(mention, tokens, held):
             continue

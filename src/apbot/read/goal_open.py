@@ -104,10 +104,10 @@ def open_entries(
         if name is None and stepping and mention.kind == "number":
             name = _level_noun(text, mention, known, printed)
         if name is None and not _of_its_kind(view, mention, text):
-            name = _KIND_NAMES.get(_kind(mention) or "")
+            name = KIND_NAMES.get(quantity_kind(mention) or "")
             if name == "time" and in_days(text, mention):
                 name = "days"  # a number of days away, not a cooking time ("48 hours" is one)
-            count = _kind(mention) == "count"
+            count = quantity_kind(mention) == "count"
             if name is not None and not roleless:  # no key to try: the programme's next step
                 chosen = _chosen_beside(view, text, mention, goal, where, count)
                 name = None if chosen is None else f"{chosen}_{name}"
@@ -185,7 +185,7 @@ def _value_word(text: Text, k: int, known: set[str], taken: set[int]) -> bool:
     )
 
 
-_KIND_NAMES = {
+KIND_NAMES = {
     "time": "time",
     "mass": "weight",
     "temperature": "temperature",
@@ -196,7 +196,7 @@ _KIND_NAMES = {
 }
 
 
-def _kind(mention: Mention) -> str | None:
+def quantity_kind(mention: Mention) -> str | None:
     """What a quantity with a unit measures (None: a bare number, a clock time)."""
     if mention.kind == "duration":
         return "time"
@@ -211,7 +211,7 @@ def _of_its_kind(view: Model, mention: Mention, text: Text) -> bool:
     """The belief has a setting that takes quantities of this kind, or one its words name
     right there ("the lowest power, 200 W": a restatement of a level the belief has), or the
     mention has no kind: the parser's own steps gave it, or judged it a remark."""
-    kind = _kind(mention)
+    kind = quantity_kind(mention)
     if kind is None:
         return True
     for info in view.infos.values():
@@ -288,7 +288,7 @@ def _misread_noun(
     if text.word(mention.start - 1) == "for":  # "soak for 8 hours"
         near.append(mention.start - 2)
     beside = len(near)
-    if _kind(mention) is not None:  # a quantity with its unit, not a bare number
+    if quantity_kind(mention) is not None:  # a quantity with its unit, not a bare number
         near += _in_clause(text, mention)
     for at, k in enumerate(near):
         noun = _noun_at(text, k, roled)
@@ -305,7 +305,7 @@ def _misread_noun(
             return None, set()  # "the lower zone at 40 W": the key chose, the quantity is another's
         if noun not in view.infos and noun not in goal:
             return noun, set(keys)
-        return f"{noun}_{_KIND_NAMES.get(_kind(mention) or '', 'level')}", set(keys)
+        return f"{noun}_{KIND_NAMES.get(quantity_kind(mention) or '', 'level')}", set(keys)
     return None, set()
 
 
