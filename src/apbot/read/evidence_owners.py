@@ -52,7 +52,8 @@ class OwnWords(TableReader):
         and this manual's own model's cell (a sister's cells name what this one lacks)."""
         if not unit.cells or len(unit.header) != len(unit.cells):
             return unit.text
-        own = own_column(unit.header, self.manual.lines)
+        keys = [*self.labels, *(lab.text for lab in self.labels.values())]
+        own = own_column(unit.header, self.manual.lines, self.manual.units, keys)
         return unit.text if own is None else f"{unit.cells[0]} | {unit.cells[own]}"
 
     def _names_setting(self, lead: list[str], tokens: list[str]) -> bool:
