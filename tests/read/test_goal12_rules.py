@@ -1,0 +1,107 @@
+"""Rules of how people phrase requests, checked on models written for these tests (a floor
+scrubber and a dog-grooming dryer no suite has).
+
+Said to a phone or typed in a hurry, an order loses its commas: "… without the presoak and get
+it started", "presoak brush 4", "power on use the deep programme". The joining word and the
+order of the words are then all that mark where one order ends and the next begins."""
+
+from __future__ import annotations
+
+from apbot.model.load import loads_model
+from apbot.read.goal import parse_instruction
+
+SCRUBBER = """
+appliance: {id: scrubber_1, category: floor_scrubber, name: "Glanz FS-2 floor scrubber", brand: G}
+controls:
+  - {id: power_key, kind: button, label: "POWER"}
+  - {id: prog_key, kind: button, label: "PROGRAM"}
+  - {id: brush_key, kind: button, label: "BRUSH"}
+  - {id: soak_key, kind: button, label: "PRESOAK"}
+  - {id: dry_key, kind: button, label: "DRY"}
+  - {id: lock_key, kind: button, label: "LOCK"}
+  - {id: gloss_key, kind: button, label: "GLOSS"}
+  - {id: start_key, kind: button, label: "START"}
+  - {id: pad_key, kind: button, label: "PAD"}
+variables:
+  pad: {type: discrete, values: [soft, firm]}
+  power: {type: discrete, values: ["off", "on"]}
+  program:
+    type: discrete
+    values: [daily, deep, tiles]
+  brush: {type: numeric, ranges: [[1, 5, 1]], initial: 3, wrap: true}
+  gloss: {type: numeric, ranges: [[1, 3, 1]], initial: 2, wrap: true}
+  presoak: {type: discrete, values: ["off", "on"]}
+  dry: {type: discrete, values: ["off", "on"]}
+  child_lock: {type: discrete, values: ["off", "on"]}
+  running: {type: discrete, values: ["off", "on"]}
+actions:
+  press_power: {control: power_key}
+  press_prog: {control: prog_key}
+  press_brush: {control: brush_key}
+  press_gloss: {control: gloss_key}
+  press_soak: {control: soak_key}
+  press_dry: {control: dry_key}
+  press_lock: {control: lock_key}
+  press_start: {control: start_key}
+  press_pad: {control: pad_key}
+features:
+  pad:
+    - {actions: [press_pad], variable: pad, effect: next}
+  power:
+    - {actions: [press_power], variable: power, effect: toggle}
+  program:
+    - {actions: [press_prog], variable: program, effect: next}
+  brush:
+    - {actions: [press_brush], variable: brush, effect: next}
+  gloss:
+    - {actions: [press_gloss], variable: gloss, effect: next}
+  presoak:
+    - {actions: [press_soak], variable: presoak, effect: toggle}
+  dry:
+    - {actions: [press_dry], variable: dry, effect: toggle}
+  child_lock:
+    - {actions: [press_lock], variable: child_lock, effect: toggle}
+  start:
+    - {actions: [press_start], variable: running, effect: toggle}
+"""
+
+
+def test_a_negation_ends_where_and_opens_a_new_order() -> None:
+    model = loads_model(SCRUBBER)
+    goal = parse_instruction(model, "Scrub the tiles without drying and get it started")
+    assert goal["dry"] == "off" and goal["running"] == "on"
+    goal = parse_instruction(model, "Deep program without starting it then lock the panel")
+    assert goal["running"] == "off" and goal["child_lock"] == "on"
+
+
+def test_a_negation_still_covers_a_gerund_joined_by_and() -> None:
+    goal = parse_instruction(loads_model(SCRUBBER), "Deep program, without drying and starting.")
+    assert goal["running"] == "off"
+
+
+def test_a_switch_said_on_before_the_next_verb_is_on() -> None:
+    goal = parse_instruction(
+        loads_model(SCRUBBER), "Daily program with no drying and presoak on start it"
+    )
+    assert goal["dry"] == "off" and goal["presoak"] == "on" and goal["running"] == "on"
+
+
+def test_a_switch_listed_before_another_settings_value_is_on() -> None:
+    model = loads_model(SCRUBBER)
+    assert parse_instruction(model, "Deep program with presoak brush 4")["presoak"] == "on"
+    assert parse_instruction(model, "Deep program brush 4 presoak")["presoak"] == "on"
+    assert parse_instruction(model, "Deep program firm pad presoak")["presoak"] == "on"
+
+
+def test_power_said_on_right_before_the_next_verb() -> None:
+    model = loads_model(SCRUBBER)
+    goal = parse_instruction(model, "Power on use the deep program and lock the panel")
+    assert goal["power"] == "on" and goal["program"] == "deep"
+    goal = parse_instruction(model, "Switch it on set the brush to 2")
+    assert goal["power"] == "on" and goal["brush"] == 2
+
+
+def test_a_superlative_before_a_setting_word_is_that_settings() -> None:
+    model = loads_model(SCRUBBER)
+    goal = parse_instruction(model, "Deep program with the highest gloss brush 4")
+    assert goal == {"program": "deep", "brush": 4, "gloss": 3}
