@@ -105,3 +105,43 @@ def test_a_superlative_before_a_setting_word_is_that_settings() -> None:
     model = loads_model(SCRUBBER)
     goal = parse_instruction(model, "Deep program with the highest gloss brush 4")
     assert goal == {"program": "deep", "brush": 4, "gloss": 3}
+
+
+DRYER = """
+appliance: {id: groomer_1, category: dog_dryer, name: "Fluff D1 dog-grooming dryer", brand: F}
+controls:
+  - {id: eye_key, kind: button, label: "EYE"}
+  - {id: time_key, kind: button, label: "TIME"}
+  - {id: cool_key, kind: button, label: "COOL+"}
+variables:
+  eye_range: {type: discrete, values: [near, mid, far], initial: mid}
+  blow_time: {type: numeric, unit: min, ranges: [[10, 60, 10]], initial: 20, wrap: true}
+  extra_cool: {type: numeric, unit: min, ranges: [[0, 120, 30]], initial: 0, wrap: true}
+actions:
+  press_eye: {control: eye_key}
+  press_time: {control: time_key}
+  press_cool: {control: cool_key}
+features:
+  eye_range:
+    - {actions: [press_eye], variable: eye_range, effect: next}
+  blow_time:
+    - {actions: [press_time], variable: blow_time, effect: next}
+  extra_cool:
+    - {actions: [press_cool], variable: extra_cool, effect: next}
+"""
+
+
+def test_a_reach_said_as_a_length_names_near_or_far() -> None:
+    model = loads_model(DRYER)
+    assert parse_instruction(model, "Use the long eye range.") == {"eye_range": "far"}
+    assert parse_instruction(model, "The eye range at its shortest.") == {"eye_range": "near"}
+    assert parse_instruction(model, "Let the eye sense the dog from further away.") == {
+        "eye_range": "far"
+    }
+
+
+def test_an_extra_hour_is_an_hour() -> None:
+    goal = parse_instruction(
+        loads_model(DRYER), "Blow for 30 minutes with an extra hour of cooling."
+    )
+    assert goal == {"blow_time": 30, "extra_cool": 60}
