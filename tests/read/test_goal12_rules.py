@@ -27,7 +27,7 @@ variables:
   power: {type: discrete, values: ["off", "on"]}
   program:
     type: discrete
-    values: [daily, deep, tiles]
+    values: [daily, deep, tiles, tiles and grout]
   brush: {type: numeric, ranges: [[1, 5, 1]], initial: 3, wrap: true}
   gloss: {type: numeric, ranges: [[1, 3, 1]], initial: 2, wrap: true}
   presoak: {type: discrete, values: ["off", "on"]}
@@ -145,3 +145,8 @@ def test_an_extra_hour_is_an_hour() -> None:
         loads_model(DRYER), "Blow for 30 minutes with an extra hour of cooling."
     )
     assert goal == {"blow_time": 30, "extra_cool": 60}
+
+
+def test_a_value_of_two_things_said_with_the_article_repeated() -> None:
+    goal = parse_instruction(loads_model(SCRUBBER), "Clean the tiles and the grout.")
+    assert goal["program"] == "tiles and grout"
