@@ -150,3 +150,33 @@ def test_an_extra_hour_is_an_hour() -> None:
 def test_a_value_of_two_things_said_with_the_article_repeated() -> None:
     goal = parse_instruction(loads_model(SCRUBBER), "Clean the tiles and the grout.")
     assert goal["program"] == "tiles and grout"
+
+
+WEATHER = """
+appliance: {id: station_1, category: weather_station, name: "Nimbus W4 weather station", brand: N}
+controls:
+  - {id: set_key, kind: button, label: "SET"}
+  - {id: up_key, kind: button, label: "UP"}
+variables:
+  month: {type: discrete, values: ["1", "2", "3", "4", "5", "6", "7", "8", "9", "10", "11", "12"]}
+  day: {type: numeric, ranges: [[1, 31, 1]], initial: 1, wrap: true}
+actions:
+  press_set: {control: set_key}
+  press_up: {control: up_key}
+features:
+  date:
+    - {actions: [press_set]}
+    - {actions: [press_up], variable: month, effect: next}
+    - {actions: [press_set]}
+    - {actions: [press_up], variable: day, effect: next}
+"""
+
+
+def test_a_date_said_in_words_sets_the_day_and_the_month() -> None:
+    model = loads_model(WEATHER)
+    assert parse_instruction(model, "Set the date to the twenty-second of October.") == {
+        "month": "10",
+        "day": 22,
+    }
+    assert parse_instruction(model, "It's the 5th of June.") == {"month": "6", "day": 5}
+    assert parse_instruction(model, "Make it September 30th.") == {"month": "9", "day": 30}
