@@ -37,6 +37,7 @@ from apbot.read.goal_assign import assign_mentions
 from apbot.read.goal_both import both_values
 from apbot.read.goal_cases import entry_modes, implied_cases, set_by_hand
 from apbot.read.goal_copies import confirmed_choices
+from apbot.read.goal_dates import said_dates
 from apbot.read.goal_digits import spelled_codes
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_every import every_periods
@@ -121,7 +122,10 @@ def parse_instruction(
                     view,
                     said_ages(
                         view,
-                        spelled_codes(view, without_remarks(view, plain_order(str(instruction)))),
+                        spelled_codes(
+                            view,
+                            said_dates(view, without_remarks(view, plain_order(str(instruction)))),
+                        ),
                     ),
                 ),
             ),

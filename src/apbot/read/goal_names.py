@@ -351,8 +351,11 @@ def _match_at(
     quality = 1.0
     for index, target in enumerate(stems):
         if index:
+            joined = text.word(k) in ("and", "or", "&", "+") or stems[index - 1] in ("and", "or")
             while text.word(k) in CONNECTORS and k < len(text.tokens):
                 k += 1
+            if joined and text.word(k) in ("the", "a", "an"):
+                k += 1  # "the floor and the walls" for FLOOR AND WALLS: an article repeated
             if index == 1 and stems[0] in _SPLIT_VERBS and len(stems) == 2:
                 # "keep the chili warm": KEEP WARM around its object
                 gap = next(

@@ -386,6 +386,14 @@ def _names_set(view: Model, text: Text, k: int, goal: Goal) -> bool:
         key = text.concepts[j] if j < len(text.concepts) else ""
         if key and not generic(key) and any(view.infos[n].vocab.get(key, 0.0) >= 0.8 for n in goal):
             return True
+        if (
+            key
+            and not generic(key)
+            and any(
+                info.vocab.get(key, 0.0) >= 0.8 for n, info in view.infos.items() if n not in goal
+            )
+        ):
+            return False  # "the lightest crust ready in 12 hours": CRUST's, said with no comma
     return False
 
 

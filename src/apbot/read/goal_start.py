@@ -19,6 +19,7 @@ from apbot.read.goal_held import (
 )
 from apbot.read.goal_roles import doing_name
 from apbot.read.goal_text import (
+    ACT_VERBS,
     CLAUSE_ENDS,
     FILLERS,
     STRONG_VERBS,
@@ -26,6 +27,7 @@ from apbot.read.goal_text import (
     WEAK_VERBS,
     Text,
     clause_starts,
+    new_act,
     phrase_here,
 )
 from apbot.read.goal_values import generic
@@ -162,6 +164,8 @@ def _says_power_on(view: Model, text: Text, goal: Goal) -> bool:
             m += 1
         if m >= n or text.word(m) in CLAUSE_ENDS | {",", "and", "then"} | _AFTER_ON:
             return True  # "switch on, ...", "switch on the cooker and ...", "switch on in fan"
+        if _next_order(view, text, m, switch_words):
+            return True  # "switch on set the front ring to 6": a comma left out before the verb
         if _mode_word(view, text.stems[m]) and not any(
             i.role == "running" for i in view.infos.values()
         ):
@@ -189,6 +193,15 @@ def _says_power_on(view: Model, text: Text, goal: Goal) -> bool:
 
 _CONDITIONS = frozenset({"when", "once", "after", "if", "until", "before", "let", "don't", "dont"})
 _CONDITIONS |= frozenset({"not", "never", "then", "afterwards", "later"})  # "…, then switch it off"
+
+
+def _next_order(view: Model, text: Text, m: int, switch_words: set[str]) -> bool:
+    """The word at ``m`` opens the next order ("Power on use the bake-only menu", "switch on
+    pump the water out"): what was switched on is the appliance. Not a word of a switch or a
+    setting ("switch on steam" turns on the STEAM switch)."""
+    if text.stems[m] in switch_words or text.stems[m] in _setting_words(view):
+        return False
+    return text.word(m) in ACT_VERBS or text.stems[m] in STRONG_VERBS | WEAK_VERBS
 
 
 def _says_power_off(view: Model, text: Text) -> bool:
@@ -365,8 +378,8 @@ def _says_start(
             continue  # "arm the delayed start": the timer's name
         before = []
         for d in range(1, 4):
-            if text.word(k - d) in CLAUSE_ENDS:
-                break
+            if text.word(k - d) in CLAUSE_ENDS or new_act(text, k - d):
+                break  # "without preheating and get it started": the start is a new order
             before.append(text.word(k - d))
         denied = any(b in _DENIALS for b in before)
         if denied or "yet" in (text.word(k + 1), text.word(k + 2)):

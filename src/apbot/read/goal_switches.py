@@ -91,7 +91,7 @@ def switches(
                 continue  # "clean the ventilation slots": a part of the body, not the switch
             if _another_switchs_phrase(view, info, text, k):
                 continue  # "super freeze": SUPER FREEZE, not SUPER COOL that shares SUPER
-            if _in_anothers_name(view, goal, info, text, k, where):
+            if _in_anothers_name(view, goal, info, text, k, where, claimed):
                 continue  # "the light timer to 3.5 minutes": LIGHT TIME's word, no LIGHT switch
             if shadowed and (text.stems[k] in own or key in own_concepts(info)):
                 continue
@@ -247,7 +247,13 @@ def _anothers_name(view: Model, goal: Goal, info: VarInfo, word: str) -> bool:
 
 
 def _in_anothers_name(
-    view: Model, goal: Goal, info: VarInfo, text: Text, k: int, where: dict[str, int] | None
+    view: Model,
+    goal: Goal,
+    info: VarInfo,
+    text: Text,
+    k: int,
+    where: dict[str, int] | None,
+    claimed: set[int] | frozenset[int] = frozenset(),
 ) -> bool:
     """The switch's word at ``k`` is said in the name of another setting the goal gives a
     value: beside a word of that setting's own that is none of the switch's ("the bin alarm
@@ -258,15 +264,21 @@ def _in_anothers_name(
     for name, other in view.infos.items():
         if other is info or name not in goal or other.role != "setting":
             continue
-        for j in (k - 1, k + 1):
-            if not 0 <= j < len(text.tokens) or text.word(j) in STOP_WORDS:
-                continue
+        # a word of the other's before the switch's makes one name ("the bin alarm"); one
+        # after it only when the switch's word is the other's too: "prewash spin 1200" said
+        # without a comma lists PREWASH beside the SPIN's value, it names no prewash spin
+        shared_word = other.vocab.get(text.concepts[k], 0.0) > 0
+        at = (where or {}).get(name)
+        for j in (k - 1, k + 1) if shared_word else (k - 1,):
+            if not 0 <= j < len(text.tokens) or text.word(j) in STOP_WORDS or j in claimed:
+                continue  # "600 rpm ECO": the last word of a value, no name
+            if j < k and at is not None and at < j:
+                continue  # "extra heavy soil steam": SOIL's name closes its value, said before
             key = text.concepts[j]
             if generic(key) or kind_noun(key) or info.vocab.get(key, 0.0) > 0:
                 continue  # "night mode", "eco mode": a kind of setting, said of the switch
             if text.stems[j] in own_stems(other):
                 return True
-        at = (where or {}).get(name)
         if info.vocab.get(text.concepts[k + 1] if k + 1 < len(text.tokens) else "", 0.0) > 0:
             continue  # "daily drying at 7 pm": the switch's own name said whole
         head = text.word(k + 1)  # the noun the switch's word qualifies: "light timer"

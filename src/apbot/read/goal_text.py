@@ -177,10 +177,20 @@ _AND_VERBS = frozenset(
 )
 
 
+ACT_VERBS = _AND_VERBS | {"start", "get", "go", "run"}
+
+
+def new_act(text: Text, j: int) -> bool:
+    """An "and" or "then" at ``j`` joins a new order ("… without preheating and get it
+    started", "… then lock the keys"): what came before it, a negation too, ends there. Said
+    or typed without commas, the joining word is all that marks the end of the clause."""
+    return text.word(j) in ("and", "then") and text.word(j + 1) in ACT_VERBS
+
+
 def negative_around(text: Text, k: int) -> bool:
     if (
         text.word(k + 1) == "on"
-        and text.word(k + 2) in CLAUSE_ENDS | {",", "and", ""}
+        and (text.word(k + 2) in CLAUSE_ENDS | {",", "and", ""} or text.word(k + 2) in ACT_VERBS)
         and not any(text.word(k - d) in ("don't", "dont", "not", "never") for d in range(1, 4))
     ):
         return False  # "with no spin at all and ECO on"
@@ -188,7 +198,7 @@ def negative_around(text: Text, k: int) -> bool:
         word = text.word(k - d)
         if word in CLAUSE_ENDS or word == ",":
             break
-        if word == "and" and text.word(k - d + 1) in _AND_VERBS:
+        if new_act(text, k - d):
             break  # "turn off after an hour and lock the keys": a new act, not negated
         if word in NEGATIONS and word not in ("free",) and (d < 6 or word in _LONG_REACH):
             return True  # "without the fruit-and-nut beep"

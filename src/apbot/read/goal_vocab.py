@@ -368,6 +368,9 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "refresh": ("freshen", "refreshing"),
     "female": ("woman", "lady", "girl"),  # a profile's sex said of the person
     "male": ("man", "gentleman", "boy"),
+    # a reach said as a length ("the long sensor range", "read the chip from further away")
+    "far": ("long", "longer", "longest", "further", "farther", "furthest", "farthest"),
+    "near": ("short", "shorter", "shortest", "close", "closer", "closest", "nearest"),
 }
 # Counts written as adverbs ("rinse twice").
 TIMES_WORDS = {"once": 1, "twice": 2, "thrice": 3}

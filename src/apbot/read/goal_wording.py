@@ -9,6 +9,10 @@ can you boil the kettle?". The order inside is what the parser reads — its ver
 appliance, as "Heat the water to 80" does — so the lead-in is cut from the start of each
 sentence, leaving the verb first. Only whole lead-ins at a sentence's
 start are cut: "if you can" or "please" later in a sentence is left to the other readers.
+
+"An extra hour of drying", "another ten minutes": a word of adding put between the article and
+the unit it counts; the number readers take "an hour", so the word goes after the quantity
+("an hour of extra drying", "ten minutes more"), where it still names an EXTRA setting.
 """
 
 from __future__ import annotations
@@ -28,10 +32,24 @@ _LEAD_IN = re.compile(rf"(?:^|(?<=[.!?;]\s))\s*{_OPENER}{_ASK}", re.IGNORECASE)
 _APOSTROPHES = str.maketrans({"\u2019": "'", "\u2018": "'", "\u02bc": "'", "\u00b4": "'", "`": "'"})
 
 
+_TIME_UNITS = r"(?:hours?|minutes?|mins?|seconds?|secs?|days?|weeks?|nights?)"
+_ADDED_OF = re.compile(
+    rf"\b(an?|one)\s+(extra|additional|added)\s+({_TIME_UNITS})\s+of\s+", re.IGNORECASE
+)
+_ADDED = re.compile(rf"\b(an?|one)\s+(extra|additional|added)\s+({_TIME_UNITS})\b", re.IGNORECASE)
+
+
+def added_time(instruction: str) -> str:
+    """ "an extra hour of drying" read as "an hour of extra drying", "an additional day" as
+    "a day additional": the quantity said whole, its word of adding kept after it."""
+    instruction = _ADDED_OF.sub(r"\1 \3 of \2 ", instruction)
+    return _ADDED.sub(r"\1 \3 \2", instruction)
+
+
 def plain_order(instruction: str) -> str:
     """``instruction`` with plain apostrophes and each sentence's request lead-in cut (the
     question mark that closed the request now ends an order)."""
-    instruction = instruction.translate(_APOSTROPHES)
+    instruction = added_time(instruction.translate(_APOSTROPHES))
     out = _LEAD_IN.sub("", instruction)
     if out == instruction:
         return instruction
