@@ -1,4 +1,5 @@
-"""The reader under other orders of the action names: the same manual, its actions listed another way.
+"""The reader under other orders of the action names: the same manual, its actions listed
+another way.
 
     python benchmarks/action_order.py [--suite bundled|DIR ...] [--appliances a_1,b_1]
         [--seed 14] [--e2e] [--methods apbot] [--workers 1] [--out runs/action_order] [--json]
@@ -35,7 +36,6 @@ import yaml
 from apbot.bench.runner import BenchOptions, run_benchmark
 from apbot.bench.suite import (
     HELD_OUT_CATEGORIES,
-    READER_DEVELOPMENT_CATEGORIES,
     SuiteAppliance,
     load_suite,
 )
@@ -224,9 +224,7 @@ def main(argv: list[str] | None = None) -> dict[str, Any]:
 
 
 def _line(label: str, tally: dict[str, Any]) -> str:
-    cells = "".join(
-        f"{tally[o]['order']:>7}{tally[o]['substantive']:>7}" for o in ORDERS[1:]
-    )
+    cells = "".join(f"{tally[o]['order']:>7}{tally[o]['substantive']:>7}" for o in ORDERS[1:])
     return (
         f"{label:<26}{tally['appliances']:>4}{cells}"
         f"{tally['differ_any']:>8}{tally['substantive_any']:>8}"

@@ -73,7 +73,9 @@ def read_manual(
     category = _ident(category, "appliance")
     tokens = sorted({c for i in infos for c in i.controls if i.digit is None})
     labels = find_labels(manual, tokens)
-    infos = in_manual_order(infos, labels)  # (the given order of the actions carries no meaning)
+    infos = in_manual_order(
+        infos, manual, labels
+    )  # (the given order of the actions carries no meaning)
     builder = Builder(manual, infos, labels)
     assign(builder)
     apply_cases(builder)
