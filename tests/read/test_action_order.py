@@ -40,8 +40,13 @@ ACTIONS = [
 
 
 def _dump(actions: list[str]) -> dict[str, object]:
+    """The read model, its listing of actions and controls (the caller's order) put aside."""
     model = read_manual(DRYER, actions, "herbdry", "food_dryer").model
-    return model.model_dump(mode="json")
+    assert list(model.actions) == actions  # listed as given
+    data = model.model_dump(mode="json")
+    data["actions"] = dict(sorted(data["actions"].items()))
+    data["controls"] = sorted(data["controls"], key=lambda c: c["id"])
+    return data
 
 
 def test_reversed_actions_read_the_same_model() -> None:
@@ -72,3 +77,29 @@ def test_actions_are_ranked_by_their_keys_first_mention() -> None:
     ranked = [i.name for i in in_manual_order(infos, manual, find_labels(manual, tokens))]
     assert ranked[:4] == ["press_temp", "press_fan", "hold_temp_and_fan", "press_start"]
     assert ranked[4:] == ["press_1", "press_3"]  # no key of their own named: after, by digit
+
+
+SPINNER = """ZIPPA S-2 salad spinner
+
+PARTS
+  (A) Display (B) BOOST button: a short burst at top speed (C) Crank knob: turn to choose a
+  speed; push (click) to start or stop
+"""
+
+
+def _start_key(actions: list[str]) -> list[str]:
+    model = read_manual(SPINNER, actions).model
+    return [
+        step.actions[0]
+        for steps in model.features.values()
+        for step in steps
+        if step.variable == "running"
+    ]
+
+
+def test_a_legends_push_clause_is_the_nearest_keys_whatever_the_order() -> None:
+    """BOOST is named first on the line, but the push clause follows the crank's name: the
+    crank's push starts, in either order of the actions."""
+    actions = ["press_boost", "turn_crank_cw", "turn_crank_ccw", "press_crank"]
+    assert _start_key(actions) == ["press_crank"]
+    assert _start_key(actions[::-1]) == ["press_crank"]
