@@ -6,8 +6,8 @@ candidates (the first action of a key, the first variable named like a programme
 in the order of its keys). Putting the actions in one order that comes from the manual before
 anything is read makes every such choice the manual's: a key whose label is found earlier comes
 first (the panel legend's order, else the key's first mention), its press before its turns and
-its hold; keys the manual never names come after, the digits in their own order, the rest by
-name.
+its hold; keys the manual never names come after, the digits in a keypad's order (1 to 9,
+then 0), the rest by name.
 """
 
 from __future__ import annotations
@@ -48,7 +48,7 @@ def manual_rank(
     the skill, a digit's value, then the name (what is left is a tie of spelling only)."""
     at = max((_where(t, manual, labels) for t in info.controls), default=(math.inf, math.inf))
     skill = SKILL_ORDER.index(info.skill) if info.skill in SKILL_ORDER else len(SKILL_ORDER)
-    digit = info.digit if info.digit is not None else -1
+    digit = (info.digit - 1) % 10 if info.digit is not None else -1  # a keypad's 1…9, 0
     return (at, skill, digit, info.name)
 
 
