@@ -226,7 +226,7 @@ def main(argv: list[str] | None = None) -> dict[str, Any]:
 def _line(label: str, tally: dict[str, Any]) -> str:
     cells = "".join(f"{tally[o]['order']:>7}{tally[o]['substantive']:>7}" for o in ORDERS[1:])
     return (
-        f"{label:<26}{tally['appliances']:>4}{cells}"
+        f"{label:<30}{tally['appliances']:>4}{cells}"
         f"{tally['differ_any']:>8}{tally['substantive_any']:>8}"
     )
 
@@ -234,8 +234,8 @@ def _line(label: str, tally: dict[str, Any]) -> str:
 def _render(result: dict[str, Any]) -> str:
     lines = [f"read models vs the given order of actions (shuffle seed {result['seed']})"]
     head = "".join(f"{'ord':>7}{'sub':>7}" for _ in ORDERS[1:])
-    lines.append(f"{'':<30}{'reversed':>14}{'shuffled':>14}{'any':>8}{'any':>8}")
-    lines.append(f"{'':<26}{'n':>4}{head}{'differ':>8}{'subst':>8}")
+    lines.append(f"{'':<34}{'reversed':>14}{'shuffled':>14}{'any':>8}{'any':>8}")
+    lines.append(f"{'':<30}{'n':>4}{head}{'differ':>8}{'subst':>8}")
     for name, entry in result["suites"].items():
         lines.append(_line(f"{Path(name).name} development", entry["development"]))
         if "held_out" in entry:
