@@ -15,6 +15,7 @@ from pydantic import ValidationError
 
 from apbot.model.schema import ApplianceModel
 from apbot.model.validate import check_model
+from apbot.read.action_rank import in_manual_order, listed_as_given
 from apbot.read.actions import ActionInfo, parse_actions
 from apbot.read.belief_name import UNNAMED
 from apbot.read.build import PLACEHOLDERS, Builder
@@ -67,11 +68,12 @@ def read_manual(
     waits = {a: _wait_seconds(a) for a in actions if isinstance(a, str)}
     waits = {a: w for a, w in waits.items() if w is not None}
     infos = parse_actions([a for a in actions if a not in waits] or list(actions))
-    manual = parse_manual(text, [c for i in infos for c in i.controls])
+    manual = parse_manual(text, sorted({c for i in infos for c in i.controls}))
     appliance_id = _ident(appliance_id, "read_appliance")
     category = _ident(category, "appliance")
     tokens = sorted({c for i in infos for c in i.controls if i.digit is None})
     labels = find_labels(manual, tokens)
+    infos = in_manual_order(infos, manual, labels)  # (the given order carries no meaning)
     builder = Builder(manual, infos, labels)
     assign(builder)
     apply_cases(builder)
@@ -101,7 +103,7 @@ def read_manual(
     data = _assemble(builder, appliance_id, category)
     data["actions"].update({a: {"skill": "wait", "seconds": w} for a, w in waits.items()})
     notes = builder.notes
-    model = _checked(data, infos, notes)
+    model = listed_as_given(_checked(data, infos, notes), list(actions))
     return Reading(model, Report(notes))
 
 

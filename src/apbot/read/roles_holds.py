@@ -290,6 +290,17 @@ _PUSH_STARTS = re.compile(
 )
 
 
+def _other_key_between(b: Builder, info: ActionInfo, between: str) -> bool:
+    """Whether another key is named between this key's word and the clause: a legend's clause
+    belongs to the key named nearest before it ("(C) TIMER button: auto-stop time (E) Thumb
+    wheel: …; push (click) to start or stop" is the wheel's push, not TIMER's)."""
+    return any(
+        re.search(rf"(?<!\w){re.escape(label.text)}(?!\w)", between, re.IGNORECASE)
+        for token, label in b.labels.items()
+        if token not in info.controls and label.text.strip()
+    )
+
+
 def pushed_start(b: Builder, info: ActionInfo) -> int | None:
     """The legend line of a key not named START that says a push of it starts and stops the
     run ("(E) Thumb wheel: turn to choose a programme; push (click) to start or stop"): the
@@ -311,8 +322,9 @@ def pushed_start(b: Builder, info: ActionInfo) -> int | None:
         before = units[first].text if first < i else ""
         for clause in re.split(r"(?<=[.;])\s+", unit.text):
             push = _PUSH_STARTS.search(clause)
-            lead = named.search(unit.text)
-            if push and lead and lead.start() < unit.text.find(clause) + push.start():
+            at = unit.text.find(clause) + push.start() if push else -1
+            leads = [m for m in named.finditer(unit.text) if m.start() < at]
+            if leads and not _other_key_between(b, info, unit.text[leads[-1].end() : at]):
                 return i
             if push and push.start() == 0 and named.match(before.lstrip(" *|•-")):
                 return i
