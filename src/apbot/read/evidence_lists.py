@@ -403,12 +403,29 @@ class ListReader(OwnWords):
                     if re.search(rf"\b{re.escape(v)}\b", said, re.I):
                         ev.initial, ev.initial_at = v, i
                         return
+        for i in self.context(tokens):
+            for v in ev.values:  # "(2.0 lb is preselected)", "Medium is selected by default."
+                if re.search(
+                    rf"(?<![\w.]){re.escape(v)}\s+{_SAID_PRESELECTED}",
+                    self.manual.units[i].text,
+                    re.I,
+                ):
+                    ev.initial, ev.initial_at = v, i
+                    return
 
 
 # a lead naming no setting, only that choices follow: "Options are:", "The choices are:"
 _CHOICES_LEAD = re.compile(
     r"(?:the\s+)?(?:available\s+)?(?:options|choices|settings|positions)(?:\s+(?:are|available))?",
     re.I,
+)
+
+
+# said after a value that the appliance comes set to it: "2.0 lb is preselected", "MEDIUM is
+# set at the factory", "Normal is selected by default"
+_SAID_PRESELECTED = (
+    r"(?:is|comes)\s+(?:pre-?selected|pre-?set|(?:selected|set)\s+(?:by\s+default|at\s+the\s+"
+    r"factory|on\s+delivery)|the\s+(?:default|factory\s+setting))\b"
 )
 
 
