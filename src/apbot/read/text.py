@@ -18,6 +18,7 @@ from apbot.read.marks_legend import legend_meanings
 from apbot.read.text_boxes import unbox
 from apbot.read.text_html import html_tables, tables_apart
 from apbot.read.text_icons import _put, name_icons, named_beside
+from apbot.read.text_sign_keys import name_signed_keys
 from apbot.read.text_pages import (
     _furniture,
     _page_breaks,
@@ -36,10 +37,11 @@ MAX_MANUAL_CHARS = 400_000  # ten times the longest real manual we expect; large
 
 _BULLETS = "•●○◦▪▫■□►▶➤➢✓✔✗✘–—·*-"
 _CALLOUTS_RE = re.compile(r"[①-⑳❶-❿➀-➉]")
-# a callout number leads a legend's item as a bullet does ("① ⏻ - lamp on / off")
+# a callout number leads a legend's item as a bullet does ("① ⏻ - lamp on / off"), and so does
+# a bracketed callout letter ("(A) ⏻ Power", "(b) MIST — mist output")
 # ... and so does a step written out: "Step 2  Touch SET." ("Step 2:", "STEP 2.")
 _BULLET_RE = re.compile(
-    rf"^\s*(?:[{re.escape(_BULLETS)}]|\d{{1,2}}[.)]|\(\d{{1,2}}\)|[①-⑳❶-❿➀-➉]"
+    rf"^\s*(?:[{re.escape(_BULLETS)}]|\d{{1,2}}[.)]|\((?:\d{{1,2}}|[A-Za-z])\)|[①-⑳❶-❿➀-➉]"
     r"|(?:Step|STEP)\s+\d{1,2}\s*[:.)]?)\s+"
 )
 _NUMBERED_RE = re.compile(r"^\s*(?:(?:Step|STEP)\s+)?(\d{1,2})(?:[.)]|(?<=\d)\s*:|(?=\s))\s+")
@@ -189,6 +191,7 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
     check_text(text)
     text = text.replace("\r\n", "\n").replace("\r", "\n").replace("\f", "\n\f\n")
     text = name_icons(unbox(text), _KEEP)  # "touch ❄" → "touch COLDER" when a legend names it
+    text = name_signed_keys(text, keys, _KEEP)  # "❋ — fan speed" → "FAN — fan speed" (``fan``)
     glyphs = text.split("\n")  # (a level shown as segments, "▮▮▯", is read from these)
     text = re.sub(r" ?❄ ?", " ❄ ", text)  # one space each side, not two
     text = named_beside(text, _KEEP | default_marks(text))  # "☀ HOT": HOT
