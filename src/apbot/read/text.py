@@ -18,7 +18,6 @@ from apbot.read.marks_legend import legend_meanings
 from apbot.read.text_boxes import unbox
 from apbot.read.text_html import html_tables, tables_apart
 from apbot.read.text_icons import _put, name_icons, named_beside
-from apbot.read.text_sign_keys import name_signed_keys
 from apbot.read.text_pages import (
     _furniture,
     _page_breaks,
@@ -31,6 +30,7 @@ from apbot.read.text_pages import (
 )
 from apbot.read.text_rows import GRID_RULE, wrapped_cells
 from apbot.read.text_sections import drop_boilerplate, drop_tagged_models
+from apbot.read.text_sign_keys import name_signed_keys
 from apbot.read.text_tables import _row_charts, _space_tables, _strip_markup
 
 MAX_MANUAL_CHARS = 400_000  # ten times the longest real manual we expect; larger is not a manual
@@ -38,10 +38,12 @@ MAX_MANUAL_CHARS = 400_000  # ten times the longest real manual we expect; large
 _BULLETS = "•●○◦▪▫■□►▶➤➢✓✔✗✘–—·*-"
 _CALLOUTS_RE = re.compile(r"[①-⑳❶-❿➀-➉]")
 # a callout number leads a legend's item as a bullet does ("① ⏻ - lamp on / off"), and so does
-# a bracketed callout letter ("(A) ⏻ Power", "(b) MIST — mist output")
+# a bracketed capital letter before a key's printed name or sign ("(A) ⏻ Power", "(B) MIST —
+# mist output"; "(a) the lid" in a sentence is no item)
 # ... and so does a step written out: "Step 2  Touch SET." ("Step 2:", "STEP 2.")
 _BULLET_RE = re.compile(
-    rf"^\s*(?:[{re.escape(_BULLETS)}]|\d{{1,2}}[.)]|\((?:\d{{1,2}}|[A-Za-z])\)|[①-⑳❶-❿➀-➉]"
+    rf"^\s*(?:[{re.escape(_BULLETS)}]|\d{{1,2}}[.)]|\(\d{{1,2}}\)|[①-⑳❶-❿➀-➉]"
+    r"|\([A-Z]\)(?=\s+(?:[A-Z]{2}|[^\w\s]))"
     r"|(?:Step|STEP)\s+\d{1,2}\s*[:.)]?)\s+"
 )
 _NUMBERED_RE = re.compile(r"^\s*(?:(?:Step|STEP)\s+)?(\d{1,2})(?:[.)]|(?<=\d)\s*:|(?=\s))\s+")
