@@ -121,3 +121,91 @@ def test_a_value_said_to_be_preselected_is_the_start() -> None:
     model = _read(PASTA, ["press_thickness", "press_shape"])
     assert model["variables"]["shape"]["initial"] == "penne"
     assert model["variables"]["thickness"]["initial"] == 1
+
+
+# a dehumidifier whose legend letters its keys (U1) and whose last level has a gloss (U2)
+DRYER = """
+Arid D-9 dehumidifier
+
+Keys
+(A) ⏻ Power
+(B) LEVEL — target: 45 %, 55 % or CON (non-stop)
+(C) SLEEP — quiet fan
+
+Use
+Press ⏻ to begin. LEVEL is CON when new.
+"""
+
+
+def test_a_lettered_legend_keeps_each_key_on_its_own_line() -> None:
+    model = _read(DRYER, ["press_power", "press_level", "press_sleep"])
+    assert model["variables"]["level"]["values"] == ["45 %", "55 %", "con"]
+
+
+def test_a_small_letter_in_brackets_inside_prose_is_no_item() -> None:
+    from apbot.read.text import parse_manual
+
+    manual = parse_manual("Fill the tank.\n(a) the lid must click shut before use.\n")
+    assert not any(u.bullet for u in manual.units)
+
+
+# a lamp whose keys are printed as icons only, each explained by a line it leads
+LAMP = """
+Glow L-3 bedside lamp
+
+The keys carry symbols only.
+
+✺  — brightness. Each touch: LOW → MID → HIGH → LOW.
+☾  — nightlight on / off.
+"""
+
+
+def test_an_icon_leading_a_legend_line_is_the_key_its_words_name() -> None:
+    model = _read(LAMP, ["touch_brightness", "touch_nightlight"])
+    assert model["variables"]["brightness"]["values"] == ["low", "mid", "high"]
+
+
+def test_a_single_guillemet_separates_a_cycle_and_a_start_beside_a_degree_sign() -> None:
+    card = """
+Tea maker T-1 quick card
+
+| # | Key  | Use                                  | Note            |
+|---|------|--------------------------------------|-----------------|
+| 1 | HEAT | Tap: 70° › 80° › 90° › BOIL › 70° …  | (starts at 80°) |
+"""
+    model = _read(card, ["press_heat"])
+    var = model["variables"]["heat"]
+    assert var["values"] == ["70°", "80°", "90°", "boil"] and var["initial"] == "80°"
+
+
+# a mode's sentence holding a setting at one value (C4)
+PURIFIER = """
+Whisper AP-2 air purifier
+
+MODE - press to choose Auto, Turbo or Quiet.
+SPEED - sets the fan speed from 1 to 6.
+In Quiet mode the fan speed stays at 2.
+"""
+
+
+def test_a_setting_a_mode_holds_fixed_depends_on_that_mode() -> None:
+    model = _read(PURIFIER, ["press_mode", "press_speed"])
+    speed = model["variables"]["speed"]
+    assert speed["depends_on"] == "mode"
+    assert speed["cases"]["quiet"]["ranges"] == [[2, 2, 1]]
+    assert speed["cases"]["auto"]["ranges"] == [[1, 6, 1]]
+
+
+def test_a_toggle_named_as_the_mode_holds_the_setting_when_on() -> None:
+    heater = """
+Patio heater PH-3
+
+POWER - on / off.
+BOOST - switches boost mode on or off.
+LEVEL - sets the heat level from 1 to 5.
+While in boost mode the level is locked at 5.
+"""
+    model = _read(heater, ["press_power", "press_boost", "press_level"])
+    level = model["variables"]["level"]
+    assert level["depends_on"] == "boost"
+    assert level["cases"]["on"]["ranges"] == [[5, 5, 1]]
