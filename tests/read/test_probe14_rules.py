@@ -209,3 +209,16 @@ While in boost mode the level is locked at 5.
     level = model["variables"]["level"]
     assert level["depends_on"] == "boost"
     assert level["cases"]["on"]["ranges"] == [[5, 5, 1]]
+
+
+def test_a_key_that_starts_or_stops_a_moving_part_is_no_running_key() -> None:
+    heater = """
+Fan heater FH-2
+
+| Key   | Use                                 |
+|-------|-------------------------------------|
+| POWER | on / off                            |
+| TURN  | Start or stop the rotating base     |
+"""
+    model = _read(heater, ["press_power", "press_turn"])
+    assert "running" not in model["variables"]

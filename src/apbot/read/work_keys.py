@@ -1,7 +1,8 @@
 """A key that starts and stops the work, though not named START: "PLAY – starts or stops
 cooking", "RUN – starts or stops watering". Its own legend line says it starts or stops the
 appliance's work (an -ing noun of work, the programme, the cycle, the operation); a key that
-"starts or stops oscillation" or "the timer" runs a feature, not the appliance.
+"starts or stops oscillation", "the timer" or "the moving louvre" runs a feature or a part,
+not the appliance: the work noun must end the clause.
 """
 
 from __future__ import annotations
@@ -13,8 +14,9 @@ from apbot.read.build import Builder
 
 _STARTS_STOPS_RE = re.compile(
     r"\b(?:starts?|begins?)\s+(?:or|and|/)\s+(?:stops?|pauses?|ends?|cancels?)\s+(?:the\s+)?"
-    r"(?:[a-z]+ing|program(?:me)?|cycle|process|operation|appliance|machine)\b"
-    r"(?!\s+(?:time|timer|light|lamp|mode))",  # "the cooking timer": a feature
+    r"(?:[a-z]+ing|program(?:me)?|cycle|process|operation|appliance|machine)"
+    r"(?=\s*(?:$|[.;,:)|]|\s(?:and|or|now|at|when|immediately)\b))",  # ("the moving louvre",
+    # "the cooking timer": an -ing word before a noun names a part or a feature)
     re.IGNORECASE,
 )
 
