@@ -13,12 +13,13 @@ from __future__ import annotations
 import re
 from collections.abc import Sequence
 
+from apbot.read.marks_legend import legend_meanings
 from apbot.read.text_icons import _icon, _put
 
-# the icon leading a line (after any callout mark "(B)" or bullet), a dash, colon or gap, and
-# the first clause of what it does
+# the icon leading a line (after any callout mark "(B)" or bullet), a dash, colon or gap (not
+# "=", which a legend of chart marks uses), and the first clause of what it does
 _SIGN_LINE = re.compile(
-    r"^[ \t]*(?:\(?[A-Za-z0-9]\)[ \t]*|[•*-][ \t]+)?(\S)\ufe0f?[ \t]*(?:[—–:=-]+|[ \t]{2,})[ \t]*"
+    r"^[ \t]*(?:\(?[A-Za-z0-9]\)[ \t]*|[•*-][ \t]+)?(\S)\ufe0f?[ \t]*(?:[—–:-]+|[ \t]{2,})[ \t]*"
     r"([^.;:\n]+)",
     re.M,
 )
@@ -33,10 +34,11 @@ def name_signed_keys(text: str, keys: Sequence[str], keep: frozenset[str]) -> st
     tokens = {k: _words(k.replace("_", " ")) for k in keys if _words(k.replace("_", " "))}
     if not tokens:
         return text
+    marks = set(legend_meanings(text))  # "● = reminder starts ON": a chart's mark, no key
     named: dict[str, set[str]] = {}
     for m in _SIGN_LINE.finditer(text):
         icon = m.group(1)
-        if not _icon(icon, keep):
+        if not _icon(icon, keep) or icon in marks:
             continue
         said = _words(m.group(2))
         fits = {k for k, ws in tokens.items() if all(w in said for w in ws)}
