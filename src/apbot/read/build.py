@@ -28,7 +28,7 @@ from apbot.read.shapes import (
     _value_text,
 )
 from apbot.read.shown import shown_words
-from apbot.read.start_values import on_grid, said_after, start_in, with_said_step
+from apbot.read.start_values import on_grid, said_after, said_on, start_in, with_said_step
 from apbot.read.symbol_lamps import symbol_lamp, word_lamp
 from apbot.read.text import Manual
 from apbot.read.value_spans import expand_spans
@@ -47,6 +47,18 @@ _PRINTED_UNITS = r"kg|g|lbs?|ml|l|litres?|W|watts?|rpm|%"  # quantities, not tim
 
 
 _DIGITS_RE = re.compile(r"\b(one|two|three|1|2|3)[- ]digits?\b", re.I)
+_UNITED_AMOUNT_RE = re.compile(r"\d+(?:[.,]\d+)?\s*(?:W|kW|°[CF]|%|g|kg|lb|ml|l|rpm)", re.I)
+
+
+def united_amounts(name: str, values: list[str] | None) -> bool:
+    """Whether a control named for a thing besides its kind (HEAT SELECTOR, not MENU or MODE
+    alone) lists amounts all printed with a unit ("750 W", "1500 W"): it chooses amounts."""
+    named = set(words(name.replace("_", " ")))
+    if not named - CHOICE_WORDS - {"key", "button", "switch"}:
+        return False  # a menu's or a mode key's list of amounts is another key's, in its menu
+    return bool(values) and all(_UNITED_AMOUNT_RE.fullmatch(v.strip()) for v in values or [])
+
+
 _QUANTITY_WORDS = {"temp", "temperature", "humidity", "weight", "volume", "speed", "watt"}
 
 
@@ -238,10 +250,15 @@ class Builder(EvidenceReader):
         self.note(subject, "zero is one of its settings (none)", at)
         return from_zero(ranges, step)
 
-    def add_number(self, name: str, label: str, ev: Evidence, cyclic: bool) -> str:
-        """A numeric or time variable from the ranges and steps read (guessed where absent)."""
+    def add_number(
+        self, name: str, label: str, ev: Evidence, cyclic: bool, amounts: bool = False
+    ) -> str:
+        """A numeric or time variable from the ranges and steps read (guessed where absent);
+        ``amounts``: its own list gave amounts with a unit, so even a selector takes them."""
         named = set(words(name.replace("_", " ")))
         choice = bool(named & CHOICE_WORDS) and not named & _QUANTITY_WORDS  # (TEMP SELECT)
+        # a selector whose own list gives amounts with a unit ("750 W / 1500 W") chooses amounts
+        choice = choice and not amounts
         if choice:  # a programme is not an amount
             ev = Evidence(**{**ev.__dict__, "ranges": [r for r in ev.ranges if not r.unit]})
         if not ev.ranges and choice:
@@ -270,7 +287,7 @@ class Builder(EvidenceReader):
             ranges = [Range(low, high, "s", 60)]
         elif (found := self._range_anywhere(name, label)) is not None:
             at = found[1]
-            ev = with_said_step(ev, found[0], self.manual.units[at].text, at)
+            ev = with_said_step(ev, found[0], said_on(self.manual.units, at), at)
             said = [] if at is None else [u.text for u in self.manual.units[at : at + 3]]
             ranges = split_range(found[0], said, label) or [found[0]]
             r0 = found[0]

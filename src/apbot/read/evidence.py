@@ -64,6 +64,7 @@ from apbot.read.shapes import (
     _without_advice,
     is_wait,
 )
+from apbot.read.switch_on_starts import start_at_switch_on
 from apbot.read.table_spans import column_span, own_range_row
 from apbot.read.text_sections import other_model, surroundings
 from apbot.read.two_choices import two_choices
@@ -415,6 +416,8 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
             self._initial_from_values(ev, tokens)
         if ev.values and ev.values_at is not None:
             ev.values = filled(ev.values, units[ev.values_at].text)  # "-18 → ... → -23"
+        if ev.initial is None and (ev.ranges or (ev.values and _numeric_items(ev.values))):
+            start_at_switch_on(units, ev, own_words)  # "When switched on it runs at speed 3"
         if ev.ranges or not ev.values or _numeric_items(ev.values):
             # "after 23:45 comes 00:00", "after 15 back to 0": the ends of what was read
             about_it = [i for i in self.context(tokens) if i not in elsewhere or i in mentions]

@@ -382,6 +382,11 @@ class ListReader(OwnWords):
         return items if items and len(items) >= 3 else None
 
     def _initial_from_values(self, ev: Evidence, tokens: list[str]) -> None:
+        if isinstance(ev.initial, tuple) and ev.values:  # "(starts at 55°)" of 40° › 55° › COLD
+            figure = f"{ev.initial[0]:g}"
+            listed = [v for v in ev.values if re.fullmatch(rf"{re.escape(figure)}\s*\W{{0,2}}", v)]
+            if len(listed) == 1 and not all(re.match(r"\d", v) for v in ev.values):
+                ev.initial = listed[0]
         if ev.initial is not None or not ev.values:
             return
         for i in self.context(tokens):
@@ -400,15 +405,32 @@ class ListReader(OwnWords):
             if m:  # ("… starts in HOT. c) Press ⏻ again to switch off.": its own sentence)
                 said = re.split(r"[.;!?]\s", m.group(1))[0]
                 for v in ev.values:
-                    if re.search(rf"\b{re.escape(v)}\b", said, re.I):
+                    if re.search(rf"(?<!\w){re.escape(v)}(?!\w)", said, re.I):  # ("55°)")
                         ev.initial, ev.initial_at = v, i
                         return
+        for i in self.context(tokens):
+            for v in ev.values:  # "(2.0 lb is preselected)", "Medium is selected by default."
+                if re.search(
+                    rf"(?<![\w.]){re.escape(v)}\s+{_SAID_PRESELECTED}",
+                    self.manual.units[i].text,
+                    re.I,
+                ):
+                    ev.initial, ev.initial_at = v, i
+                    return
 
 
 # a lead naming no setting, only that choices follow: "Options are:", "The choices are:"
 _CHOICES_LEAD = re.compile(
     r"(?:the\s+)?(?:available\s+)?(?:options|choices|settings|positions)(?:\s+(?:are|available))?",
     re.I,
+)
+
+
+# said after a value that the appliance comes set to it: "2.0 lb is preselected", "MEDIUM is
+# set at the factory", "Normal is selected by default"
+_SAID_PRESELECTED = (
+    r"(?:is|comes)\s+(?:pre-?selected|pre-?set|(?:selected|set)\s+(?:by\s+default|at\s+the\s+"
+    r"factory|on\s+delivery)|the\s+(?:default|factory\s+setting))\b"
 )
 
 

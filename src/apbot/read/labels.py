@@ -327,6 +327,10 @@ def _mentions(units: list[Unit], token: str, label: Label) -> list[int]:
     plain = r"[\s-]+".join(re.escape(w) for w in tw)
     if plain:
         patterns.append(re.compile(rf"\b{plain}\w*(?:\s+\w+)?\s+{CONTROL_NOUNS}\b", re.IGNORECASE))
+    if len(tw) >= 2 and re.fullmatch(CONTROL_NOUNS, tw[-1]):
+        # the action names its own control noun (``press_heat_selector``): "the heat selector
+        # chooses ..." in lower-case prose names this control as surely as HEAT SELECTOR
+        patterns.append(re.compile(rf"\b{plain}s?\b", re.IGNORECASE))
     spoken = _inflected(label.text if label.line is not None else "")
     if spoken:
         patterns.append(spoken)

@@ -21,6 +21,7 @@ from apbot.read.belief_name import UNNAMED
 from apbot.read.build import PLACEHOLDERS, Builder
 from apbot.read.cases import apply_cases
 from apbot.read.cases_chosen import chosen_cases
+from apbot.read.cases_fixed import read_fixed_in_mode
 from apbot.read.cases_only import read_only_modes
 from apbot.read.cases_resets import apply_resets
 from apbot.read.cases_units import unit_ranges
@@ -81,6 +82,7 @@ def read_manual(
     zone_twins(builder)
     unit_ranges(builder)
     read_only_modes(builder)
+    read_fixed_in_mode(builder)  # "In Sleep mode the speed is fixed at 1"
     name_codes(builder)
     name_code_words(builder)
     name_glossed_words(builder)

@@ -13,7 +13,7 @@ import re
 from dataclasses import replace
 
 from apbot.read.actions import ActionInfo
-from apbot.read.build import Builder
+from apbot.read.build import Builder, united_amounts
 from apbot.read.labels import words
 from apbot.read.roles_again import toggled_again
 from apbot.read.roles_amounts import ADD_RE, assign_amounts, assign_dials, assign_leftovers
@@ -27,6 +27,7 @@ from apbot.read.roles_common import (
     mentions_of,
     shown_prefix,
     token_of,
+    turns,
     used_actions,
     var_name,
 )
@@ -75,6 +76,21 @@ from apbot.read.text import Unit
 from apbot.read.values import ON_OFF_RE
 
 
+def _lend_dial(
+    pairs: dict[str, dict[str, list[str]]], dials: dict[str, list[ActionInfo]]
+) -> str | None:
+    """With no unnamed stepping pair, the one dial turned both ways is the adjuster a key may
+    switch between settings, as a + / − pair is (its turns up and down): the token lent."""
+    if "" in pairs or len(dials) != 1:
+        return None
+    token, moves = next(iter(dials.items()))
+    cw, ccw = turns(moves)
+    if not cw or not ccw:
+        return None
+    pairs[""] = {"up": list(cw), "down": list(ccw)}
+    return token
+
+
 def assign(b: Builder) -> None:
     """Give every action of ``b`` a role, adding variables, features and guards to it."""
     infos = b.infos
@@ -118,7 +134,13 @@ def assign(b: Builder) -> None:
         done |= set(assign_hour_minute(b, others, hour_minute))
 
     # a key that switches a stepping pair between two settings ("TEMP/TIME") -------------
+    lent = _lend_dial(pairs, dials)  # "SET switches the dial between temperature and time"
     done |= assign_shared(b, [i for i in infos if i.name not in done], pairs)
+    if lent is not None and lent in dials:
+        if any(m.name in done for m in dials[lent]):
+            del dials[lent]  # the dial is the shared adjuster now, not a setting of its own
+        else:
+            pairs.pop("", None)
     clocks = clock_steps(b, [i for i in infos if i.name not in done], dials, pairs)
     done |= {c[0].name for c in clocks}  # (its feature once the dial has its own setting)
 
@@ -269,7 +291,7 @@ def assign(b: Builder) -> None:
                 said = b.manual.units[ev.values_at].text if ev.values_at is not None else ""
                 ev2 = replace(ev, values=amounts)
                 ev2 = list_evidence(ev2, listed_min_sec(b, key, ev.values_at), said)
-                var = b.add_number(name, lab, ev2, cyclic=True)
+                var = b.add_number(name, lab, ev2, True, united_amounts(name, amounts))
                 if prefix:
                     b.variables[var]["show"] = prefix + "{value}"
                     if all(v.strip().endswith("°") for v in amounts):

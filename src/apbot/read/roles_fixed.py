@@ -28,6 +28,7 @@ from apbot.read.roles_holds import (
 )
 from apbot.read.shapes import RUNNING_RE, STOP_WORDS
 from apbot.read.shown import LOCK_CUE, RUNNING_CUE, shown_words
+from apbot.read.work_keys import starts_and_stops
 
 _DELIVERED_ON_RE = re.compile(
     r"\b(?:leaves? the factory|as delivered|on delivery|out of the box|factory (?:state|settings?))"
@@ -284,6 +285,8 @@ def assign_running(
         starts = [i for i in infos if i.name not in done and held_start(b, i) is not None][:1]
     if not starts and not stops:  # "Thumb wheel: turn to choose …; push (click) to start or stop"
         starts = [i for i in infos if i.name not in done and pushed_start(b, i) is not None][:1]
+    if not starts and not stops:  # "PLAY – starts or stops cooking": no START, PLAY is it
+        starts = [i for i in infos if i.name not in done and starts_and_stops(b, i)][:1]
     if not starts and not stops:  # "then press ⏻. The brush starts": no START, ⏻ starts it
         starts = [i for i in infos if i.name not in done and power_starts_work(b, i)][:1]
     if starts or stops:

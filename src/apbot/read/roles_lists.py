@@ -208,6 +208,18 @@ def list_evidence(ev: Evidence, min_sec: bool = False, said: str = "") -> Eviden
         and marked_start(initial, said)
     ):
         initial = (value_of(initial), unit)  # "600 (start setting)": a number, as ranges give it
+    united = (
+        re.fullmatch(r"(\d+(?:[.,]\d+)?)\s*([^\d\s]{1,4})", initial or "")
+        if isinstance(initial, str)
+        else None
+    )
+    if (
+        united
+        and unit
+        and unit_name(united.group(2)) == unit
+        and float(united.group(1).replace(",", ".")) in nums
+    ):
+        initial = (value_of(united.group(1)), unit)  # "set to 1500 W": one of the list's amounts
     return Evidence(
         ranges=pieces or [list_range(ev.values or [])],
         range_at=ev.values_at,

@@ -302,7 +302,7 @@ def _fits(unit: str, tokens: list[str]) -> bool:
     if not expected or not unit:
         return True
     if expected & {"°C"}:
-        return unit in ("°C", "°F", "")
+        return unit in ("°C", "°F", "") or (unit == "W" and _heat_only(tokens))
     if expected & {"min"}:
         return unit in timeish
     if expected & {"%"}:
@@ -311,6 +311,13 @@ def _fits(unit: str, tokens: list[str]) -> bool:
         if canonical in expected:
             return unit in family
     return True
+
+
+def _heat_only(tokens: list[str]) -> bool:
+    """A control named for heat, not for a temperature ("heat selector", "HEAT"): a heater's heat
+    is as often its output in watts ("750 W / 1500 W") as a temperature."""
+    ws = {w for t in tokens for w in words(t.replace("_", " "))}
+    return "heat" in ws and not ws & {"temp", "temperature", "time", "timer"}
 
 
 _AMOUNT_CELL_RE = re.compile(

@@ -41,7 +41,8 @@ def on_grid(value: float, pieces: list[list[float]]) -> bool:
 
 # the state it leaves the factory in, said of a setting: "Out of the box it is set to 10 hours",
 # "when you unpack the trimmer, the length is 3 mm", "on delivery: 20 °C"
-_AS_DELIVERED = r"|out of the box|on delivery|as supplied|unpack(?:ed|ing)?"
+# "… on first use 56.0 °C"
+_AS_DELIVERED = r"|out of the box|on delivery|as supplied|unpack(?:ed|ing)?|on first use"
 
 
 def said_after(units: list[Unit], at: int) -> tuple[tuple[float, str], int] | None:
@@ -56,6 +57,18 @@ def said_after(units: list[Unit], at: int) -> tuple[tuple[float, str], int] | No
         if found and found[1]:
             return found, k
     return None
+
+
+def said_on(units: list[Unit], at: int) -> str:
+    """The sentence a setting's range was found in, with the sentences after it in the same
+    section ("Temperature setting range: 25 – 90 °C. Each click of the dial changes the
+    temperature by 0.5 °C."): a step said right after the range is the range's."""
+    texts = [units[at].text]
+    for k in range(at + 1, min(at + 3, len(units))):
+        if units[k].heading != units[at].heading or units[k].bullet or units[k].cells:
+            break
+        texts.append(units[k].text)
+    return " ".join(texts)
 
 
 def with_said_step(ev: Evidence, r: Range, text: str, at: int) -> Evidence:

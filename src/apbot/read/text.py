@@ -30,16 +30,20 @@ from apbot.read.text_pages import (
 )
 from apbot.read.text_rows import GRID_RULE, wrapped_cells
 from apbot.read.text_sections import drop_boilerplate, drop_tagged_models
+from apbot.read.text_sign_keys import name_signed_keys
 from apbot.read.text_tables import _row_charts, _space_tables, _strip_markup
 
 MAX_MANUAL_CHARS = 400_000  # ten times the longest real manual we expect; larger is not a manual
 
 _BULLETS = "•●○◦▪▫■□►▶➤➢✓✔✗✘–—·*-"
 _CALLOUTS_RE = re.compile(r"[①-⑳❶-❿➀-➉]")
-# a callout number leads a legend's item as a bullet does ("① ⏻ - lamp on / off")
+# a callout number leads a legend's item as a bullet does ("① ⏻ - lamp on / off"), and so does
+# a bracketed capital letter before a key's printed name or sign ("(A) ⏻ Power", "(B) MIST —
+# mist output"; "(a) the lid" in a sentence is no item)
 # ... and so does a step written out: "Step 2  Touch SET." ("Step 2:", "STEP 2.")
 _BULLET_RE = re.compile(
     rf"^\s*(?:[{re.escape(_BULLETS)}]|\d{{1,2}}[.)]|\(\d{{1,2}}\)|[①-⑳❶-❿➀-➉]"
+    r"|\([A-Z]\)(?=\s+(?:[A-Z]{2}|[^\w\s]))"
     r"|(?:Step|STEP)\s+\d{1,2}\s*[:.)]?)\s+"
 )
 _NUMBERED_RE = re.compile(r"^\s*(?:(?:Step|STEP)\s+)?(\d{1,2})(?:[.)]|(?<=\d)\s*:|(?=\s))\s+")
@@ -189,6 +193,7 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
     check_text(text)
     text = text.replace("\r\n", "\n").replace("\r", "\n").replace("\f", "\n\f\n")
     text = name_icons(unbox(text), _KEEP)  # "touch ❄" → "touch COLDER" when a legend names it
+    text = name_signed_keys(text, keys, _KEEP)  # "❋ — fan speed" → "FAN — fan speed" (``fan``)
     glyphs = text.split("\n")  # (a level shown as segments, "▮▮▯", is read from these)
     text = re.sub(r" ?❄ ?", " ❄ ", text)  # one space each side, not two
     text = named_beside(text, _KEEP | default_marks(text))  # "☀ HOT": HOT

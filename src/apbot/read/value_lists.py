@@ -20,7 +20,7 @@ from apbot.read.values import NUM, UNIT
 
 # an arrow, typed or drawn with a line before its head ("0 ──► 15 ──► 30 min", "--►" once box
 # characters are cleaned); a head alone ("touch ►") is a key
-_ARROW = re.compile(r"\s*(?:→|->|⇒|>|»|⟶|[─━—–-]+\s*►)\s*")
+_ARROW = re.compile(r"\s*(?:→|->|⇒|>|»|›|⟶|[─━—–-]+\s*►)\s*")  # ("40° › 55°": a single guillemet)
 # "Touch: DRY <-> MOIST", "75 ◄► 80 ◄► 100": a key that flips between two values, or a pair
 # stepping one list both ways
 _BOTH_WAYS = re.compile(r"\s*(?:<->|<=>|↔|⇄|⇔|◄[-─—]*►|◀[-─—]*▶)\s*")

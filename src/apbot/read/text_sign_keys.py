@@ -1,0 +1,54 @@
+"""Keys printed as an icon only, named by the legend line the icon leads.
+
+A panel of touch keys may carry pictures and no words ("❋", "☾", "◷"), and its manual give a
+legend line per picture: "❋ — fan speed. Each touch: 1 → 2 → 3 → TURBO → 1." The reader drops
+pictographs, so the line would lose its key. When the line's first clause holds the words of
+exactly one of the panel's keys (the action's ``fan``), the icon is that key: written as the
+key's name in capitals wherever it stands, the legend line and every step that uses the icon
+name the key as a printed name would.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Sequence
+
+from apbot.read.marks_legend import legend_meanings
+from apbot.read.text_icons import _icon, _put
+
+# the icon leading a line (after any callout mark "(B)" or bullet), a dash, colon or gap (not
+# "=", which a legend of chart marks uses), and the first clause of what it does
+_SIGN_LINE = re.compile(
+    r"^[ \t]*(?:\(?[A-Za-z0-9]\)[ \t]*|[•*-][ \t]+)?(\S)\ufe0f?[ \t]*(?:[—–:-]+|[ \t]{2,})[ \t]*"
+    r"([^.;:\n]+)",
+    re.M,
+)
+
+
+def _words(text: str) -> list[str]:
+    return re.findall(r"[a-z0-9]+", text.lower())
+
+
+def name_signed_keys(text: str, keys: Sequence[str], keep: frozenset[str]) -> str:
+    """The text with each icon a legend line ties to one key written as that key's name."""
+    tokens = {k: _words(k.replace("_", " ")) for k in keys if _words(k.replace("_", " "))}
+    if not tokens:
+        return text
+    marks = set(legend_meanings(text))  # "● = reminder starts ON": a chart's mark, no key
+    named: dict[str, set[str]] = {}
+    for m in _SIGN_LINE.finditer(text):
+        icon = m.group(1)
+        if not _icon(icon, keep) or icon in marks:
+            continue
+        said = _words(m.group(2))
+        fits = {k for k, ws in tokens.items() if all(w in said for w in ws)}
+        named.setdefault(icon, set()).update(fits)
+    names = {
+        icon: next(iter(ks)).replace("_", " ").upper() for icon, ks in named.items() if len(ks) == 1
+    }
+    if len(set(names.values())) != len(names):
+        return text  # two icons for one key: which is which is not told
+    lines = text.split("\n")
+    for icon, name in names.items():
+        lines = [_put(line, icon, name) if icon in line else line for line in lines]
+    return "\n".join(lines)

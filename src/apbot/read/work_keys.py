@@ -1,0 +1,30 @@
+"""A key that starts and stops the work, though not named START: "PLAY – starts or stops
+cooking", "RUN – starts or stops watering". Its own legend line says it starts or stops the
+appliance's work (an -ing noun of work, the programme, the cycle, the operation); a key that
+"starts or stops oscillation", "the timer" or "the moving louvre" runs a feature or a part,
+not the appliance: the work noun must end the clause.
+"""
+
+from __future__ import annotations
+
+import re
+
+from apbot.read.actions import ActionInfo
+from apbot.read.build import Builder
+
+_STARTS_STOPS_RE = re.compile(
+    r"\b(?:starts?|begins?)\s+(?:or|and|/)\s+(?:stops?|pauses?|ends?|cancels?)\s+(?:the\s+)?"
+    r"(?:[a-z]+ing|program(?:me)?|cycle|process|operation|appliance|machine)"
+    r"(?=\s*(?:$|[.;,:)|]|\s(?:and|or|now|at|when|immediately)\b))",  # ("the moving louvre",
+    # "the cooking timer": an -ing word before a noun names a part or a feature)
+    re.IGNORECASE,
+)
+
+
+def starts_and_stops(b: Builder, info: ActionInfo) -> bool:
+    """Whether a pressed key's own line says it starts or stops the appliance's work."""
+    if info.skill != "press" or len(info.controls) != 1 or info.controls[0] not in b.labels:
+        return False
+    units = b.manual.units
+    label = b.labels[info.controls[0]]
+    return any(_STARTS_STOPS_RE.search(units[i].text) for i in label.mentions[:3])
