@@ -35,6 +35,7 @@ from apbot.read.walk_fields import (
     read_field,
     read_more_field,
 )
+from apbot.read.walk_order import read_coded_field, with_step
 
 # a field's name that says nothing of what it is: its key's name leads it ("snooze length")
 _BARE = frozenset({"length", "duration", "time", "setting", "value", "level"})
@@ -152,12 +153,17 @@ def _walk(
         own = _pair_of(b, pairs, text)
         if own is None or (pair is not None and own != pair):
             break
-        field = read_field(opened, text, at, beside=True) or read_more_field(opened, text, at)
+        field = (
+            read_field(opened, text, at, beside=True)
+            or read_more_field(opened, text, at)
+            or read_coded_field(opened, text, at)
+        )
+        field = with_step(field, text, at) if field else None
         if field is None and fields and "values" not in fields[-1] and SAME_WAY_RE.search(text):
             field = like(fields[-1], field_name(opened, beside=True))
         if field is None or any(f["name"] == field["name"] for f in fields):
             break
-        shown = field_label(opened, label, example="values" not in field)
+        shown = field.get("label") or field_label(opened, label, example="values" not in field)
         field.update(label=shown, optional=bool(_SKIP_RE.search(text)))
         pair = own
         fields.append(field)
@@ -313,14 +319,16 @@ def _controls(b: Builder, action: str) -> tuple[str, ...]:
     return next((i.controls for i in b.infos if i.name == action), ())
 
 
-def _apply(b: Builder, hold: str, press: str | None, walk: dict[str, Any]) -> None:
+def _apply(
+    b: Builder, hold: str, press: str | None, walk: dict[str, Any], named: bool = True
+) -> None:
     """Drop the hold's guessed setting; add the two fields and the feature walking them (named
     after what the hold was read to set, "sleep_period", when that was more than the key's name
-    and "hold")."""
+    and "hold"; not when ``named`` is false: a short press opening the walk was a mere guess)."""
     if "clock" in walk:
         _apply_clock(b, hold, press, walk)
         return
-    prefix = drop_guess(b, hold)
+    prefix = drop_guess(b, hold) if named else (drop_guess(b, hold) and "")
     if len(walk["fields"]) == 1:  # one setting: the name the hold was read with, else its own
         field = walk["fields"][0]
         field["name"] = field["name"] if walk.get("own") or not prefix else prefix[:-1]
@@ -340,6 +348,8 @@ def _apply(b: Builder, hold: str, press: str | None, walk: dict[str, Any]) -> No
             if glossed:  # "r1 near – r2 middle – r3 far": the words, the codes shown
                 b.variables[var]["values"] = [glossed[c] for c in field["values"]]
                 b.variables[var]["show"] = {w: c for c, w in glossed.items()}
+            if field.get("show"):  # "(M = male, F = female)": the words, the codes shown
+                b.variables[var]["show"] = dict(field["show"])
             if field.get("stops"):
                 b.variables[var]["wrap"] = False
             b.note(f"variables.{var}", "the values the held key's walk steps through", walk["at"])

@@ -39,6 +39,7 @@ from apbot.read.initials import read_initials
 from apbot.read.labels import find_labels
 from apbot.read.off_words import read_held_off_words, read_off_words
 from apbot.read.position_charts import read_position_charts
+from apbot.read.pressed_walks import read_pressed_walks
 from apbot.read.range_codes import read_range_codes
 from apbot.read.report import Note, Report
 from apbot.read.roles import assign
@@ -100,6 +101,7 @@ def read_manual(
     read_prefixed_figures(builder)  # ("SPM 20": only where no stage read a show or a unit)
     apply_resets(builder)
     read_held_walks(builder)  # (after the resets: those were read for the switch it replaces)
+    read_pressed_walks(builder)  # (after the held walks: a press moving through one is theirs)
     read_enabling_switches(builder)
     close_with_start(builder)  # (last: the keypad entries as built, whatever renamed them)
     data = _assemble(builder, appliance_id, category)
