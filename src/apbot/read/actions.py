@@ -78,11 +78,18 @@ def parse_actions(names: list[str]) -> list[ActionInfo]:
     single = {rest for _, verb, rest in first if rest and verb not in HOLD_VERBS}
     single |= {_turn_base(rest) for _, verb, rest in first if verb in TURN_VERBS}
     single.discard("")
+    # a key that is only ever held ("hold_learn") is a key too: "hold_learn_mode" holds it
+    # with MODE
+    held = {rest for _, verb, rest in first if rest and verb in HOLD_VERBS}
     out: list[ActionInfo] = []
     for name, verb, rest in first:
         info = action_info(name)
         if verb in HOLD_VERBS:  # a two-key hold names two of the other keys
-            info = ActionInfo(name, "hold", _hold_controls(rest or name, single))
+            controls = _hold_controls(rest or name, single)
+            if controls == (rest or name,) and rest not in single:
+                pair = _hold_controls(rest, single | (held - {rest}))
+                controls = pair if len(pair) == 2 else controls
+            info = ActionInfo(name, "hold", controls)
         out.append(info)
     return out
 

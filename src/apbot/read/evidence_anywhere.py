@@ -89,7 +89,21 @@ class AnywhereReader:
             if "clock" in uw and "clock" not in ws:
                 continue  # "any time from 1:00 to 12:59": the clock's day, not a duration
             consider(2 * bool(limits.search(unit.text)), unit.text, i)
+            nxt = self.manual.units[i + 1] if i + 1 < len(self.manual.units) else None
+            if (
+                nxt
+                and not nxt.cells
+                and nxt.heading == unit.heading
+                and _GOES_ON_RE.match(nxt.text)
+            ):
+                # "The entry delay is … It can be set from 10 to 90 seconds.": the next
+                # sentence says "it" of the setting just named
+                consider(2 * bool(limits.search(nxt.text)), nxt.text, i + 1)
         return (best[1], best[2]) if best else None
+
+
+# a sentence that goes on about the thing the one before named ("It can be set …")
+_GOES_ON_RE = re.compile(r"^(?:It|This)\s+(?:is|can|may|goes|runs|ranges)\b")
 
 
 def _same_word(word: str, name: str) -> bool:

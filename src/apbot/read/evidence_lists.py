@@ -4,6 +4,7 @@ table column holds the values is in evidence_tables.py."""
 
 from __future__ import annotations
 
+import itertools
 import re
 
 from apbot.model.values import NUMBER_WORDS
@@ -64,6 +65,27 @@ def _keyed_examples(units: list[Unit], i: int) -> bool:
         or (set(words(cell)) & _KEY_WORDS and set(words(cell)) & _PRESS_WORDS)  # "Keys pressed"
         for cell in header
     )
+
+
+# a legend item's own marker ("[A] Status line: …", "(B) Timer lamp", "Ⓒ Field"): items of a
+# display's legend run together in one paragraph, each about its own part of the panel
+_LEGEND_MARK = re.compile(r"(?:^|\s)(?:\[[A-Z0-9]{1,2}\]|\([A-Z]\)|[Ⓐ-Ⓩ①-⑳])\s")
+
+
+def own_legend_items(text: str, labels: list[str]) -> str:
+    """Of a paragraph of legend items ("[A] Status line: READY, ARMED … [B] Bell symbol CHIME:
+    the chime is on."), only the items that name the key: the list in [A] is not CHIME's."""
+    marks = list(_LEGEND_MARK.finditer(text))
+    if len(marks) < 2:
+        return text
+    cuts = [m.start() for m in marks] + [len(text)]
+    items = [text[a:b] for a, b in itertools.pairwise(cuts)]
+    named = [
+        item
+        for item in items
+        if any(re.search(rf"(?<!\w){re.escape(lab)}(?!\w)", item) for lab in labels if lab)
+    ]
+    return " ".join(named) if named else text
 
 
 class ListReader(OwnWords):
@@ -219,6 +241,8 @@ class ListReader(OwnWords):
         units = self.manual.units
         unit = units[i]
         text = self._own_model_row(unit)
+        if mention:
+            text = own_legend_items(text, [self.labels[t].text for t in tokens if t in self.labels])
         out: list[tuple[list[str], float]] = []
         found = find_list(text)
         if found and found[1] == "arrows" and mention and self._arrows_of_another(text, tokens):

@@ -31,6 +31,9 @@ SYMBOLS: dict[str, tuple[str, ...]] = {
     "temp": ("°C", "°F"),  # a knob labelled only with the unit of what it sets
     "temperature": ("°C", "°F"),
     "spin": ("RPM",),
+    "star": ("*", "✱"),  # a keypad's two sign keys, named for their sign
+    "hash": ("#",),
+    "pound": ("#",),
 }
 CONTROL_NOUNS = r"(?:button|key|pad|touch ?pad|dial|knob|switch|control|selector|sensor)"
 _CAPS = re.compile(r"(?<![A-Za-z0-9])([A-Z0-9][A-Z0-9+&'./-]*(?:[ /][A-Z0-9+&'.-]+)*)(?![a-z])")

@@ -34,6 +34,7 @@ from apbot.read.roles_raised import (
     sets_with_pair,
 )
 from apbot.read.shapes import CHOICE_WORDS, Evidence
+from apbot.read.typed_seconds import as_seconds, typed_as_seconds
 
 # units that name what a pair sets by themselves (a range in °C is a temperature)
 _UNIT_NOUNS = {"°C", "°F", "%", "min", "h", "s", "W"}
@@ -155,6 +156,8 @@ def assign_amounts(
                 spec.update(type="time", ranges=[["00:00:00", "01:39:59", 1]], format="mm:ss")
                 spec.pop("unit", None)
                 b.note(f"variables.{var}", "a cooking time typed as minutes and seconds")
+            if spec["type"] == "time" and typed_as_seconds(b.manual, var):
+                as_seconds(spec)  # "type the delay in seconds": 4 5 is 45 s, not 00:45
             _keypad_entry(spec)
             if spec.get("entry", {}).get("format") == "mm:ss" and (
                 not ev.step or keyed == (1.0, "s")

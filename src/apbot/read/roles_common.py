@@ -218,6 +218,11 @@ def var_name(b: Builder, key: ActionInfo) -> str:
     said = _unit_key_sets(b, key, lab.mentions)
     if said:  # "HOUR key - sets the start time": a key named for its step sets that time
         return said
+    opened = opened_setting(b, lab.mentions)
+    own = [w[:3] for w in words(key.token.replace("_", " ")) + words(lab.text) if len(w) >= 3]
+    if opened and not any(w[:3] in own for w in words(opened.replace("_", " "))):
+        return opened  # "* | opens the entry-delay setting": the key is a way in, the setting
+        # a noun (AIR TIME opening "the airing-time setting" keeps its own name)
     lw = [w for w in words(lab.text) if w.isalpha()]
     tw = words(key.token.replace("_", " "))
     if 1 < len(lw) <= 3 and all(any(x == t or x.startswith(t) for x in lw) for t in tw):
@@ -229,6 +234,22 @@ _UNIT_KEYS = frozenset({"hour", "hours", "hr", "min", "minute", "minutes"})
 _SETS_TIME_RE = re.compile(
     r"\bsets?\s+(?:the\s+)?((?:[a-z]+[\s-]+)?(?:time|delay|timer))\b", re.IGNORECASE
 )
+
+
+# "opens the entry-delay setting", "opens the alarm-time adjustment": the key leads into a
+# setting the legend names (the noun is the setting, the key only its way in)
+_OPENS_SETTING_RE = re.compile(
+    r"\bopens?\s+(?:the\s+)?([a-z]+(?:[\s-][a-z]+){0,2}?)\s+(?:setting|adjustment)\b", re.I
+)
+
+
+def opened_setting(b: Builder, mentions: list[int]) -> str:
+    """The setting a key's own sentence says it opens, as a variable name; "" when none."""
+    for i in mentions:
+        m = _OPENS_SETTING_RE.search(b.manual.units[i].text)
+        if m and not set(words(m.group(1))) & {"the", "a", "menu", "settings"}:
+            return "_".join(words(m.group(1).replace("-", " ")))
+    return ""
 
 
 def _unit_key_sets(b: Builder, key: ActionInfo, mentions: list[int]) -> str:

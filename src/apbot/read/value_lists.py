@@ -24,6 +24,10 @@ _ARROW = re.compile(r"\s*(?:→|->|⇒|>|»|›|⟶|[─━—–-]+\s*►)\s*")
 # "Touch: DRY <-> MOIST", "75 ◄► 80 ◄► 100": a key that flips between two values, or a pair
 # stepping one list both ways
 _BOTH_WAYS = re.compile(r"\s*(?:<->|<=>|↔|⇄|⇔|◄[-─—]*►|◀[-─—]*▶)\s*")
+# an arrow with a space on both sides parts a list; one fused to a word ("→IN", "OUT→") is
+# a symbol printed on the display beside the value's name
+_SPACED_ARROW = re.compile(r"(?:^|\s)(?:→|->)\s")
+_FUSED_ARROW = re.compile(r"(?<!\S)(?:(?:→|->)[A-Za-z]+|[A-Za-z]+(?:→|->))(?!\S)")
 _CUE = re.compile(  # a lookahead, so that every cue in a sentence is tried
     r"(?=(?:\bbetween|\bamong|\bchoose(?: from)?|\bselect(?:s| from)?|\bcycles?(?: through)?|"
     r"\boptions?(?: are)?|\bsettings?(?: are)?|\blevels?(?: are)?|\bmodes?(?: are)?|\border|"
@@ -148,6 +152,8 @@ def find_list(text: str) -> tuple[list[str], str] | None:
     text = _arrow_cell(_triangle_arrows(text))
     both = bool(_BOTH_WAYS.search(text))
     text = _BOTH_WAYS.sub(" → ", text)
+    if _SPACED_ARROW.search(text):  # "OPEN → →IN IN ONLY → OUT→ OUT ONLY": the spaced arrows
+        text = _FUSED_ARROW.sub(" ", text)  # part the list, one fused to a word is a symbol
     numbers = _NUMBER_LIST.search(text)
     if numbers:  # "3, 6 or 9 hours"
         items = [*re.split(r"\s*,\s*", numbers.group(1)), numbers.group(2)]
@@ -334,6 +340,10 @@ def _uncounted(items: list[str]) -> list[str]:
     return names if len({n.lower() for n in names}) == len(names) else items
 
 
+# "3/4", "16:9", "1/2": one value written as a ratio of two counts (a slash with no space)
+_RATIO_RE = re.compile(r"\+?\s*\d{1,2}/\d{1,2}")
+
+
 def cell_list(text: str) -> list[str] | None:
     """A table cell that is nothing but a list of values ("22, 26, 30 … 58 L", "Low, Medium
     and High", "400 / 800 / 1200 rpm"): three to sixteen short items, no sentence."""
@@ -342,6 +352,9 @@ def cell_list(text: str) -> list[str] | None:
         for p in re.split(r"\s*[·•,;/]\s*(?:(?:and|or)\s+)?|\s+(?:and|or)\s+", text.strip())
     ]
     items = [i for i in items if i]
+    ratios = [r.strip() for r in re.split(r"\s*[·•,;]\s*|\s+(?:and|or)\s+", text.strip())]
+    if len(ratios) >= 2 and all(_RATIO_RE.fullmatch(r) for r in ratios if r):
+        items = [r for r in ratios if r]  # "2/4, 3/4, 6/8": time signatures, not eight numbers
     if not 3 <= len(items) <= 16 or len(text) > 160 or re.search(r"[.:!?]\s*$|:\s", text):
         return None  # a sentence describing the key, not a cell of values
     if all(len(i) <= 20 and len(i.split()) <= 2 for i in items):

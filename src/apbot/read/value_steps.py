@@ -42,6 +42,13 @@ _PRESSING_BY_RE = re.compile(
     rf"\bby\s+({NUM})\s*({UNIT})(?!\w)",
     re.I,
 )
+# "TEMPO + raises the tempo by 1, TEMPO - lowers it by 1.": the key itself, named in capitals,
+# is the subject of a press (a plain count needs no unit: beats, semitones, levels)
+_KEY_RAISES_BY_RE = re.compile(
+    rf"^[A-Z][A-Z0-9.]*(?:\s*[-+▲▼△▽<>]|\s+(?:UP|DOWN))?\s+"
+    rf"(?:raises|lowers|increases|decreases|moves|changes|adjusts|shifts)\b[^.;,]{{0,30}}?"
+    rf"\bby\s+({NUM})(?:\s*({UNIT}))?(?![\w/:.,]\d|\w)"
+)
 _HELD_RE = re.compile(
     r"\b(?:hold|held|holding|keep|fast|faster|quick|quickly|rapid)\b|\d\s*s\b", re.I
 )
@@ -69,6 +76,9 @@ def find_step(text: str) -> tuple[float, str] | None:
         pressing = None if _HELD_RE.search(text) else _PRESSING_BY_RE.search(text)
         if pressing and (value := number(pressing.group(1))):
             return value, unit_name(pressing.group(2))
+        keyed = None if _HELD_RE.search(text) else _KEY_RAISES_BY_RE.search(text)
+        if keyed and (value := number(keyed.group(1))):
+            return value, unit_name(keyed.group(2))
         return None
     groups = m.groups()
     if m.group(0).lower().endswith(("units", "stages")) and not groups[1]:
