@@ -180,6 +180,13 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "alarm_keypad": 2,
     "pill_dispenser": 4,
     "pet_door": 3,
+    # The twentieth blind set (helper blind23n, 6 December 2026, the 6 December late session):
+    # blind for this round's work.
+    "deep_fryer": 4,
+    "sleep_sound_machine": 3,
+    "tens_unit": 3,
+    "turntable": 3,
+    "chicken_coop_door": 3,
 }
 
 
