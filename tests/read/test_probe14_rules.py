@@ -165,6 +165,25 @@ def test_an_icon_leading_a_legend_line_is_the_key_its_words_name() -> None:
     assert model["variables"]["brightness"]["values"] == ["low", "mid", "high"]
 
 
+# a table of display symbols: each line says what the symbol looks like, then what it shows
+DRYER_SYMBOLS = """
+Boot dryer BD-2
+
+Each press of MODE: ☀ HOT → ◐ WARM → ❄ COOL → ☀ HOT.
+Each press of TIME: 30 → 60 → 90 → ∞ (minutes).
+
+Display symbols
+   ◐      half-moon symbol    WARM mode, about 40 °C
+   ∞      infinity sign       continuous running, no time limit
+"""
+
+
+def test_a_display_symbol_line_naming_a_key_later_is_no_key() -> None:
+    model = _read(DRYER_SYMBOLS, ["press_mode", "press_time"])
+    assert model["variables"]["mode"]["values"] == ["hot", "warm", "cool"]
+    assert "time" not in [str(v) for v in model["variables"]["time"].get("values", [])]
+
+
 def test_a_single_guillemet_separates_a_cycle_and_a_start_beside_a_degree_sign() -> None:
     card = """
 Tea maker T-1 quick card

@@ -2,8 +2,8 @@
 
 A panel of touch keys may carry pictures and no words ("❋", "☾", "◷"), and its manual give a
 legend line per picture: "❋ — fan speed. Each touch: 1 → 2 → 3 → TURBO → 1." The reader drops
-pictographs, so the line would lose its key. When the line's first clause holds the words of
-exactly one of the panel's keys (the action's ``fan``), the icon is that key: written as the
+pictographs, so the line would lose its key. When the line's first clause starts with the words
+of exactly one of the panel's keys (the action's ``fan``), the icon is that key: written as the
 key's name in capitals wherever it stands, the legend line and every step that uses the icon
 name the key as a printed name would.
 """
@@ -25,6 +25,9 @@ _SIGN_LINE = re.compile(
 )
 
 
+_LEADS = frozenset({"the", "a", "an"})
+
+
 def _words(text: str) -> list[str]:
     return re.findall(r"[a-z0-9]+", text.lower())
 
@@ -41,7 +44,12 @@ def name_signed_keys(text: str, keys: Sequence[str], keep: frozenset[str]) -> st
         if not _icon(icon, keep) or icon in marks:
             continue
         said = _words(m.group(2))
-        fits = {k for k, ws in tokens.items() if all(w in said for w in ws)}
+        while said and said[0] in _LEADS:
+            said = said[1:]
+        # the key's words lead the clause ("❋ — fan speed"); a line of display symbols names
+        # what the symbol shows after saying what it looks like ("◐  half-sun symbol  WARM
+        # mode", "∞  infinity symbol  continuous operation"): no key of its own
+        fits = {k for k, ws in tokens.items() if said[: len(ws)] == ws}
         named.setdefault(icon, set()).update(fits)
     names = {
         icon: next(iter(ks)).replace("_", " ").upper() for icon, ks in named.items() if len(ks) == 1
