@@ -26,20 +26,20 @@ from __future__ import annotations
 import argparse
 import json
 import random
-import shutil
 import sys
 from pathlib import Path
 from typing import Any
 
-import yaml
-
-from apbot.bench.runner import BenchOptions, run_benchmark
 from apbot.bench.suite import (
     HELD_OUT_CATEGORIES,
     SuiteAppliance,
     load_suite,
 )
 from apbot.read import read_manual
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+from renamed_actions import e2e_figures, rewritten_suite
 
 ORDERS = ("given", "reversed", "shuffled")
 MAX_PATHS = 4
@@ -142,36 +142,12 @@ def _tally(rows: list[dict[str, Any]]) -> dict[str, Any]:
 
 def order_suite(appliances: list[SuiteAppliance], order: str, seed: int, directory: Path) -> Path:
     """A suite directory of the appliances, each model listing its actions in ``order``."""
-    for appliance in appliances:
-        target = directory / appliance.id
-        target.mkdir(parents=True, exist_ok=True)
-        for name in (appliance.manual_file, "panel.yaml", "tasks.yaml"):
-            shutil.copyfile(appliance.directory / name, target / name)
-        data = yaml.safe_load((appliance.directory / "model.yaml").read_text(encoding="utf-8"))
+
+    def reorder(appliance: SuiteAppliance, data: dict[str, Any]) -> dict[str, Any]:
         names = ordered(list(data["actions"]), order, f"{seed}/{appliance.id}")
-        data["actions"] = {name: data["actions"][name] for name in names}
-        text = yaml.safe_dump(data, sort_keys=False, allow_unicode=True)
-        (target / "model.yaml").write_text(text, encoding="utf-8")
-    return directory
+        return {**data, "actions": {name: data["actions"][name] for name in names}}
 
-
-def _e2e(suite: str, ids: list[str], methods: list[str], out: Path, workers: int) -> dict:
-    outcome = run_benchmark(
-        BenchOptions(suite=suite, methods=methods, appliances=ids, workers=workers, out=out),
-        progress=False,
-    )
-    if outcome.interrupted:
-        raise SystemExit(f"the run in {out} stopped early ({outcome.stopped_by}); run again")
-    figures: dict[str, Any] = {}
-    for method in methods:
-        records = [r for r in outcome.records if r.method == method]
-        n = max(len(records), 1)
-        figures[method] = {
-            "sr": round(sum(r.success for r in records) / n, 3),
-            "spl": round(sum(r.spl for r in records) / n, 3),
-            "n": len(records),
-        }
-    return figures
+    return rewritten_suite(appliances, reorder, directory)
 
 
 def main(argv: list[str] | None = None) -> dict[str, Any]:
@@ -206,7 +182,7 @@ def main(argv: list[str] | None = None) -> dict[str, Any]:
             out = Path(args.out) / Path(name).name
             methods = args.methods.split(",")
             entry["e2e"] = {
-                order: _e2e(
+                order: e2e_figures(
                     str(order_suite(dev, order, args.seed, out / f"suite-{order}")),
                     ids,
                     methods,

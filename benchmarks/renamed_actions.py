@@ -29,6 +29,7 @@ import argparse
 import json
 import shutil
 import sys
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -93,13 +94,23 @@ def renamed_model(model: dict[str, Any], style: str) -> dict[str, Any]:
 
 def renamed_suite(appliances: list[SuiteAppliance], style: str, directory: Path) -> Path:
     """A suite directory of the appliances, each model's actions renamed."""
+    return rewritten_suite(appliances, lambda _, data: renamed_model(data, style), directory)
+
+
+def rewritten_suite(
+    appliances: list[SuiteAppliance],
+    rewrite: Callable[[SuiteAppliance, dict[str, Any]], dict[str, Any]],
+    directory: Path,
+) -> Path:
+    """A suite directory of the appliances, manuals, panels and tasks as they are, each model
+    as ``rewrite`` gives it (the appliance, the model's data)."""
     for appliance in appliances:
         target = directory / appliance.id
         target.mkdir(parents=True, exist_ok=True)
         for name in (appliance.manual_file, "panel.yaml", "tasks.yaml"):
             shutil.copyfile(appliance.directory / name, target / name)
         data = yaml.safe_load((appliance.directory / "model.yaml").read_text(encoding="utf-8"))
-        text = yaml.safe_dump(renamed_model(data, style), sort_keys=False, allow_unicode=True)
+        text = yaml.safe_dump(rewrite(appliance, data), sort_keys=False, allow_unicode=True)
         (target / "model.yaml").write_text(text, encoding="utf-8")
     return directory
 
@@ -114,7 +125,7 @@ def _reader_figures(suite: str, ids: list[str]) -> dict[str, Any]:
     }
 
 
-def _e2e(suite: str, ids: list[str], methods: list[str], out: Path, workers: int) -> dict:
+def e2e_figures(suite: str, ids: list[str], methods: list[str], out: Path, workers: int) -> dict:
     outcome = run_benchmark(
         BenchOptions(suite=suite, methods=methods, appliances=ids, workers=workers, out=out),
         progress=False,
@@ -174,8 +185,8 @@ def main(argv: list[str] | None = None) -> dict[str, Any]:
     if not args.no_e2e:
         methods = args.methods.split(",")
         result["e2e"] = {
-            "renamed": _e2e(copy, ids, methods, out / args.style, args.workers),
-            "original": _e2e(args.suite, ids, methods, out / "original", args.workers),
+            "renamed": e2e_figures(copy, ids, methods, out / args.style, args.workers),
+            "original": e2e_figures(args.suite, ids, methods, out / "original", args.workers),
         }
     print(json.dumps(result, indent=2) if args.json else _render(result))
     return result
