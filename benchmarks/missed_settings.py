@@ -1,6 +1,6 @@
 """Which goal settings the offline reader misses, by the panel mechanism that sets them.
 
-    python benchmarks/missed_settings.py [--suite bundled|DIR] [--held-out] [--list]
+    python benchmarks/missed_settings.py [--suite bundled|DIR] [--held-out] [--list] [--why]
 
 MEASURING ONLY — this script uses privileged inputs: the ground-truth model (to say how each
 setting is reached on the panel) and the tasks' stored goals (which settings matter). No method
@@ -24,16 +24,27 @@ December (late) walks of fields were missed 41 % of the time on the newcats agai
 setting with a key of its own. On the bundled suite the nine development categories are judged
 by default; ``--held-out`` judges the six held out instead and prints only the aggregate table
 (never a line per appliance), so they stay a test set.
+
+``--why`` adds a second aggregate table: for each missed setting, what the reader made of the
+keys that set it in the truth — nothing (``keys-unread``), a variable already aligned with
+another setting (``keys-set-other``: two settings conflated), or a variable of its own that did
+not align, tagged by the two kinds (``onoff`` for a two-valued switch, ``levels`` for bare numbers,
+``names``, ``range``, ``time``) and whether any value is shared; and whether the truth's value
+names occur in the manual's text at all (``values-in-manual:none`` means the manual words them
+differently from the stored model, which no reader can fix). Aggregate, so it may be run on the
+held out: it says *which kind* of rule the unseen manuals need without showing any of them.
 """
 
 from __future__ import annotations
 
 import argparse
+import re
 from collections import Counter, defaultdict
 
 from apbot.bench.suite import HELD_OUT_CATEGORIES, load_suite
-from apbot.model.schema import ApplianceModel
-from apbot.read.evaluate import align_variables
+from apbot.model.domain import all_values
+from apbot.model.schema import ApplianceModel, DiscreteVariable, TimeVariable
+from apbot.read.evaluate import align_variables, value_set
 from apbot.read.reader import read_manual
 
 
@@ -64,22 +75,83 @@ def mechanisms(model: ApplianceModel, variable: str) -> set[str]:
     return tags | {f"type:{kind}"}
 
 
+def kind(model: ApplianceModel, variable: str) -> str:
+    """A coarse kind for the ``--why`` table."""
+    var = model.variables[variable]
+    if isinstance(var, TimeVariable):
+        return "time"
+    if not isinstance(var, DiscreteVariable):
+        return "range"
+    values = [str(v).lower() for v in all_values(var)]
+    if len(values) == 2:
+        return "onoff"
+    if all(re.fullmatch(r"[a-z]?\d+", v) for v in values):
+        return "levels"
+    return "names"
+
+
+def setters(model: ApplianceModel) -> defaultdict[str, set[str]]:
+    """action → the variables a procedure step with that action sets."""
+    out: defaultdict[str, set[str]] = defaultdict(set)
+    for steps in model.features.values():
+        for step in steps:
+            if step.variable:
+                for action in step.actions:
+                    out[action].add(step.variable)
+    return out
+
+
+def why_missed(
+    read: ApplianceModel,
+    truth: ApplianceModel,
+    variable: str,
+    aligned: dict[str, str],
+    manual: str,
+) -> list[str]:
+    """Reasons (``--why`` tags) the reader missed ``variable``."""
+    keys = {a for a, vs in setters(truth).items() if variable in vs}
+    read_setters = setters(read)
+    candidates = {v for a in keys for v in read_setters.get(a, set())}
+    tags: list[str] = []
+    if not candidates:
+        tags.append("keys-unread")
+    elif all(c in aligned for c in candidates):
+        tags.append("keys-set-other")
+    else:
+        mine = sorted(c for c in candidates if c not in aligned)[0]
+        shared = value_set(read, mine) & value_set(truth, variable)
+        tags.append(
+            f"keys-set-own read:{kind(read, mine)} true:{kind(truth, variable)}"
+            f" {'some' if shared else 'no'}-value-shared"
+        )
+    var = truth.variables[variable]
+    if isinstance(var, DiscreteVariable):
+        text = manual.lower()
+        found = [str(v).lower().replace("_", " ") in text for v in all_values(var)]
+        share = "all" if all(found) else "some" if any(found) else "none"
+        tags.append(f"values-in-manual:{share}")
+    return tags
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--suite", default="bundled")
     parser.add_argument("--held-out", action="store_true", help="the six held out, aggregate only")
     parser.add_argument("--list", action="store_true", help="each missed setting (development)")
+    parser.add_argument("--why", action="store_true", help="what the reader made of missed keys")
     args = parser.parse_args()
     suite = load_suite(args.suite)
     total: Counter[str] = Counter()
     missed: Counter[str] = Counter()
     lines: list[str] = []
+    reasons: Counter[str] = Counter()
     for appliance in suite.appliances:
         if (appliance.category in HELD_OUT_CATEGORIES) != args.held_out:
             continue
         truth = appliance.model
         read = read_manual(appliance.manual, list(truth.actions)).model
-        found = set(align_variables(read, truth).values())
+        aligned = align_variables(read, truth)
+        found = set(aligned.values())
         uses = Counter(v for task in appliance.tasks for v in task.goal or {})
         for variable, n in sorted(uses.items()):
             if variable not in truth.variables:
@@ -88,6 +160,9 @@ def main() -> None:
             for tag in tags:
                 total[tag] += n
                 missed[tag] += 0 if variable in found else n
+            if variable not in found and args.why:
+                for reason in why_missed(read, truth, variable, aligned, appliance.manual):
+                    reasons[reason] += n
             if variable not in found:
                 lines.append(
                     f"  {appliance.id} {variable} ×{n}: {', '.join(sorted(tags - {'ALL'}))}"
@@ -95,6 +170,10 @@ def main() -> None:
     print(f"{'mechanism':24s} {'missed':>7s} {'of':>6s}  share")
     for tag in sorted(total, key=lambda t: (-missed[t] / total[t], t)):
         print(f"{tag:24s} {missed[tag]:7d} {total[tag]:6d}  {missed[tag] / total[tag]:.2f}")
+    if args.why:
+        print(f"\n{'why missed (task uses)':60s} {'n':>5s}")
+        for reason, n in sorted(reasons.items(), key=lambda kv: (-kv[1], kv[0])):
+            print(f"{reason:60s} {n:5d}")
     if args.list and not args.held_out:
         print(
             "\n".join(["", "missed settings (appliance, setting, task uses, mechanisms):", *lines])
