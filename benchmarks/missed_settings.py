@@ -127,10 +127,35 @@ def why_missed(
     var = truth.variables[variable]
     if isinstance(var, DiscreteVariable):
         text = manual.lower()
-        found = [str(v).lower().replace("_", " ") in text for v in all_values(var)]
+        names = [str(v).lower().replace("_", " ") for v in all_values(var)]
+        found = [name in text for name in names]
         share = "all" if all(found) else "some" if any(found) else "none"
         tags.append(f"values-in-manual:{share}")
+        if any(found):
+            tags.append(f"values-written-in:{value_shape(manual, names)}")
     return tags
+
+
+def value_shape(manual: str, names: list[str]) -> str:
+    """How the manual writes a setting's values: the shape of the line holding most of them."""
+    best, line = 0, ""
+    for candidate in manual.splitlines():
+        low = candidate.lower()
+        hits = sum(1 for name in names if re.search(rf"(?<![a-z]){re.escape(name)}(?![a-z])", low))
+        if hits > best:
+            best, line = hits, candidate.strip()
+    if best == 0:
+        return "inside-words"
+    together = "one-line" if best == len(names) else "spread"
+    if line.count("|") >= 2:
+        shape = "table-row"
+    elif re.match(r"([-*•·▪●○◦]|\d+[.)]|\(?[a-z]\))\s", line):
+        shape = "list-item"
+    elif line.startswith("#") or line.isupper():
+        shape = "heading"
+    else:
+        shape = "prose"
+    return f"{shape}/{together}"
 
 
 def main() -> None:
@@ -161,8 +186,11 @@ def main() -> None:
                 total[tag] += n
                 missed[tag] += 0 if variable in found else n
             if variable not in found and args.why:
-                for reason in why_missed(read, truth, variable, aligned, appliance.manual):
+                why = why_missed(read, truth, variable, aligned, appliance.manual)
+                for reason in why:
                     reasons[reason] += n
+                shapes = [w.split(":", 1)[1] for w in why if w.startswith("values-written-in")]
+                reasons[f"{why[0]} + {shapes[0] if shapes else 'values-not-named'}"] += n
             if variable not in found:
                 lines.append(
                     f"  {appliance.id} {variable} ×{n}: {', '.join(sorted(tags - {'ALL'}))}"
