@@ -187,6 +187,13 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "tens_unit": 3,
     "turntable": 3,
     "chicken_coop_door": 3,
+    # The twenty-first blind set (helper blind24n, 7 December 2026, the 7 December session):
+    # blind for this round's work.
+    "metronome": 3,
+    "two_way_radio": 3,
+    "baby_monitor": 3,
+    "standing_desk": 3,
+    "ceiling_light": 3,
 }
 
 
