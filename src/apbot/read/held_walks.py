@@ -35,6 +35,7 @@ from apbot.read.walk_fields import (
     read_field,
     read_more_field,
 )
+from apbot.read.walk_like import absorb_pair_setting, further_like, named_by_code
 from apbot.read.walk_order import read_coded_field, with_step
 
 # a field's name that says nothing of what it is: its key's name leads it ("snooze length")
@@ -149,8 +150,9 @@ def _walk(
     segments, end = _segments(b, groups, label, pairs)
     fields: list[dict[str, Any]] = []
     pair = None
+    heading = b.manual.units[at].heading
     for opened, text in segments:
-        own = _pair_of(b, pairs, text)
+        own = _pair_of(b, pairs, text) or (pair if fields and SAME_WAY_RE.search(text) else None)
         if own is None or (pair is not None and own != pair):
             break
         field = (
@@ -160,13 +162,16 @@ def _walk(
         )
         field = with_step(field, text, at) if field else None
         if field is None and fields and "values" not in fields[-1] and SAME_WAY_RE.search(text):
-            field = like(fields[-1], field_name(opened, beside=True))
+            field = like(fields[-1], field_name(opened, beside=True) or "setting")
+        field = named_by_code(field, opened, heading) if field else None
         if field is None or any(f["name"] == field["name"] for f in fields):
             break
         shown = field.get("label") or field_label(opened, label, example="values" not in field)
         field.update(label=shown, optional=bool(_SKIP_RE.search(text)))
         pair = own
         fields.append(field)
+        if SAME_WAY_RE.search(text):  # "…, then SET for A3, and SET for A4"
+            fields += further_like(text, label, field, heading)
     if len(fields) < 2 or pair is None:
         return None
     if len(fields) < len(segments):
@@ -369,6 +374,7 @@ def _apply(
     drop_key_guesses(b, {a for a in (press, *up, *down) if a}, walk["said"])
     feature = f"set_{names[0]}"
     b.feature(feature, steps)
+    absorb_pair_setting(b, steps, walk["at"])
     said = f"{hold} opens {names[0]}" + (f", {press} moves to {names[1]}" if names[1:] else "")
     b.note(f"features.{feature}", said, walk["at"])
 
