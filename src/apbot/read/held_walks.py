@@ -35,7 +35,7 @@ from apbot.read.walk_fields import (
     read_field,
     read_more_field,
 )
-from apbot.read.walk_like import absorb_pair_setting, further_like, named_by_code
+from apbot.read.walk_like import absorb_pair_setting, further_like, named_by_code, squeezed_arrows
 from apbot.read.walk_order import read_coded_field, with_step
 
 # a field's name that says nothing of what it is: its key's name leads it ("snooze length")
@@ -266,6 +266,7 @@ def _pair_of(
     b: Builder, pairs: list[tuple[list[str], list[str]]], text: str
 ) -> tuple[list[str], list[str]] | None:
     """The stepping pair a step names with both its keys ("Press ▲ or ▼ to …")."""
+    text = squeezed_arrows(text)  # "A ▲ / A ▼" for the keys labelled A▲ and A▼
     for up, down in pairs:
         ups = [b.labels[t].text for a in up for t in _controls(b, a) if t in b.labels]
         downs = [b.labels[t].text for a in down for t in _controls(b, a) if t in b.labels]

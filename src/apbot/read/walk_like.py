@@ -24,8 +24,16 @@ _ITS_CODE_RE = re.compile(
     r"[a-z]+",
     re.I,
 )
+# a space between a channel's letter and its arrow: "A ▲" for the key labelled A▲
+_SPACED_ARROW_RE = re.compile(r"(?<![\w])([A-Z0-9]{1,2})\s+(?=[▲▼△▽◄►◀▶])")
 # a code of letters and a number: "A2", "P3", "T1"
 _LETTER_NUMBER_RE = re.compile(r"([A-Z]{1,2})(\d{1,2})")
+
+
+def squeezed_arrows(text: str) -> str:
+    """The text with a key's letter joined to its arrow ("A ▲ / A ▼": "A▲ / A▼"), as keys
+    with a letter and an arrow are labelled; the spaced form is how the steps print them."""
+    return _SPACED_ARROW_RE.sub(r"\1", text)
 
 
 def its_code(shown: str) -> str:
