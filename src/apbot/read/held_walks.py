@@ -35,7 +35,14 @@ from apbot.read.walk_fields import (
     read_field,
     read_more_field,
 )
-from apbot.read.walk_like import absorb_pair_setting, further_like, named_by_code, squeezed_arrows
+from apbot.read.walk_known import known_field, use_known
+from apbot.read.walk_like import (
+    absorb_pair_setting,
+    drop_opener_setting,
+    further_like,
+    named_by_code,
+    squeezed_arrows,
+)
 from apbot.read.walk_order import read_coded_field, with_step
 
 # a field's name that says nothing of what it is: its key's name leads it ("snooze length")
@@ -159,6 +166,7 @@ def _walk(
             read_field(opened, text, at, beside=True)
             or read_more_field(opened, text, at)
             or read_coded_field(opened, text, at)
+            or known_field(b, opened, at)
         )
         field = with_step(field, text, at) if field else None
         if field is None and fields and "values" not in fields[-1] and SAME_WAY_RE.search(text):
@@ -344,7 +352,9 @@ def _apply(
     steps: list[dict[str, Any]] = [{"actions": [hold]}]
     names = []
     for k, field in enumerate(walk["fields"]):
-        if "spec" in field:
+        if field.get("known"):  # "The temperature flashes": the one read from the chart
+            var = use_known(b, field["name"], set(up + down))
+        elif "spec" in field:
             var = b.unique(prefix + field["name"], b.variables)
             b.variables[var] = {"label": field["label"], **field["spec"]}
             b.note(f"variables.{var}", "a time of day the held key's steps set", walk["at"])
@@ -376,6 +386,7 @@ def _apply(
     feature = f"set_{names[0]}"
     b.feature(feature, steps)
     absorb_pair_setting(b, steps, walk["at"])
+    drop_opener_setting(b, steps)
     said = f"{hold} opens {names[0]}" + (f", {press} moves to {names[1]}" if names[1:] else "")
     b.note(f"features.{feature}", said, walk["at"])
 

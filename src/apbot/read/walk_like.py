@@ -109,3 +109,17 @@ def absorb_pair_setting(b: Builder, steps: list[dict[str, Any]], at: int) -> Non
             step["effect"] = {**step["effect"], **holds}
         b.note(f"features.{walk_feature}", f"the pair's own time {var} is the walk's", at)
         return
+
+
+def drop_opener_setting(b: Builder, steps: list[dict[str, Any]]) -> None:
+    """Drop the setting the walk's key then the pair were read to set when it is named only
+    by the key ("set" for SET): the walk read from the steps is what that press opens."""
+    opener = steps[0].get("actions", [])
+    tokens = {c for i in b.infos if i.name in opener for c in i.controls}
+    for fname, old in list(b.features.items()):
+        if old is steps or len(old) != 2 or old[0] != steps[0]:
+            continue
+        var = str(old[1].get("variable"))
+        if var in tokens or var in {b.labels[t].text.lower() for t in tokens if t in b.labels}:
+            del b.features[fname]
+            drop_unused(b, var)
