@@ -101,3 +101,43 @@ def test_code_names() -> None:
     assert code_name("A2", "SETTING THE ALARM TIMES") == "alarm_2"
     assert code_name("LOCK AT", "CURFEW") == "lock_at"
     assert code_name("Z3", "SETTING THE ALARM TIMES") == "z3"
+
+
+# a bread machine (our own words): SET walks the baking temperature, then the rising time;
+# only the chart gives their values, per programme
+BREAD = """LOAFY B-2 bread machine
+
+KEYS
+  MENU      chooses the programme: BASIC, WHOLE or QUICK.
+  SET       opens the programme's settings; moves on.
+  +         higher.
+  -         lower.
+
+PROGRAMME CHART
+
+  | Programme | Baking temperature | Rising time          |
+  |-----------|--------------------|----------------------|
+  | BASIC     | 150 - 190 °C       | 30 - 90 min, 10 min  |
+  | WHOLE     | 160 - 200 °C       | 40 - 120 min, 10 min |
+  | QUICK     | 170 - 210 °C       | 10 - 30 min, 10 min  |
+
+  All temperatures in steps of 10 °C.
+
+SETTINGS
+
+  1. Touch SET. The baking temperature flashes, e.g. 180 °C.
+  2. Change it with + / -.
+  3. Touch SET. The rising time flashes, e.g. 60 min.
+  4. Change it with + / -.
+  5. Touch SET to store.
+"""
+BREAD_ACTIONS = ["press_menu", "press_set", "press_plus", "press_minus"]
+
+
+def test_flashing_fields_take_the_charts_values() -> None:
+    model = read_manual(BREAD, BREAD_ACTIONS).model
+    walk = _walk(model, "press_set")
+    names = [s.variable for s in walk if s.variable]
+    assert names[-1] == "rising_time"
+    rising = model.variables["rising_time"]
+    assert rising.depends_on is not None and len(rising.cases or {}) == 3
