@@ -24,7 +24,7 @@ def drop_guess(b: Builder, hold: str) -> str:
             continue  # (a hold opening a setting read as the key's own "…_hold" is a guess)
         del b.features[fname]
         for var in names:
-            _drop_unused(b, str(var))
+            drop_unused(b, str(var))
         var = names[0]
         if len(old) == 1 and isinstance(var, str) and not var.endswith("_hold"):
             prefix = f"{var}_"
@@ -61,10 +61,10 @@ def drop_key_guesses(b: Builder, keys: set[str], said: str) -> None:
         ):
             del b.features[fname]
             for var in names:
-                _drop_unused(b, str(var))
+                drop_unused(b, str(var))
 
 
-def _drop_unused(b: Builder, var: str) -> None:
+def drop_unused(b: Builder, var: str) -> None:
     """Drop a guessed setting no feature sets any more, and every choice's reset of it."""
     if var not in b.variables or any(
         s.get("variable") == var for st in b.features.values() for s in st

@@ -35,6 +35,14 @@ from apbot.read.walk_fields import (
     read_field,
     read_more_field,
 )
+from apbot.read.walk_known import known_field, use_known
+from apbot.read.walk_like import (
+    absorb_pair_setting,
+    drop_opener_setting,
+    further_like,
+    named_by_code,
+    squeezed_arrows,
+)
 from apbot.read.walk_order import read_coded_field, with_step
 
 # a field's name that says nothing of what it is: its key's name leads it ("snooze length")
@@ -149,24 +157,29 @@ def _walk(
     segments, end = _segments(b, groups, label, pairs)
     fields: list[dict[str, Any]] = []
     pair = None
+    heading = b.manual.units[at].heading
     for opened, text in segments:
-        own = _pair_of(b, pairs, text)
+        own = _pair_of(b, pairs, text) or (pair if fields and SAME_WAY_RE.search(text) else None)
         if own is None or (pair is not None and own != pair):
             break
         field = (
             read_field(opened, text, at, beside=True)
             or read_more_field(opened, text, at)
             or read_coded_field(opened, text, at)
+            or known_field(b, opened, at)
         )
         field = with_step(field, text, at) if field else None
         if field is None and fields and "values" not in fields[-1] and SAME_WAY_RE.search(text):
-            field = like(fields[-1], field_name(opened, beside=True))
+            field = like(fields[-1], field_name(opened, beside=True) or "setting")
+        field = named_by_code(field, opened, heading) if field else None
         if field is None or any(f["name"] == field["name"] for f in fields):
             break
         shown = field.get("label") or field_label(opened, label, example="values" not in field)
         field.update(label=shown, optional=bool(_SKIP_RE.search(text)))
         pair = own
         fields.append(field)
+        if SAME_WAY_RE.search(text):  # "…, then SET for A3, and SET for A4"
+            fields += further_like(text, label, field, heading)
     if len(fields) < 2 or pair is None:
         return None
     if len(fields) < len(segments):
@@ -261,6 +274,7 @@ def _pair_of(
     b: Builder, pairs: list[tuple[list[str], list[str]]], text: str
 ) -> tuple[list[str], list[str]] | None:
     """The stepping pair a step names with both its keys ("Press ▲ or ▼ to …")."""
+    text = squeezed_arrows(text)  # "A ▲ / A ▼" for the keys labelled A▲ and A▼
     for up, down in pairs:
         ups = [b.labels[t].text for a in up for t in _controls(b, a) if t in b.labels]
         downs = [b.labels[t].text for a in down for t in _controls(b, a) if t in b.labels]
@@ -338,7 +352,9 @@ def _apply(
     steps: list[dict[str, Any]] = [{"actions": [hold]}]
     names = []
     for k, field in enumerate(walk["fields"]):
-        if "spec" in field:
+        if field.get("known"):  # "The temperature flashes": the one read from the chart
+            var = use_known(b, field["name"], set(up + down))
+        elif "spec" in field:
             var = b.unique(prefix + field["name"], b.variables)
             b.variables[var] = {"label": field["label"], **field["spec"]}
             b.note(f"variables.{var}", "a time of day the held key's steps set", walk["at"])
@@ -369,6 +385,8 @@ def _apply(
     drop_key_guesses(b, {a for a in (press, *up, *down) if a}, walk["said"])
     feature = f"set_{names[0]}"
     b.feature(feature, steps)
+    absorb_pair_setting(b, steps, walk["at"])
+    drop_opener_setting(b, steps)
     said = f"{hold} opens {names[0]}" + (f", {press} moves to {names[1]}" if names[1:] else "")
     b.note(f"features.{feature}", said, walk["at"])
 

@@ -14,6 +14,7 @@ import re
 from typing import Any
 
 from apbot.read.build import Builder
+from apbot.read.cases import apply_cases
 from apbot.read.held_walks import _apply, _groups, _moves_on, _pair_of, _pairs, _walk
 from apbot.read.walk_order import order_names
 
@@ -42,6 +43,8 @@ def read_pressed_walks(b: Builder) -> None:
                 continue
             _name_by_order(b, walk, i)
             _apply(b, info.name, info.name, walk, named=False)
+            if any(f.get("charted") for f in walk["fields"]):
+                apply_cases(b)  # a field valued by a chart's column: its cases per programme
             break
 
 
