@@ -160,7 +160,7 @@ _GROUPS: tuple[tuple[str, ...], ...] = (
     ("humidity", "rh", "humid", "humidistat"),
     ("fan", "airflow", "air", "blower", "convection", "circulation", "ventilation"),
     ("power", "watt", "watts", "wattage", "kw", "kilowatt", "output"),
-    ("level", "setting", "mark"),
+    ("level", "setting", "mark", "intensity", "strength"),
     ("size", "loaf", "portion", "amount", "weight"),
     ("crust", "colour", "color", "browning"),
     ("spin", "spinning"),
