@@ -43,6 +43,7 @@ from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_every import every_periods
 from apbot.read.goal_fractions import fractions
 from apbot.read.goal_gates import closing_switches, entry_switches, gated_switches
+from apbot.read.goal_hundreds import said_hundreds
 from apbot.read.goal_kinds import kind_numbers
 from apbot.read.goal_listed import listed_outside
 from apbot.read.goal_mute import muted_volume
@@ -124,7 +125,12 @@ def parse_instruction(
                         view,
                         spelled_codes(
                             view,
-                            said_dates(view, without_remarks(view, plain_order(str(instruction)))),
+                            said_dates(
+                                view,
+                                said_hundreds(
+                                    view, without_remarks(view, plain_order(str(instruction)))
+                                ),
+                            ),
                         ),
                     ),
                 ),

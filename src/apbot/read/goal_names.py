@@ -71,6 +71,13 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
     heads = _head_nouns(view)
     works_on = itself - heads
     running = {stem(n) for n, info in view.infos.items() if info.role == "running"}
+    doing = {  # "start frying" names the FRYING state under way, not a FRIES menu
+        str(v).casefold()
+        for info in view.infos.values()
+        if info.role == "running"
+        for v in info.values
+        if str(v).casefold().endswith("ing") and len(str(v)) > 4
+    }
     for var, value, stems, weight in view.phrases:
         info = view.infos[var]
         for i in range(n):
@@ -113,7 +120,7 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
                 continue  # "switch the light on" is the LIGHT, not a light crust
             if len(stems) == 1 and _qualifies_other(view, var, text, end):
                 continue  # "manual speed 3": the speed, in its manual kind
-            if len(stems) == 1 and text.stems[i] in running and not own:
+            if len(stems) == 1 and (text.stems[i] in running or text.word(i) in doing) and not own:
                 continue  # "Brew six cups", "get it brewing": the operation, not a BREW mode
             if weight * quality < 1.0 and len(stems) == 1 and at_its_limit(text, i):
                 continue  # "as strong as it goes": an end of a scale, not the HIGH it means
