@@ -357,7 +357,16 @@ def _dimension_by_name(info: VarInfo) -> str | None:
         return "ratio"
     if concept("spin") in info.vocab:
         return "speed"
+    if concept("speed") in info.vocab and _turns_a_minute(info):
+        return "speed"  # SPEED 33 / 45 / 78: turns a minute ("a 45 rpm single"), not levels 1-3
     return None
+
+
+def _turns_a_minute(info: VarInfo) -> bool:
+    """Every value is a bare number and some reach 10 or more: a rate, not a level number."""
+    numbers = [parse_quantity(str(v)) for v in all_values(info.var)]
+    bare = [q[0] for q in numbers if q is not None and q[1] is None]
+    return len(bare) == len(numbers) > 1 and max(bare) >= 10
 
 
 _VIEWS: dict[tuple[int, int], tuple[ApplianceModel, str, Model]] = {}

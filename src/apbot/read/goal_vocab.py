@@ -293,6 +293,8 @@ LOWEST = frozenset(
         "subtlest",
         "slightest",
         "tiniest",
+        "narrowest",
+        "thinnest",
     }
 )
 HIGHEST = frozenset(
@@ -316,6 +318,8 @@ HIGHEST = frozenset(
         "hardest",
         "firmest",
         "loudest",
+        "widest",
+        "broadest",
     }
 )
 # Letters that stand for sizes or levels on a display.
