@@ -52,6 +52,10 @@ def fit(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
         )
         tolerance = (_F_TOLERANCE * (1.8 if fahrenheit_dial else 1.0)) if converted else 1e-6
         return _in_numeric(number, domain, tolerance=tolerance)
+    if mention.kind == "clock":
+        said = clock_value(domain, mention)
+        if said is not None:
+            return said
     # discrete values that are numbers ("60", "1000") or quantities ("1.75 oz", "450 W")
     measured = _measure(mention)
     if measured is None:
@@ -80,6 +84,30 @@ def fit(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
         or _named_quantity(view, info, mention, domain)
         or bare_choice(info, domain, mention)
     )
+
+
+_TIME_OF_DAY = re.compile(r"(\d{1,2})(?:[:.](\d\d))?\s*(?:([ap])\.?m\.?)?", re.IGNORECASE)
+
+
+def clock_value(domain: list[Any], mention: Mention) -> Any:
+    """The value written as a time of day ("7:00 AM", "18:30") a time said names: a list of
+    opening or feeding times kept as text. A time said without am / pm takes the one value
+    of its hour and minute, morning or evening, when only one is listed."""
+    seconds = round(mention.value) % (24 * 3600)
+    found = []
+    for value in domain:
+        match = _TIME_OF_DAY.fullmatch(str(value).strip())
+        if match is None or (match[2] is None and match[3] is None):
+            continue
+        hour, minute = int(match[1]), int(match[2] or 0)
+        if match[3]:
+            hour = hour % 12 + (12 if match[3].casefold() == "p" else 0)
+        at = hour * 3600 + minute * 60
+        if at == seconds:
+            return value
+        if not mention.meridiem and (at - seconds) % (12 * 3600) == 0:
+            found.append(value)
+    return found[0] if len(found) == 1 else None
 
 
 def _zero_led(value: Any) -> bool:

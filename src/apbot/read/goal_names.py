@@ -63,6 +63,9 @@ class _Match:
     near: float = 0.0  # between settings that share the words: the one named nearest wins
 
 
+_MERIDIEMS = frozenset({"am", "pm", "a", "p", "m", "."})
+
+
 def value_matches(view: Model, text: Text) -> list[_Match]:
     matches: list[_Match] = []
     n = len(text.tokens)
@@ -89,6 +92,8 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
             end, quality = found
             if negated_before(text, i) or turned_off_after(text, end):
                 continue
+            if all(text.word(j) in _MERIDIEMS for j in range(i, end)):
+                continue  # "7 am": half of a time said, not the first value listed "4:00 AM"
             if text.word(i) in ("up", "down") and text.word(i - 1) in _PARTICLE_VERBS:
                 continue  # "set up the buttonhole", "warm up": a verb's particle, not UP
             if said_as_past_place(text, i):

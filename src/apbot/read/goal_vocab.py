@@ -373,6 +373,7 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "female": ("woman", "lady", "girl"),  # a profile's sex said of the person
     "male": ("man", "gentleman", "boy"),
     # a reach said as a length ("the long sensor range", "read the chip from further away")
+    "closed": ("shut",),  # a door, a lid, a valve shut is closed
     "far": ("long", "longer", "longest", "further", "farther", "furthest", "farthest"),
     "near": ("short", "shorter", "shortest", "close", "closer", "closest", "nearest"),
 }
