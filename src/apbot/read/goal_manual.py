@@ -106,11 +106,15 @@ def _name(cell: str) -> str:
     return text if 0 < len(text.split()) <= MAX_WORDS else ""
 
 
+_BOX = str.maketrans({**dict.fromkeys("│┃║├┤┼┬┴╋╠╣╬", "|"), **dict.fromkeys("─━═┌┐└┘╔╗╚╝", "-")})
+"""Box-drawing tables ("│ N1 │ Gentle rain │", "├───┼───┤") are pipe tables drawn finer."""
+
+
 def _table_blocks(manual: str) -> list[list[list[str]]]:
-    """Rows of cells of each pipe-drawn table (separator rows dropped)."""
+    """Rows of cells of each pipe-drawn table (separator rows dropped), box-drawn ones too."""
     blocks: list[list[list[str]]] = []
     current: list[list[str]] = []
-    for line in manual.splitlines():
+    for line in manual.translate(_BOX).splitlines():
         if line.count("|") >= 2:
             if not _RULE.match(line):
                 current.append([c.strip() for c in line.strip().strip("|").split("|")])
