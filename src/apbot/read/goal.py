@@ -48,6 +48,7 @@ from apbot.read.goal_kinds import kind_numbers
 from apbot.read.goal_listed import listed_outside
 from apbot.read.goal_mute import muted_volume
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
+from apbot.read.goal_numbered_times import numbered_times
 from apbot.read.goal_offs import (
     boil,
     no_values,
@@ -161,6 +162,7 @@ def parse_instruction(
     mentions = kind_numbers(view, text, mentions, goal, claimed, where)
     counting = assign_mentions(view, text, mentions, goal, claimed, where, outside)
     twin_numbers(view, text, mentions, goal, claimed, where)
+    numbered_times(view, text, mentions, goal, claimed, where)
     signed_changes(view, text, goal, where)
     if outside is not None:  # a read belief: a number its setting's name stands beside
         kept_outside(view, text, mentions, goal, claimed, where, outside)

@@ -21,6 +21,7 @@ from typing import Any
 from apbot.model.domain import all_values
 from apbot.model.schema import ApplianceModel, NumericVariable, TimeVariable
 from apbot.read.goal_fit import fit
+from apbot.read.goal_numbered_times import numbered_family
 from apbot.read.goal_text import Text
 from apbot.read.goal_view import Goal, Model
 from apbot.read.numbers import Mention
@@ -239,6 +240,8 @@ def place_twins(view: Model, text: Text, goal: Goal, where: dict[str, int]) -> N
         taken = [n for n in twins.names if n in goal and n in where]
         if not taken:
             continue
+        if len(taken) >= 2 and set(twins.names) <= set(numbered_family(view)):
+            continue  # times said in a row, placed in order (goal_numbered_times)
         qualifiers = _qualifiers(twins, text)
         if not any(q is not None for q in qualifiers):
             continue
