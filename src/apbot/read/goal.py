@@ -75,6 +75,7 @@ from apbot.read.goal_spelling import joined_compounds
 from apbot.read.goal_start import power_and_running
 from apbot.read.goal_switches import switches
 from apbot.read.goal_text import Text
+from apbot.read.goal_times_a_day import said_times_a_day
 from apbot.read.goal_twins import place_twins, twin_numbers
 from apbot.read.goal_unit_cases import named_units, said_units, unit_cases
 from apbot.read.goal_values import in_days
@@ -87,6 +88,20 @@ __all__ = ["MAX_INSTRUCTION", "GoalParseError", "parse_instruction"]
 
 MAX_INSTRUCTION = 5_000
 """Characters of one instruction; a longer text is not something a user said to an appliance."""
+
+
+_REWRITES = (
+    without_remarks,
+    said_hundreds,
+    said_times_a_day,
+    said_dates,
+    spelled_codes,
+    said_ages,
+    joined_compounds,
+    every_periods,
+    ordinal_numbers,
+)
+"""Rewrites of the instruction before it is read, in order (innermost first)."""
 
 
 def parse_instruction(
@@ -116,29 +131,10 @@ def parse_instruction(
             f"{MAX_INSTRUCTION:,} are read",
         )
     view = model_view(model, manual or "")
-    text = Text.of(
-        ordinal_numbers(
-            view,
-            every_periods(
-                view,
-                joined_compounds(
-                    view,
-                    said_ages(
-                        view,
-                        spelled_codes(
-                            view,
-                            said_dates(
-                                view,
-                                said_hundreds(
-                                    view, without_remarks(view, plain_order(str(instruction)))
-                                ),
-                            ),
-                        ),
-                    ),
-                ),
-            ),
-        )
-    )
+    said = plain_order(str(instruction))
+    for rewrite in _REWRITES:  # each writes a way of saying things as the parser reads it
+        said = rewrite(view, said)
+    text = Text.of(said)
     goal: Goal = {}
     claimed: set[int] = set()
     where: dict[str, int] = {}  # the token each setting was read from

@@ -79,7 +79,7 @@ def numbered_times(
 def _ordinal_before(text: Text, mention: Mention) -> int:
     """ "the first at 6:30", "the last at 10 pm", "dose 2 at noon": the number the words just
     before the time give it (-1 for the last; 0 when none)."""
-    for k in range(mention.start - 1, max(-1, mention.start - 4), -1):
+    for k in range(mention.start - 1, max(-1, mention.start - 6), -1):
         word = text.word(k)
         if word in (",", ";", "and", "."):
             return 0
