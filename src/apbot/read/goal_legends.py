@@ -133,3 +133,29 @@ def _continued(text: str, raw: list[str], index: int) -> str:
             break
         text += " " + line.strip()
     return text
+
+
+_CODED = re.compile(r"[A-Za-z]{1,2}[- ]?\d{1,2}")
+
+
+def add_kind_nouns(infos: dict[str, Any], manual: str) -> None:
+    """A setting of numbered codes (MEAL: M1 … M4) the manual keeps calling by its name and a
+    noun ("the meal slot", "meal slots") is named by that noun too: "the first slot", "slot
+    one". Only a noun said so at least three times, that no other setting has already."""
+    if not manual:
+        return
+    said = manual.casefold()
+    taken = {key for info in infos.values() for key in info.vocab}
+    for name, info in infos.items():
+        values = [str(v) for v in info.values]
+        if info.role != "setting" or len(values) < 2 or "_" in name:
+            continue
+        if not all(_CODED.fullmatch(v) for v in values):
+            continue
+        counts: dict[str, int] = {}
+        for noun in re.findall(rf"\b{re.escape(name.casefold())}\s+([a-z]{{3,}})\b", said):
+            counts[noun] = counts.get(noun, 0) + 1
+        for noun, count in counts.items():
+            key = concept(noun)
+            if count >= 3 and noun not in STOP_WORDS and key not in taken:
+                info.vocab[key] = 0.5
