@@ -62,6 +62,7 @@ from apbot.read.goal_on_values import on_values
 from apbot.read.goal_open import open_entries
 from apbot.read.goal_ordinals import ordinal_numbers
 from apbot.read.goal_outside import kept_outside
+from apbot.read.goal_own_switch import own_switch_states
 from apbot.read.goal_periods import distinct, in_weeks
 from apbot.read.goal_presets import preset_companions
 from apbot.read.goal_quantity_values import quantity_values
@@ -176,6 +177,7 @@ def parse_instruction(
     self_switching_off(view, text, goal, claimed)
     muted_volume(view, text, goal, claimed)
     place_twins(view, text, goal, where)
+    own_switch_states(view, text, goal, where)
     scheduled_states(view, text, goal, where)
     entry_switches(view, goal)
     closing_switches(view, text, goal)
