@@ -77,6 +77,7 @@ from apbot.read.goal_start import power_and_running
 from apbot.read.goal_switches import switches
 from apbot.read.goal_text import Text
 from apbot.read.goal_times_a_day import said_times_a_day
+from apbot.read.goal_turns import said_turns
 from apbot.read.goal_twins import place_twins, twin_numbers
 from apbot.read.goal_unit_cases import named_units, said_units, unit_cases
 from apbot.read.goal_values import in_days
@@ -95,6 +96,7 @@ _REWRITES = (
     without_remarks,
     said_hundreds,
     said_times_a_day,
+    said_turns,
     said_dates,
     spelled_codes,
     said_ages,
