@@ -4,6 +4,7 @@ time, quantity with a unit) gives one setting, in that setting's unit and domain
 from __future__ import annotations
 
 import re
+from dataclasses import replace
 from typing import Any
 
 from apbot.model.schema import NumericVariable, TimeVariable
@@ -146,8 +147,21 @@ def _coded_show(info: VarInfo, domain: list[Any], mention: Mention) -> Any:
     codes = [v for v, text in shown.items() if CODE.fullmatch(text.strip())]
     if len(codes) < 2 or len(codes) < len(shown) - 1:
         return None  # not a coded list ("ICE CREAM", "GELATO")
-    found = [v for v in codes if _coded([show[str(v)].strip()], mention) is not None]
+    said = mention
+    if mention.kind == "quantity" and mention.dimension == "ratio":
+        said = replace(mention, kind="number")  # "the 50 percent UV setting" for UV50
+        codes = [v for v in codes if _own_prefix(info, show[str(v)])]
+    found = [v for v in codes if _coded([show[str(v)].strip()], said) is not None]
     return found[0] if len(found) == 1 else None
+
+
+def _own_prefix(info: VarInfo, shown: str) -> bool:
+    """The code's letters are the setting's own name or label (UV50 on a UV setting): the
+    panel writes the level as the setting and its percentage."""
+    match = CODE.fullmatch(shown.strip())
+    letters = shown.strip()[: match.start(1)].strip(" -").casefold() if match else ""
+    own = {w.casefold() for w in re.findall(r"[A-Za-z]+", f"{info.name} {info.var.label or ''}")}
+    return bool(letters) and letters in own
 
 
 def _percent_of_level(info: VarInfo, mention: Mention, domain: list[Any]) -> Any:

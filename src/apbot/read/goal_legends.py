@@ -103,9 +103,15 @@ def legend_words(
                 sentences = re.split(r"[.;(]", _continued(found[1], raw, index))
                 held = [x for x in sentences[1:] if re.search(r"\b(?:hold|held)\b", x, re.I)]
                 for sentence in sentences[:1] + held:  # a later one: the key's hold
-                    thing = re.search(r"([A-Za-z]{4,})\s+on\s*(?:and|or|/)\s*off\b", sentence)
-                    if thing is not None and thing[1].casefold() not in _LEGEND_VERBS:
-                        out.setdefault(name, set()).add(thing[1].casefold())
+                    thing = re.search(
+                        r"(?:([A-Za-z]{4,})\s+)?([A-Za-z]{4,})\s+on\s*(?:and|or|/)\s*off\b",
+                        sentence,
+                    )
+                    if thing is not None and thing[2].casefold() not in _LEGEND_VERBS:
+                        out.setdefault(name, set()).add(thing[2].casefold())
+                        if thing[1] and thing[1].casefold() not in _LEGEND_VERBS:
+                            # "the attractant lure": the thing's qualifier names it too
+                            out[name].add(thing[1].casefold())
                 out.setdefault(name, set()).update(_described(sentences[0]))
     return out
 
