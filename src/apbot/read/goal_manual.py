@@ -202,8 +202,10 @@ def _in_column(
     setting -> its own values (keyed)."""
     if heads is None:
         return True
-    if len(row) != len(heads):
+    if len(row) != len(heads) and not (i == 0 and 2 <= len(row) < len(heads)):
         return sum(1 for h in heads if h) < 2  # its cells' columns are not known
+    # a row with cells run together further right ("2 Hz bursts 200 µs") keeps its first two
+    # cells under the first two headings
     key = _key(row[i])
     # "Power" over "P1" where POWER is only on/off: the heading calls the coded level by
     # another word; the column is still the on/off setting's when the cell is one of its values

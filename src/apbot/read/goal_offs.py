@@ -269,21 +269,28 @@ def no_values(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
         if j in claimed or j >= len(text.tokens):
             continue
         for info in view.infos.values():
-            if info.name in goal or info.role != "setting" or text.stems[j] not in own_stems(info):
+            limit = text.word(j) == "time" and text.word(j + 1) in ("limit", "limits")
+            named = text.stems[j] in own_stems(info)
+            if info.name in goal or info.role != "setting" or not (named or limit):
                 continue
             values = domain_values(view, info, goal)
+            if not named:  # "no time limit": the one setting that can run without end
+                values = [v for v in values if str(v).casefold() in _ENDLESS]
             for value in values:
                 words = [stem(w) for w in str(value).casefold().split()]
                 if len(words) == 2 and words[0] in ("no", "without") and words[1] == text.stems[j]:
                     goal[info.name] = value
                     claimed.add(j)
             plain = [v for v in values if str(v).casefold() in _PLAIN]
+            plain = plain or [v for v in values if str(v).casefold() in _ENDLESS]
             if info.name not in goal and len(plain) == 1 and isinstance(info.var, DiscreteVariable):
                 goal[info.name] = plain[0]  # "without any preset": the MANUAL (no preset) one
                 claimed.add(j)
 
 
 _PLAIN = frozenset({"manual", "none", "normal"})
+_ENDLESS = frozenset({"continuous", "cont", "unlimited", "nonstop", "∞", "endless"})
+"""A timer's value that runs without end: "no timer", "no time limit" ask for it."""
 
 
 def _bare_zero(info: VarInfo) -> Any:
