@@ -54,6 +54,9 @@ def scheduled_states(view: Model, text: Text, goal: Goal, where: dict[str, int])
                 break
 
 
+_TIME_UNITS = frozenset({"minute", "minutes", "min", "mins", "hour", "hours", "hr", "hrs"})
+
+
 def _said_when(text: Text, goal: Goal, where: dict[str, int], name: str, k: int) -> bool:
     """ "close an hour after dusk", "open 20 minutes before sunrise": the state followed at
     once by a time given to another setting and "after" / "before" an event says when the
@@ -61,8 +64,9 @@ def _said_when(text: Text, goal: Goal, where: dict[str, int], name: str, k: int)
     for other, at in where.items():
         if other == name or other not in goal or not k < at <= k + 2:
             continue
-        if any(text.word(j) in ("after", "before") for j in range(at + 1, at + 5)):
-            return True
+        after = next((j for j in range(at + 1, at + 5) if text.word(j) in ("after", "before")), 0)
+        if after and any(text.word(j) in _TIME_UNITS for j in range(at, after)):
+            return True  # a length of time, then the event it is counted from
     return False
 
 
