@@ -43,10 +43,12 @@ from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_every import every_periods
 from apbot.read.goal_fractions import fractions
 from apbot.read.goal_gates import closing_switches, entry_switches, gated_switches
+from apbot.read.goal_hundreds import said_hundreds
 from apbot.read.goal_kinds import kind_numbers
 from apbot.read.goal_listed import listed_outside
 from apbot.read.goal_mute import muted_volume
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
+from apbot.read.goal_numbered_times import numbered_times
 from apbot.read.goal_offs import (
     boil,
     no_values,
@@ -60,6 +62,7 @@ from apbot.read.goal_on_values import on_values
 from apbot.read.goal_open import open_entries
 from apbot.read.goal_ordinals import ordinal_numbers
 from apbot.read.goal_outside import kept_outside
+from apbot.read.goal_own_switch import own_switch_states
 from apbot.read.goal_periods import distinct, in_weeks
 from apbot.read.goal_presets import preset_companions
 from apbot.read.goal_quantity_values import quantity_values
@@ -67,12 +70,15 @@ from apbot.read.goal_remarks import without_remarks
 from apbot.read.goal_scales import superlatives
 from apbot.read.goal_scheduled_states import scheduled_states
 from apbot.read.goal_selector import on_auto_off
+from apbot.read.goal_signed import signed_changes
 from apbot.read.goal_spans import time_spans
 from apbot.read.goal_spelling import joined_compounds
 from apbot.read.goal_start import power_and_running
 from apbot.read.goal_switches import switches
 from apbot.read.goal_text import Text
-from apbot.read.goal_twins import place_twins
+from apbot.read.goal_times_a_day import said_times_a_day
+from apbot.read.goal_turns import said_turns
+from apbot.read.goal_twins import place_twins, twin_numbers
 from apbot.read.goal_unit_cases import named_units, said_units, unit_cases
 from apbot.read.goal_values import in_days
 from apbot.read.goal_view import Goal, Model, model_view
@@ -84,6 +90,21 @@ __all__ = ["MAX_INSTRUCTION", "GoalParseError", "parse_instruction"]
 
 MAX_INSTRUCTION = 5_000
 """Characters of one instruction; a longer text is not something a user said to an appliance."""
+
+
+_REWRITES = (
+    without_remarks,
+    said_hundreds,
+    said_times_a_day,
+    said_turns,
+    said_dates,
+    spelled_codes,
+    said_ages,
+    joined_compounds,
+    every_periods,
+    ordinal_numbers,
+)
+"""Rewrites of the instruction before it is read, in order (innermost first)."""
 
 
 def parse_instruction(
@@ -113,24 +134,10 @@ def parse_instruction(
             f"{MAX_INSTRUCTION:,} are read",
         )
     view = model_view(model, manual or "")
-    text = Text.of(
-        ordinal_numbers(
-            view,
-            every_periods(
-                view,
-                joined_compounds(
-                    view,
-                    said_ages(
-                        view,
-                        spelled_codes(
-                            view,
-                            said_dates(view, without_remarks(view, plain_order(str(instruction)))),
-                        ),
-                    ),
-                ),
-            ),
-        )
-    )
+    said = plain_order(str(instruction))
+    for rewrite in _REWRITES:  # each writes a way of saying things as the parser reads it
+        said = rewrite(view, said)
+    text = Text.of(said)
     goal: Goal = {}
     claimed: set[int] = set()
     where: dict[str, int] = {}  # the token each setting was read from
@@ -153,6 +160,9 @@ def parse_instruction(
     mentions = time_spans(view, text, mentions, goal, claimed, where)
     mentions = kind_numbers(view, text, mentions, goal, claimed, where)
     counting = assign_mentions(view, text, mentions, goal, claimed, where, outside)
+    twin_numbers(view, text, mentions, goal, claimed, where)
+    numbered_times(view, text, mentions, goal, claimed, where)
+    signed_changes(view, text, goal, where)
     if outside is not None:  # a read belief: a number its setting's name stands beside
         kept_outside(view, text, mentions, goal, claimed, where, outside)
         listed_outside(view, text, goal, claimed, where, outside, manual or "")
@@ -169,6 +179,7 @@ def parse_instruction(
     self_switching_off(view, text, goal, claimed)
     muted_volume(view, text, goal, claimed)
     place_twins(view, text, goal, where)
+    own_switch_states(view, text, goal, where)
     scheduled_states(view, text, goal, where)
     entry_switches(view, goal)
     closing_switches(view, text, goal)

@@ -18,7 +18,7 @@ from apbot.read.goal_view import VarInfo
 from apbot.read.goal_vocab import concept
 from apbot.read.numbers import Mention
 
-_TIME_WORDS = frozenset(concept(w) for w in ("time", "timer", "duration"))
+_TIME_WORDS = frozenset(concept(w) for w in ("time", "timer", "duration", "delay"))
 
 _MINUTE = 60.0
 

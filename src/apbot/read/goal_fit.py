@@ -4,6 +4,7 @@ time, quantity with a unit) gives one setting, in that setting's unit and domain
 from __future__ import annotations
 
 import re
+from dataclasses import replace
 from typing import Any
 
 from apbot.model.schema import NumericVariable, TimeVariable
@@ -52,6 +53,10 @@ def fit(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
         )
         tolerance = (_F_TOLERANCE * (1.8 if fahrenheit_dial else 1.0)) if converted else 1e-6
         return _in_numeric(number, domain, tolerance=tolerance)
+    if mention.kind == "clock":
+        said = clock_value(domain, mention)
+        if said is not None:
+            return said
     # discrete values that are numbers ("60", "1000") or quantities ("1.75 oz", "450 W")
     measured = _measure(mention)
     if measured is None:
@@ -80,6 +85,30 @@ def fit(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
         or _named_quantity(view, info, mention, domain)
         or bare_choice(info, domain, mention)
     )
+
+
+_TIME_OF_DAY = re.compile(r"(\d{1,2})(?:[:.](\d\d))?\s*(?:([ap])\.?m\.?)?", re.IGNORECASE)
+
+
+def clock_value(domain: list[Any], mention: Mention) -> Any:
+    """The value written as a time of day ("7:00 AM", "18:30") a time said names: a list of
+    opening or feeding times kept as text. A time said without am / pm takes the one value
+    of its hour and minute, morning or evening, when only one is listed."""
+    seconds = round(mention.value) % (24 * 3600)
+    found = []
+    for value in domain:
+        match = _TIME_OF_DAY.fullmatch(str(value).strip())
+        if match is None or (match[2] is None and match[3] is None):
+            continue
+        hour, minute = int(match[1]), int(match[2] or 0)
+        if match[3]:
+            hour = hour % 12 + (12 if match[3].casefold() == "p" else 0)
+        at = hour * 3600 + minute * 60
+        if at == seconds:
+            return value
+        if not mention.meridiem and (at - seconds) % (12 * 3600) == 0:
+            found.append(value)
+    return found[0] if len(found) == 1 else None
 
 
 def _zero_led(value: Any) -> bool:
@@ -118,8 +147,21 @@ def _coded_show(info: VarInfo, domain: list[Any], mention: Mention) -> Any:
     codes = [v for v, text in shown.items() if CODE.fullmatch(text.strip())]
     if len(codes) < 2 or len(codes) < len(shown) - 1:
         return None  # not a coded list ("ICE CREAM", "GELATO")
-    found = [v for v in codes if _coded([show[str(v)].strip()], mention) is not None]
+    said = mention
+    if mention.kind == "quantity" and mention.dimension == "ratio":
+        said = replace(mention, kind="number")  # "the 50 percent UV setting" for UV50
+        codes = [v for v in codes if _own_prefix(info, show[str(v)])]
+    found = [v for v in codes if _coded([show[str(v)].strip()], said) is not None]
     return found[0] if len(found) == 1 else None
+
+
+def _own_prefix(info: VarInfo, shown: str) -> bool:
+    """The code's letters are the setting's own name or label (UV50 on a UV setting): the
+    panel writes the level as the setting and its percentage."""
+    match = CODE.fullmatch(shown.strip())
+    letters = shown.strip()[: match.start(1)].strip(" -").casefold() if match else ""
+    own = {w.casefold() for w in re.findall(r"[A-Za-z]+", f"{info.name} {info.var.label or ''}")}
+    return bool(letters) and letters in own
 
 
 def _percent_of_level(info: VarInfo, mention: Mention, domain: list[Any]) -> Any:

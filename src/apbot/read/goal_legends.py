@@ -103,9 +103,15 @@ def legend_words(
                 sentences = re.split(r"[.;(]", _continued(found[1], raw, index))
                 held = [x for x in sentences[1:] if re.search(r"\b(?:hold|held)\b", x, re.I)]
                 for sentence in sentences[:1] + held:  # a later one: the key's hold
-                    thing = re.search(r"([A-Za-z]{4,})\s+on\s*(?:and|or|/)\s*off\b", sentence)
-                    if thing is not None and thing[1].casefold() not in _LEGEND_VERBS:
-                        out.setdefault(name, set()).add(thing[1].casefold())
+                    thing = re.search(
+                        r"(?:([A-Za-z]{4,})\s+)?([A-Za-z]{4,})\s+on\s*(?:and|or|/)\s*off\b",
+                        sentence,
+                    )
+                    if thing is not None and thing[2].casefold() not in _LEGEND_VERBS:
+                        out.setdefault(name, set()).add(thing[2].casefold())
+                        if thing[1] and thing[1].casefold() not in _LEGEND_VERBS:
+                            # "the attractant lure": the thing's qualifier names it too
+                            out[name].add(thing[1].casefold())
                 out.setdefault(name, set()).update(_described(sentences[0]))
     return out
 
@@ -133,3 +139,29 @@ def _continued(text: str, raw: list[str], index: int) -> str:
             break
         text += " " + line.strip()
     return text
+
+
+_CODED = re.compile(r"[A-Za-z]{1,2}[- ]?\d{1,2}")
+
+
+def add_kind_nouns(infos: dict[str, Any], manual: str) -> None:
+    """A setting of numbered codes (MEAL: M1 … M4) the manual keeps calling by its name and a
+    noun ("the meal slot", "meal slots") is named by that noun too: "the first slot", "slot
+    one". Only a noun said so at least three times, that no other setting has already."""
+    if not manual:
+        return
+    said = manual.casefold()
+    taken = {key for info in infos.values() for key in info.vocab}
+    for name, info in infos.items():
+        values = [str(v) for v in info.values]
+        if info.role != "setting" or len(values) < 2 or "_" in name:
+            continue
+        if not all(_CODED.fullmatch(v) for v in values):
+            continue
+        counts: dict[str, int] = {}
+        for noun in re.findall(rf"\b{re.escape(name.casefold())}\s+([a-z]{{3,}})\b", said):
+            counts[noun] = counts.get(noun, 0) + 1
+        for noun, count in counts.items():
+            key = concept(noun)
+            if count >= 3 and noun not in STOP_WORDS and key not in taken:
+                info.vocab[key] = 0.5

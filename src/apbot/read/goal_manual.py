@@ -106,11 +106,15 @@ def _name(cell: str) -> str:
     return text if 0 < len(text.split()) <= MAX_WORDS else ""
 
 
+_BOX = str.maketrans({**dict.fromkeys("│┃║├┤┼┬┴╋╠╣╬", "|"), **dict.fromkeys("─━═┌┐└┘╔╗╚╝", "-")})
+"""Box-drawing tables ("│ N1 │ Gentle rain │", "├───┼───┤") are pipe tables drawn finer."""
+
+
 def _table_blocks(manual: str) -> list[list[list[str]]]:
-    """Rows of cells of each pipe-drawn table (separator rows dropped)."""
+    """Rows of cells of each pipe-drawn table (separator rows dropped), box-drawn ones too."""
     blocks: list[list[list[str]]] = []
     current: list[list[str]] = []
-    for line in manual.splitlines():
+    for line in manual.translate(_BOX).splitlines():
         if line.count("|") >= 2:
             if not _RULE.match(line):
                 current.append([c.strip() for c in line.strip().strip("|").split("|")])
@@ -198,8 +202,10 @@ def _in_column(
     setting -> its own values (keyed)."""
     if heads is None:
         return True
-    if len(row) != len(heads):
+    if len(row) != len(heads) and not (i == 0 and 2 <= len(row) < len(heads)):
         return sum(1 for h in heads if h) < 2  # its cells' columns are not known
+    # a row with cells run together further right ("2 Hz bursts 200 µs") keeps its first two
+    # cells under the first two headings
     key = _key(row[i])
     # "Power" over "P1" where POWER is only on/off: the heading calls the coded level by
     # another word; the column is still the on/off setting's when the cell is one of its values

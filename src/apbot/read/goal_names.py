@@ -63,6 +63,9 @@ class _Match:
     near: float = 0.0  # between settings that share the words: the one named nearest wins
 
 
+_MERIDIEMS = frozenset({"am", "pm", "a", "p", "m", "."})
+
+
 def value_matches(view: Model, text: Text) -> list[_Match]:
     matches: list[_Match] = []
     n = len(text.tokens)
@@ -71,6 +74,13 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
     heads = _head_nouns(view)
     works_on = itself - heads
     running = {stem(n) for n, info in view.infos.items() if info.role == "running"}
+    doing = {  # "start frying" names the FRYING state under way, not a FRIES menu
+        str(v).casefold()
+        for info in view.infos.values()
+        if info.role == "running"
+        for v in info.values
+        if str(v).casefold().endswith("ing") and len(str(v)) > 4
+    }
     for var, value, stems, weight in view.phrases:
         info = view.infos[var]
         for i in range(n):
@@ -82,6 +92,8 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
             end, quality = found
             if negated_before(text, i) or turned_off_after(text, end):
                 continue
+            if all(text.word(j) in _MERIDIEMS for j in range(i, end)):
+                continue  # "7 am": half of a time said, not the first value listed "4:00 AM"
             if text.word(i) in ("up", "down") and text.word(i - 1) in _PARTICLE_VERBS:
                 continue  # "set up the buttonhole", "warm up": a verb's particle, not UP
             if said_as_past_place(text, i):
@@ -113,7 +125,7 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
                 continue  # "switch the light on" is the LIGHT, not a light crust
             if len(stems) == 1 and _qualifies_other(view, var, text, end):
                 continue  # "manual speed 3": the speed, in its manual kind
-            if len(stems) == 1 and text.stems[i] in running and not own:
+            if len(stems) == 1 and (text.stems[i] in running or text.word(i) in doing) and not own:
                 continue  # "Brew six cups", "get it brewing": the operation, not a BREW mode
             if weight * quality < 1.0 and len(stems) == 1 and at_its_limit(text, i):
                 continue  # "as strong as it goes": an end of a scale, not the HIGH it means

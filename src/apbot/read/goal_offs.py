@@ -4,6 +4,9 @@ value, the negation or the verb does (split from ``goal_switches``, which names 
 
 from __future__ import annotations
 
+import re
+from typing import Any
+
 from apbot.model.domain import build_domain
 from apbot.model.schema import DiscreteVariable, NumericVariable, TimeVariable
 from apbot.read.goal_text import (
@@ -117,9 +120,9 @@ def _zero_home(view: Model, text: Text, goal: Goal, j: int) -> VarInfo | None:
         for info in view.infos.values()
         if info.name not in goal
         and info.role == "setting"
-        and not isinstance(info.var, DiscreteVariable)
+        and (not isinstance(info.var, DiscreteVariable) or _bare_zero(info) is not None)
         and (text.stems[j] in own_stems(info) or key in own_concepts(info))
-        and _starts_at_zero(info)
+        and (_starts_at_zero(info) or _bare_zero(info) is not None)
     ]
     return homes[0] if len(homes) == 1 else None
 
@@ -135,7 +138,7 @@ def _set_zero(
     if home is None:
         return
     values = domain_values(view, home, goal)
-    zero = next((v for v in values if magnitude(v) == 0), None)
+    zero = next((v for v in values if magnitude(v) == 0), _bare_zero(home))
     if zero is None and home.timing in ("delay", "finish") and values:
         zero = min(values, key=lambda v: magnitude(v) or 0.0)  # the soonest end
     if zero is not None:
@@ -266,21 +269,37 @@ def no_values(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
         if j in claimed or j >= len(text.tokens):
             continue
         for info in view.infos.values():
-            if info.name in goal or info.role != "setting" or text.stems[j] not in own_stems(info):
+            limit = text.word(j) == "time" and text.word(j + 1) in ("limit", "limits")
+            named = text.stems[j] in own_stems(info)
+            if info.name in goal or info.role != "setting" or not (named or limit):
                 continue
             values = domain_values(view, info, goal)
+            if not named:  # "no time limit": the one setting that can run without end
+                values = [v for v in values if str(v).casefold() in _ENDLESS]
             for value in values:
                 words = [stem(w) for w in str(value).casefold().split()]
                 if len(words) == 2 and words[0] in ("no", "without") and words[1] == text.stems[j]:
                     goal[info.name] = value
                     claimed.add(j)
             plain = [v for v in values if str(v).casefold() in _PLAIN]
+            plain = plain or [v for v in values if str(v).casefold() in _ENDLESS]
             if info.name not in goal and len(plain) == 1 and isinstance(info.var, DiscreteVariable):
                 goal[info.name] = plain[0]  # "without any preset": the MANUAL (no preset) one
                 claimed.add(j)
 
 
 _PLAIN = frozenset({"manual", "none", "normal"})
+_ENDLESS = frozenset({"continuous", "cont", "unlimited", "nonstop", "∞", "endless"})
+"""A timer's value that runs without end: "no timer", "no time limit" ask for it."""
+
+
+def _bare_zero(info: VarInfo) -> Any:
+    """The "0" of a list of bare numbers (DELAY 0 / 15 / 30 / 45 / 60 min): its none."""
+    if not isinstance(info.var, DiscreteVariable) or len(info.values) < 2:
+        return None
+    if not all(re.fullmatch(r"\d+(?:\.\d+)?", str(v)) for v in info.values):
+        return None
+    return next((v for v in info.values if float(v) == 0), None)
 
 
 def _starts_at_zero(info: VarInfo) -> bool:

@@ -48,6 +48,9 @@ def ordinal_numbers(view: Model, instruction: str) -> str:
     return _ORDINAL_NOUN.sub(number, instruction)
 
 
+_WORD_NUMBER = re.compile(r"[A-Za-z]+[- ]?\d{1,2}")  # "user 1", "slot-2": a word and its number
+
+
 def _numbered(info: VarInfo) -> bool:
     """A setting of numbers (a day count) or of values coded with numbers (M1 … M4)."""
     if info.role != "setting":
@@ -56,5 +59,7 @@ def _numbered(info: VarInfo) -> bool:
         return info.dimension is None
     if isinstance(info.var, DiscreteVariable):
         values = [str(v) for v in info.values]
-        return len(values) >= 2 and all(CODE.fullmatch(v) or v.isdigit() for v in values)
+        return len(values) >= 2 and all(
+            CODE.fullmatch(v) or v.isdigit() or _WORD_NUMBER.fullmatch(v) for v in values
+        )
     return False

@@ -122,6 +122,22 @@ def doing_name(name: str) -> bool:
     return one and words[0].endswith("ing") and len(words[0]) > 5
 
 
+def _past_question(var: Any, later: list[Any]) -> Any:
+    """The state START asks for among those after the first (READY, CONFIRM, FRYING): the
+    first, unless it is a question on the display ("START?", CONFIRM) — a state that waits for
+    a second press — then the one after it: the work under way is what the user wants."""
+    if len(later) >= 2 and _asks(var, later[0]):
+        return later[1]
+    return later[0] if later else None
+
+
+def _asks(var: Any, value: Any) -> bool:
+    """The state is a question: its display text ends in "?", or it is named CONFIRM."""
+    shown = var.show.get(str(value)) if isinstance(getattr(var, "show", None), dict) else None
+    said = str(value).casefold()
+    return (isinstance(shown, str) and shown.strip().endswith("?")) or said.startswith("confirm")
+
+
 def _named_for_key(name: str, labels: str) -> bool:
     """A switch named for the operation its own key starts (DISPENSE toggles ``dispense``): the
     operation under way, started by the operation's verbs, not a setting."""
@@ -163,7 +179,9 @@ def start_values_of(
     for name in running:
         info = infos[name]
         known = all_values(info.var)  # a dependent running state has its values per case
-        on = info.on or next((v for v in info.values if known and v != known[0]), None)
+        on = info.on or _past_question(
+            info.var, [v for v in info.values if known and v != known[0]]
+        )
         if on is not None:
             found.setdefault(None, (name, on))
     return found

@@ -49,6 +49,8 @@ def superlatives(
             end = -1  # "the thickest setting" on THICK ▲ / ▼, "the brightest" for BRIGHTNESS
         if end is None and _superlative_before_name(view, text, k, goal):
             end, reach = -1, 1  # "the brightest backlight": the most of the setting named
+        if end is None and word in _SPANS and _degree_before_name(view, text, k, goal):
+            end, reach = _SPANS[word], 2  # "the wide pitch range": the widest of its spans
         if end is None and _little_of(view, text, k, goal):
             end, reach = 0, 2  # "with just a little water": the least of it that works
         scale_index = None
@@ -80,6 +82,8 @@ def superlatives(
             )
             if ladder(info.values) and not _beside(info, text, k, reach):
                 continue  # named levels are a weak order: only "the most steam" says it
+            if score > 0 and _made_of_its_word(info, word):
+                score += 0.5  # "the widest pulse": PULSE WIDTH, not PULSE RATE
             if score > 0 and (best is None or score > best[0]):
                 best = (score, name)
         own = _own_superlative(view, goal, word)
@@ -116,6 +120,14 @@ def superlatives(
         claimed.add(k)
 
 
+def _made_of_its_word(info: VarInfo, word: str) -> bool:
+    """The superlative is made of a word of the setting's own ("widest" of WIDTH)."""
+    if not word.endswith("est") or len(word) < 6:
+        return False
+    base = word[:-3]
+    return bool({concept(base), concept(base + "e")} & own_concepts(info))
+
+
 def _own_superlative(view: Model, goal: Goal, word: str) -> str | None:
     """The one open ordered setting a superlative is made of the setting's own word for
     ("thickest" of a THICK ▲ / ▼ thickness, "brightest" of BRIGHTNESS): the most of it."""
@@ -149,6 +161,23 @@ def _superlative_before_name(view: Model, text: Text, k: int, goal: Goal) -> boo
         and info.role == "setting"
         and ordered(info)
         and after in own_concepts(info)
+        for name, info in view.infos.items()
+    )
+
+
+_SPANS = {"wide": -1, "broad": -1, "narrow": 0}
+"""How wide a span is, said plainly of a setting that is a span (a pitch RANGE of ±8 / ±16)."""
+
+
+def _degree_before_name(view: Model, text: Text, k: int, goal: Goal) -> bool:
+    """The adjective stands right before (or one word before) an open ordered setting's own
+    name: "the wide range", "a narrow pitch range" grade that setting."""
+    after = {text.concepts[j] for j in (k + 1, k + 2) if j < len(text.tokens)}
+    return any(
+        name not in goal
+        and info.role == "setting"
+        and ordered(info)
+        and bool(after & own_concepts(info))
         for name, info in view.infos.items()
     )
 
@@ -382,6 +411,11 @@ def _beside(info: VarInfo, text: Text, k: int, reach: int) -> bool:
 
 def _names_set(view: Model, text: Text, k: int, goal: Goal) -> bool:
     """The word after the superlative names (not generically) a setting the goal already has."""
+    pair = [text.concepts[j] for j in (k + 1, k + 2) if j < len(text.concepts)]
+    if len(pair) == 2 and not any(generic(c) for c in pair):
+        both = [n for n, i in view.infos.items() if all(i.vocab.get(c, 0.0) >= 0.8 for c in pair)]
+        if both and not any(n in goal for n in both):
+            return False  # "the narrow pitch range" beside a PITCH read: the PITCH RANGE's
     for j in (k + 1, k + 2):
         key = text.concepts[j] if j < len(text.concepts) else ""
         if key and not generic(key) and any(view.infos[n].vocab.get(key, 0.0) >= 0.8 for n in goal):

@@ -419,6 +419,8 @@ def _says_start(
             continue
         if _named_with_a_number(names, text, k2):
             continue  # "heat 7": a setting named with its value, not a doing
+        if _plural_form(text.word(k2)):
+            continue  # "Fries at 175 degrees": a plural noun, never an order's bare verb
         if verb in STRONG_VERBS:
             return True
         if verb in WEAK_VERBS and (k == 0 or text.word(k - 1) in (".", ";", "!")):
@@ -430,6 +432,12 @@ def _says_start(
         if verb in WEAK_VERBS and text.word(k2 + 1) == "me":
             return True  # "... and make me an espresso"
     return None
+
+
+def _plural_form(word: str) -> bool:
+    """A word ending in -s as plural nouns do (FRIES, "chips"): an order opens with the bare
+    verb ("Fry", "Bake"), so such a word opening a clause is a thing named, not a doing."""
+    return len(word) > 3 and word.endswith("s") and not word.endswith(("ss", "us", "is"))
 
 
 def _named_with_a_number(names: frozenset[str], text: Text, k: int) -> bool:

@@ -20,8 +20,11 @@ from typing import Any
 
 from apbot.model.domain import all_values
 from apbot.model.schema import ApplianceModel, NumericVariable, TimeVariable
+from apbot.read.goal_fit import fit
+from apbot.read.goal_numbered_times import numbered_family
 from apbot.read.goal_text import Text
 from apbot.read.goal_view import Goal, Model
+from apbot.read.numbers import Mention
 
 # Words that stand for one qualifier in an instruction (a model's "2" is "two", "second").
 _SAME: dict[str, tuple[str, ...]] = {
@@ -40,7 +43,13 @@ _SAME: dict[str, tuple[str, ...]] = {
     "bottom": ("lower", "bottom", "below", "underneath", "beneath"),
     "inner": ("inner",),
     "outer": ("outer",),
+    # Channels lettered A, B ... (a TENS unit's two outputs): the letter, said after its noun.
+    "a": ("a",),
+    "b": ("b",),
+    "c": ("c",),
+    "d": ("d",),
 }
+_LETTERS = frozenset({"a", "b", "c", "d"})
 # Two-way swings: a horizontal swing moves left and right, a vertical one up and down.
 _PHRASES: dict[str, tuple[tuple[str, ...], ...]] = {
     "h": (
@@ -54,6 +63,7 @@ _PHRASES: dict[str, tuple[tuple[str, ...], ...]] = {
 PART_NOUNS = frozenset(  # parts of an appliance that each hold their own settings
     {"zone", "zones", "basket", "baskets", "drawer", "drawers", "side", "sides", "ring", "rings"}
     | {"burner", "burners", "plate", "plates", "element", "compartment", "z", "pot", "one"}
+    | {"channel", "channels", "output", "outputs", "outlet", "outlets", "port", "ports"}
 )
 _ALL = frozenset({"both", "each"})
 _BREAKS = frozenset({",", ";", ".", "!", "?", "and", "then", "while"})
@@ -137,11 +147,21 @@ def _marks_at(twins: Twins, text: Text) -> dict[int, str]:
             numeral = word[0].isdigit() or word in ("one", "two", "three", "four")
             if numeral and (k == 0 or words[k - 1] not in twins.nouns):
                 continue  # a bare number is a zone only right after a zone's noun ("zone 2")
+            if word in _LETTERS and not _lettered(words, k, twins.nouns):
+                continue  # "a" is an article unless a part's noun stands right before it
             found[k] = name
     for k, word in enumerate(words):
         if word in _ALL and k not in found:
             found[k] = "all"
     return found
+
+
+def _lettered(words: list[str], k: int, nouns: frozenset[str]) -> bool:
+    """A single letter names a lettered part right after the part's noun ("channel A"), or
+    (not "a", the article) right before it ("the B channel")."""
+    if k > 0 and words[k - 1] in nouns and words[k - 1] not in _LETTERS:
+        return True
+    return words[k] != "a" and k + 1 < len(words) and words[k + 1] in nouns
 
 
 def _segments(text: Text) -> list[tuple[int, int]]:
@@ -182,12 +202,46 @@ def _qualifiers(twins: Twins, text: Text) -> list[str | None]:
     return out
 
 
+def twin_numbers(
+    view: Model,
+    text: Text,
+    mentions: list[Mention],
+    goal: Goal,
+    claimed: set[int],
+    where: dict[str, int],
+) -> None:
+    """A bare number no setting's word stands beside, said where a twin is named ("channel A
+    on five", "both channels at eight"), is that twin's: the qualifier names the setting."""
+    for twins in find_twins(view.model):
+        qualifiers: list[str | None] | None = None
+        for mention in mentions:
+            if mention.kind != "number" or any(
+                k in claimed for k in range(mention.start, mention.end)
+            ):
+                continue
+            if qualifiers is None:
+                qualifiers = _qualifiers(twins, text)
+            target = qualifiers[mention.start] if mention.start < len(qualifiers) else None
+            if target is None:
+                continue
+            names = twins.names if target == "all" else (target,)
+            values = {n: fit(view, view.infos[n], mention, goal) for n in names if n not in goal}
+            if not values or any(v is None for v in values.values()):
+                continue
+            for name, value in values.items():
+                goal[name] = value
+                where[name] = mention.start
+            claimed.update(range(mention.start, mention.end))
+
+
 def place_twins(view: Model, text: Text, goal: Goal, where: dict[str, int]) -> None:
     """Move (or copy, for "both") each twin setting's value to the twin the text names."""
     for twins in find_twins(view.model):
         taken = [n for n in twins.names if n in goal and n in where]
         if not taken:
             continue
+        if len(taken) >= 2 and set(twins.names) <= set(numbered_family(view)):
+            continue  # times said in a row, placed in order (goal_numbered_times)
         qualifiers = _qualifiers(twins, text)
         if not any(q is not None for q in qualifiers):
             continue

@@ -20,9 +20,27 @@ from apbot.read.number_tokens import read_number
 from apbot.read.numbers import Mention
 
 _DEGREES = frozenset({"degrees", "degree", "deg", "°"})
-UNIT_WORDS = frozenset(
-    {"celsius", "fahrenheit", "c", "f", "dh", "fh", "ppm", "gpg", "mmol", "kg", "lb", "lbs", "st"}
-) | frozenset({"g", "oz", "ml", "l", "km", "mi", "miles", "kcal", "cal", "kj", "mph", "kmh"})
+UNIT_WORDS = (
+    frozenset(
+        {
+            "celsius",
+            "fahrenheit",
+            "c",
+            "f",
+            "dh",
+            "fh",
+            "ppm",
+            "gpg",
+            "mmol",
+            "kg",
+            "lb",
+            "lbs",
+            "st",
+        }
+    )
+    | frozenset({"g", "oz", "ml", "l", "km", "mi", "miles", "kcal", "cal", "kj", "mph", "kmh"})
+    | frozenset({"mmhg", "kpa", "psi", "bar"})
+)  # pressure, as a blood-pressure cuff or a pump shows it
 """Units a selector may offer for one quantity (a scale of temperature, of water hardness, of
 weight or distance): the values of a unit selector, never of a programme."""
 
@@ -209,6 +227,8 @@ _MORE_NAMES = {"st": ["stone", "stones"], "lb": ["pound", "pounds", "lbs"]}
 _MORE_NAMES |= {"kg": ["kilogram", "kilograms", "kilo", "kilos"], "g": ["gram", "grams"]}
 _MORE_NAMES |= {"oz": ["ounce", "ounces"], "ml": ["millilitre", "millilitres", "milliliters"]}
 _MORE_NAMES |= {"mi": ["mile", "miles"], "km": ["kilometre", "kilometres", "kilometers"]}
+_MORE_NAMES |= {"kpa": ["kilopascal", "kilopascals"], "mmhg": ["mercury"]}  # "millimetres of …"
+_MORE_NAMES |= {"bar": ["bars"], "psi": ["pounds per square inch"]}
 """The words a unit symbol a selector offers is said by ("in stones" for ST)."""
 
 
@@ -216,6 +236,7 @@ def _said_unit_names(var: DiscreteVariable, unit: Any) -> set[str]:
     """One-word names of a selector's unit: its own, its display text's, and the words the
     symbol stands for."""
     names = {words[0] for words in _unit_names(var, unit) if len(words) == 1}
+    names |= {"".join(words) for words in _unit_names(var, unit) if len(words) > 1}  # kPa
     for name in list(names):
         names.update(_MORE_NAMES.get(name, ()))
     return names

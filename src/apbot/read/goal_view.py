@@ -24,7 +24,7 @@ from apbot.model.schema import (
 from apbot.read.belief_name import UNNAMED
 from apbot.read.goal_aliases import bracket_aliases
 from apbot.read.goal_daytimes import day_dial, switch_time, whole_day
-from apbot.read.goal_legends import add_setting_words, legend_words
+from apbot.read.goal_legends import add_kind_nouns, add_setting_words, legend_words
 from apbot.read.goal_manual import coded_names, title_nouns
 from apbot.read.goal_phrases import value_phrases
 from apbot.read.goal_roles import (
@@ -271,6 +271,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
             if word not in STOP_WORDS and key not in taken:
                 infos[name].vocab[key] = 0.5  # a word only this key's legend in the manual has
     add_setting_words(infos, manual, set_keys)
+    add_kind_nouns(infos, manual)
     named: dict[str, list[tuple[Any, str]]] = {}
     coded_list = coded_names(model, manual)
     shared_words = _words_all_names_share(coded_list)
@@ -357,7 +358,16 @@ def _dimension_by_name(info: VarInfo) -> str | None:
         return "ratio"
     if concept("spin") in info.vocab:
         return "speed"
+    if concept("speed") in info.vocab and _turns_a_minute(info):
+        return "speed"  # SPEED 33 / 45 / 78: turns a minute ("a 45 rpm single"), not levels 1-3
     return None
+
+
+def _turns_a_minute(info: VarInfo) -> bool:
+    """Every value is a bare number and some reach 10 or more: a rate, not a level number."""
+    numbers = [parse_quantity(str(v)) for v in all_values(info.var)]
+    bare = [q[0] for q in numbers if q is not None and q[1] is None]
+    return len(bare) == len(numbers) > 1 and max(bare) >= 10
 
 
 _VIEWS: dict[tuple[int, int], tuple[ApplianceModel, str, Model]] = {}

@@ -160,7 +160,7 @@ _GROUPS: tuple[tuple[str, ...], ...] = (
     ("humidity", "rh", "humid", "humidistat"),
     ("fan", "airflow", "air", "blower", "convection", "circulation", "ventilation"),
     ("power", "watt", "watts", "wattage", "kw", "kilowatt", "output"),
-    ("level", "setting", "mark"),
+    ("level", "setting", "mark", "intensity", "strength"),
     ("size", "loaf", "portion", "amount", "weight"),
     ("crust", "colour", "color", "browning"),
     ("spin", "spinning"),
@@ -293,6 +293,8 @@ LOWEST = frozenset(
         "subtlest",
         "slightest",
         "tiniest",
+        "narrowest",
+        "thinnest",
     }
 )
 HIGHEST = frozenset(
@@ -316,6 +318,8 @@ HIGHEST = frozenset(
         "hardest",
         "firmest",
         "loudest",
+        "widest",
+        "broadest",
     }
 )
 # Letters that stand for sizes or levels on a display.
@@ -369,6 +373,7 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "female": ("woman", "lady", "girl"),  # a profile's sex said of the person
     "male": ("man", "gentleman", "boy"),
     # a reach said as a length ("the long sensor range", "read the chip from further away")
+    "closed": ("shut",),  # a door, a lid, a valve shut is closed
     "far": ("long", "longer", "longest", "further", "farther", "furthest", "farthest"),
     "near": ("short", "shorter", "shortest", "close", "closer", "closest", "nearest"),
 }

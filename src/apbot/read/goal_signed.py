@@ -1,0 +1,48 @@
+"""A change said with its direction: "pitch down 1.5 %", "slow it down by ten percent".
+
+A setting that runs either side of zero (a turntable's pitch -8 … +8 %, a trim, an offset)
+takes a number said after a word of going down as below zero: people say the direction in
+words rather than writing the minus sign. "Down to 3" is where it ends, not how far it moves,
+so a "to" right before the number keeps it as said; a setting that cannot go below zero is
+never touched.
+"""
+
+from __future__ import annotations
+
+from apbot.model.schema import NumericVariable
+from apbot.read.goal_text import Text
+from apbot.read.goal_view import Goal, Model, domain_values
+
+_DOWNWARD = frozenset({"down", "minus", "lower", "slower", "decrease", "reduce", "negative"})
+_CLAUSE_ENDS = frozenset({",", ";", ".", "!", "?", "and", "then", "with", "but"})
+_REACH = 5  # words back from the number: "slow it down by ten percent"
+
+
+def signed_changes(view: Model, text: Text, goal: Goal, where: dict[str, int]) -> None:
+    """A positive number said after a word of going down becomes its negative, where the
+    setting takes that negative."""
+    for name, value in list(goal.items()):
+        info = view.infos.get(name)
+        if info is None or not isinstance(info.var, NumericVariable) or name not in where:
+            continue
+        if not isinstance(value, int | float) or value <= 0:
+            continue
+        start = where[name]
+        if text.word(start - 1) == "to":
+            continue  # "down to 3": the value it ends at
+        if not _said_downward(text, start):
+            continue
+        domain = domain_values(view, info, goal)
+        negative = next((v for v in domain if abs(float(v) + float(value)) < 1e-9), None)
+        if negative is not None:
+            goal[name] = negative
+
+
+def _said_downward(text: Text, start: int) -> bool:
+    for k in range(start - 1, max(-1, start - 1 - _REACH), -1):
+        word = text.word(k)
+        if word in _CLAUSE_ENDS:
+            return False
+        if word in _DOWNWARD:
+            return True
+    return False
