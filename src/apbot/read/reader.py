@@ -28,10 +28,12 @@ from apbot.read.cases_units import unit_ranges
 from apbot.read.cases_zones import zone_twins
 from apbot.read.closing_start import close_with_start
 from apbot.read.code_amounts import read_code_amounts
+from apbot.read.code_cycles import read_code_cycles
 from apbot.read.code_glosses import name_glossed_words
 from apbot.read.code_levels import read_code_levels
 from apbot.read.code_words import name_code_words
 from apbot.read.codes import name_codes
+from apbot.read.confirm_starts import read_confirmed_starts
 from apbot.read.guards_enabled import read_enabling_switches
 from apbot.read.held_walks import read_held_walks
 from apbot.read.hold_seconds import hold_seconds, pair_hold_seconds
@@ -43,6 +45,7 @@ from apbot.read.pressed_walks import read_pressed_walks
 from apbot.read.range_codes import read_range_codes
 from apbot.read.report import Note, Report
 from apbot.read.roles import assign
+from apbot.read.running_locks import read_running_locks
 from apbot.read.shapes import CHOICE_WORDS
 from apbot.read.shown_bars import read_bar_shows
 from apbot.read.shown_figures import read_prefixed_figures
@@ -94,6 +97,7 @@ def read_manual(
     read_off_words(builder)
     read_held_off_words(builder)
     read_range_codes(builder)
+    read_code_cycles(builder)  # ("After P8 … P1 again": the key's run of codes)
     read_initials(builder)
     read_bar_shows(builder)
     read_bracket_shows(builder)
@@ -103,6 +107,8 @@ def read_manual(
     read_held_walks(builder)  # (after the resets: those were read for the switch it replaces)
     read_pressed_walks(builder)  # (after the held walks: a press moving through one is theirs)
     read_enabling_switches(builder)
+    read_confirmed_starts(builder)  # ("the first press only asks for confirmation")
+    read_running_locks(builder)  # ("While FRY is shown, MENU … are locked")
     close_with_start(builder)  # (last: the keypad entries as built, whatever renamed them)
     data = _assemble(builder, appliance_id, category)
     data["actions"].update({a: {"skill": "wait", "seconds": w} for a, w in waits.items()})
