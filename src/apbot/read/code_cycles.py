@@ -14,6 +14,7 @@ import re
 from typing import Any
 
 from apbot.read.build import Builder
+from apbot.read.shapes import _value_text
 from apbot.read.range_codes import _actions_said
 
 # "After P8 the display shows P1 again", "after F5 it returns to F1", "after L3 comes L1"
@@ -52,7 +53,7 @@ def read_code_cycles(b: Builder) -> None:
         for var, spec in b.variables.items():
             if var == "power" or not _stepped_by(b, var, keys):
                 continue
-            if spec.get("type") == "discrete" and set(codes) <= set(spec.get("values") or []):
+            if spec.get("type") == "discrete" and {c.lower() for c in codes} <= set(spec.get("values") or []):
                 continue
             _make_codes(spec, codes)
             b.note(f"variables.{var}.values", f"{codes[0]} … {codes[-1]}, wrapping", at)
@@ -73,7 +74,7 @@ def _make_codes(spec: dict[str, Any], codes: list[str]) -> None:
     for key in ("ranges", "unit", "values", "show", "entry"):
         spec.pop(key, None)
     spec["type"] = "discrete"
-    spec["values"] = codes
+    spec["values"] = [_value_text(c) for c in codes]
     spec["wrap"] = True
-    if initial is None or str(initial) not in codes:
+    if initial is None or str(initial) not in spec["values"]:
         spec.pop("initial", None)

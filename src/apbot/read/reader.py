@@ -34,6 +34,7 @@ from apbot.read.code_levels import read_code_levels
 from apbot.read.code_words import name_code_words
 from apbot.read.codes import name_codes
 from apbot.read.confirm_starts import read_confirmed_starts
+from apbot.read.keyed_cycles import read_keyed_cycles
 from apbot.read.guards_enabled import read_enabling_switches
 from apbot.read.held_walks import read_held_walks
 from apbot.read.hold_seconds import hold_seconds, pair_hold_seconds
@@ -87,6 +88,8 @@ def read_manual(
     unit_ranges(builder)
     read_only_modes(builder)
     read_fixed_in_mode(builder)  # "In Sleep mode the speed is fixed at 1"
+    read_code_cycles(builder)  # ("After P8 … P1 again": the key's run of codes)
+    read_keyed_cycles(builder)  # ("NATURE: N1 → N2 … NOISE: S1 → …": a cycle per key)
     name_codes(builder)
     name_code_words(builder)
     name_glossed_words(builder)
@@ -97,7 +100,6 @@ def read_manual(
     read_off_words(builder)
     read_held_off_words(builder)
     read_range_codes(builder)
-    read_code_cycles(builder)  # ("After P8 … P1 again": the key's run of codes)
     read_initials(builder)
     read_bar_shows(builder)
     read_bracket_shows(builder)
