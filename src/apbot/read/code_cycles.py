@@ -14,8 +14,8 @@ import re
 from typing import Any
 
 from apbot.read.build import Builder
-from apbot.read.shapes import _value_text
 from apbot.read.range_codes import _actions_said
+from apbot.read.shapes import _value_text
 
 # "After P8 the display shows P1 again", "after F5 it returns to F1", "after L3 comes L1"
 _CODE_WRAP = re.compile(
@@ -53,7 +53,9 @@ def read_code_cycles(b: Builder) -> None:
         for var, spec in b.variables.items():
             if var == "power" or not _stepped_by(b, var, keys):
                 continue
-            if spec.get("type") == "discrete" and {c.lower() for c in codes} <= set(spec.get("values") or []):
+            if spec.get("type") == "discrete" and {c.lower() for c in codes} <= set(
+                spec.get("values") or []
+            ):
                 continue
             _make_codes(spec, codes)
             b.note(f"variables.{var}.values", f"{codes[0]} … {codes[-1]}, wrapping", at)

@@ -34,11 +34,11 @@ from apbot.read.code_levels import read_code_levels
 from apbot.read.code_words import name_code_words
 from apbot.read.codes import name_codes
 from apbot.read.confirm_starts import read_confirmed_starts
-from apbot.read.keyed_cycles import read_keyed_cycles
 from apbot.read.guards_enabled import read_enabling_switches
 from apbot.read.held_walks import read_held_walks
 from apbot.read.hold_seconds import hold_seconds, pair_hold_seconds
 from apbot.read.initials import read_initials
+from apbot.read.keyed_cycles import read_keyed_cycles
 from apbot.read.labels import find_labels
 from apbot.read.off_words import read_held_off_words, read_off_words
 from apbot.read.position_charts import read_position_charts
