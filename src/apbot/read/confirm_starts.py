@@ -48,15 +48,14 @@ def read_confirmed_starts(b: Builder) -> None:
     spec["values"] = ["off", "confirm", "on"]
     found[0][1][0]["effect"] = "next"
     b.note("variables.running", "a first press asks for confirmation, a second starts", said[0])
-    if spec.get("visible") is False:
-        word, at = _started_word(b)
-        if word:  # the belief can now see the start take hold (not the request, left unread)
-            spec.pop("visible")
-            spec["show"] = {"off": "", "on": word}
-            request = _request_word(b, said)
-            if request:  # "START? (flashing)": the request's own word
-                spec["show"]["confirm"] = request
-            b.note("variables.running.show", f"the panel shows {word} once it runs", at)
+    word, at = _started_word(b)
+    if word:  # the press-by-press table's word: the belief can see the start take hold
+        spec.pop("visible", None)
+        spec["show"] = {"off": "", "on": word}
+        b.note("variables.running.show", f"the panel shows {word} once it runs", at)
+        request = _request_word(b, said)
+        if request:  # "START? (flashing)": the request's own word
+            spec["show"]["confirm"] = request
 
 
 def _started_word(b: Builder) -> tuple[str, int | None]:
@@ -78,9 +77,14 @@ _REQUEST = re.compile(r"(?<![\w?])([A-Z][A-Z0-9]{1,7}\??)\s*\(?\s*(?:flash|blink
 
 
 def _request_word(b: Builder, said: list[int]) -> str:
-    """The display word of the start request, in a sentence saying the start is confirmed."""
-    for i in said:
+    """The display word of the start request: in a sentence saying the start is confirmed,
+    else in a table row of the first press ("START (1st) | READY? (flashing)")."""
+    rows = [i for i, u in enumerate(b.manual.units) if u.cells and _FIRST.search(u.text)]
+    for i in said + rows:
         m = _REQUEST.search(b.manual.units[i].text)
         if m:
             return m.group(1)
     return ""
+
+
+_FIRST = re.compile(r"\b(?:1st|first)\b", re.IGNORECASE)

@@ -38,28 +38,36 @@ def read_keyed_cycles(b: Builder) -> None:
             found = find_list(unit.text[end:stop])
             if not found or found[1] != "arrows" or len(found[0]) < 2:
                 continue
-            var = steppers[label]
+            var, step = steppers[label]
+            step["effect"] = "next"  # (an on/off read for want of values steps the cycle)
             values = list(dict.fromkeys(_value_text(v) for v in found[0]))
             _make_cycle(b.variables[var], values)
             b.note(f"variables.{var}.values", f"{label}: {' → '.join(values)}", at)
 
 
-def _steppers(b: Builder) -> dict[str, str]:
-    """Printed key name → the variable its press alone steps to the next value."""
+def _steppers(b: Builder) -> dict[str, tuple[str, dict[str, Any]]]:
+    """Printed key name → the variable its press alone steps (to the next value, or on and
+    off for want of values) and that step."""
     out: dict[str, str] = {}
     for steps in b.features.values():
         for step in steps:
             acts = step.get("actions") or []
             var = step.get("variable")
-            if len(acts) != 1 or step.get("effect") != "next" or not var or var == "power":
+            if len(acts) != 1 or step.get("effect") not in ("next", "toggle") or not var:
+                continue
+            if var == "power" or (step["effect"] == "toggle" and _values(b, var) != ["off", "on"]):
                 continue
             info = next((i for i in b.infos if i.name == acts[0]), None)
             if info is None or info.skill != "press" or len(info.controls) != 1:
                 continue
             label = b.labels.get(info.controls[0])
             if label is not None and label.text and len(label.text) >= 2:
-                out[label.text] = var
+                out[label.text] = (var, step)
     return out
+
+
+def _values(b: Builder, var: str) -> list[str]:
+    return [str(v) for v in b.variables.get(var, {}).get("values") or []]
 
 
 def _make_cycle(spec: dict[str, Any], values: list[str]) -> None:

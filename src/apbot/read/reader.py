@@ -53,6 +53,7 @@ from apbot.read.shown_figures import read_prefixed_figures
 from apbot.read.text import check_text, parse_manual
 from apbot.read.typed_prefix import read_typed_prefixes
 from apbot.read.value_codes import read_value_codes
+from apbot.read.value_keys import read_value_keys
 from apbot.read.value_shows import read_bracket_shows
 
 MAX_REPAIRS = 40
@@ -88,6 +89,7 @@ def read_manual(
     unit_ranges(builder)
     read_only_modes(builder)
     read_fixed_in_mode(builder)  # "In Sleep mode the speed is fixed at 1"
+    read_value_keys(builder)  # ("Press 33 or 45 to select that speed": one setting)
     read_code_cycles(builder)  # ("After P8 … P1 again": the key's run of codes)
     read_keyed_cycles(builder)  # ("NATURE: N1 → N2 … NOISE: S1 → …": a cycle per key)
     name_codes(builder)
