@@ -48,7 +48,7 @@ def read_keyed_cycles(b: Builder) -> None:
 def _steppers(b: Builder) -> dict[str, tuple[str, dict[str, Any]]]:
     """Printed key name → the variable its press alone steps (to the next value, or on and
     off for want of values) and that step."""
-    out: dict[str, str] = {}
+    out: dict[str, tuple[str, dict[str, Any]]] = {}
     for steps in b.features.values():
         for step in steps:
             acts = step.get("actions") or []
