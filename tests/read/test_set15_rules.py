@@ -149,3 +149,30 @@ def test_two_ends_said_by_what_the_keys_do_there_are_the_range() -> None:
     assert found == []  # one end said so is no range
     found = find_ranges("At 35 °C the − key has no effect; at 60 °C the + key has no effect.")
     assert found == [Range(35.0, 60.0, "°C", None)]
+
+
+_BOTTLE_MANUAL = """\
+# Fillrite bottle filler
+
+## Keys
+
+⏻ — on / off.
+500 — half-litre bottle.
+750 — 0.75 litre bottle.
+
+## Bottle size (500 / 750 / 1000)
+
+Press 500 or 750 to choose the bottle size. The display shows the size.
+
+There is no key for the litre bottle: hold 500 and 750 together for 2 seconds; the
+display shows 1000.
+"""
+
+
+def test_keys_named_by_their_figures_select_one_setting() -> None:
+    actions = ["press_power", "press_500", "press_750", "hold_500_750"]
+    model = read_manual(_BOTTLE_MANUAL, actions).model
+    size = model.variables["size"]
+    assert [str(v) for v in getattr(size, "values", [])] == ["500", "750", "1000"]
+    steps = [s for f in model.features.values() for s in f if s.variable == "size"]
+    assert len(steps) == 1 and set(steps[0].actions) == set(actions[1:])
