@@ -176,3 +176,12 @@ def test_keys_named_by_their_figures_select_one_setting() -> None:
     assert [str(v) for v in getattr(size, "values", [])] == ["500", "750", "1000"]
     steps = [s for f in model.features.values() for s in f if s.variable == "size"]
     assert len(steps) == 1 and set(steps[0].actions) == set(actions[1:])
+
+
+def test_a_slot_left_open_while_setting_opens_no_setting() -> None:
+    from apbot.read.roles_common import _OPENS_SETTING_RE
+
+    assert (
+        _OPENS_SETTING_RE.search("CODE  opens the arming-delay setting").group(1) == "arming-delay"
+    )
+    assert _OPENS_SETTING_RE.search("the lid was left open while setting the clock") is None
