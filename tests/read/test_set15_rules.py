@@ -10,7 +10,6 @@ from apbot.read.code_cycles import code_run
 from apbot.read.goal import parse_instruction
 from apbot.read.text_boxes import unbox
 from apbot.read.value_lists import find_list
-from apbot.read.values import Range, find_ranges
 
 _PATTERNS_MANUAL = """\
 # Glowmaster bath lamp
@@ -140,15 +139,6 @@ def test_start_aims_at_on_of_an_off_request_on_run() -> None:
     model = read_manual(_KETTLE_MANUAL, ["press_power", "press_mode", "press_start"]).model
     goal = parse_instruction(model, "Herbal tea, and start it.")
     assert goal.get("running") == "on"  # not the request the first press makes
-
-
-def test_two_ends_said_by_what_the_keys_do_there_are_the_range() -> None:
-    found = find_ranges("At 2, SPEED ▼ does nothing more; at 12, SPEED ▲ does nothing more.")
-    assert found == [Range(2.0, 12.0, "", None)]
-    found = find_ranges("at 90 % the + key has no further effect, at 10 % the − key has none.")
-    assert found == []  # one end said so is no range
-    found = find_ranges("At 35 °C the − key has no effect; at 60 °C the + key has no effect.")
-    assert found == [Range(35.0, 60.0, "°C", None)]
 
 
 _BOTTLE_MANUAL = """\

@@ -45,13 +45,6 @@ STOPS_RE = re.compile(
     r"(?![\w:])",
     re.IGNORECASE,
 )
-# an end said by what the key does there: "At 1, VOL− does nothing more; at 16, VOL+ does
-# nothing more", "at 40 the ▲ key has no further effect": two such ends are the range
-END_RE = re.compile(
-    rf"\bat\s+({NUM})\s*({UNIT})?(?![\w:])\s*,?\s+[^.;,]{{0,25}}?\b(?:does\s+nothing|"
-    r"has\s+no\s+(?:further\s+)?effect|changes\s+nothing|no\s+longer\s+(?:works|changes))",
-    re.IGNORECASE,
-)
 TIME_RANGE_RE = re.compile(rf"(?<![\d:])({_TIME}){_DASH}({_TIME})(?![\d:])")
 # "0:30 – 0:45 – 1:00 – 1:15": a chain of clock values one by one, not the range of its first two
 TIME_CHAIN_RE = re.compile(
@@ -281,12 +274,6 @@ def _ranges(text: str) -> list[Range]:
             found = Range(lo, hi, units.pop() if units else "")
             if found not in out:
                 out.append(found)
-    ends = [(number(m.group(1)), unit_name(m.group(2) or "")) for m in END_RE.finditer(text)]
-    figures = sorted({x for x, _u in ends if x is not None})
-    if len(ends) == 2 and len(figures) == 2 and len({u for _x, u in ends if u}) <= 1:
-        found = Range(figures[0], figures[1], next((u for _x, u in ends if u), ""))
-        if found not in out:  # (a range the sentence also writes out stays as written)
-            out.append(found)
     # "up to 99:59"; a 12-hour clock's last minute ("up to 12:59") starts at 1:00
     twelve = 12 * 3600 + 59 * 60
     for top, at, min_sec in clock_tops(text):
