@@ -134,6 +134,8 @@ def _keypad(r: Range, text: str) -> bool:
         return False
     return bool(
         _KEYPAD_WORDS.search(text)
+        # "0-9, AWAY, OFF": the digit keys listed with the other keys
+        or re.search(r"(?<![\w.])0\s*[-–—]\s*9\s*,\s*[A-Z*#]|[A-Z*#]\s*,\s*0\s*[-–—]\s*9\b", text)
         or re.search(r"\b(?:keys|buttons|pads)\s+0\s*(?:-|–|—|to)\s*9\b", text, re.I)
         or re.search(r"\b0\s*(?:-|–|—|to)\s*9\s+(?:keys|buttons|pads)\b", text, re.I)
     )
