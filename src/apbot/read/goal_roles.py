@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING, Any
 
 from apbot.model.domain import all_values
 from apbot.model.schema import AnywhereStep, ApplianceModel, DiscreteVariable, GoTo, Step
-from apbot.read.goal_values import OFF_WORDS, name_words
+from apbot.read.goal_values import OFF_WORDS, ON_WORDS, name_words
 from apbot.read.goal_vocab import concept
 
 if TYPE_CHECKING:
@@ -179,9 +179,9 @@ def start_values_of(
     for name in running:
         info = infos[name]
         known = all_values(info.var)  # a dependent running state has its values per case
-        on = info.on or _past_question(
-            info.var, [v for v in info.values if known and v != known[0]]
-        )
+        said_on = (v for v in info.values if str(v).casefold() in ON_WORDS)  # off/request/on
+        on = info.on or next(said_on, None)
+        on = on or _past_question(info.var, [v for v in info.values if known and v != known[0]])
         if on is not None:
             found.setdefault(None, (name, on))
     return found

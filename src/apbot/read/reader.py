@@ -28,14 +28,17 @@ from apbot.read.cases_units import unit_ranges
 from apbot.read.cases_zones import zone_twins
 from apbot.read.closing_start import close_with_start
 from apbot.read.code_amounts import read_code_amounts
+from apbot.read.code_cycles import read_code_cycles
 from apbot.read.code_glosses import name_glossed_words
 from apbot.read.code_levels import read_code_levels
 from apbot.read.code_words import name_code_words
 from apbot.read.codes import name_codes
+from apbot.read.confirm_starts import read_confirmed_starts
 from apbot.read.guards_enabled import read_enabling_switches
 from apbot.read.held_walks import read_held_walks
 from apbot.read.hold_seconds import hold_seconds, pair_hold_seconds
 from apbot.read.initials import read_initials
+from apbot.read.keyed_cycles import read_keyed_cycles
 from apbot.read.labels import find_labels
 from apbot.read.off_words import read_held_off_words, read_off_words
 from apbot.read.position_charts import read_position_charts
@@ -43,12 +46,14 @@ from apbot.read.pressed_walks import read_pressed_walks
 from apbot.read.range_codes import read_range_codes
 from apbot.read.report import Note, Report
 from apbot.read.roles import assign
+from apbot.read.running_locks import read_running_locks
 from apbot.read.shapes import CHOICE_WORDS
 from apbot.read.shown_bars import read_bar_shows
 from apbot.read.shown_figures import read_prefixed_figures
 from apbot.read.text import check_text, parse_manual
 from apbot.read.typed_prefix import read_typed_prefixes
 from apbot.read.value_codes import read_value_codes
+from apbot.read.value_keys import read_value_keys
 from apbot.read.value_shows import read_bracket_shows
 
 MAX_REPAIRS = 40
@@ -84,6 +89,9 @@ def read_manual(
     unit_ranges(builder)
     read_only_modes(builder)
     read_fixed_in_mode(builder)  # "In Sleep mode the speed is fixed at 1"
+    read_value_keys(builder)  # ("Press 33 or 45 to select that speed": one setting)
+    read_code_cycles(builder)  # ("After P8 … P1 again": the key's run of codes)
+    read_keyed_cycles(builder)  # ("NATURE: N1 → N2 … NOISE: S1 → …": a cycle per key)
     name_codes(builder)
     name_code_words(builder)
     name_glossed_words(builder)
@@ -103,6 +111,8 @@ def read_manual(
     read_held_walks(builder)  # (after the resets: those were read for the switch it replaces)
     read_pressed_walks(builder)  # (after the held walks: a press moving through one is theirs)
     read_enabling_switches(builder)
+    read_confirmed_starts(builder)  # ("the first press only asks for confirmation")
+    read_running_locks(builder)  # ("While FRY is shown, MENU … are locked")
     close_with_start(builder)  # (last: the keypad entries as built, whatever renamed them)
     data = _assemble(builder, appliance_id, category)
     data["actions"].update({a: {"skill": "wait", "seconds": w} for a, w in waits.items()})

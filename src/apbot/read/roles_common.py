@@ -239,7 +239,9 @@ _SETS_TIME_RE = re.compile(
 # "opens the entry-delay setting", "opens the alarm-time adjustment": the key leads into a
 # setting the legend names (the noun is the setting, the key only its way in)
 _OPENS_SETTING_RE = re.compile(
-    r"\bopens?\s+(?:the\s+)?([a-z]+(?:[\s-][a-z]+){0,2}?)\s+(?:setting|adjustment)\b", re.I
+    # (the verb and its article: "left open while setting" is a slot left open, no key)
+    r"\bopens?\s+(?:the|its)\s+([a-z]+(?:[\s-][a-z]+){0,2}?)\s+(?:setting|adjustment)\b",
+    re.I,
 )
 
 

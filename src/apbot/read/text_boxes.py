@@ -93,6 +93,19 @@ def _ruled_rows(
     return len(runs) >= 3 and 2 * sum(n == 1 for n in runs) > len(runs)
 
 
+# a short item of its own, no wrapped text: a code, a number, a one-word name ("N2", "15", "P-3")
+_ITEM = re.compile(r"[A-Z]{0,3}[-.]?\d{1,3}[a-z]?|[A-Z][A-Z0-9-]{0,7}")
+
+
+def _spanned(above: list[str], cells: list[str]) -> bool:
+    """Whether a line with an empty first cell is a row of its own under a label spanning the
+    rows of its group (the first cell drawn once for the group), not a wrap: every other cell
+    is filled, and its second holds an item of the same shape as the row above's second."""
+    if cells[0] or len(cells) < 3 or not all(cells[1:]) or not all(above):
+        return False
+    return bool(_ITEM.fullmatch(cells[1]) and _ITEM.fullmatch(above[1]))
+
+
 def _rewrite(
     lines: list[str],
     top: int,
@@ -120,6 +133,9 @@ def _rewrite(
         in_header = first_rule is not None and i < first_rule
         # under rules that close every row, a line right under another is its row's wrap
         wrapped = not cells[0] or (ruled and i - 1 not in rules)
+        if rows and wrapped and not ruled and _spanned(rows[-1][1], cells):
+            cells[0] = rows[-1][1][0]  # "│ │ N2 │ Ocean waves │": a row under a group's label
+            wrapped = False
         if rows and wrapped and any(cells) and not in_header:
             last = rows[-1][1]
             for c, cell in enumerate(cells):

@@ -172,7 +172,9 @@ def find_list(text: str) -> tuple[list[str], str] | None:
         len(parts) >= 3 or both
     ):  # "… → HIGH, and from HIGH the next press …": the list ends at the comma
         last = re.split(
-            r"[,;]\s|\s[—–]\s|(?:^|\s+)(?:and\s+)?(?:then|back|again)\b|\.\s|\s*[()]|\s*(?:…|\.\.\.)",
+            r"[,;]\s|\s[—–]\s|(?:^|\s+)(?:and\s+)?(?:then|back|again)\b|\.\s|\s*[()]|\s*(?:…|\.\.\.)"
+            # "LOW → HIGH from left to right", "… clockwise": the direction, no value
+            r"|\s+(?:from\s+(?:left|right)|(?:anti|counter-?)?clockwise)\b",
             parts[-1],
         )[0]  # "… → P1. The display …", "FIRM → SOFT … (not every …)": nor at a sentence's end
         parts[-1] = _clean_item(last)
