@@ -1,0 +1,45 @@
+"""Rules from probing the reader with short manuals of our own (probe15): each rule on a small
+manual written in different words from the probe that found it."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from apbot.read import read_manual
+
+
+def _read(text: str, actions: list[str]) -> dict[str, Any]:
+    """The model read, as the YAML a reading writes (the lists and maps a test can compare)."""
+    return read_manual(text, actions).model.model_dump(mode="json", exclude_defaults=True)
+
+
+# a water cooler whose service settings are a code table under a heading naming the menu (N12)
+COOLER = """
+AquaChill WC-3 Water Cooler
+
+Buttons
+ON/OFF, SET, + , -
+
+Service menu
+Keep SET pressed for 5 seconds to enter the service menu. Press SET to move to the next code,
++ and - to change it.
+
+| Code | Function         | Values          | Default |
+|------|------------------|-----------------|---------|
+| A01  | Chill target     | 4 – 12, step 2  | 6       |
+| A02  | Night quiet      | 0 = off, 1 = on | 0       |
+| A03  | Scale            | C / F           | F       |
+"""
+
+
+def test_a_zero_padded_code_table_under_a_menu_heading_is_a_settings_menu() -> None:
+    model = _read(COOLER, ["press_onoff", "press_set", "hold_set", "press_plus", "press_minus"])
+    variables = model["variables"]
+    chill = variables["chill_target"]
+    assert chill["ranges"] == [[4, 12, 2]] and chill["initial"] == 6
+    quiet = variables["night_quiet"]
+    assert quiet["values"] == ["off", "on"] and quiet["show"] == {"off": "0", "on": "1"}
+    assert quiet["initial"] == "off"
+    scale = variables["scale"]
+    assert scale["values"] == ["c", "f"] and scale["initial"] == "f"
+    assert "settings_menu" in model["features"]
