@@ -43,3 +43,43 @@ def test_a_zero_padded_code_table_under_a_menu_heading_is_a_settings_menu() -> N
     scale = variables["scale"]
     assert scale["values"] == ["c", "f"] and scale["initial"] == "f"
     assert "settings_menu" in model["features"]
+
+
+# a hand warmer whose power key is named "..._toggle" and whose levels are lamps by place (N4, N15)
+WARMER = """
+CosyHands HW-2 rechargeable hand warmer
+
+Power
+Press the power key to switch the warmer on; hold it to switch off.
+
+Warmth
+When the warmer starts, the first LED comes on. Every press of LEVEL moves to the next LED:
+the second LED, then the third LED, then the fourth LED. A further press returns to the first.
+"""
+
+
+def test_a_toggle_named_power_key_is_power_and_lamps_by_place_are_levels() -> None:
+    model = _read(WARMER, ["power_toggle", "hold_power_toggle", "level_key"])
+    assert model["variables"]["power"]["values"] == ["off", "on"]
+    level = model["variables"]["level"]
+    assert level["type"] == "numeric" and level["ranges"] == [[1, 4, 1]]
+    assert level["initial"] == 1
+    assert model["features"]["set_level"][0]["effect"] == "next" and level["wrap"]
+
+
+# a fan heater with only a rocker-style switch named by its kind (N16)
+FAN_HEATER = """
+BreezeBox FH-1 fan heater
+
+Controls
+A switch (OFF / ON) on the side and a FAN button on top.
+
+Use
+Put the switch in the ON position, then press FAN to change between low and high.
+"""
+
+
+def test_a_switch_named_only_by_its_kind_and_moved_to_on_is_the_power_switch() -> None:
+    model = _read(FAN_HEATER, ["flip_switch", "press_fan"])
+    assert "power" in model["variables"]
+    assert model["features"]["power"][0]["actions"] == ["flip_switch"]

@@ -23,8 +23,9 @@ TURN_VERBS = ("turn", "rotate", "twist", "spin")
 CW_WORDS = ("cw", "clockwise", "right", "up", "forward", "next", "plus")
 CCW_WORDS = ("ccw", "anticlockwise", "counterclockwise", "left", "down", "back", "minus")
 # what kind of control it is, said after its name ("press_menu_button", "turn_timer_dial_cw"):
-# the manual calls the control MENU or TIMER, so the kind is no part of its name
-KIND_WORDS = re.compile(r"_(?:buttons?|keys?|knobs?|dials?|switch(?:es)?|btns?|pads?)$")
+# the manual calls the control MENU or TIMER, so the kind is no part of its name (a "toggle"
+# is a toggle switch: "power_toggle" is the power key)
+KIND_WORDS = re.compile(r"_(?:buttons?|keys?|knobs?|dials?|switch(?:es)?|toggles?|btns?|pads?)$")
 MAX_ACTIONS = 1000
 # a number key however its name is spelled: the digit alone, or with the word for a key or a
 # digit before or after it ("key_5", "digit_5", "number_5_button")

@@ -38,6 +38,7 @@ from apbot.read.hold_seconds import hold_seconds, pair_hold_seconds
 from apbot.read.initials import read_initials
 from apbot.read.labels import find_labels
 from apbot.read.off_words import read_held_off_words, read_off_words
+from apbot.read.ordinal_lamps import read_ordinal_lamps
 from apbot.read.position_charts import read_position_charts
 from apbot.read.pressed_walks import read_pressed_walks
 from apbot.read.range_codes import read_range_codes
@@ -78,6 +79,7 @@ def read_manual(
     infos = in_manual_order(infos, manual, labels)  # (the given order carries no meaning)
     builder = Builder(manual, infos, labels)
     assign(builder)
+    read_ordinal_lamps(builder)  # (a key guessed a toggle whose lamps, by place, are levels)
     apply_cases(builder)
     chosen_cases(builder)
     zone_twins(builder)
