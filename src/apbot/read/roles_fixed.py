@@ -146,10 +146,11 @@ def _switched_on_off(b: Builder, token: str) -> bool:
     if token not in ("switch", "slide", "rocker", "toggle"):
         return False
     named = re.compile(rf"\b{token}\b", re.IGNORECASE)  # (in lower case too: "the switch")
-    return any(
-        named.search(u.text) and _TO_ON_OFF_RE.search(u.text[named.search(u.text).start() :])
-        for u in b.manual.units
-    )
+    for unit in b.manual.units:
+        said = named.search(unit.text)
+        if said and _TO_ON_OFF_RE.search(unit.text[said.start() :]):
+            return True
+    return False
 
 
 def _printed_power(label: str) -> bool:
