@@ -83,3 +83,30 @@ def test_a_switch_named_only_by_its_kind_and_moved_to_on_is_the_power_switch() -
     model = _read(FAN_HEATER, ["flip_switch", "press_fan"])
     assert "power" in model["variables"]
     assert model["features"]["power"][0]["actions"] == ["flip_switch"]
+
+
+# a juicer card: two speeds joined by one arrow with a start aside, and a start said of the
+# appliance starting at a named value far from the key (N3, U3)
+JUICER = """
+PressPro J-2 slow juicer
+
+| No. | Key   | What it does                    | Note          |
+|-----|-------|---------------------------------|---------------|
+| 1   | PULP  | Tap: FINE → COARSE              | (default FINE) |
+| 2   | SPEED | Tap to change the speed: LO, MID or HI |        |
+
+Getting started
+Plug in and press ON. The juicer begins at speed MID.
+"""
+
+
+def test_two_capital_names_joined_by_one_arrow_are_a_list_and_a_start_aside_is_no_gloss() -> None:
+    model = _read(JUICER, ["press_on", "press_pulp", "press_speed"])
+    pulp = model["variables"]["pulp"]
+    assert pulp["values"] == ["fine", "coarse"]
+
+
+def test_the_appliance_starting_at_a_named_value_of_a_setting_is_its_start() -> None:
+    model = _read(JUICER, ["press_on", "press_pulp", "press_speed"])
+    speed = model["variables"]["speed"]
+    assert speed["values"] == ["lo", "mid", "hi"] and speed["initial"] == "mid"
