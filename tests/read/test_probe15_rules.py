@@ -110,3 +110,22 @@ def test_the_appliance_starting_at_a_named_value_of_a_setting_is_its_start() -> 
     model = _read(JUICER, ["press_on", "press_pulp", "press_speed"])
     speed = model["variables"]["speed"]
     assert speed["values"] == ["lo", "mid", "hi"] and speed["initial"] == "mid"
+
+
+# a rice cooker whose quick programme holds its time, said "<mode> has a fixed <setting> of N" (C4)
+COOKER = """
+GrainMate RC-8 rice cooker
+
+Keys: POWER, MENU, TEMP +, TEMP -, START
+
+MENU steps through WHITE → BROWN → QUICK → STEW.
+Press TEMP + or TEMP - to set the cooking temperature from 90 to 110 °C in 5 °C steps.
+QUICK has a fixed temperature of 105 °C.
+"""
+
+
+def test_a_mode_that_has_a_fixed_setting_of_a_value_holds_it_in_that_mode() -> None:
+    model = _read(COOKER, ["press_power", "press_menu", "temp_up", "temp_down", "press_start"])
+    temp = next(v for v in model["variables"].values() if v.get("depends_on"))
+    assert temp["cases"]["quick"]["ranges"] == [[105, 105, 1]]
+    assert temp["cases"]["white"]["ranges"][0][:2] == [90, 110]
