@@ -129,3 +129,21 @@ def test_a_mode_that_has_a_fixed_setting_of_a_value_holds_it_in_that_mode() -> N
     temp = next(v for v in model["variables"].values() if v.get("depends_on"))
     assert temp["cases"]["quick"]["ranges"] == [[105, 105, 1]]
     assert temp["cases"]["white"]["ranges"][0][:2] == [90, 110]
+
+
+def test_an_action_named_verb_last_or_with_its_hold_length_is_parsed_like_verb_first() -> None:
+    from apbot.read.actions import action_info, parse_actions
+
+    infos = {i.name: i for i in parse_actions(["mode_press", "mode_hold_5s", "dial_rotate_ccw"])}
+    assert (infos["mode_press"].skill, infos["mode_press"].controls) == ("press", ("mode",))
+    assert (infos["mode_hold_5s"].skill, infos["mode_hold_5s"].controls) == ("hold", ("mode",))
+    assert infos["dial_rotate_ccw"].skill == "turn_ccw"
+    assert action_info("press_30s").controls == ("30s",)  # a key printed 30s, no hold length
+
+
+def test_an_arrow_key_is_a_stepping_key_and_a_turn_button_is_the_turn_key() -> None:
+    from apbot.read.actions import action_info
+
+    assert action_info("arrow_down").controls == ("down",)
+    turn = action_info("turn_key")
+    assert (turn.skill, turn.controls) == ("press", ("turn",))
