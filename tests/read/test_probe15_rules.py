@@ -147,3 +147,19 @@ def test_an_arrow_key_is_a_stepping_key_and_a_turn_button_is_the_turn_key() -> N
     assert action_info("arrow_down").controls == ("down",)
     turn = action_info("turn_key")
     assert (turn.skill, turn.controls) == ("press", ("turn",))
+
+
+# a popcorn maker whose keys are named only in quotes in prose (new probe p21's style)
+POPPER = """
+PopStar PC-1 popcorn maker
+
+Press the "Power" key to switch the machine on or off.
+Press the ‘Batch’ key to choose the batch size: small, medium or large.
+The display shows 'Err' when the lid is open.
+"""
+
+
+def test_a_key_named_only_in_quotes_is_read_as_its_printed_name() -> None:
+    model = _read(POPPER, ["press_power", "press_batch"])
+    assert model["variables"]["batch"]["values"] == ["small", "medium", "large"]
+    assert model["variables"]["power"]["values"] == ["off", "on"]
