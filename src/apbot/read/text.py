@@ -28,9 +28,9 @@ from apbot.read.text_pages import (
     _unfinished,
     contents_lines,
 )
+from apbot.read.text_quoted_keys import name_quoted_keys
 from apbot.read.text_rows import GRID_RULE, wrapped_cells
 from apbot.read.text_sections import drop_boilerplate, drop_tagged_models
-from apbot.read.text_quoted_keys import name_quoted_keys
 from apbot.read.text_sign_keys import name_signed_keys
 from apbot.read.text_tables import _row_charts, _space_tables, _strip_markup
 
