@@ -163,3 +163,26 @@ def test_a_key_named_only_in_quotes_is_read_as_its_printed_name() -> None:
     model = _read(POPPER, ["press_power", "press_batch"])
     assert model["variables"]["batch"]["values"] == ["small", "medium", "large"]
     assert model["variables"]["power"]["values"] == ["off", "on"]
+
+
+# a neck massager's reference card: the timer told by how often its key is pressed (N11)
+MASSAGER = """
+KneadEase NM-5 neck massager
+
+## Quick reference
+
+| Press                 | Result                 |
+|-----------------------|------------------------|
+| SPAN  once            | 5 min                  |
+| SPAN  twice           | 15 min                 |
+| SPAN  three times     | 25 min                 |
+| SPAN  four times      | timer off              |
+"""
+
+
+def test_a_keys_press_count_rows_are_the_values_it_steps_through() -> None:
+    model = _read(MASSAGER, ["press_on_off", "press_span"])
+    span = model["variables"]["span"]
+    assert span["initial"] in ("00:00:00", 0)
+    flat = [p[:2] for p in span["ranges"]]
+    assert flat[0][0] in ("00:00:00", 0) and flat[-1][1] in ("00:25:00", 25)
