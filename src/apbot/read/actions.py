@@ -23,9 +23,12 @@ TURN_VERBS = ("turn", "rotate", "twist", "spin")
 CW_WORDS = ("cw", "clockwise", "right", "up", "forward", "next", "plus")
 CCW_WORDS = ("ccw", "anticlockwise", "counterclockwise", "left", "down", "back", "minus")
 # what kind of control it is, said after its name ("press_menu_button", "turn_timer_dial_cw"):
-# the manual calls the control MENU or TIMER, so the kind is no part of its name
-KIND_WORDS = re.compile(r"_(?:buttons?|keys?|knobs?|dials?|switch(?:es)?|btns?|pads?)$")
+# the manual calls the control MENU or TIMER, so the kind is no part of its name (a "toggle"
+# is a toggle switch: "power_toggle" is the power key)
+KIND_WORDS = re.compile(r"_(?:buttons?|keys?|knobs?|dials?|switch(?:es)?|toggles?|btns?|pads?)$")
 MAX_ACTIONS = 1000
+# a key's kind alone, after a verb that is also a key's name ("turn_button": the TURN key, no dial)
+_KEY_KIND = re.compile(r"(?:buttons?|keys?|btns?|pads?)")
 # a number key however its name is spelled: the digit alone, or with the word for a key or a
 # digit before or after it ("key_5", "digit_5", "number_5_button")
 _DIGIT_KEY = re.compile(
@@ -47,13 +50,31 @@ class ActionInfo:
         return "_".join(self.controls)
 
 
+# how long a hold lasts, said at the end of its name ("hold_zone_3s", "zone_hold_3_sec"): the
+# hold's length, not a part of the control's name
+_DURATION = re.compile(r"_\d{1,2}_?(?:s|sec|secs|seconds?)$")
+
+
 def _split_verb(name: str) -> tuple[str, str]:
+    """(verb, the rest) of an action name, the verb said first ("press_zone") or last
+    ("zone_press", "zone_hold_3s", "knob_turn_cw"): environments name actions either way."""
+    core = _DURATION.sub("", name) or name
+    if not any(core.startswith(v + "_") or core.endswith("_" + v) for v in HOLD_VERBS):
+        core = name  # ("press_10s": the key printed 10s, no hold's length)
     for verb in (*HOLD_VERBS, *TURN_VERBS, *PRESS_VERBS):
-        if name == verb:
+        if core == verb:
             return verb, ""
-        if name.startswith(verb + "_"):
-            return verb, name[len(verb) + 1 :]
-    return "", name
+        if core.startswith(verb + "_"):
+            return verb, core[len(verb) + 1 :]
+    for verb in (*HOLD_VERBS, *PRESS_VERBS):
+        if core.endswith("_" + verb) and len(core) > len(verb) + 1:
+            return verb, core[: -len(verb) - 1]
+    ways = "|".join((*CW_WORDS, *CCW_WORDS))
+    for verb in TURN_VERBS:
+        turned = re.fullmatch(rf"(.+)_{verb}(?:_({ways}))?", core)
+        if turned:
+            return verb, "_".join(p for p in turned.groups() if p)
+    return "", core
 
 
 def parse_actions(names: list[str]) -> list[ActionInfo]:
@@ -100,6 +121,8 @@ def action_info(name: str) -> ActionInfo:
     agent needs to press a key the belief does not know — its skill, its control, its digit."""
     verb, rest = _split_verb(name)
     rest = _without_kind(rest, verb)
+    if verb in TURN_VERBS and _KEY_KIND.fullmatch(rest):  # "turn_button": the TURN key
+        return ActionInfo(name, "press", (verb,))
     if verb in TURN_VERBS:
         base = _turn_base(rest)
         ccw = rest != base and rest.rsplit("_", 1)[-1] in CCW_WORDS
@@ -123,7 +146,9 @@ def _without_kind(rest: str, verb: str) -> str:
         base = _without_kind("_".join(parts[:-1]) if way else rest, "")
         return "_".join(p for p in (base, way) if p)
     kind = KIND_WORDS.search(rest)
-    return rest[: kind.start()] if kind and kind.start() > 0 else rest
+    rest = rest[: kind.start()] if kind and kind.start() > 0 else rest
+    # "arrow_up", "arrow_key_down": an arrow is a kind of key, the direction its name
+    return re.sub(r"^arrows?_(?:(?:keys?|buttons?|btns?)_)?(?=(?:up|down|left|right)$)", "", rest)
 
 
 def _turn_base(rest: str) -> str:

@@ -32,6 +32,16 @@ _HELD = re.compile(
     re.IGNORECASE,
 )
 
+# "GREEK uses a fixed time of 12 hours", "The ECO programme has a fixed temperature of 40 °C":
+# the mode named first, then the setting it holds and the value
+_USES_FIXED = re.compile(
+    r"\b(?P<mode>[A-Za-z][\w+-]*(?:\s+[A-Za-z][\w+-]*)?)\s+(?:mode\s+|programme\s+|program\s+)?"
+    r"(?:always\s+)?(?:uses|has|runs\s+(?:with|at)|works\s+(?:with|at)|keeps)\s+a\s+"
+    r"(?:fixed|set|constant)\s+(?P<subject>[a-z][a-z ]{1,30}?)\s+(?:of|at)\s+"
+    r"(?P<value>[^\s,;:()]+)",
+    re.IGNORECASE,
+)
+
 
 def _own_words(name: str, spec: dict[str, Any]) -> set[str]:
     said = words(name.replace("_", " ")) + words(str(spec.get("label") or ""))
@@ -65,6 +75,14 @@ def _parent(b: Builder, mode: str, child: str) -> tuple[str, str] | None:
     return found[0] if len(found) == 1 else None
 
 
+def _last_words(b: Builder, mode: str, child: str) -> str:
+    """The mode's name from the words before the verb: the whole run when it names a value,
+    else its last word ("The GREEK" → "GREEK")."""
+    if _parent(b, mode, child) is not None or " " not in mode.strip():
+        return mode
+    return mode.split()[-1]
+
+
 def _held_value(spec: dict[str, Any], said: str) -> Any:
     """The value said, when it is one of the setting's own (a listed name, a number on its
     grid)."""
@@ -88,18 +106,22 @@ def _held_value(spec: dict[str, Any], said: str) -> Any:
 def read_fixed_in_mode(b: Builder) -> None:
     """Make each setting a mode's sentence says it holds at one value dependent on that mode."""
     for i, unit in enumerate(b.manual.units):
+        said: list[tuple[str, set[str], str]] = []
         for m in _IN_MODE.finditer(unit.text):
             held = _HELD.match(m.group("rest"))
-            if held is None:
-                continue
-            subject = set(words(held.group("subject"))) | set(words(held.group("again") or ""))
+            if held is not None:
+                subject = set(words(held.group("subject"))) | set(words(held.group("again") or ""))
+                said.append((m.group("mode"), subject, held.group("value")))
+        for m in _USES_FIXED.finditer(unit.text):
+            said.append((m.group("mode"), set(words(m.group("subject"))), m.group("value")))
+        for mode, subject, told in said:
             for name, spec in b.variables.items():
                 if spec.get("depends_on") or "cases" in spec or name in b.unread:
                     continue
                 if name in ("power", "running") or not _names(subject, _own_words(name, spec)):
                     continue
-                value = _held_value(spec, held.group("value"))
-                parent = _parent(b, m.group("mode"), name) if value is not None else None
+                value = _held_value(spec, told)
+                parent = _parent(b, _last_words(b, mode, name), name) if value is not None else None
                 if parent is None:
                     continue
                 _make_cases(b, name, spec, parent, value, i)

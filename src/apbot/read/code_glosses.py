@@ -30,6 +30,8 @@ _WORDS = 4  # a gloss names the value; a longer text describes it
 # leading words a name drops ("STEAM – with steam" names no more than "steam")
 _FILLER = frozenset({"the", "a", "an", "with"})
 _TRAILING = frozenset({"only"})
+# an aside that says where a setting starts ("THICK (starts THICK)", "(default LOW)") is no name
+_START_LEADS = frozenset({"starts", "start", "default", "preset", "initially", "factory"})
 _JOINERS = frozenset({"to", "and", "or", "of", "with"})
 # a switch's words gloss what is switched ("OFF = appliance off"), not a value of its own
 _SWITCH_WORDS = frozenset({"on", "off"})  # "LINE – waterline only": the name is "waterline"
@@ -127,6 +129,8 @@ def _name(gloss: str, code: str, own: set[str]) -> str | None:
     while words and words[-1] in _TRAILING:
         words = words[:-1]
     if not words or len(words) > _WORDS or [w for w in words if w not in own] == [code]:
+        return None
+    if words[0] in _START_LEADS:
         return None
     # the display word ends the name ("white noise", "floor and walls", "waterline") or leads
     # a pair joined by a small word ("head to toe"): not a sentence about it ("the ring

@@ -416,7 +416,7 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
             self._initial_from_values(ev, tokens)
         if ev.values and ev.values_at is not None:
             ev.values = filled(ev.values, units[ev.values_at].text)  # "-18 → ... → -23"
-        if ev.initial is None and (ev.ranges or (ev.values and _numeric_items(ev.values))):
+        if ev.initial is None and (ev.ranges or ev.values):
             start_at_switch_on(units, ev, own_words)  # "When switched on it runs at speed 3"
         if ev.ranges or not ev.values or _numeric_items(ev.values):
             # "after 23:45 comes 00:00", "after 15 back to 0": the ends of what was read

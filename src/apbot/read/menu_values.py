@@ -12,6 +12,7 @@ from typing import Any
 
 from apbot.model.values import format_hms, parse_hms, tidy_number
 from apbot.read.build import Builder
+from apbot.read.menu_cells import bare_step, coded_choices, slashed_words
 from apbot.read.roles_common import numeric_list
 from apbot.read.roles_lists import list_evidence
 from apbot.read.shapes import Evidence
@@ -89,6 +90,12 @@ def item_variable(b: Builder, item: MenuItem) -> str | None:
         if ranges:  # (a range read first is the item's: no list after it, only its step)
             step = step or find_step(text)
             continue
+        if (
+            i == item.at
+            and b.manual.units[i].cells
+            and (cell := _cell_choices(b, item, name, text))
+        ):
+            return cell
         run = re.search(r"(?<![\w.])(?:--|\d)", text)  # "The setback runs 0 h - 2 h - …"
         parts = _parts(text) or (_parts(text[run.start() :]) if run else None)
         if parts:
@@ -107,7 +114,7 @@ def item_variable(b: Builder, item: MenuItem) -> str | None:
         if not ranges:
             ranges = find_ranges(text)
         if step is None:
-            step = find_step(text)
+            step = find_step(text) or (bare_step(text) if i == item.at else None)
     if not ranges:
         return None
     r = ranges[0]
@@ -120,6 +127,26 @@ def item_variable(b: Builder, item: MenuItem) -> str | None:
         _start(b, var, initial[0], r.unit, item.at)
     elif item.initial and (num := re.match(r"[-−]?\d+(?:\.\d+)?", item.initial)):
         _start(b, var, float(num.group(0)), r.unit, item.at)
+    return var
+
+
+def _cell_choices(b: Builder, item: MenuItem, name: str, cell: str) -> str | None:
+    """An item whose row cell prints coded choices ("0 = off, 1 = on": named values shown as
+    their codes) or short words joined by slashes ("C / F"); its start from the row's default
+    cell, matched to a code or a word."""
+    coded = coded_choices(cell)
+    pairs = coded or [(w, w) for w in slashed_words(cell) or []]
+    if not pairs:
+        return None
+    init = (item.initial or "").strip().lower()
+    start = next((n.lower() for c, n in pairs if init and init in (c.lower(), n.lower())), None)
+    shows = {n.lower(): c for c, n in pairs} if coded else None
+    ev = Evidence(
+        values=[n for _c, n in pairs], values_at=item.at, initial=start, initial_at=item.at
+    )
+    ev.shows = shows
+    var = b.add_discrete(name, [n for _c, n in pairs], item.code, ev)
+    b.variables[var]["wrap"] = False
     return var
 
 

@@ -41,7 +41,9 @@ from apbot.read.initials import read_initials
 from apbot.read.keyed_cycles import read_keyed_cycles
 from apbot.read.labels import find_labels
 from apbot.read.off_words import read_held_off_words, read_off_words
+from apbot.read.ordinal_lamps import read_ordinal_lamps
 from apbot.read.position_charts import read_position_charts
+from apbot.read.press_tables import read_press_tables
 from apbot.read.pressed_walks import read_pressed_walks
 from apbot.read.range_codes import read_range_codes
 from apbot.read.report import Note, Report
@@ -83,6 +85,8 @@ def read_manual(
     infos = in_manual_order(infos, manual, labels)  # (the given order carries no meaning)
     builder = Builder(manual, infos, labels)
     assign(builder)
+    read_ordinal_lamps(builder)  # (a key guessed a toggle whose lamps, by place, are levels)
+    read_press_tables(builder)  # (and one whose press-count rows list its values)
     apply_cases(builder)
     chosen_cases(builder)
     zone_twins(builder)

@@ -58,6 +58,8 @@ def assign_power(b: Builder) -> list[str]:
             (t for t in sorted(tokens) if t in b.labels and _printed_power(b.labels[t].text)),
             None,
         )
+    if power_token is None:  # "Move the switch to ON": a bare switch set to ON / OFF
+        power_token = next((t for t in sorted(tokens) if _switched_on_off(b, t)), None)
     if power_token is None and "power" in tokens:
         ctx = " ".join(b.manual.units[i].text for i in b.context(["power"]))
         if not re.search(r"\b(?:level|watt|output)\b", ctx, re.I) or re.search(
@@ -129,6 +131,26 @@ def assign_power(b: Builder) -> list[str]:
             held, at = standby_hold
             _only_in_standby(b, b.guards[-1], held, label_of(b, power_token or ""), at)
     return power_actions
+
+
+_TO_ON_OFF_RE = re.compile(
+    r"\b(?:to|at|in)\s+(?:the\s+)?(?:ON|OFF|I|O|0)\b(?:\s+position)?|\(\s*(?:ON|OFF)\s*/\s*(?:ON|OFF)\s*\)"
+)
+
+
+def _switched_on_off(b: Builder, token: str) -> bool:
+    """Whether a control named only by its kind ("slide_switch": the manual's "the switch")
+    is moved between ON and OFF positions ("a slide switch (OFF / ON)", "Move the switch to
+    ON"): the appliance's power switch. Capital ON / OFF only: "turn it to the on position"
+    is as often a setting's."""
+    if token not in ("switch", "slide", "rocker", "toggle"):
+        return False
+    named = re.compile(rf"\b{token}\b", re.IGNORECASE)  # (in lower case too: "the switch")
+    for unit in b.manual.units:
+        said = named.search(unit.text)
+        if said and _TO_ON_OFF_RE.search(unit.text[said.start() :]):
+            return True
+    return False
 
 
 def _printed_power(label: str) -> bool:

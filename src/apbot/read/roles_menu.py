@@ -128,11 +128,22 @@ def _body(b: Builder, i: int, pre: str, tail: str) -> list[tuple[int, str]]:
 def _tied_to_menu(b: Builder, pre: str, first: int) -> bool:
     """A sentence or heading ties the codes to a settings menu ("THE SETTING MENU (F1 - F5)",
     "P1 … / P2 …  programming, parameter and value"), or the line that leads into the first
-    item names one ("User settings:")."""
-    lead = b.manual.units[first - 1].text if first else ""
+    item names one ("User settings:"), or the section the first item's table row stands in is
+    headed so ("The setup menu" over "| P01 | Ice size | … |"; codes may be zero-padded) or
+    one of the two lines right above the table names one."""
+    units = b.manual.units
+    lead = units[first - 1].text if first else ""
     if lead.rstrip().endswith(":") and _MENU_RE.search(lead):
         return True
-    code = re.compile(rf"\b{re.escape(pre)}-?[01]\b")
+    if units[first].cells and _MENU_RE.search(units[first].heading):
+        return True
+    if units[first].cells:  # (no heading kept: the lines right above the table name the menu)
+        top = first
+        while top > 0 and units[top - 1].cells:
+            top -= 1
+        if any(_MENU_RE.search(u.text) for u in units[max(0, top - 2) : top]):
+            return True
+    code = re.compile(rf"\b{re.escape(pre)}-?0?[01]\b")
     return any(
         code.search(u.text) and _MENU_RE.search(u.text) for u in b.manual.units if not u.cells
     ) or any(code.search(u.heading) and _MENU_RE.search(u.heading) for u in b.manual.units)

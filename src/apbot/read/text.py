@@ -28,6 +28,7 @@ from apbot.read.text_pages import (
     _unfinished,
     contents_lines,
 )
+from apbot.read.text_quoted_keys import name_quoted_keys
 from apbot.read.text_rows import GRID_RULE, wrapped_cells
 from apbot.read.text_sections import drop_boilerplate, drop_tagged_models
 from apbot.read.text_sign_keys import name_signed_keys
@@ -194,6 +195,7 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
     text = text.replace("\r\n", "\n").replace("\r", "\n").replace("\f", "\n\f\n")
     text = name_icons(unbox(text), _KEEP)  # "touch ❄" → "touch COLDER" when a legend names it
     text = name_signed_keys(text, keys, _KEEP)  # "❋ — fan speed" → "FAN — fan speed" (``fan``)
+    text = name_quoted_keys(text, keys)  # "Press the 'Shape' key" → "Press the SHAPE key"
     glyphs = text.split("\n")  # (a level shown as segments, "▮▮▯", is read from these)
     text = re.sub(r" ?❄ ?", " ❄ ", text)  # one space each side, not two
     text = named_beside(text, _KEEP | default_marks(text))  # "☀ HOT": HOT

@@ -134,6 +134,8 @@ def _arrow_cell(text: str) -> str:
     MODE, 3 s: lock"): the list lies inside that cell, not across the row."""
     cells = text.split(" | ")
     arrowed = [c for c in cells if len(_ARROW.split(c)) >= 3]
+    if not arrowed:  # ("FOAM | Tap: THIN › THICK | (starts THICK)": two names, one arrow)
+        arrowed = [c for c in cells if len(_ARROW.split(c)) == 2]
     return arrowed[0] if len(cells) > 1 and len(arrowed) == 1 else text
 
 
@@ -145,6 +147,31 @@ def _shared_noun_dropped(items: list[str]) -> list[str]:
         return items
     nouns = {m.group(2) for m in found if m}
     return [m.group(1) for m in found if m] if len(nouns) == 1 else items
+
+
+_CAPS_WORD = re.compile(r"[A-Z][A-Z0-9.+-]*")
+
+
+def _two_named(parts: list[str]) -> list[str] | None:
+    """Two display words joined by one arrow ("Tap: THIN › THICK (starts THICK)"): the capital
+    run right before the arrow and the one right after it, up to an aside or a new clause. Two
+    names alone, in capitals, as a short key cycles between them; lower-case words on either
+    side are prose ("from here → see page 4")."""
+    head = _LEAD_COLON.split(parts[0])[-1].split()
+    first: list[str] = []
+    for w in reversed(head):
+        if not _CAPS_WORD.fullmatch(w):
+            break
+        first.insert(0, w)
+    tail = re.split(r"[,;]\s|\s[—–]\s|\.\s|\s*[()]|\s{2,}|\s*(?:…|\.\.\.)", parts[1].strip())[0]
+    last = tail.split()
+    if not (1 <= len(first) <= 2 and 1 <= len(last) <= 2):
+        return None
+    if not all(_CAPS_WORD.fullmatch(w) for w in last) or first == last:
+        return None
+    if len(head) > len(first) and head[-len(first) - 1].upper() in ("PRESS", "TOUCH", "THEN"):
+        return None
+    return [" ".join(first), " ".join(last).rstrip(".")]
 
 
 def find_list(text: str) -> tuple[list[str], str] | None:
@@ -179,6 +206,8 @@ def find_list(text: str) -> tuple[list[str], str] | None:
         )[0]  # "… → P1. The display …", "FIRM → SOFT … (not every …)": nor at a sentence's end
         parts[-1] = _clean_item(last)
         parts = filled_amounts(filled_codes(parts))
+    if len(parts) == 2 and not both and (pair := _two_named(parts)):
+        return pair, "arrows"
     amount = re.search(rf"(?<![\w.])({NUM}\s*{UNIT})\s*$", parts[0], re.I)
     if len(parts) >= 3 or both or (len(parts) == 2 and all(_value_like(p, True) for p in parts)):
         # "in this order: AUTO → ...", "Clockwise: Cotton"; a clock's colon ("0:30 → 1:00") stays
