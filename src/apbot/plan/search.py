@@ -29,7 +29,6 @@ from apbot.plan.bounds import LowerBound
 from apbot.plan.distances import INF
 from apbot.plan.edges import CachedVisit, Ends, SearchExhausted, VisitEdges
 from apbot.plan.goals import CompiledGoal
-from apbot.plan.order_costs import OrderCosts
 from apbot.plan.visits import VisitTree
 from apbot.sim.compiled import DIGIT, CompiledModel, State
 
@@ -116,7 +115,6 @@ class TaskSearch(VisitEdges):
         )
         self._memory = compiled.memory_of(self.relevant)
         self.bound = LowerBound(compiled, goal)
-        self.order_cost = OrderCosts(compiled, goal)  # among equal plans: clock first, run last
         self._visit_cache: dict[Hashable, CachedVisit] = {}
         self._slots: dict[int, tuple[tuple[int, ...], tuple[int, ...]]] = {}
         self._cached_ends = 0  # visit ends held by the visit cache
@@ -201,7 +199,6 @@ class TaskSearch(VisitEdges):
                 after, presses, tree, way, free = edge
                 # presses first; among plans of equal length, fewer presses with a dark display
                 new_cost = cost + presses * PRESS + (presses if in_the_dark else 0)
-                new_cost += self.order_cost(state.values, after.values)
                 k = self.key(after)
                 if new_cost >= best.get(k, INF):
                     continue
@@ -239,7 +236,6 @@ class TaskSearch(VisitEdges):
         tree, outcomes, keyed = ends.visit
         values = state.values
         bound, ceiling, limit = self.bound, self._ceiling, STORED_PER_BUDGET * self.budget
-        order_cost = self.order_cost
         for (changed, buffer, memory, presses, way), (written, tail) in zip(
             outcomes, keyed, strict=True
         ):
@@ -253,9 +249,6 @@ class TaskSearch(VisitEdges):
             new = list(values)
             for w, value in zip(writes, changed, strict=True):
                 new[w] = value
-            new_cost += order_cost(values, new)
-            if new_cost >= best.get(k, INF):
-                continue
             after = State(tuple(new), step, buffer, memory)
             h = bound(after)
             if h == INF or new_cost + h * PRESS > ceiling:

@@ -41,7 +41,6 @@ from apbot.model.domain import Domain
 from apbot.model.effects import parse_entry, type_digit
 from apbot.model.schema import ApplianceModel, DiscreteVariable
 from apbot.model.values import format_hms, tidy_number
-from apbot.sim.action_order import action_order
 from apbot.sim.compiler import (
     compile_anywhere,
     compile_cycles,
@@ -94,7 +93,7 @@ class CompiledModel:
         self.model = model
         names = list(model.variables)
         self.var_index = {name: i for i, name in enumerate(names)}
-        self.action_names = action_order(model)
+        self.action_names = list(model.actions)
         self.action_index = {name: i for i, name in enumerate(self.action_names)}
         self.vars = tuple(compile_variable(self, name) for name in names)
         self.dependents: dict[int, tuple[int, ...]] = {}
