@@ -11,6 +11,7 @@ from apbot.model.values import format_hms, preview
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_fit import fit, number_for
 from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab, repeat_for_a_length, said_before
+from apbot.read.goal_ties import own_key_depth
 from apbot.read.goal_unitless import unitless_duration, unitless_named
 from apbot.read.goal_values import name_words, unit_text, zone_case
 from apbot.read.goal_view import Goal, Model, VarInfo, domain_values, own_concepts, own_stems
@@ -31,7 +32,7 @@ def assign_mentions(
     to now ("ready in 15 hours", "3 hours from now") or a time to finish at ("ready at 7:30"):
     a countdown that must be started."""
     counting = False
-    options: list[tuple[float, int, int, str, Any]] = []
+    options: list[tuple[float, int, str, Any]] = []
     for mi, mention in enumerate(mentions):
         for name, info in view.infos.items():
             if name in goal or info.role in ("power", "running", "switch"):
@@ -59,10 +60,12 @@ def assign_mentions(
             score += _scheduled_bonus(view, info, text, mention)
             score += _after_its_case(info, text, mention, goal)
             score += _named_right_before(info, text, mention)
-            options.append((score, -info.order, mi, name, value))
-    options.sort(key=lambda o: (-o[0], -o[1]))
+            options.append((score, mi, name, value))
+    # equals: a setting with a key of its own first, then the order the belief describes them
+    # in (a read belief's is the manual's: the main setting before a probe's target)
+    options.sort(key=lambda o: (-o[0], own_key_depth(view.model, o[2]), view.infos[o[2]].order))
     used: set[int] = set()
-    for score, _order, mi, name, value in options:
+    for score, mi, name, value in options:
         if mi in used or name in goal:
             continue
         mention = mentions[mi]

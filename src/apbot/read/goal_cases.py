@@ -21,9 +21,11 @@ from apbot.read.goal_view import Goal, Model, own_concepts, step_effects
 from apbot.read.goal_vocab import stem
 
 
-def implied_cases(view: Model, goal: Goal) -> None:
+def implied_cases(view: Model, goal: Goal, start_known: bool = True) -> None:
     """Set the mode of each goal setting that only one case of that mode lets the user adjust
-    (the others lack it or fix it at one value), given a value that case admits."""
+    (the others lack it or fix it at one value), given a value that case admits.
+    ``start_known`` False (a read belief): a mode whose start the belief does not state is not
+    assumed to start in its first value (:func:`_starts_at`)."""
     for name in list(goal):
         var = view.infos[name].var
         parent = var.depends_on
@@ -42,14 +44,15 @@ def implied_cases(view: Model, goal: Goal) -> None:
             continue  # adjusted in other cases too (a guess)
         if 1 not in sizes and not (apart or _way_of_working(view, parent, admitting[0])):
             continue  # no case fixes it: the mode may only choose what the keys adjust
-        if str(admitting[0]) == str(_starts_at(mode.var)):
+        if str(admitting[0]) == str(_starts_at(mode.var, start_known)):
             continue  # the panel is in that case before anything is pressed
         goal[parent] = admitting[0]
 
 
-def entry_modes(view: Model, goal: Goal) -> None:
+def entry_modes(view: Model, goal: Goal, start_known: bool = True) -> None:
     """Set the mode each goal setting's procedures all enter first (a key that goes to one
-    value of a mode, then the setting's own step), unless the panel starts in it."""
+    value of a mode, then the setting's own step), unless the panel starts in it (``start_known``
+    as for :func:`implied_cases`)."""
     for name in list(goal):
         if view.infos[name].role != "setting":
             continue
@@ -69,7 +72,7 @@ def entry_modes(view: Model, goal: Goal) -> None:
             if not isinstance(mode.var, DiscreteVariable):
                 continue
             chosen = next((v for v in mode.values if str(v) == value), None)
-            if chosen is not None and str(chosen) != str(_starts_at(mode.var)):
+            if chosen is not None and str(chosen) != str(_starts_at(mode.var, start_known)):
                 goal[mode_name] = chosen
 
 
@@ -151,10 +154,15 @@ def _same_number(a: Any, b: Any) -> bool:
         return False
 
 
-def _starts_at(var: DiscreteVariable) -> Any:
+def _starts_at(var: DiscreteVariable, start_known: bool = True) -> Any:
+    """The value the panel starts in: the stated one, else the first — which a model's author
+    means, but a belief read from a manual only guesses (the first key the manual names, not
+    what the panel shows when switched on): then None, no start known."""
     initial = getattr(var, "initial", None)
     if initial is not None:
         return initial
+    if not start_known:
+        return None
     return var.values[0] if var.values else None
 
 

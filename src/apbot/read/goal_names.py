@@ -34,6 +34,7 @@ from apbot.read.goal_text import (
     turned_off_after,
     verb_positions,
 )
+from apbot.read.goal_ties import told_apart
 from apbot.read.goal_view import (
     Goal,
     Model,
@@ -141,6 +142,7 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
             near = near_vocab(info, text, i, end, reach=6, acts=True)
             matches.append(_Match(var, value, i, end, score, near))
     matches.sort(key=_order)
+    matches = told_apart(matches, _order, lambda m: m.var, lambda m: m.value, view)
     return _prefer_specific(_prefer_heads(matches), text, itself)
 
 

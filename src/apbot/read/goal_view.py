@@ -98,6 +98,8 @@ class Model:
     # var -> the code the manual puts one step past its highest number (P after 9)
     manual_words: frozenset[str] = frozenset()
     # the manual's words: a three-letter panel code is named only by a word it uses ("slow")
+    manual_lines: tuple[str, ...] = ()
+    # the manual's lines, casefolded: where it prints a setting's name beside a value
 
 
 def own_name(model: ApplianceModel) -> str:
@@ -294,7 +296,15 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
     }
     manual_words = frozenset(re.findall(r"[a-z]+", manual.casefold()))
     return Model(
-        model, infos, phrases, start_values, frozenset(appliance), named, tops, manual_words
+        model,
+        infos,
+        phrases,
+        start_values,
+        frozenset(appliance),
+        named,
+        tops,
+        manual_words,
+        tuple(manual.casefold().splitlines()),
     )
 
 

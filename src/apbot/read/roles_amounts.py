@@ -8,6 +8,7 @@ from typing import Any
 
 from apbot.model.values import format_hms
 from apbot.read.actions import ActionInfo
+from apbot.read.added_time import added_time
 from apbot.read.build import Builder
 from apbot.read.labels import words
 from apbot.read.roles_common import (
@@ -273,11 +274,7 @@ def assign_amounts(
         amount = int(m.group(2)) if m else 30
         minutes = bool(m and m.group(3) and m.group(3).startswith("m"))
         seconds_ = amount * (60 if minutes else 1)
-        target = (
-            direct
-            or keyed_time
-            or next((v for v, spec in b.variables.items() if spec.get("type") == "time"), None)
-        )
+        target = direct or keyed_time or added_time(b, key)
         if target is None:
             target = b.add_number("cook_time", "TIME", Evidence(ranges=[], step=(1, "s")), False)
         step = f"{seconds_ // 3600:02d}:{seconds_ % 3600 // 60:02d}:{seconds_ % 60:02d}"
