@@ -34,7 +34,7 @@ from apbot.read.roles_common import (
 from apbot.read.roles_confirm import ends_entry
 from apbot.read.roles_digits import assign_direct_digits
 from apbot.read.roles_fasthold import fold_fast_holds
-from apbot.read.roles_fixed import assign_locks, assign_power, assign_running, standby_only
+from apbot.read.roles_fixed import assign_power, standby_only
 from apbot.read.roles_functions import assign_functions, function_keys
 from apbot.read.roles_heldshown import show_held_word
 from apbot.read.roles_heldvalues import held_section_list, list_of_earlier_key, others_list
@@ -55,6 +55,7 @@ from apbot.read.roles_lists import (
     numeric_list,
     pair_of_names,
 )
+from apbot.read.roles_locks import assign_locks
 from apbot.read.roles_menu import assign_menu
 from apbot.read.roles_nounpads import noun_pads
 from apbot.read.roles_pads import (
@@ -69,6 +70,7 @@ from apbot.read.roles_pads import (
 )
 from apbot.read.roles_pairafter import lists_own, pair_follows
 from apbot.read.roles_raiselower import raise_lower_pairs, signed_pairs
+from apbot.read.roles_running import assign_running
 from apbot.read.roles_shared import add_clock_steps, assign_shared, clock_steps, dial_after_keys
 from apbot.read.roles_switched import switched_time
 from apbot.read.shapes import CHOICE_WORDS, GENERIC_DIALS, Evidence, adjuster_direction
