@@ -13,15 +13,8 @@ from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.labels import squash
 from apbot.read.power_starts import power_starts_work
-from apbot.read.roles_common import (
-    first_mention,
-    label_of,
-)
-from apbot.read.roles_holds import (
-    add_held_setting,
-    held_other_job,
-    held_power,
-)
+from apbot.read.roles_common import first_mention, label_of
+from apbot.read.roles_holds import add_held_setting, held_other_job, held_power
 
 _DELIVERED_ON_RE = re.compile(
     r"\b(?:leaves? the factory|as delivered|on delivery|out of the box|factory (?:state|settings?))"

@@ -13,18 +13,9 @@ import re
 from apbot.read.build import Builder
 from apbot.read.labels import words
 from apbot.read.power_starts import power_starts_work
-from apbot.read.roles_common import (
-    NUMERIC_WORDS,
-    dedupe,
-    first_mention,
-    mentions_of,
-)
+from apbot.read.roles_common import NUMERIC_WORDS, dedupe, first_mention, mentions_of
 from apbot.read.roles_holdcell import held_toggle
-from apbot.read.roles_holds import (
-    held_named_switch,
-    held_start,
-    pushed_start,
-)
+from apbot.read.roles_holds import held_named_switch, held_start, pushed_start
 from apbot.read.shapes import RUNNING_RE, STOP_WORDS
 from apbot.read.shown import RUNNING_CUE, shown_words
 from apbot.read.work_keys import starts_and_stops
