@@ -4,12 +4,12 @@ The order matters: the name-evident roles first (power, start, stop, lock, digit
 pairs, dials), then setting keys by what their sentences say, then the keys the manual only
 lists together, then whatever is left, as a guess. Each kind of role has its module
 (``roles_fixed``, ``roles_pads``, ``roles_lists``, ``roles_amounts``); this one runs them in
-order and sorts the setting keys by what their sentences say.
+order and sorts the setting keys by what their sentences say (the tests on a key's own legend
+are in ``roles_legends``, a dial lent to other keys in ``roles_dials``).
 """
 
 from __future__ import annotations
 
-import re
 from dataclasses import replace
 
 from apbot.read.actions import ActionInfo
@@ -24,29 +24,23 @@ from apbot.read.roles_common import (
     held_switch,
     hold_use,
     label_of,
-    mentions_of,
     shown_prefix,
     token_of,
-    turns,
     used_actions,
     var_name,
 )
 from apbot.read.roles_confirm import ends_entry
+from apbot.read.roles_dials import _lend_dial, _turned_after_keys
 from apbot.read.roles_digits import assign_direct_digits
 from apbot.read.roles_fasthold import fold_fast_holds
-from apbot.read.roles_fixed import assign_locks, assign_power, assign_running, standby_only
+from apbot.read.roles_fixed import assign_power, standby_only
 from apbot.read.roles_functions import assign_functions, function_keys
 from apbot.read.roles_heldshown import show_held_word
 from apbot.read.roles_heldvalues import held_section_list, list_of_earlier_key, others_list
-from apbot.read.roles_holdcell import (
-    HELD_SECONDS,
-    HOLD_CELL,
-    held_toggle,
-    held_values,
-    way_switched,
-)
+from apbot.read.roles_holdcell import held_toggle, held_values, way_switched
 from apbot.read.roles_hourmin import assign_hour_minute, hour_minute_keys
 from apbot.read.roles_keyed import assign_keyed_amounts
+from apbot.read.roles_legends import _hold_row, _named_cycle, _numbered
 from apbot.read.roles_lists import (
     dial_values,
     list_evidence,
@@ -55,6 +49,7 @@ from apbot.read.roles_lists import (
     numeric_list,
     pair_of_names,
 )
+from apbot.read.roles_locks import assign_locks
 from apbot.read.roles_menu import assign_menu
 from apbot.read.roles_nounpads import noun_pads
 from apbot.read.roles_pads import (
@@ -69,26 +64,10 @@ from apbot.read.roles_pads import (
 )
 from apbot.read.roles_pairafter import lists_own, pair_follows
 from apbot.read.roles_raiselower import raise_lower_pairs, signed_pairs
+from apbot.read.roles_running import assign_running
 from apbot.read.roles_shared import add_clock_steps, assign_shared, clock_steps, dial_after_keys
 from apbot.read.roles_switched import switched_time
-from apbot.read.shapes import CHOICE_WORDS, GENERIC_DIALS, Evidence, adjuster_direction
-from apbot.read.text import Unit
-from apbot.read.values import ON_OFF_RE
-
-
-def _lend_dial(
-    pairs: dict[str, dict[str, list[str]]], dials: dict[str, list[ActionInfo]]
-) -> str | None:
-    """With no unnamed stepping pair, the one dial turned both ways is the adjuster a key may
-    switch between settings, as a + / − pair is (its turns up and down): the token lent."""
-    if "" in pairs or len(dials) != 1:
-        return None
-    token, moves = next(iter(dials.items()))
-    cw, ccw = turns(moves)
-    if not cw or not ccw:
-        return None
-    pairs[""] = {"up": list(cw), "down": list(ccw)}
-    return token
+from apbot.read.shapes import CHOICE_WORDS, GENERIC_DIALS, adjuster_direction
 
 
 def assign(b: Builder) -> None:
@@ -344,110 +323,3 @@ def assign(b: Builder) -> None:
     assign_keyed_amounts(b, digits)
     standby_only(b)
     fold_fast_holds(b)  # "hold ▲ for 2 s: ten steps at once", not a switch of its own
-
-
-def _named_cycle(b: Builder, key: ActionInfo, ev: Evidence) -> bool:
-    """Three or more named values the key steps through, read in its own legend ("PLATE
-    Chooses which plates heat. Each press moves on by one: BOTH > LOWER only > UPPER only"),
-    and an on/off said elsewhere ("the plates switch off when the timer ends"): a selector. A
-    list beside another key's row ("| START | … |" then the programmes round the dial) is no
-    evidence against the key's own on/off."""
-    values = ev.values or []
-    if ev.toggle_at is None or ev.values_at is None or key.controls[0] not in b.labels:
-        return False
-    said = b.labels[key.controls[0]].mentions
-    own = ev.values_at in said or (
-        ev.values_at - 1 in said and not b.manual.units[ev.values_at].cells
-    )
-    # "OFF → BUZZ → RADIO": the switching on and off said with it is a step of the cycle
-    off_cycle = "off" in values and "on" not in values
-    return (
-        len(values) >= 3
-        and (off_cycle or not {"on", "off"} & set(values))
-        and not numeric_list(values)
-        and (off_cycle or ev.values_at != ev.toggle_at)
-        and own
-        and not _own_legend(b, key, ev.toggle_at)
-    )
-
-
-def _own_legend(b: Builder, key: ActionInfo, at: int) -> bool:
-    """Unit ``at`` is the key's own legend: it starts with the key's printed name."""
-    label = b.labels[key.controls[0]].text.upper() if key.controls[0] in b.labels else ""
-    return bool(label) and b.manual.units[at].text.lstrip(" *|-•").upper().startswith(label)
-
-
-def _hold_row(b: Builder, key: ActionInfo, at: int | None) -> bool:
-    """Whether unit ``at`` is the legend row for holding this key ("FAN (hold 3 s)  switches
-    the ioniser on or off") on a panel where the key is also held: not the press's on/off."""
-    control = key.controls[0]
-    if at is None or control not in b.labels or not b.labels[control].text:
-        return False
-    if not any(i.skill == "hold" and set(key.controls) <= set(i.controls) for i in b.infos):
-        return False
-    label = re.escape(b.labels[control].text)
-    held = re.compile(rf"^\W*{label}\s*\(?\s*(?:(?:press|touch|push)\s+and\s+)?hold", re.I)
-    text = b.manual.units[at].text
-    return bool(held.match(text)) or _hold_cell(b.manual.units[at]) or _held_clause(text)
-
-
-# "… Touch and hold 3 seconds: …", "Hold for 2 s to …": where a legend turns to the hold
-_HOLD_CLAUSE = re.compile(
-    r"\b(?:(?:press|touch|push)\s+and\s+)?hold\b(?:\s+(?:it|the\s+key|for))?\s+\d", re.I
-)
-
-
-def _held_clause(text: str) -> bool:
-    """A key's legend whose on/off comes only after the clause for holding it ("Touch: DRY <->
-    MOIST. Touch and hold 3 seconds: double seal on / off."): the hold's on/off."""
-    clause = _HOLD_CLAUSE.search(text)
-    return clause is not None and not ON_OFF_RE.search(text[: clause.start()])
-
-
-def _hold_cell(unit: Unit) -> bool:
-    """A key table's row ("| MIST | level 1 → 2 → 3 | 3 s: warm mist on / off |") whose on/off
-    is only in the column for holding the key (headed "hold", or a cell led by the seconds)."""
-    if not unit.cells:
-        return False
-    header = list(unit.header) + [""] * len(unit.cells)
-    said = [k for k, cell in enumerate(unit.cells) if ON_OFF_RE.search(cell)]
-    return bool(said) and all(
-        # (a real column head is short: "Press and hold", "Long press"; a first row taken for
-        # the head may say "kept as long as it is plugged in")
-        (re.search(r"\bhold|\blong\b", header[k], re.I) and len(_timeless(header[k])) <= 4)
-        or re.match(rf"\s*{HOLD_CELL}", unit.cells[k], re.I)
-        for k in said
-    )
-
-
-def _timeless(head: str) -> list[str]:
-    """A column head's words less how long to hold ("Touch and hold (3 s)", "… 3 seconds")."""
-    return re.sub(rf"\(?\b{HELD_SECONDS}\)?", " ", head, flags=re.I).split()
-
-
-def _turned_after_keys(b: Builder, dial: str, keys: list[ActionInfo]) -> bool:
-    """A dial that picks a list of its own is also turned after setting keys ("Press TEMP and
-    turn the dial to set the temperature"): those keys take its turns as their stepping pair."""
-    noun = re.escape(dial.split("_")[0])
-    labels = [re.escape(label_of(b, k.controls[0])) for k in keys if k.controls[0] in b.labels]
-    if not labels:
-        return False
-    said = re.compile(
-        rf"\b(?:press|touch|push)\w*\s+(?:the\s+)?(?:{'|'.join(labels)})\b[^.]{{0,30}}?"
-        rf"\bturn\w*\s+the\s+(?:\w+\s+)?{noun}\b",
-        re.IGNORECASE,
-    )
-    return any(said.search(u.text) for u in b.manual.units)
-
-
-def _numbered(b: Builder, key: ActionInfo, ev: Evidence) -> bool:
-    """A key whose own sentence gives a bare number range ("Next menu number (1–15)") sets a
-    number, whatever names a table elsewhere gives the numbers."""
-    own = set(mentions_of(b, key.controls[0]))
-    return (
-        bool(ev.ranges)
-        and ev.range_at in own
-        and ev.values_at not in own
-        and not ev.ranges[0].unit
-        and ev.ranges[0].high - ev.ranges[0].low >= 2
-    )

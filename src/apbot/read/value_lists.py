@@ -10,168 +10,36 @@ from __future__ import annotations
 
 import re
 
-from apbot.read.value_gaps import (
-    elision_apart,
-    filled_amounts,
-    filled_codes,
-    unit_tail,
+from apbot.read.value_gaps import elision_apart, filled_amounts, filled_codes, unit_tail
+from apbot.read.value_items import _LEAD_COLON, _PER_NAME, _clean_item, _dedupe, _value_like
+from apbot.read.value_list_shapes import (
+    _ARROW,
+    _BOTH_WAYS,
+    _FUSED_ARROW,
+    _SPACED_ARROW,
+    _after_case_label,
+    _arrow_cell,
+    _dotted_run,
+    _nothing_as_zero,
+    _range_table_header,
+    _shared_noun_dropped,
+    _triangle_arrows,
+    _two_named,
 )
 from apbot.read.values import NUM, UNIT
 
-# an arrow, typed or drawn with a line before its head ("0 ──► 15 ──► 30 min", "--►" once box
-# characters are cleaned); a head alone ("touch ►") is a key
-_ARROW = re.compile(r"\s*(?:→|->|⇒|>|»|›|⟶|[─━—–-]+\s*►)\s*")  # ("40° › 55°": a single guillemet)
-# "Touch: DRY <-> MOIST", "75 ◄► 80 ◄► 100": a key that flips between two values, or a pair
-# stepping one list both ways
-_BOTH_WAYS = re.compile(r"\s*(?:<->|<=>|↔|⇄|⇔|◄[-─—]*►|◀[-─—]*▶)\s*")
-# an arrow with a space on both sides parts a list; one fused to a word ("→IN", "OUT→") is
-# a symbol printed on the display beside the value's name
-_SPACED_ARROW = re.compile(r"(?:^|\s)(?:→|->)\s")
-_FUSED_ARROW = re.compile(r"(?<!\S)(?:(?:→|->)[A-Za-z]+|[A-Za-z]+(?:→|->))(?!\S)")
 _CUE = re.compile(  # a lookahead, so that every cue in a sentence is tried
     r"(?=(?:\bbetween|\bamong|\bchoose(?: from)?|\bselect(?:s| from)?|\bcycles?(?: through)?|"
     r"\boptions?(?: are)?|\bsettings?(?: are)?|\blevels?(?: are)?|\bmodes?(?: are)?|\border|"
     r"\bpositions?(?: are)?|\bpick|\bsteps? through|\bchanges?|:)\s+(.*))",
     re.IGNORECASE,
 )
-# the colon ending a lead-in ("Order: LOW → HIGH"), not one inside a clock time ("0:30")
-_LEAD_COLON = re.compile(r"(?<!\d):|:(?!\d)")
-_STOP_WORDS = {"the", "a", "an", "your", "this", "that", "it", "you", "to", "is", "are", "of"}
-
-
-def _clean_item(item: str) -> str:
-    gloss = re.fullmatch(r"\s*[-–—]+\s*\(\s*([A-Za-z]+)\s*\)\s*", item)
-    if gloss:  # "-- (off)": a dashed screen glossed by its word, the value is the word
-        return gloss.group(1)
-    item = re.sub(r"\(.*?\)", "", item)
-    item = re.sub(r"^(?:back to|then|and|or|finally)\s+", "", item.strip(), flags=re.I)
-    return item.strip(" .;:!?\"'“”‘’*_")
-
-
-_PER_NAME = re.compile(r"[A-Za-z]\s*:\s*\d")  # "(HOT: 3, COLD: 2)": a value per name, no list
-
-
-def _value_like(item: str, caps_context: bool) -> bool:
-    if not item or len(item) > 24 or re.search(r"[()\[\]{}]", item):
-        return False
-    if _PER_NAME.search(item):
-        return False
-    ws = item.split()
-    if len(ws) > 3 or ws[0].lower() in _STOP_WORDS:
-        return False
-    if re.fullmatch(rf"{NUM}\s*{UNIT}?", item, re.IGNORECASE):
-        return True
-    if caps_context:
-        return item.upper() == item and any(c.isalpha() for c in item)
-    return all(w[:1].isupper() or w[:1].isdigit() for w in ws) or len(ws) == 1
 
 
 _NUMBER_LIST = re.compile(
     r"(?<![\w.])(\d+(?:[.,]\d+)?(?:\s*,\s*\d+(?:[.,]\d+)?)*)\s*,?\s*(?:or|and)\s*"
     r"(\d+(?:[.,]\d+)?)\s*([A-Za-z%°]{1,8})?(?!\w)",
 )
-
-
-def _nothing_as_zero(items: list[str]) -> list[str]:
-    """A list of durations led by a word for none ("no timer → 2H → 4H", "OFF, 1 h, 2 h"): the
-    first is zero of their unit."""
-    rest = [
-        re.fullmatch(r"(\d+(?:[.,]\d+)?)\s*(h|hr|hrs|hours?|min|mins|minutes?)", i.strip(), re.I)
-        for i in items[1:]
-    ]
-    if len(items) < 3 or not all(rest):
-        return items
-    if not re.fullmatch(r"(?:no\b.{0,12}|none|off|-+|–|—)", items[0].strip(), re.I):
-        return items
-    unit = rest[0].group(2) if rest[0] else "h"
-    return [f"0 {unit}"] + [f"{m.group(1)} {m.group(2)}" for m in rest if m]
-
-
-def _range_table_header(items: list[str]) -> bool:
-    """ "Timer settings: Range Step 0.5 – 4 h …": the head of a table of ranges and their
-    steps, not a list of named values."""
-    said = {i.lower() for i in items}
-    return "range" in said and bool(said & {"step", "steps", "increment", "increments"})
-
-
-_LOWER_WORD = re.compile(r"[a-z][a-z'-]*")
-
-
-def _after_case_label(head: list[str], rest: list[str]) -> list[str]:
-    """The first item of an arrow list in lower case led by a setting's name in capitals
-    ("WHITE  regular → softer → harder": the order on WHITE): the lower-case words before the
-    first arrow, as many as the other items have; [] when the list is not written so."""
-    rest = [p for p in rest if p]
-    if not rest or any(re.search(r"[A-Z]", p) for p in rest):
-        return []
-    if not any(w.isupper() and any(c.isalpha() for c in w) for w in head):
-        return []
-    size = max(len(p.split()) for p in rest)
-    run: list[str] = []
-    for word in reversed(head):
-        if len(run) >= size or not _LOWER_WORD.fullmatch(word):
-            break
-        run.insert(0, word)
-    return run
-
-
-_TRIANGLE_RUN = re.compile(r"(?:[\w+]{1,12}[ \t]*[►▶][ \t]*){2,}[\w+]{1,12}")
-
-
-def _triangle_arrows(text: str) -> str:
-    """A run of names joined by the next key's triangle that comes back round ("P1 ► P2 ►
-    P1"): the order the key steps, as arrows; a menu path never comes round ("MENU ▶ Clock ▶
-    Format"), one triangle stays the key. The run ends the list (then "P1 ◄ P6 ◄ …")."""
-    for run in _TRIANGLE_RUN.finditer(text):
-        names = re.split(r"[ \t]*[►▶][ \t]*", run.group(0))
-        if names[0].casefold() == names[-1].casefold():
-            return text[: run.start()] + re.sub(r"[►▶]", "→", run.group(0))
-    return text
-
-
-def _arrow_cell(text: str) -> str:
-    """A table row's one cell holding a run of arrows ("TIMER | off → 1H → 2H → off | with
-    MODE, 3 s: lock"): the list lies inside that cell, not across the row."""
-    cells = text.split(" | ")
-    arrowed = [c for c in cells if len(_ARROW.split(c)) >= 3]
-    if not arrowed:  # ("FOAM | Tap: THIN › THICK | (starts THICK)": two names, one arrow)
-        arrowed = [c for c in cells if len(_ARROW.split(c)) == 2]
-    return arrowed[0] if len(cells) > 1 and len(arrowed) == 1 else text
-
-
-def _shared_noun_dropped(items: list[str]) -> list[str]:
-    """Names in capitals each followed by the same noun ("between the BODY zone and the FEET
-    zone", "the LEFT burner or the RIGHT burner"): the names alone are the values."""
-    found = [re.fullmatch(r"(?:the\s+)?([A-Z][A-Z0-9-]*)\s+([a-z]{3,})", i) for i in items]
-    if len(items) < 2 or not all(found):
-        return items
-    nouns = {m.group(2) for m in found if m}
-    return [m.group(1) for m in found if m] if len(nouns) == 1 else items
-
-
-_CAPS_WORD = re.compile(r"[A-Z][A-Z0-9.+-]*")
-
-
-def _two_named(parts: list[str]) -> list[str] | None:
-    """Two display words joined by one arrow ("Tap: THIN › THICK (starts THICK)"): the capital
-    run right before the arrow and the one right after it, up to an aside or a new clause. Two
-    names alone, in capitals, as a short key cycles between them; lower-case words on either
-    side are prose ("from here → see page 4")."""
-    head = _LEAD_COLON.split(parts[0])[-1].split()
-    first: list[str] = []
-    for w in reversed(head):
-        if not _CAPS_WORD.fullmatch(w):
-            break
-        first.insert(0, w)
-    tail = re.split(r"[,;]\s|\s[—–]\s|\.\s|\s*[()]|\s{2,}|\s*(?:…|\.\.\.)", parts[1].strip())[0]
-    last = tail.split()
-    if not (1 <= len(first) <= 2 and 1 <= len(last) <= 2):
-        return None
-    if not all(_CAPS_WORD.fullmatch(w) for w in last) or first == last:
-        return None
-    if len(head) > len(first) and head[-len(first) - 1].upper() in ("PRESS", "TOUCH", "THEN"):
-        return None
-    return [" ".join(first), " ".join(last).rstrip(".")]
 
 
 def find_list(text: str) -> tuple[list[str], str] | None:
@@ -276,32 +144,6 @@ def find_list(text: str) -> tuple[list[str], str] | None:
                 return _dedupe(head), "list"
     dotted = _dotted_run(text)  # the last resort: a dotted run inside a flattened sentence
     return (dotted, "list") if dotted else None
-
-
-_QUANTITY = re.compile(rf"\d\s*{UNIT}\b", re.IGNORECASE)
-
-
-def _dotted_run(text: str) -> list[str] | None:
-    """Names run together with middle dots inside a longer sentence, as text flattened from a
-    PDF prints a knob's positions ("… starting from OFF: OFF · Cottons · Eco Cottons · … ·
-    Spin/Drain Programme Default temp."): the first and last names are cut to the length most
-    of the names have."""
-    parts = re.split(r"\s*[·•]\s*", text)
-    if len(parts) < 5 or ":" not in parts[0]:
-        return None  # a list a colon introduces, not a legend or a row of figures
-    middle = [_clean_item(p) for p in parts[1:-1]]
-    names = all(
-        _value_like(p, False) and re.match(r"[A-Za-z]", p) and not _QUANTITY.search(p)
-        for p in middle
-    )
-    if not names:
-        return None
-    counts = [len(p.split()) for p in middle]
-    k = max(set(counts), key=lambda c: (counts.count(c), -c))
-    first = _clean_item(" ".join(_LEAD_COLON.split(parts[0])[-1].split()[-k:]))
-    last = _clean_item(" ".join(parts[-1].split()[:k]))
-    items = [i for i in [first, *middle, last] if i]
-    return _dedupe(items)
 
 
 _CAPS_ITEM = r"[A-Z][A-Z0-9+-]*(?: [A-Z0-9+-]+){0,2}"
@@ -434,11 +276,3 @@ def named_list(text: str, word: str) -> list[str] | None:
 _ASIDE_PAREN_RE = re.compile(r"\s*(?:and|or|also|plus|e\.g\.|i\.e\.|see|if)\b", re.I)
 """A parenthesis that adds a step, an example or a reference, not the setting's values."""
 _NAMES_NOUN = r"(?:names|settings|options|choices|positions)"
-
-
-def _dedupe(items: list[str]) -> list[str]:
-    seen: list[str] = []
-    for item in items:
-        if item.lower() not in (s.lower() for s in seen):
-            seen.append(item)
-    return seen
