@@ -221,7 +221,7 @@ def test_a_table_of_what_to_type_is_examples_not_the_values_there_are() -> None:
 
 
 def test_a_plural_ending_in_a_column_heading_is_no_unit_of_seconds() -> None:
-    from apbot.read.cases import _header_unit
+    from apbot.read.cases_amounts import _header_unit
 
     plural: dict[str, object] = {"type": "numeric"}
     _header_unit(plural, "Option(s)")

@@ -7,7 +7,8 @@ like the setting first; a key whose display the belief cannot read is walked unt
 repeats, and what varies from text to text is the setting's value
 (:func:`apbot.agent.infer.infer_template`). From the walk it writes a new variable (its values
 or ranges, unit, display template), the key's action and a one-step procedure into the belief —
-a data edit the checker validates like any other.
+a data edit the checker validates like any other. Which keys to try, and their walks, are
+:mod:`apbot.agent.discovery_walks`.
 """
 
 from __future__ import annotations
@@ -15,16 +16,14 @@ from __future__ import annotations
 from typing import Any
 
 from apbot.agent.added_settings import unrole
+from apbot.agent.discovery_walks import MAX_KEYS, KeyWalks
 from apbot.agent.finder_keys import (
     _digit_keys,
     _is_digit,
-    _is_reverse,
     _main,
     _planned,
     _press_digit,
     _unknown,
-    opposite_key,
-    stepping_suspects,
 )
 from apbot.agent.guards import GuardLearner
 from apbot.agent.reader import DisplayReader
@@ -35,11 +34,10 @@ from apbot.agent.repair import (
     add_indicator,
     add_keypad_setting,
     add_setting,
-    plain_keys,
     plain_steps,
     setting_step,
 )
-from apbot.agent.session import Executed, Session
+from apbot.agent.session import Session
 from apbot.agent.setting_texts import (
     GAP,
     _fits,
@@ -50,16 +48,12 @@ from apbot.agent.setting_texts import (
     lamp_word,
     typed_setting,
 )
-from apbot.model.key_roles import adjusted_by, is_switch, misread_key
 from apbot.model.schema import DiscreteVariable
-from apbot.read.actions import action_info
 
-MAX_WALK = 60  # presses of one key while looking at a new setting
-MAX_KEYS = 6  # keys tried for one setting
 MAX_ADJUSTERS = 4  # keys tried after an entry key
 
 
-class VariableFinder:
+class VariableFinder(KeyWalks):
     """Find a setting the belief lacks by pressing the keys it gives no role."""
 
     def __init__(self, session: Session, guards: GuardLearner) -> None:
@@ -145,36 +139,6 @@ class VariableFinder:
                             session.belief.set_value(other, value)
                     return True
         return False
-
-    def _named_steps(self, name: str) -> list[tuple[str, tuple[str, int]]]:
-        """The last step of each procedure whose name or setting shares a word with ``name``,
-        with a key of its own that is no switch's: (that key, (procedure, step index))."""
-        model = self.session.belief.model
-        words = {w for w in name.split("_") if len(w) >= 3}
-        switches = self._switch_keys()
-        found: list[tuple[str, tuple[str, int]]] = []
-        for feature, steps in model.features.items():
-            index = len(steps) - 1
-            step = steps[index]
-            names = {*feature.split("_"), *(step.variable or "").split("_")}
-            keys = [a for a in step.actions if a not in switches and not _is_digit(a)]
-            if words & names and len(keys) == 1 and step.variable is not None:
-                found.append((keys[0], (feature, index)))
-        return found
-
-    def _walked(self, key: str) -> tuple[list[str], str] | None:
-        """Walk ``key`` (and its opposite back from an end): the texts in value order and the
-        text shown now; None when the key shows nothing the belief cannot read."""
-        texts = self._walk(key)
-        if not texts:
-            return None
-        last = texts[-1]
-        opposite = self._opposite(key)
-        if len(set(texts)) < 2 and opposite is not None:  # stuck at an end: walk back
-            back = self._walk(opposite)
-            last = back[-1] if back else last
-            texts = list(reversed(back)) + texts
-        return texts, last
 
     def _learn(
         self,
@@ -343,34 +307,6 @@ class VariableFinder:
         session.reread()
         return True
 
-    def _adjusters(self, entry: str) -> list[str]:
-        """Keys to walk after an entry key: those that step things (▲/▼, dials) first; never
-        a lock's, a power switch's or a start key (they change which keys work)."""
-        offered = list(self.session.context.actions or self.session.offered)
-        stepping = ("plus", "minus", "up", "down", "cw", "ccw", "left", "right", "next", "prev")
-        switches = self._switch_keys()
-        keys = [
-            a
-            for a in offered
-            if a != entry and not _is_reverse(a) and not _is_digit(a) and a not in switches
-        ]
-        return sorted(
-            keys, key=lambda a: (not any(w in a.split("_") for w in stepping), keys.index(a))
-        )
-
-    def _switch_keys(self) -> set[str]:
-        """Keys of the steps that change what a guard of the belief tests (power, locks, the
-        run state)."""
-        model = self.session.belief.model
-        tested = {n for guard in model.guards for n in guard.when}
-        return {
-            a
-            for steps in model.features.values()
-            for step in steps
-            if step.variable in tested or tested & set(step.set)
-            for a in step.actions
-        }
-
     def _as_lamp(self, model: Any, name: str, text: str) -> Any:
         """The new setting also as a lamp, when the display showed it after its main text
         before its key was pressed (``P1  3:00  CRUST medium``)."""
@@ -385,81 +321,6 @@ class VariableFinder:
                 except RepairError:
                     return model
         return model
-
-    def _candidates(self, name: str, goal_value: Any = None) -> list[str]:
-        """Keys that start nothing the belief knows (unknown, unused, or only later steps of a
-        procedure), those named like the setting first; not digits. Then a key named like the
-        setting whose role in the belief cannot hold the goal's value ("400 g" on a DEFROST
-        key read as a switch): the reader may have got that key wrong."""
-        session = self.session
-        model = session.belief.model
-        starting = {a for steps in model.features.values() for a in steps[0].actions}
-        starting |= {a for entry in model.anywhere for a in entry.actions}  # a role of their own
-        starting |= {a for a, spec in model.actions.items() if spec.skill == "wait"}
-        plain = plain_keys(model)
-        offered = list(session.context.actions or session.offered)
-        unknown = [a for a in offered if (a not in starting or a in plain) and not _is_digit(a)]
-        words = {w for w in name.split("_") if len(w) >= 3}
-
-        def alike(action: str) -> bool:
-            parts = [p for p in action_info(action).token.split("_") if len(p) >= 3]
-            return any(w.startswith(p) or p.startswith(w) for w in words for p in parts)
-
-        # a key the belief gives a plain step only (press it, nothing changes) may be the very
-        # key of the setting the reader missed: after the keys with no role at all
-        ranked = sorted(unknown, key=lambda a: (not alike(a), a in plain, unknown.index(a)))
-        named = [a for a in ranked if alike(a)]
-        self.suspect = [
-            a
-            for a in offered
-            if a not in unknown
-            and alike(a)
-            and not _is_digit(a)
-            and goal_value is not None
-            and misread_key(model, a, goal_value)
-            and not any(  # a choice the goal makes with it: the key's role taken as read
-                v in session.context.goal and not is_switch(model, v) for v in adjusted_by(model, a)
-            )
-        ]
-        # last, a forward stepping key (▲, +, a dial) whose role cannot hold the goal's value
-        stepping = stepping_suspects(session, [a for a in offered if a not in unknown], goal_value)
-        stepping = [a for a in stepping if a not in self.suspect]
-        named += self.suspect
-        self.suspect += stepping
-        rest = [a for a in ranked if not alike(a)]
-        keys = [a for a in [*named, *rest] if not _is_reverse(a)][:MAX_KEYS]
-        return keys + [a for a in stepping if a not in keys][: max(0, MAX_KEYS + 1 - len(keys))]
-
-    def _walk(self, key: str) -> list[str]:
-        """Press ``key`` until the display repeats a text the belief cannot read; the texts."""
-        session = self.session
-        action = _planned(key)
-        texts: list[str] = []
-        self.trail = []
-        for _ in range(MAX_WALK):
-            done: Executed = session.press(action, exploring=True)
-            self.trail.append(done.feedback.text if done.feedback.accepted else None)
-            text = _main(done.feedback.text, session.perceiver.reader.lamp_texts())
-            if not texts and not done.feedback.text.strip() and self.guards.learn(done):
-                # a dark panel the belief had no guard for (asleep): now lit, and the key was
-                # pressed again there — what it showed is the walk's first text
-                shown = session.last.text
-                main = _main(shown, session.perceiver.reader.lamp_texts())
-                if main and session.perceiver.reader.read(shown).unknown:
-                    self.trail = [shown]
-                    texts.append(main)
-                continue
-            if not done.feedback.accepted or not text or not _unknown(done):
-                break  # refused, dark, or a screen the belief knows: not the missing setting
-            if text in texts:
-                texts.append(text)
-                break
-            texts.append(text)
-        return texts
-
-    def _opposite(self, key: str) -> str | None:
-        """The key that walks the other way, if the panel has it."""
-        return opposite_key(key, self.session.context.actions or tuple(self.session.offered))
 
 
 __all__ = ["DiscreteVariable", "VariableFinder", "infer_setting"]

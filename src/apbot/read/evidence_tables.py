@@ -9,7 +9,8 @@ from __future__ import annotations
 import re
 
 from apbot.read.labels import Label, words
-from apbot.read.shapes import _DISPLAY_HEAD_RE, CHOICE_WORDS, GROUP_NOUNS, _next_table_column
+from apbot.read.shapes import CHOICE_WORDS, GROUP_NOUNS
+from apbot.read.shapes_columns import _DISPLAY_HEAD_RE, _next_table_column
 from apbot.read.text import Manual
 from apbot.read.text_pages import OPEN_ENDS
 

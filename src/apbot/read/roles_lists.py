@@ -12,7 +12,8 @@ from apbot.read.evidence_lists import marked_start
 from apbot.read.labels import words
 from apbot.read.list_ellipsis import fill_ellipses
 from apbot.read.roles_common import clock_list, numeric_list, stepped_noun, token_of
-from apbot.read.shapes import Evidence, _fits, _next_table_column
+from apbot.read.shapes import Evidence, _fits
+from apbot.read.shapes_columns import _next_table_column
 from apbot.read.text import Unit
 from apbot.read.value_steps import find_step
 from apbot.read.values import find_ranges
