@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from apbot.read import read_manual
-from apbot.read.build import PLACEHOLDERS
+from apbot.read.build_base import PLACEHOLDERS
 from apbot.read.values import find_ranges
 
 # a grill whose own section for the core-sensor key gives its range in °F, a unit sign that

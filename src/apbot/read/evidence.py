@@ -2,7 +2,9 @@
 it came from (the builder asks once per control and keeps the answer). Second looks at a list
 or table are in evidence_checks.py; a setting's range found anywhere, in evidence_anywhere.py;
 whose a sentence, row or list is, in evidence_whose.py; its values written away from its own
-sentences, in evidence_elsewhere.py.
+sentences, in evidence_elsewhere.py; ranges read across several sentences, a chart or a guide
+column, in evidence_ranges.py; the list of values settled from what was read, in
+evidence_values.py.
 """
 
 from __future__ import annotations
@@ -11,23 +13,14 @@ import re
 from functools import lru_cache
 
 from apbot.read.chart_cells import own_cells, row_names, without_names
-from apbot.read.count_tables import chart_for, count_charts, sideways_charts
 from apbot.read.cycle_mentions import named_in_cycle_only
 from apbot.read.evidence_anywhere import AnywhereReader
 from apbot.read.evidence_checks import (
-    _amount_column,
-    _every_minute_top,
-    _names_of_pieces,
-    _part_of,
     _where_it_applies,
-    _with_every,
-    _with_midpoints,
     _without_only,
-    about_another,
-    between_marks,
-    excluded_list,
 )
-from apbot.read.evidence_elsewhere import ElsewhereReader
+from apbot.read.evidence_ranges import RangeReader
+from apbot.read.evidence_values import ValueChooser
 from apbot.read.evidence_whose import (
     _KEY_HEAD,
     _after_own,
@@ -37,16 +30,12 @@ from apbot.read.evidence_whose import (
     _presses_another,
     _with_items,
     _with_rows,
-    _without_own_name,
     lead_cell,
     names_another,
 )
-from apbot.read.figure_names import figures_named
 from apbot.read.labels import unit_only_mention, words
-from apbot.read.quantity_units import _quantity_units
 from apbot.read.shapes import (
     _KEYPAD_WORDS,
-    CHOICE_WORDS,
     DOWN_WORDS,
     LAMP_LIST_RE,
     UP_WORDS,
@@ -64,7 +53,6 @@ from apbot.read.shapes import (
     _without_advice,
     is_wait,
 )
-from apbot.read.switch_on_starts import start_at_switch_on
 from apbot.read.table_spans import column_span, own_range_row
 from apbot.read.text_sections import other_model, surroundings
 from apbot.read.two_choices import two_choices
@@ -75,20 +63,15 @@ from apbot.read.values import (
     NUM,
     ON_OFF_RE,
     Range,
-    find_bounds,
     find_ranges,
     find_shown_hmm,
-    gap_pieces,
     seconds,
 )
-from apbot.read.values_elided import filled
-from apbot.read.values_pieces import find_amount_pieces, find_two_steps
 from apbot.read.values_scales import beyond, scale_pieces, spans_read
 from apbot.read.values_stepped import find_arrow_pieces, find_stepped_pieces
-from apbot.read.values_wraps import wrap_ends
 
 
-class EvidenceReader(ElsewhereReader, AnywhereReader):
+class EvidenceReader(ValueChooser, RangeReader, AnywhereReader):
     """Evidence about controls: values, ranges, steps and toggles, with where each was read."""
 
     _evidence: dict[tuple[str, ...], Evidence]
@@ -100,10 +83,6 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
             self._evidence[key] = self._read_evidence(tokens)
         return self._evidence[key]
 
-    def _flips_between(self, at: int | None) -> bool:
-        """The list of two amounts was read where the key flips between them: two choices."""
-        return at is not None and two_choices(self.manual.units[at].text)
-
     def _only_pair_named(self, i: int, tokens: list[str]) -> bool:
         """Whether the keys unit ``i`` names, this one aside, are all the stepping pair ("Press
         + to set it:" then its steps span by span): then its steps are this key's, while under
@@ -112,20 +91,6 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
             set(t.split("_")) & (UP_WORDS | DOWN_WORDS)
             for t, lab in self.labels.items()
             if t not in tokens and i in lab.mentions
-        )
-
-    def _turns(self, tokens: list[str]) -> bool:
-        """One of these controls is a knob or dial (its turns are clicks)."""
-        return any(
-            i.skill.startswith("turn") and set(i.controls) & set(tokens)
-            for i in getattr(self, "infos", [])
-        )
-
-    def _turned(self, tokens: list[str]) -> bool:
-        """The panel has a knob or dial other than these controls (its turns are clicks)."""
-        return any(
-            i.skill.startswith("turn") and not set(i.controls) & set(tokens)
-            for i in getattr(self, "infos", [])
         )
 
     def _read_evidence(self, tokens: list[str]) -> Evidence:
@@ -315,41 +280,7 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
                 init = find_initial(text)
                 if init:
                     ev.initial, ev.initial_at = init, i
-        for i in sorted(self.context(tokens)):  # "up to 1 h by 10 min; after that by 30 min"
-            window = []
-            for k in range(i, min(i + 4, len(units))):
-                if k not in mentions and about_another(units[k].text, others):
-                    break  # "The cook time changes by 1 minute …" after the delay's range
-                if not units[k].cells:
-                    window.append(k)
-            names = tuple(self.labels[t].text.lower() for t in tokens if t in self.labels)
-            texts = [units[k].text for k in window]
-            two = find_two_steps(texts, names) or find_amount_pieces(texts)
-            if two and _fits(two[0][0].unit, tokens):
-                ev.ranges, ev.range_at = two[0], window[two[1]]
-                break
-        charts = count_charts(units) + sideways_charts(units, self.manual.lines)
-        chart = chart_for(
-            charts, own, self._turns(tokens), self._turned(tokens), context
-        )  # "| Clicks clockwise | Display |" "| 1 | 300 ml |": every setting, by example
-        if chart and _fits(chart.pieces[0].unit, tokens):
-            ev.ranges, ev.range_at = chart.pieces, chart.at
-        if not ev.ranges:  # "Rough guide to power:" and a column of 100 % … 10 %
-            for i in sorted(self.context(tokens)):
-                guide = None if _aside(units, i) else _amount_column(units, i)
-                if guide is not None and _fits(guide.unit, tokens):
-                    ev.ranges, ev.range_at = [guide], i
-                    break
-        if not ev.ranges:
-            for i in sorted(self.context(tokens)):  # the sentences that follow say the rest
-                bounds = find_bounds([u.text for u in units[i : i + 4]])
-                if bounds and _fits(bounds.unit, tokens):
-                    if not bounds.step:  # the longest setting alone: if nothing better is read
-                        ev.longest = ev.longest or (bounds, i)
-                        continue
-                    ev.ranges, ev.range_at = [bounds], i
-                    ev.step = ev.step or (bounds.step, bounds.unit)
-                    break
+        self._ranges_across(tokens, ev, context, mentions, others, own)
         own_words = {w for t in tokens for w in words(t.replace("_", " ")) if len(w) >= 3}
         if ev.step is None and own_words:  # "The delay is set in half-hour units.", anywhere
             subject = re.compile(rf"^(?:the\s+)?(?:{'|'.join(map(re.escape, own_words))})\b", re.I)
@@ -358,71 +289,9 @@ class EvidenceReader(ElsewhereReader, AnywhereReader):
                 if step:
                     ev.step, ev.step_at = step, i
                     break
-        best, best_prio = self._values_elsewhere(
-            tokens, own_words, others, own, best, best_prio, ev
+        return self._chosen_values(
+            tokens, ev, best, best_prio, candidates, own_words, others, own, mentions, elsewhere
         )
-        shown = units[ev.values_at].text if best and ev.values_at is not None else ""
-        if best and re.search(r"\bonly\W*$", best[-1], re.I) and not _named_only(best[-1], shown):
-            # "(STEW, JAM, BROTH only)": where the setting applies, not its values
-            best = None if _where_it_applies(best, shown) else _without_only(best) or None
-        if best and shown and excluded_list(best, shown):
-            best = None  # "PRESET cannot be used on QUICK, STEAM or CAKE": the other menus
-        choice = bool({w for t in tokens for w in words(t.replace("_", " "))} & CHOICE_WORDS)
-        if best is None or (_numeric_items(best) and (len(best) < 3 or choice)):
-            # two numbers are a range, not a list; a programme key's list is of names (but
-            # codes it lists, "MENU 1 … MENU 15", stay codes beside a numbered chart)
-            column = self._table_column(tokens, numbered=best is None or len(best) < 3)
-            if column:
-                best, ev.values_at = column, self._table_at
-            elif best is not None and len(best) < 3 and not self._flips_between(ev.values_at):
-                best = None
-        elif not _numeric_items(best):
-            column = self._table_column(tokens)
-            if column and _part_of(best, column):
-                best, ev.values_at = column, self._table_at
-        if best and len(ev.ranges) >= 2 and _names_of_pieces(best, units, ev.range_at):
-            best = None  # "| Short | 0.5 – 10 hours | half an hour |": names of the range's pieces
-        if best is None and not ev.ranges:
-            runs = self._unit_runs(tokens)
-            if runs is not None:  # the settings one by one: pieces of equal steps
-                amounts, at = runs
-                symbol = _quantity_units(tokens)[0]
-                ev.ranges.extend(gap_pieces(amounts, symbol))
-                ev.range_at = at
-        if best is not None and _numeric_items(best) and len(best) >= 3:
-            near = {
-                j
-                for i in mentions
-                for j in range(i, min(i + 5, len(units)))
-                if units[j].heading == units[i].heading
-            }  # the paragraph about the knob: its marks, then how it clicks between them
-            said = [units[i].text for i in sorted(near | set(self.context(tokens)))]
-            if any(between_marks(t) for t in said):
-                best = _with_midpoints(best)
-            for t in said:  # "in the first ten minutes every minute has its own tick"
-                top = _every_minute_top(t)
-                if top and 2 <= top <= 30 and top == int(top):
-                    best = _with_every(best, int(top))
-                    break
-        if best is not None and _numeric_items(best):
-            for listed in candidates:  # "3000K → 4500K" and a chart "WARM  3000K": by name
-                shows = figures_named(best, listed, units)
-                if shows:
-                    best, ev.shows = listed, shows
-                    break
-        if best is not None:
-            best = _without_own_name(best, own)
-            ev.values = best if _numeric_items(best) else [v.lower() for v in best]
-            self._initial_from_values(ev, tokens)
-        if ev.values and ev.values_at is not None:
-            ev.values = filled(ev.values, units[ev.values_at].text)  # "-18 → ... → -23"
-        if ev.initial is None and (ev.ranges or ev.values):
-            start_at_switch_on(units, ev, own_words)  # "When switched on it runs at speed 3"
-        if ev.ranges or not ev.values or _numeric_items(ev.values):
-            # "after 23:45 comes 00:00", "after 15 back to 0": the ends of what was read
-            about_it = [i for i in self.context(tokens) if i not in elsewhere or i in mentions]
-            wrap_ends(ev, units, about_it)
-        return ev
 
 
 def _named_range(text: str, own_words: set[str]) -> bool:

@@ -9,7 +9,8 @@ from __future__ import annotations
 
 import re
 
-from apbot.read.build import PLACEHOLDERS, Builder
+from apbot.read.build import Builder
+from apbot.read.build_base import PLACEHOLDERS
 
 
 def drop_guess(b: Builder, hold: str) -> str:

@@ -18,7 +18,8 @@ from apbot.model.validate import check_model
 from apbot.read.action_rank import in_manual_order, listed_as_given
 from apbot.read.actions import ActionInfo, parse_actions
 from apbot.read.belief_name import UNNAMED
-from apbot.read.build import PLACEHOLDERS, Builder
+from apbot.read.build import Builder
+from apbot.read.build_base import PLACEHOLDERS
 from apbot.read.cases import apply_cases
 from apbot.read.cases_chosen import chosen_cases
 from apbot.read.cases_fixed import read_fixed_in_mode

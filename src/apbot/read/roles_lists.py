@@ -8,7 +8,7 @@ from typing import Any
 
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
-from apbot.read.evidence_lists import marked_start
+from apbot.read.evidence_context import marked_start
 from apbot.read.labels import words
 from apbot.read.list_ellipsis import fill_ellipses
 from apbot.read.roles_common import clock_list, numeric_list, stepped_noun, token_of
