@@ -16,8 +16,10 @@ from apbot.read.labels import Label
 from apbot.read.report import Note
 from apbot.read.shapes import (
     Evidence,
-    _dedupe,
     _value_text,
+)
+from apbot.read.shapes_columns import (
+    _dedupe,
 )
 from apbot.read.shown import shown_words
 from apbot.read.symbol_lamps import symbol_lamp, word_lamp

@@ -43,15 +43,17 @@ from apbot.read.shapes import (
     _aside,
     _cell_key,
     _fits,
-    _header_row,
     _keyish,
     _keypad,
     _numeric_items,
-    _row_step,
-    _rows_span,
     _without,
     _without_advice,
     is_wait,
+)
+from apbot.read.shapes_columns import (
+    _header_row,
+    _row_step,
+    _rows_span,
 )
 from apbot.read.table_spans import column_span, own_range_row
 from apbot.read.text_sections import other_model, surroundings

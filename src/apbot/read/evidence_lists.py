@@ -16,11 +16,13 @@ from apbot.read.number_runs import find_number_run
 from apbot.read.quantity_units import QUANTITY_FAMILIES, _quantity_units
 from apbot.read.shapes import (
     ORDER_RE,
-    PRESSES_RE,
     RUN_RE,
     TABLE_POINTER_RE,
     _all_names,
     _aside,
+)
+from apbot.read.shapes_columns import (
+    PRESSES_RE,
     _bullet_items,
     _next_table_column,
     _quantity_column,

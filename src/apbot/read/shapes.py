@@ -12,17 +12,6 @@ from typing import Any
 from apbot.read.actions import ActionInfo
 from apbot.read.labels import words
 from apbot.read.quantity_units import QUANTITY_FAMILIES, _quantity_units
-
-# Still importable from here for evidence.py, evidence_lists.py and build.py (split by another
-# helper at the same time); new code imports them from shapes_columns.
-from apbot.read.shapes_columns import PRESSES_RE as PRESSES_RE
-from apbot.read.shapes_columns import _bullet_items as _bullet_items
-from apbot.read.shapes_columns import _dedupe as _dedupe
-from apbot.read.shapes_columns import _header_row as _header_row
-from apbot.read.shapes_columns import _next_table_column as _next_table_column
-from apbot.read.shapes_columns import _quantity_column as _quantity_column
-from apbot.read.shapes_columns import _row_step as _row_step
-from apbot.read.shapes_columns import _rows_span as _rows_span
 from apbot.read.text import Unit
 from apbot.read.values import Range
 
