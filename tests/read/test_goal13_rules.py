@@ -421,3 +421,31 @@ features:
 def test_box_drawn_tables_name_codes() -> None:
     model = loads_model(BOX, check=False)
     assert parse_instruction(model, "The foghorn, please.", BOX_MANUAL) == {"sound": "W2"}
+
+
+GRIDDLE = """
+appliance: {id: griddle_1, category: griddle, name: "Plancha P2 griddle", brand: G}
+controls:
+  - {id: mem_key, kind: button, label: "MEM"}
+  - {id: size_key, kind: button, label: "SIZE"}
+variables:
+  memory: {type: discrete, values: [P, A, B], label: MEM}
+  size: {type: discrete, values: [S, M, L], initial: S, label: SIZE}
+  clock_set: {type: discrete, values: ["7:00 AM", "8:00 AM"], initial: "8:00 AM"}
+actions:
+  press_mem: {control: mem_key}
+  press_size: {control: size_key}
+features:
+  memory:
+    - {actions: [press_mem], variable: memory, effect: next}
+  size:
+    - {actions: [press_size], variable: size, effect: next}
+"""
+
+
+def test_a_lone_letter_is_a_value_unless_it_follows_a_number() -> None:
+    """ "7 am" / "7 a.m." is half of a time said; "the stored P setting" names the value P."""
+    griddle = loads_model(GRIDDLE, check=False)
+    assert parse_instruction(griddle, "Use the stored P setting.") == {"memory": "P"}
+    assert parse_instruction(griddle, "Set it for 7 a.m.") == {"clock_set": "7:00 AM"}
+    assert parse_instruction(griddle, "Set it for seven am.") == {"clock_set": "7:00 AM"}

@@ -39,6 +39,7 @@ from apbot.read.goal_shortened import (
 from apbot.read.goal_text import (
     CLAUSE_ENDS,
     CONNECTORS,
+    NUMBER_WORDS,
     Text,
     near_vocab,
     negated_before,
@@ -61,6 +62,16 @@ class _Match:
 
 
 _MERIDIEMS = frozenset({"am", "pm", "a", "p", "m", "."})
+
+
+def _after_a_number(text: Text, i: int) -> bool:
+    """Whether the word before ``i`` is a number ("7 am", "seven p.m."): only then is a lone
+    "am" / "p" half of a time said; "memory P" names a value P."""
+    k = i - 1
+    while k >= 0 and text.word(k) in _MERIDIEMS:  # the "m" of "7 a.m." looks past "a" and "."
+        k -= 1
+    before = text.word(k)
+    return any(ch.isdigit() for ch in before) or before in NUMBER_WORDS
 
 
 def value_matches(view: Model, text: Text) -> list[_Match]:
@@ -89,7 +100,7 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
             end, quality = found
             if negated_before(text, i) or turned_off_after(text, end):
                 continue
-            if all(text.word(j) in _MERIDIEMS for j in range(i, end)):
+            if all(text.word(j) in _MERIDIEMS for j in range(i, end)) and _after_a_number(text, i):
                 continue  # "7 am": half of a time said, not the first value listed "4:00 AM"
             if text.word(i) in ("up", "down") and text.word(i - 1) in _PARTICLE_VERBS:
                 continue  # "set up the buttonhole", "warm up": a verb's particle, not UP
