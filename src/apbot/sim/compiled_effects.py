@@ -43,21 +43,7 @@ class Effects:
         cycle = self.cycles[c]
         new = list(state.values)
         memory = list(state.memory) if self.memory_slots else None
-        for target_var, tables in cycle.side:
-            before = new[target_var]
-            var = self.vars[target_var]
-            if before >= 0:
-                table = tables[var.case(new)]
-                if table is not None:
-                    new[target_var] = table[before]
-            if target_var in self.dependents:
-                self._reset_dependents(new, target_var, before, memory)
-            if (
-                memory is not None
-                and target_var in cycle.forgets
-                and target_var in self.memory_slots
-            ):
-                self._forget(memory, target_var)
+        self._apply_sides(new, cycle.side, cycle.forgets, memory)
         ended = State(tuple(new), state.step, state.buffer, state.memory)
         if memory is None:
             return ended
@@ -134,21 +120,7 @@ class Effects:
             and (kind == CLEAR or (kind == TABLE and effect[3]))
         ):
             self._forget(memory, v)
-        for target_var, tables in step.side:
-            before = new[target_var]
-            var = self.vars[target_var]
-            if before >= 0:
-                table = tables[var.case(new)]
-                if table is not None:
-                    new[target_var] = table[before]
-            if target_var in self.dependents:  # a side effect always assigns
-                self._reset_dependents(new, target_var, before, memory)
-            if (
-                memory is not None
-                and target_var in step.forgets
-                and target_var in self.memory_slots
-            ):
-                self._forget(memory, target_var)
+        self._apply_sides(new, step.side, step.forgets, memory)
         if memory is None:
             return State(tuple(new), target, buffer)
         for r, slots in self.memory_slots.items():  # what a setting shows is what it keeps
@@ -156,6 +128,27 @@ class Effects:
             if slot >= 0:
                 memory[slot] = new[r]
         return State(tuple(new), target, buffer, tuple(memory))
+
+    def _apply_sides(
+        self,
+        new: list[int],
+        side: tuple[tuple[int, tuple[tuple[int, ...] | None, ...]], ...],
+        forgets: frozenset[int],
+        memory: list[int] | None,
+    ) -> None:
+        """A step's or a cycle's side effects on ``new``, in place: each assigns (so dependents
+        return to their programme's defaults) and may forget a remembered value."""
+        for target_var, tables in side:
+            before = new[target_var]
+            var = self.vars[target_var]
+            if before >= 0:
+                table = tables[var.case(new)]
+                if table is not None:
+                    new[target_var] = table[before]
+            if target_var in self.dependents:
+                self._reset_dependents(new, target_var, before, memory)
+            if memory is not None and target_var in forgets and target_var in self.memory_slots:
+                self._forget(memory, target_var)
 
     def _reset_dependents(
         self, values: list[int], parent: int, before: int, memory: list[int] | None
