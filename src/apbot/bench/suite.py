@@ -194,6 +194,13 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "baby_monitor": 3,
     "standing_desk": 3,
     "ceiling_light": 3,
+    # The twenty-second blind set (helper blind25n, 7 December 2026, the second 7 December session):
+    # blind for this round's work.
+    "cpap_machine": 3,
+    "water_ionizer": 3,
+    "soldering_station": 3,
+    "av_receiver": 3,
+    "power_station": 3,
 }
 
 
