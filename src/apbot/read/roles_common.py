@@ -327,6 +327,9 @@ def stepped_noun(b: Builder, tokens: list[str], ev: Evidence | None = None) -> s
     unit = ev.ranges[0].unit if ev is not None and ev.ranges else ""
     if unit in UNIT_QUANTITY:
         return UNIT_QUANTITY[unit]
+    shown = _shown_new(b, tokens)
+    if shown:
+        return shown
     counts: dict[str, int] = {}
     # another key's name ("while the TIMER is being set they change the hours") is what the
     # pair sets for that key, not its own setting
@@ -341,6 +344,25 @@ def stepped_noun(b: Builder, tokens: list[str], ev: Evidence | None = None) -> s
             counts[noun] = counts.get(noun, 0) + len(re.findall(rf"\b{noun}\b", text))
     best = max(SETTING_NOUNS, key=lambda n: (counts.get(n, 0), -SETTING_NOUNS.index(n)))
     return best if counts.get(best) else ""
+
+
+# "Tap ▲ or ▼: the desk moves 1 cm … and the display shows the new height": what a press of
+# the pair changes is what the display then shows anew (set16)
+_SHOWS_NEW_RE = re.compile(r"\b(?:display|screen)\s+shows\s+the\s+new\s+([a-z]{3,})\b", re.I)
+_NOT_QUANTITIES = {"setting", "settings", "value", "values", "number", "figure", "reading"}
+
+
+def _shown_new(b: Builder, tokens: list[str]) -> str:
+    """The one noun the pair's own sentences say the display shows anew after a press ("the
+    display shows the new height"); "" when none or several."""
+    units = b.manual.units
+    found = {
+        m.group(1).lower()
+        for t in tokens
+        for i in mentions_of(b, t)
+        for m in _SHOWS_NEW_RE.finditer(units[i].text)
+    } - _NOT_QUANTITIES
+    return found.pop() if len(found) == 1 else ""
 
 
 def _heading_word(b: Builder, token: str) -> str | None:

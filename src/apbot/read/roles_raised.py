@@ -176,7 +176,10 @@ def sets_with_pair(b: Builder, key: str, pair: list[str]) -> bool:
 _ALONE_RE = re.compile(
     r"\bno other (?:key|button|setting|menu)s?\b"
     r"|\bwithout (?:(?:pressing|touching|using)\s+)?(?:any|another)\s+(?:other\s+)?(?:key|button)"
-    r"|\bno (?:menu|setting) is (?:open|shown|opened)\b",
+    r"|\bno (?:menu|setting) is (?:open|shown|opened)\b"
+    # "▲ and ▼ change the channel only when the display shows CH", "Press ▲ or ▼ while the
+    # display shows the channel": the pair's use in the display's own view (set16)
+    r"|\b(?:only\s+)?(?:when|while) the (?:display|screen) shows\b",
     re.I,
 )
 # "▲ and ▼ change the resistance level", "▲ / ▼ only set the days": what the pair moves
