@@ -91,7 +91,7 @@ def _make_codes(spec: dict[str, Any], codes: list[str]) -> None:
         spec.pop(key, None)
     spec["type"] = "discrete"
     spec["values"] = [_value_text(c) for c in codes]
-    label, _, figure = codes[0].rpartition(" ")
+    label = codes[0].rpartition(" ")[0]
     if label:  # "CH 01" … "CH 22": the display's label before the figure, the figure the value
         spec["values"] = [c.rpartition(" ")[2] for c in codes]
         spec["show"] = f"{label} {{value}}"

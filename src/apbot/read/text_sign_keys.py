@@ -19,7 +19,8 @@ from apbot.read.text_icons import _icon, _put
 # the icon leading a line (after any callout mark "(B)" or bullet), a dash, colon or gap (not
 # "=", which a legend of chart marks uses), and the first clause of what it does
 _SIGN_LINE = re.compile(
-    r"^[ \t]*(?:\(?[A-Za-z0-9]\)[ \t]*|[\u2460-\u2473][ \t]*|[•*-][ \t]+)?(\S)\ufe0f?[ \t]*(?:[—–:-]+|[ \t]{2,})[ \t]*"
+    r"^[ \t]*(?:\(?[A-Za-z0-9]\)[ \t]*|[\u2460-\u2473][ \t]*|[•*-][ \t]+)?"  # ("⑤" too)
+    r"(\S)\ufe0f?[ \t]*(?:[—–:-]+|[ \t]{2,})[ \t]*"
     r"([^.;:\n]+)",
     re.M,
 )
