@@ -215,6 +215,9 @@ def var_name(b: Builder, key: ActionInfo) -> str:
             m = moves.search(b.manual.units[i].text)
             if m:
                 return m.group(1).lower()
+    glossed = _short_press_noun(b, key, lab.mentions)
+    if glossed:  # "MENU — short press: privacy code.": a key of no meaning names its setting
+        return glossed
     said = _unit_key_sets(b, key, lab.mentions)
     if said:  # "HOUR key - sets the start time": a key named for its step sets that time
         return said
@@ -228,6 +231,26 @@ def var_name(b: Builder, key: ActionInfo) -> str:
     if 1 < len(lw) <= 3 and all(any(x == t or x.startswith(t) for x in lw) for t in tw):
         return "_".join(lw)
     return base
+
+
+# keys whose printed name says only that they open something (set16)
+_BARE_KEYS = frozenset({"menu", "set", "func", "function", "fn", "option", "options"})
+# "MENU — short press: privacy code. Hold 3 s: …": the setting a short press opens
+_SHORT_PRESS_RE = re.compile(
+    r"\bshort press\s*[:—–-]\s*(?:the\s+)?([a-z]+(?:[ -][a-z]+)?)\s*[.;]", re.I
+)
+
+
+def _short_press_noun(b: Builder, key: ActionInfo, mentions: list[int]) -> str:
+    """What the legend says a short press of a key printed only as MENU or SET opens ("short
+    press: privacy code"): the setting's name as users say it, not the key's."""
+    if key.skill != "press" or key.token not in _BARE_KEYS:
+        return ""
+    for i in mentions:
+        m = _SHORT_PRESS_RE.search(b.manual.units[i].text)
+        if m:
+            return "_".join(words(m.group(1)))
+    return ""
 
 
 _UNIT_KEYS = frozenset({"hour", "hours", "hr", "min", "minute", "minutes"})

@@ -190,6 +190,9 @@ _MOVED_RE = re.compile(
 )
 
 
+_VIEW_NOUN_RE = re.compile(r"^(?:only\s+)?(?:when|while) the (?:display|screen) shows the ([a-z]+)")
+
+
 def set_alone(b: Builder, pair: list[str]) -> str:
     """The setting a sentence says the pair sets by itself ("The temperature is set with ▲ and
     ▼ – no other key is needed", "Without pressing any other key first, ▲ and ▼ change the
@@ -211,6 +214,9 @@ def set_alone(b: Builder, pair: list[str]) -> str:
             sign = found_signs[-1]  # the last sign: its verb follows it ("▲ and ▼ change …")
             moved = _MOVED_RE.match(re.sub(r"\([^)]*\)", " ", sentence[sign.end() :]))
             noun = quantity_noun(moved.group("noun")) if moved is not None else ""
+            viewed = _VIEW_NOUN_RE.search(sentence[alone.start() :])
+            if not noun and viewed is not None:  # "Press ▲ or ▼ while the display shows the
+                noun = quantity_noun(viewed.group(1))  # channel": the view's own quantity
             if noun:
                 return noun
             if sign.start() > alone.start():
