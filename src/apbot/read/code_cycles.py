@@ -14,15 +14,17 @@ import re
 from typing import Any
 
 from apbot.read.build import Builder
+from apbot.read.labels import words
 from apbot.read.range_codes import _actions_said
 from apbot.read.shapes import _value_text
 
 # "After P8 the display shows P1 again", "after F5 it returns to F1", "after L3 comes L1"
+# (set16: a display label and a figure, "After CH 22 comes CH 01": the figure is the value)
 _CODE_WRAP = re.compile(
-    r"\b(?i:after)\s+(?P<top>(?P<tp>[A-Z]{1,2})(?P<tn>\d{1,2}))\b[^.;]{0,40}?"
-    r"\b(?P<bottom>(?P<bp>[A-Z]{1,2})(?P<bn>\d{1,2}))\b(?P<tail>[^.;]{0,20})"
+    r"\b(?i:after)\s+(?P<top>(?P<tp>[A-Z]{1,2})(?P<ts> ?)(?P<tn>\d{1,2}))\b[^.;]{0,40}?"
+    r"\b(?P<bottom>(?P<bp>[A-Z]{1,2})(?P<bs> ?)(?P<bn>\d{1,2}))\b(?P<tail>[^.;]{0,20})"
 )
-_BACK = re.compile(r"\b(?:again|back|returns?|starts?\s+over|round)\b", re.I)
+_BACK = re.compile(r"\b(?:again|back|returns?|starts?\s+over|round|comes)\b", re.I)
 _MAX_CODES = 40
 
 
@@ -32,11 +34,14 @@ def code_run(text: str) -> list[str] | None:
     for m in _CODE_WRAP.finditer(text):
         if m.group("tp") != m.group("bp") or not _BACK.search(m.group(0)):
             continue  # the same letters, and a word saying the run starts again
+        if m.group("ts") != m.group("bs"):
+            continue  # ("CH 22" and "C1": two ways of writing, no one run)
         low, high = int(m.group("bn")), int(m.group("tn"))
         if low >= high or high - low + 1 > _MAX_CODES:
             continue
         width = len(m.group("bn")) if m.group("bn").startswith("0") else 0
-        return [f"{m.group('tp')}{str(n).zfill(width)}" for n in range(low, high + 1)]
+        sep = m.group("ts")
+        return [f"{m.group('tp')}{sep}{str(n).zfill(width)}" for n in range(low, high + 1)]
     return None
 
 
@@ -50,8 +55,9 @@ def read_code_cycles(b: Builder) -> None:
         before = b.manual.units[at - 1] if at else None
         if not keys and before is not None and before.heading == unit.heading:
             keys = _actions_said(b, before.text)  # "Each press of MODE … After P8 …"
+        said = set(words(unit.text)) | (set(words(before.text)) if before is not None else set())
         for var, spec in b.variables.items():
-            if var == "power" or not _stepped_by(b, var, keys):
+            if var == "power" or not _stepped_by(b, var, keys, said):
                 continue
             if spec.get("type") == "discrete" and {c.lower() for c in codes} <= set(
                 spec.get("values") or []
@@ -61,12 +67,20 @@ def read_code_cycles(b: Builder) -> None:
             b.note(f"variables.{var}.values", f"{codes[0]} … {codes[-1]}, wrapping", at)
 
 
-def _stepped_by(b: Builder, var: str, keys: set[str]) -> bool:
-    """Whether one of ``keys`` alone steps ``var`` to its next value."""
+def _stepped_by(b: Builder, var: str, keys: set[str], said: set[str]) -> bool:
+    """Whether one of ``keys`` alone steps ``var`` to its next value, or a pair of them steps
+    it both ways and the sentences name it ("Press ▲ or ▼ while the display shows the
+    channel … After CH 22 comes CH 01": the channel's run, not the other settings' the pair
+    changes in their own views)."""
     for steps in b.features.values():
         for step in steps:
             acts = step.get("actions") or []
-            if step.get("variable") == var and step.get("effect") == "next" and set(acts) & keys:
+            if step.get("variable") != var or not set(acts) & keys:
+                continue
+            effect = step.get("effect")
+            if effect == "next":
+                return True
+            if isinstance(effect, dict) and set(words(var.replace("_", " "))) <= said:
                 return True
     return False
 
@@ -77,6 +91,10 @@ def _make_codes(spec: dict[str, Any], codes: list[str]) -> None:
         spec.pop(key, None)
     spec["type"] = "discrete"
     spec["values"] = [_value_text(c) for c in codes]
+    label = codes[0].rpartition(" ")[0]
+    if label:  # "CH 01" … "CH 22": the display's label before the figure, the figure the value
+        spec["values"] = [c.rpartition(" ")[2] for c in codes]
+        spec["show"] = f"{label} {{value}}"
     spec["wrap"] = True
     if initial is None or str(initial) not in spec["values"]:
         spec.pop("initial", None)

@@ -136,6 +136,8 @@ class ListReader(ContextReader):
             keys = {lab.text.upper() for lab in self.labels.values() if lab.text}
             span = self._own_span(text, tokens) if mention else text
             run = caps_run(span, own | keys)
+            if text == unit.heading:
+                run = None  # "CALL TONES, ROGER BEEP, HANDS-FREE": a heading lists topics
             if run and (mention or len(run) >= 4):
                 out.append((run, 1.9 if mention else 1.6))
             amounts = quantity_run(span) if mention else None

@@ -10,7 +10,7 @@ import re
 
 from apbot.read.labels import Label, words
 from apbot.read.shapes import CHOICE_WORDS, GROUP_NOUNS
-from apbot.read.shapes_columns import _DISPLAY_HEAD_RE, _next_table_column
+from apbot.read.shapes_columns import _DISPLAY_HEAD_RE, _drawn_column, _next_table_column
 from apbot.read.text import Manual
 from apbot.read.text_pages import OPEN_ENDS
 
@@ -70,6 +70,7 @@ class TableReader:
             or _NUMBER_HEAD_RE.match(lead)
             or _LEVEL_HEAD_RE.match(lead)
             or _DISPLAY_HEAD_RE.match(lead)
+            or _drawn_column(units, k + 1)  # "| Lamps | Colour |": lamps drawn, not a thing
         ):
             return False  # ("| Display | Mode |": each mode as shown, then what it does)
         return any(cell in own for cell in header[1:]) and self._own_column(i, tokens) == 0

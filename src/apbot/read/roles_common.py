@@ -215,6 +215,9 @@ def var_name(b: Builder, key: ActionInfo) -> str:
             m = moves.search(b.manual.units[i].text)
             if m:
                 return m.group(1).lower()
+    glossed = _short_press_noun(b, key, lab.mentions)
+    if glossed:  # "MENU — short press: privacy code.": a key of no meaning names its setting
+        return glossed
     said = _unit_key_sets(b, key, lab.mentions)
     if said:  # "HOUR key - sets the start time": a key named for its step sets that time
         return said
@@ -228,6 +231,26 @@ def var_name(b: Builder, key: ActionInfo) -> str:
     if 1 < len(lw) <= 3 and all(any(x == t or x.startswith(t) for x in lw) for t in tw):
         return "_".join(lw)
     return base
+
+
+# keys whose printed name says only that they open something (set16)
+_BARE_KEYS = frozenset({"menu", "set", "func", "function", "fn", "option", "options"})
+# "MENU — short press: privacy code. Hold 3 s: …": the setting a short press opens
+_SHORT_PRESS_RE = re.compile(
+    r"\bshort press\s*[:—–-]\s*(?:the\s+)?([a-z]+(?:[ -][a-z]+)?)\s*[.;]", re.I
+)
+
+
+def _short_press_noun(b: Builder, key: ActionInfo, mentions: list[int]) -> str:
+    """What the legend says a short press of a key printed only as MENU or SET opens ("short
+    press: privacy code"): the setting's name as users say it, not the key's."""
+    if key.skill != "press" or key.token not in _BARE_KEYS:
+        return ""
+    for i in mentions:
+        m = _SHORT_PRESS_RE.search(b.manual.units[i].text)
+        if m:
+            return "_".join(words(m.group(1)))
+    return ""
 
 
 _UNIT_KEYS = frozenset({"hour", "hours", "hr", "min", "minute", "minutes"})
@@ -327,6 +350,9 @@ def stepped_noun(b: Builder, tokens: list[str], ev: Evidence | None = None) -> s
     unit = ev.ranges[0].unit if ev is not None and ev.ranges else ""
     if unit in UNIT_QUANTITY:
         return UNIT_QUANTITY[unit]
+    shown = _shown_new(b, tokens)
+    if shown:
+        return shown
     counts: dict[str, int] = {}
     # another key's name ("while the TIMER is being set they change the hours") is what the
     # pair sets for that key, not its own setting
@@ -341,6 +367,25 @@ def stepped_noun(b: Builder, tokens: list[str], ev: Evidence | None = None) -> s
             counts[noun] = counts.get(noun, 0) + len(re.findall(rf"\b{noun}\b", text))
     best = max(SETTING_NOUNS, key=lambda n: (counts.get(n, 0), -SETTING_NOUNS.index(n)))
     return best if counts.get(best) else ""
+
+
+# "Tap ▲ or ▼: the desk moves 1 cm … and the display shows the new height": what a press of
+# the pair changes is what the display then shows anew (set16)
+_SHOWS_NEW_RE = re.compile(r"\b(?:display|screen)\s+shows\s+the\s+new\s+([a-z]{3,})\b", re.I)
+_NOT_QUANTITIES = {"setting", "settings", "value", "values", "number", "figure", "reading"}
+
+
+def _shown_new(b: Builder, tokens: list[str]) -> str:
+    """The one noun the pair's own sentences say the display shows anew after a press ("the
+    display shows the new height"); "" when none or several."""
+    units = b.manual.units
+    found = {
+        m.group(1).lower()
+        for t in tokens
+        for i in mentions_of(b, t)
+        for m in _SHOWS_NEW_RE.finditer(units[i].text)
+    } - _NOT_QUANTITIES
+    return found.pop() if len(found) == 1 else ""
 
 
 def _heading_word(b: Builder, token: str) -> str | None:

@@ -176,7 +176,10 @@ def sets_with_pair(b: Builder, key: str, pair: list[str]) -> bool:
 _ALONE_RE = re.compile(
     r"\bno other (?:key|button|setting|menu)s?\b"
     r"|\bwithout (?:(?:pressing|touching|using)\s+)?(?:any|another)\s+(?:other\s+)?(?:key|button)"
-    r"|\bno (?:menu|setting) is (?:open|shown|opened)\b",
+    r"|\bno (?:menu|setting) is (?:open|shown|opened)\b"
+    # "▲ and ▼ change the channel only when the display shows CH", "Press ▲ or ▼ while the
+    # display shows the channel": the pair's use in the display's own view (set16)
+    r"|\b(?:only\s+)?(?:when|while) the (?:display|screen) shows\b",
     re.I,
 )
 # "▲ and ▼ change the resistance level", "▲ / ▼ only set the days": what the pair moves
@@ -185,6 +188,9 @@ _MOVED_RE = re.compile(
     r"\s+(?:the\s+|its\s+)?(?P<noun>[a-z][a-z-]*(?:\s+[a-z][a-z-]*){0,2})",
     re.I,
 )
+
+
+_VIEW_NOUN_RE = re.compile(r"^(?:only\s+)?(?:when|while) the (?:display|screen) shows the ([a-z]+)")
 
 
 def set_alone(b: Builder, pair: list[str]) -> str:
@@ -208,6 +214,9 @@ def set_alone(b: Builder, pair: list[str]) -> str:
             sign = found_signs[-1]  # the last sign: its verb follows it ("▲ and ▼ change …")
             moved = _MOVED_RE.match(re.sub(r"\([^)]*\)", " ", sentence[sign.end() :]))
             noun = quantity_noun(moved.group("noun")) if moved is not None else ""
+            viewed = _VIEW_NOUN_RE.search(sentence[alone.start() :])
+            if not noun and viewed is not None:  # "Press ▲ or ▼ while the display shows the
+                noun = quantity_noun(viewed.group(1))  # channel": the view's own quantity
             if noun:
                 return noun
             if sign.start() > alone.start():

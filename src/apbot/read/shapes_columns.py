@@ -83,8 +83,10 @@ def _next_table_column(units: list[Unit], i: int, column: int = 0) -> list[str]:
         if column == 0 and len(units[k].cells) >= 2 and PRESSES_RE.match(units[k].cells[0]):
             column = 1  # the first column counts presses: the values are in the next one
         cells = units[k].cells
-        shown = column < len(cells) and bool(_DISPLAY_HEAD_RE.match(cells[column]))
         headless = _data_first_row(units, k)
+        if column == 0 and _drawn_column(units, k if headless else k + 1):
+            column = 1  # "| ● ○ ○ | 2700 K |": lamps drawn as the display shows each value
+        shown = column < len(cells) and bool(_DISPLAY_HEAD_RE.match(cells[column]))
         if not headless:
             k += 1  # the header row
     items: list[str] = []
@@ -111,6 +113,20 @@ def _next_table_column(units: list[Unit], i: int, column: int = 0) -> list[str]:
     if numbers * 2 > len(items):
         return []  # a column of ranges or bare numbers is not a list of names
     return items if len(items) >= 2 else []
+
+
+def _drawn_column(units: list[Unit], k: int) -> bool:
+    """Whether the first column of the table rows from unit ``k`` on is only drawn signs (lamps
+    lit and dark, bars, dots: no letter or digit in any cell) beside a further column: such a
+    column pictures each row's value as the panel shows it, so the value is the next cell (the
+    reader's text drops such signs, leaving the cells empty)."""
+    cells = []
+    while k < len(units) and units[k].cells and units[k].header:
+        if len(units[k].cells) < 2:
+            return False
+        cells.append(units[k].cells[0].strip(" *`"))
+        k += 1
+    return len(cells) >= 2 and all(not re.search(r"\w", c) for c in cells)
 
 
 _FIGURE_CELL_RE = re.compile(r"\d[\d.,]*\s*[A-Za-z°%]{0,3}")

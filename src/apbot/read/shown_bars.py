@@ -22,8 +22,14 @@ from apbot.read.labels import words
 from apbot.read.report import Note
 
 _GLYPHS = "▮▯■□▰▱█░●○"  # (dot lamps too: "●○○  2,500 lux")
-_BAR_RE = re.compile(rf"(?<![{_GLYPHS}])[{_GLYPHS}]{{2,}}(?![{_GLYPHS}])")
-_AFTER_RE = re.compile(r"[^\S\n]*([A-Za-z0-9][\w+/-]*(?:[^\S\n][A-Za-z0-9][\w+/-]*){0,3})")
+# (a row of lamps may be printed spaced, "● ○ ○ ○ ○"; the display shows it as one picture)
+_BAR_RE = re.compile(
+    rf"(?<![{_GLYPHS}])(?<![{_GLYPHS}] )[{_GLYPHS}](?: ?[{_GLYPHS}])+(?! ?[{_GLYPHS}])"
+)
+# the value right after the bar, or in the next cell of a table row ("| ● ○ ○ | 2700 K |")
+_AFTER_RE = re.compile(
+    r"[^\S\n]*(?:\|[^\S\n]*)?([A-Za-z0-9][\w+/-]*(?:[^\S\n][A-Za-z0-9][\w+/-]*){0,3})"
+)
 
 
 def read_bar_shows(b: Builder) -> None:
@@ -99,7 +105,7 @@ def _paired(lines: list[str], var: str, values: list[str]) -> tuple[dict[str, st
                 (by_words[tuple(ws[:k])] for k in (3, 2, 1) if tuple(ws[:k]) in by_words), None
             )
             if value is not None:
-                found.setdefault(value, set()).add(m.group(0))
+                found.setdefault(value, set()).add(m.group(0).replace(" ", ""))
                 first = first or n
     return {v: next(iter(s)) for v, s in found.items() if len(s) == 1}, first
 

@@ -19,7 +19,8 @@ from apbot.read.text_icons import _icon, _put
 # the icon leading a line (after any callout mark "(B)" or bullet), a dash, colon or gap (not
 # "=", which a legend of chart marks uses), and the first clause of what it does
 _SIGN_LINE = re.compile(
-    r"^[ \t]*(?:\(?[A-Za-z0-9]\)[ \t]*|[•*-][ \t]+)?(\S)\ufe0f?[ \t]*(?:[—–:-]+|[ \t]{2,})[ \t]*"
+    r"^[ \t]*(?:\(?[A-Za-z0-9]\)[ \t]*|[\u2460-\u2473][ \t]*|[•*-][ \t]+)?"  # ("⑤" too)
+    r"(\S)\ufe0f?[ \t]*(?:[—–:-]+|[ \t]{2,})[ \t]*"
     r"([^.;:\n]+)",
     re.M,
 )
@@ -54,9 +55,24 @@ def name_signed_keys(text: str, keys: Sequence[str], keep: frozenset[str]) -> st
     names = {
         icon: next(iter(ks)).replace("_", " ").upper() for icon, ks in named.items() if len(ks) == 1
     }
+    names.update(_last_left(text, tokens, named))
     if len(set(names.values())) != len(names):
         return text  # two icons for one key: which is which is not told
     lines = text.split("\n")
     for icon, name in names.items():
         lines = [_put(line, icon, name) if icon in line else line for line in lines]
     return "\n".join(lines)
+
+
+def _last_left(
+    text: str, tokens: dict[str, list[str]], named: dict[str, set[str]]
+) -> dict[str, str]:
+    """The one legend icon no key's words name, given to the one key the manual never names in
+    words ("⑤ ⏰ — reminder." on a panel whose actions include ``timer``, a word the manual
+    never prints): the legend draws every key, so the icon left over is the key left over."""
+    unnamed = [icon for icon, ks in named.items() if not ks]
+    said = set(_words(text))
+    unseen = [k for k, ws in tokens.items() if not set(ws) & said]
+    if len(unnamed) != 1 or len(unseen) != 1:
+        return {}
+    return {unnamed[0]: unseen[0].replace("_", " ").upper()}

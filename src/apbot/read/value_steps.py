@@ -49,6 +49,12 @@ _KEY_RAISES_BY_RE = re.compile(
     rf"(?:raises|lowers|increases|decreases|moves|changes|adjusts|shifts)\b[^.;,]{{0,30}}?"
     rf"\bby\s+({NUM})(?:\s*({UNIT}))?(?![\w/:.,]\d|\w)"
 )
+# "Tap ▲ or ▼: the desk moves 1 cm up or down": a tap moves the thing itself by its step
+_TAP_MOVES_RE = re.compile(
+    rf"^\W*(?:tap|press|touch)\b[^.;]{{0,40}}?\bmoves?\s+(?:it\s+)?({NUM})\s*({UNIT})\s+"
+    rf"(?:up|down|higher|lower|forwards?|backwards?|in|out)\b",
+    re.I,
+)
 _HELD_RE = re.compile(
     r"\b(?:hold|held|holding|keep|fast|faster|quick|quickly|rapid)\b|\d\s*s\b", re.I
 )
@@ -79,6 +85,9 @@ def find_step(text: str) -> tuple[float, str] | None:
         keyed = None if _HELD_RE.search(text) else _KEY_RAISES_BY_RE.search(text)
         if keyed and (value := number(keyed.group(1))):
             return value, unit_name(keyed.group(2))
+        tapped = None if _HELD_RE.search(text) else _TAP_MOVES_RE.search(text)
+        if tapped and (value := number(tapped.group(1))):
+            return value, unit_name(tapped.group(2))
         return None
     groups = m.groups()
     if m.group(0).lower().endswith(("units", "stages")) and not groups[1]:

@@ -146,7 +146,9 @@ _SET_VERB = re.compile(r"\b(?:set|sets|setting|choose|select|adjust)\b", re.IGNO
 
 
 _ASIDE_RE = re.compile(  # "1 (barely warm)": words in brackets, no number and no unit
-    rf"(?<=\d)\s*\((?!\s*{UNIT}\s*\))[^()\d]{{3,30}}\)", re.IGNORECASE
+    # (after the number's unit too: "between 62 cm (lowest) and 127 cm (highest)", set16)
+    rf"(?<=\d)(\s*(?:{UNIT})(?!\w))?\s*\((?!\s*{UNIT}\s*\))[^()\d]{{3,30}}\)",
+    re.IGNORECASE,
 )
 
 
@@ -203,7 +205,9 @@ def find_ranges(text: str) -> list[Range]:
         if _UNIT_ONLY.fullmatch(u.strip())
     ]
     # a label saying how to read a clock range ("0:01 - 99:59 (min:s)") is no aside to drop
-    bare = _ASIDE_RE.sub(lambda m: m[0] if minutes_and_seconds(text, m.start()) else "", text)
+    bare = _ASIDE_RE.sub(
+        lambda m: m[0] if minutes_and_seconds(text, m.start()) else m[1] or "", text
+    )
     return out + [r for r in _ranges(bare) if r not in out] if bare != text else out
 
 
