@@ -23,7 +23,6 @@ from apbot.read.build import Builder
 from apbot.read.code_words import own_lines
 from apbot.read.held_guesses import drop_guess, drop_key_guesses, says
 from apbot.read.roles_fasthold import held_time_step
-from apbot.read.text import Unit
 from apbot.read.value_steps import find_step
 from apbot.read.values import find_ranges
 from apbot.read.walk_fields import (
@@ -44,6 +43,7 @@ from apbot.read.walk_like import (
     squeezed_arrows,
 )
 from apbot.read.walk_order import read_coded_field, with_step
+from apbot.read.walk_steps import prose_opener, walk_steps
 
 # a field's name that says nothing of what it is: its key's name leads it ("snooze length")
 _BARE = frozenset({"length", "duration", "time", "setting", "value", "level"})
@@ -93,41 +93,31 @@ def _pairs(b: Builder) -> list[tuple[list[str], list[str]]]:
     return out
 
 
-def _groups(units: list[Unit], i: int) -> list[tuple[int, str]]:
-    """The numbered steps from unit ``i`` on, each with the sentences that follow it."""
-    out: list[tuple[int, str]] = []
-    first = units[i].step
-    for u in units[i:]:
-        if u.step is not None:
-            if first is None or u.step != first + len(out) or len(out) >= 9:
-                break
-            out.append((u.step, u.text))
-        elif u.cells or u.heading != units[i].heading:
-            break
-        else:
-            out[-1] = (out[-1][0], f"{out[-1][1]} {u.text}")
-    return out
-
-
 def read_held_walks(b: Builder) -> None:
     """Replace a held key's guessed switch by the two settings its numbered steps walk."""
     units = b.manual.units
     pairs = _pairs(b)
     if not pairs:
         return
+    stepping = {a for up, down in pairs for a in up + down}
     for info in b.infos:
         if info.skill != "hold" or len(info.controls) != 1 or info.controls[0] not in b.labels:
             continue
         token = info.controls[0]
+        paired = info.name in stepping or any(
+            i.controls == (token,) and i.name in stepping for i in b.infos
+        )
         press = next(
             (i.name for i in b.infos if i.skill == "press" and i.controls == (token,)), None
         )
         label = b.labels[token].text
         opener = re.compile(rf"^(?:press and |touch and )?hold\s+{re.escape(label)}(?!\w)", re.I)
         for i, unit in enumerate(units):
-            if unit.step is None or not opener.match(unit.text):
+            if not opener.match(unit.text) or (
+                unit.step is None and not prose_opener(unit, paired)
+            ):
                 continue
-            groups = _groups(units, i)
+            groups = walk_steps(units, i)
             walk = (_walk(b, groups, label, pairs, i) if press else None) or _one_walk(
                 b, groups, label, pairs, i
             )
