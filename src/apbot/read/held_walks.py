@@ -23,7 +23,6 @@ from apbot.read.build import Builder
 from apbot.read.code_words import own_lines
 from apbot.read.held_guesses import drop_guess, drop_key_guesses, says
 from apbot.read.roles_fasthold import held_time_step
-from apbot.read.text import Unit
 from apbot.read.value_steps import find_step
 from apbot.read.values import find_ranges
 from apbot.read.walk_fields import (
@@ -35,6 +34,15 @@ from apbot.read.walk_fields import (
     read_field,
     read_more_field,
 )
+from apbot.read.walk_flashed import (
+    CLOCK_SPEC,
+    clock_steps,
+    flashed_field,
+    held_steps,
+    joined_clocks,
+    name_by_flashing,
+    table_field,
+)
 from apbot.read.walk_known import known_field, use_known
 from apbot.read.walk_like import (
     absorb_pair_setting,
@@ -44,6 +52,14 @@ from apbot.read.walk_like import (
     squeezed_arrows,
 )
 from apbot.read.walk_order import read_coded_field, with_step
+from apbot.read.walk_steps import (
+    adjusts,
+    drop_adjuster_settings,
+    moves_at_ends,
+    prose_opener,
+    single_keys,
+    walk_steps,
+)
 
 # a field's name that says nothing of what it is: its key's name leads it ("snooze length")
 _BARE = frozenset({"length", "duration", "time", "setting", "value", "level"})
@@ -93,41 +109,32 @@ def _pairs(b: Builder) -> list[tuple[list[str], list[str]]]:
     return out
 
 
-def _groups(units: list[Unit], i: int) -> list[tuple[int, str]]:
-    """The numbered steps from unit ``i`` on, each with the sentences that follow it."""
-    out: list[tuple[int, str]] = []
-    first = units[i].step
-    for u in units[i:]:
-        if u.step is not None:
-            if first is None or u.step != first + len(out) or len(out) >= 9:
-                break
-            out.append((u.step, u.text))
-        elif u.cells or u.heading != units[i].heading:
-            break
-        else:
-            out[-1] = (out[-1][0], f"{out[-1][1]} {u.text}")
-    return out
-
-
 def read_held_walks(b: Builder) -> None:
     """Replace a held key's guessed switch by the two settings its numbered steps walk."""
     units = b.manual.units
     pairs = _pairs(b)
+    stepping = {a for up, down in pairs for a in up + down}
+    pairs += single_keys(b, pairs)
     if not pairs:
         return
     for info in b.infos:
         if info.skill != "hold" or len(info.controls) != 1 or info.controls[0] not in b.labels:
             continue
         token = info.controls[0]
+        paired = info.name in stepping or any(
+            i.controls == (token,) and i.name in stepping for i in b.infos
+        )
         press = next(
             (i.name for i in b.infos if i.skill == "press" and i.controls == (token,)), None
         )
         label = b.labels[token].text
         opener = re.compile(rf"^(?:press and |touch and )?hold\s+{re.escape(label)}(?!\w)", re.I)
         for i, unit in enumerate(units):
-            if unit.step is None or not opener.match(unit.text):
+            if not opener.match(unit.text) or (
+                unit.step is None and not prose_opener(unit, paired)
+            ):
                 continue
-            groups = _groups(units, i)
+            groups = walk_steps(units, i)
             walk = (_walk(b, groups, label, pairs, i) if press else None) or _one_walk(
                 b, groups, label, pairs, i
             )
@@ -145,6 +152,7 @@ def _walk(
 ) -> dict[str, Any] | None:
     """Two or more settings the held key's steps walk: the hold opens the first, each short
     press of the key the next, and the pair sets each."""
+    groups = moves_at_ends(groups, label)
     if len(groups) < 3:
         return None
     if _CLOCK_FIELDS_RE.search(groups[0][1]):  # the hours, then the minutes, of one clock
@@ -155,6 +163,7 @@ def _walk(
             return None
         return _clock_walk(b, groups, label, pair, at)
     segments, end = _segments(b, groups, label, pairs)
+    segments, clocks = joined_clocks(segments)
     fields: list[dict[str, Any]] = []
     pair = None
     heading = b.manual.units[at].heading
@@ -163,19 +172,26 @@ def _walk(
         if own is None or (pair is not None and own != pair):
             break
         field = (
-            read_field(opened, text, at, beside=True)
+            (
+                {"name": "time", "spec": dict(CLOCK_SPEC), "split": True}
+                if opened in clocks
+                else None
+            )
+            or read_field(opened, text, at, beside=True)
             or read_more_field(opened, text, at)
             or read_coded_field(opened, text, at)
             or known_field(b, opened, at)
+            or flashed_field(opened)
+            or table_field(b, opened, at)
         )
-        field = with_step(field, text, at) if field else None
+        field = with_step(name_by_flashing(field, opened), text, at) if field else None
         if field is None and fields and "values" not in fields[-1] and SAME_WAY_RE.search(text):
             field = like(fields[-1], field_name(opened, beside=True) or "setting")
         field = named_by_code(field, opened, heading) if field else None
         if field is None or any(f["name"] == field["name"] for f in fields):
             break
         shown = field.get("label") or field_label(opened, label, example="values" not in field)
-        field.update(label=shown, optional=bool(_SKIP_RE.search(text)))
+        field.update(label=shown, optional=bool(_SKIP_RE.search(text)), said=text)
         pair = own
         fields.append(field)
         if SAME_WAY_RE.search(text):  # "…, then SET for A3, and SET for A4"
@@ -280,6 +296,8 @@ def _pair_of(
         downs = [b.labels[t].text for a in down for t in _controls(b, a) if t in b.labels]
         if any(says(text, x) for x in ups) and any(says(text, x) for x in downs):
             return up, down
+        if not down and any(adjusts(text, x) for x in ups):  # "Press MEM until … is right"
+            return up, down
     dials = [p for p in pairs if all(_turned(b, a) for a in p[0] + p[1])]
     if len(dials) == 1 and _TURN_RE.search(text):  # "Turn the knob to choose …"
         return dials[0]
@@ -355,11 +373,13 @@ def _apply(
         if field.get("known"):  # "The temperature flashes": the one read from the chart
             var = use_known(b, field["name"], set(up + down))
         elif "spec" in field:
-            var = b.unique(prefix + field["name"], b.variables)
+            var = b.unique(_prefix(prefix, field) + field["name"], b.variables)
             b.variables[var] = {"label": field["label"], **field["spec"]}
             b.note(f"variables.{var}", "a time of day the held key's steps set", walk["at"])
         elif "values" in field:
-            var = b.add_discrete(prefix + field["name"], field["values"], field["label"], None)
+            var = b.add_discrete(
+                _prefix(prefix, field) + field["name"], field["values"], field["label"], None
+            )
             glossed = code_words(own_lines(b), field["values"])
             if glossed:  # "r1 near – r2 middle – r3 far": the words, the codes shown
                 b.variables[var]["values"] = [glossed[c] for c in field["values"]]
@@ -371,11 +391,19 @@ def _apply(
             b.note(f"variables.{var}", "the values the held key's walk steps through", walk["at"])
         else:
             var = b.add_number(
-                prefix + field["name"], field["label"], field["evidence"], cyclic=False
+                _prefix(prefix, field) + field["name"],
+                field["label"],
+                field["evidence"],
+                cyclic=False,
             )
         if k:
             steps.append({"actions": [press]})
-        steps.append({"actions": up + down, "variable": var, "effect": dict(effect)})
+        if field.get("split"):  # the hours, then the minutes, of one time of day
+            steps += clock_steps(var, up, down, press)
+        else:
+            steps.append({"actions": up + down, "variable": var, "effect": dict(effect)})
+        if not down:  # "MEM held 2 s adds ten months"
+            held_steps(b, up, steps[-3:] if field.get("split") else steps[-1:], field)
         if field.get("optional") and k < len(walk["fields"]) - 1:
             steps[-1]["optional"] = True  # "to keep it, go straight to step 3"
         names.append(var)
@@ -385,10 +413,18 @@ def _apply(
     drop_key_guesses(b, {a for a in (press, *up, *down) if a}, walk["said"])
     feature = f"set_{names[0]}"
     b.feature(feature, steps)
+    if not down:  # one key adjusting every field
+        drop_adjuster_settings(b, up)
     absorb_pair_setting(b, steps, walk["at"])
     drop_opener_setting(b, steps)
     said = f"{hold} opens {names[0]}" + (f", {press} moves to {names[1]}" if names[1:] else "")
     b.note(f"features.{feature}", said, walk["at"])
+
+
+def _prefix(prefix: str, field: dict[str, Any]) -> str:
+    """A field named by what flashes, or a clock joined from hours and minutes, has a name of
+    its own: the hold's guessed name leads it not."""
+    return "" if field.get("own_name") or field.get("split") else prefix
 
 
 def _day_clock(spec: dict[str, Any]) -> bool:

@@ -15,8 +15,9 @@ from typing import Any
 
 from apbot.read.build import Builder
 from apbot.read.cases import apply_cases
-from apbot.read.held_walks import _apply, _groups, _moves_on, _pair_of, _pairs, _walk
+from apbot.read.held_walks import _apply, _moves_on, _pair_of, _pairs, _walk
 from apbot.read.walk_order import order_names
+from apbot.read.walk_steps import walk_steps
 
 
 def read_pressed_walks(b: Builder) -> None:
@@ -35,7 +36,7 @@ def read_pressed_walks(b: Builder) -> None:
         for i, unit in enumerate(units):
             if unit.step is None or not _moves_on(unit.text, label):
                 continue
-            groups = _groups(units, i)
+            groups = walk_steps(units, i)
             if len(groups) < 4 or _pair_of(b, pairs, groups[1][1]) is None:
                 continue
             walk = _walk(b, groups, label, pairs, i)
