@@ -43,6 +43,7 @@ from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_every import every_periods
 from apbot.read.goal_fractions import fractions
 from apbot.read.goal_gates import closing_switches, entry_switches, gated_switches
+from apbot.read.goal_hourly import hourly_periods
 from apbot.read.goal_hundreds import said_hundreds
 from apbot.read.goal_kinds import kind_numbers
 from apbot.read.goal_listed import listed_outside
@@ -101,6 +102,7 @@ _REWRITES = (
     spelled_codes,
     said_ages,
     joined_compounds,
+    hourly_periods,
     every_periods,
     ordinal_numbers,
 )

@@ -1,0 +1,108 @@
+"""Rules of how people phrase requests (goal14), checked on models written for these tests (loaded
+unchecked: only the parts a rule reads are written): a record lathe, a smart water bottle, a
+tower fan — none of them in a suite. Each test would fail without its rule."""
+
+from __future__ import annotations
+
+from apbot.model.load import loads_model
+from apbot.read.goal import parse_instruction
+
+LATHE = """
+appliance: {id: lathe_1, category: lathe, name: "Spinwell L1 pottery wheel", brand: S}
+controls:
+  - {id: up, kind: button, label: "+"}
+  - {id: go, kind: button, label: "RUN"}
+variables:
+  speed: {type: numeric, ranges: [[20, 250, 1]], initial: 60, show: "{value}"}
+  running: {type: discrete, values: ["off", "on"]}
+actions:
+  press_up: {control: up}
+  press_go: {control: go}
+features:
+  speed:
+    - {actions: [press_up], variable: speed, effect: next}
+anywhere:
+  - {actions: [press_go], variable: running, effect: toggle}
+"""
+
+BOTTLE = """
+appliance: {id: bottle_1, category: water_bottle, name: "Sipwise B2 smart bottle", brand: S}
+controls:
+  - {id: remind_key, kind: button, label: "REMIND"}
+  - {id: glow_key, kind: button, label: "GLOW"}
+variables:
+  reminder:
+    type: discrete
+    values: ["off", "30", "60", "90", "120"]
+    show: {"off": "R --", "30": "R 30", "60": "R 60", "90": "R 90", "120": "R120"}
+  glow: {type: discrete, values: ["off", "on"]}
+actions:
+  press_remind: {control: remind_key}
+  press_glow: {control: glow_key}
+features:
+  reminder:
+    - {actions: [press_remind], variable: reminder, effect: next}
+  glow:
+    - {actions: [press_glow], variable: glow, effect: toggle}
+"""
+
+FAN = """
+appliance: {id: fan_1, category: tower_fan, name: "Breezeline T5 tower fan", brand: B}
+controls:
+  - {id: speed_key, kind: button, label: "SPEED"}
+  - {id: sleep_key, kind: button, label: "SLEEP"}
+variables:
+  speed: {type: numeric, ranges: [[1, 5, 1]], initial: 3, show: "S{value}"}
+  sleep:
+    type: discrete
+    values: ["off", "30", "60", "240"]
+    show: {"off": "", "30": "z30", "60": "z60", "240": "z240"}
+actions:
+  press_speed: {control: speed_key}
+  press_sleep: {control: sleep_key}
+features:
+  speed:
+    - {actions: [press_speed], variable: speed, effect: next}
+  sleep:
+    - {actions: [press_sleep], variable: sleep, effect: next}
+"""
+
+
+def _goal(model_text: str, said: str) -> dict[str, object]:
+    return dict(parse_instruction(loads_model(model_text, check=False), said))
+
+
+def test_a_hundred_counts_one_hundred() -> None:
+    """ "a hundred and twenty": the article is the count of hundreds, not a lone "one"."""
+    assert _goal(LATHE, "Spin the wheel at a hundred and twenty.")["speed"] == 120
+    assert _goal(LATHE, "Throw at a hundred, don't start it yet.")["speed"] == 100
+
+
+def test_a_lone_article_is_still_no_number() -> None:
+    assert "speed" not in _goal(LATHE, "Give it a spin.")
+
+
+def test_hourly_is_every_hour() -> None:
+    """ "an hourly reminder" on a list of minutes OFF / 30 / 60 …: the 60."""
+    assert _goal(BOTTLE, "An hourly reminder, please.")["reminder"] == "60"
+
+
+def test_every_hour_and_a_half() -> None:
+    assert _goal(BOTTLE, "Remind me every hour and a half.")["reminder"] == "90"
+
+
+def test_hours_to_the_listed_minutes() -> None:
+    """ "a two-hour reminder": the list counts minutes, so two hours is its 120."""
+    assert _goal(BOTTLE, "A two-hour reminder and the glow on.") == {
+        "reminder": "120",
+        "glow": "on",
+    }
+
+
+def test_a_possessive_length() -> None:
+    """ "an hour's sleep timer": the possessive is the length of the sleep timer."""
+    assert _goal(FAN, "Speed two with an hour's sleep timer.") == {"speed": 2, "sleep": "60"}
+
+
+def test_switching_off_after_a_while_is_the_sleep_list() -> None:
+    assert _goal(FAN, "Turn itself off after half an hour.")["sleep"] == "30"
