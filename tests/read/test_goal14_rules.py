@@ -106,3 +106,64 @@ def test_a_possessive_length() -> None:
 
 def test_switching_off_after_a_while_is_the_sleep_list() -> None:
     assert _goal(FAN, "Turn itself off after half an hour.")["sleep"] == "30"
+
+
+DOORBELL = """
+appliance: {id: bell_1, category: doorbell, name: "Ringwise D3 video doorbell", brand: R}
+controls:
+  - {id: vol_key, kind: button, label: "VOL"}
+  - {id: pir_key, kind: button, label: "PIR"}
+variables:
+  volume: {type: numeric, ranges: [[1, 6, 1]], initial: 3, show: "V{value}"}
+  motion: {type: discrete, values: ["off", low, high], label: "MOTION SENSITIVITY"}
+actions:
+  press_vol: {control: vol_key}
+  press_pir: {control: pir_key}
+features:
+  volume:
+    - {actions: [press_vol], variable: volume, effect: next}
+  motion:
+    - {actions: [press_pir], variable: motion, effect: next}
+"""
+
+WINE_COOLER = """
+appliance: {id: wine_1, category: wine_cooler, name: "Cellarto W8 wine cooler", brand: C}
+controls:
+  - {id: set_key, kind: button, label: "SET"}
+  - {id: fan_key, kind: button, label: "FAN"}
+variables:
+  low_alarm: {type: numeric, unit: "°C", ranges: [[2, 10, 1]], initial: 5, label: "LOW ALARM"}
+  high_alarm: {type: numeric, unit: "°C", ranges: [[8, 20, 1]], initial: 18, label: "HIGH ALARM"}
+  fan: {type: discrete, values: [low, high]}
+actions:
+  press_set: {control: set_key}
+  press_fan: {control: fan_key}
+features:
+  low_alarm:
+    - {actions: [press_set], variable: low_alarm, effect: next}
+  fan:
+    - {actions: [press_fan], variable: fan, effect: next}
+"""
+
+
+def test_a_degree_word_before_another_setting_grades_it() -> None:
+    """ "full volume": the volume's top, not the HIGH of a motion sensitivity ("full" ~ high)."""
+    assert _goal(DOORBELL, "Ring at full volume.") == {"volume": 6}
+    assert _goal(DOORBELL, "The quietest volume, please.") == {"volume": 1}
+
+
+def test_a_degree_word_of_its_own_setting_still_names_the_value() -> None:
+    assert _goal(DOORBELL, "Motion sensitivity high and volume two.") == {
+        "motion": "high",
+        "volume": 2,
+    }
+
+
+def test_as_low_as_it_goes_said_of_the_setting_before_it() -> None:
+    """ "the alarm as low as it goes": the alarm's lowest, not the fan's LOW."""
+    assert _goal(WINE_COOLER, "Set the alarm as low as it goes.") == {"low_alarm": 2}
+
+
+def test_an_alert_is_an_alarm() -> None:
+    """ "a high alert": the high alarm, not the fan's HIGH."""
+    assert _goal(WINE_COOLER, "A high alert at 16 degrees.") == {"high_alarm": 16}
