@@ -13,11 +13,11 @@ from apbot.read.goal_fit import CODE
 from apbot.read.goal_name_context import (
     _by_itself,
     _compound_tail,
+    _grades_named,
+    _grades_other,
     _head_nouns,
     _heads,
     _names_other,
-    _grades_other,
-    _grades_named,
     _names_setting,
     _names_switch,
     _qualifies_other,
