@@ -167,3 +167,78 @@ def test_as_low_as_it_goes_said_of_the_setting_before_it() -> None:
 def test_an_alert_is_an_alarm() -> None:
     """ "a high alert": the high alarm, not the fan's HIGH."""
     assert _goal(WINE_COOLER, "A high alert at 16 degrees.") == {"high_alarm": 16}
+
+
+DESK_LAMP = """
+appliance: {id: lamp_1, category: desk_lamp, name: "Lumora K4 desk lamp", brand: L}
+controls:
+  - {id: k_key, kind: button, label: "CCT"}
+  - {id: dim_key, kind: button, label: "DIM"}
+variables:
+  white: {type: discrete, values: ["3000", "4000", "5500", "6000"], label: "COLOUR TEMP"}
+  level: {type: numeric, unit: "%", ranges: [[20, 100, 20]], initial: 100, label: "DIM LEVEL"}
+actions:
+  press_k: {control: k_key}
+  press_dim: {control: dim_key}
+features:
+  white:
+    - {actions: [press_k], variable: white, effect: next}
+  level:
+    - {actions: [press_dim], variable: level, effect: next}
+"""
+
+HUMIDIFIER = """
+appliance: {id: hum_1, category: humidifier, name: "Mistral H2 humidifier", brand: M}
+controls:
+  - {id: mist_key, kind: button, label: "MIST"}
+  - {id: sens_key, kind: button, label: "SENS"}
+variables:
+  mist: {type: numeric, ranges: [[1, 4, 1]], initial: 2, show: "M{value}"}
+  sensitivity: {type: discrete, values: ["1", "2", "3", "4"], show: "S{value}"}
+actions:
+  press_mist: {control: mist_key}
+  press_sens: {control: sens_key}
+features:
+  mist:
+    - {actions: [press_mist], variable: mist, effect: next}
+  sensitivity:
+    - {actions: [press_sens], variable: sensitivity, effect: next}
+"""
+
+HUMIDIFIER_MANUAL = """
+Auto-humidity (SENS)
+Press SENS to step through the four levels.
+"""
+
+
+def test_colour_temperature_words_name_kelvin() -> None:
+    """Warm white is the lowest kelvin, daylight the highest, neutral about 4000 K."""
+    assert _goal(DESK_LAMP, "The warmest white at 60 percent.") == {"white": "3000", "level": 60}
+    assert _goal(DESK_LAMP, "Cool daylight, please.") == {"white": "6000"}
+    assert _goal(DESK_LAMP, "Neutral white.") == {"white": "4000"}
+
+
+def test_the_dimmest_is_the_lowest_of_the_setting_with_dim_in_its_words() -> None:
+    assert _goal(DESK_LAMP, "Make it the dimmest, in neutral white.") == {
+        "white": "4000",
+        "level": 20,
+    }
+    assert _goal(DESK_LAMP, "The coolest white on the dimmest setting.") == {
+        "white": "6000",
+        "level": 20,
+    }
+
+
+def test_most_with_the_adjective_of_a_settings_noun() -> None:
+    """ "the most sensitive": the top of SENSITIVITY (adjective and noun share a stem)."""
+    assert _goal(HUMIDIFIER, "Mist two and the most sensitive setting.") == {
+        "mist": 2,
+        "sensitivity": "4",
+    }
+
+
+def test_a_heading_name_before_the_key_in_brackets() -> None:
+    """A manual's heading "Auto-humidity (SENS)" gives the SENS setting the words auto, humidity."""
+    model = loads_model(HUMIDIFIER, check=False)
+    goal = parse_instruction(model, "Auto-humidity at level three.", HUMIDIFIER_MANUAL)
+    assert goal == {"sensitivity": "3"}
