@@ -242,3 +242,53 @@ def test_a_heading_name_before_the_key_in_brackets() -> None:
     model = loads_model(HUMIDIFIER, check=False)
     goal = parse_instruction(model, "Auto-humidity at level three.", HUMIDIFIER_MANUAL)
     assert goal == {"sensitivity": "3"}
+
+
+SPEAKER = """
+appliance: {id: spk_1, category: bedside_speaker, name: "Somna S1 sleep speaker", brand: S}
+controls:
+  - {id: vol_key, kind: button, label: "VOL"}
+  - {id: track_key, kind: button, label: "TRACK"}
+  - {id: chime_key, kind: button, label: "CHIME"}
+variables:
+  volume:
+    type: discrete
+    values: ["off", "1", "2", "3", "4", "5", "6"]
+    show: {"off": "", "1": "V1", "2": "V2", "3": "V3", "4": "V4", "5": "V5", "6": "V6"}
+  track: {type: discrete, values: ["off", T1, T2, T3, T4]}
+  glow: {type: numeric, unit: "%", ranges: [[10, 100, 10]], initial: 100, label: BRIGHTNESS}
+  chime: {type: discrete, values: ["off", "on"], initial: "on", label: "HOUR CHIME"}
+actions:
+  press_vol: {control: vol_key}
+  press_track: {control: track_key}
+  press_chime: {control: chime_key}
+features:
+  volume:
+    - {actions: [press_vol], variable: volume, effect: next}
+  track:
+    - {actions: [press_track], variable: track, effect: next}
+  chime:
+    - {actions: [press_chime], variable: chime, effect: toggle}
+"""
+
+
+def test_an_ordinal_names_a_numbered_value_beside_an_off() -> None:
+    """ "the third track" of OFF, T1 … T4: T3 (the OFF is no numbered value)."""
+    assert _goal(SPEAKER, "Play the third track.") == {"track": "T3"}
+
+
+def test_a_sound_with_its_own_switch_is_no_mute() -> None:
+    """ "the hour chime off": the CHIME switch, not the volume to OFF."""
+    assert _goal(SPEAKER, "Turn the hour chime beep off.") == {"chime": "off"}
+
+
+def test_half_and_halfway_are_the_middle() -> None:
+    assert _goal(SPEAKER, "Volume halfway.") == {"volume": "3"}
+    assert _goal(SPEAKER, "Half brightness.") == {"glow": 50}
+
+
+def test_turned_right_down_is_the_lowest_working_level() -> None:
+    assert _goal(SPEAKER, "Track two with the volume turned right down.") == {
+        "track": "T2",
+        "volume": "1",
+    }

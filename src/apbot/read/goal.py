@@ -43,6 +43,7 @@ from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_every import every_periods
 from apbot.read.goal_fractions import fractions
 from apbot.read.goal_gates import closing_switches, entry_switches, gated_switches
+from apbot.read.goal_halfway import halfway_levels
 from apbot.read.goal_hourly import hourly_periods
 from apbot.read.goal_hundreds import said_hundreds
 from apbot.read.goal_kelvin import kelvin_words
@@ -170,6 +171,7 @@ def parse_instruction(
         kept_outside(view, text, mentions, goal, claimed, where, outside)
         listed_outside(view, text, goal, claimed, where, outside, manual or "")
     kelvin_words(view, text, goal, claimed, where)
+    halfway_levels(view, text, goal, claimed, where)
     superlatives(view, text, goal, claimed, where)
     named_units(view, text, goal, claimed, where)
     said_units(view, goal)
