@@ -292,3 +292,9 @@ def test_turned_right_down_is_the_lowest_working_level() -> None:
         "track": "T2",
         "volume": "1",
     }
+
+
+def test_an_end_with_nothing_named_moves_what_the_display_shows() -> None:
+    """ "all the way up" with no setting named: the one the idle display shows (the speed)."""
+    lathe = LATHE + 'display: {idle: "{speed}"}\n'
+    assert _goal(lathe, "Take it all the way up.") == {"speed": 250}

@@ -2,10 +2,13 @@
 halfway" is its middle; "the volume turned right down", "all the way up" an end. A scale of OFF
 then levels is counted from its first working level (turned right down is quiet, not off), and
 of an even count the lower middle is taken (a level of 1 … 8 halfway is 4, a brightness 10 …
-100 % at half is 50 %). Only a setting named right beside the words is moved.
+100 % at half is 50 %). Only a setting named right beside the words is moved — or, for an end
+with nothing named, the one the idle display shows.
 """
 
 from __future__ import annotations
+
+import re
 
 from apbot.read.goal_ladders import is_off_level, ordered, ordered_values
 from apbot.read.goal_text import Text, near_vocab
@@ -48,6 +51,8 @@ def halfway_levels(
                 and near_vocab(i, text, k, k + 1, reach=3) >= 0.3
             ]
             info = near[0] if len(near) == 1 else None
+            if not near and token.text != "halfway":
+                info = _shown_idle(view, goal)  # "lower it all the way down": the desk's height
         if info is None:
             continue
         values = ordered_values(domain_values(view, info, goal))
@@ -59,6 +64,17 @@ def halfway_levels(
         goal[info.name] = values[(len(values) - 1) // 2 if end is None else end]
         where[info.name] = k
         claimed.add(k)
+
+
+def _shown_idle(view: Model, goal: Goal) -> VarInfo | None:
+    """The one open ordered setting the idle display shows: what the appliance is about, which
+    "all the way up" with nothing named moves (a desk's height, a metronome's tempo)."""
+    idle = str(getattr(view.model.display, "idle", "") or "")
+    names = [name for name in re.findall(r"\{(\w+)\}", idle) if name in view.infos]
+    if len(names) != 1 or names[0] in goal:
+        return None
+    info = view.infos[names[0]]
+    return info if info.role == "setting" and ordered(info) else None
 
 
 def _to_an_end(text: Text, k: int) -> int | None:
