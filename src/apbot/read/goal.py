@@ -43,7 +43,10 @@ from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_every import every_periods
 from apbot.read.goal_fractions import fractions
 from apbot.read.goal_gates import closing_switches, entry_switches, gated_switches
+from apbot.read.goal_halfway import halfway_levels
+from apbot.read.goal_hourly import hourly_periods
 from apbot.read.goal_hundreds import said_hundreds
+from apbot.read.goal_kelvin import kelvin_words
 from apbot.read.goal_kinds import kind_numbers
 from apbot.read.goal_listed import listed_outside
 from apbot.read.goal_mute import muted_volume
@@ -101,6 +104,7 @@ _REWRITES = (
     spelled_codes,
     said_ages,
     joined_compounds,
+    hourly_periods,
     every_periods,
     ordinal_numbers,
 )
@@ -166,6 +170,8 @@ def parse_instruction(
     if outside is not None:  # a read belief: a number its setting's name stands beside
         kept_outside(view, text, mentions, goal, claimed, where, outside)
         listed_outside(view, text, goal, claimed, where, outside, manual or "")
+    kelvin_words(view, text, goal, claimed, where)
+    halfway_levels(view, text, goal, claimed, where)
     superlatives(view, text, goal, claimed, where)
     named_units(view, text, goal, claimed, where)
     said_units(view, goal)

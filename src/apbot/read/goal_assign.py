@@ -69,7 +69,9 @@ def assign_mentions(
         if mi in used or name in goal:
             continue
         mention = mentions[mi]
-        article = text.word(mention.start) in ("a", "an", "couple", "single")
+        article = text.word(mention.start) in ("a", "an", "couple", "single") and (
+            text.word(mention.start + 1) not in ("hundred", "thousand")  # "a hundred" counts
+        )
         lone = not article and _only_home(view, mention, goal)
         if score <= 0 and mention.kind == "number" and not lone:
             continue

@@ -47,7 +47,8 @@ def setting_words(manual: str, labels: dict[str, list[str]]) -> dict[str, set[st
             legend = re.compile(
                 rf"^{said}(?:\s{{2,}}|\s*[:|–—]\s*){_VERBS}\s+(?:the\s+)?(.+)$", re.I
             )
-            title = re.compile(rf"^([A-Z][A-Z -]{{2,40}}?)\s*\({said}\)\s*$")
+            # a heading "HANDS-FREE (VOX)" or "Hands-free (VOX)": the name, then the key
+            title = re.compile(rf"^([A-Z][A-Za-z -]{{2,40}}?)\s*\({said}\)\s*$")
             for line in lines:
                 found = legend.match(line)
                 if found is not None and line.startswith(label):
@@ -62,7 +63,7 @@ def _phrase(text: str) -> list[str]:
     """The noun phrase a description opens with: "circulation speed: LO → MED" → circulation,
     speed (up to three words, to the first punctuation or preposition)."""
     words: list[str] = []
-    for word in re.split(r"\s+", text.strip()):
+    for word in re.split(r"\s+|(?<=[a-z])-(?=[a-z])", text.strip()):  # "hands-free": two
         bare = word.rstrip(".,:;").casefold()
         if not bare.isalpha() or bare in _ENDS or len(words) == 3:
             break

@@ -59,13 +59,15 @@ def _silence_at(text: Text, k: int) -> bool:
 def _of_another(view: Model, text: Text, k: int, volume: VarInfo) -> bool:
     """The silence word's object names another setting of the model ("silence the alarm",
     "mute the radio"): that thing is silenced, not the volume turned down to nothing."""
+    others = [i for i in view.infos.values() if i.name != volume.name]
+    if k > 0 and text.word(k) in _SOUNDS and any(text.stems[k - 1] in own_stems(i) for i in others):
+        return True  # "the roger beep off": a sound that has a setting of its own (ROGER)
     n = k + 1
     while n < len(text.tokens) and text.tokens[n].text in _DETERMINERS:
         n += 1
     if n >= len(text.tokens):
         return False
     said = text.stems[n]
-    others = (i for i in view.infos.values() if i.name != volume.name)
     return any(said in own_stems(i) for i in others)
 
 

@@ -122,6 +122,42 @@ def _names_setting(view: Model, var: str, text: Text, i: int) -> bool:
     return False
 
 
+def _grades_other(view: Model, var: str, text: Text, i: int) -> bool:
+    """A degree word right before another ordered setting's name grades that setting: "full
+    volume", "the quietest volume", "a low-temperature alarm" ask for an end or a level of the
+    volume or the alarm, not the HIGH / LOW of a sensitivity that merely shares the word."""
+    from apbot.read.goal_ladders import ordered  # (goal_ladders reads value names too)
+
+    if text.word(i) not in _SCALE_WORDS or near_vocab(view.infos[var], text, i, i + 1, reach=2):
+        return False
+    k = i + 2 if text.word(i + 1) == "-" else i + 1
+    if k >= len(text.tokens):
+        return False
+    return any(
+        name != var
+        and info.role == "setting"
+        and ordered(info)
+        and info.vocab.get(text.concepts[k], 0.0) >= 0.8
+        for name, info in view.infos.items()
+    )
+
+
+def _grades_named(view: Model, var: str, text: Text, i: int) -> bool:
+    """ "set the low-temperature alarm as low as it goes": the comparison is said of the other
+    ordered setting named just before it, when nothing of ``var`` stands there."""
+    from apbot.read.goal_ladders import ordered
+
+    if near_vocab(view.infos[var], text, i, i + 1, reach=3):
+        return False
+    return any(
+        name != var
+        and info.role == "setting"
+        and ordered(info)
+        and near_vocab(info, text, i - 1, i, reach=4) >= 0.2
+        for name, info in view.infos.items()
+    )
+
+
 def _names_other(view: Model, var: str, text: Text, i: int, end: int) -> bool:
     """The words i..end name another variable, and a number or more of that variable's words
     follow ("power level 8" sets the level, not the POWER mode)."""

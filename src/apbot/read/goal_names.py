@@ -13,6 +13,8 @@ from apbot.read.goal_fit import CODE
 from apbot.read.goal_name_context import (
     _by_itself,
     _compound_tail,
+    _grades_named,
+    _grades_other,
     _head_nouns,
     _heads,
     _names_other,
@@ -135,8 +137,12 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
                 continue  # "manual speed 3": the speed, in its manual kind
             if len(stems) == 1 and (text.stems[i] in running or text.word(i) in doing) and not own:
                 continue  # "Brew six cups", "get it brewing": the operation, not a BREW mode
+            if len(stems) == 1 and at_its_limit(text, i) and _grades_named(view, var, text, i):
+                continue  # "the alarm as low as it goes": that setting's end, not a LOW
             if weight * quality < 1.0 and len(stems) == 1 and at_its_limit(text, i):
                 continue  # "as strong as it goes": an end of a scale, not the HIGH it means
+            if len(stems) == 1 and _grades_other(view, var, text, i):
+                continue  # "full volume": the volume's end, not a HIGH of another setting
             if len(stems) == 1 and _names_setting(view, var, text, i):
                 continue  # "low fan", "fan on quiet": the FAN setting, not the FAN mode
             score = len(stems) * weight * quality + 0.5 * own

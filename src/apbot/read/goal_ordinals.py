@@ -58,7 +58,7 @@ def _numbered(info: VarInfo) -> bool:
     if isinstance(info.var, NumericVariable):
         return info.dimension is None
     if isinstance(info.var, DiscreteVariable):
-        values = [str(v) for v in info.values]
+        values = [str(v) for v in info.values if str(v).casefold() != "off"]  # OFF, L1 … L5
         return len(values) >= 2 and all(
             CODE.fullmatch(v) or v.isdigit() or _WORD_NUMBER.fullmatch(v) for v in values
         )

@@ -7,6 +7,7 @@ import re
 from typing import Any
 
 from apbot.model.schema import DiscreteVariable, TimeVariable
+from apbot.read.goal_degree_stems import superlative_stem_setting
 from apbot.read.goal_ladders import (
     is_off_level,
     ladder,
@@ -89,6 +90,9 @@ def superlatives(
         own = _own_superlative(view, goal, word)
         if own is not None and best is None:
             best = (0.0, own)
+        if best is None and end is not None:
+            stemmed = superlative_stem_setting(text, k, _open_ordered(view, goal))
+            best = (0.0, stemmed) if stemmed else None
         kind = _kind_of(text, k) if end is not None else None
         if kind and (best is None or not _named_specifically(view.infos[best[1]], text, k)):
             only = _only_of_kind(view, goal, kind)
@@ -118,6 +122,14 @@ def superlatives(
             goal[name] = levels(values)[scale_index[0]]
         where[name] = k
         claimed.add(k)
+
+
+def _open_ordered(view: Model, goal: Goal) -> dict[str, dict[str, float]]:
+    return {
+        name: info.vocab
+        for name, info in view.infos.items()
+        if name not in goal and info.role == "setting" and ordered(info)
+    }
 
 
 def _made_of_its_word(info: VarInfo, word: str) -> bool:

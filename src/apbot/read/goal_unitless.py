@@ -99,11 +99,54 @@ def unitless_duration(view: Model, text: Text, mention: Mention, goal: Goal) -> 
         for value in domain_values(view, info, goal)
         if abs(float(value) - said) < 1e-6
     ]
+    if not fits:
+        fits = _listed_minutes(view, text, mention, goal, open_settings, said)
     if len(fits) != 1:
         return None
     info, value = fits[0]
     goal[info.name] = value
     return info.name
+
+
+def _listed_minutes(
+    view: Model,
+    text: Text,
+    mention: Mention,
+    goal: Goal,
+    open_settings: list[VarInfo],
+    said: float,
+) -> list[tuple[VarInfo, Any]]:
+    """A list of bare numbers with an OFF (a sleep timer OFF / 15 / 30 / 60, a stand-up
+    reminder OFF / 30 / 45 …) is a choice of lengths of time, counted in minutes when the panel
+    does not say: it takes a duration ("after half an hour" is its 30, "a two-hour reminder" its
+    120) when its name calls it a time or stands beside the words (as said first, then in
+    minutes)."""
+    minutes = mention.value / 60.0
+    fits: list[tuple[VarInfo, Any]] = []
+    for info in open_settings:
+        if not _offered_lengths(info):
+            continue
+        if not (_named_a_time(info) or near_vocab(info, text, mention.start, mention.end) > 0):
+            continue
+        values = domain_values(view, info, goal)
+        for amount in (said, minutes):
+            hit = [
+                v for v in values if (n := bare_number(v)) is not None and abs(n - amount) < 1e-6
+            ]
+            if hit:
+                fits.append((info, hit[0]))
+                break
+    return fits
+
+
+def _offered_lengths(info: VarInfo) -> bool:
+    """Two or more bare numbers and, besides them, only an OFF: how long, of no unit read."""
+    var = info.var
+    if info.dimension is not None or not isinstance(var, DiscreteVariable):
+        return False
+    numbers = [v for v in info.values if bare_number(v) is not None]
+    rest = [v for v in info.values if bare_number(v) is None]
+    return len(numbers) >= 2 and all(str(v).casefold() == "off" for v in rest) and len(rest) == 1
 
 
 def _named_a_time(info: VarInfo) -> bool:

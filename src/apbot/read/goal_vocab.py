@@ -154,6 +154,7 @@ _GROUPS: tuple[tuple[str, ...], ...] = (
         "silence",
         "quiet",
         "alarm",
+        "alert",
     ),
     ("dry", "drying", "dryer"),
     ("sterilize", "steam", "sterilise", "sanitize", "uv"),

@@ -110,6 +110,11 @@ def read_number(tokens: list[Token], i: int) -> Number | None:
         j += 1
         seen = True
     else:
+        if word(j) == "a" and word(j + 1) in ("hundred", "thousand"):
+            # "a hundred and forty-four": the article counts one hundred, as people say it
+            current = 1.0
+            last = "unit"
+            j += 1
         while j < n:
             w = word(j)
             if w in _UNITS_WORDS and (
