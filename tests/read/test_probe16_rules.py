@@ -6,7 +6,7 @@ from __future__ import annotations
 from typing import Any
 
 from apbot.read import read_manual
-from apbot.read.table_transposed import sideways_choices
+from apbot.read.table_transposed import key_row_marks, sideways_choices
 from apbot.read.text import parse_manual
 from apbot.read.value_lists import find_list
 
@@ -141,3 +141,35 @@ def test_capital_choices_over_rows_of_names_only_are_a_table_of_columns() -> Non
     units = parse_manual(keys_over_lamps, []).units
     head = next(i for i, u in enumerate(units) if u.cells and not u.header)
     assert sideways_choices(units, head) is None
+
+
+# a fryer whose browning marks are printed across the key's own row under a row of counts
+FRYER = """# Croustil F-8 Air Fryer
+
+## Controls
+
+| Control | Function |
+|---|---|
+| **ON/OFF** | Switches the fryer on and off. |
+| **CRISP** | Sets how crisp the food turns out. |
+
+## Crispness
+
+|   | 1 | 2 | 3 | 4 |
+|---|---|---|---|---|
+| **CRISP** | SOFT | EVEN | CRUNCHY | EXTRA |
+"""
+
+
+def test_a_keys_row_of_capital_marks_under_counts_gives_its_values() -> None:
+    assert _values(FRYER, ["press_on_off", "press_crisp"], "crisp") == [
+        "soft",
+        "even",
+        "crunchy",
+        "extra",
+    ]
+
+
+def test_a_record_row_under_named_columns_is_no_row_of_marks() -> None:
+    assert key_row_marks(("CRISP", "READY", "CRISP"), {"crisp"}, ("Key", "Shown", "Next")) is None
+    assert key_row_marks(("Crisp", "SOFT", "EVEN"), {"crisp"}, ("", "1", "2")) == ["SOFT", "EVEN"]

@@ -11,7 +11,7 @@ import re
 from apbot.read.labels import Label, words
 from apbot.read.shapes import CHOICE_WORDS, GROUP_NOUNS
 from apbot.read.shapes_columns import _DISPLAY_HEAD_RE, _next_table_column
-from apbot.read.table_transposed import sideways_choices
+from apbot.read.table_transposed import key_row_marks, sideways_choices
 from apbot.read.text import Manual
 from apbot.read.text_pages import OPEN_ENDS
 
@@ -105,6 +105,10 @@ class TableReader:
         units = self.manual.units
         choice = bool(tw & CHOICE_WORDS)
         for i, unit in enumerate(units):
+            marks = key_row_marks(unit.cells, tw, unit.header)
+            if marks:  # "| SHADE | PALE | LIGHT | DARK |": the key's row of its printed marks
+                self._table_at = i
+                return marks
             if unit.cells and not unit.header:  # a header row
                 chart = self._numbered_chart(i, tw, choice) if numbered else None
                 if chart:

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import re
 
+from apbot.read.labels import words
 from apbot.read.text import Unit
 
 # an amount and the unit after it: "22 °C" → "°c", "4 x" → "x", "0:15" → ":", "2" → ""
@@ -84,3 +85,29 @@ def _printed_choices(header: list[str], firsts: list[str]) -> bool:
         and all(_caps(c) and len(c.split()) <= 3 for c in header)
         and not any(_caps(c) for c in firsts if c.strip(" *"))
     )
+
+
+_COUNT_HEAD_RE = re.compile(r"\W*(?:\d{1,2}\s*(?:x|×|st|nd|rd|th)?)?\W*", re.I)
+
+
+def key_row_marks(
+    cells: tuple[str, ...], key_words: set[str], header: tuple[str, ...] = ()
+) -> list[str] | None:
+    """The cells after a row's first cell when that cell names the key (a word of four letters
+    or more shared to its sixth letter) and every other cell is a name printed in capitals
+    ("| Shade | PALE | LIGHT | DARK |" alone or under a row of counts, "| | 1 | 2 | 3 |"): the
+    key's marks in order,
+    a table written sideways the way "| TEMP. | SPIN |" over their columns is written upright."""
+    if len(cells) < 3:
+        return None
+    if header and not all(_COUNT_HEAD_RE.fullmatch(h) for h in header[1:]):
+        return None  # "| Keys | Status line |": a record per key, its cells are no marks
+    first = words(cells[0])
+    if not first or not any(h[:6] == w[:6] for h in first for w in key_words):
+        return None
+    marks = [c.strip(" *") for c in cells[1:] if c.strip(" *")]
+    if len(marks) < 2 or not all(_caps(m) and len(m.split()) <= 3 for m in marks):
+        return None
+    if any(re.search(r"[\d\[\](){}<>'.]|--", m) for m in [cells[0], *marks]):
+        return None  # counts, callout letters, a drawing's frame ("CHIME [B]"): no marks row
+    return marks
