@@ -33,19 +33,37 @@ not align, tagged by the two kinds (``onoff`` for a two-valued switch, ``levels`
 names occur in the manual's text at all (``values-in-manual:none`` means the manual words them
 differently from the stored model, which no reader can fix). Aggregate, so it may be run on the
 held out: it says *which kind* of rule the unseen manuals need without showing any of them.
+
+``--why`` also prints where the wrong variable came from (``--origin`` table): for a setting whose
+keys the reader gave a variable of the wrong kind or to another setting, the reader module whose
+note first made that variable (``from:…``, taken from the call site of the report's note) and the
+SHAPE of the note's manual line (``src:…``) and of the line naming the true values (``vals:…``):
+a table row (and its number of cells), a list item, a heading; digits with a time unit, a range
+"a–b", parentheses, "or" or a slash, commas, arrows, "and", spaced dashes, dots, semicolons,
+quotes (:func:`line_shape`); for the values' line also whether a key's word stands on it, near
+it or far (:func:`key_place`), how many of the values it names ("2of5") and how it prints them
+(:func:`written_case`). The note's kind is the reader's own phrasing (:func:`note_kind`), never
+the manual's words, so held-out value names are not printed. ``--beside DIR`` prints the same
+counts for a second suite (the newcats, development) in a column beside, so a shape frequent in
+one stands out. ``--top N`` rows per table.
 """
 
 from __future__ import annotations
 
 import argparse
 import re
+import sys
 from collections import Counter, defaultdict
+from collections.abc import Iterator
+from contextlib import contextmanager
 
 from apbot.bench.suite import HELD_OUT_CATEGORIES, load_suite
 from apbot.model.domain import all_values
 from apbot.model.schema import ApplianceModel, DiscreteVariable, TimeVariable
+from apbot.read.build_base import BuilderBase
 from apbot.read.evaluate import align_variables, value_set
-from apbot.read.reader import read_manual
+from apbot.read.reader import Reading, read_manual
+from apbot.read.report import Note
 
 
 def mechanisms(model: ApplianceModel, variable: str) -> set[str]:
@@ -158,23 +176,175 @@ def value_shape(manual: str, names: list[str]) -> str:
     return f"{shape}/{together}"
 
 
-def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--suite", default="bundled")
-    parser.add_argument("--held-out", action="store_true", help="the six held out, aggregate only")
-    parser.add_argument("--list", action="store_true", help="each missed setting (development)")
-    parser.add_argument("--why", action="store_true", help="what the reader made of missed keys")
-    args = parser.parse_args()
-    suite = load_suite(args.suite)
+NOTE_ORIGINS: dict[int, str] = {}
+
+
+@contextmanager
+def note_origins() -> Iterator[None]:
+    """Record, for each note the builder writes, the reader module that wrote it (measuring only:
+    the report says which manual line a variable came from, not which rule read it)."""
+    plain = BuilderBase.note
+
+    def tagged(self: BuilderBase, subject: str, what: str, unit: int | None = None) -> None:
+        plain(self, subject, what, unit)
+        frame = sys._getframe(1)
+        while frame.f_back and frame.f_code.co_filename.endswith("build_base.py"):
+            frame = frame.f_back
+        module = frame.f_globals.get("__name__", "?").rsplit(".", 1)[-1]
+        NOTE_ORIGINS[id(self.notes[-1])] = module
+
+    BuilderBase.note = tagged  # type: ignore[method-assign]
+    try:
+        yield
+    finally:
+        BuilderBase.note = plain  # type: ignore[method-assign]
+
+
+_TIME_DIGITS = re.compile(r"\d\s*(?:h|hrs?|hours?|min|mins|minutes?|s|sec|secs|seconds?)\b", re.I)
+_RANGE = re.compile(r"\d\s*(?:[-–—~]|to)\s*\d|\d\s*\.\.\s*\d", re.I)
+
+
+def line_shape(line: str) -> str:
+    """A line's shape as '+'-joined marks: where it sits (table / item / heading / prose) and what
+    it holds (time digits, a range, parentheses, an "or", commas, a colon)."""
+    text = line.strip()
+    if not text:
+        return "none"
+    if text.count("|") >= 2:
+        place = "table"
+    elif re.match(r"([-*•·▪●○◦]|\d+[.)]|\(?[a-z]\))\s", text):
+        place = "item"
+    elif text.startswith("#") or (text.isupper() and len(text) < 60):
+        place = "heading"
+    else:
+        place = "prose"
+    marks = [place]
+    marks += ["timedig"] if _TIME_DIGITS.search(text) else []
+    marks += ["range"] if _RANGE.search(text) else []
+    marks += ["paren"] if re.search(r"\([^)]*\)", text) else []
+    marks += ["or"] if re.search(r"\bor\b|/", text) else []
+    marks += ["commas"] if text.count(",") >= 2 else []
+    marks += ["arrows"] if re.search(r"[→►▶▸>»]|->", text) else []
+    marks += ["and"] if re.search(r"\band\b|&", text) else []
+    marks += ["dashes"] if re.search(r"\w\s+[-–—]\s+\w", text) else []
+    marks += ["dots"] if re.search(r"[·•]", text) else []
+    marks += [f"cells{text.strip('|').count('|') + 1}"] if place == "table" else []
+    marks += ["semicolons"] if ";" in text else []
+    marks += ["quotes"] if re.search(r"[\"“”‘’']\w", text) else []
+    return "+".join(marks)
+
+
+def origin(reading: Reading, variable: str) -> str:
+    """Which module first wrote ``variable`` and the shape of that note's manual line."""
+    subject = f"variables.{variable}"
+    notes = [n for n in reading.report.notes if n.subject == subject]
+    notes = notes or [n for n in reading.report.notes if n.subject.startswith(subject + ".")]
+    if not notes:
+        return "from:? src:none"
+    first: Note = next((n for n in notes if not n.guess), notes[0])
+    module = NOTE_ORIGINS.get(id(first), "direct")
+    said = note_kind(first.what)
+    return f"from:{module}:{said} src:{line_shape(first.quote) if not first.guess else 'guess'}"
+
+
+def note_kind(what: str) -> str:
+    """The kind of a note in the reader's own fixed phrasing (never the manual's words, which a
+    values note quotes): a range, an on/off, a list of values, a start, a guess of placeholders."""
+    low = what.lower()
+    for prefix, kind in (
+        ("range", "range"),
+        ("an on/off", "onoff"),
+        ("a cooking time", "typed-time"),
+        ("a clock", "clock"),
+        ("starts at", "start"),
+        ("the appliance runs", "running"),
+        ("the quantity", "pair-quantity"),
+    ):
+        if low.startswith(prefix):
+            return kind
+    return "values-or-other"
+
+
+def values_line(manual: str, names: list[str]) -> str:
+    """The line naming most of ``names`` (the one :func:`value_shape` judges)."""
+    best, line = 0, ""
+    for candidate in manual.splitlines():
+        low = candidate.lower()
+        hits = sum(1 for name in names if re.search(rf"(?<![a-z]){re.escape(name)}(?![a-z])", low))
+        if hits > best:
+            best, line = hits, candidate
+    return line
+
+
+def key_place(manual: str, line: str, keys: set[str]) -> str:
+    """Where the values' line stands from the keys that set them: a key word on the line itself
+    (``key-on``), within five lines (``key-near``), or further (``key-far``); and whether the
+    line holds all the values (``one``) or some (``some``) — counted by :func:`values_line`."""
+    words = {w for key in keys for w in key.lower().split("_") if len(w) >= 3}
+    words -= {"press", "hold", "turn", "button", "key", "knob", "long", "short", "dial"}
+    lines = manual.splitlines()
+    at = lines.index(line)
+    near = " ".join(lines[max(0, at - 5) : at + 6]).lower()
+    has = lambda text: any(re.search(rf"(?<![a-z]){re.escape(w)}", text) for w in words)  # noqa: E731
+    return "key-on" if has(line.lower()) else "key-near" if has(near) else "key-far"
+
+
+def written_case(line: str, names: list[str]) -> str:
+    """How the values are printed on their line: all in CAPITALS, Titled, lower case, mixed."""
+    cases = set()
+    for name in names:
+        m = re.search(rf"(?<![A-Za-z]){re.escape(name)}(?![A-Za-z])", line, re.I)
+        if m and any(c.isalpha() for c in m.group(0)):
+            word = m.group(0)
+            cases.add("caps" if word.isupper() else "title" if word[:1].isupper() else "lower")
+    return "+".join(sorted(cases)) or "digits"
+
+
+def origin_tags(
+    reading: Reading, truth: ApplianceModel, variable: str, aligned: dict[str, str], manual: str
+) -> list[str]:
+    """``--origin`` rows for a missed ``variable`` whose keys the reader used: per read variable
+    on those keys, its kind, the module and source-line shape that made it, and the values' line."""
+    read = reading.model
+    keys = {a for a, vs in setters(truth).items() if variable in vs}
+    candidates = sorted({v for a in keys for v in setters(read).get(a, set())})
+    var = truth.variables[variable]
+    vals = "vals:n/a"
+    if isinstance(var, DiscreteVariable):
+        names = [str(v).lower().replace("_", " ") for v in all_values(var)]
+        line = values_line(manual, names)
+        low = line.lower()
+        hits = sum(1 for n in names if re.search(rf"(?<![a-z]){re.escape(n)}(?![a-z])", low))
+        count = f"{hits}of{len(names)}"
+        count += f"/{written_case(line, names)}"
+        place = key_place(manual, line, keys) if line else ""
+        vals = f"vals:{line_shape(line)}/{place}/{count}" if line else "vals:unwritten"
+    tags = []
+    for candidate in candidates:
+        how = "other" if candidate in aligned else "own"
+        what = f"{how} read:{kind(read, candidate)} true:{kind(truth, variable)}"
+        tags.append(f"{what} {origin(reading, candidate)} {vals}")
+    return tags
+
+
+def tally(
+    suite_name: str, held_out: bool, why: bool
+) -> tuple[Counter[str], Counter[str], Counter[str], Counter[str], list[str]]:
+    """Totals and misses per mechanism, ``--why`` reasons and ``--origin`` rows, and (for the
+    development data only) the per-setting lines."""
+    suite = load_suite(suite_name)
     total: Counter[str] = Counter()
     missed: Counter[str] = Counter()
-    lines: list[str] = []
     reasons: Counter[str] = Counter()
+    origins: Counter[str] = Counter()
+    lines: list[str] = []
     for appliance in suite.appliances:
-        if (appliance.category in HELD_OUT_CATEGORIES) != args.held_out:
+        if (appliance.category in HELD_OUT_CATEGORIES) != held_out:
             continue
         truth = appliance.model
-        read = read_manual(appliance.manual, list(truth.actions)).model
+        with note_origins():
+            reading = read_manual(appliance.manual, list(truth.actions))
+        read = reading.model
         aligned = align_variables(read, truth)
         found = set(aligned.values())
         uses = Counter(v for task in appliance.tasks for v in task.goal or {})
@@ -185,23 +355,77 @@ def main() -> None:
             for tag in tags:
                 total[tag] += n
                 missed[tag] += 0 if variable in found else n
-            if variable not in found and args.why:
-                why = why_missed(read, truth, variable, aligned, appliance.manual)
-                for reason in why:
+            if variable not in found and why:
+                why_tags = why_missed(read, truth, variable, aligned, appliance.manual)
+                for reason in why_tags:
                     reasons[reason] += n
-                shapes = [w.split(":", 1)[1] for w in why if w.startswith("values-written-in")]
-                reasons[f"{why[0]} + {shapes[0] if shapes else 'values-not-named'}"] += n
-            if variable not in found:
+                shapes = [w.split(":", 1)[1] for w in why_tags if w.startswith("values-written-in")]
+                reasons[f"{why_tags[0]} + {shapes[0] if shapes else 'values-not-named'}"] += n
+                for row in origin_tags(reading, truth, variable, aligned, appliance.manual):
+                    origins[row] += n
+            if variable not in found and not held_out:
                 lines.append(
                     f"  {appliance.id} {variable} ×{n}: {', '.join(sorted(tags - {'ALL'}))}"
                 )
+        NOTE_ORIGINS.clear()
+    return total, missed, reasons, origins, lines
+
+
+def _table(title: str, main: Counter[str], beside: Counter[str] | None, top: int) -> None:
+    """Counts, largest first, with the second suite's count in a column beside."""
+    head = f"{title:96s} {'n':>5s}" + (f" {'beside':>7s}" if beside is not None else "")
+    print("\n" + head)
+    keys = sorted(
+        set(main) | set(beside or {}), key=lambda k: (-main[k], -(beside or {}).get(k, 0), k)
+    )
+    for key in keys[:top]:
+        extra = f" {(beside or Counter())[key]:7d}" if beside is not None else ""
+        print(f"{key:96s} {main[key]:5d}{extra}")
+
+
+def _split(origins: Counter[str], field: int) -> Counter[str]:
+    """One column of the ``--origin`` rows (0 kinds, 3 module, 4 source shape, 5 values shape)."""
+    out: Counter[str] = Counter()
+    for row, n in origins.items():
+        parts = row.split(" ")
+        out[" ".join(parts[:3]) if field == 0 else parts[field]] += n
+    return out
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--suite", default="bundled")
+    parser.add_argument("--held-out", action="store_true", help="the six held out, aggregate only")
+    parser.add_argument("--list", action="store_true", help="each missed setting (development)")
+    parser.add_argument("--why", action="store_true", help="what the reader made of missed keys")
+    parser.add_argument("--beside", help="a second (development) suite counted in a column beside")
+    parser.add_argument("--top", type=int, default=40, help="rows of each --why table")
+    args = parser.parse_args()
+    total, missed, reasons, origins, lines = tally(args.suite, args.held_out, args.why)
     print(f"{'mechanism':24s} {'missed':>7s} {'of':>6s}  share")
     for tag in sorted(total, key=lambda t: (-missed[t] / total[t], t)):
         print(f"{tag:24s} {missed[tag]:7d} {total[tag]:6d}  {missed[tag] / total[tag]:.2f}")
     if args.why:
-        print(f"\n{'why missed (task uses)':60s} {'n':>5s}")
-        for reason, n in sorted(reasons.items(), key=lambda kv: (-kv[1], kv[0])):
-            print(f"{reason:60s} {n:5d}")
+        other: tuple[Counter[str], Counter[str]] | None = None
+        if args.beside:
+            _, _, b_reasons, b_origins, _ = tally(args.beside, False, True)
+            other = (b_reasons, b_origins)
+        _table("why missed (task uses)", reasons, other[0] if other else None, args.top)
+        _table(
+            "origin: own/other read-kind true-kind",
+            _split(origins, 0),
+            _split(other[1], 0) if other else None,
+            args.top,
+        )
+        for field, title in (
+            (3, "origin: module"),
+            (4, "origin: source line shape"),
+            (5, "origin: values line shape"),
+        ):
+            _table(
+                title, _split(origins, field), _split(other[1], field) if other else None, args.top
+            )
+        _table("origin (whole rows)", origins, other[1] if other else None, args.top)
     if args.list and not args.held_out:
         print(
             "\n".join(["", "missed settings (appliance, setting, task uses, mechanisms):", *lines])

@@ -11,6 +11,7 @@ import re
 from apbot.read.labels import Label, words
 from apbot.read.shapes import CHOICE_WORDS, GROUP_NOUNS
 from apbot.read.shapes_columns import _DISPLAY_HEAD_RE, _drawn_column, _next_table_column
+from apbot.read.table_transposed import key_row_marks, sideways_choices
 from apbot.read.text import Manual
 from apbot.read.text_pages import OPEN_ENDS
 
@@ -105,6 +106,10 @@ class TableReader:
         units = self.manual.units
         choice = bool(tw & CHOICE_WORDS)
         for i, unit in enumerate(units):
+            marks = key_row_marks(unit.cells, tw, unit.header)
+            if marks:  # "| SHADE | PALE | LIGHT | DARK |": the key's row of its printed marks
+                self._table_at = i
+                return marks
             if unit.cells and not unit.header:  # a header row
                 chart = self._numbered_chart(i, tw, choice) if numbered else None
                 if chart:
@@ -112,6 +117,11 @@ class TableReader:
                 if any(re.search(r"\d", c) for c in unit.cells[1:]):
                     continue  # "Power supply | 230 V": a row of data read as a header
                 hw = words(unit.cells[0])
+                if choice and set(hw) & set(GROUP_NOUNS):
+                    sideways = sideways_choices(units, i)
+                    if sideways:  # "| Programme | Eco | Quick |" for MENU: the programmes
+                        self._table_at = i
+                        return sideways
                 if hw and any(h[:6] == w[:6] for h in hw for w in tw):
                     column = _next_table_column(units, i - 1)
                     if column and self._key_legend([unit.cells[0], *column]):

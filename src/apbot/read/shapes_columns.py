@@ -8,6 +8,7 @@ from __future__ import annotations
 import re
 
 from apbot.read.fault_tables import fault_table
+from apbot.read.table_transposed import sideways_choices
 from apbot.read.text import Unit
 from apbot.read.value_steps import find_step
 from apbot.read.values import Range, find_ranges
@@ -79,6 +80,10 @@ def _next_table_column(units: list[Unit], i: int, column: int = 0) -> list[str]:
     unit ``i`` (header skipped)."""
     k = i + 1
     shown = headless = False
+    if column == 0 and k < len(units) and units[k].cells and not units[k].header:
+        sideways = sideways_choices(units, k)
+        if sideways:  # "| Mode | Sprout | Greens |" over rows of one unit each: the choices
+            return sideways
     if k < len(units) and units[k].cells and not units[k].header:
         if column == 0 and len(units[k].cells) >= 2 and PRESSES_RE.match(units[k].cells[0]):
             column = 1  # the first column counts presses: the values are in the next one

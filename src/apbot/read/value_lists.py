@@ -120,6 +120,8 @@ def find_list(text: str) -> tuple[list[str], str] | None:
         segment = re.split(r"[.;]\s|\s[—–]\s|\bwhile\b|\bwhen\b|\bto (?!\d)", m.group(1))[0]
         # "between STANDARD and QUIET (lamp; display FAN quiet …)": the aside ends the list
         segment = re.split(r"\s\((?=[^)]*\b(?:display|lamp|shows?|see)\b)", segment)[0]
+        if _title_pair(_pair_before_aside(segment)):  # "Gentle or Strong (Gentle at first)"
+            segment = segment.split(" (", 1)[0]
         segment = re.sub(r"\s+only\W*$", "", segment, flags=re.I)  # "SOFT or FIRM only."
         items = [
             _clean_item(p)
@@ -132,7 +134,7 @@ def find_list(text: str) -> tuple[list[str], str] | None:
         if len(items) >= 2 and all(_value_like(i, caps >= 2) for i in items):
             lower_ok = len(items) >= 3 and all(len(i.split()) <= 2 for i in items)
             numeric = all(re.fullmatch(rf"{NUM}\s*{UNIT}?", i, re.I) for i in items)
-            if caps >= 2 or numeric or lower_ok:
+            if caps >= 2 or numeric or lower_ok or _title_pair(items):
                 return _dedupe(items), "list"
         if caps >= 3:  # names in capitals, then the prose that describes the first one
             head = []
@@ -144,6 +146,21 @@ def find_list(text: str) -> tuple[list[str], str] | None:
                 return _dedupe(head), "list"
     dotted = _dotted_run(text)  # the last resort: a dotted run inside a flattened sentence
     return (dotted, "list") if dotted else None
+
+
+def _title_pair(items: list[str]) -> bool:
+    """Two names each capitalised in mid-sentence after a cue ("choose Gentle or Strong"): a
+    manual capitalises a setting's value names as it prints them, plain prose it does not."""
+    return len(items) == 2 and all(
+        i.upper() != i and all(w[:1].isupper() for w in i.split()) and len(i.split()) <= 2
+        for i in items
+    )
+
+
+def _pair_before_aside(segment: str) -> list[str]:
+    """The two items "X or Y" / "X and Y" said right before an aside in brackets."""
+    head = segment.split(" (", 1)[0] if " (" in segment else ""
+    return [_clean_item(p) for p in re.split(r"\s+(?:or|and)\s+", head)] if head else []
 
 
 _CAPS_ITEM = r"[A-Z][A-Z0-9+-]*(?: [A-Z0-9+-]+){0,2}"

@@ -1,0 +1,113 @@
+"""A table written sideways: its header row names the choices and each row below is one quantity
+("| Mode | Sprout | Greens |" over "| Temperature | 22 °C | 20 °C |").
+
+Apart from evidence_tables.py because which axis of a table holds one quantity is a question of
+the table's cells alone. A quantity's amounts share their unit along its own axis: down a column
+in a programme table written the usual way, along a row in one written sideways. So when most
+data rows are each of one kind (one unit, or marks such as "yes" / "–") and most columns are
+not, the header's later cells are the
+choices and the first column's cells are what each choice sets.
+"""
+
+from __future__ import annotations
+
+import re
+
+from apbot.read.labels import words
+from apbot.read.text import Unit
+
+# an amount and the unit after it: "22 °C" → "°c", "4 x" → "x", "0:15" → ":", "2" → ""
+_AMOUNT_RE = re.compile(r"^\D{0,3}?(\d+(?:[.,:]\d+)?)\s*([^\d\s]{0,4})")
+
+
+_TIME_UNITS = {"s", "sec", "secs", "min", "mins", "h", "hr", "hrs"}
+
+
+def _kind_of(cell: str) -> str:
+    """What a cell holds: an amount's unit ("°c", "x", ":" for a clock time, "" for a bare
+    number), or ``word`` for a cell with no amount ("yes", "–", "fine")."""
+    match = _AMOUNT_RE.match(cell.strip(" *"))
+    if not match:
+        return "word"
+    unit = match.group(2).lower().rstrip(".")
+    if ":" in match.group(1) or unit in _TIME_UNITS:
+        return "time"  # "1:30", "45 s", "2 min": one quantity, a duration, whatever its unit
+    return unit
+
+
+def _one_kind(cells: list[str]) -> bool:
+    """Whether the cells, two at least with an amount among them or all marks, are of one kind."""
+    kinds = [_kind_of(c) for c in cells if c.strip(" *")]
+    return len(kinds) >= 2 and len(set(kinds)) == 1
+
+
+def sideways_choices(units: list[Unit], i: int) -> list[str] | None:
+    """The header's later cells when the table headed at unit ``i`` is written sideways (most
+    rows of one kind each, most columns mixed; or the header's later cells printed in capitals
+    over rows of amounts, or alone); ``None`` for a table written the usual way."""
+    header = list(units[i].cells)
+    rows = [list(u.cells) for u in units[i + 1 :] if u.header == units[i].cells and u.cells]
+    rows = [r for r in rows if len(r) == len(header)]  # (a row of merged cells says nothing)
+    if len(header) < 3:
+        return None
+    if any(re.search(r"\d", c) for c in header[1:]) or any(re.search(r"\d", r[0]) for r in rows):
+        return None  # numbered rows or amounts in the header: no sideways table
+    choices = [c.strip(" *") for c in header[1:] if c.strip(" *")]
+    amounts = [_kind_of(c) != "word" for r in rows for c in r[1:]]
+    lone = not rows and not _caps(header[0])  # "| Shade | PALE | … | DARK |" alone: its marks
+    if (lone or (rows and 2 * sum(amounts) >= len(amounts))) and _printed_choices(
+        choices, [r[0] for r in rows]
+    ):
+        # (amounts in its cells: a table of names only, "| TEMP. | SPIN |" over the lamps' names
+        # of each key, lists each key's values down its column)
+        return choices
+    if len(rows) < 2 or all(_kind_of(c) == "word" for r in rows for c in r[1:]):
+        return None  # a table of words only: no amounts to tell its axes apart
+    by_row = sum(_one_kind(r[1:]) for r in rows)
+    by_column = sum(_one_kind([r[k] for r in rows]) for k in range(1, len(header)))
+    if 2 * by_row <= len(rows) or 2 * by_column >= len(header) - 1:
+        return None
+    return choices
+
+
+def _caps(cell: str) -> bool:
+    """A cell printed in capitals (two letters at least)."""
+    return cell.upper() == cell and sum(c.isalpha() for c in cell) >= 2
+
+
+def _printed_choices(header: list[str], firsts: list[str]) -> bool:
+    """Whether the header's later cells are names printed in capitals as the panel shows them
+    ("| Mode | SOFT | CRISP | GRILL |") while the first column names quantities in plain case
+    ("Temperature", "Time"): a manual prints a setting's choices as they are shown, what they
+    set in prose."""
+    return (
+        len(header) >= 2
+        and all(_caps(c) and len(c.split()) <= 3 for c in header)
+        and not any(_caps(c) for c in firsts if c.strip(" *"))
+    )
+
+
+_COUNT_HEAD_RE = re.compile(r"\W*(?:\d{1,2}\s*(?:x|×|st|nd|rd|th)?)?\W*", re.I)
+
+
+def key_row_marks(
+    cells: tuple[str, ...], key_words: set[str], header: tuple[str, ...] = ()
+) -> list[str] | None:
+    """The cells after a row's first cell when that cell names the key (a word of four letters
+    or more shared to its sixth letter) and every other cell is a name printed in capitals
+    ("| Shade | PALE | LIGHT | DARK |" alone or under a row of counts, "| | 1 | 2 | 3 |"): the
+    key's marks in order,
+    a table written sideways the way "| TEMP. | SPIN |" over their columns is written upright."""
+    if len(cells) < 3:
+        return None
+    if header and not all(_COUNT_HEAD_RE.fullmatch(h) for h in header[1:]):
+        return None  # "| Keys | Status line |": a record per key, its cells are no marks
+    first = words(cells[0])
+    if not first or not any(h[:6] == w[:6] for h in first for w in key_words):
+        return None
+    marks = [c.strip(" *") for c in cells[1:] if c.strip(" *")]
+    if len(marks) < 2 or not all(_caps(m) and len(m.split()) <= 3 for m in marks):
+        return None
+    if any(re.search(r"[\d\[\](){}<>'.]|--", m) for m in [cells[0], *marks]):
+        return None  # counts, callout letters, a drawing's frame ("CHIME [B]"): no marks row
+    return marks

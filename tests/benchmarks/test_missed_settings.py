@@ -1,0 +1,66 @@
+"""The missed-settings diagnostic's origin columns: the shape of a manual line, where the values'
+line stands from the key, how the values are printed, and which reader module made a variable
+(checked on development data only: a newcats appliance and lines written here)."""
+
+from __future__ import annotations
+
+import re
+
+from apbot.bench.suite import load_suite
+from apbot.read.evaluate import align_variables
+from apbot.read.reader import read_manual
+from benchmarks.missed_settings import (
+    NOTE_ORIGINS,
+    key_place,
+    line_shape,
+    note_kind,
+    note_origins,
+    origin,
+    origin_tags,
+    written_case,
+)
+
+
+def test_line_shape_marks_place_and_contents() -> None:
+    assert (
+        line_shape("| **TIMER** | Sets 1–8 h (see below) |") == "table+timedig+range+paren+cells2"
+    )
+    assert line_shape("- Choose LOW, MEDIUM, HIGH or AUTO.") == "item+or+commas"
+    assert line_shape("Press MODE: Eco → Normal → Boost") == "prose+arrows"
+    assert line_shape("") == "none"
+
+
+def test_key_place_and_written_case() -> None:
+    manual = "Intro\nPress FAN to choose Low or High.\nMore\n"
+    line = "Press FAN to choose Low or High."
+    assert key_place(manual, line, {"press_fan"}) == "key-on"
+    assert key_place(manual, "More", {"press_fan"}) == "key-near"
+    assert key_place(manual, "Intro", {"press_heat"}) == "key-far"
+    assert written_case(line, ["low", "high"]) == "title"
+    assert written_case("LOW or high", ["low", "high"]) == "caps+lower"
+
+
+def test_note_kind_uses_the_readers_phrasing_never_the_manuals_words() -> None:
+    assert note_kind("range 1–8 h (the manual gives none)") == "range"
+    assert note_kind("an on/off setting") == "onoff"
+    assert note_kind("cotton, wool, silk") == "values-or-other"  # (a values note: not printed)
+
+
+def test_origin_rows_name_kinds_module_and_shapes_on_development_data() -> None:
+    suite = load_suite("benchmarks/data/newcats")
+    appliance = next(a for a in suite.appliances if a.id == "bp_monitor_1")
+    truth = appliance.model
+    with note_origins():
+        reading = read_manual(appliance.manual, list(truth.actions))
+    try:
+        aligned = align_variables(reading.model, truth)
+        modules = {origin(reading, v).split()[0] for v in reading.model.variables}
+        assert any(m.startswith("from:build:") for m in modules)  # (a module, and a note kind)
+        missed = [v for v in truth.variables if v not in set(aligned.values())]
+        rows = [
+            r for v in missed for r in origin_tags(reading, truth, v, aligned, appliance.manual)
+        ]
+        pattern = r"(own|other) read:\w+ true:\w+ from:\w+:[\w-]+ src:\S+ vals:\S+"
+        assert rows and all(re.fullmatch(pattern, row) for row in rows)
+    finally:
+        NOTE_ORIGINS.clear()
