@@ -298,3 +298,73 @@ def test_an_end_with_nothing_named_moves_what_the_display_shows() -> None:
     """ "all the way up" with no setting named: the one the idle display shows (the speed)."""
     lathe = LATHE + 'display: {idle: "{speed}"}\n'
     assert _goal(lathe, "Take it all the way up.") == {"speed": 250}
+
+
+# --- fixg16: the rules above narrowed where they misfired on ordinary sentences ---
+
+
+def test_all_the_way_up_after_a_named_setting() -> None:
+    """ "the volume all the way up": the setting named before "all the way" is in reach."""
+    assert _goal(SPEAKER, "Turn the volume all the way up.") == {"volume": "6"}
+    assert _goal(LATHE, "Speed all the way up.") == {"speed": 250}
+
+
+def test_an_end_not_wanted_is_no_end() -> None:
+    lathe = LATHE + 'display: {idle: "{speed}"}\n'
+    assert "speed" not in _goal(lathe, "Don't turn it all the way up.")
+
+
+def test_an_end_said_of_another_thing_leaves_the_display_alone() -> None:
+    """The idle display's setting is moved only for "it" or nothing named, not for a pedal or a
+    water tray pushed or filled to its end."""
+    lathe = LATHE + 'display: {idle: "{speed}"}\n'
+    assert "speed" not in _goal(lathe, "Press the pedal all the way down and run it.")
+    assert "speed" not in _goal(lathe, "Fill the water tray right up, then run it.")
+    assert _goal(lathe, "All the way down, please.") == {"speed": 20}
+
+
+CEILING_FAN = """
+appliance: {id: cf_1, category: ceiling_fan, name: "Aerolux C6 ceiling fan", brand: A}
+controls:
+  - {id: s_key, kind: button, label: "SPEED"}
+  - {id: w_key, kind: button, label: "CCT"}
+variables:
+  speed: {type: numeric, ranges: [[1, 6, 1]], initial: 3}
+  white: {type: discrete, values: ["3000", "4000", "5000"], label: "COLOUR TEMP"}
+actions:
+  press_s: {control: s_key}
+  press_w: {control: w_key}
+features:
+  speed:
+    - {actions: [press_s], variable: speed, effect: next}
+  white:
+    - {actions: [press_w], variable: white, effect: next}
+"""
+
+
+def test_warm_and_cool_of_the_room_are_no_colour() -> None:
+    """ "to cool the room", "it's warm in here": the weather, not the light's white."""
+    assert _goal(CEILING_FAN, "Speed 5 to cool the room down.") == {"speed": 5}
+    assert _goal(CEILING_FAN, "It's warm in here, speed 6.") == {"speed": 6}
+
+
+def test_warm_beside_a_light_word_is_still_a_colour() -> None:
+    assert _goal(CEILING_FAN, "Speed 2 and a warm light.") == {"speed": 2, "white": "3000"}
+
+
+def test_a_sentence_ending_on_a_key_is_no_heading() -> None:
+    """ "Then press (SENS)": a step of a procedure, not a heading naming SENS's setting."""
+    from apbot.read.goal_legends import setting_words
+
+    manual = "Mist level\nSet the mist level and then press (SENS)\nAuto humidity (SENS)\n"
+    assert setting_words(manual, {"sensitivity": ["SENS"]}) == {"sensitivity": {"auto", "humidity"}}
+
+
+def test_a_superlative_of_a_word_ending_in_a_double_letter() -> None:
+    """ "smallest" is small + est (its own double l), "dimmest" dim + m + est: both tried."""
+    from apbot.read.goal_degree_stems import superlative_stem_setting
+    from apbot.read.goal_text import Text
+
+    candidates = {"load": {"small": 1.0}, "glow": {"dim": 1.0}}
+    assert superlative_stem_setting(Text.of("the smallest one"), 1, candidates) == "load"
+    assert superlative_stem_setting(Text.of("the dimmest one"), 1, candidates) == "glow"

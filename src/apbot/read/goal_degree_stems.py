@@ -14,12 +14,15 @@ _MIN_STEM = 5
 join unrelated words."""
 
 
-def _base(word: str) -> str:
-    """ "dimmest" -> "dim", "hottest" -> "hot", "heaviest" -> "heavy"."""
+def _bases(word: str) -> set[str]:
+    """ "dimmest" -> dim(m), "hottest" -> hot(t), "heaviest" -> "heavy", "fullest" -> full(l):
+    a doubled last letter may be the superlative's doubling (dim) or the word's own (full,
+    small), so both forms are tried."""
     base = word[:-3]
+    bases = {base}
     if len(base) > 2 and base[-1] == base[-2]:
-        base = base[:-1]
-    return base[:-1] + "y" if base.endswith("i") else base
+        bases.add(base[:-1])
+    return {b[:-1] + "y" if b.endswith("i") else b for b in bases}
 
 
 def superlative_stem_setting(
@@ -31,8 +34,7 @@ def superlative_stem_setting(
     word = text.word(k)
     keys: set[str] = set()
     if word.endswith("est") and len(word) >= 6 and word.isalpha():
-        base = _base(word)
-        keys = {concept(base), concept(base + "e")}
+        keys = {concept(form) for base in _bases(word) for form in (base, base + "e")}
     found = [
         name for name, vocab in candidates.items() if any(vocab.get(x, 0) >= 0.8 for x in keys)
     ]

@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 
 from apbot.read.goal_ladders import is_off_level, ordered, ordered_values
-from apbot.read.goal_text import Text, near_vocab
+from apbot.read.goal_text import Text, near_vocab, negated_before
 from apbot.read.goal_view import Goal, Model, VarInfo, domain_values
 
 
@@ -42,16 +42,19 @@ def halfway_levels(
             after = k + 2 if text.word(k + 1) in ("the", "its") else k + 1
             info = _named_at(view, goal, text, after)
         elif token.text == "halfway" or _to_an_end(text, k) is not None:
+            start = _phrase_start(text, k)
+            if negated_before(text, start):
+                continue  # "don't turn it all the way up": not that
             near = [
                 i
                 for name, i in view.infos.items()
                 if name not in goal
                 and i.role == "setting"
                 and ordered(i)
-                and near_vocab(i, text, k, k + 1, reach=3) >= 0.3
+                and near_vocab(i, text, start, k + 1, reach=3) >= 0.3
             ]
             info = near[0] if len(near) == 1 else None
-            if not near and token.text != "halfway":
+            if not near and token.text != "halfway" and _said_of_it(text, start):
                 info = _shown_idle(view, goal)  # "lower it all the way down": the desk's height
         if info is None:
             continue
@@ -87,3 +90,27 @@ def _to_an_end(text: Text, k: int) -> int | None:
     if not (right or all_the_way):
         return None
     return 0 if word == "down" else -1
+
+
+def _phrase_start(text: Text, k: int) -> int:
+    """Where the words ending at ``k`` start: "all the way up" three tokens before its "up",
+    "right up" one before, "halfway" at itself — the nearness search runs from there, so a
+    setting named before "all the way" is within reach."""
+    if text.word(k) not in ("up", "down"):
+        return k
+    all_the_way = [text.word(k - 3), text.word(k - 2), text.word(k - 1)] == ["all", "the", "way"]
+    return k - 3 if all_the_way else k - 1
+
+
+_SAID_OF_IT = frozenset({"it", "this", "that"})
+"""What stands for the appliance itself: "take it all the way up"."""
+
+
+def _said_of_it(text: Text, start: int) -> bool:
+    """Whether the end is said of the appliance itself — "it" right before the phrase, or no
+    object at all ("all the way up, please") — rather than of some other thing ("the pedal all
+    the way down", "fill the tray right up"), which the idle display says nothing about."""
+    before = text.word(start - 1)
+    if before in _SAID_OF_IT:
+        return True
+    return start == 0 or before in (",", ".", ";", ":", "and", "then", "please")

@@ -17,6 +17,8 @@ _ANCHORS = {"warm": 2700.0, "neutral": 4000.0, "cool": 5000.0, "daylight": 6500.
 _ENDS = {"warmest": 0, "coolest": -1, "coldest": -1, "bluest": -1, "yellowest": 0}
 _NAMES = frozenset({"colour", "color", "temperature", "cct", "white", "kelvin", "tone", "k"})
 _LOWEST_KELVIN, _HIGHEST_KELVIN = 1500.0, 10000.0
+_LIGHT_WORDS = _NAMES | {"light", "lighting", "tone", "glow", "bulb", "lamp", "shade", "hue"}
+"""Words a named white stands beside when it is a colour: "warm light", "a cool tone"."""
 
 
 def _kelvin_setting(info: VarInfo) -> bool:
@@ -56,8 +58,8 @@ def kelvin_words(
             continue
         if word in _ENDS:
             chosen = (k, numbers[_ENDS[word]][1])
-        elif word in _ANCHORS:  # "cool daylight": the later word says which
-            anchor = _ANCHORS[word]
+        elif word in _ANCHORS and _said_of_light(text, k, info):
+            anchor = _ANCHORS[word]  # "cool daylight": the later word says which
             chosen = (k, min(numbers, key=lambda pair: abs(pair[0] - anchor))[1])
     if chosen is None:
         return
@@ -65,3 +67,23 @@ def kelvin_words(
     goal[info.name] = value
     where[info.name] = k
     claimed.update(j for j, t in enumerate(text.tokens) if t.text in _ANCHORS or t.text in _ENDS)
+
+
+def _said_of_light(text: Text, k: int, info: VarInfo) -> bool:
+    """Whether the named white at ``k`` is said of a colour: its run of such words ("cool
+    daylight") stands right beside a word of light or colour or of the setting's own name
+    ("warm white", "light: neutral"), or holds two of them. Alone, "warm" and "cool" are the
+    weather or the room ("it's warm in here", "to cool the room"), not the light."""
+    start, end = k, k
+    while text.word(start - 1) in _ANCHORS:
+        start -= 1
+    while text.word(end + 1) in _ANCHORS:
+        end += 1
+    if end > start:
+        return True
+    for j in (start - 1, end + 1):
+        if text.word(j) in _LIGHT_WORDS:
+            return True
+        if 0 <= j < len(text.tokens) and info.vocab.get(text.concepts[j], 0.0) >= 0.8:
+            return True
+    return False

@@ -54,9 +54,19 @@ def setting_words(manual: str, labels: dict[str, list[str]]) -> dict[str, set[st
                 if found is not None and line.startswith(label):
                     out.setdefault(name, set()).update(_phrase(found[1]))
                 found = title.match(line)
-                if found is not None:
+                if found is not None and _heading_name(found[1]):
                     out.setdefault(name, set()).update(_phrase(found[1]))
     return {name: words for name, words in out.items() if words}
+
+
+def _heading_name(name: str) -> bool:
+    """Whether the words before "(KEY)" are a heading's name, not a sentence ending on the key:
+    a capitals heading ("CIRCULATION SPEED (PUMP)") always is; a mixed-case one ("Hands-free
+    (VOX)") only without verbs or the small words sentences carry ("Then press (SET)")."""
+    if name.upper() == name:
+        return True
+    words = {w.casefold() for w in re.split(r"[\s-]+", name) if w}
+    return not words & (_LEGEND_VERBS | _ENDS | STOP_WORDS)
 
 
 def _phrase(text: str) -> list[str]:
