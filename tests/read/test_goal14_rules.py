@@ -368,3 +368,9 @@ def test_a_superlative_of_a_word_ending_in_a_double_letter() -> None:
     candidates = {"load": {"small": 1.0}, "glow": {"dim": 1.0}}
     assert superlative_stem_setting(Text.of("the smallest one"), 1, candidates) == "load"
     assert superlative_stem_setting(Text.of("the dimmest one"), 1, candidates) == "glow"
+
+
+def test_a_denied_setting_is_not_put_halfway() -> None:
+    """ "don't put the volume halfway": the negation before the setting's name denies it."""
+    assert "volume" not in _goal(SPEAKER, "Don't put the volume halfway.")
+    assert _goal(SPEAKER, "Put the volume halfway.") == {"volume": "3"}

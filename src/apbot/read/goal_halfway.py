@@ -38,6 +38,7 @@ def halfway_levels(
         if k in claimed:
             continue
         info = None
+        start = k
         if token.text == "half":
             after = k + 2 if text.word(k + 1) in ("the", "its") else k + 1
             info = _named_at(view, goal, text, after)
@@ -56,7 +57,7 @@ def halfway_levels(
             info = near[0] if len(near) == 1 else None
             if not near and token.text != "halfway" and _said_of_it(text, start):
                 info = _shown_idle(view, goal)  # "lower it all the way down": the desk's height
-        if info is None:
+        if info is None or _named_negated(text, info, start):
             continue
         values = ordered_values(domain_values(view, info, goal))
         if len(values) > 2 and is_off_level(info, values[0]):
@@ -114,3 +115,12 @@ def _said_of_it(text: Text, start: int) -> bool:
     if before in _SAID_OF_IT:
         return True
     return start == 0 or before in (",", ".", ";", ":", "and", "then", "please")
+
+
+def _named_negated(text: Text, info: VarInfo, start: int) -> bool:
+    """Whether the setting named just before the words is itself denied: "don't put the
+    volume halfway" (the negation stands before the setting's name, out of reach of the end)."""
+    for j in range(start - 1, max(-1, start - 4), -1):
+        if info.vocab.get(text.concepts[j], 0.0) >= 0.3:
+            return negated_before(text, j)
+    return False
