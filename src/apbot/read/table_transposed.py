@@ -44,7 +44,9 @@ def _one_kind(cells: list[str]) -> bool:
 def sideways_choices(units: list[Unit], i: int) -> list[str] | None:
     """The header's later cells when the table headed at unit ``i`` is written sideways (most
     rows of one kind each, most columns mixed; or the header's later cells printed in capitals
-    over rows of amounts, or alone); ``None`` for a table written the usual way."""
+    over rows of amounts, or alone); ``None`` for a table written the usual way. The columns are
+    tested first: capitals in a header also head quantities ("| Programme | TEMP | TIME |"), and
+    a blank first head is a grid's corner ("| | EU | US |"), not a key's name."""
     header = list(units[i].cells)
     rows = [list(u.cells) for u in units[i + 1 :] if u.header == units[i].cells and u.cells]
     rows = [r for r in rows if len(r) == len(header)]  # (a row of merged cells says nothing)
@@ -52,6 +54,11 @@ def sideways_choices(units: list[Unit], i: int) -> list[str] | None:
         return None
     if any(re.search(r"\d", c) for c in header[1:]) or any(re.search(r"\d", r[0]) for r in rows):
         return None  # numbered rows or amounts in the header: no sideways table
+    if not header[0].strip(" *"):
+        return None  # "| | EU | US |": a grid's corner left blank, a spec table's columns
+    by_column = sum(_one_kind([r[k] for r in rows]) for k in range(1, len(header)))
+    if len(rows) >= 2 and 2 * by_column >= len(header) - 1:
+        return None  # "| Programme | TEMP | TIME |": each column one quantity, written upright
     choices = [c.strip(" *") for c in header[1:] if c.strip(" *")]
     amounts = [_kind_of(c) != "word" for r in rows for c in r[1:]]
     lone = not rows and not _caps(header[0])  # "| Shade | PALE | … | DARK |" alone: its marks
@@ -64,8 +71,7 @@ def sideways_choices(units: list[Unit], i: int) -> list[str] | None:
     if len(rows) < 2 or all(_kind_of(c) == "word" for r in rows for c in r[1:]):
         return None  # a table of words only: no amounts to tell its axes apart
     by_row = sum(_one_kind(r[1:]) for r in rows)
-    by_column = sum(_one_kind([r[k] for r in rows]) for k in range(1, len(header)))
-    if 2 * by_row <= len(rows) or 2 * by_column >= len(header) - 1:
+    if 2 * by_row <= len(rows):
         return None
     return choices
 
