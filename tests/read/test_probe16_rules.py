@@ -200,3 +200,20 @@ def test_a_grid_with_a_blank_corner_is_no_keys_choices() -> None:
 """
     assert _sideways(spec) is None
 
+
+def test_a_header_row_over_its_rows_is_no_keys_row_of_marks() -> None:
+    lamps = """## Indicator lamps
+
+| Speed | LAMP | SCREEN |
+|---|---|---|
+| Slow | green | S1 |
+| Fast | amber | S2 |
+"""
+    units = parse_manual(lamps, []).units
+    head = next(i for i, u in enumerate(units) if u.cells and not u.header)
+    assert key_row_marks(units[head].cells, {"speed"}, units[head].header, True) is None
+    assert key_row_marks(("Speed", "LOW", "HIGH"), {"speed"}) == ["LOW", "HIGH"]
+
+
+def test_a_key_word_under_four_letters_names_no_row_of_marks() -> None:
+    assert key_row_marks(("Run", "LOW", "HIGH"), {"run"}) is None

@@ -97,18 +97,23 @@ _COUNT_HEAD_RE = re.compile(r"\W*(?:\d{1,2}\s*(?:x|×|st|nd|rd|th)?)?\W*", re.I)
 
 
 def key_row_marks(
-    cells: tuple[str, ...], key_words: set[str], header: tuple[str, ...] = ()
+    cells: tuple[str, ...],
+    key_words: set[str],
+    header: tuple[str, ...] = (),
+    rows_below: bool = False,
 ) -> list[str] | None:
     """The cells after a row's first cell when that cell names the key (a word of four letters
     or more shared to its sixth letter) and every other cell is a name printed in capitals
     ("| Shade | PALE | LIGHT | DARK |" alone or under a row of counts, "| | 1 | 2 | 3 |"): the
     key's marks in order,
-    a table written sideways the way "| TEMP. | SPIN |" over their columns is written upright."""
-    if len(cells) < 3:
+    a table written sideways the way "| TEMP. | SPIN |" over their columns is written upright.
+    A header row with ``rows_below`` heads columns ("| Mode | LED | DISPLAY |" over its rows):
+    its capitals name what each column tells, not the key's marks."""
+    if len(cells) < 3 or (not header and rows_below):
         return None
     if header and not all(_COUNT_HEAD_RE.fullmatch(h) for h in header[1:]):
         return None  # "| Keys | Status line |": a record per key, its cells are no marks
-    first = words(cells[0])
+    first = [w for w in words(cells[0]) if len(w) >= 4]  # "Set", "On": too short to be sure
     if not first or not any(h[:6] == w[:6] for h in first for w in key_words):
         return None
     marks = [c.strip(" *") for c in cells[1:] if c.strip(" *")]
