@@ -109,6 +109,15 @@ def test_the_one_icon_no_key_word_names_is_the_key_never_named() -> None:
     assert "CLOCK — auto-off" in out and "Touch CLOCK" in out
 
 
+def test_a_warning_sign_apart_from_the_keys_legend_is_no_key() -> None:
+    from apbot.read.text import _KEEP
+    from apbot.read.text_sign_keys import name_signed_keys
+
+    text = "❋ — blower level.\n\n⚠ — hot grille. Let it cool.\n\nPress ❋ to change the level."
+    out = name_signed_keys(text, ["blower", "surge"], _KEEP)
+    assert "SURGE" not in out and "Press BLOWER" in out
+
+
 def test_the_noun_the_display_shows_anew_names_the_pair() -> None:
     manual = """\
 # Riva camera slider
