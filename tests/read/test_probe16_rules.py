@@ -217,3 +217,8 @@ def test_a_header_row_over_its_rows_is_no_keys_row_of_marks() -> None:
 
 def test_a_key_word_under_four_letters_names_no_row_of_marks() -> None:
     assert key_row_marks(("Run", "LOW", "HIGH"), {"run"}) is None
+
+
+def test_two_capitalised_menu_entries_joined_by_and_are_no_choice() -> None:
+    assert find_list("Select Alarm and Snooze to set the wake time.") is None
+    assert find_list("Select Alarm or Snooze.") == (["Alarm", "Snooze"], "list")
