@@ -185,3 +185,15 @@ def test_a_menu_key_takes_the_name_its_short_press_opens() -> None:
     model = read_manual(manual, ["press_menu", "hold_menu", "press_up", "press_down"]).model
     assert "night_vision" in model.variables
     assert "menu" not in model.variables
+
+
+def test_a_knobs_off_and_levels_in_other_wordings() -> None:
+    from apbot.read.off_positions import _OFF_LEVELS_RE
+
+    for said in (
+        "Dial positions: OFF, 1 to 5.",
+        "dial positions off and 1–5",
+        "positions Off and 1-5",
+    ):
+        found = _OFF_LEVELS_RE.search(said)
+        assert found is not None and found.groups() == ("1", "5"), said
