@@ -197,3 +197,14 @@ def test_a_knobs_off_and_levels_in_other_wordings() -> None:
     ):
         found = _OFF_LEVELS_RE.search(said)
         assert found is not None and found.groups() == ("1", "5"), said
+
+
+def test_the_display_view_opening_the_sentence_names_the_pair() -> None:
+    moved = _STATIONS_MANUAL.replace(
+        "Press ▲ or ▼ while the display shows the station: each press moves one station.",
+        "While the display shows the station, press ▲ or ▼: each press moves one station.",
+    )
+    actions = ["press_power", "press_up", "press_down", "press_alarm"]
+    station = read_manual(moved, actions).model.variables.get("station")
+    assert station is not None
+    assert [str(v) for v in station.values] == [f"{n:02d}" for n in range(1, 13)]
