@@ -59,7 +59,30 @@ def test_a_clock_walk_told_in_prose_is_read() -> None:
     assert "press_clock" in walks[0][2].actions
 
 
-def test_a_held_stepping_key_opens_no_prose_walk() -> None:
+def test_a_held_stepping_key_opens_no_prose_walk(monkeypatch: Any) -> None:
+    # a hold of ▲ followed by prose that reads as one setting (a range, then the pair): the
+    # walk reader must not open it, since holding a stepping key steps fast (a later rule would
+    # hide such a walk from the model, so the walks the reader applies are recorded)
+    import apbot.read.held_walks as held_walks
+
+    manual = """RAISO L2 lift table
+
+MOVING THE TABLE
+
+  Hold ▲ for 2 seconds: the memory height flashes, 40 to 90 cm. Press ▲ or ▼ to set it.
+
+  The display shows the height.
+"""
+    applied: list[str] = []
+    apply = held_walks._apply
+
+    def recorded(b: Any, hold: str, *rest: Any) -> None:
+        applied.append(hold)
+        apply(b, hold, *rest)
+
+    monkeypatch.setattr(held_walks, "_apply", recorded)
+    read_manual(manual, LIFT_ACTIONS)
+    assert "hold_up" not in applied
     model = read_manual(LIFT, LIFT_ACTIONS).model
     assert not any(
         [x.actions for x in s][:1] == [["hold_up"]] and len(s) > 2 for s in model.features.values()
