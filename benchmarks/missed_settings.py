@@ -188,7 +188,8 @@ def note_origins() -> Iterator[None]:
     def tagged(self: BuilderBase, subject: str, what: str, unit: int | None = None) -> None:
         plain(self, subject, what, unit)
         frame = sys._getframe(1)
-        while frame.f_back and frame.f_code.co_filename.endswith("build_base.py"):
+        # (build.py's add_number / add_discrete note for the rule that called them: skip both)
+        while frame.f_back and frame.f_code.co_filename.endswith(("build_base.py", "build.py")):
             frame = frame.f_back
         module = frame.f_globals.get("__name__", "?").rsplit(".", 1)[-1]
         NOTE_ORIGINS[id(self.notes[-1])] = module

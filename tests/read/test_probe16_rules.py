@@ -173,3 +173,52 @@ def test_a_keys_row_of_capital_marks_under_counts_gives_its_values() -> None:
 def test_a_record_row_under_named_columns_is_no_row_of_marks() -> None:
     assert key_row_marks(("CRISP", "READY", "CRISP"), {"crisp"}, ("Key", "Shown", "Next")) is None
     assert key_row_marks(("Crisp", "SOFT", "EVEN"), {"crisp"}, ("", "1", "2")) == ["SOFT", "EVEN"]
+
+
+def _sideways(table: str) -> list[str] | None:
+    """What sideways_choices says of the table whose header is the text's first table row."""
+    units = parse_manual(table, []).units
+    head = next(i for i, u in enumerate(units) if u.cells and not u.header)
+    return sideways_choices(units, head)
+
+
+def test_capital_column_heads_over_one_quantity_each_are_a_table_written_upright() -> None:
+    programmes = """| Cycle | HEAT | LENGTH |
+|---|---|---|
+| Linen | 70 °C | 1:45 |
+| Silk | 20 °C | 0:40 |
+| Rinse | 35 °C | 0:25 |
+"""
+    assert _sideways(programmes) is None
+
+
+def test_a_grid_with_a_blank_corner_is_no_keys_choices() -> None:
+    spec = """| | JP | AU | CN |
+|---|---|---|---|
+| Mains | 100 V | 230 V | 220 V |
+| Cycle rate | 50 Hz | 50 Hz | 50 Hz |
+"""
+    assert _sideways(spec) is None
+
+
+def test_a_header_row_over_its_rows_is_no_keys_row_of_marks() -> None:
+    lamps = """## Indicator lamps
+
+| Speed | LAMP | SCREEN |
+|---|---|---|
+| Slow | green | S1 |
+| Fast | amber | S2 |
+"""
+    units = parse_manual(lamps, []).units
+    head = next(i for i, u in enumerate(units) if u.cells and not u.header)
+    assert key_row_marks(units[head].cells, {"speed"}, units[head].header, True) is None
+    assert key_row_marks(("Speed", "LOW", "HIGH"), {"speed"}) == ["LOW", "HIGH"]
+
+
+def test_a_key_word_under_four_letters_names_no_row_of_marks() -> None:
+    assert key_row_marks(("Run", "LOW", "HIGH"), {"run"}) is None
+
+
+def test_two_capitalised_menu_entries_joined_by_and_are_no_choice() -> None:
+    assert find_list("Select Alarm and Snooze to set the wake time.") is None
+    assert find_list("Select Alarm or Snooze.") == (["Alarm", "Snooze"], "list")

@@ -109,6 +109,15 @@ def test_the_one_icon_no_key_word_names_is_the_key_never_named() -> None:
     assert "CLOCK — auto-off" in out and "Touch CLOCK" in out
 
 
+def test_a_warning_sign_apart_from_the_keys_legend_is_no_key() -> None:
+    from apbot.read.text import _KEEP
+    from apbot.read.text_sign_keys import name_signed_keys
+
+    text = "❋ — blower level.\n\n⚠ — hot grille. Let it cool.\n\nPress ❋ to change the level."
+    out = name_signed_keys(text, ["blower", "surge"], _KEEP)
+    assert "SURGE" not in out and "Press BLOWER" in out
+
+
 def test_the_noun_the_display_shows_anew_names_the_pair() -> None:
     manual = """\
 # Riva camera slider
@@ -176,3 +185,26 @@ def test_a_menu_key_takes_the_name_its_short_press_opens() -> None:
     model = read_manual(manual, ["press_menu", "hold_menu", "press_up", "press_down"]).model
     assert "night_vision" in model.variables
     assert "menu" not in model.variables
+
+
+def test_a_knobs_off_and_levels_in_other_wordings() -> None:
+    from apbot.read.off_positions import _OFF_LEVELS_RE
+
+    for said in (
+        "Dial positions: OFF, 1 to 5.",
+        "dial positions off and 1–5",
+        "positions Off and 1-5",
+    ):
+        found = _OFF_LEVELS_RE.search(said)
+        assert found is not None and found.groups() == ("1", "5"), said
+
+
+def test_the_display_view_opening_the_sentence_names_the_pair() -> None:
+    moved = _STATIONS_MANUAL.replace(
+        "Press ▲ or ▼ while the display shows the station: each press moves one station.",
+        "While the display shows the station, press ▲ or ▼: each press moves one station.",
+    )
+    actions = ["press_power", "press_up", "press_down", "press_alarm"]
+    station = read_manual(moved, actions).model.variables.get("station")
+    assert station is not None
+    assert [str(v) for v in station.values] == [f"{n:02d}" for n in range(1, 13)]

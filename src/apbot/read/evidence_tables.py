@@ -106,7 +106,9 @@ class TableReader:
         units = self.manual.units
         choice = bool(tw & CHOICE_WORDS)
         for i, unit in enumerate(units):
-            marks = key_row_marks(unit.cells, tw, unit.header)
+            below = i + 1 < len(units) and bool(units[i + 1].cells)
+            below = below and units[i + 1].header == unit.cells
+            marks = key_row_marks(unit.cells, tw, unit.header, below)
             if marks:  # "| SHADE | PALE | LIGHT | DARK |": the key's row of its printed marks
                 self._table_at = i
                 return marks

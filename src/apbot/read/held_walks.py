@@ -35,7 +35,8 @@ from apbot.read.walk_fields import (
     read_more_field,
 )
 from apbot.read.walk_flashed import (
-    CLOCK_SPEC,
+    clock_effects,
+    clock_field,
     clock_steps,
     flashed_field,
     held_steps,
@@ -172,11 +173,7 @@ def _walk(
         if own is None or (pair is not None and own != pair):
             break
         field = (
-            (
-                {"name": "time", "spec": dict(CLOCK_SPEC), "split": True}
-                if opened in clocks
-                else None
-            )
+            (clock_field(opened, text, {f["name"] for f in fields}) if opened in clocks else None)
             or read_field(opened, text, at, beside=True)
             or read_more_field(opened, text, at)
             or read_coded_field(opened, text, at)
@@ -399,7 +396,7 @@ def _apply(
         if k:
             steps.append({"actions": [press]})
         if field.get("split"):  # the hours, then the minutes, of one time of day
-            steps += clock_steps(var, up, down, press)
+            steps += clock_steps(var, up, down, press, field.get("minute", 60))
         else:
             steps.append({"actions": up + down, "variable": var, "effect": dict(effect)})
         if not down:  # "MEM held 2 s adds ten months"
@@ -467,8 +464,7 @@ def _apply_clock(b: Builder, hold: str, press: str | None, walk: dict[str, Any])
         }
         b.note(f"variables.{var}", "a time of day the held key's steps set", walk["at"])
     b.variables[var]["wrap"] = True
-    hours = {**{a: {"add": 3600} for a in up}, **{a: {"add": -3600} for a in down}}
-    minutes = {**{a: {"add": minute} for a in up}, **{a: {"add": -minute} for a in down}}
+    hours, minutes = clock_effects(up, down, minute)
     minutes.update({a: {"add": n} for a, n in walk["holds"].items()})
     steps: list[dict[str, Any]] = [
         {"actions": [hold]},

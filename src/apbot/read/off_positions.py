@@ -16,9 +16,12 @@ import re
 from apbot.read.build import Builder
 from apbot.read.values import number
 
+# "positions: OFF and levels 1 to 8", "Positions: OFF, 1 to 8.", "positions off and 1–8": the
+# word OFF in any case, then a comma or "and", then a run of levels however its ends are joined
 _OFF_LEVELS_RE = re.compile(
-    r"\bpositions?\s*[:—–-]?\s*(?:(?:an?|the)\s+)?OFF\s+(?:and|,)\s+(?:levels?\s+)?"
-    r"(\w+)\s+(?:to|–|-)\s+(\w+)\b",
+    r"\bpositions?\s*[:—–-]?\s*(?:(?:an?|the)\s+)?off\s*(?:,|\band\b)\s*(?:levels?\s+)?"
+    r"(\w+)\s*(?:\bto\b|–|-)\s*(\w+)\b",
+    re.I,
 )
 _MAX_LEVELS = 20
 

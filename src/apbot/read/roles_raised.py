@@ -190,7 +190,10 @@ _MOVED_RE = re.compile(
 )
 
 
-_VIEW_NOUN_RE = re.compile(r"^(?:only\s+)?(?:when|while) the (?:display|screen) shows the ([a-z]+)")
+# (in any case: the view may open the sentence, "While the display shows the channel, …")
+_VIEW_NOUN_RE = re.compile(
+    r"^(?:only\s+)?(?:when|while) the (?:display|screen) shows the ([a-z]+)", re.I
+)
 
 
 def set_alone(b: Builder, pair: list[str]) -> str:
@@ -216,7 +219,7 @@ def set_alone(b: Builder, pair: list[str]) -> str:
             noun = quantity_noun(moved.group("noun")) if moved is not None else ""
             viewed = _VIEW_NOUN_RE.search(sentence[alone.start() :])
             if not noun and viewed is not None:  # "Press ▲ or ▼ while the display shows the
-                noun = quantity_noun(viewed.group(1))  # channel": the view's own quantity
+                noun = quantity_noun(viewed.group(1).lower())  # channel": the view's own quantity
             if noun:
                 return noun
             if sign.start() > alone.start():

@@ -44,7 +44,9 @@ def _one_kind(cells: list[str]) -> bool:
 def sideways_choices(units: list[Unit], i: int) -> list[str] | None:
     """The header's later cells when the table headed at unit ``i`` is written sideways (most
     rows of one kind each, most columns mixed; or the header's later cells printed in capitals
-    over rows of amounts, or alone); ``None`` for a table written the usual way."""
+    over rows of amounts, or alone); ``None`` for a table written the usual way. The columns are
+    tested first: capitals in a header also head quantities ("| Programme | TEMP | TIME |"), and
+    a blank first head is a grid's corner ("| | EU | US |"), not a key's name."""
     header = list(units[i].cells)
     rows = [list(u.cells) for u in units[i + 1 :] if u.header == units[i].cells and u.cells]
     rows = [r for r in rows if len(r) == len(header)]  # (a row of merged cells says nothing)
@@ -52,6 +54,11 @@ def sideways_choices(units: list[Unit], i: int) -> list[str] | None:
         return None
     if any(re.search(r"\d", c) for c in header[1:]) or any(re.search(r"\d", r[0]) for r in rows):
         return None  # numbered rows or amounts in the header: no sideways table
+    if not header[0].strip(" *"):
+        return None  # "| | EU | US |": a grid's corner left blank, a spec table's columns
+    by_column = sum(_one_kind([r[k] for r in rows]) for k in range(1, len(header)))
+    if len(rows) >= 2 and 2 * by_column >= len(header) - 1:
+        return None  # "| Programme | TEMP | TIME |": each column one quantity, written upright
     choices = [c.strip(" *") for c in header[1:] if c.strip(" *")]
     amounts = [_kind_of(c) != "word" for r in rows for c in r[1:]]
     lone = not rows and not _caps(header[0])  # "| Shade | PALE | … | DARK |" alone: its marks
@@ -64,8 +71,7 @@ def sideways_choices(units: list[Unit], i: int) -> list[str] | None:
     if len(rows) < 2 or all(_kind_of(c) == "word" for r in rows for c in r[1:]):
         return None  # a table of words only: no amounts to tell its axes apart
     by_row = sum(_one_kind(r[1:]) for r in rows)
-    by_column = sum(_one_kind([r[k] for r in rows]) for k in range(1, len(header)))
-    if 2 * by_row <= len(rows) or 2 * by_column >= len(header) - 1:
+    if 2 * by_row <= len(rows):
         return None
     return choices
 
@@ -91,18 +97,23 @@ _COUNT_HEAD_RE = re.compile(r"\W*(?:\d{1,2}\s*(?:x|×|st|nd|rd|th)?)?\W*", re.I)
 
 
 def key_row_marks(
-    cells: tuple[str, ...], key_words: set[str], header: tuple[str, ...] = ()
+    cells: tuple[str, ...],
+    key_words: set[str],
+    header: tuple[str, ...] = (),
+    rows_below: bool = False,
 ) -> list[str] | None:
     """The cells after a row's first cell when that cell names the key (a word of four letters
     or more shared to its sixth letter) and every other cell is a name printed in capitals
     ("| Shade | PALE | LIGHT | DARK |" alone or under a row of counts, "| | 1 | 2 | 3 |"): the
     key's marks in order,
-    a table written sideways the way "| TEMP. | SPIN |" over their columns is written upright."""
-    if len(cells) < 3:
+    a table written sideways the way "| TEMP. | SPIN |" over their columns is written upright.
+    A header row with ``rows_below`` heads columns ("| Mode | LED | DISPLAY |" over its rows):
+    its capitals name what each column tells, not the key's marks."""
+    if len(cells) < 3 or (not header and rows_below):
         return None
     if header and not all(_COUNT_HEAD_RE.fullmatch(h) for h in header[1:]):
         return None  # "| Keys | Status line |": a record per key, its cells are no marks
-    first = words(cells[0])
+    first = [w for w in words(cells[0]) if len(w) >= 4]  # "Set", "On": too short to be sure
     if not first or not any(h[:6] == w[:6] for h in first for w in key_words):
         return None
     marks = [c.strip(" *") for c in cells[1:] if c.strip(" *")]

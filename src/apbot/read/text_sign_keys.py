@@ -69,10 +69,28 @@ def _last_left(
 ) -> dict[str, str]:
     """The one legend icon no key's words name, given to the one key the manual never names in
     words ("⑤ ⏰ — reminder." on a panel whose actions include ``timer``, a word the manual
-    never prints): the legend draws every key, so the icon left over is the key left over."""
-    unnamed = [icon for icon, ks in named.items() if not ks]
+    never prints): the legend draws every key, so the icon left over is the key left over. Only
+    an icon a step presses, or one in the block of the keys' legend lines, counts: a warning
+    sign's line ("⚠ — hot surface") is no key's."""
+    unnamed = [icon for icon, ks in named.items() if not ks and _worked(text, icon, named)]
     said = set(_words(text))
     unseen = [k for k, ws in tokens.items() if not set(ws) & said]
     if len(unnamed) != 1 or len(unseen) != 1:
         return {}
     return {unnamed[0]: unseen[0].replace("_", " ").upper()}
+
+
+_PRESS_RE = r"\b(?:press|touch|tap|push|hold)\s+(?:the\s+)?"
+
+
+def _worked(text: str, icon: str, named: dict[str, set[str]]) -> bool:
+    """Whether the icon is a key's: a step presses it ("Touch ⌛"), or its legend line stands
+    in one block (no blank line between) with a line whose icon names a key."""
+    if re.search(_PRESS_RE + re.escape(icon), text, re.I):
+        return True
+    keyed = {i for i, ks in named.items() if ks}
+    for block in re.split(r"\n[ \t]*\n", text):
+        signs = {m.group(1) for m in _SIGN_LINE.finditer(block)}
+        if icon in signs and signs & keyed:
+            return True
+    return False

@@ -134,7 +134,9 @@ def find_list(text: str) -> tuple[list[str], str] | None:
         if len(items) >= 2 and all(_value_like(i, caps >= 2) for i in items):
             lower_ok = len(items) >= 3 and all(len(i.split()) <= 2 for i in items)
             numeric = all(re.fullmatch(rf"{NUM}\s*{UNIT}?", i, re.I) for i in items)
-            if caps >= 2 or numeric or lower_ok or _title_pair(items):
+            between = text[m.start() :].lower().startswith("between")
+            either = between or bool(re.search(r"\sor\s", segment))
+            if caps >= 2 or numeric or lower_ok or (either and _title_pair(items)):
                 return _dedupe(items), "list"
         if caps >= 3:  # names in capitals, then the prose that describes the first one
             head = []
@@ -150,7 +152,9 @@ def find_list(text: str) -> tuple[list[str], str] | None:
 
 def _title_pair(items: list[str]) -> bool:
     """Two names each capitalised in mid-sentence after a cue ("choose Gentle or Strong"): a
-    manual capitalises a setting's value names as it prints them, plain prose it does not."""
+    manual capitalises a setting's value names as it prints them, plain prose it does not. The
+    caller asks for a choice ("X or Y", "between X and Y"): "Select Date and Time" names two
+    menu entries to open, not two values of one setting."""
     return len(items) == 2 and all(
         i.upper() != i and all(w[:1].isupper() for w in i.split()) and len(i.split()) <= 2
         for i in items

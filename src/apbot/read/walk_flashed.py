@@ -9,12 +9,15 @@ the name of what flashes.
 
 from __future__ import annotations
 
+import copy
 import re
 from typing import Any
 
+from apbot.model.values import format_hms
 from apbot.read.build import Builder
 from apbot.read.shapes import Evidence
-from apbot.read.values import Range
+from apbot.read.value_steps import find_step
+from apbot.read.values import Range, unit_name
 from apbot.read.walk_fields import after_key
 from apbot.read.walk_known import flashing_name
 from apbot.read.walk_steps import adjuster_hold, held_adds
@@ -22,8 +25,10 @@ from apbot.read.walk_steps import adjuster_hold, held_adds
 # "flashes: kg or lb", "blinks: mmHg or kPa"
 _FLASHES_COLON_RE = re.compile(r"\b(?:flash(?:es)?|blinks?)\s*:\s*([^.;]+)", re.I)
 # "(P1 to P4)", "(U1 – U3)": a run of numbered codes
-_CODE_RUN_RE = re.compile(r"\(\s*([A-Za-z]{1,2})(\d)\s*(?:to|–|-|…|\.\.\.)\s*\1(\d)\s*\)")
-_WORD_RE = re.compile(r"[A-Za-z][A-Za-z0-9]{0,7}")
+_CODE_RUN_RE = re.compile(
+    r"\(\s*([A-Za-z]{1,2})(\d{1,2})\s*(?:to|–|-|…|\.\.\.)\s*\1(\d{1,2})\s*\)"
+)  # ("(U1 to U10)": a run may end in two digits)
+_WORD_RE = re.compile(r"°?[A-Za-z][A-Za-z0-9]{0,7}")  # ("°C or °F": a unit's sign before it)
 _OR_RE = re.compile(r"\s*,\s*(?:or\s+)?|\s+or\s+|\s*/\s*")
 
 
@@ -106,14 +111,50 @@ CLOCK_SPEC = {
     "format": "hh:mm",
     "wrap": True,
 }
+# "hours flash", "alarm hour blinks": the word before the hours names the clock ("alarm")
+_CLOCK_OWNER_RE = re.compile(r"\b([a-z]{3,})\s+hours?\s+(?:digits?\s+)?(?:flash|blink)", re.I)
+# "each press moves 5 minutes", "every tap adds 10 min": the minutes' step
+_MINUTE_STEP_RE = re.compile(
+    r"\b(?:each|every)\s+(?:press|touch|tap|click)\b[^.;]{0,30}?\b(\d{1,2})\s*(?:minutes?|mins?)\b",
+    re.I,
+)
+_NO_OWNER = frozenset({"the", "its", "and", "then", "clock", "time"})
+
+
+def clock_field(opened: str, text: str, taken: set[str]) -> dict[str, Any]:
+    """A joined clock's field: named by the word before its hours ("The alarm hours flash":
+    "alarm time"), else "time" (numbered when a clock of one walk took it), its minutes moved
+    by the step its text says ("each press moves 5 minutes"), else one."""
+    owner = _CLOCK_OWNER_RE.search(opened)
+    name = "time"
+    if owner and owner.group(1).lower() not in _NO_OWNER:
+        name = f"{owner.group(1).lower()} time"
+    if name in taken:
+        name = f"{name} {sum(n.startswith(name) for n in taken) + 1}"
+    said = _MINUTE_STEP_RE.search(text)
+    step = (float(said.group(1)), "min") if said else find_step(text)
+    minute = 60
+    if step and unit_name(step[1]) == "min" and 0 < step[0] < 60 and step[0] == int(step[0]):
+        minute = int(step[0]) * 60
+    spec = copy.deepcopy(CLOCK_SPEC)
+    spec["ranges"] = [["00:00:00", format_hms(24 * 3600 - minute), minute]]
+    return {"name": name, "spec": spec, "split": True, "minute": minute}
+
+
+def clock_effects(
+    up: list[str], down: list[str], minute: int = 60
+) -> tuple[dict[str, Any], dict[str, Any]]:
+    """What the pair does to a clock's hours, and to its minutes (``minute`` seconds a press)."""
+    hours = {**{a: {"add": 3600} for a in up}, **{a: {"add": -3600} for a in down}}
+    minutes = {**{a: {"add": minute} for a in up}, **{a: {"add": -minute} for a in down}}
+    return hours, minutes
 
 
 def clock_steps(
-    var: str, up: list[str], down: list[str], press: str | None
+    var: str, up: list[str], down: list[str], press: str | None, minute: int = 60
 ) -> list[dict[str, Any]]:
     """The steps of a joined clock: the hours by the pair, the key moving on, the minutes."""
-    hours = {**{a: {"add": 3600} for a in up}, **{a: {"add": -3600} for a in down}}
-    minutes = {**{a: {"add": 60} for a in up}, **{a: {"add": -60} for a in down}}
+    hours, minutes = clock_effects(up, down, minute)
     return [
         {"actions": up + down, "variable": var, "effect": hours},
         {"actions": [press]},
@@ -131,7 +172,7 @@ def held_steps(
     said = held_adds(str(field.get("said", ""))) if hold else None
     if hold is None or said is None or "values" in field:
         return
-    seconds = {"hour": 3600, "hours": 3600, "minute": 60, "minutes": 60}
+    seconds = {"hour": 3600, "hours": 3600, "minute": 60, "minutes": 60, "second": 1, "seconds": 1}
     for step in steps:
         effect = step.get("effect")
         if not isinstance(effect, dict):
@@ -144,7 +185,9 @@ def held_steps(
                 continue
             effect[hold] = {"add": amounts[0] * per}
         else:
-            effect[hold] = {"add": said[0]}
+            var = b.variables.get(str(step.get("variable")), {})
+            per = seconds.get(said[1], 1) if var.get("type") == "time" else 1
+            effect[hold] = {"add": said[0] * per}  # a time counts seconds: "ten minutes", 600
         step["actions"] = [*step["actions"], hold]
 
 

@@ -11,13 +11,20 @@ from __future__ import annotations
 
 import re
 
+from apbot.model.values import NUMBER_WORDS, words_to_number
 from apbot.read.build import Builder
 from apbot.read.held_guesses import drop_unused
 from apbot.read.text import Unit
 
 # a sentence that works a key, so begins a step: "Press SET again …", "Then hold ▲ …"
 _ACTS_RE = re.compile(
-    r"^(?:then,?\s+|now,?\s+|next,?\s+)?(?:press|touch|tap|push|hold|turn|use|keep)\b", re.I
+    r"^(?:then,?\s+|now,?\s+|next,?\s+)?(?:press|touch|tap|push|hold|turn)\b", re.I
+)
+# "Use ▲ …", "Keep holding SET …" work a key too, but only with its label right after: "Keep in
+# mind …", "Use only dry cloths …" are advice inside the step before
+_KEY_VERB_RE = re.compile(
+    r"^(?:[Tt]hen,?\s+|[Nn]ow,?\s+|[Nn]ext,?\s+)?(?:[Uu]se|[Kk]eep(?:\s+(?:holding|pressing))?)"
+    r"\s+(?:the\s+)?(?:[A-Z0-9][A-Z0-9+/-]*[A-Z0-9+]\b|[^\w\s\"'(])"
 )
 _MAX_STEPS = 9
 
@@ -51,7 +58,7 @@ def _prose(units: list[Unit], i: int) -> list[tuple[int, str]]:
     for u in units[i:]:
         if u.cells or u.bullet or u.step is not None or u.heading != units[i].heading:
             break
-        if not out or _ACTS_RE.match(u.text):
+        if not out or _ACTS_RE.match(u.text) or _KEY_VERB_RE.match(u.text):
             if len(out) >= _MAX_STEPS:
                 break
             out.append((len(out) + 1, u.text))
@@ -151,10 +158,11 @@ def drop_adjuster_settings(b: Builder, adjuster: list[str]) -> None:
                 drop_unused(b, str(var))
 
 
-_NUMBER_WORDS = {"two": 2, "five": 5, "ten": 10, "twenty": 20, "fifty": 50, "hundred": 100}
+# (not "a" / "an": "adds a lot" says no amount)
+_NUMBER_WORD = "|".join(sorted((w for w in NUMBER_WORDS if len(w) > 2), key=len, reverse=True))
 # "(MEM held 2 s adds ten months)", "holding ADJ adds 10 cm at a time"
 _HELD_ADDS_RE = re.compile(
-    r"\b(?:held|holding)\b[^.()]{0,25}?\badds?\s+(\d+|two|five|ten|twenty|fifty|hundred)\s+([a-z]+)",
+    rf"\b(?:held|holding)\b[^.()]{{0,25}}?\badds?\s+(\d+|(?:{_NUMBER_WORD})\b)\s+([a-z]+)",
     re.I,
 )
 
@@ -165,9 +173,10 @@ def held_adds(text: str) -> tuple[int, str] | None:
     m = _HELD_ADDS_RE.search(text)
     if not m:
         return None
-    raw = m.group(1).lower()
-    amount = int(raw) if raw.isdigit() else _NUMBER_WORDS[raw]
-    return amount, m.group(2).lower()
+    amount = words_to_number(m.group(1))
+    if amount is None or amount != int(amount):
+        return None
+    return int(amount), m.group(2).lower()
 
 
 def adjuster_hold(b: Builder, adjuster: list[str]) -> str | None:
