@@ -192,6 +192,20 @@ def test_capital_column_heads_over_one_quantity_each_are_a_table_written_upright
     assert _sideways(programmes) is None
 
 
+def test_a_table_of_one_unit_along_both_axes_is_not_read_sideways() -> None:
+    """A grill's limits per programme, every amount in °C, with a "--" and a wrapped note that
+    mix the columns: one unit both ways says nothing of which axis holds the choices."""
+    limits = """| Programme | usual | lowest | highest |
+|---|---|---|---|
+| STEAK | 220 °C | 190 °C (3 clicks | 250 °C (3 clicks |
+| | | down) | up) |
+| FISH | 170 °C | 150 °C (2 clicks | 190 °C (2 clicks |
+| | | down) | up) |
+| TOAST | -- | -- | -- |
+"""
+    assert _sideways(limits) is None
+
+
 def test_a_grid_with_a_blank_corner_is_no_keys_choices() -> None:
     spec = """| | JP | AU | CN |
 |---|---|---|---|

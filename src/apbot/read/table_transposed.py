@@ -70,6 +70,10 @@ def sideways_choices(units: list[Unit], i: int) -> list[str] | None:
         return choices
     if len(rows) < 2 or all(_kind_of(c) == "word" for r in rows for c in r[1:]):
         return None  # a table of words only: no amounts to tell its axes apart
+    if len({_kind_of(c) for r in rows for c in r[1:]} - {"word"}) == 1:
+        # "| Programme | standard | lower end | upper end |" over rows of °C only: one unit
+        # along both axes tells neither apart (a "--" or a wrapped line's word mixes a column)
+        return None
     by_row = sum(_one_kind(r[1:]) for r in rows)
     if 2 * by_row <= len(rows):
         return None
