@@ -156,12 +156,8 @@ def why_missed(
 
 def value_shape(manual: str, names: list[str]) -> str:
     """How the manual writes a setting's values: the shape of the line holding most of them."""
-    best, line = 0, ""
-    for candidate in manual.splitlines():
-        low = candidate.lower()
-        hits = sum(1 for name in names if re.search(rf"(?<![a-z]){re.escape(name)}(?![a-z])", low))
-        if hits > best:
-            best, line = hits, candidate.strip()
+    best, line = _most_named(manual, names)
+    line = line.strip()
     if best == 0:
         return "inside-words"
     together = "one-line" if best == len(names) else "spread"
@@ -266,15 +262,20 @@ def note_kind(what: str) -> str:
     return "values-or-other"
 
 
-def values_line(manual: str, names: list[str]) -> str:
-    """The line naming most of ``names`` (the one :func:`value_shape` judges)."""
+def _most_named(manual: str, names: list[str]) -> tuple[int, str]:
+    """The first line naming the most of ``names``, with how many it names (0, "" for none)."""
     best, line = 0, ""
     for candidate in manual.splitlines():
         low = candidate.lower()
         hits = sum(1 for name in names if re.search(rf"(?<![a-z]){re.escape(name)}(?![a-z])", low))
         if hits > best:
             best, line = hits, candidate
-    return line
+    return best, line
+
+
+def values_line(manual: str, names: list[str]) -> str:
+    """The line naming most of ``names`` (the one :func:`value_shape` judges)."""
+    return _most_named(manual, names)[1]
 
 
 def key_place(manual: str, line: str, keys: set[str]) -> str:
