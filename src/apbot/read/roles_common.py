@@ -246,8 +246,14 @@ def _short_press_noun(b: Builder, key: ActionInfo, mentions: list[int]) -> str:
     press: privacy code"): the setting's name as users say it, not the key's."""
     if key.skill != "press" or key.token not in _BARE_KEYS:
         return ""
+    return _first_named(b, mentions, _SHORT_PRESS_RE)
+
+
+def _first_named(b: Builder, mentions: list[int], pattern: re.Pattern[str]) -> str:
+    """The words ``pattern`` captures in the first of a key's sentences it matches, as a
+    variable name; "" when none matches."""
     for i in mentions:
-        m = _SHORT_PRESS_RE.search(b.manual.units[i].text)
+        m = pattern.search(b.manual.units[i].text)
         if m:
             return "_".join(words(m.group(1)))
     return ""
@@ -283,11 +289,7 @@ def _unit_key_sets(b: Builder, key: ActionInfo, mentions: list[int]) -> str:
     its step; "" when the key is no such key or no sentence names it."""
     if key.token not in _UNIT_KEYS:
         return ""
-    for i in mentions:
-        m = _SETS_TIME_RE.search(b.manual.units[i].text)
-        if m:
-            return "_".join(words(m.group(1)))
-    return ""
+    return _first_named(b, mentions, _SETS_TIME_RE)
 
 
 def turns(actions: list[ActionInfo]) -> tuple[list[str], list[str]]:
