@@ -201,6 +201,13 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "soldering_station": 3,
     "av_receiver": 3,
     "power_station": 3,
+    # The twenty-third blind set (helper blind26n, 7 December 2026, the third 7 December session):
+    # blind for this round's work.
+    "kitchen_timer": 3,
+    "grain_mill": 4,
+    "projector": 3,
+    "nail_drill": 3,
+    "salt_chlorinator": 3,
 }
 
 
