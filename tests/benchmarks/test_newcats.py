@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from apbot.bench.newcats_goal_sizes import DEVELOPMENT_GOAL_VARIABLES
 from apbot.bench.suite import (
     CATEGORIES,
-    DEVELOPMENT_GOAL_VARIABLES,
     HELD_OUT_CATEGORIES,
     load_suite,
 )

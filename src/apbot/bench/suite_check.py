@@ -12,9 +12,9 @@ from collections.abc import Iterator
 from pathlib import Path
 
 from apbot.bench.goal_checks import CHECKS, goal_findings
+from apbot.bench.newcats_goal_sizes import DEVELOPMENT_GOAL_VARIABLES
 from apbot.bench.oracle import oracle_plan, run_task_with_plan
 from apbot.bench.suite import (
-    DEVELOPMENT_GOAL_VARIABLES,
     GOAL_VARIABLES,
     SuiteAppliance,
     Task,
