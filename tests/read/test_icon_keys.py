@@ -4,7 +4,8 @@ from __future__ import annotations
 
 from apbot.read import read_manual
 from apbot.read.labels import find_labels
-from apbot.read.text import _KEEP, parse_manual
+from apbot.read.text import parse_manual
+from apbot.read.text_chars import _KEEP
 from apbot.read.text_icons import name_icons
 
 FAN_HEATER = """# Bathroom fan heater

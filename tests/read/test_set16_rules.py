@@ -101,7 +101,7 @@ def test_a_tap_that_moves_the_thing_by_an_amount_is_the_step() -> None:
 
 
 def test_the_one_icon_no_key_word_names_is_the_key_never_named() -> None:
-    from apbot.read.text import _KEEP
+    from apbot.read.text_chars import _KEEP
     from apbot.read.text_sign_keys import name_signed_keys
 
     text = "③  ☀ — brightness.\n④  ⌛ — auto-off.\n\nTouch ⌛ to choose the auto-off time."
@@ -110,7 +110,7 @@ def test_the_one_icon_no_key_word_names_is_the_key_never_named() -> None:
 
 
 def test_a_warning_sign_apart_from_the_keys_legend_is_no_key() -> None:
-    from apbot.read.text import _KEEP
+    from apbot.read.text_chars import _KEEP
     from apbot.read.text_sign_keys import name_signed_keys
 
     text = "❋ — blower level.\n\n⚠ — hot grille. Let it cool.\n\nPress ❋ to change the level."

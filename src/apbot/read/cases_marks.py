@@ -14,7 +14,8 @@ from typing import Any
 
 from apbot.read.build import Builder
 from apbot.read.cases_tables import _norm, _parent_values
-from apbot.read.text import Unit, default_marks
+from apbot.read.text import Unit
+from apbot.read.text_chars import default_marks
 
 _DASHES = {"–", "—", "-", "‐", "x", "×", "no", "n/a"}
 

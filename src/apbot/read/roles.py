@@ -16,7 +16,7 @@ from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder, united_amounts
 from apbot.read.labels import words
 from apbot.read.roles_again import toggled_again
-from apbot.read.roles_amounts import ADD_RE, assign_amounts, assign_dials, assign_leftovers
+from apbot.read.roles_amounts import ADD_RE, assign_amounts
 from apbot.read.roles_common import (
     FUNCTION_WORDS,
     NUMERIC_WORDS,
@@ -52,6 +52,7 @@ from apbot.read.roles_lists import (
 from apbot.read.roles_locks import assign_locks
 from apbot.read.roles_menu import assign_menu
 from apbot.read.roles_nounpads import noun_pads
+from apbot.read.roles_own_dials import assign_dials, assign_leftovers
 from apbot.read.roles_pads import (
     codes_shown,
     column_keys,
