@@ -24,6 +24,7 @@ def says_power_on(view: Model, text: Text, goal: Goal) -> bool:
         j = k + 1
         while j < n and (concept(text.word(j)) in view.appliance_words or text.word(j) == "the"):
             j += 1
+        j = _past_qualified_unit(view, text, j)
         if text.word(j) not in ("on", "up"):
             continue
         if text.word(j + 1) == "to" and text.word(j + 2) in START_WORDS | {"run"}:
@@ -140,3 +141,14 @@ def _mode_word(view: Model, word: str) -> bool:
         for var, _value, stems, weight in view.phrases
         if weight >= 1.0 and view.infos[var].role == "setting"
     )
+
+
+def _past_qualified_unit(view: Model, text: Text, j: int) -> int:
+    """ "turn the parent unit on": one word that names no setting before a word of the
+    appliance is part of its name (the parent unit, the base station); past both, or ``j``."""
+    said = text.stems[j] if j < len(text.stems) else ""
+    named = any(said in own_stems(info) for info in view.infos.values())
+    qualifier = text.word(j).isalpha() and said not in view.appliance_words and not named
+    if qualifier and concept(text.word(j + 1)) in view.appliance_words:
+        return j + 2
+    return j
