@@ -271,3 +271,23 @@ def test_below_and_above_are_the_low_and_high_limits() -> None:
 def test_a_qualified_unit_turned_on_is_the_power() -> None:
     """ "turn the control unit on": a word before the appliance's own noun is part of its name."""
     assert _goal(AQUARIUM, "Turn the control unit on.") == {"power": "on"}
+
+
+FAN = """
+appliance: {id: fan_9, category: desk_fan, name: "Aerly D1 desk fan", brand: A}
+controls:
+  - {id: speed_key, kind: button, label: "SPEED"}
+variables:
+  speed: {type: discrete, values: [low, mid, high, auto], initial: low}
+actions:
+  press_speed: {control: speed_key}
+features:
+  speed:
+    - {actions: [press_speed], variable: speed, effect: next}
+"""
+
+
+def test_a_choice_left_to_the_appliance_is_auto() -> None:
+    """ "let it choose the speed": the user hands the choice over, the AUTO value."""
+    assert _goal(FAN, "Let it choose the speed by itself tonight.") == {"speed": "auto"}
+    assert _goal(FAN, "Let the fan pick the speed.") == {"speed": "auto"}

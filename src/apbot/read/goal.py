@@ -48,6 +48,7 @@ from apbot.read.goal_hourly import hourly_periods
 from apbot.read.goal_hundreds import said_hundreds
 from apbot.read.goal_kelvin import kelvin_words
 from apbot.read.goal_kinds import kind_numbers
+from apbot.read.goal_left_to_it import left_to_it
 from apbot.read.goal_limits import limit_numbers
 from apbot.read.goal_listed import listed_outside
 from apbot.read.goal_mute import muted_volume
@@ -176,6 +177,7 @@ def parse_instruction(
         listed_outside(view, text, goal, claimed, where, outside, manual or "")
     kelvin_words(view, text, goal, claimed, where)
     halfway_levels(view, text, goal, claimed, where)
+    left_to_it(view, text, goal, claimed)
     superlatives(view, text, goal, claimed, where)
     named_units(view, text, goal, claimed, where)
     said_units(view, goal)
