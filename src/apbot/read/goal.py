@@ -48,6 +48,8 @@ from apbot.read.goal_hourly import hourly_periods
 from apbot.read.goal_hundreds import said_hundreds
 from apbot.read.goal_kelvin import kelvin_words
 from apbot.read.goal_kinds import kind_numbers
+from apbot.read.goal_left_to_it import left_to_it
+from apbot.read.goal_limits import limit_numbers
 from apbot.read.goal_listed import listed_outside
 from apbot.read.goal_mute import muted_volume
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
@@ -73,6 +75,7 @@ from apbot.read.goal_remarks import without_remarks
 from apbot.read.goal_scales import superlatives
 from apbot.read.goal_scheduled_states import scheduled_states
 from apbot.read.goal_selector import on_auto_off
+from apbot.read.goal_shown_levels import shown_levels
 from apbot.read.goal_signed import signed_changes
 from apbot.read.goal_spans import time_spans
 from apbot.read.goal_spelling import joined_compounds
@@ -145,6 +148,7 @@ def parse_instruction(
     goal: Goal = {}
     claimed: set[int] = set()
     where: dict[str, int] = {}  # the token each setting was read from
+    shown_levels(view, text, goal, claimed, where)  # before a looser name: "clean" for PURIFIED
     matches = value_matches(view, text)
     for match in matches:
         if match.var in goal or any(k in claimed for k in range(match.start, match.end)):
@@ -163,6 +167,7 @@ def parse_instruction(
     mentions = distinct(in_weeks(text, find_mentions(text.tokens, skip=claimed), days))
     mentions = time_spans(view, text, mentions, goal, claimed, where)
     mentions = kind_numbers(view, text, mentions, goal, claimed, where)
+    mentions = limit_numbers(view, text, mentions, goal, claimed, where)
     counting = assign_mentions(view, text, mentions, goal, claimed, where, outside)
     twin_numbers(view, text, mentions, goal, claimed, where)
     numbered_times(view, text, mentions, goal, claimed, where)
@@ -172,6 +177,7 @@ def parse_instruction(
         listed_outside(view, text, goal, claimed, where, outside, manual or "")
     kelvin_words(view, text, goal, claimed, where)
     halfway_levels(view, text, goal, claimed, where)
+    left_to_it(view, text, goal, claimed)
     superlatives(view, text, goal, claimed, where)
     named_units(view, text, goal, claimed, where)
     said_units(view, goal)

@@ -25,7 +25,7 @@ from apbot.read.goal_name_context import (
     _tail_of_other_name,
 )
 from apbot.read.goal_phrases import PARTIAL
-from apbot.read.goal_scales import at_its_limit
+from apbot.read.goal_scale_kinds import at_its_limit
 from apbot.read.goal_shortened import (
     SYNONYM_STEMS,
     abbreviated_synonym,

@@ -220,6 +220,8 @@ def _said_off(text: Text, k: int) -> bool:
         return True
     if _turned_off(text, j) or (text.word(j).isalpha() and _turned_off(text, _before(text, j))):
         return True  # "turn off the mist", "turn off the automatic watering"
+    if _never_let(text, k):
+        return True  # "never let it go to sleep": the SLEEP after a while, off
     for d in range(1, 4):
         word = text.word(k + d)
         if word in CLAUSE_ENDS or word in (",", "on", ""):
@@ -227,6 +229,18 @@ def _said_off(text: Text, k: int) -> bool:
         if word in ("off", "disabled"):
             return True
     return False
+
+
+_LET_FILLERS = frozenset({"it", "them", "go", "to", "fall", "into", "the", "a"})
+
+
+def _never_let(text: Text, k: int) -> bool:
+    """ "never let it go to sleep", "don't let it dim": what the setting named at ``k`` does
+    by itself is forbidden, so the setting is off."""
+    j = k - 1
+    while j > 0 and text.word(j) in _LET_FILLERS:
+        j -= 1
+    return text.word(j) == "let" and text.word(j - 1) in ("never", "don't", "dont", "not")
 
 
 _OFF_VERBS = frozenset({"turn", "switch", "shut", "turning", "switching"})

@@ -7,6 +7,7 @@ operation under way. Read from the model's own names and procedures only.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable
 from typing import TYPE_CHECKING, Any
 
@@ -38,6 +39,10 @@ _OPERATION_NAMES = frozenset(
 
 
 START_LABELS = ("start", "run", "go", "begin", "dispense", "pour")
+
+_PLAY_STOP = re.compile(r"[▶►]\s*/?\s*[■‖⏸⏹]|⏯")
+"""A key marked play-and-stop ("▶/■", "▶‖"), with no word: it starts and stops the work, so
+the switch it toggles is the running state (a lone "▶" is as often an arrow: "next")."""
 
 
 def steps_of(model: ApplianceModel) -> Iterable[tuple[str, int, Step | AnywhereStep]]:
@@ -83,9 +88,11 @@ def mark_power_and_running(model: ApplianceModel, infos: dict[str, VarInfo]) -> 
     for _feature, _index, step in steps_of(model):
         pressed = [a for a in step.actions if model.actions[a].skill == "press"]
         labels = " ".join(control_labels(model, pressed)).casefold()
-        if not any(word in name_words(labels) for word in START_LABELS):
+        play_stop = bool(_PLAY_STOP.search(labels))
+        if not play_stop and not any(word in name_words(labels) for word in START_LABELS):
             continue
         goes = any(isinstance(effect, GoTo) for _a, effect in step_effects(step))
+        goes = goes or (play_stop and any(e == "toggle" for _a, e in step_effects(step)))
         goes = goes or _named_for_key(step.variable or "", labels)
         targets = [step.variable] if step.variable and goes else []
         targets += list(step.set)

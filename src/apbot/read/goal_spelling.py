@@ -1,15 +1,20 @@
-"""Spellings rewritten before the instruction is tokenised: a hyphenated compound the model
-writes as one word, fractions in words ("half a litre"), "half power", and a number its speaker
-corrects at once ("speed 8 - no, make it seven": seven)."""
+"""Spellings rewritten before the instruction is tokenised: a compound the model writes as one
+word said hyphenated, in camel case or as two words, fractions in words ("half a litre"), "half
+power", and a number its speaker corrects at once ("speed 8 - no, make it seven": seven)."""
 
 from __future__ import annotations
 
+import itertools
 import re
 
 from apbot.read.goal_view import Model, own_stems
 from apbot.read.goal_vocab import stem
 
 _HYPHEN_PAIR = re.compile(r"\b([A-Za-z]{2,})-([A-Za-z]{2,})\b")
+# a brand's compound in camel case or as two words ("SmartStart", "smart start") for a model
+# word written as one (SMARTSTART): the way a name is spaced is not part of it
+_CAMEL_PAIR = re.compile(r"\b([A-Z]?[a-z]{2,})([A-Z][a-z]{2,})\b")
+_WORD = re.compile(r"[A-Za-z]{2,}")
 
 
 def joined_compounds(view: Model, instruction: str) -> str:
@@ -18,11 +23,27 @@ def joined_compounds(view: Model, instruction: str) -> str:
     words |= {s for _var, _value, stems, _weight in view.phrases for s in stems}
 
     def join(match: re.Match[str]) -> str:
-        whole = match[1] + match[2]
+        whole = (match[1] + match[2]).casefold()  # one lower-case word: no camel case to split
         return whole if stem(whole) in words else match[0]
 
-    text = _HALF_POWER.sub("50% power", _HYPHEN_PAIR.sub(join, _corrected(instruction)))
+    text = _HYPHEN_PAIR.sub(join, _corrected(instruction))
+    text = _joined_pairs(_CAMEL_PAIR.sub(join, text), words)
+    text = _HALF_POWER.sub("50% power", text)
     return _fractions(text)
+
+
+def _joined_pairs(text: str, words: set[str]) -> str:
+    """Two words one space apart whose joining is a model word ("smart start"), joined."""
+    found = list(_WORD.finditer(text))
+    out, last = [], 0
+    for first, second in itertools.pairwise(found):
+        if first.start() < last or text[first.end() : second.start()] != " ":
+            continue
+        whole = (first[0] + second[0]).casefold()
+        if stem(whole) in words:
+            out += [text[last : first.start()], whole]
+            last = second.end()
+    return "".join(out) + text[last:]
 
 
 _CORRECTED = re.compile(

@@ -1,6 +1,6 @@
-"""Power and start: the parts of a goal said with verbs — "switch it on", "start it", "don't
-start it yet", and a goal setting whose procedure ends by starting the appliance (a TIME
-DEFROST entry)."""
+"""Starting: the running part of a goal said with verbs — "start it", "don't start it yet", and a
+goal setting whose procedure ends by starting the appliance (a TIME DEFROST entry). Power said
+with verbs ("switch it on") is goal_power_said's."""
 
 from __future__ import annotations
 
@@ -17,9 +17,15 @@ from apbot.read.goal_held import (
     someone_else,
     users_own,
 )
+from apbot.read.goal_power_said import (
+    a_switch_state,
+    says_power_off,
+    says_power_on,
+    setting_names,
+    setting_words,
+)
 from apbot.read.goal_roles import doing_name
 from apbot.read.goal_text import (
-    ACT_VERBS,
     CLAUSE_ENDS,
     FILLERS,
     STRONG_VERBS,
@@ -30,8 +36,7 @@ from apbot.read.goal_text import (
     new_act,
     phrase_here,
 )
-from apbot.read.goal_values import generic
-from apbot.read.goal_view import Goal, Model, own_stems, step_effects
+from apbot.read.goal_view import Goal, Model, step_effects
 from apbot.read.goal_vocab import concept, stem
 from apbot.read.number_tokens import tokenize
 
@@ -48,9 +53,9 @@ def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = Fals
     """Power on when asked; the running variable on (or off) when the instruction says so, a
     goal setting's procedure starts it, or a delay counts down from now (``counting``)."""
     for name, info in view.infos.items():
-        if info.role == "power" and name not in goal and _says_power_on(view, text, goal):
+        if info.role == "power" and name not in goal and says_power_on(view, text, goal):
             goal[name] = info.on
-        elif info.role == "power" and name not in goal and _says_power_off(view, text):
+        elif info.role == "power" and name not in goal and says_power_off(view, text):
             goal[name] = info.off
             return  # switched off: nothing is started
     running = [n for n, i in view.infos.items() if i.role == "running"]
@@ -68,7 +73,11 @@ def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = Fals
     if family is None and doing:
         family = frozenset({stem(doing[0])})  # PRINTING is started by "print", no other verb
     start = _says_start(
-        text, family, _named_starts(view, text), settings=_setting_words(view), names=_names(view)
+        text,
+        family,
+        _named_starts(view, text),
+        settings=setting_words(view),
+        names=setting_names(view),
     )
     if start is None and doing:
         start = _own_verb(text, doing[0])  # "… and print.", "don't print yet"
@@ -141,117 +150,6 @@ def _procedure_start(view: Model, goal: Goal) -> tuple[str, Any] | None:
     return None
 
 
-def _says_power_on(view: Model, text: Text, goal: Goal) -> bool:
-    """ "turn the machine on", "switch on, ...", "power the bread maker up"."""
-    n = len(text.tokens)
-    switch_words = {s for i in view.infos.values() if i.role == "switch" for s in own_stems(i)}
-    for k, token in enumerate(text.tokens):
-        if token.text not in ("turn", "switch", "power", "switched", "turned"):
-            continue
-        if token.text in ("switched", "turned") and text.stems[k - 1] in switch_words:
-            continue  # "Keep Fresh switched on": that switch, not the power
-        j = k + 1
-        while j < n and (concept(text.word(j)) in view.appliance_words or text.word(j) == "the"):
-            j += 1
-        if text.word(j) not in ("on", "up"):
-            continue
-        if text.word(j + 1) == "to" and text.word(j + 2) in START_WORDS | {"run"}:
-            continue  # "switch it on to run": a start, said with a switch's verb
-        if j > k + 1:
-            return True  # "turn it on", "power the bread maker up"
-        m = j + 1
-        while m < n and (concept(text.word(m)) in view.appliance_words or text.word(m) == "the"):
-            m += 1
-        if m >= n or text.word(m) in CLAUSE_ENDS | {",", "and", "then"} | _AFTER_ON:
-            return True  # "switch on, ...", "switch on the cooker and ...", "switch on in fan"
-        if _next_order(view, text, m, switch_words):
-            return True  # "switch on set the front ring to 6": a comma left out before the verb
-        if _mode_word(view, text.stems[m]) and not any(
-            i.role == "running" for i in view.infos.values()
-        ):
-            return True  # "switch on heating at 30 °C": on, in that mode
-    for k in range(n):  # "wake the panel", "wake it up"
-        if text.stems[k] == stem("wake") and (k == 0 or text.word(k - 1) in CLAUSE_ENDS | {","}):
-            return True
-    for k, token in enumerate(text.tokens):  # "with the machine left on", "leave it on"
-        if token.text in KEEPING | {"stay", "stays"}:
-            j = k + 1
-            while j < n and (
-                concept(text.word(j)) in view.appliance_words or text.word(j) == "the"
-            ):
-                j += 1
-            before = concept(text.word(k - 1)) in view.appliance_words
-            if (
-                text.word(j) == "on"
-                and (j > k + 1 or before)
-                and text.word(j + 1) in (CLAUSE_ENDS | {",", "and", "then", ""})
-                and not _a_switch_state(view, text, goal, j)
-            ):
-                return True
-    return False
-
-
-_CONDITIONS = frozenset({"when", "once", "after", "if", "until", "before", "let", "don't", "dont"})
-_CONDITIONS |= frozenset({"not", "never", "then", "afterwards", "later"})  # "…, then switch it off"
-
-
-def _next_order(view: Model, text: Text, m: int, switch_words: set[str]) -> bool:
-    """The word at ``m`` opens the next order ("Power on use the bake-only menu", "switch on
-    pump the water out"): what was switched on is the appliance. Not a word of a switch or a
-    setting ("switch on steam" turns on the STEAM switch)."""
-    if text.stems[m] in switch_words or text.stems[m] in _setting_words(view):
-        return False
-    return text.word(m) in ACT_VERBS or text.stems[m] in STRONG_VERBS | WEAK_VERBS
-
-
-def _says_power_off(view: Model, text: Text) -> bool:
-    """ "switch the heater off.", "turn it off", "switch off the machine": the power, off — said
-    of now (not "switch it off when it's done", "after 2 hours", "let it turn itself off", nor
-    "dry the laundry, then switch it off": a later step)."""
-    n = len(text.tokens)
-    for k, token in enumerate(text.tokens):
-        if token.text not in ("turn", "switch", "power", "shut"):
-            continue
-        j = k + 1
-        while j < n and (
-            concept(text.word(j)) in view.appliance_words or text.word(j) in ("the", "it")
-        ):
-            j += 1  # "the machine", "it"
-        if text.word(j) != "off":
-            continue
-        m = j + 1
-        while m < n and (concept(text.word(m)) in view.appliance_words or text.word(m) == "the"):
-            m += 1
-        if j == k + 1 and m == j + 1:
-            continue  # "switch off" with no appliance named: perhaps a setting's
-        if text.word(m) not in CLAUSE_ENDS | {"", ",", "and", "then"}:
-            continue  # "switch off after 2 hours", "turn it off when done"
-        before = []
-        for d in range(1, 10):
-            if text.word(k - d) in CLAUSE_ENDS or k - d < 0:
-                break
-            before.append(text.word(k - d))
-        if not _CONDITIONS & set(before):
-            return True
-    return False
-
-
-def _setting_words(view: Model) -> frozenset[str]:
-    """Concepts that name a setting outright (its own name or label; not generic words)."""
-    return frozenset(k for k in _names(view) if not generic(k) or k == concept("program"))
-
-
-def _names(view: Model) -> frozenset[str]:
-    """Every word that names a setting ("heat" of HEAT 3-9), generic ones too."""
-    return frozenset(
-        key
-        for info in view.infos.values()
-        if info.role == "setting"
-        for key, weight in info.vocab.items()
-        if weight >= 0.8
-    )
-
-
 def _running_now(view: Model, text: Text, goal: Goal) -> bool:
     """ "…, locked, and running": the appliance asked to be running (not "running low", nor
     "with the circulation running": a switch's state)."""
@@ -259,27 +157,8 @@ def _running_now(view: Model, text: Text, goal: Goal) -> bool:
         token.text == "running"
         and text.word(k + 1) in CLAUSE_ENDS | {"", ","}
         and not any(text.word(k - d) in _DENIALS for d in range(1, 4))
-        and not _a_switch_state(view, text, goal, k)
+        and not a_switch_state(view, text, goal, k)
         for k, token in enumerate(text.tokens)
-    )
-
-
-def _a_switch_state(view: Model, text: Text, goal: Goal, k: int) -> bool:
-    """The word before k names a switch the goal sets, so the state said at k ("keep warm on",
-    "with the circulation running") is that switch's, not the appliance's power."""
-    key = text.concepts[k - 1] if k >= 1 else ""
-    return any(
-        info.role == "switch" and name in goal and info.vocab.get(key, 0.0) >= 0.8
-        for name, info in view.infos.items()
-    )
-
-
-def _mode_word(view: Model, word: str) -> bool:
-    """The word is a one-word value of a programme-like setting (HEAT, COOL, DRY)."""
-    return any(
-        stems == (word,)
-        for var, _value, stems, weight in view.phrases
-        if weight >= 1.0 and view.infos[var].role == "setting"
     )
 
 
@@ -288,9 +167,6 @@ _GOING = frozenset(
     {"going", "started", "cooking", "heating", "running", "brewing", "washing", "blending"}
     | {"pouring", "dispensing", "working", "baking", "drying"}
 )
-
-
-_AFTER_ON = frozenset({"in", "at", "to", "with", "for"})
 
 
 def _named_starts(view: Model, text: Text) -> set[int]:

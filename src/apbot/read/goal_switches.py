@@ -83,6 +83,8 @@ def switches(
                 key, weight = next(iter(own)), 1.0  # "holiday mode" for a VACATION switch
             if weight <= 0 or (generic(key) and not _general_own(view, info, text, k)):
                 continue  # "heating on" names a HEAT switch; "hold off the watering" no switch
+            if text.stems[k] not in own and _in_a_named_phrase(view, info, text, k):
+                continue  # "movie sound mode": SOUND MODE's words, not a MUTE's synonym
             if _switching_verb(view, text, k):
                 continue  # "Switch the iron on": the verb, not an AUTO SWITCH-OFF's own word
             if _anothers_name(view, goal, info, text.stems[k]):
@@ -143,11 +145,39 @@ def switches(
         ):
             last += 1
         positive = not (negative_around(text, k) or negative_around(text, last))
+        if text.word(k) in _SILENCING and text.stems[k] in own:
+            positive = not _denied_before(text, k)  # "mute it" turns a MUTE switch on
         assert info.on is not None and info.off is not None
         goal[name] = info.on if positive else info.off
         if where is not None:
             where[name] = k
         claimed.add(k)
+
+
+_SILENCING = frozenset({"mute", "silence"})
+_DENIALS = frozenset({"don't", "dont", "not", "never", "no", "without"})
+
+
+def _in_a_named_phrase(view: Model, info: VarInfo, text: Text, k: int) -> bool:
+    """The word at ``k`` is one of another variable's own name words, said with another of
+    them beside it ("sound mode" of SOUND MODE): that name, not a synonym of this switch."""
+    for other in view.infos.values():
+        words = own_stems(other)
+        named = other is not info and text.stems[k] in words and len(words) > 1
+        if named and phrase_here(text, k, words - {text.stems[k]}):
+            return True
+    return False
+
+
+def _denied_before(text: Text, k: int) -> bool:
+    """ "don't mute it": a denial in the three words before ``k``, in its clause."""
+    for d in range(1, 4):
+        word = text.word(k - d)
+        if word in CLAUSE_ENDS or word == ",":
+            return False
+        if word in _DENIALS:
+            return True
+    return False
 
 
 def _lamp_word(view: Model, info: VarInfo, word: str) -> bool:

@@ -83,7 +83,7 @@ _SWITCH_OFF_NAMES = frozenset({"off", "sleep"})
 def unitless_duration(view: Model, text: Text, mention: Mention, goal: Goal) -> str | None:
     """A duration for the one open number setting named a time but read without a unit (set in
     ``goal``, the number as said: "five minutes" is 5), or None."""
-    unit = mention.unit or text.word(mention.end - 1)  # "ten minutes": the word said
+    unit = mention.unit or _said_unit(text, mention)
     if mention.kind != "duration" or unit.casefold() not in TIME_UNITS:
         return None
     open_settings = [
@@ -140,18 +140,28 @@ def _listed_minutes(
 
 
 def _offered_lengths(info: VarInfo) -> bool:
-    """Two or more bare numbers and, besides them, only an OFF: how long, of no unit read."""
+    """Two or more bare numbers and, besides them, only an OFF (and perhaps an AUTO: a ramp
+    OFF / AUTO / 5 … 45 lets the machine choose the length): how long, of no unit read."""
     var = info.var
     if info.dimension is not None or not isinstance(var, DiscreteVariable):
         return False
     numbers = [v for v in info.values if bare_number(v) is not None]
-    rest = [v for v in info.values if bare_number(v) is None]
-    return len(numbers) >= 2 and all(str(v).casefold() == "off" for v in rest) and len(rest) == 1
+    rest = sorted(str(v).casefold() for v in info.values if bare_number(v) is None)
+    return len(numbers) >= 2 and rest in (["off"], ["auto", "off"])
 
 
 def _named_a_time(info: VarInfo) -> bool:
     words = [w.casefold() for w in name_words(info.var.label or "") + name_words(info.name)]
     return any(word in _TIME_NAMES or word in _SWITCH_OFF_NAMES for word in words)
+
+
+def _said_unit(text: Text, mention: Mention) -> str:
+    """The last unit of time said within the duration: "ten minutes", "an hour and a half"
+    (its "hour": the words after it only add a part), "" when none is said."""
+    for k in range(mention.end - 1, mention.start - 1, -1):
+        if text.word(k).casefold() in TIME_UNITS:
+            return text.word(k)
+    return ""
 
 
 def _seconds_per(unit: str) -> float:

@@ -100,6 +100,8 @@ def doer_forms(word: str) -> list[str]:
         if base[-1] == base[-2] and base[-1] in _DOUBLED:
             base = base[:-1]
         return [base]
+    if w.endswith("ity") and len(w) > 6:
+        return [f"{w[:-3]}ifier"]  # HUMIDITY is set on "the humidifier", PURITY by "the purifier"
     if w.endswith("e"):
         return []  # TIME is no TIMER, FREEZE no FREEZER: a word in "-e" names a thing of its own
     return [f"{w}er"]

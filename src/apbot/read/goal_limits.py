@@ -1,0 +1,82 @@
+"""Alarm limits said as what they guard against: "warn me if it drops below 18 degrees or goes
+above 26" sets the LOW limit to 18 and the HIGH limit to 26. A model with a pair of limits (one
+named low/min, one high/max) takes a number said after "below"/"under" as its low limit and one
+after "above"/"over" as its high limit, whatever unit each was said in — read before quantities
+go to the setting of their kind, which would give both to the one that has a unit."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from apbot.read.goal_fit import fit
+from apbot.read.goal_text import Text
+from apbot.read.goal_values import bare_number, name_words
+from apbot.read.goal_view import Goal, Model, VarInfo, domain_values
+from apbot.read.numbers import Mention
+
+_BELOW = frozenset({"below", "under", "beneath"})
+_ABOVE = frozenset({"above", "over", "exceeds", "exceed", "beyond"})
+_LOW_NAMES = frozenset({"lo", "low", "min", "minimum", "lower"})
+_HIGH_NAMES = frozenset({"hi", "high", "max", "maximum", "upper"})
+
+
+def limit_numbers(
+    view: Model,
+    text: Text,
+    mentions: list[Mention],
+    goal: Goal,
+    claimed: set[int],
+    where: dict[str, int],
+) -> list[Mention]:
+    """Give each number said after "below" / "above" to the low / high limit; the rest left."""
+    low = _named(view, _LOW_NAMES)
+    high = _named(view, _HIGH_NAMES)
+    if not low or not high:
+        return mentions
+    left: list[Mention] = []
+    for mention in mentions:
+        before = text.word(mention.start - 1)
+        side = low if before in _BELOW else high if before in _ABOVE else []
+        fits = [
+            (info, v)
+            for info in side
+            if info.name not in goal
+            if (v := _value(view, info, mention, goal)) is not None
+        ]
+        if len(fits) != 1:
+            left.append(mention)
+            continue
+        info, value = fits[0]
+        goal[info.name] = value
+        where[info.name] = mention.start
+        claimed.update(range(mention.start - 1, mention.end))
+    return left
+
+
+def _named(view: Model, words: frozenset[str]) -> list[VarInfo]:
+    return [
+        info
+        for info in view.infos.values()
+        if info.role == "setting"
+        and words & {w.casefold() for w in name_words(f"{info.name} {info.var.label or ''}")}
+    ]
+
+
+def _value(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
+    """The limit's value for the number: as its kind fits it, or its bare number as said."""
+    value = fit(view, info, mention, goal)
+    if value is not None:
+        return value
+    if mention.kind not in ("number", "quantity"):
+        return None
+    said = mention.value if mention.kind == "number" else _said_number(mention)
+    for candidate in domain_values(view, info, goal):
+        number = bare_number(candidate)
+        if number is not None and said is not None and abs(number - said) < 1e-6:
+            return candidate
+    return None
+
+
+def _said_number(mention: Mention) -> float | None:
+    """A temperature's number as said (its base unit is the degree Celsius), else none."""
+    return mention.value if mention.dimension == "temperature" else None
