@@ -98,3 +98,87 @@ def test_a_refused_keys_message_is_not_what_the_display_shows_while_running() ->
     model = _model()
     shown = model.variables["running"].show or {}  # type: ignore[attr-defined]
     assert "STOP FAN" not in shown.values()
+
+
+_ACTIONS_2 = [
+    "switch_power",
+    "press_m1",
+    "press_m2",
+    "press_m3",
+    "press_up",
+    "press_down",
+    "press_set",
+]
+
+_HOTPLATE = """\
+# Thermo H2 lab hotplate
+
+## The panel
+
+  ① POWER — mains on / off.
+  ② M1, M2, M3 — choose a stored recipe.
+  ③ ▲ / ▼ — plate heat up / down (5 °C a press).
+     In the SET menu: the next / previous value.
+  ④ SET — opens the menu and moves from BZ to DIM and back.
+
+## Stored recipes
+
+   Recipe | Factory heat | Typical use
+   -------+--------------+------------------------------
+   M1     | 60 °C        | agar, gentle warming
+   M2     | 120 °C       | solvents, evaporating
+   M3     | 250 °C       | digestion, ashing
+
+## Plate heat
+
+The plate heat runs from 30 °C to 300 °C in 5 °C steps.
+
+Warm-up times: to 100 °C : about 40 s     to 200 °C : about 90 s
+
+## The SET menu
+
+  BZ — buzzer volume. How loud the end signal sounds.
+     Values: OFF, 1, 2, 3.   Factory: 2.
+  DIM — display dimming. The display dims after this time without a key.
+     Values: OFF, 15, 30, 60 seconds.   Factory: 30.
+
+  1. Press SET. The display shows the buzzer volume, for example BZ 2.
+  2. Press ▲ or ▼ to choose a value.
+  3. Press SET. The display shows the dimming, for example DIM 30.
+"""
+
+
+def _hotplate() -> object:
+    return read_manual(_HOTPLATE, _ACTIONS_2).model
+
+
+def test_numbered_keys_a_legend_names_alone_choose_one_thing() -> None:
+    model = _hotplate()
+    spec = model.variables["recipe"]  # type: ignore[attr-defined]
+    assert [str(v) for v in spec.values] == ["m1", "m2", "m3"]
+    assert all(f"ch{k}" not in model.variables for k in (1, 2, 3))  # type: ignore[attr-defined]
+
+
+def test_letter_coded_lead_lines_are_a_settings_menu_the_entry_key_walks() -> None:
+    model = _hotplate()
+    menu = model.features["settings_menu"]  # type: ignore[attr-defined]
+    labels = [model.variables[s.variable].label for s in menu if s.variable]  # type: ignore[attr-defined]
+    assert labels == ["BZ", "DIM"]
+    assert menu[2].actions == ["press_set"]
+    dim = _by_label(model, "DIM")
+    assert [str(v).split()[0] for v in dim.values] == ["off", "15", "30", "60"]  # type: ignore[attr-defined]
+
+
+def test_the_pairs_own_quantity_said_as_noun_up_down_beside_a_menu() -> None:
+    model = _hotplate()
+    steps = model.features["set_plate_heat"]  # type: ignore[attr-defined]
+    spec = model.variables["plate_heat"]  # type: ignore[attr-defined]
+    assert steps[0].actions == ["press_up", "press_down"]
+    assert list(spec.ranges[0][:2]) == [30, 300]
+
+
+def test_two_quantities_side_by_side_are_no_range() -> None:
+    from apbot.read.values import find_ranges
+
+    assert find_ranges("to 100 °C : about 40 s     to 200 °C : about 90 s") == []
+    assert find_ranges("from 100 g to 2.0 kg")[0].high == 2000

@@ -27,6 +27,7 @@ _NUM_PART = re.compile(r"^([-−]?\d+(?:[.,]\d+)?)\s*([^\d\s].{0,8})?$")
 _SPELLED = r"\b{v}\s*\(\s*([A-Za-z][a-z]+)\s*\)"  # "C (Celsius)": the value's full name
 
 
+_VALUES_LABEL = re.compile(r"^\s*(?:values?|settings?|options?|choices?)\s*:\s*", re.IGNORECASE)
 _NAMED_STOP = re.compile(r"[A-Z]{2,6}|[A-Z][a-z]{1,5}")  # "AUTO", "Max": a word among numbers
 _SYMBOL_NAME = re.compile(r"([^\w\s(),]{1,3})\s+([A-Za-z][A-Za-z -]{1,30})")  # "△ nasal"
 DEFAULT_HEAD = re.compile(r"\b(?:factory|default|standard|preset|initial)\b", re.IGNORECASE)
@@ -101,6 +102,7 @@ def item_variable(b: Builder, item: MenuItem) -> str | None:
             and (cell := _cell_choices(b, item, name, text))
         ):
             return cell
+        text = _VALUES_LABEL.sub("", text).split(". ")[0]  # "Values: OFF, 5, 10 minutes. …"
         run = re.search(r"(?<![\w.])(?:--|\d)", text)  # "The setback runs 0 h - 2 h - …"
         parts = _parts(text) or (_parts(text[run.start() :]) if run else None)
         if parts:

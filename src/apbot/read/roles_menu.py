@@ -124,6 +124,13 @@ def find_items(b: Builder) -> list[MenuItem]:
             continue
         m = _LEAD_RE.match(unit.text)
         if m is None:
+            lead = _letter_lead(b, unit.text)
+            if lead is not None:  # "SLP — sleep delay. …": an item coded by letters alone
+                code, rest = lead
+                key = "@" + unit.heading
+                num = len(found.get(key, {})) + 1
+                item = found.setdefault(key, {}).setdefault(num, MenuItem(code, _name_of(rest), i))
+                item.texts += _body(b, i, key, rest[len(item.name) :])
             continue
         rest = m.group("rest")
         if re.search(rf"\b{re.escape(m.group('pre'))}-?\d", rest):
@@ -147,6 +154,23 @@ def find_items(b: Builder) -> list[MenuItem]:
     return []
 
 
+# "SLP — sleep delay.": a code of capitals, a dash and the setting it names in small letters
+_LETTER_LEAD_RE = re.compile(
+    r"^\s*(?P<code>[A-Z]{2,4})\s+[—–]\s+(?P<rest>[a-z][a-z -]{2,40}[^|]*)$"
+)
+
+
+def _letter_lead(b: Builder, text: str) -> tuple[str, str] | None:
+    """(code, rest) of a line led by a code of letters alone ("SLP — sleep delay"), which is
+    no key's printed name (a key legend "TEMP — sets the heat" is not a menu item)."""
+    m = _LETTER_LEAD_RE.match(text)
+    if m is None:
+        return None
+    if any(lab.text and lab.text.upper() == m.group("code") for lab in b.labels.values()):
+        return None
+    return m.group("code"), m.group("rest")
+
+
 def _body(b: Builder, i: int, pre: str, tail: str) -> list[tuple[int, str]]:
     """The text under an item's own lead line, up to the next item or heading (at most 6 units)."""
     units = b.manual.units
@@ -154,6 +178,8 @@ def _body(b: Builder, i: int, pre: str, tail: str) -> list[tuple[int, str]]:
     for j in range(i + 1, min(i + 7, len(units))):
         text = units[j].text
         if _LEAD_RE.match(text) or units[j].heading != units[i].heading:
+            break
+        if pre.startswith("@") and _LETTER_LEAD_RE.match(text):
             break
         out.append((j, text))
     return out
@@ -166,6 +192,11 @@ def _tied_to_menu(b: Builder, pre: str, first: int) -> bool:
     headed so ("The setup menu" over "| P01 | Ice size | … |"; codes may be zero-padded) or
     one of the two lines right above the table names one."""
     units = b.manual.units
+    if pre.startswith("@"):  # letter codes: the section is a menu, or a sentence names both
+        code = re.compile(rf"(?<!\w){re.escape(units[first].text.split()[0])}(?!\w)")
+        return bool(_MENU_RE.search(units[first].heading)) or any(
+            code.search(u.text) and _MENU_RE.search(u.text) for u in units if not u.cells
+        )
     lead = units[first - 1].text if first else ""
     if lead.rstrip().endswith(":") and _MENU_RE.search(lead):
         return True
@@ -249,6 +280,13 @@ def _says_next(b: Builder, key: ActionInfo) -> bool:
     return any(_NEXT_RE.search(t) or _ON_TO_NEXT_RE.search(t) for t in told)
 
 
+def _names_second(b: Builder, key: ActionInfo, code: str) -> bool:
+    """Whether the key's own legend names the menu's second item ("moves from SLP to AO")."""
+    lab = b.labels.get(key.controls[0])
+    named = re.compile(rf"\bto\s+{re.escape(code)}(?!\w)")
+    return bool(lab and any(named.search(b.manual.units[i].text) for i in lab.mentions))
+
+
 def _next_key(b: Builder, keys: list[ActionInfo], entry: ActionInfo) -> ActionInfo | None:
     """The key that moves to the next item: a press of the entry's own key (or the entry
     itself when it is a press), else a key whose sentence says it goes to the next item."""
@@ -282,6 +320,8 @@ def assign_menu(
     # a pressed entry whose own sentence goes on ("Press MENU … the next code appears") is
     # also the key that goes on; a held entry's short press, or a key saying "next item"
     own = entry if entry.skill == "press" and _says_next(b, entry) else None
+    if own is None and entry.skill == "press" and _names_second(b, entry, items[1].code):
+        own = entry  # "SET — opens the menu and moves from SLP to AO"
     nxt = own or _next_key(b, [k for k in keys if k.name != entry.name], entry)
     if nxt is None:  # (a press that steps a chart, "AUTO MENU … the next food", is no menu)
         return set()
@@ -331,6 +371,11 @@ _HOME_NOUN_RE = re.compile(
     r"[^.:;]*[:,]\s*(?:the\s+)?(?P<noun>[a-z][a-z-]+(?:\s+[a-z][a-z-]+)?)\s+(?:up|down)\b",
     re.IGNORECASE,
 )
+# "▲ / ▼ — temperature up / down (10 °C a press). In the SET menu: the next value."
+_OWN_NOUN_RE = re.compile(
+    r"^[^A-Za-z]*[—–:-]\s*(?:the\s+)?(?P<noun>[a-z][a-z-]+(?:\s+[a-z][a-z-]+)?)\s+up\s*"
+    r"(?:/|and|or)\s*down\b"
+)
 _STOPS_RE = re.compile(r"\bstops\s+at\b|\bdoes\s+not\s+wrap\b|\bno\s+wrap", re.IGNORECASE)
 
 
@@ -345,7 +390,8 @@ def _home_quantity(b: Builder, up: str, down: str) -> None:
     for t in tokens:
         lab = b.labels.get(t)
         for i in lab.mentions if lab else []:
-            m = _HOME_NOUN_RE.search(b.manual.units[i].text)
+            text = b.manual.units[i].text
+            m = _HOME_NOUN_RE.search(text) or _OWN_NOUN_RE.match(text)
             if m:
                 nouns.setdefault(m.group("noun").lower(), i)
     if len(nouns) != 1:
@@ -354,10 +400,8 @@ def _home_quantity(b: Builder, up: str, down: str) -> None:
     ev = b.evidence(tokens)
     if ev.values and len(ev.values) >= 2:
         var = b.add_discrete(noun, ev.values, noun.upper(), ev)
-    elif ev.ranges:
+    else:  # (a range the manual gives the noun elsewhere: "The plate heat runs from 30 °C …")
         var = b.add_number(noun, noun.upper(), ev, cyclic=False)
-    else:
-        return
     if any(_STOPS_RE.search(b.manual.units[i].text) for t in tokens for i in b.labels[t].mentions):
         b.variables[var]["wrap"] = False
     effect = {up: "next", down: "prev"}
