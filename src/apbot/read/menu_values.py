@@ -27,6 +27,9 @@ _NUM_PART = re.compile(r"^([-−]?\d+(?:[.,]\d+)?)\s*([^\d\s].{0,8})?$")
 _SPELLED = r"\b{v}\s*\(\s*([A-Za-z][a-z]+)\s*\)"  # "C (Celsius)": the value's full name
 
 
+_VALUES_LABEL = re.compile(r"^\s*(?:values?|settings?|options?|choices?)\s*:\s*", re.IGNORECASE)
+_NAMED_STOP = re.compile(r"[A-Z]{2,6}|[A-Z][a-z]{1,5}")  # "AUTO", "Max": a word among numbers
+_SYMBOL_NAME = re.compile(r"([^\w\s(),]{1,3})\s+([A-Za-z][A-Za-z -]{1,30})")  # "△ nasal"
 DEFAULT_HEAD = re.compile(r"\b(?:factory|default|standard|preset|initial)\b", re.IGNORECASE)
 
 
@@ -56,6 +59,9 @@ def _parts(text: str) -> list[str] | None:
             if _OFF_MARK.match(piece):
                 out.append("off")
                 continue
+            if _NAMED_STOP.fullmatch(piece):  # "OFF, AUTO, 5, 10 …": a named stop among numbers
+                out.append(piece.lower())
+                continue
             m = _NUM_PART.match(piece)
             if m is None or (
                 m.group(2) and not unit_name(m.group(2).strip()) and m.group(2).strip()
@@ -71,7 +77,7 @@ def _parts(text: str) -> list[str] | None:
             out.append(m.group(1).replace(",", "."))
             if m.group(2):
                 unit = m.group(2).strip()
-    if sum(v != "off" for v in out) < 2:
+    if sum(bool(re.match(r"[-−]?\d", v)) for v in out) < 2:
         return None
     return [v if v == "off" or not unit else f"{v} {unit}" for v in out]
 
@@ -96,6 +102,7 @@ def item_variable(b: Builder, item: MenuItem) -> str | None:
             and (cell := _cell_choices(b, item, name, text))
         ):
             return cell
+        text = _VALUES_LABEL.sub("", text).split(". ")[0]  # "Values: OFF, 5, 10 minutes. …"
         run = re.search(r"(?<![\w.])(?:--|\d)", text)  # "The setback runs 0 h - 2 h - …"
         parts = _parts(text) or (_parts(text[run.start() :]) if run else None)
         if parts:
@@ -105,6 +112,8 @@ def item_variable(b: Builder, item: MenuItem) -> str | None:
         aside = re.search(r"\(([^()]*[/·,][^()]*)\)", text)  # "F1: temperature unit (C/F)"
         if not listed and aside and i == item.at:
             listed = [p.strip() for p in re.split(r"\s*[/·,]\s*", aside.group(1)) if p.strip()]
+        if len(listed) >= 2 and (drawn := _drawn(b, item, name, listed)):
+            return drawn
         if len(listed) >= 2 and not numeric_list(listed):
             values = []
             for v in listed:
@@ -127,6 +136,24 @@ def item_variable(b: Builder, item: MenuItem) -> str | None:
         _start(b, var, initial[0], r.unit, item.at)
     elif item.initial and (num := re.match(r"[-−]?\d+(?:\.\d+)?", item.initial)):
         _start(b, var, float(num.group(0)), r.unit, item.at)
+    return var
+
+
+def _drawn(b: Builder, item: MenuItem, name: str, listed: list[str]) -> str | None:
+    """Choices each printed as the symbol the display draws before its name ("▽ full face,
+    △ nasal, ∘∘ pillows"): the user says the name, the display shows the symbol; the start
+    is given by either."""
+    found = [_SYMBOL_NAME.fullmatch(v.strip()) for v in listed]
+    if not all(found):
+        return None
+    pairs = [(m.group(1), m.group(2).strip().lower()) for m in found if m]
+    init = (item.initial or "").strip().lower()
+    start = next((n for c, n in pairs if init and init in (c.lower(), n)), None)
+    ev = Evidence(
+        values=[n for _c, n in pairs], values_at=item.at, initial=start, initial_at=item.at
+    )
+    ev.shows = dict((n, c) for c, n in pairs)
+    var = b.add_discrete(name, [n for _c, n in pairs], item.code, ev)
     return var
 
 
@@ -254,7 +281,11 @@ def _listed(b: Builder, item: MenuItem, name: str, parts: list[str]) -> str:
     if item.initial:
         init = item.initial.strip()
         initial = next(
-            (p for p in parts if p.split()[0] == init or (p == "off" and _OFF_MARK.match(init))),
+            (
+                p
+                for p in parts
+                if p.split()[0] == init.lower() or (p == "off" and _OFF_MARK.match(init))
+            ),
             None,
         )
     if initial is None and (

@@ -118,6 +118,14 @@ HOLD_TO_SWITCH_RE = re.compile(  # "Press and hold for 3 seconds to switch the s
     re.IGNORECASE,
 )
 
+# "Held 3 seconds: switches SmartStart on or off." — a legend's hold clause, then what it switches
+HELD_CLAUSE_SWITCH_RE = re.compile(
+    r"\W*\b(?:held|hold(?:ing)?|(?:press|touch|push)\s+and\s+hold)(?:\s+(?:down\s+)?for)?\s+"
+    r"\d+(?:[.,]\d+)?\s*(?:s|sec|secs|seconds?)\s*[:,–-]\s*(?:it\s+)?(?:switches|turns|toggles)\s+"
+    r"(?:the\s+)?([A-Za-z][A-Za-z -]{2,30}?)\s+on\s+(?:or|and|/)\s+off\b",
+    re.IGNORECASE,
+)
+
 
 def held_switch(b: Builder, key: ActionInfo) -> tuple[str, int] | None:
     """What holding this key switches on and off, and where the manual says so: "COOK TIME
@@ -127,6 +135,7 @@ def held_switch(b: Builder, key: ActionInfo) -> tuple[str, int] | None:
         return None
     units = b.manual.units
     label = re.escape(b.labels[key.controls[0]].text)
+    own = set(words(b.labels[key.controls[0]].text))
     holding = re.compile(  # "Holding FAN switches the ioniser (see 5.6)."
         rf"\bholding\s+(?:the\s+)?{label}\s+(?:(?:key|button)\s+)?(?:switches|turns|toggles)\s+"
         r"(?:the\s+)?([a-z][a-z -]{2,30}?)"
@@ -137,7 +146,11 @@ def held_switch(b: Builder, key: ActionInfo) -> tuple[str, int] | None:
         after = units[i + 1].text if i + 1 < len(units) else ""
         for at, said in ((i, HOLD_TO_SWITCH_RE.search(units[i].text)),
                          (i + 1, HOLD_TO_SWITCH_RE.match(after)),
-                         (i, holding.search(units[i].text))):  # fmt: skip
+                         (i, holding.search(units[i].text)),
+                         (i, HELD_CLAUSE_SWITCH_RE.search(units[i].text)),
+                         (i + 1, HELD_CLAUSE_SWITCH_RE.match(after))):  # fmt: skip
+            if said and said.re is HELD_CLAUSE_SWITCH_RE and own & set(words(said.group(1))):
+                continue  # "SENSOR  Hold 2 s: switches the hand sensor on or off": its own
             if said and not lock_or_appliance(said.group(1)):
                 return said.group(1).lower(), at
     return None

@@ -65,9 +65,10 @@ def _hold_row(b: Builder, key: ActionInfo, at: int | None) -> bool:
     return bool(held.match(text)) or _hold_cell(b.manual.units[at]) or _held_clause(text)
 
 
-# "… Touch and hold 3 seconds: …", "Hold for 2 s to …": where a legend turns to the hold
+# "… Touch and hold 3 seconds: …", "Hold for 2 s to …", "Held 3 seconds: …": where a legend
+# turns to the hold
 _HOLD_CLAUSE = re.compile(
-    r"\b(?:(?:press|touch|push)\s+and\s+)?hold\b(?:\s+(?:it|the\s+key|for))?\s+\d", re.I
+    r"\b(?:(?:press|touch|push)\s+and\s+)?(?:hold|held)\b(?:\s+(?:it|the\s+key|for))?\s+\d", re.I
 )
 
 

@@ -40,7 +40,16 @@ _MENU_RE = re.compile(
 _SHOWS_RE = re.compile(r"\b(?:shows?|appears?|displays?|reads?|flash(?:es)?)\b", re.IGNORECASE)
 _HOLD_CLAUSE = re.compile(r"\b(?:hold\w*|\d+\s*s(?:ec\w*)?)\b[^.;|]*", re.IGNORECASE)
 _NEXT_RE = re.compile(r"\bnext\s+(?:item|parameter|setting|function|code|menu\s+item|step)\b", re.I)
+# "moves from one setting code to the next": the item's noun, then "to the next"
+_ON_TO_NEXT_RE = re.compile(
+    r"\b(?:item|parameter|setting|code)s?\b[^.;|]{0,20}\bto\s+the\s+next\b", re.IGNORECASE
+)
+_BARE_STEP = re.compile(r"^\W*(?:\d+[.)]\s*)?(?:press|touch|push|tap)\s+\S{1,12}\s*\.?\s*$", re.I)
 _VALUES_HEAD = re.compile(r"\b(?:values?|range|settings?|options?|choices?)\b", re.IGNORECASE)
+# a column headed as the code a small display prints ("| Code | Setting | Values |"); its
+# cells are short letter codes ("rA", "EP", "MASK"), numbered by their row's place
+_CODE_COLUMN = re.compile(r"^\W*(?:code|display\s+code)\W*$", re.IGNORECASE)
+_LETTER_CODE = re.compile(r"^[A-Za-z]{1,4}$")
 
 
 def _name_of(rest: str) -> str:
@@ -65,14 +74,38 @@ def _row_item(unit: Any) -> tuple[str, str, int, int] | None:
     return None
 
 
+def _headed_item(unit: Any) -> tuple[str, str, int] | None:
+    """(table key, name, code cell) of a row whose code sits in a column headed "Code" and is
+    a short word of letters ("| rA | Ramp time | OFF, AUTO, 5 … 45 |"): codes with no number,
+    which only their column's head tells from a setting's name."""
+    head = unit.header or ()
+    for k, cell in enumerate(unit.cells[:2]):
+        if k >= len(head) or not _CODE_COLUMN.match(head[k]):
+            continue
+        code = cell.strip()
+        named = k + 1 < len(unit.cells) and re.match(r"[A-Za-z]", unit.cells[k + 1].strip())
+        if named and _LETTER_CODE.match(code):
+            return "#" + "|".join(head), unit.cells[k + 1].strip(), k
+    return None
+
+
 def find_items(b: Builder) -> list[MenuItem]:
     """The menu's items in order, or [] when the manual has no numbered settings menu."""
     units = b.manual.units
     found: dict[str, dict[int, MenuItem]] = {}
+    last: MenuItem | None = None  # a headed-code item, which a row with no code goes on
     for i, unit in enumerate(units):
         if unit.cells:
             row = _row_item(unit)
-            if row is None:
+            headed = _headed_item(unit) if row is None else None
+            if headed is not None:
+                key, name, k = headed
+                row = key, name, len(found.get(key, {})) + 1, k
+            elif row is None:
+                if last is not None and unit.header and not unit.cells[0].strip():
+                    last.texts += [(i, c) for c in unit.cells[1:] if c.strip()]
+                else:
+                    last = None
                 continue
             pre, name, num, k = row
             code = unit.cells[k].strip()
@@ -87,9 +120,17 @@ def find_items(b: Builder) -> list[MenuItem]:
                     item.texts.append((i, cell))
             if len(name.split()) < len(item.name.split()):
                 item.name = name
+            last = item if headed is not None else None
             continue
         m = _LEAD_RE.match(unit.text)
         if m is None:
+            lead = _letter_lead(b, unit.text)
+            if lead is not None:  # "SLP — sleep delay. …": an item coded by letters alone
+                code, rest = lead
+                key = "@" + unit.heading
+                num = len(found.get(key, {})) + 1
+                item = found.setdefault(key, {}).setdefault(num, MenuItem(code, _name_of(rest), i))
+                item.texts += _body(b, i, key, rest[len(item.name) :])
             continue
         rest = m.group("rest")
         if re.search(rf"\b{re.escape(m.group('pre'))}-?\d", rest):
@@ -113,6 +154,23 @@ def find_items(b: Builder) -> list[MenuItem]:
     return []
 
 
+# "SLP — sleep delay.": a code of capitals, a dash and the setting it names in small letters
+_LETTER_LEAD_RE = re.compile(
+    r"^\s*(?P<code>[A-Z]{2,4})\s+[—–]\s+(?P<rest>[a-z][a-z -]{2,40}[^|]*)$"
+)
+
+
+def _letter_lead(b: Builder, text: str) -> tuple[str, str] | None:
+    """(code, rest) of a line led by a code of letters alone ("SLP — sleep delay"), which is
+    no key's printed name (a key legend "TEMP — sets the heat" is not a menu item)."""
+    m = _LETTER_LEAD_RE.match(text)
+    if m is None:
+        return None
+    if any(lab.text and lab.text.upper() == m.group("code") for lab in b.labels.values()):
+        return None
+    return m.group("code"), m.group("rest")
+
+
 def _body(b: Builder, i: int, pre: str, tail: str) -> list[tuple[int, str]]:
     """The text under an item's own lead line, up to the next item or heading (at most 6 units)."""
     units = b.manual.units
@@ -120,6 +178,8 @@ def _body(b: Builder, i: int, pre: str, tail: str) -> list[tuple[int, str]]:
     for j in range(i + 1, min(i + 7, len(units))):
         text = units[j].text
         if _LEAD_RE.match(text) or units[j].heading != units[i].heading:
+            break
+        if pre.startswith("@") and _LETTER_LEAD_RE.match(text):
             break
         out.append((j, text))
     return out
@@ -132,6 +192,11 @@ def _tied_to_menu(b: Builder, pre: str, first: int) -> bool:
     headed so ("The setup menu" over "| P01 | Ice size | … |"; codes may be zero-padded) or
     one of the two lines right above the table names one."""
     units = b.manual.units
+    if pre.startswith("@"):  # letter codes: the section is a menu, or a sentence names both
+        code = re.compile(rf"(?<!\w){re.escape(units[first].text.split()[0])}(?!\w)")
+        return bool(_MENU_RE.search(units[first].heading)) or any(
+            code.search(u.text) and _MENU_RE.search(u.text) for u in units if not u.cells
+        )
     lead = units[first - 1].text if first else ""
     if lead.rstrip().endswith(":") and _MENU_RE.search(lead):
         return True
@@ -202,7 +267,24 @@ def _says_next(b: Builder, key: ActionInfo) -> bool:
     """Whether a sentence naming ``key`` says it goes to the next item or setting ("Press MODE
     again for the next setting"), not to the next programme or food of a chart."""
     lab = b.labels.get(key.controls[0])
-    return bool(lab and any(_NEXT_RE.search(b.manual.units[i].text) for i in lab.mentions))
+    if lab is None:
+        return False
+    units = b.manual.units
+    told = [units[i].text for i in lab.mentions]
+    # "3. Press SET." "The next code appears.": a bare step's effect is the sentence after it
+    told += [
+        units[i + 1].text
+        for i in lab.mentions
+        if i + 1 < len(units) and _BARE_STEP.match(units[i].text)
+    ]
+    return any(_NEXT_RE.search(t) or _ON_TO_NEXT_RE.search(t) for t in told)
+
+
+def _names_second(b: Builder, key: ActionInfo, code: str) -> bool:
+    """Whether the key's own legend names the menu's second item ("moves from SLP to AO")."""
+    lab = b.labels.get(key.controls[0])
+    named = re.compile(rf"\bto\s+{re.escape(code)}(?!\w)")
+    return bool(lab and any(named.search(b.manual.units[i].text) for i in lab.mentions))
 
 
 def _next_key(b: Builder, keys: list[ActionInfo], entry: ActionInfo) -> ActionInfo | None:
@@ -235,9 +317,12 @@ def assign_menu(
     entry = find_entry(b, keys, items[0].code)
     if entry is None:
         return set()
-    nxt = _next_key(b, [k for k in keys if k.name != entry.name], entry) or (
-        entry if entry.skill == "press" and _says_next(b, entry) else None
-    )
+    # a pressed entry whose own sentence goes on ("Press MENU … the next code appears") is
+    # also the key that goes on; a held entry's short press, or a key saying "next item"
+    own = entry if entry.skill == "press" and _says_next(b, entry) else None
+    if own is None and entry.skill == "press" and _names_second(b, entry, items[1].code):
+        own = entry  # "SET — opens the menu and moves from SLP to AO"
+    nxt = own or _next_key(b, [k for k in keys if k.name != entry.name], entry)
     if nxt is None:  # (a press that steps a chart, "AUTO MENU … the next food", is no menu)
         return set()
     by_name = {k.name: k for k in b.infos}
@@ -275,4 +360,50 @@ def assign_menu(
         "features.settings_menu", f"{entry.name} opens the menu, {nxt.name} goes on", items[0].at
     )
     del pairs[base]
+    _home_quantity(b, ups[0], downs[0])
     return {entry.name, nxt.name, ups[0], downs[0]}
+
+
+# "▲  On the home screen: humidity up. In the menu: the next value.": what the pair moves
+# when no menu is open, said beside its use in the menu
+_HOME_NOUN_RE = re.compile(
+    r"\b(?:on|from|in|at)\s+the\s+(?:home|main|idle|standby|start)\s+(?:screen|display|view)\b"
+    r"[^.:;]*[:,]\s*(?:the\s+)?(?P<noun>[a-z][a-z-]+(?:\s+[a-z][a-z-]+)?)\s+(?:up|down)\b",
+    re.IGNORECASE,
+)
+# "▲ / ▼ — temperature up / down (10 °C a press). In the SET menu: the next value."
+_OWN_NOUN_RE = re.compile(
+    r"^[^A-Za-z]*[—–:-]\s*(?:the\s+)?(?P<noun>[a-z][a-z-]+(?:\s+[a-z][a-z-]+)?)\s+up\s*"
+    r"(?:/|and|or)\s*down\b"
+)
+_STOPS_RE = re.compile(r"\bstops\s+at\b|\bdoes\s+not\s+wrap\b|\bno\s+wrap", re.IGNORECASE)
+
+
+def _home_quantity(b: Builder, up: str, down: str) -> None:
+    """The pair that steps the menu's values also moves a quantity of its own on the home
+    screen ("▲ On the home screen: humidity up. In the menu: the next value."): that
+    quantity is a setting the pair changes directly, with the values its section lists
+    ("OFF ▸ 1 ▸ 2 … ▸ 8") and end stops when the manual says it stops."""
+    by_name = {k.name: k for k in b.infos}
+    tokens = [c for a in (up, down) for c in by_name[a].controls]
+    nouns: dict[str, int] = {}
+    for t in tokens:
+        lab = b.labels.get(t)
+        for i in lab.mentions if lab else []:
+            text = b.manual.units[i].text
+            m = _HOME_NOUN_RE.search(text) or _OWN_NOUN_RE.match(text)
+            if m:
+                nouns.setdefault(m.group("noun").lower(), i)
+    if len(nouns) != 1:
+        return
+    noun, at = next(iter(nouns.items()))
+    ev = b.evidence(tokens)
+    if ev.values and len(ev.values) >= 2:
+        var = b.add_discrete(noun, ev.values, noun.upper(), ev)
+    else:  # (a range the manual gives the noun elsewhere: "The plate heat runs from 30 °C …")
+        var = b.add_number(noun, noun.upper(), ev, cyclic=False)
+    if any(_STOPS_RE.search(b.manual.units[i].text) for t in tokens for i in b.labels[t].mentions):
+        b.variables[var]["wrap"] = False
+    effect = {up: "next", down: "prev"}
+    b.feature(f"set_{var}", [{"actions": [up, down], "variable": var, "effect": effect}])
+    b.note(f"variables.{var}", "the pair's own quantity on the home screen", at)

@@ -361,4 +361,41 @@ def named_choice_keys(b: Builder, keys: list[ActionInfo]) -> tuple[list[ActionIn
         if len(named) >= 3:
             noun = chosen.group("noun").lower().rstrip("s")
             return named, "programme" if noun == "program" else noun
+    return numbered_choice_keys(b, keys)
+
+
+# "③ CH1, CH2, CH3 — choose a working channel.": a legend of the keys alone, then what they choose
+_LEGEND_CHOICE = re.compile(
+    r"^(?P<keys>.+?)\s*[—–:-]+\s*(?:choose|chooses|select|selects|pick|picks)\s+"
+    r"(?:the|a|an|one|your)\s+(?:[a-z]+\s+)?(?P<noun>[a-z]{3,})\s*(?:[.;,(]|$)",
+    re.IGNORECASE,
+)
+_NUMBERED_LABEL = re.compile(r"([A-Za-z]{1,4})\s?-?(\d{1,2})")
+
+
+def numbered_choice_keys(b: Builder, keys: list[ActionInfo]) -> tuple[list[ActionInfo], str]:
+    """Keys printed as one prefix numbered from 1 (CH1, CH2, CH3; M1 … M4), whose legend line
+    names them alone and says what they choose ("CH1, CH2, CH3 — choose a working channel"):
+    each key goes to its own choice of that noun. Read before the keys' own evidence, where a
+    chart of the choices ("CH3 | 350 °C | large pads …") reads as one key's values."""
+    for unit in b.manual.units:
+        if unit.cells:
+            continue
+        text = re.sub(r"^[\W_\d①-⑳]+", "", unit.text)
+        m = _LEGEND_CHOICE.match(text)
+        if m is None:
+            continue
+        named = _dedupe_keys(_pressed_keys_in(b, keys, m.group("keys")))
+        rest = m.group("keys")
+        for k in named:
+            rest = rest.replace(b.labels[k.controls[0]].text, " ")
+        if len(named) < 2 or re.search(r"[A-Za-z0-9]", re.sub(r"\b(?:and|or)\b", " ", rest)):
+            continue  # (other words beside the keys: not a legend of the keys alone)
+        found = [_NUMBERED_LABEL.fullmatch(b.labels[k.controls[0]].text) for k in named]
+        if not all(found):
+            continue
+        prefixes = {f.group(1).upper() for f in found if f}
+        numbers = sorted(int(f.group(2)) for f in found if f)
+        if len(prefixes) == 1 and numbers == list(range(1, len(named) + 1)):
+            return named, m.group("noun").lower()
     return [], ""

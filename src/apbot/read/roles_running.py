@@ -20,6 +20,11 @@ from apbot.read.shapes import RUNNING_RE, STOP_WORDS
 from apbot.read.shown import RUNNING_CUE, shown_words
 from apbot.read.work_keys import starts_and_stops
 
+# "the menu cannot be opened … MENU shows STOP FIRST": what a key refused while it runs prints
+_REFUSED_RE = re.compile(
+    r"\b(?:cannot|can't|can\s+not)\s+be\b|\bis\s+refused\b|\bare\s+refused\b", re.IGNORECASE
+)
+
 
 def _start_setting(token: str) -> bool:
     """START TIME, START DELAY: "start" names an amount the key sets, not the start itself
@@ -72,7 +77,11 @@ def assign_running(
         var = b.unique("running", b.variables)
         b.variables[var] = {"type": "discrete", "values": ["off", "on"], "label": "RUN"}
         word, at = _state_word(
-            b, [i.token for i in starts + stops], RUNNING_CUE, re.compile(r"LOC|^C?L$|^Lc$", re.I)
+            b,
+            [i.token for i in starts + stops],
+            RUNNING_CUE,
+            re.compile(r"LOC|^C?L$|^Lc$", re.I),
+            _REFUSED_RE,
         )
         if word:
             b.variables[var]["show"] = {"off": "", "on": word}
@@ -137,11 +146,16 @@ def assign_running(
 
 
 def _state_word(
-    b: Builder, tokens: list[str], cue: re.Pattern[str], reject: re.Pattern[str] | None = None
+    b: Builder,
+    tokens: list[str],
+    cue: re.Pattern[str],
+    reject: re.Pattern[str] | None = None,
+    refusal: re.Pattern[str] | None = None,
 ) -> tuple[str, int | None]:
     """The word the panel shows in a state (running, locked): first in the sentences about the
     keys that enter it (the sentence that names the key, or the one right after it), then in any
-    sentence about the state; a word ``reject`` matches belongs to another state."""
+    sentence about the state; a word ``reject`` matches belongs to another state, and a
+    sentence ``refusal`` matches shows what a refused key prints, not the state."""
     keys = {lab.text for lab in b.labels.values() if lab.text}
     mentions = {m for t in tokens for m in mentions_of(b, t)}
     near = [i for i in b.context(tokens) if i < len(b.manual.units)]
@@ -150,6 +164,8 @@ def _state_word(
         text = b.manual.units[i].text
         if not cue.search(text) and not (i - 1 in mentions and i not in mentions):
             continue
+        if i in rest and refusal is not None and refusal.search(text):
+            continue  # "While it is running, MENU … cannot be opened: … show STOP FIRST"
         for word in shown_words(text, keys):
             if reject is None or not reject.search(word):
                 return word, i

@@ -254,6 +254,8 @@ def _ranges(text: str) -> list[Range]:
             low_in, high_in = rescale(lo, first, small), rescale(hi, unit, small)
             if low_in is not None and high_in is not None:  # "100 g – 2.0 kg": in grams
                 lo, hi, unit = low_in, high_in, small
+            elif (q1 := unit_of(first)) and (q2 := unit_of(unit)) and q1[0] != q2[0]:
+                continue  # "about 20 s  To 350 °C": two quantities side by side, no range
         if lo is None or hi is None or not lo < hi:
             continue
         if not unit and m.group(0).strip().lower().split()[1:2] == ["and"]:
