@@ -6,12 +6,14 @@ actions listed another way, sets the temperature before starting on one robot an
 another. Making the search itself order-free costs its pruning of tied paths (tie15: held out
 57 → 44), so the plan found is reordered afterwards instead: among the orders of its own macro
 actions that the belief accepts — every action allowed, every macro showing what it showed in
-the found order, the goal reached — the one that starts the appliance last (a manual sets,
-then starts: a setting changed while running may be refused or mean something else), makes the
-choices that change several settings at once (a programme and the defaults it puts back) before
-those that change one (what a choice resets is what a reader misses most easily), and otherwise
-follows the manual's order of the settings (the belief's variables, read in the manual's
-order). The choice then no longer depends on how the actions are listed.
+the found order, the goal reached — the one that makes the choices that change several settings
+at once (a programme and the defaults it puts back) before those that change one (what a choice
+resets is what a reader misses most easily), and otherwise follows the manual's order of the
+settings (the belief's variables, read in the manual's order). A key that starts or stops the
+appliance stays where the search put it: moving the start last cost more than it won (a keep-warm
+that a start resets, a timer refused while running that the explorer then misread: newcats 577
+→ 569), so only the settings on either side of it are reordered. The order of the settings
+then no longer depends on how the actions are listed.
 """
 
 from __future__ import annotations
@@ -41,7 +43,11 @@ def in_manual_order(compiled: CompiledModel, start: State, found: Plan) -> Plan:
     state = start
     ordered: list[MacroAction] = []
     while remaining:
-        for macro in sorted(remaining, key=lambda m: ranks[id(m)]):
+        # a macro that starts or stops the appliance stays where the search put it: the
+        # settings before it are reordered among themselves, those after it likewise
+        anchor = next((i for i, m in enumerate(remaining) if _runs(m)), len(remaining))
+        segment = remaining[: max(anchor, 1)]
+        for macro in sorted(segment, key=lambda m: ranks[id(m)]):
             rest = [m for m in remaining if m is not macro]
             after = _replay(compiled, state, [macro])
             if after is None:
@@ -59,14 +65,18 @@ def in_manual_order(compiled: CompiledModel, start: State, found: Plan) -> Plan:
     return Plan(found.goal, tuple(ordered), found.expanded, found.seconds, found.generated)
 
 
-def _rank(compiled: CompiledModel, macro: MacroAction, index: int) -> tuple[int, int, int, int]:
-    """Starting last; a choice that changes other settings too (a programme putting back its
-    defaults) before those that change one; then the manual's order of the first setting the
-    macro shows; the found order only between macros alike in all that."""
+def _runs(macro: MacroAction) -> bool:
+    """Whether the macro starts or stops the appliance (it changes a run state)."""
+    return any(any(w in n for w in RUN_WORDS) for n in macro.expect)
+
+
+def _rank(compiled: CompiledModel, macro: MacroAction, index: int) -> tuple[int, int, int]:
+    """A choice that changes other settings too (a programme putting back its defaults)
+    before those that change one; then the manual's order of the first setting the macro
+    shows; the found order only between macros alike in both."""
     names = list(compiled.model.variables)
-    starts = any(any(w in n for w in RUN_WORDS) for n in macro.expect)
     shown = [names.index(n) for n in macro.expect if n in compiled.model.variables]
-    return (int(starts), int(len(shown) < 2), min(shown, default=len(names)), index)
+    return (int(len(shown) < 2), min(shown, default=len(names)), index)
 
 
 def _replay(compiled: CompiledModel, state: State, macros: Sequence[MacroAction]) -> State | None:
