@@ -19,7 +19,7 @@ from typing import Any
 from apbot.agent.reader import DisplayReader
 from apbot.agent.repair import RepairError, add_indicator, set_display
 from apbot.agent.session import UNREADABLE, Executed, Session
-from apbot.agent.value_words import is_icon, names_value
+from apbot.agent.value_words import names_value
 from apbot.model.display import lamp_for
 from apbot.model.domain import all_values
 from apbot.model.schema import ApplianceModel, DiscreteVariable
@@ -147,16 +147,9 @@ def new_word(before: str, after: str, known: set[str]) -> str | None:
 
     >>> new_word("MIST 3  MANUAL", "WARM  MANUAL  MIST 3", {"mist", "manual"})
     'WARM'
-
-    A lamp may be an icon rather than a word (a moon for a night mode):
-
-    >>> new_word("⇄  ▮▮▯", "☾  ⇄  ▮▮▯", set())
-    '☾'
     """
     was = {w.casefold() for w in before.split()}
-    new = [
-        w for w in after.split() if (w.isalpha() or is_icon(w)) and w.casefold() not in was | known
-    ]
+    new = [w for w in after.split() if w.isalpha() and w.casefold() not in was | known]
     return new[0] if len(new) == 1 else None
 
 

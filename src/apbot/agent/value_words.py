@@ -8,7 +8,6 @@ values of the one setting whose key was pressed.
 from __future__ import annotations
 
 import re
-import unicodedata
 from collections.abc import Sequence
 from typing import Any
 
@@ -37,16 +36,12 @@ def names_value(spec: Any, name: str, word: str, value: Any, domain: Sequence[An
     True
     >>> names_value(None, "boost", "STD", "on", ["off", "on"])
     False
-    >>> [names_value(None, "night", "☾", v, ["off", "on"]) for v in ("on", "off")]
-    [True, False]
     """
     said, word_of = word.strip().casefold(), str(value).casefold()
     if spells_value(said, value):
         return True
     if word_of in _OFF or not any(str(v).casefold() in _OFF for v in domain):
         return False
-    if is_icon(said):  # a panel lights an icon for a feature that is on, none for its absence
-        return True
     label = str(spec.display_label(name)) if spec is not None else name
     own = {w.casefold() for w in re.split(r"[\W_]+", f"{label} {name}") if len(w) >= 2}
     parts = [w for w in re.split(r"[\W_]+", said) if w]
@@ -69,10 +64,3 @@ def _abbreviates(short: str, word: str) -> bool:
         return False
     rest = iter(word[1:])
     return all(c in rest for c in short[1:])
-
-
-def is_icon(text: str) -> bool:
-    """Whether ``text`` is one pictogram (``☾``, ``❄``): a lamp drawn, not written. One
-    character of Unicode's "other symbol" class; bars and marks in runs (``▮▮▯``) are a
-    count, and punctuation or dashes are no lamp."""
-    return len(text) == 1 and unicodedata.category(text) == "So"
