@@ -191,6 +191,7 @@ class Checks:
             name,
             f"{name} keeps showing values the model does not predict (last: "
             f"{observed!r}, expected {predicted!r})",
+            [name],
         )
         if self.side_effects.independent(name, executed[upto], observed):
             return

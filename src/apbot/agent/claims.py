@@ -37,6 +37,7 @@ class Claims(Checks):
 
     context: TaskContext
     unfound: dict[str, Any]
+    set_aside: dict[str, str]  # goal settings given up on, with why
     said: dict[str, Any]  # entries the agent made of quantities the goal held nowhere
 
     def settle_or_claim(self, inside: dict[str, Any]) -> bool:
@@ -68,6 +69,9 @@ class Claims(Checks):
                 + ", ".join(unseeable)
                 + ": done as planned, not confirmed"
             )
+        if self.set_aside:
+            reason = next(iter(self.set_aside.values()))
+            raise Stop(f"{reason}; the rest of the goal holds")
         if self.unfound:
             raise Stop(
                 "the rest of the goal holds; not found on the panel: "

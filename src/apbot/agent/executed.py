@@ -14,7 +14,7 @@ from apbot.agent.perception import MISSING, Seen
 from apbot.plan.plan import PlannedAction
 from apbot.sim.compiled import State
 
-__all__ = ["EXPLORE_LIMIT", "PLAN_BUDGET", "PLAN_WORK", "AgentConfig", "Executed", "Stop"]
+__all__ = ["EXPLORE_LIMIT", "PLAN_BUDGET", "PLAN_WORK", "AgentConfig", "Executed", "GiveUp", "Stop"]
 
 EXPLORE_LIMIT = 400  # presses per direction (a 1-minute clock over 6 hours; most domains < 100)
 # Search per plan. On the true models every plan of the bundled suite (750 tasks, stored or
@@ -45,6 +45,16 @@ class Stop(Exception):
         super().__init__(reason)
         self.reason = reason
         self.success = success
+
+
+class GiveUp(Stop):
+    """A goal setting that keeps going wrong however it is repaired. Only that setting is
+    lost: the loop may set the rest of the goal without it (and then never claims), so that
+    what gets set does not depend on whether the stuck setting came first or last in the plan."""
+
+    def __init__(self, reason: str, names: frozenset[str]) -> None:
+        super().__init__(reason)
+        self.names = names
 
 
 @dataclass

@@ -72,6 +72,8 @@ class Explorer(WalkLearning):
             ),
         )
         renamed, learnt, every = False, None, False
+        walked = [v for v in forward + (backward or []) if not isinstance(v, Dark)]
+        unread_walk = bool(walked) and all(isinstance(v, Unread) for v in walked)
         if not swapped:
             # the belief's own words for the texts first (a template, one value's word); else
             # the walk may be the belief's own with values printed otherwise
@@ -105,6 +107,11 @@ class Explorer(WalkLearning):
             # values went round: it is not stuck, and probing other keys would only move them
             self.stuck = (name, pointer, key)
         self.session.belief.set_value(name, current)
+        if unread_walk and self.session.budget.once("inspect", f"rewalk:{name}"):
+            # a walk none of whose texts could be read as it went stopped where it could not
+            # tell a value repeat, and its range is read from those few texts: the setting is
+            # walked once more, readable now, before a goal value is taken to be missing
+            self.session.explored.discard(name)
         for _ in range(unseen):  # presses taken in the dark: the (repaired) model says where to
             self.session.belief.advance(final.name, final.seconds)
 

@@ -23,6 +23,7 @@ from apbot.agent.discovery import VariableFinder
 from apbot.agent.displays import DisplayLearner
 from apbot.agent.environment import Environment
 from apbot.agent.episode import Episode, TaskContext
+from apbot.agent.executed import GiveUp
 from apbot.agent.explorer import Explorer
 from apbot.agent.greedy import GreedyExecutor
 from apbot.agent.guards import GuardLearner
@@ -72,6 +73,7 @@ class ClosedLoop(GoalPlanning):
         self.missing: dict[str, Any] = {}  # goal settings the belief lacks and has not found
         self.said = said
         self.unfound: dict[str, Any] = {}  # ... and looked for twice: the rest is set without
+        self.set_aside: dict[str, str] = {}  # goal settings given up on: why (the rest is set)
         self.finding = 1  # the finder's attempt: once at the start, once with the rest set
         self.plans = BeliefPlans(self.session, config)
         self.pending: list[MacroAction] = []  # the rest of the plan, while it holds
@@ -88,7 +90,11 @@ class ClosedLoop(GoalPlanning):
             stalled = 0
             while True:
                 mark = (episode.reasoning_steps, episode.execution_steps, len(episode.repairs))
-                self.reasoning_step()
+                try:
+                    self.reasoning_step()
+                except GiveUp as stuck:
+                    if not self.set_aside_for_the_rest(stuck):
+                        raise
                 progress = mark != (
                     episode.reasoning_steps,
                     episode.execution_steps,
@@ -180,6 +186,28 @@ class ClosedLoop(GoalPlanning):
         executed = self.execute(macro)
         if not self.check(macro, executed):
             self.pending.clear()  # the belief changed: plan again from what was observed
+
+    def set_aside_for_the_rest(self, stuck: GiveUp) -> bool:
+        """Goal settings that keep going wrong are given up on, not the whole goal: the rest is
+        still set (the run then ends with ``stuck``'s reason, never a claim). Otherwise which
+        settings end up set would depend on whether the stuck one came first or last in the
+        plan, an order that ties between equal-cost plans decide. False (stop now): the
+        setting is no goal setting, was set aside already, or nothing else is left to set."""
+        names = stuck.names
+        goal = self.context.goal
+        if not names or not names <= set(goal) or names & set(self.set_aside):
+            return False
+        for name in names:
+            self.set_aside[name] = stuck.reason
+        inside, outside = self.goal()
+        rest = [n for n, v in inside.items() if self.session.belief.value(n) != v]
+        if not rest and not outside:
+            return False
+        self.pending.clear()
+        self.session.episode.log(
+            "explore", f"{stuck.reason}: set aside ({', '.join(sorted(names))}), setting the rest"
+        )
+        return True
 
     def _again_after_the_rest(self, name: str, inside: dict[str, Any]) -> bool:
         """A goal value missing from what a walk showed, while the rest of the goal (a

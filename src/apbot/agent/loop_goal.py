@@ -36,6 +36,8 @@ class GoalPlanning(Claims):
         variables = self.session.belief.model.variables
         self.missing = {}
         for name, raw in self.context.goal.items():
+            if name in self.set_aside:
+                continue  # given up on: the rest is set without it
             if name in self.finder.misread:
                 continue  # what the reader took a key to set, which a walk of it showed wrong
             if name not in variables:

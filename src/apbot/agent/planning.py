@@ -3,7 +3,9 @@
 The loop asks the planner the same question several times when a goal is out of reach (the
 whole goal, then goal by goal); the search is deterministic, and on a read model the costly
 answer is a search that fails after exploring everything. Among plans of the same length the
-one that selects the programmes first is taken (see :meth:`BeliefPlans.programmes_first`).
+one that selects the programmes first is taken (see :meth:`BeliefPlans.programmes_first`),
+and otherwise the one in the manual's order, whatever the order of the actions
+(:mod:`apbot.agent.plan_order`).
 """
 
 from __future__ import annotations
@@ -13,6 +15,7 @@ from collections.abc import Hashable
 from typing import Any
 
 from apbot.agent.executed import AgentConfig
+from apbot.agent.plan_order import in_manual_order
 from apbot.agent.programmes import programmes, selectors
 from apbot.agent.session import Session
 from apbot.plan.plan import MacroAction, Plan, Unreachable, plan
@@ -42,10 +45,10 @@ class BeliefPlans:
         known = self._known.get(key)
         if known is None:
             try:
-                known = self.programmes_first(
-                    plan(compiled, state, target, self.config.plan_budget, self.config.plan_work),
-                    target,
+                found = plan(
+                    compiled, state, target, self.config.plan_budget, self.config.plan_work
                 )
+                known = self.programmes_first(in_manual_order(compiled, state, found), target)
             except Unreachable as exc:
                 known = exc
             self._known[key] = known

@@ -53,7 +53,12 @@ class ProcedureRepairer:
         assert first.pointer is not None
         feature, index = first.pointer
         name = first.variable
-        self.session.again("procedure", feature, f"{first.action.name} keeps failing in {feature}")
+        self.session.again(
+            "procedure",
+            feature,
+            f"{first.action.name} keeps failing in {feature}",
+            [name] if name is not None else [],
+        )
         step = self.session.belief.model.features[feature][index]
         idle = [a for a in step.actions if self.session.effect(first.pointer, a) == "none"]
         others = [

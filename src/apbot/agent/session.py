@@ -14,7 +14,7 @@ text means in the belief's terms.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from dataclasses import replace
 from typing import Any
 
@@ -22,7 +22,7 @@ from apbot.agent.belief import Belief
 from apbot.agent.budget import Budget
 from apbot.agent.environment import Environment, Feedback
 from apbot.agent.episode import TaskContext
-from apbot.agent.executed import AgentConfig, Executed, Stop
+from apbot.agent.executed import AgentConfig, Executed, GiveUp, Stop
 from apbot.agent.model_edits import RepairError
 from apbot.agent.perception import MISSING, UNREADABLE, Perceiver, Seen
 from apbot.agent.pressing import press
@@ -294,10 +294,12 @@ class Session:
             raise Stop(f"reached the limit of {self.context.max_reasoning_steps} reasoning steps")
         self.episode.reasoning_steps += 1
 
-    def again(self, kind: Any, key: str, message: str) -> None:
-        """One more occurrence of a repeated problem; give up when it keeps coming back."""
+    def again(self, kind: Any, key: str, message: str, names: Iterable[str] = ()) -> None:
+        """One more occurrence of a repeated problem; give up when it keeps coming back (on
+        the settings ``names`` only, when the problem is theirs: :class:`GiveUp`)."""
         if not self.budget.again(kind, key):
-            raise Stop(message)
+            names = frozenset(names)
+            raise GiveUp(message, names) if names else Stop(message)
 
     def forget_pointer(self) -> None:
         """After presses the belief cannot follow, assume no procedure is in progress."""

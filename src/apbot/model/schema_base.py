@@ -18,7 +18,7 @@ Box = tuple[int, int, int, int]
 
 ControlKind = Literal["button", "dial", "key", "touch", "switch", "knob"]
 Skill = Literal["press", "hold", "turn_cw", "turn_ccw", "wait"]
-TimeStyle = Literal["hh:mm:ss", "mm:ss", "h:mm", "hh:mm", "min", "h"]
+TimeStyle = Literal["hh:mm:ss", "mm:ss", "h:mm", "hh:mm", "min", "h", "s"]
 EntryFormat = Literal["mm:ss", "hh:mm", "h:mm", "hh:mm:ss", "minutes", "seconds", "number"]
 Scalar = str | int | float | bool
 Signal = Literal["beep", "silent"]  # how a refused key makes itself known, if at all

@@ -59,6 +59,8 @@ def format_time(seconds: int, style: str) -> str:
 
     >>> format_time(90, "mm:ss"), format_time(5400, "h:mm"), format_time(5400, "min")
     ('01:30', '1:30', '90 min')
+    >>> format_time(45, "s")  # a short run time in seconds (a dryer's "45 s")
+    '45 s'
     """
     hours, rest = divmod(int(seconds), 3600)
     minutes, secs = divmod(rest, 60)
@@ -72,6 +74,8 @@ def format_time(seconds: int, style: str) -> str:
         return f"{int(seconds) // 60} min"
     if style == "h":
         return f"{seconds / 3600:g} h"
+    if style == "s":
+        return f"{int(seconds)} s"
     return format_hms(seconds)
 
 
