@@ -91,3 +91,25 @@ def test_a_roaster_reads_a_short_key_row_and_a_numbered_row() -> None:
     keys = ["press_mains", "press_hot", "press_drum", "press_roast"]
     assert _values(ROASTER, keys, "hot") == ["mild", "medium", "strong", "char"]
     assert _values(ROASTER, keys, "drum") == ["slow", "normal", "quick"]
+
+
+# a plain-text manual whose sections are numbered, the number set apart by a wide gap
+HONEY = """HIVEMATE  HX-2  HONEY EXTRACTOR
+
+1  Spinning
+The drum has three swirls: Gentle, Even and Brisk. Press SWIRL to step through them.
+
+2  Heating
+Press WARMTH to switch the jacket heater on or off.
+"""
+
+
+def test_a_wide_gapped_section_number_and_short_title_is_a_heading() -> None:
+    from apbot.read.text import parse_manual
+
+    units = parse_manual(HONEY).units
+    assert any(u.text == "1  Spinning" and u.heading == "1  Spinning" for u in units)
+    assert all(not u.text.startswith("2  Heating Press") for u in units)
+    # a numbered step with one space stays a step
+    steps = parse_manual("How to clean\n\n1 Rinse the jar.\n2 Dry it.\n").units
+    assert not any(u.heading.startswith(("1 ", "2 ")) for u in steps)
