@@ -74,6 +74,7 @@ from benchmarks.missed_shapes import (
     key_place,
     line_shape,
     note_kind,
+    table_detail,
     value_shape,
     values_line,
     written_case,
@@ -225,6 +226,7 @@ def origin_tags(
         count += f"/{written_case(line, names)}"
         place = key_place(manual, line, keys) if line else ""
         vals = f"vals:{line_shape(line)}/{place}/{count}" if line else "vals:unwritten"
+        vals += " " + table_detail(manual, line, keys, names)
     tags = []
     for candidate in candidates:
         how = "other" if candidate in aligned else "own"
@@ -290,11 +292,12 @@ def _table(title: str, main: Counter[str], beside: Counter[str] | None, top: int
 
 
 def _split(origins: Counter[str], field: int) -> Counter[str]:
-    """One column of the ``--origin`` rows (0 kinds, 3 module, 4 source shape, 5 values shape)."""
+    """One column of the ``--origin`` rows (0 kinds, 3 module, 4 source shape, 5 values shape,
+    6 values table detail)."""
     out: Counter[str] = Counter()
     for row, n in origins.items():
         parts = row.split(" ")
-        out[" ".join(parts[:3]) if field == 0 else parts[field]] += n
+        out[" ".join(parts[:3]) if field == 0 else parts[field] if field < len(parts) else "-"] += n
     return out
 
 
@@ -327,6 +330,7 @@ def main() -> None:
             (3, "origin: module"),
             (4, "origin: source line shape"),
             (5, "origin: values line shape"),
+            (6, "origin: values table detail"),
         ):
             _table(
                 title, _split(origins, field), _split(other[1], field) if other else None, args.top
