@@ -113,3 +113,12 @@ def test_a_wide_gapped_section_number_and_short_title_is_a_heading() -> None:
     # a numbered step with one space stays a step
     steps = parse_manual("How to clean\n\n1 Rinse the jar.\n2 Dry it.\n").units
     assert not any(u.heading.startswith(("1 ", "2 ")) for u in steps)
+
+
+def test_a_noun_said_once_after_a_title_pair_belongs_to_both() -> None:
+    from apbot.read.value_lists import find_list
+
+    found = find_list("Use the BRUSH key to pick Soft or Firm bristles.")
+    assert found is not None and found[0] == ["Soft", "Firm"]
+    # two words in capitals, or three names, are left to the other rules
+    assert find_list("Pick Soft or Firm Extra bristles.") != (["Soft", "Firm"], "list")
