@@ -46,6 +46,9 @@ it or far (:func:`key_place`), how many of the values it names ("2of5") and how 
 the manual's words, so held-out value names are not printed. ``--beside DIR`` prints the same
 counts for a second suite (the newcats, development) in a column beside, so a shape frequent in
 one stands out. ``--top N`` rows per table.
+
+The shapes (line, values' line, key place, case) are named in :mod:`benchmarks.missed_shapes`;
+this module reads each appliance and counts.
 """
 
 from __future__ import annotations
@@ -56,6 +59,7 @@ import sys
 from collections import Counter, defaultdict
 from collections.abc import Iterator
 from contextlib import contextmanager
+from pathlib import Path
 
 from apbot.bench.suite import HELD_OUT_CATEGORIES, load_suite
 from apbot.model.domain import all_values
@@ -64,6 +68,17 @@ from apbot.read.build_base import BuilderBase
 from apbot.read.evaluate import align_variables, value_set
 from apbot.read.reader import Reading, read_manual
 from apbot.read.report import Note
+
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent))  # run as a script
+from benchmarks.missed_shapes import (
+    key_place,
+    line_shape,
+    note_kind,
+    table_detail,
+    value_shape,
+    values_line,
+    written_case,
+)
 
 
 def mechanisms(model: ApplianceModel, variable: str) -> set[str]:
@@ -154,24 +169,6 @@ def why_missed(
     return tags
 
 
-def value_shape(manual: str, names: list[str]) -> str:
-    """How the manual writes a setting's values: the shape of the line holding most of them."""
-    best, line = _most_named(manual, names)
-    line = line.strip()
-    if best == 0:
-        return "inside-words"
-    together = "one-line" if best == len(names) else "spread"
-    if line.count("|") >= 2:
-        shape = "table-row"
-    elif re.match(r"([-*•·▪●○◦]|\d+[.)]|\(?[a-z]\))\s", line):
-        shape = "list-item"
-    elif line.startswith("#") or line.isupper():
-        shape = "heading"
-    else:
-        shape = "prose"
-    return f"{shape}/{together}"
-
-
 NOTE_ORIGINS: dict[int, str] = {}
 
 
@@ -197,40 +194,6 @@ def note_origins() -> Iterator[None]:
         BuilderBase.note = plain  # type: ignore[method-assign]
 
 
-_TIME_DIGITS = re.compile(r"\d\s*(?:h|hrs?|hours?|min|mins|minutes?|s|sec|secs|seconds?)\b", re.I)
-_RANGE = re.compile(r"\d\s*(?:[-–—~]|to)\s*\d|\d\s*\.\.\s*\d", re.I)
-
-
-def line_shape(line: str) -> str:
-    """A line's shape as '+'-joined marks: where it sits (table / item / heading / prose) and what
-    it holds (time digits, a range, parentheses, an "or", commas, a colon)."""
-    text = line.strip()
-    if not text:
-        return "none"
-    if text.count("|") >= 2:
-        place = "table"
-    elif re.match(r"([-*•·▪●○◦]|\d+[.)]|\(?[a-z]\))\s", text):
-        place = "item"
-    elif text.startswith("#") or (text.isupper() and len(text) < 60):
-        place = "heading"
-    else:
-        place = "prose"
-    marks = [place]
-    marks += ["timedig"] if _TIME_DIGITS.search(text) else []
-    marks += ["range"] if _RANGE.search(text) else []
-    marks += ["paren"] if re.search(r"\([^)]*\)", text) else []
-    marks += ["or"] if re.search(r"\bor\b|/", text) else []
-    marks += ["commas"] if text.count(",") >= 2 else []
-    marks += ["arrows"] if re.search(r"[→►▶▸>»]|->", text) else []
-    marks += ["and"] if re.search(r"\band\b|&", text) else []
-    marks += ["dashes"] if re.search(r"\w\s+[-–—]\s+\w", text) else []
-    marks += ["dots"] if re.search(r"[·•]", text) else []
-    marks += [f"cells{text.strip('|').count('|') + 1}"] if place == "table" else []
-    marks += ["semicolons"] if ";" in text else []
-    marks += ["quotes"] if re.search(r"[\"“”‘’']\w", text) else []
-    return "+".join(marks)
-
-
 def origin(reading: Reading, variable: str) -> str:
     """Which module first wrote ``variable`` and the shape of that note's manual line."""
     subject = f"variables.{variable}"
@@ -242,64 +205,6 @@ def origin(reading: Reading, variable: str) -> str:
     module = NOTE_ORIGINS.get(id(first), "direct")
     said = note_kind(first.what)
     return f"from:{module}:{said} src:{line_shape(first.quote) if not first.guess else 'guess'}"
-
-
-def note_kind(what: str) -> str:
-    """The kind of a note in the reader's own fixed phrasing (never the manual's words, which a
-    values note quotes): a range, an on/off, a list of values, a start, a guess of placeholders."""
-    low = what.lower()
-    for prefix, kind in (
-        ("range", "range"),
-        ("an on/off", "onoff"),
-        ("a cooking time", "typed-time"),
-        ("a clock", "clock"),
-        ("starts at", "start"),
-        ("the appliance runs", "running"),
-        ("the quantity", "pair-quantity"),
-    ):
-        if low.startswith(prefix):
-            return kind
-    return "values-or-other"
-
-
-def _most_named(manual: str, names: list[str]) -> tuple[int, str]:
-    """The first line naming the most of ``names``, with how many it names (0, "" for none)."""
-    best, line = 0, ""
-    for candidate in manual.splitlines():
-        low = candidate.lower()
-        hits = sum(1 for name in names if re.search(rf"(?<![a-z]){re.escape(name)}(?![a-z])", low))
-        if hits > best:
-            best, line = hits, candidate
-    return best, line
-
-
-def values_line(manual: str, names: list[str]) -> str:
-    """The line naming most of ``names`` (the one :func:`value_shape` judges)."""
-    return _most_named(manual, names)[1]
-
-
-def key_place(manual: str, line: str, keys: set[str]) -> str:
-    """Where the values' line stands from the keys that set them: a key word on the line itself
-    (``key-on``), within five lines (``key-near``), or further (``key-far``); and whether the
-    line holds all the values (``one``) or some (``some``) — counted by :func:`values_line`."""
-    words = {w for key in keys for w in key.lower().split("_") if len(w) >= 3}
-    words -= {"press", "hold", "turn", "button", "key", "knob", "long", "short", "dial"}
-    lines = manual.splitlines()
-    at = lines.index(line)
-    near = " ".join(lines[max(0, at - 5) : at + 6]).lower()
-    has = lambda text: any(re.search(rf"(?<![a-z]){re.escape(w)}", text) for w in words)  # noqa: E731
-    return "key-on" if has(line.lower()) else "key-near" if has(near) else "key-far"
-
-
-def written_case(line: str, names: list[str]) -> str:
-    """How the values are printed on their line: all in CAPITALS, Titled, lower case, mixed."""
-    cases = set()
-    for name in names:
-        m = re.search(rf"(?<![A-Za-z]){re.escape(name)}(?![A-Za-z])", line, re.I)
-        if m and any(c.isalpha() for c in m.group(0)):
-            word = m.group(0)
-            cases.add("caps" if word.isupper() else "title" if word[:1].isupper() else "lower")
-    return "+".join(sorted(cases)) or "digits"
 
 
 def origin_tags(
@@ -321,6 +226,7 @@ def origin_tags(
         count += f"/{written_case(line, names)}"
         place = key_place(manual, line, keys) if line else ""
         vals = f"vals:{line_shape(line)}/{place}/{count}" if line else "vals:unwritten"
+        vals += " " + table_detail(manual, line, keys, names)
     tags = []
     for candidate in candidates:
         how = "other" if candidate in aligned else "own"
@@ -386,11 +292,12 @@ def _table(title: str, main: Counter[str], beside: Counter[str] | None, top: int
 
 
 def _split(origins: Counter[str], field: int) -> Counter[str]:
-    """One column of the ``--origin`` rows (0 kinds, 3 module, 4 source shape, 5 values shape)."""
+    """One column of the ``--origin`` rows (0 kinds, 3 module, 4 source shape, 5 values shape,
+    6 values table detail)."""
     out: Counter[str] = Counter()
     for row, n in origins.items():
         parts = row.split(" ")
-        out[" ".join(parts[:3]) if field == 0 else parts[field]] += n
+        out[" ".join(parts[:3]) if field == 0 else parts[field] if field < len(parts) else "-"] += n
     return out
 
 
@@ -423,6 +330,7 @@ def main() -> None:
             (3, "origin: module"),
             (4, "origin: source line shape"),
             (5, "origin: values line shape"),
+            (6, "origin: values table detail"),
         ):
             _table(
                 title, _split(origins, field), _split(other[1], field) if other else None, args.top

@@ -61,7 +61,22 @@ def test_origin_rows_name_kinds_module_and_shapes_on_development_data() -> None:
         rows = [
             r for v in missed for r in origin_tags(reading, truth, v, aligned, appliance.manual)
         ]
-        pattern = r"(own|other) read:\w+ true:\w+ from:\w+:[\w-]+ src:\S+ vals:\S+"
+        pattern = r"(own|other) read:\w+ true:\w+ from:\w+:[\w-]+ src:\S+ vals:\S+( tab:\S+)?"
         assert rows and all(re.fullmatch(pattern, row) for row in rows)
     finally:
         NOTE_ORIGINS.clear()
+
+
+def test_table_detail_tells_a_drawn_line_from_a_table_row() -> None:
+    from benchmarks.missed_shapes import table_detail
+
+    drawn = "  MAINS  |  BLEND   PULSE  SMOOTH  CRUSH  |  START"
+    manual = f"Panel\n\n```\n{drawn}\n```\n"
+    detail = table_detail(manual, drawn, {"press_blend"}, ["pulse", "smooth", "crush"])
+    assert detail.startswith("tab:unparsed+ends0+block1+norule+unit:sentence")
+    assert "+fence+seg@later" in detail and "+vper0-3-0+keyat1+" in detail
+    assert "shape:A_A_A_A" in detail and "+drawn:3+" in detail
+    row = "| 2 | BLEND | PULSE | SMOOTH |"
+    table = f"| No. | Key | Steps | |\n|---|---|---|---|\n{row}\n"
+    assert table_detail(table, row, {"press_blend"}, ["pulse"]) == "tab:rowh4+k@later+lead-digit"
+    assert table_detail("Press BLEND.\n", "Press BLEND.", {"press_blend"}, []) == "tab:n/a"

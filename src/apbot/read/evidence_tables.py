@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import re
 
+from apbot.read.drawn_pieces import drawn_piece_marks
 from apbot.read.labels import Label, words
 from apbot.read.shapes import CHOICE_WORDS, GROUP_NOUNS
 from apbot.read.shapes_columns import _DISPLAY_HEAD_RE, _drawn_column, _next_table_column
@@ -101,14 +102,21 @@ class TableReader:
         tw |= {
             w for t in tokens if t in self.labels for w in words(self.labels[t].text) if len(w) >= 4
         }
-        if not tw:
+        names = {" ".join(words(self.labels[t].text)) for t in tokens if t in self.labels}
+        names.discard("")
+        if not tw and not names:
             return None
         units = self.manual.units
         choice = bool(tw & CHOICE_WORDS)
+        others = {" ".join(words(lab.text)) for t, lab in self.labels.items() if t not in tokens}
         for i, unit in enumerate(units):
+            drawn = None if unit.cells else drawn_piece_marks(unit.text, tw, names, others)
+            if drawn:  # "( ON/OFF ) | HEAT  COOL  WARM | SPEED": the key's place on the panel
+                self._table_at = i
+                return drawn
             below = i + 1 < len(units) and bool(units[i + 1].cells)
             below = below and units[i + 1].header == unit.cells
-            marks = key_row_marks(unit.cells, tw, unit.header, below)
+            marks = key_row_marks(unit.cells, tw, unit.header, below, names)
             if marks:  # "| SHADE | PALE | LIGHT | DARK |": the key's row of its printed marks
                 self._table_at = i
                 return marks

@@ -98,6 +98,19 @@ def _printed_choices(header: list[str], firsts: list[str]) -> bool:
 
 
 _COUNT_HEAD_RE = re.compile(r"\W*(?:\d{1,2}\s*(?:x|×|st|nd|rd|th)?)?\W*", re.I)
+# a cell numbering a table's row, not naming anything: "1", "2.", "(3)", "①", "#4"
+_ROW_NUMBER_RE = re.compile(r"\W*(?:\d{1,2}|[\u2460-\u2473\u2776-\u277f])\W*")
+
+
+def _names_key(cell: str, key_words: set[str], key_names: set[str]) -> bool:
+    """Whether a row's first cell names the key: a word of four letters or more shared to its
+    sixth letter, or the whole cell the key's printed name however short ("FAN", "ECO"): a
+    word of three letters is too common to tie a cell to a key, a cell that is nothing else
+    is the key's own name as the panel prints it."""
+    first = [w for w in words(cell) if len(w) >= 4]  # "Set", "On": too short to be sure
+    if any(h[:6] == w[:6] for h in first for w in key_words):
+        return True
+    return " ".join(words(cell)) in key_names
 
 
 def key_row_marks(
@@ -105,20 +118,24 @@ def key_row_marks(
     key_words: set[str],
     header: tuple[str, ...] = (),
     rows_below: bool = False,
+    key_names: set[str] = frozenset(),  # type: ignore[assignment]
 ) -> list[str] | None:
-    """The cells after a row's first cell when that cell names the key (a word of four letters
-    or more shared to its sixth letter) and every other cell is a name printed in capitals
-    ("| Shade | PALE | LIGHT | DARK |" alone or under a row of counts, "| | 1 | 2 | 3 |"): the
-    key's marks in order,
-    a table written sideways the way "| TEMP. | SPIN |" over their columns is written upright.
+    """The cells after a row's first cell when that cell names the key (:func:`_names_key`) and
+    every other cell is a name printed in capitals ("| Shade | PALE | LIGHT | DARK |" alone or
+    under a row of counts, "| | 1 | 2 | 3 |"): the key's marks in order, a table written
+    sideways the way "| TEMP. | SPIN |" over their columns is written upright. Cells numbering
+    the row come first in a numbered table ("| 2 | SHADE | PALE | … |") and are no part of it.
     A header row with ``rows_below`` heads columns ("| Mode | LED | DISPLAY |" over its rows):
     its capitals name what each column tells, not the key's marks."""
     if len(cells) < 3 or (not header and rows_below):
         return None
-    if header and not all(_COUNT_HEAD_RE.fullmatch(h) for h in header[1:]):
+    skip = 0
+    while skip < len(cells) - 3 and _ROW_NUMBER_RE.fullmatch(cells[skip]):
+        skip += 1  # "| 1 | LIGHT | DAWN | DAY | …": the row's number, then the key
+    if header and not _over_marks(header[skip + 1 :]):
         return None  # "| Keys | Status line |": a record per key, its cells are no marks
-    first = [w for w in words(cells[0]) if len(w) >= 4]  # "Set", "On": too short to be sure
-    if not first or not any(h[:6] == w[:6] for h in first for w in key_words):
+    cells = cells[skip:]
+    if not _names_key(cells[0], key_words, key_names):
         return None
     marks = [c.strip(" *") for c in cells[1:] if c.strip(" *")]
     if len(marks) < 2 or not all(_caps(m) and len(m.split()) <= 3 for m in marks):
@@ -126,3 +143,13 @@ def key_row_marks(
     if any(re.search(r"[\d\[\](){}<>'.]|--", m) for m in [cells[0], *marks]):
         return None  # counts, callout letters, a drawing's frame ("CHIME [B]"): no marks row
     return marks
+
+
+def _over_marks(heads: tuple[str, ...]) -> bool:
+    """Whether a header's cells over a row's marks head them as one list: counts ("| | 1 | 2 |
+    3 |") or blanks, or one heading followed by blanks only ("| Key | Settings | | | |"), a
+    heading spanning the columns, merged in print and split cell by cell in conversion."""
+    if all(_COUNT_HEAD_RE.fullmatch(h) for h in heads):
+        return True
+    named = [k for k, h in enumerate(heads) if h.strip(" *")]
+    return len(heads) >= 3 and named == [0]

@@ -198,8 +198,12 @@ def _plain_heading(line: str) -> bool:
     if _CAPS_HEADING.fullmatch(title) and len(title.split()) <= 7 and len(title) >= 3:
         return True
     sub_level = bool(number and re.match(r"\d{1,2}\.\d", stripped))
+    # "2  Grinding": a PDF's section number set apart from its title by a wide gap, which a
+    # numbered step ("2. Rinse the jar") or a list's item never is
+    spaced = bool(re.match(r"\d{1,2}\s{2,}\S", stripped)) and len(rest.split()) <= 4
     short = len(rest.split()) <= 6  # a title, not a sentence run on after it
-    return sub_level and short and rest[0].isupper() and not re.search(r"\d", rest)
+    titled = rest[0].isupper() and not re.search(r"\d", rest)
+    return (sub_level or spaced) and short and titled
 
 
 _TITLE_SMALL = {"of", "and", "the", "for", "to", "a", "an", "in", "on", "&"}

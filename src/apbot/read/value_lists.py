@@ -128,6 +128,8 @@ def find_list(text: str) -> tuple[list[str], str] | None:
             for p in re.split(r",\s*|\s*/\s*|\s*[·•|]\s*|\s{2,}|\s+or\s+|\s+and\s+", segment)
         ]
         items = _shared_noun_dropped([i for i in items if i])
+        if re.search(r"\sor\s", segment):
+            items = _pair_noun_dropped(items)
         if _range_table_header(items):
             continue
         caps = sum(1 for i in items if i.upper() == i and any(c.isalpha() for c in i))
@@ -159,6 +161,17 @@ def _title_pair(items: list[str]) -> bool:
         i.upper() != i and all(w[:1].isupper() for w in i.split()) and len(i.split()) <= 2
         for i in items
     )
+
+
+def _pair_noun_dropped(items: list[str]) -> list[str]:
+    """Two Title-case names and a plain noun said once after the second ("Coarse or Fine
+    mesh", "Eco or Turbo mode"): the noun belongs to both, the names are the values."""
+    if len(items) != 2 or len(items[0].split()) != 1 or len(items[1].split()) != 2:
+        return items
+    name, noun = items[1].split()
+    if re.fullmatch(r"[a-z]{3,}", noun) and _title_pair([items[0], name]):
+        return [items[0], name]
+    return items
 
 
 def _pair_before_aside(segment: str) -> list[str]:
