@@ -102,7 +102,10 @@ def stepped_walk(
     groups = moves_at_ends(groups, label)
     if len(groups) < 3:
         return None
-    if _CLOCK_FIELDS_RE.search(groups[0][1]):  # the hours, then the minutes, of one clock
+    later = " ".join(t for _, t in groups[1:])
+    if _CLOCK_FIELDS_RE.search(groups[0][1]) and _MINUTES_RE.search(later):
+        # the hours, then the minutes, of one clock (an hour with no minutes after it is a
+        # field of its own: "the switch-on hour flashes … then the light period")
         if len(groups) < 4 or not moves_on(groups[2][1], label):
             return None
         pair = pair_of(b, pairs, groups[1][1])

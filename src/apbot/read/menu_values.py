@@ -27,6 +27,9 @@ _NUM_PART = re.compile(r"^([-−]?\d+(?:[.,]\d+)?)\s*([^\d\s].{0,8})?$")
 _SPELLED = r"\b{v}\s*\(\s*([A-Za-z][a-z]+)\s*\)"  # "C (Celsius)": the value's full name
 
 
+_CHOICE = re.compile(r"[A-Za-z0-9][A-Za-z0-9+-]{0,9}(?: [A-Za-z0-9+-]{1,10})?")
+
+
 DEFAULT_HEAD = re.compile(r"\b(?:factory|default|standard|preset|initial)\b", re.IGNORECASE)
 
 
@@ -135,7 +138,7 @@ def _cell_choices(b: Builder, item: MenuItem, name: str, cell: str) -> str | Non
     their codes) or short words joined by slashes ("C / F"); its start from the row's default
     cell, matched to a code or a word."""
     coded = coded_choices(cell)
-    pairs = coded or [(w, w) for w in slashed_words(cell) or []]
+    pairs = coded or [(w, w) for w in slashed_words(cell) or _comma_words(cell) or []]
     if not pairs:
         return None
     init = (item.initial or "").strip().lower()
@@ -148,6 +151,18 @@ def _cell_choices(b: Builder, item: MenuItem, name: str, cell: str) -> str | Non
     var = b.add_discrete(name, [n for _c, n in pairs], item.code, ev)
     b.variables[var]["wrap"] = False
     return var
+
+
+def _comma_words(cell: str) -> list[str] | None:
+    """Short choices a row cell lists with commas, words among numbers ("ECO, 1, 2, 3") or two
+    words ("ON, OFF"): the item's values as printed, not a range of its numbers nor nothing."""
+    items = [i.strip() for i in cell.strip().rstrip(".").split(",")]
+    if len(items) < 2 or not all(_CHOICE.fullmatch(i) for i in items):
+        return None
+    words = [i for i in items if re.search(r"[A-Za-z]{2}", i)]
+    if not words or (len(items) > 2 and len(words) == len(items)):
+        return None  # (three words or more: the list readers' job, as before)
+    return items
 
 
 def _as_printed(b: Builder, var: str, unit: str) -> None:

@@ -9,7 +9,7 @@ from typing import Any
 from apbot.model.values import format_hms
 from apbot.read.build import Builder
 from apbot.read.code_words import own_lines
-from apbot.read.held_guesses import drop_guess, drop_key_guesses
+from apbot.read.held_guesses import drop_guess, drop_key_guesses, drop_unused
 from apbot.read.walk_fields import code_words
 from apbot.read.walk_flashed import clock_effects, clock_steps, held_steps
 from apbot.read.walk_known import use_known
@@ -32,6 +32,8 @@ def apply_walk(
         field["name"] = field["name"] if walk.get("own") or not prefix else prefix[:-1]
         prefix = ""
     up, down = walk["pair"]
+    if len(walk["fields"]) > 1:
+        _drop_one_field_guess(b, hold, set(up + down))
     effect = {**{a: "next" for a in up}, **{a: "prev" for a in down}}
     steps: list[dict[str, Any]] = [{"actions": [hold]}]
     names = []
@@ -85,6 +87,19 @@ def apply_walk(
     drop_opener_setting(b, steps)
     said = f"{hold} opens {names[0]}" + (f", {press} moves to {names[1]}" if names[1:] else "")
     b.note(f"features.{feature}", said, walk["at"])
+
+
+def _drop_one_field_guess(b: Builder, opener: str, pair: set[str]) -> None:
+    """Drop a reading of the same opener as one setting the pair then sets ("hold SET, then +
+    / −": a "period"): the walk through several fields is what the key opens, and one key
+    opens one procedure (the model keeps only one of two features the key begins)."""
+    for fname, old in list(b.features.items()):
+        if len(old) != 2 or old[0].get("actions") != [opener] or "variable" in old[0]:
+            continue
+        if not set(old[1].get("actions", [])) <= pair:
+            continue
+        del b.features[fname]
+        drop_unused(b, str(old[1].get("variable")))
 
 
 def _prefix(prefix: str, field: dict[str, Any]) -> str:
