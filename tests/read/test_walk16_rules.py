@@ -74,13 +74,13 @@ MOVING THE TABLE
   The display shows the height.
 """
     applied: list[str] = []
-    apply = held_walks._apply
+    apply = held_walks.apply_walk
 
     def recorded(b: Any, hold: str, *rest: Any) -> None:
         applied.append(hold)
         apply(b, hold, *rest)
 
-    monkeypatch.setattr(held_walks, "_apply", recorded)
+    monkeypatch.setattr(held_walks, "apply_walk", recorded)
     read_manual(manual, LIFT_ACTIONS)
     assert "hold_up" not in applied
     model = read_manual(LIFT, LIFT_ACTIONS).model

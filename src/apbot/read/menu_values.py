@@ -30,6 +30,9 @@ _SPELLED = r"\b{v}\s*\(\s*([A-Za-z][a-z]+)\s*\)"  # "C (Celsius)": the value's f
 _VALUES_LABEL = re.compile(r"^\s*(?:values?|settings?|options?|choices?)\s*:\s*", re.IGNORECASE)
 _NAMED_STOP = re.compile(r"[A-Z]{2,6}|[A-Z][a-z]{1,5}")  # "AUTO", "Max": a word among numbers
 _SYMBOL_NAME = re.compile(r"([^\w\s(),]{1,3})\s+([A-Za-z][A-Za-z -]{1,30})")  # "△ nasal"
+_CHOICE = re.compile(r"[A-Za-z0-9][A-Za-z0-9+-]{0,9}(?: [A-Za-z0-9+-]{1,10})?")
+
+
 DEFAULT_HEAD = re.compile(r"\b(?:factory|default|standard|preset|initial)\b", re.IGNORECASE)
 
 
@@ -162,7 +165,7 @@ def _cell_choices(b: Builder, item: MenuItem, name: str, cell: str) -> str | Non
     their codes) or short words joined by slashes ("C / F"); its start from the row's default
     cell, matched to a code or a word."""
     coded = coded_choices(cell)
-    pairs = coded or [(w, w) for w in slashed_words(cell) or []]
+    pairs = coded or [(w, w) for w in slashed_words(cell) or _comma_words(cell) or []]
     if not pairs:
         return None
     init = (item.initial or "").strip().lower()
@@ -175,6 +178,18 @@ def _cell_choices(b: Builder, item: MenuItem, name: str, cell: str) -> str | Non
     var = b.add_discrete(name, [n for _c, n in pairs], item.code, ev)
     b.variables[var]["wrap"] = False
     return var
+
+
+def _comma_words(cell: str) -> list[str] | None:
+    """Short choices a row cell lists with commas, words among numbers ("ECO, 1, 2, 3") or two
+    words ("ON, OFF"): the item's values as printed, not a range of its numbers nor nothing."""
+    items = [i.strip() for i in cell.strip().rstrip(".").split(",")]
+    if len(items) < 2 or not all(_CHOICE.fullmatch(i) for i in items):
+        return None
+    words = [i for i in items if re.search(r"[A-Za-z]{2}", i)]
+    if not words or (len(items) > 2 and len(words) == len(items)):
+        return None  # (three words or more: the list readers' job, as before)
+    return items
 
 
 def _as_printed(b: Builder, var: str, unit: str) -> None:

@@ -15,7 +15,9 @@ from typing import Any
 
 from apbot.read.build import Builder
 from apbot.read.cases import apply_cases
-from apbot.read.held_walks import _apply, _moves_on, _pair_of, _pairs, _walk
+from apbot.read.held_walks import stepped_walk
+from apbot.read.walk_apply import apply_walk
+from apbot.read.walk_keys import moves_on, pair_of, stepping_pairs
 from apbot.read.walk_order import order_names
 from apbot.read.walk_steps import walk_steps
 
@@ -23,7 +25,7 @@ from apbot.read.walk_steps import walk_steps
 def read_pressed_walks(b: Builder) -> None:
     """Add the walks a key's short press opens in numbered steps (two fields at least)."""
     units = b.manual.units
-    pairs = _pairs(b)
+    pairs = stepping_pairs(b)
     if not pairs:
         return
     paired = {a for up, down in pairs for a in up + down}
@@ -34,16 +36,16 @@ def read_pressed_walks(b: Builder) -> None:
             continue
         label = b.labels[info.controls[0]].text
         for i, unit in enumerate(units):
-            if unit.step is None or not _moves_on(unit.text, label):
+            if unit.step is None or not moves_on(unit.text, label):
                 continue
             groups = walk_steps(units, i)
-            if len(groups) < 4 or _pair_of(b, pairs, groups[1][1]) is None:
+            if len(groups) < 4 or pair_of(b, pairs, groups[1][1]) is None:
                 continue
-            walk = _walk(b, groups, label, pairs, i)
+            walk = stepped_walk(b, groups, label, pairs, i)
             if walk is None or "clock" in walk:
                 continue
             _name_by_order(b, walk, i)
-            _apply(b, info.name, info.name, walk, named=False)
+            apply_walk(b, info.name, info.name, walk, named=False)
             if any(f.get("charted") for f in walk["fields"]):
                 apply_cases(b)  # a field valued by a chart's column: its cases per programme
             break

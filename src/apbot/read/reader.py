@@ -32,6 +32,7 @@ from apbot.read.code_amounts import read_code_amounts
 from apbot.read.code_cycles import read_code_cycles
 from apbot.read.code_glosses import name_glossed_words
 from apbot.read.code_levels import read_code_levels
+from apbot.read.code_walks import read_code_walks
 from apbot.read.code_words import name_code_words
 from apbot.read.codes import name_codes
 from apbot.read.confirm_starts import read_confirmed_starts
@@ -117,6 +118,7 @@ def read_manual(
     apply_resets(builder)
     read_held_walks(builder)  # (after the resets: those were read for the switch it replaces)
     read_pressed_walks(builder)  # (after the held walks: a press moving through one is theirs)
+    read_code_walks(builder)  # (a key's chart codes, each row a field: MENU walks them)
     read_enabling_switches(builder)
     read_confirmed_starts(builder)  # ("the first press only asks for confirmation")
     read_running_locks(builder)  # ("While FRY is shown, MENU … are locked")

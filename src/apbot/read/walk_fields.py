@@ -46,6 +46,12 @@ _BESIDE_RE = re.compile(
     r"^([A-Za-z][A-Za-z0-9]{0,5})\s+and\s+the\s+((?:[a-z]+\s){0,2}?[a-z]+)\s+"
     r"(?:flash|appear|blink|light)s?\b"
 )
+# ... the same mid-sentence, the word quoted, after the key's press: 'Hold SET until "ON" and
+# the switch-on hour flash', 'Press SET: "HRS" and the light period flash'
+_BESIDE_WITHIN_RE = re.compile(
+    r"(?:\buntil|\bwhen|:|,)\s+[\"'“‘]?([A-Za-z][A-Za-z0-9]{0,5})[\"'”’]?\s+and\s+the\s+"
+    r"((?:[a-z-]+\s){0,2}?[a-z-]+)\s+(?:flash|appear|blink|light)s?\b"
+)
 # a display word standing before "appears": "F START appears with …"
 _APPEARS_RE = re.compile(r"^([A-Z][A-Z0-9 ]{0,12}?)\s+appears\b")
 # a display word and a number: "The display shows dL 0 h."; a word and the field: "shows BIN
@@ -89,6 +95,7 @@ def field_name(shown: str, beside: bool = False) -> str:
         _SHOWS_RE.search(shown)
         or (_SHOWS_BESIDE_RE.search(shown) if beside else None)
         or _BESIDE_RE.match(after_key(shown))
+        or _BESIDE_WITHIN_RE.search(shown.split(". ", 1)[0])
     )
     if not m:
         return ""
@@ -103,6 +110,7 @@ def field_label(shown: str, fallback: str, example: bool = False) -> str:
     label."""
     after = after_key(shown)
     m = _APPEARS_RE.match(after) or _BESIDE_RE.match(after) or _SHOWS_CODE_RE.search(after)
+    m = m or _BESIDE_WITHIN_RE.search(shown.split(". ", 1)[0])
     if not m and example:
         m = _EXAMPLE_RE.search(after)
     if not m:

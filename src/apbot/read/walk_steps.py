@@ -27,6 +27,8 @@ _KEY_VERB_RE = re.compile(
     r"\s+(?:the\s+)?(?:[A-Z0-9][A-Z0-9+/-]*[A-Z0-9+]\b|[^\w\s\"'(])"
 )
 _MAX_STEPS = 9
+# a key worked after a comma, mid-sentence: ", then press SET: the minutes flash"
+_THEN_PRESS_RE = re.compile(r",\s+(?:and\s+)?then\s+(?=(?:press|touch|tap|push)\s)", re.I)
 
 
 def walk_steps(units: list[Unit], i: int) -> list[tuple[int, str]]:
@@ -58,13 +60,22 @@ def _prose(units: list[Unit], i: int) -> list[tuple[int, str]]:
     for u in units[i:]:
         if u.cells or u.bullet or u.step is not None or u.heading != units[i].heading:
             break
-        if not out or _ACTS_RE.match(u.text) or _KEY_VERB_RE.match(u.text):
-            if len(out) >= _MAX_STEPS:
-                break
-            out.append((len(out) + 1, u.text))
-        else:
-            out[-1] = (out[-1][0], f"{out[-1][1]} {u.text}")
+        for text in _moves_within(u.text):
+            if not out or _ACTS_RE.match(text) or _KEY_VERB_RE.match(text):
+                if len(out) >= _MAX_STEPS:
+                    return out
+                out.append((len(out) + 1, text))
+            else:
+                out[-1] = (out[-1][0], f"{out[-1][1]} {text}")
     return out
+
+
+def _moves_within(text: str) -> list[str]:
+    """A sentence of prose cut where it goes on to work a key ("Set the hour with + and −,
+    then press SET: the minutes flash"): the clause after "then" is the next step, as if the
+    manual had begun a sentence there."""
+    parts = _THEN_PRESS_RE.split(text)
+    return [parts[0], *(p[:1].upper() + p[1:] for p in parts[1:])]
 
 
 def prose_opener(unit: Unit, paired: bool) -> bool:
