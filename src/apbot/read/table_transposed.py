@@ -12,6 +12,7 @@ choices and the first column's cells are what each choice sets.
 from __future__ import annotations
 
 import re
+from collections.abc import Set as AbstractSet
 
 from apbot.read.labels import words
 from apbot.read.text import Unit
@@ -102,7 +103,7 @@ _COUNT_HEAD_RE = re.compile(r"\W*(?:\d{1,2}\s*(?:x|×|st|nd|rd|th)?)?\W*", re.I)
 _ROW_NUMBER_RE = re.compile(r"\W*(?:\d{1,2}|[\u2460-\u2473\u2776-\u277f])\W*")
 
 
-def _names_key(cell: str, key_words: set[str], key_names: set[str]) -> bool:
+def _names_key(cell: str, key_words: set[str], key_names: AbstractSet[str]) -> bool:
     """Whether a row's first cell names the key: a word of four letters or more shared to its
     sixth letter, or the whole cell the key's printed name however short ("FAN", "ECO"): a
     word of three letters is too common to tie a cell to a key, a cell that is nothing else
@@ -118,7 +119,7 @@ def key_row_marks(
     key_words: set[str],
     header: tuple[str, ...] = (),
     rows_below: bool = False,
-    key_names: set[str] = frozenset(),  # type: ignore[assignment]
+    key_names: AbstractSet[str] = frozenset(),
 ) -> list[str] | None:
     """The cells after a row's first cell when that cell names the key (:func:`_names_key`) and
     every other cell is a name printed in capitals ("| Shade | PALE | LIGHT | DARK |" alone or
