@@ -99,3 +99,29 @@ def test_a_number_said_of_a_named_place_is_no_limit() -> None:
     upper zone's, not the lower zone's low limit (goal_limits)."""
     said = "Put the upper zone just under 11 °C and the lower zone at 16 °C."
     assert _goal(WINE, said) == {"upper_zone": 11, "lower_zone": 16}
+
+
+PROCESSOR = """
+appliance: {id: proc_x, category: food_processor, name: "Kora P5 food processor", brand: K}
+controls:
+  - {id: speed_key, kind: button, label: "SPEED"}
+  - {id: snd_key, kind: button, label: "STARTUP SOUND"}
+variables:
+  speed: {type: discrete, values: ["1", "2", "3"]}
+  startup: {type: discrete, values: ["off", "on"], label: "STARTUP SOUND"}
+actions:
+  press_speed: {control: speed_key}
+  press_snd: {control: snd_key}
+features:
+  speed:
+    - {actions: [press_speed], variable: speed, effect: next}
+  startup:
+    - {actions: [press_snd], variable: startup, effect: toggle}
+"""
+
+
+def test_a_verb_and_its_particle_are_no_compound() -> None:
+    """ "start up on speed 2" is a verb and its particle, not the STARTUP name spelt apart
+    (goal_spelling); "the start up sound" (a word of the name after) still is."""
+    assert _goal(PROCESSOR, "Start up on speed 2.") == {"speed": "2"}
+    assert _goal(PROCESSOR, "Turn the start up sound off.") == {"startup": "off"}
