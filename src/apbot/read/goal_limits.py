@@ -73,6 +73,8 @@ def _said_of_another(view: Model, text: Text, k: int, info: VarInfo) -> bool:
 
 
 def _named(view: Model, words: frozenset[str]) -> list[VarInfo]:
+    """The settings whose name or label holds one of ``words`` (LO ALARM, "Max temp"): the
+    limits of one side; a model with none on either side has no pair and the rule stays out."""
     return [
         info
         for info in view.infos.values()
