@@ -5,6 +5,7 @@ and a bedside lamp, neither of them in a suite. Each test fails without its narr
 from __future__ import annotations
 
 from apbot.model.load import loads_model
+from apbot.read import read_manual
 from apbot.read.goal import parse_instruction
 
 
@@ -125,3 +126,42 @@ def test_a_verb_and_its_particle_are_no_compound() -> None:
     (goal_spelling); "the start up sound" (a word of the name after) still is."""
     assert _goal(PROCESSOR, "Start up on speed 2.") == {"speed": "2"}
     assert _goal(PROCESSOR, "Turn the start up sound off.") == {"startup": "off"}
+
+
+_WARMER = """\
+# Calda W3 plate warmer
+
+## The keys
+
+- START: starts heating; pressed again, stops it.
+- SET: opens the settings menu and moves from one code to the next.
+- ▲ and ▼: raise or lower the plate temperature by 5 °C. In the menu: the next or last value.
+
+## Temperature
+
+The plate temperature runs from 40 °C to 80 °C in steps of 5 °C. Factory setting: 60 °C.
+
+## The settings menu
+
+Stop heating before you open the settings.
+
+| Code | Setting  | Values (in ▲ order) | Factory |
+|------|----------|---------------------|---------|
+| bP   | Key beep | ON, OFF             | ON      |
+| Ao   | Auto off | OFF, 1, 2, 4        | 2       |
+
+1. Press SET. The first code appears with its value, for example bP ON.
+2. Press ▲ or ▼ until the value you want is shown.
+3. Press SET. The value is kept and the next code appears.
+"""
+
+
+def test_a_menu_pair_keeps_the_quantity_it_sets_outside_the_menu() -> None:
+    """The pair that steps a settings menu's values also sets the plate temperature on the home
+    screen, said in words the home-screen rule does not know ("raise or lower the plate
+    temperature"): the menu may not take the pair from the reader of that quantity (roles_menu,
+    a Code-headed menu made by set17)."""
+    model = read_manual(_WARMER, ["press_start", "press_set", "press_up", "press_down"]).model
+    assert "settings_menu" in model.features
+    temperature = next(s for n, s in model.variables.items() if "temperature" in n)
+    assert temperature.ranges == [(40, 80, 5)]
