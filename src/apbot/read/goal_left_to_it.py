@@ -7,7 +7,7 @@ from __future__ import annotations
 from apbot.model.schema import DiscreteVariable
 from apbot.read.goal_text import CLAUSE_ENDS, Text
 from apbot.read.goal_view import Goal, Model, domain_values, own_stems
-from apbot.read.goal_vocab import stem
+from apbot.read.goal_vocab import concept, stem
 
 _CHOOSING = frozenset(stem(w) for w in ("pick", "choose", "decide", "select", "set", "adjust"))
 _AUTO = frozenset({"auto", "automatic"})
@@ -16,7 +16,7 @@ _AUTO = frozenset({"auto", "automatic"})
 def left_to_it(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
     """Set a setting to its AUTO value when the user lets the appliance choose it."""
     for k in range(len(text.tokens)):
-        if text.word(k) != "let":
+        if text.word(k) != "let" or not _appliance_let(view, text, k):
             continue
         verb = next(
             (j for j in range(k + 1, min(k + 5, len(text.stems))) if text.stems[j] in _CHOOSING),
@@ -38,3 +38,12 @@ def left_to_it(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
                 if len(autos) == 1:
                     goal[name] = autos[0]
                     claimed.add(j)
+
+
+def _appliance_let(view: Model, text: Text, k: int) -> bool:
+    """The one let choose at ``k`` is the appliance ("let it", "let the machine"), not the
+    user: "let me set the speed myself" keeps the choice, so no AUTO is meant."""
+    after = text.word(k + 1)
+    if after == "the":
+        after = text.word(k + 2)
+    return after in ("it", "them") or concept(after) in view.appliance_words

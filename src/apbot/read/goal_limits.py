@@ -9,9 +9,9 @@ from __future__ import annotations
 from typing import Any
 
 from apbot.read.goal_fit import fit
-from apbot.read.goal_text import Text
+from apbot.read.goal_text import CLAUSE_ENDS, Text
 from apbot.read.goal_values import bare_number, name_words
-from apbot.read.goal_view import Goal, Model, VarInfo, domain_values
+from apbot.read.goal_view import Goal, Model, VarInfo, domain_values, own_stems
 from apbot.read.numbers import Mention
 
 _BELOW = frozenset({"below", "under", "beneath"})
@@ -40,7 +40,7 @@ def limit_numbers(
         fits = [
             (info, v)
             for info in side
-            if info.name not in goal
+            if info.name not in goal and not _said_of_another(view, text, mention.start - 1, info)
             if (v := _value(view, info, mention, goal)) is not None
         ]
         if len(fits) != 1:
@@ -53,7 +53,28 @@ def limit_numbers(
     return left
 
 
+_PART_ENDS = CLAUSE_ENDS | {",", "and", "or", "but"}
+
+
+def _said_of_another(view: Model, text: Text, k: int, info: VarInfo) -> bool:
+    """A setting other than the limit is named in the words before "below" / "above" at ``k``
+    (its part of the sentence): "the upper zone just under 11 °C" gives 11 to the UPPER zone,
+    a place, not to a LOWER one as its lower limit; "the tank falls below 21" names none."""
+    own = own_stems(info)
+    j = k - 1
+    while j >= 0 and text.word(j) not in _PART_ENDS:
+        said = text.stems[j]
+        if said not in own and any(
+            said in own_stems(other) for other in view.infos.values() if other is not info
+        ):
+            return True
+        j -= 1
+    return False
+
+
 def _named(view: Model, words: frozenset[str]) -> list[VarInfo]:
+    """The settings whose name or label holds one of ``words`` (LO ALARM, "Max temp"): the
+    limits of one side; a model with none on either side has no pair and the rule stays out."""
     return [
         info
         for info in view.infos.values()

@@ -236,11 +236,13 @@ _LET_FILLERS = frozenset({"it", "them", "go", "to", "fall", "into", "the", "a"})
 
 def _never_let(text: Text, k: int) -> bool:
     """ "never let it go to sleep", "don't let it dim": what the setting named at ``k`` does
-    by itself is forbidden, so the setting is off."""
+    by itself is forbidden, so the setting is off. Only when "it" / "them" (the appliance) is
+    let do it: in "never let the fan stop" the setting is the subject kept going, not refused."""
     j = k - 1
     while j > 0 and text.word(j) in _LET_FILLERS:
         j -= 1
-    return text.word(j) == "let" and text.word(j - 1) in ("never", "don't", "dont", "not")
+    denied = text.word(j - 1) in ("never", "don't", "dont", "not")
+    return text.word(j) == "let" and denied and text.word(j + 1) in ("it", "them")
 
 
 _OFF_VERBS = frozenset({"turn", "switch", "shut", "turning", "switching"})

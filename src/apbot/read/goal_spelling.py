@@ -15,6 +15,7 @@ _HYPHEN_PAIR = re.compile(r"\b([A-Za-z]{2,})-([A-Za-z]{2,})\b")
 # word written as one (SMARTSTART): the way a name is spaced is not part of it
 _CAMEL_PAIR = re.compile(r"\b([A-Z]?[a-z]{2,})([A-Z][a-z]{2,})\b")
 _WORD = re.compile(r"[A-Za-z]{2,}")
+_PARTICLES = frozenset({"up", "down", "on", "off", "in", "out", "over", "back", "away"})
 
 
 def joined_compounds(view: Model, instruction: str) -> str:
@@ -33,13 +34,18 @@ def joined_compounds(view: Model, instruction: str) -> str:
 
 
 def _joined_pairs(text: str, words: set[str]) -> str:
-    """Two words one space apart whose joining is a model word ("smart start"), joined."""
+    """Two words one space apart whose joining is a model word ("smart start"), joined. A verb
+    and its particle ("start up", "warm up") are joined only before a word of the model ("the
+    start up sound"): alone, "start up on speed 2" says to start, not the STARTUP setting."""
     found = list(_WORD.finditer(text))
     out, last = [], 0
-    for first, second in itertools.pairwise(found):
+    for n, (first, second) in enumerate(itertools.pairwise(found)):
         if first.start() < last or text[first.end() : second.start()] != " ":
             continue
         whole = (first[0] + second[0]).casefold()
+        after = stem(found[n + 2][0].casefold()) if n + 2 < len(found) else ""
+        if second[0].casefold() in _PARTICLES and after not in words:
+            continue
         if stem(whole) in words:
             out += [text[last : first.start()], whole]
             last = second.end()

@@ -359,9 +359,14 @@ def assign_menu(
     b.note(
         "features.settings_menu", f"{entry.name} opens the menu, {nxt.name} goes on", items[0].at
     )
-    del pairs[base]
-    _home_quantity(b, ups[0], downs[0])
-    return {entry.name, nxt.name, ups[0], downs[0]}
+    # a menu of letter codes alone (a column headed Code, "SLP — sleep delay") keeps the
+    # pair only when its home-screen quantity is read here: otherwise the pair goes on to the
+    # readers of what it sets outside the menu ("▲ and ▼: raise or lower the temperature")
+    lettered = all(_LETTER_CODE.match(item.code) for item in items)
+    if _home_quantity(b, ups[0], downs[0]) or not lettered:
+        del pairs[base]
+        return {entry.name, nxt.name, ups[0], downs[0]}
+    return {entry.name, nxt.name}
 
 
 # "▲  On the home screen: humidity up. In the menu: the next value.": what the pair moves
@@ -379,11 +384,12 @@ _OWN_NOUN_RE = re.compile(
 _STOPS_RE = re.compile(r"\bstops\s+at\b|\bdoes\s+not\s+wrap\b|\bno\s+wrap", re.IGNORECASE)
 
 
-def _home_quantity(b: Builder, up: str, down: str) -> None:
+def _home_quantity(b: Builder, up: str, down: str) -> bool:
     """The pair that steps the menu's values also moves a quantity of its own on the home
     screen ("▲ On the home screen: humidity up. In the menu: the next value."): that
     quantity is a setting the pair changes directly, with the values its section lists
-    ("OFF ▸ 1 ▸ 2 … ▸ 8") and end stops when the manual says it stops."""
+    ("OFF ▸ 1 ▸ 2 … ▸ 8") and end stops when the manual says it stops. Whether it was read:
+    a menu of letter codes keeps the pair only then."""
     by_name = {k.name: k for k in b.infos}
     tokens = [c for a in (up, down) for c in by_name[a].controls]
     nouns: dict[str, int] = {}
@@ -395,7 +401,7 @@ def _home_quantity(b: Builder, up: str, down: str) -> None:
             if m:
                 nouns.setdefault(m.group("noun").lower(), i)
     if len(nouns) != 1:
-        return
+        return False
     noun, at = next(iter(nouns.items()))
     ev = b.evidence(tokens)
     if ev.values and len(ev.values) >= 2:
@@ -407,3 +413,4 @@ def _home_quantity(b: Builder, up: str, down: str) -> None:
     effect = {up: "next", down: "prev"}
     b.feature(f"set_{var}", [{"actions": [up, down], "variable": var, "effect": effect}])
     b.note(f"variables.{var}", "the pair's own quantity on the home screen", at)
+    return True
