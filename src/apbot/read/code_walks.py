@@ -153,5 +153,6 @@ def _items(cell: str) -> list[str]:
 
 
 def _label(b: Builder, action: str) -> str | None:
+    """The printed name of the one control an action works: the chart's section names the key."""
     controls = next((i.controls for i in b.infos if i.name == action), ())
     return b.labels[controls[0]].text if len(controls) == 1 and controls[0] in b.labels else None

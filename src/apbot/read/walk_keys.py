@@ -62,8 +62,10 @@ def pair_of(
 
 
 def _turned(b: Builder, action: str) -> bool:
+    """Whether the action turns a dial: the one dial is the pair a step says only "turn" for."""
     return any(i.name == action and i.skill.startswith("turn") for i in b.infos)
 
 
 def controls_of(b: Builder, action: str) -> tuple[str, ...]:
+    """The panel controls an action works, as grounding named them (none if it is unknown)."""
     return next((i.controls for i in b.infos if i.name == action), ())
