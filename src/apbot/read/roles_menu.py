@@ -28,6 +28,7 @@ from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.labels import words
 from apbot.read.menu_values import DEFAULT_HEAD, MenuItem, item_variable
+from apbot.read.roles_menu_home import home_quantity
 
 _CODE = r"(?P<pre>[A-Za-z]{1,2})-?(?P<num>\d{1,2})"
 _CODE_RE = re.compile(rf"^{_CODE}$")
@@ -363,54 +364,7 @@ def assign_menu(
     # pair only when its home-screen quantity is read here: otherwise the pair goes on to the
     # readers of what it sets outside the menu ("▲ and ▼: raise or lower the temperature")
     lettered = all(_LETTER_CODE.match(item.code) for item in items)
-    if _home_quantity(b, ups[0], downs[0]) or not lettered:
+    if home_quantity(b, ups[0], downs[0]) or not lettered:
         del pairs[base]
         return {entry.name, nxt.name, ups[0], downs[0]}
     return {entry.name, nxt.name}
-
-
-# "▲  On the home screen: humidity up. In the menu: the next value.": what the pair moves
-# when no menu is open, said beside its use in the menu
-_HOME_NOUN_RE = re.compile(
-    r"\b(?:on|from|in|at)\s+the\s+(?:home|main|idle|standby|start)\s+(?:screen|display|view)\b"
-    r"[^.:;]*[:,]\s*(?:the\s+)?(?P<noun>[a-z][a-z-]+(?:\s+[a-z][a-z-]+)?)\s+(?:up|down)\b",
-    re.IGNORECASE,
-)
-# "▲ / ▼ — temperature up / down (10 °C a press). In the SET menu: the next value."
-_OWN_NOUN_RE = re.compile(
-    r"^[^A-Za-z]*[—–:-]\s*(?:the\s+)?(?P<noun>[a-z][a-z-]+(?:\s+[a-z][a-z-]+)?)\s+up\s*"
-    r"(?:/|and|or)\s*down\b"
-)
-_STOPS_RE = re.compile(r"\bstops\s+at\b|\bdoes\s+not\s+wrap\b|\bno\s+wrap", re.IGNORECASE)
-
-
-def _home_quantity(b: Builder, up: str, down: str) -> bool:
-    """The pair that steps the menu's values also moves a quantity of its own on the home
-    screen ("▲ On the home screen: humidity up. In the menu: the next value."): that
-    quantity is a setting the pair changes directly, with the values its section lists
-    ("OFF ▸ 1 ▸ 2 … ▸ 8") and end stops when the manual says it stops. Whether it was read:
-    a menu of letter codes keeps the pair only then."""
-    by_name = {k.name: k for k in b.infos}
-    tokens = [c for a in (up, down) for c in by_name[a].controls]
-    nouns: dict[str, int] = {}
-    for t in tokens:
-        lab = b.labels.get(t)
-        for i in lab.mentions if lab else []:
-            text = b.manual.units[i].text
-            m = _HOME_NOUN_RE.search(text) or _OWN_NOUN_RE.match(text)
-            if m:
-                nouns.setdefault(m.group("noun").lower(), i)
-    if len(nouns) != 1:
-        return False
-    noun, at = next(iter(nouns.items()))
-    ev = b.evidence(tokens)
-    if ev.values and len(ev.values) >= 2:
-        var = b.add_discrete(noun, ev.values, noun.upper(), ev)
-    else:  # (a range the manual gives the noun elsewhere: "The plate heat runs from 30 °C …")
-        var = b.add_number(noun, noun.upper(), ev, cyclic=False)
-    if any(_STOPS_RE.search(b.manual.units[i].text) for t in tokens for i in b.labels[t].mentions):
-        b.variables[var]["wrap"] = False
-    effect = {up: "next", down: "prev"}
-    b.feature(f"set_{var}", [{"actions": [up, down], "variable": var, "effect": effect}])
-    b.note(f"variables.{var}", "the pair's own quantity on the home screen", at)
-    return True
