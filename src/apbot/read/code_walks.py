@@ -19,7 +19,7 @@ from apbot.read.cases_tables import _norm, _tables
 from apbot.read.held_guesses import drop_unused
 from apbot.read.text import Unit
 from apbot.read.walk_apply import apply_walk
-from apbot.read.walk_ends import pause_seconds
+from apbot.read.walk_ends import CLOSES_RE, pause_seconds
 from apbot.read.walk_keys import pair_of, stepping_pairs
 
 # a cell listing a field's values: two or more items split by commas or slashes
@@ -30,8 +30,6 @@ _SYMBOL_RE = re.compile(r"^([^\w\s(]+)\s+(\w.*)$")
 _ARROWS_RE = re.compile(r"\bpress\s+[▲△↑]\s*(?:or|and|/)\s*[▼▽↓]", re.I)
 # a chart column holding what the display shows: "| Code | Setting | Values |"
 _CODE_HEAD_RE = re.compile(r"^\W*(?:codes?|display)\W*$", re.I)
-# the pause after which the menu closes by itself: "or wait 10 seconds to return"
-_ENDS_RE = re.compile(r"\b(?:returns?|closes?|leaves?|exits?|stored)\b", re.I)
 
 
 def read_code_walks(b: Builder) -> None:
@@ -98,7 +96,7 @@ def _chart_walk(
             ):
                 return None
             timeout = next(
-                (s for u in section if _ENDS_RE.search(u.text) and (s := pause_seconds(u.text))),
+                (s for u in section if CLOSES_RE.search(u.text) and (s := pause_seconds(u.text))),
                 None,
             )
             return {"pair": pair, "fields": fields, "at": at, "timeout": timeout, "said": said}

@@ -10,8 +10,9 @@ from typing import Any
 
 from apbot.read.goal_fit import fit
 from apbot.read.goal_text import CLAUSE_ENDS, Text
-from apbot.read.goal_values import bare_number, name_words
-from apbot.read.goal_view import Goal, Model, VarInfo, domain_values, own_stems
+from apbot.read.goal_unitless import listed_number
+from apbot.read.goal_values import name_words
+from apbot.read.goal_view import Goal, Model, VarInfo, own_stems
 from apbot.read.numbers import Mention
 
 _BELOW = frozenset({"below", "under", "beneath"})
@@ -91,11 +92,7 @@ def _value(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
     if mention.kind not in ("number", "quantity"):
         return None
     said = mention.value if mention.kind == "number" else _said_number(mention)
-    for candidate in domain_values(view, info, goal):
-        number = bare_number(candidate)
-        if number is not None and said is not None and abs(number - said) < 1e-6:
-            return candidate
-    return None
+    return None if said is None else listed_number(view, info, goal, said)
 
 
 def _said_number(mention: Mention) -> float | None:

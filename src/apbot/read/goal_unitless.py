@@ -68,9 +68,15 @@ def _of_no_kind(info: VarInfo) -> bool:
 
 
 def _value(view: Model, info: VarInfo, mention: Mention, goal: Goal) -> Any:
+    return listed_number(view, info, goal, mention.value)
+
+
+def listed_number(view: Model, info: VarInfo, goal: Goal, said: float) -> Any:
+    """The value of the setting's domain printed as the bare number said ("3" for "three"), or
+    None: a number said without a unit the setting shares is matched as the manual prints it."""
     for value in domain_values(view, info, goal):
         number = bare_number(value)
-        if number is not None and abs(number - mention.value) < 1e-6:
+        if number is not None and abs(number - said) < 1e-6:
             return value
     return None
 

@@ -16,7 +16,7 @@ _STORED_RE = re.compile(
 # "hold MODE for 2 seconds; the display returns to …", "keep SET pressed for 3 seconds"
 _HELD_FOR_RE = re.compile(r"\b(?:hold|holding|held|keep\s+\S+\s+pressed)\b[^.;:]*$", re.I)
 # what a pause does at the end of a walk: "If you press no key for 8 seconds, the menu closes"
-_CLOSES_RE = re.compile(r"\b(?:closes?|stored|returns?|leaves?|exits?)\b", re.I)
+CLOSES_RE = re.compile(r"\b(?:closes?|stored|returns?|leaves?|exits?)\b", re.I)
 
 
 def pause_seconds(text: str) -> float | None:
@@ -40,6 +40,6 @@ def walk_timeout(b: Builder, end: str, at: int) -> float | None:
         if u.heading != units[at].heading:
             break
         pause = pause_seconds(u.text)
-        if pause is not None and u.step is None and _CLOSES_RE.search(u.text):
+        if pause is not None and u.step is None and CLOSES_RE.search(u.text):
             return pause
     return None
