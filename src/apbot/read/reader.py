@@ -42,6 +42,7 @@ from apbot.read.hold_seconds import hold_seconds, pair_hold_seconds
 from apbot.read.initials import read_initials
 from apbot.read.keyed_cycles import read_keyed_cycles
 from apbot.read.labels import find_labels
+from apbot.read.numbered_keys import read_numbered_keys
 from apbot.read.off_positions import read_off_positions
 from apbot.read.off_words import read_held_off_words, read_off_words
 from apbot.read.ordinal_lamps import read_ordinal_lamps
@@ -97,6 +98,7 @@ def read_manual(
     read_only_modes(builder)
     read_fixed_in_mode(builder)  # "In Sleep mode the speed is fixed at 1"
     read_value_keys(builder)  # ("Press 33 or 45 to select that speed": one setting)
+    read_numbered_keys(builder)  # (T1 / T2 / T3 read key by key: one choice, a guess)
     read_code_cycles(builder)  # ("After P8 … P1 again": the key's run of codes)
     read_keyed_cycles(builder)  # ("NATURE: N1 → N2 … NOISE: S1 → …": a cycle per key)
     read_off_positions(builder)  # ("positions: OFF and levels 1 to 8": the knob is power too)
