@@ -22,7 +22,12 @@ LATHE_ACTIONS = ["press_power", "turn_faster", "turn_slower"]
 
 
 def test_a_dial_named_by_its_two_ways_is_one_setting_the_user_can_name() -> None:
-    model = read_manual(LATHE, LATHE_ACTIONS).model
+    reading = read_manual(LATHE, LATHE_ACTIONS)
+    model = reading.model
+    assert {n.subject for n in reading.report.guesses} >= {
+        "actions.turn_faster",
+        "actions.turn_slower",
+    }  # the dial's name came from the actions: a guess, recorded
     assert not [p for p in check_model(model) if p.severity == "error"]
     assert "faster" not in model.variables and "slower" not in model.variables
     steps = [s for f in model.features.values() for s in f if s.variable == "speed"]

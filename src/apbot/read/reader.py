@@ -16,7 +16,7 @@ from pydantic import ValidationError
 from apbot.model.schema import ApplianceModel
 from apbot.model.validate import check_model
 from apbot.read.action_rank import in_manual_order, listed_as_given
-from apbot.read.actions import ActionInfo, parse_actions
+from apbot.read.actions import ActionInfo, action_info, parse_actions
 from apbot.read.belief_name import UNNAMED
 from apbot.read.build import Builder
 from apbot.read.build_base import PLACEHOLDERS
@@ -88,6 +88,7 @@ def read_manual(
     labels = find_labels(manual, tokens)
     infos = in_manual_order(infos, manual, labels)  # (the given order carries no meaning)
     builder = Builder(manual, infos, labels)
+    note_compared_dials(builder)
     assign(builder)
     read_ordinal_lamps(builder)  # (a key guessed a toggle whose lamps, by place, are levels)
     read_press_tables(builder)  # (and one whose press-count rows list its values)
@@ -377,3 +378,12 @@ def _fallback(data: dict[str, Any], infos: list[ActionInfo]) -> dict[str, Any]:
             for i in infos
         },
     }
+
+
+def note_compared_dials(b: Builder) -> None:
+    """Record as a guess each turn read as one way of a dial its pair names (``turn_faster``
+    and ``turn_slower`` as the speed dial): the name comes from the actions, not the manual."""
+    for info in b.infos:
+        if info.skill.startswith("turn") and info.controls != action_info(info.name).controls:
+            way = "up" if info.skill == "turn_cw" else "down"
+            b.note(f"actions.{info.name}", f"turns the {info.token} dial {way} (named by its pair)")
