@@ -42,3 +42,24 @@ def test_one_comparative_turn_alone_stays_a_dial_of_its_own() -> None:
     both = {i.name: i for i in parse_actions(["turn_coarser", "turn_finer"])}
     assert both["turn_coarser"].controls == both["turn_finer"].controls == ("fineness",)
     assert {both["turn_coarser"].skill, both["turn_finer"].skill} == {"turn_cw", "turn_ccw"}
+
+
+# a mill whose positions grow coarser: "the finest" is where the FINER turn stops, position 1
+MILL = """KORNO HAND MILL
+Guide
+
+CONTROLS
+  POWER           on or off
+  FINENESS dial   positions 1 (finest) to 8 (coarsest); clockwise coarser, anticlockwise finer
+"""
+MILL_ACTIONS = ["press_power", "turn_coarser", "turn_finer"]
+
+
+def test_a_superlative_of_a_keys_own_word_is_the_end_that_key_turns_to() -> None:
+    model = read_manual(MILL, MILL_ACTIONS).model
+    finest = parse_instruction(model, "The finest setting, please.", MILL, outside=[])
+    assert finest.get("fineness") == 1
+    coarsest = parse_instruction(model, "Set the coarsest setting.", MILL, outside=[])
+    assert coarsest.get("fineness") == 8
+    second = parse_instruction(model, "Use the second finest setting.", MILL, outside=[])
+    assert second.get("fineness") == 2
