@@ -102,9 +102,10 @@ def parse_actions(names: list[str]) -> list[ActionInfo]:
     # a key that is only ever held ("hold_learn") is a key too: "hold_learn_mode" holds it
     # with MODE
     held = {rest for _, verb, rest in first if rest and verb in HOLD_VERBS}
+    turned = _compared_dials(first)
     out: list[ActionInfo] = []
     for name, verb, rest in first:
-        info = action_info(name)
+        info = turned.get(name) or action_info(name)
         if verb in HOLD_VERBS:  # a two-key hold names two of the other keys
             controls = _hold_controls(rest or name, single)
             if controls == (rest or name,) and rest not in single:
@@ -112,6 +113,39 @@ def parse_actions(names: list[str]) -> list[ActionInfo]:
                 controls = pair if len(pair) == 2 else controls
             info = ActionInfo(name, "hold", controls)
         out.append(info)
+    return out
+
+
+# a dial named by the two ways it is turned ("turn_faster" / "turn_slower"): the quantity it
+# sets, and the word for turning it up first (the way numbers usually grow on such a dial)
+COMPARED = {
+    ("faster", "slower"): "speed",
+    ("coarser", "finer"): "fineness",
+    ("louder", "quieter"): "volume",
+    ("louder", "softer"): "volume",
+    ("warmer", "cooler"): "temperature",
+    ("hotter", "colder"): "temperature",
+    ("brighter", "dimmer"): "brightness",
+    ("stronger", "weaker"): "strength",
+    ("thicker", "thinner"): "thickness",
+}
+
+
+def _compared_dials(first: list[tuple[str, str, str]]) -> dict[str, ActionInfo]:
+    """Two turns named only by opposite comparatives (``turn_faster``, ``turn_slower``) are one
+    dial turned two ways, whose quantity the pair names (speed): read apart, each would be a
+    setting of its own that no sentence names. Only when both turns are there, once each."""
+    turns: dict[str, list[str]] = {}
+    for name, verb, rest in first:
+        if verb in TURN_VERBS:
+            turns.setdefault(rest, []).append(name)
+    out: dict[str, ActionInfo] = {}
+    for (up, down), noun in COMPARED.items():
+        ups, downs = turns.get(up, []), turns.get(down, [])
+        if len(ups) != 1 or len(downs) != 1 or noun in turns or out.get(ups[0]):
+            continue
+        out[ups[0]] = ActionInfo(ups[0], "turn_cw", (noun,))
+        out[downs[0]] = ActionInfo(downs[0], "turn_ccw", (noun,))
     return out
 
 

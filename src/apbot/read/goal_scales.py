@@ -8,6 +8,7 @@ from typing import Any
 
 from apbot.model.schema import DiscreteVariable
 from apbot.read.goal_degree_stems import superlative_stem_setting
+from apbot.read.goal_keyed_ends import keyed_end, keyed_offset
 from apbot.read.goal_ladders import (
     is_off_level,
     ladder,
@@ -52,6 +53,9 @@ def superlatives(
         compared = as_as(text, k)
         if end is None and compared is not None:
             end, reach = compared
+        keyed = None if word in LOWEST or word in HIGHEST else keyed_end(view, goal, word)
+        if end is None and keyed is not None:
+            end, reach = keyed[1], 1  # "the finest": where the FINER key stops
         if end is None and _own_superlative(view, goal, word) is not None:
             end = -1  # "the thickest setting" on THICK ▲ / ▼, "the brightest" for BRIGHTNESS
         if end is None and _superlative_before_name(view, text, k, goal):
@@ -99,7 +103,9 @@ def superlatives(
         if best is None and end is not None:
             stemmed = superlative_stem_setting(text, k, _open_ordered(view, goal))
             best = (0.0, stemmed) if stemmed else None
-        kind = kind_of(text, k) if end is not None else None
+        if keyed is not None:
+            best = (0.0, keyed[0])  # the key names its setting: no other setting's words
+        kind = kind_of(text, k) if end is not None and keyed is None else None
         if kind and (best is None or not named_specifically(view.infos[best[1]], text, k)):
             only = only_of_kind(view, goal, kind)
             if (
@@ -120,7 +126,10 @@ def superlatives(
         off_first = (len(values) > 2 and is_off_level(view.infos[name], values[0])) or (
             len(values) > 1 and bool(ladder(values))
         )
-        if end == 0 and off_first:
+        back = keyed_offset(text, k) if keyed is not None else 0
+        if back and back < len(values):
+            goal[name] = values[back] if end == 0 else values[-1 - back]  # "second finest"
+        elif end == 0 and off_first:
             goal[name] = values[1]  # "the lowest level": the lowest one that works, not off
         elif end is not None:
             goal[name] = values[end]

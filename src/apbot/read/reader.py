@@ -16,7 +16,7 @@ from pydantic import ValidationError
 from apbot.model.schema import ApplianceModel
 from apbot.model.validate import check_model
 from apbot.read.action_rank import in_manual_order, listed_as_given
-from apbot.read.actions import ActionInfo, parse_actions
+from apbot.read.actions import ActionInfo, action_info, parse_actions
 from apbot.read.belief_name import UNNAMED
 from apbot.read.build import Builder
 from apbot.read.build_base import PLACEHOLDERS
@@ -42,6 +42,7 @@ from apbot.read.hold_seconds import hold_seconds, pair_hold_seconds
 from apbot.read.initials import read_initials
 from apbot.read.keyed_cycles import read_keyed_cycles
 from apbot.read.labels import find_labels
+from apbot.read.numbered_keys import read_numbered_keys
 from apbot.read.off_positions import read_off_positions
 from apbot.read.off_words import read_held_off_words, read_off_words
 from apbot.read.ordinal_lamps import read_ordinal_lamps
@@ -87,6 +88,7 @@ def read_manual(
     labels = find_labels(manual, tokens)
     infos = in_manual_order(infos, manual, labels)  # (the given order carries no meaning)
     builder = Builder(manual, infos, labels)
+    note_compared_dials(builder)
     assign(builder)
     read_ordinal_lamps(builder)  # (a key guessed a toggle whose lamps, by place, are levels)
     read_press_tables(builder)  # (and one whose press-count rows list its values)
@@ -97,6 +99,7 @@ def read_manual(
     read_only_modes(builder)
     read_fixed_in_mode(builder)  # "In Sleep mode the speed is fixed at 1"
     read_value_keys(builder)  # ("Press 33 or 45 to select that speed": one setting)
+    read_numbered_keys(builder)  # (T1 / T2 / T3 read key by key: one choice, a guess)
     read_code_cycles(builder)  # ("After P8 … P1 again": the key's run of codes)
     read_keyed_cycles(builder)  # ("NATURE: N1 → N2 … NOISE: S1 → …": a cycle per key)
     read_off_positions(builder)  # ("positions: OFF and levels 1 to 8": the knob is power too)
@@ -375,3 +378,12 @@ def _fallback(data: dict[str, Any], infos: list[ActionInfo]) -> dict[str, Any]:
             for i in infos
         },
     }
+
+
+def note_compared_dials(b: Builder) -> None:
+    """Record as a guess each turn read as one way of a dial its pair names (``turn_faster``
+    and ``turn_slower`` as the speed dial): the name comes from the actions, not the manual."""
+    for info in b.infos:
+        if info.skill.startswith("turn") and info.controls != action_info(info.name).controls:
+            way = "up" if info.skill == "turn_cw" else "down"
+            b.note(f"actions.{info.name}", f"turns the {info.token} dial {way} (named by its pair)")
