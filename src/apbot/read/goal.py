@@ -51,6 +51,7 @@ from apbot.read.goal_kinds import kind_numbers
 from apbot.read.goal_left_to_it import left_to_it
 from apbot.read.goal_limits import limit_numbers
 from apbot.read.goal_listed import listed_outside
+from apbot.read.goal_marked_ends import marked_ends
 from apbot.read.goal_mute import muted_volume
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
 from apbot.read.goal_numbered_times import numbered_times
@@ -82,6 +83,7 @@ from apbot.read.goal_spelling import joined_compounds
 from apbot.read.goal_start import power_and_running
 from apbot.read.goal_switches import switches
 from apbot.read.goal_text import Text
+from apbot.read.goal_thousands import said_thousands
 from apbot.read.goal_times_a_day import said_times_a_day
 from apbot.read.goal_turns import said_turns
 from apbot.read.goal_twins import place_twins, twin_numbers
@@ -101,6 +103,7 @@ MAX_INSTRUCTION = 5_000
 _REWRITES = (
     without_remarks,
     said_hundreds,
+    said_thousands,
     said_times_a_day,
     said_turns,
     said_dates,
@@ -178,6 +181,7 @@ def parse_instruction(
     kelvin_words(view, text, goal, claimed, where)
     halfway_levels(view, text, goal, claimed, where)
     left_to_it(view, text, goal, claimed)
+    marked_ends(view, text, goal, claimed, where)
     superlatives(view, text, goal, claimed, where)
     named_units(view, text, goal, claimed, where)
     said_units(view, goal)

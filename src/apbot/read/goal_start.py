@@ -155,11 +155,18 @@ def _running_now(view: Model, text: Text, goal: Goal) -> bool:
     "with the circulation running": a switch's state)."""
     return any(
         token.text == "running"
-        and text.word(k + 1) in CLAUSE_ENDS | {"", ","}
+        and (text.word(k + 1) in CLAUSE_ENDS | {"", ","} or _said_running_at(view, text, k))
         and not any(text.word(k - d) in _DENIALS for d in range(1, 4))
         and not a_switch_state(view, text, goal, k)
         for k, token in enumerate(text.tokens)
     )
+
+
+def _said_running_at(view: Model, text: Text, k: int) -> bool:
+    """ "Drill running at six thousand", "the mill running at fineness 3": the appliance's own
+    noun, then "running at" its setting, is the appliance asked to run (not "the fan running
+    at high", a part's state)."""
+    return text.word(k + 1) == "at" and concept(text.word(k - 1)) in view.appliance_words
 
 
 _SET_GOING = frozenset({"going", "started", "cooking", "heating", "running"})
