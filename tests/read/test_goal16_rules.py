@@ -263,3 +263,129 @@ def test_never_letting_it_go_into_a_mode_turns_that_mode_off() -> None:
     (goal_let; a refused letting hands no choice over, goal_left_to_it)."""
     assert _goal(RADIO, "Never let it go into the dim mode.") == {"auto_dim": "off"}
     assert _goal(RADIO, "Don't let it dim automatically.") == {"auto_dim": "off"}
+
+
+NOISE = """
+appliance: {id: noise_x, category: sound_machine, name: "Hush N2 sound machine", brand: H}
+controls:
+  - {id: vol_dial, kind: dial, label: "VOL"}
+  - {id: sound_key, kind: button, label: "SOUND"}
+variables:
+  volume: {type: numeric, ranges: [[1, 12, 1]], initial: 5}
+  track: {type: discrete, values: [rain, surf, fan]}
+actions:
+  louder: {control: vol_dial, skill: turn_cw}
+  softer: {control: vol_dial, skill: turn_ccw}
+  press_sound: {control: sound_key}
+features:
+  volume:
+    - {actions: [louder, softer], variable: volume, effect: {louder: next, softer: prev}}
+  track:
+    - {actions: [press_sound], variable: track, effect: next}
+"""
+
+
+def test_as_quiet_as_it_goes_is_the_volumes_bottom() -> None:
+    """ "as quiet as it goes", "the loudest it goes" measure loudness: the ends of the one
+    VOLUME (goal_scale_kinds)."""
+    assert _goal(NOISE, "Surf, as quiet as it goes.") == {"track": "surf", "volume": 1}
+    assert _goal(NOISE, "Rain on its loudest setting.") == {"track": "rain", "volume": 12}
+
+
+FLOSSER = """
+appliance: {id: floss_x, category: water_flosser, name: "Jetta W5 water flosser", brand: J}
+controls:
+  - {id: mode_key, kind: button, label: "MODE"}
+  - {id: level_key, kind: button, label: "LEVEL"}
+  - {id: start_key, kind: button, label: "START"}
+variables:
+  mode: {type: discrete, values: [clean, massage, soft]}
+  level: {type: numeric, ranges: [[1, 10, 1]], initial: 5}
+  running: {type: discrete, values: ["off", "on"]}
+actions:
+  press_mode: {control: mode_key}
+  press_level: {control: level_key}
+  press_start: {control: start_key}
+features:
+  mode:
+    - {actions: [press_mode], variable: mode, effect: next}
+  level:
+    - {actions: [press_level], variable: level, effect: next}
+  start:
+    - {actions: [press_start], variable: running, effect: toggle}
+"""
+
+
+def test_a_verb_before_a_kind_word_is_a_name() -> None:
+    """ "Clean mode at level 8" names the CLEAN mode; "Clean my teeth" still starts (goal_start)."""
+    assert _goal(FLOSSER, "Clean mode at level 8.") == {"mode": "clean", "level": 8}
+    assert _goal(FLOSSER, "Clean my teeth at level 8.")["running"] == "on"
+
+
+def test_getting_it_ready_is_no_start() -> None:
+    """ "Get it ready at level 6" prepares it; "get it going" starts it (goal_start)."""
+    assert _goal(FLOSSER, "Get it ready at level 6 in massage mode.") == {
+        "level": 6,
+        "mode": "massage",
+    }
+    assert _goal(FLOSSER, "Get it going at level 6.")["running"] == "on"
+
+
+INFLATOR = """
+appliance: {id: pump_x, category: tyre_inflator, name: "Aero P3 inflator", brand: A}
+controls:
+  - {id: up_key, kind: button, label: "+"}
+  - {id: down_key, kind: button, label: "-"}
+  - {id: go_key, kind: button, label: "GO"}
+variables:
+  target: {type: numeric, unit: psi, ranges: [[5, 60, 1]], initial: 30}
+  running: {type: discrete, values: ["off", "on"]}
+actions:
+  press_up: {control: up_key}
+  press_down: {control: down_key}
+  press_go: {control: go_key}
+features:
+  target:
+    - actions: [press_up, press_down]
+      variable: target
+      effect: {press_up: next, press_down: prev}
+  start:
+    - {actions: [press_go], variable: running, effect: toggle}
+"""
+
+
+def test_pump_and_inflate_open_an_order() -> None:
+    """ "Pump the tyres to 36 psi", "Inflate the ball …" ask for the work (goal_text)."""
+    assert _goal(INFLATOR, "Pump the tyres to 36 psi.") == {"target": 36, "running": "on"}
+    assert _goal(INFLATOR, "Inflate the ball to 9 psi.") == {"target": 9, "running": "on"}
+
+
+SCENES = """
+appliance: {id: light_x, category: ceiling_light, name: "Lumo C5 ceiling light", brand: L}
+controls:
+  - {id: down_key, kind: touch, label: "DIM -"}
+  - {id: up_key, kind: touch, label: "DIM +"}
+  - {id: film_key, kind: touch, label: "FILM"}
+variables:
+  brightness: {type: numeric, unit: "%", ranges: [[10, 100, 10]], initial: 100}
+  colour: {type: discrete, values: ["2700", "4000", "6500"], initial: "4000"}
+actions:
+  press_down: {control: down_key}
+  press_up: {control: up_key}
+  press_film: {control: film_key}
+features:
+  brightness:
+    - actions: [press_down, press_up]
+      variable: brightness
+      effect: {press_down: prev, press_up: next}
+  film:
+    - {actions: [press_film], variable: brightness, effect: {to: 20}, set: {colour: "2700"}}
+"""
+
+
+def test_a_scene_keys_own_quantity_yields_to_the_one_said() -> None:
+    """ "Film scene, but at forty percent": the scene's colour, at the brightness said — the
+    key's 20 % only when nothing else is said of the brightness (goal_presets)."""
+    said = "Film scene, but a bit brighter: forty percent."
+    assert _goal(SCENES, said) == {"brightness": 40, "colour": "2700"}
+    assert _goal(SCENES, "The film scene, please.") == {"brightness": 20, "colour": "2700"}

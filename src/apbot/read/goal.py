@@ -70,7 +70,7 @@ from apbot.read.goal_ordinals import ordinal_numbers
 from apbot.read.goal_outside import kept_outside
 from apbot.read.goal_own_switch import own_switch_states
 from apbot.read.goal_periods import distinct, in_weeks
-from apbot.read.goal_presets import preset_companions
+from apbot.read.goal_presets import lift_presets, preset_companions, restore_presets
 from apbot.read.goal_quantity_values import quantity_values
 from apbot.read.goal_remarks import without_remarks
 from apbot.read.goal_scales import superlatives
@@ -159,6 +159,7 @@ def parse_instruction(
         goal[match.var] = match.value
         where[match.var] = match.start
         claimed.update(range(match.start, match.end))
+    lifted = lift_presets(view, text, goal, where)  # "Movie scene, but thirty percent"
     confirmed_choices(view, goal, where)
     both_values(view, text, matches, goal, claimed, where)
     restated_codes(view, text, goal, claimed)
@@ -200,7 +201,8 @@ def parse_instruction(
     entry_switches(view, goal)
     closing_switches(view, text, goal)
     gated_switches(view, text, goal)
-    preset_companions(view, text, goal, where)
+    restore_presets(goal, where, lifted)
+    preset_companions(view, text, goal, where, lifted)
     set_by_hand(view, text, goal)
     implied_cases(view, goal, start_known=outside is None)  # (a read belief guesses its start)
     entry_modes(view, goal, start_known=outside is None)
