@@ -14,31 +14,13 @@ import re
 
 from apbot.model.domain import all_values
 from apbot.model.schema import NumericVariable
+from apbot.model.values import NUMBER_WORDS, words_to_number
 from apbot.read.goal_view import Model
 
-_UNITS = [
-    "one",
-    "two",
-    "three",
-    "four",
-    "five",
-    "six",
-    "seven",
-    "eight",
-    "nine",
-    "ten",
-    "eleven",
-    "twelve",
-    "thirteen",
-    "fourteen",
-    "fifteen",
-    "sixteen",
-    "seventeen",
-    "eighteen",
-    "nineteen",
-]
-_TENS = ["twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety"]
-_WORD = rf"(?:(?:{'|'.join(_TENS)})(?:[- ](?:{'|'.join(_UNITS[:9])}))?|{'|'.join(_UNITS)})"
+_ONES = [w for w, n in NUMBER_WORDS.items() if 1 <= n <= 19 and w not in ("a", "an", "single")]
+_TENS = [w for w, n in NUMBER_WORDS.items() if n in range(20, 100, 10)]
+_DIGITS = [w for w in _ONES if NUMBER_WORDS[w] <= 9]
+_WORD = rf"(?:(?:{'|'.join(_TENS)})(?:[- ](?:{'|'.join(_DIGITS)}))?|{'|'.join(_ONES)})"
 _SAID = re.compile(
     rf"\b(?:(?P<word>{_WORD})[ -]thousand|(?P<digits>\d{{1,3}})(?:,000|\s*thousand|\s*k)"
     r"(?![\d]|[,.]\d))(?P<unit>\s*(?:rpm|r\.p\.m\.?|revolutions per minute))?",
@@ -51,13 +33,7 @@ _IN_THOUSANDS = re.compile(
 
 
 def _number(match: re.Match[str]) -> int:
-    if match["digits"]:
-        return int(match["digits"])
-    words = re.split(r"[ -]", match["word"].casefold())
-    if words[0] in _TENS:
-        value = 10 * (_TENS.index(words[0]) + 2)
-        return value + (_UNITS.index(words[1]) + 1 if len(words) > 1 else 0)
-    return _UNITS.index(words[0]) + 1
+    return int(match["digits"] or words_to_number(match["word"]) or 0)
 
 
 def _thousands_unit(view: Model) -> str | None:
