@@ -45,6 +45,7 @@ def test_thousands_on_a_display_that_counts_in_thousands() -> None:
     thousands; said without its unit it still finds the speed (goal_thousands)."""
     said = "Run the router at eighteen thousand rpm."
     assert _goal(ROUTER, said, ROUTER_MANUAL) == {"speed": 18, "running": "on"}
+    assert _goal(ROUTER, "Run it at 16k.", ROUTER_MANUAL) == {"speed": 16, "running": "on"}
     assert _goal(ROUTER, "Set it to 20,000 but don't start it.", ROUTER_MANUAL) == {
         "speed": 20,
         "running": "off",
@@ -389,3 +390,9 @@ def test_a_scene_keys_own_quantity_yields_to_the_one_said() -> None:
     said = "Film scene, but a bit brighter: forty percent."
     assert _goal(SCENES, said) == {"brightness": 40, "colour": "2700"}
     assert _goal(SCENES, "The film scene, please.") == {"brightness": 20, "colour": "2700"}
+
+
+def test_a_marked_end_said_of_another_setting_is_that_ones() -> None:
+    """The manual marks the grind's 9 (coarsest), yet "the coarsest amount" would be no grind:
+    the word after the superlative names another setting (goal_marked_ends)."""
+    assert "grind" not in _goal(GRINDER, "The coarsest amount.", GRINDER_MANUAL)

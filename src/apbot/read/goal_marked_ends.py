@@ -21,6 +21,7 @@ from apbot.read.goal_view import Goal, Model
 _AFTER_NUMBER = re.compile(r"(?<![\d.,])(\d+)\s*\(\s*([a-z]+est)\s*\)")
 _ROW = re.compile(r"^\s*\|?\s*(\d+)\s*\|")
 _IN_BRACKETS = re.compile(r"\(\s*([a-z]+est)\s*\)")
+_NOT_SUPERLATIVES = frozenset({"latest", "request", "interest", "suggest", "honest", "modest"})
 
 
 def _marked(view: Model) -> dict[str, tuple[str, list[float], int]]:
@@ -39,6 +40,8 @@ def _marked(view: Model) -> dict[str, tuple[str, list[float], int]]:
         if row:
             pairs += [(row[1], m[1]) for m in _IN_BRACKETS.finditer(line)]
         for number, word in pairs:
+            if len(word) < 6 or word in _NOT_SUPERLATIVES:
+                continue  # "(best)", "(latest)": no end of an order
             for name, _values in ends.get(float(number), []):
                 found.setdefault(word, set()).add((name, float(number)))
     out: dict[str, tuple[str, list[float], int]] = {}
@@ -50,6 +53,16 @@ def _marked(view: Model) -> dict[str, tuple[str, list[float], int]]:
         values = owners[0]
         out[word] = (name, values, values.index(value))
     return out
+
+
+def _of_another(view: Model, text: Text, k: int, name: str) -> bool:
+    """ "the highest temperature" where the manual marks a SPEED's 5 (highest): the word after
+    the superlative names another setting, whose end is meant."""
+    key = text.concepts[k + 1] if k + 1 < len(text.concepts) else ""
+    return bool(key) and any(
+        other != name and info.vocab.get(key, 0.0) >= 0.8 and key not in view.infos[name].vocab
+        for other, info in view.infos.items()
+    )
 
 
 def marked_ends(
@@ -66,7 +79,7 @@ def marked_ends(
         if word not in marked or k in claimed:
             continue
         name, values, index = marked[word]
-        if name in goal:
+        if name in goal or _of_another(view, text, k, name):
             continue
         before = text.word(k - 2) if text.word(k - 1) == "-" else text.word(k - 1)
         step = ORDINALS.get(before, 1) - 1

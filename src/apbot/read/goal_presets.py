@@ -19,6 +19,7 @@ from apbot.read.goal_text import Text
 from apbot.read.goal_values import name_words
 from apbot.read.goal_view import Goal, Model
 from apbot.read.goal_vocab import STOP_WORDS, stem
+from apbot.read.numbers import find_mentions
 
 
 def _presets(view: Model) -> list[tuple[str, Any, tuple[str, ...], dict[str, Any]]]:
@@ -54,7 +55,10 @@ def lift_presets(view: Model, text: Text, goal: Goal, where: dict[str, int]) -> 
     placed: "Movie scene, but a bit brighter — thirty percent" asks for MOVIE's colour at 30 %,
     not its 20 % (:func:`restore_presets` puts it back when nothing else was said of it)."""
     lifted: Lifted = {}
+    kinds = {m.dimension for m in find_mentions(text.tokens) if m.kind != "number"}
     for var, value, stems, _companions in _presets(view):
+        if view.infos[var].dimension not in kinds - {None}:
+            continue  # no quantity of its kind said ("the TV position, massage 3" keeps 45°)
         if var in goal and str(goal[var]) == str(value) and var in where:
             start = where[var]
             if text.stems[start : start + 1] == [stems[0]]:

@@ -14,7 +14,7 @@ import re
 
 from apbot.model.domain import all_values
 from apbot.model.schema import NumericVariable
-from apbot.model.values import NUMBER_WORDS, words_to_number
+from apbot.model.values import NUMBER_WORDS, parse_quantity, words_to_number
 from apbot.read.goal_view import Model
 
 _ONES = [w for w, n in NUMBER_WORDS.items() if 1 <= n <= 19 and w not in ("a", "an", "single")]
@@ -22,18 +22,24 @@ _TENS = [w for w, n in NUMBER_WORDS.items() if n in range(20, 100, 10)]
 _DIGITS = [w for w in _ONES if NUMBER_WORDS[w] <= 9]
 _WORD = rf"(?:(?:{'|'.join(_TENS)})(?:[- ](?:{'|'.join(_DIGITS)}))?|{'|'.join(_ONES)})"
 _SAID = re.compile(
-    rf"\b(?:(?P<word>{_WORD})[ -]thousand|(?P<digits>\d{{1,3}})(?:,000|\s*thousand|\s*k)"
+    rf"\b(?:(?P<word>{_WORD})[ -]thousand|(?P<digits>\d{{1,3}})(?:,000|\s*thousand|k\b)"
     r"(?![\d]|[,.]\d))(?P<unit>\s*(?:rpm|r\.p\.m\.?|revolutions per minute))?",
     re.IGNORECASE,
 )
 _IN_THOUSANDS = re.compile(
-    r"(?:[×x]\s*1[,.]?000\b|\bin thousands\b|\bthousands of\b)\s*(?P<unit>rpm|[a-zµ/]+)?",
+    r"(?:[×x]\s*1[,.]?000\b|\bin thousands\b(?: of)?|\bthousands of\b(?=\s*rpm))\s*"
+    r"(?P<unit>rpm|[a-zµ/]+)?",
     re.IGNORECASE,
 )
 
 
 def _number(match: re.Match[str]) -> int:
     return int(match["digits"] or words_to_number(match["word"]) or 0)
+
+
+def _another_unit(word: str) -> bool:
+    quantity = parse_quantity(f"1 {word.strip('.,;:!?')}")
+    return quantity is not None and quantity[1] not in (None, "speed")
 
 
 def _thousands_unit(view: Model) -> str | None:
@@ -65,6 +71,9 @@ def said_thousands(view: Model, instruction: str) -> str:
         value = _number(match)
         if float(value * 1000) in figures or float(value) not in figures:
             return match[0]
+        after = instruction[match.end() :].split(maxsplit=1)
+        if not match["unit"] and after and _another_unit(after[0]):
+            return match[0]  # "two thousand watts": a quantity of its own unit, no count
         said = match["unit"] or (f" {unit}" if unit else "")
         return f"{value}{said}"
 
