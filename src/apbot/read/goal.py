@@ -51,6 +51,7 @@ from apbot.read.goal_kinds import kind_numbers
 from apbot.read.goal_left_to_it import left_to_it
 from apbot.read.goal_limits import limit_numbers
 from apbot.read.goal_listed import listed_outside
+from apbot.read.goal_marked_ends import marked_ends
 from apbot.read.goal_mute import muted_volume
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
 from apbot.read.goal_numbered_times import numbered_times
@@ -69,7 +70,7 @@ from apbot.read.goal_ordinals import ordinal_numbers
 from apbot.read.goal_outside import kept_outside
 from apbot.read.goal_own_switch import own_switch_states
 from apbot.read.goal_periods import distinct, in_weeks
-from apbot.read.goal_presets import preset_companions
+from apbot.read.goal_presets import lift_presets, preset_companions, restore_presets
 from apbot.read.goal_quantity_values import quantity_values
 from apbot.read.goal_remarks import without_remarks
 from apbot.read.goal_scales import superlatives
@@ -82,6 +83,7 @@ from apbot.read.goal_spelling import joined_compounds
 from apbot.read.goal_start import power_and_running
 from apbot.read.goal_switches import switches
 from apbot.read.goal_text import Text
+from apbot.read.goal_thousands import said_thousands
 from apbot.read.goal_times_a_day import said_times_a_day
 from apbot.read.goal_turns import said_turns
 from apbot.read.goal_twins import place_twins, twin_numbers
@@ -101,6 +103,7 @@ MAX_INSTRUCTION = 5_000
 _REWRITES = (
     without_remarks,
     said_hundreds,
+    said_thousands,
     said_times_a_day,
     said_turns,
     said_dates,
@@ -156,6 +159,7 @@ def parse_instruction(
         goal[match.var] = match.value
         where[match.var] = match.start
         claimed.update(range(match.start, match.end))
+    lifted = lift_presets(view, text, goal, where)  # "Movie scene, but thirty percent"
     confirmed_choices(view, goal, where)
     both_values(view, text, matches, goal, claimed, where)
     restated_codes(view, text, goal, claimed)
@@ -178,6 +182,7 @@ def parse_instruction(
     kelvin_words(view, text, goal, claimed, where)
     halfway_levels(view, text, goal, claimed, where)
     left_to_it(view, text, goal, claimed)
+    marked_ends(view, text, goal, claimed, where)
     superlatives(view, text, goal, claimed, where)
     named_units(view, text, goal, claimed, where)
     said_units(view, goal)
@@ -196,7 +201,8 @@ def parse_instruction(
     entry_switches(view, goal)
     closing_switches(view, text, goal)
     gated_switches(view, text, goal)
-    preset_companions(view, text, goal, where)
+    restore_presets(goal, where, lifted)
+    preset_companions(view, text, goal, where, lifted)
     set_by_hand(view, text, goal)
     implied_cases(view, goal, start_known=outside is None)  # (a read belief guesses its start)
     entry_modes(view, goal, start_known=outside is None)

@@ -65,7 +65,9 @@ def assign_mentions(
     # in (a read belief's is the manual's: the main setting before a probe's target)
     options.sort(key=lambda o: (-o[0], own_key_depth(view.model, o[2]), view.infos[o[2]].order))
     used: set[int] = set()
-    for score, mi, name, value in options:
+    # a bare number waits for the others: "eight cups … at setting four" leaves it one home
+    waited = [o for o in options if o[0] <= 0 and mentions[o[1]].kind == "number"]
+    for score, mi, name, value in options + waited:
         if mi in used or name in goal:
             continue
         mention = mentions[mi]

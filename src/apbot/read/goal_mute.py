@@ -23,11 +23,9 @@ def muted_volume(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None
     said = [k for k in range(len(text.tokens)) if _silence_at(text, k) and k not in claimed]
     if not said or _sound_switch(view):
         return
-    volumes = [
-        info
-        for info in view.infos.values()
-        if info.role == "setting" and stem("volume") in own_stems(info)
-    ]
+    settings = [info for info in view.infos.values() if info.role == "setting"]
+    volumes = [info for info in settings if stem("volume") in own_stems(info)]
+    volumes = volumes or [info for info in settings if _named_sound(info)]
     if len(volumes) != 1 or volumes[0].name in goal:
         return
     said = [k for k in said if not _of_another(view, text, k, volumes[0])]
@@ -69,6 +67,12 @@ def _of_another(view: Model, text: Text, k: int, volume: VarInfo) -> bool:
         return False
     said = text.stems[n]
     return any(said in own_stems(i) for i in others)
+
+
+def _named_sound(info: VarInfo) -> bool:
+    """A setting of loudness levels named for the sound itself (SOUND LOUD / SOFT / MUTE): a
+    volume by another name, silenced the same way where no setting is named VOLUME."""
+    return isinstance(info.var, DiscreteVariable) and concept(info.name) == concept("sound")
 
 
 def _sound_switch(view: Model) -> bool:

@@ -106,6 +106,8 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
                 continue  # "7 am": half of a time said, not the first value listed "4:00 AM"
             if text.word(i) in ("up", "down") and text.word(i - 1) in _PARTICLE_VERBS:
                 continue  # "set up the buttonhole", "warm up": a verb's particle, not UP
+            if text.word(i) in _DEGREE_ADVERBS and end == i + 1:
+                continue  # "fully to the left": how far, not the FULL (bright) level
             if said_as_past_place(text, i):
                 continue  # "the bowl was in the freezer": where it stood, not the FREEZE mode
             if text.word(i - 1) in ("stay", "stays", "remain", "remains"):
@@ -157,6 +159,10 @@ def value_matches(view: Model, text: Text) -> list[_Match]:
     matches.sort(key=_order)
     matches = told_apart(matches, _order, lambda m: m.var, lambda m: m.value, view)
     return _prefer_specific(_prefer_heads(matches), text, itself)
+
+
+_DEGREE_ADVERBS = frozenset({"fully", "completely", "totally", "entirely"})
+"""Adverbs of how far ("fully open", "fully to the left"), whose stem is a value's synonym."""
 
 
 def _order(match: _Match) -> tuple[float, int, float]:

@@ -9,6 +9,7 @@ from typing import Any
 
 from apbot.model.domain import build_domain
 from apbot.model.schema import DiscreteVariable, NumericVariable, TimeVariable
+from apbot.read.goal_let import never_let
 from apbot.read.goal_text import (
     CLAUSE_ENDS,
     Text,
@@ -220,7 +221,7 @@ def _said_off(text: Text, k: int) -> bool:
         return True
     if _turned_off(text, j) or (text.word(j).isalpha() and _turned_off(text, _before(text, j))):
         return True  # "turn off the mist", "turn off the automatic watering"
-    if _never_let(text, k):
+    if never_let(text, k):
         return True  # "never let it go to sleep": the SLEEP after a while, off
     for d in range(1, 4):
         word = text.word(k + d)
@@ -229,20 +230,6 @@ def _said_off(text: Text, k: int) -> bool:
         if word in ("off", "disabled"):
             return True
     return False
-
-
-_LET_FILLERS = frozenset({"it", "them", "go", "to", "fall", "into", "the", "a"})
-
-
-def _never_let(text: Text, k: int) -> bool:
-    """ "never let it go to sleep", "don't let it dim": what the setting named at ``k`` does
-    by itself is forbidden, so the setting is off. Only when "it" / "them" (the appliance) is
-    let do it: in "never let the fan stop" the setting is the subject kept going, not refused."""
-    j = k - 1
-    while j > 0 and text.word(j) in _LET_FILLERS:
-        j -= 1
-    denied = text.word(j - 1) in ("never", "don't", "dont", "not")
-    return text.word(j) == "let" and denied and text.word(j + 1) in ("it", "them")
 
 
 _OFF_VERBS = frozenset({"turn", "switch", "shut", "turning", "switching"})

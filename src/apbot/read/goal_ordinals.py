@@ -41,13 +41,32 @@ def ordinal_numbers(view: Model, instruction: str) -> str:
             return match[0]  # "first tray 2, then …": the number is said; the ordinal orders
         if _CLAUSE_START.search(before) and _OBJECT_AFTER.match(after):
             return match[0]  # "First program the delay": a step's order, the noun a verb
-        if concept(match[2].casefold()) not in nouns:
+        if concept(match[2].casefold()) not in nouns and not _code_initial(view, match[2]):
             return match[0]
         return f"{match[2]} {ORDINALS[match[1].casefold()]}"
 
     return _ORDINAL_NOUN.sub(number, instruction)
 
 
+def _code_initial(view: Model, noun: str) -> bool:
+    """ "the second timer" for T2 of T1 / T2 / T3: a noun the manual uses, whose first letter
+    is the one letter every numbered code of a setting shares (a code's letter abbreviates its
+    noun), and that no setting is named by ("the second time" is no T2)."""
+    word = noun.casefold()
+    if len(word) < 4 or word not in view.manual_words or not word.isalpha():
+        return False
+    if any(concept(word) in info.vocab for info in view.infos.values()):
+        return False
+    for info in view.infos.values():
+        if not isinstance(info.var, DiscreteVariable) or not _numbered(info):
+            continue
+        letters = {_LETTER.sub("", str(v)).casefold() for v in info.values}
+        if letters == {word[0]}:
+            return True
+    return False
+
+
+_LETTER = re.compile(r"[- ]?\d+$")
 _WORD_NUMBER = re.compile(r"[A-Za-z]+[- ]?\d{1,2}")  # "user 1", "slot-2": a word and its number
 
 

@@ -19,6 +19,7 @@ from apbot.read.goal_text import Text
 from apbot.read.goal_values import name_words
 from apbot.read.goal_view import Goal, Model
 from apbot.read.goal_vocab import STOP_WORDS, stem
+from apbot.read.numbers import find_mentions
 
 
 def _presets(view: Model) -> list[tuple[str, Any, tuple[str, ...], dict[str, Any]]]:
@@ -45,12 +46,46 @@ def _presets(view: Model) -> list[tuple[str, Any, tuple[str, ...], dict[str, Any
     return found
 
 
-def preset_companions(view: Model, text: Text, goal: Goal, where: dict[str, int]) -> None:
+Lifted = dict[str, tuple[Any, int]]
+"""A one-touch key's own setting -> (the value its name gave, where it was said)."""
+
+
+def lift_presets(view: Model, text: Text, goal: Goal, where: dict[str, int]) -> Lifted:
+    """Take a one-touch key's own quantity out of the goal while the said quantities are
+    placed: "Movie scene, but a bit brighter — thirty percent" asks for MOVIE's colour at 30 %,
+    not its 20 % (:func:`restore_presets` puts it back when nothing else was said of it)."""
+    lifted: Lifted = {}
+    kinds = {m.dimension for m in find_mentions(text.tokens) if m.kind != "number"}
+    for var, value, stems, _companions in _presets(view):
+        if view.infos[var].dimension not in kinds - {None}:
+            continue  # no quantity of its kind said ("the TV position, massage 3" keeps 45°)
+        if var in goal and str(goal[var]) == str(value) and var in where:
+            start = where[var]
+            if text.stems[start : start + 1] == [stems[0]]:
+                lifted[var] = (value, start)
+                del goal[var], where[var]
+    return lifted
+
+
+def restore_presets(goal: Goal, where: dict[str, int], lifted: Lifted) -> None:
+    """A lifted key's quantity back where no other value was said for its setting."""
+    for var, (value, start) in lifted.items():
+        if var not in goal:
+            goal[var] = value
+            where[var] = start
+
+
+def preset_companions(
+    view: Model, text: Text, goal: Goal, where: dict[str, int], lifted: Lifted | None = None
+) -> None:
     """Add what a named one-touch key sets beside its own setting (see the module doc)."""
     for var, value, stems, companions in _presets(view):
-        if var not in goal or str(goal[var]) != str(value) or var not in where:
+        if lifted and var in lifted and str(lifted[var][0]) == str(value):
+            start = lifted[var][1]  # the key was named; its own setting was said otherwise
+        elif var not in goal or str(goal[var]) != str(value) or var not in where:
             continue
-        start = where[var]
+        else:
+            start = where[var]
         if text.stems[start : start + 1] != [stems[0]]:
             continue  # the value was said another way ("head at 10"), not by the key's name
         for name, companion in companions.items():

@@ -22,10 +22,12 @@ _KIND_OF_WORD = {
     **dict.fromkeys(("strongest", "weakest", "gentlest", "softest", "mildest"), "level"),
     **dict.fromkeys(("strong", "weak", "gentle", "soft", "mild"), "level"),
     **dict.fromkeys(("fastest", "slowest"), "speed"),  # "as fast as possible": in a hurry
+    **dict.fromkeys(("loudest", "quietest", "loud", "quiet"), "volume"),
 }
 """The kind a superlative's own word measures; "level": a strength, counted in numbered
 levels (an intensity 1-5, a massage OFF/1/2/3), whatever the setting is called; "speed": the
-levels of a setting named for its speed (a SOFT START 1-2 is not how fast it runs)."""
+levels of a setting named for its speed (a SOFT START 1-2 is not how fast it runs); "volume":
+the one setting named VOLUME ("as quiet as it goes")."""
 _AS_AS_KINDS = frozenset(w for w, kind in _KIND_OF_WORD.items() if not w.endswith("est"))
 
 
@@ -118,6 +120,7 @@ def only_of_kind(view: Model, goal: Goal, kind: str) -> tuple[float, str] | None
             or (kind == "time" and isinstance(info.var, TimeVariable) and info.timing == "duration")
             or (kind == "level" and (numbered_levels(info) or worded_levels(info)))
             or (kind == "speed" and concept("speed") in own_concepts(info))
+            or (kind == "volume" and concept("volume") in own_concepts(info))
         )
     ]
     return (0.0, found[0]) if len(found) == 1 else None

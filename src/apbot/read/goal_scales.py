@@ -16,6 +16,7 @@ from apbot.read.goal_ladders import (
     ordered,
     ordered_values,
 )
+from apbot.read.goal_marked_ends import of_another
 from apbot.read.goal_scale_kinds import (
     as_as,
     kind_of,
@@ -54,6 +55,8 @@ def superlatives(
         if end is None and compared is not None:
             end, reach = compared
         keyed = None if word in LOWEST or word in HIGHEST else keyed_end(view, goal, word)
+        if keyed is not None and of_another(view, text, k, keyed[0]):
+            keyed = None  # "the coarsest amount": said of another setting, not the dial's end
         if end is None and keyed is not None:
             end, reach = keyed[1], 1  # "the finest": where the FINER key stops
         if end is None and _own_superlative(view, goal, word) is not None:

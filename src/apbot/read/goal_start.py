@@ -155,11 +155,18 @@ def _running_now(view: Model, text: Text, goal: Goal) -> bool:
     "with the circulation running": a switch's state)."""
     return any(
         token.text == "running"
-        and text.word(k + 1) in CLAUSE_ENDS | {"", ","}
+        and (text.word(k + 1) in CLAUSE_ENDS | {"", ","} or _said_running_at(view, text, k))
         and not any(text.word(k - d) in _DENIALS for d in range(1, 4))
         and not a_switch_state(view, text, goal, k)
         for k, token in enumerate(text.tokens)
     )
+
+
+def _said_running_at(view: Model, text: Text, k: int) -> bool:
+    """ "Drill running at six thousand", "the mill running at fineness 3": the appliance's own
+    noun, then "running at" its setting, is the appliance asked to run (not "the fan running
+    at high", a part's state)."""
+    return text.word(k + 1) == "at" and concept(text.word(k - 1)) in view.appliance_words
 
 
 _SET_GOING = frozenset({"going", "started", "cooking", "heating", "running"})
@@ -297,8 +304,16 @@ def _says_start(
             continue  # "heat 7": a setting named with its value, not a doing
         if _plural_form(text.word(k2)):
             continue  # "Fries at 175 degrees": a plural noun, never an order's bare verb
+        if verb != stem("run") and (
+            text.word(k2 + 1) == "-"
+            or text.stems[k2 + 1 : k2 + 2] == []
+            or (text.stems[k2 + 1] in _KIND_NOUNS)
+        ):
+            continue  # "Clean mode at pressure 8", "Warm-holding on": a name, not a doing
         if verb in STRONG_VERBS:
             return True
+        if verb == stem("get") and _made_ready(text, k2):
+            continue  # "Get a 300 ml mug of water ready": set up, not started
         if verb in WEAK_VERBS and (k == 0 or text.word(k - 1) in (".", ";", "!")):
             if verb == stem("give") and any(
                 text.concepts[j] in settings for j in range(k2 + 1, min(k2 + 9, len(text.tokens)))
@@ -308,6 +323,22 @@ def _says_start(
         if verb in WEAK_VERBS and text.word(k2 + 1) == "me":
             return True  # "... and make me an espresso"
     return None
+
+
+_KIND_NOUNS = frozenset(
+    stem(w) for w in ("mode", "programme", "program", "setting", "cycle", "menu", "function")
+)
+
+
+def _made_ready(text: Text, k: int) -> bool:
+    """ "Get a mug of hot water ready", "get it ready for …": "ready" closes the object of
+    GET in its clause — the appliance is to be prepared, not set going."""
+    for j in range(k + 1, min(k + 12, len(text.tokens))):
+        if text.word(j) in CLAUSE_ENDS or text.word(j) in (",", ";"):
+            return False
+        if text.word(j) == "ready":
+            return True
+    return False
 
 
 def _plural_form(word: str) -> bool:

@@ -4,7 +4,9 @@ said to be none or off by a negation or a verb ("no delay", "skip the rinse") ar
 
 from __future__ import annotations
 
+from apbot.read.goal_let import kept_on, never_let
 from apbot.read.goal_shortened import compound_of_name
+from apbot.read.goal_switch_words import another_switchs_phrase, tail_of_anothers
 from apbot.read.goal_text import (
     CLAUSE_ENDS,
     VERB_FAMILIES,
@@ -91,7 +93,7 @@ def switches(
                 continue  # "eco" names the ECO switch, not HOLIDAY that wears ECO's label
             if _part_after(text, k, info.vocab):
                 continue  # "clean the ventilation slots": a part of the body, not the switch
-            if _another_switchs_phrase(view, info, text, k):
+            if another_switchs_phrase(view, info, text, k) or tail_of_anothers(view, info, text, k):
                 continue  # "super freeze": SUPER FREEZE, not SUPER COOL that shares SUPER
             if _in_anothers_name(view, goal, info, text, k, where, claimed):
                 continue  # "the light timer to 3.5 minutes": LIGHT TIME's word, no LIGHT switch
@@ -147,6 +149,10 @@ def switches(
         positive = not (negative_around(text, k) or negative_around(text, last))
         if text.word(k) in _SILENCING and text.stems[k] in own:
             positive = not _denied_before(text, k)  # "mute it" turns a MUTE switch on
+        if any(never_let(text, p) for p in range(max(0, k - 3), last + 1) if text.stems[p] in own):
+            positive = False  # "never let it go into the dim mode": AUTO DIM off
+        elif kept_on(text, k, last):
+            positive = True  # "don't let the light go out": the light stays on
         assert info.on is not None and info.off is not None
         goal[name] = info.on if positive else info.off
         if where is not None:
@@ -403,18 +409,3 @@ def _switching_verb(view: Model, text: Text, k: int) -> bool:
     while text.word(j) in ("it", "the") or concept(text.word(j)) in view.appliance_words:
         j += 1
     return text.word(j) in ("on", "off", "up")
-
-
-def _another_switchs_phrase(view: Model, info: VarInfo, text: Text, k: int) -> bool:
-    """The word at k and the word after it are both another switch's own words, and the
-    second is not this one's: the two name that switch ("super freeze" beside SUPER COOL)."""
-    here, after = text.concepts[k], text.concepts[k + 1] if k + 1 < len(text.concepts) else ""
-    if not after or info.vocab.get(after, 0.0) > 0:
-        return False
-    return any(
-        other is not info
-        and other.role == "switch"
-        and other.vocab.get(here, 0.0) >= 0.8
-        and other.vocab.get(after, 0.0) >= 0.8
-        for other in view.infos.values()
-    )

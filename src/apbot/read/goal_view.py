@@ -132,6 +132,15 @@ def _add_doers(info: VarInfo, text: str, appliance: set[str]) -> None:
                     _add_vocab(info, form, 0.6)
 
 
+def _sound_is_volume(infos: dict[str, VarInfo]) -> None:
+    """ "turn the sound down to 3": the one VOLUME setting is the sound, where nothing else of
+    the model is named for sound (no BEEP switch, no ALARM TONE)."""
+    sound = concept("sound")
+    volumes = [i for i in infos.values() if stem("volume") in i.vocab and i.role == "setting"]
+    if len(volumes) == 1 and not any(sound in i.vocab for i in infos.values()):
+        volumes[0].vocab[sound] = 0.8
+
+
 def build(model: ApplianceModel, manual: str = "") -> Model:
     """Gather each variable's words and role from the model (and the names the manual gives
     to coded values, when it is given)."""
@@ -188,6 +197,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
                 if not any(w in START_LABELS for w in name_words(label)):
                     _add_vocab(info, label, 0.8)
     mark_power_and_running(model, infos)
+    _sound_is_volume(infos)
     for info in infos.values():
         if isinstance(info.var, TimeVariable) or (
             isinstance(info.var, NumericVariable) and info.dimension == "time"

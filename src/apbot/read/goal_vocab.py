@@ -339,6 +339,7 @@ LETTER_WORDS = {
 SYNONYMS: dict[str, tuple[str, ...]] = {
     "harder": ("firmer", "firm", "hard"),
     "softer": ("soft", "soften"),
+    "soft": ("quiet", "quieter"),  # a sound's soft level is its quiet one
     "light": ("pale", "lighter"),
     "dark": ("darker", "deep"),
     "low": ("lo", "quiet", "gentle", "quietest", "slow"),

@@ -1,0 +1,36 @@
+"""Another switch's name said around a switch's word: "super freeze" beside SUPER COOL is SUPER
+FREEZE, "the startup sound" beside a MUTE (whose group "sound" is) STARTUP TONE. A word a
+switch shares with another names the one whose words stand with it."""
+
+from __future__ import annotations
+
+from apbot.read.goal_text import Text
+from apbot.read.goal_view import Model, VarInfo, own_stems
+from apbot.read.goal_vocab import STOP_WORDS
+
+
+def tail_of_anothers(view: Model, info: VarInfo, text: Text, k: int) -> bool:
+    """A synonym of this switch's word right after another switch's own word names that
+    other one: "the startup sound off" is STARTUP TONE, no MUTE (whose group "sound" is)."""
+    if k == 0 or text.stems[k] in own_stems(info) or text.word(k - 1) in STOP_WORDS:
+        return False
+    before = text.stems[k - 1]
+    return before not in own_stems(info) and any(
+        other is not info and other.role == "switch" and before in own_stems(other)
+        for other in view.infos.values()
+    )
+
+
+def another_switchs_phrase(view: Model, info: VarInfo, text: Text, k: int) -> bool:
+    """The word at k and the word after it are both another switch's own words, and the
+    second is not this one's: the two name that switch ("super freeze" beside SUPER COOL)."""
+    here, after = text.concepts[k], text.concepts[k + 1] if k + 1 < len(text.concepts) else ""
+    if not after or info.vocab.get(after, 0.0) > 0:
+        return False
+    return any(
+        other is not info
+        and other.role == "switch"
+        and other.vocab.get(here, 0.0) >= 0.8
+        and other.vocab.get(after, 0.0) >= 0.8
+        for other in view.infos.values()
+    )
