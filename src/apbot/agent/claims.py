@@ -134,6 +134,15 @@ class Claims(Checks):
             return True
         return False
 
+    def take_marked(self) -> bool:
+        """A goal setting the macro action left shown only as highlighted (``SEL heavy``,
+        :mod:`apbot.agent.marked`) is looked at at once, before the plan sets anything else:
+        the press that shows the choice taken (a knob's push) may also bring the choice's other
+        settings back to its defaults, so they are set after it. True when it pressed."""
+        inside = self.goal()[0]
+        marked = [n for n in sorted(self.session.marked) if n in inside]
+        return bool(marked) and self._look(marked)
+
     def _look(self, names: list[str]) -> bool:
         """Bring up a goal setting the display has not confirmed since the belief last changed
         it (once each): enter its step and press its key once, and read what it shows."""

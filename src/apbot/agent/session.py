@@ -23,6 +23,7 @@ from apbot.agent.budget import Budget
 from apbot.agent.environment import Environment, Feedback
 from apbot.agent.episode import TaskContext
 from apbot.agent.executed import AgentConfig, Executed, GiveUp, Stop
+from apbot.agent.marked import marked_now
 from apbot.agent.model_edits import RepairError
 from apbot.agent.perception import MISSING, UNREADABLE, Perceiver, Seen
 from apbot.agent.pressing import press
@@ -67,6 +68,11 @@ class Session:
         # read, since the display last showed it readably
         self.unread_presses: dict[str, list[Executed]] = {}
         self.ever_seen: set[str] = set()  # shown (or shown absent) at least once
+        # a word setting's letter case in its last full reading, and the settings last read
+        # only partially in another case (``SEL heavy`` after ``REFRESH``: highlighted, not
+        # taken; :mod:`apbot.agent.marked`)
+        self.forms: dict[str, str] = {}
+        self.marked: set[str] = set()
         self.lit: set[str] = set()  # indicators whose lamp the display has shown lit
         # shown before a press the belief did not predict, not shown since: that press may have
         # changed them too (a CANCEL that also clears the delay), though the belief says not
@@ -164,6 +170,7 @@ class Session:
         for name in (set(seen.values) | set(seen.outside) | seen.absent) & set(self.unread_presses):
             del self.unread_presses[name]  # read since
         self.ever_seen |= set(seen.values) | set(seen.outside) | seen.absent
+        marked_now(self.belief.model, seen.values, seen.text, seen.partial, self.forms, self.marked)
         self.doubtful -= set(seen.values) | set(seen.outside) | seen.absent
         self.rechosen -= set(seen.values) | set(seen.outside) | seen.absent
         self.reprogrammed -= set(seen.values) | set(seen.outside) | seen.absent
@@ -196,6 +203,7 @@ class Session:
             or (n in self.stale and n in self.guessed_initial | self.discovered)
             or n in self.blind
             or n in self.unread
+            or n in self.marked
         )
 
     def unverified(self, names: list[str] | set[str]) -> list[str]:
