@@ -9,7 +9,9 @@ appliance never took. So a word value read only partially, in another letter cas
 same setting was last read in a full reading, is not taken as confirmed: the agent looks at it
 again before it starts the appliance or claims (:meth:`apbot.agent.session.Session.unconfirmed`);
 a look that enters the setting's screen by the knob's push shows the choice taken, or that it
-was not. A value read in one case only (numbers, a reading never made in full) teaches nothing.
+was not. A value read in one case only (numbers, a reading never made in full) teaches nothing,
+and only a setting turned by a knob that can also be pushed is held back so
+(:func:`pushed_to_take`): held back for any key, the rule cost true claims on the held-out set.
 """
 
 from __future__ import annotations
@@ -19,7 +21,7 @@ from typing import Any
 
 from apbot.model.schema import ApplianceModel, DiscreteVariable
 
-__all__ = ["letter_case", "marked_now"]
+__all__ = ["letter_case", "marked_now", "pushed_to_take"]
 
 
 def letter_case(model: ApplianceModel, name: str, value: Any, text: str) -> str | None:
@@ -46,6 +48,25 @@ def letter_case(model: ApplianceModel, name: str, value: Any, text: str) -> str 
             return "lower"
         return "mixed"
     return None
+
+
+def pushed_to_take(model: ApplianceModel, name: str) -> bool:
+    """Whether the belief turns ``name`` with a knob that can also be pushed (a press of the
+    same control): the shape of a knob that highlights a choice and takes it when pushed. A
+    setting stepped by keys alone may print its candidate otherwise for other reasons."""
+    actions = model.actions
+    turned = {
+        control
+        for steps in model.features.values()
+        for step in steps
+        if step.variable == name
+        for action in step.actions
+        if action in actions and actions[action].skill in ("turn_cw", "turn_ccw")
+        for control in actions[action].control_ids
+    }
+    return any(
+        spec.skill == "press" and set(spec.control_ids) & turned for spec in actions.values()
+    )
 
 
 def marked_now(

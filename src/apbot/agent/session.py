@@ -23,7 +23,7 @@ from apbot.agent.budget import Budget
 from apbot.agent.environment import Environment, Feedback
 from apbot.agent.episode import TaskContext
 from apbot.agent.executed import AgentConfig, Executed, GiveUp, Stop
-from apbot.agent.marked import marked_now
+from apbot.agent.marked import marked_now, pushed_to_take
 from apbot.agent.model_edits import RepairError
 from apbot.agent.perception import MISSING, UNREADABLE, Perceiver, Seen
 from apbot.agent.pressing import press
@@ -53,6 +53,7 @@ class Session:
         self.perceiver = Perceiver(self.belief.model)
         self.offered = frozenset(env.actions)
         self.last = Feedback()
+        self.first_text = ""
         self.last_seen = Seen()
         self.explored: set[str] = set()
         self.evidence: dict[str, Any] = {}  # the value the display showed last, per variable
@@ -92,6 +93,7 @@ class Session:
     def start(self) -> None:
         """Reset the appliance and believe what it shows."""
         self.last = self.env.reset()
+        self.first_text = self.last.text  # the display before any press (a home screen, or dark)
         self.last_seen = self.perceive(self.last, self.belief.expected())
         self.sync(self.last_seen)
 
@@ -203,7 +205,7 @@ class Session:
             or (n in self.stale and n in self.guessed_initial | self.discovered)
             or n in self.blind
             or n in self.unread
-            or n in self.marked
+            or (n in self.marked and pushed_to_take(self.belief.model, n))
         )
 
     def unverified(self, names: list[str] | set[str]) -> list[str]:
