@@ -4,7 +4,7 @@ word than the one the reader took)."""
 
 from __future__ import annotations
 
-from apbot.agent.relit import _known_words, new_sign
+from apbot.agent.relit import new_sign, printed_words
 from tests.helpers import model_from
 from tests.helpers import run_checked as run
 
@@ -94,4 +94,4 @@ def test_a_programme_name_coming_back_is_no_new_sign_of_a_lamp() -> None:
         ),
         check=False,
     )
-    assert new_sign("ROT", "ROT", "grill 180", _known_words(belief)) is None
+    assert new_sign("ROT", "ROT", "grill 180", printed_words(belief)) is None

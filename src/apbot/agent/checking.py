@@ -12,6 +12,7 @@ from __future__ import annotations
 from typing import Any
 
 from apbot.agent.absent import absent_here
+from apbot.agent.closing import learn_closing
 from apbot.agent.displays import DisplayLearner
 from apbot.agent.ends import stopped_at_end
 from apbot.agent.explorer import Explorer
@@ -96,6 +97,8 @@ class Checks:
                 self.explore(done.variable, done)
             else:
                 self._learn_display(done.variable, executed[: first + 1])
+        elif learn_closing(self.session, done):
+            pass  # the key closes the procedure typed last: plan again from there
         elif stopped_at_end(self.session, done):
             pass  # plan again the long way round
         elif done.refused or wrong_setting(self.session, done):

@@ -17,6 +17,7 @@ from apbot.agent.checking import Checks
 from apbot.agent.episode import TaskContext
 from apbot.agent.locks import is_lock_setting
 from apbot.agent.looking import glance, route_to_screen
+from apbot.agent.marked import pushed_to_take
 from apbot.agent.session import Stop
 from apbot.agent.unread import unread_parts
 from apbot.model.display import can_show
@@ -133,6 +134,19 @@ class Claims(Checks):
             )
             return True
         return False
+
+    def take_marked(self) -> bool:
+        """A goal setting the macro action left shown only as highlighted (``SEL heavy``,
+        :mod:`apbot.agent.marked`) is looked at at once, before the plan sets anything else:
+        the press that shows the choice taken (a knob's push) may also bring the choice's other
+        settings back to its defaults, so they are set after it. True when it pressed."""
+        inside = self.goal()[0]
+        marked = [
+            n
+            for n in sorted(self.session.marked)
+            if n in inside and pushed_to_take(self.session.belief.model, n)
+        ]
+        return bool(marked) and self._look(marked)
 
     def _look(self, names: list[str]) -> bool:
         """Bring up a goal setting the display has not confirmed since the belief last changed

@@ -186,6 +186,8 @@ class ClosedLoop(GoalPlanning):
         executed = self.execute(macro)
         if not self.check(macro, executed):
             self.pending.clear()  # the belief changed: plan again from what was observed
+        elif self.take_marked():
+            self.pending.clear()  # a choice only highlighted was looked at: plan again
 
     def set_aside_for_the_rest(self, stuck: GiveUp) -> bool:
         """Goal settings that keep going wrong are given up on, not the whole goal: the rest is

@@ -160,6 +160,13 @@ def press(
         rechosen = (later & set(session.evidence)) - seen.shown() - changed
         session.doubtful |= rechosen
         session.rechosen |= rechosen
+    if any(runs(n) and str(session.belief.value(n)) == "off" for n in changed):
+        # a cycle stopped: many appliances clear what was set for it with the same key (STOP /
+        # CANCEL), whatever the manual says: what the display showed of it before is in doubt,
+        # and a keypad setting is typed again
+        stopped = set(session.evidence) - seen.shown() - changed
+        session.doubtful |= stopped
+        session.rechosen |= stopped
     for name in session.guessed_initial:  # its programmes' start values are only guesses
         parent = model.variables[name].depends_on if name in model.variables else None
         if parent is not None and (parent in changed or variable == parent):

@@ -44,7 +44,7 @@ def relit(session: Session, done: Executed) -> bool:
     before, after = done.text_before, done.feedback.text
     if not before.strip() or not after.strip() or before == after:
         return False
-    known = _known_words(model)
+    known = printed_words(model)
     kind = "relit"
     show = None if unread else qualified(lamp_for(spec, name, old, domain), before, after, known)
     if show is not None and not lamp_for(spec, name, predicted, domain):
@@ -180,10 +180,10 @@ def _labels_a_value(label: str, text: str, spec: Any, domain: tuple[Any, ...]) -
     return False
 
 
-def _known_words(model: ApplianceModel) -> set[str]:
+def printed_words(model: ApplianceModel) -> set[str]:
     """Every word the belief prints: labels, units, the values of its lists of choices (a
-    programme's ``rotisserie`` is no sign of a lamp) and each value's ``show`` text
-    (case-folded)."""
+    programme's ``rotisserie`` is no sign of a lamp), each value's ``show`` text, guard
+    messages and the home screen (case-folded)."""
     words: set[str] = set()
     for name, spec in model.variables.items():
         texts = [spec.display_label(name), getattr(spec, "unit", None) or ""]
@@ -197,6 +197,9 @@ def _known_words(model: ApplianceModel) -> set[str]:
             words |= {w.casefold() for w in text.split() if w.isalpha()}
     for guard in model.guards:
         words |= {w.casefold() for w in (guard.display or "").split() if w.isalpha()}
+    # the home screen's own words: a key that brought it back (a START that confirmed the
+    # entry typed last) lit no new sign
+    words |= {w.casefold() for w in (model.display.idle or "").split() if w.isalpha()}
     return words
 
 

@@ -23,6 +23,7 @@ from apbot.agent.budget import Budget
 from apbot.agent.environment import Environment, Feedback
 from apbot.agent.episode import TaskContext
 from apbot.agent.executed import AgentConfig, Executed, GiveUp, Stop
+from apbot.agent.marked import marked_now, pushed_to_take
 from apbot.agent.model_edits import RepairError
 from apbot.agent.perception import MISSING, UNREADABLE, Perceiver, Seen
 from apbot.agent.pressing import press
@@ -52,6 +53,7 @@ class Session:
         self.perceiver = Perceiver(self.belief.model)
         self.offered = frozenset(env.actions)
         self.last = Feedback()
+        self.first_text = ""
         self.last_seen = Seen()
         self.explored: set[str] = set()
         self.evidence: dict[str, Any] = {}  # the value the display showed last, per variable
@@ -67,6 +69,11 @@ class Session:
         # read, since the display last showed it readably
         self.unread_presses: dict[str, list[Executed]] = {}
         self.ever_seen: set[str] = set()  # shown (or shown absent) at least once
+        # a word setting's letter case in its last full reading, and the settings last read
+        # only partially in another case (``SEL heavy`` after ``REFRESH``: highlighted, not
+        # taken; :mod:`apbot.agent.marked`)
+        self.forms: dict[str, str] = {}
+        self.marked: set[str] = set()
         self.lit: set[str] = set()  # indicators whose lamp the display has shown lit
         # shown before a press the belief did not predict, not shown since: that press may have
         # changed them too (a CANCEL that also clears the delay), though the belief says not
@@ -86,6 +93,7 @@ class Session:
     def start(self) -> None:
         """Reset the appliance and believe what it shows."""
         self.last = self.env.reset()
+        self.first_text = self.last.text  # the display before any press (a home screen, or dark)
         self.last_seen = self.perceive(self.last, self.belief.expected())
         self.sync(self.last_seen)
 
@@ -164,6 +172,7 @@ class Session:
         for name in (set(seen.values) | set(seen.outside) | seen.absent) & set(self.unread_presses):
             del self.unread_presses[name]  # read since
         self.ever_seen |= set(seen.values) | set(seen.outside) | seen.absent
+        marked_now(self.belief.model, seen.values, seen.text, seen.partial, self.forms, self.marked)
         self.doubtful -= set(seen.values) | set(seen.outside) | seen.absent
         self.rechosen -= set(seen.values) | set(seen.outside) | seen.absent
         self.reprogrammed -= set(seen.values) | set(seen.outside) | seen.absent
@@ -196,6 +205,7 @@ class Session:
             or (n in self.stale and n in self.guessed_initial | self.discovered)
             or n in self.blind
             or n in self.unread
+            or (n in self.marked and pushed_to_take(self.belief.model, n))
         )
 
     def unverified(self, names: list[str] | set[str]) -> list[str]:
