@@ -56,6 +56,7 @@ from apbot.read.shapes import CHOICE_WORDS
 from apbot.read.shown_bars import read_bar_shows
 from apbot.read.shown_figures import read_prefixed_figures
 from apbot.read.text import check_text, parse_manual
+from apbot.read.turn_comparatives import compared_turns
 from apbot.read.typed_prefix import read_typed_prefixes
 from apbot.read.value_codes import read_value_codes
 from apbot.read.value_keys import read_value_keys
@@ -80,6 +81,7 @@ def read_manual(
     waits = {a: _wait_seconds(a) for a in actions if isinstance(a, str)}
     waits = {a: w for a, w in waits.items() if w is not None}
     infos = parse_actions([a for a in actions if a not in waits] or list(actions))
+    infos = compared_turns(infos, text)  # turn_faster / turn_slower: one dial's two ways
     manual = parse_manual(text, sorted({c for i in infos for c in i.controls}))
     appliance_id = _ident(appliance_id, "read_appliance")
     category = _ident(category, "appliance")

@@ -1,0 +1,92 @@
+"""Rules of the set18 session, each on a small manual of our own words: a dial's two turns
+named by opposite comparatives are one dial (``turn_comparatives``), a step wider than the range
+it steps is said in thousands (``build._in_thousands``), a guide table's head with a bracket is
+still the key's column (``evidence_tables``), and keys listed as choosing one setting each go
+to their own value (``value_keys._named_keys``)."""
+
+from __future__ import annotations
+
+from apbot.read import read_manual
+from apbot.read.actions import parse_actions
+from apbot.read.turn_comparatives import compared_turns
+
+# a spice grinder whose GRIND dial turns coarser one way and finer the other
+GRINDER = """
+Pepperella SG-5 spice grinder
+
+  ⏻ power key, GO key, GRIND dial.
+
+  GRIND dial ... nine clicks, 1 (finest) to 9 (coarsest).
+                 Turn right = coarser, turn left = finer.
+
+Press ⏻ to switch on. Press GO to grind.
+"""
+
+# a polisher whose RPM knob shows thousands on a two-digit screen
+POLISHER = """
+Shinewell P-20 polisher
+
+  ⏻ ... power
+  RPM knob ... right faster, left slower; every click adds 1,000 rpm
+
+The screen shows the speed in thousands: 4 means 4,000 rpm. The knob goes from 2 (slowest)
+to 20 (fastest).
+
+ PAD AND SPEED CHART
+
+  Pad             | Surface           | Speed (screen)
+ -----------------+-------------------+----------------
+  Soft foam       | wax finish        | 2 – 5
+  Wool            | heavy scratches   | 12 – 20
+"""
+
+# a baby monitor whose camera keys each show one camera
+CAMERAS = """
+Nestview BM-3 baby monitor
+
+  Keys: ⏻, C1, C2, C3, TALK
+
+Press C1, C2 or C3 to choose that camera. The screen shows the chosen camera (C1, C2 or C3)
+in its top corner. Hold TALK to speak to the room.
+"""
+
+
+def test_two_turns_named_by_opposite_comparatives_are_one_dial() -> None:
+    infos = compared_turns(parse_actions(["press_power", "turn_coarser", "turn_finer"]), GRINDER)
+    skills = {i.name: (i.skill, i.controls) for i in infos}
+    assert skills["turn_coarser"] == ("turn_cw", ("grind",))  # 9 (coarsest) is the high end
+    assert skills["turn_finer"] == ("turn_ccw", ("grind",))
+    model = read_manual(GRINDER, ["press_power", "press_go", "turn_coarser", "turn_finer"]).model
+    grind = model.variables["grind"]
+    assert [tuple(r) for r in grind.ranges] == [(1, 9, 1)]
+    assert "coarser" not in model.variables and "finer" not in model.variables
+
+
+def test_the_finer_way_raises_the_number_when_the_manual_puts_finest_at_the_top() -> None:
+    text = GRINDER.replace("1 (finest) to 9 (coarsest)", "1 (coarsest) to 9 (finest)")
+    infos = compared_turns(parse_actions(["turn_coarser", "turn_finer"]), text)
+    assert {i.name: i.skill for i in infos} == {"turn_coarser": "turn_ccw", "turn_finer": "turn_cw"}
+
+
+def test_turns_named_by_unrelated_words_stay_apart() -> None:
+    infos = parse_actions(["turn_volume", "turn_tuning"])
+    assert compared_turns(infos, GRINDER) == infos
+
+
+def test_a_step_in_thousands_steps_a_range_shown_in_thousands() -> None:
+    model = read_manual(POLISHER, ["press_power", "turn_faster", "turn_slower"]).model
+    rpm = model.variables["rpm"]
+    assert rpm.type == "numeric"  # (not the pad names of the chart)
+    assert [tuple(r) for r in rpm.ranges] == [(2, 20, 1)]
+
+
+def test_keys_listed_as_choosing_one_setting_each_go_to_their_own_value() -> None:
+    actions = ["press_power", "press_c1", "press_c2", "press_c3", "press_talk"]
+    model = read_manual(CAMERAS, actions).model
+    camera = model.variables["camera"]
+    assert camera.values == ["c1", "c2", "c3"]
+    assert camera.show == {"c1": "C1", "c2": "C2", "c3": "C3"}
+    (step,) = model.features["camera"]
+    assert {key: goto.to for key, goto in step.effect.items()} == {
+        "press_c1": "c1", "press_c2": "c2", "press_c3": "c3",
+    }  # fmt: skip
