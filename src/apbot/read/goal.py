@@ -46,6 +46,7 @@ from apbot.read.goal_gates import closing_switches, entry_switches, gated_switch
 from apbot.read.goal_halfway import halfway_levels
 from apbot.read.goal_hourly import hourly_periods
 from apbot.read.goal_hundreds import said_hundreds
+from apbot.read.goal_thousands import said_thousands
 from apbot.read.goal_kelvin import kelvin_words
 from apbot.read.goal_kinds import kind_numbers
 from apbot.read.goal_left_to_it import left_to_it
@@ -101,6 +102,7 @@ MAX_INSTRUCTION = 5_000
 _REWRITES = (
     without_remarks,
     said_hundreds,
+    said_thousands,
     said_times_a_day,
     said_turns,
     said_dates,

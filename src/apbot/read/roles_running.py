@@ -44,7 +44,7 @@ def assign_running(
         i
         for i in infos
         if i.name not in done
-        and "start" in words(i.token)
+        and ("start" in words(i.token) or words(i.token) == ["run"])  # (RUN: a start key)
         and i.skill == "press"
         and not _start_setting(i.token)  # START TIME: when it starts, a setting
     ]
