@@ -46,7 +46,6 @@ from apbot.read.goal_gates import closing_switches, entry_switches, gated_switch
 from apbot.read.goal_halfway import halfway_levels
 from apbot.read.goal_hourly import hourly_periods
 from apbot.read.goal_hundreds import said_hundreds
-from apbot.read.goal_thousands import said_thousands
 from apbot.read.goal_kelvin import kelvin_words
 from apbot.read.goal_kinds import kind_numbers
 from apbot.read.goal_left_to_it import left_to_it
@@ -83,6 +82,7 @@ from apbot.read.goal_spelling import joined_compounds
 from apbot.read.goal_start import power_and_running
 from apbot.read.goal_switches import switches
 from apbot.read.goal_text import Text
+from apbot.read.goal_thousands import said_thousands
 from apbot.read.goal_times_a_day import said_times_a_day
 from apbot.read.goal_turns import said_turns
 from apbot.read.goal_twins import place_twins, twin_numbers
