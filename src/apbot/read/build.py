@@ -189,7 +189,7 @@ class Builder(BuilderBase):
                 lo, hi = float(round(lo)), float(round(hi))
             st = base_step(r)
             if st and not as_time and hi > lo and st > hi - lo:
-                st = _in_thousands(st, hi - lo)  # "by 1,000 rpm", shown 3–35: in thousands
+                st = _in_thousands(st, hi - lo) or st  # "by 1,000 rpm", shown 3–35: thousands
             if st:
                 self.note(
                     f"{subject}.step",
@@ -282,7 +282,8 @@ class Builder(BuilderBase):
 
 def _in_thousands(step: float, span: float) -> float | None:
     """A step wider than the whole range it steps is said in the unit the display shows in
-    thousands ("each click 1,000 rpm; 12 means 12,000 rpm"): a thousandth of it, else none."""
+    thousands ("each click 1,000 rpm; 12 means 12,000 rpm"): a thousandth of it, when that
+    fits (else None: the step stays as read)."""
     if step % 1000 == 0 and step / 1000 <= span:
         return step / 1000
     return None
