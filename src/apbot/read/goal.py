@@ -70,6 +70,7 @@ from apbot.read.goal_outside import kept_outside
 from apbot.read.goal_own_switch import own_switch_states
 from apbot.read.goal_periods import distinct, in_weeks
 from apbot.read.goal_presets import preset_companions
+from apbot.read.goal_printed_ends import printed_ends
 from apbot.read.goal_quantity_values import quantity_values
 from apbot.read.goal_remarks import without_remarks
 from apbot.read.goal_scales import superlatives
@@ -180,6 +181,7 @@ def parse_instruction(
     kelvin_words(view, text, goal, claimed, where)
     halfway_levels(view, text, goal, claimed, where)
     left_to_it(view, text, goal, claimed)
+    printed_ends(view, text, goal, claimed, where)  # "1 (finest)": the finest is 1
     superlatives(view, text, goal, claimed, where)
     named_units(view, text, goal, claimed, where)
     said_units(view, goal)
