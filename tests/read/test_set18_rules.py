@@ -2,12 +2,18 @@
 named by opposite comparatives are one dial (``turn_comparatives``), a step wider than the range
 it steps is said in thousands (``build._in_thousands``), a guide table's head with a bracket is
 still the key's column (``evidence_tables``), and keys listed as choosing one setting each go
-to their own value (``value_keys._named_keys``)."""
+to their own value (``value_keys._named_keys``); a RUN key starts (``roles_running``), a lamp
+word in brackets names no value (``code_glosses``), codes take the minutes of their chart rows
+(``code_amounts._row_units``), a figure said in full is the thousands the panel shows
+(``goal_thousands``) and a superlative printed beside a number is that number
+(``goal_printed_ends``)."""
 
 from __future__ import annotations
 
 from apbot.read import read_manual
+from apbot.read.goal import parse_instruction
 from apbot.read.actions import parse_actions
+from apbot.read.code_glosses import _name
 from apbot.read.turn_comparatives import compared_turns
 
 # a spice grinder whose GRIND dial turns coarser one way and finer the other
@@ -27,12 +33,12 @@ POLISHER = """
 Shinewell P-20 polisher
 
   ⏻ ... power
-  RPM knob ... right faster, left slower; every click adds 1,000 rpm
+  SPEED knob ... right faster, left slower; every click adds 1,000 rpm
 
 The screen shows the speed in thousands: 4 means 4,000 rpm. The knob goes from 2 (slowest)
 to 20 (fastest).
 
- PAD AND SPEED CHART
+ 7  PAD AND SPEED GUIDE
 
   Pad             | Surface           | Speed (screen)
  -----------------+-------------------+----------------
@@ -75,9 +81,9 @@ def test_turns_named_by_unrelated_words_stay_apart() -> None:
 
 def test_a_step_in_thousands_steps_a_range_shown_in_thousands() -> None:
     model = read_manual(POLISHER, ["press_power", "turn_faster", "turn_slower"]).model
-    rpm = model.variables["rpm"]
-    assert rpm.type == "numeric"  # (not the pad names of the chart)
-    assert [tuple(r) for r in rpm.ranges] == [(2, 20, 1)]
+    speed = model.variables["speed"]
+    assert speed.type == "numeric"  # (not the pad names of the guide)
+    assert [tuple(r) for r in speed.ranges] == [(2, 20, 1)]
 
 
 def test_keys_listed_as_choosing_one_setting_each_go_to_their_own_value() -> None:
@@ -90,3 +96,62 @@ def test_keys_listed_as_choosing_one_setting_each_go_to_their_own_value() -> Non
     assert {key: goto.to for key, goto in step.effect.items()} == {
         "press_c1": "c1", "press_c2": "c2", "press_c3": "c3",
     }  # fmt: skip
+
+
+# an engraver whose RUN key starts the spindle, with an auto-off chart of codes and minutes
+ENGRAVER = """
+Etchmate E-4 engraver
+
+  ⏻ ... power
+  RUN ... starts or stops the spindle (RUN lamp lit while it turns)
+  MODE ... HAND or PEDAL; lamps HAND / PEDAL
+  OFF-TIMER ... auto-off after 15, 30 or 45 minutes, or never
+
+The screen shows the speed in thousands: 9 means 9,000 rpm.
+
+
+Each press of OFF-TIMER moves to the next code: T-OFF → T15 → T30 → T45 → T-OFF …
+
+  Code   | Spindle stops after
+ --------+--------------------
+  T-OFF  | never
+  T15    | 15 minutes
+  T30    | 30 minutes
+  T45    | 45 minutes
+"""
+ENGRAVER_ACTIONS = ["press_power", "press_run", "press_mode", "press_off_timer"]
+
+
+def test_a_key_called_run_starts_and_stops() -> None:
+    model = read_manual(ENGRAVER, ENGRAVER_ACTIONS).model
+    (step,) = model.features["run"]
+    assert step.variable == "running" and step.effect == "toggle"
+
+
+def test_a_lamp_word_in_brackets_is_no_longer_name_for_the_value() -> None:
+    # "HAND/PEDAL (lamp PEDAL)": where the word shows, not a name; "NOISE (white noise)" is one
+    assert _name("lamp PEDAL", "pedal", set()) is None
+    assert _name("white noise", "noise", set()) == "white noise"
+
+
+def test_codes_take_the_minutes_their_chart_rows_give() -> None:
+    timer = read_manual(ENGRAVER, ENGRAVER_ACTIONS).model.variables["off_timer"]
+    assert timer.values == ["off", "15 min", "30 min", "45 min"]
+    assert timer.show == {"off": "T-OFF", "15 min": "T15", "30 min": "T30", "45 min": "T45"}
+
+
+# the polisher's speed said in full, and the grinder's ends said by their printed superlatives
+def test_a_speed_said_in_full_is_read_in_the_thousands_the_panel_shows() -> None:
+    actions = ["press_power", "turn_faster", "turn_slower"]
+    model = read_manual(POLISHER, actions).model
+    goal = parse_instruction(model, "Polish at twelve thousand rpm.", POLISHER)
+    assert goal["speed"] == 12
+    assert parse_instruction(model, "Run it at 15,000 rpm.", POLISHER)["speed"] == 15
+
+
+def test_a_superlative_printed_beside_a_number_is_that_number() -> None:
+    actions = ["press_power", "press_go", "turn_coarser", "turn_finer"]
+    model = read_manual(GRINDER, actions).model
+    assert parse_instruction(model, "The finest grind, please.", GRINDER)["grind"] == 1
+    assert parse_instruction(model, "Use the coarsest grind.", GRINDER)["grind"] == 9
+    assert parse_instruction(model, "The second finest grind.", GRINDER)["grind"] == 2
