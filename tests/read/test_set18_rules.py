@@ -11,9 +11,9 @@ word in brackets names no value (``code_glosses``), codes take the minutes of th
 from __future__ import annotations
 
 from apbot.read import read_manual
-from apbot.read.goal import parse_instruction
 from apbot.read.actions import parse_actions
 from apbot.read.code_glosses import _name
+from apbot.read.goal import parse_instruction
 from apbot.read.turn_comparatives import compared_turns
 
 # a spice grinder whose GRIND dial turns coarser one way and finer the other
