@@ -155,3 +155,16 @@ def test_a_superlative_printed_beside_a_number_is_that_number() -> None:
     assert parse_instruction(model, "The finest grind, please.", GRINDER)["grind"] == 1
     assert parse_instruction(model, "Use the coarsest grind.", GRINDER)["grind"] == 9
     assert parse_instruction(model, "The second finest grind.", GRINDER)["grind"] == 2
+
+
+def test_a_turn_accepted_only_while_running_is_guarded_while_stopped() -> None:
+    text = GRINDER.replace(
+        "Press GO to grind.",
+        "Press START to grind and again to stop.\n\nFiner clicks are accepted only while the"
+        " burrs turn; on a stopped grinder the screen shows GO FIRST.",
+    )
+    actions = ["press_power", "press_start", "turn_coarser", "turn_finer"]
+    model = read_manual(text, actions).model
+    (guard,) = [g for g in model.guards if g.when == {"running": "off"}]
+    assert "turn_finer" not in guard.only and "turn_coarser" in guard.only
+    assert guard.display == "GO FIRST"
