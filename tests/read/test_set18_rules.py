@@ -168,3 +168,21 @@ def test_a_turn_accepted_only_while_running_is_guarded_while_stopped() -> None:
     (guard,) = [g for g in model.guards if g.when == {"running": "off"}]
     assert "turn_finer" not in guard.only and "turn_coarser" in guard.only
     assert guard.display == "GO FIRST"
+
+
+# a tea timer typed on a keypad, its examples showing the bare clock
+TEA = """
+Brewmaster TT-1 tea timer
+
+  Keys: 0–9, START
+
+Type the brewing time as minutes and seconds; the digits fill from the right. For example
+3 0 0 shows 03:00 and 4 5 shows 00:45. Press START to count down.
+"""
+
+
+def test_a_typed_time_whose_examples_show_the_bare_clock_is_shown_alone() -> None:
+    actions = [f"press_{d}" for d in range(10)] + ["press_start"]
+    model = read_manual(TEA, actions).model
+    (name,) = [n for n, v in model.variables.items() if v.type == "time"]
+    assert model.variables[name].show == "{value}"
