@@ -186,3 +186,10 @@ def test_a_typed_time_whose_examples_show_the_bare_clock_is_shown_alone() -> Non
     model = read_manual(TEA, actions).model
     (name,) = [n for n, v in model.variables.items() if v.type == "time"]
     assert model.variables[name].show == "{value}"
+
+
+def test_the_first_item_of_an_arrow_list_keeps_its_figure() -> None:
+    from apbot.read.value_lists import find_list
+
+    assert find_list("SLOT 1 → SLOT 2 → AUX → SLOT 1 …") == (["SLOT 1", "SLOT 2", "AUX"], "arrows")
+    assert find_list("Press LEVEL 1 → 2 → 3") == (["LEVEL", "2", "3"], "arrows")  # (as before)
