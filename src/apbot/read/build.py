@@ -188,6 +188,8 @@ class Builder(BuilderBase):
             if as_time:  # whole seconds: "10 s" read in minutes is 0.166667 min, not 10.00002 s
                 lo, hi = float(round(lo)), float(round(hi))
             st = base_step(r)
+            if st and not as_time and hi > lo and st > hi - lo:
+                st = _in_thousands(st, hi - lo) or st  # "by 1,000 rpm", shown 3–35: thousands
             if st:
                 self.note(
                     f"{subject}.step",
@@ -276,3 +278,12 @@ class Builder(BuilderBase):
                 if m:
                     return unit_name(m.group(1)), i
         return None
+
+
+def _in_thousands(step: float, span: float) -> float | None:
+    """A step wider than the whole range it steps is said in the unit the display shows in
+    thousands ("each click 1,000 rpm; 12 means 12,000 rpm"): a thousandth of it, when that
+    fits (else None: the step stays as read)."""
+    if step % 1000 == 0 and step / 1000 <= span:
+        return step / 1000
+    return None

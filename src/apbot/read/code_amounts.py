@@ -26,7 +26,7 @@ from apbot.read.values_stepped import MINUTES_HOURS
 # (and maybe its unit's letter: "w 1d", "b 2h")
 _CODE = re.compile(r"([a-z]{1,3}) ?(\d{1,3})([dh])?")
 # a code for none: "slp off", "off", "no repeat"
-_OFF = re.compile(r"(?:([a-z]{1,3}) )?off|no [a-z]+")
+_OFF = re.compile(r"(?:([a-z]{1,3})[ -])?off|no [a-z]+")  # ("A-OFF": the letters, a hyphen)
 # the legend's count after the codes: "… boost minutes remaining", "… sleep timer minutes"
 _COUNTS = re.compile(rf"\b({MINUTES_HOURS}|days?)\b", re.IGNORECASE)
 _UNIT_WORD = {"min": "minutes", "h": "hours", "d": "days"}
@@ -53,6 +53,7 @@ def read_code_amounts(b: Builder) -> None:
         else:
             numbers = [m.group(2) for m in coded]
             found = _legend_unit(own_lines(b), coded[0].group(0), coded[-1].group(0), numbers)
+            found = found or _row_units(own_lines(b), coded)
         if found is None:
             continue
         unit, line, letters = found
@@ -109,6 +110,30 @@ def _legend_unit(
             unit = "h" if word.startswith("h") else "d" if word.startswith("d") else "min"
             return unit, i, line[m.start() : m.start() + letters]
     return None
+
+
+def _row_units(lines: list[str], coded: list[re.Match[str]]) -> tuple[str, int, str] | None:
+    """The unit a chart gives each code on its own row, beside the code's own number ("A10 |
+    10 minutes", "A20   20 minutes"): every code's row counts the same unit."""
+    units: set[str] = set()
+    first: tuple[int, str] | None = None
+    for m in coded:
+        pattern = re.compile(
+            _printed(m.group(0)) + rf"\s*(?:\||\s{{2,}}|[:=–-])\s*{m.group(2)}\s*"
+            rf"({MINUTES_HOURS}|days?)\b",
+            re.IGNORECASE,
+        )
+        row = next(((i, r) for i, line in enumerate(lines) if (r := pattern.search(line))), None)
+        if row is None:
+            return None
+        word = row[1].group(1).lower()
+        units.add("h" if word.startswith("h") else "d" if word.startswith("d") else "min")
+        if first is None:
+            letters = len(m.group(1))
+            first = row[0], lines[row[0]][row[1].start() : row[1].start() + letters]
+    if len(units) != 1 or first is None:
+        return None
+    return units.pop(), first[0], first[1]
 
 
 def _rename(

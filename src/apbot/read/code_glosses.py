@@ -29,6 +29,8 @@ _GLOSS = r"([A-Za-z][A-Za-z' -]{2,40})"
 _WORDS = 4  # a gloss names the value; a longer text describes it
 # leading words a name drops ("STEAM – with steam" names no more than "steam")
 _FILLER = frozenset({"the", "a", "an", "with"})
+# "HAND/FOOT (lamp FOOT)": where the word is shown, not a longer name for it
+_SHOWN = frozenset({"lamp", "lamps", "light", "led", "icon", "symbol", "display", "indicator"})
 _TRAILING = frozenset({"only"})
 # an aside that says where a setting starts ("THICK (starts THICK)", "(default LOW)") is no name
 _START_LEADS = frozenset({"starts", "start", "default", "preset", "initially", "factory"})
@@ -124,7 +126,7 @@ def _name(gloss: str, code: str, own: set[str]) -> str | None:
     None: a gloss up to its first bracket, comma or stop, without an article or "only"."""
     text = _CUT.split(gloss.strip())[0]
     words = [w for w in text.casefold().split() if w]
-    while words and words[0] in _FILLER:
+    while words and (words[0] in _FILLER or words[0] in _SHOWN):
         words = words[1:]
     while words and words[-1] in _TRAILING:
         words = words[:-1]

@@ -21,6 +21,7 @@ _NUMBER_HEAD_RE = re.compile(r"^\W*(?:(?:prog\w*\.?\s*)?(?:no|nr|n°|number)\.?|
 # the head of a first column listing a key's own steps ("| Level | Power | Suitable for |"):
 # its rows are the key's values, each with what it gives, not things the setting is advised for
 _LEVEL_HEAD_RE = re.compile(r"^\W*(?:levels?|settings?|positions?)\W*$", re.I)
+_BRACKET_RE = re.compile(r"\s*\([^()]*\)\s*$")
 
 
 class TableReader:
@@ -63,7 +64,8 @@ class TableReader:
         k = i + 1
         if k >= len(units) or not units[k].cells or units[k].header:
             return False
-        header = [c.strip(" *.").upper() for c in units[k].cells]
+        # ("| Bit | Task | Speed (display) |": a head's bracket says how the value is printed)
+        header = [_BRACKET_RE.sub("", c).strip(" *.").upper() for c in units[k].cells]
         own = {self.labels[t].text.strip(" .").upper() for t in tokens if t in self.labels}
         lead = header[0]
         if (

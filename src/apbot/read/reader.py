@@ -57,6 +57,7 @@ from apbot.read.shapes import CHOICE_WORDS
 from apbot.read.shown_bars import read_bar_shows
 from apbot.read.shown_figures import read_prefixed_figures
 from apbot.read.text import check_text, parse_manual
+from apbot.read.turn_refusals import read_turn_refusals
 from apbot.read.typed_prefix import read_typed_prefixes
 from apbot.read.value_codes import read_value_codes
 from apbot.read.value_keys import read_value_keys
@@ -125,6 +126,7 @@ def read_manual(
     read_enabling_switches(builder)
     read_confirmed_starts(builder)  # ("the first press only asks for confirmation")
     read_running_locks(builder)  # ("While FRY is shown, MENU … are locked")
+    read_turn_refusals(builder)  # ("finer positions only while the motor runs")
     close_with_start(builder)  # (last: the keypad entries as built, whatever renamed them)
     data = _assemble(builder, appliance_id, category)
     data["actions"].update({a: {"skill": "wait", "seconds": w} for a, w in waits.items()})

@@ -33,6 +33,18 @@ def _start_setting(token: str) -> bool:
     return any(w == "start" and nxt in NUMERIC_WORDS for w, nxt in itertools.pairwise(ws))
 
 
+def _run_starts(b: Builder, token: str) -> bool:
+    """A key called RUN that a sentence naming it says starts ("press ▶/■ to start the motor:
+    RUN lights"), not one that steps a run time ("Touch RUN to go to the next run time")."""
+    if words(token) != ["run"] or token not in b.labels:
+        return False
+    units = b.manual.units
+    return any(
+        re.search(r"\bstart(?:s|ed)?\b", units[i].text, re.IGNORECASE)
+        for i in b.labels[token].mentions
+    )
+
+
 def assign_running(
     b: Builder, done: set[str], power_actions: list[str], lock_actions: list[str]
 ) -> list[str]:
@@ -44,7 +56,7 @@ def assign_running(
         i
         for i in infos
         if i.name not in done
-        and "start" in words(i.token)
+        and ("start" in words(i.token) or _run_starts(b, i.token))
         and i.skill == "press"
         and not _start_setting(i.token)  # START TIME: when it starts, a setting
     ]

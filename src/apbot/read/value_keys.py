@@ -23,6 +23,13 @@ _CHOOSE = re.compile(
     r"(?:that|the|this|a|your)\s+([a-z]+(?:\s[a-z]+)?)\b",
     re.IGNORECASE,
 )
+# "Press T1, T2 or T3 to choose that channel": a key per value, named
+_KEY = r"[A-Za-z0-9][\w+-]{0,9}"
+_CHOOSE_NAMED = re.compile(
+    rf"\b(?:press|touch|tap|push)\s+({_KEY}(?:\s*,\s*{_KEY})*,?\s+or\s+{_KEY})\s+to\s+"
+    r"(?:select|choose|set)\s+(?:that|the|this|a|your)\s+([a-z]+)\b",
+    re.IGNORECASE,
+)
 # the figures listed with slashes: "(33 / 45 / 78)", "33/45/78"
 _SLASHED = re.compile(rf"(?<![\w.])({_FIGURE}(?:\s*/\s*{_FIGURE}){{2,}})(?![\w.])")
 
@@ -36,17 +43,57 @@ def read_value_keys(b: Builder) -> None:
         and len(info.controls) == 1
         and re.fullmatch(_FIGURE, info.controls[0])
     }
-    if len(figures) < 2:
+    if len(figures) >= 2:
+        for at, unit in enumerate(b.manual.units):
+            m = _CHOOSE.search(unit.text)
+            if not m or not {m.group(1), m.group(2)} <= set(figures):
+                continue
+            keys = {f: figures[f] for f in (m.group(1), m.group(2))}
+            noun = "_".join(m.group(3).lower().split()[-1:])
+            values = _all_figures(b, list(keys))
+            _replace(b, noun, values, keys, _held_figure(b, list(keys), values))
+            b.note(f"variables.{noun}", f"keys {', '.join(keys)} select the {noun}", at)
+            return
+    _named_keys(b)
+
+
+def _named_keys(b: Builder) -> None:
+    """Keys printed with names, each choosing one of a setting's values: "Press T1, T2 or T3
+    to choose that channel" (every listed word a key of the panel): one setting whose values
+    are the keys' names, each key going straight to its own."""
+    named = {
+        b.labels[info.controls[0]].text.upper(): info
+        for info in b.infos
+        if info.skill == "press"
+        and len(info.controls) == 1
+        and info.digit is None
+        and info.controls[0] in b.labels
+        and b.labels[info.controls[0]].line is not None
+    }
+    if len(named) < 2:
         return
     for at, unit in enumerate(b.manual.units):
-        m = _CHOOSE.search(unit.text)
-        if not m or not {m.group(1), m.group(2)} <= set(figures):
+        m = _CHOOSE_NAMED.search(unit.text)
+        if not m:
             continue
-        keys = {f: figures[f] for f in (m.group(1), m.group(2))}
-        noun = "_".join(m.group(3).lower().split()[-1:])
-        values = _all_figures(b, list(keys))
-        _replace(b, noun, values, keys, _held_figure(b, list(keys), values))
-        b.note(f"variables.{noun}", f"keys {', '.join(keys)} select the {noun}", at)
+        listed = [k.upper() for k in re.split(r"\s*,\s*|\s+or\s+", m.group(1)) if k]
+        if len(listed) < 2 or len(set(listed)) != len(listed) or not set(listed) <= set(named):
+            continue
+        if any(re.fullmatch(_FIGURE, k) for k in listed):
+            continue  # (figure keys: the rule above)
+        keys = {k.lower(): named[k] for k in listed}
+        own = {info.name for info in keys.values()}
+        if any(
+            {a for st in steps for a in st.get("actions") or []} - own
+            for steps in b.features.values()
+            if any(set(st.get("actions") or []) & own for st in steps)
+        ):
+            continue  # "Z1 then ▲ / ▼": the keys choose which setting other keys move
+        noun = m.group(2).lower()
+        name = _replace(b, noun, list(keys), keys, None)
+        if _lamps_named(b, listed):  # "the lamp of the chosen channel is lit (T1, T2 or T3)"
+            b.variables[name]["show"] = {k.lower(): k for k in listed}
+        b.note(f"variables.{noun}", f"keys {', '.join(listed)} each choose a {noun}", at)
         return
 
 
@@ -87,8 +134,8 @@ def _replace(
     values: list[str],
     keys: dict[str, Any],
     held: tuple[str, str] | None,
-) -> None:
-    """The keys' own variables and features give way to one setting ``noun``."""
+) -> str:
+    """The keys' own variables and features give way to one setting ``noun`` (its name)."""
     actions = {info.name for info in keys.values()} | ({held[0]} if held else set())
     old = {
         s.get("variable")
@@ -113,3 +160,14 @@ def _replace(
     if held:
         effect[held[0]] = {"to": held[1]}
     b.feature(name, [{"actions": list(effect), "variable": name, "effect": effect}])
+    return name
+
+
+def _lamps_named(b: Builder, keys: list[str]) -> bool:
+    """Whether a sentence about lamps or the screen names every key: the choice lights the
+    key's own name ("Channel lamps: the lamp of the chosen channel is lit (T1, T2 or T3)")."""
+    return any(
+        re.search(r"\b(?:lamps?|lights?|lit|shows?|screen|display)\b", u.text, re.I)
+        and all(re.search(rf"(?<![\w-]){re.escape(k)}(?![\w-])", u.text) for k in keys)
+        for u in b.manual.units
+    )

@@ -99,6 +99,13 @@ def find_list(text: str) -> tuple[list[str], str] | None:
         if trailing and len(trailing) < len(capital):
             capital = trailing
         capital = _after_case_label(head, parts[1:]) or capital
+        if (  # "HDMI 1 → HDMI 2 → …": the first item's figure, as the others carry theirs
+            len(head) >= 2
+            and head[-1].isdigit()
+            and capital[-1:] == [head[-2]]
+            and any(p.split()[:1] == [head[-2]] for p in parts[1:])
+        ):
+            capital = [head[-2], head[-1]]
         parts[0] = _clean_item(" ".join(capital) or " ".join(head[-2:]) or parts[0])
         if len(head) > 3 and not capital:
             parts[0] = _clean_item(head[-1])
