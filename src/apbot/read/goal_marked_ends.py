@@ -13,7 +13,7 @@ from __future__ import annotations
 import re
 
 from apbot.model.domain import all_values
-from apbot.model.schema import NumericVariable
+from apbot.model.schema import DiscreteVariable, NumericVariable
 from apbot.read.goal_ordinals import ORDINALS
 from apbot.read.goal_text import Text
 from apbot.read.goal_view import Goal, Model
@@ -37,7 +37,7 @@ def _marked(view: Model) -> dict[str, tuple[str, list[float], int]]:
     for line in view.manual_lines:
         pairs = [(m[1], m[2]) for m in _AFTER_NUMBER.finditer(line)]
         row = _ROW.match(line)
-        if row:
+        if row and not _names_a_word_value(view, line):
             pairs += [(row[1], m[1]) for m in _IN_BRACKETS.finditer(line)]
         for number, word in pairs:
             if len(word) < 6 or word in _NOT_SUPERLATIVES:
@@ -53,6 +53,20 @@ def _marked(view: Model) -> dict[str, tuple[str, list[float], int]]:
         values = owners[0]
         out[word] = (name, values, values.index(value))
     return out
+
+
+def _names_a_word_value(view: Model, line: str) -> bool:
+    """A table row one of whose cells is a worded value of a setting ("| 9 | Wool | cold
+    (gentlest) |"): a row of that setting's table (a programme chart), whose opening number
+    counts the rows — no position of a number setting."""
+    cells = {cell.strip() for cell in line.split("|")}
+    return any(
+        str(value).casefold() in cells
+        for info in view.infos.values()
+        if isinstance(info.var, DiscreteVariable)
+        for value in info.values
+        if str(value).isalpha() and len(str(value)) > 2
+    )
 
 
 def of_another(view: Model, text: Text, k: int, name: str) -> bool:
