@@ -205,3 +205,69 @@ def test_numbered_keys_each_stepping_a_level_of_their_own_stay_apart() -> None:
     model = read_manual(HOB, HOB_ACTIONS).model
     assert {"z1", "z2"} <= set(model.variables)
     assert "z" not in model.variables
+
+
+MICROWAVE = """
+appliance: {id: micro_x, category: microwave, name: "Wave microwave", brand: W}
+controls:
+  - {id: power_key, kind: button, label: "POWER LEVEL"}
+  - {id: time_key, kind: button, label: "TIME"}
+variables:
+  power_level: {type: numeric, ranges: [[1, 10, 1]], label: "POWER LEVEL"}
+  cook_time: {type: numeric, ranges: [[1, 30, 1]], unit: minutes, label: "TIME"}
+actions:
+  press_power: {control: power_key}
+  press_time: {control: time_key}
+features:
+  power_level:
+    - {actions: [press_power], variable: power_level, effect: next}
+  cook_time:
+    - {actions: [press_time], variable: cook_time, effect: next}
+"""
+
+
+def test_a_manual_that_shows_nothing_in_thousands_keeps_a_thousand_as_said() -> None:
+    """ "max 1000 W" and "used in thousands of kitchens" say no display counts in thousands:
+    "one thousand" is not the figure 1 that would take the two minutes' place
+    (goal_thousands)."""
+    said = "Cook at one thousand for 2 minutes."
+    for manual in (
+        "POWER LEVEL 1 to 10 (max 1000 W).",
+        "Wave ovens are used in thousands of kitchens. POWER LEVEL 1 to 10.",
+    ):
+        assert _goal(MICROWAVE, said, manual) == {"cook_time": 2}
+
+
+BED = """
+appliance: {id: bed_x, category: adjustable_bed, name: "Rest bed", brand: R}
+controls:
+  - {id: up_key, kind: button, label: "HEAD UP"}
+  - {id: down_key, kind: button, label: "HEAD DOWN"}
+  - {id: tv_key, kind: button, label: "TV"}
+  - {id: heat_key, kind: button, label: "HEAT"}
+variables:
+  head: {type: numeric, unit: degrees, ranges: [[0, 60, 5]], initial: 0}
+  foot: {type: numeric, unit: degrees, ranges: [[0, 30, 5]], initial: 0}
+  heat: {type: numeric, unit: celsius, ranges: [[30, 45, 1]], initial: 30}
+actions:
+  press_up: {control: up_key}
+  press_down: {control: down_key}
+  press_tv: {control: tv_key}
+  press_heat: {control: heat_key}
+features:
+  head:
+    - {actions: [press_down, press_up], variable: head, effect: {press_down: prev, press_up: next}}
+  heat:
+    - {actions: [press_heat], variable: heat, effect: next}
+  tv:
+    - {actions: [press_tv], variable: head, effect: {to: 45}, set: {foot: 10}}
+"""
+
+
+def test_a_preset_keeps_its_quantity_when_another_setting_takes_the_one_said() -> None:
+    """ "TV position and warm it to 40 degrees": the degrees may be the HEAT's, so the TV key's
+    45° head stays; "head at 30 degrees" names the head and still takes its place
+    (goal_presets.lift_presets)."""
+    said = "TV position and warm it to 40 degrees."
+    assert _goal(BED, said) == {"head": 45, "foot": 10, "heat": 40}
+    assert _goal(BED, "TV position, head at 30 degrees.") == {"head": 30, "foot": 10}
