@@ -27,7 +27,8 @@ _SAID = re.compile(
     re.IGNORECASE,
 )
 _IN_THOUSANDS = re.compile(
-    r"(?:(?<![\w])(?<!\d\s)[×x]\s*1[,.]?000\b|\bin thousands\b(?: of)?|\bthousands of\b(?=\s*rpm))\s*"
+    r"(?:(?<!\w)(?<!\d\s)[×x]\s*1[,.]?000\b"  # "×1000", not "max 1000 W" nor "600 x 1000"
+    r"|\bin thousands\b(?: of)?|\bthousands of\b(?=\s*rpm))\s*"
     r"(?P<unit>rpm|[a-zµ/]+)?",
     re.IGNORECASE,
 )
