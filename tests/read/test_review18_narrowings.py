@@ -271,3 +271,30 @@ def test_a_preset_keeps_its_quantity_when_another_setting_takes_the_one_said() -
     said = "TV position and warm it to 40 degrees."
     assert _goal(BED, said) == {"head": 45, "foot": 10, "heat": 40}
     assert _goal(BED, "TV position, head at 30 degrees.") == {"head": 30, "foot": 10}
+
+
+WASHER_CODES = """Programmes: P1 cotton (longest), P3 quick, P9 wool (gentlest).
+Turn the dial from P1 (longest) to P9 (gentlest)."""
+BIKE = """
+appliance: {id: bike_x, category: exercise_bike, name: "Pedal bike", brand: P}
+controls:
+  - {id: up_key, kind: button, label: "UP"}
+  - {id: down_key, kind: button, label: "DOWN"}
+variables:
+  level: {type: numeric, ranges: [[1, 16, 1]], initial: 4}
+actions:
+  press_up: {control: up_key}
+  press_down: {control: down_key}
+features:
+  level:
+    - {actions: [press_down, press_up], variable: level, effect: {press_down: prev, press_up: next}}
+"""
+BIKE_MANUAL = "UP and DOWN change the resistance: L1 (easiest) … L16 (hardest)."
+
+
+def test_a_code_before_a_marked_number_must_be_the_settings_own() -> None:
+    """ "P9 (gentlest)" marks a programme's code, no end of a DELAY that runs 1 to 9; "L16
+    (hardest)" is the LEVEL's own 16 and still marks it (goal_marked_ends)."""
+    said = "Wash the wool the gentlest way."
+    assert _goal(WASHER, said, WASHER_CODES) == {"programme": "wool"}
+    assert _goal(BIKE, "The third hardest setting.", BIKE_MANUAL) == {"level": 14}
