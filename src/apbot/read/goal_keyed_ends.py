@@ -11,7 +11,7 @@ one step back from it. Only for an open ordered setting the key steps one way (`
 from __future__ import annotations
 
 from apbot.read.goal_ladders import ordered
-from apbot.read.goal_text import Text
+from apbot.read.goal_text import CLAUSE_ENDS, Text
 from apbot.read.goal_view import Goal, Model
 
 _OFFSETS = {"second": 1, "third": 2}
@@ -36,6 +36,16 @@ def keyed_end(view: Model, goal: Goal, word: str) -> tuple[str, int] | None:
                 if said in action.split("_") and effect in ("next", "prev"):
                     found.add((name, -1 if effect == "next" else 0))
     return found.pop() if len(found) == 1 else None
+
+
+def at_the_latest(text: Text, k: int) -> bool:
+    """ "ready by noon at the latest", "start it at the earliest by six": the idiom of a
+    deadline ("no later than"), not the end a LATER / EARLIER key steps to."""
+    return (
+        text.word(k) in ("latest", "earliest", "soonest")
+        and (text.word(k - 2), text.word(k - 1)) == ("at", "the")
+        and text.word(k + 1) in CLAUSE_ENDS | {"", ",", "by", "before", "on", "at"}
+    )
 
 
 def keyed_offset(text: Text, k: int) -> int:

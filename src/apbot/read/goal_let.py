@@ -48,4 +48,10 @@ def kept_on(text: Text, k: int, last: int) -> bool:
     if text.word(j) != "let" or text.word(j - 1) not in _DENIALS:
         return False
     after = tuple(text.word(last + 1 + d) for d in range(2))
+    if after == ("go", "off") and any(text.word(i) in _SOUNDERS for i in range(k, last + 1)):
+        return False  # "don't let the alarm go off": its ringing is refused, it is to be off
     return any(after[: len(words)] == words for words in _GOING_OFF)
+
+
+_SOUNDERS = frozenset({"alarm", "alarms", "buzzer", "beep", "beeper", "timer", "alert", "chime"})
+"""Things that "go off" by sounding, not by going dark."""

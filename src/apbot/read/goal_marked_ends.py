@@ -13,12 +13,13 @@ from __future__ import annotations
 import re
 
 from apbot.model.domain import all_values
-from apbot.model.schema import NumericVariable
+from apbot.model.schema import DiscreteVariable, NumericVariable
 from apbot.read.goal_ordinals import ORDINALS
 from apbot.read.goal_text import Text
-from apbot.read.goal_view import Goal, Model
+from apbot.read.goal_view import Goal, Model, own_stems
 
-_AFTER_NUMBER = re.compile(r"(?<![\d.,])(\d+)\s*\(\s*([a-z]+est)\s*\)")
+# (a code's letters before the number, "l16 (hardest)", are kept to tell whose number it is)
+_AFTER_NUMBER = re.compile(r"(?<![\w.,])([a-z]{0,2})(\d+)\s*\(\s*([a-z]+est)\s*\)")
 _ROW = re.compile(r"^\s*\|?\s*(\d+)\s*\|")
 _IN_BRACKETS = re.compile(r"\(\s*([a-z]+est)\s*\)")
 _NOT_SUPERLATIVES = frozenset({"latest", "request", "interest", "suggest", "honest", "modest"})
@@ -35,14 +36,16 @@ def _marked(view: Model) -> dict[str, tuple[str, list[float], int]]:
                     ends.setdefault(end, []).append((name, values))
     found: dict[str, set[tuple[str, float]]] = {}
     for line in view.manual_lines:
-        pairs = [(m[1], m[2]) for m in _AFTER_NUMBER.finditer(line)]
+        pairs = [(m[1], m[2], m[3]) for m in _AFTER_NUMBER.finditer(line)]
         row = _ROW.match(line)
-        if row:
-            pairs += [(row[1], m[1]) for m in _IN_BRACKETS.finditer(line)]
-        for number, word in pairs:
+        if row and not _names_a_word_value(view, line):
+            pairs += [("", row[1], m[1]) for m in _IN_BRACKETS.finditer(line)]
+        for code, number, word in pairs:
             if len(word) < 6 or word in _NOT_SUPERLATIVES:
                 continue  # "(best)", "(latest)": no end of an order
             for name, _values in ends.get(float(number), []):
+                if code and not any(w.startswith(code) for w in own_stems(view.infos[name])):
+                    continue  # "P9 (gentlest)": a programme's code, no end of the DELAY 1-9
                 found.setdefault(word, set()).add((name, float(number)))
     out: dict[str, tuple[str, list[float], int]] = {}
     for word, places in found.items():
@@ -53,6 +56,20 @@ def _marked(view: Model) -> dict[str, tuple[str, list[float], int]]:
         values = owners[0]
         out[word] = (name, values, values.index(value))
     return out
+
+
+def _names_a_word_value(view: Model, line: str) -> bool:
+    """A table row one of whose cells is a worded value of a setting ("| 9 | Wool | cold
+    (gentlest) |"): a row of that setting's table (a programme chart), whose opening number
+    counts the rows — no position of a number setting."""
+    cells = {cell.strip() for cell in line.split("|")}
+    return any(
+        str(value).casefold() in cells
+        for info in view.infos.values()
+        if isinstance(info.var, DiscreteVariable)
+        for value in info.values
+        if str(value).isalpha() and len(str(value)) > 2
+    )
 
 
 def of_another(view: Model, text: Text, k: int, name: str) -> bool:

@@ -61,9 +61,17 @@ def _code_initial(view: Model, noun: str) -> bool:
         if not isinstance(info.var, DiscreteVariable) or not _numbered(info):
             continue
         letters = {_LETTER.sub("", str(v)).casefold() for v in info.values}
-        if letters == {word[0]}:
+        if letters == {word[0]} and not _one_codes_name(view, word):
             return True
     return False
+
+
+def _one_codes_name(view: Model, word: str) -> bool:
+    """The manual gives the noun as one code's own name ("P2 pizza", "P2: Pizza", "| P2 |
+    Pizza"): "the second pizza" counts pizzas, it is no P2 (the family's noun, "countdown",
+    stands before its codes: "the countdown C1 or C2")."""
+    named = re.compile(rf"(?<![a-z0-9]){word[0]}\d{{1,2}}[\s:=|(\-–—]*{word}s?\b")
+    return any(named.search(line) for line in view.manual_lines)
 
 
 _LETTER = re.compile(r"[- ]?\d+$")

@@ -17,7 +17,7 @@ from apbot.model.schema import DiscreteVariable, GoTo
 from apbot.read.goal_roles import control_labels, step_effects, steps_of
 from apbot.read.goal_text import Text
 from apbot.read.goal_values import name_words
-from apbot.read.goal_view import Goal, Model
+from apbot.read.goal_view import Goal, Model, own_stems
 from apbot.read.goal_vocab import STOP_WORDS, stem
 from apbot.read.numbers import find_mentions
 
@@ -56,15 +56,30 @@ def lift_presets(view: Model, text: Text, goal: Goal, where: dict[str, int]) -> 
     not its 20 % (:func:`restore_presets` puts it back when nothing else was said of it)."""
     lifted: Lifted = {}
     kinds = {m.dimension for m in find_mentions(text.tokens) if m.kind != "number"}
-    for var, value, stems, _companions in _presets(view):
+    for var, value, stems, companions in _presets(view):
         if view.infos[var].dimension not in kinds - {None}:
             continue  # no quantity of its kind said ("the TV position, massage 3" keeps 45°)
+        if _another_home(view, goal, var, companions) and not own_stems(view.infos[var]) & set(
+            text.stems
+        ):
+            continue  # "TV position and warm it to 40 degrees": the HEAT's, the head stays 45
         if var in goal and str(goal[var]) == str(value) and var in where:
             start = where[var]
             if text.stems[start : start + 1] == [stems[0]]:
                 lifted[var] = (value, start)
                 del goal[var], where[var]
     return lifted
+
+
+def _another_home(view: Model, goal: Goal, var: str, companions: dict[str, Any]) -> bool:
+    """Another open setting (not one the key sets too) takes quantities of the key's kind: a
+    quantity said is not the key's own unless its setting is named."""
+    kind = view.infos[var].dimension
+    return any(
+        info.role == "setting" and info.dimension == kind
+        for name, info in view.infos.items()
+        if name != var and name not in goal and name not in companions
+    )
 
 
 def restore_presets(goal: Goal, where: dict[str, int], lifted: Lifted) -> None:

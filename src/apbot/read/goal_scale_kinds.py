@@ -120,10 +120,22 @@ def only_of_kind(view: Model, goal: Goal, kind: str) -> tuple[float, str] | None
             or (kind == "time" and isinstance(info.var, TimeVariable) and info.timing == "duration")
             or (kind == "level" and (numbered_levels(info) or worded_levels(info)))
             or (kind == "speed" and concept("speed") in own_concepts(info))
-            or (kind == "volume" and concept("volume") in own_concepts(info))
+            or (kind == "volume" and _own_volume(info))
         )
     ]
     return (0.0, found[0]) if len(found) == 1 else None
+
+
+_SIGNALS = frozenset(
+    concept(w) for w in ("beep", "key", "button", "touch", "alarm", "buzzer", "signal", "tone")
+)
+
+
+def _own_volume(info: VarInfo) -> bool:
+    """A VOLUME of what the appliance plays, not of its signals: "as quiet as it goes" on an
+    air purifier asks for a quiet fan, never for softer beeps (BEEP VOLUME, KEY VOLUME)."""
+    own = own_concepts(info)
+    return concept("volume") in own and not own & _SIGNALS
 
 
 def names_another(view: Model, name: str, text: Text, k: int) -> bool:

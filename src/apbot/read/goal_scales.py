@@ -8,7 +8,7 @@ from typing import Any
 
 from apbot.model.schema import DiscreteVariable
 from apbot.read.goal_degree_stems import superlative_stem_setting
-from apbot.read.goal_keyed_ends import keyed_end, keyed_offset
+from apbot.read.goal_keyed_ends import at_the_latest, keyed_end, keyed_offset
 from apbot.read.goal_ladders import (
     is_off_level,
     ladder,
@@ -55,7 +55,7 @@ def superlatives(
         if end is None and compared is not None:
             end, reach = compared
         keyed = None if word in LOWEST or word in HIGHEST else keyed_end(view, goal, word)
-        if keyed is not None and of_another(view, text, k, keyed[0]):
+        if keyed is not None and (of_another(view, text, k, keyed[0]) or at_the_latest(text, k)):
             keyed = None  # "the coarsest amount": said of another setting, not the dial's end
         if end is None and keyed is not None:
             end, reach = keyed[1], 1  # "the finest": where the FINER key stops

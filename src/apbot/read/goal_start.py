@@ -304,11 +304,9 @@ def _says_start(
             continue  # "heat 7": a setting named with its value, not a doing
         if _plural_form(text.word(k2)):
             continue  # "Fries at 175 degrees": a plural noun, never an order's bare verb
-        if verb != stem("run") and (
-            text.word(k2 + 1) == "-"
-            or text.stems[k2 + 1 : k2 + 2] == []
-            or (text.stems[k2 + 1] in _KIND_NOUNS)
-        ):
+        # (a verb that ends the text is still a doing: "Speed 3, then blend")
+        after = text.stems[k2 + 1] if k2 + 1 < len(text.stems) else ""
+        if verb != stem("run") and (text.word(k2 + 1) == "-" or after in _KIND_NOUNS):
             continue  # "Clean mode at pressure 8", "Warm-holding on": a name, not a doing
         if verb in STRONG_VERBS:
             return True

@@ -27,7 +27,8 @@ _SAID = re.compile(
     re.IGNORECASE,
 )
 _IN_THOUSANDS = re.compile(
-    r"(?:[×x]\s*1[,.]?000\b|\bin thousands\b(?: of)?|\bthousands of\b(?=\s*rpm))\s*"
+    r"(?:(?<!\w)(?<!\d\s)[×x]\s*1[,.]?000\b"  # "×1000", not "max 1000 W" nor "600 x 1000"
+    r"|\bin thousands\b(?: of)?|\bthousands of\b(?=\s*rpm))\s*"
     r"(?P<unit>rpm|[a-zµ/]+)?",
     re.IGNORECASE,
 )
@@ -42,6 +43,15 @@ def _another_unit(word: str) -> bool:
     return quantity is not None and quantity[1] not in (None, "speed")
 
 
+def _counted(word: str) -> bool:
+    """A unit ("rpm", "W") or a count of turns that a display may show in thousands; "in
+    thousands of kitchens" names none."""
+    return not word or word in _TURNS or parse_quantity(f"1 {word}") is not None
+
+
+_TURNS = frozenset({"revolutions", "rotations", "turns", "strokes", "cycles"})
+
+
 def _thousands_unit(view: Model) -> str | None:
     """The unit the manual says its display counts in thousands of ("" when it names none);
     None when it says no such thing."""
@@ -51,6 +61,8 @@ def _thousands_unit(view: Model) -> str | None:
             unit = (hit["unit"] or "").casefold()
             if unit in ("rpm", "r.p.m"):
                 return "rpm"
+            if "thousands" in hit[0].casefold() and not _counted(unit):
+                continue  # "used in thousands of kitchens": a boast, no count shown in thousands
             found = found or ""
     return found
 

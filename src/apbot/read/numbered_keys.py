@@ -77,6 +77,10 @@ def _own_settings(b: Builder, keys: set[str]) -> set[str] | None:
         own.add(var)
     if any(_switch(b.variables.get(var) or {}) for var in own):
         return None  # lamps switched one by one (zones, outlets): each may well be on at once
+    others = {_domain(spec) for name, spec in b.variables.items() if name not in own}
+    specs = [b.variables.get(var) or {} for var in own]
+    if any(_scale(spec) and _domain(spec) not in others for spec in specs):
+        return None  # each key steps a level of its own (a hob's zones 1-9): kept apart
     if len({_domain(b.variables.get(var) or {}) for var in own}) > 1:
         return None  # each key's own values, read for it: settings of their own after all
     for name, spec in b.variables.items():
@@ -90,6 +94,19 @@ def _domain(spec: dict[str, Any]) -> str:
     the reader read one text for all of them (T1, T2, T3 each "00", "-")."""
     kept = ("type", "values", "ranges", "unit", "cases")
     return repr([spec.get(k) for k in kept])
+
+
+def _scale(spec: dict[str, Any]) -> bool:
+    """A numeric range of three or more steps: a level the key itself steps through (each
+    zone of a hob at 1 to 9), which several keys hold at once, not a choice among the keys —
+    unless another setting holds the same range (the desk's height beside M1 / M2: the keys'
+    lines told nothing of their own, and the height was read for them from around)."""
+    if spec.get("type") != "numeric":
+        return False
+    count = 0.0
+    for low, high, step in spec.get("ranges") or []:
+        count += (float(high) - float(low)) / float(step or 1) + 1
+    return count >= 3
 
 
 def _switch(spec: dict[str, Any]) -> bool:
