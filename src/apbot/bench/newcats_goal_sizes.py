@@ -152,10 +152,17 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "av_receiver": 3,
     "power_station": 3,
     # The twenty-third blind set (helper blind26n, 7 December 2026, the third 7 December session):
-    # blind for this round's work.
+    # development data since the fourth 7 December session.
     "kitchen_timer": 3,
     "grain_mill": 4,
     "projector": 3,
     "nail_drill": 3,
     "salt_chlorinator": 3,
+    # The twenty-fourth blind set (helper blind27n, 7 December 2026, the fourth 7 December
+    # session): blind for this round's work.
+    "bench_power_supply": 3,
+    "fog_machine": 3,
+    "weather_station": 3,
+    "facial_cleansing_brush": 3,
+    "video_light": 3,
 }
