@@ -10,14 +10,10 @@ from apbot.read.reader import read_manual
 
 _WARMER = """ORA B2 bottle warmer
 
-KEYS
+CONTROLS
 
-  | Key | Function |
-  |-----|----------|
-  | POWER | switches the warmer on or off |
-  | SET | opens the user settings |
-  | + | raises the value |
-  | - | lowers the value |
+  POWER turns the warmer on and off. SET leads through the user settings; + and - change
+  the value shown.
 
 USER SETTINGS
 
