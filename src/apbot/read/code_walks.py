@@ -17,6 +17,7 @@ from typing import Any
 from apbot.read.build import Builder
 from apbot.read.cases_tables import _norm, _tables
 from apbot.read.held_guesses import drop_unused
+from apbot.read.menu_cells import CODE_HEAD, drawn_choice
 from apbot.read.text import Unit
 from apbot.read.walk_apply import apply_walk
 from apbot.read.walk_ends import CLOSES_RE, pause_seconds
@@ -24,12 +25,8 @@ from apbot.read.walk_keys import pair_of, stepping_pairs
 
 # a cell listing a field's values: two or more items split by commas or slashes
 _ITEMS_RE = re.compile(r"\s*(?:,|/|;)\s*")
-# a symbol a small display prints for a value, before its words ("▽ full face")
-_SYMBOL_RE = re.compile(r"^([^\w\s(]+)\s+(\w.*)$")
 # the pair named by its arrows: "Press ▲ or ▼ until the value you want is shown"
 _ARROWS_RE = re.compile(r"\bpress\s+[▲△↑]\s*(?:or|and|/)\s*[▼▽↓]", re.I)
-# a chart column holding what the display shows: "| Code | Setting | Values |"
-_CODE_HEAD_RE = re.compile(r"^\W*(?:codes?|display)\W*$", re.I)
 
 
 def read_code_walks(b: Builder) -> None:
@@ -75,7 +72,7 @@ def _chart_walk(
         for column in range(min(len(r.cells) for r in rows)):
             cells = {_norm(r.cells[column]) for r in rows}
             if codes is None:
-                if column >= len(header) or not _CODE_HEAD_RE.search(header[column]):
+                if column >= len(header) or not CODE_HEAD.match(header[column]):
                     continue
                 wanted = {c for c in cells if c}
             if not wanted or not wanted <= cells:
@@ -118,10 +115,10 @@ def _fields(rows: list[Unit], column: int, codes: set[str]) -> list[dict[str, An
             return None
         values, show = [], {}
         for item in _items(listed):
-            symbol = _SYMBOL_RE.match(item)
-            value = _norm(symbol.group(2) if symbol else item)
+            drawn = drawn_choice(item)  # "▽ full face": the name, shown as the symbol
+            value = _norm(drawn[1] if drawn else item)
             values.append(value)
-            show[value] = f"{code} {symbol.group(1) if symbol else item}"
+            show[value] = f"{code} {drawn[0] if drawn else item}"
         field_name = "_".join(re.findall(r"[a-z0-9]+", name)[:3])
         fields.append({"name": field_name, "label": code, "values": values, "show": show})
     return fields if len(fields) >= 2 else None

@@ -18,6 +18,20 @@ _CODED = re.compile(
 )
 _SLASHED = re.compile(r"^\s*[A-Za-z0-9°]{1,6}(?:\s*/\s*[A-Za-z0-9°]{1,6})+\s*$")
 _BARE_STEP = re.compile(rf"\bsteps?\s+({NUM})\s*({UNIT})?(?!\w)", re.IGNORECASE)
+# a column headed as the code a small display prints before the value ("| Code | Setting |
+# Values |", "| Display | … |"): the one test of a coded chart, for the settings-menu reader
+# (roles_menu) and the walk of coded fields (code_walks) alike
+CODE_HEAD = re.compile(r"^\W*(?:codes?|display(?:\s+codes?)?)\W*$", re.IGNORECASE)
+# a choice printed as the symbol the display draws, then its name ("△ nasal", "▽ full face")
+_DRAWN = re.compile(r"([^\w\s(),]{1,3})\s+([A-Za-z][A-Za-z -]{1,30})")
+
+
+def drawn_choice(item: str) -> tuple[str, str] | None:
+    """(symbol, name) of a listed choice drawn as a symbol before its name ("△ nasal" → ("△",
+    "nasal")): the user says the name, the display shows the symbol. One reading for a menu
+    item's values and a walked chart's fields."""
+    m = _DRAWN.fullmatch(item.strip())
+    return (m.group(1), m.group(2).strip()) if m else None
 
 
 def coded_choices(cell: str) -> list[tuple[str, str]] | None:

@@ -12,7 +12,7 @@ from typing import Any
 
 from apbot.model.values import format_hms, parse_hms, tidy_number
 from apbot.read.build import Builder
-from apbot.read.menu_cells import bare_step, coded_choices, slashed_words
+from apbot.read.menu_cells import bare_step, coded_choices, drawn_choice, slashed_words
 from apbot.read.roles_common import numeric_list
 from apbot.read.roles_lists import list_evidence
 from apbot.read.shapes import Evidence
@@ -29,7 +29,6 @@ _SPELLED = r"\b{v}\s*\(\s*([A-Za-z][a-z]+)\s*\)"  # "C (Celsius)": the value's f
 
 _VALUES_LABEL = re.compile(r"^\s*(?:values?|settings?|options?|choices?)\s*:\s*", re.IGNORECASE)
 _NAMED_STOP = re.compile(r"[A-Z]{2,6}|[A-Z][a-z]{1,5}")  # "AUTO", "Max": a word among numbers
-_SYMBOL_NAME = re.compile(r"([^\w\s(),]{1,3})\s+([A-Za-z][A-Za-z -]{1,30})")  # "△ nasal"
 _CHOICE = re.compile(r"[A-Za-z0-9][A-Za-z0-9+-]{0,9}(?: [A-Za-z0-9+-]{1,10})?")
 
 
@@ -146,10 +145,10 @@ def _drawn(b: Builder, item: MenuItem, name: str, listed: list[str]) -> str | No
     """Choices each printed as the symbol the display draws before its name ("▽ full face,
     △ nasal, ∘∘ pillows"): the user says the name, the display shows the symbol; the start
     is given by either."""
-    found = [_SYMBOL_NAME.fullmatch(v.strip()) for v in listed]
+    found = [drawn_choice(v) for v in listed]
     if not all(found):
         return None
-    pairs = [(m.group(1), m.group(2).strip().lower()) for m in found if m]
+    pairs = [(m[0], m[1].lower()) for m in found if m]
     init = (item.initial or "").strip().lower()
     start = next((n for c, n in pairs if init and init in (c.lower(), n)), None)
     ev = Evidence(

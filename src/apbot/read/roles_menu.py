@@ -27,6 +27,7 @@ from typing import Any
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.labels import words
+from apbot.read.menu_cells import CODE_HEAD
 from apbot.read.menu_values import DEFAULT_HEAD, MenuItem, item_variable
 from apbot.read.roles_menu_home import home_quantity
 
@@ -47,9 +48,8 @@ _ON_TO_NEXT_RE = re.compile(
 )
 _BARE_STEP = re.compile(r"^\W*(?:\d+[.)]\s*)?(?:press|touch|push|tap)\s+\S{1,12}\s*\.?\s*$", re.I)
 _VALUES_HEAD = re.compile(r"\b(?:values?|range|settings?|options?|choices?)\b", re.IGNORECASE)
-# a column headed as the code a small display prints ("| Code | Setting | Values |"); its
-# cells are short letter codes ("rA", "EP", "MASK"), numbered by their row's place
-_CODE_COLUMN = re.compile(r"^\W*(?:code|display\s+code)\W*$", re.IGNORECASE)
+# a column headed as the code a small display prints (menu_cells.CODE_HEAD); its cells are
+# short letter codes ("rA", "EP", "MASK"), numbered by their row's place
 _LETTER_CODE = re.compile(r"^[A-Za-z]{1,4}$")
 
 
@@ -81,7 +81,7 @@ def _headed_item(unit: Any) -> tuple[str, str, int] | None:
     which only their column's head tells from a setting's name."""
     head = unit.header or ()
     for k, cell in enumerate(unit.cells[:2]):
-        if k >= len(head) or not _CODE_COLUMN.match(head[k]):
+        if k >= len(head) or not CODE_HEAD.match(head[k]):
             continue
         code = cell.strip()
         named = k + 1 < len(unit.cells) and re.match(r"[A-Za-z]", unit.cells[k + 1].strip())
