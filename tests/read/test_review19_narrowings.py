@@ -1,7 +1,8 @@
 """Misfires of set18's reader rules on manuals of other appliances, each narrowed: keys said to
 "set the temperature" step it (``value_keys._named_keys``), a lamp word is only a place when the
 panel's word follows it in capitals (``code_glosses``), and "only while … runs" of another
-clause is not said of a dial's turn (``turn_refusals``)."""
+clause is not said of a dial's turn (``turn_refusals``), nor "starts" of a RUN key
+(``roles_running``)."""
 
 from __future__ import annotations
 
@@ -66,3 +67,20 @@ def test_only_while_running_said_of_another_clause_guards_no_turn() -> None:
     actions = ["press_power", "press_start_stop", "turn_warmer", "turn_cooler"]
     model = read_manual(FAN_HEATER, actions).model
     assert not [g for g in model.guards if g.when == {"running": "off"}]
+
+
+# an air purifier whose RUN key shows the filter's hours; the count, not RUN, starts again
+PURIFIER = """
+Breezo AP-7 air purifier
+
+  Keys: POWER, FAN, RUN, RESET
+
+Press POWER to switch on. Press FAN to choose the fan speed: LOW, MED or HIGH.
+Press RUN to show the hours the filter has run; the count starts again from 0 after RESET.
+Hold RESET for 3 seconds after changing the filter.
+"""
+
+
+def test_run_is_no_start_key_where_another_clause_starts() -> None:
+    model = read_manual(PURIFIER, ["press_power", "press_fan", "press_run", "press_reset"]).model
+    assert "running" not in model.variables
