@@ -121,12 +121,20 @@ def _shared_frame(names: dict[str, str]) -> bool:
     return len(frames) != len(set(frames))
 
 
+def _capitals(printed: list[str], words: list[str]) -> bool:
+    """Whether the word after the first of ``words`` is printed in capitals, as on the panel."""
+    at = len(printed) - len(words) + 1
+    return at < len(printed) and printed[at].isupper()
+
+
 def _name(gloss: str, code: str, own: set[str]) -> str | None:
     """The gloss's leading words as a name when they hold the code ("walls", "waterline"), else
     None: a gloss up to its first bracket, comma or stop, without an article or "only"."""
     text = _CUT.split(gloss.strip())[0]
-    words = [w for w in text.casefold().split() if w]
-    while words and (words[0] in _FILLER or words[0] in _SHOWN):
+    printed = text.split()
+    words = [w.casefold() for w in printed]
+    # ("lamp PEDAL": where the word shows, the word printed after it; "light mist" is a name)
+    while words and (words[0] in _FILLER or (words[0] in _SHOWN and _capitals(printed, words))):
         words = words[1:]
     while words and words[-1] in _TRAILING:
         words = words[:-1]

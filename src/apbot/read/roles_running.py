@@ -39,9 +39,13 @@ def _run_starts(b: Builder, token: str) -> bool:
     if words(token) != ["run"] or token not in b.labels:
         return False
     units = b.manual.units
+    # the key and "start" in one clause ("Press RUN to show the hours the filter has run; the
+    # count starts again after RESET" tells of a count, not of RUN)
+    printed = re.compile(rf"(?<![\w-]){re.escape(b.labels[token].text.strip())}(?![\w-])")
     return any(
-        re.search(r"\bstart(?:s|ed)?\b", units[i].text, re.IGNORECASE)
+        printed.search(part) and re.search(r"\bstart(?:s|ed)?\b", part, re.IGNORECASE)
         for i in b.labels[token].mentions
+        for part in re.split(r";|(?<=[.!?])\s+", units[i].text)
     )
 
 

@@ -50,9 +50,11 @@ def read_turn_refusals(b: Builder) -> None:
         word = next((w for w in info.name.split("_") if w in _WORDS), None)
         if word is None:
             continue
+        # (one clause: "warmer to raise the heat; the element glows only while the fan runs"
+        # says when the element glows, not when the turn works)
         said = re.compile(
-            rf"\b{word}\b[^.]{{0,60}}?\b{_ONLY_RUNNING}"
-            rf"|\brefuse[sd]?\s+(?:an?|the)\s+{word}\b[^.]{{0,60}}?\b{_STOPPED}",
+            rf"\b{word}\b[^.;:]{{0,60}}?\b{_ONLY_RUNNING}"
+            rf"|\brefuse[sd]?\s+(?:an?|the)\s+{word}\b[^.;:]{{0,60}}?\b{_STOPPED}",
             re.IGNORECASE,
         )
         for at, unit in enumerate(b.manual.units):

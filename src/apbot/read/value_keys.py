@@ -89,6 +89,8 @@ def _named_keys(b: Builder) -> None:
             if any(set(st.get("actions") or []) & own for st in steps)
         ):
             continue  # "Z1 then ▲ / ▼": the keys choose which setting other keys move
+        if _step_numbers(b, own):
+            continue  # "Press UP or DOWN to set the temperature": the keys step a number
         noun = m.group(2).lower()
         name = _replace(b, noun, list(keys), keys, None)
         if _lamps_named(b, listed):  # "the lamp of the chosen channel is lit (T1, T2 or T3)"
@@ -161,6 +163,18 @@ def _replace(
         effect[held[0]] = {"to": held[1]}
     b.feature(name, [{"actions": list(effect), "variable": name, "effect": effect}])
     return name
+
+
+def _step_numbers(b: Builder, own: set[str]) -> bool:
+    """Whether any of the keys already steps a number or a time ("Press UP or DOWN to set the
+    temperature", "Press HOUR or MIN to set the clock"): keys that move a setting through its
+    range, not keys each going to a value named after them."""
+    return any(
+        (b.variables.get(st.get("variable") or "") or {}).get("type") in ("numeric", "time")
+        for steps in b.features.values()
+        for st in steps
+        if set(st.get("actions") or []) & own
+    )
 
 
 def _lamps_named(b: Builder, keys: list[str]) -> bool:
