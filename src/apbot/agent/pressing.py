@@ -160,10 +160,12 @@ def press(
         rechosen = (later & set(session.evidence)) - seen.shown() - changed
         session.doubtful |= rechosen
         session.rechosen |= rechosen
-    if any(runs(n) and str(session.belief.value(n)) == "off" for n in changed):
+    asked_off = {n for n, v in session.context.goal.items() if str(v).casefold() == "off"}
+    if any(runs(n) and str(session.belief.value(n)) == "off" for n in changed - asked_off):
         # a cycle stopped: many appliances clear what was set for it with the same key (STOP /
         # CANCEL), whatever the manual says: what the display showed of it before is in doubt,
-        # and a keypad setting is typed again
+        # and a keypad setting is typed again — unless the goal itself asks that state off (a
+        # heating lamp switched off as asked is no cycle stopped)
         stopped = set(session.evidence) - seen.shown() - changed
         session.doubtful |= stopped
         session.rechosen |= stopped
