@@ -26,6 +26,7 @@ from collections import defaultdict
 from typing import Any
 
 from apbot.read.build import Builder
+from apbot.read.value_keys import drop_key_roles
 
 # a control named by a stem and a number: t1, ch2, m_3, zone_4 (never a bare digit key)
 _NUMBERED = re.compile(r"([a-z]+)_?(\d{1,2})")
@@ -44,10 +45,9 @@ def read_numbered_keys(b: Builder) -> None:
     for (_, stem), keys in sorted(families.items()):
         if len(keys) < 2:
             continue
-        own = _own_settings(b, set(keys.values()))
-        if own is None:
+        if _own_settings(b, set(keys.values())) is None:
             continue
-        _replace(b, stem, keys, own)
+        _replace(b, stem, keys)
 
 
 def _own_settings(b: Builder, keys: set[str]) -> set[str] | None:
@@ -114,19 +114,9 @@ def _switch(spec: dict[str, Any]) -> bool:
     return {str(v).casefold() for v in spec.get("values") or []} == {"off", "on"}
 
 
-def _replace(b: Builder, stem: str, keys: dict[str, str], own: set[str]) -> None:
+def _replace(b: Builder, stem: str, keys: dict[str, str]) -> None:
     """The keys' own settings and procedures give way to one choice setting named by ``stem``."""
-    actions = set(keys.values())
-    for name in [
-        n
-        for n, steps in b.features.items()
-        if any(set(s.get("actions") or []) & actions for s in steps)
-    ]:
-        del b.features[name]
-    for var in own:
-        b.variables.pop(var, None)
-        b.guards = [g for g in b.guards if var not in (g.get("when") or {})]
-        b.indicators = [v for v in b.indicators if v != var]
+    drop_key_roles(b, set(keys.values()))  # their own settings go with their procedures
     order = sorted(keys, key=int)
     values = [f"{stem}{n}" for n in order]
     name = b.unique(stem, b.variables)

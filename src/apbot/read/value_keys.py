@@ -130,15 +130,10 @@ def _held_figure(b: Builder, keys: list[str], values: list[str]) -> tuple[str, s
     return None
 
 
-def _replace(
-    b: Builder,
-    noun: str,
-    values: list[str],
-    keys: dict[str, Any],
-    held: tuple[str, str] | None,
-) -> str:
-    """The keys' own variables and features give way to one setting ``noun`` (its name)."""
-    actions = {info.name for info in keys.values()} | ({held[0]} if held else set())
+def drop_key_roles(b: Builder, actions: set[str]) -> None:
+    """Forget what the reader made of ``actions`` key by key — the procedures they take part in,
+    and the settings only those procedures adjusted (with their guards and lamps) — before the
+    keys are read again as one setting."""
     old = {
         s.get("variable")
         for steps in b.features.values()
@@ -156,6 +151,17 @@ def _replace(
             b.variables.pop(var, None)
             b.guards = [g for g in b.guards if var not in (g.get("when") or {})]
             b.indicators = [v for v in b.indicators if v != var]
+
+
+def _replace(
+    b: Builder,
+    noun: str,
+    values: list[str],
+    keys: dict[str, Any],
+    held: tuple[str, str] | None,
+) -> str:
+    """The keys' own variables and features give way to one setting ``noun`` (its name)."""
+    drop_key_roles(b, {info.name for info in keys.values()} | ({held[0]} if held else set()))
     name = b.unique(noun, b.variables)
     b.variables[name] = {"type": "discrete", "values": values, "label": noun.upper()}
     effect = {info.name: {"to": figure} for figure, info in keys.items()}
