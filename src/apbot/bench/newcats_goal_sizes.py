@@ -159,10 +159,17 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "nail_drill": 3,
     "salt_chlorinator": 3,
     # The twenty-fourth blind set (helper blind27n, 7 December 2026, the fourth 7 December
-    # session): blind for this round's work.
+    # session): development data since the fifth 7 December session.
     "bench_power_supply": 3,
     "fog_machine": 3,
     "weather_station": 3,
     "facial_cleansing_brush": 3,
     "video_light": 3,
+    # The twenty-fifth blind set (helper blind28n, 7 December 2026, the fifth 7 December session):
+    # blind for this round's work.
+    "cycle_computer": 3,
+    "chess_clock": 3,
+    "guitar_tuner": 3,
+    "welding_machine": 3,
+    "dog_training_collar": 3,
 }
