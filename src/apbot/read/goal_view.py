@@ -132,6 +132,15 @@ def _add_doers(info: VarInfo, text: str, appliance: set[str]) -> None:
                     _add_vocab(info, form, 0.6)
 
 
+def _add_nouns(info: VarInfo, text: str) -> None:
+    """ "full brightness" for BRIGHT, "the thickness" for THICK: a setting a panel names by its
+    adjective is said by the adjective's noun in -ness (as surely as by the name)."""
+    for word in name_words(text):
+        plain = not word.endswith(("ness", "ing", "er", "ed", "s"))
+        if plain and word.isalpha() and len(word) >= 4 and word not in STOP_WORDS:
+            _add_vocab(info, f"{word}ness", 0.9)
+
+
 def _sound_is_volume(infos: dict[str, VarInfo]) -> None:
     """ "turn the sound down to 3": the one VOLUME setting is the sound, where nothing else of
     the model is named for sound (no BEEP switch, no ALARM TONE)."""
@@ -152,6 +161,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         if var.label:
             _add_vocab(info, var.label, 1.0)
         _add_doers(info, f"{name} {var.label or ''}", appliance)
+        _add_nouns(info, f"{name} {var.label or ''}")
         if isinstance(var.show, str):
             _add_vocab(info, var.show.split("{")[0], 0.7)
             _add_vocab(info, var.show.rsplit("}", 1)[-1], 0.7)  # "{value}pt": "8 pt" names it

@@ -1,0 +1,116 @@
+"""Settings the parser used to leave out of a goal though the model holds them: a superlative
+of heat closed by the appliance's own limit ("the hottest it goes") or ending its clause ("the
+music at the loudest;"), never an end of a time; "the second level" on a setting counted in
+numbers; a setting a panel names by an adjective (BRIGHT) said by its noun ("full
+brightness"). Small models written for these tests."""
+
+from __future__ import annotations
+
+from apbot.model.load import loads_model
+from apbot.read.goal import parse_instruction
+
+CURLER = """
+appliance: {id: curler_1, category: hair_curler, name: "Wave C-2 curling wand", brand: W}
+controls:
+  - {id: curl_key, kind: button, label: "CURL"}
+  - {id: up_key, kind: button, label: "+"}
+  - {id: down_key, kind: button, label: "-"}
+  - {id: ao_key, kind: button, label: "CURL AO"}
+  - {id: beat_key, kind: button, label: "MUSIC"}
+  - {id: vol_key, kind: button, label: "VOLUME"}
+variables:
+  curl: {type: discrete, values: [loose, tight], show: {loose: "LOOSE", tight: "TIGHT"}}
+  temperature:
+    type: numeric
+    unit: "°C"
+    ranges: [[120, 200, 10]]
+    initial: 160
+    wrap: false
+    show: "{value}"
+  curl_off:
+    type: numeric
+    unit: min
+    label: "CURL AO"
+    ranges: [[30, 90, 30]]
+    initial: 60
+    wrap: true
+    show: "AO {value}"
+  music:
+    type: discrete
+    values: [rain, waves, birds]
+    show: {rain: "RN", waves: "WV", birds: "BD"}
+  volume: {type: numeric, ranges: [[1, 6, 1]], initial: 3, wrap: true, show: "V{value}"}
+actions:
+  press_curl: {control: curl_key}
+  press_up: {control: up_key}
+  press_down: {control: down_key}
+  press_ao: {control: ao_key}
+  press_music: {control: beat_key}
+  press_vol: {control: vol_key}
+features:
+  curl:
+    - {actions: [press_curl], variable: curl, effect: next}
+  temperature:
+    - actions: [press_up, press_down]
+      variable: temperature
+      effect: {press_up: next, press_down: prev}
+  curl_off:
+    - {actions: [press_ao], variable: curl_off, effect: next}
+  music:
+    - {actions: [press_music], variable: music, effect: next}
+  volume:
+    - {actions: [press_vol], variable: volume, effect: next}
+"""
+
+LAMP = """
+appliance: {id: lamp_1, category: desk_lamp, name: "Lumo D-4 desk lamp", brand: L}
+controls:
+  - {id: b_key, kind: button, label: "BRIGHT"}
+  - {id: s_key, kind: button, label: "SPEED"}
+variables:
+  bright:
+    type: discrete
+    values: ["25", "50", "75", "100"]
+    show: {"25": "B25", "50": "B50", "75": "B75", "100": "B100"}
+  fan:
+    {type: numeric, label: "SPEED", ranges: [[1, 5, 1]], initial: 1, wrap: true, show: "F{value}"}
+actions:
+  press_bright: {control: b_key}
+  press_speed: {control: s_key}
+features:
+  bright:
+    - {actions: [press_bright], variable: bright, effect: next}
+  fan:
+    - {actions: [press_speed], variable: fan, effect: next}
+"""
+
+
+def _curler(text: str) -> dict[str, object]:
+    return parse_instruction(loads_model(CURLER), text)
+
+
+def _lamp(text: str) -> dict[str, object]:
+    return parse_instruction(loads_model(LAMP), text)
+
+
+def test_the_hottest_it_goes_is_the_top_temperature() -> None:
+    assert _curler("Loose curls at the hottest it goes.") == {"curl": "loose", "temperature": 200}
+    assert _curler("the coolest it will go, please")["temperature"] == 120
+
+
+def test_a_superlative_of_heat_is_no_end_of_a_time() -> None:
+    assert _curler("Tight curl, hottest setting.") == {"curl": "tight", "temperature": 200}
+
+
+def test_a_superlative_ending_its_clause_after_at_the() -> None:
+    assert _curler("Birdsong at the loudest; that is all.") == {"music": "birds", "volume": 6}
+    assert _curler("Rain at the loudest, please")["volume"] == 6
+
+
+def test_the_second_level_is_level_two_of_a_numbered_setting() -> None:
+    assert _lamp("Fan on the second level") == {"fan": 2}
+    assert _lamp("the third level for the fan, half brightness")["fan"] == 3
+
+
+def test_an_adjectives_noun_names_the_setting() -> None:
+    assert _lamp("Full brightness.") == {"bright": "100"}
