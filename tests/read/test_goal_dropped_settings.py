@@ -114,3 +114,64 @@ def test_the_second_level_is_level_two_of_a_numbered_setting() -> None:
 
 def test_an_adjectives_noun_names_the_setting() -> None:
     assert _lamp("Full brightness.") == {"bright": "100"}
+
+
+RECLINER = """
+appliance: {id: recliner_1, category: recliner, name: "Sofa R-3 power recliner", brand: R}
+controls:
+  - {id: back_up, kind: button, label: "BACK ▲"}
+  - {id: back_down, kind: button, label: "BACK ▼"}
+  - {id: legs_up, kind: button, label: "LEGS ▲"}
+  - {id: legs_down, kind: button, label: "LEGS ▼"}
+  - {id: nap_key, kind: button, label: "NAP"}
+  - {id: heat_key, kind: button, label: "HEAT"}
+variables:
+  back: {type: numeric, ranges: [[0, 50, 5]], show: "BACK {value}"}
+  legs: {type: numeric, ranges: [[0, 30, 5]], show: "LEGS {value}"}
+  heat: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "HEAT"}}
+  tilt: {type: numeric, ranges: [[1, 3, 1]], wrap: true, show: "T{value}"}
+actions:
+  press_back_up: {control: back_up}
+  press_back_down: {control: back_down}
+  press_legs_up: {control: legs_up}
+  press_legs_down: {control: legs_down}
+  press_nap: {control: nap_key}
+  press_heat: {control: heat_key}
+features:
+  back:
+    - actions: [press_back_up, press_back_down]
+      variable: back
+      effect: {press_back_up: next, press_back_down: prev}
+  legs:
+    - actions: [press_legs_up, press_legs_down]
+      variable: legs
+      effect: {press_legs_up: next, press_legs_down: prev}
+  heat:
+    - {actions: [press_heat], variable: heat, effect: toggle}
+  tilt:
+    - {actions: [press_nap], variable: tilt, effect: next}
+"""
+
+RECLINER_MANUAL = """
+# Sofa R-3
+
+## One-touch keys
+
+| Key | Back | Legs | What for            |
+|-----|------|------|---------------------|
+| NAP | 35°  | 20°  | a short rest        |
+| TV  | 15°  | kept | watching television |
+"""
+
+
+def _recliner(text: str) -> dict[str, object]:
+    return parse_instruction(loads_model(RECLINER), text, RECLINER_MANUAL)
+
+
+def test_a_charted_key_named_sets_the_settings_its_row_gives() -> None:
+    assert _recliner("The nap position with the heat on") == {"back": 35, "legs": 20, "heat": "on"}
+
+
+def test_a_setting_the_sentence_gives_keeps_its_value_and_kept_sets_nothing() -> None:
+    assert _recliner("Nap position, but the legs at 10") == {"back": 35, "legs": 10}
+    assert "back" not in _recliner("TV at 15")  # TV is no key of this panel

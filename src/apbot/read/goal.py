@@ -70,6 +70,7 @@ from apbot.read.goal_ordinals import ordinal_numbers
 from apbot.read.goal_outside import kept_outside
 from apbot.read.goal_own_switch import own_switch_states
 from apbot.read.goal_periods import distinct, in_weeks
+from apbot.read.goal_preset_rows import charted_presets
 from apbot.read.goal_presets import lift_presets, preset_companions, restore_presets
 from apbot.read.goal_quantity_values import quantity_values
 from apbot.read.goal_remarks import without_remarks
@@ -176,6 +177,7 @@ def parse_instruction(
     twin_numbers(view, text, mentions, goal, claimed, where)
     numbered_times(view, text, mentions, goal, claimed, where)
     signed_changes(view, text, goal, where)
+    charted_presets(view, said, goal)  # "the TV position": its row of the manual's chart
     if outside is not None:  # a read belief: a number its setting's name stands beside
         kept_outside(view, text, mentions, goal, claimed, where, outside)
         listed_outside(view, text, goal, claimed, where, outside, manual or "")
