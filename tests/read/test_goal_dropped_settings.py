@@ -175,3 +175,44 @@ def test_a_charted_key_named_sets_the_settings_its_row_gives() -> None:
 def test_a_setting_the_sentence_gives_keeps_its_value_and_kept_sets_nothing() -> None:
     assert _recliner("Nap position, but the legs at 10") == {"back": 35, "legs": 10}
     assert "back" not in _recliner("TV at 15")  # TV is no key of this panel
+
+
+AMP = """
+appliance: {id: amp_1, category: stereo_amplifier, name: "Tono A-1 amplifier", brand: T}
+controls:
+  - {id: src_key, kind: button, label: "SOURCE"}
+  - {id: led_key, kind: button, label: "LED"}
+  - {id: feed_key, kind: button, label: "FEED"}
+variables:
+  source:
+    type: discrete
+    values: [cd, phono, tuner, bt]
+    show: {cd: "CD", phono: "PHONO", tuner: "TUNER", bt: "BT"}
+  led:
+    type: discrete
+    values: [white, violet, amber]
+    show: {white: "W", violet: "V", amber: "A"}
+  feed: {type: discrete, values: [grid, solar], show: {grid: "GRID", solar: "SOLAR"}}
+actions:
+  press_source: {control: src_key}
+  press_led: {control: led_key}
+  press_feed: {control: feed_key}
+features:
+  source:
+    - {actions: [press_source], variable: source, effect: next}
+  led:
+    - {actions: [press_led], variable: led, effect: next}
+  feed:
+    - {actions: [press_feed], variable: feed, effect: next}
+"""
+
+
+def _amp(text: str) -> dict[str, object]:
+    return parse_instruction(loads_model(AMP), text)
+
+
+def test_plain_words_name_values_printed_in_a_trades_word() -> None:
+    assert _amp("Play the radio") == {"source": "tuner"}
+    assert _amp("my vinyl, please")["source"] == "phono"
+    assert _amp("Bluetooth with the purple glow") == {"source": "bt", "led": "violet"}
+    assert _amp("run it on sun power")["feed"] == "solar"
