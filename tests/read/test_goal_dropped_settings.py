@@ -216,3 +216,32 @@ def test_plain_words_name_values_printed_in_a_trades_word() -> None:
     assert _amp("my vinyl, please")["source"] == "phono"
     assert _amp("Bluetooth with the purple glow") == {"source": "bt", "led": "violet"}
     assert _amp("run it on sun power")["feed"] == "solar"
+
+
+STATION = """
+appliance: {id: station_1, category: power_bank, name: "Volt P-5 station", brand: V}
+controls:
+  - {id: on_key, kind: button, label: "⏻"}
+  - {id: lamp_key, kind: button, label: "LAMP"}
+  - {id: usb_key, kind: button, label: "USB"}
+variables:
+  main_hold: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "ON"}}
+  lamp: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "LAMP"}}
+  usb: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "USB"}}
+actions:
+  hold_on: {control: on_key, skill: hold, seconds: 2}
+  press_lamp: {control: lamp_key}
+  press_usb: {control: usb_key}
+features:
+  main_hold:
+    - {actions: [hold_on], variable: main_hold, effect: toggle}
+  lamp:
+    - {actions: [press_lamp], variable: lamp, effect: toggle}
+  usb:
+    - {actions: [press_usb], variable: usb, effect: toggle}
+"""
+
+
+def test_the_switch_of_the_power_symbol_is_the_power() -> None:
+    goal = parse_instruction(loads_model(STATION), "Turn the station on with the USB ports on")
+    assert goal == {"main_hold": "on", "usb": "on"}
