@@ -122,13 +122,14 @@ def mark_power_and_running(model: ApplianceModel, infos: dict[str, VarInfo]) -> 
             doing[0].role = "running"  # PRINTING, CARBONATING: the work under way
 
 
-_POWER_MARKS = re.compile(r"^\s*(?:[⏻⏼⏽]|power|on\s*/\s*off)\s*$", re.IGNORECASE)
+_POWER_MARKS = re.compile(r"^\s*(?:[⏻⏼⏽]|power)\s*$", re.IGNORECASE)
 
 
 def _power_by_symbol(model: ApplianceModel, infos: dict[str, VarInfo]) -> None:
-    """The one switch labelled with the power symbol ⏻ (or POWER, ON/OFF), by its own label or
-    its key's, is the power on a model that has none by name: a belief that read the key
-    held to switch on as ``power_hold`` (a RUNNING the key starts stays the running state)."""
+    """The one switch labelled with the power symbol ⏻ (or POWER), by its own label or its
+    key's, is the power on a model that has none by name: a belief that read the key held to
+    switch on as ``power_hold`` (a RUNNING the key starts stays the running state; an ON/OFF
+    key switches as often one zone as the whole)."""
     marked = set()
     for _feature, _index, step in steps_of(model):
         labels = control_labels(model, step.actions)
@@ -141,6 +142,7 @@ def _power_by_symbol(model: ApplianceModel, infos: dict[str, VarInfo]) -> None:
         if n in infos
         and infos[n].role == "switch"
         and not _operation(n)
+        and not infos[n].var.depends_on  # one zone's own switch
         and concept("lock") not in infos[n].vocab  # hold ⏻ to lock it for travel
     ]
     if len(found) == 1:
