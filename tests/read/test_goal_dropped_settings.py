@@ -245,3 +245,28 @@ features:
 def test_the_switch_of_the_power_symbol_is_the_power() -> None:
     goal = parse_instruction(loads_model(STATION), "Turn the station on with the USB ports on")
     assert goal == {"main_hold": "on", "usb": "on"}
+
+
+DECK = """
+appliance: {id: deck_1, category: record_deck, name: "Platter D-2 record deck", brand: P}
+controls:
+  - {id: start_key, kind: button, label: "START/STOP"}
+  - {id: speed_key, kind: button, label: "SPEED"}
+variables:
+  running: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "RUN"}}
+  speed: {type: discrete, values: ["33", "45"], show: {"33": "33", "45": "45"}}
+actions:
+  press_start: {control: start_key}
+  press_speed: {control: speed_key}
+features:
+  start:
+    - {actions: [press_start], variable: running, effect: toggle}
+  speed:
+    - {actions: [press_speed], variable: speed, effect: toggle}
+"""
+
+
+def test_an_order_to_play_or_stitch_starts_the_work() -> None:
+    deck = loads_model(DECK)
+    assert parse_instruction(deck, "Play a single at 45") == {"speed": "45", "running": "on"}
+    assert parse_instruction(deck, "Put it on 33 but don't play it yet")["running"] == "off"
