@@ -270,3 +270,58 @@ def test_an_order_to_play_or_stitch_starts_the_work() -> None:
     deck = loads_model(DECK)
     assert parse_instruction(deck, "Play a single at 45") == {"speed": "45", "running": "on"}
     assert parse_instruction(deck, "Put it on 33 but don't play it yet")["running"] == "off"
+
+
+KILN = """
+appliance: {id: kiln_1, category: glass_kiln, name: "Fuse K-3 glass kiln", brand: F}
+controls:
+  - {id: hold_key, kind: button, label: "HOLD"}
+  - {id: weeks_key, kind: button, label: "CURE"}
+  - {id: lamp_key, kind: button, label: "LAMP HOURS"}
+variables:
+  hold:
+    type: numeric
+    unit: min
+    ranges: [[0, 60, 10]]
+    initial: 10
+    wrap: true
+    show: "H{value}"
+  cure:
+    type: discrete
+    values: [1 d, 3 d, 7 d, 14 d, 28 d]
+    show: {1 d: "1d", 3 d: "3d", 7 d: "7d", 14 d: "14d", 28 d: "28d"}
+  lamp_hours: {type: numeric, ranges: [[8, 18, 1]], initial: 12, wrap: true, show: "L{value}"}
+actions:
+  press_hold: {control: hold_key}
+  press_cure: {control: weeks_key}
+  press_lamp: {control: lamp_key}
+features:
+  hold:
+    - {actions: [press_hold], variable: hold, effect: next}
+  cure:
+    - {actions: [press_cure], variable: cure, effect: next}
+  lamp_hours:
+    - {actions: [press_lamp], variable: lamp_hours, effect: next}
+"""
+
+
+def _kiln(text: str) -> dict[str, object]:
+    return parse_instruction(loads_model(KILN), text)
+
+
+def test_a_setting_named_by_a_key_verb_is_named_by_it() -> None:
+    assert _kiln("Fire it with no hold") == {"hold": 0}
+    assert _kiln("a 20 minute hold")["hold"] == 20
+
+
+def test_weeks_on_a_list_of_days() -> None:
+    assert _kiln("Let it cure for two weeks") == {"cure": "14 d"}
+    assert _kiln("cure for four weeks")["cure"] == "28 d"
+
+
+def test_weeks_read_as_days_go_to_the_list_of_days_only() -> None:
+    outside: list[str] = []
+    goal = parse_instruction(
+        loads_model(KILN), "I'm away for a week, so cure it for 3 days", "", outside
+    )
+    assert goal == {"cure": "3 d"} and outside == []
