@@ -325,3 +325,28 @@ def test_weeks_read_as_days_go_to_the_list_of_days_only() -> None:
         loads_model(KILN), "I'm away for a week, so cure it for 3 days", "", outside
     )
     assert goal == {"cure": "3 d"} and outside == []
+
+
+MIXER = """
+appliance: {id: granita_1, category: granita_machine, name: "Gelo G-2 granita machine", brand: G}
+controls:
+  - {id: t_key, kind: button, label: "THICK"}
+  - {id: v_key, kind: button, label: "VOL"}
+variables:
+  thick: {type: numeric, ranges: [[1, 5, 1]], initial: 3, wrap: true, show: "T{value}"}
+  vol: {type: numeric, ranges: [[1, 8, 1]], initial: 4, wrap: true, show: "V{value}"}
+actions:
+  press_thick: {control: t_key}
+  press_vol: {control: v_key}
+features:
+  thick:
+    - {actions: [press_thick], variable: thick, effect: next}
+  vol:
+    - {actions: [press_vol], variable: vol, effect: next}
+"""
+
+
+def test_a_vol_is_the_volume_and_the_texture_is_the_thickness() -> None:
+    mixer = loads_model(MIXER)
+    assert parse_instruction(mixer, "the loudest volume") == {"vol": 8}
+    assert parse_instruction(mixer, "the softest texture") == {"thick": 1}
