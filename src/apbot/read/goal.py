@@ -51,6 +51,7 @@ from apbot.read.goal_kinds import kind_numbers
 from apbot.read.goal_left_to_it import left_to_it
 from apbot.read.goal_limits import limit_numbers
 from apbot.read.goal_listed import listed_outside
+from apbot.read.goal_listed_days import listed_in_days, weeks_elsewhere
 from apbot.read.goal_marked_ends import marked_ends
 from apbot.read.goal_mute import muted_volume
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
@@ -70,6 +71,7 @@ from apbot.read.goal_ordinals import ordinal_numbers
 from apbot.read.goal_outside import kept_outside
 from apbot.read.goal_own_switch import own_switch_states
 from apbot.read.goal_periods import distinct, in_weeks
+from apbot.read.goal_preset_rows import charted_presets
 from apbot.read.goal_presets import lift_presets, preset_companions, restore_presets
 from apbot.read.goal_quantity_values import quantity_values
 from apbot.read.goal_remarks import without_remarks
@@ -167,15 +169,20 @@ def parse_instruction(
     fractions(view, text, goal, claimed, where)
     quantity_values(view, text, goal, claimed, where)
     unit_cases(view, text, goal, claimed, where)
-    days = any(in_days(info.var) for info in view.infos.values() if info.role == "setting")
-    mentions = distinct(in_weeks(text, find_mentions(text.tokens, skip=claimed), days))
+    counted = [info for info in view.infos.values() if info.role == "setting"]
+    days = any(in_days(info.var) for info in counted)
+    listed = not days and any(listed_in_days(info) for info in counted)
+    mentions = distinct(in_weeks(text, find_mentions(text.tokens, skip=claimed), days or listed))
     mentions = time_spans(view, text, mentions, goal, claimed, where)
     mentions = kind_numbers(view, text, mentions, goal, claimed, where)
     mentions = limit_numbers(view, text, mentions, goal, claimed, where)
     counting = assign_mentions(view, text, mentions, goal, claimed, where, outside)
+    if listed:  # weeks read as days for a list of days ("28 d") go to that list only
+        mentions = weeks_elsewhere(view, text, mentions, goal, claimed, where, outside)
     twin_numbers(view, text, mentions, goal, claimed, where)
     numbered_times(view, text, mentions, goal, claimed, where)
     signed_changes(view, text, goal, where)
+    charted_presets(view, said, goal)  # "the TV position": its row of the manual's chart
     if outside is not None:  # a read belief: a number its setting's name stands beside
         kept_outside(view, text, mentions, goal, claimed, where, outside)
         listed_outside(view, text, goal, claimed, where, outside, manual or "")

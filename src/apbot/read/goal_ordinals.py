@@ -3,7 +3,9 @@
 count). People count slots, meals and days by ordinals as often as by numbers; the rest of the
 parser reads "meal 2" (a code by its number, a number beside its setting's word), so the
 ordinal is written that way first. Only before a word of a setting that holds numbers or
-numbered codes, and never after a number ("a 30 second rinse" keeps its seconds)."""
+numbered codes, and never after a number ("a 30 second rinse" keeps its seconds); "the
+second level" is "level 2" wherever a setting counts in numbers, whatever it is named (a
+SPEED 1-6 read as levels), since "level" names no setting but the kind of one."""
 
 from __future__ import annotations
 
@@ -41,6 +43,8 @@ def ordinal_numbers(view: Model, instruction: str) -> str:
             return match[0]  # "first tray 2, then …": the number is said; the ordinal orders
         if _CLAUSE_START.search(before) and _OBJECT_AFTER.match(after):
             return match[0]  # "First program the delay": a step's order, the noun a verb
+        if match[2].casefold() == "level" and any(map(_numbered, view.infos.values())):
+            return f"{match[2]} {ORDINALS[match[1].casefold()]}"  # "the second level": level 2
         if concept(match[2].casefold()) not in nouns and not _code_initial(view, match[2]):
             return match[0]
         return f"{match[2]} {ORDINALS[match[1].casefold()]}"

@@ -85,6 +85,8 @@ def mark_power_and_running(model: ApplianceModel, infos: dict[str, VarInfo]) -> 
         named = name in ("power", "on_off", "power_switch") or dark
         if info.role == "switch" and named:
             info.role = "power"
+    if not any(info.role == "power" for info in infos.values()):
+        _power_by_symbol(model, infos)
     for _feature, _index, step in steps_of(model):
         pressed = [a for a in step.actions if model.actions[a].skill == "press"]
         labels = " ".join(control_labels(model, pressed)).casefold()
@@ -118,6 +120,33 @@ def mark_power_and_running(model: ApplianceModel, infos: dict[str, VarInfo]) -> 
         doing = [i for n, i in infos.items() if i.role == "switch" and doing_name(n)]
         if len(doing) == 1:
             doing[0].role = "running"  # PRINTING, CARBONATING: the work under way
+
+
+_POWER_MARKS = re.compile(r"^\s*(?:[⏻⏼⏽]|power)\s*$", re.IGNORECASE)
+
+
+def _power_by_symbol(model: ApplianceModel, infos: dict[str, VarInfo]) -> None:
+    """The one switch labelled with the power symbol ⏻ (or POWER), by its own label or its
+    key's, is the power on a model that has none by name: a belief that read the key held to
+    switch on as ``power_hold`` (a RUNNING the key starts stays the running state; an ON/OFF
+    key switches as often one zone as the whole)."""
+    marked = set()
+    for _feature, _index, step in steps_of(model):
+        labels = control_labels(model, step.actions)
+        if step.variable and any(_POWER_MARKS.match(label) for label in labels):
+            marked.add(step.variable)
+    marked |= {n for n, i in infos.items() if _POWER_MARKS.match(i.var.label or "")}
+    found = [
+        n
+        for n in marked
+        if n in infos
+        and infos[n].role == "switch"
+        and not _operation(n)
+        and not infos[n].var.depends_on  # one zone's own switch
+        and concept("lock") not in infos[n].vocab  # hold ⏻ to lock it for travel
+    ]
+    if len(found) == 1:
+        infos[found[0]].role = "power"
 
 
 def doing_name(name: str) -> bool:

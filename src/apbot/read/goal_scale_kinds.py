@@ -85,12 +85,38 @@ def of_a_setting(info: VarInfo, text: Text, k: int) -> bool:
     the weather's."""
     if text.word(k - 1) == "as":
         return True  # _kind_of has checked the limit that closes it
+    if _its_limit(text, k + 1) or _ends_its_clause(text, k):
+        return True  # "the hottest it goes", "the lullabies at the loudest;"
     j = k + 2 if text.word(k + 1) in ("possible", "available", "allowed") else k + 1
     key = text.concepts[j] if j < len(text.concepts) else ""  # "the longest possible soak"
     if key in _OF_SETTING or (key and info.vocab.get(key, 0.0) > 0):
         return True
     after = text.word(k + 1)
     return text.word(k - 1) == "its" and (after in CLAUSE_ENDS or after in (",", ""))
+
+
+_CLOSERS = frozenset({",", "-", "and", "then", "but", "please", ""}) | CLAUSE_ENDS
+
+
+def _ends_its_clause(text: Text, k: int) -> bool:
+    """ "the lullabies at the loudest", "bake on the hottest, then …": a superlative after
+    "at / on / to the" that ends its clause has nothing else to grade than a setting (the
+    weather's "the coldest night" goes on to its noun)."""
+    return (
+        text.word(k - 1) in ("the", "its")
+        and text.word(k - 2) in ("at", "on", "to")
+        and text.word(k + 1) in _CLOSERS
+    )
+
+
+def of_another_kind(info: VarInfo, kind: str) -> bool:
+    """A setting whose measure is known and is no temperature, for a superlative of heat: "the
+    hottest" is no end of a time (AUTO OFF 30-90 min). ("the shortest" grades a cutting
+    height as well as a time: only heat is this plain.)"""
+    if kind != "temperature":
+        return False
+    measure = "time" if isinstance(info.var, TimeVariable) else info.dimension
+    return measure is not None and measure not in ("temperature", "fahrenheit")
 
 
 def named_specifically(info: VarInfo, text: Text, k: int) -> bool:

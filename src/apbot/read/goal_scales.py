@@ -23,6 +23,7 @@ from apbot.read.goal_scale_kinds import (
     named_specifically,
     names_another,
     of_a_setting,
+    of_another_kind,
     only_of_kind,
 )
 from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab, said_before
@@ -109,7 +110,8 @@ def superlatives(
         if keyed is not None:
             best = (0.0, keyed[0])  # the key names its setting: no other setting's words
         kind = kind_of(text, k) if end is not None and keyed is None else None
-        if kind and (best is None or not named_specifically(view.infos[best[1]], text, k)):
+        clash = kind is not None and best is not None and of_another_kind(view.infos[best[1]], kind)
+        if kind and (best is None or clash or not named_specifically(view.infos[best[1]], text, k)):
             only = only_of_kind(view, goal, kind)
             if (
                 only is not None
@@ -117,6 +119,8 @@ def superlatives(
                 and (kind not in ("level", "speed") or not names_another(view, only[1], text, k))
             ):
                 best = only
+            elif clash:
+                best = None  # "the hottest setting" is no end of an AUTO OFF time
         if best is None:
             continue
         name = best[1]

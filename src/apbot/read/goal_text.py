@@ -273,6 +273,14 @@ STRONG_VERBS = frozenset(
         "sterilise",
         "sterilize",
         "dehumidify",
+        # the work of players, needles, blades and rollers said as an order (not "mow",
+        # "seal", "floss": as often a schedule, a mode, a kind of sugar)
+        "play",
+        "stitch",
+        "sew",
+        "embroider",
+        "sharpen",
+        "laminate",
     )
 )
 

@@ -26,6 +26,7 @@ from apbot.read.goal_aliases import bracket_aliases
 from apbot.read.goal_daytimes import day_dial, switch_time, whole_day
 from apbot.read.goal_legends import add_kind_nouns, add_setting_words, legend_words
 from apbot.read.goal_manual import coded_names, title_nouns
+from apbot.read.goal_own_names import TIMED_STOPS, add_nouns, add_timed_stops
 from apbot.read.goal_phrases import value_phrases
 from apbot.read.goal_roles import (
     START_LABELS,
@@ -152,6 +153,8 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         if var.label:
             _add_vocab(info, var.label, 1.0)
         _add_doers(info, f"{name} {var.label or ''}", appliance)
+        add_nouns(info, f"{name} {var.label or ''}")
+        add_timed_stops(info, f"{name} {var.label or ''}")
         if isinstance(var.show, str):
             _add_vocab(info, var.show.split("{")[0], 0.7)
             _add_vocab(info, var.show.rsplit("}", 1)[-1], 0.7)  # "{value}pt": "8 pt" names it
@@ -422,7 +425,8 @@ def own_concepts(info: VarInfo) -> set[str]:
 
 def own_stems(info: VarInfo) -> set[str]:
     words = name_words(info.name) + (name_words(info.var.label) if info.var.label else [])
-    return {stem(w) for w in words if w not in STOP_WORDS}
+    own = {stem(w) for w in words if w not in STOP_WORDS}
+    return own or {stem(w) for w in words if w in TIMED_STOPS and concept(w) in info.vocab}
 
 
 def doer_stems(info: VarInfo) -> set[str]:

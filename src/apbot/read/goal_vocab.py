@@ -171,7 +171,8 @@ _GROUPS: tuple[tuple[str, ...], ...] = (
     ("water", "litre", "litres", "liter", "liters", "fill"),
     ("warm", "warming", "keep"),
     ("clock", "clocks", "day"),
-    ("texture", "firmness"),
+    ("texture", "firmness", "thickness", "consistency"),
+    ("volume", "vol"),
     ("awake", "wake", "woken", "wakeup"),
     ("auto", "automatic", "automatically"),
     ("swing", "sweep", "oscillate", "oscillation", "oscillating"),
@@ -380,6 +381,16 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "closed": ("shut",),  # a door, a lid, a valve shut is closed
     "far": ("long", "longer", "longest", "further", "farther", "furthest", "farthest"),
     "near": ("short", "shorter", "shortest", "close", "closer", "closest", "nearest"),
+    # plain words for values panels print in their trade's word or initials
+    "violet": ("purple",),
+    "solar": ("sun", "sunshine", "sunlight"),
+    "bloom": ("flowering", "flower", "flowers", "blossom"),
+    "tuner": ("radio",),
+    "phono": ("turntable", "vinyl"),
+    "bt": ("bluetooth",),
+    "scissors": ("shears",),
+    "thick": ("coarse",),
+    "rear": ("posterior",),
 }
 # Counts written as adverbs ("rinse twice").
 TIMES_WORDS = {"once": 1, "twice": 2, "thrice": 3}
