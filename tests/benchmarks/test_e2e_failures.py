@@ -113,3 +113,20 @@ def test_a_claim_wrong_only_where_the_parser_was_wrong_is_the_parsers() -> None:
     causes = classify(belief, TRUTH, stored, {"mode": "dry"})
     wrong = wrong_settings(belief, TRUTH, stored, {"mode": "dry", "fan": "low"})
     assert first_cause(claim_causes(causes, wrong)) == "parser dropped"
+
+
+def test_a_dropped_setting_the_task_reached_anyway_is_no_cause_of_its_failure() -> None:
+    # the parse left out the fan, which ended as asked all the same; the mode it was given
+    # right ended wrong: the failure is the agent's, not the parser's
+    from benchmarks.e2e_failures import failure_causes
+
+    belief = _model("auto, dry, sleep")
+    stored = {"mode": "dry", "fan": "high"}
+    causes = classify(belief, TRUTH, stored, {"mode": "dry"})
+    assert first_cause(causes) == "parser dropped"
+    reached = wrong_settings(belief, TRUTH, stored, {"mode": "auto", "fan": "high"})
+    assert first_cause(failure_causes(causes, reached)) == "agent"
+    missed = wrong_settings(belief, TRUTH, stored, {"mode": "dry", "fan": "low"})
+    assert first_cause(failure_causes(causes, missed)) == "parser dropped"
+    extra = classify(belief, TRUTH, {"mode": "dry"}, {"mode": "dry", "fan": "low"})
+    assert first_cause(failure_causes(extra, set())) == "extra setting"
