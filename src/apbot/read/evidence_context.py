@@ -39,7 +39,7 @@ class ContextReader(OwnWords):
                     ):
                         break
                     if j > i and _next_row_named(units[i], units[j]):
-                        break  # "| Brightness | 0 – 100 % |" under "| CCT step | 100 K |": its own
+                        continue  # "| Brightness | 0 – 100 % |" under "| CCT step | 100 K |"
                     if j not in seen:
                         seen.append(j)
                     if re.search(r"\btable\b", units[j].text, re.I):
