@@ -41,7 +41,6 @@ from apbot.read.shapes import (
     UP_WORDS,
     Evidence,
     _aside,
-    comes_round,
     _cell_key,
     _fits,
     _keyish,
@@ -49,6 +48,7 @@ from apbot.read.shapes import (
     _numeric_items,
     _without,
     _without_advice,
+    comes_round,
     is_wait,
 )
 from apbot.read.shapes_columns import (
