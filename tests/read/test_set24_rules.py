@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from apbot.read import read_manual
 from apbot.read.actions import parse_actions
+from apbot.read.shown_bars import _counted, _levels
 from apbot.read.value_steps import find_step
 from apbot.read.values import find_ranges
 
@@ -106,3 +107,135 @@ Nebula F-3 fogger
 def test_a_state_chart_with_the_key_on_its_arrows_lists_the_values() -> None:
     model = read_manual(FOGGER, ["press_mode"]).model
     assert model.variables["mode"].values == ["hand", "auto", "remote"]
+
+
+def test_a_signed_range_with_its_plus_written_is_an_offset_either_way() -> None:
+    [found] = find_ranges("Press ▲ or ▼ to move it from −4 to +4 h.")
+    assert (found.low, found.high, found.unit) == (-4, 4, "h")
+    assert find_ranges("see pages 3-5") == [] or all(r.low >= 0 for r in find_ranges("pages 3-5"))
+
+
+# a clock whose keys are lettered in small letters, the arrows shared by two keys that open
+# them, and a key printed with the first of the units it cycles
+CLOCK = """
+Tempora RC-2 radio clock
+
+ KEYS
+
+   (a) °C/°F   changes the temperature unit
+   (b) hPa     steps the air-pressure unit
+   (c) SHIFT   opens the time shift
+   (d) HI      opens the heat warning limit
+   (e)(f) ▲ ▼  change the value that is open
+
+ Note: ▲ and ▼ only work after SHIFT or HI has been pressed. On their own they do nothing.
+
+ TEMPERATURE UNIT (°C / °F)
+
+ Press °C/°F to change between Celsius and Fahrenheit.
+
+ BAROMETER
+
+ Each press of hPa moves to the next unit:
+
+      hPa  →  inHg  →  mmHg  →  hPa …
+
+ TIME SHIFT
+
+  1. Press SHIFT.
+  2. Press ▲ or ▼, from −2 to +2 h. It stops at both ends.
+
+ HEAT WARNING
+
+  1. Press HI.
+  2. Press ▲ or ▼ to change it by 1 degree, from 25 to 40 °C.
+"""
+CLOCK_ACTIONS = [
+    "press_unit",
+    "press_pressure",
+    "press_shift",
+    "press_hi",
+    "press_up",
+    "press_down",
+]
+
+
+def test_small_lettered_legend_lines_name_keys_and_a_cycle_comes_round_to_the_key() -> None:
+    model = read_manual(CLOCK, CLOCK_ACTIONS).model
+    pressure = next(v for v in model.variables.values() if v.label == "hPa")
+    assert pressure.values == ["hpa", "inhg", "mmhg"]
+
+
+def test_a_pair_that_only_works_after_other_keys_serves_them_both() -> None:
+    model = read_manual(CLOCK, CLOCK_ACTIONS).model
+    data = model.model_dump(mode="json")
+    opened = {
+        steps[0]["actions"][0]: steps[1]["variable"]
+        for steps in data["features"].values()
+        if len(steps) == 2 and set(steps[1]["actions"]) == {"press_up", "press_down"}
+    }
+    assert set(opened) == {"press_shift", "press_hi"}, data["features"]
+    assert [list(r) for r in model.variables[opened["press_shift"]].ranges] == [[-2, 2, 1]]
+
+
+# a brush whose hold switches a timer shown by a sign, and whose level bar counts lamps
+BRUSH = """
+Purelle FB-2 face brush
+
+ PANEL
+
+   ①  bar: six lights; the number of lit lights is the level
+   ②  ⧗ lit = pause timer on
+
+ Press ⏻ to switch on or off.
+
+ MODES
+
+ Press MODE to go to the next mode:
+
+      SOFT  →  DEEP  →  SOFT …
+
+ LEVEL
+
+ Press + for a stronger and − for a gentler pulse. Every mode has its own number of
+ levels, and every mode keeps its own level:
+
+ | mode | levels available | level at delivery |
+ |------|------------------|-------------------|
+ | SOFT | 1 – 4            | 2                 |
+ | DEEP | 1 – 6            | 3                 |
+
+   ▮ ▯ ▯ ▯ ▯ ▯   level 1   the gentlest
+   ▮ ▮ ▮ ▯ ▯ ▯   level 3
+   ▮ ▮ ▮ ▮ ▮ ▮   level 6   DEEP only
+
+ PAUSE TIMER
+
+   Hold MODE for 2 seconds  →  the pause timer changes between on and off.
+"""
+BRUSH_ACTIONS = ["press_power", "press_mode", "hold_mode", "press_plus", "press_minus"]
+
+
+def test_a_hold_that_changes_a_timer_between_on_and_off_is_a_toggle_shown_by_its_sign() -> None:
+    model = read_manual(BRUSH, BRUSH_ACTIONS).model
+    timer = model.variables["pause_timer"]
+    assert timer.values == ["off", "on"]
+    assert timer.show == {"off": "", "on": "⧗"}
+    assert model.variables["mode"].values == ["soft", "deep"]
+
+
+def test_a_bar_that_counts_its_level_shows_every_level_of_every_mode() -> None:
+    printed = {"1": "▮▯▯▯▯▯", "3": "▮▮▮▯▯▯", "6": "▮▮▮▮▮▮"}
+    levels = ["1", "2", "3", "4", "5", "6"]
+    bars = _counted(printed, levels)
+    assert bars["2"] == "▮▮▯▯▯▯" and bars["5"] == "▮▮▮▮▮▯"
+    assert _counted({"1": "▮▯▯", "2": "▯▮▯", "3": "▯▯▮"}, ["1", "2", "3", "4"]) == {
+        "1": "▮▯▯",
+        "2": "▯▮▯",
+        "3": "▯▯▮",
+    }  # (a moving lamp counts nothing)
+    cased = {
+        "type": "numeric",
+        "cases": {"soft": {"ranges": [[1, 4, 1]]}, "deep": {"ranges": [[1, 6, 1]]}},
+    }
+    assert _levels(cased) == levels

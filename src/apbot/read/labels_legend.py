@@ -98,6 +98,7 @@ def _legend_line_names(manual: Manual, token_words: list[str], claimed: set[str]
             continue  # (a sign alone, "▶/", stays the sign the panel's other rules read)
         if m.group(1).upper() in claimed:
             continue
-        if all(_said(w, _words(m.group(2))) for w in token_words):
+        said = re.split(r"\s(?:\([A-Za-z]\)|[\u2460-\u2473])\s", m.group(2))[0]  # (its own)
+        if all(_said(w, _words(said)) for w in token_words):
             found.setdefault(m.group(1), unit.line)
     return found
