@@ -53,13 +53,6 @@ TIME_RANGE_RE = re.compile(rf"(?<![\d:])({_TIME}){_DASH}({_TIME})(?![\d:])")
 TIME_CHAIN_RE = re.compile(
     rf"(?<![\d:])(?P<run>{_TIME}(?P<sep>\s*[-–]\s*){_TIME}(?:(?P=sep){_TIME})+)(?![\d:])"
 )
-# a signed scale, below zero to above it with its plus sign written ("from −3 to +3 h", "-6 to
-# +6 semitones"): an offset either way; the written plus tells the minus from a dash
-SIGNED_RANGE_RE = re.compile(
-    rf"(?<![\w:.\d])([−-]\d+(?:[.,]\d+)?)\s*({UNIT})?\s*(?:to|…|\.\.\.|–|—)\s*\+(\d+(?:[.,]\d+)?)"
-    rf"\s*({UNIT})?(?![\w:])",
-    re.IGNORECASE,
-)
 UPTO_RE = re.compile(rf"\bup to\s+({NUM})\s*({UNIT})(?!\w)", re.IGNORECASE)
 STEP_RE = re.compile(
     rf"(?:in\s+({NUM})\s*-?\s*({UNIT})?\s*(?:steps|increments|stages|units)(?!\s+of\b)"
@@ -291,11 +284,6 @@ def _ranges(text: str) -> list[Range]:
         if unit == "":
             hi = further_top(text, m.end(), hi)  # "1 to 9, or 1 and then 0 for level 10"
         out.append(Range(lo, hi, unit))
-    for m in SIGNED_RANGE_RE.finditer(text):  # "from −3 to +3 h", "-6 to +6": an offset's
-        lo, hi = number(m.group(1).replace("−", "-")), number(m.group(3))
-        unit = unit_name(m.group(4) or m.group(2))
-        if lo is not None and hi is not None and lo < 0 < hi:
-            out.append(Range(lo, hi, unit))
     for m in UPTO_RE.finditer(text):
         hi = number(m.group(1))
         if hi:
