@@ -55,6 +55,11 @@ class ActionInfo:
 _DURATION = re.compile(r"_\d{1,2}_?(?:s|sec|secs|seconds?)$")
 
 
+# a way only a turn goes, said last with no verb ("bright_cw", "cct_ccw", "dial_clockwise"):
+# up / down / left / right also name keys, so they make no turn on their own
+_TURN_WAY = re.compile(r".+_(?:cw|ccw|clockwise|(?:anti|counter)_?clockwise)$")
+
+
 def _split_verb(name: str) -> tuple[str, str]:
     """(verb, the rest) of an action name, the verb said first ("press_zone") or last
     ("zone_press", "zone_hold_3s", "knob_turn_cw"): environments name actions either way."""
@@ -74,6 +79,8 @@ def _split_verb(name: str) -> tuple[str, str]:
         turned = re.fullmatch(rf"(.+)_{verb}(?:_({ways}))?", core)
         if turned:
             return verb, "_".join(p for p in turned.groups() if p)
+    if _TURN_WAY.search(core):  # "volume_cw", "dial_anticlockwise": only a turn goes that way
+        return "turn", core
     return "", core
 
 

@@ -22,7 +22,7 @@ from apbot.read.shapes_columns import (
     _dedupe,
 )
 from apbot.read.shown import shown_words
-from apbot.read.symbol_lamps import symbol_lamp, word_lamp
+from apbot.read.symbol_lamps import lit_sign, symbol_lamp, word_lamp
 from apbot.read.text import Manual
 from apbot.read.value_spans import expand_spans
 
@@ -127,6 +127,16 @@ class BuilderBase(EvidenceReader):
             if lit[1]:
                 self.variables[name]["initial"] = "on"
                 self.note(f"variables.{name}.initial", "on as delivered", lit[2])
+            return name
+        near = self.manual.units[at].line if at is not None else None
+        sign = lit_sign(self.manual.glyph_lines, name.replace("_", " "), near)
+        if sign is not None:  # "◷ lit = zone timer on": the sign lit while it is on
+            self.variables[name]["show"] = {"off": "", "on": sign[0]}
+            what = f"the {sign[0]} lamp is lit while on"
+            quote = self.manual.glyph_lines[sign[2] - 1].strip()[:160]
+            self.notes.append(Note(f"variables.{name}.show", what, sign[2], quote))
+            if sign[1]:
+                self.variables[name]["initial"] = "on"
             return name
         lamp = self.lamp_unit(label)
         if lamp is not None:  # only a lamp the manual names: a wrong lamp misleads the reading

@@ -48,6 +48,7 @@ from apbot.read.shapes import (
     _numeric_items,
     _without,
     _without_advice,
+    comes_round,
     is_wait,
 )
 from apbot.read.shapes_columns import (
@@ -175,8 +176,14 @@ class EvidenceReader(ValueChooser, RangeReader, AnywhereReader):
             for items, prio in lists:
                 if _keyish(items, others, own, text) or _foreign_units(items, tokens):
                     continue  # a list of keys ("DELAY, then + / −"), not of values
-                if len(items) >= 3 and any(v.upper().strip(" .") in own for v in items):
+                if (
+                    len(items) >= 3
+                    and any(v.upper().strip(" .") in own for v in items)
+                    and not (items[0].upper().strip(" .") in own and comes_round(items, text))
+                ):
                     continue  # "NORMAL → CONT. → FAN" near FAN: a list with a mode named FAN
+                    # (a key printed with its first value, the list coming round to it, is
+                    # that list's key: "hPa → inHg → mmHg → hPa" for the hPa key)
                 lamps = LAMP_LIST_RE.match(text)
                 if lamps and not set(words(lamps.group(0))) & {
                     w for t in tokens for w in words(t.replace("_", " "))

@@ -16,7 +16,7 @@ from apbot.read.shapes import (
     Evidence,
     _same_word,
 )
-from apbot.read.text import Manual
+from apbot.read.text import Manual, Unit
 
 
 class ContextReader(OwnWords):
@@ -38,6 +38,8 @@ class ContextReader(OwnWords):
                         units[j].heading != units[i].heading or units[j].text == units[j].heading
                     ):
                         break
+                    if j > i and _next_row_named(units[i], units[j]):
+                        continue  # "| Brightness | 0 – 100 % |" under "| CCT step | 100 K |"
                     if j not in seen:
                         seen.append(j)
                     if re.search(r"\btable\b", units[j].text, re.I):
@@ -196,3 +198,17 @@ def marked_start(value: str, text: str) -> bool:
         return False  # (most texts: no pattern to build for them)
     unit = r"(?:\s*(?:%|°\s?[CF]?|[a-zA-Z]{1,3}\b))?"
     return bool(re.search(rf"(?<![\w.]){re.escape(value)}{unit}\s*{_MARKED_START}", text))
+
+
+def _next_row_named(row: Unit, nxt: Unit) -> bool:
+    """A later row of the same table (a specification table's) whose lead cell names a thing of
+    its own: its figures are that thing's, not those of the control the row above names. A row
+    with an empty lead cell goes on the row above, and stays in its context."""
+    return bool(
+        row.cells
+        and nxt.cells
+        and nxt.header == row.header
+        and row.header
+        and nxt.cells[0].strip()
+        and nxt.cells[0].strip() != row.cells[0].strip()
+    )

@@ -128,6 +128,8 @@ class TableReader:
                     return chart
                 if any(re.search(r"\d", c) for c in unit.cells[1:]):
                     continue  # "Power supply | 230 V": a row of data read as a header
+                if re.search(r"\d:\d\d", unit.cells[0]):
+                    continue  # "12:45   ((•))  ZONE | …": a drawn display showing a time
                 hw = words(unit.cells[0])
                 if choice and set(hw) & set(GROUP_NOUNS):
                     sideways = sideways_choices(units, i)

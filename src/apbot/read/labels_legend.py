@@ -75,6 +75,30 @@ def legend_name(
             continue
         if all(_said(w, said) for w in token_words):
             found.setdefault(name, unit.line)
+    if not found:
+        found = _legend_line_names(manual, token_words, claimed)
     if len(found) != 1:
         return None
     return next(iter(found.items()))
+
+
+# a legend's item set as a line, not a table: the printed name, a gap, what it does ("hPa
+# steps the air-pressure unit" after its mark "(b)"); the name is printed (a capital in it),
+# at most two short words
+_LEGEND_LINE = re.compile(r"^(\S{1,10}(?: \S{1,10})?)\s{2,}(\S.*)$")
+
+
+def _legend_line_names(manual: Manual, token_words: list[str], claimed: set[str]) -> dict[str, int]:
+    """The names of legend lines whose description holds every word of the action (the line
+    form of the key table's row that :func:`legend_name` reads)."""
+    found: dict[str, int] = {}
+    for unit in manual.units:
+        m = _LEGEND_LINE.match(unit.text) if unit.bullet and not unit.cells else None
+        if m is None or not re.search(r"[A-Z]", m.group(1)):
+            continue  # (a sign alone, "▶/", stays the sign the panel's other rules read)
+        if m.group(1).upper() in claimed:
+            continue
+        said = re.split(r"\s(?:\([A-Za-z]\)|[\u2460-\u2473])\s", m.group(2))[0]  # (its own)
+        if all(_said(w, _words(said)) for w in token_words):
+            found.setdefault(m.group(1), unit.line)
+    return found

@@ -205,15 +205,17 @@ def assign(b: Builder) -> None:
         held_list = held_section_list(b, key)
         if held_list:  # "Automatic switch-off: 30 min → 60 min → …" where HAIR TYPE is only held
             ev = evidence[key.name] = replace(ev, values=held_list[0], values_at=held_list[1])
+        switched = held_switch(b, key)  # "hold 3 s to switch the sound off"
         if (
             not held_list
             and key.skill == "hold"
             and set(words(hold_use(b, key))) & TIME_WORDS
             and (shared_pair or digits or generic_dials)
+            and switched is None  # ("… the zone timer changes between on and off": switched)
         ):
             entry_keys.append(key)  # "rear timer (touch and hold)", then + / −
             continue
-        if (switched := held_switch(b, key)) is not None:  # "hold 3 s to switch the sound off"
+        if switched is not None:
             var = b.add_toggle(name, switched[0].upper(), switched[1])  # not the key's name
             b.feature(var, [{"actions": [key.name], "variable": var, "effect": "toggle"}])
             continue

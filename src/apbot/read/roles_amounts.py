@@ -25,7 +25,7 @@ from apbot.read.roles_common import (
 from apbot.read.roles_confirm import ends_entry
 from apbot.read.roles_lists import dial_amount, dial_list, list_evidence
 from apbot.read.roles_numbered import numbered_entry
-from apbot.read.roles_pairafter import pair_follows
+from apbot.read.roles_pairafter import pair_follows, pair_serves_only
 from apbot.read.roles_pushed import pushed_dials
 from apbot.read.roles_raised import (
     alone_range,
@@ -92,6 +92,7 @@ def assign_amounts(
         names = [set(words(var_name(b, k))) for k in entry_keys]
         direct_nouns = {"temperature", "humidity", "volume", "weight", "speed"}  # set alone
         own_pair = pair_noun in direct_nouns and not _named_by(names, [pair_noun])
+        own_pair = own_pair and not pair_serves_only(b, pair_tokens)
         if not own_pair and raised is not None:
             # the pair's legend says what it raises ("Raise / lower the heat level"), and no
             # entry key's name or own sentence names it (TIMER "sets the delay" while + "raises

@@ -142,9 +142,17 @@ def held_switch(b: Builder, key: ActionInfo) -> tuple[str, int] | None:
         r"(?:\s+on\s+(?:and|or)\s+off\b|(?:\s+(?:on|off)\b)?\s*(?:[.;,(]|$))",
         re.IGNORECASE,
     )
+    # "Hold MODE for 2 seconds → the zone timer changes between on and off"
+    changes = re.compile(
+        rf"^\W*(?:(?:press|touch|push)\s+and\s+)?hold\s+{label}\s+for\s+[^.:→]{{1,20}}(?:→|:)\s*"
+        r"(?:the\s+)?([a-z][a-z -]{2,30}?)\s+(?:changes|switches|toggles)\s+"
+        r"between\s+on\s+and\s+off\b",
+        re.IGNORECASE,
+    )
     for i in b.labels[key.controls[0]].mentions:
         after = units[i + 1].text if i + 1 < len(units) else ""
-        for at, said in ((i, HOLD_TO_SWITCH_RE.search(units[i].text)),
+        for at, said in ((i, changes.search(units[i].text)),
+                         (i, HOLD_TO_SWITCH_RE.search(units[i].text)),
                          (i + 1, HOLD_TO_SWITCH_RE.match(after)),
                          (i, holding.search(units[i].text)),
                          (i, HELD_CLAUSE_SWITCH_RE.search(units[i].text)),

@@ -23,6 +23,11 @@ _DELIVERED_ON_RE = re.compile(
     r"|\b(?:is|are) (?:switched|turned) on (?:when|as) (?:it|they) leaves? the factory\b",
     re.I,
 )
+# examples that start from the factory settings with the appliance on ("Examples (starting
+# from the factory settings, switched on)"): where the examples start, not how it is delivered
+_EXAMPLES_FROM_RE = re.compile(
+    r"\b(?:start(?:s|ing)?|begin(?:s|ning)?)\s+(?:from|at|with)\s+the\s+factory\b", re.I
+)
 
 
 def assign_power(b: Builder) -> list[str]:
@@ -98,7 +103,12 @@ def assign_power(b: Builder) -> list[str]:
     if var:
         b.indicators.remove(var) if var in b.indicators else None
         delivered = next(
-            (i for i, u in enumerate(b.manual.units) if _DELIVERED_ON_RE.search(u.text)), None
+            (
+                i
+                for i, u in enumerate(b.manual.units)
+                if _DELIVERED_ON_RE.search(u.text) and not _EXAMPLES_FROM_RE.search(u.text)
+            ),
+            None,
         )
         if delivered is not None:  # "leaves the factory: mode COMF, …, heater switched on"
             b.variables[var]["initial"] = "on"

@@ -115,6 +115,11 @@ _START_STOP = re.compile(
 )
 
 
+# the key held before, called "it" in the next clause: "Hold ⏻ for 2 s to switch on; hold it
+# again to switch off"
+_HOLD_IT = re.compile(r"\bhold(?:\s+down)?\s+it\b", re.IGNORECASE)
+
+
 def _held_clauses(b: Builder, info: ActionInfo) -> list[tuple[int, str]]:
     """The clauses that hold this one key, with their unit: in the key's own legend row a
     clause led by holding ("SELECT dial | Turn: …. Press: …. Press and hold 2 seconds: start or
@@ -150,9 +155,12 @@ def _held_clauses(b: Builder, info: ActionInfo) -> list[tuple[int, str]]:
                 said.append((k, units[k].text))
         held = set(hold_cells(unit)) if own_row else set()  # under "Press and hold"
         for at, text in said:
+            last = False  # the clause before held this key: "hold it again" holds it too
             for clause in re.split(r"(?<=[.!?;])\s+|\s+\|\s+", text):
                 holding = bool(_HOLDING.search(clause)) or clause.strip() in held
-                if ((own_row or own_line) and holding) or this.search(clause):
+                again = last and bool(_HOLD_IT.search(clause))
+                last = ((own_row or own_line) and holding) or bool(this.search(clause)) or again
+                if last:
                     out.append((at, clause))
     return out
 

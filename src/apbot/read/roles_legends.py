@@ -61,8 +61,16 @@ def _hold_row(b: Builder, key: ActionInfo, at: int | None) -> bool:
         return False
     label = re.escape(b.labels[control].text)
     held = re.compile(rf"^\W*{label}\s*\(?\s*(?:(?:press|touch|push)\s+and\s+)?hold", re.I)
+    # "Hold MODE for 2 seconds → the zone timer changes between on and off": the hold's line
+    holds_key = re.compile(
+        rf"^\W*(?:(?:press|touch|push)\s+and\s+)?hold\s+{label}\s+for\s+\d", re.I
+    )
     text = b.manual.units[at].text
-    return bool(held.match(text)) or _hold_cell(b.manual.units[at]) or _held_clause(text)
+    return (
+        bool(held.match(text) or holds_key.match(text))
+        or _hold_cell(b.manual.units[at])
+        or _held_clause(text)
+    )
 
 
 # "… Touch and hold 3 seconds: …", "Hold for 2 s to …", "Held 3 seconds: …": where a legend

@@ -71,3 +71,21 @@ def lists_own(b: Builder, key: ActionInfo, values_at: int | None) -> bool:
     if values_at is None:
         return False
     return values_at in set(mentions_of(b, key.controls[0]))
+
+
+# the pair has no setting of its own: "▲ and ▼ only work after ALERT or ZONE …", "On their own
+# they do nothing", "do nothing by themselves"
+_SERVES_ONLY_RE = re.compile(
+    r"\bonly\s+work\w*\s+(?:after|once|when)\b"
+    r"|\bon\s+(?:their|its)\s+own,?\s+(?:they|it)\s+(?:do|does)\s+nothing\b"
+    r"|\b(?:do|does)\s+nothing\s+(?:on\s+(?:their|its)\s+own|by\s+(?:themselves|itself))\b",
+    re.IGNORECASE,
+)
+
+
+def pair_serves_only(b: Builder, pair: list[str]) -> bool:
+    """The manual says the pair works only after another key, doing nothing on its own: it
+    sets no quantity of its own, whatever its sentences' ranges are named for."""
+    units = b.manual.units
+    said = {i for t in pair for i in mentions_of(b, t)}
+    return any(_SERVES_ONLY_RE.search(units[i].text) for i in said)

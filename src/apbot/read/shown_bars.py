@@ -58,6 +58,8 @@ def read_bar_shows(b: Builder) -> None:
             continue  # the bars of another setting of the same values
         if spec["type"] == "numeric":  # "▮▯▯▯▯ 20 %  ▮▮▯▯▯ 40 % …": a few levels, each a bar
             if len(bars) < len(values):
+                bars = _counted(bars, values)  # "▮▮▯▯ level 2": level n is n lamps lit
+            if len(bars) < len(values):
                 continue
             _as_levels(spec, values)
         spec["show"] = {v: bars[v] for v in values if v in bars}
@@ -118,8 +120,37 @@ def _named_near(lines: list[str], var: str, bars: dict[str, str], at: int) -> bo
     return any(own & set(words(ln)) for ln in near)
 
 
+def _counted(bars: dict[str, str], values: list[str]) -> dict[str, str]:
+    """Bars that count their level (level n: n lamps lit, the rest dark, all bars one length),
+    printed for some levels only ("level 1", "level 4", "level 8"): every level's bar, by the
+    same count; the bars as they are when they do not count so."""
+    if not bars:
+        return bars
+    first = next(iter(bars.values()))
+    lit, dark, length = first[0], "", len(first)
+    for v, bar in bars.items():
+        n = int(v) if v.isdigit() else -1
+        if not 0 < n <= length or bar != lit * n + bar[n:] or len(set(bar[n:])) > 1:
+            return bars
+        dark = dark or bar[n : n + 1]
+    if len(bars) < 3 or not dark or dark == lit:
+        return bars
+    if not all(v.isdigit() and 0 < int(v) <= length for v in values):
+        return bars
+    return {v: lit * int(v) + dark * (length - int(v)) for v in values}
+
+
 def _levels(spec: dict[str, Any]) -> list[str]:
-    """A numeric setting's few values, when it has one stepped range (20–100 % by 20)."""
+    """A numeric setting's few values, when it has one stepped range (20–100 % by 20); with a
+    range per case ("1 – 8" in CLEANSE, "1 – 4" in SENSITIVE), every case's levels."""
+    if spec.get("type") == "numeric" and spec.get("cases") and not spec.get("ranges"):
+        found: list[str] = []
+        for case in spec["cases"].values():
+            own = _levels({"type": "numeric", "ranges": case.get("ranges") or []})
+            if not own:
+                return []
+            found += [v for v in own if v not in found]
+        return sorted(found, key=float) if len(found) <= 12 else []
     ranges = spec.get("ranges") or []
     if spec.get("type") != "numeric" or not ranges or spec.get("cases"):
         return []
@@ -138,6 +169,13 @@ def _as_levels(spec: dict[str, Any], values: list[str]) -> None:
         spec.pop(key, None)
     spec["type"] = "discrete"
     spec["values"] = values
+    for case in (spec.get("cases") or {}).values():  # each case its own levels
+        own = _levels({"type": "numeric", "ranges": case.pop("ranges", None) or []})
+        case["values"] = own or values
+        if "initial" in case and isinstance(case["initial"], float | int):
+            case["initial"] = f"{case['initial']:g}"
+    if spec.get("cases"):
+        spec.pop("values")  # (the cases hold the domains)
     if "initial" in spec:
         spec["initial"] = (
             f"{spec['initial']:g}" if isinstance(spec["initial"], float | int) else spec["initial"]

@@ -54,3 +54,35 @@ def word_lamp(units: Sequence[Unit], name: str) -> tuple[str, bool, int] | None:
         if m and m.group("word").isupper() and m.group("word").lower().startswith(name[:4]):
             return m.group("word"), bool(m.group("start")), i
     return None
+
+
+# "◷ lit = zone timer on", "✱ lit: on (factory setting)": a sign whose lamp lit means the
+# setting is on, with the setting named or said right under its own heading; a bracket after
+# "on" that says it starts so
+_LIT_MEANS = (
+    r"(?:^|\s)(?P<glyph>[^\w\s()\[\]{{}}.,;:!?'\"/\\|*=·-]{{1,2}})\s+lit\s*[=:]\s*"
+    r"(?:the\s+)?(?P<name>{name}\s+)?on\b"
+    r"(?P<start>\s*\(\s*(?:[^)]*\b(?:factory|delivery|default)\b)[^)]*\))?"
+)
+
+
+def lit_sign(lines: Sequence[str], name: str, near: int | None) -> tuple[str, bool, int] | None:
+    """The sign whose lamp is lit while the setting is on (``lines`` are the raw lines, signs
+    kept), whether the manual says it starts on, and its line: the setting named after the
+    "=" anywhere, or not named on a line at most two after ``near`` (the setting's own line)."""
+    if not re.fullmatch(r"[a-z][a-z ]{2,30}", name):
+        return None
+    noun = r"\s+".join(re.escape(w) for w in name.split())
+    pattern = re.compile(
+        _LIT_MEANS.replace("{name}", noun).replace("{{", "{").replace("}}", "}"), re.I
+    )
+    found: list[tuple[str, bool, int]] = []
+    for n, line in enumerate(lines, start=1):
+        for m in pattern.finditer(line):
+            if m.group("glyph") in NOT_GLYPHS:
+                continue
+            if m.group("name") or (near is not None and 0 <= n - near <= 2):
+                found.append((m.group("glyph"), bool(m.group("start")), n))
+    if not found or len({g for g, _, _ in found}) > 1:
+        return None  # (two signs for one setting: neither is sure)
+    return found[0][0], any(start for _, start, _ in found), found[0][2]

@@ -43,7 +43,8 @@ _CALLOUTS_RE = re.compile(r"[①-⑳❶-❿➀-➉]")
 # ... and so does a step written out: "Step 2  Touch SET." ("Step 2:", "STEP 2.")
 _BULLET_RE = re.compile(
     rf"^\s*(?:[{re.escape(_BULLETS)}]|\d{{1,2}}[.)]|\(\d{{1,2}}\)|[①-⑳❶-❿➀-➉]"
-    r"|\([A-Z]\)(?=\s+(?:[A-Z]{2}|[^\w\s]))"
+    # (a small letter too, and two together for a pair of keys: "(a) °C/°F …", "(f)(g) ▲ ▼ …")
+    r"|\([A-Za-z]\)(?:\([A-Za-z]\))*(?=\s+(?:[A-Z]{2}|[^\w\s]|[a-z]{1,3}[A-Z]|\S{1,8}\s{2}))"
     r"|(?:Step|STEP)\s+\d{1,2}\s*[:.)]?)\s+"
 )
 _NUMBERED_RE = re.compile(r"^\s*(?:(?:Step|STEP)\s+)?(\d{1,2})(?:[.)]|(?<=\d)\s*:|(?=\s))\s+")

@@ -15,7 +15,11 @@ from apbot.read.values import UNIT
 
 # an arrow, typed or drawn with a line before its head ("0 ──► 15 ──► 30 min", "--►" once box
 # characters are cleaned); a head alone ("touch ►") is a key
-_ARROW = re.compile(r"\s*(?:→|->|⇒|>|»|›|⟶|[─━—–-]+\s*►)\s*")  # ("40° › 55°": a single guillemet)
+# (also with the key that makes the step written on its line, as a state chart draws it:
+# "MAN ──MODE──► TIMER")
+_ARROW = re.compile(  # ("40° › 55°": a single guillemet)
+    r"\s*(?:[─━—–-]+\s*[A-Z][A-Z0-9+]{0,11}\s*[─━—–-]+\s*►|→|->|⇒|>|»|›|⟶|[─━—–-]+\s*►)\s*"
+)
 
 
 # "Touch: DRY <-> MOIST", "75 ◄► 80 ◄► 100": a key that flips between two values, or a pair

@@ -55,6 +55,13 @@ _TAP_MOVES_RE = re.compile(
     rf"(?:up|down|higher|lower|forwards?|backwards?|in|out)\b",
     re.I,
 )
+# "each click = 1 %", "one press: 5 °C": a click or press equated with its amount, as a legend
+# or a chart of step sizes writes it
+_CLICK_EQUALS_RE = re.compile(
+    rf"\b(?:each|every|one|per)\s+(?:press|click|turn|touch|detent|step|tap|notch)\s*[=:]\s*"
+    rf"({NUM})\s*({UNIT})(?!\w)",
+    re.I,
+)
 _HELD_RE = re.compile(
     r"\b(?:hold|held|holding|keep|fast|faster|quick|quickly|rapid)\b|\d\s*s\b", re.I
 )
@@ -88,6 +95,9 @@ def find_step(text: str) -> tuple[float, str] | None:
         tapped = None if _HELD_RE.search(text) else _TAP_MOVES_RE.search(text)
         if tapped and (value := number(tapped.group(1))):
             return value, unit_name(tapped.group(2))
+        equals = _CLICK_EQUALS_RE.search(text)
+        if equals and (value := number(equals.group(1))):
+            return value, unit_name(equals.group(2))
         return None
     groups = m.groups()
     if m.group(0).lower().endswith(("units", "stages")) and not groups[1]:

@@ -25,7 +25,10 @@ NUM = (
 )
 UNIT = (
     r"(?:%|°\s?[CF]|°|degrees?|min(?:ute)?s?|h(?:ou)?rs?|hours?|h|sec(?:ond)?s?|s|rpm|W|watts?"
-    r"|kg|lbs?|oz|g|ml|L|litres?|cups?|mm|cm|(?:milli|centi)met(?:re|er)s?)"
+    r"|kg|lbs?|oz|g|ml|L|litres?|cups?|mm|cm|(?:milli|centi)met(?:re|er)s?"
+    # a light's colour temperature ("3200 K", "2700 kelvin"); the capital only, since "k" after
+    # a figure is as often a thousand ("10k")
+    r"|(?-i:K)|kelvins?)"
 )
 _TIME = r"\d{1,2}:\d{2}"
 _DASH = r"\s*(?:–|—|-|to|and|~|until)\s*"
@@ -85,6 +88,8 @@ def unit_name(text: str | None) -> str:
         return "°C"
     if low == "°f":
         return "°F"
+    if t == "K" or low in ("kelvin", "kelvins"):
+        return "K"
     info = unit_of(low)
     if info and info[0] == "time":
         return {1: "s", 60: "min", 3600: "h"}[int(info[1])]
@@ -152,6 +157,15 @@ _ASIDE_RE = re.compile(  # "1 (barely warm)": words in brackets, no number and n
 )
 
 
+# "from 3200 K (warm, like tungsten or halogen lamps) to 5600 K": between a "from" amount and
+# its "to", an aside of any words (a gloss of the low end) stays an aside, however long
+_FROM_ASIDE_RE = re.compile(
+    rf"(\bfrom\s+\d+(?:[.,]\d+)?)(\s*(?:{UNIT})(?!\w))?\s*\((?!\s*{UNIT}\s*\))[^()\d]{{3,60}}\)"
+    rf"(?=\s*to\s+\d)",
+    re.IGNORECASE,
+)
+
+
 # "5 min … 30 min", "80 … 200 °C": an ellipsis between two lone amounts spans a range; in a
 # list ("10, 15, 20 … 60", "0:35, 0:40 … 2:55") it stands for the items left out
 _ELLIPSIS_SPAN_RE = re.compile(
@@ -208,6 +222,7 @@ def find_ranges(text: str) -> list[Range]:
     bare = _ASIDE_RE.sub(
         lambda m: m[0] if minutes_and_seconds(text, m.start()) else m[1] or "", text
     )
+    bare = _FROM_ASIDE_RE.sub(lambda m: m[1] + (m[2] or ""), bare)
     return out + [r for r in _ranges(bare) if r not in out] if bare != text else out
 
 
