@@ -1,18 +1,18 @@
 """A sign the display lights for a setting's value, looked up in the manual's legend.
 
-Manuals explain their display's signs beside the value they stand for: a legend ("♫ bell ·
-♪ chirp · ∅ silenced"), a table row ("∅ | SILENT | no sound"), a list of states ("off → mild
-(lamp amber) → strong (lamp crimson)", "narrow (BEAM N)"), a sentence ("the star ✱ lights
-up: keep warm is on"). A reader that missed the legend leaves the belief printing the value's
-own word, and a walk of the setting's key then shows signs the belief cannot read (or reads as
+Manuals explain their display's signs beside the value they stand for: a legend ("♫ bell · ♪
+chirp · ∅ silenced"), a table row ("∅ | SILENT | no sound"), a list of states ("off → mild
+(lamp amber) → strong (lamp crimson)", "narrow (BEAM N)"), a sentence ("the star ✱ lights up:
+keep warm is on"). A reader that missed the legend leaves the belief printing the value's own
+word, and a walk of the setting's key then shows signs the belief cannot read (or reads as
 values it does not have: ``AMBER``, ``N``). The walk itself cannot say which sign is which
 value when the value it started from was a guess; the manual can. Each sign the walk showed is
-looked up where the manual prints it, and the value word nearest to it there (after it, or before the
-brackets it stands in) is its value; only a sign that names one value everywhere it names
-any, and only signs that name different values, are kept. For an on/off setting only a glyph
-(no letter or figure) counts, and only a line with the glyph, the setting's own name and "on"
-(and no "off") names "on" ("on" is said of too much to stand beside a word); a sign shown on
-one press and gone on the next leaves "off" printed as nothing.
+looked up where the manual prints it, and the value word nearest to it there (after it, or
+before the brackets it stands in) is its value; only a sign that names one value everywhere it
+names any, and only signs that name different values, are kept. For an on/off setting only a
+glyph (no letter or figure) counts, and only a line with the glyph, the setting's own name and
+"on" (and no "off") names "on" ("on" is said of too much to stand beside a word); a sign shown
+on one press and gone on the next leaves "off" printed as nothing.
 """
 
 from __future__ import annotations
