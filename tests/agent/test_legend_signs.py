@@ -94,3 +94,16 @@ def test_the_legend_names_the_value_beside_each_sign() -> None:
 def test_a_sign_the_manual_ties_to_two_values_is_left_alone() -> None:
     text = "♪ chirp: one note\nIn night mode ♪ means bell"
     assert legend(text, ["♪"], ["bell", "chirp"], ["TONE"]) == {}
+
+
+def test_a_value_of_several_words_counts_only_said_whole() -> None:
+    text = "Door: ⇐ back only · ⇒ front only · ✕ shut · ⇔ both ways"
+    values = ["both ways", "back only", "front only", "shut"]
+    assert legend(text, ["⇐", "⇒", "✕", "⇔"], values, ["DOOR"]) == {
+        "⇐": "back only",
+        "⇒": "front only",
+        "✕": "shut",
+        "⇔": "both ways",
+    }
+    # one text's parts are each a sign to look up ("⇒" lit beside a range lamp)
+    assert sorted(signs(["⇒  ▮▮"], set())) == sorted(["▮▮", "⇒"])

@@ -15,7 +15,7 @@ from typing import Any
 
 from apbot.agent.displays import DisplayLearner
 from apbot.agent.infer import Dark, Unread
-from apbot.agent.legend_walk import learn_legend
+from apbot.agent.legend_walk import learn_legend, read_sign
 from apbot.agent.perception import Seen
 from apbot.agent.quantities import summary
 from apbot.agent.renamed import by_own_parts, rename_walk, translate
@@ -145,6 +145,8 @@ class Explorer(WalkLearning):
         for value in walk:
             if isinstance(value, Unread):
                 read = self.displays.read(name, value.text)
+                if read is None:  # a lamp: shown beside another setting's screen
+                    read = read_sign(self.session, name, value.text)
                 value = value if read is None else read
             elif isinstance(value, str) and value in signs:
                 value = signs[value]

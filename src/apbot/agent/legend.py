@@ -29,12 +29,12 @@ _BEFORE = 2  # words back to the value a bracketed sign belongs to ("mild (lamp 
 
 
 def signs(texts: Iterable[str], known: set[str]) -> list[str]:
-    """The parts of ``texts`` that come and go between them (a glyph, a short word), the
-    belief's own words and anything with a figure left out."""
+    """The parts of ``texts`` that come and go between them (a glyph, a short word) — of one
+    text, each of its parts — the belief's own words and anything with a figure left out."""
     seen = [set(_TOKEN.findall(t)) for t in dict.fromkeys(texts)]
-    if len(seen) < 2:
+    if not seen:
         return []
-    common = set.intersection(*seen)
+    common = set.intersection(*seen) if len(seen) > 1 else set()  # one text: each of its parts
     found = sorted({p for parts in seen for p in parts} - common)
     return [p for p in found if not any(c.isdigit() for c in p) and p.casefold() not in known]
 
@@ -72,23 +72,48 @@ def _occurrences(sign: str, line: str) -> list[re.Match[str]]:
 
 
 def _nearest(line: str, match: re.Match[str], words: dict[str, Any]) -> str | None:
-    """The value word the sign at ``match`` stands for on ``line``: the one before the
-    brackets it stands in, else the first after it within a few words, else the one right
-    before it."""
+    """The value the sign at ``match`` stands for on ``line``: the one before the brackets
+    it stands in, else the first after it within a few words, else the one right before it.
+    A value of several words ("out only") counts only said whole."""
     before, after = line[: match.start()], line[match.end() :]
     opened = before.rfind("(")
     if opened > before.rfind(")"):  # "mild (lamp amber)": the bracket belongs to "mild"
-        back = _WORD.findall(before[:opened])[-_BEFORE:]
-        return next((_value(w, words) for w in reversed(back) if _value(w, words)), None)
-    for word in _WORD.findall(after)[:_REACH]:
-        if value := _value(word, words):
-            return value
-    back = _WORD.findall(before)[-1:]
-    return _value(back[0], words) if back else None
+        return _said(_tail(before[:opened], _BEFORE), words, last=True)
+    return _said(_head(after, _REACH), words) or _said(_tail(before, 1), words, last=True)
+
+
+def _head(text: str, count: int) -> str:
+    """``text`` up to the end of its ``count``-th word."""
+    ends = [m.end() for m in _WORD.finditer(text)][:count]
+    return text[: ends[-1]] if ends else ""
+
+
+def _tail(text: str, count: int) -> str:
+    """``text`` from the start of its ``count``-th word from the end."""
+    starts = [m.start() for m in _WORD.finditer(text)][-count:]
+    return text[starts[0] :] if starts else ""
+
+
+def _said(window: str, words: dict[str, Any], last: bool = False) -> str | None:
+    """The value said in ``window``, whole (the first, or the ``last``); a single word may be
+    said in a longer form ("silenced" for silence)."""
+    found: list[tuple[int, str]] = []
+    for value in words:
+        if not value.strip():
+            continue
+        for m in re.finditer(rf"(?<!\w){re.escape(value)}(?!\w)", window, re.IGNORECASE):
+            found.append((m.start(), value))
+    for m in _WORD.finditer(window):
+        if (value := _value(m.group(0), words)) is not None:
+            found.append((m.start(), value))
+    if not found:
+        return None
+    return max(found)[1] if last else min(found)[1]
 
 
 def _value(word: str, words: dict[str, Any]) -> str | None:
-    """The value ``word`` names: itself, or a longer form of it ("silenced" for silence)."""
+    """The single-word value ``word`` names: itself, or a longer form of it ("silenced" for
+    silence)."""
     folded = word.casefold()
     if folded in words:
         return folded

@@ -8,7 +8,8 @@ and the other learners would make the signs new values. The signs become the val
 words — printed alone or after the setting's label (``HEAT AMBER``), as a lamp on every screen
 or on the setting's own — in the first form that reads every text the walk showed back as the
 value its sign names; a value left with no sign, when exactly one is and a text showed none,
-is printed as nothing (a lamp gone). Once per setting.
+is printed as nothing (a lamp gone), and a text with no sign is then taken as that value's.
+Once per setting and set of signs: a walk that shows more signs later adds theirs.
 """
 
 from __future__ import annotations
@@ -50,21 +51,36 @@ def learn_legend(session: Session, name: str, walked: list[Any]) -> dict[str, An
         show.update(spec.show)
     show.update({str(value): sign for sign, value in mapping.items()})
     bare = [str(v) for v in domain if v not in mapping.values()]
-    if len(bare) == 1 and any(not any(s in t.split() for s in mapping) for t in texts):
+    signless = [t for t in texts if not any(s in t.split() for s in mapping)]
+    out = (  # unless the value's own word is there: "HOT" where the sign is for cold
+        len(bare) == 1
+        and bool(signless)
+        and not any(show[bare[0]].casefold() in t.casefold().split() for t in signless)
+    )
+    if out:
         show[bare[0]] = ""  # shown by no sign: the lamp is out
-    if not session.budget.once("template", f"legend:{name}"):
+    if not session.budget.once("template", f"legend:{name}:{sorted(mapping)}"):
         return None
     shown = texts + _walk_texts(session, len(walked) + 1)
     expected = [(t, v) for t in shown for s, v in mapping.items() if s in t.split()]
     context = session.belief.values()
-    for new in _forms(model, name, show, label, shown):
+    signed = {str(v) for v in mapping.values()}
+    for new in _forms(model, name, show, label, shown, signed):
         if all(_reads(new, name, t, v, context) for t, v in expected) and all(
-            _read(new, name, t, context) for t in texts
+            _read(new, name, t, context) or (out and t in signless) for t in texts
         ):
             words = ", ".join(f"{v} as {s!r}" for s, v in mapping.items())
             session.adopt(new, f"{name} is shown {words} (the manual's legend)", None)
             return mapping
     return None
+
+
+def read_sign(session: Session, name: str, text: str) -> Any:
+    """``name``'s value in ``text`` wherever the display shows it (a lamp beside another
+    setting's screen too), when every reading of the text agrees on one; else None."""
+    reading = session.perceiver.reader.read(text, session.belief.values())
+    found = {repr(v): v for h in reading.hypotheses if (v := h.value(name)) is not None}
+    return next(iter(found.values())) if len(found) == 1 else None
 
 
 def _strange(value: Any, domain: list[Any]) -> bool:
@@ -75,12 +91,17 @@ def _strange(value: Any, domain: list[Any]) -> bool:
 
 
 def _forms(
-    model: ApplianceModel, name: str, show: dict[str, str], label: str, texts: list[str]
+    model: ApplianceModel,
+    name: str,
+    show: dict[str, str],
+    label: str,
+    texts: list[str],
+    signed: set[str],
 ) -> list[Any]:
     """The repaired beliefs to try, most likely first: as a lamp on every screen, then on the
     setting's own screen; each sign after the label where the texts print them so (``HEAT
-    AMBER``), else alone first."""
-    labelled = {v: f"{label} {w}" if w else "" for v, w in show.items()}
+    AMBER``), else alone first; a value with no sign keeps its word."""
+    labelled = {v: f"{label} {w}" if v in signed else w for v, w in show.items()}
     beside = any(
         f"{label} {w}".casefold() in t.casefold() for t in texts for w in show.values() if w
     )
