@@ -37,8 +37,8 @@ def learn_legend(session: Session, name: str, walked: list[Any]) -> dict[str, An
     domain = session.domain_values(name)
     texts = [v.text for v in walked if isinstance(v, Unread)]
     strange = sorted({str(v) for v in walked if _strange(v, domain)})
-    if not texts and not strange:
-        return None
+    if (not texts and not strange) or any(_spells(s, domain) for s in strange):
+        return None  # a value's own word in a longer form ("continuous"): the walk renames it
     label = spec.display_label(name)
     known = printed_words(model) - {s.casefold() for s in strange}
     found = signs(texts, known) + [s for s in strange if not any(c.isdigit() for c in s)]
@@ -64,6 +64,9 @@ def learn_legend(session: Session, name: str, walked: list[Any]) -> dict[str, An
     shown = texts + _walk_texts(session, len(walked) + 1)
     expected = [(t, v) for t in shown for s, v in mapping.items() if s in t.split()]
     context = session.belief.values()
+    # what the belief read already must still read so ("MODE normal" beside a new sign)
+    kept = [(t, v) for t in shown if (v := _one_value(model, name, t, context)) is not None]
+    expected += [(t, v) for t, v in kept if str(v) not in mapping]
     signed = {str(v) for v in mapping.values()}
     for new in _forms(model, name, show, label, shown, signed):
         if all(_reads(new, name, t, v, context) for t, v in expected) and all(
@@ -83,6 +86,13 @@ def read_sign(session: Session, name: str, text: str) -> Any:
     return next(iter(found.values())) if len(found) == 1 else None
 
 
+def _spells(word: str, domain: list[Any]) -> bool:
+    """Whether ``word`` spells a value in full or in short ("continuous" for cont)."""
+    folded = word.casefold()
+    values = [str(v).casefold() for v in domain]
+    return any(len(v) >= 3 and (folded.startswith(v) or v.startswith(folded)) for v in values)
+
+
 def _strange(value: Any, domain: list[Any]) -> bool:
     """A value read on the walk that the setting lacks (a word, not a figure)."""
     if isinstance(value, Dark | Unread) or value in domain:
@@ -100,14 +110,15 @@ def _forms(
 ) -> list[Any]:
     """The repaired beliefs to try, most likely first: as a lamp on every screen, then on the
     setting's own screen; each sign after the label where the texts print them so (``HEAT
-    AMBER``), else alone first; a value with no sign keeps its word."""
+    AMBER``), else alone first; a value with no sign keeps its word, or has the label too."""
     labelled = {v: f"{label} {w}" if v in signed else w for v, w in show.items()}
+    every = {v: f"{label} {w}" if w else "" for v, w in show.items()}
     beside = any(
         f"{label} {w}".casefold() in t.casefold() for t in texts for w in show.values() if w
     )
     forms = []
     for lamp in (True, False):
-        for words in (labelled, show) if beside else (show, labelled):
+        for words in (labelled, every, show) if beside else (show, labelled, every):
             try:
                 new = set_display(model, name, words)
                 forms.append(add_indicator(new, name) if lamp else new)
@@ -121,6 +132,13 @@ def _walk_texts(session: Session, presses: int) -> list[str]:
     before it that brought the setting up)."""
     shown = [e.display for e in session.episode.trace if e.kind == "action" and e.display]
     return shown[-presses:]
+
+
+def _one_value(model: ApplianceModel, name: str, text: str, context: Any) -> Any:
+    """The one value of ``name`` ``model`` reads in ``text`` (None: none, or several)."""
+    reading = DisplayReader(model).read(text, context)
+    found = {repr(v): v for h in reading.hypotheses if (v := h.value(name)) is not None}
+    return next(iter(found.values())) if len(found) == 1 else None
 
 
 def _read(model: ApplianceModel, name: str, text: str, context: Any) -> bool:
