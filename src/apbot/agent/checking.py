@@ -17,8 +17,6 @@ from apbot.agent.displays import DisplayLearner
 from apbot.agent.ends import stopped_at_end
 from apbot.agent.explorer import Explorer
 from apbot.agent.guards import GuardLearner
-from apbot.agent.infer import Unread
-from apbot.agent.legend_walk import learn_legend, read_sign
 from apbot.agent.merged import ProcedureSplitter
 from apbot.agent.misfiled import KeyMover
 from apbot.agent.mismatch import shown_otherwise, wrong_setting
@@ -163,8 +161,6 @@ class Checks:
                 continue
             if (switched := _latest_switch(name, presses)) and relit(session, switched):
                 return True  # an on/off lamp's word, from the look that switched it
-            if presses and self._by_legend(name, presses[-1].feedback.text):
-                return True  # the manual's legend names the sign shown for it
             if not self._learn_display(name, presses):
                 continue
             shown = self.displays.read(name, presses[-1].feedback.text)
@@ -178,20 +174,6 @@ class Checks:
                 session.contradicted[name] = shown
             return True
         return False
-
-    def _by_legend(self, name: str, text: str) -> bool:
-        """A goal setting shown by a sign the belief cannot read, which the manual's legend
-        names (:mod:`apbot.agent.legend_walk`): believe the value the sign stands for."""
-        session = self.session
-        if not learn_legend(session, name, [Unread(text)]):
-            return False
-        shown = read_sign(session, name, text)
-        session.unread.discard(name)
-        if shown is not None and not session.belief.set_value(name, shown):
-            session.contradicted[name] = shown
-        elif shown is not None:
-            session.evidence[name] = shown
-        return True
 
     def _look_at(self, outside: dict[str, Any]) -> bool:
         focused = {

@@ -104,8 +104,8 @@ def _said(window: str, words: dict[str, Any], last: bool = False) -> str | None:
         for m in re.finditer(rf"(?<!\w){re.escape(value)}(?!\w)", window, re.IGNORECASE):
             found.append((m.start(), value))
     for m in _WORD.finditer(window):
-        if (value := _value(m.group(0), words)) is not None:
-            found.append((m.start(), value))
+        if (longer := _value(m.group(0), words)) is not None:
+            found.append((m.start(), longer))
     if not found:
         return None
     return max(found)[1] if last else min(found)[1]

@@ -90,6 +90,8 @@ def _spells(word: str, domain: list[Any]) -> bool:
     """Whether ``word`` spells a value in full or in short ("continuous" for cont)."""
     folded = word.casefold()
     values = [str(v).casefold() for v in domain]
+    if len(folded) < 3:
+        return False  # a letter or two is a code ("W"), no spelling
     return any(len(v) >= 3 and (folded.startswith(v) or v.startswith(folded)) for v in values)
 
 
