@@ -129,3 +129,13 @@ def test_an_end_of_a_range_asked_in_words_must_be_placed() -> None:
     # said beside its figure, the number check answers for it; a request for no end is none
     assert unmet_extremes(belief, "Timer at 4 h, the longest I need", {"timer": "4 h"}) == []
     assert unmet_extremes(belief, "Timer 4 h, the best for the battery", {"timer": "4 h"}) == []
+
+
+def test_a_setting_named_by_two_capitals_left_out_of_the_goal_is_unread() -> None:
+    # a reclining chair with a preset called "PC" (reading at the computer)
+    chair = BREWER.replace("label: NIGHT LIGHT}", "label: PC}").replace("night_light", "pc")
+    model = model_from(chair)
+    assert unnamed_settings(model, "PC recline with a stout", {"mode": "stout"}) == ["pc"]
+    assert unnamed_settings(model, "PC recline with a stout", {"mode": "stout", "pc": "on"}) == []
+    # two small letters are a word ("go", "up"), not a name
+    assert unnamed_settings(model, "a stout, pc style", {"mode": "stout"}) == []

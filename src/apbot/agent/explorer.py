@@ -15,6 +15,7 @@ from typing import Any
 
 from apbot.agent.displays import DisplayLearner
 from apbot.agent.infer import Dark, Unread
+from apbot.agent.legend_walk import learn_legend, read_sign
 from apbot.agent.perception import Seen
 from apbot.agent.quantities import summary
 from apbot.agent.renamed import by_own_parts, rename_walk, translate
@@ -74,7 +75,14 @@ class Explorer(WalkLearning):
         renamed, learnt, every = False, None, False
         walked = [v for v in forward + (backward or []) if not isinstance(v, Dark)]
         unread_walk = bool(walked) and all(isinstance(v, Unread) for v in walked)
-        if not swapped:
+        if not swapped and (signs := learn_legend(self.session, name, forward + (backward or []))):
+            # the manual's legend names the signs the walk showed: read the walk again by it
+            forward, backward = (
+                self._by_legend(name, forward, signs),
+                (None if backward is None else self._by_legend(name, backward, signs)),
+            )
+            learnt = True
+        elif not swapped:
             # the belief's own words for the texts first (a template, one value's word); else
             # the walk may be the belief's own with values printed otherwise
             if any(isinstance(v, Unread) for v in forward + (backward or [])):
@@ -129,6 +137,21 @@ class Explorer(WalkLearning):
         return self.displays.learn_word(
             name, forward + (backward or []), believed, start_read
         ) or self.displays.learn(name, texts)
+
+    def _by_legend(self, name: str, walk: list[Any], signs: dict[str, Any]) -> list[Any]:
+        """The walk read again after the legend's signs were learnt: a value read as a sign
+        is the sign's value, a text is read by the repaired belief."""
+        result: list[Any] = []
+        for value in walk:
+            if isinstance(value, Unread):
+                read = self.displays.read(name, value.text)
+                if read is None:  # a lamp: shown beside another setting's screen
+                    read = read_sign(self.session, name, value.text)
+                value = value if read is None else read
+            elif isinstance(value, str) and value in signs:
+                value = signs[value]
+            result.append(value)
+        return result
 
     @staticmethod
     def _start_read(name: str, last: Executed) -> bool:

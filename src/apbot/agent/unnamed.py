@@ -6,8 +6,10 @@ parser drops such a part when it cannot place its value; the setting's name is s
 sentence. A word of the user's is counted as naming a setting the goal leaves out when
 
 - it is one of the words a setting's own name or label is made of (a belief's shortened name
-  counts: "recirculation" for RECIRC), and every other word of that name was said too (the
-  "light" of "UV light" does not name a NIGHT LIGHT);
+  counts: "recirculation" for RECIRC; two capitals count as a word: "TV" for a TV preset),
+  and every other word of that name was said too (the "light" of "UV light" does not name a
+  NIGHT LIGHT; a single letter of a name is said by a word it begins: "zero gravity" for
+  ZERO G);
 - no setting of the goal has it among its words or its values' words (the "water" of
   "extra water" names no other setting when EXTRA WATER is in the goal);
 - it is not part of a quantity the user said ("two days"), nor beside a word of the goal's own
@@ -22,6 +24,7 @@ food or the result to be a request of its own.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Collection, Mapping
 from typing import Any
 
@@ -32,6 +35,7 @@ from apbot.read.goal_vocab import HANDLING, NEGATIONS, STOP_WORDS, concept, stem
 from apbot.read.number_tokens import Token, tokenize
 from apbot.read.numbers import find_mentions
 
+_ACRONYM = re.compile(r"\b[A-Z]{2}\b")
 SHORTEST_NAME = 4  # a shortened name ("regen", "recirc") is at least this long
 _ROLES = ("setting", "switch")
 # words that set a setting aside rather than ask for it ("ignoring the humidity target",
@@ -55,10 +59,12 @@ def unnamed_settings(
     quantities = {k for m in find_mentions(tokens) for k in range(m.start, m.end)}
     said = {stem(t.text) for t in tokens if t.text.isalpha()}
     held = _goal_words(view, goal)
+    # two capitals are a name too ("TV position"), though too short for a word of it
+    acronyms = {w.casefold() for w in _ACRONYM.findall(instruction)} - STOP_WORDS
     found: list[str] = []
     for k, token in enumerate(tokens):
         word = token.text
-        if k in quantities or not _content(word):
+        if k in quantities or not (_content(word) or word in acronyms):
             continue
         key = concept(word)
         if _names(key, held) or key in view.appliance_words or kind_noun(key):
@@ -90,10 +96,15 @@ def _whole_name_said(info: VarInfo, said: set[str]) -> bool:
     """Every word of a setting's name (or of its label) was said, in its own or a longer
     form."""
     names = [info.name] + ([info.var.label] if info.var.label else [])
-    return any(
-        all(any(_names(s, {stem(w)}) for s in said) for w in name_words(n) if w not in STOP_WORDS)
-        for n in names
-    )
+    return any(all(_said(w, said) for w in name_words(n) if w not in STOP_WORDS) for n in names)
+
+
+def _said(word: str, said: set[str]) -> bool:
+    """A word of a name was said, in its own or a longer form; a single letter of a name
+    (the G of ZERO G) by a word it begins ("gravity")."""
+    if len(word) == 1:
+        return any(s.startswith(word.casefold()) for s in said)
+    return any(_names(s, {stem(word)}) for s in said)
 
 
 def _goal_words(view: Model, goal: Mapping[str, Any]) -> set[str]:
