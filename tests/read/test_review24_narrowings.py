@@ -1,7 +1,9 @@
 """Where drop24's goal-parser rules misfired on other models and other sentences: a start verb
 that is the first word of a setting's name ("Stitch length 3" starts no seam), a POWER or ⏻ key
-that switches a part of its own (a vacuum's BOOST is no power), and a charted one-touch key the
-sentence denies ("not the nap position"). Small models written for these tests."""
+that switches a part of its own (a vacuum's BOOST is no power), a charted one-touch key the
+sentence denies ("not the nap position"), and a bare number after the key verb HOLD said as a
+verb ("hold at 70 for 30 minutes": 70 is held, not the HOLD's length). Small models written for
+these tests."""
 
 from __future__ import annotations
 
@@ -101,3 +103,33 @@ def test_a_charted_key_the_sentence_denies_sets_nothing() -> None:
     assert _recliner("Not the nap position, just the heat on") == {"heat": "on"}
     assert _recliner("No nap today: back at 10") == {"back": 10}
     assert _recliner("The nap position, please")["legs"] == 20
+
+
+BATH = """
+appliance: {id: bath_1, category: sous_vide, name: "Bain S-3 sous-vide bath", brand: B}
+controls:
+  - {id: up_key, kind: button, label: "TEMP +"}
+  - {id: down_key, kind: button, label: "TEMP -"}
+  - {id: hold_key, kind: button, label: "HOLD"}
+variables:
+  temperature:
+    {type: numeric, unit: "°C", ranges: [[40, 95, 1]], initial: 60, wrap: false, show: "{value}"}
+  hold: {type: numeric, unit: min, ranges: [[0, 120, 10]], initial: 0, wrap: true, show: "H{value}"}
+actions:
+  press_up: {control: up_key}
+  press_down: {control: down_key}
+  press_hold: {control: hold_key}
+features:
+  temperature:
+    - actions: [press_up, press_down]
+      variable: temperature
+      effect: {press_up: next, press_down: prev}
+  hold:
+    - {actions: [press_hold], variable: hold, effect: next}
+"""
+
+
+def test_a_number_held_at_is_no_length_of_the_hold() -> None:
+    bath = loads_model(BATH)
+    assert parse_instruction(bath, "hold at 70 for 30 minutes") == {"temperature": 70, "hold": 30}
+    assert parse_instruction(bath, "Set the hold at 20") == {"hold": 20}
