@@ -10,6 +10,7 @@ from apbot.model.schema import NumericVariable, TimeVariable
 from apbot.model.values import format_hms, preview
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_fit import fit, number_for
+from apbot.read.goal_own_names import held_at
 from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab, repeat_for_a_length, said_before
 from apbot.read.goal_ties import own_key_depth
 from apbot.read.goal_unitless import unitless_duration, unitless_named
@@ -43,6 +44,8 @@ def assign_mentions(
             score = near_vocab(info, text, mention.start, mention.end)
             if score <= 0 and _a_state(info, text, mention):
                 continue  # "the tank is 50 % full": a percentage said of something else
+            if held_at(info, text, mention):
+                continue  # "hold at 70 for 30 minutes": 70 is held, the HOLD is 30 minutes
             if score < 0.5 and repeat_for_a_length(text, mention, info):
                 continue  # "cleaning every two hours": how often, not how long something lasts
             by = info.timing == "finish" and mention.kind == "clock" and mention.lead == "by"

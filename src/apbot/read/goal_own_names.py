@@ -15,7 +15,9 @@ from apbot.read.goal_values import name_words
 from apbot.read.goal_vocab import STOP_WORDS, concept
 
 if TYPE_CHECKING:
+    from apbot.read.goal_text import Text
     from apbot.read.goal_view import VarInfo
+    from apbot.read.numbers import Mention
 
 TIMED_STOPS = frozenset({"hold", "pause", "entry"})
 """Key verbs that are as often the name of a time: a HOLD at temperature, a PAUSE between
@@ -40,3 +42,22 @@ def add_timed_stops(info: VarInfo, text: str) -> None:
     for word in name_words(text):
         if word in TIMED_STOPS:
             info.vocab[concept(word)] = 1.0
+
+
+_ARTICLES = frozenset({"a", "an", "the", "its", "no", "your", "my", "this", "that"})
+
+
+def held_at(info: VarInfo, text: Text, mention: Mention) -> bool:
+    """ "hold at 70 for 30 minutes", "hold it at 62": a bare number after the key verb said as a
+    verb and "at" is the level held there, not the length of the HOLD the verb names (a noun
+    keeps it: "set the hold at 20")."""
+    k = mention.start - 1
+    if mention.kind != "number" or text.word(k) != "at":
+        return False
+    k -= 2 if text.word(k - 1) in ("it", "them") else 1
+    word = text.word(k)
+    return (
+        word in TIMED_STOPS
+        and info.vocab.get(concept(word), 0.0) > 0
+        and text.word(k - 1) not in _ARTICLES
+    )

@@ -85,6 +85,19 @@ def charted_presets(view: Model, said: str, goal: Goal) -> None:
                 goal[name] = value
 
 
+_DENIED = frozenset({"not", "no", "without", "never", "skip", "than", "don't", "dont"})
+
+
 def _named(words: tuple[str, ...], text: str) -> bool:
+    """The key is named and not denied: "not the nap position", "no nap today" ask for none of
+    its row (nor "rather than the TV one")."""
     parts = [rf"{w}[a-z]*" if len(w) == 1 else re.escape(w) for w in words]
-    return re.search(r"(?<![a-z0-9])" + r"\s+".join(parts) + r"(?![a-z0-9])", text) is not None
+    found = re.finditer(r"(?<![a-z0-9])" + r"\s+".join(parts) + r"(?![a-z0-9])", text)
+    return any(not _denied(text[: m.start()]) for m in found)
+
+
+def _denied(before: str) -> bool:
+    last = re.findall(r"[a-z']+", before)[-3:]
+    while last and last[-1] in ("the", "a", "an", "that", "this", "any"):
+        last.pop()
+    return bool(last) and last[-1] in _DENIED

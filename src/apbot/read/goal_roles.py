@@ -144,9 +144,23 @@ def _power_by_symbol(model: ApplianceModel, infos: dict[str, VarInfo]) -> None:
         and not _operation(n)
         and not infos[n].var.depends_on  # one zone's own switch
         and concept("lock") not in infos[n].vocab  # hold ⏻ to lock it for travel
+        and _named_as_power(n)  # a POWER key's BOOST, a ⏻ key's LIGHT: that part's switch
     ]
     if len(found) == 1:
         infos[found[0]].role = "power"
+
+
+_POWER_NAME_WORDS = frozenset(
+    {"power", "main", "hold", "on", "off", "onoff", "switch", "standby", "key", "button", "unit"}
+)
+
+
+def _named_as_power(name: str) -> bool:
+    """A switch whose name says nothing but power (``power_hold``, ``main_hold``) or the work
+    under way (``brushing``): one named for a part of its own (BOOST of a vacuum's POWER key,
+    LIGHT) is that part's switch, whatever symbol its key carries."""
+    words = name.casefold().split("_")
+    return doing_name(name) or all(w in _POWER_NAME_WORDS for w in words)
 
 
 def doing_name(name: str) -> bool:

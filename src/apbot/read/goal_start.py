@@ -4,6 +4,7 @@ with verbs ("switch it on") is goal_power_said's."""
 
 from __future__ import annotations
 
+from itertools import pairwise
 from typing import Any
 
 from apbot.model.domain import build_domain
@@ -78,6 +79,7 @@ def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = Fals
         _named_starts(view, text),
         settings=setting_words(view),
         names=setting_names(view),
+        compounds=_name_pairs(view),
     )
     if start is None and doing:
         start = _own_verb(text, doing[0])  # "… and print.", "don't print yet"
@@ -218,6 +220,7 @@ def _says_start(
     verbs: bool = True,
     settings: frozenset[str] = frozenset(),
     names: frozenset[str] = frozenset(),
+    compounds: frozenset[tuple[str, str]] = frozenset(),
 ) -> bool | None:
     """True for "start it", False for "don't start", None when the instruction says neither.
     ``verbs``: an instruction that opens with a doing verb ("Bake a cake") says start too —
@@ -308,6 +311,9 @@ def _says_start(
         after = text.stems[k2 + 1] if k2 + 1 < len(text.stems) else ""
         if verb != stem("run") and (text.word(k2 + 1) == "-" or after in _KIND_NOUNS):
             continue  # "Clean mode at pressure 8", "Warm-holding on": a name, not a doing
+        after_verb = text.stems[k2 + 1] if k2 + 1 < len(text.stems) else ""
+        if verb in _NOUNS_TOO and (text.word(k2 + 1) == ":" or (verb, after_verb) in compounds):
+            continue  # "Stitch length 3" of STITCH LENGTH, "Stitch: zigzag": a name, no order
         if verb in STRONG_VERBS:
             return True
         if verb == stem("get") and _made_ready(text, k2):
@@ -326,6 +332,23 @@ def _says_start(
 _KIND_NOUNS = frozenset(
     stem(w) for w in ("mode", "programme", "program", "setting", "cycle", "menu", "function")
 )
+
+
+def _name_pairs(view: Model) -> frozenset[tuple[str, str]]:
+    """Each two words that stand together in a setting's name or label (STITCH LENGTH)."""
+    pairs = set()
+    for info in view.infos.values():
+        for said in (info.name.replace("_", " "), info.var.label or ""):
+            stems = [stem(t.text) for t in tokenize(said.casefold())]
+            pairs |= set(pairwise(stems))
+    return frozenset(pairs)
+
+
+_NOUNS_TOO = frozenset(
+    stem(w) for w in ("play", "stitch", "sew", "embroider", "sharpen", "laminate")
+)
+"""Orders of the work that are as often the first word of a setting's name: "Stitch length
+3", "Play mode: shuffle" set a setting and start nothing."""
 
 
 def _made_ready(text: Text, k: int) -> bool:
