@@ -36,6 +36,8 @@ UNIT_WORDS = (
             "lb",
             "lbs",
             "st",
+            "hpa",
+            "inhg",
         }
     )
     | frozenset({"g", "oz", "ml", "l", "km", "mi", "miles", "kcal", "cal", "kj", "mph", "kmh"})
@@ -229,6 +231,7 @@ _MORE_NAMES |= {"oz": ["ounce", "ounces"], "ml": ["millilitre", "millilitres", "
 _MORE_NAMES |= {"mi": ["mile", "miles"], "km": ["kilometre", "kilometres", "kilometers"]}
 _MORE_NAMES |= {"kpa": ["kilopascal", "kilopascals"], "mmhg": ["mercury"]}  # "millimetres of …"
 _MORE_NAMES |= {"bar": ["bars"], "psi": ["pounds per square inch"]}
+_MORE_NAMES |= {"inhg": ["inches"], "hpa": ["hectopascals", "hectopascal", "millibars"]}
 """The words a unit symbol a selector offers is said by ("in stones" for ST)."""
 
 
@@ -249,9 +252,29 @@ def named_units(
     unit said with no number before it names the value of the one unit selector that offers
     it (a number's unit, "300 ml", is the number's), unless negated ("instead of kg")."""
     selectors = [n for n in view.infos if n not in goal and unit_selector(view, n)]
-    if len(selectors) != 1:
-        return
-    name = selectors[0]
+    said = {n: _selector_words(view, n) for n in selectors}
+    for name in selectors:  # two selectors (°C / °F and hPa / inHg): each its own words
+        others = set().union(*(words for n, words in said.items() if n != name))
+        _unit_named(view, text, goal, claimed, where, name, others)
+
+
+def _selector_words(view: Model, name: str) -> set[str]:
+    var = view.infos[name].var
+    assert isinstance(var, DiscreteVariable)
+    return set().union(*(_said_unit_names(var, unit) for unit in view.infos[name].values))
+
+
+def _unit_named(
+    view: Model,
+    text: Text,
+    goal: Goal,
+    claimed: set[int],
+    where: dict[str, int],
+    name: str,
+    others: set[str],
+) -> None:
+    """The first unit of selector ``name`` said in ``text`` by a word no other selector offers
+    (``others``)."""
     var = view.infos[name].var
     assert isinstance(var, DiscreteVariable)
     values = view.infos[name].values  # a selector kept per mode lists its units per case
@@ -265,6 +288,12 @@ def named_units(
             continue
         if text.word(j - 1) == "of" and text.word(j - 2) == "instead":
             continue
+        column = _column_unit(text, j, values)
+        if column is not None:  # "in inches of mercury": inHg, not the mmHg "mercury" names
+            goal[name] = column
+            where[name] = j
+            claimed.update(range(j, j + 3))
+            return
         joined = [unit for unit, said in compounds.items() if _says_all(text, j, said)]
         if len(joined) == 1:  # "in fluid ounces", "pounds and ounces": the joined unit
             goal[name] = joined[0]
@@ -272,11 +301,29 @@ def named_units(
             claimed.update(range(j, j + 3))
             return
         units = [unit for unit, said in names.items() if word in said]
-        if len(units) == 1:
+        if len(units) == 1 and word not in others:
             goal[name] = units[0]
             where[name] = j
             claimed.add(j)
             return
+
+
+_LENGTHS = {"inch": "in", "inches": "in", "millimetre": "mm", "millimetres": "mm"}
+_LENGTHS |= {"millimeter": "mm", "millimeters": "mm", "centimetre": "cm", "centimetres": "cm"}
+_LENGTHS |= {"centimeter": "cm", "centimeters": "cm"}
+_COLUMNS = {"mercury": "hg", "water": "h2o"}
+"""Pressures said as the height of a column ("inches of mercury" for inHg, "centimetres of
+water" for cmH2O): a length's symbol joined to the liquid's."""
+
+
+def _column_unit(text: Text, j: int, values: list[Any]) -> Any | None:
+    """The selector's unit a column pressure from ``j`` names, if it offers it."""
+    length, liquid = _LENGTHS.get(text.word(j)), _COLUMNS.get(text.word(j + 2))
+    if length is None or liquid is None or text.word(j + 1) != "of":
+        return None
+    symbol = length + liquid
+    found = [v for v in values if "".join(ch for ch in str(v).lower() if ch.isalnum()) == symbol]
+    return found[0] if len(found) == 1 else None
 
 
 def _said_compound(unit: Any) -> list[set[str]]:
