@@ -166,14 +166,15 @@ def claim_causes(causes: list[Cause], wrong: set[str]) -> list[Cause]:
     return [c for c in causes if c.setting in wrong]
 
 
+_UNTIED = ("parser refused", "extra setting")
+"""Causes not tied to one goal setting: they bear on any failure."""
+
+
 def failure_causes(causes: list[Cause], wrong: set[str]) -> list[Cause]:
     """The causes that bear on a failure: a goal setting the task ended with as asked explains
     nothing (an unsaid ``power: on`` the parse dropped, reached anyway because every other
     setting needs it), whatever the parser made of it; a refusal and an extra setting stay."""
     return [c for c in causes if c.kind in _UNTIED or c.setting in wrong]
-
-
-_UNTIED = ("parser refused", "extra setting")
 
 
 def first_cause(causes: list[Cause]) -> str:

@@ -252,33 +252,32 @@ def named_units(
     unit said with no number before it names the value of the one unit selector that offers
     it (a number's unit, "300 ml", is the number's), unless negated ("instead of kg")."""
     selectors = [n for n in view.infos if n not in goal and unit_selector(view, n)]
-    said = {n: _selector_words(view, n) for n in selectors}
+    said = {n: _selector_names(view, n) for n in selectors}
     for name in selectors:  # two selectors (°C / °F and hPa / inHg): each its own words
-        others = set().union(*(words for n, words in said.items() if n != name))
-        _unit_named(view, text, goal, claimed, where, name, others)
+        others = {w for n, units in said.items() if n != name for ws in units.values() for w in ws}
+        _unit_named(text, goal, claimed, where, name, said[name], others)
 
 
-def _selector_words(view: Model, name: str) -> set[str]:
+def _selector_names(view: Model, name: str) -> dict[Any, set[str]]:
+    """The words each unit of selector ``name`` is said by."""
     var = view.infos[name].var
     assert isinstance(var, DiscreteVariable)
-    return set().union(*(_said_unit_names(var, unit) for unit in view.infos[name].values))
+    values = view.infos[name].values  # a selector kept per mode lists its units per case
+    return {unit: _said_unit_names(var, unit) for unit in values}
 
 
 def _unit_named(
-    view: Model,
     text: Text,
     goal: Goal,
     claimed: set[int],
     where: dict[str, int],
     name: str,
+    names: dict[Any, set[str]],
     others: set[str],
 ) -> None:
-    """The first unit of selector ``name`` said in ``text`` by a word no other selector offers
-    (``others``)."""
-    var = view.infos[name].var
-    assert isinstance(var, DiscreteVariable)
-    values = view.infos[name].values  # a selector kept per mode lists its units per case
-    names = {unit: _said_unit_names(var, unit) for unit in values}
+    """The first unit of selector ``name`` (said by ``names``) said in ``text`` by a word no
+    other selector offers (``others``)."""
+    values = list(names)
     compounds = {unit: _said_compound(unit) for unit in values}
     for j, token in enumerate(text.tokens):
         word = token.text.lstrip("°")
