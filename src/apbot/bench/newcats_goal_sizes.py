@@ -166,10 +166,17 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "facial_cleansing_brush": 3,
     "video_light": 3,
     # The twenty-fifth blind set (helper blind28n, 7 December 2026, the fifth 7 December session):
-    # blind for this round's work.
+    # development data since the sixth 7 December session.
     "cycle_computer": 3,
     "chess_clock": 3,
     "guitar_tuner": 3,
     "welding_machine": 3,
     "dog_training_collar": 3,
+    # The twenty-sixth blind set (helper blind29n, 7 December 2026, the sixth 7 December session):
+    # blind for this round's work.
+    "multimeter": 3,
+    "enlarger_timer": 3,
+    "centrifuge": 3,
+    "magnetic_stirrer": 3,
+    "karaoke_machine": 3,
 }
