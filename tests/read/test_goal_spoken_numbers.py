@@ -106,3 +106,57 @@ def test_a_switch_named_by_a_synonym_of_power() -> None:
         "voltage": 8,
         "output": "on",
     }
+
+
+WELDER = """
+appliance: {id: arc_welder_1, category: arc_welder, name: "Fuse W-1 welder", brand: F}
+controls:
+  - {id: trig_key, kind: button, label: "TRIGGER"}
+  - {id: up_key, kind: button, label: "+"}
+variables:
+  trigger: {type: discrete, values: [2t, 4t], show: {2t: "2T", 4t: "4T"}}
+  current: {type: numeric, unit: A, ranges: [[10, 150, 5]], initial: 80, wrap: true}
+actions:
+  press_trigger: {control: trig_key}
+  press_up: {control: up_key}
+features:
+  trigger:
+    - {actions: [press_trigger], variable: trigger, effect: next}
+  current:
+    - {actions: [press_up], variable: current, effect: next}
+"""
+
+WELDER_MANUAL = """
+TRIGGER MODES
+  2T (two-stroke): hold the torch trigger to weld.
+  4T (four-stroke / latching): press once to start, once to stop.
+"""
+
+TUNER = """
+appliance: {id: pocket_tuner_1, category: pocket_tuner, name: "Pitchy T-3 tuner", brand: P}
+controls:
+  - {id: down_key, kind: button, label: "DROP"}
+variables:
+  drop: {type: numeric, ranges: [[0, 4, 1]], initial: 0, wrap: true, show: "b{value}"}
+actions:
+  press_down: {control: down_key}
+features:
+  drop:
+    - {actions: [press_down], variable: drop, effect: next}
+"""
+
+TUNER_MANUAL = "DROP lowers the tuning of every string by one semitone per press (b0 to b4)."
+
+
+def test_a_hyphenated_name_in_brackets_names_the_value() -> None:
+    model = loads_model(WELDER)
+    goal = parse_instruction(model, "Ninety amps with the four-stroke trigger.", WELDER_MANUAL)
+    assert goal == {"current": 90, "trigger": "4t"}
+    goal = parse_instruction(model, "Two-stroke, sixty amps.", WELDER_MANUAL)
+    assert goal == {"trigger": "2t", "current": 60}
+
+
+def test_steps_are_counted_in_semitones() -> None:
+    model = loads_model(TUNER)
+    assert parse_instruction(model, "Drop it a whole step.", TUNER_MANUAL) == {"drop": 2}
+    assert parse_instruction(model, "Drop it half a step.", TUNER_MANUAL) == {"drop": 1}

@@ -83,7 +83,7 @@ from apbot.read.goal_shown_levels import shown_levels
 from apbot.read.goal_signed import signed_changes
 from apbot.read.goal_spans import time_spans
 from apbot.read.goal_spelling import joined_compounds
-from apbot.read.goal_spoken_numbers import said_hundreds_past_ten, said_points
+from apbot.read.goal_spoken_numbers import said_hundreds_past_ten, said_points, said_steps
 from apbot.read.goal_start import power_and_running
 from apbot.read.goal_switches import switches
 from apbot.read.goal_text import Text
@@ -108,6 +108,7 @@ _REWRITES = (
     without_remarks,
     said_hundreds_past_ten,
     said_points,
+    said_steps,
     said_milliamps,
     said_hundreds,
     said_thousands,

@@ -1,6 +1,7 @@
-"""Numbers people say in two ways the number reader does not take: hundreds counted past ten
-("thirty-two hundred kelvin" is 3200, "fifteen hundred and fifteen" 1515) and decimals read
-out digit by digit ("three point three volts" is 3.3, "one point nine five" 1.95).
+"""Numbers people say in ways the number reader does not take: hundreds counted past ten
+("thirty-two hundred kelvin" is 3200, "fifteen hundred and fifteen" 1515), decimals read
+out digit by digit ("three point three volts" is 3.3, "one point nine five" 1.95), and a
+musician's steps ("a whole step down" is two semitones, "half a step" one).
 
 The number reader stops at "hundred" after a number above nine, and at "point", so these
 phrases lost their setting or gave it a wrong number ("one point eight volts" read 8 V). They
@@ -73,3 +74,22 @@ def said_points(view: Model, instruction: str) -> str:
         return f"{0 if whole in ('nought', 'naught') else _value(whole)}.{digits}"
 
     return _POINT.sub(figure, instruction)
+
+
+_STEPS = re.compile(
+    r"\b(?:(?P<half>half\s+a\s+(?:step|tone)|(?:a|one)\s+half[\s-]+(?:step|tone))"
+    r"|(?P<whole>(?:a|one)\s+(?:whole|full)[\s-]+(?:step|tone)))\b",
+    re.IGNORECASE,
+)
+
+
+def said_steps(view: Model, instruction: str) -> str:
+    """ "a whole step" as "2 semitones", "half a step" as "1 semitone" where the manual
+    counts the setting in semitones (a tuner's flat tuning, a keyboard's transpose)."""
+    if not _STEPS.search(instruction) or not {"semitone", "semitones"} & view.manual_words:
+        return instruction
+
+    def semitones(match: re.Match[str]) -> str:
+        return "1 semitone" if match["half"] else "2 semitones"
+
+    return _STEPS.sub(semitones, instruction)
