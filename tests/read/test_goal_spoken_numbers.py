@@ -160,3 +160,37 @@ def test_steps_are_counted_in_semitones() -> None:
     model = loads_model(TUNER)
     assert parse_instruction(model, "Drop it a whole step.", TUNER_MANUAL) == {"drop": 2}
     assert parse_instruction(model, "Drop it half a step.", TUNER_MANUAL) == {"drop": 1}
+
+
+FAN = """
+appliance: {id: twin_fan_1, category: twin_fan, name: "Breeze D-2 twin fan", brand: B}
+controls:
+  - {id: head_switch, kind: switch, label: "HEAD"}
+  - {id: move_key, kind: button, label: "MOVE"}
+  - {id: speed_key, kind: button, label: "SPEED"}
+variables:
+  head: {type: discrete, values: ["1", "2"], show: {"1": "H1", "2": "H2"}}
+  movement: {type: discrete, values: [fixed, oscillation], show: {fixed: "", oscillation: "OSC"}}
+  speed: {type: numeric, ranges: [[1, 5, 1]], initial: 1, wrap: true, show: "S{value}"}
+actions:
+  slide_head: {control: head_switch}
+  press_move: {control: move_key}
+  press_speed: {control: speed_key}
+features:
+  head:
+    - {actions: [slide_head], variable: head, effect: next}
+  movement:
+    - {actions: [press_move], variable: movement, effect: next}
+  speed:
+    - {actions: [press_speed], variable: speed, effect: next}
+"""
+
+
+def test_a_numbered_things_possessive_keeps_its_number() -> None:
+    goal = parse_instruction(loads_model(FAN), "Put head two's speed on 4.")
+    assert goal == {"head": "2", "speed": 4}
+
+
+def test_a_verb_names_its_value_in_ation() -> None:
+    goal = parse_instruction(loads_model(FAN), "Let it oscillate at speed 3.")
+    assert goal == {"movement": "oscillation", "speed": 3}

@@ -83,7 +83,12 @@ from apbot.read.goal_shown_levels import shown_levels
 from apbot.read.goal_signed import signed_changes
 from apbot.read.goal_spans import time_spans
 from apbot.read.goal_spelling import joined_compounds
-from apbot.read.goal_spoken_numbers import said_hundreds_past_ten, said_points, said_steps
+from apbot.read.goal_spoken_numbers import (
+    numbers_owning,
+    said_hundreds_past_ten,
+    said_points,
+    said_steps,
+)
 from apbot.read.goal_start import power_and_running
 from apbot.read.goal_switches import switches
 from apbot.read.goal_text import Text
@@ -109,6 +114,7 @@ _REWRITES = (
     said_hundreds_past_ten,
     said_points,
     said_steps,
+    numbers_owning,
     said_milliamps,
     said_hundreds,
     said_thousands,

@@ -93,3 +93,13 @@ def said_steps(view: Model, instruction: str) -> str:
         return "1 semitone" if match["half"] else "2 semitones"
 
     return _STEPS.sub(semitones, instruction)
+
+
+_POSSESSIVE = re.compile(rf"\b({_UP_TO_99}|\d+)'s\b", re.IGNORECASE)
+
+
+def numbers_owning(view: Model, instruction: str) -> str:
+    """ "dog one's level" as "dog one level": a numbered thing's possessive keeps its number
+    (the tokenizer read "one's" as one word, no number)."""
+    del view
+    return _POSSESSIVE.sub(r"\1", instruction.replace("\u2019", "'"))
