@@ -194,3 +194,32 @@ def test_a_numbered_things_possessive_keeps_its_number() -> None:
 def test_a_verb_names_its_value_in_ation() -> None:
     goal = parse_instruction(loads_model(FAN), "Let it oscillate at speed 3.")
     assert goal == {"movement": "oscillation", "speed": 3}
+
+
+GENERATOR = """
+appliance: {id: inverter_gen_1, category: inverter_generator, name: "Volta G-2", brand: V}
+controls:
+  - {id: avr_key, kind: button, label: "AVR"}
+  - {id: eco_key, kind: button, label: "ECO"}
+variables:
+  avr: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "AVR"}}
+  eco: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "ECO"}}
+actions:
+  press_avr: {control: avr_key}
+  press_eco: {control: eco_key}
+features:
+  avr:
+    - {actions: [press_avr], variable: avr, effect: toggle}
+  eco:
+    - {actions: [press_eco], variable: eco, effect: toggle}
+"""
+
+GENERATOR_MANUAL = "Press AVR (Automatic Voltage Regulation) to steady the output for tools."
+
+
+def test_initials_said_as_the_words_the_manual_spells_out() -> None:
+    model = loads_model(GENERATOR)
+    goal = parse_instruction(model, "Switch on the automatic voltage regulation.", GENERATOR_MANUAL)
+    assert goal == {"avr": "on"}
+    goal = parse_instruction(model, "Turn the automatic voltage on, eco off.", GENERATOR_MANUAL)
+    assert goal == {"avr": "on", "eco": "off"}

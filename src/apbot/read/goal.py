@@ -32,6 +32,7 @@ from __future__ import annotations
 from apbot.model.domain import ValueProblem, normalise
 from apbot.model.schema import ApplianceModel, DiscreteVariable
 from apbot.model.values import closest_matches, preview
+from apbot.read.goal_acronyms import said_acronyms
 from apbot.read.goal_ages import said_ages
 from apbot.read.goal_assign import assign_mentions
 from apbot.read.goal_both import both_values
@@ -111,6 +112,7 @@ MAX_INSTRUCTION = 5_000
 
 _REWRITES = (
     without_remarks,
+    said_acronyms,
     said_hundreds_past_ten,
     said_points,
     said_steps,
