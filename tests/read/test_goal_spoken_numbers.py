@@ -223,3 +223,29 @@ def test_initials_said_as_the_words_the_manual_spells_out() -> None:
     assert goal == {"avr": "on"}
     goal = parse_instruction(model, "Turn the automatic voltage on, eco off.", GENERATOR_MANUAL)
     assert goal == {"avr": "on", "eco": "off"}
+
+
+MASSAGER = """
+appliance: {id: neck_massager_1, category: neck_massager, name: "Knead N-4", brand: K}
+controls:
+  - {id: power_key, kind: button, label: "⏻"}
+  - {id: level_key, kind: button, label: "LEVEL"}
+variables:
+  power: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "ON"}}
+  intensity: {type: discrete, values: ["1", "2", "3", "4", "5"], show: {"1": "L1", "2": "L2",
+    "3": "L3", "4": "L4", "5": "L5"}}
+actions:
+  press_power: {control: power_key}
+  press_level: {control: level_key}
+features:
+  power:
+    - {actions: [press_power], variable: power, effect: toggle}
+  intensity:
+    - {actions: [press_level], variable: intensity, effect: next}
+"""
+
+
+def test_full_power_is_the_top_of_the_one_strength_in_levels() -> None:
+    model = loads_model(MASSAGER)
+    assert parse_instruction(model, "Give me the massage at full power.")["intensity"] == "5"
+    assert parse_instruction(model, "Minimum strength please.")["intensity"] == "1"
