@@ -249,3 +249,23 @@ def test_full_power_is_the_top_of_the_one_strength_in_levels() -> None:
     model = loads_model(MASSAGER)
     assert parse_instruction(model, "Give me the massage at full power.")["intensity"] == "5"
     assert parse_instruction(model, "Minimum strength please.")["intensity"] == "1"
+
+
+RADIO_CLOCK = """
+appliance: {id: radio_clock_9, category: radio_clock, name: "Tick R-9", brand: T}
+controls:
+  - {id: zone_key, kind: button, label: "ZONE"}
+variables:
+  zone: {type: numeric, unit: h, ranges: [[-6, 6, 1]], initial: 0, wrap: true, show: "{value}"}
+actions:
+  press_zone: {control: zone_key}
+features:
+  zone:
+    - {actions: [press_zone], variable: zone, effect: next}
+"""
+
+
+def test_a_direction_said_after_the_number_counts_down() -> None:
+    model = loads_model(RADIO_CLOCK)
+    assert parse_instruction(model, "Set the zone three hours behind.") == {"zone": -3}
+    assert parse_instruction(model, "Set the zone three hours ahead.") == {"zone": 3}
