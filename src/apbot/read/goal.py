@@ -32,6 +32,7 @@ from __future__ import annotations
 from apbot.model.domain import ValueProblem, normalise
 from apbot.model.schema import ApplianceModel, DiscreteVariable
 from apbot.model.values import closest_matches, preview
+from apbot.read.goal_acronyms import said_acronyms
 from apbot.read.goal_ages import said_ages
 from apbot.read.goal_assign import assign_mentions
 from apbot.read.goal_both import both_values
@@ -39,6 +40,7 @@ from apbot.read.goal_cases import entry_modes, implied_cases, set_by_hand
 from apbot.read.goal_copies import confirmed_choices
 from apbot.read.goal_dates import said_dates
 from apbot.read.goal_digits import spelled_codes
+from apbot.read.goal_electric import said_milliamps
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_every import every_periods
 from apbot.read.goal_fractions import fractions
@@ -82,6 +84,12 @@ from apbot.read.goal_shown_levels import shown_levels
 from apbot.read.goal_signed import signed_changes
 from apbot.read.goal_spans import time_spans
 from apbot.read.goal_spelling import joined_compounds
+from apbot.read.goal_spoken_numbers import (
+    numbers_owning,
+    said_hundreds_past_ten,
+    said_points,
+    said_steps,
+)
 from apbot.read.goal_start import power_and_running
 from apbot.read.goal_switches import switches
 from apbot.read.goal_text import Text
@@ -104,6 +112,12 @@ MAX_INSTRUCTION = 5_000
 
 _REWRITES = (
     without_remarks,
+    said_acronyms,
+    said_hundreds_past_ten,
+    said_points,
+    said_steps,
+    numbers_owning,
+    said_milliamps,
     said_hundreds,
     said_thousands,
     said_times_a_day,

@@ -26,6 +26,7 @@ _NOT_NAMES = frozenset(
     | {"approx", "max", "min", "maximum", "minimum", "example", "e", "g", "eg", "ie", "not"}
     | {"all", "each", "every", "and", "with", "without", "models", "model", "note", "off", "on"}
 )
+_COMPOUND = re.compile(r"[a-z]+-[a-z]+", re.IGNORECASE)
 MAX_ALIAS_WORDS = 2
 """Words of one bracketed name (more is a remark, not a name)."""
 
@@ -98,6 +99,9 @@ def _names(inside: str) -> list[list[str]]:
     for part in _SPLIT.split(inside):
         words = _words(part)
         if not words or len(words) > MAX_ALIAS_WORDS or not all(w.isalpha() for w in words):
+            continue
+        if _COMPOUND.fullmatch(part.strip(" \"'“”")) and not set(words) & _NOT_NAMES:
+            out.append(words)  # "2T (two-stroke)": one name written as a compound
             continue
         if any(w in _NOT_NAMES for w in words) or len(part.split()) != len(words):
             continue

@@ -29,12 +29,24 @@ levels (an intensity 1-5, a massage OFF/1/2/3), whatever the setting is called; 
 levels of a setting named for its speed (a SOFT START 1-2 is not how fast it runs); "volume":
 the one setting named VOLUME ("as quiet as it goes")."""
 _AS_AS_KINDS = frozenset(w for w, kind in _KIND_OF_WORD.items() if not w.endswith("est"))
+_FULL = frozenset({"full", "maximum", "max", "top", "minimum", "min"})
+_STRENGTHS = frozenset({"power", "strength"})
+"""An end said of the appliance's strength ("at full power", "minimum strength") grades the
+one setting counted in levels when no setting is named by those words."""
+
+
+def strength_said(text: Text, k: int) -> bool:
+    """ "full power", "minimum strength": an end of the appliance's strength, whatever setting
+    counts it (the word "power" may also name an on/off switch; it is no level of its own)."""
+    return text.word(k) in _FULL and text.word(k + 1) in _STRENGTHS
 
 
 def kind_of(text: Text, k: int) -> str | None:
     """The kind of quantity a superlative's own word measures ("the hottest" a temperature,
     "as long as it allows" a duration), whatever setting it is said of."""
     word = text.word(k)
+    if strength_said(text, k):
+        return "level"  # "at full power" on a brush whose strength is an INTENSITY 1-8
     if word in _AS_AS_KINDS:
         if text.word(k - 1) != "as" or text.word(k + 1) != "as":
             return None  # "a long wash", "hot water": no end of a scale
@@ -85,6 +97,8 @@ def of_a_setting(info: VarInfo, text: Text, k: int) -> bool:
     the weather's."""
     if text.word(k - 1) == "as":
         return True  # _kind_of has checked the limit that closes it
+    if strength_said(text, k):
+        return True  # "at full power": the strength the setting's levels count
     if _its_limit(text, k + 1) or _ends_its_clause(text, k):
         return True  # "the hottest it goes", "the lullabies at the loudest;"
     j = k + 2 if text.word(k + 1) in ("possible", "available", "allowed") else k + 1

@@ -25,6 +25,7 @@ from apbot.read.goal_scale_kinds import (
     of_a_setting,
     of_another_kind,
     only_of_kind,
+    strength_said,
 )
 from apbot.read.goal_text import CLAUSE_ENDS, Text, near_vocab, said_before
 from apbot.read.goal_twins import find_twins
@@ -116,7 +117,11 @@ def superlatives(
             if (
                 only is not None
                 and of_a_setting(view.infos[only[1]], text, k)
-                and (kind not in ("level", "speed") or not names_another(view, only[1], text, k))
+                and (
+                    kind not in ("level", "speed")
+                    or strength_said(text, k)
+                    or not names_another(view, only[1], text, k)
+                )
             ):
                 best = only
             elif clash:

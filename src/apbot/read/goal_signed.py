@@ -16,6 +16,9 @@ from apbot.read.goal_view import Goal, Model, domain_values
 _DOWNWARD = frozenset({"down", "minus", "lower", "slower", "decrease", "reduce", "negative"})
 _CLAUSE_ENDS = frozenset({",", ";", ".", "!", "?", "and", "then", "with", "but"})
 _REACH = 5  # words back from the number: "slow it down by ten percent"
+_BEHIND = frozenset({"behind", "lower", "down", "slower", "earlier", "back"})
+"""Words after a number and its unit that say it counts down: "two hours behind", "two
+semitones lower", "three notches back"."""
 
 
 def signed_changes(view: Model, text: Text, goal: Goal, where: dict[str, int]) -> None:
@@ -30,7 +33,7 @@ def signed_changes(view: Model, text: Text, goal: Goal, where: dict[str, int]) -
         start = where[name]
         if text.word(start - 1) == "to":
             continue  # "down to 3": the value it ends at
-        if not _said_downward(text, start):
+        if not (_said_downward(text, start) or _said_behind(text, start)):
             continue
         domain = domain_values(view, info, goal)
         negative = next((v for v in domain if abs(float(v) + float(value)) < 1e-9), None)
@@ -44,5 +47,17 @@ def _said_downward(text: Text, start: int) -> bool:
         if word in _CLAUSE_ENDS:
             return False
         if word in _DOWNWARD:
+            return True
+    return False
+
+
+def _said_behind(text: Text, start: int) -> bool:
+    """The number's direction said right after it and its unit ("two hours behind the
+    signal")."""
+    for k in range(start + 1, min(len(text.tokens), start + 4)):
+        word = text.word(k)
+        if word in _CLAUSE_ENDS or word == "to":
+            return False
+        if word in _BEHIND:
             return True
     return False

@@ -5,8 +5,9 @@ switch shares with another names the one whose words stand with it."""
 from __future__ import annotations
 
 from apbot.read.goal_text import Text
+from apbot.read.goal_values import OFF_WORDS, ON_WORDS, name_words
 from apbot.read.goal_view import Model, VarInfo, own_stems
-from apbot.read.goal_vocab import STOP_WORDS
+from apbot.read.goal_vocab import STOP_WORDS, stem
 
 
 def tail_of_anothers(view: Model, info: VarInfo, text: Text, k: int) -> bool:
@@ -32,5 +33,18 @@ def another_switchs_phrase(view: Model, info: VarInfo, text: Text, k: int) -> bo
         and other.role == "switch"
         and other.vocab.get(here, 0.0) >= 0.8
         and other.vocab.get(after, 0.0) >= 0.8
+        for other in view.infos.values()
+    )
+
+
+def whole_name_switched(view: Model, info: VarInfo, text: Text, k: int) -> bool:
+    """The switch's whole name is the one word said, and its state follows it ("the output
+    on" for an OUTPUT switch): the switch is named, though the word is a synonym of a general
+    kind ("output" of power) that alone never names a setting."""
+    names = [stem(w) for w in name_words(info.name)]
+    if names != [text.stems[k]] or text.word(k + 1) not in ON_WORDS + OFF_WORDS:
+        return False
+    return not any(
+        other is not info and text.stems[k] in {stem(w) for w in name_words(other.name)}
         for other in view.infos.values()
     )

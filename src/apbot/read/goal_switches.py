@@ -6,7 +6,11 @@ from __future__ import annotations
 
 from apbot.read.goal_let import kept_on, never_let
 from apbot.read.goal_shortened import compound_of_name
-from apbot.read.goal_switch_words import another_switchs_phrase, tail_of_anothers
+from apbot.read.goal_switch_words import (
+    another_switchs_phrase,
+    tail_of_anothers,
+    whole_name_switched,
+)
 from apbot.read.goal_text import (
     CLAUSE_ENDS,
     VERB_FAMILIES,
@@ -83,7 +87,11 @@ def switches(
                     key, weight = concept(warmth), 1.0
             if weight <= 0 and _mode_synonym(text, k, own):
                 key, weight = next(iter(own)), 1.0  # "holiday mode" for a VACATION switch
-            if weight <= 0 or (generic(key) and not _general_own(view, info, text, k)):
+            if weight <= 0 or (
+                generic(key)
+                and not _general_own(view, info, text, k)
+                and not whole_name_switched(view, info, text, k)  # "the output on"
+            ):
                 continue  # "heating on" names a HEAT switch; "hold off the watering" no switch
             if text.stems[k] not in own and _in_a_named_phrase(view, info, text, k):
                 continue  # "movie sound mode": SOUND MODE's words, not a MUTE's synonym

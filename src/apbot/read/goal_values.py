@@ -171,3 +171,16 @@ def shown_count(text: str) -> float | None:
         return None
     number, letter, prefix, digits = found[0]
     return int(number or digits) * _LETTER_SECONDS[(letter or prefix).casefold()]
+
+
+_UNIT_WORDS = {
+    "v": "volt volts voltage",
+    "a": "amp amps ampere amperes current",
+    "hz": "hertz frequency",
+}
+
+
+def unit_words(unit: str) -> str:
+    """The spoken names of a setting's electrical unit ("" for any other): "twelve volts"
+    names the setting kept in V, though the quantity reader knows no electrical unit."""
+    return _UNIT_WORDS.get(unit.strip().casefold(), "")

@@ -49,6 +49,7 @@ from apbot.read.goal_values import (
     quantity_dimensions,
     unit_kind,
     unit_text,
+    unit_words,
 )
 from apbot.read.goal_vocab import (
     STOP_WORDS,
@@ -172,6 +173,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
             info.dimension = (unit_kind(unit) or (None, 0))[0] if unit else None
             if not unit:  # a reader may miss the unit: SPIN 0-1400 still takes "1000 rpm"
                 info.dimension = _dimension_by_name(info)
+            _add_vocab(info, unit_words(unit), 0.6)  # "twelve volts" names the setting in V
         if isinstance(var, DiscreteVariable):
             switch = on_off_pair(info.values)
             if switch:
