@@ -3,8 +3,10 @@ brackets and two marks joined for a pair held together (``text._BULLET_RE``), a 
 clause after a semicolon (``roles_holdcell.held_toggle``), numbered codes a chart names
 (``code_numbers``), a hold that flips two printed values (``held_flips``), one key stepping both
 ways by press and hold (``press_hold_pairs``), a walked field whose values are a printed list
-(``walk_listed``), a press opening a setting its numbered steps give (``press_opened``) and a
-display legend's sign with the word shown while off (``symbol_lamps.sign_meaning``)."""
+(``walk_listed``), a press opening a setting its numbered steps give (``press_opened``), a
+display legend's sign with the word shown while off (``symbol_lamps.sign_meaning``), a play key
+printed ▶/❚❚ (``labels.SYMBOLS``, ``work_keys``) and a key tone that is no lock
+(``roles_holdcell.lock_or_appliance``)."""
 
 from __future__ import annotations
 
@@ -59,13 +61,15 @@ ROWER_ACTIONS = [
 QUIZ = """
 BUZZA QT-2 quiz timer
 
-3. KEYS
+3. KEYS AND DISPLAY
+
+     ① answer time        ② ♫  key tone on (QUIET when off)        ③ ▶  game running
 
      [A] ⏻      power on / off
      [B] PRG    round type; hold 3 s: key tone on / off
      [C] SET    press: answer time; hold 2 s: warning
      [D] +  [E] −   raise / lower the flashing value
-     ① answer time        ② ♫  key tone on (QUIET when off)
+     [F] ▶/❚❚   start or pause the game
 
 4. ROUND TYPES
 
@@ -93,6 +97,7 @@ QUIZ_ACTIONS = [
     "press_minus",
     "hold_plus",
     "hold_minus",
+    "press_play",
 ]
 
 
@@ -180,3 +185,15 @@ def test_a_display_legends_sign_and_its_word_when_off() -> None:
     assert rower.variables["lamp"].show == {"off": "", "on": "☀"}
     # a key's "power on / off" names no sign of the display
     assert model.variables["power"].show != {"off": "", "on": "⏻"}
+
+
+def test_a_play_key_printed_as_its_sign_starts_and_pauses_the_game() -> None:
+    model = read_manual(QUIZ, QUIZ_ACTIONS).model
+    assert _feature_of(model, "press_play", "running")
+    # "♫ key tone on (QUIET when off)" on the line that says running: QUIET is no running word
+    assert (model.variables["running"].show or {}).get("on") != "QUIET"
+
+
+def test_a_key_tone_is_no_lock() -> None:
+    model = read_manual(QUIZ, QUIZ_ACTIONS).model
+    assert "child_lock" not in model.variables and "key_tone" in model.variables
