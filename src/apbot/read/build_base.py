@@ -22,7 +22,7 @@ from apbot.read.shapes_columns import (
     _dedupe,
 )
 from apbot.read.shown import shown_words
-from apbot.read.symbol_lamps import lit_sign, symbol_lamp, word_lamp
+from apbot.read.symbol_lamps import lit_sign, sign_meaning, symbol_lamp, word_lamp
 from apbot.read.text import Manual
 from apbot.read.value_spans import expand_spans
 
@@ -137,6 +137,14 @@ class BuilderBase(EvidenceReader):
             self.notes.append(Note(f"variables.{name}.show", what, sign[2], quote))
             if sign[1]:
                 self.variables[name]["initial"] = "on"
+            return name
+        means = sign_meaning(self.manual.glyph_lines, name.replace("_", " "))
+        if means is not None:  # "♪ flag beep on (MUTE when off)": the sign, the word when off
+            self.variables[name]["show"] = {"off": means[1], "on": means[0]}
+            quote = self.manual.glyph_lines[means[2] - 1].strip()[:160]
+            what = f"the display shows {means[0]} while on"
+            self.notes.append(Note(f"variables.{name}.show", what, means[2], quote))
+            self.indicators.append(name)
             return name
         lamp = self.lamp_unit(label)
         if lamp is not None:  # only a lamp the manual names: a wrong lamp misleads the reading

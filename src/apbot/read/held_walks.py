@@ -40,8 +40,9 @@ from apbot.read.walk_flashed import (
     table_field,
 )
 from apbot.read.walk_keys import controls_of, moves_on, pair_of, stepping_pairs
-from apbot.read.walk_known import known_field
+from apbot.read.walk_known import flashing_name, known_field
 from apbot.read.walk_like import further_like, named_by_code
+from apbot.read.walk_listed import listed_field
 from apbot.read.walk_order import read_coded_field, with_step
 from apbot.read.walk_steps import moves_at_ends, prose_opener, single_keys, walk_steps
 
@@ -193,9 +194,12 @@ def _one_walk(
         return None  # the hours of a clock, or a walk through two settings
     pair = pair_of(b, pairs, first)
     field = read_field(opened, f"{opened} {first}", at) if pair else None
+    if pair is not None and field is None and (field := listed_field(b, opened, at)):
+        field["label"] = label  # (the display shows the value under the walk's key)
+        return _walk(pair, field, at, rest, groups)  # "1515, 1615, … 2288" printed elsewhere
     if pair is None or field is None:
         return None
-    own = field_name(opened)
+    own = field_name(opened) or flashing_name(opened)  # ("The bonus flashes": the bonus)
     heading = re.sub(r"\([^)]*\)|\d", " ", b.manual.units[at].heading).lower()
     name = own or "_".join(re.findall(r"[a-z]+", heading)[:3])
     if not name or name in _BARE:
@@ -210,6 +214,25 @@ def _one_walk(
         "timeout": timeout,
         "own": bool(own),
         "said": said,
+    }
+
+
+def _walk(
+    pair: tuple[list[str], list[str]],
+    field: dict[str, Any],
+    at: int,
+    rest: list[str],
+    groups: list[tuple[int, str]],
+) -> dict[str, Any]:
+    """A one-field walk whose field was read whole (named, its values listed)."""
+    return {
+        "pair": pair,
+        "fields": [field],
+        "at": at,
+        "timeout": pause_seconds(rest[0]) if rest else None,
+        "own": True,
+        "said": " ".join(g[1] for g in groups[:2]),
+        "listed": True,
     }
 
 

@@ -28,6 +28,7 @@ SYMBOLS: dict[str, tuple[str, ...]] = {
     "next": ("▶", "►", "▷", "→"),
     "power": ("⏻",),
     "on_off": ("⏻",),
+    "play": ("▶/", "▶"),  # a play key printed ▶ or ▶/❚❚ (the pause bars are dropped as pictographs)
     "temp": ("°C", "°F"),  # a knob labelled only with the unit of what it sets
     "temperature": ("°C", "°F"),
     "spin": ("RPM",),

@@ -32,6 +32,7 @@ from apbot.read.code_amounts import read_code_amounts
 from apbot.read.code_cycles import read_code_cycles
 from apbot.read.code_glosses import name_glossed_words
 from apbot.read.code_levels import read_code_levels
+from apbot.read.code_numbers import name_numbered_codes
 from apbot.read.code_walks import read_code_walks
 from apbot.read.code_words import name_code_words
 from apbot.read.codes import name_codes
@@ -47,6 +48,7 @@ from apbot.read.off_positions import read_off_positions
 from apbot.read.off_words import read_held_off_words, read_off_words
 from apbot.read.ordinal_lamps import read_ordinal_lamps
 from apbot.read.position_charts import read_position_charts
+from apbot.read.press_opened import read_press_opened
 from apbot.read.press_tables import read_press_tables
 from apbot.read.pressed_walks import read_pressed_walks
 from apbot.read.range_codes import read_range_codes
@@ -105,6 +107,7 @@ def read_manual(
     read_keyed_cycles(builder)  # ("NATURE: N1 → N2 … NOISE: S1 → …": a cycle per key)
     read_off_positions(builder)  # ("positions: OFF and levels 1 to 8": the knob is power too)
     name_codes(builder)
+    name_numbered_codes(builder)  # ("Fn 1 > Fn 2 …" a count; a chart names each code)
     name_code_words(builder)
     name_glossed_words(builder)
     read_code_amounts(builder)
@@ -122,6 +125,7 @@ def read_manual(
     apply_resets(builder)
     read_held_walks(builder)  # (after the resets: those were read for the switch it replaces)
     read_pressed_walks(builder)  # (after the held walks: a press moving through one is theirs)
+    read_press_opened(builder)  # (a press's guessed setting its numbered steps give)
     read_code_walks(builder)  # (a key's chart codes, each row a field: MENU walks them)
     read_enabling_switches(builder)
     read_confirmed_starts(builder)  # ("the first press only asks for confirmation")

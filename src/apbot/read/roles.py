@@ -14,7 +14,9 @@ from dataclasses import replace
 
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder, united_amounts
+from apbot.read.held_flips import assign_flips, flipped_values
 from apbot.read.labels import words
+from apbot.read.press_hold_pairs import press_hold_pairs
 from apbot.read.roles_again import toggled_again
 from apbot.read.roles_amounts import ADD_RE, assign_amounts
 from apbot.read.roles_common import (
@@ -91,6 +93,9 @@ def assign(b: Builder) -> None:
     unnamed = [i for i in infos if i.name not in done and not adjuster_direction(i)]
     for noun, pair in raise_lower_pairs(b, unnamed).items():  # WARMER / COOLER, ☀ / ❄
         pairs.setdefault(noun, pair)
+    taken = {n for p in pairs.values() for ns in p.values() for n in ns}
+    for noun, pair in press_hold_pairs(b, [i for i in unnamed if i.name not in taken]).items():
+        pairs.setdefault(noun, pair)  # "next size (press) / previous size (hold 2 s)"
     taken = {n for p in pairs.values() for ns in p.values() for n in ns}
     for noun, pair in signed_pairs(b, [i for i in unnamed if i.name not in taken]).items():
         pairs.setdefault(noun, pair)  # A- / A+, POSITION < / POSITION >
@@ -198,10 +203,15 @@ def assign(b: Builder) -> None:
         if shared_pair and shared_pair["up"] and shared_pair["down"]
         else []
     )
+    flips = assign_flips(b, keys, paired)  # "hold 2 s: KM/H <-> MPH": the hold's two values
     for key in keys:
+        if key.name in flips:
+            continue
         ev = evidence[key.name]
         name = var_name(b, key)
         lab = label_of(b, key.controls[0])
+        if flipped_values(flips, ev.values, ev.values_at):  # (a hold's, not the press's)
+            ev = evidence[key.name] = replace(ev, values=None, values_at=None)
         held_list = held_section_list(b, key)
         if held_list:  # "Automatic switch-off: 30 min → 60 min → …" where HAIR TYPE is only held
             ev = evidence[key.name] = replace(ev, values=held_list[0], values_at=held_list[1])

@@ -30,7 +30,7 @@ _SWITCH_VERB = r"(?:(?:switch|turn|toggle)(?:e?s)?\s+(?:the\s+)?)"
 _HELD = re.compile(  # "Hold for 2 seconds: twin-needle mode on/off", "3 s: warm mist on / off",
     # "Hold 3 seconds to switch the auto switch-off off or on"
     rf"^\W*(?:(?:(?:press|touch|push)\s+and\s+)?hold\s*(?:{_SECONDS})?|{_SECONDS})"
-    rf"(?:\s*:\s*{_SWITCH_VERB}?|\s+to\s+{_SWITCH_VERB})"
+    rf"(?:\s*:\s*{_SWITCH_VERB}?|\s+to\s+{_SWITCH_VERB}|(?<=s)\s+for\s+)"  # ("2 s for scan on/off")
     rf"{NOUN_ON_OFF}(?:mode\s+)?{ON_OR_OFF}\b",
     re.IGNORECASE,
 )
@@ -58,6 +58,10 @@ def own_hold_cells(b: Builder, key: ActionInfo) -> list[str]:
     return [cell for i in _own_rows(b, key) if units[i].cells for cell in hold_cells(units[i])]
 
 
+# a legend's callout read as a cell of its own: "(A)", "[1]", "①"
+_MARK = re.compile(r"\(\w\)|\[\w\]|[①-⑳❶-❿➀-➉]")
+
+
 def _own_rows(b: Builder, key: ActionInfo) -> list[int]:
     """The units of the key's own legend: a line or row led by its printed name (a row may be
     numbered first: "2 | HEAT | …")."""
@@ -73,7 +77,14 @@ def _own_rows(b: Builder, key: ActionInfo) -> list[int]:
         lettered = len(unit.cells) >= 3 and re.fullmatch(r"[A-Z]", unit.cells[0].strip())
         if lettered:  # "| C | PROG | Next programme | …": the rows counted by letters
             led = unit.cells[1].strip(" *").upper()
-        if unit.text.lstrip(" *|-•").upper().startswith(label) or led == label:
+        marked = len(unit.cells) == 2 and _MARK.fullmatch(unit.cells[0].strip())
+        if marked:  # "(A) | MODE - next screen; …": a legend in columns, led by its callout
+            led = unit.cells[1].strip(" *").upper()
+        if (
+            unit.text.lstrip(" *|-•").upper().startswith(label)
+            or led == label
+            or (marked and re.match(rf"{re.escape(label)}(?![\w])", led))
+        ):
             rows.append(i)
     return rows
 
@@ -98,6 +109,7 @@ def held_lock(b: Builder, key: ActionInfo) -> bool:
 
 _LOCK_WORDS = frozenset({"lock", "lockout", "safety", "key", "keys"})
 _ITSELF = frozenset({"appliance", "power"})
+_SOUNDS = frozenset({"tone", "tones", "beep", "beeps", "sound", "sounds", "click", "clicks"})
 
 
 def lock_or_appliance(noun: str) -> bool:
@@ -106,6 +118,8 @@ def lock_or_appliance(noun: str) -> bool:
     of its own. The appliance only as the head, the noun's last word: "power saving" is a
     setting; and a clock is no lock ("clock display on / off")."""
     said = re.findall(r"[a-z]+", noun.lower())
+    if said and said[-1] in _SOUNDS:
+        return False  # "key tone", "key beep": the sound the keys make, no lock
     return bool(said) and (
         said[-1] in _ITSELF
         or any(w in _LOCK_WORDS or (w.endswith("lock") and w != "clock") for w in said)
@@ -131,6 +145,8 @@ def held_toggle(b: Builder, key: ActionInfo) -> str:
         if not unit.cells:  # the line after the key's name ("STIR  hold 3 s: slow stir on/off"),
             # and the legend's next lines, when they name no key of their own
             candidates.append(_after_label(b, key, unit.text))
+            # (and its clauses: "backlight on / off; hold 2 seconds for auto scan on / off")
+            candidates += [c for c in _after_label(b, key, unit.text).split(";")[1:] if c.strip()]
             candidates += [units[k].text for k in (i + 1, i + 2) if k < len(units)]
         else:  # a sentence of the row led by the hold ("Character style. Hold 2 s: … on / off"),
             # the first one too ("| SENSOR | Hold for 2 seconds: switches the hand sensor … |")

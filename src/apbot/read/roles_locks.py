@@ -11,6 +11,7 @@ import re
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.evidence_checks import SENTENCE_END_RE
+from apbot.read.held_flips import held_flip
 from apbot.read.labels import words
 from apbot.read.roles_common import first_mention
 from apbot.read.roles_holdcell import held_lock
@@ -37,7 +38,7 @@ def assign_locks(b: Builder, done: set[str]) -> list[str]:
         if info.skill == "hold" and not is_lock:
             texts = [b.manual.units[i].text for i in b.context(list(info.controls))]
             is_lock = (
-                len(info.controls) > 1
+                (len(info.controls) > 1 and held_flip(b, info) is None)  # (not "24H or 12H")
                 or (
                     not named and held_lock(b, info)  # "| ALARM | … | 5 s: key lock on / off |"
                 )

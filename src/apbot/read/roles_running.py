@@ -183,6 +183,13 @@ def _state_word(
         if i in rest and refusal is not None and refusal.search(text):
             continue  # "While it is running, MENU … cannot be opened: … show STOP FIRST"
         for word in shown_words(text, keys):
+            if _when_off(word, text):
+                continue  # "♪ flag beep on (MUTE when off)": another sign's word while off
             if reject is None or not reject.search(word):
                 return word, i
     return "", None
+
+
+def _when_off(word: str, text: str) -> bool:
+    """The display legend says the word is shown while something is off ("MUTE when off")."""
+    return re.search(rf"\b{re.escape(word)}\s+when\s+(?:it\s+is\s+)?off\b", text) is not None

@@ -86,3 +86,41 @@ def lit_sign(lines: Sequence[str], name: str, near: int | None) -> tuple[str, bo
     if not found or len({g for g, _, _ in found}) > 1:
         return None  # (two signs for one setting: neither is sure)
     return found[0][0], any(start for _, start, _ in found), found[0][2]
+
+
+# a display legend's sign with the setting it means on: "☼ (backlight on)", "④ ♪  flag beep on
+# (MUTE when off)" — the word in brackets after it is what the display shows while off
+_SIGN_MEANS = re.compile(
+    r"(?:^|\s)(?P<glyph>[^\w\s()\[\]{}.,;:!?'\"/\\|*=·<>-]{1,2})\s+\(?(?:the\s+)?"
+    # (not a key's "on / off")
+    r"(?P<noun>[a-z][a-z -]{2,30}?)\s+on\b(?!\s*(?:/|or\b|and\b)\s*off)\)?"
+    r"(?:\s*\((?P<off>[A-Z][A-Z0-9]{1,7})\s+when\s+off\))?"
+)
+
+
+def sign_meaning(lines: Sequence[str], name: str) -> tuple[str, str, int] | None:
+    """The sign a display legend says means the setting is on, the word it says the display
+    shows while off ("" for none), and its line; the setting named as in the legend, or as the
+    legend's noun's last part ("backlight" for a setting called light). None when no line, or
+    two different signs, say so."""
+    said = [w for w in name.split() if w]
+    if said and said[-1] == "on":
+        said = said[:-1]  # ("flag beep on": a name read with its state)
+    if not said or not all(w.isalpha() for w in said):
+        return None
+    found: list[tuple[str, str, int]] = []
+    for n, line in enumerate(lines, start=1):
+        for m in _SIGN_MEANS.finditer(line):
+            if m.group("glyph") in NOT_GLYPHS or re.search(r"[\w]", m.group("glyph")):
+                continue
+            noun = m.group("noun").split()
+            if noun == said or (
+                len(said) == 1
+                and len(noun) == 1
+                and len(said[0]) >= 4
+                and noun[0].endswith(said[0])
+            ):
+                found.append((m.group("glyph"), m.group("off") or "", n))
+    if not found or len({g for g, _, _ in found}) > 1:
+        return None
+    return found[0]

@@ -45,6 +45,11 @@ _BULLET_RE = re.compile(
     rf"^\s*(?:[{re.escape(_BULLETS)}]|\d{{1,2}}[.)]|\(\d{{1,2}}\)|[①-⑳❶-❿➀-➉]"
     # (a small letter too, and two together for a pair of keys: "(a) °C/°F …", "(f)(g) ▲ ▼ …")
     r"|\([A-Za-z]\)(?:\([A-Za-z]\))*(?=\s+(?:[A-Z]{2}|[^\w\s]|[a-z]{1,3}[A-Z]|\S{1,8}\s{2}))"
+    # (a capital in square brackets before a short name or sign set off by a wide gap, a
+    # legend in columns: "[B] FN     timing method"; and two marks joined by "+" for a pair
+    # held together, "(A)+(B) held together …")
+    r"|\[[A-Z]\](?=\s+[^a-z\s]\S{0,7}\s{2})"
+    r"|(?:\([A-Z]\)|\[[A-Z]\])(?:\s*\+\s*(?:\([A-Z]\)|\[[A-Z]\]))+"
     r"|(?:Step|STEP)\s+\d{1,2}\s*[:.)]?)\s+"
 )
 _NUMBERED_RE = re.compile(r"^\s*(?:(?:Step|STEP)\s+)?(\d{1,2})(?:[.)]|(?<=\d)\s*:|(?=\s))\s+")

@@ -14,6 +14,7 @@ from apbot.read.walk_fields import code_words
 from apbot.read.walk_flashed import clock_effects, clock_steps, held_steps
 from apbot.read.walk_known import use_known
 from apbot.read.walk_like import absorb_pair_setting, drop_opener_setting
+from apbot.read.walk_listed import drop_guessed_pair
 from apbot.read.walk_steps import drop_adjuster_settings
 
 
@@ -85,6 +86,8 @@ def apply_walk(
         drop_adjuster_settings(b, up)
     absorb_pair_setting(b, steps, walk["at"])
     drop_opener_setting(b, steps)
+    if walk.get("listed"):
+        drop_guessed_pair(b, steps)  # (the pair's guessed "0–10" was this list all along)
     said = f"{hold} opens {names[0]}" + (f", {press} moves to {names[1]}" if names[1:] else "")
     b.note(f"features.{feature}", said, walk["at"])
 

@@ -139,7 +139,7 @@ def read_field(shown: str, text: str, at: int, beside: bool = False) -> dict[str
             "wrap": True,
         }
         return {"name": name or "time", "spec": spec}
-    ranges = find_ranges(text)
+    ranges = _one_span(find_ranges(text))
     step = find_step(text)
     listed = find_list(text) if not ranges else None
     pieces = []
@@ -153,6 +153,15 @@ def read_field(shown: str, text: str, at: int, beside: bool = False) -> dict[str
         ev = Evidence(ranges=ranges, range_at=at, step=step, step_at=at if step else None)
         return {"name": name or "setting", "evidence": ev}
     return None
+
+
+def _one_span(ranges: list[Any]) -> list[Any]:
+    """One span read twice, with its unit and without ("The range is 0 to 60 seconds; it
+    stops at 0 and at 60"): the reading with the unit."""
+    units = {r.unit for r in ranges}
+    if len(ranges) > 1 and len({(r.low, r.high) for r in ranges}) == 1 and len(units - {""}) == 1:
+        return [r for r in ranges if r.unit][:1]
+    return ranges
 
 
 def read_more_field(shown: str, text: str, at: int) -> dict[str, Any] | None:

@@ -29,7 +29,13 @@ def stepping_pairs(b: Builder) -> list[tuple[list[str], list[str]]]:
             if not isinstance(effect, dict):
                 continue
             up = [a for a, e in effect.items() if e == "next" and a in press]
-            down = [a for a, e in effect.items() if e == "prev" and a in press]
+            # (or the hold of the up key's own control: "next size (press) / previous (hold)")
+            own = {controls_of(b, a) for a in up}
+            down = [
+                a
+                for a, e in effect.items()
+                if e == "prev" and (a in press or (len(up) == 1 and controls_of(b, a) in own))
+            ]
             if up and down and (up, down) not in out:
                 out.append((up, down))
     return out

@@ -1,6 +1,7 @@
 """A key that starts and stops the work, though not named START: "PLAY – starts or stops
 cooking", "RUN – starts or stops watering". Its own legend line says it starts or stops the
-appliance's work (an -ing noun of work, the programme, the cycle, the operation); a key that
+appliance's work (an -ing noun of work, the programme, the cycle, the operation, a clock's game
+or session: "▶/❚❚  start or pause the game"); a key that
 "starts or stops oscillation", "the timer" or "the moving louvre" runs a feature or a part,
 not the appliance: the work noun must end the clause.
 """
@@ -11,10 +12,11 @@ import re
 
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
+from apbot.read.roles_holdcell import _own_rows
 
 _STARTS_STOPS_RE = re.compile(
     r"\b(?:starts?|begins?)\s+(?:or|and|/)\s+(?:stops?|pauses?|ends?|cancels?)\s+(?:the\s+)?"
-    r"(?:[a-z]+ing|program(?:me)?|cycle|process|operation|appliance|machine)"
+    r"(?:[a-z]+ing|program(?:me)?|cycle|process|operation|appliance|machine|game|session)"
     r"(?=\s*(?:$|[.;,:)|]|\s(?:and|or|now|at|when|immediately)\b))",  # ("the moving louvre",
     # "the cooking timer": an -ing word before a noun names a part or a feature)
     re.IGNORECASE,
@@ -27,4 +29,7 @@ def starts_and_stops(b: Builder, info: ActionInfo) -> bool:
         return False
     units = b.manual.units
     label = b.labels[info.controls[0]]
-    return any(_STARTS_STOPS_RE.search(units[i].text) for i in label.mentions[:3])
+    # (its first mentions, or its own legend row further on: "▶/❚❚  start or pause the game"
+    # after the drawing and the display legend printed the sign three times)
+    said = [*label.mentions[:3], *_own_rows(b, info)]
+    return any(_STARTS_STOPS_RE.search(units[i].text) for i in said)
