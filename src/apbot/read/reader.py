@@ -23,6 +23,7 @@ from apbot.read.build_base import PLACEHOLDERS
 from apbot.read.cases import apply_cases
 from apbot.read.cases_chosen import chosen_cases
 from apbot.read.cases_fixed import read_fixed_in_mode
+from apbot.read.cases_lines import choice_ranges
 from apbot.read.cases_only import read_only_modes
 from apbot.read.cases_resets import apply_resets
 from apbot.read.cases_units import unit_ranges
@@ -97,6 +98,7 @@ def read_manual(
     chosen_cases(builder)
     zone_twins(builder)
     unit_ranges(builder)
+    choice_ranges(builder)  # ("MMA  20 - 160 A" / "TIG  10 - 200 A": a range per choice)
     read_only_modes(builder)
     read_fixed_in_mode(builder)  # "In Sleep mode the speed is fixed at 1"
     read_value_keys(builder)  # ("Press 33 or 45 to select that speed": one setting)
