@@ -55,7 +55,7 @@ def test_a_lone_callout_in_prose_is_no_item() -> None:
 def test_two_numbers_printed_beside_a_switch_are_its_positions() -> None:
     model = read_manual(HEATER, ACTIONS).model
     zone = model.variables["zone"]  # (without the rule: two numbers, a range's ends, dropped)
-    assert getattr(zone, "ranges", None) == [(1, 2, 1)]
+    assert getattr(zone, "values", None) == ["1", "2"]
 
 
 def test_values_led_by_icons_are_named_in_words_and_shown_by_icons() -> None:
@@ -111,3 +111,48 @@ def test_a_range_per_choice_printed_a_line_each() -> None:
         "high": ([(150, 200, 5)], 180),
         "spray": ([(130, 170, 5)], 150),
     }
+
+
+# a two-mode massage gun (our own words): the DIAL does a different job per mode
+MASSAGE = """
+Kneadr MG-2 massage gun
+
+ CONTROLS
+
+ Press MODE to step PULSE → STEADY → RAMP → PULSE.
+
+ THE DIAL: BEAT RATE / RAMP OFFSET
+
+ The DIAL does another job in each mode. Turn it one click at a time.
+
+ | Mode   | DIAL sets     | Range      | Starts at | Notes                 |
+ |--------|---------------|------------|-----------|-----------------------|
+ | PULSE  | Beat rate     | 1 ... 9    | 4         | beats per second      |
+ | STEADY | -- (nothing)  | -          | -         | the dial does nothing |
+ | RAMP   | Ramp offset   | -3 ... +3  | 0         | minus: slower ramp    |
+"""
+MASSAGE_ACTIONS = ["press_mode", "turn_dial_cw", "turn_dial_ccw"]
+
+
+def test_a_range_column_per_choice_makes_an_amount_not_names() -> None:
+    model = read_manual(MASSAGE, MASSAGE_ACTIONS).model
+    dial = model.variables["dial"]  # (without the rule: "beat rate", "ramp offset", names)
+    assert dial.type == "numeric" and dial.depends_on == "mode"
+    cases = {k: (c.ranges, c.initial) for k, c in (dial.cases or {}).items()}
+    assert cases == {"pulse": ([(1, 9, 1)], 4), "ramp": ([(-3, 3, 1)], 0)}
+
+
+def test_a_hold_is_not_read_from_the_next_keys_legend_row() -> None:
+    model = read_manual(HEATER, [*ACTIONS, "hold_up"]).model
+    # "[D] ⏻ - hold 2 s: heater on / off" is the power key's row, not what holding ▲ does
+    assert not any(
+        "hold_up" in (step.actions or []) and getattr(step, "effect", None) == "toggle"
+        for steps in model.features.values()
+        for step in steps
+    )
+
+
+def test_small_numbers_shown_circled() -> None:
+    model = read_manual(HEATER, ACTIONS).model
+    zone = model.variables["zone"]
+    assert zone.show == {"1": "①", "2": "②"}

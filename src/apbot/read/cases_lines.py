@@ -132,3 +132,91 @@ def _starts(b: Builder, cases: dict[str, Any]) -> None:
             for value, figure in figures.items():
                 cases[value]["initial"] = tidy_number(figure)
             return
+
+
+# a cell that is one range, its ends maybe signed: "0 ... 10", "-5 ... +5", "20 – 160 A"
+_CELL_RANGE_RE = re.compile(
+    rf"\s*([-+−]?{NUM})\s*(?:\.\.\.|…|–|—|-|to)\s*([-+−]?{NUM})\s*[A-Za-z%°]{{0,4}}\s*", re.I
+)
+_START_HEAD_RE = re.compile(r"\b(?:starts?|start(?:ing)?\s+value|default|factory)\b", re.I)
+
+
+def _signed(text: str) -> float | None:
+    sign = -1.0 if text[:1] in "-−" else 1.0
+    value = number(text.lstrip("+-−"))
+    return None if value is None else sign * value
+
+
+def _cell_range(cell: str) -> tuple[float, float] | None:
+    m = _CELL_RANGE_RE.fullmatch(cell)
+    if m is None:
+        return None
+    lo, hi = _signed(m.group(1)), _signed(m.group(2))
+    return (lo, hi) if lo is not None and hi is not None and lo < hi else None
+
+
+def table_choice_ranges(b: Builder) -> None:
+    """A setting a chart per choice names in one column ("| MMA | Arc force | 0 ... 10 | 5 |",
+    "ADJ sets" over what the knob does per process) and gives a range for in a column headed
+    only "Range": an amount per choice (its start from a "Starts at" / "Default" column), not
+    the names of what it does. Choices whose row gives no range ("-") are left out."""
+    from apbot.read.cases import _bare_range, _matches  # (cases imports the builder's helpers)
+    from apbot.read.cases_tables import _parent_values, _tables
+
+    for header, rows in _tables(b.manual.units):
+        ranged = [c for c in range(1, len(header)) if _bare_range(header[c])]
+        if len(rows) < 2 or len(ranged) != 1:
+            continue
+        col = ranged[0]
+        found = {}
+        for row in rows:
+            got = _cell_range(row.cells[col]) if col < len(row.cells) else None
+            if got is not None:
+                found[row.cells[0]] = (got, row)
+        if len(found) < 2:
+            continue
+        for parent, pspec in b.variables.items():
+            pvalues = [str(v) for v in pspec.get("values") or []]
+            if pspec.get("type") != "discrete" or not pvalues:
+                continue
+            if not all(_parent_values(first, pvalues) for first in found):
+                continue
+            for name, spec in b.variables.items():
+                named = [c for c in range(1, col) if _matches(header[c], name, spec)]
+                if name == parent or not named or spec.get("type") != "discrete":
+                    continue
+                _as_amount(b, name, spec, parent, header, found, col)
+                return
+
+
+def _as_amount(
+    b: Builder,
+    name: str,
+    spec: dict[str, Any],
+    parent: str,
+    header: tuple[str, ...],
+    found: dict[str, Any],
+    col: int,
+) -> None:
+    from apbot.read.cases_tables import _parent_values
+
+    starts = [c for c in range(1, len(header)) if c != col and _START_HEAD_RE.search(header[c])]
+    pvalues = [str(v) for v in b.variables[parent].get("values") or []]
+    cases: dict[str, Any] = {}
+    for first, ((lo, hi), row) in found.items():
+        for value in _parent_values(first, pvalues):
+            case: dict[str, Any] = {"ranges": [[tidy_number(lo), tidy_number(hi), 1]]}
+            if starts and starts[0] < len(row.cells):
+                start = _signed(row.cells[starts[0]].strip())
+                if start is not None and lo <= start <= hi and start == int(start):
+                    case["initial"] = tidy_number(start)
+            cases[value] = case
+    for key in ("values", "ranges", "initial", "show"):
+        spec.pop(key, None)
+    spec["type"] = "numeric"
+    spec["depends_on"] = parent
+    spec["cases"] = cases
+    shown = ", ".join(f"{k} {c['ranges'][0][0]:g}–{c['ranges'][0][1]:g}" for k, c in cases.items())
+    first_row = next(iter(found.values()))[1]
+    at = next((i for i, u in enumerate(b.manual.units) if u is first_row), None)
+    b.note(f"variables.{name}.cases", f"an amount per {parent} (a Range column): {shown}", at)
