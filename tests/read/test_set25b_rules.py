@@ -69,6 +69,9 @@ def test_a_step_said_as_what_a_press_or_click_does() -> None:
     assert find_step("Press ▲ to raise the heat by 1, ▼ to lower it by 1.") == (1.0, "")
     assert find_step("Each click changes the temperature by 5 °C.") == (5.0, "°C")
     assert find_step("Hold ▲ to raise the heat by 10.") is None  # a hold's fast steps
+    # a count of something else is no size: "by one lamp (200 rpm)", "by one step"
+    assert find_step("Each press lowers the speed by one lamp (400 rpm).") is None
+    assert find_step("Each press moves the target by one step.") is None
 
 
 # a three-way glue gun (our own words): a mode key, a heat knob with a range per mode

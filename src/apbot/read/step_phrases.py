@@ -11,8 +11,12 @@ import re
 from apbot.read.values import NUM, UNIT, number, unit_name
 
 _VERBS = r"(?:raise|lower|increase|decrease|move|change|adjust|shift)"
-# "moves the target by one step": a step of whatever size, not a size
-_NO_SIZE = r"(?!\s*(?:steps?|notch(?:es)?|positions?|places?|marks?)\b)"
+# after the figure, a unit or nothing more of the phrase: "by 1, ▼ …", "by 5 A:", "by 1 Hz";
+# never a count of something else ("by one step", "by one lamp (200 rpm)": no size)
+_NO_SIZE = (
+    rf"(?=\s*(?:{UNIT}(?!\w)|[,.;:)]|$|(?:and|or|to|until|at|per|each|every)\b"
+    r"|[A-Z][A-Za-z]?\b))"
+)
 # "Press ▲ to raise the level by 1", "Press ► to raise it by 1 Hz" (a count needs no unit)
 _PRESS_TO_BY_RE = re.compile(
     rf"^\W*(?:press|touch|tap|push|turn)\b[^.;]{{0,30}}?\bto\s+{_VERBS}\b[^.;,]{{0,25}}?"
