@@ -45,8 +45,8 @@ def read_code_walks(b: Builder) -> None:
             if steps[0].get("effect") != "next" or spec.get("type") != "discrete":
                 continue
             codes: list[str] | None = [str(c) for c in shows.values()]
-            if len(shows) < 2:
-                continue
+            if len(shows) < 2 or not any(re.search(r"[A-Za-z0-9]", str(c)) for c in shows.values()):
+                continue  # (icons, "♪ ≋ ϟ", show the values themselves: no fields' codes)
         elif "variable" in steps[0] or not isinstance(steps[1].get("effect"), dict):
             continue
         else:  # SET opens one setting the pair sets: the chart's codes, headed as codes

@@ -26,6 +26,7 @@ from apbot.read.evidence_whose import (
 )
 from apbot.read.figure_names import figures_named
 from apbot.read.labels import words
+from apbot.read.printed_pairs import icon_led, printed_pair
 from apbot.read.quantity_units import _quantity_units
 from apbot.read.shapes import (
     CHOICE_WORDS,
@@ -76,7 +77,12 @@ class ValueChooser(ElsewhereReader):
             column = self._table_column(tokens, numbered=best is None or len(best) < 3)
             if column:
                 best, ev.values_at = column, self._table_at
-            elif best is not None and len(best) < 3 and not self._flips_between(ev.values_at):
+            elif (
+                best is not None
+                and len(best) < 3
+                and not self._flips_between(ev.values_at)
+                and not printed_pair(best, units, ev.values_at)
+            ):
                 best = None
         elif not _numeric_items(best):
             column = self._table_column(tokens)
@@ -112,6 +118,8 @@ class ValueChooser(ElsewhereReader):
                 if shows:
                     best, ev.shows = listed, shows
                     break
+        if best is not None and ev.shows is None and (marked := icon_led(best)) is not None:
+            best, ev.shows = marked  # "♪ tone → ≋ vibration → ϟ static": tone shown ♪
         if best is not None:
             best = _without_own_name(best, own)
             ev.values = best if _numeric_items(best) else [v.lower() for v in best]

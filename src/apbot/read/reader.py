@@ -23,10 +23,12 @@ from apbot.read.build_base import PLACEHOLDERS
 from apbot.read.cases import apply_cases
 from apbot.read.cases_chosen import chosen_cases
 from apbot.read.cases_fixed import read_fixed_in_mode
+from apbot.read.cases_lines import choice_ranges, table_choice_ranges
 from apbot.read.cases_only import read_only_modes
 from apbot.read.cases_resets import apply_resets
 from apbot.read.cases_units import unit_ranges
 from apbot.read.cases_zones import zone_twins
+from apbot.read.circled_shows import circled_shows
 from apbot.read.closing_start import close_with_start
 from apbot.read.code_amounts import read_code_amounts
 from apbot.read.code_cycles import read_code_cycles
@@ -99,6 +101,8 @@ def read_manual(
     chosen_cases(builder)
     zone_twins(builder)
     unit_ranges(builder)
+    table_choice_ranges(builder)  # ("| MMA | Arc force | 0 ... 10 |": the Range column's)
+    choice_ranges(builder)  # ("MMA  20 - 160 A" / "TIG  10 - 200 A": a range per choice)
     read_only_modes(builder)
     read_fixed_in_mode(builder)  # "In Sleep mode the speed is fixed at 1"
     read_value_keys(builder)  # ("Press 33 or 45 to select that speed": one setting)
@@ -119,6 +123,7 @@ def read_manual(
     read_range_codes(builder)
     read_initials(builder)
     read_bar_shows(builder)
+    circled_shows(builder)  # ("① first dog / ② second dog": the numbers shown circled)
     read_bracket_shows(builder)
     read_value_codes(builder)  # (after the other display words: only where none was read)
     read_prefixed_figures(builder)  # ("SPM 20": only where no stage read a show or a unit)

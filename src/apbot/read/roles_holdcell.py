@@ -147,7 +147,7 @@ def held_toggle(b: Builder, key: ActionInfo) -> str:
             candidates.append(_after_label(b, key, unit.text))
             # (and its clauses: "backlight on / off; hold 2 seconds for auto scan on / off")
             candidates += [c for c in _after_label(b, key, unit.text).split(";")[1:] if c.strip()]
-            candidates += [units[k].text for k in (i + 1, i + 2) if k < len(units)]
+            candidates += _next_rows(b, key, i)
         else:  # a sentence of the row led by the hold ("Character style. Hold 2 s: … on / off"),
             # the first one too ("| SENSOR | Hold for 2 seconds: switches the hand sensor … |")
             candidates += [said for cell in unit.cells[1:] for said in _SENTENCE_RE.split(cell)]
@@ -157,6 +157,26 @@ def held_toggle(b: Builder, key: ActionInfo) -> str:
             if m and not lock_or_appliance(m.group("noun")) and names_a_setting(m.group("noun")):
                 return m.group("noun").strip(" -").lower()
     return ""
+
+
+def _next_rows(b: Builder, key: ActionInfo, i: int) -> list[str]:
+    """The legend's two lines after the key's, up to one led by another key's printed name
+    ("▲ / ▼ - level up / down (hold 2 s: …)" then "⏻ - hold 2 s: remote on / off": ⏻'s row)."""
+    units = b.manual.units
+    out = []
+    for k in (i + 1, i + 2):
+        if k >= len(units) or _led_by_other(b, key, k):
+            break
+        out.append(units[k].text)
+    return out
+
+
+def _led_by_other(b: Builder, key: ActionInfo, k: int) -> bool:
+    """Line ``k`` is a legend row of another control: it mentions that control and starts with
+    a short name or sign, then a dash or colon ("⏻ - hold 2 s: …", "SEND - sends …")."""
+    if not re.match(r"\W*\S{1,12}\s*[-–—:]\s", b.manual.units[k].text):
+        return False
+    return any(k in lab.mentions for token, lab in b.labels.items() if token not in key.controls)
 
 
 # the part of a legend kept for a short touch: "touch: daily drying timer on / off"

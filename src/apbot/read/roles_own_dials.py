@@ -7,12 +7,25 @@ guessed as the setting the closed loop repairs most cheaply.
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.labels import words
 from apbot.read.roles_common import NUMERIC_WORDS, label_of, numeric_list, turns, var_name
 from apbot.read.roles_lists import dial_ends, list_evidence
 from apbot.read.shapes import CHOICE_WORDS, Evidence
+
+
+def others_choices(b: Builder, values: list[str]) -> bool:
+    """The list is the choices of a setting already read (\"MMA, TIG, MIG\" of PROCESS, drawn
+    beside the AMPS knob): a dial that also has a range sets that amount, not those choices."""
+    mine = {str(v).lower() for v in values}
+    return any(
+        spec.get("type") == "discrete"
+        and {str(v).lower() for v in spec.get("values") or []} == mine
+        for spec in b.variables.values()
+    )
 
 
 def assign_dials(
@@ -27,6 +40,8 @@ def assign_dials(
             continue
         ev = b.evidence([token])
         lab = label_of(b, token)
+        if ev.values and ev.ranges and others_choices(b, ev.values):
+            ev = replace(ev, values=None, values_at=None)  # AMPS beside the process lamps
         if ev.values and not numeric_list(ev.values):
             var = b.add_discrete(token, ev.values, lab, ev)
             b.note(f"variables.{var}.values", ", ".join(b.variables[var]["values"]), ev.values_at)

@@ -14,6 +14,7 @@ from dataclasses import dataclass, field, replace
 
 from apbot.read.errors import ReaderError
 from apbot.read.text_boxes import unbox
+from apbot.read.text_callouts import item_text, lettered_items
 from apbot.read.text_chars import _KEEP, _clean_chars, default_marks
 from apbot.read.text_html import html_tables, tables_apart
 from apbot.read.text_icons import _put, name_icons, named_beside
@@ -190,6 +191,7 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
     passed = _page_breaks(raw_lines, furniture)
     spaced = _space_tables(raw_lines, passed | furniture)
     sideways = _row_charts(raw_lines)
+    lettered = lettered_items(raw_lines)  # a legend's lettered items, each a unit
     markup = html_tables(raw_lines)
     previous, last = "", 0
     rule_above, said_last = False, ""
@@ -293,6 +295,11 @@ def parse_manual(text: str, keys: Sequence[str] = ()) -> Manual:
         bullet = _BULLET_RE.match(line)
         if bullet and len(_CALLOUTS_RE.findall(line)) > 1:
             bullet = None  # "① PROGRAM knob · ② °C knob · …": the drawing's parts on one line
+        if position - 1 in lettered:  # "(d) Level 0-99 …", "[F] DOG 1/2 slide switch"
+            flush()
+            para_bullet, para_step = True, None
+            para.append((number, item_text(line)))
+            continue
         if bullet:
             flush()
             step = _NUMBERED_RE.match(line)

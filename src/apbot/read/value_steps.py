@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import re
 
+from apbot.read.step_phrases import said_step
 from apbot.read.values import NUM, STEP_RE, UNIT, number, unit_name
 
 PER_RE = re.compile(
@@ -98,7 +99,7 @@ def find_step(text: str) -> tuple[float, str] | None:
         equals = _CLICK_EQUALS_RE.search(text)
         if equals and (value := number(equals.group(1))):
             return value, unit_name(equals.group(2))
-        return None
+        return None if _HELD_RE.search(text) else said_step(text)
     groups = m.groups()
     if m.group(0).lower().endswith(("units", "stages")) and not groups[1]:
         return None  # "in half-hour units" is a step, "sold in 2 units", "in two stages" not
