@@ -27,7 +27,8 @@ def _unit_from_words(name: str) -> str:
 
 
 QUANTITY_FAMILIES = {  # a setting named for a quantity takes a range in one of its units
-    "ml": frozenset({"ml", "l", "cl", "dl", "cups", "cup"}),
+    # ("volume" is also a loudness, set in decibels: "−70 … 0 dB")
+    "ml": frozenset({"ml", "l", "cl", "dl", "cups", "cup", "dB"}),
     "g": frozenset({"g", "kg", "lb", "lbs"}),
     "W": frozenset({"W", "kw"}),
     "rpm": frozenset({"rpm"}),
