@@ -1,12 +1,14 @@
 """Rules of the values29 session, each on a small manual of our own words: a range written with
-a minus reaches below zero (``values_signed``), a loudness takes decibels
-(``quantity_units``), and a stepping key printed with the whole word its action shortens
-("TRANSPOSE +" for ``trans_up``) is found (``labels_abbrev``)."""
+a minus in the setting's own section reaches below zero (``values_signed``), a stepping key
+printed with the whole word its action shortens ("TRANSPOSE +" for ``trans_up``) is found
+(``labels_abbrev``), the held part of a legend line names its on/off setting (``held_parts``)
+and a push that starts is the start when only a stop key is named (``legend_starts``)."""
 
 from __future__ import annotations
 
 from apbot.read import read_manual
-from apbot.read.values import Range, find_ranges
+from apbot.read.values import UNIT
+from apbot.read.values_signed import signed_spans
 
 # a keyboard whose pitch shift is set with two keys printed in full
 KEYBOARD = """
@@ -38,20 +40,19 @@ Turn the VOLUME knob to set how loud it plays. The display shows it in decibels:
 
 
 def test_a_range_with_a_minus_reaches_below_zero() -> None:
-    assert find_ranges("The range is -5 to +7 semitones.") == [Range(-5, 7, "")]
-    assert find_ranges("The knob stops at −60 dB and 0 dB.") == [Range(-60, 0, "dB")]
+    assert signed_spans("The range is -5 to +7 semitones.", UNIT) == [(-5, 7, "")]
+    assert signed_spans("The knob stops at −60 dB and 0 dB.", UNIT) == [(-60, 0, "dB")]
     # two negative ends written from the warmer to the colder, in order
-    assert find_ranges("Freezer: -15 to -23 °C") == [Range(-23, -15, "°C")]
-    # the unsigned reading ("5 to 10") gives way to the signed one
-    assert find_ranges("set it from -5 to 10") == [Range(-5, 10, "")]
-    # a dash between two figures is no minus
-    assert find_ranges("Levels 1 – 5") == [Range(1, 5, "")]
+    assert signed_spans("Freezer: -15 to -23 °C", UNIT) == [(-23, -15, "°C")]
+    # a dash between two figures is no minus; a span with no minus is the unsigned rules'
+    assert signed_spans("Levels 1 – 5", UNIT) == []
+    # the room's or the sensor's span is no setting's
+    assert signed_spans("Operating temperature -10 to +40 °C", UNIT) == []
 
 
 def test_a_scale_printed_stop_by_stop_spans_its_ends() -> None:
-    assert find_ranges("−60 dB (softest) … −30 dB (normal) … 0 dB (loudest)") == [
-        Range(-60, 0, "dB")
-    ]
+    said = "−60 dB (softest) … −30 dB (normal) … 0 dB (loudest)"
+    assert signed_spans(said, UNIT) == [(-60, 0, "dB")]
 
 
 def test_a_loudness_in_decibels_is_the_volume_range() -> None:

@@ -27,8 +27,7 @@ def _unit_from_words(name: str) -> str:
 
 
 QUANTITY_FAMILIES = {  # a setting named for a quantity takes a range in one of its units
-    # ("volume" is also a loudness, set in decibels: "−70 … 0 dB")
-    "ml": frozenset({"ml", "l", "cl", "dl", "cups", "cup", "dB"}),
+    "ml": frozenset({"ml", "l", "cl", "dl", "cups", "cup"}),
     "g": frozenset({"g", "kg", "lb", "lbs"}),
     "W": frozenset({"W", "kw"}),
     "rpm": frozenset({"rpm"}),

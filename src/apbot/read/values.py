@@ -17,7 +17,6 @@ from dataclasses import dataclass
 from apbot.model.values import unit_of, words_to_number
 from apbot.read.values_labels import clock_seconds, clock_tops, minutes_and_seconds
 from apbot.read.values_more import further_top
-from apbot.read.values_signed import signed_spans
 from apbot.read.values_tails import gaps, listed_amounts, listed_tail, worked_example
 
 NUM = (
@@ -302,12 +301,6 @@ def _ranges(text: str) -> list[Range]:
         if top:
             low = _from_clock(text, at, min_sec)
             out.append(Range(3600 if top == twelve else low if low < top else 0, top, "s"))
-    for below, above, said in signed_spans(text, UNIT):  # "-6 to +6", "−70 … 0 dB"
-        named = "dB" if said.lower() == "db" else unit_name(said)
-        # (the unsigned reading of "-5 to 10" is "5 to 10": the signed one takes its place)
-        out = [r for r in out if not (r.low == -below and r.high == above and r.unit == named)]
-        if (signed := Range(below, above, named)) not in out:
-            out.append(signed)
     return out
 
 

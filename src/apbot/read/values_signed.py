@@ -14,13 +14,28 @@ decibel figure is a level someone sets, never a rating).
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 from functools import lru_cache
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from apbot.read.text import Unit
+    from apbot.read.values import Range
 
 # a figure with its sign; the sign touches the digit ("-6", "−70", "+6"), so a dash between
 # two words or figures ("Level 1 - 5") is no sign
 _SIGNED = r"(?:[-−+](?=\d))?\d+(?:[.,]\d+)?"
 # what joins the two ends: "to", an ellipsis, a long dash (never a hyphen: "-6--3" is no text)
 _JOIN = r"\s*(?:to|…|\.{3}|–|—)\s*"
+# what the appliance stands, works or is kept in, and what it measures or how exactly: the
+# room's or the sensor's span, no setting's ("operating temperature −10 to +40 °C", "storage
+# −20 … 60 °C", "measuring range -50 to 300 °C", "accuracy -1 to +1 °C")
+_NOT_A_SETTING = re.compile(
+    r"\b(?:operat\w*|working|storage|store[sd]?|kept|ambient|surroundings|environment\w*"
+    r"|outdoors?|outside|room|climate|transport\w*|measur\w*|sensor|reading|accuracy|tolerance"
+    r"|deviation|precision|resolution|calibrat\w*)\b",
+    re.IGNORECASE,
+)
 # words in brackets after a figure: "(quietest)", "(factory)"
 _ASIDE_RE = re.compile(r"\s*\([^()\d]{2,30}\)")
 
@@ -59,6 +74,8 @@ def signed_spans(text: str, unit: str) -> list[tuple[float, float, str]]:
     """Each (low, high, unit as printed) written with a negative end in ``text``; ``unit`` is
     the pattern of the units a setting is set in. Words in brackets after a figure are asides
     ("−70 dB (quietest) … 0 dB (maximum)")."""
+    if _NOT_A_SETTING.search(text):
+        return []
     text = _ASIDE_RE.sub("", text)
     out: list[tuple[float, float, str]] = []
     runs = [m.group("run") for m in _span_re(unit).finditer(text)]
@@ -77,3 +94,24 @@ def signed_spans(text: str, unit: str) -> list[tuple[float, float, str]]:
         if found not in out:
             out.append(found)
     return out
+
+
+def signed_in_section(units: Sequence[Unit], name: str, label: str) -> tuple[Range, int] | None:
+    """The first range below zero written in the section whose heading names the setting
+    (a heading word starting with a word of its name or label, three letters at least: "TIME
+    ZONE FOR THE RADIO CLOCK" for ``zone``, "TRANSPOSE" for ``trans``), and its unit; None when
+    there is none. Asked only for a setting whose range the manual gave nowhere else, so a
+    sign read here never displaces a range read the usual way."""
+    from apbot.read.values import UNIT, Range, unit_name
+
+    own = {w for w in re.findall(r"[a-z]+", f"{name} {label}".lower()) if len(w) >= 3}
+    if not own:
+        return None
+    for i, unit in enumerate(units):
+        heading = re.findall(r"[a-z]+", unit.heading.lower())
+        if not any(h.startswith(w) for h in heading for w in own):
+            continue
+        for low, high, said in signed_spans(unit.text, UNIT):
+            named = "dB" if said.lower() == "db" else unit_name(said)
+            return Range(low, high, named), i
+    return None
