@@ -29,6 +29,7 @@ from apbot.read.shapes import (
 from apbot.read.start_values import on_grid, said_after, said_on, start_in, with_said_step
 from apbot.read.values import Range, number, rescale, seconds, unit_name
 from apbot.read.values_pieces import split_range
+from apbot.read.values_signed import signed_in_section
 from apbot.read.values_upto import stated_low
 from apbot.read.values_zero import from_zero, zero_told
 
@@ -146,6 +147,11 @@ class Builder(BuilderBase):
             r0 = ev.longest[0]
             self.note(
                 subject, f"range {r0.low:g}–{r0.high:g} {r0.unit} (its longest)", ev.longest[1]
+            )
+        elif (signed := signed_in_section(self.manual.units, name, label)) is not None:
+            ranges = [signed[0]]  # "TRANSPOSE … The range is -6 to +6 semitones."
+            self.note(
+                subject, f"range {ranges[0].low:g}–{ranges[0].high:g} (below zero)", signed[1]
             )
         else:
             unit = ev.step[1] if ev.step else _unit_from_words(name)

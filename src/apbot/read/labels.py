@@ -11,6 +11,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
+from apbot.read.labels_abbrev import abbreviated_signed_name
 from apbot.read.labels_legend import legend_name
 from apbot.read.text import Manual, Unit
 from apbot.read.value_lists import find_list
@@ -184,7 +185,7 @@ def _signed_name(manual: Manual, token_words: list[str]) -> tuple[str, int] | No
         m = pattern.search(unit.text)
         if m:
             return m.group(0), unit.line
-    return None
+    return abbreviated_signed_name(manual, name, signs, token_words[-2])
 
 
 def find_labels(manual: Manual, tokens: list[str]) -> dict[str, Label]:

@@ -7,6 +7,7 @@ import re
 
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
+from apbot.read.held_parts import held_part_toggle
 from apbot.read.labels import words
 from apbot.read.names_meaning import held_meaning
 from apbot.read.roles_confirm import confirmed_noun
@@ -218,7 +219,8 @@ def var_name(b: Builder, key: ActionInfo) -> str:
     """The setting's name: the key's printed name when it spells out the action's word
     ("KITCHEN TIMER" for timer, "WATER LEVEL" for water), else the action's word."""
     base = key.token if key.skill == "press" else f"{key.token}_hold"
-    held = hold_use(b, key) or held_toggle(b, key) or held_meaning(b, key)
+    held = held_part_toggle(b, key)  # "Touch: DRY / MOIST.  Hold 3 s: double seal on / off"
+    held = held or hold_use(b, key) or held_toggle(b, key) or held_meaning(b, key)
     if held:
         return "_".join(words(held))
     confirmed = confirmed_noun(b, key)

@@ -12,6 +12,7 @@ import re
 
 from apbot.read.build import Builder
 from apbot.read.labels import words
+from apbot.read.legend_starts import legend_start
 from apbot.read.power_starts import power_starts_work
 from apbot.read.roles_common import NUMERIC_WORDS, dedupe, first_mention, mentions_of
 from apbot.read.roles_holdcell import held_toggle
@@ -81,6 +82,8 @@ def assign_running(
         and "auto" not in words(i.token)  # AUTO OFF: when it switches itself off, a setting
         and i.skill in ("press", "hold")
     ]
+    if stops and not starts:  # CANCEL stops, "MODE  Turn: … Push: START the function" starts
+        starts = [i for i in infos if i.name not in done and legend_start(b, i) is not None][:1]
     if not starts and not stops:  # "SELECT dial … Press and hold 2 seconds: start or stop"
         starts = [i for i in infos if i.name not in done and held_start(b, i) is not None][:1]
     if not starts and not stops:  # "Thumb wheel: turn to choose …; push (click) to start or stop"
