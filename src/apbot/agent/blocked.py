@@ -133,7 +133,7 @@ def _blocks(
 ) -> list[tuple[str, tuple[str, ...]]]:
     """The (setting, blocking values) one manual line names."""
     model = session.belief.model
-    found = []
+    found: list[tuple[str, tuple[str, ...]]] = []
     for name, spec in model.variables.items():
         if name in own or not isinstance(spec, DiscreteVariable):
             continue
@@ -158,13 +158,14 @@ def _blocks(
         for steps in model.features.values():
             if len(steps) != 1 or other not in steps[0].actions:
                 continue
-            name = steps[0].variable
-            spec = model.variables.get(name) if name else None
-            if name is None or name in own or not isinstance(spec, DiscreteVariable):
+            switched = steps[0].variable
+            if switched is None or switched in own:
                 continue
-            current = session.belief.value(name)
-            if current is not None and len(session.domain_values(name)) <= 3:
-                found.append((name, (str(current),)))
+            if not isinstance(model.variables.get(switched), DiscreteVariable):
+                continue
+            current = session.belief.value(switched)
+            if current is not None and len(session.domain_values(switched)) <= 3:
+                found.append((switched, (str(current),)))
     return list(dict.fromkeys(found))
 
 
