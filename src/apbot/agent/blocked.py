@@ -32,6 +32,13 @@ from apbot.model.schema import DiscreteVariable
 _DASHED = re.compile(r"[-–—]{2,}")  # a setting's sign with dashes in place of its value
 _VERBS = r"(?:press|hold|touch|push|turn|tap)"
 _GENERIC = frozenset({"on", "off"})  # said of too much to name a setting in a line
+# a line saying a key or setting does not work now (not a legend of a value: "FRAME -- no frame")
+_BLOCK = re.compile(
+    r"\b(?:cannot|can't|can ?not|not (?:available|possible|adjustable)|unavailable|no effect|"
+    r"(?:has|have|is) no|no (?:\w+ )?setting|do(?:es)? not|doesn't|don't|nothing|ignored|"
+    r"locked|blocked|disabled|first|only)\b",
+    re.IGNORECASE,
+)
 
 
 def blocked_by_manual(session: Session, done: Executed) -> bool:
@@ -42,13 +49,13 @@ def blocked_by_manual(session: Session, done: Executed) -> bool:
         return False
     model = session.belief.model
     key = done.action.name
-    if key not in model.actions:
+    if key not in model.actions or not _own_key(session, key):
         return False
     own = _own_settings(session, done)
     for message in _messages(session, done):
         lines = _lines(manual, message)
-        if not lines:
-            continue
+        if not any(_BLOCK.search(line) for line in lines):
+            continue  # no line says the key is blocked: the message may be a value's sign
         votes: Counter[tuple[str, tuple[str, ...]]] = Counter()
         for line in lines:
             for found in _blocks(session, line, own, key):
@@ -74,6 +81,14 @@ def blocked_by_manual(session: Session, done: Executed) -> bool:
         )
         return True
     return False
+
+
+def _own_key(session: Session, key: str) -> bool:
+    """Whether ``key`` belongs to one procedure only: a key shared by several (▲ for the
+    clock and the timer, a knob for each menu item) works elsewhere, so a guard refusing it
+    would block settings the message does not speak of."""
+    features = session.belief.model.features.values()
+    return sum(any(key in s.actions for s in steps) for steps in features) == 1
 
 
 def _value(domain: list[Any], blocking: Any) -> Any:
