@@ -113,3 +113,40 @@ def test_a_goal_handed_over_is_claimed_whatever_the_sentence_says() -> None:
     )
     episode = get_method("apbot").run(context, env)
     assert episode.claimed_success
+
+
+TIMER = """
+controls: [{id: set, label: SET}, {id: up, label: UP}]
+variables:
+  clock: {type: discrete, values: [a, b, c, d], initial: a, wrap: true, label: CLK}
+  alarm: {type: discrete, values: ["off", "on"], initial: "off", label: ALM}
+  hours: {type: numeric, ranges: [[1, 4, 1]], initial: {start}, wrap: true, label: HRS}
+actions:
+  hold_set: {control: set, skill: hold, seconds: 2}
+  press_set: {control: set}
+  press_up: {control: up}
+features:
+  alarm: [{actions: [press_set], variable: alarm, effect: {to: "on"}}]
+  program:
+    - {actions: [hold_set]}
+    - {actions: [press_up], variable: clock, effect: next}
+    - {actions: [press_set]}
+    - {actions: [press_up], variable: hours, effect: next}
+display:
+  idle: "CLK {clock}"
+"""
+
+
+def test_a_goal_setting_never_shown_and_not_to_be_looked_at_is_not_claimed() -> None:
+    # the belief guesses the hours start at 1 (they start at 2); their screen comes next in
+    # the procedure, behind a key that also switches the alarm on, so no look can confirm the
+    # guess: done as planned, but not claimed
+    truth = model_from(TIMER.replace("{start}", "2"))
+    belief = model_from(TIMER.replace("{start}", "1"))
+    env = SimulatorEnvironment(truth, "display")
+    goal = {"clock": "c", "hours": 1}
+    context = TaskContext("timer", "test", "t", "", goal, belief, actions=tuple(env.actions))
+    episode = get_method("apbot").run(context, env)
+    assert env.simulator.value("clock") == "c"
+    assert not episode.claimed_success
+    assert "never showed hours" in episode.failure
