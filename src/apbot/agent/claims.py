@@ -98,28 +98,7 @@ class Claims(Checks):
         )
         if unread:  # the goal as read holds, but it is not all the user asked for
             raise Stop("partly done: the goal as read holds; not understood: " + ", ".join(unread))
-        if unverified := self._unverified(inside):  # the looks could not reach it
-            raise Stop(
-                "the belief holds the goal, but the display never showed "
-                + ", ".join(unverified)
-                + ": done as planned, not confirmed"
-            )
         raise Stop("the goal holds", success=True)
-
-    def _unverified(self, inside: dict[str, Any]) -> list[str]:
-        """Goal settings a claim would rest on without the display's word although a screen of
-        the belief can show them (:meth:`Session.unverified`: the reader's guess of a starting
-        value, or a value shown only before a press that surprised the belief), once the looks
-        (:meth:`_glance`) found no way to bring them up. Not a run state or a lock, which the
-        looks leave alone on purpose (a look would stop or unlock what the goal asks for)."""
-        session = self.session
-        variables = session.belief.model.variables
-        names = {n for n in inside if not (starts_appliance(n) or is_lock_setting(n))}
-        return [
-            n
-            for n in session.unverified(names)
-            if n not in session.ever_seen and getattr(variables[n], "initial", None) is None
-        ]
 
     def _shown_otherwise(self, inside: dict[str, Any]) -> bool:
         """The display prints, as a part of its own, the word the belief prints for another
