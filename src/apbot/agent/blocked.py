@@ -112,14 +112,16 @@ def _own_settings(session: Session, done: Executed) -> set[str]:
 
 def _messages(session: Session, done: Executed) -> list[str]:
     """The parts of the screen that say the key did not work: a sign followed by dashes, or
-    (a refused key) words that print no value of the belief."""
+    (a refused key) two or more words that print no value of the belief."""
     printed = _printed(session)
     out = []
     for part in re.split(r"\s{2,}", done.feedback.text.strip()):
         part = part.strip()
         if not any(c.isalpha() for c in part) or part.casefold() in printed:
             continue
-        if _DASHED.search(part) or (done.refused and len(part) >= 3):
+        # a refusal's message of one word ("COOK", "BUSY") is said in too many lines of a
+        # manual to stand for the refusal: two words at least ("HOT LOCK", "PAUSE FIRST")
+        if _DASHED.search(part) or (done.refused and len(part.split()) >= 2):
             out.append(part)
     return out
 
