@@ -12,6 +12,7 @@ from __future__ import annotations
 from typing import Any
 
 from apbot.agent.absent import absent_here
+from apbot.agent.blocked import blocked_by_manual
 from apbot.agent.closing import learn_closing
 from apbot.agent.displays import DisplayLearner
 from apbot.agent.ends import stopped_at_end
@@ -73,7 +74,9 @@ class Checks:
                 n: "(unreadable)" if o is UNREADABLE else o for n, (_, o) in done.surprises.items()
             },
         )
-        if not done.refused and self.displays.no_lamp(done):
+        if blocked_by_manual(self.session, done):
+            pass  # the manual says what blocks the key: plan again, lifting it first
+        elif not done.refused and self.displays.no_lamp(done):
             pass  # plan again, reading the setting on its own screen only
         elif relit(self.session, done):
             pass  # the lamp's words were learnt from the press that switched it

@@ -15,7 +15,7 @@ import re
 from typing import Any
 
 from apbot.agent.guards_lift import GuardLifter
-from apbot.agent.locks import believe_lock_shown
+from apbot.agent.locks import believe_lock_shown, blocking_words
 from apbot.agent.repair import RepairError, add_guard, allow, allow_all, disallow
 from apbot.agent.session import MISSING, Executed, Session
 from apbot.model.display import OFF_WORDS
@@ -247,7 +247,7 @@ class GuardLearner(GuardLifter):
             elif name in guarded and str(self.session.belief.value(name)) not in guarded[name]:
                 continue
             value = self.session.belief.value(name)
-            if value is None or str(value).casefold() not in words:
+            if value is None or str(value).casefold() not in blocking_words(name, dark, words):
                 continue
             # a switch; or, behind a dark display, a selector at its OFF position (a knob)
             two = len(self.session.domain_values(name)) == 2

@@ -19,6 +19,7 @@ import re
 
 from apbot.agent.repair import RepairError, set_display
 from apbot.agent.session import Executed, Session
+from apbot.model.display import OFF_WORDS
 
 _WORD = re.compile(r"\S+")
 _LOCK_WORDS = frozenset({"lock", "locked", "loc"})
@@ -27,6 +28,14 @@ _LOCK_WORDS = frozenset({"lock", "locked", "loc"})
 def is_lock_setting(name: str) -> bool:
     """A setting that locks the panel (a child lock): its name has the word lock."""
     return "lock" in name.split("_")
+
+
+def blocking_words(name: str, dark: bool, words: frozenset[str]) -> frozenset[str]:
+    """The values at which setting ``name`` plausibly blocks keys: behind a refusal, a lock's
+    release (a setting named for unlocking, "unlock", "hot_unlock") blocks when it is off."""
+    if not dark and "unlock" in name.casefold().replace("-", "_").split("_"):
+        return OFF_WORDS
+    return words
 
 
 def shows_lock(text: str) -> bool:
