@@ -16,14 +16,18 @@ import re
 from apbot.model.values import NUMBER_WORDS
 from apbot.read.goal_view import Model
 
-_DIGITS = {w: n for w, n in NUMBER_WORDS.items() if n < 10 and w.isalpha()} | {
+# words that count but are no figure of a said number ("twelve hundred a minute" is 1200 per
+# minute, "one point five A" 1.5 amps): never a digit or a number's ones
+_NO_FIGURES = frozenset({"a", "an", "single", "couple"})
+_FIGURES = {w: n for w, n in NUMBER_WORDS.items() if w.isalpha() and w not in _NO_FIGURES}
+_DIGITS = {w: n for w, n in _FIGURES.items() if n < 10} | {
     "oh": 0,
     "nought": 0,
     "naught": 0,
 }
-_TEENS = {w: n for w, n in NUMBER_WORDS.items() if 10 <= n < 20}
-_TENS = {w: n for w, n in NUMBER_WORDS.items() if 20 <= n < 100}
-_ONES = {w: n for w, n in NUMBER_WORDS.items() if 0 < n < 10 and w.isalpha()}
+_TEENS = {w: n for w, n in _FIGURES.items() if 10 <= n < 20}
+_TENS = {w: n for w, n in _FIGURES.items() if 20 <= n < 100}
+_ONES = {w: n for w, n in _FIGURES.items() if 0 < n < 10}
 
 
 def _alt(words: dict[str, int]) -> str:
@@ -39,6 +43,8 @@ _HUNDREDS = re.compile(
     + _TIME_AFTER,
     re.IGNORECASE,
 )
+# the minutes of a time said the military way, after its hundred ("… thirty hours")
+_TIME_MINUTES = re.compile(rf"(?:\s+and)?\s+{_UP_TO_99}\s*(?:hours?|hrs?|h)\b", re.IGNORECASE)
 _POINT = re.compile(
     rf"\b(?P<whole>{_UP_TO_99}|zero|nought|naught|\d+)\s+point"
     rf"(?P<digits>(?:\s+(?:{_alt(_DIGITS)}))+)\b",
@@ -58,6 +64,8 @@ def said_hundreds_past_ten(view: Model, instruction: str) -> str:
     del view  # the phrase means one number whatever the model
 
     def figure(match: re.Match[str]) -> str:
+        if not match["rest"] and _TIME_MINUTES.match(instruction, match.end()):
+            return match[0]  # "nineteen hundred thirty hours": a time, minutes and all
         value = 100 * _value(match["lead"]) + (_value(match["rest"]) if match["rest"] else 0)
         return str(value)
 

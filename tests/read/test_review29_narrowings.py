@@ -1,0 +1,57 @@
+"""Narrowings found reviewing this session's reader and goal-parser rules, each on our own
+words: a drawing's legend of circled callouts ("① PROGRAM key · ② TIMER key") shows no value
+circled (``circled_shows``); "a" / "an" are no figure of a spoken number ("twelve hundred a
+minute", "one point five A"), and a military time keeps its minutes ("nineteen hundred thirty
+hours") (``goal_spoken_numbers``)."""
+
+from __future__ import annotations
+
+from apbot.read import read_manual
+from apbot.read.goal_spoken_numbers import said_hundreds_past_ten, said_points
+
+# a slow cooker (our own words) whose panel legend numbers its keys with circled figures
+COOKER = """
+Simmo SC-3 slow cooker
+
+ PANEL
+
+ ① PROGRAM key · ② TIMER key · ③ START key
+
+ PROGRAMS
+
+ Press PROGRAM to choose a program, 1 to 3. The display shows the program number.
+
+ TIMER
+
+ Press TIMER to set the cooking time from 1 to 12 hours in 1 hour steps.
+"""
+COOKER_ACTIONS = ["press_program", "press_timer", "press_start"]
+
+
+def test_circled_callouts_of_a_panel_legend_show_no_value() -> None:
+    model = read_manual(COOKER, COOKER_ACTIONS).model
+    program = model.variables["program"]  # (on main: shown as ① ② ③, the keys' callouts)
+    assert not getattr(program, "show", None)
+
+
+def test_a_callout_after_a_keys_name_shows_no_value() -> None:
+    text = COOKER.replace(
+        "① PROGRAM key · ② TIMER key · ③ START key", "PROGRAM ①  TIMER ②  START ③"
+    )
+    model = read_manual(text, COOKER_ACTIONS).model
+    assert not getattr(model.variables["program"], "show", None)
+
+
+def test_an_article_is_no_figure_of_a_spoken_number() -> None:
+    assert said_hundreds_past_ten(None, "spin at twelve hundred a minute") == (  # type: ignore[arg-type]
+        "spin at 1200 a minute"
+    )
+    assert said_points(None, "charge at one point five A") == "charge at 1.5 A"  # type: ignore[arg-type]
+    assert said_points(None, "three point three volts") == "3.3 volts"  # type: ignore[arg-type]
+
+
+def test_a_military_time_keeps_its_minutes() -> None:
+    said = "start at nineteen hundred thirty hours"
+    assert said_hundreds_past_ten(None, said) == said  # type: ignore[arg-type]
+    assert said_hundreds_past_ten(None, "nineteen hundred and thirty hours").endswith("hours")  # type: ignore[arg-type]
+    assert said_hundreds_past_ten(None, "fifteen hundred and fifteen") == "1515"  # type: ignore[arg-type]
