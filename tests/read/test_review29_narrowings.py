@@ -2,11 +2,14 @@
 words: a drawing's legend of circled callouts ("① PROGRAM key · ② TIMER key") shows no value
 circled (``circled_shows``); "a" / "an" are no figure of a spoken number ("twelve hundred a
 minute", "one point five A"), and a military time keeps its minutes ("nineteen hundred thirty
-hours") (``goal_spoken_numbers``)."""
+hours") (``goal_spoken_numbers``); a direction word after the number is its own only when it
+follows the number and its unit, never a word of a later phrase or after "up" (``goal_signed``)."""
 
 from __future__ import annotations
 
+from apbot.model.load import loads_model
 from apbot.read import read_manual
+from apbot.read.goal import parse_instruction
 from apbot.read.goal_spoken_numbers import said_hundreds_past_ten, said_points
 
 # a slow cooker (our own words) whose panel legend numbers its keys with circled figures
@@ -55,3 +58,26 @@ def test_a_military_time_keeps_its_minutes() -> None:
     assert said_hundreds_past_ten(None, said) == said  # type: ignore[arg-type]
     assert said_hundreds_past_ten(None, "nineteen hundred and thirty hours").endswith("hours")  # type: ignore[arg-type]
     assert said_hundreds_past_ten(None, "fifteen hundred and fifteen") == "1515"  # type: ignore[arg-type]
+
+
+# a keyboard (our own words) whose transpose runs either side of zero
+KEYBOARD = """
+appliance: {id: keyboard_9, category: keyboard, name: "Keys K-9", brand: K}
+controls:
+  - {id: tr_key, kind: button, label: "TRANSPOSE"}
+variables:
+  transpose: {type: numeric, ranges: [[-6, 6, 1]], initial: 0, wrap: true, show: "{value}"}
+actions:
+  press_tr: {control: tr_key}
+features:
+  transpose:
+    - {actions: [press_tr], variable: transpose, effect: next}
+"""
+
+
+def test_a_direction_of_a_later_phrase_keeps_the_number_as_said() -> None:
+    model = loads_model(KEYBOARD)
+    assert parse_instruction(model, "Transpose up two for the lower voice.") == {"transpose": 2}
+    assert parse_instruction(model, "Transpose up 2 so the back row can sing.") == {"transpose": 2}
+    assert parse_instruction(model, "Transpose two semitones lower.") == {"transpose": -2}
+    assert parse_instruction(model, "Transpose three notches back.") == {"transpose": -3}
