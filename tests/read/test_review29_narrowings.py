@@ -10,7 +10,7 @@ from __future__ import annotations
 from apbot.model.load import loads_model
 from apbot.read import read_manual
 from apbot.read.goal import parse_instruction
-from apbot.read.goal_spoken_numbers import said_hundreds_past_ten, said_points
+from apbot.read.goal_spoken_numbers import numbers_owning, said_hundreds_past_ten, said_points
 
 # a slow cooker (our own words) whose panel legend numbers its keys with circled figures
 COOKER = """
@@ -81,3 +81,11 @@ def test_a_direction_of_a_later_phrase_keeps_the_number_as_said() -> None:
     assert parse_instruction(model, "Transpose up 2 so the back row can sing.") == {"transpose": 2}
     assert parse_instruction(model, "Transpose two semitones lower.") == {"transpose": -2}
     assert parse_instruction(model, "Transpose three notches back.") == {"transpose": -3}
+
+
+def test_a_pronouns_possessive_is_no_number() -> None:
+    model = loads_model(KEYBOARD)
+    # (on main: "no one's" read as "no one", a transpose of 1)
+    assert parse_instruction(model, "Play the keyboard when no one's at home.") == {}
+    assert parse_instruction(model, "Set the transpose for each one's part.") == {}
+    assert numbers_owning(None, "set dog one's level to 5") == "set dog one level to 5"  # type: ignore[arg-type]

@@ -103,11 +103,24 @@ def said_steps(view: Model, instruction: str) -> str:
     return _STEPS.sub(semitones, instruction)
 
 
-_POSSESSIVE = re.compile(rf"\b({_UP_TO_99}|\d+)'s\b", re.IGNORECASE)
+_POSSESSIVE = re.compile(rf"\b(?:([A-Za-z]+)\s+)?({_UP_TO_99}|\d+)'s\b", re.IGNORECASE)
+# words before "one's" that make it a pronoun, no number ("no one's home", "each one's part")
+_PRONOUN_AFTER = frozenset(
+    {"no", "each", "every", "any", "some", "the", "this", "that", "which", "either", "neither"}
+    | {"another", "other", "little", "loved", "only", "last", "next", "right", "wrong"}
+)
 
 
 def numbers_owning(view: Model, instruction: str) -> str:
     """ "dog one's level" as "dog one level": a numbered thing's possessive keeps its number
-    (the tokenizer read "one's" as one word, no number)."""
+    (the tokenizer read "one's" as one word, no number); a pronoun's ("no one's home") is
+    left as it is."""
     del view
-    return _POSSESSIVE.sub(r"\1", instruction.replace("\u2019", "'"))
+
+    def owner(match: re.Match[str]) -> str:
+        before = match[1]
+        if before is None or before.casefold() in _PRONOUN_AFTER:
+            return match[0]
+        return f"{before} {match[2]}"
+
+    return _POSSESSIVE.sub(owner, instruction.replace("\u2019", "'"))
