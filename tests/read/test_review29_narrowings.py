@@ -3,7 +3,10 @@ words: a drawing's legend of circled callouts ("① PROGRAM key · ② TIMER key
 circled (``circled_shows``); "a" / "an" are no figure of a spoken number ("twelve hundred a
 minute", "one point five A"), and a military time keeps its minutes ("nineteen hundred thirty
 hours") (``goal_spoken_numbers``); a direction word after the number is its own only when it
-follows the number and its unit, never a word of a later phrase or after "up" (``goal_signed``)."""
+follows the number and its unit, never a word of a later phrase or after "up" (``goal_signed``);
+a pronoun's "one's" is no number (``numbers_owning``); a chart's Range column makes an amount
+only of the setting the chart already reads per choice, not of a setting of its own whose
+values a column pairs with each row (``cases_lines.table_choice_ranges``)."""
 
 from __future__ import annotations
 
@@ -89,3 +92,30 @@ def test_a_pronouns_possessive_is_no_number() -> None:
     assert parse_instruction(model, "Play the keyboard when no one's at home.") == {}
     assert parse_instruction(model, "Set the transpose for each one's part.") == {}
     assert numbers_owning(None, "set dog one's level to 5") == "set dog one level to 5"  # type: ignore[arg-type]
+
+
+# a food dehydrator (our own words): the chart pairs a fan speed and a temperature range per mode
+DRYER = """
+Dryo D-5 food dehydrator
+
+ CONTROLS
+
+ Press MODE to step FRUIT → MEAT → HERBS → FRUIT.
+ Press FAN to switch the fan between LOW and HIGH.
+ Press ▲ or ▼ to change the temperature by 5 °C.
+
+ MODES
+
+ | Mode  | Fan   | Range       | Starts at |
+ |-------|-------|-------------|-----------|
+ | FRUIT | LOW   | 50 - 70 °C  | 60        |
+ | MEAT  | HIGH  | 60 - 75 °C  | 70        |
+ | HERBS | LOW   | 35 - 50 °C  | 40        |
+"""
+DRYER_ACTIONS = ["press_mode", "press_fan", "press_up", "press_down"]
+
+
+def test_a_range_column_leaves_a_setting_of_its_own_named() -> None:
+    model = read_manual(DRYER, DRYER_ACTIONS).model
+    fan = model.variables["fan"]  # (on main: an amount 50-70 per mode, then a bare toggle)
+    assert fan.type == "discrete" and list(getattr(fan, "values", [])) == ["low", "high"]
