@@ -185,6 +185,8 @@ def table_choice_ranges(b: Builder) -> None:
                 named = [c for c in range(1, col) if _matches(header[c], name, spec)]
                 if name == parent or not named or spec.get("type") != "discrete":
                     continue
+                if spec.get("depends_on") != parent:
+                    continue  # a FAN LOW / HIGH of its own that the chart pairs with each mode
                 _as_amount(b, name, spec, parent, header, found, col)
                 return
 

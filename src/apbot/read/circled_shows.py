@@ -5,8 +5,17 @@ because it runs on the built variables, after their values are settled.
 
 from __future__ import annotations
 
+import re
+
 from apbot.read.build import Builder
 from apbot.read.labels import words
+
+# a part's name in capitals beside a circled figure ("① PROGRAM key", "TIMER knob ②"): the
+# figure is a drawing's callout, not a value the display shows
+_CAPS_BESIDE_RE = re.compile(
+    r"[\u2460-\u2473]\W{0,3}([A-Z]{2,})\b"
+    r"|\b([A-Z]{2,})(?:\s+(?:key|knob|button|switch|dial|lamp))?\W{0,3}[\u2460-\u2473]"
+)
 
 
 def _circled(n: int) -> str:
@@ -41,7 +50,7 @@ def circled_shows(b: Builder) -> None:
             (
                 i
                 for i, u in enumerate(units)
-                if all(s in u.text for s in signs) and own & {w[:4] for w in words(u.text)}
+                if all(s in u.text for s in signs) and _names_them(u.text, own)
             ),
             None,
         )
@@ -55,3 +64,14 @@ def circled_shows(b: Builder) -> None:
             spec["initial"] = str(int(float(spec["initial"])))
         spec["show"] = dict(zip(spec["values"], signs, strict=True))
         b.note(f"variables.{name}.show", f"shown as {' '.join(signs)}", said)
+
+
+def _names_them(text: str, own: set[str]) -> bool:
+    """The setting is named before the circled figures ("Zone icon: ① hall / ② bedroom") and
+    no other part's name in capitals stands beside one: a legend of a drawing's parts ("①
+    PROGRAM key · ② TIMER key · ③ START key") numbers the parts, it shows no value."""
+    first = min(i for i, c in enumerate(text) if "\u2460" <= c <= "\u2473")
+    if not own & {w[:4] for w in words(text[:first])}:
+        return False
+    beside = (m.group(1) or m.group(2) for m in _CAPS_BESIDE_RE.finditer(text))
+    return all(w.lower()[:4] in own for w in beside)

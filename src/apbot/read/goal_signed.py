@@ -12,6 +12,7 @@ from __future__ import annotations
 from apbot.model.schema import NumericVariable
 from apbot.read.goal_text import Text
 from apbot.read.goal_view import Goal, Model, domain_values
+from apbot.read.goal_vocab import STOP_WORDS
 
 _DOWNWARD = frozenset({"down", "minus", "lower", "slower", "decrease", "reduce", "negative"})
 _CLAUSE_ENDS = frozenset({",", ";", ".", "!", "?", "and", "then", "with", "but"})
@@ -19,6 +20,7 @@ _REACH = 5  # words back from the number: "slow it down by ten percent"
 _BEHIND = frozenset({"behind", "lower", "down", "slower", "earlier", "back"})
 """Words after a number and its unit that say it counts down: "two hours behind", "two
 semitones lower", "three notches back"."""
+_UPWARD = frozenset({"up", "plus", "raise", "higher", "increase", "ahead", "forward"})
 
 
 def signed_changes(view: Model, text: Text, goal: Goal, where: dict[str, int]) -> None:
@@ -53,11 +55,24 @@ def _said_downward(text: Text, start: int) -> bool:
 
 def _said_behind(text: Text, start: int) -> bool:
     """The number's direction said right after it and its unit ("two hours behind the
-    signal")."""
+    signal"); not a word of another phrase further on ("up two for the lower voice"), nor
+    after a number said going up ("up 2 so the back row can sing")."""
+    if _said_upward(text, start):
+        return False
     for k in range(start + 1, min(len(text.tokens), start + 4)):
         word = text.word(k)
-        if word in _CLAUSE_ENDS or word == "to":
-            return False
         if word in _BEHIND:
+            return True
+        if word in _CLAUSE_ENDS or word in STOP_WORDS:
+            return False  # "for the lower voice": the direction of something else
+    return False
+
+
+def _said_upward(text: Text, start: int) -> bool:
+    for k in range(start - 1, max(-1, start - 1 - _REACH), -1):
+        word = text.word(k)
+        if word in _CLAUSE_ENDS:
+            return False
+        if word in _UPWARD:
             return True
     return False

@@ -16,14 +16,18 @@ import re
 from apbot.model.values import NUMBER_WORDS
 from apbot.read.goal_view import Model
 
-_DIGITS = {w: n for w, n in NUMBER_WORDS.items() if n < 10 and w.isalpha()} | {
+# words that count but are no figure of a said number ("twelve hundred a minute" is 1200 per
+# minute, "one point five A" 1.5 amps): never a digit or a number's ones
+_NO_FIGURES = frozenset({"a", "an", "single", "couple"})
+_FIGURES = {w: n for w, n in NUMBER_WORDS.items() if w.isalpha() and w not in _NO_FIGURES}
+_DIGITS = {w: n for w, n in _FIGURES.items() if n < 10} | {
     "oh": 0,
     "nought": 0,
     "naught": 0,
 }
-_TEENS = {w: n for w, n in NUMBER_WORDS.items() if 10 <= n < 20}
-_TENS = {w: n for w, n in NUMBER_WORDS.items() if 20 <= n < 100}
-_ONES = {w: n for w, n in NUMBER_WORDS.items() if 0 < n < 10 and w.isalpha()}
+_TEENS = {w: n for w, n in _FIGURES.items() if 10 <= n < 20}
+_TENS = {w: n for w, n in _FIGURES.items() if 20 <= n < 100}
+_ONES = {w: n for w, n in _FIGURES.items() if 0 < n < 10}
 
 
 def _alt(words: dict[str, int]) -> str:
@@ -39,6 +43,8 @@ _HUNDREDS = re.compile(
     + _TIME_AFTER,
     re.IGNORECASE,
 )
+# the minutes of a time said the military way, after its hundred ("… thirty hours")
+_TIME_MINUTES = re.compile(rf"(?:\s+and)?\s+{_UP_TO_99}\s*(?:hours?|hrs?|h)\b", re.IGNORECASE)
 _POINT = re.compile(
     rf"\b(?P<whole>{_UP_TO_99}|zero|nought|naught|\d+)\s+point"
     rf"(?P<digits>(?:\s+(?:{_alt(_DIGITS)}))+)\b",
@@ -58,6 +64,8 @@ def said_hundreds_past_ten(view: Model, instruction: str) -> str:
     del view  # the phrase means one number whatever the model
 
     def figure(match: re.Match[str]) -> str:
+        if not match["rest"] and _TIME_MINUTES.match(instruction, match.end()):
+            return match[0]  # "nineteen hundred thirty hours": a time, minutes and all
         value = 100 * _value(match["lead"]) + (_value(match["rest"]) if match["rest"] else 0)
         return str(value)
 
@@ -95,11 +103,24 @@ def said_steps(view: Model, instruction: str) -> str:
     return _STEPS.sub(semitones, instruction)
 
 
-_POSSESSIVE = re.compile(rf"\b({_UP_TO_99}|\d+)'s\b", re.IGNORECASE)
+_POSSESSIVE = re.compile(rf"\b(?:([A-Za-z]+)\s+)?({_UP_TO_99}|\d+)'s\b", re.IGNORECASE)
+# words before "one's" that make it a pronoun, no number ("no one's home", "each one's part")
+_PRONOUN_AFTER = frozenset(
+    {"no", "each", "every", "any", "some", "the", "this", "that", "which", "either", "neither"}
+    | {"another", "other", "little", "loved", "only", "last", "next", "right", "wrong"}
+)
 
 
 def numbers_owning(view: Model, instruction: str) -> str:
     """ "dog one's level" as "dog one level": a numbered thing's possessive keeps its number
-    (the tokenizer read "one's" as one word, no number)."""
+    (the tokenizer read "one's" as one word, no number); a pronoun's ("no one's home") is
+    left as it is."""
     del view
-    return _POSSESSIVE.sub(r"\1", instruction.replace("\u2019", "'"))
+
+    def owner(match: re.Match[str]) -> str:
+        before = match[1]
+        if before is None or before.casefold() in _PRONOUN_AFTER:
+            return match[0]
+        return f"{before} {match[2]}"
+
+    return _POSSESSIVE.sub(owner, instruction.replace("\u2019", "'"))
