@@ -39,6 +39,7 @@ from apbot.read.code_walks import read_code_walks
 from apbot.read.code_words import name_code_words
 from apbot.read.codes import name_codes
 from apbot.read.confirm_starts import read_confirmed_starts
+from apbot.read.drop_victim import feature_to_drop
 from apbot.read.guards_enabled import read_enabling_switches
 from apbot.read.held_walks import read_held_walks
 from apbot.read.hold_seconds import hold_seconds, pair_hold_seconds
@@ -306,7 +307,7 @@ def _drop(data: dict[str, Any], path: tuple[Any, ...], notes: list[Note], why: s
         return True
     if head in ("features", "variables") and len(path) > 1:
         name = str(path[1])
-        victims = {name}
+        victims = {feature_to_drop(data, name, why, notes) if head == "features" else name}
         if head == "variables":
             victims = {
                 f
