@@ -35,7 +35,7 @@ def signed_changes(view: Model, text: Text, goal: Goal, where: dict[str, int]) -
         start = where[name]
         if text.word(start - 1) == "to":
             continue  # "down to 3": the value it ends at
-        if not (_said_downward(text, start) or _said_behind(text, start)):
+        if not (_said_before(text, start, _DOWNWARD) or _said_behind(text, start)):
             continue
         domain = domain_values(view, info, goal)
         negative = next((v for v in domain if abs(float(v) + float(value)) < 1e-9), None)
@@ -43,12 +43,13 @@ def signed_changes(view: Model, text: Text, goal: Goal, where: dict[str, int]) -
             goal[name] = negative
 
 
-def _said_downward(text: Text, start: int) -> bool:
+def _said_before(text: Text, start: int, words: frozenset[str]) -> bool:
+    """One of ``words`` among the few words before the number, within its clause."""
     for k in range(start - 1, max(-1, start - 1 - _REACH), -1):
         word = text.word(k)
         if word in _CLAUSE_ENDS:
             return False
-        if word in _DOWNWARD:
+        if word in words:
             return True
     return False
 
@@ -57,7 +58,7 @@ def _said_behind(text: Text, start: int) -> bool:
     """The number's direction said right after it and its unit ("two hours behind the
     signal"); not a word of another phrase further on ("up two for the lower voice"), nor
     after a number said going up ("up 2 so the back row can sing")."""
-    if _said_upward(text, start):
+    if _said_before(text, start, _UPWARD):
         return False
     for k in range(start + 1, min(len(text.tokens), start + 4)):
         word = text.word(k)
@@ -65,14 +66,4 @@ def _said_behind(text: Text, start: int) -> bool:
             return True
         if word in _CLAUSE_ENDS or word in STOP_WORDS:
             return False  # "for the lower voice": the direction of something else
-    return False
-
-
-def _said_upward(text: Text, start: int) -> bool:
-    for k in range(start - 1, max(-1, start - 1 - _REACH), -1):
-        word = text.word(k)
-        if word in _CLAUSE_ENDS:
-            return False
-        if word in _UPWARD:
-            return True
     return False

@@ -17,8 +17,8 @@ import re
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.labels import words
+from apbot.read.legend_rest import legend_rests
 from apbot.read.roles_holdcell import lock_or_appliance, names_a_setting
-from apbot.read.text import Unit
 
 _SECONDS = r"(?:for\s+)?(?:about\s+)?\d+(?:[.,]\d+)?\s*(?:s|sec|secs|seconds?)\b"
 # the part of a legend line kept for holding, then the thing it switches on and off
@@ -30,8 +30,6 @@ _HOLD_PART = re.compile(
 )
 # where a legend line's uses part: a full stop, a semicolon, a middle dot, a wide gap
 _PARTS = re.compile(r"[.;·]\s+|\s{3,}|\s+[·|]\s*")
-# what leads a legend line before the key's name: "(c)", "4", "⑥", "[6]"
-_LEAD = r"^\W*(?:\(?\w\)|\[\w+\]|\d{1,2}[.)]?)?\s*"
 
 
 def held_part_toggle(b: Builder, key: ActionInfo) -> str:
@@ -39,11 +37,7 @@ def held_part_toggle(b: Builder, key: ActionInfo) -> str:
     if key.skill != "hold" or len(key.controls) != 1 or key.controls[0] not in b.labels:
         return ""
     label = b.labels[key.controls[0]].text
-    if not label:
-        return ""
-    led = re.compile(rf"{_LEAD}{re.escape(label)}(?![\w])\s*[-–—:]?\s*(?P<rest>.*)$", re.I)
-    for i in b.labels[key.controls[0]].mentions:
-        rest = _rest_of(b.manual.units[i], label, led)
+    for _, rest in legend_rests(b, key.controls[0]):
         for part in _PARTS.split(rest):
             said = _HOLD_PART.match(part.strip())
             if not said:
@@ -53,16 +47,4 @@ def held_part_toggle(b: Builder, key: ActionInfo) -> str:
                 return ""  # "ALERT … held 2 s: alert on / off": the key's own name, no new one
             if not lock_or_appliance(noun) and names_a_setting(noun):
                 return noun
-    return ""
-
-
-def _rest_of(unit: Unit, label: str, led: re.Pattern[str]) -> str:
-    """What the key's legend line or row says after the key's name ("" when it is not led by
-    it): a row's later cells, each a part ("| 4 | FOOD | Touch: … | Touch and hold …: … |")."""
-    if not unit.cells:
-        m = led.match(unit.text)
-        return m.group("rest") if m else ""
-    for k, cell in enumerate(unit.cells[:2]):
-        if cell.strip(" *[]").upper() == label.upper():
-            return "   ".join(unit.cells[k + 1 :])
     return ""

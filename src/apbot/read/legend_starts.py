@@ -15,6 +15,7 @@ import re
 
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
+from apbot.read.legend_rest import legend_rests
 
 # the part of a legend line for pressing: "Push: START the function", "press to start"
 _PRESS_STARTS = re.compile(
@@ -23,7 +24,6 @@ _PRESS_STARTS = re.compile(
     re.IGNORECASE,
 )
 _PARTS = re.compile(r"(?<=[.;])\s+|\s{3,}")
-_LEAD = r"^\W*(?:\(?\w\)|\[\w+\]|\d{1,2}[.)]?)?\s*"
 
 
 def legend_start(b: Builder, info: ActionInfo) -> int | None:
@@ -31,19 +31,7 @@ def legend_start(b: Builder, info: ActionInfo) -> int | None:
     None (a held key, or a key of more than one control, is not read)."""
     if info.skill != "press" or len(info.controls) != 1 or info.controls[0] not in b.labels:
         return None
-    label = b.labels[info.controls[0]].text
-    if not label:
-        return None
-    led = re.compile(rf"{_LEAD}{re.escape(label)}(?![\w])\s*[-–—:]?\s*(?P<rest>.*)$", re.I)
-    for i in b.labels[info.controls[0]].mentions:
-        unit = b.manual.units[i]
-        rest = ""
-        if unit.cells:
-            for k, cell in enumerate(unit.cells[:2]):
-                if cell.strip(" *[]").upper() == label.upper():
-                    rest = "   ".join(unit.cells[k + 1 :])
-        elif m := led.match(unit.text):
-            rest = m.group("rest")
+    for i, rest in legend_rests(b, info.controls[0]):
         if any(_PRESS_STARTS.match(part.strip()) for part in _PARTS.split(rest)):
             return i
     return None
