@@ -180,6 +180,9 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
                 info.role, info.on, info.off = "switch", switch[0], switch[1]
             if numeric_values(info.values):
                 info.dimension = _dimension_by_name(info)
+                shown = _shown_unit(var)  # "{value} s": a chart of times in seconds
+                if shown:
+                    info.dimension = (unit_kind(shown) or (info.dimension, 0))[0]
             for dimension in sorted(quantity_dimensions(info.values)):
                 _add_vocab(info, _DIMENSION_WORDS.get(dimension, ""), 0.6)  # "450 W": power
         infos[name] = info
@@ -374,6 +377,13 @@ def _counted_by_name(name: str, var: NumericVariable) -> NumericVariable:
 
 
 _DIMENSION_WORDS = {"power": "power", "temperature": "temperature", "mass": "weight"}
+
+
+def _shown_unit(var: DiscreteVariable) -> str:
+    """The unit a list of numbers prints after each of them ("{value} s"), or ""."""
+    show = var.show if isinstance(var.show, str) else ""
+    rest = show.strip()[len("{value}") :].strip() if show.strip().startswith("{value}") else ""
+    return rest if rest and "{" not in rest else ""
 
 
 def _dimension_by_name(info: VarInfo) -> str | None:
