@@ -115,6 +115,10 @@ def appliance_said(model: ApplianceModel) -> str:
     return f"{own_name(model)} {model.appliance.category.replace('_', ' ')}".strip().casefold()
 
 
+_OWN_NOUNS = frozenset({"key"})
+"""Stop words (said of any key) that are a setting's whole name: a karaoke's musical KEY."""
+
+
 def _add_vocab(info: VarInfo, text: str, weight: float) -> None:
     for word in name_words(text):
         if word in STOP_WORDS or len(word) < 2:
@@ -153,6 +157,8 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         _add_vocab(info, name, 1.0)
         if var.label:
             _add_vocab(info, var.label, 1.0)
+        if not info.vocab and set(name_words(name.casefold())) <= _OWN_NOUNS:
+            info.vocab[concept(name)] = 0.8  # a setting named KEY (a song's pitch): its word
         _add_doers(info, f"{name} {var.label or ''}", appliance)
         add_nouns(info, f"{name} {var.label or ''}")
         add_timed_stops(info, f"{name} {var.label or ''}")
