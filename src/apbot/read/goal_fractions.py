@@ -83,7 +83,7 @@ def fractions(
 
 def _manual_measures(view: Model) -> frozenset[str]:
     """Nouns the manual counts in fractions ("1/3 stop"), beside the kitchen's measures."""
-    found = set()
+    found: set[str] = set()
     for line in view.manual_lines:
         found.update(m.casefold() for m in _MANUAL_MEASURE.findall(line.casefold()))
     return frozenset(w for w in found if parse_quantity(f"1 {w}") is None)
