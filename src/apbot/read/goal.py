@@ -76,6 +76,7 @@ from apbot.read.goal_periods import distinct, in_weeks
 from apbot.read.goal_preset_rows import charted_presets
 from apbot.read.goal_presets import lift_presets, preset_companions, restore_presets
 from apbot.read.goal_quantity_values import quantity_values
+from apbot.read.goal_readings import frozen_readings
 from apbot.read.goal_remarks import without_remarks
 from apbot.read.goal_scales import superlatives
 from apbot.read.goal_scheduled_states import scheduled_states
@@ -87,6 +88,7 @@ from apbot.read.goal_spelling import joined_compounds
 from apbot.read.goal_spoken_numbers import (
     numbers_owning,
     said_hundreds_past_ten,
+    said_hyphenated,
     said_points,
     said_steps,
 )
@@ -113,6 +115,7 @@ MAX_INSTRUCTION = 5_000
 _REWRITES = (
     without_remarks,
     said_acronyms,
+    said_hyphenated,
     said_hundreds_past_ten,
     said_points,
     said_steps,
@@ -213,6 +216,7 @@ def parse_instruction(
     switched_off_values(view, text, goal, where)
     no_values(view, text, goal, claimed)
     switches(view, text, goal, claimed, where)
+    frozen_readings(view, text, goal, where)
     on_values(view, text, goal, claimed, where)
     self_switching_off(view, text, goal, claimed)
     muted_volume(view, text, goal, claimed)

@@ -26,7 +26,13 @@ _PRINTED = re.compile(r"[-+]?\d+(?:\.\d+)?")
 
 
 def _listed_unit(info: VarInfo) -> tuple[str, float] | None:
-    """The one (dimension, factor) the list's unit-bearing values share, if they all share one."""
+    """The one (dimension, factor) the list's unit-bearing values share, if they all share one;
+    or the unit its display template prints after every value ("{value} s": seconds)."""
+    show = getattr(info.var, "show", None)
+    if isinstance(show, str) and show.strip().startswith("{value}"):
+        q = parse_quantity(show.replace("{value}", "1"))
+        if q is not None and q[1] is not None:
+            return q[1], q[0]
     found = set()
     for value in info.values:
         q = parse_quantity(str(value))

@@ -40,9 +40,10 @@ def implied_cases(view: Model, goal: Goal, start_known: bool = True) -> None:
         sizes = [_size(var, var.cases.get(str(case))) for case in mode.values]
         free = [case for case, size in zip(mode.values, sizes, strict=True) if size > 1]
         apart = len(free) > 1 and _apart(var, mode.values)  # the value tells the case
-        if len(admitting) != 1 or (free != admitting and not apart):
+        named = len(free) > 1 and _named_choice(var, goal[name])  # "continuity": only Ω has it
+        if len(admitting) != 1 or (free != admitting and not apart and not named):
             continue  # adjusted in other cases too (a guess)
-        if 1 not in sizes and not (apart or _way_of_working(view, parent, admitting[0])):
+        if 1 not in sizes and not (apart or named or _way_of_working(view, parent, admitting[0])):
             continue  # no case fixes it: the mode may only choose what the keys adjust
         if str(admitting[0]) == str(_starts_at(mode.var, start_known)):
             continue  # the panel is in that case before anything is pressed
@@ -105,6 +106,13 @@ def _apart(var: Any, cases: list[Any]) -> bool:
             return False
         seen |= values
     return True
+
+
+def _named_choice(var: Any, value: Any) -> bool:
+    """A discrete setting's value named by a word, not a number ("continuity", "fahrenheit"):
+    a sub-function whose choices differ with the mode (a meter's SELECT: Ω / continuity /
+    diode on the Ω position, °C / °F on TEMP), so the one case that has it is the one meant."""
+    return isinstance(var, DiscreteVariable) and any(c.isalpha() for c in str(value))
 
 
 def _way_of_working(view: Model, parent: str, case: Any) -> bool:

@@ -17,6 +17,7 @@ from typing import Any
 from apbot.model.schema import DiscreteVariable
 from apbot.model.values import NUMBER_WORDS
 from apbot.read.goal_text import CLAUSE_ENDS, Text
+from apbot.read.goal_values import parse_quantity
 from apbot.read.goal_view import Goal, Model
 
 # "a quarter", "three quarters": the article and the counting words one to seven
@@ -32,9 +33,15 @@ _PARTS = {
     "quarters": 4,
     "fourth": 4,
     "fourths": 4,
+    "sixth": 6,
+    "sixths": 6,
     "eighth": 8,
     "eighths": 8,
 }
+_WHOLE = frozenset({"full", "whole"})  # "a full stop": the one whole measure beside its parts
+_MANUAL_MEASURE = re.compile(r"\b\d\s*/\s*\d{1,2}\s+([a-z]{3,})\b")
+"""A fraction the manual prints before a noun ("1/3 stop", "1/2 turn"): that noun is the
+setting's measure, said in words ("a third of a stop", "half a turn")."""
 _MEASURES = frozenset(
     {"cup", "cups", "scoop", "scoops", "spoon", "spoons", "spoonful", "spoonfuls"}
     | {"tablespoon", "tablespoons", "teaspoon", "teaspoons", "measure", "measures"}
@@ -48,9 +55,10 @@ def fractions(
     view: Model, text: Text, goal: Goal, claimed: set[int], where: dict[str, int]
 ) -> None:
     """Give each fraction of a measure said in words to the one open setting with that part."""
+    measures = _MEASURES | _manual_measures(view)
     k = 0
     while k < len(text.tokens):
-        found = _fraction_at(text, k)
+        found = _fraction_at(text, k, measures)
         if found is None or any(j in claimed for j in range(k, found[1])):
             k += 1
             continue
@@ -63,7 +71,7 @@ def fractions(
             and isinstance(info.var, DiscreteVariable)
             and _a_measure(info.var, info.values)
             for value in info.values
-            if _part_of(info.var, value) == part
+            if _part_of(info.var, value) == part or (part == 1 and str(value).strip() == "1")
         ]
         if len({name for name, _ in owners}) == 1:
             name, value = owners[0]
@@ -73,9 +81,21 @@ def fractions(
         k = end
 
 
-def _fraction_at(text: Text, k: int) -> tuple[Fraction, int] | None:
+def _manual_measures(view: Model) -> frozenset[str]:
+    """Nouns the manual counts in fractions ("1/3 stop"), beside the kitchen's measures."""
+    found: set[str] = set()
+    for line in view.manual_lines:
+        found.update(m.casefold() for m in _MANUAL_MEASURE.findall(line.casefold()))
+    return frozenset(w for w in found if parse_quantity(f"1 {w}") is None)
+
+
+def _fraction_at(
+    text: Text, k: int, measures: frozenset[str] = _MEASURES
+) -> tuple[Fraction, int] | None:
     """The part said from token k and the end of the words (the measure's noun included)."""
     word = text.word(k)
+    if word in _WHOLE and text.word(k - 1) in ("a", "one") and text.word(k + 1) in measures:
+        return Fraction(1), k + 2  # "a full stop between the strips"
     if word in _PARTS:  # "half a cup", "quarter cup"
         part, j = Fraction(1, _PARTS[word]), k + 1
         if word.startswith("half") and text.word(k - 1) in ("and", "-"):
@@ -92,13 +112,20 @@ def _fraction_at(text: Text, k: int) -> tuple[Fraction, int] | None:
         return None
     if part >= 1 or part <= 0:
         return None
+    if text.word(j) == "-":
+        j += 1  # "sixth-of-a-stop steps"
     if text.word(j) == "of":
-        j += 1
+        j += 1 + (text.word(j + 1) == "-")
     if text.word(j) in ("a", "an", "the", "one"):
-        j += 1
-    if text.word(j) not in _MEASURES or text.word(j) in CLAUSE_ENDS:
+        j += 1 + (text.word(j + 1) == "-")
+    if text.word(j) not in measures or text.word(j) in CLAUSE_ENDS:
         return None
+    if text.word(j + 1) in _CHANGES:
+        return None  # "a third of a stop down from 8 s": a change of another setting, no step
     return part, j + 1
+
+
+_CHANGES = frozenset({"down", "up", "more", "less", "longer", "shorter", "lower", "higher"})
 
 
 def _a_measure(var: DiscreteVariable, values: list[Any]) -> bool:

@@ -34,7 +34,7 @@ from apbot.read.goal_vocab import HANDLING, NEGATIONS, STOP_WORDS, concept, stem
 
 _SELF_OFF_VERBS = frozenset(stem(w) for w in ("switch", "shut", "turn", "power", "cut"))
 _PREVENTED = frozenset({"stop", "prevent", "keep", "don't", "dont", "not", "never", "doesn't"})
-_PREVENTED |= frozenset({"won't", "disable", "no"})
+_PREVENTED |= frozenset({"won't", "disable", "no", "without"})
 
 
 def self_switching_off(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
@@ -55,13 +55,18 @@ def self_switching_off(view: Model, text: Text, goal: Goal, claimed: set[int]) -
     for k, token in enumerate(text.tokens):
         if k in claimed:
             continue
-        if token.text != "itself":
+        alone = token.text == "own" and [text.word(k - 2), text.word(k - 1)] == ["on", "its"]
+        if alone:
+            k -= 2  # "powering down on its own": as "itself"
+        elif token.text != "itself":
             k = _off_when_done(text, k)
             if k < 0:
                 continue
         by = 1 if text.word(k - 1) == "by" else 0  # "turn off by itself"
         verb = any(text.stems[j] in _SELF_OFF_VERBS for j in (k - 1 - by, k - 2 - by))
-        off = "off" in (text.word(k + 1), text.word(k - 1 - by))
+        off = "off" in (text.word(k + 1), text.word(k - 1 - by)) or (
+            text.word(k - 1 - by) == "down" and text.stems[k - 2 - by] == stem("power")
+        )  # "keep it from powering down on its own"
         if not (verb and off):
             continue
         prevented = False

@@ -49,6 +49,9 @@ def _first_words(name: str, info: VarInfo) -> list[tuple[str, Any, tuple[str, ..
 # words of a scale's ends, whose superlatives the parser reads as ends of any setting
 _SCALE_WORDS = frozenset({"high", "low", "hi", "lo", "max", "min", "top", "long", "short"})
 
+# unit symbols a value's name joins to another word (V AC, A DC), as people spell them out
+_UNIT_SYMBOLS = {"v": "volt", "a": "amp", "w": "watt"}
+
 # words of pace that stand for a level of speed ("run it slow": LOW), never of heat
 _PACE_WORDS = frozenset({"slow", "fast"})
 
@@ -86,11 +89,16 @@ def value_phrases(
                     continue  # a number or a quantity ("3.0 oz"): read as a quantity
                 if not words:
                     continue
+                if form is not text and len(words) == 1 and words[0].casefold() in ("a", "i"):
+                    continue  # "µA" read as "a": a display code left a bare article names nothing
                 if len(words) == 1 and words[0] in LETTER_WORDS:
                     for alias in LETTER_WORDS[words[0]]:
                         phrases.append((name, value, (stem(alias),), 0.9))
                     continue
                 phrases.append((name, value, tuple(stem(w) for w in words), 1.0))
+                spelled = [_UNIT_SYMBOLS.get(w.casefold(), w) for w in words]
+                if len(words) > 1 and spelled != words:  # V AC: "the 60-volt AC range"
+                    phrases.append((name, value, tuple(stem(w) for w in spelled), 0.9))
                 ends = (str(info.values[0]), str(info.values[-1]))
                 scale = words[0] in _SCALE_WORDS  # "the highest humidity": read as an end
                 if len(words) == 1 and text in ends and len(info.values) >= 3 and not scale:

@@ -105,9 +105,17 @@ def of_a_setting(info: VarInfo, text: Text, k: int) -> bool:
     key = text.concepts[j] if j < len(text.concepts) else ""  # "the longest possible soak"
     if key in _OF_SETTING or (key and info.vocab.get(key, 0.0) > 0):
         return True
+    if key and key in _KIND_NOUNS.get(kind_of(text, k) or "", ()):
+        return True  # "the longest time the timer allows": the kind's own noun
     after = text.word(k + 1)
     return text.word(k - 1) == "its" and (after in CLAUSE_ENDS or after in (",", ""))
 
+
+_KIND_NOUNS = {
+    "time": frozenset(concept(w) for w in ("time", "duration")),
+    "temperature": frozenset(concept(w) for w in ("temperature",)),
+}
+"""The noun a superlative's kind is: "the longest time" grades the one open duration."""
 
 _CLOSERS = frozenset({",", "-", "and", "then", "but", "please", ""}) | CLAUSE_ENDS
 

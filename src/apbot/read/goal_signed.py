@@ -9,7 +9,9 @@ never touched.
 
 from __future__ import annotations
 
-from apbot.model.schema import NumericVariable
+from typing import Any
+
+from apbot.model.schema import DiscreteVariable, NumericVariable
 from apbot.read.goal_text import Text
 from apbot.read.goal_view import Goal, Model, domain_values
 from apbot.read.goal_vocab import STOP_WORDS
@@ -28,8 +30,10 @@ def signed_changes(view: Model, text: Text, goal: Goal, where: dict[str, int]) -
     setting takes that negative."""
     for name, value in list(goal.items()):
         info = view.infos.get(name)
-        if info is None or not isinstance(info.var, NumericVariable) or name not in where:
+        if info is None or name not in where:
             continue
+        if not isinstance(info.var, NumericVariable):
+            value = _signed_choice(info.var, value)  # KEY ♭6 … ♯6 listed "-6" … "+6"
         if not isinstance(value, int | float) or value <= 0:
             continue
         start = where[name]
@@ -38,9 +42,26 @@ def signed_changes(view: Model, text: Text, goal: Goal, where: dict[str, int]) -
         if not (_said_before(text, start, _DOWNWARD) or _said_behind(text, start)):
             continue
         domain = domain_values(view, info, goal)
-        negative = next((v for v in domain if abs(float(v) + float(value)) < 1e-9), None)
+        negative = next((v for v in domain if _opposite(v, float(value))), None)
         if negative is not None:
             goal[name] = negative
+
+
+def _opposite(v: Any, value: float) -> bool:
+    try:
+        return abs(float(v) + value) < 1e-9
+    except (TypeError, ValueError):
+        return False  # a word among the numbers (AUTO)
+
+
+def _signed_choice(var: Any, value: Any) -> float | None:
+    """A listed value written with a plus sign ("+2" of "-6" … "+6"), as its number."""
+    if not isinstance(var, DiscreteVariable) or not str(value).startswith("+"):
+        return None
+    try:
+        return float(str(value))
+    except ValueError:
+        return None
 
 
 def _said_before(text: Text, start: int, words: frozenset[str]) -> bool:

@@ -103,6 +103,29 @@ def said_steps(view: Model, instruction: str) -> str:
     return _STEPS.sub(semitones, instruction)
 
 
+_NUMBER_WORD = rf"(?:{_alt(_FIGURES)}|hundred|thousand)"
+_HYPHENATED = re.compile(
+    rf"\b{_NUMBER_WORD}(?:-(?:and-)?{_NUMBER_WORD})*-(?:and-)?(?:hundred|thousand)"
+    rf"(?:-(?:and-)?{_NUMBER_WORD})*\b",
+    re.IGNORECASE,
+)
+_HALF_THOUSAND = re.compile(rf"\b(?P<lead>{_UP_TO_99}|\d+) and a half thousand\b", re.IGNORECASE)
+
+
+def said_hyphenated(view: Model, instruction: str) -> str:
+    """ "the seven-hundred-and-fifty-volt range" as "seven hundred and fifty-volt" (a number
+    written as one compound before its unit), "six and a half thousand" as "6500"."""
+    del view
+
+    def spaced(match: re.Match[str]) -> str:
+        return match[0].replace("-", " ")
+
+    def half(match: re.Match[str]) -> str:
+        return str(1000 * _value(match["lead"]) + 500)
+
+    return _HALF_THOUSAND.sub(half, _HYPHENATED.sub(spaced, instruction))
+
+
 _POSSESSIVE = re.compile(rf"\b(?:([A-Za-z]+)\s+)?({_UP_TO_99}|\d+)'s\b", re.IGNORECASE)
 # words before "one's" that make it a pronoun, no number ("no one's home", "each one's part")
 _PRONOUN_AFTER = frozenset(

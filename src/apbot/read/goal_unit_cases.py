@@ -41,8 +41,9 @@ UNIT_WORDS = (
         }
     )
     | frozenset({"g", "oz", "ml", "l", "km", "mi", "miles", "kcal", "cal", "kj", "mph", "kmh"})
-    | frozenset({"mmhg", "kpa", "psi", "bar"})
-)  # pressure, as a blood-pressure cuff or a pump shows it
+    | frozenset({"mmhg", "kpa", "psi", "bar"})  # pressure, as a blood-pressure cuff shows it
+    | frozenset({"rpm", "rcf", "x g", "xg", "×g", "× g"})  # a rotor's speed, or its g-force
+)
 """Units a selector may offer for one quantity (a scale of temperature, of water hardness, of
 weight or distance): the values of a unit selector, never of a programme."""
 
@@ -121,7 +122,15 @@ def _unit_names(var: DiscreteVariable, unit: Any) -> list[list[str]]:
                 out.append(words)
                 if words in (["c"], ["f"]):  # °F is said "degrees Fahrenheit"
                     out.append([_SCALES[words[0]]])
+                out += _SAID_AS.get(" ".join(words), [])
     return out
+
+
+_G_FORCE = [["g"], ["x", "g"], ["times", "g"], ["g", "force"], ["xg"]]
+_SAID_AS = {"x g": _G_FORCE, "xg": _G_FORCE, "rcf": _G_FORCE}
+_SAID_AS["rpm"] = [["revolutions", "a", "minute"], ["revolutions", "per", "minute"]]
+"""How people say a rotor's units: "14,000 times g", "800 g" (beside an rpm / x g selector the
+g is the g-force, no gram), "6500 revolutions a minute"."""
 
 
 _SCALES = {"c": "celsius", "f": "fahrenheit"}

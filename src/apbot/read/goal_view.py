@@ -115,6 +115,10 @@ def appliance_said(model: ApplianceModel) -> str:
     return f"{own_name(model)} {model.appliance.category.replace('_', ' ')}".strip().casefold()
 
 
+_OWN_NOUNS = frozenset({"key"})
+"""Stop words (said of any key) that are a setting's whole name: a karaoke's musical KEY."""
+
+
 def _add_vocab(info: VarInfo, text: str, weight: float) -> None:
     for word in name_words(text):
         if word in STOP_WORDS or len(word) < 2:
@@ -153,6 +157,8 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         _add_vocab(info, name, 1.0)
         if var.label:
             _add_vocab(info, var.label, 1.0)
+        if not info.vocab and set(name_words(name.casefold())) <= _OWN_NOUNS:
+            info.vocab[concept(name)] = 0.8  # a setting named KEY (a song's pitch): its word
         _add_doers(info, f"{name} {var.label or ''}", appliance)
         add_nouns(info, f"{name} {var.label or ''}")
         add_timed_stops(info, f"{name} {var.label or ''}")
@@ -180,6 +186,9 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
                 info.role, info.on, info.off = "switch", switch[0], switch[1]
             if numeric_values(info.values):
                 info.dimension = _dimension_by_name(info)
+                shown = _shown_unit(var)  # "{value} s": a chart of times in seconds
+                if shown:
+                    info.dimension = (unit_kind(shown) or (info.dimension, 0))[0]
             for dimension in sorted(quantity_dimensions(info.values)):
                 _add_vocab(info, _DIMENSION_WORDS.get(dimension, ""), 0.6)  # "450 W": power
         infos[name] = info
@@ -374,6 +383,13 @@ def _counted_by_name(name: str, var: NumericVariable) -> NumericVariable:
 
 
 _DIMENSION_WORDS = {"power": "power", "temperature": "temperature", "mass": "weight"}
+
+
+def _shown_unit(var: DiscreteVariable) -> str:
+    """The unit a list of numbers prints after each of them ("{value} s"), or ""."""
+    show = var.show if isinstance(var.show, str) else ""
+    rest = show.strip()[len("{value}") :].strip() if show.strip().startswith("{value}") else ""
+    return rest if rest and "{" not in rest else ""
 
 
 def _dimension_by_name(info: VarInfo) -> str | None:

@@ -47,6 +47,8 @@ def stem(word: str) -> str:
     (True, True)
     """
     w = word.casefold()
+    if w.isdigit():
+        return w  # a number is no word: "1000" is not "100" with a doubled letter
     if w.endswith("'s"):
         w = w[:-2]  # the clock's hour
     w = _IRREGULAR.get(w, w)  # "feet" for a FOOT zone
