@@ -173,10 +173,17 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "welding_machine": 3,
     "dog_training_collar": 3,
     # The twenty-sixth blind set (helper blind29n, 7 December 2026, the sixth 7 December session):
-    # blind for this round's work.
+    # development data since the seventh 7 December session.
     "multimeter": 3,
     "enlarger_timer": 3,
     "centrifuge": 3,
     "magnetic_stirrer": 3,
     "karaoke_machine": 3,
+    # The twenty-seventh blind set (helper blind30, 7 December 2026, the seventh 7 December
+    # session): blind for this round's work.
+    "camera_flash": 3,
+    "transfer_press": 3,
+    "powerchair_controller": 3,
+    "tennis_ball_machine": 3,
+    "scoreboard_controller": 3,
 }
