@@ -240,6 +240,9 @@ def find_labels(manual: Manual, tokens: list[str]) -> dict[str, Label]:
         label.mentions = _mentions(manual.units, token, label)
         if label.line is None and label.mentions:
             label.line = manual.units[label.mentions[0]].line
+    from apbot.read.labels_sign_pairs import narrow_sign_pairs  # (it reads Label and SYMBOLS)
+
+    narrow_sign_pairs(manual.units, labels)  # "TIME ▲" is no mention of "SPEED ▲"
     return labels
 
 

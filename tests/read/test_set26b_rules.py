@@ -1,0 +1,114 @@
+"""Rules of the set26b session (the twenty-sixth set's centrifuge, stirrer and karaoke speaker
+read as development data), each on a small manual in our own words: a sentence with a bare
+arrow names only the pair whose name it says (``labels_sign_pairs``), a speed takes an rpm
+range named elsewhere (``quantity_units``), a range told as spans of amounts with a step each
+(``values_span_steps``), also as list items under another key's sentence
+(``evidence_whose._item_run``)."""
+
+from __future__ import annotations
+
+from apbot.read import read_manual
+from apbot.read.values import Range
+from apbot.read.values_span_steps import find_span_steps
+
+# a dryer cabinet with a pair of arrows per setting, printed with the setting's name
+CABINET = """
+Borell DC-2 drying cabinet
+
+  Keys: ⏻   [FAN ▲] [FAN ▼]   [TIME ▲] [TIME ▼]
+
+  Specifications
+
+  | Item      | DC-2           |
+  |-----------|----------------|
+  | Fan       | 20 - 80 %      |
+
+DRYING TIME
+
+Use TIME ▲ and TIME ▼ to set the drying time from 10 to 240 minutes in steps of 10 minutes.
+
+FAN
+
+FAN ▲ / ▼ change the air flow.
+"""
+CABINET_ACTIONS = [
+    "press_power",
+    "press_fan_up",
+    "press_fan_down",
+    "press_time_up",
+    "press_time_down",
+]
+
+
+def test_a_bare_arrow_sentence_is_the_pair_it_names() -> None:
+    """ "Use TIME ▲ and TIME ▼" is the time's pair: the fan does not take the time's range."""
+    model = read_manual(CABINET, CABINET_ACTIONS).model
+    fan = next(v for n, v in model.variables.items() if n.startswith("fan"))
+    assert fan.type != "time"
+    assert all(r[1] <= 100 for r in fan.ranges)
+
+
+# a lab shaker whose speed pair has no range in its own sentences: the data table gives it
+SHAKER = """
+Orbis OS-4 orbital shaker
+
+  Keys: ⏻   [SPEED ▲] [SPEED ▼]   [TIME ▲] [TIME ▼]
+
+TECHNICAL DATA
+
+  | Item        | OS-4            |
+  |-------------|-----------------|
+  | Speed       | 50 - 800 rpm    |
+  | Run time    | 1 - 99 min      |
+
+SETTING THE SPEED
+
+SPEED ▲ / ▼ change the speed by 10 rpm a press.
+"""
+
+
+def test_a_speed_takes_an_rpm_range_named_elsewhere() -> None:
+    model = read_manual(
+        SHAKER,
+        ["press_power", "press_speed_up", "press_speed_down", "press_time_up", "press_time_down"],
+    ).model
+    speed = model.variables["speed"]
+    assert speed.type == "numeric"
+    assert speed.ranges[0][0] == 50 and speed.ranges[-1][1] == 800
+
+
+def test_spans_of_amounts_each_with_its_step() -> None:
+    told = (
+        "Between 15 seconds and 5 minutes each press moves the delay by 15 seconds. "
+        "Between 5 and 45 minutes each press moves it by 5 minutes."
+    )
+    assert find_span_steps(told) == [Range(15, 300, "s", 15), Range(300, 2700, "s", 300)]
+    listed = "2 to 20 litres in 2-litre steps, then 20 to 60 litres in steps of 5 litres"
+    assert find_span_steps(listed) == [Range(2, 20, "l", 2), Range(20, 60, "l", 5)]
+    grams = "100 to 500 g in 50-g steps, then 500 to 2000 g in steps of 100 g."
+    assert find_span_steps(grams) == [Range(100, 500, "g", 50), Range(500, 2000, "g", 100)]
+    assert find_span_steps("Between 1 and 10 minutes each press adds 1 minute.") == []
+
+
+# a fan heater's off-timer told as spans in list items, under a sentence about another key
+HEATER = """
+Calor FH-3 fan heater
+
+  Controls: ⏻   OFF-TIMER   HEAT knob
+
+OFF-TIMER
+
+  1. Press OFF-TIMER.
+  2. Within 5 seconds, turn the HEAT knob:
+     - 1 to 3 hours in 10-minute clicks,
+     - then 3 to 12 hours in 30-minute clicks.
+"""
+
+
+def test_spans_told_as_list_items() -> None:
+    model = read_manual(
+        HEATER, ["press_power", "press_off_timer", "turn_heat_cw", "turn_heat_ccw"]
+    ).model
+    timer = next(v for n, v in model.variables.items() if "timer" in n)
+    assert timer.type == "time"
+    assert [r[2] for r in timer.ranges] == [600, 1800]
