@@ -112,3 +112,42 @@ def test_spans_told_as_list_items() -> None:
     timer = next(v for n, v in model.variables.items() if "timer" in n)
     assert timer.type == "time"
     assert [r[2] for r in timer.ranges] == [600, 1800]
+
+
+# a sous-vide stick whose knobs are turned for a value and pushed to switch something
+STICK = """
+Therma SV-2 sous-vide stick
+
+  Panel: ⏻   TEMP knob   PUMP knob
+
+  Display lamps:  WARM: heating is on    FLOW: the pump is on
+
+  ⏻        standby / on
+  TEMP     turn: water temperature; push: heating on / off
+  PUMP     turn: pump speed; push: pump on / off
+
+Turn the TEMP knob to set the water temperature from 40 to 90 °C in steps of 0.5 °C.
+Turn the PUMP knob to set the pump speed from 1 to 5.
+"""
+STICK_ACTIONS = [
+    "press_power",
+    "turn_temp_cw",
+    "turn_temp_ccw",
+    "push_temp",
+    "turn_pump_cw",
+    "turn_pump_ccw",
+    "push_pump",
+]
+
+
+def test_a_knob_pushed_switches_what_its_push_part_names() -> None:
+    model = read_manual(STICK, STICK_ACTIONS).model
+    heating = model.variables["heating"]
+    assert heating.values == ["off", "on"]
+    assert heating.show == {"off": "", "on": "WARM"}
+    toggles = {
+        f.variable: f.actions for steps in model.features.values() for f in steps if f.variable
+    }
+    assert toggles["heating"] == ["push_temp"]
+    temp = next(n for n, v in model.variables.items() if v.type == "numeric" and v.unit == "°C")
+    assert "turn_temp_cw" in toggles[temp]
