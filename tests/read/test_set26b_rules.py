@@ -151,3 +151,77 @@ def test_a_knob_pushed_switches_what_its_push_part_names() -> None:
     assert toggles["heating"] == ["push_temp"]
     temp = next(n for n, v in model.variables.items() if v.type == "numeric" and v.unit == "°C")
     assert "turn_temp_cw" in toggles[temp]
+
+
+# a hot-air station whose FINE key flips between two nozzles, each with its own heat range
+STATION = """
+Vapora HG-2 hot air station
+
+  Panel: ⏻   FINE   AIR   HEAT knob
+
+  ⏻        standby / on
+  FINE     heat control by WIDE or by FINE nozzle
+  AIR      air pump on / off
+  HEAT     turn: heat
+
+NOZZLES
+
+  WIDE    the heat is the air temperature at the wide nozzle. Range 100-450 °C.
+          One click of the HEAT knob changes it by 10 °C. Starting value 300 °C.
+  FINE    the heat is the temperature at the fine tip. Range 150-400 °C.
+          One click changes it by 5 °C. Starting value 250 °C.
+
+Press FINE to change from one nozzle mode to the other; the lamp shows WIDE or FINE.
+
+A change of mode resets the heat to the mode's starting value and switches the air off.
+"""
+STATION_ACTIONS = ["press_power", "press_fine", "press_air", "turn_heat_cw", "turn_heat_ccw"]
+
+
+def test_a_key_named_as_one_of_two_modes_chooses_them_and_each_has_its_range() -> None:
+    model = read_manual(STATION, STATION_ACTIONS).model
+    mode = model.variables["fine"]
+    assert mode.values == ["wide", "fine"]
+    assert mode.show == {"wide": "WIDE", "fine": "FINE"}
+    heat = next(v for v in model.variables.values() if v.depends_on == "fine")
+    assert heat.cases["wide"].ranges == [(100, 450, 10)]
+    assert heat.cases["fine"].ranges == [(150, 400, 5)]
+    assert (heat.cases["wide"].initial, heat.cases["fine"].initial) == (300, 250)
+    step = next(f for steps in model.features.values() for f in steps if f.variable == "fine")
+    assert step.set == {"air": "off"}  # "switches the air off": that, and no other reset
+    assert step.reset == []
+
+
+# a desk lamp whose keys print a sign glued to the name, and whose chart marks its start
+LAMP = """
+Lumo DL-4 desk lamp
+
+  Keys: ⏻   [GLOW+] [GLOW−]   EFFECT
+
+SAFETY
+
+Do not look into the light. Keep the lamp away from water. Unplug it before cleaning.
+
+BRIGHTNESS
+
+The lamp remembers its brightness. GLOW + and GLOW − set the brightness from 0 to 20.
+
+EFFECT
+
+Each press of EFFECT selects the next effect:
+
+    FADE  >  WAVE  >  SPARK  >  FADE ...
+
+    FADE   - the light fades in and out slowly (factory setting)
+    WAVE   - a wave runs round the shade
+"""
+
+
+def test_a_key_printed_with_a_glued_sign_is_found_spaced_and_a_bracket_marks_its_clause() -> None:
+    model = read_manual(
+        LAMP, ["press_power", "press_glow_up", "press_glow_down", "press_effect"]
+    ).model
+    glow = next(v for n, v in model.variables.items() if n.startswith("glow"))
+    assert tuple(glow.ranges[0][:2]) == (0, 20)
+    effect = next(v for n, v in model.variables.items() if n.startswith("effect"))
+    assert effect.initial == "fade"

@@ -141,8 +141,11 @@ class EvidenceReader(ValueChooser, RangeReader, AnywhereReader):
             item = unit.bullet and unit.step is None  # (an item's spans are its lead's)
             told = text if item else _with_rows(units, i) if unit.cells else _with_items(units, i)
             if item and not find_stepped_pieces(text):
-                run = _item_run(units, i)  # "- 1 to 10 min in 1-min clicks," "- then 10 to …"
-                told = run if len(find_stepped_pieces(run)) >= 2 else told
+                run, lead = _item_run(units, i)  # "- 1 to 10 min in 1-min clicks," "- then …"
+                if len(find_stepped_pieces(run)) >= 2 and not (
+                    lead >= 0 and _presses_another(units[lead].text, other_labels, own)
+                ):
+                    told = run  # (not under "Press DELAY to set …:", DELAY's own items)
             pieced = (
                 len(find_stepped_pieces(told)) >= 2  # its steps, item by item, pressing
                 and self._only_pair_named(i, tokens)  # the pair, not another key's setting

@@ -42,4 +42,9 @@ def narrow_sign_pairs(units: list[Unit], labels: dict[str, Label]) -> None:
         said = [rf"{re.escape(w)}\w*" if len(w) >= 4 else rf"{re.escape(w)}\b" for w in words(name)]
         own = re.compile(r"\b(?:" + "|".join(said) + r")", re.IGNORECASE)
         label = labels[token]
-        label.mentions = [i for i in label.mentions if own.search(units[i].text)]
+        kept = {i for i in label.mentions if own.search(units[i].text)}
+        # a sentence or row led by the setting's name ("Steeping time: 1 to 10 minutes") is
+        # about the pair as surely as the bare sign was
+        led = re.compile(r"^\W*(?:" + "|".join(said) + r")\b", re.IGNORECASE)
+        kept |= {i for i, u in enumerate(units) if led.match(u.text)}
+        label.mentions = sorted(kept)
