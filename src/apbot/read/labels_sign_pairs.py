@@ -21,6 +21,8 @@ def _sign_of(text: str) -> tuple[str, str] | None:
     m = re.fullmatch(r"([A-Za-z][A-Za-z .'-]*?)\s?(\S)", text.strip())
     if m is None or m.group(2) not in _SIGNS or not words(m.group(1)):
         return None
+    if max(len(w) for w in words(m.group(1))) < 3:
+        return None  # a channel's letter ("A ▲", "B ▲"): too short to tell its sentences apart
     return m.group(1), m.group(2)
 
 
@@ -38,7 +40,7 @@ def narrow_sign_pairs(units: list[Unit], labels: dict[str, Label]) -> None:
         if len(by_sign[sign]) < 2:
             continue
         # a name of four letters or more may be shortened (TEMP for "temperature"); a
-        # shorter one (a channel "A", "B") is said whole
+        # shorter one ("FAN") is said whole
         said = [rf"{re.escape(w)}\w*" if len(w) >= 4 else rf"{re.escape(w)}\b" for w in words(name)]
         own = re.compile(r"\b(?:" + "|".join(said) + r")", re.IGNORECASE)
         label = labels[token]
