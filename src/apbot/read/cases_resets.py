@@ -114,6 +114,10 @@ def apply_resets(b: Builder) -> None:
         if not _CLEARS_RE.search(_NAMED_RESET_RE.sub("", units[at].text)):
             return  # ("resets the texture to Regular" names its value: no other reset)
         others = [n for n in others if n not in sets]  # "… the timer is cleared and the fan …"
+    elif _NAMED_RESET_RE.search(units[at].text) and not _CLEARS_RE.search(
+        _NAMED_RESET_RE.sub("", units[at].text)
+    ):
+        return  # "resets the set point to the mode's starting value": that one, no others
     if not others:
         return
     for steps in b.features.values():
@@ -141,6 +145,8 @@ def _set_back(b: Builder, text: str, choice: str, fixed: set[str]) -> dict[str, 
             text,
             re.IGNORECASE,
         )
+        if not said and {"off", "on"} <= set(values):  # "… switches the heating off"
+            said = re.search(rf"\b(?:switch|turn)\w*\s+the\s+{noun}\s+(off)\b", text, re.I)
         if not said:
             continue
         told = said.group(1).lower()

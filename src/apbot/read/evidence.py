@@ -26,6 +26,7 @@ from apbot.read.evidence_whose import (
     _after_own,
     _fitting_step,
     _foreign_units,
+    _item_run,
     _named_only,
     _presses_another,
     _with_items,
@@ -139,6 +140,12 @@ class EvidenceReader(ValueChooser, RangeReader, AnywhereReader):
             unit = units[i]
             item = unit.bullet and unit.step is None  # (an item's spans are its lead's)
             told = text if item else _with_rows(units, i) if unit.cells else _with_items(units, i)
+            if item and not find_stepped_pieces(text):
+                run, lead = _item_run(units, i)  # "- 1 to 10 min in 1-min clicks," "- then …"
+                if len(find_stepped_pieces(run)) >= 2 and not (
+                    lead >= 0 and _presses_another(units[lead].text, other_labels, own)
+                ):
+                    told = run  # (not under "Press DELAY to set …:", DELAY's own items)
             pieced = (
                 len(find_stepped_pieces(told)) >= 2  # its steps, item by item, pressing
                 and self._only_pair_named(i, tokens)  # the pair, not another key's setting

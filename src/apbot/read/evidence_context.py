@@ -163,6 +163,13 @@ class ContextReader(OwnWords):
             )
             if m:  # ("… starts in HOT. c) Press ⏻ again to switch off.": its own sentence)
                 said = re.split(r"[.;!?]\s", m.group(1))[0]
+                text = self.manual.units[i].text
+                opened = text.rfind("(", 0, m.start())
+                inner = said.split(")")[0]
+                if opened > text.rfind(")", 0, m.start()) and not _names_any(ev.values, inner):
+                    # "PULSE - pulses with the music (factory setting) RAINBOW - …": the
+                    # bracket marks what its clause named before it, not what follows
+                    said = re.split(r"[.;!?]\s", text[:opened])[-1]
                 for v in ev.values:
                     if re.search(rf"(?<!\w){re.escape(v)}(?!\w)", said, re.I):  # ("55°)")
                         ev.initial, ev.initial_at = v, i
@@ -189,6 +196,11 @@ _SAID_PRESELECTED = (
 # a value's own bracket saying it is where the setting starts: "(start setting)", "(default)",
 # "(factory setting)"
 _MARKED_START = r"\(\s*(?:start(?:ing)?|default|factory|initial)(?:\s+(?:setting|value))?\s*\)"
+
+
+def _names_any(values: list[str], text: str) -> bool:
+    """Whether the text names one of the values ("(from the factory d15, …)")."""
+    return any(re.search(rf"(?<!\w){re.escape(v)}(?!\w)", text, re.I) for v in values)
 
 
 def marked_start(value: str, text: str) -> bool:

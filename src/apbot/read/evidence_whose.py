@@ -143,3 +143,20 @@ def _with_items(units: list[Unit], i: int) -> str:
             break
         texts.append(unit.text)
     return " ".join(texts)
+
+
+def _item_run(units: list[Unit], i: int) -> tuple[str, int]:
+    """A list item with the items beside it ("- 1 to 10 minutes in 1-minute clicks," then "-
+    then 10 to 120 minutes in 5-minute clicks."): the run of items a step told in pieces
+    spans, and the unit leading them ("turn the SPEED knob to set the time:")."""
+    lo = i
+    while lo > 0 and lo > i - 4 and _plain_item(units[lo - 1]):
+        lo -= 1
+    hi = i + 1
+    while hi < len(units) and hi < i + 5 and _plain_item(units[hi]):
+        hi += 1
+    return " ".join(u.text for u in units[lo:hi]), lo - 1
+
+
+def _plain_item(unit: Unit) -> bool:
+    return unit.bullet and unit.step is None and not unit.cells

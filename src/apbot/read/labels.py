@@ -240,6 +240,9 @@ def find_labels(manual: Manual, tokens: list[str]) -> dict[str, Label]:
         label.mentions = _mentions(manual.units, token, label)
         if label.line is None and label.mentions:
             label.line = manual.units[label.mentions[0]].line
+    from apbot.read.labels_sign_pairs import narrow_sign_pairs  # (it reads Label and SYMBOLS)
+
+    narrow_sign_pairs(manual.units, labels)  # "TIME ▲" is no mention of "SPEED ▲"
     return labels
 
 
@@ -328,7 +331,8 @@ def _mentions(units: list[Unit], token: str, label: Label) -> list[int]:
     if label.line is not None:
         for text in {label.text, *re.split(r"\s*/\s*", label.text)} - {""}:
             if len(text) >= 2 or not text.isalnum():
-                patterns.append(re.compile(rf"(?<![A-Za-z0-9]){re.escape(text)}(?![A-Za-z0-9])"))
+                printed = _sign_spaced(text)  # "VOL+" also as "VOL +", "VOL −" as "VOL−"
+                patterns.append(re.compile(rf"(?<![A-Za-z0-9]){printed}(?![A-Za-z0-9])"))
     plain = r"[\s-]+".join(re.escape(w) for w in tw)
     if plain:
         patterns.append(re.compile(rf"\b{plain}\w*(?:\s+\w+)?\s+{CONTROL_NOUNS}\b", re.IGNORECASE))
@@ -346,6 +350,15 @@ def _mentions(units: list[Unit], token: str, label: Label) -> list[int]:
         else:
             patterns.append(re.compile(re.escape(symbol)))
     return [i for i, u in enumerate(units) if any(p.search(u.text) for p in patterns)]
+
+
+def _sign_spaced(text: str) -> str:
+    """A pattern for a key printed as a word and a sign, with or without a space between them
+    ("VOL+" is written "VOL +" in the prose, "TEMP ▲" as "TEMP▲"); else the text as it is."""
+    m = re.fullmatch(r"([A-Za-z][A-Za-z .'-]*?)\s?([+−–\-▲▼△▽<>◀▶◄►])", text)
+    if m is None:
+        return re.escape(text)
+    return rf"{re.escape(m.group(1))}\s?{re.escape(m.group(2))}"
 
 
 def _inflected(label: str) -> re.Pattern[str] | None:

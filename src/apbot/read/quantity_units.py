@@ -37,6 +37,7 @@ QUANTITY_FAMILIES = {  # a setting named for a quantity takes a range in one of 
 QUANTITY_WORDS = {
     "volume": "ml", "capacity": "ml", "weight": "g",
     "watt": "W", "watts": "W", "wattage": "W", "output": "W", "spin": "rpm", "rpm": "rpm",
+    "speed": "rpm",  # (a speed read with a unit is rpm; km/h, spm are read without one)
 }  # fmt: skip
 
 

@@ -46,6 +46,7 @@ from apbot.read.hold_seconds import hold_seconds, pair_hold_seconds
 from apbot.read.initials import read_initials
 from apbot.read.keyed_cycles import read_keyed_cycles
 from apbot.read.labels import find_labels
+from apbot.read.mode_cases import read_mode_cases
 from apbot.read.numbered_keys import read_numbered_keys
 from apbot.read.off_positions import read_off_positions
 from apbot.read.off_words import read_held_off_words, read_off_words
@@ -104,6 +105,7 @@ def read_manual(
     unit_ranges(builder)
     table_choice_ranges(builder)  # ("| MMA | Arc force | 0 ... 10 |": the Range column's)
     choice_ranges(builder)  # ("MMA  20 - 160 A" / "TIG  10 - 200 A": a range per choice)
+    read_mode_cases(builder)  # ("the lamp shows PLATE or PROBE"; a paragraph per mode)
     read_only_modes(builder)
     read_fixed_in_mode(builder)  # "In Sleep mode the speed is fixed at 1"
     read_value_keys(builder)  # ("Press 33 or 45 to select that speed": one setting)

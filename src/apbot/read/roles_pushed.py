@@ -9,6 +9,7 @@ import re
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.labels import words
+from apbot.read.pushed_parts import pushed_part_toggle, pushed_toggle
 from apbot.read.roles_common import label_of, mentions_of, numeric_list, turns, var_name
 from apbot.read.roles_lists import list_evidence
 from apbot.read.shapes import CHOICE_WORDS, Evidence
@@ -33,6 +34,10 @@ def pushed_dials(
             left.append(key)
             continue
         cw, ccw = turns(dials[token])
+        pushed = pushed_part_toggle(b, key)
+        if pushed:  # "TEMP  turn: set point; push: heating on / off": the push is that toggle
+            pushed_toggle(b, key, pushed)
+            continue
         if push_runs(b, token):
             _push_toggles_run(b, key)  # "Push to start or pause.": the turns alone set it
             continue

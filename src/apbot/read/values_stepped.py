@@ -20,6 +20,7 @@ from apbot.read.values import (
     seconds,
     unit_name,
 )
+from apbot.read.values_span_steps import find_span_steps
 
 # the words a step of minutes or hours is counted in ("30 minutes", "2 hrs"), as written out
 MINUTES_HOURS = r"minutes?|mins?|hours?|hrs?"
@@ -57,7 +58,8 @@ def find_stepped_pieces(text: str) -> list[Range]:
     to 3:00 each click is ten minutes") or amounts in their unit ("Range Step 1 – 12 h 1 h 12
     – 24 h 2 h"); else []."""
     pieces = _stepped_clock_pieces(text) or _each_press_pieces(text)
-    return pieces or _stepped_amount_pieces(text)
+    # (or amounts in prose: "between 30 seconds and 10 minutes each press … by 30 seconds")
+    return pieces or _stepped_amount_pieces(text) or find_span_steps(text)
 
 
 _EACH_PRESS_PIECE_RE = re.compile(  # "from 1:00 to 3:00 each click is ten minutes"
