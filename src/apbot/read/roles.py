@@ -42,8 +42,8 @@ from apbot.read.roles_heldvalues import held_section_list, list_of_earlier_key, 
 from apbot.read.roles_holdcell import held_toggle, held_values, way_switched
 from apbot.read.roles_hourmin import assign_hour_minute, hour_minute_keys
 from apbot.read.roles_keyed import assign_keyed_amounts
-from apbot.read.roles_lent_dial import lent_dial_keys
 from apbot.read.roles_legends import _hold_row, _named_cycle, _numbered
+from apbot.read.roles_lent_dial import add_lent, lent_dial_keys
 from apbot.read.roles_lists import (
     dial_values,
     list_evidence,
@@ -322,8 +322,8 @@ def assign(b: Builder) -> None:
             silent.append(key)
 
     # "1. Press BASS. 2. Turn the VOLUME knob: −6 to +6 dB": a named dial lent to a key
-    lent_keys = lent_dial_keys(b, silent, dials)
-    silent = [k for k in silent if k not in lent_keys]
+    lent = lent_dial_keys(b, silent, dials)
+    silent = [k for k in silent if k not in [found[0] for found in lent]]
     # keys the manual lists together: one variable with a go-to value each
     groups = listed_groups(
         b, [k for k in silent if k.skill == "press" and not set(words(k.token)) & FUNCTION_WORDS]
@@ -335,6 +335,7 @@ def assign(b: Builder) -> None:
         b, entry_keys, silent, evidence, pairs, digits, dials, generic_dials, adders, keyed_time
     )
     silent = assign_dials(b, dials, silent)
+    add_lent(b, lent, dials)  # (after the dial's own setting: its turns are used then)
     add_clock_steps(b, clocks)
     assign_leftovers(b, silent, evidence)
     assign_keyed_amounts(b, digits)

@@ -59,23 +59,30 @@ def _ranges(text: str) -> list[Range]:
 
 def _pressed(b: Builder, key: ActionInfo) -> re.Pattern[str]:
     label = re.escape(label_of(b, key.controls[0]))
-    return re.compile(rf"^\W*(?:\d+[.)]\s*)?(?:press|touch|push)\w*\s+(?:the\s+)?{label}(?!\w)", re.I)
+    return re.compile(
+        rf"^\W*(?:\d+[.)]\s*)?(?:press|touch|push)\w*\s+(?:the\s+)?{label}(?!\w)", re.I
+    )
+
+
+Lent = tuple[ActionInfo, str, int, int]  # the key, the dial, the key's step, the turn step
 
 
 def lent_dial_keys(
     b: Builder, keys: list[ActionInfo], dials: dict[str, list[ActionInfo]]
-) -> list[ActionInfo]:
-    """Give each press key in ``keys`` that a step hands a named dial its own setting, set by
-    that dial after the key; returns the keys used."""
+) -> list[Lent]:
+    """The press keys in ``keys`` that a step hands a named dial: each with the dial, the unit
+    pressing it and the unit turning the dial (their settings are added by :func:`add_lent`,
+    once the dial has its own)."""
     units = b.manual.units
-    used: list[ActionInfo] = []
+    found: list[Lent] = []
     for dial, actions in dials.items():
         cw, ccw = turns(actions)
         if not (cw and ccw) or dial not in b.labels:
             continue
-        lent: dict[str, tuple[ActionInfo, int, int]] = {}  # key → (key, its step, turn step)
+        lent: dict[str, Lent] = {}
+        taken = {k.name for k, *_ in found}
         for key in keys:
-            if key.skill != "press" or key in used or key.controls[0] not in b.labels:
+            if key.skill != "press" or key.name in taken or key.controls[0] not in b.labels:
                 continue
             pressed = _pressed(b, key)
             for i in mentions_of(b, key.controls[0]):
@@ -83,10 +90,10 @@ def lent_dial_keys(
                     continue
                 j = _turn_step(b, i, dial)
                 if j is not None and _ranges(units[j].text):
-                    lent[key.name] = (key, i, j)
+                    lent[key.name] = (key, dial, i, j)
                     break
         for key in keys:  # "3. Press TREBLE to adjust the treble in the same way"
-            if key.skill != "press" or key.name in lent or key in used or not lent:
+            if key.skill != "press" or key.name in lent or key.name in taken or not lent:
                 continue
             if key.controls[0] not in b.labels:
                 continue
@@ -95,28 +102,35 @@ def lent_dial_keys(
                 text = units[i].text
                 if not (pressed.search(text) and _SAME_WAY_RE.search(text)):
                     continue
-                before = [v for v in lent.values() if v[2] < i and units[v[1]].heading == units[i].heading]
+                heading = units[i].heading
+                before = [v for v in lent.values() if v[3] < i and units[v[2]].heading == heading]
                 if before:
-                    lent[key.name] = (key, i, before[-1][2])
+                    lent[key.name] = (key, dial, i, before[-1][3])
                     break
-        for key, i, j in lent.values():
-            text = units[j].text
-            ev = Evidence(ranges=_ranges(text), range_at=j)
-            step = find_step(text)
-            if step is not None:
-                ev.step, ev.step_at = step, j
-            var = b.add_number(var_name(b, key), label_of(b, key.controls[0]), ev, cyclic=False)
-            b.feature(
-                f"set_{var}",
-                [
-                    {"actions": [key.name]},
-                    {
-                        "actions": cw + ccw,
-                        "variable": var,
-                        "effect": {**{a: "next" for a in cw}, **{a: "prev" for a in ccw}},
-                    },
-                ],
-            )
-            b.note(f"features.set_{var}", f"{key.name} then the {dial} dial's turns", i)
-            used.append(key)
-    return used
+        found += lent.values()
+    return found
+
+
+def add_lent(b: Builder, found: list[Lent], dials: dict[str, list[ActionInfo]]) -> None:
+    """A setting per key of ``found``, named after it, its range read in the turn step, set by
+    pressing the key and then turning the dial."""
+    for key, dial, i, j in found:
+        cw, ccw = turns(dials[dial])
+        text = b.manual.units[j].text
+        ev = Evidence(ranges=_ranges(text), range_at=j)
+        step = find_step(text)
+        if step is not None:
+            ev.step, ev.step_at = step, j
+        var = b.add_number(var_name(b, key), label_of(b, key.controls[0]), ev, cyclic=False)
+        b.feature(
+            f"set_{var}",
+            [
+                {"actions": [key.name]},
+                {
+                    "actions": cw + ccw,
+                    "variable": var,
+                    "effect": {**{a: "next" for a in cw}, **{a: "prev" for a in ccw}},
+                },
+            ],
+        )
+        b.note(f"features.set_{var}", f"{key.name} then the {dial} dial's turns", i)
