@@ -50,3 +50,39 @@ def test_a_key_adjusted_in_the_same_way_takes_the_dial_too() -> None:
     reverb = next(f for f in model.features.values() if f[0].actions == ["press_reverb"])
     assert len(reverb) == 2 and reverb[1].variable is not None
     assert set(reverb[1].actions) == {"turn_gain_cw", "turn_gain_ccw"}
+
+
+# a glue lamp whose time keys each set the hardening time and switch the lamp on
+GLUE_LAMP = """
+Brixo GL-3 glue curing lamp
+
+    ┌─────┐ ┌─────┐ ┌─────┐
+    │ 15s │ │ 45s │ │ 90s │   (MODE)
+    └─────┘ └─────┘ └─────┘
+
+THE KEYS
+
+  Key      Its job
+  ──────   ──────────────────────────────────────────────────────────────
+  15s      Sets the hardening time to 15 seconds and starts the lamp at once.
+  45s      Sets the hardening time to 45 seconds and starts the lamp at once.
+  90s      Sets the hardening time to 90 seconds and starts the lamp at once.
+  MODE     Chooses UV or WHITE light.
+"""
+
+GLUE_ACTIONS = ["press_15s", "press_45s", "press_90s", "press_mode"]
+
+
+def test_keys_printed_with_amounts_set_one_setting_and_start() -> None:
+    model = read_manual(GLUE_LAMP, GLUE_ACTIONS).model
+    var = model.variables["hardening_time"]
+    assert [list(r) for r in var.ranges] == [[15, 45, 30], [45, 90, 45]]  # type: ignore[union-attr]
+    sets = {
+        f[0].actions[0]: f[0].set for f in model.features.values() if f[0].actions[0][-1] == "s"
+    }
+    assert sets == {
+        "press_15s": {"hardening_time": 15},
+        "press_45s": {"hardening_time": 45},
+        "press_90s": {"hardening_time": 90},
+    }
+    assert "running" in model.variables

@@ -18,6 +18,7 @@ from apbot.read.held_flips import assign_flips, flipped_values
 from apbot.read.labels import words
 from apbot.read.press_hold_pairs import press_hold_pairs
 from apbot.read.roles_again import toggled_again
+from apbot.read.roles_amount_keys import amount_keys
 from apbot.read.roles_amounts import ADD_RE, assign_amounts
 from apbot.read.roles_common import (
     FUNCTION_WORDS,
@@ -321,9 +322,12 @@ def assign(b: Builder) -> None:
         else:
             silent.append(key)
 
+    # keys printed with amounts ("10s 30s 60s"): one setting they set directly
+    shortcuts = amount_keys(b, silent)
+    silent = [k for k in silent if k not in shortcuts]
     # "1. Press BASS. 2. Turn the VOLUME knob: −6 to +6 dB": a named dial lent to a key
-    lent = lent_dial_keys(b, silent, dials)
-    silent = [k for k in silent if k not in [found[0] for found in lent]]
+    dial_lent = lent_dial_keys(b, silent, dials)
+    silent = [k for k in silent if k not in [found[0] for found in dial_lent]]
     # keys the manual lists together: one variable with a go-to value each
     groups = listed_groups(
         b, [k for k in silent if k.skill == "press" and not set(words(k.token)) & FUNCTION_WORDS]
@@ -335,7 +339,7 @@ def assign(b: Builder) -> None:
         b, entry_keys, silent, evidence, pairs, digits, dials, generic_dials, adders, keyed_time
     )
     silent = assign_dials(b, dials, silent)
-    add_lent(b, lent, dials)  # (after the dial's own setting: its turns are used then)
+    add_lent(b, dial_lent, dials)  # (after the dial's own setting: its turns are used then)
     add_clock_steps(b, clocks)
     assign_leftovers(b, silent, evidence)
     assign_keyed_amounts(b, digits)
