@@ -18,6 +18,7 @@ from apbot.read.held_flips import assign_flips, flipped_values
 from apbot.read.labels import words
 from apbot.read.press_hold_pairs import press_hold_pairs
 from apbot.read.roles_again import toggled_again
+from apbot.read.roles_amount_keys import amount_keys
 from apbot.read.roles_amounts import ADD_RE, assign_amounts
 from apbot.read.roles_common import (
     FUNCTION_WORDS,
@@ -43,6 +44,7 @@ from apbot.read.roles_holdcell import held_toggle, held_values, way_switched
 from apbot.read.roles_hourmin import assign_hour_minute, hour_minute_keys
 from apbot.read.roles_keyed import assign_keyed_amounts
 from apbot.read.roles_legends import _hold_row, _named_cycle, _numbered
+from apbot.read.roles_lent_dial import add_lent, lent_dial_keys
 from apbot.read.roles_lists import (
     dial_values,
     list_evidence,
@@ -320,6 +322,12 @@ def assign(b: Builder) -> None:
         else:
             silent.append(key)
 
+    # keys printed with amounts ("10s 30s 60s"): one setting they set directly
+    shortcuts = amount_keys(b, silent)
+    silent = [k for k in silent if k not in shortcuts]
+    # "1. Press BASS. 2. Turn the VOLUME knob: −6 to +6 dB": a named dial lent to a key
+    dial_lent = lent_dial_keys(b, silent, dials)
+    silent = [k for k in silent if k not in [found[0] for found in dial_lent]]
     # keys the manual lists together: one variable with a go-to value each
     groups = listed_groups(
         b, [k for k in silent if k.skill == "press" and not set(words(k.token)) & FUNCTION_WORDS]
@@ -331,6 +339,7 @@ def assign(b: Builder) -> None:
         b, entry_keys, silent, evidence, pairs, digits, dials, generic_dials, adders, keyed_time
     )
     silent = assign_dials(b, dials, silent)
+    add_lent(b, dial_lent, dials)  # (after the dial's own setting: its turns are used then)
     add_clock_steps(b, clocks)
     assign_leftovers(b, silent, evidence)
     assign_keyed_amounts(b, digits)
