@@ -155,3 +155,60 @@ def test_a_pair_keeps_its_own_amount_beside_a_borrowing_key() -> None:
     model = read_manual(HAZER, HAZER_KEYS).model
     percents = [v for v in model.variables.values() if getattr(v, "unit", None) == "%"]
     assert percents and list(percents[0].ranges[0][:2]) == [20, 100]
+
+
+# a screen projector-like box whose ◄ ► keys set the loudness; its input list is drawn with arrows
+SPEAKER = """
+Orla S-5 room speaker
+
+KEYS
+
+  SOURCE ... next input
+  ◄ ► ...... loudness down / up
+
+INPUT
+
+Each press of SOURCE moves to the next input:
+
+   AUX → OPTICAL → USB → AUX …
+
+LOUDNESS
+
+◄ and ► set the loudness, one step per press. The range is 0 (mute) to 30 (loudest).
+"""
+
+
+def test_an_arrow_in_a_list_is_no_mention_of_the_right_key() -> None:
+    model = read_manual(SPEAKER, ["press_source", "press_left", "press_right"]).model
+    loud = next(v for v in model.variables.values() if getattr(v, "ranges", None))
+    assert list(loud.ranges[0][:2]) == [0, 30]  # not the inputs AUX, OPTICAL, USB
+    assert model.variables["source"].values == ["aux", "optical", "usb"]
+
+
+def test_a_first_figure_in_lower_case_leads_an_arrow_list() -> None:
+    from apbot.read.value_lists import find_list
+
+    said = "Press CUPS to step through 1x → 2x → 3x → 1x … The display shows the count."
+    assert find_list(said) == (["1x", "2x", "3x"], "arrows")
+
+
+# a heat pad whose timer has a letter for "no time limit"
+HEAT_PAD = """
+Calda H-1 heat pad
+
+KEYS
+
+  TIMER ... each press: 30MIN → 60MIN → 90MIN → C → 30MIN …
+
+TIMER
+
+The timer switches the pad off after the time chosen, or C for continuous: the pad then
+stays warm until you switch it off.
+"""
+
+
+def test_a_letter_value_is_named_by_its_gloss() -> None:
+    model = read_manual(HEAT_PAD, ["press_timer"]).model
+    timer = model.variables["timer"]
+    assert "continuous" in timer.values  # the user says "continuous", the display prints C
+    assert timer.show["continuous"] == "C"
