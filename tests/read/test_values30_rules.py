@@ -157,34 +157,6 @@ def test_a_pair_keeps_its_own_amount_beside_a_borrowing_key() -> None:
     assert percents and list(percents[0].ranges[0][:2]) == [20, 100]
 
 
-# a screen projector-like box whose ◄ ► keys set the loudness; its input list is drawn with arrows
-SPEAKER = """
-Orla S-5 room speaker
-
-KEYS
-
-  SOURCE ... next input
-  ◄ ► ...... loudness down / up
-
-INPUT
-
-Each press of SOURCE moves to the next input:
-
-   AUX → OPTICAL → USB → AUX …
-
-LOUDNESS
-
-◄ and ► set the loudness, one step per press. The range is 0 (mute) to 30 (loudest).
-"""
-
-
-def test_an_arrow_in_a_list_is_no_mention_of_the_right_key() -> None:
-    model = read_manual(SPEAKER, ["press_source", "press_left", "press_right"]).model
-    loud = next(v for v in model.variables.values() if getattr(v, "ranges", None))
-    assert list(loud.ranges[0][:2]) == [0, 30]  # not the inputs AUX, OPTICAL, USB
-    assert model.variables["source"].values == ["aux", "optical", "usb"]
-
-
 def test_a_first_figure_in_lower_case_leads_an_arrow_list() -> None:
     from apbot.read.value_lists import find_list
 

@@ -340,20 +340,12 @@ def _mentions(units: list[Unit], token: str, label: Label) -> list[int]:
     if spoken:
         patterns.append(spoken)
     symbols = [s for w in (token, *tw[-1:]) for s in SYMBOLS.get(w, ())]
-    arrows: list[re.Pattern[str]] = []  # a plain arrow names the key only outside a run of them
     for symbol in symbols:
         if len(symbol) == 1 and symbol in "+-−–<>":
             patterns.append(re.compile(rf"(?:^|[\s(/]){re.escape(symbol)}(?=[\s)/,.:]|$)"))
-        elif symbol in ("→", "←"):
-            arrows.append(re.compile(re.escape(symbol)))
         else:
             patterns.append(re.compile(re.escape(symbol)))
-    return [
-        i
-        for i, u in enumerate(units)
-        if any(p.search(u.text) for p in patterns)
-        or any(len(p.findall(u.text)) == 1 for p in arrows)  # ("HDMI 1 → HDMI 2 → PC": a list)
-    ]
+    return [i for i, u in enumerate(units) if any(p.search(u.text) for p in patterns)]
 
 
 def _inflected(label: str) -> re.Pattern[str] | None:
