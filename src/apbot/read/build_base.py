@@ -13,6 +13,7 @@ from typing import Any
 from apbot.read.actions import ActionInfo
 from apbot.read.evidence import EvidenceReader
 from apbot.read.labels import Label
+from apbot.read.named_starts import start_after_name
 from apbot.read.report import Note
 from apbot.read.shapes import (
     Evidence,
@@ -87,6 +88,9 @@ class BuilderBase(EvidenceReader):
         values = _dedupe([_value_text(v) for v in values if _value_text(v)])
         values = expand_spans(values)  # "OFF, WARM, 1-5, SEAR": five numbered positions
         initial = ev.initial if ev is not None else None
+        if ev is not None and ev.initial_at is not None:  # "… call tone 1, VOX off, …"
+            said = start_after_name(self.manual.units[ev.initial_at].text, label, values)
+            initial = said if said is not None else initial
         if values in (["0", "i"], ["o", "i"]):  # a switch printed 0 / I: off and on
             values = ["off", "on"]
             initial = None  # ("position I" is as often the drawing's callout I)

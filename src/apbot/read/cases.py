@@ -35,6 +35,7 @@ from apbot.read.cases_tables import _parent_values, _tables, advice_table, unnum
 from apbot.read.goal_vocab import stem
 from apbot.read.labels import words
 from apbot.read.marks_legend import chart_legend, read_mark
+from apbot.read.noun_columns import numbered_choice
 from apbot.read.shapes import CHOICE_WORDS
 from apbot.read.text import Unit
 
@@ -88,6 +89,8 @@ def apply_cases(b: Builder) -> None:
                 continue
             if name in fixed or name in children:
                 continue
+            if numbered_choice(spec["values"]) and not _matches(header[0], name, spec):
+                continue  # ("| Code | Hz |" over 0, 1, 2 …: not the levels VOX steps)
             hits = sum(bool(_parent_values(r.cells[0], spec["values"])) for r in rows)
             score = (hits, bool(set(words(name.replace("_", " "))) & CHOICE_WORDS))
             if hits >= 2 and score > best:

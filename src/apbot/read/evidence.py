@@ -13,12 +13,14 @@ import re
 from functools import lru_cache
 
 from apbot.read.chart_cells import own_cells, row_names, without_names
+from apbot.read.code_spans import code_span, led_span
 from apbot.read.cycle_mentions import named_in_cycle_only
 from apbot.read.evidence_anywhere import AnywhereReader
 from apbot.read.evidence_checks import (
     _where_it_applies,
     _without_only,
 )
+from apbot.read.evidence_lists import own_legend_items
 from apbot.read.evidence_ranges import RangeReader
 from apbot.read.evidence_values import ValueChooser
 from apbot.read.evidence_whose import (
@@ -35,6 +37,7 @@ from apbot.read.evidence_whose import (
     names_another,
 )
 from apbot.read.labels import unit_only_mention, words
+from apbot.read.own_press_ranges import own_press_range_wins
 from apbot.read.shapes import (
     _KEYPAD_WORDS,
     DOWN_WORDS,
@@ -131,6 +134,7 @@ class EvidenceReader(ValueChooser, RangeReader, AnywhereReader):
             for w in [x for x in words(t.replace("_", " ")) if len(x) >= 4][:1]
         }
         context = self.context(tokens)
+        own_labels = [self.labels[t].text for t in tokens if t in self.labels]
         own_words = {w for t in tokens for w in words(t.replace("_", " ")) if len(w) >= 3}
         own_words |= {w for o in own for w in words(o) if len(w) >= 3}
         chart_names = row_names(units)
@@ -220,6 +224,8 @@ class EvidenceReader(ValueChooser, RangeReader, AnywhereReader):
                 )
                 if _fits(r.unit, tokens) and not _keypad(r, text)
             ]
+            if not ranges and i in steps and not waiting and (coded := code_span(text)):
+                ranges = [coded]  # "Press ▲ / ▼: CA 1 … CA 5" after this key's own step
             if ev.keypad_at is None and _KEYPAD_WORDS.search(text):
                 ev.keypad_at = i
             if ranges and unit.cells and len(ranges) == 1 and ranges[0].step is None:
@@ -266,7 +272,8 @@ class EvidenceReader(ValueChooser, RangeReader, AnywhereReader):
             if (
                 ev.toggle_at is None
                 and not quiet  # ("The hob deactivates." under Troubleshooting)
-                and ON_OFF_RE.search(_without(text, other_labels))
+                # ("[3] FOG – fog on / off [5] BURST – …" run together: FOG's, not BURST's)
+                and ON_OFF_RE.search(_without(own_legend_items(text, own_labels), other_labels))
                 and not two_choices(text)  # "toggles between 1.5 lb and 2.0 lb": no on/off
                 and not self._two_key_hold(text, tokens)
             ):
@@ -305,6 +312,12 @@ class EvidenceReader(ValueChooser, RangeReader, AnywhereReader):
                 if step:
                     ev.step, ev.step_at = step, i
                     break
+        if not ev.ranges or ev.range_at not in mentions:
+            led = led_span(units, mentions, own_words)  # "Setting the address (1 … 512):"
+            if led is not None:
+                ev.ranges, ev.range_at = [led[0]], led[1]
+        if own_press_range_wins(ev, mentions):  # ("each further press adds one second, …")
+            best, best_prio, ev.values_at = None, 0.0, None
         return self._chosen_values(
             tokens, ev, best, best_prio, candidates, own_words, others, own, mentions, elsewhere
         )

@@ -119,13 +119,20 @@ class ContextReader(OwnWords):
                     for t in tokens:  # (a key printed HOLD is no hold of it)
                         if t in self.labels and self.labels[t].text:
                             text = text.replace(self.labels[t].text, " ")
-                    held = re.search(r"\b(?:hold|held)\b", text, re.I)  # ("holding time")
+                    held = bool(re.search(r"\b(?:hold|held)\b", text, re.I))  # ("holding time")
+                    held = held and not self._only_held(tokens)  # (no press of its own)
                     if by_unit.get(k, set()) - pair <= set(tokens) and not held:
                         found.add(i)  # (a step after holding the key is the hold's)
                     break
                 if by_unit.get(k, set()) - pair:
                     break  # another key's step came in between
         return found
+
+    def _only_held(self, tokens: list[str]) -> bool:
+        """Whether the controls are only ever held (no press action of their own): a step of
+        the pair after holding the key is then the hold's, and so the key's."""
+        skills = {i.skill for i in self.infos if set(i.controls) & set(tokens)}
+        return skills == {"hold"}
 
     def _two_key_hold(self, text: str, tokens: list[str]) -> bool:
         """Whether a sentence tells of holding two keys together, one of them this one, when

@@ -12,6 +12,7 @@ from apbot.model.values import NUMBER_WORDS
 from apbot.read.evidence_context import ContextReader
 from apbot.read.labels import words
 from apbot.read.list_lines import wrapped_list
+from apbot.read.noun_columns import noun_column
 from apbot.read.number_runs import find_number_run
 from apbot.read.quantity_units import QUANTITY_FAMILIES, _quantity_units
 from apbot.read.shapes import (
@@ -180,6 +181,9 @@ class ListReader(ContextReader):
                 if after and len(after) == n:
                     out.append((after, 2.6))
                     break
+        through = noun_column(units, i) if mention else None
+        if through:  # "Press VOX to step through the levels" and the table's Level column
+            out.append((through, 2.5))
         pointer = (mention or i - 1 in said) and TABLE_POINTER_RE.search(text)  # (its paragraph)
         if (ORDER_RE.search(text) or pointer) and not text.rstrip().endswith((":", "order")):
             # "arranged round the knob in this order, clockwise." and the table a line or two on

@@ -62,6 +62,7 @@ from apbot.read.running_locks import read_running_locks
 from apbot.read.shapes import CHOICE_WORDS
 from apbot.read.shown_bars import read_bar_shows
 from apbot.read.shown_figures import read_prefixed_figures
+from apbot.read.sign_glosses import read_sign_glosses
 from apbot.read.text import check_text, parse_manual
 from apbot.read.turn_refusals import read_turn_refusals
 from apbot.read.typed_prefix import read_typed_prefixes
@@ -117,6 +118,7 @@ def read_manual(
     name_numbered_codes(builder)  # ("Fn 1 > Fn 2 …" a count; a chart names each code)
     name_code_words(builder)
     name_glossed_words(builder)
+    read_sign_glosses(builder)  # ("C for continuous", "∞ (continuous)": a letter or a sign)
     read_code_amounts(builder)
     read_code_levels(builder)
     read_position_charts(builder)

@@ -12,6 +12,7 @@ from apbot.read.actions import ActionInfo
 from apbot.read.added_time import added_time
 from apbot.read.build import Builder
 from apbot.read.labels import words
+from apbot.read.pair_own_ranges import pair_keeps_range
 from apbot.read.roles_common import (
     TIME_WORDS,
     label_of,
@@ -103,6 +104,9 @@ def assign_amounts(
                 names.append({w for t in said for w in words(t) if len(w) >= 4})
             own_pair = not _named_by(names, nouns)
             pair_noun = raised[0]
+        if not own_pair and pair_keeps_range(b, pair_tokens, entry_keys, evidence):
+            own_pair = True  # "▲ and ▼ set … from 10 % to 100 %" beside "after ADDR, …"
+            pair_noun = stepped_noun(b, pair_tokens, b.evidence(pair_tokens)) or "level"
         if own_pair:
             steppers = steppers[1:] + steppers[:1]
             used_steppers = set()

@@ -56,7 +56,10 @@ def pair_follows(b: Builder, key: ActionInfo, pair: list[str]) -> int | None:
             continue
         if then.search(units[i].text[m.end() :]):
             return i
-        for j in (i + 1, i + 2):
+        for j in (i + 1, i + 2, i + 3):
+            if j == i + 3 and any(u.bullet for u in units[i + 1 : i + 3]):
+                break  # (a third unit on only when the two between go on the key's own step,
+                # "1. Press ADDR. The display shows the address, e.g. ADDR 1.")
             if j < len(units) and step.search(units[j].text):
                 return j
             if j < len(units) and pressed.search(units[j].text):

@@ -89,8 +89,9 @@ def find_list(text: str) -> tuple[list[str], str] | None:
             for w in [head[-1], *(p.split()[0] for p in parts[1:] if p)]
         )
         capital = [w for w in head if w.upper() == w and any(c.isalpha() for c in w)]
-        if figure_first and len(capital) >= 2:  # (two capitals: which key's is unsure)
-            capital = [head[-1]]
+        if figure_first and (len(capital) >= 2 or head[-1] not in capital):
+            capital = [head[-1]]  # (two capitals: which key's is unsure; "DOSES … 1x → 2x":
+            # a figure in lower case is no capital, but it is the first item all the same)
         trailing: list[str] = []  # "Tap FAN to step through AUTO →": the run before the arrow
         for w in reversed(head):
             if w.upper() != w or not any(c.isalpha() for c in w):
