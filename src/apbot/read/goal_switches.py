@@ -106,9 +106,9 @@ def switches(
                 continue  # "super freeze": SUPER FREEZE, not SUPER COOL that shares SUPER
             if _in_anothers_name(view, goal, info, text, k, where, claimed):
                 continue  # "the light timer to 3.5 minutes": LIGHT TIME's word, no LIGHT switch
-            if shadowed and (text.stems[k] in own or key in own_concepts(info)):
-                if not state_said_after(text, k):
-                    continue  # "the alert off" beside ALERT 20-45: the ALERT hold, its state said
+            mine = text.stems[k] in own or key in own_concepts(info)
+            if shadowed and mine and not state_said_after(text, k):
+                continue  # but "the alert off" beside ALERT 20-45: the ALERT hold, its state said
             locks = key == concept("lock") or concept("lock") in own_concepts(info)
             if locks and not _locking(text, k):
                 continue  # "wake the panel", "hot water": not the (hot-water) lock
