@@ -125,3 +125,27 @@ def test_the_endless_sign_is_said_nonstop_or_continuously() -> None:
         "heat": "on",
     }
     assert parse_instruction(model, "Let it run continuously.") == {"time": "∞"}
+
+
+FREEZER = """
+appliance: {id: fz_1, category: freezer, name: "read from the manual"}
+controls:
+  - {id: super_key, kind: button, label: "SUPER"}
+variables:
+  super: {label: SUPER, type: discrete, values: ["off", "on"]}
+  super_frz: {label: SUPER, type: discrete, values: ["off", "on"]}
+actions:
+  press_super: {control: super_key}
+  hold_super: {control: super_key, skill: hold, seconds: 3.0}
+features:
+  super:
+    - {actions: [press_super], variable: super, effect: toggle}
+  super_frz:
+    - {actions: [hold_super], variable: super_frz, effect: toggle}
+"""
+
+
+def test_a_panel_code_in_a_switchs_name_is_said_spelled_out() -> None:
+    model = loads_model(FREEZER)
+    assert parse_instruction(model, "Turn on super freeze.") == {"super_frz": "on"}
+    assert parse_instruction(model, "Super on.") == {"super": "on"}

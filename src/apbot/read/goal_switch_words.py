@@ -4,6 +4,7 @@ switch shares with another names the one whose words stand with it."""
 
 from __future__ import annotations
 
+from apbot.read.goal_shortened import display_abbreviation
 from apbot.read.goal_text import NUMBER_WORDS, Text
 from apbot.read.goal_values import OFF_WORDS, ON_WORDS, name_words
 from apbot.read.goal_view import Model, VarInfo, own_stems
@@ -28,12 +29,24 @@ def another_switchs_phrase(view: Model, info: VarInfo, text: Text, k: int) -> bo
     here, after = text.concepts[k], text.concepts[k + 1] if k + 1 < len(text.concepts) else ""
     if not after or info.vocab.get(after, 0.0) > 0:
         return False
+    word = text.word(k + 1)
     return any(
         other is not info
         and other.role == "switch"
         and other.vocab.get(here, 0.0) >= 0.8
-        and other.vocab.get(after, 0.0) >= 0.8
+        and (other.vocab.get(after, 0.0) >= 0.8 or _code_of(other, info, word))
         for other in view.infos.values()
+    )
+
+
+def _code_of(other: VarInfo, info: VarInfo, word: str) -> bool:
+    """The word is spelled out from a panel code of the other switch's own name that this
+    one's lacks: "super freeze" for SUPER FRZ beside SUPER (COOL)."""
+    mine = own_stems(info)
+    return any(
+        display_abbreviation(code, word)
+        for code in name_words(other.name)
+        if stem(code) not in mine
     )
 
 
