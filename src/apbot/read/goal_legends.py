@@ -90,6 +90,10 @@ _LEGEND_VERBS = frozenset(
 )
 
 
+_KEY_NOUN = r"(?:(?:touch|push|soft)\s+)?(?:key|button)"
+"""A legend may call the key by its noun after the label ("SET touch key", "MODE button")."""
+
+
 def legend_words(
     model: ApplianceModel, manual: str, labels: dict[str, list[str]]
 ) -> dict[str, set[str]]:
@@ -106,7 +110,9 @@ def legend_words(
         for label in keys:
             if len(label) < 3 or not label.isupper():
                 continue
-            pattern = re.compile(rf"^{re.escape(label)}(?:\s{{2,}}|\s*[:|–—]\s*|\s+-\s+)(.+)$")
+            pattern = re.compile(  # "SET touch key - …": the key's noun before the dash
+                rf"^{re.escape(label)}(?:\s+{_KEY_NOUN})?(?:\s{{2,}}|\s*[:|–—]\s*|\s+-\s+)(.+)$"
+            )
             for index, line in enumerate(lines):
                 found = pattern.match(line)
                 if found is None:

@@ -52,6 +52,10 @@ _SCALE_WORDS = frozenset({"high", "low", "hi", "lo", "max", "min", "top", "long"
 # unit symbols a value's name joins to another word (V AC, A DC), as people spell them out
 _UNIT_SYMBOLS = {"v": "volt", "a": "amp", "w": "watt"}
 
+# a display's sign for a time that runs without end, and the words people say it with
+_ENDLESS_SIGNS = frozenset({"∞"})
+_ENDLESS_WORDS = ("continuous", "continuously", "nonstop", "endless", "endlessly", "indefinitely")
+
 # words of pace that stand for a level of speed ("run it slow": LOW), never of heat
 _PACE_WORDS = frozenset({"slow", "fast"})
 
@@ -74,6 +78,8 @@ def value_phrases(
             text = str(value)
             if text.casefold() in ON_WORDS + OFF_WORDS + ("none", "----", "--"):
                 continue
+            if text in _ENDLESS_SIGNS:  # TIME 30 … 180 ∞: "run it nonstop", "continuously"
+                phrases += [(name, value, (stem(w),), 0.9) for w in _ENDLESS_WORDS]
             forms = [text]
             shown = show.get(text)
             # a code spelled as a switch's word ("On" for ALWAYS ON) names no value in a request

@@ -4,7 +4,8 @@ switch shares with another names the one whose words stand with it."""
 
 from __future__ import annotations
 
-from apbot.read.goal_text import Text
+from apbot.read.goal_shortened import display_abbreviation
+from apbot.read.goal_text import NUMBER_WORDS, Text
 from apbot.read.goal_values import OFF_WORDS, ON_WORDS, name_words
 from apbot.read.goal_view import Model, VarInfo, own_stems
 from apbot.read.goal_vocab import STOP_WORDS, stem
@@ -28,12 +29,24 @@ def another_switchs_phrase(view: Model, info: VarInfo, text: Text, k: int) -> bo
     here, after = text.concepts[k], text.concepts[k + 1] if k + 1 < len(text.concepts) else ""
     if not after or info.vocab.get(after, 0.0) > 0:
         return False
+    word = text.word(k + 1)
     return any(
         other is not info
         and other.role == "switch"
         and other.vocab.get(here, 0.0) >= 0.8
-        and other.vocab.get(after, 0.0) >= 0.8
+        and (other.vocab.get(after, 0.0) >= 0.8 or _code_of(other, info, word))
         for other in view.infos.values()
+    )
+
+
+def _code_of(other: VarInfo, info: VarInfo, word: str) -> bool:
+    """The word is spelled out from a panel code of the other switch's own name that this
+    one's lacks: "super freeze" for SUPER FRZ beside SUPER (COOL)."""
+    mine = own_stems(info)
+    return any(
+        display_abbreviation(code, word)
+        for code in name_words(other.name)
+        if stem(code) not in mine
     )
 
 
@@ -48,3 +61,18 @@ def whole_name_switched(view: Model, info: VarInfo, text: Text, k: int) -> bool:
         other is not info and text.stems[k] in {stem(w) for w in name_words(other.name)}
         for other in view.infos.values()
     )
+
+
+_STATE_VERBS = frozenset({"switched", "turned", "set", "kept", "left", "put"})
+
+
+def state_said_after(text: Text, k: int) -> bool:
+    """The word at k is followed by its state: "the alert off", "the alert switched on". A
+    number after the state word makes it a preposition ("the timer on 30 minutes")."""
+    j = k + 1
+    if text.word(j) in _STATE_VERBS:
+        j += 1
+    if text.word(j) not in ON_WORDS + OFF_WORDS:
+        return False
+    after = text.word(j + 1)
+    return not (after[:1].isdigit() or after in NUMBER_WORDS)

@@ -8,6 +8,7 @@ from apbot.read.goal_let import kept_on, never_let
 from apbot.read.goal_shortened import compound_of_name
 from apbot.read.goal_switch_words import (
     another_switchs_phrase,
+    state_said_after,
     tail_of_anothers,
     whole_name_switched,
 )
@@ -105,8 +106,9 @@ def switches(
                 continue  # "super freeze": SUPER FREEZE, not SUPER COOL that shares SUPER
             if _in_anothers_name(view, goal, info, text, k, where, claimed):
                 continue  # "the light timer to 3.5 minutes": LIGHT TIME's word, no LIGHT switch
-            if shadowed and (text.stems[k] in own or key in own_concepts(info)):
-                continue
+            mine = text.stems[k] in own or key in own_concepts(info)
+            if shadowed and mine and not state_said_after(text, k):
+                continue  # but "the alert off" beside ALERT 20-45: the ALERT hold, its state said
             locks = key == concept("lock") or concept("lock") in own_concepts(info)
             if locks and not _locking(text, k):
                 continue  # "wake the panel", "hot water": not the (hot-water) lock
