@@ -26,6 +26,7 @@ from apbot.read.value_list_shapes import (
     _triangle_arrows,
     _two_named,
 )
+from apbot.read.value_runs_back import counted_figures
 from apbot.read.values import NUM, UNIT
 
 _CUE = re.compile(  # a lookahead, so that every cue in a sentence is tried
@@ -123,6 +124,9 @@ def find_list(text: str) -> tuple[list[str], str] | None:
         items = _nothing_as_zero(items)
         if all(_value_like(p, False) for p in unit_tail(items)) and len(items) >= 2:
             return _dedupe(items), "arrows"
+        figures = counted_figures(items)  # "1/6 stop > 1/3 stop > 1 stop": the figures
+        if figures:
+            return figures, "arrows"
     for m in _CUE.finditer(text):
         segment = re.split(r"[.;]\s|\s[—–]\s|\bwhile\b|\bwhen\b|\bto (?!\d)", m.group(1))[0]
         # "between STANDARD and QUIET (lamp; display FAN quiet …)": the aside ends the list
