@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import itertools
 import re
+import unicodedata
 
 from apbot.read.values import UNIT
 
@@ -59,3 +60,15 @@ def wrapped_run(text: str) -> list[str] | None:
     if back >= run[0] or (run[0] - back) % step:
         return None
     return [str(n) for n in range(back, run[-1] + 1, step)]
+
+
+def drawn_sign(item: str) -> bool:
+    """A position printed as the sign on the panel ("Ω·)))▶|" for resistance, continuity and
+    diode; "⊣⊢"): one piece, no opening bracket (so no aside "(default)"), a sign character in
+    it. Such items fail the value test only for their closing brackets."""
+    return (
+        bool(re.fullmatch(r"\S{1,12}", item))
+        and "(" not in item
+        and "[" not in item
+        and any(unicodedata.category(c).startswith("S") for c in item)
+    )
