@@ -204,11 +204,13 @@ def _intro(units: list[Unit], at: int) -> str:
 
 _SHOWN_HEAD = re.compile(r"^(?:display|shown|screen|indication|symbol)s?\b", re.IGNORECASE)
 _NUMBERED = re.compile(r"\d{1,2}[.)]?")
+_POSITION_HEAD = re.compile(r"(?:dial\s+)?(?:pos(?:ition)?s?|no|number)\.?|#", re.IGNORECASE)
 
 
 def position_shows(b: Builder) -> None:
     """What the display shows at each dial position, from a table that numbers the positions
-    in the dial's order ("| Pos. | Display | Measures |", rows 1 … 8 after OFF) and has a column
+    in the dial's order ("| Pos. | Display | Measures |", rows 1 … 8 after OFF; its first
+    column headed as the position or its number, not "presses") and has a column
     headed as the display: the cell of each row is its position's word ("nF" for the ⊣⊢
     position, "Ω" for Ω·)))▶|). Only where the numbers run 1 … N over the N positions past
     the first (OFF) or over all N."""
@@ -219,8 +221,8 @@ def position_shows(b: Builder) -> None:
             continue
         for header, table in _tables(b.manual.units):
             column = next((c for c, h in enumerate(header) if _SHOWN_HEAD.match(h.strip())), None)
-            if column is None or column == 0:
-                continue
+            if column is None or column == 0 or not _POSITION_HEAD.fullmatch(header[0].strip()):
+                continue  # ("| DRYING presses | Display |": presses counted, no positions)
             rows = [r.cells for r in table if len(r.cells) > column]
             if not all(_NUMBERED.fullmatch(r[0].strip()) for r in rows):
                 continue
