@@ -19,6 +19,7 @@ from typing import Any
 
 from apbot.model.values import format_hms
 from apbot.read.build_base import PLACEHOLDERS, BuilderBase
+from apbot.read.chart_steps import charted_values
 from apbot.read.clock_format import twelve_hour_clock
 from apbot.read.labels import words
 from apbot.read.quantity_units import _guess_step, _tidy, _unit_from_words
@@ -172,6 +173,20 @@ class Builder(BuilderBase):
         if hmm is not None:
             self.note(f"{subject}.type", "a time: the display shows it as h:mm", hmm[1])
         factor = 1 if ranges[0].unit == "s" else seconds(1, unit) if as_time else 1
+        chart = (  # "It steps through this chart: 1.0 1.3 1.6 … 128" and "stops at 1.0 and 128"
+            charted_values(self.manual.units, ranges[0].low, ranges[0].high)
+            if len(ranges) == 1 and not ranges[0].step and not ev.step and name not in self.unread
+            else None
+        )
+        if chart:
+            chart_unit = ranges[
+                0
+            ].unit  # ("16 s": the unit said with the range, as the screen shows)
+            charted = [f"{v} {chart_unit}" if chart_unit else v for v in chart[0]]
+            self.variables[name] = {"type": "discrete", "values": charted, "label": label}
+            self.variables[name]["wrap"] = cyclic
+            self.note(f"{subject}.values", f"the {len(chart[0])} values of a chart", chart[1])
+            return name
 
         def base_step(r: Range) -> float | None:
             """The step in the variable's base unit (seconds for a time)."""

@@ -37,6 +37,7 @@ from apbot.read.value_lists import (
     find_list,
     quantity_run,
 )
+from apbot.read.value_runs_back import wrapped_run
 from apbot.read.values import number
 
 _TYPING_WORDS = frozenset({"type", "typed", "typing", "digits", "keystrokes", "keyed"})
@@ -173,6 +174,9 @@ class ListReader(ContextReader):
         if progression and len(progression) >= 3:  # "one click each, 50, 55, 60 ... 95, 100"
             near = mention or i - 1 in said  # (in the key's sentence or the one after it)
             out.append((progression, 2.7 if near else 2.3))  # (beats the printed marks)
+        back = wrapped_run(text) if mention or {i - 1, i - 2} & said else None
+        if back:  # "each press adds one: 5, 6, 7, 8, 9, then back to 3"
+            out.append((back, 2.7))
         counted = _COUNTED_RE.search(text)
         n = number(counted.group(1)) if counted and mention else None
         if n:  # "The knob has seven positions." and the row of them drawn ("zero": no list)

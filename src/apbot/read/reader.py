@@ -25,6 +25,7 @@ from apbot.read.cases_chosen import chosen_cases
 from apbot.read.cases_fixed import read_fixed_in_mode
 from apbot.read.cases_lines import choice_ranges, table_choice_ranges
 from apbot.read.cases_only import read_only_modes
+from apbot.read.cases_positions import position_cases, position_shows
 from apbot.read.cases_resets import apply_resets
 from apbot.read.cases_units import unit_ranges
 from apbot.read.cases_zones import zone_twins
@@ -100,6 +101,8 @@ def read_manual(
     assign(builder)
     read_ordinal_lamps(builder)  # (a key guessed a toggle whose lamps, by place, are levels)
     read_press_tables(builder)  # (and one whose press-count rows list its values)
+    position_cases(builder)  # (before: the key read with the dial's positions as its values)
+    position_shows(builder)
     apply_cases(builder)
     chosen_cases(builder)
     zone_twins(builder)

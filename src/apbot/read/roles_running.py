@@ -26,6 +26,12 @@ _REFUSED_RE = re.compile(
     r"\b(?:cannot|can't|can\s+not)\s+be\b|\bis\s+refused\b|\bare\s+refused\b", re.IGNORECASE
 )
 
+# the other keys refused while the state lasts: the word shown then is the refusal's
+_KEYS_REFUSED_RE = re.compile(
+    r"\b(?:every|all|any)\s+other\s+keys?\s+(?:is|are)\s+(?:locked|ignored|refused|blocked)\b",
+    re.IGNORECASE,
+)
+
 
 def _start_setting(token: str) -> bool:
     """START TIME, START DELAY: "start" names an amount the key sets, not the start itself
@@ -185,6 +191,8 @@ def _state_word(
             continue
         if i in rest and refusal is not None and refusal.search(text):
             continue  # "While it is running, MENU … cannot be opened: … show STOP FIRST"
+        if refusal is not None and _KEYS_REFUSED_RE.search(text):
+            continue  # "while it runs every other key is locked (the display shows BUSY)"
         for word in shown_words(text, keys):
             if _when_off(word, text):
                 continue  # "♪ flag beep on (MUTE when off)": another sign's word while off

@@ -28,7 +28,10 @@ _SINGLE = str.maketrans("╔╦╗╠╬╣╚╩╝║═", "┌┬┐├┼┤
 
 
 def _cells(line: str, bar: str = "│") -> list[str]:
-    return [c.strip() for c in line.strip().strip(bar).split(bar)]
+    cells = [c.strip() for c in line.strip().strip(bar).split(bar)]
+    if bar != "|":  # a sign drawn with a bar ("▶|" for a diode) is no column: the broken bar
+        cells = [c.replace("|", "¦") for c in cells]  # keeps the pipe table's columns whole
+    return cells
 
 
 def _rule(width: int) -> str:

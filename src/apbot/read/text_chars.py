@@ -12,7 +12,7 @@ import unicodedata
 
 from apbot.read.marks_legend import legend_meanings
 
-_KEEP = frozenset("▲▼△▽◀▶◄►◁▷⏻°↑↓←→⟳⟲↻↺")
+_KEEP = frozenset("▲▼△▽◀▶◄►◁▷⏻°↑↓←→⟳⟲↻↺⎓⏦")  # (⎓ ⏦: DC and AC, a meter's positions)
 _SPECIAL = re.compile(r"[^\x20-\x7e\n\t]")  # anything outside printable ASCII
 
 

@@ -26,6 +26,7 @@ from apbot.read.value_list_shapes import (
     _triangle_arrows,
     _two_named,
 )
+from apbot.read.value_runs_back import counted_figures, drawn_sign
 from apbot.read.values import NUM, UNIT
 
 _CUE = re.compile(  # a lookahead, so that every cue in a sentence is tried
@@ -118,12 +119,24 @@ def find_list(text: str) -> tuple[list[str], str] | None:
         parts = [re.sub(r"(?<=\S)\s+only$", "", p) for p in parts]
         if amount and (len(parts) >= 3 or both):  # "… 1.0 LB → 1.5 LB": the amount first
             parts[0] = amount.group(1)
-        items = [p for p in parts if p and re.search(r"\w", p)]  # "… → OFF → …": no item
+        # "… → OFF → …": no item; "… → ⊣⊢ → …": a sign printed on the panel, an item
+        items = [p for p in parts if p and (re.search(r"\w", p) or drawn_sign(p))]
         if items and items[0] in items[1:]:
             items = items[: items.index(items[0], 1)]  # "OFF → 2H → 4H → OFF": the cycle, once
         items = _nothing_as_zero(items)
         if all(_value_like(p, False) for p in unit_tail(items)) and len(items) >= 2:
             return _dedupe(items), "arrows"
+        signs = [p for p in items if not _value_like(p, False)]
+        if (
+            len(items) >= 4
+            and signs
+            and len(signs) * 3 <= len(items)
+            and all(map(drawn_sign, signs))
+        ):
+            return _dedupe(items), "arrows"  # "OFF > V~ > Ω·)))▶| > ⊣⊢ > TEMP": signs on a dial
+        figures = counted_figures(items)  # "1/6 stop > 1/3 stop > 1 stop": the figures
+        if figures:
+            return figures, "arrows"
     for m in _CUE.finditer(text):
         segment = re.split(r"[.;]\s|\s[—–]\s|\bwhile\b|\bwhen\b|\bto (?!\d)", m.group(1))[0]
         # "between STANDARD and QUIET (lamp; display FAN quiet …)": the aside ends the list

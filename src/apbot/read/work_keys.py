@@ -32,4 +32,25 @@ def starts_and_stops(b: Builder, info: ActionInfo) -> bool:
     # (its first mentions, or its own legend row further on: "▶/❚❚  start or pause the game"
     # after the drawing and the display legend printed the sign three times)
     said = [*label.mentions[:3], *_own_rows(b, info)]
-    return any(_STARTS_STOPS_RE.search(units[i].text) for i in said)
+    if any(_STARTS_STOPS_RE.search(units[i].text) for i in said):
+        return True
+    return any(_own_work(units[i].text, label.text) for i in said)
+
+
+_OWN_WORK_RE = re.compile(
+    r"\b(?:starts?|begins?)\s+(?:or|and|/)\s+(?:stops?|ends?|cancels?)\s+(?:an?|the)\s+"
+    r"([a-z]{4,})(?=\s*(?:$|[.;,:()|]))",
+    re.IGNORECASE,
+)
+
+
+def _own_work(text: str, label: str) -> bool:
+    """A key named by a verb whose line says it starts or stops the noun of that verb
+    ("EXPOSE  start / stop an exposure", "BREW – starts or stops a brew"): the key runs the
+    appliance's one job. The noun shares the label's first five letters (four for a label of
+    four), so "starts or stops the timer" on a key named otherwise is not it."""
+    name = label.strip().lower()
+    if not re.fullmatch(r"[a-z]{4,}", name):
+        return False
+    m = _OWN_WORK_RE.search(text)
+    return m is not None and m.group(1).lower()[: min(5, len(name))] == name[:5]
