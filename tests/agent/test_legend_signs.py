@@ -107,3 +107,15 @@ def test_a_value_of_several_words_counts_only_said_whole() -> None:
     }
     # one text's parts are each a sign to look up ("⇒" lit beside a range lamp)
     assert sorted(signs(["⇒  ▮▮"], set())) == sorted(["▮▮", "⇒"])
+
+
+def test_a_screen_that_leaves_a_setting_out_gives_no_value_of_it() -> None:
+    """The idle screen of a belief that prints only the temperature says nothing of the tone:
+    the walk must see no value there (a 'not read' marker once became one of its values)."""
+    from apbot.agent.legend_walk import _one_value, _read
+
+    belief = model_from(KETTLE.replace("{tone}", "").replace("{keep}", "").replace("{lamps}", ""))
+    context = {"temp": 100, "tone": "bell", "keep": "off"}
+    assert _one_value(belief, "tone", "90", context) is None
+    assert not _read(belief, "tone", "90", context)
+    assert _one_value(belief, "temp", "90", context) == 90

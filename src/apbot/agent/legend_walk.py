@@ -19,6 +19,7 @@ from typing import Any
 from apbot.agent.infer import Dark, Unread
 from apbot.agent.legend import legend, signs
 from apbot.agent.reader import DisplayReader
+from apbot.agent.readings import is_read
 from apbot.agent.relit import printed_words
 from apbot.agent.repair import RepairError, add_indicator, set_display
 from apbot.agent.session import Session
@@ -82,7 +83,7 @@ def read_sign(session: Session, name: str, text: str) -> Any:
     """``name``'s value in ``text`` wherever the display shows it (a lamp beside another
     setting's screen too), when every reading of the text agrees on one; else None."""
     reading = session.perceiver.reader.read(text, session.belief.values())
-    found = {repr(v): v for h in reading.hypotheses if (v := h.value(name)) is not None}
+    found = {repr(v): v for h in reading.hypotheses if _shows(v := h.value(name))}
     return next(iter(found.values())) if len(found) == 1 else None
 
 
@@ -139,14 +140,20 @@ def _walk_texts(session: Session, presses: int) -> list[str]:
 def _one_value(model: ApplianceModel, name: str, text: str, context: Any) -> Any:
     """The one value of ``name`` ``model`` reads in ``text`` (None: none, or several)."""
     reading = DisplayReader(model).read(text, context)
-    found = {repr(v): v for h in reading.hypotheses if (v := h.value(name)) is not None}
+    found = {repr(v): v for h in reading.hypotheses if _shows(v := h.value(name))}
     return next(iter(found.values())) if len(found) == 1 else None
 
 
 def _read(model: ApplianceModel, name: str, text: str, context: Any) -> bool:
     """Whether ``model`` reads some value of ``name`` in ``text``."""
     reading = DisplayReader(model).read(text, context)
-    return any(h.value(name) is not None for h in reading.hypotheses)
+    return any(_shows(h.value(name)) for h in reading.hypotheses)
+
+
+def _shows(value: Any) -> bool:
+    """Whether a reading found a value (not ``--``, and not the screen leaving it out: a
+    sentinel taken for a value became one of the setting's values on a walk)."""
+    return is_read(value) and value is not None
 
 
 def _reads(model: ApplianceModel, name: str, text: str, value: Any, context: Any) -> bool:
