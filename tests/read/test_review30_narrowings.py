@@ -103,3 +103,35 @@ def test_a_key_that_only_selects_is_not_lent_the_dial() -> None:
     bt = next(f for f in model.features.values() if f[0].actions == ["press_bt"])
     assert len(bt) == 1
     assert all(s.variable != "bt" or model.variables["bt"].type == "discrete" for s in bt)
+
+
+# a stand mixer counting its speeds in levels; only the data table gives the motor's rpm
+MIXER = """
+Kneta K6 stand mixer
+
+  Controls: ⏻   [SPEED ▲] [SPEED ▼]   [TIMER]
+
+USING THE MIXER
+
+Press SPEED ▲ or SPEED ▼ to choose one of the six speeds; the display shows the speed number.
+Start at a low speed and raise it gradually.
+
+TIMER sets the mixing time from 1 to 20 minutes.
+
+TECHNICAL DATA
+
+  | Item            | K6               |
+  |-----------------|------------------|
+  | Motor speed     | 60 – 250 rpm     |
+  | Power           | 1000 W           |
+"""
+
+
+def test_a_speed_never_said_in_rpm_takes_no_rpm_range_from_the_data() -> None:
+    """The SPEED keys are never said with rpm: the motor's 60–250 rpm is no range of theirs."""
+    model = read_manual(
+        MIXER, ["press_power", "press_speed_up", "press_speed_down", "press_timer"]
+    ).model
+    speed = model.variables["speed"]
+    assert getattr(speed, "unit", "") != "rpm"
+    assert all(r[1] < 60 for r in speed.ranges)  # type: ignore[union-attr]
