@@ -36,6 +36,18 @@ class AnywhereReader:
                 return True
         return False
 
+    def _said_in_rpm(self, name: str, label: str) -> bool:
+        """A setting named only a speed is in rpm when its key, printed as on the panel, is
+        said with rpm ("SPEED ▲ / ▼ change the speed by 10 rpm"); a motor's rpm in the data
+        is no range of a speed the display counts in levels. A name saying rpm or spin is."""
+        if set(words(name.replace("_", " "))) & {"rpm", "spin"}:
+            return True
+        printed = re.compile(rf"(?<!\w){re.escape(label)}(?!\w)") if label.strip() else None
+        return printed is not None and any(
+            printed.search(u.text) and re.search(r"\brpm\b", u.text, re.I)
+            for u in self.manual.units
+        )
+
     def _range_anywhere(self, name: str, label: str) -> tuple[Range, int] | None:
         """The first range in a sentence or table row naming the setting anywhere (a
         specifications table: "| Set temperature range | 40–100 °C |", a programme table's
@@ -44,6 +56,8 @@ class AnywhereReader:
         timed = not _quantity_unit(name) and self._called_timer(label)
         if not ws or not (_quantity_unit(name) or timed):
             return None
+        if _quantity_unit(name) == "rpm" and not self._said_in_rpm(name, label):
+            return None  # "choose one of the six speeds" beside "| Motor speed | 60 – 250 rpm |"
         fit = [name, "timer"] if timed else [name]
         if label and label.upper() == label and ws & (_TIMER_WORDS | {"time"}):
             # what the key's own sentences call its time ("TIMER  Push to set the Delay

@@ -74,11 +74,21 @@ def self_switching_off(view: Model, text: Text, goal: Goal, claimed: set[int]) -
             word = text.word(k - d)
             if word in CLAUSE_ENDS or word == ",":
                 break
+            if word == "without" and not _gerund(text, (k - 1 - by, k - 2 - by)):
+                continue  # "bake without the lid and let it turn itself off"
             prevented = prevented or word in _PREVENTED
         assert info.on is not None and info.off is not None
         goal[info.name] = info.off if prevented else info.on
         claimed.add(k)
         return
+
+
+def _gerund(text: Text, at: tuple[int, ...]) -> bool:
+    """ "without the meter turning itself off": the switching-off verb is what "without" leaves
+    out (a gerund); "without the lid and let it turn itself off" leaves out a lid."""
+    return any(
+        j >= 0 and text.stems[j] in _SELF_OFF_VERBS and text.word(j).endswith("ing") for j in at
+    )
 
 
 _DONE = frozenset({"done", "finished", "ready", "over", "through"})

@@ -95,7 +95,12 @@ def value_phrases(
                     continue  # a number or a quantity ("3.0 oz"): read as a quantity
                 if not words:
                     continue
-                if form is not text and len(words) == 1 and words[0].casefold() in ("a", "i"):
+                bare = len(words) == 1 and words[0].casefold() in ("a", "i")
+                if form is not text and bare:
+                    if _lettered(text, info.values) and name_words(name):
+                        # PROGRAM A shown "P-A": "program a", never the article alone
+                        named = (stem(name_words(name)[-1].casefold()), stem(words[0]))
+                        phrases.append((name, value, named, 1.0))
                     continue  # "µA" read as "a": a display code left a bare article names nothing
                 if len(words) == 1 and words[0] in LETTER_WORDS:
                     for alias in LETTER_WORDS[words[0]]:
@@ -169,3 +174,10 @@ def superlatives(word: str) -> list[str]:
     if len(w) <= 4 and w[-1] not in "aeiouwxy" and w[-2] in "aeiou" and w[-3] not in "aeiou":
         forms.append(f"{w}{w[-1]}est")  # big → biggest, hot → hottest
     return forms
+
+
+def _lettered(text: str, values: list[Any]) -> bool:
+    """The value is a letter of a lettered list (PROGRAM A, B, C shown "P-A"): the letter names
+    it, unlike a unit's symbol (µA, A among V and Ω) left as a bare article."""
+    letters = [str(v) for v in values if len(str(v)) == 1 and str(v).isalpha()]
+    return text in letters and any(parse_quantity(v) is None for v in letters if v != text)

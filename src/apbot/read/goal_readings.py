@@ -14,6 +14,7 @@ _FREEZING = frozenset({"hold", "holds", "holding", "freeze", "freezes", "freezin
 _SHOWN = frozenset(
     {"reading", "readings", "display", "value", "screen", "measurement", "result", "figure"}
 )
+_CONTROLS = frozenset({"button", "buttons", "key", "keys", "switch", "knob", "dial", "pad"})
 _BETWEEN = frozenset({"the", "a", "its", "this", "that", "my", "current", "last"})
 
 
@@ -36,6 +37,8 @@ def frozen_readings(view: Model, text: Text, goal: Goal, where: dict[str, int]) 
         shown = text.word(j) in _SHOWN or (
             text.word(j) == "what" and text.word(j + 1) in ("it", "the")
         )  # "freeze what it shows"
+        if text.word(j + 1) in _CONTROLS:
+            continue  # "hold the DISPLAY button": a key held, no reading
         if shown:
             goal[holds[0].name] = holds[0].on
             where[holds[0].name] = k

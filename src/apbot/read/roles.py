@@ -339,7 +339,7 @@ def assign(b: Builder) -> None:
         b, entry_keys, silent, evidence, pairs, digits, dials, generic_dials, adders, keyed_time
     )
     silent = assign_dials(b, dials, silent)
-    add_lent(b, dial_lent, dials)  # (after the dial's own setting: its turns are used then)
+    silent += add_lent(b, dial_lent, dials)  # (after the dial's own setting: its turns are used)
     add_clock_steps(b, clocks)
     assign_leftovers(b, silent, evidence)
     assign_keyed_amounts(b, digits)

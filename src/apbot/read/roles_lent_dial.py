@@ -111,11 +111,18 @@ def lent_dial_keys(
     return found
 
 
-def add_lent(b: Builder, found: list[Lent], dials: dict[str, list[ActionInfo]]) -> None:
+def add_lent(b: Builder, found: list[Lent], dials: dict[str, list[ActionInfo]]) -> list[ActionInfo]:
     """A setting per key of ``found``, named after it, its range read in the turn step, set by
-    pressing the key and then turning the dial."""
+    pressing the key and then turning the dial; returns the keys not lent the dial (left for
+    the other roles)."""
+    left: list[ActionInfo] = []
     for key, dial, i, j in found:
         cw, ccw = turns(dials[dial])
+        if _own_range_unread(b, cw + ccw):
+            # "1. Press BT. 2. Turn the VOLUME knob to a comfortable level (0 to 30).": the
+            # manual gives the dial no range of its own, so the range is the dial's own one
+            left.append(key)
+            continue
         text = b.manual.units[j].text
         ev = Evidence(ranges=_ranges(text), range_at=j)
         step = find_step(text)
@@ -134,3 +141,17 @@ def add_lent(b: Builder, found: list[Lent], dials: dict[str, list[ActionInfo]]) 
             ],
         )
         b.note(f"features.set_{var}", f"{key.name} then the {dial} dial's turns", i)
+    return left
+
+
+def _own_range_unread(b: Builder, turned: list[str]) -> bool:
+    """The dial's own numeric setting (the one its turns alone set) got no range from the
+    manual (its range is a guess)."""
+    own = {
+        st.get("variable")
+        for steps in b.features.values()
+        if len(steps) == 1
+        for st in steps
+        if set(st.get("actions", [])) == set(turned)
+    }
+    return any(v in b.unread for v in own if v)
