@@ -225,6 +225,10 @@ def test_rotor_sentences(said: str, wanted: dict[str, object]) -> None:
         ("key up one", {"key": "+1"}),
         ("take the key down three semitones", {"key": "-3"}),
         ("the key as high as it goes", {"key": "+3"}),
+        ("set the key to +2", {"key": "+2"}),
+        ("key to 2", {"key": "+2"}),
+        ("key to -2", {"key": "-2"}),
+        ("key flat 2", {"key": "-2"}),
     ],
 )
 def test_keyboard_key(said: str, wanted: dict[str, object]) -> None:

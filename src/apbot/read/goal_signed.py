@@ -22,6 +22,9 @@ _REACH = 5  # words back from the number: "slow it down by ten percent"
 _BEHIND = frozenset({"behind", "lower", "down", "slower", "earlier", "back"})
 """Words after a number and its unit that say it counts down: "two hours behind", "two
 semitones lower", "three notches back"."""
+_FLAT = frozenset({"flat", "flats"})
+"""A musical key's way of saying below zero ("two flats", "flat 2")."""
+_KEEPS_MINUS = _DOWNWARD | _FLAT | {"drop", "dropped"}
 _UPWARD = frozenset({"up", "plus", "raise", "higher", "increase", "ahead", "forward"})
 
 
@@ -31,6 +34,8 @@ def signed_changes(view: Model, text: Text, goal: Goal, where: dict[str, int]) -
     for name, value in list(goal.items()):
         info = view.infos.get(name)
         if info is None or name not in where:
+            continue
+        if _unsaid_minus(view, text, goal, name, where[name]):
             continue
         if not isinstance(info.var, NumericVariable):
             value = _signed_choice(info.var, value)  # KEY ♭6 … ♯6 listed "-6" … "+6"
@@ -45,6 +50,27 @@ def signed_changes(view: Model, text: Text, goal: Goal, where: dict[str, int]) -
         negative = next((v for v in domain if _opposite(v, float(value))), None)
         if negative is not None:
             goal[name] = negative
+
+
+def _unsaid_minus(view: Model, text: Text, goal: Goal, name: str, start: int) -> bool:
+    """A listed negative choice ("-2" of "-3" … "+3") the sentence gave no minus for becomes
+    its positive twin: the choices' names share the figure, so "key to 2" or "key to +2" matched
+    both and the list's order picked the negative one. A minus sign, a word of going down
+    before or after the number, or "flat(s)" (a key shown ♭2) keeps it."""
+    info = view.infos[name]
+    value = goal[name]
+    if not isinstance(info.var, DiscreteVariable) or not str(value).startswith("-"):
+        return False
+    said = {text.word(start), text.word(start - 1), text.word(start + 1)}
+    if said & _KEEPS_MINUS or _said_before(text, start, _KEEPS_MINUS):
+        return False
+    if _said_behind(text, start):
+        return False
+    twin = "+" + str(value)[1:]
+    if twin not in [str(v) for v in info.var.values]:
+        return False
+    goal[name] = next(v for v in info.var.values if str(v) == twin)
+    return True
 
 
 def _opposite(v: Any, value: float) -> bool:
