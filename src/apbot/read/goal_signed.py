@@ -67,9 +67,10 @@ def _unsaid_minus(view: Model, text: Text, goal: Goal, name: str, start: int) ->
     if _said_behind(text, start):
         return False
     twin = "+" + str(value)[1:]
-    if twin not in [str(v) for v in info.var.values]:
+    listed = [v for v in info.var.values or () if str(v) == twin]
+    if not listed:
         return False
-    goal[name] = next(v for v in info.var.values if str(v) == twin)
+    goal[name] = listed[0]
     return True
 
 
