@@ -372,3 +372,18 @@ def test_a_row_drawn_with_line_arrows_and_a_gap_before_its_end() -> None:
         ["P1", "P2", "P3", "P4", "P5"],
         "arrows",
     )
+
+
+def test_the_alignment_reads_display_spellings_as_the_same_value() -> None:
+    """A judge that calls 'hdmi2' missing from a read domain holding 'HDMI 2' blames the reader
+    for the parser's miss (e2e_failures counted it 'lacks value')."""
+    from apbot.model.schema import DiscreteVariable
+    from apbot.read.evaluate import value_set_of
+
+    spec = DiscreteVariable(type="discrete", values=["x"])
+    assert value_set_of(spec, "HDMI 2") == value_set_of(spec, "hdmi2")
+    assert value_set_of(spec, "USB-C") == value_set_of(spec, "usbc")
+    assert value_set_of(spec, "°F") == value_set_of(spec, "fahrenheit")
+    assert value_set_of(spec, "1/4") == value_set_of(spec, "quarter")
+    assert value_set_of(spec, "1/4") != value_set_of(spec, "14")
+    assert value_set_of(spec, "12V normal") != value_set_of(spec, "12V AGM")

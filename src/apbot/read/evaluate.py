@@ -77,10 +77,6 @@ def value_set(model: ApplianceModel, name: str) -> set[str]:
     for value in values:
         if isinstance(var, TimeVariable):
             out.add(f"t{parse_hms(str(value))}")
-        elif isinstance(var, DiscreteVariable):
-            text = _spelled(normalise_text(str(value)))
-            number = re.fullmatch(r"(\d+(?:\.\d+)?)\s*[a-z%°]*", text)
-            out.add(f"{float(number.group(1)):g}" if number else text)
         else:
             out |= value_set_of(var, value)
     return out
@@ -306,7 +302,19 @@ def translate_goal(
     return out
 
 
-SHORT_WORDS = {"hi": "high", "lo": "low", "med": "medium", "mid": "medium", "std": "standard"}
+SHORT_WORDS = {
+    "hi": "high",
+    "lo": "low",
+    "med": "medium",
+    "mid": "medium",
+    "std": "standard",
+    "°c": "celsius",
+    "°f": "fahrenheit",
+    "quarter": "1 4",
+    "half": "1 2",
+}
+"""Panel abbreviations and signs every manual uses for a word (after :func:`normalise_text`,
+which writes "1/4" as "1 4")."""
 
 
 def _spelled(text: str) -> str:
@@ -314,6 +322,12 @@ def _spelled(text: str) -> str:
     no spaces round joining signs ("wash + dry" is "wash+dry")."""
     text = re.sub(r"\s*([+&/])\s*", r"\1", text)
     return " ".join(SHORT_WORDS.get(w, w) for w in text.split())
+
+
+def _squeezed(text: str) -> str:
+    """A value's name without the spaces one model writes and another leaves out ("HDMI 2" is
+    "HDMI2", "USB-C" is "USBC"); a space between two figures stays ("1/4" is not 14)."""
+    return re.sub(r"(?<!\d) | (?!\d)", "", text)
 
 
 def _abbreviates(short: str, long: str) -> bool:
@@ -334,7 +348,7 @@ def value_set_of(spec: Any, value: Any) -> set[str]:
     if isinstance(spec, DiscreteVariable):
         text = _spelled(normalise_text(str(value)))
         number = re.fullmatch(r"(\d+(?:\.\d+)?)\s*[a-z%°]*", text)
-        return {f"{float(number.group(1)):g}" if number else text}
+        return {f"{float(number.group(1)):g}" if number else _squeezed(text)}
     factor = TIME_UNITS.get(getattr(spec, "unit", "") or "")
     if factor is not None:  # a duration counted in a unit compares with a time, in seconds
         return {f"t{round(float(value) * factor)}"}
