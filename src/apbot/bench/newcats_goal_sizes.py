@@ -180,10 +180,17 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "magnetic_stirrer": 3,
     "karaoke_machine": 3,
     # The twenty-seventh blind set (helper blind30, 7 December 2026, the seventh 7 December
-    # session): blind for this round's work.
+    # session): development data since the eighth 7 December session.
     "camera_flash": 3,
     "transfer_press": 3,
     "powerchair_controller": 3,
     "tennis_ball_machine": 3,
     "scoreboard_controller": 3,
+    # The twenty-eighth blind set (helper blind31, 7 December 2026, the eighth 7 December
+    # session): blind for this round's work.
+    "telescope_mount": 3,
+    "drum_module": 3,
+    "metal_detector": 3,
+    "model_train_controller": 3,
+    "sports_watch": 3,
 }
