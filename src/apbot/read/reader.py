@@ -53,6 +53,7 @@ from apbot.read.off_positions import read_off_positions
 from apbot.read.off_words import read_held_off_words, read_off_words
 from apbot.read.ordinal_lamps import read_ordinal_lamps
 from apbot.read.position_charts import read_position_charts
+from apbot.read.prefixed_codes import name_prefixed_codes
 from apbot.read.press_opened import read_press_opened
 from apbot.read.press_tables import read_press_tables
 from apbot.read.pressed_walks import read_pressed_walks
@@ -120,6 +121,7 @@ def read_manual(
     name_codes(builder)
     name_numbered_codes(builder)  # ("Fn 1 > Fn 2 …" a count; a chart names each code)
     name_code_words(builder)
+    name_prefixed_codes(builder)  # ("OSC-N   narrow: …": the name's letter spelt out)
     name_glossed_words(builder)
     read_sign_glosses(builder)  # ("C for continuous", "∞ (continuous)": a letter or a sign)
     read_code_amounts(builder)
