@@ -17,6 +17,7 @@ from apbot.model.schema import ApplianceModel
 from apbot.model.validate import check_model
 from apbot.read.action_rank import in_manual_order, listed_as_given
 from apbot.read.actions import ActionInfo, action_info, parse_actions
+from apbot.read.bar_levels import read_bar_levels
 from apbot.read.belief_name import UNNAMED
 from apbot.read.build import Builder
 from apbot.read.build_base import PLACEHOLDERS
@@ -132,6 +133,7 @@ def read_manual(
     read_held_off_words(builder)
     read_range_codes(builder)
     read_initials(builder)
+    read_bar_levels(builder)  # ("▮▮▯▯▯  level 2": a guessed range's levels, by its bars)
     read_bar_shows(builder)
     circled_shows(builder)  # ("① first dog / ② second dog": the numbers shown circled)
     read_bracket_shows(builder)
