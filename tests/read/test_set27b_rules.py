@@ -127,3 +127,31 @@ def test_a_counted_bar_legend_gives_the_levels() -> None:
     speed = model.variables["speed"]
     assert [str(v) for v in speed.values] == ["1", "2", "3", "4", "5"]
     assert speed.show is not None and speed.show["3"] == "●●●○○"
+
+
+# a bicycle light remote: a key per side, one side blinking at a time
+BIKE = """
+Lumo R-2 bicycle light remote
+
+KEYS: POWER, ◄, ►
+
+  ◄   left signal
+  ►   right signal
+  The ◄ and ► lamps on the remote blink with the signals.
+
+TURN SIGNALS
+
+Press ◄ to blink the left signal; press ◄ again to stop it. Press ► for the right signal.
+Only one side can blink: pressing ► while the left signal blinks stops the left one.
+"""
+BIKE_ACTIONS = ["press_power", "press_left", "press_right"]
+
+
+def test_two_side_keys_are_one_setting_of_three_values() -> None:
+    """◄ / ► set one signal, off / left / right, each key back to off; shown as its lamp."""
+    model = read_manual(BIKE, BIKE_ACTIONS).model
+    signal = model.variables["signal"]
+    assert list(signal.values) == ["off", "left", "right"]
+    assert signal.show == {"off": "", "left": "◄", "right": "►"}
+    steps = [s for steps in model.features.values() for s in steps if s.variable == "signal"]
+    assert sorted(a for s in steps for a in s.actions) == ["press_left", "press_right"]

@@ -74,6 +74,7 @@ from apbot.read.roles_running import assign_running
 from apbot.read.roles_shared import add_clock_steps, assign_shared, clock_steps, dial_after_keys
 from apbot.read.roles_switched import switched_time
 from apbot.read.shapes import CHOICE_WORDS, GENERIC_DIALS, adjuster_direction
+from apbot.read.side_keys import read_side_keys
 
 
 def assign(b: Builder) -> None:
@@ -86,6 +87,7 @@ def assign(b: Builder) -> None:
     assign_running(b, done, power_actions, lock_actions)
 
     done |= legend_end_pairs(b, infos, done)  # SPIN BACK / SPIN TOP over "B3 … 0 … T3"
+    done |= read_side_keys(b, infos, done)  # ◄ / ► "left indicator", only one side at a time
 
     # stepping pairs, digits, dials -------------------------------------------------------
     pairs: dict[str, dict[str, list[str]]] = {}
