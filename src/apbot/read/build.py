@@ -22,6 +22,7 @@ from apbot.read.build_base import PLACEHOLDERS, BuilderBase
 from apbot.read.chart_steps import charted_values
 from apbot.read.clock_format import twelve_hour_clock
 from apbot.read.labels import words
+from apbot.read.part_seconds import part_seconds
 from apbot.read.quantity_units import _guess_step, _tidy, _unit_from_words
 from apbot.read.shapes import (
     CHOICE_WORDS,
@@ -170,6 +171,8 @@ class Builder(BuilderBase):
         finer = bool(ev.step and ev.step[1] in ("s", "min") and unit == "h")  # 0–3 h by 1 min
         hmm = ev.shown_hmm if unit == "h" and not clock else None  # "the display shows 9:30"
         as_time = ranges[0].unit == "s" or unit in ("s", "min") or finer or hmm is not None
+        if as_time and part_seconds(ev.step, ranges):
+            as_time, unit = False, "s"  # "2 to 10 seconds in half-second steps": shown "3.5 s"
         if hmm is not None:
             self.note(f"{subject}.type", "a time: the display shows it as h:mm", hmm[1])
         factor = 1 if ranges[0].unit == "s" else seconds(1, unit) if as_time else 1

@@ -37,6 +37,7 @@ from apbot.read.evidence_whose import (
     names_another,
 )
 from apbot.read.labels import unit_only_mention, words
+from apbot.read.model_rows import own_model_row
 from apbot.read.own_press_ranges import own_press_range_wins
 from apbot.read.shapes import (
     _KEYPAD_WORDS,
@@ -220,7 +221,12 @@ class EvidenceReader(ValueChooser, RangeReader, AnywhereReader):
                 for r in find_ranges(
                     ""
                     if waiting
-                    else without_names(_without_advice(own_cells(unit, own_words)), chart_names)
+                    else without_names(
+                        _without_advice(
+                            own_cells(own_model_row(unit, self.manual.lines, units), own_words)
+                        ),
+                        chart_names,
+                    )
                 )
                 if _fits(r.unit, tokens) and not _keypad(r, text)
             ]

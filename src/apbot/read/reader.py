@@ -17,6 +17,7 @@ from apbot.model.schema import ApplianceModel
 from apbot.model.validate import check_model
 from apbot.read.action_rank import in_manual_order, listed_as_given
 from apbot.read.actions import ActionInfo, action_info, parse_actions
+from apbot.read.bar_levels import read_bar_levels
 from apbot.read.belief_name import UNNAMED
 from apbot.read.build import Builder
 from apbot.read.build_base import PLACEHOLDERS
@@ -53,6 +54,7 @@ from apbot.read.off_positions import read_off_positions
 from apbot.read.off_words import read_held_off_words, read_off_words
 from apbot.read.ordinal_lamps import read_ordinal_lamps
 from apbot.read.position_charts import read_position_charts
+from apbot.read.prefixed_codes import name_prefixed_codes
 from apbot.read.press_opened import read_press_opened
 from apbot.read.press_tables import read_press_tables
 from apbot.read.pressed_walks import read_pressed_walks
@@ -120,6 +122,7 @@ def read_manual(
     name_codes(builder)
     name_numbered_codes(builder)  # ("Fn 1 > Fn 2 …" a count; a chart names each code)
     name_code_words(builder)
+    name_prefixed_codes(builder)  # ("OSC-N   narrow: …": the name's letter spelt out)
     name_glossed_words(builder)
     read_sign_glosses(builder)  # ("C for continuous", "∞ (continuous)": a letter or a sign)
     read_code_amounts(builder)
@@ -130,6 +133,7 @@ def read_manual(
     read_held_off_words(builder)
     read_range_codes(builder)
     read_initials(builder)
+    read_bar_levels(builder)  # ("▮▮▯▯▯  level 2": a guessed range's levels, by its bars)
     read_bar_shows(builder)
     circled_shows(builder)  # ("① first dog / ② second dog": the numbers shown circled)
     read_bracket_shows(builder)

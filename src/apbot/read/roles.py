@@ -16,6 +16,7 @@ from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder, united_amounts
 from apbot.read.held_flips import assign_flips, flipped_values
 from apbot.read.labels import words
+from apbot.read.legend_ends import legend_end_pairs
 from apbot.read.press_hold_pairs import press_hold_pairs
 from apbot.read.roles_again import toggled_again
 from apbot.read.roles_amount_keys import amount_keys
@@ -73,6 +74,7 @@ from apbot.read.roles_running import assign_running
 from apbot.read.roles_shared import add_clock_steps, assign_shared, clock_steps, dial_after_keys
 from apbot.read.roles_switched import switched_time
 from apbot.read.shapes import CHOICE_WORDS, GENERIC_DIALS, adjuster_direction
+from apbot.read.side_keys import read_side_keys
 
 
 def assign(b: Builder) -> None:
@@ -83,6 +85,9 @@ def assign(b: Builder) -> None:
     done |= set(power_actions)
     lock_actions = assign_locks(b, done)
     assign_running(b, done, power_actions, lock_actions)
+
+    done |= legend_end_pairs(b, infos, done)  # SPIN BACK / SPIN TOP over "B3 … 0 … T3"
+    done |= read_side_keys(b, infos, done)  # ◄ / ► "left indicator", only one side at a time
 
     # stepping pairs, digits, dials -------------------------------------------------------
     pairs: dict[str, dict[str, list[str]]] = {}
