@@ -7,6 +7,10 @@
   meaning in brackets, and one item is only a bracket — nothing shown. The values are the
   meanings ("none", "home", "guest"); the display prints the signs, and nothing for the bare
   one. Read by its signs alone, the setting had no value a user says, and no "none".
+* "⚡H ........ high-speed sync" / "2nd ........ rear-curtain (second-curtain) sync": a legend
+  of signs with dotted leaders glosses two or more of a setting's values. Each glossed value is
+  named by its gloss, less the setting's own name and any bracket ("high-speed", "rear-curtain");
+  the display prints the sign.
 """
 
 from __future__ import annotations
@@ -32,7 +36,9 @@ def read_cycle_words(b: Builder) -> None:
             continue
         if _named_prefix(b, var, spec, values):
             continue
-        _glossed(b, var, spec, values)
+        if _glossed(b, var, spec, values):
+            continue
+        _leader_glossed(b, var, spec, values)
 
 
 def _named_prefix(b: Builder, var: str, spec: dict[str, Any], values: list[str]) -> bool:
@@ -85,7 +91,7 @@ def _unit_at(b: Builder, line: int | None) -> int | None:
     return best
 
 
-def _glossed(b: Builder, var: str, spec: dict[str, Any], values: list[str]) -> None:
+def _glossed(b: Builder, var: str, spec: dict[str, Any], values: list[str]) -> bool:
     lines = b.manual.glyph_lines or b.manual.lines
     for n, line in enumerate(lines, start=1):
         items = [i.strip() for i in _ARROW.split(line.strip()) if i.strip()]
@@ -118,7 +124,45 @@ def _glossed(b: Builder, var: str, spec: dict[str, Any], values: list[str]) -> N
             spec["show"] = {meanings[c]: (shows[c] if c else "") for c in order}
             what = ", ".join(new_values) + " (the cycle's meanings)"
             b.note(f"variables.{var}.values", what, _unit_at(b, n))
-            return
+            return True
+    return False
+
+
+# "⚡H .................... high-speed sync": a sign (glyphs before it allowed), dotted leaders
+_LEADER = r"^\s*([^\w\s]{{0,2}}{value})\s*\.{{3,}}\s*(.+?)\s*$"
+
+
+def _leader_glossed(b: Builder, var: str, spec: dict[str, Any], values: list[str]) -> None:
+    own = set(re.findall(r"[a-z]+", var)) | set(
+        re.findall(r"[a-z]+", str(spec.get("label", "")).lower())
+    )
+    lines = b.manual.glyph_lines or b.manual.lines
+    names: dict[str, str] = {}
+    shows: dict[str, str] = {}
+    at = None
+    for value in values:
+        pattern = re.compile(_LEADER.format(value=re.escape(str(value))), re.IGNORECASE)
+        for n, line in enumerate(lines, start=1):
+            m = pattern.match(line)
+            if m is None:
+                continue
+            gloss = re.sub(r"\([^)]*\)", " ", m.group(2).lower())
+            words_ = [w for w in re.findall(r"[a-z][a-z-]*", gloss) if w not in own]
+            if not 1 <= len(words_) <= 3:
+                break
+            names[str(value)] = " ".join(words_)
+            shows[str(value)] = m.group(1)
+            at = at if at is not None else n
+            break
+    if len(names) < 2 or len(set(names.values())) != len(names):
+        return
+    if set(names.values()) & (set(values) - set(names)):
+        return
+    renamed = {str(v): names.get(str(v), str(v)) for v in values}
+    _renamed(b, var, spec, renamed)
+    spec["show"] = {renamed[c]: sign for c, sign in shows.items()}
+    what = ", ".join(f"{shows[c]} {n}" for c, n in names.items()) + " (glossed in a legend)"
+    b.note(f"variables.{var}.values", what, _unit_at(b, at))
 
 
 def _renamed(b: Builder, var: str, spec: dict[str, Any], names: dict[str, str]) -> None:

@@ -58,6 +58,7 @@ from apbot.read.press_opened import read_press_opened
 from apbot.read.press_tables import read_press_tables
 from apbot.read.pressed_walks import read_pressed_walks
 from apbot.read.range_codes import read_range_codes
+from apbot.read.mode_scales import read_mode_scales
 from apbot.read.report import Note, Report
 from apbot.read.roles import assign
 from apbot.read.running_locks import read_running_locks
@@ -119,6 +120,7 @@ def read_manual(
     read_signed_keys(builder)  # ("+1 +2 +3 −1" per team: one score each key adds to)
     read_typed_minutes(builder)  # ("type the minutes and the seconds": a game clock, not 23:59)
     read_cycle_words(builder)  # ("PER 1 → PER 2", "(no arrow) → ◄POSS (home)": user's values)
+    read_mode_scales(builder)  # ("6.1 TTL …", "6.2 M and MULTI …": the dial's scale per mode)
     read_numbered_keys(builder)  # (T1 / T2 / T3 read key by key: one choice, a guess)
     read_code_cycles(builder)  # ("After P8 … P1 again": the key's run of codes)
     read_keyed_cycles(builder)  # ("NATURE: N1 → N2 … NOISE: S1 → …": a cycle per key)

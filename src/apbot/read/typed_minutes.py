@@ -5,7 +5,8 @@ A key named for a clock (SET CLOCK, CLOCK) that the number keys follow was read 
 day: hours and minutes, to 23:59. Game clocks, countdowns and kitchen timers are typed as
 minutes and seconds instead, and their manuals say so in the entry's own steps ("type the
 minutes and the seconds", "up to 99 minutes 59 seconds"). Such an entry is minutes and seconds,
-every second, up to the top the manual gives (else 99:59). A variable named after its key's
+every second, up to the top the manual gives; both sayings are wanted ("times are entered as
+minutes and seconds" alone, near a microwave's CLOCK, is about its cooking times). A variable named after its key's
 verb ("set_clock") is named after what it sets ("clock").
 """
 
@@ -27,7 +28,7 @@ _TOP_RE = re.compile(
 )
 
 
-def _said_near(b: Builder, key: str) -> tuple[int, int | None] | None:
+def _said_near(b: Builder, key: str) -> tuple[int, int] | None:
     """(unit saying minutes and seconds, unit giving the top) near the key's mentions."""
     if key not in b.labels:
         return None
@@ -35,9 +36,9 @@ def _said_near(b: Builder, key: str) -> tuple[int, int | None] | None:
     units = b.manual.units
     near = sorted({j for i in mentions for j in range(max(0, i - 2), min(len(units), i + 6))})
     said = next((j for j in near if _MIN_SEC_RE.search(units[j].text)), None)
-    if said is None:
-        return None
     top = next((j for j in near if _TOP_RE.search(units[j].text)), None)
+    if said is None or top is None:
+        return None  # (both: "times are entered as minutes and seconds" alone is a cook time's)
     return said, top
 
 
@@ -60,7 +61,7 @@ def read_typed_minutes(b: Builder) -> None:
         if found is None:
             continue
         top = "01:39:59"
-        if found[1] is not None and (m := _TOP_RE.search(b.manual.units[found[1]].text)):
+        if m := _TOP_RE.search(b.manual.units[found[1]].text):
             top = format_hms(int(m.group(1)) * 60 + min(59, int(m.group(2))))
         spec.update(ranges=[["00:00:00", top, 1]], format="mm:ss", entry={"format": "mm:ss"})
         spec.pop("unit", None)
