@@ -49,6 +49,7 @@ from apbot.read.initials import read_initials
 from apbot.read.keyed_cycles import read_keyed_cycles
 from apbot.read.labels import find_labels
 from apbot.read.mode_cases import read_mode_cases
+from apbot.read.mode_scales import read_mode_scales
 from apbot.read.numbered_keys import read_numbered_keys
 from apbot.read.off_positions import read_off_positions
 from apbot.read.off_words import read_held_off_words, read_off_words
@@ -58,7 +59,6 @@ from apbot.read.press_opened import read_press_opened
 from apbot.read.press_tables import read_press_tables
 from apbot.read.pressed_walks import read_pressed_walks
 from apbot.read.range_codes import read_range_codes
-from apbot.read.mode_scales import read_mode_scales
 from apbot.read.report import Note, Report
 from apbot.read.roles import assign
 from apbot.read.running_locks import read_running_locks

@@ -6,8 +6,8 @@ day: hours and minutes, to 23:59. Game clocks, countdowns and kitchen timers are
 minutes and seconds instead, and their manuals say so in the entry's own steps ("type the
 minutes and the seconds", "up to 99 minutes 59 seconds"). Such an entry is minutes and seconds,
 every second, up to the top the manual gives; both sayings are wanted ("times are entered as
-minutes and seconds" alone, near a microwave's CLOCK, is about its cooking times). A variable named after its key's
-verb ("set_clock") is named after what it sets ("clock").
+minutes and seconds" alone, near a microwave's CLOCK, is about its cooking times). A variable
+named after its key's verb ("set_clock") is named after what it sets ("clock").
 """
 
 from __future__ import annotations
