@@ -25,7 +25,7 @@ _HEADING = re.compile(r"^\s*\d{1,2}\.\d{1,2}\s+([A-Za-z].{1,59}?)(?:\s+[-–—:
 # ("1/16", "1/16+0.3")
 _DECIMAL = r"[+\-−]?\d{1,2}\.\d"
 _FRACTION = r"1/\d{1,4}(?:\+\d\.\d)?"
-_VALUE = re.compile(rf"(?<![\w./+\-−])({_FRACTION}|{_DECIMAL})(?![\w./])")
+_VALUE = re.compile(rf"(?<![\w./+\-−])({_FRACTION}|{_DECIMAL})(?![\w/]|\.\d)")
 # "-3.0 to +3.0 stops in steps of one third of a stop"
 _THIRDS = re.compile(
     rf"({_DECIMAL})\s+to\s+({_DECIMAL})\b[^.]{{0,40}}?\bsteps?\s+of\s+(?:one|a)\s+third\b",
