@@ -164,7 +164,7 @@ BRIGHTA PL-3 studio lamp
 
 2  PARTS
 
-  ① MODE     chooses FIX, STROBE or ECO
+  ① MODE     chooses FIX, S or ECO
   ② LEVEL    dial. Turn it to change the brightness of the chosen mode.
   ③ TONE     steps the colour sign
 
@@ -174,15 +174,22 @@ BRIGHTA PL-3 studio lamp
 
   Each press of TONE: N → W → C → N.
 
+4  MODES
+
+  Each press of MODE: FIX → S → ECO → FIX.
+
+  S (strobe light)
+    The lamp flashes with every shutter release.
+
 5  BRIGHTNESS
 
-  Every mode keeps its own brightness.
+  Every mode keeps its own brightness. Factory values: FIX 0.0, S 1/1, ECO 1/32.
 
   5.1 FIX - steady light
       The brightness is set from -2.0 to +2.0 in steps of one third, written -1.7, -1.3
       and so on; +1.0 is one stop brighter.
 
-  5.2 STROBE and ECO - a share of full power
+  5.2 S and ECO - a share of full power
       The lamp shows a share of full power: 1/32, 1/16, 1/8, 1/4, 1/2 and 1/1.
       In ECO only 1/32, 1/16 and 1/8 can be chosen.
 
@@ -201,6 +208,14 @@ def test_a_dials_scale_per_mode_from_the_modes_subsections() -> None:
     assert var.cases["fix"].values[0] == "-2.0" and "+1.3" in var.cases["fix"].values
     assert var.cases["strobe"].values == ["1/32", "1/16", "1/8", "1/4", "1/2", "1/1"]
     assert var.cases["eco"].values == ["1/32", "1/16", "1/8"]
+    # "Factory values: FIX 0.0, S 1/1, ECO 1/32": where each mode's scale starts
+    assert [var.cases[m].initial for m in ("fix", "strobe", "eco")] == ["0.0", "1/1", "1/32"]
+
+
+def test_a_one_letter_mode_named_by_its_headings_two_word_gloss() -> None:
+    model = read_manual(LAMP, LAMP_ACTIONS).model
+    assert model.variables["mode"].values == ["fix", "strobe", "eco"]
+    assert model.variables["mode"].show["strobe"] == "S"
 
 
 def test_signs_glossed_with_dotted_leaders_name_the_values() -> None:

@@ -168,6 +168,8 @@ def _apply(
     spec["type"] = "discrete"
     spec["depends_on"] = parent
     spec["cases"] = {mode: {"values": values} for mode, values in cases.items()}
+    for mode, start in _starts(b, b.variables[parent], cases).items():
+        spec["cases"][mode]["initial"] = start
     spec["wrap"] = False
     if any(_KEEPS.search(u.text) for u in b.manual.units):
         spec["remember"] = True
@@ -186,6 +188,31 @@ def _apply(
             if m and m.group(1).lower() not in b.variables:
                 _rename(b, var, m.group(1).lower())
                 return
+
+
+_FACTORY = re.compile(r"\b(?:factory|default|as\s+delivered|new\s+\w+\s+starts?)\b", re.I)
+
+
+def _starts(b: Builder, pspec: dict[str, Any], cases: dict[str, list[str]]) -> dict[str, str]:
+    """Each mode's start value from a sentence of factory values naming every mode with one of
+    its own values ("Factory values: TTL 0.0, M 1/1, MULTI 1/32.")."""
+    printed = {str(v): str(v).upper() for v in pspec.get("values") or []}
+    shows = pspec.get("show")
+    if isinstance(shows, dict):
+        printed.update({str(k): str(v) for k, v in shows.items() if v})
+    for unit in b.manual.units:
+        if not _FACTORY.search(unit.text):
+            continue
+        out = {}
+        for mode, values in cases.items():
+            name = re.escape(printed.get(mode, mode.upper()))
+            alts = "|".join(re.escape(v) for v in sorted(values, key=len, reverse=True))
+            m = re.search(rf"(?<![\w/]){name}\s+({alts})(?![\w/+]|\.\d)", unit.text)
+            if m:
+                out[mode] = m.group(1)
+        if len(out) == len(cases):
+            return out
+    return {}
 
 
 def _rename(b: Builder, var: str, new: str) -> None:
