@@ -41,6 +41,7 @@ from apbot.read.code_walks import read_code_walks
 from apbot.read.code_words import name_code_words
 from apbot.read.codes import name_codes
 from apbot.read.confirm_starts import read_confirmed_starts
+from apbot.read.cycle_words import read_cycle_words
 from apbot.read.drop_victim import feature_to_drop
 from apbot.read.guards_enabled import read_enabling_switches
 from apbot.read.held_walks import read_held_walks
@@ -49,6 +50,7 @@ from apbot.read.initials import read_initials
 from apbot.read.keyed_cycles import read_keyed_cycles
 from apbot.read.labels import find_labels
 from apbot.read.mode_cases import read_mode_cases
+from apbot.read.mode_scales import read_mode_scales
 from apbot.read.numbered_keys import read_numbered_keys
 from apbot.read.off_positions import read_off_positions
 from apbot.read.off_words import read_held_off_words, read_off_words
@@ -66,8 +68,10 @@ from apbot.read.shapes import CHOICE_WORDS
 from apbot.read.shown_bars import read_bar_shows
 from apbot.read.shown_figures import read_prefixed_figures
 from apbot.read.sign_glosses import read_sign_glosses
+from apbot.read.signed_keys import read_signed_keys
 from apbot.read.text import check_text, parse_manual
 from apbot.read.turn_refusals import read_turn_refusals
+from apbot.read.typed_minutes import read_typed_minutes
 from apbot.read.typed_prefix import read_typed_prefixes
 from apbot.read.value_codes import read_value_codes
 from apbot.read.value_keys import read_value_keys
@@ -115,6 +119,10 @@ def read_manual(
     read_only_modes(builder)
     read_fixed_in_mode(builder)  # "In Sleep mode the speed is fixed at 1"
     read_value_keys(builder)  # ("Press 33 or 45 to select that speed": one setting)
+    read_signed_keys(builder)  # ("+1 +2 +3 −1" per team: one score each key adds to)
+    read_typed_minutes(builder)  # ("type the minutes and the seconds": a game clock, not 23:59)
+    read_cycle_words(builder)  # ("PER 1 → PER 2", "(no arrow) → ◄POSS (home)": user's values)
+    read_mode_scales(builder)  # ("6.1 TTL …", "6.2 M and MULTI …": the dial's scale per mode)
     read_numbered_keys(builder)  # (T1 / T2 / T3 read key by key: one choice, a guess)
     read_code_cycles(builder)  # ("After P8 … P1 again": the key's run of codes)
     read_keyed_cycles(builder)  # ("NATURE: N1 → N2 … NOISE: S1 → …": a cycle per key)

@@ -155,6 +155,7 @@ def held_switch(b: Builder, key: ActionInfo) -> tuple[str, int] | None:
         for at, said in ((i, changes.search(units[i].text)),
                          (i, HOLD_TO_SWITCH_RE.search(units[i].text)),
                          (i + 1, HOLD_TO_SWITCH_RE.match(after)),
+                         (i + 1, _later_clause_hold(after)),
                          (i, holding.search(units[i].text)),
                          (i, HELD_CLAUSE_SWITCH_RE.search(units[i].text)),
                          (i + 1, HELD_CLAUSE_SWITCH_RE.match(after))):  # fmt: skip
@@ -162,6 +163,16 @@ def held_switch(b: Builder, key: ActionInfo) -> tuple[str, int] | None:
                 continue  # "SENSOR  Hold 2 s: switches the hand sensor on or off": its own
             if said and not lock_or_appliance(said.group(1)):
                 return said.group(1).lower(), at
+    return None
+
+
+def _later_clause_hold(text: str) -> re.Match[str] | None:
+    """The legend's next sentence, its press first and its hold after a semicolon: "Press
+    briefly to confirm; press and hold for 2 seconds to switch the beeper on or off"."""
+    for clause in re.split(r";\s*", text)[1:]:
+        m = HOLD_TO_SWITCH_RE.match(clause)
+        if m:
+            return m
     return None
 
 

@@ -81,6 +81,9 @@ _ENDS_ENTRY = re.compile(
     re.IGNORECASE,
 )
 
+# "Press ENTER to finish." (a numbered step after the digits): the bare verb, nothing after it
+_FINISH = re.compile(r"finish(?:\s+(?:the\s+)?(?:typing|entry))?\s*(?:[.;(]|$)", re.IGNORECASE)
+
 _USED_TO = re.compile(r"^(?:(?:press|touch|push)(?:\s+it)?|used)\s+to\s+", re.IGNORECASE)
 
 
@@ -115,6 +118,6 @@ def _pressed_to_end(b: Builder, key: ActionInfo) -> bool:
     for i in label.mentions:
         text = b.manual.units[i].text
         m = lead.match(text)
-        if m and _ENDS_ENTRY.match(text[m.end() :]):
+        if m and (_ENDS_ENTRY.match(text[m.end() :]) or _FINISH.match(text[m.end() :])):
             return True
     return False

@@ -13,6 +13,7 @@ from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.labels import words
 from apbot.read.roles_common import NUMERIC_WORDS, label_of, numeric_list, turns, var_name
+from apbot.read.roles_confirm import ends_entry
 from apbot.read.roles_lists import dial_ends, list_evidence
 from apbot.read.shapes import CHOICE_WORDS, Evidence
 
@@ -75,7 +76,19 @@ def assign_dials(
 
 def assign_leftovers(b: Builder, silent: list[ActionInfo], evidence: dict[str, Evidence]) -> None:
     """Whatever is left: an amount a key steps, or a toggle the closed loop can repair."""
+    digit_keys = {i.name for i in b.infos if i.digit is not None}
+    typed = [  # the features whose last step the number keys type
+        name
+        for name, steps in b.features.items()
+        if steps and set(steps[-1].get("actions") or []) & digit_keys and steps[-1].get("variable")
+    ]
     for key in silent:
+        if typed and key.skill == "press" and ends_entry(b, key):
+            # "Press ENTER to finish": the last step of what the number keys type, no setting
+            for name in typed:
+                b.features[name].append({"actions": [key.name], "note": "closes the entry"})
+                b.note(f"features.{name}", f"{key.name} closes the entry")
+            continue
         name = var_name(b, key)
         ev = evidence.get(key.name)
         own = {i for c in key.controls if c in b.labels for i in b.labels[c].mentions}

@@ -14,6 +14,7 @@ from apbot.read.build import Builder
 from apbot.read.labels import words
 from apbot.read.legend_starts import legend_start
 from apbot.read.power_starts import power_starts_work
+from apbot.read.printed_starts import printed_start_stop
 from apbot.read.roles_common import NUMERIC_WORDS, dedupe, first_mention, mentions_of
 from apbot.read.roles_holdcell import held_toggle
 from apbot.read.roles_holds import held_named_switch, held_start, pushed_start
@@ -67,7 +68,11 @@ def assign_running(
         i
         for i in infos
         if i.name not in done
-        and ("start" in words(i.token) or _run_starts(b, i.token))
+        and (
+            "start" in words(i.token)
+            or _run_starts(b, i.token)
+            or printed_start_stop(b, i.token)  # "START/STOP CLOCK" for press_clock
+        )
         and i.skill == "press"
         and not _start_setting(i.token)  # START TIME: when it starts, a setting
     ]

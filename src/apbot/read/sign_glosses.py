@@ -28,6 +28,8 @@ def _gloss(text: str, printed: str) -> str | None:
     for pattern in (
         rf"(?<![\w/]){sign}\s+(?:for|means|stands\s+for|=)\s+([a-z]{{4,}})\b",
         rf"(?<![\w/]){sign}\s*\(([a-z]{{4,}})\)",
+        # a heading's sign and two words, the first its name: "M (manual flash)" (set27a)
+        rf"^\s*{sign}\s*\(([a-z]{{4,}})\s+[a-z]{{3,}}\)",
     ):
         m = re.search(pattern, text)
         if m and m.group(1) not in _STOP:
