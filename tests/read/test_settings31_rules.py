@@ -71,3 +71,27 @@ def test_a_hold_then_two_values_with_a_two_way_arrow_is_a_flip_named_by_its_sect
     assert getattr(model.variables[name], "show", None) == {"50": "50Hz", "60": "60Hz"}
     flips = [s for f in model.features.values() for s in f if s.variable == name]
     assert flips and flips[0].actions == ["hold_ac"]
+
+
+# a record player whose start key's hold plays backwards, said as an item led by the job's name
+RECORD_PLAYER = """
+Orvo RP-2 record player
+
+  [ ⏻ ]   [ START/STOP ]   [ 33 ]   [ 45 ]
+
+PLAYING
+
+  • Press START/STOP to turn the platter; the PLAY lamp lights.
+  • Press START/STOP again to stop it.
+  • Backspin: hold START/STOP for 2 seconds. The BACK lamp lights and the platter turns
+    the other way. Hold START/STOP for 2 seconds again for normal play.
+"""
+
+RECORD_ACTIONS = ["press_power", "press_start", "hold_start", "press_33", "press_45"]
+
+
+def test_an_item_led_by_a_name_then_a_hold_and_a_lamp_is_a_setting_of_the_hold() -> None:
+    model = read_manual(RECORD_PLAYER, RECORD_ACTIONS).model
+    held = [s for f in model.features.values() for s in f if s.actions == ["hold_start"]]
+    assert held and held[0].variable == "backspin" and held[0].effect == "toggle"
+    assert getattr(model.variables["backspin"], "show", None) == {"off": "", "on": "BACK"}
