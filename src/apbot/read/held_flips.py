@@ -44,7 +44,7 @@ def held_flip(b: Builder, key: ActionInfo) -> tuple[str, list[str], int] | None:
             m = _HOLD_FLIP.search(b.manual.units[i].text)
             if m:
                 return _named(b, [m.group(1), m.group(2)], i), [m.group(1), m.group(2)], i
-        return None
+        return _held_then_shown(b, key)
     units = b.manual.units
     labels = [b.labels[c] for c in key.controls if c in b.labels]
     if len(labels) != len(key.controls):
@@ -60,6 +60,43 @@ def held_flip(b: Builder, key: ActionInfo) -> tuple[str, list[str], int] | None:
                 pair = [v for v in m.groups() if v][:2]
                 return _named(b, pair, i), pair, at
     return None
+
+
+def _held_then_shown(b: Builder, key: ActionInfo) -> Flip | None:
+    """A sentence that holds the key, then the display's two values with a two-way arrow, in it
+    or the next sentence of its section ("Hold AC for 3 seconds. The frequency shown changes:
+    50Hz ↔ 60Hz."): the hold flips those two (settings31). Only the two-way arrow counts ("shows
+    A or B" after a hold may be the press's list); a lock's sentence flips no setting."""
+    label = b.labels[key.controls[0]].text if key.controls[0] in b.labels else ""
+    if not label:
+        return None
+    held = re.compile(rf"\bhold(?:\s+down)?\s+(?:the\s+)?{re.escape(label)}(?!\w)", re.I)
+    units = b.manual.units
+    for i in b.labels[key.controls[0]].mentions:
+        m = held.search(units[i].text)
+        if m is None or units[i].cells:
+            continue
+        for at in (i, i + 1):
+            if at >= len(units) or units[at].heading != units[i].heading or units[at].cells:
+                continue
+            text = units[at].text[m.end() :] if at == i else units[at].text
+            flip = re.search(rf"({_VALUE}){_TWO_WAY}({_VALUE})(?=[\s;,.)]|$)", text)
+            if flip and not re.search(r"\block\b", units[at].text, re.I):
+                pair = [flip.group(1), flip.group(2).rstrip(".")]  # ("… 60Hz."): the end's
+                return _named(b, pair, i) or _heading_less(b, pair, label, i), pair, at
+    return None
+
+
+def _heading_less(b: Builder, pair: list[str], label: str, at: int) -> str:
+    """The section's heading less its number, its figures, the values' units and the key's
+    name ("7 AC FREQUENCY 50 / 60 HZ" for AC, 50Hz ↔ 60Hz: frequency); "" for none."""
+    heading = _NUMBER.sub("", b.manual.units[at].heading or "")
+    printed = {w for v in pair for w in words(re.sub(r"[\d.,]+", " ", v))} | set(words(label))
+    said = [
+        w for w in words(re.sub(r"\([^)]*\)", " ", heading))
+        if not re.search(r"\d", w) and w not in printed and w not in ("and", "the", "of")
+    ]  # fmt: skip
+    return "_".join(said) if 1 <= len(said) <= 3 else ""
 
 
 def _named(b: Builder, pair: list[str], at: int) -> str:
@@ -95,10 +132,22 @@ def assign_flips(b: Builder, keys: list[ActionInfo], paired: set[str]) -> dict[s
     return flips
 
 
+# an amount printed with its measuring unit ("50Hz", "230 V"): the figure is the value
+_AMOUNT = re.compile(r"(\d+(?:\.\d+)?)\s*(hz|khz|v|w|kw|a|ma)", re.IGNORECASE)
+
+
 def flips_to(b: Builder, key: ActionInfo, flip: Flip) -> None:
-    """The hold toggles a setting of the two values, named as the manual treats it."""
-    var = b.add_discrete(flip[0] or var_name(b, key), flip[1], label_of(b, key.controls[0]), None)
+    """The hold toggles a setting of the two values, named as the manual treats it. Two amounts
+    in one measuring unit ("50Hz ↔ 60Hz") are the figures, shown as printed (settings31): the
+    user says "sixty hertz", the display prints 60Hz."""
+    amounts = [_AMOUNT.fullmatch(v) for v in flip[1]]
+    values = flip[1]
+    if all(amounts) and len({m.group(2).lower() for m in amounts if m}) == 1:
+        values = [m.group(1) for m in amounts if m]
+    var = b.add_discrete(flip[0] or var_name(b, key), values, label_of(b, key.controls[0]), None)
     b.note(f"variables.{var}.values", ", ".join(flip[1]), flip[2])
+    if values != flip[1]:
+        b.variables[var]["show"] = dict(zip(values, flip[1], strict=True))
     b.feature(var, [{"actions": [key.name], "variable": var, "effect": "toggle"}])
 
 

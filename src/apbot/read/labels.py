@@ -300,7 +300,7 @@ def _letter_said(letter: str) -> re.Pattern[str]:
     """A key printed as one capital letter, where the text shows it is a key: pressed, held
     or touched ("Press M briefly", "hold the M key"), or called a key or button."""
     return re.compile(
-        rf"\b(?i:press|hold|touch|push|tap)\w*\s+(?:the\s+)?{letter}(?![\w'.-])|"
+        rf"\b(?i:press|hold|touch|push|tap)\w*\s+(?:(?i:of|on)\s+)?(?:the\s+)?{letter}(?![\w'.-])|"
         rf"(?<![\w.-]){letter}\s+(?i:key|button)\b",
     )
 

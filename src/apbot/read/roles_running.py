@@ -11,6 +11,7 @@ import itertools
 import re
 
 from apbot.read.build import Builder
+from apbot.read.held_leads import add_held_lead, held_lead
 from apbot.read.labels import words
 from apbot.read.legend_starts import legend_start
 from apbot.read.power_starts import power_starts_work
@@ -153,6 +154,11 @@ def assign_running(
                 noun = "" if switched else held_toggle(b, info)
                 if noun:  # "| START/STOP | start or stop | 3 sec: keep warm on / off |"
                     switched = (noun.upper(), first_mention(b, [info.token]))
+                lead = None if switched else held_lead(b, info)
+                if lead:  # "Reverse: hold START/STOP for 2 s. The REV lamp lights"
+                    add_held_lead(b, info, lead, var)
+                    run_actions.append(info.name)
+                    continue
                 if switched:  # "press and hold START/STOP 3 s to switch AUTO OFF on": its own
                     var = b.add_toggle("_".join(words(switched[0])), switched[0], switched[1])
                     b.feature(var, [{"actions": [info.name], "variable": var, "effect": "toggle"}])
