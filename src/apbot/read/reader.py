@@ -69,6 +69,7 @@ from apbot.read.shown_bars import read_bar_shows
 from apbot.read.shown_figures import read_prefixed_figures
 from apbot.read.sign_glosses import read_sign_glosses
 from apbot.read.signed_keys import read_signed_keys
+from apbot.read.stated_ranges import read_stated_ranges
 from apbot.read.text import check_text, parse_manual
 from apbot.read.turn_refusals import read_turn_refusals
 from apbot.read.typed_minutes import read_typed_minutes
@@ -151,6 +152,7 @@ def read_manual(
     read_held_walks(builder)  # (after the resets: those were read for the switch it replaces)
     read_pressed_walks(builder)  # (after the held walks: a press moving through one is theirs)
     read_press_opened(builder)  # (a press's guessed setting its numbered steps give)
+    read_stated_ranges(builder)  # (a guessed range its section states: "The range is …")
     read_code_walks(builder)  # (a key's chart codes, each row a field: MENU walks them)
     read_enabling_switches(builder)
     read_confirmed_starts(builder)  # ("the first press only asks for confirmation")
