@@ -113,6 +113,8 @@ def _glossed(b: Builder, var: str, spec: dict[str, Any], values: list[str]) -> b
             codes = [c for c in meanings if c]
             if sorted(codes) != sorted(str(v) for v in values) or len(codes) < 2:
                 continue
+            if any(re.fullmatch(r"[a-z]{3,}", c) for c in codes):
+                continue  # ("ECO (saves energy)": a word the user says, described; review31)
             glosses = list(meanings.values())
             if len(set(glosses)) != len(glosses):
                 continue
@@ -146,6 +148,8 @@ def _leader_glossed(b: Builder, var: str, spec: dict[str, Any], values: list[str
             m = pattern.match(line)
             if m is None:
                 continue
+            if re.search(r"\d", m.group(2)):
+                break  # ("Grill ..... Grilling meat 5", "Fan ..... 35 W": a page, a rating)
             gloss = re.sub(r"\([^)]*\)", " ", m.group(2).lower())
             words_ = [w for w in re.findall(r"[a-z][a-z-]*", gloss) if w not in own]
             if not 1 <= len(words_) <= 3:

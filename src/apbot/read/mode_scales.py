@@ -31,6 +31,8 @@ _THIRDS = re.compile(
     rf"({_DECIMAL})\s+to\s+({_DECIMAL})\b[^.]{{0,40}}?\bsteps?\s+of\s+(?:one|a)\s+third\b",
     re.IGNORECASE,
 )
+# "from 16.0 to 26.0 °C in steps of 0.5 °C": a range stepped otherwise, not a list (review31)
+_STEPPED = re.compile(rf"({_DECIMAL})\s+to\s+({_DECIMAL})\b[^.]{{0,40}}?\bsteps?\b", re.IGNORECASE)
 _KEEPS = re.compile(r"\b(?:every|each)\s+mode\s+keeps\s+its\s+own\b", re.IGNORECASE)
 _NOUN = re.compile(r"\b(?:change|set|adjust|choose)s?\s+the\s+([a-z]{3,})\b", re.IGNORECASE)
 
@@ -82,6 +84,8 @@ def _sections(b: Builder, modes: dict[str, str]) -> list[tuple[list[str], int, i
 
 def _scale(text: str) -> list[str]:
     thirds = _THIRDS.search(text)
+    if thirds is None and _STEPPED.search(text):
+        return []  # (its ends and its step are no three values of a list)
     found = [v.replace("−", "-") for v in _VALUE.findall(text)]
     if thirds:  # (a fraction there is a step's size, "one and 1/3 more")
         signed = any(v.startswith("+") for v in found)

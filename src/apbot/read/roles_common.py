@@ -169,7 +169,10 @@ def held_switch(b: Builder, key: ActionInfo) -> tuple[str, int] | None:
 def _later_clause_hold(text: str) -> re.Match[str] | None:
     """The legend's next sentence, its press first and its hold after a semicolon: "Press
     briefly to confirm; press and hold for 2 seconds to switch the beeper on or off"."""
-    for clause in re.split(r";\s*", text)[1:]:
+    clauses = re.split(r";\s*", text)
+    if not re.match(r"\W*(?:press|touch|tap|push)\b", clauses[0], re.IGNORECASE):
+        return None  # ("MODE  Press briefly …; press and hold …": another key's, review31)
+    for clause in clauses[1:]:
         m = HOLD_TO_SWITCH_RE.match(clause)
         if m:
             return m

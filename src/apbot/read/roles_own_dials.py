@@ -85,7 +85,7 @@ def assign_leftovers(b: Builder, silent: list[ActionInfo], evidence: dict[str, E
     for key in silent:
         if typed and key.skill == "press" and ends_entry(b, key):
             # "Press ENTER to finish": the last step of what the number keys type, no setting
-            for name in typed:
+            for name in _entries_closed(b, key, typed):
                 b.features[name].append({"actions": [key.name], "note": "closes the entry"})
                 b.note(f"features.{name}", f"{key.name} closes the entry")
             continue
@@ -109,3 +109,33 @@ def assign_leftovers(b: Builder, silent: list[ActionInfo], evidence: dict[str, E
             f"features.{var}",
             f"{key.name} toggles a setting of its own (the manual says nothing clear)",
         )
+
+
+def _entries_closed(b: Builder, key: ActionInfo, typed: list[str]) -> list[str]:
+    """The typed entries the closing key ends: at each mention of the closing key, the entry
+    whose opening key the manual named last, a few units before (its own steps); all of them
+    when none is (review31: "3. Press ENTER to finish" in the code's steps does not close the
+    clock's entry)."""
+    starts: dict[str, set[int]] = {}
+    for name in typed:
+        steps = b.features[name]
+        opening = [i for i in b.infos if i.name in (steps[0].get("actions") or [])]
+        if len(steps) >= 2 and len(opening) == 1 and not steps[0].get("variable"):
+            starts[name] = {
+                i for c in opening[0].controls if c in b.labels for i in b.labels[c].mentions
+            }
+    near: list[str] = []
+    for end in (i for c in key.controls if c in b.labels for i in b.labels[c].mentions):
+        before = {
+            n: max(s)
+            for n, at in starts.items()
+            if (s := [i for i in at if 0 <= end - i <= _STEPS])
+        }
+        if before:
+            last = max(before, key=lambda n: before[n])
+            if last not in near:
+                near.append(last)
+    return near or typed
+
+
+_STEPS = 6  # units from an entry's opening key to its closing step

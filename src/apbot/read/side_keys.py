@@ -24,6 +24,11 @@ from apbot.read.labels import words
 _SIDES = (("left", "right"), ("front", "rear"), ("upper", "lower"))
 _NOT_NOUNS = frozenset({"side", "hand", "half", "then", "when", "with"})
 _LAMPS = re.compile(r"\b(?:lamps?|lights?|leds?|symbols?)\b", re.IGNORECASE)
+# "both seats may be on together": both sides at once, two settings (review31)
+_BOTH = re.compile(
+    r"\bboth\b[^.;]{0,40}?\b(?:together|at\s+once|at\s+the\s+same\s+time|simultaneously)\b",
+    re.IGNORECASE,
+)
 _ONE = re.compile(r"\bonly\s+one\b|\bone\s+(?:side|at\s+a\s+time)\b", re.IGNORECASE)
 
 
@@ -44,6 +49,8 @@ def read_side_keys(b: Builder, infos: list[ActionInfo], done: set[str]) -> set[s
             _ONE.search(t) and (noun in words(t) or "side" in words(t)) for t in texts
         ):
             continue
+        if any(_BOTH.search(t) and {noun, "side"} & _singular(t) for t in texts):
+            continue  # ("both seats may be on together"; not "both leg rests rise together")
         var = b.add_discrete(noun, ["off", one, other], noun.upper(), None)
         for side in (one, other):
             b.feature(
@@ -97,3 +104,7 @@ def _lamp_signs(b: Builder, texts: list[str], one: str, other: str) -> dict[str,
         return {}
     said = any(all(s in t for s in signs.values()) and _LAMPS.search(t) for t in texts)
     return signs if said else {}
+
+
+def _singular(text: str) -> set[str]:
+    return {w.removesuffix("s") for w in words(text)}

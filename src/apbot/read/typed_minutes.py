@@ -26,6 +26,11 @@ _TOP_RE = re.compile(
     r"(?:and\s+)?(\d{1,2})\s*(?:seconds|sec|s)\b",
     re.IGNORECASE,
 )
+# the clock's own steps set the time of day: "enter the time of day", "hours and minutes"
+_DAY_RE = re.compile(
+    r"\btime\s+of\s+(?:the\s+)?day\b|\bhours?\s+and\s+(?:the\s+)?minutes?\b|\b(?:12|24)[- ]hour\b",
+    re.IGNORECASE,
+)
 
 
 def _said_near(b: Builder, key: str) -> tuple[int, int] | None:
@@ -39,6 +44,8 @@ def _said_near(b: Builder, key: str) -> tuple[int, int] | None:
     top = next((j for j in near if _TOP_RE.search(units[j].text)), None)
     if said is None or top is None:
         return None  # (both: "times are entered as minutes and seconds" alone is a cook time's)
+    if any(_DAY_RE.search(units[j].text) for j in near):
+        return None  # (a microwave's CLOCK beside its cook times: the time of day, review31)
     return said, top
 
 
