@@ -38,6 +38,7 @@ from apbot.read.goal_assign import assign_mentions
 from apbot.read.goal_both import both_values
 from apbot.read.goal_cases import entry_modes, implied_cases, set_by_hand
 from apbot.read.goal_copies import confirmed_choices
+from apbot.read.goal_counted_ends import counted_ends
 from apbot.read.goal_dates import said_dates
 from apbot.read.goal_digits import spelled_codes
 from apbot.read.goal_electric import said_milliamps
@@ -93,6 +94,7 @@ from apbot.read.goal_spoken_numbers import (
     said_steps,
 )
 from apbot.read.goal_start import power_and_running
+from apbot.read.goal_stops import said_power_parts, said_stops
 from apbot.read.goal_switches import switches
 from apbot.read.goal_text import Text
 from apbot.read.goal_thousands import said_thousands
@@ -114,6 +116,9 @@ MAX_INSTRUCTION = 5_000
 
 _REWRITES = (
     without_remarks,
+    said_power_parts,
+    said_stops,
+    counted_ends,
     said_acronyms,
     said_hyphenated,
     said_hundreds_past_ten,

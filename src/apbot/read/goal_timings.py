@@ -21,7 +21,7 @@ def mark_timings(infos: dict[str, VarInfo]) -> None:
         if isinstance(info.var, TimeVariable) or (
             isinstance(info.var, NumericVariable) and info.dimension == "time"
         ):
-            if "clock" in info.vocab and not in_days(info.var):
+            if "clock" in info.vocab and not in_days(info.var) and not _minutes_seconds(info):
                 info.timing = "clock"
             elif concept("delay") in info.vocab:
                 info.timing = "delay"
@@ -50,3 +50,10 @@ def mark_timings(infos: dict[str, VarInfo]) -> None:
             words = set(name_words(f"{info.name} {info.var.label or ''}".casefold()))
             # a SLEEP timer lets the appliance go to sleep: off at its end
             info.turns = "off" if words & {"off", "sleep"} else "on" if "on" in words else None
+
+
+def _minutes_seconds(info: VarInfo) -> bool:
+    """A clock shown as minutes and seconds (a game clock, a countdown's "mm:ss") holds a
+    span of time, not a time of day: "twelve minutes on the game clock" is 12:00 on it."""
+    var = info.var
+    return isinstance(var, TimeVariable) and "h" not in (var.format or "hh").casefold()

@@ -231,7 +231,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         if names and not all(w in STOP_WORDS for w in names):
             phrases.append((coded, value, tuple(stem(w) for w in names), 0.95))
     settings = tuple(f"{n} {i.var.label}".replace("_", " ") for n, i in infos.items())
-    aliases = bracket_aliases(_forms(infos), manual, settings)
+    aliases = bracket_aliases(_forms(infos), manual, settings, frozenset(appliance))
     phrases += [(n, v, stems, 0.9) for n, v, stems in aliases]
     tops = {
         name: code
