@@ -21,8 +21,15 @@ variables:
     depends_on: mode
     wrap: false
     cases:
-      auto: {values: ["-2.0", "-1.7", "-1.3", "-1.0", "-0.7", "-0.3", "0.0", "+0.3", "+0.7", "+1.0", "+1.3", "+1.7", "+2.0"], initial: "0.0"}
-      m: {values: ["1/32", "1/32+0.3", "1/32+0.7", "1/16", "1/16+0.3", "1/16+0.7", "1/8", "1/8+0.3", "1/8+0.7", "1/4", "1/4+0.3", "1/4+0.7", "1/2", "1/2+0.3", "1/2+0.7", "1/1"], initial: "1/1"}
+      auto:
+        values: ["-2.0", "-1.7", "-1.3", "-1.0", "-0.7", "-0.3", "0.0",
+                 "+0.3", "+0.7", "+1.0", "+1.3", "+1.7", "+2.0"]
+        initial: "0.0"
+      m:
+        values: ["1/32", "1/32+0.3", "1/32+0.7", "1/16", "1/16+0.3", "1/16+0.7", "1/8",
+                 "1/8+0.3", "1/8+0.7", "1/4", "1/4+0.3", "1/4+0.7", "1/2", "1/2+0.3",
+                 "1/2+0.7", "1/1"]
+        initial: "1/1"
 actions:
   press_mode: {control: mode_key}
   turn_up: {control: dial, skill: turn_cw}
@@ -83,7 +90,9 @@ actions:
   press_round: {control: period_key}
 features:
   speed:
-    - {actions: [press_up, press_down], variable: speed, effect: {press_up: next, press_down: prev}}
+    - actions: [press_up, press_down]
+      variable: speed
+      effect: {press_up: next, press_down: prev}
   round:
     - {actions: [press_round], variable: round, effect: next}
 """
