@@ -34,6 +34,7 @@ from apbot.model.schema import ApplianceModel, DiscreteVariable
 from apbot.model.values import closest_matches, preview
 from apbot.read.goal_acronyms import said_acronyms
 from apbot.read.goal_ages import said_ages
+from apbot.read.goal_amount_words import said_amounts
 from apbot.read.goal_assign import assign_mentions
 from apbot.read.goal_both import both_values
 from apbot.read.goal_cases import entry_modes, implied_cases, set_by_hand
@@ -77,6 +78,7 @@ from apbot.read.goal_periods import distinct, in_weeks
 from apbot.read.goal_preset_rows import charted_presets
 from apbot.read.goal_presets import lift_presets, preset_companions, restore_presets
 from apbot.read.goal_quantity_values import quantity_values
+from apbot.read.goal_rates import said_rates, said_road_speeds
 from apbot.read.goal_readings import frozen_readings
 from apbot.read.goal_remarks import without_remarks
 from apbot.read.goal_scales import superlatives
@@ -124,6 +126,9 @@ _REWRITES = (
     said_hundreds_past_ten,
     said_points,
     said_steps,
+    said_road_speeds,
+    said_rates,
+    said_amounts,
     numbers_owning,
     said_milliamps,
     said_hundreds,
