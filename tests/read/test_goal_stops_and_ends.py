@@ -144,3 +144,42 @@ def test_a_minutes_and_seconds_clock_holds_a_span() -> None:
     assert parse_instruction(model, "put twelve minutes on the game clock") == {
         "game_clock": "00:12:00"
     }
+
+
+SCOOTER = """
+appliance: {id: scooter_2, category: mobility_scooter, name: "Rova wheelchair", brand: R}
+controls:
+  - {id: power_key, kind: button, label: "POWER"}
+  - {id: light_key, kind: button, label: "LIGHTS"}
+  - {id: hazard_key, kind: button, label: "HAZARD"}
+variables:
+  power: {type: discrete, values: ["off", "on"]}
+  lights: {type: discrete, values: ["off", "on"]}
+  hazard: {type: discrete, values: ["off", "on"]}
+actions:
+  press_power: {control: power_key}
+  press_light: {control: light_key}
+  press_hazard: {control: hazard_key}
+features:
+  power:
+    - {actions: [press_power], variable: power, effect: toggle}
+  lights:
+    - {actions: [press_light], variable: lights, effect: toggle}
+  hazard:
+    - {actions: [press_hazard], variable: hazard, effect: toggle}
+"""
+
+SCOOTER_MANUAL = "The LIGHTS key switches the lights; HAZARD the hazard lights (all four blink).\n"
+
+
+def test_the_chair_of_a_wheelchair_and_its_headlights() -> None:
+    model = loads_model(SCOOTER)
+    assert parse_instruction(model, "switch the chair on with the headlights on", "") == {
+        "power": "on",
+        "lights": "on",
+    }
+
+
+def test_the_hazard_lights_are_the_hazard_switch() -> None:
+    model = loads_model(SCOOTER)
+    assert parse_instruction(model, "the hazard lights on", SCOOTER_MANUAL) == {"hazard": "on"}

@@ -65,8 +65,29 @@ def appliance_words(
     category = frozenset(model.appliance.category.casefold().split("_"))
     said = {s for _var, _value, stems, _weight in phrases for s in stems}
     appliance |= {
+        concept(tail)
+        for tail in _tails(appliance_said(model))
+        if stem(tail) not in said and not any(concept(tail) in i.vocab for i in infos.values())
+    }  # "switch the chair on" for a wheelchair: a compound name said by its head noun
+    appliance |= {
         concept(w)
         for w in title_nouns(manual, category)
         if stem(w) not in said and not any(concept(w) in i.vocab for i in infos.values())
     }  # "switch the dispenser on": not a setting's or a value's word
     return appliance
+
+
+_MIN_TAIL = 5
+"""Letters of a compound's head noun ("chair", "mower", "brush"); shorter tails are too
+often other words ("hair" of "wheelchair")."""
+
+
+def _tails(name: str) -> set[str]:
+    """The head nouns a closed compound of the appliance's name ends in: "wheelchair" gives
+    "chair" (and longer tails no one says, which do no harm)."""
+    return {
+        word[start:]
+        for word in name_words(name)
+        if word.isalpha()
+        for start in range(2, len(word) - _MIN_TAIL + 1)
+    }

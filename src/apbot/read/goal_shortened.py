@@ -155,11 +155,12 @@ SYNONYM_STEMS: dict[str, frozenset[str]] = {
 
 def compound_of_name(view: Model, info: VarInfo, word: str) -> bool:
     """The user's word is a compound whose head is the switch's one-word name ("headlight"
-    for LIGHT, "nightlight" for LAMP) and which the manual itself uses for it: what the
-    panel labels by its head noun, the manual and the user call by the whole compound. Not
-    a word another setting is named by ("backlight" beside BACKLIGHT)."""
+    for LIGHT, "nightlight" for LAMP): what the panel labels by its head noun, the user calls
+    by the whole compound, whether the manual uses it or not ("the headlights" of a chair
+    whose manual says only "lights"). Not a word another setting is named by ("backlight"
+    beside BACKLIGHT)."""
     own = own_stems(info)
-    if len(own) != 1 or word not in view.manual_words:
+    if len(own) != 1:
         return False
     names = [w.casefold() for w in name_words(f"{info.name} {info.var.label or ''}")]
     short = next((w for w in names if stem(w) in own), "")
