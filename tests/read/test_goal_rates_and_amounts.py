@@ -70,3 +70,42 @@ def test_an_amount_said_for_the_legends_adjective() -> None:
 def test_an_end_marked_after_a_quantity_across_lines() -> None:
     assert _said("the quickest feed") == {"feed": 3}
     assert _said("the slowest feed") == {"feed": 12}
+
+
+PRESS = """
+appliance: {id: press_9, category: heat_press, name: "Flatt heat press", brand: F}
+controls:
+  - {id: digit_key, kind: button, label: "DIGIT"}
+  - {id: time_key, kind: button, label: "TIME"}
+  - {id: buzz_key, kind: button, label: "BUZZER"}
+variables:
+  digit: {type: discrete, values: [ones, tens]}
+  time: {type: numeric, unit: "s", ranges: [[0, 90, 10]], initial: 20, wrap: true}
+  buzzer: {type: discrete, values: ["on", "off"], show: {"on": "", "off": "MUTE"}}
+actions:
+  press_digit: {control: digit_key}
+  press_time: {control: time_key}
+  press_buzz: {control: buzz_key}
+features:
+  digit:
+    - {actions: [press_digit], variable: digit, effect: next}
+  time:
+    - {actions: [press_time], variable: time, effect: next}
+  buzzer:
+    - {actions: [press_buzz], variable: buzzer, effect: toggle}
+"""
+
+
+def test_silence_said_switches_the_buzzer_off() -> None:
+    model = loads_model(PRESS)
+    assert parse_instruction(model, "press for thirty seconds, silently") == {
+        "time": 30,
+        "buzzer": "off",
+    }
+    assert parse_instruction(model, "keep it quiet") == {"buzzer": "off"}
+
+
+def test_a_number_said_is_no_place_of_a_digit_cursor() -> None:
+    model = loads_model(PRESS)
+    assert parse_instruction(model, "a one-minute press") == {"time": 60}
+    assert parse_instruction(model, "for ten seconds") == {"time": 10}

@@ -57,7 +57,7 @@ from apbot.read.goal_limits import limit_numbers
 from apbot.read.goal_listed import listed_outside
 from apbot.read.goal_listed_days import listed_in_days, weeks_elsewhere
 from apbot.read.goal_marked_ends import marked_ends
-from apbot.read.goal_mute import muted_volume
+from apbot.read.goal_mute import muted_volume, silenced_sounds
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
 from apbot.read.goal_numbered_times import numbered_times
 from apbot.read.goal_offs import (
@@ -89,6 +89,7 @@ from apbot.read.goal_signed import signed_changes
 from apbot.read.goal_spans import time_spans
 from apbot.read.goal_spelling import joined_compounds
 from apbot.read.goal_spoken_numbers import (
+    a_number_for_a_name,
     numbers_owning,
     said_hundreds_past_ten,
     said_hyphenated,
@@ -185,6 +186,8 @@ def parse_instruction(
     for match in matches:
         if match.var in goal or any(k in claimed for k in range(match.start, match.end)):
             continue
+        if a_number_for_a_name(text, match.start, match.end, match.value):
+            continue  # "ten seconds" is no TENS
         goal[match.var] = match.value
         where[match.var] = match.start
         claimed.update(range(match.start, match.end))
@@ -225,6 +228,7 @@ def parse_instruction(
     off_levels(view, text, goal, claimed)
     switched_off_values(view, text, goal, where)
     no_values(view, text, goal, claimed)
+    silenced_sounds(view, text, goal, claimed)
     switches(view, text, goal, claimed, where)
     frozen_readings(view, text, goal, where)
     on_values(view, text, goal, claimed, where)
