@@ -34,10 +34,12 @@ from apbot.model.schema import ApplianceModel, DiscreteVariable
 from apbot.model.values import closest_matches, preview
 from apbot.read.goal_acronyms import said_acronyms
 from apbot.read.goal_ages import said_ages
+from apbot.read.goal_amount_words import said_amounts
 from apbot.read.goal_assign import assign_mentions
 from apbot.read.goal_both import both_values
 from apbot.read.goal_cases import entry_modes, implied_cases, set_by_hand
 from apbot.read.goal_copies import confirmed_choices
+from apbot.read.goal_counted_ends import counted_ends
 from apbot.read.goal_dates import said_dates
 from apbot.read.goal_digits import spelled_codes
 from apbot.read.goal_electric import said_milliamps
@@ -55,7 +57,7 @@ from apbot.read.goal_limits import limit_numbers
 from apbot.read.goal_listed import listed_outside
 from apbot.read.goal_listed_days import listed_in_days, weeks_elsewhere
 from apbot.read.goal_marked_ends import marked_ends
-from apbot.read.goal_mute import muted_volume
+from apbot.read.goal_mute import muted_volume, silenced_sounds
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
 from apbot.read.goal_numbered_times import numbered_times
 from apbot.read.goal_offs import (
@@ -76,6 +78,7 @@ from apbot.read.goal_periods import distinct, in_weeks
 from apbot.read.goal_preset_rows import charted_presets
 from apbot.read.goal_presets import lift_presets, preset_companions, restore_presets
 from apbot.read.goal_quantity_values import quantity_values
+from apbot.read.goal_rates import said_rates, said_road_speeds
 from apbot.read.goal_readings import frozen_readings
 from apbot.read.goal_remarks import without_remarks
 from apbot.read.goal_scales import superlatives
@@ -86,6 +89,7 @@ from apbot.read.goal_signed import signed_changes
 from apbot.read.goal_spans import time_spans
 from apbot.read.goal_spelling import joined_compounds
 from apbot.read.goal_spoken_numbers import (
+    a_number_for_a_name,
     numbers_owning,
     said_hundreds_past_ten,
     said_hyphenated,
@@ -93,6 +97,7 @@ from apbot.read.goal_spoken_numbers import (
     said_steps,
 )
 from apbot.read.goal_start import power_and_running
+from apbot.read.goal_stops import said_power_parts, said_stops
 from apbot.read.goal_switches import switches
 from apbot.read.goal_text import Text
 from apbot.read.goal_thousands import said_thousands
@@ -114,11 +119,17 @@ MAX_INSTRUCTION = 5_000
 
 _REWRITES = (
     without_remarks,
+    said_power_parts,
+    said_stops,
+    counted_ends,
     said_acronyms,
     said_hyphenated,
     said_hundreds_past_ten,
     said_points,
     said_steps,
+    said_road_speeds,
+    said_rates,
+    said_amounts,
     numbers_owning,
     said_milliamps,
     said_hundreds,
@@ -175,6 +186,8 @@ def parse_instruction(
     for match in matches:
         if match.var in goal or any(k in claimed for k in range(match.start, match.end)):
             continue
+        if a_number_for_a_name(text, match.start, match.end, match.value):
+            continue  # "ten seconds" is no TENS
         goal[match.var] = match.value
         where[match.var] = match.start
         claimed.update(range(match.start, match.end))
@@ -215,6 +228,7 @@ def parse_instruction(
     off_levels(view, text, goal, claimed)
     switched_off_values(view, text, goal, where)
     no_values(view, text, goal, claimed)
+    silenced_sounds(view, text, goal, claimed)
     switches(view, text, goal, claimed, where)
     frozen_readings(view, text, goal, where)
     on_values(view, text, goal, claimed, where)

@@ -32,13 +32,17 @@ MAX_ALIAS_WORDS = 2
 
 
 def bracket_aliases(
-    forms: dict[str, dict[Any, list[str]]], manual: str, settings: tuple[str, ...] = ()
+    forms: dict[str, dict[Any, list[str]]],
+    manual: str,
+    settings: tuple[str, ...] = (),
+    appliance: frozenset[str] = frozenset(),
 ) -> list[tuple[str, Any, tuple[str, ...]]]:
     """(setting, value, stems) for each name a bracket gives one value. ``forms``: setting ->
     value -> the texts it is written as (its name, its display text); ``settings``: the
     names of every setting. A name two values would share, or one with a word of a value's
     own name or of a setting's name ("AUTO (humidity)": what AUTO follows, not AUTO), is
-    dropped."""
+    dropped. A word of ``appliance`` (the concepts that name the appliance) is left out of a
+    name as a kind noun is: "M (manual flash)" on a flash names M "manual"."""
     if not manual:
         return []
     lines = manual.splitlines()
@@ -53,27 +57,31 @@ def bracket_aliases(
     for name, values in forms.items():
         for value, texts in values.items():
             for text in {t.strip() for t in texts}:
-                if len(text) < 2 or not any(c.isalpha() for c in text):
+                if not any(c.isalpha() for c in text) or (len(text) < 2 and not text.isupper()):
                     continue
-                for alias in _aliases(text, lines):
+                for alias in _aliases(text, lines, appliance):
                     stems = tuple(stem(w) for w in alias)
                     if stems and not set(stems) & own:
                         found.setdefault(stems, set()).add((name, value))
     return [(n, v, stems) for stems, said in found.items() if len(said) == 1 for n, v in said]
 
 
-def _aliases(text: str, lines: list[str]) -> list[list[str]]:
+def _aliases(text: str, lines: list[str], appliance: frozenset[str]) -> list[list[str]]:
     """The bracketed names of ``text`` in the manual: right after it on its line, or alone
-    on the next line, in its column or under the row it opens."""
+    on the next line, in its column or under the row it opens. A one-letter code ("M") only
+    where it opens its line, as a heading does: in prose a letter is too often something
+    else."""
     said = re.compile(rf"(?<![\w-]){re.escape(text)}(?![\w-])", re.IGNORECASE)
     out: list[list[str]] = []
     for index, line in enumerate(lines):
         for match in said.finditer(line):
             if match[0] != match[0].upper():
                 continue  # as the panel writes it ("COLD"), not a word of the prose ("cold")
+            if len(text) < 2 and line[: match.start()].strip():
+                continue
             after = _BRACKET.match(line, _skip_spaces(line, match.end()))
             if after is not None:
-                out += _names(after[1])
+                out += _names(after[1], appliance)
                 continue
             below = lines[index + 1] if index + 1 < len(lines) else ""
             alone = _BRACKET.fullmatch(below.strip())
@@ -81,7 +89,7 @@ def _aliases(text: str, lines: list[str]) -> list[list[str]]:
                 continue
             opens = not line[: match.start()].strip()  # the row's own name: all it says is its
             if opens or abs(below.index("(") - match.start()) <= 2:
-                out += _names(alone[1])
+                out += _names(alone[1], appliance)
     return out
 
 
@@ -90,7 +98,7 @@ def _skip_spaces(line: str, k: int) -> int:
     return len(line) - len(line[k:].lstrip(" "))
 
 
-def _names(inside: str) -> list[list[str]]:
+def _names(inside: str, appliance: frozenset[str] = frozenset()) -> list[list[str]]:
     """The names one bracket holds ("plain, salted"), each one plain word, with or without a
     kind noun ("winter mode": the user's own "mode" is read as such)."""
     out: list[list[str]] = []
@@ -105,7 +113,9 @@ def _names(inside: str) -> list[list[str]]:
             continue
         if any(w in _NOT_NAMES for w in words) or len(part.split()) != len(words):
             continue
-        words = [w for w in words if not kind_noun(concept(w))] or words
+        words = [
+            w for w in words if not kind_noun(concept(w)) and concept(w) not in appliance
+        ] or words
         if len(words) != 1 or words[0] in STOP_WORDS or words[0].endswith("est"):
             continue  # one plain word: "(winter mode)", not "(right stop)" nor "(coolest)"
         if words[0] in COUNT_NOUNS:

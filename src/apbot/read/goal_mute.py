@@ -90,3 +90,38 @@ def _silent_value(view: Model, info: VarInfo, goal: Goal) -> object:
         silent = [v for v in values if str(v).casefold() in _SILENT_VALUES]
         return silent[0] if len(silent) == 1 else None
     return None
+
+
+_QUIET_WORDS = _SILENT_WORDS | frozenset({"quiet", "quietly", "silently"})
+
+
+def silenced_sounds(view: Model, text: Text, goal: Goal, claimed: set[int]) -> None:
+    """ "keep it quiet", "silently", "mute it" switch the one sound switch (BUZZER, BEEP on /
+    off) off when the switch is not named itself (then its words say its state) and no
+    setting is named by the word ("the quiet mode")."""
+    sounds = [
+        info
+        for info in view.infos.values()
+        if _sound_switch(view)
+        and info.role == "switch"
+        and concept("buzzer") in own_concepts(info)
+        and not own_stems(info) & {stem(w) for w in _QUIET_WORDS}  # QUIET on is the silence
+        and info.off is not None
+    ]
+    if len(sounds) != 1 or sounds[0].name in goal:
+        return
+    info = sounds[0]
+    if any(
+        text.word(k) not in _QUIET_WORDS and text.concepts[k] in own_concepts(info)
+        for k in range(len(text.tokens))
+    ):
+        return  # "the buzzer off", "quiet beeps": the switch is named, its state said
+    for k in range(len(text.tokens)):
+        word = text.word(k)
+        if word not in _QUIET_WORDS or k in claimed:
+            continue
+        if any(concept(word) in other.vocab for other in view.infos.values() if other is not info):
+            continue  # "the quiet mode": another setting's own word
+        goal[info.name] = info.off
+        claimed.add(k)
+        return

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import re
 
+from apbot.read.goal_appliance_words import own_name
 from apbot.read.goal_shortened import SYNONYM_STEMS
 from apbot.read.goal_text import (
     CLAUSE_ENDS,
@@ -20,7 +21,7 @@ from apbot.read.goal_text import (
     near_vocab,
     phrase_here,
 )
-from apbot.read.goal_view import Model, own_name, own_stems
+from apbot.read.goal_view import Model, own_stems
 from apbot.read.goal_vocab import HIGHEST, LOWEST, SCALES, SYNONYMS, stem
 from apbot.read.numbers import COUNT_NOUNS
 

@@ -9,6 +9,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from apbot.read.goal_adverbs import adverb_of_no_value
+from apbot.read.goal_appliance_words import appliance_said
 from apbot.read.goal_fit import CODE
 from apbot.read.goal_name_context import (
     _by_itself,
@@ -49,7 +50,7 @@ from apbot.read.goal_text import (
     verb_positions,
 )
 from apbot.read.goal_ties import told_apart
-from apbot.read.goal_view import Goal, Model, appliance_said, own_stems, phrase_words
+from apbot.read.goal_view import Goal, Model, own_stems, phrase_words
 from apbot.read.goal_vocab import HIGHEST, LOWEST, similar, stem
 
 

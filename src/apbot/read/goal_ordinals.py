@@ -90,7 +90,9 @@ def _numbered(info: VarInfo) -> bool:
         return info.dimension is None
     if isinstance(info.var, DiscreteVariable):
         values = [str(v) for v in info.values if str(v).casefold() != "off"]  # OFF, L1 … L5
-        return len(values) >= 2 and all(
-            CODE.fullmatch(v) or v.isdigit() or _WORD_NUMBER.fullmatch(v) for v in values
-        )
+        counted = [
+            v for v in values if CODE.fullmatch(v) or v.isdigit() or _WORD_NUMBER.fullmatch(v)
+        ]
+        # one named value past the counted ones (PER 1 … PER 4, OT) still leaves them counted
+        return len(values) >= 2 and len(counted) >= len(values) - (len(values) >= 4)
     return False

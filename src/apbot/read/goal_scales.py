@@ -70,6 +70,7 @@ def superlatives(
         if end is None and _little_of(view, text, k, goal):
             end, reach = 0, 2  # "with just a little water": the least of it that works
         scale_index = None
+        middle = word in ("middle", "mid")  # of any odd count of levels, not of three only
         for scale in SCALES:
             said = "medium" if word in ("middle", "mid", "med") else word
             if said in scale:
@@ -91,7 +92,10 @@ def superlatives(
             if info.timing == "clock":
                 continue  # "the hottest day": the time of day now is no scale to pick an end of
             values = domain_values(view, info, goal)
-            if scale_index is not None and end is None and len(levels(values)) != scale_index[1]:
+            count = len(levels(values))
+            if middle and end is None and count % 2 and count >= 3:
+                pass  # "the middle speed" of five: the third
+            elif scale_index is not None and end is None and count != scale_index[1]:
                 continue  # "a medium massage" of OFF, 1, 2, 3: medium of the three levels
             score = near_vocab(info, text, k, k + 1, reach=reach) or _after_its_case(
                 info, text, k, goal
@@ -138,15 +142,18 @@ def superlatives(
         off_first = (len(values) > 2 and is_off_level(view.infos[name], values[0])) or (
             len(values) > 1 and bool(ladder(values))
         )
-        back = keyed_offset(text, k) if keyed is not None else 0
-        if back and back < len(values):
-            goal[name] = values[back] if end == 0 else values[-1 - back]  # "second finest"
+        back = keyed_offset(text, k) if keyed is not None or word in LOWEST | HIGHEST else 0
+        first = 1 if end == 0 and off_first and keyed is None else 0
+        if back and first + back < len(values):
+            # "the second finest", "the second highest speed": steps back from that end
+            goal[name] = values[first + back] if end == 0 else values[-1 - back]
         elif end == 0 and off_first:
             goal[name] = values[1]  # "the lowest level": the lowest one that works, not off
         elif end is not None:
             goal[name] = values[end]
         elif scale_index is not None:
-            goal[name] = levels(values)[scale_index[0]]
+            steps = levels(values)
+            goal[name] = steps[len(steps) // 2] if middle else steps[scale_index[0]]
         where[name] = k
         claimed.add(k)
 

@@ -153,19 +153,27 @@ SYNONYM_STEMS: dict[str, frozenset[str]] = {
 }
 
 
+_PLACES = frozenset({"head", "tail", "side", "front", "rear", "top", "bottom", "under"})
+"""First parts of a compound that say where a thing sits, not what kind it is."""
+
+
 def compound_of_name(view: Model, info: VarInfo, word: str) -> bool:
     """The user's word is a compound whose head is the switch's one-word name ("headlight"
-    for LIGHT, "nightlight" for LAMP) and which the manual itself uses for it: what the
-    panel labels by its head noun, the manual and the user call by the whole compound. Not
-    a word another setting is named by ("backlight" beside BACKLIGHT)."""
+    for LIGHT, "nightlight" for LAMP) and which the manual itself uses for it, or whose first
+    part only says where the thing sits ("the headlights" of a chair whose manual says only
+    "lights"; a "sunlamp" is another lamp): what the panel labels by its head noun, the user
+    calls by the whole compound. Not a word another setting is named by ("backlight" beside
+    BACKLIGHT)."""
     own = own_stems(info)
-    if len(own) != 1 or word not in view.manual_words:
+    if len(own) != 1:
         return False
     names = [w.casefold() for w in name_words(f"{info.name} {info.var.label or ''}")]
     short = next((w for w in names if stem(w) in own), "")
     rest = word[: len(word) - len(short)]
     if len(short) < 4 or not word.endswith(short) or len(rest) < 3 or not rest.isalpha():
         return False
+    if word not in view.manual_words and rest not in _PLACES:
+        return False  # "sunlamp" for a taillamp: another kind of thing, unless the manual says it
     return not any(
         concept(word) in other.vocab or stem(word) in own_stems(other)
         for other in view.infos.values()

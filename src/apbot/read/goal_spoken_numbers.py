@@ -14,6 +14,7 @@ from __future__ import annotations
 import re
 
 from apbot.model.values import NUMBER_WORDS
+from apbot.read.goal_text import Text
 from apbot.read.goal_view import Model
 
 # words that count but are no figure of a said number ("twelve hundred a minute" is 1200 per
@@ -147,3 +148,14 @@ def numbers_owning(view: Model, instruction: str) -> str:
         return f"{before} {match[2]}"
 
     return _POSSESSIVE.sub(owner, instruction.replace("\u2019", "'"))
+
+
+def a_number_for_a_name(text: Text, start: int, end: int, value: object) -> bool:
+    """The words a value was matched from are a number said ("one", "ten") and the value a
+    word of counting places (ONES, TENS, HUNDREDS of a digit cursor) that only shares their
+    stem: "a one-minute press", "for ten seconds" ask for no cursor position."""
+    name = str(value).casefold()
+    if not name.isalpha() or name in NUMBER_WORDS:
+        return False
+    words = [text.word(k) for k in range(start, end)]
+    return bool(words) and all(w in NUMBER_WORDS and w != name for w in words)

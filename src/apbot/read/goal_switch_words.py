@@ -76,3 +76,23 @@ def state_said_after(text: Text, k: int) -> bool:
         return False
     after = text.word(j + 1)
     return not (after[:1].isdigit() or after in NUMBER_WORDS)
+
+
+def qualified_by_anothers(view: Model, info: VarInfo, text: Text, k: int) -> bool:
+    """This switch's own word right after another switch's own word, in a phrase the manual
+    prints, names that other one: "the hazard lights" (manual: "hazard lights") are the
+    HAZARD switch, not LIGHTS; "hazard warning lights" too, one word between."""
+    if text.stems[k] not in own_stems(info):
+        return False
+    for j in (k - 1, k - 2):
+        if j < 0 or not text.word(j).isalpha() or text.word(j) in STOP_WORDS:
+            return False
+        if text.stems[j] in own_stems(info):
+            return False
+        if any(
+            other is not info and other.role == "switch" and text.stems[j] in own_stems(other)
+            for other in view.infos.values()
+        ):
+            phrase = " ".join(text.word(x) for x in range(j, k + 1))
+            return any(phrase in line for line in view.manual_lines)
+    return False

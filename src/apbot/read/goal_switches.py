@@ -8,6 +8,7 @@ from apbot.read.goal_let import kept_on, never_let
 from apbot.read.goal_shortened import compound_of_name
 from apbot.read.goal_switch_words import (
     another_switchs_phrase,
+    qualified_by_anothers,
     state_said_after,
     tail_of_anothers,
     whole_name_switched,
@@ -104,6 +105,8 @@ def switches(
                 continue  # "clean the ventilation slots": a part of the body, not the switch
             if another_switchs_phrase(view, info, text, k) or tail_of_anothers(view, info, text, k):
                 continue  # "super freeze": SUPER FREEZE, not SUPER COOL that shares SUPER
+            if qualified_by_anothers(view, info, text, k):
+                continue  # "the hazard lights": HAZARD's, no LIGHTS
             if _in_anothers_name(view, goal, info, text, k, where, claimed):
                 continue  # "the light timer to 3.5 minutes": LIGHT TIME's word, no LIGHT switch
             mine = text.stems[k] in own or key in own_concepts(info)

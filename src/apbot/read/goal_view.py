@@ -19,13 +19,11 @@ from apbot.model.schema import (
     GoTo,
     NumericVariable,
     Step,
-    TimeVariable,
 )
-from apbot.read.belief_name import UNNAMED
 from apbot.read.goal_aliases import bracket_aliases
-from apbot.read.goal_daytimes import day_dial, switch_time, whole_day
+from apbot.read.goal_appliance_words import appliance_said, appliance_words
 from apbot.read.goal_legends import add_kind_nouns, add_setting_words, legend_words
-from apbot.read.goal_manual import coded_names, title_nouns
+from apbot.read.goal_manual import coded_names
 from apbot.read.goal_own_names import TIMED_STOPS, add_nouns, add_timed_stops
 from apbot.read.goal_phrases import value_phrases
 from apbot.read.goal_roles import (
@@ -36,10 +34,10 @@ from apbot.read.goal_roles import (
     step_effects,
     steps_of,
 )
+from apbot.read.goal_timings import mark_timings
 from apbot.read.goal_values import (
     OFF_WORDS,
     ON_WORDS,
-    in_days,
     kind_noun,
     name_words,
     numeric_values,
@@ -102,17 +100,6 @@ class Model:
     # the manual's words: a three-letter panel code is named only by a word it uses ("slow")
     manual_lines: tuple[str, ...] = ()
     # the manual's lines, casefolded: where it prints a setting's name beside a value
-
-
-def own_name(model: ApplianceModel) -> str:
-    """The appliance's name, "" for a read belief's placeholder (:data:`UNNAMED`)."""
-    return "" if model.appliance.name == UNNAMED else model.appliance.name
-
-
-def appliance_said(model: ApplianceModel) -> str:
-    """The appliance's name and category as a user may say them (casefolded; a read belief's
-    placeholder name left out)."""
-    return f"{own_name(model)} {model.appliance.category.replace('_', ' ')}".strip().casefold()
 
 
 _OWN_NOUNS = frozenset({"key"})
@@ -212,76 +199,10 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
                     _add_vocab(info, label, 0.8)
     mark_power_and_running(model, infos)
     _sound_is_volume(infos)
-    for info in infos.values():
-        if isinstance(info.var, TimeVariable) or (
-            isinstance(info.var, NumericVariable) and info.dimension == "time"
-        ):
-            if "clock" in info.vocab and not in_days(info.var):
-                info.timing = "clock"
-            elif concept("delay") in info.vocab:
-                info.timing = "delay"
-            elif concept("finish") in info.vocab:
-                # a time of day to finish at ("READY AT") or a wait ("READY IN", "END 3h")
-                at = isinstance(info.var, TimeVariable) and not (
-                    {"in", "after"} & set(name_words(f"{info.name} {info.var.label or ''}"))
-                )
-                info.timing = "finish" if at else "delay"
-    clocked = any(info.timing == "clock" for info in infos.values())
-    for info in infos.values():
-        if clocked and info.timing == "duration" and whole_day(info) and switch_time(info):
-            info.timing = "at"  # beside the clock, ON TIME / START: when it switches
-        elif clocked and info.timing == "duration" and whole_day(info):
-            # beside the clock, a TIMER that wraps at 23:59 is a time of day: when it is done
-            info.timing = "finish"
-            info.vocab.setdefault(concept("finish"), 0.5)
-        elif info.timing == "duration" and day_dial(info):
-            info.timing = "at"  # no clock beside it, yet a dial of the day's hours
-    for info in infos.values():
-        if info.timing in ("duration", "delay") and (
-            isinstance(info.var, TimeVariable)
-            or info.dimension == "time"
-            or quantity_dimensions(info.values) == {"time"}
-        ):
-            words = set(name_words(f"{info.name} {info.var.label or ''}".casefold()))
-            # a SLEEP timer lets the appliance go to sleep: off at its end
-            info.turns = "off" if words & {"off", "sleep"} else "on" if "on" in words else None
+    mark_timings(infos)
     phrases = value_phrases(model, infos)
     start_values = start_values_of(model, infos)
-    appliance = {concept(w) for w in name_words(appliance_said(model))}
-    appliance |= {
-        concept(w)
-        for w in (
-            "it",
-            "machine",
-            "appliance",
-            "unit",
-            "device",
-            "washer",
-            "cooker",
-            "fryer",
-            "oven",
-            "kettle",
-            "maker",
-            "dehumidifier",
-            "steriliser",
-            "sterilizer",
-            "hob",
-            "ac",
-            "aircon",
-            "unit",
-            "blender",
-            "dishwasher",
-            "toaster",
-            "everything",
-        )
-    }
-    category = frozenset(model.appliance.category.casefold().split("_"))
-    said = {s for _var, _value, stems, _weight in phrases for s in stems}
-    appliance |= {
-        concept(w)
-        for w in title_nouns(manual, category)
-        if stem(w) not in said and not any(concept(w) in i.vocab for i in infos.values())
-    }  # "switch the dispenser on": not a setting's or a value's word
+    appliance = appliance_words(model, manual, infos, phrases)
     keys: dict[str, list[str]] = {}
     set_keys: dict[str, list[str]] = {}  # the settings' keys, for what their legends call them
     for _feature, _index, step in steps_of(model):
@@ -310,7 +231,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
         if names and not all(w in STOP_WORDS for w in names):
             phrases.append((coded, value, tuple(stem(w) for w in names), 0.95))
     settings = tuple(f"{n} {i.var.label}".replace("_", " ") for n, i in infos.items())
-    aliases = bracket_aliases(_forms(infos), manual, settings)
+    aliases = bracket_aliases(_forms(infos), manual, settings, frozenset(appliance))
     phrases += [(n, v, stems, 0.9) for n, v, stems in aliases]
     tops = {
         name: code
