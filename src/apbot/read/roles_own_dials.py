@@ -13,7 +13,7 @@ from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.labels import words
 from apbot.read.roles_common import NUMERIC_WORDS, label_of, numeric_list, turns, var_name
-from apbot.read.roles_confirm import ends_entry
+from apbot.read.roles_confirm import confirmed_noun, ends_entry
 from apbot.read.roles_lists import dial_ends, list_evidence
 from apbot.read.shapes import CHOICE_WORDS, Evidence
 
@@ -83,8 +83,9 @@ def assign_leftovers(b: Builder, silent: list[ActionInfo], evidence: dict[str, E
         if steps and set(steps[-1].get("actions") or []) & digit_keys and steps[-1].get("variable")
     ]
     for key in silent:
-        if typed and key.skill == "press" and ends_entry(b, key):
+        if typed and key.skill == "press" and ends_entry(b, key) and not confirmed_noun(b, key):
             # "Press ENTER to finish": the last step of what the number keys type, no setting
+            # ("ENTER  Ends the entry of a design number" names its own setting instead)
             for name in _entries_closed(b, key, typed):
                 b.features[name].append({"actions": [key.name], "note": "closes the entry"})
                 b.note(f"features.{name}", f"{key.name} closes the entry")
