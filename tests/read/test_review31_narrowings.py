@@ -175,3 +175,25 @@ Turn the FUNCTION knob: GRILL, FAN, DEFROST.
 def test_a_table_of_contents_line_is_no_gloss_of_a_value() -> None:
     model = read_manual(OVEN, ["turn_function_cw", "turn_function_ccw"]).model
     assert model.variables["function"].values == ["grill", "fan", "defrost"]
+
+
+# a menu whose names are words, described in a dotted legend (the styled rice cooker's shape)
+MENU_LEGEND = """
+## Menus
+
+Press MENU to step through the menus:
+
+  WHITE → BROWN → PORRIDGE → STEAM
+
+  WHITE ........ everyday white rice
+  BROWN ........ whole-grain rice
+  PORRIDGE ..... rice porridge
+  STEAM ........ vegetables and dumplings
+"""
+
+
+def test_menu_words_described_in_a_dotted_legend_keep_their_names() -> None:
+    model = read_manual(MENU_LEGEND, ["press_menu", "press_start"]).model
+    values = [v for var in model.variables.values() for v in (getattr(var, "values", None) or [])]
+    assert "white" in values and "porridge" in values
+    assert "everyday white rice" not in values

@@ -154,6 +154,8 @@ def _leader_glossed(b: Builder, var: str, spec: dict[str, Any], values: list[str
             words_ = [w for w in re.findall(r"[a-z][a-z-]*", gloss) if w not in own]
             if not 1 <= len(words_) <= 3:
                 break
+            if set(str(value).lower().split()) <= set(re.findall(r"[a-z]+", gloss)):
+                break  # ("WHITE ..... everyday white rice": the name, described, stays)
             names[str(value)] = " ".join(words_)
             shows[str(value)] = m.group(1)
             at = at if at is not None else n
