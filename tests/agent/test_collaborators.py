@@ -388,3 +388,17 @@ def test_an_unlock_is_seen_by_the_silence_of_its_own_screen() -> None:
     s.press(s.planned("press_power"))
     done = s.press(s.planned("press_lock"))
     assert not done.surprising and s.evidence["child_lock"] == "off"
+
+
+def test_the_display_learner_reads_values_that_share_their_start_as_whole_values() -> None:
+    """'1/2+0.7' and '1/2+0.3' are two powers printed alone, not a template '1/2+0.{value}'
+    of words 7 and 3 (a flash's output in thirds of a stop)."""
+    speeds = '"1/2", "1/2+0.3", "1/2+0.7"'
+    truth = model_from(
+        (FAN % {"speeds": speeds, "hours": 4, "timer": TIMER_STEPS}).replace(
+            "label: SPEED}", 'label: SPEED, show: "{value}"}'
+        )
+    )
+    s = session(truth, fan(speeds=speeds))
+    assert DisplayLearner(s).learn("speed", ["1/2+0.7", "1/2+0.3"])
+    assert s.belief.model.variables["speed"].show == "{value}"

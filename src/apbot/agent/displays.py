@@ -62,8 +62,11 @@ class DisplayLearner:
         if isinstance(spec, NumericVariable) and spec.unit:
             # the manual names a unit ("45 %") the panel does not print ("45")
             variants.append((spec.model_copy(update={"unit": None}), None, True))
-        # a text that holds the believed value first, in any style; a bare value only then
-        found = next(
+        # texts whose varying part is a whole value of the setting's domain first ("1/2+0.7"
+        # and "1/2+0.3" show 1/2+0.7 and 1/2+0.3, not a template "1/2+0.{value}" of words 7, 3)
+        found = _whole_values(spec, mains, session.domain_values(name))
+        # then a text that holds the believed value, in any style; a bare value only then
+        found = found or next(
             (
                 (template, style, unitless)
                 for bare in (False, True)
@@ -360,3 +363,22 @@ def _spelt(lamp: str, value: Any, text: str) -> bool:
     """
     words = rf"{re.escape(lamp)}\s+{re.escape(str(value))}"
     return re.search(rf"(?<!\w){words}(?!\w)", text, re.I) is not None
+
+
+def _whole_values(
+    spec: AnyVariable, mains: list[str], domain: list[Any]
+) -> tuple[str, None, bool] | None:
+    """The template under which every text shows a whole value of a word setting's domain
+    (None: no such template, or not a word setting)."""
+    if not isinstance(spec, DiscreteVariable) or len(mains) < 2 or not domain:
+        return None
+    known = {str(v).lower(): v for v in domain}
+
+    def parse(text: str) -> Any:
+        value = loose(spec, text)
+        return None if value is None else known.get(str(value).lower())
+
+    template = infer_template(
+        mains, lambda value: display_value(spec, value), parse, words=True, backtrack=True
+    )
+    return None if template is None else (template, None, False)

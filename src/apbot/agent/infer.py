@@ -220,6 +220,7 @@ def infer_template(
     words: bool = False,
     known: Any = None,
     bare: bool = True,
+    backtrack: bool = False,
 ) -> str | None:
     """The display template (``"PL{value}"``) behind texts that show one setting with
     different values: the common start and end are the template's own text, the part that
@@ -228,6 +229,8 @@ def infer_template(
     ``words``: the values are words (a discrete setting), not numbers or times. With a single
     text, ``known`` is the value it is believed to show; else (``bare``) a text that is a whole
     value printed alone reads as that value.
+    ``backtrack``: the shared start may reach into the value ("1/2+0." of "1/2+0.7" and
+    "1/2+0.3"), so shorter starts are tried too — for a ``parse`` that takes only real values.
 
     >>> infer_template(["PL7", "PL8"], str, lambda t: int(t) if t.isdigit() else None)
     'PL{value}'
@@ -272,13 +275,15 @@ def infer_template(
         prefix = prefix[:-1]  # do not cut into the value ("TEMP 1" of "TEMP 180")
     while suffix and inside(suffix[0]):
         suffix = suffix[1:]
-    for cut in range(len(suffix) + 1):  # a unit the model prints with the value moves into it
-        tail = suffix[cut:]
-        values = [parse(t[len(prefix) : len(t) - len(tail)]) for t in texts]
-        if all(v is not None for v in values) and all(
-            prefix + render(v) + tail == t for v, t in zip(values, texts, strict=True)
-        ):
-            return prefix + "{value}" + tail
+    starts = [prefix[:end] for end in range(len(prefix), -1, -1)] if backtrack else [prefix]
+    for start in starts:
+        for cut in range(len(suffix) + 1):  # a unit the model prints with the value moves in
+            tail = suffix[cut:]
+            values = [parse(t[len(start) : len(t) - len(tail)]) for t in texts]
+            if all(v is not None for v in values) and all(
+                start + render(v) + tail == t for v, t in zip(values, texts, strict=True)
+            ):
+                return start + "{value}" + tail
     return None
 
 
