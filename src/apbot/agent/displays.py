@@ -64,7 +64,9 @@ class DisplayLearner:
             variants.append((spec.model_copy(update={"unit": None}), None, True))
         # texts whose varying part is a whole value of the setting's domain first ("1/2+0.7"
         # and "1/2+0.3" show 1/2+0.7 and 1/2+0.3, not a template "1/2+0.{value}" of words 7, 3)
-        found = _whole_values(spec, mains, session.domain_values(name))
+        found: tuple[str, str | None, bool] | None = _whole_values(
+            spec, mains, session.domain_values(name)
+        )
         # then a text that holds the believed value, in any style; a bare value only then
         found = found or next(
             (

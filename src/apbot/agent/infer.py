@@ -275,15 +275,15 @@ def infer_template(
         prefix = prefix[:-1]  # do not cut into the value ("TEMP 1" of "TEMP 180")
     while suffix and inside(suffix[0]):
         suffix = suffix[1:]
-    starts = [prefix[:end] for end in range(len(prefix), -1, -1)] if backtrack else [prefix]
-    for start in starts:
+    leads = [prefix[:end] for end in range(len(prefix), -1, -1)] if backtrack else [prefix]
+    for lead in leads:
         for cut in range(len(suffix) + 1):  # a unit the model prints with the value moves in
             tail = suffix[cut:]
-            values = [parse(t[len(start) : len(t) - len(tail)]) for t in texts]
+            values = [parse(t[len(lead) : len(t) - len(tail)]) for t in texts]
             if all(v is not None for v in values) and all(
-                start + render(v) + tail == t for v, t in zip(values, texts, strict=True)
+                lead + render(v) + tail == t for v, t in zip(values, texts, strict=True)
             ):
-                return start + "{value}" + tail
+                return lead + "{value}" + tail
     return None
 
 
