@@ -13,6 +13,7 @@ import re
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.roles_holdcell import lock_or_appliance
+from apbot.read.roles_holds import held_label
 
 # a lamp or sign that comes on: "The REV lamp lights", "the TWIN symbol appears"
 _LIT = re.compile(
@@ -33,10 +34,8 @@ def held_lead(b: Builder, info: ActionInfo) -> tuple[str, int, str] | None:
     """The setting named by the lead of the sentence that holds this key, when that sentence or
     the next of its section says a lamp or sign lights; (name, unit, the sign's printed word or
     "") or None."""
-    if info.skill != "hold" or not info.controls or info.controls[0] not in b.labels:
-        return None
-    label = b.labels[info.controls[0]].text
-    if not label:
+    label = held_label(b, info)
+    if label is None:
         return None
     led = re.compile(
         rf"^\W*(?P<lead>[A-Z][a-z]+(?:[ -][a-z]+){{0,2}})\s*:\s*(?:(?:press|touch|push)\s+and\s+)?"

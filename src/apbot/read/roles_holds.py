@@ -35,14 +35,20 @@ _SWITCHED = re.compile(
 _CLAUSE_RE = re.compile(r"(?<=[.!?;])\s+|,?\s+then\b")
 
 
+def held_label(b: Builder, info: ActionInfo) -> str | None:
+    """The printed name of the key a hold action holds; None for a press or a key the manual
+    does not name (nothing to look for in its sentences)."""
+    if info.skill != "hold" or not info.controls or info.controls[0] not in b.labels:
+        return None
+    return b.labels[info.controls[0]].text or None
+
+
 def held_named_switch(b: Builder, info: ActionInfo) -> tuple[str, int] | None:
     """The setting holding this key switches on or off, and the unit that says so; None when
     no clause both holds the key and switches a setting named in capitals. (Not
     ``roles_common.held_switch``, which reads a lower-case noun near the key's own legend.)"""
-    if info.skill != "hold" or not info.controls or info.controls[0] not in b.labels:
-        return None
-    label = b.labels[info.controls[0]].text
-    if not label:
+    label = held_label(b, info)
+    if label is None:
         return None
     held = re.compile(
         rf"\bhold(?:\s+down)?\s+(?:the\s+)?{re.escape(label)}(?!\w)|"
