@@ -2,7 +2,8 @@
 small appliance written for these tests: a flow said per minute is no count of things between
 which a seconds setting waits; "maximum" said of a setting whose HIGH value is no end of its
 list asks for that end, not for HIGH; "half a stop" is no full stop, and a stop down said
-first keeps its sign."""
+first keeps its sign. And in the reader: a countdown that "stops at 0 and 3 beeps sound"
+states no span of 0 to 3."""
 
 from __future__ import annotations
 
@@ -87,13 +88,14 @@ def test_maximum_is_the_end_not_the_high_value() -> None:
 
 
 _THIRDS = ["-2.0", "-1.7", "-1.3", "-1.0", "-0.7", "-0.3", "0.0", "+0.3", "+0.7", "+1.0", "+1.3"]
+_COMP = ", ".join(f'"{v}"' for v in _THIRDS)
 FLASH = f"""
 appliance: {{id: blink_1, category: speedlight, name: "Blink", brand: B}}
 controls:
   - {{id: comp_key, kind: button, label: "FEC"}}
   - {{id: zoom_key, kind: button, label: "ZOOM"}}
 variables:
-  comp: {{type: discrete, values: [{", ".join(f'"{v}"' for v in _THIRDS)}], initial: "0.0", wrap: true}}
+  comp: {{type: discrete, values: [{_COMP}], initial: "0.0", wrap: true}}
   zoom: {{type: numeric, unit: " mm", ranges: [[24, 105, 1]], initial: 50, wrap: true}}
 actions:
   press_comp: {{control: comp_key}}
@@ -119,3 +121,11 @@ def test_a_stop_down_said_first_stays_down() -> None:
 
 def test_half_a_stop_is_no_full_stop() -> None:
     assert "comp" not in _flash("zoom at 50 mm, half a stop darker")
+
+
+def test_a_stop_followed_by_a_count_of_beeps_is_no_span() -> None:
+    from apbot.read.values_stated import stated_span
+
+    assert stated_span("When the countdown stops at 0 and 3 beeps sound, open the lid.") is None
+    assert stated_span("The timer stops at 0 and 10 seconds later the fan stops too.") is None
+    assert stated_span("The depth stops at 1 and at 6; it does not wrap.") == (1, 6, "")
