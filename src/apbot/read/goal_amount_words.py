@@ -27,6 +27,19 @@ def said_amounts(view: Model, instruction: str) -> str:
         small = re.fullmatch(_SMALL, match[1], re.IGNORECASE) is not None
         noun = stem(match[2].casefold())
         named = [w for w in (_SMALL_WORDS if small else _LARGE_WORDS) if (stem(w), noun) in pairs]
-        return f"{named[0]} {match[2]}" if len(named) == 1 else match[0]
+        if len(named) != 1:
+            return match[0]
+        if match[1].casefold() == "maximum" and not _an_end(view, (stem(named[0]), noun)):
+            return match[0]  # "maximum heat" past HIGH HEAT to BOOST: the end, not HIGH
+        return f"{named[0]} {match[2]}"
 
     return _SAID.sub(amount, instruction)
+
+
+def _an_end(view: Model, stems: tuple[str, ...]) -> bool:
+    """The value named by ``stems`` is the first or last of its setting's values."""
+    for var, value, said, _weight in view.phrases:
+        values = list(view.infos[var].values) if var in view.infos else []
+        if said == stems and values and value in (values[0], values[-1]):
+            return True
+    return False

@@ -88,10 +88,21 @@ def said_road_speeds(view: Model, instruction: str) -> str:
     return _KMH.sub(lambda m: speed(m[1], False, m[0]), said)
 
 
+def _counted_between(manual: str, things: str) -> bool:
+    """The manual counts ``things`` per minute and says the setting waits between them
+    ("balls per minute", "the time between two balls"): "litres a minute" is a flow, no
+    count of things a seconds-between setting spaces out."""
+    one = re.escape(things.casefold().removesuffix("s"))
+    per = re.search(rf"\b{one}s?\s+(?:per|a)\s+minute\b", manual)
+    between = re.search(rf"\bbetween\s+(?:two\s+|each\s+|successive\s+)?{one}s?\b", manual)
+    return per is not None and between is not None
+
+
 def said_rates(view: Model, instruction: str) -> str:
     """ "twenty balls a minute" as "one every 3 seconds" on a seconds-between setting."""
     if "per minute" not in " ".join(view.manual_lines):
         return instruction
+    manual = " ".join(" ".join(line.split()) for line in view.manual_lines).casefold()
     gaps = [
         [float(v) for v in all_values(info.var)]
         for info in view.infos.values()
@@ -103,6 +114,8 @@ def said_rates(view: Model, instruction: str) -> str:
         return instruction
 
     def rate(match: re.Match[str]) -> str:
+        if not _counted_between(manual, match[2]):
+            return match[0]
         head, count = _number(match[1])
         if not count or count <= 1:
             return match[0]

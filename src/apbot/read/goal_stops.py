@@ -49,6 +49,9 @@ _STOPS = re.compile(
     re.IGNORECASE,
 )
 _DOWN_BEFORE = re.compile(r"\b(?:down|lower|reduce|cut|darker|less)\b(?:\s+\w+){0,3}\s+by\s*$")
+_HALF_BEFORE = re.compile(r"\bhalf\s*$")
+_CLAUSE_START = re.compile(r"(?:^|[,.;:!?])\s*$")
+"""Where a value opens the sentence or a clause a leading "-" reads as a dash, not a sign."""
 _UP_BEFORE = re.compile(r"\b(?:up|raise|increase|brighter|more)\b(?:\s+\w+){0,3}\s+by\s*$")
 
 
@@ -93,6 +96,8 @@ def said_stops(view: Model, instruction: str) -> str:
         if amount == 0:
             return match[0]
         before = instruction[: match.start()].casefold()
+        if _HALF_BEFORE.search(before):
+            return match[0]  # "half a stop darker": no third of a stop, no full one
         way = (match[5] or "").strip().casefold()
         if (match[1] or "").casefold() == "minus" or way in ("less", "darker", "under", "down"):
             sign = "-"
@@ -105,6 +110,10 @@ def said_stops(view: Model, instruction: str) -> str:
         else:
             return match[0]
         said = f"{sign}{float(amount):.1f}"
-        return said if said in signed else match[0]
+        if said not in signed:
+            return match[0]
+        if sign == "-" and _CLAUSE_START.search(before):
+            return f"minus {said[1:]}"  # "One stop down." as "-1.0" would lose its sign
+        return said
 
     return _STOPS.sub(stops, instruction)

@@ -44,9 +44,12 @@ _SPAN_RE = re.compile(
     rf"\s+(?:from\s+)?{_end('a')}\s*(?:to|and|–|—|…)\s*{_end('b')}",
     re.IGNORECASE,
 )
-# "stops at 1 and at 9", "stops at 1 and 9"
+# "stops at 1 and at 9", "stops at 1 and 9" — the second end closing the statement (a stop,
+# a bracket, a new clause), so "stops at 0 and 3 beeps sound" is no span of 0 to 3
 _STOPS_RE = re.compile(
-    rf"\bstops?\s+at\s+{_end('a')}\s*(?:,\s*)?and\s+(?:at\s+)?{_end('b')}", re.IGNORECASE
+    rf"\bstops?\s+at\s+{_end('a')}\s*(?:,\s*)?and\s+(?:at\s+)?{_end('b')}"
+    r"(?=\s*(?:[.;,:)!]|$|(?:and|but|then|so|it|the|when|on|in|with|for)\b))",
+    re.IGNORECASE,
 )
 # "At 1, VOL− does nothing more; at 16, VOL+ does nothing more"
 _ENDS_RE = re.compile(
