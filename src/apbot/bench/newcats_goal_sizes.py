@@ -187,10 +187,17 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "tennis_ball_machine": 3,
     "scoreboard_controller": 3,
     # The twenty-eighth blind set (helper blind31, 7 December 2026, the eighth 7 December
-    # session): blind for this round's work.
+    # session): development data since the ninth 7 December session.
     "telescope_mount": 3,
     "drum_module": 3,
     "metal_detector": 3,
     "model_train_controller": 3,
     "sports_watch": 3,
+    # The twenty-ninth blind set (helper blind32, 7 December 2026, the ninth 7 December
+    # session): blind for this round's work.
+    "head_torch": 3,
+    "solar_charge_controller": 3,
+    "boat_autopilot": 3,
+    "electronic_pipette": 3,
+    "guitar_amplifier": 3,
 }
