@@ -69,3 +69,45 @@ def test_one_end_said_of_settings_joined_by_and_goes_to_each() -> None:
 
 def test_an_end_said_of_one_setting_stays_its_own() -> None:
     assert _parse("Treble at 2 and the bass all the way up.") == {"treble": 2, "bass": 8}
+
+
+BRUSH = """
+appliance: {id: brush_1, category: face_brush, name: "Glow F-2 cleansing brush", brand: G}
+controls:
+  - {id: p_key, kind: button, label: "⏻"}
+  - {id: m_key, kind: button, label: "MODE"}
+  - {id: beep_key, kind: button, label: "BEEP"}
+variables:
+  power: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "ON"}}
+  mode: {type: discrete, values: [daily, deep, gentle], show: {daily: DLY, deep: DP, gentle: GNT}}
+  beep: {type: discrete, values: ["off", "on"], show: {"off": "", "on": "BP"}}
+actions:
+  press_power: {control: p_key}
+  press_mode: {control: m_key}
+  press_beep: {control: beep_key}
+features:
+  power:
+    - {actions: [press_power], variable: power, effect: toggle}
+  mode:
+    - {actions: [press_mode], variable: mode, effect: next}
+  beep:
+    - {actions: [press_beep], variable: beep, effect: toggle}
+"""
+
+
+def _brush(text: str) -> dict[str, object]:
+    return parse_instruction(loads_model(BRUSH), text, "", outside=[])
+
+
+def test_the_power_said_to_stay_off_is_off() -> None:
+    assert _brush("Gentle mode for tomorrow, but leave it off.") == {
+        "mode": "gentle",
+        "power": "off",
+    }
+    assert _brush("Deep mode and keep the brush switched off afterwards.")["power"] == "off"
+    assert _brush("Without switching it on, pick the daily mode.")["power"] == "off"
+    assert _brush("Without switching the gadget on, pick the daily mode.")["power"] == "off"
+
+
+def test_a_switch_left_off_is_that_switch_not_the_power() -> None:
+    assert "power" not in _brush("Deep mode, and leave the beep off.")
