@@ -28,7 +28,9 @@ def _past_the_appliance(view: Model, text: Text, j: int) -> int:
 def says_kept_off(view: Model, text: Text) -> bool:
     """ "without switching (it / the speaker) on", "leave it off", "keep the brush switched
     off": the power, off. "leave" / "keep" must name the appliance or "it" right after them
-    (not "leave the beeper off": a switch's own words), and the words must end there."""
+    (not "leave the beeper off": a switch's own words), and the words must end there; on a
+    model with a running state "leave it off for now" is not starting it (`goal_start`)."""
+    running = any(info.role == "running" for info in view.infos.values())
     for k in range(len(text.tokens)):
         word = text.word(k)
         if word == "without" and text.word(k + 1) in _SWITCHING:
@@ -38,7 +40,7 @@ def says_kept_off(view: Model, text: Text) -> bool:
                 # the appliance, unless the word names a setting of it ("the light")
             if text.word(j) in ("on", "up"):
                 return True
-        if word in _KEEP:
+        if word in _KEEP and not running:
             j = _past_the_appliance(view, text, k + 1)
             if j == k + 1:
                 continue  # nothing of the appliance named: "leave the beeper off" is a switch's
