@@ -50,6 +50,7 @@ from apbot.read.goal_gates import closing_switches, entry_switches, gated_switch
 from apbot.read.goal_halfway import halfway_levels
 from apbot.read.goal_hourly import hourly_periods
 from apbot.read.goal_hundreds import said_hundreds
+from apbot.read.goal_joined_ends import joined_ends
 from apbot.read.goal_kelvin import kelvin_words
 from apbot.read.goal_kinds import kind_numbers
 from apbot.read.goal_left_to_it import left_to_it
@@ -217,6 +218,7 @@ def parse_instruction(
         kept_outside(view, text, mentions, goal, claimed, where, outside)
         listed_outside(view, text, goal, claimed, where, outside, manual or "")
     kelvin_words(view, text, goal, claimed, where)
+    joined_ends(view, text, goal, claimed, where)  # before one end is read as a tie
     halfway_levels(view, text, goal, claimed, where)
     left_to_it(view, text, goal, claimed)
     marked_ends(view, text, goal, claimed, where)

@@ -42,7 +42,7 @@ def halfway_levels(
         if token.text == "half":
             after = k + 2 if text.word(k + 1) in ("the", "its") else k + 1
             info = _named_at(view, goal, text, after)
-        elif token.text == "halfway" or _to_an_end(text, k) is not None:
+        elif token.text == "halfway" or to_an_end(text, k) is not None:
             start = _phrase_start(text, k)
             if negated_before(text, start):
                 continue  # "don't turn it all the way up": not that
@@ -64,7 +64,7 @@ def halfway_levels(
             values = values[1:]
         if len(values) < 3:
             continue
-        end = _to_an_end(text, k)
+        end = to_an_end(text, k)
         goal[info.name] = values[(len(values) - 1) // 2 if end is None else end]
         where[info.name] = k
         claimed.add(k)
@@ -81,7 +81,7 @@ def _shown_idle(view: Model, goal: Goal) -> VarInfo | None:
     return info if info.role == "setting" and ordered(info) else None
 
 
-def _to_an_end(text: Text, k: int) -> int | None:
+def to_an_end(text: Text, k: int) -> int | None:
     """0 for "right down" / "all the way down" ending at ``k``, -1 for "… up"; else None."""
     word = text.word(k)
     if word not in ("up", "down"):

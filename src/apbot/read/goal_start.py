@@ -18,6 +18,7 @@ from apbot.read.goal_held import (
     someone_else,
     users_own,
 )
+from apbot.read.goal_kept_off import says_kept_off
 from apbot.read.goal_power_said import (
     a_switch_state,
     says_power_off,
@@ -56,7 +57,11 @@ def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = Fals
     for name, info in view.infos.items():
         if info.role == "power" and name not in goal and says_power_on(view, text, goal):
             goal[name] = info.on
-        elif info.role == "power" and name not in goal and says_power_off(view, text):
+        elif (
+            info.role == "power"
+            and name not in goal
+            and (says_power_off(view, text) or says_kept_off(view, text))
+        ):
             goal[name] = info.off
             return  # switched off: nothing is started
     running = [n for n, i in view.infos.items() if i.role == "running"]

@@ -22,6 +22,7 @@ from apbot.model.schema import (
 )
 from apbot.read.goal_aliases import bracket_aliases
 from apbot.read.goal_appliance_words import appliance_said, appliance_words
+from apbot.read.goal_expanded_labels import add_expanded_labels
 from apbot.read.goal_legends import add_kind_nouns, add_setting_words, legend_words
 from apbot.read.goal_manual import coded_names
 from apbot.read.goal_own_names import TIMED_STOPS, add_nouns, add_timed_stops
@@ -219,6 +220,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
                 infos[name].vocab[key] = 0.5  # a word only this key's legend in the manual has
     add_setting_words(infos, manual, set_keys)
     add_kind_nouns(infos, manual)
+    add_expanded_labels(infos, manual, {**keys, **set_keys})
     named: dict[str, list[tuple[Any, str]]] = {}
     coded_list = coded_names(model, manual)
     shared_words = _words_all_names_share(coded_list)
