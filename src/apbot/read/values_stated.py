@@ -97,6 +97,38 @@ def _span_in(unit: Unit) -> Range | None:
     return Range(low, high, known)
 
 
+def stated_unit_span(unit: Unit) -> Range | None:
+    """A span a sentence states with a unit printed on both ends (or none) that the range
+    patterns of ``values.py`` do not know ("The range is 30 BPM to 280 BPM"), for a setting
+    whose sentences gave no range at all; the unit kept only when the reader knows it."""
+    if re.search(r"\d:\d\d", unit.text):
+        return None
+    if unit.cells:  # a numbered step drawn as a row ("4 | The range is …"): its sentence
+        if len(unit.cells) != 2 or not re.fullmatch(r"\d{1,2}\.?", unit.cells[0].strip()):
+            return None
+        if _NOT_A_SETTING.search(unit.cells[1]) or not (found := stated_span(unit.cells[1])):
+            return None
+        return Range(found[0], found[1], "")
+    return _span_in(unit)
+
+
+def stated_unit_step(
+    units: Sequence[Unit], near: Sequence[int], at: int
+) -> tuple[float, int] | None:
+    """The step a press makes in the unit printed on the stated span at ``at`` ("changes the
+    tempo by 1 BPM"), from the sentences ``near`` it; a sentence about holding a key gives the
+    held jump ("Holding + changes it by 10 BPM"), no step."""
+    found = stated_span(units[at].text)
+    if found is None or not found[2]:
+        return None
+    by = re.compile(rf"\b(?:by|in\s+steps\s+of)\s+({_FIGURE})\s*{re.escape(found[2])}\b", re.I)
+    for i in near:
+        m = by.search(units[i].text)
+        if m and not re.search(r"\bhold", units[i].text, re.IGNORECASE):
+            return float(m[1].replace(",", ".")), i
+    return None
+
+
 def _names(text: str, own: set[str]) -> bool:
     return any(t.startswith(w) for t in re.findall(r"[a-z]+", text.lower()) for w in own)
 
