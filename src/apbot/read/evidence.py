@@ -39,7 +39,7 @@ from apbot.read.evidence_whose import (
 from apbot.read.label_levels import label_levels
 from apbot.read.labels import unit_only_mention, words
 from apbot.read.model_rows import own_model_row
-from apbot.read.named_bands import named_bands
+from apbot.read.named_bands import counted_name, named_bands
 from apbot.read.own_press_ranges import own_press_range_wins
 from apbot.read.shapes import (
     _KEYPAD_WORDS,
@@ -220,6 +220,7 @@ class EvidenceReader(ValueChooser, RangeReader, AnywhereReader):
             waiting = waiting or surroundings(text)  # "at an ambient 5 to 35 °C": the room's
             waiting = waiting or two_choices(text)  # "toggles between 1.5 lb and 2.0 lb": two
             waiting = waiting or named_bands(text)  # "Largo 40–60 · Adagio 66–76": a chart's
+            waiting = waiting or counted_name(text)  # "VOICE 1-2-3-4": a name, no 1–4
             ranges = [
                 r
                 for r in find_ranges(

@@ -208,11 +208,14 @@ class ListReader(ContextReader):
             column = _next_table_column(units, i, index) or (
                 [] if index else _quantity_column(units, i)
             )
-            if _keyed_examples(units, i) or self._guide_of_others(i, tokens) or index == 0 and (
-                i + 1 < len(units) and compares_models(units[i + 1].cells)
+            if (
+                _keyed_examples(units, i)
+                or self._guide_of_others(i, tokens)
+                or (index == 0 and i + 1 < len(units) and compares_models(units[i + 1].cells))
             ):
                 column = []  # "| You type | Display | Cooking time |": worked examples; a
-                # guide's rows ("| Knife | Angle |"): knives, each with the angle advised
+                # guide's rows ("| Knife | Angle |"): knives, each with the angle advised; a
+                # comparison's ("| | RK-30 | RK-50 |"): what the models differ in
             if not column and text == unit.heading:
                 column = self._counted_chart(i)
             if column:

@@ -18,7 +18,9 @@ def label_levels(text: str, label: str) -> Range | None:
     """The range 1–n (or 0–n) of the key's own levels written on the line, or None."""
     if not label or not re.search(r"[A-Za-z]", label):
         return None
-    found = [int(m[1]) for m in re.finditer(rf"(?<!\w){re.escape(label)} ?(\d{{1,2}})(?![\d.,:/])", text)]
+    found = [
+        int(m[1]) for m in re.finditer(rf"(?<!\w){re.escape(label)} ?(\d{{1,2}})(?![\d.,:/])", text)
+    ]
     if len(found) < 3 or found[0] not in (0, 1) or found != list(range(found[0], found[-1] + 1)):
         return None
     return Range(float(found[0]), float(found[-1]), "", 1.0)

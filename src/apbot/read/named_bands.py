@@ -7,6 +7,7 @@ setting's range comes from the sentence that states it ("The range is 30 BPM to 
 
 from __future__ import annotations
 
+import itertools
 import re
 
 # a name, then a span of two figures: "Adagio 66–76", "Force 4 5–8 m/s" is not one (a number
@@ -26,7 +27,7 @@ def named_bands(text: str) -> bool:
     found = list(_BAND_RE.finditer(text))
     if len(found) < 2:
         return False
-    for a, b in zip(found, found[1:], strict=False):
+    for a, b in itertools.pairwise(found):
         if not _BETWEEN_RE.fullmatch(text[a.end() : b.start()]):
             return False
     rest = text[: found[0].start()] + text[found[-1].end() :]
@@ -34,4 +35,14 @@ def named_bands(text: str) -> bool:
         return False
     spans = [[float(x.replace(",", ".")) for x in _FIGURES_RE.findall(m[0])[-2:]] for m in found]
     # "Low 1–3, High 4–6": one scale cut in pieces, end to end, is the setting's own
-    return any(b[0] not in (a[1], a[1] + 1) for a, b in zip(spans, spans[1:], strict=False))
+    return any(b[0] not in (a[1], a[1] + 1) for a, b in itertools.pairwise(spans))
+
+
+# a display name ending in a count written as one word: "VOICE 1-2-3-4" (a voice counting the
+# beats), "COUNT 1-2-3": a name, no span of values
+_COUNTED_NAME_RE = re.compile(r"\b[A-Z]{2,}\s+\d(?:-\d){2,}(?![\d.,–-])")
+
+
+def counted_name(text: str) -> bool:
+    """Whether the line prints a display name that ends in a count ("VOICE 1-2-3-4")."""
+    return bool(_COUNTED_NAME_RE.search(text))

@@ -70,7 +70,12 @@ def name_signed_keys(text: str, keys: Sequence[str], keep: frozenset[str]) -> st
 def _closes(said: list[str], ws: list[str]) -> bool:
     """Whether the clause is one compound noun ending in the key's one word ("backlight" for
     ``light``, "nightlight"), at least three letters before it."""
-    return len(ws) == 1 and len(said) == 1 and said[0].endswith(ws[0]) and len(said[0]) >= len(ws[0]) + 3
+    return (
+        len(ws) == 1
+        and len(said) == 1
+        and said[0].endswith(ws[0])
+        and len(said[0]) >= len(ws[0]) + 3
+    )
 
 
 def _last_left(
