@@ -36,8 +36,10 @@ from apbot.read.evidence_whose import (
     lead_cell,
     names_another,
 )
+from apbot.read.label_levels import label_levels
 from apbot.read.labels import unit_only_mention, words
 from apbot.read.model_rows import own_model_row
+from apbot.read.named_bands import counted_name, named_bands
 from apbot.read.own_press_ranges import own_press_range_wins
 from apbot.read.shapes import (
     _KEYPAD_WORDS,
@@ -76,6 +78,7 @@ from apbot.read.values import (
     seconds,
 )
 from apbot.read.values_scales import beyond, scale_pieces, spans_read
+from apbot.read.values_stated import stated_unit_span, stated_unit_step
 from apbot.read.values_stepped import find_arrow_pieces, find_stepped_pieces
 
 
@@ -216,6 +219,8 @@ class EvidenceReader(ValueChooser, RangeReader, AnywhereReader):
             waiting = i not in mentions and is_wait(text)  # "Leave for one to two hours."
             waiting = waiting or surroundings(text)  # "at an ambient 5 to 35 °C": the room's
             waiting = waiting or two_choices(text)  # "toggles between 1.5 lb and 2.0 lb": two
+            waiting = waiting or named_bands(text)  # "Largo 40–60 · Adagio 66–76": a chart's
+            waiting = waiting or counted_name(text)  # "VOICE 1-2-3-4": a name, no 1–4
             ranges = [
                 r
                 for r in find_ranges(
@@ -232,6 +237,10 @@ class EvidenceReader(ValueChooser, RangeReader, AnywhereReader):
             ]
             if not ranges and i in steps and not waiting and (coded := code_span(text)):
                 ranges = [coded]  # "Press ▲ / ▼: CA 1 … CA 5" after this key's own step
+            levels = [lv for o in own if i in mentions and (lv := label_levels(text, o))]
+            if not ranges and len(levels) == 1:
+                ranges = levels  # "LIGHT 1 dimmest  LIGHT 2 dim  LIGHT 3 …": the key's own
+                ev.each_press_at = i if ev.each_press_at is None else ev.each_press_at  # steps
             if ev.keypad_at is None and _KEYPAD_WORDS.search(text):
                 ev.keypad_at = i
             if ranges and unit.cells and len(ranges) == 1 and ranges[0].step is None:
@@ -322,6 +331,12 @@ class EvidenceReader(ValueChooser, RangeReader, AnywhereReader):
             led = led_span(units, mentions, own_words)  # "Setting the address (1 … 512):"
             if led is not None:
                 ev.ranges, ev.range_at = [led[0]], led[1]
+        if not ev.ranges:  # "The range is 30 BPM to 280 BPM": a unit no pattern knows
+            spans = [(r, i) for i in context if (r := stated_unit_span(units[i])) is not None]
+            if spans:
+                ev.ranges, ev.range_at = [spans[0][0]], spans[0][1]
+                if ev.step is None and (by := stated_unit_step(units, context, spans[0][1])):
+                    ev.step, ev.step_at = (by[0], ""), by[1]  # "changes the tempo by 1 BPM"
         if own_press_range_wins(ev, mentions):  # ("each further press adds one second, …")
             best, best_prio, ev.values_at = None, 0.0, None
         return self._chosen_values(

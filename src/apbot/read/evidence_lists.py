@@ -12,6 +12,7 @@ from apbot.model.values import NUMBER_WORDS
 from apbot.read.evidence_context import ContextReader
 from apbot.read.labels import words
 from apbot.read.list_lines import wrapped_list
+from apbot.read.model_columns import compares_models
 from apbot.read.noun_columns import noun_column
 from apbot.read.number_runs import find_number_run
 from apbot.read.quantity_units import QUANTITY_FAMILIES, _quantity_units
@@ -207,9 +208,14 @@ class ListReader(ContextReader):
             column = _next_table_column(units, i, index) or (
                 [] if index else _quantity_column(units, i)
             )
-            if _keyed_examples(units, i) or self._guide_of_others(i, tokens):
+            if (
+                _keyed_examples(units, i)
+                or self._guide_of_others(i, tokens)
+                or (index == 0 and i + 1 < len(units) and compares_models(units[i + 1].cells))
+            ):
                 column = []  # "| You type | Display | Cooking time |": worked examples; a
-                # guide's rows ("| Knife | Angle |"): knives, each with the angle advised
+                # guide's rows ("| Knife | Angle |"): knives, each with the angle advised; a
+                # comparison's ("| | RK-30 | RK-50 |"): what the models differ in
             if not column and text == unit.heading:
                 column = self._counted_chart(i)
             if column:

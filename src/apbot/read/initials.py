@@ -21,7 +21,9 @@ from apbot.read.shapes import GROUP_NOUNS
 
 _START_LIST = re.compile(
     r"\b(?:starts?(?:\s+up)?\s+(?:with|in|on)|shows?)\s+(?:these|the|its)\s+"
-    r"(?:factory\s+|default\s+|standard\s+|basic\s+)?settings\s*:\s*(?P<items>.*)$",
+    r"(?:factory\s+|default\s+|standard\s+|basic\s+)?settings\s*:\s*(?P<items>.*)$"
+    # a sentence of its own: "Factory settings: tracking SID, hemisphere N, backlight 3."
+    r"|^\W*(?:the\s+)?(?:factory|default)\s+settings(?:\s+are)?\s*:\s*(?P<own>.+)$",
     re.IGNORECASE,
 )
 _NUMBER = re.compile(r"[+-]?\d+(?:[.,]\d+)?")
@@ -36,7 +38,7 @@ def read_initials(b: Builder) -> None:
         m = _START_LIST.search(unit.text)
         if m is None or _of_a_choice(b, unit.text[: m.start()]):
             continue
-        listed = m.group("items").strip()
+        listed = (m.group("items") or m.group("own") or "").strip()
         if not listed and i + 1 < len(units):
             listed = units[i + 1].text  # the list on the line after the colon
         if _apply(b, listed, i):
@@ -146,9 +148,11 @@ def _value(spec: dict[str, Any], item: str) -> Any:
     if kind == "discrete":
         values = [str(v) for v in spec.get("values") or []]
         shown = {str(c).lower(): v for v, c in (spec.get("show") or {}).items()}
-        for token in [*re.findall(r"[+-]?[\w.]+", text)]:
+        tokens = [t.rstrip(".") for t in re.findall(r"[+-]?[\w.]+", text)]  # ("off." ends it)
+        for token in tokens:  # the value itself first: "child lock off" is off, whatever LOCK shows
             if token in values:
                 return token
+        for token in tokens:
             if token in shown and shown[token] in values:
                 return shown[token]
         return None
@@ -192,6 +196,14 @@ def _by_value(b: Builder, item: str, named: set[str]) -> tuple[str | None, Any]:
         for name, spec in b.variables.items()
         if name not in named
         and spec.get("type") in ("numeric", "time")
+        and not _other_sign(item, str(spec.get("unit") or ""))
         and (value := _value(spec, item)) is not None
     ]
     return fits[0] if len(fits) == 1 else (None, None)
+
+
+def _other_sign(item: str, unit: str) -> bool:
+    """Whether the item's figure carries a sign the setting's unit is not ("20°" for a count
+    of passes, "40 %" for a time): an amount of another setting."""
+    sign = re.search(r"\d\s*(°[CF]?|%)", item)
+    return sign is not None and (not unit or unit[0] != sign[1][0])

@@ -356,6 +356,9 @@ def _sign_spaced(text: str) -> str:
     """A pattern for a key printed as a word and a sign, with or without a space between them
     ("VOL+" is written "VOL +" in the prose, "TEMP ▲" as "TEMP▲"); else the text as it is."""
     m = re.fullmatch(r"([A-Za-z][A-Za-z .'-]*?)\s?([+−–\-▲▼△▽<>◀▶◄►])", text)
+    pair = re.fullmatch(r"([A-Za-z][A-Za-z0-9]*)\+([A-Za-z][A-Za-z0-9]*)", text)
+    if pair:  # two keys pressed together: "SHIFT+KIT" is written "SHIFT + KIT" too
+        return rf"{re.escape(pair[1])}\s?\+\s?{re.escape(pair[2])}"
     if m is None:
         return re.escape(text)
     return rf"{re.escape(m.group(1))}\s?{re.escape(m.group(2))}"

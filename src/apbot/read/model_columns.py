@@ -31,6 +31,14 @@ def is_type_number(cell: str) -> bool:
     return bool(_TYPE_RE.fullmatch(cell.strip())) and not _CODE_RE.fullmatch(cell.strip())
 
 
+def compares_models(header: Sequence[str]) -> bool:
+    """Whether a table's header heads its columns with two or more models' type numbers and
+    nothing else ("| | RK-30 | RK-50 | RK-90 |"): its first column names what is compared
+    (payload, power, the keys fitted), no setting's values."""
+    models = [c for c in header[1:] if is_type_number(c)]
+    return len(models) >= 2 and len(models) == len(header) - 1
+
+
 def own_column(
     header: Sequence[str],
     lines: Sequence[str],

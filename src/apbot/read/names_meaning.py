@@ -32,6 +32,13 @@ _HOLD_THEN = re.compile(
     rf"\s*(?::\s*|\s+to\s+){_VERB}\s+{_THING}{_END}",
     re.I,
 )
+# a legend's hold said of the key as its subject: "Held for 3 seconds it changes the
+# hemisphere", "When held for 2 s, it selects the unit" (a sentence of its own, or a clause)
+_HELD_IT = re.compile(
+    rf"(?:^|[.;:]\s*|\(\w\)\s*)(?:when\s+|if\s+)?held(?:\s+down)?\s*(?:{_SECONDS})\s*,?\s*"
+    rf"(?:it\s+)?{_VERB}\s+{_THING}{_END}",
+    re.I,
+)
 # jobs that are not settings: moving faster, locking, switching on, confirming, cancelling
 _NOT_A_SETTING = {
     "step", "steps", "large", "faster", "fast", "value", "values", "lock", "key", "keys",
@@ -98,6 +105,14 @@ def _held_meaning(b: Builder, key: ActionInfo) -> str:
     units = b.manual.units
     label = re.escape(b.labels[key.controls[0]].text)
     named = re.compile(rf"\bhold(?:ing)?\s+(?:the\s+)?{label}\b(?:\s+(?:key|button))?", re.I)
+    others = {j for t, lab in b.labels.items() if t != key.controls[0] for j in lab.mentions}
+    for i in b.labels[key.controls[0]].mentions:  # said of the hold, before any cell's verb
+        for k in range(i, min(i + 3, len(units))):  # ("(C) MENU." then its legend's sentences)
+            if k > i and (k in others or units[k].heading != units[i].heading):
+                break
+            m = _HELD_IT.search(units[k].text)
+            if m and (meant := _meaning(m.group("noun"))):
+                return meant
     texts: list[str] = []
     for i in _rows(b, key):
         unit = units[i]

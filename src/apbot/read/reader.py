@@ -37,6 +37,7 @@ from apbot.read.code_cycles import read_code_cycles
 from apbot.read.code_glosses import name_glossed_words
 from apbot.read.code_levels import read_code_levels
 from apbot.read.code_numbers import name_numbered_codes
+from apbot.read.code_rows import read_code_rows
 from apbot.read.code_walks import read_code_walks
 from apbot.read.code_words import name_code_words
 from apbot.read.codes import name_codes
@@ -55,6 +56,7 @@ from apbot.read.numbered_keys import read_numbered_keys
 from apbot.read.off_positions import read_off_positions
 from apbot.read.off_words import read_held_off_words, read_off_words
 from apbot.read.ordinal_lamps import read_ordinal_lamps
+from apbot.read.pair_lists import read_pair_lists
 from apbot.read.position_charts import read_position_charts
 from apbot.read.prefixed_codes import name_prefixed_codes
 from apbot.read.press_opened import read_press_opened
@@ -67,6 +69,7 @@ from apbot.read.running_locks import read_running_locks
 from apbot.read.shapes import CHOICE_WORDS
 from apbot.read.shown_bars import read_bar_shows
 from apbot.read.shown_figures import read_prefixed_figures
+from apbot.read.shown_pairs import read_shown_pairs
 from apbot.read.sign_glosses import read_sign_glosses
 from apbot.read.signed_keys import read_signed_keys
 from apbot.read.stated_ranges import read_stated_ranges
@@ -131,6 +134,7 @@ def read_manual(
     name_codes(builder)
     name_numbered_codes(builder)  # ("Fn 1 > Fn 2 …" a count; a chart names each code)
     name_code_words(builder)
+    read_code_rows(builder)  # ("| TRACK SID | sidereal |": a three-letter code's word)
     name_prefixed_codes(builder)  # ("OSC-N   narrow: …": the name's letter spelt out)
     name_glossed_words(builder)
     read_sign_glosses(builder)  # ("C for continuous", "∞ (continuous)": a letter or a sign)
@@ -141,6 +145,7 @@ def read_manual(
     read_off_words(builder)
     read_held_off_words(builder)
     read_range_codes(builder)
+    read_pair_lists(builder)  # ("Beat (SHIFT + TEMPO)" and its list: a second function's)
     read_initials(builder)
     read_bar_levels(builder)  # ("▮▮▯▯▯  level 2": a guessed range's levels, by its bars)
     read_bar_shows(builder)
@@ -154,6 +159,7 @@ def read_manual(
     read_press_opened(builder)  # (a press's guessed setting its numbered steps give)
     read_stated_ranges(builder)  # (a guessed range its section states: "The range is …")
     read_code_walks(builder)  # (a key's chart codes, each row a field: MENU walks them)
+    read_shown_pairs(builder)  # ("HEMI N  northern …" / "HEMI S  southern …": a guessed on/off)
     read_enabling_switches(builder)
     read_confirmed_starts(builder)  # ("the first press only asks for confirmation")
     read_running_locks(builder)  # ("While FRY is shown, MENU … are locked")

@@ -9,6 +9,7 @@ from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.held_parts import held_part_toggle
 from apbot.read.labels import words
+from apbot.read.legend_compounds import legend_compound
 from apbot.read.names_meaning import held_meaning
 from apbot.read.roles_confirm import confirmed_noun
 from apbot.read.roles_holdcell import held_toggle, lock_or_appliance
@@ -263,6 +264,9 @@ def var_name(b: Builder, key: ActionInfo) -> str:
     if opened and not any(w[:3] in own for w in words(opened.replace("_", " "))):
         return opened  # "* | opens the entry-delay setting": the key is a way in, the setting
         # a noun (AIR TIME opening "the airing-time setting" keeps its own name)
+    compound = legend_compound(b, key.token, lab.text, lab.mentions)
+    if compound:  # "☾ Backlight." for ``light``: the legend's whole noun
+        return compound
     lw = [w for w in words(lab.text) if w.isalpha()]
     tw = words(key.token.replace("_", " "))
     if 1 < len(lw) <= 3 and all(any(x == t or x.startswith(t) for x in lw) for t in tw):

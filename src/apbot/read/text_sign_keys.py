@@ -17,10 +17,11 @@ from apbot.read.marks_legend import legend_meanings
 from apbot.read.text_icons import _icon, _put
 
 # the icon leading a line (after any callout mark "(B)" or bullet), a dash, colon or gap (not
-# "=", which a legend of chart marks uses), and the first clause of what it does
+# "=", which a legend of chart marks uses), and the first clause of what it does; after a
+# callout mark one space will do when a capitalised name ends there ("(D) ☾ Backlight.")
 _SIGN_LINE = re.compile(
     r"^[ \t]*(?:\(?[A-Za-z0-9]\)[ \t]*|[\u2460-\u2473][ \t]*|[•*-][ \t]+)?"  # ("⑤" too)
-    r"(\S)\ufe0f?[ \t]*(?:[—–:-]+|[ \t]{2,})[ \t]*"
+    r"(\S)\ufe0f?[ \t]*(?:[—–:-]+|[ \t]{2,}|(?<=\)[ \t]\S)[ \t](?=[A-Z][a-z]+\.))[ \t]*"
     r"([^.;:\n]+)",
     re.M,
 )
@@ -51,6 +52,8 @@ def name_signed_keys(text: str, keys: Sequence[str], keep: frozenset[str]) -> st
         # what the symbol shows after saying what it looks like ("◐  half-sun symbol  WARM
         # mode", "∞  infinity symbol  continuous operation"): no key of its own
         fits = {k for k, ws in tokens.items() if said[: len(ws)] == ws}
+        # ("(D) ☾ Backlight." for ``light``: the key's one word closing the legend's noun)
+        fits = fits or {k for k, ws in tokens.items() if _closes(said, ws)}
         named.setdefault(icon, set()).update(fits)
     names = {
         icon: next(iter(ks)).replace("_", " ").upper() for icon, ks in named.items() if len(ks) == 1
@@ -62,6 +65,17 @@ def name_signed_keys(text: str, keys: Sequence[str], keep: frozenset[str]) -> st
     for icon, name in names.items():
         lines = [_put(line, icon, name) if icon in line else line for line in lines]
     return "\n".join(lines)
+
+
+def _closes(said: list[str], ws: list[str]) -> bool:
+    """Whether the clause is one compound noun ending in the key's one word ("backlight" for
+    ``light``, "nightlight"), at least three letters before it."""
+    return (
+        len(ws) == 1
+        and len(said) == 1
+        and said[0].endswith(ws[0])
+        and len(said[0]) >= len(ws[0]) + 3
+    )
 
 
 def _last_left(

@@ -100,6 +100,42 @@ def _span_in(unit: Unit) -> Range | None:
     return Range(low, high, known)
 
 
+def stated_unit_span(unit: Unit) -> Range | None:
+    """A span a sentence states with the same unit printed on both ends that the range
+    patterns of ``values.py`` do not know ("The range is 30 BPM to 280 BPM"), for a setting
+    whose sentences gave no range at all; the unit kept only when the reader knows it. Only
+    "range is" / "ranges from" / "can be set from" wordings: where the keys stop ("It stops
+    at 20 and at 90") is said of whichever setting the keys are on."""
+    text = unit.text
+    if unit.cells:  # a numbered step drawn as a row ("4 | The range is …"): its sentence
+        if len(unit.cells) != 2 or not re.fullmatch(r"\d{1,2}\.?", unit.cells[0].strip()):
+            return None
+        text = unit.cells[1]
+    if re.search(r"\d:\d\d", text) or _NOT_A_SETTING.search(text):
+        return None
+    for m in _SPAN_RE.finditer(text):
+        if m["au"] and m["au"] == m["bu"] and float(m["a"]) < float(m["b"]):
+            return Range(float(m["a"].replace(",", ".")), float(m["b"].replace(",", ".")), "")
+    return None
+
+
+def stated_unit_step(
+    units: Sequence[Unit], near: Sequence[int], at: int
+) -> tuple[float, int] | None:
+    """The step a press makes in the unit printed on the stated span at ``at`` ("changes the
+    tempo by 1 BPM"), from the sentences ``near`` it; a sentence about holding a key gives the
+    held jump ("Holding + changes it by 10 BPM"), no step."""
+    said = next((m["au"] for m in _SPAN_RE.finditer(units[at].text) if m["au"]), None)
+    if said is None:
+        return None
+    by = re.compile(rf"\b(?:by|in\s+steps\s+of)\s+({_FIGURE})\s*{re.escape(said)}\b", re.I)
+    for i in near:
+        m = by.search(units[i].text)
+        if m and not re.search(r"\bhold", units[i].text, re.IGNORECASE):
+            return float(m[1].replace(",", ".")), i
+    return None
+
+
 def _names(text: str, own: set[str]) -> bool:
     return any(t.startswith(w) for t in re.findall(r"[a-z]+", text.lower()) for w in own)
 
