@@ -56,3 +56,41 @@ THE KEYS
 def test_a_moving_part_before_up_down_names_no_amount() -> None:
     model = read_manual(BED, ["press_plus", "press_minus", "press_flat"]).model
     assert "headrest" not in model.variables
+
+
+# a kettle base whose pair's legend is only a noun phrase; the keys beside it use the pair too
+KETTLE = """
+Vapo K-9 kettle base
+
+THE KEYS
+
+  ⓐ ⏻    Hold 2 s: base on / off.
+  ⓑ ▲ ▼  Beeper volume; inside a setting, change the value.
+  ⓒ KEEP  Press: keep-warm temperature.
+
+KEEP WARM
+
+  1. Press KEEP briefly. The screen shows KW 80°C.
+  2. Press ▲ / ▼ to change it by 5 °C, from 60 °C to 90 °C.
+
+  Note: while the keep-warm temperature is shown, ▲ and ▼ change that temperature instead.
+
+BEEPER
+
+  With the normal screen showing, press ▲ for louder and ▼ for softer. The volume stops at 0
+  and at 3.
+"""
+
+KETTLE_ACTIONS = ["hold_power", "press_up", "press_down", "press_keep"]
+
+
+def test_a_pair_legend_of_a_bare_noun_phrase_names_the_pairs_own_setting() -> None:
+    model = read_manual(KETTLE, KETTLE_ACTIONS).model
+    alone = [
+        f[0].variable
+        for f in model.features.values()
+        if len(f) == 1 and set(f[0].actions or []) == {"press_up", "press_down"}
+    ]
+    assert alone == ["volume"]
+    # its range is the volume's, not the keep-warm temperature's in °C
+    assert getattr(model.variables["volume"], "unit", None) != "°C"

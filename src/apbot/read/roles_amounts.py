@@ -15,6 +15,7 @@ from apbot.read.labels import words
 from apbot.read.pair_own_ranges import pair_keeps_range
 from apbot.read.roles_common import (
     TIME_WORDS,
+    UNIT_QUANTITY,
     label_of,
     mentions_of,
     numeric_list,
@@ -101,7 +102,8 @@ def assign_amounts(
         direct_nouns = {"temperature", "humidity", "volume", "weight", "speed"}  # set alone
         own_pair = pair_noun in direct_nouns and not _named_by(names, [pair_noun])
         own_pair = own_pair and not pair_serves_only(b, pair_tokens)
-        if not own_pair and raised is not None:
+        if (not own_pair or up_down) and raised is not None:
+            # (a legend's "Speaker volume" says it better than the nouns counted round the pair)
             # the pair's legend says what it raises ("Raise / lower the heat level"), and no
             # entry key's name or own sentence names it (TIMER "sets the delay" while + "raises
             # the delay" stays TIMER's)
@@ -252,6 +254,8 @@ def assign_amounts(
                 and (up_down or not (ev.ranges and ev.ranges[0].unit in _UNIT_NOUNS))
             ):  # (a legend's "airflow up / down" names it better than its unit, %)
                 noun = raised[0]  # "Raise / lower the goal value": the pair's own quantity
+                if up_down and _other_quantity(ev, noun):  # (a limit's °C is no volume's)
+                    ev = alone_range(b, [token_of(b, n) for n in tokens_], noun) or Evidence()
             var = b.add_number(noun, noun.upper(), ev, cyclic=False)
             if raised is not None and noun == raised[0]:
                 b.note(f"variables.{var}", "the quantity the pair raises and lowers", raised[1])
@@ -318,6 +322,14 @@ def assign_amounts(
             f"set_{var}", [{"actions": pair["up"] + pair["down"], "variable": var, "effect": eff}]
         )
     return silent
+
+
+def _other_quantity(ev: Evidence, noun: str) -> bool:
+    """The range read round the pair is in a unit measuring another quantity than the noun its
+    legend names (°C for "Speaker volume"); a percentage measures anything."""
+    unit = ev.ranges[0].unit if ev.ranges else ""
+    quantity = UNIT_QUANTITY.get(unit, "") if unit != "%" else ""
+    return bool(quantity) and quantity[:4] not in noun
 
 
 def _named_by(names: list[set[str]], nouns: list[str]) -> bool:

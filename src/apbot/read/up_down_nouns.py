@@ -16,6 +16,7 @@ import re
 from apbot.read.build import Builder
 from apbot.read.labels import words
 from apbot.read.roles_raised import quantity_noun
+from apbot.read.shapes import SETTING_NOUNS
 
 # "output up / down", "brightness down/up", "level up / down": one or two words after the
 # legend's separator (a bar, colon, dash, dots or a run of spaces), then the two directions
@@ -23,6 +24,16 @@ _UP_DOWN_RE = re.compile(
     r"(?:^\s*|[|:;—–.]\s*|\s{2,})(?P<noun>[A-Za-z][a-z-]+(?:\s+[a-z][a-z-]+)?)\s+"
     r"(?:up\s*/\s*down|down\s*/\s*up)\b"
 )
+
+
+# the legend's bare noun phrase: "ⓒ ▲ ▼  Speaker volume; inside a setting, …" (one to three
+# words up to a stop or the end of the line, right after the pair's signs)
+_BARE_RE = re.compile(r"^[^A-Za-z]*(?P<noun>[A-Za-z][a-z-]+(?:\s+[a-z][a-z-]+){0,2})\s*(?:[;.]|$)")
+# the signs open the line or a sentence of it (legend lines run together when read as prose)
+_LEADS_RE = re.compile(r"(?:^|[.;:!?)])[^A-Za-z]*$")
+# a bare phrase names the pair's quantity only with a noun of an amount (not "Menu navigation",
+# "Mode", "Programme": a list the pair walks)
+_BARE_NOUNS = set(SETTING_NOUNS) - {"mode", "programme", "program", "setting"}
 
 
 def _figured(b: Builder, noun: str) -> bool:
@@ -47,9 +58,14 @@ def up_down_noun(b: Builder, tokens: list[str]) -> tuple[str, int] | None:
             k = text.upper().find(lab.text.upper()) if lab.text else -1
             rest = text[k + len(lab.text) :] if k >= 0 else text
             m = _UP_DOWN_RE.search(rest)
-            if m is None:
+            bare = None
+            if m is None and k >= 0 and _LEADS_RE.search(text[:k]):
+                bare = _BARE_RE.match(rest)  # (a legend line led by the pair's signs)
+            if m is None and bare is None:
                 continue
-            noun = quantity_noun(m.group("noun"))
+            noun = quantity_noun((m or bare).group("noun"))  # type: ignore[union-attr]
+            if bare is not None and noun not in _BARE_NOUNS:
+                continue
             if noun and len(words(noun.replace("_", " "))[-1]) >= 4:
                 found.setdefault(noun, i)
     if len(found) != 1:
