@@ -94,3 +94,36 @@ def test_a_pair_legend_of_a_bare_noun_phrase_names_the_pairs_own_setting() -> No
     assert alone == ["volume"]
     # its range is the volume's, not the keep-warm temperature's in °C
     assert getattr(model.variables["volume"], "unit", None) != "°C"
+
+
+# a fish-tank heater: its factory line lists several settings' starts; SET opens the target
+AQUARIUM = """
+Neri H-3 aquarium heater
+
+THE KEYS
+
+  ⓐ ⏻    Hold 3 s: heater on / off.
+  ⓑ ▲ ▼  Display brightness; inside a setting, change the value.
+  ⓒ SET  Press: target temperature.
+
+  As delivered: BRT 3, SET 25 °C, ALM 2 °C.
+
+TARGET TEMPERATURE
+
+  1. Press SET. The screen shows SET 25°C.
+  2. Press ▲ / ▼ to change it by 0.5 °C, from 18 °C to 32 °C.
+"""
+
+AQUARIUM_ACTIONS = ["hold_power", "press_up", "press_down", "press_set"]
+
+
+def test_a_line_of_factory_values_is_no_keys_list() -> None:
+    model = read_manual(AQUARIUM, AQUARIUM_ACTIONS).model
+    entered = [
+        f[1].variable
+        for f in model.features.values()
+        if len(f) == 2 and f[0].actions == ["press_set"]
+    ]
+    # SET opens a temperature the pair sets, not a choice among "brt 3, set 25 °c, alm 2 °c"
+    assert len(entered) == 1
+    assert getattr(model.variables[entered[0]], "unit", None) == "°C"
