@@ -14,6 +14,7 @@ from dataclasses import replace
 
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder, united_amounts
+from apbot.read.factory_lists import factory_list
 from apbot.read.held_flips import assign_flips, flipped_values
 from apbot.read.labels import words
 from apbot.read.legend_ends import legend_end_pairs
@@ -242,6 +243,8 @@ def assign(b: Builder) -> None:
         if others_list(b, key, ev.values or [], ev.values_at) or (
             ev.values and list_of_earlier_key(b, key, ev.values_at)  # ROTATE's angles, not MIRROR's
         ):  # "Hold LIGHT …: WHT, BLU …"
+            ev = evidence[key.name] = replace(ev, values=None, values_at=None)
+        if ev.values and factory_list(b, ev.values_at):  # "As delivered: VOL 3, LO 16 °C, …"
             ev = evidence[key.name] = replace(ev, values=None, values_at=None)
         amount = bool(set(words(name)) & NUMERIC_WORDS)
         if key.skill == "press" and _hold_row(b, key, ev.toggle_at):

@@ -15,6 +15,7 @@ from apbot.read.labels import words
 from apbot.read.pair_own_ranges import pair_keeps_range
 from apbot.read.roles_common import (
     TIME_WORDS,
+    UNIT_QUANTITY,
     label_of,
     mentions_of,
     numeric_list,
@@ -37,6 +38,7 @@ from apbot.read.roles_raised import (
 )
 from apbot.read.shapes import Evidence
 from apbot.read.typed_seconds import as_seconds, typed_as_seconds
+from apbot.read.up_down_nouns import up_down_noun
 
 # units that name what a pair sets by themselves (a range in °C is a temperature)
 _UNIT_NOUNS = {"°C", "°F", "%", "min", "h", "s", "W"}
@@ -75,16 +77,22 @@ def assign_amounts(
     if not any(k.skill == "press" for k in entry_keys) and (steppers or digits):
         # (a key's hold that sets a timer leaves its press to set the key's own amount)
         # (a key that only closes an entry, "OK  Confirms an entry", types nothing itself)
-        entry_keys = entry_keys + [k for k in silent if k.skill == "press" and not ends_entry(b, k)]
+        guessed = [k for k in silent if k.skill == "press" and not ends_entry(b, k)]
+        entry_keys = entry_keys + guessed
         silent = [k for k in silent if k not in entry_keys]
+    else:
+        guessed = []
     used_steppers: set[int] = set()
     used_digits = keyed_cook = keyed_time is not None
     raised = None  # what the shared pair's legend says it raises and lowers ("heat level")
     own_noun: str | None = None  # the pair's own quantity when entry keys share it too
+    up_down = False  # the pair's quantity read from "NOUN up / down" (up_down_nouns)
     if shared_pair and shared_pair["up"] and shared_pair["down"]:
-        raised = raised_quantity(
-            b, [token_of(b, n) for n in shared_pair["up"] + shared_pair["down"]]
-        )
+        pair_tokens_ = [token_of(b, n) for n in shared_pair["up"] + shared_pair["down"]]
+        raised = raised_quantity(b, pair_tokens_)
+        if raised is None:  # "▲ / ▼ ..... output up / down": the noun before the directions
+            raised = up_down_noun(b, pair_tokens_)
+            up_down = raised is not None
     if steppers and shared_pair and entry_keys:
         # a stepping pair whose own sentences name what it sets, and no entry key sets that,
         # keeps its own setting: the entry keys then step theirs by themselves
@@ -94,12 +102,15 @@ def assign_amounts(
         direct_nouns = {"temperature", "humidity", "volume", "weight", "speed"}  # set alone
         own_pair = pair_noun in direct_nouns and not _named_by(names, [pair_noun])
         own_pair = own_pair and not pair_serves_only(b, pair_tokens)
-        if not own_pair and raised is not None:
+        if (not own_pair or up_down) and raised is not None:
+            # (a legend's "Speaker volume" says it better than the nouns counted round the pair)
             # the pair's legend says what it raises ("Raise / lower the heat level"), and no
             # entry key's name or own sentence names it (TIMER "sets the delay" while + "raises
             # the delay" stays TIMER's)
             nouns = raised[0].split("_")
             for key in entry_keys:
+                if up_down and key in guessed:
+                    continue  # (a key made an entry key by default says nothing of the pair)
                 said = [own_sentence(b, c, i) for c in key.controls for i in mentions_of(b, c)]
                 names.append({w for t in said for w in words(t) if len(w) >= 4})
             own_pair = not _named_by(names, nouns)
@@ -117,7 +128,11 @@ def assign_amounts(
                 if sets_with_pair(b, k.controls[0], pair_tokens)
                 or pair_follows(b, k, pair_tokens) is not None  # "1. Touch TIME. 2. Use ▲ / ▼"
             ]
+            if up_down:  # keys taken as entry keys by default go back to the keys left over
+                silent += [k for k in guessed if k not in shared_too]
             for key in (k for k in entry_keys if k not in shared_too):
+                if up_down and key in guessed:
+                    continue
                 own = evidence[key.name]
                 if own.values and len(own.values) >= 3 and numeric_list(own.values):
                     own = list_evidence(own)  # "1 h > 2 h > 3 h > 4 h > 6 h …": each one listed
@@ -236,9 +251,11 @@ def assign_amounts(
                 and raised is not None
                 and shared_pair
                 and up == shared_pair["up"]
-                and not (ev.ranges and ev.ranges[0].unit in _UNIT_NOUNS)
-            ):
+                and (up_down or not (ev.ranges and ev.ranges[0].unit in _UNIT_NOUNS))
+            ):  # (a legend's "airflow up / down" names it better than its unit, %)
                 noun = raised[0]  # "Raise / lower the goal value": the pair's own quantity
+                if up_down and _other_quantity(ev, noun):  # (a limit's °C is no volume's)
+                    ev = alone_range(b, [token_of(b, n) for n in tokens_], noun) or Evidence()
             var = b.add_number(noun, noun.upper(), ev, cyclic=False)
             if raised is not None and noun == raised[0]:
                 b.note(f"variables.{var}", "the quantity the pair raises and lowers", raised[1])
@@ -305,6 +322,14 @@ def assign_amounts(
             f"set_{var}", [{"actions": pair["up"] + pair["down"], "variable": var, "effect": eff}]
         )
     return silent
+
+
+def _other_quantity(ev: Evidence, noun: str) -> bool:
+    """The range read round the pair is in a unit measuring another quantity than the noun its
+    legend names (°C for "Speaker volume"); a percentage measures anything."""
+    unit = ev.ranges[0].unit if ev.ranges else ""
+    quantity = UNIT_QUANTITY.get(unit, "") if unit != "%" else ""
+    return bool(quantity) and quantity[:4] not in noun
 
 
 def _named_by(names: list[set[str]], nouns: list[str]) -> bool:
