@@ -13,9 +13,12 @@ import re
 
 from apbot.read.build import Builder
 from apbot.read.labels import Label, words
+from apbot.read.shapes import SETTING_NOUNS
 
 # a letter and a figure or two: a function key's code, no word
 _CODE_RE = re.compile(r"[A-Z]\d{1,2}")
+# another code key printed in the same unit
+_CODE_IN_RE = re.compile(r"(?<![\w-])[A-Z]\d{1,2}(?![\w-])")
 # "sound on / off", "headlights on/off", "the display light on or off"
 _NOUN_ON_OFF_RE = re.compile(
     r"^[\s|:—–-]*(?:the\s+)?([a-z][a-z-]{2,}(?:\s+[a-z][a-z-]{2,})?)\s+on\s*(?:/|or)\s*off\b", re.I
@@ -31,8 +34,8 @@ def code_key_noun(b: Builder, lab: Label) -> str:
     for i in lab.mentions:
         text = b.manual.units[i].text
         k = text.find(printed)
-        if k < 0:
-            continue
+        if k < 0 or len(set(_CODE_IN_RE.findall(text))) > 1:
+            continue  # ("Z1 / Z2 / Z3 … each zone on or off": several keys' one legend)
         rest = re.sub(r"^[^\w]*", " ", text[k + len(printed) :])  # (its sign: "♫ — sound …")
         m = _NOUN_ON_OFF_RE.match(rest)
         if m:
@@ -57,6 +60,7 @@ def spelled_out(b: Builder, lab: Label) -> str:
         if k < 0:
             continue
         m = _WORKS_ON_RE.search(text, k + len(lab.text))
-        if m and m.group(1).lower().startswith(short) and len(m.group(1)) > len(short) + 2:
-            return m.group(1).lower()
+        word = m.group(1).lower() if m else ""
+        if word.startswith(short) and len(word) > len(short) + 2 and word not in SETTING_NOUNS:
+            return word  # (a noun the reader knows, "temperature" for TEMP, keeps the key's)
     return ""
