@@ -114,6 +114,8 @@ def find_list(text: str) -> tuple[list[str], str] | None:
                 len(head) >= 2
                 and head[-2].isdigit()
                 and capital[-1:] == [head[-1]]
+                and len(head[-1]) >= 3  # ("5 A → 10 A": an amount in amperes, no word)
+                and not re.fullmatch(UNIT, head[-1], re.IGNORECASE)
                 and all(re.fullmatch(rf"\d+ {re.escape(head[-1])}", p) for p in parts[1:] if p)
             )
         ):
