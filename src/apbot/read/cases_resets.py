@@ -48,6 +48,39 @@ _NAMED_RESET_RE = re.compile(
 )
 
 
+# "after 4 seconds the display returns to the mode name": the view comes back, nothing is reset
+_VIEW_BACK_RE = re.compile(
+    r"\b(?:display|screen)\s+(?:returns|goes\s+back|comes\s+back|switches\s+back)\s+to\b", re.I
+)
+
+
+def _view_back(text: str) -> bool:
+    """The display going back to its usual view, with no word of a reset (defaults, cleared)."""
+    return bool(_VIEW_BACK_RE.search(text)) and not _CLEARS_RE.search(text)
+
+
+# "the level returns to that mode's starting value": one setting named as the subject
+_ONE_RETURNS_RE = re.compile(
+    r"\bthe\s+([a-z]{3,})\s+(?:returns|goes\s+back|is\s+reset|resets)\s+to\b", re.I
+)
+
+
+def _named_subject(b: Builder, text: str, others: list[str]) -> list[str]:
+    """The settings a reset sentence names as its one subject ("the level returns to …"):
+    those whose name or printed label has that noun; every one in ``others`` when the subject
+    is a group ("all settings return to …") or the sentence names none."""
+    m = _ONE_RETURNS_RE.search(text)
+    if m is None or RESET_NOUN_RE.fullmatch(m.group(1)) or _CLEARS_RE.search(text):
+        # ("the timer is cleared and the fan goes back to AUTO": a clear besides the one)
+        return others
+    noun = m.group(1).lower()
+    return [
+        n
+        for n in others
+        if noun in words(n.replace("_", " ")) + words(str(b.variables[n].get("label") or ""))
+    ]
+
+
 def _wraps(text: str) -> bool:
     """A list wrapping round ("after TA the display returns to A1"), not a reset: a sentence
     that returns to defaults ("After a mode change, it returns to the default temperature")
@@ -62,7 +95,10 @@ def apply_resets(b: Builder) -> None:
         (
             i
             for i, u in enumerate(units)
-            if RESET_RE.search(u.text) and not STAY_RE.search(u.text) and not _wraps(u.text)
+            if RESET_RE.search(u.text)
+            and not STAY_RE.search(u.text)
+            and not _wraps(u.text)
+            and not _view_back(u.text)
         ),
         None,
     )
@@ -118,6 +154,7 @@ def apply_resets(b: Builder) -> None:
         _NAMED_RESET_RE.sub("", units[at].text)
     ):
         return  # "resets the set point to the mode's starting value": that one, no others
+    others = _named_subject(b, units[at].text, others)
     if not others:
         return
     for steps in b.features.values():

@@ -12,9 +12,11 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
+from apbot.read.abutting_ranges import abutting
 from apbot.read.chart_cells import own_cells, row_names, without_names
 from apbot.read.code_spans import code_span, led_span
 from apbot.read.cycle_mentions import named_in_cycle_only
+from apbot.read.end_stops import end_stops
 from apbot.read.evidence_anywhere import AnywhereReader
 from apbot.read.evidence_checks import (
     _where_it_applies,
@@ -235,6 +237,11 @@ class EvidenceReader(ValueChooser, RangeReader, AnywhereReader):
                 )
                 if _fits(r.unit, tokens) and not _keypad(r, text)
             ]
+            stops = (
+                None if waiting or ranges else end_stops(text)
+            )  # "Nothing happens beyond 1 or 8"
+            if stops and _fits(stops.unit, tokens) and ev.range_at not in mentions:
+                ev.ranges, ev.range_at = [stops], i
             if not ranges and i in steps and not waiting and (coded := code_span(text)):
                 ranges = [coded]  # "Press ▲ / ▼: CA 1 … CA 5" after this key's own step
             levels = [lv for o in own if i in mentions and (lv := label_levels(text, o))]
@@ -275,11 +282,13 @@ class EvidenceReader(ValueChooser, RangeReader, AnywhereReader):
                 # "one minute per click up to one hour, and in coarser steps after that, up to
                 # 3 hours": the same range told twice, the wider is the whole of it
                 same = [r for r in ranges if r.low == ranges[0].low and r.unit == ranges[0].unit]
-                ev.ranges, ev.range_at = [max(same, key=lambda r: r.high)], i
+                ev.ranges, ev.range_at = [abutting(max(same, key=lambda r: r.high), ranges)], i
             elif ranges and ev.ranges and ranges[0].unit == ev.ranges[-1].unit:
                 last = ev.ranges[-1]
                 if abs(ranges[0].low - last.high) < 1e-9 and ranges[0].high > last.high:
                     ev.ranges.append(ranges[0])  # the next piece of a piecewise range
+                elif len(ev.ranges) == 1 and ev.range_at == i - 1:  # "… 128 to 9999 are long"
+                    ev.ranges = [abutting(last, ranges[:1])]
             if ev.step is None:
                 step = _fitting_step(text, tokens)
                 if step:

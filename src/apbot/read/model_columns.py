@@ -16,8 +16,12 @@ from apbot.read.labels import words
 from apbot.read.text import Unit
 
 # a type number: letters and digits joined by a hyphen or a space ("SM-2", "RB-20U", "CM-3
-# Plus", "BP-500 TALK" keep their word), as a comparison table's header names the models
-_TYPE_RE = re.compile(r"[A-Z]{1,5}[- ]?\d{1,4}[A-Z]{0,3}(?: (?:[A-Z][a-z]+|[A-Z]{2,}))?")
+# Plus", "BP-500 TALK", "HT-28 W" keep their word), as a comparison table's header names them
+# (one capital after a hyphened number, "HT-28 W", is a variant; "AMP 10 A" is an amount)
+_TYPE_RE = re.compile(
+    r"[A-Z]{1,5}[- ]?\d{1,4}[A-Z]{0,3}(?: (?:[A-Z][a-z]+|[A-Z]{2,}))?"
+    r"|[A-Z]{1,5}-\d{1,4}[A-Z]{0,3} [A-Z]"
+)
 # the row of a comparison table that lists each model's keys ("Keys", "Buttons", "Controls")
 _KEYS_ROW_RE = re.compile(r"(?:operating |control )?(?:keys|buttons|controls|key pad|keypad)\b")
 # a cell's keys: "START/STOP, USER, MEM, SET", "as BP-300 + VOICE, ▼"

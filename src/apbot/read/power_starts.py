@@ -17,7 +17,12 @@ from apbot.read.build import Builder
 from apbot.read.labels import words
 from apbot.read.shapes import STOP_WORDS
 
-_STARTS_RE = re.compile(r"\b(?:starts|begins|starts running|runs)\b", re.IGNORECASE)
+# ("The detector always starts in ALL METAL mode": the state it comes on in, no work begun;
+# "the brush starts in the mode shown" does begin the work)
+_STARTS_RE = re.compile(
+    r"\b(?:starts|begins|starts running|runs)\b(?!\s+(?:in|at|with|from)\s+(?-i:[A-Z0-9]))",
+    re.IGNORECASE,
+)
 _SWITCHED_ON_RE = re.compile(
     r"\b(?:switch(?:es|ed)?|turn(?:s|ed)?)\s+(?:it\s+|the\s+(?:[\w-]+\s+){1,3})?on\b"
     r"|\bswitch(?:es)?\s+on\b|\bpower(?:s|ed)?\s+(?:it\s+)?(?:on|up)\b",

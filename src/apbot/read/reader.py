@@ -68,6 +68,7 @@ from apbot.read.roles import assign
 from apbot.read.running_locks import read_running_locks
 from apbot.read.shapes import CHOICE_WORDS
 from apbot.read.shown_bars import read_bar_shows
+from apbot.read.shown_examples import read_shown_examples
 from apbot.read.shown_figures import read_prefixed_figures
 from apbot.read.shown_pairs import read_shown_pairs
 from apbot.read.sign_glosses import read_sign_glosses
@@ -149,6 +150,7 @@ def read_manual(
     read_initials(builder)
     read_bar_levels(builder)  # ("▮▮▯▯▯  level 2": a guessed range's levels, by its bars)
     read_bar_shows(builder)
+    read_shown_examples(builder)  # ("e.g. DISC LV 10": the display's label)
     circled_shows(builder)  # ("① first dog / ② second dog": the numbers shown circled)
     read_bracket_shows(builder)
     read_value_codes(builder)  # (after the other display words: only where none was read)

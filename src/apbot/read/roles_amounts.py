@@ -39,6 +39,7 @@ from apbot.read.roles_raised import (
 from apbot.read.shapes import Evidence
 from apbot.read.typed_seconds import as_seconds, typed_as_seconds
 from apbot.read.up_down_nouns import up_down_noun
+from apbot.read.typed_whole import typed_every_whole
 
 # units that name what a pair sets by themselves (a range in °C is a temperature)
 _UNIT_NOUNS = {"°C", "°F", "%", "min", "h", "s", "W"}
@@ -180,6 +181,7 @@ def assign_amounts(
             if spec["type"] == "time" and typed_as_seconds(b.manual, var):
                 as_seconds(spec)  # "type the delay in seconds": 4 5 is 45 s, not 00:45
             _keypad_entry(spec)
+            typed_every_whole(spec, ev, keyed)
             if spec.get("entry", {}).get("format") == "mm:ss" and (
                 not ev.step or keyed == (1.0, "s")
             ):

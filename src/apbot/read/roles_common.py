@@ -10,6 +10,7 @@ from apbot.read.build import Builder
 from apbot.read.held_parts import held_part_toggle
 from apbot.read.labels import words
 from apbot.read.legend_compounds import legend_compound
+from apbot.read.named_codes import code_key_noun, spelled_out
 from apbot.read.names_meaning import held_meaning
 from apbot.read.roles_confirm import confirmed_noun
 from apbot.read.roles_holdcell import held_toggle, lock_or_appliance
@@ -259,6 +260,9 @@ def var_name(b: Builder, key: ActionInfo) -> str:
     said = _unit_key_sets(b, key, lab.mentions)
     if said:  # "HOUR key - sets the start time": a key named for its step sets that time
         return said
+    coded = code_key_noun(b, lab) or spelled_out(b, lab)
+    if coded:  # "F1 ♫ — sound on / off": the sound; "DISC  Opens the discrimination level"
+        return coded
     opened = opened_setting(b, lab.mentions)
     own = [w[:3] for w in words(key.token.replace("_", " ")) + words(lab.text) if len(w) >= 3]
     if opened and not any(w[:3] in own for w in words(opened.replace("_", " "))):

@@ -77,7 +77,8 @@ def keypad_noun(b: Builder, key: ActionInfo) -> str:
 # "OK  Confirms an entry", "ENTER  ends the input": a key that closes whatever is being typed
 _ENDS_ENTRY = re.compile(
     r"\b(?:ends?|confirms?|completes?|finish(?:es)?|closes?|accepts?|stores?)\s+"
-    r"(?:the\s+|an?\s+|your\s+|each\s+)?(?:entry|entries|input|value\s+typed)\b",
+    r"(?:the\s+|an?\s+|your\s+|each\s+)?(?:entry|entries|input|value\s+typed"
+    r"|(?:typed|entered|keyed(?:-in)?)\s+[a-z]{3,})\b",  # "confirms a typed address"
     re.IGNORECASE,
 )
 

@@ -8,6 +8,7 @@ from typing import Any
 
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
+from apbot.read.end_stops import end_stops
 from apbot.read.evidence_context import marked_start
 from apbot.read.labels import words
 from apbot.read.list_ellipsis import fill_ellipses
@@ -295,6 +296,11 @@ def dial_ends(b: Builder, token: str, var: str) -> None:
     names = [lab.text for t, lab in b.labels.items() if t != token and lab.line is not None]
     others = {i for t, lab in b.labels.items() if t != token for i in lab.mentions}
     near = b.context([token]) + sorted(named) + _paragraph(units, own, others)
+    for i in dict.fromkeys(near):  # "At 0 and at 28 further clicks do nothing": the value
+        if i not in others and end_stops(units[i].text):  # stops, an endless knob or not
+            b.variables[var]["wrap"] = False
+            b.note(f"variables.{var}.wrap", "the setting stops at its ends", i)
+            return
     for i in dict.fromkeys(near):
         text = units[i].text
         if i in others and i not in own:

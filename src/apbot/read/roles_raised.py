@@ -14,6 +14,7 @@ import re
 from dataclasses import replace
 
 from apbot.read.build import Builder
+from apbot.read.end_stops import end_stops
 from apbot.read.labels import words
 from apbot.read.roles_common import UNIT_QUANTITY, mentions_of
 from apbot.read.shapes import SETTING_NOUNS, Evidence
@@ -78,10 +79,31 @@ def raised_quantity(b: Builder, tokens: list[str]) -> tuple[str, int] | None:
                 if noun:
                     found.setdefault(noun, i)
                 break
+            else:
+                noun = _named_up_down(text, pos)
+                if noun:
+                    found.setdefault(noun, i)
     if len(found) != 1:
         return None
     noun, at = next(iter(found.items()))
     return noun, at
+
+
+# "Sensitivity up and down", "volume up / down": the quantity first, then where the pair moves it
+_UP_DOWN_RE = re.compile(
+    r"(?P<noun>[A-Za-z][a-z-]*(?:\s+[a-z][a-z-]*){0,2}?)\s+up\s*(?:/|,|and|or|&)\s*down\b"
+)
+
+
+def _named_up_down(text: str, pos: int) -> str:
+    """The quantity a key legend names before "up and down" ("▲ / ▼  Sensitivity up and
+    down"), when nothing but key names and signs stand before it: the pair's own amount."""
+    m = _UP_DOWN_RE.search(text, pos)
+    if m is None or re.search(r"\b[a-z]{2,}\b", text[pos : m.start()]):
+        return ""  # ("press ▲ to move the cursor up and down": prose, not the key's legend)
+    noun = quantity_noun(m.group("noun"))
+    rest = text[m.start("noun") :].split(".")[0]
+    return noun if noun and _an_amount(noun, rest) else ""
 
 
 # endings of nouns that name an amount ("brightness", "intensity", "strength", "warmth")
@@ -244,7 +266,7 @@ def alone_range(b: Builder, pair: list[str], noun: str) -> Evidence | None:
     ranges of the settings other keys open with the same pair, nor a range in a unit measuring
     another quantity; None when no sentence gives it.
     The sentences after one naming the pair count too ("2. Press ▲ or ▼." "The range is …")."""
-    stem = noun.split("_")[-1].rstrip("s")
+    stem = re.sub(r"(?<!s)s$", "", noun.split("_")[-1])  # ("brightness" keeps its double s)
     if len(stem) < 3:
         return None
     named = re.compile(rf"\b{re.escape(stem)}s?\b", re.I)
@@ -257,6 +279,9 @@ def alone_range(b: Builder, pair: list[str], noun: str) -> Evidence | None:
         if units[j].heading == units[i].heading
     ]
     for i in dict.fromkeys(near):
+        stops = end_stops(units[i].text)  # "Nothing happens beyond 1 or 8" under its heading
+        if stops and (named.search(units[i].text) or named.search(units[i].heading or "")):
+            return Evidence(ranges=[stops], range_at=i)
         if not named.search(units[i].text):
             continue
         found = [

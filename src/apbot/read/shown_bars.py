@@ -101,8 +101,9 @@ def _paired(lines: list[str], var: str, values: list[str]) -> tuple[dict[str, st
             if after is None:
                 continue
             ws = words(after.group(1))
-            if ws and ws[0] in own:
+            if ws and (ws[0] in own or ws[0] in _LEVEL_WORDS):
                 ws = ws[1:]  # "▮▯▯  flow LOW": the setting's own name, then the value
+                # ("SENS ▮▯▯▯  level 1": the word for a level, then its figure)
             value = next(
                 (by_words[tuple(ws[:k])] for k in (3, 2, 1) if tuple(ws[:k]) in by_words), None
             )
@@ -110,6 +111,10 @@ def _paired(lines: list[str], var: str, values: list[str]) -> tuple[dict[str, st
                 found.setdefault(value, set()).add(m.group(0).replace(" ", ""))
                 first = first or n
     return {v: next(iter(s)) for v, s in found.items() if len(s) == 1}, first
+
+
+# words a legend prints before a bar's figure ("level 1", "step 4"): no part of the value
+_LEVEL_WORDS = frozenset({"level", "step", "stage"})
 
 
 def _named_near(lines: list[str], var: str, bars: dict[str, str], at: int) -> bool:

@@ -46,6 +46,8 @@ _NUMBER_LIST = re.compile(
 def find_list(text: str) -> tuple[list[str], str] | None:
     """A list of values in one sentence, and how it was written ("arrows", "list")."""
     text = _arrow_cell(_triangle_arrows(text))
+    # "FWD ►  ↔  ◄ REV": each name's own sign, drawn pointing at the two-way arrow between them
+    text = re.sub(r"[►▶]\s*((?:<->|<=>|↔|⇄|⇔))\s*[◄◀]", r"\1", text)
     both = bool(_BOTH_WAYS.search(text))
     text = _BOTH_WAYS.sub(" → ", text)
     if _SPACED_ARROW.search(text):  # "OPEN → →IN IN ONLY → OUT→ OUT ONLY": the spaced arrows
@@ -101,11 +103,21 @@ def find_list(text: str) -> tuple[list[str], str] | None:
         if trailing and len(trailing) < len(capital):
             capital = trailing
         capital = _after_case_label(head, parts[1:]) or capital
-        if (  # "HDMI 1 → HDMI 2 → …": the first item's figure, as the others carry theirs
-            len(head) >= 2
-            and head[-1].isdigit()
-            and capital[-1:] == [head[-2]]
-            and any(p.split()[:1] == [head[-2]] for p in parts[1:])
+        if (
+            (  # "HDMI 1 → HDMI 2 → …": the first item's figure, as the others carry theirs
+                len(head) >= 2
+                and head[-1].isdigit()
+                and capital[-1:] == [head[-2]]
+                and any(p.split()[:1] == [head[-2]] for p in parts[1:])
+            )
+            or (  # "1 TONE → 2 TONE → …": the figure before the first item's word, as in the others
+                len(head) >= 2
+                and head[-2].isdigit()
+                and capital[-1:] == [head[-1]]
+                and len(head[-1]) >= 3  # ("5 A → 10 A": an amount in amperes, no word)
+                and not re.fullmatch(UNIT, head[-1], re.IGNORECASE)
+                and all(re.fullmatch(rf"\d+ {re.escape(head[-1])}", p) for p in parts[1:] if p)
+            )
         ):
             capital = [head[-2], head[-1]]
         parts[0] = _clean_item(" ".join(capital) or " ".join(head[-2:]) or parts[0])
