@@ -38,8 +38,8 @@ from apbot.read.roles_raised import (
 )
 from apbot.read.shapes import Evidence
 from apbot.read.typed_seconds import as_seconds, typed_as_seconds
-from apbot.read.up_down_nouns import up_down_noun
 from apbot.read.typed_whole import typed_every_whole
+from apbot.read.up_down_nouns import up_down_noun
 
 # units that name what a pair sets by themselves (a range in °C is a temperature)
 _UNIT_NOUNS = {"°C", "°F", "%", "min", "h", "s", "W"}
