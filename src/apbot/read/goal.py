@@ -46,6 +46,7 @@ from apbot.read.goal_electric import said_milliamps
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_every import every_periods
 from apbot.read.goal_fractions import fractions
+from apbot.read.goal_from_start import said_from_start
 from apbot.read.goal_gates import closing_switches, entry_switches, gated_switches
 from apbot.read.goal_halfway import halfway_levels
 from apbot.read.goal_hourly import hourly_periods
@@ -57,6 +58,7 @@ from apbot.read.goal_limits import limit_numbers
 from apbot.read.goal_listed import listed_outside
 from apbot.read.goal_listed_days import listed_in_days, weeks_elsewhere
 from apbot.read.goal_marked_ends import marked_ends
+from apbot.read.goal_meters import said_meters
 from apbot.read.goal_mute import muted_volume, silenced_sounds
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
 from apbot.read.goal_numbered_times import numbered_times
@@ -74,6 +76,7 @@ from apbot.read.goal_open import open_entries
 from apbot.read.goal_ordinals import ordinal_numbers
 from apbot.read.goal_outside import kept_outside
 from apbot.read.goal_own_switch import own_switch_states
+from apbot.read.goal_part_of_top import said_parts_of_top
 from apbot.read.goal_periods import distinct, in_weeks
 from apbot.read.goal_preset_rows import charted_presets
 from apbot.read.goal_presets import lift_presets, preset_companions, restore_presets
@@ -99,6 +102,7 @@ from apbot.read.goal_spoken_numbers import (
 from apbot.read.goal_start import power_and_running
 from apbot.read.goal_stops import said_power_parts, said_stops
 from apbot.read.goal_switches import switches
+from apbot.read.goal_table_quantities import said_table_quantities
 from apbot.read.goal_text import Text
 from apbot.read.goal_thousands import said_thousands
 from apbot.read.goal_times_a_day import said_times_a_day
@@ -119,6 +123,10 @@ MAX_INSTRUCTION = 5_000
 
 _REWRITES = (
     without_remarks,
+    said_table_quantities,
+    said_meters,
+    said_from_start,
+    said_parts_of_top,
     said_power_parts,
     said_stops,
     counted_ends,
