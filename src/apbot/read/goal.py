@@ -39,6 +39,7 @@ from apbot.read.goal_assign import assign_mentions
 from apbot.read.goal_both import both_values
 from apbot.read.goal_cases import entry_modes, implied_cases, set_by_hand
 from apbot.read.goal_copies import confirmed_choices
+from apbot.read.goal_count_words import counted_times
 from apbot.read.goal_counted_ends import counted_ends
 from apbot.read.goal_dates import said_dates
 from apbot.read.goal_digits import spelled_codes
@@ -51,14 +52,17 @@ from apbot.read.goal_gates import closing_switches, entry_switches, gated_switch
 from apbot.read.goal_halfway import halfway_levels
 from apbot.read.goal_hourly import hourly_periods
 from apbot.read.goal_hundreds import said_hundreds
+from apbot.read.goal_hyphen_counts import said_hyphen_counts
 from apbot.read.goal_kelvin import kelvin_words
 from apbot.read.goal_kinds import kind_numbers
+from apbot.read.goal_last import said_last
 from apbot.read.goal_left_to_it import left_to_it
 from apbot.read.goal_limits import limit_numbers
 from apbot.read.goal_listed import listed_outside
 from apbot.read.goal_listed_days import listed_in_days, weeks_elsewhere
 from apbot.read.goal_marked_ends import marked_ends
 from apbot.read.goal_meters import said_meters
+from apbot.read.goal_mode_cut import said_mode_cuts
 from apbot.read.goal_mute import muted_volume, silenced_sounds
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
 from apbot.read.goal_numbered_times import numbered_times
@@ -100,7 +104,9 @@ from apbot.read.goal_spoken_numbers import (
     said_steps,
 )
 from apbot.read.goal_start import power_and_running
+from apbot.read.goal_stopped import said_stopped
 from apbot.read.goal_stops import said_power_parts, said_stops
+from apbot.read.goal_switch_values import switch_named_values
 from apbot.read.goal_switches import switches
 from apbot.read.goal_table_quantities import said_table_quantities
 from apbot.read.goal_text import Text
@@ -127,6 +133,10 @@ _REWRITES = (
     said_meters,
     said_from_start,
     said_parts_of_top,
+    said_last,
+    said_hyphen_counts,
+    said_mode_cuts,
+    said_stopped,
     said_power_parts,
     said_stops,
     counted_ends,
@@ -190,7 +200,10 @@ def parse_instruction(
     claimed: set[int] = set()
     where: dict[str, int] = {}  # the token each setting was read from
     shown_levels(view, text, goal, claimed, where)  # before a looser name: "clean" for PURIFIED
-    matches = value_matches(view, text)
+    matches, naming = switch_named_values(
+        view, text, counted_times(text, value_matches(view, text))
+    )
+    claimed.update(naming)  # "the beep as the click": the sound, no CLICK switch
     for match in matches:
         if match.var in goal or any(k in claimed for k in range(match.start, match.end)):
             continue
