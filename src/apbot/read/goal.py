@@ -62,6 +62,7 @@ from apbot.read.goal_listed import listed_outside
 from apbot.read.goal_listed_days import listed_in_days, weeks_elsewhere
 from apbot.read.goal_marked_ends import marked_ends
 from apbot.read.goal_meters import said_meters
+from apbot.read.goal_minutes_seconds import said_minutes_seconds
 from apbot.read.goal_mode_cut import said_mode_cuts
 from apbot.read.goal_mute import muted_volume, silenced_sounds
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
@@ -80,6 +81,7 @@ from apbot.read.goal_open import open_entries
 from apbot.read.goal_ordinals import ordinal_numbers
 from apbot.read.goal_outside import kept_outside
 from apbot.read.goal_own_switch import own_switch_states
+from apbot.read.goal_owner_words import owner_words
 from apbot.read.goal_part_of_top import said_parts_of_top
 from apbot.read.goal_periods import distinct, in_weeks
 from apbot.read.goal_preset_rows import charted_presets
@@ -88,6 +90,7 @@ from apbot.read.goal_quantity_values import quantity_values
 from apbot.read.goal_rates import said_rates, said_road_speeds
 from apbot.read.goal_readings import frozen_readings
 from apbot.read.goal_remarks import without_remarks
+from apbot.read.goal_said import per_period
 from apbot.read.goal_scales import superlatives
 from apbot.read.goal_scheduled_states import scheduled_states
 from apbot.read.goal_selector import on_auto_off
@@ -137,6 +140,7 @@ _REWRITES = (
     said_hyphen_counts,
     said_mode_cuts,
     said_stopped,
+    said_minutes_seconds,
     said_power_parts,
     said_stops,
     counted_ends,
@@ -200,9 +204,8 @@ def parse_instruction(
     claimed: set[int] = set()
     where: dict[str, int] = {}  # the token each setting was read from
     shown_levels(view, text, goal, claimed, where)  # before a looser name: "clean" for PURIFIED
-    matches, naming = switch_named_values(
-        view, text, counted_times(text, value_matches(view, text))
-    )
+    found = owner_words(view, text, counted_times(text, value_matches(view, text)))
+    matches, naming = switch_named_values(view, text, found)
     claimed.update(naming)  # "the beep as the click": the sound, no CLICK switch
     for match in matches:
         if match.var in goal or any(k in claimed for k in range(match.start, match.end)):
@@ -224,6 +227,7 @@ def parse_instruction(
     days = any(in_days(info.var) for info in counted)
     listed = not days and any(listed_in_days(info) for info in counted)
     mentions = distinct(in_weeks(text, find_mentions(text.tokens, skip=claimed), days or listed))
+    mentions = [m for m in mentions if not per_period(text, m)]  # "three doses a day"
     mentions = time_spans(view, text, mentions, goal, claimed, where)
     mentions = kind_numbers(view, text, mentions, goal, claimed, where)
     mentions = limit_numbers(view, text, mentions, goal, claimed, where)

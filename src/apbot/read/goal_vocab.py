@@ -185,6 +185,7 @@ _GROUPS: tuple[tuple[str, ...], ...] = (
     ("length", "long", "lengthen"),
     ("work", "effort", "efforts"),  # an interval timer's work and rest phases, as trainers
     ("rest", "recover", "recovering"),  # say them ("one-minute efforts, 30 s to recover")
+    ("period", "quarter", "quarters", "inning", "innings"),  # a game's parts, as played
 )
 _CANON: dict[str, str] = {}
 for _group in _GROUPS:
@@ -391,6 +392,7 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     "violet": ("purple",),
     "solar": ("sun", "sunshine", "sunlight"),
     "lunar": ("moon", "moonlight"),
+    "ot": ("overtime",),  # a game's period past the last
     "reverse": ("backwards", "backward", "astern"),  # a direction said as the way it goes
     "bloom": ("flowering", "flower", "flowers", "blossom"),
     "tuner": ("radio",),
