@@ -79,6 +79,13 @@ def _owner(view: Model, start: int, numbers: set[int]) -> str | None:
     ]
     if len(owners) <= 1:
         return owners[0] if owners else None
+    heads = [x for x in view.manual_lines[max(0, start - 3) : start] if re.search("[a-z]", x)]
+    if heads:  # the chart's own heading over the numbers ("Rate key   Speed"): its first cell
+        first = _CELL_END.split(heads[-1].strip())[0]
+        words = {stem(w) for w in re.findall(r"[a-z]+", first)}
+        named = [n for n in owners if any(w in words for w in view.infos[n].vocab if len(w) > 2)]
+        if len(named) == 1:
+            return named[0]
     above = " ".join(view.manual_lines[max(0, start - _ABOVE) : start])
     words = {stem(w) for w in re.findall(r"[a-z]+", above)}
     near = [n for n in owners if any(w in words for w in view.infos[n].vocab if len(w) > 2)]
