@@ -4,7 +4,7 @@ numbered setting named by the quantity its chart gives each number, fraction val
 its top, the last of a numbered list, a chart's capital title, a legend that starts and stops a
 thing, a word that is both a value and a switch's name, a mode's cut word said in full, "stop
 <setting>", "as bright as it goes", counts per day, a scoreboard's HOME / GUEST, a game's
-quarter, a clock's minutes and seconds, and a read belief's switch named as its setting."""
+quarter, a clock's minutes and seconds."""
 
 from __future__ import annotations
 
@@ -259,26 +259,3 @@ def test_minutes_and_seconds_said_as_a_clock_reads_them() -> None:
 def test_a_count_per_day_is_no_length_of_time() -> None:
     assert "game_clock" not in _board("two portions a day")
     assert "game_clock" not in _board("a portion twice a day")
-
-
-ALARM = """
-appliance: {id: clock_1, category: alarm_clock, name: "Wake 1", brand: W}
-controls:
-  - {id: alarm_key, kind: button, label: "ALARM"}
-  - {id: hour_key, kind: button, label: "HOUR"}
-variables:
-  alarm_on: {type: discrete, values: ["off", "on"], label: "ALARM"}
-  alarm: {type: time, ranges: [["00:00:00", "23:00:00", 3600]], format: "hh:mm", label: "ALARM"}
-actions:
-  press_alarm: {control: alarm_key}
-  press_hour: {control: hour_key}
-features:
-  alarm:
-    - {actions: [press_alarm], variable: alarm_on, effect: toggle}
-    - {actions: [press_hour], variable: alarm, effect: next}
-"""
-
-
-def test_a_switch_named_as_the_setting_it_opens_is_not_implied() -> None:
-    goal = parse_instruction(loads_model(ALARM, check=False), "alarm at 7 am")
-    assert goal == {"alarm": "07:00:00"}

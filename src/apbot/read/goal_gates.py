@@ -23,20 +23,9 @@ def entry_switches(view: Model, goal: Goal) -> None:
                 info = view.infos.get(target or "")
                 if info is None or info.role != "switch" or target in goal:
                     continue
-                if _same_name(info, view.infos.get(step.variable)):
-                    continue  # ON TIME toggled, then ON TIME set: one key read twice
                 effects = [effect for _a, effect in step_effects(earlier)]
                 if all(effect == "toggle" for effect in effects) and effects:
                     goal[info.name] = info.on
-
-
-def _same_name(switch: VarInfo, setting: VarInfo | None) -> bool:
-    """The switch is named word for word as the setting it leads to (a read belief's ON TIME
-    switch before the ON TIME time): the key that opens the setting, read also as a state of
-    its own, which no sentence asks for."""
-    if setting is None or not switch.var.label or switch.var.label != setting.var.label:
-        return False
-    return own_stems(switch) == own_stems(setting)
 
 
 def closing_switches(view: Model, text: Text, goal: Goal) -> None:

@@ -1,8 +1,9 @@
 """A setting with an OFF value stopped by name: "stop tracking altogether", "stop the
 oscillation". The word after "stop" (or "stop the") is the setting's own; the sentence is
-written as "tracking off" before it is read — only for a setting or switch (not the power or
-the running state, whose stop the start rules read) that has a value named off, and only when
-no number follows (a "stop at 5" is a value).
+written as "tracking off" before it is read — only for a selector of three or more values one
+of which is OFF (not an on/off switch: "stop the turning" may switch a LOCKDOWN on; not the
+power or the running state, whose stop the start rules read), and only when no number follows
+(a "stop at 5" is a value).
 """
 
 from __future__ import annotations
@@ -27,8 +28,9 @@ def said_stopped(view: Model, instruction: str) -> str:
         named = [
             name
             for name, info in view.infos.items()
-            if info.role in ("setting", "switch")
+            if info.role == "setting"
             and key in own_stems(info)
+            and len(all_values(info.var)) >= 3
             and any(str(v).casefold() == "off" for v in all_values(info.var))
         ]
         return f"{m[1]} off" if len(named) == 1 else m[0]

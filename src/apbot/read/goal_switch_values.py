@@ -1,8 +1,9 @@
 """A word that is both a value of one setting and the whole name of a switch.
 
 A drum module's metronome is switched by CLICK, and its sound can be CLICK, BEEP, COWBELL …:
-"click" names three things. Said with another value of that sound ("the cowbell as the click
-sound", "the beep as the click") it names the sound setting — neither its CLICK value nor the
+"click" names three things. Said with another value of that sound, as its name ("the cowbell as
+the click sound", "the beep as the click": after "as the", or before the setting's word) it
+names the sound setting — neither its CLICK value nor the
 switch; said with a state or a start ("start the click", "the click going", "click on") it is
 the switch. Elsewhere the value stands.
 """
@@ -27,6 +28,16 @@ def _state_beside(text: Text, k: int) -> bool:
     return after in _STATES or bool(before and before[-1] in _STARTS)
 
 
+def _names_the_setting(view: Model, text: Text, match: Any) -> bool:
+    """The word is said as the setting's name: after "as the" / "as a" ("the beep as the
+    click"), or before a word of the setting's own ("the click sound")."""
+    k = match.start
+    if text.word(k - 2) == "as" and text.word(k - 1) in ("the", "a", "its", "my"):
+        return True
+    after = text.concepts[k + 1] if k + 1 < len(text.concepts) else ""
+    return view.infos[match.var].vocab.get(after, 0.0) >= 0.7
+
+
 def switch_named_values(view: Model, text: Text, matches: list[Any]) -> tuple[list[Any], set[int]]:
     """The value matches kept, and the words that name a setting (claimed, no switch's)."""
     names = {
@@ -46,7 +57,7 @@ def switch_named_values(view: Model, text: Text, matches: list[Any]) -> tuple[li
             m.var == match.var and m.value != match.value and m.start != match.start
             for m in matches
         )
-        if others:
+        if others and _names_the_setting(view, text, match):
             naming.add(match.start)  # "the cowbell as the click sound": the sound setting
         elif not _state_beside(text, match.start):
             kept.append(match)
