@@ -39,6 +39,7 @@ from apbot.read.goal_assign import assign_mentions
 from apbot.read.goal_both import both_values
 from apbot.read.goal_cases import entry_modes, implied_cases, set_by_hand
 from apbot.read.goal_copies import confirmed_choices
+from apbot.read.goal_count_words import counted_times
 from apbot.read.goal_counted_ends import counted_ends
 from apbot.read.goal_dates import said_dates
 from apbot.read.goal_digits import spelled_codes
@@ -46,18 +47,24 @@ from apbot.read.goal_electric import said_milliamps
 from apbot.read.goal_error import GoalParseError
 from apbot.read.goal_every import every_periods
 from apbot.read.goal_fractions import fractions
+from apbot.read.goal_from_start import said_from_start
 from apbot.read.goal_gates import closing_switches, entry_switches, gated_switches
 from apbot.read.goal_halfway import halfway_levels
 from apbot.read.goal_hourly import hourly_periods
 from apbot.read.goal_hundreds import said_hundreds
+from apbot.read.goal_hyphen_counts import said_hyphen_counts
 from apbot.read.goal_joined_ends import joined_ends
 from apbot.read.goal_kelvin import kelvin_words
 from apbot.read.goal_kinds import kind_numbers
+from apbot.read.goal_last import said_last
 from apbot.read.goal_left_to_it import left_to_it
 from apbot.read.goal_limits import limit_numbers
 from apbot.read.goal_listed import listed_outside
 from apbot.read.goal_listed_days import listed_in_days, weeks_elsewhere
 from apbot.read.goal_marked_ends import marked_ends
+from apbot.read.goal_meters import said_meters
+from apbot.read.goal_minutes_seconds import said_minutes_seconds
+from apbot.read.goal_mode_cut import said_mode_cuts
 from apbot.read.goal_mute import muted_volume, silenced_sounds
 from apbot.read.goal_names import pronoun_ones, restated_codes, value_matches
 from apbot.read.goal_numbered_times import numbered_times
@@ -75,6 +82,8 @@ from apbot.read.goal_open import open_entries
 from apbot.read.goal_ordinals import ordinal_numbers
 from apbot.read.goal_outside import kept_outside
 from apbot.read.goal_own_switch import own_switch_states
+from apbot.read.goal_owner_words import owner_words
+from apbot.read.goal_part_of_top import said_parts_of_top
 from apbot.read.goal_periods import distinct, in_weeks
 from apbot.read.goal_preset_rows import charted_presets
 from apbot.read.goal_presets import lift_presets, preset_companions, restore_presets
@@ -82,6 +91,7 @@ from apbot.read.goal_quantity_values import quantity_values
 from apbot.read.goal_rates import said_rates, said_road_speeds
 from apbot.read.goal_readings import frozen_readings
 from apbot.read.goal_remarks import without_remarks
+from apbot.read.goal_said import per_period
 from apbot.read.goal_scales import superlatives
 from apbot.read.goal_scheduled_states import scheduled_states
 from apbot.read.goal_selector import on_auto_off
@@ -98,8 +108,11 @@ from apbot.read.goal_spoken_numbers import (
     said_steps,
 )
 from apbot.read.goal_start import power_and_running
+from apbot.read.goal_stopped import said_stopped
 from apbot.read.goal_stops import said_power_parts, said_stops
+from apbot.read.goal_switch_values import switch_named_values
 from apbot.read.goal_switches import switches
+from apbot.read.goal_table_quantities import said_table_quantities
 from apbot.read.goal_text import Text
 from apbot.read.goal_thousands import said_thousands
 from apbot.read.goal_times_a_day import said_times_a_day
@@ -120,6 +133,15 @@ MAX_INSTRUCTION = 5_000
 
 _REWRITES = (
     without_remarks,
+    said_table_quantities,
+    said_meters,
+    said_from_start,
+    said_parts_of_top,
+    said_last,
+    said_hyphen_counts,
+    said_mode_cuts,
+    said_stopped,
+    said_minutes_seconds,
     said_power_parts,
     said_stops,
     counted_ends,
@@ -183,7 +205,9 @@ def parse_instruction(
     claimed: set[int] = set()
     where: dict[str, int] = {}  # the token each setting was read from
     shown_levels(view, text, goal, claimed, where)  # before a looser name: "clean" for PURIFIED
-    matches = value_matches(view, text)
+    found = owner_words(view, text, counted_times(text, value_matches(view, text)))
+    matches, naming = switch_named_values(view, text, found)
+    claimed.update(naming)  # "the beep as the click": the sound, no CLICK switch
     for match in matches:
         if match.var in goal or any(k in claimed for k in range(match.start, match.end)):
             continue
@@ -204,6 +228,7 @@ def parse_instruction(
     days = any(in_days(info.var) for info in counted)
     listed = not days and any(listed_in_days(info) for info in counted)
     mentions = distinct(in_weeks(text, find_mentions(text.tokens, skip=claimed), days or listed))
+    mentions = [m for m in mentions if not per_period(text, m)]  # "three doses a day"
     mentions = time_spans(view, text, mentions, goal, claimed, where)
     mentions = kind_numbers(view, text, mentions, goal, claimed, where)
     mentions = limit_numbers(view, text, mentions, goal, claimed, where)

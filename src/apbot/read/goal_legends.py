@@ -124,6 +124,9 @@ def legend_words(
                         r"(?:([A-Za-z]{4,})\s+)?([A-Za-z]{4,})\s+on\s*(?:and|or|/)\s*off\b",
                         sentence,
                     )
+                    if thing is None and not re.search(r"(?i)start|stop", label):
+                        # "CLICK — starts and stops the metronome" (not START/STOP: the run)
+                        thing = _STARTS_AND_STOPS.search(sentence)
                     if thing is not None and thing[2].casefold() not in _LEGEND_VERBS:
                         out.setdefault(name, set()).add(thing[2].casefold())
                         if thing[1] and thing[1].casefold() not in _LEGEND_VERBS:
@@ -131,6 +134,15 @@ def legend_words(
                             out[name].add(thing[1].casefold())
                 out.setdefault(name, set()).update(_described(sentences[0]))
     return out
+
+
+_STARTS_AND_STOPS = re.compile(
+    r"\b(?:starts?\s+(?:and|or|/)\s+stops?|stops?\s+(?:and|or|/)\s+starts?)\s+(?:the\s+)?"
+    r"(?:([A-Za-z]{4,})\s+)?([A-Za-z]{4,})\b(?!\s+[A-Za-z]{4,})",
+    re.IGNORECASE,
+)
+"""A legend saying the key starts and stops a thing names the switch by it, as "on and off"
+does."""
 
 
 def _described(sentence: str) -> set[str]:

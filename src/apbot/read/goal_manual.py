@@ -28,6 +28,7 @@ from typing import Any
 
 from apbot.model.domain import all_values
 from apbot.model.schema import ApplianceModel, DiscreteVariable, NumericVariable
+from apbot.read.goal_chart_titles import chart_titles
 from apbot.read.goal_legend_lines import legend_line_names
 from apbot.read.goal_vocab import stem
 
@@ -56,7 +57,7 @@ def _headings(manual: str) -> frozenset[str]:
     """One-word column headings that stand right after a "No." heading ("No.  Stitch  Use"):
     the thing a numbered chart lists."""
     found = re.findall(r"(?im)^\s*\|?\s*(?:No\.?|Nr\.?|#)\s*(?:\||\s{2,})\s*([A-Za-z]+)\b", manual)
-    return frozenset(word.casefold() for word in found)
+    return frozenset(word.casefold() for word in found) | chart_titles(manual)
 
 
 def _coded_variables(

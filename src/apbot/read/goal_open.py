@@ -38,6 +38,7 @@ from apbot.read.goal_said import (
     counted_stems,
     in_days,
     manual_stems,
+    per_period,
     remark,
     tally,
 )
@@ -88,8 +89,8 @@ def open_entries(
     for mention in mentions:
         if mention.kind == "clock" or any(k in taken for k in range(mention.start, mention.end)):
             continue
-        if tally(text, mention):
-            continue
+        if tally(text, mention) or per_period(text, mention):
+            continue  # "20 times", "three doses a day": counts, no setting
         value = as_said(text, mention)
         if value is None:
             continue

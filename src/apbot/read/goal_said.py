@@ -9,6 +9,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
+from apbot.model.values import words_to_number
 from apbot.read.goal_text import Text
 from apbot.read.goal_vocab import stem
 from apbot.read.numbers import Mention
@@ -41,6 +42,26 @@ def tally(text: Text, mention: Mention) -> bool:
     after = text.word(mention.end)
     noun = mention.unit.casefold() or after
     return noun in _TALLIES or (after == "out" and text.word(mention.end + 1) == "of")
+
+
+_PER = frozenset({"a", "an", "per", "each", "every"})
+_HOW_OFTEN = frozenset({"once", "twice", "thrice", "times"})
+
+
+def per_period(text: Text, mention: Mention) -> bool:
+    """ "three doses a day", "twice a day", "4 times per week": the period a count is made
+    in, no length of time to set."""
+    if mention.kind != "duration" or text.word(mention.start) not in _PER:
+        return False
+    before = text.word(mention.start - 1)
+    if before in _HOW_OFTEN:
+        return True
+    counted = text.word(mention.start - 2)
+    return (
+        len(before) > 3
+        and before.endswith("s")
+        and (counted[:1].isdigit() or words_to_number(counted) is not None)
+    )
 
 
 def in_days(text: Text, mention: Mention) -> bool:

@@ -15,6 +15,8 @@ _MORE = frozenset({"much", "many", "high", "hot", "long", "strong", "fast", "big
 _LESS = frozenset(
     {"little", "few", "low", "cool", "short", "weak", "slow", "small", "quiet", "cold"}
 ) | frozenset({"gentle", "soft", "mild"})
+_MORE |= {"bright"}  # "the backlight as bright as possible"
+_LESS |= {"dim"}  # "as dim as it goes"
 _KIND_OF_WORD = {
     **dict.fromkeys(("hottest", "warmest", "coldest", "coolest"), "temperature"),
     **dict.fromkeys(("hot", "warm", "cold", "cool"), "temperature"),

@@ -27,6 +27,7 @@ from apbot.read.goal_power_said import (
     setting_words,
 )
 from apbot.read.goal_roles import doing_name
+from apbot.read.goal_switch_values import started_switches
 from apbot.read.goal_text import (
     CLAUSE_ENDS,
     FILLERS,
@@ -68,7 +69,8 @@ def power_and_running(view: Model, text: Text, goal: Goal, counting: bool = Fals
     if not running:
         # no running state of its own: the appliance works while it is on ("start cooling")
         power = [n for n, i in view.infos.items() if i.role == "power" and n not in goal]
-        said = _says_start(text, None, _named_starts(view, text), verbs=False)
+        starts = _named_starts(view, text) | started_switches(view, text)  # not the click's
+        said = _says_start(text, None, starts, verbs=False)
         if power and (said or _running_now(view, text, goal)):
             goal[power[0]] = view.infos[power[0]].on
         return

@@ -183,6 +183,9 @@ _GROUPS: tuple[tuple[str, ...], ...] = (
     ("rotate", "rotation", "rotisserie", "spit"),
     ("width", "wide", "widen", "narrow"),
     ("length", "long", "lengthen"),
+    ("work", "effort", "efforts"),  # an interval timer's work and rest phases, as trainers
+    ("rest", "recover", "recovering"),  # say them ("one-minute efforts, 30 s to recover")
+    ("period", "quarter", "quarters", "inning", "innings"),  # a game's parts, as played
 )
 _CANON: dict[str, str] = {}
 for _group in _GROUPS:
@@ -388,6 +391,9 @@ SYNONYMS: dict[str, tuple[str, ...]] = {
     # plain words for values panels print in their trade's word or initials
     "violet": ("purple",),
     "solar": ("sun", "sunshine", "sunlight"),
+    "lunar": ("moon", "moonlight"),
+    "ot": ("overtime",),  # a game's period past the last
+    "reverse": ("backwards", "backward", "astern"),  # a direction said as the way it goes
     "bloom": ("flowering", "flower", "flowers", "blossom"),
     "tuner": ("radio",),
     "phono": ("turntable", "vinyl"),
