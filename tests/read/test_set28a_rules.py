@@ -192,3 +192,18 @@ SNUG pet door
     model = _read(text, ["hold_lock", "press_door"])
     locks = [v for v in model["variables"].values() if v.get("initial") is not None]
     assert locks and all(v["initial"] == "off" for v in locks if v["values"] == ["off", "on"])
+
+
+def test_a_stated_unit_span_with_decimal_commas_is_read_not_a_crash() -> None:
+    """The read fuzz found it: a span stated with a decimal comma ("between 24rpm and
+    1,5rpm") had its ends compared as floats before the comma became a point: ValueError."""
+    manual = """
+Drehteller D-1 turntable
+
+The SPEED can be set between 0,5rpm and 2,5rpm with the SPEED key.
+
+The WEIGHT can be set between 24rpm and 1,5rpm.
+"""
+    names = ["press_speed_button", "press_weight_button", "press_start_button"]
+    model = read_manual(manual, names).model
+    assert set(model.actions) == set(names)

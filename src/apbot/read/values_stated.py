@@ -114,8 +114,9 @@ def stated_unit_span(unit: Unit) -> Range | None:
     if re.search(r"\d:\d\d", text) or _NOT_A_SETTING.search(text):
         return None
     for m in _SPAN_RE.finditer(text):
-        if m["au"] and m["au"] == m["bu"] and float(m["a"]) < float(m["b"]):
-            return Range(float(m["a"].replace(",", ".")), float(m["b"].replace(",", ".")), "")
+        low, high = (float(m[end].replace(",", ".")) for end in ("a", "b"))
+        if m["au"] and m["au"] == m["bu"] and low < high:  # a decimal comma: "1,5 rpm"
+            return Range(low, high, "")
     return None
 
 
