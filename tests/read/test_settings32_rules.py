@@ -127,3 +127,33 @@ def test_a_line_of_factory_values_is_no_keys_list() -> None:
     # SET opens a temperature the pair sets, not a choice among "brt 3, set 25 °c, alm 2 °c"
     assert len(entered) == 1
     assert getattr(model.variables[entered[0]], "unit", None) == "°C"
+
+
+# the same aerator whose legend's noun is one roles_raised reads too ("intensity up / down")
+AERATOR_INTENSITY = """
+Brisa PA-40 pond aerator
+
+THE KEYS
+
+  (1) ⏻ ........ on / standby
+  (2) PURGE .... starts a purge; pressed again, ends it
+  (3) +  (4) − . bubble intensity up / down
+
+INTENSITY
+
+Press + or −. Each press moves the intensity by 10 % and the screen shows INT and the new
+percentage, from 10 % to 100 %.
+
+PURGE
+
+PURGE blows at full intensity whatever the setting, to clear the hose.
+"""
+
+
+def test_a_pair_legend_noun_read_by_both_rules_still_keeps_its_setting() -> None:
+    """Both roles_raised ("X up and down") and up_down_nouns read this legend; when the first
+    did, the keys guessed as entry keys were no longer given back, and PURGE took the pair
+    as a 0–10 amount of its own (the merge of set28b and settings32 lost it)."""
+    model = read_manual(AERATOR_INTENSITY, AERATOR_ACTIONS).model
+    assert model.variables["bubble_intensity"].ranges == [(10, 100, 10)]
+    assert model.variables["purge"].values == ["off", "on"]

@@ -91,9 +91,12 @@ def assign_amounts(
     if shared_pair and shared_pair["up"] and shared_pair["down"]:
         pair_tokens_ = [token_of(b, n) for n in shared_pair["up"] + shared_pair["down"]]
         raised = raised_quantity(b, pair_tokens_)
-        if raised is None:  # "▲ / ▼ ..... output up / down": the noun before the directions
-            raised = up_down_noun(b, pair_tokens_)
-            up_down = raised is not None
+        named = up_down_noun(b, pair_tokens_)  # "▲ / ▼ ..... output up / down"
+        if raised is None:  # the noun before the directions
+            raised = named
+        # the same noun, whichever rule read it (roles_raised reads "X up and down" too):
+        # the legend then says what the pair sets, and keys guessed as entry keys give it back
+        up_down = named is not None and raised is not None and named[0] == raised[0]
     if steppers and shared_pair and entry_keys:
         # a stepping pair whose own sentences name what it sets, and no entry key sets that,
         # keeps its own setting: the entry keys then step theirs by themselves
