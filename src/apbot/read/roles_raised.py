@@ -11,6 +11,7 @@ pair's setting is named after the quantity rather than the most frequent noun ne
 from __future__ import annotations
 
 import re
+from collections.abc import Iterator
 from dataclasses import replace
 
 from apbot.read.build import Builder
@@ -55,34 +56,29 @@ def raised_quantity(b: Builder, tokens: list[str]) -> tuple[str, int] | None:
     name ("heat_level"), with the unit it was read from; None when no unit naming the pair
     says so, or when its units name two different quantities."""
     found: dict[str, int] = {}
-    for token in tokens:
-        lab = b.labels.get(token)
-        if lab is None:
-            continue
-        for i in lab.mentions:
-            text = b.manual.units[i].text
-            pos = _after_label(text, lab.text)
-            for m in _RAISED_RE.finditer(text, pos):
-                if not _leads(text[pos : m.start()]):
-                    continue  # "Next lower output step": an adjective, not what the key does
-                rest = text[m.start("noun") :].split(".")[0]
-                other = re.search(r"\bor\b(.*)", rest)
-                if (
-                    other
-                    and re.search(r"\bthe\b", other.group(1))
-                    and not _VERB_RE.search(other.group(1))
-                ):
-                    return None  # "raises the delay or, on BAKE only, the bake time": two
-                noun = quantity_noun(m.group("noun"))
-                if noun and not (_an_amount(noun, rest) or _set_section(b, noun)):
-                    noun = ""  # "raise the footrest", "lower the noise": no amount of the pair
-                if noun:
-                    found.setdefault(noun, i)
-                break
-            else:
-                noun = _named_up_down(text, pos)
-                if noun:
-                    found.setdefault(noun, i)
+    for i, text, label in label_units(b, tokens):
+        pos = after_label(text, label)
+        for m in _RAISED_RE.finditer(text, pos):
+            if not _leads(text[pos : m.start()]):
+                continue  # "Next lower output step": an adjective, not what the key does
+            rest = text[m.start("noun") :].split(".")[0]
+            other = re.search(r"\bor\b(.*)", rest)
+            if (
+                other
+                and re.search(r"\bthe\b", other.group(1))
+                and not _VERB_RE.search(other.group(1))
+            ):
+                return None  # "raises the delay or, on BAKE only, the bake time": two
+            noun = quantity_noun(m.group("noun"))
+            if noun and not (_an_amount(noun, rest) or _set_section(b, noun)):
+                noun = ""  # "raise the footrest", "lower the noise": no amount of the pair
+            if noun:
+                found.setdefault(noun, i)
+            break
+        else:
+            noun = _named_up_down(text, pos)
+            if noun:
+                found.setdefault(noun, i)
     if len(found) != 1:
         return None
     noun, at = next(iter(found.items()))
@@ -145,7 +141,17 @@ def _leads(before: str) -> bool:
     )
 
 
-def _after_label(text: str, label: str) -> int:
+def label_units(b: Builder, tokens: list[str]) -> Iterator[tuple[int, str, str]]:
+    """Each unit that names one of the keys, with its index and the key's printed name: where
+    a pair's legend or sentence says what the pair moves (read here and in ``up_down_nouns``)."""
+    for token in tokens:
+        lab = b.labels.get(token)
+        if lab is not None:
+            for i in lab.mentions:
+                yield i, b.manual.units[i].text, lab.text
+
+
+def after_label(text: str, label: str) -> int:
     """Where the key's own part of a unit starts: after its printed name, when it is there."""
     if label:
         k = text.upper().find(label.upper())
@@ -176,7 +182,7 @@ def own_sentence(b: Builder, token: str, unit: int) -> str:
     auto-off time in hours": what TIMER shows, not the heat level before it)."""
     text = b.manual.units[unit].text
     lab = b.labels.get(token)
-    start = _after_label(text, lab.text) if lab is not None else 0
+    start = after_label(text, lab.text) if lab is not None else 0
     return text[start:].split(". ")[0]
 
 

@@ -15,7 +15,7 @@ import re
 
 from apbot.read.build import Builder
 from apbot.read.labels import words
-from apbot.read.roles_raised import quantity_noun
+from apbot.read.roles_raised import after_label, label_units, quantity_noun
 from apbot.read.shapes import SETTING_NOUNS
 
 # "output up / down", "brightness down/up", "level up / down": one or two words after the
@@ -49,25 +49,21 @@ def up_down_noun(b: Builder, tokens: list[str]) -> tuple[str, int] | None:
     unit it was read from; None when no unit naming the pair says so, when its units name two
     quantities, or when the noun is given no figure anywhere in the manual."""
     found: dict[str, int] = {}
-    for token in tokens:
-        lab = b.labels.get(token)
-        if lab is None:
+    for i, text, label in label_units(b, tokens):
+        pos = after_label(text, label)
+        k = pos - len(label) if pos else -1  # where the key's printed name starts, if there
+        rest = text[pos:]
+        m = _UP_DOWN_RE.search(rest)
+        bare = None
+        if m is None and k >= 0 and _LEADS_RE.search(text[:k]):
+            bare = _BARE_RE.match(rest)  # (a legend line led by the pair's signs)
+        if m is None and bare is None:
             continue
-        for i in lab.mentions:
-            text = b.manual.units[i].text
-            k = text.upper().find(lab.text.upper()) if lab.text else -1
-            rest = text[k + len(lab.text) :] if k >= 0 else text
-            m = _UP_DOWN_RE.search(rest)
-            bare = None
-            if m is None and k >= 0 and _LEADS_RE.search(text[:k]):
-                bare = _BARE_RE.match(rest)  # (a legend line led by the pair's signs)
-            if m is None and bare is None:
-                continue
-            noun = quantity_noun((m or bare).group("noun"))  # type: ignore[union-attr]
-            if bare is not None and noun not in _BARE_NOUNS:
-                continue
-            if noun and len(words(noun.replace("_", " "))[-1]) >= 4:
-                found.setdefault(noun, i)
+        noun = quantity_noun((m or bare).group("noun"))  # type: ignore[union-attr]
+        if bare is not None and noun not in _BARE_NOUNS:
+            continue
+        if noun and len(words(noun.replace("_", " "))[-1]) >= 4:
+            found.setdefault(noun, i)
     if len(found) != 1:
         return None
     noun, at = next(iter(found.items()))
