@@ -4,13 +4,26 @@ way up", "bass and treble right down". The end belongs to each setting named, jo
 
 from __future__ import annotations
 
+from apbot.model.values import words_to_number
 from apbot.read.goal_halfway import to_an_end
 from apbot.read.goal_ladders import is_off_level, ordered, ordered_values
 from apbot.read.goal_text import CLAUSE_ENDS, Text, negated_before
 from apbot.read.goal_view import Goal, Model, domain_values
 
+# words that send a setting named before them its own way or to its own value ("turn the bass
+# up and the treble all the way down"): the end is not said of the settings before them
+_OWN_WAY = frozenset(
+    {"up", "down", "higher", "lower", "louder", "softer", "more", "less", "to", "at"}
+)
 _REACH = 8  # tokens before the end's words: "the echo and the microphone turned"
 _NAMED = 0.8  # a setting's own word (its name or its key's label), not a loose one
+
+
+def _said_of_its_own(word: str) -> bool:
+    """A direction, a value's "to" / "at" or a number between the settings and the end."""
+    if word in _OWN_WAY or word[:1].isdigit():
+        return True
+    return word not in ("a", "an") and words_to_number(word) is not None
 
 
 def joined_ends(
@@ -26,8 +39,8 @@ def joined_ends(
         joined = False
         for j in range(start - 1, max(-1, start - 1 - _REACH), -1):
             word = text.word(j)
-            if word in CLAUSE_ENDS or word == ",":
-                break
+            if word in CLAUSE_ENDS or word == "," or _said_of_its_own(word):
+                break  # ("the bass up and the treble right down": the bass's own way, not the end)
             if word == "and":
                 joined = joined or bool(named)
                 continue

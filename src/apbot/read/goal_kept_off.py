@@ -38,7 +38,7 @@ def says_kept_off(view: Model, text: Text) -> bool:
             if text.word(j - 1) == "the" and not _names_a_setting(view, text, j):
                 j += 1  # "without switching the speaker on": a switching verb's thing is
                 # the appliance, unless the word names a setting of it ("the light")
-            if text.word(j) in ("on", "up"):
+            if text.word(j) in ("on", "up") and not _particle_before_a_setting(view, text, k, j):
                 return True
         if word in _KEEP and not running:
             j = _past_the_appliance(view, text, k + 1)
@@ -49,6 +49,16 @@ def says_kept_off(view: Model, text: Text) -> bool:
             if text.word(j) == "off" and text.word(j + 1) in _AFTER | CLAUSE_ENDS:
                 return True
     return False
+
+
+def _particle_before_a_setting(view: Model, text: Text, k: int, j: int) -> bool:
+    """ "without turning up the volume", "without switching on the beep": the particle right
+    after the verb, then "the" and a word that is no name of the appliance — the thing switched
+    is that setting, not the appliance."""
+    if j != k + 2:
+        return False
+    past = _past_the_appliance(view, text, j + 1)
+    return past > j + 1 and text.word(past - 1) == "the" and text.word(past) not in CLAUSE_ENDS
 
 
 def _names_a_setting(view: Model, text: Text, j: int) -> bool:

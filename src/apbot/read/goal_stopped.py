@@ -3,7 +3,8 @@ oscillation". The word after "stop" (or "stop the") is the setting's own; the se
 written as "tracking off" before it is read — only for a selector of three or more values one
 of which is OFF (not an on/off switch: "stop the turning" may switch a LOCKDOWN on; not the
 power or the running state, whose stop the start rules read), and only when no number follows
-(a "stop at 5" is a value).
+(a "stop at 5" is a value), not when it is said not to ("don't stop tracking") or later ("stop
+tracking after ten minutes": a timer's end, not now).
 """
 
 from __future__ import annotations
@@ -15,7 +16,11 @@ from apbot.read.goal_view import Model, own_stems
 from apbot.read.goal_vocab import stem
 
 _SAID = re.compile(
-    r"\b(?:stop|cease|quit)\s+(?:the\s+|its\s+)?([A-Za-z]{4,})\b(?!\s+(?:at|on|to|by|\d))",
+    # (not "don't stop tracking", "never stop the turning": keep it)
+    r"(?<!n't\s)(?<!n’t\s)(?<!not\s)(?<!never\s)"
+    r"\b(?:stop|cease|quit)\s+(?:the\s+|its\s+)?([A-Za-z]{4,})\b"
+    # (not "stop at 5": a value; not "stop tracking after ten minutes": a timer's, later)
+    r"(?!\s+(?:at|on|to|by|after|in|\d))",
     re.IGNORECASE,
 )
 

@@ -94,8 +94,9 @@ def assign_amounts(
         named = up_down_noun(b, pair_tokens_)  # "▲ / ▼ ..... output up / down"
         if raised is None:  # the noun before the directions
             raised = named
-        # the same noun, whichever rule read it (roles_raised reads "X up and down" too):
-        # the legend then says what the pair sets, and keys guessed as entry keys give it back
+        # the legend's noun, whether or not a verb names it too ("raise the heat level" and
+        # "heat level up / down"): the legend then says what the pair sets, and keys guessed
+        # as entry keys give it back
         up_down = named is not None and raised is not None and named[0] == raised[0]
     if steppers and shared_pair and entry_keys:
         # a stepping pair whose own sentences name what it sets, and no entry key sets that,

@@ -2,7 +2,8 @@
 
 A key legend or the pair's own sentence often says what the two keys move: "▲ / ▼ — Raise /
 lower the heat level of the selected zone", "− and + lower or raise the water temperature",
-"Increase / decrease the goal value". That quantity is the pair's own setting, even when its
+"Increase / decrease the goal value". (The noun form, "▲ / ▼  Sensitivity up and down", is
+read by :mod:`apbot.read.up_down_nouns`.) That quantity is the pair's own setting, even when its
 noun is none the reader knows as an amount (heat level, goal value, brightness): a key beside
 it that cycles its own list (TIMER "1 h > 2 h > …") does not take the pair over, and the
 pair's setting is named after the quantity rather than the most frequent noun nearby.
@@ -70,43 +71,22 @@ def raised_quantity(b: Builder, tokens: list[str]) -> tuple[str, int] | None:
             ):
                 return None  # "raises the delay or, on BAKE only, the bake time": two
             noun = quantity_noun(m.group("noun"))
-            if noun and not (_an_amount(noun, rest) or _set_section(b, noun)):
+            if noun and not (an_amount(noun, rest) or _set_section(b, noun)):
                 noun = ""  # "raise the footrest", "lower the noise": no amount of the pair
             if noun:
                 found.setdefault(noun, i)
             break
-        else:
-            noun = _named_up_down(text, pos)
-            if noun:
-                found.setdefault(noun, i)
     if len(found) != 1:
         return None
     noun, at = next(iter(found.items()))
     return noun, at
 
 
-# "Sensitivity up and down", "volume up / down": the quantity first, then where the pair moves it
-_UP_DOWN_RE = re.compile(
-    r"(?P<noun>[A-Za-z][a-z-]*(?:\s+[a-z][a-z-]*){0,2}?)\s+up\s*(?:/|,|and|or|&)\s*down\b"
-)
-
-
-def _named_up_down(text: str, pos: int) -> str:
-    """The quantity a key legend names before "up and down" ("▲ / ▼  Sensitivity up and
-    down"), when nothing but key names and signs stand before it: the pair's own amount."""
-    m = _UP_DOWN_RE.search(text, pos)
-    if m is None or re.search(r"\b[a-z]{2,}\b", text[pos : m.start()]):
-        return ""  # ("press ▲ to move the cursor up and down": prose, not the key's legend)
-    noun = quantity_noun(m.group("noun"))
-    rest = text[m.start("noun") :].split(".")[0]
-    return noun if noun and _an_amount(noun, rest) else ""
-
-
 # endings of nouns that name an amount ("brightness", "intensity", "strength", "warmth")
 _AMOUNT_ENDINGS = ("ness", "ity", "th")
 
 
-def _an_amount(noun: str, clause: str) -> bool:
+def an_amount(noun: str, clause: str) -> bool:
     """The raised noun is an amount the pair can set: a quantity noun the reader knows
     ("temperature", "level"), a noun of an amount ("firmness", "intensity"), a bare "value"
     or "number" someone's ("the target number"), or a noun the clause gives a range or values
