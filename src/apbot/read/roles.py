@@ -57,6 +57,7 @@ from apbot.read.roles_lists import (
 )
 from apbot.read.roles_locks import assign_locks
 from apbot.read.roles_menu import assign_menu
+from apbot.read.roles_mode_keys import mode_keys
 from apbot.read.roles_nounpads import noun_pads
 from apbot.read.roles_own_dials import assign_dials, assign_leftovers
 from apbot.read.roles_pads import (
@@ -176,6 +177,8 @@ def assign(b: Builder) -> None:
             # COOK" among WHITE RICE, BROWN RICE…): one of the choices all the same
             pad_group(b, group)
             keys = [k for k in keys if k not in group]
+    toggled = mode_keys(b, keys)  # "Modes: NORMAL, COVER, BOOST" beside COVER and BOOST keys
+    keys = [k for k in keys if k not in toggled]
     evidence = {k.name: b.evidence(list(k.controls)) for k in keys}
     # (or a dial's: "For PORRIDGE, STEAM and CAKE you can set the time" names the menus)
     dial_lists = [set(b.evidence([t]).values or []) for t in dials]
