@@ -1,7 +1,7 @@
 """A panel code cut from a long word the manual writes out beside it: REV for "reverse" ("REV
   reverse running", "DIR — changes between forward and reverse"). A three-letter code is
 otherwise named only by a word at most twice its length (``goal_shortened``), so a long word
-("reverse", "continuous") would not name it; the manual's own line pairing the two does."""
+("reverse") would not name it; the manual's own line pairing the two does."""
 
 from __future__ import annotations
 
@@ -43,10 +43,10 @@ def code_words(
                 ):
                     continue
                 for word in _WORD.findall(line.casefold()):
-                    if len(word) > 2 * len(code) and word.startswith(code):
-                        if word not in STOP_WORDS and not word.endswith("ly"):
-                            found.setdefault(word, []).append((name, value))
-    out = []
+                    long = len(word) > 2 * len(code) and word.startswith(code)
+                    if long and word not in STOP_WORDS and not word.endswith("ly"):
+                        found.setdefault(word, []).append((name, value))
+    out: list[tuple[str, Any, tuple[str, ...], float]] = []
     for word, owners in found.items():
         if len(set(owners)) == 1:
             name, value = owners[0]

@@ -33,7 +33,8 @@ def percent_strength(view: Model, goal: Goal) -> tuple[float, str] | None:
             continue
         if not ordered(info):
             continue
-        numbers = [bare_number(v) for v in domain_values(view, info, goal)]
-        if numbers and all(n is not None for n in numbers) and max(numbers) == 100:
+        said = [bare_number(v) for v in domain_values(view, info, goal)]
+        numbers = [n for n in said if n is not None]
+        if numbers and len(numbers) == len(said) and max(numbers) == 100:
             found.append(name)
     return (0.0, found[0]) if len(found) == 1 else None
