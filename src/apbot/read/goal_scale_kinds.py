@@ -5,6 +5,7 @@ appliance's own limit, and the one open setting of that kind (goal_scales picks 
 from __future__ import annotations
 
 from apbot.model.schema import TimeVariable
+from apbot.read.goal_full_percent import strength_at_end
 from apbot.read.goal_ladders import numbered_levels, ordered, worded_levels
 from apbot.read.goal_text import CLAUSE_ENDS, Text
 from apbot.read.goal_values import generic
@@ -40,7 +41,7 @@ one setting counted in levels when no setting is named by those words."""
 def strength_said(text: Text, k: int) -> bool:
     """ "full power", "minimum strength": an end of the appliance's strength, whatever setting
     counts it (the word "power" may also name an on/off switch; it is no level of its own)."""
-    return text.word(k) in _FULL and text.word(k + 1) in _STRENGTHS
+    return (text.word(k) in _FULL and text.word(k + 1) in _STRENGTHS) or strength_at_end(text, k)
 
 
 def kind_of(text: Text, k: int) -> str | None:

@@ -8,6 +8,7 @@ from typing import Any
 
 from apbot.model.schema import DiscreteVariable
 from apbot.read.goal_degree_stems import superlative_stem_setting
+from apbot.read.goal_full_percent import percent_strength
 from apbot.read.goal_keyed_ends import at_the_latest, keyed_end, keyed_offset
 from apbot.read.goal_ladders import (
     is_off_level,
@@ -118,6 +119,8 @@ def superlatives(
         clash = kind is not None and best is not None and of_another_kind(view.infos[best[1]], kind)
         if kind and (best is None or clash or not named_specifically(view.infos[best[1]], text, k)):
             only = only_of_kind(view, goal, kind)
+            if only is None and kind == "level" and strength_said(text, k):
+                only = percent_strength(view, goal)  # "at full power" on a BRIGHT 0-100 %
             if (
                 only is not None
                 and of_a_setting(view.infos[only[1]], text, k)

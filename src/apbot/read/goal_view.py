@@ -22,6 +22,7 @@ from apbot.model.schema import (
 )
 from apbot.read.goal_aliases import bracket_aliases
 from apbot.read.goal_appliance_words import appliance_said, appliance_words
+from apbot.read.goal_code_words import code_words
 from apbot.read.goal_expanded_labels import add_expanded_labels
 from apbot.read.goal_legends import add_kind_nouns, add_setting_words, legend_words
 from apbot.read.goal_manual import coded_names
@@ -235,6 +236,7 @@ def build(model: ApplianceModel, manual: str = "") -> Model:
     settings = tuple(f"{n} {i.var.label}".replace("_", " ") for n, i in infos.items())
     aliases = bracket_aliases(_forms(infos), manual, settings, frozenset(appliance))
     phrases += [(n, v, stems, 0.9) for n, v, stems in aliases]
+    phrases += code_words(infos, manual)  # REV for "reverse", the manual's line pairing them
     tops = {
         name: code
         for name, info in infos.items()
