@@ -1,0 +1,123 @@
+"""Sentences in the twenty-ninth set's shapes, said of small models written for these tests: a
+heading read out digit by digit or named by a compass point, a mode's name fused with the noun
+its legend says it of, a named level asked for by the quantity the manual charts for it (and by
+a superlative of that quantity), and a contents page that names no coded value."""
+
+from __future__ import annotations
+
+from apbot.model.load import loads_model
+from apbot.read.goal import parse_instruction
+from apbot.read.goal_manual import coded_names
+
+TROLLING = """
+appliance: {id: trolling_motor_1, category: trolling_motor, name: "Bowline 40 motor", brand: B}
+controls:
+  - {id: hold_key, kind: button, label: "HOLD"}
+  - {id: free_key, kind: button, label: "FREE"}
+  - {id: left, kind: button, label: "<"}
+  - {id: right, kind: button, label: ">"}
+  - {id: beam_key, kind: button, label: "BEAM"}
+  - {id: thrust_key, kind: button, label: "THRUST"}
+variables:
+  mode: {type: discrete, values: [free, cruise]}
+  heading: {type: numeric, unit: "°", ranges: [[0, 359, 1]], initial: 90, wrap: true}
+  thrust: {type: numeric, ranges: [[1, 5, 1]], initial: 3, wrap: true}
+  lamp: {type: discrete, values: [glow, trail, race], initial: glow}
+actions:
+  press_hold: {control: hold_key}
+  press_free: {control: free_key}
+  press_left: {control: left}
+  press_right: {control: right}
+  press_beam: {control: beam_key}
+  press_thrust: {control: thrust_key}
+features:
+  thrust:
+    - {actions: [press_thrust], variable: thrust, effect: next}
+  cruise:
+    - {actions: [press_hold], variable: mode, effect: {to: cruise}}
+  free:
+    - {actions: [press_free], variable: mode, effect: {to: free}}
+  heading:
+    - actions: [press_left, press_right]
+      variable: heading
+      effect: {press_left: {skip: -1}, press_right: {skip: 1}}
+  lamp:
+    - {actions: [press_beam], variable: lamp, effect: next}
+"""
+
+TROLLING_MANUAL = """
+CONTENTS
+  1  Fitting the motor ............................ 2
+  2  The bow lamp ................................. 3
+
+KEYS
+  HOLD   CRUISE - the motor keeps the bow on the heading shown
+  FREE   steer with the foot pedal
+
+BOW LAMP
+  Each press of BEAM steps GLOW -> TRAIL -> RACE.
+
+     Step     Light      Lasts
+     GLOW     60 lm      30 h
+     TRAIL    350 lm     6 h
+     RACE     800 lm     2 h
+"""
+
+
+def _motor(sentence: str) -> dict[str, object]:
+    return parse_instruction(loads_model(TROLLING), sentence, TROLLING_MANUAL)
+
+
+def test_a_heading_read_digit_by_digit() -> None:
+    assert _motor("Hold heading zero six five")["heading"] == 65
+    assert _motor("heading three-two-zero, thrust four") == {"heading": 320, "thrust": 4}
+
+
+def test_a_compass_point_is_its_bearing() -> None:
+    assert _motor("Point her due west")["heading"] == 270
+    assert _motor("Head south")["heading"] == 180
+
+
+def test_a_mode_fused_with_its_legend_noun() -> None:
+    assert _motor("Put it on cruisecontrol... no, on cruisemotor")["mode"] == "cruise"
+
+
+def test_a_level_named_by_its_charted_quantity() -> None:
+    assert _motor("lamp at three hundred and fifty lumens")["lamp"] == "trail"
+    assert _motor("about eight hundred and fifty lumens")["lamp"] == "race"
+    assert "lamp" not in _motor("six hundred lumens")  # no chart row, and no hedge
+
+
+def test_a_superlative_of_the_charted_quantity() -> None:
+    assert _motor("the brightest light")["lamp"] == "race"
+    assert _motor("the dimmest light for the night")["lamp"] == "glow"
+
+
+CODED = """
+appliance: {id: fogger_1, category: fogger, name: "Mist 3", brand: M}
+controls:
+  - {id: prog_key, kind: button, label: "PROG"}
+variables:
+  programme: {type: numeric, ranges: [[1, 3, 1]], initial: 1}
+actions:
+  press_prog: {control: prog_key}
+features:
+  programme:
+    - {actions: [press_prog], variable: programme, effect: next}
+"""
+
+CODED_MANUAL = """
+CONTENTS
+  1  Safety ........................................ 2
+  2  Charging ...................................... 3
+  3  Cleaning ...................................... 4
+
+PROGRAMMES
+  PROG steps through the three mist programmes: 1 is a fine mist, 2 a dense fog, 3 pulses.
+"""
+
+
+def test_a_contents_page_names_no_programme() -> None:
+    names = {name for _var, _code, name in coded_names(loads_model(CODED), CODED_MANUAL)}
+    assert not any(name.startswith(("Safety", "Charging")) for name in names)
+    assert "programme" not in parse_instruction(loads_model(CODED), "Charging", CODED_MANUAL)
