@@ -121,3 +121,45 @@ def test_a_contents_page_names_no_programme() -> None:
     names = {name for _var, _code, name in coded_names(loads_model(CODED), CODED_MANUAL)}
     assert not any(name.startswith(("Safety", "Charging")) for name in names)
     assert "programme" not in parse_instruction(loads_model(CODED), "Charging", CODED_MANUAL)
+
+
+PUMP = """
+appliance: {id: pond_pump_1, category: pond_pump, name: "Ripple P2", brand: R}
+controls:
+  - {id: prog_key, kind: button, label: "PROG"}
+  - {id: flow_key, kind: button, label: "FLOW"}
+variables:
+  programme: {type: numeric, ranges: [[0, 12, 1]], initial: 0, wrap: true}
+  flow: {type: numeric, ranges: [[1, 3, 1]], initial: 2, wrap: true}
+actions:
+  press_prog: {control: prog_key}
+  press_flow: {control: flow_key}
+features:
+  programme:
+    - {actions: [press_prog], variable: programme, effect: next}
+  flow:
+    - {actions: [press_flow], variable: flow, effect: next}
+"""
+
+PUMP_MANUAL = """
+PROGRAMMES
+
+   No.    What the pump does
+    0     Always on: the pump never stops
+    1     Runs for 1 hour each morning
+    2     Runs for 2 hours each morning
+   3-10   Runs for 3 ... 10 hours each morning
+    11    Fountain show: short bursts every minute
+    12    Holiday: ten minutes an hour
+"""
+
+
+def _pump(sentence: str) -> dict[str, object]:
+    return parse_instruction(loads_model(PUMP), sentence, PUMP_MANUAL)
+
+
+def test_a_code_named_by_its_chart_row() -> None:
+    assert _pump("Put on the fountain show")["programme"] == 11
+    assert _pump("Holiday programme, flow one") == {"programme": 12, "flow": 1}
+    assert _pump("run it seven hours every morning")["programme"] == 7
+    assert _pump("the longest morning run")["programme"] == 10

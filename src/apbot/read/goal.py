@@ -39,6 +39,7 @@ from apbot.read.goal_assign import assign_mentions
 from apbot.read.goal_both import both_values
 from apbot.read.goal_cases import entry_modes, implied_cases, set_by_hand
 from apbot.read.goal_charted_levels import charted_levels, charted_superlatives
+from apbot.read.goal_code_rows import coded_rows
 from apbot.read.goal_copies import confirmed_choices
 from apbot.read.goal_count_words import counted_times
 from apbot.read.goal_counted_ends import counted_ends
@@ -229,6 +230,7 @@ def parse_instruction(
     fractions(view, text, goal, claimed, where)
     quantity_values(view, text, goal, claimed, where)
     charted_levels(view, text, goal, claimed, where)  # "a hundred lumens": MEDIUM  100 lm
+    coded_rows(view, text, goal, claimed, where)  # "dusk till dawn": its code chart row
     unit_cases(view, text, goal, claimed, where)
     counted = [info for info in view.infos.values() if info.role == "setting"]
     days = any(in_days(info.var) for info in counted)
