@@ -163,3 +163,41 @@ def test_a_code_named_by_its_chart_row() -> None:
     assert _pump("Holiday programme, flow one") == {"programme": 12, "flow": 1}
     assert _pump("run it seven hours every morning")["programme"] == 7
     assert _pump("the longest morning run")["programme"] == 10
+
+
+DOSER = """
+appliance: {id: doser_1, category: dosing_pump, name: "Drop 2 doser", brand: D}
+controls:
+  - {id: vol_key, kind: button, label: "VOL"}
+  - {id: rate_key, kind: button, label: "RATE"}
+  - {id: head_key, kind: button, label: "HEAD"}
+variables:
+  dose: {type: numeric, unit: "µL", ranges: [[100, 2000, 100]], initial: 500, wrap: true}
+  rate: {type: numeric, ranges: [[1, 5, 1]], initial: 2, wrap: true}
+  head: {type: discrete, values: [mist, fan, jet, stream], wrap: true}
+actions:
+  press_vol: {control: vol_key}
+  press_rate: {control: rate_key}
+  press_head: {control: head_key}
+features:
+  dose:
+    - {actions: [press_vol], variable: dose, effect: next}
+  rate:
+    - {actions: [press_rate], variable: rate, effect: next}
+  head:
+    - {actions: [press_head], variable: head, effect: next}
+"""
+
+
+def _doser(sentence: str) -> dict[str, object]:
+    return parse_instruction(loads_model(DOSER), sentence, "")
+
+
+def test_microlitres_and_millilitres_on_a_setting_in_microlitres() -> None:
+    assert _doser("dose 700 µL")["dose"] == 700
+    assert _doser("a dose of one and a half millilitres")["dose"] == 1500
+
+
+def test_a_step_counted_from_the_start_with_the_setting_named_inside() -> None:
+    assert _doser("two rate steps faster than it comes")["rate"] == 4
+    assert _doser("one head down from where it starts")["head"] == "stream"

@@ -67,6 +67,7 @@ from apbot.read.goal_listed import listed_outside
 from apbot.read.goal_listed_days import listed_in_days, weeks_elsewhere
 from apbot.read.goal_marked_ends import marked_ends
 from apbot.read.goal_meters import said_meters
+from apbot.read.goal_microlitres import said_microlitres
 from apbot.read.goal_minutes_seconds import said_minutes_seconds
 from apbot.read.goal_mode_cut import said_mode_cuts
 from apbot.read.goal_mute import muted_volume, silenced_sounds
@@ -143,6 +144,7 @@ _REWRITES = (
     said_parts_of_top,
     said_last,
     said_headings,
+    said_microlitres,
     said_glued_values,
     said_hyphen_counts,
     said_mode_cuts,
