@@ -38,6 +38,8 @@ from apbot.read.goal_amount_words import said_amounts
 from apbot.read.goal_assign import assign_mentions
 from apbot.read.goal_both import both_values
 from apbot.read.goal_cases import entry_modes, implied_cases, set_by_hand
+from apbot.read.goal_charted_levels import charted_levels, charted_superlatives
+from apbot.read.goal_code_rows import coded_rows
 from apbot.read.goal_copies import confirmed_choices
 from apbot.read.goal_count_words import counted_times
 from apbot.read.goal_counted_ends import counted_ends
@@ -49,7 +51,9 @@ from apbot.read.goal_every import every_periods
 from apbot.read.goal_fractions import fractions
 from apbot.read.goal_from_start import said_from_start
 from apbot.read.goal_gates import closing_switches, entry_switches, gated_switches
+from apbot.read.goal_glued_values import said_glued_values
 from apbot.read.goal_halfway import halfway_levels
+from apbot.read.goal_headings import said_headings
 from apbot.read.goal_hourly import hourly_periods
 from apbot.read.goal_hundreds import said_hundreds
 from apbot.read.goal_hyphen_counts import said_hyphen_counts
@@ -63,6 +67,7 @@ from apbot.read.goal_listed import listed_outside
 from apbot.read.goal_listed_days import listed_in_days, weeks_elsewhere
 from apbot.read.goal_marked_ends import marked_ends
 from apbot.read.goal_meters import said_meters
+from apbot.read.goal_microlitres import said_microlitres
 from apbot.read.goal_minutes_seconds import said_minutes_seconds
 from apbot.read.goal_mode_cut import said_mode_cuts
 from apbot.read.goal_mute import muted_volume, silenced_sounds
@@ -138,6 +143,9 @@ _REWRITES = (
     said_from_start,
     said_parts_of_top,
     said_last,
+    said_headings,
+    said_microlitres,
+    said_glued_values,
     said_hyphen_counts,
     said_mode_cuts,
     said_stopped,
@@ -223,6 +231,8 @@ def parse_instruction(
     pronoun_ones(text, claimed)
     fractions(view, text, goal, claimed, where)
     quantity_values(view, text, goal, claimed, where)
+    charted_levels(view, text, goal, claimed, where)  # "a hundred lumens": MEDIUM  100 lm
+    coded_rows(view, text, goal, claimed, where)  # "dusk till dawn": its code chart row
     unit_cases(view, text, goal, claimed, where)
     counted = [info for info in view.infos.values() if info.role == "setting"]
     days = any(in_days(info.var) for info in counted)
@@ -248,6 +258,7 @@ def parse_instruction(
     left_to_it(view, text, goal, claimed)
     marked_ends(view, text, goal, claimed, where)
     superlatives(view, text, goal, claimed, where)
+    charted_superlatives(view, text, goal, claimed, where)
     named_units(view, text, goal, claimed, where)
     said_units(view, goal)
     zero_settings(view, text, goal, claimed, where)

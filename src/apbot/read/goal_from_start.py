@@ -21,7 +21,7 @@ from typing import Any
 from apbot.model.domain import Domain, build_domain, case_domains
 from apbot.model.schema import DiscreteVariable
 from apbot.model.values import words_to_number
-from apbot.read.goal_view import Model
+from apbot.read.goal_view import Model, own_stems
 from apbot.read.goal_vocab import stem
 
 _DOWN = frozenset({"below", "under", "lower", "down", "less", "dimmer", "darker", "slower"})
@@ -30,7 +30,7 @@ _STEPS = frozenset({"step", "notch", "click", "level", "press", "position", "set
 _RAISE = re.compile(r"\b(raise|increase|turn\s+up|bump\s+up|push\s+up|up)\b", re.IGNORECASE)
 _LOWER = re.compile(r"\b(lower|reduce|decrease|drop|turn\s+down|cut|down)\b", re.IGNORECASE)
 _PHRASE = re.compile(
-    r"\b(?P<n>\d+|(?:[a-z]+[\s-]+){0,2}?[a-z]+)\s+(?P<unit>[a-z]+)\s+"
+    r"\b(?P<n>\d+|(?:[a-z]+[\s-]+){0,2}?[a-z]+)\s+(?:(?P<own>[a-z]+)\s+)?(?P<unit>(?!(?:down|up|from)\b)[a-z]+)\s+"
     r"(?P<way>below|under|lower|down|less|dimmer|darker|slower|above|over|higher|up|more"
     r"|brighter|faster|louder|from)\s+(?:than\s+|from\s+)?"
     r"(?P<ref>(?:where|what|how)\s+it\s+(?:starts|comes|came|is)(?:\s+(?:at|on|set))?"
@@ -83,7 +83,9 @@ def said_from_start(view: Model, instruction: str) -> str:
     """ "the tempo ten beats below where it starts" as "the tempo to 110"."""
 
     def counted(m: re.Match[str]) -> str:
-        words = m["n"].split()
+        words, own = m["n"].split(), m["own"] or ""
+        if own and (own.casefold() in ("a", "an") or words_to_number(own) is not None):
+            words, own = [*words, own], ""  # "go one bank down": the count, no setting's word
         for first in range(len(words)):
             count = words_to_number(" ".join(words[first:]))
             if count is not None:
@@ -93,8 +95,8 @@ def said_from_start(view: Model, instruction: str) -> str:
                 return m[0]
             first, count = len(words) - 1, 1.0
         head = " ".join(words[:first])
-        before = instruction[: m.start()] + head
-        name = _setting(view, before)
+        before = instruction[: m.start()] + head + " " + own
+        name = _setting(view, before) or _setting(view, m["unit"])  # "one bank down"
         if name is None or not count or count != int(count):
             return m[0]
         way = m["way"].casefold()
@@ -111,10 +113,14 @@ def said_from_start(view: Model, instruction: str) -> str:
             return m[0]
         unit = m["unit"].casefold()
         unit = unit[:-2] if unit.endswith("hes") else unit.rstrip("s")
+        if stem(unit) in own_stems(view.infos[name]):
+            unit = "step"  # "one bank down": a step of the setting the unit names
         if unit in _STEPS or domain.magnitudes is None:
             if unit not in _STEPS:
                 return m[0]
             at = domain.initial + sign * int(count)
+            if domain.wrap and abs(count) < len(domain.values):
+                at %= len(domain.values)  # "one bank down" from A on a ring of banks: F
             if not 0 <= at < len(domain.values):
                 return m[0]
             value = domain.values[at]

@@ -29,6 +29,7 @@ from typing import Any
 from apbot.model.domain import all_values
 from apbot.model.schema import ApplianceModel, DiscreteVariable, NumericVariable
 from apbot.read.goal_chart_titles import chart_titles
+from apbot.read.goal_contents_lines import contents_cell
 from apbot.read.goal_legend_lines import legend_line_names
 from apbot.read.goal_vocab import stem
 
@@ -101,6 +102,8 @@ def _shown_prefix(var: NumericVariable) -> str:
 
 def _name(cell: str) -> str:
     """The name a cell gives: markup, brackets and what follows a dash or colon dropped."""
+    if contents_cell(cell):
+        return ""
     text = re.sub(r"[*_`]", "", cell)
     text = re.sub(r"\([^)]*\)|\[[^\]]*\]", " ", text)
     text = re.split(r"\s[–—-]\s|[:;,]", text)[0].strip()
