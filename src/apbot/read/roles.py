@@ -18,6 +18,7 @@ from apbot.read.factory_lists import factory_list
 from apbot.read.held_flips import assign_flips, flipped_values
 from apbot.read.labels import words
 from apbot.read.legend_ends import legend_end_pairs
+from apbot.read.own_cycles import stated_for_key
 from apbot.read.press_hold_pairs import press_hold_pairs
 from apbot.read.roles_again import toggled_again
 from apbot.read.roles_amount_keys import amount_keys
@@ -188,6 +189,7 @@ def assign(b: Builder) -> None:
         if (
             len(mine) >= 2
             and not numeric_list(list(mine))
+            and not stated_for_key(b, key, ev)  # "press DRY again …: LOW -> MID -> HIGH": DRY's
             and (
                 any(mine < set(evidence[o.name].values or []) for o in keys if o.name != key.name)
                 or any(mine < theirs for theirs in dial_lists)

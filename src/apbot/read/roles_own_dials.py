@@ -12,6 +12,7 @@ from dataclasses import replace
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.labels import words
+from apbot.read.pressed_names import pressed_names
 from apbot.read.roles_common import NUMERIC_WORDS, label_of, numeric_list, turns, var_name
 from apbot.read.roles_confirm import confirmed_noun, ends_entry
 from apbot.read.roles_lists import dial_ends, list_evidence
@@ -103,6 +104,12 @@ def assign_leftovers(b: Builder, silent: list[ActionInfo], evidence: dict[str, E
             var = b.add_number(name, label_of(b, key.controls[0]), evidence[key.name], cyclic=True)
             b.feature(f"set_{var}", [{"actions": [key.name], "variable": var, "effect": "next"}])
             b.note(f"features.set_{var}", f"{key.name} steps an amount (the manual says no more)")
+            continue
+        counted = pressed_names(b.manual.units, name, label_of(b, key.controls[0]))
+        if counted and key.skill == "press":  # "| Press | … | Pattern |": what each press picks
+            var = b.add_discrete(name, counted[0], label_of(b, key.controls[0]), None)
+            b.note(f"variables.{var}.values", ", ".join(b.variables[var]["values"]), counted[1])
+            b.feature(f"set_{var}", [{"actions": [key.name], "variable": var, "effect": "next"}])
             continue
         var = b.add_toggle(name, label_of(b, key.controls[0]), None)
         b.feature(var, [{"actions": [key.name], "variable": var, "effect": "toggle"}])
