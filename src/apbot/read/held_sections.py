@@ -229,12 +229,12 @@ def _apply(
         b.variables[var]["show"] = dict(field["show"])
         b.variables[var]["wrap"] = not _STOP_RE.search(whole)
     else:
-        low, high, step = (_tidy(x) for x in field["range"])
+        low, high, by = (_tidy(x) for x in field["range"])
         var = b.unique(name, b.variables)
         b.variables[var] = {
             "label": label,
             "type": "numeric",
-            "ranges": [[low, high, step]],
+            "ranges": [[low, high, by]],
             "unit": field["unit"],
             "wrap": not _STOP_RE.search(whole) and bool(_WRAP_RE.search(whole)),
         }
