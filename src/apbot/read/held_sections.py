@@ -43,6 +43,9 @@ _RANGE_WORD_RE = re.compile(r"\b(?:range|from|between|adjustable|settable)\b", r
 _RUN_RE = re.compile(
     rf"(?<![\d.])({_NUM}),\s*({_NUM})(?:,\s*{_NUM})*,?\s*(?:…|\.\.\.)\s*(?:{_NUM},\s*)*({_NUM})(?![\d.])"
 )
+_ENDS_RE = re.compile(
+    r"\b(\d{1,3})\s+is\s+the\s+lowest,?\s+(?:and\s+)?(\d{1,3})\s+(?:is\s+)?the\s+highest\b", re.I
+)
 _LEAD_RE = re.compile(
     r"^(?:changing|setting|to\s+(?:change|set))\s+the\s+([a-z][a-z -]{2,30}?)\s*$", re.I
 )
@@ -59,7 +62,7 @@ def read_held_sections(b: Builder) -> None:
     """Give each still-guessed hold the setting its section opens with it."""
     units = b.manual.units
     for info in b.infos:
-        if info.skill != "hold" or not _guessed(b, info.name):
+        if info.skill != "hold" or not guessed_hold(b, info.name):
             continue
         for i, unit in enumerate(units):
             keys = _held_keys(b, info.controls, unit)
@@ -77,7 +80,7 @@ def read_held_sections(b: Builder) -> None:
             break
 
 
-def _guessed(b: Builder, hold: str) -> bool:
+def guessed_hold(b: Builder, hold: str) -> bool:
     """The hold sets nothing but a setting named for its key ("bat_hold", "both_hold")."""
     found = False
     for steps in b.features.values():
@@ -115,8 +118,9 @@ def _says(text: str, label: str) -> bool:
 def _held_keys(b: Builder, controls: tuple[str, ...], unit: Unit) -> list[str]:
     """The key labels this sentence holds for a stated time, when they are the hold's: its own
     key ("Hold SET for 5 seconds", "keep BAT pressed for 3 s"), or for a hold whose name is no
-    key of the panel ("both"), two keys held together ("Press SET and BAT at the same time and
-    hold both for 3 seconds")."""
+    key of the panel ("both", or the subject its section is headed by: ``hold_response`` under
+    "RESPONSE LEVEL"), two keys held together ("Press SET and BAT at the same time and hold
+    both for 3 seconds", "Hold −1 and +1 together for one second")."""
     text = unit.text
     if len(controls) == 1 and (own := _label(b, controls[0])):
         lab = re.escape(own)
@@ -127,8 +131,9 @@ def _held_keys(b: Builder, controls: tuple[str, ...], unit: Unit) -> list[str]:
             rf"(?:\s+down)?\s+for\s+{_SECS}"
         )
         return [own] if re.search(held, text, re.I) else []
-    if len(controls) != 1 or controls[0] != "both":
-        return []
+    heading = set(re.findall(r"[a-z]+", unit.heading.lower()))
+    if len(controls) != 1 or not (controls[0] == "both" or set(controls[0].split("_")) <= heading):
+        return []  # (neither "both" nor the subject of the section: "hold_response")
     if not re.search(r"\b(?:together|at\s+the\s+same\s+time|both)\b", text, re.I):
         return []
     if not re.search(rf"\bhold\b[^.]*\bfor\s+{_SECS}", text, re.I):
@@ -193,6 +198,9 @@ def _field(b: Builder, section: list[Unit], after: str) -> dict[str, Any] | None
         if high <= low:
             continue
         return {"range": [low, high, step[0] if step else 1], "unit": m.group(2) or m.group(4)}
+    m = _ENDS_RE.search(whole)
+    if m is not None and int(m.group(2)) > int(m.group(1)):  # "1 is the lowest, 9 the highest"
+        return {"range": [float(m.group(1)), float(m.group(2)), 1], "unit": ""}
     m = _RUN_RE.search(after)
     if m is not None:
         first, second, last = (float(g.replace(",", ".")) for g in m.groups())

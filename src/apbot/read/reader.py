@@ -45,8 +45,11 @@ from apbot.read.confirm_starts import read_confirmed_starts
 from apbot.read.cycle_words import read_cycle_words
 from apbot.read.drop_victim import feature_to_drop
 from apbot.read.guards_enabled import read_enabling_switches
+from apbot.read.held_changes import read_held_changes
 from apbot.read.held_sections import read_held_sections
 from apbot.read.held_walks import read_held_walks
+from apbot.read.legend_nouns import read_legend_nouns
+from apbot.read.opposite_keys import read_opposite_keys
 from apbot.read.hold_seconds import hold_seconds, pair_hold_seconds
 from apbot.read.initials import read_initials
 from apbot.read.keyed_cycles import read_keyed_cycles
@@ -161,6 +164,9 @@ def read_manual(
     read_pressed_walks(builder)  # (after the held walks: a press moving through one is theirs)
     read_press_opened(builder)  # (a press's guessed setting its numbered steps give)
     read_held_sections(builder)  # (a hold still guessed: the setting its section opens)
+    read_held_changes(builder)  # ("to tack to PORT, hold …: the course changes (270° → 170°)")
+    read_opposite_keys(builder)  # ("AUTO – engage …" / "STANDBY – disengage …": one setting)
+    read_legend_nouns(builder)  # ("DISP – display lighting": the setting's name)
     read_stated_ranges(builder)  # (a guessed range its section states: "The range is …")
     read_code_walks(builder)  # (a key's chart codes, each row a field: MENU walks them)
     read_shown_pairs(builder)  # ("HEMI N  northern …" / "HEMI S  southern …": a guessed on/off)
