@@ -88,3 +88,106 @@ def test_the_pause_that_stores_it_ends_the_setting() -> None:
     for steps in model.features.values():
         if steps[0].actions in (["hold_mode"], ["hold_adj"]):
             assert all(s.timeout == 8 for s in steps)
+
+
+# an antenna rotator: keys printed as signed amounts, two keys of opposite states, a hold named
+# by its section's subject, holds named by their jobs, an abbreviated key glossed in its legend
+ROTATOR = """
+Aerion AR-4 antenna rotator control box
+
+1. THE FRONT PANEL
+
+   [ −1 ]  [ +1 ]  [ −15 ]  [ +15 ]
+   [ LOCK ]  [ FREE ]  [ ILLUM ]
+
+   (1) LOCK – lock the rotator on the bearing shown
+   (2) FREE – unlock the rotator, turn the mast by hand
+   (3) ILLUM – illumination level
+
+   The box powers up with the mains and starts in FREE.
+
+2. TURNING THE ANTENNA
+
+   With the rotator locked, −1 and +1 turn it one degree, −15 and +15 fifteen degrees.
+   The bearing is a compass direction from 0 to 359. It runs on past north: +1 at 359 gives 0.
+   In FREE these keys do not change the bearing; the box beeps. Press LOCK first.
+
+3. QUICK SWEEPS
+
+   To sweep EAST, hold +1 and +15 together for a second: the bearing changes by 90° to the
+   east (e.g. 300° → 030°).
+
+4. ROTATION SPEED
+
+   The rotation speed can be set while the rotator is locked.
+   1. Hold −1 and +1 together for two seconds. The display shows SPD and the speed.
+   2. Press +1 to raise the speed, −1 to lower it (1 is the lowest, 5 the highest).
+   3. Wait 4 seconds without a key: the display returns to the bearing.
+
+5. PANEL LIGHT
+
+   Each press of ILLUM steps the light: OFF → 1 → 2 → OFF.
+"""
+
+ROTATOR_ACTIONS = [
+    "press_lock",
+    "press_free",
+    "press_minus1",
+    "press_plus1",
+    "press_minus15",
+    "press_plus15",
+    "hold_sweep_east",
+    "hold_speed",
+    "press_illum",
+    "wait_4s",
+]
+
+
+def test_keys_named_by_signed_amounts_find_their_printing() -> None:
+    model = read_manual(ROTATOR, ROTATOR_ACTIONS).model
+    labels = {c.label for c in model.controls}
+    assert {"−1", "+1", "−15", "+15"} <= labels
+
+
+def test_a_count_said_as_what_it_is_from_a_to_b_runs_on_past_its_ends() -> None:
+    model = read_manual(ROTATOR, ROTATOR_ACTIONS).model
+    spec = model.variables["bearing"].model_dump()
+    assert [list(r) for r in spec["ranges"]] == [[0, 359, 1]]
+    assert spec["wrap"] is True
+
+
+def test_a_hold_named_by_its_sections_subject_opens_it() -> None:
+    model = read_manual(ROTATOR, ROTATOR_ACTIONS).model
+    var, effect = _opened_by(model, "hold_speed")
+    spec = model.variables[var].model_dump()
+    assert [list(r) for r in spec["ranges"]] == [[1, 5, 1]]
+    assert effect == {"press_plus1": "next", "press_minus1": "prev"}
+
+
+def test_a_hold_named_by_its_job_adds_its_examples_change() -> None:
+    model = read_manual(ROTATOR, ROTATOR_ACTIONS).model
+    steps = [s for f in model.features.values() for s in f if s.actions == ["hold_sweep_east"]]
+    assert [s.model_dump(include={"variable", "effect"}) for s in steps] == [
+        {"variable": "bearing", "effect": {"hold_sweep_east": {"add": 90}}}
+    ]
+
+
+def test_keys_with_opposite_legend_verbs_choose_the_states_of_one_setting() -> None:
+    model = read_manual(ROTATOR, ROTATOR_ACTIONS).model
+    spec = model.variables["mode"].model_dump()
+    assert spec["values"] == ["free", "lock"]
+    chosen = {
+        s.actions[0]: s.model_dump()["effect"]
+        for f in model.features.values()
+        for s in f
+        if s.variable == "mode"
+    }
+    assert chosen == {"press_lock": {"to": "lock"}, "press_free": {"to": "free"}}
+    guard = next(g for g in model.guards if g.when == {"mode": "free"})
+    assert "press_plus1" not in guard.only and "press_lock" in guard.only
+
+
+def test_an_abbreviated_key_s_setting_takes_its_legend_noun() -> None:
+    model = read_manual(ROTATOR, ROTATOR_ACTIONS).model
+    assert "illumination_level" in model.variables
+    assert "illum" not in model.variables

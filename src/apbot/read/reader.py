@@ -48,17 +48,17 @@ from apbot.read.guards_enabled import read_enabling_switches
 from apbot.read.held_changes import read_held_changes
 from apbot.read.held_sections import read_held_sections
 from apbot.read.held_walks import read_held_walks
-from apbot.read.legend_nouns import read_legend_nouns
-from apbot.read.opposite_keys import read_opposite_keys
 from apbot.read.hold_seconds import hold_seconds, pair_hold_seconds
 from apbot.read.initials import read_initials
 from apbot.read.keyed_cycles import read_keyed_cycles
 from apbot.read.labels import find_labels
+from apbot.read.legend_nouns import read_legend_nouns
 from apbot.read.mode_cases import read_mode_cases
 from apbot.read.mode_scales import read_mode_scales
 from apbot.read.numbered_keys import read_numbered_keys
 from apbot.read.off_positions import read_off_positions
 from apbot.read.off_words import read_held_off_words, read_off_words
+from apbot.read.opposite_keys import read_opposite_keys
 from apbot.read.ordinal_lamps import read_ordinal_lamps
 from apbot.read.pair_lists import read_pair_lists
 from apbot.read.position_charts import read_position_charts
