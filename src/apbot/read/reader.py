@@ -45,20 +45,16 @@ from apbot.read.confirm_starts import read_confirmed_starts
 from apbot.read.cycle_words import read_cycle_words
 from apbot.read.drop_victim import feature_to_drop
 from apbot.read.guards_enabled import read_enabling_switches
-from apbot.read.held_changes import read_held_changes
-from apbot.read.held_sections import read_held_sections
 from apbot.read.held_walks import read_held_walks
 from apbot.read.hold_seconds import hold_seconds, pair_hold_seconds
 from apbot.read.initials import read_initials
 from apbot.read.keyed_cycles import read_keyed_cycles
 from apbot.read.labels import find_labels
-from apbot.read.legend_nouns import read_legend_nouns
 from apbot.read.mode_cases import read_mode_cases
 from apbot.read.mode_scales import read_mode_scales
 from apbot.read.numbered_keys import read_numbered_keys
 from apbot.read.off_positions import read_off_positions
 from apbot.read.off_words import read_held_off_words, read_off_words
-from apbot.read.opposite_keys import read_opposite_keys
 from apbot.read.ordinal_lamps import read_ordinal_lamps
 from apbot.read.pair_lists import read_pair_lists
 from apbot.read.position_charts import read_position_charts
@@ -70,6 +66,7 @@ from apbot.read.range_codes import read_range_codes
 from apbot.read.report import Note, Report
 from apbot.read.roles import assign
 from apbot.read.running_locks import read_running_locks
+from apbot.read.section_keys import read_section_keys
 from apbot.read.shapes import CHOICE_WORDS
 from apbot.read.shown_bars import read_bar_shows
 from apbot.read.shown_examples import read_shown_examples
@@ -163,10 +160,7 @@ def read_manual(
     read_held_walks(builder)  # (after the resets: those were read for the switch it replaces)
     read_pressed_walks(builder)  # (after the held walks: a press moving through one is theirs)
     read_press_opened(builder)  # (a press's guessed setting its numbered steps give)
-    read_held_sections(builder)  # (a hold still guessed: the setting its section opens)
-    read_held_changes(builder)  # ("to tack to PORT, hold …: the course changes (270° → 170°)")
-    read_opposite_keys(builder)  # ("AUTO – engage …" / "STANDBY – disengage …": one setting)
-    read_legend_nouns(builder)  # ("DISP – display lighting": the setting's name)
+    read_section_keys(builder)  # (holds, opposite keys, legend nouns still read as guesses)
     read_stated_ranges(builder)  # (a guessed range its section states: "The range is …")
     read_code_walks(builder)  # (a key's chart codes, each row a field: MENU walks them)
     read_shown_pairs(builder)  # ("HEMI N  northern …" / "HEMI S  southern …": a guessed on/off)
