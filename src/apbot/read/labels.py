@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 
 from apbot.read.labels_abbrev import abbreviated_signed_name
 from apbot.read.labels_legend import legend_name
+from apbot.read.labels_signed_amounts import signed_amount
 from apbot.read.text import Manual, Unit
 from apbot.read.value_lists import find_list
 
@@ -218,6 +219,8 @@ def find_labels(manual: Manual, tokens: list[str]) -> dict[str, Label]:
             letter = _letter_key(manual, tw[0].upper())
             if letter is not None:
                 best, best_score, line = tw[0].upper(), 0.6, letter
+        if best_score < 0.6 and (amount := signed_amount(manual, token)) is not None:
+            best, best_score, line = amount[0], 0.6, amount[1]  # "−10" for ``minus10``
         if best_score < 0.6:
             best, line = " ".join(tw).upper() or token.upper(), None
             symbols = [s for w in (token, *tw[-1:]) for s in SYMBOLS.get(w, ())]

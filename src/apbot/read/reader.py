@@ -66,6 +66,7 @@ from apbot.read.range_codes import read_range_codes
 from apbot.read.report import Note, Report
 from apbot.read.roles import assign
 from apbot.read.running_locks import read_running_locks
+from apbot.read.section_keys import read_section_keys
 from apbot.read.shapes import CHOICE_WORDS
 from apbot.read.shown_bars import read_bar_shows
 from apbot.read.shown_examples import read_shown_examples
@@ -159,6 +160,7 @@ def read_manual(
     read_held_walks(builder)  # (after the resets: those were read for the switch it replaces)
     read_pressed_walks(builder)  # (after the held walks: a press moving through one is theirs)
     read_press_opened(builder)  # (a press's guessed setting its numbered steps give)
+    read_section_keys(builder)  # (holds, opposite keys, legend nouns still read as guesses)
     read_stated_ranges(builder)  # (a guessed range its section states: "The range is …")
     read_code_walks(builder)  # (a key's chart codes, each row a field: MENU walks them)
     read_shown_pairs(builder)  # ("HEMI N  northern …" / "HEMI S  southern …": a guessed on/off)

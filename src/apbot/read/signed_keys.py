@@ -29,6 +29,11 @@ _RANGE_RE = re.compile(
     r"(?:to|up\s+to)\s+(\d{1,5})\b",
     re.IGNORECASE,
 )
+# "The course is a compass heading from 000 to 359": the count named as what it is
+_IS_FROM_RE = re.compile(
+    r"\bthe\s+([a-z]{3,})\s+is\s+an?\s+(?:[a-z]+\s+){0,3}?from\s+(\d{1,5})\s+to\s+(\d{1,5})\b",
+    re.IGNORECASE,
+)
 _SIGNED = re.compile(rf"(?<![\w.])[+{_MINUS}]\d")
 _NOT_NOUNS = frozenset({"the", "it", "this", "that", "they", "value", "values", "number"})
 
@@ -69,7 +74,7 @@ def _printed(text: str, amounts: dict[str, int]) -> bool:
 def _range(b: Builder) -> tuple[str, int, int, int] | None:
     """(noun, low, high, unit) of the sentence giving what the keys count and its range."""
     for at, unit in enumerate(b.manual.units):
-        for m in _RANGE_RE.finditer(unit.text):
+        for m in [*_RANGE_RE.finditer(unit.text), *_IS_FROM_RE.finditer(unit.text)]:
             noun = m.group(1).lower()
             lo, hi = int(m.group(2)), int(m.group(3))
             if noun in _NOT_NOUNS or hi <= lo:
@@ -98,6 +103,8 @@ def read_signed_keys(b: Builder) -> None:
             "ranges": [[lo, hi, 1]],
             "label": (stem or noun).upper(),
         }
+        if said and _wraps(b, said[1], said[2], said[3]):
+            spec["wrap"] = True
         b.variables[name] = spec
         effect = {action: {"add": amount} for action, amount in amounts.items()}
         b.feature(name, [{"actions": list(amounts), "variable": name, "effect": effect}])
@@ -108,3 +115,11 @@ def read_signed_keys(b: Builder) -> None:
             b.note(f"variables.{name}.ranges", f"range {lo}–{hi}", said[3])
         else:
             b.unread.add(name)
+
+
+def _wraps(b: Builder, lo: int, hi: int, at: int) -> bool:
+    """Whether the count runs on past its ends, as a worked case near its range says: "+1 at
+    359° gives 000°", "one more after 99 shows 0"."""
+    ends = rf"0*{hi}\D{{0,3}}\s*(?:gives|shows|becomes|goes\s+to|→|->)\s*0*{lo}(?!\d)"
+    near = b.manual.units[max(0, at - 3) : at + 4]
+    return any(re.search(ends, u.text) for u in near)
