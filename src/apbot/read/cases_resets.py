@@ -10,6 +10,7 @@ import re
 
 from apbot.read.build import Builder
 from apbot.read.labels import words
+from apbot.read.reset_key_names import key_named_only
 from apbot.read.shapes import CHOICE_WORDS, GROUP_PLURALS
 from apbot.read.text import Unit
 
@@ -99,6 +100,7 @@ def apply_resets(b: Builder) -> None:
             and not STAY_RE.search(u.text)
             and not _wraps(u.text)
             and not _view_back(u.text)
+            and not key_named_only(b, u.text, RESET_NOUN_RE)  # "Hold MODE … to go back"
         ),
         None,
     )
