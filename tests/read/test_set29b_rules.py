@@ -79,3 +79,95 @@ def test_a_reset_sentence_naming_only_a_keys_printed_name_resets_nothing() -> No
     model = _light()
     pattern = _feature_of(model, "press_mode")
     assert not pattern.reset
+
+
+# a dosing pump: a thumb wheel over a range-and-step table in microlitres, a comparison table of
+# models with a row of step sizes, and a rate key whose run of figures says where it wraps
+DOSER = """
+DOSAMAT bench dosing pump
+
+MODELS
+  | Feature          | D-10          | D-50           |
+  |------------------|---------------|----------------|
+  | Volume range       | 1 – 10 mL     | 20 – 500 µL    |
+  | Dial increments  | 0.1 / 0.5 mL  | 2 / 5 / 10 µL  |
+
+This leaflet covers the D-50.
+
+CONTROLS
+  ⏻       on and off
+  RATE    pump rate
+  DIAL    the volume
+
+THE VOLUME
+  Turn the DIAL to set the volume. How far one click moves it depends on the volume:
+
+     Volume range         One click
+     20 – 100 µL        2 µL
+     100 – 200 µL       5 µL
+     200 – 500 µL       10 µL
+
+PUMP RATE
+  Each press of RATE raises the rate by one: 1, 2, 3, 4, and after 4 back to 1.
+"""
+
+DOSER_ACTIONS = ["press_power", "press_rate", "turn_dial_up", "turn_dial_down"]
+
+
+def _doser() -> Any:
+    return read_manual(DOSER, DOSER_ACTIONS).model
+
+
+def test_a_row_of_step_sizes_gives_the_dial_no_list_of_values() -> None:
+    model = _doser()
+    dial = _feature_of(model, "turn_dial_up")
+    assert model.variables[dial.variable].type == "numeric"
+    assert not any("d_10" in n or "d_50" in n for n in model.variables)
+
+
+def test_a_range_and_step_table_in_microlitres_gives_every_row_its_step() -> None:
+    dose = _doser().variables[_feature_of(_doser(), "turn_dial_up").variable]
+    assert dose.unit == "µl"
+    assert [list(r) for r in dose.ranges] == [[20, 100, 2], [100, 200, 5], [200, 500, 10]]
+
+
+def test_a_run_of_figures_that_says_where_it_wraps_is_the_keys_cycle() -> None:
+    assert find_list("raises it by one: 1, 2, 3, 4, and after 4 back to 1") == (
+        ["1", "2", "3", "4"],
+        "list",
+    )
+    model = _doser()
+    rate = _feature_of(model, "press_rate")
+    assert rate.effect == "next"
+    assert [list(r) for r in model.variables[rate.variable].ranges] == [[1, 4, 1]]
+
+
+def test_a_dose_said_in_microlitres_is_read_as_microlitres() -> None:
+    from apbot.read.number_tokens import tokenize
+
+    assert [t.text for t in tokenize("dose 250 µL")] == ["dose", "250", "microlitre"]
+
+
+# a drum machine: kit banks stepped with a pair of keys, written as letters with an ellipsis
+DRUMS = """
+BEATBOX 8 drum machine
+
+KITS
+  The machine has kits in banks. Step the bank with KIT ▲ (A → B → … → E → A) or KIT ▼ (the
+  other way round).
+"""
+
+DRUMS_ACTIONS = ["press_kit_up", "press_kit_down"]
+
+
+def test_letters_stepped_with_an_ellipsis_are_the_pairs_values() -> None:
+    assert find_list("KIT ▲ (A → B → … → E → A)") == (["A", "B", "C", "D", "E"], "arrows")
+    model = read_manual(DRUMS, DRUMS_ACTIONS).model
+    kit = _feature_of(model, "press_kit_up")
+    assert [str(v).upper() for v in model.variables[kit.variable].values] == list("ABCDE")
+
+
+def test_microlitres_are_a_thousandth_of_a_millilitre() -> None:
+    from apbot.model.values import unit_of
+
+    assert unit_of("µl") == ("volume", 0.001) and unit_of("microlitres") == ("volume", 0.001)

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import re
 
-from apbot.read.bracket_lists import bracket_opens
+from apbot.read.bracket_lists import bracket_opens, letter_run, wrapped_run
 from apbot.read.value_gaps import elision_apart, filled_amounts, filled_codes, unit_tail
 from apbot.read.value_items import _LEAD_COLON, _PER_NAME, _clean_item, _dedupe, _value_like
 from apbot.read.value_list_shapes import (
@@ -46,6 +46,9 @@ _NUMBER_LIST = re.compile(
 
 def find_list(text: str) -> tuple[list[str], str] | None:
     """A list of values in one sentence, and how it was written ("arrows", "list")."""
+    letters = letter_run(text)  # "A → B → … → F → A": the letters, "A" no article here
+    if letters:
+        return letters, "arrows"
     text = _arrow_cell(_triangle_arrows(text))
     # "FWD ►  ↔  ◄ REV": each name's own sign, drawn pointing at the two-way arrow between them
     text = re.sub(r"[►▶]\s*((?:<->|<=>|↔|⇄|⇔))\s*[◄◀]", r"\1", text)
@@ -53,6 +56,9 @@ def find_list(text: str) -> tuple[list[str], str] | None:
     text = _BOTH_WAYS.sub(" → ", text)
     if _SPACED_ARROW.search(text):  # "OPEN → →IN IN ONLY → OUT→ OUT ONLY": the spaced arrows
         text = _FUSED_ARROW.sub(" ", text)  # part the list, one fused to a word is a symbol
+    wrapped = wrapped_run(text)  # "1, 2, 3, 4, 5, and after 5 back to 1": the run, once
+    if wrapped:
+        return wrapped, "list"
     numbers = _NUMBER_LIST.search(text)
     if numbers:  # "3, 6 or 9 hours"
         items = [*re.split(r"\s*,\s*", numbers.group(1)), numbers.group(2)]
