@@ -21,6 +21,7 @@ from apbot.model.values import format_hms
 from apbot.read.build_base import PLACEHOLDERS, BuilderBase
 from apbot.read.chart_steps import charted_values
 from apbot.read.clock_format import twelve_hour_clock
+from apbot.read.first_piece import table_pieces
 from apbot.read.labels import words
 from apbot.read.part_seconds import part_seconds
 from apbot.read.quantity_units import _guess_step, _tidy, _unit_from_words
@@ -123,6 +124,8 @@ class Builder(BuilderBase):
         if len(ranges) == 1 and ranges[0].low == 0 and ev.range_at is not None:
             told = self._range_anywhere(name, label)  # "up to 45 °C", "set from 30 °C to 40 °C"
             ranges = [stated_low(ranges[0], self.manual.units[ev.range_at].text, told)]
+        if len(ranges) == 1 and ev.range_at is not None:  # a range-and-step table's first row
+            ranges = table_pieces(ranges[0], self.manual.units, ev.range_at) or ranges
         if ranges:
             shown = ", ".join(f"{r.low:g}–{r.high:g}" for r in ranges)
             self.note(subject, f"range {shown} {ranges[0].unit}", ev.range_at)
@@ -135,7 +138,11 @@ class Builder(BuilderBase):
             at = found[1]
             ev = with_said_step(ev, found[0], said_on(self.manual.units, at), at)
             said = [] if at is None else [u.text for u in self.manual.units[at : at + 3]]
-            ranges = split_range(found[0], said, label) or [found[0]]
+            ranges = (
+                table_pieces(found[0], self.manual.units, at)  # a range-and-step table's rows
+                or split_range(found[0], said, label)
+                or [found[0]]
+            )
             r0 = found[0]
             self.note(
                 subject, f"range {r0.low:g}–{r0.high:g} {r0.unit} (named elsewhere)", found[1]

@@ -9,6 +9,7 @@ from __future__ import annotations
 import re
 
 from apbot.read.labels import Label, words
+from apbot.read.model_rows import own_model_row
 from apbot.read.quantity_units import _quantity_unit
 from apbot.read.shapes import _TIMER_WORDS, _fits
 from apbot.read.text import Manual
@@ -96,7 +97,9 @@ class AnywhereReader:
                     consider(1 + 2 * bool(limits.search(head)), cell, i)
                 first = words(unit.cells[0])
                 if any(_same_word(u, w) for u in first for w in ws) and not set(first) & advice:
-                    consider(1 + 2 * bool(limits.search(unit.cells[0])), unit.text, i)
+                    # (a row comparing the models: its own model's cell, not a sister's)
+                    own = own_model_row(unit, self.manual.lines, self.manual.units)
+                    consider(1 + 2 * bool(limits.search(unit.cells[0])), own.text, i)
                 continue
             if not any(_same_word(u, w) for u in uw for w in ws) or set(uw) & advice:
                 continue

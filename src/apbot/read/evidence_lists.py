@@ -29,6 +29,7 @@ from apbot.read.shapes_columns import (
     _next_table_column,
     _quantity_column,
 )
+from apbot.read.step_rows import step_size_row
 from apbot.read.text import Unit
 from apbot.read.value_gaps import find_progression
 from apbot.read.value_lists import (
@@ -125,6 +126,8 @@ class ListReader(ContextReader):
         sentence naming the key beats prose nearby, a table the sentence introduces...)."""
         units = self.manual.units
         unit = units[i]
+        if step_size_row(unit):
+            return []  # "| Wheel increments | 5 / 10 / 25 µL |": the steps' sizes, no values
         text = self._own_model_row(unit)
         if mention:
             text = own_legend_items(text, [self.labels[t].text for t in tokens if t in self.labels])
@@ -281,8 +284,8 @@ class ListReader(ContextReader):
         settings available: …" for DRY TIME, "Timer steps: …" for TIMER), or in the next cell
         of a table row that does (a specifications table: "| Water levels | 22, 26 … 58 L |")."""
         if len(unit.cells) >= 2:
-            if not self._names_setting(words(unit.cells[0]), tokens):
-                return None
+            if not self._names_setting(words(unit.cells[0]), tokens) or step_size_row(unit):
+                return None  # ("| Wheel increments | 5 / 10 / 25 µL |": steps, no values)
             cells = self._own_model_row(unit).split(" | ")[1:]
             for cell in cells:  # "| SIZE | Loaf size | 1.0 LB, 1.5 LB, 2.0 LB |"
                 items = cell_list(cell)

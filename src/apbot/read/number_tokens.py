@@ -27,6 +27,7 @@ _REWRITES = (
     (re.compile(r"\bnon-(?=[a-z])"), "non"),  # non-stop
     (re.compile(r"(?<=\d),(?=\d{3}\b)"), ""),  # 1,000 -> 1000
     (re.compile(r"(?<![a-z])[\u00b5\u03bc]m\b"), "micron"),  # 150 µm: no "m" for minutes
+    (re.compile(r"(?<![a-z])[\u00b5\u03bc]l\b"), "microlitre"),  # 625 µL: no "l" for litres
     (re.compile(r"(?<=\d)(?=[a-z°%])"), " "),  # 12min -> 12 min
     (re.compile(r"\s[-\u2013\u2014]+\s|\u2014"), " ; "),  # a dash between clauses
     (re.compile(r"[\u2010-\u2015\u2212]"), "-"),  # typographic dashes and minus

@@ -27,7 +27,7 @@ def _unit_from_words(name: str) -> str:
 
 
 QUANTITY_FAMILIES = {  # a setting named for a quantity takes a range in one of its units
-    "ml": frozenset({"ml", "l", "cl", "dl", "cups", "cup"}),
+    "ml": frozenset({"ml", "l", "cl", "dl", "cups", "cup", "µl", "μl"}),
     "g": frozenset({"g", "kg", "lb", "lbs"}),
     "W": frozenset({"W", "kw"}),
     "rpm": frozenset({"rpm"}),

@@ -16,6 +16,7 @@ from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder, united_amounts
 from apbot.read.factory_lists import factory_list
 from apbot.read.held_flips import assign_flips, flipped_values
+from apbot.read.held_power_only import power_key_steps
 from apbot.read.labels import words
 from apbot.read.legend_ends import legend_end_pairs
 from apbot.read.own_cycles import stated_for_key
@@ -252,7 +253,7 @@ def assign(b: Builder) -> None:
         if ev.values and factory_list(b, ev.values_at):  # "As delivered: VOL 3, LO 16 °C, …"
             ev = evidence[key.name] = replace(ev, values=None, values_at=None)
         amount = bool(set(words(name)) & NUMERIC_WORDS)
-        if key.skill == "press" and _hold_row(b, key, ev.toggle_at):
+        if key.skill == "press" and (_hold_row(b, key, ev.toggle_at) or power_key_steps(b, key)):
             ev = evidence[key.name] = replace(ev, toggle_at=None)  # the hold's on/off
         if held := held_values(b, key, ev.toggle_at):  # the touch's on/off; held: °C / °F
             ev = evidence[key.name] = replace(

@@ -10,6 +10,7 @@ from typing import Any
 from apbot.model.values import format_hms
 from apbot.read.actions import ActionInfo
 from apbot.read.added_time import added_time
+from apbot.read.bracket_lists import lettered
 from apbot.read.build import Builder
 from apbot.read.labels import words
 from apbot.read.pair_own_ranges import pair_keeps_range
@@ -322,7 +323,11 @@ def assign_amounts(
         ev = b.evidence(toks + ([base] if base in b.labels else []))
         if ev.values and len(ev.values) >= 3 and numeric_list(ev.values):
             ev = list_evidence(ev)  # "75 ◄► 80 ◄► 100 … 250 mic": the settings one by one
-        var = b.add_number(base, base.upper(), ev, cyclic=False)
+        if ev.values and lettered(ev.values):  # "BANK ▲ (A → B → … → F → A)": the letters
+            var = b.add_discrete(base, ev.values, base.upper(), ev)
+            b.note(f"variables.{var}.values", ", ".join(ev.values), ev.values_at)
+        else:
+            var = b.add_number(base, base.upper(), ev, cyclic=False)
         eff = {**{a: "next" for a in pair["up"]}, **{a: "prev" for a in pair["down"]}}
         b.feature(
             f"set_{var}", [{"actions": pair["up"] + pair["down"], "variable": var, "effect": eff}]

@@ -8,6 +8,7 @@ import re
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
 from apbot.read.held_parts import held_part_toggle
+from apbot.read.held_power_only import power_key_steps
 from apbot.read.labels import words
 from apbot.read.legend_compounds import legend_compound
 from apbot.read.named_codes import code_key_noun, spelled_out
@@ -239,6 +240,9 @@ def var_name(b: Builder, key: ActionInfo) -> str:
     held = held or hold_use(b, key) or held_toggle(b, key) or held_meaning(b, key)
     if held:
         return "_".join(words(held))
+    stepped = power_key_steps(b, key)
+    if stepped:  # "each short press of ⏻ moves one step up the output scale": the output
+        return stepped
     confirmed = confirmed_noun(b, key)
     if confirmed:  # "OK  Ends the entry of a stitch number": the stitch
         return confirmed

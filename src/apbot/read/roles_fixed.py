@@ -11,6 +11,7 @@ import re
 
 from apbot.read.actions import ActionInfo
 from apbot.read.build import Builder
+from apbot.read.held_power_only import held_press_free
 from apbot.read.labels import squash
 from apbot.read.power_starts import power_starts_work
 from apbot.read.roles_common import first_mention, label_of
@@ -82,7 +83,12 @@ def assign_power(b: Builder) -> list[str]:
             standby_hold = (holds[0].name, job[0]) if job[3] else None
             holds = []
         var = b.add_toggle("power", label_of(b, power_token), first_mention(b, [power_token]))
-        if holds and press:
+        held_both = held_press_free(b, holds[0], press[0]) if holds and press else None
+        if held_both is not None:  # held on and off; the short press has a job of its own
+            b.feature("power", [{"actions": [holds[0].name], "variable": var, "effect": "toggle"}])
+            b.note("features.power", "holding the power key switches on and off", held_both)
+            power_actions.append(holds[0].name)
+        elif holds and press:
             b.feature(
                 "power_on", [{"actions": [press[0].name], "variable": var, "effect": {"to": "on"}}]
             )

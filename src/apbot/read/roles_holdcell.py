@@ -13,6 +13,7 @@ import re
 from apbot.read.actions import PRESS_VERBS, TURN_VERBS, ActionInfo
 from apbot.read.build import Builder
 from apbot.read.evidence_whose import lead_cell
+from apbot.read.held_task_rows import held_task_row
 from apbot.read.text import Unit
 from apbot.read.value_lists import find_list
 from apbot.read.values import ON_OFF_RE
@@ -156,7 +157,8 @@ def held_toggle(b: Builder, key: ActionInfo) -> str:
             m = _HELD.match(text) or (_CELL.match(text) if text in cells else None)
             if m and not lock_or_appliance(m.group("noun")) and names_a_setting(m.group("noun")):
                 return m.group("noun").strip(" -").lower()
-    return ""
+    noun = held_task_row(b, key, _CELL)  # "| red light on / off | hold MODE 2 s |"
+    return noun if noun and not lock_or_appliance(noun) and names_a_setting(noun) else ""
 
 
 def _next_rows(b: Builder, key: ActionInfo, i: int) -> list[str]:

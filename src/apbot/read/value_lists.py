@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import re
 
+from apbot.read.bracket_lists import bracket_opens, letter_run, wrapped_run
 from apbot.read.value_gaps import elision_apart, filled_amounts, filled_codes, unit_tail
 from apbot.read.value_items import _LEAD_COLON, _PER_NAME, _clean_item, _dedupe, _value_like
 from apbot.read.value_list_shapes import (
@@ -45,6 +46,9 @@ _NUMBER_LIST = re.compile(
 
 def find_list(text: str) -> tuple[list[str], str] | None:
     """A list of values in one sentence, and how it was written ("arrows", "list")."""
+    letters = letter_run(text)  # "A → B → … → F → A": the letters, "A" no article here
+    if letters:
+        return letters, "arrows"
     text = _arrow_cell(_triangle_arrows(text))
     # "FWD ►  ↔  ◄ REV": each name's own sign, drawn pointing at the two-way arrow between them
     text = re.sub(r"[►▶]\s*((?:<->|<=>|↔|⇄|⇔))\s*[◄◀]", r"\1", text)
@@ -52,6 +56,9 @@ def find_list(text: str) -> tuple[list[str], str] | None:
     text = _BOTH_WAYS.sub(" → ", text)
     if _SPACED_ARROW.search(text):  # "OPEN → →IN IN ONLY → OUT→ OUT ONLY": the spaced arrows
         text = _FUSED_ARROW.sub(" ", text)  # part the list, one fused to a word is a symbol
+    wrapped = wrapped_run(text)  # "1, 2, 3, 4, 5, and after 5 back to 1": the run, once
+    if wrapped:
+        return wrapped, "list"
     numbers = _NUMBER_LIST.search(text)
     if numbers:  # "3, 6 or 9 hours"
         items = [*re.split(r"\s*,\s*", numbers.group(1)), numbers.group(2)]
@@ -83,6 +90,7 @@ def find_list(text: str) -> tuple[list[str], str] | None:
     if len(parts) >= 3 or both or (len(parts) == 2 and all(_value_like(p, True) for p in parts)):
         # "in this order: AUTO → ...", "Clockwise: Cotton"; a clock's colon ("0:30 → 1:00") stays
         head = _LEAD_COLON.split(parts[0])[-1].split()
+        opened = bracket_opens(head)  # "press MODE (SPOT → FLOOD → …)": the list opens there
         if head and head[-1].startswith("(") and len(head[-1]) > 1:
             head[-1] = head[-1][1:]  # "… the next programme code (P0 → P1 → …)": in brackets
         # "COLOUR 3000K → 4500K → 6500K": a figure with its unit before the first arrow, where
@@ -103,6 +111,8 @@ def find_list(text: str) -> tuple[list[str], str] | None:
         if trailing and len(trailing) < len(capital):
             capital = trailing
         capital = _after_case_label(head, parts[1:]) or capital
+        if opened and capital[-len(opened) :] == opened and len(capital) > len(opened):
+            capital = opened  # the key's name before the bracket is no part of the first item
         if (
             (  # "HDMI 1 → HDMI 2 → …": the first item's figure, as the others carry theirs
                 len(head) >= 2

@@ -25,7 +25,7 @@ NUM = (
 )
 UNIT = (
     r"(?:%|°\s?[CF]|°|degrees?|min(?:ute)?s?|h(?:ou)?rs?|hours?|h|sec(?:ond)?s?|s|rpm|W|watts?"
-    r"|kg|lbs?|oz|g|ml|L|litres?|cups?|mm|cm|(?:milli|centi)met(?:re|er)s?"
+    r"|kg|lbs?|oz|g|ml|[µμ]l|microlit(?:re|er)s?|L|litres?|cups?|mm|cm|(?:milli|centi)met(?:re|er)s?"
     # a light's colour temperature ("3200 K", "2700 kelvin"); the capital only, since "k" after
     # a figure is as often a thousand ("10k")
     r"|(?-i:K)|kelvins?)"
