@@ -194,10 +194,17 @@ DEVELOPMENT_GOAL_VARIABLES: dict[str, int] = {
     "model_train_controller": 3,
     "sports_watch": 3,
     # The twenty-ninth blind set (helper blind32, 7 December 2026, the ninth 7 December
-    # session): blind for this round's work.
+    # session): development data since the tenth session.
     "head_torch": 3,
     "solar_charge_controller": 3,
     "boat_autopilot": 3,
     "electronic_pipette": 3,
     "guitar_amplifier": 3,
+    # The thirtieth blind set (helper blind33, 8 December 2026, the tenth session):
+    # blind for this round's work.
+    "security_floodlight": 3,
+    "shortwave_receiver": 3,
+    "breast_milk_expresser": 3,
+    "electronic_dartboard": 3,
+    "ear_thermometer": 3,
 }
