@@ -139,7 +139,7 @@ class Builder(BuilderBase):
             ev = with_said_step(ev, found[0], said_on(self.manual.units, at), at)
             said = [] if at is None else [u.text for u in self.manual.units[at : at + 3]]
             ranges = (
-                table_pieces(found[0], self.manual.units, at)  # a range-and-step table's rows
+                table_pieces(found[0], self.manual.units, at)  # a table's rows
                 or split_range(found[0], said, label)
                 or [found[0]]
             )

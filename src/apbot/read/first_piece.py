@@ -10,6 +10,7 @@ covers every row, each with its own step.
 from __future__ import annotations
 
 from collections.abc import Sequence
+from itertools import takewhile
 
 from apbot.read.text import Unit
 from apbot.read.values import Range
@@ -22,11 +23,11 @@ def table_pieces(found: Range, units: Sequence[Unit], at: int | None) -> list[Ra
     the same heading; [] otherwise."""
     if at is None or not 0 <= at < len(units):
         return []
-    rows = [  # a row's cells read as the flattened line would give them
-        "  ".join(u.cells) if u.cells else u.text
-        for u in units[at : at + _ROWS]
-        if u.heading == units[at].heading
-    ]
+    under = [u for u in units[at : at + _ROWS] if u.heading == units[at].heading]
+    # the found unit and the table rows right after it, not lines of prose: those may be
+    # another key's spans ("Press DELAY …: - from 1:00 to 4:00 each press adds 30 minutes; …")
+    under = under[:1] + list(takewhile(lambda u: bool(u.cells), under[1:]))
+    rows = ["  ".join(u.cells) if u.cells else u.text for u in under]  # as the flat line reads
     pieces = find_stepped_pieces(" ".join(rows))
     if (
         len(pieces) < 2
