@@ -43,9 +43,10 @@ a table row (and its number of cells), a list item, a heading; digits with a tim
 quotes (:func:`line_shape`); for the values' line also whether a key's word stands on it, near
 it or far (:func:`key_place`), how many of the values it names ("2of5") and how it prints them
 (:func:`written_case`). The note's kind is the reader's own phrasing (:func:`note_kind`), never
-the manual's words, so held-out value names are not printed. ``--beside DIR`` prints the same
-counts for a second suite (the newcats, development) in a column beside, so a shape frequent in
-one stands out. ``--top N`` rows per table.
+the manual's words, so held-out value names are not printed. With ``--held-out`` the values
+table's build marks (:func:`table_detail`) are left out too: they describe one unseen table.
+``--beside DIR`` prints the same counts for a second suite (the newcats, development) in a
+column beside, so a shape frequent in one stands out. ``--top N`` rows per table.
 
 The shapes (line, values' line, key place, case) are named in :mod:`benchmarks.missed_shapes`;
 this module reads each appliance and counts.
@@ -208,10 +209,17 @@ def origin(reading: Reading, variable: str) -> str:
 
 
 def origin_tags(
-    reading: Reading, truth: ApplianceModel, variable: str, aligned: dict[str, str], manual: str
+    reading: Reading,
+    truth: ApplianceModel,
+    variable: str,
+    aligned: dict[str, str],
+    manual: str,
+    detail: bool = True,
 ) -> list[str]:
     """``--origin`` rows for a missed ``variable`` whose keys the reader used: per read variable
-    on those keys, its kind, the module and source-line shape that made it, and the values' line."""
+    on those keys, its kind, the module and source-line shape that made it, and the values' line.
+    ``detail``: also how the values' table is built (:func:`table_detail`) — left out on the held
+    out, where even masked marks of one table's build would describe an unseen manual's line."""
     read = reading.model
     keys = {a for a, vs in setters(truth).items() if variable in vs}
     candidates = sorted({v for a in keys for v in setters(read).get(a, set())})
@@ -226,7 +234,8 @@ def origin_tags(
         count += f"/{written_case(line, names)}"
         place = key_place(manual, line, keys) if line else ""
         vals = f"vals:{line_shape(line)}/{place}/{count}" if line else "vals:unwritten"
-        vals += " " + table_detail(manual, line, keys, names)
+        if detail:
+            vals += " " + table_detail(manual, line, keys, names)
     tags = []
     for candidate in candidates:
         how = "other" if candidate in aligned else "own"
@@ -269,7 +278,8 @@ def tally(
                     reasons[reason] += n
                 shapes = [w.split(":", 1)[1] for w in why_tags if w.startswith("values-written-in")]
                 reasons[f"{why_tags[0]} + {shapes[0] if shapes else 'values-not-named'}"] += n
-                for row in origin_tags(reading, truth, variable, aligned, appliance.manual):
+                manual = appliance.manual
+                for row in origin_tags(reading, truth, variable, aligned, manual, not held_out):
                     origins[row] += n
             if variable not in found and not held_out:
                 lines.append(
@@ -330,7 +340,7 @@ def main() -> None:
             (3, "origin: module"),
             (4, "origin: source line shape"),
             (5, "origin: values line shape"),
-            (6, "origin: values table detail"),
+            *([] if args.held_out else [(6, "origin: values table detail")]),
         ):
             _table(
                 title, _split(origins, field), _split(other[1], field) if other else None, args.top
