@@ -1,10 +1,9 @@
-"""Small volumes on a setting counted in microlitres: "625 µL" is 625 (not 625 litres: the
-tokeniser drops the micro sign), "one millilitre" is 1000.
+"""Small volumes on a setting counted in microlitres: "one millilitre" is 1000.
 
 A pipette or a dosing pump counts its volume in µL, and people say either µL or the millilitre
-it makes. On a model with a setting in µL (and none in mL or L), a figure glued to µL is
-written as microlitres, and millilitres said (in figures or in words) are written as the
-microlitres they make, before the instruction is read.
+it makes. On a model with a setting in µL (and none in mL or L), millilitres said (in figures or
+in words) are written as the microlitres they make, before the instruction is read. ("625 µL"
+itself is read as microlitres by the tokeniser, `number_tokens`, on every model.)
 """
 
 from __future__ import annotations
@@ -16,7 +15,6 @@ from apbot.model.values import words_to_number
 from apbot.read.goal_view import Model
 
 _MICRO = ("µl", "μl", "ul")
-_GLUED = re.compile(r"(\d(?:[\d.,]*\d)?)\s*[µμ]l\b", re.IGNORECASE)
 _MILLI = re.compile(
     r"\b((?:[a-z]+[ -]){0,3}[a-z]+|\d+(?:\.\d+)?)\s*(?:ml|millilit(?:re|er)s?)\b", re.IGNORECASE
 )
@@ -43,7 +41,7 @@ def _number(said: str) -> tuple[float, str] | None:
 
 
 def said_microlitres(view: Model, instruction: str) -> str:
-    """ "625 µL" as "625 microlitres", "one millilitre" as "1000 microlitres"."""
+    """ "one millilitre" as "1000 microlitres", "0.5 ml" as "500 microlitres"."""
     if not _in_microlitres(view):
         return instruction
 
@@ -54,4 +52,4 @@ def said_microlitres(view: Model, instruction: str) -> str:
         number, before = read
         return f"{before}{number * 1000:g} microlitres"
 
-    return _MILLI.sub(milli, _GLUED.sub(r"\1 microlitres", instruction))
+    return _MILLI.sub(milli, instruction)
